@@ -1,0 +1,21 @@
+// Writes dist/lessons/catalog.json (the gallery's list, from each lesson's meta.json) and copies
+// the source files that lessons show into dist/source/.
+import { readdirSync, readFileSync, writeFileSync, mkdirSync, copyFileSync, existsSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+
+const catalog = [];
+for (const folder of readdirSync('lessons').sort()) {
+  const metaPath = join('lessons', folder, 'meta.json');
+  if (!existsSync(metaPath)) continue;
+  const meta = JSON.parse(readFileSync(metaPath, 'utf8'));
+  for (const key of ['title', 'summary', 'part', 'order']) {
+    if (meta[key] === undefined) throw new Error(`${metaPath} lacks "${key}"`);
+  }
+  catalog.push({ folder, ...meta });
+  for (const { path } of meta.sources ?? []) {
+    if (!existsSync(path)) throw new Error(`${metaPath} lists ${path}, which does not exist`);
+    mkdirSync(dirname(join('dist/source', path)), { recursive: true });
+    copyFileSync(path, join('dist/source', path));
+  }
+}
+writeFileSync('dist/lessons/catalog.json', JSON.stringify(catalog, null, 2));

@@ -1,0 +1,164 @@
+//! The grader: runs each exercise on many inputs and compares it with the reference core.
+//!
+//! It is plain Rust, so the same code grades natively (`tests/grader.rs`) and in headless Chromium
+//! (`tests/web_grader.rs`). Inputs come from a fixed-seed generator, so a failure reproduces.
+
+use super::Answer;
+use glam::{Mat4, Vec3};
+use std::fmt::{self, Debug};
+
+/// The outcome of grading one exercise.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Status {
+    /// Every case matched the reference.
+    Passed { cases: usize },
+    /// The exercise still returns `Err(NotDone)`.
+    NotDone,
+    /// The first case whose answer differs from the reference.
+    Wrong { case: usize, input: String, expected: String, actual: String },
+    /// The exercise panicked (caught natively only: a wasm panic aborts the module).
+    Panicked { case: usize, input: String, message: String },
+}
+
+/// One row of the grade table.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Report {
+    pub lesson: &'static str,
+    pub exercise: &'static str,
+    pub status: Status,
+}
+
+impl Report {
+    pub fn passed(&self) -> bool {
+        matches!(self.status, Status::Passed { .. })
+    }
+    pub fn not_done(&self) -> bool {
+        self.status == Status::NotDone
+    }
+}
+
+/// Grades every exercise of every lesson.
+pub fn grade_all() -> Vec<Report> {
+    let mut rng = Rng::new(0x1b_e7_7e_e2);
+    let mut reports = Vec::new();
+    reports.extend(super::transforms::grade(&mut rng));
+    reports
+}
+
+/// Runs `student` and `reference` on each input; the first disagreement (by `close`) fails.
+pub fn check<I: Debug, O: Debug>(
+    lesson: &'static str,
+    exercise: &'static str,
+    inputs: &[I],
+    student: impl Fn(&I) -> Answer<O>,
+    reference: impl Fn(&I) -> O,
+    close: impl Fn(&O, &O) -> bool,
+) -> Report {
+    let status = (|| {
+        for (case, input) in inputs.iter().enumerate() {
+            let answer = match run_caught(|| student(input)) {
+                Ok(answer) => answer,
+                Err(message) => {
+                    return Status::Panicked { case, input: format!("{input:?}"), message };
+                }
+            };
+            let Ok(actual) = answer else { return Status::NotDone };
+            let expected = reference(input);
+            if !close(&expected, &actual) {
+                return Status::Wrong {
+                    case,
+                    input: format!("{input:?}"),
+                    expected: format!("{expected:?}"),
+                    actual: format!("{actual:?}"),
+                };
+            }
+        }
+        Status::Passed { cases: inputs.len() }
+    })();
+    Report { lesson, exercise, status }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn run_caught<T>(f: impl FnOnce() -> T) -> Result<T, String> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).map_err(|payload| {
+        payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "panic".to_string())
+    })
+}
+
+#[cfg(target_arch = "wasm32")]
+fn run_caught<T>(f: impl FnOnce() -> T) -> Result<T, String> {
+    Ok(f())
+}
+
+/// Element-wise comparison with a tolerance scaled by the larger magnitude.
+pub fn mat4_close(a: &Mat4, b: &Mat4, eps: f32) -> bool {
+    a.to_cols_array().iter().zip(b.to_cols_array().iter()).all(|(x, y)| (x - y).abs() <= eps * (1.0 + x.abs().max(y.abs())))
+}
+
+/// The grade table, one row per exercise, then a summary line.
+pub fn table(reports: &[Report]) -> String {
+    let mut out = String::new();
+    let w_lesson = reports.iter().map(|r| r.lesson.len()).max().unwrap_or(0).max(6);
+    let w_ex = reports.iter().map(|r| r.exercise.len()).max().unwrap_or(0).max(8);
+    out += &format!("{:<w_lesson$}  {:<w_ex$}  status\n", "lesson", "exercise");
+    out += &format!("{}\n", "-".repeat(w_lesson + w_ex + 30));
+    for r in reports {
+        out += &format!("{:<w_lesson$}  {:<w_ex$}  {}\n", r.lesson, r.exercise, r.status);
+    }
+    let passed = reports.iter().filter(|r| r.passed()).count();
+    let todo = reports.iter().filter(|r| r.not_done()).count();
+    out += &format!(
+        "\n{passed} passed, {todo} not yet implemented, {} wrong, of {}\n",
+        reports.len() - passed - todo,
+        reports.len()
+    );
+    out
+}
+
+impl fmt::Display for Status {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Status::Passed { cases } => write!(f, "passed ({cases} cases)"),
+            Status::NotDone => write!(f, "not yet implemented"),
+            Status::Wrong { case, input, expected, actual } => write!(
+                f,
+                "WRONG at case {case}\n      input:    {input}\n      expected: {expected}\n      actual:   {actual}"
+            ),
+            Status::Panicked { case, input, message } => {
+                write!(f, "PANICKED at case {case}: {message}\n      input: {input}")
+            }
+        }
+    }
+}
+
+/// A small deterministic generator (SplitMix64) so that grading is reproducible everywhere.
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(seed: u64) -> Self {
+        Self(seed)
+    }
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        let unit = (self.next_u64() >> 40) as f32 / (1u64 << 24) as f32;
+        lo + (hi - lo) * unit
+    }
+    /// Uniform integer in [0, n).
+    pub fn below(&mut self, n: usize) -> usize {
+        (self.next_u64() % n.max(1) as u64) as usize
+    }
+    pub fn vec3(&mut self, lo: f32, hi: f32) -> Vec3 {
+        Vec3::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
+    }
+}

@@ -1,0 +1,38 @@
+//! Student exercises, one file per lesson, and the grader that checks them.
+//!
+//! Each exercise is a function whose doc comment states the task. Its body starts as a stub that
+//! returns `Err(NotDone)`: on wasm a panic (`todo!()`) would abort the whole module, taking the
+//! lesson page and the grader down with it, so an unfinished exercise says so with a value.
+//! Replace the stub with your code and return `Ok(answer)`.
+//!
+//! The first line of each body, `solution!(...)`, calls the reference core function when the crate
+//! is built with the `solutions` feature (used by CI to prove the grader passes a correct answer);
+//! in a normal build it does nothing. Leave it where it is.
+//!
+//! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
+
+pub mod grade;
+pub mod transforms;
+
+/// An exercise's answer: `Ok(value)` once implemented, `Err(NotDone)` while it is still a stub.
+pub type Answer<T> = Result<T, NotDone>;
+
+/// The marker a stub returns: "not implemented yet".
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NotDone;
+
+impl std::fmt::Display for NotDone {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("not yet implemented")
+    }
+}
+
+/// With the `solutions` feature, returns the reference answer from the enclosing exercise.
+macro_rules! solution {
+    ($reference:expr) => {
+        if cfg!(feature = "solutions") {
+            return Ok($reference);
+        }
+    };
+}
+pub(crate) use solution;

@@ -1,0 +1,100 @@
+//! Exercises for lesson 01, "Transforms and hierarchies".
+//!
+//! Reference solutions: [`crate::transform::local_matrix`] and [`crate::transform::world_matrices`].
+//! Switch the lesson page's "use my exercise" toggle to see your version drive the figure.
+
+use super::{solution, Answer, NotDone};
+use glam::{Mat4, Vec3};
+
+/// **Exercise 1.1: a joint's local matrix.**
+///
+/// Build the 4×4 matrix that rotates a shape about its pivot by Euler angles, then moves the pivot
+/// to `translation` (in the parent's frame):
+/// ```text
+/// L = T(translation) · Rx(θx) · Ry(θy) · Rz(θz)
+/// ```
+/// with column vectors, so `Rz` acts first on a point. Angles are in radians.
+///
+/// Hints: glam has `Mat4::from_translation` and `Mat4::from_rotation_x` (and y, z); `*` multiplies
+/// matrices. The order of the product is the whole exercise: try the wrong one in the lesson page
+/// and watch the arm swing about the wrong point.
+pub fn local_matrix(translation: Vec3, euler_xyz_rad: Vec3) -> Answer<Mat4> {
+    solution!(crate::transform::local_matrix(translation, euler_xyz_rad));
+    let _ = (translation, euler_xyz_rad);
+    Err(NotDone)
+}
+
+/// **Exercise 1.2: world matrices of a hierarchy.**
+///
+/// `parents[i]` is the index of joint `i`'s parent, or `-1` for a root; every parent comes before
+/// its children (`parents[i] < i`). Fill `world` (same length as `local`) with
+/// ```text
+/// world[i] = local[i]                     if parents[i] = −1
+/// world[i] = world[parents[i]] · local[i]  otherwise
+/// ```
+/// Hints: a single loop over `i` in increasing order is enough; why? Do not allocate: write into
+/// `world`, then return `Ok(())`.
+pub fn world_matrices(parents: &[i32], local: &[Mat4], world: &mut [Mat4]) -> Answer<()> {
+    solution!(crate::transform::world_matrices(parents, local, world));
+    let _ = (parents, local, world);
+    Err(NotDone)
+}
+
+/// Grades this file's exercises against the reference on random and edge-case inputs.
+pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
+    use super::grade::{check, mat4_close};
+    const LESSON: &str = "01-transforms";
+
+    let mut inputs = vec![
+        (Vec3::ZERO, Vec3::ZERO),
+        (Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO),
+        (Vec3::ZERO, Vec3::new(std::f32::consts::FRAC_PI_2, 0.0, 0.0)),
+        // Non-commuting rotations: only the right order passes this one.
+        (Vec3::new(0.0, 0.5, 0.0), Vec3::new(0.3, -1.1, 2.0)),
+        (Vec3::ZERO, Vec3::new(std::f32::consts::PI, std::f32::consts::PI, -std::f32::consts::PI)),
+    ];
+    for _ in 0..200 {
+        inputs.push((rng.vec3(-5.0, 5.0), rng.vec3(-6.3, 6.3)));
+    }
+    let local = check(
+        LESSON,
+        "local_matrix",
+        &inputs,
+        |&(t, a)| local_matrix(t, a),
+        |&(t, a)| crate::transform::local_matrix(t, a),
+        |a, b| mat4_close(a, b, 1e-4),
+    );
+
+    let mut hierarchies: Vec<Vec<i32>> = vec![vec![-1], vec![-1, 0], vec![-1, 0, 1, 2], vec![-1, 0, 0, 1, -1, 4]];
+    for _ in 0..50 {
+        let n = 1 + rng.below(20);
+        // A random valid hierarchy: each joint's parent is a root marker or any earlier joint.
+        hierarchies.push((0..n).map(|i| if i == 0 { -1 } else { rng.below(i + 1) as i32 - 1 }).collect());
+    }
+    let cases: Vec<(Vec<i32>, Vec<Mat4>)> = hierarchies
+        .into_iter()
+        .map(|parents| {
+            let local = parents
+                .iter()
+                .map(|_| crate::transform::local_matrix(rng.vec3(-1.0, 1.0), rng.vec3(-3.0, 3.0)))
+                .collect();
+            (parents, local)
+        })
+        .collect();
+    let world = check(
+        LESSON,
+        "world_matrices",
+        &cases,
+        |(parents, local)| {
+            let mut world = vec![Mat4::ZERO; local.len()];
+            world_matrices(parents, local, &mut world).map(|()| world)
+        },
+        |(parents, local)| {
+            let mut world = vec![Mat4::ZERO; local.len()];
+            crate::transform::world_matrices(parents, local, &mut world);
+            world
+        },
+        |a, b| a.len() == b.len() && a.iter().zip(b).all(|(a, b)| mat4_close(a, b, 1e-3)),
+    );
+    vec![local, world]
+}

@@ -1,0 +1,38 @@
+//! # inbetween: the computational cores of an in-browser course on 3D computer animation
+//!
+//! Each lesson in `lessons/` has a core module here (pure Rust + glam, tested natively), a thin
+//! binding in `web/` (wasm only) and graded exercises in `exercises/`.
+//!
+//! | lesson | core | binding | exercises |
+//! |---|---|---|---|
+//! | `01-transforms`: transforms and hierarchies | [`transform`], [`mesh`], [`camera`] | `web::transforms` | [`exercises::transforms`] |
+//! | (keyframes issue) keyframes and splines | [`curves`] | | |
+//! | (rotations issue) rotations, rigid motions | [`rotation`], [`rigid`] | | |
+//!
+//! ## Conventions, stated once
+//! - Right-handed coordinates, **Y up**, the camera looks down −Z in view space.
+//! - Column vectors: a point transforms as `p' = M · p`, so `A · B` applies `B` first, then `A`.
+//!   A world matrix is `world = parent_world · local`.
+//! - Homogeneous coordinates: a point has `w = 1`, a direction (vector) has `w = 0`.
+//! - Quaternions use glam's storage order `(x, y, z, w)`; `w` is the scalar part.
+//! - Units: seconds, radians, metres. Names carry units where they could be mistaken
+//!   (`time_sec`, `angle_rad`); an interpolation parameter `t` is in `[0, 1]`.
+//! - Depth range of projection matrices is `[0, 1]` (WebGPU / wgpu), not OpenGL's `[-1, 1]`.
+//! - Joint hierarchies are flat arrays of parent indices in depth-first order: the root has
+//!   parent `-1` and every other joint's parent comes before it (`parents[i] < i`).
+
+pub mod camera;
+#[cfg(not(feature = "wip-hide-cores"))]
+pub mod curves;
+pub mod exercises;
+pub mod mesh;
+#[cfg(not(feature = "wip-hide-cores"))]
+pub mod rigid;
+#[cfg(not(feature = "wip-hide-cores"))]
+pub mod rotation;
+pub mod transform;
+
+#[cfg(target_arch = "wasm32")]
+pub mod render;
+#[cfg(target_arch = "wasm32")]
+pub mod web;

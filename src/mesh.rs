@@ -1,0 +1,89 @@
+//! Triangle meshes built in code: positions, per-vertex normals, indices.
+//!
+//! Flat-shaded shapes (a box) repeat each corner once per face so that every face gets its own
+//! normal; smooth shapes (a sphere) share vertices and average nothing: their normal is analytic.
+//! Triangles wind counter-clockwise seen from outside (the front face in wgpu's default state).
+
+use glam::Vec3;
+
+/// An indexed triangle mesh with one normal per vertex.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeshData {
+    pub positions: Vec<Vec3>,
+    /// Unit normals, one per position.
+    pub normals: Vec<Vec3>,
+    /// Three indices per triangle, counter-clockwise seen from outside.
+    pub indices: Vec<u32>,
+}
+
+impl MeshData {
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() / 3
+    }
+}
+
+/// An axis-aligned box centred at the origin, `2 · half_extents` wide, 24 vertices, 12 triangles.
+pub fn cuboid(half_extents: Vec3) -> MeshData {
+    let mut mesh = MeshData::default();
+    // Each face: its outward normal and two in-plane axes u, v with u × v = normal.
+    for normal in [Vec3::X, Vec3::NEG_X, Vec3::Y, Vec3::NEG_Y, Vec3::Z, Vec3::NEG_Z] {
+        let u = if normal.y.abs() > 0.5 { Vec3::Z * normal.y.signum() } else { Vec3::Y };
+        let u = u.cross(normal).normalize(); // in-plane, perpendicular to both
+        let v = normal.cross(u);
+        let base = mesh.positions.len() as u32;
+        for (a, b) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            mesh.positions.push((normal + u * a + v * b) * half_extents);
+            mesh.normals.push(normal);
+        }
+        mesh.indices.extend_from_slice(&[base, base + 1, base + 2, base, base + 2, base + 3]);
+    }
+    mesh
+}
+
+/// A UV sphere of the given radius with `segments` around Y and `rings` from pole to pole.
+///
+/// # Panics
+/// If `segments < 3` or `rings < 2` (a programming error, not caller data).
+pub fn uv_sphere(radius: f32, segments: u32, rings: u32) -> MeshData {
+    assert!(segments >= 3 && rings >= 2, "a sphere needs at least 3 segments and 2 rings");
+    let mut mesh = MeshData::default();
+    for ring in 0..=rings {
+        let polar = std::f32::consts::PI * ring as f32 / rings as f32;
+        for segment in 0..=segments {
+            let azimuth = std::f32::consts::TAU * segment as f32 / segments as f32;
+            let n = Vec3::new(polar.sin() * azimuth.sin(), polar.cos(), polar.sin() * azimuth.cos());
+            mesh.positions.push(n * radius);
+            mesh.normals.push(n);
+        }
+    }
+    let row = segments + 1;
+    for ring in 0..rings {
+        for segment in 0..segments {
+            let a = ring * row + segment;
+            let b = a + row;
+            // Skip the degenerate triangle at each pole.
+            if ring != 0 {
+                mesh.indices.extend_from_slice(&[a, b, a + 1]);
+            }
+            if ring != rings - 1 {
+                mesh.indices.extend_from_slice(&[a + 1, b, b + 1]);
+            }
+        }
+    }
+    mesh
+}
+
+/// Line segments (pairs of endpoints) of a square grid on the plane y = 0, centred at the origin,
+/// with `cells` cells of size `spacing` along each side.
+pub fn grid_lines(cells: u32, spacing: f32) -> Vec<[Vec3; 2]> {
+    let half = cells as f32 * spacing * 0.5;
+    (0..=cells)
+        .flat_map(|i| {
+            let x = -half + i as f32 * spacing;
+            [
+                [Vec3::new(x, 0.0, -half), Vec3::new(x, 0.0, half)],
+                [Vec3::new(-half, 0.0, x), Vec3::new(half, 0.0, x)],
+            ]
+        })
+        .collect()
+}

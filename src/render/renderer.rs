@@ -1,0 +1,628 @@
+//! Pipelines, buffers and the per-frame draw list.
+
+use super::Gpu;
+use crate::camera::OrbitCamera;
+use crate::mesh::MeshData;
+use bytemuck::{Pod, Zeroable};
+use glam::{Mat4, Vec3, Vec4};
+use std::cell::Cell;
+use std::rc::Rc;
+
+const SAMPLE_COUNT: u32 = 4;
+const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
+/// Per-object uniforms sit at multiples of WebGL2's (and WebGPU's) dynamic-offset alignment.
+const OBJECT_STRIDE: u64 = 256;
+
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct Globals {
+    view: [f32; 16],
+    proj: [f32; 16],
+    eye: [f32; 4],
+    light_dir: [f32; 4],
+    params: [f32; 4],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct ObjectUniform {
+    model: [f32; 16],
+    normal_matrix: [f32; 16],
+    color: [f32; 4],
+    flags: [f32; 4],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct MeshVertex {
+    position: [f32; 3],
+    normal: [f32; 3],
+    color: [f32; 4],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct LineVertex {
+    position: [f32; 3],
+    color: [f32; 4],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct PointInstance {
+    center: [f32; 3],
+    radius: f32,
+    color: [f32; 4],
+}
+
+/// A mesh uploaded to one renderer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MeshId(usize);
+
+struct GpuMesh {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
+    /// Kept so that positions and normals can be replaced without touching colours.
+    colors: Vec<[f32; 4]>,
+}
+
+struct MeshDraw {
+    mesh: MeshId,
+    model: Mat4,
+    color: Vec4,
+    flags: Vec4,
+}
+
+/// What to draw this frame. Lessons fill it; [`Renderer::render`] draws and clears it.
+/// Colours are linear RGB. Lines and points are in world space.
+#[derive(Default)]
+pub struct Frame {
+    meshes: Vec<MeshDraw>,
+    lines: Vec<LineVertex>,
+    points: Vec<PointInstance>,
+}
+
+impl Frame {
+    /// Draws `mesh` transformed by `model`, lit, in a uniform colour.
+    pub fn mesh(&mut self, mesh: MeshId, model: Mat4, color: Vec3) {
+        self.meshes.push(MeshDraw { mesh, model, color: color.extend(1.0), flags: Vec4::ZERO });
+    }
+
+    /// Draws `mesh` lit, with the colours stored in its vertices.
+    pub fn mesh_vertex_colors(&mut self, mesh: MeshId, model: Mat4) {
+        self.meshes.push(MeshDraw { mesh, model, color: Vec4::ONE, flags: Vec4::X });
+    }
+
+    /// A line segment from `a` to `b`.
+    pub fn line(&mut self, a: Vec3, b: Vec3, color: Vec3) {
+        let color = color.extend(1.0).to_array();
+        self.lines.push(LineVertex { position: a.to_array(), color });
+        self.lines.push(LineVertex { position: b.to_array(), color });
+    }
+
+    /// Consecutive points joined by segments (a curve, a trajectory).
+    pub fn polyline(&mut self, points: &[Vec3], color: Vec3) {
+        for pair in points.windows(2) {
+            self.line(pair[0], pair[1], color);
+        }
+    }
+
+    /// A shaded disc of `radius` (world units) always facing the camera.
+    pub fn point(&mut self, center: Vec3, radius: f32, color: Vec3) {
+        self.points.push(PointInstance {
+            center: center.to_array(),
+            radius,
+            color: color.extend(1.0).to_array(),
+        });
+    }
+
+    /// The x (red), y (green) and z (blue) axes of the frame `m`, each `length` long.
+    pub fn axes(&mut self, m: Mat4, length: f32) {
+        let o = m.transform_point3(Vec3::ZERO);
+        for (axis, color) in [(Vec3::X, Vec3::new(0.9, 0.1, 0.1)), (Vec3::Y, Vec3::new(0.1, 0.7, 0.1)), (Vec3::Z, Vec3::new(0.1, 0.25, 0.95))] {
+            self.line(o, o + m.transform_vector3(axis) * length, color);
+        }
+    }
+
+    /// A ground grid on y = 0 with `cells` cells of `spacing` metres on a side.
+    pub fn grid(&mut self, cells: u32, spacing: f32) {
+        for [a, b] in crate::mesh::grid_lines(cells, spacing) {
+            let on_axis = a.x.abs() < 1e-6 && b.x.abs() < 1e-6 || a.z.abs() < 1e-6 && b.z.abs() < 1e-6;
+            self.line(a, b, if on_axis { Vec3::splat(0.45) } else { Vec3::splat(0.7) });
+        }
+    }
+
+    fn clear(&mut self) {
+        self.meshes.clear();
+        self.lines.clear();
+        self.points.clear();
+    }
+}
+
+/// A growable GPU buffer that is reallocated only when it must grow (to the next power of two).
+struct StreamBuffer {
+    buffer: wgpu::Buffer,
+    capacity: u64,
+    usage: wgpu::BufferUsages,
+    label: &'static str,
+}
+
+impl StreamBuffer {
+    fn new(device: &wgpu::Device, label: &'static str, usage: wgpu::BufferUsages, capacity: u64) -> Self {
+        let usage = usage | wgpu::BufferUsages::COPY_DST;
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor { label: Some(label), size: capacity, usage, mapped_at_creation: false });
+        Self { buffer, capacity, usage, label }
+    }
+
+    /// Uploads `bytes`; returns true when the buffer had to be replaced (bind groups must follow).
+    fn write(&mut self, gpu: &Gpu, bytes: &[u8]) -> bool {
+        let needed = bytes.len() as u64;
+        let grew = needed > self.capacity;
+        if grew {
+            self.capacity = needed.next_power_of_two();
+            self.buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(self.label),
+                size: self.capacity,
+                usage: self.usage,
+                mapped_at_creation: false,
+            });
+        }
+        if !bytes.is_empty() {
+            gpu.queue.write_buffer(&self.buffer, 0, bytes);
+        }
+        grew
+    }
+}
+
+struct Targets {
+    size: (u32, u32),
+    color: wgpu::TextureView,
+    depth: wgpu::TextureView,
+}
+
+/// Draws [`Frame`]s into one [`Gpu`]'s canvas (or into an offscreen texture, for tests).
+pub struct Renderer {
+    mesh_pipeline: wgpu::RenderPipeline,
+    line_pipeline: wgpu::RenderPipeline,
+    point_pipeline: wgpu::RenderPipeline,
+    globals: wgpu::Buffer,
+    globals_group: wgpu::BindGroup,
+    object_layout: wgpu::BindGroupLayout,
+    objects: StreamBuffer,
+    object_group: wgpu::BindGroup,
+    lines: StreamBuffer,
+    points: StreamBuffer,
+    meshes: Vec<GpuMesh>,
+    targets: Option<Targets>,
+    format: wgpu::TextureFormat,
+    encode_srgb: bool,
+    scratch_vertices: Vec<MeshVertex>,
+    scratch_objects: Vec<u8>,
+    /// A unit cube (half-extent 1) and a unit sphere, ready for any lesson.
+    pub cube: MeshId,
+    pub sphere: MeshId,
+    /// Background colour, sRGB-encoded.
+    pub clear_srgb: Vec3,
+    /// Direction towards the key light, world space.
+    pub light_dir: Vec3,
+    pub frame: Frame,
+}
+
+impl Renderer {
+    pub fn new(gpu: &Gpu) -> Self {
+        let device = &gpu.device;
+        let format = gpu.config.format;
+        let uniform_entry = |dynamic: bool, size: u64| wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: dynamic,
+                min_binding_size: wgpu::BufferSize::new(size),
+            },
+            count: None,
+        };
+        let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("globals"),
+            entries: &[uniform_entry(false, std::mem::size_of::<Globals>() as u64)],
+        });
+        let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("object"),
+            entries: &[uniform_entry(true, std::mem::size_of::<ObjectUniform>() as u64)],
+        });
+        let globals = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("globals"),
+            size: std::mem::size_of::<Globals>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let globals_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("globals"),
+            layout: &globals_layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() }],
+        });
+        let objects = StreamBuffer::new(device, "objects", wgpu::BufferUsages::UNIFORM, OBJECT_STRIDE * 64);
+        let object_group = Self::object_group(device, &object_layout, &objects.buffer);
+
+        let shader = |label: &str, source: &str| {
+            device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(label),
+                source: wgpu::ShaderSource::Wgsl(format!("{}\n{}", include_str!("shaders/common.wgsl"), source).into()),
+            })
+        };
+        let mesh_shader = shader("mesh", include_str!("shaders/mesh.wgsl"));
+        let line_shader = shader("line", include_str!("shaders/line.wgsl"));
+        let point_shader = shader("point", include_str!("shaders/point.wgsl"));
+        let layout_with = |layouts: &[Option<&wgpu::BindGroupLayout>]| {
+            device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: None,
+                bind_group_layouts: layouts,
+                immediate_size: 0,
+            })
+        };
+        let mesh_layout = layout_with(&[Some(&globals_layout), Some(&object_layout)]);
+        let plain_layout = layout_with(&[Some(&globals_layout)]);
+
+        let mesh_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
+        let line_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4];
+        let point_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
+        let make = |label: &str,
+                    layout: &wgpu::PipelineLayout,
+                    module: &wgpu::ShaderModule,
+                    buffer: wgpu::VertexBufferLayout,
+                    topology: wgpu::PrimitiveTopology,
+                    cull: Option<wgpu::Face>| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(label),
+                layout: Some(layout),
+                vertex: wgpu::VertexState {
+                    module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(buffer)],
+                },
+                primitive: wgpu::PrimitiveState { topology, cull_mode: cull, ..Default::default() },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(wgpu::CompareFunction::LessEqual),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: wgpu::MultisampleState { count: SAMPLE_COUNT, ..Default::default() },
+                fragment: Some(wgpu::FragmentState {
+                    module,
+                    entry_point: Some("fs_main"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format,
+                        blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let mesh_pipeline = make(
+            "mesh",
+            &mesh_layout,
+            &mesh_shader,
+            wgpu::VertexBufferLayout {
+                array_stride: std::mem::size_of::<MeshVertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &mesh_attributes,
+            },
+            wgpu::PrimitiveTopology::TriangleList,
+            Some(wgpu::Face::Back),
+        );
+        let line_pipeline = make(
+            "line",
+            &plain_layout,
+            &line_shader,
+            wgpu::VertexBufferLayout {
+                array_stride: std::mem::size_of::<LineVertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &line_attributes,
+            },
+            wgpu::PrimitiveTopology::LineList,
+            None,
+        );
+        let point_pipeline = make(
+            "point",
+            &plain_layout,
+            &point_shader,
+            wgpu::VertexBufferLayout {
+                array_stride: std::mem::size_of::<PointInstance>() as u64,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &point_attributes,
+            },
+            wgpu::PrimitiveTopology::TriangleList,
+            None,
+        );
+        let mut renderer = Self {
+            mesh_pipeline,
+            line_pipeline,
+            point_pipeline,
+            globals,
+            globals_group,
+            object_layout,
+            objects,
+            object_group,
+            lines: StreamBuffer::new(device, "lines", wgpu::BufferUsages::VERTEX, 1 << 16),
+            points: StreamBuffer::new(device, "points", wgpu::BufferUsages::VERTEX, 1 << 12),
+            meshes: Vec::new(),
+            targets: None,
+            format,
+            encode_srgb: gpu.encode_srgb_in_shader,
+            scratch_vertices: Vec::new(),
+            scratch_objects: Vec::new(),
+            cube: MeshId(0),
+            sphere: MeshId(0),
+            clear_srgb: Vec3::new(0.96, 0.96, 0.97),
+            light_dir: Vec3::new(0.4, 0.8, 0.45).normalize(),
+            frame: Frame::default(),
+        };
+        renderer.cube = renderer.create_mesh(gpu, &crate::mesh::cuboid(Vec3::ONE), None);
+        renderer.sphere = renderer.create_mesh(gpu, &crate::mesh::uv_sphere(1.0, 24, 16), None);
+        renderer
+    }
+
+    fn object_group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, buffer: &wgpu::Buffer) -> wgpu::BindGroup {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("objects"),
+            layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                    buffer,
+                    offset: 0,
+                    size: wgpu::BufferSize::new(std::mem::size_of::<ObjectUniform>() as u64),
+                }),
+            }],
+        })
+    }
+
+    /// Uploads a mesh; `colors` (linear RGBA, one per vertex) defaults to white.
+    pub fn create_mesh(&mut self, gpu: &Gpu, data: &MeshData, colors: Option<&[Vec4]>) -> MeshId {
+        use wgpu::util::DeviceExt;
+        let colors: Vec<[f32; 4]> = match colors {
+            Some(c) => c.iter().map(|c| c.to_array()).collect(),
+            None => vec![[1.0; 4]; data.positions.len()],
+        };
+        let vertices: Vec<MeshVertex> = data
+            .positions
+            .iter()
+            .zip(&data.normals)
+            .zip(&colors)
+            .map(|((p, n), c)| MeshVertex { position: p.to_array(), normal: n.to_array(), color: *c })
+            .collect();
+        let vertices = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("mesh vertices"),
+            contents: bytemuck::cast_slice(&vertices),
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+        });
+        let indices = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("mesh indices"),
+            contents: bytemuck::cast_slice(&data.indices),
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        self.meshes.push(GpuMesh { vertices, indices, index_count: data.indices.len() as u32, colors });
+        MeshId(self.meshes.len() - 1)
+    }
+
+    /// Replaces a mesh's positions and normals in place (skinning, cloth): same vertex count, no
+    /// reallocation on the GPU.
+    pub fn update_mesh(&mut self, gpu: &Gpu, id: MeshId, positions: &[Vec3], normals: &[Vec3]) -> Result<(), String> {
+        let mesh = self.meshes.get(id.0).ok_or("unknown mesh")?;
+        if positions.len() != mesh.colors.len() || normals.len() != mesh.colors.len() {
+            return Err(format!(
+                "mesh has {} vertices, got {} positions and {} normals",
+                mesh.colors.len(),
+                positions.len(),
+                normals.len()
+            ));
+        }
+        self.scratch_vertices.clear();
+        self.scratch_vertices.extend(positions.iter().zip(normals).zip(&mesh.colors).map(|((p, n), c)| MeshVertex {
+            position: p.to_array(),
+            normal: n.to_array(),
+            color: *c,
+        }));
+        gpu.queue.write_buffer(&mesh.vertices, 0, bytemuck::cast_slice(&self.scratch_vertices));
+        Ok(())
+    }
+
+    /// Draws and clears `self.frame` into the canvas.
+    pub fn render(&mut self, gpu: &Gpu, camera: &OrbitCamera) -> Result<(), String> {
+        let frame = match gpu.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(f) | wgpu::CurrentSurfaceTexture::Suboptimal(f) => f,
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                gpu.surface.configure(&gpu.device, &gpu.config);
+                self.frame.clear();
+                return Ok(());
+            }
+            _ => {
+                self.frame.clear();
+                return Ok(()); // skipped frame (timeout, occluded): draw the next one
+            }
+        };
+        let view = frame.texture.create_view(&Default::default());
+        let commands = self.encode(gpu, camera, &view, (gpu.config.width, gpu.config.height));
+        gpu.queue.submit([commands]);
+        gpu.queue.present(frame);
+        Ok(())
+    }
+
+    /// Draws and clears `self.frame` into an offscreen `width × height` texture and returns its
+    /// pixels as sRGB-encoded RGBA bytes, row by row from the top. For tests and thumbnails.
+    pub async fn render_to_rgba(&mut self, gpu: &Gpu, camera: &OrbitCamera, width: u32, height: u32) -> Result<Vec<u8>, String> {
+        let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("offscreen"),
+            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: self.format,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        let view = texture.create_view(&Default::default());
+        let draw = self.encode(gpu, camera, &view, (width, height));
+        let padded_row = (width * 4).div_ceil(256) * 256;
+        let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size: (padded_row * height) as u64,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo { texture: &texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect: wgpu::TextureAspect::All },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &readback,
+                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(padded_row), rows_per_image: Some(height) },
+            },
+            wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+        );
+        gpu.queue.submit([draw, encoder.finish()]);
+        let done: Rc<Cell<Option<Result<(), String>>>> = Rc::new(Cell::new(None));
+        let signal = done.clone();
+        readback.map_async(wgpu::MapMode::Read, .., move |r| signal.set(Some(r.map_err(|e| e.to_string()))));
+        // WebGPU completes the mapping from the browser's event loop, WebGL2 when polled: do both.
+        let result = loop {
+            let _ = gpu.device.poll(wgpu::PollType::Poll);
+            if let Some(r) = done.take() {
+                break r;
+            }
+            sleep_ms(5).await;
+        };
+        result.map_err(|e| format!("reading pixels back failed: {e}"))?;
+        let mapped = readback.get_mapped_range(..).map_err(|e| e.to_string())?;
+        let mut pixels = Vec::with_capacity((width * height * 4) as usize);
+        for row in mapped.chunks(padded_row as usize) {
+            pixels.extend_from_slice(&row[..(width * 4) as usize]);
+        }
+        drop(mapped);
+        readback.unmap();
+        if self.format == wgpu::TextureFormat::Bgra8Unorm {
+            pixels.chunks_mut(4).for_each(|p| p.swap(0, 2));
+        }
+        Ok(pixels)
+    }
+
+    fn ensure_targets(&mut self, gpu: &Gpu, size: (u32, u32)) {
+        if self.targets.as_ref().is_some_and(|t| t.size == size) {
+            return;
+        }
+        let make = |format, label| {
+            gpu.device
+                .create_texture(&wgpu::TextureDescriptor {
+                    label: Some(label),
+                    size: wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
+                    mip_level_count: 1,
+                    sample_count: SAMPLE_COUNT,
+                    dimension: wgpu::TextureDimension::D2,
+                    format,
+                    usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                    view_formats: &[],
+                })
+                .create_view(&Default::default())
+        };
+        self.targets = Some(Targets { size, color: make(self.format, "msaa color"), depth: make(DEPTH_FORMAT, "depth") });
+    }
+
+    fn encode(&mut self, gpu: &Gpu, camera: &OrbitCamera, target: &wgpu::TextureView, size: (u32, u32)) -> wgpu::CommandBuffer {
+        self.ensure_targets(gpu, size);
+        let aspect = size.0 as f32 / size.1.max(1) as f32;
+        let globals = Globals {
+            view: camera.view().to_cols_array(),
+            proj: camera.projection(aspect).to_cols_array(),
+            eye: camera.eye().extend(1.0).to_array(),
+            light_dir: self.light_dir.normalize().extend(0.0).to_array(),
+            params: [if self.encode_srgb { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0],
+        };
+        gpu.queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
+
+        self.scratch_objects.clear();
+        for draw in &self.frame.meshes {
+            let object = ObjectUniform {
+                model: draw.model.to_cols_array(),
+                normal_matrix: draw.model.inverse().transpose().to_cols_array(),
+                color: draw.color.to_array(),
+                flags: draw.flags.to_array(),
+            };
+            self.scratch_objects.extend_from_slice(bytemuck::bytes_of(&object));
+            self.scratch_objects.resize(self.scratch_objects.len().next_multiple_of(OBJECT_STRIDE as usize), 0);
+        }
+        if self.objects.write(gpu, &self.scratch_objects) {
+            self.object_group = Self::object_group(&gpu.device, &self.object_layout, &self.objects.buffer);
+        }
+        self.lines.write(gpu, bytemuck::cast_slice(&self.frame.lines));
+        self.points.write(gpu, bytemuck::cast_slice(&self.frame.points));
+
+        let clear = if self.encode_srgb { self.clear_srgb } else { srgb_to_linear(self.clear_srgb) };
+        let targets = self.targets.as_ref().expect("targets were just ensured");
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        {
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("frame"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &targets.color,
+                    depth_slice: None,
+                    resolve_target: Some(target),
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color { r: clear.x as f64, g: clear.y as f64, b: clear.z as f64, a: 1.0 }),
+                        store: wgpu::StoreOp::Discard,
+                    },
+                })],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &targets.depth,
+                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_bind_group(0, &self.globals_group, &[]);
+            if !self.frame.meshes.is_empty() {
+                pass.set_pipeline(&self.mesh_pipeline);
+                for (i, draw) in self.frame.meshes.iter().enumerate() {
+                    let mesh = &self.meshes[draw.mesh.0];
+                    pass.set_bind_group(1, &self.object_group, &[(i as u64 * OBJECT_STRIDE) as u32]);
+                    pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+                    pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                    pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+                }
+            }
+            if !self.frame.lines.is_empty() {
+                pass.set_pipeline(&self.line_pipeline);
+                pass.set_vertex_buffer(0, self.lines.buffer.slice(..));
+                pass.draw(0..self.frame.lines.len() as u32, 0..1);
+            }
+            if !self.frame.points.is_empty() {
+                pass.set_pipeline(&self.point_pipeline);
+                pass.set_vertex_buffer(0, self.points.buffer.slice(..));
+                pass.draw(0..6, 0..self.frame.points.len() as u32);
+            }
+        }
+        self.frame.clear();
+        encoder.finish()
+    }
+}
+
+fn srgb_to_linear(c: Vec3) -> Vec3 {
+    let f = |x: f32| if x <= 0.04045 { x / 12.92 } else { ((x + 0.055) / 1.055).powf(2.4) };
+    Vec3::new(f(c.x), f(c.y), f(c.z))
+}
+
+/// Resolves after `ms` milliseconds (a JavaScript timer), letting the browser run its event loop.
+pub(crate) async fn sleep_ms(ms: i32) {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        let window = web_sys::window().expect("a browser window");
+        let _ = window.set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, ms);
+    });
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+}

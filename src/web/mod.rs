@@ -1,0 +1,46 @@
+//! wasm-bindgen bindings (wasm only). Thin by design: each function checks what JavaScript
+//! passed (lengths, finiteness, ranges), calls a core, and returns `Result<_, JsError>` whose
+//! message the page shows in its error banner. No HTML is built here, no math re-implemented.
+
+mod bench;
+mod transforms;
+mod viewer;
+
+pub use viewer::Viewer;
+
+use wasm_bindgen::prelude::*;
+
+/// Runs once when the module loads: panics (bugs, never bad input) reach the console and the page.
+#[wasm_bindgen(start)]
+pub fn start() {
+    console_error_panic_hook::set_once();
+}
+
+/// The crate version and whether this build grades with the reference solutions.
+#[wasm_bindgen(js_name = buildInfo)]
+pub fn build_info() -> String {
+    format!(
+        "inbetween {}{}",
+        env!("CARGO_PKG_VERSION"),
+        if cfg!(feature = "solutions") { " (solutions build)" } else { "" }
+    )
+}
+
+/// An error for JavaScript when `value` is NaN or infinite.
+pub(crate) fn finite(name: &str, value: f32) -> Result<f32, JsError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(JsError::new(&format!("{name} must be a finite number, got {value}")))
+    }
+}
+
+/// An error for JavaScript when `value` lies outside `[lo, hi]` (or is not finite).
+pub(crate) fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, JsError> {
+    finite(name, value)?;
+    if (lo..=hi).contains(&value) {
+        Ok(value)
+    } else {
+        Err(JsError::new(&format!("{name} must lie in [{lo}, {hi}], got {value}")))
+    }
+}

@@ -1,0 +1,63 @@
+// Launching Debian's Chromium with the flag sets from ../shared/TOOLCHAIN.md, one per backend.
+import { chromium } from 'playwright-core';
+import { mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const BASE = ['--no-sandbox', '--no-first-run', '--disable-background-networking',
+  '--disable-component-update', '--disable-sync', '--disable-quic', '--disable-dev-shm-usage'];
+
+export const PROFILES = {
+  // SwiftShader through ANGLE; no WebGPU adapter, so "auto" falls back to WebGL2.
+  webgl2: [...BASE, '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  // WebGPU on SwiftShader's Vulkan (a CPU adapter: not for timings).
+  webgpu: [...BASE, '--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader',
+    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  // Neither API: the page must say so instead of showing a blank canvas.
+  none: [...BASE, '--disable-3d-apis', '--disable-webgl', '--disable-gpu'],
+};
+
+/** A persistent Chromium context with the flags of `profile` (webgl2, webgpu or none). */
+export async function launch(profile) {
+  const dir = mkdtempSync(join(tmpdir(), `inbetween-${profile}-`));
+  return chromium.launchPersistentContext(dir, {
+    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+    headless: true,
+    args: PROFILES[profile],
+    viewport: { width: 1100, height: 900 },
+  });
+}
+
+/**
+ * Pixel statistics of an element's screenshot, decoded in the page (no PNG library needed):
+ * the fraction of pixels that differ from the top-left (background) colour, the number of
+ * distinct colours (quantised), and the raw RGBA for comparisons.
+ */
+export async function pixelStats(page, locator) {
+  const png = await locator.screenshot();
+  return page.evaluate(async (b64) => {
+    const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+    const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+    const ctx = canvas.getContext('2d');
+    ctx.drawImage(bitmap, 0, 0);
+    const { data } = ctx.getImageData(0, 0, bitmap.width, bitmap.height);
+    const bg = [data[0], data[1], data[2]];
+    let different = 0;
+    const colors = new Set();
+    for (let i = 0; i < data.length; i += 4) {
+      const d = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
+      if (d > 24) different++;
+      colors.add(((data[i] >> 3) << 10) | ((data[i + 1] >> 3) << 5) | (data[i + 2] >> 3));
+    }
+    return { width: bitmap.width, height: bitmap.height, coverage: different / (data.length / 4), colors: colors.size, rgba: Array.from(data) };
+  }, png.toString('base64'));
+}
+
+/** Mean absolute difference per channel between two equally sized RGBA arrays (0..255). */
+export function meanDifference(a, b) {
+  if (a.length !== b.length) return 255;
+  let sum = 0;
+  for (let i = 0; i < a.length; i++) sum += Math.abs(a[i] - b[i]);
+  return sum / a.length;
+}
