@@ -11,7 +11,9 @@ for (const folder of readdirSync('lessons').sort()) {
   for (const key of ['title', 'summary', 'part', 'order']) {
     if (meta[key] === undefined) throw new Error(`${metaPath} lacks "${key}"`);
   }
-  catalog.push({ folder, ...meta });
+  // A lesson without a thumbnail yet (THUMBNAILS=1 node --test tests/e2e/ makes one) gets a placeholder.
+  const hasThumbnail = Boolean(meta.thumbnail) && existsSync(join('lessons', folder, meta.thumbnail));
+  catalog.push({ folder, ...meta, hasThumbnail });
   for (const { path } of meta.sources ?? []) {
     if (!existsSync(path)) throw new Error(`${metaPath} lists ${path}, which does not exist`);
     mkdirSync(dirname(join('dist/source', path)), { recursive: true });

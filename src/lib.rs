@@ -22,13 +22,10 @@
 //!   parent `-1` and every other joint's parent comes before it (`parents[i] < i`).
 
 pub mod camera;
-#[cfg(not(feature = "wip-hide-cores"))]
 pub mod curves;
 pub mod exercises;
 pub mod mesh;
-#[cfg(not(feature = "wip-hide-cores"))]
 pub mod rigid;
-#[cfg(not(feature = "wip-hide-cores"))]
 pub mod rotation;
 pub mod transform;
 

@@ -247,7 +247,7 @@ pub fn simple_human() -> (Hierarchy, Vec<LocalTransform>, Vec<JointShape>) {
     let trousers = Vec3::new(0.25, 0.25, 0.35);
     // (name, parent, pivot in parent frame, box half-extents, box centre, colour)
     let joints: [(&str, i32, Vec3, Vec3, Vec3, Vec3); 11] = [
-        ("pelvis", -1, Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.17, 0.1, 0.1), Vec3::ZERO, trousers),
+        ("pelvis", -1, Vec3::new(0.0, 0.9, 0.0), Vec3::new(0.17, 0.1, 0.1), Vec3::ZERO, trousers),
         ("chest", 0, Vec3::new(0.0, 0.1, 0.0), Vec3::new(0.2, 0.25, 0.11), Vec3::new(0.0, 0.25, 0.0), shirt),
         ("head", 1, Vec3::new(0.0, 0.52, 0.0), Vec3::new(0.1, 0.12, 0.1), Vec3::new(0.0, 0.14, 0.0), skin),
         ("upper_arm.L", 1, Vec3::new(0.26, 0.45, 0.0), Vec3::new(0.05, 0.15, 0.05), Vec3::new(0.0, -0.15, 0.0), shirt),

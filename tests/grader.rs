@@ -5,6 +5,8 @@
 //! - with `INBETWEEN_GRADER_EXPECT=stubs` (CI, on the untouched stubs), every exercise reports
 //!   "not yet implemented" (the grader tells a stub from an answer);
 //! - otherwise (a student's build), no exercise may be wrong or panic.
+// Native only (tests/web_grader.rs is the browser twin); the browser runs tests/transform.rs and tests/web*.rs.
+#![cfg(not(target_arch = "wasm32"))]
 
 use inbetween::exercises::grade::{grade_all, table};
 

@@ -1,5 +1,7 @@
 //! Tests of `inbetween::rigid`: dual quaternions, blending, screw interpolation, screw axis,
 //! errors, and pytransform3d reference values (tests/data/rotation_reference.txt).
+// Native only (proptest); the browser runs tests/transform.rs and tests/web*.rs.
+#![cfg(not(target_arch = "wasm32"))]
 
 use std::f32::consts::{FRAC_PI_2, PI};
 

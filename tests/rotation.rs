@@ -1,5 +1,7 @@
 //! Tests of `inbetween::rotation`: conversions, interpolation, spline, polar decomposition,
 //! affine keys, errors, and reference values from scipy (tests/data/rotation_reference.txt).
+// Native only (proptest); the browser runs tests/transform.rs and tests/web*.rs.
+#![cfg(not(target_arch = "wasm32"))]
 
 use std::f32::consts::{FRAC_PI_2, PI};
 

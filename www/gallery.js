@@ -11,7 +11,8 @@ for (const part of parts) {
     const card = document.createElement('a');
     card.className = 'card';
     card.href = `${lesson.folder}/`;
-    card.innerHTML = `<img alt="" src="${lesson.folder}/${lesson.thumbnail}"><div class="text"><h3></h3><p></p></div>`;
+    const image = lesson.hasThumbnail ? `<img alt="" src="${lesson.folder}/${lesson.thumbnail}">` : '<img alt="">';
+    card.innerHTML = `${image}<div class="text"><h3></h3><p></p></div>`;
     card.querySelector('h3').textContent = lesson.title;
     card.querySelector('p').textContent = lesson.summary;
     grid.append(card);

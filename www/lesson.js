@@ -137,6 +137,7 @@ async function createFigure(selector) {
     box.dataset.ready = 'no-gpu';
     document.body.dataset.backend = 'none';
     showError(e);
+    updateReady();
     return null;
   }
   badge.textContent = viewer.backend;
@@ -161,9 +162,12 @@ export function markDrawn(selector) {
   const box = document.querySelector(selector);
   if (box && box.dataset.ready !== '1') {
     box.dataset.ready = '1';
-    const all = [...document.querySelectorAll('.figure')];
-    if (all.every((f) => f.dataset.ready)) document.body.dataset.ready = '1';
+    updateReady();
   }
+}
+
+function updateReady() {
+  if ([...document.querySelectorAll('.figure')].every((f) => f.dataset.ready)) document.body.dataset.ready = '1';
 }
 
 function attachCameraControls(canvas, viewer) {
