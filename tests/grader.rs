@@ -23,3 +23,31 @@ fn grade_exercises() {
         assert!(reports.iter().all(|r| r.passed() || r.not_done()), "some exercises are wrong");
     }
 }
+
+mod the_grader_itself {
+    use inbetween::exercises::grade::{check, Status};
+    use inbetween::exercises::NotDone;
+
+    #[test]
+    fn reports_the_first_wrong_case_with_input_expected_and_actual() {
+        let report = check("l", "e", &[1, 2, 3], |&x| Ok(if x == 2 { 0 } else { x }), |&x| x, |a, b| a == b);
+        assert_eq!(
+            report.status,
+            Status::Wrong { case: 1, input: "2".into(), expected: "2".into(), actual: "0".into() }
+        );
+    }
+
+    #[test]
+    fn tells_a_stub_from_an_answer() {
+        let report = check("l", "e", &[1], |_| Err::<i32, _>(NotDone), |&x| x, |a, b| a == b);
+        assert_eq!(report.status, Status::NotDone);
+        let report = check("l", "e", &[1, 5], |&x| Ok(x), |&x| x, |a, b| a == b);
+        assert_eq!(report.status, Status::Passed { cases: 2 });
+    }
+
+    #[test]
+    fn catches_a_panicking_exercise_natively() {
+        let report = check("l", "e", &[0usize], |&i| Ok([1][i + 1]), |_| 1, |a, b| a == b);
+        assert!(matches!(report.status, Status::Panicked { case: 0, .. }), "{:?}", report.status);
+    }
+}

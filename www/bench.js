@@ -1,0 +1,59 @@
+// Runs every suite's kernels, median of several runs, and reports per-item time and the ratio to
+// each suite's baseline kernel. Results: the table, the JSON block, and window.__benchResults.
+import init, * as wasm from '../pkg/inbetween.js';
+
+/**
+ * A suite: `run(kernel, size, iterations)` returns milliseconds for `iterations` passes over `size`
+ * items. Lessons add their suites here (one entry each).
+ */
+export const SUITES = [
+  {
+    name: 'hierarchy (forward kinematics)',
+    run: (kernel, size, iterations) => wasm.benchHierarchy(kernel, size, iterations),
+    kernels: ['copy_baseline', 'world_matrices', 'local_matrix_from_euler'],
+    baseline: 'copy_baseline',
+    size: 1024,
+    iterations: 2000,
+    unit: 'joint',
+  },
+];
+
+const REPEATS = 5;
+
+function median(values) {
+  const s = [...values].sort((a, b) => a - b);
+  return s[Math.floor(s.length / 2)];
+}
+
+async function main() {
+  await init();
+  const results = [];
+  for (const suite of SUITES) {
+    const rows = [];
+    for (const kernel of suite.kernels) {
+      suite.run(kernel, suite.size, Math.max(1, suite.iterations / 10)); // warm-up
+      const times = [];
+      for (let r = 0; r < REPEATS; r++) times.push(suite.run(kernel, suite.size, suite.iterations));
+      const ms = median(times);
+      const items = suite.size * suite.iterations;
+      rows.push({ suite: suite.name, kernel, ns_per_item: (ms * 1e6) / items, items_per_sec: items / (ms / 1000) });
+      await new Promise((ok) => setTimeout(ok, 0)); // let the page breathe between kernels
+    }
+    const base = rows.find((r) => r.kernel === suite.baseline);
+    for (const row of rows) row.ratio_to_baseline = row.ns_per_item / base.ns_per_item;
+    results.push(...rows);
+  }
+  const table = document.getElementById('results');
+  table.innerHTML = '<tr><th>suite</th><th>kernel</th><th>ns / item</th><th>items / s</th><th>× baseline</th></tr>' +
+    results.map((r) => `<tr><td>${r.suite}</td><td>${r.kernel}</td><td>${r.ns_per_item.toFixed(2)}</td>` +
+      `<td>${r.items_per_sec.toExponential(2)}</td><td>${r.ratio_to_baseline.toFixed(2)}</td></tr>`).join('');
+  document.getElementById('json').textContent = JSON.stringify(results, null, 2);
+  window.__benchResults = results;
+  document.body.dataset.ready = '1';
+}
+
+main().catch((e) => {
+  document.getElementById('json').textContent = `failed: ${e}`;
+  window.__benchResults = { error: String(e) };
+  document.body.dataset.ready = '1';
+});
