@@ -103,3 +103,29 @@ async fn viewer_rejects_an_unknown_backend_with_a_message() {
     assert_eq!(BackendChoice::parse("webgl2"), Ok(BackendChoice::WebGl2));
     assert!(BackendChoice::parse("vulkan").unwrap_err().contains("auto, webgpu or webgl2"));
 }
+
+/// The message of a `JsError` as JavaScript would see it.
+fn message(error: wasm_bindgen::JsError) -> String {
+    let value: wasm_bindgen::JsValue = error.into();
+    js_sys::Reflect::get(&value, &"message".into()).ok().and_then(|m| m.as_string()).unwrap_or_default()
+}
+
+#[wasm_bindgen_test]
+fn lesson_01_bindings_reject_bad_input_with_messages() {
+    use inbetween::web::{HierarchyScene, SingleShapeScene};
+    let mut scene = HierarchyScene::new();
+    let m = message(scene.set_joint_angles_deg(0, f32::NAN, 0.0, 0.0).unwrap_err());
+    assert!(m.contains("x must be a finite number"), "{m}");
+    let m = message(scene.set_joint_scale(1, 99.0, 1.0, 1.0).unwrap_err());
+    assert!(m.contains("sx must lie in [0.1, 4]"), "{m}");
+    let m = message(scene.select(99).unwrap_err());
+    assert!(m.contains("out of range") && m.contains("11 joints"), "{m}");
+    assert!(scene.sample_cycle(1, 1.2).is_err());
+    assert!(scene.sample_cycle(50, f32::INFINITY).is_err());
+    assert!(scene.set_joint_angles_deg(3, 10.0, 20.0, 30.0).is_ok());
+    let back = scene.joint_angles_deg(3).unwrap();
+    assert!(back.iter().zip([10.0, 20.0, 30.0]).all(|(a, b)| (a - b).abs() < 1e-4), "{back:?}");
+    let mut shape = SingleShapeScene::new();
+    let m = message(shape.set_transform(0.0, f32::NEG_INFINITY, 0.0, 0.0, 0.0, 0.0).unwrap_err());
+    assert!(m.contains("ty"), "{m}");
+}

@@ -18,7 +18,8 @@ export const SUITES = [
   },
 ];
 
-const REPEATS = 5;
+const QUICK = new URLSearchParams(location.search).has('quick');
+const REPEATS = QUICK ? 1 : 5;
 
 function median(values) {
   const s = [...values].sort((a, b) => a - b);
@@ -31,11 +32,13 @@ async function main() {
   for (const suite of SUITES) {
     const rows = [];
     for (const kernel of suite.kernels) {
-      suite.run(kernel, suite.size, Math.max(1, suite.iterations / 10)); // warm-up
+      suite.run(kernel, suite.size, Math.max(1, Math.round(suite.iterations / (QUICK ? 100 : 10)))); // warm-up
       const times = [];
-      for (let r = 0; r < REPEATS; r++) times.push(suite.run(kernel, suite.size, suite.iterations));
+      // ?quick (the page test): a smoke run, a twentieth of the work, one repeat.
+      const iterations = QUICK ? Math.max(1, Math.round(suite.iterations / 20)) : suite.iterations;
+      for (let r = 0; r < REPEATS; r++) times.push(suite.run(kernel, suite.size, iterations));
       const ms = median(times);
-      const items = suite.size * suite.iterations;
+      const items = suite.size * iterations;
       rows.push({ suite: suite.name, kernel, ns_per_item: (ms * 1e6) / items, items_per_sec: items / (ms / 1000) });
       await new Promise((ok) => setTimeout(ok, 0)); // let the page breathe between kernels
     }

@@ -12,6 +12,7 @@ window.__inbetween = state;
 /** Shows `message` in the red banner at the top of the page (and keeps it for the tests). */
 export function showError(message) {
   const text = String(message?.message ?? message);
+  if (state.errors.includes(text)) return; // one line per distinct problem (several figures may fail alike)
   state.errors.push(text);
   let banner = document.getElementById('error-banner');
   if (!banner) {

@@ -6,6 +6,7 @@ mod bench;
 mod transforms;
 mod viewer;
 
+pub use transforms::{HierarchyScene, SingleShapeScene};
 pub use viewer::Viewer;
 
 use wasm_bindgen::prelude::*;

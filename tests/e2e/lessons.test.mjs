@@ -67,6 +67,9 @@ for (const backend of ['webgpu', 'webgl2']) {
           assert.ok(figures.length > 0, 'a lesson has at least one figure');
           for (const [i, figure] of figures.entries()) {
             const canvas = figure.locator('.stage canvas');
+            if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
+              writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail}`, await canvas.screenshot());
+            }
             assert.equal(await figure.locator('.backend-badge').textContent(), label);
             const before = await pixelStats(page, canvas);
             assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
@@ -83,9 +86,14 @@ for (const backend of ['webgpu', 'webgl2']) {
             const after = await pixelStats(page, canvas);
             const change = meanDifference(still.rgba, after.rgba);
             assert.ok(change > 0.2, `figure ${i}: moving a control did not change the image (${change})`);
-            if (i === 0 && process.env.THUMBNAILS) {
-              writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail}`, await canvas.screenshot());
-            }
+          }
+          // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
+          const toggle = page.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]');
+          if (await toggle.count()) {
+            await toggle.first().check();
+            await frames(page);
+            const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
+            assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
           }
           await page.screenshot({ path: `${SHOTS}/${lesson.folder}-${backend}.png`, fullPage: true });
           assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
@@ -98,6 +106,22 @@ for (const backend of ['webgpu', 'webgl2']) {
     }
   });
 }
+
+test('the bench page runs every kernel and reports finite results', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '/www/bench.html?quick');
+    const results = await page.evaluate(() => window.__benchResults);
+    assert.ok(Array.isArray(results) && results.length > 0, JSON.stringify(results));
+    for (const r of results) {
+      assert.ok(Number.isFinite(r.ns_per_item) && r.ns_per_item > 0, `${r.suite} / ${r.kernel}`);
+      assert.ok(Number.isFinite(r.ratio_to_baseline), `${r.suite} / ${r.kernel}`);
+    }
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
 
 test('a browser without WebGPU or WebGL2 gets a clear message', async () => {
   const context = await launch('none');
