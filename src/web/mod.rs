@@ -3,6 +3,9 @@
 //! message the page shows in its error banner. No HTML is built here, no math re-implemented.
 
 mod bench;
+mod bench_rotation;
+mod rigid;
+mod rotations;
 mod transforms;
 mod viewer;
 
