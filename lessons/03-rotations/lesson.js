@@ -6,12 +6,12 @@ const lesson = await startLesson();
 
 /** Time on the timeline as t in [0, 1], going there and back so the motion never jumps. */
 const pingPong = (timeline) => 1 - Math.abs(2 * (timeline.time / timeline.duration) - 1);
-const fmt = (v) => v.map((x) => x.toFixed(3)).join(', ');
+const fmt = (v) => Array.from(v, (x) => x.toFixed(3)).join(', ');
 
 // Figure 1: matrix lerp, Euler lerp, nlerp, slerp side by side.
 const interpViewer = await lesson.figure('#fig-interp');
 if (interpViewer) {
-  interpViewer.setCamera(0, 0.9, 0, 8.5, 0.0, 0.3);
+  interpViewer.setCamera(0, 1.1, 0, 6.2, 0.0, 0.25);
   const scene = new InterpolationScene();
   const timeline = new Timeline(document.getElementById('interp-timeline'), { duration: 4 });
   const p = { ex: 150, ey: 20, ez: 120, sx: -20, sy: 10, sz: 0, longArc: false, useExercise: false };
@@ -72,7 +72,7 @@ if (gimbalViewer) {
   function apply() {
     scene.setAnglesDeg(p.yaw, p.pitch, p.roll);
     const angle = scene.axesAngleDeg();
-    const [y, x, z, locked] = scene.decomposedDeg();
+    const [y, x, z, locked] = Array.from(scene.decomposedDeg());
     note.textContent = `Angle between the yaw and roll axles: ${angle.toFixed(1)}°. ` +
       (locked ? 'Gimbal lock: read back from the matrix, only yaw + roll is determined, so roll is set to 0: ' : 'Read back from the matrix: ') +
       `yaw ${y.toFixed(1)}°, pitch ${x.toFixed(1)}°, roll ${z.toFixed(1)}°.`;
@@ -88,7 +88,7 @@ if (gimbalViewer) {
 // Figure 3: Rodrigues' formula.
 const rodViewer = await lesson.figure('#fig-rodrigues');
 if (rodViewer) {
-  rodViewer.setCamera(0, 0.5, 0, 5, 0.5, 0.35);
+  rodViewer.setCamera(0, 0.3, 0, 4.2, 0.5, 0.35);
   const scene = new RodriguesScene();
   const timeline = new Timeline(document.getElementById('rodrigues-timeline'), { duration: 3 });
   const p = { angle: 120, nx: 0.3, ny: 1, nz: 0.2, vx: 1.2, vy: 0.4, vz: 0.3, useExercise: false };

@@ -9,6 +9,8 @@ mod rotations;
 mod transforms;
 mod viewer;
 
+pub use rigid::{AffineScene, RigidScene};
+pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
 pub use viewer::Viewer;
 
 use wasm_bindgen::prelude::*;

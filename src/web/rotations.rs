@@ -358,7 +358,7 @@ impl Default for GimbalScene {
 
 impl GimbalScene {
     fn rotation(&self) -> Mat3 {
-        EulerAngles::new(EulerOrder::IntrinsicYXZ, Vec3::new(self.angles_rad.y, self.angles_rad.x, self.angles_rad.z)).to_mat3()
+        EulerAngles::new(EulerOrder::IntrinsicYXZ, self.angles_rad).to_mat3()
     }
 
     /// World directions of the outer and inner axles.
@@ -450,6 +450,8 @@ impl RodriguesScene {
             self.arc.push(rotation::rodrigues_rotate(v, n, s * theta * k as f32 / 64.0));
         }
         frame.polyline(&self.arc, Vec3::new(0.95, 0.5, 0.05));
+        // Where the tip ends after the full angle θ.
+        frame.point(rotation::rodrigues_rotate(v, n, theta), 0.04, Vec3::new(0.95, 0.5, 0.05));
         // n × v: the direction the tip starts moving in, drawn from the circle's centre.
         let cross = n.cross(v);
         frame.line(along, along + cross, Vec3::new(0.1, 0.65, 0.75));
@@ -460,9 +462,9 @@ impl RodriguesScene {
         frame.line(along, turned, Vec3::new(0.85, 0.5, 0.7));
         frame.point(turned, 0.06, Vec3::new(0.85, 0.1, 0.55));
         // A box turned by the quaternion of the same rotation.
-        let box_model = Mat4::from_quat(q) * Mat4::from_scale(Vec3::new(0.35, 0.2, 0.12));
+        let box_model = Mat4::from_quat(q) * Mat4::from_scale(Vec3::new(0.22, 0.12, 0.08));
         frame.mesh(viewer.renderer.cube, box_model, Vec3::new(0.95, 0.6, 0.2));
-        frame.axes(Mat4::from_quat(q), 0.55);
+        frame.axes(Mat4::from_quat(q), 0.4);
         viewer.present()?;
         if !self.use_exercise {
             return Ok(String::new());
