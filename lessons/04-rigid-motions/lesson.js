@@ -44,7 +44,7 @@ if (rigidViewer) {
     }
     scene.setUseExercise(p.useExercise);
     plot.setData(columns(scene.sampleSpeed(101), 4));
-    const s = scene.screwAxis();
+    const s = Array.from(scene.screwAxis());
     document.getElementById('rigid-screw').textContent =
       `Screw A → B: turn ${s[6].toFixed(1)}° about the line through (${s.slice(3, 6).map((x) => x.toFixed(2)).join(', ')}) ` +
       `along (${s.slice(0, 3).map((x) => x.toFixed(2)).join(', ')}), sliding ${s[7].toFixed(2)} m along it.`;
