@@ -16,6 +16,24 @@ export const SUITES = [
     iterations: 2000,
     unit: 'joint',
   },
+  {
+    name: 'quaternion interpolation',
+    run: (kernel, size, iterations) => wasm.benchQuatInterpolation(kernel, size, iterations),
+    kernels: ['nlerp', 'slerp'],
+    baseline: 'nlerp',
+    size: 4096,
+    iterations: 500,
+    unit: 'key pair',
+  },
+  {
+    name: 'one rigid motion on 1e6 points',
+    run: (kernel, size, iterations) => wasm.benchRigidPoints(kernel, size, iterations),
+    kernels: ['factored', 'sandwich'],
+    baseline: 'factored',
+    size: 1_000_000,
+    iterations: 10,
+    unit: 'point',
+  },
 ];
 
 const QUICK = new URLSearchParams(location.search).has('quick');

@@ -12,6 +12,7 @@
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
 pub mod grade;
+pub mod rotations;
 pub mod transforms;
 
 /// An exercise's answer: `Ok(value)` once implemented, `Err(NotDone)` while it is still a stub.

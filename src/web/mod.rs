@@ -3,9 +3,14 @@
 //! message the page shows in its error banner. No HTML is built here, no math re-implemented.
 
 mod bench;
+mod bench_rotation;
+mod rigid;
+mod rotations;
 mod transforms;
 mod viewer;
 
+pub use rigid::{AffineScene, RigidScene};
+pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
 pub use transforms::{HierarchyScene, SingleShapeScene};
 pub use viewer::Viewer;
 

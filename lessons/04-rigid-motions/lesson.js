@@ -1,0 +1,100 @@
+// Lesson 04: wires the page's controls to the wasm scenes. No math here: it lives in Rust.
+import { startLesson, markDrawn, Timeline, Plot, GUI } from '../../www/lesson.js';
+import { RigidScene, AffineScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+
+/** Time on the timeline as t in [0, 1], going there and back so the motion never jumps. */
+const pingPong = (timeline) => 1 - Math.abs(2 * (timeline.time / timeline.duration) - 1);
+const columns = (flat, width) => {
+  const cols = Array.from({ length: width }, () => []);
+  for (let i = 0; i < flat.length; i += width) for (let k = 0; k < width; k++) cols[k].push(flat[i + k]);
+  return cols;
+};
+
+// Figure 1: lerp + slerp, dual quaternion blending, screw motion.
+const rigidViewer = await lesson.figure('#fig-rigid');
+if (rigidViewer) {
+  rigidViewer.setCamera(0, 1.0, 0, 6.5, 0.35, 0.35);
+  const scene = new RigidScene();
+  const timeline = new Timeline(document.getElementById('rigid-timeline'), { duration: 4 });
+  const p = { angle: 150, ax: 0.2, ay: 1, az: 0.3, tx: 1.5, ty: 1.4, tz: 0.3, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-rigid .panel'), title: 'Key B' });
+  gui.add(p, 'angle', -180, 180, 1).name('angle (°)');
+  const axis = gui.addFolder('rotation axis');
+  axis.add(p, 'ax', -1, 1, 0.01);
+  axis.add(p, 'ay', -1, 1, 0.01);
+  axis.add(p, 'az', -1, 1, 0.01);
+  const move = gui.addFolder('translation');
+  move.add(p, 'tx', -3, 3, 0.01);
+  move.add(p, 'ty', 0, 3, 0.01);
+  move.add(p, 'tz', -3, 3, 0.01);
+  gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('rigid-plot'), {
+    title: 'Speed of the nose (m per unit of t)', xLabel: 't', series: ['lerp + slerp', 'dual quaternion blend', 'screw'],
+  });
+  const note = document.getElementById('rigid-note');
+  let axisNote = '';
+  const apply = () => {
+    try {
+      scene.setEnd(p.ax, p.ay, p.az, p.angle, p.tx, p.ty, p.tz);
+      axisNote = '';
+    } catch (e) {
+      axisNote = `Key B not changed: ${e.message ?? e}`;
+    }
+    scene.setUseExercise(p.useExercise);
+    plot.setData(columns(scene.sampleSpeed(101), 4));
+    const s = Array.from(scene.screwAxis());
+    document.getElementById('rigid-screw').textContent =
+      `Screw A → B: turn ${s[6].toFixed(1)}° about the line through (${s.slice(3, 6).map((x) => x.toFixed(2)).join(', ')}) ` +
+      `along (${s.slice(0, 3).map((x) => x.toFixed(2)).join(', ')}), sliding ${s[7].toFixed(2)} m along it.`;
+  };
+  gui.onChange(apply);
+  apply();
+  lesson.onFrame((dt) => {
+    timeline.advance(dt);
+    const message = [axisNote, scene.draw(rigidViewer, pingPong(timeline))].filter(Boolean).join(' ');
+    if (note.textContent !== message) note.textContent = message;
+    markDrawn('#fig-rigid');
+  });
+}
+
+// Figure 2: affine keys, naive vs polar.
+const affineViewer = await lesson.figure('#fig-affine');
+if (affineViewer) {
+  affineViewer.setCamera(0, 0.9, 0, 6.5, 0.0, 0.3);
+  const scene = new AffineScene();
+  const timeline = new Timeline(document.getElementById('affine-timeline'), { duration: 4 });
+  const p = { angle: 160, sx: 1.6, sy: 0.6, sz: 1, shear: 0.6, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-affine .panel'), title: 'Key B' });
+  gui.add(p, 'angle', -180, 180, 1).name('angle about y (°)');
+  gui.add(p, 'sx', -2, 2.5, 0.01).name('scale x');
+  gui.add(p, 'sy', -2, 2.5, 0.01).name('scale y');
+  gui.add(p, 'sz', -2, 2.5, 0.01).name('scale z');
+  gui.add(p, 'shear', -1.5, 1.5, 0.01).name('shear x by y');
+  gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('affine-plot'), {
+    title: 'Volume factor det M(t)', xLabel: 't', series: ['naive lerp', 'polar decomposition'],
+  });
+  const note = document.getElementById('affine-note');
+  let keyNote = '';
+  const apply = () => {
+    try {
+      scene.setKeyB(p.angle, p.sx, p.sy, p.sz, p.shear);
+      keyNote = '';
+    } catch (e) {
+      // A zero or negative scale makes a singular or mirroring key: the core says which.
+      keyNote = `Key B not changed: ${e.message ?? e}`;
+    }
+    scene.setUseExercise(p.useExercise);
+    plot.setData(columns(scene.sampleDeterminant(101), 3));
+  };
+  gui.onChange(apply);
+  apply();
+  lesson.onFrame((dt) => {
+    timeline.advance(dt);
+    const message = [keyNote, scene.draw(affineViewer, pingPong(timeline))].filter(Boolean).join(' ');
+    if (note.textContent !== message) note.textContent = message;
+    markDrawn('#fig-affine');
+  });
+}
