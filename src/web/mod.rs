@@ -3,6 +3,8 @@
 //! message the page shows in its error banner. No HTML is built here, no math re-implemented.
 
 mod bench;
+mod bench_curves;
+mod curves;
 mod transforms;
 mod viewer;
 
