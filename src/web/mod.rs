@@ -8,6 +8,7 @@ mod curves;
 mod transforms;
 mod viewer;
 
+pub use curves::{KeyframesScene, LagrangeScene};
 pub use viewer::Viewer;
 
 use wasm_bindgen::prelude::*;
