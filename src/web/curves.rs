@@ -566,7 +566,7 @@ impl LagrangeScene {
         let (a, b) = self.key_sets();
         for (t, y) in b.0.iter().zip(&b.1) {
             let extra = !a.0.contains(t);
-            let p = Self::place(*t, *y);
+            let p = self.place(*t, *y);
             frame.point(p, if extra { 0.08 } else { 0.06 }, if extra { Vec3::new(0.85, 0.15, 0.15) } else { KEY_COLOR });
         }
         viewer.present()
@@ -581,23 +581,25 @@ impl Default for LagrangeScene {
 
 impl LagrangeScene {
     /// One curve-editor channel y(t): keys at t = 0, 1, …, n−1 on a gentle wave, and the same
-    /// keys plus two inserted near the ends (where Runge's oscillation is worst).
+    /// keys plus two more, a quarter and three quarters of the way, slightly off the wave.
     fn key_sets(&self) -> ((Vec<f32>, Vec<f32>), (Vec<f32>, Vec<f32>)) {
         let n = self.keys;
-        let wave = |t: f32| 0.9 + 0.5 * (0.9 * t).sin() + 0.15 * (2.3 * t).cos();
+        let wave = |t: f32| 0.9 + 0.55 * (0.55 * t).sin() + 0.12 * (1.7 * t).cos();
         let times: Vec<f32> = (0..n).map(|i| i as f32).collect();
         let values: Vec<f32> = times.iter().map(|&t| wave(t)).collect();
         let mut more: Vec<(f32, f32)> = times.iter().copied().zip(values.iter().copied()).collect();
-        more.push((0.5, wave(0.5) + 0.25));
-        more.push((n as f32 - 1.5, wave(n as f32 - 1.5) - 0.25));
+        // Never on an integer time, and distinct for n ≥ 3.
+        let (a, b) = ((n - 1) as f32 * 0.25 + 0.1, (n - 1) as f32 * 0.75 - 0.1);
+        more.push((a, wave(a) + 0.08));
+        more.push((b, wave(b) - 0.08));
         more.sort_by(|a, b| a.0.total_cmp(&b.0));
         let (more_t, more_v) = more.into_iter().unzip();
         ((times, values), (more_t, more_v))
     }
 
-    /// The channel drawn in the XY plane: time along x (centred), value up.
-    fn place(t: f32, y: f32) -> Vec3 {
-        Vec3::new((t - 6.5) * 0.42, y, 0.0)
+    /// The channel drawn in the XY plane: time along x (scaled to a fixed width), value up.
+    fn place(&self, t: f32, y: f32) -> Vec3 {
+        Vec3::new((t / (self.keys - 1) as f32 - 0.5) * 5.6, y, 0.0)
     }
 
     fn rebuild(&mut self) -> Result<(), JsError> {
@@ -607,15 +609,17 @@ impl LagrangeScene {
         let spline = b.clone().with_interpolation(Interpolation::CATMULL_ROM).map_err(js)?;
         const SAMPLES: usize = 400;
         // The polynomial can shoot far off between keys: clip what we draw to a readable band.
-        let clip = |y: f32| y.clamp(-1.5, 4.0);
-        for (track, out) in [(&a, &mut self.base), (&b, &mut self.more), (&spline, &mut self.spline)] {
+        let clip = |y: f32| y.clamp(-0.8, 3.4);
+        let mut lines = [std::mem::take(&mut self.base), std::mem::take(&mut self.more), std::mem::take(&mut self.spline)];
+        for (track, out) in [&a, &b, &spline].into_iter().zip(&mut lines) {
             out.clear();
             let (t0, t1) = (track.start_sec(), track.end_sec());
             out.extend((0..SAMPLES).map(|k| {
                 let t = t0 + (t1 - t0) * k as f32 / (SAMPLES - 1) as f32;
-                Self::place(t, clip(track.position(t)))
+                self.place(t, clip(track.position(t)))
             }));
         }
+        [self.base, self.more, self.spline] = lines;
         Ok(())
     }
 }
