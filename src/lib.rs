@@ -6,7 +6,7 @@
 //! | lesson | core | binding | exercises |
 //! |---|---|---|---|
 //! | `01-transforms`: transforms and hierarchies | [`transform`], [`mesh`], [`camera`] | `web::transforms` | [`exercises::transforms`] |
-//! | (keyframes issue) keyframes and splines | [`curves`] | | |
+//! | `02-keyframes`: keyframes and splines | [`curves`] | `web::curves` (bench: `web::bench_curves`) | [`exercises::curves`] |
 //! | (rotations issue) rotations, rigid motions | [`rotation`], [`rigid`] | | |
 //!
 //! ## Conventions, stated once

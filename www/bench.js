@@ -34,6 +34,15 @@ export const SUITES = [
     iterations: 10,
     unit: 'point',
   },
+  {
+    name: 'keyframe sampling (100-key Vec3 track, 1e6 samples)',
+    run: (kernel, size, iterations) => wasm.benchCurves(kernel, size, iterations),
+    kernels: ['copy_baseline', 'linear_cursor', 'linear_binary_search', 'catmull_rom_cursor', 'catmull_rom_binary_search'],
+    baseline: 'copy_baseline',
+    size: 1_000_000,
+    iterations: 2,
+    unit: 'sample',
+  },
 ];
 
 const QUICK = new URLSearchParams(location.search).has('quick');

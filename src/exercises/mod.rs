@@ -11,6 +11,7 @@
 //!
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
+pub mod curves;
 pub mod grade;
 pub mod rotations;
 pub mod transforms;

@@ -3,12 +3,15 @@
 //! message the page shows in its error banner. No HTML is built here, no math re-implemented.
 
 mod bench;
+mod bench_curves;
 mod bench_rotation;
+mod curves;
 mod rigid;
 mod rotations;
 mod transforms;
 mod viewer;
 
+pub use curves::{KeyframesScene, LagrangeScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
 pub use transforms::{HierarchyScene, SingleShapeScene};
