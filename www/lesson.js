@@ -122,7 +122,7 @@ function tick(nowMs) {
  */
 async function createFigure(selector) {
   const box = document.querySelector(selector);
-  const canvas = box.querySelector('canvas');
+  const canvas = box.querySelector('.stage canvas');
   const badge = document.createElement('span');
   badge.className = 'backend-badge';
   box.append(badge);

@@ -29,19 +29,20 @@ export async function launch(profile) {
 }
 
 /**
- * Pixel statistics of an element's screenshot, decoded in the page (no PNG library needed):
- * the fraction of pixels that differ from the top-left (background) colour, the number of
- * distinct colours (quantised), and the raw RGBA for comparisons.
+ * Pixel statistics of an element's screenshot, decoded in the page (no PNG library needed): the
+ * fraction of pixels that differ from the top-left (background) colour and the number of distinct
+ * colours (quantised). The pixels stay in the page under `key`, for `meanDifference`.
  */
-export async function pixelStats(page, locator) {
+export async function pixelStats(page, locator, key) {
   const png = await locator.screenshot();
-  return page.evaluate(async (b64) => {
+  return page.evaluate(async ([b64, key]) => {
     const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
     const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
     const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
     const ctx = canvas.getContext('2d');
     ctx.drawImage(bitmap, 0, 0);
     const { data } = ctx.getImageData(0, 0, bitmap.width, bitmap.height);
+    (window.__shots ??= {})[key] = data;
     const bg = [data[0], data[1], data[2]];
     let different = 0;
     const colors = new Set();
@@ -50,14 +51,17 @@ export async function pixelStats(page, locator) {
       if (d > 24) different++;
       colors.add(((data[i] >> 3) << 10) | ((data[i + 1] >> 3) << 5) | (data[i + 2] >> 3));
     }
-    return { width: bitmap.width, height: bitmap.height, coverage: different / (data.length / 4), colors: colors.size, rgba: Array.from(data) };
-  }, png.toString('base64'));
+    return { width: bitmap.width, height: bitmap.height, coverage: different / (data.length / 4), colors: colors.size };
+  }, [png.toString('base64'), key]);
 }
 
-/** Mean absolute difference per channel between two equally sized RGBA arrays (0..255). */
-export function meanDifference(a, b) {
-  if (a.length !== b.length) return 255;
-  let sum = 0;
-  for (let i = 0; i < a.length; i++) sum += Math.abs(a[i] - b[i]);
-  return sum / a.length;
+/** Mean absolute difference per channel (0..255) between two screenshots kept by `pixelStats`. */
+export function meanDifference(page, keyA, keyB) {
+  return page.evaluate(([a, b]) => {
+    const [x, y] = [window.__shots[a], window.__shots[b]];
+    if (x.length !== y.length) return 255;
+    let sum = 0;
+    for (let i = 0; i < x.length; i++) sum += Math.abs(x[i] - y[i]);
+    return sum / x.length;
+  }, [keyA, keyB]);
 }

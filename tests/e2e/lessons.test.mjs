@@ -71,20 +71,20 @@ for (const backend of ['webgpu', 'webgl2']) {
               writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail}`, await canvas.screenshot());
             }
             assert.equal(await figure.locator('.backend-badge').textContent(), label);
-            const before = await pixelStats(page, canvas);
+            const before = await pixelStats(page, canvas, `before${i}`);
             assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
             assert.ok(before.colors > 20, `figure ${i}: too few colours (${before.colors}) for shaded geometry`);
             await frames(page);
-            const still = await pixelStats(page, canvas);
-            assert.ok(meanDifference(before.rgba, still.rgba) < 0.5, `figure ${i}: image changes while paused`);
+            await pixelStats(page, canvas, `still${i}`);
+            assert.ok(await meanDifference(page, `before${i}`, `still${i}`) < 0.5, `figure ${i}: image changes while paused`);
             // Move the first numeric control of the figure's panel.
             const input = figure.locator('.panel input[type="text"], .panel input[inputmode]').first();
             const value = Number(await input.inputValue());
             await input.fill(String(value === 0 ? 45 : -value));
             await input.press('Enter');
             await frames(page);
-            const after = await pixelStats(page, canvas);
-            const change = meanDifference(still.rgba, after.rgba);
+            await pixelStats(page, canvas, `after${i}`);
+            const change = await meanDifference(page, `still${i}`, `after${i}`);
             assert.ok(change > 0.2, `figure ${i}: moving a control did not change the image (${change})`);
           }
           // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
