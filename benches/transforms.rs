@@ -9,8 +9,12 @@ use std::hint::black_box;
 
 fn chain(n: usize) -> (Vec<i32>, Vec<Mat4>) {
     // A branching tree: each joint hangs off one of the few joints before it.
-    let parents = (0..n as i32).map(|i| if i == 0 { -1 } else { (i - 1) / 2 }).collect();
-    let local = (0..n).map(|i| local_matrix(Vec3::new(0.0, 0.1, 0.0), Vec3::splat(i as f32 * 0.01))).collect();
+    let parents = (0..n as i32)
+        .map(|i| if i == 0 { -1 } else { (i - 1) / 2 })
+        .collect();
+    let local = (0..n)
+        .map(|i| local_matrix(Vec3::new(0.0, 0.1, 0.0), Vec3::splat(i as f32 * 0.01)))
+        .collect();
     (parents, local)
 }
 

@@ -57,7 +57,12 @@ impl OrbitCamera {
     /// View-to-clip matrix for a viewport of the given width / height ratio.
     pub fn projection(&self, aspect: f32) -> Mat4 {
         // wgpu's clip space is Y-up with depth in [0, 1]: glam's "directx" convention.
-        glam::camera::rh::proj::directx::perspective(self.fov_y_rad, aspect.max(1e-3), self.near, self.far)
+        glam::camera::rh::proj::directx::perspective(
+            self.fov_y_rad,
+            aspect.max(1e-3),
+            self.near,
+            self.far,
+        )
     }
 
     /// Turns the camera: `d_yaw` and `d_pitch` in radians. Pitch is clamped short of the poles.
@@ -69,7 +74,8 @@ impl OrbitCamera {
     /// Multiplies the distance by `factor` (< 1 zooms in), keeping it inside [near·1, far/2].
     pub fn zoom(&mut self, factor: f32) {
         if factor.is_finite() && factor > 0.0 {
-            self.distance = (self.distance * factor).clamp(MIN_DISTANCE.max(self.near), self.far * 0.5);
+            self.distance =
+                (self.distance * factor).clamp(MIN_DISTANCE.max(self.near), self.far * 0.5);
         }
     }
 

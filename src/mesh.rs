@@ -26,8 +26,19 @@ impl MeshData {
 pub fn cuboid(half_extents: Vec3) -> MeshData {
     let mut mesh = MeshData::default();
     // Each face: its outward normal and two in-plane axes u, v with u × v = normal.
-    for normal in [Vec3::X, Vec3::NEG_X, Vec3::Y, Vec3::NEG_Y, Vec3::Z, Vec3::NEG_Z] {
-        let u = if normal.y.abs() > 0.5 { Vec3::Z * normal.y.signum() } else { Vec3::Y };
+    for normal in [
+        Vec3::X,
+        Vec3::NEG_X,
+        Vec3::Y,
+        Vec3::NEG_Y,
+        Vec3::Z,
+        Vec3::NEG_Z,
+    ] {
+        let u = if normal.y.abs() > 0.5 {
+            Vec3::Z * normal.y.signum()
+        } else {
+            Vec3::Y
+        };
         let u = u.cross(normal).normalize(); // in-plane, perpendicular to both
         let v = normal.cross(u);
         let base = mesh.positions.len() as u32;
@@ -35,7 +46,8 @@ pub fn cuboid(half_extents: Vec3) -> MeshData {
             mesh.positions.push((normal + u * a + v * b) * half_extents);
             mesh.normals.push(normal);
         }
-        mesh.indices.extend_from_slice(&[base, base + 1, base + 2, base, base + 2, base + 3]);
+        mesh.indices
+            .extend_from_slice(&[base, base + 1, base + 2, base, base + 2, base + 3]);
     }
     mesh
 }
@@ -45,13 +57,20 @@ pub fn cuboid(half_extents: Vec3) -> MeshData {
 /// # Panics
 /// If `segments < 3` or `rings < 2` (a programming error, not caller data).
 pub fn uv_sphere(radius: f32, segments: u32, rings: u32) -> MeshData {
-    assert!(segments >= 3 && rings >= 2, "a sphere needs at least 3 segments and 2 rings");
+    assert!(
+        segments >= 3 && rings >= 2,
+        "a sphere needs at least 3 segments and 2 rings"
+    );
     let mut mesh = MeshData::default();
     for ring in 0..=rings {
         let polar = std::f32::consts::PI * ring as f32 / rings as f32;
         for segment in 0..=segments {
             let azimuth = std::f32::consts::TAU * segment as f32 / segments as f32;
-            let n = Vec3::new(polar.sin() * azimuth.sin(), polar.cos(), polar.sin() * azimuth.cos());
+            let n = Vec3::new(
+                polar.sin() * azimuth.sin(),
+                polar.cos(),
+                polar.sin() * azimuth.cos(),
+            );
             mesh.positions.push(n * radius);
             mesh.normals.push(n);
         }

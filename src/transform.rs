@@ -57,7 +57,10 @@ pub fn world_matrices(parents: &[i32], local: &[Mat4], world: &mut [Mat4]) {
         world[i] = if parent < 0 {
             local[i]
         } else {
-            debug_assert!((parent as usize) < i, "parent {parent} of joint {i} comes after it");
+            debug_assert!(
+                (parent as usize) < i,
+                "parent {parent} of joint {i} comes after it"
+            );
             world[parent as usize] * local[i]
         };
     }
@@ -89,7 +92,11 @@ pub struct LocalTransform {
 impl LocalTransform {
     /// A transform with the given translation, no rotation and unit scale.
     pub fn from_translation(translation: Vec3) -> Self {
-        Self { translation, euler_xyz_rad: Vec3::ZERO, scale: Vec3::ONE }
+        Self {
+            translation,
+            euler_xyz_rad: Vec3::ZERO,
+            scale: Vec3::ONE,
+        }
     }
 }
 
@@ -101,7 +108,11 @@ pub enum HierarchyError {
     /// `parents[joint]` is neither −1 nor an earlier joint's index.
     ParentNotBefore { joint: usize, parent: i32 },
     /// Two per-joint arrays have different lengths.
-    LengthMismatch { what: &'static str, expected: usize, actual: usize },
+    LengthMismatch {
+        what: &'static str,
+        expected: usize,
+        actual: usize,
+    },
     /// A transform contains NaN or an infinity.
     NonFinite { joint: usize },
 }
@@ -200,11 +211,16 @@ impl Hierarchy {
             ("draw matrices", draw.len()),
         ] {
             if actual != n {
-                return Err(HierarchyError::LengthMismatch { what, expected: n, actual });
+                return Err(HierarchyError::LengthMismatch {
+                    what,
+                    expected: n,
+                    actual,
+                });
             }
         }
         for (joint, x) in transforms.iter().enumerate() {
-            let finite = x.translation.is_finite() && x.euler_xyz_rad.is_finite() && x.scale.is_finite();
+            let finite =
+                x.translation.is_finite() && x.euler_xyz_rad.is_finite() && x.scale.is_finite();
             if !finite {
                 return Err(HierarchyError::NonFinite { joint });
             }
@@ -247,24 +263,111 @@ pub fn simple_human() -> (Hierarchy, Vec<LocalTransform>, Vec<JointShape>) {
     let trousers = Vec3::new(0.25, 0.25, 0.35);
     // (name, parent, pivot in parent frame, box half-extents, box centre, colour)
     let joints: [(&str, i32, Vec3, Vec3, Vec3, Vec3); 11] = [
-        ("pelvis", -1, Vec3::new(0.0, 0.9, 0.0), Vec3::new(0.17, 0.1, 0.1), Vec3::ZERO, trousers),
-        ("chest", 0, Vec3::new(0.0, 0.1, 0.0), Vec3::new(0.2, 0.25, 0.11), Vec3::new(0.0, 0.25, 0.0), shirt),
-        ("head", 1, Vec3::new(0.0, 0.52, 0.0), Vec3::new(0.1, 0.12, 0.1), Vec3::new(0.0, 0.14, 0.0), skin),
-        ("upper_arm.L", 1, Vec3::new(0.26, 0.45, 0.0), Vec3::new(0.05, 0.15, 0.05), Vec3::new(0.0, -0.15, 0.0), shirt),
-        ("forearm.L", 3, Vec3::new(0.0, -0.3, 0.0), Vec3::new(0.045, 0.14, 0.045), Vec3::new(0.0, -0.14, 0.0), skin),
-        ("upper_arm.R", 1, Vec3::new(-0.26, 0.45, 0.0), Vec3::new(0.05, 0.15, 0.05), Vec3::new(0.0, -0.15, 0.0), shirt),
-        ("forearm.R", 5, Vec3::new(0.0, -0.3, 0.0), Vec3::new(0.045, 0.14, 0.045), Vec3::new(0.0, -0.14, 0.0), skin),
-        ("thigh.L", 0, Vec3::new(0.1, -0.08, 0.0), Vec3::new(0.07, 0.21, 0.07), Vec3::new(0.0, -0.21, 0.0), trousers),
-        ("shin.L", 7, Vec3::new(0.0, -0.42, 0.0), Vec3::new(0.06, 0.2, 0.06), Vec3::new(0.0, -0.2, 0.0), trousers),
-        ("thigh.R", 0, Vec3::new(-0.1, -0.08, 0.0), Vec3::new(0.07, 0.21, 0.07), Vec3::new(0.0, -0.21, 0.0), trousers),
-        ("shin.R", 9, Vec3::new(0.0, -0.42, 0.0), Vec3::new(0.06, 0.2, 0.06), Vec3::new(0.0, -0.2, 0.0), trousers),
+        (
+            "pelvis",
+            -1,
+            Vec3::new(0.0, 0.9, 0.0),
+            Vec3::new(0.17, 0.1, 0.1),
+            Vec3::ZERO,
+            trousers,
+        ),
+        (
+            "chest",
+            0,
+            Vec3::new(0.0, 0.1, 0.0),
+            Vec3::new(0.2, 0.25, 0.11),
+            Vec3::new(0.0, 0.25, 0.0),
+            shirt,
+        ),
+        (
+            "head",
+            1,
+            Vec3::new(0.0, 0.52, 0.0),
+            Vec3::new(0.1, 0.12, 0.1),
+            Vec3::new(0.0, 0.14, 0.0),
+            skin,
+        ),
+        (
+            "upper_arm.L",
+            1,
+            Vec3::new(0.26, 0.45, 0.0),
+            Vec3::new(0.05, 0.15, 0.05),
+            Vec3::new(0.0, -0.15, 0.0),
+            shirt,
+        ),
+        (
+            "forearm.L",
+            3,
+            Vec3::new(0.0, -0.3, 0.0),
+            Vec3::new(0.045, 0.14, 0.045),
+            Vec3::new(0.0, -0.14, 0.0),
+            skin,
+        ),
+        (
+            "upper_arm.R",
+            1,
+            Vec3::new(-0.26, 0.45, 0.0),
+            Vec3::new(0.05, 0.15, 0.05),
+            Vec3::new(0.0, -0.15, 0.0),
+            shirt,
+        ),
+        (
+            "forearm.R",
+            5,
+            Vec3::new(0.0, -0.3, 0.0),
+            Vec3::new(0.045, 0.14, 0.045),
+            Vec3::new(0.0, -0.14, 0.0),
+            skin,
+        ),
+        (
+            "thigh.L",
+            0,
+            Vec3::new(0.1, -0.08, 0.0),
+            Vec3::new(0.07, 0.21, 0.07),
+            Vec3::new(0.0, -0.21, 0.0),
+            trousers,
+        ),
+        (
+            "shin.L",
+            7,
+            Vec3::new(0.0, -0.42, 0.0),
+            Vec3::new(0.06, 0.2, 0.06),
+            Vec3::new(0.0, -0.2, 0.0),
+            trousers,
+        ),
+        (
+            "thigh.R",
+            0,
+            Vec3::new(-0.1, -0.08, 0.0),
+            Vec3::new(0.07, 0.21, 0.07),
+            Vec3::new(0.0, -0.21, 0.0),
+            trousers,
+        ),
+        (
+            "shin.R",
+            9,
+            Vec3::new(0.0, -0.42, 0.0),
+            Vec3::new(0.06, 0.2, 0.06),
+            Vec3::new(0.0, -0.2, 0.0),
+            trousers,
+        ),
     ];
     let names = joints.iter().map(|j| j.0.to_string()).collect();
     let parents = joints.iter().map(|j| j.1).collect();
-    let hierarchy = Hierarchy::new(names, parents).expect("the built-in figure is a valid hierarchy");
-    let rest = joints.iter().map(|j| LocalTransform::from_translation(j.2)).collect();
-    let shapes =
-        joints.iter().map(|j| JointShape { half_extents: j.3, center: j.4, color: j.5 }).collect();
+    let hierarchy =
+        Hierarchy::new(names, parents).expect("the built-in figure is a valid hierarchy");
+    let rest = joints
+        .iter()
+        .map(|j| LocalTransform::from_translation(j.2))
+        .collect();
+    let shapes = joints
+        .iter()
+        .map(|j| JointShape {
+            half_extents: j.3,
+            center: j.4,
+            color: j.5,
+        })
+        .collect();
     (hierarchy, rest, shapes)
 }
 
@@ -273,7 +376,12 @@ pub fn simple_human() -> (Hierarchy, Vec<LocalTransform>, Vec<JointShape>) {
 /// Legs swing opposite each other, arms opposite the legs; a knee bends only while its leg swings
 /// forward. Writes the Euler angles (radians) into `euler_xyz_rad`, one per joint of the figure;
 /// joints it does not animate keep their value.
-pub fn walk_cycle(hierarchy: &Hierarchy, time_sec: f32, period_sec: f32, euler_xyz_rad: &mut [Vec3]) {
+pub fn walk_cycle(
+    hierarchy: &Hierarchy,
+    time_sec: f32,
+    period_sec: f32,
+    euler_xyz_rad: &mut [Vec3],
+) {
     let phase = std::f32::consts::TAU * time_sec / period_sec.max(1e-3);
     let swing = phase.sin();
     let mut set = |name: &str, x: f32| {
@@ -287,7 +395,10 @@ pub fn walk_cycle(hierarchy: &Hierarchy, time_sec: f32, period_sec: f32, euler_x
     set("thigh.R", -0.5 * swing);
     // Knees bend backwards (positive x) during the forward half of their leg's swing.
     set("shin.L", 0.7 * (phase + 0.6).cos().max(0.0));
-    set("shin.R", 0.7 * (phase + 0.6 + std::f32::consts::PI).cos().max(0.0));
+    set(
+        "shin.R",
+        0.7 * (phase + 0.6 + std::f32::consts::PI).cos().max(0.0),
+    );
     set("upper_arm.L", -0.4 * swing);
     set("upper_arm.R", 0.4 * swing);
     set("forearm.L", -0.3 - 0.2 * swing.max(0.0));

@@ -6,7 +6,6 @@
 //! Run with `cargo test --test curves -- --nocapture` to see the measured errors.
 // Native only (proptest); the browser runs tests/transform.rs and tests/web*.rs.
 #![cfg(not(target_arch = "wasm32"))]
-
 // Loops over key indices read like the formulas (`i − 1`, `i`, `i + 1`).
 #![allow(clippy::needless_range_loop)]
 

@@ -16,11 +16,20 @@ fn grade_exercises() {
     println!("\n{}", table(&reports));
     assert!(!reports.is_empty());
     if cfg!(feature = "solutions") {
-        assert!(reports.iter().all(|r| r.passed()), "with solutions every exercise must pass");
+        assert!(
+            reports.iter().all(|r| r.passed()),
+            "with solutions every exercise must pass"
+        );
     } else if option_env!("INBETWEEN_GRADER_EXPECT") == Some("stubs") {
-        assert!(reports.iter().all(|r| r.not_done()), "every stub must report 'not yet implemented'");
+        assert!(
+            reports.iter().all(|r| r.not_done()),
+            "every stub must report 'not yet implemented'"
+        );
     } else {
-        assert!(reports.iter().all(|r| r.passed() || r.not_done()), "some exercises are wrong");
+        assert!(
+            reports.iter().all(|r| r.passed() || r.not_done()),
+            "some exercises are wrong"
+        );
     }
 }
 
@@ -30,16 +39,35 @@ mod the_grader_itself {
 
     #[test]
     fn reports_the_first_wrong_case_with_input_expected_and_actual() {
-        let report = check("l", "e", &[1, 2, 3], |&x| Ok(if x == 2 { 0 } else { x }), |&x| x, |a, b| a == b);
+        let report = check(
+            "l",
+            "e",
+            &[1, 2, 3],
+            |&x| Ok(if x == 2 { 0 } else { x }),
+            |&x| x,
+            |a, b| a == b,
+        );
         assert_eq!(
             report.status,
-            Status::Wrong { case: 1, input: "2".into(), expected: "2".into(), actual: "0".into() }
+            Status::Wrong {
+                case: 1,
+                input: "2".into(),
+                expected: "2".into(),
+                actual: "0".into()
+            }
         );
     }
 
     #[test]
     fn tells_a_stub_from_an_answer() {
-        let report = check("l", "e", &[1], |_| Err::<i32, _>(NotDone), |&x| x, |a, b| a == b);
+        let report = check(
+            "l",
+            "e",
+            &[1],
+            |_| Err::<i32, _>(NotDone),
+            |&x| x,
+            |a, b| a == b,
+        );
         assert_eq!(report.status, Status::NotDone);
         let report = check("l", "e", &[1, 5], |&x| Ok(x), |&x| x, |a, b| a == b);
         assert_eq!(report.status, Status::Passed { cases: 2 });
@@ -47,7 +75,18 @@ mod the_grader_itself {
 
     #[test]
     fn catches_a_panicking_exercise_natively() {
-        let report = check("l", "e", &[0usize], |&i| Ok([1][i + 1]), |_| 1, |a, b| a == b);
-        assert!(matches!(report.status, Status::Panicked { case: 0, .. }), "{:?}", report.status);
+        let report = check(
+            "l",
+            "e",
+            &[0usize],
+            |&i| Ok([1][i + 1]),
+            |_| 1,
+            |a, b| a == b,
+        );
+        assert!(
+            matches!(report.status, Status::Panicked { case: 0, .. }),
+            "{:?}",
+            report.status
+        );
     }
 }

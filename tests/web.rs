@@ -14,7 +14,11 @@ wasm_bindgen_test_configure!(run_in_browser);
 
 fn canvas(width: u32, height: u32) -> web_sys::HtmlCanvasElement {
     let document = web_sys::window().unwrap().document().unwrap();
-    let canvas: web_sys::HtmlCanvasElement = document.create_element("canvas").unwrap().dyn_into().unwrap();
+    let canvas: web_sys::HtmlCanvasElement = document
+        .create_element("canvas")
+        .unwrap()
+        .dyn_into()
+        .unwrap();
     canvas.set_width(width);
     canvas.set_height(height);
     document.body().unwrap().append_child(&canvas).unwrap();
@@ -22,7 +26,9 @@ fn canvas(width: u32, height: u32) -> web_sys::HtmlCanvasElement {
 }
 
 async fn gpu() -> Gpu {
-    let gpu = Gpu::new(canvas(96, 64), BackendChoice::Auto).await.expect("an adapter (WebGPU or WebGL2)");
+    let gpu = Gpu::new(canvas(96, 64), BackendChoice::Auto)
+        .await
+        .expect("an adapter (WebGPU or WebGL2)");
     if let Some(expected) = option_env!("INBETWEEN_EXPECT_BACKEND") {
         assert_eq!(gpu.backend_name, expected, "adapter: {}", gpu.adapter_name);
     }
@@ -38,21 +44,44 @@ fn pixel(rgba: &[u8], width: u32, x: u32, y: u32) -> [u8; 4] {
 async fn renderer_draws_a_lit_cube_and_reads_it_back() {
     let gpu = gpu().await;
     let mut renderer = Renderer::new(&gpu);
-    let camera = OrbitCamera { target: Vec3::ZERO, distance: 5.0, yaw_rad: 0.6, pitch_rad: 0.4, ..Default::default() };
-    renderer.frame.mesh(renderer.cube, Mat4::IDENTITY, Vec3::new(1.0, 0.0, 0.0));
+    let camera = OrbitCamera {
+        target: Vec3::ZERO,
+        distance: 5.0,
+        yaw_rad: 0.6,
+        pitch_rad: 0.4,
+        ..Default::default()
+    };
+    renderer
+        .frame
+        .mesh(renderer.cube, Mat4::IDENTITY, Vec3::new(1.0, 0.0, 0.0));
     let (w, h) = (96, 64);
-    let rgba = renderer.render_to_rgba(&gpu, &camera, w, h).await.expect("pixels");
+    let rgba = renderer
+        .render_to_rgba(&gpu, &camera, w, h)
+        .await
+        .expect("pixels");
     assert_eq!(rgba.len(), (w * h * 4) as usize);
     // Corners show the background (sRGB 0.96, 0.96, 0.97 → about 245, 245, 247).
     for [x, y] in [[0, 0], [w - 1, 0], [0, h - 1], [w - 1, h - 1]] {
         let p = pixel(&rgba, w, x, y);
-        assert!(p[0] > 235 && p[1] > 235 && p[2] > 235, "corner ({x},{y}) = {p:?}");
+        assert!(
+            p[0] > 235 && p[1] > 235 && p[2] > 235,
+            "corner ({x},{y}) = {p:?}"
+        );
     }
     // The centre shows the red cube: red dominates and it is shaded, not flat background.
     let c = pixel(&rgba, w, w / 2, h / 2);
     assert!(c[0] > 60 && c[1] < 80 && c[2] < 80, "centre = {c:?}");
     // Three faces are visible, lit differently: count distinct reds along a horizontal line and a column.
-    let mut reds: Vec<u8> = (0..w).chain(0..h).map(|i| if i < w { pixel(&rgba, w, i, h / 2 + 6)[0] } else { pixel(&rgba, w, w / 2, i - w)[0] }).collect();
+    let mut reds: Vec<u8> = (0..w)
+        .chain(0..h)
+        .map(|i| {
+            if i < w {
+                pixel(&rgba, w, i, h / 2 + 6)[0]
+            } else {
+                pixel(&rgba, w, w / 2, i - w)[0]
+            }
+        })
+        .collect();
     reds.sort_unstable();
     reds.dedup_by(|a, b| a.abs_diff(*b) < 8);
     assert!(reds.len() >= 3, "expected several shades, got {reds:?}");
@@ -62,15 +91,37 @@ async fn renderer_draws_a_lit_cube_and_reads_it_back() {
 async fn lines_points_and_depth() {
     let gpu = gpu().await;
     let mut renderer = Renderer::new(&gpu);
-    let camera = OrbitCamera { target: Vec3::ZERO, distance: 4.0, yaw_rad: 0.0, pitch_rad: 0.0, ..Default::default() };
+    let camera = OrbitCamera {
+        target: Vec3::ZERO,
+        distance: 4.0,
+        yaw_rad: 0.0,
+        pitch_rad: 0.0,
+        ..Default::default()
+    };
     let (w, h) = (64, 64);
     // A green point in front of a blue box: depth testing keeps the nearer one.
-    renderer.frame.mesh(renderer.cube, Mat4::from_scale(Vec3::splat(0.8)), Vec3::new(0.0, 0.0, 1.0));
-    renderer.frame.point(Vec3::new(0.0, 0.0, 1.5), 0.2, Vec3::new(0.0, 1.0, 0.0));
-    renderer.frame.line(Vec3::new(-3.0, 1.0, 0.0), Vec3::new(3.0, 1.0, 0.0), Vec3::new(1.0, 0.0, 0.0));
-    let rgba = renderer.render_to_rgba(&gpu, &camera, w, h).await.expect("pixels");
+    renderer.frame.mesh(
+        renderer.cube,
+        Mat4::from_scale(Vec3::splat(0.8)),
+        Vec3::new(0.0, 0.0, 1.0),
+    );
+    renderer
+        .frame
+        .point(Vec3::new(0.0, 0.0, 1.5), 0.2, Vec3::new(0.0, 1.0, 0.0));
+    renderer.frame.line(
+        Vec3::new(-3.0, 1.0, 0.0),
+        Vec3::new(3.0, 1.0, 0.0),
+        Vec3::new(1.0, 0.0, 0.0),
+    );
+    let rgba = renderer
+        .render_to_rgba(&gpu, &camera, w, h)
+        .await
+        .expect("pixels");
     let c = pixel(&rgba, w, w / 2, h / 2);
-    assert!(c[1] > 100 && c[0] < 80 && c[2] < 80, "point in front: {c:?}");
+    assert!(
+        c[1] > 100 && c[0] < 80 && c[2] < 80,
+        "point in front: {c:?}"
+    );
     let side = pixel(&rgba, w, w / 2 + 14, h / 2);
     assert!(side[2] > 100 && side[0] < 80, "box behind: {side:?}");
     let has_red_line = (0..h).any(|y| {
@@ -80,8 +131,14 @@ async fn lines_points_and_depth() {
     });
     assert!(has_red_line, "the red line crosses the left of the image");
     // Drawing clears the frame: the next render is background only.
-    let empty = renderer.render_to_rgba(&gpu, &camera, w, h).await.expect("pixels");
-    assert!(empty.chunks(4).all(|p| p[0] > 235), "frame list is cleared after each draw");
+    let empty = renderer
+        .render_to_rgba(&gpu, &camera, w, h)
+        .await
+        .expect("pixels");
+    assert!(
+        empty.chunks(4).all(|p| p[0] > 235),
+        "frame list is cleared after each draw"
+    );
 }
 
 #[wasm_bindgen_test]
@@ -91,8 +148,12 @@ async fn meshes_update_in_place() {
     let data = inbetween::mesh::cuboid(Vec3::splat(0.5));
     let id = renderer.create_mesh(&gpu, &data, None);
     let moved: Vec<Vec3> = data.positions.iter().map(|p| *p + Vec3::X * 10.0).collect();
-    renderer.update_mesh(&gpu, id, &moved, &data.normals).expect("same vertex count");
-    let err = renderer.update_mesh(&gpu, id, &moved[..3], &data.normals[..3]).unwrap_err();
+    renderer
+        .update_mesh(&gpu, id, &moved, &data.normals)
+        .expect("same vertex count");
+    let err = renderer
+        .update_mesh(&gpu, id, &moved[..3], &data.normals[..3])
+        .unwrap_err();
     assert!(err.contains("24 vertices"), "{err}");
 }
 
@@ -101,20 +162,29 @@ async fn viewer_rejects_an_unknown_backend_with_a_message() {
     let result = inbetween::web::Viewer::create(canvas(8, 8), "vulkan".into()).await;
     assert!(result.is_err());
     assert_eq!(BackendChoice::parse("webgl2"), Ok(BackendChoice::WebGl2));
-    assert!(BackendChoice::parse("vulkan").unwrap_err().contains("auto, webgpu or webgl2"));
+    assert!(BackendChoice::parse("vulkan")
+        .unwrap_err()
+        .contains("auto, webgpu or webgl2"));
 }
 
 /// The message of a `JsError` as JavaScript would see it.
 fn message(error: wasm_bindgen::JsError) -> String {
     let value: wasm_bindgen::JsValue = error.into();
-    js_sys::Reflect::get(&value, &"message".into()).ok().and_then(|m| m.as_string()).unwrap_or_default()
+    js_sys::Reflect::get(&value, &"message".into())
+        .ok()
+        .and_then(|m| m.as_string())
+        .unwrap_or_default()
 }
 
 #[wasm_bindgen_test]
 fn lesson_01_bindings_reject_bad_input_with_messages() {
     use inbetween::web::{HierarchyScene, SingleShapeScene};
     let mut scene = HierarchyScene::new();
-    let m = message(scene.set_joint_angles_deg(0, f32::NAN, 0.0, 0.0).unwrap_err());
+    let m = message(
+        scene
+            .set_joint_angles_deg(0, f32::NAN, 0.0, 0.0)
+            .unwrap_err(),
+    );
     assert!(m.contains("x must be a finite number"), "{m}");
     let m = message(scene.set_joint_scale(1, 99.0, 1.0, 1.0).unwrap_err());
     assert!(m.contains("sx must lie in [0.1, 4]"), "{m}");
@@ -124,8 +194,17 @@ fn lesson_01_bindings_reject_bad_input_with_messages() {
     assert!(scene.sample_cycle(50, f32::INFINITY).is_err());
     assert!(scene.set_joint_angles_deg(3, 10.0, 20.0, 30.0).is_ok());
     let back = scene.joint_angles_deg(3).unwrap();
-    assert!(back.iter().zip([10.0, 20.0, 30.0]).all(|(a, b)| (a - b).abs() < 1e-4), "{back:?}");
+    assert!(
+        back.iter()
+            .zip([10.0, 20.0, 30.0])
+            .all(|(a, b)| (a - b).abs() < 1e-4),
+        "{back:?}"
+    );
     let mut shape = SingleShapeScene::new();
-    let m = message(shape.set_transform(0.0, f32::NEG_INFINITY, 0.0, 0.0, 0.0, 0.0).unwrap_err());
+    let m = message(
+        shape
+            .set_transform(0.0, f32::NEG_INFINITY, 0.0, 0.0, 0.0, 0.0)
+            .unwrap_err(),
+    );
     assert!(m.contains("ty"), "{m}");
 }

@@ -18,16 +18,33 @@ fn message<T>(result: Result<T, JsError>) -> String {
 #[wasm_bindgen_test]
 fn valid_keys_are_accepted_and_read_back() {
     let mut scene = KeyframesScene::new();
-    scene.set_keys(vec![0.0, 1.0, 2.5], vec![0.0, 0.0, 1.0, 2.0, 3.0, 0.5]).expect("valid keys");
-    assert_eq!(scene.keys(), vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.5, 3.0, 0.5]);
-    for scheme in ["step", "linear", "lagrange", "hermite", "cardinal", "natural", "centripetal"] {
+    scene
+        .set_keys(vec![0.0, 1.0, 2.5], vec![0.0, 0.0, 1.0, 2.0, 3.0, 0.5])
+        .expect("valid keys");
+    assert_eq!(
+        scene.keys(),
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.5, 3.0, 0.5]
+    );
+    for scheme in [
+        "step",
+        "linear",
+        "lagrange",
+        "hermite",
+        "cardinal",
+        "natural",
+        "centripetal",
+    ] {
         scene.set_scheme(scheme).expect(scheme);
         assert_eq!(scene.sample_path(50).expect("path").len(), 100);
     }
     scene.set_tension(0.5).expect("tension in range");
-    scene.set_key_tangent(1, 1.0, 0.0, 0.0, 1.0).expect("a broken tangent");
+    scene
+        .set_key_tangent(1, 1.0, 0.0, 0.0, 1.0)
+        .expect("a broken tangent");
     assert_eq!(scene.scheme(), "hermite");
-    scene.set_tangents(vec![0.0; 6], vec![1.0; 6]).expect("one tangent pair per key");
+    scene
+        .set_tangents(vec![0.0; 6], vec![1.0; 6])
+        .expect("one tangent pair per key");
     scene.set_arc_length(true);
     scene.set_ease("smoothstep").expect("known ease");
     assert_eq!(scene.sample_motion(11).expect("motion").len(), 44);
@@ -39,7 +56,11 @@ fn a_nan_key_value_is_rejected() {
     let before = scene.keys();
     let m = message(scene.set_keys(vec![0.0, 1.0], vec![0.0, f32::NAN, 1.0, 1.0]));
     assert!(m.contains("key 0") && m.contains("NaN"), "{m}");
-    assert_eq!(scene.keys(), before, "a rejected edit leaves the scene unchanged");
+    assert_eq!(
+        scene.keys(),
+        before,
+        "a rejected edit leaves the scene unchanged"
+    );
 }
 
 #[wasm_bindgen_test]
@@ -55,7 +76,10 @@ fn a_nan_or_infinite_key_time_is_rejected() {
 fn unsorted_or_repeated_times_are_rejected() {
     let mut scene = KeyframesScene::new();
     let m = message(scene.set_keys(vec![0.0, 2.0, 1.0], vec![0.0; 6]));
-    assert!(m.contains("strictly increase") && m.contains("key 2"), "{m}");
+    assert!(
+        m.contains("strictly increase") && m.contains("key 2"),
+        "{m}"
+    );
     let m = message(scene.set_keys(vec![0.0, 1.0, 1.0], vec![0.0; 6]));
     assert!(m.contains("strictly increase"), "{m}");
 }

@@ -12,7 +12,10 @@ wasm_bindgen_test_configure!(run_in_browser);
 /// The message a `JsError` carries to JavaScript.
 fn message(e: wasm_bindgen::JsError) -> String {
     let value: JsValue = e.into();
-    js_sys::Reflect::get(&value, &"message".into()).ok().and_then(|m| m.as_string()).unwrap_or_default()
+    js_sys::Reflect::get(&value, &"message".into())
+        .ok()
+        .and_then(|m| m.as_string())
+        .unwrap_or_default()
 }
 
 #[wasm_bindgen_test]
@@ -22,11 +25,20 @@ fn a_zero_or_nan_quaternion_is_rejected() {
     assert!(message(e).contains("zero length"));
     let e = scene.set_end_quat(f32::NAN, 0.0, 0.0, 1.0).unwrap_err();
     assert!(message(e).contains("NaN"));
-    assert!(scene.set_end_quat(0.0, 0.0, 0.0, 2.0).is_ok(), "a non-unit quaternion is normalised");
+    assert!(
+        scene.set_end_quat(0.0, 0.0, 0.0, 2.0).is_ok(),
+        "a non-unit quaternion is normalised"
+    );
     let mut rigid = RigidScene::new();
-    assert!(rigid.set_end_quat(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0).is_err());
-    assert!(rigid.set_end_quat(0.0, 0.0, 0.0, 1.0, f32::NAN, 0.0, 0.0).is_err());
-    assert!(rigid.set_end_quat(0.0, 0.6, 0.0, 0.8, 1.0, 0.0, 0.0).is_ok());
+    assert!(rigid
+        .set_end_quat(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+        .is_err());
+    assert!(rigid
+        .set_end_quat(0.0, 0.0, 0.0, 1.0, f32::NAN, 0.0, 0.0)
+        .is_err());
+    assert!(rigid
+        .set_end_quat(0.0, 0.6, 0.0, 0.8, 1.0, 0.0, 0.0)
+        .is_ok());
 }
 
 #[wasm_bindgen_test]
@@ -38,35 +50,64 @@ fn a_non_orthonormal_matrix_is_not_a_rotation() {
     assert!(message(scene.set_end_matrix(mirror).unwrap_err()).contains("mirrors"));
     assert!(scene.set_end_matrix(vec![1.0; 4]).is_err(), "wrong length");
     let (s, c) = 0.5f32.sin_cos();
-    assert!(scene.set_end_matrix(vec![c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0]).is_ok());
+    assert!(scene
+        .set_end_matrix(vec![c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0])
+        .is_ok());
     let mut rigid = RigidScene::new();
     let mut sheared = glam::Mat4::IDENTITY.to_cols_array();
     sheared[4] = 0.5;
-    assert!(message(rigid.set_end_matrix(sheared.to_vec()).unwrap_err()).contains("not orthonormal"));
-    assert!(rigid.set_end_matrix(glam::Mat4::from_translation(glam::Vec3::X).to_cols_array().to_vec()).is_ok());
+    assert!(
+        message(rigid.set_end_matrix(sheared.to_vec()).unwrap_err()).contains("not orthonormal")
+    );
+    assert!(rigid
+        .set_end_matrix(
+            glam::Mat4::from_translation(glam::Vec3::X)
+                .to_cols_array()
+                .to_vec()
+        )
+        .is_ok());
 }
 
 #[wasm_bindgen_test]
 fn a_singular_affine_key_is_rejected() {
     let mut scene = AffineScene::new();
     assert!(message(scene.set_key_b(30.0, 1.0, 0.0, 1.0, 0.2).unwrap_err()).contains("singular"));
-    let flat = glam::Mat4::from_scale(glam::Vec3::new(1.0, 1.0, 0.0)).to_cols_array().to_vec();
+    let flat = glam::Mat4::from_scale(glam::Vec3::new(1.0, 1.0, 0.0))
+        .to_cols_array()
+        .to_vec();
     assert!(message(scene.set_key_matrix(0, flat).unwrap_err()).contains("singular"));
     let mut nan = glam::Mat4::IDENTITY.to_cols_array();
     nan[0] = f32::NAN;
     assert!(scene.set_key_matrix(1, nan.to_vec()).is_err());
     let mut projective = glam::Mat4::IDENTITY.to_cols_array();
     projective[3] = 0.5;
-    assert!(message(scene.set_key_matrix(1, projective.to_vec()).unwrap_err()).contains("not affine"));
-    assert!(scene.set_key_matrix(2, glam::Mat4::IDENTITY.to_cols_array().to_vec()).is_err(), "no key 2");
+    assert!(
+        message(scene.set_key_matrix(1, projective.to_vec()).unwrap_err()).contains("not affine")
+    );
+    assert!(
+        scene
+            .set_key_matrix(2, glam::Mat4::IDENTITY.to_cols_array().to_vec())
+            .is_err(),
+        "no key 2"
+    );
     assert!(scene.set_key_b(-120.0, 0.5, 2.0, 1.0, -0.4).is_ok());
-    assert!(scene.set_key_matrix(0, glam::Mat4::from_scale(glam::Vec3::splat(2.0)).to_cols_array().to_vec()).is_ok());
+    assert!(scene
+        .set_key_matrix(
+            0,
+            glam::Mat4::from_scale(glam::Vec3::splat(2.0))
+                .to_cols_array()
+                .to_vec()
+        )
+        .is_ok());
 }
 
 #[wasm_bindgen_test]
 fn a_zero_axis_is_rejected() {
     let mut scene = RodriguesScene::new();
-    assert!(message(scene.set_axis_angle(0.0, 0.0, 0.0, 30.0).unwrap_err()).contains("axis has zero length"));
+    assert!(
+        message(scene.set_axis_angle(0.0, 0.0, 0.0, 30.0).unwrap_err())
+            .contains("axis has zero length")
+    );
     assert!(scene.set_axis_angle(0.0, 1.0, 0.0, f32::INFINITY).is_err());
     assert!(scene.set_axis_angle(0.0, 2.0, 0.0, 30.0).is_ok());
     let mut rigid = RigidScene::new();
@@ -79,11 +120,18 @@ fn sampled_plots_have_the_promised_shape() {
     let scene = InterpolationScene::new();
     let d = scene.sample_determinant(11).map_err(message).unwrap();
     assert_eq!(d.len(), 33);
-    assert!((d[1] - 1.0).abs() < 1e-4 && (d[31] - 1.0).abs() < 1e-4, "keys are rotations");
+    assert!(
+        (d[1] - 1.0).abs() < 1e-4 && (d[31] - 1.0).abs() < 1e-4,
+        "keys are rotations"
+    );
     let s = scene.sample_angular_speed(11).map_err(message).unwrap();
     let slerp: Vec<f32> = s.chunks(4).map(|c| c[3]).collect();
-    let spread = slerp.iter().cloned().fold(f32::MIN, f32::max) - slerp.iter().cloned().fold(f32::MAX, f32::min);
-    assert!(spread < 0.02 * slerp[0], "slerp's angular speed is constant: {slerp:?}");
+    let spread = slerp.iter().cloned().fold(f32::MIN, f32::max)
+        - slerp.iter().cloned().fold(f32::MAX, f32::min);
+    assert!(
+        spread < 0.02 * slerp[0],
+        "slerp's angular speed is constant: {slerp:?}"
+    );
     assert!(scene.sample_determinant(1).is_err());
     let rigid = RigidScene::new();
     assert_eq!(rigid.sample_speed(5).map_err(message).unwrap().len(), 20);

@@ -126,7 +126,11 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         (vec![0.0, 1.0, 2.0], vec![0.0, 1.0, 0.0], 1.0),
         (vec![0.0, 0.1, 3.0, 3.2], vec![1.0, -1.0, 2.0, 0.5], 1.0),
         (vec![0.0, 0.1, 3.0, 3.2], vec![1.0, -1.0, 2.0, 0.5], 0.0),
-        (vec![-2.0, 0.5, 0.7, 5.0, 6.0], vec![0.0, 4.0, -3.0, 1.0, 1.0], 2.0),
+        (
+            vec![-2.0, 0.5, 0.7, 5.0, 6.0],
+            vec![0.0, 4.0, -3.0, 1.0, 1.0],
+            2.0,
+        ),
     ];
     for _ in 0..100 {
         let n = 1 + rng.below(12);
@@ -152,8 +156,15 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
 
     // 2.3: every key time exactly, just before and after keys, outside on both sides, few keys.
     let keys = vec![0.0, 0.5, 1.25, 2.0, 4.0];
-    let mut lookups: Vec<(Vec<f32>, f32)> = vec![(vec![1.0], 5.0), (vec![0.0, 1.0], 0.5), (vec![0.0, 1.0], 1.0), (vec![0.0, 1.0], -1.0)];
-    for &t in &[-1.0, 0.0, 0.5, 1.25, 2.0, 4.0, 5.0, 0.49, 0.51, 1.999, 3.999, 4.0001] {
+    let mut lookups: Vec<(Vec<f32>, f32)> = vec![
+        (vec![1.0], 5.0),
+        (vec![0.0, 1.0], 0.5),
+        (vec![0.0, 1.0], 1.0),
+        (vec![0.0, 1.0], -1.0),
+    ];
+    for &t in &[
+        -1.0, 0.0, 0.5, 1.25, 2.0, 4.0, 5.0, 0.49, 0.51, 1.999, 3.999, 4.0001,
+    ] {
         lookups.push((keys.clone(), t));
     }
     for _ in 0..200 {
@@ -161,7 +172,11 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         let times = random_times(rng, n);
         let (first, last) = (times[0], times[times.len() - 1]);
         // Half the cases land exactly on a key.
-        let t = if rng.below(2) == 0 { times[rng.below(times.len())] } else { rng.range(first - 1.0, last + 1.0) };
+        let t = if rng.below(2) == 0 {
+            times[rng.below(times.len())]
+        } else {
+            rng.range(first - 1.0, last + 1.0)
+        };
         lookups.push((times, t));
     }
     let segment = check(
@@ -196,7 +211,11 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
             })
             .collect();
         let total = length;
-        let s = if rng.below(4) == 0 { lengths[rng.below(n)] } else { rng.range(-0.1 * total, 1.1 * total) };
+        let s = if rng.below(4) == 0 {
+            lengths[rng.below(n)]
+        } else {
+            rng.range(-0.1 * total, 1.1 * total)
+        };
         tables.push((params, lengths, s));
     }
     let invert = check(

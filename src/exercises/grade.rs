@@ -15,9 +15,18 @@ pub enum Status {
     /// The exercise still returns `Err(NotDone)`.
     NotDone,
     /// The first case whose answer differs from the reference.
-    Wrong { case: usize, input: String, expected: String, actual: String },
+    Wrong {
+        case: usize,
+        input: String,
+        expected: String,
+        actual: String,
+    },
     /// The exercise panicked (caught natively only: a wasm panic aborts the module).
-    Panicked { case: usize, input: String, message: String },
+    Panicked {
+        case: usize,
+        input: String,
+        message: String,
+    },
 }
 
 /// One row of the grade table.
@@ -61,10 +70,16 @@ pub fn check<I: Debug, O: Debug>(
             let answer = match run_caught(|| student(input)) {
                 Ok(answer) => answer,
                 Err(message) => {
-                    return Status::Panicked { case, input: format!("{input:?}"), message };
+                    return Status::Panicked {
+                        case,
+                        input: format!("{input:?}"),
+                        message,
+                    };
                 }
             };
-            let Ok(actual) = answer else { return Status::NotDone };
+            let Ok(actual) = answer else {
+                return Status::NotDone;
+            };
             let expected = reference(input);
             if !close(&expected, &actual) {
                 return Status::Wrong {
@@ -75,9 +90,15 @@ pub fn check<I: Debug, O: Debug>(
                 };
             }
         }
-        Status::Passed { cases: inputs.len() }
+        Status::Passed {
+            cases: inputs.len(),
+        }
     })();
-    Report { lesson, exercise, status }
+    Report {
+        lesson,
+        exercise,
+        status,
+    }
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -98,18 +119,34 @@ fn run_caught<T>(f: impl FnOnce() -> T) -> Result<T, String> {
 
 /// Element-wise comparison with a tolerance scaled by the larger magnitude.
 pub fn mat4_close(a: &Mat4, b: &Mat4, eps: f32) -> bool {
-    a.to_cols_array().iter().zip(b.to_cols_array().iter()).all(|(x, y)| (x - y).abs() <= eps * (1.0 + x.abs().max(y.abs())))
+    a.to_cols_array()
+        .iter()
+        .zip(b.to_cols_array().iter())
+        .all(|(x, y)| (x - y).abs() <= eps * (1.0 + x.abs().max(y.abs())))
 }
 
 /// The grade table, one row per exercise, then a summary line.
 pub fn table(reports: &[Report]) -> String {
     let mut out = String::new();
-    let w_lesson = reports.iter().map(|r| r.lesson.len()).max().unwrap_or(0).max(6);
-    let w_ex = reports.iter().map(|r| r.exercise.len()).max().unwrap_or(0).max(8);
+    let w_lesson = reports
+        .iter()
+        .map(|r| r.lesson.len())
+        .max()
+        .unwrap_or(0)
+        .max(6);
+    let w_ex = reports
+        .iter()
+        .map(|r| r.exercise.len())
+        .max()
+        .unwrap_or(0)
+        .max(8);
     out += &format!("{:<w_lesson$}  {:<w_ex$}  status\n", "lesson", "exercise");
     out += &format!("{}\n", "-".repeat(w_lesson + w_ex + 30));
     for r in reports {
-        out += &format!("{:<w_lesson$}  {:<w_ex$}  {}\n", r.lesson, r.exercise, r.status);
+        out += &format!(
+            "{:<w_lesson$}  {:<w_ex$}  {}\n",
+            r.lesson, r.exercise, r.status
+        );
     }
     let passed = reports.iter().filter(|r| r.passed()).count();
     let todo = reports.iter().filter(|r| r.not_done()).count();

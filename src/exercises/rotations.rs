@@ -98,16 +98,28 @@ pub fn polar_step(r: Mat3) -> Answer<Mat3> {
 
 /// Same rotation: `q ≈ p` or `q ≈ −p`.
 fn same_rotation(a: &Quat, b: &Quat, eps: f32) -> bool {
-    a.is_finite() && b.is_finite() && (1.0 - a.dot(*b).abs()) <= eps && (a.length() - 1.0).abs() <= 1e-3 && (b.length() - 1.0).abs() <= 1e-3
+    a.is_finite()
+        && b.is_finite()
+        && (1.0 - a.dot(*b).abs()) <= eps
+        && (a.length() - 1.0).abs() <= 1e-3
+        && (b.length() - 1.0).abs() <= 1e-3
 }
 
 fn mat3_close(a: &Mat3, b: &Mat3, eps: f32) -> bool {
-    a.to_cols_array().iter().zip(b.to_cols_array().iter()).all(|(x, y)| (x - y).abs() <= eps * (1.0 + x.abs().max(y.abs())))
+    a.to_cols_array()
+        .iter()
+        .zip(b.to_cols_array().iter())
+        .all(|(x, y)| (x - y).abs() <= eps * (1.0 + x.abs().max(y.abs())))
 }
 
 fn unit_quat(rng: &mut super::grade::Rng) -> Quat {
     loop {
-        let v = Vec4::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
+        let v = Vec4::new(
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+        );
         if v.length() > 0.1 {
             return Quat::from_vec4(v.normalize());
         }
@@ -210,9 +222,21 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let mut motions = vec![
         (Quat::IDENTITY, Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0)),
         (Quat::IDENTITY, Vec3::new(1.0, -2.0, 0.5), Vec3::ZERO),
-        (Quat::from_rotation_y(PI), Vec3::ZERO, Vec3::new(1.0, 0.0, 0.0)),
-        (Quat::from_rotation_z(FRAC_PI_2), Vec3::new(0.0, 0.0, 2.0), Vec3::X),
-        (-Quat::from_rotation_x(0.8), Vec3::new(0.3, 0.2, -0.1), Vec3::new(0.0, 1.0, 1.0)),
+        (
+            Quat::from_rotation_y(PI),
+            Vec3::ZERO,
+            Vec3::new(1.0, 0.0, 0.0),
+        ),
+        (
+            Quat::from_rotation_z(FRAC_PI_2),
+            Vec3::new(0.0, 0.0, 2.0),
+            Vec3::X,
+        ),
+        (
+            -Quat::from_rotation_x(0.8),
+            Vec3::new(0.3, 0.2, -0.1),
+            Vec3::new(0.0, 1.0, 1.0),
+        ),
     ];
     for _ in 0..200 {
         motions.push((unit_quat(rng), rng.vec3(-5.0, 5.0), rng.vec3(-3.0, 3.0)));
@@ -229,8 +253,13 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         |(a, pa), (b, pb)| {
             // q and −q are the same motion: compare both parts with one common sign.
             let s = if a.real.dot(b.real) < 0.0 { -1.0 } else { 1.0 };
-            let close = |x: Quat, y: Quat| (Vec4::from(x) - Vec4::from(y * s)).abs().max_element() <= 1e-4 * (1.0 + Vec4::from(x).abs().max_element());
-            close(a.real, b.real) && close(a.dual, b.dual) && (*pa - *pb).abs().max_element() <= 1e-4 * (1.0 + pa.abs().max_element())
+            let close = |x: Quat, y: Quat| {
+                (Vec4::from(x) - Vec4::from(y * s)).abs().max_element()
+                    <= 1e-4 * (1.0 + Vec4::from(x).abs().max_element())
+            };
+            close(a.real, b.real)
+                && close(a.dual, b.dual)
+                && (*pa - *pb).abs().max_element() <= 1e-4 * (1.0 + pa.abs().max_element())
         },
     );
 
@@ -243,7 +272,11 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         Mat3::from_rotation_x(0.4) * Mat3::from_diagonal(Vec3::new(1e-2, 1.0, 50.0)),
     ];
     while steps.len() < 200 {
-        let m = Mat3::from_cols(rng.vec3(-2.0, 2.0), rng.vec3(-2.0, 2.0), rng.vec3(-2.0, 2.0));
+        let m = Mat3::from_cols(
+            rng.vec3(-2.0, 2.0),
+            rng.vec3(-2.0, 2.0),
+            rng.vec3(-2.0, 2.0),
+        );
         if m.determinant().abs() > 0.05 {
             steps.push(m);
         }
@@ -257,5 +290,11 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         |a, b| mat3_close(a, b, 1e-3),
     );
 
-    vec![from_axis_angle, slerp_report, rodrigues_report, dual_quat_report, polar_report]
+    vec![
+        from_axis_angle,
+        slerp_report,
+        rodrigues_report,
+        dual_quat_report,
+        polar_report,
+    ]
 }

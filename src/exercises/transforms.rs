@@ -51,7 +51,14 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         (Vec3::ZERO, Vec3::new(std::f32::consts::FRAC_PI_2, 0.0, 0.0)),
         // Non-commuting rotations: only the right order passes this one.
         (Vec3::new(0.0, 0.5, 0.0), Vec3::new(0.3, -1.1, 2.0)),
-        (Vec3::ZERO, Vec3::new(std::f32::consts::PI, std::f32::consts::PI, -std::f32::consts::PI)),
+        (
+            Vec3::ZERO,
+            Vec3::new(
+                std::f32::consts::PI,
+                std::f32::consts::PI,
+                -std::f32::consts::PI,
+            ),
+        ),
     ];
     for _ in 0..200 {
         inputs.push((rng.vec3(-5.0, 5.0), rng.vec3(-6.3, 6.3)));
@@ -65,11 +72,26 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         |a, b| mat4_close(a, b, 1e-4),
     );
 
-    let mut hierarchies: Vec<Vec<i32>> = vec![vec![-1], vec![-1, 0], vec![-1, 0, 1, 2], vec![-1, 0, 0, 1, -1, 4]];
+    let mut hierarchies: Vec<Vec<i32>> = vec![
+        vec![-1],
+        vec![-1, 0],
+        vec![-1, 0, 1, 2],
+        vec![-1, 0, 0, 1, -1, 4],
+    ];
     for _ in 0..50 {
         let n = 1 + rng.below(20);
         // A random valid hierarchy: each joint's parent is a root marker or any earlier joint.
-        hierarchies.push((0..n).map(|i| if i == 0 { -1 } else { rng.below(i + 1) as i32 - 1 }).collect());
+        hierarchies.push(
+            (0..n)
+                .map(|i| {
+                    if i == 0 {
+                        -1
+                    } else {
+                        rng.below(i + 1) as i32 - 1
+                    }
+                })
+                .collect(),
+        );
     }
     let cases: Vec<(Vec<i32>, Vec<Mat4>)> = hierarchies
         .into_iter()

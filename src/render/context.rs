@@ -18,7 +18,9 @@ impl BackendChoice {
             "" | "auto" => Ok(Self::Auto),
             "webgpu" => Ok(Self::WebGpu),
             "webgl2" | "webgl" => Ok(Self::WebGl2),
-            other => Err(format!("unknown backend '{other}': use auto, webgpu or webgl2")),
+            other => Err(format!(
+                "unknown backend '{other}': use auto, webgpu or webgl2"
+            )),
         }
     }
 }
@@ -77,7 +79,8 @@ impl Gpu {
         };
         // WebGL2's limits, raised to what the adapter allows for texture sizes only: a lesson that
         // runs here runs on both backends.
-        let required_limits = wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits());
+        let required_limits =
+            wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits());
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("inbetween device"),
@@ -89,13 +92,17 @@ impl Gpu {
             .map_err(|e| format!("The {backend_name} adapter refused to create a device: {e}"))?;
         let mut config = surface
             .get_default_config(&adapter, width, height)
-            .ok_or_else(|| format!("The {backend_name} surface is not supported by its adapter."))?;
+            .ok_or_else(|| {
+                format!("The {backend_name} surface is not supported by its adapter.")
+            })?;
         // Prefer a plain 8-bit format on both backends, so pixels agree; encode sRGB ourselves.
         let formats = surface.get_capabilities(&adapter).formats;
-        let plain = formats
-            .iter()
-            .copied()
-            .find(|f| matches!(f, wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Bgra8Unorm));
+        let plain = formats.iter().copied().find(|f| {
+            matches!(
+                f,
+                wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Bgra8Unorm
+            )
+        });
         config.format = plain.unwrap_or(config.format);
         let encode_srgb_in_shader = !config.format.is_srgb();
         config.usage = wgpu::TextureUsages::RENDER_ATTACHMENT;

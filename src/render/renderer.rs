@@ -86,19 +86,35 @@ pub struct Frame {
 impl Frame {
     /// Draws `mesh` transformed by `model`, lit, in a uniform colour.
     pub fn mesh(&mut self, mesh: MeshId, model: Mat4, color: Vec3) {
-        self.meshes.push(MeshDraw { mesh, model, color: color.extend(1.0), flags: Vec4::ZERO });
+        self.meshes.push(MeshDraw {
+            mesh,
+            model,
+            color: color.extend(1.0),
+            flags: Vec4::ZERO,
+        });
     }
 
     /// Draws `mesh` lit, with the colours stored in its vertices.
     pub fn mesh_vertex_colors(&mut self, mesh: MeshId, model: Mat4) {
-        self.meshes.push(MeshDraw { mesh, model, color: Vec4::ONE, flags: Vec4::X });
+        self.meshes.push(MeshDraw {
+            mesh,
+            model,
+            color: Vec4::ONE,
+            flags: Vec4::X,
+        });
     }
 
     /// A line segment from `a` to `b`.
     pub fn line(&mut self, a: Vec3, b: Vec3, color: Vec3) {
         let color = color.extend(1.0).to_array();
-        self.lines.push(LineVertex { position: a.to_array(), color });
-        self.lines.push(LineVertex { position: b.to_array(), color });
+        self.lines.push(LineVertex {
+            position: a.to_array(),
+            color,
+        });
+        self.lines.push(LineVertex {
+            position: b.to_array(),
+            color,
+        });
     }
 
     /// Consecutive points joined by segments (a curve, a trajectory).
@@ -120,7 +136,11 @@ impl Frame {
     /// The x (red), y (green) and z (blue) axes of the frame `m`, each `length` long.
     pub fn axes(&mut self, m: Mat4, length: f32) {
         let o = m.transform_point3(Vec3::ZERO);
-        for (axis, color) in [(Vec3::X, Vec3::new(0.9, 0.1, 0.1)), (Vec3::Y, Vec3::new(0.1, 0.7, 0.1)), (Vec3::Z, Vec3::new(0.1, 0.25, 0.95))] {
+        for (axis, color) in [
+            (Vec3::X, Vec3::new(0.9, 0.1, 0.1)),
+            (Vec3::Y, Vec3::new(0.1, 0.7, 0.1)),
+            (Vec3::Z, Vec3::new(0.1, 0.25, 0.95)),
+        ] {
             self.line(o, o + m.transform_vector3(axis) * length, color);
         }
     }
@@ -128,8 +148,17 @@ impl Frame {
     /// A ground grid on y = 0 with `cells` cells of `spacing` metres on a side.
     pub fn grid(&mut self, cells: u32, spacing: f32) {
         for [a, b] in crate::mesh::grid_lines(cells, spacing) {
-            let on_axis = a.x.abs() < 1e-6 && b.x.abs() < 1e-6 || a.z.abs() < 1e-6 && b.z.abs() < 1e-6;
-            self.line(a, b, if on_axis { Vec3::splat(0.45) } else { Vec3::splat(0.7) });
+            let on_axis =
+                a.x.abs() < 1e-6 && b.x.abs() < 1e-6 || a.z.abs() < 1e-6 && b.z.abs() < 1e-6;
+            self.line(
+                a,
+                b,
+                if on_axis {
+                    Vec3::splat(0.45)
+                } else {
+                    Vec3::splat(0.7)
+                },
+            );
         }
     }
 
@@ -149,10 +178,25 @@ struct StreamBuffer {
 }
 
 impl StreamBuffer {
-    fn new(device: &wgpu::Device, label: &'static str, usage: wgpu::BufferUsages, capacity: u64) -> Self {
+    fn new(
+        device: &wgpu::Device,
+        label: &'static str,
+        usage: wgpu::BufferUsages,
+        capacity: u64,
+    ) -> Self {
         let usage = usage | wgpu::BufferUsages::COPY_DST;
-        let buffer = device.create_buffer(&wgpu::BufferDescriptor { label: Some(label), size: capacity, usage, mapped_at_creation: false });
-        Self { buffer, capacity, usage, label }
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size: capacity,
+            usage,
+            mapped_at_creation: false,
+        });
+        Self {
+            buffer,
+            capacity,
+            usage,
+            label,
+        }
     }
 
     /// Uploads `bytes`; returns true when the buffer had to be replaced (bind groups must follow).
@@ -229,7 +273,10 @@ impl Renderer {
         });
         let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("object"),
-            entries: &[uniform_entry(true, std::mem::size_of::<ObjectUniform>() as u64)],
+            entries: &[uniform_entry(
+                true,
+                std::mem::size_of::<ObjectUniform>() as u64,
+            )],
         });
         let globals = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("globals"),
@@ -240,15 +287,25 @@ impl Renderer {
         let globals_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("globals"),
             layout: &globals_layout,
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() }],
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: globals.as_entire_binding(),
+            }],
         });
-        let objects = StreamBuffer::new(device, "objects", wgpu::BufferUsages::UNIFORM, OBJECT_STRIDE * 64);
+        let objects = StreamBuffer::new(
+            device,
+            "objects",
+            wgpu::BufferUsages::UNIFORM,
+            OBJECT_STRIDE * 64,
+        );
         let object_group = Self::object_group(device, &object_layout, &objects.buffer);
 
         let shader = |label: &str, source: &str| {
             device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some(label),
-                source: wgpu::ShaderSource::Wgsl(format!("{}\n{}", include_str!("shaders/common.wgsl"), source).into()),
+                source: wgpu::ShaderSource::Wgsl(
+                    format!("{}\n{}", include_str!("shaders/common.wgsl"), source).into(),
+                ),
             })
         };
         let mesh_shader = shader("mesh", include_str!("shaders/mesh.wgsl"));
@@ -264,9 +321,11 @@ impl Renderer {
         let mesh_layout = layout_with(&[Some(&globals_layout), Some(&object_layout)]);
         let plain_layout = layout_with(&[Some(&globals_layout)]);
 
-        let mesh_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
+        let mesh_attributes =
+            wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
         let line_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4];
-        let point_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
+        let point_attributes =
+            wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
         let make = |label: &str,
                     layout: &wgpu::PipelineLayout,
                     module: &wgpu::ShaderModule,
@@ -282,7 +341,11 @@ impl Renderer {
                     compilation_options: Default::default(),
                     buffers: &[Some(buffer)],
                 },
-                primitive: wgpu::PrimitiveState { topology, cull_mode: cull, ..Default::default() },
+                primitive: wgpu::PrimitiveState {
+                    topology,
+                    cull_mode: cull,
+                    ..Default::default()
+                },
                 depth_stencil: Some(wgpu::DepthStencilState {
                     format: DEPTH_FORMAT,
                     depth_write_enabled: Some(true),
@@ -290,7 +353,10 @@ impl Renderer {
                     stencil: Default::default(),
                     bias: Default::default(),
                 }),
-                multisample: wgpu::MultisampleState { count: SAMPLE_COUNT, ..Default::default() },
+                multisample: wgpu::MultisampleState {
+                    count: SAMPLE_COUNT,
+                    ..Default::default()
+                },
                 fragment: Some(wgpu::FragmentState {
                     module,
                     entry_point: Some("fs_main"),
@@ -369,7 +435,11 @@ impl Renderer {
         renderer
     }
 
-    fn object_group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, buffer: &wgpu::Buffer) -> wgpu::BindGroup {
+    fn object_group(
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        buffer: &wgpu::Buffer,
+    ) -> wgpu::BindGroup {
         device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("objects"),
             layout,
@@ -396,25 +466,44 @@ impl Renderer {
             .iter()
             .zip(&data.normals)
             .zip(&colors)
-            .map(|((p, n), c)| MeshVertex { position: p.to_array(), normal: n.to_array(), color: *c })
+            .map(|((p, n), c)| MeshVertex {
+                position: p.to_array(),
+                normal: n.to_array(),
+                color: *c,
+            })
             .collect();
-        let vertices = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("mesh vertices"),
-            contents: bytemuck::cast_slice(&vertices),
-            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+        let vertices = gpu
+            .device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("mesh vertices"),
+                contents: bytemuck::cast_slice(&vertices),
+                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+            });
+        let indices = gpu
+            .device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("mesh indices"),
+                contents: bytemuck::cast_slice(&data.indices),
+                usage: wgpu::BufferUsages::INDEX,
+            });
+        self.meshes.push(GpuMesh {
+            vertices,
+            indices,
+            index_count: data.indices.len() as u32,
+            colors,
         });
-        let indices = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("mesh indices"),
-            contents: bytemuck::cast_slice(&data.indices),
-            usage: wgpu::BufferUsages::INDEX,
-        });
-        self.meshes.push(GpuMesh { vertices, indices, index_count: data.indices.len() as u32, colors });
         MeshId(self.meshes.len() - 1)
     }
 
     /// Replaces a mesh's positions and normals in place (skinning, cloth): same vertex count, no
     /// reallocation on the GPU.
-    pub fn update_mesh(&mut self, gpu: &Gpu, id: MeshId, positions: &[Vec3], normals: &[Vec3]) -> Result<(), String> {
+    pub fn update_mesh(
+        &mut self,
+        gpu: &Gpu,
+        id: MeshId,
+        positions: &[Vec3],
+        normals: &[Vec3],
+    ) -> Result<(), String> {
         let mesh = self.meshes.get(id.0).ok_or("unknown mesh")?;
         if positions.len() != mesh.colors.len() || normals.len() != mesh.colors.len() {
             return Err(format!(
@@ -425,19 +514,31 @@ impl Renderer {
             ));
         }
         self.scratch_vertices.clear();
-        self.scratch_vertices.extend(positions.iter().zip(normals).zip(&mesh.colors).map(|((p, n), c)| MeshVertex {
-            position: p.to_array(),
-            normal: n.to_array(),
-            color: *c,
-        }));
-        gpu.queue.write_buffer(&mesh.vertices, 0, bytemuck::cast_slice(&self.scratch_vertices));
+        self.scratch_vertices
+            .extend(
+                positions
+                    .iter()
+                    .zip(normals)
+                    .zip(&mesh.colors)
+                    .map(|((p, n), c)| MeshVertex {
+                        position: p.to_array(),
+                        normal: n.to_array(),
+                        color: *c,
+                    }),
+            );
+        gpu.queue.write_buffer(
+            &mesh.vertices,
+            0,
+            bytemuck::cast_slice(&self.scratch_vertices),
+        );
         Ok(())
     }
 
     /// Draws and clears `self.frame` into the canvas.
     pub fn render(&mut self, gpu: &Gpu, camera: &OrbitCamera) -> Result<(), String> {
         let frame = match gpu.surface.get_current_texture() {
-            wgpu::CurrentSurfaceTexture::Success(f) | wgpu::CurrentSurfaceTexture::Suboptimal(f) => f,
+            wgpu::CurrentSurfaceTexture::Success(f)
+            | wgpu::CurrentSurfaceTexture::Suboptimal(f) => f,
             wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
                 gpu.surface.configure(&gpu.device, &gpu.config);
                 self.frame.clear();
@@ -457,10 +558,20 @@ impl Renderer {
 
     /// Draws and clears `self.frame` into an offscreen `width × height` texture and returns its
     /// pixels as sRGB-encoded RGBA bytes, row by row from the top. For tests and thumbnails.
-    pub async fn render_to_rgba(&mut self, gpu: &Gpu, camera: &OrbitCamera, width: u32, height: u32) -> Result<Vec<u8>, String> {
+    pub async fn render_to_rgba(
+        &mut self,
+        gpu: &Gpu,
+        camera: &OrbitCamera,
+        width: u32,
+        height: u32,
+    ) -> Result<Vec<u8>, String> {
         let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
             label: Some("offscreen"),
-            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+            size: wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
@@ -479,17 +590,32 @@ impl Renderer {
         });
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         encoder.copy_texture_to_buffer(
-            wgpu::TexelCopyTextureInfo { texture: &texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect: wgpu::TextureAspect::All },
+            wgpu::TexelCopyTextureInfo {
+                texture: &texture,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
             wgpu::TexelCopyBufferInfo {
                 buffer: &readback,
-                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(padded_row), rows_per_image: Some(height) },
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(padded_row),
+                    rows_per_image: Some(height),
+                },
             },
-            wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+            wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
         );
         gpu.queue.submit([draw, encoder.finish()]);
         let done: Rc<Cell<Option<Result<(), String>>>> = Rc::new(Cell::new(None));
         let signal = done.clone();
-        readback.map_async(wgpu::MapMode::Read, .., move |r| signal.set(Some(r.map_err(|e| e.to_string()))));
+        readback.map_async(wgpu::MapMode::Read, .., move |r| {
+            signal.set(Some(r.map_err(|e| e.to_string())))
+        });
         // WebGPU completes the mapping from the browser's event loop, WebGL2 when polled: do both.
         let result = loop {
             let _ = gpu.device.poll(wgpu::PollType::Poll);
@@ -520,7 +646,11 @@ impl Renderer {
             gpu.device
                 .create_texture(&wgpu::TextureDescriptor {
                     label: Some(label),
-                    size: wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
+                    size: wgpu::Extent3d {
+                        width: size.0,
+                        height: size.1,
+                        depth_or_array_layers: 1,
+                    },
                     mip_level_count: 1,
                     sample_count: SAMPLE_COUNT,
                     dimension: wgpu::TextureDimension::D2,
@@ -530,10 +660,20 @@ impl Renderer {
                 })
                 .create_view(&Default::default())
         };
-        self.targets = Some(Targets { size, color: make(self.format, "msaa color"), depth: make(DEPTH_FORMAT, "depth") });
+        self.targets = Some(Targets {
+            size,
+            color: make(self.format, "msaa color"),
+            depth: make(DEPTH_FORMAT, "depth"),
+        });
     }
 
-    fn encode(&mut self, gpu: &Gpu, camera: &OrbitCamera, target: &wgpu::TextureView, size: (u32, u32)) -> wgpu::CommandBuffer {
+    fn encode(
+        &mut self,
+        gpu: &Gpu,
+        camera: &OrbitCamera,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+    ) -> wgpu::CommandBuffer {
         self.ensure_targets(gpu, size);
         let aspect = size.0 as f32 / size.1.max(1) as f32;
         let globals = Globals {
@@ -543,7 +683,8 @@ impl Renderer {
             light_dir: self.light_dir.normalize().extend(0.0).to_array(),
             params: [if self.encode_srgb { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0],
         };
-        gpu.queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
+        gpu.queue
+            .write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
 
         self.scratch_objects.clear();
         for draw in &self.frame.meshes {
@@ -553,16 +694,29 @@ impl Renderer {
                 color: draw.color.to_array(),
                 flags: draw.flags.to_array(),
             };
-            self.scratch_objects.extend_from_slice(bytemuck::bytes_of(&object));
-            self.scratch_objects.resize(self.scratch_objects.len().next_multiple_of(OBJECT_STRIDE as usize), 0);
+            self.scratch_objects
+                .extend_from_slice(bytemuck::bytes_of(&object));
+            self.scratch_objects.resize(
+                self.scratch_objects
+                    .len()
+                    .next_multiple_of(OBJECT_STRIDE as usize),
+                0,
+            );
         }
         if self.objects.write(gpu, &self.scratch_objects) {
-            self.object_group = Self::object_group(&gpu.device, &self.object_layout, &self.objects.buffer);
+            self.object_group =
+                Self::object_group(&gpu.device, &self.object_layout, &self.objects.buffer);
         }
-        self.lines.write(gpu, bytemuck::cast_slice(&self.frame.lines));
-        self.points.write(gpu, bytemuck::cast_slice(&self.frame.points));
+        self.lines
+            .write(gpu, bytemuck::cast_slice(&self.frame.lines));
+        self.points
+            .write(gpu, bytemuck::cast_slice(&self.frame.points));
 
-        let clear = if self.encode_srgb { self.clear_srgb } else { srgb_to_linear(self.clear_srgb) };
+        let clear = if self.encode_srgb {
+            self.clear_srgb
+        } else {
+            srgb_to_linear(self.clear_srgb)
+        };
         let targets = self.targets.as_ref().expect("targets were just ensured");
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         {
@@ -573,13 +727,21 @@ impl Renderer {
                     depth_slice: None,
                     resolve_target: Some(target),
                     ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color { r: clear.x as f64, g: clear.y as f64, b: clear.z as f64, a: 1.0 }),
+                        load: wgpu::LoadOp::Clear(wgpu::Color {
+                            r: clear.x as f64,
+                            g: clear.y as f64,
+                            b: clear.z as f64,
+                            a: 1.0,
+                        }),
                         store: wgpu::StoreOp::Discard,
                     },
                 })],
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                     view: &targets.depth,
-                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                    depth_ops: Some(wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(1.0),
+                        store: wgpu::StoreOp::Discard,
+                    }),
                     stencil_ops: None,
                 }),
                 timestamp_writes: None,
@@ -591,7 +753,11 @@ impl Renderer {
                 pass.set_pipeline(&self.mesh_pipeline);
                 for (i, draw) in self.frame.meshes.iter().enumerate() {
                     let mesh = &self.meshes[draw.mesh.0];
-                    pass.set_bind_group(1, &self.object_group, &[(i as u64 * OBJECT_STRIDE) as u32]);
+                    pass.set_bind_group(
+                        1,
+                        &self.object_group,
+                        &[(i as u64 * OBJECT_STRIDE) as u32],
+                    );
                     pass.set_vertex_buffer(0, mesh.vertices.slice(..));
                     pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                     pass.draw_indexed(0..mesh.index_count, 0, 0..1);
@@ -614,7 +780,13 @@ impl Renderer {
 }
 
 fn srgb_to_linear(c: Vec3) -> Vec3 {
-    let f = |x: f32| if x <= 0.04045 { x / 12.92 } else { ((x + 0.055) / 1.055).powf(2.4) };
+    let f = |x: f32| {
+        if x <= 0.04045 {
+            x / 12.92
+        } else {
+            ((x + 0.055) / 1.055).powf(2.4)
+        }
+    };
     Vec3::new(f(c.x), f(c.y), f(c.z))
 }
 

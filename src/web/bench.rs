@@ -6,7 +6,10 @@ use glam::{Mat4, Vec3};
 use wasm_bindgen::prelude::*;
 
 fn now_ms() -> f64 {
-    web_sys::window().and_then(|w| w.performance()).map(|p| p.now()).unwrap_or(0.0)
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map(|p| p.now())
+        .unwrap_or(0.0)
 }
 
 /// Times `iterations` runs of a hierarchy kernel over `joints` joints and returns milliseconds.
@@ -14,15 +17,24 @@ fn now_ms() -> f64 {
 #[wasm_bindgen(js_name = benchHierarchy)]
 pub fn bench_hierarchy(kernel: &str, joints: usize, iterations: usize) -> Result<f64, JsError> {
     if !(1..=1 << 20).contains(&joints) || !(1..=1 << 24).contains(&iterations) {
-        return Err(JsError::new("joints must be in [1, 2^20] and iterations in [1, 2^24]"));
+        return Err(JsError::new(
+            "joints must be in [1, 2^20] and iterations in [1, 2^24]",
+        ));
     }
-    let parents: Vec<i32> = (0..joints as i32).map(|i| if i == 0 { -1 } else { (i - 1) / 2 }).collect();
-    let local: Vec<Mat4> = (0..joints).map(|i| local_matrix(Vec3::new(0.0, 0.1, 0.0), Vec3::splat(i as f32 * 0.01))).collect();
+    let parents: Vec<i32> = (0..joints as i32)
+        .map(|i| if i == 0 { -1 } else { (i - 1) / 2 })
+        .collect();
+    let local: Vec<Mat4> = (0..joints)
+        .map(|i| local_matrix(Vec3::new(0.0, 0.1, 0.0), Vec3::splat(i as f32 * 0.01)))
+        .collect();
     let mut world = vec![Mat4::IDENTITY; joints];
     let start = now_ms();
     match kernel {
-        "copy_baseline" => (0..iterations).for_each(|_| world.copy_from_slice(std::hint::black_box(&local))),
-        "world_matrices" => (0..iterations).for_each(|_| world_matrices(std::hint::black_box(&parents), &local, &mut world)),
+        "copy_baseline" => {
+            (0..iterations).for_each(|_| world.copy_from_slice(std::hint::black_box(&local)))
+        }
+        "world_matrices" => (0..iterations)
+            .for_each(|_| world_matrices(std::hint::black_box(&parents), &local, &mut world)),
         "local_matrix_from_euler" => (0..iterations).for_each(|_| {
             for (i, l) in world.iter_mut().enumerate() {
                 *l = local_matrix(std::hint::black_box(Vec3::Y), Vec3::splat(i as f32));

@@ -7,7 +7,10 @@ use glam::Vec3;
 use wasm_bindgen::prelude::*;
 
 fn now_ms() -> f64 {
-    web_sys::window().and_then(|w| w.performance()).map(|p| p.now()).unwrap_or(0.0)
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map(|p| p.now())
+        .unwrap_or(0.0)
 }
 
 /// xorshift32, as in `benches/curves.rs`: uniform in `[0, 1)`.
@@ -32,7 +35,9 @@ impl XorShift {
 #[wasm_bindgen(js_name = benchCurves)]
 pub fn bench_curves(kernel: &str, samples: usize, iterations: usize) -> Result<f64, JsError> {
     if !(1..=1 << 22).contains(&samples) || !(1..=1 << 20).contains(&iterations) {
-        return Err(JsError::new("samples must be in [1, 2^22] and iterations in [1, 2^20]"));
+        return Err(JsError::new(
+            "samples must be in [1, 2^22] and iterations in [1, 2^20]",
+        ));
     }
     const KEYS: usize = 100;
     let mut rng = XorShift(0x2545_f491);
@@ -46,8 +51,12 @@ pub fn bench_curves(kernel: &str, samples: usize, iterations: usize) -> Result<f
     }
     let base = Track::new(times, values).map_err(|e| JsError::new(&e.to_string()))?;
     let (start, duration) = (base.start_sec(), base.duration_sec());
-    let increasing: Vec<f32> = (0..samples).map(|k| start + duration * k as f32 / samples as f32).collect();
-    let random: Vec<f32> = (0..samples).map(|_| start + duration * rng.next_f32()).collect();
+    let increasing: Vec<f32> = (0..samples)
+        .map(|k| start + duration * k as f32 / samples as f32)
+        .collect();
+    let random: Vec<f32> = (0..samples)
+        .map(|_| start + duration * rng.next_f32())
+        .collect();
     let (scheme, by_cursor) = match kernel {
         "copy_baseline" | "linear_cursor" => (Interpolation::Linear, true),
         "linear_binary_search" => (Interpolation::Linear, false),
@@ -55,7 +64,9 @@ pub fn bench_curves(kernel: &str, samples: usize, iterations: usize) -> Result<f
         "catmull_rom_binary_search" => (Interpolation::CATMULL_ROM, false),
         other => return Err(JsError::new(&format!("unknown kernel '{other}'"))),
     };
-    let track = base.with_interpolation(scheme).map_err(|e| JsError::new(&e.to_string()))?;
+    let track = base
+        .with_interpolation(scheme)
+        .map_err(|e| JsError::new(&e.to_string()))?;
     let mut out = vec![Vec3::ZERO; samples];
     let precomputed = {
         let mut p = vec![Vec3::ZERO; samples];

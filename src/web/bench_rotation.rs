@@ -7,12 +7,17 @@ use glam::{Quat, Vec3};
 use wasm_bindgen::prelude::*;
 
 fn now_ms() -> f64 {
-    web_sys::window().and_then(|w| w.performance()).map(|p| p.now()).unwrap_or(0.0)
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map(|p| p.now())
+        .unwrap_or(0.0)
 }
 
 fn check(size: usize, iterations: usize) -> Result<(), JsError> {
     if !(1..=1 << 22).contains(&size) || !(1..=1 << 24).contains(&iterations) {
-        return Err(JsError::new("size must be in [1, 2^22] and iterations in [1, 2^24]"));
+        return Err(JsError::new(
+            "size must be in [1, 2^22] and iterations in [1, 2^24]",
+        ));
     }
     Ok(())
 }
@@ -20,12 +25,19 @@ fn check(size: usize, iterations: usize) -> Result<(), JsError> {
 /// Times `iterations` passes of quaternion interpolation over `size` key pairs; milliseconds.
 /// `kernel` is "nlerp" (the baseline) or "slerp".
 #[wasm_bindgen(js_name = benchQuatInterpolation)]
-pub fn bench_quat_interpolation(kernel: &str, size: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_quat_interpolation(
+    kernel: &str,
+    size: usize,
+    iterations: usize,
+) -> Result<f64, JsError> {
     check(size, iterations)?;
     let keys: Vec<(Quat, Quat)> = (0..size)
         .map(|i| {
             let x = i as f32 * 0.001;
-            (Quat::from_euler(glam::EulerRot::XYZ, x, 0.3, -x), Quat::from_euler(glam::EulerRot::XYZ, 1.0 - x, x, 2.0))
+            (
+                Quat::from_euler(glam::EulerRot::XYZ, x, 0.3, -x),
+                Quat::from_euler(glam::EulerRot::XYZ, 1.0 - x, x, 2.0),
+            )
         })
         .collect();
     let mut out = vec![Quat::IDENTITY; size];
@@ -51,8 +63,13 @@ pub fn bench_quat_interpolation(kernel: &str, size: usize, iterations: usize) ->
 #[wasm_bindgen(js_name = benchRigidPoints)]
 pub fn bench_rigid_points(kernel: &str, size: usize, iterations: usize) -> Result<f64, JsError> {
     check(size, iterations)?;
-    let motion = DualQuat::from_rotation_translation(Quat::from_axis_angle(Vec3::new(0.3, 1.0, 0.2).normalize(), 1.1), Vec3::new(0.5, -1.0, 2.0));
-    let points: Vec<Vec3> = (0..size).map(|i| Vec3::new(i as f32 * 1e-3, (i % 97) as f32, -(i as f32).sqrt())).collect();
+    let motion = DualQuat::from_rotation_translation(
+        Quat::from_axis_angle(Vec3::new(0.3, 1.0, 0.2).normalize(), 1.1),
+        Vec3::new(0.5, -1.0, 2.0),
+    );
+    let points: Vec<Vec3> = (0..size)
+        .map(|i| Vec3::new(i as f32 * 1e-3, (i % 97) as f32, -(i as f32).sqrt()))
+        .collect();
     let mut out = vec![Vec3::ZERO; size];
     let start = now_ms();
     for _ in 0..iterations {

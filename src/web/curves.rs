@@ -6,7 +6,9 @@
 //! JavaScript never interpolates.
 
 use super::{finite, in_range, Viewer};
-use crate::curves::{self, ArcLengthTable, Ease, Interpolation, Sample, TimeWarp, Track, TrackError};
+use crate::curves::{
+    self, ArcLengthTable, Ease, Interpolation, Sample, TimeWarp, Track, TrackError,
+};
 use crate::exercises::{self, NotDone};
 use glam::{Mat4, Vec2, Vec3};
 use wasm_bindgen::prelude::*;
@@ -17,8 +19,11 @@ fn js(e: TrackError) -> JsError {
 
 /// Builds `Vec2` keys from `[x0, y0, x1, y1, …]`. An odd count is a mismatch in its own right.
 fn pairs(name: &str, xy: &[f32]) -> Result<Vec<Vec2>, JsError> {
-    if xy.len() % 2 != 0 {
-        return Err(JsError::new(&format!("{name} must hold (x, y) pairs, but it has {} numbers", xy.len())));
+    if !xy.len().is_multiple_of(2) {
+        return Err(JsError::new(&format!(
+            "{name} must hold (x, y) pairs, but it has {} numbers",
+            xy.len()
+        )));
     }
     Ok(xy.chunks_exact(2).map(|c| Vec2::new(c[0], c[1])).collect())
 }
@@ -96,7 +101,10 @@ impl KeyframesScene {
             Vec2::new(1.1, 1.9),
             Vec2::new(2.4, 0.6),
         ];
-        let track = Track::new(times, values).expect("valid default keys").with_interpolation(Interpolation::CATMULL_ROM).expect("valid tension");
+        let track = Track::new(times, values)
+            .expect("valid default keys")
+            .with_interpolation(Interpolation::CATMULL_ROM)
+            .expect("valid tension");
         let table = ArcLengthTable::new(&track, ARC_TABLE_SUBDIVISIONS);
         KeyframesScene {
             track,
@@ -122,14 +130,25 @@ impl KeyframesScene {
     pub fn set_keys(&mut self, times_sec: Vec<f32>, xy: Vec<f32>) -> Result<(), JsError> {
         let values = pairs("xy", &xy)?;
         let n = times_sec.len();
-        let keep_tangents = self.track.interpolation() == Interpolation::Hermite && n == self.track.key_count();
+        let keep_tangents =
+            self.track.interpolation() == Interpolation::Hermite && n == self.track.key_count();
         let track = if keep_tangents {
-            let (tin, tout) = (self.track.tangents_in().to_vec(), self.track.tangents_out().to_vec());
+            let (tin, tout) = (
+                self.track.tangents_in().to_vec(),
+                self.track.tangents_out().to_vec(),
+            );
             Track::new_hermite(times_sec, values, tin, tout).map_err(js)?
         } else {
             let scheme = scheme_from_name(&self.scheme_name, self.tension)?;
-            let auto = if scheme == Interpolation::Hermite { Interpolation::CATMULL_ROM } else { scheme };
-            let mut track = Track::new(times_sec, values).map_err(js)?.with_interpolation(auto).map_err(js)?;
+            let auto = if scheme == Interpolation::Hermite {
+                Interpolation::CATMULL_ROM
+            } else {
+                scheme
+            };
+            let mut track = Track::new(times_sec, values)
+                .map_err(js)?
+                .with_interpolation(auto)
+                .map_err(js)?;
             track.set_interpolation(scheme).map_err(js)?;
             track
         };
@@ -140,9 +159,22 @@ impl KeyframesScene {
     /// Sets every key's in and out tangents (`[x0, y0, x1, y1, …]`, metres per second) and switches
     /// to Hermite. Errors: not one tangent of each kind per key, or NaN.
     #[wasm_bindgen(js_name = setTangents)]
-    pub fn set_tangents(&mut self, tangents_in: Vec<f32>, tangents_out: Vec<f32>) -> Result<(), JsError> {
-        let (tin, tout) = (pairs("tangentsIn", &tangents_in)?, pairs("tangentsOut", &tangents_out)?);
-        let track = Track::new_hermite(self.track.times().to_vec(), self.track.values().to_vec(), tin, tout).map_err(js)?;
+    pub fn set_tangents(
+        &mut self,
+        tangents_in: Vec<f32>,
+        tangents_out: Vec<f32>,
+    ) -> Result<(), JsError> {
+        let (tin, tout) = (
+            pairs("tangentsIn", &tangents_in)?,
+            pairs("tangentsOut", &tangents_out)?,
+        );
+        let track = Track::new_hermite(
+            self.track.times().to_vec(),
+            self.track.values().to_vec(),
+            tin,
+            tout,
+        )
+        .map_err(js)?;
         self.scheme_name = "hermite".into();
         self.install(track);
         Ok(())
@@ -150,9 +182,18 @@ impl KeyframesScene {
 
     /// Sets key `index`'s in and out tangents (metres per second) and switches to Hermite.
     #[wasm_bindgen(js_name = setKeyTangent)]
-    pub fn set_key_tangent(&mut self, index: usize, in_x: f32, in_y: f32, out_x: f32, out_y: f32) -> Result<(), JsError> {
+    pub fn set_key_tangent(
+        &mut self,
+        index: usize,
+        in_x: f32,
+        in_y: f32,
+        out_x: f32,
+        out_y: f32,
+    ) -> Result<(), JsError> {
         let mut track = self.track.clone();
-        track.set_tangents(index, Vec2::new(in_x, in_y), Vec2::new(out_x, out_y)).map_err(js)?;
+        track
+            .set_tangents(index, Vec2::new(in_x, in_y), Vec2::new(out_x, out_y))
+            .map_err(js)?;
         self.scheme_name = "hermite".into();
         self.install(track);
         Ok(())
@@ -179,7 +220,9 @@ impl KeyframesScene {
         self.tension = tension;
         if self.scheme_name == "cardinal" {
             let mut track = self.track.clone();
-            track.set_interpolation(Interpolation::Cardinal { tension }).map_err(js)?;
+            track
+                .set_interpolation(Interpolation::Cardinal { tension })
+                .map_err(js)?;
             self.install(track);
         }
         Ok(())
@@ -202,7 +245,9 @@ impl KeyframesScene {
     #[wasm_bindgen(js_name = setGhostCount)]
     pub fn set_ghost_count(&mut self, count: usize) -> Result<(), JsError> {
         if !(2..=200).contains(&count) {
-            return Err(JsError::new(&format!("the ghost count must be between 2 and 200, got {count}")));
+            return Err(JsError::new(&format!(
+                "the ghost count must be between 2 and 200, got {count}"
+            )));
         }
         self.ghost_count = count;
         Ok(())
@@ -222,12 +267,22 @@ impl KeyframesScene {
 
     /// Keys as `[t0, x0, y0, t1, x1, y1, …]`.
     pub fn keys(&self) -> Vec<f32> {
-        self.track.times().iter().zip(self.track.values()).flat_map(|(t, p)| [*t, p.x, p.y]).collect()
+        self.track
+            .times()
+            .iter()
+            .zip(self.track.values())
+            .flat_map(|(t, p)| [*t, p.x, p.y])
+            .collect()
     }
 
     /// Tangents as `[in_x0, in_y0, out_x0, out_y0, …]`, metres per second.
     pub fn tangents(&self) -> Vec<f32> {
-        self.track.tangents_in().iter().zip(self.track.tangents_out()).flat_map(|(a, b)| [a.x, a.y, b.x, b.y]).collect()
+        self.track
+            .tangents_in()
+            .iter()
+            .zip(self.track.tangents_out())
+            .flat_map(|(a, b)| [a.x, a.y, b.x, b.y])
+            .collect()
     }
 
     /// Seconds a tangent handle stands for (handle end = key + d · handleSec).
@@ -247,7 +302,8 @@ impl KeyframesScene {
     pub fn sample_path(&self, samples: usize) -> Result<Vec<f32>, JsError> {
         check_samples(samples)?;
         let mut out = vec![Vec2::ZERO; samples];
-        self.track.positions_evenly(self.track.start_sec(), self.track.end_sec(), &mut out);
+        self.track
+            .positions_evenly(self.track.start_sec(), self.track.end_sec(), &mut out);
         Ok(out.iter().flat_map(|p| [p.x, p.y]).collect())
     }
 
@@ -279,7 +335,12 @@ impl KeyframesScene {
             let keyed = self.keyed_motion(tau);
             let arc = self.arc_motion(tau);
             let shown = if self.arc_length { arc } else { keyed };
-            out.extend_from_slice(&[tau, keyed.velocity.length(), arc.velocity.length(), shown.acceleration.length()]);
+            out.extend_from_slice(&[
+                tau,
+                keyed.velocity.length(),
+                arc.velocity.length(),
+                shown.acceleration.length(),
+            ]);
         }
         Ok(out)
     }
@@ -289,7 +350,11 @@ impl KeyframesScene {
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let time_sec = finite("time", time_sec)?;
         let duration = self.track.duration_sec();
-        let tau = if duration > 0.0 { time_sec.rem_euclid(duration) } else { 0.0 };
+        let tau = if duration > 0.0 {
+            time_sec.rem_euclid(duration)
+        } else {
+            0.0
+        };
         let mut note = String::new();
         let ball;
         self.path.clear();
@@ -318,7 +383,8 @@ impl KeyframesScene {
             };
         } else {
             let mut out = [Vec2::ZERO; PATH_SAMPLES];
-            self.track.positions_evenly(self.track.start_sec(), self.track.end_sec(), &mut out);
+            self.track
+                .positions_evenly(self.track.start_sec(), self.track.end_sec(), &mut out);
             self.path.extend(out.iter().map(|p| p.extend(0.0)));
             self.fill_ghosts();
             ball = self.motion(tau).position;
@@ -334,13 +400,25 @@ impl KeyframesScene {
             frame.point(p.extend(0.0), 0.07, KEY_COLOR);
             if self.track.interpolation() == Interpolation::Hermite {
                 let (a, b) = (self.track.tangents_in()[i], self.track.tangents_out()[i]);
-                frame.line((*p - a * HANDLE_SEC).extend(0.0), p.extend(0.0), TANGENT_COLOR);
-                frame.line(p.extend(0.0), (*p + b * HANDLE_SEC).extend(0.0), TANGENT_COLOR);
+                frame.line(
+                    (*p - a * HANDLE_SEC).extend(0.0),
+                    p.extend(0.0),
+                    TANGENT_COLOR,
+                );
+                frame.line(
+                    p.extend(0.0),
+                    (*p + b * HANDLE_SEC).extend(0.0),
+                    TANGENT_COLOR,
+                );
             }
             // A thin stem to the ground makes the plane's depth readable.
             frame.line(Vec3::new(p.x, 0.0, 0.0), p.extend(0.0), Vec3::splat(0.75));
         }
-        frame.mesh(viewer.renderer.sphere, Mat4::from_translation(ball.extend(0.0)) * Mat4::from_scale(Vec3::splat(0.16)), BALL_COLOR);
+        frame.mesh(
+            viewer.renderer.sphere,
+            Mat4::from_translation(ball.extend(0.0)) * Mat4::from_scale(Vec3::splat(0.16)),
+            BALL_COLOR,
+        );
         viewer.present()?;
         Ok(note)
     }
@@ -356,7 +434,9 @@ fn check_samples(samples: usize) -> Result<(), JsError> {
     if (2..=10_000).contains(&samples) {
         Ok(())
     } else {
-        Err(JsError::new(&format!("samples must be between 2 and 10000, got {samples}")))
+        Err(JsError::new(&format!(
+            "samples must be between 2 and 10000, got {samples}"
+        )))
     }
 }
 
@@ -372,7 +452,8 @@ impl KeyframesScene {
 
     /// The keyed motion with the ease, at `tau` seconds after the first key.
     fn keyed_motion(&self, tau: f32) -> Sample<Vec2> {
-        self.track.evaluate_warped(&self.warp(), self.track.start_sec() + tau)
+        self.track
+            .evaluate_warped(&self.warp(), self.track.start_sec() + tau)
     }
 
     /// The same path at constant speed (times the ease): `s(τ) = L · (w(τ) − t0) / T`.
@@ -386,8 +467,16 @@ impl KeyframesScene {
         let velocity = (b - a) / (hi - lo);
         let v_lo = (p - a) / (tau - lo).max(1e-9);
         let v_hi = (b - p) / (hi - tau).max(1e-9);
-        let acceleration = if hi > tau && tau > lo { (v_hi - v_lo) / ((hi - lo) * 0.5) } else { Vec2::ZERO };
-        Sample { position: p, velocity, acceleration }
+        let acceleration = if hi > tau && tau > lo {
+            (v_hi - v_lo) / ((hi - lo) * 0.5)
+        } else {
+            Vec2::ZERO
+        };
+        Sample {
+            position: p,
+            velocity,
+            acceleration,
+        }
     }
 
     fn arc_position(&self, tau: f32) -> Vec2 {
@@ -407,7 +496,10 @@ impl KeyframesScene {
 
     fn motion(&self, tau: f32) -> Sample<Vec2> {
         if self.arc_length {
-            Sample { position: self.arc_position(tau), ..Default::default() }
+            Sample {
+                position: self.arc_position(tau),
+                ..Default::default()
+            }
         } else {
             self.keyed_motion(tau)
         }
@@ -430,7 +522,8 @@ impl KeyframesScene {
     fn prepare_student_tangents(&mut self, missing: &mut Vec<&'static str>) {
         let n = self.track.key_count();
         self.student_tangents.clear();
-        self.student_tangents.extend_from_slice(self.track.tangents_out());
+        self.student_tangents
+            .extend_from_slice(self.track.tangents_out());
         if self.scheme_name != "cardinal" {
             return;
         }
@@ -462,9 +555,18 @@ impl KeyframesScene {
         let n = times.len();
         let cubic = matches!(
             self.track.interpolation(),
-            Interpolation::Hermite | Interpolation::Cardinal { .. } | Interpolation::Natural | Interpolation::Centripetal
+            Interpolation::Hermite
+                | Interpolation::Cardinal { .. }
+                | Interpolation::Natural
+                | Interpolation::Centripetal
         );
-        if n < 2 || !(cubic || matches!(self.track.interpolation(), Interpolation::Step | Interpolation::Linear)) {
+        if n < 2
+            || !(cubic
+                || matches!(
+                    self.track.interpolation(),
+                    Interpolation::Step | Interpolation::Linear
+                ))
+        {
             return self.track.position(t);
         }
         let t = t.clamp(times[0], times[n - 1]);
@@ -489,7 +591,11 @@ impl KeyframesScene {
         });
         let d0 = self.student_tangents[i];
         // The in tangent of the next key: equal to its out tangent except for a broken Hermite key.
-        let d1 = if self.scheme_name == "cardinal" { self.student_tangents[i + 1] } else { self.track.tangents_in()[i + 1] };
+        let d1 = if self.scheme_name == "cardinal" {
+            self.student_tangents[i + 1]
+        } else {
+            self.track.tangents_in()[i + 1]
+        };
         values[i] * h00 + d0 * (h * h10) + values[i + 1] * h01 + d1 * (h * h11)
     }
 
@@ -527,7 +633,13 @@ pub struct LagrangeScene {
 impl LagrangeScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> LagrangeScene {
-        let mut scene = LagrangeScene { keys: 10, show_spline: true, base: Vec::new(), more: Vec::new(), spline: Vec::new() };
+        let mut scene = LagrangeScene {
+            keys: 10,
+            show_spline: true,
+            base: Vec::new(),
+            more: Vec::new(),
+            spline: Vec::new(),
+        };
         scene.rebuild().expect("valid default keys");
         scene
     }
@@ -567,7 +679,15 @@ impl LagrangeScene {
         for (t, y) in b.0.iter().zip(&b.1) {
             let extra = !a.0.contains(t);
             let p = self.place(*t, *y);
-            frame.point(p, if extra { 0.08 } else { 0.06 }, if extra { Vec3::new(0.85, 0.15, 0.15) } else { KEY_COLOR });
+            frame.point(
+                p,
+                if extra { 0.08 } else { 0.06 },
+                if extra {
+                    Vec3::new(0.85, 0.15, 0.15)
+                } else {
+                    KEY_COLOR
+                },
+            );
         }
         viewer.present()
     }
@@ -579,10 +699,13 @@ impl Default for LagrangeScene {
     }
 }
 
+/// Key times and values of one Lagrange curve.
+type KeySet = (Vec<f32>, Vec<f32>);
+
 impl LagrangeScene {
     /// One curve-editor channel y(t): keys at t = 0, 1, …, n−1 on a gentle wave, and the same
     /// keys plus two more, a quarter and three quarters of the way, slightly off the wave.
-    fn key_sets(&self) -> ((Vec<f32>, Vec<f32>), (Vec<f32>, Vec<f32>)) {
+    fn key_sets(&self) -> (KeySet, KeySet) {
         let n = self.keys;
         let wave = |t: f32| 0.9 + 0.55 * (0.55 * t).sin() + 0.12 * (1.7 * t).cos();
         let times: Vec<f32> = (0..n).map(|i| i as f32).collect();
@@ -604,13 +727,26 @@ impl LagrangeScene {
 
     fn rebuild(&mut self) -> Result<(), JsError> {
         let ((ta, ya), (tb, yb)) = self.key_sets();
-        let a = Track::new(ta, ya).map_err(js)?.with_interpolation(Interpolation::Lagrange).map_err(js)?;
-        let b = Track::new(tb, yb).map_err(js)?.with_interpolation(Interpolation::Lagrange).map_err(js)?;
-        let spline = b.clone().with_interpolation(Interpolation::CATMULL_ROM).map_err(js)?;
+        let a = Track::new(ta, ya)
+            .map_err(js)?
+            .with_interpolation(Interpolation::Lagrange)
+            .map_err(js)?;
+        let b = Track::new(tb, yb)
+            .map_err(js)?
+            .with_interpolation(Interpolation::Lagrange)
+            .map_err(js)?;
+        let spline = b
+            .clone()
+            .with_interpolation(Interpolation::CATMULL_ROM)
+            .map_err(js)?;
         const SAMPLES: usize = 400;
         // The polynomial can shoot far off between keys: clip what we draw to a readable band.
         let clip = |y: f32| y.clamp(-0.8, 3.4);
-        let mut lines = [std::mem::take(&mut self.base), std::mem::take(&mut self.more), std::mem::take(&mut self.spline)];
+        let mut lines = [
+            std::mem::take(&mut self.base),
+            std::mem::take(&mut self.more),
+            std::mem::take(&mut self.spline),
+        ];
         for (track, out) in [&a, &b, &spline].into_iter().zip(&mut lines) {
             out.clear();
             let (t0, t1) = (track.start_sec(), track.end_sec());

@@ -31,7 +31,11 @@ pub fn build_info() -> String {
     format!(
         "inbetween {}{}",
         env!("CARGO_PKG_VERSION"),
-        if cfg!(feature = "solutions") { " (solutions build)" } else { "" }
+        if cfg!(feature = "solutions") {
+            " (solutions build)"
+        } else {
+            ""
+        }
     )
 }
 
@@ -40,7 +44,9 @@ pub(crate) fn finite(name: &str, value: f32) -> Result<f32, JsError> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(JsError::new(&format!("{name} must be a finite number, got {value}")))
+        Err(JsError::new(&format!(
+            "{name} must be a finite number, got {value}"
+        )))
     }
 }
 
@@ -50,6 +56,8 @@ pub(crate) fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, 
     if (lo..=hi).contains(&value) {
         Ok(value)
     } else {
-        Err(JsError::new(&format!("{name} must lie in [{lo}, {hi}], got {value}")))
+        Err(JsError::new(&format!(
+            "{name} must lie in [{lo}, {hi}], got {value}"
+        )))
     }
 }

@@ -19,8 +19,11 @@ enum Method {
     Screw,
 }
 
-const METHODS: [(Method, [f32; 3]); 3] =
-    [(Method::LerpSlerp, [0.9, 0.55, 0.1]), (Method::DualQuatNlerp, [0.2, 0.65, 0.35]), (Method::Screw, [0.2, 0.45, 0.9])];
+const METHODS: [(Method, [f32; 3]); 3] = [
+    (Method::LerpSlerp, [0.9, 0.55, 0.1]),
+    (Method::DualQuatNlerp, [0.2, 0.65, 0.35]),
+    (Method::Screw, [0.2, 0.45, 0.9]),
+];
 
 /// Figure 1: a frame moving from key A to key B by translation lerp + slerp (orange), by dual
 /// quaternion linear blending (green) and by screw interpolation (blue), with the paths of its
@@ -39,8 +42,17 @@ impl RigidScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> RigidScene {
         let start = DualQuat::from_rotation_translation(Quat::IDENTITY, Vec3::new(-1.5, 0.6, 0.0));
-        let end = DualQuat::from_rotation_translation(Quat::from_axis_angle(Vec3::new(0.2, 1.0, 0.3).normalize(), 150.0 * DEG), Vec3::new(1.5, 1.4, 0.3));
-        RigidScene { start, end, screw: ScrewInterpolator::new(start, end), use_exercise: false, path: Vec::with_capacity(65) }
+        let end = DualQuat::from_rotation_translation(
+            Quat::from_axis_angle(Vec3::new(0.2, 1.0, 0.3).normalize(), 150.0 * DEG),
+            Vec3::new(1.5, 1.4, 0.3),
+        );
+        RigidScene {
+            start,
+            end,
+            screw: ScrewInterpolator::new(start, end),
+            use_exercise: false,
+            path: Vec::with_capacity(65),
+        }
     }
 
     fn set_end_dq(&mut self, end: DualQuat) {
@@ -51,8 +63,19 @@ impl RigidScene {
     /// Sets key B: rotation by `angle_deg` about the axis `(ax, ay, az)` (any non-zero
     /// direction), then translation `(tx, ty, tz)`.
     #[wasm_bindgen(js_name = setEnd)]
-    pub fn set_end(&mut self, ax: f32, ay: f32, az: f32, angle_deg: f32, tx: f32, ty: f32, tz: f32) -> Result<(), JsError> {
-        let r = AxisAngle::new(Vec3::new(ax, ay, az), finite("angle", angle_deg)? * DEG).map_err(js_error)?;
+    #[allow(clippy::too_many_arguments)] // scalars from JavaScript: no tuple types cross the boundary
+    pub fn set_end(
+        &mut self,
+        ax: f32,
+        ay: f32,
+        az: f32,
+        angle_deg: f32,
+        tx: f32,
+        ty: f32,
+        tz: f32,
+    ) -> Result<(), JsError> {
+        let r = AxisAngle::new(Vec3::new(ax, ay, az), finite("angle", angle_deg)? * DEG)
+            .map_err(js_error)?;
         let t = Vec3::new(finite("tx", tx)?, finite("ty", ty)?, finite("tz", tz)?);
         self.set_end_dq(DualQuat::from_rotation_translation(r.to_quat(), t));
         Ok(())
@@ -61,7 +84,17 @@ impl RigidScene {
     /// Sets key B from a quaternion `(x, y, z, w)` (normalised; zero or NaN rejected) and a
     /// translation.
     #[wasm_bindgen(js_name = setEndQuat)]
-    pub fn set_end_quat(&mut self, x: f32, y: f32, z: f32, w: f32, tx: f32, ty: f32, tz: f32) -> Result<(), JsError> {
+    #[allow(clippy::too_many_arguments)] // scalars from JavaScript: no tuple types cross the boundary
+    pub fn set_end_quat(
+        &mut self,
+        x: f32,
+        y: f32,
+        z: f32,
+        w: f32,
+        tx: f32,
+        ty: f32,
+        tz: f32,
+    ) -> Result<(), JsError> {
         let q = check_quat(Quat::from_xyzw(x, y, z, w)).map_err(js_error)?;
         let t = Vec3::new(finite("tx", tx)?, finite("ty", ty)?, finite("tz", tz)?);
         self.set_end_dq(DualQuat::from_rotation_translation(q, t));
@@ -103,7 +136,11 @@ impl RigidScene {
         // The screw axis: the line the relative motion B A⁻¹ turns about and slides along.
         let axis = (self.end * self.start.conjugate()).screw_axis();
         let purple = Vec3::new(0.55, 0.2, 0.75);
-        frame.line(axis.point - axis.direction * 3.0, axis.point + axis.direction * 3.0, purple);
+        frame.line(
+            axis.point - axis.direction * 3.0,
+            axis.point + axis.direction * 3.0,
+            purple,
+        );
         frame.point(axis.point, 0.05, purple);
         // The keys, as thin axes.
         frame.axes(self.start.to_mat4(), 0.5);
@@ -113,13 +150,28 @@ impl RigidScene {
             for local in [Vec3::ZERO, TIP] {
                 self.path.clear();
                 for k in 0..=64 {
-                    self.path.push(self.point(method, k as f32 / 64.0, local, student));
+                    self.path
+                        .push(self.point(method, k as f32 / 64.0, local, student));
                 }
-                frame.polyline(&self.path, if local == Vec3::ZERO { color * 0.6 } else { color });
+                frame.polyline(
+                    &self.path,
+                    if local == Vec3::ZERO {
+                        color * 0.6
+                    } else {
+                        color
+                    },
+                );
             }
             let m = self.motion(method, t, student);
             let (r, p) = m.to_rotation_translation();
-            draw_plane(frame, viewer.renderer.cube, p, Mat3::from_quat(r), color, 1.0);
+            draw_plane(
+                frame,
+                viewer.renderer.cube,
+                p,
+                Mat3::from_quat(r),
+                color,
+                1.0,
+            );
             frame.axes(m.to_mat4(), 0.45);
         }
         viewer.present()?;
@@ -171,7 +223,10 @@ impl RigidScene {
         if student {
             let mine = |dq: DualQuat| {
                 let (r, t) = dq.to_rotation_translation();
-                exercises::rotations::dual_quat_apply(r, t, Vec3::ZERO).ok().map(|(q, _)| q).filter(|q| q.real.is_finite() && q.dual.is_finite() && q.real.length() > 1e-6)
+                exercises::rotations::dual_quat_apply(r, t, Vec3::ZERO)
+                    .ok()
+                    .map(|(q, _)| q)
+                    .filter(|q| q.real.is_finite() && q.dual.is_finite() && q.real.length() > 1e-6)
             };
             if let (Some(a), Some(b)) = (mine(self.start), mine(self.end)) {
                 return (a, b);
@@ -211,7 +266,10 @@ impl RigidScene {
 
 fn mat4_cols(values: &[f32]) -> Result<Mat4, JsError> {
     if values.len() != 16 {
-        return Err(JsError::new(&format!("a 4×4 matrix needs 16 numbers (column-major), got {}", values.len())));
+        return Err(JsError::new(&format!(
+            "a 4×4 matrix needs 16 numbers (column-major), got {}",
+            values.len()
+        )));
     }
     Ok(Mat4::from_cols_slice(values))
 }
@@ -220,13 +278,21 @@ fn check_samples(samples: usize) -> Result<(), JsError> {
     if (2..=10_000).contains(&samples) {
         Ok(())
     } else {
-        Err(JsError::new(&format!("samples must be between 2 and 10000, got {samples}")))
+        Err(JsError::new(&format!(
+            "samples must be between 2 and 10000, got {samples}"
+        )))
     }
 }
 
 /// The 12 edges of the cube `[-1, 1]³` transformed by `m`.
 fn wire_cube(frame: &mut crate::render::Frame, m: Mat4, color: Vec3) {
-    let c = |i: u32| m.transform_point3(Vec3::new(if i & 1 == 0 { -1.0 } else { 1.0 }, if i & 2 == 0 { -1.0 } else { 1.0 }, if i & 4 == 0 { -1.0 } else { 1.0 }));
+    let c = |i: u32| {
+        m.transform_point3(Vec3::new(
+            if i & 1 == 0 { -1.0 } else { 1.0 },
+            if i & 2 == 0 { -1.0 } else { 1.0 },
+            if i & 4 == 0 { -1.0 } else { 1.0 },
+        ))
+    };
     for i in 0..8u32 {
         for bit in [1, 2, 4] {
             if i & bit == 0 {
@@ -256,20 +322,44 @@ impl AffineScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> AffineScene {
         let a = Mat4::from_translation(Vec3::new(-0.6, 0.7, 0.0));
-        let mut scene = AffineScene { a, b: a, key_a: AffineKey::from_mat4(a).expect("identity key"), key_b: AffineKey::from_mat4(a).expect("identity key"), use_exercise: false, note: String::new(), path: Vec::with_capacity(65) };
-        scene.set_key_b(160.0, 1.6, 0.6, 1.0, 0.6).expect("the default key is invertible");
+        let mut scene = AffineScene {
+            a,
+            b: a,
+            key_a: AffineKey::from_mat4(a).expect("identity key"),
+            key_b: AffineKey::from_mat4(a).expect("identity key"),
+            use_exercise: false,
+            note: String::new(),
+            path: Vec::with_capacity(65),
+        };
+        scene
+            .set_key_b(160.0, 1.6, 0.6, 1.0, 0.6)
+            .expect("the default key is invertible");
         scene
     }
 
     /// Key B: rotation by `angle_deg` about y, after a scale `(sx, sy, sz)` and a shear of x by y.
     /// A zero scale flattens the key (singular): that is rejected.
     #[wasm_bindgen(js_name = setKeyB)]
-    pub fn set_key_b(&mut self, angle_deg: f32, sx: f32, sy: f32, sz: f32, shear: f32) -> Result<(), JsError> {
+    pub fn set_key_b(
+        &mut self,
+        angle_deg: f32,
+        sx: f32,
+        sy: f32,
+        sz: f32,
+        shear: f32,
+    ) -> Result<(), JsError> {
         let angle = finite("angle", angle_deg)? * DEG;
         let scale = Vec3::new(finite("sx", sx)?, finite("sy", sy)?, finite("sz", sz)?);
-        let shear = Mat3::from_cols(Vec3::X, Vec3::new(finite("shear", shear)?, 1.0, 0.0), Vec3::Z);
+        let shear = Mat3::from_cols(
+            Vec3::X,
+            Vec3::new(finite("shear", shear)?, 1.0, 0.0),
+            Vec3::Z,
+        );
         let linear = Mat3::from_rotation_y(angle) * shear * Mat3::from_diagonal(scale);
-        self.set_key(1, Mat4::from_translation(Vec3::new(0.6, 1.1, 0.0)) * Mat4::from_mat3(linear))
+        self.set_key(
+            1,
+            Mat4::from_translation(Vec3::new(0.6, 1.1, 0.0)) * Mat4::from_mat3(linear),
+        )
     }
 
     /// Sets key `which` (0 = A, 1 = B) from a 4×4 affine matrix (16 numbers, column-major).
@@ -295,8 +385,10 @@ impl AffineScene {
         let mut out = Vec::with_capacity(samples * 3);
         for k in 0..samples {
             let t = k as f32 / (samples - 1) as f32;
-            let naive = Mat3::from_mat4(rotation::affine_lerp_naive(self.a, self.b, t)).determinant();
-            let polar = Mat3::from_mat4(self.key_a.interpolate(&self.key_b, t).to_mat4()).determinant();
+            let naive =
+                Mat3::from_mat4(rotation::affine_lerp_naive(self.a, self.b, t)).determinant();
+            let polar =
+                Mat3::from_mat4(self.key_a.interpolate(&self.key_b, t).to_mat4()).determinant();
             out.extend_from_slice(&[t, naive, polar]);
         }
         Ok(out)
@@ -309,19 +401,33 @@ impl AffineScene {
         frame.grid(12, 0.5);
         let corner = Vec3::splat(1.0);
         let size = Mat4::from_scale(Vec3::splat(HALF));
-        for (offset, color, naive) in [(-1.8, Vec3::new(0.85, 0.3, 0.25), true), (1.8, Vec3::new(0.2, 0.45, 0.9), false)] {
+        for (offset, color, naive) in [
+            (-1.8, Vec3::new(0.85, 0.3, 0.25), true),
+            (1.8, Vec3::new(0.2, 0.45, 0.9), false),
+        ] {
             let shift = Mat4::from_translation(Vec3::new(offset, 0.0, 0.0));
-            let at = |s: f32| if naive { rotation::affine_lerp_naive(self.a, self.b, s) } else { self.key_a.interpolate(&self.key_b, s).to_mat4() };
+            let at = |s: f32| {
+                if naive {
+                    rotation::affine_lerp_naive(self.a, self.b, s)
+                } else {
+                    self.key_a.interpolate(&self.key_b, s).to_mat4()
+                }
+            };
             wire_cube(frame, shift * self.a * size, Vec3::splat(0.55));
             wire_cube(frame, shift * self.b * size, Vec3::splat(0.25));
             self.path.clear();
             for k in 0..=64 {
-                self.path.push((shift * at(k as f32 / 64.0) * size).transform_point3(corner));
+                self.path
+                    .push((shift * at(k as f32 / 64.0) * size).transform_point3(corner));
             }
             frame.polyline(&self.path, color * 0.8);
             let m = shift * at(t);
             frame.mesh(viewer.renderer.cube, m * size, color);
-            frame.point((m * size).transform_point3(corner), 0.045, Vec3::new(0.95, 0.85, 0.2));
+            frame.point(
+                (m * size).transform_point3(corner),
+                0.045,
+                Vec3::new(0.95, 0.85, 0.2),
+            );
             frame.axes(m, 0.6);
         }
         viewer.present()?;
@@ -338,7 +444,9 @@ impl Default for AffineScene {
 impl AffineScene {
     fn set_key(&mut self, which: u32, m: Mat4) -> Result<(), JsError> {
         if which > 1 {
-            return Err(JsError::new(&format!("key must be 0 (A) or 1 (B), got {which}")));
+            return Err(JsError::new(&format!(
+                "key must be 0 (A) or 1 (B), got {which}"
+            )));
         }
         // The core validates (finite, affine, invertible, no mirror) and splits M = R D.
         let mut key = AffineKey::from_mat4(m).map_err(js_error)?;
@@ -375,7 +483,12 @@ fn student_polar(m: Mat3) -> Result<Option<(Mat3, u32)>, NotDone> {
         if !next.is_finite() {
             return Ok(None);
         }
-        let change = (next - r).to_cols_array().iter().map(|x| x * x).sum::<f32>().sqrt();
+        let change = (next - r)
+            .to_cols_array()
+            .iter()
+            .map(|x| x * x)
+            .sum::<f32>()
+            .sqrt();
         r = next;
         if change <= 1e-5 {
             return Ok(Some((r, iteration)));

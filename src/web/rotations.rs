@@ -3,11 +3,11 @@
 
 use super::{finite, in_range, Viewer};
 use crate::exercises::{self, NotDone};
-use crate::rotation::{
-    self, check_quat, check_rotation_mat3, euler_lerp, mat3_from_quat, mat3_lerp_report, nlerp_arc, slerp_arc, Arc,
-    AxisAngle, EulerAngles, EulerOrder, RotationError,
-};
 use crate::render::MeshId;
+use crate::rotation::{
+    self, check_quat, check_rotation_mat3, euler_lerp, mat3_from_quat, mat3_lerp_report, nlerp_arc,
+    slerp_arc, Arc, AxisAngle, EulerAngles, EulerOrder, RotationError,
+};
 use glam::{Mat3, Mat4, Quat, Vec3};
 use wasm_bindgen::prelude::*;
 
@@ -19,22 +19,49 @@ pub(crate) fn js_error(e: RotationError) -> JsError {
 
 /// The little aeroplane every figure turns: body, wings and a tail fin, so that any orientation
 /// (and any shear) is easy to read. Drawn with `linear` (any 3×3, not only rotations) at `at`.
-pub(crate) fn draw_plane(frame: &mut crate::render::Frame, cube: MeshId, at: Vec3, linear: Mat3, color: Vec3, size: f32) {
-    let place = Mat4::from_translation(at) * Mat4::from_mat3(linear) * Mat4::from_scale(Vec3::splat(size));
+pub(crate) fn draw_plane(
+    frame: &mut crate::render::Frame,
+    cube: MeshId,
+    at: Vec3,
+    linear: Mat3,
+    color: Vec3,
+    size: f32,
+) {
+    let place =
+        Mat4::from_translation(at) * Mat4::from_mat3(linear) * Mat4::from_scale(Vec3::splat(size));
     let parts = [
         (Vec3::ZERO, Vec3::new(0.5, 0.09, 0.11), color),
-        (Vec3::new(0.05, 0.0, 0.0), Vec3::new(0.13, 0.025, 0.5), color * 0.8),
-        (Vec3::new(-0.42, 0.14, 0.0), Vec3::new(0.07, 0.14, 0.02), Vec3::new(0.85, 0.2, 0.2)),
-        (Vec3::new(0.5, 0.0, 0.0), Vec3::new(0.06, 0.06, 0.06), Vec3::new(0.95, 0.85, 0.2)),
+        (
+            Vec3::new(0.05, 0.0, 0.0),
+            Vec3::new(0.13, 0.025, 0.5),
+            color * 0.8,
+        ),
+        (
+            Vec3::new(-0.42, 0.14, 0.0),
+            Vec3::new(0.07, 0.14, 0.02),
+            Vec3::new(0.85, 0.2, 0.2),
+        ),
+        (
+            Vec3::new(0.5, 0.0, 0.0),
+            Vec3::new(0.06, 0.06, 0.06),
+            Vec3::new(0.95, 0.85, 0.2),
+        ),
     ];
     for (center, half, c) in parts {
-        frame.mesh(cube, place * Mat4::from_translation(center) * Mat4::from_scale(half), c);
+        frame.mesh(
+            cube,
+            place * Mat4::from_translation(center) * Mat4::from_scale(half),
+            c,
+        );
     }
 }
 
 fn mat3_cols(values: &[f32]) -> Result<Mat3, JsError> {
     if values.len() != 9 {
-        return Err(JsError::new(&format!("a 3×3 matrix needs 9 numbers (column-major), got {}", values.len())));
+        return Err(JsError::new(&format!(
+            "a 3×3 matrix needs 9 numbers (column-major), got {}",
+            values.len()
+        )));
     }
     Ok(Mat3::from_cols_slice(values))
 }
@@ -81,7 +108,10 @@ impl InterpolationScene {
             use_exercise: false,
             path: Vec::with_capacity(65),
         };
-        scene.set_keys(Vec3::new(-20.0, 10.0, 0.0) * DEG, Vec3::new(150.0, 20.0, 120.0) * DEG);
+        scene.set_keys(
+            Vec3::new(-20.0, 10.0, 0.0) * DEG,
+            Vec3::new(150.0, 20.0, 120.0) * DEG,
+        );
         scene
     }
 
@@ -94,9 +124,25 @@ impl InterpolationScene {
 
     /// Sets both keys as intrinsic X-Y′-Z″ Euler angles, in degrees.
     #[wasm_bindgen(js_name = setKeysEulerDeg)]
-    pub fn set_keys_euler_deg(&mut self, ax: f32, ay: f32, az: f32, bx: f32, by: f32, bz: f32) -> Result<(), JsError> {
-        let a = Vec3::new(finite("start x", ax)?, finite("start y", ay)?, finite("start z", az)?);
-        let b = Vec3::new(finite("end x", bx)?, finite("end y", by)?, finite("end z", bz)?);
+    pub fn set_keys_euler_deg(
+        &mut self,
+        ax: f32,
+        ay: f32,
+        az: f32,
+        bx: f32,
+        by: f32,
+        bz: f32,
+    ) -> Result<(), JsError> {
+        let a = Vec3::new(
+            finite("start x", ax)?,
+            finite("start y", ay)?,
+            finite("start z", az)?,
+        );
+        let b = Vec3::new(
+            finite("end x", bx)?,
+            finite("end y", by)?,
+            finite("end z", bz)?,
+        );
         self.set_keys(a * DEG, b * DEG);
         Ok(())
     }
@@ -177,7 +223,10 @@ impl InterpolationScene {
     #[wasm_bindgen(js_name = sampleDeterminant)]
     pub fn sample_determinant(&self, samples: usize) -> Result<Vec<f32>, JsError> {
         check_samples(samples)?;
-        let (a, b) = (mat3_from_quat(self.start_quat), mat3_from_quat(self.end_quat));
+        let (a, b) = (
+            mat3_from_quat(self.start_quat),
+            mat3_from_quat(self.end_quat),
+        );
         let mut out = Vec::with_capacity(samples * 3);
         for k in 0..samples {
             let t = k as f32 / (samples - 1) as f32;
@@ -241,11 +290,16 @@ impl InterpolationScene {
             Method::Nlerp => mat3_from_quat(nlerp_arc(a, b, t, self.arc)),
             Method::Slerp => {
                 let q = if student {
-                    exercises::rotations::slerp(a, b, t).ok().filter(|q| q.is_finite() && q.length() > 1e-6)
+                    exercises::rotations::slerp(a, b, t)
+                        .ok()
+                        .filter(|q| q.is_finite() && q.length() > 1e-6)
                 } else {
                     None
                 };
-                mat3_from_quat(q.map(|q| q.normalize()).unwrap_or_else(|| slerp_arc(a, b, t, self.arc)))
+                mat3_from_quat(
+                    q.map(|q| q.normalize())
+                        .unwrap_or_else(|| slerp_arc(a, b, t, self.arc)),
+                )
             }
         }
     }
@@ -255,12 +309,22 @@ fn check_samples(samples: usize) -> Result<(), JsError> {
     if (2..=10_000).contains(&samples) {
         Ok(())
     } else {
-        Err(JsError::new(&format!("samples must be between 2 and 10000, got {samples}")))
+        Err(JsError::new(&format!(
+            "samples must be between 2 and 10000, got {samples}"
+        )))
     }
 }
 
 /// Points on a circle of `radius` in the plane spanned by `u` and `v`, as thin boxes.
-fn ring(frame: &mut crate::render::Frame, cube: MeshId, m: Mat4, u: Vec3, v: Vec3, radius: f32, color: Vec3) {
+fn ring(
+    frame: &mut crate::render::Frame,
+    cube: MeshId,
+    m: Mat4,
+    u: Vec3,
+    v: Vec3,
+    radius: f32,
+    color: Vec3,
+) {
     const SEGMENTS: usize = 40;
     let half = std::f32::consts::PI * radius / SEGMENTS as f32 * 1.05;
     let normal = u.cross(v);
@@ -291,13 +355,19 @@ pub struct GimbalScene {
 impl GimbalScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> GimbalScene {
-        GimbalScene { angles_rad: Vec3::new(30.0, 0.0, 20.0) * DEG }
+        GimbalScene {
+            angles_rad: Vec3::new(30.0, 0.0, 20.0) * DEG,
+        }
     }
 
     /// Sets (yaw about y, pitch about x′, roll about z″), in degrees.
     #[wasm_bindgen(js_name = setAnglesDeg)]
     pub fn set_angles_deg(&mut self, yaw: f32, pitch: f32, roll: f32) -> Result<(), JsError> {
-        self.angles_rad = Vec3::new(finite("yaw", yaw)?, finite("pitch", pitch)?, finite("roll", roll)?) * DEG;
+        self.angles_rad = Vec3::new(
+            finite("yaw", yaw)?,
+            finite("pitch", pitch)?,
+            finite("roll", roll)?,
+        ) * DEG;
         Ok(())
     }
 
@@ -326,18 +396,46 @@ impl GimbalScene {
         let inner = middle * Mat4::from_rotation_z(roll);
         let locked = self.axes_angle_deg() < 5.0;
         let warn = Vec3::new(0.9, 0.15, 0.1);
-        let (c_outer, c_middle, c_inner) = (Vec3::new(0.25, 0.65, 0.3), Vec3::new(0.8, 0.25, 0.25), Vec3::new(0.25, 0.4, 0.9));
+        let (c_outer, c_middle, c_inner) = (
+            Vec3::new(0.25, 0.65, 0.3),
+            Vec3::new(0.8, 0.25, 0.25),
+            Vec3::new(0.25, 0.4, 0.9),
+        );
         let cube = viewer.renderer.cube;
         let frame = &mut viewer.renderer.frame;
         frame.grid(8, 0.5);
         // The stand holds the outer ring's bearings on the world's y axis.
         frame.line(Vec3::ZERO, center - Vec3::Y * 1.35, Vec3::splat(0.3));
-        frame.line(center + Vec3::Y * 1.35, center + Vec3::Y * 1.6, Vec3::splat(0.3));
-        ring(frame, cube, outer, Vec3::X, Vec3::Y, 1.3, if locked { warn } else { c_outer });
-        ring(frame, cube, middle, Vec3::X, Vec3::Z, 1.1, if locked { warn * 0.8 } else { c_middle });
+        frame.line(
+            center + Vec3::Y * 1.35,
+            center + Vec3::Y * 1.6,
+            Vec3::splat(0.3),
+        );
+        ring(
+            frame,
+            cube,
+            outer,
+            Vec3::X,
+            Vec3::Y,
+            1.3,
+            if locked { warn } else { c_outer },
+        );
+        ring(
+            frame,
+            cube,
+            middle,
+            Vec3::X,
+            Vec3::Z,
+            1.1,
+            if locked { warn * 0.8 } else { c_middle },
+        );
         ring(frame, cube, inner, Vec3::Y, Vec3::Z, 0.9, c_inner);
         // Each ring's axle, in the colour of the ring it turns.
-        for (m, axis, len, color) in [(base, Vec3::Y, 1.3, c_outer), (outer, Vec3::X, 1.1, c_middle), (middle, Vec3::Z, 0.9, c_inner)] {
+        for (m, axis, len, color) in [
+            (base, Vec3::Y, 1.3, c_outer),
+            (outer, Vec3::X, 1.1, c_middle),
+            (middle, Vec3::Z, 0.9, c_inner),
+        ] {
             let a = m.transform_point3(-axis * len);
             let b = m.transform_point3(axis * len);
             frame.line(a, b, color);
@@ -364,7 +462,10 @@ impl GimbalScene {
     /// World directions of the outer and inner axles.
     fn axes(&self) -> (Vec3, Vec3) {
         let [yaw, pitch, _] = self.angles_rad.to_array();
-        (Vec3::Y, Mat3::from_rotation_y(yaw) * Mat3::from_rotation_x(pitch) * Vec3::Z)
+        (
+            Vec3::Y,
+            Mat3::from_rotation_y(yaw) * Mat3::from_rotation_x(pitch) * Vec3::Z,
+        )
     }
 }
 
@@ -383,7 +484,10 @@ impl RodriguesScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> RodriguesScene {
         RodriguesScene {
-            axis: AxisAngle { axis: Vec3::new(0.3, 1.0, 0.2).normalize(), angle_rad: 120.0 * DEG },
+            axis: AxisAngle {
+                axis: Vec3::new(0.3, 1.0, 0.2).normalize(),
+                angle_rad: 120.0 * DEG,
+            },
             v: Vec3::new(1.2, 0.4, 0.3),
             use_exercise: false,
             arc: Vec::with_capacity(129),
@@ -392,8 +496,15 @@ impl RodriguesScene {
 
     /// Sets the axis (any non-zero direction; it is normalised) and the angle in degrees.
     #[wasm_bindgen(js_name = setAxisAngle)]
-    pub fn set_axis_angle(&mut self, x: f32, y: f32, z: f32, angle_deg: f32) -> Result<(), JsError> {
-        self.axis = AxisAngle::new(Vec3::new(x, y, z), finite("angle", angle_deg)? * DEG).map_err(js_error)?;
+    pub fn set_axis_angle(
+        &mut self,
+        x: f32,
+        y: f32,
+        z: f32,
+        angle_deg: f32,
+    ) -> Result<(), JsError> {
+        self.axis = AxisAngle::new(Vec3::new(x, y, z), finite("angle", angle_deg)? * DEG)
+            .map_err(js_error)?;
         Ok(())
     }
 
@@ -412,7 +523,9 @@ impl RodriguesScene {
 
     /// `R(θ)` as a 4×4 column-major matrix, for the page's matrix table.
     pub fn matrix(&self) -> Vec<f32> {
-        Mat4::from_mat3(self.matrix_at(self.axis.angle_rad).0).to_cols_array().to_vec()
+        Mat4::from_mat3(self.matrix_at(self.axis.angle_rad).0)
+            .to_cols_array()
+            .to_vec()
     }
 
     /// The quaternion `(x, y, z, w)` of the full rotation.
@@ -442,16 +555,28 @@ impl RodriguesScene {
         frame.point(along, 0.04, purple);
         self.arc.clear();
         for k in 0..=128 {
-            self.arc.push(rotation::rodrigues_rotate(v, n, std::f32::consts::TAU * k as f32 / 128.0));
+            self.arc.push(rotation::rodrigues_rotate(
+                v,
+                n,
+                std::f32::consts::TAU * k as f32 / 128.0,
+            ));
         }
         frame.polyline(&self.arc, Vec3::new(0.95, 0.8, 0.6));
         self.arc.clear();
         for k in 0..=64 {
-            self.arc.push(rotation::rodrigues_rotate(v, n, s * theta * k as f32 / 64.0));
+            self.arc.push(rotation::rodrigues_rotate(
+                v,
+                n,
+                s * theta * k as f32 / 64.0,
+            ));
         }
         frame.polyline(&self.arc, Vec3::new(0.95, 0.5, 0.05));
         // Where the tip ends after the full angle θ.
-        frame.point(rotation::rodrigues_rotate(v, n, theta), 0.04, Vec3::new(0.95, 0.5, 0.05));
+        frame.point(
+            rotation::rodrigues_rotate(v, n, theta),
+            0.04,
+            Vec3::new(0.95, 0.5, 0.05),
+        );
         // n × v: the direction the tip starts moving in, drawn from the circle's centre.
         let cross = n.cross(v);
         frame.line(along, along + cross, Vec3::new(0.1, 0.65, 0.75));
@@ -477,7 +602,8 @@ impl RodriguesScene {
             missing.push("exercise 3.1 quat_from_axis_angle");
         }
         Ok(if missing.is_empty() {
-            "Showing your exercises: the pink vector uses your matrix, the box your quaternion.".into()
+            "Showing your exercises: the pink vector uses your matrix, the box your quaternion."
+                .into()
         } else {
             format!("Not done yet: {} (src/exercises/rotations.rs). The figure uses the reference for those.", missing.join(", "))
         })
@@ -511,6 +637,9 @@ impl RodriguesScene {
                 }
             }
         }
-        (rotation::quat_from_axis_angle(self.axis.axis, angle_rad), false)
+        (
+            rotation::quat_from_axis_angle(self.axis.axis, angle_rad),
+            false,
+        )
     }
 }

@@ -20,14 +20,30 @@ pub struct SingleShapeScene {
 impl SingleShapeScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> SingleShapeScene {
-        SingleShapeScene { translation: Vec3::new(1.0, 0.5, 0.0), euler_rad: Vec3::new(0.0, 0.0, 30.0 * DEG), translate_first: false }
+        SingleShapeScene {
+            translation: Vec3::new(1.0, 0.5, 0.0),
+            euler_rad: Vec3::new(0.0, 0.0, 30.0 * DEG),
+            translate_first: false,
+        }
     }
 
     /// Sets the translation (metres) and Euler angles (degrees, X then Y then Z as in the lesson).
     #[wasm_bindgen(js_name = setTransform)]
-    pub fn set_transform(&mut self, tx: f32, ty: f32, tz: f32, rx_deg: f32, ry_deg: f32, rz_deg: f32) -> Result<(), JsError> {
+    pub fn set_transform(
+        &mut self,
+        tx: f32,
+        ty: f32,
+        tz: f32,
+        rx_deg: f32,
+        ry_deg: f32,
+        rz_deg: f32,
+    ) -> Result<(), JsError> {
         self.translation = Vec3::new(finite("tx", tx)?, finite("ty", ty)?, finite("tz", tz)?);
-        self.euler_rad = Vec3::new(finite("rx", rx_deg)?, finite("ry", ry_deg)?, finite("rz", rz_deg)?) * DEG;
+        self.euler_rad = Vec3::new(
+            finite("rx", rx_deg)?,
+            finite("ry", ry_deg)?,
+            finite("rz", rz_deg)?,
+        ) * DEG;
         Ok(())
     }
 
@@ -58,7 +74,11 @@ impl SingleShapeScene {
         let frame = &mut viewer.renderer.frame;
         frame.grid(10, 0.5);
         frame.axes(Mat4::IDENTITY, 1.0);
-        frame.mesh(viewer.renderer.cube, m * Mat4::from_scale(Vec3::new(0.4, 0.25, 0.15)), Vec3::new(0.95, 0.6, 0.2));
+        frame.mesh(
+            viewer.renderer.cube,
+            m * Mat4::from_scale(Vec3::new(0.4, 0.25, 0.15)),
+            Vec3::new(0.95, 0.6, 0.2),
+        );
         frame.axes(m, 0.7);
         // A point (w = 1) moves with the translation; a direction (w = 0) only turns.
         let corner = m * transform::point(Vec3::new(0.4, 0.25, 0.15));
@@ -122,7 +142,10 @@ impl HierarchyScene {
         if joint < self.hierarchy.len() {
             Ok(joint)
         } else {
-            Err(JsError::new(&format!("joint index {joint} is out of range: the figure has {} joints", self.hierarchy.len())))
+            Err(JsError::new(&format!(
+                "joint index {joint} is out of range: the figure has {} joints",
+                self.hierarchy.len()
+            )))
         }
     }
 
@@ -141,17 +164,37 @@ impl HierarchyScene {
 
     /// Sets a joint's Euler angles, in degrees.
     #[wasm_bindgen(js_name = setJointAnglesDeg)]
-    pub fn set_joint_angles_deg(&mut self, joint: usize, x_deg: f32, y_deg: f32, z_deg: f32) -> Result<(), JsError> {
+    pub fn set_joint_angles_deg(
+        &mut self,
+        joint: usize,
+        x_deg: f32,
+        y_deg: f32,
+        z_deg: f32,
+    ) -> Result<(), JsError> {
         let j = self.joint(joint)?;
-        self.transforms[j].euler_xyz_rad = Vec3::new(finite("x", x_deg)?, finite("y", y_deg)?, finite("z", z_deg)?) * DEG;
+        self.transforms[j].euler_xyz_rad = Vec3::new(
+            finite("x", x_deg)?,
+            finite("y", y_deg)?,
+            finite("z", z_deg)?,
+        ) * DEG;
         Ok(())
     }
 
     /// Sets a joint's scale along its own axes (each in [0.1, 4]).
     #[wasm_bindgen(js_name = setJointScale)]
-    pub fn set_joint_scale(&mut self, joint: usize, sx: f32, sy: f32, sz: f32) -> Result<(), JsError> {
+    pub fn set_joint_scale(
+        &mut self,
+        joint: usize,
+        sx: f32,
+        sy: f32,
+        sz: f32,
+    ) -> Result<(), JsError> {
         let j = self.joint(joint)?;
-        let s = Vec3::new(super::in_range("sx", sx, 0.1, 4.0)?, super::in_range("sy", sy, 0.1, 4.0)?, super::in_range("sz", sz, 0.1, 4.0)?);
+        let s = Vec3::new(
+            super::in_range("sx", sx, 0.1, 4.0)?,
+            super::in_range("sy", sy, 0.1, 4.0)?,
+            super::in_range("sz", sz, 0.1, 4.0)?,
+        );
         self.transforms[j].scale = s;
         Ok(())
     }
@@ -159,7 +202,11 @@ impl HierarchyScene {
     /// Whether a joint's scale is passed on to its children (see the lesson).
     #[wasm_bindgen(js_name = setInheritScale)]
     pub fn set_inherit_scale(&mut self, inherit: bool) {
-        self.mode = if inherit { ScaleMode::Inherited } else { ScaleMode::NotInherited };
+        self.mode = if inherit {
+            ScaleMode::Inherited
+        } else {
+            ScaleMode::NotInherited
+        };
     }
 
     /// When on, the timeline drives a walk cycle and the angle sliders follow it.
@@ -181,8 +228,13 @@ impl HierarchyScene {
         let frame = &mut viewer.renderer.frame;
         frame.grid(12, 0.25);
         for (i, (shape, draw)) in self.shapes.iter().zip(&self.draw).enumerate() {
-            let model = *draw * Mat4::from_translation(shape.center) * Mat4::from_scale(shape.half_extents);
-            let color = if i == self.selected { shape.color * 0.6 + Vec3::new(0.4, 0.35, 0.0) } else { shape.color };
+            let model =
+                *draw * Mat4::from_translation(shape.center) * Mat4::from_scale(shape.half_extents);
+            let color = if i == self.selected {
+                shape.color * 0.6 + Vec3::new(0.4, 0.35, 0.0)
+            } else {
+                shape.color
+            };
             frame.mesh(viewer.renderer.cube, model, color);
         }
         // The skeleton: a dot at each pivot, a segment to its parent's pivot.
@@ -190,7 +242,11 @@ impl HierarchyScene {
             let pivot = self.world[i].w_axis.truncate();
             frame.point(pivot, 0.025, Vec3::new(0.1, 0.1, 0.1));
             if parent >= 0 {
-                frame.line(self.world[parent as usize].w_axis.truncate(), pivot, Vec3::new(0.1, 0.1, 0.1));
+                frame.line(
+                    self.world[parent as usize].w_axis.truncate(),
+                    pivot,
+                    Vec3::new(0.1, 0.1, 0.1),
+                );
             }
         }
         frame.axes(self.world[self.selected], 0.25);
@@ -258,7 +314,15 @@ impl HierarchyScene {
             }
         }
         let to_js = |e: transform::HierarchyError| JsError::new(&e.to_string());
-        self.hierarchy.pose(&self.transforms, self.mode, &mut self.local, &mut self.world, &mut self.draw).map_err(to_js)?;
+        self.hierarchy
+            .pose(
+                &self.transforms,
+                self.mode,
+                &mut self.local,
+                &mut self.world,
+                &mut self.draw,
+            )
+            .map_err(to_js)?;
         if !self.use_exercise {
             return Ok(String::new());
         }
@@ -267,7 +331,11 @@ impl HierarchyScene {
         for (i, x) in self.transforms.iter().enumerate() {
             match exercises::transforms::local_matrix(x.translation, x.euler_xyz_rad) {
                 Ok(m) => {
-                    self.local[i] = if self.mode == ScaleMode::Inherited { m * Mat4::from_scale(x.scale) } else { m };
+                    self.local[i] = if self.mode == ScaleMode::Inherited {
+                        m * Mat4::from_scale(x.scale)
+                    } else {
+                        m
+                    };
                 }
                 Err(NotDone) => {
                     missing.push("exercise 1.1 local_matrix");
@@ -275,7 +343,13 @@ impl HierarchyScene {
                 }
             }
         }
-        if exercises::transforms::world_matrices(self.hierarchy.parents(), &self.local, &mut self.world).is_err() {
+        if exercises::transforms::world_matrices(
+            self.hierarchy.parents(),
+            &self.local,
+            &mut self.world,
+        )
+        .is_err()
+        {
             missing.push("exercise 1.2 world_matrices");
             transform::world_matrices(self.hierarchy.parents(), &self.local, &mut self.world);
         }

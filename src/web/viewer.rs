@@ -20,9 +20,15 @@ impl Viewer {
     /// Rejects with a readable message when the browser offers neither API.
     pub async fn create(canvas: HtmlCanvasElement, backend: String) -> Result<Viewer, JsError> {
         let choice = BackendChoice::parse(&backend).map_err(|e| JsError::new(&e))?;
-        let gpu = Gpu::new(canvas, choice).await.map_err(|e| JsError::new(&e))?;
+        let gpu = Gpu::new(canvas, choice)
+            .await
+            .map_err(|e| JsError::new(&e))?;
         let renderer = Renderer::new(&gpu);
-        Ok(Viewer { gpu, renderer, camera: OrbitCamera::default() })
+        Ok(Viewer {
+            gpu,
+            renderer,
+            camera: OrbitCamera::default(),
+        })
     }
 
     /// "WebGPU" or "WebGL2".
@@ -37,11 +43,17 @@ impl Viewer {
     }
 
     /// Matches the drawing buffer to the canvas's CSS size times `device_pixel_ratio`.
-    pub fn resize(&mut self, css_width: f32, css_height: f32, device_pixel_ratio: f32) -> Result<(), JsError> {
+    pub fn resize(
+        &mut self,
+        css_width: f32,
+        css_height: f32,
+        device_pixel_ratio: f32,
+    ) -> Result<(), JsError> {
         let w = super::in_range("width", css_width, 0.0, 1e5)?;
         let h = super::in_range("height", css_height, 0.0, 1e5)?;
         let dpr = super::in_range("devicePixelRatio", device_pixel_ratio, 0.1, 8.0)?;
-        self.gpu.resize((w * dpr).round() as u32, (h * dpr).round() as u32);
+        self.gpu
+            .resize((w * dpr).round() as u32, (h * dpr).round() as u32);
         Ok(())
     }
 
@@ -54,21 +66,39 @@ impl Viewer {
 
     /// Scales the camera distance: `factor < 1` zooms in.
     pub fn zoom(&mut self, factor: f32) -> Result<(), JsError> {
-        self.camera.zoom(super::in_range("zoom factor", factor, 0.01, 100.0)?);
+        self.camera
+            .zoom(super::in_range("zoom factor", factor, 0.01, 100.0)?);
         Ok(())
     }
 
     /// Moves the camera target by a drag of `(dx, dy)` CSS pixels on a canvas `height_px` tall.
     pub fn pan(&mut self, dx_px: f32, dy_px: f32, height_px: f32) -> Result<(), JsError> {
         let h = super::in_range("height", height_px, 1.0, 1e5)?;
-        self.camera.pan(super::finite("dx", dx_px)? / h, super::finite("dy", dy_px)? / h);
+        self.camera.pan(
+            super::finite("dx", dx_px)? / h,
+            super::finite("dy", dy_px)? / h,
+        );
         Ok(())
     }
 
     /// Places the camera: target point, distance (metres), yaw and pitch (radians).
     #[wasm_bindgen(js_name = setCamera)]
-    pub fn set_camera(&mut self, x: f32, y: f32, z: f32, distance: f32, yaw_rad: f32, pitch_rad: f32) -> Result<(), JsError> {
-        for (name, v) in [("x", x), ("y", y), ("z", z), ("yaw", yaw_rad), ("pitch", pitch_rad)] {
+    pub fn set_camera(
+        &mut self,
+        x: f32,
+        y: f32,
+        z: f32,
+        distance: f32,
+        yaw_rad: f32,
+        pitch_rad: f32,
+    ) -> Result<(), JsError> {
+        for (name, v) in [
+            ("x", x),
+            ("y", y),
+            ("z", z),
+            ("yaw", yaw_rad),
+            ("pitch", pitch_rad),
+        ] {
             super::finite(name, v)?;
         }
         self.camera.target = glam::Vec3::new(x, y, z);
@@ -81,13 +111,17 @@ impl Viewer {
 
     /// Draws what the scene put in the frame, then clears it.
     pub fn present(&mut self) -> Result<(), JsError> {
-        self.renderer.render(&self.gpu, &self.camera).map_err(|e| JsError::new(&e))
+        self.renderer
+            .render(&self.gpu, &self.camera)
+            .map_err(|e| JsError::new(&e))
     }
 }
 
 impl Viewer {
     /// Draws the current frame offscreen and returns RGBA bytes (tests).
     pub async fn read_pixels(&mut self, width: u32, height: u32) -> Result<Vec<u8>, String> {
-        self.renderer.render_to_rgba(&self.gpu, &self.camera, width, height).await
+        self.renderer
+            .render_to_rgba(&self.gpu, &self.camera, width, height)
+            .await
     }
 }

@@ -22,7 +22,11 @@ macro_rules! assert_close {
         let (a, b): (&[f32], &[f32]) = (&$a, &$b);
         assert_eq!(a.len(), b.len());
         for (i, (x, y)) in a.iter().zip(b).enumerate() {
-            assert!((x - y).abs() <= $eps, "element {i}: {x} vs {y} (eps {})\n left: {a:?}\nright: {b:?}", $eps);
+            assert!(
+                (x - y).abs() <= $eps,
+                "element {i}: {x} vs {y} (eps {})\n left: {a:?}\nright: {b:?}",
+                $eps
+            );
         }
     }};
 }
