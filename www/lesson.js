@@ -285,6 +285,18 @@ export class Plot {
   }
 }
 
+/** Splits `[a0, b0, c0, a1, b1, c1, …]` (a binding's flat samples) into columns `[[a…], [b…], [c…]]`. */
+export function columns(flat, width) {
+  const cols = Array.from({ length: width }, () => []);
+  for (let i = 0; i < flat.length; i += width) for (let k = 0; k < width; k++) cols[k].push(flat[i + k]);
+  return cols;
+}
+
+/** A timeline's time as t in [0, 1] going there and back, so a looping interpolation never jumps. */
+export function pingPong(timeline) {
+  return 1 - Math.abs(2 * (timeline.time / timeline.duration) - 1);
+}
+
 /** Formats a column-major 4×4 matrix into the rows of an HTML table element. */
 export function showMatrix(table, cols) {
   const rows = [0, 1, 2, 3].map((r) => [0, 1, 2, 3].map((c) => cols[c * 4 + r]));

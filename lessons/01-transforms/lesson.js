@@ -1,5 +1,5 @@
 // Lesson 01: wires the page's controls to the wasm scenes. No math here: it lives in Rust.
-import { startLesson, markDrawn, Timeline, Plot, showMatrix, showError, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, showMatrix, columns, GUI } from '../../www/lesson.js';
 import { SingleShapeScene, HierarchyScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -73,12 +73,8 @@ if (humanViewer) {
     title: 'One walk cycle', xLabel: 'time (s)', series: ['left thigh angle (°)', 'left wrist height (cm)'],
   });
   function updatePlot() {
-    const s = scene.sampleCycle(121, 1.2);
-    const cols = [[], [], []];
-    for (let i = 0; i < s.length; i += 3) {
-      cols[0].push(s[i]); cols[1].push(s[i + 1]); cols[2].push(s[i + 2] * 100);
-    }
-    plot.setData(cols);
+    const [time, thigh, wrist] = columns(scene.sampleCycle(121, 1.2), 3);
+    plot.setData([time, thigh, wrist.map((h) => h * 100)]);
   }
   updatePlot();
 

@@ -1,11 +1,10 @@
 // Lesson 03: wires the page's controls to the wasm scenes. No math here: it lives in Rust.
-import { startLesson, markDrawn, Timeline, Plot, showMatrix, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, showMatrix, GUI, pingPong } from '../../www/lesson.js';
 import { InterpolationScene, GimbalScene, RodriguesScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
 /** Time on the timeline as t in [0, 1], going there and back so the motion never jumps. */
-const pingPong = (timeline) => 1 - Math.abs(2 * (timeline.time / timeline.duration) - 1);
 const fmt = (v) => Array.from(v, (x) => x.toFixed(3)).join(', ');
 
 // Figure 1: matrix lerp, Euler lerp, nlerp, slerp side by side.

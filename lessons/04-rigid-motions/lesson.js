@@ -1,16 +1,10 @@
 // Lesson 04: wires the page's controls to the wasm scenes. No math here: it lives in Rust.
-import { startLesson, markDrawn, Timeline, Plot, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns } from '../../www/lesson.js';
 import { RigidScene, AffineScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
 /** Time on the timeline as t in [0, 1], going there and back so the motion never jumps. */
-const pingPong = (timeline) => 1 - Math.abs(2 * (timeline.time / timeline.duration) - 1);
-const columns = (flat, width) => {
-  const cols = Array.from({ length: width }, () => []);
-  for (let i = 0; i < flat.length; i += width) for (let k = 0; k < width; k++) cols[k].push(flat[i + k]);
-  return cols;
-};
 
 // Figure 1: lerp + slerp, dual quaternion blending, screw motion.
 const rigidViewer = await lesson.figure('#fig-rigid');

@@ -300,7 +300,7 @@ impl KeyframesScene {
     /// The path, `samples` points evenly spaced in time over the keys: `[x0, y0, x1, y1, …]`.
     #[wasm_bindgen(js_name = samplePath)]
     pub fn sample_path(&self, samples: usize) -> Result<Vec<f32>, JsError> {
-        check_samples(samples)?;
+        super::check_samples(samples)?;
         let mut out = vec![Vec2::ZERO; samples];
         self.track
             .positions_evenly(self.track.start_sec(), self.track.end_sec(), &mut out);
@@ -327,7 +327,7 @@ impl KeyframesScene {
     /// same path at constant speed (with the ease).
     #[wasm_bindgen(js_name = sampleMotion)]
     pub fn sample_motion(&self, samples: usize) -> Result<Vec<f32>, JsError> {
-        check_samples(samples)?;
+        super::check_samples(samples)?;
         let duration = self.track.duration_sec();
         let mut out = Vec::with_capacity(samples * 4);
         for k in 0..samples {
@@ -427,16 +427,6 @@ impl KeyframesScene {
 impl Default for KeyframesScene {
     fn default() -> Self {
         Self::new()
-    }
-}
-
-fn check_samples(samples: usize) -> Result<(), JsError> {
-    if (2..=10_000).contains(&samples) {
-        Ok(())
-    } else {
-        Err(JsError::new(&format!(
-            "samples must be between 2 and 10000, got {samples}"
-        )))
     }
 }
 

@@ -50,6 +50,17 @@ pub(crate) fn finite(name: &str, value: f32) -> Result<f32, JsError> {
     }
 }
 
+/// An error for JavaScript unless a plot asks for between 2 and 10 000 samples.
+pub(crate) fn check_samples(samples: usize) -> Result<(), JsError> {
+    if (2..=10_000).contains(&samples) {
+        Ok(())
+    } else {
+        Err(JsError::new(&format!(
+            "samples must be between 2 and 10000, got {samples}"
+        )))
+    }
+}
+
 /// An error for JavaScript when `value` lies outside `[lo, hi]` (or is not finite).
 pub(crate) fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, JsError> {
     finite(name, value)?;

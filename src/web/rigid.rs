@@ -182,7 +182,7 @@ impl RigidScene {
     /// screw₀, t₁, …]`. Only the screw motion keeps it constant.
     #[wasm_bindgen(js_name = sampleSpeed)]
     pub fn sample_speed(&self, samples: usize) -> Result<Vec<f32>, JsError> {
-        check_samples(samples)?;
+        super::check_samples(samples)?;
         let h = 1e-3;
         let mut out = Vec::with_capacity(samples * 4);
         for k in 0..samples {
@@ -272,16 +272,6 @@ fn mat4_cols(values: &[f32]) -> Result<Mat4, JsError> {
         )));
     }
     Ok(Mat4::from_cols_slice(values))
-}
-
-fn check_samples(samples: usize) -> Result<(), JsError> {
-    if (2..=10_000).contains(&samples) {
-        Ok(())
-    } else {
-        Err(JsError::new(&format!(
-            "samples must be between 2 and 10000, got {samples}"
-        )))
-    }
 }
 
 /// The 12 edges of the cube `[-1, 1]³` transformed by `m`.
@@ -381,7 +371,7 @@ impl AffineScene {
     /// Determinant of the linear part over t, sampled: `[t₀, naive₀, polar₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleDeterminant)]
     pub fn sample_determinant(&self, samples: usize) -> Result<Vec<f32>, JsError> {
-        check_samples(samples)?;
+        super::check_samples(samples)?;
         let mut out = Vec::with_capacity(samples * 3);
         for k in 0..samples {
             let t = k as f32 / (samples - 1) as f32;

@@ -222,7 +222,7 @@ impl InterpolationScene {
     /// error ‖MᵀM − I‖.
     #[wasm_bindgen(js_name = sampleDeterminant)]
     pub fn sample_determinant(&self, samples: usize) -> Result<Vec<f32>, JsError> {
-        check_samples(samples)?;
+        super::check_samples(samples)?;
         let (a, b) = (
             mat3_from_quat(self.start_quat),
             mat3_from_quat(self.end_quat),
@@ -240,7 +240,7 @@ impl InterpolationScene {
     /// `[t₀, euler₀, nlerp₀, slerp₀, t₁, …]`, by finite differences.
     #[wasm_bindgen(js_name = sampleAngularSpeed)]
     pub fn sample_angular_speed(&self, samples: usize) -> Result<Vec<f32>, JsError> {
-        check_samples(samples)?;
+        super::check_samples(samples)?;
         let (_, student) = self.student_ok();
         let h = 1e-3;
         let mut out = Vec::with_capacity(samples * 4);
@@ -302,16 +302,6 @@ impl InterpolationScene {
                 )
             }
         }
-    }
-}
-
-fn check_samples(samples: usize) -> Result<(), JsError> {
-    if (2..=10_000).contains(&samples) {
-        Ok(())
-    } else {
-        Err(JsError::new(&format!(
-            "samples must be between 2 and 10000, got {samples}"
-        )))
     }
 }
 

@@ -270,9 +270,7 @@ impl HierarchyScene {
     /// angle `a` (degrees) and the height `h` (metres) of the left hand's pivot-to-wrist end.
     #[wasm_bindgen(js_name = sampleCycle)]
     pub fn sample_cycle(&self, samples: usize, period_sec: f32) -> Result<Vec<f32>, JsError> {
-        if !(2..=10_000).contains(&samples) {
-            return Err(JsError::new("samples must be between 2 and 10000"));
-        }
+        super::check_samples(samples)?;
         let period = super::in_range("period", period_sec, 0.01, 1000.0)?;
         let mut scene = HierarchyScene::new();
         scene.animate = true;
