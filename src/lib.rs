@@ -7,7 +7,8 @@
 //! |---|---|---|---|
 //! | `01-transforms`: transforms and hierarchies | [`transform`], [`mesh`], [`camera`] | `web::transforms` | [`exercises::transforms`] |
 //! | `02-keyframes`: keyframes and splines | [`curves`] | `web::curves` (bench: `web::bench_curves`) | [`exercises::curves`] |
-//! | (rotations issue) rotations, rigid motions | [`rotation`], [`rigid`] | | |
+//! | `03-rotations`: rotations | [`rotation`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
+//! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | `web::rigid` | [`exercises::rotations`] (4.x) |
 //!
 //! ## Conventions, stated once
 //! - Right-handed coordinates, **Y up**, the camera looks down −Z in view space.
