@@ -258,12 +258,12 @@ export class Timeline {
 }
 
 /**
- * A line plot of curves over time (uPlot). `series` names the curves; `setData([xs, ys1, ys2…])`.
+ * A line plot of curves over time (uPlot). `series` names the curves, `colors` (optional) matches
+ * them to the figure's colours; `setData([xs, ys1, ys2…])`.
  * A vertical cursor can follow the timeline with `setCursor(x)`.
  */
 export class Plot {
-  constructor(element, { title, xLabel, series, height = 180 }) {
-    const colors = ['#2563eb', '#dc2626', '#059669', '#9333ea'];
+  constructor(element, { title, xLabel, series, colors = ['#2563eb', '#dc2626', '#059669', '#9333ea'], height = 180 }) {
     this.plot = new window.uPlot({
       title,
       width: element.clientWidth || 560,

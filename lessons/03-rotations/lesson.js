@@ -26,10 +26,10 @@ if (interpViewer) {
   gui.add(p, 'longArc').name('long arc (use −q)');
   gui.add(p, 'useExercise').name('use my exercise');
   const det = new Plot(document.getElementById('interp-det'), {
-    title: 'Matrix lerp: is it still a rotation?', xLabel: 't', series: ['determinant', '‖MᵀM − I‖'],
+    title: 'Matrix lerp: is it still a rotation?', xLabel: 't', series: ['determinant', '‖MᵀM − I‖'], colors: ['#c4443a', '#7a2a24'],
   });
   const speed = new Plot(document.getElementById('interp-speed'), {
-    title: 'Angular speed (° per unit of t)', xLabel: 't', series: ['Euler lerp', 'nlerp', 'slerp'],
+    title: 'Angular speed (° per unit of t)', xLabel: 't', series: ['Euler lerp', 'nlerp', 'slerp'], colors: ['#d99a1a', '#33a65a', '#3373e6'],
   });
   const apply = () => {
     scene.setKeysEulerDeg(p.sx, p.sy, p.sz, p.ex, p.ey, p.ez);

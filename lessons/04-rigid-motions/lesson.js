@@ -26,6 +26,7 @@ if (rigidViewer) {
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('rigid-plot'), {
     title: 'Speed of the nose (m per unit of t)', xLabel: 't', series: ['lerp + slerp', 'dual quaternion blend', 'screw'],
+    colors: ['#e0901a', '#33a65a', '#3373e6'],
   });
   const note = document.getElementById('rigid-note');
   let axisNote = '';
@@ -68,7 +69,7 @@ if (affineViewer) {
   gui.add(p, 'shear', -1.5, 1.5, 0.01).name('shear x by y');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('affine-plot'), {
-    title: 'Volume factor det M(t)', xLabel: 't', series: ['naive lerp', 'polar decomposition'],
+    title: 'Volume factor det M(t)', xLabel: 't', series: ['naive lerp', 'polar decomposition'], colors: ['#d94d40', '#3373e6'],
   });
   const note = document.getElementById('affine-note');
   let keyNote = '';
