@@ -8,49 +8,15 @@ use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use glam::Vec3;
-use inbetween::curves::{Interpolation, Track};
+use inbetween::curves::Interpolation;
+use inbetween::fixtures::{sampling_benchmark, Rng};
 
 const KEYS: usize = 100;
 const SAMPLES: usize = 1_000_000;
 
-/// xorshift32: a tiny deterministic generator, enough for benchmark inputs.
-struct XorShift(u32);
-
-impl XorShift {
-    /// Uniform in `[0, 1)`.
-    fn next_f32(&mut self) -> f32 {
-        let mut x = self.0;
-        x ^= x << 13;
-        x ^= x >> 17;
-        x ^= x << 5;
-        self.0 = x;
-        (x >> 8) as f32 / (1 << 24) as f32
-    }
-}
-
-/// 100 keys at non-uniform times (steps of 0.05 to 0.15 s) with random positions.
-fn bench_track(rng: &mut XorShift) -> Track<Vec3> {
-    let mut times = Vec::with_capacity(KEYS);
-    let mut values = Vec::with_capacity(KEYS);
-    let mut t = 0.0;
-    for _ in 0..KEYS {
-        times.push(t);
-        t += 0.05 + 0.1 * rng.next_f32();
-        values.push(Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) * 10.0);
-    }
-    Track::new(times, values).expect("valid benchmark keys")
-}
-
 fn sampling(c: &mut Criterion) {
-    let mut rng = XorShift(0x2545_f491);
-    let base = bench_track(&mut rng);
-    let (start, duration) = (base.start_sec(), base.duration_sec());
-    let increasing: Vec<f32> = (0..SAMPLES)
-        .map(|k| start + duration * k as f32 / SAMPLES as f32)
-        .collect();
-    let random: Vec<f32> = (0..SAMPLES)
-        .map(|_| start + duration * rng.next_f32())
-        .collect();
+    // The same input as the browser bench page (`src/web/bench_curves.rs`).
+    let (base, increasing, random) = sampling_benchmark(KEYS, SAMPLES, &mut Rng::new(0x2545_f491));
     let mut out = vec![Vec3::ZERO; SAMPLES];
 
     for (name, scheme) in [

@@ -4,23 +4,13 @@
 //! baseline that only copies the local matrices (the memory traffic with no arithmetic).
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use glam::{Mat4, Vec3};
+use inbetween::fixtures::binary_tree_hierarchy;
 use inbetween::transform::{local_matrix, world_matrices};
 use std::hint::black_box;
 
-fn chain(n: usize) -> (Vec<i32>, Vec<Mat4>) {
-    // A branching tree: each joint hangs off one of the few joints before it.
-    let parents = (0..n as i32)
-        .map(|i| if i == 0 { -1 } else { (i - 1) / 2 })
-        .collect();
-    let local = (0..n)
-        .map(|i| local_matrix(Vec3::new(0.0, 0.1, 0.0), Vec3::splat(i as f32 * 0.01)))
-        .collect();
-    (parents, local)
-}
-
 fn bench(c: &mut Criterion) {
     let n = 1024;
-    let (parents, local) = chain(n);
+    let (parents, local) = binary_tree_hierarchy(n);
     let mut world = vec![Mat4::IDENTITY; n];
     let mut group = c.benchmark_group("hierarchy_1024_joints");
     group.throughput(Throughput::Elements(n as u64));

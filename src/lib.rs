@@ -25,6 +25,7 @@
 pub mod camera;
 pub mod curves;
 pub mod exercises;
+pub mod fixtures;
 pub mod mesh;
 pub mod rigid;
 pub mod rotation;

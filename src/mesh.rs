@@ -93,8 +93,9 @@ pub fn uv_sphere(radius: f32, segments: u32, rings: u32) -> MeshData {
 }
 
 /// Line segments (pairs of endpoints) of a square grid on the plane y = 0, centred at the origin,
-/// with `cells` cells of size `spacing` along each side.
-pub fn grid_lines(cells: u32, spacing: f32) -> Vec<[Vec3; 2]> {
+/// with `cells` cells of size `spacing` along each side. An iterator, so that drawing the grid
+/// every frame allocates nothing.
+pub fn grid_lines(cells: u32, spacing: f32) -> impl Iterator<Item = [Vec3; 2]> {
     let half = cells as f32 * spacing * 0.5;
     (0..=cells)
         .flat_map(|i| {
@@ -104,5 +105,4 @@ pub fn grid_lines(cells: u32, spacing: f32) -> Vec<[Vec3; 2]> {
                 [Vec3::new(-half, 0.0, x), Vec3::new(half, 0.0, x)],
             ]
         })
-        .collect()
 }

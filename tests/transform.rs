@@ -182,7 +182,8 @@ both! {
             assert!(area.length() > 1e-6, "no degenerate triangles");
             assert!(area.dot(a + b + c) > 0.0, "outward winding");
         }
-        assert_eq!(grid_lines(4, 0.5).len(), 10);
+        assert_eq!(grid_lines(4, 0.5).count(), 10);
+        assert!(grid_lines(4, 0.5).all(|[a, b]| a.y == 0.0 && b.y == 0.0 && (a - b).length() == 2.0));
     }
 
     fn camera_looks_at_its_target_from_its_distance() {

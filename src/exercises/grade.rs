@@ -4,7 +4,8 @@
 //! (`tests/web_grader.rs`). Inputs come from a fixed-seed generator, so a failure reproduces.
 
 use super::Answer;
-use glam::{Mat4, Vec3};
+pub use crate::fixtures::Rng;
+use glam::Mat4;
 use std::fmt::{self, Debug};
 
 /// The outcome of grading one exercise.
@@ -171,33 +172,5 @@ impl fmt::Display for Status {
                 write!(f, "PANICKED at case {case}: {message}\n      input: {input}")
             }
         }
-    }
-}
-
-/// A small deterministic generator (SplitMix64) so that grading is reproducible everywhere.
-pub struct Rng(u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Self {
-        Self(seed)
-    }
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [lo, hi).
-    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        let unit = (self.next_u64() >> 40) as f32 / (1u64 << 24) as f32;
-        lo + (hi - lo) * unit
-    }
-    /// Uniform integer in [0, n).
-    pub fn below(&mut self, n: usize) -> usize {
-        (self.next_u64() % n.max(1) as u64) as usize
-    }
-    pub fn vec3(&mut self, lo: f32, hi: f32) -> Vec3 {
-        Vec3::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
     }
 }

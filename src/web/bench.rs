@@ -21,12 +21,7 @@ pub fn bench_hierarchy(kernel: &str, joints: usize, iterations: usize) -> Result
             "joints must be in [1, 2^20] and iterations in [1, 2^24]",
         ));
     }
-    let parents: Vec<i32> = (0..joints as i32)
-        .map(|i| if i == 0 { -1 } else { (i - 1) / 2 })
-        .collect();
-    let local: Vec<Mat4> = (0..joints)
-        .map(|i| local_matrix(Vec3::new(0.0, 0.1, 0.0), Vec3::splat(i as f32 * 0.01)))
-        .collect();
+    let (parents, local) = crate::fixtures::binary_tree_hierarchy(joints);
     let mut world = vec![Mat4::IDENTITY; joints];
     let start = now_ms();
     match kernel {

@@ -2,7 +2,7 @@
 //! `Vec3` track, in increasing time order with a [`Cursor`](crate::curves::Cursor) and at random
 //! times with a binary search per sample, for linear and Catmull-Rom interpolation.
 
-use crate::curves::{Interpolation, Track};
+use crate::curves::Interpolation;
 use glam::Vec3;
 use wasm_bindgen::prelude::*;
 
@@ -11,20 +11,6 @@ fn now_ms() -> f64 {
         .and_then(|w| w.performance())
         .map(|p| p.now())
         .unwrap_or(0.0)
-}
-
-/// xorshift32, as in `benches/curves.rs`: uniform in `[0, 1)`.
-struct XorShift(u32);
-
-impl XorShift {
-    fn next_f32(&mut self) -> f32 {
-        let mut x = self.0;
-        x ^= x << 13;
-        x ^= x >> 17;
-        x ^= x << 5;
-        self.0 = x;
-        (x >> 8) as f32 / (1 << 24) as f32
-    }
 }
 
 /// Times `iterations` passes of a sampling kernel over `samples` times on a 100-key `Vec3` track
@@ -39,24 +25,12 @@ pub fn bench_curves(kernel: &str, samples: usize, iterations: usize) -> Result<f
             "samples must be in [1, 2^22] and iterations in [1, 2^20]",
         ));
     }
-    const KEYS: usize = 100;
-    let mut rng = XorShift(0x2545_f491);
-    let mut times = Vec::with_capacity(KEYS);
-    let mut values = Vec::with_capacity(KEYS);
-    let mut t = 0.0;
-    for _ in 0..KEYS {
-        times.push(t);
-        t += 0.05 + 0.1 * rng.next_f32();
-        values.push(Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) * 10.0);
-    }
-    let base = Track::new(times, values).map_err(|e| JsError::new(&e.to_string()))?;
-    let (start, duration) = (base.start_sec(), base.duration_sec());
-    let increasing: Vec<f32> = (0..samples)
-        .map(|k| start + duration * k as f32 / samples as f32)
-        .collect();
-    let random: Vec<f32> = (0..samples)
-        .map(|_| start + duration * rng.next_f32())
-        .collect();
+    // The same input as `benches/curves.rs`.
+    let (base, increasing, random) = crate::fixtures::sampling_benchmark(
+        100,
+        samples,
+        &mut crate::fixtures::Rng::new(0x2545_f491),
+    );
     let (scheme, by_cursor) = match kernel {
         "copy_baseline" | "linear_cursor" => (Interpolation::Linear, true),
         "linear_binary_search" => (Interpolation::Linear, false),
