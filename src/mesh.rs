@@ -97,12 +97,11 @@ pub fn uv_sphere(radius: f32, segments: u32, rings: u32) -> MeshData {
 /// every frame allocates nothing.
 pub fn grid_lines(cells: u32, spacing: f32) -> impl Iterator<Item = [Vec3; 2]> {
     let half = cells as f32 * spacing * 0.5;
-    (0..=cells)
-        .flat_map(|i| {
-            let x = -half + i as f32 * spacing;
-            [
-                [Vec3::new(x, 0.0, -half), Vec3::new(x, 0.0, half)],
-                [Vec3::new(-half, 0.0, x), Vec3::new(half, 0.0, x)],
-            ]
-        })
+    (0..=cells).flat_map(move |i| {
+        let x = -half + i as f32 * spacing;
+        [
+            [Vec3::new(x, 0.0, -half), Vec3::new(x, 0.0, half)],
+            [Vec3::new(-half, 0.0, x), Vec3::new(half, 0.0, x)],
+        ]
+    })
 }
