@@ -24,7 +24,9 @@
 
 pub mod camera;
 pub mod curves;
+pub mod draw;
 pub mod exercises;
+pub mod figures;
 pub mod fixtures;
 pub mod mesh;
 pub mod rigid;

@@ -105,3 +105,32 @@ pub fn grid_lines(cells: u32, spacing: f32) -> impl Iterator<Item = [Vec3; 2]> {
         ]
     })
 }
+
+/// A cone with its base (a disc of `radius`) on y = 0 and its tip at `(0, height, 0)`, with
+/// `segments` sides. The sides are smooth-shaded (normals tilted by the cone's half angle) and the
+/// base is flat. Arrow heads use it.
+pub fn cone(radius: f32, height: f32, segments: u32) -> MeshData {
+    let mut mesh = MeshData::default();
+    let n = segments.max(3);
+    let slope = radius / height; // the side normal leans up by atan(r / h)
+    for i in 0..n {
+        let a0 = i as f32 / n as f32 * std::f32::consts::TAU;
+        let a1 = (i + 1) as f32 / n as f32 * std::f32::consts::TAU;
+        let am = 0.5 * (a0 + a1);
+        let rim = |a: f32| Vec3::new(radius * a.cos(), 0.0, -radius * a.sin());
+        let side_normal = |a: f32| Vec3::new(a.cos(), slope, -a.sin()).normalize();
+        // Side: rim a0, rim a1, tip (counter-clockwise seen from outside).
+        let base = mesh.positions.len() as u32;
+        mesh.positions
+            .extend([rim(a0), rim(a1), Vec3::new(0.0, height, 0.0)]);
+        mesh.normals
+            .extend([side_normal(a0), side_normal(a1), side_normal(am)]);
+        mesh.indices.extend([base, base + 1, base + 2]);
+        // Base: centre, rim a1, rim a0 (seen from below).
+        let base = mesh.positions.len() as u32;
+        mesh.positions.extend([Vec3::ZERO, rim(a1), rim(a0)]);
+        mesh.normals.extend([Vec3::NEG_Y; 3]);
+        mesh.indices.extend([base, base + 1, base + 2]);
+    }
+    mesh
+}

@@ -51,10 +51,29 @@ mod the_grader_itself {
             report.status,
             Status::Wrong {
                 case: 1,
+                what: "random input".into(),
                 input: "2".into(),
                 expected: "2".into(),
                 actual: "0".into()
             }
+        );
+    }
+
+    #[test]
+    fn says_what_the_failing_case_tests() {
+        use inbetween::exercises::grade::check_cases;
+        let report = check_cases(
+            "l",
+            "e",
+            &[("positive", 1), ("zero: the edge", 0)],
+            |&x| Ok(x.max(1)),
+            |&x| x,
+            |a, b| a == b,
+        );
+        let shown = report.status.to_string();
+        assert!(
+            shown.starts_with("WRONG at case 1 (zero: the edge)"),
+            "{shown}"
         );
     }
 

@@ -18,6 +18,8 @@ pub enum Status {
     /// The first case whose answer differs from the reference.
     Wrong {
         case: usize,
+        /// What the case is meant to test ("keys with a·b < 0: the short arc").
+        what: String,
         input: String,
         expected: String,
         actual: String,
@@ -25,6 +27,7 @@ pub enum Status {
     /// The exercise panicked (caught natively only: a wasm panic aborts the module).
     Panicked {
         case: usize,
+        what: String,
         input: String,
         message: String,
     },
@@ -57,7 +60,11 @@ pub fn grade_all() -> Vec<Report> {
     reports
 }
 
+/// What a case of random inputs is said to test.
+pub const RANDOM: &str = "random input";
+
 /// Runs `student` and `reference` on each input; the first disagreement (by `close`) fails.
+/// Every case counts as [`RANDOM`]; [`check_cases`] says what each edge case tests.
 pub fn check<I: Debug, O: Debug>(
     lesson: &'static str,
     exercise: &'static str,
@@ -66,13 +73,35 @@ pub fn check<I: Debug, O: Debug>(
     reference: impl Fn(&I) -> O,
     close: impl Fn(&O, &O) -> bool,
 ) -> Report {
+    let cases: Vec<(&str, &I)> = inputs.iter().map(|i| (RANDOM, i)).collect();
+    check_cases(
+        lesson,
+        exercise,
+        &cases,
+        |i| student(i),
+        |i| reference(i),
+        close,
+    )
+}
+
+/// Like [`check`], with each input paired with what it tests, e.g.
+/// `("keys with a·b < 0: the short arc", input)`, so that a wrong answer says what it got wrong.
+pub fn check_cases<I: Debug, O: Debug>(
+    lesson: &'static str,
+    exercise: &'static str,
+    cases: &[(&str, I)],
+    student: impl Fn(&I) -> Answer<O>,
+    reference: impl Fn(&I) -> O,
+    close: impl Fn(&O, &O) -> bool,
+) -> Report {
     let status = (|| {
-        for (case, input) in inputs.iter().enumerate() {
+        for (case, (what, input)) in cases.iter().enumerate() {
             let answer = match run_caught(|| student(input)) {
                 Ok(answer) => answer,
                 Err(message) => {
                     return Status::Panicked {
                         case,
+                        what: what.to_string(),
                         input: format!("{input:?}"),
                         message,
                     };
@@ -85,15 +114,14 @@ pub fn check<I: Debug, O: Debug>(
             if !close(&expected, &actual) {
                 return Status::Wrong {
                     case,
+                    what: what.to_string(),
                     input: format!("{input:?}"),
                     expected: format!("{expected:?}"),
                     actual: format!("{actual:?}"),
                 };
             }
         }
-        Status::Passed {
-            cases: inputs.len(),
-        }
+        Status::Passed { cases: cases.len() }
     })();
     Report {
         lesson,
@@ -164,13 +192,14 @@ impl fmt::Display for Status {
         match self {
             Status::Passed { cases } => write!(f, "passed ({cases} cases)"),
             Status::NotDone => write!(f, "not yet implemented"),
-            Status::Wrong { case, input, expected, actual } => write!(
+            Status::Wrong { case, what, input, expected, actual } => write!(
                 f,
-                "WRONG at case {case}\n      input:    {input}\n      expected: {expected}\n      actual:   {actual}"
+                "WRONG at case {case} ({what})\n      input:    {input}\n      expected: {expected}\n      actual:   {actual}"
             ),
-            Status::Panicked { case, input, message } => {
-                write!(f, "PANICKED at case {case}: {message}\n      input: {input}")
-            }
+            Status::Panicked { case, what, input, message } => write!(
+                f,
+                "PANICKED at case {case} ({what}): {message}\n      input: {input}"
+            ),
         }
     }
 }

@@ -1,9 +1,10 @@
 //! Student exercises, one file per lesson, and the grader that checks them.
 //!
 //! Each exercise is a function whose doc comment states the task. Its body starts as a stub that
-//! returns `Err(NotDone)`: on wasm a panic (`todo!()`) would abort the whole module, taking the
-//! lesson page and the grader down with it, so an unfinished exercise says so with a value.
-//! Replace the stub with your code and return `Ok(answer)`.
+//! returns `Err(NotDone)`. Replace the stub with your code and return `Ok(answer)`. A panic in your
+//! code (a `todo!()`, an index out of bounds) is caught: the native grader reports it as
+//! `PANICKED`, and the lesson pages run your code in a separate module instance ([`run`]), so the
+//! figure shows the message and falls back to the reference while the rest of the page goes on.
 //!
 //! The first line of each body, `solution!(...)`, calls the reference core function when the crate
 //! is built with the `solutions` feature (used by CI to prove the grader passes a correct answer);
@@ -14,6 +15,7 @@
 pub mod curves;
 pub mod grade;
 pub mod rotations;
+pub mod run;
 pub mod transforms;
 
 /// An exercise's answer: `Ok(value)` once implemented, `Err(NotDone)` while it is still a stub.

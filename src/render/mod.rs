@@ -1,6 +1,7 @@
 //! The renderer (wasm only): one GPU context per canvas, WebGPU first, WebGL2 otherwise.
 //!
-//! Everything here is shared by all lessons: a lesson fills a [`Frame`] (meshes with model
+//! Everything here is shared by all lessons: a lesson fills a [`Frame`] (the native draw list of
+//! `crate::draw`) (meshes with model
 //! matrices, world-space lines, world-space point sprites) and the [`Renderer`] draws it with
 //! depth testing and 4× multisampling. Limits are WebGL2's, so one build runs on both backends.
 

@@ -2,9 +2,11 @@
 
 use super::Gpu;
 use crate::camera::OrbitCamera;
+pub use crate::draw::{Frame, MeshId};
+use crate::draw::{LineVertex, PointInstance};
 use crate::mesh::MeshData;
 use bytemuck::{Pod, Zeroable};
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Vec3, Vec4};
 use std::cell::Cell;
 use std::rc::Rc;
 
@@ -40,24 +42,11 @@ struct MeshVertex {
     color: [f32; 4],
 }
 
-#[repr(C)]
-#[derive(Clone, Copy, Pod, Zeroable)]
-struct LineVertex {
-    position: [f32; 3],
-    color: [f32; 4],
-}
-
-#[repr(C)]
-#[derive(Clone, Copy, Pod, Zeroable)]
-struct PointInstance {
-    center: [f32; 3],
-    radius: f32,
-    color: [f32; 4],
-}
-
-/// A mesh uploaded to one renderer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct MeshId(usize);
+// The draw list's GPU-facing structs are plain `#[repr(C)]` f32 data (see src/draw.rs).
+unsafe impl Zeroable for LineVertex {}
+unsafe impl Pod for LineVertex {}
+unsafe impl Zeroable for PointInstance {}
+unsafe impl Pod for PointInstance {}
 
 struct GpuMesh {
     vertices: wgpu::Buffer,
@@ -65,108 +54,6 @@ struct GpuMesh {
     index_count: u32,
     /// Kept so that positions and normals can be replaced without touching colours.
     colors: Vec<[f32; 4]>,
-}
-
-struct MeshDraw {
-    mesh: MeshId,
-    model: Mat4,
-    color: Vec4,
-    flags: Vec4,
-}
-
-/// What to draw this frame. Lessons fill it; [`Renderer::render`] draws and clears it.
-/// Colours are linear RGB. Lines and points are in world space.
-#[derive(Default)]
-pub struct Frame {
-    meshes: Vec<MeshDraw>,
-    lines: Vec<LineVertex>,
-    points: Vec<PointInstance>,
-}
-
-impl Frame {
-    /// Draws `mesh` transformed by `model`, lit, in a uniform colour.
-    pub fn mesh(&mut self, mesh: MeshId, model: Mat4, color: Vec3) {
-        self.meshes.push(MeshDraw {
-            mesh,
-            model,
-            color: color.extend(1.0),
-            flags: Vec4::ZERO,
-        });
-    }
-
-    /// Draws `mesh` lit, with the colours stored in its vertices.
-    pub fn mesh_vertex_colors(&mut self, mesh: MeshId, model: Mat4) {
-        self.meshes.push(MeshDraw {
-            mesh,
-            model,
-            color: Vec4::ONE,
-            flags: Vec4::X,
-        });
-    }
-
-    /// A line segment from `a` to `b`.
-    pub fn line(&mut self, a: Vec3, b: Vec3, color: Vec3) {
-        let color = color.extend(1.0).to_array();
-        self.lines.push(LineVertex {
-            position: a.to_array(),
-            color,
-        });
-        self.lines.push(LineVertex {
-            position: b.to_array(),
-            color,
-        });
-    }
-
-    /// Consecutive points joined by segments (a curve, a trajectory).
-    pub fn polyline(&mut self, points: &[Vec3], color: Vec3) {
-        for pair in points.windows(2) {
-            self.line(pair[0], pair[1], color);
-        }
-    }
-
-    /// A shaded disc of `radius` (world units) always facing the camera.
-    pub fn point(&mut self, center: Vec3, radius: f32, color: Vec3) {
-        self.points.push(PointInstance {
-            center: center.to_array(),
-            radius,
-            color: color.extend(1.0).to_array(),
-        });
-    }
-
-    /// The x (red), y (green) and z (blue) axes of the frame `m`, each `length` long.
-    pub fn axes(&mut self, m: Mat4, length: f32) {
-        let o = m.transform_point3(Vec3::ZERO);
-        for (axis, color) in [
-            (Vec3::X, Vec3::new(0.9, 0.1, 0.1)),
-            (Vec3::Y, Vec3::new(0.1, 0.7, 0.1)),
-            (Vec3::Z, Vec3::new(0.1, 0.25, 0.95)),
-        ] {
-            self.line(o, o + m.transform_vector3(axis) * length, color);
-        }
-    }
-
-    /// A ground grid on y = 0 with `cells` cells of `spacing` metres on a side.
-    pub fn grid(&mut self, cells: u32, spacing: f32) {
-        for [a, b] in crate::mesh::grid_lines(cells, spacing) {
-            let on_axis =
-                a.x.abs() < 1e-6 && b.x.abs() < 1e-6 || a.z.abs() < 1e-6 && b.z.abs() < 1e-6;
-            self.line(
-                a,
-                b,
-                if on_axis {
-                    Vec3::splat(0.45)
-                } else {
-                    Vec3::splat(0.7)
-                },
-            );
-        }
-    }
-
-    fn clear(&mut self) {
-        self.meshes.clear();
-        self.lines.clear();
-        self.points.clear();
-    }
 }
 
 /// A growable GPU buffer that is reallocated only when it must grow (to the next power of two).
@@ -323,7 +210,8 @@ impl Renderer {
 
         let mesh_attributes =
             wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4];
-        let line_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4];
+        let line_attributes =
+            wgpu::vertex_attr_array![0 => Float32x3, 2 => Float32, 1 => Float32x4];
         let point_attributes =
             wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
         let make = |label: &str,
@@ -430,8 +318,14 @@ impl Renderer {
             light_dir: Vec3::new(0.4, 0.8, 0.45).normalize(),
             frame: Frame::default(),
         };
+        // The draw list names these three by fixed ids (`MeshId::CUBE`, `SPHERE`, `CONE`).
         renderer.cube = renderer.create_mesh(gpu, &crate::mesh::cuboid(Vec3::ONE), None);
         renderer.sphere = renderer.create_mesh(gpu, &crate::mesh::uv_sphere(1.0, 24, 16), None);
+        let cone = renderer.create_mesh(gpu, &crate::mesh::cone(1.0, 1.0, 20), None);
+        debug_assert_eq!(
+            (renderer.cube, renderer.sphere, cone),
+            (MeshId::CUBE, MeshId::SPHERE, MeshId::CONE)
+        );
         renderer
     }
 
@@ -692,7 +586,11 @@ impl Renderer {
                 model: draw.model.to_cols_array(),
                 normal_matrix: draw.model.inverse().transpose().to_cols_array(),
                 color: draw.color.to_array(),
-                flags: draw.flags.to_array(),
+                flags: if draw.vertex_colors {
+                    [1.0, 0.0, 0.0, 0.0]
+                } else {
+                    [0.0; 4]
+                },
             };
             self.scratch_objects
                 .extend_from_slice(bytemuck::bytes_of(&object));

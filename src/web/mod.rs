@@ -8,6 +8,7 @@ mod bench_rotation;
 mod curves;
 mod rigid;
 mod rotations;
+pub mod sandbox;
 mod transforms;
 mod viewer;
 
@@ -19,10 +20,10 @@ pub use viewer::Viewer;
 
 use wasm_bindgen::prelude::*;
 
-/// Runs once when the module loads: panics (bugs, never bad input) reach the console and the page.
+/// Runs once when the module loads: panics reach the page (and the console); see [`sandbox`].
 #[wasm_bindgen(start)]
 pub fn start() {
-    console_error_panic_hook::set_once();
+    sandbox::install_panic_hook();
 }
 
 /// The crate version and whether this build grades with the reference solutions.
@@ -39,36 +40,22 @@ pub fn build_info() -> String {
     )
 }
 
-/// An error for JavaScript when `value` is NaN or infinite.
+/// A native figure's error message as a JavaScript error.
+pub(crate) fn js(message: String) -> JsError {
+    JsError::new(&message)
+}
+
+/// An error for JavaScript when `value` is NaN or infinite ([`crate::figures::finite`]).
 pub(crate) fn finite(name: &str, value: f32) -> Result<f32, JsError> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(JsError::new(&format!(
-            "{name} must be a finite number, got {value}"
-        )))
-    }
+    crate::figures::finite(name, value).map_err(js)
 }
 
 /// An error for JavaScript unless a plot asks for between 2 and 10 000 samples.
 pub(crate) fn check_samples(samples: usize) -> Result<(), JsError> {
-    if (2..=10_000).contains(&samples) {
-        Ok(())
-    } else {
-        Err(JsError::new(&format!(
-            "samples must be between 2 and 10000, got {samples}"
-        )))
-    }
+    crate::figures::check_samples(samples).map_err(js)
 }
 
 /// An error for JavaScript when `value` lies outside `[lo, hi]` (or is not finite).
 pub(crate) fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, JsError> {
-    finite(name, value)?;
-    if (lo..=hi).contains(&value) {
-        Ok(value)
-    } else {
-        Err(JsError::new(&format!(
-            "{name} must lie in [{lo}, {hi}], got {value}"
-        )))
-    }
+    crate::figures::in_range(name, value, lo, hi).map_err(js)
 }

@@ -12,6 +12,10 @@ pub struct Viewer {
     pub(crate) gpu: Gpu,
     pub(crate) renderer: Renderer,
     pub(crate) camera: OrbitCamera,
+    /// The canvas's size in CSS pixels (labels are placed in these units).
+    css_size: (f32, f32),
+    /// The last frame's labels, projected, for the page's HTML overlay.
+    labels: Vec<crate::draw::ScreenLabel>,
 }
 
 #[wasm_bindgen]
@@ -28,6 +32,8 @@ impl Viewer {
             gpu,
             renderer,
             camera: OrbitCamera::default(),
+            css_size: (1.0, 1.0),
+            labels: Vec::new(),
         })
     }
 
@@ -54,6 +60,7 @@ impl Viewer {
         let dpr = super::in_range("devicePixelRatio", device_pixel_ratio, 0.1, 8.0)?;
         self.gpu
             .resize((w * dpr).round() as u32, (h * dpr).round() as u32);
+        self.css_size = (w.max(1.0), h.max(1.0));
         Ok(())
     }
 
@@ -109,11 +116,46 @@ impl Viewer {
         Ok(())
     }
 
-    /// Draws what the scene put in the frame, then clears it.
+    /// Draws what the scene put in the frame, then clears it. The frame's labels are projected
+    /// first and kept for [`Viewer::labels_json`].
     pub fn present(&mut self) -> Result<(), JsError> {
+        let (w, h) = self.css_size;
+        let view_proj = self.camera.projection(w / h) * self.camera.view();
+        self.labels = crate::draw::project_labels(&self.renderer.frame.labels, view_proj, w, h);
         self.renderer
             .render(&self.gpu, &self.camera)
             .map_err(|e| JsError::new(&e))
+    }
+}
+
+#[wasm_bindgen]
+impl Viewer {
+    /// The last presented frame's labels as JSON: `[{"x":…,"y":…,"visible":…,"text":…,"color":…}]`,
+    /// x and y in CSS pixels from the canvas's top-left corner. The shell (`www/lesson.js`) places
+    /// one HTML element per label over the canvas.
+    #[wasm_bindgen(js_name = labelsJson)]
+    pub fn labels_json(&self) -> String {
+        let mut out = String::from("[");
+        for (i, l) in self.labels.iter().enumerate() {
+            if i > 0 {
+                out.push(',');
+            }
+            let text: String = l
+                .text
+                .chars()
+                .flat_map(|c| match c {
+                    '"' | '\\' => vec!['\\', c],
+                    c if c.is_control() => vec![' '],
+                    c => vec![c],
+                })
+                .collect();
+            out += &format!(
+                r#"{{"x":{:.1},"y":{:.1},"visible":{},"text":"{}","color":"{}"}}"#,
+                l.x_px, l.y_px, l.visible, text, l.css_color
+            );
+        }
+        out.push(']');
+        out
     }
 }
 

@@ -2,6 +2,8 @@
 struct VertexIn {
     @location(0) position: vec3<f32>,
     @location(1) color: vec4<f32>,
+    // Pulls axes and arrows in front of grid lines at the same place (no z-fighting).
+    @location(2) depth_bias: f32,
 };
 struct VertexOut {
     @builtin(position) clip: vec4<f32>,
@@ -12,6 +14,7 @@ struct VertexOut {
 fn vs_main(in: VertexIn) -> VertexOut {
     var out: VertexOut;
     out.clip = globals.proj * globals.view * vec4<f32>(in.position, 1.0);
+    out.clip.z = out.clip.z - in.depth_bias * out.clip.w;
     out.color = in.color;
     return out;
 }

@@ -1,0 +1,409 @@
+//! The draw list: what a figure shows in one frame, as plain data.
+//!
+//! A lesson's scene (in [`crate::figures`]) fills a [`Frame`] with meshes placed by model
+//! matrices, world-space lines, point sprites, arrows and text labels; the wgpu renderer
+//! (`render/`, wasm only) draws it and the page places the labels. Because the list is plain Rust,
+//! native tests can check what a figure draws ("the path passes through every key") without a GPU.
+//!
+//! Colours are linear RGB in `[0, 1]`; the named colours of the course are in [`palette`], and
+//! `www/palette.css` gives the same colours to the words of the text.
+
+use glam::{Mat4, Quat, Vec3, Vec4};
+
+/// A mesh known to a renderer. The first three are created by every renderer, in this order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MeshId(pub usize);
+
+impl MeshId {
+    /// A cube with half-extent 1 (so 2 m on a side) centred at the origin.
+    pub const CUBE: MeshId = MeshId(0);
+    /// A sphere of radius 1 centred at the origin.
+    pub const SPHERE: MeshId = MeshId(1);
+    /// A cone of radius 1 and height 1: base on y = 0, tip at (0, 1, 0). Arrow heads use it.
+    pub const CONE: MeshId = MeshId(2);
+}
+
+/// One mesh to draw.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshDraw {
+    pub mesh: MeshId,
+    /// Model matrix: mesh space to world space.
+    pub model: Mat4,
+    /// Linear RGBA; ignored when `vertex_colors` is set.
+    pub color: Vec4,
+    /// Use the colours stored in the mesh's vertices.
+    pub vertex_colors: bool,
+}
+
+/// One end of a line segment, laid out as the GPU reads it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LineVertex {
+    /// World space.
+    pub position: [f32; 3],
+    /// Pulls the line towards the camera by this much normalised depth, so that an axis drawn
+    /// over a grid line at the same place wins instead of flickering (0 for ordinary lines).
+    pub depth_bias: f32,
+    /// Linear RGBA.
+    pub color: [f32; 4],
+}
+
+/// A camera-facing disc, laid out as the GPU reads it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointInstance {
+    /// World space.
+    pub center: [f32; 3],
+    /// World units.
+    pub radius: f32,
+    /// Linear RGBA.
+    pub color: [f32; 4],
+}
+
+/// A text label anchored at a 3D point; the page draws it as HTML over the canvas.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Label {
+    /// World space.
+    pub anchor: Vec3,
+    pub text: String,
+    /// Linear RGB.
+    pub color: Vec3,
+}
+
+/// Depth bias of axes and arrows (see [`LineVertex::depth_bias`]).
+pub const OVERLAY_BIAS: f32 = 2e-5;
+
+/// What to draw this frame. Scenes fill it; the renderer draws it and then calls [`Frame::clear`].
+#[derive(Clone, Debug, Default)]
+pub struct Frame {
+    pub meshes: Vec<MeshDraw>,
+    /// Two vertices per segment.
+    pub lines: Vec<LineVertex>,
+    pub points: Vec<PointInstance>,
+    pub labels: Vec<Label>,
+}
+
+impl Frame {
+    /// Draws `mesh` transformed by `model`, lit, in a uniform colour.
+    pub fn mesh(&mut self, mesh: MeshId, model: Mat4, color: Vec3) {
+        self.meshes.push(MeshDraw {
+            mesh,
+            model,
+            color: color.extend(1.0),
+            vertex_colors: false,
+        });
+    }
+
+    /// Draws `mesh` lit, with the colours stored in its vertices.
+    pub fn mesh_vertex_colors(&mut self, mesh: MeshId, model: Mat4) {
+        self.meshes.push(MeshDraw {
+            mesh,
+            model,
+            color: Vec4::ONE,
+            vertex_colors: true,
+        });
+    }
+
+    /// A line segment from `a` to `b`.
+    pub fn line(&mut self, a: Vec3, b: Vec3, color: Vec3) {
+        self.biased_line(a, b, color, 0.0);
+    }
+
+    fn biased_line(&mut self, a: Vec3, b: Vec3, color: Vec3, depth_bias: f32) {
+        let color = color.extend(1.0).to_array();
+        for p in [a, b] {
+            self.lines.push(LineVertex {
+                position: p.to_array(),
+                depth_bias,
+                color,
+            });
+        }
+    }
+
+    /// Consecutive points joined by segments (a curve, a trajectory).
+    pub fn polyline(&mut self, points: &[Vec3], color: Vec3) {
+        for pair in points.windows(2) {
+            self.line(pair[0], pair[1], color);
+        }
+    }
+
+    /// A shaded disc of `radius` (world units) always facing the camera.
+    pub fn point(&mut self, center: Vec3, radius: f32, color: Vec3) {
+        self.points.push(PointInstance {
+            center: center.to_array(),
+            radius,
+            color: color.extend(1.0).to_array(),
+        });
+    }
+
+    /// An arrow from `from` to `to`: a shaft line and a cone head whose length is `head` world
+    /// units (shortened for short arrows so the head never overshoots the tail). A zero-length
+    /// arrow draws nothing.
+    pub fn arrow(&mut self, from: Vec3, to: Vec3, color: Vec3, head: f32) {
+        let v = to - from;
+        let length = v.length();
+        if !(length > 1e-6) || !length.is_finite() {
+            return;
+        }
+        let dir = v / length;
+        let head = head.min(0.4 * length).max(0.0);
+        let base = to - dir * head;
+        self.biased_line(from, base, color, OVERLAY_BIAS);
+        let model = Mat4::from_scale_rotation_translation(
+            Vec3::new(head * 0.35, head, head * 0.35),
+            Quat::from_rotation_arc(Vec3::Y, dir),
+            base,
+        );
+        self.mesh(MeshId::CONE, model, color);
+    }
+
+    /// A text label at `anchor` (world space), drawn over the canvas by the page.
+    pub fn label(&mut self, anchor: Vec3, text: impl Into<String>, color: Vec3) {
+        self.labels.push(Label {
+            anchor,
+            text: text.into(),
+            color,
+        });
+    }
+
+    /// The x, y and z axes of the frame `m` as arrows in the palette's axis colours, each `length`
+    /// long, drawn over anything at the same depth (the grid's centre lines).
+    pub fn axes(&mut self, m: Mat4, length: f32) {
+        let o = m.transform_point3(Vec3::ZERO);
+        for (axis, color) in [
+            (Vec3::X, palette::X_AXIS),
+            (Vec3::Y, palette::Y_AXIS),
+            (Vec3::Z, palette::Z_AXIS),
+        ] {
+            let tip = o + m.transform_vector3(axis) * length;
+            self.biased_line(o, tip, color, OVERLAY_BIAS);
+        }
+    }
+
+    /// The axes of `m` as arrows with heads and x, y, z labels at their tips.
+    pub fn labelled_axes(&mut self, m: Mat4, length: f32) {
+        let o = m.transform_point3(Vec3::ZERO);
+        for (axis, color, name) in [
+            (Vec3::X, palette::X_AXIS, "x"),
+            (Vec3::Y, palette::Y_AXIS, "y"),
+            (Vec3::Z, palette::Z_AXIS, "z"),
+        ] {
+            let tip = o + m.transform_vector3(axis) * length;
+            self.arrow(o, tip, color, 0.15 * length);
+            self.label(tip, name, color);
+        }
+    }
+
+    /// A ground grid on y = 0 with `cells` cells of `spacing` metres on a side; the lines through
+    /// the origin are darker.
+    pub fn grid(&mut self, cells: u32, spacing: f32) {
+        for [a, b] in crate::mesh::grid_lines(cells, spacing) {
+            let on_axis =
+                a.x.abs() < 1e-6 && b.x.abs() < 1e-6 || a.z.abs() < 1e-6 && b.z.abs() < 1e-6;
+            let color = if on_axis {
+                palette::GRID_AXIS
+            } else {
+                palette::GRID
+            };
+            self.line(a, b, color);
+        }
+    }
+
+    /// Empties the list, keeping its capacity (no allocation next frame).
+    pub fn clear(&mut self) {
+        self.meshes.clear();
+        self.lines.clear();
+        self.points.clear();
+        self.labels.clear();
+    }
+
+    /// The segments as `(a, b, colour)`, for tests and for scenes that inspect what they drew.
+    pub fn segments(&self) -> impl Iterator<Item = (Vec3, Vec3, Vec3)> + '_ {
+        self.lines.chunks_exact(2).map(|pair| {
+            let c = pair[0].color;
+            (
+                Vec3::from(pair[0].position),
+                Vec3::from(pair[1].position),
+                Vec3::new(c[0], c[1], c[2]),
+            )
+        })
+    }
+
+    /// The segments drawn in exactly `color` (tests: "the path passes through every key").
+    pub fn segments_of(&self, color: Vec3) -> impl Iterator<Item = (Vec3, Vec3)> + '_ {
+        self.segments()
+            .filter(move |(_, _, c)| *c == color)
+            .map(|(a, b, _)| (a, b))
+    }
+}
+
+/// A label placed on screen: CSS pixels from the canvas's top-left corner.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScreenLabel {
+    pub x_px: f32,
+    pub y_px: f32,
+    /// False when the anchor is behind the camera or outside the view.
+    pub visible: bool,
+    pub text: String,
+    /// sRGB hex, `#rrggbb`, ready for CSS.
+    pub css_color: String,
+}
+
+/// Projects labels with `view_proj` (world to clip space, depth in [0, 1]) onto a canvas of
+/// `width_px × height_px` CSS pixels.
+pub fn project_labels(
+    labels: &[Label],
+    view_proj: Mat4,
+    width_px: f32,
+    height_px: f32,
+) -> Vec<ScreenLabel> {
+    labels
+        .iter()
+        .map(|label| {
+            let clip = view_proj * label.anchor.extend(1.0);
+            let ndc = clip.truncate() / clip.w;
+            let visible = clip.w > 1e-6
+                && ndc.x.abs() <= 1.05
+                && ndc.y.abs() <= 1.05
+                && (0.0..=1.0).contains(&ndc.z);
+            ScreenLabel {
+                x_px: (ndc.x * 0.5 + 0.5) * width_px,
+                y_px: (0.5 - ndc.y * 0.5) * height_px,
+                visible,
+                text: label.text.clone(),
+                css_color: palette::css(label.color),
+            }
+        })
+        .collect()
+}
+
+/// The course's named colours (linear RGB). `www/palette.css` defines the same colours as CSS
+/// classes, so a word in the text can wear the colour of the object it names.
+pub mod palette {
+    use glam::Vec3;
+
+    /// Linear RGB to `#rrggbb` (sRGB), for CSS.
+    pub fn css(color: Vec3) -> String {
+        let enc = |c: f32| {
+            let c = c.clamp(0.0, 1.0);
+            let s = if c <= 0.0031308 {
+                12.92 * c
+            } else {
+                1.055 * c.powf(1.0 / 2.4) - 0.055
+            };
+            (s * 255.0).round() as u8
+        };
+        format!(
+            "#{:02x}{:02x}{:02x}",
+            enc(color.x),
+            enc(color.y),
+            enc(color.z)
+        )
+    }
+
+    /// x axis.
+    pub const X_AXIS: Vec3 = Vec3::new(0.672443, 0.0202886, 0.021219); // #d62728
+    /// y axis.
+    pub const Y_AXIS: Vec3 = Vec3::new(0.0251869, 0.351533, 0.0251869); // #2ca02c
+    /// z axis.
+    pub const Z_AXIS: Vec3 = Vec3::new(0.0137021, 0.158961, 0.672443); // #1f6fd6
+    pub const RED: Vec3 = X_AXIS;
+    pub const GREEN: Vec3 = Y_AXIS;
+    pub const BLUE: Vec3 = Z_AXIS;
+    pub const ORANGE: Vec3 = Vec3::new(0.791298, 0.254152, 0.0); // #e68a00
+    pub const PURPLE: Vec3 = Vec3::new(0.296138, 0.0781874, 0.584078); // #944fc9
+    pub const TEAL: Vec3 = Vec3::new(0.00856813, 0.361307, 0.391572); // #17a2a8
+    pub const PINK: Vec3 = Vec3::new(0.768151, 0.109462, 0.332452); // #e35d9c
+    pub const BROWN: Vec3 = Vec3::new(0.262251, 0.093059, 0.0703601); // #8c564b
+    pub const GREY: Vec3 = Vec3::new(0.212231, 0.212231, 0.212231); // #7f7f7f
+    pub const DARK: Vec3 = Vec3::new(0.0331048, 0.0331048, 0.0331048); // #333333
+    pub const GRID: Vec3 = Vec3::new(0.57758, 0.57758, 0.57758); // #c8c8c8
+    pub const GRID_AXIS: Vec3 = Vec3::new(0.323143, 0.323143, 0.323143); // #9a9a9a
+    /// A key (keyframe, control point).
+    pub const KEY: Vec3 = Vec3::new(0.0159963, 0.0159963, 0.0159963); // #222222
+    /// The student's result, when it is drawn beside the reference.
+    pub const STUDENT: Vec3 = PINK;
+    /// The reference result.
+    pub const REFERENCE: Vec3 = GREY;
+
+    /// Every named colour with its CSS name (`var(--x-axis)` in `www/palette.css`).
+    pub const NAMED: &[(&str, Vec3)] = &[
+        ("x-axis", X_AXIS),
+        ("y-axis", Y_AXIS),
+        ("z-axis", Z_AXIS),
+        ("orange", ORANGE),
+        ("purple", PURPLE),
+        ("teal", TEAL),
+        ("pink", PINK),
+        ("brown", BROWN),
+        ("grey", GREY),
+        ("dark", DARK),
+        ("key", KEY),
+    ];
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arrow_is_a_shaft_and_a_cone_ending_at_the_tip() {
+        let mut f = Frame::default();
+        f.arrow(Vec3::ZERO, Vec3::new(0.0, 0.0, 2.0), palette::BLUE, 0.3);
+        assert_eq!(f.lines.len(), 2);
+        assert_eq!(f.meshes.len(), 1);
+        let tip = f.meshes[0].model.transform_point3(Vec3::Y);
+        assert!((tip - Vec3::new(0.0, 0.0, 2.0)).length() < 1e-5, "{tip}");
+        f.clear();
+        f.arrow(Vec3::ONE, Vec3::ONE, palette::BLUE, 0.3);
+        assert!(f.lines.is_empty() && f.meshes.is_empty());
+    }
+
+    #[test]
+    fn palette_matches_its_css_twin() {
+        // www/palette.css must give the words of the text these very colours.
+        let css = include_str!("../www/palette.css");
+        for (name, color) in palette::NAMED {
+            let hex = palette::css(*color);
+            let rule = format!("--{name}: {hex};");
+            assert!(css.contains(&rule), "www/palette.css lacks `{rule}`");
+        }
+    }
+
+    #[test]
+    fn labels_project_to_the_centre_and_hide_behind_the_camera() {
+        let cam = crate::camera::OrbitCamera::default();
+        let vp = cam.projection(2.0) * cam.view();
+        let out = project_labels(
+            &[
+                Label {
+                    anchor: cam.target,
+                    text: "c".into(),
+                    color: Vec3::ONE,
+                },
+                Label {
+                    anchor: cam.eye() + (cam.eye() - cam.target),
+                    text: "b".into(),
+                    color: Vec3::ONE,
+                },
+            ],
+            vp,
+            200.0,
+            100.0,
+        );
+        assert!((out[0].x_px - 100.0).abs() < 1e-3 && (out[0].y_px - 50.0).abs() < 1e-3);
+        assert!(out[0].visible);
+        assert!(!out[1].visible);
+    }
+
+    #[test]
+    fn axes_win_over_the_grid_lines_beneath_them() {
+        let mut f = Frame::default();
+        f.grid(4, 1.0);
+        f.axes(Mat4::IDENTITY, 1.0);
+        let (grid, axes): (Vec<&LineVertex>, Vec<&LineVertex>) =
+            f.lines.iter().partition(|v| v.depth_bias == 0.0);
+        assert_eq!(axes.len(), 6);
+        assert!(!grid.is_empty());
+    }
+}

@@ -1,0 +1,397 @@
+//! Running a student's exercise from a figure, so that a panic in it cannot take the page down.
+//!
+//! # Why this indirection
+//! On wasm a Rust panic aborts: the module instance traps, and every figure that lives in it
+//! stops for good. So the figures never call a student's function directly. A scene holds a
+//! [`Runner`] and calls the exercise through the typed wrappers below (`run::slerp(runner, a, b,
+//! t)`), which flatten the arguments into `f32`s and call the runner by the exercise's name:
+//!
+//! - natively (tests, the grader) the runner is [`direct`]: it decodes the arguments and calls the
+//!   exercise in the same process;
+//! - in the page the runner is `web::sandbox::run`, which hands the numbers to a *second*
+//!   instance of the same wasm module (the sandbox, created by `www/lesson.js`). If the student's
+//!   code panics there, only the sandbox dies: the page catches the trap, keeps the panic message,
+//!   starts a fresh sandbox, and the figure gets [`Failure::Panicked`], falls back to the reference
+//!   and says so next to itself. The figures' own instance never runs student code.
+//!
+//! Tests can pass any other runner, for instance one that returns a deliberately wrong answer, to
+//! check what a figure says about it.
+
+use super::Answer;
+use crate::rigid::DualQuat;
+use glam::{Mat3, Mat4, Quat, Vec3};
+
+/// Why a student's exercise gave no answer.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Failure {
+    /// The exercise still returns `Err(NotDone)`.
+    NotDone,
+    /// It panicked; the message says where (`file:line`) and why.
+    Panicked(String),
+    /// The call itself went wrong (unknown exercise, arguments that do not decode): a bug.
+    Call(String),
+}
+
+impl std::fmt::Display for Failure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Failure::NotDone => f.write_str("not done yet"),
+            Failure::Panicked(m) => write!(f, "panicked: {m}"),
+            Failure::Call(m) => write!(f, "could not be called: {m}"),
+        }
+    }
+}
+
+/// Calls the exercise named `name` on flattened arguments and returns its flattened answer.
+pub type Runner = fn(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure>;
+
+/// A value that travels between module instances as a run of `f32`s.
+pub trait Flat: Sized {
+    fn put(&self, out: &mut Vec<f32>);
+    /// Reads one value from the front of `input` and advances it; `None` if there are too few.
+    fn take(input: &mut &[f32]) -> Option<Self>;
+}
+
+fn take_n<const N: usize>(input: &mut &[f32]) -> Option<[f32; N]> {
+    if input.len() < N {
+        return None;
+    }
+    let (head, rest) = input.split_at(N);
+    *input = rest;
+    head.try_into().ok()
+}
+
+impl Flat for f32 {
+    fn put(&self, out: &mut Vec<f32>) {
+        out.push(*self);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        take_n::<1>(input).map(|[x]| x)
+    }
+}
+
+/// Indices and counts (exact as `f32` up to 2²⁴).
+impl Flat for usize {
+    fn put(&self, out: &mut Vec<f32>) {
+        out.push(*self as f32);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        let x = f32::take(input)?;
+        (x >= 0.0 && x.fract() == 0.0).then_some(x as usize)
+    }
+}
+
+impl Flat for () {
+    fn put(&self, _: &mut Vec<f32>) {}
+    fn take(_: &mut &[f32]) -> Option<Self> {
+        Some(())
+    }
+}
+
+impl<const N: usize> Flat for [f32; N] {
+    fn put(&self, out: &mut Vec<f32>) {
+        out.extend_from_slice(self);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        take_n::<N>(input)
+    }
+}
+
+impl Flat for Vec3 {
+    fn put(&self, out: &mut Vec<f32>) {
+        self.to_array().put(out);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        take_n::<3>(input).map(Vec3::from_array)
+    }
+}
+
+impl Flat for Quat {
+    fn put(&self, out: &mut Vec<f32>) {
+        self.to_array().put(out);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        take_n::<4>(input).map(Quat::from_array)
+    }
+}
+
+impl Flat for Mat3 {
+    fn put(&self, out: &mut Vec<f32>) {
+        self.to_cols_array().put(out);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        take_n::<9>(input).map(|a| Mat3::from_cols_array(&a))
+    }
+}
+
+impl Flat for Mat4 {
+    fn put(&self, out: &mut Vec<f32>) {
+        self.to_cols_array().put(out);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        take_n::<16>(input).map(|a| Mat4::from_cols_array(&a))
+    }
+}
+
+impl Flat for DualQuat {
+    fn put(&self, out: &mut Vec<f32>) {
+        self.real.put(out);
+        self.dual.put(out);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        Some(DualQuat {
+            real: Quat::take(input)?,
+            dual: Quat::take(input)?,
+        })
+    }
+}
+
+/// A length, then the items.
+impl<T: Flat> Flat for Vec<T> {
+    fn put(&self, out: &mut Vec<f32>) {
+        self.len().put(out);
+        for x in self {
+            x.put(out);
+        }
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        let n = usize::take(input)?;
+        if n > input.len() {
+            return None; // every item takes at least one number
+        }
+        (0..n).map(|_| T::take(input)).collect()
+    }
+}
+
+impl<A: Flat, B: Flat> Flat for (A, B) {
+    fn put(&self, out: &mut Vec<f32>) {
+        self.0.put(out);
+        self.1.put(out);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        Some((A::take(input)?, B::take(input)?))
+    }
+}
+
+/// Declares each exercise once: its typed wrapper (for scenes) and its arm in [`direct`].
+macro_rules! exercises {
+    ($( $(#[$doc:meta])* fn $name:ident($($arg:ident: $ty:ty),*) -> $ret:ty = $call:expr; )*) => {
+        $(
+            $(#[$doc])*
+            pub fn $name(run: Runner, $($arg: $ty),*) -> Result<$ret, Failure> {
+                let mut args = Vec::new();
+                $( Flat::put(&$arg, &mut args); )*
+                let out = run(stringify!($name), &args)?;
+                let mut rest = &out[..];
+                <$ret as Flat>::take(&mut rest)
+                    .filter(|_| rest.is_empty())
+                    .ok_or_else(|| Failure::Call(format!("{}: malformed answer", stringify!($name))))
+            }
+        )*
+
+        /// The names of every exercise a figure can run.
+        pub const NAMES: &[&str] = &[$(stringify!($name)),*];
+
+        /// Runs the exercise `name` in this instance (natively, and inside the page's sandbox).
+        pub fn direct(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+            match name {
+                $(
+                    stringify!($name) => {
+                        let mut rest = args;
+                        $(
+                            let $arg = <$ty as Flat>::take(&mut rest).ok_or_else(|| {
+                                Failure::Call(format!("{}: bad argument {}", name, stringify!($arg)))
+                            })?;
+                        )*
+                        let answer: Answer<$ret> = $call;
+                        let mut out = Vec::new();
+                        answer.map_err(|_| Failure::NotDone)?.put(&mut out);
+                        Ok(out)
+                    }
+                )*
+                _ => Err(Failure::Call(format!("no exercise named {name:?}"))),
+            }
+        }
+    };
+}
+
+use super::{curves as c, rotations as r, transforms as tr};
+
+exercises! {
+    /// Exercise 1.1, [`tr::local_matrix`].
+    fn local_matrix(translation: Vec3, euler_xyz_rad: Vec3) -> Mat4 =
+        tr::local_matrix(translation, euler_xyz_rad);
+    /// Exercise 1.2, [`tr::world_matrices`]: parents as `f32`s (exact), one world matrix per joint.
+    fn world_matrices(parents: Vec<f32>, local: Vec<Mat4>) -> Vec<Mat4> = {
+        let parents: Vec<i32> = parents.iter().map(|&p| p as i32).collect();
+        let mut world = vec![Mat4::IDENTITY; local.len()];
+        tr::world_matrices(&parents, &local, &mut world).map(|()| world)
+    };
+    /// Exercise 2.1, [`c::hermite_basis`].
+    fn hermite_basis(s: f32) -> [f32; 4] = c::hermite_basis(s);
+    /// Exercise 2.2, [`c::cardinal_tangents`]: one tangent per key.
+    fn cardinal_tangents(times: Vec<f32>, values: Vec<f32>, mu: f32) -> Vec<f32> = {
+        let mut out = vec![0.0; values.len()];
+        c::cardinal_tangents(&times, &values, mu, &mut out).map(|()| out)
+    };
+    /// Exercise 2.3, [`c::find_segment`].
+    fn find_segment(times: Vec<f32>, t: f32) -> usize = c::find_segment(&times, t);
+    /// Exercise 2.4, [`c::arc_length_invert`].
+    fn arc_length_invert(params: Vec<f32>, lengths: Vec<f32>, s: f32) -> f32 =
+        c::arc_length_invert(&params, &lengths, s);
+    /// Exercise 3.1, [`r::quat_from_axis_angle`].
+    fn quat_from_axis_angle(axis: Vec3, angle_rad: f32) -> Quat =
+        r::quat_from_axis_angle(axis, angle_rad);
+    /// Exercise 3.2, [`r::slerp`].
+    fn slerp(a: Quat, b: Quat, t: f32) -> Quat = r::slerp(a, b, t);
+    /// Exercise 3.3, [`r::rodrigues_matrix`].
+    fn rodrigues_matrix(axis: Vec3, angle_rad: f32) -> Mat3 = r::rodrigues_matrix(axis, angle_rad);
+    /// Exercise 4.1, [`r::dual_quat_apply`].
+    fn dual_quat_apply(rotation: Quat, translation: Vec3, point: Vec3) -> (DualQuat, Vec3) =
+        r::dual_quat_apply(rotation, translation, point);
+    /// Exercise 4.2, [`r::polar_step`].
+    fn polar_step(m: Mat3) -> Mat3 = r::polar_step(m);
+}
+
+/// How a figure's note compares the student's answer with the reference at the current inputs.
+/// `max_error` is the largest absolute difference; returns "matches the reference" or
+/// "differs at <where>: yours (…), reference (…)".
+pub fn compare_note(
+    what: &str,
+    at: &str,
+    yours: &[f32],
+    reference: &[f32],
+    tolerance: f32,
+) -> (bool, String) {
+    let max_error = yours
+        .iter()
+        .zip(reference)
+        .map(|(a, b)| (a - b).abs())
+        .fold(
+            0.0f32,
+            |m, e| if e.is_nan() { f32::INFINITY } else { m.max(e) },
+        );
+    let fmt = |v: &[f32]| {
+        v.iter()
+            .map(|x| format_number(*x))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if yours.len() == reference.len() && max_error <= tolerance {
+        (true, format!("Your {what} matches the reference at {at}."))
+    } else {
+        (
+            false,
+            format!(
+                "Your {what} differs at {at}: yours ({}), reference ({}).",
+                fmt(yours),
+                fmt(reference)
+            ),
+        )
+    }
+}
+
+/// A number for a note: 3 decimals, no "-0.000", scientific only when huge or tiny but not zero.
+pub fn format_number(x: f32) -> String {
+    if !x.is_finite() {
+        return format!("{x}");
+    }
+    let a = x.abs();
+    if a != 0.0 && !(1e-3..1e5).contains(&a) {
+        return format!("{x:.3e}");
+    }
+    let s = format!("{x:.3}");
+    if s.trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
+        "0.000".to_string()
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        match name {
+            "slerp" => Ok(vec![0.0, 0.0, 0.0, 1.0]),
+            _ => direct(name, args),
+        }
+    }
+
+    fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+        Err(Failure::Panicked(
+            "index out of bounds (src/exercises/rotations.rs:42:5)".into(),
+        ))
+    }
+
+    #[test]
+    fn values_round_trip_through_the_flat_form() {
+        let dq = DualQuat {
+            real: Quat::from_rotation_y(0.3),
+            dual: Quat::from_xyzw(0.1, 0.2, 0.3, 0.0),
+        };
+        let v = (dq, Vec3::new(1.0, 2.0, 3.0));
+        let mut out = Vec::new();
+        v.put(&mut out);
+        let mut rest = &out[..];
+        assert_eq!(<(DualQuat, Vec3)>::take(&mut rest), Some(v));
+        assert!(rest.is_empty());
+        let list = vec![Mat4::IDENTITY, Mat4::from_translation(Vec3::X)];
+        let mut out = Vec::new();
+        list.put(&mut out);
+        assert_eq!(Vec::<Mat4>::take(&mut &out[..]), Some(list));
+        assert_eq!(
+            Vec::<f32>::take(&mut &[1e9_f32][..]),
+            None,
+            "a length past the data"
+        );
+        assert_eq!(usize::take(&mut &[-1.0_f32][..]), None);
+    }
+
+    #[test]
+    fn direct_runs_each_exercise_and_reports_stubs() {
+        let got = slerp(direct, Quat::IDENTITY, Quat::from_rotation_z(1.0), 0.5);
+        if cfg!(feature = "solutions") {
+            let q = got.unwrap();
+            assert!(q.angle_between(Quat::from_rotation_z(0.5)) < 1e-5);
+        } else {
+            assert_eq!(got, Err(Failure::NotDone));
+        }
+        assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
+        assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
+        assert_eq!(NAMES.len(), 11);
+    }
+
+    #[test]
+    fn other_runners_reach_the_figure() {
+        let q = slerp(wrong, Quat::IDENTITY, Quat::from_rotation_z(1.0), 0.5).unwrap();
+        assert_eq!(q, Quat::IDENTITY);
+        assert!(matches!(
+            slerp(panics, Quat::IDENTITY, Quat::IDENTITY, 0.5),
+            Err(Failure::Panicked(m)) if m.contains("rotations.rs:42")
+        ));
+    }
+
+    #[test]
+    fn notes_say_match_or_differ_with_both_values() {
+        let (ok, note) = compare_note("slerp", "t = 0.25", &[0.0, 1.0], &[0.0, 1.0000001], 1e-4);
+        assert!(ok, "{note}");
+        assert!(note.contains("matches the reference"));
+        let (ok, note) = compare_note("slerp", "t = 0.25", &[0.0, -0.0], &[0.5, 1.0], 1e-4);
+        assert!(!ok);
+        assert_eq!(
+            note,
+            "Your slerp differs at t = 0.25: yours (0.000, 0.000), reference (0.500, 1.000)."
+        );
+        let (ok, _) = compare_note("x", "y", &[f32::NAN], &[0.0], 1e-4);
+        assert!(!ok, "NaN never matches");
+        assert_eq!(format_number(-1e-9), "-1.000e-9");
+        assert_eq!(format_number(-0.0001), "-1.000e-4");
+        assert_eq!(format_number(-0.0), "0.000");
+        assert_eq!(format_number(1e38), "1.000e38");
+    }
+}

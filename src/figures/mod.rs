@@ -1,0 +1,141 @@
+//! Figure logic, one module per lesson: scene state, validation of what the page passes, the
+//! samples behind the plots, and what each figure draws (into a [`Frame`]). Plain Rust, so
+//! `cargo test` checks it natively ("the drawn path passes through every key"); `web/` only wraps
+//! these types for JavaScript and turns their `Err(String)` into `JsError`.
+//!
+//! Figures that can run a student's exercise hold a [`Runner`] (see [`crate::exercises::run`]) and
+//! say, next to the figure, whether the student's answer matches the reference at the current
+//! inputs (helpers below).
+
+pub mod curves;
+pub mod rigid;
+pub mod rotations;
+pub mod transforms;
+
+pub use crate::draw::{palette, Frame, MeshId};
+pub use crate::exercises::run::{compare_note, format_number, Failure, Runner};
+use glam::{Mat3, Quat};
+
+/// The runner figures start with: natively the exercise runs in-process; the web layer swaps in
+/// `web::sandbox::run`.
+pub const DEFAULT_RUNNER: Runner = crate::exercises::run::direct;
+
+/// An error unless `value` is finite. Messages name the parameter, for the page.
+pub fn finite(name: &str, value: f32) -> Result<f32, String> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(format!("{name} must be a finite number, got {value}"))
+    }
+}
+
+/// An error unless `value` lies in `[lo, hi]` (and is finite).
+pub fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, String> {
+    finite(name, value)?;
+    if (lo..=hi).contains(&value) {
+        Ok(value)
+    } else {
+        Err(format!("{name} must lie in [{lo}, {hi}], got {value}"))
+    }
+}
+
+/// The most samples a plot may ask for.
+pub const MAX_SAMPLES: usize = 10_000;
+
+/// An error unless a plot asks for between 2 and [`MAX_SAMPLES`] samples.
+pub fn check_samples(samples: usize) -> Result<(), String> {
+    if (2..=MAX_SAMPLES).contains(&samples) {
+        Ok(())
+    } else {
+        Err(format!(
+            "samples must be between 2 and {MAX_SAMPLES}, got {samples}"
+        ))
+    }
+}
+
+/// What a figure says when the student's exercise gave no answer; the figure then uses the
+/// reference. `exercise` reads like "exercise 3.2 slerp", `file` like "src/exercises/rotations.rs".
+pub fn failure_note(exercise: &str, file: &str, failure: &Failure) -> String {
+    match failure {
+        Failure::NotDone => {
+            format!("Not done yet: {exercise} ({file}). The figure uses the reference.")
+        }
+        Failure::Panicked(message) => format!(
+            "Your {exercise} panicked: {message}. The figure uses the reference; fix the code, \
+             rebuild and reload the page."
+        ),
+        Failure::Call(message) => {
+            format!("Could not run your {exercise}: {message}. The figure uses the reference.")
+        }
+    }
+}
+
+/// What is wrong with a matrix that should be a rotation: `None` when it is orthonormal with
+/// determinant 1 (to `tolerance`), else a sentence with the numbers.
+pub fn rotation_problem(m: Mat3, tolerance: f32) -> Option<String> {
+    let off = (m.transpose() * m - Mat3::IDENTITY)
+        .to_cols_array()
+        .iter()
+        .fold(0.0f32, |a, x| a.max(x.abs()));
+    let det = m.determinant();
+    if !(off <= tolerance) {
+        Some(format!(
+            "it is not a rotation: its columns are not orthonormal (largest entry of MᵀM − I is {})",
+            format_number(off)
+        ))
+    } else if !((det - 1.0).abs() <= tolerance) {
+        Some(format!(
+            "it is not a rotation: its determinant is {}, not 1",
+            format_number(det)
+        ))
+    } else {
+        None
+    }
+}
+
+/// What is wrong with a quaternion that should be a unit quaternion, or `None`.
+pub fn unit_quat_problem(q: Quat, tolerance: f32) -> Option<String> {
+    let len = q.length();
+    if !((len - 1.0).abs() <= tolerance) {
+        Some(format!(
+            "it is not a unit quaternion: its length is {}",
+            format_number(len)
+        ))
+    } else {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn validity_checks_name_the_problem() {
+        assert_eq!(rotation_problem(Mat3::from_rotation_y(0.7), 1e-4), None);
+        let scaled = Mat3::from_diagonal(glam::Vec3::new(1.0, 2.0, 1.0));
+        assert!(rotation_problem(scaled, 1e-4)
+            .unwrap()
+            .contains("orthonormal"));
+        let mirror = Mat3::from_diagonal(glam::Vec3::new(1.0, 1.0, -1.0));
+        assert!(rotation_problem(mirror, 1e-4)
+            .unwrap()
+            .contains("determinant is -1.000"));
+        assert!(rotation_problem(Mat3::NAN, 1e-4).is_some());
+        assert_eq!(unit_quat_problem(Quat::from_rotation_x(1.0), 1e-4), None);
+        assert!(unit_quat_problem(Quat::from_xyzw(0.0, 0.0, 0.0, 2.0), 1e-4).is_some());
+        assert!(unit_quat_problem(Quat::NAN, 1e-4).is_some());
+    }
+
+    #[test]
+    fn failure_notes_say_what_happened() {
+        let n = failure_note(
+            "exercise 3.2 slerp",
+            "src/exercises/rotations.rs",
+            &Failure::NotDone,
+        );
+        assert!(n.starts_with("Not done yet: exercise 3.2 slerp"));
+        let n = failure_note("exercise 3.2 slerp", "f", &Failure::Panicked("boom".into()));
+        assert!(n.contains("panicked: boom") && n.contains("reference"));
+    }
+}

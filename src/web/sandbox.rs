@@ -1,0 +1,86 @@
+//! The page side of [`crate::exercises::run`]: student code runs in a second module instance.
+//!
+//! `www/lesson.js` loads the same wasm twice: once for the figures, once as the *sandbox*, and
+//! publishes `globalThis.__inbetweenSandbox = { call(name, args) }`. A figure's [`run`] hands
+//! the flattened arguments to that object, which calls [`run_exercise`] in the sandbox. A panic
+//! there traps only the sandbox: the shell records the message (from [`install_panic_hook`]),
+//! answers this call and later calls of the same exercise with a `panic` error, and starts a fresh
+//! sandbox for the other exercises. Without a sandbox (browser unit tests, the bench page) the
+//! exercise runs in this instance.
+
+use crate::exercises::run::{self, Failure};
+use wasm_bindgen::prelude::*;
+
+#[wasm_bindgen]
+extern "C" {
+    /// `__inbetweenSandbox.call(name, args)`: a Float32Array, or throws `{ kind, message }`.
+    #[wasm_bindgen(catch, js_namespace = __inbetweenSandbox, js_name = call)]
+    fn sandbox_call(name: &str, args: &[f32]) -> Result<js_sys::Float32Array, JsValue>;
+
+    /// `__inbetweenPanic(message)`: true when the shell took care of the panic (a sandbox call).
+    #[wasm_bindgen(catch, js_name = __inbetweenPanic)]
+    fn report_panic(message: &str) -> Result<JsValue, JsValue>;
+}
+
+fn sandbox_present() -> bool {
+    js_sys::Reflect::has(&js_sys::global(), &JsValue::from_str("__inbetweenSandbox"))
+        .unwrap_or(false)
+}
+
+/// The [`run::Runner`] the figures use in the page.
+pub fn run(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if !sandbox_present() {
+        return run::direct(name, args);
+    }
+    match sandbox_call(name, args) {
+        Ok(out) => Ok(out.to_vec()),
+        Err(e) => {
+            let field = |key: &str| {
+                js_sys::Reflect::get(&e, &JsValue::from_str(key))
+                    .ok()
+                    .and_then(|v| v.as_string())
+                    .unwrap_or_default()
+            };
+            let message = field("message");
+            Err(match field("kind").as_str() {
+                "not-done" => Failure::NotDone,
+                "panic" => Failure::Panicked(message),
+                _ => Failure::Call(if message.is_empty() {
+                    format!("{e:?}")
+                } else {
+                    message
+                }),
+            })
+        }
+    }
+}
+
+/// Runs the exercise `name` in *this* instance (the sandbox). A stub throws an error whose message
+/// is `not-done`; a panic traps (the shell catches it).
+#[wasm_bindgen(js_name = runExercise)]
+pub fn run_exercise(name: &str, args: &[f32]) -> Result<Vec<f32>, JsError> {
+    match run::direct(name, args) {
+        Ok(out) => Ok(out),
+        Err(Failure::NotDone) => Err(JsError::new("not-done")),
+        Err(other) => Err(JsError::new(&other.to_string())),
+    }
+}
+
+/// The names of the exercises a figure can run (for the shell and the tests).
+#[wasm_bindgen(js_name = exerciseNames)]
+pub fn exercise_names() -> Vec<String> {
+    run::NAMES.iter().map(|s| s.to_string()).collect()
+}
+
+/// Panics go to the page first (which shows the message where it belongs), then to the console
+/// unless the page took care of them.
+pub fn install_panic_hook() {
+    std::panic::set_hook(Box::new(|info| {
+        let handled = report_panic(&info.to_string())
+            .map(|v| v.as_bool() == Some(true))
+            .unwrap_or(false);
+        if !handled {
+            console_error_panic_hook::hook(info);
+        }
+    }));
+}
