@@ -1,11 +1,18 @@
 // Shared lesson shell: loads the wasm, shows errors, renders formulas, creates figures, runs the
-// frame loop, and builds the timeline, plots and "view source" list. Lesson pages import it.
+// frame loop, places figure labels, and builds the timeline, plots and "view source" list. Lesson
+// pages import it.
 import init, { Viewer, buildInfo } from '../pkg/inbetween.js';
 import GUI from '../vendor/lil-gui/lil-gui.esm.min.js';
 
 export { GUI };
 
-const state = { errors: [], figures: [], frameCallbacks: [], running: true, dead: false };
+const state = {
+  errors: [], figures: [], frameCallbacks: [], running: true, dead: false,
+  /** The last panic message of the figures' own instance (a bug, not student code). */
+  panic: null,
+  /** Exercises that panicked in the sandbox this page load: name -> message. */
+  panickedExercises: {},
+};
 // For tests and for the curious: what went wrong, which backend each figure uses.
 window.__inbetween = state;
 
@@ -72,27 +79,126 @@ async function buildSourceView() {
   }
 }
 
+// ---- Student code in its own module instance --------------------------------------------------
+//
+// A Rust panic on wasm aborts its module instance: every object in it is stuck for good. So the
+// page loads the same compiled module twice. The figures live in the first instance; the
+// student's exercises run in the second, the *sandbox* (see src/exercises/run.rs and
+// src/web/sandbox.rs). A figure calls `__inbetweenSandbox.call(name, args)` with the exercise's
+// arguments as numbers. If the student's code panics, only the sandbox traps: we keep the panic
+// message (the panic hook hands it to `__inbetweenPanic` before the trap), answer this call and
+// every later call of that exercise with it (the figure falls back to the reference and says so
+// beside itself), and swap in a spare sandbox, instantiated in advance so the swap is immediate,
+// for the other exercises. Reloading the page after fixing the code starts clean.
+const sandbox = { module: null, current: null, spare: null, generation: 0, calling: null, lastPanic: null };
+// For the tests and the curious.
+state.sandbox = sandbox;
+
 /**
- * Starts a lesson: loads the wasm module, installs the error banner, renders formulas and the
- * source list. Resolves to an object with `figure(selector)` and `onFrame(callback)`.
+ * A fresh sandbox: a new copy of the JS glue (each import URL is a separate module, with its own
+ * instance), instantiated asynchronously (browsers refuse to instantiate large modules
+ * synchronously on the main thread).
+ */
+async function newSandbox() {
+  sandbox.generation += 1;
+  const glue = await import(`../pkg/inbetween.js?sandbox=${sandbox.generation}`);
+  await glue.default({ module_or_path: sandbox.module });
+  return glue;
+}
+
+/** Swaps in the spare sandbox (ready in advance, so the swap is immediate) and prepares another. */
+function replaceSandbox() {
+  sandbox.current = sandbox.spare;
+  sandbox.spare = null;
+  newSandbox().then((glue) => {
+    if (sandbox.current) sandbox.spare = glue;
+    else sandbox.current = glue;
+  }).catch(showError);
+}
+
+function callExercise(name, args) {
+  const previous = state.panickedExercises[name];
+  if (previous) throw { kind: 'panic', message: previous };
+  if (!sandbox.current) throw { kind: 'call', message: 'the exercise sandbox is starting; try again in a moment' };
+  sandbox.calling = name;
+  sandbox.lastPanic = null;
+  try {
+    return sandbox.current.runExercise(name, args);
+  } catch (e) {
+    if (e instanceof WebAssembly.RuntimeError) {
+      const message = sandbox.lastPanic ?? String(e);
+      state.panickedExercises[name] = message;
+      console.warn(`inbetween: your exercise ${name} panicked: ${message}`);
+      replaceSandbox();
+      throw { kind: 'panic', message };
+    }
+    const message = String(e?.message ?? e);
+    throw { kind: message === 'not-done' ? 'not-done' : 'call', message };
+  } finally {
+    sandbox.calling = null;
+  }
+}
+
+/** Called by the Rust panic hook of either instance. True: the panic is the sandbox's, handled. */
+globalThis.__inbetweenPanic = (message) => {
+  if (sandbox.calling) {
+    sandbox.lastPanic = message;
+    return true;
+  }
+  state.panic = message;
+  return false;
+};
+
+async function loadModules() {
+  const url = new URL('../pkg/inbetween_bg.wasm', import.meta.url);
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url.pathname}: HTTP ${response.status}`);
+  sandbox.module = await WebAssembly.compile(await response.arrayBuffer());
+  await init({ module_or_path: sandbox.module });
+  [sandbox.current, sandbox.spare] = await Promise.all([newSandbox(), newSandbox()]);
+  globalThis.__inbetweenSandbox = { call: callExercise };
+}
+
+/**
+ * Starts a lesson: loads the wasm module (and the sandbox for student code), installs the error
+ * banner, renders formulas and the source list. Resolves to an object with `figure(selector)` and
+ * `onFrame(callback)`.
  */
 export async function startLesson() {
   installErrorHandlers();
   renderMath();
   buildSourceView().catch(showError);
   try {
-    await init();
+    await loadModules();
   } catch (e) {
     showError(`Could not load the lesson's WebAssembly module: ${e}`);
     throw e;
   }
   document.getElementById('build-info')?.replaceChildren(buildInfo());
+  styleExerciseNotes();
   document.addEventListener('visibilitychange', () => {
     state.running = !document.hidden;
     if (state.running) requestAnimationFrame(tick);
   });
   requestAnimationFrame(tick);
   return { figure: createFigure, onFrame: (cb) => state.frameCallbacks.push(cb) };
+}
+
+/**
+ * Colours each figure's exercise note by what it says: green when the student's answer matches
+ * the reference, red when it differs or panicked (the words come from src/figures/mod.rs).
+ */
+function styleExerciseNotes() {
+  for (const note of document.querySelectorAll('.exercise-note, .note')) {
+    const update = () => {
+      const text = note.textContent;
+      note.classList.toggle('matches', /matches the reference/.test(text) && !/differs|panicked/.test(text));
+      note.classList.toggle('differs', /differs|not a rotation|not a unit/.test(text));
+      note.classList.toggle('panicked', /panicked/.test(text));
+    };
+    new MutationObserver(update).observe(note, { childList: true, characterData: true, subtree: true });
+    update();
+  }
 }
 
 let lastMs = null;
@@ -105,13 +211,59 @@ function tick(nowMs) {
   lastMs = nowMs;
   try {
     for (const cb of state.frameCallbacks) cb(dt);
+    for (const figure of state.figures) figure.placeLabels?.();
   } catch (e) {
-    // A panic leaves the wasm module unusable: stop drawing rather than flood the banner.
+    // A panic in the figures' own instance (a bug, never student code: that runs in the sandbox)
+    // leaves it unusable: stop drawing rather than flood the banner, and say what happened.
     state.dead = true;
-    showError(e);
+    showError(state.panic ? `The figures stopped: ${state.panic}` : e);
     return;
   }
   requestAnimationFrame(tick);
+}
+
+/** Probes WebGPU once per page, so that WebGL2-only browsers log "No available adapters" once. */
+let webgpuProbe = null;
+function webgpuAvailable() {
+  webgpuProbe ??= (async () => {
+    try {
+      return Boolean(navigator.gpu && (await navigator.gpu.requestAdapter()));
+    } catch {
+      return false;
+    }
+  })();
+  return webgpuProbe;
+}
+
+/**
+ * An HTML layer over the canvas with one element per label of the viewer's last frame (labels are
+ * anchored at 3D points by the scene; the viewer projects them). Returns the per-frame updater.
+ */
+function labelLayer(canvas, viewer) {
+  const layer = document.createElement('div');
+  layer.className = 'labels';
+  layer.setAttribute('aria-hidden', 'true');
+  canvas.after(layer);
+  let shown = '';
+  return () => {
+    const json = viewer.labelsJson();
+    if (json === shown) return;
+    shown = json;
+    const labels = JSON.parse(json);
+    layer.style.left = `${canvas.offsetLeft}px`;
+    layer.style.top = `${canvas.offsetTop}px`;
+    layer.style.width = `${canvas.clientWidth}px`;
+    layer.style.height = `${canvas.clientHeight}px`;
+    while (layer.children.length < labels.length) layer.append(document.createElement('span'));
+    [...layer.children].forEach((el, i) => {
+      const label = labels[i];
+      el.hidden = !label || !label.visible;
+      if (el.hidden) return;
+      el.textContent = label.text;
+      el.style.color = label.color;
+      el.style.transform = `translate(${label.x.toFixed(1)}px, ${label.y.toFixed(1)}px)`;
+    });
+  };
 }
 
 /**
@@ -128,7 +280,9 @@ async function createFigure(selector) {
   box.append(badge);
   let viewer;
   try {
-    viewer = await Viewer.create(canvas, requestedBackend());
+    let backend = requestedBackend();
+    if (backend === 'auto' && !(await webgpuAvailable())) backend = 'webgl2';
+    viewer = await Viewer.create(canvas, backend);
   } catch (e) {
     const note = document.createElement('div');
     note.className = 'no-gpu';
@@ -154,7 +308,7 @@ async function createFigure(selector) {
   };
   new ResizeObserver(resize).observe(canvas);
   resize();
-  state.figures.push({ selector, backend: viewer.backend });
+  state.figures.push({ selector, backend: viewer.backend, placeLabels: labelLayer(canvas, viewer) });
   return viewer;
 }
 
@@ -258,20 +412,46 @@ export class Timeline {
 }
 
 /**
- * A line plot of curves over time (uPlot). `series` names the curves, `colors` (optional) matches
- * them to the figure's colours; `setData([xs, ys1, ys2…])`.
- * A vertical cursor can follow the timeline with `setCursor(x)`.
+ * A line plot (uPlot) of curves against time or a parameter.
+ *   new Plot(element, { title, xLabel: 'time (s)', yLabel: 'height (m)', series: ['a', 'b'],
+ *                       colors: ['#d62728', …], minSpan: 0.1, height: 180 })
+ * `setData([xs, ys1, ys2…])` replaces the curves; `setCursor(x)` draws a vertical playhead at `x`
+ * (call it every frame with the timeline's time; `null` hides it). Every y axis is labelled with its
+ * quantity and unit; the y range is never smaller than `minSpan`, so a constant signal is not
+ * autoscaled onto float noise.
  */
 export class Plot {
-  constructor(element, { title, xLabel, series, colors = ['#2563eb', '#dc2626', '#059669', '#9333ea'], height = 180 }) {
+  constructor(element, { title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3 }) {
+    if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
+    this.cursor = null;
+    const cursorLine = (u) => {
+      if (this.cursor === null || !Number.isFinite(this.cursor)) return;
+      const x = u.valToPos(this.cursor, 'x', true);
+      if (x < u.bbox.left || x > u.bbox.left + u.bbox.width) return;
+      const ctx = u.ctx;
+      ctx.save();
+      ctx.strokeStyle = '#1f2430';
+      ctx.lineWidth = 1.5 * devicePixelRatio;
+      ctx.setLineDash([4 * devicePixelRatio, 3 * devicePixelRatio]);
+      ctx.beginPath();
+      ctx.moveTo(x, u.bbox.top);
+      ctx.lineTo(x, u.bbox.top + u.bbox.height);
+      ctx.stroke();
+      ctx.restore();
+    };
     this.plot = new window.uPlot({
       title,
       width: element.clientWidth || 560,
       height,
-      scales: { x: { time: false } },
-      axes: [{ label: xLabel }, {}],
+      scales: {
+        x: { time: false },
+        y: { range: (u, lo, hi) => paddedRange(lo, hi, minSpan) },
+      },
+      axes: [{ label: xLabel }, { label: yLabel, size: 60 }],
       series: [{ label: xLabel }, ...series.map((label, i) => ({ label, stroke: colors[i % colors.length], width: 2 }))],
+      hooks: { draw: [cursorLine] },
     }, [[0], ...series.map(() => [0])], element);
+    element.dataset.plot = title ?? '';
     let width = element.clientWidth;
     new ResizeObserver(() => requestAnimationFrame(() => {
       if (element.clientWidth !== width) {
@@ -283,6 +463,27 @@ export class Plot {
   setData(columns) {
     this.plot.setData(columns);
   }
+  /** Moves the playhead to `x` (in the x axis's unit); redraws only when it moved. */
+  setCursor(x) {
+    if (x === this.cursor) return;
+    this.cursor = x;
+    this.plot.redraw(false, false);
+  }
+}
+
+/** The palette of www/palette.css, in the order plots use it. */
+export const PLOT_COLORS = ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#e68a00', '#17a2a8', '#e35d9c', '#8c564b'];
+
+/** The y range for data in [lo, hi]: at least `minSpan` tall, padded by 5 %. */
+export function paddedRange(lo, hi, minSpan) {
+  if (!Number.isFinite(lo) || !Number.isFinite(hi)) return [0, 1];
+  if (hi - lo < minSpan) {
+    const mid = (lo + hi) / 2;
+    lo = mid - minSpan / 2;
+    hi = mid + minSpan / 2;
+  }
+  const pad = (hi - lo) * 0.05;
+  return [lo - pad, hi + pad];
 }
 
 /** Splits `[a0, b0, c0, a1, b1, c1, …]` (a binding's flat samples) into columns `[[a…], [b…], [c…]]`. */
@@ -297,9 +498,11 @@ export function pingPong(timeline) {
   return 1 - Math.abs(2 * (timeline.time / timeline.duration) - 1);
 }
 
-/** Formats a column-major 4×4 matrix into the rows of an HTML table element. */
+/** Formats a column-major n×n matrix (9 or 16 numbers) into the rows of an HTML table element. */
 export function showMatrix(table, cols) {
-  const rows = [0, 1, 2, 3].map((r) => [0, 1, 2, 3].map((c) => cols[c * 4 + r]));
+  const n = Math.round(Math.sqrt(cols.length));
+  const idx = [...Array(n).keys()];
+  const rows = idx.map((r) => idx.map((c) => cols[c * n + r]));
   table.innerHTML = rows
     .map((row) => `<tr>${row.map((v) => `<td>${(Math.abs(v) < 5e-5 ? 0 : v).toFixed(3)}</td>`).join('')}</tr>`)
     .join('');

@@ -194,6 +194,10 @@ macro_rules! exercises {
 
         /// Runs the exercise `name` in this instance (natively, and inside the page's sandbox).
         pub fn direct(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+            #[cfg(feature = "student-bugs")]
+            if let Some(result) = student_bugs(name, args) {
+                return result;
+            }
             match name {
                 $(
                     stringify!($name) => {
@@ -251,6 +255,30 @@ exercises! {
         r::dual_quat_apply(rotation, translation, point);
     /// Exercise 4.2, [`r::polar_step`].
     fn polar_step(m: Mat3) -> Mat3 = r::polar_step(m);
+}
+
+/// Two typical student mistakes, compiled in only for the isolation test (feature
+/// `student-bugs`): a panic in slerp and a transposed Rodrigues matrix.
+#[cfg(feature = "student-bugs")]
+fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, Failure>> {
+    match name {
+        "slerp" => {
+            let keys = [0usize; 3];
+            let index = args.len(); // 9 numbers: past the end, as an off-by-one would be
+            Some(Ok(vec![keys[index] as f32]))
+        }
+        "rodrigues_matrix" => {
+            let mut rest = args;
+            let axis = Vec3::take(&mut rest)?;
+            let angle = f32::take(&mut rest)?;
+            let mut out = Vec::new();
+            crate::rotation::rodrigues_mat3(axis, angle)
+                .transpose()
+                .put(&mut out);
+            Some(Ok(out))
+        }
+        _ => None,
+    }
 }
 
 /// How a figure's note compares the student's answer with the reference at the current inputs.
@@ -354,7 +382,15 @@ mod tests {
 
     #[test]
     fn direct_runs_each_exercise_and_reports_stubs() {
-        let got = slerp(direct, Quat::IDENTITY, Quat::from_rotation_z(1.0), 0.5);
+        let call = || slerp(direct, Quat::IDENTITY, Quat::from_rotation_z(1.0), 0.5);
+        if cfg!(feature = "student-bugs") {
+            assert!(
+                std::panic::catch_unwind(call).is_err(),
+                "the bug variant's slerp panics"
+            );
+            return;
+        }
+        let got = call();
         if cfg!(feature = "solutions") {
             let q = got.unwrap();
             assert!(q.angle_between(Quat::from_rotation_z(0.5)) < 1e-5);
