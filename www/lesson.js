@@ -281,7 +281,7 @@ async function createFigure(selector) {
   let viewer;
   try {
     let backend = requestedBackend();
-    if (backend === 'auto' && !(await webgpuAvailable())) backend = 'webgl2';
+    if (backend === 'auto' && !(await webgpuAvailable())) backend = 'auto-no-webgpu';
     viewer = await Viewer.create(canvas, backend);
   } catch (e) {
     const note = document.createElement('div');

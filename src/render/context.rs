@@ -7,6 +7,9 @@ use web_sys::HtmlCanvasElement;
 pub enum BackendChoice {
     /// WebGPU when the browser offers an adapter, WebGL2 otherwise.
     Auto,
+    /// Auto, where the page has already found that WebGPU offers no adapter (it probes once per
+    /// page, so the browser's "No available adapters" notice appears once, not once per figure).
+    AutoWithoutWebGpu,
     WebGpu,
     WebGl2,
 }
@@ -16,6 +19,7 @@ impl BackendChoice {
     pub fn parse(name: &str) -> Result<Self, String> {
         match name {
             "" | "auto" => Ok(Self::Auto),
+            "auto-no-webgpu" => Ok(Self::AutoWithoutWebGpu),
             "webgpu" => Ok(Self::WebGpu),
             "webgl2" | "webgl" => Ok(Self::WebGl2),
             other => Err(format!(
@@ -48,7 +52,7 @@ impl Gpu {
         desc.backends = match choice {
             BackendChoice::Auto => wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL,
             BackendChoice::WebGpu => wgpu::Backends::BROWSER_WEBGPU,
-            BackendChoice::WebGl2 => wgpu::Backends::GL,
+            BackendChoice::WebGl2 | BackendChoice::AutoWithoutWebGpu => wgpu::Backends::GL,
         };
         let instance = match choice {
             // Drops WebGPU when `navigator.gpu` exists but offers no adapter.
@@ -56,7 +60,9 @@ impl Gpu {
             _ => wgpu::Instance::new(desc),
         };
         let missing = match choice {
-            BackendChoice::Auto => "Neither WebGPU nor WebGL2 is available in this browser",
+            BackendChoice::Auto | BackendChoice::AutoWithoutWebGpu => {
+                "Neither WebGPU nor WebGL2 is available in this browser"
+            }
             BackendChoice::WebGpu => "WebGPU was requested (?backend=webgpu) but this browser offers no WebGPU adapter",
             BackendChoice::WebGl2 => "WebGL2 was requested (?backend=webgl2) but this browser cannot create a WebGL2 context",
         };

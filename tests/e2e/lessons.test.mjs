@@ -45,7 +45,129 @@ async function frames(page, n = 6) {
   }), n);
 }
 
-for (const backend of ['webgpu', 'webgl2']) {
+/** A drag on the canvas orbits the camera: the image must change. */
+async function orbitDrag(page, canvas, i) {
+  await canvas.scrollIntoViewIfNeeded();
+  const box = await canvas.boundingBox();
+  await pixelStats(page, canvas, `orbit-before${i}`);
+  await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.6, { steps: 5 });
+  await page.mouse.up();
+  await frames(page);
+  await pixelStats(page, canvas, `orbit-after${i}`);
+  const change = await meanDifference(page, `orbit-before${i}`, `orbit-after${i}`);
+  assert.ok(change > 0.2, `figure ${i}: dragging the canvas did not orbit the camera (${change})`);
+}
+
+/**
+ * Moves every control of a figure, one at a time, as a person would (sliders by a click on the
+ * slider, checkboxes, dropdowns, buttons, the timeline's scrub, play and speed), and checks after
+ * each that the figure (canvas, plots and notes) changed and that no error appeared.
+ * Returns how many controls it moved.
+ */
+async function moveEveryControl(page, figure, where) {
+  let moved = 0;
+  const check = async (what, act) => {
+    const before = await figureShot(page, figure, 'c-before');
+    await act();
+    await frames(page, 4);
+    const after = await figureShot(page, figure, 'c-after');
+    const change = await meanDifference(page, before, after);
+    assert.ok(change > 0.02, `${where}: ${what} did not change the figure (${change.toFixed(3)})`);
+    assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], `${where}: ${what} raised an error`);
+    moved += 1;
+  };
+  const controllers = await figure.locator('.lil-controller').all();
+  const buttons = [];
+  for (const c of controllers) {
+    if (!(await c.isVisible())) continue;
+    const name = (await c.locator('.lil-name').textContent().catch(() => '')) || '?';
+    const classes = (await c.getAttribute('class')) ?? '';
+    if (classes.includes('function')) { buttons.push([name, c.locator('button')]); continue; }
+    if (classes.includes('boolean')) {
+      await check(`toggle "${name}"`, () => c.locator('input[type="checkbox"]').click());
+      continue;
+    }
+    if (classes.includes('option')) {
+      const select = c.locator('select');
+      const options = await select.locator('option').allTextContents();
+      const current = await select.evaluate((s) => s.selectedIndex);
+      await check(`dropdown "${name}"`, () => select.selectOption({ index: (current + 1) % options.length }));
+      continue;
+    }
+    if (classes.includes('number')) {
+      const slider = c.locator('.lil-slider');
+      if (await slider.count()) {
+        const fill = await slider.evaluate((s) => s.querySelector('.lil-fill')?.getBoundingClientRect().width / s.getBoundingClientRect().width);
+        const at = fill < 0.5 ? 0.8 : 0.2;
+        await check(`slider "${name}"`, () => clickAt(page, slider, at));
+      } else {
+        const input = c.locator('input');
+        const value = Number(await input.inputValue());
+        await check(`number "${name}"`, async () => {
+          await input.fill(String(value === 0 ? 1 : -value));
+          await input.press('Enter');
+        });
+      }
+    }
+  }
+  // Buttons and dropdowns outside the panels (presets, solo, timeline), then the panels' buttons.
+  for (const select of await figure.locator('select:not(.lil-controller select)').all()) {
+    if (!(await select.isVisible())) continue;
+    const label = (await select.getAttribute('aria-label')) ?? 'select';
+    const options = await select.locator('option').allTextContents();
+    const current = await select.evaluate((s) => s.selectedIndex);
+    if (label === 'speed') {
+      // Speed shows only while playing: play a moment at the new speed, then pause.
+      const play = figure.locator('.timeline .play');
+      await check('timeline speed', async () => {
+        await select.selectOption({ index: (current + 1) % options.length });
+        await play.click();
+        await frames(page, 10);
+        await play.click();
+      });
+    } else {
+      await check(`dropdown "${label}"`, () => select.selectOption({ index: (current + 1) % options.length }));
+    }
+  }
+  for (const scrub of await figure.locator('.timeline .scrub').all()) {
+    await check('timeline scrub', () => clickAt(page, scrub, 0.37));
+  }
+  for (const play of await figure.locator('.timeline .play').all()) {
+    await check('timeline play', async () => {
+      await play.click();
+      await frames(page, 10);
+      await play.click();
+    });
+  }
+  for (const button of await figure.locator('button:not(.lil-controller button):not(.timeline button):not(.lil-title)').all()) {
+    if (!(await button.isVisible())) continue;
+    buttons.push([(await button.textContent()).trim(), button]);
+  }
+  for (const [name, button] of buttons) await check(`button "${name}"`, () => button.click());
+  return moved;
+}
+
+/** Clicks `locator` at the fraction `at` of its width (after scrolling it into view). */
+async function clickAt(page, locator, at) {
+  await locator.scrollIntoViewIfNeeded();
+  const box = await locator.boundingBox();
+  await page.mouse.click(box.x + box.width * at, box.y + box.height / 2);
+}
+
+/** A screenshot of the whole figure (canvas, panel, plots, notes), kept in the page under `key`. */
+async function figureShot(page, figure, key) {
+  await pixelStats(page, figure, key);
+  return key;
+}
+
+// E2E_BACKENDS=webgl2 E2E_LESSONS=03 narrows a run while iterating; scripts/test runs everything.
+const BACKENDS = (process.env.E2E_BACKENDS ?? 'webgpu,webgl2').split(',');
+const only = process.env.E2E_LESSONS?.split(',');
+const lessons = catalog.filter((l) => !only || only.some((p) => l.folder.startsWith(p)));
+
+for (const backend of BACKENDS) {
   test(`lessons on ${backend}`, async (t) => {
     const context = await launch(backend);
     try {
@@ -56,7 +178,7 @@ for (const backend of ['webgpu', 'webgl2']) {
         assert.deepEqual(gallery.problems, []);
         await gallery.page.screenshot({ path: `${SHOTS}/index-${backend}.png`, fullPage: true });
       });
-      for (const lesson of catalog) {
+      for (const lesson of lessons) {
         await t.test(lesson.folder, async () => {
           const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
           const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
@@ -68,7 +190,10 @@ for (const backend of ['webgpu', 'webgl2']) {
           for (const [i, figure] of figures.entries()) {
             const canvas = figure.locator('.stage canvas');
             if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
+              // Without the backend badge: the thumbnail shows the figure, not the test's backend.
+              await page.evaluate(() => document.body.classList.add('thumbnail'));
               writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail}`, await canvas.screenshot());
+              await page.evaluate(() => document.body.classList.remove('thumbnail'));
             }
             assert.equal(await figure.locator('.backend-badge').textContent(), label);
             const before = await pixelStats(page, canvas, `before${i}`);
@@ -77,16 +202,20 @@ for (const backend of ['webgpu', 'webgl2']) {
             await frames(page);
             await pixelStats(page, canvas, `still${i}`);
             assert.ok(await meanDifference(page, `before${i}`, `still${i}`) < 0.5, `figure ${i}: image changes while paused`);
-            // Move the first numeric control of the figure's panel.
-            const input = figure.locator('.panel input[type="text"], .panel input[inputmode]').first();
-            const value = Number(await input.inputValue());
-            await input.fill(String(value === 0 ? 45 : -value));
-            await input.press('Enter');
-            await frames(page);
-            await pixelStats(page, canvas, `after${i}`);
-            const change = await meanDifference(page, `still${i}`, `after${i}`);
-            assert.ok(change > 0.2, `figure ${i}: moving a control did not change the image (${change})`);
+            await orbitDrag(page, canvas, i);
+            const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`);
+            assert.ok(moved > 0, `figure ${i}: no control was found to move`);
+            await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
           }
+          // Both page sizes the course supports: no sideways scrolling, screenshots to look at.
+          for (const [w, h] of [[800, 600], [1600, 1000]]) {
+            await page.setViewportSize({ width: w, height: h });
+            await frames(page);
+            const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+            assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
+            await page.screenshot({ path: `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`, fullPage: true });
+          }
+          await page.setViewportSize({ width: 1100, height: 900 });
           // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
           const toggle = page.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]');
           if (await toggle.count()) {

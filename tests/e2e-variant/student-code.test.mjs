@@ -1,0 +1,102 @@
+// Student code cannot take the page down, and the page checks the student's answer.
+// Runs on a special build (scripts/test makes it): `INBETWEEN_FEATURES=solutions,student-bugs
+// scripts/build --dev`, in which exercise 3.2 slerp panics (an index out of bounds), 3.3
+// rodrigues_matrix returns the transpose of the right matrix, and every other exercise is right.
+//   node --test tests/e2e-variant/
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { launch, pixelStats, meanDifference } from '../e2e/browser.mjs';
+import { startServer } from '../../scripts/serve.mjs';
+
+const SHOTS = 'tests/screenshots';
+mkdirSync(SHOTS, { recursive: true });
+let server;
+let origin;
+before(async () => {
+  server = await startServer('dist', 0);
+  origin = `http://127.0.0.1:${server.address().port}`;
+});
+after(() => server?.close());
+
+async function frames(page, n = 6) {
+  await page.evaluate((n) => new Promise((ok) => {
+    const step = (k) => (k === 0 ? ok() : requestAnimationFrame(() => step(k - 1)));
+    step(n);
+  }), n);
+}
+
+/** Ticks the figure's "use my exercise" box. */
+async function useMyExercise(figure) {
+  await figure.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]').check();
+}
+
+/** Moves the figure's first slider and returns how much its canvas changed. */
+async function sliderChangesCanvas(page, figure, key) {
+  const canvas = figure.locator('.stage canvas');
+  await pixelStats(page, canvas, `${key}-before`);
+  const slider = figure.locator('.lil-slider').first();
+  await slider.scrollIntoViewIfNeeded();
+  const box = await slider.boundingBox();
+  await page.mouse.click(box.x + box.width * 0.15, box.y + box.height / 2);
+  await frames(page);
+  await pixelStats(page, canvas, `${key}-after`);
+  return meanDifference(page, `${key}-before`, `${key}-after`);
+}
+
+for (const backend of ['webgl2', 'webgpu']) {
+  test(`a panicking exercise stays in its figure, on ${backend}`, async () => {
+    const context = await launch(backend);
+    try {
+      const page = await context.newPage();
+      const problems = [];
+      page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+      page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+      await page.goto(`${origin}/lessons/03-rotations/?backend=${backend}`);
+      await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+      assert.match(await page.evaluate(() => document.getElementById('build-info').textContent), /solutions/);
+      for (const button of await page.locator('.timeline .play').all()) {
+        if ((await button.textContent()).includes('pause')) await button.click();
+      }
+
+      // Slerp panics: its figure says so, with the message, and keeps drawing the reference.
+      const interp = page.locator('#fig-interp');
+      await useMyExercise(interp);
+      await frames(page);
+      const note = await interp.locator('.exercise-note').textContent();
+      assert.match(note, /slerp panicked/, note);
+      assert.match(note, /index out of bounds/, note);
+      assert.match(note, /reference/, note);
+      assert.ok(await page.evaluate(() => Boolean(window.__inbetween.panickedExercises.slerp)));
+      assert.ok(await sliderChangesCanvas(page, interp, 'interp') > 0.2, 'the panicking figure still responds');
+
+      // Every other figure keeps running.
+      assert.ok(await sliderChangesCanvas(page, page.locator('#fig-gimbal'), 'gimbal') > 0.2, 'the gimbal still responds');
+      const rodrigues = page.locator('#fig-rodrigues');
+      assert.ok(await sliderChangesCanvas(page, rodrigues, 'rod') > 0.2, 'the Rodrigues figure still responds');
+
+      // A wrong answer (a transposed matrix) is reported as differing, with both values.
+      await useMyExercise(rodrigues);
+      await frames(page);
+      const rodNote = await rodrigues.locator('.exercise-note').textContent();
+      assert.match(rodNote, /differs/, rodNote);
+      assert.match(rodNote, /yours \(.*\), reference \(/, rodNote);
+      await page.screenshot({ path: `${SHOTS}/student-bugs-03-${backend}.png`, fullPage: true });
+
+      assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'nothing reached the error banner');
+      assert.deepEqual(problems, []);
+
+      // A right answer is reported as matching (lesson 04's exercises are right in this build).
+      const page4 = await context.newPage();
+      await page4.goto(`${origin}/lessons/04-rigid-motions/?backend=${backend}`);
+      await page4.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+      const first = page4.locator('.figure').first();
+      await useMyExercise(first);
+      await frames(page4);
+      const note4 = await first.locator('.exercise-note').textContent();
+      assert.match(note4, /matches the reference/, note4);
+    } finally {
+      await context.close();
+    }
+  });
+}
