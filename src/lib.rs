@@ -1,14 +1,20 @@
 //! # inbetween: the computational cores of an in-browser course on 3D computer animation
 //!
-//! Each lesson in `lessons/` has a core module here (pure Rust + glam, tested natively), a thin
-//! binding in `web/` (wasm only) and graded exercises in `exercises/`.
+//! Each lesson in `lessons/` has a core module here (pure Rust + glam, tested natively), its figure
+//! logic in [`figures`] (scene state, validation, plot samples, what is drawn into a [`draw::Frame`];
+//! also native and tested natively), a thin binding in `web/` (wasm only: `#[wasm_bindgen]`
+//! wrappers and `JsError`s) and graded exercises in `exercises/`.
 //!
-//! | lesson | core | binding | exercises |
-//! |---|---|---|---|
-//! | `01-transforms`: transforms and hierarchies | [`transform`], [`mesh`], [`camera`] | `web::transforms` | [`exercises::transforms`] |
-//! | `02-keyframes`: keyframes and splines | [`curves`] | `web::curves` (bench: `web::bench_curves`) | [`exercises::curves`] |
-//! | `03-rotations`: rotations | [`rotation`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
-//! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | `web::rigid` | [`exercises::rotations`] (4.x) |
+//! | lesson | core | scene | binding | exercises |
+//! |---|---|---|---|---|
+//! | `01-transforms`: transforms and hierarchies | [`transform`], [`mesh`], [`camera`] | [`figures::transforms`] | `web::transforms` | [`exercises::transforms`] |
+//! | `02-keyframes`: keyframes and splines | [`curves`] | [`figures::curves`] | `web::curves` (bench: `web::bench_curves`) | [`exercises::curves`] |
+//! | `03-rotations`: rotations | [`rotation`] | [`figures::rotations`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
+//! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
+//!
+//! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
+//! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
+//! instance, so a panic there cannot stop the page), `render/` (wgpu, wasm only).
 //!
 //! ## Conventions, stated once
 //! - Right-handed coordinates, **Y up**, the camera looks down −Z in view space.
