@@ -283,7 +283,7 @@ fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, Failure>> {
 
 /// How a figure's note compares the student's answer with the reference at the current inputs.
 /// `max_error` is the largest absolute difference; returns "matches the reference" or
-/// "differs at <where>: yours (…), reference (…)".
+/// "differs at `at`: yours (…), reference (…)".
 pub fn compare_note(
     what: &str,
     at: &str,
