@@ -7,6 +7,7 @@
 // by the iterations actually run. A full run takes the median over REPEATS such batches. Between
 // batches the page yields to the event loop, so it stays responsive and shows its progress.
 import init, * as wasm from '../pkg/inbetween.js';
+import './devloop.js';
 
 /**
  * A suite: `run(kernel, size, iterations)` returns milliseconds for `iterations` passes over `size`
