@@ -1,12 +1,19 @@
 // A static server for dist/ on 127.0.0.1 (WebGPU needs a secure context: localhost counts).
 // With --watch, saving a file under src/ rebuilds the wasm (debug build), and saving under
-// lessons/ or www/ re-copies the pages; reload the browser tab to see the result.
+// lessons/ or www/ re-copies the pages; open pages then reload themselves (www/devloop.js), or
+// show the compiler's errors when the build failed (the previous build is still served).
 //
 //   node scripts/serve.mjs [--port 8000] [--watch] [--solutions]
+//
+// The watching server tells pages about builds at /__devloop/events (Server-Sent Events, one JSON
+// status per message) and /__devloop/status (the same JSON), and marks every HTML page it serves
+// with <meta name="inbetween-devloop" content="/__devloop">: devloop.js connects only when it sees
+// that tag, so pages served without --watch (and in the tests) make no request at all.
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { watch } from 'node:fs';
 import { spawn } from 'node:child_process';
+import { randomUUID } from 'node:crypto';
 import { extname, join, normalize, resolve } from 'node:path';
 
 const TYPES = {
@@ -16,11 +23,21 @@ const TYPES = {
   '.rs': 'text/plain; charset=utf-8', '.wgsl': 'text/plain; charset=utf-8', '.txt': 'text/plain; charset=utf-8',
 };
 
-/** Serves `root` on 127.0.0.1:`port` (0 = any free port). Resolves to the http.Server. */
-export function startServer(root = 'dist', port = 8000) {
+export const DEVLOOP_PATH = '/__devloop';
+
+/**
+ * Serves `root` on 127.0.0.1:`port` (0 = any free port). Resolves to the http.Server. With
+ * `devloop` (a Devloop), also serves its endpoints and marks HTML pages for www/devloop.js (call
+ * `devloop.close()` before `server.close()`: open event streams keep a server from closing).
+ */
+export function startServer(root = 'dist', port = 8000, { devloop = null } = {}) {
   const base = resolve(root);
   const server = createServer(async (req, res) => {
     const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+    if (devloop && path.startsWith(`${DEVLOOP_PATH}/`)) {
+      devloop.handle(path, res);
+      return;
+    }
     let file = normalize(join(base, path));
     if (!file.startsWith(base)) {
       res.writeHead(403).end();
@@ -34,7 +51,8 @@ export function startServer(root = 'dist', port = 8000) {
         }
         file = join(file, 'index.html');
       }
-      const body = await readFile(file);
+      let body = await readFile(file);
+      if (devloop && extname(file) === '.html') body = markForDevloop(body.toString('utf8'));
       res.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream', 'Cache-Control': 'no-store' });
       res.end(body);
     } catch {
@@ -47,11 +65,124 @@ export function startServer(root = 'dist', port = 8000) {
   });
 }
 
-function run(args) {
-  return new Promise((ok) => spawn('scripts/build', args, { stdio: 'inherit' }).on('exit', (code) => ok(code === 0)));
+function markForDevloop(html) {
+  const meta = `<meta name="inbetween-devloop" content="${DEVLOOP_PATH}">`;
+  const head = /<head[^>]*>/i.exec(html);
+  return head ? html.slice(0, head.index + head[0].length) + meta + html.slice(head.index + head[0].length) : meta + html;
 }
 
-function watchAndRebuild(extra) {
+/**
+ * The compiler's errors in a build log, for the page: each `error…` diagnostic of cargo/rustc up to
+ * the blank line that ends it (so with its `--> file:line:column` and the code excerpt), without
+ * warnings, progress lines or colour codes. When the log has no such diagnostic (a failure outside
+ * the compiler), its last 30 lines.
+ */
+export function compilerErrors(log, maxChars = 12_000) {
+  // eslint-disable-next-line no-control-regex
+  const lines = log.replace(/\x1b\[[0-9;]*[A-Za-z]/g, '').replace(/\r/g, '').split('\n');
+  const blocks = [];
+  let block = null;
+  for (const line of lines) {
+    if (/^error(\[\w+\])?:/.test(line)) {
+      block = [line];
+      blocks.push(block);
+    } else if (block && line.trim() !== '') {
+      // A diagnostic goes on with indented lines, `NN |` excerpt lines (`NN +` / `NN -` in
+      // suggestions), `= note` lines and `help:` / `note:` lines; any other line at column 0
+      // (warning:, Compiling, Some errors have…) is not part of it.
+      if (/^(\s|\d+\s*[|+~-]|\||=|help:|note:|\.\.\.)/.test(line)) block.push(line);
+      else block = null;
+    } else {
+      block = null;
+    }
+  }
+  let text = blocks.map((b) => b.join('\n')).join('\n\n');
+  if (!text) text = lines.filter((l) => l.trim() !== '').slice(-30).join('\n');
+  return text.length > maxChars ? `${text.slice(0, maxChars)}\n…` : text;
+}
+
+/**
+ * What the watching server tells pages: `session` (changes when the server restarts), `builds`
+ * (builds finished since it started), `building` (null, or "rust" / "pages" while one runs), `last`
+ * (the outcome of the last build: { kind, ok }), and `errors`: the compiler's message of a failed
+ * build that no later build has fixed yet ("" when there is none; meanwhile dist/ keeps the
+ * previous build).
+ */
+export class Devloop {
+  constructor() {
+    this.status = { session: randomUUID(), builds: 0, building: null, last: null, errors: '' };
+    // Outstanding failures by kind: a failed Rust build stays reported after a pages-only rebuild.
+    this.failures = { rust: '', pages: '' };
+    this.clients = new Set();
+  }
+
+  started(kind) {
+    this.status.building = kind;
+    this.#broadcast();
+  }
+
+  /** A build of `kind` ("rust", which also re-copies the pages, or "pages") ended; `log` is its output. */
+  finished(kind, ok, log = '') {
+    if (ok) {
+      this.failures.pages = '';
+      if (kind === 'rust') this.failures.rust = '';
+    } else {
+      this.failures[kind] = compilerErrors(log);
+    }
+    Object.assign(this.status, {
+      builds: this.status.builds + 1, building: null, last: { kind, ok },
+      errors: this.failures.rust || this.failures.pages,
+    });
+    this.#broadcast();
+  }
+
+  handle(path, res) {
+    if (path === `${DEVLOOP_PATH}/status`) {
+      res.writeHead(200, { 'Content-Type': 'application/json', 'Cache-Control': 'no-store' });
+      res.end(JSON.stringify(this.status));
+    } else if (path === `${DEVLOOP_PATH}/events`) {
+      res.writeHead(200, { 'Content-Type': 'text/event-stream', 'Cache-Control': 'no-store', Connection: 'keep-alive' });
+      res.write(`data: ${JSON.stringify(this.status)}\n\n`);
+      this.clients.add(res);
+      res.on('close', () => this.clients.delete(res));
+    } else {
+      res.writeHead(404, { 'Content-Type': 'text/plain' }).end(`not found: ${path}`);
+    }
+  }
+
+  /** Ends the event streams (an http.Server does not close while they are open). */
+  close() {
+    for (const res of this.clients) res.end();
+    this.clients.clear();
+  }
+
+  #broadcast() {
+    const message = `data: ${JSON.stringify(this.status)}\n\n`;
+    for (const res of this.clients) res.write(message);
+  }
+}
+
+/** Runs scripts/build with `args`, echoing its output; resolves to { ok, log }. */
+function runBuild(args) {
+  // Cargo colours its messages only on a terminal; ours is behind a pipe, so ask for colours when
+  // our own output is a terminal (compilerErrors strips them for the page).
+  const env = { ...process.env };
+  if (process.stdout.isTTY && !env.CARGO_TERM_COLOR) env.CARGO_TERM_COLOR = 'always';
+  return new Promise((ok) => {
+    const child = spawn('scripts/build', args, { stdio: ['ignore', 'pipe', 'pipe'], env });
+    let log = '';
+    const keep = (chunk, echo) => {
+      echo.write(chunk);
+      log = (log + chunk).slice(-1_000_000);
+    };
+    child.stdout.setEncoding('utf8').on('data', (c) => keep(c, process.stdout));
+    child.stderr.setEncoding('utf8').on('data', (c) => keep(c, process.stderr));
+    child.on('error', (e) => ok({ ok: false, log: `${log}\nerror: could not run scripts/build: ${e.message}` }));
+    child.on('close', (code) => ok({ ok: code === 0, log }));
+  });
+}
+
+function watchAndRebuild(extra, devloop) {
   let pending = null;
   let busy = false;
   const schedule = (kind) => {
@@ -62,8 +193,11 @@ function watchAndRebuild(extra) {
       const what = pending;
       pending = null;
       console.log(`\nserve: change in ${what === 'rust' ? 'src/' : 'the pages'}, rebuilding…`);
-      const ok = await run(what === 'rust' ? ['--dev', ...extra] : ['--assets-only']);
-      console.log(ok ? 'serve: rebuilt; reload the page.' : 'serve: the build failed (see above); the old build is still served.');
+      devloop.started(what);
+      const { ok, log } = await runBuild(what === 'rust' ? ['--dev', ...extra] : ['--assets-only']);
+      devloop.finished(what, ok, log);
+      console.log(ok ? 'serve: rebuilt; open pages reload themselves.'
+        : 'serve: the build failed (see above); the old build is still served, and open pages show the errors.');
       busy = false;
       if (pending) schedule(pending);
     }, 300);
@@ -76,18 +210,19 @@ if (import.meta.url === `file://${process.argv[1]}`) {
   const args = process.argv.slice(2);
   const portArg = args.indexOf('--port');
   let port = Number(portArg >= 0 ? args[portArg + 1] : process.env.PORT ?? 8000);
+  const devloop = args.includes('--watch') ? new Devloop() : null;
   let server;
   for (let attempt = 0; !server; attempt++) {
     try {
-      server = await startServer('dist', port);
+      server = await startServer('dist', port, { devloop });
     } catch (e) {
       if (e.code !== 'EADDRINUSE' || attempt > 20) throw e;
       port += 1;
     }
   }
   console.log(`serve: lessons at http://127.0.0.1:${server.address().port}/lessons/  (Ctrl-C stops)`);
-  if (args.includes('--watch')) {
-    watchAndRebuild(args.includes('--solutions') ? ['--solutions'] : []);
-    console.log('serve: watching src/, lessons/ and www/ for changes');
+  if (devloop) {
+    watchAndRebuild(args.includes('--solutions') ? ['--solutions'] : [], devloop);
+    console.log('serve: watching src/, lessons/ and www/ for changes; open pages reload after each rebuild');
   }
 }

@@ -1,10 +1,18 @@
-// Runs every suite's kernels, median of several runs, and reports per-item time and the ratio to
-// each suite's baseline kernel. Results: the table, the JSON block, and window.__benchResults.
+// Runs every suite's kernels and reports per-item time and the ratio to each suite's baseline
+// kernel. Results: the table, the JSON block, and window.__benchResults.
+//
+// How a kernel is timed: the kernel times itself inside wasm with performance.now(), whose ticks
+// are coarse in browsers (0.1 ms or more, with jitter), so a fast kernel can read 0 ms. Each timed
+// batch therefore repeats the kernel until it lasts at least MIN_BATCH_MS, and the time is divided
+// by the iterations actually run. A full run takes the median over REPEATS such batches. Between
+// batches the page yields to the event loop, so it stays responsive and shows its progress.
 import init, * as wasm from '../pkg/inbetween.js';
+import './devloop.js';
 
 /**
  * A suite: `run(kernel, size, iterations)` returns milliseconds for `iterations` passes over `size`
- * items. Lessons add their suites here (one entry each).
+ * items. The baseline kernel's time is the denominator of the suite's ratios. Lessons add their
+ * suites here (one entry each).
  */
 export const SUITES = [
   {
@@ -13,7 +21,6 @@ export const SUITES = [
     kernels: ['copy_baseline', 'world_matrices', 'local_matrix_from_euler'],
     baseline: 'copy_baseline',
     size: 1024,
-    iterations: 2000,
     unit: 'joint',
   },
   {
@@ -22,7 +29,6 @@ export const SUITES = [
     kernels: ['nlerp', 'slerp'],
     baseline: 'nlerp',
     size: 4096,
-    iterations: 500,
     unit: 'key pair',
   },
   {
@@ -31,7 +37,6 @@ export const SUITES = [
     kernels: ['factored', 'sandwich'],
     baseline: 'factored',
     size: 1_000_000,
-    iterations: 10,
     unit: 'point',
   },
   {
@@ -40,49 +45,109 @@ export const SUITES = [
     kernels: ['copy_baseline', 'linear_cursor', 'linear_binary_search', 'catmull_rom_cursor', 'catmull_rom_binary_search'],
     baseline: 'copy_baseline',
     size: 1_000_000,
-    iterations: 2,
     unit: 'sample',
   },
 ];
 
+// ?quick (the page test): a smoke run, one batch of at least 20 ms per kernel.
 const QUICK = new URLSearchParams(location.search).has('quick');
+const MIN_BATCH_MS = QUICK ? 20 : 100;
 const REPEATS = QUICK ? 1 : 5;
+// The kernels accept up to 2^20 iterations (the smallest of their limits).
+const MAX_ITERATIONS = 1 << 20;
 
 function median(values) {
   const s = [...values].sort((a, b) => a - b);
   return s[Math.floor(s.length / 2)];
 }
 
-async function main() {
-  await init();
-  const results = [];
-  for (const suite of SUITES) {
-    const rows = [];
-    for (const kernel of suite.kernels) {
-      suite.run(kernel, suite.size, Math.max(1, Math.round(suite.iterations / (QUICK ? 100 : 10)))); // warm-up
-      const times = [];
-      // ?quick (the page test): a smoke run, a twentieth of the work, one repeat.
-      const iterations = QUICK ? Math.max(1, Math.round(suite.iterations / 20)) : suite.iterations;
-      for (let r = 0; r < REPEATS; r++) times.push(suite.run(kernel, suite.size, iterations));
-      const ms = median(times);
-      const items = suite.size * iterations;
-      rows.push({ suite: suite.name, kernel, ns_per_item: (ms * 1e6) / items, items_per_sec: items / (ms / 1000) });
-      await new Promise((ok) => setTimeout(ok, 0)); // let the page breathe between kernels
-    }
-    const base = rows.find((r) => r.kernel === suite.baseline);
-    for (const row of rows) row.ratio_to_baseline = row.ns_per_item / base.ns_per_item;
-    results.push(...rows);
+/**
+ * Lets the page handle input and paint between timed batches: a message task queues behind what
+ * is already waiting, and unlike a chain of setTimeout(0) it is not slowed to one per second when
+ * the tab is in the background.
+ */
+const channel = new MessageChannel();
+function yieldToPage() {
+  return new Promise((ok) => {
+    channel.port1.onmessage = () => ok();
+    channel.port2.postMessage(null);
+  });
+}
+
+/**
+ * Times one kernel: a warm-up call (lets the wasm engine tier up), then batches that grow until one
+ * lasts at least MIN_BATCH_MS, then REPEATS batches of that many iterations (the calibrating batch
+ * counts as the first). Returns milliseconds per iteration (median) and the batch size.
+ */
+async function timeKernel(suite, kernel) {
+  const run = (n) => suite.run(kernel, suite.size, n);
+  let ms = run(1);
+  let iterations = ms > MIN_BATCH_MS / 20 ? Math.ceil((1.25 * MIN_BATCH_MS) / ms) : 1;
+  for (;;) {
+    iterations = Math.min(iterations, MAX_ITERATIONS);
+    await yieldToPage();
+    ms = run(iterations);
+    if (ms >= MIN_BATCH_MS || iterations === MAX_ITERATIONS) break;
+    // Each round grows the batch by at least 1.25×, so the loop ends. Below a twentieth of the
+    // target the reading is mostly clock granularity: grow tenfold.
+    iterations = ms > MIN_BATCH_MS / 20 ? Math.ceil((iterations * 1.25 * MIN_BATCH_MS) / ms) : iterations * 10;
   }
+  if (!(ms > 0)) throw new Error(`${suite.name} / ${kernel}: the clock did not advance in ${iterations} iterations`);
+  const perIteration = [ms / iterations];
+  for (let r = 1; r < REPEATS; r++) {
+    await yieldToPage();
+    perIteration.push(run(iterations) / iterations);
+  }
+  return { ms: median(perIteration), iterations };
+}
+
+function showProgress(done, total, text) {
+  document.getElementById('progress-bar').max = total;
+  document.getElementById('progress-bar').value = done;
+  document.getElementById('progress').textContent = text;
+}
+
+function showResults(results) {
   const table = document.getElementById('results');
   table.innerHTML = '<tr><th>suite</th><th>kernel</th><th>ns / item</th><th>items / s</th><th>× baseline</th></tr>' +
     results.map((r) => `<tr><td>${r.suite}</td><td>${r.kernel}</td><td>${r.ns_per_item.toFixed(2)}</td>` +
       `<td>${r.items_per_sec.toExponential(2)}</td><td>${r.ratio_to_baseline.toFixed(2)}</td></tr>`).join('');
+}
+
+async function main() {
+  showProgress(0, 1, 'loading the wasm module…');
+  await init();
+  const total = SUITES.reduce((n, s) => n + s.kernels.length, 0);
+  const started = performance.now();
+  const results = [];
+  let done = 0;
+  for (const suite of SUITES) {
+    const rows = [];
+    for (const kernel of suite.kernels) {
+      showProgress(done, total, `running ${suite.name}: ${kernel} (kernel ${done + 1} of ${total})`);
+      await yieldToPage();
+      const { ms, iterations } = await timeKernel(suite, kernel);
+      rows.push({
+        suite: suite.name, kernel, ns_per_item: (ms * 1e6) / suite.size, items_per_sec: suite.size / (ms / 1000),
+        iterations_per_batch: iterations, repeats: REPEATS,
+      });
+      done += 1;
+    }
+    const base = rows.find((r) => r.kernel === suite.baseline);
+    for (const row of rows) row.ratio_to_baseline = row.ns_per_item / base.ns_per_item;
+    results.push(...rows);
+    showResults(results);
+  }
+  const seconds = (performance.now() - started) / 1000;
+  showProgress(total, total, `done: ${total} kernels in ${seconds.toFixed(1)} s` +
+    ` (batches of at least ${MIN_BATCH_MS} ms, ${REPEATS === 1 ? 'one batch' : `median of ${REPEATS}`} per kernel)`);
   document.getElementById('json').textContent = JSON.stringify(results, null, 2);
   window.__benchResults = results;
   document.body.dataset.ready = '1';
 }
 
 main().catch((e) => {
+  document.getElementById('progress').textContent = 'failed';
   document.getElementById('json').textContent = `failed: ${e}`;
   window.__benchResults = { error: String(e) };
   document.body.dataset.ready = '1';
