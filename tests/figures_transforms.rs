@@ -376,3 +376,32 @@ fn a_panic_is_shown_and_the_reference_drawn() {
     reference.pose(0.3).unwrap();
     assert_eq!(figure.wrist(), reference.wrist());
 }
+
+// Figure 3.
+
+#[test]
+fn inherited_scale_stretches_and_shears_the_child() {
+    use inbetween::figures::transforms::ScaleComparison;
+    let mut comparison = ScaleComparison::new();
+    let mut frame = Frame::default();
+    let note = comparison.draw(&mut frame).unwrap();
+    let (length, angle) = comparison.forearm_shape(0);
+    assert!((length - 0.28).abs() < 1e-4 && (angle - 90.0).abs() < 1e-3);
+    let (length, angle) = comparison.forearm_shape(1);
+    assert!(length > 0.3, "the forearm grows with its parent: {length}");
+    assert!((angle - 90.0).abs() > 5.0, "and is sheared: {angle}");
+    assert!(
+        note.contains("scale not inherited: the forearm is 0.280 m long"),
+        "{note}"
+    );
+    // Uniform scale and a straight elbow: no shear, only growth.
+    comparison.set_upper_arm_scale(Vec3::splat(2.0)).unwrap();
+    comparison.draw(&mut frame).unwrap();
+    assert!((comparison.forearm_shape(1).1 - 90.0).abs() < 1e-3);
+    assert!(comparison
+        .set_upper_arm_scale(Vec3::new(0.0, 1.0, 1.0))
+        .is_err());
+    assert!(comparison
+        .set_forearm_angles_deg(Vec3::new(0.0, f32::NAN, 0.0))
+        .is_err());
+}

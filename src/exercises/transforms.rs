@@ -111,7 +111,8 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
             .collect();
         hierarchies.push((RANDOM, parents));
     }
-    let cases: Vec<(&str, (Vec<i32>, Vec<Mat4>))> = hierarchies
+    type Hierarchy = (Vec<i32>, Vec<Mat4>); // parents, local matrices
+    let cases: Vec<(&str, Hierarchy)> = hierarchies
         .into_iter()
         .map(|(what, parents)| {
             let local = parents

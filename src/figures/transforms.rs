@@ -603,3 +603,111 @@ fn close(a: Mat4, b: Mat4) -> bool {
     let scale = 1.0f32.max(b.abs().to_cols_array().iter().fold(0.0, |m, x| m.max(*x)));
     a.abs_diff_eq(b, TOLERANCE * scale)
 }
+
+/// Figure 3: the same pose twice, side by side: scale not inherited (left) and inherited (right).
+#[derive(Clone, Debug)]
+pub struct ScaleComparison {
+    /// `[not inherited, inherited]`, posed alike.
+    figures: [HierarchyFigure; 2],
+    arm: usize,
+    forearm: usize,
+}
+
+/// How far each copy stands from the centre, metres.
+const COMPARISON_OFFSET: f32 = 0.6;
+
+impl Default for ScaleComparison {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl ScaleComparison {
+    /// The upper arm stretched to twice its length along y, the elbow bent 70°.
+    pub fn new() -> Self {
+        let mut figure = HierarchyFigure::new();
+        figure.set_animate(false);
+        let arm = figure.hierarchy.find("upper_arm.L").expect("a joint");
+        let forearm = figure.forearm;
+        let mut inherited = figure.clone();
+        inherited.set_inherit_scale(true);
+        let mut comparison = Self {
+            figures: [figure, inherited],
+            arm,
+            forearm,
+        };
+        comparison
+            .set_upper_arm_scale(Vec3::new(1.0, 2.0, 1.0))
+            .expect("in range");
+        comparison
+            .set_forearm_angles_deg(Vec3::new(-70.0, 0.0, 0.0))
+            .expect("finite");
+        comparison
+    }
+
+    /// The left upper arm's scale along its own axes (each in [0.1, 4]), in both copies.
+    pub fn set_upper_arm_scale(&mut self, scale: Vec3) -> Result<(), String> {
+        for f in &mut self.figures {
+            f.set_joint_scale(self.arm, scale)?;
+        }
+        Ok(())
+    }
+
+    /// The left forearm's Euler angles, degrees, in both copies.
+    pub fn set_forearm_angles_deg(&mut self, deg: Vec3) -> Result<(), String> {
+        for f in &mut self.figures {
+            f.set_joint_angles_deg(self.forearm, deg)?;
+        }
+        Ok(())
+    }
+
+    /// The drawn left forearm of copy `k` (0: not inherited): its length (pivot to wrist, metres)
+    /// and the corner angle of its box furthest from square (degrees; 90 unless sheared).
+    pub fn forearm_shape(&self, k: usize) -> (f32, f32) {
+        let f = &self.figures[k];
+        let draw = f.draw[self.forearm];
+        let length = (f.wrist() - draw.w_axis.truncate()).length();
+        let [x, y, z] = [draw.x_axis, draw.y_axis, draw.z_axis].map(|a| a.truncate());
+        let corner = [(x, y), (y, z), (z, x)]
+            .map(|(a, b)| a.angle_between(b) / DEG)
+            .into_iter()
+            .fold(90.0f32, |worst, a| {
+                if (a - 90.0).abs() > (worst - 90.0).abs() {
+                    a
+                } else {
+                    worst
+                }
+            });
+        (length, corner)
+    }
+
+    /// Draws both copies with a title above each; returns the note (forearm lengths and shear).
+    pub fn draw(&mut self, frame: &mut Frame) -> Result<String, String> {
+        frame.grid(12, 0.25);
+        let titles = ["scale not inherited", "scale inherited"];
+        for (k, f) in self.figures.iter_mut().enumerate() {
+            f.pose(0.0)?;
+            let x = if k == 0 {
+                -COMPARISON_OFFSET
+            } else {
+                COMPARISON_OFFSET
+            };
+            let placement = Mat4::from_translation(Vec3::new(x, 0.0, 0.0));
+            f.draw_body(frame, placement, false);
+            frame.label(Vec3::new(x, 1.95, 0.0), titles[k], palette::DARK);
+            let wrist = placement.transform_point3(f.wrist());
+            frame.point(wrist, 0.03, palette::PINK);
+            frame.label(wrist, "forearm.L", palette::PINK);
+        }
+        let describe = |k: usize| {
+            let (length, angle) = self.forearm_shape(k);
+            format!(
+                "{}: the forearm is {} m long, its box's corner angle {}°",
+                titles[k],
+                super::format_number(length),
+                super::format_number(angle)
+            )
+        };
+        Ok(format!("{}. {}.", describe(0), describe(1)))
+    }
+}

@@ -2,7 +2,7 @@
 //! [`crate::figures::transforms`], which holds the figures' logic and is tested natively.
 
 use super::{js, Viewer};
-use crate::figures::transforms::{HierarchyFigure, Order, SingleShape};
+use crate::figures::transforms::{HierarchyFigure, Order, ScaleComparison, SingleShape};
 use glam::Vec3;
 use wasm_bindgen::prelude::*;
 
@@ -78,7 +78,7 @@ impl Default for SingleShapeScene {
     }
 }
 
-/// Figures 2 and 3: a human made of boxes, posed by joint angles, with world = parent · local.
+/// Figure 2: a human made of boxes, posed by joint angles, with world = parent · local.
 #[wasm_bindgen]
 pub struct HierarchyScene {
     scene: HierarchyFigure,
@@ -195,6 +195,49 @@ impl HierarchyScene {
 }
 
 impl Default for HierarchyScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Figure 3: the same pose with scale not inherited (left) and inherited (right).
+#[wasm_bindgen]
+pub struct ScaleComparisonScene {
+    scene: ScaleComparison,
+}
+
+#[wasm_bindgen]
+impl ScaleComparisonScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> ScaleComparisonScene {
+        ScaleComparisonScene {
+            scene: ScaleComparison::new(),
+        }
+    }
+
+    /// The left upper arm's scale along its own axes (each in [0.1, 4]), in both copies.
+    #[wasm_bindgen(js_name = setUpperArmScale)]
+    pub fn set_upper_arm_scale(&mut self, sx: f32, sy: f32, sz: f32) -> Result<(), JsError> {
+        let s = Vec3::new(sx, sy, sz);
+        self.scene.set_upper_arm_scale(s).map_err(js)
+    }
+
+    /// The left forearm's Euler angles in degrees, in both copies.
+    #[wasm_bindgen(js_name = setForearmAnglesDeg)]
+    pub fn set_forearm_angles_deg(&mut self, x: f32, y: f32, z: f32) -> Result<(), JsError> {
+        let deg = Vec3::new(x, y, z);
+        self.scene.set_forearm_angles_deg(deg).map_err(js)
+    }
+
+    /// Draws both copies; returns the note (forearm lengths and corner angles).
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let note = self.scene.draw(&mut viewer.renderer.frame).map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for ScaleComparisonScene {
     fn default() -> Self {
         Self::new()
     }
