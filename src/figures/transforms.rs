@@ -205,7 +205,7 @@ fn wire_box(frame: &mut Frame, model: Mat4, color: Vec3) {
     }
 }
 
-/// A box drawn in a joint's frame that is not a joint of its own: the face and the feet, so that
+/// A box drawn in a joint's frame that is not a joint of its own: the nose and the feet, so that
 /// front (+z) and back can be told apart. `(joint, centre, half-extents, colour)`.
 const DETAILS: [(&str, Vec3, Vec3, Vec3); 3] = [
     (
@@ -528,7 +528,7 @@ impl HierarchyFigure {
         Ok(note)
     }
 
-    /// The boxes, the face and feet, the skeleton, and (with `labels`) the selected joint's
+    /// The boxes, the face (nose and eyes) and feet, the skeleton, and (with `labels`) the selected joint's
     /// labelled axes, the left thigh and the left wrist, all placed by `placement`.
     pub fn draw_body(&self, frame: &mut Frame, placement: Mat4, labels: bool) {
         for (i, (shape, draw)) in self.shapes.iter().zip(&self.draw).enumerate() {
@@ -550,6 +550,12 @@ impl HierarchyFigure {
                     * Mat4::from_translation(center)
                     * Mat4::from_scale(half);
                 frame.mesh(MeshId::CUBE, model, color);
+            }
+        }
+        if let Some(head) = self.hierarchy.find("head") {
+            for x in [-0.045, 0.045] {
+                let eye = self.draw[head].transform_point3(Vec3::new(x, 0.17, 0.1));
+                frame.point(placement.transform_point3(eye), 0.018, palette::KEY);
             }
         }
         // The skeleton: a dot at each pivot, a segment to its parent's pivot.
