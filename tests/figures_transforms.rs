@@ -214,6 +214,11 @@ fn the_plot_follows_the_pose_the_scales_and_the_scale_mode() {
     assert!((not_inherited[2] - base[2]).abs() < 1e-5);
     figure.set_inherit_scale(true);
     let inherited = figure.sample_cycle(13, 1.2).unwrap();
+    assert_eq!(
+        figure.pose(0.0).unwrap(),
+        "",
+        "no hint once a scale is not 1"
+    );
     assert!(
         inherited[2] < base[2] - 0.2,
         "{} vs {}",
@@ -404,4 +409,12 @@ fn inherited_scale_stretches_and_shears_the_child() {
     assert!(comparison
         .set_forearm_angles_deg(Vec3::new(0.0, f32::NAN, 0.0))
         .is_err());
+}
+
+#[test]
+fn inheriting_unit_scales_says_why_nothing_changes() {
+    let mut figure = HierarchyFigure::new();
+    figure.set_inherit_scale(true);
+    let note = figure.pose(0.0).unwrap();
+    assert!(note.contains("every scale is 1"), "{note}");
 }

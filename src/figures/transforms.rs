@@ -388,6 +388,12 @@ impl HierarchyFigure {
         self.pose_reference(finite("time", time_sec)?)?;
         Ok(if self.use_exercise {
             self.pose_with_exercises()
+        } else if self.mode == ScaleMode::Inherited
+            && self.transforms.iter().all(|x| x.scale == Vec3::ONE)
+        {
+            "Children inherit scale, but every scale is 1, so nothing changes yet: stretch a \
+             joint's scale to see the difference."
+                .to_string()
         } else {
             String::new()
         })
