@@ -4,7 +4,7 @@ mod support;
 
 use glam::{Mat4, Vec3, Vec4};
 use inbetween::camera::OrbitCamera;
-use inbetween::mesh::{cuboid, grid_lines, uv_sphere};
+use inbetween::mesh::{cone, cuboid, grid_lines, uv_sphere};
 use inbetween::transform::*;
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -168,6 +168,29 @@ both! {
         for (p, n) in mesh.positions.iter().zip(&mesh.normals) {
             assert!((p.abs() / Vec3::new(1.0, 2.0, 3.0)).dot(n.abs()) > 0.999, "corner on its face");
         }
+    }
+
+    fn cone_normals_point_outwards() {
+        let (radius, height) = (0.5, 2.0);
+        let mesh = cone(radius, height, 12);
+        assert_eq!(mesh.triangle_count(), 24);
+        let axis_point = Vec3::new(0.0, height / 3.0, 0.0); // inside the cone
+        for tri in mesh.indices.chunks(3) {
+            let [a, b, c] = [0, 1, 2].map(|k| mesh.positions[tri[k] as usize]);
+            let face_normal = (b - a).cross(c - a).normalize();
+            // Counter-clockwise from outside: the winding normal points away from the inside...
+            assert!(face_normal.dot((a + b + c) / 3.0 - axis_point) > 0.0);
+            // ...and every stored normal agrees with it (smooth sides lean by the half angle).
+            for k in 0..3 {
+                let n = mesh.normals[tri[k] as usize];
+                assert!((n.length() - 1.0).abs() < 1e-5);
+                assert!(n.dot(face_normal) > 0.9, "normal {n} vs face {face_normal}");
+            }
+        }
+        // Side normals lean up by atan(r / h): perpendicular to the slant from rim to tip.
+        let slant = Vec3::new(0.0, height, 0.0) - Vec3::new(radius, 0.0, 0.0);
+        let side = mesh.normals[0];
+        assert!(side.dot(slant).abs() < 1e-5, "{side}");
     }
 
     fn sphere_vertices_lie_on_the_sphere_with_radial_normals() {

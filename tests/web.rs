@@ -200,7 +200,17 @@ fn lesson_01_bindings_reject_bad_input_with_messages() {
             .all(|(a, b)| (a - b).abs() < 1e-4),
         "{back:?}"
     );
+    // Selecting a joint keeps its scale (the panel reads it back).
+    scene.set_joint_scale(3, 1.0, 2.0, 1.0).unwrap();
+    scene.select(0).unwrap();
+    scene.select(3).unwrap();
+    assert_eq!(scene.joint_scale(3).unwrap(), vec![1.0, 2.0, 1.0]);
     let mut shape = SingleShapeScene::new();
+    assert_ne!(
+        shape.matrix_of(false),
+        shape.matrix_of(true),
+        "T·R and R·T differ"
+    );
     let m = message(
         shape
             .set_transform(0.0, f32::NEG_INFINITY, 0.0, 0.0, 0.0, 0.0)

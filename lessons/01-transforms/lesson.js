@@ -1,10 +1,22 @@
-// Lesson 01: wires the page's controls to the wasm scenes. No math here: it lives in Rust.
+// Lesson 01: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/figures/transforms.rs).
 import { startLesson, markDrawn, Timeline, Plot, showMatrix, columns, GUI } from '../../www/lesson.js';
-import { SingleShapeScene, HierarchyScene } from '../../pkg/inbetween.js';
+import { SingleShapeScene, HierarchyScene, ScaleComparisonScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
-// Figure 1: one shape.
+/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
+function showNote(element, message) {
+  if (element.textContent !== message) element.textContent = message;
+}
+
+/** An angle slider that shows whole degrees (the value itself may carry decimals). */
+function addAngle(folder, object, key, name) {
+  const c = folder.add(object, key, -180, 180, 1).name(name);
+  return c.decimals ? c.decimals(0) : c;
+}
+
+// Figure 1: one shape, T·R and R·T side by side.
 const shapeViewer = await lesson.figure('#fig-shape');
 if (shapeViewer) {
   shapeViewer.setCamera(0.5, 0.3, 0, 5, 0.6, 0.45);
@@ -14,53 +26,65 @@ if (shapeViewer) {
   const apply = () => {
     scene.setTransform(p.tx, p.ty, p.tz, p.rx, p.ry, p.rz);
     scene.setTranslateFirst(p.translateFirst);
-    showMatrix(document.getElementById('shape-matrix'), scene.matrix());
+    showMatrix(document.getElementById('shape-matrix-tr'), scene.matrixOf(false));
+    showMatrix(document.getElementById('shape-matrix-rt'), scene.matrixOf(true));
   };
-  gui.add(p, 'tx', -2, 2, 0.01).name('translate x');
-  gui.add(p, 'ty', -2, 2, 0.01).name('translate y');
-  gui.add(p, 'tz', -2, 2, 0.01).name('translate z');
-  gui.add(p, 'rx', -180, 180, 1).name('angle x (°)');
-  gui.add(p, 'ry', -180, 180, 1).name('angle y (°)');
-  gui.add(p, 'rz', -180, 180, 1).name('angle z (°)');
-  gui.add(p, 'translateFirst').name('translate first (R·T)');
+  gui.add(p, 'tx', -2, 2, 0.01).name('translate x (m)');
+  gui.add(p, 'ty', -2, 2, 0.01).name('translate y (m)');
+  gui.add(p, 'tz', -2, 2, 0.01).name('translate z (m)');
+  addAngle(gui, p, 'rx', 'angle x (°)');
+  addAngle(gui, p, 'ry', 'angle y (°)');
+  addAngle(gui, p, 'rz', 'angle z (°)');
+  gui.add(p, 'translateFirst').name('solid box: R·T (ghost T·R)');
   gui.onChange(apply);
   apply();
+  const note = document.getElementById('shape-note');
   lesson.onFrame(() => {
-    scene.draw(shapeViewer);
+    showNote(note, scene.draw(shapeViewer));
     markDrawn('#fig-shape');
   });
 }
 
-// Figure 2: the hierarchy.
+// Figure 2: the hierarchy, its walk, and the student's exercises.
 const humanViewer = await lesson.figure('#fig-human');
 if (humanViewer) {
-  humanViewer.setCamera(0, 0.9, 0, 3.6, 0.7, 0.25);
+  humanViewer.setCamera(0, 0.9, 0, 3.6, 0.45, 0.2);
   const scene = new HierarchyScene();
   const names = scene.jointNames();
   const timeline = new Timeline(document.getElementById('human-timeline'), { duration: 1.2 });
   const p = { joint: 'upper_arm.L', x: 0, y: 0, z: 0, sx: 1, sy: 1, sz: 1, walk: true, inheritScale: false, useExercise: false };
   const index = () => names.indexOf(p.joint);
   const gui = new GUI({ container: document.querySelector('#fig-human .panel'), title: 'Pose' });
-  gui.add(p, 'walk').name('walk cycle (timeline)').onChange((on) => scene.setAnimate(on));
+  const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
+  const readJoint = () => {
+    [p.x, p.y, p.z] = scene.jointAnglesDeg(index()).map((v) => Math.round(v));
+    [p.sx, p.sy, p.sz] = scene.jointScale(index());
+  };
+  gui.add(p, 'walk').name('walk cycle (timeline)').onChange((on) => {
+    scene.setAnimate(on);
+    if (on) timeline.setPlaying(true);
+  });
   gui.add(p, 'joint', names).name('joint').onChange(() => {
     scene.select(index());
-    [p.x, p.y, p.z] = scene.jointAnglesDeg(index());
-    [p.sx, p.sy, p.sz] = [1, 1, 1];
-    scene.setJointScale(index(), 1, 1, 1);
-    gui.controllersRecursive().forEach((c) => c.updateDisplay());
+    readJoint();
+    refresh();
   });
   const angles = gui.addFolder('joint angles (°)');
   const setAngles = () => scene.setJointAnglesDeg(index(), p.x, p.y, p.z);
   for (const axis of ['x', 'y', 'z']) {
-    angles.add(p, axis, -180, 180, 1).name(`about ${axis}`).onChange(() => {
+    addAngle(angles, p, axis, `about ${axis}`).onChange(() => {
       // Posing by hand: stop the walk so it does not overwrite the slider.
-      if (p.walk) { p.walk = false; scene.setAnimate(false); gui.controllersRecursive().forEach((c) => c.updateDisplay()); }
+      if (p.walk) { p.walk = false; scene.setAnimate(false); refresh(); }
       setAngles();
+      updatePlot();
     });
   }
   const scale = gui.addFolder('joint scale');
   for (const axis of ['sx', 'sy', 'sz']) {
-    scale.add(p, axis, 0.25, 3, 0.01).onChange(() => scene.setJointScale(index(), p.sx, p.sy, p.sz));
+    scale.add(p, axis, 0.25, 3, 0.01).onChange(() => {
+      scene.setJointScale(index(), p.sx, p.sy, p.sz);
+      updatePlot();
+    });
   }
   gui.add(p, 'inheritScale').name('children inherit scale').onChange((on) => {
     scene.setInheritScale(on);
@@ -69,12 +93,19 @@ if (humanViewer) {
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
   scene.select(index());
 
-  const plot = new Plot(document.getElementById('human-plot'), {
-    title: 'One walk cycle', xLabel: 'time (s)', series: ['left thigh angle (°)', 'left wrist height (cm)'],
+  const thighPlot = new Plot(document.getElementById('human-plot-thigh'), {
+    title: 'Left thigh angle', xLabel: 'time (s)', yLabel: 'angle about x (°)',
+    series: ['left thigh'], colors: ['#944fc9'], minSpan: 10, height: 160,
   });
+  const wristPlot = new Plot(document.getElementById('human-plot-wrist'), {
+    title: 'Left wrist height', xLabel: 'time (s)', yLabel: 'height (m)',
+    series: ['left wrist'], colors: ['#e35d9c'], minSpan: 0.1, height: 160,
+  });
+  // The plots sample one walk of the figure as it is now: pose, scales and scale mode.
   function updatePlot() {
     const [time, thigh, wrist] = columns(scene.sampleCycle(121, 1.2), 3);
-    plot.setData([time, thigh, wrist.map((h) => h * 100)]);
+    thighPlot.setData([time, thigh]);
+    wristPlot.setData([time, wrist]);
   }
   updatePlot();
 
@@ -82,16 +113,39 @@ if (humanViewer) {
   let frame = 0;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
-    const message = scene.draw(humanViewer, t);
-    if (note.textContent !== message) note.textContent = message;
+    showNote(note, scene.draw(humanViewer, t));
+    thighPlot.setCursor?.(t);
+    wristPlot.setCursor?.(t);
     if (frame++ % 6 === 0) {
       showMatrix(document.getElementById('human-local'), scene.localMatrix(index()));
       showMatrix(document.getElementById('human-world'), scene.worldMatrix(index()));
       if (p.walk) {
-        [p.x, p.y, p.z] = scene.jointAnglesDeg(index()).map((v) => Math.round(v));
+        readJoint();
         angles.controllers.forEach((c) => c.updateDisplay());
       }
     }
     markDrawn('#fig-human');
+  });
+}
+
+// Figure 3: scale not inherited and inherited, side by side.
+const scaleViewer = await lesson.figure('#fig-scale');
+if (scaleViewer) {
+  scaleViewer.setCamera(0, 1.0, 0, 3.6, 0.6, 0.2);
+  const scene = new ScaleComparisonScene();
+  const p = { sx: 1, sy: 2, sz: 1, x: -70, y: 0, z: 0 };
+  const gui = new GUI({ container: document.querySelector('#fig-scale .panel'), title: 'upper_arm.L and forearm.L' });
+  const arm = gui.addFolder('upper_arm.L scale');
+  for (const axis of ['sx', 'sy', 'sz']) arm.add(p, axis, 0.25, 3, 0.01);
+  const elbow = gui.addFolder('forearm.L angles (°)');
+  for (const axis of ['x', 'y', 'z']) addAngle(elbow, p, axis, `about ${axis}`);
+  gui.onChange(() => {
+    scene.setUpperArmScale(p.sx, p.sy, p.sz);
+    scene.setForearmAnglesDeg(p.x, p.y, p.z);
+  });
+  const note = document.getElementById('scale-note');
+  lesson.onFrame(() => {
+    showNote(note, scene.draw(scaleViewer));
+    markDrawn('#fig-scale');
   });
 }

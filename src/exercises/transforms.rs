@@ -40,30 +40,43 @@ pub fn world_matrices(parents: &[i32], local: &[Mat4], world: &mut [Mat4]) -> An
     Err(NotDone)
 }
 
-/// Grades this file's exercises against the reference on random and edge-case inputs.
+/// Grades this file's exercises against the reference on edge cases (each saying what it tests)
+/// and random inputs.
 pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
-    use super::grade::{check, mat4_close};
+    use super::grade::{check_cases, mat4_close, RANDOM};
+    use std::f32::consts::{FRAC_PI_2, PI};
     const LESSON: &str = "01-transforms";
 
     let mut inputs = vec![
-        (Vec3::ZERO, Vec3::ZERO),
-        (Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO),
-        (Vec3::ZERO, Vec3::new(std::f32::consts::FRAC_PI_2, 0.0, 0.0)),
-        // Non-commuting rotations: only the right order passes this one.
-        (Vec3::new(0.0, 0.5, 0.0), Vec3::new(0.3, -1.1, 2.0)),
         (
-            Vec3::ZERO,
-            Vec3::new(
-                std::f32::consts::PI,
-                std::f32::consts::PI,
-                -std::f32::consts::PI,
-            ),
+            "no translation, no rotation: the identity",
+            (Vec3::ZERO, Vec3::ZERO),
+        ),
+        (
+            "translation only: t lands in the last column",
+            (Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO),
+        ),
+        (
+            "a quarter turn about x only",
+            (Vec3::ZERO, Vec3::new(FRAC_PI_2, 0.0, 0.0)),
+        ),
+        (
+            "rotation and translation: T must be applied after R (T·R, not R·T)",
+            (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 0.0, FRAC_PI_2)),
+        ),
+        (
+            "three angles that do not commute: the order Rx·Ry·Rz",
+            (Vec3::new(0.0, 0.5, 0.0), Vec3::new(0.3, -1.1, 2.0)),
+        ),
+        (
+            "half turns about every axis",
+            (Vec3::ZERO, Vec3::new(PI, PI, -PI)),
         ),
     ];
     for _ in 0..200 {
-        inputs.push((rng.vec3(-5.0, 5.0), rng.vec3(-6.3, 6.3)));
+        inputs.push((RANDOM, (rng.vec3(-5.0, 5.0), rng.vec3(-6.3, 6.3))));
     }
-    let local = check(
+    let local = check_cases(
         LESSON,
         "local_matrix",
         &inputs,
@@ -72,38 +85,44 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         |a, b| mat4_close(a, b, 1e-4),
     );
 
-    let mut hierarchies: Vec<Vec<i32>> = vec![
-        vec![-1],
-        vec![-1, 0],
-        vec![-1, 0, 1, 2],
-        vec![-1, 0, 0, 1, -1, 4],
+    let mut hierarchies: Vec<(&str, Vec<i32>)> = vec![
+        ("a single root: world = local", vec![-1]),
+        ("a parent and a child: world = parent · local", vec![-1, 0]),
+        (
+            "a chain of four: products accumulate down the chain",
+            vec![-1, 0, 1, 2],
+        ),
+        (
+            "two roots and siblings: a second root starts afresh",
+            vec![-1, 0, 0, 1, -1, 4],
+        ),
     ];
     for _ in 0..50 {
         let n = 1 + rng.below(20);
         // A random valid hierarchy: each joint's parent is a root marker or any earlier joint.
-        hierarchies.push(
-            (0..n)
-                .map(|i| {
-                    if i == 0 {
-                        -1
-                    } else {
-                        rng.below(i + 1) as i32 - 1
-                    }
-                })
-                .collect(),
-        );
+        let parents = (0..n)
+            .map(|i| {
+                if i == 0 {
+                    -1
+                } else {
+                    rng.below(i + 1) as i32 - 1
+                }
+            })
+            .collect();
+        hierarchies.push((RANDOM, parents));
     }
-    let cases: Vec<(Vec<i32>, Vec<Mat4>)> = hierarchies
+    type Hierarchy = (Vec<i32>, Vec<Mat4>); // parents, local matrices
+    let cases: Vec<(&str, Hierarchy)> = hierarchies
         .into_iter()
-        .map(|parents| {
+        .map(|(what, parents)| {
             let local = parents
                 .iter()
                 .map(|_| crate::transform::local_matrix(rng.vec3(-1.0, 1.0), rng.vec3(-3.0, 3.0)))
                 .collect();
-            (parents, local)
+            (what, (parents, local))
         })
         .collect();
-    let world = check(
+    let world = check_cases(
         LESSON,
         "world_matrices",
         &cases,

@@ -1,1 +1,725 @@
-//! Figure logic for this lesson (see `figures`): moved here from `web/transforms.rs`.
+//! Figure logic for lesson 01, "Transforms and hierarchies" (see [`crate::figures`]).
+//!
+//! - [`SingleShape`] (Figure 1): one box placed by `T·R` and, beside it as a wireframe ghost, by
+//!   `R·T`, with the arc the `R·T` box swings along; a point (`w = 1`) and a direction (`w = 0`).
+//! - [`HierarchyFigure`] (Figures 2 and 3): a human made of boxes, posed joint by joint with
+//!   `world = parent · local`, the walk plot computed from the current pose, and the check of the
+//!   student's exercises 1.1 and 1.2.
+
+use super::{
+    check_samples, compare_note, failure_note, finite, in_range, palette, rotation_problem, Frame,
+    MeshId, Runner, DEFAULT_RUNNER,
+};
+use crate::exercises::run;
+use crate::transform::{self, Hierarchy, JointShape, LocalTransform, ScaleMode};
+use glam::{Mat3, Mat4, Quat, Vec3};
+
+/// Degrees to radians.
+pub const DEG: f32 = std::f32::consts::PI / 180.0;
+
+const EXERCISE_FILE: &str = "src/exercises/transforms.rs";
+
+/// Which product places the box.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Order {
+    /// `M = T · R`: rotate about the box's own centre, then move it.
+    RotateFirst,
+    /// `M = R · T`: move the box, then rotate the moved box about the world origin.
+    TranslateFirst,
+}
+
+impl Order {
+    /// The other order (drawn as the ghost).
+    pub fn other(self) -> Order {
+        match self {
+            Order::RotateFirst => Order::TranslateFirst,
+            Order::TranslateFirst => Order::RotateFirst,
+        }
+    }
+
+    /// The product as the text writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Order::RotateFirst => "T·R",
+            Order::TranslateFirst => "R·T",
+        }
+    }
+
+    /// The colour of this order's box, its label and (in the text) its name.
+    pub fn color(self) -> Vec3 {
+        match self {
+            Order::RotateFirst => palette::ORANGE,
+            Order::TranslateFirst => palette::TEAL,
+        }
+    }
+}
+
+/// Figure 1: one box, its matrix, and the order of translation and rotation.
+#[derive(Clone, Debug)]
+pub struct SingleShape {
+    /// The translation `t`, metres.
+    translation: Vec3,
+    /// Euler angles, radians, in the order of [`transform::local_matrix`].
+    euler_rad: Vec3,
+    /// The order drawn solid; the other is the ghost.
+    order: Order,
+}
+
+/// Half-size of Figure 1's box, metres.
+pub const BOX_HALF: Vec3 = Vec3::new(0.4, 0.25, 0.15);
+
+impl Default for SingleShape {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SingleShape {
+    pub fn new() -> Self {
+        Self {
+            translation: Vec3::new(1.0, 0.5, 0.0),
+            euler_rad: Vec3::new(0.0, 0.0, 30.0 * DEG),
+            order: Order::RotateFirst,
+        }
+    }
+
+    /// Sets the translation (metres) and the Euler angles (degrees, applied z, then y, then x).
+    pub fn set_transform(&mut self, translation: Vec3, euler_deg: Vec3) -> Result<(), String> {
+        self.translation = Vec3::new(
+            finite("tx", translation.x)?,
+            finite("ty", translation.y)?,
+            finite("tz", translation.z)?,
+        );
+        self.euler_rad = Vec3::new(
+            finite("rx", euler_deg.x)?,
+            finite("ry", euler_deg.y)?,
+            finite("rz", euler_deg.z)?,
+        ) * DEG;
+        Ok(())
+    }
+
+    pub fn set_order(&mut self, order: Order) {
+        self.order = order;
+    }
+
+    pub fn order(&self) -> Order {
+        self.order
+    }
+
+    /// The rotation `R` alone.
+    pub fn rotation(&self) -> Mat4 {
+        transform::local_matrix(Vec3::ZERO, self.euler_rad)
+    }
+
+    /// The box's matrix in the given order.
+    pub fn matrix(&self, order: Order) -> Mat4 {
+        let (t, r) = (Mat4::from_translation(self.translation), self.rotation());
+        match order {
+            Order::RotateFirst => t * r,
+            Order::TranslateFirst => r * t,
+        }
+    }
+
+    /// Where the `R·T` box's centre goes as the rotation grows from none to `R`: `R(s)·t` for
+    /// `s` in [0, 1], with `R(s)` the slerp from the identity (for one angle, a circle's arc).
+    pub fn swing_arc(&self, samples: usize) -> Vec<Vec3> {
+        let q = Quat::from_mat4(&self.rotation());
+        (0..samples)
+            .map(|k| {
+                let s = k as f32 / (samples - 1).max(1) as f32;
+                Quat::IDENTITY.slerp(q, s) * self.translation
+            })
+            .collect()
+    }
+
+    /// Draws both orders (the chosen one solid, the other as a wireframe ghost), the arc of `R·T`,
+    /// the point and the direction. Returns the note under the figure.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(10, 0.5);
+        frame.labelled_axes(Mat4::IDENTITY, 1.0);
+        frame.label(Vec3::new(0.0, -0.12, 0.0), "world origin", palette::DARK);
+        let (shown, ghost) = (self.order, self.order.other());
+        let m = self.matrix(shown);
+        frame.mesh(MeshId::CUBE, m * Mat4::from_scale(BOX_HALF), shown.color());
+        frame.axes(m, 0.6);
+        wire_box(
+            frame,
+            self.matrix(ghost) * Mat4::from_scale(BOX_HALF),
+            ghost.color(),
+        );
+        for order in [shown, ghost] {
+            let top = self
+                .matrix(order)
+                .transform_point3(Vec3::new(0.0, 0.45, 0.0));
+            frame.label(top, order.name(), order.color());
+        }
+        // R·T carries the box around the world origin on an arm as long as t.
+        let arc = self.swing_arc(48);
+        let tip = self.matrix(Order::TranslateFirst).w_axis.truncate();
+        frame.line(Vec3::ZERO, tip, Order::TranslateFirst.color());
+        frame.polyline(&arc, Order::TranslateFirst.color());
+        if arc.len() >= 2 && arc[0].distance(tip) > 0.05 {
+            frame.arrow(arc[arc.len() - 2], tip, Order::TranslateFirst.color(), 0.12);
+        }
+        // A point (w = 1) moves with the translation; a direction (w = 0) only turns.
+        let p = m * transform::point(BOX_HALF);
+        frame.point(p.truncate(), 0.05, palette::PINK);
+        frame.label(p.truncate(), "p (w = 1)", palette::PINK);
+        let v = (m * transform::direction(Vec3::new(0.6, 0.0, 0.0))).truncate();
+        frame.arrow(Vec3::ZERO, v, palette::PINK, 0.1);
+        frame.label(v, "v (w = 0)", palette::PINK);
+        self.note()
+    }
+
+    fn note(&self) -> String {
+        // Float noise such as cos 90° = -4e-8 reads as 0.
+        let number = |x: f32| super::format_number(if x.abs() < 5e-6 { 0.0 } else { x });
+        let fmt = |v: Vec3| format!("({}, {}, {})", number(v.x), number(v.y), number(v.z));
+        let swung = self.matrix(Order::TranslateFirst).w_axis.truncate();
+        format!(
+            "T·R keeps the box's centre at t = {}; R·T carries it to R·t = {}, on an arm {} m long \
+             from the world origin.",
+            fmt(self.translation),
+            fmt(swung),
+            super::format_number(self.translation.length())
+        )
+    }
+}
+
+/// The 12 edges of the cube `[-1, 1]³` placed by `model`.
+fn wire_box(frame: &mut Frame, model: Mat4, color: Vec3) {
+    let corner = |i: u32| {
+        let c = Vec3::new(
+            if i & 1 == 0 { -1.0 } else { 1.0 },
+            if i & 2 == 0 { -1.0 } else { 1.0 },
+            if i & 4 == 0 { -1.0 } else { 1.0 },
+        );
+        model.transform_point3(c)
+    };
+    for i in 0..8u32 {
+        for bit in [1, 2, 4] {
+            if i & bit == 0 {
+                frame.line(corner(i), corner(i | bit), color);
+            }
+        }
+    }
+}
+
+/// A box drawn in a joint's frame that is not a joint of its own: the nose and the feet, so that
+/// front (+z) and back can be told apart. `(joint, centre, half-extents, colour)`.
+const DETAILS: [(&str, Vec3, Vec3, Vec3); 3] = [
+    (
+        "head",
+        Vec3::new(0.0, 0.12, 0.11),
+        Vec3::new(0.02, 0.03, 0.025),
+        Vec3::new(0.75, 0.5, 0.4),
+    ),
+    (
+        "shin.L",
+        Vec3::new(0.0, -0.37, 0.05),
+        Vec3::new(0.06, 0.03, 0.11),
+        palette::DARK,
+    ),
+    (
+        "shin.R",
+        Vec3::new(0.0, -0.37, 0.05),
+        Vec3::new(0.06, 0.03, 0.11),
+        palette::DARK,
+    ),
+];
+
+/// The left wrist in the frame of `forearm.L`: the end of its box.
+pub const WRIST_IN_FOREARM: Vec3 = Vec3::new(0.0, -0.28, 0.0);
+
+/// How long one walk cycle takes, seconds.
+pub const WALK_PERIOD_SEC: f32 = 1.2;
+
+/// Figures 2 and 3: a human made of boxes, posed by joint angles, with `world = parent · local`.
+#[derive(Clone, Debug)]
+pub struct HierarchyFigure {
+    hierarchy: Hierarchy,
+    transforms: Vec<LocalTransform>,
+    shapes: Vec<JointShape>,
+    mode: ScaleMode,
+    animate: bool,
+    use_exercise: bool,
+    runner: Runner,
+    selected: usize,
+    local: Vec<Mat4>,
+    world: Vec<Mat4>,
+    draw: Vec<Mat4>,
+    angles: Vec<Vec3>,
+    thigh: usize,
+    forearm: usize,
+}
+
+impl Default for HierarchyFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl HierarchyFigure {
+    pub fn new() -> Self {
+        let (hierarchy, transforms, shapes) = transform::simple_human();
+        let n = hierarchy.len();
+        let find = |name: &str| hierarchy.find(name).expect("a joint of simple_human");
+        Self {
+            thigh: find("thigh.L"),
+            forearm: find("forearm.L"),
+            selected: find("upper_arm.L"),
+            hierarchy,
+            transforms,
+            shapes,
+            mode: ScaleMode::NotInherited,
+            animate: true,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            local: vec![Mat4::IDENTITY; n],
+            world: vec![Mat4::IDENTITY; n],
+            draw: vec![Mat4::IDENTITY; n],
+            angles: vec![Vec3::ZERO; n],
+        }
+    }
+
+    pub fn joint_names(&self) -> &[String] {
+        self.hierarchy.names()
+    }
+
+    fn joint(&self, joint: usize) -> Result<usize, String> {
+        if joint < self.hierarchy.len() {
+            Ok(joint)
+        } else {
+            Err(format!(
+                "joint index {joint} is out of range: the figure has {} joints",
+                self.hierarchy.len()
+            ))
+        }
+    }
+
+    /// Selects the joint whose axes are drawn and whose values the panel edits. Its angles and
+    /// scale stay as they are.
+    pub fn select(&mut self, joint: usize) -> Result<(), String> {
+        self.selected = self.joint(joint)?;
+        Ok(())
+    }
+
+    pub fn selected(&self) -> usize {
+        self.selected
+    }
+
+    /// Euler angles of a joint in degrees, as last set or animated.
+    pub fn joint_angles_deg(&self, joint: usize) -> Result<Vec3, String> {
+        Ok(self.transforms[self.joint(joint)?].euler_xyz_rad / DEG)
+    }
+
+    /// Sets a joint's Euler angles, in degrees.
+    pub fn set_joint_angles_deg(&mut self, joint: usize, deg: Vec3) -> Result<(), String> {
+        let j = self.joint(joint)?;
+        self.transforms[j].euler_xyz_rad = Vec3::new(
+            finite("x", deg.x)?,
+            finite("y", deg.y)?,
+            finite("z", deg.z)?,
+        ) * DEG;
+        Ok(())
+    }
+
+    /// A joint's scale along its own axes.
+    pub fn joint_scale(&self, joint: usize) -> Result<Vec3, String> {
+        Ok(self.transforms[self.joint(joint)?].scale)
+    }
+
+    /// Sets a joint's scale along its own axes (each in [0.1, 4]).
+    pub fn set_joint_scale(&mut self, joint: usize, scale: Vec3) -> Result<(), String> {
+        let j = self.joint(joint)?;
+        self.transforms[j].scale = Vec3::new(
+            in_range("sx", scale.x, 0.1, 4.0)?,
+            in_range("sy", scale.y, 0.1, 4.0)?,
+            in_range("sz", scale.z, 0.1, 4.0)?,
+        );
+        Ok(())
+    }
+
+    /// Whether a joint's scale is passed on to its children.
+    pub fn set_inherit_scale(&mut self, inherit: bool) {
+        self.mode = if inherit {
+            ScaleMode::Inherited
+        } else {
+            ScaleMode::NotInherited
+        };
+    }
+
+    /// When on, the time drives a walk cycle (the limbs' x angles); everything else keeps its value.
+    pub fn set_animate(&mut self, animate: bool) {
+        self.animate = animate;
+    }
+
+    /// Runs the student's exercises 1.1 and 1.2 (through the runner) instead of the reference.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    /// How the student's code is called (natively in-process; in the page, the sandbox).
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    pub fn local_matrix(&self, joint: usize) -> Result<Mat4, String> {
+        Ok(self.local[self.joint(joint)?])
+    }
+
+    pub fn world_matrix(&self, joint: usize) -> Result<Mat4, String> {
+        Ok(self.world[self.joint(joint)?])
+    }
+
+    /// The matrix the shape of `joint` is drawn with (`world · S`, or `world` when inherited).
+    pub fn draw_matrix(&self, joint: usize) -> Result<Mat4, String> {
+        Ok(self.draw[self.joint(joint)?])
+    }
+
+    /// The left wrist (the end of the drawn left forearm) at the last pose, world space.
+    pub fn wrist(&self) -> Vec3 {
+        self.draw[self.forearm].transform_point3(WRIST_IN_FOREARM)
+    }
+
+    /// Poses the figure at `time_sec` with the reference core, then, with "use my exercise",
+    /// with the student's. Returns the note: empty, or what the student's code did.
+    pub fn pose(&mut self, time_sec: f32) -> Result<String, String> {
+        self.pose_reference(finite("time", time_sec)?)?;
+        Ok(if self.use_exercise {
+            self.pose_with_exercises()
+        } else if self.mode == ScaleMode::Inherited
+            && self.transforms.iter().all(|x| x.scale == Vec3::ONE)
+        {
+            "Children inherit scale, but every scale is 1, so nothing changes yet: stretch a \
+             joint's scale to see the difference."
+                .to_string()
+        } else {
+            String::new()
+        })
+    }
+
+    fn pose_reference(&mut self, time_sec: f32) -> Result<(), String> {
+        if self.animate {
+            for (a, x) in self.angles.iter_mut().zip(&self.transforms) {
+                *a = x.euler_xyz_rad;
+            }
+            transform::walk_cycle(&self.hierarchy, time_sec, WALK_PERIOD_SEC, &mut self.angles);
+            for (x, a) in self.transforms.iter_mut().zip(&self.angles) {
+                x.euler_xyz_rad = *a;
+            }
+        }
+        self.hierarchy
+            .pose(
+                &self.transforms,
+                self.mode,
+                &mut self.local,
+                &mut self.world,
+                &mut self.draw,
+            )
+            .map_err(|e| e.to_string())
+    }
+
+    /// Replaces the reference's local and world matrices by the student's (each step falls back
+    /// to the reference when it gives no answer) and says whether they match.
+    fn pose_with_exercises(&mut self) -> String {
+        let local_note = self.student_locals();
+        let world_note = self.student_worlds();
+        for ((d, w), x) in self.draw.iter_mut().zip(&self.world).zip(&self.transforms) {
+            *d = match self.mode {
+                ScaleMode::NotInherited => *w * Mat4::from_scale(x.scale),
+                ScaleMode::Inherited => *w,
+            };
+        }
+        format!("{local_note} {world_note}")
+    }
+
+    /// Exercise 1.1 at every joint of the current pose; the first joint where it differs is named.
+    fn student_locals(&mut self) -> String {
+        let exercise = "exercise 1.1 local_matrix";
+        let mut first_wrong = None;
+        for (i, x) in self.transforms.iter().enumerate() {
+            let yours = match run::local_matrix(self.runner, x.translation, x.euler_xyz_rad) {
+                Ok(m) => m,
+                Err(failure) => {
+                    // Keep the reference's matrices for every joint.
+                    self.hierarchy
+                        .pose(
+                            &self.transforms,
+                            self.mode,
+                            &mut self.local,
+                            &mut self.world,
+                            &mut self.draw,
+                        )
+                        .ok();
+                    return failure_note(exercise, EXERCISE_FILE, &failure);
+                }
+            };
+            let reference = transform::local_matrix(x.translation, x.euler_xyz_rad);
+            if first_wrong.is_none() && !close(yours, reference) {
+                first_wrong = Some((i, yours, reference));
+            }
+            self.local[i] = match self.mode {
+                ScaleMode::Inherited => yours * Mat4::from_scale(x.scale),
+                ScaleMode::NotInherited => yours,
+            };
+        }
+        match first_wrong {
+            None => format!(
+                "Your local_matrix matches the reference at all {} joints of this pose.",
+                self.transforms.len()
+            ),
+            Some((i, yours, reference)) => {
+                let at = format!("joint {i} ({})", self.hierarchy.names()[i]);
+                let (_, note) = compare_note(
+                    "local_matrix",
+                    &at,
+                    &yours.to_cols_array(),
+                    &reference.to_cols_array(),
+                    TOLERANCE,
+                );
+                match rotation_problem(Mat3::from_mat4(yours), 1e-3) {
+                    Some(problem) => format!("{note} Its upper-left 3×3 block: {problem}."),
+                    None => note,
+                }
+            }
+        }
+    }
+
+    /// Exercise 1.2 on the local matrices just computed; the first joint where it differs is named.
+    fn student_worlds(&mut self) -> String {
+        let exercise = "exercise 1.2 world_matrices";
+        let parents: Vec<f32> = self.hierarchy.parents().iter().map(|&p| p as f32).collect();
+        transform::world_matrices(self.hierarchy.parents(), &self.local, &mut self.world);
+        let yours = match run::world_matrices(self.runner, parents, self.local.clone()) {
+            Ok(w) if w.len() == self.world.len() => w,
+            Ok(w) => {
+                return format!(
+                    "Your {exercise} returned {} matrices for {} joints. The figure uses the \
+                     reference.",
+                    w.len(),
+                    self.world.len()
+                )
+            }
+            Err(failure) => return failure_note(exercise, EXERCISE_FILE, &failure),
+        };
+        let wrong = (0..yours.len()).find(|&i| !close(yours[i], self.world[i]));
+        let note = match wrong {
+            None => format!(
+                "Your world_matrices matches the reference at all {} joints.",
+                yours.len()
+            ),
+            Some(i) => {
+                let at = format!("joint {i} ({})", self.hierarchy.names()[i]);
+                compare_note(
+                    "world_matrices",
+                    &at,
+                    &yours[i].to_cols_array(),
+                    &self.world[i].to_cols_array(),
+                    TOLERANCE,
+                )
+                .1
+            }
+        };
+        self.world.copy_from_slice(&yours);
+        note
+    }
+
+    /// Poses the figure at `time_sec` and draws it. Returns the note for the page.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let note = self.pose(time_sec)?;
+        frame.grid(12, 0.25);
+        frame.labelled_axes(Mat4::IDENTITY, 0.4);
+        self.draw_body(frame, Mat4::IDENTITY, true);
+        Ok(note)
+    }
+
+    /// The boxes, the face (nose and eyes) and feet, the skeleton, and (with `labels`) the selected joint's
+    /// labelled axes, the left thigh and the left wrist, all placed by `placement`.
+    pub fn draw_body(&self, frame: &mut Frame, placement: Mat4, labels: bool) {
+        for (i, (shape, draw)) in self.shapes.iter().zip(&self.draw).enumerate() {
+            let model = placement
+                * *draw
+                * Mat4::from_translation(shape.center)
+                * Mat4::from_scale(shape.half_extents);
+            let color = if labels && i == self.selected {
+                shape.color * 0.6 + Vec3::new(0.4, 0.35, 0.0)
+            } else {
+                shape.color
+            };
+            frame.mesh(MeshId::CUBE, model, color);
+        }
+        for (joint, center, half, color) in DETAILS {
+            if let Some(i) = self.hierarchy.find(joint) {
+                let model = placement
+                    * self.draw[i]
+                    * Mat4::from_translation(center)
+                    * Mat4::from_scale(half);
+                frame.mesh(MeshId::CUBE, model, color);
+            }
+        }
+        if let Some(head) = self.hierarchy.find("head") {
+            for x in [-0.045, 0.045] {
+                let eye = self.draw[head].transform_point3(Vec3::new(x, 0.17, 0.1));
+                frame.point(placement.transform_point3(eye), 0.018, palette::KEY);
+            }
+        }
+        // The skeleton: a dot at each pivot, a segment to its parent's pivot.
+        let pivot = |i: usize| placement.transform_point3(self.world[i].w_axis.truncate());
+        for (i, &parent) in self.hierarchy.parents().iter().enumerate() {
+            frame.point(pivot(i), 0.025, palette::KEY);
+            if parent >= 0 {
+                frame.line(pivot(parent as usize), pivot(i), palette::KEY);
+            }
+        }
+        if !labels {
+            return;
+        }
+        let selected = placement * self.world[self.selected];
+        frame.labelled_axes(selected, 0.25);
+        frame.label(
+            pivot(self.selected),
+            self.hierarchy.names()[self.selected].clone(),
+            palette::DARK,
+        );
+        frame.label(pivot(self.thigh), "left thigh", palette::PURPLE);
+        let wrist = placement.transform_point3(self.wrist());
+        frame.point(wrist, 0.035, palette::PINK);
+        frame.label(wrist, "left wrist", palette::PINK);
+    }
+
+    /// One walk cycle of the *current* figure (its pose, scales and scale mode, with the walk
+    /// driving the limbs' x angles), for the plot: `[t₀, a₀, h₀, t₁, a₁, h₁, …]` with the left
+    /// thigh's x angle `a` (degrees) and the height `h` of the left wrist (metres), `t` over
+    /// `[0, period_sec]` (the walk itself repeats every [`WALK_PERIOD_SEC`]).
+    pub fn sample_cycle(&self, samples: usize, period_sec: f32) -> Result<Vec<f32>, String> {
+        check_samples(samples)?;
+        let period = in_range("period", period_sec, 0.01, 1000.0)?;
+        let mut walker = self.clone();
+        walker.animate = true;
+        let mut out = Vec::with_capacity(samples * 3);
+        for k in 0..samples {
+            let t = period * k as f32 / (samples - 1) as f32;
+            walker.pose_reference(t)?;
+            let thigh_deg = walker.transforms[walker.thigh].euler_xyz_rad.x / DEG;
+            out.extend_from_slice(&[t, thigh_deg, walker.wrist().y]);
+        }
+        Ok(out)
+    }
+}
+
+/// How close the student's matrices must be to the reference's, per entry.
+const TOLERANCE: f32 = 1e-4;
+
+fn close(a: Mat4, b: Mat4) -> bool {
+    let scale = 1.0f32.max(b.abs().to_cols_array().iter().fold(0.0, |m, x| m.max(*x)));
+    a.abs_diff_eq(b, TOLERANCE * scale)
+}
+
+/// Figure 3: the same pose twice, side by side: scale not inherited (left) and inherited (right).
+#[derive(Clone, Debug)]
+pub struct ScaleComparison {
+    /// `[not inherited, inherited]`, posed alike.
+    figures: [HierarchyFigure; 2],
+    arm: usize,
+    forearm: usize,
+}
+
+/// How far each copy stands from the centre, metres.
+const COMPARISON_OFFSET: f32 = 0.6;
+
+impl Default for ScaleComparison {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl ScaleComparison {
+    /// The upper arm stretched to twice its length along y, the elbow bent 70°.
+    pub fn new() -> Self {
+        let mut figure = HierarchyFigure::new();
+        figure.set_animate(false);
+        let arm = figure.hierarchy.find("upper_arm.L").expect("a joint");
+        let forearm = figure.forearm;
+        let mut inherited = figure.clone();
+        inherited.set_inherit_scale(true);
+        let mut comparison = Self {
+            figures: [figure, inherited],
+            arm,
+            forearm,
+        };
+        comparison
+            .set_upper_arm_scale(Vec3::new(1.0, 2.0, 1.0))
+            .expect("in range");
+        comparison
+            .set_forearm_angles_deg(Vec3::new(-70.0, 0.0, 0.0))
+            .expect("finite");
+        comparison
+    }
+
+    /// The left upper arm's scale along its own axes (each in [0.1, 4]), in both copies.
+    pub fn set_upper_arm_scale(&mut self, scale: Vec3) -> Result<(), String> {
+        for f in &mut self.figures {
+            f.set_joint_scale(self.arm, scale)?;
+        }
+        Ok(())
+    }
+
+    /// The left forearm's Euler angles, degrees, in both copies.
+    pub fn set_forearm_angles_deg(&mut self, deg: Vec3) -> Result<(), String> {
+        for f in &mut self.figures {
+            f.set_joint_angles_deg(self.forearm, deg)?;
+        }
+        Ok(())
+    }
+
+    /// The drawn left forearm of copy `k` (0: not inherited): its length (pivot to wrist, metres)
+    /// and the corner angle of its box furthest from square (degrees; 90 unless sheared).
+    pub fn forearm_shape(&self, k: usize) -> (f32, f32) {
+        let f = &self.figures[k];
+        let draw = f.draw[self.forearm];
+        let length = (f.wrist() - draw.w_axis.truncate()).length();
+        let [x, y, z] = [draw.x_axis, draw.y_axis, draw.z_axis].map(|a| a.truncate());
+        let corner = [(x, y), (y, z), (z, x)]
+            .map(|(a, b)| a.angle_between(b) / DEG)
+            .into_iter()
+            .fold(90.0f32, |worst, a| {
+                if (a - 90.0).abs() > (worst - 90.0).abs() {
+                    a
+                } else {
+                    worst
+                }
+            });
+        (length, corner)
+    }
+
+    /// Draws both copies with a title above each; returns the note (forearm lengths and shear).
+    pub fn draw(&mut self, frame: &mut Frame) -> Result<String, String> {
+        frame.grid(12, 0.25);
+        let titles = ["scale not inherited", "scale inherited"];
+        for (k, f) in self.figures.iter_mut().enumerate() {
+            f.pose(0.0)?;
+            let x = if k == 0 {
+                -COMPARISON_OFFSET
+            } else {
+                COMPARISON_OFFSET
+            };
+            let placement = Mat4::from_translation(Vec3::new(x, 0.0, 0.0));
+            f.draw_body(frame, placement, false);
+            frame.label(Vec3::new(x, 1.95, 0.0), titles[k], palette::DARK);
+            let wrist = placement.transform_point3(f.wrist());
+            frame.point(wrist, 0.03, palette::PINK);
+            frame.label(wrist, "forearm.L", palette::PINK);
+        }
+        let describe = |k: usize| {
+            let (length, angle) = self.forearm_shape(k);
+            format!(
+                "{}: the forearm is {} m long, its box's corner angle {}°",
+                titles[k],
+                super::format_number(length),
+                super::format_number(angle)
+            )
+        };
+        Ok(format!("{}. {}.", describe(0), describe(1)))
+    }
+}

@@ -1,0 +1,420 @@
+//! Lesson 01's figures, natively: what they draw, what they reject, and what they say about the
+//! student's exercises (through test runners that answer wrongly or panic).
+
+use glam::{Mat4, Vec3};
+use inbetween::draw::{palette, Frame, MeshId};
+use inbetween::exercises::run::{self, Failure};
+use inbetween::figures::transforms::{HierarchyFigure, Order, SingleShape, BOX_HALF};
+
+fn near(a: Vec3, b: Vec3, eps: f32) -> bool {
+    a.distance(b) < eps
+}
+
+// Figure 1.
+
+#[test]
+fn both_orders_are_drawn_solid_and_ghost_with_labels() {
+    let shape = SingleShape::new();
+    let mut frame = Frame::default();
+    shape.draw(&mut frame);
+    let solid = frame
+        .meshes
+        .iter()
+        .find(|m| m.mesh == MeshId::CUBE)
+        .unwrap();
+    assert_eq!(solid.color.truncate(), Order::RotateFirst.color());
+    // The ghost is the R·T box's 12 edges (plus the arm and the arc in the same colour).
+    let ghost_centre = shape.matrix(Order::TranslateFirst).w_axis.truncate();
+    let ghost_edges = frame
+        .segments_of(Order::TranslateFirst.color())
+        .filter(|(a, b)| near((*a + *b) * 0.5, ghost_centre, BOX_HALF.length() + 1e-3))
+        .count();
+    assert!(ghost_edges >= 12, "{ghost_edges} ghost edges");
+    let labels: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    for text in ["T·R", "R·T", "p (w = 1)", "v (w = 0)", "x", "y", "z"] {
+        assert!(labels.contains(&text), "missing label {text}: {labels:?}");
+    }
+}
+
+#[test]
+fn translate_first_makes_rt_the_solid_box() {
+    let mut shape = SingleShape::new();
+    shape.set_order(Order::TranslateFirst);
+    let mut frame = Frame::default();
+    shape.draw(&mut frame);
+    let solid = frame
+        .meshes
+        .iter()
+        .find(|m| m.mesh == MeshId::CUBE)
+        .unwrap();
+    assert_eq!(solid.color.truncate(), Order::TranslateFirst.color());
+    let expected = shape.matrix(Order::TranslateFirst) * Mat4::from_scale(BOX_HALF);
+    assert!(solid.model.abs_diff_eq(expected, 1e-6));
+}
+
+#[test]
+fn rt_swings_about_the_origin_and_tr_stays_at_t() {
+    let mut shape = SingleShape::new();
+    shape
+        .set_transform(Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 90.0))
+        .unwrap();
+    let tr = shape.matrix(Order::RotateFirst).w_axis.truncate();
+    let rt = shape.matrix(Order::TranslateFirst).w_axis.truncate();
+    assert!(near(tr, Vec3::X, 1e-6), "{tr}");
+    assert!(near(rt, Vec3::Y, 1e-6), "{rt}");
+    // The arc goes from t to R·t, staying on the circle of radius |t| about the origin.
+    let arc = shape.swing_arc(20);
+    assert!(near(arc[0], Vec3::X, 1e-5) && near(arc[19], Vec3::Y, 1e-5));
+    assert!(arc.iter().all(|p| (p.length() - 1.0).abs() < 1e-5));
+    let mut frame = Frame::default();
+    let note = shape.draw(&mut frame);
+    assert!(note.contains("R·t = (0.000, 1.000, 0.000)"), "{note}");
+}
+
+#[test]
+fn the_direction_never_leaves_the_origin() {
+    let mut shape = SingleShape::new();
+    shape
+        .set_transform(Vec3::new(5.0, -3.0, 2.0), Vec3::new(10.0, 20.0, 30.0))
+        .unwrap();
+    let mut frame = Frame::default();
+    shape.draw(&mut frame);
+    let from_origin = frame
+        .segments_of(palette::PINK)
+        .any(|(a, _)| a == Vec3::ZERO);
+    assert!(from_origin, "the pink direction arrow starts at the origin");
+}
+
+#[test]
+fn single_shape_rejects_non_finite_values_by_name() {
+    let mut shape = SingleShape::new();
+    let e = shape
+        .set_transform(Vec3::new(0.0, f32::NAN, 0.0), Vec3::ZERO)
+        .unwrap_err();
+    assert!(e.contains("ty"), "{e}");
+    let e = shape
+        .set_transform(Vec3::ZERO, Vec3::new(0.0, 0.0, f32::INFINITY))
+        .unwrap_err();
+    assert!(e.contains("rz"), "{e}");
+}
+
+// Figure 2.
+
+fn joint(figure: &HierarchyFigure, name: &str) -> usize {
+    figure.joint_names().iter().position(|n| n == name).unwrap()
+}
+
+#[test]
+fn selecting_a_joint_keeps_its_scale() {
+    let mut figure = HierarchyFigure::new();
+    let arm = joint(&figure, "upper_arm.L");
+    figure
+        .set_joint_scale(arm, Vec3::new(1.0, 2.0, 1.0))
+        .unwrap();
+    figure.select(0).unwrap();
+    figure.select(arm).unwrap();
+    assert_eq!(figure.joint_scale(arm).unwrap(), Vec3::new(1.0, 2.0, 1.0));
+}
+
+#[test]
+fn hierarchy_validation_rules() {
+    let mut figure = HierarchyFigure::new();
+    let e = figure
+        .set_joint_angles_deg(0, Vec3::new(f32::NAN, 0.0, 0.0))
+        .unwrap_err();
+    assert!(e.contains("x must be a finite number"), "{e}");
+    let e = figure
+        .set_joint_scale(1, Vec3::new(1.0, 99.0, 1.0))
+        .unwrap_err();
+    assert!(e.contains("sy must lie in [0.1, 4]"), "{e}");
+    let e = figure.select(99).unwrap_err();
+    assert!(e.contains("out of range") && e.contains("11 joints"), "{e}");
+    assert!(figure.sample_cycle(1, 1.2).is_err());
+    assert!(figure.sample_cycle(50, f32::INFINITY).is_err());
+    assert!(figure.pose(f32::NAN).unwrap_err().contains("time"));
+}
+
+#[test]
+fn the_figure_has_a_face_and_feet_in_front() {
+    let mut figure = HierarchyFigure::new();
+    figure.set_animate(false);
+    let mut frame = Frame::default();
+    figure.draw(&mut frame, 0.0).unwrap();
+    // 11 joint boxes, then the nose and two feet: all three reach further forward (+z) than back.
+    let cubes: Vec<_> = frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == MeshId::CUBE)
+        .collect();
+    let details = &cubes[11..14];
+    for d in details {
+        let front = d.model.transform_point3(Vec3::Z).z;
+        let back = d.model.transform_point3(-Vec3::Z).z;
+        assert!(front > 0.1 && back > -0.1, "front {front}, back {back}");
+    }
+    // Feet rest on the ground in the rest pose.
+    for foot in &details[1..] {
+        let sole = foot.model.transform_point3(-Vec3::Y).y;
+        assert!(sole.abs() < 1e-4, "sole at {sole}");
+    }
+}
+
+#[test]
+fn labels_name_the_selected_joint_and_the_wrist() {
+    let mut figure = HierarchyFigure::new();
+    let mut frame = Frame::default();
+    figure.draw(&mut frame, 0.3).unwrap();
+    let wrist = frame
+        .labels
+        .iter()
+        .find(|l| l.text == "left wrist")
+        .unwrap();
+    assert!(near(wrist.anchor, figure.wrist(), 1e-6));
+    assert!(frame.labels.iter().any(|l| l.text == "upper_arm.L"));
+}
+
+/// Height of the left wrist at `t` in the drawn figure and in the plot.
+fn drawn_and_plotted(figure: &mut HierarchyFigure, t_index: usize) -> (f32, f32) {
+    let samples = figure.sample_cycle(13, 1.2).unwrap();
+    let t = samples[3 * t_index];
+    figure.pose(t).unwrap();
+    (figure.wrist().y, samples[3 * t_index + 2])
+}
+
+#[test]
+fn the_plot_follows_the_pose_the_scales_and_the_scale_mode() {
+    let mut figure = HierarchyFigure::new();
+    let base = figure.sample_cycle(13, 1.2).unwrap();
+    let (drawn, plotted) = drawn_and_plotted(&mut figure, 4);
+    assert!((drawn - plotted).abs() < 1e-5, "{drawn} vs {plotted}");
+
+    // Bending the chest forward moves the wrist in the plot (the arm turns with the chest).
+    let chest = joint(&figure, "chest");
+    figure
+        .set_joint_angles_deg(chest, Vec3::new(40.0, 0.0, 0.0))
+        .unwrap();
+    let bent = figure.sample_cycle(13, 1.2).unwrap();
+    assert!(
+        (bent[2] - base[2]).abs() > 0.02,
+        "{} vs {}",
+        bent[2],
+        base[2]
+    );
+    let (drawn, plotted) = drawn_and_plotted(&mut figure, 7);
+    assert!((drawn - plotted).abs() < 1e-5);
+
+    // Stretching the upper arm moves the wrist only when scale is inherited... and the drawn
+    // forearm's end either way follows the plot.
+    figure.set_joint_angles_deg(chest, Vec3::ZERO).unwrap();
+    let arm = joint(&figure, "upper_arm.L");
+    figure
+        .set_joint_scale(arm, Vec3::new(1.0, 2.0, 1.0))
+        .unwrap();
+    let not_inherited = figure.sample_cycle(13, 1.2).unwrap();
+    assert!((not_inherited[2] - base[2]).abs() < 1e-5);
+    figure.set_inherit_scale(true);
+    let inherited = figure.sample_cycle(13, 1.2).unwrap();
+    assert_eq!(
+        figure.pose(0.0).unwrap(),
+        "",
+        "no hint once a scale is not 1"
+    );
+    assert!(
+        inherited[2] < base[2] - 0.2,
+        "{} vs {}",
+        inherited[2],
+        base[2]
+    );
+    let (drawn, plotted) = drawn_and_plotted(&mut figure, 9);
+    assert!((drawn - plotted).abs() < 1e-5);
+}
+
+// The student's exercises, through runners.
+
+fn wrong_order(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name == "local_matrix" {
+        // R·T instead of T·R.
+        let t = Vec3::new(args[0], args[1], args[2]);
+        let r =
+            inbetween::transform::local_matrix(Vec3::ZERO, Vec3::new(args[3], args[4], args[5]));
+        return Ok((r * Mat4::from_translation(t)).to_cols_array().to_vec());
+    }
+    run::direct(name, args)
+}
+
+fn local_times_parent(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name == "world_matrices" {
+        // world = local · parent: the product in the wrong order.
+        let n = args[0] as usize;
+        let parents = &args[1..1 + n];
+        let local: Vec<Mat4> = (0..n)
+            .map(|i| Mat4::from_cols_slice(&args[2 + n + 16 * i..2 + n + 16 * (i + 1)]))
+            .collect();
+        let mut world = local.clone();
+        for i in 0..n {
+            if parents[i] >= 0.0 {
+                world[i] = local[i] * world[parents[i] as usize];
+            }
+        }
+        let mut out = vec![n as f32];
+        world.iter().for_each(|m| out.extend(m.to_cols_array()));
+        return Ok(out);
+    }
+    run::direct(name, args)
+}
+
+fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::Panicked(
+        "index out of bounds at transforms.rs:40".into(),
+    ))
+}
+
+fn solved(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    // The reference answers (what a correct student's code returns).
+    let mut rest = args;
+    use inbetween::exercises::run::Flat;
+    match name {
+        "local_matrix" => {
+            let t = Vec3::take(&mut rest).unwrap();
+            let a = Vec3::take(&mut rest).unwrap();
+            Ok(inbetween::transform::local_matrix(t, a)
+                .to_cols_array()
+                .to_vec())
+        }
+        _ => {
+            let parents: Vec<f32> = Vec::take(&mut rest).unwrap();
+            let local: Vec<Mat4> = Vec::take(&mut rest).unwrap();
+            let parents: Vec<i32> = parents.iter().map(|&p| p as i32).collect();
+            let mut world = local.clone();
+            inbetween::transform::world_matrices(&parents, &local, &mut world);
+            let mut out = Vec::new();
+            world.put(&mut out);
+            Ok(out)
+        }
+    }
+}
+
+fn figure_with(runner: run::Runner) -> HierarchyFigure {
+    let mut figure = HierarchyFigure::new();
+    figure.set_runner(runner);
+    figure.set_use_exercise(true);
+    figure
+}
+
+#[test]
+fn stubs_say_not_done_and_the_reference_is_drawn() {
+    let mut figure = figure_with(run::direct);
+    let note = figure.pose(0.3).unwrap();
+    if cfg!(feature = "solutions") {
+        return;
+    }
+    assert!(
+        note.contains("Not done yet: exercise 1.1 local_matrix"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Not done yet: exercise 1.2 world_matrices"),
+        "{note}"
+    );
+    let mut reference = HierarchyFigure::new();
+    reference.pose(0.3).unwrap();
+    assert_eq!(figure.wrist(), reference.wrist());
+}
+
+#[test]
+fn a_correct_answer_matches() {
+    let mut figure = figure_with(solved);
+    let note = figure.pose(0.3).unwrap();
+    assert!(
+        note.contains("Your local_matrix matches the reference at all 11 joints")
+            && note.contains("Your world_matrices matches the reference at all 11 joints"),
+        "{note}"
+    );
+}
+
+#[test]
+fn a_wrong_local_matrix_is_named_with_its_joint_and_drawn() {
+    let mut figure = figure_with(wrong_order);
+    let note = figure.pose(0.3).unwrap();
+    // R·T equals T·R for joints that do not turn: the first difference is a turned joint.
+    assert!(
+        note.contains("Your local_matrix differs at joint"),
+        "{note}"
+    );
+    assert!(
+        note.contains("yours (") && note.contains("reference ("),
+        "{note}"
+    );
+    let mut reference = HierarchyFigure::new();
+    reference.pose(0.3).unwrap();
+    assert!(
+        figure.wrist().distance(reference.wrist()) > 1e-3,
+        "the figure shows the student's answer"
+    );
+}
+
+#[test]
+fn a_wrong_world_matrices_is_named_with_its_joint() {
+    let mut figure = figure_with(local_times_parent);
+    let note = figure.pose(0.3).unwrap();
+    // Pelvis and chest only translate, and translations commute: the first difference is the
+    // first rotated child, the left upper arm.
+    assert!(
+        note.contains("Your world_matrices differs at joint 3 (upper_arm.L)"),
+        "{note}"
+    );
+}
+
+#[test]
+fn a_panic_is_shown_and_the_reference_drawn() {
+    let mut figure = figure_with(panics);
+    let note = figure.pose(0.3).unwrap();
+    assert!(
+        note.contains("Your exercise 1.1 local_matrix panicked: index out of bounds"),
+        "{note}"
+    );
+    assert!(
+        note.contains("exercise 1.2 world_matrices panicked"),
+        "{note}"
+    );
+    let mut reference = HierarchyFigure::new();
+    reference.pose(0.3).unwrap();
+    assert_eq!(figure.wrist(), reference.wrist());
+}
+
+// Figure 3.
+
+#[test]
+fn inherited_scale_stretches_and_shears_the_child() {
+    use inbetween::figures::transforms::ScaleComparison;
+    let mut comparison = ScaleComparison::new();
+    let mut frame = Frame::default();
+    let note = comparison.draw(&mut frame).unwrap();
+    let (length, angle) = comparison.forearm_shape(0);
+    assert!((length - 0.28).abs() < 1e-4 && (angle - 90.0).abs() < 1e-3);
+    let (length, angle) = comparison.forearm_shape(1);
+    assert!(length > 0.3, "the forearm grows with its parent: {length}");
+    assert!((angle - 90.0).abs() > 5.0, "and is sheared: {angle}");
+    assert!(
+        note.contains("scale not inherited: the forearm is 0.280 m long"),
+        "{note}"
+    );
+    // Uniform scale and a straight elbow: no shear, only growth.
+    comparison.set_upper_arm_scale(Vec3::splat(2.0)).unwrap();
+    comparison.draw(&mut frame).unwrap();
+    assert!((comparison.forearm_shape(1).1 - 90.0).abs() < 1e-3);
+    assert!(comparison
+        .set_upper_arm_scale(Vec3::new(0.0, 1.0, 1.0))
+        .is_err());
+    assert!(comparison
+        .set_forearm_angles_deg(Vec3::new(0.0, f32::NAN, 0.0))
+        .is_err());
+}
+
+#[test]
+fn inheriting_unit_scales_says_why_nothing_changes() {
+    let mut figure = HierarchyFigure::new();
+    figure.set_inherit_scale(true);
+    let note = figure.pose(0.0).unwrap();
+    assert!(note.contains("every scale is 1"), "{note}");
+}
