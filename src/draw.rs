@@ -142,7 +142,7 @@ impl Frame {
     pub fn arrow(&mut self, from: Vec3, to: Vec3, color: Vec3, head: f32) {
         let v = to - from;
         let length = v.length();
-        if !(length > 1e-6) || !length.is_finite() {
+        if length.is_nan() || length <= 1e-6 || length.is_infinite() {
             return;
         }
         let dir = v / length;

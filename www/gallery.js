@@ -1,3 +1,4 @@
+import './devloop.js';
 // The lesson index: one card per lesson, grouped by part, from the catalog the build writes.
 const catalog = await (await fetch('catalog.json')).json();
 const root = document.getElementById('gallery');

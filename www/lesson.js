@@ -3,6 +3,8 @@
 // pages import it.
 import init, { Viewer, buildInfo } from '../pkg/inbetween.js';
 import GUI from '../vendor/lil-gui/lil-gui.esm.min.js';
+// Under `scripts/serve`: reload after a rebuild, show a failed build's errors (idle otherwise).
+import './devloop.js';
 
 export { GUI };
 

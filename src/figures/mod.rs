@@ -78,12 +78,12 @@ pub fn rotation_problem(m: Mat3, tolerance: f32) -> Option<String> {
         .iter()
         .fold(0.0f32, |a, x| a.max(x.abs()));
     let det = m.determinant();
-    if !(off <= tolerance) {
+    if off.is_nan() || off > tolerance {
         Some(format!(
             "it is not a rotation: its columns are not orthonormal (largest entry of MᵀM − I is {})",
             format_number(off)
         ))
-    } else if !((det - 1.0).abs() <= tolerance) {
+    } else if det.is_nan() || (det - 1.0).abs() > tolerance {
         Some(format!(
             "it is not a rotation: its determinant is {}, not 1",
             format_number(det)
@@ -96,7 +96,7 @@ pub fn rotation_problem(m: Mat3, tolerance: f32) -> Option<String> {
 /// What is wrong with a quaternion that should be a unit quaternion, or `None`.
 pub fn unit_quat_problem(q: Quat, tolerance: f32) -> Option<String> {
     let len = q.length();
-    if !((len - 1.0).abs() <= tolerance) {
+    if len.is_nan() || (len - 1.0).abs() > tolerance {
         Some(format!(
             "it is not a unit quaternion: its length is {}",
             format_number(len)

@@ -15,7 +15,7 @@ mod viewer;
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
-pub use transforms::{HierarchyScene, SingleShapeScene};
+pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
 pub use viewer::Viewer;
 
 use wasm_bindgen::prelude::*;
