@@ -214,9 +214,13 @@ impl RigidMotion {
                 frame.label(p - Vec3::Y * 0.3, format!("{k}/3"), color);
             }
             let (_, miss) = self.third_three_times(method);
+            let result = if miss < 1e-3 {
+                format!("lands on B (off by {} m, round-off)", format_number(miss))
+            } else {
+                format!("misses B by {} m", format_number(miss))
+            };
             said.push(format!(
-                "{name}: a third of the way, applied three times to A, lands {} m from B",
-                format_number(miss)
+                "{name}: its first third, applied three times to A, {result}"
             ));
         }
         if said.is_empty() {
