@@ -100,7 +100,7 @@ fn check_invertible(m: Mat3) -> Result<DMat3, RotationError> {
     // columns, so the ratio measures how flat the box spanned by the columns is, whatever their
     // lengths (a key scaled by 1e12 is fine; one whose columns are nearly parallel is not).
     let columns = m64.x_axis.length() * m64.y_axis.length() * m64.z_axis.length();
-    if !(columns > 0.0) || determinant.abs() <= SINGULAR_RATIO * columns {
+    if columns == 0.0 || determinant.abs() <= SINGULAR_RATIO * columns {
         return Err(RotationError::SingularMatrix {
             determinant: determinant as f32,
         });
