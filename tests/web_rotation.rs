@@ -136,3 +136,23 @@ fn sampled_plots_have_the_promised_shape() {
     let rigid = RigidScene::new();
     assert_eq!(rigid.sample_speed(5).map_err(message).unwrap().len(), 20);
 }
+
+#[wasm_bindgen_test]
+fn new_controls_validate_and_report() {
+    let scene = InterpolationScene::new();
+    let arcs = scene.arc_angles_deg();
+    assert!((arcs[0] + arcs[1] - 360.0).abs() < 1e-3);
+    assert_eq!(RodriguesScene::new().matrix().len(), 9, "R is shown 3×3");
+    let mut rigid = RigidScene::new();
+    assert!(message(rigid.set_show(4).unwrap_err()).contains("show must be"));
+    assert!(rigid.set_show(3).is_ok());
+    rigid.set_thirds(true);
+    let mut affine = AffineScene::new();
+    let huge = glam::Mat4::from_scale(glam::Vec3::new(1e38, 1.0, 1.0));
+    assert!(
+        affine
+            .set_key_matrix(0, huge.to_cols_array().to_vec())
+            .is_ok(),
+        "det 1e38 is not singular"
+    );
+}

@@ -1,11 +1,27 @@
-// Lesson 03: wires the page's controls to the wasm scenes. No math here: it lives in Rust.
-import { startLesson, markDrawn, Timeline, Plot, showMatrix, GUI, pingPong } from '../../www/lesson.js';
+// Lesson 03: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/figures/rotations.rs).
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong } from '../../www/lesson.js';
 import { InterpolationScene, GimbalScene, RodriguesScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
-/** Time on the timeline as t in [0, 1], going there and back so the motion never jumps. */
 const fmt = (v) => Array.from(v, (x) => x.toFixed(3)).join(', ');
+// The palette's colours (www/palette.css) for the plots.
+const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
+
+/** A 3×3 column-major matrix as a table. */
+function showMatrix3(table, cols) {
+  const rows = [0, 1, 2].map((r) => [0, 1, 2].map((c) => cols[c * 3 + r]));
+  table.innerHTML = rows
+    .map((row) => `<tr>${row.map((v) => `<td>${(Math.abs(v) < 5e-5 ? 0 : v).toFixed(3)}</td>`).join('')}</tr>`)
+    .join('');
+}
+
+/** Copies the accepted values back into `p` and the panel, after a setter rejected a change. */
+function revert(gui, p, accepted) {
+  Object.assign(p, accepted);
+  gui.controllersRecursive().forEach((c) => c.updateDisplay());
+}
 
 // Figure 1: matrix lerp, Euler lerp, nlerp, slerp side by side.
 const interpViewer = await lesson.figure('#fig-interp');
@@ -13,7 +29,7 @@ if (interpViewer) {
   interpViewer.setCamera(0, 1.1, 0, 6.2, 0.0, 0.25);
   const scene = new InterpolationScene();
   const timeline = new Timeline(document.getElementById('interp-timeline'), { duration: 4 });
-  const p = { ex: 150, ey: 20, ez: 120, sx: -20, sy: 10, sz: 0, longArc: false, useExercise: false };
+  const p = { ex: 120, ey: 70, ez: -120, sx: 0, sy: 0, sz: 0, longArc: false, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-interp .panel'), title: 'Keys (Euler X-Y′-Z″, °)' });
   const end = gui.addFolder('end key');
   end.add(p, 'ex', -180, 180, 1).name('end angle x');
@@ -26,10 +42,12 @@ if (interpViewer) {
   gui.add(p, 'longArc').name('long arc (use −q)');
   gui.add(p, 'useExercise').name('use my exercise');
   const det = new Plot(document.getElementById('interp-det'), {
-    title: 'Matrix lerp: is it still a rotation?', xLabel: 't', series: ['determinant', '‖MᵀM − I‖'], colors: ['#c4443a', '#7a2a24'],
+    title: 'Matrix lerp: is it still a rotation?', xLabel: 't (0 to 1)', yLabel: 'det M, ‖MᵀM − I‖ (no unit)',
+    series: ['determinant', '‖MᵀM − I‖'], colors: [css('--x-axis') ?? '#d62728', '#7a2a24'], minSpan: 0.1,
   });
   const speed = new Plot(document.getElementById('interp-speed'), {
-    title: 'Angular speed (° per unit of t)', xLabel: 't', series: ['Euler lerp', 'nlerp', 'slerp'], colors: ['#d99a1a', '#33a65a', '#3373e6'],
+    title: 'Angular speed', xLabel: 't (0 to 1)', yLabel: 'angular speed (° per unit of t)',
+    series: ['Euler lerp', 'nlerp', 'slerp'], colors: ['#e68a00', '#2ca02c', '#1f6fd6'], minSpan: 10,
   });
   const apply = () => {
     scene.setKeysEulerDeg(p.sx, p.sy, p.sz, p.ex, p.ey, p.ez);
@@ -37,21 +55,27 @@ if (interpViewer) {
     scene.setUseExercise(p.useExercise);
     const d = scene.sampleDeterminant(101);
     const dc = [[], [], []];
-    for (let i = 0; i < d.length; i += 3) { dc[0].push(d[i]); dc[1].push(d[i + 1]); dc[2].push(d[i + 2]); }
+    for (let i = 0; i < d.length; i += 3) for (let k = 0; k < 3; k++) dc[k].push(d[i + k]);
     det.setData(dc);
     const s = scene.sampleAngularSpeed(101);
     const sc = [[], [], [], []];
     for (let i = 0; i < s.length; i += 4) for (let k = 0; k < 4; k++) sc[k].push(s[i + k]);
     speed.setData(sc);
-    document.getElementById('interp-quat').textContent = `end key as used by nlerp and slerp: q₁ = (${fmt(scene.endQuatUsed())}) (x, y, z, w)`;
+    const [short, long] = Array.from(scene.arcAnglesDeg());
+    document.getElementById('interp-quat').textContent =
+      `End key as used by nlerp and slerp: q₁ = (${fmt(scene.endQuatUsed())}) (x, y, z, w). ` +
+      `Short arc ${short.toFixed(1)}°, long arc ${long.toFixed(1)}° the other way round.`;
   };
   gui.onChange(apply);
   apply();
   const note = document.getElementById('interp-note');
   lesson.onFrame((dt) => {
     timeline.advance(dt);
-    const message = scene.draw(interpViewer, pingPong(timeline));
+    const t = pingPong(timeline);
+    const message = scene.draw(interpViewer, t);
     if (note.textContent !== message) note.textContent = message;
+    det.setCursor?.(t);
+    speed.setCursor?.(t);
     markDrawn('#fig-interp');
   });
 }
@@ -70,11 +94,7 @@ if (gimbalViewer) {
   const note = document.getElementById('gimbal-note');
   function apply() {
     scene.setAnglesDeg(p.yaw, p.pitch, p.roll);
-    const angle = scene.axesAngleDeg();
-    const [y, x, z, locked] = Array.from(scene.decomposedDeg());
-    note.textContent = `Angle between the yaw and roll axles: ${angle.toFixed(1)}°. ` +
-      (locked ? 'Gimbal lock: read back from the matrix, only yaw + roll is determined, so roll is set to 0: ' : 'Read back from the matrix: ') +
-      `yaw ${y.toFixed(1)}°, pitch ${x.toFixed(1)}°, roll ${z.toFixed(1)}°.`;
+    note.textContent = scene.note();
   }
   gui.onChange(apply);
   apply();
@@ -91,6 +111,7 @@ if (rodViewer) {
   const scene = new RodriguesScene();
   const timeline = new Timeline(document.getElementById('rodrigues-timeline'), { duration: 3 });
   const p = { angle: 120, nx: 0.3, ny: 1, nz: 0.2, vx: 1.2, vy: 0.4, vz: 0.3, useExercise: false };
+  let accepted = { ...p };
   const gui = new GUI({ container: document.querySelector('#fig-rodrigues .panel'), title: 'Axis and angle' });
   gui.add(p, 'angle', -360, 360, 1).name('angle θ (°)');
   const axis = gui.addFolder('axis n (normalised)');
@@ -103,26 +124,29 @@ if (rodViewer) {
   vec.add(p, 'vz', -2, 2, 0.01);
   gui.add(p, 'useExercise').name('use my exercise');
   const note = document.getElementById('rodrigues-note');
+  let rejected = '';
   const apply = () => {
     try {
       scene.setAxisAngle(p.nx, p.ny, p.nz, p.angle);
-      note.textContent = '';
+      scene.setVector(p.vx, p.vy, p.vz);
+      accepted = { ...p };
+      rejected = '';
     } catch (e) {
-      // A zero axis is a mistake a reader can make with the sliders: say so, keep the last axis.
-      note.textContent = `Axis not changed: ${e.message ?? e}`;
+      // A zero axis is a mistake a reader can make with the sliders: say so, and put the
+      // controls back to the values the figure still shows.
+      rejected = `Not changed: ${e.message ?? e}`;
+      revert(gui, p, accepted);
     }
-    scene.setVector(p.vx, p.vy, p.vz);
     scene.setUseExercise(p.useExercise);
-    showMatrix(document.getElementById('rodrigues-matrix'), scene.matrix());
+    showMatrix3(document.getElementById('rodrigues-matrix'), scene.matrix());
     document.getElementById('rodrigues-quat').textContent = `q = (${fmt(scene.quaternion())}) (x, y, z, w)`;
   };
   gui.onChange(apply);
   apply();
-  let shown = '';
   lesson.onFrame((dt) => {
     timeline.advance(dt);
-    const message = scene.draw(rodViewer, pingPong(timeline));
-    if (message && message !== shown) { note.textContent = message; shown = message; }
+    const message = [rejected, scene.draw(rodViewer, pingPong(timeline))].filter(Boolean).join(' ');
+    if (note.textContent !== message) note.textContent = message;
     markDrawn('#fig-rodrigues');
   });
 }

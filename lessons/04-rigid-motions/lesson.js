@@ -1,10 +1,15 @@
-// Lesson 04: wires the page's controls to the wasm scenes. No math here: it lives in Rust.
+// Lesson 04: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/figures/rigid.rs).
 import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns } from '../../www/lesson.js';
 import { RigidScene, AffineScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
-/** Time on the timeline as t in [0, 1], going there and back so the motion never jumps. */
+/** Copies the accepted values back into `p` and the panel, after a setter rejected a change. */
+function revert(gui, p, accepted) {
+  Object.assign(p, accepted);
+  gui.controllersRecursive().forEach((c) => c.updateDisplay());
+}
 
 // Figure 1: lerp + slerp, dual quaternion blending, screw motion.
 const rigidViewer = await lesson.figure('#fig-rigid');
@@ -12,44 +17,58 @@ if (rigidViewer) {
   rigidViewer.setCamera(0, 1.0, 0, 6.5, 0.35, 0.35);
   const scene = new RigidScene();
   const timeline = new Timeline(document.getElementById('rigid-timeline'), { duration: 4 });
-  const p = { angle: 150, ax: 0.2, ay: 1, az: 0.3, tx: 1.5, ty: 1.4, tz: 0.3, useExercise: false };
+  const SHOW = { 'all three': 0, 'lerp + slerp': 1, 'dual quaternion blend': 2, screw: 3 };
+  const p = {
+    angle: 150, ax: 0.2, ay: 1, az: 0.3, tx: 1.5, ty: 1.4, tz: 0.3, show: 0, thirds: false, useExercise: false,
+  };
+  let accepted = { ...p };
   const gui = new GUI({ container: document.querySelector('#fig-rigid .panel'), title: 'Key B' });
+  gui.add(p, 'show', SHOW).name('show');
+  const thirdsButton = gui.add({ toggle: () => { p.thirds = !p.thirds; thirdsButton.name(p.thirds ? 'hide the thirds' : 'a third, three times'); apply(); } }, 'toggle')
+    .name('a third, three times');
   gui.add(p, 'angle', -180, 180, 1).name('angle (°)');
   const axis = gui.addFolder('rotation axis');
   axis.add(p, 'ax', -1, 1, 0.01);
   axis.add(p, 'ay', -1, 1, 0.01);
   axis.add(p, 'az', -1, 1, 0.01);
-  const move = gui.addFolder('translation');
+  const move = gui.addFolder('translation (m)');
   move.add(p, 'tx', -3, 3, 0.01);
   move.add(p, 'ty', 0, 3, 0.01);
   move.add(p, 'tz', -3, 3, 0.01);
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('rigid-plot'), {
-    title: 'Speed of the nose (m per unit of t)', xLabel: 't', series: ['lerp + slerp', 'dual quaternion blend', 'screw'],
-    colors: ['#e0901a', '#33a65a', '#3373e6'],
+    title: 'Speed of the nose', xLabel: 't (0 to 1)', yLabel: 'speed (m per unit of t)',
+    series: ['lerp + slerp', 'dual quaternion blend', 'screw'], colors: ['#e68a00', '#2ca02c', '#1f6fd6'], minSpan: 0.5,
   });
   const note = document.getElementById('rigid-note');
-  let axisNote = '';
-  const apply = () => {
+  let rejected = '';
+  function apply() {
     try {
       scene.setEnd(p.ax, p.ay, p.az, p.angle, p.tx, p.ty, p.tz);
-      axisNote = '';
+      accepted = { ...p };
+      rejected = '';
     } catch (e) {
-      axisNote = `Key B not changed: ${e.message ?? e}`;
+      // A zero axis: say so, and put the sliders back to the key the figure still shows.
+      rejected = `Key B not changed: ${e.message ?? e}`;
+      revert(gui, p, accepted);
     }
+    scene.setShow(Number(p.show));
+    scene.setThirds(p.thirds);
     scene.setUseExercise(p.useExercise);
     plot.setData(columns(scene.sampleSpeed(101), 4));
     const s = Array.from(scene.screwAxis());
     document.getElementById('rigid-screw').textContent =
       `Screw A → B: turn ${s[6].toFixed(1)}° about the line through (${s.slice(3, 6).map((x) => x.toFixed(2)).join(', ')}) ` +
       `along (${s.slice(0, 3).map((x) => x.toFixed(2)).join(', ')}), sliding ${s[7].toFixed(2)} m along it.`;
-  };
+  }
   gui.onChange(apply);
   apply();
   lesson.onFrame((dt) => {
     timeline.advance(dt);
-    const message = [axisNote, scene.draw(rigidViewer, pingPong(timeline))].filter(Boolean).join(' ');
+    const t = pingPong(timeline);
+    const message = [rejected, scene.draw(rigidViewer, t)].filter(Boolean).join(' ');
     if (note.textContent !== message) note.textContent = message;
+    plot.setCursor?.(t);
     markDrawn('#fig-rigid');
   });
 }
@@ -61,6 +80,7 @@ if (affineViewer) {
   const scene = new AffineScene();
   const timeline = new Timeline(document.getElementById('affine-timeline'), { duration: 4 });
   const p = { angle: 160, sx: 1.6, sy: 0.6, sz: 1, shear: 0.6, useExercise: false };
+  let accepted = { ...p };
   const gui = new GUI({ container: document.querySelector('#fig-affine .panel'), title: 'Key B' });
   gui.add(p, 'angle', -180, 180, 1).name('angle about y (°)');
   gui.add(p, 'sx', -2, 2.5, 0.01).name('scale x');
@@ -69,17 +89,21 @@ if (affineViewer) {
   gui.add(p, 'shear', -1.5, 1.5, 0.01).name('shear x by y');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('affine-plot'), {
-    title: 'Volume factor det M(t)', xLabel: 't', series: ['naive lerp', 'polar decomposition'], colors: ['#d94d40', '#3373e6'],
+    title: 'Volume factor det M(t)', xLabel: 't (0 to 1)', yLabel: 'det M (volume ratio)',
+    series: ['naive lerp', 'polar decomposition'], colors: ['#d62728', '#1f6fd6'], minSpan: 0.1,
   });
   const note = document.getElementById('affine-note');
-  let keyNote = '';
+  let rejected = '';
   const apply = () => {
     try {
       scene.setKeyB(p.angle, p.sx, p.sy, p.sz, p.shear);
-      keyNote = '';
+      accepted = { ...p };
+      rejected = '';
     } catch (e) {
-      // A zero or negative scale makes a singular or mirroring key: the core says which.
-      keyNote = `Key B not changed: ${e.message ?? e}`;
+      // A zero or negative scale makes a singular or mirroring key: the core says which, and
+      // the sliders go back to the key the figure still shows.
+      rejected = `Key B not changed: ${e.message ?? e}`;
+      revert(gui, p, accepted);
     }
     scene.setUseExercise(p.useExercise);
     plot.setData(columns(scene.sampleDeterminant(101), 3));
@@ -88,8 +112,10 @@ if (affineViewer) {
   apply();
   lesson.onFrame((dt) => {
     timeline.advance(dt);
-    const message = [keyNote, scene.draw(affineViewer, pingPong(timeline))].filter(Boolean).join(' ');
+    const t = pingPong(timeline);
+    const message = [rejected, scene.draw(affineViewer, t)].filter(Boolean).join(' ');
     if (note.textContent !== message) note.textContent = message;
+    plot.setCursor?.(t);
     markDrawn('#fig-affine');
   });
 }

@@ -137,25 +137,31 @@ fn unit_axis(rng: &mut super::grade::Rng) -> Vec3 {
 
 /// Grades this file's exercises against the reference on random and edge-case inputs.
 pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
-    use super::grade::check;
+    use super::grade::{check_cases, RANDOM};
     use std::f32::consts::{FRAC_PI_2, PI};
     const L03: &str = "03-rotations";
     const L04: &str = "04-rigid-motions";
 
     // 3.1: angle 0, π, 2π (gives −q: accepted), negative angles, tiny angles, random.
     let mut axis_angles = vec![
-        (Vec3::X, 0.0),
-        (Vec3::Y, PI),
-        (Vec3::Z, FRAC_PI_2),
-        (Vec3::X, -FRAC_PI_2),
-        (Vec3::Y, 2.0 * PI),
-        (Vec3::new(1.0, 1.0, 1.0).normalize(), 2.0 * PI / 3.0),
-        (Vec3::new(0.0, 0.6, 0.8), 1e-6),
+        ("angle 0: the identity (0, 0, 0, 1)", (Vec3::X, 0.0)),
+        ("half a turn: w = 0", (Vec3::Y, PI)),
+        ("a quarter turn: the half angle", (Vec3::Z, FRAC_PI_2)),
+        ("a negative angle", (Vec3::X, -FRAC_PI_2)),
+        (
+            "a full turn: gives −identity, accepted",
+            (Vec3::Y, 2.0 * PI),
+        ),
+        (
+            "a diagonal axis: every component",
+            (Vec3::new(1.0, 1.0, 1.0).normalize(), 2.0 * PI / 3.0),
+        ),
+        ("a tiny angle", (Vec3::new(0.0, 0.6, 0.8), 1e-6)),
     ];
     for _ in 0..200 {
-        axis_angles.push((unit_axis(rng), rng.range(-7.0, 7.0)));
+        axis_angles.push((RANDOM, (unit_axis(rng), rng.range(-7.0, 7.0))));
     }
-    let from_axis_angle = check(
+    let from_axis_angle = check_cases(
         L03,
         "quat_from_axis_angle",
         &axis_angles,
@@ -170,24 +176,42 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let q1 = Quat::from_rotation_y(0.3 + 1e-4);
     let far = Quat::from_rotation_x(2.5) * Quat::from_rotation_z(0.7);
     let mut slerps = vec![
-        (q0, far, 0.0),
-        (q0, far, 1.0),
-        (q0, far, 0.5),
-        (q0, q0, 0.3),
-        (q0, q1, 0.5),
-        (q0, -q1, 0.25),
-        (q0, -q0, 0.5),
-        (Quat::IDENTITY, Quat::from_rotation_z(PI), 0.5),
-        (Quat::IDENTITY, Quat::from_rotation_z(PI - 1e-3), 0.5),
-        (Quat::IDENTITY, Quat::from_rotation_z(PI + 0.4), 0.5),
-        (Quat::IDENTITY, -Quat::from_rotation_x(1.0), 0.75),
+        ("t = 0 gives a", (q0, far, 0.0)),
+        ("t = 1 gives b", (q0, far, 1.0)),
+        ("the midpoint of keys far apart", (q0, far, 0.5)),
+        (
+            "equal keys: sin Ω = 0, needs the nlerp fallback",
+            (q0, q0, 0.3),
+        ),
+        ("nearly equal keys: the nlerp fallback", (q0, q1, 0.5)),
+        (
+            "nearly equal keys with a·b < 0: flip, then the fallback",
+            (q0, -q1, 0.25),
+        ),
+        ("b = −a: the same rotation, no turn at all", (q0, -q0, 0.5)),
+        (
+            "keys half a turn apart",
+            (Quat::IDENTITY, Quat::from_rotation_z(PI), 0.5),
+        ),
+        (
+            "keys just under half a turn apart",
+            (Quat::IDENTITY, Quat::from_rotation_z(PI - 1e-3), 0.5),
+        ),
+        (
+            "keys with a·b < 0: the short arc",
+            (Quat::IDENTITY, Quat::from_rotation_z(PI + 0.4), 0.5),
+        ),
+        (
+            "b given as −b (a·b < 0): the short arc",
+            (Quat::IDENTITY, -Quat::from_rotation_x(1.0), 0.75),
+        ),
     ];
     for _ in 0..200 {
         let a = unit_quat(rng);
         let b = unit_quat(rng);
-        slerps.push((a, b, rng.range(0.0, 1.0)));
+        slerps.push((RANDOM, (a, b, rng.range(0.0, 1.0))));
     }
-    let slerp_report = check(
+    let slerp_report = check_cases(
         L03,
         "slerp",
         &slerps,
@@ -198,18 +222,30 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
 
     // 3.3: angle 0, π, tiny, full turn, random.
     let mut rodrigues = vec![
-        (Vec3::X, 0.0),
-        (Vec3::Z, FRAC_PI_2),
-        (Vec3::Y, PI),
-        (Vec3::new(1.0, 1.0, 1.0).normalize(), PI),
-        (Vec3::new(0.0, 0.6, 0.8), 1e-5),
-        (Vec3::new(0.48, 0.6, 0.64), 2.0 * PI),
-        (Vec3::new(0.48, -0.6, 0.64), -2.0),
+        ("angle 0: the identity", (Vec3::X, 0.0)),
+        (
+            "a quarter turn about z: the sign of K (columns, not rows)",
+            (Vec3::Z, FRAC_PI_2),
+        ),
+        ("half a turn: sin θ = 0, only the K² term", (Vec3::Y, PI)),
+        (
+            "half a turn about a diagonal axis",
+            (Vec3::new(1.0, 1.0, 1.0).normalize(), PI),
+        ),
+        (
+            "a tiny angle: 1 − cos θ loses digits",
+            (Vec3::new(0.0, 0.6, 0.8), 1e-5),
+        ),
+        (
+            "a full turn: the identity again",
+            (Vec3::new(0.48, 0.6, 0.64), 2.0 * PI),
+        ),
+        ("a negative angle", (Vec3::new(0.48, -0.6, 0.64), -2.0)),
     ];
     for _ in 0..200 {
-        rodrigues.push((unit_axis(rng), rng.range(-7.0, 7.0)));
+        rodrigues.push((RANDOM, (unit_axis(rng), rng.range(-7.0, 7.0))));
     }
-    let rodrigues_report = check(
+    let rodrigues_report = check_cases(
         L03,
         "rodrigues_matrix",
         &rodrigues,
@@ -220,28 +256,42 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
 
     // 4.1: identity, pure translation, pure rotation by π, −r (same motion), random.
     let mut motions = vec![
-        (Quat::IDENTITY, Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0)),
-        (Quat::IDENTITY, Vec3::new(1.0, -2.0, 0.5), Vec3::ZERO),
         (
-            Quat::from_rotation_y(PI),
-            Vec3::ZERO,
-            Vec3::new(1.0, 0.0, 0.0),
+            "the identity motion: the point stays",
+            (Quat::IDENTITY, Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0)),
         ),
         (
-            Quat::from_rotation_z(FRAC_PI_2),
-            Vec3::new(0.0, 0.0, 2.0),
-            Vec3::X,
+            "a pure translation: d = ½ t, the origin moves by t",
+            (Quat::IDENTITY, Vec3::new(1.0, -2.0, 0.5), Vec3::ZERO),
         ),
         (
-            -Quat::from_rotation_x(0.8),
-            Vec3::new(0.3, 0.2, -0.1),
-            Vec3::new(0.0, 1.0, 1.0),
+            "a pure rotation by π: d = 0",
+            (Quat::from_rotation_y(PI), Vec3::ZERO, Vec3::X),
+        ),
+        (
+            "rotate, then translate (not the other order)",
+            (
+                Quat::from_rotation_z(FRAC_PI_2),
+                Vec3::new(0.0, 0.0, 2.0),
+                Vec3::X,
+            ),
+        ),
+        (
+            "r given as −r: the same motion",
+            (
+                -Quat::from_rotation_x(0.8),
+                Vec3::new(0.3, 0.2, -0.1),
+                Vec3::new(0.0, 1.0, 1.0),
+            ),
         ),
     ];
     for _ in 0..200 {
-        motions.push((unit_quat(rng), rng.vec3(-5.0, 5.0), rng.vec3(-3.0, 3.0)));
+        motions.push((
+            RANDOM,
+            (unit_quat(rng), rng.vec3(-5.0, 5.0), rng.vec3(-3.0, 3.0)),
+        ));
     }
-    let dual_quat_report = check(
+    let dual_quat_report = check_cases(
         L04,
         "dual_quat_apply",
         &motions,
@@ -265,11 +315,23 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
 
     // 4.2: a rotation (fixed point), a scale, a shear, a reflection-free random matrix.
     let mut steps = vec![
-        Mat3::IDENTITY,
-        Mat3::from_rotation_y(1.2),
-        Mat3::from_diagonal(Vec3::new(2.0, 0.5, 1.0)),
-        Mat3::from_cols(Vec3::X, Vec3::new(0.8, 1.0, 0.0), Vec3::Z),
-        Mat3::from_rotation_x(0.4) * Mat3::from_diagonal(Vec3::new(1e-2, 1.0, 50.0)),
+        ("the identity: a fixed point", Mat3::IDENTITY),
+        (
+            "a rotation: a fixed point (R⁻ᵀ = R)",
+            Mat3::from_rotation_y(1.2),
+        ),
+        (
+            "a scale: σ → ½(σ + 1/σ)",
+            Mat3::from_diagonal(Vec3::new(2.0, 0.5, 1.0)),
+        ),
+        (
+            "a shear: the transpose matters",
+            Mat3::from_cols(Vec3::X, Vec3::new(0.8, 1.0, 0.0), Vec3::Z),
+        ),
+        (
+            "a rotated, very uneven scale",
+            Mat3::from_rotation_x(0.4) * Mat3::from_diagonal(Vec3::new(1e-2, 1.0, 50.0)),
+        ),
     ];
     while steps.len() < 200 {
         let m = Mat3::from_cols(
@@ -278,10 +340,10 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
             rng.vec3(-2.0, 2.0),
         );
         if m.determinant().abs() > 0.05 {
-            steps.push(m);
+            steps.push((RANDOM, m));
         }
     }
-    let polar_report = check(
+    let polar_report = check_cases(
         L04,
         "polar_step",
         &steps,

@@ -1,1 +1,564 @@
-//! Figure logic for this lesson (see `figures`): moved here from `web/rigid.rs`.
+//! Lesson 04, "Rigid motions": one frame moved three ways between two keys (with a "third, three
+//! times" check of the screw motion), and an affine key pair (scale and shear) interpolated
+//! naively vs through polar decomposition. Natively testable; `web::rigid` wraps these.
+
+use super::rotations::draw_plane;
+use super::{
+    compare_note, failure_note, finite, format_number, in_range, palette, rotation_problem,
+    unit_quat_problem, Frame, MeshId, Runner, DEFAULT_RUNNER,
+};
+use crate::exercises::run;
+use crate::rigid::{DualQuat, ScrewInterpolator};
+use crate::rotation::{self, check_quat, quat_from_mat3, slerp, AffineKey, AxisAngle};
+use glam::{Mat3, Mat4, Quat, Vec3};
+
+const DEG: f32 = std::f32::consts::PI / 180.0;
+const FILE: &str = "src/exercises/rotations.rs";
+const TOLERANCE: f32 = 1e-4;
+/// The nose of the aeroplane, in its own frame.
+pub const TIP: Vec3 = Vec3::new(0.55, 0.0, 0.0);
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Method {
+    LerpSlerp,
+    DualQuatNlerp,
+    Screw,
+}
+
+/// Each method with its colour; the page's words use `c-orange`, `c-y-axis`, `c-z-axis`.
+pub const METHODS: [(Method, Vec3); 3] = [
+    (Method::LerpSlerp, palette::ORANGE),
+    (Method::DualQuatNlerp, palette::Y_AXIS),
+    (Method::Screw, palette::Z_AXIS),
+];
+pub const SCREW_AXIS: Vec3 = palette::PURPLE;
+
+/// Figure 1: a frame moving from key A to key B by translation lerp + slerp, by dual quaternion
+/// linear blending and by screw interpolation, with the paths of its origin and nose and the
+/// screw axis of the motion from A to B. One method can be shown alone (`show`), and the screw
+/// motion's "a third, three times" can be drawn (`thirds`).
+pub struct RigidMotion {
+    start: DualQuat,
+    end: DualQuat,
+    screw: ScrewInterpolator,
+    /// `None`: all three; `Some(m)`: only `m`.
+    solo: Option<Method>,
+    thirds: bool,
+    use_exercise: bool,
+    runner: Runner,
+    path: Vec<Vec3>,
+}
+
+impl Default for RigidMotion {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl RigidMotion {
+    pub fn new() -> Self {
+        let start = DualQuat::from_rotation_translation(Quat::IDENTITY, Vec3::new(-1.5, 0.6, 0.0));
+        let end = DualQuat::from_rotation_translation(
+            Quat::from_axis_angle(Vec3::new(0.2, 1.0, 0.3).normalize(), 150.0 * DEG),
+            Vec3::new(1.5, 1.4, 0.3),
+        );
+        RigidMotion {
+            start,
+            end,
+            screw: ScrewInterpolator::new(start, end),
+            solo: None,
+            thirds: false,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            path: Vec::with_capacity(65),
+        }
+    }
+
+    fn set_end_dq(&mut self, end: DualQuat) {
+        self.end = end;
+        self.screw = ScrewInterpolator::new(self.start, self.end);
+    }
+
+    /// Key B: rotation by `angle_deg` about `axis` (any non-zero direction), then `translation`.
+    pub fn set_end(&mut self, axis: Vec3, angle_deg: f32, translation: Vec3) -> Result<(), String> {
+        let angle = finite("angle", angle_deg)? * DEG;
+        let r = AxisAngle::new(axis, angle).map_err(|e| e.to_string())?;
+        let t = check_translation(translation)?;
+        self.set_end_dq(DualQuat::from_rotation_translation(r.to_quat(), t));
+        Ok(())
+    }
+
+    /// Key B from a quaternion (normalised; zero or NaN rejected) and a translation.
+    pub fn set_end_quat(&mut self, q: Quat, translation: Vec3) -> Result<(), String> {
+        let q = check_quat(q).map_err(|e| e.to_string())?;
+        let t = check_translation(translation)?;
+        self.set_end_dq(DualQuat::from_rotation_translation(q, t));
+        Ok(())
+    }
+
+    /// Key B from a rigid 4×4 matrix; a scaled, sheared or mirroring one is rejected.
+    pub fn set_end_matrix(&mut self, m: Mat4) -> Result<(), String> {
+        self.set_end_dq(DualQuat::from_mat4(m).map_err(|e| e.to_string())?);
+        Ok(())
+    }
+
+    /// What to show: 0 = all three, 1 = lerp + slerp, 2 = dual quaternion blend, 3 = screw.
+    pub fn set_show(&mut self, which: u32) -> Result<(), String> {
+        self.solo = match which {
+            0 => None,
+            1..=3 => Some(METHODS[which as usize - 1].0),
+            _ => return Err(format!("show must be 0 (all), 1, 2 or 3, got {which}")),
+        };
+        Ok(())
+    }
+
+    /// Draws the screw motion's third `S = q(1/3) A⁻¹` applied to A once, twice and three times
+    /// (and the same for lerp + slerp, which misses B).
+    pub fn set_thirds(&mut self, on: bool) {
+        self.thirds = on;
+    }
+
+    /// The green frame's nose is moved by the student's `dual_quat_apply` (exercise 4.1).
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// The screw axis of the motion from A to B.
+    pub fn screw_axis(&self) -> crate::rigid::ScrewAxis {
+        (self.end * self.start.conjugate()).screw_axis()
+    }
+
+    fn shown(&self, method: Method) -> bool {
+        self.solo.is_none_or(|m| m == method)
+    }
+
+    /// Draws the frames at `t ∈ [0, 1]`; returns the note (the thirds check, the exercise check).
+    pub fn draw(&mut self, frame: &mut Frame, t: f32) -> Result<String, String> {
+        let t = in_range("t", t, 0.0, 1.0)?;
+        frame.grid(12, 0.5);
+        // The screw axis: the line the relative motion B A⁻¹ turns about and slides along.
+        let axis = self.screw_axis();
+        let (a, b) = (
+            axis.point - axis.direction * 3.0,
+            axis.point + axis.direction * 3.0,
+        );
+        frame.line(a, b, SCREW_AXIS);
+        frame.label(b, "screw axis", SCREW_AXIS);
+        for (key, name) in [(self.start, "A"), (self.end, "B")] {
+            frame.axes(key.to_mat4(), 0.5);
+            frame.label(key.translation() + Vec3::Y * 0.3, name, palette::KEY);
+        }
+        let student = self.use_exercise;
+        for (method, color) in METHODS {
+            if !self.shown(method) {
+                continue;
+            }
+            for (local, shade) in [(Vec3::ZERO, 0.6), (TIP, 1.0)] {
+                self.path.clear();
+                for k in 0..=64 {
+                    let s = k as f32 / 64.0;
+                    self.path.push(self.point(method, s, local, student));
+                }
+                frame.polyline(&self.path, color * shade);
+            }
+            let m = self.motion(method, t);
+            let (r, p) = m.to_rotation_translation();
+            draw_plane(frame, p, Mat3::from_quat(r), color, 1.0);
+            frame.axes(m.to_mat4(), 0.45);
+        }
+        let mut notes = Vec::new();
+        if self.thirds {
+            notes.push(self.draw_thirds(frame));
+        }
+        if self.use_exercise {
+            notes.push(self.exercise_note(t));
+        }
+        Ok(notes.join(" "))
+    }
+
+    /// `step³ A` vs `B`, where `step = q(1/3) A⁻¹` is the method's first third as a motion.
+    pub fn third_three_times(&self, method: Method) -> (DualQuat, f32) {
+        let step = self.motion(method, 1.0 / 3.0) * self.start.conjugate();
+        let landed = step * step * step * self.start;
+        let miss = (landed.transform_point(Vec3::ZERO) - self.end.transform_point(Vec3::ZERO))
+            .length()
+            .max((landed.transform_point(TIP) - self.end.transform_point(TIP)).length());
+        (landed, miss)
+    }
+
+    fn draw_thirds(&self, frame: &mut Frame) -> String {
+        let mut said = Vec::new();
+        for (method, color, name) in [
+            (Method::Screw, palette::Z_AXIS, "screw"),
+            (Method::LerpSlerp, palette::ORANGE, "lerp + slerp"),
+        ] {
+            if !self.shown(method) {
+                continue;
+            }
+            let step = self.motion(method, 1.0 / 3.0) * self.start.conjugate();
+            let mut f = self.start;
+            for k in 1..=3 {
+                f = step * f;
+                let (r, p) = f.to_rotation_translation();
+                draw_plane(
+                    frame,
+                    p,
+                    Mat3::from_quat(r),
+                    color * 0.5 + Vec3::splat(0.4),
+                    0.8,
+                );
+                frame.label(p - Vec3::Y * 0.3, format!("{k}/3"), color);
+            }
+            let (_, miss) = self.third_three_times(method);
+            let result = if miss < 1e-3 {
+                format!("lands on B (off by {} m, round-off)", format_number(miss))
+            } else {
+                format!("misses B by {} m", format_number(miss))
+            };
+            said.push(format!(
+                "{name}: its first third, applied three times to A, {result}"
+            ));
+        }
+        if said.is_empty() {
+            return "A third, three times: show the screw or lerp + slerp to see it.".into();
+        }
+        format!("{}.", said.join("; "))
+    }
+
+    /// Compares the student's `dual_quat_apply` with the reference on the green frame's motion
+    /// at `t` and its nose, and checks that the rotation part is a unit quaternion.
+    pub fn exercise_note(&self, t: f32) -> String {
+        let (r, p) = DualQuat::nlerp(self.start, self.end, t).to_rotation_translation();
+        let (dq, moved) = match run::dual_quat_apply(self.runner, r, p, TIP) {
+            Ok(answer) => answer,
+            Err(f) => return failure_note("exercise 4.1 dual_quat_apply", FILE, &f),
+        };
+        let ref_dq = DualQuat::from_rotation_translation(r, p);
+        let ref_moved = ref_dq.transform_point(TIP);
+        // q and −q are one motion: compare with the closer sign.
+        let s = if dq.real.dot(ref_dq.real) < 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        let flat = |q: DualQuat, v: Vec3| {
+            let mut out = q.real.to_array().to_vec();
+            out.extend(q.dual.to_array());
+            out.extend(v.to_array());
+            out
+        };
+        let yours = flat(
+            DualQuat {
+                real: dq.real * s,
+                dual: dq.dual * s,
+            },
+            moved,
+        );
+        let at = format!("t = {} (the green frame's nose)", format_number(t));
+        let (_, mut note) = compare_note(
+            "dual_quat_apply",
+            &at,
+            &yours,
+            &flat(ref_dq, ref_moved),
+            TOLERANCE,
+        );
+        if let Some(problem) = unit_quat_problem(dq.real, 1e-3) {
+            note += &format!(" Its real part: {problem}.");
+        }
+        note
+    }
+
+    /// The motion of `method` at `t`, always the reference.
+    pub fn motion(&self, method: Method, t: f32) -> DualQuat {
+        match method {
+            Method::LerpSlerp => {
+                let (ra, pa) = self.start.to_rotation_translation();
+                let (rb, pb) = self.end.to_rotation_translation();
+                DualQuat::from_rotation_translation(slerp(ra, rb, t), pa.lerp(pb, t))
+            }
+            Method::DualQuatNlerp => DualQuat::nlerp(self.start, self.end, t),
+            Method::Screw => self.screw.sample(t),
+        }
+    }
+
+    /// Where `local` (a point of the frame) is at `t`. With `student`, the green frame's points
+    /// are moved by the student's `dual_quat_apply`, falling back to the reference.
+    pub fn point(&self, method: Method, t: f32, local: Vec3, student: bool) -> Vec3 {
+        let m = self.motion(method, t);
+        if student && method == Method::DualQuatNlerp {
+            let (r, p) = m.to_rotation_translation();
+            if let Ok((_, moved)) = run::dual_quat_apply(self.runner, r, p, local) {
+                if moved.is_finite() {
+                    return moved;
+                }
+            }
+        }
+        m.transform_point(local)
+    }
+
+    /// Speed of the frame's nose (metres per unit of t): `(t, lerp+slerp, dlb, screw)`.
+    pub fn sample_speed(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
+        super::check_samples(samples)?;
+        let h = 1e-3;
+        Ok((0..samples)
+            .map(|k| {
+                let t = k as f32 / (samples - 1) as f32;
+                let (t0, t1) = ((t - h).max(0.0), (t + h).min(1.0));
+                let speed = |method| {
+                    let d = self.point(method, t1, TIP, false) - self.point(method, t0, TIP, false);
+                    d.length() / (t1 - t0)
+                };
+                [
+                    t,
+                    speed(Method::LerpSlerp),
+                    speed(Method::DualQuatNlerp),
+                    speed(Method::Screw),
+                ]
+            })
+            .collect())
+    }
+}
+
+fn check_translation(t: Vec3) -> Result<Vec3, String> {
+    Ok(Vec3::new(
+        finite("tx", t.x)?,
+        finite("ty", t.y)?,
+        finite("tz", t.z)?,
+    ))
+}
+
+/// The 12 edges of the cube `[-1, 1]³` transformed by `m`.
+fn wire_cube(frame: &mut Frame, m: Mat4, color: Vec3) {
+    let c = |i: u32| {
+        let s = |bit: u32| if i & bit == 0 { -1.0 } else { 1.0 };
+        m.transform_point3(Vec3::new(s(1), s(2), s(4)))
+    };
+    for i in 0..8u32 {
+        for bit in [1, 2, 4] {
+            if i & bit == 0 {
+                frame.line(c(i), c(i | bit), color);
+            }
+        }
+    }
+}
+
+/// Half the size of the box the affine keys move.
+const HALF: f32 = 0.35;
+/// Colours of the naive (left) and polar (right) boxes: `c-x-axis` and `c-z-axis` in the page.
+pub const NAIVE: Vec3 = palette::X_AXIS;
+pub const POLAR: Vec3 = palette::Z_AXIS;
+
+/// Figure 2: two affine keys with rotation, scale and shear. Left: element-wise lerp of the 4×4
+/// matrices. Right: translation lerp + rotation slerp + stretch lerp, after polar decomposition.
+pub struct AffineKeys {
+    a: Mat4,
+    b: Mat4,
+    key_a: AffineKey,
+    key_b: AffineKey,
+    use_exercise: bool,
+    runner: Runner,
+    note: String,
+    path: Vec<Vec3>,
+}
+
+impl Default for AffineKeys {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl AffineKeys {
+    pub fn new() -> Self {
+        let a = Mat4::from_translation(Vec3::new(-0.6, 0.7, 0.0));
+        let key = AffineKey::from_mat4(a).expect("a translation is a valid key");
+        let mut scene = AffineKeys {
+            a,
+            b: a,
+            key_a: key,
+            key_b: key,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            note: String::new(),
+            path: Vec::with_capacity(65),
+        };
+        scene
+            .set_key_b(160.0, Vec3::new(1.6, 0.6, 1.0), 0.6)
+            .expect("the default key is invertible");
+        scene
+    }
+
+    /// Key B: rotation by `angle_deg` about y, after a shear of x by y and a `scale`. A zero
+    /// scale flattens the key (singular), a negative one mirrors it: both are rejected.
+    pub fn set_key_b(&mut self, angle_deg: f32, scale: Vec3, shear: f32) -> Result<(), String> {
+        let angle = finite("angle", angle_deg)? * DEG;
+        let scale = Vec3::new(
+            finite("sx", scale.x)?,
+            finite("sy", scale.y)?,
+            finite("sz", scale.z)?,
+        );
+        let shear = Mat3::from_cols(
+            Vec3::X,
+            Vec3::new(finite("shear", shear)?, 1.0, 0.0),
+            Vec3::Z,
+        );
+        let linear = Mat3::from_rotation_y(angle) * shear * Mat3::from_diagonal(scale);
+        let at = Mat4::from_translation(Vec3::new(0.6, 1.1, 0.0));
+        self.set_key(1, at * Mat4::from_mat3(linear))
+    }
+
+    /// Sets key `which` (0 = A, 1 = B) from an affine matrix. Rejects NaN, a bottom row other
+    /// than (0, 0, 0, 1), a singular or a mirroring key (the core's messages).
+    pub fn set_key(&mut self, which: u32, m: Mat4) -> Result<(), String> {
+        if which > 1 {
+            return Err(format!("key must be 0 (A) or 1 (B), got {which}"));
+        }
+        let key = AffineKey::from_mat4(m).map_err(|e| e.to_string())?;
+        if which == 0 {
+            (self.a, self.key_a) = (m, key);
+        } else {
+            (self.b, self.key_b) = (m, key);
+        }
+        self.refresh_student();
+        Ok(())
+    }
+
+    /// Splits the keys with the student's `polar_step` (exercise 4.2) iterated to convergence.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.refresh_student();
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.refresh_student();
+    }
+
+    /// The note, computed when the keys or the exercise switch change (not per frame).
+    pub fn note(&self) -> &str {
+        &self.note
+    }
+
+    /// Re-splits both keys (the reference, or the student's iteration) and rewrites the note:
+    /// one step of the student's `polar_step` on key B compared with the reference, then whether
+    /// the iteration converges to a rotation.
+    fn refresh_student(&mut self) {
+        self.note.clear();
+        for which in 0..2 {
+            let m = if which == 0 { self.a } else { self.b };
+            let mut key = AffineKey::from_mat4(m).expect("validated when set");
+            if self.use_exercise {
+                if let Ok(Some((r, _))) = student_polar(self.runner, Mat3::from_mat4(m)) {
+                    key.rotation = quat_from_mat3(r);
+                    key.stretch = r.transpose() * Mat3::from_mat4(m);
+                }
+            }
+            if which == 0 {
+                self.key_a = key;
+            } else {
+                self.key_b = key;
+            }
+        }
+        if self.use_exercise {
+            self.note = self.exercise_note();
+        }
+    }
+
+    fn exercise_note(&self) -> String {
+        let m = Mat3::from_mat4(self.b);
+        let yours = match run::polar_step(self.runner, m) {
+            Ok(step) => step,
+            Err(f) => return failure_note("exercise 4.2 polar_step", FILE, &f),
+        };
+        let reference = rotation::polar_step(m);
+        let (_, mut note) = compare_note(
+            "polar_step",
+            "key B's matrix (one step from R₀ = M)",
+            &yours.to_cols_array(),
+            &reference.to_cols_array(),
+            1e-3,
+        );
+        match student_polar(self.runner, m) {
+            Ok(Some((r, n))) => match rotation_problem(r, 1e-3) {
+                None => note += &format!(" Iterated, it converges in {n} steps to a rotation; the figure uses your split."),
+                Some(problem) => note += &format!(" Iterated, it converges in {n} steps, but {problem}; the figure uses your split."),
+            },
+            _ => note += " Iterated, it does not converge (or gives NaN): the figure uses the reference.",
+        }
+        note
+    }
+
+    fn at(&self, naive: bool, t: f32) -> Mat4 {
+        if naive {
+            rotation::affine_lerp_naive(self.a, self.b, t)
+        } else {
+            self.key_a.interpolate(&self.key_b, t).to_mat4()
+        }
+    }
+
+    /// Determinant of the linear part over t: `(t, naive, polar)`.
+    pub fn sample_determinant(&self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
+        super::check_samples(samples)?;
+        let det = |m: Mat4| Mat3::from_mat4(m).determinant();
+        Ok((0..samples)
+            .map(|k| {
+                let t = k as f32 / (samples - 1) as f32;
+                [t, det(self.at(true, t)), det(self.at(false, t))]
+            })
+            .collect())
+    }
+
+    /// Draws both interpolations at `t ∈ [0, 1]`; returns the note about the exercise.
+    pub fn draw(&mut self, frame: &mut Frame, t: f32) -> Result<String, String> {
+        let t = in_range("t", t, 0.0, 1.0)?;
+        frame.grid(12, 0.5);
+        let corner = Vec3::splat(1.0);
+        let size = Mat4::from_scale(Vec3::splat(HALF));
+        for (offset, color, naive) in [(-1.8, NAIVE, true), (1.8, POLAR, false)] {
+            let shift = Mat4::from_translation(Vec3::new(offset, 0.0, 0.0));
+            wire_cube(frame, shift * self.a * size, palette::GREY);
+            wire_cube(frame, shift * self.b * size, palette::DARK);
+            self.path.clear();
+            for k in 0..=64 {
+                let m = shift * self.at(naive, k as f32 / 64.0) * size;
+                self.path.push(m.transform_point3(corner));
+            }
+            frame.polyline(&self.path, color * 0.8);
+            let m = shift * self.at(naive, t);
+            frame.mesh(MeshId::CUBE, m * size, color);
+            frame.point(
+                (m * size).transform_point3(corner),
+                0.045,
+                Vec3::new(0.95, 0.85, 0.2),
+            );
+            frame.axes(m, 0.6);
+        }
+        Ok(self.note.clone())
+    }
+}
+
+/// Iterates the student's step from `R₀ = M` until it stops moving (at most 64 steps):
+/// `Ok(Some((R, steps)))`, `Ok(None)` when it does not converge or gives NaN.
+fn student_polar(runner: Runner, m: Mat3) -> Result<Option<(Mat3, u32)>, run::Failure> {
+    let mut r = m;
+    for iteration in 1..=64 {
+        let next = run::polar_step(runner, r)?;
+        if !next.is_finite() {
+            return Ok(None);
+        }
+        let change = (next - r)
+            .to_cols_array()
+            .iter()
+            .map(|x| x * x)
+            .sum::<f32>()
+            .sqrt();
+        r = next;
+        if change <= 1e-5 * (1.0 + r.x_axis.length()) {
+            return Ok(Some((r, iteration)));
+        }
+    }
+    Ok(None)
+}

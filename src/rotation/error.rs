@@ -1,5 +1,6 @@
 //! The error type shared by [`crate::rotation`] and [`crate::rigid`].
 
+use crate::exercises::run::format_number;
 use std::fmt;
 
 /// What a caller can get wrong when handing data to the rotation and rigid-motion cores.
@@ -89,13 +90,15 @@ impl fmt::Display for RotationError {
             ),
             RotationError::Reflection { determinant } => write!(
                 f,
-                "the matrix mirrors space (determinant {determinant:.4} < 0), \
-                 so it has no rotation part with a positive stretch"
+                "the matrix mirrors space (determinant {} < 0), \
+                 so it has no rotation part with a positive stretch",
+                format_number(determinant)
             ),
             RotationError::SingularMatrix { determinant } => write!(
                 f,
-                "the matrix is singular (determinant {determinant:.3e}): it flattens space, \
-                 so it cannot be split into rotation and stretch"
+                "the matrix is singular (determinant {}, tiny for the size of its columns): it \
+                 flattens space, so it cannot be split into rotation and stretch",
+                format_number(determinant)
             ),
             RotationError::NotAffine { bottom_row } => write!(
                 f,

@@ -47,7 +47,7 @@ pub fn polar_decompose(m: Mat3) -> Result<PolarDecomposition, RotationError> {
 
 /// Polar decomposition `M = R D`: `R` a rotation, `D` symmetric positive definite.
 /// ```text
-/// R₀ = M,   R_{k+1} = ½ (R_k + R_k^{−T})   until ‖R_{k+1} − R_k‖_F ≤ tolerance · ‖R_{k+1}‖_F
+/// R₀ = M,   R_{k+1} = ½ (γ R_k + (γ R_k)^{−T}),  γ = √(‖R_k⁻¹‖_F / ‖R_k‖_F),   until ‖R_{k+1} − R_k‖_F ≤ tolerance · ‖R_{k+1}‖_F
 /// D = Rᵀ M   (symmetrised: ½ (D + Dᵀ))
 /// ```
 /// `R` is the rotation closest to `M`; the iteration runs in `f64` so the tolerance can be
@@ -68,7 +68,12 @@ pub fn polar_decompose_with(
     let mut r = m64;
     let mut change = f64::INFINITY;
     for iteration in 1..=max_iterations {
-        let next = (r + r.inverse().transpose()) * 0.5;
+        // Scaled by γ = √(‖R⁻¹‖/‖R‖) (Higham): the same limit, reached in a few steps even
+        // when the singular values span many orders of magnitude (unscaled, σ = 1e38 would
+        // take 127 halvings). γ → 1 as R_k approaches the rotation.
+        let inv = r.inverse();
+        let gamma = (frobenius(inv) / frobenius(r)).sqrt();
+        let next = (r * gamma + inv.transpose() * (1.0 / gamma)) * 0.5;
         change = frobenius(next - r) / frobenius(next);
         r = next;
         if change <= f64::from(tolerance) {
@@ -81,14 +86,21 @@ pub fn polar_decompose_with(
     })
 }
 
+/// Below this `|det M| / (|c₀||c₁||c₂|)` a matrix counts as singular: its columns span a box
+/// less than a ten-millionth of the volume they would span at right angles.
+pub const SINGULAR_RATIO: f64 = 1e-7;
+
 fn check_invertible(m: Mat3) -> Result<DMat3, RotationError> {
     if !m.is_finite() {
         return Err(RotationError::NonFinite { what: "matrix" });
     }
     let m64 = m.as_dmat3();
     let determinant = m64.determinant();
-    let scale = frobenius(m64);
-    if determinant.abs() <= 1e-9 * scale * scale * scale || scale == 0.0 {
+    // Singular relative to scale: |det M| ≤ |c₀||c₁||c₂| (Hadamard), with equality for orthogonal
+    // columns, so the ratio measures how flat the box spanned by the columns is, whatever their
+    // lengths (a key scaled by 1e12 is fine; one whose columns are nearly parallel is not).
+    let columns = m64.x_axis.length() * m64.y_axis.length() * m64.z_axis.length();
+    if columns == 0.0 || determinant.abs() <= SINGULAR_RATIO * columns {
         return Err(RotationError::SingularMatrix {
             determinant: determinant as f32,
         });

@@ -1,0 +1,291 @@
+//! Native tests of lesson 04's figures (src/figures/rigid.rs): the three motions, the "a third,
+//! three times" check, solo, the affine keys' validation, and the exercise feedback.
+
+use glam::{Mat3, Mat4, Quat, Vec3};
+use inbetween::draw::{Frame, MeshId};
+use inbetween::exercises::run::{direct, Failure};
+use inbetween::figures::rigid::{AffineKeys, Method, RigidMotion};
+use inbetween::rigid::DualQuat;
+use inbetween::rotation::{self, AffineKey};
+
+fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let m = |i: usize| Mat3::from_cols_slice(&args[i..i + 9]);
+    Ok(match name {
+        "dual_quat_apply" => {
+            let r = Quat::from_slice(&args[0..4]);
+            let (t, p) = (
+                Vec3::from_slice(&args[4..7]),
+                Vec3::from_slice(&args[7..10]),
+            );
+            let dq = DualQuat::from_rotation_translation(r, t);
+            let mut out = dq.real.to_array().to_vec();
+            out.extend(dq.dual.to_array());
+            out.extend(dq.transform_point(p).to_array());
+            out
+        }
+        "polar_step" => rotation::polar_step(m(0)).to_cols_array().to_vec(),
+        _ => return direct(name, args),
+    })
+}
+
+/// A dual_quat_apply that forgets the rotation of the point; a polar step without the transpose.
+fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut out = reference(name, args)?;
+    match name {
+        "dual_quat_apply" => {
+            let (t, p) = (
+                Vec3::from_slice(&args[4..7]),
+                Vec3::from_slice(&args[7..10]),
+            );
+            out.truncate(8);
+            out.extend((p + t).to_array());
+        }
+        "polar_step" => {
+            let r = Mat3::from_cols_slice(&args[0..9]);
+            out = ((r + r.inverse()) * 0.5).to_cols_array().to_vec();
+        }
+        _ => {}
+    }
+    Ok(out)
+}
+
+fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::Panicked(
+        "index out of bounds (src/exercises/rotations.rs:90:9)".into(),
+    ))
+}
+
+fn planes(frame: &Frame) -> usize {
+    // Each aeroplane is four cubes.
+    frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == MeshId::CUBE)
+        .count()
+        / 4
+}
+
+#[test]
+fn a_third_of_the_screw_three_times_lands_on_b() {
+    let mut scene = RigidMotion::new();
+    let (_, miss) = scene.third_three_times(Method::Screw);
+    assert!(miss < 1e-4, "screw misses B by {miss}");
+    let (_, miss) = scene.third_three_times(Method::LerpSlerp);
+    assert!(miss > 0.1, "lerp + slerp's third is not a third: {miss}");
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 0.5).unwrap();
+    let before = planes(&frame);
+    scene.set_thirds(true);
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame, 0.5).unwrap();
+    assert_eq!(
+        planes(&frame),
+        before + 6,
+        "three ghosts for screw and for lerp + slerp"
+    );
+    assert!(
+        note.starts_with("screw: its first third, applied three times to A, lands on B (off by "),
+        "{note}"
+    );
+    assert!(
+        note.contains(
+            "lerp + slerp: its first third, applied three times to A, misses B by 2.160 m."
+        ),
+        "{note}"
+    );
+    let labels: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    assert!(labels.contains(&"3/3") && labels.contains(&"A") && labels.contains(&"B"));
+}
+
+#[test]
+fn solo_shows_one_method() {
+    let mut scene = RigidMotion::new();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 0.3).unwrap();
+    assert_eq!(planes(&frame), 3);
+    for which in 1..=3 {
+        scene.set_show(which).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, 0.3).unwrap();
+        assert_eq!(planes(&frame), 1);
+    }
+    assert!(scene.set_show(4).unwrap_err().contains("show must be"));
+}
+
+#[test]
+fn the_screw_is_drawn_at_constant_speed() {
+    let scene = RigidMotion::new();
+    let speed = scene.sample_speed(21).unwrap();
+    let screw: Vec<f32> = speed.iter().map(|r| r[3]).collect();
+    let spread =
+        screw.iter().cloned().fold(0.0, f32::max) - screw.iter().cloned().fold(f32::MAX, f32::min);
+    assert!(spread < 0.02 * screw[10], "{screw:?}");
+    assert!(scene.sample_speed(1).is_err());
+}
+
+#[test]
+fn rigid_rejects_bad_input() {
+    let mut scene = RigidMotion::new();
+    assert!(scene
+        .set_end(Vec3::ZERO, 90.0, Vec3::ZERO)
+        .unwrap_err()
+        .contains("axis has zero length"));
+    assert!(scene
+        .set_end(Vec3::X, 90.0, Vec3::new(0.0, f32::NAN, 0.0))
+        .unwrap_err()
+        .contains("ty"));
+    assert!(scene
+        .set_end_quat(Quat::from_xyzw(0.0, 0.0, 0.0, 0.0), Vec3::ZERO)
+        .unwrap_err()
+        .contains("zero length"));
+    let mut sheared = Mat4::IDENTITY;
+    sheared.y_axis.x = 0.5;
+    assert!(scene
+        .set_end_matrix(sheared)
+        .unwrap_err()
+        .contains("not orthonormal"));
+    assert!(scene.draw(&mut Frame::default(), 2.0).is_err());
+}
+
+#[test]
+fn dual_quat_feedback_compares_at_the_current_t() {
+    let mut scene = RigidMotion::new();
+    scene.set_use_exercise(true);
+    scene.set_runner(reference);
+    let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
+    assert_eq!(
+        note,
+        "Your dual_quat_apply matches the reference at t = 0.250 (the green frame's nose)."
+    );
+    scene.set_runner(wrong);
+    let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
+    assert!(
+        note.starts_with(
+            "Your dual_quat_apply differs at t = 0.250 (the green frame's nose): yours ("
+        ),
+        "{note}"
+    );
+    // The figure shows the student's (wrong) nose path.
+    let mine = scene.point(
+        Method::DualQuatNlerp,
+        0.5,
+        inbetween::figures::rigid::TIP,
+        true,
+    );
+    let theirs = scene.point(
+        Method::DualQuatNlerp,
+        0.5,
+        inbetween::figures::rigid::TIP,
+        false,
+    );
+    assert!((mine - theirs).length() > 0.05);
+    scene.set_runner(panics);
+    let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
+    assert!(
+        note.starts_with("Your exercise 4.1 dual_quat_apply panicked: index out of bounds"),
+        "{note}"
+    );
+    let shown = scene.point(Method::DualQuatNlerp, 0.5, Vec3::ZERO, true);
+    assert!(
+        (shown
+            - scene
+                .motion(Method::DualQuatNlerp, 0.5)
+                .transform_point(Vec3::ZERO))
+        .length()
+            < 1e-6
+    );
+}
+
+#[test]
+fn polar_feedback_checks_one_step_and_the_limit() {
+    let mut scene = AffineKeys::new();
+    scene.set_use_exercise(true);
+    scene.set_runner(reference);
+    let note = scene.note().to_string();
+    assert!(
+        note.starts_with("Your polar_step matches the reference at key B's matrix"),
+        "{note}"
+    );
+    assert!(
+        note.contains("to a rotation; the figure uses your split"),
+        "{note}"
+    );
+    scene.set_runner(wrong);
+    let note = scene.note().to_string();
+    assert!(
+        note.starts_with(
+            "Your polar_step differs at key B's matrix (one step from R₀ = M): yours ("
+        ),
+        "{note}"
+    );
+    scene.set_runner(panics);
+    assert!(
+        scene
+            .note()
+            .starts_with("Your exercise 4.2 polar_step panicked"),
+        "{}",
+        scene.note()
+    );
+    assert_eq!(
+        scene.draw(&mut Frame::default(), 0.5).unwrap(),
+        scene.note()
+    );
+    if !cfg!(feature = "solutions") {
+        scene.set_runner(direct);
+        assert!(
+            scene
+                .note()
+                .starts_with("Not done yet: exercise 4.2 polar_step"),
+            "{}",
+            scene.note()
+        );
+    }
+}
+
+#[test]
+fn singular_is_judged_relative_to_the_size_of_the_columns() {
+    // Huge or tiny but well-shaped keys are invertible.
+    let huge = Mat4::from_scale(Vec3::new(1e38, 1.0, 1.0));
+    let key = AffineKey::from_mat4(huge).expect("det 1e38 is not singular");
+    assert!(key.rotation.abs_diff_eq(Quat::IDENTITY, 1e-5));
+    assert!(AffineKey::from_mat4(Mat4::from_scale(Vec3::splat(1e-12))).is_ok());
+    let mut scene = AffineKeys::new();
+    assert!(scene
+        .set_key(0, Mat4::from_translation(Vec3::Y) * huge)
+        .is_ok());
+    // Nearly parallel columns of ordinary size are singular, and the message has no "-0.000e0".
+    let flat = Mat3::from_cols(Vec3::X, Vec3::new(1.0, 1e-9, 0.0), Vec3::Z);
+    let e = scene.set_key(1, Mat4::from_mat3(flat)).unwrap_err();
+    assert!(e.contains("singular"), "{e}");
+    let e = scene
+        .set_key_b(30.0, Vec3::new(1.0, -0.0, 1.0), 0.2)
+        .unwrap_err();
+    assert!(e.contains("singular (determinant 0.000,"), "{e}");
+    assert!(!e.contains("e0"), "{e}");
+    let e = scene
+        .set_key_b(30.0, Vec3::new(-1.0, 1.0, 1.0), 0.0)
+        .unwrap_err();
+    assert!(e.contains("mirrors space (determinant -1.000 < 0)"), "{e}");
+    assert!(scene
+        .set_key(2, Mat4::IDENTITY)
+        .unwrap_err()
+        .contains("key must be 0"));
+    let mut projective = Mat4::IDENTITY;
+    projective.x_axis.w = 0.5;
+    assert!(scene
+        .set_key(1, projective)
+        .unwrap_err()
+        .contains("not affine"));
+}
+
+#[test]
+fn polar_keeps_volume_positive_and_naive_lerp_does_not() {
+    let scene = AffineKeys::new();
+    let det = scene.sample_determinant(41).unwrap();
+    assert!(det.iter().all(|r| r[2] > 0.0), "polar never flattens");
+    let naive_min = det.iter().map(|r| r[1]).fold(f32::MAX, f32::min);
+    assert!(
+        naive_min < 0.5 * det[0][1].min(det[40][1]),
+        "naive lerp shrinks: {naive_min}"
+    );
+}

@@ -1,0 +1,396 @@
+//! Native tests of lesson 03's figures (src/figures/rotations.rs): what they draw, what they
+//! reject, and what their notes say about the student's exercises.
+
+use glam::{Mat3, Quat, Vec3};
+use inbetween::draw::{Frame, MeshId};
+use inbetween::exercises::run::{direct, Failure};
+use inbetween::figures::rotations::{
+    rodrigues_colors as rc, Gimbal, Interpolation, Method, Rodrigues,
+};
+use inbetween::rotation::{self, slerp_arc, Arc};
+
+/// The reference for every exercise: a correct student.
+fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let q = |i: usize| Quat::from_slice(&args[i..i + 4]);
+    let v = |i: usize| Vec3::from_slice(&args[i..i + 3]);
+    Ok(match name {
+        "slerp" => rotation::slerp(q(0), q(4), args[8]).to_array().to_vec(),
+        "rodrigues_matrix" => rotation::rodrigues_mat3(v(0), args[3])
+            .to_cols_array()
+            .to_vec(),
+        "quat_from_axis_angle" => rotation::quat_from_axis_angle(v(0), args[3])
+            .to_array()
+            .to_vec(),
+        _ => return direct(name, args),
+    })
+}
+
+/// A slerp that forgets to negate b when a·b < 0; a Rodrigues matrix that is transposed; a
+/// quaternion twice too long.
+fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let q = |i: usize| Quat::from_slice(&args[i..i + 4]);
+    let v = |i: usize| Vec3::from_slice(&args[i..i + 3]);
+    Ok(match name {
+        "slerp" => {
+            let (a, b) = (q(0), q(4));
+            let arc = if a.dot(b) < 0.0 {
+                Arc::Long
+            } else {
+                Arc::Short
+            };
+            slerp_arc(a, b, args[8], arc).to_array().to_vec()
+        }
+        "rodrigues_matrix" => rotation::rodrigues_mat3(v(0), args[3])
+            .transpose()
+            .to_cols_array()
+            .to_vec(),
+        "quat_from_axis_angle" => (rotation::quat_from_axis_angle(v(0), args[3]) * 2.0)
+            .to_array()
+            .to_vec(),
+        _ => return direct(name, args),
+    })
+}
+
+fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::Panicked(
+        "not yet implemented (src/exercises/rotations.rs:42:5)".into(),
+    ))
+}
+
+/// Keys whose quaternions have a·b < 0, so the short arc needs −b.
+fn opposite_keys() -> Interpolation {
+    let mut scene = Interpolation::new();
+    let end = Interpolation::new().end_quat_used();
+    let start = Quat::IDENTITY;
+    assert!(start.dot(end) > 0.0);
+    scene.set_keys_euler_deg(Vec3::ZERO, Vec3::ZERO).unwrap();
+    scene.set_end_quat(-end).unwrap();
+    scene
+}
+
+#[test]
+fn default_keys_make_euler_lerp_wobble() {
+    let scene = Interpolation::new();
+    let mut deviation: f32 = 0.0;
+    for k in 0..=20 {
+        let t = k as f32 / 20.0;
+        let euler = Quat::from_mat3(&scene.orientation(Method::EulerLerp, t, false));
+        let slerp = Quat::from_mat3(&scene.orientation(Method::Slerp, t, false));
+        deviation = deviation.max(euler.angle_between(slerp).to_degrees());
+    }
+    assert!(
+        deviation > 30.0,
+        "Euler lerp strays {deviation}° from slerp"
+    );
+    let speeds: Vec<[f32; 4]> = scene.sample_angular_speed(41).unwrap();
+    let euler: Vec<f32> = speeds.iter().map(|r| r[1]).collect();
+    let (lo, hi) = euler
+        .iter()
+        .fold((f32::MAX, 0.0f32), |(lo, hi), &s| (lo.min(s), hi.max(s)));
+    assert!(hi > 2.0 * lo, "Euler lerp speed {lo}..{hi}");
+    let slerp: Vec<f32> = speeds.iter().map(|r| r[3]).collect();
+    let spread =
+        slerp.iter().cloned().fold(0.0, f32::max) - slerp.iter().cloned().fold(f32::MAX, f32::min);
+    assert!(
+        spread < 0.02 * slerp[0],
+        "slerp speed is constant: {slerp:?}"
+    );
+}
+
+#[test]
+fn long_arc_note_gives_both_angles_adding_to_a_turn() {
+    let mut scene = Interpolation::new();
+    let (short, long) = scene.arc_angles_deg();
+    assert!((short + long - 360.0).abs() < 1e-3 && short < 180.0);
+    let mut frame = Frame::default();
+    assert_eq!(scene.draw(&mut frame, 0.5).unwrap(), "");
+    scene.set_long_arc(true);
+    let note = scene.draw(&mut frame, 0.5).unwrap();
+    assert!(note.contains("the other way round"), "{note}");
+    assert!(
+        note.contains(&format!("{long:.3}°")) && note.contains(&format!("{short:.3}°")),
+        "{note}"
+    );
+    // The long-arc slerp really turns by the long angle at the midpoint: half of it.
+    let mid = Quat::from_mat3(&scene.orientation(Method::Slerp, 0.5, false));
+    let turned = mid.angle_between(Quat::IDENTITY).to_degrees();
+    assert!(
+        (turned - (360.0 - long / 2.0).min(long / 2.0)).abs() < 0.1,
+        "{turned}"
+    );
+}
+
+#[test]
+fn slerp_feedback_checks_the_answer_and_the_arc() {
+    let mut scene = opposite_keys();
+    scene.set_use_exercise(true);
+    let mut frame = Frame::default();
+
+    scene.set_runner(reference);
+    let note = scene.draw(&mut frame, 0.25).unwrap();
+    assert!(
+        note.starts_with("Your slerp matches the reference at t = 0.250."),
+        "{note}"
+    );
+    assert!(note.contains("takes the short arc"), "{note}");
+
+    scene.set_runner(wrong);
+    let note = scene.draw(&mut frame, 0.25).unwrap();
+    assert!(
+        note.starts_with("Your slerp differs at t = 0.250: yours ("),
+        "{note}"
+    );
+    assert!(note.contains("reference ("), "{note}");
+    assert!(note.contains("takes the long arc here"), "{note}");
+    // The figure shows what the student's code does: the slerp plane follows the long arc.
+    let shown = Quat::from_mat3(&scene.orientation(Method::Slerp, 0.5, true));
+    let (a, b) = (Quat::IDENTITY, scene.end_quat_used());
+    assert!(shown.angle_between(slerp_arc(a, b, 0.5, Arc::Long)) < 1e-3);
+
+    // With long arc ticked the note still checks the student's code, not a fixed sentence.
+    scene.set_long_arc(true);
+    let note = scene.draw(&mut frame, 0.25).unwrap();
+    assert!(
+        note.contains("differs") && note.contains("long arc here"),
+        "{note}"
+    );
+    scene.set_runner(reference);
+    let note = scene.draw(&mut frame, 0.25).unwrap();
+    assert!(
+        note.contains("matches") && note.contains("takes the short arc"),
+        "{note}"
+    );
+}
+
+#[test]
+fn slerp_feedback_reports_a_panic_and_draws_the_reference() {
+    let mut scene = opposite_keys();
+    scene.set_use_exercise(true);
+    scene.set_runner(panics);
+    let note = scene.draw(&mut Frame::default(), 0.3).unwrap();
+    assert!(
+        note.starts_with("Your exercise 3.2 slerp panicked: not yet implemented"),
+        "{note}"
+    );
+    let shown = scene.orientation(Method::Slerp, 0.3, true);
+    let expected = scene.orientation(Method::Slerp, 0.3, false);
+    assert!(shown.abs_diff_eq(expected, 1e-6));
+}
+
+#[test]
+fn stubs_say_not_done_yet() {
+    if cfg!(feature = "solutions") {
+        return;
+    }
+    let mut scene = Interpolation::new();
+    scene.set_use_exercise(true);
+    let note = scene.draw(&mut Frame::default(), 0.3).unwrap();
+    assert!(
+        note.starts_with("Not done yet: exercise 3.2 slerp"),
+        "{note}"
+    );
+    let mut rod = Rodrigues::new();
+    rod.set_use_exercise(true);
+    let note = rod.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(
+        note.contains("Not done yet: exercise 3.3 rodrigues_matrix"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Not done yet: exercise 3.1 quat_from_axis_angle"),
+        "{note}"
+    );
+}
+
+#[test]
+fn interpolation_rejects_bad_input() {
+    let mut scene = Interpolation::new();
+    assert!(scene
+        .set_keys_euler_deg(Vec3::new(f32::NAN, 0.0, 0.0), Vec3::ZERO)
+        .unwrap_err()
+        .contains("start x"));
+    assert!(scene
+        .set_end_quat(Quat::from_xyzw(0.0, 0.0, 0.0, 0.0))
+        .unwrap_err()
+        .contains("zero length"));
+    assert!(scene
+        .set_end_matrix(Mat3::from_diagonal(Vec3::new(2.0, 1.0, 1.0)))
+        .unwrap_err()
+        .contains("not orthonormal"));
+    assert!(scene
+        .draw(&mut Frame::default(), 1.5)
+        .unwrap_err()
+        .contains("t must lie in [0, 1]"));
+    assert!(scene.sample_determinant(1).is_err());
+}
+
+#[test]
+fn gimbal_lock_note_names_the_sum_the_matrix_keeps() {
+    let mut g = Gimbal::new();
+    // At pitch +90° the read-back is yaw − roll (R_x(90°) takes z to −y): 30 − 20 = 10.
+    g.set_angles_deg(30.0, 90.0, 20.0).unwrap();
+    let (back, locked) = g.decomposed_deg();
+    assert!(locked);
+    assert!(
+        (back.x - 10.0).abs() < 1e-3 && back.z.abs() < 1e-3,
+        "{back:?}"
+    );
+    assert_eq!(g.lock_sign(), -1.0);
+    let note = g.note();
+    assert!(
+        note.contains("only yaw − roll = 10.000° is determined"),
+        "{note}"
+    );
+    assert!(
+        note.contains("yaw 10.000°, pitch 90.000°, roll 0.000°"),
+        "{note}"
+    );
+    // At −90° it is yaw + roll: 30 + 20 = 50.
+    g.set_angles_deg(30.0, -90.0, 20.0).unwrap();
+    let (back, _) = g.decomposed_deg();
+    assert!((back.x - 50.0).abs() < 1e-3, "{back:?}");
+    assert!(
+        g.note().contains("only yaw + roll = 50.000° is determined"),
+        "{}",
+        g.note()
+    );
+    // Away from the lock the angles read back as set.
+    g.set_angles_deg(30.0, 40.0, 20.0).unwrap();
+    let (back, locked) = g.decomposed_deg();
+    assert!(!locked && (back - Vec3::new(30.0, 40.0, 20.0)).abs().max_element() < 1e-3);
+    assert!(
+        g.note()
+            .starts_with("Angle between the yaw and roll axles: 50.000°."),
+        "{}",
+        g.note()
+    );
+    assert!(g
+        .set_angles_deg(0.0, f32::INFINITY, 0.0)
+        .unwrap_err()
+        .contains("pitch"));
+}
+
+#[test]
+fn gimbal_rings_turn_red_at_lock_and_axles_are_labelled() {
+    let mut g = Gimbal::new();
+    let mut frame = Frame::default();
+    g.draw(&mut frame);
+    let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    assert_eq!(texts, ["yaw axle", "pitch axle", "roll axle"]);
+    let red = |f: &Frame| {
+        f.meshes
+            .iter()
+            .filter(|m| m.color.truncate() == inbetween::figures::rotations::LOCK_WARNING)
+            .count()
+    };
+    let before = red(&frame);
+    g.set_angles_deg(30.0, 90.0, 20.0).unwrap();
+    let mut frame = Frame::default();
+    g.draw(&mut frame);
+    assert_eq!(red(&frame), before + 80, "outer and middle rings warn");
+}
+
+fn cone_tip(frame: &Frame, color: Vec3) -> Vec3 {
+    let cone = frame
+        .meshes
+        .iter()
+        .find(|m| m.mesh == MeshId::CONE && m.color.truncate() == color)
+        .expect("an arrow of that colour");
+    cone.model.transform_point3(Vec3::Y)
+}
+
+#[test]
+fn rodrigues_draws_labelled_terms_that_add_up_to_the_rotated_vector() {
+    let mut scene = Rodrigues::new();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 0.5).unwrap();
+    let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    for t in [
+        "n",
+        "v",
+        "v cos θ",
+        "(n × v) sin θ",
+        "n (n·v)(1 − cos θ)",
+        "v′ = R v",
+    ] {
+        assert!(texts.contains(&t), "{t} in {texts:?}");
+    }
+    let colors = [
+        rc::AXIS,
+        rc::V,
+        rc::ROTATED,
+        rc::COS_PART,
+        rc::SIN_PART,
+        rc::AXIAL_PART,
+    ];
+    for (i, a) in colors.iter().enumerate() {
+        for b in &colors[i + 1..] {
+            assert_ne!(a, b, "distinct colours");
+        }
+    }
+    let n = Vec3::new(0.3, 1.0, 0.2).normalize();
+    let v = Vec3::new(1.2, 0.4, 0.3);
+    let expected = rotation::rodrigues_rotate(v, n, 60f32.to_radians());
+    assert!((cone_tip(&frame, rc::ROTATED) - expected).length() < 1e-4);
+    assert!(
+        (cone_tip(&frame, rc::AXIAL_PART) - expected).length() < 1e-4,
+        "the terms end at v′"
+    );
+    // The page shows R as 3×3.
+    let r: Mat3 = scene.matrix();
+    assert!(r.abs_diff_eq(rotation::rodrigues_mat3(n, 120f32.to_radians()), 1e-5));
+}
+
+#[test]
+fn rodrigues_feedback_compares_and_checks_validity() {
+    let mut scene = Rodrigues::new();
+    scene.set_use_exercise(true);
+    scene.set_runner(reference);
+    let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(
+        note.contains("Your rodrigues_matrix matches the reference at θ = 120.000°."),
+        "{note}"
+    );
+    assert!(
+        note.contains("Your quat_from_axis_angle matches the reference at θ = 120.000°."),
+        "{note}"
+    );
+    scene.set_runner(wrong);
+    let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(
+        note.contains("Your rodrigues_matrix differs at θ = 120.000°: yours ("),
+        "{note}"
+    );
+    assert!(
+        note.contains("it is not a unit quaternion: its length is 2.000"),
+        "{note}"
+    );
+    scene.set_runner(panics);
+    let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(
+        note.contains("Your exercise 3.3 rodrigues_matrix panicked"),
+        "{note}"
+    );
+    assert!(scene.matrix().abs_diff_eq(
+        rotation::rodrigues_mat3(Vec3::new(0.3, 1.0, 0.2).normalize(), 120f32.to_radians()),
+        1e-5
+    ));
+}
+
+#[test]
+fn rodrigues_rejects_bad_input() {
+    let mut scene = Rodrigues::new();
+    assert!(scene
+        .set_axis_angle(Vec3::ZERO, 30.0)
+        .unwrap_err()
+        .contains("axis has zero length"));
+    assert!(scene
+        .set_axis_angle(Vec3::Y, f32::NAN)
+        .unwrap_err()
+        .contains("angle"));
+    assert!(scene
+        .set_vector(Vec3::new(0.0, f32::NAN, 0.0))
+        .unwrap_err()
+        .contains("v.y"));
+    assert!(scene.draw(&mut Frame::default(), -0.1).is_err());
+}
