@@ -60,10 +60,17 @@ pub fn failure_note(exercise: &str, file: &str, failure: &Failure) -> String {
         Failure::NotDone => {
             format!("Not done yet: {exercise} ({file}). The figure uses the reference.")
         }
-        Failure::Panicked(message) => format!(
-            "Your {exercise} panicked: {message}. The figure uses the reference; fix the code, \
-             rebuild and reload the page."
-        ),
+        Failure::Panicked(message) => {
+            // Rust's own wording starts "panicked at file:line:col:\nmessage".
+            let what = match message.strip_prefix("panicked at ") {
+                Some(rest) => format!("panicked at {}", rest.replacen(":\n", ": ", 1)),
+                None => format!("panicked: {message}"),
+            };
+            format!(
+                "Your {exercise} {what}. The figure uses the reference; fix the code, rebuild \
+                 and reload the page."
+            )
+        }
         Failure::Call(message) => {
             format!("Could not run your {exercise}: {message}. The figure uses the reference.")
         }
@@ -137,5 +144,13 @@ mod tests {
         assert!(n.starts_with("Not done yet: exercise 3.2 slerp"));
         let n = failure_note("exercise 3.2 slerp", "f", &Failure::Panicked("boom".into()));
         assert!(n.contains("panicked: boom") && n.contains("reference"));
+        let rust = "panicked at src/exercises/rotations.rs:45:9:\nindex out of bounds";
+        let n = failure_note("exercise 3.2 slerp", "f", &Failure::Panicked(rust.into()));
+        assert!(
+            n.starts_with(
+                "Your exercise 3.2 slerp panicked at src/exercises/rotations.rs:45:9: index"
+            ),
+            "{n}"
+        );
     }
 }

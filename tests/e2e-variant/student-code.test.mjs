@@ -64,7 +64,7 @@ for (const backend of ['webgl2', 'webgpu']) {
       await useMyExercise(interp);
       await frames(page);
       const note = await interp.locator('.exercise-note').textContent();
-      assert.match(note, /slerp panicked/, note);
+      assert.match(note, /slerp panicked at src\//, note);
       assert.match(note, /index out of bounds/, note);
       assert.match(note, /reference/, note);
       assert.ok(await page.evaluate(() => Boolean(window.__inbetween.panickedExercises.slerp)));
