@@ -609,7 +609,10 @@ fn lagrange_refuses_more_keys_than_its_cap_at_once() {
         Interpolation::Linear,
         "a refused scheme leaves the track unchanged"
     );
-    assert!(start.elapsed().as_secs_f32() < 1.0, "refused without sampling");
+    assert!(
+        start.elapsed().as_secs_f32() < 1.0,
+        "refused without sampling"
+    );
 }
 
 #[test]
