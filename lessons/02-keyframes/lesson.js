@@ -110,6 +110,8 @@ const keysViewer = await lesson.figure('#fig-keys');
 const scene = new KeyframesScene();
 const timeline = new KeyTimeline(document.getElementById('keys-timeline'), { duration: scene.loopSec });
 const listeners = []; // figures that re-sample after an edit of the shared keys
+/** Registers a figure's re-sampling and runs it once now (frames may come before any edit). */
+const listen = (f) => { listeners.push(f); f(); };
 const message = document.getElementById('keys-message');
 const p = { scheme: 'cardinal', tension: 1, ghosts: 24, arcLength: false, ease: 'none', useExercise: false };
 let schemeControl = null;
@@ -151,7 +153,7 @@ if (keysViewer) {
   const view = makeView(canvas, STRIP);
   const { ctx } = view;
   const editor = { path: [], ghosts: [], keys: [], tangents: [], held: false };
-  listeners.push(() => {
+  listen(() => {
     editor.path = scene.samplePath();
     editor.ghosts = scene.sampleGhosts();
     editor.keys = scene.keys();
@@ -368,7 +370,7 @@ function compareFigure(id) {
   const q = { a: figure.dataset.a, b: figure.dataset.b, preset: '' };
   const speed = figure.dataset.quantity === 'speed';
   const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Compare' });
-  const layers = { a: {}, b: {} };
+  const layers = { a: { path: [] }, b: { path: [] } };
   const view = makeView(figure.querySelector('canvas'));
   const plot = new Plot(figure.querySelector('.plot'), {
     title: speed ? 'Speed |p′(t)|' : 'Acceleration |p″(t)|',
@@ -414,7 +416,7 @@ function compareFigure(id) {
   gui.add(q, 'b', SCHEMES).name('B (pink)').onChange(sync);
   gui.add(q, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
     .name('keys (all figures)').onChange((v) => { if (v) edit(() => scene.loadPreset(v)); });
-  listeners.push(sync);
+  listen(sync);
   lesson.onFrame(() => {
     const tau = timeline.time;
     const { ctx } = view;
@@ -426,7 +428,8 @@ function compareFigure(id) {
     for (const side of ['a', 'b']) {
       const [x, y] = schemes[side].position(tau);
       view.dot(x, y, 7, C[side]);
-      view.text(x + 0.08, y + 0.08, side.toUpperCase(), C[side]);
+      const dx = side === 'a' ? -0.25 : 0.12; // A left of its ball, B right: never on top of each other
+      view.text(x + dx, y + 0.12, side.toUpperCase(), C[side]);
     }
     cursor(plot, scene.startSec + tau);
   });
@@ -488,7 +491,7 @@ if (lagrangeViewer) {
     title: 'Acceleration |p″(t)| of the motion shown', xLabel: 'time (s)', yLabel: 'acceleration (m/s²)',
     series: ['|p″|'], colors: [C.purple], minSpan: 0.1,
   });
-  listeners.push(() => {
+  listen(() => {
     layer.path = scene.samplePath();
     layer.ghosts = scene.sampleGhosts();
     layer.held = scene.isHeld;
