@@ -184,6 +184,7 @@ impl KeyframesScene {
 
     /// Where the ball is at `tau` seconds after the first key (wrapped into the loop): `[x, y]`.
     pub fn position(&self, tau: f32) -> Result<Vec<f32>, JsError> {
+        let tau = super::finite("time", tau)?; // before wrapping: NaN.min(x) is x
         let p = self.scene.position(self.scene.wrap(tau)).map_err(js)?;
         Ok(vec![p.x, p.y])
     }
