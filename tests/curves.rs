@@ -589,6 +589,33 @@ fn lagrange_reproduces_a_polynomial_of_degree_n_minus_one() {
 }
 
 #[test]
+fn lagrange_refuses_more_keys_than_its_cap_at_once() {
+    let keys = |n: usize| {
+        let times: Vec<f32> = (0..n).map(|i| i as f32).collect();
+        Track::new(times, vec![0.0_f32; n]).unwrap()
+    };
+    assert!(keys(MAX_LAGRANGE_KEYS)
+        .with_interpolation(Interpolation::Lagrange)
+        .is_ok());
+    let start = std::time::Instant::now();
+    let mut track = keys(10_000);
+    let err = track
+        .set_interpolation(Interpolation::Lagrange)
+        .unwrap_err();
+    assert_eq!(err, TrackError::TooManyKeysForLagrange { keys: 10_000 });
+    assert!(err.to_string().contains("at most 64 keys"), "{err}");
+    assert_eq!(
+        track.interpolation(),
+        Interpolation::Linear,
+        "a refused scheme leaves the track unchanged"
+    );
+    assert!(
+        start.elapsed().as_secs_f32() < 1.0,
+        "refused without sampling"
+    );
+}
+
+#[test]
 fn lagrange_oscillates_more_with_more_keys() {
     // Runge's function f(x) = 1 / (1 + 25x²) on [−1, 1] at evenly spaced keys: adding two keys
     // to ten makes the Lagrange polynomial *worse* near the ends, while the natural spline gets

@@ -1,209 +1,263 @@
 // Lesson 02: wires the curve editor, the controls, the plots and the figures to the wasm scenes.
 // No interpolation here: JavaScript only draws what Rust sampled and forwards the mouse edits.
 import { startLesson, markDrawn, Timeline, Plot, GUI } from '../../www/lesson.js';
-import { KeyframesScene, LagrangeScene } from '../../pkg/inbetween.js';
+import { KeyframesScene, LagrangeScene, hermiteBasisSamples, hermiteBasisNote } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
-// ---- Figure 1: curve editor + 3D view + plots. ----
-const keysViewer = await lesson.figure('#fig-keys');
-if (keysViewer) {
-  keysViewer.setCamera(0, 1.0, 0, 6.8, 0.35, 0.22);
-  const scene = new KeyframesScene();
-  const timeline = new Timeline(document.getElementById('keys-timeline'), { duration: scene.durationSec });
-  const message = document.getElementById('keys-message');
-  const note = document.getElementById('keys-note');
-  const p = { scheme: 'cardinal', tension: 1, ghosts: 24, arcLength: false, ease: 'none', useExercise: false };
-  const schemes = {
-    step: 'step', linear: 'linear', 'Lagrange (global)': 'lagrange', 'Hermite (your handles)': 'hermite',
-    'cardinal (tension μ)': 'cardinal', 'natural (C2)': 'natural', 'centripetal Catmull-Rom': 'centripetal',
-  };
-  const eases = {
-    none: 'none', smoothstep: 'smoothstep', smootherstep: 'smootherstep', sine: 'sine',
-    'ease in (t²)': 'in', 'ease out': 'out', 'ease in-out (cubic)': 'inout',
-  };
-  const gui = new GUI({ container: document.querySelector('#fig-keys .panel'), title: 'Keyframes' });
-  const schemeControl = gui.add(p, 'scheme', schemes).name('scheme').onChange((v) => edit(() => scene.setScheme(v)));
-  gui.add(p, 'tension', 0, 2, 0.01).name('tension μ (cardinal)').onChange((v) => edit(() => scene.setTension(v)));
-  gui.add(p, 'ghosts', 2, 60, 1).name('in-betweens').onChange((v) => edit(() => scene.setGhostCount(v)));
-  gui.add(p, 'arcLength').name('constant speed (arc length)').onChange((v) => edit(() => scene.setArcLength(v)));
-  gui.add(p, 'ease', eases).name('ease (slow in / out)').onChange((v) => edit(() => scene.setEase(v)));
-  gui.add(p, 'useExercise').name('use my exercise').onChange((v) => edit(() => scene.setUseExercise(v)));
+// Colours of src/draw.rs `palette` (sRGB), so the 2D views match the 3D ones and the words.
+const C = {
+  path: '#1f6fd6', key: '#e68a00', ghost: '#7f7f7f', ball: '#d62728', tangent: '#17a2a8',
+  a: '#1f6fd6', b: '#e35d9c', purple: '#944fc9', grid: '#eceef1', axis: '#c9ccd3', ink: '#1f2430',
+};
+const SCHEMES = {
+  step: 'step', linear: 'linear', 'Lagrange (global)': 'lagrange', 'Hermite (your handles)': 'hermite',
+  'cardinal (tension μ)': 'cardinal', 'natural (C2)': 'natural', 'centripetal Catmull-Rom': 'centripetal',
+};
+const EASES = {
+  none: 'none', smoothstep: 'smoothstep', smootherstep: 'smootherstep', sine: 'sine',
+  'ease in (t²)': 'in', 'ease out': 'out', 'ease in-out (cubic)': 'inout',
+};
+const cursor = (plot, x) => plot.setCursor?.(x);
 
-  const speedPlot = new Plot(document.getElementById('keys-speed'), {
-    title: 'Speed |p′(t)|', xLabel: 'time (s)', series: ['keyed (m/s)', 'arc length (m/s)'],
-  });
-  const accelPlot = new Plot(document.getElementById('keys-accel'), {
-    title: 'Acceleration |p″(t)| of the motion shown', xLabel: 'time (s)', series: ['|p″| (m/s²)'],
-  });
-
-  // What the editor draws, re-sampled from Rust after every edit.
-  const editor = { path: [], ghosts: [], keys: [], tangents: [] };
-  function refresh() {
-    editor.path = scene.samplePath(300);
-    editor.ghosts = scene.sampleGhosts();
-    editor.keys = scene.keys();
-    editor.tangents = scene.tangents();
-    timeline.duration = scene.durationSec;
-    timeline.time %= timeline.duration;
-    timeline.show();
-    const rows = scene.sampleMotion(400);
-    const cols = [[], [], [], []];
-    for (let i = 0; i < rows.length; i += 4) for (let c = 0; c < 4; c++) cols[c].push(rows[i + c]);
-    speedPlot.setData(cols.slice(0, 3));
-    accelPlot.setData([cols[0], cols[3]]);
-    if (scene.scheme !== p.scheme) {
-      p.scheme = scene.scheme;
-      schemeControl.updateDisplay();
-    }
+/** A timeline whose clock reads the keys' own seconds (`start` + time since the first key). */
+class KeyTimeline extends Timeline {
+  start = 0;
+  show() {
+    super.show();
+    this.clock.textContent = `${(this.start + this.time).toFixed(2)} s`;
   }
-  /** Runs an edit; a rejected edit (the core's validation message) is shown under the editor. */
-  function edit(action) {
-    try {
-      action();
-      message.textContent = '';
-    } catch (e) {
-      message.textContent = `Edit rejected: ${e.message ?? e}`;
-    }
-    refresh();
-  }
+}
 
-  const canvas = document.querySelector('#fig-keys .editor canvas');
+// ---- 2D views: world metres to canvas pixels, fitted to a box. ----
+function makeView(canvas, reserveBottom = 0) {
   const ctx = canvas.getContext('2d');
-  const STRIP = 46; // height of the time strip, CSS pixels
-  const view = { x0: -3.3, x1: 3.3, y0: -0.5, y1: 2.7 };
-  let size = { w: 1, h: 1, scale: 1, ox: 0, oy: 0 };
-  function layout() {
+  const v = { box: { x0: -3.3, x1: 3.3, y0: -0.5, y1: 2.7 }, w: 1, h: 1, scale: 1, ox: 0, oy: 0, ctx, bottom: reserveBottom };
+  v.layout = () => {
     const r = canvas.getBoundingClientRect();
     const dpr = window.devicePixelRatio || 1;
     canvas.width = Math.max(1, Math.round(r.width * dpr));
     canvas.height = Math.max(1, Math.round(r.height * dpr));
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    const h = r.height - STRIP;
-    const scale = Math.min(r.width / (view.x1 - view.x0), h / (view.y1 - view.y0));
-    size = { w: r.width, h: r.height, scale, ox: r.width / 2 - scale * (view.x0 + view.x1) / 2, oy: h / 2 + scale * (view.y0 + view.y1) / 2 };
-  }
-  new ResizeObserver(layout).observe(canvas);
-  layout();
-  const toPx = (x, y) => [size.ox + x * size.scale, size.oy - y * size.scale];
-  const toWorld = (px, py) => [(px - size.ox) / size.scale, (size.oy - py) / size.scale];
-  // The time strip spans [tMin, tMax] seconds.
-  const timeSpan = () => {
-    const t = editor.keys;
-    const first = Math.min(0, t[0]);
-    return [first, Math.max(first + 1, t[t.length - 3] + 0.6)];
+    const { x0, x1, y0, y1 } = v.box;
+    const h = r.height - v.bottom;
+    v.w = r.width; v.h = r.height;
+    v.scale = Math.max(1e-3, Math.min(r.width / (x1 - x0), h / (y1 - y0)));
+    v.ox = r.width / 2 - (v.scale * (x0 + x1)) / 2;
+    v.oy = h / 2 + (v.scale * (y0 + y1)) / 2;
   };
-  const timeToPx = (t) => { const [a, b] = timeSpan(); return 16 + ((t - a) / (b - a)) * (size.w - 32); };
-  const pxToTime = (px) => { const [a, b] = timeSpan(); return a + ((px - 16) / (size.w - 32)) * (b - a); };
-  const keyCount = () => editor.keys.length / 3;
-  const isCubic = () => ['hermite', 'cardinal', 'natural', 'centripetal'].includes(scene.scheme);
-
-  function draw(timeSec) {
-    const { w, h } = size;
-    ctx.clearRect(0, 0, w, h);
-    // Grid every half metre, axes darker.
+  v.toPx = (x, y) => [v.ox + x * v.scale, v.oy - y * v.scale];
+  v.toWorld = (px, py) => [(px - v.ox) / v.scale, (v.oy - py) / v.scale];
+  /** Fits the view to points `[x0, y0, x1, y1, …]` with a margin. */
+  v.fit = (xy) => {
+    let [x0, x1, y0, y1] = [Infinity, -Infinity, Infinity, -Infinity];
+    for (let i = 0; i < xy.length; i += 2) {
+      x0 = Math.min(x0, xy[i]); x1 = Math.max(x1, xy[i]);
+      y0 = Math.min(y0, xy[i + 1]); y1 = Math.max(y1, xy[i + 1]);
+    }
+    if (!Number.isFinite(x0)) return;
+    const m = 0.12 * Math.max(x1 - x0, y1 - y0, 1);
+    v.box = { x0: x0 - m, x1: x1 + m, y0: y0 - m, y1: y1 + m };
+    v.layout();
+  };
+  v.grid = () => {
+    const { x0, x1, y0, y1 } = v.box;
+    const step = Math.max(0.5, 2 ** Math.ceil(Math.log2((x1 - x0) / 16)));
     ctx.lineWidth = 1;
-    for (let x = Math.ceil(view.x0 * 2) / 2; x <= view.x1; x += 0.5) {
-      const [px] = toPx(x, 0);
-      ctx.strokeStyle = x === 0 ? '#c9ccd3' : '#eceef1';
-      ctx.beginPath(); ctx.moveTo(px, 0); ctx.lineTo(px, h - STRIP); ctx.stroke();
+    for (let x = Math.ceil(x0 / step) * step; x <= x1; x += step) {
+      const [px] = v.toPx(x, 0);
+      ctx.strokeStyle = x === 0 ? C.axis : C.grid;
+      ctx.beginPath(); ctx.moveTo(px, 0); ctx.lineTo(px, v.h - v.bottom); ctx.stroke();
     }
-    for (let y = Math.ceil(view.y0 * 2) / 2; y <= view.y1; y += 0.5) {
-      const [, py] = toPx(0, y);
-      ctx.strokeStyle = y === 0 ? '#c9ccd3' : '#eceef1';
-      ctx.beginPath(); ctx.moveTo(0, py); ctx.lineTo(w, py); ctx.stroke();
+    for (let y = Math.ceil(y0 / step) * step; y <= y1; y += step) {
+      const [, py] = v.toPx(0, y);
+      ctx.strokeStyle = y === 0 ? C.axis : C.grid;
+      ctx.beginPath(); ctx.moveTo(0, py); ctx.lineTo(v.w, py); ctx.stroke();
     }
-    // The path.
-    ctx.strokeStyle = '#26408c';
-    ctx.lineWidth = 2;
+  };
+  /** A path `[x0, y0, …]`; held values (step) as dots joined by thin dashed jumps. */
+  v.path = (xy, color, held) => {
+    ctx.strokeStyle = held ? C.ghost : color;
+    ctx.lineWidth = held ? 1 : 2;
+    ctx.setLineDash(held ? [4, 4] : []);
     ctx.beginPath();
-    for (let i = 0; i < editor.path.length; i += 2) {
-      const [px, py] = toPx(editor.path[i], editor.path[i + 1]);
+    for (let i = 0; i < xy.length; i += 2) {
+      const [px, py] = v.toPx(xy[i], xy[i + 1]);
       if (i === 0) ctx.moveTo(px, py); else ctx.lineTo(px, py);
     }
     ctx.stroke();
-    // In-betweens, evenly spaced in time.
-    ctx.fillStyle = '#8c8c99';
-    for (let i = 0; i < editor.ghosts.length; i += 2) {
-      const [px, py] = toPx(editor.ghosts[i], editor.ghosts[i + 1]);
-      ctx.beginPath(); ctx.arc(px, py, 3, 0, 2 * Math.PI); ctx.fill();
-    }
-    // Tangent handles (solid for Hermite, faint when automatic).
-    if (isCubic()) {
-      const hs = scene.handleSec;
-      ctx.strokeStyle = scene.scheme === 'hermite' ? '#1a9958' : 'rgba(26,153,88,0.4)';
-      ctx.fillStyle = ctx.strokeStyle;
-      ctx.lineWidth = 1.5;
-      for (let k = 0; k < keyCount(); k++) {
-        const [x, y] = [editor.keys[3 * k + 1], editor.keys[3 * k + 2]];
-        const [ix, iy, ox, oy] = editor.tangents.slice(4 * k, 4 * k + 4);
-        const a = toPx(x - ix * hs, y - iy * hs);
-        const b = toPx(x + ox * hs, y + oy * hs);
-        const c = toPx(x, y);
-        ctx.beginPath(); ctx.moveTo(...a); ctx.lineTo(...c); ctx.lineTo(...b); ctx.stroke();
-        for (const q of [a, b]) { ctx.beginPath(); ctx.arc(q[0], q[1], 4, 0, 2 * Math.PI); ctx.fill(); }
-      }
-    }
-    // Keys, numbered in time order.
+    ctx.setLineDash([]);
+    if (held) for (let i = 0; i < xy.length; i += 2) v.dot(xy[i], xy[i + 1], 5, color);
+  };
+  v.dot = (x, y, r, color) => {
+    const [px, py] = v.toPx(x, y);
+    ctx.fillStyle = color;
+    ctx.beginPath(); ctx.arc(px, py, r, 0, 2 * Math.PI); ctx.fill();
+  };
+  v.text = (x, y, text, color = C.ink) => {
+    const [px, py] = v.toPx(x, y);
+    ctx.fillStyle = color;
     ctx.font = '12px system-ui, sans-serif';
-    for (let k = 0; k < keyCount(); k++) {
-      const [px, py] = toPx(editor.keys[3 * k + 1], editor.keys[3 * k + 2]);
-      ctx.fillStyle = drag?.kind === 'key' && drag.index === k ? '#b34700' : '#f28c1a';
-      ctx.beginPath(); ctx.arc(px, py, 7, 0, 2 * Math.PI); ctx.fill();
-      ctx.fillStyle = '#1f2430';
-      ctx.fillText(String(k), px + 9, py - 8);
-    }
-    // The ball.
-    const [bx, by] = toPx(...scene.position(timeSec));
-    ctx.fillStyle = '#d9333f';
-    ctx.beginPath(); ctx.arc(bx, by, 6, 0, 2 * Math.PI); ctx.fill();
-    // Time strip: key ticks and the playhead.
+    ctx.fillText(text, px, py);
+  };
+  new ResizeObserver(v.layout).observe(canvas);
+  v.layout();
+  return v;
+}
+
+// ---- Figure 1: curve editor + 3D view. Its scene and timeline drive Figures 2, 5, 6 and 7. ----
+const keysViewer = await lesson.figure('#fig-keys');
+const scene = new KeyframesScene();
+const timeline = new KeyTimeline(document.getElementById('keys-timeline'), { duration: scene.loopSec });
+const listeners = []; // figures that re-sample after an edit of the shared keys
+/** Registers a figure's re-sampling and runs it once now (frames may come before any edit). */
+const listen = (f) => { listeners.push(f); f(); };
+const message = document.getElementById('keys-message');
+const p = { scheme: 'cardinal', tension: 1, ghosts: 24, arcLength: false, ease: 'none', useExercise: false };
+let schemeControl = null;
+lesson.onFrame((dt) => timeline.advance(dt)); // first: every figure below reads timeline.time
+
+/** Runs an edit; a rejected edit (the core's validation message) is shown under the editor. */
+function edit(action) {
+  try {
+    action();
+    message.textContent = '';
+  } catch (e) {
+    message.textContent = `Edit rejected: ${e.message ?? e}`;
+  }
+  refresh();
+}
+function refresh() {
+  timeline.start = scene.startSec;
+  timeline.duration = scene.loopSec;
+  timeline.time %= timeline.duration;
+  timeline.show();
+  if (schemeControl && scene.scheme !== p.scheme) {
+    p.scheme = scene.scheme;
+    schemeControl.updateDisplay();
+  }
+  for (const f of listeners) f();
+}
+
+if (keysViewer) {
+  keysViewer.setCamera(0, 1.0, 0, 6.8, 0.35, 0.22);
+  const note = document.getElementById('keys-note');
+  const gui = new GUI({ container: document.querySelector('#fig-keys .panel'), title: 'Keyframes' });
+  schemeControl = gui.add(p, 'scheme', SCHEMES).name('scheme').onChange((v) => edit(() => scene.setScheme(v)));
+  gui.add(p, 'tension', 0, 2, 0.01).name('tension μ (cardinal)').onChange((v) => edit(() => scene.setTension(v)));
+  gui.add(p, 'ghosts', 2, 60, 1).name('in-betweens').onChange((v) => edit(() => scene.setGhostCount(v)));
+  gui.add(p, 'useExercise').name('use my exercise').onChange((v) => edit(() => scene.setUseExercise(v)));
+
+  const canvas = document.querySelector('#fig-keys .editor canvas');
+  const STRIP = 46; // height of the time strip, CSS pixels
+  const view = makeView(canvas, STRIP);
+  const { ctx } = view;
+  const editor = { path: [], ghosts: [], keys: [], tangents: [], held: false };
+  listen(() => {
+    editor.path = scene.samplePath();
+    editor.ghosts = scene.sampleGhosts();
+    editor.keys = scene.keys();
+    editor.tangents = scene.tangents();
+    editor.held = scene.isHeld;
+  });
+  const keyCount = () => editor.keys.length / 3;
+  const isCubic = () => ['hermite', 'cardinal', 'natural', 'centripetal'].includes(scene.scheme);
+
+  // The time strip spans [a, b] seconds; frozen while a key's time is dragged, so the strip does
+  // not rescale under the pointer.
+  let frozenSpan = null;
+  const timeSpan = () => {
+    if (frozenSpan) return frozenSpan;
+    const t = editor.keys;
+    const first = Math.min(0, t[0]);
+    return [first, Math.max(first + 1, t[t.length - 3] + scene.loopSec - scene.durationSec + 0.2)];
+  };
+  const timeToPx = (t) => { const [a, b] = timeSpan(); return 16 + ((t - a) / (b - a)) * (view.w - 32); };
+  const pxToTime = (px) => { const [a, b] = timeSpan(); return a + ((px - 16) / (view.w - 32)) * (b - a); };
+  const handleEnds = (k) => {
+    const hs = scene.handleSec;
+    const [x, y] = [editor.keys[3 * k + 1], editor.keys[3 * k + 2]];
+    const [ix, iy, ox, oy] = editor.tangents.slice(4 * k, 4 * k + 4);
+    return { key: [x, y], in: [x - ix * hs, y - iy * hs], out: [x + ox * hs, y + oy * hs] };
+  };
+  function fitView() {
+    const pts = [...editor.path];
+    if (isCubic()) for (let k = 0; k < keyCount(); k++) { const h = handleEnds(k); pts.push(...h.in, ...h.out); }
+    view.fit(pts);
+  }
+
+  function draw(tau) {
+    const { w, h } = view;
+    ctx.clearRect(0, 0, w, h);
+    view.grid();
+    view.path(editor.path, C.path, editor.held);
+    for (let i = 0; i < editor.ghosts.length; i += 2) view.dot(editor.ghosts[i], editor.ghosts[i + 1], 3, C.ghost);
+    // Time strip: seconds, key ticks and the playhead (at the clock's time).
     const top = h - STRIP;
     ctx.fillStyle = '#f4f5f7';
     ctx.fillRect(0, top, w, STRIP);
-    ctx.strokeStyle = '#c9ccd3';
+    ctx.strokeStyle = C.axis;
     ctx.beginPath(); ctx.moveTo(0, top + 0.5); ctx.lineTo(w, top + 0.5); ctx.stroke();
     const [a, b] = timeSpan();
+    ctx.font = '12px system-ui, sans-serif';
     ctx.fillStyle = '#5b6270';
-    for (let s = Math.ceil(a); s <= b; s++) {
+    const every = Math.max(1, Math.ceil((b - a) / 10));
+    for (let s = Math.ceil(a / every) * every; s <= b; s += every) {
       const x = timeToPx(s);
       ctx.fillRect(x, top + STRIP - 10, 1, 10);
       ctx.fillText(`${s} s`, x + 3, top + STRIP - 3);
     }
     for (let k = 0; k < keyCount(); k++) {
       const x = timeToPx(editor.keys[3 * k]);
-      ctx.fillStyle = '#f28c1a';
+      ctx.fillStyle = drag?.kind === 'time' && drag.index === k ? '#b34700' : C.key;
       ctx.fillRect(x - 3, top + 6, 6, 18);
-      ctx.fillStyle = '#1f2430';
+      ctx.fillStyle = C.ink;
       ctx.fillText(String(k), x + 5, top + 17);
     }
-    const playhead = timeToPx(editor.keys[0] + timeSec);
-    ctx.fillStyle = '#d9333f';
+    const playhead = timeToPx(scene.startSec + tau);
+    ctx.fillStyle = C.ball;
     ctx.fillRect(playhead - 1, top + 2, 2, STRIP - 14);
+    // Tangent handles over everything (solid for Hermite, faint when automatic): grabbable anywhere.
+    if (isCubic()) {
+      ctx.strokeStyle = scene.scheme === 'hermite' ? C.tangent : 'rgba(23,162,168,0.45)';
+      ctx.fillStyle = ctx.strokeStyle;
+      ctx.lineWidth = 1.5;
+      for (let k = 0; k < keyCount(); k++) {
+        const hd = handleEnds(k);
+        const [pa, pc, pb] = [view.toPx(...hd.in), view.toPx(...hd.key), view.toPx(...hd.out)];
+        ctx.beginPath(); ctx.moveTo(...pa); ctx.lineTo(...pc); ctx.lineTo(...pb); ctx.stroke();
+        for (const q of [pa, pb]) { ctx.beginPath(); ctx.arc(q[0], q[1], 4, 0, 2 * Math.PI); ctx.fill(); }
+      }
+    }
+    for (let k = 0; k < keyCount(); k++) {
+      const [x, y] = [editor.keys[3 * k + 1], editor.keys[3 * k + 2]];
+      view.dot(x, y, 7, drag?.kind === 'key' && drag.index === k ? '#b34700' : C.key);
+      const [px, py] = view.toPx(x, y);
+      ctx.fillStyle = C.ink;
+      ctx.fillText(String(k), px + 9, py - 8);
+    }
+    view.dot(...scene.position(tau), 6, C.ball);
   }
 
-  // ---- Editing with the mouse. ----
+  // ---- Editing with the mouse. Keys and handles first (even over the strip), then the strip. ----
   let drag = null;
   const local = (e) => { const r = canvas.getBoundingClientRect(); return [e.clientX - r.left, e.clientY - r.top]; };
   function hit(px, py) {
-    if (py > size.h - STRIP) {
-      for (let k = 0; k < keyCount(); k++) if (Math.abs(timeToPx(editor.keys[3 * k]) - px) < 7) return { kind: 'time', index: k };
-      return null;
-    }
     for (let k = 0; k < keyCount(); k++) {
-      const [kx, ky] = toPx(editor.keys[3 * k + 1], editor.keys[3 * k + 2]);
+      const [kx, ky] = view.toPx(editor.keys[3 * k + 1], editor.keys[3 * k + 2]);
       if (Math.hypot(kx - px, ky - py) < 10) return { kind: 'key', index: k };
     }
     if (isCubic()) {
-      const hs = scene.handleSec;
       for (let k = 0; k < keyCount(); k++) {
-        const [x, y] = [editor.keys[3 * k + 1], editor.keys[3 * k + 2]];
-        const [ix, iy, ox, oy] = editor.tangents.slice(4 * k, 4 * k + 4);
-        const [ax, ay] = toPx(x - ix * hs, y - iy * hs);
-        const [bx, by] = toPx(x + ox * hs, y + oy * hs);
+        const hd = handleEnds(k);
+        const [bx, by] = view.toPx(...hd.out);
+        const [ax, ay] = view.toPx(...hd.in);
         if (Math.hypot(bx - px, by - py) < 8) return { kind: 'out', index: k };
         if (Math.hypot(ax - px, ay - py) < 8) return { kind: 'in', index: k };
       }
+    }
+    if (py > view.h - STRIP) {
+      for (let k = 0; k < keyCount(); k++) if (Math.abs(timeToPx(editor.keys[3 * k]) - px) < 7) return { kind: 'time', index: k };
     }
     return null;
   }
@@ -220,20 +274,22 @@ if (keysViewer) {
   canvas.addEventListener('pointerdown', (e) => {
     const [px, py] = local(e);
     drag = hit(px, py);
+    if (drag?.kind === 'time') frozenSpan = timeSpan();
     if (drag) canvas.setPointerCapture(e.pointerId);
   });
   canvas.addEventListener('pointermove', (e) => {
     if (!drag) return;
     const [px, py] = local(e);
-    const [x, y] = toWorld(px, py);
+    const [x, y] = view.toWorld(px, py);
     const k = drag.index;
     if (drag.kind === 'key') {
       edit(() => scene.setKeys(...keysWith((times, xy) => { xy[2 * k] = x; xy[2 * k + 1] = y; })));
     } else if (drag.kind === 'time') {
-      // Keep the order: a key stays between its neighbours (the core would reject it otherwise).
+      // Keep the order (a key stays between its neighbours) and inside the frozen strip.
       const t = editor.keys;
-      const lo = k > 0 ? t[3 * (k - 1)] + 0.05 : -Infinity;
-      const hi = k < keyCount() - 1 ? t[3 * (k + 1)] - 0.05 : Infinity;
+      const [a, b] = frozenSpan;
+      const lo = k > 0 ? t[3 * (k - 1)] + 0.05 : a;
+      const hi = k < keyCount() - 1 ? t[3 * (k + 1)] - 0.05 : b;
       const time = Math.min(Math.max(pxToTime(px), lo), hi);
       edit(() => scene.setKeys(...keysWith((times) => { times[k] = Math.round(time * 100) / 100; })));
     } else {
@@ -247,63 +303,215 @@ if (keysViewer) {
       edit(() => scene.setKeyTangent(k, din[0], din[1], dout[0], dout[1]));
     }
   });
-  const release = () => { drag = null; };
+  const release = () => { drag = null; frozenSpan = null; };
   canvas.addEventListener('pointerup', release);
   canvas.addEventListener('pointercancel', release);
   canvas.addEventListener('dblclick', (e) => {
     const [px, py] = local(e);
-    if (py > size.h - STRIP) return;
+    if (py > view.h - STRIP) return;
     const target = hit(px, py);
     if (target?.kind === 'key') {
       if (keyCount() <= 2) { message.textContent = 'A motion needs at least two keys here.'; return; }
       edit(() => scene.setKeys(...keysWith((times, xy) => { times.splice(target.index, 1); xy.splice(2 * target.index, 2); })));
       return;
     }
-    // A new key goes where the path passes closest, in time; past either end it extends the motion.
-    const [x, y] = toWorld(px, py);
-    let best = 0;
-    let bestDistance = Infinity;
-    for (let i = 0; i < editor.path.length; i += 2) {
-      const dd = Math.hypot(editor.path[i] - x, editor.path[i + 1] - y);
-      if (dd < bestDistance) { bestDistance = dd; best = i / 2; }
+    // A new key goes after the key nearest in space (or before key 0), half-way in time.
+    const [x, y] = view.toWorld(px, py);
+    let near = 0;
+    for (let k = 1; k < keyCount(); k++) {
+      const d = (j) => Math.hypot(editor.keys[3 * j + 1] - x, editor.keys[3 * j + 2] - y);
+      if (d(k) < d(near)) near = k;
     }
-    const samples = editor.path.length / 2;
-    const first = editor.keys[0];
-    const last = editor.keys[editor.keys.length - 3];
-    let time = first + ((last - first) * best) / (samples - 1);
-    if (best === samples - 1) time = last + 0.6;
-    else if (best === 0) time = first - 0.6;
+    const t = (k) => editor.keys[3 * k];
+    let time;
+    if (near === keyCount() - 1) time = t(near) + 0.6;
+    else if (near === 0 && keyCount() > 1 && Math.hypot(editor.keys[4] - x, editor.keys[5] - y) > Math.hypot(editor.keys[1] - editor.keys[4], editor.keys[2] - editor.keys[5])) time = t(0) - 0.6;
+    else time = (t(near) + t(near + 1)) / 2;
     time = Math.round(time * 100) / 100;
     edit(() => scene.setKeys(...keysWith((times, xy) => {
-      let at = times.findIndex((t) => t > time);
+      let at = times.findIndex((tt) => tt > time);
       if (at < 0) at = times.length;
       times.splice(at, 0, time);
       xy.splice(2 * at, 0, x, y);
     })));
   });
 
-  refresh();
+  const figure = document.getElementById('fig-keys');
+  const presetSelect = figure.querySelector('.preset');
+  presetSelect.addEventListener('change', () => {
+    if (!presetSelect.value) return;
+    edit(() => scene.loadPreset(presetSelect.value));
+    fitView();
+  });
+  figure.querySelector('.fit').addEventListener('click', fitView);
+  figure.querySelector('.reset').addEventListener('click', () => {
+    p.scheme = 'cardinal'; p.tension = 1;
+    gui.controllersRecursive().forEach((c) => c.updateDisplay());
+    presetSelect.value = '';
+    edit(() => { scene.setTension(1); scene.setScheme('cardinal'); scene.loadPreset('default'); });
+    view.box = { x0: -3.3, x1: 3.3, y0: -0.5, y1: 2.7 };
+    view.layout();
+  });
+
   let lastNote = null;
-  lesson.onFrame((dt) => {
-    const t = timeline.advance(dt);
-    const text = scene.draw(keysViewer, t);
+  lesson.onFrame(() => {
+    const tau = timeline.time;
+    const text = scene.draw(keysViewer, tau);
     if (text !== lastNote) { note.textContent = text; lastNote = text; }
-    draw(t);
+    draw(tau);
     markDrawn('#fig-keys');
   });
 }
 
-// ---- Figure 2: Lagrange through n and n + 2 keys. ----
+// ---- Figures 2, 5, 6: two schemes on the same keys, at the same time. ----
+function compareFigure(id) {
+  const figure = document.getElementById(id);
+  const schemes = { a: new KeyframesScene(), b: new KeyframesScene() };
+  const q = { a: figure.dataset.a, b: figure.dataset.b, preset: '' };
+  const speed = figure.dataset.quantity === 'speed';
+  const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Compare' });
+  const layers = { a: { path: [] }, b: { path: [] } };
+  const view = makeView(figure.querySelector('canvas'));
+  const plot = new Plot(figure.querySelector('.plot'), {
+    title: speed ? 'Speed |p′(t)|' : 'Acceleration |p″(t)|',
+    xLabel: 'time (s)', yLabel: speed ? 'speed (m/s)' : 'acceleration (m/s²)',
+    series: ['A', 'B'], colors: [C.a, C.b], minSpan: 0.1,
+  });
+  function sync() {
+    const keys = scene.keys();
+    const times = []; const xy = [];
+    for (let i = 0; i < keys.length; i += 3) { times.push(keys[i]); xy.push(keys[i + 1], keys[i + 2]); }
+    const cols = [[]];
+    const all = [];
+    for (const side of ['a', 'b']) {
+      const s = schemes[side];
+      try {
+        s.setScheme('linear');
+        s.setKeys(times, xy);
+        s.setTension(p.tension);
+        s.setScheme(q[side]);
+        if (q[side] === 'hermite') {
+          const d = scene.tangents();
+          const tin = []; const tout = [];
+          for (let i = 0; i < d.length; i += 4) { tin.push(d[i], d[i + 1]); tout.push(d[i + 2], d[i + 3]); }
+          s.setTangents(tin, tout);
+        }
+      } catch (e) {
+        message.textContent = `Figure comparison: ${e.message ?? e}`;
+      }
+      layers[side] = { path: s.samplePath(), held: s.isHeld };
+      all.push(...layers[side].path);
+      const rows = s.sampleMotion(400);
+      const col = [];
+      for (let i = 0; i < rows.length; i += 4) {
+        if (side === 'a') cols[0].push(rows[i]);
+        col.push(speed ? rows[i + 1] : rows[i + 3]);
+      }
+      cols.push(col);
+    }
+    plot.setData(cols);
+    view.fit(all);
+  }
+  gui.add(q, 'a', SCHEMES).name('A (blue)').onChange(sync);
+  gui.add(q, 'b', SCHEMES).name('B (pink)').onChange(sync);
+  gui.add(q, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
+    .name('keys (all figures)').onChange((v) => { if (v) edit(() => scene.loadPreset(v)); });
+  listen(sync);
+  lesson.onFrame(() => {
+    const tau = timeline.time;
+    const { ctx } = view;
+    ctx.clearRect(0, 0, view.w, view.h);
+    view.grid();
+    for (const side of ['a', 'b']) view.path(layers[side].path, C[side], layers[side].held);
+    const keys = scene.keys();
+    for (let i = 0; i < keys.length; i += 3) view.dot(keys[i + 1], keys[i + 2], 4, C.ink);
+    for (const side of ['a', 'b']) {
+      const [x, y] = schemes[side].position(tau);
+      view.dot(x, y, 7, C[side]);
+      const dx = side === 'a' ? -0.25 : 0.12; // A left of its ball, B right: never on top of each other
+      view.text(x + dx, y + 0.12, side.toUpperCase(), C[side]);
+    }
+    cursor(plot, scene.startSec + tau);
+  });
+}
+for (const id of ['fig-step', 'fig-natural', 'fig-centripetal']) compareFigure(id);
+
+// ---- Figure 3: Lagrange through n and n + 2 keys, a graph seen straight on. ----
 const lagrangeViewer = await lesson.figure('#fig-lagrange');
 if (lagrangeViewer) {
-  lagrangeViewer.setCamera(0, 1.1, 0, 7.2, 0, 0.12);
-  const scene = new LagrangeScene();
-  const p = { keys: 10, spline: true };
+  // Yaw 0, pitch 0: the camera looks straight at the graph's plane, so it is not foreshortened.
+  lagrangeViewer.setCamera(0, 1.2, 0, 7.6, 0, 0);
+  const lagrange = new LagrangeScene();
+  const lp = { keys: 10, spline: true };
   const gui = new GUI({ container: document.querySelector('#fig-lagrange .panel'), title: 'Lagrange' });
-  gui.add(p, 'keys', 3, 14, 1).name('keys (blue)').onChange((v) => scene.setKeyCount(v));
-  gui.add(p, 'spline').name('Catmull-Rom (green)').onChange((v) => scene.setShowSpline(v));
+  gui.add(lp, 'keys', 3, 14, 1).name('keys (blue)').onChange((v) => lagrange.setKeyCount(v));
+  gui.add(lp, 'spline').name('Catmull-Rom (green)').onChange((v) => lagrange.setShowSpline(v));
   lesson.onFrame(() => {
-    scene.draw(lagrangeViewer);
+    lagrange.draw(lagrangeViewer);
     markDrawn('#fig-lagrange');
   });
 }
+
+// ---- Figure 4: the Hermite basis, with exercise 2.1 at the chosen s. ----
+{
+  const bp = { s: 0.3, useExercise: false };
+  const plot = new Plot(document.getElementById('basis-plot'), {
+    title: 'Hermite basis', xLabel: 's (segment parameter, 0 to 1)', yLabel: 'weight (unitless)',
+    series: ['h00 (p_i)', 'h10 (h d_i)', 'h01 (p_i+1)', 'h11 (h d_i+1)'],
+    colors: [C.key, C.tangent, C.b, C.purple], minSpan: 0.1,
+  });
+  const rows = hermiteBasisSamples(101);
+  const cols = [[], [], [], [], []];
+  for (let i = 0; i < rows.length; i += 5) for (let c = 0; c < 5; c++) cols[c].push(rows[i + c]);
+  plot.setData(cols);
+  const note = document.getElementById('basis-note');
+  const update = () => {
+    note.textContent = hermiteBasisNote(bp.s, bp.useExercise);
+    cursor(plot, bp.s);
+  };
+  const gui = new GUI({ container: document.querySelector('#fig-basis .panel'), title: 'Basis' });
+  gui.add(bp, 's', 0, 1, 0.01).name('s').onChange(update);
+  gui.add(bp, 'useExercise').name('use my exercise').onChange(update);
+  update();
+}
+
+// ---- Figure 7: spacing and timing of Figure 1's motion, with the speed plots. ----
+{
+  const figure = document.getElementById('fig-timing');
+  const view = makeView(figure.querySelector('canvas'));
+  const layer = { path: [], ghosts: [], held: false };
+  const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Timing' });
+  gui.add(p, 'arcLength').name('constant speed (arc length)').onChange((v) => edit(() => scene.setArcLength(v)));
+  gui.add(p, 'ease', EASES).name('ease (slow in / out)').onChange((v) => edit(() => scene.setEase(v)));
+  const speedPlot = new Plot(document.getElementById('keys-speed'), {
+    title: 'Speed |p′(t)|', xLabel: 'time (s)', yLabel: 'speed (m/s)',
+    series: ['keyed', 'arc length'], colors: [C.path, C.ball], minSpan: 0.1,
+  });
+  const accelPlot = new Plot(document.getElementById('keys-accel'), {
+    title: 'Acceleration |p″(t)| of the motion shown', xLabel: 'time (s)', yLabel: 'acceleration (m/s²)',
+    series: ['|p″|'], colors: [C.purple], minSpan: 0.1,
+  });
+  listen(() => {
+    layer.path = scene.samplePath();
+    layer.ghosts = scene.sampleGhosts();
+    layer.held = scene.isHeld;
+    view.fit(layer.path);
+    const rows = scene.sampleMotion(400);
+    const cols = [[], [], [], []];
+    for (let i = 0; i < rows.length; i += 4) for (let c = 0; c < 4; c++) cols[c].push(rows[i + c]);
+    speedPlot.setData(cols.slice(0, 3));
+    accelPlot.setData([cols[0], cols[3]]);
+  });
+  lesson.onFrame(() => {
+    const tau = timeline.time;
+    view.ctx.clearRect(0, 0, view.w, view.h);
+    view.grid();
+    view.path(layer.path, C.path, layer.held);
+    for (let i = 0; i < layer.ghosts.length; i += 2) view.dot(layer.ghosts[i], layer.ghosts[i + 1], 3.5, C.ghost);
+    view.dot(...scene.position(tau), 7, C.ball);
+    cursor(speedPlot, scene.startSec + tau);
+    cursor(accelPlot, scene.startSec + tau);
+  });
+}
+
+refresh();

@@ -54,5 +54,7 @@ pub use lagrange::lagrange;
 pub use natural::natural_spline_tangents;
 pub use segment::{find_segment, Cursor};
 pub use timing::{Ease, TimeWarp};
-pub use track::{validate_keys, EndBehaviour, Interpolation, Sample, Track, TrackError};
+pub use track::{
+    validate_keys, EndBehaviour, Interpolation, Sample, Track, TrackError, MAX_LAGRANGE_KEYS,
+};
 pub use value::Value;

@@ -11,6 +11,11 @@ use super::Value;
 
 /// How a [`Track`] fills the time between its keys.
 ///
+/// The most keys [`Interpolation::Lagrange`] accepts. Past a few dozen keys the polynomial is
+/// meaningless in `f32` (Runge's oscillations dwarf the keys) and each sample costs `O(N²)`, so
+/// 10,000 keys would freeze a page: [`Track::set_interpolation`] refuses instead.
+pub const MAX_LAGRANGE_KEYS: usize = 64;
+
 /// Every scheme passes through the keys. The cubic schemes (`Hermite`, `Cardinal`, `Natural`,
 /// `Centripetal`) are all evaluated as cubic Hermite segments; they differ only in how the
 /// tangent at each key is chosen.
@@ -157,6 +162,11 @@ pub enum TrackError {
         /// The offending tension.
         tension: f32,
     },
+    /// [`Interpolation::Lagrange`] asked of more than [`MAX_LAGRANGE_KEYS`] keys.
+    TooManyKeysForLagrange {
+        /// How many keys the track has.
+        keys: usize,
+    },
     /// A key index past the last key.
     KeyOutOfRange {
         /// The index asked for.
@@ -197,6 +207,12 @@ impl fmt::Display for TrackError {
             Self::TensionOutOfRange { tension } => {
                 write!(f, "the tension must be between 0 and 2, but it is {tension}")
             }
+            Self::TooManyKeysForLagrange { keys } => write!(
+                f,
+                "Lagrange interpolation takes at most {MAX_LAGRANGE_KEYS} keys, but the track has \
+                 {keys}: one polynomial through that many keys is useless (it oscillates wildly) \
+                 and costs O(N²) per sample; use a spline"
+            ),
             Self::KeyOutOfRange { index, keys } => write!(
                 f,
                 "there is no key {index}: the track has {keys} keys, numbered from 0 to {}",
@@ -356,9 +372,15 @@ impl<T: Value> Track<T> {
     /// editable.
     ///
     /// # Errors
-    /// [`TrackError::TensionOutOfRange`] for a cardinal tension outside `[0, 2]` or NaN; the
-    /// track is then unchanged.
+    /// [`TrackError::TensionOutOfRange`] for a cardinal tension outside `[0, 2]` or NaN;
+    /// [`TrackError::TooManyKeysForLagrange`] for `Lagrange` with more than
+    /// [`MAX_LAGRANGE_KEYS`] keys. The track is then unchanged.
     pub fn set_interpolation(&mut self, interpolation: Interpolation) -> Result<(), TrackError> {
+        if interpolation == Interpolation::Lagrange && self.times.len() > MAX_LAGRANGE_KEYS {
+            return Err(TrackError::TooManyKeysForLagrange {
+                keys: self.times.len(),
+            });
+        }
         if let Interpolation::Cardinal { tension } = interpolation {
             if !(0.0..=2.0).contains(&tension) {
                 return Err(TrackError::TensionOutOfRange { tension });

@@ -89,16 +89,26 @@ pub fn arc_length_invert(params: &[f32], lengths: &[f32], s: f32) -> Answer<f32>
     Err(NotDone)
 }
 
-/// Grades this file's exercises against the reference on edge cases and random inputs.
+/// Grades this file's exercises against the reference on edge cases (each saying what it
+/// tests) and random inputs.
 pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
-    use super::grade::check;
+    use super::grade::{check_cases, RANDOM};
     const LESSON: &str = "02-keyframes";
     let close = |a: f32, b: f32, eps: f32| (a - b).abs() <= eps * (1.0 + a.abs().max(b.abs()));
 
     // 2.1: the ends, the middle, extrapolation, then random s.
-    let mut params = vec![0.0, 1.0, 0.5, 0.25, 0.75, -0.5, 1.5, 2.0];
-    params.extend((0..200).map(|_| rng.range(-0.2, 1.2)));
-    let basis = check(
+    let mut params: Vec<(&str, f32)> = vec![
+        ("s = 0: all weight on p0, [1, 0, 0, 0]", 0.0),
+        ("s = 1: all weight on p1, [0, 0, 1, 0]", 1.0),
+        ("s = 0.5: the middle of the segment", 0.5),
+        ("s = 0.25", 0.25),
+        ("s = 0.75", 0.75),
+        ("s = -0.5: before the segment (do not clamp s)", -0.5),
+        ("s = 1.5: past the segment (do not clamp s)", 1.5),
+        ("s = 2: far past the segment (do not clamp s)", 2.0),
+    ];
+    params.extend((0..200).map(|_| (RANDOM, rng.range(-0.2, 1.2))));
+    let basis = check_cases(
         LESSON,
         "hermite_basis",
         &params,
@@ -120,25 +130,41 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     };
 
     // 2.2: one key, two keys, very uneven times (the halving mistake fails these), μ = 0, 1, 2.
-    let mut cases: Vec<(Vec<f32>, Vec<f32>, f32)> = vec![
-        (vec![0.0], vec![3.0], 1.0),
-        (vec![0.0, 1.0], vec![0.0, 2.0], 1.0),
-        (vec![0.0, 1.0, 2.0], vec![0.0, 1.0, 0.0], 1.0),
-        (vec![0.0, 0.1, 3.0, 3.2], vec![1.0, -1.0, 2.0, 0.5], 1.0),
-        (vec![0.0, 0.1, 3.0, 3.2], vec![1.0, -1.0, 2.0, 0.5], 0.0),
+    type Channel = (Vec<f32>, Vec<f32>, f32);
+    let mut cases: Vec<(&str, Channel)> = vec![
+        ("a single key: zero tangent", (vec![0.0], vec![3.0], 1.0)),
         (
-            vec![-2.0, 0.5, 0.7, 5.0, 6.0],
-            vec![0.0, 4.0, -3.0, 1.0, 1.0],
-            2.0,
+            "two keys: both ends use the one segment's slope",
+            (vec![0.0, 1.0], vec![0.0, 2.0], 1.0),
+        ),
+        (
+            "three evenly spaced keys, μ = 1 (Catmull-Rom)",
+            (vec![0.0, 1.0, 2.0], vec![0.0, 1.0, 0.0], 1.0),
+        ),
+        (
+            "very uneven times: divide by t_{i+1} − t_{i−1}, not by 2",
+            (vec![0.0, 0.1, 3.0, 3.2], vec![1.0, -1.0, 2.0, 0.5], 1.0),
+        ),
+        (
+            "μ = 0: every tangent is zero",
+            (vec![0.0, 0.1, 3.0, 3.2], vec![1.0, -1.0, 2.0, 0.5], 0.0),
+        ),
+        (
+            "μ = 2, negative times: the tension scales every tangent",
+            (
+                vec![-2.0, 0.5, 0.7, 5.0, 6.0],
+                vec![0.0, 4.0, -3.0, 1.0, 1.0],
+                2.0,
+            ),
         ),
     ];
     for _ in 0..100 {
         let n = 1 + rng.below(12);
         let times = random_times(rng, n);
         let values = (0..n).map(|_| rng.range(-5.0, 5.0)).collect();
-        cases.push((times, values, rng.range(0.0, 2.0)));
+        cases.push((RANDOM, (times, values, rng.range(0.0, 2.0))));
     }
-    let tangents = check(
+    let tangents = check_cases(
         LESSON,
         "cardinal_tangents",
         &cases,
@@ -156,16 +182,37 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
 
     // 2.3: every key time exactly, just before and after keys, outside on both sides, few keys.
     let keys = vec![0.0, 0.5, 1.25, 2.0, 4.0];
-    let mut lookups: Vec<(Vec<f32>, f32)> = vec![
-        (vec![1.0], 5.0),
-        (vec![0.0, 1.0], 0.5),
-        (vec![0.0, 1.0], 1.0),
-        (vec![0.0, 1.0], -1.0),
+    let mut lookups: Vec<(&str, (Vec<f32>, f32))> = vec![
+        ("a single key: 0", (vec![1.0], 5.0)),
+        ("two keys, inside: segment 0", (vec![0.0, 1.0], 0.5)),
+        (
+            "two keys, at the last key: the last segment",
+            (vec![0.0, 1.0], 1.0),
+        ),
+        (
+            "two keys, before the first: clamped to 0",
+            (vec![0.0, 1.0], -1.0),
+        ),
     ];
-    for &t in &[
-        -1.0, 0.0, 0.5, 1.25, 2.0, 4.0, 5.0, 0.49, 0.51, 1.999, 3.999, 4.0001,
-    ] {
-        lookups.push((keys.clone(), t));
+    let at_keys: [(&str, f32); 12] = [
+        ("before the first key: clamped to 0", -1.0),
+        ("exactly at the first key", 0.0),
+        (
+            "exactly at an inner key: the segment that starts there",
+            0.5,
+        ),
+        ("exactly at an inner key (1.25)", 1.25),
+        ("exactly at an inner key (2.0)", 2.0),
+        ("exactly at the last key: the last segment, N − 2", 4.0),
+        ("after the last key: clamped to N − 2", 5.0),
+        ("just before a key", 0.49),
+        ("just after a key", 0.51),
+        ("just before an inner key (1.999)", 1.999),
+        ("just before the last key", 3.999),
+        ("just after the last key", 4.0001),
+    ];
+    for (what, t) in at_keys {
+        lookups.push((what, (keys.clone(), t)));
     }
     for _ in 0..200 {
         let n = 2 + rng.below(40);
@@ -177,9 +224,9 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         } else {
             rng.range(first - 1.0, last + 1.0)
         };
-        lookups.push((times, t));
+        lookups.push((RANDOM, (times, t)));
     }
-    let segment = check(
+    let segment = check_cases(
         LESSON,
         "find_segment",
         &lookups,
@@ -191,12 +238,27 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     // 2.4: the ends, table entries, a stop in the middle (equal lengths), then random tables.
     let params_a = vec![0.0, 0.5, 1.0, 1.5, 2.0];
     let lengths_a = vec![0.0, 1.0, 1.0, 1.0, 3.0];
-    let mut tables: Vec<(Vec<f32>, Vec<f32>, f32)> = Vec::new();
-    for &s in &[-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
-        tables.push((params_a.clone(), lengths_a.clone(), s));
+    let mut tables: Vec<(&str, Channel)> = Vec::new();
+    let lookups_a: [(&str, f32); 7] = [
+        ("s < 0: the first parameter", -1.0),
+        ("s = 0: the first parameter", 0.0),
+        ("s inside the first interval", 0.5),
+        (
+            "s where the curve stops (equal lengths): the first parameter reaching s",
+            1.0,
+        ),
+        ("s inside the interval after the stop", 2.0),
+        ("s = total length: the last parameter", 3.0),
+        ("s past the total length: the last parameter", 4.0),
+    ];
+    for (what, s) in lookups_a {
+        tables.push((what, (params_a.clone(), lengths_a.clone(), s)));
     }
-    tables.push((vec![2.0], vec![0.0], 1.0));
-    tables.push((vec![0.0, 1.0], vec![0.0, 0.0], 0.0));
+    tables.push(("a one-entry table", (vec![2.0], vec![0.0], 1.0)));
+    tables.push((
+        "a curve of zero length: never divide by zero",
+        (vec![0.0, 1.0], vec![0.0, 0.0], 0.0),
+    ));
     for _ in 0..200 {
         let n = 2 + rng.below(30);
         let params = random_times(rng, n);
@@ -216,9 +278,9 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         } else {
             rng.range(-0.1 * total, 1.1 * total)
         };
-        tables.push((params, lengths, s));
+        tables.push((RANDOM, (params, lengths, s)));
     }
-    let invert = check(
+    let invert = check_cases(
         LESSON,
         "arc_length_invert",
         &tables,

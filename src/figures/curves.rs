@@ -1,1 +1,911 @@
-//! Figure logic for this lesson (see `figures`): moved here from `web/curves.rs`.
+//! Figures of lesson 02, "Keyframes and splines" (native logic; `web/curves.rs` wraps it).
+//!
+//! [`KeyframesScene`] holds the keys the curve editor edits, a path in a plane: keys
+//! `(t_i, x_i, y_i)`, a [`Track<Vec2>`]. The 3D view shows the same path in the world's XY plane
+//! (z = 0, Y up), so what the student drags in 2D is what the ball follows in 3D. Everything the
+//! page draws or plots is sampled here; JavaScript never interpolates.
+//!
+//! Time: the scene's clock `τ` runs from 0 at the first key to `duration + HOLD_SEC`; the
+//! motion holds the last key for [`HOLD_SEC`] before it loops, so every key, the last one
+//! included, is seen (a step motion would otherwise never show its last key).
+
+use super::{check_samples, compare_note, failure_note, finite, format_number, in_range, palette};
+use super::{Failure, Frame, MeshId, Runner, DEFAULT_RUNNER};
+use crate::curves::{
+    self, ArcLengthTable, Ease, Interpolation, Sample, TimeWarp, Track, MAX_LAGRANGE_KEYS,
+};
+use crate::exercises::run;
+use glam::{Mat4, Vec2, Vec3};
+
+/// The path, blue in the text.
+pub const PATH_COLOR: Vec3 = palette::BLUE;
+/// Keys, orange.
+pub const KEY_COLOR: Vec3 = palette::ORANGE;
+/// In-betweens (the ghost trail), grey.
+pub const GHOST_COLOR: Vec3 = palette::GREY;
+/// The ball, red.
+pub const BALL_COLOR: Vec3 = palette::RED;
+/// Tangent handles, teal.
+pub const TANGENT_COLOR: Vec3 = palette::TEAL;
+/// The jumps of a step motion (drawn thin, not part of the path).
+pub const JUMP_COLOR: Vec3 = palette::GREY;
+/// Seconds of motion a tangent handle stands for: the handle is `d · HANDLE_SEC` long.
+pub const HANDLE_SEC: f32 = 0.25;
+/// How long the motion rests on its last key before it loops, in seconds.
+pub const HOLD_SEC: f32 = 0.5;
+/// The most keys the editor takes (Lagrange takes at most [`MAX_LAGRANGE_KEYS`]).
+pub const MAX_KEYS: usize = 1000;
+/// About how many points the drawn path has in all (at least one per segment).
+const PATH_POINTS: usize = 400;
+const ARC_TABLE_SUBDIVISIONS: usize = 24;
+const EXERCISES_FILE: &str = "src/exercises/curves.rs";
+
+/// A scheme by the name the page uses.
+pub fn scheme_from_name(name: &str, tension: f32) -> Result<Interpolation, String> {
+    Ok(match name {
+        "step" => Interpolation::Step,
+        "linear" => Interpolation::Linear,
+        "lagrange" => Interpolation::Lagrange,
+        "hermite" => Interpolation::Hermite,
+        "cardinal" => Interpolation::Cardinal { tension },
+        "natural" => Interpolation::Natural,
+        "centripetal" => Interpolation::Centripetal,
+        other => {
+            return Err(format!(
+                "unknown scheme '{other}': use step, linear, lagrange, hermite, cardinal, natural or centripetal"
+            ))
+        }
+    })
+}
+
+/// An ease by the name the page uses.
+pub fn ease_from_name(name: &str) -> Result<Ease, String> {
+    Ok(match name {
+        "none" | "linear" => Ease::Linear,
+        "smoothstep" => Ease::Smoothstep,
+        "smootherstep" => Ease::Smootherstep,
+        "sine" => Ease::Sine,
+        "in" => Ease::In { power: 2.0 },
+        "out" => Ease::Out { power: 2.0 },
+        "inout" => Ease::InOut { power: 3.0 },
+        other => {
+            return Err(format!(
+                "unknown ease '{other}': use none, smoothstep, smootherstep, sine, in, out or inout"
+            ))
+        }
+    })
+}
+
+/// Keys of a preset, by name: `(times, positions)`.
+/// - `"default"`: five keys on a gentle wave.
+/// - `"loop"`: two keys close in space but far apart in time; cardinal tangents make a loop.
+/// - `"uneven"`: one long and one very short interval; halving instead of dividing by the time
+///   between neighbours (exercise 2.2's classic mistake) bulges here.
+/// - `"centripetal"`: a tight zig-zag where uniform Catmull-Rom overshoots and cusps while
+///   centripetal stays inside.
+pub fn preset(name: &str) -> Result<(Vec<f32>, Vec<Vec2>), String> {
+    let v = |xy: &[(f32, f32)]| xy.iter().map(|&(x, y)| Vec2::new(x, y)).collect();
+    Ok(match name {
+        "default" => (
+            vec![0.0, 0.8, 1.6, 2.2, 3.2],
+            v(&[(-2.4, 0.3), (-1.2, 1.7), (0.0, 0.5), (1.1, 1.9), (2.4, 0.6)]),
+        ),
+        "loop" => (
+            vec![0.0, 1.0, 2.0, 3.0],
+            v(&[(-2.4, 0.4), (0.2, 1.6), (0.5, 1.5), (2.4, 0.4)]),
+        ),
+        "uneven" => (
+            vec![0.0, 0.3, 2.8, 3.0],
+            v(&[(-2.4, 0.5), (-1.6, 1.8), (1.4, 1.9), (2.4, 0.4)]),
+        ),
+        "centripetal" => (
+            vec![0.0, 0.5, 1.0, 1.5, 2.0, 2.5],
+            v(&[
+                (-2.4, 0.2),
+                (-2.2, 2.2),
+                (-0.2, 0.3),
+                (0.0, 2.3),
+                (2.2, 0.4),
+                (2.4, 2.2),
+            ]),
+        ),
+        other => {
+            return Err(format!(
+                "unknown preset '{other}': use default, loop, uneven or centripetal"
+            ))
+        }
+    })
+}
+
+/// Figure 1 and its companions: keys in a plane, the curve through them, a ball moving along
+/// it, and the samples behind the lesson's plots.
+pub struct KeyframesScene {
+    track: Track<Vec2>,
+    scheme_name: String,
+    tension: f32,
+    table: ArcLengthTable,
+    arc_length: bool,
+    ease: Ease,
+    use_exercise: bool,
+    ghost_count: usize,
+    runner: Runner,
+    /// The student's path and ghosts, recomputed only after an edit (they do not depend on time).
+    student: Option<StudentCache>,
+}
+
+/// What the student's exercises drew, and how each exercise fared while drawing it.
+struct StudentCache {
+    path: Vec<Vec2>,
+    ghosts: Vec<Vec2>,
+    tangents: Vec<Vec2>,
+    failures: Failures,
+}
+
+/// The first failure of each exercise 2.1 to 2.4 (index 0 to 3).
+#[derive(Default, Clone)]
+struct Failures([Option<Failure>; 4]);
+
+impl Failures {
+    fn record(&mut self, exercise: usize, failure: Failure) {
+        self.0[exercise].get_or_insert(failure);
+    }
+}
+
+const EXERCISE_NAMES: [&str; 4] = [
+    "exercise 2.1 hermite_basis",
+    "exercise 2.2 cardinal_tangents",
+    "exercise 2.3 find_segment",
+    "exercise 2.4 arc_length_invert",
+];
+
+impl Default for KeyframesScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl KeyframesScene {
+    /// The default preset with Catmull-Rom tangents.
+    pub fn new() -> Self {
+        let (times, values) = preset("default").expect("a known preset");
+        let track = Track::new(times, values)
+            .and_then(|t| t.with_interpolation(Interpolation::CATMULL_ROM))
+            .expect("valid default keys");
+        KeyframesScene {
+            table: ArcLengthTable::new(&track, ARC_TABLE_SUBDIVISIONS),
+            track,
+            scheme_name: "cardinal".into(),
+            tension: 1.0,
+            arc_length: false,
+            ease: Ease::Linear,
+            use_exercise: false,
+            ghost_count: 24,
+            runner: DEFAULT_RUNNER,
+            student: None,
+        }
+    }
+
+    /// How the student's exercises are called (the page passes its sandbox).
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.student = None;
+    }
+
+    /// Replaces the keys (times in seconds, strictly increasing; positions in metres). Hermite
+    /// tangents are kept when the number of keys is unchanged (a key was dragged), otherwise
+    /// they restart as Catmull-Rom tangents. Errors name the rule broken; the scene is then
+    /// unchanged.
+    pub fn set_keys(&mut self, times_sec: Vec<f32>, values: Vec<Vec2>) -> Result<(), String> {
+        if times_sec.len() > MAX_KEYS {
+            return Err(format!(
+                "the editor takes at most {MAX_KEYS} keys, got {}",
+                times_sec.len()
+            ));
+        }
+        let n = times_sec.len();
+        let track = if self.track.interpolation() == Interpolation::Hermite
+            && n == self.track.key_count()
+        {
+            let tin = self.track.tangents_in().to_vec();
+            let tout = self.track.tangents_out().to_vec();
+            Track::new_hermite(times_sec, values, tin, tout).map_err(|e| e.to_string())?
+        } else {
+            let scheme = scheme_from_name(&self.scheme_name, self.tension)?;
+            // A fresh Hermite track starts from Catmull-Rom tangents.
+            let first = if scheme == Interpolation::Hermite {
+                Interpolation::CATMULL_ROM
+            } else {
+                scheme
+            };
+            Track::new(times_sec, values)
+                .and_then(|t| t.with_interpolation(first))
+                .map_err(|e| e.to_string())?
+        };
+        self.install(track);
+        Ok(())
+    }
+
+    /// Sets every key's in and out tangents (metres per second) and switches to Hermite.
+    pub fn set_tangents(&mut self, tin: Vec<Vec2>, tout: Vec<Vec2>) -> Result<(), String> {
+        let (times, values) = (self.track.times().to_vec(), self.track.values().to_vec());
+        let track = Track::new_hermite(times, values, tin, tout).map_err(|e| e.to_string())?;
+        self.scheme_name = "hermite".into();
+        self.install(track);
+        Ok(())
+    }
+
+    /// Sets key `index`'s in and out tangents (metres per second) and switches to Hermite.
+    pub fn set_key_tangent(&mut self, index: usize, tin: Vec2, tout: Vec2) -> Result<(), String> {
+        let mut track = self.track.clone();
+        track
+            .set_tangents(index, tin, tout)
+            .map_err(|e| e.to_string())?;
+        self.scheme_name = "hermite".into();
+        self.install(track);
+        Ok(())
+    }
+
+    /// "step", "linear", "lagrange", "hermite", "cardinal", "natural" or "centripetal".
+    /// Switching to Hermite keeps the current curve and makes its tangents editable.
+    pub fn set_scheme(&mut self, name: &str) -> Result<(), String> {
+        let scheme = scheme_from_name(name, self.tension)?;
+        let mut track = self.track.clone();
+        track.set_interpolation(scheme).map_err(|e| e.to_string())?;
+        self.scheme_name = name.to_string();
+        self.install(track);
+        Ok(())
+    }
+
+    /// The cardinal tension `μ ∈ [0, 2]` (1 = Catmull-Rom); used by the "cardinal" scheme.
+    pub fn set_tension(&mut self, tension: f32) -> Result<(), String> {
+        if !(0.0..=2.0).contains(&tension) {
+            return Err(format!(
+                "the tension must be between 0 and 2, but it is {tension}"
+            ));
+        }
+        self.tension = tension;
+        if self.scheme_name == "cardinal" {
+            self.set_scheme("cardinal")?;
+        }
+        Ok(())
+    }
+
+    /// On: the ball travels the same path at constant speed (arc-length parametrisation).
+    pub fn set_arc_length(&mut self, on: bool) {
+        self.arc_length = on;
+        self.student = None;
+    }
+
+    /// Timing over the whole motion, by name (see [`ease_from_name`]).
+    pub fn set_ease(&mut self, name: &str) -> Result<(), String> {
+        self.ease = ease_from_name(name)?;
+        self.student = None;
+        Ok(())
+    }
+
+    /// Number of in-betweens in the ghost trail (2 to 200).
+    pub fn set_ghost_count(&mut self, count: usize) -> Result<(), String> {
+        if !(2..=200).contains(&count) {
+            return Err(format!(
+                "the ghost count must be between 2 and 200, got {count}"
+            ));
+        }
+        self.ghost_count = count;
+        self.student = None;
+        Ok(())
+    }
+
+    /// Draw (and check) with the student's functions in `src/exercises/curves.rs`.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.student = None;
+    }
+
+    pub fn scheme(&self) -> &str {
+        &self.scheme_name
+    }
+
+    pub fn track(&self) -> &Track<Vec2> {
+        &self.track
+    }
+
+    /// Seconds the scene's clock runs before it loops: the keys' duration plus [`HOLD_SEC`].
+    pub fn loop_sec(&self) -> f32 {
+        self.track.duration_sec() + HOLD_SEC
+    }
+
+    /// True when the motion holds values (step): its "path" is the keys, not a curve.
+    pub fn is_held(&self) -> bool {
+        self.track.interpolation() == Interpolation::Step
+    }
+
+    /// The path through every key: each segment sampled on its own, from its start key to its
+    /// end key, so no key is ever skipped (about [`PATH_POINTS`] points in all). A step motion
+    /// has no path between keys: it returns the held values, the keys themselves.
+    pub fn path(&self, out: &mut Vec<Vec2>) {
+        out.clear();
+        if self.is_held() {
+            out.extend_from_slice(self.track.values());
+            return;
+        }
+        let times = self.track.times();
+        let per_segment = (PATH_POINTS / times.len().max(2)).max(1);
+        for w in times.windows(2) {
+            for k in 0..per_segment {
+                let t = w[0] + (w[1] - w[0]) * k as f32 / per_segment as f32;
+                out.push(self.track.position(t));
+            }
+        }
+        out.push(self.track.position(self.track.end_sec()));
+    }
+
+    /// The in-betweens (arc length and ease applied), evenly spaced in time.
+    pub fn ghosts(&self, out: &mut Vec<Vec2>) {
+        let n = self.ghost_count;
+        out.clear();
+        out.extend((0..n).map(|k| self.motion(self.ghost_tau(k, n)).position));
+    }
+
+    fn ghost_tau(&self, k: usize, n: usize) -> f32 {
+        self.track.duration_sec() * k as f32 / (n - 1) as f32
+    }
+
+    /// Where the ball is at `tau` seconds after the first key.
+    pub fn position(&self, tau: f32) -> Result<Vec2, String> {
+        Ok(self.motion(finite("time", tau)?).position)
+    }
+
+    /// For the plots, `samples` rows over the motion: `[t, speed keyed, speed arc length,
+    /// |acceleration| of the motion shown]`, `t` in the keys' own seconds (from the first key's
+    /// time), speeds in m/s, acceleration in m/s². "Keyed" is the track as keyed, "arc length"
+    /// the same path at constant speed, both with the ease. Both are exact derivatives (no
+    /// finite differences), so a corner of the path does not dent the constant speed.
+    pub fn sample_motion(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
+        check_samples(samples)?;
+        let duration = self.track.duration_sec();
+        Ok((0..samples)
+            .map(|k| {
+                let tau = duration * k as f32 / (samples - 1) as f32;
+                let (keyed, arc) = (self.keyed_motion(tau), self.arc_motion(tau));
+                let shown = if self.arc_length { arc } else { keyed };
+                [
+                    self.track.start_sec() + tau,
+                    keyed.velocity.length(),
+                    arc.velocity.length(),
+                    shown.acceleration.length(),
+                ]
+            })
+            .collect())
+    }
+
+    /// `τ` wrapped into the loop and clamped to the keys (the hold at the end rests on the last
+    /// key).
+    pub fn wrap(&self, tau: f32) -> f32 {
+        let period = self.loop_sec();
+        tau.rem_euclid(period).min(self.track.duration_sec())
+    }
+
+    /// Draws the 3D view at `tau` seconds after the first key (wraps around) and returns the
+    /// note for the page: empty, or what the student's exercises did.
+    pub fn draw(&mut self, frame: &mut Frame, tau: f32) -> Result<String, String> {
+        let tau = self.wrap(finite("time", tau)?);
+        let (mut path, mut ghosts) = (Vec::new(), Vec::new());
+        let (ball, note) = if self.use_exercise {
+            if self.student.is_none() {
+                self.student = Some(self.student_cache());
+            }
+            let cache = self.student.as_ref().expect("just filled");
+            path.clone_from(&cache.path);
+            ghosts.clone_from(&cache.ghosts);
+            let mut failures = cache.failures.clone();
+            let ball = self.student_motion(tau, &cache.tangents, &mut failures);
+            (ball, self.exercise_note(tau, &failures))
+        } else {
+            self.path(&mut path);
+            self.ghosts(&mut ghosts);
+            (self.motion(tau).position, String::new())
+        };
+        self.draw_scene(frame, &path, &ghosts, ball);
+        Ok(note)
+    }
+
+    fn draw_scene(&self, frame: &mut Frame, path: &[Vec2], ghosts: &[Vec2], ball: Vec2) {
+        let at = |p: Vec2| p.extend(0.0);
+        frame.grid(12, 0.5);
+        if self.is_held() {
+            // Held values: the ball sits on a key, then jumps. The jumps are not a path.
+            for w in path.windows(2) {
+                frame.line(at(w[0]), at(w[1]), JUMP_COLOR);
+            }
+        } else {
+            let points: Vec<Vec3> = path.iter().map(|&p| at(p)).collect();
+            frame.polyline(&points, PATH_COLOR);
+        }
+        for &g in ghosts {
+            frame.point(at(g), 0.045, GHOST_COLOR);
+        }
+        let hermite = self.track.interpolation() == Interpolation::Hermite;
+        for (i, &p) in self.track.values().iter().enumerate() {
+            frame.point(at(p), 0.07, KEY_COLOR);
+            if hermite {
+                let (a, b) = (self.track.tangents_in()[i], self.track.tangents_out()[i]);
+                frame.line(at(p - a * HANDLE_SEC), at(p), TANGENT_COLOR);
+                frame.line(at(p), at(p + b * HANDLE_SEC), TANGENT_COLOR);
+            }
+            // A thin stem to the ground makes the plane's depth readable.
+            frame.line(Vec3::new(p.x, 0.0, 0.0), at(p), palette::GRID);
+        }
+        let model = Mat4::from_translation(at(ball)) * Mat4::from_scale(Vec3::splat(0.16));
+        frame.mesh(MeshId::SPHERE, model, BALL_COLOR);
+    }
+
+    fn install(&mut self, track: Track<Vec2>) {
+        self.table = ArcLengthTable::new(&track, ARC_TABLE_SUBDIVISIONS);
+        self.track = track;
+        self.student = None;
+    }
+
+    fn warp(&self) -> TimeWarp {
+        TimeWarp::over(&self.track, self.ease)
+    }
+
+    /// The keyed motion with the ease, at `tau` seconds after the first key.
+    fn keyed_motion(&self, tau: f32) -> Sample<Vec2> {
+        self.track
+            .evaluate_warped(&self.warp(), self.track.start_sec() + tau)
+    }
+
+    /// The same path at constant speed (times the ease), with exact derivatives:
+    /// ```text
+    /// σ(τ) = L (w(τ) − t0) / T          distance along the path, σ′ = L w′ / T, σ″ = L w″ / T
+    /// velocity     = σ′ T̂               T̂ = p′(u) / |p′(u)| at the time u where L(u) = σ
+    /// acceleration = σ″ T̂ + σ′² κN      κN = (p″ − (p″·T̂) T̂) / |p′|²  (the curvature vector)
+    /// ```
+    fn arc_motion(&self, tau: f32) -> Sample<Vec2> {
+        let duration = self.track.duration_sec();
+        let length = self.table.total_length();
+        if duration <= 0.0 || length <= 0.0 {
+            return Sample::at_rest(self.track.values()[0]);
+        }
+        let [w, dw, ddw] = self.warp().warp(self.track.start_sec() + tau);
+        let sigma = length * ((w - self.track.start_sec()) / duration).clamp(0.0, 1.0);
+        let (dsigma, ddsigma) = (length * dw / duration, length * ddw / duration);
+        let u = self.table.time_at_length(&self.track, sigma);
+        let curve = self.track.evaluate(u);
+        let speed = curve.velocity.length();
+        let tangent = curve.velocity.normalize_or_zero();
+        let curvature = if speed > 1e-6 {
+            (curve.acceleration - tangent * curve.acceleration.dot(tangent)) / (speed * speed)
+        } else {
+            Vec2::ZERO
+        };
+        Sample {
+            position: curve.position,
+            velocity: tangent * dsigma,
+            acceleration: tangent * ddsigma + curvature * (dsigma * dsigma),
+        }
+    }
+
+    /// `(w(τ) − t0) / T ∈ [0, 1]`: the fraction of the path covered at `τ`.
+    fn arc_fraction(&self, tau: f32) -> f32 {
+        let duration = self.track.duration_sec();
+        if duration <= 0.0 {
+            return 0.0;
+        }
+        let [w, _, _] = self.warp().warp(self.track.start_sec() + tau);
+        ((w - self.track.start_sec()) / duration).clamp(0.0, 1.0)
+    }
+
+    fn motion(&self, tau: f32) -> Sample<Vec2> {
+        if self.arc_length {
+            self.arc_motion(tau)
+        } else {
+            self.keyed_motion(tau)
+        }
+    }
+
+    // ---- The same motion computed with the student's exercises (src/exercises/curves.rs). ----
+
+    fn student_cache(&self) -> StudentCache {
+        let mut failures = Failures::default();
+        let tangents = self.student_tangents(&mut failures);
+        let mut path = Vec::new();
+        self.path(&mut path); // the sample times and the step case come from the reference
+        if !self.is_held() && self.is_piecewise() {
+            let times = self.track.times();
+            let per_segment = (PATH_POINTS / times.len().max(2)).max(1);
+            path.clear();
+            for w in times.windows(2) {
+                for k in 0..per_segment {
+                    let t = w[0] + (w[1] - w[0]) * k as f32 / per_segment as f32;
+                    path.push(self.student_position(t, &tangents, &mut failures));
+                }
+            }
+            let end = self.track.end_sec();
+            path.push(self.student_position(end, &tangents, &mut failures));
+        }
+        let n = self.ghost_count;
+        let ghosts = (0..n)
+            .map(|k| self.student_motion(self.ghost_tau(k, n), &tangents, &mut failures))
+            .collect();
+        StudentCache {
+            path,
+            ghosts,
+            tangents,
+            failures,
+        }
+    }
+
+    fn is_piecewise(&self) -> bool {
+        !matches!(self.track.interpolation(), Interpolation::Lagrange)
+    }
+
+    fn is_cubic(&self) -> bool {
+        matches!(
+            self.track.interpolation(),
+            Interpolation::Hermite
+                | Interpolation::Cardinal { .. }
+                | Interpolation::Natural
+                | Interpolation::Centripetal
+        )
+    }
+
+    /// The out tangents for the student path: exercise 2.2 (one channel at a time) for the
+    /// cardinal scheme, the track's own tangents otherwise.
+    fn student_tangents(&self, failures: &mut Failures) -> Vec<Vec2> {
+        let reference = self.track.tangents_out().to_vec();
+        if self.scheme_name != "cardinal" {
+            return reference;
+        }
+        let times = self.track.times().to_vec();
+        let channel = |f: fn(&Vec2) -> f32| self.track.values().iter().map(f).collect();
+        let xs = run::cardinal_tangents(self.runner, times.clone(), channel(|p| p.x), self.tension);
+        let ys = run::cardinal_tangents(self.runner, times, channel(|p| p.y), self.tension);
+        match (xs, ys) {
+            (Ok(dx), Ok(dy)) if dx.len() == reference.len() && dy.len() == reference.len() => {
+                dx.iter().zip(&dy).map(|(&x, &y)| Vec2::new(x, y)).collect()
+            }
+            (Ok(_), Ok(_)) => {
+                failures.record(1, Failure::Call("not one tangent per key".into()));
+                reference
+            }
+            (Err(f), _) | (_, Err(f)) => {
+                failures.record(1, f);
+                reference
+            }
+        }
+    }
+
+    /// The segment containing `t`, with exercise 2.3 (kept inside the keys: a wrong index must
+    /// not crash the page).
+    fn student_segment(&self, t: f32, failures: &mut Failures) -> usize {
+        let times = self.track.times();
+        match run::find_segment(self.runner, times.to_vec(), t) {
+            Ok(i) => i.min(times.len() - 2),
+            Err(f) => {
+                failures.record(2, f);
+                curves::find_segment(times, t)
+            }
+        }
+    }
+
+    /// `p(t)` at a time inside the keys, with exercises 2.3 (segment) and 2.1 (basis).
+    fn student_position(&self, t: f32, tangents: &[Vec2], failures: &mut Failures) -> Vec2 {
+        let (times, values) = (self.track.times(), self.track.values());
+        let n = times.len();
+        if n < 2 || !self.is_piecewise() {
+            return self.track.position(t);
+        }
+        let t = t.clamp(times[0], times[n - 1]);
+        let i = self.student_segment(t, failures);
+        let h = times[i + 1] - times[i];
+        let s = (t - times[i]) / h;
+        match self.track.interpolation() {
+            Interpolation::Step => return if s >= 1.0 { values[i + 1] } else { values[i] },
+            Interpolation::Linear => return values[i].lerp(values[i + 1], s),
+            _ => {}
+        }
+        let [h00, h10, h01, h11] = run::hermite_basis(self.runner, s).unwrap_or_else(|f| {
+            failures.record(0, f);
+            curves::hermite_basis(s)
+        });
+        let d0 = tangents[i];
+        // The in tangent of the next key: its out tangent except at a broken Hermite key.
+        let d1 = if self.scheme_name == "cardinal" {
+            tangents[i + 1]
+        } else {
+            self.track.tangents_in()[i + 1]
+        };
+        values[i] * h00 + d0 * (h * h10) + values[i + 1] * h01 + d1 * (h * h11)
+    }
+
+    /// The time the ball is at after `tau` seconds: the eased time, or, at constant speed, the
+    /// time where the arc length reaches `σ` (exercise 2.4).
+    fn student_time(&self, tau: f32, failures: &mut Failures) -> f32 {
+        if !self.arc_length {
+            return self.warp().warp(self.track.start_sec() + tau)[0];
+        }
+        let sigma = self.arc_fraction(tau) * self.table.total_length();
+        let (params, lengths) = (self.table.times_sec(), self.table.lengths());
+        match run::arc_length_invert(self.runner, params.to_vec(), lengths.to_vec(), sigma) {
+            Ok(u) if u.is_finite() => u,
+            Ok(_) => self.track.start_sec(),
+            Err(f) => {
+                failures.record(3, f);
+                curves::arc_length_invert(params, lengths, sigma)
+            }
+        }
+    }
+
+    fn student_motion(&self, tau: f32, tangents: &[Vec2], failures: &mut Failures) -> Vec2 {
+        let t = self.student_time(tau, failures);
+        self.student_position(t, tangents, failures)
+    }
+
+    /// One line per exercise: not done / panicked, or matches / differs at the current inputs.
+    fn exercise_note(&self, tau: f32, failures: &Failures) -> String {
+        let mut lines = Vec::new();
+        for (k, name) in EXERCISE_NAMES.iter().enumerate() {
+            let line = match &failures.0[k] {
+                Some(f) => Some(failure_note(name, EXERCISES_FILE, f)),
+                None => self.compare(k, tau),
+            };
+            lines.extend(line);
+        }
+        lines.join("\n")
+    }
+
+    /// Compares exercise `k` (0 = 2.1 … 3 = 2.4) with the reference where the ball is now;
+    /// `None` when the current scheme does not use it.
+    fn compare(&self, k: usize, tau: f32) -> Option<String> {
+        let times = self.track.times();
+        let t = self.warp().warp(self.track.start_sec() + tau)[0];
+        let i = curves::find_segment(times, t);
+        let s = if times.len() > 1 {
+            (t - times[i]) / (times[i + 1] - times[i])
+        } else {
+            0.0
+        };
+        let result = match k {
+            0 if self.is_cubic() => run::hermite_basis(self.runner, s).map(|yours| {
+                let at = format!("s = {}", format_number(s));
+                compare_note(
+                    "hermite_basis",
+                    &at,
+                    &yours,
+                    &curves::hermite_basis(s),
+                    1e-4,
+                )
+                .1
+            }),
+            1 if self.scheme_name == "cardinal" => self.compare_tangents(),
+            2 if self.is_piecewise() && times.len() > 1 => {
+                run::find_segment(self.runner, times.to_vec(), t).map(|yours| {
+                    let at = format!("t = {} s", format_number(t));
+                    compare_note("find_segment", &at, &[yours as f32], &[i as f32], 0.0).1
+                })
+            }
+            3 if self.arc_length => {
+                let sigma = self.arc_fraction(tau) * self.table.total_length();
+                let (params, lengths) = (self.table.times_sec(), self.table.lengths());
+                let reference = curves::arc_length_invert(params, lengths, sigma);
+                let yours =
+                    run::arc_length_invert(self.runner, params.to_vec(), lengths.to_vec(), sigma);
+                yours.map(|u| {
+                    let at = format!("s = {} m", format_number(sigma));
+                    compare_note("arc_length_invert", &at, &[u], &[reference], 1e-3).1
+                })
+            }
+            _ => return None,
+        };
+        Some(result.unwrap_or_else(|f| failure_note(EXERCISE_NAMES[k], EXERCISES_FILE, &f)))
+    }
+
+    /// Exercise 2.2 against the reference, key by key; names the first key that differs.
+    fn compare_tangents(&self) -> Result<String, Failure> {
+        let mut failures = Failures::default();
+        let yours = self.student_tangents(&mut failures);
+        if let Some(f) = failures.0[1].take() {
+            return Err(f);
+        }
+        let reference = self.track.tangents_out();
+        let mu = format_number(self.tension);
+        for (i, (a, b)) in yours.iter().zip(reference).enumerate() {
+            let at = format!("key {i} (μ = {mu})");
+            let (ok, note) = compare_note("cardinal_tangents", &at, &[a.x, a.y], &[b.x, b.y], 1e-3);
+            if !ok {
+                return Ok(note);
+            }
+        }
+        let at = format!("all {} keys (μ = {mu})", reference.len());
+        Ok(compare_note("cardinal_tangents", &at, &[], &[], 0.0).1)
+    }
+}
+
+/// Figure 2: the four Hermite basis functions over `s ∈ [0, 1]` and exercise 2.1 at one `s`.
+/// Returns rows `[s, h00, h10, h01, h11]`.
+pub fn hermite_basis_samples(samples: usize) -> Result<Vec<[f32; 5]>, String> {
+    check_samples(samples)?;
+    Ok((0..samples)
+        .map(|k| {
+            let s = k as f32 / (samples - 1) as f32;
+            let [a, b, c, d] = curves::hermite_basis(s);
+            [s, a, b, c, d]
+        })
+        .collect())
+}
+
+/// The note beside the basis plot: the four weights at `s`, and with `use_exercise` whether
+/// exercise 2.1 matches them.
+pub fn hermite_basis_note(runner: Runner, s: f32, use_exercise: bool) -> Result<String, String> {
+    let s = in_range("s", s, 0.0, 1.0)?;
+    let reference = curves::hermite_basis(s);
+    let at = format!("s = {}", format_number(s));
+    if !use_exercise {
+        let [a, b, c, d] = reference.map(format_number);
+        return Ok(format!(
+            "At {at}: h00 = {a}, h10 = {b}, h01 = {c}, h11 = {d}."
+        ));
+    }
+    Ok(match run::hermite_basis(runner, s) {
+        Ok(yours) => compare_note("hermite_basis", &at, &yours, &reference, 1e-4).1,
+        Err(f) => failure_note(EXERCISE_NAMES[0], EXERCISES_FILE, &f),
+    })
+}
+
+/// Figure 3: one polynomial through all keys (Lagrange), with `n` keys and with two more, drawn
+/// as a graph `y(t)` on labelled axes in the XY plane (seen straight on).
+pub struct LagrangeScene {
+    keys: usize,
+    show_spline: bool,
+    base: Vec<Vec3>,
+    more: Vec<Vec3>,
+    spline: Vec<Vec3>,
+}
+
+/// Colours of the Lagrange figure: blue through `n` keys, red through `n + 2`, green spline.
+pub const LAGRANGE_BASE: Vec3 = palette::BLUE;
+pub const LAGRANGE_MORE: Vec3 = palette::RED;
+pub const LAGRANGE_SPLINE: Vec3 = palette::GREEN;
+/// The graph's value range, in metres: the polynomial is clipped to it.
+const Y_RANGE: (f32, f32) = (-0.8, 3.4);
+/// Width of the graph in world units.
+const GRAPH_WIDTH: f32 = 5.6;
+
+/// Key times and values of one Lagrange curve.
+type KeySet = (Vec<f32>, Vec<f32>);
+
+impl Default for LagrangeScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl LagrangeScene {
+    pub fn new() -> Self {
+        let mut scene = LagrangeScene {
+            keys: 10,
+            show_spline: true,
+            base: Vec::new(),
+            more: Vec::new(),
+            spline: Vec::new(),
+        };
+        scene.rebuild().expect("valid default keys");
+        scene
+    }
+
+    /// Number of keys of the first curve (3 to 16); the second curve has two more.
+    pub fn set_key_count(&mut self, keys: f32) -> Result<(), String> {
+        self.keys = in_range("key count", keys, 3.0, 16.0)?.round() as usize;
+        self.rebuild()
+    }
+
+    /// Also draw a Catmull-Rom spline through the larger set of keys, for comparison.
+    pub fn set_show_spline(&mut self, on: bool) {
+        self.show_spline = on;
+    }
+
+    pub fn key_count(&self) -> usize {
+        self.keys
+    }
+
+    /// The keys of the first curve and of the second.
+    pub fn key_sets(&self) -> (KeySet, KeySet) {
+        let n = self.keys;
+        let wave = |t: f32| 0.9 + 0.55 * (0.55 * t).sin() + 0.12 * (1.7 * t).cos();
+        let times: Vec<f32> = (0..n).map(|i| i as f32).collect();
+        let values: Vec<f32> = times.iter().map(|&t| wave(t)).collect();
+        let mut more: Vec<(f32, f32)> = times.iter().copied().zip(values.iter().copied()).collect();
+        // Never on an integer time, and distinct for n ≥ 3.
+        let (a, b) = ((n - 1) as f32 * 0.25 + 0.1, (n - 1) as f32 * 0.75 - 0.1);
+        more.push((a, wave(a) + 0.08));
+        more.push((b, wave(b) - 0.08));
+        more.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (more_t, more_v) = more.into_iter().unzip();
+        ((times, values), (more_t, more_v))
+    }
+
+    /// Where the graph puts `(t, y)`: time along x (scaled to a fixed width), value up.
+    pub fn place(&self, t: f32, y: f32) -> Vec3 {
+        Vec3::new((t / (self.keys - 1) as f32 - 0.5) * GRAPH_WIDTH, y, 0.0)
+    }
+
+    pub fn draw(&self, frame: &mut Frame) {
+        self.draw_axes(frame);
+        frame.polyline(&self.base, LAGRANGE_BASE);
+        frame.polyline(&self.more, LAGRANGE_MORE);
+        if self.show_spline {
+            frame.polyline(&self.spline, LAGRANGE_SPLINE);
+        }
+        let (a, b) = self.key_sets();
+        for (t, y) in b.0.iter().zip(&b.1) {
+            let extra = !a.0.contains(t);
+            let (radius, color) = if extra {
+                (0.08, LAGRANGE_MORE)
+            } else {
+                (0.06, KEY_COLOR)
+            };
+            frame.point(self.place(*t, *y), radius, color);
+        }
+    }
+
+    /// A time axis along y = 0 with a tick and a label every second, a value axis at t = 0 with
+    /// a tick every metre, each named with its quantity and unit.
+    fn draw_axes(&self, frame: &mut Frame) {
+        let axis = palette::DARK;
+        let last = (self.keys - 1) as f32;
+        let (x0, x1) = (self.place(0.0, 0.0), self.place(last, 0.0));
+        frame.arrow(x0, x1 + Vec3::X * 0.35, axis, 0.12);
+        frame.arrow(
+            self.place(0.0, Y_RANGE.0),
+            self.place(0.0, Y_RANGE.1),
+            axis,
+            0.12,
+        );
+        let tick = 0.06;
+        let step = if self.keys > 10 { 2 } else { 1 };
+        for t in (0..self.keys).step_by(step) {
+            let p = self.place(t as f32, 0.0);
+            frame.line(p - Vec3::Y * tick, p + Vec3::Y * tick, axis);
+            frame.label(p - Vec3::Y * 0.22, format!("{t}"), axis);
+        }
+        for y in [-0.5_f32, 0.0, 1.0, 2.0, 3.0] {
+            let p = self.place(0.0, y);
+            frame.line(p - Vec3::X * tick, p + Vec3::X * tick, axis);
+            frame.label(p - Vec3::X * 0.3, format!("{y}"), axis);
+        }
+        frame.label(x1 + Vec3::new(0.35, -0.3, 0.0), "time t (s)", axis);
+        frame.label(
+            self.place(0.0, Y_RANGE.1) + Vec3::new(0.1, 0.15, 0.0),
+            "value y (m)",
+            axis,
+        );
+    }
+
+    fn rebuild(&mut self) -> Result<(), String> {
+        let ((ta, ya), (tb, yb)) = self.key_sets();
+        let lagrange =
+            |t, y| Track::new(t, y).and_then(|k| k.with_interpolation(Interpolation::Lagrange));
+        let a = lagrange(ta, ya).map_err(|e| e.to_string())?;
+        let b = lagrange(tb, yb).map_err(|e| e.to_string())?;
+        let spline = b
+            .clone()
+            .with_interpolation(Interpolation::CATMULL_ROM)
+            .map_err(|e| e.to_string())?;
+        debug_assert!(b.key_count() <= MAX_LAGRANGE_KEYS);
+        const SAMPLES: usize = 400;
+        // The polynomial can shoot far off between keys: clip what we draw to the graph.
+        let clip = |y: f32| y.clamp(Y_RANGE.0, Y_RANGE.1);
+        let sample = |track: &Track<f32>| -> Vec<Vec3> {
+            let (t0, t1) = (track.start_sec(), track.end_sec());
+            (0..SAMPLES)
+                .map(|k| {
+                    let t = t0 + (t1 - t0) * k as f32 / (SAMPLES - 1) as f32;
+                    self.place(t, clip(track.position(t)))
+                })
+                .collect()
+        };
+        (self.base, self.more, self.spline) = (sample(&a), sample(&b), sample(&spline));
+        Ok(())
+    }
+}
