@@ -20,4 +20,6 @@ for (const folder of readdirSync('lessons').sort()) {
     copyFileSync(path, join('dist/source', path));
   }
 }
+// The gallery lists lessons by their `order` (fractional orders slot a lesson between two others).
+catalog.sort((a, b) => a.order - b.order);
 writeFileSync('dist/lessons/catalog.json', JSON.stringify(catalog, null, 2));

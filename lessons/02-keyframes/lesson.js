@@ -242,6 +242,14 @@ if (keysViewer) {
   // ---- Editing with the mouse. Keys and handles first (even over the strip), then the strip. ----
   let drag = null;
   const local = (e) => { const r = canvas.getBoundingClientRect(); return [e.clientX - r.left, e.clientY - r.top]; };
+  // Where the editor's handles are, in CSS pixels from the canvas's corner (for the page tests).
+  window.__inbetween.editor = {
+    keyPx: (k) => view.toPx(editor.keys[3 * k + 1], editor.keys[3 * k + 2]),
+    outHandlePx: (k) => view.toPx(...handleEnds(k).out),
+    timePx: (k) => [timeToPx(editor.keys[3 * k]), view.h - STRIP / 2],
+    keys: () => Array.from(editor.keys),
+    tangents: () => Array.from(editor.tangents),
+  };
   function hit(px, py) {
     for (let k = 0; k < keyCount(); k++) {
       const [kx, ky] = view.toPx(editor.keys[3 * k + 1], editor.keys[3 * k + 2]);
@@ -432,6 +440,7 @@ function compareFigure(id) {
       view.text(x + dx, y + 0.12, side.toUpperCase(), C[side]);
     }
     cursor(plot, scene.startSec + tau);
+    markDrawn(`#${id}`);
   });
 }
 for (const id of ['fig-step', 'fig-natural', 'fig-centripetal']) compareFigure(id);
@@ -473,6 +482,7 @@ if (lagrangeViewer) {
   gui.add(bp, 's', 0, 1, 0.01).name('s').onChange(update);
   gui.add(bp, 'useExercise').name('use my exercise').onChange(update);
   update();
+  markDrawn('#fig-basis');
 }
 
 // ---- Figure 7: spacing and timing of Figure 1's motion, with the speed plots. ----
@@ -511,6 +521,7 @@ if (lagrangeViewer) {
     view.dot(...scene.position(tau), 7, C.ball);
     cursor(speedPlot, scene.startSec + tau);
     cursor(accelPlot, scene.startSec + tau);
+    markDrawn('#fig-timing');
   });
 }
 
