@@ -449,7 +449,11 @@ export class Plot {
         x: { time: false },
         y: { range: (u, lo, hi) => paddedRange(lo, hi, minSpan) },
       },
-      axes: [{ label: xLabel }, { label: yLabel, size: 60 }],
+      // Small label fonts: a y label such as "angle about x (°)" must fit a 160 px tall plot.
+      axes: [
+        { label: xLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22 },
+        { label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56 },
+      ],
       series: [{ label: xLabel }, ...series.map((label, i) => ({ label, stroke: colors[i % colors.length], width: 2 }))],
       hooks: { draw: [cursorLine] },
     }, [[0], ...series.map(() => [0])], element);

@@ -5,7 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { launch, pixelStats, meanDifference } from './browser.mjs';
+import { launch, pixelStats, meanDifference, capture } from './browser.mjs';
 import { startServer } from '../../scripts/serve.mjs';
 
 const SHOTS = 'tests/screenshots';
@@ -32,9 +32,11 @@ async function open(context, path) {
 }
 
 async function pauseTimelines(page) {
-  for (const button of await page.locator('.timeline .play').all()) {
-    if ((await button.textContent()).includes('pause')) await button.click();
-  }
+  await page.evaluate(() => {
+    for (const button of document.querySelectorAll('.timeline .play')) {
+      if (button.textContent.includes('pause')) button.click();
+    }
+  });
 }
 
 /** Waits for a few animation frames so the figures show the latest state. */
@@ -215,9 +217,8 @@ async function clickAt(page, locator, at) {
 }
 
 /** A screenshot of the whole figure (canvas, panel, plots, notes), kept in the page under `key`. */
-async function figureShot(page, figure, key) {
-  await pixelStats(page, figure, key);
-  return key;
+function figureShot(page, figure, key) {
+  return capture(page, figure, key);
 }
 
 // E2E_BACKENDS=webgl2 E2E_LESSONS=03 narrows a run while iterating; scripts/test runs everything.
