@@ -217,6 +217,36 @@ impl Frame {
         self.labels.clear();
     }
 
+    /// A fingerprint of everything in the list (FNV-1a over the numbers and texts): two frames
+    /// that draw the same thing have the same fingerprint. The page tests use it to see that a
+    /// control changed what a figure draws without reading pixels back.
+    pub fn fingerprint(&self) -> u64 {
+        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+        let mut eat = |bits: u32| {
+            for byte in bits.to_le_bytes() {
+                h = (h ^ byte as u64).wrapping_mul(0x0100_0000_01b3);
+            }
+        };
+        for m in &self.meshes {
+            eat(m.mesh.0 as u32);
+            m.model.to_cols_array().iter().for_each(|x| eat(x.to_bits()));
+            m.color.to_array().iter().for_each(|x| eat(x.to_bits()));
+            eat(m.vertex_colors as u32);
+        }
+        for v in &self.lines {
+            v.position.iter().chain(&v.color).for_each(|x| eat(x.to_bits()));
+        }
+        for p in &self.points {
+            p.center.iter().chain(&p.color).for_each(|x| eat(x.to_bits()));
+            eat(p.radius.to_bits());
+        }
+        for l in &self.labels {
+            l.anchor.to_array().iter().for_each(|x| eat(x.to_bits()));
+            l.text.bytes().for_each(|b| eat(b as u32));
+        }
+        h
+    }
+
     /// The segments as `(a, b, colour)`, for tests and for scenes that inspect what they drew.
     pub fn segments(&self) -> impl Iterator<Item = (Vec3, Vec3, Vec3)> + '_ {
         self.lines.chunks_exact(2).map(|pair| {
@@ -394,6 +424,22 @@ mod tests {
         assert!((out[0].x_px - 100.0).abs() < 1e-3 && (out[0].y_px - 50.0).abs() < 1e-3);
         assert!(out[0].visible);
         assert!(!out[1].visible);
+    }
+
+    #[test]
+    fn fingerprint_sees_any_change() {
+        let draw = |x: f32| {
+            let mut f = Frame::default();
+            f.grid(2, 1.0);
+            f.arrow(Vec3::ZERO, Vec3::new(x, 1.0, 0.0), palette::ORANGE, 0.2);
+            f.label(Vec3::ONE, "p", palette::PINK);
+            f
+        };
+        assert_eq!(draw(1.0).fingerprint(), draw(1.0).fingerprint());
+        assert_ne!(draw(1.0).fingerprint(), draw(1.0001).fingerprint());
+        let mut relabelled = draw(1.0);
+        relabelled.labels[0].text = "q".into();
+        assert_ne!(relabelled.fingerprint(), draw(1.0).fingerprint());
     }
 
     #[test]

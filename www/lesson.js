@@ -310,7 +310,7 @@ async function createFigure(selector) {
   };
   new ResizeObserver(resize).observe(canvas);
   resize();
-  state.figures.push({ selector, backend: viewer.backend, placeLabels: labelLayer(canvas, viewer) });
+  state.figures.push({ selector, backend: viewer.backend, viewer, placeLabels: labelLayer(canvas, viewer) });
   return viewer;
 }
 

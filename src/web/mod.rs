@@ -50,11 +50,6 @@ pub(crate) fn finite(name: &str, value: f32) -> Result<f32, JsError> {
     crate::figures::finite(name, value).map_err(js)
 }
 
-/// An error for JavaScript unless a plot asks for between 2 and 10 000 samples.
-pub(crate) fn check_samples(samples: usize) -> Result<(), JsError> {
-    crate::figures::check_samples(samples).map_err(js)
-}
-
 /// An error for JavaScript when `value` lies outside `[lo, hi]` (or is not finite).
 pub(crate) fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, JsError> {
     crate::figures::in_range(name, value, lo, hi).map_err(js)

@@ -16,6 +16,8 @@ pub struct Viewer {
     css_size: (f32, f32),
     /// The last frame's labels, projected, for the page's HTML overlay.
     labels: Vec<crate::draw::ScreenLabel>,
+    /// [`crate::draw::Frame::fingerprint`] of the last presented frame.
+    last_fingerprint: u64,
 }
 
 #[wasm_bindgen]
@@ -34,6 +36,7 @@ impl Viewer {
             camera: OrbitCamera::default(),
             css_size: (1.0, 1.0),
             labels: Vec::new(),
+            last_fingerprint: 0,
         })
     }
 
@@ -122,6 +125,7 @@ impl Viewer {
         let (w, h) = self.css_size;
         let view_proj = self.camera.projection(w / h) * self.camera.view();
         self.labels = crate::draw::project_labels(&self.renderer.frame.labels, view_proj, w, h);
+        self.last_fingerprint = self.renderer.frame.fingerprint();
         self.renderer
             .render(&self.gpu, &self.camera)
             .map_err(|e| JsError::new(&e))
@@ -133,6 +137,13 @@ impl Viewer {
     /// The last presented frame's labels as JSON: `[{"x":…,"y":…,"visible":…,"text":…,"color":…}]`,
     /// x and y in CSS pixels from the canvas's top-left corner. The shell (`www/lesson.js`) places
     /// one HTML element per label over the canvas.
+    /// What the last presented frame drew, as a hex fingerprint (changes whenever anything drawn
+    /// changes; the camera is not part of it). For the page tests.
+    #[wasm_bindgen(js_name = frameFingerprint)]
+    pub fn frame_fingerprint(&self) -> String {
+        format!("{:016x}", self.last_fingerprint)
+    }
+
     #[wasm_bindgen(js_name = labelsJson)]
     pub fn labels_json(&self) -> String {
         let mut out = String::from("[");

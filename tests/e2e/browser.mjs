@@ -57,20 +57,6 @@ export async function pixelStats(page, locator, key) {
   }, [png.toString('base64'), key]);
 }
 
-/** Keeps the pixels of `locator`'s screenshot in the page under `key` (for `meanDifference`). */
-export async function capture(page, locator, key) {
-  const jpeg = await locator.screenshot({ type: 'jpeg', quality: 80 });
-  await page.evaluate(async ([b64, key]) => {
-    const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
-    const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/jpeg' }));
-    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-    const ctx = canvas.getContext('2d');
-    ctx.drawImage(bitmap, 0, 0);
-    (window.__shots ??= {})[key] = ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
-  }, [jpeg.toString('base64'), key]);
-  return key;
-}
-
 /** Mean absolute difference per channel (0..255) between two screenshots kept by `pixelStats`. */
 export function meanDifference(page, keyA, keyB) {
   return page.evaluate(([a, b]) => {
