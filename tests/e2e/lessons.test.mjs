@@ -72,16 +72,22 @@ async function moveEveryControl(page, figure, where, limit = Infinity) {
   let moved = 0;
   // `act` must change what the figure shows; with `again` (a toggle), a change in either
   // direction counts (turning a walk off while paused may keep the pose; turning it on moves it).
-  const check = async (what, act, again = false) => {
+  // A dropdown passes `tries` > 1: the next options are tried in turn until one changes the
+  // figure (a preset equal to the current keys changes nothing, rightly).
+  const check = async (what, act, again = false, tries = 1) => {
     await pauseTimelines(page);
     await frames(page, 2);
     const before = await figureSignature(figure);
-    await act();
-    await frames(page, 3);
-    const after = await figureSignature(figure);
-    let changed = after !== before;
+    let changed = false;
+    let after = before;
+    for (let k = 0; k < tries && !changed; k++) {
+      await act(k);
+      await frames(page, 3);
+      after = await figureSignature(figure);
+      changed = after !== before;
+    }
     if (again && !changed) {
-      await act();
+      await act(0);
       await frames(page, 3);
       changed = (await figureSignature(figure)) !== after;
     }
@@ -116,7 +122,7 @@ async function moveControls(page, figure, check) {
       const select = c.locator('select');
       const options = await select.locator('option').allTextContents();
       const current = await select.evaluate((s) => s.selectedIndex);
-      await check(`dropdown "${name}"`, () => select.selectOption({ index: (current + 1) % options.length }));
+      await check(`dropdown "${name}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
       continue;
     }
     if (classes.includes('number')) {
@@ -151,7 +157,7 @@ async function moveControls(page, figure, check) {
         await play.click();
       });
     } else {
-      await check(`dropdown "${label}"`, () => select.selectOption({ index: (current + 1) % options.length }));
+      await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
     }
   }
   for (const scrub of await figure.locator('.timeline .scrub').all()) {
