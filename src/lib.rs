@@ -35,6 +35,7 @@ pub mod exercises;
 pub mod figures;
 pub mod fixtures;
 pub mod mesh;
+pub mod raster;
 pub mod rigid;
 pub mod rotation;
 pub mod transform;
