@@ -14,6 +14,7 @@
 
 pub mod curves;
 pub mod grade;
+pub mod raster;
 pub mod rotations;
 pub mod run;
 pub mod transforms;
