@@ -34,16 +34,16 @@ pub fn perspective_matrix(fov_y_rad: f32, aspect: f32, near: f32, far: f32) -> A
 /// **Exercise 0.2: averaged vertex normals of an indexed mesh.**
 ///
 /// `positions` holds each vertex once; `indices` holds three indices per triangle, counter-clockwise
-/// seen from outside. Return one unit normal per position: the sum of the normals of the triangles
-/// that use the vertex, normalised at the end.
+/// seen from outside. Return one unit normal per position: the average of the unit normals of
+/// the triangles that use the vertex, each triangle counting once whatever its size.
 /// ```text
-/// n_face = (b − a) × (c − a)           un-normalised: its length is twice the area, so big
-///                                       triangles weigh more
-/// n_v    = normalize( Σ n_face over the triangles that use v )
+/// n̂_face = normalize((b − a) × (c − a))            (a, b, c: the triangle's corners, in order)
+/// n_v    = normalize( Σ n̂_face over the triangles that use v )
 /// ```
 /// Hints: start from `vec![Vec3::ZERO; positions.len()]`, loop over `indices.chunks_exact(3)`,
-/// add each triangle's cross product to its three corners, then normalise every sum. A vertex
-/// that no triangle uses has no normal: give it `Vec3::ZERO` (`normalize_or_zero` does that).
+/// add each triangle's unit normal to its three corners, then normalise every sum. A vertex that
+/// no triangle uses has no normal, and a zero-area triangle has none either: use
+/// `normalize_or_zero`, which gives `Vec3::ZERO` instead of NaN.
 /// The indices are valid (the figures and the grader check them first).
 pub fn vertex_normals(positions: &[Vec3], indices: &[u32]) -> Answer<Vec<Vec3>> {
     solution!({
@@ -157,8 +157,9 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         |a, b| mat4_close(a, b, 1e-4),
     );
 
-    // 0.2: the tetrahedron, a flat strip, a sphere, triangles of very different areas (the
-    // weighting), a vertex no triangle uses, random soups of triangles.
+    // 0.2: the tetrahedron, a flat strip, a sphere, triangles of very different areas (unit face
+    // normals, not area-weighted), a degenerate triangle, a vertex no triangle uses, random
+    // soups of triangles.
     let (tp, ti) = tetrahedron();
     let (sp, si) = uv_sphere_indexed(8, 5);
     let strip: Vec<Vec3> = (0..6)
@@ -186,6 +187,13 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         (
             "a big and a tiny triangle: the sum weighs by area",
             (fan, fan_idx),
+        ),
+        (
+            "a zero-area triangle adds nothing (normalize_or_zero)",
+            (
+                vec![Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::X * 2.0],
+                vec![0, 1, 2, 0, 1, 3],
+            ),
         ),
         (
             "a vertex that no triangle uses: Vec3::ZERO",

@@ -2,12 +2,14 @@
 //!
 //! A face's normal is the cross product of two of its edges. A smooth surface approximated by
 //! triangles wants one normal per *vertex*: the average of the normals of the triangles around
-//! it. Summing the un-normalised cross products weights each triangle by its area (big triangles
-//! speak louder), then one normalisation at the end:
+//! it. As in the course, each neighbouring triangle counts once, whatever its size: sum their
+//! *unit* normals, then normalise the sum.
 //! ```text
-//! n_face = (b − a) × (c − a)            (length = twice the triangle's area)
-//! n_v    = normalize( Σ n_face  over the triangles that use v )
+//! n̂_face = normalize((b − a) × (c − a))
+//! n_v    = normalize( Σ n̂_face  over the triangles that use v )
 //! ```
+//! (Summing the un-normalised cross products instead would weight each triangle by its area, a
+//! common variant.)
 //! Under a model matrix `M` a tangent `t` becomes `M t`; a normal must stay perpendicular to every
 //! tangent, `n'·(M t) = 0`, which holds for `n' = (M⁻¹)ᵀ n`: the **normal matrix**. For rotations
 //! and uniform scales it is `M` itself (up to length); under a non-uniform scale it is not.
@@ -22,8 +24,10 @@ pub fn face_normal(a: Vec3, b: Vec3, c: Vec3) -> Vec3 {
     (b - a).cross(c - a)
 }
 
-/// Area-weighted averaged vertex normals of an indexed mesh, written into `out` (one per
-/// position). A vertex that no triangle uses, or whose triangles cancel out, gets `Vec3::ZERO`.
+/// Averaged vertex normals of an indexed mesh (the sum of the unit normals of the triangles
+/// around each vertex, normalised), written into `out`, one per position. A vertex that no
+/// triangle uses, or whose triangles cancel out, gets `Vec3::ZERO`; so does a degenerate
+/// (zero-area) triangle's contribution.
 pub fn vertex_normals(
     positions: &[Vec3],
     indices: &[u32],
@@ -39,7 +43,7 @@ pub fn vertex_normals(
     out.fill(Vec3::ZERO);
     for tri in indices.chunks_exact(3) {
         let [a, b, c] = [tri[0], tri[1], tri[2]].map(|i| i as usize);
-        let n = face_normal(positions[a], positions[b], positions[c]);
+        let n = face_normal(positions[a], positions[b], positions[c]).normalize_or_zero();
         out[a] += n;
         out[b] += n;
         out[c] += n;

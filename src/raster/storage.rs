@@ -61,7 +61,7 @@ pub fn tetrahedron() -> (Vec<Vec3>, Vec<u32>) {
 
 /// Checks that `indices` are whole triangles that point into `vertex_count` positions.
 pub fn check_indices(indices: &[u32], vertex_count: usize) -> Result<(), RasterError> {
-    if indices.len() % 3 != 0 {
+    if !indices.len().is_multiple_of(3) {
         return Err(RasterError::NotTriangles(indices.len()));
     }
     match indices.iter().find(|&&i| i as usize >= vertex_count) {
@@ -84,7 +84,7 @@ pub fn to_soup(positions: &[Vec3], indices: &[u32]) -> Result<Vec<Vec3>, RasterE
 ///
 /// Quadratic in the number of distinct positions; meant for the lesson's small meshes.
 pub fn weld(soup: &[Vec3]) -> Result<(Vec<Vec3>, Vec<u32>), RasterError> {
-    if soup.len() % 3 != 0 {
+    if !soup.len().is_multiple_of(3) {
         return Err(RasterError::NotTriangles(soup.len()));
     }
     let mut positions: Vec<Vec3> = Vec::new();

@@ -6,6 +6,7 @@ mod bench;
 mod bench_curves;
 mod bench_rotation;
 mod curves;
+mod raster;
 mod rigid;
 mod rotations;
 pub mod sandbox;
@@ -13,6 +14,7 @@ mod transforms;
 mod viewer;
 
 pub use curves::{KeyframesScene, LagrangeScene};
+pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
 pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
