@@ -57,7 +57,7 @@ if (meshViewer) {
 // Figure 2: the frustum.
 const frustumViewer = await lesson.figure('#fig-frustum');
 if (frustumViewer) {
-  frustumViewer.setCamera(2.0, 1.2, -4.5, 13, 1.1, 0.35);
+  frustumViewer.setCamera(4.5, 1.2, -4, 17, 0.45, 0.45);
   const scene = new FrustumScene();
   const timeline = new Timeline(document.getElementById('frustum-timeline'), { duration: 6 });
   const p = { fov: 50, near: 1, far: 8, x: 0.6, y: 0.3, useExercise: false };
@@ -105,7 +105,7 @@ if (frustumViewer) {
 // Figure 3: depth precision.
 const depthViewer = await lesson.figure('#fig-depth');
 if (depthViewer) {
-  depthViewer.setCamera(0, 0.8, -9, 14, 1.25, 0.25);
+  depthViewer.setCamera(0, 3, -20, 30, 1.35, 0.1);
   const scene = new DepthPrecisionScene();
   const p = { near: 0.1, far: 1000, gap: 0.01, bits: 16 };
   const gui = new GUI({ container: document.querySelector('#fig-depth .panel'), title: 'Depth buffer' });
@@ -139,7 +139,7 @@ const normalsViewer = await lesson.figure('#fig-normals');
 if (normalsViewer) {
   normalsViewer.setCamera(0, 1.3, 0, 5.5, 0.3, 0.3);
   const scene = new NormalsScene();
-  const p = { scaleX: 2, flat: false, showWrong: true, useExercise: false };
+  const p = { scaleX: 3, flat: false, showWrong: true, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-normals .panel'), title: 'Normals' });
   gui.add(p, 'scaleX', 0.2, 4, 0.05).name('scale along x');
   gui.add(p, 'flat').name('flat shading');
@@ -167,7 +167,7 @@ if (normalsViewer) {
 // Figure 5: shading.
 const shadingViewer = await lesson.figure('#fig-shading');
 if (shadingViewer) {
-  shadingViewer.setCamera(0, 1.4, 0, 6.5, 0.5, 0.3);
+  shadingViewer.setCamera(0, 1.5, 0, 7.5, 0.85, 0.35);
   const scene = new ShadingScene();
   const p = {
     lightAzimuth: 40, lightElevation: 35, ka: 0.15, kd: 0.7, ks: 0.5, shininess: 32,

@@ -181,7 +181,7 @@ pub mod frustum_colors {
 /// Where the camera of Figure 2 stands in the world: view space moved up by 1.2 m.
 const EYE: Vec3 = Vec3::new(0.0, 1.2, 0.0);
 /// Where the NDC box of Figure 2 stands (its centre of the near face).
-const NDC_ORIGIN: Vec3 = Vec3::new(4.5, 1.2, -1.0);
+const NDC_ORIGIN: Vec3 = Vec3::new(9.0, 1.2, -2.0);
 
 /// Figure 2: a camera's frustum (field of view, z_near, z_far), a point that travels along the
 /// view direction through it, and the same point in normalised device coordinates (the box on
@@ -306,12 +306,12 @@ impl Frustum {
         Ok(out)
     }
 
-    /// Depth against distance: `(d, depth wgpu, depth OpenGL)` over the point's whole path.
+    /// Depth against distance: `(d, depth wgpu, depth OpenGL)` from z_near to z_far.
     pub fn sample_depth(&self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
         check_samples(samples)?;
         Ok((0..samples)
             .map(|k| {
-                let d = self.distance_at(k as f32 / (samples - 1) as f32);
+                let d = self.near + (self.far - self.near) * k as f32 / (samples - 1) as f32;
                 [
                     d,
                     raster::ndc_depth_wgpu(d, self.near, self.far),
@@ -342,12 +342,6 @@ impl Frustum {
         frame.label(EYE + Vec3::new(0.0, 0.25, 0.0), "eye", palette::DARK);
         frame.label(near[2], "z_near", NEAR);
         frame.label(far[2], "z_far", FAR);
-        frame.arrow(EYE, EYE - Vec3::Z * 0.8, palette::Z_AXIS, 0.12);
-        frame.label(
-            EYE - Vec3::Z * 0.8 + Vec3::new(0.0, -0.2, 0.0),
-            "−z",
-            palette::Z_AXIS,
-        );
         // The point, the ray from the eye, and where the ray crosses the near plane (the image).
         let p = self.point_at(s);
         let m = self.used_matrix();
@@ -357,7 +351,7 @@ impl Frustum {
         frame.point(EYE + p, 0.1, color);
         frame.label(EYE + p + Vec3::new(0.0, 0.25, 0.0), "p", color);
         let on_near = p * (self.near / -p.z);
-        frame.point(EYE + on_near, 0.05, ON_NEAR);
+        frame.point(EYE + on_near, 0.08, ON_NEAR);
         // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z.
         let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
         let box_corners: Vec<Vec3> = [0.0, 1.0]
@@ -524,7 +518,10 @@ impl DepthPrecision {
     /// 4 times the fighting distance, whichever is nearer (so the crossing stays readable).
     pub fn sample_step(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
         check_samples(samples)?;
-        let end = self.far.min(4.0 * self.fighting_from()).max(2.0 * self.near);
+        let end = self
+            .far
+            .min(4.0 * self.fighting_from())
+            .max(2.0 * self.near);
         Ok((0..samples)
             .map(|k| {
                 let d = self.near + (end - self.near) * k as f32 / (samples - 1) as f32;
@@ -607,11 +604,15 @@ impl DepthPrecision {
         Ok(out)
     }
 
-    /// A side view: the camera, the two planes out to 60 m (or z_far), and every 2 m a bar as tall
-    /// as one depth step there (capped at 3 m), orange where it exceeds the planes' separation
-    /// along the line of sight. Returns the note.
+    /// How much taller than life the bars of the 3D view are drawn.
+    pub const BAR_SCALE: f32 = 40.0;
+
+    /// A side view: the camera, the two planes out to 40 m (or z_far), and every 2 m a bar as tall
+    /// as one depth step there ([`Self::BAR_SCALE`] times taller than life, capped at 6 m), orange
+    /// where it exceeds the planes' separation along the line of sight, whose height (same scale)
+    /// the grey line follows. Returns the note.
     pub fn draw(&self, frame: &mut Frame) -> String {
-        let reach = self.far.min(60.0);
+        let reach = self.far.min(40.0);
         let eye = Vec3::new(0.0, EYE_HEIGHT, 0.0);
         let slab = |y: f32, color: Vec3, frame: &mut Frame| {
             let model = Mat4::from_translation(Vec3::new(0.0, y - 0.005, -reach / 2.0))
@@ -634,14 +635,31 @@ impl DepthPrecision {
             } else {
                 palette::GREEN
             };
-            let top = Vec3::new(1.1, step.min(3.0), -d);
+            let top = Vec3::new(1.1, (step * Self::BAR_SCALE).min(6.0), -d);
             frame.line(Vec3::new(1.1, 0.0, -d), top, color);
-            frame.point(top, 0.06, color);
+            frame.point(top, 0.25, color);
         }
+        let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
+        frame.line(sep(0.0), sep(reach), palette::GREY);
+        frame.label(
+            sep(0.7 * reach) + Vec3::Y * 0.5,
+            "separation d·gap/h (×40)",
+            palette::GREY,
+        );
+        frame.label(
+            Vec3::new(1.1, 2.0, -6.0),
+            "one depth step (×40)",
+            palette::GREEN,
+        );
         let from = self.fighting_from();
         if from < reach {
+            frame.line(
+                Vec3::new(1.1, 0.0, -from),
+                Vec3::new(1.1, 6.2, -from),
+                palette::ORANGE,
+            );
             frame.label(
-                Vec3::new(1.1, 0.6, -from),
+                Vec3::new(1.1, 6.5, -from),
                 "fighting from here",
                 palette::ORANGE,
             );
@@ -708,7 +726,7 @@ impl Normals {
         raster::vertex_normals(&positions, &indices, &mut smooth).expect("a valid sphere");
         Normals {
             flat: false,
-            scale_x: 2.0,
+            scale_x: 3.0,
             show_wrong: true,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
@@ -897,10 +915,10 @@ impl Normals {
             }
         }
         let mut note = format!(
-            "{} shading: {} normals. Stretched {}× along x. Transformed by M itself, a normal leans up to {}° away \
+            "{} shading: {}. Stretched {}× along x. Transformed by M itself, a normal leans up to {}° away \
              from the true one (M⁻¹)ᵀ n.",
             if self.flat { "Flat" } else { "Smooth" },
-            if self.flat { "one per face" } else { "one averaged normal per vertex" },
+            if self.flat { "one normal per face" } else { "one averaged normal per vertex" },
             format_number(self.scale_x),
             format_number(self.worst_wrong_angle_deg()),
         );
@@ -1070,7 +1088,7 @@ impl Shading {
             self.material.color,
         );
         let p = SPHERE_CENTRE + n;
-        let len = 0.9;
+        let len = 1.3;
         frame.arrow(p, p + n * len, N, 0.1);
         frame.label(p + n * len, "n", N);
         frame.arrow(p, p + l * len, L, 0.1);
