@@ -32,6 +32,7 @@ pub mod camera;
 pub mod curves;
 pub mod draw;
 pub mod exercises;
+pub mod expressive;
 pub mod figures;
 pub mod fixtures;
 pub mod mesh;
