@@ -57,6 +57,7 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::raster::grade(&mut rng));
     reports.extend(super::transforms::grade(&mut rng));
     reports.extend(super::curves::grade(&mut rng));
+    reports.extend(super::expressive::grade(&mut rng));
     reports.extend(super::rotations::grade(&mut rng));
     reports
 }

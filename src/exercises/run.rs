@@ -219,7 +219,7 @@ macro_rules! exercises {
     };
 }
 
-use super::{curves as c, raster as ra, rotations as r, transforms as tr};
+use super::{curves as c, expressive as ex, raster as ra, rotations as r, transforms as tr};
 
 exercises! {
     /// Exercise 1.1, [`tr::local_matrix`].
@@ -266,6 +266,11 @@ exercises! {
             Err(e) => return Err(Failure::Call(e.to_string())),
         }
     };
+    /// Exercise 2b.1, [`ex::squash_stretch_scale`].
+    fn squash_stretch_scale(s: f32) -> Vec3 = ex::squash_stretch_scale(s);
+    /// Exercise 2b.2, [`ex::spring_step`]: returns `(x', v')`.
+    fn spring_step(x: Vec3, v: Vec3, target: Vec3, k: f32, c: f32, dt: f32) -> (Vec3, Vec3) =
+        ex::spring_step(x, v, target, k, c, dt);
     /// Exercise 0.3, [`ra::blinn_phong`].
     fn blinn_phong(n: Vec3, l: Vec3, v: Vec3, color: Vec3, weights: [f32; 3], shininess: f32) -> Vec3 =
         ra::blinn_phong(n, l, v, color, weights, shininess);
@@ -413,7 +418,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 14);
+        assert_eq!(NAMES.len(), 16);
     }
 
     #[test]
