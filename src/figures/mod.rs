@@ -8,6 +8,7 @@
 //! inputs (helpers below).
 
 pub mod curves;
+pub mod expressive;
 pub mod raster;
 pub mod rigid;
 pub mod rotations;

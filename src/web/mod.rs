@@ -6,6 +6,7 @@ mod bench;
 mod bench_curves;
 mod bench_rotation;
 mod curves;
+mod expressive;
 mod raster;
 mod rigid;
 mod rotations;
@@ -14,6 +15,7 @@ mod transforms;
 mod viewer;
 
 pub use curves::{KeyframesScene, LagrangeScene};
+pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
 pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
