@@ -258,3 +258,28 @@ fn sphere_images_are_brightest_towards_the_light() {
     assert!(light_from_image(0.99, 0.5).x > 0.9);
     assert!((light_from_image(1.0, 0.0).length() - 1.0).abs() < 1e-5);
 }
+
+/// three.js's perspective matrices (tests/data/raster_three.txt, from
+/// scripts/reference/raster_three.mjs) in both depth conventions.
+#[test]
+fn perspective_matches_three_js() {
+    let data = include_str!("data/raster_three.txt");
+    let mut checked = 0;
+    for line in data
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.is_empty())
+    {
+        let parts: Vec<&str> = line.split_whitespace().collect();
+        let v: Vec<f32> = parts[2..].iter().map(|x| x.parse().unwrap()).collect();
+        let (fov, aspect, near, far) = (v[0].to_radians(), v[1], v[2], v[3]);
+        let three = Mat4::from_cols_array(&v[4..20].try_into().unwrap()).transpose();
+        let ours = match parts[1] {
+            "gl" => perspective_gl(fov, aspect, near, far).unwrap(),
+            "wgpu" => perspective_wgpu(fov, aspect, near, far).unwrap(),
+            other => panic!("unknown convention {other}"),
+        };
+        assert!(mat_close(ours, three, 1e-5), "{line}\nours: {ours}");
+        checked += 1;
+    }
+    assert_eq!(checked, 14);
+}
