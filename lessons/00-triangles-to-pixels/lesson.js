@@ -167,11 +167,11 @@ if (normalsViewer) {
 // Figure 5: shading.
 const shadingViewer = await lesson.figure('#fig-shading');
 if (shadingViewer) {
-  shadingViewer.setCamera(0, 1.5, 0, 7.5, 0.85, 0.35);
+  shadingViewer.setCamera(0, 1.5, 0, 7.5, 1.45, 0.25);
   const scene = new ShadingScene();
   const p = {
     lightAzimuth: 40, lightElevation: 35, ka: 0.15, kd: 0.7, ks: 0.5, shininess: 32,
-    model: 'blinn-phong', fragAzimuth: 15, fragElevation: 20, useExercise: false,
+    model: 'blinn-phong', fragAzimuth: 0, fragElevation: -15, useExercise: false,
   };
   const gui = new GUI({ container: document.querySelector('#fig-shading .panel'), title: 'Shading' });
   const light = gui.addFolder('light');

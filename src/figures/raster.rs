@@ -976,7 +976,7 @@ impl Shading {
             light: direction(40.0, 35.0),
             material: Material::default(),
             model: ShadingModel::BlinnPhong,
-            fragment: direction(15.0, 20.0),
+            fragment: direction(0.0, -15.0),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
         }
