@@ -7,8 +7,10 @@
 //!
 //! | lesson | core | scene | binding | exercises |
 //! |---|---|---|---|---|
+//! | `00-triangles-to-pixels`: from triangles to pixels | [`raster`] | [`figures::raster`] | `web::raster` | [`exercises::raster`] (0.x) |
 //! | `01-transforms`: transforms and hierarchies | [`transform`], [`mesh`], [`camera`] | [`figures::transforms`] | `web::transforms` | [`exercises::transforms`] |
 //! | `02-keyframes`: keyframes and splines | [`curves`] | [`figures::curves`] | `web::curves` (bench: `web::bench_curves`) | [`exercises::curves`] |
+//! | `02b-expressive-animation`: expressive animation | [`expressive`], [`curves`] (easing) | [`figures::expressive`] | `web::expressive` | [`exercises::expressive`] (2b.x) |
 //! | `03-rotations`: rotations | [`rotation`] | [`figures::rotations`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
 //! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
 //!
@@ -32,9 +34,11 @@ pub mod camera;
 pub mod curves;
 pub mod draw;
 pub mod exercises;
+pub mod expressive;
 pub mod figures;
 pub mod fixtures;
 pub mod mesh;
+pub mod raster;
 pub mod rigid;
 pub mod rotation;
 pub mod transform;

@@ -54,8 +54,10 @@ impl Report {
 pub fn grade_all() -> Vec<Report> {
     let mut rng = Rng::new(0x1b_e7_7e_e2);
     let mut reports = Vec::new();
+    reports.extend(super::raster::grade(&mut rng));
     reports.extend(super::transforms::grade(&mut rng));
     reports.extend(super::curves::grade(&mut rng));
+    reports.extend(super::expressive::grade(&mut rng));
     reports.extend(super::rotations::grade(&mut rng));
     reports
 }

@@ -13,7 +13,9 @@
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
 pub mod curves;
+pub mod expressive;
 pub mod grade;
+pub mod raster;
 pub mod rotations;
 pub mod run;
 pub mod transforms;

@@ -219,7 +219,7 @@ macro_rules! exercises {
     };
 }
 
-use super::{curves as c, rotations as r, transforms as tr};
+use super::{curves as c, expressive as ex, raster as ra, rotations as r, transforms as tr};
 
 exercises! {
     /// Exercise 1.1, [`tr::local_matrix`].
@@ -255,6 +255,25 @@ exercises! {
         r::dual_quat_apply(rotation, translation, point);
     /// Exercise 4.2, [`r::polar_step`].
     fn polar_step(m: Mat3) -> Mat3 = r::polar_step(m);
+    /// Exercise 0.1, [`ra::perspective_matrix`].
+    fn perspective_matrix(fov_y_rad: f32, aspect: f32, near: f32, far: f32) -> Mat4 =
+        ra::perspective_matrix(fov_y_rad, aspect, near, far);
+    /// Exercise 0.2, [`ra::vertex_normals`]: indices as `f32`s (exact below 2²⁴), checked first.
+    fn vertex_normals(positions: Vec<Vec3>, indices: Vec<f32>) -> Vec<Vec3> = {
+        let indices: Vec<u32> = indices.iter().map(|&i| i as u32).collect();
+        match crate::raster::storage::check_indices(&indices, positions.len()) {
+            Ok(()) => ra::vertex_normals(&positions, &indices),
+            Err(e) => return Err(Failure::Call(e.to_string())),
+        }
+    };
+    /// Exercise 2b.1, [`ex::squash_stretch_scale`].
+    fn squash_stretch_scale(s: f32) -> Vec3 = ex::squash_stretch_scale(s);
+    /// Exercise 2b.2, [`ex::spring_step`]: returns `(x', v')`.
+    fn spring_step(x: Vec3, v: Vec3, target: Vec3, k: f32, c: f32, dt: f32) -> (Vec3, Vec3) =
+        ex::spring_step(x, v, target, k, c, dt);
+    /// Exercise 0.3, [`ra::blinn_phong`].
+    fn blinn_phong(n: Vec3, l: Vec3, v: Vec3, color: Vec3, weights: [f32; 3], shininess: f32) -> Vec3 =
+        ra::blinn_phong(n, l, v, color, weights, shininess);
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature
@@ -399,7 +418,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 11);
+        assert_eq!(NAMES.len(), 16);
     }
 
     #[test]

@@ -8,6 +8,8 @@
 //! inputs (helpers below).
 
 pub mod curves;
+pub mod expressive;
+pub mod raster;
 pub mod rigid;
 pub mod rotations;
 pub mod transforms;

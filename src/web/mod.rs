@@ -6,6 +6,8 @@ mod bench;
 mod bench_curves;
 mod bench_rotation;
 mod curves;
+mod expressive;
+mod raster;
 mod rigid;
 mod rotations;
 pub mod sandbox;
@@ -13,6 +15,8 @@ mod transforms;
 mod viewer;
 
 pub use curves::{KeyframesScene, LagrangeScene};
+pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
+pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
 pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};

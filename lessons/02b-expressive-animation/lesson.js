@@ -1,0 +1,131 @@
+// Lesson 02b: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/expressive/ and src/figures/expressive.rs).
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns } from '../../www/lesson.js';
+import { SpacingScene, JumpScene, FollowThroughScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
+
+/** Runs `apply`; a value the core rejects is put back and the reason passed to `onReject`. */
+function guarded(gui, p, apply, onReject) {
+  let accepted = { ...p };
+  return () => {
+    try {
+      apply();
+      accepted = { ...p };
+      onReject('');
+    } catch (e) {
+      onReject(`Not changed: ${e.message ?? e}`);
+      Object.assign(p, accepted);
+      gui.controllersRecursive().forEach((c) => c.updateDisplay());
+      apply();
+    }
+  };
+}
+
+// Figure 1: timing and spacing.
+const spacingViewer = await lesson.figure('#fig-spacing');
+if (spacingViewer) {
+  spacingViewer.setCamera(0, 0.9, 0, 7.5, 0.0, 0.35);
+  const scene = new SpacingScene();
+  const timeline = new Timeline(document.getElementById('spacing-timeline'), { duration: 2 * scene.duration });
+  const p = { ease: 'slow in and out', arc: 1.2, ghosts: 12, squash: true, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-spacing .panel'), title: 'Spacing' });
+  gui.add(p, 'ease', ['slow in and out', 'linear', 'ease in', 'ease out']).name('spacing');
+  gui.add(p, 'arc', 0, 3, 0.05).name('arc height (m)');
+  gui.add(p, 'ghosts', 2, 60, 1).name('ghosts');
+  gui.add(p, 'squash').name('squash and stretch');
+  gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('spacing-plot'), {
+    title: 'Spacing: how much of the path is covered', xLabel: 'time (s)', yLabel: 'fraction of path',
+    series: ['this spacing', 'linear'], colors: [css('--z-axis'), css('--grey')], minSpan: 0.5,
+  });
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setEase(p.ease);
+    scene.setArcHeight(p.arc);
+    scene.setGhosts(p.ghosts);
+    scene.setSquash(p.squash);
+    scene.setUseExercise(p.useExercise);
+    plot.setData(columns(scene.sampleSpacing(101), 3));
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('spacing-note');
+  lesson.onFrame((dt) => {
+    timeline.advance(dt);
+    const t = pingPong(timeline);
+    const message = [rejected, scene.draw(spacingViewer, t)].filter(Boolean).join(' ');
+    if (note.textContent !== message) note.textContent = message;
+    plot.setCursor(t * scene.duration);
+    markDrawn('#fig-spacing');
+  });
+}
+
+// Figure 2: the jump, side by side.
+const jumpViewer = await lesson.figure('#fig-jump');
+if (jumpViewer) {
+  jumpViewer.setCamera(0, 1.1, 0, 6, 0.0, 0.15);
+  const scene = new JumpScene();
+  const timeline = new Timeline(document.getElementById('jump-timeline'), { duration: scene.duration });
+  const p = { anticipation: 0.3, stretch: 0.06, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-jump .panel'), title: 'Principles' });
+  gui.add(p, 'anticipation', 0, 0.6, 0.01).name('anticipation (crouch)');
+  gui.add(p, 'stretch', 0, 0.2, 0.005).name('stretch per m/s');
+  gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('jump-plot'), {
+    title: 'Height of the ball', xLabel: 'time (s)', yLabel: 'height (m) · stretch',
+    series: ['plain height', 'principled height', 'principled stretch s'],
+    colors: [css('--grey'), css('--orange'), css('--purple')], minSpan: 1,
+  });
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setPrinciples(p.anticipation, p.stretch);
+    scene.setUseExercise(p.useExercise);
+    plot.setData(columns(scene.sampleHeights(201), 4));
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('jump-note');
+  lesson.onFrame((dt) => {
+    timeline.advance(dt);
+    const message = [rejected, scene.draw(jumpViewer, timeline.time)].filter(Boolean).join(' ');
+    if (note.textContent !== message) note.textContent = message;
+    plot.setCursor(timeline.time);
+    markDrawn('#fig-jump');
+  });
+}
+
+// Figure 3: follow-through.
+const followViewer = await lesson.figure('#fig-follow');
+if (followViewer) {
+  followViewer.setCamera(0, 1.2, 0, 6, 0.0, 0.2);
+  const scene = new FollowThroughScene();
+  const timeline = new Timeline(document.getElementById('follow-timeline'), { duration: 4 });
+  const p = { stiffness: 150, damping: 4, joints: 6, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-follow .panel'), title: 'Antenna' });
+  gui.add(p, 'stiffness', 10, 600, 1).name('stiffness k (1/s²)');
+  gui.add(p, 'damping', 0, 60, 0.5).name('damping c (1/s)');
+  gui.add(p, 'joints', 2, 20, 1).name('joints');
+  gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('follow-plot'), {
+    title: 'Base and tip, side to side', xLabel: 'time (s)', yLabel: 'x (m)',
+    series: ['base', 'tip'], colors: [css('--teal'), css('--pink')], minSpan: 1,
+  });
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.set(p.stiffness, p.damping, p.joints);
+    scene.setUseExercise(p.useExercise);
+    plot.setData(columns(scene.sampleTip(201), 3));
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('follow-note');
+  lesson.onFrame((dt) => {
+    timeline.advance(dt);
+    const message = [rejected, scene.draw(followViewer, timeline.time)].filter(Boolean).join(' ');
+    if (note.textContent !== message) note.textContent = message;
+    plot.setCursor(timeline.time);
+    markDrawn('#fig-follow');
+  });
+}

@@ -1,0 +1,519 @@
+//! Lesson 02b, "Expressive animation": timing and spacing on one path, a jump plain and with the
+//! principles applied, and follow-through on an antenna. Native and tested natively
+//! (tests/figures_expressive.rs); `web::expressive` only wraps these for JavaScript.
+
+use super::{check_samples, compare_note, failure_note, format_number, in_range, palette};
+use super::{Frame, MeshId, Runner, DEFAULT_RUNNER};
+use crate::curves::Ease;
+use crate::exercises::run;
+use crate::expressive::{self, arc_point, Antenna, Jump};
+use glam::{Mat3, Mat4, Vec3};
+
+const FILE: &str = "src/exercises/expressive.rs";
+const TOLERANCE: f32 = 1e-4;
+/// Radius of the balls, metres.
+const RADIUS: f32 = 0.3;
+
+/// The model matrix of a ball of [`RADIUS`] at `centre`, stretched by `scale` (along, across,
+/// across) along the unit direction `axis`.
+fn ball(centre: Vec3, axis: Vec3, scale: Vec3) -> Mat4 {
+    let r = match axis.try_normalize() {
+        Some(a) => Mat3::from_quat(glam::Quat::from_rotation_arc(Vec3::X, a)),
+        None => Mat3::IDENTITY,
+    };
+    let m = r * Mat3::from_diagonal(scale) * r.transpose();
+    Mat4::from_translation(centre) * Mat4::from_mat3(m) * Mat4::from_scale(Vec3::splat(RADIUS))
+}
+
+/// The scale of squash and stretch `s`: the student's (exercise 2b.1) when asked and usable.
+fn stretch_scale(runner: Runner, use_exercise: bool, s: f32) -> Vec3 {
+    use_exercise
+        .then(|| run::squash_stretch_scale(runner, s).ok())
+        .flatten()
+        .filter(|v| v.is_finite() && v.min_element() > 0.0)
+        .unwrap_or_else(|| expressive::squash_stretch_scale(s))
+}
+
+/// The note about exercise 2b.1 at stretch `s`: the comparison and the volume the answer keeps.
+fn scale_note(runner: Runner, s: f32) -> String {
+    match run::squash_stretch_scale(runner, s) {
+        Err(f) => failure_note("exercise 2b.1 squash_stretch_scale", FILE, &f),
+        Ok(yours) => {
+            let reference = expressive::squash_stretch_scale(s);
+            let at = format!("s = {}", format_number(s));
+            let (_, note) = compare_note(
+                "squash_stretch_scale",
+                &at,
+                &yours.to_array(),
+                &reference.to_array(),
+                TOLERANCE,
+            );
+            format!(
+                "{note} Your scale keeps {} of the volume.",
+                format_number(yours.x * yours.y * yours.z)
+            )
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 1: timing and spacing.
+
+/// Colours of Figure 1.
+pub const BALL: Vec3 = palette::BLUE;
+pub const GHOST: Vec3 = palette::GREY;
+pub const CHART: Vec3 = palette::ORANGE;
+
+/// Where the path of Figure 1 starts and ends.
+const START: Vec3 = Vec3::new(-2.5, 0.3, 0.0);
+const END: Vec3 = Vec3::new(2.5, 0.3, 0.0);
+
+/// The most ghosts Figure 1 draws.
+pub const MAX_GHOSTS: usize = 60;
+
+/// Figure 1: one ball between two keys along a straight line or an arc, with the spacing of an
+/// easing curve: ghosts at equal time steps, a spacing chart under the path, and optional squash
+/// and stretch along the motion.
+pub struct Spacing {
+    ease: Ease,
+    arc_height: f32,
+    ghosts: usize,
+    squash: bool,
+    use_exercise: bool,
+    runner: Runner,
+    /// Seconds from key to key.
+    pub duration: f32,
+}
+
+impl Default for Spacing {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Spacing {
+    pub fn new() -> Self {
+        Spacing {
+            ease: Ease::Smoothstep,
+            arc_height: 1.2,
+            ghosts: 12,
+            squash: true,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            duration: 1.5,
+        }
+    }
+
+    /// "linear", "slow in and out", "ease in" (starts slowly), "ease out" (arrives slowly).
+    pub fn set_ease(&mut self, name: &str) -> Result<(), String> {
+        self.ease = match name {
+            "linear" => Ease::Linear,
+            "slow in and out" => Ease::Smoothstep,
+            "ease in" => Ease::In { power: 2.0 },
+            "ease out" => Ease::Out { power: 2.0 },
+            _ => return Err(format!("unknown spacing {name:?}")),
+        };
+        Ok(())
+    }
+
+    /// The arc's height above the straight line, 0 to 3 m (0: a straight line).
+    pub fn set_arc_height(&mut self, h: f32) -> Result<(), String> {
+        self.arc_height = in_range("arc height", h, 0.0, 3.0)?;
+        Ok(())
+    }
+
+    /// Ghosts at equal time steps, 2 to [`MAX_GHOSTS`].
+    pub fn set_ghosts(&mut self, n: f32) -> Result<(), String> {
+        self.ghosts = in_range("ghosts", n, 2.0, MAX_GHOSTS as f32)?.round() as usize;
+        Ok(())
+    }
+
+    pub fn set_squash(&mut self, on: bool) {
+        self.squash = on;
+    }
+
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// The fraction of the path covered at `t ∈ [0, 1]` of the time (the spacing).
+    pub fn spacing(&self, t: f32) -> f32 {
+        self.ease.apply(t)
+    }
+
+    /// The ball's position at `t ∈ [0, 1]` of the time.
+    pub fn position(&self, t: f32) -> Vec3 {
+        arc_point(START, END, Vec3::Y, self.arc_height, self.spacing(t))
+    }
+
+    /// The stretch `s` at `t`: `1 + 0.06 · speed` (m/s), at most 1.6.
+    pub fn stretch(&self, t: f32) -> (Vec3, f32) {
+        let h = 1e-3;
+        let (a, b) = (
+            self.position((t - h).max(0.0)),
+            self.position((t + h).min(1.0)),
+        );
+        let dt = ((t + h).min(1.0) - (t - h).max(0.0)) * self.duration;
+        let velocity = (b - a) / dt;
+        (
+            velocity,
+            expressive::stretch_from_speed(velocity.length(), 0.06, 1.6),
+        )
+    }
+
+    /// `(t, fraction of the path, linear for comparison)`, time in seconds.
+    pub fn sample_spacing(&self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
+        check_samples(samples)?;
+        Ok((0..samples)
+            .map(|k| {
+                let t = k as f32 / (samples - 1) as f32;
+                [t * self.duration, self.spacing(t), t]
+            })
+            .collect())
+    }
+
+    /// Draws the path, ghosts, spacing chart and the ball at `t ∈ [0, 1]`; returns the note.
+    pub fn draw(&self, frame: &mut Frame, t: f32) -> Result<String, String> {
+        let t = in_range("t", t, 0.0, 1.0)?;
+        frame.grid(14, 0.5);
+        let path: Vec<Vec3> = (0..=64)
+            .map(|k| arc_point(START, END, Vec3::Y, self.arc_height, k as f32 / 64.0))
+            .collect();
+        frame.polyline(&path, palette::DARK);
+        frame.point(START, 0.09, palette::KEY);
+        frame.point(END, 0.09, palette::KEY);
+        frame.label(START + Vec3::new(0.0, -0.35, 0.0), "key 1", palette::KEY);
+        frame.label(END + Vec3::new(0.0, -0.35, 0.0), "key 2", palette::KEY);
+        // The spacing chart: a ruler below the path with a tick at each ghost.
+        let ruler = |f: f32| Vec3::new(START.x + (END.x - START.x) * f, 0.02, 0.8);
+        frame.line(ruler(0.0), ruler(1.0), CHART);
+        for k in 0..=self.ghosts {
+            let tk = k as f32 / self.ghosts as f32;
+            let p = self.position(tk);
+            frame.point(p, 0.06, GHOST);
+            let f = self.spacing(tk);
+            frame.line(ruler(f), ruler(f) + Vec3::new(0.0, 0.0, 0.25), CHART);
+        }
+        frame.label(
+            ruler(0.5) + Vec3::new(0.0, 0.0, 0.45),
+            "spacing chart",
+            CHART,
+        );
+        let p = self.position(t);
+        let (velocity, s) = self.stretch(t);
+        let (s, scale) = if self.squash {
+            (s, stretch_scale(self.runner, self.use_exercise, s))
+        } else {
+            (1.0, Vec3::ONE)
+        };
+        frame.mesh(MeshId::SPHERE, ball(p, velocity, scale), BALL);
+        let speed = velocity.length();
+        let mut note = format!(
+            "At t = {} s the ball has covered {} % of the path, at {} m/s. {} ghosts at equal time steps: \
+             bunched where it is slow, spread where it is fast.",
+            format_number(t * self.duration),
+            format_number(100.0 * self.spacing(t)),
+            format_number(speed),
+            self.ghosts + 1,
+        );
+        if self.use_exercise {
+            note += " ";
+            note += &scale_note(self.runner, s);
+        }
+        Ok(note)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 2: a jump, plain and with the principles.
+
+/// Colours of Figure 2.
+pub const PLAIN: Vec3 = palette::GREY;
+pub const PRINCIPLED: Vec3 = palette::ORANGE;
+
+/// Figure 2: the same jump twice, side by side: left, plain interpolation between the keys
+/// (ground, apex, ground); right, with anticipation, a gravity arc (slow in and out at the apex),
+/// stretch in flight and squash on landing.
+pub struct JumpComparison {
+    jump: Jump,
+    use_exercise: bool,
+    runner: Runner,
+}
+
+impl Default for JumpComparison {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl JumpComparison {
+    /// A pause after landing, seconds, so the loop shows the settle.
+    pub const PAUSE: f32 = 0.5;
+
+    pub fn new() -> Self {
+        JumpComparison {
+            jump: Jump::default(),
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+        }
+    }
+
+    /// Crouch depth 0 to 0.6 (a fraction of the height), stretch per m/s 0 to 0.2.
+    pub fn set_principles(
+        &mut self,
+        anticipation: f32,
+        stretch_per_speed: f32,
+    ) -> Result<(), String> {
+        self.jump.anticipation = in_range("anticipation", anticipation, 0.0, 0.6)?;
+        self.jump.stretch_per_speed = in_range("stretch", stretch_per_speed, 0.0, 0.2)?;
+        Ok(())
+    }
+
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// The loop's length, seconds.
+    pub fn duration(&self) -> f32 {
+        self.jump.duration() + Self::PAUSE
+    }
+
+    /// `(t, plain height, principled height, principled stretch)` over the loop.
+    pub fn sample_heights(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
+        check_samples(samples)?;
+        Ok((0..samples)
+            .map(|k| {
+                let t = self.duration() * k as f32 / (samples - 1) as f32;
+                let p = self.jump.principled(t);
+                [t, self.jump.plain(t).height, p.height, p.stretch]
+            })
+            .collect())
+    }
+
+    /// Draws both balls at `time_sec`; returns the note.
+    pub fn draw(&self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let t = in_range("time", time_sec, 0.0, self.duration())?;
+        frame.grid(12, 0.5);
+        let plain = self.jump.plain(t);
+        frame.mesh(
+            MeshId::SPHERE,
+            ball(
+                Vec3::new(-1.2, plain.height + RADIUS, 0.0),
+                Vec3::Y,
+                Vec3::ONE,
+            ),
+            PLAIN,
+        );
+        let p = self.jump.principled(t);
+        let scale = stretch_scale(self.runner, self.use_exercise, p.stretch);
+        let centre = Vec3::new(1.2, p.height + RADIUS * scale.x, 0.0);
+        frame.mesh(MeshId::SPHERE, ball(centre, Vec3::Y, scale), PRINCIPLED);
+        frame.label(Vec3::new(-1.2, -0.25, 0.6), "plain", PLAIN);
+        frame.label(Vec3::new(1.2, -0.25, 0.6), "principles", PRINCIPLED);
+        // The apex both reach.
+        let apex = self.jump.apex + 2.0 * RADIUS;
+        frame.line(
+            Vec3::new(-2.0, apex, 0.0),
+            Vec3::new(2.0, apex, 0.0),
+            palette::GRID_AXIS,
+        );
+        let phase = if t < self.jump.wind_up {
+            "anticipation: crouching before take-off"
+        } else if t < self.jump.wind_up + self.jump.flight {
+            "flight: a parabola, slow at the apex, stretched when fast"
+        } else if t < self.jump.duration() {
+            "landing: squash, then recover"
+        } else {
+            "at rest"
+        };
+        let mut note = format!(
+            "t = {} s, {phase}. Right ball stretch s = {} (volume kept: {}).",
+            format_number(t),
+            format_number(p.stretch),
+            format_number(scale.x * scale.y * scale.z),
+        );
+        if self.use_exercise {
+            note += " ";
+            note += &scale_note(self.runner, p.stretch);
+        }
+        Ok(note)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 3: follow-through on an antenna.
+
+/// Colours of Figure 3.
+pub const BODY: Vec3 = palette::TEAL;
+pub const ANTENNA: Vec3 = palette::PURPLE;
+
+/// Simulation step of Figure 3, seconds.
+pub const DT: f32 = 1.0 / 120.0;
+
+/// Figure 3: a body slides from side to side and stops at each end; an antenna on top, a chain
+/// of joints each pulled by a damped spring towards its rest place above the joint below, lags
+/// behind, swings past when the body stops, and settles. The motion is simulated from time 0 to
+/// the timeline's time on every draw (deterministic: scrubbing gives the same picture).
+pub struct FollowThrough {
+    stiffness: f32,
+    damping: f32,
+    joints: usize,
+    use_exercise: bool,
+    runner: Runner,
+    antenna: Antenna,
+}
+
+impl Default for FollowThrough {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl FollowThrough {
+    /// One loop: move right (1 s), hold (1 s), move left (1 s), hold (1 s).
+    pub const DURATION: f32 = 4.0;
+    /// Segment length of the antenna, metres.
+    const SEGMENT: f32 = 0.22;
+
+    pub fn new() -> Self {
+        FollowThrough {
+            stiffness: 150.0,
+            damping: 4.0,
+            joints: 6,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            antenna: Antenna::new(Vec3::ZERO, 6, Self::SEGMENT),
+        }
+    }
+
+    /// Stiffness k (1/s², 10 to 600), damping c (1/s, 0 to 60), joints (2 to 20).
+    pub fn set(&mut self, stiffness: f32, damping: f32, joints: f32) -> Result<(), String> {
+        self.stiffness = in_range("stiffness", stiffness, 10.0, 600.0)?;
+        self.damping = in_range("damping", damping, 0.0, 60.0)?;
+        self.joints = in_range("joints", joints, 2.0, 20.0)?.round() as usize;
+        Ok(())
+    }
+
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// The base of the antenna (top of the body) at `time_sec`: eased moves with holds.
+    pub fn base(time_sec: f32) -> Vec3 {
+        let t = time_sec.rem_euclid(Self::DURATION);
+        let ease = |s: f32| Ease::Smoothstep.apply(s);
+        let x = match t {
+            t if t < 1.0 => -1.5 + 3.0 * ease(t),
+            t if t < 2.0 => 1.5,
+            t if t < 3.0 => 1.5 - 3.0 * ease(t - 2.0),
+            _ => -1.5,
+        };
+        Vec3::new(x, 0.8, 0.0)
+    }
+
+    /// Simulates from the start (body at rest at the left) to `time_sec` in steps of [`DT`].
+    fn simulate(&mut self, time_sec: f32) {
+        // Start from the end of a previous loop at rest: a straight antenna over the left end.
+        self.antenna = Antenna::new(Self::base(0.0), self.joints, Self::SEGMENT);
+        let steps = (time_sec / DT).round() as usize;
+        for k in 1..=steps {
+            self.antenna
+                .step(Self::base(k as f32 * DT), self.stiffness, self.damping, DT);
+        }
+    }
+
+    /// `(t, base x, tip x)` over one loop, metres.
+    pub fn sample_tip(&mut self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
+        check_samples(samples)?;
+        let mut antenna = Antenna::new(Self::base(0.0), self.joints, Self::SEGMENT);
+        let total = (Self::DURATION / DT).round() as usize;
+        let mut out = Vec::with_capacity(samples);
+        let mut next = 0;
+        for k in 0..=total {
+            let t = k as f32 * DT;
+            if k > 0 {
+                antenna.step(Self::base(t), self.stiffness, self.damping, DT);
+            }
+            while next < samples
+                && (next as f32 / (samples - 1) as f32) * Self::DURATION <= t + 1e-6
+            {
+                out.push([t, antenna.positions[0].x, antenna.tip().x]);
+                next += 1;
+            }
+        }
+        while out.len() < samples {
+            out.push([Self::DURATION, antenna.positions[0].x, antenna.tip().x]);
+        }
+        Ok(out)
+    }
+
+    /// Draws the body and the antenna at `time_sec`; returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let t = in_range("time", time_sec, 0.0, Self::DURATION)?;
+        self.simulate(t);
+        frame.grid(12, 0.5);
+        let base = self.antenna.positions[0];
+        let body = Mat4::from_translation(base - Vec3::Y * 0.4)
+            * Mat4::from_scale(Vec3::new(0.5, 0.4, 0.4));
+        frame.mesh(MeshId::CUBE, body, BODY);
+        frame.polyline(&self.antenna.positions, ANTENNA);
+        for p in &self.antenna.positions[1..] {
+            frame.point(*p, 0.05, ANTENNA);
+        }
+        frame.point(self.antenna.tip(), 0.09, palette::PINK);
+        frame.label(self.antenna.tip() + Vec3::Y * 0.2, "tip", palette::PINK);
+        let critical = 2.0 * self.stiffness.sqrt();
+        let mut note = format!(
+            "Damping c = {} (critical: 2√k = {}): {}. The tip is {} m behind the base.",
+            format_number(self.damping),
+            format_number(critical),
+            if self.damping < critical {
+                "under-damped, the antenna swings past and wobbles"
+            } else {
+                "over-damped, it creeps back without swinging"
+            },
+            format_number((base.x - self.antenna.tip().x).abs()),
+        );
+        if self.use_exercise {
+            note += " ";
+            note += &self.exercise_note();
+        }
+        Ok(note)
+    }
+
+    /// Compares the student's `spring_step` (exercise 2b.2) with the reference on the antenna's
+    /// first free joint, one step from its current state.
+    pub fn exercise_note(&self) -> String {
+        let (x, v) = (self.antenna.positions[1], self.antenna.velocities[1]);
+        let target = self.antenna.positions[0] + Vec3::Y * Self::SEGMENT;
+        let (k, c) = (self.stiffness, self.damping);
+        match run::spring_step(self.runner, x, v, target, k, c, DT) {
+            Err(f) => failure_note("exercise 2b.2 spring_step", FILE, &f),
+            Ok((yx, yv)) => {
+                let (rx, rv) = expressive::spring_step(x, v, target, k, c, DT);
+                let yours = [yx.to_array(), yv.to_array()].concat();
+                let reference = [rx.to_array(), rv.to_array()].concat();
+                compare_note(
+                    "spring_step",
+                    "joint 1 of the antenna, now",
+                    &yours,
+                    &reference,
+                    TOLERANCE,
+                )
+                .1
+            }
+        }
+    }
+}

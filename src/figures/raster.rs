@@ -1,0 +1,1156 @@
+//! Lesson 00, "From triangles to pixels": a mesh stored two ways, the perspective frustum, depth
+//! precision and z-fighting, flat and smooth normals, and Phong vs Blinn-Phong shading. Native and
+//! tested natively (tests/figures_raster.rs); `web::raster` only wraps these for JavaScript.
+
+use super::{check_samples, compare_note, failure_note, finite, format_number, in_range, palette};
+use super::{Frame, MeshId, Runner, DEFAULT_RUNNER};
+use crate::exercises::raster::material;
+use crate::exercises::run;
+use crate::mesh::MeshData;
+use crate::raster::shading::{light_from_image, sphere_image, Term};
+use crate::raster::storage::{tetrahedron, uv_sphere_indexed};
+use crate::raster::{self, Material, MeshSizes, ShadingModel};
+use glam::{Mat3, Mat4, Vec2, Vec3};
+
+const DEG: f32 = std::f32::consts::PI / 180.0;
+const FILE: &str = "src/exercises/raster.rs";
+const TOLERANCE: f32 = 1e-4;
+
+/// Thousands separated by thin spaces, for byte counts in notes.
+fn bytes(n: usize) -> String {
+    let s = n.to_string();
+    let mut out = String::new();
+    for (i, c) in s.chars().enumerate() {
+        if i > 0 && (s.len() - i).is_multiple_of(3) {
+            out.push('\u{2009}');
+        }
+        out.push(c);
+    }
+    out + " B"
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 1: one mesh, two storages.
+
+/// Colours of Figure 1, as the page's words name them.
+pub const SOUP_COLOR: Vec3 = palette::ORANGE;
+pub const INDEXED_COLOR: Vec3 = palette::TEAL;
+
+/// The most segments around the sphere of Figure 1 (its cost grows with their square).
+pub const MAX_SEGMENTS: u32 = 64;
+
+/// Figure 1: the same mesh as a triangle soup (left, every triangle pulled apart a little so that
+/// its own three copies of the corners show) and as indexed geometry (right, each position once).
+pub struct MeshStorage {
+    sphere: bool,
+    segments: u32,
+    positions: Vec<Vec3>,
+    indices: Vec<u32>,
+}
+
+impl Default for MeshStorage {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl MeshStorage {
+    pub fn new() -> Self {
+        let mut s = MeshStorage {
+            sphere: true,
+            segments: 8,
+            positions: Vec::new(),
+            indices: Vec::new(),
+        };
+        s.rebuild();
+        s
+    }
+
+    fn rebuild(&mut self) {
+        (self.positions, self.indices) = if self.sphere {
+            uv_sphere_indexed(self.segments, (self.segments / 2).max(2))
+        } else {
+            tetrahedron()
+        };
+    }
+
+    /// "tetrahedron" or "sphere".
+    pub fn set_shape(&mut self, shape: &str) -> Result<(), String> {
+        self.sphere = match shape {
+            "sphere" => true,
+            "tetrahedron" => false,
+            _ => {
+                return Err(format!(
+                    "shape must be \"tetrahedron\" or \"sphere\", got {shape:?}"
+                ))
+            }
+        };
+        self.rebuild();
+        Ok(())
+    }
+
+    /// Segments around the sphere, 3 to [`MAX_SEGMENTS`] (rings: half as many).
+    pub fn set_segments(&mut self, segments: f32) -> Result<(), String> {
+        let s = in_range("segments", segments, 3.0, MAX_SEGMENTS as f32)?;
+        self.segments = s.round() as u32;
+        self.rebuild();
+        Ok(())
+    }
+
+    pub fn sizes(&self) -> MeshSizes {
+        raster::mesh_sizes(self.positions.len(), self.indices.len() / 3)
+    }
+
+    /// Left: the soup; right: the indexed mesh. Returns the note with both sizes.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        let s = self.sizes();
+        let (left, right) = (Vec3::new(-1.4, 1.2, 0.0), Vec3::new(1.4, 1.2, 0.0));
+        frame.grid(12, 0.5);
+        let small = self.positions.len() <= 12;
+        let dot = if small { 0.05 } else { 0.018 };
+        // Soup: each triangle shrunk towards its centre, its own three corners.
+        for tri in self.indices.chunks_exact(3) {
+            let [a, b, c] = [tri[0], tri[1], tri[2]].map(|i| self.positions[i as usize]);
+            let centre = (a + b + c) / 3.0;
+            let pull = |p: Vec3| left + centre + (p - centre) * 0.78;
+            let (a, b, c) = (pull(a), pull(b), pull(c));
+            frame.polyline(&[a, b, c, a], SOUP_COLOR);
+            for p in [a, b, c] {
+                frame.point(p, dot, SOUP_COLOR);
+            }
+        }
+        // Indexed: each edge drawn once (from the triangle where a < b, or from both if the mesh
+        // is open, which ours is not), each position once.
+        for tri in self.indices.chunks_exact(3) {
+            for k in 0..3 {
+                let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                if a < b {
+                    let pa = right + self.positions[a as usize];
+                    let pb = right + self.positions[b as usize];
+                    frame.line(pa, pb, INDEXED_COLOR);
+                }
+            }
+        }
+        for (i, p) in self.positions.iter().enumerate() {
+            frame.point(right + *p, dot * 1.2, INDEXED_COLOR);
+            if small {
+                frame.label(right + *p * 1.18, i.to_string(), palette::DARK);
+            }
+        }
+        frame.label(
+            left + Vec3::Y * 1.35,
+            format!("triangle soup: {}", bytes(s.soup_bytes)),
+            SOUP_COLOR,
+        );
+        frame.label(
+            right + Vec3::Y * 1.35,
+            format!("indexed: {}", bytes(s.indexed_bytes)),
+            INDEXED_COLOR,
+        );
+        format!(
+            "{} triangles. Triangle soup: 3 × {} = {} positions × 12 B = {}. Indexed: {} positions × 12 B + \
+             {} indices × 4 B = {}. The soup is {:.2}× larger; every position is stored {:.1} times on average.",
+            s.triangles,
+            s.triangles,
+            s.soup_positions,
+            bytes(s.soup_bytes),
+            s.vertices,
+            s.indices,
+            bytes(s.indexed_bytes),
+            s.soup_bytes as f32 / s.indexed_bytes as f32,
+            s.soup_positions as f32 / s.vertices as f32,
+        )
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 2: the frustum.
+
+/// Colours of Figure 2.
+pub mod frustum_colors {
+    use super::palette;
+    use glam::Vec3;
+    pub const NEAR: Vec3 = palette::Z_AXIS;
+    pub const FAR: Vec3 = palette::PURPLE;
+    pub const POINT: Vec3 = palette::ORANGE;
+    pub const OUTSIDE: Vec3 = palette::X_AXIS;
+    pub const ON_NEAR: Vec3 = palette::PINK;
+    pub const NDC_BOX: Vec3 = palette::TEAL;
+}
+
+/// Where the camera of Figure 2 stands in the world: view space moved up by 1.2 m.
+const EYE: Vec3 = Vec3::new(0.0, 1.2, 0.0);
+/// Where the NDC box of Figure 2 stands (its centre of the near face).
+const NDC_ORIGIN: Vec3 = Vec3::new(9.0, 1.2, -2.0);
+
+/// Figure 2: a camera's frustum (field of view, z_near, z_far), a point that travels along the
+/// view direction through it, and the same point in normalised device coordinates (the box on
+/// the right: x, y ∈ [−1, 1], depth ∈ [0, 1]).
+pub struct Frustum {
+    fov_y_rad: f32,
+    near: f32,
+    far: f32,
+    /// The point's view-space x and y, metres.
+    offset: Vec2,
+    use_exercise: bool,
+    runner: Runner,
+}
+
+impl Default for Frustum {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Frustum {
+    /// Width / height of the figure's imaginary screen.
+    pub const ASPECT: f32 = 1.5;
+    /// The farthest z_far the figure draws, metres.
+    pub const MAX_FAR: f32 = 20.0;
+
+    pub fn new() -> Self {
+        Frustum {
+            fov_y_rad: 50.0 * DEG,
+            near: 1.0,
+            far: 8.0,
+            offset: Vec2::new(0.6, 0.3),
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+        }
+    }
+
+    /// Field of view in degrees (10 to 150), z_near (0.05 to 5 m) and z_far (above z_near, at
+    /// most [`Self::MAX_FAR`]).
+    pub fn set_frustum(&mut self, fov_deg: f32, near: f32, far: f32) -> Result<(), String> {
+        let fov = in_range("field of view", fov_deg, 10.0, 150.0)?;
+        let near = in_range("z_near", near, 0.05, 5.0)?;
+        let far = in_range("z_far", far, 0.1, Self::MAX_FAR)?;
+        if far <= near {
+            return Err(format!(
+                "z_far ({far}) must be greater than z_near ({near})"
+            ));
+        }
+        (self.fov_y_rad, self.near, self.far) = (fov * DEG, near, far);
+        Ok(())
+    }
+
+    /// The point's view-space x and y (metres, each within ±10).
+    pub fn set_offset(&mut self, x: f32, y: f32) -> Result<(), String> {
+        self.offset = Vec2::new(
+            in_range("point x", x, -10.0, 10.0)?,
+            in_range("point y", y, -10.0, 10.0)?,
+        );
+        Ok(())
+    }
+
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// The point's distance in front of the camera at `s ∈ [0, 1]`: from half of z_near to 15 %
+    /// past z_far, so it enters and leaves the frustum.
+    pub fn distance_at(&self, s: f32) -> f32 {
+        let (a, b) = (0.5 * self.near, 1.15 * self.far);
+        a + (b - a) * s
+    }
+
+    /// The reference matrix: wgpu's (`gl = false`) or OpenGL's.
+    pub fn matrix(&self, gl: bool) -> Mat4 {
+        let f = if gl {
+            raster::perspective_gl
+        } else {
+            raster::perspective_wgpu
+        };
+        f(self.fov_y_rad, Self::ASPECT, self.near, self.far).expect("validated by the setters")
+    }
+
+    /// The wgpu matrix the figure uses: the student's with "use my exercise" when it gives one.
+    fn used_matrix(&self) -> Mat4 {
+        self.use_exercise
+            .then(|| {
+                run::perspective_matrix(
+                    self.runner,
+                    self.fov_y_rad,
+                    Self::ASPECT,
+                    self.near,
+                    self.far,
+                )
+                .ok()
+            })
+            .flatten()
+            .filter(|m| m.is_finite())
+            .unwrap_or_else(|| self.matrix(false))
+    }
+
+    /// The point in view space at `s`.
+    pub fn point_at(&self, s: f32) -> Vec3 {
+        self.offset.extend(-self.distance_at(s))
+    }
+
+    /// `[clip x, y, z, w, ndc x, y, z]` with wgpu's matrix (the student's when used), then the same
+    /// seven with OpenGL's, for the page's table.
+    pub fn readout(&self, s: f32) -> Result<[f32; 14], String> {
+        let s = in_range("s", s, 0.0, 1.0)?;
+        let p = self.point_at(s);
+        let a = raster::project(self.used_matrix(), p, 0.0);
+        let b = raster::project(self.matrix(true), p, -1.0);
+        let mut out = [0.0; 14];
+        out[..4].copy_from_slice(&a.clip.to_array());
+        out[4..7].copy_from_slice(&a.ndc.to_array());
+        out[7..11].copy_from_slice(&b.clip.to_array());
+        out[11..].copy_from_slice(&b.ndc.to_array());
+        Ok(out)
+    }
+
+    /// Depth against distance: `(d, depth wgpu, depth OpenGL)` from z_near to z_far.
+    pub fn sample_depth(&self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
+        check_samples(samples)?;
+        Ok((0..samples)
+            .map(|k| {
+                let d = self.near + (self.far - self.near) * k as f32 / (samples - 1) as f32;
+                [
+                    d,
+                    raster::ndc_depth_wgpu(d, self.near, self.far),
+                    raster::ndc_depth_gl(d, self.near, self.far),
+                ]
+            })
+            .collect())
+    }
+
+    /// Draws the frustum, the point at `s`, and the NDC box; returns the note.
+    pub fn draw(&self, frame: &mut Frame, s: f32) -> Result<String, String> {
+        use frustum_colors::*;
+        let s = in_range("s", s, 0.0, 1.0)?;
+        frame.grid(24, 1.0);
+        let half_h = |d: f32| d * (0.5 * self.fov_y_rad).tan();
+        let corners = |d: f32| {
+            let (h, w) = (half_h(d), half_h(d) * Self::ASPECT);
+            [(-w, -h), (w, -h), (w, h), (-w, h)].map(|(x, y)| EYE + Vec3::new(x, y, -d))
+        };
+        let (near, far) = (corners(self.near), corners(self.far));
+        frame.polyline(&[near[0], near[1], near[2], near[3], near[0]], NEAR);
+        frame.polyline(&[far[0], far[1], far[2], far[3], far[0]], FAR);
+        for (n, f) in near.iter().zip(&far) {
+            frame.line(EYE, *n, palette::GREY);
+            frame.line(*n, *f, palette::GREY);
+        }
+        frame.point(EYE, 0.08, palette::DARK);
+        frame.label(EYE + Vec3::new(0.0, 0.25, 0.0), "eye", palette::DARK);
+        frame.label(near[2], "z_near", NEAR);
+        frame.label(far[2], "z_far", FAR);
+        // The point, the ray from the eye, and where the ray crosses the near plane (the image).
+        let p = self.point_at(s);
+        let m = self.used_matrix();
+        let q = raster::project(m, p, 0.0);
+        let color = if q.inside { POINT } else { OUTSIDE };
+        frame.line(EYE, EYE + p, palette::GREY);
+        frame.point(EYE + p, 0.1, color);
+        frame.label(EYE + p + Vec3::new(0.0, 0.25, 0.0), "p", color);
+        let on_near = p * (self.near / -p.z);
+        frame.point(EYE + on_near, 0.08, ON_NEAR);
+        // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z.
+        let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
+        let box_corners: Vec<Vec3> = [0.0, 1.0]
+            .iter()
+            .flat_map(|&z| {
+                [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+                    .map(move |(x, y)| Vec3::new(x, y, z))
+            })
+            .map(ndc_to_world)
+            .collect();
+        for k in 0..4 {
+            frame.line(box_corners[k], box_corners[(k + 1) % 4], NEAR);
+            frame.line(box_corners[4 + k], box_corners[4 + (k + 1) % 4], FAR);
+            frame.line(box_corners[k], box_corners[4 + k], NDC_BOX);
+        }
+        frame.label(box_corners[2], "depth 0", NEAR);
+        frame.label(box_corners[6], "depth 1", FAR);
+        frame.label(
+            NDC_ORIGIN + Vec3::new(0.0, -1.35, -1.0),
+            "NDC (wgpu)",
+            NDC_BOX,
+        );
+        if q.clip.w > 0.0 && q.ndc.abs().max_element() < 3.0 {
+            frame.point(ndc_to_world(q.ndc), 0.08, color);
+            frame.label(ndc_to_world(q.ndc) + Vec3::new(0.0, 0.22, 0.0), "p", color);
+        }
+        let d = self.distance_at(s);
+        let mut note = format!(
+            "Distance d = {} m: depth {} (wgpu), {} (OpenGL). {}",
+            format_number(d),
+            format_number(raster::ndc_depth_wgpu(d, self.near, self.far)),
+            format_number(raster::ndc_depth_gl(d, self.near, self.far)),
+            if q.inside {
+                "Inside the frustum: drawn."
+            } else if d < self.near {
+                "Nearer than z_near: clipped."
+            } else if d > self.far {
+                "Beyond z_far: clipped."
+            } else {
+                "Outside the field of view: clipped."
+            }
+        );
+        if self.use_exercise {
+            note += " ";
+            note += &self.exercise_note();
+        }
+        Ok(note)
+    }
+
+    /// Compares the student's matrix (exercise 0.1) with the reference at the current frustum.
+    pub fn exercise_note(&self) -> String {
+        let at = format!(
+            "field of view {}°, z_near {}, z_far {}",
+            format_number(self.fov_y_rad / DEG),
+            format_number(self.near),
+            format_number(self.far)
+        );
+        match run::perspective_matrix(
+            self.runner,
+            self.fov_y_rad,
+            Self::ASPECT,
+            self.near,
+            self.far,
+        ) {
+            Err(f) => failure_note("exercise 0.1 perspective_matrix", FILE, &f),
+            Ok(m) => {
+                let reference = self.matrix(false);
+                let (ok, mut note) = compare_note(
+                    "perspective_matrix",
+                    &at,
+                    &m.to_cols_array(),
+                    &reference.to_cols_array(),
+                    TOLERANCE * 10.0,
+                );
+                if !ok {
+                    let z = |d: f32| raster::project(m, Vec3::new(0.0, 0.0, -d), 0.0).ndc.z;
+                    note += &format!(
+                        " Yours maps z_near to depth {} and z_far to {} (should be 0 and 1).",
+                        format_number(z(self.near)),
+                        format_number(z(self.far))
+                    );
+                }
+                note
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 3: depth precision and z-fighting.
+
+/// Colours of Figure 3: the upper (nearer) plane and the lower one just beneath it.
+pub const UPPER_PLANE: Vec3 = palette::X_AXIS;
+pub const LOWER_PLANE: Vec3 = palette::Z_AXIS;
+
+/// Figure 3: two horizontal planes `gap` metres apart, below a camera 3 m up that looks 10° down,
+/// drawn through a depth buffer of 16 or 24 bits. The upper plane should hide the lower one
+/// everywhere; where one depth step is worth more than the planes' separation along the line of
+/// sight, the two fight.
+pub struct DepthPrecision {
+    near: f32,
+    far: f32,
+    gap: f32,
+    bits: u32,
+}
+
+impl Default for DepthPrecision {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Eye height above the upper plane, metres.
+pub const EYE_HEIGHT: f32 = 3.0;
+/// How far the camera looks down, radians.
+const PITCH: f32 = 10.0 * DEG;
+/// Vertical field of view of the image, radians.
+const IMAGE_FOV: f32 = 40.0 * DEG;
+/// The largest image side, pixels.
+pub const MAX_IMAGE: usize = 512;
+
+impl DepthPrecision {
+    pub fn new() -> Self {
+        DepthPrecision {
+            near: 0.1,
+            far: 1000.0,
+            gap: 0.01,
+            bits: 16,
+        }
+    }
+
+    /// z_near in [0.01, 10] m, z_far in (z_near, 10⁵] m, the gap in [10⁻⁴, 1] m, 16 or 24 bits.
+    pub fn set(&mut self, near: f32, far: f32, gap: f32, bits: f32) -> Result<(), String> {
+        let near = in_range("z_near", near, 0.01, 10.0)?;
+        let far = in_range("z_far", far, 0.02, 1e5)?;
+        if far <= near {
+            return Err(format!(
+                "z_far ({far}) must be greater than z_near ({near})"
+            ));
+        }
+        let gap = in_range("gap", gap, 1e-4, 1.0)?;
+        let bits = finite("depth bits", bits)?;
+        if bits != 16.0 && bits != 24.0 {
+            return Err(format!("depth bits must be 16 or 24, got {bits}"));
+        }
+        (self.near, self.far, self.gap, self.bits) = (near, far, gap, bits as u32);
+        Ok(())
+    }
+
+    /// How far apart the two planes are along a line of sight that meets the upper one at view
+    /// depth `d`: `d · gap / h` (a grazing ray crosses the gap over a long stretch).
+    pub fn separation(&self, d: f32) -> f32 {
+        d * self.gap / EYE_HEIGHT
+    }
+
+    /// The view depth beyond which one depth step is worth more than the separation:
+    /// `d² (f − n) / (f n (2ᵇ − 1)) = d · gap / h`, so `d = gap f n (2ᵇ − 1) / (h (f − n))`.
+    pub fn fighting_from(&self) -> f32 {
+        let steps = ((1u64 << self.bits) - 1) as f32;
+        self.gap * self.far * self.near * steps / (EYE_HEIGHT * (self.far - self.near))
+    }
+
+    /// `(d, step 16 bits, step 24 bits, separation)` in metres, for d from z_near to z_far or to
+    /// 4 times the fighting distance, whichever is nearer (so the crossing stays readable).
+    pub fn sample_step(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
+        check_samples(samples)?;
+        let end = self
+            .far
+            .min(4.0 * self.fighting_from())
+            .max(2.0 * self.near);
+        Ok((0..samples)
+            .map(|k| {
+                let d = self.near + (end - self.near) * k as f32 / (samples - 1) as f32;
+                [
+                    d,
+                    raster::depth_step(d, self.near, self.far, 16),
+                    raster::depth_step(d, self.near, self.far, 24),
+                    self.separation(d),
+                ]
+            })
+            .collect())
+    }
+
+    /// Which plane a depth buffer keeps at a pixel where the planes lie at distances `d_upper`
+    /// and `d_lower`: the lower plane is drawn first, the upper one passes the test only if its
+    /// stored depth is strictly smaller. `jitter` in `[−½, ½]²` stands for the rasteriser's
+    /// rounding of the interpolated depth, a fraction of one step for each plane.
+    pub fn upper_wins(&self, d_upper: f32, d_lower: f32, jitter: Vec2) -> bool {
+        let steps = ((1u64 << self.bits) - 1) as f64;
+        let store = |d: f32, j: f32| {
+            let z = raster::ndc_depth_wgpu(d, self.near, self.far) as f64;
+            (z * steps + j as f64).round()
+        };
+        store(d_upper, jitter.x) < store(d_lower, jitter.y)
+    }
+
+    /// The camera's view (RGBA bytes, sRGB, row 0 on top), `width × height` pixels, each side at
+    /// most [`MAX_IMAGE`]: sky, then the upper plane in red squares where it wins and the lower
+    /// plane in blue where the depth buffer lets it through.
+    pub fn image(&self, width: usize, height: usize) -> Result<Vec<u8>, String> {
+        if !(1..=MAX_IMAGE).contains(&width) || !(1..=MAX_IMAGE).contains(&height) {
+            return Err(format!(
+                "image sides must be 1 to {MAX_IMAGE} pixels, got {width} × {height}"
+            ));
+        }
+        let tan = (0.5 * IMAGE_FOV).tan();
+        let aspect = width as f32 / height as f32;
+        let (sin_p, cos_p) = PITCH.sin_cos();
+        let mut out = Vec::with_capacity(width * height * 4);
+        let srgb = |c: Vec3| {
+            let c = palette::css(c);
+            let h = |k: usize| u8::from_str_radix(&c[k..k + 2], 16).unwrap_or(0);
+            [h(1), h(3), h(5), 255]
+        };
+        let (sky, clipped) = (srgb(Vec3::new(0.6, 0.75, 0.9)), srgb(Vec3::splat(0.5)));
+        let shades = [
+            srgb(UPPER_PLANE),
+            srgb(UPPER_PLANE * 0.55),
+            srgb(LOWER_PLANE),
+            srgb(LOWER_PLANE * 0.55),
+        ];
+        for j in 0..height {
+            for i in 0..width {
+                let x = (2.0 * (i as f32 + 0.5) / width as f32 - 1.0) * tan * aspect;
+                let y = (1.0 - 2.0 * (j as f32 + 0.5) / height as f32) * tan;
+                // The view ray (x, y, −1), pitched down: its world height changes by
+                // `down` per unit of view depth, so it meets the plane h below the eye at view
+                // depth d = h / down.
+                let down = sin_p - y * cos_p;
+                let forward = cos_p + y * sin_p;
+                let px = if down <= 1e-6 {
+                    sky
+                } else {
+                    let d_upper = EYE_HEIGHT / down;
+                    let d_lower = (EYE_HEIGHT + self.gap) / down;
+                    if d_upper > self.far {
+                        clipped
+                    } else {
+                        let jitter = Vec2::new(hash(i, j, 1), hash(i, j, 2)) - 0.5;
+                        let upper = d_lower > self.far || self.upper_wins(d_upper, d_lower, jitter);
+                        let d = if upper { d_upper } else { d_lower };
+                        let (wx, wz) = (x * d, forward * d);
+                        let checker = ((wx.floor() + wz.floor()) as i64).rem_euclid(2) as usize;
+                        shades[if upper { 0 } else { 2 } + checker]
+                    }
+                };
+                out.extend(px);
+            }
+        }
+        Ok(out)
+    }
+
+    /// How much taller than life the bars of the 3D view are drawn.
+    pub const BAR_SCALE: f32 = 40.0;
+
+    /// A side view: the camera, the two planes out to 40 m (or z_far), and every 2 m a bar as tall
+    /// as one depth step there ([`Self::BAR_SCALE`] times taller than life, capped at 6 m), orange
+    /// where it exceeds the planes' separation along the line of sight, whose height (same scale)
+    /// the grey line follows. Returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        let reach = self.far.min(40.0);
+        let eye = Vec3::new(0.0, EYE_HEIGHT, 0.0);
+        let slab = |y: f32, color: Vec3, frame: &mut Frame| {
+            let model = Mat4::from_translation(Vec3::new(0.0, y - 0.005, -reach / 2.0))
+                * Mat4::from_scale(Vec3::new(1.0, 0.005, reach / 2.0));
+            frame.mesh(MeshId::CUBE, model, color);
+        };
+        slab(0.0, UPPER_PLANE, frame);
+        slab(-self.gap, LOWER_PLANE, frame);
+        frame.point(eye, 0.15, palette::DARK);
+        frame.label(eye + Vec3::Y * 0.4, "eye", palette::DARK);
+        let (sin_p, cos_p) = PITCH.sin_cos();
+        let axis = Vec3::new(0.0, -sin_p, -cos_p);
+        let to_ground = EYE_HEIGHT / sin_p;
+        frame.line(eye, eye + axis * to_ground.min(reach), palette::GREY);
+        for k in 1..=(reach / 2.0) as usize {
+            let d = 2.0 * k as f32;
+            let step = raster::depth_step(d, self.near, self.far, self.bits);
+            let color = if step > self.separation(d) {
+                palette::ORANGE
+            } else {
+                palette::GREEN
+            };
+            let top = Vec3::new(1.1, (step * Self::BAR_SCALE).min(6.0), -d);
+            frame.line(Vec3::new(1.1, 0.0, -d), top, color);
+            frame.point(top, 0.25, color);
+        }
+        let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
+        frame.line(sep(0.0), sep(reach), palette::GREY);
+        frame.label(
+            sep(0.7 * reach) + Vec3::Y * 0.5,
+            "separation d·gap/h (×40)",
+            palette::GREY,
+        );
+        frame.label(
+            Vec3::new(1.1, 2.0, -6.0),
+            "one depth step (×40)",
+            palette::GREEN,
+        );
+        let from = self.fighting_from();
+        if from < reach {
+            frame.line(
+                Vec3::new(1.1, 0.0, -from),
+                Vec3::new(1.1, 6.2, -from),
+                palette::ORANGE,
+            );
+            frame.label(
+                Vec3::new(1.1, 6.5, -from),
+                "fighting from here",
+                palette::ORANGE,
+            );
+        }
+        format!(
+            "z_far / z_near = {}. With {} bits, one depth step is worth {} m at 1 m, {} m at 10 m and {} m at \
+             z_far. Along a line of sight the floors are d · gap / h apart; the step exceeds that beyond {} m{}.",
+            format_number(self.far / self.near),
+            self.bits,
+            format_number(raster::depth_step(1.0, self.near, self.far, self.bits)),
+            format_number(raster::depth_step(10.0, self.near, self.far, self.bits)),
+            format_number(raster::depth_step(self.far, self.near, self.far, self.bits)),
+            format_number(from),
+            if from > self.far { ", past z_far: no fighting" } else { ": there the floors fight" },
+        )
+    }
+}
+
+/// A fixed pseudo-random number in [0, 1) per pixel and channel (the same every frame).
+fn hash(i: usize, j: usize, k: u32) -> f32 {
+    let mut h = (i as u32).wrapping_mul(0x9e37_79b1)
+        ^ (j as u32).wrapping_mul(0x85eb_ca6b)
+        ^ k.wrapping_mul(0xc2b2_ae35);
+    h ^= h >> 15;
+    h = h.wrapping_mul(0x2c1b_3c6d);
+    h ^= h >> 12;
+    h = h.wrapping_mul(0x297a_2d39);
+    h ^= h >> 15;
+    (h >> 8) as f32 / (1u32 << 24) as f32
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 4: normals.
+
+/// Colours of Figure 4.
+pub const TRUE_NORMAL: Vec3 = palette::Y_AXIS;
+pub const WRONG_NORMAL: Vec3 = palette::X_AXIS;
+
+/// Figure 4: a low-poly sphere, flat-shaded (one normal per face) or smooth (averaged normals
+/// per vertex), stretched along x; its normals as arrows, transformed by the normal matrix
+/// (green) and, wrongly, by the model matrix (red).
+pub struct Normals {
+    flat: bool,
+    scale_x: f32,
+    show_wrong: bool,
+    use_exercise: bool,
+    runner: Runner,
+    positions: Vec<Vec3>,
+    indices: Vec<u32>,
+    smooth: Vec<Vec3>,
+    exercise_note: String,
+}
+
+impl Default for Normals {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Normals {
+    pub fn new() -> Self {
+        let (positions, indices) = uv_sphere_indexed(10, 6);
+        let mut smooth = vec![Vec3::ZERO; positions.len()];
+        raster::vertex_normals(&positions, &indices, &mut smooth).expect("a valid sphere");
+        Normals {
+            flat: false,
+            scale_x: 3.0,
+            show_wrong: true,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            positions,
+            indices,
+            smooth,
+            exercise_note: String::new(),
+        }
+    }
+
+    pub fn set_flat(&mut self, flat: bool) {
+        self.flat = flat;
+    }
+
+    /// Stretch along x, 0.2 to 4.
+    pub fn set_scale_x(&mut self, s: f32) -> Result<(), String> {
+        self.scale_x = in_range("scale x", s, 0.2, 4.0)?;
+        Ok(())
+    }
+
+    pub fn set_show_wrong(&mut self, on: bool) {
+        self.show_wrong = on;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// Uses the student's `vertex_normals` (exercise 0.2) for the smooth mesh; recomputes the
+    /// smooth normals and the note. The caller re-uploads [`Self::smooth_mesh`]'s normals.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        let mut reference = vec![Vec3::ZERO; self.positions.len()];
+        raster::vertex_normals(&self.positions, &self.indices, &mut reference)
+            .expect("a valid sphere");
+        self.smooth = reference.clone();
+        self.exercise_note.clear();
+        if !on {
+            return;
+        }
+        let idx: Vec<f32> = self.indices.iter().map(|&i| i as f32).collect();
+        match run::vertex_normals(self.runner, self.positions.clone(), idx) {
+            Err(f) => self.exercise_note = failure_note("exercise 0.2 vertex_normals", FILE, &f),
+            Ok(yours) => {
+                let flat_ref: Vec<f32> = reference.iter().flat_map(|v| v.to_array()).collect();
+                let flat_yours: Vec<f32> = yours.iter().flat_map(|v| v.to_array()).collect();
+                let (ok, note) = compare_note(
+                    "vertex_normals",
+                    "this sphere",
+                    &flat_yours,
+                    &flat_ref,
+                    1e-3,
+                );
+                self.exercise_note = if ok {
+                    note
+                } else {
+                    // Say which vertex, not 100 numbers.
+                    let worst = (0..reference.len())
+                        .max_by(|&a, &b| {
+                            let e = |k: usize| {
+                                yours
+                                    .get(k)
+                                    .map_or(f32::INFINITY, |y| (*y - reference[k]).length())
+                            };
+                            e(a).partial_cmp(&e(b)).unwrap_or(std::cmp::Ordering::Equal)
+                        })
+                        .unwrap_or(0);
+                    let show = |v: Option<&Vec3>| {
+                        v.map_or("missing".to_string(), |v| {
+                            format!(
+                                "({}, {}, {})",
+                                format_number(v.x),
+                                format_number(v.y),
+                                format_number(v.z)
+                            )
+                        })
+                    };
+                    format!(
+                        "Your vertex_normals differs on this sphere ({} normals for {} vertices): at vertex {worst}, \
+                         yours {}, reference {}.",
+                        yours.len(),
+                        reference.len(),
+                        show(yours.get(worst)),
+                        show(reference.get(worst)),
+                    )
+                };
+                if yours.len() == self.smooth.len() && yours.iter().all(|v| v.is_finite()) {
+                    self.smooth = yours;
+                }
+            }
+        }
+    }
+
+    /// The smooth mesh: shared positions with averaged normals (the student's when used).
+    pub fn smooth_mesh(&self) -> MeshData {
+        MeshData {
+            positions: self.positions.clone(),
+            normals: self.smooth.clone(),
+            indices: self.indices.clone(),
+        }
+    }
+
+    /// The flat mesh: every triangle with its own corners and its face normal.
+    pub fn flat_mesh(&self) -> MeshData {
+        let (positions, normals) =
+            raster::flat_shaded(&self.positions, &self.indices).expect("a valid sphere");
+        let indices = (0..positions.len() as u32).collect();
+        MeshData {
+            positions,
+            normals,
+            indices,
+        }
+    }
+
+    fn model(&self) -> Mat4 {
+        Mat4::from_translation(Vec3::new(0.0, 1.3, 0.0))
+            * Mat4::from_scale(Vec3::new(self.scale_x, 1.0, 1.0))
+    }
+
+    /// Where each normal starts (object space) and the normal: per face centre when flat, per
+    /// vertex when smooth.
+    pub fn normals(&self) -> Vec<(Vec3, Vec3)> {
+        if self.flat {
+            self.indices
+                .chunks_exact(3)
+                .map(|t| {
+                    let [a, b, c] = [t[0], t[1], t[2]].map(|i| self.positions[i as usize]);
+                    (
+                        (a + b + c) / 3.0,
+                        raster::face_normal(a, b, c).normalize_or_zero(),
+                    )
+                })
+                .collect()
+        } else {
+            self.positions
+                .iter()
+                .copied()
+                .zip(self.smooth.iter().copied())
+                .collect()
+        }
+    }
+
+    /// The largest angle, in degrees, between a normal transformed by the model matrix itself and
+    /// the true one (by the normal matrix).
+    pub fn worst_wrong_angle_deg(&self) -> f32 {
+        let m = self.model();
+        let (linear, nm) = (Mat3::from_mat4(m), raster::normal_matrix(m));
+        self.normals()
+            .iter()
+            .map(|&(_, n)| {
+                let (a, b) = (
+                    (linear * n).normalize_or_zero(),
+                    (nm * n).normalize_or_zero(),
+                );
+                a.dot(b).clamp(-1.0, 1.0).acos() / DEG
+            })
+            .fold(0.0, f32::max)
+    }
+
+    /// Draws the mesh (`flat_id` or `smooth_id`, uploaded by the caller) and the normals.
+    pub fn draw(&self, frame: &mut Frame, flat_id: MeshId, smooth_id: MeshId) -> String {
+        let m = self.model();
+        let (linear, nm) = (Mat3::from_mat4(m), raster::normal_matrix(m));
+        frame.grid(12, 0.5);
+        frame.mesh(
+            if self.flat { flat_id } else { smooth_id },
+            m,
+            Vec3::splat(0.7),
+        );
+        let len = 0.35;
+        for (p, n) in self.normals() {
+            let base = m.transform_point3(p);
+            frame.arrow(
+                base,
+                base + (nm * n).normalize_or_zero() * len,
+                TRUE_NORMAL,
+                0.07,
+            );
+            if self.show_wrong && (self.scale_x - 1.0).abs() > 1e-3 {
+                frame.arrow(
+                    base,
+                    base + (linear * n).normalize_or_zero() * len,
+                    WRONG_NORMAL,
+                    0.07,
+                );
+            }
+        }
+        let mut note = format!(
+            "{} shading: {}. Stretched {}× along x. Transformed by M itself, a normal leans up to {}° away \
+             from the true one (M⁻¹)ᵀ n.",
+            if self.flat { "Flat" } else { "Smooth" },
+            if self.flat { "one normal per face" } else { "one averaged normal per vertex" },
+            format_number(self.scale_x),
+            format_number(self.worst_wrong_angle_deg()),
+        );
+        if self.use_exercise {
+            note += " ";
+            note += &self.exercise_note;
+        }
+        note
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 5: shading.
+
+/// Colours of Figure 5's vectors.
+pub mod shading_colors {
+    use super::palette;
+    use glam::Vec3;
+    pub const N: Vec3 = palette::Z_AXIS;
+    pub const L: Vec3 = palette::ORANGE;
+    pub const V: Vec3 = palette::DARK;
+    pub const R: Vec3 = palette::PURPLE;
+    pub const H: Vec3 = palette::TEAL;
+}
+
+/// Figure 5: a sphere lit by one light; at one fragment the vectors n, l, v and r (Phong) or h
+/// (Blinn-Phong); beside it, CPU images of each term and of both models' totals.
+pub struct Shading {
+    light: Vec3,
+    material: Material,
+    model: ShadingModel,
+    fragment: Vec3,
+    use_exercise: bool,
+    runner: Runner,
+}
+
+impl Default for Shading {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// A unit direction from an azimuth about +y (0 = towards +z, the images' eye) and an elevation.
+fn direction(azimuth_deg: f32, elevation_deg: f32) -> Vec3 {
+    let (a, e) = (azimuth_deg * DEG, elevation_deg * DEG);
+    Vec3::new(e.cos() * a.sin(), e.sin(), e.cos() * a.cos())
+}
+
+/// Where the sphere of Figure 5 stands.
+const SPHERE_CENTRE: Vec3 = Vec3::new(0.0, 1.3, 0.0);
+
+impl Shading {
+    pub fn new() -> Self {
+        Shading {
+            light: direction(40.0, 35.0),
+            material: Material::default(),
+            model: ShadingModel::BlinnPhong,
+            fragment: direction(0.0, -15.0),
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+        }
+    }
+
+    /// The light's direction from azimuth and elevation in degrees (each finite).
+    pub fn set_light_deg(&mut self, azimuth: f32, elevation: f32) -> Result<(), String> {
+        self.light = direction(
+            finite("light azimuth", azimuth)?,
+            in_range("light elevation", elevation, -90.0, 90.0)?,
+        );
+        Ok(())
+    }
+
+    /// The light where the reader points on an image, `(u, v) ∈ [0, 1]²`.
+    pub fn set_light_from_image(&mut self, u: f32, v: f32) -> Result<(), String> {
+        self.light = light_from_image(in_range("u", u, 0.0, 1.0)?, in_range("v", v, 0.0, 1.0)?);
+        Ok(())
+    }
+
+    /// The light's azimuth and elevation in degrees (to put the sliders where a drag left it).
+    pub fn light_deg(&self) -> (f32, f32) {
+        let l = self.light;
+        (l.x.atan2(l.z) / DEG, l.y.clamp(-1.0, 1.0).asin() / DEG)
+    }
+
+    /// The light direction (unit, from the surface to the light).
+    pub fn light(&self) -> Vec3 {
+        self.light
+    }
+
+    /// `k_a, k_d, k_s` in [0, 1] and the exponent in [1, 256].
+    pub fn set_material(
+        &mut self,
+        ka: f32,
+        kd: f32,
+        ks: f32,
+        shininess: f32,
+    ) -> Result<(), String> {
+        self.material.ambient = in_range("ambient k_a", ka, 0.0, 1.0)?;
+        self.material.diffuse = in_range("diffuse k_d", kd, 0.0, 1.0)?;
+        self.material.specular = in_range("specular k_s", ks, 0.0, 1.0)?;
+        self.material.shininess = in_range("shininess", shininess, 1.0, 256.0)?;
+        Ok(())
+    }
+
+    /// "phong" or "blinn-phong".
+    pub fn set_model(&mut self, model: &str) -> Result<(), String> {
+        self.model = match model {
+            "phong" => ShadingModel::Phong,
+            "blinn-phong" => ShadingModel::BlinnPhong,
+            _ => {
+                return Err(format!(
+                    "model must be \"phong\" or \"blinn-phong\", got {model:?}"
+                ))
+            }
+        };
+        Ok(())
+    }
+
+    /// The fragment whose vectors are drawn: azimuth and elevation on the sphere, in degrees.
+    pub fn set_fragment_deg(&mut self, azimuth: f32, elevation: f32) -> Result<(), String> {
+        self.fragment = direction(
+            finite("fragment azimuth", azimuth)?,
+            in_range("fragment elevation", elevation, -90.0, 90.0)?,
+        );
+        Ok(())
+    }
+
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// An image of one term: "ambient", "diffuse", "specular" (of the chosen model), "phong" or
+    /// "blinn-phong" (the totals). RGBA bytes, `size × size`, size 8 to 512.
+    pub fn image(&self, which: &str, size: usize) -> Result<Vec<u8>, String> {
+        if !(8..=raster::shading::MAX_IMAGE_SIZE).contains(&size) {
+            return Err(format!(
+                "image size must be 8 to {}, got {size}",
+                raster::shading::MAX_IMAGE_SIZE
+            ));
+        }
+        let (model, term) = match which {
+            "ambient" => (self.model, Term::Ambient),
+            "diffuse" => (self.model, Term::Diffuse),
+            "specular" => (self.model, Term::Specular),
+            "phong" => (ShadingModel::Phong, Term::Total),
+            "blinn-phong" => (ShadingModel::BlinnPhong, Term::Total),
+            _ => return Err(format!("no image named {which:?}")),
+        };
+        Ok(sphere_image(size, self.light, &self.material, model, term))
+    }
+
+    /// The view direction of the fragment: the images' eye is far along +z.
+    const VIEW: Vec3 = Vec3::Z;
+
+    /// Draws the sphere, the light and the vectors at the fragment; returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        use shading_colors::*;
+        let (n, l, v) = (self.fragment, self.light, Self::VIEW);
+        frame.grid(12, 0.5);
+        frame.mesh(
+            MeshId::SPHERE,
+            Mat4::from_translation(SPHERE_CENTRE),
+            self.material.color,
+        );
+        let p = SPHERE_CENTRE + n;
+        let len = 1.3;
+        frame.arrow(p, p + n * len, N, 0.1);
+        frame.label(p + n * len, "n", N);
+        frame.arrow(p, p + l * len, L, 0.1);
+        frame.label(p + l * len, "l", L);
+        frame.arrow(p, p + v * len, V, 0.1);
+        frame.label(p + v * len, "v", V);
+        frame.point(SPHERE_CENTRE + l * 2.6, 0.12, Vec3::new(1.0, 0.8, 0.2));
+        frame.label(SPHERE_CENTRE + l * 2.6 + Vec3::Y * 0.25, "light", L);
+        match self.model {
+            ShadingModel::Phong => {
+                let r = 2.0 * n.dot(l) * n - l;
+                frame.arrow(p, p + r * len, R, 0.1);
+                frame.label(p + r * len, "r", R);
+            }
+            ShadingModel::BlinnPhong => {
+                let h = (l + v).normalize_or_zero();
+                frame.arrow(p, p + h * len, H, 0.1);
+                frame.label(p + h * len, "h", H);
+            }
+        }
+        let t = raster::shade(n, l, v, &self.material, self.model);
+        let rgb = |c: Vec3| {
+            format!(
+                "({}, {}, {})",
+                format_number(c.x),
+                format_number(c.y),
+                format_number(c.z)
+            )
+        };
+        let mut note = format!(
+            "At the fragment: n·l = {}; ambient {} + diffuse {} + specular {} = {} (linear RGB).",
+            format_number(n.dot(l)),
+            rgb(t.ambient),
+            rgb(t.diffuse),
+            format_number(t.specular.x),
+            rgb(t.total()),
+        );
+        if self.use_exercise {
+            note += " ";
+            note += &self.exercise_note();
+        }
+        note
+    }
+
+    /// Compares the student's Blinn-Phong colour (exercise 0.3) at the fragment with the reference.
+    pub fn exercise_note(&self) -> String {
+        let (n, l, v, m) = (self.fragment, self.light, Self::VIEW, self.material);
+        let weights = [m.ambient, m.diffuse, m.specular];
+        match run::blinn_phong(self.runner, n, l, v, m.color, weights, m.shininess) {
+            Err(f) => failure_note("exercise 0.3 blinn_phong", FILE, &f),
+            Ok(yours) => {
+                let reference =
+                    raster::blinn_phong(n, l, v, &material(m.color, weights, m.shininess));
+                compare_note(
+                    "blinn_phong",
+                    "the marked fragment",
+                    &yours.to_array(),
+                    &reference.to_array(),
+                    TOLERANCE,
+                )
+                .1
+            }
+        }
+    }
+}

@@ -1,0 +1,179 @@
+//! Bindings for lesson 02b, "Expressive animation": thin wrappers around
+//! [`crate::figures::expressive`], which holds the scenes' state, validation and drawing.
+
+use super::{js, Viewer};
+use crate::figures::expressive::{FollowThrough, JumpComparison, Spacing};
+use wasm_bindgen::prelude::*;
+
+/// Figure 1: timing and spacing on one path.
+#[wasm_bindgen]
+pub struct SpacingScene {
+    scene: Spacing,
+}
+
+#[wasm_bindgen]
+impl SpacingScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> SpacingScene {
+        let mut scene = Spacing::new();
+        scene.set_runner(super::sandbox::run);
+        SpacingScene { scene }
+    }
+
+    /// "linear", "slow in and out", "ease in" or "ease out".
+    #[wasm_bindgen(js_name = setEase)]
+    pub fn set_ease(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_ease(name).map_err(js)
+    }
+
+    /// The arc's height above the straight line, 0 to 3 m.
+    #[wasm_bindgen(js_name = setArcHeight)]
+    pub fn set_arc_height(&mut self, h: f32) -> Result<(), JsError> {
+        self.scene.set_arc_height(h).map_err(js)
+    }
+
+    /// Ghosts at equal time steps, 2 to 60.
+    #[wasm_bindgen(js_name = setGhosts)]
+    pub fn set_ghosts(&mut self, n: f32) -> Result<(), JsError> {
+        self.scene.set_ghosts(n).map_err(js)
+    }
+
+    #[wasm_bindgen(js_name = setSquash)]
+    pub fn set_squash(&mut self, on: bool) {
+        self.scene.set_squash(on);
+    }
+
+    /// Uses the student's `squash_stretch_scale` (exercise 2b.1).
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+
+    /// Seconds from key to key.
+    #[wasm_bindgen(getter)]
+    pub fn duration(&self) -> f32 {
+        self.scene.duration
+    }
+
+    /// `[t₀ (s), fraction₀, linear₀, t₁, …]`.
+    #[wasm_bindgen(js_name = sampleSpacing)]
+    pub fn sample_spacing(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+        Ok(self.scene.sample_spacing(samples).map_err(js)?.concat())
+    }
+
+    /// Draws the figure at `t ∈ [0, 1]` of the time; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, t: f32) -> Result<String, JsError> {
+        let note = self.scene.draw(&mut viewer.renderer.frame, t).map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for SpacingScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Figure 2: a jump, plain and with the principles.
+#[wasm_bindgen]
+pub struct JumpScene {
+    scene: JumpComparison,
+}
+
+#[wasm_bindgen]
+impl JumpScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> JumpScene {
+        let mut scene = JumpComparison::new();
+        scene.set_runner(super::sandbox::run);
+        JumpScene { scene }
+    }
+
+    /// Crouch depth (0 to 0.6) and stretch per m/s (0 to 0.2).
+    #[wasm_bindgen(js_name = setPrinciples)]
+    pub fn set_principles(&mut self, anticipation: f32, stretch: f32) -> Result<(), JsError> {
+        self.scene.set_principles(anticipation, stretch).map_err(js)
+    }
+
+    /// Uses the student's `squash_stretch_scale` (exercise 2b.1).
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+
+    /// The loop's length, seconds.
+    #[wasm_bindgen(getter)]
+    pub fn duration(&self) -> f32 {
+        self.scene.duration()
+    }
+
+    /// `[t₀, plain₀, principled₀, stretch₀, t₁, …]`.
+    #[wasm_bindgen(js_name = sampleHeights)]
+    pub fn sample_heights(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+        Ok(self.scene.sample_heights(samples).map_err(js)?.concat())
+    }
+
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for JumpScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Figure 3: follow-through on an antenna.
+#[wasm_bindgen]
+pub struct FollowThroughScene {
+    scene: FollowThrough,
+}
+
+#[wasm_bindgen]
+impl FollowThroughScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> FollowThroughScene {
+        let mut scene = FollowThrough::new();
+        scene.set_runner(super::sandbox::run);
+        FollowThroughScene { scene }
+    }
+
+    /// Stiffness (10 to 600 1/s²), damping (0 to 60 1/s), joints (2 to 20).
+    pub fn set(&mut self, stiffness: f32, damping: f32, joints: f32) -> Result<(), JsError> {
+        self.scene.set(stiffness, damping, joints).map_err(js)
+    }
+
+    /// Compares the student's `spring_step` (exercise 2b.2) with the reference.
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+
+    /// `[t₀, base x₀, tip x₀, t₁, …]`.
+    #[wasm_bindgen(js_name = sampleTip)]
+    pub fn sample_tip(&mut self, samples: usize) -> Result<Vec<f32>, JsError> {
+        Ok(self.scene.sample_tip(samples).map_err(js)?.concat())
+    }
+
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for FollowThroughScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}

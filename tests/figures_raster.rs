@@ -1,0 +1,344 @@
+//! Native tests of lesson 00's figures (src/figures/raster.rs): what they draw, what they reject,
+//! and what their notes say about the student's exercises.
+
+use glam::{Vec2, Vec3};
+use inbetween::draw::{Frame, MeshId};
+use inbetween::exercises::run::{direct, Failure, Flat};
+use inbetween::figures::raster::{
+    frustum_colors as fc, DepthPrecision, Frustum, MeshStorage, Normals, Shading, INDEXED_COLOR,
+    SOUP_COLOR, TRUE_NORMAL, WRONG_NORMAL,
+};
+use inbetween::raster;
+
+/// A correct student: the reference for every exercise of this lesson.
+fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut rest = args;
+    let mut out = Vec::new();
+    match name {
+        "perspective_matrix" => raster::perspective_wgpu(args[0], args[1], args[2], args[3])
+            .unwrap()
+            .put(&mut out),
+        "vertex_normals" => {
+            let p = Vec::<Vec3>::take(&mut rest).unwrap();
+            let i: Vec<u32> = Vec::<f32>::take(&mut rest)
+                .unwrap()
+                .iter()
+                .map(|&x| x as u32)
+                .collect();
+            let mut n = vec![Vec3::ZERO; p.len()];
+            raster::vertex_normals(&p, &i, &mut n).unwrap();
+            n.put(&mut out)
+        }
+        "blinn_phong" => {
+            let v = |k: usize| Vec3::from_slice(&args[k..k + 3]);
+            let m = inbetween::exercises::raster::material(
+                v(9),
+                [args[12], args[13], args[14]],
+                args[15],
+            );
+            raster::blinn_phong(v(0), v(3), v(6), &m).put(&mut out)
+        }
+        _ => return direct(name, args),
+    }
+    Ok(out)
+}
+
+/// Typical mistakes: OpenGL's matrix instead of wgpu's; normals not normalised; Phong instead
+/// of Blinn-Phong.
+fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut rest = args;
+    let mut out = Vec::new();
+    match name {
+        "perspective_matrix" => raster::perspective_gl(args[0], args[1], args[2], args[3])
+            .unwrap()
+            .put(&mut out),
+        "vertex_normals" => {
+            let p = Vec::<Vec3>::take(&mut rest).unwrap();
+            let i: Vec<u32> = Vec::<f32>::take(&mut rest)
+                .unwrap()
+                .iter()
+                .map(|&x| x as u32)
+                .collect();
+            let mut n = vec![Vec3::ZERO; p.len()];
+            raster::vertex_normals(&p, &i, &mut n).unwrap();
+            n.iter().map(|x| *x * 2.0).collect::<Vec<_>>().put(&mut out)
+        }
+        "blinn_phong" => {
+            let v = |k: usize| Vec3::from_slice(&args[k..k + 3]);
+            let m = inbetween::exercises::raster::material(
+                v(9),
+                [args[12], args[13], args[14]],
+                args[15],
+            );
+            raster::phong(v(0), v(3), v(6), &m).put(&mut out)
+        }
+        _ => return direct(name, args),
+    }
+    Ok(out)
+}
+
+fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::Panicked(
+        "attempt to divide by zero (src/exercises/raster.rs:30:5)".into(),
+    ))
+}
+
+fn stub(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::NotDone)
+}
+
+#[test]
+fn mesh_figure_draws_both_storages_with_their_sizes() {
+    let mut scene = MeshStorage::new();
+    scene.set_shape("tetrahedron").unwrap();
+    let mut f = Frame::default();
+    let note = scene.draw(&mut f);
+    let soup_points = f
+        .points
+        .iter()
+        .filter(|p| Vec3::from_slice(&p.color[..3]) == SOUP_COLOR)
+        .count();
+    let indexed_points = f
+        .points
+        .iter()
+        .filter(|p| Vec3::from_slice(&p.color[..3]) == INDEXED_COLOR)
+        .count();
+    assert_eq!(
+        (soup_points, indexed_points),
+        (12, 4),
+        "12 corners in the soup, 4 positions indexed"
+    );
+    assert_eq!(
+        f.segments_of(INDEXED_COLOR).count(),
+        6,
+        "a tetrahedron has 6 edges"
+    );
+    assert!(note.contains("144 B") && note.contains("96 B"), "{note}");
+    scene.set_shape("sphere").unwrap();
+    scene.set_segments(64.0).unwrap();
+    let s = scene.sizes();
+    assert!(s.soup_bytes > s.indexed_bytes * 19 / 10);
+    assert!(scene.set_shape("cube").unwrap_err().contains("shape"));
+    assert!(scene.set_segments(1000.0).unwrap_err().contains("segments"));
+    assert!(scene.set_segments(f32::NAN).is_err());
+}
+
+#[test]
+fn frustum_point_is_clipped_outside_and_its_ndc_is_read_out() {
+    let mut scene = Frustum::new();
+    scene.set_offset(0.0, 0.0).unwrap();
+    // s = 0: half of z_near, clipped; in the middle: inside; s = 1: past z_far.
+    let color_of_p = |scene: &Frustum, s: f32| {
+        let mut f = Frame::default();
+        scene.draw(&mut f, s).unwrap();
+        let l = f.labels.iter().find(|l| l.text == "p").unwrap().color;
+        (l, f)
+    };
+    assert_eq!(color_of_p(&scene, 0.0).0, fc::OUTSIDE);
+    assert_eq!(color_of_p(&scene, 0.5).0, fc::POINT);
+    assert_eq!(color_of_p(&scene, 1.0).0, fc::OUTSIDE);
+    // Where the point crosses z_near and z_far, the depth is 0 and 1.
+    let (near, far) = (1.0, 8.0);
+    let s_at = |d: f32| (d - 0.5 * near) / (1.15 * far - 0.5 * near);
+    let r = scene.readout(s_at(near)).unwrap();
+    assert!(r[6].abs() < 1e-4 && (r[13] + 1.0).abs() < 1e-4, "{r:?}");
+    let r = scene.readout(s_at(far)).unwrap();
+    assert!((r[6] - 1.0).abs() < 1e-4 && (r[13] - 1.0).abs() < 1e-4);
+    assert!((r[3] - far).abs() < 1e-3, "w is the distance");
+    let depth = scene.sample_depth(50).unwrap();
+    assert!(
+        depth.windows(2).all(|w| w[1][1] > w[0][1]),
+        "depth grows with distance"
+    );
+    assert!(scene
+        .set_frustum(60.0, 5.0, 4.0)
+        .unwrap_err()
+        .contains("z_far"));
+    assert!(scene
+        .set_frustum(0.0, 1.0, 4.0)
+        .unwrap_err()
+        .contains("field of view"));
+    assert!(scene.draw(&mut Frame::default(), 2.0).is_err());
+}
+
+#[test]
+fn frustum_reports_the_students_matrix() {
+    let mut scene = Frustum::new();
+    scene.set_use_exercise(true);
+    scene.set_runner(reference);
+    let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(note.contains("matches the reference"), "{note}");
+    scene.set_runner(wrong);
+    let note = scene.exercise_note();
+    assert!(
+        note.contains("differs") && note.contains("z_near to depth -1.000"),
+        "{note}"
+    );
+    scene.set_runner(panics);
+    assert!(scene
+        .exercise_note()
+        .contains("panicked: attempt to divide by zero (src/exercises/raster.rs:30:5)"));
+    scene.set_runner(stub);
+    assert!(scene
+        .exercise_note()
+        .starts_with("Not done yet: exercise 0.1"));
+}
+
+#[test]
+fn depth_buffer_fights_only_beyond_the_predicted_distance() {
+    let mut scene = DepthPrecision::new();
+    scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
+    let from = scene.fighting_from();
+    let h = inbetween::figures::raster::EYE_HEIGHT;
+    // Well inside: the upper plane always wins whatever the rounding noise; far beyond: it
+    // often loses.
+    let noise: Vec<Vec2> = (0..64)
+        .map(|k| Vec2::new((k % 8) as f32 / 7.0 - 0.5, (k / 8) as f32 / 7.0 - 0.5))
+        .collect();
+    let wins = |d: f32| {
+        noise
+            .iter()
+            .filter(|&&j| scene.upper_wins(d, d * (h + 0.01) / h, j))
+            .count()
+    };
+    assert_eq!(wins(from * 0.3), 64);
+    assert!(wins(from * 4.0) < 40, "{}", wins(from * 4.0));
+    // 24 bits push the fighting 256 times farther; a 10 times larger z_near, 10 times.
+    scene.set(0.1, 1000.0, 0.01, 24.0).unwrap();
+    assert!((scene.fighting_from() / from - 256.0).abs() < 0.5);
+    scene.set(1.0, 1000.0, 0.01, 16.0).unwrap();
+    assert!((scene.fighting_from() / from - 10.0).abs() < 0.1);
+    let img = scene.image(64, 48).unwrap();
+    assert_eq!(img.len(), 64 * 48 * 4);
+    assert!(scene.image(10_000, 10).is_err());
+    assert!(scene
+        .set(0.1, 1000.0, 0.05, 8.0)
+        .unwrap_err()
+        .contains("bits"));
+    assert!(scene
+        .set(2.0, 1.0, 0.05, 16.0)
+        .unwrap_err()
+        .contains("z_far"));
+    let mut f = Frame::default();
+    assert!(
+        scene.draw(&mut f).contains("z_far / z_near = 1000.000"),
+        "the ratio in the note"
+    );
+}
+
+#[test]
+fn z_fighting_shows_blue_pixels_only_with_the_short_buffer() {
+    let blue = |scene: &DepthPrecision| {
+        let img = scene.image(160, 120).unwrap();
+        img.chunks_exact(4)
+            .filter(|p| p[2] > 120 && p[0] < 90)
+            .count()
+    };
+    let mut scene = DepthPrecision::new();
+    scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
+    let sixteen = blue(&scene);
+    scene.set(0.1, 1000.0, 0.01, 24.0).unwrap();
+    let twenty_four = blue(&scene);
+    assert!(sixteen > 200, "{sixteen}");
+    assert!(twenty_four < sixteen / 5, "{twenty_four} vs {sixteen}");
+}
+
+#[test]
+fn normals_figure_draws_true_and_wrong_normals() {
+    let mut scene = Normals::new();
+    let mut f = Frame::default();
+    scene.set_scale_x(1.0).unwrap();
+    scene.draw(&mut f, MeshId(3), MeshId(4));
+    let count = |f: &Frame, c: Vec3| f.segments_of(c).count();
+    let vertices = scene.smooth_mesh().positions.len();
+    assert_eq!(count(&f, TRUE_NORMAL), vertices);
+    assert_eq!(count(&f, WRONG_NORMAL), 0, "no scale: M n is right");
+    assert!(scene.worst_wrong_angle_deg() < 1e-3);
+    scene.set_scale_x(3.0).unwrap();
+    f.clear();
+    scene.draw(&mut f, MeshId(3), MeshId(4));
+    assert_eq!(count(&f, WRONG_NORMAL), vertices);
+    assert!(scene.worst_wrong_angle_deg() > 20.0);
+    assert_eq!(
+        f.meshes.iter().filter(|m| m.mesh == MeshId(4)).count(),
+        1,
+        "the smooth mesh"
+    );
+    scene.set_flat(true);
+    f.clear();
+    scene.draw(&mut f, MeshId(3), MeshId(4));
+    assert_eq!(
+        count(&f, TRUE_NORMAL),
+        scene.flat_mesh().positions.len() / 3,
+        "one per face"
+    );
+    assert!(scene.set_scale_x(0.0).is_err());
+    // Smooth normals are unit; flat ones repeat per corner.
+    assert!(scene
+        .smooth_mesh()
+        .normals
+        .iter()
+        .all(|n| (n.length() - 1.0).abs() < 1e-5));
+}
+
+#[test]
+fn normals_figure_reports_the_students_normals() {
+    let mut scene = Normals::new();
+    scene.set_runner(reference);
+    scene.set_use_exercise(true);
+    assert!(scene
+        .draw(&mut Frame::default(), MeshId(3), MeshId(4))
+        .contains("matches the reference"));
+    scene.set_runner(wrong);
+    scene.set_use_exercise(true);
+    let note = scene.draw(&mut Frame::default(), MeshId(3), MeshId(4));
+    assert!(
+        note.contains("differs on this sphere") && note.contains("at vertex"),
+        "{note}"
+    );
+    scene.set_runner(stub);
+    scene.set_use_exercise(true);
+    assert!(scene
+        .draw(&mut Frame::default(), MeshId(3), MeshId(4))
+        .contains("Not done yet: exercise 0.2"));
+    scene.set_use_exercise(false);
+    assert!(!scene
+        .draw(&mut Frame::default(), MeshId(3), MeshId(4))
+        .contains("exercise"));
+}
+
+#[test]
+fn shading_figure_draws_the_vectors_and_checks_blinn_phong() {
+    let mut scene = Shading::new();
+    let mut f = Frame::default();
+    let note = scene.draw(&mut f);
+    let names: Vec<&str> = f.labels.iter().map(|l| l.text.as_str()).collect();
+    assert!(names.contains(&"h") && !names.contains(&"r"), "{names:?}");
+    assert!(note.contains("n·l"));
+    scene.set_model("phong").unwrap();
+    f.clear();
+    scene.draw(&mut f);
+    assert!(f.labels.iter().any(|l| l.text == "r"));
+    scene.set_use_exercise(true);
+    scene.set_runner(reference);
+    assert!(scene.exercise_note().contains("matches the reference"));
+    scene.set_runner(wrong);
+    assert!(scene.exercise_note().contains("differs"));
+    scene.set_runner(panics);
+    assert!(scene.exercise_note().contains("panicked"));
+    // Dragging to the image's right edge puts the light on the right.
+    scene.set_light_from_image(1.0, 0.5).unwrap();
+    assert!(scene.light().x > 0.9);
+    let (az, el) = scene.light_deg();
+    assert!((az - 90.0).abs() < 3.0 && el.abs() < 1.0, "{az} {el}");
+    let img = scene.image("specular", 32).unwrap();
+    assert_eq!(img.len(), 32 * 32 * 4);
+    assert!(scene.image("glow", 32).is_err());
+    assert!(scene.image("ambient", 4).is_err());
+    assert!(scene
+        .set_material(2.0, 0.5, 0.5, 8.0)
+        .unwrap_err()
+        .contains("k_a"));
+    assert!(scene.set_model("gouraud").is_err());
+    assert!(scene.set_light_deg(f32::NAN, 0.0).is_err());
+}
