@@ -5,6 +5,7 @@
 mod bench;
 mod bench_curves;
 mod bench_rotation;
+mod bench_skeleton;
 mod curves;
 mod rigid;
 mod rotations;
