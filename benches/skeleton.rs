@@ -46,7 +46,12 @@ fn skeleton(c: &mut Criterion) {
         let mut cursors = raw.cursors();
         b.iter(|| {
             for f in 0..FRAMES {
-                raw.sample(black_box(f as f32 * DT_SEC), skeleton.rest(), &mut cursors, &mut pose);
+                raw.sample(
+                    black_box(f as f32 * DT_SEC),
+                    skeleton.rest(),
+                    &mut cursors,
+                    &mut pose,
+                );
                 local_to_model(parents, &pose.local, mode, &mut model);
             }
             black_box(&model);

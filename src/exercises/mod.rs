@@ -16,6 +16,7 @@ pub mod curves;
 pub mod grade;
 pub mod rotations;
 pub mod run;
+pub mod skeleton;
 pub mod transforms;
 
 /// An exercise's answer: `Ok(value)` once implemented, `Err(NotDone)` while it is still a stub.

@@ -219,7 +219,7 @@ macro_rules! exercises {
     };
 }
 
-use super::{curves as c, rotations as r, transforms as tr};
+use super::{curves as c, rotations as r, skeleton as sk, transforms as tr};
 
 exercises! {
     /// Exercise 1.1, [`tr::local_matrix`].
@@ -255,6 +255,15 @@ exercises! {
         r::dual_quat_apply(rotation, translation, point);
     /// Exercise 4.2, [`r::polar_step`].
     fn polar_step(m: Mat3) -> Mat3 = r::polar_step(m);
+    /// Exercise 6.1, [`sk::local_to_model`]: parents as `f32`s (exact), one model matrix per joint.
+    fn local_to_model(parents: Vec<f32>, translations: Vec<Vec3>, rotations: Vec<Quat>, scales: Vec<Vec3>) -> Vec<Mat4> = {
+        let parents: Vec<i32> = parents.iter().map(|&p| p as i32).collect();
+        let mut model = vec![Mat4::IDENTITY; parents.len()];
+        sk::local_to_model(&parents, &translations, &rotations, &scales, &mut model).map(|()| model)
+    };
+    /// Exercise 6.2, [`sk::sample_rotation_slerp`].
+    fn sample_rotation_slerp(times: Vec<f32>, keys: Vec<Quat>, time_sec: f32) -> Quat =
+        sk::sample_rotation_slerp(&times, &keys, time_sec);
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature
@@ -399,7 +408,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 11);
+        assert_eq!(NAMES.len(), 13);
     }
 
     #[test]
