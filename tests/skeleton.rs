@@ -316,7 +316,7 @@ fn runtime_and_editable_forms_agree_between_keys() {
     }
     // The built-in clips key every channel at the same times: the forms agree for cubic too.
     let (human, _) = human::simple_human();
-    for index in 0..4 {
+    for index in 0..human::CLIP_NAMES.len() {
         let mut raw = human::clip(&human, index).unwrap();
         raw.set_interpolation(KeyInterpolation::Cubic);
         let clip = Clip::from_raw(&raw, &human).unwrap();
@@ -334,7 +334,7 @@ fn runtime_and_editable_forms_agree_between_keys() {
 #[test]
 fn looping_clips_are_seamless_and_wrap() {
     let (human, _) = human::simple_human();
-    for index in 0..4 {
+    for index in 0..human::CLIP_NAMES.len() {
         let raw = human::clip(&human, index).unwrap();
         for interpolation in [KeyInterpolation::Linear, KeyInterpolation::Cubic] {
             let mut clip = Clip::from_raw(&raw, &human).unwrap();

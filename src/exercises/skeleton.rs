@@ -100,7 +100,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     use glam::EulerRot;
     const LESSON: &str = "06-skeletons";
 
-    let mut random_quat = |rng: &mut super::grade::Rng| {
+    let random_quat = |rng: &mut super::grade::Rng| {
         let e = rng.vec3(-3.0, 3.0);
         Quat::from_euler(EulerRot::XYZ, e.x, e.y, e.z)
     };

@@ -10,6 +10,7 @@
 pub mod curves;
 pub mod rigid;
 pub mod rotations;
+pub mod skeleton;
 pub mod transforms;
 
 pub use crate::draw::{palette, Frame, MeshId};

@@ -6,7 +6,7 @@
 
 use core::fmt;
 
-use super::skeleton::{Pose, Skeleton, Transform};
+use super::hierarchy::{Pose, Skeleton, Transform};
 use glam::{Quat, Vec3, Vec4};
 
 /// What is wrong with a blend's inputs.

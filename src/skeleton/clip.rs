@@ -25,7 +25,7 @@
 
 use core::fmt;
 
-use super::skeleton::{Pose, Skeleton, Transform};
+use super::hierarchy::{Pose, Skeleton, Transform};
 use crate::curves::{cardinal_tangents, Cursor, Interpolation, Track, TrackError};
 use crate::rotation::slerp;
 use glam::{Quat, Vec3, Vec4};

@@ -1,5 +1,5 @@
 //! A built-in character that needs no asset file: a procedural simple human (21 joints, one box
-//! per joint) and four clips defined in code: idle, walk, run and wave. Also the 60-joint
+//! per joint) and five clips defined in code: idle, walk, run, wave and arm circles. Also the 60-joint
 //! benchmark humanoid.
 //!
 //! The figure faces +z with its left side at +x; limbs hang along −y from their pivots, so a
@@ -7,7 +7,7 @@
 //! so each joint's group (itself and its descendants) is a contiguous range of the array.
 
 use super::clip::{JointTracks, RawClip};
-use super::skeleton::{Skeleton, Transform};
+use super::hierarchy::{Skeleton, Transform};
 use crate::fixtures::Rng;
 use crate::transform::JointShape;
 use glam::{EulerRot, Quat, Vec3};
@@ -214,7 +214,7 @@ pub fn simple_human() -> (Skeleton, Vec<JointShape>) {
 }
 
 /// The built-in clips' names, in the order of [`clip`].
-pub const CLIP_NAMES: [&str; 4] = ["idle", "walk", "run", "wave"];
+pub const CLIP_NAMES: [&str; 5] = ["idle", "walk", "run", "wave", "arm circles"];
 
 /// What one clip does at a phase `φ ∈ [0, 2π]`: Euler angles (x, y, z, radians, applied as in
 /// lesson 01) per joint name, and the pelvis's offset from its rest position.
@@ -301,8 +301,24 @@ fn wave(phi: f32) -> Motion<'static> {
     }
 }
 
+/// Both arms turn full circles about x, half a turn apart (a windmill): large angles between keys,
+/// where nlerp and slerp visibly differ.
+fn arm_circles(phi: f32) -> Motion<'static> {
+    Motion {
+        angles: vec![
+            ("upper_arm.L", Vec3::new(-phi, 0.0, 0.15)),
+            (
+                "upper_arm.R",
+                Vec3::new(-phi - std::f32::consts::PI, 0.0, -0.15),
+            ),
+            ("chest", Vec3::new(0.0, 0.1 * phi.sin(), 0.0)),
+        ],
+        pelvis_offset: Vec3::ZERO,
+    }
+}
+
 /// `(duration in seconds, number of keys)` of each built-in clip.
-const CLIP_TIMING: [(f32, usize); 4] = [(3.0, 7), (1.0, 9), (0.7, 9), (2.0, 9)];
+const CLIP_TIMING: [(f32, usize); 5] = [(3.0, 7), (1.0, 9), (0.7, 9), (2.0, 9), (2.0, 9)];
 
 /// Built-in clip number `index` ([`CLIP_NAMES`]) for [`simple_human`]'s skeleton, or `None`.
 ///
@@ -310,12 +326,26 @@ const CLIP_TIMING: [(f32, usize); 4] = [(3.0, 7), (1.0, 9), (0.7, 9), (2.0, 9)];
 /// the first, so the loop is seamless. Only the joints that move get a rotation channel; the
 /// pelvis also gets a translation channel.
 pub fn clip(skeleton: &Skeleton, index: usize) -> Option<RawClip> {
-    let (duration, keys) = *CLIP_TIMING.get(index)?;
+    let (_, keys) = *CLIP_TIMING.get(index)?;
+    clip_with_keys(skeleton, index, keys)
+}
+
+/// The most keys per cycle [`clip_with_keys`] accepts.
+pub const MAX_KEYS_PER_CYCLE: usize = 1000;
+
+/// Built-in clip `index` keyed `keys` times per cycle (at least 2, at most
+/// [`MAX_KEYS_PER_CYCLE`]), to see what fewer or more keys do. `None` outside those ranges.
+pub fn clip_with_keys(skeleton: &Skeleton, index: usize, keys: usize) -> Option<RawClip> {
+    let (duration, _) = *CLIP_TIMING.get(index)?;
+    if !(2..=MAX_KEYS_PER_CYCLE).contains(&keys) {
+        return None;
+    }
     let motion = |phi: f32| match index {
         0 => idle(phi),
         1 => gait(phi, 0.45, 0.75, 0.35, 0.05, 0.02, 0.3),
         2 => gait(phi, 0.8, 1.4, 0.6, 0.22, 0.04, 1.3),
-        _ => wave(phi),
+        3 => wave(phi),
+        _ => arm_circles(phi),
     };
     let times: Vec<f32> = (0..keys)
         .map(|k| duration * k as f32 / (keys - 1) as f32)

@@ -25,8 +25,8 @@
 
 mod blend;
 mod clip;
+mod hierarchy;
 pub mod human;
-mod skeleton;
 
 pub use crate::transform::ScaleMode;
 pub use blend::{
@@ -37,6 +37,6 @@ pub use clip::{
     sample_rotation_channel, Clip, ClipCursor, ClipError, JointTracks, KeyInterpolation,
     QuatInterpolation, RawClip, MAX_CLIP_KEYS,
 };
-pub use skeleton::{
+pub use hierarchy::{
     local_to_model, trs_to_affine, Pose, Skeleton, SkeletonError, Transform, MAX_JOINTS,
 };

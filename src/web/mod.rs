@@ -10,12 +10,14 @@ mod curves;
 mod rigid;
 mod rotations;
 pub mod sandbox;
+mod skeleton;
 mod transforms;
 mod viewer;
 
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
+pub use skeleton::{check_skeleton, SkeletonScene};
 pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
 pub use viewer::Viewer;
 
