@@ -151,7 +151,7 @@ fn plot_samples_follow_the_interpolation() {
     f.set_keys_per_cycle(4.0).unwrap();
     let linear_slerp = f.sample_selected(301).unwrap();
     assert_eq!(linear_slerp.len(), 3 * 301);
-    f.set_rotation_interpolation("nlerp").unwrap();
+    f.set_interpolation("linear (nlerp)").unwrap();
     let linear_nlerp = f.sample_selected(301).unwrap();
     assert_ne!(linear_slerp, linear_nlerp);
     // Slerp turns at constant speed inside a segment: the speed's spread within the first

@@ -35,7 +35,10 @@ fn fails(names: Vec<String>, parents: Vec<i32>, rest: Vec<f32>) -> String {
 
 #[wasm_bindgen_test]
 fn each_skeleton_rule_fails_with_its_own_message() {
-    assert_eq!(check_skeleton(names(3), vec![-1, 0, 1], rest(3)).unwrap(), "ok");
+    assert_eq!(
+        check_skeleton(names(3), vec![-1, 0, 1], rest(3)).unwrap(),
+        "ok"
+    );
     assert!(fails(vec![], vec![], vec![]).contains("no joints"));
     assert!(fails(names(2), vec![-1, 0], rest(3)).contains("10 numbers per joint"));
     assert!(fails(names(1), vec![-1, 0], rest(2)).contains("names"));
@@ -60,7 +63,9 @@ fn each_skeleton_rule_fails_with_its_own_message() {
 fn bad_figure_input_names_the_parameter() {
     let mut scene = SkeletonScene::new();
     assert!(message(scene.select(99).unwrap_err()).contains("joint index 99"));
-    let e = scene.set_joint_angles_deg(0, f32::NAN, 0.0, 0.0).unwrap_err();
+    let e = scene
+        .set_joint_angles_deg(0, f32::NAN, 0.0, 0.0)
+        .unwrap_err();
     assert!(message(e).contains("angle x"));
     assert!(message(scene.set_keys_per_cycle(0.0).unwrap_err()).contains("keys per cycle"));
     assert!(message(scene.set_interpolation("bezier").unwrap_err()).contains("interpolation"));

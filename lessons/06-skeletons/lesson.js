@@ -18,14 +18,14 @@ function addAngle(folder, object, key, name) {
 
 const viewer = await lesson.figure('#fig-skeleton');
 if (viewer) {
-  viewer.setCamera(0, 0.9, 0, 3.2, 0.5, 0.25);
+  viewer.setCamera(0, 0.85, 0, 2.5, 0.5, 0.2);
   const scene = new SkeletonScene();
   const names = scene.jointNames();
   const parents = scene.parents();
   const groups = scene.groupSizes();
   const timeline = new Timeline(document.getElementById('skel-timeline'), { duration: scene.durationSec(), playing: true });
   const p = {
-    clip: 'walk', keys: 9, interpolation: 'linear', rotation: 'slerp', joint: 'thigh.L',
+    clip: 'walk', keys: 9, interpolation: 'linear (slerp)', joint: 'thigh.L',
     x: 0, y: 0, z: 0, boxes: false, axes: true, useExercise: false,
     reset: () => { scene.resetPose(); readJoint(); refresh(); update(); },
   };
@@ -53,6 +53,13 @@ if (viewer) {
       row.classList.toggle('selected', i === s);
       row.classList.toggle('group', i > s && i < s + groups[s]);
     });
+    // Scroll the table's own box (not the page) so the selected row shows.
+    const box = body.closest('.joint-table-box');
+    const row = body.rows[s];
+    const head = body.parentElement.tHead.offsetHeight;
+    if (row.offsetTop < box.scrollTop + head || row.offsetTop + row.offsetHeight > box.scrollTop + box.clientHeight) {
+      box.scrollTop = Math.max(0, row.offsetTop - head - 2 * row.offsetHeight);
+    }
   }
 
   // Key marks under the timeline's scrub.
@@ -65,7 +72,7 @@ if (viewer) {
     const x0 = box.left - area.left + inset;
     const width = box.width - 2 * inset;
     const duration = scene.durationSec();
-    strip.replaceChildren(...scene.keyTimes().map((t) => {
+    strip.replaceChildren(...Array.from(scene.keyTimes(), (t) => {
       const mark = document.createElement('span');
       mark.style.left = `${x0 + (width * t) / duration}px`;
       mark.title = `key at ${t.toFixed(3)} s`;
@@ -79,7 +86,7 @@ if (viewer) {
     series: ['angle'], colors: ['#e68a00'], minSpan: 5, height: 160,
   });
   const speedPlot = new Plot(document.getElementById('skel-plot-speed'), {
-    title: 'Selected joint: turning speed', xLabel: 'time (s)', yLabel: 'angular speed (°/s)',
+    title: 'Selected joint: turning speed', xLabel: 'time (s)', yLabel: 'speed (°/s)',
     series: ['speed'], colors: ['#944fc9'], minSpan: 5, height: 160,
   });
   function update() {
@@ -104,12 +111,8 @@ if (viewer) {
     update();
   });
   gui.add(p, 'keys', 4, 25, 1).name('keys per cycle').onChange(() => { scene.setKeysPerCycle(p.keys); update(); });
-  gui.add(p, 'interpolation', ['step', 'linear', 'cubic']).name('interpolation').onChange(() => {
+  gui.add(p, 'interpolation', ['step', 'linear (nlerp)', 'linear (slerp)', 'cubic']).name('interpolation').onChange(() => {
     scene.setInterpolation(p.interpolation);
-    update();
-  });
-  gui.add(p, 'rotation', ['nlerp', 'slerp']).name('rotation (linear)').onChange(() => {
-    scene.setRotationInterpolation(p.rotation);
     update();
   });
   gui.add(p, 'joint', names).name('joint').onChange(selectJoint);
@@ -120,8 +123,8 @@ if (viewer) {
       update();
     });
   }
-  gui.add(p, 'boxes').name('body boxes').onChange((on) => scene.setShowBoxes(on));
   gui.add(p, 'axes').name('every joint\'s axes').onChange((on) => scene.setShowAxes(on));
+  gui.add(p, 'boxes').name('body boxes').onChange((on) => scene.setShowBoxes(on));
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
   gui.add(p, 'reset').name('reset the angles');
   selectJoint();

@@ -61,9 +61,7 @@ impl Default for SkeletonFigure {
 }
 
 /// What the interpolation dropdown offers, in order.
-pub const INTERPOLATIONS: [&str; 3] = ["step", "linear", "cubic"];
-/// What the rotation dropdown offers, in order.
-pub const ROTATIONS: [&str; 2] = ["nlerp", "slerp"];
+pub const INTERPOLATIONS: [&str; 4] = ["step", "linear (nlerp)", "linear (slerp)", "cubic"];
 
 impl SkeletonFigure {
     /// The walk, 9 keys per cycle, linear with slerp, `upper_arm.L` selected.
@@ -154,18 +152,24 @@ impl SkeletonFigure {
         Ok(())
     }
 
-    /// "step", "linear" or "cubic".
+    /// One of [`INTERPOLATIONS`]: "step", "linear (nlerp)", "linear (slerp)" or "cubic"; a bare
+    /// "linear" keeps the current rotation choice.
     pub fn set_interpolation(&mut self, name: &str) -> Result<(), String> {
-        self.interpolation = match name {
-            "step" => KeyInterpolation::Step,
-            "linear" => KeyInterpolation::Linear,
-            "cubic" => KeyInterpolation::Cubic,
+        let (interpolation, rotation) = match name {
+            "step" => (KeyInterpolation::Step, self.rotation),
+            "linear" => (KeyInterpolation::Linear, self.rotation),
+            "linear (nlerp)" => (KeyInterpolation::Linear, QuatInterpolation::Nlerp),
+            "linear (slerp)" => (KeyInterpolation::Linear, QuatInterpolation::Slerp),
+            "cubic" => (KeyInterpolation::Cubic, self.rotation),
             _ => {
                 return Err(format!(
-                    "interpolation must be step, linear or cubic, got {name:?}"
+                    "interpolation must be one of {}, got {name:?}",
+                    INTERPOLATIONS.join(", ")
                 ))
             }
         };
+        self.interpolation = interpolation;
+        self.rotation = rotation;
         self.apply_modes();
         Ok(())
     }
@@ -558,7 +562,7 @@ impl SkeletonFigure {
                 bone(frame, a, p, bone_color);
             }
             if self.show_axes && i != self.selected {
-                frame.axes(Mat4::from(self.model[i]), 0.07);
+                frame.axes(Mat4::from(self.model[i]), 0.1);
             }
         }
         let selected = Mat4::from(self.model[self.selected]);

@@ -55,7 +55,7 @@ impl SkeletonScene {
         self.scene.set_keys_per_cycle(keys).map_err(js)
     }
 
-    /// "step", "linear" or "cubic".
+    /// "step", "linear (nlerp)", "linear (slerp)" or "cubic".
     #[wasm_bindgen(js_name = setInterpolation)]
     pub fn set_interpolation(&mut self, name: &str) -> Result<(), JsError> {
         self.scene.set_interpolation(name).map_err(js)
