@@ -11,7 +11,7 @@
 //! | `02-keyframes`: keyframes and splines | [`curves`] | [`figures::curves`] | `web::curves` (bench: `web::bench_curves`) | [`exercises::curves`] |
 //! | `03-rotations`: rotations | [`rotation`] | [`figures::rotations`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
 //! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
-//! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`] | [`figures::skeleton`] | `web::skeleton` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
+//! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`] (and [`ik`], for the next lesson) | [`figures::skeleton`] | `web::skeleton` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
@@ -35,6 +35,7 @@ pub mod draw;
 pub mod exercises;
 pub mod figures;
 pub mod fixtures;
+pub mod ik;
 pub mod mesh;
 pub mod rigid;
 pub mod rotation;
