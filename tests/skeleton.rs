@@ -471,12 +471,8 @@ fn blend_weights_zero_and_one_return_an_input() {
     let mask = subtree_mask(&human, human.find("spine").unwrap(), 1.0, 0.0);
     let mut out = Pose::identity(21);
     crossfade_masked(&c, &d, &mask, &mut out).unwrap();
-    for j in 0..21 {
-        let expected = if mask[j] == 1.0 {
-            d.local[j]
-        } else {
-            c.local[j]
-        };
+    for (j, &w) in mask.iter().enumerate() {
+        let expected = if w == 1.0 { d.local[j] } else { c.local[j] };
         assert_eq!(out.local[j], expected);
     }
     assert_eq!(
