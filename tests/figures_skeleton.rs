@@ -228,3 +228,53 @@ fn the_note_reports_the_students_exercises() {
     f.set_interpolation("step").unwrap();
     assert!(f.pose(0.3).unwrap().contains("Switch to linear with slerp"));
 }
+
+#[test]
+fn crossfading_a_second_clip() {
+    let mut f = SkeletonFigure::new();
+    f.pose(0.25).unwrap();
+    let walk = positions(&f);
+    f.set_blend("run", 0.0).unwrap();
+    f.pose(0.25).unwrap();
+    assert_eq!(positions(&f), walk, "weight 0: the main clip");
+    f.set_blend("run", 1.0).unwrap();
+    let note = f.pose(0.25).unwrap();
+    assert!(
+        note.contains("Crossfaded with run at weight 1.000"),
+        "{note}"
+    );
+    let run_at_phase = positions(&f);
+    // Weight 1 is the run alone, at the same phase (0.25 s of a 1 s walk = 0.175 s of a 0.7 s run).
+    let mut g = SkeletonFigure::new();
+    g.set_clip("run").unwrap();
+    g.pose(0.175).unwrap();
+    for (a, b) in run_at_phase.iter().zip(positions(&g)) {
+        assert!(a.distance(b) < 1e-5);
+    }
+    f.set_blend("run", 0.5).unwrap();
+    f.pose(0.25).unwrap();
+    let half = positions(&f);
+    let knee = f.skeleton().find("shin.L").unwrap();
+    assert!(
+        half[knee].distance(walk[knee]) > 1e-3 && half[knee].distance(run_at_phase[knee]) > 1e-3
+    );
+    assert!(f
+        .set_blend("run", 1.5)
+        .unwrap_err()
+        .contains("blend weight"));
+    assert!(f
+        .set_blend("tango", 0.5)
+        .unwrap_err()
+        .contains("blend clip"));
+    // "use my exercise" runs 6.3 on every joint.
+    f.set_use_exercise(true);
+    let note = f.pose(0.25).unwrap();
+    if cfg!(feature = "solutions") {
+        assert!(
+            note.contains("Your crossfade_joint matches the reference at all 21 joints"),
+            "{note}"
+        );
+    } else {
+        assert!(note.contains("Not done yet: exercise 6.3"), "{note}");
+    }
+}

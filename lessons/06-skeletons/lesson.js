@@ -26,7 +26,7 @@ if (viewer) {
   const timeline = new Timeline(document.getElementById('skel-timeline'), { duration: scene.durationSec(), playing: true });
   const p = {
     clip: 'walk', keys: 9, interpolation: 'linear (slerp)', joint: 'thigh.L',
-    x: 0, y: 0, z: 0, boxes: false, axes: true, useExercise: false,
+    x: 0, y: 0, z: 0, blend: 'none', weight: 0.5, boxes: false, axes: true, useExercise: false,
     reset: () => { scene.resetPose(); readJoint(); refresh(); update(); },
   };
   const index = () => names.indexOf(p.joint);
@@ -115,6 +115,10 @@ if (viewer) {
     scene.setInterpolation(p.interpolation);
     update();
   });
+  const blending = gui.addFolder('crossfade a second clip');
+  const applyBlend = () => { scene.setBlend(p.blend, p.weight); update(); };
+  blending.add(p, 'blend', ['none', ...scene.clipNames().slice(0, -1)]).name('with clip').onChange(applyBlend);
+  blending.add(p, 'weight', 0, 1, 0.01).name('weight of it').onChange(applyBlend);
   gui.add(p, 'joint', names).name('joint').onChange(selectJoint);
   const angles = gui.addFolder('angles on top of the clip (°)');
   for (const axis of ['x', 'y', 'z']) {

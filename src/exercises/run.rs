@@ -264,6 +264,9 @@ exercises! {
     /// Exercise 6.2, [`sk::sample_rotation_slerp`].
     fn sample_rotation_slerp(times: Vec<f32>, keys: Vec<Quat>, time_sec: f32) -> Quat =
         sk::sample_rotation_slerp(&times, &keys, time_sec);
+    /// Exercise 6.3, [`sk::crossfade_joint`].
+    fn crossfade_joint(translation_a: Vec3, rotation_a: Quat, translation_b: Vec3, rotation_b: Quat, w: f32) -> (Vec3, Quat) =
+        sk::crossfade_joint(translation_a, rotation_a, translation_b, rotation_b, w);
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature
@@ -408,7 +411,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 13);
+        assert_eq!(NAMES.len(), 14);
     }
 
     #[test]

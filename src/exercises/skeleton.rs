@@ -93,6 +93,59 @@ pub fn sample_rotation_slerp(times: &[f32], keys: &[Quat], time_sec: f32) -> Ans
     Err(NotDone)
 }
 
+/// **Exercise 6.3: crossfading one joint between two poses.**
+///
+/// Joint `a` has translation `translation_a` and rotation `rotation_a` (a unit quaternion), joint
+/// `b` likewise. Return their blend with weight `w ∈ [0, 1]`:
+/// ```text
+/// t = (1 − w) t_a + w t_b
+/// q = ((1 − w) q_a + w q_b) / ‖(1 − w) q_a + w q_b‖     (nlerp; use −q_b when q_a · q_b < 0)
+/// ```
+/// `w = 0` must give `a` and `w = 1` must give `b`.
+///
+/// Hints: why does the sign test matter? `q` and `−q` are the same rotation, but their average is
+/// zero. glam's `Vec3::lerp` helps; do the quaternion sum with `Vec4::from(q)`.
+pub fn crossfade_joint(
+    translation_a: Vec3,
+    rotation_a: Quat,
+    translation_b: Vec3,
+    rotation_b: Quat,
+    w: f32,
+) -> Answer<(Vec3, Quat)> {
+    solution!(reference_crossfade_joint(
+        translation_a,
+        rotation_a,
+        translation_b,
+        rotation_b,
+        w
+    ));
+    let _ = (translation_a, rotation_a, translation_b, rotation_b, w);
+    Err(NotDone)
+}
+
+/// The reference for 6.3: the core's [`crate::skeleton::crossfade_transform`] with unit scales.
+pub fn reference_crossfade_joint(
+    translation_a: Vec3,
+    rotation_a: Quat,
+    translation_b: Vec3,
+    rotation_b: Quat,
+    w: f32,
+) -> (Vec3, Quat) {
+    use crate::skeleton::{crossfade_transform, Transform};
+    let a = Transform {
+        translation: translation_a,
+        rotation: rotation_a,
+        scale: Vec3::ONE,
+    };
+    let b = Transform {
+        translation: translation_b,
+        rotation: rotation_b,
+        scale: Vec3::ONE,
+    };
+    let x = crossfade_transform(&a, &b, w);
+    (x.translation, x.rotation)
+}
+
 /// Grades this file's exercises against the reference on edge cases (each saying what it tests)
 /// and random inputs.
 pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
@@ -269,5 +322,43 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         },
         |a, b| (a.dot(*b).abs() - 1.0).abs() < 1e-4 && (b.length() - 1.0).abs() < 1e-3,
     );
-    vec![l2m, sample]
+    // 6.3: (t_a, q_a, t_b, q_b, w)
+    type Blend = (Vec3, Quat, Vec3, Quat, f32);
+    let (ta, tb) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 2.0, -1.0));
+    let (qa, qb) = (Quat::from_rotation_y(0.4), Quat::from_rotation_x(1.5));
+    let mut cases: Vec<(&str, Blend)> = vec![
+        ("w = 0: exactly a", (ta, qa, tb, qb, 0.0)),
+        ("w = 1: exactly b", (ta, qa, tb, qb, 1.0)),
+        ("halfway", (ta, qa, tb, qb, 0.5)),
+        (
+            "q_a · q_b < 0: negate q_b first (the short arc)",
+            (ta, qa, tb, -qb, 0.3),
+        ),
+        (
+            "q_b = −q_a, the same rotation: the blend must not collapse to zero",
+            (ta, qa, tb, -qa, 0.5),
+        ),
+    ];
+    for _ in 0..200 {
+        let w = rng.range(0.0, 1.0);
+        cases.push((
+            RANDOM,
+            (
+                rng.vec3(-2.0, 2.0),
+                random_quat(rng),
+                rng.vec3(-2.0, 2.0),
+                random_quat(rng),
+                w,
+            ),
+        ));
+    }
+    let blend = check_cases(
+        LESSON,
+        "crossfade_joint",
+        &cases,
+        |&(ta, qa, tb, qb, w)| crossfade_joint(ta, qa, tb, qb, w),
+        |&(ta, qa, tb, qb, w)| reference_crossfade_joint(ta, qa, tb, qb, w),
+        |a, b| a.0.abs_diff_eq(b.0, 1e-4) && (a.1.dot(b.1).abs() - 1.0).abs() < 1e-4,
+    );
+    vec![l2m, sample, blend]
 }

@@ -14,8 +14,8 @@ use super::{
 use crate::exercises::run;
 use crate::rotation::angle_between;
 use crate::skeleton::{
-    human, local_to_model, sample_rotation_channel, Clip, ClipCursor, KeyInterpolation, Pose,
-    QuatInterpolation, RawClip, Skeleton,
+    crossfade_transform, human, local_to_model, sample_rotation_channel, Clip, ClipCursor,
+    KeyInterpolation, Pose, QuatInterpolation, RawClip, Skeleton,
 };
 use crate::transform::JointShape;
 use glam::{Affine3A, EulerRot, Mat4, Quat, Vec3};
@@ -46,6 +46,11 @@ pub struct SkeletonFigure {
     show_axes: bool,
     use_exercise: bool,
     runner: Runner,
+    /// The clip crossfaded in (played at the same phase), and its weight.
+    blend_clip: Option<usize>,
+    blend_weight: f32,
+    /// Clip B's pose and cursor while blending (a cell: sampling is `&self`).
+    blend_scratch: std::cell::RefCell<(Pose, ClipCursor)>,
     cursor: ClipCursor,
     pose: Pose,
     model: Vec<Affine3A>,
@@ -82,6 +87,9 @@ impl SkeletonFigure {
             show_axes: true,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            blend_clip: None,
+            blend_weight: 0.5,
+            blend_scratch: std::cell::RefCell::new((skeleton.rest_pose(), ClipCursor::new())),
             cursor: ClipCursor::new(),
             pose: skeleton.rest_pose(),
             model: vec![Affine3A::IDENTITY; n],
@@ -279,12 +287,40 @@ impl SkeletonFigure {
         Ok(self.model[self.joint(joint)?].translation.into())
     }
 
-    /// Samples the clip at `time_sec` into `pose` (the rest pose without a clip) and adds the
-    /// angle offsets.
+    /// Crossfades a second clip in (`None`: no blend), weight `w ∈ [0, 1]` (1: all clip B). Clip
+    /// B plays at the same phase as the main clip (time normalised by each clip's duration), so
+    /// a walk and a run of different lengths stay in step.
+    pub fn set_blend(&mut self, name: &str, weight: f32) -> Result<(), String> {
+        let weight = in_range("blend weight", weight, 0.0, 1.0)?;
+        self.blend_clip = match human::CLIP_NAMES.iter().position(|&c| c == name) {
+            Some(i) => Some(i),
+            None if name.starts_with("none") => None,
+            None => return Err(format!("blend clip: no clip named {name:?}")),
+        };
+        self.blend_weight = weight;
+        Ok(())
+    }
+
+    /// Clip B's time for the main clip's time `time_sec`: the same phase of its own cycle.
+    fn blend_time(&self, b: usize, time_sec: f32) -> f32 {
+        let phase = time_sec / self.duration_sec();
+        phase * self.clips[b].duration_sec()
+    }
+
+    /// Samples the clip at `time_sec` into `pose` (the rest pose without a clip), crossfades the
+    /// blend clip in, and adds the angle offsets.
     fn sample_into(&self, time_sec: f32, cursor: &mut ClipCursor, pose: &mut Pose) {
         match self.clip {
             Some(c) => self.clips[c].sample(time_sec, cursor, pose),
             None => pose.local.copy_from_slice(self.skeleton.rest()),
+        }
+        if let Some(b) = self.blend_clip {
+            let mut scratch = self.blend_scratch.borrow_mut();
+            let (pose_b, cursor_b) = &mut *scratch;
+            self.clips[b].sample(self.blend_time(b, time_sec), cursor_b, pose_b);
+            for (x, y) in pose.local.iter_mut().zip(&pose_b.local) {
+                *x = crossfade_transform(x, y, self.blend_weight);
+            }
         }
         for (x, o) in pose.local.iter_mut().zip(&self.offsets_rad) {
             if *o != Vec3::ZERO {
@@ -306,6 +342,9 @@ impl SkeletonFigure {
         let mut notes = Vec::new();
         if self.use_exercise {
             notes.push(self.student_rotation(t));
+            if self.blend_clip.is_some() {
+                notes.push(self.student_blend(t));
+            }
         }
         local_to_model(
             self.skeleton.parents(),
@@ -358,8 +397,16 @@ impl SkeletonFigure {
             },
             KeyInterpolation::Cubic => "cubic (Catmull-Rom)".into(),
         };
+        let blend = match self.blend_clip {
+            Some(b) => format!(
+                " Crossfaded with {} at weight {} (same phase of its own cycle).",
+                self.clips[b].name(),
+                format_number(self.blend_weight)
+            ),
+            None => String::new(),
+        };
         format!(
-            "{joint} Clip {} at {} s: between keys {i} and {} (s = {}), {how}.",
+            "{joint} Clip {} at {} s: between keys {i} and {} (s = {}), {how}.{blend}",
             clip.name(),
             format_number(local),
             i + 1,
@@ -419,6 +466,77 @@ impl SkeletonFigure {
                 (yours.normalize() * Quat::from_euler(EulerRot::XYZ, o.x, o.y, o.z)).normalize();
         }
         note
+    }
+
+    /// Exercise 6.3 on every joint of the blend (clip A and clip B at time `t`, before the angle
+    /// offsets); poses the figure with the student's blend. Returns the note.
+    fn student_blend(&mut self, t: f32) -> String {
+        let exercise = "exercise 6.3 crossfade_joint";
+        let Some(b) = self.blend_clip else {
+            return String::new();
+        };
+        let n = self.skeleton.len();
+        let mut a = self.skeleton.rest_pose();
+        let mut cursor = ClipCursor::new();
+        if let Some(c) = self.clip {
+            self.clips[c].sample(t, &mut cursor, &mut a);
+        }
+        let mut pose_b = self.skeleton.rest_pose();
+        self.clips[b].sample(self.blend_time(b, t), &mut ClipCursor::new(), &mut pose_b);
+        let w = self.blend_weight;
+        let mut first_wrong = None;
+        for j in 0..n {
+            let (x, y) = (a.local[j], pose_b.local[j]);
+            let yours = match run::crossfade_joint(
+                self.runner,
+                x.translation,
+                x.rotation,
+                y.translation,
+                y.rotation,
+                w,
+            ) {
+                Ok(answer) => answer,
+                Err(failure) => return failure_note(exercise, EXERCISE_FILE, &failure),
+            };
+            let reference = crossfade_transform(&x, &y, w);
+            let q = if yours.1.dot(reference.rotation) < 0.0 {
+                -yours.1
+            } else {
+                yours.1
+            };
+            let flat_yours: Vec<f32> = yours.0.to_array().into_iter().chain(q.to_array()).collect();
+            let flat_reference: Vec<f32> = (reference.translation.to_array().into_iter())
+                .chain(reference.rotation.to_array())
+                .collect();
+            let close = flat_yours
+                .iter()
+                .zip(&flat_reference)
+                .all(|(u, v)| (u - v).abs() <= TOLERANCE);
+            if first_wrong.is_none() && !close {
+                first_wrong = Some((j, flat_yours, flat_reference));
+            }
+            if yours.0.is_finite() && yours.1.is_finite() && yours.1.length() > 0.5 {
+                let o = self.offsets_rad[j];
+                self.pose.local[j].translation = yours.0;
+                self.pose.local[j].rotation = (yours.1.normalize()
+                    * Quat::from_euler(EulerRot::XYZ, o.x, o.y, o.z))
+                .normalize();
+            }
+        }
+        match first_wrong {
+            None => format!(
+                "Your crossfade_joint matches the reference at all {n} joints (w = {}).",
+                format_number(w)
+            ),
+            Some((j, yours, reference)) => {
+                let at = format!(
+                    "joint {j} ({}), w = {}",
+                    self.skeleton.names()[j],
+                    format_number(w)
+                );
+                compare_note("crossfade_joint", &at, &yours, &reference, TOLERANCE).1
+            }
+        }
     }
 
     /// Exercise 6.1 on the current pose; draws the student's matrices when there are some.

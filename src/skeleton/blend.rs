@@ -72,8 +72,12 @@ fn check_fraction(index: usize, weight: f32) -> Result<f32, BlendError> {
 
 /// One joint's crossfade: lerp, short-arc nlerp, lerp. `w = 0` gives `a`, `w = 1` gives `b`
 /// exactly.
+/// ```text
+/// t = (1−w) t_a + w t_b,   s = (1−w) s_a + w s_b,   q = nlerp(q_a, ±q_b; w)  (short arc)
+/// ```
+/// Reference solution of exercise 6.3. Lesson: `lessons/06-skeletons`.
 #[inline]
-fn mix(a: &Transform, b: &Transform, w: f32) -> Transform {
+pub fn crossfade_transform(a: &Transform, b: &Transform, w: f32) -> Transform {
     if w <= 0.0 {
         return *a;
     }
@@ -103,7 +107,7 @@ pub fn crossfade(a: &Pose, b: &Pose, w: f32, out: &mut Pose) -> Result<(), Blend
     check_len("transforms in the output pose", a.len(), out.len())?;
     let w = check_fraction(0, w)?;
     for ((o, x), y) in out.local.iter_mut().zip(&a.local).zip(&b.local) {
-        *o = mix(x, y, w);
+        *o = crossfade_transform(x, y, w);
     }
     Ok(())
 }
@@ -123,7 +127,7 @@ pub fn crossfade_masked(
         check_fraction(j, w)?;
     }
     for (((o, x), y), &w) in out.local.iter_mut().zip(&a.local).zip(&b.local).zip(mask) {
-        *o = mix(x, y, w);
+        *o = crossfade_transform(x, y, w);
     }
     Ok(())
 }

@@ -30,8 +30,8 @@ pub mod human;
 
 pub use crate::transform::ScaleMode;
 pub use blend::{
-    add_additive, blend_weighted, crossfade, crossfade_masked, make_additive, subtree_mask,
-    BlendError,
+    add_additive, blend_weighted, crossfade, crossfade_masked, crossfade_transform, make_additive,
+    subtree_mask, BlendError,
 };
 pub use clip::{
     sample_rotation_channel, Clip, ClipCursor, ClipError, JointTracks, KeyInterpolation,

@@ -67,6 +67,12 @@ impl SkeletonScene {
         self.scene.set_rotation_interpolation(name).map_err(js)
     }
 
+    /// Crossfades clip `name` (or "none") in with weight `weight ∈ [0, 1]`, at the same phase.
+    #[wasm_bindgen(js_name = setBlend)]
+    pub fn set_blend(&mut self, name: &str, weight: f32) -> Result<(), JsError> {
+        self.scene.set_blend(name, weight).map_err(js)
+    }
+
     /// Selects the joint drawn in orange (its group in teal).
     pub fn select(&mut self, joint: usize) -> Result<(), JsError> {
         self.scene.select(joint).map_err(js)
