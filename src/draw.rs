@@ -229,15 +229,24 @@ impl Frame {
         };
         for m in &self.meshes {
             eat(m.mesh.0 as u32);
-            m.model.to_cols_array().iter().for_each(|x| eat(x.to_bits()));
+            m.model
+                .to_cols_array()
+                .iter()
+                .for_each(|x| eat(x.to_bits()));
             m.color.to_array().iter().for_each(|x| eat(x.to_bits()));
             eat(m.vertex_colors as u32);
         }
         for v in &self.lines {
-            v.position.iter().chain(&v.color).for_each(|x| eat(x.to_bits()));
+            v.position
+                .iter()
+                .chain(&v.color)
+                .for_each(|x| eat(x.to_bits()));
         }
         for p in &self.points {
-            p.center.iter().chain(&p.color).for_each(|x| eat(x.to_bits()));
+            p.center
+                .iter()
+                .chain(&p.color)
+                .for_each(|x| eat(x.to_bits()));
             eat(p.radius.to_bits());
         }
         for l in &self.labels {

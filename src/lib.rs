@@ -13,6 +13,7 @@
 //! | `02b-expressive-animation`: expressive animation | [`expressive`], [`curves`] (easing) | [`figures::expressive`] | `web::expressive` | [`exercises::expressive`] (2b.x) |
 //! | `03-rotations`: rotations | [`rotation`] | [`figures::rotations`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
 //! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
+//! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`] (and [`ik`], for the next lesson) | [`figures::skeleton`] | `web::skeleton` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
@@ -37,10 +38,12 @@ pub mod exercises;
 pub mod expressive;
 pub mod figures;
 pub mod fixtures;
+pub mod ik;
 pub mod mesh;
 pub mod raster;
 pub mod rigid;
 pub mod rotation;
+pub mod skeleton;
 pub mod transform;
 
 #[cfg(target_arch = "wasm32")]

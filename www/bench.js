@@ -47,6 +47,22 @@ export const SUITES = [
     size: 1_000_000,
     unit: 'sample',
   },
+  {
+    name: 'skeleton: sample + local-to-model, 60 joints, 30 keys (per frame; /60 for joints)',
+    run: (kernel, size, iterations) => wasm.benchSkeleton(kernel, size, iterations),
+    kernels: ['track_baseline', 'runtime_clip', 'runtime_sample_only', 'local_to_model_only'],
+    baseline: 'track_baseline',
+    size: 600,
+    unit: 'frame of 60 joints',
+  },
+  {
+    name: 'crowd: 1000 characters of 60 joints (per character per frame)',
+    run: (kernel, size, iterations) => wasm.benchCrowd(kernel, size, iterations),
+    kernels: ['track_baseline', 'runtime_clip'],
+    baseline: 'track_baseline',
+    size: 1000,
+    unit: 'character',
+  },
 ];
 
 // ?quick (the page test): a smoke run, one batch of at least 20 ms per kernel.

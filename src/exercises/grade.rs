@@ -59,6 +59,7 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::curves::grade(&mut rng));
     reports.extend(super::expressive::grade(&mut rng));
     reports.extend(super::rotations::grade(&mut rng));
+    reports.extend(super::skeleton::grade(&mut rng));
     reports
 }
 

@@ -18,6 +18,7 @@ pub mod grade;
 pub mod raster;
 pub mod rotations;
 pub mod run;
+pub mod skeleton;
 pub mod transforms;
 
 /// An exercise's answer: `Ok(value)` once implemented, `Err(NotDone)` while it is still a stub.

@@ -219,7 +219,9 @@ macro_rules! exercises {
     };
 }
 
-use super::{curves as c, expressive as ex, raster as ra, rotations as r, transforms as tr};
+use super::{
+    curves as c, expressive as ex, raster as ra, rotations as r, skeleton as sk, transforms as tr,
+};
 
 exercises! {
     /// Exercise 1.1, [`tr::local_matrix`].
@@ -274,6 +276,18 @@ exercises! {
     /// Exercise 0.3, [`ra::blinn_phong`].
     fn blinn_phong(n: Vec3, l: Vec3, v: Vec3, color: Vec3, weights: [f32; 3], shininess: f32) -> Vec3 =
         ra::blinn_phong(n, l, v, color, weights, shininess);
+    /// Exercise 6.1, [`sk::local_to_model`]: parents as `f32`s (exact), one model matrix per joint.
+    fn local_to_model(parents: Vec<f32>, translations: Vec<Vec3>, rotations: Vec<Quat>, scales: Vec<Vec3>) -> Vec<Mat4> = {
+        let parents: Vec<i32> = parents.iter().map(|&p| p as i32).collect();
+        let mut model = vec![Mat4::IDENTITY; parents.len()];
+        sk::local_to_model(&parents, &translations, &rotations, &scales, &mut model).map(|()| model)
+    };
+    /// Exercise 6.2, [`sk::sample_rotation_slerp`].
+    fn sample_rotation_slerp(times: Vec<f32>, keys: Vec<Quat>, time_sec: f32) -> Quat =
+        sk::sample_rotation_slerp(&times, &keys, time_sec);
+    /// Exercise 6.3, [`sk::crossfade_joint`].
+    fn crossfade_joint(translation_a: Vec3, rotation_a: Quat, translation_b: Vec3, rotation_b: Quat, w: f32) -> (Vec3, Quat) =
+        sk::crossfade_joint(translation_a, rotation_a, translation_b, rotation_b, w);
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature
@@ -418,7 +432,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 16);
+        assert_eq!(NAMES.len(), 19);
     }
 
     #[test]

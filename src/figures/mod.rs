@@ -12,6 +12,7 @@ pub mod expressive;
 pub mod raster;
 pub mod rigid;
 pub mod rotations;
+pub mod skeleton;
 pub mod transforms;
 
 pub use crate::draw::{palette, Frame, MeshId};

@@ -5,12 +5,14 @@
 mod bench;
 mod bench_curves;
 mod bench_rotation;
+mod bench_skeleton;
 mod curves;
 mod expressive;
 mod raster;
 mod rigid;
 mod rotations;
 pub mod sandbox;
+mod skeleton;
 mod transforms;
 mod viewer;
 
@@ -19,6 +21,7 @@ pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
 pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
+pub use skeleton::{check_skeleton, SkeletonScene};
 pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
 pub use viewer::Viewer;
 

@@ -1,0 +1,302 @@
+//! # Inverse kinematics: where should the joints go so that the end reaches a target?
+//!
+//! Forward kinematics turns joint rotations into positions; inverse kinematics (IK) goes the other
+//! way. Three solvers work on a chain of joint positions `p_0 (root) … p_n (end effector)` in one
+//! space (model or world), keep every segment length `|p_{i+1} − p_i|`, and report whether the end
+//! reached the target and how far it is left:
+//!
+//! | solver | chain | idea |
+//! |---|---|---|
+//! | [`two_joint`] | root, middle, end | law of cosines for the middle angle; a pole vector picks the bend plane; analytic, one step |
+//! | [`ccd`] | any length | Cyclic Coordinate Descent: from the last joint to the root, turn each joint so the end points at the target |
+//! | [`fabrik`] | any length | Forward And Backward Reaching IK: drag the chain end to the target, then the root back home, repeat |
+//!
+//! Unreachable targets are clamped: the chain stretches straight towards the target and the result
+//! says `reached: false` with the remaining distance. Positions are written into the caller's
+//! slice; nothing is allocated.
+
+use core::fmt;
+
+use glam::{Quat, Vec3};
+
+/// The most iterations [`ccd`] and [`fabrik`] accept.
+pub const MAX_IK_ITERATIONS: usize = 10_000;
+
+/// The most joints a chain may have.
+pub const MAX_CHAIN_JOINTS: usize = 1024;
+
+/// What a solver achieved.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IkResult {
+    /// `true` when the end effector ended within the tolerance of the target.
+    pub reached: bool,
+    /// Distance from the end effector to the target after solving, in the chain's units.
+    pub error: f32,
+    /// Iterations used (1 for the analytic solver).
+    pub iterations: usize,
+}
+
+/// What is wrong with a solver's input. Messages name the parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub enum IkError {
+    /// Fewer than two joints, or more than [`MAX_CHAIN_JOINTS`].
+    ChainLength { joints: usize },
+    /// A joint position, the target or the pole is NaN or infinite.
+    NonFinite { what: &'static str },
+    /// Two consecutive joints coincide: that segment has no direction.
+    ZeroSegment { segment: usize },
+    /// The tolerance is not a finite number > 0.
+    BadTolerance { tolerance: f32 },
+    /// Zero iterations or more than [`MAX_IK_ITERATIONS`].
+    BadIterations { iterations: usize },
+}
+
+impl fmt::Display for IkError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::ChainLength { joints } => write!(
+                f,
+                "a chain needs 2 to {MAX_CHAIN_JOINTS} joints (3 for two-joint IK), got {joints}"
+            ),
+            Self::NonFinite { what } => write!(f, "the {what} contains NaN or an infinite value"),
+            Self::ZeroSegment { segment } => {
+                write!(f, "segment {segment} has zero length: two joints coincide")
+            }
+            Self::BadTolerance { tolerance } => {
+                write!(f, "tolerance must be a finite number > 0, got {tolerance}")
+            }
+            Self::BadIterations { iterations } => write!(
+                f,
+                "iterations must be between 1 and {MAX_IK_ITERATIONS}, got {iterations}"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for IkError {}
+
+fn check_chain(chain: &[Vec3], target: Vec3) -> Result<(), IkError> {
+    if !(2..=MAX_CHAIN_JOINTS).contains(&chain.len()) {
+        return Err(IkError::ChainLength {
+            joints: chain.len(),
+        });
+    }
+    if !chain.iter().all(|p| p.is_finite()) {
+        return Err(IkError::NonFinite {
+            what: "chain of joint positions",
+        });
+    }
+    if !target.is_finite() {
+        return Err(IkError::NonFinite { what: "target" });
+    }
+    for (segment, pair) in chain.windows(2).enumerate() {
+        if pair[0].distance_squared(pair[1]) <= 1e-12 {
+            return Err(IkError::ZeroSegment { segment });
+        }
+    }
+    Ok(())
+}
+
+fn check_solver(iterations: usize, tolerance: f32) -> Result<(), IkError> {
+    if !(1..=MAX_IK_ITERATIONS).contains(&iterations) {
+        return Err(IkError::BadIterations { iterations });
+    }
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(IkError::BadTolerance { tolerance });
+    }
+    Ok(())
+}
+
+/// The analytic two-joint answer: new middle and end positions, and the world-space rotations
+/// that take the old segments onto the new ones (apply `root_rotation` to the root joint, then
+/// `middle_rotation` to the middle joint).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TwoJointSolution {
+    pub middle: Vec3,
+    pub end: Vec3,
+    /// World-space rotation of the root joint: old `middle − root` onto new.
+    pub root_rotation: Quat,
+    /// World-space rotation of the middle joint, after the root's: the rotated old
+    /// `end − middle` onto the new one.
+    pub middle_rotation: Quat,
+    pub result: IkResult,
+}
+
+/// Two-joint IK (shoulder–elbow–wrist, hip–knee–ankle) by the law of cosines.
+/// ```text
+/// a = |middle − root|,  b = |end − middle|,  d = clamp(|target − root|, |a − b|, a + b)
+/// cos α = (a² + d² − b²) / (2 a d)                 (angle at the root, between the
+///                                                   root→target line and the first segment)
+/// u = (target − root) / |target − root|,  v = the pole direction made perpendicular to u
+/// middle' = root + a (cos α u + sin α v),   end' = root + d u
+/// ```
+/// The pole (a point in the same space, e.g. in front of the knee) picks the plane the chain bends
+/// in: the middle joint goes to the pole's side. Without a usable pole (on the root→target line)
+/// the current middle joint's side is kept. A target closer than `|a − b|` or further than `a + b`
+/// is unreachable: the chain goes as near as it can and `reached` is `false`.
+pub fn two_joint(
+    root: Vec3,
+    middle: Vec3,
+    end: Vec3,
+    target: Vec3,
+    pole: Vec3,
+    tolerance: f32,
+) -> Result<TwoJointSolution, IkError> {
+    check_chain(&[root, middle, end], target)?;
+    check_solver(1, tolerance)?;
+    if !pole.is_finite() {
+        return Err(IkError::NonFinite { what: "pole" });
+    }
+    let a = root.distance(middle);
+    let b = middle.distance(end);
+    let to_target = target - root;
+    let distance = to_target.length();
+    let u = if distance > 1e-9 {
+        to_target / distance
+    } else {
+        (end - root).normalize_or(Vec3::Y)
+    };
+    // A hair inside the limits keeps sin α away from 0 (no flip of the bend direction).
+    let d = distance.clamp((a - b).abs() + 1e-6, a + b - 1e-6);
+    let cos_alpha = ((a * a + d * d - b * b) / (2.0 * a * d)).clamp(-1.0, 1.0);
+    let sin_alpha = (1.0 - cos_alpha * cos_alpha).max(0.0).sqrt();
+    let perpendicular = |w: Vec3| w - u * w.dot(u);
+    let v = perpendicular(pole - root)
+        .try_normalize()
+        .or_else(|| perpendicular(middle - root).try_normalize())
+        .unwrap_or_else(|| u.any_orthonormal_vector());
+    let new_middle = root + a * (cos_alpha * u + sin_alpha * v);
+    let new_end = root + d * u;
+    let root_rotation = Quat::from_rotation_arc((middle - root) / a, (new_middle - root) / a);
+    let turned_lower = root_rotation * (end - middle) / b;
+    let middle_rotation = Quat::from_rotation_arc(turned_lower, (new_end - new_middle) / b);
+    let error = new_end.distance(target);
+    Ok(TwoJointSolution {
+        middle: new_middle,
+        end: new_end,
+        root_rotation,
+        middle_rotation,
+        result: IkResult {
+            reached: error <= tolerance,
+            error,
+            iterations: 1,
+        },
+    })
+}
+
+/// Cyclic Coordinate Descent on a chain of positions (`chain[0]` the root, the last the end
+/// effector). One iteration visits the joints from the one before the end back to the root and
+/// turns everything after joint `i` about it by the rotation taking `end − p_i` onto
+/// `target − p_i`:
+/// ```text
+/// for i = n−1 … 0:   R = rotation_arc(end − p_i, target − p_i);   p_j ← p_i + R (p_j − p_i)  for j > i
+/// ```
+/// Stops when the end is within `tolerance` of the target or after `max_iterations`. Segment
+/// lengths are kept exactly (up to rounding). `errors`, if given, receives the error after each
+/// iteration (as many as fit).
+pub fn ccd(
+    chain: &mut [Vec3],
+    target: Vec3,
+    max_iterations: usize,
+    tolerance: f32,
+    mut errors: Option<&mut [f32]>,
+) -> Result<IkResult, IkError> {
+    check_chain(chain, target)?;
+    check_solver(max_iterations, tolerance)?;
+    let n = chain.len();
+    let mut error = chain[n - 1].distance(target);
+    let mut iterations = 0;
+    while error > tolerance && iterations < max_iterations {
+        for i in (0..n - 1).rev() {
+            let pivot = chain[i];
+            let from = chain[n - 1] - pivot;
+            let to = target - pivot;
+            let (Some(from), Some(to)) = (from.try_normalize(), to.try_normalize()) else {
+                continue;
+            };
+            let r = Quat::from_rotation_arc(from, to);
+            for p in &mut chain[i + 1..] {
+                *p = pivot + r * (*p - pivot);
+            }
+        }
+        error = chain[n - 1].distance(target);
+        if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
+            *slot = error;
+        }
+        iterations += 1;
+    }
+    Ok(IkResult {
+        reached: error <= tolerance,
+        error,
+        iterations,
+    })
+}
+
+/// FABRIK on a chain of positions (`chain[0]` the root, which stays put).
+/// ```text
+/// backward: p_n ← target;  for i = n−1 … 0:  p_i ← p_{i+1} + ℓ_i (p_i − p_{i+1}) / |p_i − p_{i+1}|
+/// forward:  p_0 ← root;    for i = 1 … n:    p_i ← p_{i−1} + ℓ_{i−1} (p_i − p_{i−1}) / |p_i − p_{i−1}|
+/// ```
+/// with `ℓ_i = |p_{i+1} − p_i|` the segment lengths. An unreachable target (further than the sum of
+/// the lengths) straightens the chain towards it in one step. Stops within `tolerance` or after
+/// `max_iterations`; `errors` as in [`ccd`].
+pub fn fabrik(
+    chain: &mut [Vec3],
+    target: Vec3,
+    max_iterations: usize,
+    tolerance: f32,
+    mut errors: Option<&mut [f32]>,
+) -> Result<IkResult, IkError> {
+    check_chain(chain, target)?;
+    check_solver(max_iterations, tolerance)?;
+    let n = chain.len();
+    let root = chain[0];
+    // The segment lengths ℓ_i, kept on the stack (a chain has at most MAX_CHAIN_JOINTS joints).
+    let mut buffer = [0.0f32; MAX_CHAIN_JOINTS];
+    let lens = &mut buffer[..n - 1];
+    for (i, l) in lens.iter_mut().enumerate() {
+        *l = chain[i].distance(chain[i + 1]);
+    }
+    let total: f32 = lens.iter().sum();
+    if root.distance(target) >= total {
+        let u = (target - root).normalize_or(Vec3::Y);
+        let mut along = 0.0;
+        for i in 1..n {
+            along += lens[i - 1];
+            chain[i] = root + u * along;
+        }
+        let error = chain[n - 1].distance(target);
+        if let Some(slot) = errors.and_then(|e| e.get_mut(0)) {
+            *slot = error;
+        }
+        return Ok(IkResult {
+            reached: error <= tolerance,
+            error,
+            iterations: 1,
+        });
+    }
+    let mut error = chain[n - 1].distance(target);
+    let mut iterations = 0;
+    while error > tolerance && iterations < max_iterations {
+        chain[n - 1] = target;
+        for i in (0..n - 1).rev() {
+            let dir = (chain[i] - chain[i + 1]).normalize_or(Vec3::Y);
+            chain[i] = chain[i + 1] + dir * lens[i];
+        }
+        chain[0] = root;
+        for i in 1..n {
+            let dir = (chain[i] - chain[i - 1]).normalize_or(Vec3::Y);
+            chain[i] = chain[i - 1] + dir * lens[i - 1];
+        }
+        error = chain[n - 1].distance(target);
+        if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
+            *slot = error;
+        }
+        iterations += 1;
+    }
+    Ok(IkResult {
+        reached: error <= tolerance,
+        error,
+        iterations,
+    })
+}

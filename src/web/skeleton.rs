@@ -1,0 +1,206 @@
+//! Bindings for lesson 06, "Skeletons and forward kinematics": thin wrappers around
+//! [`crate::figures::skeleton`], which holds the figure's logic and is tested natively.
+
+use super::{js, Viewer};
+use crate::figures::skeleton::SkeletonFigure;
+use glam::Vec3;
+use wasm_bindgen::prelude::*;
+
+/// The skeleton figure: the built-in human playing a clip.
+#[wasm_bindgen]
+pub struct SkeletonScene {
+    scene: SkeletonFigure,
+}
+
+#[wasm_bindgen]
+impl SkeletonScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> SkeletonScene {
+        let mut scene = SkeletonFigure::new();
+        scene.set_runner(super::sandbox::run);
+        SkeletonScene { scene }
+    }
+
+    #[wasm_bindgen(js_name = jointNames)]
+    pub fn joint_names(&self) -> Vec<String> {
+        self.scene.skeleton().names().to_vec()
+    }
+
+    /// Each joint's parent index (−1 for the root).
+    pub fn parents(&self) -> Vec<i32> {
+        self.scene.skeleton().parents().to_vec()
+    }
+
+    /// Each joint's group size (itself plus its descendants).
+    #[wasm_bindgen(js_name = groupSizes)]
+    pub fn group_sizes(&self) -> Vec<u32> {
+        let sizes = self.scene.skeleton().group_sizes();
+        sizes.iter().map(|&s| s as u32).collect()
+    }
+
+    #[wasm_bindgen(js_name = clipNames)]
+    pub fn clip_names(&self) -> Vec<String> {
+        self.scene.clip_names()
+    }
+
+    /// Plays the clip with this name (one of `clipNames()`).
+    #[wasm_bindgen(js_name = setClip)]
+    pub fn set_clip(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_clip(name).map_err(js)
+    }
+
+    /// Keys per cycle of every clip, in [4, 25].
+    #[wasm_bindgen(js_name = setKeysPerCycle)]
+    pub fn set_keys_per_cycle(&mut self, keys: f32) -> Result<(), JsError> {
+        self.scene.set_keys_per_cycle(keys).map_err(js)
+    }
+
+    /// "step", "linear (nlerp)", "linear (slerp)" or "cubic".
+    #[wasm_bindgen(js_name = setInterpolation)]
+    pub fn set_interpolation(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_interpolation(name).map_err(js)
+    }
+
+    /// "nlerp" or "slerp".
+    #[wasm_bindgen(js_name = setRotationInterpolation)]
+    pub fn set_rotation_interpolation(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_rotation_interpolation(name).map_err(js)
+    }
+
+    /// Crossfades clip `name` (or "none") in with weight `weight ∈ [0, 1]`, at the same phase.
+    #[wasm_bindgen(js_name = setBlend)]
+    pub fn set_blend(&mut self, name: &str, weight: f32) -> Result<(), JsError> {
+        self.scene.set_blend(name, weight).map_err(js)
+    }
+
+    /// Selects the joint drawn in orange (its group in teal).
+    pub fn select(&mut self, joint: usize) -> Result<(), JsError> {
+        self.scene.select(joint).map_err(js)
+    }
+
+    /// A joint's angle offsets on top of the clip, degrees (x, y, z).
+    #[wasm_bindgen(js_name = jointAnglesDeg)]
+    pub fn joint_angles_deg(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+        let a = self.scene.joint_angles_deg(joint).map_err(js)?;
+        Ok(a.to_array().to_vec())
+    }
+
+    /// Sets a joint's angle offsets, each in [−180, 180] degrees.
+    #[wasm_bindgen(js_name = setJointAnglesDeg)]
+    pub fn set_joint_angles_deg(
+        &mut self,
+        joint: usize,
+        x_deg: f32,
+        y_deg: f32,
+        z_deg: f32,
+    ) -> Result<(), JsError> {
+        let deg = Vec3::new(x_deg, y_deg, z_deg);
+        self.scene.set_joint_angles_deg(joint, deg).map_err(js)
+    }
+
+    /// Clears every joint's angle offsets.
+    #[wasm_bindgen(js_name = resetPose)]
+    pub fn reset_pose(&mut self) {
+        self.scene.reset_pose();
+    }
+
+    #[wasm_bindgen(js_name = setShowBoxes)]
+    pub fn set_show_boxes(&mut self, on: bool) {
+        self.scene.set_show_boxes(on);
+    }
+
+    #[wasm_bindgen(js_name = setShowAxes)]
+    pub fn set_show_axes(&mut self, on: bool) {
+        self.scene.set_show_axes(on);
+    }
+
+    /// Runs the student's exercises 6.1 and 6.2 (in the sandbox) instead of the reference.
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+
+    /// The playing clip's duration, seconds.
+    #[wasm_bindgen(js_name = durationSec)]
+    pub fn duration_sec(&self) -> f32 {
+        self.scene.duration_sec()
+    }
+
+    /// The playing clip's key times, seconds.
+    #[wasm_bindgen(js_name = keyTimes)]
+    pub fn key_times(&self) -> Vec<f32> {
+        self.scene.key_times()
+    }
+
+    /// Poses at `time_sec` and draws. Returns the note for the page.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+
+    /// Local matrix of a joint at the last pose, column-major.
+    #[wasm_bindgen(js_name = localMatrix)]
+    pub fn local_matrix(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+        let m = self.scene.local_matrix(joint).map_err(js)?;
+        Ok(m.to_cols_array().to_vec())
+    }
+
+    /// Model matrix of a joint at the last pose, column-major.
+    #[wasm_bindgen(js_name = modelMatrix)]
+    pub fn model_matrix(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+        let m = self.scene.model_matrix(joint).map_err(js)?;
+        Ok(m.to_cols_array().to_vec())
+    }
+
+    /// One cycle of the selected joint for the plots: `[t, angle (°), speed (°/s), …]`.
+    #[wasm_bindgen(js_name = sampleSelected)]
+    pub fn sample_selected(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+        self.scene.sample_selected(samples).map_err(js)
+    }
+}
+
+impl Default for SkeletonScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Builds a skeleton from JavaScript arrays and says what is wrong, or `"ok"`: the page's check
+/// of a typed-in hierarchy, and the wasm-boundary test of every validation rule. `rest` holds 10
+/// numbers per joint: translation (3), rotation quaternion x, y, z, w (4), scale (3).
+#[wasm_bindgen(js_name = checkSkeleton)]
+pub fn check_skeleton(
+    names: Vec<String>,
+    parents: Vec<i32>,
+    rest: Vec<f32>,
+) -> Result<String, JsError> {
+    use crate::skeleton::{Skeleton, Transform, MAX_JOINTS};
+    if parents.len() > MAX_JOINTS {
+        return Err(JsError::new(&format!(
+            "parents: {} joints is too many (at most {MAX_JOINTS})",
+            parents.len()
+        )));
+    }
+    if rest.len() != 10 * parents.len() {
+        return Err(JsError::new(&format!(
+            "rest: expected 10 numbers per joint ({}), got {}",
+            10 * parents.len(),
+            rest.len()
+        )));
+    }
+    let rest = rest
+        .chunks_exact(10)
+        .map(|c| Transform {
+            translation: Vec3::new(c[0], c[1], c[2]),
+            rotation: glam::Quat::from_xyzw(c[3], c[4], c[5], c[6]),
+            scale: Vec3::new(c[7], c[8], c[9]),
+        })
+        .collect();
+    Skeleton::new(names, parents, rest)
+        .map(|_| "ok".to_string())
+        .map_err(|e| JsError::new(&e.to_string()))
+}
