@@ -11,6 +11,7 @@
 //! | `02-keyframes`: keyframes and splines | [`curves`] | [`figures::curves`] | `web::curves` (bench: `web::bench_curves`) | [`exercises::curves`] |
 //! | `03-rotations`: rotations | [`rotation`] | [`figures::rotations`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
 //! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
+//! | `05-noise`: noise and terrain | [`noise`], [`terrain`] | [`figures::noise`] | `web::noise` (bench: `web::bench_noise`) | [`exercises::noise`] |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
@@ -35,8 +36,10 @@ pub mod exercises;
 pub mod figures;
 pub mod fixtures;
 pub mod mesh;
+pub mod noise;
 pub mod rigid;
 pub mod rotation;
+pub mod terrain;
 pub mod transform;
 
 #[cfg(target_arch = "wasm32")]
