@@ -43,11 +43,18 @@ fn f32_noise_agrees_with_the_reference_to_f32_rounding() {
         worst = worst.max(err);
         assert!(err < 2e-6, "at ({x}, {y}, {z}): f32 {got}, f64 {exact}");
         if z == 0.0 {
-            assert_eq!(perm.noise2(xf, yf), perm.noise3(xf, yf, 0.0), "2D = z=0 slice");
+            assert_eq!(
+                perm.noise2(xf, yf),
+                perm.noise3(xf, yf, 0.0),
+                "2D = z=0 slice"
+            );
             let _ = n;
         }
     }
-    assert!(worst > 0.0, "the comparison must see f32 rounding somewhere");
+    assert!(
+        worst > 0.0,
+        "the comparison must see f32 rounding somewhere"
+    );
     let got = perm.noise3(3.14, 42.0, 7.0) as f64;
     assert!((got - 0.13691995878400012).abs() < 1e-6, "{got}");
 }
@@ -100,7 +107,11 @@ fn values_stay_within_bounds_and_use_the_range() {
     let mut rng = inbetween::fixtures::Rng::new(3);
     for _ in 0..200_000 {
         let p = rng.vec3(-40.0, 40.0);
-        let (n1, n2, n3) = (perm.noise1(p.x), perm.noise2(p.x, p.y), perm.noise3(p.x, p.y, p.z));
+        let (n1, n2, n3) = (
+            perm.noise1(p.x),
+            perm.noise2(p.x, p.y),
+            perm.noise3(p.x, p.y, p.z),
+        );
         assert!(n1.abs() <= 0.5 + 1e-6, "1D {n1}");
         assert!(n2.abs() <= 1.0 + 1e-6, "2D {n2}");
         assert!(n3.abs() <= 1.0 + 1e-6, "3D {n3}");
@@ -200,14 +211,21 @@ fn noise_repeats_every_256_cells() {
         // Equal up to f32 rounding of the coordinate near 256 (about 3e-5).
         assert!((perm.noise2(x, y) - perm.noise2(x + 256.0, y)).abs() < 2e-4);
         assert!((perm.noise2(x, y) - perm.noise2(x, y - 256.0)).abs() < 2e-4);
-        assert_eq!(noise3_f64(x as f64, y as f64, 0.5), noise3_f64(x as f64 + 256.0, y as f64, 0.5));
+        assert_eq!(
+            noise3_f64(x as f64, y as f64, 0.5),
+            noise3_f64(x as f64 + 256.0, y as f64, 0.5)
+        );
     }
 }
 
 #[test]
 fn fractal_sum_is_the_sum_of_its_octaves() {
     let perm = Permutation::perlin();
-    let f = Fractal { n: 5, alpha: 0.5, omega: 2.0 };
+    let f = Fractal {
+        n: 5,
+        alpha: 0.5,
+        omega: 2.0,
+    };
     for &(x, y) in &[(0.3f32, 0.7f32), (-1.2, 2.5), (3.3, -0.1)] {
         let by_octave: f32 = (0..=5).map(|k| f.octave2(&perm, k, x, y)).sum();
         assert!((f.sum2(&perm, x, y) - by_octave).abs() < 1e-6);
@@ -215,20 +233,41 @@ fn fractal_sum_is_the_sum_of_its_octaves() {
         assert!((g - by_octave).abs() < 1e-6);
     }
     // N = 0 is plain noise; α = 0 keeps only octave 0.
-    let one = Fractal { n: 0, alpha: 0.5, omega: 2.0 };
+    let one = Fractal {
+        n: 0,
+        alpha: 0.5,
+        omega: 2.0,
+    };
     assert_eq!(one.sum2(&perm, 0.3, 0.4), perm.noise2(0.3, 0.4));
-    let flat = Fractal { n: 6, alpha: 0.0, omega: 2.0 };
+    let flat = Fractal {
+        n: 6,
+        alpha: 0.0,
+        omega: 2.0,
+    };
     assert_eq!(flat.sum2(&perm, 0.3, 0.4), perm.noise2(0.3, 0.4));
     assert!((Fractal::COURSE.amplitude_sum() - (1.0 - 0.4f32.powi(10)) / 0.6).abs() < 1e-5);
     assert!(Fractal { n: 17, ..f }.validate().unwrap_err().contains("N"));
-    assert!(Fractal { alpha: 1.5, ..f }.validate().unwrap_err().contains("alpha"));
-    assert!(Fractal { omega: f32::NAN, ..f }.validate().unwrap_err().contains("omega"));
+    assert!(Fractal { alpha: 1.5, ..f }
+        .validate()
+        .unwrap_err()
+        .contains("alpha"));
+    assert!(Fractal {
+        omega: f32::NAN,
+        ..f
+    }
+    .validate()
+    .unwrap_err()
+    .contains("omega"));
 }
 
 #[test]
 fn ridge_turbulence_and_marble() {
     let perm = Permutation::perlin();
-    let f = Fractal { n: 4, alpha: 0.5, omega: 2.0 };
+    let f = Fractal {
+        n: 4,
+        alpha: 0.5,
+        omega: 2.0,
+    };
     let mut rng = inbetween::fixtures::Rng::new(9);
     for _ in 0..500 {
         let (x, y) = (rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
@@ -247,7 +286,11 @@ fn ridge_turbulence_and_marble() {
 #[test]
 fn fractal_derivatives_match_finite_differences() {
     let perm = Permutation::perlin();
-    let f = Fractal { n: 3, alpha: 0.5, omega: 2.0 };
+    let f = Fractal {
+        n: 3,
+        alpha: 0.5,
+        omega: 2.0,
+    };
     let e = 2e-4;
     for &(x, y) in &[(0.31f32, 0.77f32), (-1.23, 2.51), (3.37, -0.13)] {
         let (_, d) = f.shaped2_with_derivative(&perm, Shape::Sum, x, y);
@@ -286,7 +329,13 @@ fn terrain_normals_match_finite_differences_of_the_mesh() {
     // The mesh spacing (2/256) is coarse next to octave 9's wavelength (1/512): compare loosely.
     assert!(worst < 0.6, "largest angle to the mesh normal {worst} rad");
     // With N = 0 the mesh resolves the noise well and the two agree closely.
-    let smooth = TerrainParams { fractal: Fractal { n: 0, ..Fractal::COURSE }, ..p };
+    let smooth = TerrainParams {
+        fractal: Fractal {
+            n: 0,
+            ..Fractal::COURSE
+        },
+        ..p
+    };
     t.regenerate(&perm, &smooth).unwrap();
     let k = 100 * r + 130;
     let fd = (t.positions[k + r] - t.positions[k - r])
@@ -299,7 +348,12 @@ fn terrain_normals_match_finite_differences_of_the_mesh() {
 fn terrain_follows_the_course_formula() {
     let perm = Permutation::perlin();
     let mut t = Terrain::new(33).unwrap();
-    let p = TerrainParams { h: 0.5, s: 2.0, o: 0.25, ..TerrainParams::default() };
+    let p = TerrainParams {
+        h: 0.5,
+        s: 2.0,
+        o: 0.25,
+        ..TerrainParams::default()
+    };
     t.regenerate(&perm, &p).unwrap();
     let (u, v) = t.uv(5, 9);
     let expected = 0.5 * Fractal::COURSE.sum2(&perm, 2.0 * (u + 0.25), 2.0 * (v + 0.25));
@@ -317,7 +371,11 @@ fn regenerating_never_reallocates() {
     let perm = Permutation::perlin();
     let mut t = Terrain::new(64).unwrap();
     let ptrs = (t.positions.as_ptr(), t.normals.as_ptr(), t.colors.as_ptr());
-    let caps = (t.positions.capacity(), t.normals.capacity(), t.colors.capacity());
+    let caps = (
+        t.positions.capacity(),
+        t.normals.capacity(),
+        t.colors.capacity(),
+    );
     for variant in [
         Variant::Sum,
         Variant::Ridge,
@@ -327,19 +385,37 @@ fn regenerating_never_reallocates() {
         Variant::Evolving { t: 0.5 },
     ] {
         let before = t.positions[1000];
-        t.regenerate(&perm, &TerrainParams { variant, ..TerrainParams::default() })
-            .unwrap();
+        t.regenerate(
+            &perm,
+            &TerrainParams {
+                variant,
+                ..TerrainParams::default()
+            },
+        )
+        .unwrap();
         assert_ne!(t.positions[1000], before, "{variant:?} changed the heights");
         assert!(t.normals.iter().all(|n| n.is_finite() && n.y > 0.0));
     }
-    assert_eq!(ptrs, (t.positions.as_ptr(), t.normals.as_ptr(), t.colors.as_ptr()));
-    assert_eq!(caps, (t.positions.capacity(), t.normals.capacity(), t.colors.capacity()));
+    assert_eq!(
+        ptrs,
+        (t.positions.as_ptr(), t.normals.as_ptr(), t.colors.as_ptr())
+    );
+    assert_eq!(
+        caps,
+        (
+            t.positions.capacity(),
+            t.normals.capacity(),
+            t.colors.capacity()
+        )
+    );
 }
 
 #[test]
 fn terrain_rejects_bad_parameters_by_name() {
     assert!(Terrain::new(1).unwrap_err().contains("resolution"));
-    assert!(Terrain::new(MAX_RESOLUTION + 1).unwrap_err().contains("resolution"));
+    assert!(Terrain::new(MAX_RESOLUTION + 1)
+        .unwrap_err()
+        .contains("resolution"));
     let perm = Permutation::perlin();
     let mut t = Terrain::new(4).unwrap();
     let d = TerrainParams::default();
@@ -347,7 +423,13 @@ fn terrain_rejects_bad_parameters_by_name() {
         (TerrainParams { h: f32::NAN, ..d }, "h"),
         (TerrainParams { s: 0.0, ..d }, "s"),
         (TerrainParams { o: 1e9, ..d }, "o"),
-        (TerrainParams { variant: Variant::Evolving { t: f32::INFINITY }, ..d }, "t"),
+        (
+            TerrainParams {
+                variant: Variant::Evolving { t: f32::INFINITY },
+                ..d
+            },
+            "t",
+        ),
     ] {
         let e = t.regenerate(&perm, &p).unwrap_err();
         assert!(e.starts_with(name), "{e}");
@@ -390,12 +472,18 @@ fn koch_and_sierpinski_counts_and_shapes() {
         assert!(pts.iter().all(|p| p.length() >= 0.5 - 1e-4));
     }
     let mut tris = Vec::new();
-    let corners = [Vec2::new(-1.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(0.0, 1.7)];
+    let corners = [
+        Vec2::new(-1.0, 0.0),
+        Vec2::new(1.0, 0.0),
+        Vec2::new(0.0, 1.7),
+    ];
     sierpinski(3, corners, &mut tris).unwrap();
     assert_eq!(tris.len(), 27);
     let area = |t: &[Vec2; 3]| 0.5 * (t[1] - t[0]).perp_dot(t[2] - t[0]).abs();
     let total: f32 = tris.iter().map(area).sum();
     assert!((total - area(&corners) * 0.75f32.powi(3)).abs() < 1e-4);
-    assert!(koch_snowflake(MAX_DEPTH + 1, 1.0, &mut pts).unwrap_err().contains("depth"));
+    assert!(koch_snowflake(MAX_DEPTH + 1, 1.0, &mut pts)
+        .unwrap_err()
+        .contains("depth"));
     assert!(sierpinski(MAX_DEPTH + 1, corners, &mut tris).is_err());
 }

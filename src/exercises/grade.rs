@@ -57,6 +57,7 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::transforms::grade(&mut rng));
     reports.extend(super::curves::grade(&mut rng));
     reports.extend(super::rotations::grade(&mut rng));
+    reports.extend(super::noise::grade(&mut rng));
     reports
 }
 

@@ -14,6 +14,7 @@
 
 pub mod curves;
 pub mod grade;
+pub mod noise;
 pub mod rotations;
 pub mod run;
 pub mod transforms;

@@ -254,7 +254,8 @@ impl Permutation {
     /// rounding (about 1e-6 near the origin).
     #[inline]
     pub fn noise3(&self, x: f32, y: f32, z: f32) -> f32 {
-        self.noise3_with_derivative_impl::<false>(Vec3::new(x, y, z)).0
+        self.noise3_with_derivative_impl::<false>(Vec3::new(x, y, z))
+            .0
     }
 
     /// [`Permutation::noise3`] and its exact gradient.
@@ -393,7 +394,11 @@ pub fn noise3_f64(x: f64, y: f64, z: f64) -> f64 {
         lerp(
             v,
             lerp(u, grad(p(aa), x, y, z), grad(p(ba), x - 1.0, y, z)),
-            lerp(u, grad(p(ab), x, y - 1.0, z), grad(p(bb), x - 1.0, y - 1.0, z)),
+            lerp(
+                u,
+                grad(p(ab), x, y - 1.0, z),
+                grad(p(bb), x - 1.0, y - 1.0, z),
+            ),
         ),
         lerp(
             v,

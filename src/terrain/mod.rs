@@ -97,7 +97,10 @@ impl TerrainParams {
             Variant::Marble => {
                 let (r, dr) = f.shaped2_with_derivative(perm, Shape::Ridge, x, y);
                 let phase = 4.0 * x + r;
-                (0.5 * phase.sin(), 0.5 * phase.cos() * (Vec2::new(4.0, 0.0) + dr))
+                (
+                    0.5 * phase.sin(),
+                    0.5 * phase.cos() * (Vec2::new(4.0, 0.0) + dr),
+                )
             }
             Variant::Sliding { t } => f.shaped2_with_derivative(perm, Shape::Sum, x, y + t),
             Variant::Evolving { t } => {
