@@ -1,3 +1,5 @@
+#![allow(clippy::approx_constant)] // 3.14 is Perlin's own test point, not π.
+#![allow(clippy::needless_range_loop)]
 //! Tests of the lesson 05 cores: src/noise and src/terrain.
 
 use glam::{Vec2, Vec3};

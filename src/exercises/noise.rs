@@ -158,7 +158,8 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     );
 
     // 5.3
-    let mut sums: Vec<(&str, (Vec2, usize, f32, f32))> = vec![
+    type Sum = (Vec2, usize, f32, f32);
+    let mut sums: Vec<(&str, Sum)> = vec![
         ("n = 0: plain noise", (Vec2::new(0.3, 0.7), 0, 0.5, 2.0)),
         (
             "a lattice point: every octave is 0",

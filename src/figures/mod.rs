@@ -8,6 +8,7 @@
 //! inputs (helpers below).
 
 pub mod curves;
+pub mod noise;
 pub mod rigid;
 pub mod rotations;
 pub mod transforms;

@@ -9,6 +9,7 @@
 //! - [`perlin`]: Ken Perlin's improved noise (2002) in 1D, 2D, 3D, faithful to his reference,
 //!   with analytic derivatives, seeded permutations and the double-precision transcription.
 //! - [`fractal`]: fractal sum (fBm), ridge, inverted ridge, turbulence, marble.
+//! - [`texture`]: marble, wood and clouds into RGBA buffers.
 //! - [`fractals`]: Koch snowflake and Sierpinski triangle (the course's introduction to
 //!   self-similar detail).
 //!
@@ -17,6 +18,7 @@
 pub mod fractal;
 pub mod fractals;
 pub mod perlin;
+pub mod texture;
 
 pub use fractal::{marble2, turbulence2, Fractal, Shape, MAX_N};
 pub use perlin::{

@@ -6,6 +6,7 @@ mod bench;
 mod bench_curves;
 mod bench_rotation;
 mod curves;
+mod noise;
 mod rigid;
 mod rotations;
 pub mod sandbox;
@@ -13,6 +14,10 @@ mod transforms;
 mod viewer;
 
 pub use curves::{KeyframesScene, LagrangeScene};
+pub use noise::{
+    FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
+    TexturesScene,
+};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
 pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
