@@ -44,7 +44,9 @@ fn check_n(n: f32, max: u32) -> Result<u32, String> {
 pub trait TerrainFigure {
     /// The terrains, in the order their mesh ids are passed to `draw`.
     fn terrains(&self) -> Vec<&Terrain>;
-    /// True once after the terrains changed (the web layer then re-uploads them).
+    /// Regenerates what the setters marked stale (setters only record the change, so a page that
+    /// sets five parameters in a row pays for one regeneration), then returns true once after the
+    /// terrains changed (the web layer then re-uploads them).
     fn take_dirty(&mut self) -> bool;
 }
 
@@ -239,6 +241,7 @@ pub struct Noise2d {
     use_exercise: bool,
     runner: Runner,
     dirty: bool,
+    stale: bool,
 }
 
 /// Figure 2's terrain: `s = 2` noise cells per metre, so `u ∈ [−1, 1]` covers `x ∈ [−2, 2]`.
@@ -255,6 +258,7 @@ impl Noise2d {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             dirty: true,
+            stale: false,
         };
         s.regenerate();
         s
@@ -285,13 +289,13 @@ impl Noise2d {
     }
     pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
         self.perm = permutation_for_seed(check_seed(seed)?);
-        self.regenerate();
+        self.stale = true;
         Ok(())
     }
     /// The 3D slice `z` (0 is the 2D noise), in `[0, 2]`.
     pub fn set_z(&mut self, z: f32) -> Result<(), String> {
         self.z = in_range("z", z, 0.0, 2.0)?;
-        self.regenerate();
+        self.stale = true;
         Ok(())
     }
     /// The probe in noise coordinates, each in `[−2, 2)`.
@@ -404,6 +408,9 @@ impl TerrainFigure for Noise2d {
         vec![&self.terrain]
     }
     fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
         std::mem::take(&mut self.dirty)
     }
 }
@@ -423,6 +430,7 @@ pub struct Octaves {
     use_exercise: bool,
     runner: Runner,
     dirty: bool,
+    stale: bool,
 }
 
 /// The profile's v (world z).
@@ -444,6 +452,7 @@ impl Octaves {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             dirty: true,
+            stale: false,
         };
         s.regenerate();
         s
@@ -473,7 +482,7 @@ impl Octaves {
         };
         f.validate()?;
         self.fractal = f;
-        self.regenerate();
+        self.stale = true;
         Ok(())
     }
     pub fn set_use_exercise(&mut self, on: bool) {
@@ -580,6 +589,9 @@ impl TerrainFigure for Octaves {
         vec![&self.terrain]
     }
     fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
         std::mem::take(&mut self.dirty)
     }
 }
@@ -611,6 +623,7 @@ pub struct TerrainScene {
     use_exercise: bool,
     runner: Runner,
     dirty: bool,
+    stale: bool,
 }
 
 impl TerrainScene {
@@ -624,6 +637,7 @@ impl TerrainScene {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             dirty: true,
+            stale: false,
         };
         s.regenerate().expect("the course's parameters are valid");
         s
@@ -669,7 +683,8 @@ impl TerrainScene {
         };
         p.validate()?;
         self.params = p;
-        self.regenerate()
+        self.stale = true;
+        Ok(())
     }
 
     /// One of [`VARIANT_NAMES`], by index.
@@ -681,7 +696,8 @@ impl TerrainScene {
             ));
         }
         self.variant = index;
-        self.regenerate()
+        self.stale = true;
+        Ok(())
     }
 
     /// Vertices per side, one of [`TERRAIN_RESOLUTIONS`] (or any in 2..=MAX_RESOLUTION);
@@ -694,14 +710,20 @@ impl TerrainScene {
                 ));
             }
             self.terrain = Terrain::new(resolution)?;
-            self.regenerate()?;
+            self.stale = true;
         }
         Ok(())
     }
 
     pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
         self.perm = permutation_for_seed(check_seed(seed)?);
-        self.regenerate()
+        self.stale = true;
+        Ok(())
+    }
+
+    /// True when a setter changed something the next upload will regenerate.
+    pub fn is_stale(&self) -> bool {
+        self.stale
     }
 
     /// True for the variants that move with time.
@@ -714,7 +736,7 @@ impl TerrainScene {
         let dt = in_range("dt", dt_sec, 0.0, 1.0)?;
         if self.animated() {
             self.time_sec = (self.time_sec + dt) % 1000.0;
-            self.regenerate()?;
+            self.stale = true;
         }
         Ok(())
     }
@@ -798,6 +820,10 @@ impl TerrainFigure for TerrainScene {
         vec![&self.terrain]
     }
     fn take_dirty(&mut self) -> bool {
+        // The setters validated everything, so this cannot fail; if it did, the old terrain stays.
+        if std::mem::take(&mut self.stale) && self.regenerate().is_err() {
+            return false;
+        }
         std::mem::take(&mut self.dirty)
     }
 }
@@ -820,6 +846,7 @@ pub struct Textures {
     planes: [Terrain; 3],
     rgba: Vec<u8>,
     dirty: bool,
+    stale: bool,
 }
 
 pub const TEXTURE_KINDS: [(TextureKind, &str); 3] = [
@@ -841,6 +868,7 @@ impl Textures {
             planes: [plane(), plane(), plane()],
             rgba: vec![0; 4 * TEXTURE_SIZE * TEXTURE_SIZE],
             dirty: true,
+            stale: false,
         };
         s.regenerate().expect("valid defaults");
         s
@@ -878,7 +906,8 @@ impl Textures {
         let turbulence = in_range("turbulence", turbulence, 0.0, 20.0)?;
         let n = check_n(n, 8)?;
         (self.scale, self.turbulence, self.n) = (scale, turbulence, n);
-        self.regenerate()
+        self.stale = true;
+        Ok(())
     }
 
     pub fn set_animate(&mut self, on: bool) -> Result<(), String> {
@@ -886,7 +915,7 @@ impl Textures {
         if on {
             // Step at once so that ticking the box shows a change even before the next frame.
             self.time_sec += 0.25;
-            self.regenerate()?;
+            self.stale = true;
         }
         Ok(())
     }
@@ -895,7 +924,7 @@ impl Textures {
         let dt = in_range("dt", dt_sec, 0.0, 1.0)?;
         if self.animate {
             self.time_sec = (self.time_sec + 0.5 * dt) % 1000.0;
-            self.regenerate()?;
+            self.stale = true;
         }
         Ok(())
     }
@@ -932,6 +961,9 @@ impl TerrainFigure for Textures {
         self.planes.iter().collect()
     }
     fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) && self.regenerate().is_err() {
+            return false;
+        }
         std::mem::take(&mut self.dirty)
     }
 }

@@ -126,9 +126,9 @@ pub fn terrain_normal(h: f32, s: f32, grad_g: Vec2) -> Vec3 {
     height_field_normal(h * s * grad_g.x, h * s * grad_g.y)
 }
 
-/// A colour for a terrain vertex from its height (metres) and its normal: water-blue below 0
-/// blending to grass, rock on slopes steeper than about 35°, snow above `0.6 · h_max` on flat
-/// ground. Linear RGBA.
+/// A colour for a terrain vertex from its height (metres) and its normal: water-blue in the lowest
+/// parts (below `−0.3 · h_max`), sand, then grass, rock on slopes steeper than about 35°, snow
+/// above `0.45 · h_max` on flat ground. Linear RGBA.
 pub fn terrain_color(height: f32, normal: Vec3, h_max: f32) -> Vec4 {
     let h_max = h_max.max(1e-6);
     let rel = height / h_max; // roughly −1 … 1
@@ -138,11 +138,11 @@ pub fn terrain_color(height: f32, normal: Vec3, h_max: f32) -> Vec4 {
     let rock = Vec3::new(0.28, 0.24, 0.21);
     let snow = Vec3::new(0.9, 0.92, 0.95);
     let smooth = |a: f32, b: f32, x: f32| ((x - a) / (b - a)).clamp(0.0, 1.0);
-    let mut c = water.lerp(sand, smooth(-0.15, -0.05, rel));
-    c = c.lerp(grass, smooth(-0.05, 0.05, rel));
+    let mut c = water.lerp(sand, smooth(-0.32, -0.26, rel));
+    c = c.lerp(grass, smooth(-0.24, -0.14, rel));
     let steep = smooth(0.12, 0.25, 1.0 - normal.y); // 1 − cos(slope)
     c = c.lerp(rock, steep);
-    let high = smooth(0.35, 0.5, rel) * (1.0 - steep);
+    let high = smooth(0.4, 0.5, rel) * (1.0 - steep);
     c = c.lerp(snow, high);
     c.extend(1.0)
 }

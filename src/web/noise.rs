@@ -219,6 +219,7 @@ impl Default for OctavesScene {
 pub struct TerrainFigureScene {
     scene: TerrainScene,
     gpu: GpuTerrains,
+    last_regenerate_ms: f64,
 }
 
 #[wasm_bindgen]
@@ -230,6 +231,7 @@ impl TerrainFigureScene {
         TerrainFigureScene {
             scene,
             gpu: GpuTerrains::default(),
+            last_regenerate_ms: 0.0,
         }
     }
     /// N, α, ω, h, s, o; each checked by name.
@@ -269,11 +271,29 @@ impl TerrainFigureScene {
         self.scene.set_use_exercise(on);
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let start = now_ms();
+        let stale = self.scene.is_stale();
         let mesh = self.gpu.sync(viewer, &mut self.scene)?[0];
+        if stale {
+            self.last_regenerate_ms = now_ms() - start;
+        }
         let note = self.scene.draw(&mut viewer.renderer.frame, mesh);
         viewer.present()?;
         Ok(note)
     }
+
+    /// Milliseconds the last regeneration took (heights, normals, colours and the upload).
+    #[wasm_bindgen(getter, js_name = lastRegenerateMs)]
+    pub fn last_regenerate_ms(&self) -> f64 {
+        self.last_regenerate_ms
+    }
+}
+
+fn now_ms() -> f64 {
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map(|p| p.now())
+        .unwrap_or(0.0)
 }
 
 impl Default for TerrainFigureScene {
