@@ -1,3 +1,4 @@
+#![allow(clippy::needless_range_loop)]
 //! Native tests of lesson 05's figures (src/figures/noise.rs): what they draw and say.
 
 use glam::Vec3;

@@ -166,7 +166,7 @@ if (v4) {
   v4.setCamera(0, -0.05, 0, 3.0, 0.5, 0.6);
   const scene = new TerrainFigureScene();
   const variants = { sum: 0, ridge: 1, 'inverted ridge': 2, marble: 3, 'sliding f(x, y + t)': 4, 'evolving f(x, y, t)': 5 };
-  const p = { n: 9, alpha: 0.4, omega: 2, h: 0.3, s: 1, o: 0, variant: 0, resolution: 256, seed: 0, useExercise: false };
+  const p = { n: 9, alpha: 0.4, omega: 2, h: 0.3, s: 1, o: 0, variant: 0, resolution: 128, seed: 0, useExercise: false };
   const state = { accepted: { ...p } };
   const gui = new GUI({ container: document.querySelector('#fig-terrain .panel'), title: 'Terrain S(u, v)' });
   gui.add(p, 'n', 0, 12, 1).name('N (last octave)');

@@ -448,7 +448,7 @@ impl Octaves {
                 alpha: 0.5,
                 omega: 2.0,
             },
-            terrain: Terrain::new(257).expect("a valid resolution"),
+            terrain: Terrain::new(193).expect("a valid resolution"),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             dirty: true,
@@ -633,7 +633,7 @@ impl TerrainScene {
             params: TerrainParams::default(),
             variant: 0,
             time_sec: 0.0,
-            terrain: Terrain::new(256).expect("a valid resolution"),
+            terrain: Terrain::new(128).expect("a valid resolution"),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             dirty: true,
@@ -1035,7 +1035,7 @@ pub struct Quiz {
 }
 
 /// Vertices per side of each quiz terrain.
-pub const QUIZ_RESOLUTION: usize = 129;
+pub const QUIZ_RESOLUTION: usize = 97;
 const LETTERS: [&str; 6] = ["a", "b", "c", "d", "e", "f"];
 
 impl Quiz {

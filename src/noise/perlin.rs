@@ -240,11 +240,16 @@ impl Permutation {
     /// ```
     pub fn noise2_with_derivative(&self, x: f32, y: f32) -> (f32, Vec2) {
         let (xi, yi) = (floor_i32(x), floor_i32(y));
+        // The same hashes as noise2 (six table lookups for the four corners).
+        let (xx, yy) = ((xi & 255) as usize, (yi & 255) as usize);
+        let a = self.at(xx) + yy;
+        let b = self.at(xx + 1) + yy;
+        let g = |h: usize| grad2(self.at(h));
         let g = [
-            grad2(self.hash2(xi, yi)),
-            grad2(self.hash2(xi + 1, yi)),
-            grad2(self.hash2(xi, yi + 1)),
-            grad2(self.hash2(xi + 1, yi + 1)),
+            g(self.at(a)),
+            g(self.at(b)),
+            g(self.at(a + 1)),
+            g(self.at(b + 1)),
         ];
         cell2_with_derivative(Vec2::new(x - xi as f32, y - yi as f32), g)
     }

@@ -4,6 +4,7 @@
 
 mod bench;
 mod bench_curves;
+mod bench_noise;
 mod bench_rotation;
 mod curves;
 mod noise;
