@@ -67,7 +67,7 @@ if (v1) {
   gui.add(p, 'ramps').name('show the two ramps');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('n1-fade'), {
-    title: 'The fade curve', xLabel: 't (position in the cell, 0 to 1)', yLabel: 'weight, slope (no unit)',
+    title: 'The fade curve', xLabel: 't (position in the cell, 0 to 1)', yLabel: 'value (no unit)',
     series: ['fade(t)', 'fade′(t)', '3t² − 2t³ (1985)'], colors: [css('--z-axis'), css('--orange'), css('--grey')], minSpan: 0.5,
   });
   let rejected = '';

@@ -829,12 +829,12 @@ impl TerrainFigure for TerrainScene {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 5: procedural textures.
+// Figure 6: procedural textures.
 
-/// Texels per side of each of Figure 5's textures (and vertices per side of its planes).
+/// Texels per side of each of Figure 6's textures (and vertices per side of its planes).
 pub const TEXTURE_SIZE: usize = 160;
 
-/// Figure 5: marble, wood and clouds, each written into an RGBA buffer and shown as the vertex
+/// Figure 6: marble, wood and clouds, each written into an RGBA buffer and shown as the vertex
 /// colours of a dense plane (one vertex per texel).
 pub struct Textures {
     perm: Permutation,
@@ -969,7 +969,7 @@ impl TerrainFigure for Textures {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 6: the course's quiz.
+// Figure 5: the course's quiz.
 
 /// One of the quiz's parameter sets and why it looks the way it does.
 pub struct QuizSet {
@@ -1021,7 +1021,7 @@ pub fn quiz_sets() -> [QuizSet; 6] {
     ]
 }
 
-/// Figure 6: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
+/// Figure 5: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
 /// set to each and checks.
 pub struct Quiz {
     perm: Permutation,

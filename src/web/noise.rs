@@ -302,7 +302,7 @@ impl Default for TerrainFigureScene {
     }
 }
 
-/// Figure 5: procedural textures.
+/// Figure 6: procedural textures.
 #[wasm_bindgen]
 pub struct TexturesScene {
     scene: Textures,
@@ -344,7 +344,7 @@ impl Default for TexturesScene {
     }
 }
 
-/// Figure 6: the terrain quiz.
+/// Figure 5: the terrain quiz.
 #[wasm_bindgen]
 pub struct QuizScene {
     scene: Quiz,
