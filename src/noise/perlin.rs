@@ -238,6 +238,7 @@ impl Permutation {
     /// n = k₀ + k₁u + k₂v + k₃uv,   k₀ = n₀₀, k₁ = n₁₀ − n₀₀, k₂ = n₀₁ − n₀₀, k₃ = n₀₀ − n₁₀ − n₀₁ + n₁₁
     /// ∇n = bilerp(u, v; g₀₀, g₁₀, g₀₁, g₁₁) + (fade′(x)(k₁ + k₃v), fade′(y)(k₂ + k₃u))
     /// ```
+    #[inline]
     pub fn noise2_with_derivative(&self, x: f32, y: f32) -> (f32, Vec2) {
         let (xi, yi) = (floor_i32(x), floor_i32(y));
         // The same hashes as noise2 (six table lookups for the four corners).
@@ -345,21 +346,24 @@ pub fn cell2(p: Vec2, g: [Vec2; 4]) -> f32 {
     cell2_with_derivative(p, g).0
 }
 
-/// [`cell2`] and its gradient with respect to `p`.
+/// [`cell2`] and its gradient with respect to `p`. Written out in scalars: this is the inner
+/// loop of every terrain (one call per octave per vertex).
+#[inline]
 pub fn cell2_with_derivative(p: Vec2, g: [Vec2; 4]) -> (f32, Vec2) {
-    let n00 = g[0].dot(p);
-    let n10 = g[1].dot(p - Vec2::X);
-    let n01 = g[2].dot(p - Vec2::Y);
-    let n11 = g[3].dot(p - Vec2::ONE);
-    let (u, v) = (fade(p.x), fade(p.y));
+    let (x, y) = (p.x, p.y);
+    let n00 = g[0].x * x + g[0].y * y;
+    let n10 = g[1].x * (x - 1.0) + g[1].y * y;
+    let n01 = g[2].x * x + g[2].y * (y - 1.0);
+    let n11 = g[3].x * (x - 1.0) + g[3].y * (y - 1.0);
+    let (u, v) = (fade(x), fade(y));
     let value = lerp(v, lerp(u, n00, n10), lerp(u, n01, n11));
     let (k1, k2, k3) = (n10 - n00, n01 - n00, n00 - n10 - n01 + n11);
-    let bilerp = Vec2::lerp(Vec2::lerp(g[0], g[1], u), Vec2::lerp(g[2], g[3], u), v);
-    let d = Vec2::new(
-        fade_derivative(p.x) * (k1 + k3 * v),
-        fade_derivative(p.y) * (k2 + k3 * u),
-    );
-    (value, bilerp + d)
+    // The gradients blended like the values, plus the fade curves' slopes times the differences.
+    let bx = lerp(v, lerp(u, g[0].x, g[1].x), lerp(u, g[2].x, g[3].x));
+    let by = lerp(v, lerp(u, g[0].y, g[1].y), lerp(u, g[2].y, g[3].y));
+    let dx = bx + fade_derivative(x) * (k1 + k3 * v);
+    let dy = by + fade_derivative(y) * (k2 + k3 * u);
+    (value, Vec2::new(dx, dy))
 }
 
 /// Perlin's reference `noise(x, y, z)` in doubles, operation for operation, with his table.
