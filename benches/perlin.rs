@@ -19,6 +19,9 @@ use inbetween::noise::{Fractal, Permutation};
 use inbetween::terrain::{Terrain, TerrainParams};
 use noise::{Fbm, MultiFractal, NoiseFn, Perlin};
 
+/// A benchmark group: its name, the points in `f64` (theirs) and the same points in `f32` (ours).
+type Case<'a, const D: usize> = (&'a str, &'a [[f64; D]], &'a [[f32; D]]);
+
 const GRID2: usize = 256; // 65 536 samples
 const GRID3: usize = 40; // 64 000 samples
 const SCATTERED: usize = 65_536;
@@ -135,7 +138,7 @@ fn inputs() -> Inputs {
 }
 
 fn bench_samples(c: &mut Criterion, x: &Inputs) {
-    let cases2: [(&str, &[[f64; 2]], &[[f32; 2]]); 2] = [
+    let cases2: [Case<2>; 2] = [
         ("perlin2_grid", &x.g2, &x.g2f),
         ("perlin2_scattered", &x.s2, &x.s2f),
     ];
@@ -150,7 +153,7 @@ fn bench_samples(c: &mut Criterion, x: &Inputs) {
         });
         group.finish();
     }
-    let cases3: [(&str, &[[f64; 3]], &[[f32; 3]]); 2] = [
+    let cases3: [Case<3>; 2] = [
         ("perlin3_grid", &x.g3, &x.g3f),
         ("perlin3_scattered", &x.s3, &x.s3f),
     ];
