@@ -13,6 +13,7 @@
 //! | `02b-expressive-animation`: expressive animation | [`expressive`], [`curves`] (easing) | [`figures::expressive`] | `web::expressive` | [`exercises::expressive`] (2b.x) |
 //! | `03-rotations`: rotations | [`rotation`] | [`figures::rotations`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
 //! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
+//! | `05-noise`: noise and terrain | [`noise`], [`terrain`] | [`figures::noise`] | `web::noise` (bench: `web::bench_noise`) | [`exercises::noise`] |
 //! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`] (and [`ik`], for the next lesson) | [`figures::skeleton`] | `web::skeleton` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
@@ -40,10 +41,12 @@ pub mod figures;
 pub mod fixtures;
 pub mod ik;
 pub mod mesh;
+pub mod noise;
 pub mod raster;
 pub mod rigid;
 pub mod rotation;
 pub mod skeleton;
+pub mod terrain;
 pub mod transform;
 
 #[cfg(target_arch = "wasm32")]

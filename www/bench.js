@@ -63,6 +63,14 @@ export const SUITES = [
     size: 1000,
     unit: 'character',
   },
+  {
+    name: 'terrain 512 × 512, 8 octaves (lesson 05)',
+    run: (kernel, size, iterations) => wasm.benchTerrain(kernel, size, iterations),
+    kernels: ['fbm8_values', 'terrain_with_normals'],
+    baseline: 'fbm8_values',
+    size: 512 * 512,
+    unit: 'vertex',
+  },
 ];
 
 // ?quick (the page test): a smoke run, one batch of at least 20 ms per kernel.

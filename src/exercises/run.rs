@@ -106,6 +106,15 @@ impl Flat for Vec3 {
     }
 }
 
+impl Flat for glam::Vec2 {
+    fn put(&self, out: &mut Vec<f32>) {
+        self.to_array().put(out);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        take_n::<2>(input).map(glam::Vec2::from_array)
+    }
+}
+
 impl Flat for Quat {
     fn put(&self, out: &mut Vec<f32>) {
         self.to_array().put(out);
@@ -219,6 +228,7 @@ macro_rules! exercises {
     };
 }
 
+use super::noise as nz;
 use super::{
     curves as c, expressive as ex, raster as ra, rotations as r, skeleton as sk, transforms as tr,
 };
@@ -288,6 +298,16 @@ exercises! {
     /// Exercise 6.3, [`sk::crossfade_joint`].
     fn crossfade_joint(translation_a: Vec3, rotation_a: Quat, translation_b: Vec3, rotation_b: Quat, w: f32) -> (Vec3, Quat) =
         sk::crossfade_joint(translation_a, rotation_a, translation_b, rotation_b, w);
+    /// Exercise 5.1, [`nz::fade`]: `[fade, fade′]`.
+    fn fade(t: f32) -> [f32; 2] = nz::fade(t);
+    /// Exercise 5.2, [`nz::perlin_cell`].
+    fn perlin_cell(p: glam::Vec2, g00: glam::Vec2, g10: glam::Vec2, g01: glam::Vec2, g11: glam::Vec2) -> f32 =
+        nz::perlin_cell(p, g00, g10, g01, g11);
+    /// Exercise 5.3, [`nz::fractal_sum`].
+    fn fractal_sum(p: glam::Vec2, n: usize, alpha: f32, omega: f32) -> f32 =
+        nz::fractal_sum(p, n, alpha, omega);
+    /// Exercise 5.4, [`nz::terrain_normal`].
+    fn terrain_normal(h: f32, s: f32, grad_g: glam::Vec2) -> Vec3 = nz::terrain_normal(h, s, grad_g);
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature
@@ -432,7 +452,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 19);
+        assert_eq!(NAMES.len(), 23);
     }
 
     #[test]

@@ -428,6 +428,30 @@ impl Renderer {
         Ok(())
     }
 
+    /// Replaces a mesh's positions, normals and colours in place (terrains whose colour follows
+    /// height and slope): same vertex count, no reallocation on the GPU.
+    pub fn update_mesh_with_colors(
+        &mut self,
+        gpu: &Gpu,
+        id: MeshId,
+        positions: &[Vec3],
+        normals: &[Vec3],
+        colors: &[Vec4],
+    ) -> Result<(), String> {
+        let mesh = self.meshes.get_mut(id.0).ok_or("unknown mesh")?;
+        if colors.len() != mesh.colors.len() {
+            return Err(format!(
+                "mesh has {} vertices, got {} colours",
+                mesh.colors.len(),
+                colors.len()
+            ));
+        }
+        for (dst, src) in mesh.colors.iter_mut().zip(colors) {
+            *dst = src.to_array();
+        }
+        self.update_mesh(gpu, id, positions, normals)
+    }
+
     /// Draws and clears `self.frame` into the canvas.
     pub fn render(&mut self, gpu: &Gpu, camera: &OrbitCamera) -> Result<(), String> {
         let frame = match gpu.surface.get_current_texture() {

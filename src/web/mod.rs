@@ -4,10 +4,12 @@
 
 mod bench;
 mod bench_curves;
+mod bench_noise;
 mod bench_rotation;
 mod bench_skeleton;
 mod curves;
 mod expressive;
+mod noise;
 mod raster;
 mod rigid;
 mod rotations;
@@ -18,6 +20,10 @@ mod viewer;
 
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
+pub use noise::{
+    FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
+    TexturesScene,
+};
 pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};

@@ -1,0 +1,282 @@
+//! Perlin noise benchmarks (native): our `f32` improved noise against the `noise` crate 0.9
+//! (`Perlin`, `f64`), the usual choice of a Rust user, on the same points:
+//! - 2D and 3D, on a regular grid and at scattered points (`perlin2_*`, `perlin3_*`),
+//! - an 8-octave fractal sum on a 512 × 512 grid (`fbm8_512`: our `Fractal::sum2` with N = 7,
+//!   α = ½, ω = 2 against `noise::Fbm<Perlin>` with 8 octaves, persistence ½, lacunarity 2),
+//! - our 512 × 512 terrain regenerated with 8 octaves, exact normals and colours (no baseline:
+//!   the absolute time is the figure of merit, against a 16 ms frame).
+//!
+//! The two libraries' 2D noises are different functions (ours is Perlin's 3D reference on z = 0,
+//! theirs a 2D variant); both cost one hash and four gradient ramps per sample.
+//! Run: `cargo bench --bench perlin -- --warm-up-time 1 --measurement-time 2`.
+//! After criterion's report, the ratios are printed from a short separate timing.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use criterion::{Criterion, Throughput};
+use inbetween::noise::{Fractal, Permutation};
+use inbetween::terrain::{Terrain, TerrainParams};
+use noise::{Fbm, MultiFractal, NoiseFn, Perlin};
+
+/// A benchmark group: its name, the points in `f64` (theirs) and the same points in `f32` (ours).
+type Case<'a, const D: usize> = (&'a str, &'a [[f64; D]], &'a [[f32; D]]);
+
+const GRID2: usize = 256; // 65 536 samples
+const GRID3: usize = 40; // 64 000 samples
+const SCATTERED: usize = 65_536;
+const FBM_SIDE: usize = 512;
+
+fn grid2() -> Vec<[f64; 2]> {
+    let step = 0.0371;
+    (0..GRID2 * GRID2)
+        .map(|k| [(k % GRID2) as f64 * step, (k / GRID2) as f64 * step])
+        .collect()
+}
+
+fn grid3() -> Vec<[f64; 3]> {
+    let step = 0.0371;
+    (0..GRID3 * GRID3 * GRID3)
+        .map(|k| {
+            [
+                (k % GRID3) as f64 * step,
+                (k / GRID3 % GRID3) as f64 * step,
+                (k / (GRID3 * GRID3)) as f64 * step,
+            ]
+        })
+        .collect()
+}
+
+fn scattered<const D: usize>() -> Vec<[f64; D]> {
+    let mut rng = inbetween::fixtures::Rng::new(77);
+    (0..SCATTERED)
+        .map(|_| std::array::from_fn(|_| rng.range(-100.0, 100.0) as f64))
+        .collect()
+}
+
+/// The same points in `f32` (every coordinate above is an `f32` value or a short decimal).
+fn to_f32<const D: usize>(points: &[[f64; D]]) -> Vec<[f32; D]> {
+    points.iter().map(|p| p.map(|x| x as f32)).collect()
+}
+
+fn ours2(perm: &Permutation, points: &[[f32; 2]]) -> f32 {
+    points.iter().map(|p| perm.noise2(p[0], p[1])).sum()
+}
+fn theirs2(perlin: &Perlin, points: &[[f64; 2]]) -> f64 {
+    points.iter().map(|p| perlin.get(*p)).sum()
+}
+fn ours3(perm: &Permutation, points: &[[f32; 3]]) -> f32 {
+    points.iter().map(|p| perm.noise3(p[0], p[1], p[2])).sum()
+}
+fn theirs3(perlin: &Perlin, points: &[[f64; 3]]) -> f64 {
+    points.iter().map(|p| perlin.get(*p)).sum()
+}
+
+const OURS_FBM: Fractal = Fractal {
+    n: 7,
+    alpha: 0.5,
+    omega: 2.0,
+};
+
+fn ours_fbm(perm: &Permutation, out: &mut [f32]) {
+    let step = 4.0 / FBM_SIDE as f32;
+    for (k, o) in out.iter_mut().enumerate() {
+        let (i, j) = (k % FBM_SIDE, k / FBM_SIDE);
+        *o = OURS_FBM.sum2(perm, i as f32 * step, j as f32 * step);
+    }
+}
+
+fn theirs_fbm(fbm: &Fbm<Perlin>, out: &mut [f64]) {
+    let step = 4.0 / FBM_SIDE as f64;
+    for (k, o) in out.iter_mut().enumerate() {
+        let (i, j) = (k % FBM_SIDE, k / FBM_SIDE);
+        *o = fbm.get([i as f64 * step, j as f64 * step]);
+    }
+}
+
+fn their_fbm() -> Fbm<Perlin> {
+    Fbm::<Perlin>::new(0)
+        .set_octaves(8)
+        .set_persistence(0.5)
+        .set_lacunarity(2.0)
+}
+
+fn terrain_params() -> TerrainParams {
+    TerrainParams {
+        fractal: OURS_FBM,
+        ..TerrainParams::default()
+    }
+}
+
+struct Inputs {
+    perm: Permutation,
+    perlin: Perlin,
+    g2: Vec<[f64; 2]>,
+    g2f: Vec<[f32; 2]>,
+    s2: Vec<[f64; 2]>,
+    s2f: Vec<[f32; 2]>,
+    g3: Vec<[f64; 3]>,
+    g3f: Vec<[f32; 3]>,
+    s3: Vec<[f64; 3]>,
+    s3f: Vec<[f32; 3]>,
+}
+
+fn inputs() -> Inputs {
+    let (g2, s2, g3, s3) = (grid2(), scattered::<2>(), grid3(), scattered::<3>());
+    Inputs {
+        perm: Permutation::perlin(),
+        perlin: Perlin::new(0),
+        g2f: to_f32(&g2),
+        s2f: to_f32(&s2),
+        g3f: to_f32(&g3),
+        s3f: to_f32(&s3),
+        g2,
+        s2,
+        g3,
+        s3,
+    }
+}
+
+fn bench_samples(c: &mut Criterion, x: &Inputs) {
+    let cases2: [Case<2>; 2] = [
+        ("perlin2_grid", &x.g2, &x.g2f),
+        ("perlin2_scattered", &x.s2, &x.s2f),
+    ];
+    for (name, pts, ptsf) in cases2 {
+        let mut group = c.benchmark_group(name);
+        group.throughput(Throughput::Elements(pts.len() as u64));
+        group.bench_function("inbetween_f32", |b| {
+            b.iter(|| ours2(&x.perm, black_box(ptsf)))
+        });
+        group.bench_function("noise_crate_f64", |b| {
+            b.iter(|| theirs2(&x.perlin, black_box(pts)))
+        });
+        group.finish();
+    }
+    let cases3: [Case<3>; 2] = [
+        ("perlin3_grid", &x.g3, &x.g3f),
+        ("perlin3_scattered", &x.s3, &x.s3f),
+    ];
+    for (name, pts, ptsf) in cases3 {
+        let mut group = c.benchmark_group(name);
+        group.throughput(Throughput::Elements(pts.len() as u64));
+        group.bench_function("inbetween_f32", |b| {
+            b.iter(|| ours3(&x.perm, black_box(ptsf)))
+        });
+        group.bench_function("noise_crate_f64", |b| {
+            b.iter(|| theirs3(&x.perlin, black_box(pts)))
+        });
+        group.finish();
+    }
+}
+
+fn bench_fbm(c: &mut Criterion, x: &Inputs) {
+    let mut ours = vec![0.0f32; FBM_SIDE * FBM_SIDE];
+    let mut theirs = vec![0.0f64; FBM_SIDE * FBM_SIDE];
+    let fbm = their_fbm();
+    let mut terrain = Terrain::new(FBM_SIDE).unwrap();
+    let params = terrain_params();
+    let mut group = c.benchmark_group("fbm8_512");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements((FBM_SIDE * FBM_SIDE) as u64));
+    group.bench_function("inbetween_f32", |b| {
+        b.iter(|| ours_fbm(&x.perm, black_box(&mut ours)))
+    });
+    group.bench_function("noise_crate_f64", |b| {
+        b.iter(|| theirs_fbm(&fbm, black_box(&mut theirs)))
+    });
+    group.bench_function("inbetween_terrain_with_normals", |b| {
+        b.iter(|| terrain.regenerate(&x.perm, black_box(&params)).unwrap())
+    });
+    group.finish();
+}
+
+/// Best of `reps` runs, in seconds.
+fn best_time(reps: usize, mut f: impl FnMut()) -> f64 {
+    (0..reps)
+        .map(|_| {
+            let start = Instant::now();
+            f();
+            start.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn print_ratios(x: &Inputs) {
+    let line = |name: &str, n: usize, ours: f64, theirs: f64| {
+        println!(
+            "{name}: noise crate / inbetween time = {:.2} ({:.1} vs {:.1} M samples/s)",
+            theirs / ours,
+            n as f64 / ours / 1e6,
+            n as f64 / theirs / 1e6
+        )
+    };
+    let r = 30;
+    line(
+        "perlin2 grid",
+        x.g2.len(),
+        best_time(r, || {
+            black_box(ours2(&x.perm, &x.g2f));
+        }),
+        best_time(r, || {
+            black_box(theirs2(&x.perlin, &x.g2));
+        }),
+    );
+    line(
+        "perlin2 scattered",
+        x.s2.len(),
+        best_time(r, || {
+            black_box(ours2(&x.perm, &x.s2f));
+        }),
+        best_time(r, || {
+            black_box(theirs2(&x.perlin, &x.s2));
+        }),
+    );
+    line(
+        "perlin3 grid",
+        x.g3.len(),
+        best_time(r, || {
+            black_box(ours3(&x.perm, &x.g3f));
+        }),
+        best_time(r, || {
+            black_box(theirs3(&x.perlin, &x.g3));
+        }),
+    );
+    line(
+        "perlin3 scattered",
+        x.s3.len(),
+        best_time(r, || {
+            black_box(ours3(&x.perm, &x.s3f));
+        }),
+        best_time(r, || {
+            black_box(theirs3(&x.perlin, &x.s3));
+        }),
+    );
+    let mut ours = vec![0.0f32; FBM_SIDE * FBM_SIDE];
+    let mut theirs = vec![0.0f64; FBM_SIDE * FBM_SIDE];
+    let fbm = their_fbm();
+    let o = best_time(5, || ours_fbm(&x.perm, &mut ours));
+    let t = best_time(5, || theirs_fbm(&fbm, &mut theirs));
+    println!(
+        "fbm 8 octaves 512x512: noise crate / inbetween time = {:.2} ({:.1} ms vs {:.1} ms)",
+        t / o,
+        o * 1e3,
+        t * 1e3
+    );
+    let mut terrain = Terrain::new(FBM_SIDE).unwrap();
+    let params = terrain_params();
+    let tt = best_time(5, || terrain.regenerate(&x.perm, &params).unwrap());
+    println!(
+        "terrain 512x512, 8 octaves, exact normals and colours: {:.1} ms",
+        tt * 1e3
+    );
+}
+
+fn main() {
+    let x = inputs();
+    let mut c = Criterion::default().configure_from_args();
+    bench_samples(&mut c, &x);
+    bench_fbm(&mut c, &x);
+    c.final_summary();
+    print_ratios(&x);
+}

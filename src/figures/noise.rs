@@ -1,0 +1,1252 @@
+//! Lesson 05, "Noise and terrain": 1D noise built from lattice gradients, 2D noise and its 3D
+//! slices, octaves added one by one, the course's terrain with every parameter, procedural
+//! textures, the terrain quiz and two fractals. Natively testable; `web::noise` wraps these for
+//! JavaScript and uploads the terrain meshes (created once, then updated in place).
+
+use super::{check_samples, DEFAULT_RUNNER};
+use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner};
+use crate::exercises::run;
+use crate::noise::fractals::{koch_snowflake, sierpinski, MAX_DEPTH};
+use crate::noise::texture::{fill_rgba, from_srgb8, TextureKind, TextureParams};
+use crate::noise::{cell2, fade, fade_derivative, grad1, grad2, Fractal, Permutation};
+use crate::terrain::{terrain_normal, Terrain, TerrainParams, Variant, MAX_RESOLUTION};
+use glam::{Mat4, Vec2, Vec3, Vec4};
+
+const FILE: &str = "src/exercises/noise.rs";
+const TOLERANCE: f32 = 1e-4;
+
+/// Perlin's table for seed 0, a seeded shuffle otherwise.
+pub fn permutation_for_seed(seed: u32) -> Permutation {
+    if seed == 0 {
+        Permutation::perlin()
+    } else {
+        Permutation::seeded(seed as u64)
+    }
+}
+
+fn check_seed(seed: f32) -> Result<u32, String> {
+    let s = in_range("seed", seed, 0.0, 1e6)?;
+    if s.fract() != 0.0 {
+        return Err(format!("seed must be a whole number, got {seed}"));
+    }
+    Ok(s as u32)
+}
+
+fn check_n(n: f32, max: u32) -> Result<u32, String> {
+    let v = in_range("N", n, 0.0, max as f32)?;
+    if v.fract() != 0.0 {
+        return Err(format!("N must be a whole number, got {n}"));
+    }
+    Ok(v as u32)
+}
+
+/// Terrains a figure shows, for the web layer to upload: each with its model matrix.
+pub trait TerrainFigure {
+    /// The terrains, in the order their mesh ids are passed to `draw`.
+    fn terrains(&self) -> Vec<&Terrain>;
+    /// Regenerates what the setters marked stale (setters only record the change, so a page that
+    /// sets five parameters in a row pays for one regeneration), then returns true once after the
+    /// terrains changed (the web layer then re-uploads them).
+    fn take_dirty(&mut self) -> bool;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 1: 1D noise.
+
+/// Figure 1: 1D gradient noise over `x ∈ [0, 8]`. Each integer has a slope (its gradient); in the
+/// cell around the probe the two ramps `g₀ t` and `g₁ (t − 1)` are drawn and blended by `fade`.
+pub struct Noise1d {
+    perm: Permutation,
+    probe_x: f32,
+    show_ramps: bool,
+    use_exercise: bool,
+    runner: Runner,
+}
+
+/// Screen mapping of Figure 1: x ∈ [0, 8] to [−4, 4], values ×4.
+const X0: f32 = 4.0;
+const Y_SCALE: f32 = 4.0;
+
+impl Default for Noise1d {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Noise1d {
+    pub fn new() -> Self {
+        Self {
+            perm: Permutation::perlin(),
+            probe_x: 2.35,
+            show_ramps: true,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+        }
+    }
+    pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
+        self.perm = permutation_for_seed(check_seed(seed)?);
+        Ok(())
+    }
+    pub fn set_probe(&mut self, x: f32) -> Result<(), String> {
+        self.probe_x = in_range("x", x, 0.0, 7.999)?;
+        Ok(())
+    }
+    pub fn set_show_ramps(&mut self, on: bool) {
+        self.show_ramps = on;
+    }
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    fn to_world(x: f32, y: f32) -> Vec3 {
+        Vec3::new(x - X0, y * Y_SCALE, 0.0)
+    }
+
+    /// `fade(t)` and `fade′(t)` from the student's exercise 5.1 (with "use my exercise"), else the
+    /// reference; the second value is the note about the student's answer.
+    fn fade_pair(&self, t: f32) -> ([f32; 2], Option<String>) {
+        let reference = [fade(t), fade_derivative(t)];
+        if !self.use_exercise {
+            return (reference, None);
+        }
+        match run::fade(self.runner, t) {
+            Ok(yours) => {
+                let at = format!("t = {}", format_number(t));
+                let (ok, note) = compare_note("fade (5.1)", &at, &yours, &reference, TOLERANCE);
+                let _ = ok;
+                (yours, Some(note))
+            }
+            Err(f) => (reference, Some(failure_note("exercise 5.1 fade", FILE, &f))),
+        }
+    }
+
+    /// Draws the figure; returns its note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.line(
+            Self::to_world(0.0, 0.0),
+            Self::to_world(8.0, 0.0),
+            palette::GRID_AXIS,
+        );
+        let curve: Vec<Vec3> = (0..=800)
+            .map(|i| {
+                let x = i as f32 / 100.0;
+                Self::to_world(x, self.perm.noise1(x))
+            })
+            .collect();
+        frame.polyline(&curve, palette::BLUE);
+        let cell = self.probe_x.floor() as i32;
+        for i in 0..=8 {
+            let g = grad1(self.perm.hash1(i));
+            let color = if i == cell {
+                palette::ORANGE
+            } else if i == cell + 1 {
+                palette::TEAL
+            } else {
+                palette::GREY
+            };
+            let x = i as f32;
+            frame.point(Self::to_world(x, 0.0), 0.06, palette::KEY);
+            frame.line(
+                Self::to_world(x - 0.3, -0.3 * g),
+                Self::to_world(x + 0.3, 0.3 * g),
+                color,
+            );
+        }
+        let t = self.probe_x - cell as f32;
+        let (g0, g1) = (
+            grad1(self.perm.hash1(cell)),
+            grad1(self.perm.hash1(cell + 1)),
+        );
+        let x0 = cell as f32;
+        if self.show_ramps {
+            frame.polyline(
+                &[Self::to_world(x0, 0.0), Self::to_world(x0 + 1.0, g0)],
+                palette::ORANGE,
+            );
+            frame.polyline(
+                &[Self::to_world(x0, -g1), Self::to_world(x0 + 1.0, 0.0)],
+                palette::TEAL,
+            );
+            frame.label(Self::to_world(x0 + 1.0, g0), "g₀·t", palette::ORANGE);
+            frame.label(Self::to_world(x0, -g1), "g₁·(t − 1)", palette::TEAL);
+        }
+        let ([f, _], note) = self.fade_pair(t);
+        let (a, b) = (g0 * t, g1 * (t - 1.0));
+        let n = a + f * (b - a);
+        if self.show_ramps {
+            frame.point(Self::to_world(self.probe_x, a), 0.05, palette::ORANGE);
+            frame.point(Self::to_world(self.probe_x, b), 0.05, palette::TEAL);
+            frame.line(
+                Self::to_world(self.probe_x, a),
+                Self::to_world(self.probe_x, b),
+                palette::GREY,
+            );
+        }
+        frame.point(Self::to_world(self.probe_x, n), 0.08, palette::PINK);
+        frame.label(
+            Self::to_world(self.probe_x, n) + Vec3::Y * 0.3,
+            "n(x)",
+            palette::PINK,
+        );
+        let mut text = format!(
+            "x = {}: cell [{}, {}], t = {}, fade(t) = {}; ramps g₀t = {}, g₁(t − 1) = {}; \
+             n(x) = lerp(fade(t), g₀t, g₁(t − 1)) = {}.",
+            format_number(self.probe_x),
+            cell,
+            cell + 1,
+            format_number(t),
+            format_number(f),
+            format_number(a),
+            format_number(b),
+            format_number(n)
+        );
+        if let Some(note) = note {
+            text = format!("{text} {note}");
+        }
+        text
+    }
+
+    /// The fade curve for the plot: `[t, fade, fade′, 3t² − 2t³]` per row (fade and fade′ from the
+    /// student's exercise when "use my exercise" is ticked and it answers).
+    pub fn sample_fade(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
+        check_samples(samples)?;
+        Ok((0..samples)
+            .map(|i| {
+                let t = i as f32 / (samples - 1) as f32;
+                let ([f, d], _) = self.fade_pair(t);
+                [t, f, d, t * t * (3.0 - 2.0 * t)]
+            })
+            .collect())
+    }
+
+    /// The probe's position inside its cell, `t ∈ [0, 1)` (the plot's cursor).
+    pub fn probe_t(&self) -> f32 {
+        self.probe_x.fract()
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 2: 2D noise, its lattice gradients, and slices of 3D noise.
+
+/// Figure 2: one octave of 2D noise as a height field over noise coordinates `[−2, 2]²`, with the
+/// gradient at every lattice point and a probe whose cell is outlined. `z` slices 3D noise.
+pub struct Noise2d {
+    perm: Permutation,
+    terrain: Terrain,
+    z: f32,
+    probe: Vec2,
+    use_exercise: bool,
+    runner: Runner,
+    dirty: bool,
+    stale: bool,
+}
+
+/// Figure 2's terrain: `s = 2` noise cells per metre, so `u ∈ [−1, 1]` covers `x ∈ [−2, 2]`.
+const FIG2_S: f32 = 2.0;
+const FIG2_H: f32 = 0.6;
+
+impl Noise2d {
+    pub fn new() -> Self {
+        let mut s = Self {
+            perm: Permutation::perlin(),
+            terrain: Terrain::new(129).expect("a valid resolution"),
+            z: 0.0,
+            probe: Vec2::new(0.4, 0.7),
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            dirty: true,
+            stale: false,
+        };
+        s.regenerate();
+        s
+    }
+    fn params(&self) -> TerrainParams {
+        TerrainParams {
+            fractal: Fractal {
+                n: 0,
+                alpha: 0.5,
+                omega: 2.0,
+            },
+            h: FIG2_H,
+            s: FIG2_S,
+            o: 0.0,
+            variant: if self.z == 0.0 {
+                Variant::Sum
+            } else {
+                Variant::Evolving { t: self.z }
+            },
+        }
+    }
+    fn regenerate(&mut self) {
+        let p = self.params();
+        self.terrain
+            .regenerate(&self.perm, &p)
+            .expect("figure 2's parameters are valid");
+        self.dirty = true;
+    }
+    pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
+        self.perm = permutation_for_seed(check_seed(seed)?);
+        self.stale = true;
+        Ok(())
+    }
+    /// The 3D slice `z` (0 is the 2D noise), in `[0, 2]`.
+    pub fn set_z(&mut self, z: f32) -> Result<(), String> {
+        self.z = in_range("z", z, 0.0, 2.0)?;
+        self.stale = true;
+        Ok(())
+    }
+    /// The probe in noise coordinates, each in `[−2, 2)`.
+    pub fn set_probe(&mut self, x: f32, y: f32) -> Result<(), String> {
+        self.probe = Vec2::new(
+            in_range("probe x", x, -2.0, 1.999)?,
+            in_range("probe y", y, -2.0, 1.999)?,
+        );
+        Ok(())
+    }
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    fn world(&self, p: Vec2, value: f32) -> Vec3 {
+        Vec3::new(p.x / FIG2_S, FIG2_H * value, p.y / FIG2_S)
+    }
+
+    /// The noise value at the probe (the slice's, at z ≠ 0).
+    pub fn probe_value(&self) -> f32 {
+        self.perm.noise3(self.probe.x, self.probe.y, self.z)
+    }
+
+    pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
+        frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        let lift = Vec3::Y * 0.01;
+        for j in -2..=2 {
+            for i in -2..=2 {
+                let p = Vec2::new(i as f32, j as f32);
+                let g = grad2(self.perm.hash2(i, j));
+                let at = self.world(p, 0.0) + lift;
+                frame.point(at, 0.025, palette::KEY);
+                let tip = at + Vec3::new(g.x, 0.0, g.y) * 0.18;
+                frame.arrow(at, tip, palette::ORANGE, 0.05);
+            }
+        }
+        let c = self.probe.floor();
+        let corners = [c, c + Vec2::X, c + Vec2::ONE, c + Vec2::Y, c];
+        let outline: Vec<Vec3> = corners.iter().map(|&p| self.world(p, 0.0) + lift).collect();
+        frame.polyline(&outline, palette::PURPLE);
+        let value = self.probe_value();
+        let at = self.world(self.probe, value);
+        frame.point(at, 0.03, palette::PINK);
+        frame.line(self.world(self.probe, 0.0), at, palette::PINK);
+        frame.label(
+            at + Vec3::Y * 0.12,
+            format!("n = {}", format_number(value)),
+            palette::PINK,
+        );
+        let mut note = format!(
+            "Probe ({}, {}) in cell [{}, {}] × [{}, {}]: n = {}.",
+            format_number(self.probe.x),
+            format_number(self.probe.y),
+            c.x,
+            c.x + 1.0,
+            c.y,
+            c.y + 1.0,
+            format_number(value)
+        );
+        if self.z != 0.0 {
+            note += &format!(
+                " This is the slice z = {} of 3D noise: the lattice points lie above and below \
+                 it, so the surface is no longer 0 at the dots.",
+                format_number(self.z)
+            );
+        }
+        if self.use_exercise {
+            let (i, j) = (c.x as i32, c.y as i32);
+            let g = [
+                grad2(self.perm.hash2(i, j)),
+                grad2(self.perm.hash2(i + 1, j)),
+                grad2(self.perm.hash2(i, j + 1)),
+                grad2(self.perm.hash2(i + 1, j + 1)),
+            ];
+            let local = self.probe - c;
+            let reference = cell2(local, g);
+            let at = format!(
+                "p = ({}, {}) in the cell",
+                format_number(local.x),
+                format_number(local.y)
+            );
+            note += " ";
+            note += &match run::perlin_cell(self.runner, local, g[0], g[1], g[2], g[3]) {
+                Ok(yours) => {
+                    let (_, n) =
+                        compare_note("perlin_cell (5.2)", &at, &[yours], &[reference], TOLERANCE);
+                    n
+                }
+                Err(f) => failure_note("exercise 5.2 perlin_cell", FILE, &f),
+            };
+            if self.z != 0.0 {
+                note += " (Your 5.2 computes the 2D noise, the slice z = 0.)";
+            }
+        }
+        note
+    }
+}
+
+impl Default for Noise2d {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for Noise2d {
+    fn terrains(&self) -> Vec<&Terrain> {
+        vec![&self.terrain]
+    }
+    fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 3: octaves one by one.
+
+/// The last octave Figure 3's slider reaches.
+pub const OCTAVES_MAX_N: u32 = 9;
+
+/// Figure 3: the fractal sum with octaves 0..=N; the profile along `v = V_SLICE` is drawn on the
+/// terrain (orange, with the sum without the newest octave in grey) and plotted octave by octave.
+pub struct Octaves {
+    perm: Permutation,
+    fractal: Fractal,
+    terrain: Terrain,
+    use_exercise: bool,
+    runner: Runner,
+    dirty: bool,
+    stale: bool,
+}
+
+/// The profile's v (world z).
+pub const V_SLICE: f32 = 0.25;
+const FIG3_H: f32 = 0.5;
+/// The point where "use my exercise" compares 5.3, in noise coordinates.
+const FIG3_PROBE: Vec2 = Vec2::new(0.3, -0.45);
+
+impl Octaves {
+    pub fn new() -> Self {
+        let mut s = Self {
+            perm: Permutation::perlin(),
+            fractal: Fractal {
+                n: 3,
+                alpha: 0.5,
+                omega: 2.0,
+            },
+            terrain: Terrain::new(193).expect("a valid resolution"),
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            dirty: true,
+            stale: false,
+        };
+        s.regenerate();
+        s
+    }
+    fn params(&self) -> TerrainParams {
+        TerrainParams {
+            fractal: self.fractal,
+            h: FIG3_H,
+            s: 1.0,
+            o: 0.0,
+            variant: Variant::Sum,
+        }
+    }
+    fn regenerate(&mut self) {
+        let p = self.params();
+        self.terrain
+            .regenerate(&self.perm, &p)
+            .expect("figure 3's parameters are checked");
+        self.dirty = true;
+    }
+    /// N ∈ 0..=9, α ∈ [0, 1], ω ∈ [1, 4].
+    pub fn set_params(&mut self, n: f32, alpha: f32, omega: f32) -> Result<(), String> {
+        let f = Fractal {
+            n: check_n(n, OCTAVES_MAX_N)?,
+            alpha: in_range("alpha", alpha, 0.0, 1.0)?,
+            omega: in_range("omega", omega, 1.0, 4.0)?,
+        };
+        f.validate()?;
+        self.fractal = f;
+        self.stale = true;
+        Ok(())
+    }
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// The profile along `v = V_SLICE`: per row `[u, octave 0, …, octave 9, sum]` where octaves
+    /// above N are NaN (the plot leaves them out).
+    pub fn sample_octaves(&self, samples: usize) -> Result<Vec<[f32; 12]>, String> {
+        check_samples(samples)?;
+        Ok((0..samples)
+            .map(|i| {
+                let u = -1.0 + 2.0 * i as f32 / (samples - 1) as f32;
+                let mut row = [f32::NAN; 12];
+                row[0] = u;
+                let mut sum = 0.0;
+                for k in 0..=self.fractal.n {
+                    let o = self.fractal.octave2(&self.perm, k, u, V_SLICE);
+                    row[1 + k as usize] = o;
+                    sum += o;
+                }
+                row[11] = sum;
+                row
+            })
+            .collect())
+    }
+
+    pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
+        frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        let lift = Vec3::Y * 0.004;
+        let previous = Fractal {
+            n: self.fractal.n.saturating_sub(1),
+            ..self.fractal
+        };
+        let profile = |f: &Fractal| -> Vec<Vec3> {
+            (0..=400)
+                .map(|i| {
+                    let u = -1.0 + i as f32 / 200.0;
+                    Vec3::new(u, FIG3_H * f.sum2(&self.perm, u, V_SLICE), V_SLICE) + lift
+                })
+                .collect()
+        };
+        frame.polyline(&profile(&self.fractal), palette::ORANGE);
+        if self.fractal.n > 0 {
+            frame.polyline(&profile(&previous), palette::GREY);
+        }
+        frame.label(
+            Vec3::new(1.05, 0.0, V_SLICE),
+            format!("v = {V_SLICE}"),
+            palette::ORANGE,
+        );
+        let k = self.fractal.n;
+        let mut note = format!(
+            "{} octave{}: the newest, k = {k}, has amplitude αᵏ = {} and frequency ωᵏ = {} \
+             (wavelength {} m).",
+            k + 1,
+            if k == 0 { "" } else { "s" },
+            format_number(self.fractal.alpha.powi(k as i32)),
+            format_number(self.fractal.omega.powi(k as i32)),
+            format_number(1.0 / self.fractal.omega.powi(k as i32))
+        );
+        if self.use_exercise {
+            let reference = Fractal {
+                n: self.fractal.n,
+                ..self.fractal
+            }
+            .sum2(&Permutation::perlin(), FIG3_PROBE.x, FIG3_PROBE.y);
+            let at = format!(
+                "p = ({}, {}), N = {k}, α = {}, ω = {}",
+                FIG3_PROBE.x,
+                FIG3_PROBE.y,
+                format_number(self.fractal.alpha),
+                format_number(self.fractal.omega)
+            );
+            note += " ";
+            note += &match run::fractal_sum(
+                self.runner,
+                FIG3_PROBE,
+                k as usize,
+                self.fractal.alpha,
+                self.fractal.omega,
+            ) {
+                Ok(yours) => {
+                    compare_note("fractal_sum (5.3)", &at, &[yours], &[reference], TOLERANCE).1
+                }
+                Err(f) => failure_note("exercise 5.3 fractal_sum", FILE, &f),
+            };
+        }
+        note
+    }
+}
+
+impl Default for Octaves {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for Octaves {
+    fn terrains(&self) -> Vec<&Terrain> {
+        vec![&self.terrain]
+    }
+    fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 4: the course's terrain.
+
+/// The variants Figure 4's dropdown offers, in its order.
+pub const VARIANT_NAMES: [&str; 6] = [
+    "sum",
+    "ridge",
+    "inverted ridge",
+    "marble",
+    "sliding f(x, y + t)",
+    "evolving f(x, y, t)",
+];
+
+/// The resolutions Figure 4 offers (vertices per side).
+pub const TERRAIN_RESOLUTIONS: [usize; 4] = [64, 128, 256, 512];
+
+/// Figure 4: `S(u, v) = (u, h g(s(u + o), s(v + o)), v)` with every parameter, five variants, and
+/// the normal at a probe vertex (reference and, with "use my exercise", the student's).
+pub struct TerrainScene {
+    perm: Permutation,
+    params: TerrainParams,
+    variant: usize,
+    time_sec: f32,
+    terrain: Terrain,
+    use_exercise: bool,
+    runner: Runner,
+    dirty: bool,
+    stale: bool,
+}
+
+impl TerrainScene {
+    pub fn new() -> Self {
+        let mut s = Self {
+            perm: Permutation::perlin(),
+            params: TerrainParams::default(),
+            variant: 0,
+            time_sec: 0.0,
+            terrain: Terrain::new(128).expect("a valid resolution"),
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            dirty: true,
+            stale: false,
+        };
+        s.regenerate().expect("the course's parameters are valid");
+        s
+    }
+
+    fn regenerate(&mut self) -> Result<(), String> {
+        let t = self.time_sec;
+        self.params.variant = match self.variant {
+            0 => Variant::Sum,
+            1 => Variant::Ridge,
+            2 => Variant::InvertedRidge,
+            3 => Variant::Marble,
+            4 => Variant::Sliding { t: 0.3 * t },
+            _ => Variant::Evolving { t: 0.3 * t },
+        };
+        self.terrain.regenerate(&self.perm, &self.params)?;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Sets N, α, ω, h, s, o (checked by name; nothing changes on an error).
+    #[allow(clippy::too_many_arguments)]
+    pub fn set_params(
+        &mut self,
+        n: f32,
+        alpha: f32,
+        omega: f32,
+        h: f32,
+        s: f32,
+        o: f32,
+    ) -> Result<(), String> {
+        let fractal = Fractal {
+            n: check_n(n, crate::noise::MAX_N)?,
+            alpha: in_range("alpha", alpha, 0.0, 1.0)?,
+            omega: in_range("omega", omega, 1.0, 4.0)?,
+        };
+        let p = TerrainParams {
+            fractal,
+            h: in_range("h", h, 0.0, 2.0)?,
+            s: in_range("s", s, 0.01, 16.0)?,
+            o: in_range("o", o, -1000.0, 1000.0)?,
+            variant: self.params.variant,
+        };
+        p.validate()?;
+        self.params = p;
+        self.stale = true;
+        Ok(())
+    }
+
+    /// One of [`VARIANT_NAMES`], by index.
+    pub fn set_variant(&mut self, index: usize) -> Result<(), String> {
+        if index >= VARIANT_NAMES.len() {
+            return Err(format!(
+                "variant must be 0 to {}, got {index}",
+                VARIANT_NAMES.len() - 1
+            ));
+        }
+        self.variant = index;
+        self.stale = true;
+        Ok(())
+    }
+
+    /// Vertices per side, one of [`TERRAIN_RESOLUTIONS`] (or any in 2..=MAX_RESOLUTION);
+    /// reallocates only when it changes.
+    pub fn set_resolution(&mut self, resolution: usize) -> Result<(), String> {
+        if resolution != self.terrain.resolution() {
+            if !(2..=MAX_RESOLUTION).contains(&resolution) {
+                return Err(format!(
+                    "resolution must be between 2 and {MAX_RESOLUTION}, got {resolution}"
+                ));
+            }
+            self.terrain = Terrain::new(resolution)?;
+            self.stale = true;
+        }
+        Ok(())
+    }
+
+    pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
+        self.perm = permutation_for_seed(check_seed(seed)?);
+        self.stale = true;
+        Ok(())
+    }
+
+    /// True when a setter changed something the next upload will regenerate.
+    pub fn is_stale(&self) -> bool {
+        self.stale
+    }
+
+    /// True for the variants that move with time.
+    pub fn animated(&self) -> bool {
+        self.variant >= 4
+    }
+
+    /// Advances time by `dt_sec` and regenerates the animated variants.
+    pub fn advance(&mut self, dt_sec: f32) -> Result<(), String> {
+        let dt = in_range("dt", dt_sec, 0.0, 1.0)?;
+        if self.animated() {
+            self.time_sec = (self.time_sec + dt) % 1000.0;
+            self.stale = true;
+        }
+        Ok(())
+    }
+
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    pub fn params(&self) -> TerrainParams {
+        self.params
+    }
+
+    /// The probe vertex: a third of the way in from the near-left corner.
+    fn probe_index(&self) -> usize {
+        let r = self.terrain.resolution();
+        (2 * r / 3) * r + r / 3
+    }
+
+    pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
+        frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        let k = self.probe_index();
+        let at = self.terrain.positions[k];
+        let reference = self.terrain.normals[k];
+        frame.arrow(at, at + reference * 0.35, palette::REFERENCE, 0.06);
+        frame.label(at + reference * 0.4, "n", palette::REFERENCE);
+        let p = &self.params;
+        let r = self.terrain.resolution();
+        let mut note = format!(
+            "{r} × {r} vertices, {}: N = {}, α = {}, ω = {}, h = {}, s = {}, o = {}.",
+            VARIANT_NAMES[self.variant],
+            p.fractal.n,
+            format_number(p.fractal.alpha),
+            format_number(p.fractal.omega),
+            format_number(p.h),
+            format_number(p.s),
+            format_number(p.o)
+        );
+        if self.use_exercise {
+            let (u, v) = (at.x, at.z);
+            let (_, grad_g) = p.g(&self.perm, p.s * (u + p.o), p.s * (v + p.o));
+            let reference = terrain_normal(p.h, p.s, grad_g);
+            let where_ = format!(
+                "the probe (u = {}, v = {})",
+                format_number(u),
+                format_number(v)
+            );
+            note += " ";
+            note += &match run::terrain_normal(self.runner, p.h, p.s, grad_g) {
+                Ok(yours) => {
+                    if yours.is_finite() && yours.length() > 1e-6 {
+                        frame.arrow(at, at + yours.normalize() * 0.35, palette::STUDENT, 0.06);
+                        frame.label(at + yours.normalize() * 0.45, "yours", palette::STUDENT);
+                    }
+                    compare_note(
+                        "terrain_normal (5.4)",
+                        &where_,
+                        &yours.to_array(),
+                        &reference.to_array(),
+                        TOLERANCE,
+                    )
+                    .1
+                }
+                Err(f) => failure_note("exercise 5.4 terrain_normal", FILE, &f),
+            };
+        }
+        note
+    }
+}
+
+impl Default for TerrainScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for TerrainScene {
+    fn terrains(&self) -> Vec<&Terrain> {
+        vec![&self.terrain]
+    }
+    fn take_dirty(&mut self) -> bool {
+        // The setters validated everything, so this cannot fail; if it did, the old terrain stays.
+        if std::mem::take(&mut self.stale) && self.regenerate().is_err() {
+            return false;
+        }
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 6: procedural textures.
+
+/// Texels per side of each of Figure 6's textures (and vertices per side of its planes).
+pub const TEXTURE_SIZE: usize = 160;
+
+/// Figure 6: marble, wood and clouds, each written into an RGBA buffer and shown as the vertex
+/// colours of a dense plane (one vertex per texel).
+pub struct Textures {
+    perm: Permutation,
+    scale: f32,
+    turbulence: f32,
+    n: u32,
+    time_sec: f32,
+    animate: bool,
+    planes: [Terrain; 3],
+    rgba: Vec<u8>,
+    dirty: bool,
+    stale: bool,
+}
+
+pub const TEXTURE_KINDS: [(TextureKind, &str); 3] = [
+    (TextureKind::Marble, "marble"),
+    (TextureKind::Wood, "wood"),
+    (TextureKind::Clouds, "clouds"),
+];
+
+impl Textures {
+    pub fn new() -> Self {
+        let plane = || Terrain::new(TEXTURE_SIZE).expect("a valid resolution");
+        let mut s = Self {
+            perm: Permutation::perlin(),
+            scale: 4.0,
+            turbulence: 5.0,
+            n: 4,
+            time_sec: 0.0,
+            animate: false,
+            planes: [plane(), plane(), plane()],
+            rgba: vec![0; 4 * TEXTURE_SIZE * TEXTURE_SIZE],
+            dirty: true,
+            stale: false,
+        };
+        s.regenerate().expect("valid defaults");
+        s
+    }
+
+    fn regenerate(&mut self) -> Result<(), String> {
+        for (plane, (kind, _)) in self.planes.iter_mut().zip(TEXTURE_KINDS) {
+            let params = TextureParams {
+                kind,
+                scale: self.scale,
+                turbulence: self.turbulence,
+                n: self.n,
+                t: self.time_sec,
+            };
+            fill_rgba(
+                &self.perm,
+                &params,
+                TEXTURE_SIZE,
+                TEXTURE_SIZE,
+                &mut self.rgba,
+            )?;
+            // Texel (i, j) (row j from the top) colours vertex (i, j) of the plane (row j from the
+            // back, v = −1): the image lies on the plane as it would on screen.
+            for (c, px) in plane.colors.iter_mut().zip(self.rgba.chunks_exact(4)) {
+                *c = Vec4::new(from_srgb8(px[0]), from_srgb8(px[1]), from_srgb8(px[2]), 1.0);
+            }
+        }
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Noise cells across a texture (0.5 to 16), turbulence τ (0 to 20), octaves N (0 to 8).
+    pub fn set_params(&mut self, scale: f32, turbulence: f32, n: f32) -> Result<(), String> {
+        let scale = in_range("scale", scale, 0.5, 16.0)?;
+        let turbulence = in_range("turbulence", turbulence, 0.0, 20.0)?;
+        let n = check_n(n, 8)?;
+        (self.scale, self.turbulence, self.n) = (scale, turbulence, n);
+        self.stale = true;
+        Ok(())
+    }
+
+    pub fn set_animate(&mut self, on: bool) -> Result<(), String> {
+        self.animate = on;
+        if on {
+            // Step at once so that ticking the box shows a change even before the next frame.
+            self.time_sec += 0.25;
+            self.stale = true;
+        }
+        Ok(())
+    }
+
+    pub fn advance(&mut self, dt_sec: f32) -> Result<(), String> {
+        let dt = in_range("dt", dt_sec, 0.0, 1.0)?;
+        if self.animate {
+            self.time_sec = (self.time_sec + 0.5 * dt) % 1000.0;
+            self.stale = true;
+        }
+        Ok(())
+    }
+
+    pub fn draw(&self, frame: &mut Frame, meshes: &[MeshId]) -> String {
+        for (i, (&mesh, (_, name))) in meshes.iter().zip(TEXTURE_KINDS).enumerate() {
+            let x = (i as f32 - 1.0) * 2.3;
+            frame.mesh_vertex_colors(mesh, Mat4::from_translation(Vec3::new(x, 0.0, 0.0)));
+            frame.label(Vec3::new(x, 0.0, 1.2), name, palette::DARK);
+        }
+        format!(
+            "Each texture is a {TEXTURE_SIZE} × {TEXTURE_SIZE} RGBA image computed on the CPU, shown \
+             as the colours of a plane with one vertex per texel. scale = {}, τ = {}, N = {}{}.",
+            format_number(self.scale),
+            format_number(self.turbulence),
+            self.n,
+            if self.animate {
+                format!(", t = {}", format_number(self.time_sec))
+            } else {
+                String::new()
+            }
+        )
+    }
+}
+
+impl Default for Textures {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for Textures {
+    fn terrains(&self) -> Vec<&Terrain> {
+        self.planes.iter().collect()
+    }
+    fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) && self.regenerate().is_err() {
+            return false;
+        }
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 5: the course's quiz.
+
+/// One of the quiz's parameter sets and why it looks the way it does.
+pub struct QuizSet {
+    pub params: TerrainParams,
+    /// What gives it away, for the feedback.
+    pub why: &'static str,
+}
+
+/// The six parameter sets of the quiz, numbered 1 to 6 on the page (the course's terrain and one
+/// change each).
+pub fn quiz_sets() -> [QuizSet; 6] {
+    let base = TerrainParams::default();
+    let with = |f: Fractal| TerrainParams { fractal: f, ..base };
+    [
+        QuizSet {
+            params: base,
+            why: "the course's terrain (N = 9, α = 0.4, h = 0.3, s = 1, o = 0): the same hills as \
+                  Figure 4 at its defaults",
+        },
+        QuizSet {
+            params: with(Fractal {
+                n: 1,
+                ..Fractal::COURSE
+            }),
+            why: "N = 1 keeps only two octaves: the same large hills, but smooth, with no small \
+                  bumps",
+        },
+        QuizSet {
+            params: with(Fractal {
+                alpha: 0.75,
+                ..Fractal::COURSE
+            }),
+            why: "α = 0.75 lets the fine octaves keep most of their amplitude: a rough, craggy \
+                  surface",
+        },
+        QuizSet {
+            params: TerrainParams { h: 0.8, ..base },
+            why: "h = 0.8 stretches the course's terrain vertically: the same shape, much taller",
+        },
+        QuizSet {
+            params: TerrainParams { s: 3.0, ..base },
+            why: "s = 3 packs three times as many noise cells into the square: many small hills",
+        },
+        QuizSet {
+            params: TerrainParams { o: 0.5, ..base },
+            why: "o = 0.5 moves the window over the noise: the course's kind of terrain, but \
+                  other hills than set 1",
+        },
+    ]
+}
+
+/// Figure 5: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
+/// set to each and checks.
+pub struct Quiz {
+    perm: Permutation,
+    /// `hidden[i]`: the set (0-based) behind terrain i.
+    hidden: [usize; 6],
+    answers: [Option<usize>; 6],
+    checked: bool,
+    terrains: Vec<Terrain>,
+    round: u64,
+    dirty: bool,
+}
+
+/// Vertices per side of each quiz terrain.
+pub const QUIZ_RESOLUTION: usize = 97;
+const LETTERS: [&str; 6] = ["a", "b", "c", "d", "e", "f"];
+
+impl Quiz {
+    pub fn new() -> Self {
+        let mut q = Self {
+            perm: Permutation::perlin(),
+            hidden: [0, 1, 2, 3, 4, 5],
+            answers: [None; 6],
+            checked: false,
+            terrains: (0..6)
+                .map(|_| Terrain::new(QUIZ_RESOLUTION).expect("a valid resolution"))
+                .collect(),
+            round: 0,
+            dirty: true,
+        };
+        q.new_round();
+        q
+    }
+
+    /// Shuffles the sets onto the terrains (a different order each round) and clears the answers.
+    pub fn new_round(&mut self) {
+        self.round += 1;
+        let mut rng = crate::fixtures::Rng::new(0x9e11_0000 + self.round);
+        let before = self.hidden;
+        loop {
+            for i in (1..6).rev() {
+                let j = rng.below(i + 1);
+                self.hidden.swap(i, j);
+            }
+            if self.hidden != before {
+                break;
+            }
+        }
+        let sets = quiz_sets();
+        for (t, &set) in self.terrains.iter_mut().zip(&self.hidden) {
+            t.regenerate(&self.perm, &sets[set].params)
+                .expect("the quiz's sets are valid");
+        }
+        self.answers = [None; 6];
+        self.checked = false;
+        self.dirty = true;
+    }
+
+    /// The student's answer for terrain `terrain` (0 = a): set 1..=6, or 0 for "not answered".
+    pub fn set_answer(&mut self, terrain: usize, set: usize) -> Result<(), String> {
+        if terrain >= 6 {
+            return Err(format!("terrain must be 0 (a) to 5 (f), got {terrain}"));
+        }
+        if set > 6 {
+            return Err(format!("set must be 1 to 6 (or 0: no answer), got {set}"));
+        }
+        self.answers[terrain] = set.checked_sub(1);
+        self.checked = false;
+        Ok(())
+    }
+
+    /// Marks the answers: the labels say right or wrong and the note says why.
+    pub fn check(&mut self) {
+        self.checked = true;
+    }
+
+    /// How many answers are right.
+    pub fn score(&self) -> usize {
+        (0..6)
+            .filter(|&i| self.answers[i] == Some(self.hidden[i]))
+            .count()
+    }
+
+    /// Where terrain i sits: three across, two deep.
+    pub fn placement(i: usize) -> Vec3 {
+        Vec3::new((i % 3) as f32 * 2.5 - 2.5, 0.0, (i / 3) as f32 * 2.7 - 1.35)
+    }
+
+    pub fn draw(&self, frame: &mut Frame, meshes: &[MeshId]) -> String {
+        for (i, &mesh) in meshes.iter().enumerate().take(6) {
+            let at = Self::placement(i);
+            frame.mesh_vertex_colors(mesh, Mat4::from_translation(at));
+            let mut text = LETTERS[i].to_string();
+            let mut color = palette::DARK;
+            if let Some(a) = self.answers[i] {
+                text += &format!(" → set {}", a + 1);
+                color = palette::PURPLE;
+                if self.checked {
+                    let right = a == self.hidden[i];
+                    text += if right { " ✓" } else { " ✗" };
+                    color = if right { palette::GREEN } else { palette::RED };
+                }
+            }
+            frame.label(at + Vec3::new(0.0, 0.0, 1.15), text, color);
+        }
+        if !self.checked {
+            let answered = self.answers.iter().filter(|a| a.is_some()).count();
+            return format!(
+                "{answered} of 6 answered. Pick a set for each terrain, then press “check my answers”."
+            );
+        }
+        let sets = quiz_sets();
+        let mut lines = vec![format!("{} of 6 right.", self.score())];
+        for (i, letter) in LETTERS.iter().enumerate() {
+            let truth = self.hidden[i];
+            let verdict = match self.answers[i] {
+                None => format!("{}: no answer; it is set {}", letter, truth + 1),
+                Some(a) if a == truth => format!("{}: set {}, right", letter, a + 1),
+                Some(a) => format!("{}: not set {}; it is set {}", letter, a + 1, truth + 1),
+            };
+            lines.push(format!("{verdict}: {}.", sets[truth].why));
+        }
+        lines.join(" ")
+    }
+}
+
+impl Default for Quiz {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for Quiz {
+    fn terrains(&self) -> Vec<&Terrain> {
+        self.terrains.iter().collect()
+    }
+    fn take_dirty(&mut self) -> bool {
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 7: fractals.
+
+/// Figure 7: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
+/// "show previous depth" the depth before is drawn in grey beneath.
+pub struct Fractals {
+    depth: u32,
+    show_previous: bool,
+    points: Vec<Vec2>,
+    triangles: Vec<[Vec2; 3]>,
+}
+
+const KOCH_CENTRE: Vec2 = Vec2::new(-1.7, 0.0);
+const SIERPINSKI: [Vec2; 3] = [
+    Vec2::new(0.4, -1.2),
+    Vec2::new(3.0, -1.2),
+    Vec2::new(1.7, 1.05),
+];
+
+impl Fractals {
+    pub fn new() -> Self {
+        Self {
+            depth: 3,
+            show_previous: false,
+            points: Vec::new(),
+            triangles: Vec::new(),
+        }
+    }
+    pub fn set_depth(&mut self, depth: f32) -> Result<(), String> {
+        let d = in_range("depth", depth, 0.0, MAX_DEPTH as f32)?;
+        if d.fract() != 0.0 {
+            return Err(format!("depth must be a whole number, got {depth}"));
+        }
+        self.depth = d as u32;
+        Ok(())
+    }
+    pub fn set_show_previous(&mut self, on: bool) {
+        self.show_previous = on;
+    }
+
+    fn draw_depth(&mut self, frame: &mut Frame, depth: u32, koch: Vec3, sier: Vec3, z: f32) {
+        koch_snowflake(depth, 1.25, &mut self.points).expect("depth checked");
+        let pts: Vec<Vec3> = self
+            .points
+            .iter()
+            .map(|p| (*p + KOCH_CENTRE).extend(z))
+            .collect();
+        frame.polyline(&pts, koch);
+        sierpinski(depth, SIERPINSKI, &mut self.triangles).expect("depth checked");
+        for t in &self.triangles {
+            let v = t.map(|p| p.extend(z));
+            frame.polyline(&[v[0], v[1], v[2], v[0]], sier);
+        }
+    }
+
+    pub fn draw(&mut self, frame: &mut Frame) -> String {
+        let d = self.depth;
+        if self.show_previous && d > 0 {
+            self.draw_depth(frame, d - 1, palette::GRID, palette::GRID, -0.01);
+        }
+        self.draw_depth(frame, d, palette::BLUE, palette::ORANGE, 0.0);
+        frame.label(
+            Vec3::new(KOCH_CENTRE.x, -1.55, 0.0),
+            "Koch snowflake",
+            palette::BLUE,
+        );
+        frame.label(
+            Vec3::new(1.7, -1.55, 0.0),
+            "Sierpinski triangle",
+            palette::ORANGE,
+        );
+        let segments = 3 * 4usize.pow(d);
+        format!(
+            "Depth {d}: the snowflake has {segments} segments and a perimeter (4/3)^{d} = {} times \
+             the triangle's; the Sierpinski triangle has 3^{d} = {} triangles covering (3/4)^{d} = {} \
+             of the area.",
+            format_number((4.0f32 / 3.0).powi(d as i32)),
+            3usize.pow(d),
+            format_number(0.75f32.powi(d as i32))
+        )
+    }
+}
+
+impl Default for Fractals {
+    fn default() -> Self {
+        Self::new()
+    }
+}

@@ -1,0 +1,426 @@
+//! Ken Perlin's improved gradient noise (2002) in one, two and three dimensions.
+//!
+//! Source: K. Perlin, "Improving Noise", SIGGRAPH 2002, and his Java reference implementation
+//! `ImprovedNoise` (<https://mrl.cs.nyu.edu/~perlin/noise/>). [`noise3_f64`] follows that code
+//! operation by operation in doubles and reproduces it to the last bit
+//! (`noise3_f64(3.14, 42.0, 7.0) = 0.13691995878400012`); [`Permutation::noise3`] is the same
+//! algorithm in `f32`, with analytic derivatives beside it.
+
+use glam::{Vec2, Vec3};
+
+/// Perlin's permutation of 0..=255, copied from his reference implementation.
+pub const PERLIN_PERMUTATION: [u8; 256] = [
+    151, 160, 137, 91, 90, 15, 131, 13, 201, 95, 96, 53, 194, 233, 7, 225, 140, 36, 103, 30, 69,
+    142, 8, 99, 37, 240, 21, 10, 23, 190, 6, 148, 247, 120, 234, 75, 0, 26, 197, 62, 94, 252, 219,
+    203, 117, 35, 11, 32, 57, 177, 33, 88, 237, 149, 56, 87, 174, 20, 125, 136, 171, 168, 68, 175,
+    74, 165, 71, 134, 139, 48, 27, 166, 77, 146, 158, 231, 83, 111, 229, 122, 60, 211, 133, 230,
+    220, 105, 92, 41, 55, 46, 245, 40, 244, 102, 143, 54, 65, 25, 63, 161, 1, 216, 80, 73, 209, 76,
+    132, 187, 208, 89, 18, 169, 200, 196, 135, 130, 116, 188, 159, 86, 164, 100, 109, 198, 173,
+    186, 3, 64, 52, 217, 226, 250, 124, 123, 5, 202, 38, 147, 118, 126, 255, 82, 85, 212, 207, 206,
+    59, 227, 47, 16, 58, 17, 182, 189, 28, 42, 223, 183, 170, 213, 119, 248, 152, 2, 44, 154, 163,
+    70, 221, 153, 101, 155, 167, 43, 172, 9, 129, 22, 39, 253, 19, 98, 108, 110, 79, 113, 224, 232,
+    178, 185, 112, 104, 218, 246, 97, 228, 251, 34, 242, 193, 238, 210, 144, 12, 191, 179, 162,
+    241, 81, 51, 145, 235, 249, 14, 239, 107, 49, 192, 214, 31, 181, 199, 106, 157, 184, 84, 204,
+    176, 115, 121, 50, 45, 127, 4, 150, 254, 138, 236, 205, 93, 222, 114, 67, 29, 24, 72, 243, 141,
+    128, 195, 78, 66, 215, 61, 156, 180,
+];
+
+/// Perlin's quintic fade curve and its derivative:
+/// ```text
+/// fade(t)  = 6t⁵ − 15t⁴ + 10t³        fade(0) = 0, fade(1) = 1
+/// fade′(t) = 30t⁴ − 60t³ + 30t² = 30 t² (t − 1)²      fade′ = fade″ = 0 at t = 0 and 1
+/// ```
+/// Zero first and second derivatives at both ends make the noise C² across cell borders (the 1985
+/// noise used `3t² − 2t³`, whose second derivative jumps). Lesson: lessons/05-noise.
+#[inline]
+pub fn fade(t: f32) -> f32 {
+    t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
+}
+
+/// The derivative of [`fade`]: `30 t² (t − 1)²`.
+#[inline]
+pub fn fade_derivative(t: f32) -> f32 {
+    30.0 * t * t * (t - 1.0) * (t - 1.0)
+}
+
+/// `a + t (b − a)`, as in the reference (`t = 0` gives `a`, `t = 1` gives `b`).
+#[inline]
+fn lerp(t: f32, a: f32, b: f32) -> f32 {
+    a + t * (b - a)
+}
+
+/// The reference's `grad(hash, x, y, z)` as a vector: the hash's low four bits pick one of twelve
+/// edge directions of a cube (four of them twice), `(±1, ±1, 0)`, `(±1, 0, ±1)`, `(0, ±1, ±1)`.
+const fn grad3_vector(hash: usize) -> [f32; 3] {
+    let h = hash & 15;
+    // u is x or y, v is y, x or z; bit 0 negates u, bit 1 negates v.
+    let mut g = [0.0f32; 3];
+    let su = if h & 1 == 0 { 1.0 } else { -1.0 };
+    let sv = if h & 2 == 0 { 1.0 } else { -1.0 };
+    if h < 8 {
+        g[0] = su;
+    } else {
+        g[1] = su;
+    }
+    if h < 4 {
+        g[1] = sv;
+    } else if h == 12 || h == 14 {
+        g[0] = sv;
+    } else {
+        g[2] = sv;
+    }
+    g
+}
+
+const fn grad3_table() -> [[f32; 3]; 16] {
+    let mut t = [[0.0; 3]; 16];
+    let mut h = 0;
+    while h < 16 {
+        t[h] = grad3_vector(h);
+        h += 1;
+    }
+    t
+}
+
+/// The sixteen gradients of the reference, indexed by `hash & 15`.
+pub const GRAD3: [[f32; 3]; 16] = grad3_table();
+
+/// Lattice gradient of the 1D noise (not in Perlin's reference, which is 3D): a slope in
+/// `±{1/8, 2/8, …, 1}` picked by `hash & 15`.
+#[inline]
+pub fn grad1(hash: usize) -> f32 {
+    let h = hash & 15;
+    let slope = ((h >> 1) + 1) as f32 / 8.0;
+    if h & 1 == 0 {
+        slope
+    } else {
+        -slope
+    }
+}
+
+/// The gradient of the 2D noise at a lattice point with this hash: the `(x, y)` part of the 3D
+/// reference's gradient (the 2D noise is the reference's slice `z = 0`).
+#[inline]
+pub fn grad2(hash: usize) -> Vec2 {
+    let g = GRAD3[hash & 15];
+    Vec2::new(g[0], g[1])
+}
+
+/// `floor` for `|x| < 2³¹` as an integer, without a libm call on targets lacking SSE4.1.
+#[inline]
+fn floor_i32(x: f32) -> i32 {
+    let i = x as i32;
+    if x < i as f32 {
+        i - 1
+    } else {
+        i
+    }
+}
+
+/// A doubled permutation table: `p[i] = p[i + 256]`, so hashes of neighbouring lattice points
+/// need no wrap-around. Lattice coordinates repeat every 256 cells.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Permutation {
+    p: [u8; 512],
+}
+
+impl Default for Permutation {
+    fn default() -> Self {
+        Self::perlin()
+    }
+}
+
+impl Permutation {
+    /// Perlin's own table ([`PERLIN_PERMUTATION`]).
+    pub fn perlin() -> Self {
+        Self::from_table(&PERLIN_PERMUTATION)
+    }
+
+    /// Any table of 256 entries. It should be a permutation of 0..=255 for the noise to look
+    /// uniform, but any bytes are safe.
+    pub fn from_table(table: &[u8; 256]) -> Self {
+        let mut p = [0u8; 512];
+        p[..256].copy_from_slice(table);
+        p[256..].copy_from_slice(table);
+        Self { p }
+    }
+
+    /// A random permutation drawn from `seed` (Fisher–Yates with SplitMix64): the same seed gives
+    /// the same table on every machine. Seed 0 is not special; use [`Permutation::perlin`] for
+    /// Perlin's table.
+    pub fn seeded(seed: u64) -> Self {
+        let mut table = [0u8; 256];
+        for (i, t) in table.iter_mut().enumerate() {
+            *t = i as u8;
+        }
+        let mut rng = crate::fixtures::Rng::new(seed);
+        for i in (1..256).rev() {
+            let j = (rng.next_u64() % (i as u64 + 1)) as usize;
+            table.swap(i, j);
+        }
+        Self::from_table(&table)
+    }
+
+    /// The first 256 entries.
+    pub fn table(&self) -> &[u8] {
+        &self.p[..256]
+    }
+
+    #[inline(always)]
+    fn at(&self, i: usize) -> usize {
+        self.p[i & 511] as usize
+    }
+
+    /// The hash of lattice point `(i, j)` of the 2D noise (as the reference hashes `(i, j, 0)`).
+    #[inline]
+    pub fn hash2(&self, i: i32, j: i32) -> usize {
+        let (x, y) = ((i & 255) as usize, (j & 255) as usize);
+        self.at(self.at(self.at(x) + y))
+    }
+
+    /// The hash of lattice point `i` of the 1D noise.
+    #[inline]
+    pub fn hash1(&self, i: i32) -> usize {
+        self.at((i & 255) as usize)
+    }
+
+    /// One-dimensional gradient noise: slopes [`grad1`] at the integers, blended by [`fade`].
+    /// ```text
+    /// n(x) = lerp(fade(t), g₀ t, g₁ (t − 1)),     t = x − ⌊x⌋
+    /// ```
+    /// Zero at every integer; `|n| ≤ 0.5`. Returns the value and `dn/dx`.
+    pub fn noise1_with_derivative(&self, x: f32) -> (f32, f32) {
+        let xi = floor_i32(x);
+        let t = x - xi as f32;
+        let (g0, g1) = (grad1(self.hash1(xi)), grad1(self.hash1(xi + 1)));
+        let (a, b) = (g0 * t, g1 * (t - 1.0));
+        let u = fade(t);
+        let value = lerp(u, a, b);
+        let slope = lerp(u, g0, g1) + fade_derivative(t) * (b - a);
+        (value, slope)
+    }
+
+    /// [`Permutation::noise1_with_derivative`] without the derivative.
+    #[inline]
+    pub fn noise1(&self, x: f32) -> f32 {
+        self.noise1_with_derivative(x).0
+    }
+
+    /// Two-dimensional improved noise: the reference's `noise(x, y, 0)`, computed from the four
+    /// corners of the square cell only.
+    /// ```text
+    /// n(x, y) = lerp(v, lerp(u, g₀₀·d₀₀, g₁₀·d₁₀), lerp(u, g₀₁·d₀₁, g₁₁·d₁₁))
+    /// d_ij = (x, y) − corner_ij,   u = fade(x − ⌊x⌋),  v = fade(y − ⌊y⌋)
+    /// ```
+    /// Zero at every lattice point; `|n| ≤ 1` (in practice about ±0.9).
+    #[inline]
+    pub fn noise2(&self, x: f32, y: f32) -> f32 {
+        let (xi, yi) = (floor_i32(x), floor_i32(y));
+        let (x, y) = (x - xi as f32, y - yi as f32);
+        let (xx, yy) = ((xi & 255) as usize, (yi & 255) as usize);
+        let a = self.at(xx) + yy;
+        let b = self.at(xx + 1) + yy;
+        let (aa, ab, ba, bb) = (self.at(a), self.at(a + 1), self.at(b), self.at(b + 1));
+        let dot = |h: usize, dx: f32, dy: f32| {
+            let g = GRAD3[self.at(h) & 15];
+            g[0] * dx + g[1] * dy
+        };
+        let (u, v) = (fade(x), fade(y));
+        lerp(
+            v,
+            lerp(u, dot(aa, x, y), dot(ba, x - 1.0, y)),
+            lerp(u, dot(ab, x, y - 1.0), dot(bb, x - 1.0, y - 1.0)),
+        )
+    }
+
+    /// [`Permutation::noise2`] and its gradient `(∂n/∂x, ∂n/∂y)`, exact (no finite differences):
+    /// ```text
+    /// n = k₀ + k₁u + k₂v + k₃uv,   k₀ = n₀₀, k₁ = n₁₀ − n₀₀, k₂ = n₀₁ − n₀₀, k₃ = n₀₀ − n₁₀ − n₀₁ + n₁₁
+    /// ∇n = bilerp(u, v; g₀₀, g₁₀, g₀₁, g₁₁) + (fade′(x)(k₁ + k₃v), fade′(y)(k₂ + k₃u))
+    /// ```
+    #[inline]
+    pub fn noise2_with_derivative(&self, x: f32, y: f32) -> (f32, Vec2) {
+        let (xi, yi) = (floor_i32(x), floor_i32(y));
+        // The same hashes as noise2 (six table lookups for the four corners).
+        let (xx, yy) = ((xi & 255) as usize, (yi & 255) as usize);
+        let a = self.at(xx) + yy;
+        let b = self.at(xx + 1) + yy;
+        let g = |h: usize| grad2(self.at(h));
+        let g = [
+            g(self.at(a)),
+            g(self.at(b)),
+            g(self.at(a + 1)),
+            g(self.at(b + 1)),
+        ];
+        cell2_with_derivative(Vec2::new(x - xi as f32, y - yi as f32), g)
+    }
+
+    /// Perlin's improved noise in 3D, in `f32`: the reference algorithm (see [`noise3_f64`]) with
+    /// the same permutation and gradients. Agrees with the double-precision reference to `f32`
+    /// rounding (about 1e-6 near the origin).
+    #[inline]
+    pub fn noise3(&self, x: f32, y: f32, z: f32) -> f32 {
+        self.noise3_with_derivative_impl::<false>(Vec3::new(x, y, z))
+            .0
+    }
+
+    /// [`Permutation::noise3`] and its exact gradient.
+    pub fn noise3_with_derivative(&self, p: Vec3) -> (f32, Vec3) {
+        self.noise3_with_derivative_impl::<true>(p)
+    }
+
+    #[inline(always)]
+    fn noise3_with_derivative_impl<const DERIV: bool>(&self, p: Vec3) -> (f32, Vec3) {
+        let (xi, yi, zi) = (floor_i32(p.x), floor_i32(p.y), floor_i32(p.z));
+        let (x, y, z) = (p.x - xi as f32, p.y - yi as f32, p.z - zi as f32);
+        let (xx, yy, zz) = (
+            (xi & 255) as usize,
+            (yi & 255) as usize,
+            (zi & 255) as usize,
+        );
+        let a = self.at(xx) + yy;
+        let aa = self.at(a) + zz;
+        let ab = self.at(a + 1) + zz;
+        let b = self.at(xx + 1) + yy;
+        let ba = self.at(b) + zz;
+        let bb = self.at(b + 1) + zz;
+        let g = |h: usize| GRAD3[self.at(h) & 15];
+        let dot = |g: [f32; 3], dx: f32, dy: f32, dz: f32| g[0] * dx + g[1] * dy + g[2] * dz;
+        let (g000, g100, g010, g110) = (g(aa), g(ba), g(ab), g(bb));
+        let (g001, g101, g011, g111) = (g(aa + 1), g(ba + 1), g(ab + 1), g(bb + 1));
+        let n000 = dot(g000, x, y, z);
+        let n100 = dot(g100, x - 1.0, y, z);
+        let n010 = dot(g010, x, y - 1.0, z);
+        let n110 = dot(g110, x - 1.0, y - 1.0, z);
+        let n001 = dot(g001, x, y, z - 1.0);
+        let n101 = dot(g101, x - 1.0, y, z - 1.0);
+        let n011 = dot(g011, x, y - 1.0, z - 1.0);
+        let n111 = dot(g111, x - 1.0, y - 1.0, z - 1.0);
+        let (u, v, w) = (fade(x), fade(y), fade(z));
+        let value = lerp(
+            w,
+            lerp(v, lerp(u, n000, n100), lerp(u, n010, n110)),
+            lerp(v, lerp(u, n001, n101), lerp(u, n011, n111)),
+        );
+        if !DERIV {
+            return (value, Vec3::ZERO);
+        }
+        // value = k0 + k1 u + k2 v + k3 w + k4 uv + k5 vw + k6 wu + k7 uvw
+        let k1 = n100 - n000;
+        let k2 = n010 - n000;
+        let k3 = n001 - n000;
+        let k4 = n000 - n100 - n010 + n110;
+        let k5 = n000 - n010 - n001 + n011;
+        let k6 = n000 - n100 - n001 + n101;
+        let k7 = -n000 + n100 + n010 - n110 + n001 - n101 - n011 + n111;
+        let gv = |g: [f32; 3]| Vec3::from_array(g);
+        let tri = Vec3::lerp(
+            Vec3::lerp(
+                Vec3::lerp(gv(g000), gv(g100), u),
+                Vec3::lerp(gv(g010), gv(g110), u),
+                v,
+            ),
+            Vec3::lerp(
+                Vec3::lerp(gv(g001), gv(g101), u),
+                Vec3::lerp(gv(g011), gv(g111), u),
+                v,
+            ),
+            w,
+        );
+        let d = Vec3::new(
+            fade_derivative(x) * (k1 + k4 * v + k6 * w + k7 * v * w),
+            fade_derivative(y) * (k2 + k4 * u + k5 * w + k7 * u * w),
+            fade_derivative(z) * (k3 + k5 * v + k6 * u + k7 * u * v),
+        );
+        (value, tri + d)
+    }
+}
+
+/// One 2D noise evaluation inside a unit cell from its four corner gradients, `g = [g₀₀, g₁₀,
+/// g₀₁, g₁₁]` (corner `(i, j)` at `(i, j)`), at `p = (x, y) ∈ [0, 1]²`:
+/// ```text
+/// n = lerp(fade(y), lerp(fade(x), g₀₀·p, g₁₀·(p − (1,0))), lerp(fade(x), g₀₁·(p − (0,1)), g₁₁·(p − (1,1))))
+/// ```
+/// This is the step inside [`Permutation::noise2`] once the hash has chosen the gradients.
+pub fn cell2(p: Vec2, g: [Vec2; 4]) -> f32 {
+    cell2_with_derivative(p, g).0
+}
+
+/// [`cell2`] and its gradient with respect to `p`. Written out in scalars: this is the inner
+/// loop of every terrain (one call per octave per vertex).
+#[inline]
+pub fn cell2_with_derivative(p: Vec2, g: [Vec2; 4]) -> (f32, Vec2) {
+    let (x, y) = (p.x, p.y);
+    let n00 = g[0].x * x + g[0].y * y;
+    let n10 = g[1].x * (x - 1.0) + g[1].y * y;
+    let n01 = g[2].x * x + g[2].y * (y - 1.0);
+    let n11 = g[3].x * (x - 1.0) + g[3].y * (y - 1.0);
+    let (u, v) = (fade(x), fade(y));
+    let value = lerp(v, lerp(u, n00, n10), lerp(u, n01, n11));
+    let (k1, k2, k3) = (n10 - n00, n01 - n00, n00 - n10 - n01 + n11);
+    // The gradients blended like the values, plus the fade curves' slopes times the differences.
+    let bx = lerp(v, lerp(u, g[0].x, g[1].x), lerp(u, g[2].x, g[3].x));
+    let by = lerp(v, lerp(u, g[0].y, g[1].y), lerp(u, g[2].y, g[3].y));
+    let dx = bx + fade_derivative(x) * (k1 + k3 * v);
+    let dy = by + fade_derivative(y) * (k2 + k3 * u);
+    (value, Vec2::new(dx, dy))
+}
+
+/// Perlin's reference `noise(x, y, z)` in doubles, operation for operation, with his table.
+/// Kept for checking [`Permutation::noise3`] and as a faithful transcription to read.
+pub fn noise3_f64(x: f64, y: f64, z: f64) -> f64 {
+    let p = |i: usize| PERLIN_PERMUTATION[i & 255] as usize;
+    let fade = |t: f64| t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+    let lerp = |t: f64, a: f64, b: f64| a + t * (b - a);
+    let grad = |hash: usize, x: f64, y: f64, z: f64| {
+        let h = hash & 15;
+        let u = if h < 8 { x } else { y };
+        let v = if h < 4 {
+            y
+        } else if h == 12 || h == 14 {
+            x
+        } else {
+            z
+        };
+        (if h & 1 == 0 { u } else { -u }) + (if h & 2 == 0 { v } else { -v })
+    };
+    let (fx, fy, fz) = (x.floor(), y.floor(), z.floor());
+    let (xx, yy, zz) = (
+        (fx as i64 & 255) as usize,
+        (fy as i64 & 255) as usize,
+        (fz as i64 & 255) as usize,
+    );
+    let (x, y, z) = (x - fx, y - fy, z - fz);
+    let (u, v, w) = (fade(x), fade(y), fade(z));
+    let a = p(xx) + yy;
+    let aa = p(a) + zz;
+    let ab = p(a + 1) + zz;
+    let b = p(xx + 1) + yy;
+    let ba = p(b) + zz;
+    let bb = p(b + 1) + zz;
+    lerp(
+        w,
+        lerp(
+            v,
+            lerp(u, grad(p(aa), x, y, z), grad(p(ba), x - 1.0, y, z)),
+            lerp(
+                u,
+                grad(p(ab), x, y - 1.0, z),
+                grad(p(bb), x - 1.0, y - 1.0, z),
+            ),
+        ),
+        lerp(
+            v,
+            lerp(
+                u,
+                grad(p(aa + 1), x, y, z - 1.0),
+                grad(p(ba + 1), x - 1.0, y, z - 1.0),
+            ),
+            lerp(
+                u,
+                grad(p(ab + 1), x, y - 1.0, z - 1.0),
+                grad(p(bb + 1), x - 1.0, y - 1.0, z - 1.0),
+            ),
+        ),
+    )
+}

@@ -1,0 +1,244 @@
+//! Lesson 05 core: a height-field terrain from fractal noise.
+//!
+//! The course's surface, with y up (its z is our y, its v our z):
+//! ```text
+//! S(u, v) = (u, h · g(s(u + o), s(v + o)), v),      (u, v) ∈ [−1, 1]²
+//! g(x, y) = Σ_{k=0}^{N} αᵏ f(ωᵏ x, ωᵏ y)            (or a ridge, marble or animated variant)
+//! ```
+//! h scales the height, s the horizontal frequency (zoom), o shifts the window. The normal comes
+//! from the exact derivative of g (chain rule), not from finite differences or averaged faces:
+//! ```text
+//! ∂y/∂u = h s ∂g/∂x,  ∂y/∂v = h s ∂g/∂y,   n = (−∂y/∂u, 1, −∂y/∂v) / ‖·‖
+//! ```
+//! [`Terrain::regenerate`] rewrites positions, normals and colours in place: changing a
+//! parameter never reallocates. Lesson: lessons/05-noise.
+
+use crate::noise::{Fractal, Permutation, Shape};
+use glam::{Vec2, Vec3, Vec4};
+
+/// The most vertices along a side: 1024² ≈ 1 M vertices (about 40 MB of vertex data on the
+/// GPU). Regeneration costs grow with resolution² × (N + 1).
+pub const MAX_RESOLUTION: usize = 1024;
+
+/// Which function of the noise gives the height.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Variant {
+    /// The fractal sum `g`.
+    Sum,
+    /// `Σ αᵏ |f|`: creases in the valleys.
+    Ridge,
+    /// `Σ αᵏ (1 − |f|)`, shifted down by its mean so it sits near 0: sharp mountain crests.
+    InvertedRidge,
+    /// `sin(4x + Σ αᵏ |f|)`: marble veins as a relief.
+    Marble,
+    /// `g(x, y + t)`: the whole pattern slides.
+    Sliding { t: f32 },
+    /// `g(x, y, t)` with 3D noise: the pattern evolves in place.
+    Evolving { t: f32 },
+}
+
+/// Everything that shapes a terrain.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TerrainParams {
+    pub fractal: Fractal,
+    /// Height scale h (metres per unit of g), in `[0, 2]`.
+    pub h: f32,
+    /// Horizontal scale s (noise cells per metre), in `(0, 16]`.
+    pub s: f32,
+    /// Offset o, in `[−1000, 1000]`.
+    pub o: f32,
+    pub variant: Variant,
+}
+
+impl Default for TerrainParams {
+    /// The course's example: N = 9, α = 0.4, ω = 2, h = 0.3, s = 1, o = 0.
+    fn default() -> Self {
+        Self {
+            fractal: Fractal::COURSE,
+            h: 0.3,
+            s: 1.0,
+            o: 0.0,
+            variant: Variant::Sum,
+        }
+    }
+}
+
+impl TerrainParams {
+    /// An error naming the parameter when one is out of range or not finite.
+    pub fn validate(&self) -> Result<(), String> {
+        self.fractal.validate()?;
+        let check = |name: &str, x: f32, lo: f32, hi: f32| {
+            if x.is_finite() && (lo..=hi).contains(&x) {
+                Ok(())
+            } else {
+                Err(format!("{name} must lie in [{lo}, {hi}], got {x}"))
+            }
+        };
+        check("h", self.h, 0.0, 2.0)?;
+        check("s", self.s, 1e-3, 16.0)?;
+        check("o", self.o, -1000.0, 1000.0)?;
+        if let Variant::Sliding { t } | Variant::Evolving { t } = self.variant {
+            check("t", t, -1e4, 1e4)?;
+        }
+        Ok(())
+    }
+
+    /// The height function of the noise domain and its gradient there: `(g, ∂g/∂x, ∂g/∂y)`.
+    #[inline]
+    pub fn g(&self, perm: &Permutation, x: f32, y: f32) -> (f32, Vec2) {
+        let f = &self.fractal;
+        match self.variant {
+            Variant::Sum => f.shaped2_with_derivative(perm, Shape::Sum, x, y),
+            Variant::Ridge => f.shaped2_with_derivative(perm, Shape::Ridge, x, y),
+            Variant::InvertedRidge => {
+                let (q, dq) = f.shaped2_with_derivative(perm, Shape::InvertedRidge, x, y);
+                (q - 0.7 * f.amplitude_sum(), dq)
+            }
+            Variant::Marble => {
+                let (r, dr) = f.shaped2_with_derivative(perm, Shape::Ridge, x, y);
+                let phase = 4.0 * x + r;
+                (
+                    0.5 * phase.sin(),
+                    0.5 * phase.cos() * (Vec2::new(4.0, 0.0) + dr),
+                )
+            }
+            Variant::Sliding { t } => f.shaped2_with_derivative(perm, Shape::Sum, x, y + t),
+            Variant::Evolving { t } => {
+                let (g, d) = f.sum3_with_derivative(perm, Vec3::new(x, y, t));
+                (g, d.truncate())
+            }
+        }
+    }
+}
+
+/// The unit normal of a height field `y(u, v)` from its two partial derivatives:
+/// `n = (−∂y/∂u, 1, −∂y/∂v) / ‖(−∂y/∂u, 1, −∂y/∂v)‖` (the cross product of the tangents
+/// `(0, ∂y/∂v, 1) × (1, ∂y/∂u, 0)`).
+#[inline]
+pub fn height_field_normal(dy_du: f32, dy_dv: f32) -> Vec3 {
+    Vec3::new(-dy_du, 1.0, -dy_dv).normalize()
+}
+
+/// The normal of the course's terrain `y = h g(s(u + o), s(v + o))` from the gradient of `g` at
+/// `(s(u + o), s(v + o))`: by the chain rule `∂y/∂u = h s ∂g/∂x` and `∂y/∂v = h s ∂g/∂y`.
+#[inline]
+pub fn terrain_normal(h: f32, s: f32, grad_g: Vec2) -> Vec3 {
+    height_field_normal(h * s * grad_g.x, h * s * grad_g.y)
+}
+
+/// A colour for a terrain vertex from its height (metres) and its normal: water-blue in the lowest
+/// parts (below `−0.3 · h_max`), sand, then grass, rock on slopes steeper than about 35°, snow
+/// above `0.45 · h_max` on flat ground. Linear RGBA.
+pub fn terrain_color(height: f32, normal: Vec3, h_max: f32) -> Vec4 {
+    let h_max = h_max.max(1e-6);
+    let rel = height / h_max; // roughly −1 … 1
+    let water = Vec3::new(0.05, 0.18, 0.45);
+    let sand = Vec3::new(0.65, 0.55, 0.3);
+    let grass = Vec3::new(0.12, 0.35, 0.06);
+    let rock = Vec3::new(0.28, 0.24, 0.21);
+    let snow = Vec3::new(0.9, 0.92, 0.95);
+    let smooth = |a: f32, b: f32, x: f32| ((x - a) / (b - a)).clamp(0.0, 1.0);
+    let mut c = water.lerp(sand, smooth(-0.32, -0.26, rel));
+    c = c.lerp(grass, smooth(-0.24, -0.14, rel));
+    let steep = smooth(0.12, 0.25, 1.0 - normal.y); // 1 − cos(slope)
+    c = c.lerp(rock, steep);
+    let high = smooth(0.4, 0.5, rel) * (1.0 - steep);
+    c = c.lerp(snow, high);
+    c.extend(1.0)
+}
+
+/// A square height-field mesh over `[−1, 1]²` with `resolution` vertices per side, and the
+/// buffers it is regenerated into.
+#[derive(Clone, Debug)]
+pub struct Terrain {
+    resolution: usize,
+    /// World space, row by row (v major): vertex `(i, j)` is at index `j · resolution + i`.
+    pub positions: Vec<Vec3>,
+    /// Unit normals, from the analytic derivative.
+    pub normals: Vec<Vec3>,
+    /// Linear RGBA by height and slope ([`terrain_color`]).
+    pub colors: Vec<Vec4>,
+    /// Three per triangle, counter-clockwise seen from above.
+    pub indices: Vec<u32>,
+}
+
+impl Terrain {
+    /// Allocates a flat terrain; errors unless `2 ≤ resolution ≤ MAX_RESOLUTION`.
+    pub fn new(resolution: usize) -> Result<Self, String> {
+        if !(2..=MAX_RESOLUTION).contains(&resolution) {
+            return Err(format!(
+                "resolution must be between 2 and {MAX_RESOLUTION}, got {resolution}"
+            ));
+        }
+        let n = resolution * resolution;
+        let mut indices = Vec::with_capacity((resolution - 1) * (resolution - 1) * 6);
+        for j in 0..resolution - 1 {
+            for i in 0..resolution - 1 {
+                let a = (j * resolution + i) as u32;
+                let b = a + 1;
+                let c = a + resolution as u32;
+                let d = c + 1;
+                // Seen from +y, +x to the right and +z towards the viewer: a c b, b c d are CCW.
+                indices.extend_from_slice(&[a, c, b, b, c, d]);
+            }
+        }
+        let mut t = Self {
+            resolution,
+            positions: vec![Vec3::ZERO; n],
+            normals: vec![Vec3::Y; n],
+            colors: vec![Vec4::ONE; n],
+            indices,
+        };
+        for j in 0..resolution {
+            for i in 0..resolution {
+                let (u, v) = t.uv(i, j);
+                t.positions[j * resolution + i] = Vec3::new(u, 0.0, v);
+            }
+        }
+        Ok(t)
+    }
+
+    pub fn resolution(&self) -> usize {
+        self.resolution
+    }
+
+    /// The parameters `(u, v)` of vertex `(i, j)`.
+    #[inline]
+    pub fn uv(&self, i: usize, j: usize) -> (f32, f32) {
+        let step = 2.0 / (self.resolution - 1) as f32;
+        (-1.0 + i as f32 * step, -1.0 + j as f32 * step)
+    }
+
+    /// Rewrites heights, normals and colours for `params` in place (no allocation).
+    pub fn regenerate(&mut self, perm: &Permutation, params: &TerrainParams) -> Result<(), String> {
+        params.validate()?;
+        let TerrainParams { h, s, o, .. } = *params;
+        let h_max = (h * params.fractal.amplitude_sum() * 0.5).max(1e-6);
+        let r = self.resolution;
+        let step = 2.0 / (r - 1) as f32;
+        for j in 0..r {
+            let v = -1.0 + j as f32 * step;
+            let row = j * r;
+            for i in 0..r {
+                let u = -1.0 + i as f32 * step;
+                let (g, dg) = params.g(perm, s * (u + o), s * (v + o));
+                let y = h * g;
+                let n = terrain_normal(h, s, dg);
+                let k = row + i;
+                self.positions[k] = Vec3::new(u, y, v);
+                self.normals[k] = n;
+                self.colors[k] = terrain_color(y, n, h_max);
+            }
+        }
+        Ok(())
+    }
+
+    /// The mesh as [`crate::mesh::MeshData`] (copies; for creating the GPU mesh once).
+    pub fn mesh_data(&self) -> crate::mesh::MeshData {
+        crate::mesh::MeshData {
+            positions: self.positions.clone(),
+            normals: self.normals.clone(),
+            indices: self.indices.clone(),
+        }
+    }
+}
