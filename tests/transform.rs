@@ -181,8 +181,8 @@ both! {
             // Counter-clockwise from outside: the winding normal points away from the inside...
             assert!(face_normal.dot((a + b + c) / 3.0 - axis_point) > 0.0);
             // ...and every stored normal agrees with it (smooth sides lean by the half angle).
-            for k in 0..3 {
-                let n = mesh.normals[tri[k] as usize];
+            for &index in tri {
+                let n = mesh.normals[index as usize];
                 assert!((n.length() - 1.0).abs() < 1e-5);
                 assert!(n.dot(face_normal) > 0.9, "normal {n} vs face {face_normal}");
             }
