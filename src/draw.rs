@@ -33,6 +33,9 @@ pub struct MeshDraw {
     pub color: Vec4,
     /// Use the colours stored in the mesh's vertices.
     pub vertex_colors: bool,
+    /// Show the colour as it is, without the renderer's lighting (colours already shaded on the
+    /// CPU, as lesson 00's shading figure does).
+    pub unlit: bool,
 }
 
 /// One end of a line segment, laid out as the GPU reads it.
@@ -91,6 +94,7 @@ impl Frame {
             model,
             color: color.extend(1.0),
             vertex_colors: false,
+            unlit: false,
         });
     }
 
@@ -101,6 +105,19 @@ impl Frame {
             model,
             color: Vec4::ONE,
             vertex_colors: true,
+            unlit: false,
+        });
+    }
+
+    /// Draws `mesh` with the colours stored in its vertices, unlit: the colours are the final
+    /// (linear RGB) colours, already shaded by the caller.
+    pub fn mesh_unlit_vertex_colors(&mut self, mesh: MeshId, model: Mat4) {
+        self.meshes.push(MeshDraw {
+            mesh,
+            model,
+            color: Vec4::ONE,
+            vertex_colors: true,
+            unlit: true,
         });
     }
 
@@ -235,6 +252,7 @@ impl Frame {
                 .for_each(|x| eat(x.to_bits()));
             m.color.to_array().iter().for_each(|x| eat(x.to_bits()));
             eat(m.vertex_colors as u32);
+            eat(m.unlit as u32);
         }
         for v in &self.lines {
             v.position

@@ -46,13 +46,28 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
     scene.set_ghosts(10.0).unwrap();
     let mut f = Frame::default();
     scene.draw(&mut f, 0.5).unwrap();
-    let ghosts: Vec<Vec3> = f
+    let all_ghosts: Vec<Vec3> = f
         .points
         .iter()
         .filter(|p| Vec3::from_slice(&p.color[..3]) == GHOST)
         .map(|p| Vec3::from(p.center))
         .collect();
+    // The arc's ghosts at z = 0, the straight twin's behind them.
+    let (ghosts, twin): (Vec<Vec3>, Vec<Vec3>) = all_ghosts.iter().partition(|p| p.z > -0.5);
     assert_eq!(ghosts.len(), 11);
+    assert_eq!(twin.len(), 11);
+    for (k, b) in twin.iter().enumerate() {
+        let covered = (b.x - twin[0].x) / (twin[10].x - twin[0].x);
+        let spacing = scene.spacing(k as f32 / 10.0);
+        assert!((covered - spacing).abs() < 1e-4, "the same spacing: {covered} vs {spacing}");
+        assert!((b.y - twin[0].y).abs() < 1e-5, "the twin's path is straight");
+    }
+    assert!(ghosts[5].y > twin[5].y + 1.0, "the arc rises above the straight line");
+    scene.set_twin(false);
+    let mut g = Frame::default();
+    scene.draw(&mut g, 0.5).unwrap();
+    assert_eq!(g.points.len() + 11, f.points.len(), "no twin when it is off");
+    scene.set_twin(true);
     // Slow in and out: ghosts bunch at the ends and spread in the middle.
     let gap = |i: usize| (ghosts[i + 1] - ghosts[i]).length();
     assert!(gap(5) > 3.0 * gap(0), "{} vs {}", gap(5), gap(0));
@@ -158,14 +173,39 @@ fn follow_through_lags_and_is_checked_against_the_reference() {
     scene.draw(&mut a, 1.3).unwrap();
     scene.draw(&mut b, 1.3).unwrap();
     assert_eq!(a.lines, b.lines);
+    // Continuing forward from an earlier time gives the same picture as starting again.
+    let mut fresh = FollowThrough::new();
+    fresh.set(150.0, 60.0, 6.0).unwrap();
+    let mut c = Frame::default();
+    scene.draw(&mut Frame::default(), 3.5).unwrap();
+    scene.draw(&mut Frame::default(), 0.7).unwrap();
+    scene.draw(&mut c, 1.3).unwrap();
+    let mut d = Frame::default();
+    fresh.draw(&mut d, 1.3).unwrap();
+    assert_eq!(c.lines, d.lines);
     scene.set_use_exercise(true);
     scene.set_runner(reference);
     assert!(scene
         .draw(&mut a, 0.5)
         .unwrap()
         .contains("matches the reference"));
+    // Every joint is stepped by the student's code: explicit Euler drifts from the reference
+    // over the loop, the shown antenna differs from the reference ghost drawn beside it.
+    scene.set(150.0, 4.0, 6.0).unwrap();
     scene.set_runner(wrong);
-    assert!(scene.draw(&mut a, 0.5).unwrap().contains("differs"));
+    let mut e = Frame::default();
+    let note = scene.draw(&mut e, 1.5).unwrap();
+    assert!(note.contains("differs") && note.contains("t = 1.5"), "{note}");
+    assert!(e.labels.iter().any(|l| l.text == "reference"));
+    scene.set_runner(|name: &str, args: &[f32]| {
+        if name == "spring_step" {
+            Err(Failure::Panicked("panicked at src/exercises/expressive.rs:9:5:\nboom".into()))
+        } else {
+            direct(name, args)
+        }
+    });
+    let note = scene.draw(&mut e, 1.0).unwrap();
+    assert!(note.contains("panicked at src/exercises/expressive.rs:9:5: boom"), "{note}");
     scene.set_runner(stub);
     assert!(scene
         .draw(&mut a, 0.5)

@@ -8,7 +8,7 @@ use inbetween::figures::raster::{
     frustum_colors as fc, DepthPrecision, Frustum, MeshStorage, Normals, Shading, INDEXED_COLOR,
     SOUP_COLOR, TRUE_NORMAL, WRONG_NORMAL,
 };
-use inbetween::raster;
+use inbetween::raster::{self, Material};
 
 /// A correct student: the reference for every exercise of this lesson.
 fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
@@ -311,13 +311,14 @@ fn normals_figure_reports_the_students_normals() {
 fn shading_figure_draws_the_vectors_and_checks_blinn_phong() {
     let mut scene = Shading::new();
     let mut f = Frame::default();
-    let note = scene.draw(&mut f);
+    let note = scene.draw(&mut f, MeshId(7));
+    assert!(f.meshes[0].unlit && f.meshes[0].vertex_colors && f.meshes[0].mesh == MeshId(7));
     let names: Vec<&str> = f.labels.iter().map(|l| l.text.as_str()).collect();
     assert!(names.contains(&"h") && !names.contains(&"r"), "{names:?}");
     assert!(note.contains("n·l"));
     scene.set_model("phong").unwrap();
     f.clear();
-    scene.draw(&mut f);
+    scene.draw(&mut f, MeshId(7));
     assert!(f.labels.iter().any(|l| l.text == "r"));
     scene.set_use_exercise(true);
     scene.set_runner(reference);
@@ -341,4 +342,45 @@ fn shading_figure_draws_the_vectors_and_checks_blinn_phong() {
         .contains("k_a"));
     assert!(scene.set_model("gouraud").is_err());
     assert!(scene.set_light_deg(f32::NAN, 0.0).is_err());
+}
+
+/// The 3D sphere is shaded by the page's formula for the eye along +z: the brightest vertex is
+/// where the highlight must be (n along h), the vertices facing away get the ambient term only,
+/// and the student's code shades it when asked.
+#[test]
+fn shading_figure_shades_the_sphere_on_the_cpu() {
+    let mut scene = Shading::new();
+    scene.set_light_deg(40.0, 35.0).unwrap();
+    scene.set_material(0.1, 0.6, 0.8, 64.0).unwrap();
+    let (sphere, colors) = scene.shade_sphere().expect("first call shades");
+    let (normals, colors) = (sphere.normals.clone(), colors.to_vec());
+    assert_eq!(colors.len(), normals.len());
+    let l = scene.light();
+    let h = (l + Vec3::Z).normalize();
+    let brightest = (0..colors.len())
+        .max_by(|&a, &b| colors[a].x.total_cmp(&colors[b].x))
+        .unwrap();
+    assert!(normals[brightest].dot(h) > 0.99, "highlight at n = h: {}", normals[brightest]);
+    for (n, c) in normals.iter().zip(&colors) {
+        if n.dot(l) < -0.1 {
+            let ambient = 0.1 * Material::default().color;
+            assert!((c.truncate() - ambient).abs().max_element() < 1e-5, "ambient only: {c}");
+        }
+    }
+    assert!(scene.shade_sphere().is_none(), "nothing changed, nothing to upload");
+    // The student's blinn_phong shades it (a wrong one visibly), a panicking one falls back.
+    scene.set_use_exercise(true);
+    scene.set_runner(wrong);
+    let wrong_colors = scene.shade_sphere().unwrap().1.to_vec();
+    assert!(wrong_colors.iter().zip(&colors).any(|(a, b)| (*a - *b).abs().max_element() > 0.05));
+    scene.set_runner(reference);
+    let same = scene.shade_sphere().unwrap().1.to_vec();
+    assert!(same.iter().zip(&colors).all(|(a, b)| (*a - *b).abs().max_element() < 1e-4));
+    assert!(scene
+        .draw(&mut Frame::default(), MeshId(7))
+        .contains("shaded by your blinn_phong"));
+    scene.set_runner(panics);
+    let fallback = scene.shade_sphere().unwrap().1.to_vec();
+    assert_eq!(fallback, colors);
+    assert!(scene.draw(&mut Frame::default(), MeshId(7)).contains("panicked"));
 }

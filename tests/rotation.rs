@@ -795,3 +795,14 @@ fn reference_matrix_to_quaternion_near_pi_scipy() {
         assert!(same_rotation(got, expected, 1e-6), "{got} vs {expected}");
     }
 }
+
+/// Found by the property test: near a half-turn (w ≈ −1) a quaternion whose norm is off by
+/// rounding used to come back from exp(log q) 4e-6 away (log divided by sinc φ, which amplifies
+/// the norm error by 1 / sin φ).
+#[test]
+fn log_exp_near_a_half_turn_with_rounding_in_the_norm() {
+    let q = Quat::from_xyzw(-0.099_271_34, 0.0, 0.0, -0.995_060_4);
+    assert!(same_rotation(quat_exp(quat_log(q)), q, 2e-6));
+    assert_eq!(quat_log(Quat::IDENTITY), Vec3::ZERO);
+    assert!((quat_log(-Quat::IDENTITY).length() - PI).abs() < 1e-6);
+}

@@ -167,7 +167,7 @@ if (normalsViewer) {
 // Figure 5: shading.
 const shadingViewer = await lesson.figure('#fig-shading');
 if (shadingViewer) {
-  shadingViewer.setCamera(0, 1.5, 0, 7.5, 1.45, 0.25);
+  shadingViewer.setCamera(0, 1.5, 0, 7.5, 0.75, 0.25);
   const scene = new ShadingScene();
   const p = {
     lightAzimuth: 40, lightElevation: 35, ka: 0.15, kd: 0.7, ks: 0.5, shininess: 32,

@@ -29,10 +29,11 @@ if (spacingViewer) {
   spacingViewer.setCamera(0, 0.9, 0, 7.5, 0.0, 0.35);
   const scene = new SpacingScene();
   const timeline = new Timeline(document.getElementById('spacing-timeline'), { duration: 2 * scene.duration });
-  const p = { ease: 'slow in and out', arc: 1.2, ghosts: 12, squash: true, useExercise: false };
+  const p = { ease: 'slow in and out', arc: 1.2, twin: true, ghosts: 12, squash: true, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-spacing .panel'), title: 'Spacing' });
   gui.add(p, 'ease', ['slow in and out', 'linear', 'ease in', 'ease out']).name('spacing');
   gui.add(p, 'arc', 0, 3, 0.05).name('arc height (m)');
+  gui.add(p, 'twin').name('straight line beside');
   gui.add(p, 'ghosts', 2, 60, 1).name('ghosts');
   gui.add(p, 'squash').name('squash and stretch');
   gui.add(p, 'useExercise').name('use my exercise');
@@ -44,6 +45,7 @@ if (spacingViewer) {
   const apply = guarded(gui, p, () => {
     scene.setEase(p.ease);
     scene.setArcHeight(p.arc);
+    scene.setTwin(p.twin);
     scene.setGhosts(p.ghosts);
     scene.setSquash(p.squash);
     scene.setUseExercise(p.useExercise);

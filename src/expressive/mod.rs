@@ -224,6 +224,22 @@ impl Antenna {
 
     /// Moves the base to `base` and advances every other joint by one spring step of `dt`.
     pub fn step(&mut self, base: Vec3, stiffness: f32, damping: f32, dt: f32) {
+        let reference = |x, v, target, k, c, dt| Ok::<_, ()>(spring_step(x, v, target, k, c, dt));
+        // The reference cannot fail.
+        let _ = self.step_with(base, stiffness, damping, dt, reference);
+    }
+
+    /// [`Antenna::step`] with another spring step (a student's, in the lesson): `spring(x, v,
+    /// target, k, c, dt)` returns the new position and velocity. The first error stops the step
+    /// (the joints before it have moved) and is returned.
+    pub fn step_with<E>(
+        &mut self,
+        base: Vec3,
+        stiffness: f32,
+        damping: f32,
+        dt: f32,
+        mut spring: impl FnMut(Vec3, Vec3, Vec3, f32, f32, f32) -> Result<(Vec3, Vec3), E>,
+    ) -> Result<(), E> {
         let dt = dt.max(0.0);
         let old_base = self.positions[0];
         self.positions[0] = base;
@@ -235,19 +251,20 @@ impl Antenna {
         for i in 1..self.positions.len() {
             let below = self.positions[i - 1];
             let target = below + Vec3::Y * self.segment;
-            let (x, v) = spring_step(
+            let (x, v) = spring(
                 self.positions[i],
                 self.velocities[i],
                 target,
                 stiffness,
                 damping,
                 dt,
-            );
+            )?;
             // Keep the segment's length; the velocity keeps only what the constraint allows.
             let fixed = below + (x - below).normalize_or(Vec3::Y) * self.segment;
             self.velocities[i] = if dt > 0.0 { v + (fixed - x) / dt } else { v };
             self.positions[i] = fixed;
         }
+        Ok(())
     }
 
     /// The tip (the last joint).

@@ -67,16 +67,20 @@ pub const CHART: Vec3 = palette::ORANGE;
 /// Where the path of Figure 1 starts and ends.
 const START: Vec3 = Vec3::new(-2.5, 0.3, 0.0);
 const END: Vec3 = Vec3::new(2.5, 0.3, 0.0);
+/// Where Figure 1 puts its straight-line twin, behind the arc: the same keys and spacing.
+const TWIN_OFFSET: Vec3 = Vec3::new(0.0, 0.0, -1.4);
 
 /// The most ghosts Figure 1 draws.
 pub const MAX_GHOSTS: usize = 60;
 
-/// Figure 1: one ball between two keys along a straight line or an arc, with the spacing of an
+/// Figure 1: one ball between two keys along an arc (or a straight line), with the spacing of an
 /// easing curve: ghosts at equal time steps, a spacing chart under the path, and optional squash
-/// and stretch along the motion.
+/// and stretch along the motion. Optionally a twin ball behind it takes the straight line with the
+/// same keys and spacing, so the two paths are compared at the same moment.
 pub struct Spacing {
     ease: Ease,
     arc_height: f32,
+    twin: bool,
     ghosts: usize,
     squash: bool,
     use_exercise: bool,
@@ -96,6 +100,7 @@ impl Spacing {
         Spacing {
             ease: Ease::Smoothstep,
             arc_height: 1.2,
+            twin: true,
             ghosts: 12,
             squash: true,
             use_exercise: false,
@@ -120,6 +125,11 @@ impl Spacing {
     pub fn set_arc_height(&mut self, h: f32) -> Result<(), String> {
         self.arc_height = in_range("arc height", h, 0.0, 3.0)?;
         Ok(())
+    }
+
+    /// Shows the straight-line twin behind the ball.
+    pub fn set_twin(&mut self, on: bool) {
+        self.twin = on;
     }
 
     /// Ghosts at equal time steps, 2 to [`MAX_GHOSTS`].
@@ -203,6 +213,23 @@ impl Spacing {
             "spacing chart",
             CHART,
         );
+        if self.twin {
+            // The straight twin: same keys, same spacing, no arc.
+            let (a, b) = (START + TWIN_OFFSET, END + TWIN_OFFSET);
+            frame.line(a, b, palette::GREY);
+            for k in 0..=self.ghosts {
+                let f = self.spacing(k as f32 / self.ghosts as f32);
+                frame.point(a.lerp(b, f), 0.04, GHOST);
+            }
+            let q = a.lerp(b, self.spacing(t));
+            frame.mesh(MeshId::SPHERE, ball(q, Vec3::X, Vec3::ONE), PLAIN);
+            frame.label(b + Vec3::new(0.3, 0.45, 0.0), "straight line", PLAIN);
+            frame.label(
+                START.lerp(END, 0.5) + Vec3::Y * (self.arc_height + 0.4),
+                "arc",
+                BALL,
+            );
+        }
         let p = self.position(t);
         let (velocity, s) = self.stretch(t);
         let (s, scale) = if self.squash {
@@ -358,17 +385,34 @@ pub const ANTENNA: Vec3 = palette::PURPLE;
 /// Simulation step of Figure 3, seconds.
 pub const DT: f32 = 1.0 / 120.0;
 
+/// The reference antenna drawn beside the student's.
+pub const GHOST_REFERENCE: Vec3 = palette::GREY;
+/// How far (m) the student's antenna tip may drift from the reference's over a whole loop of
+/// steps and still match: float rounding of a different but correct formula accumulates.
+const TIP_TOLERANCE: f32 = 2e-3;
+
 /// Figure 3: a body slides from side to side and stops at each end; an antenna on top, a chain
 /// of joints each pulled by a damped spring towards its rest place above the joint below, lags
 /// behind, swings past when the body stops, and settles. The motion is simulated from time 0 to
-/// the timeline's time on every draw (deterministic: scrubbing gives the same picture).
+/// the timeline's time (deterministic: scrubbing gives the same picture); while time moves
+/// forward the simulation continues from where it was instead of starting again.
+///
+/// With "use my exercise" every joint of the shown antenna is stepped by the student's
+/// `spring_step` (exercise 2b.2) and the reference antenna is drawn beside it as a ghost.
 pub struct FollowThrough {
     stiffness: f32,
     damping: f32,
     joints: usize,
     use_exercise: bool,
     runner: Runner,
-    antenna: Antenna,
+    /// Stepped by the reference `spring_step`.
+    reference: Antenna,
+    /// Stepped by the student's `spring_step` (only with `use_exercise`).
+    yours: Antenna,
+    /// Steps of [`DT`] both antennas have taken; `None` when they must start again.
+    steps_done: Option<usize>,
+    /// Why the student's antenna stopped (a failure note), if it did.
+    problem: Option<String>,
 }
 
 impl Default for FollowThrough {
@@ -384,30 +428,42 @@ impl FollowThrough {
     const SEGMENT: f32 = 0.22;
 
     pub fn new() -> Self {
+        let antenna = Antenna::new(Self::base(0.0), 6, Self::SEGMENT);
         FollowThrough {
             stiffness: 150.0,
             damping: 4.0,
             joints: 6,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
-            antenna: Antenna::new(Vec3::ZERO, 6, Self::SEGMENT),
+            reference: antenna.clone(),
+            yours: antenna,
+            steps_done: None,
+            problem: None,
         }
     }
 
     /// Stiffness k (1/s², 10 to 600), damping c (1/s, 0 to 60), joints (2 to 20).
     pub fn set(&mut self, stiffness: f32, damping: f32, joints: f32) -> Result<(), String> {
-        self.stiffness = in_range("stiffness", stiffness, 10.0, 600.0)?;
-        self.damping = in_range("damping", damping, 0.0, 60.0)?;
-        self.joints = in_range("joints", joints, 2.0, 20.0)?.round() as usize;
+        let stiffness = in_range("stiffness", stiffness, 10.0, 600.0)?;
+        let damping = in_range("damping", damping, 0.0, 60.0)?;
+        let joints = in_range("joints", joints, 2.0, 20.0)?.round() as usize;
+        if (stiffness, damping, joints) != (self.stiffness, self.damping, self.joints) {
+            (self.stiffness, self.damping, self.joints) = (stiffness, damping, joints);
+            self.steps_done = None;
+        }
         Ok(())
     }
 
     pub fn set_use_exercise(&mut self, on: bool) {
-        self.use_exercise = on;
+        if on != self.use_exercise {
+            self.use_exercise = on;
+            self.steps_done = None;
+        }
     }
 
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.steps_done = None;
     }
 
     /// The base of the antenna (top of the body) at `time_sec`: eased moves with holds.
@@ -423,15 +479,50 @@ impl FollowThrough {
         Vec3::new(x, 0.8, 0.0)
     }
 
-    /// Simulates from the start (body at rest at the left) to `time_sec` in steps of [`DT`].
-    fn simulate(&mut self, time_sec: f32) {
-        // Start from the end of a previous loop at rest: a straight antenna over the left end.
-        self.antenna = Antenna::new(Self::base(0.0), self.joints, Self::SEGMENT);
-        let steps = (time_sec / DT).round() as usize;
-        for k in 1..=steps {
-            self.antenna
-                .step(Self::base(k as f32 * DT), self.stiffness, self.damping, DT);
+    /// The antenna the figure shows: the student's while it runs, else the reference.
+    pub fn shown(&self) -> &Antenna {
+        if self.use_exercise && self.problem.is_none() {
+            &self.yours
+        } else {
+            &self.reference
         }
+    }
+
+    /// Simulates from the start (body at rest at the left) to `time_sec` in steps of [`DT`],
+    /// continuing from the last call when time moved forward.
+    fn simulate(&mut self, time_sec: f32) {
+        let steps = (time_sec / DT).round() as usize;
+        if self.steps_done.is_none_or(|done| done > steps) {
+            // Start from the end of a previous loop at rest: a straight antenna over the left end.
+            self.reference = Antenna::new(Self::base(0.0), self.joints, Self::SEGMENT);
+            self.yours = self.reference.clone();
+            self.problem = None;
+            self.steps_done = Some(0);
+        }
+        let (k, c, runner) = (self.stiffness, self.damping, self.runner);
+        for step in self.steps_done.unwrap_or(0) + 1..=steps {
+            let base = Self::base(step as f32 * DT);
+            self.reference.step(base, k, c, DT);
+            if self.use_exercise && self.problem.is_none() {
+                let student = |x, v, target, k, c, dt| {
+                    let (x, v) = run::spring_step(runner, x, v, target, k, c, dt)
+                        .map_err(|f| failure_note("exercise 2b.2 spring_step", FILE, &f))?;
+                    if x.is_finite() && v.is_finite() {
+                        Ok((x, v))
+                    } else {
+                        Err(format!(
+                            "Your spring_step returned a non-finite value at t = {} s: x = {x}, \
+                             v = {v}. The figure shows the reference.",
+                            format_number(step as f32 * DT)
+                        ))
+                    }
+                };
+                if let Err(note) = self.yours.step_with(base, k, c, DT, student) {
+                    self.problem = Some(note);
+                }
+            }
+        }
+        self.steps_done = Some(steps);
     }
 
     /// `(t, base x, tip x)` over one loop, metres.
@@ -464,16 +555,27 @@ impl FollowThrough {
         let t = in_range("time", time_sec, 0.0, Self::DURATION)?;
         self.simulate(t);
         frame.grid(12, 0.5);
-        let base = self.antenna.positions[0];
+        let antenna = self.shown();
+        let base = antenna.positions[0];
         let body = Mat4::from_translation(base - Vec3::Y * 0.4)
             * Mat4::from_scale(Vec3::new(0.5, 0.4, 0.4));
         frame.mesh(MeshId::CUBE, body, BODY);
-        frame.polyline(&self.antenna.positions, ANTENNA);
-        for p in &self.antenna.positions[1..] {
+        frame.polyline(&antenna.positions, ANTENNA);
+        for p in &antenna.positions[1..] {
             frame.point(*p, 0.05, ANTENNA);
         }
-        frame.point(self.antenna.tip(), 0.09, palette::PINK);
-        frame.label(self.antenna.tip() + Vec3::Y * 0.2, "tip", palette::PINK);
+        frame.point(antenna.tip(), 0.09, palette::PINK);
+        frame.label(antenna.tip() + Vec3::Y * 0.2, "tip", palette::PINK);
+        let running_yours = self.use_exercise && self.problem.is_none();
+        if running_yours {
+            // The reference as a ghost beside the student's antenna.
+            frame.polyline(&self.reference.positions, GHOST_REFERENCE);
+            frame.label(
+                self.reference.tip() + Vec3::new(0.0, 0.2, 0.0),
+                "reference",
+                GHOST_REFERENCE,
+            );
+        }
         let critical = 2.0 * self.stiffness.sqrt();
         let mut note = format!(
             "Damping c = {} (critical: 2√k = {}): {}. The tip is {} m behind the base.",
@@ -484,7 +586,7 @@ impl FollowThrough {
             } else {
                 "over-damped, it creeps back without swinging"
             },
-            format_number((base.x - self.antenna.tip().x).abs()),
+            format_number((base.x - antenna.tip().x).abs()),
         );
         if self.use_exercise {
             note += " ";
@@ -493,27 +595,23 @@ impl FollowThrough {
         Ok(note)
     }
 
-    /// Compares the student's `spring_step` (exercise 2b.2) with the reference on the antenna's
-    /// first free joint, one step from its current state.
+    /// What the student's `spring_step` (exercise 2b.2) did: why it stopped, or how far its
+    /// antenna's tip is from the reference's after every joint was stepped by it since time 0.
     pub fn exercise_note(&self) -> String {
-        let (x, v) = (self.antenna.positions[1], self.antenna.velocities[1]);
-        let target = self.antenna.positions[0] + Vec3::Y * Self::SEGMENT;
-        let (k, c) = (self.stiffness, self.damping);
-        match run::spring_step(self.runner, x, v, target, k, c, DT) {
-            Err(f) => failure_note("exercise 2b.2 spring_step", FILE, &f),
-            Ok((yx, yv)) => {
-                let (rx, rv) = expressive::spring_step(x, v, target, k, c, DT);
-                let yours = [yx.to_array(), yv.to_array()].concat();
-                let reference = [rx.to_array(), rv.to_array()].concat();
-                compare_note(
-                    "spring_step",
-                    "joint 1 of the antenna, now",
-                    &yours,
-                    &reference,
-                    TOLERANCE,
-                )
-                .1
-            }
+        if let Some(problem) = &self.problem {
+            return problem.clone();
         }
+        let time = format!(
+            "the tip at t = {} s, every joint stepped by your code since t = 0",
+            format_number(self.steps_done.unwrap_or(0) as f32 * DT)
+        );
+        compare_note(
+            "spring_step",
+            &time,
+            &self.yours.tip().to_array(),
+            &self.reference.tip().to_array(),
+            TIP_TOLERANCE,
+        )
+        .1
     }
 }

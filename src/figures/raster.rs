@@ -946,6 +946,11 @@ pub mod shading_colors {
 
 /// Figure 5: a sphere lit by one light; at one fragment the vectors n, l, v and r (Phong) or h
 /// (Blinn-Phong); beside it, CPU images of each term and of both models' totals.
+///
+/// The 3D sphere is shaded on the CPU by the lesson's own model (or, with "use my exercise" and
+/// Blinn-Phong, by the student's `blinn_phong` at every vertex) and drawn unlit, so what it shows
+/// is exactly the formula on the page, for the same eye as the images: far along +z, where `v`
+/// points.
 pub struct Shading {
     light: Vec3,
     material: Material,
@@ -953,6 +958,13 @@ pub struct Shading {
     fragment: Vec3,
     use_exercise: bool,
     runner: Runner,
+    sphere: MeshData,
+    /// One linear RGBA colour per vertex of `sphere`.
+    colors: Vec<glam::Vec4>,
+    /// Whether `colors` must be computed again.
+    stale: bool,
+    /// Why the student's code could not shade the sphere, if it could not.
+    sphere_problem: Option<String>,
 }
 
 impl Default for Shading {
@@ -969,6 +981,10 @@ fn direction(azimuth_deg: f32, elevation_deg: f32) -> Vec3 {
 
 /// Where the sphere of Figure 5 stands.
 const SPHERE_CENTRE: Vec3 = Vec3::new(0.0, 1.3, 0.0);
+/// The tessellation of Figure 5's sphere: fine enough that per-vertex shading shows a round
+/// highlight at shininess 64.
+const SPHERE_SEGMENTS: u32 = 64;
+const SPHERE_RINGS: u32 = 32;
 
 impl Shading {
     pub fn new() -> Self {
@@ -979,6 +995,10 @@ impl Shading {
             fragment: direction(0.0, -15.0),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            sphere: crate::mesh::uv_sphere(1.0, SPHERE_SEGMENTS, SPHERE_RINGS),
+            colors: Vec::new(),
+            stale: true,
+            sphere_problem: None,
         }
     }
 
@@ -988,12 +1008,14 @@ impl Shading {
             finite("light azimuth", azimuth)?,
             in_range("light elevation", elevation, -90.0, 90.0)?,
         );
+        self.stale = true;
         Ok(())
     }
 
     /// The light where the reader points on an image, `(u, v) ∈ [0, 1]²`.
     pub fn set_light_from_image(&mut self, u: f32, v: f32) -> Result<(), String> {
         self.light = light_from_image(in_range("u", u, 0.0, 1.0)?, in_range("v", v, 0.0, 1.0)?);
+        self.stale = true;
         Ok(())
     }
 
@@ -1020,6 +1042,7 @@ impl Shading {
         self.material.diffuse = in_range("diffuse k_d", kd, 0.0, 1.0)?;
         self.material.specular = in_range("specular k_s", ks, 0.0, 1.0)?;
         self.material.shininess = in_range("shininess", shininess, 1.0, 256.0)?;
+        self.stale = true;
         Ok(())
     }
 
@@ -1034,6 +1057,7 @@ impl Shading {
                 ))
             }
         };
+        self.stale = true;
         Ok(())
     }
 
@@ -1048,10 +1072,61 @@ impl Shading {
 
     pub fn set_use_exercise(&mut self, on: bool) {
         self.use_exercise = on;
+        self.stale = true;
     }
 
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.stale = true;
+    }
+
+    /// The unit sphere the 3D figure draws (create its GPU mesh from this once).
+    pub fn sphere(&self) -> &MeshData {
+        &self.sphere
+    }
+
+    /// Shades every vertex of [`Shading::sphere`] if anything changed since the last call;
+    /// returns the sphere and its colours when they changed (to upload), `None` when they did
+    /// not.
+    pub fn shade_sphere(&mut self) -> Option<(&MeshData, &[glam::Vec4])> {
+        if !self.stale {
+            return None;
+        }
+        self.stale = false;
+        self.sphere_problem = None;
+        let (l, v, m) = (self.light, Self::VIEW, self.material);
+        let students = self.use_exercise && self.model == ShadingModel::BlinnPhong;
+        let weights = [m.ambient, m.diffuse, m.specular];
+        self.colors.clear();
+        for &n in &self.sphere.normals {
+            let mut color = raster::shade(n, l, v, &m, self.model).total();
+            if students && self.sphere_problem.is_none() {
+                match run::blinn_phong(self.runner, n, l, v, m.color, weights, m.shininess) {
+                    Ok(c) if c.is_finite() => color = c,
+                    Ok(c) => {
+                        self.sphere_problem = Some(format!(
+                            "Your blinn_phong returned a non-finite colour ({c}) at n = {n}; the \
+                             sphere uses the reference."
+                        ))
+                    }
+                    Err(f) => {
+                        self.sphere_problem =
+                            Some(failure_note("exercise 0.3 blinn_phong", FILE, &f))
+                    }
+                }
+            }
+            self.colors.push(color.extend(1.0));
+        }
+        if self.sphere_problem.is_some() {
+            // Start again with the reference everywhere: no patchwork of both.
+            self.colors.clear();
+            self.colors.extend(self.sphere.normals.iter().map(|&n| {
+                raster::shade(n, l, v, &m, self.model)
+                    .total()
+                    .extend(1.0)
+            }));
+        }
+        Some((&self.sphere, &self.colors))
     }
 
     /// An image of one term: "ambient", "diffuse", "specular" (of the chosen model), "phong" or
@@ -1077,16 +1152,13 @@ impl Shading {
     /// The view direction of the fragment: the images' eye is far along +z.
     const VIEW: Vec3 = Vec3::Z;
 
-    /// Draws the sphere, the light and the vectors at the fragment; returns the note.
-    pub fn draw(&self, frame: &mut Frame) -> String {
+    /// Draws the sphere (`sphere`: the GPU mesh made from [`Shading::sphere`], coloured by
+    /// [`Shading::shade_sphere`]), the light and the vectors at the fragment; returns the note.
+    pub fn draw(&self, frame: &mut Frame, sphere: MeshId) -> String {
         use shading_colors::*;
         let (n, l, v) = (self.fragment, self.light, Self::VIEW);
         frame.grid(12, 0.5);
-        frame.mesh(
-            MeshId::SPHERE,
-            Mat4::from_translation(SPHERE_CENTRE),
-            self.material.color,
-        );
+        frame.mesh_unlit_vertex_colors(sphere, Mat4::from_translation(SPHERE_CENTRE));
         let p = SPHERE_CENTRE + n;
         let len = 1.3;
         frame.arrow(p, p + n * len, N, 0.1);
@@ -1129,6 +1201,16 @@ impl Shading {
         if self.use_exercise {
             note += " ";
             note += &self.exercise_note();
+            note += match (&self.sphere_problem, self.model) {
+                (Some(problem), _) => format!(" {problem}"),
+                (None, ShadingModel::BlinnPhong) => {
+                    " The sphere is shaded by your blinn_phong at every vertex.".to_string()
+                }
+                (None, ShadingModel::Phong) => {
+                    " The sphere shows the reference Phong (your exercise is Blinn-Phong).".to_string()
+                }
+            }
+            .as_str();
         }
         note
     }

@@ -610,11 +610,12 @@ impl Renderer {
                 model: draw.model.to_cols_array(),
                 normal_matrix: draw.model.inverse().transpose().to_cols_array(),
                 color: draw.color.to_array(),
-                flags: if draw.vertex_colors {
-                    [1.0, 0.0, 0.0, 0.0]
-                } else {
-                    [0.0; 4]
-                },
+                flags: [
+                    if draw.vertex_colors { 1.0 } else { 0.0 },
+                    if draw.unlit { 1.0 } else { 0.0 },
+                    0.0,
+                    0.0,
+                ],
             };
             self.scratch_objects
                 .extend_from_slice(bytemuck::bytes_of(&object));

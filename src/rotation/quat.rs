@@ -209,17 +209,20 @@ fn pick_arc(a: Quat, b: Quat, arc: Arc) -> Quat {
 /// ```
 /// `φ` is half the rotation angle, so the rotation vector is `2 log q` (for `w ≥ 0`). `q` and `−q`
 /// have different logs (`φ` and `π − φ` about opposite axes); no sign is chosen here. Near the
-/// identity `φ/‖s‖` is evaluated by a series. Expects `‖q‖ = 1`.
+/// direction `n` is `s / ‖s‖` and the length `φ` comes from `atan2`, so a `q` whose norm is off
+/// by rounding still gives the log of the unit quaternion next to it (using `s / sinc φ` instead
+/// would scale that error by `1 / sin φ` near `φ = π`). Expects `‖q‖ ≈ 1`.
 pub fn quat_log(q: Quat) -> Vec3 {
     let s = Vec3::new(q.x, q.y, q.z);
     let sin_phi = s.length();
     let phi = sin_phi.atan2(q.w);
-    // φ / sin φ = 1 / sinc(φ), finite everywhere except φ = π (q = −1: log is any π n; pick 0).
-    let sn = sinc(phi);
-    if sn < 1e-7 {
-        return Vec3::new(phi, 0.0, 0.0);
+    if sin_phi > 0.0 {
+        // φ / ‖s‖ → 1 / w near the identity: no series needed.
+        s * (phi / sin_phi)
+    } else {
+        // q = ±1: the identity rotation (log 1 = 0; log −1 is any π n, pick the x axis).
+        Vec3::new(phi, 0.0, 0.0)
     }
-    s / sn
 }
 
 /// Exponential of a pure quaternion `(v, 0)`: the inverse of [`quat_log`].

@@ -32,6 +32,12 @@ impl SpacingScene {
         self.scene.set_arc_height(h).map_err(js)
     }
 
+    /// Shows the straight-line twin behind the ball.
+    #[wasm_bindgen(js_name = setTwin)]
+    pub fn set_twin(&mut self, on: bool) {
+        self.scene.set_twin(on);
+    }
+
     /// Ghosts at equal time steps, 2 to 60.
     #[wasm_bindgen(js_name = setGhosts)]
     pub fn set_ghosts(&mut self, n: f32) -> Result<(), JsError> {

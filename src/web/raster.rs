@@ -246,6 +246,8 @@ impl Default for NormalsScene {
 #[wasm_bindgen]
 pub struct ShadingScene {
     scene: Shading,
+    /// The CPU-shaded sphere's GPU mesh, created on the first draw.
+    sphere: Option<MeshId>,
 }
 
 #[wasm_bindgen]
@@ -254,7 +256,10 @@ impl ShadingScene {
     pub fn new() -> ShadingScene {
         let mut scene = Shading::new();
         scene.set_runner(super::sandbox::run);
-        ShadingScene { scene }
+        ShadingScene {
+            scene,
+            sphere: None,
+        }
     }
 
     /// The light's azimuth and elevation, degrees.
@@ -314,7 +319,18 @@ impl ShadingScene {
     /// Draws the sphere (lit from the scene's light) and the vectors at the fragment.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         viewer.renderer.light_dir = self.scene.light();
-        let note = self.scene.draw(&mut viewer.renderer.frame);
+        let id = *self.sphere.get_or_insert_with(|| {
+            viewer
+                .renderer
+                .create_mesh(&viewer.gpu, self.scene.sphere(), None)
+        });
+        if let Some((sphere, colors)) = self.scene.shade_sphere() {
+            viewer
+                .renderer
+                .update_mesh_with_colors(&viewer.gpu, id, &sphere.positions, &sphere.normals, colors)
+                .map_err(|e| JsError::new(&e))?;
+        }
+        let note = self.scene.draw(&mut viewer.renderer.frame, id);
         viewer.present()?;
         Ok(note)
     }
