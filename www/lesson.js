@@ -310,6 +310,14 @@ async function createFigure(selector) {
   };
   new ResizeObserver(resize).observe(canvas);
   resize();
+  // Off-screen figures keep their frames instead of rendering them (see Viewer::set_visible).
+  new IntersectionObserver((entries) => {
+    try {
+      for (const entry of entries) viewer.setVisible(entry.isIntersecting);
+    } catch (e) {
+      showError(e);
+    }
+  }, { rootMargin: '100px' }).observe(canvas);
   state.figures.push({ selector, backend: viewer.backend, viewer, placeLabels: labelLayer(canvas, viewer) });
   return viewer;
 }

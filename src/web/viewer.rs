@@ -18,6 +18,14 @@ pub struct Viewer {
     labels: Vec<crate::draw::ScreenLabel>,
     /// [`crate::draw::Frame::fingerprint`] of the last presented frame.
     last_fingerprint: u64,
+    /// Whether the canvas is on screen (the page tells, from an `IntersectionObserver`). Off
+    /// screen, [`Viewer::present`] keeps the frame instead of rendering it: a page with ten
+    /// figures then renders the one or two the reader sees, not all ten, every frame.
+    visible: bool,
+    /// The last frame presented while off screen, drawn when the canvas comes back.
+    hidden: crate::draw::Frame,
+    /// Whether `hidden` holds a frame not drawn yet.
+    pending: bool,
 }
 
 #[wasm_bindgen]
@@ -37,6 +45,9 @@ impl Viewer {
             css_size: (1.0, 1.0),
             labels: Vec::new(),
             last_fingerprint: 0,
+            visible: true,
+            hidden: crate::draw::Frame::default(),
+            pending: false,
         })
     }
 
@@ -126,9 +137,31 @@ impl Viewer {
         let view_proj = self.camera.projection(w / h) * self.camera.view();
         self.labels = crate::draw::project_labels(&self.renderer.frame.labels, view_proj, w, h);
         self.last_fingerprint = self.renderer.frame.fingerprint();
+        if !self.visible {
+            // Keep it for when the canvas comes back (swapping reuses both frames' buffers).
+            std::mem::swap(&mut self.renderer.frame, &mut self.hidden);
+            self.renderer.frame.clear();
+            self.pending = true;
+            return Ok(());
+        }
+        self.pending = false;
         self.renderer
             .render(&self.gpu, &self.camera)
             .map_err(|e| JsError::new(&e))
+    }
+
+    /// Tells the figure whether its canvas is on screen; coming back, it draws the frame it kept.
+    #[wasm_bindgen(js_name = setVisible)]
+    pub fn set_visible(&mut self, on: bool) -> Result<(), JsError> {
+        self.visible = on;
+        if on && self.pending {
+            std::mem::swap(&mut self.renderer.frame, &mut self.hidden);
+            self.pending = false;
+            self.renderer
+                .render(&self.gpu, &self.camera)
+                .map_err(|e| JsError::new(&e))?;
+        }
+        Ok(())
     }
 }
 
