@@ -39,6 +39,7 @@ pub mod exercises;
 pub mod expressive;
 pub mod figures;
 pub mod fixtures;
+pub mod gltf_import;
 pub mod ik;
 pub mod mesh;
 pub mod noise;

@@ -59,14 +59,27 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
     for (k, b) in twin.iter().enumerate() {
         let covered = (b.x - twin[0].x) / (twin[10].x - twin[0].x);
         let spacing = scene.spacing(k as f32 / 10.0);
-        assert!((covered - spacing).abs() < 1e-4, "the same spacing: {covered} vs {spacing}");
-        assert!((b.y - twin[0].y).abs() < 1e-5, "the twin's path is straight");
+        assert!(
+            (covered - spacing).abs() < 1e-4,
+            "the same spacing: {covered} vs {spacing}"
+        );
+        assert!(
+            (b.y - twin[0].y).abs() < 1e-5,
+            "the twin's path is straight"
+        );
     }
-    assert!(ghosts[5].y > twin[5].y + 1.0, "the arc rises above the straight line");
+    assert!(
+        ghosts[5].y > twin[5].y + 1.0,
+        "the arc rises above the straight line"
+    );
     scene.set_twin(false);
     let mut g = Frame::default();
     scene.draw(&mut g, 0.5).unwrap();
-    assert_eq!(g.points.len() + 11, f.points.len(), "no twin when it is off");
+    assert_eq!(
+        g.points.len() + 11,
+        f.points.len(),
+        "no twin when it is off"
+    );
     scene.set_twin(true);
     // Slow in and out: ghosts bunch at the ends and spread in the middle.
     let gap = |i: usize| (ghosts[i + 1] - ghosts[i]).length();
@@ -195,17 +208,25 @@ fn follow_through_lags_and_is_checked_against_the_reference() {
     scene.set_runner(wrong);
     let mut e = Frame::default();
     let note = scene.draw(&mut e, 1.5).unwrap();
-    assert!(note.contains("differs") && note.contains("t = 1.5"), "{note}");
+    assert!(
+        note.contains("differs") && note.contains("t = 1.5"),
+        "{note}"
+    );
     assert!(e.labels.iter().any(|l| l.text == "reference"));
     scene.set_runner(|name: &str, args: &[f32]| {
         if name == "spring_step" {
-            Err(Failure::Panicked("panicked at src/exercises/expressive.rs:9:5:\nboom".into()))
+            Err(Failure::Panicked(
+                "panicked at src/exercises/expressive.rs:9:5:\nboom".into(),
+            ))
         } else {
             direct(name, args)
         }
     });
     let note = scene.draw(&mut e, 1.0).unwrap();
-    assert!(note.contains("panicked at src/exercises/expressive.rs:9:5: boom"), "{note}");
+    assert!(
+        note.contains("panicked at src/exercises/expressive.rs:9:5: boom"),
+        "{note}"
+    );
     scene.set_runner(stub);
     assert!(scene
         .draw(&mut a, 0.5)

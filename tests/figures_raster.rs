@@ -360,27 +360,45 @@ fn shading_figure_shades_the_sphere_on_the_cpu() {
     let brightest = (0..colors.len())
         .max_by(|&a, &b| colors[a].x.total_cmp(&colors[b].x))
         .unwrap();
-    assert!(normals[brightest].dot(h) > 0.99, "highlight at n = h: {}", normals[brightest]);
+    assert!(
+        normals[brightest].dot(h) > 0.99,
+        "highlight at n = h: {}",
+        normals[brightest]
+    );
     for (n, c) in normals.iter().zip(&colors) {
         if n.dot(l) < -0.1 {
             let ambient = 0.1 * Material::default().color;
-            assert!((c.truncate() - ambient).abs().max_element() < 1e-5, "ambient only: {c}");
+            assert!(
+                (c.truncate() - ambient).abs().max_element() < 1e-5,
+                "ambient only: {c}"
+            );
         }
     }
-    assert!(scene.shade_sphere().is_none(), "nothing changed, nothing to upload");
+    assert!(
+        scene.shade_sphere().is_none(),
+        "nothing changed, nothing to upload"
+    );
     // The student's blinn_phong shades it (a wrong one visibly), a panicking one falls back.
     scene.set_use_exercise(true);
     scene.set_runner(wrong);
     let wrong_colors = scene.shade_sphere().unwrap().1.to_vec();
-    assert!(wrong_colors.iter().zip(&colors).any(|(a, b)| (*a - *b).abs().max_element() > 0.05));
+    assert!(wrong_colors
+        .iter()
+        .zip(&colors)
+        .any(|(a, b)| (*a - *b).abs().max_element() > 0.05));
     scene.set_runner(reference);
     let same = scene.shade_sphere().unwrap().1.to_vec();
-    assert!(same.iter().zip(&colors).all(|(a, b)| (*a - *b).abs().max_element() < 1e-4));
+    assert!(same
+        .iter()
+        .zip(&colors)
+        .all(|(a, b)| (*a - *b).abs().max_element() < 1e-4));
     assert!(scene
         .draw(&mut Frame::default(), MeshId(7))
         .contains("shaded by your blinn_phong"));
     scene.set_runner(panics);
     let fallback = scene.shade_sphere().unwrap().1.to_vec();
     assert_eq!(fallback, colors);
-    assert!(scene.draw(&mut Frame::default(), MeshId(7)).contains("panicked"));
+    assert!(scene
+        .draw(&mut Frame::default(), MeshId(7))
+        .contains("panicked"));
 }

@@ -1120,11 +1120,12 @@ impl Shading {
         if self.sphere_problem.is_some() {
             // Start again with the reference everywhere: no patchwork of both.
             self.colors.clear();
-            self.colors.extend(self.sphere.normals.iter().map(|&n| {
-                raster::shade(n, l, v, &m, self.model)
-                    .total()
-                    .extend(1.0)
-            }));
+            self.colors.extend(
+                self.sphere
+                    .normals
+                    .iter()
+                    .map(|&n| raster::shade(n, l, v, &m, self.model).total().extend(1.0)),
+            );
         }
         Some((&self.sphere, &self.colors))
     }
@@ -1207,7 +1208,8 @@ impl Shading {
                     " The sphere is shaded by your blinn_phong at every vertex.".to_string()
                 }
                 (None, ShadingModel::Phong) => {
-                    " The sphere shows the reference Phong (your exercise is Blinn-Phong).".to_string()
+                    " The sphere shows the reference Phong (your exercise is Blinn-Phong)."
+                        .to_string()
                 }
             }
             .as_str();

@@ -327,7 +327,13 @@ impl ShadingScene {
         if let Some((sphere, colors)) = self.scene.shade_sphere() {
             viewer
                 .renderer
-                .update_mesh_with_colors(&viewer.gpu, id, &sphere.positions, &sphere.normals, colors)
+                .update_mesh_with_colors(
+                    &viewer.gpu,
+                    id,
+                    &sphere.positions,
+                    &sphere.normals,
+                    colors,
+                )
                 .map_err(|e| JsError::new(&e))?;
         }
         let note = self.scene.draw(&mut viewer.renderer.frame, id);

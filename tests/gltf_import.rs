@@ -1,0 +1,291 @@
+//! The glTF importer (src/gltf_import.rs): the Khronos sample characters against three.js's joint
+//! world matrices (tests/data/gltf_three.json, made by scripts/reference/gltf_three.mjs), bad
+//! files, and a fuzz property (no input makes it panic).
+//!
+//! The sample files are not committed (../shared/assets/gltf, or $INBETWEEN_GLTF_ASSETS).
+//! `scripts/test` sets INBETWEEN_REQUIRE_ASSETS=1 when they are present, so a missing file
+//! fails there instead of being passed over.
+
+use glam::{Affine3A, Mat4};
+use inbetween::gltf_import::{import, ImportError};
+use inbetween::skeleton::{Clip, ClipCursor};
+use proptest::prelude::*;
+use std::path::PathBuf;
+
+fn assets() -> Option<PathBuf> {
+    let dir = std::env::var_os("INBETWEEN_GLTF_ASSETS")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/assets/gltf"));
+    if dir.join("RiggedSimple.gltf").exists() {
+        Some(dir)
+    } else {
+        assert!(
+            std::env::var_os("INBETWEEN_REQUIRE_ASSETS").is_none(),
+            "the glTF sample characters are not in {}",
+            dir.display()
+        );
+        eprintln!(
+            "glTF sample characters not found in {}: sample checks not run",
+            dir.display()
+        );
+        None
+    }
+}
+
+fn sample(name: &str) -> Option<Vec<u8>> {
+    assets().map(|dir| std::fs::read(dir.join(format!("{name}.gltf"))).expect("readable"))
+}
+
+/// A small valid skinned file of our own (two joints, one triangle, one animation), for the bad
+/// input tests: it does not depend on the samples.
+fn tiny() -> String {
+    use base64::Engine;
+    let mut bin: Vec<u8> = Vec::new();
+    let f = |bin: &mut Vec<u8>, xs: &[f32]| xs.iter().for_each(|x| bin.extend(x.to_le_bytes()));
+    // 0: positions (3 × vec3) at 0
+    f(&mut bin, &[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
+    // 1: joints (3 × u8vec4) at 36
+    bin.extend([0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0]);
+    // 2: weights (3 × vec4) at 48
+    f(
+        &mut bin,
+        &[1.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
+    );
+    // 3: inverse binds (2 × mat4) at 96
+    f(&mut bin, &Mat4::IDENTITY.to_cols_array());
+    f(
+        &mut bin,
+        &Mat4::from_translation(glam::Vec3::new(0.0, -1.0, 0.0)).to_cols_array(),
+    );
+    // 4: times (2) at 224, 5: rotations (2 × vec4) at 232
+    f(&mut bin, &[0.0, 1.0]);
+    let h = std::f32::consts::FRAC_1_SQRT_2;
+    f(&mut bin, &[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, h, h]);
+    let uri = format!(
+        "data:application/octet-stream;base64,{}",
+        base64::engine::general_purpose::STANDARD.encode(&bin)
+    );
+    format!(
+        r#"{{"asset":{{"version":"2.0"}},"scene":0,"scenes":[{{"nodes":[0,1]}}],
+"nodes":[{{"mesh":0,"skin":0}},{{"name":"hip","children":[2]}},{{"name":"knee","translation":[0,1,0]}}],
+"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0,"JOINTS_0":1,"WEIGHTS_0":2}}}}]}}],
+"skins":[{{"joints":[2,1],"inverseBindMatrices":3}}],
+"animations":[{{"name":"bend","channels":[{{"sampler":0,"target":{{"node":2,"path":"rotation"}}}}],
+  "samplers":[{{"input":4,"output":5,"interpolation":"LINEAR"}}]}}],
+"buffers":[{{"byteLength":{len},"uri":"{uri}"}}],
+"bufferViews":[{{"buffer":0,"byteOffset":0,"byteLength":36}},{{"buffer":0,"byteOffset":36,"byteLength":12}},
+  {{"buffer":0,"byteOffset":48,"byteLength":48}},{{"buffer":0,"byteOffset":96,"byteLength":128}},
+  {{"buffer":0,"byteOffset":224,"byteLength":8}},{{"buffer":0,"byteOffset":232,"byteLength":32}}],
+"accessors":[{{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}},
+  {{"bufferView":1,"componentType":5121,"count":3,"type":"VEC4"}},
+  {{"bufferView":2,"componentType":5126,"count":3,"type":"VEC4"}},
+  {{"bufferView":3,"componentType":5126,"count":2,"type":"MAT4"}},
+  {{"bufferView":4,"componentType":5126,"count":2,"type":"SCALAR","min":[0],"max":[1]}},
+  {{"bufferView":5,"componentType":5126,"count":2,"type":"VEC4"}}]}}"#,
+        len = bin.len()
+    )
+}
+
+fn model_matrices(
+    imported: &inbetween::gltf_import::Imported,
+    pose: &inbetween::skeleton::Pose,
+) -> Vec<Mat4> {
+    let mut model = vec![Affine3A::IDENTITY; imported.skeleton.len()];
+    imported.skeleton.model_matrices(pose, &mut model).unwrap();
+    model
+        .iter()
+        .map(|m| imported.root_transform * Mat4::from(*m))
+        .collect()
+}
+
+fn assert_matrices_close(ours: Mat4, theirs: &[f64], what: &str) {
+    let theirs: Vec<f32> = theirs.iter().map(|&x| x as f32).collect();
+    let theirs = Mat4::from_cols_slice(&theirs);
+    let scale = theirs
+        .to_cols_array()
+        .iter()
+        .fold(1.0f32, |m, x| m.max(x.abs()));
+    let error = (ours - theirs)
+        .to_cols_array()
+        .iter()
+        .fold(0.0f32, |m, x| m.max(x.abs()));
+    assert!(
+        error <= 2e-4 * scale,
+        "{what}: off by {error}\nours   {ours}\nthree  {theirs}"
+    );
+}
+
+#[test]
+fn sample_characters_match_threejs_joint_world_matrices() {
+    let reference: serde_json::Value =
+        serde_json::from_str(include_str!("data/gltf_three.json")).unwrap();
+    assert!(reference["tool"]
+        .as_str()
+        .unwrap()
+        .starts_with("three.js r170"));
+    for name in ["RiggedSimple", "RiggedFigure", "CesiumMan"] {
+        let Some(bytes) = sample(name) else { return };
+        let imported = import(&bytes).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let r = &reference["models"][name];
+        let nodes: Vec<usize> = r["nodes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|n| n.as_u64().unwrap() as usize)
+            .collect();
+        assert_eq!(imported.skeleton.len(), nodes.len(), "{name}: joint count");
+        let ours_of = |node: usize| imported.nodes.iter().position(|&n| n == node).unwrap();
+        let matrix = |v: &serde_json::Value| -> Vec<f64> {
+            v.as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .collect()
+        };
+        // The rest pose (the nodes' own transforms).
+        let rest = model_matrices(&imported, &imported.skeleton.rest_pose());
+        for (k, &node) in nodes.iter().enumerate() {
+            assert_matrices_close(
+                rest[ours_of(node)],
+                &matrix(&r["rest"][k]),
+                &format!("{name} rest, node {node}"),
+            );
+        }
+        // The first animation at the reference's times.
+        // Both forms of the clip: the editable one and the runtime one.
+        let raw = &imported.clips[0];
+        let clip = Clip::from_raw(raw, &imported.skeleton).unwrap();
+        let mut cursor = ClipCursor::new();
+        let mut cursors = raw.cursors();
+        let mut pose = imported.skeleton.rest_pose();
+        let mut raw_pose = imported.skeleton.rest_pose();
+        for (i, t) in r["times"].as_array().unwrap().iter().enumerate() {
+            let t = t.as_f64().unwrap() as f32;
+            clip.sample(t, &mut cursor, &mut pose);
+            raw.sample(t, imported.skeleton.rest(), &mut cursors, &mut raw_pose);
+            for (a, b) in model_matrices(&imported, &pose)
+                .iter()
+                .zip(model_matrices(&imported, &raw_pose))
+            {
+                assert!(
+                    a.abs_diff_eq(b, 1e-4),
+                    "{name}: runtime and editable clips agree at t = {t}"
+                );
+            }
+            let world = model_matrices(&imported, &pose);
+            for (k, &node) in nodes.iter().enumerate() {
+                assert_matrices_close(
+                    world[ours_of(node)],
+                    &matrix(&r["world"][i][k]),
+                    &format!("{name} at t = {t}, node {node}"),
+                );
+            }
+        }
+        // The skinned meshes: joints in range, weights finite.
+        assert!(!imported.meshes.is_empty(), "{name}: a skinned mesh");
+        for m in &imported.meshes {
+            assert!(m
+                .joints
+                .iter()
+                .flatten()
+                .all(|&j| (j as usize) < imported.skeleton.len()));
+            let (lo, hi) = m.weight_sum_range();
+            assert!(lo > 0.0 && hi < 1.01, "{name}: weight sums {lo}..{hi}");
+        }
+    }
+}
+
+#[test]
+fn a_small_file_imports_parents_first_with_its_clip_and_mesh() {
+    let imported = import(tiny().as_bytes()).unwrap();
+    // The skin lists the knee before the hip; the skeleton puts the parent first.
+    assert_eq!(imported.skeleton.names(), ["hip (node 1)", "knee (node 2)"]);
+    assert_eq!(imported.skeleton.parents(), [-1, 0]);
+    assert_eq!(imported.nodes, [1, 2]);
+    // Inverse binds and mesh joints follow the reordering.
+    assert!(imported.inverse_bind[1].abs_diff_eq(Mat4::IDENTITY, 1e-6));
+    assert_eq!(imported.meshes[0].joints[0], [1, 0, 1, 1]);
+    assert_eq!(imported.clips[0].name(), "bend");
+    assert_eq!(imported.clips[0].duration_sec(), 1.0);
+    assert_eq!(imported.meshes[0].weight_sum_range(), (1.0, 1.0));
+}
+
+/// Replaces `from` by `to` in the tiny file (which must contain it) and imports it.
+fn tiny_with(from: &str, to: &str) -> Result<inbetween::gltf_import::Imported, ImportError> {
+    let text = tiny();
+    assert!(text.contains(from), "{from}");
+    import(text.replacen(from, to, 1).as_bytes())
+}
+
+#[test]
+fn bad_files_get_clear_errors() {
+    let msg = |r: Result<_, ImportError>| r.map(|_| ()).unwrap_err().to_string();
+    assert!(msg(import(b"")).contains("not a valid glTF"));
+    assert!(msg(import(b"{\"asset\":{\"version\":\"2.0\"}}")).contains("no skin"));
+    assert!(msg(import(&tiny().as_bytes()[..400])).contains("not a valid glTF"));
+    // A buffer that says it is longer than its data.
+    assert!(msg(tiny_with("\"byteLength\":264", "\"byteLength\":999")).contains("buffer 0"));
+    // An accessor reaching past its view.
+    let e = msg(tiny_with(
+        "\"count\":3,\"type\":\"VEC4\"}",
+        "\"count\":30,\"type\":\"VEC4\"}",
+    ));
+    assert!(e.contains("accessor") || e.contains("not a valid"), "{e}");
+    // A separate .bin file.
+    let e = msg(tiny_with(
+        "\"uri\":\"data:",
+        "\"uri\":\"model.bin\",\"x\":\"data:",
+    ));
+    assert!(e.contains("separate file"), "{e}");
+    // A joint listed twice.
+    assert!(msg(tiny_with("\"joints\":[2,1]", "\"joints\":[2,2]")).contains("twice"));
+    // A node hierarchy that loops.
+    let e = msg(tiny_with(
+        "{\"name\":\"knee\",",
+        "{\"name\":\"knee\",\"children\":[1],",
+    ));
+    assert!(e.contains("cycle") || e.contains("not a valid"), "{e}");
+    // A joint index outside the skin.
+    let e = msg(tiny_with(
+        "\"inverseBindMatrices\":3",
+        "\"inverseBindMatrices\":0",
+    ));
+    assert!(
+        e.contains("inverse bind") || e.contains("not a valid"),
+        "{e}"
+    );
+}
+
+static SIMPLE: std::sync::LazyLock<Option<Vec<u8>>> =
+    std::sync::LazyLock::new(|| sample("RiggedSimple"));
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, .. ProptestConfig::default() })]
+
+    /// Fuzzing: bytes changed, cut or repeated anywhere never make the importer panic (it
+    /// returns an import or an error).
+    #[test]
+    fn no_input_makes_the_importer_panic(
+        edits in proptest::collection::vec((any::<prop::sample::Index>(), any::<u8>(), 0u8..3), 1..6),
+        cut in any::<prop::sample::Index>(),
+        base in 0u8..2,
+    ) {
+        // Our tiny file, or a real one (more accessors, a longer animation) when present.
+        let mut bytes = match base {
+            1 => SIMPLE.clone().unwrap_or_else(|| tiny().into_bytes()),
+            _ => tiny().into_bytes(),
+        };
+        for (at, byte, kind) in edits {
+            let i = at.index(bytes.len());
+            match kind {
+                0 => bytes[i] = byte,
+                1 => bytes[i] = b"0123456789-.e,[]{}\""[byte as usize % 19],
+                _ => { let b = bytes[i]; bytes.insert(i, b); }
+            }
+        }
+        if cut.index(8) == 0 {
+            bytes.truncate(cut.index(bytes.len()));
+        }
+        let _ = import(&bytes);
+    }
+}
