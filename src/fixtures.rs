@@ -71,3 +71,54 @@ pub fn sampling_benchmark(
         .collect();
     (track, increasing, random)
 }
+
+/// A small valid glTF file of our own (two joints listed child first, one skinned triangle,
+/// one animation, buffers embedded as a data URI), for the importer's tests and bad-input tests
+/// that must not depend on third-party samples.
+pub fn tiny_skinned_gltf() -> String {
+    use base64::Engine;
+    let mut bin: Vec<u8> = Vec::new();
+    let f = |bin: &mut Vec<u8>, xs: &[f32]| xs.iter().for_each(|x| bin.extend(x.to_le_bytes()));
+    // 0: positions (3 × vec3) at 0
+    f(&mut bin, &[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
+    // 1: joints (3 × u8vec4) at 36
+    bin.extend([0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0]);
+    // 2: weights (3 × vec4) at 48
+    f(
+        &mut bin,
+        &[1.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
+    );
+    // 3: inverse binds (2 × mat4) at 96
+    f(&mut bin, &glam::Mat4::IDENTITY.to_cols_array());
+    f(
+        &mut bin,
+        &glam::Mat4::from_translation(glam::Vec3::new(0.0, -1.0, 0.0)).to_cols_array(),
+    );
+    // 4: times (2) at 224, 5: rotations (2 × vec4) at 232
+    f(&mut bin, &[0.0, 1.0]);
+    let h = std::f32::consts::FRAC_1_SQRT_2;
+    f(&mut bin, &[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, h, h]);
+    let uri = format!(
+        "data:application/octet-stream;base64,{}",
+        base64::engine::general_purpose::STANDARD.encode(&bin)
+    );
+    format!(
+        r#"{{"asset":{{"version":"2.0"}},"scene":0,"scenes":[{{"nodes":[0,1]}}],
+"nodes":[{{"mesh":0,"skin":0}},{{"name":"hip","children":[2]}},{{"name":"knee","translation":[0,1,0]}}],
+"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0,"JOINTS_0":1,"WEIGHTS_0":2}}}}]}}],
+"skins":[{{"joints":[2,1],"inverseBindMatrices":3}}],
+"animations":[{{"name":"bend","channels":[{{"sampler":0,"target":{{"node":2,"path":"rotation"}}}}],
+  "samplers":[{{"input":4,"output":5,"interpolation":"LINEAR"}}]}}],
+"buffers":[{{"byteLength":{len},"uri":"{uri}"}}],
+"bufferViews":[{{"buffer":0,"byteOffset":0,"byteLength":36}},{{"buffer":0,"byteOffset":36,"byteLength":12}},
+  {{"buffer":0,"byteOffset":48,"byteLength":48}},{{"buffer":0,"byteOffset":96,"byteLength":128}},
+  {{"buffer":0,"byteOffset":224,"byteLength":8}},{{"buffer":0,"byteOffset":232,"byteLength":32}}],
+"accessors":[{{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}},
+  {{"bufferView":1,"componentType":5121,"count":3,"type":"VEC4"}},
+  {{"bufferView":2,"componentType":5126,"count":3,"type":"VEC4"}},
+  {{"bufferView":3,"componentType":5126,"count":2,"type":"MAT4"}},
+  {{"bufferView":4,"componentType":5126,"count":2,"type":"SCALAR","min":[0],"max":[1]}},
+  {{"bufferView":5,"componentType":5126,"count":2,"type":"VEC4"}}]}}"#,
+        len = bin.len()
+    )
+}

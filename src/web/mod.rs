@@ -9,6 +9,7 @@ mod bench_rotation;
 mod bench_skeleton;
 mod curves;
 mod expressive;
+mod gltf;
 mod noise;
 mod raster;
 mod rigid;

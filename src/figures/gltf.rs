@@ -1,0 +1,238 @@
+//! Figure logic for lesson 06's last figure: a character imported from a glTF file (a Khronos
+//! sample served with the site, or the reader's own file), drawn as its skeleton and playing its
+//! clips. The import itself is [`crate::gltf_import`]; skinning the mesh is lesson 09's subject,
+//! so this figure shows the joints, the bones and, faintly, the mesh's vertices in the bind pose.
+
+use super::{format_number, in_range, palette, Frame, MeshId};
+use crate::gltf_import::{import, Imported};
+use crate::skeleton::{Clip, ClipCursor, Pose};
+use glam::{Affine3A, Mat4, Vec3};
+
+/// The most mesh vertices drawn as dots (every k-th vertex beyond it).
+const MAX_DOTS: usize = 2_000;
+
+/// What is loaded.
+struct Character {
+    imported: Imported,
+    clips: Vec<Clip>,
+    /// Joint world positions in the rest pose, for the fit and the joint size.
+    size: f32,
+    centre: Vec3,
+    /// A thinned set of the mesh's vertices (bind pose, world space).
+    dots: Vec<Vec3>,
+}
+
+/// The figure: nothing until a file is loaded.
+#[derive(Default)]
+pub struct GltfFigure {
+    character: Option<Character>,
+    clip: usize,
+    cursor: ClipCursor,
+    pose: Option<Pose>,
+    model: Vec<Affine3A>,
+    show_mesh: bool,
+}
+
+impl GltfFigure {
+    pub fn new() -> Self {
+        GltfFigure {
+            show_mesh: true,
+            ..Default::default()
+        }
+    }
+
+    /// Imports `bytes` (a `.gltf` with embedded buffers or a `.glb`) named `name`; on success
+    /// returns a one-line summary, on failure the reason (and keeps what was loaded before).
+    pub fn load(&mut self, name: &str, bytes: &[u8]) -> Result<String, String> {
+        let imported = import(bytes).map_err(|e| format!("{name}: {e}"))?;
+        let clips = imported
+            .clips
+            .iter()
+            .map(|raw| Clip::from_raw(raw, &imported.skeleton))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| format!("{name}: {e}"))?;
+        let rest = imported.skeleton.rest_pose();
+        let mut model = vec![Affine3A::IDENTITY; imported.skeleton.len()];
+        imported
+            .skeleton
+            .model_matrices(&rest, &mut model)
+            .map_err(|e| format!("{name}: {e}"))?;
+        let points: Vec<Vec3> = model
+            .iter()
+            .map(|m| {
+                imported
+                    .root_transform
+                    .transform_point3(m.translation.into())
+            })
+            .collect();
+        let vertices: usize = imported.meshes.iter().map(|m| m.positions.len()).sum();
+        let step = vertices.div_ceil(MAX_DOTS).max(1);
+        let dots: Vec<Vec3> = imported
+            .meshes
+            .iter()
+            .flat_map(|m| {
+                m.positions
+                    .iter()
+                    .map(move |&p| m.node_transform.transform_point3(p))
+            })
+            .step_by(step)
+            .collect();
+        // The box around the joints and the mesh (a head reaches above its last joint).
+        let (lo, hi) = points.iter().chain(&dots).fold(
+            (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+            |(lo, hi), &p| (lo.min(p), hi.max(p)),
+        );
+        let size = (hi - lo).max_element().max(1e-3);
+        let summary = format!(
+            "{name}: {} joints, {} clip{} ({}), {} skinned vertices{}.",
+            imported.skeleton.len(),
+            clips.len(),
+            if clips.len() == 1 { "" } else { "s" },
+            if clips.is_empty() {
+                "none: it shows the rest pose".to_string()
+            } else {
+                imported
+                    .clips
+                    .iter()
+                    .map(|c| format!("{} {} s", c.name(), format_number(c.duration_sec())))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            },
+            vertices,
+            if imported.notes.is_empty() {
+                String::new()
+            } else {
+                format!("; skipped: {}", imported.notes.join("; "))
+            },
+        );
+        self.pose = Some(rest);
+        self.model = model;
+        self.cursor = ClipCursor::new();
+        self.clip = 0;
+        self.character = Some(Character {
+            clips,
+            size,
+            centre: 0.5 * (lo + hi),
+            dots,
+            imported,
+        });
+        Ok(summary)
+    }
+
+    pub fn is_loaded(&self) -> bool {
+        self.character.is_some()
+    }
+
+    /// The loaded clips' names.
+    pub fn clip_names(&self) -> Vec<String> {
+        self.character.as_ref().map_or_else(Vec::new, |c| {
+            c.clips.iter().map(|clip| clip.name().to_string()).collect()
+        })
+    }
+
+    pub fn set_clip(&mut self, index: usize) -> Result<(), String> {
+        let count = self.character.as_ref().map_or(0, |c| c.clips.len());
+        if index >= count {
+            return Err(format!("clip {index} does not exist ({count} loaded)"));
+        }
+        self.clip = index;
+        self.cursor = ClipCursor::new();
+        Ok(())
+    }
+
+    /// The current clip's duration (1 s when there is none, so a timeline still works).
+    pub fn duration_sec(&self) -> f32 {
+        self.character
+            .as_ref()
+            .and_then(|c| c.clips.get(self.clip))
+            .map_or(1.0, |c| c.duration_sec())
+    }
+
+    pub fn set_show_mesh(&mut self, on: bool) {
+        self.show_mesh = on;
+    }
+
+    /// Where to aim the camera: `[x, y, z, distance]`, framing the rest pose.
+    pub fn fit(&self) -> [f32; 4] {
+        match &self.character {
+            Some(c) => [c.centre.x, c.centre.y, c.centre.z, 2.0 * c.size],
+            None => [0.0, 1.0, 0.0, 4.0],
+        }
+    }
+
+    /// Draws the character at `time_sec`; returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let time_sec = in_range("time", time_sec, 0.0, 1e6)?;
+        let Some(c) = &self.character else {
+            frame.grid(10, 0.5);
+            return Ok(
+                "No character loaded: pick a sample or drop a .gltf / .glb file on the figure."
+                    .into(),
+            );
+        };
+        let pose = self.pose.as_mut().expect("set with the character");
+        if let Some(clip) = c.clips.get(self.clip) {
+            clip.sample(time_sec, &mut self.cursor, pose);
+        }
+        let skeleton = &c.imported.skeleton;
+        skeleton
+            .model_matrices(pose, &mut self.model)
+            .map_err(|e| e.to_string())?;
+        let world = |m: &Affine3A| {
+            c.imported
+                .root_transform
+                .transform_point3(m.translation.into())
+        };
+        frame.grid(12, (c.size / 6.0).max(0.05));
+        let radius = 0.012 * c.size;
+        for (i, &parent) in skeleton.parents().iter().enumerate() {
+            let p = world(&self.model[i]);
+            let color = if parent < 0 {
+                palette::ORANGE
+            } else {
+                palette::DARK
+            };
+            frame.mesh(
+                MeshId::SPHERE,
+                Mat4::from_translation(p) * Mat4::from_scale(Vec3::splat(radius)),
+                color,
+            );
+            if parent >= 0 {
+                frame.line(world(&self.model[parent as usize]), p, palette::BLUE);
+            }
+        }
+        let root = skeleton
+            .parents()
+            .iter()
+            .position(|&p| p < 0)
+            .expect("a skeleton has a root");
+        frame.label(
+            world(&self.model[root]) + Vec3::Y * 2.0 * radius,
+            "root",
+            palette::ORANGE,
+        );
+        if self.show_mesh {
+            for &d in &c.dots {
+                frame.point(d, 0.3 * radius, palette::GREY);
+            }
+        }
+        let clip = c.clips.get(self.clip);
+        Ok(format!(
+            "{}{}",
+            match clip {
+                Some(clip) => format!(
+                    "Clip \"{}\" at {} s of {} s (looping)",
+                    clip.name(),
+                    format_number(time_sec % clip.duration_sec().max(1e-6)),
+                    format_number(clip.duration_sec())
+                ),
+                None => "No clip: the rest pose".into(),
+            },
+            if self.show_mesh && !c.dots.is_empty() {
+                ". Grey dots: the mesh's vertices in the bind pose (skinning them is lesson 09)."
+            } else {
+                "."
+            }
+        ))
+    }
+}

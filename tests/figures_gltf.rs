@@ -1,0 +1,59 @@
+//! Native tests of lesson 06's glTF figure (src/figures/gltf.rs).
+
+use glam::Vec3;
+use inbetween::draw::{Frame, MeshId};
+use inbetween::figures::gltf::GltfFigure;
+use inbetween::fixtures::tiny_skinned_gltf;
+
+#[test]
+fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
+    let mut figure = GltfFigure::new();
+    let mut f = Frame::default();
+    assert!(figure
+        .draw(&mut f, 0.0)
+        .unwrap()
+        .contains("No character loaded"));
+    let summary = figure
+        .load("tiny.gltf", tiny_skinned_gltf().as_bytes())
+        .unwrap();
+    assert!(
+        summary.contains("2 joints") && summary.contains("bend 1.000 s"),
+        "{summary}"
+    );
+    assert_eq!(figure.clip_names(), ["bend"]);
+    assert_eq!(figure.duration_sec(), 1.0);
+    let joints = |f: &Frame| -> Vec<Vec3> {
+        f.meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::SPHERE)
+            .map(|m| m.model.w_axis.truncate())
+            .collect()
+    };
+    f.clear();
+    figure.draw(&mut f, 0.0).unwrap();
+    let rest = joints(&f);
+    assert_eq!(rest.len(), 2);
+    assert!(
+        (rest[1] - Vec3::Y).length() < 1e-5,
+        "the knee 1 m above the hip: {}",
+        rest[1]
+    );
+    // The clip turns the knee's joint by 90° about z at t = 1; halfway, 45°. The knee is the
+    // child, so its own position does not move; the mesh dots are drawn as points.
+    f.clear();
+    let note = figure.draw(&mut f, 0.5).unwrap();
+    assert!(note.contains("Clip \"bend\" at 0.500 s"), "{note}");
+    assert_eq!(f.points.len(), 3, "the three vertices as dots");
+    figure.set_show_mesh(false);
+    f.clear();
+    figure.draw(&mut f, 0.5).unwrap();
+    assert!(f.points.is_empty());
+    // A bad file: a clear message, and the character loaded before stays.
+    let err = figure.load("broken.gltf", b"{ not json").unwrap_err();
+    assert!(err.starts_with("broken.gltf: not a valid glTF"), "{err}");
+    assert_eq!(figure.clip_names(), ["bend"]);
+    assert!(figure.set_clip(3).is_err());
+    assert!(figure.draw(&mut f, f32::NAN).is_err());
+    let [_, _, _, distance] = figure.fit();
+    assert!(distance > 1.0 && distance < 10.0, "{distance}");
+}
