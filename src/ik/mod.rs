@@ -219,7 +219,7 @@ pub fn two_joint(
 /// turn about any perpendicular axis.
 pub fn rotation_arc(from: Vec3, to: Vec3) -> Option<Quat> {
     let scale = from.length() * to.length();
-    if !(scale > 1e-12) {
+    if scale.is_nan() || scale <= 1e-12 {
         return None;
     }
     let w = scale + from.dot(to);
