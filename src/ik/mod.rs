@@ -231,6 +231,26 @@ pub fn rotation_arc(from: Vec3, to: Vec3) -> Option<Quat> {
     Some(Quat::from_xyzw(c.x, c.y, c.z, w).normalize())
 }
 
+/// One CCD iteration (sweep): for each joint from the one before the end back to the root, turn
+/// everything after it about it so that the end points at the target.
+/// ```text
+/// for i = n−1 … 0:   R = rotation_arc(end − p_i, target − p_i);   p_j ← p_i + R (p_j − p_i)  for j > i
+/// ```
+/// A joint where the end or the target sits on the pivot is skipped. The caller validates the
+/// chain ([`ccd`] does).
+pub fn ccd_iteration(chain: &mut [Vec3], target: Vec3) {
+    let n = chain.len();
+    for i in (0..n.saturating_sub(1)).rev() {
+        let pivot = chain[i];
+        let Some(r) = rotation_arc(chain[n - 1] - pivot, target - pivot) else {
+            continue;
+        };
+        for p in &mut chain[i + 1..] {
+            *p = pivot + r * (*p - pivot);
+        }
+    }
+}
+
 /// Cyclic Coordinate Descent on a chain of positions (`chain[0]` the root, the last the end
 /// effector). One iteration visits the joints from the one before the end back to the root and
 /// turns everything after joint `i` about it by the rotation taking `end − p_i` onto
@@ -254,15 +274,7 @@ pub fn ccd(
     let mut error = chain[n - 1].distance(target);
     let mut iterations = 0;
     while error > tolerance && iterations < max_iterations {
-        for i in (0..n - 1).rev() {
-            let pivot = chain[i];
-            let Some(r) = rotation_arc(chain[n - 1] - pivot, target - pivot) else {
-                continue;
-            };
-            for p in &mut chain[i + 1..] {
-                *p = pivot + r * (*p - pivot);
-            }
-        }
+        ccd_iteration(chain, target);
         error = chain[n - 1].distance(target);
         if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
             *slot = error;
