@@ -214,7 +214,9 @@ fn constrain_returns_allowed_directions_and_keeps_allowed_ones() {
         assert!((allowed.length() - 1.0).abs() < 1e-4);
         assert!(limit.violation_rad(incoming, allowed) < 1e-3, "{limit:?}");
         // An allowed direction is kept as it is.
-        assert!(limit.constrain(incoming, allowed).abs_diff_eq(allowed, 1e-3));
+        assert!(limit
+            .constrain(incoming, allowed)
+            .abs_diff_eq(allowed, 1e-3));
         match limit {
             JointLimit::Cone { max_rad } => {
                 assert!(incoming.angle_between(allowed) <= max_rad + 1e-3)
@@ -290,7 +292,16 @@ fn limited_solvers_reach_targets_the_limits_allow() {
     }
     // Out of the limits' reach: the finger cannot bend backwards.
     let mut c = straight;
-    let r = ccd_limited(&mut c, &l, down, Vec3::new(-2.5, -1.0, 0.0), 200, 1e-3, None).unwrap();
+    let r = ccd_limited(
+        &mut c,
+        &l,
+        down,
+        Vec3::new(-2.5, -1.0, 0.0),
+        200,
+        1e-3,
+        None,
+    )
+    .unwrap();
     assert!(!r.reached && r.error > 0.5, "{r:?}");
     assert!(max_violation_rad(&c, &l, down) < 2e-3);
 }
@@ -308,7 +319,12 @@ type LimitedSolver = fn(
 #[test]
 fn apply_limits_fixes_a_chain_from_the_root_out() {
     let l = [JointLimit::Cone { max_rad: 0.3 }; 3];
-    let mut c = [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 1.0, 0.0), Vec3::new(0.0, 1.0, 0.0)];
+    let mut c = [
+        Vec3::ZERO,
+        Vec3::X,
+        Vec3::new(1.0, 1.0, 0.0),
+        Vec3::new(0.0, 1.0, 0.0),
+    ];
     assert!(max_violation_rad(&c, &l, Vec3::X) > 1.0);
     apply_limits(&mut c, &l, Vec3::X, 0);
     assert!(max_violation_rad(&c, &l, Vec3::X) < 1e-4);
@@ -338,7 +354,11 @@ fn aim_points_at_the_target_without_roll_and_within_its_cone() {
         let s = aim(position, forward, up, target, max, 1e-3).unwrap();
         assert!(forward.angle_between(s.forward) <= max + 1e-3);
         let left = (forward.angle_between(a) - max).max(0.0);
-        assert!((s.result.error - left).abs() < 2e-3, "{} vs {left}", s.result.error);
+        assert!(
+            (s.result.error - left).abs() < 2e-3,
+            "{} vs {left}",
+            s.result.error
+        );
         assert_eq!(s.result.reached, s.result.error <= 1e-3);
     }
 }
@@ -350,7 +370,10 @@ fn limits_and_aim_reject_bad_input() {
     let free = [JointLimit::Free; 2];
     assert!(matches!(
         ccd_limited(&mut c.clone(), &free[..1], Vec3::Y, t, 10, 1e-3, None),
-        Err(IkError::LimitCount { limits: 1, joints: 3 })
+        Err(IkError::LimitCount {
+            limits: 1,
+            joints: 3
+        })
     ));
     let bad = [
         JointLimit::Free,
@@ -379,7 +402,9 @@ fn limits_and_aim_reject_bad_input() {
         ccd_limited(&mut c.clone(), &free, Vec3::ZERO, t, 10, 1e-3, None),
         Err(IkError::NonFinite { .. })
     ));
-    let long: Vec<Vec3> = (0..=MAX_LIMITED_JOINTS).map(|i| Vec3::Y * i as f32).collect();
+    let long: Vec<Vec3> = (0..=MAX_LIMITED_JOINTS)
+        .map(|i| Vec3::Y * i as f32)
+        .collect();
     let many = vec![JointLimit::Free; MAX_LIMITED_JOINTS];
     assert!(matches!(
         ccd_limited(&mut long.clone(), &many, Vec3::Y, t, 10, 1e-3, None),
@@ -397,5 +422,7 @@ fn limits_and_aim_reject_bad_input() {
         aim(Vec3::ZERO, Vec3::Z, Vec3::Y, Vec3::NAN, PI, 1e-3),
         Err(IkError::NonFinite { what: "target" })
     ));
-    assert!(IkError::BadLimit { joint: 3, why: "x" }.to_string().contains("joint 3"));
+    assert!(IkError::BadLimit { joint: 3, why: "x" }
+        .to_string()
+        .contains("joint 3"));
 }

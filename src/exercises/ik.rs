@@ -83,7 +83,11 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
 
     // 7.1: (root, middle, end, target, pole)
     type TwoJoint = (Vec3, Vec3, Vec3, Vec3, Vec3);
-    let (r, m, e) = (Vec3::ZERO, Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, 2.0, 0.0));
+    let (r, m, e) = (
+        Vec3::ZERO,
+        Vec3::new(0.0, 1.0, 0.0),
+        Vec3::new(0.0, 2.0, 0.0),
+    );
     let mut cases: Vec<(&str, TwoJoint)> = vec![
         (
             "a target in reach, in the plane of the chain",

@@ -9,6 +9,7 @@
 
 pub mod curves;
 pub mod expressive;
+pub mod ik;
 pub mod noise;
 pub mod raster;
 pub mod rigid;

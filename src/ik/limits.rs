@@ -22,7 +22,11 @@ pub enum JointLimit {
     /// (chain space, any length), turned from the incoming direction by a signed angle
     /// `θ ∈ [min_rad, max_rad]` about `axis` (right-hand rule). `axis` is fixed in the chain's
     /// space, so a hinge chain bends in one plane (a finger, a leg seen from the side).
-    Hinge { axis: Vec3, min_rad: f32, max_rad: f32 },
+    Hinge {
+        axis: Vec3,
+        min_rad: f32,
+        max_rad: f32,
+    },
     /// A ball joint (shoulder, hip): the segment stays within `max_rad` of the incoming direction.
     Cone { max_rad: f32 },
 }
@@ -111,7 +115,11 @@ fn hinge_angle(axis: Vec3, incoming: Vec3, dir: Vec3) -> (Vec3, f32) {
     (zero, theta)
 }
 
-fn check_limits(chain: &[Vec3], limits: &[JointLimit], root_direction: Vec3) -> Result<(), IkError> {
+fn check_limits(
+    chain: &[Vec3],
+    limits: &[JointLimit],
+    root_direction: Vec3,
+) -> Result<(), IkError> {
     if chain.len() > MAX_LIMITED_JOINTS {
         return Err(IkError::ChainLength {
             joints: chain.len(),
