@@ -462,9 +462,10 @@ impl IkFigure {
             let mut expected = before;
             crate::ik::ccd_iteration(&mut expected, self.target);
             crate::ik::ccd_iteration(&mut reference, self.target);
-            if let Some(j) =
-                (0..yours.len()).find(|&j| !(yours[j].distance(expected[j]) <= STUDENT_TOLERANCE))
-            {
+            if let Some(j) = (0..yours.len()).find(|&j| {
+                let d = yours[j].distance(expected[j]);
+                d.is_nan() || d > STUDENT_TOLERANCE
+            }) {
                 let at = format!("iteration {k}, joint {j}");
                 let note = compare_note(
                     "ccd_iteration",
