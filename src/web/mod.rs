@@ -9,6 +9,7 @@ mod bench_rotation;
 mod bench_skeleton;
 mod curves;
 mod expressive;
+mod ik;
 mod noise;
 mod raster;
 mod rigid;
@@ -20,6 +21,7 @@ mod viewer;
 
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
+pub use ik::{AimScene, IkScene};
 pub use noise::{
     FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
     TexturesScene,
