@@ -289,6 +289,14 @@ fn the_note_reports_the_students_exercises() {
     let note = f.draw(&mut Frame::default()).unwrap();
     assert!(note.contains("Set segments to 2"), "{note}");
     assert!(note.contains("Set joint limits to none"), "{note}");
+    assert!(!note.contains("Not done yet"), "{note}");
+    // A stub is reported whatever the settings.
+    f.set_runner(direct);
+    let note = f.draw(&mut Frame::default()).unwrap();
+    if !cfg!(feature = "solutions") {
+        assert!(note.contains("Not done yet: exercise 7.1"), "{note}");
+        assert!(note.contains("Not done yet: exercise 7.2"), "{note}");
+    }
 }
 
 #[test]
@@ -301,5 +309,25 @@ fn the_head_looks_at_the_target_within_its_cone() {
     assert!(
         note.contains("outside the 70° cone") && note.contains("reached: no"),
         "{note}"
+    );
+}
+
+#[test]
+fn the_pole_steers_every_solver() {
+    let mut f = IkFigure::new();
+    f.set_segments(4.0).unwrap();
+    let before = [f.chain(1).unwrap(), f.chain(2).unwrap()];
+    f.set_pole_angle_deg(150.0).unwrap();
+    let after = [f.chain(1).unwrap(), f.chain(2).unwrap()];
+    // They start bent towards the pole, so they end elsewhere (CCD curls at the tip whatever
+    // the start, so its middle moves less).
+    let moved: Vec<f32> = before
+        .iter()
+        .zip(&after)
+        .map(|(b, a)| b[2].distance(a[2]))
+        .collect();
+    assert!(
+        moved.iter().all(|&d| d > 5e-3) && moved.iter().any(|&d| d > 0.02),
+        "{moved:?}"
     );
 }

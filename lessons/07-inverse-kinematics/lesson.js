@@ -1,6 +1,6 @@
 // Lesson 07: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/ik/, src/figures/ik.rs), including picking and dragging the target.
-import { startLesson, markDrawn, Plot, columns, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, columns, GUI } from '../../www/lesson.js';
 import { IkScene, AimScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -100,11 +100,10 @@ if (aimViewer) {
   target.add(p, 'y', 0, 3, 0.05).onChange(applyTarget);
   target.add(p, 'z', -3, 3, 0.05).onChange(applyTarget);
   gui.add(p, 'cone', 0, 180, 1).name('largest turn (°)').onChange(() => scene.setMaxAngleDeg(p.cone));
+  const timeline = new Timeline(document.getElementById('aim-timeline'), { duration: 8, playing: true });
   const note = document.getElementById('aim-note');
-  let time = 0;
   lesson.onFrame((dt) => {
-    time += dt;
-    showNote(note, aimViewer && scene.draw(aimViewer, time));
+    showNote(note, scene.draw(aimViewer, timeline.advance(dt)));
     markDrawn('#fig-aim');
   });
 }

@@ -34,7 +34,7 @@ const ROOTS_X: [f32; 3] = [-1.3, 0.0, 1.3];
 const GRAB_RADIUS_PX: f32 = 18.0;
 /// How close the student's joints must be to the reference's, metres.
 const STUDENT_TOLERANCE: f32 = 2e-3;
-/// The bend of the rest pose at each joint, about −z (the chain leans towards +x).
+/// The bend of the rest pose at each joint, towards the pole's side.
 const REST_BEND_RAD: f32 = 12.0 * DEG;
 
 /// What the joint-limits dropdown offers, in order.
@@ -105,16 +105,22 @@ impl IkFigure {
     }
 
     /// The rest pose: `segments` equal segments from the root straight up, each joint bent a
-    /// little about −z, so the chain leans to +x (the side the hinges bend to).
+    /// little towards the pole's side (so the pole steers CCD and FABRIK too: they start bent
+    /// that way, a common trick to pick which way a knee goes).
     fn build_rest(&mut self) {
         let n = self.segments;
         let l = CHAIN_LENGTH / n as f32;
+        let pole = self.pole();
+        let side = (pole - Vec3::Y * pole.y).normalize_or(Vec3::X);
+        let axis = Vec3::Y.cross(side).normalize_or(Vec3::Z);
         self.rest.clear();
         self.rest.push(Vec3::ZERO);
         let mut dir = Vec3::Y;
         for i in 0..n {
             if i > 0 {
-                dir = Quat::from_rotation_z(-REST_BEND_RAD) * dir;
+                // Gentle for long chains: at most 45° in all.
+                let bend = REST_BEND_RAD.min(45.0 * DEG / (n - 1) as f32);
+                dir = Quat::from_axis_angle(axis, bend) * dir;
             }
             let last = self.rest[i];
             self.rest.push(last + dir * l);
@@ -255,6 +261,8 @@ impl IkFigure {
         self.dirty = false;
         self.notes.clear();
         self.student = [None, None];
+        self.build_rest();
+        self.dirty = false;
         let target = self.target;
         let limits = self.joint_limits();
         // Analytic: only a two-segment chain.
@@ -398,7 +406,15 @@ impl IkFigure {
     fn student_two_joint(&mut self) -> String {
         let exercise = "exercise 7.1 two_joint";
         if self.segments != 2 {
-            return "Set segments to 2 to run your 7.1 two_joint.".into();
+            // Still say whether it is done (or panics), on a two-segment probe.
+            let (r, m, e) = (Vec3::ZERO, Vec3::Y * 0.5, Vec3::Y);
+            let how = "Set segments to 2 to see your 7.1 two_joint on the blue chain.";
+            return match run::two_joint(self.runner, r, m, e, self.target, self.pole()) {
+                Ok(_) => how.into(),
+                Err(failure) => {
+                    format!("{} {how}", failure_note(exercise, EXERCISE_FILE, &failure))
+                }
+            };
         }
         let r = &self.rest;
         let (root, middle, end) = (r[0], r[1], r[2]);
@@ -438,7 +454,13 @@ impl IkFigure {
     fn student_ccd(&mut self) -> String {
         let exercise = "exercise 7.2 ccd_iteration";
         if self.limits != Limits::None {
-            return "Set joint limits to none to run your 7.2 ccd_iteration.".into();
+            let how = "Set joint limits to none to see your 7.2 ccd_iteration on the orange chain.";
+            return match run::ccd_iteration(self.runner, self.rest.clone(), self.target) {
+                Ok(_) => how.into(),
+                Err(failure) => {
+                    format!("{} {how}", failure_note(exercise, EXERCISE_FILE, &failure))
+                }
+            };
         }
         let mut yours = self.rest.clone();
         let mut reference = self.rest.clone();
@@ -592,10 +614,10 @@ impl IkFigure {
                 (&self.solved[k], colors[k])
             };
             draw_chain(frame, root, chain.0, chain.1);
+            let pole = self.pole() + root;
+            frame.point(pole, 0.025, palette::PURPLE);
+            frame.label(pole + Vec3::new(0.04, 0.04, 0.0), "pole", palette::PURPLE);
             if k == 0 && !self.solved[0].is_empty() {
-                let pole = self.pole() + root;
-                frame.point(pole, 0.025, palette::PURPLE);
-                frame.label(pole + Vec3::new(0.04, 0.04, 0.0), "pole", palette::PURPLE);
                 let middle = self.solved[0][1] + root;
                 dashed(frame, middle, pole, palette::PURPLE);
             }
@@ -756,6 +778,9 @@ impl Default for AimFigure {
         Self::new()
     }
 }
+
+/// How long the aim figure's target takes to circle once, seconds.
+pub const AIM_PERIOD_SEC: f32 = 8.0;
 
 /// Where the aim figure's head sits, and its rest forward and up.
 const HEAD: Vec3 = Vec3::new(0.0, 1.6, 0.0);

@@ -76,7 +76,13 @@ impl IkScene {
 
     /// Whether the pointer at `(x, y)` (CSS pixels in a canvas `width` × `height`) is on a target.
     #[wasm_bindgen(js_name = hitsTarget)]
-    pub fn hits_target(&mut self, x: f32, y: f32, width: f32, height: f32) -> Result<bool, JsError> {
+    pub fn hits_target(
+        &mut self,
+        x: f32,
+        y: f32,
+        width: f32,
+        height: f32,
+    ) -> Result<bool, JsError> {
         self.use_view(width, height)?;
         self.scene.hits_target(x, y).map_err(js)
     }
