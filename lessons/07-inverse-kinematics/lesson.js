@@ -12,11 +12,11 @@ function showNote(element, message) {
 
 const viewer = await lesson.figure('#fig-ik');
 if (viewer) {
-  viewer.setCamera(0, 0.55, 0, 3.6, 0, 0.15);
+  viewer.setCamera(0.25, 0.45, 0, 4.3, 0.1, 0.25);
   const scene = new IkScene();
   const p = {
-    segments: 2, x: 0.45, y: 0.55, z: 0.15, pole: 0, iterations: 10, limits: 'none', useExercise: false,
-    reset: () => { Object.assign(p, { x: 0.45, y: 0.55, z: 0.15, pole: 0 }); applyTarget(); scene.setPoleAngleDeg(0); refresh(); },
+    segments: 2, x: 0.55, y: 0.65, z: 0.15, pole: 0, iterations: 10, limits: 'none', useExercise: false,
+    reset: () => { Object.assign(p, { x: 0.55, y: 0.65, z: 0.15, pole: 0 }); applyTarget(); scene.setPoleAngleDeg(0); refresh(); },
   };
   const gui = new GUI({ container: document.querySelector('#fig-ik .panel'), title: 'Inverse kinematics' });
   const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
@@ -90,9 +90,9 @@ if (viewer) {
 
 const aimViewer = await lesson.figure('#fig-aim');
 if (aimViewer) {
-  aimViewer.setCamera(0, 1.4, 0, 3.2, 0.8, 0.25);
+  aimViewer.setCamera(0.6, 1.5, 0.4, 4.0, -0.6, 0.2);
   const scene = new AimScene();
-  const p = { x: 0.8, y: 1.9, z: 0.9, cone: 70 };
+  const p = { x: 1.5, y: 1.9, z: 1.0, cone: 70 };
   const gui = new GUI({ container: document.querySelector('#fig-aim .panel'), title: 'Aim' });
   const target = gui.addFolder('target (m)');
   const applyTarget = () => scene.setTarget(p.x, p.y, p.z);

@@ -29,12 +29,12 @@ pub const MAX_SEGMENTS: usize = 8;
 /// Total length of every chain, metres.
 const CHAIN_LENGTH: f32 = 1.0;
 /// Where the three chains stand: analytic, CCD, FABRIK (x of each root, metres).
-const ROOTS_X: [f32; 3] = [-1.3, 0.0, 1.3];
+const ROOTS_X: [f32; 3] = [-1.1, 0.0, 1.1];
 /// How close (CSS pixels) a pointer must come to a target to grab it.
 const GRAB_RADIUS_PX: f32 = 18.0;
 /// How close the student's joints must be to the reference's, metres.
 const STUDENT_TOLERANCE: f32 = 2e-3;
-/// The bend of the rest pose at each joint, towards the pole's side.
+/// The bend of the rest pose at each joint, about −z (the chain leans towards +x).
 const REST_BEND_RAD: f32 = 12.0 * DEG;
 
 /// What the joint-limits dropdown offers, in order.
@@ -81,11 +81,12 @@ impl Default for IkFigure {
 }
 
 impl IkFigure {
-    /// Two segments, the target up and to the right, 10 iterations, no limits.
+    /// Two segments, the target up and to the right, the pole above the root→target line, 10
+    /// iterations, no limits.
     pub fn new() -> Self {
         let mut figure = Self {
             segments: 2,
-            target: Vec3::new(0.45, 0.55, 0.15),
+            target: Vec3::new(0.55, 0.65, 0.15),
             pole_angle_rad: 0.0,
             iterations: 10,
             limits: Limits::None,
@@ -104,23 +105,19 @@ impl IkFigure {
         figure
     }
 
-    /// The rest pose: `segments` equal segments from the root straight up, each joint bent a
-    /// little towards the pole's side (so the pole steers CCD and FABRIK too: they start bent
-    /// that way, a common trick to pick which way a knee goes).
+    /// The rest pose the iterative solvers start from: `segments` equal segments from the root
+    /// straight up, each joint bent a little about −z (the chain leans towards +x, the side the
+    /// hinges bend to), at most 45° in all.
     fn build_rest(&mut self) {
         let n = self.segments;
         let l = CHAIN_LENGTH / n as f32;
-        let pole = self.pole();
-        let side = (pole - Vec3::Y * pole.y).normalize_or(Vec3::X);
-        let axis = Vec3::Y.cross(side).normalize_or(Vec3::Z);
+        let bend = REST_BEND_RAD.min(45.0 * DEG / (n - 1).max(1) as f32);
         self.rest.clear();
         self.rest.push(Vec3::ZERO);
         let mut dir = Vec3::Y;
         for i in 0..n {
             if i > 0 {
-                // Gentle for long chains: at most 45° in all.
-                let bend = REST_BEND_RAD.min(45.0 * DEG / (n - 1) as f32);
-                dir = Quat::from_axis_angle(axis, bend) * dir;
+                dir = Quat::from_rotation_z(-bend) * dir;
             }
             let last = self.rest[i];
             self.rest.push(last + dir * l);
@@ -261,8 +258,6 @@ impl IkFigure {
         self.dirty = false;
         self.notes.clear();
         self.student = [None, None];
-        self.build_rest();
-        self.dirty = false;
         let target = self.target;
         let limits = self.joint_limits();
         // Analytic: only a two-segment chain.
@@ -614,12 +609,14 @@ impl IkFigure {
                 (&self.solved[k], colors[k])
             };
             draw_chain(frame, root, chain.0, chain.1);
-            let pole = self.pole() + root;
-            frame.point(pole, 0.025, palette::PURPLE);
-            frame.label(pole + Vec3::new(0.04, 0.04, 0.0), "pole", palette::PURPLE);
-            if k == 0 && !self.solved[0].is_empty() {
-                let middle = self.solved[0][1] + root;
-                dashed(frame, middle, pole, palette::PURPLE);
+            if k == 0 {
+                // The pole steers the analytic solver only (drawn even without an answer).
+                let pole = self.pole() + root;
+                frame.point(pole, 0.025, palette::PURPLE);
+                frame.label(pole + Vec3::new(0.04, 0.04, 0.0), "pole", palette::PURPLE);
+                if !self.solved[0].is_empty() {
+                    dashed(frame, self.solved[0][1] + root, pole, palette::PURPLE);
+                }
             }
             if k > 0 {
                 if let Some((l, d)) = &limits {
@@ -788,7 +785,7 @@ const HEAD: Vec3 = Vec3::new(0.0, 1.6, 0.0);
 impl AimFigure {
     pub fn new() -> Self {
         Self {
-            target: Vec3::new(0.8, 1.9, 0.9),
+            target: Vec3::new(1.5, 1.9, 1.0),
             max_angle_rad: 70.0 * DEG,
         }
     }
@@ -835,8 +832,8 @@ impl AimFigure {
             palette::BROWN,
         );
         frame.axes(head, 0.2);
-        frame.arrow(HEAD, HEAD + s.forward * 0.5, palette::BLUE, 0.06);
-        frame.label(HEAD + s.forward * 0.55, "forward", palette::BLUE);
+        frame.arrow(HEAD, HEAD + s.forward * 0.7, palette::BLUE, 0.08);
+        frame.label(HEAD + s.forward * 0.75, "forward", palette::BLUE);
         frame.point(target, 0.035, palette::RED);
         frame.label(target + Vec3::new(0.05, 0.05, 0.0), "target", palette::RED);
         if !s.result.reached {
