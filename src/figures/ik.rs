@@ -41,7 +41,7 @@ const REST_BEND_RAD: f32 = 12.0 * DEG;
 pub const LIMIT_MODES: [&str; 3] = ["none", "hinges (bend one way)", "cones (40°)"];
 
 /// The three solvers, in the order the chains stand.
-pub const SOLVERS: [&str; 3] = ["two-joint (analytic)", "CCD", "FABRIK"];
+pub const SOLVERS: [&str; 3] = ["two-joint", "CCD", "FABRIK"];
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Limits {
