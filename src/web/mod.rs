@@ -7,6 +7,7 @@ mod bench_curves;
 mod bench_noise;
 mod bench_rotation;
 mod bench_skeleton;
+mod blending;
 mod curves;
 mod expressive;
 mod ik;
@@ -19,6 +20,7 @@ mod skeleton;
 mod transforms;
 mod viewer;
 
+pub use blending::{BlendScene, LocomotionScene};
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
 pub use ik::{AimScene, IkScene};
