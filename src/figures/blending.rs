@@ -356,13 +356,14 @@ impl BlendFigure {
             &self.model,
             Mat4::IDENTITY,
             |j| palette::GREY.lerp(palette::TEAL, self.joint_weights[j]),
+            |j| 0.7 * self.joint_weights[j],
         );
         Ok(note)
     }
 }
 
-/// Body boxes (semi-transparent look by drawing them small), joints coloured by `color(j)`,
-/// bars between joints, all placed by `world`.
+/// Body boxes (each tinted towards `color(j)` by `tint(j)` ∈ [0, 1]), joints coloured by
+/// `color(j)`, lines between joints, all placed by `world`.
 fn draw_character(
     frame: &mut Frame,
     skeleton: &Skeleton,
@@ -370,13 +371,14 @@ fn draw_character(
     model: &[Affine3A],
     world: Mat4,
     color: impl Fn(usize) -> Vec3,
+    tint: impl Fn(usize) -> f32,
 ) {
-    for (shape, m) in shapes.iter().zip(model) {
+    for (j, (shape, m)) in shapes.iter().zip(model).enumerate() {
         let box_model = world
             * Mat4::from(*m)
             * Mat4::from_translation(shape.center)
             * Mat4::from_scale(shape.half_extents);
-        frame.mesh(MeshId::CUBE, box_model, shape.color);
+        frame.mesh(MeshId::CUBE, box_model, shape.color.lerp(color(j), tint(j)));
     }
     for (j, &parent) in skeleton.parents().iter().enumerate() {
         let p = world.transform_point3(model[j].translation.into());
@@ -605,6 +607,7 @@ impl LocomotionFigure {
             &self.model,
             Mat4::from_translation(place),
             |_| palette::DARK,
+            |_| 0.0,
         );
         let w = self.weight();
         let (cycle, _, speed) = synchronised_cycle(&self.motion[0], &self.motion[1], w);
