@@ -427,7 +427,7 @@ const CONTACT_HEIGHT: f32 = 0.06;
 const TRACK_LENGTH: f32 = 4.0;
 /// How far back in time the footprints go, seconds, and how many samples.
 const FOOTPRINT_SEC: f32 = 1.5;
-const FOOTPRINT_SAMPLES: usize = 90;
+const FOOTPRINT_SAMPLES: usize = 60;
 
 impl LocomotionFigure {
     /// Halfway between walking and running speed, synchronised, root motion on.
