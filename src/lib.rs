@@ -14,7 +14,9 @@
 //! | `03-rotations`: rotations | [`rotation`] | [`figures::rotations`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
 //! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
 //! | `05-noise`: noise and terrain | [`noise`], [`terrain`] | [`figures::noise`] | `web::noise` (bench: `web::bench_noise`) | [`exercises::noise`] |
-//! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`] (and [`ik`], for the next lesson) | [`figures::skeleton`] | `web::skeleton` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
+//! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`], [`gltf_import`] | [`figures::skeleton`], [`figures::gltf`] | `web::skeleton`, `web::gltf` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
+//! | `07-inverse-kinematics`: inverse kinematics | [`ik`] | [`figures::ik`] | `web::ik` | [`exercises::ik`] (7.x) |
+//! | `08-blending`: blending | [`skeleton`] (blend, locomotion) | [`figures::blending`] | `web::blending` | [`exercises::skeleton`] (6.3) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm

@@ -60,6 +60,7 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::expressive::grade(&mut rng));
     reports.extend(super::rotations::grade(&mut rng));
     reports.extend(super::skeleton::grade(&mut rng));
+    reports.extend(super::ik::grade(&mut rng));
     reports.extend(super::noise::grade(&mut rng));
     reports
 }

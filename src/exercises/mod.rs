@@ -15,6 +15,7 @@
 pub mod curves;
 pub mod expressive;
 pub mod grade;
+pub mod ik;
 pub mod noise;
 pub mod raster;
 pub mod rotations;

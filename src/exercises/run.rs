@@ -228,6 +228,7 @@ macro_rules! exercises {
     };
 }
 
+use super::ik as ik7;
 use super::noise as nz;
 use super::{
     curves as c, expressive as ex, raster as ra, rotations as r, skeleton as sk, transforms as tr,
@@ -298,6 +299,14 @@ exercises! {
     /// Exercise 6.3, [`sk::crossfade_joint`].
     fn crossfade_joint(translation_a: Vec3, rotation_a: Quat, translation_b: Vec3, rotation_b: Quat, w: f32) -> (Vec3, Quat) =
         sk::crossfade_joint(translation_a, rotation_a, translation_b, rotation_b, w);
+    /// Exercise 7.1, [`ik7::two_joint`]: `(new_middle, new_end)`.
+    fn two_joint(root: Vec3, middle: Vec3, end: Vec3, target: Vec3, pole: Vec3) -> (Vec3, Vec3) =
+        ik7::two_joint(root, middle, end, target, pole);
+    /// Exercise 7.2, [`ik7::ccd_iteration`]: the chain after one sweep.
+    fn ccd_iteration(chain: Vec<Vec3>, target: Vec3) -> Vec<Vec3> = {
+        let mut chain = chain;
+        ik7::ccd_iteration(&mut chain, target).map(|()| chain)
+    };
     /// Exercise 5.1, [`nz::fade`]: `[fade, fade′]`.
     fn fade(t: f32) -> [f32; 2] = nz::fade(t);
     /// Exercise 5.2, [`nz::perlin_cell`].
@@ -452,7 +461,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 23);
+        assert_eq!(NAMES.len(), 25);
     }
 
     #[test]

@@ -11,11 +11,20 @@
 //! | [`ccd`] | any length | Cyclic Coordinate Descent: from the last joint to the root, turn each joint so the end points at the target |
 //! | [`fabrik`] | any length | Forward And Backward Reaching IK: drag the chain end to the target, then the root back home, repeat |
 //!
+//! Joint limits ([`JointLimit`]: hinge and cone) constrain [`ccd_limited`] and [`fabrik_limited`];
+//! [`aim`] turns a joint (a head, an eye) to look at a target, within a cone.
+//!
 //! Unreachable targets are clamped: the chain stretches straight towards the target and the result
 //! says `reached: false` with the remaining distance. Positions are written into the caller's
 //! slice; nothing is allocated.
 
 use core::fmt;
+
+mod limits;
+pub use limits::{
+    aim, apply_limits, ccd_limited, fabrik_limited, max_violation_rad, AimSolution, JointLimit,
+    MAX_LIMITED_JOINTS,
+};
 
 use glam::{Quat, Vec3};
 
@@ -49,6 +58,12 @@ pub enum IkError {
     BadTolerance { tolerance: f32 },
     /// Zero iterations or more than [`MAX_IK_ITERATIONS`].
     BadIterations { iterations: usize },
+    /// Not one limit per joint before the end effector (`joints − 1`).
+    LimitCount { limits: usize, joints: usize },
+    /// A joint limit with impossible numbers.
+    BadLimit { joint: usize, why: &'static str },
+    /// Aim: the forward or up direction is zero, or they are parallel.
+    BadAim,
 }
 
 impl fmt::Display for IkError {
@@ -68,6 +83,15 @@ impl fmt::Display for IkError {
             Self::BadIterations { iterations } => write!(
                 f,
                 "iterations must be between 1 and {MAX_IK_ITERATIONS}, got {iterations}"
+            ),
+            Self::LimitCount { limits, joints } => write!(
+                f,
+                "a chain of {joints} joints needs {} limits (one per joint before the end), got {limits}",
+                joints.saturating_sub(1)
+            ),
+            Self::BadLimit { joint, why } => write!(f, "limit of joint {joint}: {why}"),
+            Self::BadAim => f.write_str(
+                "aim: the forward and up directions must be nonzero and not parallel",
             ),
         }
     }
@@ -184,6 +208,49 @@ pub fn two_joint(
     })
 }
 
+/// The shortest rotation turning the direction of `from` onto the direction of `to` (neither
+/// needs unit length), or `None` when either is (nearly) zero.
+/// ```text
+/// q = normalize(from × to,  |from| |to| + from · to)      (x, y, z, w)
+/// ```
+/// Unlike `Quat::from_rotation_arc`, tiny angles are kept: glam returns the identity below about
+/// 7·10⁻⁴ rad (its `dot > 1 − 2ε` test), which stalled CCD a few millimetres short of the target,
+/// since near convergence every joint's correction is that small. Opposite directions turn half a
+/// turn about any perpendicular axis.
+pub fn rotation_arc(from: Vec3, to: Vec3) -> Option<Quat> {
+    let scale = from.length() * to.length();
+    if scale.is_nan() || scale <= 1e-12 {
+        return None;
+    }
+    let w = scale + from.dot(to);
+    if w <= 1e-6 * scale {
+        let axis = from.any_orthonormal_vector();
+        return Some(Quat::from_axis_angle(axis, std::f32::consts::PI));
+    }
+    let c = from.cross(to);
+    Some(Quat::from_xyzw(c.x, c.y, c.z, w).normalize())
+}
+
+/// One CCD iteration (sweep): for each joint from the one before the end back to the root, turn
+/// everything after it about it so that the end points at the target.
+/// ```text
+/// for i = n−1 … 0:   R = rotation_arc(end − p_i, target − p_i);   p_j ← p_i + R (p_j − p_i)  for j > i
+/// ```
+/// A joint where the end or the target sits on the pivot is skipped. The caller validates the
+/// chain ([`ccd`] does).
+pub fn ccd_iteration(chain: &mut [Vec3], target: Vec3) {
+    let n = chain.len();
+    for i in (0..n.saturating_sub(1)).rev() {
+        let pivot = chain[i];
+        let Some(r) = rotation_arc(chain[n - 1] - pivot, target - pivot) else {
+            continue;
+        };
+        for p in &mut chain[i + 1..] {
+            *p = pivot + r * (*p - pivot);
+        }
+    }
+}
+
 /// Cyclic Coordinate Descent on a chain of positions (`chain[0]` the root, the last the end
 /// effector). One iteration visits the joints from the one before the end back to the root and
 /// turns everything after joint `i` about it by the rotation taking `end − p_i` onto
@@ -207,18 +274,7 @@ pub fn ccd(
     let mut error = chain[n - 1].distance(target);
     let mut iterations = 0;
     while error > tolerance && iterations < max_iterations {
-        for i in (0..n - 1).rev() {
-            let pivot = chain[i];
-            let from = chain[n - 1] - pivot;
-            let to = target - pivot;
-            let (Some(from), Some(to)) = (from.try_normalize(), to.try_normalize()) else {
-                continue;
-            };
-            let r = Quat::from_rotation_arc(from, to);
-            for p in &mut chain[i + 1..] {
-                *p = pivot + r * (*p - pivot);
-            }
-        }
+        ccd_iteration(chain, target);
         error = chain[n - 1].distance(target);
         if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
             *slot = error;

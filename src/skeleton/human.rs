@@ -450,3 +450,59 @@ pub fn benchmark_humanoid(rng: &mut Rng) -> (Skeleton, RawClip) {
     let clip = RawClip::new("benchmark", 1.0, true, tracks).expect("a valid benchmark clip");
     (skeleton, clip)
 }
+
+/// The walk (`index` 1) or the run (2) travelling forwards, keyed `keys` times per cycle: the
+/// pelvis's translation gets a forward offset that keeps the stance foot still.
+/// ```text
+/// between keys k and k+1, with the stance foot the lower ankle at the segment's middle:
+/// z_root[k+1] = z_root[k] − (z_foot[k+1] − z_foot[k])
+/// ```
+/// so the character travels exactly as far as its planted foot pushes it back (no sliding at
+/// the keys). The last key's root is one cycle's travel ahead of the first: the clip no longer
+/// loops seamlessly by itself; [`super::RootMotion`] makes it. `None` for other clips or a bad
+/// key count.
+pub fn travelling_clip(skeleton: &Skeleton, index: usize, keys: usize) -> Option<RawClip> {
+    if !(1..=2).contains(&index) {
+        return None;
+    }
+    let raw = clip_with_keys(skeleton, index, keys)?;
+    let clip = super::clip::Clip::from_raw(&raw, skeleton).ok()?;
+    let feet = [skeleton.find("foot.L")?, skeleton.find("foot.R")?];
+    let n = skeleton.len();
+    let mut pose = skeleton.rest_pose();
+    let mut model = vec![glam::Affine3A::IDENTITY; n];
+    let mut ankles = Vec::with_capacity(keys);
+    for k in 0..keys {
+        for j in 0..n {
+            pose.local[j] = clip.key(k, j);
+        }
+        super::hierarchy::local_to_model(
+            skeleton.parents(),
+            &pose.local,
+            skeleton.scale_mode(),
+            &mut model,
+        );
+        ankles.push(feet.map(|f| Vec3::from(model[f].translation)));
+    }
+    let mut forward = vec![0.0f32; keys];
+    for k in 0..keys - 1 {
+        let height = |f: usize| ankles[k][f].y + ankles[k + 1][f].y;
+        let stance = if height(0) <= height(1) { 0 } else { 1 };
+        forward[k + 1] = forward[k] - (ankles[k + 1][stance].z - ankles[k][stance].z);
+    }
+    let mut tracks = raw.joints().to_vec();
+    let root = tracks[0].translation.as_ref()?;
+    let values: Vec<Vec3> = root
+        .values()
+        .iter()
+        .zip(&forward)
+        .map(|(v, z)| *v + Vec3::new(0.0, 0.0, *z))
+        .collect();
+    tracks[0].translation = crate::curves::Track::new(root.times().to_vec(), values).ok();
+    let name = if index == 1 {
+        "walk (travelling)"
+    } else {
+        "run (travelling)"
+    };
+    RawClip::new(name, raw.duration_sec(), true, tracks).ok()
+}

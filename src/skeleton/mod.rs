@@ -17,6 +17,7 @@
 //! | local transforms, TRS → affine, local-to-model | [`Transform`], [`trs_to_affine`], [`Pose`], [`local_to_model`] |
 //! | clips: editable and runtime forms, sampling | [`RawClip`], [`JointTracks`], [`Clip`], [`ClipCursor`], [`KeyInterpolation`], [`QuatInterpolation`], [`sample_rotation_channel`] |
 //! | blending | [`crossfade`], [`blend_weighted`], [`make_additive`], [`add_additive`], [`crossfade_masked`], [`subtree_mask`] |
+//! | locomotion: normalised time, root motion | [`sample_synchronised`], [`RootMotion`], [`weight_for_speed`] |
 //! | a character that needs no asset | [`human`]: a procedural simple human and its clips |
 //!
 //! Conventions: see the crate root (Y up, column vectors, glam quaternions `(x, y, z, w)`,
@@ -27,6 +28,7 @@ mod blend;
 mod clip;
 mod hierarchy;
 pub mod human;
+mod locomotion;
 
 pub use crate::transform::ScaleMode;
 pub use blend::{
@@ -40,3 +42,4 @@ pub use clip::{
 pub use hierarchy::{
     local_to_model, trs_to_affine, Pose, Skeleton, SkeletonError, Transform, MAX_JOINTS,
 };
+pub use locomotion::{sample_synchronised, synchronised_cycle, weight_for_speed, RootMotion};

@@ -7,9 +7,11 @@ mod bench_curves;
 mod bench_noise;
 mod bench_rotation;
 mod bench_skeleton;
+mod blending;
 mod curves;
 mod expressive;
 mod gltf;
+mod ik;
 mod noise;
 mod raster;
 mod rigid;
@@ -19,8 +21,10 @@ mod skeleton;
 mod transforms;
 mod viewer;
 
+pub use blending::{BlendScene, LocomotionScene};
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
+pub use ik::{AimScene, IkScene};
 pub use noise::{
     FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
     TexturesScene,

@@ -1,0 +1,109 @@
+// Lesson 07: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/ik/, src/figures/ik.rs), including picking and dragging the target.
+import { startLesson, markDrawn, Timeline, Plot, columns, GUI } from '../../www/lesson.js';
+import { IkScene, AimScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+
+/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
+function showNote(element, message) {
+  if (element.textContent !== message) element.textContent = message;
+}
+
+const viewer = await lesson.figure('#fig-ik');
+if (viewer) {
+  viewer.setCamera(0.25, 0.45, 0, 4.3, 0.1, 0.25);
+  const scene = new IkScene();
+  const p = {
+    segments: 2, x: 0.55, y: 0.65, z: 0.15, pole: 0, iterations: 10, limits: 'none', useExercise: false,
+    reset: () => { Object.assign(p, { x: 0.55, y: 0.65, z: 0.15, pole: 0 }); applyTarget(); scene.setPoleAngleDeg(0); refresh(); },
+  };
+  const gui = new GUI({ container: document.querySelector('#fig-ik .panel'), title: 'Inverse kinematics' });
+  const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
+  const plot = new Plot(document.getElementById('ik-plot'), {
+    title: 'Error after each iteration', xLabel: 'iteration', yLabel: 'log₁₀ error (m)',
+    series: ['CCD', 'FABRIK'], colors: ['#e68a00', '#17a2a8'], minSpan: 1, height: 170,
+  });
+  const update = () => {
+    plot.setData(columns(scene.errorSamples(), 3));
+    plot.setCursor(p.iterations);
+  };
+  const applyTarget = () => { scene.setTarget(p.x, p.y, p.z); update(); };
+
+  gui.add(p, 'segments', 2, 8, 1).name('segments').onChange(() => { scene.setSegments(p.segments); update(); });
+  const target = gui.addFolder('target (m, from each root)');
+  for (const axis of ['x', 'y', 'z']) target.add(p, axis, -1.5, 1.5, 0.01).name(axis).onChange(applyTarget);
+  gui.add(p, 'pole', -180, 180, 1).name('pole angle (°)').onChange(() => { scene.setPoleAngleDeg(p.pole); update(); });
+  gui.add(p, 'iterations', 1, 50, 1).name('iterations').onChange(() => { scene.setIterations(p.iterations); update(); });
+  gui.add(p, 'limits', ['none', 'hinges (bend one way)', 'cones (40°)']).name('joint limits').onChange(() => {
+    scene.setLimits(p.limits);
+    update();
+  });
+  gui.add(p, 'useExercise').name('use my exercise').onChange((on) => { scene.setUseExercise(on); update(); });
+  gui.add(p, 'reset').name('reset the target');
+  update();
+
+  // Dragging a target: capture-phase listeners on the stage run before the canvas's orbit
+  // controls, and stop the event only when the pointer is on a target (Rust decides).
+  const canvas = document.querySelector('#fig-ik .stage canvas');
+  const stage = canvas.parentElement;
+  const local = (e) => {
+    const r = canvas.getBoundingClientRect();
+    return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
+  };
+  let dragging = null;
+  stage.addEventListener('pointerdown', (e) => {
+    if (e.target !== canvas || e.button !== 0 || e.shiftKey) return;
+    if (!scene.hitsTarget(...local(e))) return;
+    e.stopPropagation();
+    dragging = e.pointerId;
+    canvas.setPointerCapture(e.pointerId);
+    canvas.classList.add('dragging');
+  }, { capture: true });
+  stage.addEventListener('pointermove', (e) => {
+    if (dragging === null) {
+      if (e.target === canvas) canvas.classList.toggle('over-target', scene.hitsTarget(...local(e)));
+      return;
+    }
+    if (e.pointerId !== dragging) return;
+    e.stopPropagation();
+    scene.dragTarget(...local(e));
+    [p.x, p.y, p.z] = scene.target().map((v) => Math.round(v * 100) / 100);
+    refresh();
+    update();
+  }, { capture: true });
+  const release = (e) => {
+    if (e.pointerId !== dragging) return;
+    e.stopPropagation();
+    dragging = null;
+    canvas.classList.remove('dragging');
+  };
+  stage.addEventListener('pointerup', release, { capture: true });
+  stage.addEventListener('pointercancel', release, { capture: true });
+
+  const note = document.getElementById('ik-note');
+  lesson.onFrame(() => {
+    showNote(note, scene.draw(viewer));
+    markDrawn('#fig-ik');
+  });
+}
+
+const aimViewer = await lesson.figure('#fig-aim');
+if (aimViewer) {
+  aimViewer.setCamera(0.6, 1.5, 0.4, 4.0, -0.6, 0.2);
+  const scene = new AimScene();
+  const p = { x: 1.5, y: 1.9, z: 1.0, cone: 70 };
+  const gui = new GUI({ container: document.querySelector('#fig-aim .panel'), title: 'Aim' });
+  const target = gui.addFolder('target (m)');
+  const applyTarget = () => scene.setTarget(p.x, p.y, p.z);
+  target.add(p, 'x', -3, 3, 0.05).onChange(applyTarget);
+  target.add(p, 'y', 0, 3, 0.05).onChange(applyTarget);
+  target.add(p, 'z', -3, 3, 0.05).onChange(applyTarget);
+  gui.add(p, 'cone', 0, 180, 1).name('largest turn (°)').onChange(() => scene.setMaxAngleDeg(p.cone));
+  const timeline = new Timeline(document.getElementById('aim-timeline'), { duration: 8, playing: true });
+  const note = document.getElementById('aim-note');
+  lesson.onFrame((dt) => {
+    showNote(note, scene.draw(aimViewer, timeline.advance(dt)));
+    markDrawn('#fig-aim');
+  });
+}

@@ -1,0 +1,61 @@
+// Lesson 08: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/skeleton/, src/figures/blending.rs).
+import { startLesson, markDrawn, Timeline, GUI } from '../../www/lesson.js';
+import { BlendScene, LocomotionScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+
+/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
+function showNote(element, message) {
+  if (element.textContent !== message) element.textContent = message;
+}
+
+const blendViewer = await lesson.figure('#fig-blend');
+if (blendViewer) {
+  blendViewer.setCamera(0, 0.9, 0, 3.0, 0.6, 0.15);
+  const scene = new BlendScene();
+  const timeline = new Timeline(document.getElementById('blend-timeline'), { duration: scene.durationSec(), playing: true });
+  const p = { a: 'walk', b: 'wave', weight: 0.5, mask: 'whole body', additive: 'none', additiveWeight: 1, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-blend .panel'), title: 'Blend' });
+  const clips = scene.clipNames();
+  const applyClips = () => {
+    scene.setClips(p.a, p.b);
+    timeline.duration = scene.durationSec();
+    timeline.time %= timeline.duration;
+    timeline.show();
+  };
+  gui.add(p, 'a', clips).name('clip A').onChange(applyClips);
+  gui.add(p, 'b', clips).name('clip B').onChange(applyClips);
+  gui.add(p, 'weight', 0, 1, 0.01).name('weight of B').onChange(() => scene.setWeight(p.weight));
+  gui.add(p, 'mask', ['whole body', 'upper body from B', 'lower body from B']).name('mask').onChange(() => scene.setMask(p.mask));
+  const applyAdditive = () => scene.setAdditive(p.additive, p.additiveWeight);
+  gui.add(p, 'additive', ['none', 'lean forward (a pose)', 'wave (a clip)']).name('additive layer').onChange(applyAdditive);
+  gui.add(p, 'additiveWeight', 0, 1, 0.01).name('additive weight').onChange(applyAdditive);
+  gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
+  const note = document.getElementById('blend-note');
+  lesson.onFrame((dt) => {
+    showNote(note, scene.draw(blendViewer, timeline.advance(dt)));
+    markDrawn('#fig-blend');
+  });
+}
+
+const locoViewer = await lesson.figure('#fig-locomotion');
+if (locoViewer) {
+  locoViewer.setCamera(0, 0.8, 0, 4.2, 1.2, 0.25);
+  const scene = new LocomotionScene();
+  const [lo, hi] = scene.speedRange();
+  const round = (v) => Math.round(v * 100) / 100;
+  const p = { speed: round((lo + hi) / 2), synchronised: true, rootMotion: true };
+  scene.setSpeed(p.speed);
+  // Eight seconds, then the walk starts again from the beginning of the loop.
+  const timeline = new Timeline(document.getElementById('loco-timeline'), { duration: 8, playing: true });
+  const gui = new GUI({ container: document.querySelector('#fig-locomotion .panel'), title: 'Locomotion' });
+  gui.add(p, 'speed', Math.ceil(lo * 100) / 100, Math.floor(hi * 100) / 100, 0.01).name('speed (m/s)').onChange(() => scene.setSpeed(p.speed));
+  gui.add(p, 'synchronised').name('synchronised').onChange((on) => scene.setSynchronised(on));
+  gui.add(p, 'rootMotion').name('root motion').onChange((on) => scene.setRootMotion(on));
+  const note = document.getElementById('loco-note');
+  lesson.onFrame((dt) => {
+    showNote(note, scene.draw(locoViewer, timeline.advance(dt)));
+    markDrawn('#fig-locomotion');
+  });
+}

@@ -1,0 +1,635 @@
+//! Figure logic for lesson 08, "Blending" (see [`crate::figures`]).
+//!
+//! [`BlendFigure`]: the simple human crossfading two clips (clip B at the same phase as clip A),
+//! with a mask (whole body, upper or lower body from B) and an additive layer (a lean pose or the
+//! wave clip, each made relative to the rest pose) on top; with "use my exercise" every joint is
+//! blended by the student's 6.3 `crossfade_joint` and compared with the reference.
+//!
+//! [`LocomotionFigure`]: the travelling walk and run blended for a speed, synchronised (normalised
+//! time) or not, with root motion extracted and applied to the character or left in the pose; the
+//! footprints of the last second and a half show whether the feet slide.
+
+use super::{
+    compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
+    DEFAULT_RUNNER,
+};
+use crate::exercises::run;
+use crate::skeleton::{
+    add_additive, crossfade_transform, human, local_to_model, make_additive, sample_synchronised,
+    subtree_mask, synchronised_cycle, weight_for_speed, Clip, ClipCursor, Pose, RootMotion,
+    Skeleton,
+};
+use crate::transform::JointShape;
+use glam::{Affine3A, EulerRot, Mat4, Quat, Vec3};
+
+const EXERCISE_FILE: &str = "src/exercises/skeleton.rs";
+/// How close the student's blend must be to the reference's.
+const TOLERANCE: f32 = 1e-4;
+const JOINT_RADIUS: f32 = 0.02;
+
+/// What the mask dropdown offers, in order.
+pub const MASKS: [&str; 3] = ["whole body", "upper body from B", "lower body from B"];
+/// What the additive dropdown offers, in order.
+pub const ADDITIVES: [&str; 3] = ["none", "lean forward (a pose)", "wave (a clip)"];
+
+/// The lesson's first figure: crossfade, mask, additive layer.
+#[derive(Clone, Debug)]
+pub struct BlendFigure {
+    skeleton: Skeleton,
+    shapes: Vec<JointShape>,
+    clips: Vec<Clip>,
+    a: usize,
+    b: usize,
+    weight: f32,
+    mask: usize,
+    additive: usize,
+    additive_weight: f32,
+    use_exercise: bool,
+    runner: Runner,
+    /// Per-joint weight of clip B for the current mask and weight.
+    joint_weights: Vec<f32>,
+    lean: Pose,
+    pose_a: Pose,
+    pose_b: Pose,
+    pose: Pose,
+    scratch: Pose,
+    model: Vec<Affine3A>,
+}
+
+impl Default for BlendFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl BlendFigure {
+    /// Walk (A) and wave (B) at weight 0.5, whole body, no additive layer.
+    pub fn new() -> Self {
+        let (skeleton, shapes) = human::simple_human();
+        let clips = (0..human::CLIP_NAMES.len())
+            .map(|i| {
+                let raw = human::clip(&skeleton, i).expect("a built-in clip");
+                Clip::from_raw(&raw, &skeleton).expect("the built-in clips build")
+            })
+            .collect();
+        // The lean: spine and chest forward, head turned, as a difference from the rest pose.
+        let mut lean_pose = skeleton.rest_pose();
+        for (name, e) in [
+            ("spine", Vec3::new(0.35, 0.0, 0.0)),
+            ("chest", Vec3::new(0.25, 0.2, 0.0)),
+            ("head", Vec3::new(-0.2, 0.5, 0.0)),
+        ] {
+            let j = skeleton.find(name).expect("a joint of the human");
+            lean_pose.local[j].rotation *= Quat::from_euler(EulerRot::XYZ, e.x, e.y, e.z);
+        }
+        let mut lean = skeleton.rest_pose();
+        make_additive(&lean_pose, &skeleton.rest_pose(), &mut lean).expect("same skeleton");
+        let n = skeleton.len();
+        let mut figure = Self {
+            clips,
+            a: 1,
+            b: 3,
+            weight: 0.5,
+            mask: 0,
+            additive: 0,
+            additive_weight: 1.0,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            joint_weights: vec![0.5; n],
+            lean,
+            pose_a: skeleton.rest_pose(),
+            pose_b: skeleton.rest_pose(),
+            pose: skeleton.rest_pose(),
+            scratch: skeleton.rest_pose(),
+            model: vec![Affine3A::IDENTITY; n],
+            skeleton,
+            shapes,
+        };
+        figure.update_weights();
+        figure
+    }
+
+    pub fn clip_names(&self) -> Vec<String> {
+        human::CLIP_NAMES.iter().map(|s| s.to_string()).collect()
+    }
+
+    fn clip_index(what: &str, name: &str) -> Result<usize, String> {
+        human::CLIP_NAMES
+            .iter()
+            .position(|&c| c == name)
+            .ok_or_else(|| format!("{what}: no clip named {name:?}"))
+    }
+
+    /// Clip A (the timeline follows it) and clip B (played at the same phase).
+    pub fn set_clips(&mut self, a: &str, b: &str) -> Result<(), String> {
+        let (a, b) = (
+            Self::clip_index("clip A", a)?,
+            Self::clip_index("clip B", b)?,
+        );
+        self.a = a;
+        self.b = b;
+        Ok(())
+    }
+
+    /// Weight of clip B in [0, 1] (0: all A).
+    pub fn set_weight(&mut self, w: f32) -> Result<(), String> {
+        self.weight = in_range("weight of B", w, 0.0, 1.0)?;
+        self.update_weights();
+        Ok(())
+    }
+
+    /// One of [`MASKS`].
+    pub fn set_mask(&mut self, name: &str) -> Result<(), String> {
+        self.mask = MASKS
+            .iter()
+            .position(|&m| m == name)
+            .ok_or_else(|| format!("mask must be one of {}, got {name:?}", MASKS.join(", ")))?;
+        self.update_weights();
+        Ok(())
+    }
+
+    /// One of [`ADDITIVES`], with its weight in [0, 1].
+    pub fn set_additive(&mut self, name: &str, weight: f32) -> Result<(), String> {
+        self.additive = ADDITIVES.iter().position(|&m| m == name).ok_or_else(|| {
+            format!(
+                "additive layer must be one of {}, got {name:?}",
+                ADDITIVES.join(", ")
+            )
+        })?;
+        self.additive_weight = in_range("additive weight", weight, 0.0, 1.0)?;
+        Ok(())
+    }
+
+    /// Blends every joint with the student's exercise 6.3 (through the runner).
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    fn update_weights(&mut self) {
+        let spine = self.skeleton.find("spine").expect("a joint of the human");
+        self.joint_weights = match self.mask {
+            0 => vec![self.weight; self.skeleton.len()],
+            1 => subtree_mask(&self.skeleton, spine, self.weight, 0.0),
+            _ => subtree_mask(&self.skeleton, spine, 0.0, self.weight),
+        };
+    }
+
+    /// Clip B's weight at each joint (for the tests and the colours).
+    pub fn joint_weights(&self) -> &[f32] {
+        &self.joint_weights
+    }
+
+    /// Clip A's duration, seconds (the timeline's).
+    pub fn duration_sec(&self) -> f32 {
+        self.clips[self.a].duration_sec()
+    }
+
+    pub fn skeleton(&self) -> &Skeleton {
+        &self.skeleton
+    }
+
+    /// The blended local pose after the last [`BlendFigure::pose`].
+    pub fn local_pose(&self) -> &Pose {
+        &self.pose
+    }
+
+    /// Model-space position of a joint after the last pose.
+    pub fn joint_position(&self, joint: usize) -> Option<Vec3> {
+        self.model.get(joint).map(|m| m.translation.into())
+    }
+
+    /// Poses at `time_sec`: A and B at the same phase, crossfaded with the per-joint weights, the
+    /// additive layer on top. Returns the note.
+    pub fn pose(&mut self, time_sec: f32) -> Result<String, String> {
+        let t = finite("time", time_sec)?;
+        let (a, b) = (&self.clips[self.a], &self.clips[self.b]);
+        let phase = (t / a.duration_sec()).rem_euclid(1.0);
+        a.sample(t, &mut ClipCursor::new(), &mut self.pose_a);
+        let tb = (phase * b.duration_sec()).min(b.duration_sec() * 0.999_999);
+        b.sample(tb, &mut ClipCursor::new(), &mut self.pose_b);
+        for (j, o) in self.pose.local.iter_mut().enumerate() {
+            *o = crossfade_transform(
+                &self.pose_a.local[j],
+                &self.pose_b.local[j],
+                self.joint_weights[j],
+            );
+        }
+        let mut notes = vec![self.describe()];
+        if self.use_exercise {
+            notes.push(self.student_blend());
+        }
+        match self.additive {
+            1 => {
+                add_additive(
+                    &self.pose,
+                    &self.lean,
+                    self.additive_weight,
+                    &mut self.scratch,
+                )
+                .map_err(|e| e.to_string())?;
+                std::mem::swap(&mut self.pose, &mut self.scratch);
+            }
+            2 => {
+                // The wave clip minus the rest pose, at the same phase.
+                let wave = &self.clips[3];
+                let tw = (phase * wave.duration_sec()).min(wave.duration_sec() * 0.999_999);
+                wave.sample(tw, &mut ClipCursor::new(), &mut self.scratch);
+                let rest = self.skeleton.rest_pose();
+                let mut delta = self.skeleton.rest_pose();
+                make_additive(&self.scratch, &rest, &mut delta).map_err(|e| e.to_string())?;
+                // The wave's pelvis translation is the rest one: no travel is added.
+                add_additive(&self.pose, &delta, self.additive_weight, &mut self.scratch)
+                    .map_err(|e| e.to_string())?;
+                std::mem::swap(&mut self.pose, &mut self.scratch);
+            }
+            _ => {}
+        }
+        local_to_model(
+            self.skeleton.parents(),
+            &self.pose.local,
+            self.skeleton.scale_mode(),
+            &mut self.model,
+        );
+        Ok(notes.join(" "))
+    }
+
+    fn describe(&self) -> String {
+        let names = human::CLIP_NAMES;
+        let w = format_number(self.weight);
+        let mix = match self.mask {
+            0 => format!("{} crossfaded with {} at weight {w}.", names[self.a], names[self.b]),
+            1 => format!(
+                "Upper body (spine and up): {} mixed into {} at weight {w}; legs and pelvis: {} only.",
+                names[self.b], names[self.a], names[self.a]
+            ),
+            _ => format!(
+                "Legs and pelvis: {} mixed into {} at weight {w}; upper body: {} only.",
+                names[self.b], names[self.a], names[self.a]
+            ),
+        };
+        let additive = match self.additive {
+            0 => String::new(),
+            k => format!(
+                " Additive layer: {} at weight {}, added on top.",
+                ADDITIVES[k],
+                format_number(self.additive_weight)
+            ),
+        };
+        mix + &additive
+    }
+
+    /// Exercise 6.3 on every joint (before the additive layer); poses the figure with the
+    /// student's blend. Returns the note.
+    fn student_blend(&mut self) -> String {
+        let exercise = "exercise 6.3 crossfade_joint";
+        let mut first_wrong = None;
+        for j in 0..self.skeleton.len() {
+            let (x, y, w) = (
+                self.pose_a.local[j],
+                self.pose_b.local[j],
+                self.joint_weights[j],
+            );
+            let yours = match run::crossfade_joint(
+                self.runner,
+                x.translation,
+                x.rotation,
+                y.translation,
+                y.rotation,
+                w,
+            ) {
+                Ok(answer) => answer,
+                Err(failure) => return failure_note(exercise, EXERCISE_FILE, &failure),
+            };
+            let reference = self.pose.local[j];
+            let q = if yours.1.dot(reference.rotation) < 0.0 {
+                -yours.1
+            } else {
+                yours.1
+            };
+            let flat_yours: Vec<f32> = yours.0.to_array().into_iter().chain(q.to_array()).collect();
+            let flat_reference: Vec<f32> = reference
+                .translation
+                .to_array()
+                .into_iter()
+                .chain(reference.rotation.to_array())
+                .collect();
+            let close = flat_yours
+                .iter()
+                .zip(&flat_reference)
+                .all(|(u, v)| (u - v).abs() <= TOLERANCE);
+            if first_wrong.is_none() && !close {
+                first_wrong = Some((j, w, flat_yours, flat_reference));
+            }
+            if yours.0.is_finite() && yours.1.is_finite() && yours.1.length() > 0.5 {
+                self.pose.local[j].translation = yours.0;
+                self.pose.local[j].rotation = yours.1.normalize();
+            }
+        }
+        match first_wrong {
+            None => format!(
+                "Your crossfade_joint matches the reference at all {} joints.",
+                self.skeleton.len()
+            ),
+            Some((j, w, yours, reference)) => {
+                let at = format!(
+                    "joint {j} ({}), w = {}",
+                    self.skeleton.names()[j],
+                    format_number(w)
+                );
+                compare_note("crossfade_joint", &at, &yours, &reference, TOLERANCE).1
+            }
+        }
+    }
+
+    /// Poses at `time_sec` and draws. Returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let note = self.pose(time_sec)?;
+        frame.grid(12, 0.25);
+        draw_character(
+            frame,
+            &self.skeleton,
+            &self.shapes,
+            &self.model,
+            Mat4::IDENTITY,
+            |j| palette::GREY.lerp(palette::TEAL, self.joint_weights[j]),
+            |j| 0.7 * self.joint_weights[j],
+        );
+        Ok(note)
+    }
+}
+
+/// Body boxes (each tinted towards `color(j)` by `tint(j)` ∈ [0, 1]), joints coloured by
+/// `color(j)`, lines between joints, all placed by `world`.
+fn draw_character(
+    frame: &mut Frame,
+    skeleton: &Skeleton,
+    shapes: &[JointShape],
+    model: &[Affine3A],
+    world: Mat4,
+    color: impl Fn(usize) -> Vec3,
+    tint: impl Fn(usize) -> f32,
+) {
+    for (j, (shape, m)) in shapes.iter().zip(model).enumerate() {
+        let box_model = world
+            * Mat4::from(*m)
+            * Mat4::from_translation(shape.center)
+            * Mat4::from_scale(shape.half_extents);
+        frame.mesh(MeshId::CUBE, box_model, shape.color.lerp(color(j), tint(j)));
+    }
+    for (j, &parent) in skeleton.parents().iter().enumerate() {
+        let p = world.transform_point3(model[j].translation.into());
+        frame.mesh(
+            MeshId::SPHERE,
+            Mat4::from_scale_rotation_translation(Vec3::splat(JOINT_RADIUS), Quat::IDENTITY, p),
+            color(j),
+        );
+        if parent >= 0 {
+            let a = world.transform_point3(model[parent as usize].translation.into());
+            frame.line(a, p, color(j));
+        }
+    }
+}
+
+/// What the locomotion figure shows.
+#[derive(Clone, Debug)]
+pub struct LocomotionFigure {
+    skeleton: Skeleton,
+    shapes: Vec<JointShape>,
+    walk: Clip,
+    run: Clip,
+    motion: [RootMotion; 2],
+    speed: f32,
+    synchronised: bool,
+    root_motion: bool,
+    pose: Pose,
+    scratch: Pose,
+    model: Vec<Affine3A>,
+    footprints: Vec<Vec3>,
+    /// How far the planted feet slid over the footprint window, metres, at the last draw.
+    slide_m: f32,
+    /// Where the character's origin was at the last draw (before wrapping onto the track).
+    origin: Vec3,
+}
+
+impl Default for LocomotionFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The ankle's height with the foot flat on the ground, metres.
+const CONTACT_HEIGHT: f32 = 0.06;
+/// The character walks along z on a loop this long (metres), so it stays in view.
+const TRACK_LENGTH: f32 = 4.0;
+/// How far back in time the footprints go, seconds, and how many samples.
+const FOOTPRINT_SEC: f32 = 1.5;
+const FOOTPRINT_SAMPLES: usize = 60;
+
+impl LocomotionFigure {
+    /// Halfway between walking and running speed, synchronised, root motion on.
+    pub fn new() -> Self {
+        let (skeleton, shapes) = human::simple_human();
+        let clip = |i| {
+            let raw = human::travelling_clip(&skeleton, i, 25).expect("the travelling clips");
+            Clip::from_raw(&raw, &skeleton).expect("the travelling clips build")
+        };
+        let (walk, run) = (clip(1), clip(2));
+        let motion = [RootMotion::from_clip(&walk), RootMotion::from_clip(&run)];
+        let speed = 0.5 * (motion[0].speed() + motion[1].speed());
+        let n = skeleton.len();
+        Self {
+            walk,
+            run,
+            motion,
+            speed,
+            synchronised: true,
+            root_motion: true,
+            pose: skeleton.rest_pose(),
+            scratch: skeleton.rest_pose(),
+            model: vec![Affine3A::IDENTITY; n],
+            footprints: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
+            slide_m: 0.0,
+            origin: Vec3::ZERO,
+            skeleton,
+            shapes,
+        }
+    }
+
+    /// Walking and running speeds, m/s (the slider's range).
+    pub fn speed_range(&self) -> (f32, f32) {
+        (self.motion[0].speed(), self.motion[1].speed())
+    }
+
+    /// Speed in m/s, within [`LocomotionFigure::speed_range`].
+    pub fn set_speed(&mut self, speed: f32) -> Result<(), String> {
+        let (lo, hi) = self.speed_range();
+        self.speed = in_range("speed", speed, lo, hi)?;
+        Ok(())
+    }
+
+    pub fn set_synchronised(&mut self, on: bool) {
+        self.synchronised = on;
+    }
+
+    pub fn set_root_motion(&mut self, on: bool) {
+        self.root_motion = on;
+    }
+
+    /// How far the planted feet slid over the last 1.5 s, metres (at the last draw).
+    pub fn slide_m(&self) -> f32 {
+        self.slide_m
+    }
+
+    /// The character's position at the last draw (root motion; zero when it stays in the pose).
+    pub fn origin(&self) -> Vec3 {
+        self.origin
+    }
+
+    /// The footprints of the last draw, relative to the character.
+    pub fn footprints(&self) -> &[Vec3] {
+        &self.footprints
+    }
+
+    /// The run's weight for the current speed.
+    pub fn weight(&self) -> f32 {
+        weight_for_speed(&self.motion[0], &self.motion[1], self.speed)
+    }
+
+    /// Poses at `time_sec` into `self.pose` and returns where the character's origin is (model
+    /// space of the scene).
+    fn pose_at(&mut self, time_sec: f32) -> Vec3 {
+        let w = self.weight();
+        let (cycle, _, _) = synchronised_cycle(&self.motion[0], &self.motion[1], w);
+        let mut cursors = [ClipCursor::new(); 2];
+        // `within`: the root's travel inside the current cycle; `total`: since time 0.
+        let (within, total) = if self.synchronised {
+            let phase = time_sec / cycle;
+            let rm = [&self.motion[0], &self.motion[1]];
+            let d = sample_synchronised(
+                &self.walk,
+                &self.run,
+                w,
+                phase,
+                &mut cursors,
+                &mut self.scratch,
+                Some(rm),
+                &mut self.pose,
+            );
+            let travel = self.motion[0]
+                .cycle_travel
+                .lerp(self.motion[1].cycle_travel, w);
+            (d, phase.floor() * travel + d)
+        } else {
+            // The naive blend: both clips at the same clock time, each looping on its own.
+            self.walk.sample(time_sec, &mut cursors[0], &mut self.pose);
+            self.run
+                .sample(time_sec, &mut cursors[1], &mut self.scratch);
+            let da = self.motion[0].extract(&mut self.pose);
+            let db = self.motion[1].extract(&mut self.scratch);
+            let pa = self.motion[0].position(time_sec, da);
+            let pb = self.motion[1].position(time_sec, db);
+            for (x, y) in self.pose.local.iter_mut().zip(&self.scratch.local) {
+                *x = crossfade_transform(x, y, w);
+            }
+            (da.lerp(db, w), pa.lerp(pb, w))
+        };
+        if self.root_motion {
+            total
+        } else {
+            // Root motion left in the pose: the root travels within a cycle, then snaps back.
+            self.pose.local[0].translation += within;
+            Vec3::ZERO
+        }
+    }
+
+    /// Poses at `time_sec`, draws the character and its footprints. Returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let t = finite("time", time_sec)?;
+        // Footprints: planted ankles over the last FOOTPRINT_SEC seconds, relative to now.
+        self.footprints.clear();
+        let feet = [
+            self.skeleton.find("foot.L").expect("a foot"),
+            self.skeleton.find("foot.R").expect("a foot"),
+        ];
+        let now = self.pose_at(t);
+        let mut slide = 0.0f32;
+        let mut last: [Option<Vec3>; 2] = [None, None];
+        for k in 0..=FOOTPRINT_SAMPLES {
+            let s = t - FOOTPRINT_SEC * (1.0 - k as f32 / FOOTPRINT_SAMPLES as f32);
+            let origin = self.pose_at(s);
+            local_to_model(
+                self.skeleton.parents(),
+                &self.pose.local,
+                self.skeleton.scale_mode(),
+                &mut self.model,
+            );
+            for (f, &joint) in feet.iter().enumerate() {
+                let p = Vec3::from(self.model[joint].translation) + origin - now;
+                if p.y < CONTACT_HEIGHT + 0.005 {
+                    self.footprints.push(p);
+                    if let Some(q) = last[f] {
+                        slide += Vec3::new(p.x - q.x, 0.0, p.z - q.z).length();
+                    }
+                    last[f] = Some(p);
+                } else {
+                    last[f] = None;
+                }
+            }
+        }
+        let origin = self.pose_at(t);
+        self.slide_m = slide;
+        self.origin = origin;
+        local_to_model(
+            self.skeleton.parents(),
+            &self.pose.local,
+            self.skeleton.scale_mode(),
+            &mut self.model,
+        );
+        // The character walks along z on a loop of TRACK_LENGTH, so it stays in view.
+        let z = (origin.z + 0.5 * TRACK_LENGTH).rem_euclid(TRACK_LENGTH) - 0.5 * TRACK_LENGTH;
+        let place = Vec3::new(origin.x, 0.0, z);
+        frame.grid(16, 0.25);
+        for p in &self.footprints {
+            frame.point(
+                *p + place - Vec3::Y * (CONTACT_HEIGHT - 0.005),
+                0.018,
+                palette::PURPLE,
+            );
+        }
+        draw_character(
+            frame,
+            &self.skeleton,
+            &self.shapes,
+            &self.model,
+            Mat4::from_translation(place),
+            |_| palette::DARK,
+            |_| 0.0,
+        );
+        let w = self.weight();
+        let (cycle, _, speed) = synchronised_cycle(&self.motion[0], &self.motion[1], w);
+        let mut note = format!(
+            "{} m/s: run weight {}, one cycle takes {} s.",
+            format_number(speed),
+            format_number(w),
+            format_number(cycle)
+        );
+        note += if self.synchronised {
+            " Walk and run sampled at the same phase of their cycles."
+        } else {
+            " Walk and run sampled at the same clock time (not synchronised)."
+        };
+        note += &format!(
+            " Planted feet slid {} cm in the last {} s.",
+            format_number((slide * 100.0 * 10.0).round() / 10.0),
+            format_number(FOOTPRINT_SEC)
+        );
+        if !self.root_motion {
+            note += " Root motion left in the pose: the character steps forwards within each cycle and snaps back at every loop.";
+        }
+        Ok(note)
+    }
+}

@@ -1,0 +1,870 @@
+//! Figure logic for lesson 07, "Inverse kinematics" (see [`crate::figures`]).
+//!
+//! [`IkFigure`]: three copies of one chain side by side, each solving for the same target
+//! (relative to its root): two-joint analytic IK (law of cosines, with a pole), CCD and FABRIK,
+//! each from the same rest pose with at most `iterations` iterations; joint limits (hinges or
+//! cones) for the iterative two; the error after each iteration for the plot; dragging the
+//! target in the view; and the check of the student's exercises 7.1 and 7.2.
+//!
+//! [`AimFigure`]: a head that looks at a target within a cone ([`crate::ik::aim`]).
+
+use super::{
+    compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
+    DEFAULT_RUNNER,
+};
+use crate::camera::OrbitCamera;
+use crate::exercises::run;
+use crate::ik::{aim, ccd, ccd_limited, fabrik, fabrik_limited, two_joint, IkResult, JointLimit};
+use glam::{Mat4, Quat, Vec2, Vec3};
+
+const DEG: f32 = std::f32::consts::PI / 180.0;
+const EXERCISE_FILE: &str = "src/exercises/ik.rs";
+/// The iterative solvers stop within this distance of the target, metres (0.1 mm).
+pub const TOLERANCE_M: f32 = 1e-4;
+/// The most iterations the slider offers; the plot always shows this many.
+pub const MAX_ITERATIONS: usize = 50;
+/// Segments per chain, at least and at most.
+pub const MIN_SEGMENTS: usize = 2;
+pub const MAX_SEGMENTS: usize = 8;
+/// Total length of every chain, metres.
+const CHAIN_LENGTH: f32 = 1.0;
+/// Where the three chains stand: analytic, CCD, FABRIK (x of each root, metres).
+const ROOTS_X: [f32; 3] = [-1.1, 0.0, 1.1];
+/// How close (CSS pixels) a pointer must come to a target to grab it.
+const GRAB_RADIUS_PX: f32 = 18.0;
+/// How close the student's joints must be to the reference's, metres.
+const STUDENT_TOLERANCE: f32 = 2e-3;
+/// The bend of the rest pose at each joint, about −z (the chain leans towards +x).
+const REST_BEND_RAD: f32 = 12.0 * DEG;
+
+/// What the joint-limits dropdown offers, in order.
+pub const LIMIT_MODES: [&str; 3] = ["none", "hinges (bend one way)", "cones (40°)"];
+
+/// The three solvers, in the order the chains stand.
+pub const SOLVERS: [&str; 3] = ["two-joint", "CCD", "FABRIK"];
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Limits {
+    None,
+    Hinges,
+    Cones,
+}
+
+/// The lesson's first figure: one chain, three solvers.
+#[derive(Clone, Debug)]
+pub struct IkFigure {
+    segments: usize,
+    /// The target relative to each chain's root, metres.
+    target: Vec3,
+    pole_angle_rad: f32,
+    iterations: usize,
+    limits: Limits,
+    use_exercise: bool,
+    runner: Runner,
+    camera: Option<(OrbitCamera, Vec2)>,
+    dirty: bool,
+    rest: Vec<Vec3>,
+    /// Solved chains relative to the root: analytic (empty unless 2 segments), CCD, FABRIK.
+    solved: [Vec<Vec3>; 3],
+    results: [Option<IkResult>; 3],
+    /// Error after each of [`MAX_ITERATIONS`] iterations (the last one repeated after a stop).
+    errors: [Vec<f32>; 2],
+    /// The student's chains (analytic, CCD) when "use my exercise" gave one.
+    student: [Option<Vec<Vec3>>; 2],
+    notes: Vec<String>,
+}
+
+impl Default for IkFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl IkFigure {
+    /// Two segments, the target up and to the right, the pole above the root→target line, 10
+    /// iterations, no limits.
+    pub fn new() -> Self {
+        let mut figure = Self {
+            segments: 2,
+            target: Vec3::new(0.55, 0.65, 0.15),
+            pole_angle_rad: 0.0,
+            iterations: 10,
+            limits: Limits::None,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            camera: None,
+            dirty: true,
+            rest: Vec::new(),
+            solved: Default::default(),
+            results: [None; 3],
+            errors: [vec![0.0; MAX_ITERATIONS], vec![0.0; MAX_ITERATIONS]],
+            student: [None, None],
+            notes: Vec::new(),
+        };
+        figure.build_rest();
+        figure
+    }
+
+    /// The rest pose the iterative solvers start from: `segments` equal segments from the root
+    /// straight up, each joint bent a little about −z (the chain leans towards +x, the side the
+    /// hinges bend to), at most 45° in all.
+    fn build_rest(&mut self) {
+        let n = self.segments;
+        let l = CHAIN_LENGTH / n as f32;
+        let bend = REST_BEND_RAD.min(45.0 * DEG / (n - 1).max(1) as f32);
+        self.rest.clear();
+        self.rest.push(Vec3::ZERO);
+        let mut dir = Vec3::Y;
+        for i in 0..n {
+            if i > 0 {
+                dir = Quat::from_rotation_z(-bend) * dir;
+            }
+            let last = self.rest[i];
+            self.rest.push(last + dir * l);
+        }
+        self.dirty = true;
+    }
+
+    pub fn set_segments(&mut self, segments: f32) -> Result<(), String> {
+        let s = in_range(
+            "segments",
+            segments,
+            MIN_SEGMENTS as f32,
+            MAX_SEGMENTS as f32,
+        )?;
+        self.segments = s.round() as usize;
+        self.build_rest();
+        Ok(())
+    }
+
+    pub fn segments(&self) -> usize {
+        self.segments
+    }
+
+    /// The target relative to each chain's root, each coordinate in [−1.5, 1.5] m.
+    pub fn set_target(&mut self, target: Vec3) -> Result<(), String> {
+        self.target = Vec3::new(
+            in_range("target x", target.x, -1.5, 1.5)?,
+            in_range("target y", target.y, -1.5, 1.5)?,
+            in_range("target z", target.z, -1.5, 1.5)?,
+        );
+        self.dirty = true;
+        Ok(())
+    }
+
+    pub fn target(&self) -> Vec3 {
+        self.target
+    }
+
+    /// Where the pole sits around the root→target line, degrees in [−180, 180]; 0 puts it on
+    /// the upper side.
+    pub fn set_pole_angle_deg(&mut self, deg: f32) -> Result<(), String> {
+        self.pole_angle_rad = in_range("pole angle", deg, -180.0, 180.0)? * DEG;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// The most iterations CCD and FABRIK may take, in [1, [`MAX_ITERATIONS`]].
+    pub fn set_iterations(&mut self, iterations: f32) -> Result<(), String> {
+        self.iterations =
+            in_range("iterations", iterations, 1.0, MAX_ITERATIONS as f32)?.round() as usize;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// One of [`LIMIT_MODES`].
+    pub fn set_limits(&mut self, name: &str) -> Result<(), String> {
+        self.limits = match LIMIT_MODES.iter().position(|&m| m == name) {
+            Some(0) => Limits::None,
+            Some(1) => Limits::Hinges,
+            Some(_) => Limits::Cones,
+            None => {
+                return Err(format!(
+                    "joint limits must be one of {}, got {name:?}",
+                    LIMIT_MODES.join(", ")
+                ))
+            }
+        };
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Runs the student's exercises 7.1 and 7.2 (through the runner) instead of the reference.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.dirty = true;
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.dirty = true;
+    }
+
+    /// Each joint's limit and the root direction, for the current mode.
+    fn joint_limits(&self) -> Option<(Vec<JointLimit>, Vec3)> {
+        let n = self.segments;
+        match self.limits {
+            Limits::None => None,
+            Limits::Hinges => {
+                // The root swings ±90° from straight up; the others bend one way (towards +x
+                // when the chain points up), like fingers.
+                let mut limits = vec![
+                    JointLimit::Hinge {
+                        axis: Vec3::Z,
+                        min_rad: -120.0 * DEG,
+                        max_rad: 0.0,
+                    };
+                    n
+                ];
+                limits[0] = JointLimit::Hinge {
+                    axis: Vec3::Z,
+                    min_rad: -90.0 * DEG,
+                    max_rad: 90.0 * DEG,
+                };
+                Some((limits, Vec3::Y))
+            }
+            Limits::Cones => {
+                let mut limits = vec![
+                    JointLimit::Cone {
+                        max_rad: 40.0 * DEG
+                    };
+                    n
+                ];
+                limits[0] = JointLimit::Cone {
+                    max_rad: 60.0 * DEG,
+                };
+                Some((limits, Vec3::Y))
+            }
+        }
+    }
+
+    /// The pole (relative to the root): beside the middle of the root→target line, turned by the
+    /// pole angle about that line from its upper side.
+    pub fn pole(&self) -> Vec3 {
+        let u = self.target.normalize_or(Vec3::Y);
+        let up = Vec3::Y - u * u.dot(Vec3::Y);
+        let v0 = up
+            .try_normalize()
+            .unwrap_or_else(|| u.any_orthonormal_vector());
+        let v = Quat::from_axis_angle(u, self.pole_angle_rad) * v0;
+        0.5 * self.target + 0.5 * v
+    }
+
+    /// Solves all three chains (reference, then the student's with "use my exercise").
+    pub fn solve(&mut self) -> Result<(), String> {
+        if !self.dirty {
+            return Ok(());
+        }
+        self.dirty = false;
+        self.notes.clear();
+        self.student = [None, None];
+        let target = self.target;
+        let limits = self.joint_limits();
+        // Analytic: only a two-segment chain.
+        self.solved[0].clear();
+        self.results[0] = None;
+        if self.segments == 2 {
+            let r = &self.rest;
+            let s = two_joint(r[0], r[1], r[2], target, self.pole(), TOLERANCE_M)
+                .map_err(|e| e.to_string())?;
+            self.solved[0].extend([r[0], s.middle, s.end]);
+            self.results[0] = Some(s.result);
+        }
+        // CCD and FABRIK: from the rest pose, at most `iterations`; the plot runs on to the end.
+        for k in 0..2 {
+            let mut chain = self.rest.clone();
+            let mut errors = [0.0f32; MAX_ITERATIONS];
+            let result = match (&limits, k) {
+                (None, 0) => ccd(
+                    &mut chain,
+                    target,
+                    MAX_ITERATIONS,
+                    TOLERANCE_M,
+                    Some(&mut errors),
+                ),
+                (None, _) => fabrik(
+                    &mut chain,
+                    target,
+                    MAX_ITERATIONS,
+                    TOLERANCE_M,
+                    Some(&mut errors),
+                ),
+                (Some((l, d)), 0) => ccd_limited(
+                    &mut chain,
+                    l,
+                    *d,
+                    target,
+                    MAX_ITERATIONS,
+                    TOLERANCE_M,
+                    Some(&mut errors),
+                ),
+                (Some((l, d)), _) => fabrik_limited(
+                    &mut chain,
+                    l,
+                    *d,
+                    target,
+                    MAX_ITERATIONS,
+                    TOLERANCE_M,
+                    Some(&mut errors),
+                ),
+            }
+            .map_err(|e| e.to_string())?;
+            // After a stop the error stays where it was.
+            let used = result.iterations.max(1);
+            for i in result.iterations..MAX_ITERATIONS {
+                errors[i] = if i == 0 {
+                    result.error
+                } else {
+                    errors[used - 1]
+                };
+            }
+            self.errors[k].copy_from_slice(&errors);
+            // The pose the slider asks for: run again with that many iterations.
+            let mut shown = self.rest.clone();
+            let result = match (&limits, k) {
+                (None, 0) => ccd(&mut shown, target, self.iterations, TOLERANCE_M, None),
+                (None, _) => fabrik(&mut shown, target, self.iterations, TOLERANCE_M, None),
+                (Some((l, d)), 0) => ccd_limited(
+                    &mut shown,
+                    l,
+                    *d,
+                    target,
+                    self.iterations,
+                    TOLERANCE_M,
+                    None,
+                ),
+                (Some((l, d)), _) => fabrik_limited(
+                    &mut shown,
+                    l,
+                    *d,
+                    target,
+                    self.iterations,
+                    TOLERANCE_M,
+                    None,
+                ),
+            }
+            .map_err(|e| e.to_string())?;
+            self.solved[k + 1] = shown;
+            self.results[k + 1] = Some(result);
+        }
+        if self.use_exercise {
+            let a = self.student_two_joint();
+            let b = self.student_ccd();
+            self.notes.extend([a, b]);
+        } else {
+            self.notes.push(self.describe());
+        }
+        Ok(())
+    }
+
+    fn describe(&self) -> String {
+        let mut parts = Vec::new();
+        let mm = |e: f32| format!("{} mm", format_number(e * 1000.0));
+        match self.results[0] {
+            Some(r) if r.reached => parts.push(format!(
+                "Two-joint: reached in one step (error {}).",
+                mm(r.error)
+            )),
+            Some(r) => parts.push(format!(
+                "Two-joint: out of reach, {} short (the chain points straight at the target).",
+                mm(r.error)
+            )),
+            None => parts.push("Two-joint IK needs exactly 2 segments.".into()),
+        }
+        for (k, name) in [(1, "CCD"), (2, "FABRIK")] {
+            let Some(r) = self.results[k] else { continue };
+            parts.push(if r.reached {
+                format!(
+                    "{name}: reached after {} iteration{} (error {}).",
+                    r.iterations,
+                    if r.iterations == 1 { "" } else { "s" },
+                    mm(r.error)
+                )
+            } else {
+                format!(
+                    "{name}: after {} iteration{}, {} from the target.",
+                    r.iterations,
+                    if r.iterations == 1 { "" } else { "s" },
+                    mm(r.error)
+                )
+            });
+        }
+        if self.limits != Limits::None {
+            parts.push(
+                "Limits apply to CCD and FABRIK; two-joint IK bends towards its pole.".into(),
+            );
+        }
+        parts.join(" ")
+    }
+
+    /// Exercise 7.1 on the two-segment chain; keeps the student's chain for drawing.
+    fn student_two_joint(&mut self) -> String {
+        let exercise = "exercise 7.1 two_joint";
+        if self.segments != 2 {
+            // Still say whether it is done (or panics), on a two-segment probe.
+            let (r, m, e) = (Vec3::ZERO, Vec3::Y * 0.5, Vec3::Y);
+            let how = "Set segments to 2 to see your 7.1 two_joint on the blue chain.";
+            return match run::two_joint(self.runner, r, m, e, self.target, self.pole()) {
+                Ok(_) => how.into(),
+                Err(failure) => {
+                    format!("{} {how}", failure_note(exercise, EXERCISE_FILE, &failure))
+                }
+            };
+        }
+        let r = &self.rest;
+        let (root, middle, end) = (r[0], r[1], r[2]);
+        let yours = match run::two_joint(self.runner, root, middle, end, self.target, self.pole()) {
+            Ok(answer) => answer,
+            Err(failure) => return failure_note(exercise, EXERCISE_FILE, &failure),
+        };
+        let reference = (self.solved[0][1], self.solved[0][2]);
+        let flat = |(m, e): (Vec3, Vec3)| -> Vec<f32> {
+            m.to_array().into_iter().chain(e.to_array()).collect()
+        };
+        let at = format!(
+            "target ({}) (middle, end)",
+            self.target.to_array().map(format_number).join(", ")
+        );
+        let (_, note) = compare_note(
+            "two_joint",
+            &at,
+            &flat(yours),
+            &flat(reference),
+            STUDENT_TOLERANCE,
+        );
+        if yours.0.is_finite() && yours.1.is_finite() {
+            self.student[0] = Some(vec![root, yours.0, yours.1]);
+        }
+        let lengths = format!(
+            " Your segment lengths: {} and {} m (should be {} and {}).",
+            format_number(yours.0.distance(root)),
+            format_number(yours.1.distance(yours.0)),
+            format_number(middle.distance(root)),
+            format_number(end.distance(middle)),
+        );
+        note + &lengths
+    }
+
+    /// Exercise 7.2, iterated like the reference CCD (no limits); keeps the student's chain.
+    fn student_ccd(&mut self) -> String {
+        let exercise = "exercise 7.2 ccd_iteration";
+        if self.limits != Limits::None {
+            let how = "Set joint limits to none to see your 7.2 ccd_iteration on the orange chain.";
+            return match run::ccd_iteration(self.runner, self.rest.clone(), self.target) {
+                Ok(_) => how.into(),
+                Err(failure) => {
+                    format!("{} {how}", failure_note(exercise, EXERCISE_FILE, &failure))
+                }
+            };
+        }
+        let mut yours = self.rest.clone();
+        let mut reference = self.rest.clone();
+        for k in 1..=self.iterations {
+            if reference[reference.len() - 1].distance(self.target) <= TOLERANCE_M {
+                break;
+            }
+            let before = yours.clone();
+            yours = match run::ccd_iteration(self.runner, yours, self.target) {
+                Ok(c) if c.len() == reference.len() => c,
+                Ok(c) => {
+                    return format!(
+                        "Your {exercise} returned {} joints for a chain of {}. The figure uses the reference.",
+                        c.len(),
+                        reference.len()
+                    )
+                }
+                Err(failure) => return failure_note(exercise, EXERCISE_FILE, &failure),
+            };
+            // Compare one sweep from the same chain (so an early slip is not blamed later).
+            let mut expected = before;
+            crate::ik::ccd_iteration(&mut expected, self.target);
+            crate::ik::ccd_iteration(&mut reference, self.target);
+            if let Some(j) = (0..yours.len()).find(|&j| {
+                let d = yours[j].distance(expected[j]);
+                d.is_nan() || d > STUDENT_TOLERANCE
+            }) {
+                let at = format!("iteration {k}, joint {j}");
+                let note = compare_note(
+                    "ccd_iteration",
+                    &at,
+                    &yours[j].to_array(),
+                    &expected[j].to_array(),
+                    STUDENT_TOLERANCE,
+                )
+                .1;
+                if yours.iter().all(|p| p.is_finite()) {
+                    self.student[1] = Some(yours);
+                }
+                return note;
+            }
+        }
+        let n = self.iterations;
+        self.student[1] = Some(yours);
+        format!(
+            "Your ccd_iteration matches the reference in every iteration (up to {n}) at this target."
+        )
+    }
+
+    /// The error after each iteration for the plot: `[iteration, log₁₀ CCD error (m), log₁₀
+    /// FABRIK error (m), …]` for iterations 1 … [`MAX_ITERATIONS`] (errors below 1 µm drawn at
+    /// 1 µm).
+    pub fn error_samples(&mut self) -> Result<Vec<f32>, String> {
+        self.solve()?;
+        let mut out = Vec::with_capacity(3 * MAX_ITERATIONS);
+        for i in 0..MAX_ITERATIONS {
+            out.extend_from_slice(&[
+                (i + 1) as f32,
+                self.errors[0][i].max(1e-6).log10(),
+                self.errors[1][i].max(1e-6).log10(),
+            ]);
+        }
+        Ok(out)
+    }
+
+    /// The three results (reached, error in m, iterations) for the tests and the page.
+    pub fn results(&mut self) -> Result<[Option<IkResult>; 3], String> {
+        self.solve()?;
+        Ok(self.results)
+    }
+
+    /// A solved chain in world space: 0 analytic, 1 CCD, 2 FABRIK (empty for the analytic one
+    /// unless the chain has 2 segments).
+    pub fn chain(&mut self, solver: usize) -> Result<Vec<Vec3>, String> {
+        self.solve()?;
+        let k = solver.min(2);
+        let root = Vec3::new(ROOTS_X[k], 0.0, 0.0);
+        Ok(self.solved[k].iter().map(|&p| p + root).collect())
+    }
+
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with, for picking.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.camera = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
+    fn view_proj(&self) -> Option<(Mat4, Vec2)> {
+        let (camera, size) = self.camera?;
+        Some((camera.projection(size.x / size.y) * camera.view(), size))
+    }
+
+    /// Whether a pointer at `(x, y)` CSS pixels is on one of the three targets.
+    pub fn hits_target(&self, x_px: f32, y_px: f32) -> Result<bool, String> {
+        let p = Vec2::new(finite("x", x_px)?, finite("y", y_px)?);
+        let Some((view_proj, size)) = self.view_proj() else {
+            return Ok(false);
+        };
+        Ok(ROOTS_X.iter().any(|&x| {
+            let world = self.target + Vec3::new(x, 0.0, 0.0);
+            project(view_proj, size, world).is_some_and(|s| s.distance(p) <= GRAB_RADIUS_PX)
+        }))
+    }
+
+    /// Moves the target under a pointer at `(x, y)` CSS pixels, in the plane through the target
+    /// facing the camera (the same offset for all three chains, so whichever target was grabbed
+    /// follows the pointer: the one nearest to it on screen). Clamped to the target's range.
+    pub fn drag_target(&mut self, x_px: f32, y_px: f32) -> Result<(), String> {
+        let p = Vec2::new(finite("x", x_px)?, finite("y", y_px)?);
+        let Some((view_proj, size)) = self.view_proj() else {
+            return Ok(());
+        };
+        let Some(&root_x) = ROOTS_X.iter().min_by(|&&a, &&b| {
+            let d = |x: f32| {
+                project(view_proj, size, self.target + Vec3::new(x, 0.0, 0.0))
+                    .map_or(f32::INFINITY, |s| s.distance(p))
+            };
+            d(a).total_cmp(&d(b))
+        }) else {
+            return Ok(());
+        };
+        let root = Vec3::new(root_x, 0.0, 0.0);
+        if let Some(world) = on_view_plane(view_proj, size, self.target + root, p) {
+            let t = (world - root).clamp(Vec3::splat(-1.5), Vec3::splat(1.5));
+            self.set_target(t)?;
+        }
+        Ok(())
+    }
+
+    /// Solves (if anything changed) and draws. Returns the note.
+    pub fn draw(&mut self, frame: &mut Frame) -> Result<String, String> {
+        self.solve()?;
+        frame.grid(12, 0.25);
+        let colors = [palette::BLUE, palette::ORANGE, palette::TEAL];
+        let limits = self.joint_limits();
+        for k in 0..3 {
+            let root = Vec3::new(ROOTS_X[k], 0.0, 0.0);
+            let target = self.target + root;
+            frame.point(target, 0.035, palette::RED);
+            frame.label(target + Vec3::new(0.05, 0.05, 0.0), "target", palette::RED);
+            frame.label(root + Vec3::new(0.0, -0.12, 0.0), SOLVERS[k], colors[k]);
+            let chain = if self.solved[k].is_empty() {
+                // No analytic answer for this chain: its rest pose, in grey.
+                frame.label(
+                    root + Vec3::new(0.0, 1.1, 0.0),
+                    "needs 2 segments",
+                    palette::GREY,
+                );
+                (&self.rest, palette::GREY)
+            } else {
+                (&self.solved[k], colors[k])
+            };
+            draw_chain(frame, root, chain.0, chain.1);
+            if k == 0 {
+                // The pole steers the analytic solver only (drawn even without an answer).
+                let pole = self.pole() + root;
+                frame.point(pole, 0.025, palette::PURPLE);
+                frame.label(pole + Vec3::new(0.04, 0.04, 0.0), "pole", palette::PURPLE);
+                if !self.solved[0].is_empty() {
+                    dashed(frame, self.solved[0][1] + root, pole, palette::PURPLE);
+                }
+            }
+            if k > 0 {
+                if let Some((l, d)) = &limits {
+                    draw_limits(frame, root, &self.solved[k], l, *d);
+                }
+            }
+            if let Some(student) = &self.student[k.min(1)] {
+                if k < 2 && self.use_exercise {
+                    let shifted: Vec<Vec3> = student.iter().map(|&p| p + root).collect();
+                    frame.polyline(&shifted, palette::STUDENT);
+                    for &p in &shifted {
+                        frame.point(p, 0.018, palette::STUDENT);
+                    }
+                }
+            }
+        }
+        Ok(self.notes.join(" "))
+    }
+}
+
+/// Where `world` lands on the canvas, CSS pixels from the top-left; `None` behind the camera.
+fn project(view_proj: Mat4, size: Vec2, world: Vec3) -> Option<Vec2> {
+    let clip = view_proj * world.extend(1.0);
+    if clip.w <= 1e-6 {
+        return None;
+    }
+    let ndc = clip.truncate() / clip.w;
+    Some(Vec2::new(
+        (ndc.x * 0.5 + 0.5) * size.x,
+        (0.5 - ndc.y * 0.5) * size.y,
+    ))
+}
+
+/// The point under the pixel `p` on the plane through `anchor` that faces the camera (normal
+/// along the line of sight through `anchor`); `None` if the ray misses it.
+fn on_view_plane(view_proj: Mat4, size: Vec2, anchor: Vec3, p: Vec2) -> Option<Vec3> {
+    let inverse = view_proj.inverse();
+    let unproject = |px: Vec2, z: f32| {
+        let ndc = Vec3::new(2.0 * px.x / size.x - 1.0, 1.0 - 2.0 * px.y / size.y, z);
+        inverse.project_point3(ndc)
+    };
+    let near = unproject(p, 0.0);
+    let dir = unproject(p, 1.0) - near;
+    let anchor_px = project(view_proj, size, anchor)?;
+    let normal = (unproject(anchor_px, 1.0) - unproject(anchor_px, 0.0)).try_normalize()?;
+    let denominator = dir.dot(normal);
+    if denominator.abs() < 1e-9 {
+        return None;
+    }
+    let s = (anchor - near).dot(normal) / denominator;
+    let hit = near + dir * s;
+    hit.is_finite().then_some(hit)
+}
+
+/// A chain: a sphere per joint, a bar per segment.
+fn draw_chain(frame: &mut Frame, root: Vec3, chain: &[Vec3], color: Vec3) {
+    for (i, &p) in chain.iter().enumerate() {
+        let p = p + root;
+        let radius = if i == 0 { 0.035 } else { 0.025 };
+        frame.mesh(
+            MeshId::SPHERE,
+            Mat4::from_scale_rotation_translation(Vec3::splat(radius), Quat::IDENTITY, p),
+            if i == 0 { palette::DARK } else { color },
+        );
+        if i > 0 {
+            bar(frame, chain[i - 1] + root, p, color);
+        }
+    }
+}
+
+fn bar(frame: &mut Frame, a: Vec3, b: Vec3, color: Vec3) {
+    let v = b - a;
+    let length = v.length();
+    if length.is_nan() || length <= 1e-4 {
+        return;
+    }
+    let model = Mat4::from_scale_rotation_translation(
+        Vec3::new(0.012, 0.5 * length, 0.012),
+        Quat::from_rotation_arc(Vec3::Y, v / length),
+        a + 0.5 * v,
+    );
+    frame.mesh(MeshId::CUBE, model, color);
+    frame.line(a, b, color);
+}
+
+fn dashed(frame: &mut Frame, a: Vec3, b: Vec3, color: Vec3) {
+    const DASHES: usize = 8;
+    for k in 0..DASHES {
+        let s0 = k as f32 / DASHES as f32;
+        let s1 = (k as f32 + 0.5) / DASHES as f32;
+        frame.line(a.lerp(b, s0), a.lerp(b, s1), color);
+    }
+}
+
+/// Each joint's allowed range: an arc for a hinge, a circle for a cone, 12 cm out.
+fn draw_limits(
+    frame: &mut Frame,
+    root: Vec3,
+    chain: &[Vec3],
+    limits: &[JointLimit],
+    root_direction: Vec3,
+) {
+    const R: f32 = 0.12;
+    const STEPS: usize = 16;
+    let mut points = [Vec3::ZERO; STEPS + 1];
+    for (i, limit) in limits.iter().enumerate() {
+        let pivot = chain[i] + root;
+        let incoming = if i == 0 {
+            root_direction
+        } else {
+            (chain[i] - chain[i - 1]).normalize_or(root_direction)
+        };
+        match *limit {
+            JointLimit::Free => {}
+            JointLimit::Hinge {
+                axis,
+                min_rad,
+                max_rad,
+            } => {
+                let axis = axis.normalize();
+                let zero = (incoming - axis * incoming.dot(axis)).normalize_or(Vec3::Y);
+                for (s, p) in points.iter_mut().enumerate() {
+                    let a = min_rad + (max_rad - min_rad) * s as f32 / STEPS as f32;
+                    *p = pivot + Quat::from_axis_angle(axis, a) * zero * R;
+                }
+                frame.polyline(&points, palette::GREY);
+                frame.line(pivot, points[0], palette::GREY);
+                frame.line(pivot, points[STEPS], palette::GREY);
+            }
+            JointLimit::Cone { max_rad } => {
+                let side = incoming.any_orthonormal_vector();
+                let rim = Quat::from_axis_angle(side, max_rad) * incoming * R;
+                for (s, p) in points.iter_mut().enumerate() {
+                    let a = std::f32::consts::TAU * s as f32 / STEPS as f32;
+                    *p = pivot + Quat::from_axis_angle(incoming, a) * rim;
+                }
+                frame.polyline(&points, palette::GREY);
+                frame.line(pivot, points[0], palette::GREY);
+                frame.line(pivot, points[STEPS / 2], palette::GREY);
+            }
+        }
+    }
+}
+
+/// The lesson's aim figure: a head on a neck turns to look at a target, at most `max_angle`
+/// from straight ahead.
+#[derive(Clone, Debug)]
+pub struct AimFigure {
+    /// The target, metres (model space; the head sits at (0, 1.6, 0) looking along +z).
+    target: Vec3,
+    max_angle_rad: f32,
+}
+
+impl Default for AimFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// How long the aim figure's target takes to circle once, seconds.
+pub const AIM_PERIOD_SEC: f32 = 8.0;
+
+/// Where the aim figure's head sits, and its rest forward and up.
+const HEAD: Vec3 = Vec3::new(0.0, 1.6, 0.0);
+
+impl AimFigure {
+    pub fn new() -> Self {
+        Self {
+            target: Vec3::new(1.5, 1.9, 1.0),
+            max_angle_rad: 70.0 * DEG,
+        }
+    }
+
+    /// The target, each coordinate in [−3, 3] m (y in [0, 3]).
+    pub fn set_target(&mut self, target: Vec3) -> Result<(), String> {
+        self.target = Vec3::new(
+            in_range("target x", target.x, -3.0, 3.0)?,
+            in_range("target y", target.y, 0.0, 3.0)?,
+            in_range("target z", target.z, -3.0, 3.0)?,
+        );
+        Ok(())
+    }
+
+    /// How far the head may turn from straight ahead, degrees in [0, 180].
+    pub fn set_max_angle_deg(&mut self, deg: f32) -> Result<(), String> {
+        self.max_angle_rad = in_range("largest turn", deg, 0.0, 180.0)? * DEG;
+        Ok(())
+    }
+
+    /// Aims and draws. Returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let t = finite("time", time_sec)?;
+        frame.grid(12, 0.25);
+        // The target circles slowly around its set position, so the head keeps following.
+        let target =
+            self.target + 0.25 * Vec3::new((0.9 * t).cos(), 0.6 * (1.3 * t).sin(), (0.9 * t).sin());
+        let s = aim(HEAD, Vec3::Z, Vec3::Y, target, self.max_angle_rad, 1e-3)
+            .map_err(|e| e.to_string())?;
+        // Body, neck and head.
+        frame.mesh(
+            MeshId::CUBE,
+            Mat4::from_scale_rotation_translation(
+                Vec3::new(0.2, 0.35, 0.12),
+                Quat::IDENTITY,
+                Vec3::new(0.0, 1.1, 0.0),
+            ),
+            palette::GREY,
+        );
+        let head = Mat4::from_rotation_translation(s.rotation, HEAD);
+        frame.mesh(
+            MeshId::SPHERE,
+            head * Mat4::from_scale(Vec3::splat(0.13)),
+            palette::BROWN,
+        );
+        frame.axes(head, 0.2);
+        frame.arrow(HEAD, HEAD + s.forward * 0.7, palette::BLUE, 0.08);
+        frame.label(HEAD + s.forward * 0.75, "forward", palette::BLUE);
+        frame.point(target, 0.035, palette::RED);
+        frame.label(target + Vec3::new(0.05, 0.05, 0.0), "target", palette::RED);
+        if !s.result.reached {
+            dashed(frame, HEAD, target, palette::RED);
+        }
+        // The cone of allowed directions, around the rest forward (+z).
+        const STEPS: usize = 24;
+        let rim = Quat::from_rotation_x(self.max_angle_rad.min(179.0 * DEG)) * Vec3::Z * 0.45;
+        let circle: Vec<Vec3> = (0..=STEPS)
+            .map(|k| {
+                HEAD + Quat::from_rotation_z(std::f32::consts::TAU * k as f32 / STEPS as f32) * rim
+            })
+            .collect();
+        frame.polyline(&circle, palette::PURPLE);
+        for k in (0..STEPS).step_by(6) {
+            frame.line(HEAD, circle[k], palette::PURPLE);
+        }
+        let deg = |r: f32| format!("{:.0}", r / DEG);
+        Ok(if s.result.reached {
+            format!(
+                "Looking straight at the target: it is {}° from straight ahead, inside the {}° cone.",
+                deg(Vec3::Z.angle_between(target - HEAD)),
+                deg(self.max_angle_rad)
+            )
+        } else {
+            format!(
+                "The target is {}° from straight ahead, outside the {}° cone: the head stops at the rim, {}° short (reached: no).",
+                deg(Vec3::Z.angle_between(target - HEAD)),
+                deg(self.max_angle_rad),
+                deg(s.result.error)
+            )
+        })
+    }
+}

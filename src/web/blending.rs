@@ -1,0 +1,134 @@
+//! Bindings for lesson 08, "Blending": thin wrappers around [`crate::figures::blending`], which
+//! holds the figures' logic and is tested natively.
+
+use super::{js, Viewer};
+use crate::figures::blending::{BlendFigure, LocomotionFigure};
+use wasm_bindgen::prelude::*;
+
+/// Crossfade, mask and additive layer on the simple human.
+#[wasm_bindgen]
+pub struct BlendScene {
+    scene: BlendFigure,
+}
+
+#[wasm_bindgen]
+impl BlendScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> BlendScene {
+        let mut scene = BlendFigure::new();
+        scene.set_runner(super::sandbox::run);
+        BlendScene { scene }
+    }
+
+    #[wasm_bindgen(js_name = clipNames)]
+    pub fn clip_names(&self) -> Vec<String> {
+        self.scene.clip_names()
+    }
+
+    /// Clip A (the timeline's) and clip B (at the same phase).
+    #[wasm_bindgen(js_name = setClips)]
+    pub fn set_clips(&mut self, a: &str, b: &str) -> Result<(), JsError> {
+        self.scene.set_clips(a, b).map_err(js)
+    }
+
+    /// Weight of clip B, in [0, 1].
+    #[wasm_bindgen(js_name = setWeight)]
+    pub fn set_weight(&mut self, w: f32) -> Result<(), JsError> {
+        self.scene.set_weight(w).map_err(js)
+    }
+
+    /// "whole body", "upper body from B" or "lower body from B".
+    #[wasm_bindgen(js_name = setMask)]
+    pub fn set_mask(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_mask(name).map_err(js)
+    }
+
+    /// "none", "lean forward (a pose)" or "wave (a clip)", with a weight in [0, 1].
+    #[wasm_bindgen(js_name = setAdditive)]
+    pub fn set_additive(&mut self, name: &str, weight: f32) -> Result<(), JsError> {
+        self.scene.set_additive(name, weight).map_err(js)
+    }
+
+    /// Blends with the student's exercise 6.3 (in the sandbox).
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+
+    /// Clip A's duration, seconds.
+    #[wasm_bindgen(js_name = durationSec)]
+    pub fn duration_sec(&self) -> f32 {
+        self.scene.duration_sec()
+    }
+
+    /// Poses at `time_sec` and draws. Returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for BlendScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The travelling walk and run blended for a speed.
+#[wasm_bindgen]
+pub struct LocomotionScene {
+    scene: LocomotionFigure,
+}
+
+#[wasm_bindgen]
+impl LocomotionScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> LocomotionScene {
+        LocomotionScene {
+            scene: LocomotionFigure::new(),
+        }
+    }
+
+    /// `[walking speed, running speed]`, m/s.
+    #[wasm_bindgen(js_name = speedRange)]
+    pub fn speed_range(&self) -> Vec<f32> {
+        let (lo, hi) = self.scene.speed_range();
+        vec![lo, hi]
+    }
+
+    /// Speed in m/s, within `speedRange()`.
+    #[wasm_bindgen(js_name = setSpeed)]
+    pub fn set_speed(&mut self, speed: f32) -> Result<(), JsError> {
+        self.scene.set_speed(speed).map_err(js)
+    }
+
+    #[wasm_bindgen(js_name = setSynchronised)]
+    pub fn set_synchronised(&mut self, on: bool) {
+        self.scene.set_synchronised(on);
+    }
+
+    #[wasm_bindgen(js_name = setRootMotion)]
+    pub fn set_root_motion(&mut self, on: bool) {
+        self.scene.set_root_motion(on);
+    }
+
+    /// Poses at `time_sec` and draws. Returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for LocomotionScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}

@@ -1,0 +1,208 @@
+//! Lesson 08 figure logic: validation, what the mask and the additive layer do, the student's
+//! 6.3 in the blend figure, and feet that slide only when the blend is not synchronised.
+
+use glam::Vec3;
+use inbetween::draw::Frame;
+use inbetween::exercises::run::{direct, Failure};
+use inbetween::figures::blending::{BlendFigure, LocomotionFigure};
+use inbetween::skeleton::{human, Clip, ClipCursor};
+
+#[test]
+fn bad_input_is_an_error_naming_the_parameter() {
+    let mut f = BlendFigure::new();
+    assert!(f.set_weight(1.5).unwrap_err().contains("weight of B"));
+    assert!(f.set_weight(f32::NAN).is_err());
+    assert!(f.set_clips("walk", "tango").unwrap_err().contains("clip B"));
+    assert!(f.set_mask("left arm").unwrap_err().contains("mask"));
+    assert!(f
+        .set_additive("jump", 1.0)
+        .unwrap_err()
+        .contains("additive layer"));
+    assert!(f
+        .set_additive("none", -1.0)
+        .unwrap_err()
+        .contains("additive weight"));
+    assert!(f.pose(f32::INFINITY).unwrap_err().contains("time"));
+    let mut l = LocomotionFigure::new();
+    assert!(l.set_speed(100.0).unwrap_err().contains("speed"));
+    assert!(l.draw(&mut Frame::default(), f32::NAN).is_err());
+}
+
+fn clip_pose(name: &str, time: f32) -> Vec<glam::Quat> {
+    let (skeleton, _) = human::simple_human();
+    let i = human::CLIP_NAMES.iter().position(|&c| c == name).unwrap();
+    let clip = Clip::from_raw(&human::clip(&skeleton, i).unwrap(), &skeleton).unwrap();
+    let mut pose = skeleton.rest_pose();
+    clip.sample(time, &mut ClipCursor::new(), &mut pose);
+    pose.local.iter().map(|x| x.rotation).collect()
+}
+
+fn rotations(f: &BlendFigure) -> Vec<glam::Quat> {
+    f.local_pose().local.iter().map(|x| x.rotation).collect()
+}
+
+fn close(a: &[glam::Quat], b: &[glam::Quat]) -> bool {
+    a.iter().zip(b).all(|(x, y)| x.dot(*y).abs() > 1.0 - 1e-6)
+}
+
+#[test]
+fn weights_0_and_1_and_the_masks() {
+    let mut f = BlendFigure::new();
+    f.set_clips("walk", "wave").unwrap();
+    f.set_weight(0.0).unwrap();
+    f.pose(0.3).unwrap();
+    assert!(
+        close(&rotations(&f), &clip_pose("walk", 0.3)),
+        "weight 0: clip A"
+    );
+    f.set_weight(1.0).unwrap();
+    f.pose(0.3).unwrap();
+    // The 2 s wave at the walk's phase 0.3 (of a 1 s cycle): 0.6 s.
+    assert!(
+        close(&rotations(&f), &clip_pose("wave", 0.6)),
+        "weight 1: clip B at the same phase"
+    );
+    // Upper body from B: the legs keep the walk, the arms wave.
+    f.set_mask("upper body from B").unwrap();
+    f.pose(0.3).unwrap();
+    let (skeleton, _) = human::simple_human();
+    let r = rotations(&f);
+    let (walk, wave) = (clip_pose("walk", 0.3), clip_pose("wave", 0.6));
+    for name in ["thigh.L", "shin.R", "pelvis"] {
+        let j = skeleton.find(name).unwrap();
+        assert!(
+            r[j].dot(walk[j]).abs() > 1.0 - 1e-6,
+            "{name} keeps the walk"
+        );
+    }
+    let arm = skeleton.find("upper_arm.R").unwrap();
+    assert!(r[arm].dot(wave[arm]).abs() > 1.0 - 1e-6, "the arm waves");
+    assert_eq!(f.joint_weights()[skeleton.find("pelvis").unwrap()], 0.0);
+    f.set_mask("lower body from B").unwrap();
+    assert_eq!(f.joint_weights()[skeleton.find("head").unwrap()], 0.0);
+    assert_eq!(f.joint_weights()[skeleton.find("thigh.L").unwrap()], 1.0);
+}
+
+#[test]
+fn the_additive_layer_adds_on_top() {
+    let mut f = BlendFigure::new();
+    f.set_weight(0.0).unwrap();
+    f.pose(0.3).unwrap();
+    let base = rotations(&f);
+    f.set_additive("lean forward (a pose)", 0.0).unwrap();
+    f.pose(0.3).unwrap();
+    assert!(close(&rotations(&f), &base), "weight 0 changes nothing");
+    f.set_additive("lean forward (a pose)", 1.0).unwrap();
+    let note = f.pose(0.3).unwrap();
+    assert!(note.contains("Additive layer: lean forward"), "{note}");
+    let (skeleton, _) = human::simple_human();
+    let spine = skeleton.find("spine").unwrap();
+    let thigh = skeleton.find("thigh.L").unwrap();
+    let leaned = rotations(&f);
+    assert!(
+        leaned[spine].angle_between(base[spine]) > 0.3,
+        "the spine leans"
+    );
+    assert!(
+        leaned[thigh].dot(base[thigh]).abs() > 1.0 - 1e-6,
+        "the legs still walk"
+    );
+    f.set_additive("wave (a clip)", 1.0).unwrap();
+    f.pose(0.3).unwrap();
+    let arm = skeleton.find("upper_arm.R").unwrap();
+    assert!(
+        rotations(&f)[arm].angle_between(base[arm]) > 1.0,
+        "the arm goes up while walking"
+    );
+    assert!(rotations(&f)[thigh].dot(base[thigh]).abs() > 1.0 - 1e-6);
+}
+
+#[test]
+fn the_note_reports_the_students_crossfade() {
+    let mut f = BlendFigure::new();
+    f.set_use_exercise(true);
+    let note = f.pose(0.3).unwrap();
+    if cfg!(feature = "solutions") {
+        assert!(
+            note.contains("Your crossfade_joint matches the reference at all 21 joints"),
+            "{note}"
+        );
+    } else {
+        assert!(note.contains("Not done yet: exercise 6.3"), "{note}");
+    }
+    fn correct(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        if name != "crossfade_joint" {
+            return direct(name, args);
+        }
+        let (ta, qa) = (
+            Vec3::from_slice(&args[0..3]),
+            glam::Quat::from_slice(&args[3..7]),
+        );
+        let (tb, qb) = (
+            Vec3::from_slice(&args[7..10]),
+            glam::Quat::from_slice(&args[10..14]),
+        );
+        let (t, q) =
+            inbetween::exercises::skeleton::reference_crossfade_joint(ta, qa, tb, qb, args[14]);
+        Ok([t.to_array().as_slice(), q.to_array().as_slice()].concat())
+    }
+    f.set_runner(correct);
+    let note = f.pose(0.3).unwrap();
+    assert!(
+        note.contains("Your crossfade_joint matches the reference at all 21 joints"),
+        "{note}"
+    );
+    // Forgetting the sign test: wrong where the two rotations are in opposite hemispheres, or
+    // simply a plain lerp without normalising.
+    fn unnormalised(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        let mut out = correct(name, args)?;
+        if name == "crossfade_joint" {
+            for x in &mut out[3..7] {
+                *x *= 0.9;
+            }
+        }
+        Ok(out)
+    }
+    f.set_runner(unnormalised);
+    let note = f.pose(0.3).unwrap();
+    assert!(
+        note.contains("Your crossfade_joint differs at joint 0 (pelvis)"),
+        "{note}"
+    );
+}
+
+#[test]
+fn feet_slide_only_without_synchronisation_and_root_motion_moves_the_character() {
+    let mut l = LocomotionFigure::new();
+    let mut frame = Frame::default();
+    let (lo, hi) = l.speed_range();
+    assert!(hi > lo && lo > 0.3);
+    let mut slides = Vec::new();
+    for synchronised in [true, false] {
+        l.set_synchronised(synchronised);
+        let mut worst = 0.0f32;
+        for k in 0..8 {
+            l.draw(&mut frame, 2.0 + 0.37 * k as f32).unwrap();
+            worst = worst.max(l.slide_m());
+        }
+        slides.push(worst);
+    }
+    assert!(slides[0] < 0.05, "synchronised: {} m", slides[0]);
+    assert!(slides[1] > 3.0 * slides[0], "{slides:?}");
+    l.set_synchronised(true);
+    l.draw(&mut frame, 3.0).unwrap();
+    let at3 = l.origin();
+    l.draw(&mut frame, 13.0).unwrap();
+    // Within a cycle the root surges and drops back; over ten seconds it averages out.
+    let speed = 0.5 * (lo + hi);
+    let went = (l.origin() - at3).length();
+    assert!(
+        (went - 10.0 * speed).abs() < 0.05 * 10.0 * speed,
+        "{went} m in 10 s at {speed} m/s"
+    );
+    assert!(!l.footprints().is_empty());
+    l.set_root_motion(false);
+    let note = l.draw(&mut frame, 4.0).unwrap();
+    assert_eq!(l.origin(), Vec3::ZERO);
+    assert!(note.contains("snaps back"), "{note}");
+}

@@ -1,0 +1,331 @@
+//! Lesson 07 figure logic: validation messages, what the controls change, the error samples,
+//! dragging the target, and what the note says about the student's exercises (with a correct, a
+//! wrong and a panicking runner).
+
+use glam::Vec3;
+use inbetween::camera::OrbitCamera;
+use inbetween::draw::Frame;
+use inbetween::exercises::run::{direct, Failure, Flat};
+use inbetween::figures::ik::{AimFigure, IkFigure, MAX_ITERATIONS, TOLERANCE_M};
+use inbetween::ik::{ccd_iteration, max_violation_rad, JointLimit};
+
+fn lengths(chain: &[Vec3]) -> Vec<f32> {
+    chain.windows(2).map(|w| w[0].distance(w[1])).collect()
+}
+
+#[test]
+fn bad_input_is_an_error_naming_the_parameter() {
+    let mut f = IkFigure::new();
+    assert!(f.set_segments(9.0).unwrap_err().contains("segments"));
+    assert!(f.set_segments(f32::NAN).unwrap_err().contains("segments"));
+    assert!(f
+        .set_target(Vec3::new(0.0, f32::INFINITY, 0.0))
+        .unwrap_err()
+        .contains("target y"));
+    assert!(f
+        .set_target(Vec3::new(2.0, 0.0, 0.0))
+        .unwrap_err()
+        .contains("target x"));
+    assert!(f.set_iterations(0.0).unwrap_err().contains("iterations"));
+    assert!(f.set_iterations(1e6).unwrap_err().contains("iterations"));
+    assert!(f
+        .set_pole_angle_deg(f32::NAN)
+        .unwrap_err()
+        .contains("pole angle"));
+    assert!(f
+        .set_limits("springs")
+        .unwrap_err()
+        .contains("joint limits"));
+    assert!(f.hits_target(f32::NAN, 0.0).is_err());
+    assert!(f.drag_target(0.0, f32::NAN).is_err());
+    let mut a = AimFigure::new();
+    assert!(a
+        .set_max_angle_deg(-1.0)
+        .unwrap_err()
+        .contains("largest turn"));
+    assert!(a.set_target(Vec3::NAN).is_err());
+    assert!(a.draw(&mut Frame::default(), f32::NAN).is_err());
+}
+
+#[test]
+fn all_three_solvers_reach_a_reachable_target_and_keep_the_chain() {
+    let mut f = IkFigure::new();
+    f.set_iterations(MAX_ITERATIONS as f32).unwrap();
+    let note = f.draw(&mut Frame::default()).unwrap();
+    assert!(note.contains("Two-joint: reached in one step"), "{note}");
+    assert!(note.contains("FABRIK: reached after"), "{note}");
+    assert!(note.contains("CCD: reached after"), "{note}");
+    let results = f.results().unwrap();
+    assert!(results.iter().all(|r| r.unwrap().reached));
+    let rest = f.chain(1).unwrap();
+    for k in 0..3 {
+        let c = f.chain(k).unwrap();
+        assert_eq!(c.len(), 3);
+        assert!((c[2] - c[0]).distance(f.target()) <= TOLERANCE_M + 1e-5);
+        for (a, b) in lengths(&c).iter().zip(lengths(&rest)) {
+            assert!((a - b).abs() < 1e-4);
+        }
+    }
+    // More segments: no analytic answer, the others still reach.
+    f.set_segments(6.0).unwrap();
+    let note = f.draw(&mut Frame::default()).unwrap();
+    assert!(
+        note.contains("Two-joint IK needs exactly 2 segments"),
+        "{note}"
+    );
+    assert!(f.chain(0).unwrap().is_empty());
+    assert_eq!(f.chain(2).unwrap().len(), 7);
+    // Out of reach: reported, not reached.
+    f.set_target(Vec3::new(1.2, 1.2, 0.0)).unwrap();
+    let results = f.results().unwrap();
+    assert!(!results[1].unwrap().reached && !results[2].unwrap().reached);
+    assert!(results[2].unwrap().error > 0.6);
+}
+
+#[test]
+fn the_iteration_slider_and_the_error_samples() {
+    let mut f = IkFigure::new();
+    f.set_segments(5.0).unwrap();
+    f.set_iterations(1.0).unwrap();
+    let one = f.results().unwrap()[1].unwrap();
+    assert_eq!(one.iterations, 1);
+    f.set_iterations(30.0).unwrap();
+    let thirty = f.results().unwrap()[1].unwrap();
+    assert!(thirty.error < one.error);
+    let samples = f.error_samples().unwrap();
+    assert_eq!(samples.len(), 3 * MAX_ITERATIONS);
+    assert_eq!(samples[0], 1.0);
+    // The plotted error after iteration 1 is the log of the slider's error at 1 iteration.
+    assert!((samples[1] - one.error.log10()).abs() < 1e-4);
+    // FABRIK ends within the tolerance.
+    assert!(samples[3 * MAX_ITERATIONS - 1] <= TOLERANCE_M.log10() + 1e-4);
+}
+
+#[test]
+fn limits_hold_in_the_drawn_chains() {
+    let mut f = IkFigure::new();
+    f.set_segments(4.0).unwrap();
+    f.set_target(Vec3::new(-0.6, 0.4, 0.3)).unwrap();
+    let free = f.results().unwrap()[2].unwrap();
+    for (mode, limit, root) in [
+        (
+            "hinges (bend one way)",
+            JointLimit::Hinge {
+                axis: Vec3::Z,
+                min_rad: -120f32.to_radians(),
+                max_rad: 0.0,
+            },
+            JointLimit::Hinge {
+                axis: Vec3::Z,
+                min_rad: -90f32.to_radians(),
+                max_rad: 90f32.to_radians(),
+            },
+        ),
+        (
+            "cones (40°)",
+            JointLimit::Cone {
+                max_rad: 40f32.to_radians(),
+            },
+            JointLimit::Cone {
+                max_rad: 60f32.to_radians(),
+            },
+        ),
+    ] {
+        f.set_limits(mode).unwrap();
+        let note = f.draw(&mut Frame::default()).unwrap();
+        assert!(note.contains("Limits apply"), "{note}");
+        let mut limits = vec![limit; 4];
+        limits[0] = root;
+        for k in 1..3 {
+            let c = f.chain(k).unwrap();
+            let local: Vec<Vec3> = c.iter().map(|&p| p - c[0]).collect();
+            assert!(max_violation_rad(&local, &limits, Vec3::Y) < 2e-3, "{mode}");
+        }
+    }
+    // Hinges about z keep the chain in the z = 0 plane: a target at z = 0.3 is out of reach.
+    f.set_limits("hinges (bend one way)").unwrap();
+    let limited = f.results().unwrap()[2].unwrap();
+    assert!(free.reached && !limited.reached && limited.error >= 0.3 - 1e-3);
+}
+
+#[test]
+fn dragging_moves_the_target_under_the_pointer() {
+    let mut f = IkFigure::new();
+    let camera = OrbitCamera {
+        target: Vec3::new(0.0, 0.5, 0.0),
+        distance: 4.0,
+        yaw_rad: 0.0,
+        pitch_rad: 0.0,
+        ..OrbitCamera::default()
+    };
+    assert!(!f.hits_target(100.0, 100.0).unwrap(), "no view yet");
+    f.set_view(camera, 800.0, 400.0);
+    // Looking along −z from the front, the CCD chain's target (root at x = 0) at (0.45, 0.55, 0.15).
+    let view_proj = camera.projection(2.0) * camera.view();
+    let clip = view_proj * (f.target()).extend(1.0);
+    let (x, y) = (
+        (clip.x / clip.w * 0.5 + 0.5) * 800.0,
+        (0.5 - clip.y / clip.w * 0.5) * 400.0,
+    );
+    assert!(f.hits_target(x, y).unwrap());
+    assert!(!f.hits_target(x + 60.0, y).unwrap());
+    let before = f.target();
+    f.drag_target(x + 40.0, y - 20.0).unwrap();
+    let after = f.target();
+    assert!(
+        after.x > before.x + 0.05 && after.y > before.y + 0.02,
+        "{before} → {after}"
+    );
+    // On the plane through the old target that faces the camera (the CCD chain's root is at 0).
+    let sight = (before - camera.eye()).normalize();
+    assert!(
+        (after - before).dot(sight).abs() < 1e-3,
+        "the plane faces the camera"
+    );
+    // Dragging far away clamps to the target's range.
+    f.drag_target(1e5, -1e5).unwrap();
+    assert!(f.target().abs().max_element() <= 1.5);
+}
+
+/// Answers 7.1 and 7.2 with the reference, through the same flattening as the sandbox.
+fn correct(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut rest = args;
+    let mut out = Vec::new();
+    match name {
+        "two_joint" => {
+            let v: Vec<Vec3> = (0..5).map(|_| Vec3::take(&mut rest).unwrap()).collect();
+            inbetween::exercises::ik::reference_two_joint(v[0], v[1], v[2], v[3], v[4])
+                .put(&mut out);
+        }
+        "ccd_iteration" => {
+            let mut chain = Vec::<Vec3>::take(&mut rest).unwrap();
+            let target = Vec3::take(&mut rest).unwrap();
+            ccd_iteration(&mut chain, target);
+            chain.put(&mut out);
+        }
+        _ => return direct(name, args),
+    }
+    Ok(out)
+}
+
+#[test]
+fn the_note_reports_the_students_exercises() {
+    let mut f = IkFigure::new();
+    f.set_use_exercise(true);
+    let note = f.draw(&mut Frame::default()).unwrap();
+    if cfg!(feature = "solutions") {
+        assert!(
+            note.contains("Your two_joint matches the reference"),
+            "{note}"
+        );
+    } else {
+        assert!(note.contains("Not done yet: exercise 7.1"), "{note}");
+        assert!(note.contains("Not done yet: exercise 7.2"), "{note}");
+    }
+    f.set_runner(correct);
+    let note = f.draw(&mut Frame::default()).unwrap();
+    assert!(
+        note.contains("Your two_joint matches the reference"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Your ccd_iteration matches the reference in every iteration"),
+        "{note}"
+    );
+    // Wrong: the middle joint on the other side (pole ignored); a CCD sweep from the root out.
+    fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        let mut rest = args;
+        let mut out = Vec::new();
+        match name {
+            "two_joint" => {
+                let v: Vec<Vec3> = (0..5).map(|_| Vec3::take(&mut rest).unwrap()).collect();
+                let (m, e) =
+                    inbetween::exercises::ik::reference_two_joint(v[0], v[1], v[2], v[3], v[4]);
+                let u = (v[3] - v[0]).normalize();
+                let w = m - v[0];
+                let mirrored = v[0] + 2.0 * u * w.dot(u) - w;
+                (mirrored, e).put(&mut out);
+            }
+            "ccd_iteration" => {
+                let mut chain = Vec::<Vec3>::take(&mut rest).unwrap();
+                let target = Vec3::take(&mut rest).unwrap();
+                let n = chain.len();
+                for i in 0..n - 1 {
+                    let pivot = chain[i];
+                    let r =
+                        inbetween::ik::rotation_arc(chain[n - 1] - pivot, target - pivot).unwrap();
+                    for p in &mut chain[i + 1..] {
+                        *p = pivot + r * (*p - pivot);
+                    }
+                }
+                chain.put(&mut out);
+            }
+            _ => return direct(name, args),
+        }
+        Ok(out)
+    }
+    f.set_runner(wrong);
+    let note = f.draw(&mut Frame::default()).unwrap();
+    assert!(note.contains("Your two_joint differs at target"), "{note}");
+    assert!(
+        note.contains("Your ccd_iteration differs at iteration 1, joint"),
+        "{note}"
+    );
+    fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+        Err(Failure::Panicked(
+            "panicked at src/exercises/ik.rs:70:5:\nboom".into(),
+        ))
+    }
+    f.set_runner(panics);
+    let note = f.draw(&mut Frame::default()).unwrap();
+    assert!(
+        note.contains("Your exercise 7.1 two_joint panicked at src/exercises/ik.rs:70:5: boom"),
+        "{note}"
+    );
+    // With limits, 7.2 says how to run it; with more segments, 7.1 does.
+    f.set_runner(correct);
+    f.set_limits("cones (40°)").unwrap();
+    f.set_segments(3.0).unwrap();
+    let note = f.draw(&mut Frame::default()).unwrap();
+    assert!(note.contains("Set segments to 2"), "{note}");
+    assert!(note.contains("Set joint limits to none"), "{note}");
+    assert!(!note.contains("Not done yet"), "{note}");
+    // A stub is reported whatever the settings.
+    f.set_runner(direct);
+    let note = f.draw(&mut Frame::default()).unwrap();
+    if !cfg!(feature = "solutions") {
+        assert!(note.contains("Not done yet: exercise 7.1"), "{note}");
+        assert!(note.contains("Not done yet: exercise 7.2"), "{note}");
+    }
+}
+
+#[test]
+fn the_head_looks_at_the_target_within_its_cone() {
+    let mut a = AimFigure::new();
+    let note = a.draw(&mut Frame::default(), 0.0).unwrap();
+    assert!(note.contains("Looking straight at the target"), "{note}");
+    a.set_target(Vec3::new(0.0, 1.6, -2.0)).unwrap();
+    let note = a.draw(&mut Frame::default(), 0.0).unwrap();
+    assert!(
+        note.contains("outside the 70° cone") && note.contains("reached: no"),
+        "{note}"
+    );
+}
+
+#[test]
+fn the_pole_steers_the_analytic_solver_only() {
+    let mut f = IkFigure::new();
+    let before: Vec<Vec<Vec3>> = (0..3).map(|k| f.chain(k).unwrap()).collect();
+    f.set_pole_angle_deg(180.0).unwrap();
+    let after: Vec<Vec<Vec3>> = (0..3).map(|k| f.chain(k).unwrap()).collect();
+    assert!(
+        before[0][1].distance(after[0][1]) > 0.2,
+        "the middle joint swings round"
+    );
+    assert!(
+        before[0][2].distance(after[0][2]) < 1e-4,
+        "the end stays on the target"
+    );
+    assert_eq!(before[1], after[1]);
+    assert_eq!(before[2], after[2]);
+}
