@@ -433,6 +433,9 @@ export class Timeline {
 export class Plot {
   constructor(element, { title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3 }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
+    // The y label is drawn along the plot area and clipped at the canvas: make the plot tall
+    // enough for it (about 110 px of the default height are title, x axis and its label).
+    height = Math.max(height, Math.ceil(textWidth(yLabel ?? '', '600 12px system-ui')) + 110);
     this.cursor = null;
     const cursorLine = (u) => {
       if (this.cursor === null || !Number.isFinite(this.cursor)) return;
@@ -462,6 +465,8 @@ export class Plot {
         { label: xLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22 },
         { label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56 },
       ],
+      // Series names only: a live legend shows "--" for every value until the pointer hovers.
+      legend: { live: false },
       series: [{ label: xLabel }, ...series.map((label, i) => ({ label, stroke: colors[i % colors.length], width: 2 }))],
       hooks: { draw: [cursorLine] },
     }, [[0], ...series.map(() => [0])], element);
@@ -483,6 +488,13 @@ export class Plot {
     this.cursor = x;
     this.plot.redraw(false, false);
   }
+}
+
+/** Width in CSS pixels of `text` drawn in `font`. */
+function textWidth(text, font) {
+  const ctx = (textWidth.canvas ??= document.createElement('canvas')).getContext('2d');
+  ctx.font = font;
+  return ctx.measureText(text).width;
 }
 
 /** The palette of www/palette.css, in the order plots use it. */

@@ -449,7 +449,7 @@ for (const id of ['fig-step', 'fig-natural', 'fig-centripetal']) compareFigure(i
 const lagrangeViewer = await lesson.figure('#fig-lagrange');
 if (lagrangeViewer) {
   // Yaw 0, pitch 0: the camera looks straight at the graph's plane, so it is not foreshortened.
-  lagrangeViewer.setCamera(0, 1.2, 0, 7.6, 0, 0);
+  lagrangeViewer.setCamera(0.15, 1.4, 0, 6.5, 0, 0);
   const lagrange = new LagrangeScene();
   const lp = { keys: 10, spline: true };
   const gui = new GUI({ container: document.querySelector('#fig-lagrange .panel'), title: 'Lagrange' });

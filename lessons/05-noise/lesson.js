@@ -149,6 +149,11 @@ if (v3) {
     // Octaves above N come back as NaN: null leaves them out of the plot.
     const cols = columns(scene.sampleOctaves(401), 12).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
     plot.setData(cols);
+    // Octaves above N are not in the sum: grey them out in the legend too.
+    for (let k = 0; k < names.length; k++) {
+      const show = k <= p.n;
+      if (plot.plot.series[k + 1].show !== show) plot.plot.setSeries(k + 1, { show });
+    }
   };
   gui.onChange(apply);
   apply();

@@ -620,7 +620,8 @@ impl Rodrigues {
         // The axis n, both ways through the origin, and v.
         frame.line(-n * 2.0, Vec3::ZERO, AXIS);
         frame.arrow(Vec3::ZERO, n * 2.0, AXIS, 0.15);
-        frame.label(n * 2.0, "n", AXIS);
+        // Beside the shaft, below the tip: at the tip the label leaves the top of the canvas.
+        frame.label(n * 1.7, "n", AXIS);
         frame.arrow(Vec3::ZERO, v, V, 0.12);
         frame.label(v, "v", V);
         // The circle the tip sweeps, about its centre n (n·v).
@@ -639,15 +640,25 @@ impl Rodrigues {
         let axial_part = n * n.dot(v) * (1.0 - phi.cos());
         let (p1, p2) = (cos_part, cos_part + sin_part);
         frame.arrow(Vec3::ZERO, p1, COS_PART, 0.1);
-        frame.label(p1 * 0.5, "v cos θ", COS_PART);
+        // A term's label only when the term is long enough to carry it (labels of short terms
+        // all land on the same spot near the tip of v′).
+        const LABELLED: f32 = 0.25;
+        if cos_part.length() > LABELLED {
+            frame.label(p1 * 0.5, "v cos θ", COS_PART);
+        }
         frame.arrow(p1, p2, SIN_PART, 0.1);
-        frame.label((p1 + p2) * 0.5, "(n × v) sin θ", SIN_PART);
+        if sin_part.length() > LABELLED {
+            frame.label((p1 + p2) * 0.5, "(n × v) sin θ", SIN_PART);
+        }
         frame.arrow(p2, p2 + axial_part, AXIAL_PART, 0.1);
-        frame.label(p2 + axial_part * 0.5, "n (n·v)(1 − cos θ)", AXIAL_PART);
+        if axial_part.length() > LABELLED {
+            frame.label(p2 + axial_part * 0.5, "n (n·v)(1 − cos θ)", AXIAL_PART);
+        }
         // v′ = R(sθ) v, from the matrix (the student's when used).
         let turned = self.matrix_at(phi) * v;
         frame.arrow(Vec3::ZERO, turned, ROTATED, 0.14);
-        frame.label(turned, "v′ = R v", ROTATED);
+        // Just past the tip: the last term's label sits near the tip when that term is short.
+        frame.label(turned * 1.15, "v′ = R v", ROTATED);
         // A small box turned by the quaternion of the same rotation.
         let q = self.quat_at(phi);
         let box_model = Mat4::from_quat(q) * Mat4::from_scale(Vec3::new(0.22, 0.12, 0.08));

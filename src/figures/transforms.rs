@@ -582,7 +582,10 @@ impl HierarchyFigure {
             self.hierarchy.names()[self.selected].clone(),
             palette::DARK,
         );
-        frame.label(pivot(self.thigh), "left thigh", palette::PURPLE);
+        // Halfway down the thigh (at the hip it sat on the wrist's label when the arm hangs).
+        let knee = self.hierarchy.parents().iter().position(|&p| p == self.thigh as i32);
+        let thigh_mid = knee.map_or(pivot(self.thigh), |k| (pivot(self.thigh) + pivot(k)) * 0.5);
+        frame.label(thigh_mid, "left thigh", palette::PURPLE);
         let wrist = placement.transform_point3(self.wrist());
         frame.point(wrist, 0.035, palette::PINK);
         frame.label(wrist, "left wrist", palette::PINK);
