@@ -171,7 +171,7 @@ if (shadingViewer) {
   const scene = new ShadingScene();
   const p = {
     lightAzimuth: 40, lightElevation: 35, ka: 0.15, kd: 0.7, ks: 0.5, shininess: 32,
-    model: 'blinn-phong', fragAzimuth: 0, fragElevation: -15, useExercise: false,
+    model: 'blinn-phong', fragAzimuth: 30, fragElevation: 10, useExercise: false,
   };
   const gui = new GUI({ container: document.querySelector('#fig-shading .panel'), title: 'Shading' });
   const light = gui.addFolder('light');

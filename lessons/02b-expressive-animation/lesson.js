@@ -76,7 +76,7 @@ if (jumpViewer) {
   gui.add(p, 'stretch', 0, 0.2, 0.005).name('stretch per m/s');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('jump-plot'), {
-    title: 'Height of the ball', xLabel: 'time (s)', yLabel: 'height (m) · stretch',
+    title: 'Height of the ball', xLabel: 'time (s)', yLabel: 'height (m), stretch s (ratio)',
     series: ['plain height', 'principled height', 'principled stretch s'],
     colors: [css('--grey'), css('--orange'), css('--purple')], minSpan: 1,
   });
@@ -101,7 +101,7 @@ if (jumpViewer) {
 // Figure 3: follow-through.
 const followViewer = await lesson.figure('#fig-follow');
 if (followViewer) {
-  followViewer.setCamera(0, 1.2, 0, 6, 0.0, 0.2);
+  followViewer.setCamera(0, 1.3, 0, 4.2, 0.0, 0.12);
   const scene = new FollowThroughScene();
   const timeline = new Timeline(document.getElementById('follow-timeline'), { duration: 4 });
   const p = { stiffness: 150, damping: 4, joints: 6, useExercise: false };

@@ -98,7 +98,7 @@ impl Default for Spacing {
 impl Spacing {
     pub fn new() -> Self {
         Spacing {
-            ease: Ease::Smoothstep,
+            ease: Ease::InOut { power: 3.0 },
             arc_height: 1.2,
             twin: true,
             ghosts: 12,
@@ -113,7 +113,8 @@ impl Spacing {
     pub fn set_ease(&mut self, name: &str) -> Result<(), String> {
         self.ease = match name {
             "linear" => Ease::Linear,
-            "slow in and out" => Ease::Smoothstep,
+            // Cubic in and out: the ghosts bunch visibly at the keys (smoothstep's do less).
+            "slow in and out" => Ease::InOut { power: 3.0 },
             "ease in" => Ease::In { power: 2.0 },
             "ease out" => Ease::Out { power: 2.0 },
             _ => return Err(format!("unknown spacing {name:?}")),
@@ -557,8 +558,9 @@ impl FollowThrough {
         frame.grid(12, 0.5);
         let antenna = self.shown();
         let base = antenna.positions[0];
-        let body = Mat4::from_translation(base - Vec3::Y * 0.4)
-            * Mat4::from_scale(Vec3::new(0.5, 0.4, 0.4));
+        // A small body, so the antenna (the subject) is not dwarfed by it.
+        let body = Mat4::from_translation(base - Vec3::Y * 0.25)
+            * Mat4::from_scale(Vec3::new(0.32, 0.25, 0.25));
         frame.mesh(MeshId::CUBE, body, BODY);
         frame.polyline(&antenna.positions, ANTENNA);
         for p in &antenna.positions[1..] {

@@ -351,7 +351,8 @@ impl Frustum {
         frame.point(EYE + p, 0.1, color);
         frame.label(EYE + p + Vec3::new(0.0, 0.25, 0.0), "p", color);
         let on_near = p * (self.near / -p.z);
-        frame.point(EYE + on_near, 0.08, ON_NEAR);
+        frame.point(EYE + on_near, 0.15, ON_NEAR);
+        frame.label(EYE + on_near + Vec3::new(0.0, -0.3, 0.0), "image", ON_NEAR);
         // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z.
         let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
         let box_corners: Vec<Vec3> = [0.0, 1.0]
@@ -992,7 +993,7 @@ impl Shading {
             light: direction(40.0, 35.0),
             material: Material::default(),
             model: ShadingModel::BlinnPhong,
-            fragment: direction(0.0, -15.0),
+            fragment: direction(30.0, 10.0),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             sphere: crate::mesh::uv_sphere(1.0, SPHERE_SEGMENTS, SPHERE_RINGS),
