@@ -59,9 +59,9 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::curves::grade(&mut rng));
     reports.extend(super::expressive::grade(&mut rng));
     reports.extend(super::rotations::grade(&mut rng));
+    reports.extend(super::noise::grade(&mut rng));
     reports.extend(super::skeleton::grade(&mut rng));
     reports.extend(super::ik::grade(&mut rng));
-    reports.extend(super::noise::grade(&mut rng));
     reports
 }
 
@@ -101,7 +101,8 @@ pub fn check_cases<I: Debug, O: Debug>(
 ) -> Report {
     let status = (|| {
         for (case, (what, input)) in cases.iter().enumerate() {
-            let answer = match run_caught(|| student(input)) {
+            let context = || format!("exercise {exercise} ({lesson}), case {case} ({what})");
+            let answer = match run_caught(context, || student(input)) {
                 Ok(answer) => answer,
                 Err(message) => {
                     return Status::Panicked {
@@ -136,7 +137,7 @@ pub fn check_cases<I: Debug, O: Debug>(
 }
 
 #[cfg(not(target_arch = "wasm32"))]
-fn run_caught<T>(f: impl FnOnce() -> T) -> Result<T, String> {
+fn run_caught<T>(_context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<T, String> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).map_err(|payload| {
         payload
             .downcast_ref::<&str>()
@@ -146,9 +147,29 @@ fn run_caught<T>(f: impl FnOnce() -> T) -> Result<T, String> {
     })
 }
 
+/// In wasm a panic cannot be caught: it ends the module. While the student's code runs, a panic
+/// hook first says, in one line, which exercise and case panicked and what to do, then hands over
+/// to the hook that was there (the test runner's).
 #[cfg(target_arch = "wasm32")]
-fn run_caught<T>(f: impl FnOnce() -> T) -> Result<T, String> {
-    Ok(f())
+fn run_caught<T>(context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<T, String> {
+    use std::sync::Arc;
+    let previous: Arc<dyn Fn(&std::panic::PanicHookInfo<'_>) + Send + Sync> =
+        Arc::from(std::panic::take_hook());
+    let context = context();
+    let chained = previous.clone();
+    std::panic::set_hook(Box::new(move |info| {
+        let message = format!(
+            "Your {context} panicked: {info}\nThe browser grader stops at the first panic (a \
+             WebAssembly module cannot continue after one); `scripts/grade` (native) reports it as \
+             PANICKED and grades the other exercises."
+        );
+        web_sys::console::error_1(&message.into());
+        chained(info);
+    }));
+    let answer = f();
+    drop(std::panic::take_hook());
+    std::panic::set_hook(Box::new(move |info| previous(info)));
+    Ok(answer)
 }
 
 /// Element-wise comparison with a tolerance scaled by the larger magnitude.
