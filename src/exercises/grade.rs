@@ -61,6 +61,7 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::rotations::grade(&mut rng));
     reports.extend(super::skeleton::grade(&mut rng));
     reports.extend(super::noise::grade(&mut rng));
+    reports.extend(super::skinning::grade(&mut rng));
     reports
 }
 

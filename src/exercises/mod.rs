@@ -20,6 +20,7 @@ pub mod raster;
 pub mod rotations;
 pub mod run;
 pub mod skeleton;
+pub mod skinning;
 pub mod transforms;
 
 /// An exercise's answer: `Ok(value)` once implemented, `Err(NotDone)` while it is still a stub.

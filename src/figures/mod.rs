@@ -14,6 +14,7 @@ pub mod raster;
 pub mod rigid;
 pub mod rotations;
 pub mod skeleton;
+pub mod skinning;
 pub mod transforms;
 
 pub use crate::draw::{palette, Frame, MeshId};
