@@ -79,6 +79,16 @@ fn area_curves_start_at_one_and_lbs_falls_below_dqs() {
         assert!((r[4] - 1.0).abs() < 1e-3, "DQS keeps the ring under twist");
     }
     assert!(row(18)[3] < 0.01, "LBS at a half twist: the candy wrapper");
+    // Volume: LBS loses more than DQS at every bend, and a wider falloff changes it.
+    let mut f = f;
+    let v = f.volume_curves(7).unwrap();
+    assert!((v[1] - 1.0).abs() < 1e-3 && (v[2] - 1.0).abs() < 1e-3);
+    for i in 1..7 {
+        assert!(v[3 * i + 1] < v[3 * i + 2], "{:?}", &v[3 * i..3 * i + 3]);
+    }
+    f.set_falloff(0.8).unwrap();
+    let wide = f.volume_curves(7).unwrap();
+    assert!((wide[3 * 3 + 1] - v[3 * 3 + 1]).abs() > 1e-3);
 }
 
 fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {

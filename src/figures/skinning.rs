@@ -19,7 +19,7 @@ use crate::rigid::DualQuat;
 use crate::skeleton::{human, Clip, ClipCursor, Pose};
 use crate::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig, SkinnedCharacter};
 use crate::skinning::{
-    dual_quat_palette, ring_area, skin_dqs, skin_lbs, skinning_palette, SkinWeights,
+    dual_quat_palette, mesh_volume, ring_area, skin_dqs, skin_lbs, skinning_palette, SkinWeights,
 };
 use glam::{Affine3A, Mat4, Quat, Vec3, Vec4};
 
@@ -27,8 +27,8 @@ const EXERCISE_FILE: &str = "src/exercises/skinning.rs";
 /// How close the student's skinned positions must be to the reference's, metres.
 const TOLERANCE: f32 = 1e-4;
 /// Where the two cylinders stand: LBS on the left, DQS on the right.
-pub const LBS_OFFSET: Vec3 = Vec3::new(-2.4, 0.0, 0.0);
-pub const DQS_OFFSET: Vec3 = Vec3::new(0.4, 0.0, 0.0);
+pub const LBS_OFFSET: Vec3 = Vec3::new(-2.4, 0.3, 0.0);
+pub const DQS_OFFSET: Vec3 = Vec3::new(0.4, 0.3, 0.0);
 
 /// Heat-map colour of a weight in `[0, 1]`: blue (0) through pale yellow (½) to red (1).
 pub fn heat(w: f32) -> Vec4 {
@@ -75,6 +75,11 @@ fn paint(colors: &mut [Vec4], skin: &SkinWeights, joint: Option<usize>, plain: &
             None => plain[v.min(plain.len() - 1)],
         };
     }
+}
+
+/// How many vertices have a second weight above 1%.
+fn blended(skin: &SkinWeights) -> usize {
+    skin.weights().iter().filter(|w| w[1] > 0.01).count()
 }
 
 /// Which joint the heat map shows: "none" or a joint's name.
@@ -381,7 +386,7 @@ impl CylinderFigure {
     /// Fills the draw list (`meshes`: the LBS and the DQS mesh's ids) and returns the note.
     pub fn draw(&mut self, frame: &mut Frame, meshes: [MeshId; 2]) -> Result<String, String> {
         self.update()?;
-        frame.grid(16, 0.5);
+        frame.grid(12, 0.5);
         let s = self.rig.ring_start(self.rig.elbow_ring());
         let e = s + self.rig.around;
         for (mesh, offset, color, name, skinned) in [
@@ -405,7 +410,7 @@ impl CylinderFigure {
                 .iter()
                 .map(|m| offset + Vec3::from(m.translation))
                 .collect();
-            frame.label(offset + Vec3::new(0.2, -0.55, 0.0), name, color);
+            frame.label(offset + Vec3::new(0.2, -0.45, 0.0), name, color);
             frame.label(
                 joints[1] + Vec3::new(0.0, -0.4, 0.3),
                 "elbow",
@@ -418,6 +423,18 @@ impl CylinderFigure {
             100.0 * a_lbs,
             100.0 * a_dqs
         );
+        note.push_str(&format!(
+            " Falloff {} m: {} of {} vertices follow both joints.",
+            format_number(self.falloff),
+            blended(&self.skin),
+            self.skin.len()
+        ));
+        if let Some(j) = self.heat_joint {
+            note.push_str(&format!(
+                " Colours: the {}'s weights, blue 0 to red 1.",
+                self.rig.skeleton.names()[j]
+            ));
+        }
         if !self.exercise_note.is_empty() {
             note.push(' ');
             note.push_str(&self.exercise_note);
@@ -429,6 +446,11 @@ impl CylinderFigure {
     /// bend, LBS twist, DQS twist]` per sample, angles from 0 to 180°, at this falloff.
     pub fn area_curves(&self, samples: usize) -> Result<Vec<f32>, String> {
         area_curves(&self.rig, &self.skin, samples)
+    }
+
+    /// See [`volume_curves`].
+    pub fn volume_curves(&self, samples: usize) -> Result<Vec<f32>, String> {
+        volume_curves(&self.rig, &self.skin, samples)
     }
 }
 
@@ -481,6 +503,41 @@ pub fn area_curves(
         }
     }
     // Reorder each row to [deg, lbs bend, dqs bend, lbs twist, dqs twist] (already in order).
+    Ok(out)
+}
+
+/// The whole tube's volume (fraction of rest) against the bend angle, 0 to 180°: `[angle (°),
+/// LBS, DQS]` per sample, at these weights. Unlike the elbow ring, the volume depends on the
+/// falloff: a wide blend zone spreads LBS's loss along the arm.
+pub fn volume_curves(
+    rig: &CylinderRig,
+    skin: &SkinWeights,
+    samples: usize,
+) -> Result<Vec<f32>, String> {
+    super::check_samples(samples)?;
+    let m = &rig.mesh;
+    let n = rig.skeleton.len();
+    let v = m.positions.len();
+    let (mut model, mut k, mut dq) = (
+        vec![Affine3A::IDENTITY; n],
+        vec![Affine3A::IDENTITY; n],
+        vec![DualQuat::IDENTITY; n],
+    );
+    let (mut p, mut nn) = (vec![Vec3::ZERO; v], vec![Vec3::ZERO; v]);
+    let rest = mesh_volume(&m.positions, &m.indices);
+    let mut out = Vec::with_capacity(samples * 3);
+    for i in 0..samples {
+        let deg = 180.0 * i as f32 / (samples - 1) as f32;
+        rig.palette(deg.to_radians(), 0.0, &mut model, &mut k)
+            .map_err(|e| e.to_string())?;
+        dual_quat_palette(&k, &mut dq).map_err(|e| e.to_string())?;
+        out.push(deg);
+        skin_lbs(&k, skin, &m.positions, &m.normals, &mut p, &mut nn).map_err(|e| e.to_string())?;
+        out.push(mesh_volume(&p, &m.indices) / rest);
+        skin_dqs(&dq, skin, &m.positions, &m.normals, &mut p, &mut nn)
+            .map_err(|e| e.to_string())?;
+        out.push(mesh_volume(&p, &m.indices) / rest);
+    }
     Ok(out)
 }
 
@@ -705,9 +762,11 @@ impl HumanFigure {
             );
         }
         format!(
-            "{} vertices, {} joints, skinned by {} ({} clip).",
+            "{} vertices, {} joints ({} vertices follow two or more at falloff {} m), skinned by {} ({} clip).",
             self.character.mesh.positions.len(),
             self.character.skeleton.len(),
+            blended(&self.character.skin),
+            format_number(self.falloff),
             match self.method {
                 Method::Lbs => "linear blend skinning",
                 Method::Dqs => "dual quaternion skinning",

@@ -15,6 +15,7 @@ mod rigid;
 mod rotations;
 pub mod sandbox;
 mod skeleton;
+mod skinning;
 mod transforms;
 mod viewer;
 
@@ -28,6 +29,7 @@ pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsSce
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
 pub use skeleton::{check_skeleton, SkeletonScene};
+pub use skinning::{check_skin_weights, SkinnedHumanScene, SkinningCylinderScene};
 pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
 pub use viewer::Viewer;
 
