@@ -519,3 +519,46 @@ fn cylinder_rig_rejects_bad_sizes() {
     assert!(cylinder_rig(1.0, f32::NAN, 41, 16).is_err());
     assert!(cylinder_rig(1.0, 0.2, 1001, 16).is_err());
 }
+
+#[test]
+fn the_benchmark_kernels_agree() {
+    use inbetween::skinning::rigs::benchmark_input;
+    use inbetween::skinning::skin_lbs_plain_loop;
+    let input = benchmark_input(500, 9);
+    let n = input.positions.len();
+    let (mut p, mut nn) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    skin_lbs(
+        &input.palette,
+        &input.skin,
+        &input.positions,
+        &input.normals,
+        &mut p,
+        &mut nn,
+    )
+    .unwrap();
+    let (pal, j, w, pos, nrm) = input.flat();
+    let (mut fp, mut fn_) = (vec![0.0; 3 * n], vec![0.0; 3 * n]);
+    skin_lbs_plain_loop(&pal, &j, &w, &pos, &nrm, &mut fp, &mut fn_);
+    for v in 0..n {
+        assert!(
+            (Vec3::from_slice(&fp[3 * v..]) - p[v]).length() < 1e-4,
+            "vertex {v}"
+        );
+        assert!(
+            (Vec3::from_slice(&fn_[3 * v..]) - nn[v]).length() < 1e-4,
+            "normal {v}"
+        );
+    }
+    let mut dq = vec![DualQuat::IDENTITY; input.palette.len()];
+    dual_quat_palette(&input.palette, &mut dq).expect("the benchmark pose is rigid");
+    skin_dqs(
+        &dq,
+        &input.skin,
+        &input.positions,
+        &input.normals,
+        &mut p,
+        &mut nn,
+    )
+    .unwrap();
+    assert!(p.iter().all(|x| x.is_finite()));
+}

@@ -228,3 +228,42 @@ pub fn lbs_vertex(matrices: &[Mat4], weights: &[f32], position: Vec3) -> Vec3 {
         .map(|(k, &w)| w * k.transform_point3(position))
         .sum()
 }
+
+/// The benchmarks' baseline: LBS written as a plain scalar loop over flat `f32` arrays, the way
+/// one would write it in JavaScript (the bench page runs the same loop in JS). `palette` holds
+/// 12 numbers per joint (the 3 × 4 matrix, column by column); `joints` and `weights` 4 per vertex,
+/// positions and normals 3. Transforms the point by each joint's matrix and sums; no validation
+/// beyond slice indexing (a bad index panics).
+pub fn skin_lbs_plain_loop(
+    palette: &[f32],
+    joints: &[u16],
+    weights: &[f32],
+    positions: &[f32],
+    normals: &[f32],
+    out_positions: &mut [f32],
+    out_normals: &mut [f32],
+) {
+    let n = positions.len() / 3;
+    for v in 0..n {
+        let (px, py, pz) = (positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+        let (nx, ny, nz) = (normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+        let (mut ox, mut oy, mut oz) = (0.0, 0.0, 0.0);
+        let (mut mx, mut my, mut mz) = (0.0, 0.0, 0.0);
+        for k in 0..4 {
+            let w = weights[4 * v + k];
+            let m = &palette[12 * joints[4 * v + k] as usize..][..12];
+            ox += w * (m[0] * px + m[3] * py + m[6] * pz + m[9]);
+            oy += w * (m[1] * px + m[4] * py + m[7] * pz + m[10]);
+            oz += w * (m[2] * px + m[5] * py + m[8] * pz + m[11]);
+            mx += w * (m[0] * nx + m[3] * ny + m[6] * nz);
+            my += w * (m[1] * nx + m[4] * ny + m[7] * nz);
+            mz += w * (m[2] * nx + m[5] * ny + m[8] * nz);
+        }
+        out_positions[3 * v] = ox;
+        out_positions[3 * v + 1] = oy;
+        out_positions[3 * v + 2] = oz;
+        out_normals[3 * v] = mx;
+        out_normals[3 * v + 1] = my;
+        out_normals[3 * v + 2] = mz;
+    }
+}

@@ -41,7 +41,9 @@ pub mod rigs;
 mod weights;
 
 pub use dqs::{blend_dual_quats, dqs_vertex, dual_quat_palette, skin_dqs};
-pub use lbs::{lbs_vertex, skin_lbs, skin_lbs_interleaved, skinning_palette, SkinVertex};
+pub use lbs::{
+    lbs_vertex, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, skinning_palette, SkinVertex,
+};
 pub use rigs::{mesh_volume, ring_area};
 pub use weights::{auto_weights, segment_distance, SkinWeights};
 

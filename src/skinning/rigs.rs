@@ -286,3 +286,78 @@ impl CylinderRig {
         super::skinning_palette(model, self.skeleton.inverse_bind(), out)
     }
 }
+
+/// The benchmark's input (native criterion and the browser bench page): `vertices` random
+/// vertices in a 2 m box, each bound to four distinct joints of the 60-joint benchmark humanoid
+/// with random normalised weights, and the skinning palette of that humanoid at 0.37 s of its clip
+/// with the scale keys dropped (rigid joints, so DQS accepts it).
+pub struct BenchmarkSkin {
+    pub palette: Vec<Affine3A>,
+    pub skin: SkinWeights,
+    pub positions: Vec<Vec3>,
+    pub normals: Vec<Vec3>,
+}
+
+/// See [`BenchmarkSkin`]. `vertices` is capped at [`super::MAX_SKIN_VERTICES`].
+pub fn benchmark_input(vertices: usize, seed: u64) -> BenchmarkSkin {
+    use crate::fixtures::Rng;
+    let mut rng = Rng::new(seed);
+    let (skeleton, raw) = human::benchmark_humanoid(&mut rng);
+    let n = skeleton.len();
+    let clip = crate::skeleton::Clip::from_raw(&raw, &skeleton).expect("the benchmark clip builds");
+    let mut pose = skeleton.rest_pose();
+    clip.sample(0.37, &mut crate::skeleton::ClipCursor::new(), &mut pose);
+    // The clip keys scale too; DQS takes rigid joints only, so drop it.
+    for x in &mut pose.local {
+        x.scale = Vec3::ONE;
+    }
+    let mut model = vec![Affine3A::IDENTITY; n];
+    skeleton
+        .model_matrices(&pose, &mut model)
+        .expect("the benchmark pose is valid");
+    let mut palette = vec![Affine3A::IDENTITY; n];
+    super::skinning_palette(&model, skeleton.inverse_bind(), &mut palette)
+        .expect("finite matrices");
+    let vertices = vertices.min(super::MAX_SKIN_VERTICES);
+    let mut joints = Vec::with_capacity(vertices);
+    let mut weights = Vec::with_capacity(vertices);
+    let mut positions = Vec::with_capacity(vertices);
+    let mut normals = Vec::with_capacity(vertices);
+    for _ in 0..vertices {
+        let first = rng.below(n);
+        let j = [0, 7, 19, 31].map(|d| ((first + d) % n) as u16);
+        joints.push(j);
+        weights.push([0; 4].map(|_| rng.range(0.05, 1.0)));
+        positions.push(rng.vec3(-1.0, 1.0));
+        normals.push(rng.vec3(-1.0, 1.0).normalize_or(Vec3::Y));
+    }
+    let skin = SkinWeights::new(joints, weights, n).expect("valid benchmark weights");
+    BenchmarkSkin {
+        palette,
+        skin,
+        positions,
+        normals,
+    }
+}
+
+impl BenchmarkSkin {
+    /// The same data as flat arrays for [`super::skin_lbs_plain_loop`] (and JavaScript):
+    /// `(palette, joints, weights, positions, normals)`.
+    pub fn flat(&self) -> (Vec<f32>, Vec<u16>, Vec<f32>, Vec<f32>, Vec<f32>) {
+        let palette = self
+            .palette
+            .iter()
+            .flat_map(|k| {
+                let m = glam::Mat4::from(*k).to_cols_array();
+                [
+                    m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10], m[12], m[13], m[14],
+                ]
+            })
+            .collect();
+        let joints = self.skin.joints().iter().flatten().copied().collect();
+        let weights = self.skin.weights().iter().flatten().copied().collect();
+        let positions = self.positions.iter().flat_map(|p| p.to_array()).collect();
+        let normals = self.normals.iter().flat_map(|p| p.to_array()).collect();
+        (palette, joints, weights, positions, normals)
+    }
+}

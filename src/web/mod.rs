@@ -7,6 +7,7 @@ mod bench_curves;
 mod bench_noise;
 mod bench_rotation;
 mod bench_skeleton;
+mod bench_skinning;
 mod curves;
 mod expressive;
 mod noise;
