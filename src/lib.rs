@@ -16,6 +16,7 @@
 //! | `05-noise`: noise and terrain | [`noise`], [`terrain`] | [`figures::noise`] | `web::noise` (bench: `web::bench_noise`) | [`exercises::noise`] |
 //! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`] (and [`ik`], for the next lesson) | [`figures::skeleton`] | `web::skeleton` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
 //! | `09-skinning`: skinning (LBS, DQS, automatic weights) | [`skinning`] | [`figures::skinning`] | `web::skinning` (bench: `web::bench_skinning`) | [`exercises::skinning`] (9.x) |
+//! | `10-blend-shapes` (page to come) | [`blend_shapes`] | – | – | – |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
@@ -33,6 +34,7 @@
 //! - Joint hierarchies are flat arrays of parent indices in depth-first order: the root has
 //!   parent `-1` and every other joint's parent comes before it (`parents[i] < i`).
 
+pub mod blend_shapes;
 pub mod camera;
 pub mod curves;
 pub mod draw;
