@@ -99,16 +99,19 @@ pub fn skin_dqs(
     check_len("normals", n, normals.len())?;
     check_len("output positions", n, out_positions.len())?;
     check_len("output normals", n, out_normals.len())?;
-    if let Some((vertex, j)) = skin.joints().iter().enumerate().find_map(|(v, j)| {
-        j.iter()
-            .find(|&&j| j as usize >= palette.len())
-            .map(|&j| (v, j))
-    }) {
-        return Err(SkinningError::JointOutOfRange {
-            vertex,
-            joint: j as usize,
-            joints: palette.len(),
-        });
+    // O(1) per frame: the scan that names the vertex runs only when something is wrong.
+    if skin.joint_bound() > palette.len() {
+        if let Some((vertex, j)) = skin.joints().iter().enumerate().find_map(|(v, j)| {
+            j.iter()
+                .find(|&&j| j as usize >= palette.len())
+                .map(|&j| (v, j))
+        }) {
+            return Err(SkinningError::JointOutOfRange {
+                vertex,
+                joint: j as usize,
+                joints: palette.len(),
+            });
+        }
     }
     let rows = skin
         .joints()

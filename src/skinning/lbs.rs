@@ -47,16 +47,19 @@ fn check_skin(
     check_len("normals", n, normals)?;
     check_len("output positions", n, out_positions)?;
     check_len("output normals", n, out_normals)?;
-    if let Some((vertex, j)) = skin.joints().iter().enumerate().find_map(|(v, j)| {
-        j.iter()
-            .find(|&&j| j as usize >= palette_len)
-            .map(|&j| (v, j))
-    }) {
-        return Err(SkinningError::JointOutOfRange {
-            vertex,
-            joint: j as usize,
-            joints: palette_len,
-        });
+    // O(1) per frame: the scan that names the vertex runs only when something is wrong.
+    if skin.joint_bound() > palette_len {
+        if let Some((vertex, j)) = skin.joints().iter().enumerate().find_map(|(v, j)| {
+            j.iter()
+                .find(|&&j| j as usize >= palette_len)
+                .map(|&j| (v, j))
+        }) {
+            return Err(SkinningError::JointOutOfRange {
+                vertex,
+                joint: j as usize,
+                joints: palette_len,
+            });
+        }
     }
     Ok(())
 }

@@ -13,6 +13,8 @@ use glam::Vec3;
 pub struct SkinWeights {
     joints: Vec<[u16; 4]>,
     weights: Vec<[f32; 4]>,
+    /// One past the largest joint index any vertex names (so a palette check is O(1) per frame).
+    joint_bound: usize,
 }
 
 impl SkinWeights {
@@ -58,7 +60,17 @@ impl SkinWeights {
                 *x /= sum;
             }
         }
-        Ok(Self { joints, weights })
+        let joint_bound = joints
+            .iter()
+            .flat_map(|j| j.iter())
+            .map(|&j| j as usize + 1)
+            .max()
+            .unwrap_or(0);
+        Ok(Self {
+            joints,
+            weights,
+            joint_bound,
+        })
     }
 
     /// From eight influences per vertex (glTF's `JOINTS_0`/`WEIGHTS_0` plus `JOINTS_1`/`WEIGHTS_1`):
@@ -105,6 +117,12 @@ impl SkinWeights {
 
     pub fn is_empty(&self) -> bool {
         self.joints.is_empty()
+    }
+
+    /// One past the largest joint index any vertex names: a palette needs at least this many
+    /// matrices.
+    pub fn joint_bound(&self) -> usize {
+        self.joint_bound
     }
 
     /// Joint indices, four per vertex.
