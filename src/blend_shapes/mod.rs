@@ -281,3 +281,82 @@ pub fn blend_full(
     }
     Ok(())
 }
+
+/// A procedural face-like head for the lesson: a squashed sphere and four sculpted targets, each
+/// a smooth bump of displacement in one region of the front.
+pub struct Face {
+    pub shapes: BlendShapes,
+    /// The base mesh (positions, normals, indices).
+    pub mesh: crate::mesh::MeshData,
+    /// The targets' names, in order.
+    pub names: Vec<&'static str>,
+    /// The targets' positions (the full form needs the whole meshes).
+    pub targets: Vec<Vec<Vec3>>,
+}
+
+/// The targets of [`face`], in order.
+pub const FACE_TARGETS: [&str; 4] = ["smile", "jaw open", "brows up", "puff cheeks"];
+
+/// Builds [`Face`].
+pub fn face() -> Face {
+    let mut mesh = crate::mesh::uv_sphere(1.0, 40, 28);
+    for p in &mut mesh.positions {
+        *p *= Vec3::new(0.8, 1.0, 0.85);
+    }
+    let bump = |v: f32, centre: f32, width: f32| (-((v - centre) / width).powi(2)).exp();
+    let front = |p: Vec3| ((p.z - 0.2) / 0.4).clamp(0.0, 1.0);
+    let displace: [&dyn Fn(Vec3) -> Vec3; 4] = [
+        // Smile: the mouth's corners rise and pull back.
+        &|p| {
+            let f = front(p) * bump(p.y, -0.42, 0.12) * (p.x.abs() / 0.35).min(1.0);
+            Vec3::new(0.05 * p.x.signum(), 0.16, -0.05) * f
+        },
+        // Jaw open: the chin drops.
+        &|p| {
+            let f = front(p) * ((-0.35 - p.y) / 0.3).clamp(0.0, 1.0) * bump(p.x, 0.0, 0.45);
+            Vec3::new(0.0, -0.3, 0.05) * f
+        },
+        // Brows up: a band above the eyes rises.
+        &|p| {
+            let f = front(p) * bump(p.y, 0.42, 0.1) * bump(p.x.abs(), 0.28, 0.2);
+            Vec3::new(0.0, 0.12, 0.02) * f
+        },
+        // Puff cheeks: the cheeks swell outwards.
+        &|p| {
+            let f = front(p) * bump(p.y, -0.2, 0.18) * bump(p.x.abs(), 0.5, 0.18);
+            Vec3::new(p.x.signum() * 0.14, 0.0, 0.08) * f
+        },
+    ];
+    let mut targets = Vec::new();
+    let mut pairs = Vec::new();
+    for d in displace {
+        let p: Vec<Vec3> = mesh.positions.iter().map(|&p| p + d(p)).collect();
+        let mut n = vec![Vec3::ZERO; p.len()];
+        crate::raster::vertex_normals(&p, &mesh.indices, &mut n).expect("valid indices");
+        pairs.push((p.clone(), n));
+        targets.push(p);
+    }
+    let mut base_normals = vec![Vec3::ZERO; mesh.positions.len()];
+    crate::raster::vertex_normals(&mesh.positions, &mesh.indices, &mut base_normals)
+        .expect("valid indices");
+    mesh.normals = base_normals.clone();
+    let shapes = BlendShapes::from_targets(mesh.positions.clone(), base_normals, &pairs)
+        .expect("the face's targets match its base");
+    Face {
+        shapes,
+        mesh,
+        names: FACE_TARGETS.to_vec(),
+        targets,
+    }
+}
+
+/// One vertex in the differential form: `p = b₀ + Σₖ wₖ (bₖ − b₀)` (the reference for exercise
+/// 10.1; `targets[k]` is target `k`'s position of this vertex; extra entries of the longer slice
+/// are ignored).
+pub fn differential_vertex(base: Vec3, targets: &[Vec3], weights: &[f32]) -> Vec3 {
+    base + targets
+        .iter()
+        .zip(weights)
+        .map(|(t, &w)| w * (*t - base))
+        .sum::<Vec3>()
+}

@@ -12,6 +12,7 @@
 //!
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
+pub mod blend_shapes;
 pub mod curves;
 pub mod expressive;
 pub mod grade;

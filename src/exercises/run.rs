@@ -228,6 +228,7 @@ macro_rules! exercises {
     };
 }
 
+use super::blend_shapes as bs;
 use super::noise as nz;
 use super::skinning as sn;
 use super::{
@@ -315,6 +316,9 @@ exercises! {
     /// Exercise 9.2, [`sn::blend_dual_quats`].
     fn blend_dual_quats(dual_quats: Vec<DualQuat>, weights: Vec<f32>) -> DualQuat =
         sn::blend_dual_quats(&dual_quats, &weights);
+    /// Exercise 10.1, [`bs::differential_vertex`].
+    fn differential_vertex(base: Vec3, targets: Vec<Vec3>, weights: Vec<f32>) -> Vec3 =
+        bs::differential_vertex(base, &targets, &weights);
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature

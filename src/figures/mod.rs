@@ -7,6 +7,7 @@
 //! say, next to the figure, whether the student's answer matches the reference at the current
 //! inputs (helpers below).
 
+pub mod blend_shapes;
 pub mod curves;
 pub mod expressive;
 pub mod noise;

@@ -61,6 +61,11 @@ impl SkinnedMesh {
         }
     }
 
+    /// Says the vertices changed (a figure that rewrote them in place).
+    pub fn mark_dirty(&mut self) {
+        self.dirty = true;
+    }
+
     /// True once after the vertices changed: upload them.
     pub fn take_dirty(&mut self) -> bool {
         std::mem::take(&mut self.dirty)

@@ -8,6 +8,7 @@ mod bench_noise;
 mod bench_rotation;
 mod bench_skeleton;
 mod bench_skinning;
+mod blend_shapes;
 mod curves;
 mod expressive;
 mod noise;
@@ -20,6 +21,7 @@ mod skinning;
 mod transforms;
 mod viewer;
 
+pub use blend_shapes::BlendShapeFaceScene;
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
 pub use noise::{
