@@ -113,13 +113,15 @@ pub fn skin_dqs(
             });
         }
     }
-    let rows = skin
-        .joints()
-        .iter()
-        .zip(skin.weights())
-        .zip(positions.iter().zip(normals))
-        .zip(out_positions.iter_mut().zip(out_normals.iter_mut()));
-    for (((j, w), (p, n)), (op, on)) in rows {
+    // An index loop over slices cut to one length (the checks above made them equal): the
+    // compiler drops the bounds checks, and measured faster than a six-way zip, most of all in wasm.
+    let n = skin.len();
+    let (joints, weights) = (&skin.joints()[..n], &skin.weights()[..n]);
+    let (positions, normals) = (&positions[..n], &normals[..n]);
+    let (out_positions, out_normals) = (&mut out_positions[..n], &mut out_normals[..n]);
+    for v in 0..n {
+        let (j, w, p, n) = (&joints[v], &weights[v], &positions[v], &normals[v]);
+        let (op, on) = (&mut out_positions[v], &mut out_normals[v]);
         let q0 = &palette[j[0] as usize];
         let q1 = &palette[j[1] as usize];
         let q2 = &palette[j[2] as usize];

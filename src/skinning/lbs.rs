@@ -93,13 +93,15 @@ pub fn skin_lbs(
         out_positions.len(),
         out_normals.len(),
     )?;
-    let rows = skin
-        .joints()
-        .iter()
-        .zip(skin.weights())
-        .zip(positions.iter().zip(normals))
-        .zip(out_positions.iter_mut().zip(out_normals.iter_mut()));
-    for (((j, w), (p, n)), (op, on)) in rows {
+    // An index loop over slices cut to one length (the checks above made them equal): the
+    // compiler drops the bounds checks, and measured faster than a six-way zip, most of all in wasm.
+    let n = skin.len();
+    let (joints, weights) = (&skin.joints()[..n], &skin.weights()[..n]);
+    let (positions, normals) = (&positions[..n], &normals[..n]);
+    let (out_positions, out_normals) = (&mut out_positions[..n], &mut out_normals[..n]);
+    for v in 0..n {
+        let (j, w, p, n) = (&joints[v], &weights[v], &positions[v], &normals[v]);
+        let (op, on) = (&mut out_positions[v], &mut out_normals[v]);
         let k = blend4(palette, j, w);
         *op = k.transform_point3(*p);
         *on = k.transform_vector3(*n);
