@@ -178,11 +178,8 @@ impl FaceFigure {
                 format_number(sum)
             )
         };
-        if self.use_exercise && !self.full {
+        if self.use_exercise {
             self.exercise_note = self.run_exercise(&w);
-        } else if self.use_exercise {
-            self.exercise_note =
-                "Exercise 10.1 is the differential form: choose it to run yours.".into();
         } else {
             self.exercise_note.clear();
         }
@@ -209,10 +206,13 @@ impl FaceFigure {
         }
         self.mesh.mark_dirty();
         frame.grid(8, 0.5);
-        let lift = Mat4::from_translation(Vec3::new(0.0, 1.2, 0.0));
-        frame.mesh(mesh, lift, Vec3::new(0.85, 0.62, 0.48));
+        // The head swings gently (±25° over the 4 s loop) so the shapes show from the side too.
+        let yaw = 25f32.to_radians() * (std::f32::consts::TAU * t / 4.0).sin();
+        let head = Mat4::from_translation(Vec3::new(0.0, 1.2, 0.0)) * Mat4::from_rotation_y(yaw);
+        frame.mesh(mesh, head, Vec3::new(0.85, 0.62, 0.48));
         for x in [-0.27f32, 0.27] {
-            let eye = Mat4::from_translation(Vec3::new(x, 1.42, 0.72))
+            let eye = head
+                * Mat4::from_translation(Vec3::new(x, 0.22, 0.72))
                 * Mat4::from_scale(Vec3::splat(0.09));
             frame.mesh(MeshId::SPHERE, eye, palette::DARK);
         }
@@ -226,12 +226,19 @@ impl FaceFigure {
             let targets: Vec<Vec3> = self.face.targets.iter().map(|t| t[v]).collect();
             match run::differential_vertex(self.runner, base, targets, w.to_vec()) {
                 Ok(p) => {
-                    let r = self.mesh.positions[v];
+                    let r = crate::blend_shapes::differential_vertex(
+                        base,
+                        &targets_of(&self.face, v),
+                        w,
+                    );
                     let e = (p - r).length();
                     if !(e <= TOLERANCE) && worst.is_none() {
                         worst = Some((v, p, r));
                     }
-                    self.mesh.positions[v] = if p.is_finite() { p } else { r };
+                    // The face shows the student's vertices in the differential form only.
+                    if !self.full {
+                        self.mesh.positions[v] = if p.is_finite() { p } else { r };
+                    }
                 }
                 Err(f) => {
                     return failure_note("exercise 10.1 differential_vertex", EXERCISE_FILE, &f)
@@ -240,7 +247,7 @@ impl FaceFigure {
         }
         match worst {
             None => format!(
-                "Your differential_vertex (10.1) matches the reference at all {} vertices.",
+                "Your differential_vertex (10.1) matches the reference (differential form) at all {} vertices.",
                 self.face.mesh.positions.len()
             ),
             Some((v, s, r)) => {
@@ -255,4 +262,8 @@ impl FaceFigure {
             }
         }
     }
+}
+
+fn targets_of(face: &Face, v: usize) -> Vec<Vec3> {
+    face.targets.iter().map(|t| t[v]).collect()
 }
