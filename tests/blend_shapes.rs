@@ -23,7 +23,9 @@ fn mesh(seed: f32, n: usize) -> (Vec<Vec3>, Vec<Vec3>) {
     (p, nn)
 }
 
-fn shapes() -> (BlendShapes, Vec<(Vec<Vec3>, Vec<Vec3>)>) {
+type Meshes = Vec<(Vec<Vec3>, Vec<Vec3>)>;
+
+fn shapes() -> (BlendShapes, Meshes) {
     let (bp, bn) = mesh(0.0, 20);
     let targets = vec![mesh(1.0, 20), mesh(2.0, 20), mesh(3.0, 20)];
     (

@@ -232,7 +232,7 @@ impl FaceFigure {
                         w,
                     );
                     let e = (p - r).length();
-                    if !(e <= TOLERANCE) && worst.is_none() {
+                    if (e > TOLERANCE || e.is_nan()) && worst.is_none() {
                         worst = Some((v, p, r));
                     }
                     // The face shows the student's vertices in the differential form only.

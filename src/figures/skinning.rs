@@ -297,7 +297,7 @@ impl CylinderFigure {
             None => {
                 for (v, (s, r)) in student.iter().zip(&self.lbs.positions).enumerate() {
                     let e = (*s - *r).length();
-                    if !(e <= TOLERANCE)
+                    if (e > TOLERANCE || e.is_nan())
                         && worst.is_none_or(|(_, a, b)| e > (a - b).length() || e.is_nan())
                     {
                         worst = Some((v, *s, *r));
@@ -347,7 +347,7 @@ impl CylinderFigure {
             None => {
                 for (v, (s, r)) in student.iter().zip(&self.dqs.positions).enumerate() {
                     let e = (*s - *r).length();
-                    if !(e <= TOLERANCE)
+                    if (e > TOLERANCE || e.is_nan())
                         && worst.is_none_or(|(_, a, b)| e > (a - b).length() || e.is_nan())
                     {
                         worst = Some((v, *s, *r));

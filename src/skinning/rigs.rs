@@ -89,7 +89,7 @@ pub fn cylinder_rig(
             "segment length and radius must be positive, got {segment_length} and {radius}"
         ));
     }
-    if !(3..=MAX_CYLINDER_RESOLUTION).contains(&rings) || rings % 2 == 0 {
+    if !(3..=MAX_CYLINDER_RESOLUTION).contains(&rings) || rings.is_multiple_of(2) {
         return bad(format!(
             "rings must be odd and in [3, {MAX_CYLINDER_RESOLUTION}], got {rings}"
         ));
@@ -340,10 +340,13 @@ pub fn benchmark_input(vertices: usize, seed: u64) -> BenchmarkSkin {
     }
 }
 
+/// Flat arrays: `(palette, joints, weights, positions, normals)`.
+pub type FlatSkin = (Vec<f32>, Vec<u16>, Vec<f32>, Vec<f32>, Vec<f32>);
+
 impl BenchmarkSkin {
     /// The same data as flat arrays for [`super::skin_lbs_plain_loop`] (and JavaScript):
     /// `(palette, joints, weights, positions, normals)`.
-    pub fn flat(&self) -> (Vec<f32>, Vec<u16>, Vec<f32>, Vec<f32>, Vec<f32>) {
+    pub fn flat(&self) -> FlatSkin {
         let palette = self
             .palette
             .iter()
