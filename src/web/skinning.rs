@@ -230,7 +230,7 @@ pub fn check_skin_weights(
     joint_count: usize,
 ) -> Result<String, JsError> {
     use crate::skinning::{SkinWeights, MAX_SKIN_VERTICES};
-    if joints.len() % 4 != 0 || weights.len() != joints.len() {
+    if !joints.len().is_multiple_of(4) || weights.len() != joints.len() {
         return Err(JsError::new(&format!(
             "joints and weights: four numbers per vertex each, got {} and {}",
             joints.len(),
