@@ -78,10 +78,12 @@ pub fn dqs_vertex(dual_quats: &[DualQuat], weights: &[f32], position: Vec3) -> V
 /// ```text
 /// b  = Σ_j w_j s_j q_j   (s_j: sign that aligns q_j with the vertex's first joint, the pivot)
 /// r  = b.r / ‖b.r‖,  d = b.d / ‖b.r‖
-/// p' = p + 2 r⃗ × (r⃗ × p + r_w p) + t,    t = 2 (r_w d⃗ − d_w r⃗ + r⃗ × d⃗)
-/// n' = n + 2 r⃗ × (r⃗ × n + r_w n)
+/// p' = R(r) p + t,   t = 2 (r_w d⃗ − d_w r⃗ + r⃗ × d⃗)   (the vector part of 2 d r*)
+/// n' = R(r) n
 /// ```
-/// The dual part's component along `r` is dropped by the formula for `t`, so no explicit
+/// Computed without a square root: `R(r) = R(b.r) / ‖b.r‖²` and `t` scales the same way (the
+/// form Kavan et al. use in their shader). The dual part's component along `r` is dropped by
+/// the formula for `t`, so no explicit
 /// orthogonalisation is needed. `palette` comes from [`dual_quat_palette`]. Allocates nothing.
 ///
 /// # Errors
@@ -127,13 +129,9 @@ pub fn skin_dqs(
         let q2 = &palette[j[2] as usize];
         let q3 = &palette[j[3] as usize];
         let r0 = Vec4::from(q0.real);
-        let sign = |q: &DualQuat, w: f32| {
-            if r0.dot(Vec4::from(q.real)) < 0.0 {
-                -w
-            } else {
-                w
-            }
-        };
+        // Branch-free sign: the signs are as good as random across vertices, and a mispredicted
+        // branch per joint cost more than the rest of the blend. (A dot of exactly 0 keeps +w.)
+        let sign = |q: &DualQuat, w: f32| w.copysign(r0.dot(Vec4::from(q.real)) + 0.0);
         let (s1, s2, s3) = (sign(q1, w[1]), sign(q2, w[2]), sign(q3, w[3]));
         let real = r0 * w[0]
             + Vec4::from(q1.real) * s1
@@ -145,17 +143,24 @@ pub fn skin_dqs(
             + Vec4::from(q3.dual) * s3;
         // A blend that cancels out (opposite joints, no weight on the pivot) cannot happen with
         // the sign fix unless the pivot's weight is 0; the guard keeps it finite.
-        let inv = 1.0 / real.length().max(1e-12);
-        let real = real * inv;
-        let dual = dual * inv;
-        let rv = Vec3A::new(real.x, real.y, real.z);
-        let rw = real.w;
+        // Unnormalised blend b: the rotation matrix of b.r / ‖b.r‖ is R(b.r) / ‖b.r‖², so one
+        // reciprocal of the squared length replaces the square root (as in Kavan et al.'s
+        // shader), and the matrix then moves the position and the normal with SIMD columns.
+        let inv2 = 1.0 / real.length_squared().max(1e-24);
+        let (x, y, z, w0) = (real.x, real.y, real.z, real.w);
+        let (x2, y2, z2) = (x + x, y + y, z + z);
+        let (xx, xy, xz) = (x * x2, x * y2, x * z2);
+        let (yy, yz, zz) = (y * y2, y * z2, z * z2);
+        let (wx, wy, wz) = (w0 * x2, w0 * y2, w0 * z2);
+        let n2_ = real.length_squared();
+        let col_x = Vec3A::new(n2_ - (yy + zz), xy + wz, xz - wy) * inv2;
+        let col_y = Vec3A::new(xy - wz, n2_ - (xx + zz), yz + wx) * inv2;
+        let col_z = Vec3A::new(xz + wy, yz - wx, n2_ - (xx + yy)) * inv2;
+        let rv = Vec3A::new(x, y, z);
         let dv = Vec3A::new(dual.x, dual.y, dual.z);
-        let t = 2.0 * (rw * dv - dual.w * rv + rv.cross(dv));
-        let pa = Vec3A::from(*p);
-        let na = Vec3A::from(*n);
-        let p2 = pa + 2.0 * rv.cross(rv.cross(pa) + rw * pa) + t;
-        let n2 = na + 2.0 * rv.cross(rv.cross(na) + rw * na);
+        let t = 2.0 * inv2 * (w0 * dv - dual.w * rv + rv.cross(dv));
+        let p2 = col_x * p.x + col_y * p.y + col_z * p.z + t;
+        let n2 = col_x * n.x + col_y * n.y + col_z * n.z;
         *op = p2.into();
         *on = n2.into();
     }
