@@ -17,6 +17,8 @@
 //! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`], [`gltf_import`] | [`figures::skeleton`], [`figures::gltf`] | `web::skeleton`, `web::gltf` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
 //! | `07-inverse-kinematics`: inverse kinematics | [`ik`] | [`figures::ik`] | `web::ik` | [`exercises::ik`] (7.x) |
 //! | `08-blending`: blending | [`skeleton`] (blend, locomotion) | [`figures::blending`] | `web::blending` | [`exercises::skeleton`] (6.3) |
+//! | `09-skinning`: skinning (LBS, DQS, automatic weights) | [`skinning`] | [`figures::skinning`] | `web::skinning` (bench: `web::bench_skinning`) | [`exercises::skinning`] (9.x) |
+//! | `10-blend-shapes`: blend shapes | [`blend_shapes`] | [`figures::blend_shapes`] | `web::blend_shapes` | [`exercises::blend_shapes`] (10.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
@@ -34,6 +36,7 @@
 //! - Joint hierarchies are flat arrays of parent indices in depth-first order: the root has
 //!   parent `-1` and every other joint's parent comes before it (`parents[i] < i`).
 
+pub mod blend_shapes;
 pub mod camera;
 pub mod curves;
 pub mod draw;
@@ -49,6 +52,7 @@ pub mod raster;
 pub mod rigid;
 pub mod rotation;
 pub mod skeleton;
+pub mod skinning;
 pub mod terrain;
 pub mod transform;
 

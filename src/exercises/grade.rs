@@ -62,6 +62,8 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::noise::grade(&mut rng));
     reports.extend(super::skeleton::grade(&mut rng));
     reports.extend(super::ik::grade(&mut rng));
+    reports.extend(super::skinning::grade(&mut rng));
+    reports.extend(super::blend_shapes::grade(&mut rng));
     reports
 }
 

@@ -12,6 +12,7 @@
 //!
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
+pub mod blend_shapes;
 pub mod curves;
 pub mod expressive;
 pub mod grade;
@@ -21,6 +22,7 @@ pub mod raster;
 pub mod rotations;
 pub mod run;
 pub mod skeleton;
+pub mod skinning;
 pub mod transforms;
 
 /// An exercise's answer: `Ok(value)` once implemented, `Err(NotDone)` while it is still a stub.

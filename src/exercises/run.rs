@@ -229,7 +229,9 @@ macro_rules! exercises {
 }
 
 use super::ik as ik7;
+use super::blend_shapes as bs;
 use super::noise as nz;
+use super::skinning as sn;
 use super::{
     curves as c, expressive as ex, raster as ra, rotations as r, skeleton as sk, transforms as tr,
 };
@@ -317,6 +319,15 @@ exercises! {
         nz::fractal_sum(p, n, alpha, omega);
     /// Exercise 5.4, [`nz::terrain_normal`].
     fn terrain_normal(h: f32, s: f32, grad_g: glam::Vec2) -> Vec3 = nz::terrain_normal(h, s, grad_g);
+    /// Exercise 9.1, [`sn::lbs_vertex`].
+    fn lbs_vertex(matrices: Vec<Mat4>, weights: Vec<f32>, position: Vec3) -> Vec3 =
+        sn::lbs_vertex(&matrices, &weights, position);
+    /// Exercise 9.2, [`sn::blend_dual_quats`].
+    fn blend_dual_quats(dual_quats: Vec<DualQuat>, weights: Vec<f32>) -> DualQuat =
+        sn::blend_dual_quats(&dual_quats, &weights);
+    /// Exercise 10.1, [`bs::differential_vertex`].
+    fn differential_vertex(base: Vec3, targets: Vec<Vec3>, weights: Vec<f32>) -> Vec3 =
+        bs::differential_vertex(base, &targets, &weights);
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature
@@ -461,7 +472,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 25);
+        assert_eq!(NAMES.len(), 28);
     }
 
     #[test]

@@ -8,6 +8,7 @@
 //! inputs (helpers below).
 
 pub mod blending;
+pub mod blend_shapes;
 pub mod curves;
 pub mod expressive;
 pub mod gltf;
@@ -17,6 +18,7 @@ pub mod raster;
 pub mod rigid;
 pub mod rotations;
 pub mod skeleton;
+pub mod skinning;
 pub mod transforms;
 
 pub use crate::draw::{palette, Frame, MeshId};

@@ -8,6 +8,8 @@ mod bench_noise;
 mod bench_rotation;
 mod bench_skeleton;
 mod blending;
+mod bench_skinning;
+mod blend_shapes;
 mod curves;
 mod expressive;
 mod gltf;
@@ -18,10 +20,12 @@ mod rigid;
 mod rotations;
 pub mod sandbox;
 mod skeleton;
+mod skinning;
 mod transforms;
 mod viewer;
 
 pub use blending::{BlendScene, LocomotionScene};
+pub use blend_shapes::BlendShapeFaceScene;
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
 pub use ik::{AimScene, IkScene};
@@ -33,6 +37,7 @@ pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsSce
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
 pub use skeleton::{check_skeleton, SkeletonScene};
+pub use skinning::{check_skin_weights, SkinnedHumanScene, SkinningCylinderScene};
 pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
 pub use viewer::Viewer;
 

@@ -1,0 +1,80 @@
+// Lesson 09: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/skinning/, src/figures/skinning.rs).
+import { startLesson, markDrawn, Timeline, Plot, columns, GUI } from '../../www/lesson.js';
+import { SkinningCylinderScene, SkinnedHumanScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+
+/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
+function showNote(element, message) {
+  if (element.textContent !== message) element.textContent = message;
+}
+
+// Figure 1: the bend-and-twist cylinder, LBS beside DQS.
+const cylinderViewer = await lesson.figure('#fig-cylinder');
+if (cylinderViewer) {
+  cylinderViewer.setCamera(0.3, 0.7, 0, 5.0, 0.0, 0.2);
+  const scene = new SkinningCylinderScene();
+  const p = { bend: 90, twist: 0, falloff: 0.15, heat: 'none', useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-cylinder .panel'), title: 'Elbow' });
+  const plot = new Plot(document.getElementById('cyl-plot'), {
+    title: 'Elbow cross-section against the angle', xLabel: 'bend or twist angle (°)', yLabel: 'area (% of rest)',
+    series: ['LBS, bend', 'DQS, bend', 'LBS, twist', 'DQS, twist'],
+    colors: ['#e68a00', '#17a2a8', '#8c564b', '#944fc9'], minSpan: 5, height: 180,
+  });
+  const volumePlot = new Plot(document.getElementById('cyl-plot-volume'), {
+    title: 'Tube volume against the bend', xLabel: 'bend angle (°)', yLabel: 'volume (% of rest)',
+    series: ['LBS', 'DQS'], colors: ['#e68a00', '#17a2a8'], minSpan: 5, height: 180,
+  });
+  function updatePlot() {
+    const pct = (a) => Array.from(a, (x) => 100 * x);
+    const [angle, lbsBend, dqsBend, lbsTwist, dqsTwist] = columns(scene.areaCurves(91), 5);
+    plot.setData([angle, pct(lbsBend), pct(dqsBend), pct(lbsTwist), pct(dqsTwist)]);
+    const [bend, lbs, dqs] = columns(scene.volumeCurves(37), 3);
+    volumePlot.setData([bend, pct(lbs), pct(dqs)]);
+  }
+  gui.add(p, 'bend', 0, 180, 1).name('bend (°)').onChange((v) => { scene.setBendDeg(v); plot.setCursor?.(v); volumePlot.setCursor?.(v); });
+  gui.add(p, 'twist', -180, 180, 1).name('twist (°)').onChange((v) => scene.setTwistDeg(v));
+  gui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange((v) => { scene.setFalloff(v); updatePlot(); });
+  gui.add(p, 'heat', ['none', 'shoulder', 'elbow']).name('weights of').onChange((v) => scene.setHeatJoint(v));
+  gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
+  updatePlot();
+  plot.setCursor?.(p.bend);
+  volumePlot.setCursor?.(p.bend);
+
+  const note = document.getElementById('cyl-note');
+  lesson.onFrame(() => {
+    showNote(note, scene.draw(cylinderViewer));
+    markDrawn('#fig-cylinder');
+  });
+}
+
+// Figure 2: the built-in human, skinned, playing a clip.
+const humanViewer = await lesson.figure('#fig-human');
+if (humanViewer) {
+  humanViewer.setCamera(0, 0.9, 0, 2.8, 0.5, 0.15);
+  const scene = new SkinnedHumanScene();
+  const timeline = new Timeline(document.getElementById('human-timeline'), { duration: scene.durationSec(), playing: true });
+  const p = { clip: 'walk', method: 'DQS', heat: 'none', falloff: 0.03, skeleton: false };
+  const gui = new GUI({ container: document.querySelector('#fig-human .panel'), title: 'Character' });
+  gui.add(p, 'clip', scene.clipNames()).name('clip').onChange((name) => {
+    scene.setClip(name);
+    timeline.duration = scene.durationSec();
+    timeline.time %= timeline.duration;
+    timeline.show();
+  });
+  gui.add(p, 'method', ['LBS', 'DQS']).name('method').onChange((m) => scene.setMethod(m));
+  gui.add(p, 'heat', ['none', ...scene.jointNames()]).name('weights of').onChange((j) => scene.setHeatJoint(j));
+  gui.add(p, 'falloff', 0.005, 0.2, 0.005).name('falloff (m)').onChange((f) => scene.setFalloff(f));
+  gui.add(p, 'skeleton').name('skeleton').onChange((on) => scene.setShowSkeleton(on));
+
+  const note = document.getElementById('human-note');
+  let average = 0;
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    const ms = scene.skin(t);
+    average = average === 0 ? ms : 0.9 * average + 0.1 * ms;
+    showNote(note, `${scene.draw(humanViewer)} CPU skinning: ${average.toFixed(2)} ms per frame.`);
+    markDrawn('#fig-human');
+  });
+}

@@ -1,0 +1,34 @@
+// Lesson 10: wires the page's controls to the wasm scene. No math here: it lives in Rust
+// (src/blend_shapes/, src/figures/blend_shapes.rs).
+import { startLesson, markDrawn, Timeline, GUI } from '../../www/lesson.js';
+import { BlendShapeFaceScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+
+function showNote(element, message) {
+  if (element.textContent !== message) element.textContent = message;
+}
+
+const viewer = await lesson.figure('#fig-face');
+if (viewer) {
+  viewer.setCamera(0, 1.15, 0, 3.2, 0.35, 0.1);
+  const scene = new BlendShapeFaceScene();
+  const timeline = new Timeline(document.getElementById('face-timeline'), { duration: 4, playing: true });
+  const names = scene.targetNames();
+  const p = { form: 'differential', base: -0.05, animate: true, useExercise: false };
+  const start = [1, 0.6, 0.8, 0.7];
+  names.forEach((n, k) => { p[n] = start[k]; });
+  const gui = new GUI({ container: document.querySelector('#fig-face .panel'), title: 'Face' });
+  const weights = gui.addFolder('target weights');
+  names.forEach((n, k) => weights.add(p, n, -0.5, 1.5, 0.01).name(n).onChange((w) => scene.setWeight(k, w)));
+  gui.add(p, 'form', ['differential', 'full']).name('form').onChange((f) => scene.setForm(f));
+  gui.add(p, 'base', -0.05, 1, 0.05).name('full: base weight (<0: 1 − Σw)').onChange((w) => scene.setBaseWeight(w));
+  gui.add(p, 'animate').name('animate the weights').onChange((on) => scene.setAnimate(on));
+  gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
+  const note = document.getElementById('face-note');
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, scene.draw(viewer, t));
+    markDrawn('#fig-face');
+  });
+}

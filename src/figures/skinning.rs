@@ -1,0 +1,782 @@
+//! Figure logic for lesson 09, "Skinning" (see [`crate::figures`]).
+//!
+//! - [`CylinderFigure`]: the bend-and-twist cylinder skinned twice on one rig, LBS (orange) beside
+//!   DQS (teal); the elbow ring whose area the plot measures; weights as a heat map for a chosen
+//!   joint; the falloff of the automatic weights; the check of the student's exercises 9.1 and 9.2.
+//! - [`area_curves`]: the elbow cross-section's area against the bend and the twist angle.
+//! - [`HumanFigure`]: the built-in human with a skinned body, playing a clip, by LBS or DQS.
+//!
+//! The meshes' vertices change when a control moves (the cylinder) or every frame (the human);
+//! the web layer creates each GPU mesh once and rewrites it in place when
+//! [`SkinnedMesh::take_dirty`] says so.
+
+use super::{
+    compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner,
+    DEFAULT_RUNNER,
+};
+use crate::exercises::run;
+use crate::rigid::DualQuat;
+use crate::skeleton::{human, Clip, ClipCursor, Pose};
+use crate::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig, SkinnedCharacter};
+use crate::skinning::{
+    dual_quat_palette, mesh_volume, ring_area, skin_dqs, skin_lbs, skinning_palette, SkinWeights,
+};
+use glam::{Affine3A, Mat4, Quat, Vec3, Vec4};
+
+const EXERCISE_FILE: &str = "src/exercises/skinning.rs";
+/// How close the student's skinned positions must be to the reference's, metres.
+const TOLERANCE: f32 = 1e-4;
+/// Where the two cylinders stand: LBS on the left, DQS on the right.
+pub const LBS_OFFSET: Vec3 = Vec3::new(-2.4, 0.3, 0.0);
+pub const DQS_OFFSET: Vec3 = Vec3::new(0.4, 0.3, 0.0);
+
+/// Heat-map colour of a weight in `[0, 1]`: blue (0) through pale yellow (½) to red (1).
+pub fn heat(w: f32) -> Vec4 {
+    let w = w.clamp(0.0, 1.0);
+    let mid = Vec3::new(0.9, 0.85, 0.35);
+    let c = if w < 0.5 {
+        palette::BLUE.lerp(mid, 2.0 * w)
+    } else {
+        mid.lerp(palette::RED, 2.0 * w - 1.0)
+    };
+    c.extend(1.0)
+}
+
+/// A skinned mesh's current vertices and colours, and whether the GPU copy is stale.
+#[derive(Clone, Debug, Default)]
+pub struct SkinnedMesh {
+    pub positions: Vec<Vec3>,
+    pub normals: Vec<Vec3>,
+    pub colors: Vec<Vec4>,
+    dirty: bool,
+}
+
+impl SkinnedMesh {
+    fn new(n: usize) -> Self {
+        Self {
+            positions: vec![Vec3::ZERO; n],
+            normals: vec![Vec3::ZERO; n],
+            colors: vec![Vec4::ONE; n],
+            dirty: true,
+        }
+    }
+
+    /// Says the vertices changed (a figure that rewrote them in place).
+    pub fn mark_dirty(&mut self) {
+        self.dirty = true;
+    }
+
+    /// True once after the vertices changed: upload them.
+    pub fn take_dirty(&mut self) -> bool {
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+/// Colours: the heat map of `joint`'s weights, or `plain` everywhere.
+fn paint(colors: &mut [Vec4], skin: &SkinWeights, joint: Option<usize>, plain: &[Vec4]) {
+    for (v, c) in colors.iter_mut().enumerate() {
+        *c = match joint {
+            Some(j) => heat(skin.weight_of(v, j)),
+            None => plain[v.min(plain.len() - 1)],
+        };
+    }
+}
+
+/// How many vertices have a second weight above 1%.
+fn blended(skin: &SkinWeights) -> usize {
+    skin.weights().iter().filter(|w| w[1] > 0.01).count()
+}
+
+/// Which joint the heat map shows: "none" or a joint's name.
+fn parse_heat(names: &[String], name: &str) -> Result<Option<usize>, String> {
+    if name == "none" {
+        return Ok(None);
+    }
+    names
+        .iter()
+        .position(|n| n == name)
+        .map(Some)
+        .ok_or_else(|| format!("weights of: no joint named {name:?}"))
+}
+
+/// The lesson's first figure: one rig, skinned by LBS and by DQS side by side.
+#[derive(Clone, Debug)]
+pub struct CylinderFigure {
+    rig: CylinderRig,
+    skin: SkinWeights,
+    falloff: f32,
+    bend_rad: f32,
+    twist_rad: f32,
+    heat_joint: Option<usize>,
+    use_exercise: bool,
+    runner: Runner,
+    model: Vec<Affine3A>,
+    palette: Vec<Affine3A>,
+    dual_quats: Vec<DualQuat>,
+    pub lbs: SkinnedMesh,
+    pub dqs: SkinnedMesh,
+    exercise_note: String,
+    stale: bool,
+}
+
+impl Default for CylinderFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The cylinder's resolution: rings along it (odd: one at the elbow) and vertices around.
+pub const CYLINDER_RINGS: usize = 41;
+pub const CYLINDER_AROUND: usize = 24;
+
+impl CylinderFigure {
+    /// Bent 90°, not twisted, falloff 0.15 m, no heat map.
+    pub fn new() -> Self {
+        let rig = cylinder_rig(1.0, 0.25, CYLINDER_RINGS, CYLINDER_AROUND)
+            .expect("the lesson's cylinder is valid");
+        let falloff = 0.15;
+        let skin = rig.weights(falloff).expect("a valid falloff");
+        let n = rig.mesh.positions.len();
+        let j = rig.skeleton.len();
+        let mut figure = Self {
+            skin,
+            falloff,
+            bend_rad: 90f32.to_radians(),
+            twist_rad: 0.0,
+            heat_joint: None,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            model: vec![Affine3A::IDENTITY; j],
+            palette: vec![Affine3A::IDENTITY; j],
+            dual_quats: vec![DualQuat::IDENTITY; j],
+            lbs: SkinnedMesh::new(n),
+            dqs: SkinnedMesh::new(n),
+            exercise_note: String::new(),
+            stale: true,
+            rig,
+        };
+        figure.repaint();
+        figure
+    }
+
+    pub fn rig(&self) -> &CylinderRig {
+        &self.rig
+    }
+
+    pub fn skin(&self) -> &SkinWeights {
+        &self.skin
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.stale = true;
+    }
+
+    /// Elbow bend about z, degrees in [0, 180].
+    pub fn set_bend_deg(&mut self, deg: f32) -> Result<(), String> {
+        self.bend_rad = in_range("bend", deg, 0.0, 180.0)?.to_radians();
+        self.stale = true;
+        Ok(())
+    }
+
+    /// Elbow twist about its bone, degrees in [−180, 180].
+    pub fn set_twist_deg(&mut self, deg: f32) -> Result<(), String> {
+        self.twist_rad = in_range("twist", deg, -180.0, 180.0)?.to_radians();
+        self.stale = true;
+        Ok(())
+    }
+
+    /// Falloff of the automatic weights, metres in [0.01, 1].
+    pub fn set_falloff(&mut self, falloff: f32) -> Result<(), String> {
+        let f = in_range("falloff", falloff, 0.01, 1.0)?;
+        self.skin = self.rig.weights(f).map_err(|e| e.to_string())?;
+        self.falloff = f;
+        self.repaint();
+        self.stale = true;
+        Ok(())
+    }
+
+    /// The joint whose weights colour the meshes: "none", "shoulder" or "elbow".
+    pub fn set_heat_joint(&mut self, name: &str) -> Result<(), String> {
+        let joint = parse_heat(&self.rig.skeleton.names()[..2], name)?;
+        self.heat_joint = joint;
+        self.repaint();
+        Ok(())
+    }
+
+    /// Skins with the student's exercises 9.1 (LBS) and 9.2 (the DQS blend), in the sandbox.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.stale = true;
+    }
+
+    fn repaint(&mut self) {
+        let lbs = [palette::ORANGE.extend(1.0)];
+        let dqs = [palette::TEAL.extend(1.0)];
+        paint(&mut self.lbs.colors, &self.skin, self.heat_joint, &lbs);
+        paint(&mut self.dqs.colors, &self.skin, self.heat_joint, &dqs);
+        self.lbs.dirty = true;
+        self.dqs.dirty = true;
+    }
+
+    /// Skins both meshes if a control changed since the last call.
+    pub fn update(&mut self) -> Result<(), String> {
+        if !self.stale {
+            return Ok(());
+        }
+        self.stale = false;
+        self.rig
+            .palette(
+                self.bend_rad,
+                self.twist_rad,
+                &mut self.model,
+                &mut self.palette,
+            )
+            .map_err(|e| e.to_string())?;
+        dual_quat_palette(&self.palette, &mut self.dual_quats).map_err(|e| e.to_string())?;
+        let m = &self.rig.mesh;
+        skin_lbs(
+            &self.palette,
+            &self.skin,
+            &m.positions,
+            &m.normals,
+            &mut self.lbs.positions,
+            &mut self.lbs.normals,
+        )
+        .map_err(|e| e.to_string())?;
+        skin_dqs(
+            &self.dual_quats,
+            &self.skin,
+            &m.positions,
+            &m.normals,
+            &mut self.dqs.positions,
+            &mut self.dqs.normals,
+        )
+        .map_err(|e| e.to_string())?;
+        self.exercise_note = if self.use_exercise {
+            self.run_exercises()
+        } else {
+            String::new()
+        };
+        self.lbs.dirty = true;
+        self.dqs.dirty = true;
+        Ok(())
+    }
+
+    /// Replaces the reference positions by the student's where they answered; says how they
+    /// compare (the largest difference over all vertices, and where).
+    fn run_exercises(&mut self) -> String {
+        let at = format!(
+            "bend {}°, twist {}°",
+            format_number(self.bend_rad.to_degrees()),
+            format_number(self.twist_rad.to_degrees())
+        );
+        let mut notes = Vec::new();
+        // 9.1: LBS, vertex by vertex.
+        let mut worst: Option<(usize, Vec3, Vec3)> = None;
+        let mut failure = None;
+        let positions = &self.rig.mesh.positions;
+        let mut student = Vec::with_capacity(positions.len());
+        for (v, &p) in positions.iter().enumerate() {
+            let j = self.skin.joints()[v];
+            let w = self.skin.weights()[v];
+            let mats: Vec<Mat4> = j
+                .iter()
+                .map(|&j| Mat4::from(self.palette[j as usize]))
+                .collect();
+            match run::lbs_vertex(self.runner, mats, w.to_vec(), p) {
+                Ok(q) => student.push(q),
+                Err(f) => {
+                    failure = Some(f);
+                    break;
+                }
+            }
+        }
+        match failure {
+            Some(f) => notes.push(failure_note("exercise 9.1 lbs_vertex", EXERCISE_FILE, &f)),
+            None => {
+                for (v, (s, r)) in student.iter().zip(&self.lbs.positions).enumerate() {
+                    let e = (*s - *r).length();
+                    if (e > TOLERANCE || e.is_nan())
+                        && worst.is_none_or(|(_, a, b)| e > (a - b).length() || e.is_nan())
+                    {
+                        worst = Some((v, *s, *r));
+                    }
+                }
+                match worst {
+                    None => notes.push(format!(
+                        "Your lbs_vertex (9.1) matches the reference at all {} vertices ({at}).",
+                        positions.len()
+                    )),
+                    Some((v, s, r)) => {
+                        let (_, n) = compare_note(
+                            "lbs_vertex (9.1)",
+                            &format!("vertex {v} ({at})"),
+                            &s.to_array(),
+                            &r.to_array(),
+                            TOLERANCE,
+                        );
+                        notes.push(n);
+                    }
+                }
+                self.lbs.positions.copy_from_slice(&student);
+            }
+        }
+        // 9.2: the DQS blend, vertex by vertex; the reference applies the blended motion.
+        let mut worst: Option<(usize, Vec3, Vec3)> = None;
+        let mut failure = None;
+        student.clear();
+        for (v, &p) in positions.iter().enumerate() {
+            let j = self.skin.joints()[v];
+            let w = self.skin.weights()[v];
+            let dqs: Vec<DualQuat> = j.iter().map(|&j| self.dual_quats[j as usize]).collect();
+            match run::blend_dual_quats(self.runner, dqs, w.to_vec()) {
+                Ok(q) => student.push(q.transform_point(p)),
+                Err(f) => {
+                    failure = Some(f);
+                    break;
+                }
+            }
+        }
+        match failure {
+            Some(f) => notes.push(failure_note(
+                "exercise 9.2 blend_dual_quats",
+                EXERCISE_FILE,
+                &f,
+            )),
+            None => {
+                for (v, (s, r)) in student.iter().zip(&self.dqs.positions).enumerate() {
+                    let e = (*s - *r).length();
+                    if (e > TOLERANCE || e.is_nan())
+                        && worst.is_none_or(|(_, a, b)| e > (a - b).length() || e.is_nan())
+                    {
+                        worst = Some((v, *s, *r));
+                    }
+                }
+                match worst {
+                    None => notes.push(format!(
+                        "Your blend_dual_quats (9.2) matches the reference at all {} vertices ({at}).",
+                        positions.len()
+                    )),
+                    Some((v, s, r)) => {
+                        let (_, n) = compare_note(
+                            "blend_dual_quats (9.2), applied to the vertex,",
+                            &format!("vertex {v} ({at})"),
+                            &s.to_array(),
+                            &r.to_array(),
+                            TOLERANCE,
+                        );
+                        notes.push(n);
+                    }
+                }
+                for (dst, s) in self.dqs.positions.iter_mut().zip(&student) {
+                    *dst = if s.is_finite() { *s } else { Vec3::ZERO };
+                }
+            }
+        }
+        notes.join(" ")
+    }
+
+    /// The elbow ring's area now, as a fraction of its rest area: (LBS, DQS).
+    pub fn elbow_areas(&self) -> (f32, f32) {
+        let s = self.rig.ring_start(self.rig.elbow_ring());
+        let e = s + self.rig.around;
+        let rest = self.rig.rest_ring_area();
+        (
+            ring_area(&self.lbs.positions[s..e]) / rest,
+            ring_area(&self.dqs.positions[s..e]) / rest,
+        )
+    }
+
+    /// Fills the draw list (`meshes`: the LBS and the DQS mesh's ids) and returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, meshes: [MeshId; 2]) -> Result<String, String> {
+        self.update()?;
+        frame.grid(12, 0.5);
+        let s = self.rig.ring_start(self.rig.elbow_ring());
+        let e = s + self.rig.around;
+        for (mesh, offset, color, name, skinned) in [
+            (meshes[0], LBS_OFFSET, palette::ORANGE, "LBS", &self.lbs),
+            (meshes[1], DQS_OFFSET, palette::TEAL, "DQS", &self.dqs),
+        ] {
+            let model = Mat4::from_translation(offset);
+            frame.mesh_vertex_colors(mesh, model);
+            // The measured cross-section, slightly outside the surface so it shows.
+            let ring = &skinned.positions[s..e];
+            let c = ring.iter().sum::<Vec3>() / ring.len() as f32;
+            let lifted: Vec<Vec3> = ring
+                .iter()
+                .chain(std::iter::once(&ring[0]))
+                .map(|p| offset + c + (*p - c) * 1.03)
+                .collect();
+            frame.polyline(&lifted, palette::DARK);
+            // The skeleton: joints and bones, drawn beside the tube's axis.
+            let joints: Vec<Vec3> = self
+                .model
+                .iter()
+                .map(|m| offset + Vec3::from(m.translation))
+                .collect();
+            frame.label(offset + Vec3::new(0.2, -0.45, 0.0), name, color);
+            frame.label(
+                joints[1] + Vec3::new(0.0, -0.4, 0.3),
+                "elbow",
+                palette::DARK,
+            );
+        }
+        let (a_lbs, a_dqs) = self.elbow_areas();
+        let mut note = format!(
+            "Elbow cross-section (black ring): LBS keeps {:.0}% of its rest area, DQS {:.0}%.",
+            100.0 * a_lbs,
+            100.0 * a_dqs
+        );
+        note.push_str(&format!(
+            " Falloff {} m: {} of {} vertices follow both joints.",
+            format_number(self.falloff),
+            blended(&self.skin),
+            self.skin.len()
+        ));
+        if let Some(j) = self.heat_joint {
+            note.push_str(&format!(
+                " Colours: the {}'s weights, blue 0 to red 1.",
+                self.rig.skeleton.names()[j]
+            ));
+        }
+        if !self.exercise_note.is_empty() {
+            note.push(' ');
+            note.push_str(&self.exercise_note);
+        }
+        Ok(note)
+    }
+
+    /// The elbow ring's area (fraction of rest) against the angle: `[angle (°), LBS bend, DQS
+    /// bend, LBS twist, DQS twist]` per sample, angles from 0 to 180°, at this falloff.
+    pub fn area_curves(&self, samples: usize) -> Result<Vec<f32>, String> {
+        area_curves(&self.rig, &self.skin, samples)
+    }
+
+    /// See [`volume_curves`].
+    pub fn volume_curves(&self, samples: usize) -> Result<Vec<f32>, String> {
+        volume_curves(&self.rig, &self.skin, samples)
+    }
+}
+
+/// See [`CylinderFigure::area_curves`]. Skins only the elbow ring.
+pub fn area_curves(
+    rig: &CylinderRig,
+    skin: &SkinWeights,
+    samples: usize,
+) -> Result<Vec<f32>, String> {
+    super::check_samples(samples)?;
+    let s = rig.ring_start(rig.elbow_ring());
+    let e = s + rig.around;
+    let ring_skin = SkinWeights::new(
+        skin.joints()[s..e].to_vec(),
+        skin.weights()[s..e].to_vec(),
+        rig.skeleton.len(),
+    )
+    .map_err(|e| e.to_string())?;
+    let positions = &rig.mesh.positions[s..e];
+    let normals = &rig.mesh.normals[s..e];
+    let n = rig.skeleton.len();
+    let (mut model, mut k, mut dq) = (
+        vec![Affine3A::IDENTITY; n],
+        vec![Affine3A::IDENTITY; n],
+        vec![DualQuat::IDENTITY; n],
+    );
+    let (mut p, mut nn) = (vec![Vec3::ZERO; rig.around], vec![Vec3::ZERO; rig.around]);
+    let rest = rig.rest_ring_area();
+    let mut out = Vec::with_capacity(samples * 5);
+    for i in 0..samples {
+        let deg = 180.0 * i as f32 / (samples - 1) as f32;
+        out.push(deg);
+        for (bend, twist) in [(deg, 0.0), (0.0, deg)] {
+            rig.palette(
+                bend.to_radians(),
+                f32::to_radians(twist),
+                &mut model,
+                &mut k,
+            )
+            .map_err(|e| e.to_string())?;
+            dual_quat_palette(&k, &mut dq).map_err(|e| e.to_string())?;
+            skin_lbs(&k, &ring_skin, positions, normals, &mut p, &mut nn)
+                .map_err(|e| e.to_string())?;
+            let a_lbs = ring_area(&p) / rest;
+            skin_dqs(&dq, &ring_skin, positions, normals, &mut p, &mut nn)
+                .map_err(|e| e.to_string())?;
+            let a_dqs = ring_area(&p) / rest;
+            out.push(a_lbs);
+            out.push(a_dqs);
+        }
+    }
+    // Reorder each row to [deg, lbs bend, dqs bend, lbs twist, dqs twist] (already in order).
+    Ok(out)
+}
+
+/// The whole tube's volume (fraction of rest) against the bend angle, 0 to 180°: `[angle (°),
+/// LBS, DQS]` per sample, at these weights. Unlike the elbow ring, the volume depends on the
+/// falloff: a wide blend zone spreads LBS's loss along the arm.
+pub fn volume_curves(
+    rig: &CylinderRig,
+    skin: &SkinWeights,
+    samples: usize,
+) -> Result<Vec<f32>, String> {
+    super::check_samples(samples)?;
+    let m = &rig.mesh;
+    let n = rig.skeleton.len();
+    let v = m.positions.len();
+    let (mut model, mut k, mut dq) = (
+        vec![Affine3A::IDENTITY; n],
+        vec![Affine3A::IDENTITY; n],
+        vec![DualQuat::IDENTITY; n],
+    );
+    let (mut p, mut nn) = (vec![Vec3::ZERO; v], vec![Vec3::ZERO; v]);
+    let rest = mesh_volume(&m.positions, &m.indices);
+    let mut out = Vec::with_capacity(samples * 3);
+    for i in 0..samples {
+        let deg = 180.0 * i as f32 / (samples - 1) as f32;
+        rig.palette(deg.to_radians(), 0.0, &mut model, &mut k)
+            .map_err(|e| e.to_string())?;
+        dual_quat_palette(&k, &mut dq).map_err(|e| e.to_string())?;
+        out.push(deg);
+        skin_lbs(&k, skin, &m.positions, &m.normals, &mut p, &mut nn).map_err(|e| e.to_string())?;
+        out.push(mesh_volume(&p, &m.indices) / rest);
+        skin_dqs(&dq, skin, &m.positions, &m.normals, &mut p, &mut nn)
+            .map_err(|e| e.to_string())?;
+        out.push(mesh_volume(&p, &m.indices) / rest);
+    }
+    Ok(out)
+}
+
+/// Which skinning method the character figure uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    Lbs,
+    Dqs,
+}
+
+/// The built-in human with a skinned body, playing one of its clips.
+#[derive(Clone, Debug)]
+pub struct HumanFigure {
+    character: SkinnedCharacter,
+    clips: Vec<Clip>,
+    clip: usize,
+    method: Method,
+    falloff: f32,
+    heat_joint: Option<usize>,
+    show_skeleton: bool,
+    cursor: ClipCursor,
+    pose: Pose,
+    model: Vec<Affine3A>,
+    palette: Vec<Affine3A>,
+    dual_quats: Vec<DualQuat>,
+    pub mesh: SkinnedMesh,
+}
+
+impl Default for HumanFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl HumanFigure {
+    /// The walk, by DQS, falloff 0.03 m.
+    pub fn new() -> Self {
+        let falloff = 0.03;
+        let character = skinned_human(falloff).expect("the built-in human skins");
+        let skeleton = &character.skeleton;
+        let clips = (0..human::CLIP_NAMES.len())
+            .map(|i| {
+                let raw = human::clip(skeleton, i).expect("a built-in clip");
+                Clip::from_raw(&raw, skeleton).expect("the built-in clips build")
+            })
+            .collect();
+        let n = skeleton.len();
+        let v = character.mesh.positions.len();
+        let mut figure = Self {
+            clips,
+            clip: 1,
+            method: Method::Dqs,
+            falloff,
+            heat_joint: None,
+            show_skeleton: false,
+            cursor: ClipCursor::new(),
+            pose: skeleton.rest_pose(),
+            model: vec![Affine3A::IDENTITY; n],
+            palette: vec![Affine3A::IDENTITY; n],
+            dual_quats: vec![DualQuat::IDENTITY; n],
+            mesh: SkinnedMesh::new(v),
+            character,
+        };
+        figure.repaint();
+        figure
+    }
+
+    /// The character: from code here; a glTF importer would build the same
+    /// [`SkinnedCharacter`] and hand it to [`HumanFigure::with_character`].
+    pub fn character(&self) -> &SkinnedCharacter {
+        &self.character
+    }
+
+    /// The hook for characters loaded from files: same figure, another skeleton and mesh. The
+    /// clips must animate this skeleton (same joint count).
+    pub fn with_character(character: SkinnedCharacter, clips: Vec<Clip>) -> Result<Self, String> {
+        if clips.is_empty()
+            || clips
+                .iter()
+                .any(|c| c.joint_count() != character.skeleton.len())
+        {
+            return Err("clips: at least one, each animating every joint of the character".into());
+        }
+        let mut f = Self::new();
+        let n = character.skeleton.len();
+        f.pose = character.skeleton.rest_pose();
+        f.model = vec![Affine3A::IDENTITY; n];
+        f.palette = vec![Affine3A::IDENTITY; n];
+        f.dual_quats = vec![DualQuat::IDENTITY; n];
+        f.mesh = SkinnedMesh::new(character.mesh.positions.len());
+        f.character = character;
+        f.clips = clips;
+        f.clip = 0;
+        f.heat_joint = None;
+        f.repaint();
+        Ok(f)
+    }
+
+    pub fn clip_names(&self) -> Vec<String> {
+        self.clips.iter().map(|c| c.name().to_string()).collect()
+    }
+
+    pub fn set_clip(&mut self, name: &str) -> Result<(), String> {
+        self.clip = self
+            .clips
+            .iter()
+            .position(|c| c.name() == name)
+            .ok_or_else(|| format!("clip: no clip named {name:?}"))?;
+        self.cursor = ClipCursor::new();
+        Ok(())
+    }
+
+    pub fn duration_sec(&self) -> f32 {
+        self.clips[self.clip].duration_sec()
+    }
+
+    /// "LBS" or "DQS".
+    pub fn set_method(&mut self, name: &str) -> Result<(), String> {
+        self.method = match name {
+            "LBS" => Method::Lbs,
+            "DQS" => Method::Dqs,
+            _ => return Err(format!("method: expected \"LBS\" or \"DQS\", got {name:?}")),
+        };
+        Ok(())
+    }
+
+    /// Falloff of the automatic weights, metres in [0.005, 0.2].
+    pub fn set_falloff(&mut self, falloff: f32) -> Result<(), String> {
+        let f = in_range("falloff", falloff, 0.005, 0.2)?;
+        let c = skinned_human(f).map_err(|e| e.to_string())?;
+        self.character.skin = c.skin;
+        self.falloff = f;
+        self.repaint();
+        Ok(())
+    }
+
+    pub fn joint_names(&self) -> Vec<String> {
+        self.character.skeleton.names().to_vec()
+    }
+
+    /// "none" or a joint's name: colour the body by that joint's weights.
+    pub fn set_heat_joint(&mut self, name: &str) -> Result<(), String> {
+        self.heat_joint = parse_heat(self.character.skeleton.names(), name)?;
+        self.repaint();
+        Ok(())
+    }
+
+    pub fn set_show_skeleton(&mut self, on: bool) {
+        self.show_skeleton = on;
+    }
+
+    fn repaint(&mut self) {
+        let c = &self.character;
+        paint(&mut self.mesh.colors, &c.skin, self.heat_joint, &c.colors);
+        self.mesh.dirty = true;
+    }
+
+    /// Samples the clip at `time_sec` and skins the body.
+    pub fn skin(&mut self, time_sec: f32) -> Result<(), String> {
+        let t = super::finite("time", time_sec)?;
+        let c = &self.character;
+        self.clips[self.clip].sample(t, &mut self.cursor, &mut self.pose);
+        c.skeleton
+            .model_matrices(&self.pose, &mut self.model)
+            .map_err(|e| e.to_string())?;
+        skinning_palette(&self.model, c.skeleton.inverse_bind(), &mut self.palette)
+            .map_err(|e| e.to_string())?;
+        let m = &c.mesh;
+        match self.method {
+            Method::Lbs => skin_lbs(
+                &self.palette,
+                &c.skin,
+                &m.positions,
+                &m.normals,
+                &mut self.mesh.positions,
+                &mut self.mesh.normals,
+            ),
+            Method::Dqs => dual_quat_palette(&self.palette, &mut self.dual_quats).and_then(|()| {
+                skin_dqs(
+                    &self.dual_quats,
+                    &c.skin,
+                    &m.positions,
+                    &m.normals,
+                    &mut self.mesh.positions,
+                    &mut self.mesh.normals,
+                )
+            }),
+        }
+        .map_err(|e| e.to_string())?;
+        self.mesh.dirty = true;
+        Ok(())
+    }
+
+    /// Draws the skinned body (`mesh`: its GPU id) after [`HumanFigure::skin`]; returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> String {
+        frame.grid(12, 0.25);
+        frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        if self.show_skeleton {
+            let parents = self.character.skeleton.parents();
+            for (i, m) in self.model.iter().enumerate() {
+                let p = Vec3::from(m.translation);
+                frame.mesh(
+                    MeshId::SPHERE,
+                    Mat4::from_scale_rotation_translation(Vec3::splat(0.015), Quat::IDENTITY, p),
+                    palette::DARK,
+                );
+                if parents[i] >= 0 {
+                    frame.line(
+                        Vec3::from(self.model[parents[i] as usize].translation),
+                        p,
+                        palette::DARK,
+                    );
+                }
+            }
+        }
+        if let Some(j) = self.heat_joint {
+            let p = Vec3::from(self.model[j].translation);
+            frame.label(
+                p + Vec3::new(0.08, 0.05, 0.0),
+                self.character.skeleton.names()[j].clone(),
+                palette::RED,
+            );
+        }
+        format!(
+            "{} vertices, {} joints ({} vertices follow two or more at falloff {} m), skinned by {} ({} clip).",
+            self.character.mesh.positions.len(),
+            self.character.skeleton.len(),
+            blended(&self.character.skin),
+            format_number(self.falloff),
+            match self.method {
+                Method::Lbs => "linear blend skinning",
+                Method::Dqs => "dual quaternion skinning",
+            },
+            self.clips[self.clip].name()
+        )
+    }
+}

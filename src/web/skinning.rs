@@ -1,0 +1,260 @@
+//! Bindings for lesson 09, "Skinning": thin wrappers around [`crate::figures::skinning`]. Each
+//! skinned mesh is created once on the GPU (`Renderer::create_mesh`) and rewritten in place
+//! (`Renderer::update_mesh_with_colors`) when its vertices changed.
+
+use super::{js, Viewer};
+use crate::draw::MeshId;
+use crate::figures::skinning::{CylinderFigure, HumanFigure, SkinnedMesh};
+use crate::mesh::MeshData;
+use wasm_bindgen::prelude::*;
+
+/// Uploads `skinned` into `id` (creating the mesh on first use) if it changed.
+fn sync(
+    viewer: &mut Viewer,
+    id: &mut Option<MeshId>,
+    skinned: &mut SkinnedMesh,
+    indices: &[u32],
+) -> Result<MeshId, JsError> {
+    match *id {
+        Some(mesh) => {
+            if skinned.take_dirty() {
+                viewer
+                    .renderer
+                    .update_mesh_with_colors(
+                        &viewer.gpu,
+                        mesh,
+                        &skinned.positions,
+                        &skinned.normals,
+                        &skinned.colors,
+                    )
+                    .map_err(|e| JsError::new(&e))?;
+            }
+            Ok(mesh)
+        }
+        None => {
+            skinned.take_dirty();
+            let data = MeshData {
+                positions: skinned.positions.clone(),
+                normals: skinned.normals.clone(),
+                indices: indices.to_vec(),
+            };
+            let mesh = viewer
+                .renderer
+                .create_mesh(&viewer.gpu, &data, Some(&skinned.colors));
+            *id = Some(mesh);
+            Ok(mesh)
+        }
+    }
+}
+
+/// Figure 1: the bend-and-twist cylinder, LBS beside DQS.
+#[wasm_bindgen]
+pub struct SkinningCylinderScene {
+    scene: CylinderFigure,
+    meshes: [Option<MeshId>; 2],
+}
+
+#[wasm_bindgen]
+impl SkinningCylinderScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> SkinningCylinderScene {
+        let mut scene = CylinderFigure::new();
+        scene.set_runner(super::sandbox::run);
+        SkinningCylinderScene {
+            scene,
+            meshes: [None, None],
+        }
+    }
+
+    /// Elbow bend, degrees in [0, 180].
+    #[wasm_bindgen(js_name = setBendDeg)]
+    pub fn set_bend_deg(&mut self, deg: f32) -> Result<(), JsError> {
+        self.scene.set_bend_deg(deg).map_err(js)
+    }
+
+    /// Elbow twist, degrees in [−180, 180].
+    #[wasm_bindgen(js_name = setTwistDeg)]
+    pub fn set_twist_deg(&mut self, deg: f32) -> Result<(), JsError> {
+        self.scene.set_twist_deg(deg).map_err(js)
+    }
+
+    /// Falloff of the automatic weights, metres in [0.01, 1].
+    #[wasm_bindgen(js_name = setFalloff)]
+    pub fn set_falloff(&mut self, falloff: f32) -> Result<(), JsError> {
+        self.scene.set_falloff(falloff).map_err(js)
+    }
+
+    /// "none", "shoulder" or "elbow".
+    #[wasm_bindgen(js_name = setHeatJoint)]
+    pub fn set_heat_joint(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_heat_joint(name).map_err(js)
+    }
+
+    /// Runs the student's exercises 9.1 and 9.2 (in the sandbox) instead of the reference.
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+
+    /// `[angle (°), LBS bend, DQS bend, LBS twist, DQS twist]` per sample (areas as fractions of
+    /// the rest area); `samples` in [2, 10000].
+    #[wasm_bindgen(js_name = areaCurves)]
+    pub fn area_curves(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+        self.scene.area_curves(samples).map_err(js)
+    }
+
+    /// `[angle (°), LBS, DQS]` per sample: the tube's volume (fraction of rest) against the bend.
+    #[wasm_bindgen(js_name = volumeCurves)]
+    pub fn volume_curves(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+        self.scene.volume_curves(samples).map_err(js)
+    }
+
+    /// Skins (if a control changed), uploads and draws. Returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        self.scene.update().map_err(js)?;
+        let indices = self.scene.rig().mesh.indices.clone();
+        let a = sync(viewer, &mut self.meshes[0], &mut self.scene.lbs, &indices)?;
+        let b = sync(viewer, &mut self.meshes[1], &mut self.scene.dqs, &indices)?;
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, [a, b])
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for SkinningCylinderScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Figure 3: the built-in human, skinned, playing a clip.
+#[wasm_bindgen]
+pub struct SkinnedHumanScene {
+    scene: HumanFigure,
+    mesh: Option<MeshId>,
+}
+
+#[wasm_bindgen]
+impl SkinnedHumanScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> SkinnedHumanScene {
+        SkinnedHumanScene {
+            scene: HumanFigure::new(),
+            mesh: None,
+        }
+    }
+
+    #[wasm_bindgen(js_name = clipNames)]
+    pub fn clip_names(&self) -> Vec<String> {
+        self.scene.clip_names()
+    }
+
+    #[wasm_bindgen(js_name = setClip)]
+    pub fn set_clip(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_clip(name).map_err(js)
+    }
+
+    #[wasm_bindgen(js_name = durationSec)]
+    pub fn duration_sec(&self) -> f32 {
+        self.scene.duration_sec()
+    }
+
+    /// "LBS" or "DQS".
+    #[wasm_bindgen(js_name = setMethod)]
+    pub fn set_method(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_method(name).map_err(js)
+    }
+
+    /// Falloff of the automatic weights, metres in [0.005, 0.2].
+    #[wasm_bindgen(js_name = setFalloff)]
+    pub fn set_falloff(&mut self, falloff: f32) -> Result<(), JsError> {
+        self.scene.set_falloff(falloff).map_err(js)
+    }
+
+    #[wasm_bindgen(js_name = jointNames)]
+    pub fn joint_names(&self) -> Vec<String> {
+        self.scene.joint_names()
+    }
+
+    /// "none" or a joint's name.
+    #[wasm_bindgen(js_name = setHeatJoint)]
+    pub fn set_heat_joint(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_heat_joint(name).map_err(js)
+    }
+
+    #[wasm_bindgen(js_name = setShowSkeleton)]
+    pub fn set_show_skeleton(&mut self, on: bool) {
+        self.scene.set_show_skeleton(on);
+    }
+
+    /// Samples the clip at `time_sec`, skins the body on the CPU; returns the milliseconds the
+    /// skinning took (sampling, palette and LBS or DQS).
+    pub fn skin(&mut self, time_sec: f32) -> Result<f64, JsError> {
+        let start = now_ms();
+        self.scene.skin(time_sec).map_err(js)?;
+        Ok(now_ms() - start)
+    }
+
+    /// Uploads the skinned body and draws. Returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let indices = self.scene.character().mesh.indices.clone();
+        let id = sync(viewer, &mut self.mesh, &mut self.scene.mesh, &indices)?;
+        let note = self.scene.draw(&mut viewer.renderer.frame, id);
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for SkinnedHumanScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+fn now_ms() -> f64 {
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map(|p| p.now())
+        .unwrap_or(0.0)
+}
+
+/// Validates skinning data from JavaScript and says what is wrong, or `"ok"`: the wasm-boundary
+/// check of every rule. `joints` and `weights` hold four numbers per vertex.
+#[wasm_bindgen(js_name = checkSkinWeights)]
+pub fn check_skin_weights(
+    joints: Vec<u32>,
+    weights: Vec<f32>,
+    joint_count: usize,
+) -> Result<String, JsError> {
+    use crate::skinning::{SkinWeights, MAX_SKIN_VERTICES};
+    if !joints.len().is_multiple_of(4) || weights.len() != joints.len() {
+        return Err(JsError::new(&format!(
+            "joints and weights: four numbers per vertex each, got {} and {}",
+            joints.len(),
+            weights.len()
+        )));
+    }
+    if joints.len() / 4 > MAX_SKIN_VERTICES {
+        return Err(JsError::new(&format!(
+            "{} vertices is too many (at most {MAX_SKIN_VERTICES})",
+            joints.len() / 4
+        )));
+    }
+    if let Some(&j) = joints.iter().find(|&&j| j > u16::MAX as u32) {
+        return Err(JsError::new(&format!("joint index {j} is over 65535")));
+    }
+    let j4 = joints
+        .chunks_exact(4)
+        .map(|c| [c[0] as u16, c[1] as u16, c[2] as u16, c[3] as u16])
+        .collect();
+    let w4 = weights
+        .chunks_exact(4)
+        .map(|c| [c[0], c[1], c[2], c[3]])
+        .collect();
+    SkinWeights::new(j4, w4, joint_count)
+        .map(|_| "ok".to_string())
+        .map_err(|e| JsError::new(&e.to_string()))
+}

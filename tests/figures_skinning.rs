@@ -1,0 +1,175 @@
+//! Lesson 09 figure logic: validation messages, what the controls change, the plot samples, and
+//! what the note says about the student's exercises (with a correct, a wrong and a panicking
+//! runner).
+
+use glam::Vec3;
+use inbetween::draw::{Frame, MeshId};
+use inbetween::exercises::run::{direct, Failure};
+use inbetween::figures::skinning::{heat, CylinderFigure, HumanFigure};
+
+const IDS: [MeshId; 2] = [MeshId(3), MeshId(4)];
+
+#[test]
+fn bad_input_is_an_error_naming_the_parameter() {
+    let mut f = CylinderFigure::new();
+    assert!(f.set_bend_deg(f32::NAN).unwrap_err().contains("bend"));
+    assert!(f.set_bend_deg(200.0).unwrap_err().contains("bend"));
+    assert!(f.set_twist_deg(-181.0).unwrap_err().contains("twist"));
+    assert!(f.set_falloff(0.0).unwrap_err().contains("falloff"));
+    assert!(f
+        .set_falloff(f32::INFINITY)
+        .unwrap_err()
+        .contains("falloff"));
+    assert!(f.set_heat_joint("knee").unwrap_err().contains("knee"));
+    assert!(f.area_curves(1).is_err());
+    assert!(f.area_curves(1_000_000).is_err());
+    let mut h = HumanFigure::new();
+    assert!(h.set_method("Phong").unwrap_err().contains("method"));
+    assert!(h.set_clip("dance").unwrap_err().contains("clip"));
+    assert!(h.set_falloff(-1.0).unwrap_err().contains("falloff"));
+    assert!(h.skin(f32::NAN).unwrap_err().contains("time"));
+    assert!(h.set_heat_joint("tail").is_err());
+}
+
+#[test]
+fn the_default_cylinder_shows_the_collapse_and_the_controls_change_it() {
+    let mut f = CylinderFigure::new();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, IDS).unwrap();
+    assert_eq!(frame.meshes.len(), 2);
+    assert!(frame.meshes.iter().all(|m| m.vertex_colors));
+    assert!(note.contains("LBS keeps 71%"), "{note}"); // cos 45° of the rest area
+    let (lbs, dqs) = f.elbow_areas();
+    assert!(lbs < 0.75 && dqs > 0.95, "{lbs} {dqs}");
+    assert!(f.lbs.take_dirty() && !f.lbs.take_dirty());
+    // Twist to a half turn: the LBS ring collapses (candy wrapper), the DQS ring does not.
+    f.set_bend_deg(0.0).unwrap();
+    f.set_twist_deg(180.0).unwrap();
+    f.draw(&mut Frame::default(), IDS).unwrap();
+    let (lbs, dqs) = f.elbow_areas();
+    assert!(lbs < 0.01 && (dqs - 1.0).abs() < 1e-3, "{lbs} {dqs}");
+    assert!(f.lbs.take_dirty());
+    // The heat map colours by weight: the shoulder end red for the shoulder, blue for the elbow.
+    f.set_heat_joint("shoulder").unwrap();
+    assert_eq!(f.lbs.colors[0], heat(1.0));
+    f.set_heat_joint("elbow").unwrap();
+    assert_eq!(f.lbs.colors[0], heat(0.0));
+    assert_ne!(heat(0.0), heat(1.0));
+    // A wider falloff changes the weights next to the elbow.
+    let near = f.rig().ring_start(f.rig().elbow_ring() + 2);
+    let before = f.skin().weight_of(near, 1);
+    f.set_falloff(0.8).unwrap();
+    assert!(f.skin().weight_of(near, 1) < before);
+}
+
+#[test]
+fn area_curves_start_at_one_and_lbs_falls_below_dqs() {
+    let f = CylinderFigure::new();
+    let rows = f.area_curves(19).unwrap();
+    assert_eq!(rows.len(), 19 * 5);
+    let row = |i: usize| &rows[5 * i..5 * i + 5];
+    for k in 1..5 {
+        assert!((row(0)[k] - 1.0).abs() < 1e-4);
+    }
+    assert_eq!(row(18)[0], 180.0);
+    for i in 1..18 {
+        let r = row(i);
+        assert!(r[1] < r[2], "bend {}°: LBS {} DQS {}", r[0], r[1], r[2]);
+        assert!(r[3] < r[4], "twist {}°: LBS {} DQS {}", r[0], r[3], r[4]);
+        assert!((r[4] - 1.0).abs() < 1e-3, "DQS keeps the ring under twist");
+    }
+    assert!(row(18)[3] < 0.01, "LBS at a half twist: the candy wrapper");
+    // Volume: LBS loses more than DQS at every bend, and a wider falloff changes it.
+    let mut f = f;
+    let v = f.volume_curves(7).unwrap();
+    assert!((v[1] - 1.0).abs() < 1e-3 && (v[2] - 1.0).abs() < 1e-3);
+    for i in 1..7 {
+        assert!(v[3 * i + 1] < v[3 * i + 2], "{:?}", &v[3 * i..3 * i + 3]);
+    }
+    f.set_falloff(0.8).unwrap();
+    let wide = f.volume_curves(7).unwrap();
+    assert!((wide[3 * 3 + 1] - v[3 * 3 + 1]).abs() > 1e-3);
+}
+
+fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut out = direct(name, args)?;
+    out[0] += 0.5;
+    Ok(out)
+}
+
+fn panicking(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::Panicked(
+        "panicked at src/exercises/skinning.rs:20:5:\nboom".into(),
+    ))
+}
+
+#[test]
+fn the_note_says_how_the_students_exercises_compare() {
+    let mut f = CylinderFigure::new();
+    f.set_use_exercise(true);
+    let note = f.draw(&mut Frame::default(), IDS).unwrap();
+    if cfg!(feature = "solutions") {
+        assert!(note.contains("lbs_vertex (9.1) matches"), "{note}");
+        assert!(note.contains("blend_dual_quats (9.2) matches"), "{note}");
+        f.set_runner(wrong);
+        let note = f.draw(&mut Frame::default(), IDS).unwrap();
+        assert!(note.contains("differs at vertex"), "{note}");
+    } else {
+        assert!(note.contains("Not done yet: exercise 9.1"), "{note}");
+        assert!(note.contains("Not done yet: exercise 9.2"), "{note}");
+    }
+    f.set_runner(panicking);
+    let note = f.draw(&mut Frame::default(), IDS).unwrap();
+    assert!(
+        note.contains("panicked at src/exercises/skinning.rs:20:5: boom"),
+        "{note}"
+    );
+    // The figure still shows the reference.
+    let (lbs, _) = f.elbow_areas();
+    assert!((lbs - std::f32::consts::FRAC_1_SQRT_2).abs() < 0.02);
+}
+
+#[test]
+fn the_human_skins_its_clip_by_both_methods() {
+    let mut h = HumanFigure::new();
+    h.skin(0.0).unwrap();
+    let dqs = h.mesh.positions.clone();
+    h.set_method("LBS").unwrap();
+    h.skin(0.0).unwrap();
+    let lbs = h.mesh.positions.clone();
+    let max_gap = dqs
+        .iter()
+        .zip(&lbs)
+        .map(|(a, b)| a.distance(*b))
+        .fold(0.0, f32::max);
+    assert!(
+        max_gap > 1e-4 && max_gap < 0.1,
+        "LBS and DQS differ a little: {max_gap}"
+    );
+    h.skin(0.4).unwrap();
+    let moved = h
+        .mesh
+        .positions
+        .iter()
+        .zip(&lbs)
+        .map(|(a, b)| a.distance(*b))
+        .fold(0.0, f32::max);
+    assert!(moved > 0.02, "the walk moves the body");
+    assert!(h
+        .mesh
+        .positions
+        .iter()
+        .all(|p| p.is_finite() && p.length() < 3.0));
+    let mut frame = Frame::default();
+    h.set_show_skeleton(true);
+    h.set_heat_joint("forearm.L").unwrap();
+    let note = h.draw(&mut frame, MeshId(3));
+    assert!(note.contains("linear blend skinning"), "{note}");
+    assert!(frame.labels.iter().any(|l| l.text == "forearm.L"));
+    for name in h.clip_names() {
+        h.set_clip(&name).unwrap();
+        h.skin(0.7).unwrap();
+    }
+    assert!(h.mesh.positions.iter().all(|p| p.is_finite()));
+    let _ = Vec3::ZERO;
+}
