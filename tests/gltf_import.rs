@@ -1,5 +1,5 @@
 //! The glTF importer (src/gltf_import.rs): the Khronos sample characters against three.js's joint
-//! world matrices (tests/data/gltf_three.json, made by scripts/reference/gltf_three.mjs), bad
+//! world matrices and skinned vertex positions (skinned here by src/skinning) (tests/data/gltf_three.json, made by scripts/reference/gltf_three.mjs), bad
 //! files, and a fuzz property (no input makes it panic).
 //!
 //! The sample files are not committed (../shared/assets/gltf, or $INBETWEEN_GLTF_ASSETS).
@@ -10,6 +10,7 @@ use glam::{Affine3A, Mat4};
 use inbetween::fixtures::tiny_skinned_gltf as tiny;
 use inbetween::gltf_import::{import, ImportError};
 use inbetween::skeleton::{Clip, ClipCursor};
+use inbetween::skinning::{skin_lbs, skinning_palette, SkinWeights};
 use proptest::prelude::*;
 use std::path::PathBuf;
 
@@ -49,6 +50,18 @@ fn model_matrices(
         .collect()
 }
 
+/// The largest coordinate of the reference's skinned vertices (the tolerance's scale).
+fn reference_size(r: &serde_json::Value) -> f32 {
+    r["skinned"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|t| t.as_array().unwrap())
+        .flat_map(|v| v.as_array().unwrap())
+        .map(|x| x.as_f64().unwrap().abs() as f32)
+        .fold(1.0, f32::max)
+}
+
 fn assert_matrices_close(ours: Mat4, theirs: &[f64], what: &str) {
     let theirs: Vec<f32> = theirs.iter().map(|&x| x as f32).collect();
     let theirs = Mat4::from_cols_slice(&theirs);
@@ -67,7 +80,7 @@ fn assert_matrices_close(ours: Mat4, theirs: &[f64], what: &str) {
 }
 
 #[test]
-fn sample_characters_match_threejs_joint_world_matrices() {
+fn sample_characters_match_threejs_joints_and_skinned_vertices() {
     let reference: serde_json::Value =
         serde_json::from_str(include_str!("data/gltf_three.json")).unwrap();
     assert!(reference["tool"]
@@ -129,6 +142,46 @@ fn sample_characters_match_threejs_joint_world_matrices() {
                     world[ours_of(node)],
                     &matrix(&r["world"][i][k]),
                     &format!("{name} at t = {t}, node {node}"),
+                );
+            }
+            // Skinned by the skinning core (lesson 09) with the file's inverse bind matrices:
+            // K_j = (root · M_j) · B_j⁻¹, positions by linear blend skinning.
+            let model: Vec<Affine3A> = world.iter().map(|m| Affine3A::from_mat4(*m)).collect();
+            let inverse_bind: Vec<Affine3A> = imported
+                .inverse_bind
+                .iter()
+                .map(|m| Affine3A::from_mat4(*m))
+                .collect();
+            let mut palette = vec![Affine3A::IDENTITY; model.len()];
+            skinning_palette(&model, &inverse_bind, &mut palette).unwrap();
+            let mesh = &imported.meshes[0];
+            let skin =
+                SkinWeights::new(mesh.joints.clone(), mesh.weights.clone(), model.len()).unwrap();
+            let n = mesh.positions.len();
+            let (mut p, mut nrm) = (vec![glam::Vec3::ZERO; n], vec![glam::Vec3::ZERO; n]);
+            skin_lbs(
+                &palette,
+                &skin,
+                &mesh.positions,
+                &mesh.normals,
+                &mut p,
+                &mut nrm,
+            )
+            .unwrap();
+            let size = reference_size(r);
+            for (k, v) in r["vertices"].as_array().unwrap().iter().enumerate() {
+                let v = v.as_u64().unwrap() as usize;
+                let theirs = glam::Vec3::from_slice(
+                    &matrix(&r["skinned"][i][k])
+                        .iter()
+                        .map(|&x| x as f32)
+                        .collect::<Vec<_>>(),
+                );
+                let error = (p[v] - theirs).length();
+                assert!(
+                    error <= 2e-4 * size,
+                    "{name} at t = {t}, vertex {v}: ours {}, three.js {theirs} (off by {error})",
+                    p[v]
                 );
             }
         }

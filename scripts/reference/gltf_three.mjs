@@ -1,6 +1,7 @@
 // Generates tests/data/gltf_three.json: the joint world matrices of the Khronos sample characters
 // (../shared/assets/gltf: RiggedSimple, RiggedFigure, CesiumMan) as three.js (r170) computes
-// them, in the rest pose and at several times of each file's first animation, for
+// them, in the rest pose and at several times of each file's first animation, and the skinned
+// positions of 40 vertices of the first skinned mesh at the same times, for
 // tests/gltf_import.rs. three.js is an independent glTF implementation (GLTFLoader,
 // AnimationMixer, Object3D.matrixWorld).
 //
@@ -54,7 +55,20 @@ for (const name of names) {
   // Bones in the skin's `joints` order, named by their glTF node index (these files leave most
   // nodes unnamed).
   const nodes = bones.map((b) => gltf.parser.associations.get(b)?.nodes);
-  const model = { nodes, rest: world(), times: [], world: [] };
+  // Skinned vertex positions (world space) of the first skinned mesh, for a spread of vertices:
+  // SkinnedMesh.applyBoneTransform gives the mesh-local position, matrixWorld takes it to world.
+  const count = skinned.geometry.attributes.position.count;
+  const vertices = Array.from({ length: 40 }, (_, k) => Math.floor((k * count) / 40));
+  const skinnedPositions = () => {
+    gltf.scene.updateMatrixWorld(true);
+    skinned.skeleton.update();
+    return vertices.map((i) => {
+      const v = new THREE.Vector3().fromBufferAttribute(skinned.geometry.attributes.position, i);
+      skinned.applyBoneTransform(i, v);
+      return v.applyMatrix4(skinned.matrixWorld).toArray().map(round);
+    });
+  };
+  const model = { nodes, rest: world(), times: [], world: [], vertices, skinned: [] };
   const clip = gltf.animations[0];
   if (clip) {
     const mixer = new THREE.AnimationMixer(gltf.scene);
@@ -66,6 +80,7 @@ for (const name of names) {
       mixer.setTime(t);
       model.times.push(round(t));
       model.world.push(world());
+      model.skinned.push(skinnedPositions());
     }
   }
   out.models[name] = model;

@@ -228,8 +228,8 @@ macro_rules! exercises {
     };
 }
 
-use super::ik as ik7;
 use super::blend_shapes as bs;
+use super::ik as ik7;
 use super::noise as nz;
 use super::skinning as sn;
 use super::{

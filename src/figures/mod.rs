@@ -7,8 +7,8 @@
 //! say, next to the figure, whether the student's answer matches the reference at the current
 //! inputs (helpers below).
 
-pub mod blending;
 pub mod blend_shapes;
+pub mod blending;
 pub mod curves;
 pub mod expressive;
 pub mod gltf;

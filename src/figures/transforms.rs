@@ -583,7 +583,11 @@ impl HierarchyFigure {
             palette::DARK,
         );
         // Halfway down the thigh (at the hip it sat on the wrist's label when the arm hangs).
-        let knee = self.hierarchy.parents().iter().position(|&p| p == self.thigh as i32);
+        let knee = self
+            .hierarchy
+            .parents()
+            .iter()
+            .position(|&p| p == self.thigh as i32);
         let thigh_mid = knee.map_or(pivot(self.thigh), |k| (pivot(self.thigh) + pivot(k)) * 0.5);
         frame.label(thigh_mid, "left thigh", palette::PURPLE);
         let wrist = placement.transform_point3(self.wrist());
