@@ -10,7 +10,7 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
     let mut figure = GltfFigure::new();
     let mut f = Frame::default();
     assert!(figure
-        .draw(&mut f, 0.0)
+        .draw(&mut f, 0.0, &[])
         .unwrap()
         .contains("No character loaded"));
     let summary = figure
@@ -30,7 +30,7 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
             .collect()
     };
     f.clear();
-    figure.draw(&mut f, 0.0).unwrap();
+    figure.draw(&mut f, 0.0, &[]).unwrap();
     let rest = joints(&f);
     assert_eq!(rest.len(), 2);
     assert!(
@@ -41,19 +41,39 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
     // The clip turns the knee's joint by 90° about z at t = 1; halfway, 45°. The knee is the
     // child, so its own position does not move; the mesh dots are drawn as points.
     f.clear();
-    let note = figure.draw(&mut f, 0.5).unwrap();
+    let note = figure.draw(&mut f, 0.5, &[]).unwrap();
     assert!(note.contains("Clip \"bend\" at 0.500 s"), "{note}");
     assert_eq!(f.points.len(), 3, "the three vertices as dots");
     figure.set_show_mesh(false);
     f.clear();
-    figure.draw(&mut f, 0.5).unwrap();
+    figure.draw(&mut f, 0.5, &[]).unwrap();
     assert!(f.points.is_empty());
     // A bad file: a clear message, and the character loaded before stays.
     let err = figure.load("broken.gltf", b"{ not json").unwrap_err();
     assert!(err.starts_with("broken.gltf: not a valid glTF"), "{err}");
     assert_eq!(figure.clip_names(), ["bend"]);
     assert!(figure.set_clip(3).is_err());
-    assert!(figure.draw(&mut f, f32::NAN).is_err());
+    assert!(figure.draw(&mut f, f32::NAN, &[]).is_err());
     let [_, _, _, distance] = figure.fit();
     assert!(distance > 1.0 && distance < 10.0, "{distance}");
+    // Skinned: the first vertex is bound to the knee alone (weight 1), whose inverse bind is the
+    // identity in this file, so it sits at the knee's world position; LBS and DQS agree there.
+    figure.set_show_mesh(true);
+    figure.set_skinning("lbs").unwrap();
+    assert!(figure.skinning_on());
+    f.clear();
+    let note = figure.draw(&mut f, 0.0, &[MeshId(9)]).unwrap();
+    assert!(note.contains("Skinned by LBS"), "{note}");
+    assert!(f.meshes.iter().any(|m| m.mesh == MeshId(9)));
+    assert!(f.points.is_empty(), "no dots while skinned");
+    let knee = joints(&f)[1];
+    let (p, _) = figure.skinned(0).unwrap();
+    assert!((p[0] - knee).length() < 1e-5, "{} vs {knee}", p[0]);
+    let lbs = p.to_vec();
+    figure.set_skinning("dqs").unwrap();
+    f.clear();
+    figure.draw(&mut f, 0.0, &[MeshId(9)]).unwrap();
+    let (p, _) = figure.skinned(0).unwrap();
+    assert!((p[0] - lbs[0]).length() < 1e-5);
+    assert!(figure.set_skinning("gpu").is_err());
 }

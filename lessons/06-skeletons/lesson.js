@@ -1,7 +1,8 @@
 // Lesson 06: wires the page's controls to the wasm scene. No math here: it lives in Rust
 // (src/skeleton/, src/figures/skeleton.rs).
 import { startLesson, markDrawn, Timeline, Plot, showMatrix, columns, GUI } from '../../www/lesson.js';
-import { SkeletonScene, GltfScene } from '../../pkg/inbetween.js';
+import { SkeletonScene } from '../../pkg/inbetween.js';
+import { gltfFigure } from '../../www/gltf-figure.js';
 
 const lesson = await startLesson();
 
@@ -149,63 +150,4 @@ if (viewer) {
 }
 
 // Figure 2: a character from a glTF file (the samples served with the site, or the reader's own).
-const gltfViewer = await lesson.figure('#fig-gltf');
-if (gltfViewer) {
-  const scene = new GltfScene();
-  const note = document.getElementById('gltf-note');
-  const timeline = new Timeline(document.getElementById('gltf-timeline'), { duration: 1, playing: true });
-  let samples = [];
-  try {
-    const response = await fetch('../../assets/gltf/index.json');
-    if (response.ok) samples = await response.json();
-  } catch { /* no samples on this server */ }
-  const p = { character: samples.includes('RiggedFigure.gltf') ? 'RiggedFigure.gltf' : samples[0] ?? '(none)', clip: '', mesh: true };
-  const gui = new GUI({ container: document.querySelector('#fig-gltf .panel'), title: 'glTF character' });
-  let message = samples.length ? '' : 'The sample characters are not on this server (they are copied from ../shared when it is there); load your own file below.';
-  let clipControl = null;
-  const loaded = (summary) => {
-    const [x, y, z, distance] = scene.fit();
-    gltfViewer.setCamera(x, y, z, distance, 0.6, 0.15);
-    timeline.duration = scene.duration;
-    timeline.time = 0;
-    clipControl?.destroy();
-    const names = scene.clipNames();
-    p.clip = names[0] ?? '';
-    if (names.length > 1) {
-      clipControl = gui.add(p, 'clip', names).name('clip').onChange(() => {
-        scene.setClip(names.indexOf(p.clip));
-        timeline.duration = scene.duration;
-      });
-    }
-    message = summary;
-  };
-  const load = async (name, bytes) => {
-    try {
-      loaded(scene.load(name, bytes));
-    } catch (e) {
-      message = `Could not load ${e.message ?? e}`.replace(/\.?$/, '.');
-    }
-  };
-  const loadSample = async (file) => {
-    if (!samples.includes(file)) return;
-    const response = await fetch(`../../assets/gltf/${file}`);
-    await load(file, new Uint8Array(await response.arrayBuffer()));
-  };
-  if (samples.length) gui.add(p, 'character', samples).name('sample').onChange(() => loadSample(p.character));
-  gui.add(p, 'mesh').name('mesh vertices').onChange(() => scene.setShowMesh(p.mesh));
-  const readFile = async (file) => load(file.name, new Uint8Array(await file.arrayBuffer()));
-  document.getElementById('gltf-file').addEventListener('change', (e) => { if (e.target.files[0]) readFile(e.target.files[0]); });
-  const stage = document.querySelector('#fig-gltf .stage');
-  stage.addEventListener('dragover', (e) => e.preventDefault());
-  stage.addEventListener('drop', (e) => {
-    e.preventDefault();
-    if (e.dataTransfer.files[0]) readFile(e.dataTransfer.files[0]);
-  });
-  if (samples.length) await loadSample(p.character);
-  lesson.onFrame((dt) => {
-    timeline.advance(dt);
-    const drawn = scene.draw(gltfViewer, timeline.time);
-    showNote(note, [message, drawn].filter(Boolean).join(' '));
-    markDrawn('#fig-gltf');
-  });
-}
+await gltfFigure(lesson, '#fig-gltf');

@@ -2,6 +2,7 @@
 // (src/skinning/, src/figures/skinning.rs).
 import { startLesson, markDrawn, Timeline, Plot, columns, GUI } from '../../www/lesson.js';
 import { SkinningCylinderScene, SkinnedHumanScene } from '../../pkg/inbetween.js';
+import { gltfFigure } from '../../www/gltf-figure.js';
 
 const lesson = await startLesson();
 
@@ -78,3 +79,6 @@ if (humanViewer) {
     markDrawn('#fig-human');
   });
 }
+
+// Figure 3: a character from a glTF file, skinned (the shared glTF figure, www/gltf-figure.js).
+await gltfFigure(lesson, '#fig-gltf', { skinning: 'lbs' });

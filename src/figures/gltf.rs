@@ -1,12 +1,37 @@
-//! Figure logic for lesson 06's last figure: a character imported from a glTF file (a Khronos
-//! sample served with the site, or the reader's own file), drawn as its skeleton and playing its
-//! clips. The import itself is [`crate::gltf_import`]; skinning the mesh is lesson 09's subject,
-//! so this figure shows the joints, the bones and, faintly, the mesh's vertices in the bind pose.
+//! Figure logic for the glTF characters: a character imported from a glTF file (a Khronos sample
+//! served with the site, or the reader's own file), drawn as its skeleton and playing its clips.
+//! The import itself is [`crate::gltf_import`]. Lesson 06 shows the joints, the bones and, faintly,
+//! the mesh's vertices in the bind pose; lesson 09 skins the mesh ([`SkinMode`]) with the file's
+//! inverse bind matrices, by linear blend or dual quaternion skinning ([`crate::skinning`]).
 
 use super::{format_number, in_range, palette, Frame, MeshId};
 use crate::gltf_import::{import, Imported};
+use crate::rigid::DualQuat;
 use crate::skeleton::{Clip, ClipCursor, Pose};
+use crate::skinning::{dual_quat_palette, skin_dqs, skin_lbs, skinning_palette, SkinWeights};
 use glam::{Affine3A, Mat4, Vec3};
+
+/// How the figure shows the mesh.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SkinMode {
+    /// The bind-pose vertices as dots (lesson 06).
+    #[default]
+    Dots,
+    /// Linear blend skinning.
+    Lbs,
+    /// Dual quaternion skinning (falls back to LBS, and says so, for scaled joints).
+    Dqs,
+}
+
+/// The colour of the skinned mesh.
+pub const SKIN: Vec3 = Vec3::new(0.75, 0.62, 0.5);
+
+/// One skinned mesh's weights and its skinned vertices.
+struct Skinned {
+    weights: SkinWeights,
+    positions: Vec<Vec3>,
+    normals: Vec<Vec3>,
+}
 
 /// The most mesh vertices drawn as dots (every k-th vertex beyond it).
 const MAX_DOTS: usize = 2_000;
@@ -20,6 +45,10 @@ struct Character {
     centre: Vec3,
     /// A thinned set of the mesh's vertices (bind pose, world space).
     dots: Vec<Vec3>,
+    /// Per mesh, or why the mesh cannot be skinned.
+    skinned: Result<Vec<Skinned>, String>,
+    /// The file's inverse bind matrices.
+    inverse_bind: Vec<Affine3A>,
 }
 
 /// The figure: nothing until a file is loaded.
@@ -31,12 +60,21 @@ pub struct GltfFigure {
     pose: Option<Pose>,
     model: Vec<Affine3A>,
     show_mesh: bool,
+    mode: SkinMode,
+    /// Counts loads, so the page knows when to make new GPU meshes.
+    generation: u32,
+    palette: Vec<Affine3A>,
+    dual_quats: Vec<DualQuat>,
+    /// Why DQS fell back to LBS this frame, if it did.
+    fallback: Option<String>,
 }
 
 impl GltfFigure {
     pub fn new() -> Self {
         GltfFigure {
             show_mesh: true,
+            mode: SkinMode::Dots,
+            generation: 0,
             ..Default::default()
         }
     }
@@ -105,6 +143,31 @@ impl GltfFigure {
                 format!("; skipped: {}", imported.notes.join("; "))
             },
         );
+        let skinned = imported
+            .meshes
+            .iter()
+            .map(|m| {
+                let n = m.positions.len();
+                Ok(Skinned {
+                    weights: SkinWeights::new(
+                        m.joints.clone(),
+                        m.weights.clone(),
+                        imported.skeleton.len(),
+                    )
+                    .map_err(|e| format!("its skin weights: {e}"))?,
+                    positions: vec![Vec3::ZERO; n],
+                    normals: vec![Vec3::ZERO; n],
+                })
+            })
+            .collect::<Result<Vec<_>, String>>();
+        let inverse_bind = imported
+            .inverse_bind
+            .iter()
+            .map(|m| Affine3A::from_mat4(*m))
+            .collect();
+        self.palette = vec![Affine3A::IDENTITY; imported.skeleton.len()];
+        self.dual_quats = vec![DualQuat::IDENTITY; imported.skeleton.len()];
+        self.generation += 1;
         self.pose = Some(rest);
         self.model = model;
         self.cursor = ClipCursor::new();
@@ -114,6 +177,8 @@ impl GltfFigure {
             size,
             centre: 0.5 * (lo + hi),
             dots,
+            skinned,
+            inverse_bind,
             imported,
         });
         Ok(summary)
@@ -152,6 +217,93 @@ impl GltfFigure {
         self.show_mesh = on;
     }
 
+    /// "dots" (bind-pose vertices), "lbs" or "dqs".
+    pub fn set_skinning(&mut self, mode: &str) -> Result<(), String> {
+        self.mode = match mode {
+            "dots" => SkinMode::Dots,
+            "lbs" => SkinMode::Lbs,
+            "dqs" => SkinMode::Dqs,
+            _ => return Err(format!("skinning must be dots, lbs or dqs, got {mode:?}")),
+        };
+        Ok(())
+    }
+
+    /// Whether [`GltfFigure::draw`] skins the meshes (and draws the GPU meshes).
+    pub fn skinning_on(&self) -> bool {
+        self.mode != SkinMode::Dots && self.show_mesh && self.character.is_some()
+    }
+
+    /// Changes at every load: the page makes new GPU meshes then.
+    pub fn generation(&self) -> u32 {
+        self.generation
+    }
+
+    /// The loaded meshes in the bind pose (positions, normals, triangles), for the GPU.
+    pub fn bind_meshes(&self) -> Vec<crate::mesh::MeshData> {
+        self.character.as_ref().map_or_else(Vec::new, |c| {
+            c.imported
+                .meshes
+                .iter()
+                .map(|m| crate::mesh::MeshData {
+                    positions: m.positions.clone(),
+                    normals: m.normals.clone(),
+                    indices: m.indices.clone(),
+                })
+                .collect()
+        })
+    }
+
+    /// The skinned positions and normals of mesh `k`, as of the last [`GltfFigure::draw`] with
+    /// skinning on.
+    pub fn skinned(&self, k: usize) -> Option<(&[Vec3], &[Vec3])> {
+        let c = self.character.as_ref()?;
+        let s = c.skinned.as_ref().ok()?.get(k)?;
+        Some((&s.positions, &s.normals))
+    }
+
+    /// Skins every mesh with the current model matrices.
+    fn skin(&mut self) -> Result<(), String> {
+        let Some(c) = self.character.as_mut() else {
+            return Ok(());
+        };
+        let meshes = c.skinned.as_mut().map_err(|e| e.clone())?;
+        let root = Affine3A::from_mat4(c.imported.root_transform);
+        // World matrices of the joints (the nodes above the root included), then K = M · B⁻¹.
+        let world: Vec<Affine3A> = self.model.iter().map(|m| root * *m).collect();
+        skinning_palette(&world, &c.inverse_bind, &mut self.palette).map_err(|e| e.to_string())?;
+        self.fallback = None;
+        let mut dqs = self.mode == SkinMode::Dqs;
+        if dqs {
+            if let Err(e) = dual_quat_palette(&self.palette, &mut self.dual_quats) {
+                self.fallback = Some(format!("DQS cannot skin it ({e}); shown with LBS"));
+                dqs = false;
+            }
+        }
+        for (m, s) in c.imported.meshes.iter().zip(meshes.iter_mut()) {
+            let result = if dqs {
+                skin_dqs(
+                    &self.dual_quats,
+                    &s.weights,
+                    &m.positions,
+                    &m.normals,
+                    &mut s.positions,
+                    &mut s.normals,
+                )
+            } else {
+                skin_lbs(
+                    &self.palette,
+                    &s.weights,
+                    &m.positions,
+                    &m.normals,
+                    &mut s.positions,
+                    &mut s.normals,
+                )
+            };
+            result.map_err(|e| e.to_string())?;
+        }
+        Ok(())
+    }
+
     /// Where to aim the camera: `[x, y, z, distance]`, framing the rest pose.
     pub fn fit(&self) -> [f32; 4] {
         match &self.character {
@@ -160,8 +312,15 @@ impl GltfFigure {
         }
     }
 
-    /// Draws the character at `time_sec`; returns the note.
-    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+    /// Draws the character at `time_sec`; returns the note. `meshes`: the GPU meshes made from
+    /// [`GltfFigure::bind_meshes`] (drawn when skinning is on; upload [`GltfFigure::skinned`]
+    /// to them after this call).
+    pub fn draw(
+        &mut self,
+        frame: &mut Frame,
+        time_sec: f32,
+        meshes: &[MeshId],
+    ) -> Result<String, String> {
         let time_sec = in_range("time", time_sec, 0.0, 1e6)?;
         let Some(c) = &self.character else {
             frame.grid(10, 0.5);
@@ -174,10 +333,24 @@ impl GltfFigure {
         if let Some(clip) = c.clips.get(self.clip) {
             clip.sample(time_sec, &mut self.cursor, pose);
         }
-        let skeleton = &c.imported.skeleton;
-        skeleton
+        c.imported
+            .skeleton
             .model_matrices(pose, &mut self.model)
             .map_err(|e| e.to_string())?;
+        let skinning = self.mode != SkinMode::Dots && self.show_mesh;
+        let mut problem = None;
+        if skinning {
+            if let Err(e) = self.skin() {
+                problem = Some(format!("Cannot skin this mesh: {e}."));
+            }
+        }
+        let c = self.character.as_ref().expect("checked above");
+        let skeleton = &c.imported.skeleton;
+        if skinning && problem.is_none() {
+            for &id in meshes.iter().take(c.imported.meshes.len()) {
+                frame.mesh(id, Mat4::IDENTITY, SKIN);
+            }
+        }
         let world = |m: &Affine3A| {
             c.imported
                 .root_transform
@@ -211,7 +384,7 @@ impl GltfFigure {
             "root",
             palette::ORANGE,
         );
-        if self.show_mesh {
+        if self.show_mesh && !skinning {
             for &d in &c.dots {
                 frame.point(d, 0.3 * radius, palette::GREY);
             }
@@ -228,10 +401,22 @@ impl GltfFigure {
                 ),
                 None => "No clip: the rest pose".into(),
             },
-            if self.show_mesh && !c.dots.is_empty() {
-                ". Grey dots: the mesh's vertices in the bind pose (skinning them is lesson 09)."
-            } else {
-                "."
+            match (skinning, &problem, &self.fallback) {
+                (true, Some(p), _) => format!(". {p}"),
+                (true, None, Some(f)) => format!(". {f}."),
+                (true, None, None) => format!(
+                    ". Skinned by {} with the file's inverse bind matrices.",
+                    if self.mode == SkinMode::Dqs {
+                        "DQS"
+                    } else {
+                        "LBS"
+                    }
+                ),
+                (false, ..) if self.show_mesh && !c.dots.is_empty() => {
+                    ". Grey dots: the mesh's vertices in the bind pose (skinning them is lesson 09)."
+                        .to_string()
+                }
+                _ => ".".to_string(),
             }
         ))
     }

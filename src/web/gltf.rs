@@ -1,13 +1,18 @@
 //! Bindings for lesson 06's glTF figure: thin wrappers around [`crate::figures::gltf`].
 
 use super::{js, Viewer};
+use crate::draw::MeshId;
 use crate::figures::gltf::GltfFigure;
 use wasm_bindgen::prelude::*;
 
-/// A character imported from a glTF file, drawn as its skeleton.
+/// A character imported from a glTF file, drawn as its skeleton (and skinned, in lesson 09).
 #[wasm_bindgen]
 pub struct GltfScene {
     scene: GltfFigure,
+    /// GPU meshes of the loaded file (bind pose, rewritten in place when skinned).
+    meshes: Vec<MeshId>,
+    /// The figure's load count these meshes were made for.
+    generation: u32,
 }
 
 #[wasm_bindgen]
@@ -16,6 +21,8 @@ impl GltfScene {
     pub fn new() -> GltfScene {
         GltfScene {
             scene: GltfFigure::new(),
+            meshes: Vec::new(),
+            generation: 0,
         }
     }
 
@@ -51,6 +58,12 @@ impl GltfScene {
         self.scene.set_show_mesh(on);
     }
 
+    /// "dots" (the bind-pose vertices), "lbs" or "dqs".
+    #[wasm_bindgen(js_name = setSkinning)]
+    pub fn set_skinning(&mut self, mode: &str) -> Result<(), JsError> {
+        self.scene.set_skinning(mode).map_err(js)
+    }
+
     /// `[x, y, z, distance]` that frame the character.
     pub fn fit(&self) -> Vec<f32> {
         self.scene.fit().to_vec()
@@ -58,10 +71,30 @@ impl GltfScene {
 
     /// Draws at `time_sec`; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        if self.generation != self.scene.generation() {
+            // A new file: its meshes, once (the renderer keeps meshes for the page's lifetime).
+            self.meshes = self
+                .scene
+                .bind_meshes()
+                .iter()
+                .map(|m| viewer.renderer.create_mesh(&viewer.gpu, m, None))
+                .collect();
+            self.generation = self.scene.generation();
+        }
         let note = self
             .scene
-            .draw(&mut viewer.renderer.frame, time_sec)
+            .draw(&mut viewer.renderer.frame, time_sec, &self.meshes)
             .map_err(js)?;
+        if self.scene.skinning_on() {
+            for (k, &id) in self.meshes.iter().enumerate() {
+                if let Some((positions, normals)) = self.scene.skinned(k) {
+                    viewer
+                        .renderer
+                        .update_mesh(&viewer.gpu, id, positions, normals)
+                        .map_err(|e| JsError::new(&e))?;
+                }
+            }
+        }
         viewer.present()?;
         Ok(note)
     }

@@ -1,0 +1,84 @@
+// A figure showing a character from a glTF file: the Khronos samples served with the site
+// (dist/assets/gltf/index.json lists them) or the reader's own file, by file picker or dropped
+// on the figure. Used by lesson 06 (the skeleton and the bind-pose vertices) and lesson 09 (the
+// mesh skinned by LBS or DQS). No math here: it lives in Rust (src/gltf_import.rs,
+// src/figures/gltf.rs). The figure's HTML needs a .stage with a canvas and a .panel, a
+// .timeline, an input[type=file] and a .note, all inside `selector`.
+import { markDrawn, Timeline, GUI } from './lesson.js';
+import { GltfScene } from '../pkg/inbetween.js';
+
+export async function gltfFigure(lesson, selector, { skinning = null } = {}) {
+  const viewer = await lesson.figure(selector);
+  if (!viewer) return;
+  const box = document.querySelector(selector);
+  const scene = new GltfScene();
+  const note = box.querySelector('.note');
+  const timeline = new Timeline(box.querySelector('.timeline'), { duration: 1, playing: true });
+  let samples = [];
+  try {
+    const response = await fetch(new URL('../assets/gltf/index.json', import.meta.url));
+    if (response.ok) samples = await response.json();
+  } catch { /* no samples on this server */ }
+  const p = {
+    character: samples.includes('RiggedFigure.gltf') ? 'RiggedFigure.gltf' : samples[0] ?? '(none)',
+    clip: '', mesh: true, skinning: skinning ?? 'dots',
+  };
+  const gui = new GUI({ container: box.querySelector('.panel'), title: 'glTF character' });
+  let message = samples.length ? '' : 'The sample characters are not on this server (they are copied from ../shared when it is there); load your own file below.';
+  let clipControl = null;
+  scene.setSkinning(p.skinning);
+  const loaded = (summary) => {
+    const [x, y, z, distance] = scene.fit();
+    viewer.setCamera(x, y, z, distance, 0.6, 0.15);
+    timeline.duration = scene.duration;
+    timeline.time = 0;
+    clipControl?.destroy();
+    clipControl = null;
+    const names = scene.clipNames();
+    p.clip = names[0] ?? '';
+    if (names.length > 1) {
+      clipControl = gui.add(p, 'clip', names).name('clip').onChange(() => {
+        scene.setClip(names.indexOf(p.clip));
+        timeline.duration = scene.duration;
+      });
+    }
+    message = summary;
+  };
+  const load = (name, bytes) => {
+    try {
+      loaded(scene.load(name, bytes));
+    } catch (e) {
+      message = `Could not load ${e.message ?? e}`.replace(/\.?$/, '.');
+    }
+  };
+  const loadSample = async (file) => {
+    if (!samples.includes(file)) return;
+    const response = await fetch(new URL(`../assets/gltf/${file}`, import.meta.url));
+    load(file, new Uint8Array(await response.arrayBuffer()));
+  };
+  if (samples.length) gui.add(p, 'character', samples).name('sample').onChange(() => loadSample(p.character));
+  if (skinning) {
+    gui.add(p, 'skinning', { 'linear blend (LBS)': 'lbs', 'dual quaternion (DQS)': 'dqs', 'bind-pose vertices': 'dots' })
+      .name('mesh').onChange(() => scene.setSkinning(p.skinning));
+  } else {
+    gui.add(p, 'mesh').name('mesh vertices').onChange(() => scene.setShowMesh(p.mesh));
+  }
+  const readFile = async (file) => load(file.name, new Uint8Array(await file.arrayBuffer()));
+  box.querySelector('input[type="file"]').addEventListener('change', (e) => {
+    if (e.target.files[0]) readFile(e.target.files[0]);
+  });
+  const stage = box.querySelector('.stage');
+  stage.addEventListener('dragover', (e) => e.preventDefault());
+  stage.addEventListener('drop', (e) => {
+    e.preventDefault();
+    if (e.dataTransfer.files[0]) readFile(e.dataTransfer.files[0]);
+  });
+  if (samples.length) await loadSample(p.character);
+  lesson.onFrame((dt) => {
+    timeline.advance(dt);
+    const drawn = scene.draw(viewer, timeline.time);
+    const text = [message, drawn].filter(Boolean).join(' ');
+    if (note.textContent !== text) note.textContent = text;
+    markDrawn(selector);
+  });
+}
