@@ -32,6 +32,7 @@
 //! - Joint hierarchies are flat arrays of parent indices in depth-first order: the root has
 //!   parent `-1` and every other joint's parent comes before it (`parents[i] < i`).
 
+pub mod boids;
 pub mod camera;
 pub mod curves;
 pub mod draw;
@@ -42,6 +43,7 @@ pub mod fixtures;
 pub mod ik;
 pub mod mesh;
 pub mod noise;
+pub mod particles;
 pub mod raster;
 pub mod rigid;
 pub mod rotation;
