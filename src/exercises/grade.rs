@@ -61,6 +61,8 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::rotations::grade(&mut rng));
     reports.extend(super::skeleton::grade(&mut rng));
     reports.extend(super::noise::grade(&mut rng));
+    reports.extend(super::particles::grade(&mut rng));
+    reports.extend(super::boids::grade(&mut rng));
     reports
 }
 

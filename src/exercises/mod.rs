@@ -12,10 +12,12 @@
 //!
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
+pub mod boids;
 pub mod curves;
 pub mod expressive;
 pub mod grade;
 pub mod noise;
+pub mod particles;
 pub mod raster;
 pub mod rotations;
 pub mod run;
