@@ -7,9 +7,11 @@
 //! say, next to the figure, whether the student's answer matches the reference at the current
 //! inputs (helpers below).
 
+pub mod boids;
 pub mod curves;
 pub mod expressive;
 pub mod noise;
+pub mod particles;
 pub mod raster;
 pub mod rigid;
 pub mod rotations;

@@ -54,13 +54,13 @@ pub const REST_SPEED: f32 = 0.05;
 /// y(t) = y0 + vy t + ½ gy t² = floor_y
 /// h = y0 − floor_y ≥ 0,   t = (−vy − √(vy² − 2 gy h)) / gy     (gy < 0, the later root)
 /// ```
-/// With `gy = 0` the motion is a line: `t = −h / vy` when `vy < 0`. A body already below the
-/// floor gives `Some(0)`. Uses the numerically stable form `t = 2h / (−vy + √(vy² − 2 gy h))`
+/// With `gy = 0` the motion is a line: `t = −h / vy` when `vy < 0`. A body below the floor (or
+/// on it and not rising) gives `Some(0)`; one on it and rising gives its landing time. Uses the numerically stable form `t = 2h / (−vy + √(vy² − 2 gy h))`
 /// where it can. Exercise 11.1; lesson: lessons/11-particles.
 pub fn floor_time_of_impact(y0: f32, vy: f32, gy: f32, floor_y: f32, t_max: f32) -> Option<f32> {
     let h = y0 - floor_y;
-    if h <= 0.0 {
-        // On or below the floor: an impact now unless already moving up and away.
+    if h < 0.0 || (h == 0.0 && vy <= 0.0) {
+        // Below the floor, or on it and not moving up: an impact now unless moving up and away.
         return (vy <= 0.0).then_some(0.0);
     }
     let t = if gy == 0.0 {

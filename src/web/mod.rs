@@ -7,9 +7,11 @@ mod bench_curves;
 mod bench_noise;
 mod bench_rotation;
 mod bench_skeleton;
+mod boids;
 mod curves;
 mod expressive;
 mod noise;
+mod particles;
 mod raster;
 mod rigid;
 mod rotations;
@@ -18,12 +20,14 @@ mod skeleton;
 mod transforms;
 mod viewer;
 
+pub use boids::{BoidRulesScene, FlockScene};
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
 pub use noise::{
     FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
     TexturesScene,
 };
+pub use particles::{check_emitter, BounceScene, EmitterScene, FreeFallScene, SquashScene};
 pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
