@@ -57,9 +57,7 @@ fn the_flock_draws_every_boid_and_the_highlighted_ones_neighbours() {
     assert!(note.contains("300 boids, grid search"), "{note}");
     scene.set_leader(true);
     scene.set_predator(true);
-    for _ in 0..30 {
-        scene.step(1.0 / 60.0);
-    }
+    scene.advance_to(0.5).unwrap();
     let mut frame = Frame::default();
     scene.draw(&mut frame);
     assert!(frame.labels.iter().any(|l| l.text == "leader"));
@@ -88,12 +86,31 @@ fn grid_and_naive_flocks_stay_together() {
     let mut a = FlockFigure::new();
     let mut b = FlockFigure::new();
     b.set_search("naive").unwrap();
-    for _ in 0..20 {
-        a.step(1.0 / 60.0);
-        b.step(1.0 / 60.0);
+    for k in 1..=20 {
+        assert_eq!(a.advance_to(k as f32 / 60.0).unwrap(), 1);
+        assert_eq!(b.advance_to(k as f32 / 60.0).unwrap(), 1);
     }
+    assert_eq!(a.advance_to(20.0 / 60.0).unwrap(), 0, "the same time takes no step");
     let d = a.flock().positions.iter().zip(&b.flock().positions).map(|(p, q)| (*p - *q).length()).fold(0.0, f32::max);
     assert!(d < 1e-3, "{d}");
+}
+
+#[test]
+fn a_jump_in_time_restarts_the_flock_without_replaying() {
+    let mut scene = FlockFigure::new();
+    let start = scene.flock().positions.clone();
+    for k in 1..=5 {
+        scene.advance_to(k as f32 / 60.0).unwrap();
+    }
+    assert_ne!(scene.flock().positions, start);
+    assert_eq!(scene.advance_to(10.0).unwrap(), 0, "a long jump takes no steps");
+    let at_10 = scene.flock().positions.clone();
+    assert_ne!(at_10, start, "a fresh flock seeded by the time");
+    assert_eq!(scene.advance_to(0.0).unwrap(), 0);
+    assert_eq!(scene.flock().positions, start, "time 0 is the first flock again");
+    scene.advance_to(10.0).unwrap();
+    assert_eq!(scene.flock().positions, at_10);
+    assert!(scene.advance_to(f32::NAN).is_err());
 }
 
 #[test]

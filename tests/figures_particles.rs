@@ -53,11 +53,9 @@ fn the_emitter_figure_fills_up_and_stays_under_its_cap() {
     scene.set_rate(1000.0).unwrap();
     scene.set_lifetime(10.0).unwrap();
     let mut frame = Frame::default();
-    for _ in 0..200 {
-        scene.step(1.0 / 30.0); // 6.7 s at 1000/s, lifetimes of at least 8 s: full
-    }
+    // 6.7 s at 1000/s, lifetimes of at least 8 s: full.
+    let note = scene.draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 6.7).unwrap();
     assert_eq!(scene.len(), PAGE_MAX_PARTICLES);
-    let note = scene.draw(&mut frame, Vec3::new(0.0, 2.0, 6.0));
     assert_eq!(frame.points.len(), PAGE_MAX_PARTICLES);
     assert!(note.contains("3000 particles"), "{note}");
     for p in &frame.points {
@@ -68,25 +66,22 @@ fn the_emitter_figure_fills_up_and_stays_under_its_cap() {
 #[test]
 fn sorted_sprites_are_drawn_back_to_front() {
     let mut scene = EmitterFigure::new();
-    for _ in 0..60 {
-        scene.step(1.0 / 60.0);
-    }
     let eye = Vec3::new(0.0, 2.0, 5.0);
     let mut frame = Frame::default();
-    scene.draw(&mut frame, eye);
+    scene.draw(&mut frame, eye, 1.0).unwrap();
     let d: Vec<f32> = frame.points.iter().map(|p| (Vec3::from(p.center) - eye).length()).collect();
     assert!(d.len() > 50);
     assert!(d.windows(2).all(|w| w[0] >= w[1]), "farthest first");
     scene.set_sort(false);
     let mut frame = Frame::default();
-    scene.draw(&mut frame, eye);
+    scene.draw(&mut frame, eye, 1.0).unwrap();
     let d: Vec<f32> = frame.points.iter().map(|p| (Vec3::from(p.center) - eye).length()).collect();
     assert!(!d.windows(2).all(|w| w[0] >= w[1]), "storage order is not depth order");
     // Fading: alpha below 1 for old particles unless fading is off.
     assert!(frame.points.iter().any(|p| p.color[3] < 0.9));
     scene.set_fade(false);
     let mut frame = Frame::default();
-    scene.draw(&mut frame, eye);
+    scene.draw(&mut frame, eye, 1.0).unwrap();
     assert!(frame.points.iter().all(|p| p.color[3] == 1.0));
 }
 
@@ -98,10 +93,38 @@ fn the_emitter_figure_rejects_bad_input() {
     assert!(scene.set_lifetime(0.0).unwrap_err().contains("lifetime"));
     assert!(scene.set_mode("volcano").unwrap_err().contains("volcano"));
     assert!(scene.set_gravity(f32::INFINITY).is_err());
-    // A huge or NaN frame time makes no huge step.
-    assert_eq!(frame_dt(5.0), 1.0 / 30.0);
-    assert_eq!(frame_dt(f32::NAN), 0.0);
-    assert_eq!(frame_dt(-1.0), 0.0);
+    // A time that is NaN, negative or past the limit is refused (no endless replay).
+    let mut frame = Frame::default();
+    for t in [f32::NAN, -1.0, MAX_SIM_TIME + 1.0] {
+        assert!(scene.draw(&mut frame, Vec3::Z, t).unwrap_err().contains("time"));
+    }
+}
+
+#[test]
+fn a_paused_figure_stands_still_and_a_scrub_replays_exactly() {
+    let mut a = EmitterFigure::new();
+    a.set_mode("both").unwrap();
+    let eye = Vec3::new(0.0, 2.0, 5.0);
+    let mut f1 = Frame::default();
+    a.draw(&mut f1, eye, 3.0).unwrap();
+    let mut f2 = Frame::default();
+    a.draw(&mut f2, eye, 3.0).unwrap();
+    assert_eq!(f1.fingerprint(), f2.fingerprint(), "the same time draws the same frame");
+    // Going forward in small steps or jumping, or back and forward again: the same state.
+    let mut b = EmitterFigure::new();
+    b.set_mode("both").unwrap();
+    for k in 0..=30 {
+        b.draw(&mut Frame::default(), eye, 0.1 * k as f32).unwrap();
+    }
+    b.draw(&mut Frame::default(), eye, 0.5).unwrap();
+    let mut f3 = Frame::default();
+    b.draw(&mut f3, eye, 3.0).unwrap();
+    assert_eq!(f1.fingerprint(), f3.fingerprint());
+    // A changed parameter replays with the new value: the frame at the same time changes.
+    a.set_restitution(0.1).unwrap();
+    let mut f4 = Frame::default();
+    a.draw(&mut f4, eye, 3.0).unwrap();
+    assert_ne!(f1.fingerprint(), f4.fingerprint());
 }
 
 #[test]
@@ -164,11 +187,11 @@ fn bouncing_balls_never_go_through_the_floor_and_predict_their_impact() {
     let mut scene = BounceFigure::new();
     scene.set_runner(reference);
     let mut frame = Frame::default();
-    let note = scene.draw(&mut frame);
+    let note = scene.draw(&mut frame, 0.0).unwrap();
     assert!(note.contains("reaches the floor in t = "), "{note}");
     assert!(frame.labels.iter().any(|l| l.text.starts_with("floor in")));
-    for _ in 0..400 {
-        scene.step(1.0 / 60.0);
+    for k in 0..400 {
+        scene.advance_to(k as f32 / 60.0).unwrap();
         for p in scene.positions() {
             assert!(p.y >= 0.08 - 1e-5, "{p}");
         }
@@ -181,7 +204,7 @@ fn bouncing_balls_never_go_through_the_floor_and_predict_their_impact() {
         (stub, "Not done yet: exercise 11.1"),
     ] {
         scene.set_runner(runner);
-        let note = scene.draw(&mut Frame::default());
+        let note = scene.draw(&mut Frame::default(), 0.0).unwrap();
         assert!(note.contains(expect), "{expect}: {note}");
     }
     assert!(scene.set_restitution(1.5).is_err() && scene.set_friction(f32::NAN).is_err());
@@ -191,7 +214,7 @@ fn bouncing_balls_never_go_through_the_floor_and_predict_their_impact() {
 fn dropped_from_rest_the_prediction_is_the_formula() {
     let mut scene = BounceFigure::new();
     scene.set_runner(reference);
-    let note = scene.draw(&mut Frame::default());
+    let note = scene.draw(&mut Frame::default(), 0.0).unwrap();
     // Ball 0 starts at y = 2.2 with radius 0.08: t = √(2 (2.2 − 0.08) / 9.81).
     let t = (2.0f32 * 2.12 / 9.81).sqrt();
     let t2 = particles::floor_time_of_impact(2.2, 0.0, -9.81, 0.08, 10.0).unwrap();
@@ -203,9 +226,8 @@ fn dropped_from_rest_the_prediction_is_the_formula() {
 fn the_squash_ball_keeps_its_volume() {
     let mut scene = SquashFigure::new();
     let mut squashed = false;
-    for _ in 0..200 {
-        scene.step(1.0 / 60.0);
-        let note = scene.draw(&mut Frame::default());
+    for k in 0..200 {
+        let note = scene.draw(&mut Frame::default(), k as f32 / 60.0).unwrap();
         assert!(note.contains("volume stays 1.000"), "{note}");
         squashed |= scene.stretch().1 < 0.9;
     }

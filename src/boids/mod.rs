@@ -303,6 +303,13 @@ impl Flock {
         }
     }
 
+    /// The steering acceleration boid `i` would get now (after clamping), by the naive search:
+    /// what the figure draws for its highlighted boid.
+    pub fn steering_of(&self, params: &BoidParams, i: usize) -> Vec3 {
+        let (leader, predator) = self.roles(params);
+        self.steering(params, Search::Naive, i, leader, predator)
+    }
+
     fn steering(
         &self,
         params: &BoidParams,

@@ -6,6 +6,7 @@
 //! - [`RulesFigure`]: one boid and its neighbours seen from above: radius, field of view, the
 //!   three steering vectors (exercise 12.1) and the grid cells around it (exercise 12.2).
 
+use super::particles::{steps_to, SIM_DT};
 use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner, DEFAULT_RUNNER};
 use crate::boids::{cell_index, three_rules, BoidParams, Flock, ForceLaw, Search};
 use crate::exercises::run;
@@ -20,6 +21,10 @@ pub const PAGE_MAX_BOIDS: usize = 3000;
 /// The most boids the page may time in one step (the naive search at this size takes a while in
 /// a debug build).
 pub const PAGE_MAX_TIMED_BOIDS: usize = 20_000;
+
+/// The most steps the flock takes to catch up with the timeline in one call (a slow frame);
+/// a longer jump restarts the flock.
+pub const MAX_CATCH_UP: usize = 10;
 
 /// What the force-law dropdown offers.
 pub const LAWS: [&str; 3] = ["none", "a1/x² − a2/x⁴", "Gaussian"];
@@ -44,6 +49,7 @@ pub struct FlockFigure {
     bench: Option<Flock>,
     neighbours: Vec<usize>,
     seed: u64,
+    steps_done: usize,
 }
 
 impl Default for FlockFigure {
@@ -68,6 +74,7 @@ impl FlockFigure {
             bench: None,
             neighbours: Vec::new(),
             seed: 1,
+            steps_done: 0,
         };
         f.set_obstacle(true);
         f
@@ -92,7 +99,6 @@ impl FlockFigure {
     /// A new flock of `count ∈ [2, PAGE_MAX_BOIDS]` boids.
     pub fn set_count(&mut self, count: f32) -> Result<(), String> {
         let n = in_range("count", count, 2.0, PAGE_MAX_BOIDS as f32)? as usize;
-        self.seed += 1;
         self.flock = Flock::new(n, &self.params, self.seed)?;
         Ok(())
     }
@@ -165,12 +171,24 @@ impl FlockFigure {
         Ok(())
     }
 
-    /// One step of a frame's `dt` seconds (clamped like the particle figures).
-    pub fn step(&mut self, dt: f32) {
-        let dt = super::particles::frame_dt(dt);
-        if dt > 0.0 {
-            self.flock.step(&self.params, self.search, dt);
+    /// Brings the flock to `time_sec` by fixed steps of [`SIM_DT`]. A jump in time (the timeline
+    /// looped or was scrubbed: back, or more than [`MAX_CATCH_UP`] steps forward) starts a fresh
+    /// flock, seeded by the time it jumped to, instead of replaying thousands of boids (so a
+    /// scrub shows a new flock and the same time shows the same one); changing a parameter acts
+    /// from now on. Returns the steps taken, so the page can time one step.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let target = steps_to(time_sec)?;
+        if target < self.steps_done || target - self.steps_done > MAX_CATCH_UP {
+            let seed = self.seed.wrapping_add(target as u64);
+            self.flock = Flock::new(self.flock.len(), &self.params, seed)?;
+            self.steps_done = target;
         }
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            self.flock.step(&self.params, self.search, SIM_DT);
+        }
+        self.steps_done = target;
+        Ok(n)
     }
 
     /// Builds the flock the page times: `n ∈ [2, PAGE_MAX_TIMED_BOIDS]` boids at the same
@@ -241,6 +259,10 @@ impl FlockFigure {
         }
         let count = found.len();
         self.neighbours = found;
+        // Its steering acceleration now, with the current weights (visible while paused too).
+        let steer = self.flock.steering_of(&self.params, h);
+        let ph = self.flock.positions[h];
+        frame.arrow(ph, ph + 0.25 * steer, palette::PURPLE, 0.08);
         if let Some(l) = leader {
             frame.label(self.flock.positions[l] + Vec3::Y * 0.2, "leader", palette::GREEN);
         }
@@ -248,10 +270,14 @@ impl FlockFigure {
             frame.label(self.flock.positions[p] + Vec3::Y * 0.2, "predator", palette::RED);
         }
         format!(
-            "{} boids, {} search; the orange boid sees {count} neighbours within {} m.",
+            "{} boids, {} search; the orange boid sees {count} neighbours within {} m and steers \
+             at {} m/s² (purple arrow, at most {}); speed at most {} m/s.",
             self.flock.len(),
             if self.search == Search::Grid { "grid" } else { "naive" },
-            format_number(radius)
+            format_number(radius),
+            format_number(steer.length()),
+            format_number(self.params.max_force),
+            format_number(self.params.max_speed),
         )
     }
 }

@@ -21,16 +21,23 @@ use glam::{Mat4, Vec3, Vec4};
 
 const FILE: &str = "src/exercises/particles.rs";
 const TOLERANCE: f32 = 1e-4;
+/// Fixed step of the animated figures, seconds. A figure's state at timeline time `t` is the
+/// state after `⌊t / SIM_DT⌋` steps from its start, so a paused figure stands still, a scrub
+/// replays, and changing a parameter replays from the start with the new value.
+pub const SIM_DT: f32 = 1.0 / 60.0;
+/// The latest time a figure simulates to (bounds the work of one replay), seconds.
+pub const MAX_SIM_TIME: f32 = 60.0;
+
+/// The number of fixed steps that reach `time_sec ∈ [0, MAX_SIM_TIME]`.
+pub fn steps_to(time_sec: f32) -> Result<usize, String> {
+    let t = in_range("time", time_sec, 0.0, MAX_SIM_TIME)?;
+    Ok((t / SIM_DT + 1e-3).floor() as usize)
+}
+
 /// The most particles the emitter figure holds (software rendering in the tests draws them all).
 pub const PAGE_MAX_PARTICLES: usize = 3000;
 /// The longest step a figure takes; a slower frame is cut into steps of at most this.
-const MAX_DT: f32 = 1.0 / 30.0;
 
-/// Clamps a frame's `dt` (seconds) for the simulation: a hidden tab or a slow frame must not
-/// make a huge step. NaN or negative gives 0.
-pub fn frame_dt(dt: f32) -> f32 {
-    if dt.is_finite() && dt > 0.0 { dt.min(MAX_DT) } else { 0.0 }
-}
 
 // ---------------------------------------------------------------------------------------------
 // Emitters and sprites.
@@ -47,10 +54,18 @@ pub struct EmitterFigure {
     mode: usize,
     sort: bool,
     fade: bool,
-    since_burst_sec: f32,
     burst_count: usize,
+    /// Steps at which the reader pressed "explode" (replayed with the rest).
+    bursts: Vec<usize>,
+    steps_done: usize,
+    dirty: bool,
     order: Vec<(f32, u32)>,
 }
+
+/// Steps between two automatic explosions (2.5 s).
+const BURST_EVERY: usize = 150;
+/// The most "explode now" presses a figure remembers.
+const MAX_BURSTS: usize = 16;
 
 impl Default for EmitterFigure {
     fn default() -> Self {
@@ -78,8 +93,10 @@ impl EmitterFigure {
             mode: 0,
             sort: true,
             fade: true,
-            since_burst_sec: 10.0,
-            burst_count: 400,
+            burst_count: 400, // twice the fountain's rate
+            bursts: Vec::with_capacity(MAX_BURSTS),
+            steps_done: 0,
+            dirty: false,
             order: Vec::with_capacity(PAGE_MAX_PARTICLES),
         }
     }
@@ -98,13 +115,15 @@ impl EmitterFigure {
             .iter()
             .position(|&m| m == name)
             .ok_or_else(|| format!("emitter: no mode named {name:?}"))?;
-        self.since_burst_sec = 10.0;
+        self.dirty = true;
         Ok(())
     }
 
-    /// Fountain rate, particles per second, in [0, 1000].
+    /// Fountain rate, particles per second, and particles per explosion, in [0, 1000].
     pub fn set_rate(&mut self, rate: f32) -> Result<(), String> {
         self.emitters[0].rate_per_sec = in_range("rate", rate, 0.0, 1000.0)?;
+        self.burst_count = 2 * rate as usize;
+        self.dirty = true;
         Ok(())
     }
 
@@ -114,6 +133,7 @@ impl EmitterFigure {
         for e in &mut self.emitters {
             e.lifetime_sec = (0.8 * l, 1.2 * l);
         }
+        self.dirty = true;
         Ok(())
     }
 
@@ -123,18 +143,21 @@ impl EmitterFigure {
         if let VelocityDist::Cone { half_angle_rad, .. } = &mut self.emitters[0].velocity {
             *half_angle_rad = s;
         }
+        self.dirty = true;
         Ok(())
     }
 
     /// Restitution in [0, 1].
     pub fn set_restitution(&mut self, e: f32) -> Result<(), String> {
         self.surfaces.restitution = in_range("restitution", e, 0.0, 1.0)?;
+        self.dirty = true;
         Ok(())
     }
 
     /// Gravity's magnitude, m/s², in [0, 30].
     pub fn set_gravity(&mut self, g: f32) -> Result<(), String> {
         self.surfaces.gravity = Vec3::new(0.0, -in_range("gravity", g, 0.0, 30.0)?, 0.0);
+        self.dirty = true;
         Ok(())
     }
 
@@ -148,29 +171,56 @@ impl EmitterFigure {
         self.fade = on;
     }
 
-    /// Sets off the explosion now.
+    /// Sets off the explosion now (and at this moment in every replay).
     pub fn explode(&mut self) {
-        self.system.burst(&self.emitters, 1, self.burst_count);
-        self.since_burst_sec = 0.0;
+        // Recorded even when the system is full, so the note can say so.
+        if self.bursts.len() < MAX_BURSTS && !self.bursts.contains(&self.steps_done) {
+            self.bursts.push(self.steps_done);
+            self.system.burst(&self.emitters, 1, self.burst_count);
+        }
     }
 
-    /// Advances by a frame's `dt` (clamped by [`frame_dt`]).
-    pub fn step(&mut self, dt: f32) {
-        let dt = frame_dt(dt);
+    fn reset(&mut self) {
+        self.system.reset(11);
+        for e in &mut self.emitters {
+            e.carry = 0.0;
+        }
+        self.steps_done = 0;
+        self.dirty = false;
+    }
+
+    fn step(&mut self) {
+        let k = self.steps_done;
+        if (self.mode >= 1 && k % BURST_EVERY == 0) || self.bursts.contains(&k) {
+            self.system.burst(&self.emitters, 1, self.burst_count);
+        }
         let rate = self.emitters[0].rate_per_sec;
         if self.mode == 1 {
             self.emitters[0].rate_per_sec = 0.0;
         }
-        if self.mode >= 1 && self.since_burst_sec > 2.5 {
-            self.explode();
-        }
-        self.since_burst_sec += dt;
-        self.system.step(&mut self.emitters, &self.surfaces, dt);
+        self.system.step(&mut self.emitters, &self.surfaces, SIM_DT);
         self.emitters[0].rate_per_sec = rate;
+        self.steps_done += 1;
     }
 
-    /// Fills `frame`; `eye` is the camera position (for sorting). Returns the note.
-    pub fn draw(&mut self, frame: &mut Frame, eye: Vec3) -> String {
+    /// Brings the simulation to `time_sec` (replaying from the start when the time went back or a
+    /// parameter changed). Returns the steps taken.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let target = steps_to(time_sec)?;
+        if self.dirty || target < self.steps_done {
+            self.reset();
+        }
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            self.step();
+        }
+        Ok(n)
+    }
+
+    /// Simulates to `time_sec` and fills `frame`; `eye` is the camera position (for sorting).
+    /// Returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, eye: Vec3, time_sec: f32) -> Result<String, String> {
+        self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
         for s in &self.surfaces.spheres {
             let model = Mat4::from_translation(s.center) * Mat4::from_scale(Vec3::splat(s.radius * 0.98));
@@ -198,11 +248,22 @@ impl EmitterFigure {
                 color: color.to_array(),
             });
         }
-        format!(
-            "{n} particles alive (at most {PAGE_MAX_PARTICLES} here, {} in the core); sprites {}.",
+        let e = self.surfaces.restitution;
+        Ok(format!(
+            "{n} particles alive (at most {PAGE_MAX_PARTICLES} here, {} in the core); sprites {}. \
+             With e = {}, a particle that hits the floor at 5 m/s leaves it at {} m/s.{}",
             crate::particles::MAX_PARTICLES,
-            if self.sort { "sorted back to front" } else { "in storage order (unsorted)" }
-        )
+            if self.sort { "sorted back to front" } else { "in storage order (unsorted)" },
+            format_number(e),
+            format_number(5.0 * e),
+            match (self.bursts.len(), n == self.system.capacity()) {
+                (0, false) => String::new(),
+                (b, full) => format!(
+                    " Explosions set off by hand: {b}{}.",
+                    if full { " (the system is full: new particles wait for free slots)" } else { "" }
+                ),
+            },
+        ))
     }
 
     /// Linear RGBA of the live particles, for tests.
@@ -394,7 +455,8 @@ pub struct BounceFigure {
     positions: Vec<Vec3>,
     velocities: Vec<Vec3>,
     resting: Vec<bool>,
-    time_sec: f32,
+    steps_done: usize,
+    dirty: bool,
     use_exercise: bool,
     runner: Runner,
 }
@@ -414,7 +476,8 @@ impl BounceFigure {
             positions: Vec::new(),
             velocities: Vec::new(),
             resting: Vec::new(),
-            time_sec: 0.0,
+            steps_done: 0,
+            dirty: false,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
         };
@@ -433,11 +496,13 @@ impl BounceFigure {
 
     pub fn set_restitution(&mut self, e: f32) -> Result<(), String> {
         self.restitution = in_range("restitution", e, 0.0, 1.0)?;
+        self.dirty = true;
         Ok(())
     }
 
     pub fn set_friction(&mut self, mu: f32) -> Result<(), String> {
         self.friction = in_range("friction", mu, 0.0, 2.0)?;
+        self.dirty = true;
         Ok(())
     }
 
@@ -448,7 +513,8 @@ impl BounceFigure {
             .collect();
         self.velocities = vec![Vec3::ZERO; BOUNCE_BALLS];
         self.resting = vec![false; BOUNCE_BALLS];
-        self.time_sec = 0.0;
+        self.steps_done = 0;
+        self.dirty = false;
     }
 
     /// The surfaces the balls' centres bounce on: the floor and the sphere, grown by the ball's
@@ -467,23 +533,28 @@ impl BounceFigure {
         &self.positions
     }
 
-    /// Advances by a frame's `dt`; drops the balls again after 8 s.
-    pub fn step(&mut self, dt: f32) {
-        let dt = frame_dt(dt);
-        let s = self.surfaces();
-        for i in 0..self.positions.len() {
-            crate::particles::ballistic_step(
-                &mut self.positions[i],
-                &mut self.velocities[i],
-                &mut self.resting[i],
-                dt,
-                &s,
-            );
-        }
-        self.time_sec += dt;
-        if self.time_sec > 8.0 {
+    /// Brings the balls to `time_sec` after their drop (replaying when the time went back or a
+    /// parameter changed). Returns the steps taken.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let target = steps_to(time_sec)?;
+        if self.dirty || target < self.steps_done {
             self.drop_balls();
         }
+        let s = self.surfaces();
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            for i in 0..self.positions.len() {
+                crate::particles::ballistic_step(
+                    &mut self.positions[i],
+                    &mut self.velocities[i],
+                    &mut self.resting[i],
+                    SIM_DT,
+                    &s,
+                );
+            }
+        }
+        self.steps_done = target;
+        Ok(n)
     }
 
     /// The time until ball 0's centre reaches the floor height (ignoring the sphere), the
@@ -502,7 +573,9 @@ impl BounceFigure {
         student.or_else(|| floor_time_of_impact(p.y, v.y, g, BALL_RADIUS, f32::INFINITY))
     }
 
-    pub fn draw(&self, frame: &mut Frame) -> String {
+    /// Simulates to `time_sec`, draws, and returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
         let model = Mat4::from_translation(self.sphere.center) * Mat4::from_scale(Vec3::splat(self.sphere.radius));
         frame.mesh(MeshId::SPHERE, model, palette::GREY);
@@ -524,11 +597,17 @@ impl BounceFigure {
         } else {
             note.push_str("The orange ball is on the floor.");
         }
+        note.push_str(&format!(
+            " Each bounce keeps e = {} of the normal speed; friction μ = {} takes μ(1 + e) times \
+             the normal speed off the sliding speed.",
+            format_number(self.restitution),
+            format_number(self.friction)
+        ));
         if self.use_exercise {
             note.push(' ');
             note.push_str(&self.exercise_note());
         }
-        note
+        Ok(note)
     }
 
     /// Compares the student's time of impact with the reference for ball 0 (or a fixed drop when
@@ -559,7 +638,7 @@ pub struct SquashFigure {
     plain: SquashBall,
     squash: SquashBall,
     surfaces: Surfaces,
-    time_sec: f32,
+    steps_done: usize,
 }
 
 impl Default for SquashFigure {
@@ -575,38 +654,54 @@ impl SquashFigure {
             plain: SquashBall::new(0.25, 2.0, 0.6),
             squash: SquashBall::new(0.25, 2.0, 0.6),
             surfaces,
-            time_sec: 0.0,
+            steps_done: 0,
         }
     }
 
     /// Stretch per m/s of speed, in [0, 0.3].
     pub fn set_stretch(&mut self, k: f32) -> Result<(), String> {
         self.squash.stretch_per_speed = in_range("stretch", k, 0.0, 0.3)?;
+        self.restart();
         Ok(())
     }
 
     /// Deepest squash on impact, in [0, 0.8].
     pub fn set_squash(&mut self, squash: f32) -> Result<(), String> {
         self.squash.squash = in_range("squash", squash, 0.0, 0.8)?;
+        self.restart();
         Ok(())
     }
 
     /// Seconds a squash lasts, in [0.02, 0.3].
     pub fn set_contact(&mut self, sec: f32) -> Result<(), String> {
         self.squash.contact_sec = in_range("contact time", sec, 0.02, 0.3)?;
+        self.restart();
         Ok(())
     }
 
-    pub fn step(&mut self, dt: f32) {
-        let dt = frame_dt(dt);
-        self.plain.step(&self.surfaces, dt);
-        self.squash.step(&self.surfaces, dt);
-        self.time_sec += dt;
-        if self.time_sec > 5.0 {
-            let (k, s, c) = (self.squash.stretch_per_speed, self.squash.squash, self.squash.contact_sec);
-            *self = Self::new();
-            (self.squash.stretch_per_speed, self.squash.squash, self.squash.contact_sec) = (k, s, c);
+    /// Back to the start of the drop, keeping the parameters.
+    fn restart(&mut self) {
+        let fresh = Self::new();
+        self.plain = fresh.plain;
+        let (k, s, c) = (self.squash.stretch_per_speed, self.squash.squash, self.squash.contact_sec);
+        self.squash = fresh.squash;
+        (self.squash.stretch_per_speed, self.squash.squash, self.squash.contact_sec) = (k, s, c);
+        self.steps_done = 0;
+    }
+
+    /// Brings both balls to `time_sec` after the drop. Returns the steps taken.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let target = steps_to(time_sec)?;
+        if target < self.steps_done {
+            self.restart();
         }
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            self.plain.step(&self.surfaces, SIM_DT);
+            self.squash.step(&self.surfaces, SIM_DT);
+        }
+        self.steps_done = target;
+        Ok(n)
     }
 
     /// The squashing ball's `(axis, s)` now.
@@ -614,7 +709,9 @@ impl SquashFigure {
         self.squash.stretch()
     }
 
-    pub fn draw(&self, frame: &mut Frame) -> String {
+    /// Simulates to `time_sec`, draws, and returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
         let offset = |x: f32| Vec3::new(-1.2, 0.0, x);
         // The rigid ball, behind.
@@ -631,11 +728,17 @@ impl SquashFigure {
         frame.label(p + Vec3::new(0.0, 0.45, 0.0), "rigid", palette::DARK);
         frame.label(c + Vec3::new(0.0, 0.45, 0.0), "squash and stretch", palette::ORANGE);
         let what = if s < 1.0 { "squashed" } else { "stretched" };
-        format!(
+        Ok(format!(
             "Orange ball: {what} by s = {} along {}; its volume stays {} of the round ball's.",
             format_number(s),
             if axis == Vec3::Y && s < 1.0 { "the floor's normal".to_string() } else { "its velocity".to_string() },
             format_number(self.squash.shape_matrix().determinant() / self.squash.radius.powi(3)),
-        )
+        ) + &format!(
+            " It stretches by k = {} per m/s in flight and squashes down to s = {} for {} s \
+             after each impact.",
+            format_number(self.squash.stretch_per_speed),
+            format_number(1.0 - self.squash.squash),
+            format_number(self.squash.contact_sec),
+        ))
     }
 }

@@ -60,9 +60,11 @@ impl FlockScene {
     pub fn set_search(&mut self, name: &str) -> Result<(), JsError> {
         self.scene.set_search(name).map_err(js)
     }
-    /// One simulation step of `dt` seconds (clamped to 1/30 s); the page times this call.
-    pub fn step(&mut self, dt: f32) {
-        self.scene.step(dt);
+    /// Brings the flock to `time_sec` by steps of 1/60 s; returns the number of steps taken (the
+    /// page times this call and divides).
+    #[wasm_bindgen(js_name = advanceTo)]
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, JsError> {
+        self.scene.advance_to(time_sec).map_err(js)
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let note = self.scene.draw(&mut viewer.renderer.frame);

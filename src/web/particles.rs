@@ -56,11 +56,11 @@ impl EmitterScene {
     pub fn explode(&mut self) {
         self.scene.explode();
     }
-    /// Advances by `dt` seconds (clamped to 1/30 s) and draws; returns the note.
-    pub fn draw(&mut self, viewer: &mut Viewer, dt: f32) -> Result<String, JsError> {
-        self.scene.step(dt);
+    /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
+    /// draws; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let eye = viewer.camera.eye();
-        let note = self.scene.draw(&mut viewer.renderer.frame, eye);
+        let note = self.scene.draw(&mut viewer.renderer.frame, eye, time_sec).map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
@@ -140,17 +140,13 @@ impl BounceScene {
     pub fn set_friction(&mut self, mu: f32) -> Result<(), JsError> {
         self.scene.set_friction(mu).map_err(js)
     }
-    #[wasm_bindgen(js_name = dropBalls)]
-    pub fn drop_balls(&mut self) {
-        self.scene.drop_balls();
-    }
     #[wasm_bindgen(js_name = setUseExercise)]
     pub fn set_use_exercise(&mut self, on: bool) {
         self.scene.set_use_exercise(on);
     }
-    pub fn draw(&mut self, viewer: &mut Viewer, dt: f32) -> Result<String, JsError> {
-        self.scene.step(dt);
-        let note = self.scene.draw(&mut viewer.renderer.frame);
+    /// Simulates to `time_sec` and draws; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self.scene.draw(&mut viewer.renderer.frame, time_sec).map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
@@ -186,9 +182,9 @@ impl SquashScene {
     pub fn set_contact(&mut self, sec: f32) -> Result<(), JsError> {
         self.scene.set_contact(sec).map_err(js)
     }
-    pub fn draw(&mut self, viewer: &mut Viewer, dt: f32) -> Result<String, JsError> {
-        self.scene.step(dt);
-        let note = self.scene.draw(&mut viewer.renderer.frame);
+    /// Simulates to `time_sec` and draws; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self.scene.draw(&mut viewer.renderer.frame, time_sec).map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
