@@ -15,6 +15,8 @@
 //! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
 //! | `05-noise`: noise and terrain | [`noise`], [`terrain`] | [`figures::noise`] | `web::noise` (bench: `web::bench_noise`) | [`exercises::noise`] |
 //! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`] (and [`ik`], for the next lesson) | [`figures::skeleton`] | `web::skeleton` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
+//! | `11-particles`: particles | [`particles`] (integrators, time of impact, emitters) | [`figures::particles`] | `web::particles` | [`exercises::particles`] (11.x) |
+//! | `12-boids`: boids | [`boids`] (rules, force laws, grid) | [`figures::boids`] | `web::boids` (bench: `web::bench_boids`) | [`exercises::boids`] (12.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm

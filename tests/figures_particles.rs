@@ -57,7 +57,7 @@ fn the_emitter_figure_fills_up_and_stays_under_its_cap() {
     let note = scene.draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 6.7).unwrap();
     assert_eq!(scene.len(), PAGE_MAX_PARTICLES);
     assert_eq!(frame.points.len(), PAGE_MAX_PARTICLES);
-    assert!(note.contains("3000 particles"), "{note}");
+    assert!(note.contains("2000 particles"), "{note}");
     for p in &frame.points {
         assert!(p.center[1] >= 0.0, "nothing below the floor");
     }

@@ -33,7 +33,7 @@ const emitterViewer = await lesson.figure('#fig-emitters');
 if (emitterViewer) {
   emitterViewer.setCamera(0.2, 1.0, 0, 6.5, 0.35, 0.3);
   const scene = new EmitterScene();
-  const timeline = new Timeline(document.getElementById('emitters-timeline'), { duration: 8 });
+  const timeline = new Timeline(document.getElementById('emitters-timeline'), { duration: 6 });
   const p = {
     mode: 'fountain', rate: 200, spread: 11, lifetime: 2.5, restitution: 0.7, gravity: 9.81,
     sort: true, fade: true, explode: () => scene.explode(),

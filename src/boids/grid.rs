@@ -36,6 +36,9 @@ pub struct Grid {
     sorted: Vec<u32>,
     /// Each boid's cell.
     cell_of: Vec<u32>,
+    /// `positions[sorted[k]]`: the positions in cell order, so the distance tests of a cell's
+    /// run read memory front to back instead of jumping around the flock.
+    sorted_positions: Vec<Vec3>,
 }
 
 impl Grid {
@@ -68,6 +71,7 @@ impl Grid {
         let n = positions.len();
         self.sorted.resize(n, 0);
         self.cell_of.resize(n, 0);
+        self.sorted_positions.resize(n, Vec3::ZERO);
         self.cell_start.fill(0);
         for (i, &p) in positions.iter().enumerate() {
             let c = cell_index(p, self.origin, self.cell_size, self.dims);
@@ -88,6 +92,9 @@ impl Grid {
         self.cell_start.rotate_left(1);
         let last = self.cell_start.len() - 1;
         self.cell_start[last] = n as u32;
+        for (q, &i) in self.sorted_positions.iter_mut().zip(&self.sorted) {
+            *q = positions[i as usize];
+        }
     }
 
     /// Calls `f(j)` for every boid `j ≠ i` within `radius ≤ cell_size` of `positions[i]`
@@ -105,9 +112,9 @@ impl Grid {
                 let (lo, hi) = (row + ci.saturating_sub(1), row + (ci + 1).min(dx - 1));
                 // Cells lo..=hi are contiguous in memory, and so are their runs in `sorted`.
                 let (a, b) = (self.cell_start[lo] as usize, self.cell_start[hi + 1] as usize);
-                for &jb in &self.sorted[a..b] {
+                for (&jb, q) in self.sorted[a..b].iter().zip(&self.sorted_positions[a..b]) {
                     let jb = jb as usize;
-                    if jb != i && (positions[jb] - p).length_squared() <= r2 {
+                    if jb != i && (*q - p).length_squared() <= r2 {
                         f(jb);
                     }
                 }

@@ -406,3 +406,16 @@ impl Flock {
         force.clamp_length_max(params.max_force)
     }
 }
+
+/// The flock the benchmarks step (native criterion and the browser bench page, so both measure
+/// the same work): `n` boids at one boid per cubic metre in a cube (about 14 within the default
+/// 1.5 m radius), default rules with a 270° field of view, seeded.
+pub fn benchmark_flock(n: usize) -> Result<(BoidParams, Flock), String> {
+    let half = 0.5 * (n.max(1) as f32).cbrt();
+    let params = BoidParams {
+        bounds: Vec3::splat(half),
+        ..Default::default()
+    };
+    let flock = Flock::new(n, &params, 0x5eed_b01d)?;
+    Ok((params, flock))
+}

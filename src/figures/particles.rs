@@ -35,7 +35,7 @@ pub fn steps_to(time_sec: f32) -> Result<usize, String> {
 }
 
 /// The most particles the emitter figure holds (software rendering in the tests draws them all).
-pub const PAGE_MAX_PARTICLES: usize = 3000;
+pub const PAGE_MAX_PARTICLES: usize = 2000;
 /// The longest step a figure takes; a slower frame is cut into steps of at most this.
 
 

@@ -3,6 +3,7 @@
 //! message the page shows in its error banner. No HTML is built here, no math re-implemented.
 
 mod bench;
+mod bench_boids;
 mod bench_curves;
 mod bench_noise;
 mod bench_rotation;
