@@ -1,4 +1,6 @@
 //! Lesson 12 core: the boid rules, the force laws, grid vs naive neighbour search.
+// Native only (proptest); the browser runs tests/web_particles.rs.
+#![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec3;
 use inbetween::boids::*;
@@ -27,6 +29,7 @@ fn neighbour_sets(positions: &[Vec3], radius: f32, search: Search) -> Vec<Vec<us
 }
 
 proptest! {
+    #![proptest_config(ProptestConfig { failure_persistence: None, ..ProptestConfig::default() })]
     #[test]
     fn grid_and_naive_give_the_same_neighbour_sets(
         // Some positions lie outside the grid's box: the border cells must still be exact.

@@ -1,4 +1,6 @@
 //! Lesson 11 core: free fall, integrators, bouncing, the particle system.
+// Native only (proptest); the browser runs tests/web_particles.rs.
+#![cfg(not(target_arch = "wasm32"))]
 
 use glam::{Vec3, Vec4};
 use inbetween::particles::*;
@@ -148,6 +150,7 @@ fn energy(p: Vec3, v: Vec3) -> f32 {
 }
 
 proptest! {
+    #![proptest_config(ProptestConfig { failure_persistence: None, ..ProptestConfig::default() })]
     #[test]
     fn nothing_ends_a_step_below_the_floor_and_energy_never_grows(
         y in 0.0f32..5.0, vx in -3.0f32..3.0, vy in -8.0f32..8.0,
