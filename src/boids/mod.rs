@@ -346,13 +346,22 @@ impl Flock {
                 params.separation.radius.powi(2),
                 params.law_radius.powi(2),
             );
+            // The field-of-view test of `sees`, with its cosine and |v| computed once per boid
+            // (a cosine per neighbour pair was most of the step's time in wasm).
+            let all_round = params.fov_deg >= 360.0;
+            let cos_half = (0.5 * params.fov_deg).to_radians().cos();
+            let v_len = v.length();
             self.for_each_neighbour(search, i, params.search_radius(), |j| {
                 if Some(j) == predator {
                     return;
                 }
                 let q = self.positions[j];
-                if !self.sees(i, q, params.fov_deg) {
-                    return;
+                if !all_round && v_len > 0.0 {
+                    let to = q - p;
+                    let l = to.length();
+                    if l > 0.0 && to.dot(v) < cos_half * l * v_len {
+                        return;
+                    }
                 }
                 let d = p - q;
                 let d2 = d.length_squared();
