@@ -24,8 +24,8 @@ fn boids(c: &mut Criterion) {
         for (name, search) in searches {
             let mut start = flock.clone();
             start.step(&params, search, 1.0 / 60.0); // size the grid outside the timing
-            // Every iteration steps the same state: a flock stepped hundreds of times clusters,
-            // and the cost per step would drift with the number of iterations.
+                                                     // Every iteration steps the same state: a flock stepped hundreds of times clusters,
+                                                     // and the cost per step would drift with the number of iterations.
             group.bench_function(name, |b| {
                 b.iter_batched_ref(
                     || start.clone(),

@@ -15,7 +15,9 @@ fn neighbour_sets(positions: &[Vec3], radius: f32, search: Search) -> Vec<Vec<us
         time_sec: 0.0,
     };
     if search == Search::Grid {
-        flock.grid.configure(Vec3::splat(-4.0), Vec3::splat(4.0), radius);
+        flock
+            .grid
+            .configure(Vec3::splat(-4.0), Vec3::splat(4.0), radius);
         flock.grid.rebuild(&flock.positions);
     }
     (0..positions.len())
@@ -59,12 +61,18 @@ fn cell_index_counts_x_first() {
     assert_eq!(cell_index(Vec3::new(1.5, 0.1, 0.1), o, 1.0, dims), 1);
     assert_eq!(cell_index(Vec3::new(0.1, 1.5, 0.1), o, 1.0, dims), 4);
     assert_eq!(cell_index(Vec3::new(0.1, 0.1, 1.5), o, 1.0, dims), 20);
-    assert_eq!(cell_index(Vec3::new(-5.0, 99.0, 2.5), o, 1.0, dims), 4 * 4 + 20 * 2);
+    assert_eq!(
+        cell_index(Vec3::new(-5.0, 99.0, 2.5), o, 1.0, dims),
+        4 * 4 + 20 * 2
+    );
 }
 
 #[test]
 fn grid_and_naive_steps_agree() {
-    let params = BoidParams { fov_deg: 240.0, ..Default::default() };
+    let params = BoidParams {
+        fov_deg: 240.0,
+        ..Default::default()
+    };
     let mut a = Flock::new(400, &params, 5).unwrap();
     let mut b = a.clone();
     for _ in 0..30 {
@@ -72,7 +80,12 @@ fn grid_and_naive_steps_agree() {
         b.step(&params, Search::Grid, 1.0 / 60.0);
     }
     // Same sets, visited in another order: the sums differ only by rounding.
-    let max = a.positions.iter().zip(&b.positions).map(|(p, q)| (*p - *q).length()).fold(0.0, f32::max);
+    let max = a
+        .positions
+        .iter()
+        .zip(&b.positions)
+        .map(|(p, q)| (*p - *q).length())
+        .fold(0.0, f32::max);
     assert!(max < 1e-3, "{max}");
 }
 
@@ -94,14 +107,25 @@ fn force_laws_attract_far_and_repel_near() {
     let law = ForceLaw::InversePower { a1: 1.0, a2: 0.25 };
     assert!((law.f(0.5)).abs() < 1e-6, "zero at √(a2/a1)");
     assert!(law.f(0.3) < 0.0 && law.f(1.0) > 0.0);
-    let g = ForceLaw::Gaussian { a1: 1.0, a2: 2.0, k: 2.0, x0: 1.0 };
+    let g = ForceLaw::Gaussian {
+        a1: 1.0,
+        a2: 2.0,
+        k: 2.0,
+        x0: 1.0,
+    };
     assert!(g.f(0.05) < 0.0 && g.f(1.0) > 0.0);
     assert!(g.f(1.0) > g.f(3.0));
 }
 
 #[test]
 fn speed_stays_below_the_maximum_and_boids_stay_near_the_box() {
-    let params = BoidParams { obstacles: vec![inbetween::particles::Sphere { center: Vec3::ZERO, radius: 1.0 }], ..Default::default() };
+    let params = BoidParams {
+        obstacles: vec![inbetween::particles::Sphere {
+            center: Vec3::ZERO,
+            radius: 1.0,
+        }],
+        ..Default::default()
+    };
     let mut flock = Flock::new(300, &params, 9).unwrap();
     for _ in 0..600 {
         flock.step(&params, Search::Grid, 1.0 / 60.0);
@@ -129,21 +153,37 @@ fn field_of_view_hides_boids_behind() {
 #[test]
 fn a_predator_scatters_and_a_leader_gathers() {
     let base = BoidParams::default();
-    let lead = BoidParams { leader: Some(3.0), ..base.clone() };
+    let lead = BoidParams {
+        leader: Some(3.0),
+        ..base.clone()
+    };
     let mut flock = Flock::new(200, &lead, 2).unwrap();
     for _ in 0..600 {
         flock.step(&lead, Search::Grid, 1.0 / 60.0);
     }
     let leader = flock.positions[0];
-    let mean = flock.positions[1..].iter().map(|p| (*p - leader).length()).sum::<f32>() / 199.0;
-    assert!(mean < 3.0, "the flock follows its leader: mean distance {mean}");
-    let chase = BoidParams { predator: Some((2.0, 8.0)), ..base };
+    let mean = flock.positions[1..]
+        .iter()
+        .map(|p| (*p - leader).length())
+        .sum::<f32>()
+        / 199.0;
+    assert!(
+        mean < 3.0,
+        "the flock follows its leader: mean distance {mean}"
+    );
+    let chase = BoidParams {
+        predator: Some((2.0, 8.0)),
+        ..base
+    };
     let mut flock = Flock::new(200, &chase, 2).unwrap();
     for _ in 0..300 {
         flock.step(&chase, Search::Grid, 1.0 / 60.0);
     }
     let predator = flock.positions[0];
-    let near = flock.positions[1..].iter().filter(|p| (**p - predator).length() < 0.5).count();
+    let near = flock.positions[1..]
+        .iter()
+        .filter(|p| (**p - predator).length() < 0.5)
+        .count();
     assert!(near < 10, "few boids stay near the predator: {near}");
 }
 
@@ -155,7 +195,11 @@ fn a_seeded_flock_is_reproducible_bit_for_bit() {
         for _ in 0..60 {
             f.step(&params, Search::Grid, 1.0 / 60.0);
         }
-        f.positions.iter().flat_map(|p| p.to_array()).map(f32::to_bits).collect::<Vec<_>>()
+        f.positions
+            .iter()
+            .flat_map(|p| p.to_array())
+            .map(f32::to_bits)
+            .collect::<Vec<_>>()
     };
     assert_eq!(run(), run());
 }
@@ -163,11 +207,25 @@ fn a_seeded_flock_is_reproducible_bit_for_bit() {
 #[test]
 fn bad_input_is_an_error() {
     let params = BoidParams::default();
-    assert!(Flock::new(MAX_BOIDS + 1, &params, 0).unwrap_err().contains("too many"));
-    let bad = BoidParams { fov_deg: 400.0, ..params.clone() };
+    assert!(Flock::new(MAX_BOIDS + 1, &params, 0)
+        .unwrap_err()
+        .contains("too many"));
+    let bad = BoidParams {
+        fov_deg: 400.0,
+        ..params.clone()
+    };
     assert!(bad.validate().unwrap_err().contains("field of view"));
-    let bad = BoidParams { cohesion: Rule { weight: f32::NAN, radius: 1.0 }, ..params.clone() };
+    let bad = BoidParams {
+        cohesion: Rule {
+            weight: f32::NAN,
+            radius: 1.0,
+        },
+        ..params.clone()
+    };
     assert!(bad.validate().unwrap_err().contains("cohesion"));
-    let bad = BoidParams { max_speed: -1.0, ..params };
+    let bad = BoidParams {
+        max_speed: -1.0,
+        ..params
+    };
     assert!(bad.validate().is_err());
 }

@@ -67,15 +67,26 @@ fn the_flock_draws_every_boid_and_the_highlighted_ones_neighbours() {
 #[test]
 fn the_flock_rejects_bad_input() {
     let mut scene = FlockFigure::new();
-    assert!(scene.set_count(PAGE_MAX_BOIDS as f32 + 1.0).unwrap_err().contains("count"));
+    assert!(scene
+        .set_count(PAGE_MAX_BOIDS as f32 + 1.0)
+        .unwrap_err()
+        .contains("count"));
     assert!(scene.set_count(f32::NAN).is_err());
-    assert!(scene.set_rule("cohesion", f32::NAN, 1.0).unwrap_err().contains("cohesion weight"));
-    assert!(scene.set_rule("gravity", 1.0, 1.0).unwrap_err().contains("gravity"));
+    assert!(scene
+        .set_rule("cohesion", f32::NAN, 1.0)
+        .unwrap_err()
+        .contains("cohesion weight"));
+    assert!(scene
+        .set_rule("gravity", 1.0, 1.0)
+        .unwrap_err()
+        .contains("gravity"));
     assert!(scene.set_fov_deg(361.0).is_err());
     assert!(scene.set_search("octree").is_err());
     assert!(scene.set_law("cubic").is_err());
     assert!(scene.timing_step("grid").is_err(), "prepare first");
-    assert!(scene.prepare_timing(PAGE_MAX_TIMED_BOIDS as f32 + 1.0).is_err());
+    assert!(scene
+        .prepare_timing(PAGE_MAX_TIMED_BOIDS as f32 + 1.0)
+        .is_err());
     scene.prepare_timing(500.0).unwrap();
     scene.timing_step("naive").unwrap();
     scene.timing_step("grid").unwrap();
@@ -90,8 +101,18 @@ fn grid_and_naive_flocks_stay_together() {
         assert_eq!(a.advance_to(k as f32 / 60.0).unwrap(), 1);
         assert_eq!(b.advance_to(k as f32 / 60.0).unwrap(), 1);
     }
-    assert_eq!(a.advance_to(20.0 / 60.0).unwrap(), 0, "the same time takes no step");
-    let d = a.flock().positions.iter().zip(&b.flock().positions).map(|(p, q)| (*p - *q).length()).fold(0.0, f32::max);
+    assert_eq!(
+        a.advance_to(20.0 / 60.0).unwrap(),
+        0,
+        "the same time takes no step"
+    );
+    let d = a
+        .flock()
+        .positions
+        .iter()
+        .zip(&b.flock().positions)
+        .map(|(p, q)| (*p - *q).length())
+        .fold(0.0, f32::max);
     assert!(d < 1e-3, "{d}");
 }
 
@@ -103,11 +124,19 @@ fn a_jump_in_time_restarts_the_flock_without_replaying() {
         scene.advance_to(k as f32 / 60.0).unwrap();
     }
     assert_ne!(scene.flock().positions, start);
-    assert_eq!(scene.advance_to(10.0).unwrap(), 0, "a long jump takes no steps");
+    assert_eq!(
+        scene.advance_to(10.0).unwrap(),
+        0,
+        "a long jump takes no steps"
+    );
     let at_10 = scene.flock().positions.clone();
     assert_ne!(at_10, start, "a fresh flock seeded by the time");
     assert_eq!(scene.advance_to(0.0).unwrap(), 0);
-    assert_eq!(scene.flock().positions, start, "time 0 is the first flock again");
+    assert_eq!(
+        scene.flock().positions,
+        start,
+        "time 0 is the first flock again"
+    );
     scene.advance_to(10.0).unwrap();
     assert_eq!(scene.flock().positions, at_10);
     assert!(scene.advance_to(f32::NAN).is_err());
@@ -135,7 +164,10 @@ fn the_rules_figure_says_what_the_students_code_does() {
     let mut scene = RulesFigure::new();
     scene.set_use_exercise(true);
     for (runner, expect) in [
-        (reference as fn(&str, &[f32]) -> _, "Your three_rules matches the reference at this boid. Your cell_index matches"),
+        (
+            reference as fn(&str, &[f32]) -> _,
+            "Your three_rules matches the reference at this boid. Your cell_index matches",
+        ),
         (wrong, "Your three_rules differs at this boid"),
         (stub, "Not done yet: exercise 12.1"),
     ] {
@@ -144,5 +176,7 @@ fn the_rules_figure_says_what_the_students_code_does() {
         assert!(note.contains(expect), "{expect}: {note}");
     }
     scene.set_runner(wrong);
-    assert!(scene.draw(&mut Frame::default()).contains("Your cell_index differs"));
+    assert!(scene
+        .draw(&mut Frame::default())
+        .contains("Your cell_index differs"));
 }

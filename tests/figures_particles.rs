@@ -11,9 +11,13 @@ fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
     let v = |k: usize| Vec3::from_slice(&args[k..k + 3]);
     let mut out = Vec::new();
     match name {
-        "time_of_impact" => inbetween::exercises::particles::reference_time_of_impact(args[0], args[1], args[2], args[3]).put(&mut out),
+        "time_of_impact" => inbetween::exercises::particles::reference_time_of_impact(
+            args[0], args[1], args[2], args[3],
+        )
+        .put(&mut out),
         "semi_implicit_euler_step" => {
-            inbetween::exercises::particles::reference_semi_implicit(v(0), v(3), v(6), args[9]).put(&mut out)
+            inbetween::exercises::particles::reference_semi_implicit(v(0), v(3), v(6), args[9])
+                .put(&mut out)
         }
         _ => return direct(name, args),
     }
@@ -43,7 +47,9 @@ fn stub(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
 }
 
 fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
-    Err(Failure::Panicked("panicked at src/exercises/particles.rs:40:9:\nattempt to divide by zero".into()))
+    Err(Failure::Panicked(
+        "panicked at src/exercises/particles.rs:40:9:\nattempt to divide by zero".into(),
+    ))
 }
 
 #[test]
@@ -54,7 +60,9 @@ fn the_emitter_figure_fills_up_and_stays_under_its_cap() {
     scene.set_lifetime(10.0).unwrap();
     let mut frame = Frame::default();
     // 6.7 s at 1000/s, lifetimes of at least 8 s: full.
-    let note = scene.draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 6.7).unwrap();
+    let note = scene
+        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 6.7)
+        .unwrap();
     assert_eq!(scene.len(), PAGE_MAX_PARTICLES);
     assert_eq!(frame.points.len(), PAGE_MAX_PARTICLES);
     assert!(note.contains("2000 particles"), "{note}");
@@ -69,14 +77,25 @@ fn sorted_sprites_are_drawn_back_to_front() {
     let eye = Vec3::new(0.0, 2.0, 5.0);
     let mut frame = Frame::default();
     scene.draw(&mut frame, eye, 1.0).unwrap();
-    let d: Vec<f32> = frame.points.iter().map(|p| (Vec3::from(p.center) - eye).length()).collect();
+    let d: Vec<f32> = frame
+        .points
+        .iter()
+        .map(|p| (Vec3::from(p.center) - eye).length())
+        .collect();
     assert!(d.len() > 50);
     assert!(d.windows(2).all(|w| w[0] >= w[1]), "farthest first");
     scene.set_sort(false);
     let mut frame = Frame::default();
     scene.draw(&mut frame, eye, 1.0).unwrap();
-    let d: Vec<f32> = frame.points.iter().map(|p| (Vec3::from(p.center) - eye).length()).collect();
-    assert!(!d.windows(2).all(|w| w[0] >= w[1]), "storage order is not depth order");
+    let d: Vec<f32> = frame
+        .points
+        .iter()
+        .map(|p| (Vec3::from(p.center) - eye).length())
+        .collect();
+    assert!(
+        !d.windows(2).all(|w| w[0] >= w[1]),
+        "storage order is not depth order"
+    );
     // Fading: alpha below 1 for old particles unless fading is off.
     assert!(frame.points.iter().any(|p| p.color[3] < 0.9));
     scene.set_fade(false);
@@ -96,7 +115,10 @@ fn the_emitter_figure_rejects_bad_input() {
     // A time that is NaN, negative or past the limit is refused (no endless replay).
     let mut frame = Frame::default();
     for t in [f32::NAN, -1.0, MAX_SIM_TIME + 1.0] {
-        assert!(scene.draw(&mut frame, Vec3::Z, t).unwrap_err().contains("time"));
+        assert!(scene
+            .draw(&mut frame, Vec3::Z, t)
+            .unwrap_err()
+            .contains("time"));
     }
 }
 
@@ -109,7 +131,11 @@ fn a_paused_figure_stands_still_and_a_scrub_replays_exactly() {
     a.draw(&mut f1, eye, 3.0).unwrap();
     let mut f2 = Frame::default();
     a.draw(&mut f2, eye, 3.0).unwrap();
-    assert_eq!(f1.fingerprint(), f2.fingerprint(), "the same time draws the same frame");
+    assert_eq!(
+        f1.fingerprint(),
+        f2.fingerprint(),
+        "the same time draws the same frame"
+    );
     // Going forward in small steps or jumping, or back and forward again: the same state.
     let mut b = EmitterFigure::new();
     b.set_mode("both").unwrap();
@@ -157,7 +183,10 @@ fn free_fall_draws_each_integrator_and_the_exact_path() {
     for c in INTEGRATOR_COLORS.iter().chain([&EXACT_COLOR]) {
         assert!(frame.segments_of(*c).count() > 0, "a path in {c}");
     }
-    assert!(note.contains("explicit Euler") && note.contains("velocity Verlet"), "{note}");
+    assert!(
+        note.contains("explicit Euler") && note.contains("velocity Verlet"),
+        "{note}"
+    );
     assert!(scene.draw(&mut frame, f32::NAN).is_err());
 }
 

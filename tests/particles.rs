@@ -25,15 +25,30 @@ fn free_fall_matches_the_formula() {
 fn free_fall_error_of_euler_is_g_t_dt_over_2_and_verlet_is_exact() {
     // Explicit Euler under constant g: p_n = p0 + v0 t + g dt² n(n−1)/2, an error of g t dt / 2.
     let dt = 0.01;
-    let mut out = vec![FreeFallError { time_sec: 0.0, error_m: [0.0; 3] }; 100];
+    let mut out = vec![
+        FreeFallError {
+            time_sec: 0.0,
+            error_m: [0.0; 3]
+        };
+        100
+    ];
     free_fall_errors(Vec3::ZERO, Vec3::new(1.0, 5.0, 0.0), G, dt, &mut out);
     let last = out[99];
     let t = last.time_sec;
     assert!((t - 1.0).abs() < 1e-5);
     let expected = 9.81 * t * dt / 2.0;
-    assert!((last.error_m[0] - expected).abs() < 1e-3 * expected + 1e-5, "{last:?}");
-    assert!((last.error_m[1] - expected).abs() < 1e-3 * expected + 1e-5, "{last:?}");
-    assert!(last.error_m[2] < 1e-5, "Verlet is exact for constant g: {last:?}");
+    assert!(
+        (last.error_m[0] - expected).abs() < 1e-3 * expected + 1e-5,
+        "{last:?}"
+    );
+    assert!(
+        (last.error_m[1] - expected).abs() < 1e-3 * expected + 1e-5,
+        "{last:?}"
+    );
+    assert!(
+        last.error_m[2] < 1e-5,
+        "Verlet is exact for constant g: {last:?}"
+    );
 }
 
 /// Error at t = 2 s on the oscillator p'' = −ω² p, from p = 1, v = 0 (f64 reference cos ωt).
@@ -68,7 +83,10 @@ fn a_zero_step_changes_nothing() {
     for integrator in Integrator::ALL {
         let (mut p, mut v) = (Vec3::new(1.0, 2.0, 3.0), Vec3::new(-1.0, 0.5, 2.0));
         integrator.step(&mut p, &mut v, 0.0, |_| G);
-        assert_eq!((p, v), (Vec3::new(1.0, 2.0, 3.0), Vec3::new(-1.0, 0.5, 2.0)));
+        assert_eq!(
+            (p, v),
+            (Vec3::new(1.0, 2.0, 3.0), Vec3::new(-1.0, 0.5, 2.0))
+        );
     }
 }
 
@@ -106,7 +124,11 @@ fn a_bounce_reverses_the_normal_speed_times_e() {
 fn a_bounce_happens_at_the_exact_time_of_impact() {
     // Dropped from 4.905 m with e = 1 and one step of 1.5 s: hits at 1 s with speed 9.81, then
     // rises for 0.5 s: y = 9.81·0.5 − ½·9.81·0.25.
-    let s = Surfaces { restitution: 1.0, friction: 0.0, ..Default::default() };
+    let s = Surfaces {
+        restitution: 1.0,
+        friction: 0.0,
+        ..Default::default()
+    };
     let (mut p, mut v, mut resting) = (Vec3::new(0.0, 4.905, 0.0), Vec3::ZERO, false);
     ballistic_step(&mut p, &mut v, &mut resting, 1.5, &s);
     let y = 9.81 * 0.5 - 0.5 * 9.81 * 0.25;
@@ -128,20 +150,34 @@ fn a_ball_comes_to_rest_without_jitter() {
         assert_eq!(p.y, 0.0);
         assert_eq!(v.y, 0.0);
     }
-    assert!((p - before).length() < 1e-6, "friction has stopped it: {p} vs {before}");
+    assert!(
+        (p - before).length() < 1e-6,
+        "friction has stopped it: {p} vs {before}"
+    );
 }
 
 #[test]
 fn a_particle_bounces_off_a_sphere_onto_its_surface() {
-    let sphere = Sphere { center: Vec3::new(0.0, 1.0, 0.0), radius: 0.5 };
-    let s = Surfaces { spheres: vec![sphere], restitution: 1.0, friction: 0.0, ..Default::default() };
+    let sphere = Sphere {
+        center: Vec3::new(0.0, 1.0, 0.0),
+        radius: 0.5,
+    };
+    let s = Surfaces {
+        spheres: vec![sphere],
+        restitution: 1.0,
+        friction: 0.0,
+        ..Default::default()
+    };
     let (mut p, mut v, mut resting) = (Vec3::new(0.0, 3.0, 0.0), Vec3::ZERO, false);
     let mut min_dist = f32::INFINITY;
     for _ in 0..120 {
         ballistic_step(&mut p, &mut v, &mut resting, 1.0 / 60.0, &s);
         min_dist = min_dist.min((p - sphere.center).length());
     }
-    assert!(min_dist >= 0.5 - 1e-4, "never inside the sphere: {min_dist}");
+    assert!(
+        min_dist >= 0.5 - 1e-4,
+        "never inside the sphere: {min_dist}"
+    );
     assert!(p.y > 1.5 - 1e-3, "it bounced back up, not through: {p}");
 }
 
@@ -177,9 +213,18 @@ proptest! {
 
 fn run(seed: u64) -> ParticleSystem {
     let mut system = ParticleSystem::new(2000, seed).unwrap();
-    let mut emitters = [Emitter::fountain(Vec3::ZERO), Emitter::explosion(Vec3::new(0.0, 2.0, 0.0))];
+    let mut emitters = [
+        Emitter::fountain(Vec3::ZERO),
+        Emitter::explosion(Vec3::new(0.0, 2.0, 0.0)),
+    ];
     system.burst(&emitters, 1, 300);
-    let s = Surfaces { spheres: vec![Sphere { center: Vec3::new(0.5, 1.0, 0.0), radius: 0.4 }], ..Default::default() };
+    let s = Surfaces {
+        spheres: vec![Sphere {
+            center: Vec3::new(0.5, 1.0, 0.0),
+            radius: 0.4,
+        }],
+        ..Default::default()
+    };
     for _ in 0..240 {
         system.step(&mut emitters, &s, 1.0 / 60.0);
     }
@@ -191,7 +236,11 @@ fn a_seeded_run_is_reproducible_bit_for_bit() {
     let (a, b) = (run(7), run(7));
     assert_eq!(a.len(), b.len());
     let bits = |s: &ParticleSystem| -> Vec<u32> {
-        s.positions[..s.len()].iter().flat_map(|p| p.to_array()).map(f32::to_bits).collect()
+        s.positions[..s.len()]
+            .iter()
+            .flat_map(|p| p.to_array())
+            .map(f32::to_bits)
+            .collect()
     };
     assert_eq!(bits(&a), bits(&b));
     assert_ne!(bits(&a), bits(&run(8)), "another seed gives another run");
@@ -206,7 +255,10 @@ fn dead_particles_are_recycled_without_growing_the_arrays() {
     for _ in 0..600 {
         system.step(&mut emitters, &Surfaces::default(), 1.0 / 60.0);
         max_alive = max_alive.max(system.len());
-        assert!(system.ages[..system.len()].iter().zip(&system.lifetimes).all(|(a, l)| a < l));
+        assert!(system.ages[..system.len()]
+            .iter()
+            .zip(&system.lifetimes)
+            .all(|(a, l)| a < l));
     }
     // 200/s for 2–3 s: about 500 alive at once, so slots were reused many times over.
     assert!(max_alive > 350 && max_alive <= 500, "{max_alive}");
@@ -245,18 +297,72 @@ fn colours_blend_from_birth_to_death() {
 
 #[test]
 fn bad_input_is_an_error() {
-    assert!(matches!(ParticleSystem::new(MAX_PARTICLES + 1, 0), Err(ParticleError::TooMany { .. })));
+    assert!(matches!(
+        ParticleSystem::new(MAX_PARTICLES + 1, 0),
+        Err(ParticleError::TooMany { .. })
+    ));
     let ok = Emitter::fountain(Vec3::ZERO);
     assert!(ok.validate().is_ok());
     let cases: Vec<(&str, Emitter)> = vec![
-        ("rate", Emitter { rate_per_sec: -1.0, ..ok }),
-        ("rate", Emitter { rate_per_sec: f32::NAN, ..ok }),
-        ("lifetime", Emitter { lifetime_sec: (-1.0, 2.0), ..ok }),
-        ("lifetime", Emitter { lifetime_sec: (3.0, 2.0), ..ok }),
-        ("size", Emitter { size: (f32::NAN, 1.0), ..ok }),
-        ("position", Emitter { position: PositionDist::Ball(Vec3::ZERO, -1.0), ..ok }),
-        ("velocity", Emitter { velocity: VelocityDist::Sphere { speed_min: 2.0, speed_max: 1.0 }, ..ok }),
-        ("colours", Emitter { color_birth: Vec4::NAN, ..ok }),
+        (
+            "rate",
+            Emitter {
+                rate_per_sec: -1.0,
+                ..ok
+            },
+        ),
+        (
+            "rate",
+            Emitter {
+                rate_per_sec: f32::NAN,
+                ..ok
+            },
+        ),
+        (
+            "lifetime",
+            Emitter {
+                lifetime_sec: (-1.0, 2.0),
+                ..ok
+            },
+        ),
+        (
+            "lifetime",
+            Emitter {
+                lifetime_sec: (3.0, 2.0),
+                ..ok
+            },
+        ),
+        (
+            "size",
+            Emitter {
+                size: (f32::NAN, 1.0),
+                ..ok
+            },
+        ),
+        (
+            "position",
+            Emitter {
+                position: PositionDist::Ball(Vec3::ZERO, -1.0),
+                ..ok
+            },
+        ),
+        (
+            "velocity",
+            Emitter {
+                velocity: VelocityDist::Sphere {
+                    speed_min: 2.0,
+                    speed_max: 1.0,
+                },
+                ..ok
+            },
+        ),
+        (
+            "colours",
+            Emitter {
+                color_birth: Vec4::NAN,
+                ..ok
+            },
+        ),
     ];
     for (what, e) in cases {
         let err = e.validate().unwrap_err().to_string();
@@ -272,8 +378,14 @@ fn the_squash_ball_keeps_its_volume_and_squashes_on_impact() {
     for _ in 0..300 {
         ball.step(&s, 1.0 / 120.0);
         let m = ball.shape_matrix();
-        assert!((m.determinant() - 0.3f32.powi(3)).abs() < 1e-4, "volume kept");
-        assert!(ball.position.y >= 0.3 - 1e-6, "the centre stays a radius above the floor");
+        assert!(
+            (m.determinant() - 0.3f32.powi(3)).abs() < 1e-4,
+            "volume kept"
+        );
+        assert!(
+            ball.position.y >= 0.3 - 1e-6,
+            "the centre stays a radius above the floor"
+        );
         let (_, k) = ball.stretch();
         squashed |= k < 0.8;
     }

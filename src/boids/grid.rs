@@ -17,7 +17,11 @@ pub const MAX_GRID_CELLS: usize = 1 << 18;
 pub fn cell_index(p: Vec3, origin: Vec3, cell_size: f32, dims: [u32; 3]) -> usize {
     let c = ((p - origin) / cell_size).floor();
     let clamp = |x: f32, n: u32| (x.max(0.0) as u32).min(n.saturating_sub(1)) as usize;
-    let (i, j, k) = (clamp(c.x, dims[0]), clamp(c.y, dims[1]), clamp(c.z, dims[2]));
+    let (i, j, k) = (
+        clamp(c.x, dims[0]),
+        clamp(c.y, dims[1]),
+        clamp(c.z, dims[2]),
+    );
     i + dims[0] as usize * (j + dims[1] as usize * k)
 }
 
@@ -99,7 +103,13 @@ impl Grid {
 
     /// Calls `f(j)` for every boid `j ≠ i` within `radius ≤ cell_size` of `positions[i]`
     /// (the 27 cells around `i`'s cell), in increasing cell order.
-    pub fn for_each_neighbour(&self, positions: &[Vec3], i: usize, radius: f32, mut f: impl FnMut(usize)) {
+    pub fn for_each_neighbour(
+        &self,
+        positions: &[Vec3],
+        i: usize,
+        radius: f32,
+        mut f: impl FnMut(usize),
+    ) {
         let p = positions[i];
         let r2 = radius * radius;
         let c = self.cell_of[i] as usize;
@@ -111,7 +121,10 @@ impl Grid {
                 let row = dx * (j + dy * k);
                 let (lo, hi) = (row + ci.saturating_sub(1), row + (ci + 1).min(dx - 1));
                 // Cells lo..=hi are contiguous in memory, and so are their runs in `sorted`.
-                let (a, b) = (self.cell_start[lo] as usize, self.cell_start[hi + 1] as usize);
+                let (a, b) = (
+                    self.cell_start[lo] as usize,
+                    self.cell_start[hi + 1] as usize,
+                );
                 for (&jb, q) in self.sorted[a..b].iter().zip(&self.sorted_positions[a..b]) {
                     let jb = jb as usize;
                     if jb != i && (*q - p).length_squared() <= r2 {
@@ -124,7 +137,12 @@ impl Grid {
 }
 
 /// Calls `f(j)` for every boid `j ≠ i` within `radius` of `positions[i]`, by testing them all.
-pub fn for_each_neighbour_naive(positions: &[Vec3], i: usize, radius: f32, mut f: impl FnMut(usize)) {
+pub fn for_each_neighbour_naive(
+    positions: &[Vec3],
+    i: usize,
+    radius: f32,
+    mut f: impl FnMut(usize),
+) {
     let p = positions[i];
     let r2 = radius * radius;
     for (j, q) in positions.iter().enumerate() {

@@ -34,11 +34,19 @@ pub enum ForceLaw {
     None,
     /// `f(x) = a1 / x² − a2 / x⁴`: attraction at long range, repulsion at short range; zero at
     /// `x = √(a2/a1)`.
-    InversePower { a1: f32, a2: f32 },
+    InversePower {
+        a1: f32,
+        a2: f32,
+    },
     /// `f(x) = a1 exp(−k ((x − x0)/x0)²) − a2 exp(−x/x0)`: attraction peaking at `x0`,
     /// repulsion strongest at contact. (The course writes the repulsion as `a2 exp(x/x0)`;
     /// with a minus sign in the exponent it fades with distance instead of growing.)
-    Gaussian { a1: f32, a2: f32, k: f32, x0: f32 },
+    Gaussian {
+        a1: f32,
+        a2: f32,
+        k: f32,
+        x0: f32,
+    },
 }
 
 impl ForceLaw {
@@ -87,9 +95,18 @@ pub struct BoidParams {
 impl Default for BoidParams {
     fn default() -> Self {
         Self {
-            cohesion: Rule { weight: 1.0, radius: 1.5 },
-            alignment: Rule { weight: 2.0, radius: 1.5 },
-            separation: Rule { weight: 1.5, radius: 0.5 },
+            cohesion: Rule {
+                weight: 1.0,
+                radius: 1.5,
+            },
+            alignment: Rule {
+                weight: 2.0,
+                radius: 1.5,
+            },
+            separation: Rule {
+                weight: 1.5,
+                radius: 0.5,
+            },
             law: ForceLaw::None,
             law_radius: 1.5,
             fov_deg: 270.0,
@@ -129,14 +146,21 @@ impl BoidParams {
             return Err("boid parameters must be finite and non-negative".into());
         }
         if !(0.0..=360.0).contains(&self.fov_deg) {
-            return Err(format!("field of view must lie in [0, 360] degrees, got {}", self.fov_deg));
+            return Err(format!(
+                "field of view must lie in [0, 360] degrees, got {}",
+                self.fov_deg
+            ));
         }
         Ok(())
     }
 
     /// The largest radius any neighbour rule looks at (the grid's cell size).
     pub fn search_radius(&self) -> f32 {
-        let law = if self.law == ForceLaw::None { 0.0 } else { self.law_radius };
+        let law = if self.law == ForceLaw::None {
+            0.0
+        } else {
+            self.law_radius
+        };
         self.cohesion
             .radius
             .max(self.alignment.radius)
@@ -217,7 +241,13 @@ impl Flock {
         let mut rng = Rng::new(seed);
         let b = params.bounds;
         let positions = (0..count)
-            .map(|_| Vec3::new(rng.range(-b.x, b.x), rng.range(-b.y, b.y), rng.range(-b.z, b.z)))
+            .map(|_| {
+                Vec3::new(
+                    rng.range(-b.x, b.x),
+                    rng.range(-b.y, b.y),
+                    rng.range(-b.z, b.z),
+                )
+            })
             .collect();
         let velocities = (0..count)
             .map(|_| rng.on_unit_sphere() * 0.5 * params.max_speed)
@@ -243,7 +273,10 @@ impl Flock {
     pub fn roles(&self, params: &BoidParams) -> (Option<usize>, Option<usize>) {
         let leader = params.leader.filter(|_| !self.is_empty()).map(|_| 0);
         let first_free = leader.map_or(0, |_| 1);
-        let predator = params.predator.filter(|_| self.len() > first_free).map(|_| first_free);
+        let predator = params
+            .predator
+            .filter(|_| self.len() > first_free)
+            .map(|_| first_free);
         (leader, predator)
     }
 
@@ -277,7 +310,8 @@ impl Flock {
         let radius = params.search_radius();
         if search == Search::Grid {
             let margin = Vec3::splat(radius);
-            self.grid.configure(-params.bounds - margin, params.bounds + margin, radius);
+            self.grid
+                .configure(-params.bounds - margin, params.bounds + margin, radius);
             self.grid.rebuild(&self.positions);
         }
         let (leader, predator) = self.roles(params);
@@ -297,7 +331,8 @@ impl Flock {
             }
             semi_implicit_euler_step(p, v, self.forces[i], dt);
             // Clamp the speed after the velocity update, then redo the position with it.
-            let clamped = v.clamp_length_max(params.max_speed * if Some(i) == predator { 1.3 } else { 1.0 });
+            let clamped =
+                v.clamp_length_max(params.max_speed * if Some(i) == predator { 1.3 } else { 1.0 });
             *p += (clamped - *v) * dt;
             *v = clamped;
         }
@@ -327,7 +362,11 @@ impl Flock {
             // One boid scanning all others is O(N), whatever the search.
             for (j, &q) in self.positions.iter().enumerate() {
                 let d = (q - p).length_squared();
-                if j != i && Some(j) != leader && d < best.0 && d < 16.0 * params.search_radius().powi(2) {
+                if j != i
+                    && Some(j) != leader
+                    && d < best.0
+                    && d < 16.0 * params.search_radius().powi(2)
+                {
                     best = (d, q);
                 }
             }

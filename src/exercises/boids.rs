@@ -22,12 +22,7 @@ use glam::Vec3;
 ///
 /// Hints: one loop accumulating three sums; `Vec3::length_squared`. The lesson's flock weights
 /// these three vectors and adds them.
-pub fn three_rules(
-    p: Vec3,
-    v: Vec3,
-    positions: &[Vec3],
-    velocities: &[Vec3],
-) -> Answer<[Vec3; 3]> {
+pub fn three_rules(p: Vec3, v: Vec3, positions: &[Vec3], velocities: &[Vec3]) -> Answer<[Vec3; 3]> {
     solution!(boids::three_rules(p, v, positions, velocities));
     let _ = (p, v, positions, velocities);
     Err(NotDone)
@@ -57,10 +52,18 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     const L: &str = "12-boids";
     type Case = (Vec3, Vec3, Vec<Vec3>, Vec<Vec3>);
     let mut cases: Vec<(&str, Case)> = vec![
-        ("no neighbours: three zeros", (Vec3::ONE, Vec3::X, vec![], vec![])),
+        (
+            "no neighbours: three zeros",
+            (Vec3::ONE, Vec3::X, vec![], vec![]),
+        ),
         (
             "one neighbour ahead: cohesion towards it, separation away",
-            (Vec3::ZERO, Vec3::X, vec![Vec3::new(2.0, 0.0, 0.0)], vec![Vec3::Y]),
+            (
+                Vec3::ZERO,
+                Vec3::X,
+                vec![Vec3::new(2.0, 0.0, 0.0)],
+                vec![Vec3::Y],
+            ),
         ),
         (
             "two neighbours: the centre is their mean; separation by 1/distance",
@@ -73,7 +76,12 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         ),
         (
             "a neighbour at the same point: skipped in separation",
-            (Vec3::ONE, Vec3::Z, vec![Vec3::ONE, Vec3::new(2.0, 1.0, 1.0)], vec![Vec3::X, Vec3::X]),
+            (
+                Vec3::ONE,
+                Vec3::Z,
+                vec![Vec3::ONE, Vec3::new(2.0, 1.0, 1.0)],
+                vec![Vec3::X, Vec3::X],
+            ),
         ),
     ];
     for _ in 0..150 {
@@ -89,23 +97,60 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         &cases,
         |(p, v, ps, vs)| three_rules(*p, *v, ps, vs),
         |(p, v, ps, vs)| boids::three_rules(*p, *v, ps, vs),
-        |a, b| a.iter().zip(b).all(|(a, b)| (*a - *b).abs().max_element() <= 1e-4 * (1.0 + a.abs().max_element())),
+        |a, b| {
+            a.iter()
+                .zip(b)
+                .all(|(a, b)| (*a - *b).abs().max_element() <= 1e-4 * (1.0 + a.abs().max_element()))
+        },
     );
     type Cell = (Vec3, Vec3, f32, [u32; 3]);
     let dims = [4, 5, 6];
     let mut cells: Vec<(&str, Cell)> = vec![
         ("the first cell", (Vec3::splat(0.1), Vec3::ZERO, 1.0, dims)),
-        ("one cell along x: index 1", (Vec3::new(1.5, 0.1, 0.1), Vec3::ZERO, 1.0, dims)),
-        ("one cell along y: index nx", (Vec3::new(0.1, 1.5, 0.1), Vec3::ZERO, 1.0, dims)),
-        ("one cell along z: index nx·ny", (Vec3::new(0.1, 0.1, 1.5), Vec3::ZERO, 1.0, dims)),
-        ("a negative origin and half-metre cells", (Vec3::ZERO, Vec3::splat(-1.0), 0.5, dims)),
-        ("left of the grid: clamped to i = 0", (Vec3::new(-3.0, 1.5, 0.5), Vec3::ZERO, 1.0, dims)),
-        ("beyond the far corner: the last cell", (Vec3::splat(50.0), Vec3::ZERO, 1.0, dims)),
-        ("exactly on a cell boundary: the upper cell", (Vec3::new(2.0, 0.0, 0.0), Vec3::ZERO, 1.0, dims)),
+        (
+            "one cell along x: index 1",
+            (Vec3::new(1.5, 0.1, 0.1), Vec3::ZERO, 1.0, dims),
+        ),
+        (
+            "one cell along y: index nx",
+            (Vec3::new(0.1, 1.5, 0.1), Vec3::ZERO, 1.0, dims),
+        ),
+        (
+            "one cell along z: index nx·ny",
+            (Vec3::new(0.1, 0.1, 1.5), Vec3::ZERO, 1.0, dims),
+        ),
+        (
+            "a negative origin and half-metre cells",
+            (Vec3::ZERO, Vec3::splat(-1.0), 0.5, dims),
+        ),
+        (
+            "left of the grid: clamped to i = 0",
+            (Vec3::new(-3.0, 1.5, 0.5), Vec3::ZERO, 1.0, dims),
+        ),
+        (
+            "beyond the far corner: the last cell",
+            (Vec3::splat(50.0), Vec3::ZERO, 1.0, dims),
+        ),
+        (
+            "exactly on a cell boundary: the upper cell",
+            (Vec3::new(2.0, 0.0, 0.0), Vec3::ZERO, 1.0, dims),
+        ),
     ];
     for _ in 0..200 {
-        let d = [1 + rng.below(10) as u32, 1 + rng.below(10) as u32, 1 + rng.below(10) as u32];
-        cells.push((RANDOM, (rng.vec3(-6.0, 6.0), rng.vec3(-3.0, 0.0), rng.range(0.2, 2.0), d)));
+        let d = [
+            1 + rng.below(10) as u32,
+            1 + rng.below(10) as u32,
+            1 + rng.below(10) as u32,
+        ];
+        cells.push((
+            RANDOM,
+            (
+                rng.vec3(-6.0, 6.0),
+                rng.vec3(-3.0, 0.0),
+                rng.range(0.2, 2.0),
+                d,
+            ),
+        ));
     }
     let cell = check_cases(
         L,

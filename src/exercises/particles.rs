@@ -71,17 +71,28 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     const L: &str = "11-particles";
     let mut drops = vec![
         ("dropped from 4.905 m: 1 s", (4.905, 0.0, -9.81, 0.0)),
-        ("thrown up: the later root, after the way up and down", (1.0, 5.0, -9.81, 0.0)),
+        (
+            "thrown up: the later root, after the way up and down",
+            (1.0, 5.0, -9.81, 0.0),
+        ),
         ("thrown down: sooner than dropped", (1.0, -5.0, -9.81, 0.0)),
         ("a floor that is not at 0", (3.0, 0.0, -9.81, 1.0)),
         ("weaker gravity (the Moon)", (2.0, 1.0, -1.62, 0.0)),
-        ("just above the floor, falling fast", (1e-3, -20.0, -9.81, 0.0)),
+        (
+            "just above the floor, falling fast",
+            (1e-3, -20.0, -9.81, 0.0),
+        ),
     ];
     for _ in 0..200 {
         let floor = rng.range(-2.0, 2.0);
         drops.push((
             RANDOM,
-            (floor + rng.range(0.01, 5.0), rng.range(-6.0, 6.0), rng.range(-20.0, -1.0), floor),
+            (
+                floor + rng.range(0.01, 5.0),
+                rng.range(-6.0, 6.0),
+                rng.range(-20.0, -1.0),
+                floor,
+            ),
         ));
     }
     let toi = check_cases(
@@ -93,21 +104,37 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         |a, b| (a - b).abs() <= 1e-4 * (1.0 + a.abs()),
     );
     let mut steps = vec![
-        ("dt = 0: nothing changes", (Vec3::ONE, Vec3::X, Vec3::new(0.0, -9.81, 0.0), 0.0)),
-        ("no acceleration: a straight line", (Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO, 0.5)),
+        (
+            "dt = 0: nothing changes",
+            (Vec3::ONE, Vec3::X, Vec3::new(0.0, -9.81, 0.0), 0.0),
+        ),
+        (
+            "no acceleration: a straight line",
+            (Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO, 0.5),
+        ),
         (
             "from rest: p moves with the new velocity, by a dt²",
             (Vec3::ZERO, Vec3::ZERO, Vec3::new(0.0, -10.0, 0.0), 0.1),
         ),
         (
             "thrown sideways under gravity",
-            (Vec3::new(0.0, 1.0, 0.0), Vec3::new(3.0, 0.0, 0.0), Vec3::new(0.0, -9.81, 0.0), 0.02),
+            (
+                Vec3::new(0.0, 1.0, 0.0),
+                Vec3::new(3.0, 0.0, 0.0),
+                Vec3::new(0.0, -9.81, 0.0),
+                0.02,
+            ),
         ),
     ];
     for _ in 0..200 {
         steps.push((
             RANDOM,
-            (rng.vec3(-3.0, 3.0), rng.vec3(-5.0, 5.0), rng.vec3(-10.0, 10.0), rng.range(0.0, 0.1)),
+            (
+                rng.vec3(-3.0, 3.0),
+                rng.vec3(-5.0, 5.0),
+                rng.vec3(-10.0, 10.0),
+                rng.range(0.0, 0.1),
+            ),
         ));
     }
     let step = check_cases(

@@ -7,7 +7,10 @@
 //!   three steering vectors (exercise 12.1) and the grid cells around it (exercise 12.2).
 
 use super::particles::{steps_to, SIM_DT};
-use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner, DEFAULT_RUNNER};
+use super::{
+    compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner,
+    DEFAULT_RUNNER,
+};
 use crate::boids::{cell_index, three_rules, BoidParams, Flock, ForceLaw, Search};
 use crate::exercises::run;
 use crate::particles::Sphere;
@@ -142,7 +145,12 @@ impl FlockFigure {
         self.params.law = match LAWS.iter().position(|&l| l == name) {
             Some(0) => ForceLaw::None,
             Some(1) => ForceLaw::InversePower { a1: 0.4, a2: 0.04 },
-            Some(2) => ForceLaw::Gaussian { a1: 1.0, a2: 3.0, k: 2.0, x0: 0.7 },
+            Some(2) => ForceLaw::Gaussian {
+                a1: 1.0,
+                a2: 3.0,
+                k: 2.0,
+                x0: 0.7,
+            },
             _ => return Err(format!("force law: no law named {name:?}")),
         };
         Ok(())
@@ -159,7 +167,10 @@ impl FlockFigure {
     pub fn set_obstacle(&mut self, on: bool) {
         self.obstacle = on;
         self.params.obstacles = if on {
-            vec![Sphere { center: Vec3::new(0.0, 0.0, 0.0), radius: 0.6 }]
+            vec![Sphere {
+                center: Vec3::new(0.0, 0.0, 0.0),
+                radius: 0.6,
+            }]
         } else {
             Vec::new()
         };
@@ -196,7 +207,10 @@ impl FlockFigure {
     pub fn prepare_timing(&mut self, n: f32) -> Result<(), String> {
         let n = in_range("boids to time", n, 2.0, PAGE_MAX_TIMED_BOIDS as f32)? as usize;
         let scale = (n as f32 / 300.0).cbrt().max(1.0);
-        let params = BoidParams { bounds: self.params.bounds * scale, ..self.params.clone() };
+        let params = BoidParams {
+            bounds: self.params.bounds * scale,
+            ..self.params.clone()
+        };
         let mut flock = Flock::new(n, &params, 77)?;
         flock.step(&params, Search::Grid, 1.0 / 60.0); // size the grid once, outside the timing
         self.bench = Some(flock);
@@ -208,7 +222,10 @@ impl FlockFigure {
         let search = parse_search(search)?;
         let flock = self.bench.as_mut().ok_or("call prepareTiming first")?;
         let scale = (flock.len() as f32 / 300.0).cbrt().max(1.0);
-        let params = BoidParams { bounds: self.params.bounds * scale, ..self.params.clone() };
+        let params = BoidParams {
+            bounds: self.params.bounds * scale,
+            ..self.params.clone()
+        };
         flock.step(&params, search, 1.0 / 60.0);
         Ok(())
     }
@@ -216,7 +233,9 @@ impl FlockFigure {
     /// The highlighted boid: the first that is neither leader nor predator.
     pub fn highlighted(&self) -> usize {
         let (l, p) = self.flock.roles(&self.params);
-        (0..self.flock.len()).find(|&i| Some(i) != l && Some(i) != p).unwrap_or(0)
+        (0..self.flock.len())
+            .find(|&i| Some(i) != l && Some(i) != p)
+            .unwrap_or(0)
     }
 
     pub fn draw(&mut self, frame: &mut Frame) -> String {
@@ -227,7 +246,11 @@ impl FlockFigure {
         }
         if self.obstacle {
             for o in &self.params.obstacles {
-                frame.mesh(MeshId::SPHERE, Mat4::from_translation(o.center) * Mat4::from_scale(Vec3::splat(o.radius)), palette::GREY);
+                frame.mesh(
+                    MeshId::SPHERE,
+                    Mat4::from_translation(o.center) * Mat4::from_scale(Vec3::splat(o.radius)),
+                    palette::GREY,
+                );
             }
         }
         let (leader, predator) = self.flock.roles(&self.params);
@@ -252,10 +275,18 @@ impl FlockFigure {
         let radius = self.params.search_radius();
         let mut found = std::mem::take(&mut self.neighbours);
         // One boid's neighbours by the naive loop: O(N), and valid before the first step too.
-        self.flock.for_each_neighbour(Search::Naive, h, radius, |j| found.push(j));
-        found.retain(|&j| self.flock.sees(h, self.flock.positions[j], self.params.fov_deg));
+        self.flock
+            .for_each_neighbour(Search::Naive, h, radius, |j| found.push(j));
+        found.retain(|&j| {
+            self.flock
+                .sees(h, self.flock.positions[j], self.params.fov_deg)
+        });
         for &j in &found {
-            frame.line(self.flock.positions[h], self.flock.positions[j], palette::ORANGE);
+            frame.line(
+                self.flock.positions[h],
+                self.flock.positions[j],
+                palette::ORANGE,
+            );
         }
         let count = found.len();
         self.neighbours = found;
@@ -264,16 +295,28 @@ impl FlockFigure {
         let ph = self.flock.positions[h];
         frame.arrow(ph, ph + 0.25 * steer, palette::PURPLE, 0.08);
         if let Some(l) = leader {
-            frame.label(self.flock.positions[l] + Vec3::Y * 0.2, "leader", palette::GREEN);
+            frame.label(
+                self.flock.positions[l] + Vec3::Y * 0.2,
+                "leader",
+                palette::GREEN,
+            );
         }
         if let Some(p) = predator {
-            frame.label(self.flock.positions[p] + Vec3::Y * 0.2, "predator", palette::RED);
+            frame.label(
+                self.flock.positions[p] + Vec3::Y * 0.2,
+                "predator",
+                palette::RED,
+            );
         }
         format!(
             "{} boids, {} search; the orange boid sees {count} neighbours within {} m and steers \
              at {} m/s² (purple arrow, at most {}); speed at most {} m/s.",
             self.flock.len(),
-            if self.search == Search::Grid { "grid" } else { "naive" },
+            if self.search == Search::Grid {
+                "grid"
+            } else {
+                "naive"
+            },
             format_number(radius),
             format_number(steer.length()),
             format_number(self.params.max_force),
@@ -284,11 +327,13 @@ impl FlockFigure {
 
 /// The 12 edges of the box `[lo, hi]`.
 fn box_edges(lo: Vec3, hi: Vec3) -> Vec<(Vec3, Vec3)> {
-    let c = |i: u32| Vec3::new(
-        if i & 1 == 0 { lo.x } else { hi.x },
-        if i & 2 == 0 { lo.y } else { hi.y },
-        if i & 4 == 0 { lo.z } else { hi.z },
-    );
+    let c = |i: u32| {
+        Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        )
+    };
     let mut edges = Vec::with_capacity(12);
     for i in 0..8u32 {
         for bit in [1, 2, 4] {
@@ -362,7 +407,11 @@ impl RulesFigure {
 
     /// Where the orange boid is, on the plane (x, z in [−1.9, 1.9] metres).
     pub fn set_position(&mut self, x: f32, z: f32) -> Result<(), String> {
-        self.boid = Vec3::new(in_range("x", x, -1.9, 1.9)?, 0.0, in_range("z", z, -1.9, 1.9)?);
+        self.boid = Vec3::new(
+            in_range("x", x, -1.9, 1.9)?,
+            0.0,
+            in_range("z", z, -1.9, 1.9)?,
+        );
         Ok(())
     }
 
@@ -401,7 +450,8 @@ impl RulesFigure {
             .filter(|(q, _)| {
                 let d = *q - self.boid;
                 let l = d.length();
-                l <= self.radius && (self.fov_deg >= 360.0 || l == 0.0 || d.dot(self.velocity) >= half * l)
+                l <= self.radius
+                    && (self.fov_deg >= 360.0 || l == 0.0 || d.dot(self.velocity) >= half * l)
             })
             .copied()
             .unzip()
@@ -411,7 +461,16 @@ impl RulesFigure {
     pub fn rules(&self) -> [Vec3; 3] {
         let (ps, vs) = self.neighbours();
         self.use_exercise
-            .then(|| run::three_rules(self.runner, self.boid, self.velocity, ps.clone(), vs.clone()).ok())
+            .then(|| {
+                run::three_rules(
+                    self.runner,
+                    self.boid,
+                    self.velocity,
+                    ps.clone(),
+                    vs.clone(),
+                )
+                .ok()
+            })
             .flatten()
             .filter(|r| r.len() == 3 && r.iter().all(|v| v.is_finite()))
             .map(|r| [r[0], r[1], r[2]])
@@ -424,15 +483,26 @@ impl RulesFigure {
         // Grid lines on y = 0 (the grid's cells seen from above).
         for k in 0..=dims[0] {
             let x = GRID_ORIGIN.x + k as f32 * s;
-            frame.line(Vec3::new(x, 0.0, GRID_ORIGIN.z), Vec3::new(x, 0.0, GRID_ORIGIN.z + dims[2] as f32 * s), palette::GRID);
+            frame.line(
+                Vec3::new(x, 0.0, GRID_ORIGIN.z),
+                Vec3::new(x, 0.0, GRID_ORIGIN.z + dims[2] as f32 * s),
+                palette::GRID,
+            );
         }
         for k in 0..=dims[2] {
             let z = GRID_ORIGIN.z + k as f32 * s;
-            frame.line(Vec3::new(GRID_ORIGIN.x, 0.0, z), Vec3::new(GRID_ORIGIN.x + dims[0] as f32 * s, 0.0, z), palette::GRID);
+            frame.line(
+                Vec3::new(GRID_ORIGIN.x, 0.0, z),
+                Vec3::new(GRID_ORIGIN.x + dims[0] as f32 * s, 0.0, z),
+                palette::GRID,
+            );
         }
         // The boid's cell and the 3 × 3 block searched around it.
         let c = cell_index(self.boid, GRID_ORIGIN, s, dims);
-        let (ci, ck) = ((c % dims[0] as usize) as i32, (c / (dims[0] * dims[1]) as usize) as i32);
+        let (ci, ck) = (
+            (c % dims[0] as usize) as i32,
+            (c / (dims[0] * dims[1]) as usize) as i32,
+        );
         for dk in -1..=1 {
             for di in -1..=1 {
                 let (i, k) = (ci + di, ck + dk);
@@ -440,7 +510,11 @@ impl RulesFigure {
                     continue;
                 }
                 let lo = GRID_ORIGIN + Vec3::new(i as f32 * s, 0.0, k as f32 * s);
-                let color = if di == 0 && dk == 0 { palette::ORANGE } else { palette::TEAL };
+                let color = if di == 0 && dk == 0 {
+                    palette::ORANGE
+                } else {
+                    palette::TEAL
+                };
                 let inset = 0.03 * s;
                 let corners = [
                     lo + Vec3::new(inset, 0.002, inset),
@@ -476,7 +550,12 @@ impl RulesFigure {
             frame.arrow(*q, *q + 0.35 * *v, color, 0.08);
         }
         frame.point(self.boid, 0.09, palette::ORANGE);
-        frame.arrow(self.boid, self.boid + 0.5 * self.velocity, palette::ORANGE, 0.1);
+        frame.arrow(
+            self.boid,
+            self.boid + 0.5 * self.velocity,
+            palette::ORANGE,
+            0.1,
+        );
         let [co, al, se] = self.rules();
         for (v, color, name) in [
             (co, palette::GREEN, "cohesion"),
@@ -506,23 +585,44 @@ impl RulesFigure {
     /// Compares the student's three rules and cell index with the reference at this boid.
     pub fn exercise_note(&self) -> String {
         let (ps, vs) = self.neighbours();
-        let rules = match run::three_rules(self.runner, self.boid, self.velocity, ps.clone(), vs.clone()) {
+        let rules = match run::three_rules(
+            self.runner,
+            self.boid,
+            self.velocity,
+            ps.clone(),
+            vs.clone(),
+        ) {
             Err(f) => failure_note("exercise 12.1 three_rules", FILE, &f),
             Ok(yours) => {
                 let reference = three_rules(self.boid, self.velocity, &ps, &vs);
                 let flat = |v: &[Vec3]| v.iter().flat_map(|x| x.to_array()).collect::<Vec<f32>>();
-                compare_note("three_rules", "this boid", &flat(&yours), &flat(&reference), TOLERANCE).1
+                compare_note(
+                    "three_rules",
+                    "this boid",
+                    &flat(&yours),
+                    &flat(&reference),
+                    TOLERANCE,
+                )
+                .1
             }
         };
         let dims = self.dims();
         let dims_f = dims.map(|d| d as f32);
-        let cell = match run::cell_index(self.runner, self.boid, GRID_ORIGIN, self.cell_size, dims_f) {
-            Err(f) => failure_note("exercise 12.2 cell_index", FILE, &f),
-            Ok(yours) => {
-                let reference = cell_index(self.boid, GRID_ORIGIN, self.cell_size, dims);
-                compare_note("cell_index", "this boid", &[yours as f32], &[reference as f32], 0.0).1
-            }
-        };
+        let cell =
+            match run::cell_index(self.runner, self.boid, GRID_ORIGIN, self.cell_size, dims_f) {
+                Err(f) => failure_note("exercise 12.2 cell_index", FILE, &f),
+                Ok(yours) => {
+                    let reference = cell_index(self.boid, GRID_ORIGIN, self.cell_size, dims);
+                    compare_note(
+                        "cell_index",
+                        "this boid",
+                        &[yours as f32],
+                        &[reference as f32],
+                        0.0,
+                    )
+                    .1
+                }
+            };
         format!("{rules} {cell}")
     }
 }

@@ -10,7 +10,10 @@
 //!   predicted time and place of the next floor impact (exercise 11.1).
 //! - [`SquashFigure`]: the same bounce without and with squash and stretch, side by side.
 
-use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner, DEFAULT_RUNNER};
+use super::{
+    compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner,
+    DEFAULT_RUNNER,
+};
 use crate::draw::PointInstance;
 use crate::exercises::run;
 use crate::particles::{
@@ -36,8 +39,6 @@ pub fn steps_to(time_sec: f32) -> Result<usize, String> {
 
 /// The most particles the emitter figure holds (software rendering in the tests draws them all).
 pub const PAGE_MAX_PARTICLES: usize = 2000;
-/// The longest step a figure takes; a slower frame is cut into steps of at most this.
-
 
 // ---------------------------------------------------------------------------------------------
 // Emitters and sprites.
@@ -76,7 +77,10 @@ impl Default for EmitterFigure {
 impl EmitterFigure {
     pub fn new() -> Self {
         let surfaces = Surfaces {
-            spheres: vec![Sphere { center: Vec3::new(0.9, 0.5, 0.0), radius: 0.5 }],
+            spheres: vec![Sphere {
+                center: Vec3::new(0.9, 0.5, 0.0),
+                radius: 0.5,
+            }],
             ..Default::default()
         };
         let mut fountain = Emitter::fountain(Vec3::new(-0.6, 0.05, 0.0));
@@ -191,7 +195,7 @@ impl EmitterFigure {
 
     fn step(&mut self) {
         let k = self.steps_done;
-        if (self.mode >= 1 && k % BURST_EVERY == 0) || self.bursts.contains(&k) {
+        if (self.mode >= 1 && k.is_multiple_of(BURST_EVERY)) || self.bursts.contains(&k) {
             self.system.burst(&self.emitters, 1, self.burst_count);
         }
         let rate = self.emitters[0].rate_per_sec;
@@ -223,14 +227,16 @@ impl EmitterFigure {
         self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
         for s in &self.surfaces.spheres {
-            let model = Mat4::from_translation(s.center) * Mat4::from_scale(Vec3::splat(s.radius * 0.98));
+            let model =
+                Mat4::from_translation(s.center) * Mat4::from_scale(Vec3::splat(s.radius * 0.98));
             frame.mesh(MeshId::SPHERE, model, palette::GREY);
         }
         let sys = &self.system;
         let n = sys.len();
         self.order.clear();
         for i in 0..n {
-            self.order.push(((sys.positions[i] - eye).length_squared(), i as u32));
+            self.order
+                .push(((sys.positions[i] - eye).length_squared(), i as u32));
         }
         if self.sort {
             // Farthest first: each sprite blends over what is already behind it.
@@ -253,14 +259,22 @@ impl EmitterFigure {
             "{n} particles alive (at most {PAGE_MAX_PARTICLES} here, {} in the core); sprites {}. \
              With e = {}, a particle that hits the floor at 5 m/s leaves it at {} m/s.{}",
             crate::particles::MAX_PARTICLES,
-            if self.sort { "sorted back to front" } else { "in storage order (unsorted)" },
+            if self.sort {
+                "sorted back to front"
+            } else {
+                "in storage order (unsorted)"
+            },
             format_number(e),
             format_number(5.0 * e),
             match (self.bursts.len(), n == self.system.capacity()) {
                 (0, false) => String::new(),
                 (b, full) => format!(
                     " Explosions set off by hand: {b}{}.",
-                    if full { " (the system is full: new particles wait for free slots)" } else { "" }
+                    if full {
+                        " (the system is full: new particles wait for free slots)"
+                    } else {
+                        ""
+                    }
                 ),
             },
         ))
@@ -351,7 +365,9 @@ impl FreeFallFigure {
             path.push(p);
             for _ in 0..steps {
                 let student = (self.use_exercise && *integrator == Integrator::SemiImplicitEuler)
-                    .then(|| run::semi_implicit_euler_step(self.runner, p, v, self.g, self.dt_sec).ok())
+                    .then(|| {
+                        run::semi_implicit_euler_step(self.runner, p, v, self.g, self.dt_sec).ok()
+                    })
                     .flatten()
                     .filter(|(p, v)| p.is_finite() && v.is_finite());
                 match student {
@@ -380,7 +396,13 @@ impl FreeFallFigure {
 
     /// The errors at the end of the throw computed by [`free_fall_errors`] (for tests).
     pub fn final_errors(&self) -> FreeFallError {
-        let mut out = vec![FreeFallError { time_sec: 0.0, error_m: [0.0; 3] }; self.steps()];
+        let mut out = vec![
+            FreeFallError {
+                time_sec: 0.0,
+                error_m: [0.0; 3]
+            };
+            self.steps()
+        ];
         free_fall_errors(self.p0, self.v0, self.g, self.dt_sec, &mut out);
         out[out.len() - 1]
     }
@@ -390,7 +412,15 @@ impl FreeFallFigure {
         let t = in_range("time", time_sec, 0.0, 1e6)?.min(FREE_FALL_DURATION);
         frame.grid(8, 0.5);
         let exact: Vec<Vec3> = (0..=60)
-            .map(|k| free_fall(self.p0, self.v0, self.g, FREE_FALL_DURATION * k as f32 / 60.0).0)
+            .map(|k| {
+                free_fall(
+                    self.p0,
+                    self.v0,
+                    self.g,
+                    FREE_FALL_DURATION * k as f32 / 60.0,
+                )
+                .0
+            })
             .collect();
         frame.polyline(&exact, EXACT_COLOR);
         frame.point(free_fall(self.p0, self.v0, self.g, t).0, 0.07, EXACT_COLOR);
@@ -431,8 +461,18 @@ impl FreeFallFigure {
                 crate::particles::semi_implicit_euler_step(&mut rp, &mut rv, self.g, self.dt_sec);
                 let yours = [p.to_array(), v.to_array()].concat();
                 let reference = [rp.to_array(), rv.to_array()].concat();
-                let at = format!("the first step (dt = {} s), as (p′, v′)", format_number(self.dt_sec));
-                compare_note("semi_implicit_euler_step", &at, &yours, &reference, TOLERANCE).1
+                let at = format!(
+                    "the first step (dt = {} s), as (p′, v′)",
+                    format_number(self.dt_sec)
+                );
+                compare_note(
+                    "semi_implicit_euler_step",
+                    &at,
+                    &yours,
+                    &reference,
+                    TOLERANCE,
+                )
+                .1
             }
         }
     }
@@ -470,7 +510,10 @@ impl Default for BounceFigure {
 impl BounceFigure {
     pub fn new() -> Self {
         let mut f = Self {
-            sphere: Sphere { center: Vec3::new(0.0, 0.6, 0.0), radius: 0.6 },
+            sphere: Sphere {
+                center: Vec3::new(0.0, 0.6, 0.0),
+                radius: 0.6,
+            },
             restitution: 0.75,
             friction: 0.1,
             positions: Vec::new(),
@@ -509,7 +552,13 @@ impl BounceFigure {
     /// Drops every ball again from its starting height.
     pub fn drop_balls(&mut self) {
         self.positions = (0..BOUNCE_BALLS)
-            .map(|i| Vec3::new(-0.75 + 0.25 * i as f32, 2.2 + 0.15 * i as f32, 0.05 * i as f32 - 0.15))
+            .map(|i| {
+                Vec3::new(
+                    -0.75 + 0.25 * i as f32,
+                    2.2 + 0.15 * i as f32,
+                    0.05 * i as f32 - 0.15,
+                )
+            })
             .collect();
         self.velocities = vec![Vec3::ZERO; BOUNCE_BALLS];
         self.resting = vec![false; BOUNCE_BALLS];
@@ -522,7 +571,10 @@ impl BounceFigure {
     fn surfaces(&self) -> Surfaces {
         Surfaces {
             floor_y: Some(BALL_RADIUS),
-            spheres: vec![Sphere { center: self.sphere.center, radius: self.sphere.radius + BALL_RADIUS }],
+            spheres: vec![Sphere {
+                center: self.sphere.center,
+                radius: self.sphere.radius + BALL_RADIUS,
+            }],
             restitution: self.restitution,
             friction: self.friction,
             ..Default::default()
@@ -577,19 +629,37 @@ impl BounceFigure {
     pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
-        let model = Mat4::from_translation(self.sphere.center) * Mat4::from_scale(Vec3::splat(self.sphere.radius));
+        let model = Mat4::from_translation(self.sphere.center)
+            * Mat4::from_scale(Vec3::splat(self.sphere.radius));
         frame.mesh(MeshId::SPHERE, model, palette::GREY);
         for (i, p) in self.positions.iter().enumerate() {
-            let color = if i == 0 { palette::ORANGE } else { palette::BLUE };
-            frame.mesh(MeshId::SPHERE, Mat4::from_translation(*p) * Mat4::from_scale(Vec3::splat(BALL_RADIUS)), color);
+            let color = if i == 0 {
+                palette::ORANGE
+            } else {
+                palette::BLUE
+            };
+            frame.mesh(
+                MeshId::SPHERE,
+                Mat4::from_translation(*p) * Mat4::from_scale(Vec3::splat(BALL_RADIUS)),
+                color,
+            );
         }
         let mut note = String::new();
         if let Some(t) = self.impact_time() {
-            let (hit, _) = free_fall(self.positions[0], self.velocities[0], self.surfaces().gravity, t);
+            let (hit, _) = free_fall(
+                self.positions[0],
+                self.velocities[0],
+                self.surfaces().gravity,
+                t,
+            );
             let mark = Vec3::new(hit.x, 0.002, hit.z);
             frame.point(mark, 0.05, palette::ORANGE);
             frame.line(self.positions[0], mark, palette::ORANGE);
-            frame.label(mark + Vec3::new(0.0, 0.15, 0.0), format!("floor in {} s", format_number(t)), palette::ORANGE);
+            frame.label(
+                mark + Vec3::new(0.0, 0.15, 0.0),
+                format!("floor in {} s", format_number(t)),
+                palette::ORANGE,
+            );
             note = format!(
                 "The orange ball reaches the floor in t = {} s if the sphere is not in its way.",
                 format_number(t)
@@ -621,9 +691,21 @@ impl BounceFigure {
         match run::time_of_impact(self.runner, y, vy, g, BALL_RADIUS) {
             Err(f) => failure_note("exercise 11.1 time_of_impact", FILE, &f),
             Ok(t) => {
-                let reference = crate::exercises::particles::reference_time_of_impact(y, vy, g, BALL_RADIUS);
-                let at = format!("y0 = {} m, vy = {} m/s", format_number(y), format_number(vy));
-                compare_note("time_of_impact", &at, &[t], &[reference], TOLERANCE * (1.0 + reference)).1
+                let reference =
+                    crate::exercises::particles::reference_time_of_impact(y, vy, g, BALL_RADIUS);
+                let at = format!(
+                    "y0 = {} m, vy = {} m/s",
+                    format_number(y),
+                    format_number(vy)
+                );
+                compare_note(
+                    "time_of_impact",
+                    &at,
+                    &[t],
+                    &[reference],
+                    TOLERANCE * (1.0 + reference),
+                )
+                .1
             }
         }
     }
@@ -649,7 +731,11 @@ impl Default for SquashFigure {
 
 impl SquashFigure {
     pub fn new() -> Self {
-        let surfaces = Surfaces { restitution: 0.8, friction: 0.0, ..Default::default() };
+        let surfaces = Surfaces {
+            restitution: 0.8,
+            friction: 0.0,
+            ..Default::default()
+        };
         Self {
             plain: SquashBall::new(0.25, 2.0, 0.6),
             squash: SquashBall::new(0.25, 2.0, 0.6),
@@ -683,9 +769,17 @@ impl SquashFigure {
     fn restart(&mut self) {
         let fresh = Self::new();
         self.plain = fresh.plain;
-        let (k, s, c) = (self.squash.stretch_per_speed, self.squash.squash, self.squash.contact_sec);
+        let (k, s, c) = (
+            self.squash.stretch_per_speed,
+            self.squash.squash,
+            self.squash.contact_sec,
+        );
         self.squash = fresh.squash;
-        (self.squash.stretch_per_speed, self.squash.squash, self.squash.contact_sec) = (k, s, c);
+        (
+            self.squash.stretch_per_speed,
+            self.squash.squash,
+            self.squash.contact_sec,
+        ) = (k, s, c);
         self.steps_done = 0;
     }
 
@@ -716,7 +810,11 @@ impl SquashFigure {
         let offset = |x: f32| Vec3::new(-1.2, 0.0, x);
         // The rigid ball, behind.
         let p = self.plain.position + offset(-0.5);
-        frame.mesh(MeshId::SPHERE, Mat4::from_translation(p) * Mat4::from_scale(Vec3::splat(self.plain.radius)), palette::GREY);
+        frame.mesh(
+            MeshId::SPHERE,
+            Mat4::from_translation(p) * Mat4::from_scale(Vec3::splat(self.plain.radius)),
+            palette::GREY,
+        );
         // The squashing ball: keep its lowest point on the floor while squashed.
         let (axis, s) = self.squash.stretch();
         let mut c = self.squash.position + offset(0.5);
@@ -726,12 +824,20 @@ impl SquashFigure {
         let m = Mat4::from_translation(c) * Mat4::from_mat3(self.squash.shape_matrix());
         frame.mesh(MeshId::SPHERE, m, palette::ORANGE);
         frame.label(p + Vec3::new(0.0, 0.45, 0.0), "rigid", palette::DARK);
-        frame.label(c + Vec3::new(0.0, 0.45, 0.0), "squash and stretch", palette::ORANGE);
+        frame.label(
+            c + Vec3::new(0.0, 0.45, 0.0),
+            "squash and stretch",
+            palette::ORANGE,
+        );
         let what = if s < 1.0 { "squashed" } else { "stretched" };
         Ok(format!(
             "Orange ball: {what} by s = {} along {}; its volume stays {} of the round ball's.",
             format_number(s),
-            if axis == Vec3::Y && s < 1.0 { "the floor's normal".to_string() } else { "its velocity".to_string() },
+            if axis == Vec3::Y && s < 1.0 {
+                "the floor's normal".to_string()
+            } else {
+                "its velocity".to_string()
+            },
             format_number(self.squash.shape_matrix().determinant() / self.squash.radius.powi(3)),
         ) + &format!(
             " It stretches by k = {} per m/s in flight and squashes down to s = {} for {} s \

@@ -160,7 +160,11 @@ pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s
                 let mut vt = Vec3::new(v.x, 0.0, v.z) + gt * dt;
                 let slow = s.friction * (-g.y) * dt;
                 let len = vt.length();
-                vt = if len > slow { vt * (1.0 - slow / len) } else { Vec3::ZERO };
+                vt = if len > slow {
+                    vt * (1.0 - slow / len)
+                } else {
+                    Vec3::ZERO
+                };
                 *p += vt * dt;
                 p.y = floor;
                 *v = vt;

@@ -96,7 +96,13 @@ pub fn semi_implicit_euler_step(p: &mut Vec3, v: &mut Vec3, a: Vec3, dt: f32) {
 /// p' = p + v dt + ½ a0 dt²
 /// v' = v + ½ (a0 + a(p')) dt
 /// ```
-pub fn verlet_step(p: &mut Vec3, v: &mut Vec3, a0: Vec3, dt: f32, a: impl Fn(Vec3) -> Vec3) -> Vec3 {
+pub fn verlet_step(
+    p: &mut Vec3,
+    v: &mut Vec3,
+    a0: Vec3,
+    dt: f32,
+    a: impl Fn(Vec3) -> Vec3,
+) -> Vec3 {
     *p += *v * dt + 0.5 * a0 * dt * dt;
     let a1 = a(*p);
     *v += 0.5 * (a0 + a1) * dt;
@@ -116,13 +122,7 @@ pub struct FreeFallError {
 /// integrator, and writes the position error against [`free_fall`] after each step into `out`
 /// (one sample per step, `out.len()` at least `steps`). Returns how many samples were written.
 /// Uses f64 for the exact solution so the error shown is the integrator's, not rounding's.
-pub fn free_fall_errors(
-    p0: Vec3,
-    v0: Vec3,
-    g: Vec3,
-    dt: f32,
-    out: &mut [FreeFallError],
-) -> usize {
+pub fn free_fall_errors(p0: Vec3, v0: Vec3, g: Vec3, dt: f32, out: &mut [FreeFallError]) -> usize {
     let mut states = [(p0, v0); 3];
     for (k, sample) in out.iter_mut().enumerate() {
         let t = (k + 1) as f64 * dt as f64;

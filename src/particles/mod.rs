@@ -148,7 +148,13 @@ impl SquashBall {
             ..surfaces.clone()
         };
         let vy_before = self.velocity.y;
-        ballistic_step(&mut self.position, &mut self.velocity, &mut self.resting, dt, &s);
+        ballistic_step(
+            &mut self.position,
+            &mut self.velocity,
+            &mut self.resting,
+            dt,
+            &s,
+        );
         // A bounce flips the vertical velocity from downwards to upwards (or stops it).
         if vy_before < -REST_IMPACT && self.velocity.y >= 0.0 {
             self.since_impact_sec = 0.0;
@@ -165,7 +171,8 @@ impl SquashBall {
             return (Vec3::Y, s);
         }
         let speed = self.velocity.length();
-        let s = crate::expressive::stretch_from_speed(speed, self.stretch_per_speed, self.max_stretch);
+        let s =
+            crate::expressive::stretch_from_speed(speed, self.stretch_per_speed, self.max_stretch);
         (self.velocity.normalize_or(Vec3::Y), s)
     }
 

@@ -93,15 +93,22 @@ impl Emitter {
     pub fn validate(&self) -> Result<(), ParticleError> {
         let bad = |what: &str| Err(ParticleError::Invalid(what.to_string()));
         if !self.rate_per_sec.is_finite() || self.rate_per_sec < 0.0 {
-            return bad(&format!("rate must be finite and ≥ 0, got {}", self.rate_per_sec));
+            return bad(&format!(
+                "rate must be finite and ≥ 0, got {}",
+                self.rate_per_sec
+            ));
         }
         let (lo, hi) = self.lifetime_sec;
         if !(lo.is_finite() && hi.is_finite() && lo > 0.0 && lo <= hi) {
-            return bad(&format!("lifetime must satisfy 0 < min ≤ max, got [{lo}, {hi}]"));
+            return bad(&format!(
+                "lifetime must satisfy 0 < min ≤ max, got [{lo}, {hi}]"
+            ));
         }
         let (lo, hi) = self.size;
         if !(lo.is_finite() && hi.is_finite() && lo >= 0.0 && lo <= hi) {
-            return bad(&format!("size must satisfy 0 ≤ min ≤ max, got [{lo}, {hi}]"));
+            return bad(&format!(
+                "size must satisfy 0 ≤ min ≤ max, got [{lo}, {hi}]"
+            ));
         }
         let finite = match self.position {
             PositionDist::Point(p) => p.is_finite(),
@@ -130,7 +137,9 @@ impl Emitter {
             } => speed_min.is_finite() && speed_max.is_finite() && speed_min <= speed_max,
         };
         if !ok {
-            return bad("velocity distribution must be finite, with a non-zero axis and min ≤ max speed");
+            return bad(
+                "velocity distribution must be finite, with a non-zero axis and min ≤ max speed",
+            );
         }
         if !(self.color_birth.is_finite() && self.color_death.is_finite()) {
             return bad("colours must be finite");

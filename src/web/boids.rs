@@ -14,7 +14,9 @@ pub struct FlockScene {
 impl FlockScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> FlockScene {
-        FlockScene { scene: FlockFigure::new() }
+        FlockScene {
+            scene: FlockFigure::new(),
+        }
     }
     /// A new flock of `count` boids, in [2, 3000].
     #[wasm_bindgen(js_name = setCount)]

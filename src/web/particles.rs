@@ -14,7 +14,9 @@ pub struct EmitterScene {
 impl EmitterScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> EmitterScene {
-        EmitterScene { scene: EmitterFigure::new() }
+        EmitterScene {
+            scene: EmitterFigure::new(),
+        }
     }
     /// "fountain", "explosion" or "both".
     #[wasm_bindgen(js_name = setMode)]
@@ -60,7 +62,10 @@ impl EmitterScene {
     /// draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let eye = viewer.camera.eye();
-        let note = self.scene.draw(&mut viewer.renderer.frame, eye, time_sec).map_err(js)?;
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, eye, time_sec)
+            .map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
@@ -106,7 +111,10 @@ impl FreeFallScene {
         self.scene.error_samples()
     }
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
-        let note = self.scene.draw(&mut viewer.renderer.frame, time_sec).map_err(js)?;
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
@@ -146,7 +154,10 @@ impl BounceScene {
     }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
-        let note = self.scene.draw(&mut viewer.renderer.frame, time_sec).map_err(js)?;
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
@@ -168,7 +179,9 @@ pub struct SquashScene {
 impl SquashScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> SquashScene {
-        SquashScene { scene: SquashFigure::new() }
+        SquashScene {
+            scene: SquashFigure::new(),
+        }
     }
     #[wasm_bindgen(js_name = setStretch)]
     pub fn set_stretch(&mut self, k: f32) -> Result<(), JsError> {
@@ -184,7 +197,10 @@ impl SquashScene {
     }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
-        let note = self.scene.draw(&mut viewer.renderer.frame, time_sec).map_err(js)?;
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
