@@ -464,7 +464,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 23);
+        assert_eq!(NAMES.len(), 27);
     }
 
     #[test]
