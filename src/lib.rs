@@ -19,6 +19,8 @@
 //! | `08-blending`: blending | [`skeleton`] (blend, locomotion) | [`figures::blending`] | `web::blending` | [`exercises::skeleton`] (6.3) |
 //! | `09-skinning`: skinning (LBS, DQS, automatic weights) | [`skinning`] | [`figures::skinning`] | `web::skinning` (bench: `web::bench_skinning`) | [`exercises::skinning`] (9.x) |
 //! | `10-blend-shapes`: blend shapes | [`blend_shapes`] | [`figures::blend_shapes`] | `web::blend_shapes` | [`exercises::blend_shapes`] (10.x) |
+//! | `11-particles`: particles | [`particles`] (integrators, time of impact, emitters) | [`figures::particles`] | `web::particles` | [`exercises::particles`] (11.x) |
+//! | `12-boids`: boids | [`boids`] (rules, force laws, grid) | [`figures::boids`] | `web::boids` (bench: `web::bench_boids`) | [`exercises::boids`] (12.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
@@ -37,6 +39,7 @@
 //!   parent `-1` and every other joint's parent comes before it (`parents[i] < i`).
 
 pub mod blend_shapes;
+pub mod boids;
 pub mod camera;
 pub mod curves;
 pub mod draw;
@@ -48,6 +51,7 @@ pub mod gltf_import;
 pub mod ik;
 pub mod mesh;
 pub mod noise;
+pub mod particles;
 pub mod raster;
 pub mod rigid;
 pub mod rotation;

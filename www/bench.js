@@ -64,6 +64,22 @@ export const SUITES = [
     unit: 'character',
   },
   {
+    name: 'boids: one step, 10k boids, naive O(N²) vs grid (lesson 12)',
+    run: (kernel, size, iterations) => wasm.benchBoids(kernel, size, iterations),
+    kernels: ['grid', 'naive'],
+    baseline: 'grid',
+    size: 10_000,
+    unit: 'boid',
+  },
+  {
+    name: 'boids: one step, 100k boids, grid (lesson 12; target under 16 ms per step)',
+    run: (kernel, size, iterations) => wasm.benchBoids(kernel, size, iterations),
+    kernels: ['grid'],
+    baseline: 'grid',
+    size: 100_000,
+    unit: 'boid',
+  },
+  {
     name: 'terrain 512 × 512, 8 octaves (lesson 05)',
     run: (kernel, size, iterations) => wasm.benchTerrain(kernel, size, iterations),
     kernels: ['fbm8_values', 'terrain_with_normals'],

@@ -64,6 +64,8 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::ik::grade(&mut rng));
     reports.extend(super::skinning::grade(&mut rng));
     reports.extend(super::blend_shapes::grade(&mut rng));
+    reports.extend(super::particles::grade(&mut rng));
+    reports.extend(super::boids::grade(&mut rng));
     reports
 }
 

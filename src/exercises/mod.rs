@@ -13,11 +13,13 @@
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
 pub mod blend_shapes;
+pub mod boids;
 pub mod curves;
 pub mod expressive;
 pub mod grade;
 pub mod ik;
 pub mod noise;
+pub mod particles;
 pub mod raster;
 pub mod rotations;
 pub mod run;

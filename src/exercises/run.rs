@@ -232,6 +232,7 @@ use super::blend_shapes as bs;
 use super::ik as ik7;
 use super::noise as nz;
 use super::skinning as sn;
+use super::{boids as bo, particles as pa};
 use super::{
     curves as c, expressive as ex, raster as ra, rotations as r, skeleton as sk, transforms as tr,
 };
@@ -328,6 +329,17 @@ exercises! {
     /// Exercise 10.1, [`bs::differential_vertex`].
     fn differential_vertex(base: Vec3, targets: Vec<Vec3>, weights: Vec<f32>) -> Vec3 =
         bs::differential_vertex(base, &targets, &weights);
+    /// Exercise 11.1, [`pa::time_of_impact`].
+    fn time_of_impact(y0: f32, vy: f32, gy: f32, floor_y: f32) -> f32 = pa::time_of_impact(y0, vy, gy, floor_y);
+    /// Exercise 11.2, [`pa::semi_implicit_euler_step`]: returns `(p', v')`.
+    fn semi_implicit_euler_step(p: Vec3, v: Vec3, a: Vec3, dt: f32) -> (Vec3, Vec3) =
+        pa::semi_implicit_euler_step(p, v, a, dt);
+    /// Exercise 12.1, [`bo::three_rules`]: `[cohesion, alignment, separation]` as a list.
+    fn three_rules(p: Vec3, v: Vec3, positions: Vec<Vec3>, velocities: Vec<Vec3>) -> Vec<Vec3> =
+        bo::three_rules(p, v, &positions, &velocities).map(|r| r.to_vec());
+    /// Exercise 12.2, [`bo::cell_index`]: `dims` as `f32`s (exact).
+    fn cell_index(p: Vec3, origin: Vec3, cell_size: f32, dims: [f32; 3]) -> usize =
+        bo::cell_index(p, origin, cell_size, dims.map(|d| d as u32));
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature
@@ -472,7 +484,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 28);
+        assert_eq!(NAMES.len(), 32);
     }
 
     #[test]

@@ -9,11 +9,13 @@
 
 pub mod blend_shapes;
 pub mod blending;
+pub mod boids;
 pub mod curves;
 pub mod expressive;
 pub mod gltf;
 pub mod ik;
 pub mod noise;
+pub mod particles;
 pub mod raster;
 pub mod rigid;
 pub mod rotations;

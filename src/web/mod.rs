@@ -3,6 +3,7 @@
 //! message the page shows in its error banner. No HTML is built here, no math re-implemented.
 
 mod bench;
+mod bench_boids;
 mod bench_curves;
 mod bench_noise;
 mod bench_rotation;
@@ -10,11 +11,13 @@ mod bench_skeleton;
 mod bench_skinning;
 mod blend_shapes;
 mod blending;
+mod boids;
 mod curves;
 mod expressive;
 mod gltf;
 mod ik;
 mod noise;
+mod particles;
 mod raster;
 mod rigid;
 mod rotations;
@@ -26,6 +29,7 @@ mod viewer;
 
 pub use blend_shapes::BlendShapeFaceScene;
 pub use blending::{BlendScene, LocomotionScene};
+pub use boids::{BoidRulesScene, FlockScene};
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
 pub use ik::{AimScene, IkScene};
@@ -33,6 +37,7 @@ pub use noise::{
     FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
     TexturesScene,
 };
+pub use particles::{check_emitter, BounceScene, EmitterScene, FreeFallScene, SquashScene};
 pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
 pub use rigid::{AffineScene, RigidScene};
 pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};

@@ -1,0 +1,156 @@
+// Lesson 11: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/particles/, src/figures/particles.rs).
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns } from '../../www/lesson.js';
+import { EmitterScene, FreeFallScene, BounceScene, SquashScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
+
+/** Runs `apply`; a value the core rejects is put back and the reason passed to `onReject`. */
+function guarded(gui, p, apply, onReject) {
+  let accepted = { ...p };
+  return () => {
+    try {
+      apply();
+      accepted = { ...p };
+      onReject('');
+    } catch (e) {
+      onReject(`Not changed: ${e.message ?? e}`);
+      Object.assign(p, accepted);
+      gui.controllersRecursive().forEach((c) => c.updateDisplay());
+      apply();
+    }
+  };
+}
+
+/** Shows `message` in a note element, touching the DOM only when it changed. */
+function showNote(element, message) {
+  if (element.textContent !== message) element.textContent = message;
+}
+
+// Figure 1: emitters and sprites.
+const emitterViewer = await lesson.figure('#fig-emitters');
+if (emitterViewer) {
+  emitterViewer.setCamera(0.2, 1.0, 0, 6.5, 0.35, 0.3);
+  const scene = new EmitterScene();
+  const timeline = new Timeline(document.getElementById('emitters-timeline'), { duration: 6 });
+  const p = {
+    mode: 'fountain', rate: 200, spread: 11, lifetime: 2.5, restitution: 0.7, gravity: 9.81,
+    sort: true, fade: true, explode: () => scene.explode(),
+  };
+  const gui = new GUI({ container: document.querySelector('#fig-emitters .panel'), title: 'Emitters' });
+  gui.add(p, 'mode', ['fountain', 'both', 'explosion']).name('emitter');
+  gui.add(p, 'rate', 0, 1000, 10).name('rate (1/s; burst: 2×)');
+  gui.add(p, 'spread', 0, 90, 1).name('cone half-angle (°)');
+  gui.add(p, 'lifetime', 0.2, 6, 0.1).name('lifetime (s)');
+  gui.add(p, 'restitution', 0, 1, 0.05).name('restitution e');
+  gui.add(p, 'gravity', 0, 20, 0.1).name('gravity (m/s²)');
+  gui.add(p, 'sort').name('sort back to front');
+  gui.add(p, 'fade').name('fade with age');
+  gui.add(p, 'explode').name('explode now');
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setMode(p.mode);
+    scene.setRate(p.rate);
+    scene.setSpreadDeg(p.spread);
+    scene.setLifetime(p.lifetime);
+    scene.setRestitution(p.restitution);
+    scene.setGravity(p.gravity);
+    scene.setSort(p.sort);
+    scene.setFade(p.fade);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('emitters-note');
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, [rejected, scene.draw(emitterViewer, t)].filter(Boolean).join(' '));
+    markDrawn('#fig-emitters');
+  });
+}
+
+// Figure 2: free fall, exact vs integrated.
+const fallViewer = await lesson.figure('#fig-freefall');
+if (fallViewer) {
+  fallViewer.setCamera(-0.3, 1.3, 0, 5.5, 0.0, 0.1);
+  const scene = new FreeFallScene();
+  const timeline = new Timeline(document.getElementById('freefall-timeline'), { duration: scene.durationSec() });
+  const p = { dt: 0.1, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-freefall .panel'), title: 'Integrators' });
+  gui.add(p, 'dt', 0.01, 0.3, 0.01).name('step size Δt (s)');
+  gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('freefall-plot'), {
+    title: 'Position error against the exact solution', xLabel: 'time (s)', yLabel: 'error (m)',
+    series: ['explicit Euler', 'semi-implicit Euler', 'velocity Verlet'],
+    colors: [css('--x-axis'), css('--z-axis'), css('--y-axis')], minSpan: 0.01,
+  });
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setDt(p.dt);
+    scene.setUseExercise(p.useExercise);
+    plot.setData(columns(scene.errorSamples(), 4));
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('freefall-note');
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, [rejected, scene.draw(fallViewer, t)].filter(Boolean).join(' '));
+    plot.setCursor(t);
+    markDrawn('#fig-freefall');
+  });
+}
+
+// Figure 3: bouncing balls.
+const bounceViewer = await lesson.figure('#fig-bounce');
+if (bounceViewer) {
+  bounceViewer.setCamera(0, 0.9, 0, 4.5, 0.3, 0.2);
+  const scene = new BounceScene();
+  const timeline = new Timeline(document.getElementById('bounce-timeline'), { duration: 6 });
+  const p = { restitution: 0.75, friction: 0.1, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-bounce .panel'), title: 'Bouncing' });
+  gui.add(p, 'restitution', 0, 1, 0.05).name('restitution e');
+  gui.add(p, 'friction', 0, 1, 0.05).name('friction μ');
+  gui.add(p, 'useExercise').name('use my exercise');
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setRestitution(p.restitution);
+    scene.setFriction(p.friction);
+    scene.setUseExercise(p.useExercise);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('bounce-note');
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, [rejected, scene.draw(bounceViewer, t)].filter(Boolean).join(' '));
+    markDrawn('#fig-bounce');
+  });
+}
+
+// Figure 4: squash and stretch.
+const squashViewer = await lesson.figure('#fig-squash');
+if (squashViewer) {
+  squashViewer.setCamera(-0.6, 0.9, 0, 5, 0.9, 0.15);
+  const scene = new SquashScene();
+  const timeline = new Timeline(document.getElementById('squash-timeline'), { duration: 4 });
+  const p = { stretch: 0.06, squash: 0.45, contact: 0.09 };
+  const gui = new GUI({ container: document.querySelector('#fig-squash .panel'), title: 'Squash and stretch' });
+  gui.add(p, 'stretch', 0, 0.3, 0.01).name('stretch k (per m/s)');
+  gui.add(p, 'squash', 0, 0.8, 0.05).name('squash on impact');
+  gui.add(p, 'contact', 0.02, 0.3, 0.01).name('squash time (s)');
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setStretch(p.stretch);
+    scene.setSquash(p.squash);
+    scene.setContact(p.contact);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('squash-note');
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, [rejected, scene.draw(squashViewer, t)].filter(Boolean).join(' '));
+    markDrawn('#fig-squash');
+  });
+}

@@ -1,0 +1,170 @@
+// Lesson 12: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/boids/, src/figures/boids.rs). The page only times the calls it makes.
+import { startLesson, markDrawn, Plot, GUI, Timeline } from '../../www/lesson.js';
+import { BoidRulesScene, FlockScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
+
+/** Runs `apply`; a value the core rejects is put back and the reason passed to `onReject`. */
+function guarded(gui, p, apply, onReject) {
+  let accepted = { ...p };
+  return () => {
+    try {
+      apply();
+      accepted = { ...p };
+      onReject('');
+    } catch (e) {
+      onReject(`Not changed: ${e.message ?? e}`);
+      Object.assign(p, accepted);
+      gui.controllersRecursive().forEach((c) => c.updateDisplay());
+      apply();
+    }
+  };
+}
+
+function showNote(element, message) {
+  if (element.textContent !== message) element.textContent = message;
+}
+
+// Figure 1: one boid's rules and its grid cell.
+const rulesViewer = await lesson.figure('#fig-rules');
+if (rulesViewer) {
+  rulesViewer.setCamera(0, 0, 0, 5.2, 0, 1.45);
+  const scene = new BoidRulesScene();
+  const p = { x: 0, z: 0, heading: 0, radius: 1.2, fov: 270, cell: 1, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-rules .panel'), title: 'One boid' });
+  gui.add(p, 'x', -1.9, 1.9, 0.05).name('position x (m)');
+  gui.add(p, 'z', -1.9, 1.9, 0.05).name('position z (m)');
+  gui.add(p, 'heading', -180, 180, 5).name('heading (°)');
+  gui.add(p, 'radius', 0.2, 3, 0.05).name('radius (m)');
+  gui.add(p, 'fov', 0, 360, 5).name('field of view (°)');
+  gui.add(p, 'cell', 0.25, 2, 0.05).name('grid cell size (m)');
+  gui.add(p, 'useExercise').name('use my exercise');
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setPosition(p.x, p.z);
+    scene.setHeadingDeg(p.heading);
+    scene.setRadius(p.radius);
+    scene.setFovDeg(p.fov);
+    scene.setCellSize(p.cell);
+    scene.setUseExercise(p.useExercise);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('rules-note');
+  lesson.onFrame(() => {
+    showNote(note, [rejected, scene.draw(rulesViewer)].filter(Boolean).join(' '));
+    markDrawn('#fig-rules');
+  });
+}
+
+// Figure 2: the flock, its live step time, and step time against N.
+const flockViewer = await lesson.figure('#fig-flock');
+if (flockViewer) {
+  flockViewer.setCamera(0, 0, 0, 9, 0.5, 0.45);
+  const scene = new FlockScene();
+  const timeline = new Timeline(document.getElementById('flock-timeline'), { duration: 20 });
+  const rules = {
+    cohesion: { weight: 1, radius: 1.5 },
+    alignment: { weight: 2, radius: 1.5 },
+    separation: { weight: 1.5, radius: 0.5 },
+  };
+  const p = {
+    count: 300, fov: 270, maxSpeed: 1.8, law: 'none', search: 'grid',
+    leader: false, predator: false, obstacle: true,
+    measure: () => startSweep(),
+  };
+  const gui = new GUI({ container: document.querySelector('#fig-flock .panel'), title: 'Flock' });
+  gui.add(p, 'count', 20, 3000, 10).name('boids');
+  for (const [name, rule] of Object.entries(rules)) {
+    const folder = gui.addFolder(name);
+    folder.add(rule, 'weight', 0, 10, 0.1).name('weight');
+    folder.add(rule, 'radius', 0.1, 3, 0.05).name('radius (m)');
+    if (name !== 'cohesion') folder.close();
+  }
+  gui.add(p, 'fov', 0, 360, 5).name('field of view (°)');
+  gui.add(p, 'maxSpeed', 0.2, 5, 0.1).name('max speed (m/s)');
+  gui.add(p, 'law', ['none', 'a1/x² − a2/x⁴', 'Gaussian']).name('force law');
+  gui.add(p, 'search', ['grid', 'naive']).name('neighbour search');
+  gui.add(p, 'obstacle').name('obstacle');
+  gui.add(p, 'leader').name('leader');
+  gui.add(p, 'predator').name('predator');
+  gui.add(p, 'measure').name('measure step time vs N');
+  let rejected = '';
+  let count = 0;
+  const apply = guarded(gui, p, () => {
+    if (p.count !== count) { scene.setCount(p.count); count = p.count; }
+    for (const [name, rule] of Object.entries(rules)) scene.setRule(name, rule.weight, rule.radius);
+    scene.setFovDeg(p.fov);
+    scene.setMaxSpeed(p.maxSpeed);
+    scene.setLaw(p.law);
+    scene.setSearch(p.search);
+    scene.setObstacle(p.obstacle);
+    scene.setLeader(p.leader);
+    scene.setPredator(p.predator);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+
+  // Step time against N: one timed step per frame, so the page stays responsive.
+  const plot = new Plot(document.getElementById('flock-plot'), {
+    title: 'One step of the flock: grid vs naive search', xLabel: 'boids N', yLabel: 'step time (ms)',
+    series: ['grid', 'naive'], colors: [css('--z-axis'), css('--x-axis')], minSpan: 0.1,
+  });
+  const SIZES = [100, 200, 400, 800, 1600];
+  const REPEATS = 3;
+  let sweep = null;
+  const status = document.getElementById('flock-sweep');
+  function startSweep() {
+    sweep = { size: 0, search: 0, repeat: 0, times: [], results: { grid: [], naive: [] } };
+    plot.setData([[], [], []]);
+    showNote(status, `Measuring one step at N = ${SIZES.join(', ')} (3 steps each, median)…`);
+  }
+  function sweepStep() {
+    if (!sweep) return;
+    const n = SIZES[sweep.size];
+    const search = ['grid', 'naive'][sweep.search];
+    if (sweep.repeat === 0 && sweep.search === 0) scene.prepareTiming(n);
+    const t0 = performance.now();
+    scene.timingStep(search);
+    sweep.times.push(performance.now() - t0);
+    if (++sweep.repeat < REPEATS) return;
+    sweep.times.sort((a, b) => a - b);
+    sweep.results[search].push(sweep.times[Math.floor(REPEATS / 2)]);
+    sweep.times = [];
+    sweep.repeat = 0;
+    if (++sweep.search === 2) {
+      sweep.search = 0;
+      sweep.size++;
+      const done = sweep.results.naive.length;
+      plot.setData([SIZES.slice(0, done), sweep.results.grid.slice(0, done), sweep.results.naive.slice(0, done)]);
+      if (sweep.size === SIZES.length) {
+        const last = SIZES.length - 1;
+        const ratio = sweep.results.naive[last] / Math.max(sweep.results.grid[last], 1e-3);
+        showNote(status, `Measured: at N = ${SIZES[last]} the naive search takes ${ratio.toFixed(1)}× as long as the grid.`);
+        sweep = null;
+      }
+    }
+  }
+  startSweep();
+
+  const note = document.getElementById('flock-note');
+  const timing = document.getElementById('flock-timing');
+  let average = 0;
+  let frame = 0;
+  lesson.onFrame((dt) => {
+    const time = timeline.advance(dt);
+    const t0 = performance.now();
+    const steps = scene.advanceTo(time);
+    const ms = performance.now() - t0;
+    // Per step; a replay after a loop or a scrub takes many steps at once and is left out.
+    if (steps > 0 && steps < 10) average = average === 0 ? ms / steps : 0.9 * average + 0.1 * (ms / steps);
+    showNote(note, [rejected, scene.draw(flockViewer)].filter(Boolean).join(' '));
+    if (frame++ % 10 === 0) {
+      showNote(timing, `Measured step time (${p.search} search, ${count} boids): ${average.toFixed(2)} ms per step, averaged over recent frames.`);
+    }
+    sweepStep();
+    markDrawn('#fig-flock');
+  });
+}

@@ -1,0 +1,628 @@
+//! Figure logic for lesson 12, "Boids" (see [`crate::figures`]).
+//!
+//! - [`FlockFigure`]: a flock with every rule's weight and radius, the field of view, the
+//!   count, a force law, an obstacle, a leader and a predator; naive or grid search; one boid
+//!   highlighted with its neighbours; a second flock the page times at several sizes.
+//! - [`RulesFigure`]: one boid and its neighbours seen from above: radius, field of view, the
+//!   three steering vectors (exercise 12.1) and the grid cells around it (exercise 12.2).
+
+use super::particles::{steps_to, SIM_DT};
+use super::{
+    compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner,
+    DEFAULT_RUNNER,
+};
+use crate::boids::{cell_index, three_rules, BoidParams, Flock, ForceLaw, Search};
+use crate::exercises::run;
+use crate::particles::Sphere;
+use glam::{Mat4, Vec3};
+
+const FILE: &str = "src/exercises/boids.rs";
+const TOLERANCE: f32 = 1e-4;
+/// The most boids the page's flock may have (every boid is drawn; software rendering in the
+/// tests draws them too). The core allows [`crate::boids::MAX_BOIDS`].
+pub const PAGE_MAX_BOIDS: usize = 3000;
+/// The most boids the page may time in one step (the naive search at this size takes a while in
+/// a debug build).
+pub const PAGE_MAX_TIMED_BOIDS: usize = 20_000;
+
+/// The most steps the flock takes to catch up with the timeline in one call (a slow frame);
+/// a longer jump restarts the flock.
+pub const MAX_CATCH_UP: usize = 10;
+
+/// What the force-law dropdown offers.
+pub const LAWS: [&str; 3] = ["none", "a1/x² − a2/x⁴", "Gaussian"];
+/// What the search dropdown offers.
+pub const SEARCHES: [&str; 2] = ["grid", "naive"];
+
+pub fn parse_search(name: &str) -> Result<Search, String> {
+    match name {
+        "grid" => Ok(Search::Grid),
+        "naive" => Ok(Search::Naive),
+        _ => Err(format!("search: no search named {name:?} (grid or naive)")),
+    }
+}
+
+/// The flock figure.
+#[derive(Clone, Debug)]
+pub struct FlockFigure {
+    params: BoidParams,
+    flock: Flock,
+    search: Search,
+    obstacle: bool,
+    bench: Option<Flock>,
+    neighbours: Vec<usize>,
+    seed: u64,
+    steps_done: usize,
+}
+
+impl Default for FlockFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl FlockFigure {
+    pub fn new() -> Self {
+        let params = BoidParams {
+            bounds: Vec3::new(3.0, 1.5, 3.0),
+            max_speed: 1.8,
+            ..Default::default()
+        };
+        let flock = Flock::new(300, &params, 1).expect("valid defaults");
+        let mut f = Self {
+            params,
+            flock,
+            search: Search::Grid,
+            obstacle: true,
+            bench: None,
+            neighbours: Vec::new(),
+            seed: 1,
+            steps_done: 0,
+        };
+        f.set_obstacle(true);
+        f
+    }
+
+    pub fn len(&self) -> usize {
+        self.flock.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.flock.is_empty()
+    }
+
+    pub fn params(&self) -> &BoidParams {
+        &self.params
+    }
+
+    pub fn flock(&self) -> &Flock {
+        &self.flock
+    }
+
+    /// A new flock of `count ∈ [2, PAGE_MAX_BOIDS]` boids.
+    pub fn set_count(&mut self, count: f32) -> Result<(), String> {
+        let n = in_range("count", count, 2.0, PAGE_MAX_BOIDS as f32)? as usize;
+        self.flock = Flock::new(n, &self.params, self.seed)?;
+        Ok(())
+    }
+
+    /// Sets a rule's weight (in [0, 10]) and radius (metres, in [0.05, 3]); `rule` is
+    /// "cohesion", "alignment" or "separation".
+    pub fn set_rule(&mut self, rule: &str, weight: f32, radius: f32) -> Result<(), String> {
+        let w = in_range(&format!("{rule} weight"), weight, 0.0, 10.0)?;
+        let r = in_range(&format!("{rule} radius"), radius, 0.05, 3.0)?;
+        let target = match rule {
+            "cohesion" => &mut self.params.cohesion,
+            "alignment" => &mut self.params.alignment,
+            "separation" => &mut self.params.separation,
+            _ => return Err(format!("rule: no rule named {rule:?}")),
+        };
+        target.weight = w;
+        target.radius = r;
+        Ok(())
+    }
+
+    /// Field of view, degrees in [0, 360].
+    pub fn set_fov_deg(&mut self, fov: f32) -> Result<(), String> {
+        self.params.fov_deg = in_range("field of view", fov, 0.0, 360.0)?;
+        Ok(())
+    }
+
+    /// Maximum speed, m/s, in [0.1, 10].
+    pub fn set_max_speed(&mut self, speed: f32) -> Result<(), String> {
+        self.params.max_speed = in_range("max speed", speed, 0.1, 10.0)?;
+        Ok(())
+    }
+
+    /// Maximum steering acceleration, m/s², in [0.1, 50].
+    pub fn set_max_force(&mut self, force: f32) -> Result<(), String> {
+        self.params.max_force = in_range("max force", force, 0.1, 50.0)?;
+        Ok(())
+    }
+
+    /// One of [`LAWS`].
+    pub fn set_law(&mut self, name: &str) -> Result<(), String> {
+        self.params.law = match LAWS.iter().position(|&l| l == name) {
+            Some(0) => ForceLaw::None,
+            Some(1) => ForceLaw::InversePower { a1: 0.4, a2: 0.04 },
+            Some(2) => ForceLaw::Gaussian {
+                a1: 1.0,
+                a2: 3.0,
+                k: 2.0,
+                x0: 0.7,
+            },
+            _ => return Err(format!("force law: no law named {name:?}")),
+        };
+        Ok(())
+    }
+
+    pub fn set_leader(&mut self, on: bool) {
+        self.params.leader = on.then_some(2.0);
+    }
+
+    pub fn set_predator(&mut self, on: bool) {
+        self.params.predator = on.then_some((1.5, 6.0));
+    }
+
+    pub fn set_obstacle(&mut self, on: bool) {
+        self.obstacle = on;
+        self.params.obstacles = if on {
+            vec![Sphere {
+                center: Vec3::new(0.0, 0.0, 0.0),
+                radius: 0.6,
+            }]
+        } else {
+            Vec::new()
+        };
+    }
+
+    /// "grid" or "naive".
+    pub fn set_search(&mut self, name: &str) -> Result<(), String> {
+        self.search = parse_search(name)?;
+        Ok(())
+    }
+
+    /// Brings the flock to `time_sec` by fixed steps of [`SIM_DT`]. A jump in time (the timeline
+    /// looped or was scrubbed: back, or more than [`MAX_CATCH_UP`] steps forward) starts a fresh
+    /// flock, seeded by the time it jumped to, instead of replaying thousands of boids (so a
+    /// scrub shows a new flock and the same time shows the same one); changing a parameter acts
+    /// from now on. Returns the steps taken, so the page can time one step.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let target = steps_to(time_sec)?;
+        if target < self.steps_done || target - self.steps_done > MAX_CATCH_UP {
+            let seed = self.seed.wrapping_add(target as u64);
+            self.flock = Flock::new(self.flock.len(), &self.params, seed)?;
+            self.steps_done = target;
+        }
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            self.flock.step(&self.params, self.search, SIM_DT);
+        }
+        self.steps_done = target;
+        Ok(n)
+    }
+
+    /// Builds the flock the page times: `n ∈ [2, PAGE_MAX_TIMED_BOIDS]` boids at the same
+    /// density as the figure's flock (the box grows with `n`), so the grid's cost stays O(N).
+    pub fn prepare_timing(&mut self, n: f32) -> Result<(), String> {
+        let n = in_range("boids to time", n, 2.0, PAGE_MAX_TIMED_BOIDS as f32)? as usize;
+        let scale = (n as f32 / 300.0).cbrt().max(1.0);
+        let params = BoidParams {
+            bounds: self.params.bounds * scale,
+            ..self.params.clone()
+        };
+        let mut flock = Flock::new(n, &params, 77)?;
+        flock.step(&params, Search::Grid, 1.0 / 60.0); // size the grid once, outside the timing
+        self.bench = Some(flock);
+        Ok(())
+    }
+
+    /// One step of the timing flock with `search` ("grid" or "naive"); the page times the call.
+    pub fn timing_step(&mut self, search: &str) -> Result<(), String> {
+        let search = parse_search(search)?;
+        let flock = self.bench.as_mut().ok_or("call prepareTiming first")?;
+        let scale = (flock.len() as f32 / 300.0).cbrt().max(1.0);
+        let params = BoidParams {
+            bounds: self.params.bounds * scale,
+            ..self.params.clone()
+        };
+        flock.step(&params, search, 1.0 / 60.0);
+        Ok(())
+    }
+
+    /// The highlighted boid: the first that is neither leader nor predator.
+    pub fn highlighted(&self) -> usize {
+        let (l, p) = self.flock.roles(&self.params);
+        (0..self.flock.len())
+            .find(|&i| Some(i) != l && Some(i) != p)
+            .unwrap_or(0)
+    }
+
+    pub fn draw(&mut self, frame: &mut Frame) -> String {
+        let b = self.params.bounds;
+        // The bounding box's edges.
+        for (a, c) in box_edges(-b, b) {
+            frame.line(a, c, palette::GRID);
+        }
+        if self.obstacle {
+            for o in &self.params.obstacles {
+                frame.mesh(
+                    MeshId::SPHERE,
+                    Mat4::from_translation(o.center) * Mat4::from_scale(Vec3::splat(o.radius)),
+                    palette::GREY,
+                );
+            }
+        }
+        let (leader, predator) = self.flock.roles(&self.params);
+        let h = self.highlighted();
+        let f = &self.flock;
+        for i in 0..f.len() {
+            let (p, v) = (f.positions[i], f.velocities[i]);
+            let (color, r) = if Some(i) == leader {
+                (palette::GREEN, 0.09)
+            } else if Some(i) == predator {
+                (palette::RED, 0.11)
+            } else if i == h {
+                (palette::ORANGE, 0.06)
+            } else {
+                (palette::BLUE, 0.035)
+            };
+            frame.point(p, r, color);
+            frame.line(p, p - v.normalize_or_zero() * 0.12, color);
+        }
+        // The highlighted boid's neighbours (within the largest radius, in view).
+        self.neighbours.clear();
+        let radius = self.params.search_radius();
+        let mut found = std::mem::take(&mut self.neighbours);
+        // One boid's neighbours by the naive loop: O(N), and valid before the first step too.
+        self.flock
+            .for_each_neighbour(Search::Naive, h, radius, |j| found.push(j));
+        found.retain(|&j| {
+            self.flock
+                .sees(h, self.flock.positions[j], self.params.fov_deg)
+        });
+        for &j in &found {
+            frame.line(
+                self.flock.positions[h],
+                self.flock.positions[j],
+                palette::ORANGE,
+            );
+        }
+        let count = found.len();
+        self.neighbours = found;
+        // Its steering acceleration now, with the current weights (visible while paused too).
+        let steer = self.flock.steering_of(&self.params, h);
+        let ph = self.flock.positions[h];
+        frame.arrow(ph, ph + 0.25 * steer, palette::PURPLE, 0.08);
+        if let Some(l) = leader {
+            frame.label(
+                self.flock.positions[l] + Vec3::Y * 0.2,
+                "leader",
+                palette::GREEN,
+            );
+        }
+        if let Some(p) = predator {
+            frame.label(
+                self.flock.positions[p] + Vec3::Y * 0.2,
+                "predator",
+                palette::RED,
+            );
+        }
+        format!(
+            "{} boids, {} search; the orange boid sees {count} neighbours within {} m and steers \
+             at {} m/s² (purple arrow, at most {}); speed at most {} m/s.",
+            self.flock.len(),
+            if self.search == Search::Grid {
+                "grid"
+            } else {
+                "naive"
+            },
+            format_number(radius),
+            format_number(steer.length()),
+            format_number(self.params.max_force),
+            format_number(self.params.max_speed),
+        )
+    }
+}
+
+/// The 12 edges of the box `[lo, hi]`.
+fn box_edges(lo: Vec3, hi: Vec3) -> Vec<(Vec3, Vec3)> {
+    let c = |i: u32| {
+        Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        )
+    };
+    let mut edges = Vec::with_capacity(12);
+    for i in 0..8u32 {
+        for bit in [1, 2, 4] {
+            if i & bit == 0 {
+                edges.push((c(i), c(i | bit)));
+            }
+        }
+    }
+    edges
+}
+
+// ---------------------------------------------------------------------------------------------
+// One boid and its neighbours.
+
+/// One boid (orange) at `boid` moving along +x, and fixed neighbours, on the plane y = 0.
+#[derive(Clone, Debug)]
+pub struct RulesFigure {
+    pub boid: Vec3,
+    velocity: Vec3,
+    others: Vec<(Vec3, Vec3)>,
+    radius: f32,
+    fov_deg: f32,
+    cell_size: f32,
+    use_exercise: bool,
+    runner: Runner,
+}
+
+/// The grid of the rules figure: origin and cells per axis.
+const GRID_ORIGIN: Vec3 = Vec3::new(-2.0, -0.5, -2.0);
+const GRID_EXTENT: f32 = 4.0;
+
+impl Default for RulesFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl RulesFigure {
+    pub fn new() -> Self {
+        let others = [
+            (0.6, 0.3, 0.2, 0.5),
+            (0.9, -0.5, 0.6, -0.3),
+            (-0.4, 0.7, 1.0, 0.4),
+            (0.3, -0.25, 0.9, 0.0),
+            (-0.9, -0.4, 0.8, 0.3),
+            (1.6, 0.9, 0.5, 0.6),
+            (-1.5, 0.2, 1.0, -0.2),
+            (0.2, 1.5, 0.7, 0.1),
+        ]
+        .map(|(x, z, vx, vz)| (Vec3::new(x, 0.0, z), Vec3::new(vx, 0.0, vz)))
+        .to_vec();
+        Self {
+            boid: Vec3::ZERO,
+            velocity: Vec3::new(1.0, 0.0, 0.0),
+            others,
+            radius: 1.2,
+            fov_deg: 270.0,
+            cell_size: 1.0,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+        }
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    /// Where the orange boid is, on the plane (x, z in [−1.9, 1.9] metres).
+    pub fn set_position(&mut self, x: f32, z: f32) -> Result<(), String> {
+        self.boid = Vec3::new(
+            in_range("x", x, -1.9, 1.9)?,
+            0.0,
+            in_range("z", z, -1.9, 1.9)?,
+        );
+        Ok(())
+    }
+
+    /// Heading of the orange boid, degrees in [−180, 180] (0: along +x).
+    pub fn set_heading_deg(&mut self, deg: f32) -> Result<(), String> {
+        let a = in_range("heading", deg, -180.0, 180.0)?.to_radians();
+        self.velocity = Vec3::new(a.cos(), 0.0, -a.sin());
+        Ok(())
+    }
+
+    pub fn set_radius(&mut self, r: f32) -> Result<(), String> {
+        self.radius = in_range("radius", r, 0.1, 3.0)?;
+        Ok(())
+    }
+
+    pub fn set_fov_deg(&mut self, fov: f32) -> Result<(), String> {
+        self.fov_deg = in_range("field of view", fov, 0.0, 360.0)?;
+        Ok(())
+    }
+
+    pub fn set_cell_size(&mut self, size: f32) -> Result<(), String> {
+        self.cell_size = in_range("cell size", size, 0.25, 2.0)?;
+        Ok(())
+    }
+
+    fn dims(&self) -> [u32; 3] {
+        let n = (GRID_EXTENT / self.cell_size).ceil() as u32;
+        [n, 1, n]
+    }
+
+    /// The neighbours the boid takes into account: within the radius and the field of view.
+    pub fn neighbours(&self) -> (Vec<Vec3>, Vec<Vec3>) {
+        let half = (0.5 * self.fov_deg).to_radians().cos();
+        self.others
+            .iter()
+            .filter(|(q, _)| {
+                let d = *q - self.boid;
+                let l = d.length();
+                l <= self.radius
+                    && (self.fov_deg >= 360.0 || l == 0.0 || d.dot(self.velocity) >= half * l)
+            })
+            .copied()
+            .unzip()
+    }
+
+    /// The three vectors drawn: the student's (exercise 12.1) when asked and usable.
+    pub fn rules(&self) -> [Vec3; 3] {
+        let (ps, vs) = self.neighbours();
+        self.use_exercise
+            .then(|| {
+                run::three_rules(
+                    self.runner,
+                    self.boid,
+                    self.velocity,
+                    ps.clone(),
+                    vs.clone(),
+                )
+                .ok()
+            })
+            .flatten()
+            .filter(|r| r.len() == 3 && r.iter().all(|v| v.is_finite()))
+            .map(|r| [r[0], r[1], r[2]])
+            .unwrap_or_else(|| three_rules(self.boid, self.velocity, &ps, &vs))
+    }
+
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        let dims = self.dims();
+        let s = self.cell_size;
+        // Grid lines on y = 0 (the grid's cells seen from above).
+        for k in 0..=dims[0] {
+            let x = GRID_ORIGIN.x + k as f32 * s;
+            frame.line(
+                Vec3::new(x, 0.0, GRID_ORIGIN.z),
+                Vec3::new(x, 0.0, GRID_ORIGIN.z + dims[2] as f32 * s),
+                palette::GRID,
+            );
+        }
+        for k in 0..=dims[2] {
+            let z = GRID_ORIGIN.z + k as f32 * s;
+            frame.line(
+                Vec3::new(GRID_ORIGIN.x, 0.0, z),
+                Vec3::new(GRID_ORIGIN.x + dims[0] as f32 * s, 0.0, z),
+                palette::GRID,
+            );
+        }
+        // The boid's cell and the 3 × 3 block searched around it.
+        let c = cell_index(self.boid, GRID_ORIGIN, s, dims);
+        let (ci, ck) = (
+            (c % dims[0] as usize) as i32,
+            (c / (dims[0] * dims[1]) as usize) as i32,
+        );
+        for dk in -1..=1 {
+            for di in -1..=1 {
+                let (i, k) = (ci + di, ck + dk);
+                if i < 0 || k < 0 || i >= dims[0] as i32 || k >= dims[2] as i32 {
+                    continue;
+                }
+                let lo = GRID_ORIGIN + Vec3::new(i as f32 * s, 0.0, k as f32 * s);
+                let color = if di == 0 && dk == 0 {
+                    palette::ORANGE
+                } else {
+                    palette::TEAL
+                };
+                let inset = 0.03 * s;
+                let corners = [
+                    lo + Vec3::new(inset, 0.002, inset),
+                    lo + Vec3::new(s - inset, 0.002, inset),
+                    lo + Vec3::new(s - inset, 0.002, s - inset),
+                    lo + Vec3::new(inset, 0.002, s - inset),
+                    lo + Vec3::new(inset, 0.002, inset),
+                ];
+                frame.polyline(&corners, color);
+            }
+        }
+        // Radius circle and field-of-view edges.
+        let circle: Vec<Vec3> = (0..=64)
+            .map(|k| {
+                let a = k as f32 / 64.0 * std::f32::consts::TAU;
+                self.boid + self.radius * Vec3::new(a.cos(), 0.0, a.sin())
+            })
+            .collect();
+        frame.polyline(&circle, palette::PURPLE);
+        if self.fov_deg < 360.0 {
+            let heading = self.velocity.normalize();
+            for sign in [-1.0f32, 1.0] {
+                let a = sign * 0.5 * self.fov_deg.to_radians();
+                let dir = glam::Quat::from_rotation_y(a) * heading;
+                frame.line(self.boid, self.boid + dir * self.radius, palette::PURPLE);
+            }
+        }
+        let (ps, _) = self.neighbours();
+        for (q, v) in &self.others {
+            let seen = ps.iter().any(|p| p == q);
+            let color = if seen { palette::BLUE } else { palette::GREY };
+            frame.point(*q, 0.07, color);
+            frame.arrow(*q, *q + 0.35 * *v, color, 0.08);
+        }
+        frame.point(self.boid, 0.09, palette::ORANGE);
+        frame.arrow(
+            self.boid,
+            self.boid + 0.5 * self.velocity,
+            palette::ORANGE,
+            0.1,
+        );
+        let [co, al, se] = self.rules();
+        for (v, color, name) in [
+            (co, palette::GREEN, "cohesion"),
+            (al, palette::PINK, "alignment"),
+            (se, palette::RED, "separation"),
+        ] {
+            let tip = self.boid + v.clamp_length_max(2.0) + Vec3::Y * 0.01;
+            frame.arrow(self.boid + Vec3::Y * 0.01, tip, color, 0.12);
+            if v.length() > 1e-4 {
+                frame.label(tip, name, color);
+            }
+        }
+        let mut note = format!(
+            "{} neighbours in view within {} m; the orange boid is in cell {c} (of {} × {}).",
+            ps.len(),
+            format_number(self.radius),
+            dims[0],
+            dims[2]
+        );
+        if self.use_exercise {
+            note.push(' ');
+            note.push_str(&self.exercise_note());
+        }
+        note
+    }
+
+    /// Compares the student's three rules and cell index with the reference at this boid.
+    pub fn exercise_note(&self) -> String {
+        let (ps, vs) = self.neighbours();
+        let rules = match run::three_rules(
+            self.runner,
+            self.boid,
+            self.velocity,
+            ps.clone(),
+            vs.clone(),
+        ) {
+            Err(f) => failure_note("exercise 12.1 three_rules", FILE, &f),
+            Ok(yours) => {
+                let reference = three_rules(self.boid, self.velocity, &ps, &vs);
+                let flat = |v: &[Vec3]| v.iter().flat_map(|x| x.to_array()).collect::<Vec<f32>>();
+                compare_note(
+                    "three_rules",
+                    "this boid",
+                    &flat(&yours),
+                    &flat(&reference),
+                    TOLERANCE,
+                )
+                .1
+            }
+        };
+        let dims = self.dims();
+        let dims_f = dims.map(|d| d as f32);
+        let cell =
+            match run::cell_index(self.runner, self.boid, GRID_ORIGIN, self.cell_size, dims_f) {
+                Err(f) => failure_note("exercise 12.2 cell_index", FILE, &f),
+                Ok(yours) => {
+                    let reference = cell_index(self.boid, GRID_ORIGIN, self.cell_size, dims);
+                    compare_note(
+                        "cell_index",
+                        "this boid",
+                        &[yours as f32],
+                        &[reference as f32],
+                        0.0,
+                    )
+                    .1
+                }
+            };
+        format!("{rules} {cell}")
+    }
+}

@@ -1,0 +1,850 @@
+//! Figure logic for lesson 11, "Particles" (see [`crate::figures`]).
+//!
+//! - [`EmitterFigure`]: a fountain and an explosion, particles drawn as camera-facing sprites
+//!   that fade with age, bouncing on the floor and on a sphere; sprites sorted back to front or
+//!   not, to show why transparent sprites are sorted.
+//! - [`FreeFallFigure`]: one throw, the exact parabola next to explicit Euler, semi-implicit Euler
+//!   and velocity Verlet at a chosen step; the error of each over time (the plot's samples); the
+//!   student's semi-implicit step (exercise 11.2).
+//! - [`BounceFigure`]: balls dropped on a sphere and the floor with restitution and friction; the
+//!   predicted time and place of the next floor impact (exercise 11.1).
+//! - [`SquashFigure`]: the same bounce without and with squash and stretch, side by side.
+
+use super::{
+    compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner,
+    DEFAULT_RUNNER,
+};
+use crate::draw::PointInstance;
+use crate::exercises::run;
+use crate::particles::{
+    floor_time_of_impact, free_fall, free_fall_errors, Emitter, FreeFallError, Integrator,
+    ParticleSystem, Sphere, SquashBall, Surfaces, VelocityDist,
+};
+use glam::{Mat4, Vec3, Vec4};
+
+const FILE: &str = "src/exercises/particles.rs";
+const TOLERANCE: f32 = 1e-4;
+/// Fixed step of the animated figures, seconds. A figure's state at timeline time `t` is the
+/// state after `⌊t / SIM_DT⌋` steps from its start, so a paused figure stands still, a scrub
+/// replays, and changing a parameter replays from the start with the new value.
+pub const SIM_DT: f32 = 1.0 / 60.0;
+/// The latest time a figure simulates to (bounds the work of one replay), seconds.
+pub const MAX_SIM_TIME: f32 = 60.0;
+
+/// The number of fixed steps that reach `time_sec ∈ [0, MAX_SIM_TIME]`.
+pub fn steps_to(time_sec: f32) -> Result<usize, String> {
+    let t = in_range("time", time_sec, 0.0, MAX_SIM_TIME)?;
+    Ok((t / SIM_DT + 1e-3).floor() as usize)
+}
+
+/// The most particles the emitter figure holds (software rendering in the tests draws them all).
+pub const PAGE_MAX_PARTICLES: usize = 2000;
+
+// ---------------------------------------------------------------------------------------------
+// Emitters and sprites.
+
+/// What the emitter figure's dropdown offers.
+pub const EMITTER_MODES: [&str; 3] = ["fountain", "explosion", "both"];
+
+/// A fountain and an explosion over a floor and a sphere.
+#[derive(Clone, Debug)]
+pub struct EmitterFigure {
+    system: ParticleSystem,
+    emitters: [Emitter; 2],
+    surfaces: Surfaces,
+    mode: usize,
+    sort: bool,
+    fade: bool,
+    burst_count: usize,
+    /// Steps at which the reader pressed "explode" (replayed with the rest).
+    bursts: Vec<usize>,
+    steps_done: usize,
+    dirty: bool,
+    order: Vec<(f32, u32)>,
+}
+
+/// Steps between two automatic explosions (2.5 s).
+const BURST_EVERY: usize = 150;
+/// The most "explode now" presses a figure remembers.
+const MAX_BURSTS: usize = 16;
+
+impl Default for EmitterFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl EmitterFigure {
+    pub fn new() -> Self {
+        let surfaces = Surfaces {
+            spheres: vec![Sphere {
+                center: Vec3::new(0.9, 0.5, 0.0),
+                radius: 0.5,
+            }],
+            ..Default::default()
+        };
+        let mut fountain = Emitter::fountain(Vec3::new(-0.6, 0.05, 0.0));
+        fountain.velocity = VelocityDist::Cone {
+            axis: Vec3::new(0.25, 1.0, 0.0).normalize(),
+            half_angle_rad: 0.2,
+            speed_min: 5.0,
+            speed_max: 5.8,
+        };
+        Self {
+            system: ParticleSystem::new(PAGE_MAX_PARTICLES, 11).expect("under the cap"),
+            emitters: [fountain, Emitter::explosion(Vec3::new(-0.3, 2.2, 0.0))],
+            surfaces,
+            mode: 0,
+            sort: true,
+            fade: true,
+            burst_count: 400, // twice the fountain's rate
+            bursts: Vec::with_capacity(MAX_BURSTS),
+            steps_done: 0,
+            dirty: false,
+            order: Vec::with_capacity(PAGE_MAX_PARTICLES),
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.system.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.system.is_empty()
+    }
+
+    /// "fountain", "explosion" or "both".
+    pub fn set_mode(&mut self, name: &str) -> Result<(), String> {
+        self.mode = EMITTER_MODES
+            .iter()
+            .position(|&m| m == name)
+            .ok_or_else(|| format!("emitter: no mode named {name:?}"))?;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Fountain rate, particles per second, and particles per explosion, in [0, 1000].
+    pub fn set_rate(&mut self, rate: f32) -> Result<(), String> {
+        self.emitters[0].rate_per_sec = in_range("rate", rate, 0.0, 1000.0)?;
+        self.burst_count = 2 * rate as usize;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Lifetime of new particles, seconds, in [0.1, 10] (a ±20 % spread around it).
+    pub fn set_lifetime(&mut self, lifetime_sec: f32) -> Result<(), String> {
+        let l = in_range("lifetime", lifetime_sec, 0.1, 10.0)?;
+        for e in &mut self.emitters {
+            e.lifetime_sec = (0.8 * l, 1.2 * l);
+        }
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Half-angle of the fountain's cone, degrees in [0, 90].
+    pub fn set_spread_deg(&mut self, spread_deg: f32) -> Result<(), String> {
+        let s = in_range("spread", spread_deg, 0.0, 90.0)?.to_radians();
+        if let VelocityDist::Cone { half_angle_rad, .. } = &mut self.emitters[0].velocity {
+            *half_angle_rad = s;
+        }
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Restitution in [0, 1].
+    pub fn set_restitution(&mut self, e: f32) -> Result<(), String> {
+        self.surfaces.restitution = in_range("restitution", e, 0.0, 1.0)?;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Gravity's magnitude, m/s², in [0, 30].
+    pub fn set_gravity(&mut self, g: f32) -> Result<(), String> {
+        self.surfaces.gravity = Vec3::new(0.0, -in_range("gravity", g, 0.0, 30.0)?, 0.0);
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Draw sprites back to front (correct blending) or in storage order.
+    pub fn set_sort(&mut self, on: bool) {
+        self.sort = on;
+    }
+
+    /// Fade sprites out with age (alpha) or keep them opaque.
+    pub fn set_fade(&mut self, on: bool) {
+        self.fade = on;
+    }
+
+    /// Sets off the explosion now (and at this moment in every replay).
+    pub fn explode(&mut self) {
+        // Recorded even when the system is full, so the note can say so.
+        if self.bursts.len() < MAX_BURSTS && !self.bursts.contains(&self.steps_done) {
+            self.bursts.push(self.steps_done);
+            self.system.burst(&self.emitters, 1, self.burst_count);
+        }
+    }
+
+    fn reset(&mut self) {
+        self.system.reset(11);
+        for e in &mut self.emitters {
+            e.carry = 0.0;
+        }
+        self.steps_done = 0;
+        self.dirty = false;
+    }
+
+    fn step(&mut self) {
+        let k = self.steps_done;
+        if (self.mode >= 1 && k.is_multiple_of(BURST_EVERY)) || self.bursts.contains(&k) {
+            self.system.burst(&self.emitters, 1, self.burst_count);
+        }
+        let rate = self.emitters[0].rate_per_sec;
+        if self.mode == 1 {
+            self.emitters[0].rate_per_sec = 0.0;
+        }
+        self.system.step(&mut self.emitters, &self.surfaces, SIM_DT);
+        self.emitters[0].rate_per_sec = rate;
+        self.steps_done += 1;
+    }
+
+    /// Brings the simulation to `time_sec` (replaying from the start when the time went back or a
+    /// parameter changed). Returns the steps taken.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let target = steps_to(time_sec)?;
+        if self.dirty || target < self.steps_done {
+            self.reset();
+        }
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            self.step();
+        }
+        Ok(n)
+    }
+
+    /// Simulates to `time_sec` and fills `frame`; `eye` is the camera position (for sorting).
+    /// Returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, eye: Vec3, time_sec: f32) -> Result<String, String> {
+        self.advance_to(time_sec)?;
+        frame.grid(8, 0.5);
+        for s in &self.surfaces.spheres {
+            let model =
+                Mat4::from_translation(s.center) * Mat4::from_scale(Vec3::splat(s.radius * 0.98));
+            frame.mesh(MeshId::SPHERE, model, palette::GREY);
+        }
+        let sys = &self.system;
+        let n = sys.len();
+        self.order.clear();
+        for i in 0..n {
+            self.order
+                .push(((sys.positions[i] - eye).length_squared(), i as u32));
+        }
+        if self.sort {
+            // Farthest first: each sprite blends over what is already behind it.
+            self.order.sort_unstable_by(|a, b| b.0.total_cmp(&a.0));
+        }
+        for &(_, i) in &self.order {
+            let i = i as usize;
+            let mut color = sys.colors[i];
+            if !self.fade {
+                color.w = 1.0;
+            }
+            frame.points.push(PointInstance {
+                center: sys.positions[i].to_array(),
+                radius: sys.sizes[i],
+                color: color.to_array(),
+            });
+        }
+        let e = self.surfaces.restitution;
+        Ok(format!(
+            "{n} particles alive (at most {PAGE_MAX_PARTICLES} here, {} in the core); sprites {}. \
+             With e = {}, a particle that hits the floor at 5 m/s leaves it at {} m/s.{}",
+            crate::particles::MAX_PARTICLES,
+            if self.sort {
+                "sorted back to front"
+            } else {
+                "in storage order (unsorted)"
+            },
+            format_number(e),
+            format_number(5.0 * e),
+            match (self.bursts.len(), n == self.system.capacity()) {
+                (0, false) => String::new(),
+                (b, full) => format!(
+                    " Explosions set off by hand: {b}{}.",
+                    if full {
+                        " (the system is full: new particles wait for free slots)"
+                    } else {
+                        ""
+                    }
+                ),
+            },
+        ))
+    }
+
+    /// Linear RGBA of the live particles, for tests.
+    pub fn colors(&self) -> &[Vec4] {
+        &self.system.colors[..self.system.len()]
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Free fall: exact vs integrated.
+
+/// Colours of the integrators, in [`Integrator::ALL`] order, and of the exact solution.
+pub const INTEGRATOR_COLORS: [Vec3; 3] = [palette::RED, palette::BLUE, palette::GREEN];
+pub const EXACT_COLOR: Vec3 = palette::DARK;
+
+/// One throw integrated three ways, against the exact parabola.
+#[derive(Clone, Debug)]
+pub struct FreeFallFigure {
+    pub p0: Vec3,
+    pub v0: Vec3,
+    pub g: Vec3,
+    dt_sec: f32,
+    use_exercise: bool,
+    runner: Runner,
+    /// Each integrator's positions after 0, 1, 2, … steps.
+    paths: [Vec<Vec3>; 3],
+}
+
+/// How long the throw is shown, seconds.
+pub const FREE_FALL_DURATION: f32 = 1.3;
+
+impl Default for FreeFallFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl FreeFallFigure {
+    pub fn new() -> Self {
+        let mut f = Self {
+            p0: Vec3::new(-2.0, 0.5, 0.0),
+            v0: Vec3::new(3.0, 6.0, 0.0),
+            g: Vec3::new(0.0, -9.81, 0.0),
+            dt_sec: 0.1,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            paths: Default::default(),
+        };
+        f.integrate();
+        f
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.integrate();
+    }
+
+    /// Runs the student's exercise 11.2 for the semi-implicit Euler path.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.integrate();
+    }
+
+    /// Step size, seconds, in [0.005, 0.3].
+    pub fn set_dt(&mut self, dt_sec: f32) -> Result<(), String> {
+        self.dt_sec = in_range("step size dt", dt_sec, 0.005, 0.3)?;
+        self.integrate();
+        Ok(())
+    }
+
+    pub fn dt(&self) -> f32 {
+        self.dt_sec
+    }
+
+    fn steps(&self) -> usize {
+        (FREE_FALL_DURATION / self.dt_sec).ceil() as usize
+    }
+
+    fn integrate(&mut self) {
+        let steps = self.steps();
+        for (k, integrator) in Integrator::ALL.iter().enumerate() {
+            let path = &mut self.paths[k];
+            path.clear();
+            let (mut p, mut v) = (self.p0, self.v0);
+            path.push(p);
+            for _ in 0..steps {
+                let student = (self.use_exercise && *integrator == Integrator::SemiImplicitEuler)
+                    .then(|| {
+                        run::semi_implicit_euler_step(self.runner, p, v, self.g, self.dt_sec).ok()
+                    })
+                    .flatten()
+                    .filter(|(p, v)| p.is_finite() && v.is_finite());
+                match student {
+                    Some((q, w)) => (p, v) = (q, w),
+                    None => integrator.step(&mut p, &mut v, self.dt_sec, |_| self.g),
+                }
+                path.push(p);
+            }
+        }
+    }
+
+    /// Plot samples, flat: `[t, error explicit Euler, error semi-implicit, error Verlet]` (metres)
+    /// after each step, from the paths the figure draws.
+    pub fn error_samples(&self) -> Vec<f32> {
+        let mut out = Vec::with_capacity(4 * (self.steps() + 1));
+        for k in 0..=self.steps() {
+            let t = k as f32 * self.dt_sec;
+            let (exact, _) = free_fall(self.p0, self.v0, self.g, t);
+            out.push(t);
+            for path in &self.paths {
+                out.push((path[k] - exact).length());
+            }
+        }
+        out
+    }
+
+    /// The errors at the end of the throw computed by [`free_fall_errors`] (for tests).
+    pub fn final_errors(&self) -> FreeFallError {
+        let mut out = vec![
+            FreeFallError {
+                time_sec: 0.0,
+                error_m: [0.0; 3]
+            };
+            self.steps()
+        ];
+        free_fall_errors(self.p0, self.v0, self.g, self.dt_sec, &mut out);
+        out[out.len() - 1]
+    }
+
+    /// Draws the throw at `time_sec` and returns the note.
+    pub fn draw(&self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let t = in_range("time", time_sec, 0.0, 1e6)?.min(FREE_FALL_DURATION);
+        frame.grid(8, 0.5);
+        let exact: Vec<Vec3> = (0..=60)
+            .map(|k| {
+                free_fall(
+                    self.p0,
+                    self.v0,
+                    self.g,
+                    FREE_FALL_DURATION * k as f32 / 60.0,
+                )
+                .0
+            })
+            .collect();
+        frame.polyline(&exact, EXACT_COLOR);
+        frame.point(free_fall(self.p0, self.v0, self.g, t).0, 0.07, EXACT_COLOR);
+        let k_now = ((t / self.dt_sec).floor() as usize).min(self.steps());
+        for (path, &color) in self.paths.iter().zip(&INTEGRATOR_COLORS) {
+            frame.polyline(&path[..=k_now], color);
+            for p in &path[..=k_now] {
+                frame.point(*p, 0.025, color);
+            }
+            frame.point(path[k_now], 0.06, color);
+        }
+        let [e0, e1, e2] = {
+            let (exact, _) = free_fall(self.p0, self.v0, self.g, k_now as f32 * self.dt_sec);
+            [0, 1, 2].map(|i| (self.paths[i][k_now] - exact).length())
+        };
+        let mut note = format!(
+            "After {k_now} steps of dt = {} s (t = {} s): error explicit Euler {} m, semi-implicit \
+             Euler {} m, velocity Verlet {} m.",
+            format_number(self.dt_sec),
+            format_number(k_now as f32 * self.dt_sec),
+            format_number(e0),
+            format_number(e1),
+            format_number(e2),
+        );
+        if self.use_exercise {
+            note.push(' ');
+            note.push_str(&self.exercise_note());
+        }
+        Ok(note)
+    }
+
+    /// Compares the student's first semi-implicit step with the reference.
+    pub fn exercise_note(&self) -> String {
+        match run::semi_implicit_euler_step(self.runner, self.p0, self.v0, self.g, self.dt_sec) {
+            Err(f) => failure_note("exercise 11.2 semi_implicit_euler_step", FILE, &f),
+            Ok((p, v)) => {
+                let (mut rp, mut rv) = (self.p0, self.v0);
+                crate::particles::semi_implicit_euler_step(&mut rp, &mut rv, self.g, self.dt_sec);
+                let yours = [p.to_array(), v.to_array()].concat();
+                let reference = [rp.to_array(), rv.to_array()].concat();
+                let at = format!(
+                    "the first step (dt = {} s), as (p′, v′)",
+                    format_number(self.dt_sec)
+                );
+                compare_note(
+                    "semi_implicit_euler_step",
+                    &at,
+                    &yours,
+                    &reference,
+                    TOLERANCE,
+                )
+                .1
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bouncing balls.
+
+/// Radius of the bouncing balls, metres.
+const BALL_RADIUS: f32 = 0.08;
+/// How many balls the bounce figure drops.
+pub const BOUNCE_BALLS: usize = 7;
+
+/// Balls dropped onto a sphere and the floor.
+#[derive(Clone, Debug)]
+pub struct BounceFigure {
+    sphere: Sphere,
+    restitution: f32,
+    friction: f32,
+    positions: Vec<Vec3>,
+    velocities: Vec<Vec3>,
+    resting: Vec<bool>,
+    steps_done: usize,
+    dirty: bool,
+    use_exercise: bool,
+    runner: Runner,
+}
+
+impl Default for BounceFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl BounceFigure {
+    pub fn new() -> Self {
+        let mut f = Self {
+            sphere: Sphere {
+                center: Vec3::new(0.0, 0.6, 0.0),
+                radius: 0.6,
+            },
+            restitution: 0.75,
+            friction: 0.1,
+            positions: Vec::new(),
+            velocities: Vec::new(),
+            resting: Vec::new(),
+            steps_done: 0,
+            dirty: false,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+        };
+        f.drop_balls();
+        f
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// Uses the student's exercise 11.1 for the predicted impact.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    pub fn set_restitution(&mut self, e: f32) -> Result<(), String> {
+        self.restitution = in_range("restitution", e, 0.0, 1.0)?;
+        self.dirty = true;
+        Ok(())
+    }
+
+    pub fn set_friction(&mut self, mu: f32) -> Result<(), String> {
+        self.friction = in_range("friction", mu, 0.0, 2.0)?;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Drops every ball again from its starting height.
+    pub fn drop_balls(&mut self) {
+        self.positions = (0..BOUNCE_BALLS)
+            .map(|i| {
+                Vec3::new(
+                    -0.75 + 0.25 * i as f32,
+                    2.2 + 0.15 * i as f32,
+                    0.05 * i as f32 - 0.15,
+                )
+            })
+            .collect();
+        self.velocities = vec![Vec3::ZERO; BOUNCE_BALLS];
+        self.resting = vec![false; BOUNCE_BALLS];
+        self.steps_done = 0;
+        self.dirty = false;
+    }
+
+    /// The surfaces the balls' centres bounce on: the floor and the sphere, grown by the ball's
+    /// radius (a ball touches them when its centre is one radius away).
+    fn surfaces(&self) -> Surfaces {
+        Surfaces {
+            floor_y: Some(BALL_RADIUS),
+            spheres: vec![Sphere {
+                center: self.sphere.center,
+                radius: self.sphere.radius + BALL_RADIUS,
+            }],
+            restitution: self.restitution,
+            friction: self.friction,
+            ..Default::default()
+        }
+    }
+
+    pub fn positions(&self) -> &[Vec3] {
+        &self.positions
+    }
+
+    /// Brings the balls to `time_sec` after their drop (replaying when the time went back or a
+    /// parameter changed). Returns the steps taken.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let target = steps_to(time_sec)?;
+        if self.dirty || target < self.steps_done {
+            self.drop_balls();
+        }
+        let s = self.surfaces();
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            for i in 0..self.positions.len() {
+                crate::particles::ballistic_step(
+                    &mut self.positions[i],
+                    &mut self.velocities[i],
+                    &mut self.resting[i],
+                    SIM_DT,
+                    &s,
+                );
+            }
+        }
+        self.steps_done = target;
+        Ok(n)
+    }
+
+    /// The time until ball 0's centre reaches the floor height (ignoring the sphere), the
+    /// student's (exercise 11.1) when asked and usable.
+    fn impact_time(&self) -> Option<f32> {
+        let (p, v) = (self.positions[0], self.velocities[0]);
+        if self.resting[0] || p.y <= BALL_RADIUS {
+            return None;
+        }
+        let g = self.surfaces().gravity.y;
+        let student = self
+            .use_exercise
+            .then(|| run::time_of_impact(self.runner, p.y, v.y, g, BALL_RADIUS).ok())
+            .flatten()
+            .filter(|t| t.is_finite() && *t >= 0.0 && *t < 100.0);
+        student.or_else(|| floor_time_of_impact(p.y, v.y, g, BALL_RADIUS, f32::INFINITY))
+    }
+
+    /// Simulates to `time_sec`, draws, and returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        self.advance_to(time_sec)?;
+        frame.grid(8, 0.5);
+        let model = Mat4::from_translation(self.sphere.center)
+            * Mat4::from_scale(Vec3::splat(self.sphere.radius));
+        frame.mesh(MeshId::SPHERE, model, palette::GREY);
+        for (i, p) in self.positions.iter().enumerate() {
+            let color = if i == 0 {
+                palette::ORANGE
+            } else {
+                palette::BLUE
+            };
+            frame.mesh(
+                MeshId::SPHERE,
+                Mat4::from_translation(*p) * Mat4::from_scale(Vec3::splat(BALL_RADIUS)),
+                color,
+            );
+        }
+        let mut note = String::new();
+        if let Some(t) = self.impact_time() {
+            let (hit, _) = free_fall(
+                self.positions[0],
+                self.velocities[0],
+                self.surfaces().gravity,
+                t,
+            );
+            let mark = Vec3::new(hit.x, 0.002, hit.z);
+            frame.point(mark, 0.05, palette::ORANGE);
+            frame.line(self.positions[0], mark, palette::ORANGE);
+            frame.label(
+                mark + Vec3::new(0.0, 0.15, 0.0),
+                format!("floor in {} s", format_number(t)),
+                palette::ORANGE,
+            );
+            note = format!(
+                "The orange ball reaches the floor in t = {} s if the sphere is not in its way.",
+                format_number(t)
+            );
+        } else {
+            note.push_str("The orange ball is on the floor.");
+        }
+        note.push_str(&format!(
+            " Each bounce keeps e = {} of the normal speed; friction μ = {} takes μ(1 + e) times \
+             the normal speed off the sliding speed.",
+            format_number(self.restitution),
+            format_number(self.friction)
+        ));
+        if self.use_exercise {
+            note.push(' ');
+            note.push_str(&self.exercise_note());
+        }
+        Ok(note)
+    }
+
+    /// Compares the student's time of impact with the reference for ball 0 (or a fixed drop when
+    /// it rests).
+    pub fn exercise_note(&self) -> String {
+        let (mut y, mut vy) = (self.positions[0].y, self.velocities[0].y);
+        if self.resting[0] || y <= BALL_RADIUS {
+            (y, vy) = (2.0, 0.0);
+        }
+        let g = self.surfaces().gravity.y;
+        match run::time_of_impact(self.runner, y, vy, g, BALL_RADIUS) {
+            Err(f) => failure_note("exercise 11.1 time_of_impact", FILE, &f),
+            Ok(t) => {
+                let reference =
+                    crate::exercises::particles::reference_time_of_impact(y, vy, g, BALL_RADIUS);
+                let at = format!(
+                    "y0 = {} m, vy = {} m/s",
+                    format_number(y),
+                    format_number(vy)
+                );
+                compare_note(
+                    "time_of_impact",
+                    &at,
+                    &[t],
+                    &[reference],
+                    TOLERANCE * (1.0 + reference),
+                )
+                .1
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Squash and stretch.
+
+/// The same bounce twice: a rigid ball and one that squashes and stretches.
+#[derive(Clone, Debug)]
+pub struct SquashFigure {
+    plain: SquashBall,
+    squash: SquashBall,
+    surfaces: Surfaces,
+    steps_done: usize,
+}
+
+impl Default for SquashFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SquashFigure {
+    pub fn new() -> Self {
+        let surfaces = Surfaces {
+            restitution: 0.8,
+            friction: 0.0,
+            ..Default::default()
+        };
+        Self {
+            plain: SquashBall::new(0.25, 2.0, 0.6),
+            squash: SquashBall::new(0.25, 2.0, 0.6),
+            surfaces,
+            steps_done: 0,
+        }
+    }
+
+    /// Stretch per m/s of speed, in [0, 0.3].
+    pub fn set_stretch(&mut self, k: f32) -> Result<(), String> {
+        self.squash.stretch_per_speed = in_range("stretch", k, 0.0, 0.3)?;
+        self.restart();
+        Ok(())
+    }
+
+    /// Deepest squash on impact, in [0, 0.8].
+    pub fn set_squash(&mut self, squash: f32) -> Result<(), String> {
+        self.squash.squash = in_range("squash", squash, 0.0, 0.8)?;
+        self.restart();
+        Ok(())
+    }
+
+    /// Seconds a squash lasts, in [0.02, 0.3].
+    pub fn set_contact(&mut self, sec: f32) -> Result<(), String> {
+        self.squash.contact_sec = in_range("contact time", sec, 0.02, 0.3)?;
+        self.restart();
+        Ok(())
+    }
+
+    /// Back to the start of the drop, keeping the parameters.
+    fn restart(&mut self) {
+        let fresh = Self::new();
+        self.plain = fresh.plain;
+        let (k, s, c) = (
+            self.squash.stretch_per_speed,
+            self.squash.squash,
+            self.squash.contact_sec,
+        );
+        self.squash = fresh.squash;
+        (
+            self.squash.stretch_per_speed,
+            self.squash.squash,
+            self.squash.contact_sec,
+        ) = (k, s, c);
+        self.steps_done = 0;
+    }
+
+    /// Brings both balls to `time_sec` after the drop. Returns the steps taken.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let target = steps_to(time_sec)?;
+        if target < self.steps_done {
+            self.restart();
+        }
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            self.plain.step(&self.surfaces, SIM_DT);
+            self.squash.step(&self.surfaces, SIM_DT);
+        }
+        self.steps_done = target;
+        Ok(n)
+    }
+
+    /// The squashing ball's `(axis, s)` now.
+    pub fn stretch(&self) -> (Vec3, f32) {
+        self.squash.stretch()
+    }
+
+    /// Simulates to `time_sec`, draws, and returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        self.advance_to(time_sec)?;
+        frame.grid(8, 0.5);
+        let offset = |x: f32| Vec3::new(-1.2, 0.0, x);
+        // The rigid ball, behind.
+        let p = self.plain.position + offset(-0.5);
+        frame.mesh(
+            MeshId::SPHERE,
+            Mat4::from_translation(p) * Mat4::from_scale(Vec3::splat(self.plain.radius)),
+            palette::GREY,
+        );
+        // The squashing ball: keep its lowest point on the floor while squashed.
+        let (axis, s) = self.squash.stretch();
+        let mut c = self.squash.position + offset(0.5);
+        if axis == Vec3::Y && s < 1.0 {
+            c.y = self.squash.radius * s;
+        }
+        let m = Mat4::from_translation(c) * Mat4::from_mat3(self.squash.shape_matrix());
+        frame.mesh(MeshId::SPHERE, m, palette::ORANGE);
+        frame.label(p + Vec3::new(0.0, 0.45, 0.0), "rigid", palette::DARK);
+        frame.label(
+            c + Vec3::new(0.0, 0.45, 0.0),
+            "squash and stretch",
+            palette::ORANGE,
+        );
+        let what = if s < 1.0 { "squashed" } else { "stretched" };
+        Ok(format!(
+            "Orange ball: {what} by s = {} along {}; its volume stays {} of the round ball's.",
+            format_number(s),
+            if axis == Vec3::Y && s < 1.0 {
+                "the floor's normal".to_string()
+            } else {
+                "its velocity".to_string()
+            },
+            format_number(self.squash.shape_matrix().determinant() / self.squash.radius.powi(3)),
+        ) + &format!(
+            " It stretches by k = {} per m/s in flight and squashes down to s = {} for {} s \
+             after each impact.",
+            format_number(self.squash.stretch_per_speed),
+            format_number(1.0 - self.squash.squash),
+            format_number(self.squash.contact_sec),
+        ))
+    }
+}

@@ -1,0 +1,143 @@
+//! Bindings for lesson 12, "Boids": thin wrappers around [`crate::figures::boids`].
+
+use super::{js, Viewer};
+use crate::figures::boids::{FlockFigure, RulesFigure};
+use wasm_bindgen::prelude::*;
+
+/// The flock.
+#[wasm_bindgen]
+pub struct FlockScene {
+    scene: FlockFigure,
+}
+
+#[wasm_bindgen]
+impl FlockScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> FlockScene {
+        FlockScene {
+            scene: FlockFigure::new(),
+        }
+    }
+    /// A new flock of `count` boids, in [2, 3000].
+    #[wasm_bindgen(js_name = setCount)]
+    pub fn set_count(&mut self, count: f32) -> Result<(), JsError> {
+        self.scene.set_count(count).map_err(js)
+    }
+    /// `rule`: "cohesion", "alignment" or "separation"; weight in [0, 10], radius in [0.05, 3] m.
+    #[wasm_bindgen(js_name = setRule)]
+    pub fn set_rule(&mut self, rule: &str, weight: f32, radius: f32) -> Result<(), JsError> {
+        self.scene.set_rule(rule, weight, radius).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setFovDeg)]
+    pub fn set_fov_deg(&mut self, fov: f32) -> Result<(), JsError> {
+        self.scene.set_fov_deg(fov).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setMaxSpeed)]
+    pub fn set_max_speed(&mut self, v: f32) -> Result<(), JsError> {
+        self.scene.set_max_speed(v).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setMaxForce)]
+    pub fn set_max_force(&mut self, f: f32) -> Result<(), JsError> {
+        self.scene.set_max_force(f).map_err(js)
+    }
+    /// "none", "a1/x² − a2/x⁴" or "Gaussian".
+    #[wasm_bindgen(js_name = setLaw)]
+    pub fn set_law(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_law(name).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setLeader)]
+    pub fn set_leader(&mut self, on: bool) {
+        self.scene.set_leader(on);
+    }
+    #[wasm_bindgen(js_name = setPredator)]
+    pub fn set_predator(&mut self, on: bool) {
+        self.scene.set_predator(on);
+    }
+    #[wasm_bindgen(js_name = setObstacle)]
+    pub fn set_obstacle(&mut self, on: bool) {
+        self.scene.set_obstacle(on);
+    }
+    /// "grid" or "naive".
+    #[wasm_bindgen(js_name = setSearch)]
+    pub fn set_search(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_search(name).map_err(js)
+    }
+    /// Brings the flock to `time_sec` by steps of 1/60 s; returns the number of steps taken (the
+    /// page times this call and divides).
+    #[wasm_bindgen(js_name = advanceTo)]
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, JsError> {
+        self.scene.advance_to(time_sec).map_err(js)
+    }
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let note = self.scene.draw(&mut viewer.renderer.frame);
+        viewer.present()?;
+        Ok(note)
+    }
+    /// A separate flock of `n ∈ [2, 20000]` boids for the step-time plot.
+    #[wasm_bindgen(js_name = prepareTiming)]
+    pub fn prepare_timing(&mut self, n: f32) -> Result<(), JsError> {
+        self.scene.prepare_timing(n).map_err(js)
+    }
+    /// One step of the timing flock with "grid" or "naive" search; the page times this call.
+    #[wasm_bindgen(js_name = timingStep)]
+    pub fn timing_step(&mut self, search: &str) -> Result<(), JsError> {
+        self.scene.timing_step(search).map_err(js)
+    }
+}
+
+impl Default for FlockScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// One boid, its neighbours, its three rules and its grid cell.
+#[wasm_bindgen]
+pub struct BoidRulesScene {
+    scene: RulesFigure,
+}
+
+#[wasm_bindgen]
+impl BoidRulesScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> BoidRulesScene {
+        let mut scene = RulesFigure::new();
+        scene.set_runner(super::sandbox::run);
+        BoidRulesScene { scene }
+    }
+    #[wasm_bindgen(js_name = setPosition)]
+    pub fn set_position(&mut self, x: f32, z: f32) -> Result<(), JsError> {
+        self.scene.set_position(x, z).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setHeadingDeg)]
+    pub fn set_heading_deg(&mut self, deg: f32) -> Result<(), JsError> {
+        self.scene.set_heading_deg(deg).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setRadius)]
+    pub fn set_radius(&mut self, r: f32) -> Result<(), JsError> {
+        self.scene.set_radius(r).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setFovDeg)]
+    pub fn set_fov_deg(&mut self, fov: f32) -> Result<(), JsError> {
+        self.scene.set_fov_deg(fov).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setCellSize)]
+    pub fn set_cell_size(&mut self, s: f32) -> Result<(), JsError> {
+        self.scene.set_cell_size(s).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let note = self.scene.draw(&mut viewer.renderer.frame);
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for BoidRulesScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}

@@ -1,0 +1,234 @@
+//! Bindings for lesson 11, "Particles": thin wrappers around [`crate::figures::particles`].
+
+use super::{js, Viewer};
+use crate::figures::particles::{BounceFigure, EmitterFigure, FreeFallFigure, SquashFigure};
+use wasm_bindgen::prelude::*;
+
+/// Fountain and explosion emitters drawn as sprites.
+#[wasm_bindgen]
+pub struct EmitterScene {
+    scene: EmitterFigure,
+}
+
+#[wasm_bindgen]
+impl EmitterScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> EmitterScene {
+        EmitterScene {
+            scene: EmitterFigure::new(),
+        }
+    }
+    /// "fountain", "explosion" or "both".
+    #[wasm_bindgen(js_name = setMode)]
+    pub fn set_mode(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_mode(name).map_err(js)
+    }
+    /// Particles per second, in [0, 1000].
+    #[wasm_bindgen(js_name = setRate)]
+    pub fn set_rate(&mut self, rate: f32) -> Result<(), JsError> {
+        self.scene.set_rate(rate).map_err(js)
+    }
+    /// Seconds, in [0.1, 10].
+    #[wasm_bindgen(js_name = setLifetime)]
+    pub fn set_lifetime(&mut self, sec: f32) -> Result<(), JsError> {
+        self.scene.set_lifetime(sec).map_err(js)
+    }
+    /// Degrees, in [0, 90].
+    #[wasm_bindgen(js_name = setSpreadDeg)]
+    pub fn set_spread_deg(&mut self, deg: f32) -> Result<(), JsError> {
+        self.scene.set_spread_deg(deg).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setRestitution)]
+    pub fn set_restitution(&mut self, e: f32) -> Result<(), JsError> {
+        self.scene.set_restitution(e).map_err(js)
+    }
+    /// m/s², in [0, 30].
+    #[wasm_bindgen(js_name = setGravity)]
+    pub fn set_gravity(&mut self, g: f32) -> Result<(), JsError> {
+        self.scene.set_gravity(g).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setSort)]
+    pub fn set_sort(&mut self, on: bool) {
+        self.scene.set_sort(on);
+    }
+    #[wasm_bindgen(js_name = setFade)]
+    pub fn set_fade(&mut self, on: bool) {
+        self.scene.set_fade(on);
+    }
+    pub fn explode(&mut self) {
+        self.scene.explode();
+    }
+    /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
+    /// draws; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let eye = viewer.camera.eye();
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, eye, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for EmitterScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Free fall: exact vs three integrators.
+#[wasm_bindgen]
+pub struct FreeFallScene {
+    scene: FreeFallFigure,
+}
+
+#[wasm_bindgen]
+impl FreeFallScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> FreeFallScene {
+        let mut scene = FreeFallFigure::new();
+        scene.set_runner(super::sandbox::run);
+        FreeFallScene { scene }
+    }
+    /// Step size, seconds, in [0.005, 0.3].
+    #[wasm_bindgen(js_name = setDt)]
+    pub fn set_dt(&mut self, dt: f32) -> Result<(), JsError> {
+        self.scene.set_dt(dt).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+    /// Seconds the throw lasts.
+    #[wasm_bindgen(js_name = durationSec)]
+    pub fn duration_sec(&self) -> f32 {
+        crate::figures::particles::FREE_FALL_DURATION
+    }
+    /// `[t, error explicit Euler, error semi-implicit Euler, error Verlet, …]`, metres.
+    #[wasm_bindgen(js_name = errorSamples)]
+    pub fn error_samples(&self) -> Vec<f32> {
+        self.scene.error_samples()
+    }
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for FreeFallScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Balls bouncing on a sphere and the floor.
+#[wasm_bindgen]
+pub struct BounceScene {
+    scene: BounceFigure,
+}
+
+#[wasm_bindgen]
+impl BounceScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> BounceScene {
+        let mut scene = BounceFigure::new();
+        scene.set_runner(super::sandbox::run);
+        BounceScene { scene }
+    }
+    #[wasm_bindgen(js_name = setRestitution)]
+    pub fn set_restitution(&mut self, e: f32) -> Result<(), JsError> {
+        self.scene.set_restitution(e).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setFriction)]
+    pub fn set_friction(&mut self, mu: f32) -> Result<(), JsError> {
+        self.scene.set_friction(mu).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.scene.set_use_exercise(on);
+    }
+    /// Simulates to `time_sec` and draws; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for BounceScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// A rigid ball and a squash-and-stretch ball.
+#[wasm_bindgen]
+pub struct SquashScene {
+    scene: SquashFigure,
+}
+
+#[wasm_bindgen]
+impl SquashScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> SquashScene {
+        SquashScene {
+            scene: SquashFigure::new(),
+        }
+    }
+    #[wasm_bindgen(js_name = setStretch)]
+    pub fn set_stretch(&mut self, k: f32) -> Result<(), JsError> {
+        self.scene.set_stretch(k).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setSquash)]
+    pub fn set_squash(&mut self, s: f32) -> Result<(), JsError> {
+        self.scene.set_squash(s).map_err(js)
+    }
+    #[wasm_bindgen(js_name = setContact)]
+    pub fn set_contact(&mut self, sec: f32) -> Result<(), JsError> {
+        self.scene.set_contact(sec).map_err(js)
+    }
+    /// Simulates to `time_sec` and draws; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for SquashScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Builds a particle system of `capacity` particles and an emitter with this rate (particles/s)
+/// and lifetime range (seconds), and says what is wrong, or "ok": the wasm-boundary check of
+/// the core's validation rules and cap.
+#[wasm_bindgen(js_name = checkEmitter)]
+pub fn check_emitter(
+    capacity: usize,
+    rate_per_sec: f32,
+    lifetime_min_sec: f32,
+    lifetime_max_sec: f32,
+) -> Result<String, JsError> {
+    use crate::particles::{Emitter, ParticleSystem};
+    ParticleSystem::new(capacity, 1).map_err(|e| JsError::new(&e.to_string()))?;
+    let e = Emitter {
+        rate_per_sec,
+        lifetime_sec: (lifetime_min_sec, lifetime_max_sec),
+        ..Emitter::fountain(glam::Vec3::ZERO)
+    };
+    e.validate().map_err(|e| JsError::new(&e.to_string()))?;
+    Ok("ok".into())
+}

@@ -1,0 +1,265 @@
+//! Native tests of lesson 11's figures (src/figures/particles.rs): what they draw, what they
+//! reject, and what their notes say about the student's exercises.
+
+use glam::Vec3;
+use inbetween::draw::Frame;
+use inbetween::exercises::run::{direct, Failure, Flat};
+use inbetween::figures::particles::*;
+use inbetween::particles;
+
+fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let v = |k: usize| Vec3::from_slice(&args[k..k + 3]);
+    let mut out = Vec::new();
+    match name {
+        "time_of_impact" => inbetween::exercises::particles::reference_time_of_impact(
+            args[0], args[1], args[2], args[3],
+        )
+        .put(&mut out),
+        "semi_implicit_euler_step" => {
+            inbetween::exercises::particles::reference_semi_implicit(v(0), v(3), v(6), args[9])
+                .put(&mut out)
+        }
+        _ => return direct(name, args),
+    }
+    Ok(out)
+}
+
+/// Typical mistakes: the earlier (negative) root; explicit Euler instead of semi-implicit.
+fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let v = |k: usize| Vec3::from_slice(&args[k..k + 3]);
+    let mut out = Vec::new();
+    match name {
+        "time_of_impact" => {
+            let (y, vy, g, f) = (args[0], args[1], args[2], args[3]);
+            ((-vy + (vy * vy - 2.0 * g * (y - f)).sqrt()) / g).put(&mut out)
+        }
+        "semi_implicit_euler_step" => {
+            let (p, vel, a, dt) = (v(0), v(3), v(6), args[9]);
+            (p + vel * dt, vel + a * dt).put(&mut out)
+        }
+        _ => return direct(name, args),
+    }
+    Ok(out)
+}
+
+fn stub(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::NotDone)
+}
+
+fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::Panicked(
+        "panicked at src/exercises/particles.rs:40:9:\nattempt to divide by zero".into(),
+    ))
+}
+
+#[test]
+fn the_emitter_figure_fills_up_and_stays_under_its_cap() {
+    let mut scene = EmitterFigure::new();
+    scene.set_mode("both").unwrap();
+    scene.set_rate(1000.0).unwrap();
+    scene.set_lifetime(10.0).unwrap();
+    let mut frame = Frame::default();
+    // 6.7 s at 1000/s, lifetimes of at least 8 s: full.
+    let note = scene
+        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 6.7)
+        .unwrap();
+    assert_eq!(scene.len(), PAGE_MAX_PARTICLES);
+    assert_eq!(frame.points.len(), PAGE_MAX_PARTICLES);
+    assert!(note.contains("2000 particles"), "{note}");
+    for p in &frame.points {
+        assert!(p.center[1] >= 0.0, "nothing below the floor");
+    }
+}
+
+#[test]
+fn sorted_sprites_are_drawn_back_to_front() {
+    let mut scene = EmitterFigure::new();
+    let eye = Vec3::new(0.0, 2.0, 5.0);
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, eye, 1.0).unwrap();
+    let d: Vec<f32> = frame
+        .points
+        .iter()
+        .map(|p| (Vec3::from(p.center) - eye).length())
+        .collect();
+    assert!(d.len() > 50);
+    assert!(d.windows(2).all(|w| w[0] >= w[1]), "farthest first");
+    scene.set_sort(false);
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, eye, 1.0).unwrap();
+    let d: Vec<f32> = frame
+        .points
+        .iter()
+        .map(|p| (Vec3::from(p.center) - eye).length())
+        .collect();
+    assert!(
+        !d.windows(2).all(|w| w[0] >= w[1]),
+        "storage order is not depth order"
+    );
+    // Fading: alpha below 1 for old particles unless fading is off.
+    assert!(frame.points.iter().any(|p| p.color[3] < 0.9));
+    scene.set_fade(false);
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, eye, 1.0).unwrap();
+    assert!(frame.points.iter().all(|p| p.color[3] == 1.0));
+}
+
+#[test]
+fn the_emitter_figure_rejects_bad_input() {
+    let mut scene = EmitterFigure::new();
+    assert!(scene.set_rate(-1.0).unwrap_err().contains("rate"));
+    assert!(scene.set_rate(f32::NAN).unwrap_err().contains("rate"));
+    assert!(scene.set_lifetime(0.0).unwrap_err().contains("lifetime"));
+    assert!(scene.set_mode("volcano").unwrap_err().contains("volcano"));
+    assert!(scene.set_gravity(f32::INFINITY).is_err());
+    // A time that is NaN, negative or past the limit is refused (no endless replay).
+    let mut frame = Frame::default();
+    for t in [f32::NAN, -1.0, MAX_SIM_TIME + 1.0] {
+        assert!(scene
+            .draw(&mut frame, Vec3::Z, t)
+            .unwrap_err()
+            .contains("time"));
+    }
+}
+
+#[test]
+fn a_paused_figure_stands_still_and_a_scrub_replays_exactly() {
+    let mut a = EmitterFigure::new();
+    a.set_mode("both").unwrap();
+    let eye = Vec3::new(0.0, 2.0, 5.0);
+    let mut f1 = Frame::default();
+    a.draw(&mut f1, eye, 3.0).unwrap();
+    let mut f2 = Frame::default();
+    a.draw(&mut f2, eye, 3.0).unwrap();
+    assert_eq!(
+        f1.fingerprint(),
+        f2.fingerprint(),
+        "the same time draws the same frame"
+    );
+    // Going forward in small steps or jumping, or back and forward again: the same state.
+    let mut b = EmitterFigure::new();
+    b.set_mode("both").unwrap();
+    for k in 0..=30 {
+        b.draw(&mut Frame::default(), eye, 0.1 * k as f32).unwrap();
+    }
+    b.draw(&mut Frame::default(), eye, 0.5).unwrap();
+    let mut f3 = Frame::default();
+    b.draw(&mut f3, eye, 3.0).unwrap();
+    assert_eq!(f1.fingerprint(), f3.fingerprint());
+    // A changed parameter replays with the new value: the frame at the same time changes.
+    a.set_restitution(0.1).unwrap();
+    let mut f4 = Frame::default();
+    a.draw(&mut f4, eye, 3.0).unwrap();
+    assert_ne!(f1.fingerprint(), f4.fingerprint());
+}
+
+#[test]
+fn free_fall_errors_grow_linearly_for_euler_and_stay_zero_for_verlet() {
+    let mut scene = FreeFallFigure::new();
+    scene.set_dt(0.1).unwrap();
+    let s = scene.error_samples();
+    let rows: Vec<&[f32]> = s.chunks(4).collect();
+    let last = rows[rows.len() - 1];
+    let t = last[0];
+    // Both Euler variants are off by g t dt / 2, Verlet by rounding only.
+    let expected = 9.81 * t * 0.1 / 2.0;
+    assert!((last[1] - expected).abs() < 1e-3, "{last:?}");
+    assert!((last[2] - expected).abs() < 1e-3, "{last:?}");
+    assert!(last[3] < 1e-4);
+    // Halving dt halves the Euler error at the same time.
+    let e1 = scene.final_errors();
+    scene.set_dt(0.05).unwrap();
+    let e2 = scene.final_errors();
+    let r = e1.error_m[0] / e2.error_m[0] * (e2.time_sec / e1.time_sec);
+    assert!((r - 2.0).abs() < 0.2, "{r}");
+    assert!(scene.set_dt(0.0).is_err() && scene.set_dt(f32::NAN).is_err());
+}
+
+#[test]
+fn free_fall_draws_each_integrator_and_the_exact_path() {
+    let scene = FreeFallFigure::new();
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame, 0.65).unwrap();
+    for c in INTEGRATOR_COLORS.iter().chain([&EXACT_COLOR]) {
+        assert!(frame.segments_of(*c).count() > 0, "a path in {c}");
+    }
+    assert!(
+        note.contains("explicit Euler") && note.contains("velocity Verlet"),
+        "{note}"
+    );
+    assert!(scene.draw(&mut frame, f32::NAN).is_err());
+}
+
+#[test]
+fn free_fall_says_what_the_students_step_does() {
+    let mut scene = FreeFallFigure::new();
+    scene.set_use_exercise(true);
+    for (runner, expect) in [
+        (reference as fn(&str, &[f32]) -> _, "matches the reference"),
+        (wrong, "differs at the first step"),
+        (stub, "Not done yet: exercise 11.2"),
+        (panics, "divide by zero"),
+    ] {
+        scene.set_runner(runner);
+        let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+        assert!(note.contains(expect), "{expect}: {note}");
+    }
+    // With the wrong (explicit) step, the semi-implicit path is the explicit one.
+    scene.set_runner(wrong);
+    let s = scene.error_samples();
+    let last = &s[s.len() - 4..];
+    assert!((last[1] - last[2]).abs() < 1e-5);
+}
+
+#[test]
+fn bouncing_balls_never_go_through_the_floor_and_predict_their_impact() {
+    let mut scene = BounceFigure::new();
+    scene.set_runner(reference);
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame, 0.0).unwrap();
+    assert!(note.contains("reaches the floor in t = "), "{note}");
+    assert!(frame.labels.iter().any(|l| l.text.starts_with("floor in")));
+    for k in 0..400 {
+        scene.advance_to(k as f32 / 60.0).unwrap();
+        for p in scene.positions() {
+            assert!(p.y >= 0.08 - 1e-5, "{p}");
+        }
+    }
+    scene.set_use_exercise(true);
+    scene.drop_balls();
+    for (runner, expect) in [
+        (reference as fn(&str, &[f32]) -> _, "matches the reference"),
+        (wrong, "differs at y0 = "),
+        (stub, "Not done yet: exercise 11.1"),
+    ] {
+        scene.set_runner(runner);
+        let note = scene.draw(&mut Frame::default(), 0.0).unwrap();
+        assert!(note.contains(expect), "{expect}: {note}");
+    }
+    assert!(scene.set_restitution(1.5).is_err() && scene.set_friction(f32::NAN).is_err());
+}
+
+#[test]
+fn dropped_from_rest_the_prediction_is_the_formula() {
+    let mut scene = BounceFigure::new();
+    scene.set_runner(reference);
+    let note = scene.draw(&mut Frame::default(), 0.0).unwrap();
+    // Ball 0 starts at y = 2.2 with radius 0.08: t = √(2 (2.2 − 0.08) / 9.81).
+    let t = (2.0f32 * 2.12 / 9.81).sqrt();
+    let t2 = particles::floor_time_of_impact(2.2, 0.0, -9.81, 0.08, 10.0).unwrap();
+    assert!((t - t2).abs() < 1e-5);
+    assert!(note.contains(&format!("{t:.3}")), "{note}");
+}
+
+#[test]
+fn the_squash_ball_keeps_its_volume() {
+    let mut scene = SquashFigure::new();
+    let mut squashed = false;
+    for k in 0..200 {
+        let note = scene.draw(&mut Frame::default(), k as f32 / 60.0).unwrap();
+        assert!(note.contains("volume stays 1.000"), "{note}");
+        squashed |= scene.stretch().1 < 0.9;
+    }
+    assert!(squashed);
+    assert!(scene.set_squash(0.9).is_err() && scene.set_stretch(-0.1).is_err());
+}
