@@ -1,6 +1,8 @@
 //! Blend shapes core: one weight 1 gives that target, zero weights give the base, the two forms
 //! agree when the weights sum to 1 and the full form scales the mesh when they do not, and each
 //! validation rule has its own error.
+// Native only: proptest and the file system are not available in the browser build.
+#![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec3;
 use inbetween::blend_shapes::{blend_full, BlendShapeError, BlendShapes};

@@ -5,6 +5,8 @@
 //! The sample files are not committed (../shared/assets/gltf, or $INBETWEEN_GLTF_ASSETS).
 //! `scripts/test` sets INBETWEEN_REQUIRE_ASSETS=1 when they are present, so a missing file
 //! fails there instead of being passed over.
+// Native only: proptest and the file system are not available in the browser build.
+#![cfg(not(target_arch = "wasm32"))]
 
 use glam::{Affine3A, Mat4};
 use inbetween::fixtures::tiny_skinned_gltf as tiny;

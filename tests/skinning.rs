@@ -2,6 +2,8 @@
 //! method must have (rest pose gives the bind mesh, one joint at weight 1 is rigid), the ones that
 //! tell LBS and DQS apart (DQS keeps distances under twist, LBS collapses more at a bend), and the
 //! automatic weights.
+// Native only: proptest and the file system are not available in the browser build.
+#![cfg(not(target_arch = "wasm32"))]
 
 use glam::{Affine3A, Mat4, Quat, Vec3};
 use inbetween::rigid::DualQuat;
