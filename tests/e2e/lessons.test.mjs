@@ -304,7 +304,7 @@ for (const backend of BACKENDS) {
             if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
               // Without the backend badge: the thumbnail shows the figure, not the test's backend.
               await page.evaluate(() => document.body.classList.add('thumbnail'));
-              writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail}`, await canvas.screenshot());
+              writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail ?? 'thumbnail.png'}`, await canvas.screenshot());
               await page.evaluate(() => document.body.classList.remove('thumbnail'));
             }
             assert.equal(await figure.locator('.backend-badge').textContent(), label);
