@@ -39,6 +39,16 @@ async function pauseTimelines(page) {
   });
 }
 
+/**
+ * Before a full-page screenshot: figures off screen keep their frame instead of rendering it
+ * (Viewer::set_visible), and a resize clears their canvases, so every figure is told it is
+ * visible and given a few frames to draw.
+ */
+async function drawAllFigures(page) {
+  await page.evaluate(() => window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true)));
+  await frames(page, 4);
+}
+
 /** Waits for a few animation frames so the figures show the latest state. */
 async function frames(page, n = 6) {
   await page.evaluate((n) => new Promise((ok) => {
@@ -327,6 +337,7 @@ for (const backend of BACKENDS) {
             await frames(page);
             const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
             assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
+            await drawAllFigures(page);
             await page.screenshot({ path: `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`, fullPage: true });
           }
           await page.setViewportSize({ width: 1100, height: 900 });
@@ -338,6 +349,7 @@ for (const backend of BACKENDS) {
             const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
             assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
           }
+          await drawAllFigures(page);
           await page.screenshot({ path: `${SHOTS}/${lesson.folder}-${backend}.png`, fullPage: true });
           assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
           assert.deepEqual(problems, []);
