@@ -79,10 +79,10 @@ pub fn dqs_vertex(dual_quats: &[DualQuat], weights: &[f32], position: Vec3) -> V
 /// b  = Σ_j w_j s_j q_j   (s_j: sign that aligns q_j with the vertex's first joint, the pivot)
 /// r  = b.r / ‖b.r‖,  d = b.d / ‖b.r‖
 /// p' = R(r) p + t,   t = 2 (r_w d⃗ − d_w r⃗ + r⃗ × d⃗)   (the vector part of 2 d r*)
-/// n' = R(r) n
+/// n' = R(r) n,       R(r) v = v + 2 r⃗ × (r⃗ × v + r_w v)
 /// ```
-/// Computed without a square root: `R(r) = R(b.r) / ‖b.r‖²` and `t` scales the same way (the
-/// form Kavan et al. use in their shader). The dual part's component along `r` is dropped by
+/// Computed without a square root: with the unnormalised `b.r`, both `R` and `t` take a factor
+/// `1 / ‖b.r‖²` (the form Kavan et al. use in their shader). The dual part's component along `r` is dropped by
 /// the formula for `t`, so no explicit
 /// orthogonalisation is needed. `palette` comes from [`dual_quat_palette`]. Allocates nothing.
 ///
@@ -143,24 +143,18 @@ pub fn skin_dqs(
             + Vec4::from(q3.dual) * s3;
         // A blend that cancels out (opposite joints, no weight on the pivot) cannot happen with
         // the sign fix unless the pivot's weight is 0; the guard keeps it finite.
-        // Unnormalised blend b: the rotation matrix of b.r / ‖b.r‖ is R(b.r) / ‖b.r‖², so one
-        // reciprocal of the squared length replaces the square root (as in Kavan et al.'s
-        // shader), and the matrix then moves the position and the normal with SIMD columns.
-        let inv2 = 1.0 / real.length_squared().max(1e-24);
-        let (x, y, z, w0) = (real.x, real.y, real.z, real.w);
-        let (x2, y2, z2) = (x + x, y + y, z + z);
-        let (xx, xy, xz) = (x * x2, x * y2, x * z2);
-        let (yy, yz, zz) = (y * y2, y * z2, z * z2);
-        let (wx, wy, wz) = (w0 * x2, w0 * y2, w0 * z2);
-        let n2_ = real.length_squared();
-        let col_x = Vec3A::new(n2_ - (yy + zz), xy + wz, xz - wy) * inv2;
-        let col_y = Vec3A::new(xy - wz, n2_ - (xx + zz), yz + wx) * inv2;
-        let col_z = Vec3A::new(xz + wy, yz - wx, n2_ - (xx + yy)) * inv2;
-        let rv = Vec3A::new(x, y, z);
+        // Unnormalised blend b = (r, w): rotating by b / ‖b‖ is
+        //   R v = v + (2 / ‖b‖²) r × (r × v + w v),
+        // so one reciprocal of the squared length replaces the square root (as in Kavan et
+        // al.'s shader), and the cross products run on SIMD vectors without building a matrix.
+        let k = 2.0 / real.length_squared().max(1e-24);
+        let rv = Vec3A::new(real.x, real.y, real.z);
+        let w0 = real.w;
         let dv = Vec3A::new(dual.x, dual.y, dual.z);
-        let t = 2.0 * inv2 * (w0 * dv - dual.w * rv + rv.cross(dv));
-        let p2 = col_x * p.x + col_y * p.y + col_z * p.z + t;
-        let n2 = col_x * n.x + col_y * n.y + col_z * n.z;
+        let t = k * (w0 * dv - dual.w * rv + rv.cross(dv));
+        let rotate = |v: Vec3A| v + k * rv.cross(rv.cross(v) + w0 * v);
+        let p2 = rotate(Vec3A::from(*p)) + t;
+        let n2 = rotate(Vec3A::from(*n));
         *op = p2.into();
         *on = n2.into();
     }
