@@ -1270,3 +1270,10 @@ proptest! {
         }
     }
 }
+
+/// Found by the property test above: f32 rounding took smootherstep just past 1 near s = 1.
+#[test]
+fn smootherstep_does_not_overshoot_near_one() {
+    let e = Ease::Smootherstep.apply(0.998_832_3);
+    assert!((0.0..=1.0).contains(&e), "{e}");
+}

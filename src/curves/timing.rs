@@ -80,7 +80,14 @@ impl Ease {
     /// `[e(s), e′(s), e″(s)]`, with `s` clamped to `[0, 1]` (derivatives with respect to `s`;
     /// needed to carry velocity and acceleration through a [`TimeWarp`]).
     pub fn apply_with_derivatives(self, s: f32) -> [f32; 3] {
-        let s = s.clamp(0.0, 1.0);
+        let mut e = self.unclamped(s.clamp(0.0, 1.0));
+        // The polynomials stay in [0, 1] on [0, 1], but f32 rounding can overshoot by an ulp
+        // or two near the ends (smootherstep(0.9988) came out as 1.0000011).
+        e[0] = e[0].clamp(0.0, 1.0);
+        e
+    }
+
+    fn unclamped(self, s: f32) -> [f32; 3] {
         match self {
             Ease::Linear => [s, 1.0, 0.0],
             Ease::Smoothstep => [s * s * (3.0 - 2.0 * s), 6.0 * s * (1.0 - s), 6.0 - 12.0 * s],
