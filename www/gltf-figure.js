@@ -4,7 +4,7 @@
 // mesh skinned by LBS or DQS). No math here: it lives in Rust (src/gltf_import.rs,
 // src/figures/gltf.rs). The figure's HTML needs a .stage with a canvas and a .panel, a
 // .timeline, an input[type=file] and a .note, all inside `selector`.
-import { markDrawn, Timeline, GUI } from './lesson.js';
+import { markDrawn, Timeline, GUI, showNote } from './lesson.js';
 import { GltfScene } from '../pkg/inbetween.js';
 
 export async function gltfFigure(lesson, selector, { skinning = null } = {}) {
@@ -77,8 +77,7 @@ export async function gltfFigure(lesson, selector, { skinning = null } = {}) {
   lesson.onFrame((dt) => {
     timeline.advance(dt);
     const drawn = scene.draw(viewer, timeline.time);
-    const text = [message, drawn].filter(Boolean).join(' ');
-    if (note.textContent !== text) note.textContent = text;
+    showNote(note, message, drawn);
     markDrawn(selector);
   });
 }

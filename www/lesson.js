@@ -513,6 +513,39 @@ export function paddedRange(lo, hi, minSpan) {
 }
 
 /** Splits `[a0, b0, c0, a1, b1, c1, …]` (a binding's flat samples) into columns `[[a…], [b…], [c…]]`. */
+/** Sets a note element to `parts` joined by spaces (empty parts dropped), touching the DOM only
+ * when the text changed. */
+export function showNote(element, ...parts) {
+  const text = parts.filter(Boolean).join(' ');
+  if (element.textContent !== text) element.textContent = text;
+}
+
+/** The value of a CSS custom property of the page (the palette in www/palette.css), or undefined. */
+export function cssVar(name) {
+  return getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
+}
+
+/**
+ * Wraps a figure's `apply` (which passes the panel's values `p` to the scene) for a lil-gui
+ * `onChange`: a value the core rejects is put back to the last accepted one, the panel redrawn,
+ * and the reason passed to `onReject` (an empty string after a success).
+ */
+export function guarded(gui, p, apply, onReject) {
+  let accepted = { ...p };
+  return () => {
+    try {
+      apply();
+      accepted = { ...p };
+      onReject('');
+    } catch (e) {
+      onReject(`Not changed: ${e.message ?? e}`);
+      Object.assign(p, accepted);
+      gui.controllersRecursive().forEach((c) => c.updateDisplay());
+      apply();
+    }
+  };
+}
+
 export function columns(flat, width) {
   const cols = Array.from({ length: width }, () => []);
   for (let i = 0; i < flat.length; i += width) for (let k = 0; k < width; k++) cols[k].push(flat[i + k]);

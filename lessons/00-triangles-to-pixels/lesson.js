@@ -1,10 +1,9 @@
 // Lesson 00: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/raster/ and src/figures/raster.rs); the images are computed there and only copied here.
-import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, showMatrix } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, showMatrix, guarded, cssVar } from '../../www/lesson.js';
 import { MeshStorageScene, FrustumScene, DepthPrecisionScene, NormalsScene, ShadingScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
 const num = (x) => (Math.abs(x) < 5e-5 ? 0 : x).toFixed(3);
 
 /** Copies Rust's RGBA bytes into a canvas. */
@@ -12,23 +11,6 @@ function blit(canvas, bytes, width, height) {
   canvas.width = width;
   canvas.height = height;
   canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(bytes), width, height), 0, 0);
-}
-
-/** Runs `apply`; a value the core rejects is put back and the reason shown in `note`. */
-function guarded(gui, p, apply, onReject) {
-  let accepted = { ...p };
-  return () => {
-    try {
-      apply();
-      accepted = { ...p };
-      onReject('');
-    } catch (e) {
-      onReject(`Not changed: ${e.message ?? e}`);
-      Object.assign(p, accepted);
-      gui.controllersRecursive().forEach((c) => c.updateDisplay());
-      apply();
-    }
-  };
 }
 
 // Figure 1: one mesh, two storages.
@@ -70,7 +52,7 @@ if (frustumViewer) {
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('frustum-depth'), {
     title: 'Depth against distance', xLabel: 'distance d in front of the camera (m)', yLabel: 'depth (no unit)',
-    series: ['wgpu, [0, 1]', 'OpenGL, [−1, 1]'], colors: [css('--z-axis'), css('--grey')], minSpan: 0.5,
+    series: ['wgpu, [0, 1]', 'OpenGL, [−1, 1]'], colors: [cssVar('--z-axis'), cssVar('--grey')], minSpan: 0.5,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
@@ -115,7 +97,7 @@ if (depthViewer) {
   gui.add(p, 'bits', [16, 24]).name('depth bits');
   const plot = new Plot(document.getElementById('depth-step'), {
     title: 'What one depth step is worth', xLabel: 'distance d (m)', yLabel: 'depth step Δd (m)',
-    series: ['step, 16 bits', 'step, 24 bits', 'separation d·gap/h'], colors: [css('--orange'), css('--y-axis'), css('--grey')], minSpan: 0.01,
+    series: ['step, 16 bits', 'step, 24 bits', 'separation d·gap/h'], colors: [cssVar('--orange'), cssVar('--y-axis'), cssVar('--grey')], minSpan: 0.01,
   });
   const image = document.getElementById('depth-image');
   let rejected = '';

@@ -1,14 +1,9 @@
 // Lesson 01: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/figures/transforms.rs).
-import { startLesson, markDrawn, Timeline, Plot, showMatrix, columns, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, showMatrix, columns, GUI, showNote } from '../../www/lesson.js';
 import { SingleShapeScene, HierarchyScene, ScaleComparisonScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-
-/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
-function showNote(element, message) {
-  if (element.textContent !== message) element.textContent = message;
-}
 
 /** An angle slider that shows whole degrees (the value itself may carry decimals). */
 function addAngle(folder, object, key, name) {

@@ -1,27 +1,9 @@
 // Lesson 02b: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/expressive/ and src/figures/expressive.rs).
-import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, guarded, cssVar } from '../../www/lesson.js';
 import { SpacingScene, JumpScene, FollowThroughScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
-
-/** Runs `apply`; a value the core rejects is put back and the reason passed to `onReject`. */
-function guarded(gui, p, apply, onReject) {
-  let accepted = { ...p };
-  return () => {
-    try {
-      apply();
-      accepted = { ...p };
-      onReject('');
-    } catch (e) {
-      onReject(`Not changed: ${e.message ?? e}`);
-      Object.assign(p, accepted);
-      gui.controllersRecursive().forEach((c) => c.updateDisplay());
-      apply();
-    }
-  };
-}
 
 // Figure 1: timing and spacing.
 const spacingViewer = await lesson.figure('#fig-spacing');
@@ -39,7 +21,7 @@ if (spacingViewer) {
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('spacing-plot'), {
     title: 'Spacing: how much of the path is covered', xLabel: 'time (s)', yLabel: 'fraction of path',
-    series: ['this spacing', 'linear'], colors: [css('--z-axis'), css('--grey')], minSpan: 0.5,
+    series: ['this spacing', 'linear'], colors: [cssVar('--z-axis'), cssVar('--grey')], minSpan: 0.5,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
@@ -78,7 +60,7 @@ if (jumpViewer) {
   const plot = new Plot(document.getElementById('jump-plot'), {
     title: 'Height of the ball', xLabel: 'time (s)', yLabel: 'height (m), stretch s (ratio)',
     series: ['plain height', 'principled height', 'principled stretch s'],
-    colors: [css('--grey'), css('--orange'), css('--purple')], minSpan: 1,
+    colors: [cssVar('--grey'), cssVar('--orange'), cssVar('--purple')], minSpan: 1,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
@@ -112,7 +94,7 @@ if (followViewer) {
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('follow-plot'), {
     title: 'Base and tip, side to side', xLabel: 'time (s)', yLabel: 'x (m)',
-    series: ['base', 'tip'], colors: [css('--teal'), css('--pink')], minSpan: 1,
+    series: ['base', 'tip'], colors: [cssVar('--teal'), cssVar('--pink')], minSpan: 1,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {

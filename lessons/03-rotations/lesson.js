@@ -1,13 +1,12 @@
 // Lesson 03: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/figures/rotations.rs).
-import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, cssVar } from '../../www/lesson.js';
 import { InterpolationScene, GimbalScene, RodriguesScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
 const fmt = (v) => Array.from(v, (x) => x.toFixed(3)).join(', ');
 // The palette's colours (www/palette.css) for the plots.
-const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
 
 /** A 3×3 column-major matrix as a table. */
 function showMatrix3(table, cols) {
@@ -43,7 +42,7 @@ if (interpViewer) {
   gui.add(p, 'useExercise').name('use my exercise');
   const det = new Plot(document.getElementById('interp-det'), {
     title: 'Matrix lerp: is it still a rotation?', xLabel: 't (0 to 1)', yLabel: 'det M, ‖MᵀM − I‖ (no unit)',
-    series: ['determinant', '‖MᵀM − I‖'], colors: [css('--x-axis') ?? '#d62728', '#7a2a24'], minSpan: 0.1,
+    series: ['determinant', '‖MᵀM − I‖'], colors: [cssVar('--x-axis') ?? '#d62728', '#7a2a24'], minSpan: 0.1,
   });
   const speed = new Plot(document.getElementById('interp-speed'), {
     title: 'Angular speed', xLabel: 't (0 to 1)', yLabel: 'angular speed (° per unit of t)',

@@ -1,12 +1,11 @@
 // Lesson 05: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/noise, src/terrain, src/figures/noise.rs).
-import { startLesson, markDrawn, Plot, GUI, columns } from '../../www/lesson.js';
+import { startLesson, markDrawn, Plot, GUI, columns, showNote, cssVar } from '../../www/lesson.js';
 import {
   Noise1dScene, Noise2dScene, OctavesScene, TerrainFigureScene, TexturesScene, QuizScene, FractalsScene,
 } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
 
 /** Copies the accepted values back into `p` and the panel, after a setter rejected a change. */
 function revert(gui, p, accepted) {
@@ -45,11 +44,6 @@ function onScreen(selector) {
   };
 }
 
-function showNote(el, ...parts) {
-  const text = parts.filter(Boolean).join(' ');
-  if (el.textContent !== text) el.textContent = text;
-}
-
 const shown = Object.fromEntries(
   ['fig-1d', 'fig-2d', 'fig-octaves', 'fig-terrain', 'fig-quiz', 'fig-textures', 'fig-fractals'].map((id) => [id, onScreen(`#${id}`)]),
 );
@@ -68,7 +62,7 @@ if (v1) {
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('n1-fade'), {
     title: 'The fade curve', xLabel: 't (position in the cell, 0 to 1)', yLabel: 'value (no unit)',
-    series: ['fade(t)', 'fade′(t)', '3t² − 2t³ (1985)'], colors: [css('--z-axis'), css('--orange'), css('--grey')], minSpan: 0.5,
+    series: ['fade(t)', 'fade′(t)', '3t² − 2t³ (1985)'], colors: [cssVar('--z-axis'), cssVar('--orange'), cssVar('--grey')], minSpan: 0.5,
   });
   let rejected = '';
   const apply = () => {

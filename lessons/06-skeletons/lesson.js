@@ -1,15 +1,10 @@
 // Lesson 06: wires the page's controls to the wasm scene. No math here: it lives in Rust
 // (src/skeleton/, src/figures/skeleton.rs).
-import { startLesson, markDrawn, Timeline, Plot, showMatrix, columns, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, showMatrix, columns, GUI, showNote } from '../../www/lesson.js';
 import { SkeletonScene } from '../../pkg/inbetween.js';
 import { gltfFigure } from '../../www/gltf-figure.js';
 
 const lesson = await startLesson();
-
-/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
-function showNote(element, message) {
-  if (element.textContent !== message) element.textContent = message;
-}
 
 /** An angle slider that shows whole degrees. */
 function addAngle(folder, object, key, name) {

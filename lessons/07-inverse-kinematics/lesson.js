@@ -1,14 +1,9 @@
 // Lesson 07: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/ik/, src/figures/ik.rs), including picking and dragging the target.
-import { startLesson, markDrawn, Timeline, Plot, columns, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote } from '../../www/lesson.js';
 import { IkScene, AimScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-
-/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
-function showNote(element, message) {
-  if (element.textContent !== message) element.textContent = message;
-}
 
 const viewer = await lesson.figure('#fig-ik');
 if (viewer) {

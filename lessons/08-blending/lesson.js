@@ -1,14 +1,9 @@
 // Lesson 08: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/skeleton/, src/figures/blending.rs).
-import { startLesson, markDrawn, Timeline, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, GUI, showNote } from '../../www/lesson.js';
 import { BlendScene, LocomotionScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-
-/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
-function showNote(element, message) {
-  if (element.textContent !== message) element.textContent = message;
-}
 
 const blendViewer = await lesson.figure('#fig-blend');
 if (blendViewer) {

@@ -1,15 +1,10 @@
 // Lesson 09: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/skinning/, src/figures/skinning.rs).
-import { startLesson, markDrawn, Timeline, Plot, columns, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote } from '../../www/lesson.js';
 import { SkinningCylinderScene, SkinnedHumanScene } from '../../pkg/inbetween.js';
 import { gltfFigure } from '../../www/gltf-figure.js';
 
 const lesson = await startLesson();
-
-/** Shows `message` in a figure's note element, touching the DOM only when it changed. */
-function showNote(element, message) {
-  if (element.textContent !== message) element.textContent = message;
-}
 
 // Figure 1: the bend-and-twist cylinder, LBS beside DQS.
 const cylinderViewer = await lesson.figure('#fig-cylinder');

@@ -1,13 +1,9 @@
 // Lesson 10: wires the page's controls to the wasm scene. No math here: it lives in Rust
 // (src/blend_shapes/, src/figures/blend_shapes.rs).
-import { startLesson, markDrawn, Timeline, GUI } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, GUI, showNote } from '../../www/lesson.js';
 import { BlendShapeFaceScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-
-function showNote(element, message) {
-  if (element.textContent !== message) element.textContent = message;
-}
 
 const viewer = await lesson.figure('#fig-face');
 if (viewer) {

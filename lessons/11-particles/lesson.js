@@ -1,32 +1,9 @@
 // Lesson 11: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/particles/, src/figures/particles.rs).
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
 import { EmitterScene, FreeFallScene, BounceScene, SquashScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
-
-/** Runs `apply`; a value the core rejects is put back and the reason passed to `onReject`. */
-function guarded(gui, p, apply, onReject) {
-  let accepted = { ...p };
-  return () => {
-    try {
-      apply();
-      accepted = { ...p };
-      onReject('');
-    } catch (e) {
-      onReject(`Not changed: ${e.message ?? e}`);
-      Object.assign(p, accepted);
-      gui.controllersRecursive().forEach((c) => c.updateDisplay());
-      apply();
-    }
-  };
-}
-
-/** Shows `message` in a note element, touching the DOM only when it changed. */
-function showNote(element, message) {
-  if (element.textContent !== message) element.textContent = message;
-}
 
 // Figure 1: emitters and sprites.
 const emitterViewer = await lesson.figure('#fig-emitters');
@@ -82,7 +59,7 @@ if (fallViewer) {
   const plot = new Plot(document.getElementById('freefall-plot'), {
     title: 'Position error against the exact solution', xLabel: 'time (s)', yLabel: 'error (m)',
     series: ['explicit Euler', 'semi-implicit Euler', 'velocity Verlet'],
-    colors: [css('--x-axis'), css('--z-axis'), css('--y-axis')], minSpan: 0.01,
+    colors: [cssVar('--x-axis'), cssVar('--z-axis'), cssVar('--y-axis')], minSpan: 0.01,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {

@@ -1,31 +1,9 @@
 // Lesson 12: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/boids/, src/figures/boids.rs). The page only times the calls it makes.
-import { startLesson, markDrawn, Plot, GUI, Timeline } from '../../www/lesson.js';
+import { startLesson, markDrawn, Plot, GUI, Timeline, guarded, showNote, cssVar } from '../../www/lesson.js';
 import { BoidRulesScene, FlockScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
-const css = (name) => getComputedStyle(document.documentElement).getPropertyValue(name).trim() || undefined;
-
-/** Runs `apply`; a value the core rejects is put back and the reason passed to `onReject`. */
-function guarded(gui, p, apply, onReject) {
-  let accepted = { ...p };
-  return () => {
-    try {
-      apply();
-      accepted = { ...p };
-      onReject('');
-    } catch (e) {
-      onReject(`Not changed: ${e.message ?? e}`);
-      Object.assign(p, accepted);
-      gui.controllersRecursive().forEach((c) => c.updateDisplay());
-      apply();
-    }
-  };
-}
-
-function showNote(element, message) {
-  if (element.textContent !== message) element.textContent = message;
-}
 
 // Figure 1: one boid's rules and its grid cell.
 const rulesViewer = await lesson.figure('#fig-rules');
@@ -110,7 +88,7 @@ if (flockViewer) {
   // Step time against N: one timed step per frame, so the page stays responsive.
   const plot = new Plot(document.getElementById('flock-plot'), {
     title: 'One step of the flock: grid vs naive search', xLabel: 'boids N', yLabel: 'step time (ms)',
-    series: ['grid', 'naive'], colors: [css('--z-axis'), css('--x-axis')], minSpan: 0.1,
+    series: ['grid', 'naive'], colors: [cssVar('--z-axis'), cssVar('--x-axis')], minSpan: 0.1,
   });
   const SIZES = [100, 200, 400, 800, 1600];
   const REPEATS = 3;
