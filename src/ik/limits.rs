@@ -5,7 +5,10 @@
 //! the segment that enters it, `d_{i−1}` (for the root: a fixed `root_direction`, e.g. the rest
 //! direction of the first segment, or "down" for a leg hanging from the hip).
 
-use super::{check_chain, check_solver, rotation_arc, IkError, IkResult};
+use super::{
+    ccd_iteration_then, check_chain, check_solver, fabrik_backward, iterate, rotation_arc, IkError,
+    IkResult,
+};
 use glam::{Quat, Vec3};
 use std::f32::consts::PI;
 
@@ -202,36 +205,24 @@ pub fn ccd_limited(
     target: Vec3,
     max_iterations: usize,
     tolerance: f32,
-    mut errors: Option<&mut [f32]>,
+    errors: Option<&mut [f32]>,
 ) -> Result<IkResult, IkError> {
     check_chain(chain, target)?;
     check_solver(max_iterations, tolerance)?;
     check_limits(chain, limits, root_direction)?;
-    let n = chain.len();
     apply_limits(chain, limits, root_direction, 0);
-    let mut error = chain[n - 1].distance(target);
-    let mut iterations = 0;
-    while error > tolerance && iterations < max_iterations {
-        for i in (0..n - 1).rev() {
-            let pivot = chain[i];
-            if let Some(r) = rotation_arc(chain[n - 1] - pivot, target - pivot) {
-                for p in &mut chain[i + 1..] {
-                    *p = pivot + r * (*p - pivot);
-                }
-            }
-            apply_limits(chain, limits, root_direction, i);
-        }
-        error = chain[n - 1].distance(target);
-        if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
-            *slot = error;
-        }
-        iterations += 1;
-    }
-    Ok(IkResult {
-        reached: error <= tolerance,
-        error,
-        iterations,
-    })
+    Ok(iterate(
+        chain,
+        target,
+        max_iterations,
+        tolerance,
+        errors,
+        |chain| {
+            ccd_iteration_then(chain, target, |chain, i| {
+                apply_limits(chain, limits, root_direction, i)
+            })
+        },
+    ))
 }
 
 /// [`super::fabrik`] with a limit per joint: the backward pass is unchanged, and the forward pass
@@ -251,7 +242,7 @@ pub fn fabrik_limited(
     target: Vec3,
     max_iterations: usize,
     tolerance: f32,
-    mut errors: Option<&mut [f32]>,
+    errors: Option<&mut [f32]>,
 ) -> Result<IkResult, IkError> {
     check_chain(chain, target)?;
     check_solver(max_iterations, tolerance)?;
@@ -264,31 +255,22 @@ pub fn fabrik_limited(
         *l = chain[i].distance(chain[i + 1]);
     }
     apply_limits(chain, limits, root_direction, 0);
-    let mut error = chain[n - 1].distance(target);
-    let mut iterations = 0;
-    while error > tolerance && iterations < max_iterations {
-        chain[n - 1] = target;
-        for i in (0..n - 1).rev() {
-            let dir = (chain[i] - chain[i + 1]).normalize_or(Vec3::Y);
-            chain[i] = chain[i + 1] + dir * lens[i];
-        }
-        chain[0] = root;
-        for i in 1..n {
-            let incoming = incoming(chain, root_direction, i - 1);
-            let dir = (chain[i] - chain[i - 1]).normalize_or(incoming);
-            chain[i] = chain[i - 1] + limits[i - 1].constrain(incoming, dir) * lens[i - 1];
-        }
-        error = chain[n - 1].distance(target);
-        if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
-            *slot = error;
-        }
-        iterations += 1;
-    }
-    Ok(IkResult {
-        reached: error <= tolerance,
-        error,
-        iterations,
-    })
+    Ok(iterate(
+        chain,
+        target,
+        max_iterations,
+        tolerance,
+        errors,
+        |chain| {
+            fabrik_backward(chain, target, &lens[..n - 1]);
+            chain[0] = root;
+            for i in 1..n {
+                let incoming = incoming(chain, root_direction, i - 1);
+                let dir = (chain[i] - chain[i - 1]).normalize_or(incoming);
+                chain[i] = chain[i - 1] + limits[i - 1].constrain(incoming, dir) * lens[i - 1];
+            }
+        },
+    ))
 }
 
 /// An aim (look-at) answer: the rotation to apply to the joint (in the same space as its

@@ -239,15 +239,65 @@ pub fn rotation_arc(from: Vec3, to: Vec3) -> Option<Quat> {
 /// A joint where the end or the target sits on the pivot is skipped. The caller validates the
 /// chain ([`ccd`] does).
 pub fn ccd_iteration(chain: &mut [Vec3], target: Vec3) {
+    ccd_iteration_then(chain, target, |_, _| {});
+}
+
+/// [`ccd_iteration`], calling `after_joint(chain, i)` once joint `i` has turned (or been
+/// skipped): [`limits::ccd_limited`] applies the joint limits there.
+pub(crate) fn ccd_iteration_then(
+    chain: &mut [Vec3],
+    target: Vec3,
+    mut after_joint: impl FnMut(&mut [Vec3], usize),
+) {
     let n = chain.len();
     for i in (0..n.saturating_sub(1)).rev() {
         let pivot = chain[i];
-        let Some(r) = rotation_arc(chain[n - 1] - pivot, target - pivot) else {
-            continue;
-        };
-        for p in &mut chain[i + 1..] {
-            *p = pivot + r * (*p - pivot);
+        if let Some(r) = rotation_arc(chain[n - 1] - pivot, target - pivot) {
+            for p in &mut chain[i + 1..] {
+                *p = pivot + r * (*p - pivot);
+            }
         }
+        after_joint(chain, i);
+    }
+}
+
+/// The loop the iterative solvers share: runs `iteration` until the end effector is within
+/// `tolerance` of `target` or `max_iterations` have run, writing the error after each iteration
+/// into `errors` (as many as fit).
+pub(crate) fn iterate(
+    chain: &mut [Vec3],
+    target: Vec3,
+    max_iterations: usize,
+    tolerance: f32,
+    mut errors: Option<&mut [f32]>,
+    mut iteration: impl FnMut(&mut [Vec3]),
+) -> IkResult {
+    let end = chain.len() - 1;
+    let mut error = chain[end].distance(target);
+    let mut iterations = 0;
+    while error > tolerance && iterations < max_iterations {
+        iteration(chain);
+        error = chain[end].distance(target);
+        if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
+            *slot = error;
+        }
+        iterations += 1;
+    }
+    IkResult {
+        reached: error <= tolerance,
+        error,
+        iterations,
+    }
+}
+
+/// FABRIK's backward pass: the end on the target, then each joint at its segment's length from
+/// the next one, towards where it was.
+pub(crate) fn fabrik_backward(chain: &mut [Vec3], target: Vec3, lengths: &[f32]) {
+    let n = chain.len();
+    chain[n - 1] = target;
+    for i in (0..n - 1).rev() {
+        let dir = (chain[i] - chain[i + 1]).normalize_or(Vec3::Y);
+        chain[i] = chain[i + 1] + dir * lengths[i];
     }
 }
 
@@ -266,26 +316,18 @@ pub fn ccd(
     target: Vec3,
     max_iterations: usize,
     tolerance: f32,
-    mut errors: Option<&mut [f32]>,
+    errors: Option<&mut [f32]>,
 ) -> Result<IkResult, IkError> {
     check_chain(chain, target)?;
     check_solver(max_iterations, tolerance)?;
-    let n = chain.len();
-    let mut error = chain[n - 1].distance(target);
-    let mut iterations = 0;
-    while error > tolerance && iterations < max_iterations {
-        ccd_iteration(chain, target);
-        error = chain[n - 1].distance(target);
-        if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
-            *slot = error;
-        }
-        iterations += 1;
-    }
-    Ok(IkResult {
-        reached: error <= tolerance,
-        error,
-        iterations,
-    })
+    Ok(iterate(
+        chain,
+        target,
+        max_iterations,
+        tolerance,
+        errors,
+        |c| ccd_iteration(c, target),
+    ))
 }
 
 /// FABRIK on a chain of positions (`chain[0]` the root, which stays put).
@@ -301,7 +343,7 @@ pub fn fabrik(
     target: Vec3,
     max_iterations: usize,
     tolerance: f32,
-    mut errors: Option<&mut [f32]>,
+    errors: Option<&mut [f32]>,
 ) -> Result<IkResult, IkError> {
     check_chain(chain, target)?;
     check_solver(max_iterations, tolerance)?;
@@ -331,28 +373,20 @@ pub fn fabrik(
             iterations: 1,
         });
     }
-    let mut error = chain[n - 1].distance(target);
-    let mut iterations = 0;
-    while error > tolerance && iterations < max_iterations {
-        chain[n - 1] = target;
-        for i in (0..n - 1).rev() {
-            let dir = (chain[i] - chain[i + 1]).normalize_or(Vec3::Y);
-            chain[i] = chain[i + 1] + dir * lens[i];
-        }
-        chain[0] = root;
-        for i in 1..n {
-            let dir = (chain[i] - chain[i - 1]).normalize_or(Vec3::Y);
-            chain[i] = chain[i - 1] + dir * lens[i - 1];
-        }
-        error = chain[n - 1].distance(target);
-        if let Some(slot) = errors.as_deref_mut().and_then(|e| e.get_mut(iterations)) {
-            *slot = error;
-        }
-        iterations += 1;
-    }
-    Ok(IkResult {
-        reached: error <= tolerance,
-        error,
-        iterations,
-    })
+    let lens = &*lens;
+    Ok(iterate(
+        chain,
+        target,
+        max_iterations,
+        tolerance,
+        errors,
+        |chain| {
+            fabrik_backward(chain, target, lens);
+            chain[0] = root;
+            for i in 1..n {
+                let dir = (chain[i] - chain[i - 1]).normalize_or(Vec3::Y);
+                chain[i] = chain[i - 1] + dir * lens[i - 1];
+            }
+        },
+    ))
 }
