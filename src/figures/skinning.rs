@@ -273,7 +273,6 @@ impl CylinderFigure {
         );
         let mut notes = Vec::new();
         // 9.1: LBS, vertex by vertex.
-        let mut worst: Option<(usize, Vec3, Vec3)> = None;
         let mut failure = None;
         let positions = &self.rig.mesh.positions;
         let mut student = Vec::with_capacity(positions.len());
@@ -295,35 +294,16 @@ impl CylinderFigure {
         match failure {
             Some(f) => notes.push(failure_note("exercise 9.1 lbs_vertex", EXERCISE_FILE, &f)),
             None => {
-                for (v, (s, r)) in student.iter().zip(&self.lbs.positions).enumerate() {
-                    let e = (*s - *r).length();
-                    if (e > TOLERANCE || e.is_nan())
-                        && worst.is_none_or(|(_, a, b)| e > (a - b).length() || e.is_nan())
-                    {
-                        worst = Some((v, *s, *r));
-                    }
-                }
-                match worst {
-                    None => notes.push(format!(
-                        "Your lbs_vertex (9.1) matches the reference at all {} vertices ({at}).",
-                        positions.len()
-                    )),
-                    Some((v, s, r)) => {
-                        let (_, n) = compare_note(
-                            "lbs_vertex (9.1)",
-                            &format!("vertex {v} ({at})"),
-                            &s.to_array(),
-                            &r.to_array(),
-                            TOLERANCE,
-                        );
-                        notes.push(n);
-                    }
-                }
+                notes.push(vertices_note(
+                    "lbs_vertex (9.1)",
+                    &at,
+                    &student,
+                    &self.lbs.positions,
+                ));
                 self.lbs.positions.copy_from_slice(&student);
             }
         }
         // 9.2: the DQS blend, vertex by vertex; the reference applies the blended motion.
-        let mut worst: Option<(usize, Vec3, Vec3)> = None;
         let mut failure = None;
         student.clear();
         for (v, &p) in positions.iter().enumerate() {
@@ -345,30 +325,12 @@ impl CylinderFigure {
                 &f,
             )),
             None => {
-                for (v, (s, r)) in student.iter().zip(&self.dqs.positions).enumerate() {
-                    let e = (*s - *r).length();
-                    if (e > TOLERANCE || e.is_nan())
-                        && worst.is_none_or(|(_, a, b)| e > (a - b).length() || e.is_nan())
-                    {
-                        worst = Some((v, *s, *r));
-                    }
-                }
-                match worst {
-                    None => notes.push(format!(
-                        "Your blend_dual_quats (9.2) matches the reference at all {} vertices ({at}).",
-                        positions.len()
-                    )),
-                    Some((v, s, r)) => {
-                        let (_, n) = compare_note(
-                            "blend_dual_quats (9.2), applied to the vertex,",
-                            &format!("vertex {v} ({at})"),
-                            &s.to_array(),
-                            &r.to_array(),
-                            TOLERANCE,
-                        );
-                        notes.push(n);
-                    }
-                }
+                notes.push(vertices_note(
+                    "blend_dual_quats (9.2), applied to the vertex,",
+                    &at,
+                    &student,
+                    &self.dqs.positions,
+                ));
                 for (dst, s) in self.dqs.positions.iter_mut().zip(&student) {
                     *dst = if s.is_finite() { *s } else { Vec3::ZERO };
                 }
@@ -778,5 +740,34 @@ impl HumanFigure {
             },
             self.clips[self.clip].name()
         )
+    }
+}
+
+/// The note comparing the student's skinned vertices with the reference's: all match, or the
+/// vertex that differs most (a NaN counts as the worst).
+fn vertices_note(what: &str, at: &str, student: &[Vec3], reference: &[Vec3]) -> String {
+    let mut worst: Option<(usize, f32)> = None;
+    for (v, (s, r)) in student.iter().zip(reference).enumerate() {
+        let e = (*s - *r).length();
+        let e = if e.is_nan() { f32::INFINITY } else { e };
+        if e > TOLERANCE && worst.is_none_or(|(_, w)| e > w) {
+            worst = Some((v, e));
+        }
+    }
+    match worst {
+        None => format!(
+            "Your {what} matches the reference at all {} vertices ({at}).",
+            student.len()
+        ),
+        Some((v, _)) => {
+            compare_note(
+                what,
+                &format!("vertex {v} ({at})"),
+                &student[v].to_array(),
+                &reference[v].to_array(),
+                TOLERANCE,
+            )
+            .1
+        }
     }
 }
