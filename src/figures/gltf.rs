@@ -63,6 +63,8 @@ pub struct GltfFigure {
     mode: SkinMode,
     /// Counts loads, so the page knows when to make new GPU meshes.
     generation: u32,
+    /// Scratch: the joints' world matrices this frame.
+    world: Vec<Affine3A>,
     palette: Vec<Affine3A>,
     dual_quats: Vec<DualQuat>,
     /// Why DQS fell back to LBS this frame, if it did.
@@ -269,8 +271,10 @@ impl GltfFigure {
         let meshes = c.skinned.as_mut().map_err(|e| e.clone())?;
         let root = Affine3A::from_mat4(c.imported.root_transform);
         // World matrices of the joints (the nodes above the root included), then K = M · B⁻¹.
-        let world: Vec<Affine3A> = self.model.iter().map(|m| root * *m).collect();
-        skinning_palette(&world, &c.inverse_bind, &mut self.palette).map_err(|e| e.to_string())?;
+        self.world.clear();
+        self.world.extend(self.model.iter().map(|m| root * *m));
+        skinning_palette(&self.world, &c.inverse_bind, &mut self.palette)
+            .map_err(|e| e.to_string())?;
         self.fallback = None;
         let mut dqs = self.mode == SkinMode::Dqs;
         if dqs {
