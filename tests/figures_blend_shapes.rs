@@ -40,3 +40,32 @@ fn the_animation_moves_the_weights_and_the_exercise_note_shows() {
         assert!(note.contains("Not done yet: exercise 10.1"), "{note}");
     }
 }
+
+#[test]
+fn the_eyes_shrink_with_the_face_when_the_full_form_sum_is_not_one() {
+    // The eyes are separate spheres: in the full form with weights summing to s, every face
+    // vertex is scaled by s towards the head's origin, and the eyes must follow or they float off.
+    let eye_positions = |f: &mut FaceFigure| -> Vec<glam::Vec3> {
+        let mut frame = Frame::default();
+        f.draw(&mut frame, MeshId(3), 0.0).unwrap();
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::SPHERE)
+            .map(|m| m.model.w_axis.truncate())
+            .collect()
+    };
+    let mut f = FaceFigure::new();
+    f.set_animate(false);
+    f.set_form("full").unwrap();
+    let whole = eye_positions(&mut f);
+    f.set_base_weight(0.5).unwrap();
+    let w: f32 = f.weights_at(0.0).iter().sum();
+    let scaled = eye_positions(&mut f);
+    assert_eq!(whole.len(), 2);
+    let head = glam::Vec3::new(0.0, 1.2, 0.0);
+    for (a, b) in whole.iter().zip(&scaled) {
+        let expected = head + (*a - head) * (0.5 + w);
+        assert!((*b - expected).length() < 1e-5, "{b} vs {expected}");
+    }
+}

@@ -144,9 +144,13 @@ impl FaceFigure {
         let w = self.weights_at(t);
         let sum: f32 = w.iter().sum();
         let shapes = &self.face.shapes;
+        // How much the full form scales the face towards its origin (1 in the differential form);
+        // the eyes are separate spheres, so they are scaled by hand to stay on the face.
+        let mut face_scale = 1.0;
         let mut note = if self.full {
             let w0 = self.base_weight.unwrap_or(1.0 - sum);
             let total = w0 + sum;
+            face_scale = total;
             shapes
                 .apply_full(
                     &[w0, w[0], w[1], w[2], w[3]],
@@ -212,6 +216,7 @@ impl FaceFigure {
         frame.mesh(mesh, head, Vec3::new(0.85, 0.62, 0.48));
         for x in [-0.27f32, 0.27] {
             let eye = head
+                * Mat4::from_scale(Vec3::splat(face_scale))
                 * Mat4::from_translation(Vec3::new(x, 0.22, 0.72))
                 * Mat4::from_scale(Vec3::splat(0.09));
             frame.mesh(MeshId::SPHERE, eye, palette::DARK);
