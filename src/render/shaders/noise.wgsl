@@ -62,7 +62,42 @@ fn perlin3(p: vec3<f32>) -> f32 {
                 lerp(u, grad(perm_at(ab + 1), x, y - 1.0, z - 1.0), grad(perm_at(bb + 1), x - 1.0, y - 1.0, z - 1.0))));
 }
 
-//SIMPLEX
+// Gustavson's 2D simplex noise (simplexnoise1234), as src/noise/simplex.rs.
+fn grad2s(hash: i32, x: f32, y: f32) -> f32 {
+    let h = hash & 7;
+    let u = select(y, x, h < 4);
+    let v = select(x, y, h < 4);
+    return select(u, -u, (h & 1) != 0) + select(2.0 * v, -2.0 * v, (h & 2) != 0);
+}
+
+fn bump(d: vec2<f32>, hash: i32) -> f32 {
+    let t = 0.5 - dot(d, d);
+    if (t < 0.0) {
+        return 0.0;
+    }
+    let t2 = t * t;
+    return t2 * t2 * grad2s(hash, d.x, d.y);
+}
+
+fn simplex2(p: vec2<f32>) -> f32 {
+    let f2 = 0.366025403;
+    let g2 = 0.211324865;
+    let s = (p.x + p.y) * f2;
+    let i = i32(floor(p.x + s));
+    let j = i32(floor(p.y + s));
+    let t = f32(i + j) * g2;
+    let d0 = p - vec2<f32>(f32(i) - t, f32(j) - t);
+    var o = vec2<i32>(0, 1);
+    if (d0.x > d0.y) {
+        o = vec2<i32>(1, 0);
+    }
+    let d1 = d0 - vec2<f32>(o) + vec2<f32>(g2);
+    let d2 = d0 - vec2<f32>(1.0) + vec2<f32>(2.0 * g2);
+    let n = bump(d0, perm_at(i + perm_at(j)))
+        + bump(d1, perm_at(i + o.x + perm_at(j + o.y)))
+        + bump(d2, perm_at(i + 1 + perm_at(j + 1)));
+    return 45.23 * n;
+}
 
 @fragment
 fn fs_main(@builtin(position) frag: vec4<f32>) -> @location(0) vec4<f32> {
