@@ -23,7 +23,8 @@
 //! | `12-boids`: boids | [`boids`] (rules, force laws, grid) | [`figures::boids`] | `web::boids` (bench: `web::bench_boids`) | [`exercises::boids`] (12.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
-//! palette), [`texture`] (textured quads, sprites and atlases in the draw list), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
+//! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
+//! [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
 //! instance, so a panic there cannot stop the page), `render/` (wgpu, wasm only).
 //!
 //! ## Conventions, stated once

@@ -271,17 +271,16 @@ const vg = await lesson.figure('#fig-gpu');
 if (vg) {
   vg.setCamera(0, 0, 0.1, 5.6, 0, 1.3);
   const scene = new NoiseImagesScene();
-  const p = { cells: 6, z: 0.5, seed: 0, gpu: 'Perlin', lattice: false };
+  const p = { cells: 6, seed: 0, gpu: 'Perlin', lattice: false };
   const state = { accepted: { ...p } };
   const gui = new GUI({ container: document.querySelector('#fig-gpu .panel'), title: 'Noise images' });
   gui.add(p, 'cells', 1, 32, 0.5).name('cells across');
-  gui.add(p, 'z', 0, 10, 0.01).name('z slice (Perlin)');
   gui.add(p, 'seed', 0, 20, 1).name('seed (0: Perlin)');
   gui.add(p, 'gpu', ['Perlin', 'simplex']).name('GPU computes');
   gui.add(p, 'lattice').name('show the lattices');
   let rejected = '';
   const apply = () => {
-    rejected = tryApply(gui, p, state, () => scene.setParams(p.cells, p.z, p.seed));
+    rejected = tryApply(gui, p, state, () => scene.setParams(p.cells, p.seed));
     scene.setGpuSimplex(p.gpu === 'simplex');
     scene.setLattice(p.lattice);
   };

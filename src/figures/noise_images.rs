@@ -23,6 +23,7 @@ pub struct GpuNoiseSpec {
     pub origin: [f32; 2],
     /// Noise units per texel (rows run downwards, +y).
     pub step: [f32; 2],
+    /// The slice of Perlin's 3D noise (0: the 2D noise).
     pub z: f32,
     pub simplex: bool,
 }
@@ -74,8 +75,6 @@ pub struct NoiseImages {
     seed: u32,
     /// Noise cells across an image.
     cells: f32,
-    /// Slice of the 3D noises (time, if you like).
-    z: f32,
     gpu_kind: NoiseKind,
     lattice: bool,
     images: [Vec<u8>; 2],
@@ -99,7 +98,6 @@ impl NoiseImages {
             perm: Permutation::perlin(),
             seed: 0,
             cells: 6.0,
-            z: 0.0,
             gpu_kind: NoiseKind::Perlin,
             lattice: false,
             images: [image(), image()],
@@ -110,10 +108,9 @@ impl NoiseImages {
         s
     }
 
-    /// Cells across an image (1 to 32), the z slice (0 to 10), the seed (0: Perlin's table).
-    pub fn set_params(&mut self, cells: f32, z: f32, seed: f32) -> Result<(), String> {
+    /// Cells across an image (1 to 32) and the seed (0: Perlin's table).
+    pub fn set_params(&mut self, cells: f32, seed: f32) -> Result<(), String> {
         let cells = in_range("cells", cells, 1.0, 32.0)?;
-        let z = in_range("z", z, 0.0, 10.0)?;
         let seed = in_range("seed", seed, 0.0, 1e6)?;
         if seed.fract() != 0.0 {
             return Err(format!("seed must be a whole number, got {seed}"));
@@ -122,7 +119,7 @@ impl NoiseImages {
             self.seed = seed as u32;
             self.perm = permutation_for_seed(self.seed);
         }
-        (self.cells, self.z) = (cells, z);
+        self.cells = cells;
         self.regenerate();
         Ok(())
     }
@@ -137,13 +134,13 @@ impl NoiseImages {
     }
 
     /// The noise value at texel `(i, j)` (row `j` from the top), as the shader computes it:
-    /// Perlin's 3D noise on the slice `z`, or 2D simplex noise (which ignores `z`).
+    /// 2D Perlin noise (the reference's 3D noise on the plane z = 0) or 2D simplex noise.
     pub fn value(&self, kind: NoiseKind, i: usize, j: usize) -> f32 {
         let s = self.spec();
         let x = s.origin[0] + (i as f32 + 0.5) * s.step[0];
         let y = s.origin[1] + (j as f32 + 0.5) * s.step[1];
         match kind {
-            NoiseKind::Perlin => self.perm.noise3(x, y, self.z),
+            NoiseKind::Perlin => self.perm.noise3(x, y, 0.0),
             NoiseKind::Simplex => self.perm.simplex2(x, y),
         }
     }
@@ -184,7 +181,7 @@ impl NoiseImages {
         GpuNoiseSpec {
             origin: [0.0, 0.0],
             step: [step, step],
-            z: self.z,
+            z: 0.0,
             simplex: self.gpu_kind == NoiseKind::Simplex,
         }
     }
@@ -242,11 +239,10 @@ impl NoiseImages {
             self.draw_lattices(frame);
         }
         format!(
-            "{} noise cells across each image, seed {}; Perlin's slice z = {} (the simplex images \
-             are 2D). Perlin's cells are squares, simplex noise's are triangles (a skewed grid).",
+            "{} noise cells across each image, seed {}. Perlin's cells are squares, simplex \
+             noise's are triangles (a skewed grid); Perlin noise is 0 at every lattice point.",
             format_number(self.cells),
             self.seed,
-            format_number(self.z)
         )
     }
 

@@ -2,7 +2,7 @@
 //! the smoke atlas (`particles::sprites`) over their life, alpha-blended, sorted back to front
 //! or not (to show why sorting matters), with the atlas itself shown beside the column.
 
-use super::{format_number, in_range, palette, Frame};
+use super::{format_number, in_range, palette, Frame, MeshId};
 use crate::noise::Permutation;
 use crate::particles::sprites::{fill_smoke_atlas, sort_back_to_front, SMOKE_ATLAS};
 use crate::texture::{SpriteInstance, TextureId, UvRect};
@@ -157,6 +157,10 @@ impl SmokeFigure {
                 * Mat4::from_rotation_x(std::f32::consts::FRAC_PI_2)
                 * Mat4::from_scale(Vec3::splat(0.7));
             frame.textured_quad(atlas, model, UvRect::FULL);
+            // A dark board behind it: the light, half-transparent puffs show against it.
+            let board = Mat4::from_translation(ATLAS_AT - Vec3::Z * 0.03)
+                * Mat4::from_scale(Vec3::new(0.74, 0.74, 0.01));
+            frame.mesh(MeshId::CUBE, board, palette::DARK);
             frame.label(
                 ATLAS_AT + Vec3::new(0.0, 0.85, 0.0),
                 "the atlas: 16 frames",

@@ -35,10 +35,10 @@ impl NoiseImagesScene {
             check: String::new(),
         }
     }
-    /// Cells across an image (1 to 32), Perlin's z slice (0 to 10), seed (0: Perlin's table).
+    /// Cells across an image (1 to 32) and the seed (0: Perlin's table).
     #[wasm_bindgen(js_name = setParams)]
-    pub fn set_params(&mut self, cells: f32, z: f32, seed: f32) -> Result<(), JsError> {
-        self.scene.set_params(cells, z, seed).map_err(js)
+    pub fn set_params(&mut self, cells: f32, seed: f32) -> Result<(), JsError> {
+        self.scene.set_params(cells, seed).map_err(js)
     }
     /// What the GPU computes: simplex (2D) or Perlin.
     #[wasm_bindgen(js_name = setGpuSimplex)]
