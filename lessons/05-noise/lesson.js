@@ -241,7 +241,7 @@ if (v5) {
 // Figure 6: procedural textures.
 const v6 = await lesson.figure('#fig-textures');
 if (v6) {
-  v6.setCamera(0, 0, 0.1, 5.6, 0, 1.3);
+  v6.setCamera(0.5, 0, 0.1, 5.8, 0, 1.3);
   const scene = new TexturesScene();
   const p = { scale: 4, turbulence: 5, n: 4, animate: false };
   const state = { accepted: { ...p } };
@@ -269,13 +269,12 @@ if (v6) {
 // Figure 7: Perlin and simplex noise, on the CPU and on the GPU (WGSL), with the GPU check.
 const vg = await lesson.figure('#fig-gpu');
 if (vg) {
-  vg.setCamera(0, 0, 0.1, 5.6, 0, 1.3);
+  vg.setCamera(0.5, 0, 0.1, 5.8, 0, 1.3);
   const scene = new NoiseImagesScene();
   const p = { cells: 6, seed: 0, gpu: 'Perlin', lattice: false };
   const state = { accepted: { ...p } };
   const gui = new GUI({ container: document.querySelector('#fig-gpu .panel'), title: 'Noise images' });
   gui.add(p, 'cells', 1, 32, 0.5).name('cells across');
-  gui.add(p, 'seed', 0, 20, 1).name('seed (0: Perlin)');
   gui.add(p, 'gpu', ['Perlin', 'simplex']).name('GPU computes');
   gui.add(p, 'lattice').name('show the lattices');
   let rejected = '';

@@ -833,7 +833,7 @@ impl TerrainFigure for TerrainScene {
 // Figure 6: procedural textures.
 
 /// Texels per side of each of Figure 6's textures.
-pub const TEXTURE_SIZE: usize = 160;
+pub const TEXTURE_SIZE: usize = 128;
 
 /// Figure 6: marble, wood and clouds, each written into an RGBA buffer and shown by the renderer
 /// as a texture on a square (uploaded once, then rewritten in place when a parameter changes).

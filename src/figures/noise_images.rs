@@ -223,13 +223,11 @@ impl NoiseImages {
         let names = [
             "Perlin (CPU)".to_string(),
             "simplex (CPU)".to_string(),
-            format!(
-                "{} (GPU, WGSL)",
-                match self.gpu_kind {
-                    NoiseKind::Perlin => "Perlin",
-                    NoiseKind::Simplex => "2D simplex",
-                }
-            ),
+            match self.gpu_kind {
+                NoiseKind::Perlin => "Perlin (GPU)",
+                NoiseKind::Simplex => "simplex (GPU)",
+            }
+            .to_string(),
         ];
         for ((&x, texture), name) in PLACES.iter().zip(textures).zip(&names) {
             frame.textured_quad(texture, Mat4::from_translation(Vec3::new(x, 0.0, 0.0)), UvRect::FULL);
@@ -239,10 +237,14 @@ impl NoiseImages {
             self.draw_lattices(frame);
         }
         format!(
-            "{} noise cells across each image, seed {}. Perlin's cells are squares, simplex \
-             noise's are triangles (a skewed grid); Perlin noise is 0 at every lattice point.",
+            "{} noise cells across each image, {}. Perlin's cells are squares, simplex noise's are \
+             triangles (a skewed grid); Perlin noise is 0 at every lattice point.",
             format_number(self.cells),
-            self.seed,
+            if self.seed == 0 {
+                "Perlin's permutation".to_string()
+            } else {
+                format!("the permutation of seed {}", self.seed)
+            },
         )
     }
 
