@@ -14,7 +14,7 @@ fn the_column_is_sorted_back_to_front_or_left_in_storage_order() {
     let note = s.draw(&mut f, TextureId(7), eye, 1.3).unwrap();
     assert!(note.contains("back to front"));
     assert_eq!(f.sprite_texture, Some(TextureId(7)));
-    assert_eq!(f.sprites.len(), 40);
+    assert_eq!(f.sprites.len(), 30);
     let dist = |f: &Frame| -> Vec<f32> {
         f.sprites.iter().map(|p| (Vec3::from(p.center) - eye).length()).collect()
     };

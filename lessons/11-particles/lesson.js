@@ -138,19 +138,16 @@ if (spriteViewer) {
   spriteViewer.setCamera(-0.4, 1.1, 0, 6.0, 0.25, 0.15);
   const scene = new SmokeScene();
   const timeline = new Timeline(document.getElementById('sprites-timeline'), { duration: 8 });
-  const p = { puffs: 40, lifetime: 4, sort: true, animate: true, atlas: true };
+  const p = { puffs: 30, sort: true, animate: true };
   const gui = new GUI({ container: document.querySelector('#fig-sprites .panel'), title: 'Sprites' });
-  gui.add(p, 'puffs', 1, 200, 1).name('puffs');
-  gui.add(p, 'lifetime', 0.5, 10, 0.1).name('lifetime (s)');
+  gui.add(p, 'puffs', 1, 80, 1).name('puffs');
   gui.add(p, 'sort').name('sort back to front');
   gui.add(p, 'animate').name('play the atlas');
-  gui.add(p, 'atlas').name('show the atlas');
   let rejected = '';
   const apply = guarded(gui, p, () => {
-    scene.setParams(p.puffs, p.lifetime);
+    scene.setParams(p.puffs, 4);
     scene.setSort(p.sort);
     scene.setAnimateFrames(p.animate);
-    scene.setShowAtlas(p.atlas);
   }, (m) => { rejected = m; });
   gui.onChange(apply);
   apply();

@@ -263,7 +263,7 @@ impl EmitterFigure {
                 let life = sys.ages[i] / sys.lifetimes[i].max(1e-6);
                 frame.sprites.push(SpriteInstance {
                     center: sys.positions[i].to_array(),
-                    half_size: 2.5 * sys.sizes[i],
+                    half_size: 1.8 * sys.sizes[i],
                     uv: SMOKE_ATLAS.frame_at(life).to_array(),
                     color: color.to_array(),
                 });

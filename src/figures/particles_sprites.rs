@@ -51,7 +51,7 @@ impl SmokeFigure {
     pub fn new() -> Self {
         Self {
             atlas: smoke_atlas_image(),
-            puffs: 40,
+            puffs: 30,
             lifetime_sec: 4.0,
             sort: true,
             animate_frames: true,
@@ -146,7 +146,7 @@ impl SmokeFigure {
             let alpha = (s / 0.1).min(1.0);
             frame.sprites.push(SpriteInstance {
                 center: p.to_array(),
-                half_size: 0.3 + 0.5 * s,
+                half_size: 0.25 + 0.4 * s,
                 uv: uv.to_array(),
                 color: Vec4::new(0.3, 0.3, 0.33, alpha).to_array(),
             });
