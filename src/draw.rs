@@ -8,8 +8,8 @@
 //! Colours are linear RGB in `[0, 1]`; the named colours of the course are in [`palette`], and
 //! `www/palette.css` gives the same colours to the words of the text.
 
-use glam::{Mat4, Quat, Vec3, Vec4};
 pub use crate::texture::{SpriteInstance, TextureId, TexturedQuad, UvRect};
+use glam::{Mat4, Quat, Vec3, Vec4};
 
 /// A mesh known to a renderer. The first three are created by every renderer, in this order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -289,11 +289,22 @@ impl Frame {
         }
         for q in &self.quads {
             eat(q.texture.0 as u32);
-            q.model.to_cols_array().iter().for_each(|x| eat(x.to_bits()));
-            q.tint.to_array().iter().chain(&q.uv.to_array()).for_each(|x| eat(x.to_bits()));
+            q.model
+                .to_cols_array()
+                .iter()
+                .for_each(|x| eat(x.to_bits()));
+            q.tint
+                .to_array()
+                .iter()
+                .chain(&q.uv.to_array())
+                .for_each(|x| eat(x.to_bits()));
         }
         for s in &self.sprites {
-            s.center.iter().chain(&s.uv).chain(&s.color).for_each(|x| eat(x.to_bits()));
+            s.center
+                .iter()
+                .chain(&s.uv)
+                .chain(&s.color)
+                .for_each(|x| eat(x.to_bits()));
             eat(s.half_size.to_bits());
         }
         eat(self.sprite_texture.map_or(u32::MAX, |t| t.0 as u32));

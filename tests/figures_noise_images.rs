@@ -48,12 +48,22 @@ fn gpu_images_that_agree_pass_and_others_fail() {
         s.set_gpu_kind(kind);
         let ok = s.compare_gpu(&packed_image(&s, kind, 0.0)).unwrap();
         assert!(ok.matches(), "{ok:?}");
-        assert!(ok.max_error <= 2.0 / 65535.0, "only the 16-bit rounding: {ok:?}");
+        assert!(
+            ok.max_error <= 2.0 / 65535.0,
+            "only the 16-bit rounding: {ok:?}"
+        );
         assert!(ok.note("WebGL2").contains("matches"));
         // The other noise is not a match.
-        let other = if kind == NoiseKind::Perlin { NoiseKind::Simplex } else { NoiseKind::Perlin };
+        let other = if kind == NoiseKind::Perlin {
+            NoiseKind::Simplex
+        } else {
+            NoiseKind::Perlin
+        };
         let bad = s.compare_gpu(&packed_image(&s, other, 0.0)).unwrap();
-        assert!(!bad.matches() && bad.note("WebGPU").contains("DIFFERS"), "{bad:?}");
+        assert!(
+            !bad.matches() && bad.note("WebGPU").contains("DIFFERS"),
+            "{bad:?}"
+        );
     }
     // One texel off by 1e-3 is found, with its place.
     s.set_gpu_kind(NoiseKind::Perlin);
@@ -80,7 +90,11 @@ fn parameters_are_checked_and_change_the_images() {
     assert!(s.set_params(6.0, 1.5).unwrap_err().contains("whole"));
     assert!(s.set_params(100.0, 0.0).unwrap_err().contains("cells"));
     s.set_params(6.0, 3.0).unwrap();
-    assert_ne!(s.table(), Permutation::perlin().table(), "a seed shuffles the table");
+    assert_ne!(
+        s.table(),
+        Permutation::perlin().table(),
+        "a seed shuffles the table"
+    );
 }
 
 #[test]
@@ -101,7 +115,10 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
     assert!(triangles.len() > 50);
     for (a, b) in triangles {
         for p in [a, b] {
-            assert!(p.x >= -1.0 - 1e-4 && p.x <= 1.0 + 1e-4 && p.z.abs() <= 1.0 + 1e-4, "{p}");
+            assert!(
+                p.x >= -1.0 - 1e-4 && p.x <= 1.0 + 1e-4 && p.z.abs() <= 1.0 + 1e-4,
+                "{p}"
+            );
         }
     }
 }

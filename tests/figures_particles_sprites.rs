@@ -16,16 +16,30 @@ fn the_column_is_sorted_back_to_front_or_left_in_storage_order() {
     assert_eq!(f.sprite_texture, Some(TextureId(7)));
     assert_eq!(f.sprites.len(), 30);
     let dist = |f: &Frame| -> Vec<f32> {
-        f.sprites.iter().map(|p| (Vec3::from(p.center) - eye).length()).collect()
+        f.sprites
+            .iter()
+            .map(|p| (Vec3::from(p.center) - eye).length())
+            .collect()
     };
     assert!(dist(&f).windows(2).all(|w| w[0] >= w[1]), "farthest first");
     s.set_sort(false);
     let mut g = Frame::default();
     s.draw(&mut g, TextureId(7), eye, 1.3).unwrap();
-    assert!(!dist(&g).windows(2).all(|w| w[0] >= w[1]), "storage order is not depth order");
+    assert!(
+        !dist(&g).windows(2).all(|w| w[0] >= w[1]),
+        "storage order is not depth order"
+    );
     // The same puffs either way.
-    let mut a: Vec<[u32; 3]> = f.sprites.iter().map(|p| p.center.map(f32::to_bits)).collect();
-    let mut b: Vec<[u32; 3]> = g.sprites.iter().map(|p| p.center.map(f32::to_bits)).collect();
+    let mut a: Vec<[u32; 3]> = f
+        .sprites
+        .iter()
+        .map(|p| p.center.map(f32::to_bits))
+        .collect();
+    let mut b: Vec<[u32; 3]> = g
+        .sprites
+        .iter()
+        .map(|p| p.center.map(f32::to_bits))
+        .collect();
     a.sort();
     b.sort();
     assert_eq!(a, b);
@@ -39,8 +53,15 @@ fn puffs_play_the_atlas_over_their_life_and_show_it() {
     s.draw(&mut f, TextureId(0), Vec3::Z * 5.0, 2.0).unwrap();
     let frames: std::collections::BTreeSet<[u32; 4]> =
         f.sprites.iter().map(|p| p.uv.map(f32::to_bits)).collect();
-    assert!(frames.len() > 8, "many atlas frames at once: {}", frames.len());
-    assert!(f.sprites.iter().all(|p| p.uv[2] - p.uv[0] == 0.25 && p.uv[3] - p.uv[1] == 0.25));
+    assert!(
+        frames.len() > 8,
+        "many atlas frames at once: {}",
+        frames.len()
+    );
+    assert!(f
+        .sprites
+        .iter()
+        .all(|p| p.uv[2] - p.uv[0] == 0.25 && p.uv[3] - p.uv[1] == 0.25));
     assert_eq!(f.quads.len(), 1, "the atlas is shown");
     s.set_animate_frames(false);
     s.set_show_atlas(false);
@@ -56,8 +77,13 @@ fn bad_input_is_refused() {
     assert!(s.set_params(0.0, 4.0).unwrap_err().contains("puffs"));
     assert!(s.set_params(201.0, 4.0).unwrap_err().contains("puffs"));
     assert!(s.set_params(10.5, 4.0).unwrap_err().contains("whole"));
-    assert!(s.set_params(10.0, f32::NAN).unwrap_err().contains("lifetime"));
-    assert!(s.draw(&mut Frame::default(), TextureId(0), Vec3::Z, f32::NAN).is_err());
+    assert!(s
+        .set_params(10.0, f32::NAN)
+        .unwrap_err()
+        .contains("lifetime"));
+    assert!(s
+        .draw(&mut Frame::default(), TextureId(0), Vec3::Z, f32::NAN)
+        .is_err());
     s.set_params(200.0, 1.0).unwrap();
     let mut f = Frame::default();
     s.draw(&mut f, TextureId(0), Vec3::Z, 0.5).unwrap();
@@ -77,6 +103,10 @@ fn emitter_particles_become_atlas_sprites_once_a_texture_is_given() {
     assert_eq!(g.sprites.len(), f.points.len());
     assert!(g.points.is_empty());
     assert_eq!(g.sprite_texture, Some(TextureId(2)));
-    let d: Vec<f32> = g.sprites.iter().map(|p| (Vec3::from(p.center) - eye).length()).collect();
+    let d: Vec<f32> = g
+        .sprites
+        .iter()
+        .map(|p| (Vec3::from(p.center) - eye).length())
+        .collect();
     assert!(d.windows(2).all(|w| w[0] >= w[1] - 1e-5), "farthest first");
 }

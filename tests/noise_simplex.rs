@@ -13,8 +13,17 @@ fn reference() -> Vec<(f32, f32, Option<f32>, f32)> {
         .filter(|l| !l.starts_with('#') && !l.is_empty())
         .map(|l| {
             let c: Vec<&str> = l.split(',').collect();
-            let z = if c[2] == "-" { None } else { Some(c[2].parse().unwrap()) };
-            (c[0].parse().unwrap(), c[1].parse().unwrap(), z, c[3].parse().unwrap())
+            let z = if c[2] == "-" {
+                None
+            } else {
+                Some(c[2].parse().unwrap())
+            };
+            (
+                c[0].parse().unwrap(),
+                c[1].parse().unwrap(),
+                z,
+                c[3].parse().unwrap(),
+            )
         })
         .collect()
 }
@@ -37,7 +46,10 @@ fn matches_gustavsons_simplexnoise1234() {
             }
         };
         // The reference computes in float32 too; only the order of a few roundings differs.
-        assert!((got - want).abs() < 2e-5, "({x}, {y}, {z:?}): {got} vs {want}");
+        assert!(
+            (got - want).abs() < 2e-5,
+            "({x}, {y}, {z:?}): {got} vs {want}"
+        );
     }
     assert_eq!((n2, n3), (200, 200));
 }

@@ -25,7 +25,11 @@ fn every_frame_is_clear_on_its_border_and_dense_inside() {
     for frame in 0..16 {
         for k in 0..SIDE {
             for (i, j) in [(k, 0), (k, SIDE - 1), (0, k), (SIDE - 1, k)] {
-                assert_eq!(alpha(&rgba, frame, i, j), 0, "frame {frame} border ({i}, {j})");
+                assert_eq!(
+                    alpha(&rgba, frame, i, j),
+                    0,
+                    "frame {frame} border ({i}, {j})"
+                );
             }
         }
         let centre = alpha(&rgba, frame, SIDE / 2, SIDE / 2);
@@ -42,10 +46,24 @@ fn the_puff_grows_and_thins_out_over_its_life() {
     };
     let peak = |frame| texels(frame).max().unwrap();
     let covered = |frame| texels(frame).filter(|&a| a > 0).count();
-    assert!(2 * peak(15) < peak(0), "fainter: {} vs {}", peak(0), peak(15));
-    assert!(covered(15) > covered(0), "larger: {} vs {}", covered(0), covered(15));
+    assert!(
+        2 * peak(15) < peak(0),
+        "fainter: {} vs {}",
+        peak(0),
+        peak(15)
+    );
+    assert!(
+        covered(15) > covered(0),
+        "larger: {} vs {}",
+        covered(0),
+        covered(15)
+    );
     let perm = Permutation::perlin();
-    assert_eq!(smoke_opacity(&perm, Vec2::new(0.7, 0.0), 0.0), 0.0, "outside the young puff");
+    assert_eq!(
+        smoke_opacity(&perm, Vec2::new(0.7, 0.0), 0.0),
+        0.0,
+        "outside the young puff"
+    );
 }
 
 #[test]
@@ -53,7 +71,9 @@ fn atlas_sizes_are_checked() {
     let perm = Permutation::perlin();
     assert!(fill_smoke_atlas(&perm, 2, &mut vec![0; 4 * 64]).is_err());
     assert!(fill_smoke_atlas(&perm, MAX_FRAME_SIDE + 1, &mut []).is_err());
-    assert!(fill_smoke_atlas(&perm, 8, &mut vec![0; 10]).unwrap_err().contains("bytes"));
+    assert!(fill_smoke_atlas(&perm, 8, &mut vec![0; 10])
+        .unwrap_err()
+        .contains("bytes"));
 }
 
 proptest! {

@@ -8,9 +8,9 @@ use super::{compare_note, failure_note, format_number, in_range, palette, Frame,
 use crate::exercises::run;
 use crate::noise::fractals::{koch_snowflake, sierpinski, MAX_DEPTH};
 use crate::noise::texture::{fill_rgba, TextureKind, TextureParams};
-use crate::texture::{TextureId, UvRect};
 use crate::noise::{cell2, fade, fade_derivative, grad1, grad2, Fractal, Permutation};
 use crate::terrain::{terrain_normal, Terrain, TerrainParams, Variant, MAX_RESOLUTION};
+use crate::texture::{TextureId, UvRect};
 use glam::{Mat4, Vec2, Vec3};
 
 const FILE: &str = "src/exercises/noise.rs";
@@ -935,7 +935,11 @@ impl Textures {
     pub fn draw(&self, frame: &mut Frame, textures: &[TextureId]) -> String {
         for (i, (&texture, (_, name))) in textures.iter().zip(TEXTURE_KINDS).enumerate() {
             let x = (i as f32 - 1.0) * 2.3;
-            frame.textured_quad(texture, Mat4::from_translation(Vec3::new(x, 0.0, 0.0)), UvRect::FULL);
+            frame.textured_quad(
+                texture,
+                Mat4::from_translation(Vec3::new(x, 0.0, 0.0)),
+                UvRect::FULL,
+            );
             frame.label(Vec3::new(x, 0.0, 1.2), name, palette::DARK);
         }
         format!(

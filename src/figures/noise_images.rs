@@ -52,7 +52,11 @@ impl GpuComparison {
                 NoiseKind::Perlin => "Perlin",
                 NoiseKind::Simplex => "2D simplex",
             },
-            if self.matches() { "matches" } else { "DIFFERS from" },
+            if self.matches() {
+                "matches"
+            } else {
+                "DIFFERS from"
+            },
             self.texels,
             format_number(self.max_error),
             self.worst.0,
@@ -146,7 +150,10 @@ impl NoiseImages {
     }
 
     fn regenerate(&mut self) {
-        for (k, kind) in [NoiseKind::Perlin, NoiseKind::Simplex].into_iter().enumerate() {
+        for (k, kind) in [NoiseKind::Perlin, NoiseKind::Simplex]
+            .into_iter()
+            .enumerate()
+        {
             for j in 0..IMAGE_SIZE {
                 for i in 0..IMAGE_SIZE {
                     let v = self.value(kind, i, j);
@@ -230,7 +237,11 @@ impl NoiseImages {
             .to_string(),
         ];
         for ((&x, texture), name) in PLACES.iter().zip(textures).zip(&names) {
-            frame.textured_quad(texture, Mat4::from_translation(Vec3::new(x, 0.0, 0.0)), UvRect::FULL);
+            frame.textured_quad(
+                texture,
+                Mat4::from_translation(Vec3::new(x, 0.0, 0.0)),
+                UvRect::FULL,
+            );
             frame.label(Vec3::new(x, 0.0, 1.2), name.as_str(), palette::DARK);
         }
         if self.lattice {
@@ -254,13 +265,25 @@ impl NoiseImages {
         let lift = 0.01;
         // Image point (x, y) in noise units -> world on the square at `cx`.
         let world = |cx: f32, x: f32, y: f32| {
-            Vec3::new(cx - 1.0 + 2.0 * x / self.cells, lift, -1.0 + 2.0 * y / self.cells)
+            Vec3::new(
+                cx - 1.0 + 2.0 * x / self.cells,
+                lift,
+                -1.0 + 2.0 * y / self.cells,
+            )
         };
         let n = self.cells.ceil() as i32;
         for k in 0..=n {
             let t = (k as f32).min(self.cells);
-            frame.line(world(PLACES[0], t, 0.0), world(PLACES[0], t, self.cells), palette::ORANGE);
-            frame.line(world(PLACES[0], 0.0, t), world(PLACES[0], self.cells, t), palette::ORANGE);
+            frame.line(
+                world(PLACES[0], t, 0.0),
+                world(PLACES[0], t, self.cells),
+                palette::ORANGE,
+            );
+            frame.line(
+                world(PLACES[0], 0.0, t),
+                world(PLACES[0], self.cells, t),
+                palette::ORANGE,
+            );
         }
         // Simplex: lines i = const, j = const and i − j = const of the skewed grid, clipped to
         // the square [0, cells]² by sampling (short segments keep it simple and exact enough).
@@ -269,12 +292,17 @@ impl NoiseImages {
             let t = (i + j) * g2;
             (i - t, j - t)
         };
-        let inside = |(x, y): (f32, f32)| (0.0..=self.cells).contains(&x) && (0.0..=self.cells).contains(&y);
+        let inside =
+            |(x, y): (f32, f32)| (0.0..=self.cells).contains(&x) && (0.0..=self.cells).contains(&y);
         let m = (2.0 * self.cells).ceil() as i32 + 2;
         let steps = 4 * m;
         let mut segment = |a: (f32, f32), b: (f32, f32)| {
             if inside(a) && inside(b) {
-                frame.line(world(PLACES[1], a.0, a.1), world(PLACES[1], b.0, b.1), palette::TEAL);
+                frame.line(
+                    world(PLACES[1], a.0, a.1),
+                    world(PLACES[1], b.0, b.1),
+                    palette::TEAL,
+                );
             }
         };
         for c in -m..=m {

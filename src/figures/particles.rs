@@ -15,13 +15,13 @@ use super::{
     DEFAULT_RUNNER,
 };
 use crate::draw::PointInstance;
-use crate::particles::sprites::{sort_back_to_front, SMOKE_ATLAS};
-use crate::texture::{SpriteInstance, TextureId};
 use crate::exercises::run;
+use crate::particles::sprites::{sort_back_to_front, SMOKE_ATLAS};
 use crate::particles::{
     floor_time_of_impact, free_fall, free_fall_errors, Emitter, FreeFallError, Integrator,
     ParticleSystem, Sphere, SquashBall, Surfaces, VelocityDist,
 };
+use crate::texture::{SpriteInstance, TextureId};
 use glam::{Mat4, Vec3, Vec4};
 
 const FILE: &str = "src/exercises/particles.rs";

@@ -130,8 +130,7 @@ impl SmokeFigure {
             sort_back_to_front(&mut self.order, &self.positions, eye);
         } else {
             self.order.clear();
-            self.order
-                .extend((0..self.puffs as u32).map(|i| (0.0, i)));
+            self.order.extend((0..self.puffs as u32).map(|i| (0.0, i)));
         }
         frame.sprite_texture = Some(atlas);
         for &(_, k) in &self.order {
@@ -171,7 +170,11 @@ impl SmokeFigure {
             "{} puffs, each living {} s and playing {} of the atlas's {} frames; drawn {}.",
             self.puffs,
             format_number(self.lifetime_sec),
-            if self.animate_frames { "all" } else { "the first" },
+            if self.animate_frames {
+                "all"
+            } else {
+                "the first"
+            },
             SMOKE_ATLAS.frames(),
             if self.sort {
                 "back to front (sorted by distance from the camera every frame)"

@@ -180,7 +180,12 @@ impl Textured {
         let noise_size = std::mem::size_of::<NoiseUniform>() as u64;
         let noise_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("noise"),
-            entries: &[uniform_entry(0, false, noise_size, wgpu::ShaderStages::FRAGMENT)],
+            entries: &[uniform_entry(
+                0,
+                false,
+                noise_size,
+                wgpu::ShaderStages::FRAGMENT,
+            )],
         });
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("texture"),
@@ -212,47 +217,48 @@ impl Textured {
         let sprite_attributes = wgpu::vertex_attr_array![
             0 => Float32x3, 1 => Float32, 2 => Float32x4, 3 => Float32x4
         ];
-        let scene_pipeline = |label: &str,
-                              layout: &wgpu::PipelineLayout,
-                              module: &wgpu::ShaderModule,
-                              buffers: &[Option<wgpu::VertexBufferLayout>]| {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(label),
-                layout: Some(layout),
-                vertex: wgpu::VertexState {
-                    module,
-                    entry_point: Some("vs_main"),
-                    compilation_options: Default::default(),
-                    buffers,
-                },
-                primitive: wgpu::PrimitiveState::default(),
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    // Sprites write depth too, as the point sprites do: that is why unsorted
-                    // transparent sprites hide the ones behind them (lesson 11).
-                    depth_write_enabled: Some(true),
-                    depth_compare: Some(wgpu::CompareFunction::LessEqual),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
-                multisample: wgpu::MultisampleState {
-                    count: SAMPLE_COUNT,
-                    ..Default::default()
-                },
-                fragment: Some(wgpu::FragmentState {
-                    module,
-                    entry_point: Some("fs_main"),
-                    compilation_options: Default::default(),
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format,
-                        blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-                        write_mask: wgpu::ColorWrites::ALL,
-                    })],
-                }),
-                multiview_mask: None,
-                cache: None,
-            })
-        };
+        let scene_pipeline =
+            |label: &str,
+             layout: &wgpu::PipelineLayout,
+             module: &wgpu::ShaderModule,
+             buffers: &[Option<wgpu::VertexBufferLayout>]| {
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some(label),
+                    layout: Some(layout),
+                    vertex: wgpu::VertexState {
+                        module,
+                        entry_point: Some("vs_main"),
+                        compilation_options: Default::default(),
+                        buffers,
+                    },
+                    primitive: wgpu::PrimitiveState::default(),
+                    depth_stencil: Some(wgpu::DepthStencilState {
+                        format: DEPTH_FORMAT,
+                        // Sprites write depth too, as the point sprites do: that is why unsorted
+                        // transparent sprites hide the ones behind them (lesson 11).
+                        depth_write_enabled: Some(true),
+                        depth_compare: Some(wgpu::CompareFunction::LessEqual),
+                        stencil: Default::default(),
+                        bias: Default::default(),
+                    }),
+                    multisample: wgpu::MultisampleState {
+                        count: SAMPLE_COUNT,
+                        ..Default::default()
+                    },
+                    fragment: Some(wgpu::FragmentState {
+                        module,
+                        entry_point: Some("fs_main"),
+                        compilation_options: Default::default(),
+                        targets: &[Some(wgpu::ColorTargetState {
+                            format,
+                            blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                            write_mask: wgpu::ColorWrites::ALL,
+                        })],
+                    }),
+                    multiview_mask: None,
+                    cache: None,
+                })
+            };
         let quad_pipeline = scene_pipeline(
             "quad",
             &layout(&[
@@ -526,7 +532,13 @@ impl Renderer {
             );
             self.textured.textures[id.0] = fresh;
         }
-        write_rgba(gpu, &self.textured.textures[id.0].texture, width, height, rgba);
+        write_rgba(
+            gpu,
+            &self.textured.textures[id.0].texture,
+            width,
+            height,
+            rgba,
+        );
         Ok(())
     }
 
@@ -559,15 +571,26 @@ impl Renderer {
         image: &NoiseImage,
     ) -> Result<(), String> {
         if table.len() != 256 {
-            return Err(format!("a permutation has 256 entries, got {}", table.len()));
+            return Err(format!(
+                "a permutation has 256 entries, got {}",
+                table.len()
+            ));
         }
         let t = self.textured.texture(id)?;
         if !t.encoded_srgb {
-            return Err(format!("texture {} is an uploaded image, not a shader's target", id.0));
+            return Err(format!(
+                "texture {} is an uploaded image, not a shader's target",
+                id.0
+            ));
         }
         let mut uniform = NoiseUniform {
             perm: [0; 256],
-            area: [image.origin[0], image.origin[1], image.step[0], image.step[1]],
+            area: [
+                image.origin[0],
+                image.origin[1],
+                image.step[0],
+                image.step[1],
+            ],
             params: [
                 image.z,
                 if image.packed { 1.0 } else { 0.0 },
@@ -578,8 +601,11 @@ impl Renderer {
         for (dst, &src) in uniform.perm.iter_mut().zip(table) {
             *dst = src as u32;
         }
-        gpu.queue
-            .write_buffer(&self.textured.noise_uniform, 0, bytemuck::bytes_of(&uniform));
+        gpu.queue.write_buffer(
+            &self.textured.noise_uniform,
+            0,
+            bytemuck::bytes_of(&uniform),
+        );
         let view = t.texture.create_view(&Default::default());
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         {
@@ -674,7 +700,10 @@ impl PendingRead {
         let _ = gpu.device.poll(wgpu::PollType::Poll);
         let result = self.done.take()?;
         Some(result.and_then(|()| {
-            let mapped = self.buffer.get_mapped_range(..).map_err(|e| e.to_string())?;
+            let mapped = self
+                .buffer
+                .get_mapped_range(..)
+                .map_err(|e| e.to_string())?;
             let row = (self.width * 4) as usize;
             let mut pixels = Vec::with_capacity(mapped.len());
             for r in mapped.chunks(self.padded_row as usize) {

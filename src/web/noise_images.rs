@@ -67,7 +67,9 @@ impl NoiseImagesScene {
             Some(ids) => {
                 if self.scene.take_dirty() {
                     for (&id, rgba) in ids.iter().zip(self.scene.images()) {
-                        renderer.update_texture(gpu, id, side, side, rgba).map_err(js)?;
+                        renderer
+                            .update_texture(gpu, id, side, side, rgba)
+                            .map_err(js)?;
                     }
                 }
                 ids
@@ -76,8 +78,12 @@ impl NoiseImagesScene {
                 self.scene.take_dirty();
                 let [perlin, simplex] = self.scene.images();
                 let ids = [
-                    renderer.create_texture(gpu, side, side, perlin).map_err(js)?,
-                    renderer.create_texture(gpu, side, side, simplex).map_err(js)?,
+                    renderer
+                        .create_texture(gpu, side, side, perlin)
+                        .map_err(js)?,
+                    renderer
+                        .create_texture(gpu, side, side, simplex)
+                        .map_err(js)?,
                     renderer.create_noise_texture(gpu, side, side).map_err(js)?,
                     renderer.create_noise_texture(gpu, side, side).map_err(js)?,
                 ];
@@ -95,9 +101,13 @@ impl NoiseImagesScene {
                 packed: false,
             };
             let table = self.scene.table();
-            renderer.render_noise(gpu, ids[2], table, &image).map_err(js)?;
+            renderer
+                .render_noise(gpu, ids[2], table, &image)
+                .map_err(js)?;
             image.packed = true;
-            renderer.render_noise(gpu, ids[3], table, &image).map_err(js)?;
+            renderer
+                .render_noise(gpu, ids[3], table, &image)
+                .map_err(js)?;
             self.pending = Some(renderer.start_read_texture(gpu, ids[3]).map_err(js)?);
             self.check.clear();
         }
