@@ -8,6 +8,7 @@
 //! Colours are linear RGB in `[0, 1]`; the named colours of the course are in [`palette`], and
 //! `www/palette.css` gives the same colours to the words of the text.
 
+pub use crate::texture::{SpriteInstance, TextureId, TexturedQuad, UvRect};
 use glam::{Mat4, Quat, Vec3, Vec4};
 
 /// A mesh known to a renderer. The first three are created by every renderer, in this order.
@@ -84,6 +85,12 @@ pub struct Frame {
     pub lines: Vec<LineVertex>,
     pub points: Vec<PointInstance>,
     pub labels: Vec<Label>,
+    /// Textured squares (unlit), drawn after the meshes (see [`crate::texture`]).
+    pub quads: Vec<TexturedQuad>,
+    /// Camera-facing textured squares, all showing parts of `sprite_texture`, alpha-blended last
+    /// in this order (list them back to front).
+    pub sprites: Vec<SpriteInstance>,
+    pub sprite_texture: Option<TextureId>,
 }
 
 impl Frame {
@@ -232,6 +239,19 @@ impl Frame {
         self.lines.clear();
         self.points.clear();
         self.labels.clear();
+        self.quads.clear();
+        self.sprites.clear();
+        self.sprite_texture = None;
+    }
+
+    /// Draws `uv` of `texture` on the square `[−1, 1]²` of the xz plane placed by `model`.
+    pub fn textured_quad(&mut self, texture: TextureId, model: Mat4, uv: UvRect) {
+        self.quads.push(TexturedQuad {
+            texture,
+            model,
+            tint: Vec4::ONE,
+            uv,
+        });
     }
 
     /// A fingerprint of everything in the list (FNV-1a over the numbers and texts): two frames
@@ -267,6 +287,27 @@ impl Frame {
                 .for_each(|x| eat(x.to_bits()));
             eat(p.radius.to_bits());
         }
+        for q in &self.quads {
+            eat(q.texture.0 as u32);
+            q.model
+                .to_cols_array()
+                .iter()
+                .for_each(|x| eat(x.to_bits()));
+            q.tint
+                .to_array()
+                .iter()
+                .chain(&q.uv.to_array())
+                .for_each(|x| eat(x.to_bits()));
+        }
+        for s in &self.sprites {
+            s.center
+                .iter()
+                .chain(&s.uv)
+                .chain(&s.color)
+                .for_each(|x| eat(x.to_bits()));
+            eat(s.half_size.to_bits());
+        }
+        eat(self.sprite_texture.map_or(u32::MAX, |t| t.0 as u32));
         for l in &self.labels {
             l.anchor.to_array().iter().for_each(|x| eat(x.to_bits()));
             l.text.bytes().for_each(|b| eat(b as u32));

@@ -23,7 +23,8 @@
 //! | `12-boids`: boids | [`boids`] (rules, force laws, grid) | [`figures::boids`] | `web::boids` (bench: `web::bench_boids`) | [`exercises::boids`] (12.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
-//! palette), [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
+//! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
+//! [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
 //! instance, so a panic there cannot stop the page), `render/` (wgpu, wasm only).
 //!
 //! ## Conventions, stated once
@@ -58,6 +59,7 @@ pub mod rotation;
 pub mod skeleton;
 pub mod skinning;
 pub mod terrain;
+pub mod texture;
 pub mod transform;
 
 #[cfg(target_arch = "wasm32")]

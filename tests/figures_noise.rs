@@ -2,7 +2,7 @@
 //! Native tests of lesson 05's figures (src/figures/noise.rs): what they draw and say.
 
 use glam::Vec3;
-use inbetween::draw::{palette, Frame, MeshId};
+use inbetween::draw::{palette, Frame, MeshId, TextureId};
 use inbetween::exercises::run::{direct, Failure};
 use inbetween::figures::noise::*;
 
@@ -225,22 +225,22 @@ fn quiz_marks_answers_and_says_why() {
 }
 
 #[test]
-fn textures_fill_rgba_and_colour_the_planes() {
+fn textures_fill_rgba_and_show_them_on_quads() {
     let mut t = Textures::new();
-    t.take_dirty();
-    let before = t.terrains()[0].colors.clone();
+    assert!(t.take_dirty());
+    assert!(!t.take_dirty(), "nothing changed since");
+    let before = t.images()[0].to_vec();
+    assert_eq!(before.len(), 4 * TEXTURE_SIZE * TEXTURE_SIZE);
     t.set_params(4.0, 0.0, 4.0).unwrap();
     assert!(t.take_dirty());
-    assert_ne!(
-        t.terrains()[0].colors,
-        before,
-        "turbulence changes the marble"
-    );
+    assert_ne!(t.images()[0], &before[..], "turbulence changes the marble");
     assert!(t.set_params(100.0, 0.0, 4.0).unwrap_err().contains("scale"));
     let mut f = Frame::default();
-    let note = t.draw(&mut f, &[MeshId(3), MeshId(4), MeshId(5)]);
+    let ids = [TextureId(0), TextureId(1), TextureId(2)];
+    let note = t.draw(&mut f, &ids);
     assert!(note.contains("RGBA"));
-    assert_eq!(f.meshes.len(), 3);
+    assert!(f.meshes.is_empty());
+    assert_eq!(f.quads.iter().map(|q| q.texture).collect::<Vec<_>>(), ids);
 }
 
 #[test]

@@ -2,7 +2,7 @@
 // (src/noise, src/terrain, src/figures/noise.rs).
 import { startLesson, markDrawn, Plot, GUI, columns, showNote, cssVar } from '../../www/lesson.js';
 import {
-  Noise1dScene, Noise2dScene, OctavesScene, TerrainFigureScene, TexturesScene, QuizScene, FractalsScene,
+  Noise1dScene, Noise2dScene, OctavesScene, TerrainFigureScene, TexturesScene, QuizScene, FractalsScene, NoiseImagesScene,
 } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -29,7 +29,7 @@ function tryApply(gui, p, state, set) {
 }
 
 /**
- * Whether a figure is on screen (or near it). Seven live canvases, four of them with meshes of
+ * Whether a figure is on screen (or near it). Eight live canvases, four of them with meshes of
  * 16 000 to 100 000 vertices, are too much to redraw every frame on a software renderer, so each
  * figure draws only while it can be seen (and always for its first frame).
  */
@@ -45,7 +45,7 @@ function onScreen(selector) {
 }
 
 const shown = Object.fromEntries(
-  ['fig-1d', 'fig-2d', 'fig-octaves', 'fig-terrain', 'fig-quiz', 'fig-textures', 'fig-fractals'].map((id) => [id, onScreen(`#${id}`)]),
+  ['fig-1d', 'fig-2d', 'fig-octaves', 'fig-terrain', 'fig-quiz', 'fig-textures', 'fig-gpu', 'fig-fractals'].map((id) => [id, onScreen(`#${id}`)]),
 );
 
 // Figure 1: 1D noise.
@@ -241,7 +241,7 @@ if (v5) {
 // Figure 6: procedural textures.
 const v6 = await lesson.figure('#fig-textures');
 if (v6) {
-  v6.setCamera(0, 0, 0.2, 6.2, 0, 1.0);
+  v6.setCamera(0.5, 0, 0.1, 5.8, 0, 1.3);
   const scene = new TexturesScene();
   const p = { scale: 4, turbulence: 5, n: 4, animate: false };
   const state = { accepted: { ...p } };
@@ -266,7 +266,37 @@ if (v6) {
   });
 }
 
-// Figure 7: fractals.
+// Figure 7: Perlin and simplex noise, on the CPU and on the GPU (WGSL), with the GPU check.
+const vg = await lesson.figure('#fig-gpu');
+if (vg) {
+  vg.setCamera(0.5, 0, 0.1, 5.8, 0, 1.3);
+  const scene = new NoiseImagesScene();
+  const p = { cells: 6, seed: 0, gpu: 'Perlin', lattice: false };
+  const state = { accepted: { ...p } };
+  const gui = new GUI({ container: document.querySelector('#fig-gpu .panel'), title: 'Noise images' });
+  gui.add(p, 'cells', 1, 32, 0.5).name('cells across');
+  gui.add(p, 'gpu', ['Perlin', 'simplex']).name('GPU computes');
+  gui.add(p, 'lattice').name('show the lattices');
+  let rejected = '';
+  const apply = () => {
+    rejected = tryApply(gui, p, state, () => scene.setParams(p.cells, p.seed));
+    scene.setGpuSimplex(p.gpu === 'simplex');
+    scene.setLattice(p.lattice);
+  };
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('gpu-note');
+  const check = document.getElementById('gpu-check');
+  lesson.onFrame(() => {
+    if (!shown['fig-gpu']()) return;
+    showNote(note, rejected, scene.draw(vg));
+    const text = scene.gpuCheck || 'GPU check: reading the shader\'s image back…';
+    if (check.textContent !== text) check.textContent = text;
+    markDrawn('#fig-gpu');
+  });
+}
+
+// Figure 8: fractals.
 const v7 = await lesson.figure('#fig-fractals');
 if (v7) {
   v7.setCamera(0, -0.1, 0, 5.6, 0, 0);

@@ -1,7 +1,7 @@
 // Lesson 11: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/particles/, src/figures/particles.rs).
 import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
-import { EmitterScene, FreeFallScene, BounceScene, SquashScene } from '../../pkg/inbetween.js';
+import { EmitterScene, FreeFallScene, BounceScene, SquashScene, SmokeScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
@@ -129,5 +129,32 @@ if (squashViewer) {
     const t = timeline.advance(dt);
     showNote(note, [rejected, scene.draw(squashViewer, t)].filter(Boolean).join(' '));
     markDrawn('#fig-squash');
+  });
+}
+
+// Sprites: a column of smoke from the atlas, sorted or not.
+const spriteViewer = await lesson.figure('#fig-sprites');
+if (spriteViewer) {
+  spriteViewer.setCamera(-0.4, 1.1, 0, 6.0, 0.25, 0.15);
+  const scene = new SmokeScene();
+  const timeline = new Timeline(document.getElementById('sprites-timeline'), { duration: 8 });
+  const p = { puffs: 30, sort: true, animate: true };
+  const gui = new GUI({ container: document.querySelector('#fig-sprites .panel'), title: 'Sprites' });
+  gui.add(p, 'puffs', 1, 80, 1).name('puffs');
+  gui.add(p, 'sort').name('sort back to front');
+  gui.add(p, 'animate').name('play the atlas');
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setParams(p.puffs, 4);
+    scene.setSort(p.sort);
+    scene.setAnimateFrames(p.animate);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('sprites-note');
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, [rejected, scene.draw(spriteViewer, t)].filter(Boolean).join(' '));
+    markDrawn('#fig-sprites');
   });
 }

@@ -7,10 +7,11 @@ use super::{check_samples, DEFAULT_RUNNER};
 use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner};
 use crate::exercises::run;
 use crate::noise::fractals::{koch_snowflake, sierpinski, MAX_DEPTH};
-use crate::noise::texture::{fill_rgba, from_srgb8, TextureKind, TextureParams};
+use crate::noise::texture::{fill_rgba, TextureKind, TextureParams};
 use crate::noise::{cell2, fade, fade_derivative, grad1, grad2, Fractal, Permutation};
 use crate::terrain::{terrain_normal, Terrain, TerrainParams, Variant, MAX_RESOLUTION};
-use glam::{Mat4, Vec2, Vec3, Vec4};
+use crate::texture::{TextureId, UvRect};
+use glam::{Mat4, Vec2, Vec3};
 
 const FILE: &str = "src/exercises/noise.rs";
 const TOLERANCE: f32 = 1e-4;
@@ -831,11 +832,11 @@ impl TerrainFigure for TerrainScene {
 // ---------------------------------------------------------------------------------------------
 // Figure 6: procedural textures.
 
-/// Texels per side of each of Figure 6's textures (and vertices per side of its planes).
-pub const TEXTURE_SIZE: usize = 160;
+/// Texels per side of each of Figure 6's textures.
+pub const TEXTURE_SIZE: usize = 128;
 
-/// Figure 6: marble, wood and clouds, each written into an RGBA buffer and shown as the vertex
-/// colours of a dense plane (one vertex per texel).
+/// Figure 6: marble, wood and clouds, each written into an RGBA buffer and shown by the renderer
+/// as a texture on a square (uploaded once, then rewritten in place when a parameter changes).
 pub struct Textures {
     perm: Permutation,
     scale: f32,
@@ -843,8 +844,7 @@ pub struct Textures {
     n: u32,
     time_sec: f32,
     animate: bool,
-    planes: [Terrain; 3],
-    rgba: Vec<u8>,
+    images: [Vec<u8>; 3],
     dirty: bool,
     stale: bool,
 }
@@ -857,7 +857,7 @@ pub const TEXTURE_KINDS: [(TextureKind, &str); 3] = [
 
 impl Textures {
     pub fn new() -> Self {
-        let plane = || Terrain::new(TEXTURE_SIZE).expect("a valid resolution");
+        let image = || vec![0; 4 * TEXTURE_SIZE * TEXTURE_SIZE];
         let mut s = Self {
             perm: Permutation::perlin(),
             scale: 4.0,
@@ -865,8 +865,7 @@ impl Textures {
             n: 4,
             time_sec: 0.0,
             animate: false,
-            planes: [plane(), plane(), plane()],
-            rgba: vec![0; 4 * TEXTURE_SIZE * TEXTURE_SIZE],
+            images: [image(), image(), image()],
             dirty: true,
             stale: false,
         };
@@ -875,7 +874,7 @@ impl Textures {
     }
 
     fn regenerate(&mut self) -> Result<(), String> {
-        for (plane, (kind, _)) in self.planes.iter_mut().zip(TEXTURE_KINDS) {
+        for (rgba, (kind, _)) in self.images.iter_mut().zip(TEXTURE_KINDS) {
             let params = TextureParams {
                 kind,
                 scale: self.scale,
@@ -883,18 +882,7 @@ impl Textures {
                 n: self.n,
                 t: self.time_sec,
             };
-            fill_rgba(
-                &self.perm,
-                &params,
-                TEXTURE_SIZE,
-                TEXTURE_SIZE,
-                &mut self.rgba,
-            )?;
-            // Texel (i, j) (row j from the top) colours vertex (i, j) of the plane (row j from the
-            // back, v = −1): the image lies on the plane as it would on screen.
-            for (c, px) in plane.colors.iter_mut().zip(self.rgba.chunks_exact(4)) {
-                *c = Vec4::new(from_srgb8(px[0]), from_srgb8(px[1]), from_srgb8(px[2]), 1.0);
-            }
+            fill_rgba(&self.perm, &params, TEXTURE_SIZE, TEXTURE_SIZE, rgba)?;
         }
         self.dirty = true;
         Ok(())
@@ -929,15 +917,35 @@ impl Textures {
         Ok(())
     }
 
-    pub fn draw(&self, frame: &mut Frame, meshes: &[MeshId]) -> String {
-        for (i, (&mesh, (_, name))) in meshes.iter().zip(TEXTURE_KINDS).enumerate() {
+    /// The three images (marble, wood, clouds), `TEXTURE_SIZE²` RGBA texels each, sRGB bytes.
+    pub fn images(&self) -> [&[u8]; 3] {
+        [&self.images[0], &self.images[1], &self.images[2]]
+    }
+
+    /// Regenerates what the setters marked stale; returns true once after the images changed
+    /// (the web layer then rewrites the GPU textures in place).
+    pub fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) && self.regenerate().is_err() {
+            return false;
+        }
+        std::mem::take(&mut self.dirty)
+    }
+
+    /// Draws the textures (`textures[i]` holds `images()[i]`) on three squares; returns the note.
+    pub fn draw(&self, frame: &mut Frame, textures: &[TextureId]) -> String {
+        for (i, (&texture, (_, name))) in textures.iter().zip(TEXTURE_KINDS).enumerate() {
             let x = (i as f32 - 1.0) * 2.3;
-            frame.mesh_vertex_colors(mesh, Mat4::from_translation(Vec3::new(x, 0.0, 0.0)));
+            frame.textured_quad(
+                texture,
+                Mat4::from_translation(Vec3::new(x, 0.0, 0.0)),
+                UvRect::FULL,
+            );
             frame.label(Vec3::new(x, 0.0, 1.2), name, palette::DARK);
         }
         format!(
-            "Each texture is a {TEXTURE_SIZE} × {TEXTURE_SIZE} RGBA image computed on the CPU, shown \
-             as the colours of a plane with one vertex per texel. scale = {}, τ = {}, N = {}{}.",
+            "Each texture is a {TEXTURE_SIZE} × {TEXTURE_SIZE} RGBA image computed on the CPU and \
+             shown by the GPU on a square (a textured quad; the GPU interpolates between texels). \
+             scale = {}, τ = {}, N = {}{}.",
             format_number(self.scale),
             format_number(self.turbulence),
             self.n,
@@ -953,18 +961,6 @@ impl Textures {
 impl Default for Textures {
     fn default() -> Self {
         Self::new()
-    }
-}
-
-impl TerrainFigure for Textures {
-    fn terrains(&self) -> Vec<&Terrain> {
-        self.planes.iter().collect()
-    }
-    fn take_dirty(&mut self) -> bool {
-        if std::mem::take(&mut self.stale) && self.regenerate().is_err() {
-            return false;
-        }
-        std::mem::take(&mut self.dirty)
     }
 }
 

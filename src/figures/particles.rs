@@ -16,10 +16,12 @@ use super::{
 };
 use crate::draw::PointInstance;
 use crate::exercises::run;
+use crate::particles::sprites::{sort_back_to_front, SMOKE_ATLAS};
 use crate::particles::{
     floor_time_of_impact, free_fall, free_fall_errors, Emitter, FreeFallError, Integrator,
     ParticleSystem, Sphere, SquashBall, Surfaces, VelocityDist,
 };
+use crate::texture::{SpriteInstance, TextureId};
 use glam::{Mat4, Vec3, Vec4};
 
 const FILE: &str = "src/exercises/particles.rs";
@@ -61,6 +63,9 @@ pub struct EmitterFigure {
     steps_done: usize,
     dirty: bool,
     order: Vec<(f32, u32)>,
+    /// The smoke atlas's texture: when set, particles are textured sprites playing it over
+    /// their life; otherwise shaded discs.
+    sprite_texture: Option<TextureId>,
 }
 
 /// Steps between two automatic explosions (2.5 s).
@@ -102,6 +107,7 @@ impl EmitterFigure {
             steps_done: 0,
             dirty: false,
             order: Vec::with_capacity(PAGE_MAX_PARTICLES),
+            sprite_texture: None,
         }
     }
 
@@ -175,6 +181,12 @@ impl EmitterFigure {
         self.fade = on;
     }
 
+    /// Draws the particles as sprites playing the smoke atlas held by `texture`
+    /// ([`crate::particles::sprites::fill_smoke_atlas`]), or as shaded discs (None).
+    pub fn set_sprite_texture(&mut self, texture: Option<TextureId>) {
+        self.sprite_texture = texture;
+    }
+
     /// Sets off the explosion now (and at this moment in every replay).
     pub fn explode(&mut self) {
         // Recorded even when the system is full, so the note can say so.
@@ -233,26 +245,35 @@ impl EmitterFigure {
         }
         let sys = &self.system;
         let n = sys.len();
-        self.order.clear();
-        for i in 0..n {
-            self.order
-                .push(((sys.positions[i] - eye).length_squared(), i as u32));
-        }
         if self.sort {
             // Farthest first: each sprite blends over what is already behind it.
-            self.order.sort_unstable_by(|a, b| b.0.total_cmp(&a.0));
+            sort_back_to_front(&mut self.order, &sys.positions[..n], eye);
+        } else {
+            self.order.clear();
+            self.order.extend((0..n as u32).map(|i| (0.0, i)));
         }
+        frame.sprite_texture = self.sprite_texture;
         for &(_, i) in &self.order {
             let i = i as usize;
             let mut color = sys.colors[i];
             if !self.fade {
                 color.w = 1.0;
             }
-            frame.points.push(PointInstance {
-                center: sys.positions[i].to_array(),
-                radius: sys.sizes[i],
-                color: color.to_array(),
-            });
+            if self.sprite_texture.is_some() {
+                let life = sys.ages[i] / sys.lifetimes[i].max(1e-6);
+                frame.sprites.push(SpriteInstance {
+                    center: sys.positions[i].to_array(),
+                    half_size: 1.8 * sys.sizes[i],
+                    uv: SMOKE_ATLAS.frame_at(life).to_array(),
+                    color: color.to_array(),
+                });
+            } else {
+                frame.points.push(PointInstance {
+                    center: sys.positions[i].to_array(),
+                    radius: sys.sizes[i],
+                    color: color.to_array(),
+                });
+            }
         }
         let e = self.surfaces.restitution;
         Ok(format!(

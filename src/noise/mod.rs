@@ -10,6 +10,7 @@
 //!   with analytic derivatives, seeded permutations and the double-precision transcription.
 //! - [`fractal`]: fractal sum (fBm), ridge, inverted ridge, turbulence, marble.
 //! - [`texture`]: marble, wood and clouds into RGBA buffers.
+//! - [`simplex`]: simplex noise in 2D and 3D (Gustavson's `simplexnoise1234`), for comparison.
 //! - [`fractals`]: Koch snowflake and Sierpinski triangle (the course's introduction to
 //!   self-similar detail).
 //!
@@ -18,6 +19,7 @@
 pub mod fractal;
 pub mod fractals;
 pub mod perlin;
+pub mod simplex;
 pub mod texture;
 
 pub use fractal::{marble2, turbulence2, Fractal, Shape, MAX_N};

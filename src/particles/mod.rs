@@ -7,6 +7,8 @@
 //!   restitution, friction, resting contact.
 //! - [`system`]: [`ParticleSystem`] in structure-of-arrays form and its [`Emitter`]s, seeded and
 //!   reproducible; dead particles are recycled in place; at most [`MAX_PARTICLES`].
+//! - [`sprites`]: the smoke atlas particles are drawn with, and the back-to-front order of
+//!   transparent sprites.
 //! - [`SquashBall`]: a ball that stretches along its velocity and squashes on impact, keeping
 //!   its volume (built on [`crate::expressive::squash_stretch_matrix`]).
 //!
@@ -15,6 +17,7 @@
 
 pub mod collide;
 pub mod integrate;
+pub mod sprites;
 pub mod system;
 
 pub use collide::{

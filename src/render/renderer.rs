@@ -130,6 +130,8 @@ pub struct Renderer {
     encode_srgb: bool,
     scratch_vertices: Vec<MeshVertex>,
     scratch_objects: Vec<u8>,
+    /// Textures, textured quads, sprites, noise images (src/render/texture.rs).
+    pub(super) textured: super::texture::Textured,
     /// A unit cube (half-extent 1) and a unit sphere, ready for any lesson.
     pub cube: MeshId,
     pub sphere: MeshId,
@@ -295,7 +297,14 @@ impl Renderer {
             wgpu::PrimitiveTopology::TriangleList,
             None,
         );
+        let textured = super::texture::Textured::new(
+            device,
+            format,
+            &globals,
+            std::mem::size_of::<Globals>() as u64,
+        );
         let mut renderer = Self {
+            textured,
             mesh_pipeline,
             line_pipeline,
             point_pipeline,
@@ -635,6 +644,7 @@ impl Renderer {
         self.points
             .write(gpu, bytemuck::cast_slice(&self.frame.points));
 
+        self.textured.prepare(gpu, &self.frame);
         let clear = if self.encode_srgb {
             self.clear_srgb
         } else {
@@ -696,6 +706,7 @@ impl Renderer {
                 pass.set_vertex_buffer(0, self.points.buffer.slice(..));
                 pass.draw(0..6, 0..self.frame.points.len() as u32);
             }
+            self.textured.draw(&mut pass, &self.frame);
         }
         self.frame.clear();
         encoder.finish()

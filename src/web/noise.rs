@@ -306,7 +306,7 @@ impl Default for TerrainFigureScene {
 #[wasm_bindgen]
 pub struct TexturesScene {
     scene: Textures,
-    gpu: GpuTerrains,
+    textures: Vec<crate::texture::TextureId>,
 }
 
 #[wasm_bindgen]
@@ -315,7 +315,7 @@ impl TexturesScene {
     pub fn new() -> TexturesScene {
         TexturesScene {
             scene: Textures::new(),
-            gpu: GpuTerrains::default(),
+            textures: Vec::new(),
         }
     }
     /// scale (0.5 to 16), turbulence (0 to 20), N (0 to 8).
@@ -331,8 +331,25 @@ impl TexturesScene {
         self.scene.advance(dt_sec).map_err(js)
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
-        let meshes = self.gpu.sync(viewer, &mut self.scene)?.to_vec();
-        let note = self.scene.draw(&mut viewer.renderer.frame, &meshes);
+        let side = crate::figures::noise::TEXTURE_SIZE as u32;
+        if self.scene.take_dirty() || self.textures.is_empty() {
+            for (i, rgba) in self.scene.images().into_iter().enumerate() {
+                match self.textures.get(i) {
+                    Some(&id) => viewer
+                        .renderer
+                        .update_texture(&viewer.gpu, id, side, side, rgba)
+                        .map_err(js)?,
+                    None => {
+                        let id = viewer
+                            .renderer
+                            .create_texture(&viewer.gpu, side, side, rgba)
+                            .map_err(js)?;
+                        self.textures.push(id);
+                    }
+                }
+            }
+        }
+        let note = self.scene.draw(&mut viewer.renderer.frame, &self.textures);
         viewer.present()?;
         Ok(note)
     }

@@ -8,6 +8,8 @@ use wasm_bindgen::prelude::*;
 #[wasm_bindgen]
 pub struct EmitterScene {
     scene: EmitterFigure,
+    /// The smoke atlas, uploaded on the first draw.
+    atlas: Option<crate::texture::TextureId>,
 }
 
 #[wasm_bindgen]
@@ -16,6 +18,7 @@ impl EmitterScene {
     pub fn new() -> EmitterScene {
         EmitterScene {
             scene: EmitterFigure::new(),
+            atlas: None,
         }
     }
     /// "fountain", "explosion" or "both".
@@ -61,6 +64,16 @@ impl EmitterScene {
     /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
     /// draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        if self.atlas.is_none() {
+            let side = crate::figures::particles_sprites::ATLAS_SIDE as u32;
+            let image = crate::figures::particles_sprites::smoke_atlas_image();
+            let id = viewer
+                .renderer
+                .create_texture(&viewer.gpu, side, side, &image)
+                .map_err(js)?;
+            self.atlas = Some(id);
+            self.scene.set_sprite_texture(self.atlas);
+        }
         let eye = viewer.camera.eye();
         let note = self
             .scene

@@ -7,6 +7,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { launch, pixelStats, meanDifference } from './browser.mjs';
 import { startServer } from '../../scripts/serve.mjs';
+import { gpuNoiseMatchesCpu } from './noise_gpu.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
@@ -294,6 +295,7 @@ for (const backend of BACKENDS) {
           await pauseTimelines(page);
           await frames(page);
           if (lesson.folder.startsWith('02-')) await editorDrags(page);
+          if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
           const figures = await page.locator('.figure').all();
           assert.ok(figures.length > 0, 'a lesson has at least one figure');
           let interacted = false;

@@ -1,0 +1,191 @@
+//! Lesson 11's sprite figure: a column of smoke drawn as camera-facing textured squares that play
+//! the smoke atlas (`particles::sprites`) over their life, alpha-blended, sorted back to front
+//! or not (to show why sorting matters), with the atlas itself shown beside the column.
+
+use super::{format_number, in_range, palette, Frame, MeshId};
+use crate::noise::Permutation;
+use crate::particles::sprites::{fill_smoke_atlas, sort_back_to_front, SMOKE_ATLAS};
+use crate::texture::{SpriteInstance, TextureId, UvRect};
+use glam::{Mat4, Vec3, Vec4};
+
+/// Texels per side of one atlas frame (the atlas is 4 × 4 frames: 128 × 128 texels).
+pub const FRAME_SIDE: usize = 32;
+/// Texels per side of the whole atlas.
+pub const ATLAS_SIDE: usize = 4 * FRAME_SIDE;
+/// The most puffs the figure shows.
+pub const MAX_PUFFS: usize = 200;
+
+/// Where the smoke rises from.
+const SOURCE: Vec3 = Vec3::new(-0.8, 0.1, -0.6);
+/// Where the atlas is shown (a square of half-side 0.7, standing up, facing +z).
+const ATLAS_AT: Vec3 = Vec3::new(-2.3, 1.0, 0.0);
+
+/// The smoke atlas every sprite figure of lesson 11 uses: `ATLAS_SIDE²` RGBA texels.
+pub fn smoke_atlas_image() -> Vec<u8> {
+    let mut atlas = vec![0; 4 * ATLAS_SIDE * ATLAS_SIDE];
+    fill_smoke_atlas(&Permutation::perlin(), FRAME_SIDE, &mut atlas)
+        .expect("the figure's atlas size is valid");
+    atlas
+}
+
+/// The smoke column.
+pub struct SmokeFigure {
+    atlas: Vec<u8>,
+    puffs: usize,
+    lifetime_sec: f32,
+    sort: bool,
+    animate_frames: bool,
+    show_atlas: bool,
+    positions: Vec<Vec3>,
+    ages: Vec<f32>,
+    order: Vec<(f32, u32)>,
+}
+
+impl Default for SmokeFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SmokeFigure {
+    pub fn new() -> Self {
+        Self {
+            atlas: smoke_atlas_image(),
+            puffs: 30,
+            lifetime_sec: 4.0,
+            sort: true,
+            animate_frames: true,
+            show_atlas: true,
+            positions: Vec::with_capacity(MAX_PUFFS),
+            ages: Vec::with_capacity(MAX_PUFFS),
+            order: Vec::with_capacity(MAX_PUFFS),
+        }
+    }
+
+    /// The atlas image: `ATLAS_SIDE²` RGBA texels, rows from the top.
+    pub fn atlas(&self) -> &[u8] {
+        &self.atlas
+    }
+
+    /// Puffs alive at once (1 to [`MAX_PUFFS`]) and their lifetime in seconds (0.5 to 10).
+    pub fn set_params(&mut self, puffs: f32, lifetime_sec: f32) -> Result<(), String> {
+        let n = in_range("puffs", puffs, 1.0, MAX_PUFFS as f32)?;
+        if n.fract() != 0.0 {
+            return Err(format!("puffs must be a whole number, got {puffs}"));
+        }
+        self.lifetime_sec = in_range("lifetime", lifetime_sec, 0.5, 10.0)?;
+        self.puffs = n as usize;
+        Ok(())
+    }
+
+    pub fn set_sort(&mut self, on: bool) {
+        self.sort = on;
+    }
+
+    /// Plays the atlas over each puff's life, or shows its first frame only.
+    pub fn set_animate_frames(&mut self, on: bool) {
+        self.animate_frames = on;
+    }
+
+    pub fn set_show_atlas(&mut self, on: bool) {
+        self.show_atlas = on;
+    }
+
+    /// Puff `k`'s age at time `t`. Each puff is reborn at the source when its life ends, with
+    /// phases spread by the golden ratio: the column always holds puffs of every age, and the
+    /// storage order (k) has nothing to do with the distance to the camera, as in a particle
+    /// system that recycles slots.
+    fn age(&self, k: usize, time_sec: f32) -> f32 {
+        let phase = (k as f32 * 0.618_034).fract();
+        (time_sec + phase * self.lifetime_sec).rem_euclid(self.lifetime_sec)
+    }
+
+    /// Where a puff of this age and index is: rising, drifting with the wind (towards +x and
+    /// +z, so the column recedes from and approaches the camera), wobbling.
+    fn position(&self, k: usize, age: f32) -> Vec3 {
+        let wobble = (k as f32 * 2.39996).sin() * 0.6 * (age / self.lifetime_sec);
+        SOURCE + Vec3::new(0.35 * age + wobble, 0.55 * age, 0.3 * age - wobble)
+    }
+
+    /// Fills `frame` at `time_sec` (seconds, ≥ 0) with the column, the floor grid and the atlas
+    /// (`atlas` is the texture holding [`SmokeFigure::atlas`]); `eye` is the camera position.
+    /// Returns the note.
+    pub fn draw(
+        &mut self,
+        frame: &mut Frame,
+        atlas: TextureId,
+        eye: Vec3,
+        time_sec: f32,
+    ) -> Result<String, String> {
+        let t = in_range("time", time_sec, 0.0, 1e5)?;
+        frame.grid(8, 0.5);
+        self.positions.clear();
+        self.ages.clear();
+        for k in 0..self.puffs {
+            let age = self.age(k, t);
+            self.ages.push(age);
+            self.positions.push(self.position(k, age));
+        }
+        if self.sort {
+            sort_back_to_front(&mut self.order, &self.positions, eye);
+        } else {
+            self.order.clear();
+            self.order.extend((0..self.puffs as u32).map(|i| (0.0, i)));
+        }
+        frame.sprite_texture = Some(atlas);
+        for &(_, k) in &self.order {
+            let (p, age) = (self.positions[k as usize], self.ages[k as usize]);
+            let s = age / self.lifetime_sec;
+            let uv = if self.animate_frames {
+                SMOKE_ATLAS.frame_at(s)
+            } else {
+                SMOKE_ATLAS.frame(0)
+            };
+            // Fade in over the first tenth of the life, so puffs do not pop into view.
+            let alpha = (s / 0.1).min(1.0);
+            frame.sprites.push(SpriteInstance {
+                center: p.to_array(),
+                half_size: 0.25 + 0.4 * s,
+                uv: uv.to_array(),
+                color: Vec4::new(0.3, 0.3, 0.33, alpha).to_array(),
+            });
+        }
+        if self.show_atlas {
+            // Stand the square up (its z = −1 edge, texel row 0, at the top) facing +z.
+            let model = Mat4::from_translation(ATLAS_AT)
+                * Mat4::from_rotation_x(std::f32::consts::FRAC_PI_2)
+                * Mat4::from_scale(Vec3::splat(0.7));
+            frame.textured_quad(atlas, model, UvRect::FULL);
+            // A dark board behind it: the light, half-transparent puffs show against it.
+            let board = Mat4::from_translation(ATLAS_AT - Vec3::Z * 0.03)
+                * Mat4::from_scale(Vec3::new(0.74, 0.74, 0.01));
+            frame.mesh(MeshId::CUBE, board, palette::DARK);
+            frame.label(
+                ATLAS_AT + Vec3::new(0.0, 0.85, 0.0),
+                "the atlas: 16 frames",
+                palette::DARK,
+            );
+        }
+        Ok(format!(
+            "{} puffs, each living {} s and playing {} of the atlas's {} frames; drawn {}.",
+            self.puffs,
+            format_number(self.lifetime_sec),
+            if self.animate_frames {
+                "all"
+            } else {
+                "the first"
+            },
+            SMOKE_ATLAS.frames(),
+            if self.sort {
+                "back to front (sorted by distance from the camera every frame)"
+            } else {
+                "in storage order (unsorted): near puffs drawn early hide the ones behind them"
+            }
+        ))
+    }
+
+    /// The positions drawn last frame, in puff order (tests).
+    pub fn positions(&self) -> &[Vec3] {
+        &self.positions
+    }
+}

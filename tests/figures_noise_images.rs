@@ -1,0 +1,124 @@
+//! Lesson 05's "Perlin, simplex, and the GPU" figure: images, the GPU comparison, the lattices.
+#![cfg(not(target_arch = "wasm32"))]
+
+use inbetween::draw::{palette, Frame, TextureId};
+use inbetween::figures::noise_images::*;
+use inbetween::noise::Permutation;
+
+/// What the shader writes in packed mode for the noise value `n` (see noise.wgsl).
+fn pack(n: f32) -> [u8; 4] {
+    let q = (65535.0 * (0.5 + 0.5 * n).clamp(0.0, 1.0)).round() as u32;
+    [(q >> 8) as u8, (q & 255) as u8, 0, 255]
+}
+
+fn packed_image(s: &NoiseImages, kind: NoiseKind, error: f32) -> Vec<u8> {
+    let mut out = Vec::new();
+    for j in 0..IMAGE_SIZE {
+        for i in 0..IMAGE_SIZE {
+            out.extend_from_slice(&pack(s.value(kind, i, j) + error));
+        }
+    }
+    out
+}
+
+#[test]
+fn images_hold_perlin_and_simplex_as_grey_levels() {
+    let s = NoiseImages::new();
+    let perm = Permutation::perlin();
+    let [perlin, simplex] = s.images();
+    assert_eq!(perlin.len(), 4 * IMAGE_SIZE * IMAGE_SIZE);
+    let spec = s.spec();
+    let (i, j) = (37, 90);
+    let (x, y) = (
+        (i as f32 + 0.5) * spec.step[0],
+        (j as f32 + 0.5) * spec.step[1],
+    );
+    let grey = |n: f32| (255.0 * (0.5 + 0.5 * n)).round() as u8;
+    let at = 4 * (j * IMAGE_SIZE + i);
+    assert_eq!(spec.z, 0.0);
+    assert_eq!(perlin[at], grey(perm.noise2(x, y)));
+    assert_eq!(simplex[at], grey(perm.simplex2(x, y)));
+    assert_eq!(&perlin[at..at + 3], &[perlin[at]; 3], "grey");
+}
+
+#[test]
+fn gpu_images_that_agree_pass_and_others_fail() {
+    let mut s = NoiseImages::new();
+    for kind in [NoiseKind::Perlin, NoiseKind::Simplex] {
+        s.set_gpu_kind(kind);
+        let ok = s.compare_gpu(&packed_image(&s, kind, 0.0)).unwrap();
+        assert!(ok.matches(), "{ok:?}");
+        assert!(
+            ok.max_error <= 2.0 / 65535.0,
+            "only the 16-bit rounding: {ok:?}"
+        );
+        assert!(ok.note("WebGL2").contains("matches"));
+        // The other noise is not a match.
+        let other = if kind == NoiseKind::Perlin {
+            NoiseKind::Simplex
+        } else {
+            NoiseKind::Perlin
+        };
+        let bad = s.compare_gpu(&packed_image(&s, other, 0.0)).unwrap();
+        assert!(
+            !bad.matches() && bad.note("WebGPU").contains("DIFFERS"),
+            "{bad:?}"
+        );
+    }
+    // One texel off by 1e-3 is found, with its place.
+    s.set_gpu_kind(NoiseKind::Perlin);
+    let mut img = packed_image(&s, NoiseKind::Perlin, 0.0);
+    let at = 4 * (5 * IMAGE_SIZE + 9);
+    let v = s.value(NoiseKind::Perlin, 9, 5);
+    img[at..at + 4].copy_from_slice(&pack(v + 1e-3));
+    let c = s.compare_gpu(&img).unwrap();
+    assert_eq!(c.worst, (9, 5));
+    assert!(!c.matches());
+    assert!(s.compare_gpu(&img[..100]).is_err(), "wrong length");
+}
+
+#[test]
+fn parameters_are_checked_and_change_the_images() {
+    let mut s = NoiseImages::new();
+    s.take_dirty();
+    s.take_gpu_dirty();
+    let before = s.images()[0].to_vec();
+    s.set_params(7.5, 0.0).unwrap();
+    assert!(s.take_dirty() && s.take_gpu_dirty());
+    assert_ne!(s.images()[0], &before[..], "more cells, another image");
+    assert!(s.set_params(f32::NAN, 0.0).is_err());
+    assert!(s.set_params(6.0, 1.5).unwrap_err().contains("whole"));
+    assert!(s.set_params(100.0, 0.0).unwrap_err().contains("cells"));
+    s.set_params(6.0, 3.0).unwrap();
+    assert_ne!(
+        s.table(),
+        Permutation::perlin().table(),
+        "a seed shuffles the table"
+    );
+}
+
+#[test]
+fn draws_three_quads_and_the_lattices_inside_the_images() {
+    let mut s = NoiseImages::new();
+    let mut f = Frame::default();
+    let ids = [TextureId(3), TextureId(4), TextureId(5)];
+    s.draw(&mut f, ids);
+    assert_eq!(f.quads.iter().map(|q| q.texture).collect::<Vec<_>>(), ids);
+    assert!(f.lines.is_empty());
+    s.set_lattice(true);
+    f.clear();
+    s.draw(&mut f, ids);
+    let squares: Vec<_> = f.segments_of(palette::ORANGE).collect();
+    let triangles: Vec<_> = f.segments_of(palette::TEAL).collect();
+    // 6 cells: 7 vertical and 7 horizontal lines.
+    assert_eq!(squares.len(), 14);
+    assert!(triangles.len() > 50);
+    for (a, b) in triangles {
+        for p in [a, b] {
+            assert!(
+                p.x >= -1.0 - 1e-4 && p.x <= 1.0 + 1e-4 && p.z.abs() <= 1.0 + 1e-4,
+                "{p}"
+            );
+        }
+    }
+}

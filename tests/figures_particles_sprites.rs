@@ -1,0 +1,112 @@
+//! Lesson 11's sprite figure: the smoke column and its draw order.
+#![cfg(not(target_arch = "wasm32"))]
+
+use glam::Vec3;
+use inbetween::draw::{Frame, TextureId};
+use inbetween::figures::particles::EmitterFigure;
+use inbetween::figures::particles_sprites::*;
+
+#[test]
+fn the_column_is_sorted_back_to_front_or_left_in_storage_order() {
+    let mut s = SmokeFigure::new();
+    let eye = Vec3::new(1.0, 2.0, 6.0);
+    let mut f = Frame::default();
+    let note = s.draw(&mut f, TextureId(7), eye, 1.3).unwrap();
+    assert!(note.contains("back to front"));
+    assert_eq!(f.sprite_texture, Some(TextureId(7)));
+    assert_eq!(f.sprites.len(), 30);
+    let dist = |f: &Frame| -> Vec<f32> {
+        f.sprites
+            .iter()
+            .map(|p| (Vec3::from(p.center) - eye).length())
+            .collect()
+    };
+    assert!(dist(&f).windows(2).all(|w| w[0] >= w[1]), "farthest first");
+    s.set_sort(false);
+    let mut g = Frame::default();
+    s.draw(&mut g, TextureId(7), eye, 1.3).unwrap();
+    assert!(
+        !dist(&g).windows(2).all(|w| w[0] >= w[1]),
+        "storage order is not depth order"
+    );
+    // The same puffs either way.
+    let mut a: Vec<[u32; 3]> = f
+        .sprites
+        .iter()
+        .map(|p| p.center.map(f32::to_bits))
+        .collect();
+    let mut b: Vec<[u32; 3]> = g
+        .sprites
+        .iter()
+        .map(|p| p.center.map(f32::to_bits))
+        .collect();
+    a.sort();
+    b.sort();
+    assert_eq!(a, b);
+}
+
+#[test]
+fn puffs_play_the_atlas_over_their_life_and_show_it() {
+    let mut s = SmokeFigure::new();
+    assert_eq!(s.atlas().len(), 4 * ATLAS_SIDE * ATLAS_SIDE);
+    let mut f = Frame::default();
+    s.draw(&mut f, TextureId(0), Vec3::Z * 5.0, 2.0).unwrap();
+    let frames: std::collections::BTreeSet<[u32; 4]> =
+        f.sprites.iter().map(|p| p.uv.map(f32::to_bits)).collect();
+    assert!(
+        frames.len() > 8,
+        "many atlas frames at once: {}",
+        frames.len()
+    );
+    assert!(f
+        .sprites
+        .iter()
+        .all(|p| p.uv[2] - p.uv[0] == 0.25 && p.uv[3] - p.uv[1] == 0.25));
+    assert_eq!(f.quads.len(), 1, "the atlas is shown");
+    s.set_animate_frames(false);
+    s.set_show_atlas(false);
+    let mut g = Frame::default();
+    s.draw(&mut g, TextureId(0), Vec3::Z * 5.0, 2.0).unwrap();
+    assert!(g.sprites.iter().all(|p| p.uv == [0.0, 0.0, 0.25, 0.25]));
+    assert!(g.quads.is_empty());
+}
+
+#[test]
+fn bad_input_is_refused() {
+    let mut s = SmokeFigure::new();
+    assert!(s.set_params(0.0, 4.0).unwrap_err().contains("puffs"));
+    assert!(s.set_params(201.0, 4.0).unwrap_err().contains("puffs"));
+    assert!(s.set_params(10.5, 4.0).unwrap_err().contains("whole"));
+    assert!(s
+        .set_params(10.0, f32::NAN)
+        .unwrap_err()
+        .contains("lifetime"));
+    assert!(s
+        .draw(&mut Frame::default(), TextureId(0), Vec3::Z, f32::NAN)
+        .is_err());
+    s.set_params(200.0, 1.0).unwrap();
+    let mut f = Frame::default();
+    s.draw(&mut f, TextureId(0), Vec3::Z, 0.5).unwrap();
+    assert_eq!(f.sprites.len(), MAX_PUFFS);
+}
+
+#[test]
+fn emitter_particles_become_atlas_sprites_once_a_texture_is_given() {
+    let mut e = EmitterFigure::new();
+    let eye = Vec3::new(0.0, 2.0, 5.0);
+    let mut f = Frame::default();
+    e.draw(&mut f, eye, 1.0).unwrap();
+    assert!(f.sprites.is_empty() && !f.points.is_empty());
+    e.set_sprite_texture(Some(TextureId(2)));
+    let mut g = Frame::default();
+    e.draw(&mut g, eye, 1.0).unwrap();
+    assert_eq!(g.sprites.len(), f.points.len());
+    assert!(g.points.is_empty());
+    assert_eq!(g.sprite_texture, Some(TextureId(2)));
+    let d: Vec<f32> = g
+        .sprites
+        .iter()
+        .map(|p| (Vec3::from(p.center) - eye).length())
+        .collect();
+    assert!(d.windows(2).all(|w| w[0] >= w[1] - 1e-5), "farthest first");
+}
