@@ -41,13 +41,19 @@ async function pauseTimelines(page) {
 }
 
 /**
- * Before a full-page screenshot: figures off screen keep their frame instead of rendering it
- * (Viewer::set_visible), and a resize clears their canvases, so every figure is told it is
- * visible and given a few frames to draw.
+ * A screenshot of the whole page with its figures drawn. Playwright's `fullPage` capture resizes
+ * the page behind our back, which clears every canvas after the figures drew, so the viewport is
+ * made as tall as the page instead: every figure is then on screen (Viewer::set_visible) and
+ * draws, and an ordinary screenshot takes the lot.
  */
-async function drawAllFigures(page) {
+async function fullPageShot(page, path) {
+  const viewport = page.viewportSize();
+  const height = await page.evaluate(() => document.documentElement.scrollHeight);
+  await page.setViewportSize({ width: viewport.width, height: Math.min(height, 16000) });
   await page.evaluate(() => window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true)));
   await frames(page, 4);
+  await page.screenshot({ path });
+  await page.setViewportSize(viewport);
 }
 
 /** Waits for a few animation frames so the figures show the latest state. */
@@ -339,8 +345,7 @@ for (const backend of BACKENDS) {
             await frames(page);
             const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
             assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
-            await drawAllFigures(page);
-            await page.screenshot({ path: `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`, fullPage: true });
+            await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`);
           }
           await page.setViewportSize({ width: 1100, height: 900 });
           // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
@@ -351,8 +356,7 @@ for (const backend of BACKENDS) {
             const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
             assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
           }
-          await drawAllFigures(page);
-          await page.screenshot({ path: `${SHOTS}/${lesson.folder}-${backend}.png`, fullPage: true });
+          await fullPageShot(page, `${SHOTS}/${lesson.folder}-${backend}.png`);
           assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
           assert.deepEqual(problems, []);
           await page.close();
