@@ -227,3 +227,17 @@ fn check_the_default_flag_is_stable_at_every_resolution_the_page_offers_with_xpb
     assert!(f.positions(0).iter().all(|p| p.is_finite() && p.y >= 0.0));
     let _ = Vec3::ZERO;
 }
+
+#[test]
+#[ignore]
+fn probe_drape_resolutions() {
+    for side in [20.0, 40.0, 100.0] {
+        for m in ["mass-spring", "XPBD"] {
+            let mut f = ClothFigure::new(Preset::Drape);
+            f.set_method(m).unwrap();
+            f.set_resolution(side).unwrap();
+            draw(&mut f, 1.5);
+            println!("{side} {m}: exploded {:?}", f.exploded(0));
+        }
+    }
+}

@@ -671,10 +671,9 @@ impl Cloth {
                 Method::Xpbd => self.substep_xpbd(params, colliders, h),
             }
             self.time_sec += h;
-            if self.check_explosion() {
-                break;
-            }
         }
+        // Checked once per frame: an exploding cloth only gets worse within a frame.
+        self.check_explosion();
         self.update_normals();
         Ok(())
     }

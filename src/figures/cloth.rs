@@ -25,7 +25,7 @@ use glam::{Mat4, Quat, Vec2, Vec3, Vec4};
 
 const FILE: &str = "src/exercises/cloth.rs";
 /// Length of the figures' timelines, seconds (bounds the work of one replay).
-pub const DURATION: f32 = 8.0;
+pub const DURATION: f32 = 6.0;
 /// The finest resolution the page offers (particles per side); the core allows
 /// [`crate::cloth::MAX_SIDE`].
 pub const PAGE_MAX_SIDE: usize = 100;
@@ -968,7 +968,7 @@ impl SpringFigure {
             frame.polyline(&path[trail_start..=s.min(path.len() - 1)], colors[k].lerp(Vec3::ONE, 0.5));
             if gone {
                 frame.label(
-                    anchor + Vec3::new(0.0, -1.9, 0.0),
+                    anchor + Vec3::new(0.0, -0.6, 0.0),
                     format!("exploded at {} s", format_number(self.exploded_at_sec().unwrap_or(0.0))),
                     palette::RED,
                 );
