@@ -1,5 +1,5 @@
 //! One frame (10 substeps of 1/600 s) of a 100 × 100 cloth (10,000 particles, about 59,000
-//! springs, 19,602 triangles) hanging from two corners in the wind over a sphere and the ground,
+//! springs, 19,602 triangles) hanging from its top edge in the wind over a sphere and the ground,
 //! with mass-spring and with XPBD ([`inbetween::cloth::benchmark_cloth`], the same cloth as the
 //! browser bench page). Each iteration steps a copy of the same state (the copy is not timed).
 //!

@@ -424,3 +424,17 @@ proptest! {
         prop_assert!((wb * pa + wa * pb - before).length() < 1e-3);
     }
 }
+
+#[test]
+fn the_benchmark_cloth_stays_stable() {
+    for method in [Method::MassSpring, Method::Xpbd] {
+        // Fewer frames at 100 × 100: the tests run unoptimised.
+        for (side, frames) in [(32, 60), (100, 12)] {
+            let (mut c, p, col) = inbetween::cloth::benchmark_cloth(side, method).unwrap();
+            for _ in 0..frames {
+                c.step(&p, &col, 1.0 / 60.0).unwrap();
+            }
+            assert!(c.exploded().is_none(), "{method:?} {side}: {}", c.max_stretch());
+        }
+    }
+}

@@ -97,9 +97,24 @@ fn the_drape_falls_on_the_sphere_and_the_obstacles_move() {
     let middle = p[10 * 20 + 10];
     assert!((middle.y - 1.1).abs() < 0.1, "{middle}");
     assert!(p.iter().all(|q| q.y >= 0.0));
-    f.set_obstacles(1.0, -0.9, 0.7).unwrap();
+    // Moving the sphere while the cloth lies on it: the cloth is pushed from this frame on, and
+    // a replay does the same.
+    f.set_obstacles(0.6, -0.9, 0.7).unwrap();
     draw(&mut f, 3.0);
-    assert_ne!(f.positions(0)[10 * 20 + 10], middle);
+    assert_eq!(f.positions(0)[10 * 20 + 10], middle, "not before the next frame");
+    draw(&mut f, 4.0);
+    let pushed = f.positions(0).to_vec();
+    assert_ne!(pushed[10 * 20 + 10], middle);
+    assert_eq!(f.obstacles().0.x, 0.6);
+    draw(&mut f, 1.0);
+    assert_eq!(f.obstacles().0.x, 0.0, "before the move the sphere was at 0");
+    draw(&mut f, 4.0);
+    assert_eq!(f.positions(0), &pushed[..]);
+    // At time 0 a move is the start.
+    f.reset();
+    f.set_obstacles(1.0, -0.9, 0.7).unwrap();
+    draw(&mut f, 1.0);
+    assert_eq!(f.obstacles().0.x, 1.0);
     f.set_method("XPBD").unwrap();
     f.set_resolution(40.0).unwrap();
     assert!(f.take_structure_changed());

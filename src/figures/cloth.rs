@@ -86,6 +86,11 @@ pub struct ClothFigure {
     dragging: Option<(usize, usize, Vec3)>,
     view: Option<(OrbitCamera, Vec2)>,
     structure_changed: bool,
+    /// Sphere and box centres at the start of a run.
+    obstacles_start: (Vec3, Vec3),
+    /// `(frame, sphere centre, box centre)`: the reader moved them then (replayed like drags).
+    obstacle_moves: Vec<(usize, Vec3, Vec3)>,
+    obstacle_cursor: usize,
 }
 
 impl ClothFigure {
@@ -127,7 +132,11 @@ impl ClothFigure {
             dragging: None,
             view: None,
             structure_changed: true,
+            obstacles_start: (Vec3::ZERO, Vec3::ZERO),
+            obstacle_moves: Vec::new(),
+            obstacle_cursor: 0,
         };
+        f.obstacles_start = f.obstacles();
         f.build();
         f
     }
@@ -218,20 +227,57 @@ impl ClothFigure {
         }
         self.frames_done = 0;
         self.drag_cursor = 0;
+        self.obstacle_cursor = 0;
+        let (sphere, cuboid) = self.obstacles_start;
+        self.place_obstacles(sphere, cuboid);
         self.dirty = false;
     }
 
-    /// Back to the start with no recorded drags (the page also sets its timeline to 0).
+    /// The sphere's and the box's centres now.
+    pub fn obstacles(&self) -> (Vec3, Vec3) {
+        (
+            self.colliders.sphere.map_or(Vec3::ZERO, |s| s.0),
+            self.colliders.cuboid.map_or(Vec3::ZERO, |b| b.0),
+        )
+    }
+
+    fn place_obstacles(&mut self, sphere: Vec3, cuboid: Vec3) {
+        if let Some((c, _)) = &mut self.colliders.sphere {
+            *c = sphere;
+        }
+        if let Some((c, _)) = &mut self.colliders.cuboid {
+            *c = cuboid;
+        }
+    }
+
+    /// Applies the recorded obstacle moves up to `frame`.
+    fn catch_up_obstacles(&mut self, frame: usize) {
+        while self.obstacle_cursor < self.obstacle_moves.len()
+            && self.obstacle_moves[self.obstacle_cursor].0 <= frame
+        {
+            let (_, sphere, cuboid) = self.obstacle_moves[self.obstacle_cursor];
+            self.place_obstacles(sphere, cuboid);
+            self.obstacle_cursor += 1;
+        }
+    }
+
+    /// Back to the start with no recorded drags or obstacle moves, the obstacles where they are
+    /// now (the page also sets its timeline to 0).
     pub fn reset(&mut self) {
+        self.forget_interaction();
+        self.restart();
+    }
+
+    fn forget_interaction(&mut self) {
         self.drags.clear();
         self.dragging = None;
-        self.restart();
+        self.obstacles_start = self.obstacles();
+        self.obstacle_moves.clear();
     }
 
     fn changed(&mut self) {
         self.dirty = true;
-        self.drags.clear();
-        self.dragging = None;
+        self.forget_interaction();
     }
 
     pub fn preset(&self) -> Preset {
@@ -242,50 +288,66 @@ impl ClothFigure {
     /// XPBD uses the compliance `α = 1/k`.
     pub fn set_stiffness(&mut self, kind: &str, k: f32) -> Result<(), String> {
         let i = kind_index(kind)?;
-        self.params.stiffness[i] = in_range(&format!("{kind} stiffness"), k, 0.0, 5000.0)?;
-        self.params.compliance_from_stiffness();
-        self.changed();
+        let k = in_range(&format!("{kind} stiffness"), k, 0.0, 5000.0)?;
+        if k != self.params.stiffness[i] {
+            self.params.stiffness[i] = k;
+            self.params.compliance_from_stiffness();
+            self.changed();
+        }
         Ok(())
     }
 
     /// Damping `c` of every spring, N·s/m in [0, 1].
     pub fn set_damping(&mut self, c: f32) -> Result<(), String> {
         let c = in_range("damping", c, 0.0, 1.0)?;
-        self.params.damping = [c, c, 0.5 * c];
-        self.changed();
+        if [c, c, 0.5 * c] != self.params.damping {
+            self.params.damping = [c, c, 0.5 * c];
+            self.changed();
+        }
         Ok(())
     }
 
     /// The frame step Δt, milliseconds in [5, 50].
     pub fn set_step_ms(&mut self, ms: f32) -> Result<(), String> {
-        self.frame_dt = in_range("step", ms, 5.0, 50.0)? / 1000.0;
-        self.changed();
+        let dt = in_range("step", ms, 5.0, 50.0)? / 1000.0;
+        if dt != self.frame_dt {
+            self.frame_dt = dt;
+            self.changed();
+        }
         Ok(())
     }
 
     /// Substeps per frame, in [1, 40].
     pub fn set_substeps(&mut self, n: f32) -> Result<(), String> {
-        let n = in_range("substeps", n, 1.0, 40.0)?;
-        self.params.substeps = n.round() as u32;
-        self.changed();
+        let n = in_range("substeps", n, 1.0, 40.0)?.round() as u32;
+        if n != self.params.substeps {
+            self.params.substeps = n;
+            self.changed();
+        }
         Ok(())
     }
 
     /// Mean wind speed, m/s in [0, 20] (gusts vary it by about ±30 %).
     pub fn set_wind(&mut self, speed: f32) -> Result<(), String> {
-        self.wind_speed = in_range("wind", speed, 0.0, 20.0)?;
-        self.changed();
+        let w = in_range("wind", speed, 0.0, 20.0)?;
+        if w != self.wind_speed {
+            self.wind_speed = w;
+            self.changed();
+        }
         Ok(())
     }
 
     /// "none", "two corners" or "whole edge".
     pub fn set_pins(&mut self, name: &str) -> Result<(), String> {
-        self.pins = PINS
+        let pins = PINS
             .iter()
             .position(|&p| p == name)
             .ok_or_else(|| format!("pins: no choice named {name:?}"))?;
-        self.apply_pins();
-        self.changed();
+        if pins != self.pins {
+            self.pins = pins;
+            self.apply_pins();
+            self.changed();
+        }
         Ok(())
     }
 
@@ -299,8 +361,8 @@ impl ClothFigure {
         if self.preset == Preset::Drape && method != self.method {
             self.method = method;
             self.build();
+            self.changed();
         }
-        self.changed();
         Ok(())
     }
 
@@ -310,31 +372,47 @@ impl ClothFigure {
         if side != self.side {
             self.side = side;
             self.build();
+            self.changed();
         }
-        self.changed();
         Ok(())
     }
 
-    /// The sphere's centre x and the box's centre x and z, metres in [−1.5, 1.5].
+    /// The sphere's centre x and the box's centre x and z, metres in [−1.5, 1.5]. They move at
+    /// the current frame: the cloth runs into them from there on (and so in every replay). At
+    /// time 0, or once [`MAX_DRAG_EVENTS`] moves are recorded, the run starts again with them in
+    /// their new places.
     pub fn set_obstacles(&mut self, sphere_x: f32, box_x: f32, box_z: f32) -> Result<(), String> {
         let sx = in_range("sphere x", sphere_x, -1.5, 1.5)?;
         let bx = in_range("box x", box_x, -1.5, 1.5)?;
         let bz = in_range("box z", box_z, -1.5, 1.5)?;
-        if let Some((c, _)) = &mut self.colliders.sphere {
-            c.x = sx;
+        let (mut sphere, mut cuboid) = self.obstacles();
+        (sphere.x, cuboid.x, cuboid.z) = (sx, bx, bz);
+        if (sphere, cuboid) == self.obstacles() {
+            return Ok(());
         }
-        if let Some((c, _)) = &mut self.colliders.cuboid {
-            c.x = bx;
-            c.z = bz;
+        self.place_obstacles(sphere, cuboid);
+        let frame = self.frames_done;
+        if frame == 0 || self.dirty || self.obstacle_moves.len() >= MAX_DRAG_EVENTS {
+            self.obstacles_start = (sphere, cuboid);
+            self.obstacle_moves.clear();
+            self.dirty = true;
+        } else {
+            match self.obstacle_moves.last_mut() {
+                Some(last) if last.0 == frame => (last.1, last.2) = (sphere, cuboid),
+                _ => self.obstacle_moves.push((frame, sphere, cuboid)),
+            }
+            self.obstacle_cursor = self.obstacle_moves.len();
         }
-        self.changed();
         Ok(())
     }
 
     /// Coulomb friction μ with the colliders, in [0, 2].
     pub fn set_friction(&mut self, mu: f32) -> Result<(), String> {
-        self.colliders.friction = in_range("friction", mu, 0.0, 2.0)?;
-        self.changed();
+        let mu = in_range("friction", mu, 0.0, 2.0)?;
+        if mu != self.colliders.friction {
+            self.colliders.friction = mu;
+            self.changed();
+        }
         Ok(())
     }
 
@@ -416,6 +494,7 @@ impl ClothFigure {
             .drag_cursor
             .checked_sub(1)
             .and_then(|k| self.drags[k].1);
+        self.catch_up_obstacles(frame);
         let t = frame as f32 * self.frame_dt;
         for k in 0..self.sims.len() {
             let params = self.params_for(self.sims[k].method, t);
@@ -561,6 +640,7 @@ impl ClothFigure {
         time_sec: f32,
     ) -> Result<String, String> {
         self.advance_to(time_sec)?;
+        self.catch_up_obstacles(self.frames_done);
         frame.grid(10, 0.5);
         if let Some((c, r)) = self.colliders.sphere {
             let m = Mat4::from_translation(c) * Mat4::from_scale(Vec3::splat(r));
