@@ -117,7 +117,10 @@ fn no_particle_ends_inside_the_sphere_or_under_the_ground() {
         let mut touched = false;
         for frame in 0..240 {
             c.step(&params, &colliders, 1.0 / 60.0).unwrap();
-            assert!(c.exploded().is_none(), "{method:?} exploded at frame {frame}");
+            assert!(
+                c.exploded().is_none(),
+                "{method:?} exploded at frame {frame}"
+            );
             for p in &c.positions {
                 assert!(p.y >= 0.01 - 1e-5, "{method:?}: {p} under the ground");
                 let d = (*p - Vec3::new(0.1, 0.6, 0.0)).length();
@@ -135,7 +138,10 @@ fn no_particle_ends_inside_the_sphere_or_under_the_ground() {
         }
         assert!(touched, "{method:?}: the cloth never reached the sphere");
         // It came to drape: it went down around the sphere (some particles near the ground).
-        assert!(c.positions.iter().any(|p| p.y < 0.2), "{method:?} did not drape");
+        assert!(
+            c.positions.iter().any(|p| p.y < 0.2),
+            "{method:?} did not drape"
+        );
     }
 }
 
@@ -228,8 +234,14 @@ fn energy_does_not_grow_without_external_forces() {
             last = e;
         }
         assert!(c.exploded().is_none());
-        assert!(highest <= e0 * 1.02, "{method:?}: energy rose to {highest} from {e0}");
-        assert!(last < e0, "{method:?}: damping took no energy ({last} vs {e0})");
+        assert!(
+            highest <= e0 * 1.02,
+            "{method:?}: energy rose to {highest} from {e0}"
+        );
+        assert!(
+            last < e0,
+            "{method:?}: damping took no energy ({last} vs {e0})"
+        );
     }
 }
 
@@ -262,7 +274,10 @@ fn past_the_stability_limit_it_explodes_and_is_detected_and_resettable() {
         ..Default::default()
     };
     let limit = c.stable_substep_estimate(&stiff);
-    assert!(1.0 / 120.0 > 2.0 * limit, "the step is past the limit {limit}");
+    assert!(
+        1.0 / 120.0 > 2.0 * limit,
+        "the step is past the limit {limit}"
+    );
     for _ in 0..60 {
         c.step(&stiff, &no_ground(), 1.0 / 60.0).unwrap();
     }
@@ -339,7 +354,12 @@ fn a_grabbed_particle_follows_the_pointer() {
         assert!((c.positions[c.index(4, 4)] - target).length() < 1e-5);
         // Its neighbours were dragged along.
         assert!(c.exploded().is_none(), "{method:?}");
-        assert!(c.positions[c.index(4, 5)].z > 0.1, "{method:?} {} {:?}", c.positions[c.index(4, 5)], c.exploded());
+        assert!(
+            c.positions[c.index(4, 5)].z > 0.1,
+            "{method:?} {} {:?}",
+            c.positions[c.index(4, 5)],
+            c.exploded()
+        );
     }
 }
 
@@ -434,7 +454,11 @@ fn the_benchmark_cloth_stays_stable() {
             for _ in 0..frames {
                 c.step(&p, &col, 1.0 / 60.0).unwrap();
             }
-            assert!(c.exploded().is_none(), "{method:?} {side}: {}", c.max_stretch());
+            assert!(
+                c.exploded().is_none(),
+                "{method:?} {side}: {}",
+                c.max_stretch()
+            );
         }
     }
 }

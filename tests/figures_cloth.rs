@@ -38,7 +38,10 @@ fn same_controls_and_time_give_the_same_cloth() {
 fn the_flags_fly_in_the_wind_and_the_controls_change_them() {
     let mut f = ClothFigure::new(Preset::Flag);
     let (note, frame) = draw(&mut f, 2.0);
-    assert!(note.contains("mass-spring") && note.contains("XPBD"), "{note}");
+    assert!(
+        note.contains("mass-spring") && note.contains("XPBD"),
+        "{note}"
+    );
     assert!(f.exploded(0).is_none() && f.exploded(1).is_none(), "{note}");
     assert_eq!(frame.labels.len(), 2);
     // The free end of each flag is blown downwind (+x) and off the plane z = 0 by the gusts.
@@ -101,13 +104,21 @@ fn the_drape_falls_on_the_sphere_and_the_obstacles_move() {
     // a replay does the same.
     f.set_obstacles(0.6, -0.9, 0.7).unwrap();
     draw(&mut f, 3.0);
-    assert_eq!(f.positions(0)[10 * 20 + 10], middle, "not before the next frame");
+    assert_eq!(
+        f.positions(0)[10 * 20 + 10],
+        middle,
+        "not before the next frame"
+    );
     draw(&mut f, 4.0);
     let pushed = f.positions(0).to_vec();
     assert_ne!(pushed[10 * 20 + 10], middle);
     assert_eq!(f.obstacles().0.x, 0.6);
     draw(&mut f, 1.0);
-    assert_eq!(f.obstacles().0.x, 0.0, "before the move the sphere was at 0");
+    assert_eq!(
+        f.obstacles().0.x,
+        0.0,
+        "before the move the sphere was at 0"
+    );
     draw(&mut f, 4.0);
     assert_eq!(f.positions(0), &pushed[..]);
     // At time 0 a move is the start.
@@ -160,8 +171,14 @@ fn a_dragged_particle_follows_and_is_replayed() {
 #[test]
 fn bad_input_is_refused_with_a_message() {
     let mut f = ClothFigure::new(Preset::Drape);
-    assert!(f.set_stiffness("structural", f32::NAN).unwrap_err().contains("structural stiffness"));
-    assert!(f.set_stiffness("wobbly", 1.0).unwrap_err().contains("no spring kind"));
+    assert!(f
+        .set_stiffness("structural", f32::NAN)
+        .unwrap_err()
+        .contains("structural stiffness"));
+    assert!(f
+        .set_stiffness("wobbly", 1.0)
+        .unwrap_err()
+        .contains("no spring kind"));
     assert!(f.set_resolution(0.0).unwrap_err().contains("resolution"));
     assert!(f.set_resolution(-5.0).is_err());
     assert!(f.set_resolution(1000.0).is_err());
@@ -228,7 +245,10 @@ fn the_spring_figure_shows_the_limit_and_checks_the_exercises() {
     }
     f.set_runner(panicking_runner);
     let note = f.draw(&mut frame, 1.0).unwrap();
-    assert!(note.contains("panicked at src/exercises/cloth.rs:40:5"), "{note}");
+    assert!(
+        note.contains("panicked at src/exercises/cloth.rs:40:5"),
+        "{note}"
+    );
     assert!(f.draw(&mut frame, f32::NAN).is_err());
 }
 

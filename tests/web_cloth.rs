@@ -19,7 +19,9 @@ fn message(e: wasm_bindgen::JsError) -> String {
 
 #[wasm_bindgen_test]
 fn cloth_sizes_fail_with_their_own_message() {
-    assert!(check_cloth(100.0, 100.0, 0.5).unwrap().starts_with("ok: 10000 particles"));
+    assert!(check_cloth(100.0, 100.0, 0.5)
+        .unwrap()
+        .starts_with("ok: 10000 particles"));
     for (c, r) in [(0.0, 5.0), (-3.0, 5.0), (257.0, 2.0), (1.0, 10.0)] {
         assert!(message(check_cloth(c, r, 0.5).unwrap_err()).contains("between 2 and 256"));
     }
@@ -32,7 +34,10 @@ fn cloth_sizes_fail_with_their_own_message() {
 fn figure_setters_reject_bad_input() {
     assert!(message(ClothScene::new("curtain").err().unwrap()).contains("no cloth preset"));
     let mut f = ClothScene::new("flag").unwrap();
-    assert!(message(f.set_stiffness("structural", f32::NAN).unwrap_err()).contains("structural stiffness"));
+    assert!(
+        message(f.set_stiffness("structural", f32::NAN).unwrap_err())
+            .contains("structural stiffness")
+    );
     assert!(message(f.set_stiffness("wobbly", 1.0).unwrap_err()).contains("spring kind"));
     assert!(message(f.set_substeps(0.0).unwrap_err()).contains("substeps"));
     assert!(message(f.set_wind(-1.0).unwrap_err()).contains("wind"));

@@ -86,7 +86,11 @@ pub enum SpringKind {
 }
 
 impl SpringKind {
-    pub const ALL: [SpringKind; 3] = [SpringKind::Structural, SpringKind::Shear, SpringKind::Bending];
+    pub const ALL: [SpringKind; 3] = [
+        SpringKind::Structural,
+        SpringKind::Shear,
+        SpringKind::Bending,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -175,8 +179,18 @@ impl ClothParams {
     /// Every rule, each with its own message.
     pub fn validate(&self) -> Result<(), ClothError> {
         for (k, kind) in SpringKind::ALL.iter().enumerate() {
-            check(&format!("{} stiffness", kind.name()), self.stiffness[k], 0.0, 1e7)?;
-            check(&format!("{} damping", kind.name()), self.damping[k], 0.0, 1e4)?;
+            check(
+                &format!("{} stiffness", kind.name()),
+                self.stiffness[k],
+                0.0,
+                1e7,
+            )?;
+            check(
+                &format!("{} damping", kind.name()),
+                self.damping[k],
+                0.0,
+                1e4,
+            )?;
             let a = self.compliance[k];
             if !(a == f32::INFINITY || (a.is_finite() && a >= 0.0)) {
                 return Err(ClothError::Invalid(format!(
@@ -338,7 +352,8 @@ pub fn project_distance(
         f32::INFINITY
     };
     let denominator = wa + wb + alpha;
-    if l <= 1e-12 || !(denominator > 0.0) || !denominator.is_finite() {
+    // Not finite covers NaN as well as an infinite compliance.
+    if l <= 1e-12 || denominator <= 0.0 || !denominator.is_finite() {
         return;
     }
     let n = d / l;
@@ -487,7 +502,12 @@ impl Cloth {
         let mut triangles = Vec::with_capacity(2 * (nc - 1) * (nr - 1));
         for r in 0..nr - 1 {
             for c in 0..nc - 1 {
-                let (a, b, d, e) = (index(c, r), index(c + 1, r), index(c, r + 1), index(c + 1, r + 1));
+                let (a, b, d, e) = (
+                    index(c, r),
+                    index(c + 1, r),
+                    index(c, r + 1),
+                    index(c + 1, r + 1),
+                );
                 // Alternate the diagonal so the mesh has no preferred direction.
                 if (c + r) % 2 == 0 {
                     triangles.push([a, b, d]);
@@ -538,7 +558,11 @@ impl Cloth {
     pub fn set_pinned(&mut self, i: usize, pinned: bool) {
         if i < self.len() {
             self.pinned[i] = pinned;
-            self.inv_mass[i] = if pinned { 0.0 } else { 1.0 / self.particle_mass };
+            self.inv_mass[i] = if pinned {
+                0.0
+            } else {
+                1.0 / self.particle_mass
+            };
             if pinned {
                 self.velocities[i] = Vec3::ZERO;
             }
@@ -582,7 +606,10 @@ impl Cloth {
                 (self.positions[s.b as usize] - self.positions[s.a as usize]).length() / s.rest
                     - 1.0
             })
-            .fold(0.0, |m, x| if x.is_nan() { f32::INFINITY } else { m.max(x) })
+            .fold(
+                0.0,
+                |m, x| if x.is_nan() { f32::INFINITY } else { m.max(x) },
+            )
     }
 
     /// Total energy, joules: kinetic `Σ ½ m v²`, gravitational `Σ −m g·p` and elastic
@@ -631,7 +658,8 @@ impl Cloth {
         self.normals.fill(Vec3::ZERO);
         for t in &self.triangles {
             let [a, b, c] = t.map(|i| i as usize);
-            let n = (self.positions[b] - self.positions[a]).cross(self.positions[c] - self.positions[a]);
+            let n = (self.positions[b] - self.positions[a])
+                .cross(self.positions[c] - self.positions[a]);
             self.normals[a] += n;
             self.normals[b] += n;
             self.normals[c] += n;
@@ -860,7 +888,10 @@ impl Cloth {
 /// wind, 10 substeps per frame, with stiffnesses low enough (`[5, 2.5, 1]` N/m) that mass-spring
 /// stays stable at 100 × 100 with 10 substeps of 1/60 s (XPBD uses `α = 1/k`). So soft a cloth
 /// sags and stretches by tens of percent: the benchmark measures cost, not looks.
-pub fn benchmark_cloth(side: i64, method: Method) -> Result<(Cloth, ClothParams, Colliders), ClothError> {
+pub fn benchmark_cloth(
+    side: i64,
+    method: Method,
+) -> Result<(Cloth, ClothParams, Colliders), ClothError> {
     let spec = ClothSpec {
         columns: side,
         rows: side,

@@ -121,7 +121,10 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     type Spring = (Vec3, Vec3, Vec3, Vec3, f32, f32, f32);
     let z = Vec3::ZERO;
     let mut springs: Vec<(&str, Spring)> = vec![
-        ("at rest length: no force", (z, Vec3::X, z, z, 50.0, 0.0, 1.0)),
+        (
+            "at rest length: no force",
+            (z, Vec3::X, z, z, 50.0, 0.0, 1.0),
+        ),
         (
             "stretched along x: pulls a towards b (+x)",
             (z, Vec3::new(2.0, 0.0, 0.0), z, z, 10.0, 0.0, 1.0),
@@ -166,7 +169,8 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         |a, b| close(*a, *b, 1e-4),
     );
     let g = Vec3::new(0.0, -9.81, 0.0);
-    let mut steps: Vec<(&str, (Vec3, Vec3, Vec3, f32, f32))> = vec![
+    type Step = (Vec3, Vec3, Vec3, f32, f32);
+    let mut steps: Vec<(&str, Step)> = vec![
         ("dt = 0: nothing changes", (Vec3::ONE, Vec3::X, g, 2.0, 0.0)),
         (
             "pinned (w = 0) at rest: stays put",

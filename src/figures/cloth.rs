@@ -65,6 +65,9 @@ struct Sim {
     label: Vec3,
 }
 
+/// A held particle: `(cloth, particle index, target point)`.
+type Grab = (usize, usize, Vec3);
+
 /// The cloth figure (both presets).
 #[derive(Clone, Debug)]
 pub struct ClothFigure {
@@ -80,10 +83,10 @@ pub struct ClothFigure {
     frames_done: usize,
     dirty: bool,
     /// `(frame, grab)`: from that frame on, this particle (sim, index) is held at that point.
-    drags: Vec<(usize, Option<(usize, usize, Vec3)>)>,
+    drags: Vec<(usize, Option<Grab>)>,
     drag_cursor: usize,
     /// The particle being dragged now: `(sim, index, the point grabbed)`.
-    dragging: Option<(usize, usize, Vec3)>,
+    dragging: Option<Grab>,
     view: Option<(OrbitCamera, Vec2)>,
     structure_changed: bool,
     /// Sphere and box centres at the start of a run.
@@ -621,7 +624,7 @@ impl ClothFigure {
         }
     }
 
-    fn record(&mut self, grab: Option<(usize, usize, Vec3)>) {
+    fn record(&mut self, grab: Option<Grab>) {
         let frame = self.frames_done;
         let len = self.drags.len();
         match self.drags.last_mut() {
@@ -943,12 +946,20 @@ impl SpringFigure {
         path.clear();
         path.push(p);
         for step in 0..steps {
-            let reference_f = -crate::cloth::spring_force(
-                anchor, p, Vec3::ZERO, v, self.k, self.c, SPRING_REST,
-            );
+            let reference_f =
+                -crate::cloth::spring_force(anchor, p, Vec3::ZERO, v, self.k, self.c, SPRING_REST);
             let mut f = reference_f;
             if student && !failed[0] {
-                match run::spring_force(self.runner, anchor, p, Vec3::ZERO, v, self.k, self.c, SPRING_REST) {
+                match run::spring_force(
+                    self.runner,
+                    anchor,
+                    p,
+                    Vec3::ZERO,
+                    v,
+                    self.k,
+                    self.c,
+                    SPRING_REST,
+                ) {
                     Ok(x) if x.is_finite() => f = -x,
                     Ok(_) => failed[0] = true,
                     // Said by the note's comparison; the reference goes on.
@@ -1032,11 +1043,17 @@ impl SpringFigure {
             let gone = k == 0 && self.exploded_at.is_some() && s >= path.len();
             let p = path[s.min(path.len() - 1)];
             let trail_start = s.min(path.len() - 1).saturating_sub(40);
-            frame.polyline(&path[trail_start..=s.min(path.len() - 1)], colors[k].lerp(Vec3::ONE, 0.5));
+            frame.polyline(
+                &path[trail_start..=s.min(path.len() - 1)],
+                colors[k].lerp(Vec3::ONE, 0.5),
+            );
             if gone {
                 frame.label(
                     anchor + Vec3::new(0.0, -0.6, 0.0),
-                    format!("exploded at {} s", format_number(self.exploded_at_sec().unwrap_or(0.0))),
+                    format!(
+                        "exploded at {} s",
+                        format_number(self.exploded_at_sec().unwrap_or(0.0))
+                    ),
                     palette::RED,
                 );
             } else {
@@ -1085,12 +1102,36 @@ impl SpringFigure {
         let v = Vec3::new(0.3, -0.2, 0.0);
         let mut notes = Vec::new();
         let at = "the start (p = anchor + (0.7, −0.9, 0), v = (0.3, −0.2, 0))";
-        match run::spring_force(self.runner, anchor, p, Vec3::ZERO, v, self.k, self.c, SPRING_REST) {
+        match run::spring_force(
+            self.runner,
+            anchor,
+            p,
+            Vec3::ZERO,
+            v,
+            self.k,
+            self.c,
+            SPRING_REST,
+        ) {
             Err(f) => notes.push(failure_note("exercise 13.1 spring_force", FILE, &f)),
             Ok(f) => {
-                let r = crate::cloth::spring_force(anchor, p, Vec3::ZERO, v, self.k, self.c, SPRING_REST);
+                let r = crate::cloth::spring_force(
+                    anchor,
+                    p,
+                    Vec3::ZERO,
+                    v,
+                    self.k,
+                    self.c,
+                    SPRING_REST,
+                );
                 notes.push(
-                    compare_note("spring_force", at, &f.to_array(), &r.to_array(), 1e-3 * (1.0 + r.length())).1,
+                    compare_note(
+                        "spring_force",
+                        at,
+                        &f.to_array(),
+                        &r.to_array(),
+                        1e-3 * (1.0 + r.length()),
+                    )
+                    .1,
                 );
             }
         }
@@ -1114,11 +1155,28 @@ impl SpringFigure {
             }
         }
         let alpha = 1.0 / self.k;
-        match run::project_distance(self.runner, ANCHORS[1], ANCHORS[1] + START_OFFSET, 0.0, w, SPRING_REST, alpha, self.dt) {
+        match run::project_distance(
+            self.runner,
+            ANCHORS[1],
+            ANCHORS[1] + START_OFFSET,
+            0.0,
+            w,
+            SPRING_REST,
+            alpha,
+            self.dt,
+        ) {
             Err(f) => notes.push(failure_note("exercise 13.3 project_distance", FILE, &f)),
             Ok((a, b)) => {
                 let (mut ra, mut rb) = (ANCHORS[1], ANCHORS[1] + START_OFFSET);
-                crate::cloth::project_distance(&mut ra, &mut rb, 0.0, w, SPRING_REST, alpha, self.dt);
+                crate::cloth::project_distance(
+                    &mut ra,
+                    &mut rb,
+                    0.0,
+                    w,
+                    SPRING_REST,
+                    alpha,
+                    self.dt,
+                );
                 notes.push(
                     compare_note(
                         "project_distance",

@@ -135,7 +135,9 @@ impl ClothScene {
                 let (data, colors) = self.scene.mesh_data(k);
                 let key = (k, data.positions.len());
                 let id = *self.meshes.entry(key).or_insert_with(|| {
-                    viewer.renderer.create_mesh(&viewer.gpu, &data, Some(&colors))
+                    viewer
+                        .renderer
+                        .create_mesh(&viewer.gpu, &data, Some(&colors))
                 });
                 self.current.push(id);
             }
@@ -223,7 +225,9 @@ pub fn check_cloth(columns: f64, rows: f64, mass_kg: f32) -> Result<String, JsEr
         if x.is_finite() && x.fract() == 0.0 && x.abs() < 1e9 {
             Ok(x as i64)
         } else {
-            Err(JsError::new(&format!("{name} must be a whole number, got {x}")))
+            Err(JsError::new(&format!(
+                "{name} must be a whole number, got {x}"
+            )))
         }
     };
     let spec = ClothSpec {
