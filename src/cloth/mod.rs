@@ -700,6 +700,9 @@ impl Cloth {
             }
             self.time_sec += h;
         }
+        if params.method == Method::Xpbd {
+            self.damp_constraints(params, dt);
+        }
         // Checked once per frame: an exploding cloth only gets worse within a frame.
         self.check_explosion();
         self.update_normals();
@@ -805,6 +808,40 @@ impl Cloth {
         }
     }
 
+    /// XPBD damping along each constraint, once per frame of `dt` seconds (a pass over the
+    /// springs per substep would cost as much as the projection itself), implicit so that it is
+    /// stable for any `c`: the two ends' relative speed along the constraint is divided by
+    /// `1 + c dt (wa + wb)`. The grabbed particle keeps the speed of the pointer.
+    fn damp_constraints(&mut self, params: &ClothParams, dt: f32) {
+        let h = dt;
+        let grabbed = self.grab.map(|(i, _)| (i, self.velocities[i]));
+        for s in &self.springs {
+            let c = params.damping[s.kind as usize];
+            if c == 0.0 {
+                continue;
+            }
+            let (a, b) = (s.a as usize, s.b as usize);
+            let (wa, wb) = (self.inv_mass[a], self.inv_mass[b]);
+            let w = wa + wb;
+            if w == 0.0 {
+                continue;
+            }
+            let d = self.positions[b] - self.positions[a];
+            let l = d.length();
+            if l <= 1e-12 {
+                continue;
+            }
+            let n = d / l;
+            let dv = (self.velocities[b] - self.velocities[a]).dot(n);
+            let p = dv * c * h / (1.0 + c * h * w);
+            self.velocities[a] += wa * p * n;
+            self.velocities[b] -= wb * p * n;
+        }
+        if let Some((i, v)) = grabbed {
+            self.velocities[i] = v;
+        }
+    }
+
     fn substep_xpbd(&mut self, params: &ClothParams, colliders: &Colliders, h: f32) {
         self.external_forces(params);
         for i in 0..self.positions.len() {
@@ -852,30 +889,6 @@ impl Cloth {
                 }
             }
             self.velocities[i] = (self.positions[i] - self.previous[i]) / h;
-        }
-        // Damping along each constraint, implicit so that it is stable for any c: the two ends'
-        // relative speed along it is divided by 1 + c h (wa + wb).
-        for s in &self.springs {
-            let c = params.damping[s.kind as usize];
-            if c == 0.0 {
-                continue;
-            }
-            let (a, b) = (s.a as usize, s.b as usize);
-            let (wa, wb) = (self.inv_mass[a], self.inv_mass[b]);
-            let w = wa + wb;
-            if w == 0.0 {
-                continue;
-            }
-            let d = self.positions[b] - self.positions[a];
-            let l = d.length();
-            if l <= 1e-12 {
-                continue;
-            }
-            let n = d / l;
-            let dv = (self.velocities[b] - self.velocities[a]).dot(n);
-            let p = dv * c * h / (1.0 + c * h * w);
-            self.velocities[a] += wa * p * n;
-            self.velocities[b] -= wb * p * n;
         }
         if let Some((i, _)) = self.grab {
             self.velocities[i] = (self.positions[i] - self.previous[i]) / h;
