@@ -21,6 +21,7 @@
 //! | `10-blend-shapes`: blend shapes | [`blend_shapes`] | [`figures::blend_shapes`] | `web::blend_shapes` | [`exercises::blend_shapes`] (10.x) |
 //! | `11-particles`: particles | [`particles`] (integrators, time of impact, emitters) | [`figures::particles`] | `web::particles` | [`exercises::particles`] (11.x) |
 //! | `12-boids`: boids | [`boids`] (rules, force laws, grid) | [`figures::boids`] | `web::boids` (bench: `web::bench_boids`) | [`exercises::boids`] (12.x) |
+//! | `13-cloth`: cloth | [`cloth`] (mass-spring, XPBD, collisions; uses [`particles`]' step) | [`figures::cloth`] | `web::cloth` (bench: `web::bench_cloth`) | [`exercises::cloth`] (13.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
@@ -42,6 +43,7 @@
 pub mod blend_shapes;
 pub mod boids;
 pub mod camera;
+pub mod cloth;
 pub mod curves;
 pub mod draw;
 pub mod exercises;

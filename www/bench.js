@@ -80,6 +80,15 @@ export const SUITES = [
     unit: 'boid',
   },
   {
+    name: 'cloth: one frame of 10 substeps, 100 × 100 particles (lesson 13; target under 16 ms per frame)',
+    // One item is one frame of the 100 × 100 cloth (the side is fixed; size counts frames).
+    run: (kernel, size, iterations) => wasm.benchCloth(kernel, 100, size * iterations),
+    kernels: ['xpbd', 'mass_spring'],
+    baseline: 'xpbd',
+    size: 1,
+    unit: 'frame',
+  },
+  {
     name: 'terrain 512 × 512, 8 octaves (lesson 05)',
     run: (kernel, size, iterations) => wasm.benchTerrain(kernel, size, iterations),
     kernels: ['fbm8_values', 'terrain_with_normals'],

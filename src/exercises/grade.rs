@@ -66,6 +66,7 @@ pub fn grade_all() -> Vec<Report> {
     reports.extend(super::blend_shapes::grade(&mut rng));
     reports.extend(super::particles::grade(&mut rng));
     reports.extend(super::boids::grade(&mut rng));
+    reports.extend(super::cloth::grade(&mut rng));
     reports
 }
 

@@ -14,6 +14,7 @@
 
 pub mod blend_shapes;
 pub mod boids;
+pub mod cloth;
 pub mod curves;
 pub mod expressive;
 pub mod grade;

@@ -229,6 +229,7 @@ macro_rules! exercises {
 }
 
 use super::blend_shapes as bs;
+use super::cloth as cl;
 use super::ik as ik7;
 use super::noise as nz;
 use super::skinning as sn;
@@ -340,6 +341,15 @@ exercises! {
     /// Exercise 12.2, [`bo::cell_index`]: `dims` as `f32`s (exact).
     fn cell_index(p: Vec3, origin: Vec3, cell_size: f32, dims: [f32; 3]) -> usize =
         bo::cell_index(p, origin, cell_size, dims.map(|d| d as u32));
+    /// Exercise 13.1, [`cl::spring_force`]: the force on `a`.
+    fn spring_force(pa: Vec3, pb: Vec3, va: Vec3, vb: Vec3, k: f32, c: f32, rest: f32) -> Vec3 =
+        cl::spring_force(pa, pb, va, vb, k, c, rest);
+    /// Exercise 13.2, [`cl::cloth_euler_step`]: returns `(p', v')`.
+    fn cloth_euler_step(p: Vec3, v: Vec3, f: Vec3, w: f32, dt: f32) -> (Vec3, Vec3) =
+        cl::cloth_euler_step(p, v, f, w, dt);
+    /// Exercise 13.3, [`cl::project_distance`]: returns `(pa', pb')`.
+    fn project_distance(pa: Vec3, pb: Vec3, wa: f32, wb: f32, rest: f32, alpha: f32, dt: f32) -> (Vec3, Vec3) =
+        cl::project_distance(pa, pb, wa, wb, rest, alpha, dt);
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature
@@ -484,7 +494,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 32);
+        assert_eq!(NAMES.len(), 35);
     }
 
     #[test]

@@ -10,6 +10,7 @@
 pub mod blend_shapes;
 pub mod blending;
 pub mod boids;
+pub mod cloth;
 pub mod curves;
 pub mod expressive;
 pub mod gltf;

@@ -4,6 +4,7 @@
 
 mod bench;
 mod bench_boids;
+mod bench_cloth;
 mod bench_curves;
 mod bench_noise;
 mod bench_rotation;
@@ -12,6 +13,7 @@ mod bench_skinning;
 mod blend_shapes;
 mod blending;
 mod boids;
+mod cloth;
 mod curves;
 mod expressive;
 mod gltf;
@@ -32,6 +34,7 @@ mod viewer;
 pub use blend_shapes::BlendShapeFaceScene;
 pub use blending::{BlendScene, LocomotionScene};
 pub use boids::{BoidRulesScene, FlockScene};
+pub use cloth::{check_cloth, ClothScene, SpringScene};
 pub use curves::{KeyframesScene, LagrangeScene};
 pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
 pub use ik::{AimScene, IkScene};

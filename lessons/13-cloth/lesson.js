@@ -1,0 +1,199 @@
+// Lesson 13: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/cloth/, src/figures/cloth.rs), including picking and dragging a particle. The page only
+// times the calls it makes.
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
+import { ClothScene, SpringScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+const ORANGE = cssVar('--orange');
+const TEAL = cssVar('--teal');
+// Columns of flat samples, with NaN (after an explosion) as a gap.
+const gaps = (flat, width) => columns(flat, width).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
+
+/**
+ * Dragging a particle: capture-phase listeners on the stage run before the canvas's orbit
+ * controls and take the event only when the timeline plays and Rust finds a particle under the
+ * pointer; otherwise the drag orbits the camera.
+ */
+function dragParticles(selector, scene, timeline) {
+  const canvas = document.querySelector(`${selector} .stage canvas`);
+  const stage = canvas.parentElement;
+  const local = (e) => {
+    const r = canvas.getBoundingClientRect();
+    return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
+  };
+  let dragging = null;
+  stage.addEventListener('pointerdown', (e) => {
+    if (e.target !== canvas || e.button !== 0 || e.shiftKey || !timeline.playing) return;
+    if (!scene.grab(...local(e))) return;
+    e.stopPropagation();
+    dragging = e.pointerId;
+    canvas.setPointerCapture(e.pointerId);
+    canvas.classList.add('dragging');
+  }, { capture: true });
+  stage.addEventListener('pointermove', (e) => {
+    if (e.pointerId !== dragging) return;
+    e.stopPropagation();
+    scene.drag(...local(e));
+  }, { capture: true });
+  const release = (e) => {
+    if (e.pointerId !== dragging) return;
+    e.stopPropagation();
+    dragging = null;
+    scene.release();
+    canvas.classList.remove('dragging');
+  };
+  stage.addEventListener('pointerup', release, { capture: true });
+  stage.addEventListener('pointercancel', release, { capture: true });
+}
+
+// Figure 1: one spring, one constraint (the exercises).
+const springViewer = await lesson.figure('#fig-spring');
+if (springViewer) {
+  springViewer.setCamera(0, 1.7, 0, 3.8, 0.1, 0.08);
+  const scene = new SpringScene();
+  const timeline = new Timeline(document.getElementById('spring-timeline'), { duration: scene.durationSec() });
+  const p = { k: 40, c: 0.05, step: 16.7, useExercise: false };
+  const gui = new GUI({ container: document.querySelector('#fig-spring .panel'), title: 'One spring' });
+  gui.add(p, 'k', 1, 400, 1).name('stiffness k (N/m)');
+  gui.add(p, 'c', 0, 1, 0.01).name('damping c (N·s/m)');
+  gui.add(p, 'step', 2, 80, 0.1).name('step h (ms)');
+  gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('spring-plot'), {
+    title: 'Distance from the anchor', xLabel: 'time (s)', yLabel: 'length (m)',
+    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], minSpan: 0.1,
+  });
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setStiffness(p.k);
+    scene.setDamping(p.c);
+    scene.setStepMs(p.step);
+    scene.setUseExercise(p.useExercise);
+    plot.setData(gaps(scene.lengthSamples(), 3));
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('spring-note');
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, [rejected, scene.draw(springViewer, t)].filter(Boolean).join(' '));
+    plot.setCursor(t);
+    markDrawn('#fig-spring');
+  });
+}
+
+// Figure 2: two flags, mass-spring and XPBD, with energy and stretch plots.
+const flagViewer = await lesson.figure('#fig-flag');
+if (flagViewer) {
+  flagViewer.setCamera(0, 1.9, 0, 5.0, 0.3, 0.18);
+  const scene = new ClothScene('flag');
+  const timeline = new Timeline(document.getElementById('flag-timeline'), { duration: scene.durationSec() });
+  const defaults = { structural: 100, shear: 50, bending: 20, damping: 0.02, step: 16.7, substeps: 10, wind: 6, pins: 'whole edge' };
+  const p = {
+    ...defaults,
+    explode: () => { Object.assign(p, { structural: 2000, substeps: 4 }); refresh(); apply(); },
+    reset: () => { Object.assign(p, defaults); refresh(); apply(); scene.reset(); timeline.time = 0; timeline.show(); },
+  };
+  const gui = new GUI({ container: document.querySelector('#fig-flag .panel'), title: 'Flags' });
+  const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
+  const springs = gui.addFolder('stiffness k (N/m)');
+  springs.add(p, 'structural', 0, 3000, 10).name('structural');
+  springs.add(p, 'shear', 0, 1000, 5).name('shear');
+  springs.add(p, 'bending', 0, 500, 5).name('bending');
+  gui.add(p, 'damping', 0, 0.3, 0.005).name('damping c (N·s/m)');
+  gui.add(p, 'step', 5, 50, 0.1).name('frame step Δt (ms)');
+  gui.add(p, 'substeps', 1, 40, 1).name('substeps');
+  gui.add(p, 'wind', 0, 20, 0.5).name('wind (m/s)');
+  gui.add(p, 'pins', ['whole edge', 'two corners']).name('pins');
+  gui.add(p, 'explode').name('push past the stability limit');
+  gui.add(p, 'reset').name('reset');
+  const energy = new Plot(document.getElementById('flag-energy'), {
+    title: 'Total energy (kinetic + gravity + springs)', xLabel: 'time (s)', yLabel: 'energy (J)',
+    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], minSpan: 0.1,
+  });
+  const stretch = new Plot(document.getElementById('flag-stretch'), {
+    title: 'Largest stretch of a structural spring', xLabel: 'time (s)', yLabel: 'stretch (%)',
+    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], minSpan: 1,
+  });
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    for (const kind of ['structural', 'shear', 'bending']) scene.setStiffness(kind, p[kind]);
+    scene.setDamping(p.damping);
+    scene.setStepMs(p.step);
+    scene.setSubsteps(p.substeps);
+    scene.setWind(p.wind);
+    scene.setPins(p.pins);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  dragParticles('#fig-flag', scene, timeline);
+  const note = document.getElementById('flag-note');
+  let shown = -1;
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, [rejected, scene.draw(flagViewer, t)].filter(Boolean).join(' '));
+    const samples = scene.samples();
+    if (samples.length !== shown) {
+      shown = samples.length;
+      const [time, e0, e1, s0, s1] = gaps(samples, 5);
+      energy.setData([time, e0, e1]);
+      stretch.setData([time, s0, s1]);
+    }
+    energy.setCursor(t);
+    stretch.setCursor(t);
+    markDrawn('#fig-flag');
+  });
+}
+
+// Figure 3: a cloth falling on a sphere and a box, one method at a time, timed.
+const drapeViewer = await lesson.figure('#fig-drape');
+if (drapeViewer) {
+  drapeViewer.setCamera(0.5, 0.6, 0, 5.0, 0.45, 0.5);
+  const scene = new ClothScene('drape');
+  const timeline = new Timeline(document.getElementById('drape-timeline'), { duration: scene.durationSec() });
+  const p = {
+    method: 'mass-spring', resolution: 20, sphereX: 0, boxX: -0.9, boxZ: 0.7, friction: 0.3,
+    pins: 'none', reset: () => { scene.reset(); timeline.time = 0; timeline.show(); },
+  };
+  const gui = new GUI({ container: document.querySelector('#fig-drape .panel'), title: 'Drape' });
+  gui.add(p, 'method', ['mass-spring', 'XPBD']).name('method');
+  // A few resolutions rather than a slider: each costs a replay from the start.
+  gui.add(p, 'resolution', [10, 20, 40, 100]).name('particles per side');
+  gui.add(p, 'sphereX', -1.5, 1.5, 0.05).name('sphere x (m)');
+  gui.add(p, 'boxX', -1.5, 1.5, 0.05).name('box x (m)');
+  gui.add(p, 'boxZ', -1.5, 1.5, 0.05).name('box z (m)');
+  gui.add(p, 'friction', 0, 2, 0.05).name('friction μ');
+  gui.add(p, 'pins', ['none', 'two corners', 'whole edge']).name('pins');
+  gui.add(p, 'reset').name('reset');
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setMethod(p.method);
+    scene.setResolution(p.resolution);
+    scene.setObstacles(p.sphereX, p.boxX, p.boxZ);
+    scene.setFriction(p.friction);
+    scene.setPins(p.pins);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  dragParticles('#fig-drape', scene, timeline);
+  const note = document.getElementById('drape-note');
+  const timing = document.getElementById('drape-timing');
+  let average = 0;
+  let frame = 0;
+  let last = 0;
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    const t0 = performance.now();
+    const text = scene.draw(drapeViewer, t);
+    const ms = performance.now() - t0;
+    // One simulated frame per drawn frame while playing; replays after a scrub are left out.
+    const frames = Math.round((t - last) / (1 / 60));
+    last = t;
+    if (timeline.playing && frames >= 1 && frames <= 2) average = average === 0 ? ms / frames : 0.9 * average + 0.1 * (ms / frames);
+    showNote(note, [rejected, text].filter(Boolean).join(' '));
+    if (frame++ % 15 === 0 && average > 0) {
+      showNote(timing, `Measured here: ${average.toFixed(2)} ms per frame (${p.resolution} × ${p.resolution}, ${p.method}, 10 substeps, simulation and upload, this build of the wasm).`);
+    }
+    markDrawn('#fig-drape');
+  });
+}

@@ -1,0 +1,1194 @@
+//! Figure logic for lesson 13, "Cloth" (see [`crate::figures`]).
+//!
+//! - [`ClothFigure`]: a cloth simulated frame by frame; preset [`Preset::Flag`] (two flags in a
+//!   gusty wind, mass-spring beside XPBD, with the same stiffness) or [`Preset::Drape`] (a cloth
+//!   falling on a sphere and a box the reader moves, one method at a time, any resolution up to
+//!   100 × 100). Energy and maximum stretch per frame for the plots; the explosion detected and
+//!   reported; a particle dragged with the mouse.
+//! - [`SpringFigure`]: one particle on a damped spring (mass-spring) beside one on a distance
+//!   constraint (XPBD): the stability limit `ω h < 2` in its simplest form, and the student's
+//!   exercises 13.1–13.3.
+//!
+//! Both are deterministic: the state at timeline time `t` is the state after `⌊t / Δt⌋` frames
+//! from the start, replayed when the time goes back or a parameter changes (drags included: they
+//! are recorded with the frame they happened at).
+
+use super::{
+    compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
+    DEFAULT_RUNNER,
+};
+use crate::camera::OrbitCamera;
+use crate::cloth::{Cloth, ClothParams, ClothSpec, Colliders, Method, SpringKind};
+use crate::exercises::run;
+use crate::mesh::MeshData;
+use glam::{Mat4, Quat, Vec2, Vec3, Vec4};
+
+const FILE: &str = "src/exercises/cloth.rs";
+/// Length of the figures' timelines, seconds (bounds the work of one replay).
+pub const DURATION: f32 = 6.0;
+/// The finest resolution the page offers (particles per side); the core allows
+/// [`crate::cloth::MAX_SIDE`].
+pub const PAGE_MAX_SIDE: usize = 100;
+/// How close (CSS pixels) a pointer must be to a particle to grab it.
+pub const GRAB_RADIUS_PX: f32 = 24.0;
+/// The most drag events a figure records for its replays.
+pub const MAX_DRAG_EVENTS: usize = 4000;
+
+/// What the cloth figure shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Preset {
+    /// Two flags on poles in a gusty wind: mass-spring (left) and XPBD (right).
+    Flag,
+    /// A level cloth falling on a sphere, a box and the ground.
+    Drape,
+}
+
+/// The pin choices of the dropdown.
+pub const PINS: [&str; 3] = ["none", "two corners", "whole edge"];
+/// The method choices of the drape's dropdown.
+pub const METHODS: [&str; 2] = ["mass-spring", "XPBD"];
+
+/// One simulated cloth and what is drawn of it.
+#[derive(Clone, Debug)]
+struct Sim {
+    cloth: Cloth,
+    method: Method,
+    /// The last positions before an explosion (what is drawn after it).
+    last_good: Vec<Vec3>,
+    /// Per frame: `(time, energy, max stretch)`.
+    samples: Vec<[f32; 3]>,
+    /// Front and back faces: 2 × the particles.
+    render_positions: Vec<Vec3>,
+    render_normals: Vec<Vec3>,
+    colors: Vec<Vec4>,
+    color: Vec3,
+    label: Vec3,
+}
+
+/// A held particle: `(cloth, particle index, target point)`.
+type Grab = (usize, usize, Vec3);
+
+/// The cloth figure (both presets).
+#[derive(Clone, Debug)]
+pub struct ClothFigure {
+    preset: Preset,
+    side: usize,
+    params: ClothParams,
+    colliders: Colliders,
+    pins: usize,
+    method: Method,
+    wind_speed: f32,
+    frame_dt: f32,
+    sims: Vec<Sim>,
+    frames_done: usize,
+    dirty: bool,
+    /// `(frame, grab)`: from that frame on, this particle (sim, index) is held at that point.
+    drags: Vec<(usize, Option<Grab>)>,
+    drag_cursor: usize,
+    /// The particle being dragged now: `(sim, index, the point grabbed)`.
+    dragging: Option<Grab>,
+    view: Option<(OrbitCamera, Vec2)>,
+    structure_changed: bool,
+    /// Sphere and box centres at the start of a run.
+    obstacles_start: (Vec3, Vec3),
+    /// `(frame, sphere centre, box centre)`: the reader moved them then (replayed like drags).
+    obstacle_moves: Vec<(usize, Vec3, Vec3)>,
+    obstacle_cursor: usize,
+}
+
+impl ClothFigure {
+    /// The figure of `preset` with its defaults.
+    pub fn new(preset: Preset) -> Self {
+        let mut params = ClothParams::default();
+        let (side, pins, method) = match preset {
+            Preset::Flag => (14, 2, Method::MassSpring),
+            Preset::Drape => (20, 0, Method::MassSpring),
+        };
+        params.compliance_from_stiffness();
+        let colliders = match preset {
+            Preset::Flag => Colliders {
+                ground_y: Some(0.0),
+                ..Default::default()
+            },
+            Preset::Drape => Colliders {
+                ground_y: Some(0.0),
+                sphere: Some((Vec3::new(0.0, 0.55, 0.0), 0.55)),
+                cuboid: Some((Vec3::new(-0.9, 0.2, 0.7), Vec3::splat(0.2))),
+                friction: 0.3,
+                thickness: 0.012,
+            },
+        };
+        let mut f = Self {
+            preset,
+            side,
+            params,
+            colliders,
+            pins,
+            method,
+            wind_speed: if preset == Preset::Flag { 6.0 } else { 0.0 },
+            frame_dt: 1.0 / 60.0,
+            sims: Vec::new(),
+            frames_done: 0,
+            dirty: false,
+            drags: Vec::new(),
+            drag_cursor: 0,
+            dragging: None,
+            view: None,
+            structure_changed: true,
+            obstacles_start: (Vec3::ZERO, Vec3::ZERO),
+            obstacle_moves: Vec::new(),
+            obstacle_cursor: 0,
+        };
+        f.obstacles_start = f.obstacles();
+        f.build();
+        f
+    }
+
+    fn build(&mut self) {
+        let side = self.side as i64;
+        let specs: Vec<(ClothSpec, Method, Vec3)> = match self.preset {
+            Preset::Flag => {
+                let rows = ((side as f32) * 0.65).round().max(2.0) as i64;
+                let flag = |x: f32| ClothSpec {
+                    columns: side,
+                    rows,
+                    width_m: 1.5,
+                    height_m: 1.0,
+                    mass_kg: 0.25,
+                    origin: Vec3::new(x, 2.4, 0.0),
+                    across: Vec3::X,
+                    down: Vec3::NEG_Y,
+                };
+                vec![
+                    (flag(-1.9), Method::MassSpring, palette::ORANGE),
+                    (flag(0.4), Method::Xpbd, palette::TEAL),
+                ]
+            }
+            Preset::Drape => {
+                let color = if self.method == Method::MassSpring {
+                    palette::ORANGE
+                } else {
+                    palette::TEAL
+                };
+                vec![(ClothSpec::level(side, 1.5), self.method, color)]
+            }
+        };
+        self.sims = specs
+            .into_iter()
+            .map(|(spec, method, color)| {
+                let cloth = Cloth::new(&spec).expect("the page's resolutions are valid");
+                let n = cloth.len();
+                let label = match self.preset {
+                    Preset::Flag => spec.origin + Vec3::new(0.75, 0.35, 0.0),
+                    Preset::Drape => Vec3::new(0.0, 1.9, -1.0),
+                };
+                Sim {
+                    last_good: cloth.positions.clone(),
+                    samples: Vec::with_capacity(1024),
+                    render_positions: vec![Vec3::ZERO; 2 * n],
+                    render_normals: vec![Vec3::ZERO; 2 * n],
+                    colors: vec![Vec4::ONE; 2 * n],
+                    cloth,
+                    method,
+                    color,
+                    label,
+                }
+            })
+            .collect();
+        self.apply_pins();
+        self.structure_changed = true;
+        self.restart();
+    }
+
+    fn apply_pins(&mut self) {
+        for sim in &mut self.sims {
+            let c = &mut sim.cloth;
+            c.unpin_all();
+            let rows = c.rows;
+            match self.pins {
+                1 => {
+                    let (a, b) = (c.index(0, 0), c.index(0, rows - 1));
+                    c.set_pinned(a, true);
+                    c.set_pinned(b, true);
+                }
+                2 => {
+                    for r in 0..rows {
+                        let i = c.index(0, r);
+                        c.set_pinned(i, true);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    fn restart(&mut self) {
+        for sim in &mut self.sims {
+            sim.cloth.reset();
+            sim.last_good.copy_from_slice(&sim.cloth.positions);
+            sim.samples.clear();
+        }
+        self.frames_done = 0;
+        self.drag_cursor = 0;
+        self.obstacle_cursor = 0;
+        let (sphere, cuboid) = self.obstacles_start;
+        self.place_obstacles(sphere, cuboid);
+        self.dirty = false;
+    }
+
+    /// The sphere's and the box's centres now.
+    pub fn obstacles(&self) -> (Vec3, Vec3) {
+        (
+            self.colliders.sphere.map_or(Vec3::ZERO, |s| s.0),
+            self.colliders.cuboid.map_or(Vec3::ZERO, |b| b.0),
+        )
+    }
+
+    fn place_obstacles(&mut self, sphere: Vec3, cuboid: Vec3) {
+        if let Some((c, _)) = &mut self.colliders.sphere {
+            *c = sphere;
+        }
+        if let Some((c, _)) = &mut self.colliders.cuboid {
+            *c = cuboid;
+        }
+    }
+
+    /// Applies the recorded obstacle moves up to `frame`.
+    fn catch_up_obstacles(&mut self, frame: usize) {
+        while self.obstacle_cursor < self.obstacle_moves.len()
+            && self.obstacle_moves[self.obstacle_cursor].0 <= frame
+        {
+            let (_, sphere, cuboid) = self.obstacle_moves[self.obstacle_cursor];
+            self.place_obstacles(sphere, cuboid);
+            self.obstacle_cursor += 1;
+        }
+    }
+
+    /// Back to the start with no recorded drags or obstacle moves, the obstacles where they are
+    /// now (the page also sets its timeline to 0).
+    pub fn reset(&mut self) {
+        self.forget_interaction();
+        self.restart();
+    }
+
+    fn forget_interaction(&mut self) {
+        self.drags.clear();
+        self.dragging = None;
+        self.obstacles_start = self.obstacles();
+        self.obstacle_moves.clear();
+    }
+
+    fn changed(&mut self) {
+        self.dirty = true;
+        self.forget_interaction();
+    }
+
+    pub fn preset(&self) -> Preset {
+        self.preset
+    }
+
+    /// Stiffness `k` of one spring kind ("structural", "shear", "bending"), N/m in [0, 5000].
+    /// XPBD uses the compliance `α = 1/k`.
+    pub fn set_stiffness(&mut self, kind: &str, k: f32) -> Result<(), String> {
+        let i = kind_index(kind)?;
+        let k = in_range(&format!("{kind} stiffness"), k, 0.0, 5000.0)?;
+        if k != self.params.stiffness[i] {
+            self.params.stiffness[i] = k;
+            self.params.compliance_from_stiffness();
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// Damping `c` of every spring, N·s/m in [0, 1].
+    pub fn set_damping(&mut self, c: f32) -> Result<(), String> {
+        let c = in_range("damping", c, 0.0, 1.0)?;
+        if [c, c, 0.5 * c] != self.params.damping {
+            self.params.damping = [c, c, 0.5 * c];
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// The frame step Δt, milliseconds in [5, 50].
+    pub fn set_step_ms(&mut self, ms: f32) -> Result<(), String> {
+        let dt = in_range("step", ms, 5.0, 50.0)? / 1000.0;
+        if dt != self.frame_dt {
+            self.frame_dt = dt;
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// Substeps per frame, in [1, 40].
+    pub fn set_substeps(&mut self, n: f32) -> Result<(), String> {
+        let n = in_range("substeps", n, 1.0, 40.0)?.round() as u32;
+        if n != self.params.substeps {
+            self.params.substeps = n;
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// Mean wind speed, m/s in [0, 20] (gusts vary it by about ±30 %).
+    pub fn set_wind(&mut self, speed: f32) -> Result<(), String> {
+        let w = in_range("wind", speed, 0.0, 20.0)?;
+        if w != self.wind_speed {
+            self.wind_speed = w;
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// "none", "two corners" or "whole edge".
+    pub fn set_pins(&mut self, name: &str) -> Result<(), String> {
+        let pins = PINS
+            .iter()
+            .position(|&p| p == name)
+            .ok_or_else(|| format!("pins: no choice named {name:?}"))?;
+        if pins != self.pins {
+            self.pins = pins;
+            self.apply_pins();
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// "mass-spring" or "XPBD" (the drape; the flag always shows both).
+    pub fn set_method(&mut self, name: &str) -> Result<(), String> {
+        let method = match name {
+            "mass-spring" => Method::MassSpring,
+            "XPBD" => Method::Xpbd,
+            _ => return Err(format!("method: no method named {name:?}")),
+        };
+        if self.preset == Preset::Drape && method != self.method {
+            self.method = method;
+            self.build();
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// Particles per side, in [4, 100] (the flag has about two thirds as many rows).
+    pub fn set_resolution(&mut self, side: f32) -> Result<(), String> {
+        let side = in_range("resolution", side, 4.0, PAGE_MAX_SIDE as f32)?.round() as usize;
+        if side != self.side {
+            self.side = side;
+            self.build();
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// The sphere's centre x and the box's centre x and z, metres in [−1.5, 1.5]. They move at
+    /// the current frame: the cloth runs into them from there on (and so in every replay). At
+    /// time 0, or once [`MAX_DRAG_EVENTS`] moves are recorded, the run starts again with them in
+    /// their new places.
+    pub fn set_obstacles(&mut self, sphere_x: f32, box_x: f32, box_z: f32) -> Result<(), String> {
+        let sx = in_range("sphere x", sphere_x, -1.5, 1.5)?;
+        let bx = in_range("box x", box_x, -1.5, 1.5)?;
+        let bz = in_range("box z", box_z, -1.5, 1.5)?;
+        let (mut sphere, mut cuboid) = self.obstacles();
+        (sphere.x, cuboid.x, cuboid.z) = (sx, bx, bz);
+        if (sphere, cuboid) == self.obstacles() {
+            return Ok(());
+        }
+        self.place_obstacles(sphere, cuboid);
+        let frame = self.frames_done;
+        if frame == 0 || self.dirty || self.obstacle_moves.len() >= MAX_DRAG_EVENTS {
+            self.obstacles_start = (sphere, cuboid);
+            self.obstacle_moves.clear();
+            self.dirty = true;
+        } else {
+            match self.obstacle_moves.last_mut() {
+                Some(last) if last.0 == frame => (last.1, last.2) = (sphere, cuboid),
+                _ => self.obstacle_moves.push((frame, sphere, cuboid)),
+            }
+            self.obstacle_cursor = self.obstacle_moves.len();
+        }
+        Ok(())
+    }
+
+    /// Coulomb friction μ with the colliders, in [0, 2].
+    pub fn set_friction(&mut self, mu: f32) -> Result<(), String> {
+        let mu = in_range("friction", mu, 0.0, 2.0)?;
+        if mu != self.colliders.friction {
+            self.colliders.friction = mu;
+            self.changed();
+        }
+        Ok(())
+    }
+
+    /// How many cloths (1 or 2) and, per cloth, its particle count.
+    pub fn cloth_count(&self) -> usize {
+        self.sims.len()
+    }
+
+    /// Whether the meshes must be (re)created: true once after the resolution or method changed.
+    pub fn take_structure_changed(&mut self) -> bool {
+        std::mem::replace(&mut self.structure_changed, false)
+    }
+
+    /// The double-sided mesh of cloth `k` (front faces, then the back faces reversed), for
+    /// `Renderer::create_mesh`, and its vertex colours.
+    pub fn mesh_data(&self, k: usize) -> (MeshData, Vec<Vec4>) {
+        let sim = &self.sims[k];
+        let n = sim.cloth.len() as u32;
+        let mut indices = Vec::with_capacity(6 * sim.cloth.triangles.len());
+        for t in &sim.cloth.triangles {
+            indices.extend_from_slice(t);
+        }
+        for t in &sim.cloth.triangles {
+            indices.extend_from_slice(&[t[0] + n, t[2] + n, t[1] + n]);
+        }
+        (
+            MeshData {
+                positions: sim.render_positions.clone(),
+                normals: sim.render_normals.clone(),
+                indices,
+            },
+            sim.colors.clone(),
+        )
+    }
+
+    /// Positions, normals and colours of cloth `k` as drawn now (after [`ClothFigure::draw`]).
+    pub fn render_buffers(&self, k: usize) -> (&[Vec3], &[Vec3], &[Vec4]) {
+        let s = &self.sims[k];
+        (&s.render_positions, &s.render_normals, &s.colors)
+    }
+
+    /// The wind at time `t`: the mean speed along +x, turned and strengthened by slow gusts
+    /// (a fixed function of time, so a replay blows the same).
+    pub fn wind_at(&self, t: f32) -> Vec3 {
+        let turn = 0.25 + 0.35 * (0.7 * t).sin();
+        let gust = 1.0 + 0.3 * (2.1 * t).sin() + 0.15 * (5.3 * t + 1.0).sin();
+        self.wind_speed * gust * Vec3::new(turn.cos(), 0.05 * (1.3 * t).sin(), turn.sin())
+    }
+
+    fn params_for(&self, method: Method, t: f32) -> ClothParams {
+        ClothParams {
+            method,
+            wind: self.wind_at(t),
+            ..self.params
+        }
+    }
+
+    /// Simulates to `time_sec` (replaying from the start when the time went back or something
+    /// changed). Returns the frames taken.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let t = in_range("time", time_sec, 0.0, DURATION)?;
+        let target = (t / self.frame_dt + 1e-3).floor() as usize;
+        if self.dirty || target < self.frames_done {
+            self.restart();
+        }
+        let n = target - self.frames_done;
+        for _ in 0..n {
+            self.step_frame()?;
+        }
+        Ok(n)
+    }
+
+    fn step_frame(&mut self) -> Result<(), String> {
+        let frame = self.frames_done;
+        while self.drag_cursor < self.drags.len() && self.drags[self.drag_cursor].0 <= frame {
+            self.drag_cursor += 1;
+        }
+        let grab = self
+            .drag_cursor
+            .checked_sub(1)
+            .and_then(|k| self.drags[k].1);
+        self.catch_up_obstacles(frame);
+        let t = frame as f32 * self.frame_dt;
+        for k in 0..self.sims.len() {
+            let params = self.params_for(self.sims[k].method, t);
+            let sim = &mut self.sims[k];
+            if sim.cloth.exploded().is_some() {
+                continue;
+            }
+            sim.cloth.grab = grab.and_then(|(s, i, p)| (s == k).then_some((i, p)));
+            sim.cloth
+                .step(&params, &self.colliders, self.frame_dt)
+                .map_err(|e| e.to_string())?;
+            if sim.cloth.exploded().is_none() {
+                sim.last_good.copy_from_slice(&sim.cloth.positions);
+                sim.samples.push([
+                    t + self.frame_dt,
+                    sim.cloth.energy(&params),
+                    100.0 * sim.cloth.max_stretch(),
+                ]);
+            }
+        }
+        self.frames_done += 1;
+        Ok(())
+    }
+
+    /// Plot samples, flat, one row per frame: `[t, energy of each cloth (J)…, max stretch of each
+    /// (%)…]`; NaN where a cloth had exploded.
+    pub fn samples(&self) -> Vec<f32> {
+        let rows = self.sims.iter().map(|s| s.samples.len()).max().unwrap_or(0);
+        let width = 1 + 2 * self.sims.len();
+        let mut out = Vec::with_capacity(rows * width);
+        for r in 0..rows {
+            out.push((r + 1) as f32 * self.frame_dt);
+            for column in [1, 2] {
+                for s in &self.sims {
+                    out.push(s.samples.get(r).map_or(f32::NAN, |x| x[column]));
+                }
+            }
+        }
+        out
+    }
+
+    /// When cloth `k` exploded (seconds), if it did.
+    pub fn exploded(&self, k: usize) -> Option<f32> {
+        self.sims.get(k).and_then(|s| s.cloth.exploded())
+    }
+
+    /// The positions of cloth `k` (tests).
+    pub fn positions(&self, k: usize) -> &[Vec3] {
+        &self.sims[k].cloth.positions
+    }
+
+    /// The camera and canvas size (CSS pixels) of the last frame, for picking.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
+    fn view_proj(&self) -> Option<(Mat4, Vec2)> {
+        let (camera, size) = self.view?;
+        Some((camera.projection(size.x / size.y) * camera.view(), size))
+    }
+
+    /// The free particle nearest to the pointer on screen, within [`GRAB_RADIUS_PX`]:
+    /// `(cloth, index)`.
+    pub fn pick(&self, x_px: f32, y_px: f32) -> Result<Option<(usize, usize)>, String> {
+        let p = Vec2::new(finite("x", x_px)?, finite("y", y_px)?);
+        let Some((view_proj, size)) = self.view_proj() else {
+            return Ok(None);
+        };
+        let mut best = None;
+        let mut best_d = GRAB_RADIUS_PX;
+        for (k, sim) in self.sims.iter().enumerate() {
+            if sim.cloth.exploded().is_some() {
+                continue;
+            }
+            for (i, q) in sim.cloth.positions.iter().enumerate() {
+                if sim.cloth.is_pinned(i) {
+                    continue;
+                }
+                if let Some(s) = project(view_proj, size, *q) {
+                    let d = s.distance(p);
+                    if d < best_d {
+                        best_d = d;
+                        best = Some((k, i));
+                    }
+                }
+            }
+        }
+        Ok(best)
+    }
+
+    /// Starts dragging the particle under the pointer, if any; returns whether one was grabbed.
+    pub fn grab(&mut self, x_px: f32, y_px: f32) -> Result<bool, String> {
+        let Some((k, i)) = self.pick(x_px, y_px)? else {
+            return Ok(false);
+        };
+        let at = self.sims[k].cloth.positions[i];
+        self.dragging = Some((k, i, at));
+        self.record(Some((k, i, at)));
+        Ok(true)
+    }
+
+    /// Moves the dragged particle's target under the pointer, in the plane through it that faces
+    /// the camera.
+    pub fn drag(&mut self, x_px: f32, y_px: f32) -> Result<(), String> {
+        let p = Vec2::new(finite("x", x_px)?, finite("y", y_px)?);
+        let (Some((k, i, anchor)), Some((view_proj, size))) = (self.dragging, self.view_proj())
+        else {
+            return Ok(());
+        };
+        if let Some(world) = on_view_plane(view_proj, size, anchor, p) {
+            let world = world.clamp(Vec3::new(-4.0, 0.0, -4.0), Vec3::new(4.0, 4.0, 4.0));
+            self.dragging = Some((k, i, world));
+            self.record(Some((k, i, world)));
+        }
+        Ok(())
+    }
+
+    /// Lets go of the dragged particle.
+    pub fn release(&mut self) {
+        if self.dragging.take().is_some() {
+            self.record(None);
+        }
+    }
+
+    fn record(&mut self, grab: Option<Grab>) {
+        let frame = self.frames_done;
+        let len = self.drags.len();
+        match self.drags.last_mut() {
+            Some(last) if last.0 == frame => last.1 = grab,
+            _ if len < MAX_DRAG_EVENTS => self.drags.push((frame, grab)),
+            _ => {}
+        }
+    }
+
+    /// Simulates to `time_sec`, fills the render buffers and `frame` (`meshes`: one per cloth,
+    /// created from [`ClothFigure::mesh_data`]), and returns the note.
+    pub fn draw(
+        &mut self,
+        frame: &mut Frame,
+        meshes: &[MeshId],
+        time_sec: f32,
+    ) -> Result<String, String> {
+        self.advance_to(time_sec)?;
+        self.catch_up_obstacles(self.frames_done);
+        frame.grid(10, 0.5);
+        if let Some((c, r)) = self.colliders.sphere {
+            let m = Mat4::from_translation(c) * Mat4::from_scale(Vec3::splat(r));
+            frame.mesh(MeshId::SPHERE, m, palette::GREY);
+        }
+        if let Some((c, h)) = self.colliders.cuboid {
+            frame.mesh(
+                MeshId::CUBE,
+                Mat4::from_translation(c) * Mat4::from_scale(h),
+                palette::PURPLE,
+            );
+        }
+        let rows_per_band = |rows: usize| (rows / 5).max(1);
+        for (k, sim) in self.sims.iter_mut().enumerate() {
+            let exploded = sim.cloth.exploded().is_some();
+            let n = sim.cloth.len();
+            let positions = if exploded {
+                &sim.last_good
+            } else {
+                &sim.cloth.positions
+            };
+            let normals = &sim.cloth.normals;
+            let band = rows_per_band(sim.cloth.rows);
+            let light = sim.color.lerp(Vec3::ONE, 0.55);
+            for i in 0..n {
+                let p = positions[i];
+                let nrm = if normals[i].is_finite() {
+                    normals[i]
+                } else {
+                    Vec3::Y
+                };
+                sim.render_positions[i] = p;
+                sim.render_positions[i + n] = p;
+                sim.render_normals[i] = nrm;
+                sim.render_normals[i + n] = -nrm;
+                let row = i / sim.cloth.columns;
+                let c = if exploded {
+                    palette::RED
+                } else if (row / band) % 2 == 0 {
+                    sim.color
+                } else {
+                    light
+                };
+                sim.colors[i] = c.extend(1.0);
+                sim.colors[i + n] = c.extend(1.0);
+            }
+            if let Some(&id) = meshes.get(k) {
+                frame.mesh_vertex_colors(id, Mat4::IDENTITY);
+            }
+            for (i, p) in positions.iter().enumerate() {
+                if sim.cloth.is_pinned(i) {
+                    frame.point(*p, 0.025, palette::DARK);
+                }
+            }
+            if self.preset == Preset::Flag {
+                let foot = Vec3::new(sim.cloth.positions[0].x - 0.02, 0.0, 0.0);
+                let m = Mat4::from_scale_rotation_translation(
+                    Vec3::new(0.02, 1.3, 0.02),
+                    Quat::IDENTITY,
+                    foot + Vec3::new(0.0, 1.3, 0.0),
+                );
+                frame.mesh(MeshId::CUBE, m, palette::BROWN);
+            }
+            let name = sim.method.name();
+            match sim.cloth.exploded() {
+                Some(t) => frame.label(
+                    sim.label,
+                    format!("{name}: exploded at {} s", format_number(t)),
+                    palette::RED,
+                ),
+                None => frame.label(sim.label, name, sim.color),
+            }
+        }
+        if let Some((k, i, target)) = self.dragging {
+            if let Some(sim) = self.sims.get(k) {
+                let p = sim.cloth.positions[i];
+                frame.line(p, target, palette::PINK);
+                frame.point(target, 0.03, palette::PINK);
+            }
+        }
+        Ok(self.note())
+    }
+
+    /// A conservative stable substep for the mass-spring cloth, seconds.
+    pub fn stable_substep(&self) -> f32 {
+        self.sims[0].cloth.stable_substep_estimate(&self.params)
+    }
+
+    /// The substep h, seconds.
+    pub fn substep(&self) -> f32 {
+        self.frame_dt / self.params.substeps as f32
+    }
+
+    fn note(&self) -> String {
+        let h = self.substep();
+        let limit = self.stable_substep();
+        let ms = |s: f32| format_number(1000.0 * s);
+        let mut parts = Vec::new();
+        let c = &self.sims[0].cloth;
+        parts.push(format!(
+            "{} × {} particles, {} springs per cloth; substep h = Δt / {} = {} ms.",
+            c.columns,
+            c.rows,
+            c.springs.len(),
+            self.params.substeps,
+            ms(h),
+        ));
+        let any_spring = self.sims.iter().any(|s| s.method == Method::MassSpring);
+        if any_spring {
+            let verdict = if h <= limit {
+                "below it: stable"
+            } else if h <= 2.0 * limit {
+                "above it: close to the edge"
+            } else {
+                "far above it: expect an explosion"
+            };
+            parts.push(format!(
+                "Mass-spring stability estimate √(2m/Σk) = {} ms; h is {verdict}.",
+                ms(limit)
+            ));
+        }
+        for sim in &self.sims {
+            let name = sim.method.name();
+            match sim.cloth.exploded() {
+                Some(t) => parts.push(format!(
+                    "The {name} cloth exploded at t = {} s (a spring passed {} × its rest length): \
+                     lower the stiffness or the step, or raise the substeps, then reset.",
+                    format_number(t),
+                    format_number(crate::cloth::EXPLODED_STRETCH),
+                )),
+                None => {
+                    if let Some(last) = sim.samples.last() {
+                        parts.push(format!(
+                            "{name}: max stretch {} %, energy {} J.",
+                            format_number(last[2]),
+                            format_number(last[1]),
+                        ));
+                    }
+                }
+            }
+        }
+        if self.preset == Preset::Drape {
+            parts.push(format!(
+                "Friction μ = {} with the sphere, the box and the ground. No self-collision: the \
+                 cloth can pass through itself.",
+                format_number(self.colliders.friction)
+            ));
+        }
+        parts.join(" ")
+    }
+}
+
+fn kind_index(kind: &str) -> Result<usize, String> {
+    SpringKind::ALL
+        .iter()
+        .position(|k| k.name() == kind)
+        .ok_or_else(|| format!("no spring kind named {kind:?} (structural, shear, bending)"))
+}
+
+/// Where `world` lands on the canvas, CSS pixels from the top-left; `None` behind the camera.
+fn project(view_proj: Mat4, size: Vec2, world: Vec3) -> Option<Vec2> {
+    let clip = view_proj * world.extend(1.0);
+    if clip.w <= 1e-6 {
+        return None;
+    }
+    let ndc = clip.truncate() / clip.w;
+    Some(Vec2::new(
+        (ndc.x * 0.5 + 0.5) * size.x,
+        (0.5 - ndc.y * 0.5) * size.y,
+    ))
+}
+
+/// The point under the pixel `p` on the plane through `anchor` facing the camera.
+fn on_view_plane(view_proj: Mat4, size: Vec2, anchor: Vec3, p: Vec2) -> Option<Vec3> {
+    let inverse = view_proj.inverse();
+    let unproject = |px: Vec2, z: f32| {
+        let ndc = Vec3::new(2.0 * px.x / size.x - 1.0, 1.0 - 2.0 * px.y / size.y, z);
+        inverse.project_point3(ndc)
+    };
+    let near = unproject(p, 0.0);
+    let dir = unproject(p, 1.0) - near;
+    let anchor_px = project(view_proj, size, anchor)?;
+    let normal = (unproject(anchor_px, 1.0) - unproject(anchor_px, 0.0)).try_normalize()?;
+    let denominator = dir.dot(normal);
+    if denominator.abs() < 1e-9 {
+        return None;
+    }
+    let s = (anchor - near).dot(normal) / denominator;
+    let hit = near + dir * s;
+    hit.is_finite().then_some(hit)
+}
+
+// ---------------------------------------------------------------------------------------------
+// One spring, one constraint.
+
+/// Mass of the swinging particles, kg.
+pub const SPRING_MASS: f32 = 0.05;
+/// Rest length, metres.
+pub const SPRING_REST: f32 = 0.8;
+/// How long the figure simulates, seconds.
+pub const SPRING_DURATION: f32 = 6.0;
+const ANCHORS: [Vec3; 2] = [Vec3::new(-0.9, 2.3, 0.0), Vec3::new(0.9, 2.3, 0.0)];
+const START_OFFSET: Vec3 = Vec3::new(0.7, -0.9, 0.0);
+const GRAVITY: Vec3 = Vec3::new(0.0, -9.81, 0.0);
+
+/// A particle hanging from a damped spring (integrated with semi-implicit Euler) beside one
+/// hanging from an XPBD distance constraint of compliance `α = 1/k`, both released from the same
+/// stretched, sideways start.
+#[derive(Clone, Debug)]
+pub struct SpringFigure {
+    k: f32,
+    c: f32,
+    dt: f32,
+    use_exercise: bool,
+    runner: Runner,
+    /// Positions after 0, 1, 2, … steps: [mass-spring, XPBD].
+    paths: [Vec<Vec3>; 2],
+    /// The step at which the mass-spring particle flew off (more than 4 m from its anchor, or not
+    /// finite).
+    exploded_at: Option<usize>,
+}
+
+impl Default for SpringFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SpringFigure {
+    pub fn new() -> Self {
+        let mut f = Self {
+            k: 40.0,
+            c: 0.05,
+            dt: 1.0 / 60.0,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            paths: Default::default(),
+            exploded_at: None,
+        };
+        f.integrate();
+        f
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.integrate();
+    }
+
+    /// Runs the student's 13.1 and 13.2 (left) and 13.3 (right).
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.integrate();
+    }
+
+    /// Stiffness k, N/m in [1, 400].
+    pub fn set_stiffness(&mut self, k: f32) -> Result<(), String> {
+        self.k = in_range("stiffness k", k, 1.0, 400.0)?;
+        self.integrate();
+        Ok(())
+    }
+
+    /// Damping c, N·s/m in [0, 1].
+    pub fn set_damping(&mut self, c: f32) -> Result<(), String> {
+        self.c = in_range("damping c", c, 0.0, 1.0)?;
+        self.integrate();
+        Ok(())
+    }
+
+    /// Step, milliseconds in [2, 80].
+    pub fn set_step_ms(&mut self, ms: f32) -> Result<(), String> {
+        self.dt = in_range("step", ms, 2.0, 80.0)? / 1000.0;
+        self.integrate();
+        Ok(())
+    }
+
+    /// `ω h` with `ω = √(k/m)`: semi-implicit Euler on an undamped spring is stable below 2.
+    pub fn omega_h(&self) -> f32 {
+        (self.k / SPRING_MASS).sqrt() * self.dt
+    }
+
+    pub fn exploded_at_sec(&self) -> Option<f32> {
+        self.exploded_at.map(|s| s as f32 * self.dt)
+    }
+
+    fn steps(&self) -> usize {
+        (SPRING_DURATION / self.dt).ceil() as usize
+    }
+
+    fn integrate(&mut self) {
+        let steps = self.steps();
+        let w = 1.0 / SPRING_MASS;
+        let h = self.dt;
+        self.exploded_at = None;
+        let student = self.use_exercise;
+        let mut failed = [false; 3];
+        // Left: forces and semi-implicit Euler.
+        let anchor = ANCHORS[0];
+        let (mut p, mut v) = (anchor + START_OFFSET, Vec3::ZERO);
+        let path = &mut self.paths[0];
+        path.clear();
+        path.push(p);
+        for step in 0..steps {
+            let reference_f =
+                -crate::cloth::spring_force(anchor, p, Vec3::ZERO, v, self.k, self.c, SPRING_REST);
+            let mut f = reference_f;
+            if student && !failed[0] {
+                match run::spring_force(
+                    self.runner,
+                    anchor,
+                    p,
+                    Vec3::ZERO,
+                    v,
+                    self.k,
+                    self.c,
+                    SPRING_REST,
+                ) {
+                    Ok(x) if x.is_finite() => f = -x,
+                    Ok(_) => failed[0] = true,
+                    // Said by the note's comparison; the reference goes on.
+                    Err(_) => failed[0] = true,
+                }
+            }
+            let force = f + GRAVITY * SPRING_MASS;
+            let (mut q, mut u) = (p, v);
+            crate::cloth::particle_step(&mut q, &mut u, force, w, h);
+            if student && !failed[1] {
+                match run::cloth_euler_step(self.runner, p, v, force, w, h) {
+                    Ok((a, b)) if a.is_finite() && b.is_finite() => (q, u) = (a, b),
+                    Ok(_) => failed[1] = true,
+                    // Said by the note's comparison; the reference goes on.
+                    Err(_) => failed[1] = true,
+                }
+            }
+            (p, v) = (q, u);
+            if !p.is_finite() || (p - anchor).length() > 4.0 {
+                self.exploded_at = Some(step + 1);
+                break;
+            }
+            path.push(p);
+        }
+        // Right: XPBD, compliance 1/k.
+        let anchor = ANCHORS[1];
+        let alpha = 1.0 / self.k;
+        let (mut p, mut v) = (anchor + START_OFFSET, Vec3::ZERO);
+        let path = &mut self.paths[1];
+        path.clear();
+        path.push(p);
+        for _ in 0..steps {
+            let previous = p;
+            v += GRAVITY * h;
+            p += v * h;
+            let (mut a, mut b) = (anchor, p);
+            crate::cloth::project_distance(&mut a, &mut b, 0.0, w, SPRING_REST, alpha, h);
+            if student && !failed[2] {
+                match run::project_distance(self.runner, anchor, p, 0.0, w, SPRING_REST, alpha, h) {
+                    Ok((_, y)) if y.is_finite() => b = y,
+                    Ok(_) => failed[2] = true,
+                    // Said by the note's comparison; the reference goes on.
+                    Err(_) => failed[2] = true,
+                }
+            }
+            p = b;
+            v = (p - previous) / h;
+            // The same damping along the constraint, implicit (stable for any c).
+            let n = (p - anchor).normalize_or_zero();
+            let dv = v.dot(n);
+            v -= n * dv * (self.c * h * w) / (1.0 + self.c * h * w);
+            path.push(p);
+        }
+    }
+
+    /// Plot samples, flat: `[t, length mass-spring (m), length XPBD (m)]` per step (NaN after an
+    /// explosion).
+    pub fn length_samples(&self) -> Vec<f32> {
+        let n = self.paths[1].len();
+        let mut out = Vec::with_capacity(3 * n);
+        for s in 0..n {
+            out.push(s as f32 * self.dt);
+            for (k, path) in self.paths.iter().enumerate() {
+                out.push(path.get(s).map_or(f32::NAN, |p| (*p - ANCHORS[k]).length()));
+            }
+        }
+        out
+    }
+
+    /// Draws the two at `time_sec` and returns the note.
+    pub fn draw(&self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let t = in_range("time", time_sec, 0.0, 1e6)?.min(SPRING_DURATION);
+        frame.grid(8, 0.5);
+        let s = (t / self.dt + 1e-3).floor() as usize;
+        let colors = [palette::ORANGE, palette::TEAL];
+        let names = ["mass-spring", "XPBD"];
+        for k in 0..2 {
+            let path = &self.paths[k];
+            let anchor = ANCHORS[k];
+            frame.point(anchor, 0.045, palette::DARK);
+            let gone = k == 0 && self.exploded_at.is_some() && s >= path.len();
+            let p = path[s.min(path.len() - 1)];
+            let trail_start = s.min(path.len() - 1).saturating_sub(40);
+            frame.polyline(
+                &path[trail_start..=s.min(path.len() - 1)],
+                colors[k].lerp(Vec3::ONE, 0.5),
+            );
+            if gone {
+                frame.label(
+                    anchor + Vec3::new(0.0, -0.6, 0.0),
+                    format!(
+                        "exploded at {} s",
+                        format_number(self.exploded_at_sec().unwrap_or(0.0))
+                    ),
+                    palette::RED,
+                );
+            } else {
+                frame.line(anchor, p, colors[k]);
+                frame.mesh(
+                    MeshId::SPHERE,
+                    Mat4::from_translation(p) * Mat4::from_scale(Vec3::splat(0.07)),
+                    colors[k],
+                );
+            }
+            frame.label(anchor + Vec3::new(0.0, 0.2, 0.0), names[k], colors[k]);
+        }
+        let oh = self.omega_h();
+        let mut note = format!(
+            "k = {} N/m, m = {} kg: ω = √(k/m) = {} rad/s, and with h = {} ms, ω h = {} \
+             (semi-implicit Euler needs ω h < 2 without damping; here h must stay under {} ms).",
+            format_number(self.k),
+            format_number(SPRING_MASS),
+            format_number((self.k / SPRING_MASS).sqrt()),
+            format_number(1000.0 * self.dt),
+            format_number(oh),
+            format_number(2000.0 / (self.k / SPRING_MASS).sqrt()),
+        );
+        if let Some(t) = self.exploded_at_sec() {
+            note.push_str(&format!(
+                " The mass-spring particle{} flew off at t = {} s; XPBD (α = 1/k) stays bounded.",
+                if self.use_exercise {
+                    " (moved by your 13.1 and 13.2 where they answer)"
+                } else {
+                    ""
+                },
+                format_number(t)
+            ));
+        }
+        if self.use_exercise {
+            note.push(' ');
+            note.push_str(&self.exercise_note());
+        }
+        Ok(note)
+    }
+
+    /// Compares the student's three functions with the reference at the start state.
+    pub fn exercise_note(&self) -> String {
+        // Each exercise on its own: a failure (not done, a panic) is said by its comparison.
+        let (anchor, p) = (ANCHORS[0], ANCHORS[0] + START_OFFSET);
+        let v = Vec3::new(0.3, -0.2, 0.0);
+        let mut notes = Vec::new();
+        let at = "the start (p = anchor + (0.7, −0.9, 0), v = (0.3, −0.2, 0))";
+        match run::spring_force(
+            self.runner,
+            anchor,
+            p,
+            Vec3::ZERO,
+            v,
+            self.k,
+            self.c,
+            SPRING_REST,
+        ) {
+            Err(f) => notes.push(failure_note("exercise 13.1 spring_force", FILE, &f)),
+            Ok(f) => {
+                let r = crate::cloth::spring_force(
+                    anchor,
+                    p,
+                    Vec3::ZERO,
+                    v,
+                    self.k,
+                    self.c,
+                    SPRING_REST,
+                );
+                notes.push(
+                    compare_note(
+                        "spring_force",
+                        at,
+                        &f.to_array(),
+                        &r.to_array(),
+                        1e-3 * (1.0 + r.length()),
+                    )
+                    .1,
+                );
+            }
+        }
+        let force = Vec3::new(1.0, -2.0, 0.5);
+        let w = 1.0 / SPRING_MASS;
+        match run::cloth_euler_step(self.runner, p, v, force, w, self.dt) {
+            Err(f) => notes.push(failure_note("exercise 13.2 cloth_euler_step", FILE, &f)),
+            Ok((q, u)) => {
+                let (mut rq, mut ru) = (p, v);
+                crate::cloth::particle_step(&mut rq, &mut ru, force, w, self.dt);
+                notes.push(
+                    compare_note(
+                        "cloth_euler_step",
+                        "the start with f = (1, −2, 0.5) N",
+                        &[q.to_array(), u.to_array()].concat(),
+                        &[rq.to_array(), ru.to_array()].concat(),
+                        1e-4,
+                    )
+                    .1,
+                );
+            }
+        }
+        let alpha = 1.0 / self.k;
+        match run::project_distance(
+            self.runner,
+            ANCHORS[1],
+            ANCHORS[1] + START_OFFSET,
+            0.0,
+            w,
+            SPRING_REST,
+            alpha,
+            self.dt,
+        ) {
+            Err(f) => notes.push(failure_note("exercise 13.3 project_distance", FILE, &f)),
+            Ok((a, b)) => {
+                let (mut ra, mut rb) = (ANCHORS[1], ANCHORS[1] + START_OFFSET);
+                crate::cloth::project_distance(
+                    &mut ra,
+                    &mut rb,
+                    0.0,
+                    w,
+                    SPRING_REST,
+                    alpha,
+                    self.dt,
+                );
+                notes.push(
+                    compare_note(
+                        "project_distance",
+                        "the start (anchor pinned, α = 1/k)",
+                        &[a.to_array(), b.to_array()].concat(),
+                        &[ra.to_array(), rb.to_array()].concat(),
+                        1e-4,
+                    )
+                    .1,
+                );
+            }
+        }
+        notes.join(" ")
+    }
+}
