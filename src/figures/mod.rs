@@ -13,6 +13,7 @@ pub mod boids;
 pub mod curves;
 pub mod expressive;
 pub mod gltf;
+pub mod gpu;
 pub mod ik;
 pub mod noise;
 pub mod particles;

@@ -7,6 +7,8 @@
 
 mod context;
 mod renderer;
+mod skin;
 
 pub use context::{BackendChoice, Gpu};
 pub use renderer::{Frame, MeshId, Renderer};
+pub use skin::SkinPass;
