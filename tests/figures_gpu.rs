@@ -5,7 +5,7 @@
 use glam::{Affine3A, Mat4, Vec3};
 use inbetween::draw::{Frame, MeshId, SkinMeshId};
 use inbetween::figures::gpu::{
-    draw_skinned_dqs, draw_skinned_lbs, dqs_like_shader, gpu_skinnable, lbs_like_shader, pack_dqs,
+    dqs_like_shader, draw_skinned_dqs, draw_skinned_lbs, gpu_skinnable, lbs_like_shader, pack_dqs,
     pack_lbs, MAX_GPU_JOINTS,
 };
 use inbetween::figures::skinning::HumanFigure;
@@ -122,7 +122,11 @@ fn palettes_over_the_cap_are_errors_and_draws_record_their_range() {
     assert_eq!(frame.skin_palette[5][0].to_array(), [0.0, 0.0, 0.0, 1.0]);
     let before = frame.fingerprint();
     frame.skin_palette[1][0].w = 0.5;
-    assert_ne!(before, frame.fingerprint(), "the palette is part of the fingerprint");
+    assert_ne!(
+        before,
+        frame.fingerprint(),
+        "the palette is part of the fingerprint"
+    );
     frame.clear();
     assert!(frame.skinned.is_empty() && frame.skin_palette.is_empty());
     assert!(gpu_skinnable(10, 10).is_ok());
@@ -160,4 +164,106 @@ fn the_human_figure_draws_a_gpu_skinned_body_when_asked() {
     figure.take_gpu_dirty();
     figure.set_heat_joint("none").unwrap();
     assert!(figure.take_gpu_dirty() && !figure.take_gpu_dirty());
+}
+
+mod compute {
+    use glam::Vec3;
+    use inbetween::boids::BoidParams;
+    use inbetween::figures::gpu::{
+        boid_rows, flock_stats, particle_stats, GpuParticleClock, MAX_GPU_BOIDS, MAX_GPU_PARTICLES,
+    };
+    use inbetween::particles::{Emitter, ParticleSystem, Sphere, Surfaces};
+
+    #[test]
+    fn the_clock_spawns_what_the_cpu_system_spawns() {
+        // Long lifetimes: nobody dies, so the CPU's live count is what it spawned.
+        let mut e = Emitter::fountain(Vec3::ZERO);
+        e.rate_per_sec = 137.0;
+        e.lifetime_sec = (50.0, 60.0);
+        let surfaces = Surfaces::default();
+        let mut cpu = ParticleSystem::new(5000, 1).unwrap();
+        let (mut ce, mut ge) = ([e], [e]);
+        let mut clock = GpuParticleClock::new(5000, 1).unwrap();
+        let mut spawned = 0u32;
+        for k in 0..100 {
+            cpu.step(&mut ce, &surfaces, 1.0 / 60.0);
+            let rows = clock.step(&mut ge, &surfaces, 1.0 / 60.0, [0; 4]).unwrap();
+            assert_eq!(rows[2][1], spawned % 5000, "ring start at step {k}");
+            spawned += rows[3].iter().sum::<u32>();
+            assert_eq!(spawned as usize, cpu.len(), "step {k}");
+        }
+    }
+
+    #[test]
+    fn caps_and_bad_input_are_errors() {
+        assert!(GpuParticleClock::new(MAX_GPU_PARTICLES + 1, 0).is_err());
+        assert!(GpuParticleClock::new(0, 0).is_err());
+        let mut clock = GpuParticleClock::new(100, 0).unwrap();
+        let s = Surfaces::default();
+        let e = Emitter::fountain(Vec3::ZERO);
+        assert!(clock
+            .step(&mut [e; 5], &s, 0.01, [0; 4])
+            .unwrap_err()
+            .contains("emitters"));
+        assert!(clock
+            .step(&mut [e], &s, f32::NAN, [0; 4])
+            .unwrap_err()
+            .contains("dt"));
+        let mut bad = e;
+        bad.rate_per_sec = -1.0;
+        assert!(clock
+            .step(&mut [bad], &s, 0.01, [0; 4])
+            .unwrap_err()
+            .contains("rate"));
+        let many = Surfaces {
+            spheres: vec![
+                Sphere {
+                    center: Vec3::ZERO,
+                    radius: 1.0
+                };
+                9
+            ],
+            ..Default::default()
+        };
+        assert!(clock
+            .step(&mut [e], &many, 0.01, [0; 4])
+            .unwrap_err()
+            .contains("spheres"));
+        // A burst bigger than the ring is cut to the ring.
+        let rows = clock.step(&mut [e], &s, 0.0, [500, 0, 0, 0]).unwrap();
+        assert_eq!(rows[3].iter().sum::<u32>(), 100);
+        let p = BoidParams::default();
+        assert!(boid_rows(&p, MAX_GPU_BOIDS + 1, 0.0, 0.01)
+            .unwrap_err()
+            .contains("count"));
+        assert!(boid_rows(&p, 0, 0.0, 0.01).is_err());
+        assert!(boid_rows(&p, 10, 0.0, -1.0).unwrap_err().contains("dt"));
+        let nan = BoidParams {
+            max_speed: f32::NAN,
+            ..Default::default()
+        };
+        assert!(boid_rows(&nan, 10, 0.0, 0.01).is_err());
+        assert_eq!(boid_rows(&p, 10, 0.0, 0.01).unwrap().len(), 9 + 8);
+    }
+
+    #[test]
+    fn statistics_measure_what_they_say() {
+        let s = particle_stats(
+            &[Vec3::Y, Vec3::new(0.0, 3.0, 0.0), Vec3::splat(9.0)],
+            &[Vec3::X, Vec3::new(0.0, 3.0, 0.0), Vec3::ZERO],
+            &[true, true, false],
+        );
+        assert_eq!(
+            (s.alive, s.mean_speed, s.mean_height, s.lowest),
+            (2, 2.0, 2.0, 1.0)
+        );
+        // Two boids heading the same way 1 m apart; then opposite ways.
+        let p = [Vec3::ZERO, Vec3::X];
+        let f = flock_stats(&p, &[Vec3::Z, 2.0 * Vec3::Z]);
+        assert_eq!(
+            (f.mean_speed, f.polarisation, f.mean_nearest_m),
+            (1.5, 1.0, 1.0)
+        );
+        assert_eq!(flock_stats(&p, &[Vec3::Z, -Vec3::Z]).polarisation, 0.0);
+    }
 }

@@ -101,7 +101,10 @@ fn compare(a: &[u8], b: &[u8], threshold: u8) -> (f64, f64) {
         }
     }
     let pixels = a.len() / 4;
-    (differ as f64 / pixels as f64, total as f64 / (3 * pixels) as f64)
+    (
+        differ as f64 / pixels as f64,
+        total as f64 / (3 * pixels) as f64,
+    )
 }
 
 /// Fraction of pixels that are not the background (the corner's colour).

@@ -140,6 +140,9 @@ pub struct Renderer {
     pub frame: Frame,
     /// Meshes skinned in the vertex shader (`frame.skinned`), see `skin.rs`.
     pub skin: super::skin::SkinPass,
+    /// Point sprites written by compute shaders (`compute.rs`): buffer and count, drawn after
+    /// `frame.points` and cleared with the frame.
+    pub gpu_points: Vec<(wgpu::Buffer, u32)>,
 }
 
 impl Renderer {
@@ -320,6 +323,7 @@ impl Renderer {
             light_dir: Vec3::new(0.4, 0.8, 0.45).normalize(),
             frame: Frame::default(),
             skin: super::skin::SkinPass::new(gpu, &globals_layout, format),
+            gpu_points: Vec::new(),
         };
         // The draw list names these three by fixed ids (`MeshId::CUBE`, `SPHERE`, `CONE`).
         renderer.cube = renderer.create_mesh(gpu, &crate::mesh::cuboid(Vec3::ONE), None);
@@ -700,6 +704,11 @@ impl Renderer {
                 pass.set_pipeline(&self.point_pipeline);
                 pass.set_vertex_buffer(0, self.points.buffer.slice(..));
                 pass.draw(0..6, 0..self.frame.points.len() as u32);
+            }
+            for (buffer, count) in self.gpu_points.drain(..) {
+                pass.set_pipeline(&self.point_pipeline);
+                pass.set_vertex_buffer(0, buffer.slice(..));
+                pass.draw(0..6, 0..count);
             }
         }
         self.frame.clear();
