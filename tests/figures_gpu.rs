@@ -243,7 +243,7 @@ mod compute {
             ..Default::default()
         };
         assert!(boid_rows(&nan, 10, 0.0, 0.01).is_err());
-        assert_eq!(boid_rows(&p, 10, 0.0, 0.01).unwrap().len(), 9 + 8);
+        assert_eq!(boid_rows(&p, 10, 0.0, 0.01).unwrap().len(), 12 + 8);
     }
 
     #[test]

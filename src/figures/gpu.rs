@@ -10,7 +10,7 @@
 //! [`lbs_like_shader`] and [`dqs_like_shader`] are the shader's formulas in Rust, so a native
 //! test checks the packing against [`crate::skinning`]'s skinning.
 
-use super::Frame;
+use super::{palette, Frame};
 use crate::draw::{SkinMeshId, SkinnedDraw};
 use crate::rigid::DualQuat;
 use glam::{Affine3A, Mat4, Vec3, Vec4};
@@ -432,6 +432,14 @@ pub fn boid_rows(
         [n as u32, params.obstacles.len() as u32, 0, 0],
         frow(params.avoid_weight, 0.0, 0.0, 0.0),
     ];
+    // Looks as the CPU figure draws them (src/figures/boids.rs).
+    for (c, r) in [
+        (palette::BLUE, 0.035),
+        (palette::GREEN, 0.09),
+        (palette::RED, 0.11),
+    ] {
+        rows.push(frow(c.x, c.y, c.z, r));
+    }
     for k in 0..MAX_GPU_OBSTACLES {
         rows.push(match params.obstacles.get(k) {
             Some(o) => frow(o.center.x, o.center.y, o.center.z, o.radius),

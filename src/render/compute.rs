@@ -357,7 +357,7 @@ impl BoidsCompute {
         let params = uniform(
             gpu,
             "boid params",
-            9 + crate::figures::gpu::MAX_GPU_OBSTACLES,
+            12 + crate::figures::gpu::MAX_GPU_OBSTACLES,
         );
         let layout = gpu
             .device

@@ -17,6 +17,7 @@ struct Params {
     predator: vec4<f32>,  // flee radius², flee weight, 1 = on, predator search radius²
     counts: vec4<u32>,    // boids, obstacles, unused, unused
     avoid: vec4<f32>,     // x: avoid weight
+    looks: array<vec4<f32>, 3>,  // boid, leader, predator: linear RGB, w: sprite radius (m)
     obstacles: array<vec4<f32>, 8>,
 };
 struct Instance {
@@ -139,6 +140,6 @@ fn step(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         nv = clamped;
     }
     dst[i] = Boid(vec4<f32>(np, 0.0), vec4<f32>(nv, 0.0));
-    let color = select(select(vec4<f32>(0.12, 0.47, 0.71, 1.0), vec4<f32>(0.84, 0.15, 0.16, 1.0), i == predator), vec4<f32>(1.0, 0.5, 0.05, 1.0), i == leader);
-    instances[i] = Instance(np, 0.06, color);
+    let look = params.looks[select(select(0u, 2u, i == predator), 1u, i == leader)];
+    instances[i] = Instance(np, look.w, vec4<f32>(look.xyz, 1.0));
 }
