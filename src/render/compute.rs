@@ -294,7 +294,7 @@ impl ParticlesCompute {
 
     /// Waits until the GPU has finished every step submitted so far (benchmarks).
     pub async fn finish(&self, gpu: &Gpu) -> Result<(), String> {
-        read_buffer(gpu, &self.params, 16).await.map(|_| ())
+        read_buffer(gpu, &self.instances, 16).await.map(|_| ())
     }
 }
 
@@ -463,6 +463,6 @@ impl BoidsCompute {
 
     /// Waits until the GPU has finished every step submitted so far (benchmarks).
     pub async fn finish(&self, gpu: &Gpu) -> Result<(), String> {
-        read_buffer(gpu, &self.params, 16).await.map(|_| ())
+        read_buffer(gpu, &self.instances, 16).await.map(|_| ())
     }
 }
