@@ -267,3 +267,61 @@ mod compute {
         assert_eq!(flock_stats(&p, &[Vec3::Z, -Vec3::Z]).polarisation, 0.0);
     }
 }
+
+mod figures {
+    use inbetween::figures::boids::FlockFigure;
+    use inbetween::figures::particles::EmitterFigure;
+
+    #[test]
+    fn the_emitter_figure_hands_its_steps_to_the_gpu() {
+        let mut f = EmitterFigure::new();
+        f.set_mode("both").unwrap();
+        // A new mode restarts first, without stepping.
+        let (restart, n) = f
+            .advance_gpu(1.0, false, |_, _, _| panic!("no step yet"))
+            .unwrap();
+        assert!(restart && n == 0);
+        let mut bursts = Vec::new();
+        let (restart, n) = f
+            .advance_gpu(1.0, true, |e, _, b| {
+                assert_eq!(e.len(), 2);
+                bursts.push(b);
+                Ok(())
+            })
+            .unwrap();
+        assert!(!restart && n == 60 && bursts.len() == 60);
+        assert_eq!(bursts[0], 400, "the explosion goes off at the start");
+        assert!(bursts[1..].iter().all(|&b| b == 0));
+        // Forward: more steps, no restart; back in time: a restart.
+        assert_eq!(
+            f.advance_gpu(1.5, false, |_, _, _| Ok(())).unwrap(),
+            (false, 30)
+        );
+        assert_eq!(
+            f.advance_gpu(0.5, false, |_, _, _| Ok(())).unwrap(),
+            (true, 0)
+        );
+        // A failing GPU step is the caller's error, and the clock does not move past it.
+        let e = f
+            .advance_gpu(0.5, true, |_, _, _| Err("boom".into()))
+            .unwrap_err();
+        assert_eq!(e, "boom");
+        assert!(f.advance_gpu(f32::NAN, false, |_, _, _| Ok(())).is_err());
+        let mut frame = inbetween::draw::Frame::default();
+        assert!(f.draw_gpu(&mut frame).contains("GPU"));
+        assert!(frame.points.is_empty(), "the sprites are the GPU's");
+    }
+
+    #[test]
+    fn the_flock_figure_plans_its_gpu_steps() {
+        let mut f = FlockFigure::new();
+        // A jump of more than the catch-up limit restarts from a fresh seeded flock.
+        assert_eq!(f.plan_gpu_steps(0.5).unwrap(), (true, 0));
+        assert_eq!(f.plan_gpu_steps(0.55).unwrap(), (false, 3));
+        assert_eq!(f.plan_gpu_steps(0.2).unwrap(), (true, 0));
+        let mut frame = inbetween::draw::Frame::default();
+        let note = f.draw_gpu(&mut frame);
+        assert!(note.contains("300 boids") && note.contains("GPU"), "{note}");
+        assert!(frame.points.is_empty());
+    }
+}

@@ -8,6 +8,9 @@ use wasm_bindgen::prelude::*;
 #[wasm_bindgen]
 pub struct EmitterScene {
     scene: EmitterFigure,
+    /// The particles on the GPU (compute shaders), when that mode is on and WebGPU is there.
+    gpu: Option<crate::render::ParticlesCompute>,
+    gpu_on: bool,
 }
 
 #[wasm_bindgen]
@@ -16,7 +19,25 @@ impl EmitterScene {
     pub fn new() -> EmitterScene {
         EmitterScene {
             scene: EmitterFigure::new(),
+            gpu: None,
+            gpu_on: false,
         }
+    }
+
+    /// Steps the particles by compute shaders (`true`) or on the CPU. An error on WebGL2 (no
+    /// compute shaders), saying so.
+    #[wasm_bindgen(js_name = setGpu)]
+    pub fn set_gpu(&mut self, viewer: &Viewer, on: bool) -> Result<(), JsError> {
+        if on && !viewer.gpu.compute {
+            return Err(JsError::new(&format!(
+                "GPU compute needs WebGPU; this figure runs on {}",
+                viewer.gpu.backend_name
+            )));
+        }
+        self.gpu_on = on;
+        self.gpu = None;
+        self.scene.restart(); // replay from the start on either side
+        Ok(())
     }
     /// "fountain", "explosion" or "both".
     #[wasm_bindgen(js_name = setMode)]
@@ -61,11 +82,58 @@ impl EmitterScene {
     /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
     /// draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        if self.gpu_on {
+            return self.draw_gpu(viewer, time_sec);
+        }
         let eye = viewer.camera.eye();
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, eye, time_sec)
             .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl EmitterScene {
+    fn draw_gpu(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        use crate::figures::particles::{PAGE_MAX_PARTICLES, SIM_DT};
+        use crate::render::ParticlesCompute;
+        let err = |e: String| JsError::new(&e);
+        let g = &viewer.gpu;
+        let fresh = || ParticlesCompute::new(g, PAGE_MAX_PARTICLES, 11);
+        if self.gpu.is_none() {
+            self.scene.restart();
+            self.gpu = Some(fresh().map_err(err)?);
+        }
+        let system = self.gpu.as_mut().expect("made above");
+        let mut step =
+            |e: &mut [crate::particles::Emitter], s: &crate::particles::Surfaces, burst| {
+                if burst > 0 {
+                    system.burst(1, burst);
+                }
+                system.step(g, e, s, SIM_DT)
+            };
+        let (restart, _) = self
+            .scene
+            .advance_gpu(time_sec, false, &mut step)
+            .map_err(js)?;
+        if restart {
+            drop(step);
+            *system = fresh().map_err(err)?;
+            let mut step =
+                |e: &mut [crate::particles::Emitter], s: &crate::particles::Surfaces, burst| {
+                    if burst > 0 {
+                        system.burst(1, burst);
+                    }
+                    system.step(g, e, s, SIM_DT)
+                };
+            self.scene
+                .advance_gpu(time_sec, true, &mut step)
+                .map_err(js)?;
+        }
+        viewer.renderer.gpu_points = vec![self.gpu.as_ref().expect("made above").sprites()];
+        let note = self.scene.draw_gpu(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)
     }
