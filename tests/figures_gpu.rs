@@ -307,8 +307,19 @@ mod figures {
             .unwrap_err();
         assert_eq!(e, "boom");
         assert!(f.advance_gpu(f32::NAN, false, |_, _, _| Ok(())).is_err());
+        // "Explode now" reaches the GPU at once, once per step, and the note counts it.
+        let mut fired = 0;
+        f.explode_gpu(|_, _, n| {
+            fired += n;
+            Ok(())
+        })
+        .unwrap();
+        f.explode_gpu(|_, _, _| panic!("already set off at this step"))
+            .unwrap();
+        assert_eq!(fired, 400);
         let mut frame = inbetween::draw::Frame::default();
-        assert!(f.draw_gpu(&mut frame).contains("GPU"));
+        let note = f.draw_gpu(&mut frame);
+        assert!(note.contains("GPU") && note.contains("by hand: 1"), "{note}");
         assert!(frame.points.is_empty(), "the sprites are the GPU's");
     }
 

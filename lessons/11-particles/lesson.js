@@ -13,7 +13,7 @@ if (emitterViewer) {
   const timeline = new Timeline(document.getElementById('emitters-timeline'), { duration: 6 });
   const p = {
     mode: 'fountain', rate: 200, spread: 11, lifetime: 2.5, restitution: 0.7, gravity: 9.81,
-    sort: true, fade: true, on: 'CPU', explode: () => scene.explode(),
+    sort: true, fade: true, on: 'CPU', explode: () => scene.explode(emitterViewer),
   };
   const gui = new GUI({ container: document.querySelector('#fig-emitters .panel'), title: 'Emitters' });
   gui.add(p, 'mode', ['fountain', 'both', 'explosion']).name('emitter');

@@ -221,6 +221,19 @@ impl EmitterFigure {
         Ok(n)
     }
 
+    /// GPU mode's [`EmitterFigure::explode`]: records the explosion the same way and hands it to
+    /// `burst` (emitters, surfaces, particles) at once, so it shows even while paused.
+    pub fn explode_gpu(
+        &mut self,
+        burst: impl FnOnce(&mut [Emitter], &Surfaces, usize) -> Result<(), String>,
+    ) -> Result<(), String> {
+        if self.bursts.len() < MAX_BURSTS && !self.bursts.contains(&self.steps_done) {
+            self.bursts.push(self.steps_done);
+            burst(&mut self.emitters, &self.surfaces, self.burst_count)?;
+        }
+        Ok(())
+    }
+
     /// Replays from the start at the next advance (the page switched between CPU and GPU).
     pub fn restart(&mut self) {
         self.dirty = true;
@@ -276,8 +289,12 @@ impl EmitterFigure {
             "Stepped on the GPU by compute shaders, at t = {} s: {PAGE_MAX_PARTICLES} slots refilled \
              in ring order, one thread per particle (the same emitters, exact bounces and colours). \
              The sprites stay on the GPU, so they are drawn in storage order (not sorted) and fade \
-             with age.",
+             with age.{}",
             format_number(self.steps_done as f32 * SIM_DT),
+            match self.bursts.len() {
+                0 => String::new(),
+                b => format!(" Explosions set off by hand: {b}."),
+            },
         )
     }
 

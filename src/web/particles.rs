@@ -76,8 +76,21 @@ impl EmitterScene {
     pub fn set_fade(&mut self, on: bool) {
         self.scene.set_fade(on);
     }
-    pub fn explode(&mut self) {
-        self.scene.explode();
+    /// Sets off the explosion now (on the GPU too, when the particles are stepped there).
+    pub fn explode(&mut self, viewer: &Viewer) -> Result<(), JsError> {
+        match (&mut self.gpu, self.gpu_on) {
+            (Some(system), true) => self
+                .scene
+                .explode_gpu(|e, s, count| {
+                    system.burst(1, count);
+                    system.step(&viewer.gpu, e, s, 0.0) // spawn only: nothing moves in 0 s
+                })
+                .map_err(js),
+            _ => {
+                self.scene.explode();
+                Ok(())
+            }
+        }
     }
     /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
     /// draws; returns the note.
