@@ -129,7 +129,10 @@ impl FlockScene {
                 viewer.renderer.gpu_points = vec![gpu.sprites()];
                 self.scene.draw_gpu(&mut viewer.renderer.frame)
             }
-            _ => self.scene.draw(&mut viewer.renderer.frame),
+            _ => {
+                viewer.renderer.gpu_points.clear(); // none left from GPU mode (hidden canvas)
+                self.scene.draw(&mut viewer.renderer.frame)
+            }
         };
         viewer.present()?;
         Ok(note)

@@ -98,6 +98,7 @@ impl EmitterScene {
         if self.gpu_on {
             return self.draw_gpu(viewer, time_sec);
         }
+        viewer.renderer.gpu_points.clear(); // none left from GPU mode (hidden canvas)
         let eye = viewer.camera.eye();
         let note = self
             .scene
