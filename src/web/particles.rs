@@ -121,29 +121,27 @@ impl EmitterScene {
             self.gpu = Some(fresh().map_err(err)?);
         }
         let system = self.gpu.as_mut().expect("made above");
-        let mut step =
-            |e: &mut [crate::particles::Emitter], s: &crate::particles::Surfaces, burst| {
-                if burst > 0 {
-                    system.burst(1, burst);
-                }
-                system.step(g, e, s, SIM_DT)
-            };
+        // One GPU step per figure step, with the explosion's burst of that step.
+        fn step(
+            system: &mut ParticlesCompute,
+            gpu: &crate::render::Gpu,
+            e: &mut [crate::particles::Emitter],
+            s: &crate::particles::Surfaces,
+            burst: usize,
+        ) -> Result<(), String> {
+            if burst > 0 {
+                system.burst(1, burst);
+            }
+            system.step(gpu, e, s, SIM_DT)
+        }
         let (restart, _) = self
             .scene
-            .advance_gpu(time_sec, false, &mut step)
+            .advance_gpu(time_sec, false, |e, s, b| step(system, g, e, s, b))
             .map_err(js)?;
         if restart {
-            drop(step);
             *system = fresh().map_err(err)?;
-            let mut step =
-                |e: &mut [crate::particles::Emitter], s: &crate::particles::Surfaces, burst| {
-                    if burst > 0 {
-                        system.burst(1, burst);
-                    }
-                    system.step(g, e, s, SIM_DT)
-                };
             self.scene
-                .advance_gpu(time_sec, true, &mut step)
+                .advance_gpu(time_sec, true, |e, s, b| step(system, g, e, s, b))
                 .map_err(js)?;
         }
         viewer.renderer.gpu_points = vec![self.gpu.as_ref().expect("made above").sprites()];
