@@ -319,7 +319,10 @@ mod figures {
         assert_eq!(fired, 400);
         let mut frame = inbetween::draw::Frame::default();
         let note = f.draw_gpu(&mut frame);
-        assert!(note.contains("GPU") && note.contains("by hand: 1"), "{note}");
+        assert!(
+            note.contains("GPU") && note.contains("by hand: 1"),
+            "{note}"
+        );
         assert!(frame.points.is_empty(), "the sprites are the GPU's");
     }
 

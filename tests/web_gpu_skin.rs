@@ -4,8 +4,10 @@
 //!
 //! Why images: on WebGL2 nothing the vertex shader computes can be read back (no storage
 //! buffers, no transform feedback in wgpu), so the rendered pixels are what both backends can
-//! compare. The shader's formulas are checked numerically, natively, in `tests/figures_gpu.rs`
-//! (`lbs_like_shader` / `dqs_like_shader` against the CPU skinning).
+//! compare. On WebGPU the second test also runs the shader's formulas (`skin_common.wgsl`, shared
+//! with the vertex shader) in a compute shader on the same uniform palette and compares the
+//! skinned positions and normals with the CPU's number by number. Natively, `tests/figures_gpu.rs`
+//! checks the packing with the formulas written in Rust (`lbs_like_shader` / `dqs_like_shader`).
 #![cfg(target_arch = "wasm32")]
 
 use glam::Vec3;
@@ -144,5 +146,60 @@ async fn gpu_skinning_renders_what_cpu_skinning_renders() {
             moved > 0.01,
             "{method}: another pose changed only {moved:.4} of the pixels"
         );
+    }
+}
+
+/// WebGPU: the shader's formulas, run in a compute shader on the same uniform palette the vertex
+/// shader reads, give the CPU's skinned positions and normals number by number. (WebGL2 has no
+/// compute: there the image comparison above is the check.)
+#[wasm_bindgen_test]
+async fn gpu_skinning_formulas_match_the_cpu_numerically_on_webgpu() {
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    if !gpu.compute {
+        let frame = inbetween::draw::Frame::default();
+        let e = renderer
+            .skin
+            .skin_on_compute(&gpu, &frame, 0)
+            .await
+            .unwrap_err();
+        assert!(e.contains("needs WebGPU"), "{e}");
+        return;
+    }
+    for method in ["LBS", "DQS"] {
+        let mut cpu = HumanFigure::new();
+        cpu.set_method(method).unwrap();
+        cpu.skin(0.61).unwrap();
+        let mut figure = HumanFigure::new();
+        figure.set_method(method).unwrap();
+        figure.set_gpu(true);
+        figure.skin(0.61).unwrap();
+        let c = figure.character();
+        let bind = c.mesh.positions.clone();
+        let id = renderer
+            .skin
+            .create(&gpu, &c.mesh, Some(&figure.mesh.colors), &c.skin)
+            .unwrap();
+        let mut frame = inbetween::draw::Frame::default();
+        figure.draw_gpu(&mut frame, id).unwrap();
+        let (p, n) = renderer
+            .skin
+            .skin_on_compute(&gpu, &frame, 0)
+            .await
+            .unwrap();
+        assert_eq!(p.len(), cpu.mesh.positions.len());
+        let worst = |a: &[Vec3], b: &[Vec3]| {
+            a.iter()
+                .zip(b)
+                .map(|(x, y)| (*x - *y).length())
+                .fold(0.0f32, f32::max)
+        };
+        let (ep, en) = (worst(&p, &cpu.mesh.positions), worst(&n, &cpu.mesh.normals));
+        assert!(
+            ep < 1e-4 && en < 1e-4,
+            "{method}: positions off by {ep} m, normals by {en}"
+        );
+        // And the check can fail: the bind pose is far from the walk at 0.61 s.
+        assert!(worst(&p, &bind) > 0.05, "{method}");
     }
 }

@@ -91,8 +91,9 @@ impl SkinPass {
             label: Some("skin"),
             source: wgpu::ShaderSource::Wgsl(
                 format!(
-                    "{}\n{}",
+                    "{}\n{}\n{}",
                     include_str!("shaders/common.wgsl"),
+                    include_str!("shaders/skin_common.wgsl"),
                     include_str!("shaders/skin.wgsl")
                 )
                 .into(),
@@ -248,7 +249,10 @@ impl SkinPass {
                     usage,
                 })
         };
-        let vertex = wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST;
+        let mut vertex = wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST;
+        if gpu.compute {
+            vertex |= wgpu::BufferUsages::STORAGE; // for the compute check, WebGPU only
+        }
         let mesh = SkinMesh {
             rest: init("skin rest", bytemuck::cast_slice(&rest), vertex),
             colors: init("skin colours", bytemuck::cast_slice(&colors), vertex),
@@ -381,6 +385,130 @@ impl SkinPass {
             pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..mesh.index_count, 0, 0..1);
         }
+    }
+}
+
+impl SkinPass {
+    /// WebGPU only, for tests: skins the mesh of `frame`'s skinned draw `k` in a compute shader
+    /// with the vertex shader's own formulas (`skin_common.wgsl`) and reads back its positions and
+    /// normals (mesh space), to compare with the CPU's skinning number by number.
+    ///
+    /// # Errors
+    /// No compute on this backend, no such draw, or a draw the renderer would skip.
+    pub async fn skin_on_compute(
+        &mut self,
+        gpu: &Gpu,
+        frame: &Frame,
+        k: usize,
+    ) -> Result<(Vec<glam::Vec3>, Vec<glam::Vec3>), String> {
+        if !gpu.compute {
+            return Err(format!(
+                "the compute check needs WebGPU, not {}",
+                gpu.backend_name
+            ));
+        }
+        self.prepare(gpu, frame);
+        let draw = frame.skinned.get(k).ok_or("no such skinned draw")?;
+        let slot = self.slots[k].ok_or("this draw would be skipped")?;
+        let mesh = &self.meshes[draw.mesh.0];
+        let size = (mesh.vertex_count * 24) as u64;
+        let out = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("skinned (compute check)"),
+            size,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let entry = |binding, read_only| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Storage { read_only },
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let device = &gpu.device;
+        let buffers_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("skin check buffers"),
+            entries: &[entry(0, true), entry(1, true), entry(2, false)],
+        });
+        let skin_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("skin check uniform"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::COMPUTE,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: true,
+                    min_binding_size: wgpu::BufferSize::new(UNIFORM_BYTES),
+                },
+                count: None,
+            }],
+        });
+        let buffers = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("skin check buffers"),
+            layout: &buffers_layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: mesh.rest.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: mesh.influences.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: out.as_entire_binding(),
+                },
+            ],
+        });
+        let uniform = Self::group(device, &skin_layout, &self.uniforms);
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("skin check"),
+            source: wgpu::ShaderSource::Wgsl(
+                format!(
+                    "{}\n{}",
+                    include_str!("shaders/skin_common.wgsl"),
+                    include_str!("shaders/skin_compute.wgsl")
+                )
+                .into(),
+            ),
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("skin check"),
+            bind_group_layouts: &[Some(&buffers_layout), Some(&skin_layout)],
+            immediate_size: 0,
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some("skin check"),
+            layout: Some(&layout),
+            module: &module,
+            entry_point: Some("skin_vertices"),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let mut pass = encoder.begin_compute_pass(&Default::default());
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(0, &buffers, &[]);
+            pass.set_bind_group(1, &uniform, &[(slot as u64 * STRIDE) as u32]);
+            pass.dispatch_workgroups((mesh.vertex_count as u32).div_ceil(64), 1, 1);
+        }
+        gpu.queue.submit([encoder.finish()]);
+        let bytes = super::compute::read_buffer(gpu, &out, size).await?;
+        let floats: &[f32] = bytemuck::cast_slice(&bytes);
+        Ok(floats
+            .chunks_exact(6)
+            .map(|c| {
+                (
+                    glam::Vec3::new(c[0], c[1], c[2]),
+                    glam::Vec3::new(c[3], c[4], c[5]),
+                )
+            })
+            .unzip())
     }
 }
 
