@@ -4,7 +4,8 @@ import { launch } from '../tests/e2e/browser.mjs';
 import { startServer } from './serve.mjs';
 
 const server = await startServer('dist', 0);
-const context = await launch('webgl2');
+// BENCH_PROFILE=webgpu also runs the GPU compute benchmarks (WebGPU on SwiftShader here).
+const context = await launch(process.env.BENCH_PROFILE ?? 'webgl2');
 try {
   const page = await context.newPage();
   await page.goto(`http://127.0.0.1:${server.address().port}/www/bench.html`);
@@ -17,6 +18,11 @@ try {
   }));
   console.table(rows);
   console.log(JSON.stringify(results));
+  const gpu = await page.evaluate(() => window.__benchGpuResults);
+  if (gpu?.length) {
+    console.table(gpu.map((r) => ({ suite: r.suite, N: r.size, 'ms/step': r.ms_per_step.toFixed(2), 'ns/item': r.ns_per_item.toFixed(2) })));
+    console.log(JSON.stringify(gpu));
+  }
 } finally {
   await context.close();
   server.close();

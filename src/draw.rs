@@ -85,12 +85,36 @@ pub struct Frame {
     pub lines: Vec<LineVertex>,
     pub points: Vec<PointInstance>,
     pub labels: Vec<Label>,
+    /// Meshes skinned on the GPU (see [`SkinnedDraw`]).
+    pub skinned: Vec<SkinnedDraw>,
+    /// Their joints' skinning transforms, three `Vec4` per joint (see [`SkinnedDraw::joints`]).
+    pub skin_palette: Vec<[Vec4; 3]>,
     /// Textured squares (unlit), drawn after the meshes (see [`crate::texture`]).
     pub quads: Vec<TexturedQuad>,
     /// Camera-facing textured squares, all showing parts of `sprite_texture`, alpha-blended last
     /// in this order (list them back to front).
     pub sprites: Vec<SpriteInstance>,
     pub sprite_texture: Option<TextureId>,
+}
+
+/// A mesh made with the renderer's GPU-skinning path (`Renderer::skin`), by creation order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SkinMeshId(pub usize);
+
+/// One mesh skinned in the vertex shader: its bind-pose vertices, joints and weights live on the
+/// GPU; the frame carries only the palette (built by `crate::figures::gpu`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SkinnedDraw {
+    pub mesh: SkinMeshId,
+    pub model: Mat4,
+    /// Linear RGBA; ignored when `vertex_colors` is set.
+    pub color: Vec4,
+    pub vertex_colors: bool,
+    /// Dual quaternion skinning (palette rows: real part, dual part, unused) instead of linear
+    /// blend skinning (palette rows: the three rows of `K_j`'s 3 × 4 matrix).
+    pub dqs: bool,
+    /// The range of [`Frame::skin_palette`] that holds this mesh's joints.
+    pub joints: std::ops::Range<usize>,
 }
 
 impl Frame {
@@ -239,6 +263,8 @@ impl Frame {
         self.lines.clear();
         self.points.clear();
         self.labels.clear();
+        self.skinned.clear();
+        self.skin_palette.clear();
         self.quads.clear();
         self.sprites.clear();
         self.sprite_texture = None;
@@ -311,6 +337,17 @@ impl Frame {
         for l in &self.labels {
             l.anchor.to_array().iter().for_each(|x| eat(x.to_bits()));
             l.text.bytes().for_each(|b| eat(b as u32));
+        }
+        for s in &self.skinned {
+            eat(s.mesh.0 as u32 | (s.dqs as u32) << 31);
+            s.model
+                .to_cols_array()
+                .iter()
+                .for_each(|x| eat(x.to_bits()));
+            s.color.to_array().iter().for_each(|x| eat(x.to_bits()));
+        }
+        for row in self.skin_palette.iter().flatten() {
+            row.to_array().iter().for_each(|x| eat(x.to_bits()));
         }
         h
     }

@@ -27,6 +27,9 @@
 //! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
 //! [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
 //! instance, so a panic there cannot stop the page), `render/` (wgpu, wasm only).
+//! GPU paths (lessons 09, 11, 12): skinning in the vertex shader (`render/skin.rs`, both
+//! backends) and compute shaders for particles and boids (`render/compute.rs`, WebGPU only), with
+//! their logic (packing, caps, the statistics compared with the CPU) in [`figures::gpu`].
 //!
 //! ## Conventions, stated once
 //! - Right-handed coordinates, **Y up**, the camera looks down −Z in view space.

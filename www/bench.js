@@ -243,7 +243,43 @@ async function main() {
     ` (batches of at least ${MIN_BATCH_MS} ms, ${REPEATS === 1 ? 'one batch' : `median of ${REPEATS}`} per kernel)`);
   document.getElementById('json').textContent = JSON.stringify(results, null, 2);
   window.__benchResults = results;
+  await gpuBenches();
   document.body.dataset.ready = '1';
+}
+
+/**
+ * GPU compute (lessons 11 and 12), where the browser offers WebGPU: milliseconds per GPU step,
+ * timed until the GPU has finished the queued steps. Kept apart from the CPU table (its own table
+ * and window.__benchGpuResults), since the kernels are asynchronous and need an adapter.
+ */
+const GPU_SUITES = [
+  { name: 'particles, GPU step (fall, floor and sphere bounces)', run: wasm.benchGpuParticles, sizes: QUICK ? [100_000] : [100_000, 1_000_000], unit: 'particle' },
+  { name: 'boids, GPU step (naive O(N²) neighbours, tiled)', run: wasm.benchGpuBoids, sizes: QUICK ? [1_000] : [1_000, 4_096], unit: 'boid' },
+];
+async function gpuBenches() {
+  const status = document.getElementById('gpu-status');
+  const adapter = navigator.gpu ? await navigator.gpu.requestAdapter().catch(() => null) : null;
+  if (!adapter) {
+    status.textContent = 'No WebGPU adapter in this browser: the GPU compute benchmarks are skipped.';
+    window.__benchGpuResults = [];
+    return;
+  }
+  const canvas = document.createElement('canvas');
+  canvas.width = canvas.height = 4;
+  const rows = [];
+  for (const suite of GPU_SUITES) {
+    for (const size of suite.sizes) {
+      status.textContent = `running ${suite.name} at ${size.toLocaleString('en')} ${suite.unit}s…`;
+      await yieldToPage();
+      const steps = QUICK ? 2 : 5;
+      const ms = await suite.run(canvas, size, steps);
+      rows.push({ suite: suite.name, size, ms_per_step: ms, ns_per_item: (ms * 1e6) / size, steps, adapter: adapter.info?.description || adapter.info?.vendor || '' });
+      document.getElementById('gpu-results').innerHTML = '<tr><th>suite</th><th>N</th><th>ms / step</th><th>ns / item</th></tr>' +
+        rows.map((r) => `<tr><td>${r.suite}</td><td>${r.size.toLocaleString('en')}</td><td>${r.ms_per_step.toFixed(2)}</td><td>${r.ns_per_item.toFixed(2)}</td></tr>`).join('');
+    }
+  }
+  status.textContent = `done: ${rows.length} GPU runs (${QUICK ? 2 : 5} steps each, timed until the GPU finished).`;
+  window.__benchGpuResults = rows;
 }
 
 main().catch((e) => {

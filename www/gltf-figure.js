@@ -7,7 +7,7 @@
 import { markDrawn, Timeline, GUI, showNote } from './lesson.js';
 import { GltfScene } from '../pkg/inbetween.js';
 
-export async function gltfFigure(lesson, selector, { skinning = null } = {}) {
+export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch = false } = {}) {
   const viewer = await lesson.figure(selector);
   if (!viewer) return;
   const box = document.querySelector(selector);
@@ -21,7 +21,7 @@ export async function gltfFigure(lesson, selector, { skinning = null } = {}) {
   } catch { /* no samples on this server */ }
   const p = {
     character: samples.includes('RiggedFigure.gltf') ? 'RiggedFigure.gltf' : samples[0] ?? '(none)',
-    clip: '', mesh: true, skinning: skinning ?? 'dots',
+    clip: '', mesh: true, skinning: skinning ?? 'dots', on: 'CPU',
   };
   const gui = new GUI({ container: box.querySelector('.panel'), title: 'glTF character' });
   let message = samples.length ? '' : 'The sample characters are not on this server (they are copied from ../shared when it is there); load your own file below.';
@@ -63,6 +63,9 @@ export async function gltfFigure(lesson, selector, { skinning = null } = {}) {
   } else {
     gui.add(p, 'mesh').name('mesh vertices').onChange(() => scene.setShowMesh(p.mesh));
   }
+  // Skinning on the CPU or in the vertex shader, with the frame time (lesson 09).
+  let frameMs = 0;
+  if (gpuSwitch) gui.add(p, 'on', ['CPU', 'GPU']).name('skin on').onChange(() => { scene.setGpu(p.on === 'GPU'); frameMs = 0; });
   const readFile = async (file) => load(file.name, new Uint8Array(await file.arrayBuffer()));
   box.querySelector('input[type="file"]').addEventListener('change', (e) => {
     if (e.target.files[0]) readFile(e.target.files[0]);
@@ -76,8 +79,14 @@ export async function gltfFigure(lesson, selector, { skinning = null } = {}) {
   if (samples.length) await loadSample(p.character);
   lesson.onFrame((dt) => {
     timeline.advance(dt);
+    const start = performance.now();
     const drawn = scene.draw(viewer, timeline.time);
-    showNote(note, message, drawn);
+    if (gpuSwitch) {
+      frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
+      showNote(note, message, `${drawn} Skinning and drawing: ${(performance.now() - start).toFixed(2)} ms on the CPU; frame time ${frameMs.toFixed(1)} ms.`);
+    } else {
+      showNote(note, message, drawn);
+    }
     markDrawn(selector);
   });
 }

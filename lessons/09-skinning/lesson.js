@@ -51,7 +51,7 @@ if (humanViewer) {
   humanViewer.setCamera(0, 0.9, 0, 2.8, 0.5, 0.15);
   const scene = new SkinnedHumanScene();
   const timeline = new Timeline(document.getElementById('human-timeline'), { duration: scene.durationSec(), playing: true });
-  const p = { clip: 'walk', method: 'DQS', heat: 'none', falloff: 0.03, skeleton: false };
+  const p = { clip: 'walk', method: 'DQS', heat: 'none', falloff: 0.03, skeleton: false, on: 'CPU' };
   const gui = new GUI({ container: document.querySelector('#fig-human .panel'), title: 'Character' });
   gui.add(p, 'clip', scene.clipNames()).name('clip').onChange((name) => {
     scene.setClip(name);
@@ -63,17 +63,23 @@ if (humanViewer) {
   gui.add(p, 'heat', ['none', ...scene.jointNames()]).name('weights of').onChange((j) => scene.setHeatJoint(j));
   gui.add(p, 'falloff', 0.005, 0.2, 0.005).name('falloff (m)').onChange((f) => scene.setFalloff(f));
   gui.add(p, 'skeleton').name('skeleton').onChange((on) => scene.setShowSkeleton(on));
+  gui.add(p, 'on', ['CPU', 'GPU']).name('skin on').onChange((v) => { scene.setGpu(v === 'GPU'); average = 0; });
 
   const note = document.getElementById('human-note');
   let average = 0;
+  let frameMs = 0;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     const ms = scene.skin(t);
     average = average === 0 ? ms : 0.9 * average + 0.1 * ms;
-    showNote(note, `${scene.draw(humanViewer)} CPU skinning: ${average.toFixed(2)} ms per frame.`);
+    frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
+    const work = p.on === 'GPU'
+      ? `GPU skinning: ${average.toFixed(2)} ms per frame on the CPU (clip and palette)`
+      : `CPU skinning: ${average.toFixed(2)} ms per frame (clip, palette and vertices)`;
+    showNote(note, `${scene.draw(humanViewer)} ${work}; frame time ${frameMs.toFixed(1)} ms.`);
     markDrawn('#fig-human');
   });
 }
 
 // Figure 3: a character from a glTF file, skinned (the shared glTF figure, www/gltf-figure.js).
-await gltfFigure(lesson, '#fig-gltf', { skinning: 'lbs' });
+await gltfFigure(lesson, '#fig-gltf', { skinning: 'lbs', gpuSwitch: true });

@@ -13,7 +13,7 @@ if (emitterViewer) {
   const timeline = new Timeline(document.getElementById('emitters-timeline'), { duration: 6 });
   const p = {
     mode: 'fountain', rate: 200, spread: 11, lifetime: 2.5, restitution: 0.7, gravity: 9.81,
-    sort: true, fade: true, explode: () => scene.explode(),
+    sort: true, fade: true, on: 'CPU', explode: () => scene.explode(emitterViewer),
   };
   const gui = new GUI({ container: document.querySelector('#fig-emitters .panel'), title: 'Emitters' });
   gui.add(p, 'mode', ['fountain', 'both', 'explosion']).name('emitter');
@@ -24,8 +24,14 @@ if (emitterViewer) {
   gui.add(p, 'gravity', 0, 20, 0.1).name('gravity (m/s²)');
   gui.add(p, 'sort').name('sort back to front');
   gui.add(p, 'fade').name('fade with age');
-  gui.add(p, 'explode').name('explode now');
   let rejected = '';
+  // CPU or WebGPU compute shaders; WebGL2 has no compute shaders, so there the switch is off.
+  const hasCompute = emitterViewer.backend === 'WebGPU';
+  const onControl = gui.add(p, 'on', ['CPU', 'GPU']).name('step on').onChange((v) => {
+    try { scene.setGpu(emitterViewer, v === 'GPU'); } catch (e) { rejected = e.message; }
+  });
+  if (!hasCompute) onControl.disable();
+  gui.add(p, 'explode').name('explode now');
   const apply = guarded(gui, p, () => {
     scene.setMode(p.mode);
     scene.setRate(p.rate);
@@ -41,7 +47,8 @@ if (emitterViewer) {
   const note = document.getElementById('emitters-note');
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
-    showNote(note, [rejected, scene.draw(emitterViewer, t)].filter(Boolean).join(' '));
+    showNote(note, [rejected, scene.draw(emitterViewer, t),
+      hasCompute ? '' : '(Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.)'].filter(Boolean).join(' '));
     markDrawn('#fig-emitters');
   });
 }

@@ -202,6 +202,49 @@ impl FlockFigure {
         Ok(n)
     }
 
+    /// GPU mode ([`crate::figures::gpu`]): what [`FlockFigure::advance_to`] would do, without
+    /// stepping on the CPU. Returns `(restart, steps)`: on `restart` the flock was reset to a
+    /// fresh seeded start (upload it, then step); then run `steps` steps of [`SIM_DT`] on the GPU.
+    pub fn plan_gpu_steps(&mut self, time_sec: f32) -> Result<(bool, usize), String> {
+        let target = steps_to(time_sec)?;
+        let mut restart = false;
+        if target < self.steps_done || target - self.steps_done > MAX_CATCH_UP {
+            let seed = self.seed.wrapping_add(target as u64);
+            self.flock = Flock::new(self.flock.len(), &self.params, seed)?;
+            self.steps_done = target;
+            restart = true;
+        }
+        let n = target - self.steps_done;
+        self.steps_done = target;
+        Ok((restart, n))
+    }
+
+    /// GPU mode: the box and the obstacles (the boids themselves are the compute shader's
+    /// sprites, drawn by the renderer); returns the note.
+    pub fn draw_gpu(&mut self, frame: &mut Frame) -> String {
+        let b = self.params.bounds;
+        for (a, c) in box_edges(-b, b) {
+            frame.line(a, c, palette::GRID);
+        }
+        if self.obstacle {
+            for o in &self.params.obstacles {
+                frame.mesh(
+                    MeshId::SPHERE,
+                    Mat4::from_translation(o.center) * Mat4::from_scale(Vec3::splat(o.radius)),
+                    palette::GREY,
+                );
+            }
+        }
+        format!(
+            "{} boids stepped on the GPU by a compute shader, at t = {} s (the same rules; \
+             neighbours by the naive O(N²) loop, one thread per boid); leader green, predator \
+             red; speed at most {} m/s.",
+            self.flock.len(),
+            format_number(self.steps_done as f32 * SIM_DT),
+            format_number(self.params.max_speed),
+        )
+    }
+
     /// Builds the flock the page times: `n ∈ [2, PAGE_MAX_TIMED_BOIDS]` boids at the same
     /// density as the figure's flock (the box grows with `n`), so the grid's cost stays O(N).
     pub fn prepare_timing(&mut self, n: f32) -> Result<(), String> {

@@ -69,6 +69,10 @@ pub struct GltfFigure {
     dual_quats: Vec<DualQuat>,
     /// Why DQS fell back to LBS this frame, if it did.
     fallback: Option<String>,
+    /// Skin in the vertex shader when the page gives GPU meshes (see [`GltfFigure::draw_with`]).
+    gpu: bool,
+    /// Why this frame was skinned on the CPU although the GPU was asked for, if it was.
+    gpu_fallback: Option<String>,
 }
 
 impl GltfFigure {
@@ -235,6 +239,31 @@ impl GltfFigure {
         self.mode != SkinMode::Dots && self.show_mesh && self.character.is_some()
     }
 
+    /// Skin in the vertex shader (with the meshes the page made from [`GltfFigure::skin_weights`]).
+    pub fn set_gpu(&mut self, on: bool) {
+        self.gpu = on;
+    }
+
+    /// Whether the GPU path is asked for and possible for this character (at most
+    /// [`super::gpu::MAX_GPU_JOINTS`] joints, weights that validated).
+    pub fn gpu_on(&self) -> bool {
+        self.gpu && self.skinning_on() && self.gpu_problem().is_none()
+    }
+
+    fn gpu_problem(&self) -> Option<String> {
+        let c = self.character.as_ref()?;
+        let meshes = c.skinned.as_ref().ok()?;
+        meshes.iter().find_map(|s| {
+            super::gpu::gpu_skinnable(s.weights.joint_bound(), c.imported.skeleton.len()).err()
+        })
+    }
+
+    /// Mesh `k`'s validated, normalised weights (for the GPU copy).
+    pub fn skin_weights(&self, k: usize) -> Option<&SkinWeights> {
+        let c = self.character.as_ref()?;
+        Some(&c.skinned.as_ref().ok()?.get(k)?.weights)
+    }
+
     /// Changes at every load: the page makes new GPU meshes then.
     pub fn generation(&self) -> u32 {
         self.generation
@@ -264,7 +293,7 @@ impl GltfFigure {
     }
 
     /// Skins every mesh with the current model matrices.
-    fn skin(&mut self) -> Result<(), String> {
+    fn skin(&mut self, gpu: bool) -> Result<(), String> {
         let Some(c) = self.character.as_mut() else {
             return Ok(());
         };
@@ -282,6 +311,9 @@ impl GltfFigure {
                 self.fallback = Some(format!("DQS cannot skin it ({e}); shown with LBS"));
                 dqs = false;
             }
+        }
+        if gpu {
+            return Ok(()); // the vertex shader skins: the palettes are all it needs
         }
         for (m, s) in c.imported.meshes.iter().zip(meshes.iter_mut()) {
             let result = if dqs {
@@ -325,6 +357,19 @@ impl GltfFigure {
         time_sec: f32,
         meshes: &[MeshId],
     ) -> Result<String, String> {
+        self.draw_with(frame, time_sec, meshes, &[])
+    }
+
+    /// As [`GltfFigure::draw`]; with GPU skinning on ([`GltfFigure::gpu_on`]) draws
+    /// `skin_meshes` (one per loaded mesh, made from [`GltfFigure::bind_meshes`] and
+    /// [`GltfFigure::skin_weights`]) skinned in the vertex shader instead of `meshes`.
+    pub fn draw_with(
+        &mut self,
+        frame: &mut Frame,
+        time_sec: f32,
+        meshes: &[MeshId],
+        skin_meshes: &[crate::draw::SkinMeshId],
+    ) -> Result<String, String> {
         let time_sec = in_range("time", time_sec, 0.0, 1e6)?;
         let Some(c) = &self.character else {
             frame.grid(10, 0.5);
@@ -342,17 +387,49 @@ impl GltfFigure {
             .model_matrices(pose, &mut self.model)
             .map_err(|e| e.to_string())?;
         let skinning = self.mode != SkinMode::Dots && self.show_mesh;
+        let mesh_count = c.imported.meshes.len();
+        self.gpu_fallback = match (self.gpu && skinning, self.gpu_problem()) {
+            (true, Some(p)) => Some(format!("GPU skinning is off for it ({p})")),
+            (true, None) if skin_meshes.len() < mesh_count => {
+                Some("GPU skinning is off: no GPU meshes were given".into())
+            }
+            _ => None,
+        };
+        let gpu = self.gpu && skinning && self.gpu_fallback.is_none();
         let mut problem = None;
         if skinning {
-            if let Err(e) = self.skin() {
+            if let Err(e) = self.skin(gpu) {
                 problem = Some(format!("Cannot skin this mesh: {e}."));
             }
         }
         let c = self.character.as_ref().expect("checked above");
         let skeleton = &c.imported.skeleton;
         if skinning && problem.is_none() {
-            for &id in meshes.iter().take(c.imported.meshes.len()) {
-                frame.mesh(id, Mat4::IDENTITY, SKIN);
+            if gpu {
+                let dqs = self.mode == SkinMode::Dqs && self.fallback.is_none();
+                for &id in skin_meshes.iter().take(mesh_count) {
+                    if dqs {
+                        super::gpu::draw_skinned_dqs(
+                            frame,
+                            id,
+                            Mat4::IDENTITY,
+                            Some(SKIN),
+                            &self.dual_quats,
+                        )?;
+                    } else {
+                        super::gpu::draw_skinned_lbs(
+                            frame,
+                            id,
+                            Mat4::IDENTITY,
+                            Some(SKIN),
+                            &self.palette,
+                        )?;
+                    }
+                }
+            } else {
+                for &id in meshes.iter().take(mesh_count) {
+                    frame.mesh(id, Mat4::IDENTITY, SKIN);
+                }
             }
         }
         let world = |m: &Affine3A| {
@@ -409,12 +486,20 @@ impl GltfFigure {
                 (true, Some(p), _) => format!(". {p}"),
                 (true, None, Some(f)) => format!(". {f}."),
                 (true, None, None) => format!(
-                    ". Skinned by {} with the file's inverse bind matrices.",
+                    ". Skinned by {} {} with the file's inverse bind matrices{}.",
                     if self.mode == SkinMode::Dqs {
                         "DQS"
                     } else {
                         "LBS"
-                    }
+                    },
+                    if gpu {
+                        "on the GPU (vertex shader)"
+                    } else {
+                        "on the CPU"
+                    },
+                    self.gpu_fallback
+                        .as_ref()
+                        .map_or(String::new(), |f| format!("; {f}")),
                 ),
                 (false, ..) if self.show_mesh && !c.dots.is_empty() => {
                     ". Grey dots: the mesh's vertices in the bind pose (skinning them is lesson 09)."

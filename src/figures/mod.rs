@@ -14,6 +14,7 @@ pub mod cloth;
 pub mod curves;
 pub mod expressive;
 pub mod gltf;
+pub mod gpu;
 pub mod ik;
 pub mod noise;
 pub mod noise_images;

@@ -233,6 +233,83 @@ impl EmitterFigure {
         Ok(n)
     }
 
+    /// GPU mode's [`EmitterFigure::explode`]: records the explosion the same way and hands it to
+    /// `burst` (emitters, surfaces, particles) at once, so it shows even while paused.
+    pub fn explode_gpu(
+        &mut self,
+        burst: impl FnOnce(&mut [Emitter], &Surfaces, usize) -> Result<(), String>,
+    ) -> Result<(), String> {
+        if self.bursts.len() < MAX_BURSTS && !self.bursts.contains(&self.steps_done) {
+            self.bursts.push(self.steps_done);
+            burst(&mut self.emitters, &self.surfaces, self.burst_count)?;
+        }
+        Ok(())
+    }
+
+    /// Replays from the start at the next advance (the page switched between CPU and GPU).
+    pub fn restart(&mut self) {
+        self.dirty = true;
+    }
+
+    /// GPU mode ([`crate::figures::gpu`]): brings the clock to `time_sec` as
+    /// [`EmitterFigure::advance_to`] does, but hands each step to `step` (emitters, surfaces,
+    /// particles the explosion bursts this step) instead of stepping the CPU system. Returns
+    /// `(restart, steps)`; on `restart` (time went back, a parameter changed) `step` was not called
+    /// yet: the caller clears its GPU system first, then calls again.
+    pub fn advance_gpu(
+        &mut self,
+        time_sec: f32,
+        restarted: bool,
+        mut step: impl FnMut(&mut [Emitter], &Surfaces, usize) -> Result<(), String>,
+    ) -> Result<(bool, usize), String> {
+        let target = steps_to(time_sec)?;
+        if !restarted && (self.dirty || target < self.steps_done) {
+            self.reset();
+            return Ok((true, 0));
+        }
+        let n = target - self.steps_done;
+        for _ in 0..n {
+            let k = self.steps_done;
+            let burst =
+                if (self.mode >= 1 && k.is_multiple_of(BURST_EVERY)) || self.bursts.contains(&k) {
+                    self.burst_count
+                } else {
+                    0
+                };
+            let rate = self.emitters[0].rate_per_sec;
+            if self.mode == 1 {
+                self.emitters[0].rate_per_sec = 0.0;
+            }
+            let result = step(&mut self.emitters, &self.surfaces, burst);
+            self.emitters[0].rate_per_sec = rate;
+            result?;
+            self.steps_done += 1;
+        }
+        Ok((false, n))
+    }
+
+    /// GPU mode: the floor grid and the spheres (the particles are the compute shader's sprites);
+    /// returns the note.
+    pub fn draw_gpu(&mut self, frame: &mut Frame) -> String {
+        frame.grid(8, 0.5);
+        for s in &self.surfaces.spheres {
+            let model =
+                Mat4::from_translation(s.center) * Mat4::from_scale(Vec3::splat(s.radius * 0.98));
+            frame.mesh(MeshId::SPHERE, model, palette::GREY);
+        }
+        format!(
+            "Stepped on the GPU by compute shaders, at t = {} s: {PAGE_MAX_PARTICLES} slots refilled \
+             in ring order, one thread per particle (the same emitters, exact bounces and colours). \
+             The sprites stay on the GPU, so they are drawn in storage order (not sorted) and fade \
+             with age.{}",
+            format_number(self.steps_done as f32 * SIM_DT),
+            match self.bursts.len() {
+                0 => String::new(),
+                b => format!(" Explosions set off by hand: {b}."),
+            },
+        )
+    }
+
     /// Simulates to `time_sec` and fills `frame`; `eye` is the camera position (for sorting).
     /// Returns the note.
     pub fn draw(&mut self, frame: &mut Frame, eye: Vec3, time_sec: f32) -> Result<String, String> {

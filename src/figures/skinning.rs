@@ -531,6 +531,10 @@ pub struct HumanFigure {
     palette: Vec<Affine3A>,
     dual_quats: Vec<DualQuat>,
     pub mesh: SkinnedMesh,
+    /// Skin in the vertex shader ([`HumanFigure::draw_gpu`]) instead of on the CPU.
+    gpu: bool,
+    /// The weights or colours changed since the GPU copy was made.
+    gpu_dirty: bool,
 }
 
 impl Default for HumanFigure {
@@ -567,6 +571,8 @@ impl HumanFigure {
             dual_quats: vec![DualQuat::IDENTITY; n],
             mesh: SkinnedMesh::new(v),
             character,
+            gpu: false,
+            gpu_dirty: true,
         };
         figure.repaint();
         figure
@@ -660,6 +666,22 @@ impl HumanFigure {
         let c = &self.character;
         paint(&mut self.mesh.colors, &c.skin, self.heat_joint, &c.colors);
         self.mesh.dirty = true;
+        self.gpu_dirty = true;
+    }
+
+    /// Skin on the GPU (in the vertex shader) or on the CPU.
+    pub fn set_gpu(&mut self, on: bool) {
+        self.gpu = on;
+        self.mesh.dirty = true;
+    }
+
+    pub fn gpu(&self) -> bool {
+        self.gpu
+    }
+
+    /// True once after the weights or the colours changed: upload them to the GPU-skinned mesh.
+    pub fn take_gpu_dirty(&mut self) -> bool {
+        std::mem::take(&mut self.gpu_dirty)
     }
 
     /// Samples the clip at `time_sec` and skins the body.
@@ -672,6 +694,14 @@ impl HumanFigure {
             .map_err(|e| e.to_string())?;
         skinning_palette(&self.model, c.skeleton.inverse_bind(), &mut self.palette)
             .map_err(|e| e.to_string())?;
+        if self.gpu {
+            // The vertex shader skins: only the palette is computed here.
+            if self.method == Method::Dqs {
+                dual_quat_palette(&self.palette, &mut self.dual_quats)
+                    .map_err(|e| e.to_string())?;
+            }
+            return Ok(());
+        }
         let m = &c.mesh;
         match self.method {
             Method::Lbs => skin_lbs(
@@ -702,6 +732,30 @@ impl HumanFigure {
     pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.grid(12, 0.25);
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        self.overlay(frame, "on the CPU")
+    }
+
+    /// Draws the body skinned in the vertex shader (`mesh`: made from [`HumanFigure::character`]'s
+    /// mesh, weights and [`HumanFigure::mesh`]'s colours) after [`HumanFigure::skin`] with GPU
+    /// skinning on; returns the note.
+    pub fn draw_gpu(
+        &mut self,
+        frame: &mut Frame,
+        mesh: crate::draw::SkinMeshId,
+    ) -> Result<String, String> {
+        frame.grid(12, 0.25);
+        match self.method {
+            Method::Lbs => {
+                super::gpu::draw_skinned_lbs(frame, mesh, Mat4::IDENTITY, None, &self.palette)
+            }
+            Method::Dqs => {
+                super::gpu::draw_skinned_dqs(frame, mesh, Mat4::IDENTITY, None, &self.dual_quats)
+            }
+        }?;
+        Ok(self.overlay(frame, "on the GPU (vertex shader)"))
+    }
+
+    fn overlay(&mut self, frame: &mut Frame, where_: &str) -> String {
         if self.show_skeleton {
             let parents = self.character.skeleton.parents();
             for (i, m) in self.model.iter().enumerate() {
@@ -729,7 +783,7 @@ impl HumanFigure {
             );
         }
         format!(
-            "{} vertices, {} joints ({} vertices follow two or more at falloff {} m), skinned by {} ({} clip).",
+            "{} vertices, {} joints ({} vertices follow two or more at falloff {} m), skinned by {} {where_} ({} clip).",
             self.character.mesh.positions.len(),
             self.character.skeleton.len(),
             blended(&self.character.skin),

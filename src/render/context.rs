@@ -41,6 +41,8 @@ pub struct Gpu {
     /// True when the surface format stores sRGB-encoded values without converting them,
     /// so the shaders must encode (see `common.wgsl`).
     pub encode_srgb_in_shader: bool,
+    /// Compute shaders and storage buffers are on (WebGPU only; see `compute.rs`).
+    pub compute: bool,
 }
 
 impl Gpu {
@@ -85,8 +87,14 @@ impl Gpu {
         };
         // WebGL2's limits, raised to what the adapter allows for texture sizes only: a lesson that
         // runs here runs on both backends.
-        let required_limits =
+        let mut required_limits =
             wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits());
+        // On WebGPU, add compute shaders and storage buffers (the GPU particles and boids of
+        // `compute.rs`), with WebGPU's guaranteed limits; everything else stays WebGL2's.
+        let compute = info.backend != wgpu::Backend::Gl;
+        if compute {
+            super::compute::add_compute_limits(&mut required_limits);
+        }
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("inbetween device"),
@@ -123,6 +131,7 @@ impl Gpu {
             backend_name,
             adapter_name: info.name,
             encode_srgb_in_shader,
+            compute,
         })
     }
 

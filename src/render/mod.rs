@@ -5,10 +5,14 @@
 //! matrices, world-space lines, world-space point sprites) and the [`Renderer`] draws it with
 //! depth testing and 4× multisampling. Limits are WebGL2's, so one build runs on both backends.
 
+mod compute;
 mod context;
 mod renderer;
 mod texture;
+mod skin;
 
+pub use compute::{BoidsCompute, ParticlesCompute};
 pub use context::{BackendChoice, Gpu};
 pub use renderer::{Frame, MeshId, Renderer};
 pub use texture::{NoiseImage, PendingRead};
+pub use skin::SkinPass;

@@ -10,8 +10,8 @@ use glam::{Vec3, Vec4};
 use std::cell::Cell;
 use std::rc::Rc;
 
-const SAMPLE_COUNT: u32 = 4;
-const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
+pub(super) const SAMPLE_COUNT: u32 = 4;
+pub(super) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
 /// Per-object uniforms sit at multiples of WebGL2's (and WebGPU's) dynamic-offset alignment.
 const OBJECT_STRIDE: u64 = 256;
 
@@ -140,6 +140,11 @@ pub struct Renderer {
     /// Direction towards the key light, world space.
     pub light_dir: Vec3,
     pub frame: Frame,
+    /// Meshes skinned in the vertex shader (`frame.skinned`), see `skin.rs`.
+    pub skin: super::skin::SkinPass,
+    /// Point sprites written by compute shaders (`compute.rs`): buffer and count, drawn after
+    /// `frame.points` and cleared with the frame.
+    pub gpu_points: Vec<(wgpu::Buffer, u32)>,
 }
 
 impl Renderer {
@@ -326,6 +331,8 @@ impl Renderer {
             clear_srgb: Vec3::new(0.96, 0.96, 0.97),
             light_dir: Vec3::new(0.4, 0.8, 0.45).normalize(),
             frame: Frame::default(),
+            skin: super::skin::SkinPass::new(gpu, &globals_layout, format),
+            gpu_points: Vec::new(),
         };
         // The draw list names these three by fixed ids (`MeshId::CUBE`, `SPHERE`, `CONE`).
         renderer.cube = renderer.create_mesh(gpu, &crate::mesh::cuboid(Vec3::ONE), None);
@@ -643,6 +650,7 @@ impl Renderer {
             .write(gpu, bytemuck::cast_slice(&self.frame.lines));
         self.points
             .write(gpu, bytemuck::cast_slice(&self.frame.points));
+        self.skin.prepare(gpu, &self.frame);
 
         self.textured.prepare(gpu, &self.frame);
         let clear = if self.encode_srgb {
@@ -696,6 +704,7 @@ impl Renderer {
                     pass.draw_indexed(0..mesh.index_count, 0, 0..1);
                 }
             }
+            self.skin.draw(&mut pass, &self.frame);
             if !self.frame.lines.is_empty() {
                 pass.set_pipeline(&self.line_pipeline);
                 pass.set_vertex_buffer(0, self.lines.buffer.slice(..));
@@ -705,6 +714,11 @@ impl Renderer {
                 pass.set_pipeline(&self.point_pipeline);
                 pass.set_vertex_buffer(0, self.points.buffer.slice(..));
                 pass.draw(0..6, 0..self.frame.points.len() as u32);
+            }
+            for (buffer, count) in self.gpu_points.drain(..) {
+                pass.set_pipeline(&self.point_pipeline);
+                pass.set_vertex_buffer(0, buffer.slice(..));
+                pass.draw(0..6, 0..count);
             }
             self.textured.draw(&mut pass, &self.frame);
         }

@@ -8,6 +8,9 @@ use wasm_bindgen::prelude::*;
 #[wasm_bindgen]
 pub struct FlockScene {
     scene: FlockFigure,
+    /// The flock on the GPU (compute shader), when that mode is on and WebGPU is there.
+    gpu: Option<crate::render::BoidsCompute>,
+    gpu_on: bool,
 }
 
 #[wasm_bindgen]
@@ -16,11 +19,63 @@ impl FlockScene {
     pub fn new() -> FlockScene {
         FlockScene {
             scene: FlockFigure::new(),
+            gpu: None,
+            gpu_on: false,
         }
+    }
+
+    /// Steps the flock by a compute shader (`true`) or on the CPU. An error on WebGL2 (no
+    /// compute shaders), saying so.
+    #[wasm_bindgen(js_name = setGpu)]
+    pub fn set_gpu(&mut self, viewer: &Viewer, on: bool) -> Result<(), JsError> {
+        if on && !viewer.gpu.compute {
+            return Err(JsError::new(&format!(
+                "GPU compute needs WebGPU; this figure runs on {}",
+                viewer.gpu.backend_name
+            )));
+        }
+        self.gpu_on = on;
+        self.gpu = None; // uploaded from the CPU flock at the next step
+        Ok(())
+    }
+
+    /// GPU mode's [`FlockScene::advance_to`]: queues the steps on the GPU (they run while the
+    /// page goes on; the bench page measures their time). Returns the steps queued.
+    #[wasm_bindgen(js_name = advanceOnGpu)]
+    pub fn advance_on_gpu(&mut self, viewer: &Viewer, time_sec: f32) -> Result<usize, JsError> {
+        if !self.gpu_on {
+            return Err(JsError::new(
+                "GPU mode is off: call setGpu(viewer, true) first",
+            ));
+        }
+        let (restart, steps) = self.scene.plan_gpu_steps(time_sec).map_err(js)?;
+        if restart || self.gpu.is_none() {
+            let f = self.scene.flock();
+            self.gpu = Some(
+                crate::render::BoidsCompute::new(
+                    &viewer.gpu,
+                    &f.positions,
+                    &f.velocities,
+                    f.time_sec,
+                )
+                .map_err(|e| JsError::new(&e))?,
+            );
+        }
+        let gpu = self.gpu.as_mut().expect("made above");
+        for _ in 0..steps {
+            gpu.step(
+                &viewer.gpu,
+                self.scene.params(),
+                crate::figures::particles::SIM_DT,
+            )
+            .map_err(|e| JsError::new(&e))?;
+        }
+        Ok(steps)
     }
     /// A new flock of `count` boids, in [2, 3000].
     #[wasm_bindgen(js_name = setCount)]
     pub fn set_count(&mut self, count: f32) -> Result<(), JsError> {
+        self.gpu = None;
         self.scene.set_count(count).map_err(js)
     }
     /// `rule`: "cohesion", "alignment" or "separation"; weight in [0, 10], radius in [0.05, 3] m.
@@ -69,7 +124,16 @@ impl FlockScene {
         self.scene.advance_to(time_sec).map_err(js)
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
-        let note = self.scene.draw(&mut viewer.renderer.frame);
+        let note = match (&self.gpu, self.gpu_on) {
+            (Some(gpu), true) => {
+                viewer.renderer.gpu_points = vec![gpu.sprites()];
+                self.scene.draw_gpu(&mut viewer.renderer.frame)
+            }
+            _ => {
+                viewer.renderer.gpu_points.clear(); // none left from GPU mode (hidden canvas)
+                self.scene.draw(&mut viewer.renderer.frame)
+            }
+        };
         viewer.present()?;
         Ok(note)
     }

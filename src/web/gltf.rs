@@ -13,6 +13,9 @@ pub struct GltfScene {
     meshes: Vec<MeshId>,
     /// The figure's load count these meshes were made for.
     generation: u32,
+    /// The same meshes for skinning in the vertex shader (made on first use per file).
+    skin_meshes: Vec<crate::draw::SkinMeshId>,
+    skin_generation: u32,
 }
 
 #[wasm_bindgen]
@@ -23,6 +26,8 @@ impl GltfScene {
             scene: GltfFigure::new(),
             meshes: Vec::new(),
             generation: 0,
+            skin_meshes: Vec::new(),
+            skin_generation: 0,
         }
     }
 
@@ -64,6 +69,12 @@ impl GltfScene {
         self.scene.set_skinning(mode).map_err(js)
     }
 
+    /// Skins in the vertex shader (`true`) or on the CPU (`false`, the default).
+    #[wasm_bindgen(js_name = setGpu)]
+    pub fn set_gpu(&mut self, on: bool) {
+        self.scene.set_gpu(on);
+    }
+
     /// `[x, y, z, distance]` that frame the character.
     pub fn fit(&self) -> Vec<f32> {
         self.scene.fit().to_vec()
@@ -81,11 +92,39 @@ impl GltfScene {
                 .collect();
             self.generation = self.scene.generation();
         }
+        if self.scene.gpu_on() && self.skin_generation != self.scene.generation() {
+            let data = self.scene.bind_meshes();
+            self.skin_meshes.clear();
+            for (k, m) in data.iter().enumerate() {
+                let weights = self
+                    .scene
+                    .skin_weights(k)
+                    .ok_or_else(|| JsError::new("no weights"))?;
+                let id = viewer
+                    .renderer
+                    .skin
+                    .create(&viewer.gpu, m, None, weights)
+                    .map_err(|e| JsError::new(&e))?;
+                self.skin_meshes.push(id);
+            }
+            self.skin_generation = self.scene.generation();
+        }
+        let skin_meshes: &[crate::draw::SkinMeshId] =
+            if self.skin_generation == self.scene.generation() {
+                &self.skin_meshes
+            } else {
+                &[]
+            };
         let note = self
             .scene
-            .draw(&mut viewer.renderer.frame, time_sec, &self.meshes)
+            .draw_with(
+                &mut viewer.renderer.frame,
+                time_sec,
+                &self.meshes,
+                skin_meshes,
+            )
             .map_err(js)?;
-        if self.scene.skinning_on() {
+        if self.scene.skinning_on() && !self.scene.gpu_on() {
             for (k, &id) in self.meshes.iter().enumerate() {
                 if let Some((positions, normals)) = self.scene.skinned(k) {
                     viewer

@@ -6,6 +6,7 @@ mod bench;
 mod bench_boids;
 mod bench_cloth;
 mod bench_curves;
+mod bench_gpu;
 mod bench_noise;
 mod bench_rotation;
 mod bench_skeleton;

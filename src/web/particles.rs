@@ -10,6 +10,9 @@ pub struct EmitterScene {
     scene: EmitterFigure,
     /// The smoke atlas, uploaded on the first draw.
     atlas: Option<crate::texture::TextureId>,
+    /// The particles on the GPU (compute shaders), when that mode is on and WebGPU is there.
+    gpu: Option<crate::render::ParticlesCompute>,
+    gpu_on: bool,
 }
 
 #[wasm_bindgen]
@@ -19,7 +22,25 @@ impl EmitterScene {
         EmitterScene {
             scene: EmitterFigure::new(),
             atlas: None,
+            gpu: None,
+            gpu_on: false,
         }
+    }
+
+    /// Steps the particles by compute shaders (`true`) or on the CPU. An error on WebGL2 (no
+    /// compute shaders), saying so.
+    #[wasm_bindgen(js_name = setGpu)]
+    pub fn set_gpu(&mut self, viewer: &Viewer, on: bool) -> Result<(), JsError> {
+        if on && !viewer.gpu.compute {
+            return Err(JsError::new(&format!(
+                "GPU compute needs WebGPU; this figure runs on {}",
+                viewer.gpu.backend_name
+            )));
+        }
+        self.gpu_on = on;
+        self.gpu = None;
+        self.scene.restart(); // replay from the start on either side
+        Ok(())
     }
     /// "fountain", "explosion" or "both".
     #[wasm_bindgen(js_name = setMode)]
@@ -58,8 +79,21 @@ impl EmitterScene {
     pub fn set_fade(&mut self, on: bool) {
         self.scene.set_fade(on);
     }
-    pub fn explode(&mut self) {
-        self.scene.explode();
+    /// Sets off the explosion now (on the GPU too, when the particles are stepped there).
+    pub fn explode(&mut self, viewer: &Viewer) -> Result<(), JsError> {
+        match (&mut self.gpu, self.gpu_on) {
+            (Some(system), true) => self
+                .scene
+                .explode_gpu(|e, s, count| {
+                    system.burst(1, count);
+                    system.step(&viewer.gpu, e, s, 0.0) // spawn only: nothing moves in 0 s
+                })
+                .map_err(js),
+            _ => {
+                self.scene.explode();
+                Ok(())
+            }
+        }
     }
     /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
     /// draws; returns the note.
@@ -74,11 +108,57 @@ impl EmitterScene {
             self.atlas = Some(id);
             self.scene.set_sprite_texture(self.atlas);
         }
+        if self.gpu_on {
+            return self.draw_gpu(viewer, time_sec);
+        }
+        viewer.renderer.gpu_points.clear(); // none left from GPU mode (hidden canvas)
         let eye = viewer.camera.eye();
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, eye, time_sec)
             .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl EmitterScene {
+    fn draw_gpu(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        use crate::figures::particles::{PAGE_MAX_PARTICLES, SIM_DT};
+        use crate::render::ParticlesCompute;
+        let err = |e: String| JsError::new(&e);
+        let g = &viewer.gpu;
+        let fresh = || ParticlesCompute::new(g, PAGE_MAX_PARTICLES, 11);
+        if self.gpu.is_none() {
+            self.scene.restart();
+            self.gpu = Some(fresh().map_err(err)?);
+        }
+        let system = self.gpu.as_mut().expect("made above");
+        // One GPU step per figure step, with the explosion's burst of that step.
+        fn step(
+            system: &mut ParticlesCompute,
+            gpu: &crate::render::Gpu,
+            e: &mut [crate::particles::Emitter],
+            s: &crate::particles::Surfaces,
+            burst: usize,
+        ) -> Result<(), String> {
+            if burst > 0 {
+                system.burst(1, burst);
+            }
+            system.step(gpu, e, s, SIM_DT)
+        }
+        let (restart, _) = self
+            .scene
+            .advance_gpu(time_sec, false, |e, s, b| step(system, g, e, s, b))
+            .map_err(js)?;
+        if restart {
+            *system = fresh().map_err(err)?;
+            self.scene
+                .advance_gpu(time_sec, true, |e, s, b| step(system, g, e, s, b))
+                .map_err(js)?;
+        }
+        viewer.renderer.gpu_points = vec![self.gpu.as_ref().expect("made above").sprites()];
+        let note = self.scene.draw_gpu(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)
     }

@@ -135,6 +135,8 @@ impl Default for SkinningCylinderScene {
 pub struct SkinnedHumanScene {
     scene: HumanFigure,
     mesh: Option<MeshId>,
+    /// The same body for skinning in the vertex shader (made on first use).
+    gpu_mesh: Option<crate::draw::SkinMeshId>,
 }
 
 #[wasm_bindgen]
@@ -144,6 +146,7 @@ impl SkinnedHumanScene {
         SkinnedHumanScene {
             scene: HumanFigure::new(),
             mesh: None,
+            gpu_mesh: None,
         }
     }
 
@@ -198,8 +201,44 @@ impl SkinnedHumanScene {
         Ok(now_ms() - start)
     }
 
-    /// Uploads the skinned body and draws. Returns the note.
+    /// Skins in the vertex shader (`true`) or on the CPU (`false`, the default).
+    #[wasm_bindgen(js_name = setGpu)]
+    pub fn set_gpu(&mut self, on: bool) {
+        self.scene.set_gpu(on);
+    }
+
+    /// Uploads the skinned body (or, skinning on the GPU, only its palette) and draws. Returns
+    /// the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        if self.scene.gpu() {
+            let dirty = self.scene.take_gpu_dirty();
+            let skins = &mut viewer.renderer.skin;
+            let c = self.scene.character();
+            let id = match self.gpu_mesh {
+                Some(id) => {
+                    if dirty {
+                        skins
+                            .update_colors(&viewer.gpu, id, &self.scene.mesh.colors)
+                            .and_then(|()| skins.update_weights(&viewer.gpu, id, &c.skin))
+                            .map_err(|e| JsError::new(&e))?;
+                    }
+                    id
+                }
+                None => {
+                    let id = skins
+                        .create(&viewer.gpu, &c.mesh, Some(&self.scene.mesh.colors), &c.skin)
+                        .map_err(|e| JsError::new(&e))?;
+                    self.gpu_mesh = Some(id);
+                    id
+                }
+            };
+            let note = self
+                .scene
+                .draw_gpu(&mut viewer.renderer.frame, id)
+                .map_err(js)?;
+            viewer.present()?;
+            return Ok(note);
+        }
         let indices = self.scene.character().mesh.indices.clone();
         let id = sync(viewer, &mut self.mesh, &mut self.scene.mesh, &indices)?;
         let note = self.scene.draw(&mut viewer.renderer.frame, id);

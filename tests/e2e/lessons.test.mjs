@@ -130,6 +130,7 @@ async function moveControls(page, figure, check) {
     if (!(await c.isVisible())) continue;
     const name = (await c.locator('.lil-name').textContent().catch(() => '')) || '?';
     const classes = (await c.getAttribute('class')) ?? '';
+    if (classes.includes('disabled')) continue; // e.g. a GPU switch without WebGPU
     if (classes.includes('function')) { buttons.push([name, c.locator('button')]); continue; }
     if (classes.includes('boolean')) {
       await check(`toggle "${name}"`, () => c.locator('input[type="checkbox"]').click(), true);

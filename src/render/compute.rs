@@ -1,0 +1,468 @@
+//! GPU compute for particles and boids (WebGPU only; WebGL2 has no compute shaders, and the
+//! pages then keep the CPU path). The models are `crate::particles` and `crate::boids`; the
+//! shaders (`shaders/particles.wgsl`, `shaders/boids.wgsl`) follow them line by line, and what
+//! they receive is packed natively by [`crate::figures::gpu`] (caps included). Each step writes
+//! the renderer's point sprites (`PointInstance` layout) into a buffer that
+//! [`super::Renderer::gpu_points`] draws without a trip through the CPU.
+
+use super::Gpu;
+use crate::figures::gpu::{
+    boid_rows, GpuParticleClock, Row, MAX_GPU_BOIDS, MAX_GPU_EMITTERS, MAX_GPU_PARTICLES,
+};
+use crate::particles::{Emitter, Surfaces};
+use glam::Vec3;
+use std::cell::Cell;
+use std::rc::Rc;
+
+/// Raises `limits` to what the compute paths need: WebGPU's guaranteed minimums.
+pub(super) fn add_compute_limits(limits: &mut wgpu::Limits) {
+    let d = wgpu::Limits::downlevel_defaults();
+    limits.max_storage_buffers_per_shader_stage = d.max_storage_buffers_per_shader_stage;
+    limits.max_storage_buffer_binding_size = d.max_storage_buffer_binding_size;
+    limits.max_buffer_size = limits.max_buffer_size.max(d.max_buffer_size);
+    limits.max_compute_workgroup_storage_size = d.max_compute_workgroup_storage_size;
+    limits.max_compute_invocations_per_workgroup = d.max_compute_invocations_per_workgroup;
+    limits.max_compute_workgroup_size_x = d.max_compute_workgroup_size_x;
+    limits.max_compute_workgroup_size_y = d.max_compute_workgroup_size_y;
+    limits.max_compute_workgroup_size_z = d.max_compute_workgroup_size_z;
+    limits.max_compute_workgroups_per_dimension = d.max_compute_workgroups_per_dimension;
+}
+
+const WORKGROUP: u32 = 64;
+/// One particle's state on the GPU: `pos` (xyz, age), `vel` (xyz, lifetime), `info` (radius,
+/// alive, resting, emitter).
+const PARTICLE_BYTES: u64 = 48;
+const BOID_BYTES: u64 = 32;
+/// `crate::draw::PointInstance`.
+const INSTANCE_BYTES: u64 = 32;
+
+fn no_compute(gpu: &Gpu) -> Result<(), String> {
+    if gpu.compute {
+        Ok(())
+    } else {
+        Err(format!(
+            "GPU compute needs WebGPU; this figure runs on {}, so it stays on the CPU",
+            gpu.backend_name
+        ))
+    }
+}
+
+fn storage(gpu: &Gpu, label: &str, size: u64, extra: wgpu::BufferUsages) -> wgpu::Buffer {
+    gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size,
+        usage: wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_SRC
+            | wgpu::BufferUsages::COPY_DST
+            | extra,
+        mapped_at_creation: false,
+    })
+}
+
+fn uniform(gpu: &Gpu, label: &str, rows: usize) -> wgpu::Buffer {
+    gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size: (rows * 16) as u64,
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    })
+}
+
+fn entry(binding: u32, ty: wgpu::BufferBindingType) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::Buffer {
+            ty,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
+fn module(gpu: &Gpu, label: &str, source: &str) -> wgpu::ShaderModule {
+    gpu.device
+        .create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(label),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
+        })
+}
+
+fn pipeline(
+    gpu: &Gpu,
+    layout: &wgpu::BindGroupLayout,
+    module: &wgpu::ShaderModule,
+    entry_point: &str,
+) -> wgpu::ComputePipeline {
+    let layout = gpu
+        .device
+        .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(entry_point),
+            bind_group_layouts: &[Some(layout)],
+            immediate_size: 0,
+        });
+    gpu.device
+        .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(entry_point),
+            layout: Some(&layout),
+            module,
+            entry_point: Some(entry_point),
+            compilation_options: Default::default(),
+            cache: None,
+        })
+}
+
+fn rows_bytes(rows: &[Row]) -> &[u8] {
+    bytemuck::cast_slice(rows)
+}
+
+/// Copies `size` bytes of `buffer` back to the CPU (tests, benchmarks: it waits for the GPU).
+pub async fn read_buffer(gpu: &Gpu, buffer: &wgpu::Buffer, size: u64) -> Result<Vec<u8>, String> {
+    let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("readback"),
+        size,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, size);
+    gpu.queue.submit([encoder.finish()]);
+    let done: Rc<Cell<Option<Result<(), String>>>> = Rc::new(Cell::new(None));
+    let signal = done.clone();
+    staging.map_async(wgpu::MapMode::Read, .., move |r| {
+        signal.set(Some(r.map_err(|e| e.to_string())))
+    });
+    let result = loop {
+        let _ = gpu.device.poll(wgpu::PollType::Poll);
+        if let Some(r) = done.take() {
+            break r;
+        }
+        super::renderer::sleep_ms(1).await;
+    };
+    result.map_err(|e| format!("reading the GPU buffer back failed: {e}"))?;
+    let bytes = staging
+        .get_mapped_range(..)
+        .map_err(|e| e.to_string())?
+        .to_vec();
+    staging.unmap();
+    Ok(bytes)
+}
+
+/// A particle system stepped by compute shaders. Same model as
+/// [`crate::particles::ParticleSystem`]; the differences are in [`GpuParticleClock`].
+pub struct ParticlesCompute {
+    clock: GpuParticleClock,
+    params: wgpu::Buffer,
+    particles: wgpu::Buffer,
+    instances: wgpu::Buffer,
+    group: wgpu::BindGroup,
+    spawn: wgpu::ComputePipeline,
+    update: wgpu::ComputePipeline,
+    /// Bursts requested for the next step, per emitter.
+    bursts: [u32; MAX_GPU_EMITTERS],
+}
+
+impl ParticlesCompute {
+    /// `capacity` slots, all dead.
+    ///
+    /// # Errors
+    /// No compute on this backend, or `capacity` out of `[1,` [`MAX_GPU_PARTICLES`]`]`.
+    pub fn new(gpu: &Gpu, capacity: usize, seed: u32) -> Result<Self, String> {
+        no_compute(gpu)?;
+        let clock = GpuParticleClock::new(capacity, seed)?;
+        debug_assert!(capacity <= MAX_GPU_PARTICLES);
+        let n = capacity as u64;
+        let params = uniform(gpu, "particle params", 4 + 8 + 6 * MAX_GPU_EMITTERS);
+        let particles = storage(
+            gpu,
+            "particles",
+            n * PARTICLE_BYTES,
+            wgpu::BufferUsages::empty(),
+        );
+        let instances = storage(
+            gpu,
+            "particle sprites",
+            n * INSTANCE_BYTES,
+            wgpu::BufferUsages::VERTEX,
+        );
+        let layout = gpu
+            .device
+            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some("particles"),
+                entries: &[
+                    entry(0, wgpu::BufferBindingType::Uniform),
+                    entry(1, wgpu::BufferBindingType::Storage { read_only: false }),
+                    entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
+                ],
+            });
+        let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("particles"),
+            layout: &layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: params.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: particles.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: instances.as_entire_binding(),
+                },
+            ],
+        });
+        let m = module(gpu, "particles", include_str!("shaders/particles.wgsl"));
+        Ok(Self {
+            clock,
+            spawn: pipeline(gpu, &layout, &m, "spawn"),
+            update: pipeline(gpu, &layout, &m, "update"),
+            params,
+            particles,
+            instances,
+            group,
+            bursts: [0; MAX_GPU_EMITTERS],
+        })
+    }
+
+    pub fn capacity(&self) -> usize {
+        self.clock.capacity()
+    }
+
+    /// Spawns `count` particles from emitter `index` at the next step.
+    pub fn burst(&mut self, index: usize, count: usize) {
+        let mut b = self.bursts;
+        self.clock.burst(&mut b, index, count);
+        self.bursts = b;
+    }
+
+    /// One step of `dt` seconds (spawn, then age, kill, move, colour), submitted to the queue.
+    ///
+    /// # Errors
+    /// What [`GpuParticleClock::step`] rejects.
+    pub fn step(
+        &mut self,
+        gpu: &Gpu,
+        emitters: &mut [Emitter],
+        surfaces: &Surfaces,
+        dt: f32,
+    ) -> Result<(), String> {
+        let rows = self
+            .clock
+            .step(emitters, surfaces, dt, std::mem::take(&mut self.bursts))?;
+        let spawned: u32 = rows[3].iter().sum();
+        gpu.queue.write_buffer(&self.params, 0, rows_bytes(&rows));
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        {
+            let mut pass = encoder.begin_compute_pass(&Default::default());
+            pass.set_bind_group(0, &self.group, &[]);
+            if spawned > 0 {
+                pass.set_pipeline(&self.spawn);
+                pass.dispatch_workgroups(spawned.div_ceil(WORKGROUP), 1, 1);
+            }
+            pass.set_pipeline(&self.update);
+            pass.dispatch_workgroups((self.capacity() as u32).div_ceil(WORKGROUP), 1, 1);
+        }
+        gpu.queue.submit([encoder.finish()]);
+        Ok(())
+    }
+
+    /// The sprites of the last step (dead slots have radius 0), for [`super::Renderer::gpu_points`].
+    pub fn sprites(&self) -> (wgpu::Buffer, u32) {
+        (self.instances.clone(), self.capacity() as u32)
+    }
+
+    /// Reads every slot back: positions, velocities, whether alive (tests; waits for the GPU).
+    pub async fn read_back(&self, gpu: &Gpu) -> Result<(Vec<Vec3>, Vec<Vec3>, Vec<bool>), String> {
+        let bytes = read_buffer(
+            gpu,
+            &self.particles,
+            self.capacity() as u64 * PARTICLE_BYTES,
+        )
+        .await?;
+        let floats: &[f32] = bytemuck::cast_slice(&bytes);
+        let mut out = (Vec::new(), Vec::new(), Vec::new());
+        for q in floats.chunks_exact(12) {
+            out.0.push(Vec3::new(q[0], q[1], q[2]));
+            out.1.push(Vec3::new(q[4], q[5], q[6]));
+            out.2.push(q[9] > 0.5);
+        }
+        Ok(out)
+    }
+
+    /// Waits until the GPU has finished every step submitted so far (benchmarks).
+    pub async fn finish(&self, gpu: &Gpu) -> Result<(), String> {
+        read_buffer(gpu, &self.instances, 16).await.map(|_| ())
+    }
+}
+
+/// A flock stepped by a compute shader: same model as [`crate::boids::Flock::step`] with the
+/// naive neighbour search (see `shaders/boids.wgsl`).
+pub struct BoidsCompute {
+    n: usize,
+    params: wgpu::Buffer,
+    /// Ping-pong state: step k reads `state[k % 2]` and writes the other.
+    state: [wgpu::Buffer; 2],
+    instances: wgpu::Buffer,
+    groups: [wgpu::BindGroup; 2],
+    pipeline: wgpu::ComputePipeline,
+    current: usize,
+    time_sec: f32,
+}
+
+impl BoidsCompute {
+    /// Uploads a flock (positions and velocities, one each per boid) at clock `time_sec`.
+    ///
+    /// # Errors
+    /// No compute on this backend, lengths that differ, a count out of `[1,` [`MAX_GPU_BOIDS`]`]`.
+    pub fn new(
+        gpu: &Gpu,
+        positions: &[Vec3],
+        velocities: &[Vec3],
+        time_sec: f32,
+    ) -> Result<Self, String> {
+        no_compute(gpu)?;
+        let n = positions.len();
+        if velocities.len() != n {
+            return Err(format!(
+                "GPU boids: {n} positions but {} velocities",
+                velocities.len()
+            ));
+        }
+        if n == 0 || n > MAX_GPU_BOIDS {
+            return Err(format!(
+                "GPU boids: the count must lie in [1, {MAX_GPU_BOIDS}], got {n}"
+            ));
+        }
+        let size = n as u64 * BOID_BYTES;
+        let state = [
+            storage(gpu, "boids a", size, wgpu::BufferUsages::empty()),
+            storage(gpu, "boids b", size, wgpu::BufferUsages::empty()),
+        ];
+        let data: Vec<[f32; 8]> = positions
+            .iter()
+            .zip(velocities)
+            .map(|(p, v)| [p.x, p.y, p.z, 0.0, v.x, v.y, v.z, 0.0])
+            .collect();
+        gpu.queue
+            .write_buffer(&state[0], 0, bytemuck::cast_slice(&data));
+        let instances = storage(
+            gpu,
+            "boid sprites",
+            n as u64 * INSTANCE_BYTES,
+            wgpu::BufferUsages::VERTEX,
+        );
+        let params = uniform(
+            gpu,
+            "boid params",
+            12 + crate::figures::gpu::MAX_GPU_OBSTACLES,
+        );
+        let layout = gpu
+            .device
+            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some("boids"),
+                entries: &[
+                    entry(0, wgpu::BufferBindingType::Uniform),
+                    entry(1, wgpu::BufferBindingType::Storage { read_only: true }),
+                    entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
+                    entry(3, wgpu::BufferBindingType::Storage { read_only: false }),
+                ],
+            });
+        let group = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
+            gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("boids"),
+                layout: &layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: params.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: from.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 2,
+                        resource: to.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 3,
+                        resource: instances.as_entire_binding(),
+                    },
+                ],
+            })
+        };
+        let groups = [group(&state[0], &state[1]), group(&state[1], &state[0])];
+        let m = module(gpu, "boids", include_str!("shaders/boids.wgsl"));
+        Ok(Self {
+            n,
+            pipeline: pipeline(gpu, &layout, &m, "step"),
+            params,
+            state,
+            instances,
+            groups,
+            current: 0,
+            time_sec,
+        })
+    }
+
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// The flock's clock, seconds.
+    pub fn time_sec(&self) -> f32 {
+        self.time_sec
+    }
+
+    /// One step of `dt` seconds, submitted to the queue.
+    ///
+    /// # Errors
+    /// What [`boid_rows`] rejects.
+    pub fn step(
+        &mut self,
+        gpu: &Gpu,
+        params: &crate::boids::BoidParams,
+        dt: f32,
+    ) -> Result<(), String> {
+        let rows = boid_rows(params, self.n, self.time_sec + dt, dt)?;
+        gpu.queue.write_buffer(&self.params, 0, rows_bytes(&rows));
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        {
+            let mut pass = encoder.begin_compute_pass(&Default::default());
+            pass.set_pipeline(&self.pipeline);
+            pass.set_bind_group(0, &self.groups[self.current], &[]);
+            pass.dispatch_workgroups((self.n as u32).div_ceil(WORKGROUP), 1, 1);
+        }
+        gpu.queue.submit([encoder.finish()]);
+        self.current = 1 - self.current;
+        self.time_sec += dt;
+        Ok(())
+    }
+
+    /// The sprites of the last step, for [`super::Renderer::gpu_points`].
+    pub fn sprites(&self) -> (wgpu::Buffer, u32) {
+        (self.instances.clone(), self.n as u32)
+    }
+
+    /// Reads the flock back: positions and velocities (tests; waits for the GPU).
+    pub async fn read_back(&self, gpu: &Gpu) -> Result<(Vec<Vec3>, Vec<Vec3>), String> {
+        let bytes = read_buffer(gpu, &self.state[self.current], self.n as u64 * BOID_BYTES).await?;
+        let floats: &[f32] = bytemuck::cast_slice(&bytes);
+        Ok(floats
+            .chunks_exact(8)
+            .map(|b| (Vec3::new(b[0], b[1], b[2]), Vec3::new(b[4], b[5], b[6])))
+            .unzip())
+    }
+
+    /// Waits until the GPU has finished every step submitted so far (benchmarks).
+    pub async fn finish(&self, gpu: &Gpu) -> Result<(), String> {
+        read_buffer(gpu, &self.instances, 16).await.map(|_| ())
+    }
+}

@@ -1,0 +1,110 @@
+//! Browser bench kernels for the GPU compute paths (WebGPU only; `www/bench.js` runs them when
+//! the browser offers a WebGPU adapter): the time of one GPU step of the particle system and of
+//! the flock. Each call makes its own device on `canvas`; building the buffers and pipelines and a
+//! first step are not timed; then `steps` steps are queued and the time runs until the GPU has
+//! finished them (a read-back of a few bytes waits for it).
+
+use crate::boids::benchmark_flock;
+use crate::figures::gpu::{MAX_GPU_BOIDS, MAX_GPU_PARTICLES};
+use crate::particles::{Emitter, Sphere, Surfaces};
+use crate::render::{BackendChoice, BoidsCompute, Gpu, ParticlesCompute};
+use glam::Vec3;
+use wasm_bindgen::prelude::*;
+use web_sys::HtmlCanvasElement;
+
+fn now_ms() -> f64 {
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map(|p| p.now())
+        .unwrap_or(0.0)
+}
+
+async fn webgpu(canvas: HtmlCanvasElement) -> Result<Gpu, JsError> {
+    Gpu::new(canvas, BackendChoice::WebGpu)
+        .await
+        .map_err(|e| JsError::new(&e))
+}
+
+fn check_steps(steps: usize) -> Result<(), JsError> {
+    if (1..=1000).contains(&steps) {
+        Ok(())
+    } else {
+        Err(JsError::new(&format!(
+            "steps must lie in [1, 1000], got {steps}"
+        )))
+    }
+}
+
+/// Milliseconds per GPU step of `count ∈ [1, 2^20]` particles, all alive (a fountain burst with
+/// lifetimes longer than the run), falling and bouncing on the floor and one sphere.
+#[wasm_bindgen(js_name = benchGpuParticles)]
+pub async fn bench_gpu_particles(
+    canvas: HtmlCanvasElement,
+    count: usize,
+    steps: usize,
+) -> Result<f64, JsError> {
+    check_steps(steps)?;
+    if !(1..=MAX_GPU_PARTICLES).contains(&count) {
+        return Err(JsError::new(&format!(
+            "count must lie in [1, {MAX_GPU_PARTICLES}], got {count}"
+        )));
+    }
+    let gpu = webgpu(canvas).await?;
+    let mut system = ParticlesCompute::new(&gpu, count, 3).map_err(|e| JsError::new(&e))?;
+    let mut emitter = Emitter::fountain(Vec3::ZERO);
+    emitter.rate_per_sec = 0.0;
+    emitter.lifetime_sec = (1e4, 1e4);
+    let mut emitters = [emitter];
+    let surfaces = Surfaces {
+        spheres: vec![Sphere {
+            center: Vec3::new(0.3, 1.0, 0.0),
+            radius: 0.5,
+        }],
+        ..Default::default()
+    };
+    let dt = 1.0 / 60.0;
+    system.burst(0, count);
+    let err = |e: String| JsError::new(&e);
+    system
+        .step(&gpu, &mut emitters, &surfaces, dt)
+        .map_err(err)?;
+    system.finish(&gpu).await.map_err(err)?;
+    let start = now_ms();
+    for _ in 0..steps {
+        system
+            .step(&gpu, &mut emitters, &surfaces, dt)
+            .map_err(err)?;
+    }
+    system.finish(&gpu).await.map_err(err)?;
+    Ok((now_ms() - start) / steps as f64)
+}
+
+/// Milliseconds per GPU step of the benchmark flock of `boids ∈ [1, 65536]` boids
+/// ([`benchmark_flock`], as the CPU kernel `benchBoids`), naive O(N²) neighbours.
+#[wasm_bindgen(js_name = benchGpuBoids)]
+pub async fn bench_gpu_boids(
+    canvas: HtmlCanvasElement,
+    boids: usize,
+    steps: usize,
+) -> Result<f64, JsError> {
+    check_steps(steps)?;
+    if !(1..=MAX_GPU_BOIDS).contains(&boids) {
+        return Err(JsError::new(&format!(
+            "boids must lie in [1, {MAX_GPU_BOIDS}], got {boids}"
+        )));
+    }
+    let gpu = webgpu(canvas).await?;
+    let (params, flock) = benchmark_flock(boids).map_err(|e| JsError::new(&e))?;
+    let err = |e: String| JsError::new(&e);
+    let mut on_gpu =
+        BoidsCompute::new(&gpu, &flock.positions, &flock.velocities, 0.0).map_err(err)?;
+    let dt = 1.0 / 60.0;
+    on_gpu.step(&gpu, &params, dt).map_err(err)?;
+    on_gpu.finish(&gpu).await.map_err(err)?;
+    let start = now_ms();
+    for _ in 0..steps {
+        on_gpu.step(&gpu, &params, dt).map_err(err)?;
+    }
+    on_gpu.finish(&gpu).await.map_err(err)?;
+    Ok((now_ms() - start) / steps as f64)
+}

@@ -1,0 +1,341 @@
+//! The GPU paths' logic, natively (`src/figures/gpu.rs`): the palette the skinning shader gets,
+//! mixed by the shader's formulas written in Rust, skins like the CPU cores; caps give errors;
+//! the figures put GPU draws (not CPU meshes) in the frame when GPU skinning is on.
+
+use glam::{Affine3A, Mat4, Vec3};
+use inbetween::draw::{Frame, MeshId, SkinMeshId};
+use inbetween::figures::gpu::{
+    dqs_like_shader, draw_skinned_dqs, draw_skinned_lbs, gpu_skinnable, lbs_like_shader, pack_dqs,
+    pack_lbs, MAX_GPU_JOINTS,
+};
+use inbetween::figures::skinning::HumanFigure;
+use inbetween::rigid::DualQuat;
+use inbetween::skinning::rigs::benchmark_input;
+use inbetween::skinning::{dual_quat_palette, skin_dqs, skin_lbs};
+
+fn max_error(a: &[Vec3], b: &[Vec3]) -> f32 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (*x - *y).length())
+        .fold(0.0, f32::max)
+}
+
+#[test]
+fn shader_formulas_on_the_packed_palette_match_the_cpu_skinning() {
+    // 60 joints, 4 random influences per vertex, a real pose (the benchmark's input).
+    let input = benchmark_input(2_000, 7);
+    let n = input.positions.len();
+    let (mut p, mut nn) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    skin_lbs(
+        &input.palette,
+        &input.skin,
+        &input.positions,
+        &input.normals,
+        &mut p,
+        &mut nn,
+    )
+    .unwrap();
+    let rows: Vec<_> = pack_lbs(&input.palette).collect();
+    let (gp, gn): (Vec<Vec3>, Vec<Vec3>) = (0..n)
+        .map(|v| {
+            lbs_like_shader(
+                &rows,
+                input.skin.joints()[v],
+                input.skin.weights()[v],
+                input.positions[v],
+                input.normals[v],
+            )
+        })
+        .unzip();
+    assert!(max_error(&p, &gp) < 1e-4, "LBS positions");
+    assert!(max_error(&nn, &gn) < 1e-4, "LBS normals");
+
+    let mut dq = vec![DualQuat::IDENTITY; input.palette.len()];
+    dual_quat_palette(&input.palette, &mut dq).unwrap();
+    skin_dqs(
+        &dq,
+        &input.skin,
+        &input.positions,
+        &input.normals,
+        &mut p,
+        &mut nn,
+    )
+    .unwrap();
+    let rows: Vec<_> = pack_dqs(&dq).collect();
+    let (gp, gn): (Vec<Vec3>, Vec<Vec3>) = (0..n)
+        .map(|v| {
+            dqs_like_shader(
+                &rows,
+                input.skin.joints()[v],
+                input.skin.weights()[v],
+                input.positions[v],
+                input.normals[v],
+            )
+        })
+        .unzip();
+    assert!(max_error(&p, &gp) < 1e-4, "DQS positions");
+    assert!(max_error(&nn, &gn) < 1e-4, "DQS normals");
+}
+
+#[test]
+fn dqs_shader_formula_fixes_antipodal_quaternions() {
+    // Joint 1 is joint 0's rotation with the quaternion negated: the same motion. Without the
+    // sign fix a 50/50 blend would cancel; with it the vertex moves rigidly with both.
+    let k = Affine3A::from_rotation_translation(
+        glam::Quat::from_rotation_y(0.8),
+        Vec3::new(0.1, 0.2, 0.3),
+    );
+    let mut dq = [DualQuat::IDENTITY; 2];
+    dual_quat_palette(&[k, k], &mut dq).unwrap();
+    dq[1].real = -dq[1].real;
+    dq[1].dual = -dq[1].dual;
+    let rows: Vec<_> = pack_dqs(&dq).collect();
+    let p = Vec3::new(0.5, -0.2, 0.7);
+    let (q, n) = dqs_like_shader(&rows, [0, 1, 0, 0], [0.5, 0.5, 0.0, 0.0], p, Vec3::X);
+    assert!((q - k.transform_point3(p)).length() < 1e-5, "{q}");
+    assert!((n - k.transform_vector3(Vec3::X)).length() < 1e-5, "{n}");
+}
+
+#[test]
+fn palettes_over_the_cap_are_errors_and_draws_record_their_range() {
+    let mut frame = Frame::default();
+    let big = vec![Affine3A::IDENTITY; MAX_GPU_JOINTS + 1];
+    let e = draw_skinned_lbs(&mut frame, SkinMeshId(0), Mat4::IDENTITY, None, &big).unwrap_err();
+    assert!(e.contains("too many") && e.contains("128"), "{e}");
+    assert!(frame.skinned.is_empty() && frame.skin_palette.is_empty());
+    let small = vec![Affine3A::IDENTITY; 5];
+    draw_skinned_lbs(&mut frame, SkinMeshId(0), Mat4::IDENTITY, None, &small).unwrap();
+    draw_skinned_dqs(
+        &mut frame,
+        SkinMeshId(1),
+        Mat4::IDENTITY,
+        Some(Vec3::X),
+        &[DualQuat::IDENTITY; 3],
+    )
+    .unwrap();
+    assert_eq!(frame.skinned[0].joints, 0..5);
+    assert_eq!(frame.skinned[1].joints, 5..8);
+    assert!(frame.skinned[1].dqs && !frame.skinned[0].dqs);
+    assert!(frame.skinned[0].vertex_colors && !frame.skinned[1].vertex_colors);
+    // The identity packs to the identity rows (LBS) and the unit quaternion (DQS).
+    assert_eq!(frame.skin_palette[0][0].to_array(), [1.0, 0.0, 0.0, 0.0]);
+    assert_eq!(frame.skin_palette[5][0].to_array(), [0.0, 0.0, 0.0, 1.0]);
+    let before = frame.fingerprint();
+    frame.skin_palette[1][0].w = 0.5;
+    assert_ne!(
+        before,
+        frame.fingerprint(),
+        "the palette is part of the fingerprint"
+    );
+    frame.clear();
+    assert!(frame.skinned.is_empty() && frame.skin_palette.is_empty());
+    assert!(gpu_skinnable(10, 10).is_ok());
+    assert!(gpu_skinnable(11, 10).unwrap_err().contains("joint 10"));
+    assert!(gpu_skinnable(3, 200).is_err());
+}
+
+#[test]
+fn the_human_figure_draws_a_gpu_skinned_body_when_asked() {
+    let mut figure = HumanFigure::new();
+    figure.set_gpu(true);
+    figure.skin(0.3).unwrap();
+    let mut frame = Frame::default();
+    let note = figure.draw_gpu(&mut frame, SkinMeshId(0)).unwrap();
+    assert!(note.contains("on the GPU"), "{note}");
+    assert_eq!(frame.skinned.len(), 1);
+    assert!(frame.skinned[0].dqs, "the figure starts with DQS");
+    assert_eq!(
+        frame.skinned[0].joints.len(),
+        figure.character().skeleton.len()
+    );
+    // The palette moved: the walk at 0.3 s is not the bind pose.
+    assert!(frame
+        .skin_palette
+        .iter()
+        .any(|r| (r[0] - glam::Vec4::new(0.0, 0.0, 0.0, 1.0)).length() > 1e-3));
+    // CPU mode: a plain mesh, no GPU draws.
+    figure.set_gpu(false);
+    figure.skin(0.3).unwrap();
+    let mut frame = Frame::default();
+    let note = figure.draw(&mut frame, MeshId(3));
+    assert!(note.contains("on the CPU"), "{note}");
+    assert!(frame.skinned.is_empty() && frame.meshes.len() == 1);
+    // Heat map changes reach the GPU copy once.
+    figure.take_gpu_dirty();
+    figure.set_heat_joint("none").unwrap();
+    assert!(figure.take_gpu_dirty() && !figure.take_gpu_dirty());
+}
+
+mod compute {
+    use glam::Vec3;
+    use inbetween::boids::BoidParams;
+    use inbetween::figures::gpu::{
+        boid_rows, flock_stats, particle_stats, GpuParticleClock, MAX_GPU_BOIDS, MAX_GPU_PARTICLES,
+    };
+    use inbetween::particles::{Emitter, ParticleSystem, Sphere, Surfaces};
+
+    #[test]
+    fn the_clock_spawns_what_the_cpu_system_spawns() {
+        // Long lifetimes: nobody dies, so the CPU's live count is what it spawned.
+        let mut e = Emitter::fountain(Vec3::ZERO);
+        e.rate_per_sec = 137.0;
+        e.lifetime_sec = (50.0, 60.0);
+        let surfaces = Surfaces::default();
+        let mut cpu = ParticleSystem::new(5000, 1).unwrap();
+        let (mut ce, mut ge) = ([e], [e]);
+        let mut clock = GpuParticleClock::new(5000, 1).unwrap();
+        let mut spawned = 0u32;
+        for k in 0..100 {
+            cpu.step(&mut ce, &surfaces, 1.0 / 60.0);
+            let rows = clock.step(&mut ge, &surfaces, 1.0 / 60.0, [0; 4]).unwrap();
+            assert_eq!(rows[2][1], spawned % 5000, "ring start at step {k}");
+            spawned += rows[3].iter().sum::<u32>();
+            assert_eq!(spawned as usize, cpu.len(), "step {k}");
+        }
+    }
+
+    #[test]
+    fn caps_and_bad_input_are_errors() {
+        assert!(GpuParticleClock::new(MAX_GPU_PARTICLES + 1, 0).is_err());
+        assert!(GpuParticleClock::new(0, 0).is_err());
+        let mut clock = GpuParticleClock::new(100, 0).unwrap();
+        let s = Surfaces::default();
+        let e = Emitter::fountain(Vec3::ZERO);
+        assert!(clock
+            .step(&mut [e; 5], &s, 0.01, [0; 4])
+            .unwrap_err()
+            .contains("emitters"));
+        assert!(clock
+            .step(&mut [e], &s, f32::NAN, [0; 4])
+            .unwrap_err()
+            .contains("dt"));
+        let mut bad = e;
+        bad.rate_per_sec = -1.0;
+        assert!(clock
+            .step(&mut [bad], &s, 0.01, [0; 4])
+            .unwrap_err()
+            .contains("rate"));
+        let many = Surfaces {
+            spheres: vec![
+                Sphere {
+                    center: Vec3::ZERO,
+                    radius: 1.0
+                };
+                9
+            ],
+            ..Default::default()
+        };
+        assert!(clock
+            .step(&mut [e], &many, 0.01, [0; 4])
+            .unwrap_err()
+            .contains("spheres"));
+        // A burst bigger than the ring is cut to the ring.
+        let rows = clock.step(&mut [e], &s, 0.0, [500, 0, 0, 0]).unwrap();
+        assert_eq!(rows[3].iter().sum::<u32>(), 100);
+        let p = BoidParams::default();
+        assert!(boid_rows(&p, MAX_GPU_BOIDS + 1, 0.0, 0.01)
+            .unwrap_err()
+            .contains("count"));
+        assert!(boid_rows(&p, 0, 0.0, 0.01).is_err());
+        assert!(boid_rows(&p, 10, 0.0, -1.0).unwrap_err().contains("dt"));
+        let nan = BoidParams {
+            max_speed: f32::NAN,
+            ..Default::default()
+        };
+        assert!(boid_rows(&nan, 10, 0.0, 0.01).is_err());
+        assert_eq!(boid_rows(&p, 10, 0.0, 0.01).unwrap().len(), 12 + 8);
+    }
+
+    #[test]
+    fn statistics_measure_what_they_say() {
+        let s = particle_stats(
+            &[Vec3::Y, Vec3::new(0.0, 3.0, 0.0), Vec3::splat(9.0)],
+            &[Vec3::X, Vec3::new(0.0, 3.0, 0.0), Vec3::ZERO],
+            &[true, true, false],
+        );
+        assert_eq!(
+            (s.alive, s.mean_speed, s.mean_height, s.lowest),
+            (2, 2.0, 2.0, 1.0)
+        );
+        // Two boids heading the same way 1 m apart; then opposite ways.
+        let p = [Vec3::ZERO, Vec3::X];
+        let f = flock_stats(&p, &[Vec3::Z, 2.0 * Vec3::Z]);
+        assert_eq!(
+            (f.mean_speed, f.polarisation, f.mean_nearest_m),
+            (1.5, 1.0, 1.0)
+        );
+        assert_eq!(flock_stats(&p, &[Vec3::Z, -Vec3::Z]).polarisation, 0.0);
+    }
+}
+
+mod figures {
+    use inbetween::figures::boids::FlockFigure;
+    use inbetween::figures::particles::EmitterFigure;
+
+    #[test]
+    fn the_emitter_figure_hands_its_steps_to_the_gpu() {
+        let mut f = EmitterFigure::new();
+        f.set_mode("both").unwrap();
+        // A new mode restarts first, without stepping.
+        let (restart, n) = f
+            .advance_gpu(1.0, false, |_, _, _| panic!("no step yet"))
+            .unwrap();
+        assert!(restart && n == 0);
+        let mut bursts = Vec::new();
+        let (restart, n) = f
+            .advance_gpu(1.0, true, |e, _, b| {
+                assert_eq!(e.len(), 2);
+                bursts.push(b);
+                Ok(())
+            })
+            .unwrap();
+        assert!(!restart && n == 60 && bursts.len() == 60);
+        assert_eq!(bursts[0], 400, "the explosion goes off at the start");
+        assert!(bursts[1..].iter().all(|&b| b == 0));
+        // Forward: more steps, no restart; back in time: a restart.
+        assert_eq!(
+            f.advance_gpu(1.5, false, |_, _, _| Ok(())).unwrap(),
+            (false, 30)
+        );
+        assert_eq!(
+            f.advance_gpu(0.5, false, |_, _, _| Ok(())).unwrap(),
+            (true, 0)
+        );
+        // A failing GPU step is the caller's error, and the clock does not move past it.
+        let e = f
+            .advance_gpu(0.5, true, |_, _, _| Err("boom".into()))
+            .unwrap_err();
+        assert_eq!(e, "boom");
+        assert!(f.advance_gpu(f32::NAN, false, |_, _, _| Ok(())).is_err());
+        // "Explode now" reaches the GPU at once, once per step, and the note counts it.
+        let mut fired = 0;
+        f.explode_gpu(|_, _, n| {
+            fired += n;
+            Ok(())
+        })
+        .unwrap();
+        f.explode_gpu(|_, _, _| panic!("already set off at this step"))
+            .unwrap();
+        assert_eq!(fired, 400);
+        let mut frame = inbetween::draw::Frame::default();
+        let note = f.draw_gpu(&mut frame);
+        assert!(
+            note.contains("GPU") && note.contains("by hand: 1"),
+            "{note}"
+        );
+        assert!(frame.points.is_empty(), "the sprites are the GPU's");
+    }
+
+    #[test]
+    fn the_flock_figure_plans_its_gpu_steps() {
+        let mut f = FlockFigure::new();
+        // A jump of more than the catch-up limit restarts from a fresh seeded flock.
+        assert_eq!(f.plan_gpu_steps(0.5).unwrap(), (true, 0));
+        assert_eq!(f.plan_gpu_steps(0.55).unwrap(), (false, 3));
+        assert_eq!(f.plan_gpu_steps(0.2).unwrap(), (true, 0));
+        let mut frame = inbetween::draw::Frame::default();
+        let note = f.draw_gpu(&mut frame);
+        assert!(note.contains("300 boids") && note.contains("GPU"), "{note}");
+        assert!(frame.points.is_empty());
+    }
+}

@@ -1,0 +1,169 @@
+//! Browser-only test of GPU compute (WebGPU): the particle system and the flock stepped by
+//! compute shaders against the CPU cores, from the same start, compared statistically (the GPU
+//! draws other random numbers and sums in another order, so particles and boids differ one by
+//! one; their statistics must not). On WebGL2 there is no compute: the test checks that asking
+//! for it is a clear error, not a panic.
+#![cfg(target_arch = "wasm32")]
+
+use glam::Vec3;
+use inbetween::boids::{BoidParams, Flock, Search};
+use inbetween::figures::gpu::{flock_stats, particle_stats};
+use inbetween::particles::{Emitter, ParticleSystem, Sphere, Surfaces};
+use inbetween::render::{BackendChoice, BoidsCompute, Gpu, ParticlesCompute};
+use wasm_bindgen::JsCast;
+use wasm_bindgen_test::*;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+async fn gpu() -> Gpu {
+    let document = web_sys::window().unwrap().document().unwrap();
+    let canvas: web_sys::HtmlCanvasElement = document
+        .create_element("canvas")
+        .unwrap()
+        .dyn_into()
+        .unwrap();
+    canvas.set_width(16);
+    canvas.set_height(16);
+    document.body().unwrap().append_child(&canvas).unwrap();
+    let gpu = Gpu::new(canvas, BackendChoice::Auto)
+        .await
+        .expect("an adapter (WebGPU or WebGL2)");
+    if let Some(expected) = option_env!("INBETWEEN_EXPECT_BACKEND") {
+        assert_eq!(gpu.backend_name, expected, "adapter: {}", gpu.adapter_name);
+    }
+    assert_eq!(gpu.compute, gpu.backend_name == "WebGPU");
+    gpu
+}
+
+fn close(what: &str, cpu: f32, gpu: f32, rel: f32, abs: f32) {
+    assert!(
+        (cpu - gpu).abs() <= rel * cpu.abs().max(gpu.abs()) + abs,
+        "{what}: CPU {cpu}, GPU {gpu}"
+    );
+}
+
+#[wasm_bindgen_test]
+async fn gpu_particles_match_the_cpu_statistically() {
+    let gpu = gpu().await;
+    if !gpu.compute {
+        let e = ParticlesCompute::new(&gpu, 1000, 1).err().unwrap();
+        assert!(e.contains("needs WebGPU"), "{e}");
+        return;
+    }
+    let surfaces = Surfaces {
+        spheres: vec![Sphere {
+            center: Vec3::new(0.3, 0.8, 0.0),
+            radius: 0.4,
+        }],
+        ..Default::default()
+    };
+    let fountain = Emitter::fountain(Vec3::ZERO);
+    let dt = 1.0 / 60.0;
+    let capacity = 2048; // ≥ rate × longest lifetime (200 × 3 = 600): the ring never laps
+    let mut cpu = ParticleSystem::new(capacity, 11).unwrap();
+    let mut cpu_emitters = [fountain];
+    let mut on_gpu = ParticlesCompute::new(&gpu, capacity, 11).unwrap();
+    let mut gpu_emitters = [fountain];
+    // 3.3 s: particles have risen, hit the sphere and the floor, and the first ones have died.
+    for _ in 0..200 {
+        cpu.step(&mut cpu_emitters, &surfaces, dt);
+        on_gpu.step(&gpu, &mut gpu_emitters, &surfaces, dt).unwrap();
+    }
+    let n = cpu.len();
+    let c = particle_stats(&cpu.positions[..n], &cpu.velocities[..n], &vec![true; n]);
+    let (p, v, alive) = on_gpu.read_back(&gpu).await.unwrap();
+    let g = particle_stats(&p, &v, &alive);
+    // Same spawn counts; deaths depend on random lifetimes in [2, 3] s.
+    assert!(c.alive > 300, "CPU alive {}", c.alive);
+    close("alive", c.alive as f32, g.alive as f32, 0.08, 5.0);
+    close("mean speed (m/s)", c.mean_speed, g.mean_speed, 0.08, 0.05);
+    close("mean height (m)", c.mean_height, g.mean_height, 0.1, 0.05);
+    // Nobody below the floor (exact time of impact, on both).
+    assert!(c.lowest >= -1e-4 && g.lowest >= -1e-4, "{c:?} {g:?}");
+    // A burst of the explosion emitter spawns exactly that many more next step.
+    let mut boom = [fountain, Emitter::explosion(Vec3::new(0.0, 2.0, 0.0))];
+    boom[0].rate_per_sec = 0.0;
+    let before = g.alive;
+    on_gpu.burst(1, 100);
+    on_gpu.step(&gpu, &mut boom, &surfaces, 1e-4).unwrap();
+    let (_, _, alive) = on_gpu.read_back(&gpu).await.unwrap();
+    let after = alive.iter().filter(|a| **a).count();
+    assert!(
+        after >= before + 100 - 2 && after <= before + 100,
+        "{before} then {after}"
+    );
+}
+
+#[wasm_bindgen_test]
+async fn gpu_boids_match_the_cpu_statistically() {
+    let gpu = gpu().await;
+    if !gpu.compute {
+        let e = BoidsCompute::new(&gpu, &[Vec3::ZERO], &[Vec3::X], 0.0)
+            .err()
+            .unwrap();
+        assert!(e.contains("needs WebGPU"), "{e}");
+        return;
+    }
+    let plain = BoidParams {
+        obstacles: vec![Sphere {
+            center: Vec3::ZERO,
+            radius: 0.8,
+        }],
+        bounds: Vec3::new(3.0, 1.5, 3.0),
+        ..Default::default()
+    };
+    // Every rule at once: a force law, a narrower field of view, a leader and a predator.
+    let busy = BoidParams {
+        law: inbetween::boids::ForceLaw::Gaussian {
+            a1: 1.0,
+            a2: 2.0,
+            k: 2.0,
+            x0: 0.6,
+        },
+        fov_deg: 240.0,
+        leader: Some(1.5),
+        predator: Some((1.2, 3.0)),
+        ..plain.clone()
+    };
+    for params in [plain, busy] {
+        compare_flocks(&gpu, &params).await;
+    }
+    // Bad input at the boundary: a clear error.
+    let mut on_gpu = BoidsCompute::new(&gpu, &[Vec3::ZERO], &[Vec3::X], 0.0).unwrap();
+    assert!(on_gpu
+        .step(&gpu, &BoidParams::default(), f32::NAN)
+        .unwrap_err()
+        .contains("dt"));
+}
+
+async fn compare_flocks(gpu: &Gpu, params: &BoidParams) {
+    let gpu = gpu;
+    let params = params.clone();
+    let mut cpu = Flock::new(300, &params, 5).unwrap();
+    let start = flock_stats(&cpu.positions, &cpu.velocities);
+    let mut on_gpu = BoidsCompute::new(gpu, &cpu.positions, &cpu.velocities, 0.0).unwrap();
+    let dt = 1.0 / 30.0;
+    for _ in 0..90 {
+        cpu.step(&params, Search::Naive, dt);
+        on_gpu.step(gpu, &params, dt).unwrap();
+    }
+    let c = flock_stats(&cpu.positions, &cpu.velocities);
+    let (p, v) = on_gpu.read_back(gpu).await.unwrap();
+    let g = flock_stats(&p, &v);
+    // The flock changed (it slows into a swarm and spaces out), so agreeing is not agreeing on
+    // the start.
+    assert!(
+        (c.mean_speed - start.mean_speed).abs() > 0.3,
+        "start {start:?}, CPU after {c:?}"
+    );
+    web_sys::console::log_1(&format!("start {start:?}\nCPU {c:?}\nGPU {g:?}").into());
+    close("mean speed (m/s)", c.mean_speed, g.mean_speed, 0.1, 0.05);
+    close("polarisation", c.polarisation, g.polarisation, 0.0, 0.15);
+    close(
+        "mean nearest-neighbour distance (m)",
+        c.mean_nearest_m,
+        g.mean_nearest_m,
+        0.15,
+        0.02,
+    );
+}
