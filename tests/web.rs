@@ -158,6 +158,42 @@ async fn meshes_update_in_place() {
 }
 
 #[wasm_bindgen_test]
+async fn a_freed_mesh_is_gone_and_drawing_it_draws_nothing() {
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    let data = inbetween::mesh::cuboid(Vec3::splat(0.5));
+    let id = renderer.create_mesh(&gpu, &data, None);
+    renderer.free_mesh(id);
+    renderer.free_mesh(id); // twice: harmless
+    let err = renderer
+        .update_mesh(&gpu, id, &data.positions, &data.normals)
+        .unwrap_err();
+    assert!(err.contains("unknown mesh"), "{err}");
+    // A stale id in the draw list is skipped: the image is background only, and no panic.
+    let camera = OrbitCamera {
+        target: Vec3::ZERO,
+        distance: 4.0,
+        ..Default::default()
+    };
+    renderer.frame.mesh(id, Mat4::IDENTITY, Vec3::X);
+    let rgba = renderer
+        .render_to_rgba(&gpu, &camera, 32, 32)
+        .await
+        .expect("pixels");
+    assert!(rgba.chunks(4).all(|p| p[0] > 235 && p[1] > 235), "nothing drawn");
+    // The next mesh gets a fresh id and draws.
+    let next = renderer.create_mesh(&gpu, &data, None);
+    assert_ne!(next, id);
+    renderer.frame.mesh(next, Mat4::IDENTITY, Vec3::X);
+    let rgba = renderer
+        .render_to_rgba(&gpu, &camera, 32, 32)
+        .await
+        .expect("pixels");
+    let c = pixel(&rgba, 32, 16, 16);
+    assert!(c[0] > 60 && c[1] < 80, "the new mesh is drawn: {c:?}");
+}
+
+#[wasm_bindgen_test]
 async fn viewer_rejects_an_unknown_backend_with_a_message() {
     let result = inbetween::web::Viewer::create(canvas(8, 8), "vulkan".into()).await;
     assert!(result.is_err());

@@ -8,11 +8,11 @@
 mod compute;
 mod context;
 mod renderer;
-mod texture;
 mod skin;
+mod texture;
 
 pub use compute::{BoidsCompute, ParticlesCompute};
 pub use context::{BackendChoice, Gpu};
 pub use renderer::{Frame, MeshId, Renderer};
-pub use texture::{NoiseImage, PendingRead};
 pub use skin::SkinPass;
+pub use texture::{NoiseImage, PendingRead};

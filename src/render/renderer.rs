@@ -124,7 +124,8 @@ pub struct Renderer {
     object_group: wgpu::BindGroup,
     lines: StreamBuffer,
     points: StreamBuffer,
-    meshes: Vec<GpuMesh>,
+    /// Indexed by `MeshId`; `None` once freed (ids are never reused, so a stale id draws nothing).
+    meshes: Vec<Option<GpuMesh>>,
     targets: Option<Targets>,
     format: wgpu::TextureFormat,
     encode_srgb: bool,
@@ -396,13 +397,24 @@ impl Renderer {
                 contents: bytemuck::cast_slice(&data.indices),
                 usage: wgpu::BufferUsages::INDEX,
             });
-        self.meshes.push(GpuMesh {
+        self.meshes.push(Some(GpuMesh {
             vertices,
             indices,
             index_count: data.indices.len() as u32,
             colors,
-        });
+        }));
         MeshId(self.meshes.len() - 1)
+    }
+
+    /// Releases a mesh's GPU buffers (a page that loads one glTF file after another frees the
+    /// last file's meshes). Drawing a freed id draws nothing; freeing twice is harmless.
+    pub fn free_mesh(&mut self, id: MeshId) {
+        if let Some(slot) = self.meshes.get_mut(id.0) {
+            if let Some(mesh) = slot.take() {
+                mesh.vertices.destroy();
+                mesh.indices.destroy();
+            }
+        }
     }
 
     /// Replaces a mesh's positions and normals in place (skinning, cloth): same vertex count, no
@@ -414,7 +426,11 @@ impl Renderer {
         positions: &[Vec3],
         normals: &[Vec3],
     ) -> Result<(), String> {
-        let mesh = self.meshes.get(id.0).ok_or("unknown mesh")?;
+        let mesh = self
+            .meshes
+            .get(id.0)
+            .and_then(Option::as_ref)
+            .ok_or("unknown mesh")?;
         if positions.len() != mesh.colors.len() || normals.len() != mesh.colors.len() {
             return Err(format!(
                 "mesh has {} vertices, got {} positions and {} normals",
@@ -454,7 +470,11 @@ impl Renderer {
         normals: &[Vec3],
         colors: &[Vec4],
     ) -> Result<(), String> {
-        let mesh = self.meshes.get_mut(id.0).ok_or("unknown mesh")?;
+        let mesh = self
+            .meshes
+            .get_mut(id.0)
+            .and_then(Option::as_mut)
+            .ok_or("unknown mesh")?;
         if colors.len() != mesh.colors.len() {
             return Err(format!(
                 "mesh has {} vertices, got {} colours",
@@ -693,7 +713,9 @@ impl Renderer {
             if !self.frame.meshes.is_empty() {
                 pass.set_pipeline(&self.mesh_pipeline);
                 for (i, draw) in self.frame.meshes.iter().enumerate() {
-                    let mesh = &self.meshes[draw.mesh.0];
+                    let Some(Some(mesh)) = self.meshes.get(draw.mesh.0) else {
+                        continue;
+                    };
                     pass.set_bind_group(
                         1,
                         &self.object_group,

@@ -61,7 +61,8 @@ pub struct SkinPass {
     uniforms: wgpu::Buffer,
     capacity: u64,
     group: wgpu::BindGroup,
-    meshes: Vec<SkinMesh>,
+    /// Indexed by `SkinMeshId`; `None` once freed (ids are never reused).
+    meshes: Vec<Option<SkinMesh>>,
     scratch: Vec<u8>,
     /// Per draw of the frame: its slot in `uniforms`, or `None` when it was skipped.
     slots: Vec<Option<u32>>,
@@ -270,8 +271,17 @@ impl SkinPass {
             vertex_count: n,
             joint_bound: weights.joint_bound(),
         };
-        self.meshes.push(mesh);
+        self.meshes.push(Some(mesh));
         Ok(SkinMeshId(self.meshes.len() - 1))
+    }
+
+    /// Releases a skinned mesh's GPU buffers; drawing a freed id draws nothing.
+    pub fn free(&mut self, id: SkinMeshId) {
+        if let Some(mesh) = self.meshes.get_mut(id.0).and_then(Option::take) {
+            for buffer in [&mesh.rest, &mesh.colors, &mesh.influences, &mesh.indices] {
+                buffer.destroy();
+            }
+        }
     }
 
     /// Replaces a skinned mesh's colours (a weight heat map) in place.
@@ -281,7 +291,11 @@ impl SkinPass {
         id: SkinMeshId,
         colors: &[Vec4],
     ) -> Result<(), String> {
-        let mesh = self.meshes.get(id.0).ok_or("unknown skinned mesh")?;
+        let mesh = self
+            .meshes
+            .get(id.0)
+            .and_then(Option::as_ref)
+            .ok_or("unknown skinned mesh")?;
         if colors.len() != mesh.vertex_count {
             return Err(format!(
                 "skinned mesh has {} vertices, got {} colours",
@@ -302,7 +316,11 @@ impl SkinPass {
         id: SkinMeshId,
         weights: &SkinWeights,
     ) -> Result<(), String> {
-        let mesh = self.meshes.get_mut(id.0).ok_or("unknown skinned mesh")?;
+        let mesh = self
+            .meshes
+            .get_mut(id.0)
+            .and_then(Option::as_mut)
+            .ok_or("unknown skinned mesh")?;
         if weights.len() != mesh.vertex_count {
             return Err(format!(
                 "skinned mesh has {} vertices, got {} weights",
@@ -327,10 +345,14 @@ impl SkinPass {
         self.slots.clear();
         let mut slot = 0u32;
         for draw in &frame.skinned {
-            let ok = self.meshes.get(draw.mesh.0).is_some_and(|m| {
-                gpu_skinnable(m.joint_bound, draw.joints.len()).is_ok()
-                    && draw.joints.end <= frame.skin_palette.len()
-            });
+            let ok = self
+                .meshes
+                .get(draw.mesh.0)
+                .and_then(Option::as_ref)
+                .is_some_and(|m| {
+                    gpu_skinnable(m.joint_bound, draw.joints.len()).is_ok()
+                        && draw.joints.end <= frame.skin_palette.len()
+                });
             if !ok {
                 self.slots.push(None);
                 continue;
@@ -377,7 +399,9 @@ impl SkinPass {
         pass.set_pipeline(&self.pipeline);
         for (draw, slot) in frame.skinned.iter().zip(&self.slots) {
             let Some(slot) = slot else { continue };
-            let mesh = &self.meshes[draw.mesh.0];
+            let Some(Some(mesh)) = self.meshes.get(draw.mesh.0) else {
+                continue;
+            };
             pass.set_bind_group(1, &self.group, &[(*slot as u64 * STRIDE) as u32]);
             pass.set_vertex_buffer(0, mesh.rest.slice(..));
             pass.set_vertex_buffer(1, mesh.colors.slice(..));
@@ -410,7 +434,9 @@ impl SkinPass {
         self.prepare(gpu, frame);
         let draw = frame.skinned.get(k).ok_or("no such skinned draw")?;
         let slot = self.slots[k].ok_or("this draw would be skipped")?;
-        let mesh = &self.meshes[draw.mesh.0];
+        let mesh = self.meshes[draw.mesh.0]
+            .as_ref()
+            .ok_or("this mesh was freed")?;
         let size = (mesh.vertex_count * 24) as u64;
         let out = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("skinned (compute check)"),

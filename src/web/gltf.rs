@@ -83,7 +83,13 @@ impl GltfScene {
     /// Draws at `time_sec`; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         if self.generation != self.scene.generation() {
-            // A new file: its meshes, once (the renderer keeps meshes for the page's lifetime).
+            // A new file: the last file's GPU meshes are released, the new ones made once.
+            for id in self.meshes.drain(..) {
+                viewer.renderer.free_mesh(id);
+            }
+            for id in self.skin_meshes.drain(..) {
+                viewer.renderer.skin.free(id);
+            }
             self.meshes = self
                 .scene
                 .bind_meshes()
@@ -94,7 +100,9 @@ impl GltfScene {
         }
         if self.scene.gpu_on() && self.skin_generation != self.scene.generation() {
             let data = self.scene.bind_meshes();
-            self.skin_meshes.clear();
+            for id in self.skin_meshes.drain(..) {
+                viewer.renderer.skin.free(id);
+            }
             for (k, m) in data.iter().enumerate() {
                 let weights = self
                     .scene
