@@ -154,8 +154,16 @@ impl Grid {
         // The distance from x to cell c's extent along one axis; the border cells reach to
         // infinity outwards (positions outside the box are clamped into them).
         let gap = |x: f32, o: f32, c: usize, n: usize| {
-            let lo = if c == 0 { f32::NEG_INFINITY } else { o + c as f32 * size };
-            let hi = if c + 1 == n { f32::INFINITY } else { o + (c + 1) as f32 * size };
+            let lo = if c == 0 {
+                f32::NEG_INFINITY
+            } else {
+                o + c as f32 * size
+            };
+            let hi = if c + 1 == n {
+                f32::INFINITY
+            } else {
+                o + (c + 1) as f32 * size
+            };
             (lo - x).max(x - hi).max(0.0)
         };
         // ⌊(x − o) / size⌋ clamped to the grid; `as` truncates, which is ⌊·⌋ once clamped at 0

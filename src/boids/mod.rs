@@ -385,7 +385,10 @@ impl Flock {
         // One boid scanning all others is O(N), whatever the search.
         for (j, &q) in self.positions.iter().enumerate() {
             let d = (q - p).length_squared();
-            if j != i && Some(j) != leader && d < best.0 && d < 16.0 * params.search_radius().powi(2)
+            if j != i
+                && Some(j) != leader
+                && d < best.0
+                && d < 16.0 * params.search_radius().powi(2)
             {
                 best = (d, q);
             }
@@ -470,7 +473,10 @@ impl Flock {
             for cj in 0..dy {
                 for ci in 0..dx {
                     let cell = (ci, cj, ck);
-                    for s in self.grid.run(ci + dx * (cj + dy * ck), ci + dx * (cj + dy * ck)) {
+                    for s in self
+                        .grid
+                        .run(ci + dx * (cj + dy * ck), ci + dx * (cj + dy * ck))
+                    {
                         let i = sorted[s] as usize;
                         if Some(i) == predator {
                             forces[i] = self.predator_steering(params, i, leader);
