@@ -220,10 +220,10 @@ fn dqs_4(
     let (r0, d0) = slot(0);
     let mut real = r0.map(|c| c * w[0]);
     let mut dual = d0.map(|c| c * w[0]);
-    for k in 1..4 {
+    for (k, &wk) in w.iter().enumerate().skip(1) {
         let (r, d) = slot(k);
         // The sign fix, as the one-vertex path: +w when the dot is ≥ 0 (or exactly 0).
-        let s = w[k].copysign(dot4(&r0, &r) + Vec4::ZERO);
+        let s = wk.copysign(dot4(&r0, &r) + Vec4::ZERO);
         for c in 0..4 {
             real[c] += r[c] * s;
             dual[c] += d[c] * s;
