@@ -1,6 +1,8 @@
 //! Perlin noise benchmarks (native): our `f32` improved noise against the `noise` crate 0.9
 //! (`Perlin`, `f64`), the usual choice of a Rust user, on the same points:
-//! - 2D and 3D, on a regular grid and at scattered points (`perlin2_*`, `perlin3_*`),
+//! - 2D and 3D, on a regular grid and at scattered points (`perlin2_*`, `perlin3_*`); on the
+//!   grids also our row fast path (`inbetween_f32_rows`: `noise2_row` / `noise3_row` over the
+//!   same points, one call per row),
 //! - an 8-octave fractal sum on a 512 × 512 grid (`fbm8_512`: our `Fractal::sum2` with N = 7,
 //!   α = ½, ω = 2 against `noise::Fbm<Perlin>` with 8 octaves, persistence ½, lacunarity 2),
 //! - our 512 × 512 terrain regenerated with 8 octaves, exact normals and colours (no baseline:
@@ -72,6 +74,50 @@ fn theirs3(perlin: &Perlin, points: &[[f64; 3]]) -> f64 {
     points.iter().map(|p| perlin.get(*p)).sum()
 }
 
+/// A regular grid's points as rows for the row fast paths ([`Permutation::noise2_row`],
+/// [`Permutation::noise3_row`]): every point's x, row after row, and each row's other
+/// coordinates (the same `f32` points as the per-point kernels, laid out by row).
+struct Rows<const D: usize> {
+    xs: Vec<f32>,
+    rest: Vec<[f32; D]>,
+    len: usize,
+}
+
+fn rows<const D: usize>(points: &[[f32; D]], len: usize) -> Rows<D> {
+    for row in points.chunks(len) {
+        assert!(row.iter().all(|p| p[1..] == row[0][1..]), "not a row");
+    }
+    Rows {
+        xs: points.iter().map(|p| p[0]).collect(),
+        rest: points.chunks(len).map(|row| row[0]).collect(),
+        len,
+    }
+}
+
+fn ours2_rows(perm: &Permutation, rows: &Rows<2>, out: &mut [f32]) -> f32 {
+    for ((xs, p), o) in rows
+        .xs
+        .chunks(rows.len)
+        .zip(&rows.rest)
+        .zip(out.chunks_mut(rows.len))
+    {
+        perm.noise2_row(xs, p[1], o);
+    }
+    out.iter().sum()
+}
+
+fn ours3_rows(perm: &Permutation, rows: &Rows<3>, out: &mut [f32]) -> f32 {
+    for ((xs, p), o) in rows
+        .xs
+        .chunks(rows.len)
+        .zip(&rows.rest)
+        .zip(out.chunks_mut(rows.len))
+    {
+        perm.noise3_row(xs, p[1], p[2], o);
+    }
+    out.iter().sum()
+}
+
 const OURS_FBM: Fractal = Fractal {
     n: 7,
     alpha: 0.5,
@@ -119,16 +165,21 @@ struct Inputs {
     g3f: Vec<[f32; 3]>,
     s3: Vec<[f64; 3]>,
     s3f: Vec<[f32; 3]>,
+    r2: Rows<2>,
+    r3: Rows<3>,
 }
 
 fn inputs() -> Inputs {
     let (g2, s2, g3, s3) = (grid2(), scattered::<2>(), grid3(), scattered::<3>());
+    let (g2f, g3f) = (to_f32(&g2), to_f32(&g3));
     Inputs {
+        r2: rows(&g2f, GRID2),
+        r3: rows(&g3f, GRID3),
+        g2f,
+        g3f,
         perm: Permutation::perlin(),
         perlin: Perlin::new(0),
-        g2f: to_f32(&g2),
         s2f: to_f32(&s2),
-        g3f: to_f32(&g3),
         s3f: to_f32(&s3),
         g2,
         s2,
@@ -151,6 +202,12 @@ fn bench_samples(c: &mut Criterion, x: &Inputs) {
         group.bench_function("noise_crate_f64", |b| {
             b.iter(|| theirs2(&x.perlin, black_box(pts)))
         });
+        if name == "perlin2_grid" {
+            let mut out = vec![0.0f32; pts.len()];
+            group.bench_function("inbetween_f32_rows", |b| {
+                b.iter(|| ours2_rows(&x.perm, black_box(&x.r2), &mut out))
+            });
+        }
         group.finish();
     }
     let cases3: [Case<3>; 2] = [
@@ -166,6 +223,12 @@ fn bench_samples(c: &mut Criterion, x: &Inputs) {
         group.bench_function("noise_crate_f64", |b| {
             b.iter(|| theirs3(&x.perlin, black_box(pts)))
         });
+        if name == "perlin3_grid" {
+            let mut out = vec![0.0f32; pts.len()];
+            group.bench_function("inbetween_f32_rows", |b| {
+                b.iter(|| ours3_rows(&x.perm, black_box(&x.r3), &mut out))
+            });
+        }
         group.finish();
     }
 }
@@ -222,6 +285,17 @@ fn print_ratios(x: &Inputs) {
             black_box(theirs2(&x.perlin, &x.g2));
         }),
     );
+    let mut out2 = vec![0.0f32; x.g2.len()];
+    line(
+        "perlin2 grid, row API",
+        x.g2.len(),
+        best_time(r, || {
+            black_box(ours2_rows(&x.perm, &x.r2, &mut out2));
+        }),
+        best_time(r, || {
+            black_box(theirs2(&x.perlin, &x.g2));
+        }),
+    );
     line(
         "perlin2 scattered",
         x.s2.len(),
@@ -237,6 +311,17 @@ fn print_ratios(x: &Inputs) {
         x.g3.len(),
         best_time(r, || {
             black_box(ours3(&x.perm, &x.g3f));
+        }),
+        best_time(r, || {
+            black_box(theirs3(&x.perlin, &x.g3));
+        }),
+    );
+    let mut out3 = vec![0.0f32; x.g3.len()];
+    line(
+        "perlin3 grid, row API",
+        x.g3.len(),
+        best_time(r, || {
+            black_box(ours3_rows(&x.perm, &x.r3, &mut out3));
         }),
         best_time(r, || {
             black_box(theirs3(&x.perlin, &x.g3));

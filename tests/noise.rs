@@ -489,3 +489,137 @@ fn koch_and_sierpinski_counts_and_shapes() {
         .contains("depth"));
     assert!(sierpinski(MAX_DEPTH + 1, corners, &mut tris).is_err());
 }
+
+/// Rows of points for the row fast paths: increasing with small and large steps (many points per
+/// cell, cells skipped), decreasing, scattered, negative and far from the origin.
+fn row_cases() -> Vec<(Vec<f32>, f32, f32)> {
+    let mut rng = inbetween::fixtures::Rng::new(5);
+    let mut cases = vec![];
+    for (x0, step, n) in [
+        (0.0, 0.0371, 200),
+        (-7.3, 0.61, 60),
+        (251.2, 0.013, 400),
+        (12.0, -0.37, 50),
+    ] {
+        let xs = (0..n).map(|i| x0 + i as f32 * step).collect();
+        cases.push((xs, rng.range(-300.0, 300.0), rng.range(-300.0, 300.0)));
+    }
+    let scattered = (0..300).map(|_| rng.range(-50.0, 50.0)).collect();
+    cases.push((scattered, 0.5, -2.25));
+    // Lattice lines: y, z on integers.
+    cases.push(((0..100).map(|i| i as f32 * 0.25).collect(), 3.0, -4.0));
+    cases
+}
+
+#[test]
+fn noise2_row_matches_noise2_and_its_derivative() {
+    for seed in [None, Some(11)] {
+        let perm = seed.map_or_else(Permutation::perlin, Permutation::seeded);
+        for (xs, y, _) in row_cases() {
+            let n = xs.len();
+            let (mut out, mut dx, mut dy) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+            perm.noise2_row(&xs, y, &mut out);
+            let mut out2 = vec![0.0; n];
+            perm.noise2_row_with_derivative(&xs, y, &mut out2, &mut dx, &mut dy);
+            for k in 0..n {
+                let v = perm.noise2(xs[k], y);
+                let (v2, d) = perm.noise2_with_derivative(xs[k], y);
+                assert!(
+                    (out[k] - v).abs() < 2e-6,
+                    "x {} y {y}: {} vs {v}",
+                    xs[k],
+                    out[k]
+                );
+                assert!((out2[k] - v2).abs() < 2e-6);
+                assert!(
+                    (dx[k] - d.x).abs() < 1e-5,
+                    "dx at {}: {} vs {}",
+                    xs[k],
+                    dx[k],
+                    d.x
+                );
+                assert!(
+                    (dy[k] - d.y).abs() < 1e-5,
+                    "dy at {}: {} vs {}",
+                    xs[k],
+                    dy[k],
+                    d.y
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn noise3_row_matches_noise3() {
+    let perm = Permutation::perlin();
+    for (xs, y, z) in row_cases() {
+        let mut out = vec![0.0; xs.len()];
+        perm.noise3_row(&xs, y, z, &mut out);
+        for (k, &x) in xs.iter().enumerate() {
+            let v = perm.noise3(x, y, z);
+            assert!(
+                (out[k] - v).abs() < 2e-6,
+                "({x}, {y}, {z}): {} vs {v}",
+                out[k]
+            );
+        }
+    }
+    // And against Perlin's reference in doubles, through the row path.
+    let xs = [3.14f32, 0.5, -1.25];
+    let mut out = [0.0; 3];
+    perm.noise3_row(&xs, 42.0, 7.0, &mut out);
+    for (k, &x) in xs.iter().enumerate() {
+        assert!((out[k] as f64 - noise3_f64(x as f64, 42.0, 7.0)).abs() < 2e-6);
+    }
+}
+
+/// The row-by-row regeneration gives, at every vertex, the height and normal of the point by
+/// point formula (`TerrainParams::g` and `terrain_normal`), for every variant.
+#[test]
+fn regenerate_matches_the_point_by_point_terrain() {
+    let perm = Permutation::seeded(3);
+    let mut terrain = Terrain::new(97).unwrap();
+    for variant in [
+        Variant::Sum,
+        Variant::Ridge,
+        Variant::InvertedRidge,
+        Variant::Marble,
+        Variant::Sliding { t: 2.7 },
+        Variant::Evolving { t: 0.4 },
+    ] {
+        let params = TerrainParams {
+            fractal: Fractal {
+                n: 8,
+                alpha: 0.5,
+                omega: 2.1,
+            },
+            h: 0.7,
+            s: 2.3,
+            o: -13.4,
+            variant,
+        };
+        terrain.regenerate(&perm, &params).unwrap();
+        let r = terrain.resolution();
+        for j in 0..r {
+            for i in 0..r {
+                let (u, v) = terrain.uv(i, j);
+                let (g, dg) = params.g(&perm, params.s * (u + params.o), params.s * (v + params.o));
+                let k = j * r + i;
+                let p = terrain.positions[k];
+                assert!(
+                    (p.y - params.h * g).abs() < 1e-5,
+                    "{variant:?} at ({i}, {j}): {} vs {}",
+                    p.y,
+                    params.h * g
+                );
+                assert_eq!((p.x, p.z), (u, v));
+                let n = terrain_normal(params.h, params.s, dg);
+                assert!(
+                    (terrain.normals[k] - n).length() < 1e-4,
+                    "{variant:?} normal at ({i}, {j})"
+                );
+            }
+        }
+    }
+}

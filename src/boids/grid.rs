@@ -43,6 +43,12 @@ pub struct Grid {
     /// `positions[sorted[k]]`: the positions in cell order, so the distance tests of a cell's
     /// run read memory front to back instead of jumping around the flock.
     sorted_positions: Vec<Vec3>,
+    /// `velocities[sorted[k]]`, filled by [`Grid::rebuild_with_velocities`] (the flock's step
+    /// reads every neighbour's velocity; in cell order those reads are coherent too).
+    sorted_velocities: Vec<Vec3>,
+    /// The same, one array per coordinate (positions x, y, z, then velocities), padded with 3
+    /// zeros so that four lanes can always be loaded: the flock's SIMD step reads these.
+    soa: [Vec<f32>; 6],
 }
 
 impl Grid {
@@ -99,6 +105,117 @@ impl Grid {
         for (q, &i) in self.sorted_positions.iter_mut().zip(&self.sorted) {
             *q = positions[i as usize];
         }
+    }
+
+    /// [`Grid::rebuild`], and the velocities copied into cell order beside the positions (what
+    /// the flock's grid step reads).
+    pub fn rebuild_with_velocities(&mut self, positions: &[Vec3], velocities: &[Vec3]) {
+        self.rebuild(positions);
+        self.sorted_velocities.resize(self.sorted.len(), Vec3::ZERO);
+        for (w, &i) in self.sorted_velocities.iter_mut().zip(&self.sorted) {
+            *w = velocities[i as usize];
+        }
+        let n = self.sorted.len();
+        for a in &mut self.soa {
+            a.resize(n + 3, 0.0);
+        }
+        let [x, y, z, vx, vy, vz] = &mut self.soa;
+        for k in 0..n {
+            let (p, v) = (self.sorted_positions[k], self.sorted_velocities[k]);
+            (x[k], y[k], z[k]) = (p.x, p.y, p.z);
+            (vx[k], vy[k], vz[k]) = (v.x, v.y, v.z);
+        }
+    }
+
+    /// Calls `f(run)` for the slot runs (ranges of [`Grid::sorted`], in increasing order) of the
+    /// cells that a ball of squared radius `radius2 ≤ cell_size²` around `p`, which lies in
+    /// the cell `(ci, cj, ck)`, can reach: per row of the 3 × 3 × 3 block around `cell`, only the cells that the
+    /// ball's chord through the row's slab crosses, and no row the ball misses. Every point of
+    /// the grid within the ball is in one of the runs (and, as the full block scan visits them,
+    /// in the same order).
+    #[inline(always)]
+    pub(super) fn for_each_run_near(
+        &self,
+        p: Vec3,
+        (ci, cj, ck): (usize, usize, usize),
+        radius2: f32,
+        mut f: impl FnMut(std::ops::Range<usize>),
+    ) {
+        let (dx, dy, dz) = (
+            self.dims[0] as usize,
+            self.dims[1] as usize,
+            self.dims[2] as usize,
+        );
+        let (origin, size) = (self.origin, self.cell_size);
+        let range = |x: usize, n: usize| x.saturating_sub(1)..=(x + 1).min(n - 1);
+        // Slightly widened, so rounding never drops a cell that holds a neighbour (a cell too
+        // many only costs its distance tests).
+        let reach2 = radius2 * (1.0 + 1e-4) + 1e-12;
+        // The distance from x to cell c's extent along one axis; the border cells reach to
+        // infinity outwards (positions outside the box are clamped into them).
+        let gap = |x: f32, o: f32, c: usize, n: usize| {
+            let lo = if c == 0 {
+                f32::NEG_INFINITY
+            } else {
+                o + c as f32 * size
+            };
+            let hi = if c + 1 == n {
+                f32::INFINITY
+            } else {
+                o + (c + 1) as f32 * size
+            };
+            (lo - x).max(x - hi).max(0.0)
+        };
+        // ⌊(x − o) / size⌋ clamped to the grid; `as` truncates, which is ⌊·⌋ once clamped at 0
+        // (and needs no libm call for floor on x86-64 without SSE4.1).
+        let inv_size = 1.0 / size;
+        let x_cell = |x: f32| (((x - origin.x) * inv_size).max(0.0) as usize).min(dx - 1);
+        for k in range(ck, dz) {
+            let gz = gap(p.z, origin.z, k, dz);
+            for j in range(cj, dy) {
+                let gy = gap(p.y, origin.y, j, dy);
+                let rest = reach2 - gz * gz - gy * gy;
+                if rest < 0.0 {
+                    continue;
+                }
+                let half = rest.sqrt();
+                let lo = x_cell(p.x - half).max(ci.saturating_sub(1));
+                let hi = x_cell(p.x + half).min(ci + 1);
+                let row = dx * (j + dy * k);
+                f(self.run(row + lo, row + hi));
+            }
+        }
+    }
+
+    /// Sorted positions and velocities by coordinate (see `soa`).
+    pub(super) fn soa(&self) -> &[Vec<f32>; 6] {
+        &self.soa
+    }
+
+    /// Boid indices in cell order (cell `c`'s boids, in increasing index, then cell `c + 1`'s).
+    pub fn sorted(&self) -> &[u32] {
+        &self.sorted
+    }
+
+    /// The run of slots (indices into [`Grid::sorted`]) of cells `lo..=hi`.
+    #[inline]
+    pub(super) fn run(&self, lo: usize, hi: usize) -> std::ops::Range<usize> {
+        self.cell_start[lo] as usize..self.cell_start[hi + 1] as usize
+    }
+
+    /// The cell of boid `i` at the last rebuild.
+    #[inline]
+    #[allow(dead_code)]
+    pub(super) fn cell_of(&self, i: usize) -> usize {
+        self.cell_of[i] as usize
+    }
+
+    pub(super) fn sorted_positions(&self) -> &[Vec3] {
+        &self.sorted_positions
+    }
+
+    pub(super) fn sorted_velocities(&self) -> &[Vec3] {
+        &self.sorted_velocities
     }
 
     /// Calls `f(j)` for every boid `j ≠ i` within `radius ≤ cell_size` of `positions[i]`

@@ -312,11 +312,17 @@ impl Flock {
             let margin = Vec3::splat(radius);
             self.grid
                 .configure(-params.bounds - margin, params.bounds + margin, radius);
-            self.grid.rebuild(&self.positions);
+            self.grid
+                .rebuild_with_velocities(&self.positions, &self.velocities);
         }
         let (leader, predator) = self.roles(params);
-        for i in 0..n {
-            self.forces[i] = self.steering(params, search, i, leader, predator);
+        match search {
+            Search::Grid => self.steer_all_with_grid(params, leader, predator),
+            Search::Naive => {
+                for i in 0..n {
+                    self.forces[i] = self.steering(params, search, i, leader, predator);
+                }
+            }
         }
         self.time_sec += dt;
         for i in 0..n {
@@ -355,89 +361,79 @@ impl Flock {
     ) -> Vec3 {
         let p = self.positions[i];
         let v = self.velocities[i];
-        let mut force = Vec3::ZERO;
         if Some(i) == predator {
-            // Chase the nearest boid within four search radii, else patrol.
-            let mut best = (f32::INFINITY, p);
-            // One boid scanning all others is O(N), whatever the search.
-            for (j, &q) in self.positions.iter().enumerate() {
-                let d = (q - p).length_squared();
-                if j != i
-                    && Some(j) != leader
-                    && d < best.0
-                    && d < 16.0 * params.search_radius().powi(2)
-                {
-                    best = (d, q);
-                }
+            return self.predator_steering(params, i, leader);
+        }
+        let rules = NeighbourRules::new(params, v);
+        let mut acc = Neighbours::default();
+        self.for_each_neighbour(search, i, params.search_radius(), |j| {
+            if Some(j) == predator {
+                return;
             }
-            if best.0.is_finite() {
-                force += 3.0 * (best.1 - p);
-            } else {
-                force += -p * 0.5; // patrol towards the middle
-            }
-        } else {
-            let (mut n_c, mut n_a) = (0u32, 0u32);
-            let (mut centre, mut mean_v, mut sep, mut law) =
-                (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO);
-            let (rc2, ra2, rs2, rl2) = (
-                params.cohesion.radius.powi(2),
-                params.alignment.radius.powi(2),
-                params.separation.radius.powi(2),
-                params.law_radius.powi(2),
-            );
-            // The field-of-view test of `sees`, with its cosine and |v| computed once per boid
-            // (a cosine per neighbour pair was most of the step's time in wasm).
-            let all_round = params.fov_deg >= 360.0;
-            let cos_half = (0.5 * params.fov_deg).to_radians().cos();
-            let v_len = v.length();
-            self.for_each_neighbour(search, i, params.search_radius(), |j| {
-                if Some(j) == predator {
-                    return;
-                }
-                let q = self.positions[j];
-                if !all_round && v_len > 0.0 {
-                    let to = q - p;
-                    let l = to.length();
-                    if l > 0.0 && to.dot(v) < cos_half * l * v_len {
-                        return;
-                    }
-                }
-                let d = p - q;
-                let d2 = d.length_squared();
-                if d2 <= rc2 {
-                    centre += q;
-                    n_c += 1;
-                }
-                if d2 <= ra2 {
-                    mean_v += self.velocities[j];
-                    n_a += 1;
-                }
-                if d2 <= rs2 && d2 > 0.0 {
-                    sep += d / d2;
-                }
-                if d2 <= rl2 && d2 > 0.0 && params.law != ForceLaw::None {
-                    let x = d2.sqrt();
-                    law += params.law.f(x) * (-d / x);
-                }
-            });
-            if n_c > 0 {
-                force += params.cohesion.weight * (centre / n_c as f32 - p);
-            }
-            if n_a > 0 {
-                force += params.alignment.weight * (mean_v / n_a as f32 - v);
-            }
-            force += params.separation.weight * sep + law;
-            if let (Some(l), Some(w)) = (leader, params.leader) {
-                force += w * (self.positions[l] - p).clamp_length_max(2.0);
-            }
-            if let (Some(k), Some((flee_radius, flee_weight))) = (predator, params.predator) {
-                let d = p - self.positions[k];
-                let d2 = d.length_squared();
-                if d2 < flee_radius * flee_radius && d2 > 0.0 {
-                    force += flee_weight * d / d2;
-                }
+            let q = self.positions[j];
+            let d = p - q;
+            rules.add(&mut acc, d, d.length_squared(), v, q, self.velocities[j]);
+        });
+        self.finish_steering(params, p, v, &acc, leader, predator)
+    }
+
+    /// The predator chases the nearest boid within four search radii, else patrols.
+    fn predator_steering(&self, params: &BoidParams, i: usize, leader: Option<usize>) -> Vec3 {
+        let p = self.positions[i];
+        let mut force = Vec3::ZERO;
+        let mut best = (f32::INFINITY, p);
+        // One boid scanning all others is O(N), whatever the search.
+        for (j, &q) in self.positions.iter().enumerate() {
+            let d = (q - p).length_squared();
+            if j != i
+                && Some(j) != leader
+                && d < best.0
+                && d < 16.0 * params.search_radius().powi(2)
+            {
+                best = (d, q);
             }
         }
+        if best.0.is_finite() {
+            force += 3.0 * (best.1 - p);
+        } else {
+            force += -p * 0.5; // patrol towards the middle
+        }
+        self.environment_steering(params, p, force)
+    }
+
+    /// The rules' sums turned into a force, plus leader, predator, obstacles and box; clamped.
+    fn finish_steering(
+        &self,
+        params: &BoidParams,
+        p: Vec3,
+        v: Vec3,
+        acc: &Neighbours,
+        leader: Option<usize>,
+        predator: Option<usize>,
+    ) -> Vec3 {
+        let mut force = Vec3::ZERO;
+        if acc.n_c > 0 {
+            force += params.cohesion.weight * (acc.centre / acc.n_c as f32 - p);
+        }
+        if acc.n_a > 0 {
+            force += params.alignment.weight * (acc.mean_v / acc.n_a as f32 - v);
+        }
+        force += params.separation.weight * acc.sep + acc.law;
+        if let (Some(l), Some(w)) = (leader, params.leader) {
+            force += w * (self.positions[l] - p).clamp_length_max(2.0);
+        }
+        if let (Some(k), Some((flee_radius, flee_weight))) = (predator, params.predator) {
+            let d = p - self.positions[k];
+            let d2 = d.length_squared();
+            if d2 < flee_radius * flee_radius && d2 > 0.0 {
+                force += flee_weight * d / d2;
+            }
+        }
+        self.environment_steering(params, p, force)
+    }
+
+    /// Obstacles and the bounding box added to `force`, then the force clamp.
+    fn environment_steering(&self, params: &BoidParams, p: Vec3, mut force: Vec3) -> Vec3 {
         // Obstacles: push out along the normal when inside the obstacle's margin.
         for o in &params.obstacles {
             let d = p - o.center;
@@ -453,6 +449,270 @@ impl Flock {
         force -= params.bounds_weight * outside;
         force.clamp_length_max(params.max_force)
     }
+
+    /// Every boid's steering with the grid, written into `self.forces`, walking the boids in
+    /// cell order over the grid's sorted copies of positions and velocities: a boid and its
+    /// neighbours then sit close together in memory (in flock order every neighbour was a jump
+    /// across the arrays; at 100k boids, a cache miss each). Only the cells the search ball
+    /// reaches are scanned ([`Grid::for_each_run_near`]). Without a distance law the
+    /// candidates are tested and summed four at a time ([`Flock::steer_simd`]); with one, one at
+    /// a time, in the order of [`Flock::steering`] (so the same bits).
+    fn steer_all_with_grid(
+        &mut self,
+        params: &BoidParams,
+        leader: Option<usize>,
+        predator: Option<usize>,
+    ) {
+        let mut forces = std::mem::take(&mut self.forces);
+        let base_rules = NeighbourRules::new(params, Vec3::ZERO);
+        let sorted = self.grid.sorted();
+        let pred_slot = predator.and_then(|k| sorted.iter().position(|&i| i as usize == k));
+        let [dx, dy, dz] = self.grid.dims.map(|d| d as usize);
+        // Cell by cell, so each boid's cell coordinates come without a division or a lookup.
+        for ck in 0..dz {
+            for cj in 0..dy {
+                for ci in 0..dx {
+                    let cell = (ci, cj, ck);
+                    for s in self
+                        .grid
+                        .run(ci + dx * (cj + dy * ck), ci + dx * (cj + dy * ck))
+                    {
+                        let i = sorted[s] as usize;
+                        if Some(i) == predator {
+                            forces[i] = self.predator_steering(params, i, leader);
+                            continue;
+                        }
+                        let acc = if params.law == ForceLaw::None {
+                            self.steer_simd(params, &base_rules, s, cell, pred_slot)
+                        } else {
+                            self.steer_scalar(params, &base_rules, s, cell, pred_slot)
+                        };
+                        let (p, v) = (
+                            self.grid.sorted_positions()[s],
+                            self.grid.sorted_velocities()[s],
+                        );
+                        forces[i] = self.finish_steering(params, p, v, &acc, leader, predator);
+                    }
+                }
+            }
+        }
+        self.forces = forces;
+    }
+
+    /// The neighbour sums of the boid in slot `s` of cell `cell`, one candidate at a time.
+    fn steer_scalar(
+        &self,
+        params: &BoidParams,
+        base_rules: &NeighbourRules,
+        s: usize,
+        cell: (usize, usize, usize),
+        pred_slot: Option<usize>,
+    ) -> Neighbours {
+        let grid = &self.grid;
+        let (sp, sv) = (grid.sorted_positions(), grid.sorted_velocities());
+        let r2 = params.search_radius().powi(2);
+        let (p, v) = (sp[s], sv[s]);
+        let rules = NeighbourRules {
+            v_len: v.length(),
+            ..*base_rules
+        };
+        let pred = pred_slot.unwrap_or(usize::MAX);
+        let mut acc = Neighbours::default();
+        grid.for_each_run_near(p, cell, r2, |run| {
+            for t in run {
+                let q = sp[t];
+                if (q - p).length_squared() <= r2 && t != s && t != pred {
+                    let d = p - q;
+                    rules.add(&mut acc, d, d.length_squared(), v, q, sv[t]);
+                }
+            }
+        });
+        acc
+    }
+
+    /// The neighbour sums of the boid in slot `s` of cell `cell` without a distance law,
+    /// four candidates at a time (SSE2 natively, simd128 in wasm, through glam's `Vec4`): every
+    /// test becomes a lane mask (in the ball, in view, not itself, not the predator) and every
+    /// sum a masked add, so there is no branch per candidate. The tests are the scalar ones,
+    /// lane by lane, so the neighbour sets are the same; the sums run in another order (four
+    /// partial sums), so they differ from the scalar path's by rounding.
+    fn steer_simd(
+        &self,
+        params: &BoidParams,
+        base_rules: &NeighbourRules,
+        s: usize,
+        cell: (usize, usize, usize),
+        pred_slot: Option<usize>,
+    ) -> Neighbours {
+        use glam::Vec4;
+        let grid = &self.grid;
+        let [xs, ys, zs, vxs, vys, vzs] = grid.soa();
+        let (p, v) = (
+            Vec3::new(xs[s], ys[s], zs[s]),
+            Vec3::new(vxs[s], vys[s], vzs[s]),
+        );
+        let rules = NeighbourRules {
+            v_len: v.length(),
+            ..*base_rules
+        };
+        let (px, py, pz) = (Vec4::splat(p.x), Vec4::splat(p.y), Vec4::splat(p.z));
+        let (vx, vy, vz) = (Vec4::splat(v.x), Vec4::splat(v.y), Vec4::splat(v.z));
+        let (rc2, ra2, rs2) = (
+            Vec4::splat(rules.rc2),
+            Vec4::splat(rules.ra2),
+            Vec4::splat(rules.rs2),
+        );
+        // The field of view (see `NeighbourRules::behind`): b = cos(fov/2)|v|.
+        let check_view = !rules.all_round && rules.v_len > 0.0;
+        let b = rules.cos_half * rules.v_len;
+        let (b_non_negative, bb) = (b >= 0.0, Vec4::splat(b * b));
+        let zero = Vec4::ZERO;
+        let lanes = Vec4::new(0.0, 1.0, 2.0, 3.0);
+        // Slot numbers as f32 are exact (below MAX_BOIDS < 2²⁴); −1 is no slot.
+        let own = Vec4::splat(s as f32);
+        let pred = Vec4::splat(pred_slot.map_or(-1.0, |k| k as f32));
+        let load = |a: &[f32], t: usize| Vec4::from_slice(&a[t..t + 4]);
+        // Sixteen SIMD registers: the sums of positions and velocities stay in them; the counts
+        // go through lane bitmasks, and separation (rare: its radius is small) is summed across
+        // lanes when it happens.
+        let (mut cx, mut cy, mut cz, mut nc) = (zero, zero, zero, 0u32);
+        let (mut mx, mut my, mut mz, mut na) = (zero, zero, zero, 0u32);
+        let mut sep = Vec3::ZERO;
+        let r2 = params.search_radius().powi(2);
+        grid.for_each_run_near(p, cell, r2, |run| {
+            let end = Vec4::splat(run.end as f32);
+            let mut t = run.start;
+            while t < run.end {
+                let slot = Vec4::splat(t as f32) + lanes;
+                let valid = slot.cmplt(end) & slot.cmpne(own) & slot.cmpne(pred);
+                let (qx, qy, qz) = (load(xs, t), load(ys, t), load(zs, t));
+                // d = p − q, d2 = |d|² (the order of glam's length_squared).
+                let (dx, dy, dz) = (px - qx, py - qy, pz - qz);
+                let d2 = dx * dx + dy * dy + dz * dz;
+                let mut ok = valid;
+                if check_view {
+                    // a = (q − p)·v; d2 > 0 is never behind.
+                    let a = (-dx) * vx + (-dy) * vy + (-dz) * vz;
+                    let (a2, b2d2) = (a * a, bb * d2);
+                    let negative = a.cmplt(zero);
+                    let behind = if b_non_negative {
+                        negative | a2.cmplt(b2d2)
+                    } else {
+                        negative & a2.cmpgt(b2d2)
+                    };
+                    ok &= !(behind & d2.cmpgt(zero));
+                }
+                let mc = ok & d2.cmple(rc2);
+                cx += Vec4::select(mc, qx, zero);
+                cy += Vec4::select(mc, qy, zero);
+                cz += Vec4::select(mc, qz, zero);
+                nc += mc.bitmask().count_ones();
+                let ma = ok & d2.cmple(ra2);
+                mx += Vec4::select(ma, load(vxs, t), zero);
+                my += Vec4::select(ma, load(vys, t), zero);
+                mz += Vec4::select(ma, load(vzs, t), zero);
+                na += ma.bitmask().count_ones();
+                let ms = ok & d2.cmple(rs2) & d2.cmpgt(zero);
+                if ms.any() {
+                    sep += Vec3::new(
+                        Vec4::select(ms, dx / d2, zero).element_sum(),
+                        Vec4::select(ms, dy / d2, zero).element_sum(),
+                        Vec4::select(ms, dz / d2, zero).element_sum(),
+                    );
+                }
+                t += 4;
+            }
+        });
+        Neighbours {
+            n_c: nc,
+            n_a: na,
+            centre: Vec3::new(cx.element_sum(), cy.element_sum(), cz.element_sum()),
+            mean_v: Vec3::new(mx.element_sum(), my.element_sum(), mz.element_sum()),
+            sep,
+            law: Vec3::ZERO,
+        }
+    }
+}
+
+/// What the three rules and the distance law sum over a boid's neighbours.
+#[derive(Default)]
+struct Neighbours {
+    n_c: u32,
+    n_a: u32,
+    centre: Vec3,
+    mean_v: Vec3,
+    sep: Vec3,
+    law: Vec3,
+}
+
+/// One boid's view of its neighbours: squared radii and the field-of-view test, with the cosine
+/// and `|v|` computed once per boid (a cosine per neighbour pair was most of the step's time in
+/// wasm).
+#[derive(Clone, Copy)]
+struct NeighbourRules {
+    rc2: f32,
+    ra2: f32,
+    rs2: f32,
+    rl2: f32,
+    law: ForceLaw,
+    all_round: bool,
+    cos_half: f32,
+    v_len: f32,
+}
+
+impl NeighbourRules {
+    /// Whether a neighbour at squared distance `d2 > 0` with `(q − p)·v = a` lies outside the
+    /// field of view, `a < cos(fov/2) |q − p| |v|`, without the square root: with
+    /// `b = cos(fov/2) |v|`, for `b ≥ 0` that is `a < 0 or a² < b² d2`, for `b < 0` it is
+    /// `a < 0 and a² > b² d2`. The SIMD step ([`Flock::steer_all_with_grid`]) evaluates the
+    /// same expressions lane by lane, so both decide every pair alike.
+    #[inline(always)]
+    fn behind(&self, a: f32, d2: f32) -> bool {
+        let b = self.cos_half * self.v_len;
+        let (a2, b2d2) = (a * a, b * b * d2);
+        if b >= 0.0 {
+            a < 0.0 || a2 < b2d2
+        } else {
+            a < 0.0 && a2 > b2d2
+        }
+    }
+
+    fn new(params: &BoidParams, v: Vec3) -> Self {
+        Self {
+            rc2: params.cohesion.radius.powi(2),
+            ra2: params.alignment.radius.powi(2),
+            rs2: params.separation.radius.powi(2),
+            rl2: params.law_radius.powi(2),
+            law: params.law,
+            all_round: params.fov_deg >= 360.0,
+            cos_half: (0.5 * params.fov_deg).to_radians().cos(),
+            v_len: v.length(),
+        }
+    }
+
+    /// Adds neighbour `q` (velocity `w`) of the boid at `p` with velocity `v`, where
+    /// `d = p − q` and `d2 = |d|²`, unless it is outside the field of view.
+    #[inline(always)]
+    fn add(&self, acc: &mut Neighbours, d: Vec3, d2: f32, v: Vec3, q: Vec3, w: Vec3) {
+        if !self.all_round && self.v_len > 0.0 && d2 > 0.0 && self.behind((-d).dot(v), d2) {
+            return;
+        }
+        if d2 <= self.rc2 {
+            acc.centre += q;
+            acc.n_c += 1;
+        }
+        if d2 <= self.ra2 {
+            acc.mean_v += w;
+            acc.n_a += 1;
+        }
+        if d2 <= self.rs2 && d2 > 0.0 {
+            acc.sep += d / d2;
+        }
+        if d2 <= self.rl2 && d2 > 0.0 && self.law != ForceLaw::None {
+            let x = d2.sqrt();
+            acc.law += self.law.f(x) * (-d / x);
+        }
+    }
 }
 
 /// The flock the benchmarks step (native criterion and the browser bench page, so both measure
@@ -466,4 +726,66 @@ pub fn benchmark_flock(n: usize) -> Result<(BoidParams, Flock), String> {
     };
     let flock = Flock::new(n, &params, 0x5eed_b01d)?;
     Ok((params, flock))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cell-order grid step gives every boid the force that the per-boid
+    /// [`Flock::steering`] finds through [`Grid::for_each_neighbour`], with a leader, a predator,
+    /// a field of view on and off: the same bits with a distance law (one candidate at a time,
+    /// in the same order), and the same up to rounding without one (four lanes of partial sums).
+    #[test]
+    fn cell_order_steering_matches_the_per_boid_path() {
+        for (fov_deg, law) in [
+            (270.0, ForceLaw::None),
+            (360.0, ForceLaw::None),
+            (120.0, ForceLaw::None),
+            (360.0, ForceLaw::InversePower { a1: 0.2, a2: 0.01 }),
+            (200.0, ForceLaw::InversePower { a1: 0.2, a2: 0.01 }),
+        ] {
+            let params = BoidParams {
+                fov_deg,
+                law,
+                leader: Some(1.0),
+                predator: Some((2.0, 3.0)),
+                ..Default::default()
+            };
+            let mut flock = Flock::new(2000, &params, 9).unwrap();
+            for _ in 0..5 {
+                flock.step(&params, Search::Grid, 1.0 / 60.0);
+            }
+            // A few boids outside the box (clamped into the border cells) and two at one point.
+            flock.positions[10] = params.bounds * 1.7;
+            flock.positions[11] = -params.bounds * 1.2;
+            flock.positions[12] = flock.positions[13];
+            let radius = params.search_radius();
+            let margin = Vec3::splat(radius);
+            flock
+                .grid
+                .configure(-params.bounds - margin, params.bounds + margin, radius);
+            flock
+                .grid
+                .rebuild_with_velocities(&flock.positions, &flock.velocities);
+            let (leader, predator) = flock.roles(&params);
+            flock.steer_all_with_grid(&params, leader, predator);
+            for i in 0..flock.len() {
+                let simple = flock.steering(&params, Search::Grid, i, leader, predator);
+                let fast = flock.forces[i];
+                if law == ForceLaw::None {
+                    assert!(
+                        (simple - fast).length() <= 1e-4 * (1.0 + simple.length()),
+                        "boid {i}, fov {fov_deg}: {simple} vs {fast}"
+                    );
+                } else {
+                    assert_eq!(
+                        simple.to_array().map(f32::to_bits),
+                        fast.to_array().map(f32::to_bits),
+                        "boid {i}, fov {fov_deg}"
+                    );
+                }
+            }
+        }
+    }
 }

@@ -45,8 +45,9 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// The shape applied to one octave's value `f`: `(s(f), s′(f))`.
     #[inline(always)]
-    fn apply(self, f: f32) -> (f32, f32) {
+    pub fn apply(self, f: f32) -> (f32, f32) {
         // (value, d value / d f)
         match self {
             Shape::Sum => (f, 1.0),

@@ -131,13 +131,15 @@ pub fn terrain_normal(h: f32, s: f32, grad_g: Vec2) -> Vec3 {
 /// above `0.45 · h_max` on flat ground. Linear RGBA.
 pub fn terrain_color(height: f32, normal: Vec3, h_max: f32) -> Vec4 {
     let h_max = h_max.max(1e-6);
-    let rel = height / h_max; // roughly −1 … 1
+    // Multiplications by reciprocals (constant, or hoisted out of a loop over vertices) instead
+    // of five divisions per vertex.
+    let rel = height * h_max.recip(); // roughly −1 … 1
     let water = Vec3::new(0.05, 0.18, 0.45);
     let sand = Vec3::new(0.65, 0.55, 0.3);
     let grass = Vec3::new(0.12, 0.35, 0.06);
     let rock = Vec3::new(0.28, 0.24, 0.21);
     let snow = Vec3::new(0.9, 0.92, 0.95);
-    let smooth = |a: f32, b: f32, x: f32| ((x - a) / (b - a)).clamp(0.0, 1.0);
+    let smooth = |a: f32, b: f32, x: f32| ((x - a) * (1.0 / (b - a))).clamp(0.0, 1.0);
     let mut c = water.lerp(sand, smooth(-0.32, -0.26, rel));
     c = c.lerp(grass, smooth(-0.24, -0.14, rel));
     let steep = smooth(0.12, 0.25, 1.0 - normal.y); // 1 − cos(slope)
@@ -160,6 +162,55 @@ pub struct Terrain {
     pub colors: Vec<Vec4>,
     /// Three per triangle, counter-clockwise seen from above.
     pub indices: Vec<u32>,
+    /// One row of work for [`Terrain::regenerate`], kept so regenerating allocates nothing.
+    scratch: RowScratch,
+}
+
+/// Per-row buffers of [`Terrain::regenerate`] (one entry per vertex of a row).
+#[derive(Clone, Debug, Default)]
+struct RowScratch {
+    /// `s (u + o)` of each column: the noise domain's x before an octave's frequency.
+    base_x: Vec<f32>,
+    /// This octave's x coordinates, `ωᵏ s (u + o)`.
+    xs: Vec<f32>,
+    /// This octave's noise and its gradient.
+    f: Vec<f32>,
+    fx: Vec<f32>,
+    fy: Vec<f32>,
+    /// The sum so far and its gradient.
+    g: Vec<f32>,
+    gx: Vec<f32>,
+    gy: Vec<f32>,
+}
+
+impl RowScratch {
+    /// Adds one octave (amplitude `a`, `aw = αᵏ ωᵏ`) of the row's noise, shaped by `shape`, to
+    /// the sum and its gradient: `g += a s(f)`, `∇g += αᵏ ωᵏ s′(f) ∇f`.
+    #[inline(always)]
+    fn accumulate(&mut self, n: usize, a: f32, aw: f32, shape: impl Fn(f32) -> (f32, f32)) {
+        let (f, fx, fy) = (&self.f[..n], &self.fx[..n], &self.fy[..n]);
+        let (g, gx, gy) = (&mut self.g[..n], &mut self.gx[..n], &mut self.gy[..n]);
+        for i in 0..n {
+            let (sv, ds) = shape(f[i]);
+            g[i] += a * sv;
+            gx[i] += (aw * ds) * fx[i];
+            gy[i] += (aw * ds) * fy[i];
+        }
+    }
+
+    fn new(n: usize) -> Self {
+        let v = || vec![0.0; n];
+        Self {
+            base_x: v(),
+            xs: v(),
+            f: v(),
+            fx: v(),
+            fy: v(),
+            g: v(),
+            gx: v(),
+            gy: v(),
+        }
+    }
 }
 
 impl Terrain {
@@ -188,6 +239,7 @@ impl Terrain {
             normals: vec![Vec3::Y; n],
             colors: vec![Vec4::ONE; n],
             indices,
+            scratch: RowScratch::new(resolution),
         };
         for j in 0..resolution {
             for i in 0..resolution {
@@ -210,20 +262,89 @@ impl Terrain {
     }
 
     /// Rewrites heights, normals and colours for `params` in place (no allocation).
+    ///
+    /// Row by row, octave by octave: every vertex of a row shares the noise's y, so each octave
+    /// of a row is one [`Permutation::noise2_row_with_derivative`] call (the y part of the
+    /// lattice work once per row, the hashes once per cell), and the fractal sum runs over the
+    /// row's arrays. The result is [`TerrainParams::g`] at every vertex to a few `f32`
+    /// roundings. The evolving variant (3D noise) is evaluated point by point.
     pub fn regenerate(&mut self, perm: &Permutation, params: &TerrainParams) -> Result<(), String> {
         params.validate()?;
         let TerrainParams { h, s, o, .. } = *params;
         let h_max = (h * params.fractal.amplitude_sum() * 0.5).max(1e-6);
         let r = self.resolution;
         let step = 2.0 / (r - 1) as f32;
+        let shape = match params.variant {
+            Variant::Sum | Variant::Sliding { .. } => Some(Shape::Sum),
+            Variant::Ridge | Variant::Marble => Some(Shape::Ridge),
+            Variant::InvertedRidge => Some(Shape::InvertedRidge),
+            Variant::Evolving { .. } => None,
+        };
+        let f = params.fractal;
+        let inverted_mean = 0.7 * f.amplitude_sum();
+        let sc = &mut self.scratch;
+        for i in 0..r {
+            sc.base_x[i] = s * (-1.0 + i as f32 * step + o);
+        }
         for j in 0..r {
             let v = -1.0 + j as f32 * step;
             let row = j * r;
+            let y = s * (v + o);
+            if let Some(shape) = shape {
+                let y = match params.variant {
+                    Variant::Sliding { t } => y + t,
+                    _ => y,
+                };
+                sc.g.fill(0.0);
+                sc.gx.fill(0.0);
+                sc.gy.fill(0.0);
+                let (mut a, mut w) = (1.0f32, 1.0f32);
+                for _ in 0..=f.n {
+                    for (x, &b) in sc.xs.iter_mut().zip(&sc.base_x) {
+                        *x = w * b;
+                    }
+                    perm.noise2_row_with_derivative(
+                        &sc.xs,
+                        w * y,
+                        &mut sc.f,
+                        &mut sc.fx,
+                        &mut sc.fy,
+                    );
+                    let aw = a * w;
+                    match shape {
+                        Shape::Sum => sc.accumulate(r, a, aw, |f| Shape::Sum.apply(f)),
+                        Shape::Ridge => sc.accumulate(r, a, aw, |f| Shape::Ridge.apply(f)),
+                        Shape::InvertedRidge => {
+                            sc.accumulate(r, a, aw, |f| Shape::InvertedRidge.apply(f))
+                        }
+                    }
+                    a *= f.alpha;
+                    w *= f.omega;
+                }
+                if let Variant::InvertedRidge = params.variant {
+                    for g in &mut sc.g[..r] {
+                        *g -= inverted_mean;
+                    }
+                }
+                if let Variant::Marble = params.variant {
+                    for i in 0..r {
+                        let phase = 4.0 * sc.base_x[i] + sc.g[i];
+                        let (sin, cos) = phase.sin_cos();
+                        sc.g[i] = 0.5 * sin;
+                        sc.gx[i] = 0.5 * cos * (4.0 + sc.gx[i]);
+                        sc.gy[i] *= 0.5 * cos;
+                    }
+                }
+            } else {
+                for i in 0..r {
+                    let (g, dg) = params.g(perm, sc.base_x[i], y);
+                    (sc.g[i], sc.gx[i], sc.gy[i]) = (g, dg.x, dg.y);
+                }
+            }
             for i in 0..r {
                 let u = -1.0 + i as f32 * step;
-                let (g, dg) = params.g(perm, s * (u + o), s * (v + o));
-                let y = h * g;
-                let n = terrain_normal(h, s, dg);
+                let y = h * sc.g[i];
+                let n = terrain_normal(h, s, Vec2::new(sc.gx[i], sc.gy[i]));
                 let k = row + i;
                 self.positions[k] = Vec3::new(u, y, v);
                 self.normals[k] = n;
