@@ -92,22 +92,24 @@ async function moveEveryControl(page, figure, where, limit = Infinity) {
   // A dropdown passes `tries` > 1: the next options are tried in turn until one changes the
   // figure (a preset equal to the current keys changes nothing, rightly).
   const check = async (what, act, again = false, tries = 1) => {
+    const started = Date.now();
     await pauseTimelines(page);
-    await frames(page, 2);
+    await frames(page, 1);
     const before = await figureSignature(figure);
     let changed = false;
     let after = before;
     for (let k = 0; k < tries && !changed; k++) {
       await act(k);
-      await frames(page, 3);
+      await frames(page, 2);
       after = await figureSignature(figure);
       changed = after !== before;
     }
     if (again && !changed) {
       await act(0);
-      await frames(page, 3);
+      await frames(page, 2);
       changed = (await figureSignature(figure)) !== after;
     }
+    if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${Date.now() - started} ms`);
     assert.ok(changed, `${where}: ${what} did not change the figure`);
     assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], `${where}: ${what} raised an error`);
     moved += 1;
