@@ -49,7 +49,9 @@ async function pauseTimelines(page) {
 async function fullPageShot(page, path) {
   const viewport = page.viewportSize();
   const height = await page.evaluate(() => document.documentElement.scrollHeight);
-  await page.setViewportSize({ width: viewport.width, height: Math.min(height, 16000) });
+  // Chromium's capture wraps round past about 8,000 px (the page's top reappears below), so a
+  // longer page is shown down to there.
+  await page.setViewportSize({ width: viewport.width, height: Math.min(height, 8000) });
   await page.evaluate(() => window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true)));
   await frames(page, 4);
   await page.screenshot({ path });
