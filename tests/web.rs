@@ -180,7 +180,10 @@ async fn a_freed_mesh_is_gone_and_drawing_it_draws_nothing() {
         .render_to_rgba(&gpu, &camera, 32, 32)
         .await
         .expect("pixels");
-    assert!(rgba.chunks(4).all(|p| p[0] > 235 && p[1] > 235), "nothing drawn");
+    assert!(
+        rgba.chunks(4).all(|p| p[0] > 235 && p[1] > 235),
+        "nothing drawn"
+    );
     // The next mesh gets a fresh id and draws.
     let next = renderer.create_mesh(&gpu, &data, None);
     assert_ne!(next, id);

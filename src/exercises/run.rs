@@ -187,6 +187,7 @@ macro_rules! exercises {
     ($( $(#[$doc:meta])* fn $name:ident($($arg:ident: $ty:ty),*) -> $ret:ty = $call:expr; )*) => {
         $(
             $(#[$doc])*
+            #[allow(clippy::too_many_arguments)] // one argument per input of the exercise
             pub fn $name(run: Runner, $($arg: $ty),*) -> Result<$ret, Failure> {
                 let mut args = Vec::new();
                 $( Flat::put(&$arg, &mut args); )*

@@ -6,7 +6,7 @@
 //! vertex as it draws it. The palette is a uniform array, at most
 //! [`crate::figures::gpu::MAX_GPU_JOINTS`] joints.
 
-use super::renderer::{DEPTH_FORMAT, SAMPLE_COUNT};
+use super::renderer::scene_pipeline;
 use super::Gpu;
 use crate::draw::{Frame, SkinMeshId};
 use crate::figures::gpu::{gpu_skinnable, MAX_GPU_JOINTS, ROWS_PER_JOINT};
@@ -125,44 +125,19 @@ impl SkinPass {
                 attributes: &influence_attributes,
             }),
         ];
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("skin"),
-            layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &buffers,
-            },
-            primitive: wgpu::PrimitiveState {
+        let pipeline = scene_pipeline(
+            device,
+            format,
+            "skin",
+            &pipeline_layout,
+            &module,
+            &buffers,
+            wgpu::PrimitiveState {
                 topology: wgpu::PrimitiveTopology::TriangleList,
                 cull_mode: Some(wgpu::Face::Back),
                 ..Default::default()
             },
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::LessEqual),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: wgpu::MultisampleState {
-                count: SAMPLE_COUNT,
-                ..Default::default()
-            },
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format,
-                    blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        );
         let capacity = STRIDE * 2;
         let uniforms = Self::uniform_buffer(device, capacity);
         let group = Self::group(device, &layout, &uniforms);

@@ -12,8 +12,6 @@ use std::rc::Rc;
 
 /// Per-quad uniforms sit at multiples of the dynamic-offset alignment (as the renderer's objects).
 const QUAD_STRIDE: u64 = 256;
-const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
-const SAMPLE_COUNT: u32 = 4;
 
 #[repr(C)]
 #[derive(Clone, Copy, Pod, Zeroable)]
@@ -217,47 +215,22 @@ impl Textured {
         let sprite_attributes = wgpu::vertex_attr_array![
             0 => Float32x3, 1 => Float32, 2 => Float32x4, 3 => Float32x4
         ];
+        // Sprites write depth too, as the point sprites do: that is why unsorted transparent
+        // sprites hide the ones behind them (lesson 11).
         let scene_pipeline =
             |label: &str,
              layout: &wgpu::PipelineLayout,
              module: &wgpu::ShaderModule,
              buffers: &[Option<wgpu::VertexBufferLayout>]| {
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some(label),
-                    layout: Some(layout),
-                    vertex: wgpu::VertexState {
-                        module,
-                        entry_point: Some("vs_main"),
-                        compilation_options: Default::default(),
-                        buffers,
-                    },
-                    primitive: wgpu::PrimitiveState::default(),
-                    depth_stencil: Some(wgpu::DepthStencilState {
-                        format: DEPTH_FORMAT,
-                        // Sprites write depth too, as the point sprites do: that is why unsorted
-                        // transparent sprites hide the ones behind them (lesson 11).
-                        depth_write_enabled: Some(true),
-                        depth_compare: Some(wgpu::CompareFunction::LessEqual),
-                        stencil: Default::default(),
-                        bias: Default::default(),
-                    }),
-                    multisample: wgpu::MultisampleState {
-                        count: SAMPLE_COUNT,
-                        ..Default::default()
-                    },
-                    fragment: Some(wgpu::FragmentState {
-                        module,
-                        entry_point: Some("fs_main"),
-                        compilation_options: Default::default(),
-                        targets: &[Some(wgpu::ColorTargetState {
-                            format,
-                            blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-                            write_mask: wgpu::ColorWrites::ALL,
-                        })],
-                    }),
-                    multiview_mask: None,
-                    cache: None,
-                })
+                super::renderer::scene_pipeline(
+                    device,
+                    format,
+                    label,
+                    layout,
+                    module,
+                    buffers,
+                    wgpu::PrimitiveState::default(),
+                )
             };
         let quad_pipeline = scene_pipeline(
             "quad",
