@@ -102,13 +102,13 @@ async function moveEveryControl(page, figure, where, limit = Infinity) {
     let after = before;
     for (let k = 0; k < tries && !changed; k++) {
       await act(k);
-      await frames(page, 2);
+      await frames(page, 3);
       after = await figureSignature(figure);
       changed = after !== before;
     }
     if (again && !changed) {
       await act(0);
-      await frames(page, 2);
+      await frames(page, 3);
       changed = (await figureSignature(figure)) !== after;
     }
     if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${Date.now() - started} ms`);
