@@ -14,7 +14,8 @@ use glam::Vec3;
 use inbetween::rigid::DualQuat;
 use inbetween::skinning::rigs::benchmark_input;
 use inbetween::skinning::{
-    dual_quat_palette, skin_dqs, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, SkinVertex,
+    dual_quat_palette, skin_dqs, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop,
+    skin_lbs_with_portable_kernel, LbsKernel, SkinVertex,
 };
 
 const VERTICES: usize = 100_000;
@@ -51,6 +52,23 @@ fn skinning(c: &mut Criterion) {
     group.bench_function("lbs_separate_arrays", |b| {
         b.iter(|| {
             skin_lbs(
+                black_box(&input.palette),
+                &input.skin,
+                &input.positions,
+                &input.normals,
+                &mut out_p,
+                &mut out_n,
+            )
+            .unwrap();
+            black_box(&out_p);
+        });
+    });
+    // `skin_lbs` runs the AVX2 + FMA kernel where the CPU has it; this is the portable SSE2 one
+    // (the same code the wasm build runs, through simd128), measured in the same run.
+    eprintln!("skin_lbs runs {:?}", LbsKernel::best());
+    group.bench_function("lbs_separate_arrays_portable_kernel", |b| {
+        b.iter(|| {
+            skin_lbs_with_portable_kernel(
                 black_box(&input.palette),
                 &input.skin,
                 &input.positions,

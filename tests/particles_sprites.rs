@@ -71,7 +71,7 @@ fn atlas_sizes_are_checked() {
     let perm = Permutation::perlin();
     assert!(fill_smoke_atlas(&perm, 2, &mut vec![0; 4 * 64]).is_err());
     assert!(fill_smoke_atlas(&perm, MAX_FRAME_SIDE + 1, &mut []).is_err());
-    assert!(fill_smoke_atlas(&perm, 8, &mut vec![0; 10])
+    assert!(fill_smoke_atlas(&perm, 8, &mut [0; 10])
         .unwrap_err()
         .contains("bytes"));
 }

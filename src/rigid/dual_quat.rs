@@ -17,6 +17,7 @@ use crate::rotation::{
 /// first, then `a`, like matrices. (Named `DualQuat` because glam's `DQuat` is the `f64`
 /// quaternion.)
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C)] // eight floats, real then dual: the AVX2 skinning kernel loads them so
 pub struct DualQuat {
     /// Real part `r`: the rotation.
     pub real: Quat,

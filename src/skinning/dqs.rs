@@ -121,6 +121,228 @@ pub fn skin_dqs(
     let (joints, weights) = (&skin.joints()[..n], &skin.weights()[..n]);
     let (positions, normals) = (&positions[..n], &normals[..n]);
     let (out_positions, out_normals) = (&mut out_positions[..n], &mut out_normals[..n]);
+    #[cfg(target_arch = "x86_64")]
+    if super::LbsKernel::best() == super::LbsKernel::X86Fma {
+        // SAFETY: the CPU has AVX2 (checked by `best`).
+        unsafe {
+            dqs_loop_avx2(
+                palette,
+                joints,
+                weights,
+                positions,
+                normals,
+                out_positions,
+                out_normals,
+            )
+        };
+        return Ok(());
+    }
+    dqs_loop(
+        palette,
+        joints,
+        weights,
+        positions,
+        normals,
+        out_positions,
+        out_normals,
+    );
+    Ok(())
+}
+
+/// [`skin_dqs`] on an x86-64 CPU with AVX2 and FMA: eight vertices at a time
+/// ([`x86::dqs_8`]), the last ones (at least one) by [`dqs_loop`].
+///
+/// # Safety
+/// The CPU must have AVX2 and FMA; slices of one length, joints checked against the palette.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn dqs_loop_avx2(
+    palette: &[DualQuat],
+    joints: &[[u16; 4]],
+    weights: &[[f32; 4]],
+    positions: &[Vec3],
+    normals: &[Vec3],
+    out_positions: &mut [Vec3],
+    out_normals: &mut [Vec3],
+) {
+    let n = joints.len();
+    let mut v = 0;
+    // `v + 8 < n`: the block's 16-byte loads and stores of vertex v + 7 reach into vertex v + 8.
+    while v + 8 < n {
+        x86::dqs_8(
+            palette,
+            &joints[v..v + 8],
+            &weights[v..v + 8],
+            positions.as_ptr().add(v) as *const f32,
+            normals.as_ptr().add(v) as *const f32,
+            out_positions.as_mut_ptr().add(v) as *mut f32,
+            out_normals.as_mut_ptr().add(v) as *mut f32,
+        );
+        v += 8;
+    }
+    dqs_loop(
+        palette,
+        &joints[v..],
+        &weights[v..],
+        &positions[v..],
+        &normals[v..],
+        &mut out_positions[v..],
+        &mut out_normals[v..],
+    )
+}
+
+/// The AVX2 + FMA kernel of [`skin_dqs`].
+#[cfg(target_arch = "x86_64")]
+mod x86 {
+    use crate::rigid::DualQuat;
+    use core::arch::x86_64::*;
+
+    /// Each 128-bit half of `(a, b, c, d)` transposed as a 4 × 4 matrix: output `c` holds
+    /// component `c` of a, b, c, d in the low half, and the same of their high halves.
+    #[inline(always)]
+    unsafe fn transpose4(a: __m256, b: __m256, c: __m256, d: __m256) -> [__m256; 4] {
+        let (t0, t1) = (_mm256_unpacklo_ps(a, b), _mm256_unpackhi_ps(a, b));
+        let (t2, t3) = (_mm256_unpacklo_ps(c, d), _mm256_unpackhi_ps(c, d));
+        [
+            _mm256_shuffle_ps::<0x44>(t0, t2),
+            _mm256_shuffle_ps::<0xEE>(t0, t2),
+            _mm256_shuffle_ps::<0x44>(t1, t3),
+            _mm256_shuffle_ps::<0xEE>(t1, t3),
+        ]
+    }
+
+    /// Four floats at `lo` in the low half, four at `hi` in the high half.
+    #[inline(always)]
+    unsafe fn pair(lo: *const f32, hi: *const f32) -> __m256 {
+        _mm256_loadu2_m128(hi, lo)
+    }
+
+    /// Eight rows of four floats, `row(i)` for vertex i, as four vectors of eight lanes (lane
+    /// i: vertex i).
+    #[inline(always)]
+    unsafe fn lanes4(row: impl Fn(usize) -> *const f32) -> [__m256; 4] {
+        transpose4(
+            pair(row(0), row(4)),
+            pair(row(1), row(5)),
+            pair(row(2), row(6)),
+            pair(row(3), row(7)),
+        )
+    }
+
+    /// Writes lane i of `(x, y, z)` to the three floats at `out + 3i`, for i = 0..8, with
+    /// 16-byte stores in increasing order (each writes the next vertex's x, rewritten next).
+    #[inline(always)]
+    unsafe fn store_lanes(out: *mut f32, x: __m256, y: __m256, z: __m256) {
+        let r = transpose4(x, y, z, _mm256_setzero_ps());
+        for (i, row) in r.iter().enumerate() {
+            _mm_storeu_ps(out.add(3 * i), _mm256_castps256_ps128(*row));
+        }
+        for (i, row) in r.iter().enumerate() {
+            _mm_storeu_ps(out.add(3 * (i + 4)), _mm256_extractf128_ps::<1>(*row));
+        }
+    }
+
+    /// Eight vertices of `skin_dqs`, one per lane: the four-lane path's formulas with fused
+    /// multiply-adds. Each joint slot's eight dual quaternions (eight floats each) are loaded
+    /// and transposed so that each register holds one component of all eight.
+    ///
+    /// # Safety
+    /// AVX2 and FMA; `joints` and `weights` have 8 entries whose joints are in the palette;
+    /// `positions` and `normals` can be read and `out_*` written for 25 floats (the 8 vertices'
+    /// 24 and the next vertex's x).
+    #[target_feature(enable = "avx2,fma")]
+    pub(super) unsafe fn dqs_8(
+        palette: &[DualQuat],
+        joints: &[[u16; 4]],
+        weights: &[[f32; 4]],
+        positions: *const f32,
+        normals: *const f32,
+        out_positions: *mut f32,
+        out_normals: *mut f32,
+    ) {
+        let pal = palette.as_ptr() as *const f32;
+        let slot = |k: usize| -> ([__m256; 4], [__m256; 4]) {
+            let q = |i: usize| _mm256_loadu_ps(pal.add(8 * joints[i][k] as usize));
+            let a = transpose4(q(0), q(1), q(2), q(3));
+            let b = transpose4(q(4), q(5), q(6), q(7));
+            (
+                std::array::from_fn(|c| _mm256_permute2f128_ps::<0x20>(a[c], b[c])),
+                std::array::from_fn(|c| _mm256_permute2f128_ps::<0x31>(a[c], b[c])),
+            )
+        };
+        let w = lanes4(|i| weights[i].as_ptr());
+        let fma = |a: __m256, b: __m256, c: __m256| _mm256_fmadd_ps(a, b, c);
+        let mul = |a: __m256, b: __m256| _mm256_mul_ps(a, b);
+        let (r0, d0) = slot(0);
+        let mut real = r0.map(|c| mul(c, w[0]));
+        let mut dual = d0.map(|c| mul(c, w[0]));
+        let sign_bit = _mm256_set1_ps(-0.0);
+        for (k, &wk) in w.iter().enumerate().skip(1) {
+            let (r, d) = slot(k);
+            let dot = fma(
+                r0[0],
+                r[0],
+                fma(r0[1], r[1], fma(r0[2], r[2], mul(r0[3], r[3]))),
+            );
+            // copysign(w, dot + 0): +w for a dot of exactly 0, as the other paths.
+            let sign = _mm256_and_ps(_mm256_add_ps(dot, _mm256_setzero_ps()), sign_bit);
+            let s = _mm256_or_ps(_mm256_andnot_ps(sign_bit, wk), sign);
+            for c in 0..4 {
+                real[c] = fma(r[c], s, real[c]);
+                dual[c] = fma(d[c], s, dual[c]);
+            }
+        }
+        let [rx, ry, rz, rw] = real;
+        let [dx, dy, dz, dw] = dual;
+        let len2 = fma(rx, rx, fma(ry, ry, fma(rz, rz, mul(rw, rw))));
+        let k = _mm256_div_ps(
+            _mm256_set1_ps(2.0),
+            _mm256_max_ps(len2, _mm256_set1_ps(1e-24)),
+        );
+        // a × b, with a = r⃗.
+        let cross = |bx: __m256, by: __m256, bz: __m256| {
+            (
+                _mm256_fmsub_ps(ry, bz, mul(rz, by)),
+                _mm256_fmsub_ps(rz, bx, mul(rx, bz)),
+                _mm256_fmsub_ps(rx, by, mul(ry, bx)),
+            )
+        };
+        // t = k (w d⃗ − d_w r⃗ + r⃗ × d⃗)
+        let (cx, cy, cz) = cross(dx, dy, dz);
+        let t = |d: __m256, r: __m256, c: __m256| mul(k, fma(rw, d, _mm256_fnmadd_ps(dw, r, c)));
+        let (tx, ty, tz) = (t(dx, rx, cx), t(dy, ry, cy), t(dz, rz, cz));
+        // R v = v + k r⃗ × (r⃗ × v + w v)
+        let rotate = |vx: __m256, vy: __m256, vz: __m256| {
+            let (ax, ay, az) = cross(vx, vy, vz);
+            let (bx, by, bz) = cross(fma(rw, vx, ax), fma(rw, vy, ay), fma(rw, vz, az));
+            (fma(k, bx, vx), fma(k, by, vy), fma(k, bz, vz))
+        };
+        let [px, py, pz, _] = lanes4(|i| positions.add(3 * i));
+        let (px, py, pz) = rotate(px, py, pz);
+        store_lanes(
+            out_positions,
+            _mm256_add_ps(px, tx),
+            _mm256_add_ps(py, ty),
+            _mm256_add_ps(pz, tz),
+        );
+        let [nx, ny, nz, _] = lanes4(|i| normals.add(3 * i));
+        let (nx, ny, nz) = rotate(nx, ny, nz);
+        store_lanes(out_normals, nx, ny, nz);
+    }
+}
+
+/// The DQS loop over slices of one length, joints checked against the palette.
+#[inline(always)]
+fn dqs_loop(
+    palette: &[DualQuat],
+    joints: &[[u16; 4]],
+    weights: &[[f32; 4]],
+    positions: &[Vec3],
+    normals: &[Vec3],
+    out_positions: &mut [Vec3],
+    out_normals: &mut [Vec3],
+) {
+    let n = joints.len();
     // Four vertices at a time, one per SIMD lane; the last `n % 4` one by one.
     let lanes = n - n % 4;
     for v in (0..lanes).step_by(4) {
@@ -171,7 +393,6 @@ pub fn skin_dqs(
         *op = p2.into();
         *on = n2.into();
     }
-    Ok(())
 }
 
 /// Four vertices of [`skin_dqs`] at once, structure of arrays: lane `l` of every `Vec4` is
@@ -295,7 +516,20 @@ mod tests {
             &mut on,
         )
         .unwrap();
+        // The portable loop too, whatever kernel `skin_dqs` picked on this CPU.
+        let (mut pp, mut pn) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+        dqs_loop(
+            &dq,
+            input.skin.joints(),
+            input.skin.weights(),
+            &input.positions,
+            &input.normals,
+            &mut pp,
+            &mut pn,
+        );
         for v in 0..n {
+            assert!((op[v] - pp[v]).length() < 1e-4 * (1.0 + pp[v].length()));
+            assert!((on[v] - pn[v]).length() < 1e-4);
             let j = input.skin.joints()[v];
             let w = input.skin.weights()[v];
             let qs = j.map(|j| dq[j as usize]);

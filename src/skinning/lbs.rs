@@ -93,10 +93,108 @@ pub fn skin_lbs(
         out_positions.len(),
         out_normals.len(),
     )?;
-    // An index loop over slices cut to one length (the checks above made them equal): the
-    // compiler drops the bounds checks, and measured faster than a six-way zip, most of all in wasm.
     let n = skin.len();
     let (joints, weights) = (&skin.joints()[..n], &skin.weights()[..n]);
+    #[cfg(target_arch = "x86_64")]
+    if LbsKernel::best() == LbsKernel::X86Fma {
+        // SAFETY: the CPU has AVX2 and FMA (checked by `best`); every slice has `n` entries and
+        // every joint index is below `palette.len()` (checked above).
+        unsafe {
+            x86::skin_lbs_fma(
+                palette,
+                joints,
+                weights,
+                positions,
+                normals,
+                out_positions,
+                out_normals,
+            )
+        };
+        return Ok(());
+    }
+    skin_lbs_portable(
+        palette,
+        joints,
+        weights,
+        &positions[..n],
+        &normals[..n],
+        &mut out_positions[..n],
+        &mut out_normals[..n],
+    );
+    Ok(())
+}
+
+/// Which implementation [`skin_lbs`] runs: the portable one (SSE2 on x86-64, simd128 in wasm,
+/// through glam), or on an x86-64 CPU with AVX2 and FMA (detected at run time, as skinning
+/// libraries dispatch) the same formula with fused multiply-adds and 256-bit loads of two matrix
+/// columns at once. The two agree to rounding (a fused multiply-add rounds once).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LbsKernel {
+    Portable,
+    X86Fma,
+}
+
+impl LbsKernel {
+    /// The fastest kernel this CPU runs.
+    pub fn best() -> Self {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
+        {
+            return LbsKernel::X86Fma;
+        }
+        LbsKernel::Portable
+    }
+}
+
+/// [`skin_lbs`] with the portable kernel whatever the CPU (what the wasm build always runs): the
+/// benchmark's and the tests' point of comparison for [`LbsKernel::X86Fma`].
+///
+/// # Errors
+/// As [`skin_lbs`].
+pub fn skin_lbs_with_portable_kernel(
+    palette: &[Affine3A],
+    skin: &SkinWeights,
+    positions: &[Vec3],
+    normals: &[Vec3],
+    out_positions: &mut [Vec3],
+    out_normals: &mut [Vec3],
+) -> Result<(), SkinningError> {
+    check_skin(
+        palette.len(),
+        skin,
+        positions.len(),
+        normals.len(),
+        out_positions.len(),
+        out_normals.len(),
+    )?;
+    let n = skin.len();
+    skin_lbs_portable(
+        palette,
+        &skin.joints()[..n],
+        &skin.weights()[..n],
+        &positions[..n],
+        &normals[..n],
+        &mut out_positions[..n],
+        &mut out_normals[..n],
+    );
+    Ok(())
+}
+
+/// The portable LBS loop over validated slices of one length.
+#[inline(always)]
+fn skin_lbs_portable(
+    palette: &[Affine3A],
+    joints: &[[u16; 4]],
+    weights: &[[f32; 4]],
+    positions: &[Vec3],
+    normals: &[Vec3],
+    out_positions: &mut [Vec3],
+    out_normals: &mut [Vec3],
+) {
+    // An index loop over slices cut to one length (the callers made them equal): the compiler
+    // drops the bounds checks, and measured faster than a six-way zip, most of all in wasm.
+    let n = joints.len();
+    let (joints, weights) = (&joints[..n], &weights[..n]);
     let (positions, normals) = (&positions[..n], &normals[..n]);
     let (out_positions, out_normals) = (&mut out_positions[..n], &mut out_normals[..n]);
     for v in 0..n {
@@ -106,7 +204,112 @@ pub fn skin_lbs(
         *op = k.transform_point3(*p);
         *on = k.transform_vector3(*n);
     }
-    Ok(())
+}
+
+/// The AVX2 + FMA kernel of [`skin_lbs`].
+#[cfg(target_arch = "x86_64")]
+mod x86 {
+    use core::arch::x86_64::*;
+    use glam::{Affine3A, Vec3};
+
+    /// Per vertex: the four matrices are blended two columns per 256-bit register (columns
+    /// x, y in one, z and the translation in the other: an `Affine3A` is four 16-byte columns),
+    /// with one multiply and three fused multiply-adds each; then
+    /// `p' = c0 px + c1 py + c2 pz + c3` and `n' = c0 nx + c1 ny + c2 nz` in 128-bit
+    /// registers with the coordinates broadcast from memory. Results are stored 16 bytes at a
+    /// time, which writes the next vertex's x too (rewritten at the next step); the last vertex
+    /// is stored 12 bytes exactly.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and FMA; `joints`, `weights`, `positions`, `normals` and both
+    /// outputs must have the same length, and every joint index must be below `palette.len()`.
+    #[target_feature(enable = "avx2,fma")]
+    pub(super) unsafe fn skin_lbs_fma(
+        palette: &[Affine3A],
+        joints: &[[u16; 4]],
+        weights: &[[f32; 4]],
+        positions: &[Vec3],
+        normals: &[Vec3],
+        out_positions: &mut [Vec3],
+        out_normals: &mut [Vec3],
+    ) {
+        let n = joints.len();
+        debug_assert!(
+            weights.len() == n
+                && positions.len() == n
+                && normals.len() == n
+                && out_positions.len() == n
+                && out_normals.len() == n
+        );
+        let pal = palette.as_ptr() as *const f32;
+        let (op, on) = (
+            out_positions.as_mut_ptr() as *mut f32,
+            out_normals.as_mut_ptr() as *mut f32,
+        );
+        // One vertex: the blended columns applied to its position and normal, given a way to
+        // get their coordinates broadcast to four lanes.
+        let skin = |v: usize, coords: &dyn Fn(*const f32) -> [__m128; 3]| {
+            // The four joint indices in one load.
+            let jj = (joints.as_ptr().add(v) as *const u64).read_unaligned();
+            let m = |k: u32| pal.add(16 * ((jj >> (16 * k)) & 0xffff) as usize);
+            let (m0, m1, m2, m3) = (m(0), m(1), m(2), m(3));
+            // The four weights in one load, each broadcast by an in-lane permute.
+            let w4 = _mm256_broadcast_ps(&*(weights.as_ptr().add(v) as *const __m128));
+            let (w0, w1, w2, w3) = (
+                _mm256_permute_ps::<0x00>(w4),
+                _mm256_permute_ps::<0x55>(w4),
+                _mm256_permute_ps::<0xAA>(w4),
+                _mm256_permute_ps::<0xFF>(w4),
+            );
+            let blend = |o: usize| {
+                let c = _mm256_mul_ps(w0, _mm256_loadu_ps(m0.add(o)));
+                let c = _mm256_fmadd_ps(w1, _mm256_loadu_ps(m1.add(o)), c);
+                let c = _mm256_fmadd_ps(w2, _mm256_loadu_ps(m2.add(o)), c);
+                _mm256_fmadd_ps(w3, _mm256_loadu_ps(m3.add(o)), c)
+            };
+            let (c01, c23) = (blend(0), blend(8));
+            let (c0, c1) = (_mm256_castps256_ps128(c01), _mm256_extractf128_ps::<1>(c01));
+            let (c2, c3) = (_mm256_castps256_ps128(c23), _mm256_extractf128_ps::<1>(c23));
+            let [px, py, pz] = coords(positions.as_ptr().add(v) as *const f32);
+            let [nx, ny, nz] = coords(normals.as_ptr().add(v) as *const f32);
+            (
+                _mm_fmadd_ps(c0, px, _mm_fmadd_ps(c1, py, _mm_fmadd_ps(c2, pz, c3))),
+                _mm_fmadd_ps(c0, nx, _mm_fmadd_ps(c1, ny, _mm_mul_ps(c2, nz))),
+            )
+        };
+        // Every vertex but the last: one 16-byte load for the three coordinates (the fourth
+        // float is the next vertex's x) and 16-byte stores.
+        let wide = |x: *const f32| {
+            let l = _mm_loadu_ps(x);
+            [
+                _mm_permute_ps::<0x00>(l),
+                _mm_permute_ps::<0x55>(l),
+                _mm_permute_ps::<0xAA>(l),
+            ]
+        };
+        for v in 0..n.saturating_sub(1) {
+            let (pv, nv) = skin(v, &wide);
+            _mm_storeu_ps(op.add(3 * v), pv);
+            _mm_storeu_ps(on.add(3 * v), nv);
+        }
+        // The last vertex: exact-size loads and stores.
+        if n > 0 {
+            let exact = |x: *const f32| {
+                [
+                    _mm_broadcast_ss(&*x),
+                    _mm_broadcast_ss(&*x.add(1)),
+                    _mm_broadcast_ss(&*x.add(2)),
+                ]
+            };
+            let (pv, nv) = skin(n - 1, &exact);
+            let store3 = |dst: *mut f32, x: __m128| {
+                _mm_storel_epi64(dst as *mut __m128i, _mm_castps_si128(x));
+                _mm_store_ss(dst.add(2), _mm_movehl_ps(x, x));
+            };
+            store3(op.add(3 * (n - 1)), pv);
+            store3(on.add(3 * (n - 1)), nv);
+        }
+    }
 }
 
 #[inline(always)]

@@ -42,7 +42,8 @@ mod weights;
 
 pub use dqs::{blend_dual_quats, dqs_vertex, dual_quat_palette, skin_dqs};
 pub use lbs::{
-    lbs_vertex, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, skinning_palette, SkinVertex,
+    lbs_vertex, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, skin_lbs_with_portable_kernel,
+    skinning_palette, LbsKernel, SkinVertex,
 };
 pub use rigs::{mesh_volume, ring_area};
 pub use weights::{auto_weights, segment_distance, SkinWeights};
