@@ -72,6 +72,16 @@ impl Grid {
         self.cell_start.resize(cells + 1, 0);
     }
 
+    /// Sets the grid over the box `[min, max]` as one single cell: every boid's run is the
+    /// whole flock, so a search through the grid tests every pair (the naive O(N²) search,
+    /// with the same loop as the grid's).
+    pub fn configure_single_cell(&mut self, min: Vec3, max: Vec3) {
+        self.origin = min;
+        self.cell_size = (max - min).max_element().max(1e-3);
+        self.dims = [1, 1, 1];
+        self.cell_start.resize(2, 0);
+    }
+
     pub fn cell_count(&self) -> usize {
         self.cell_start.len().saturating_sub(1)
     }
@@ -190,6 +200,10 @@ impl Grid {
     /// Sorted positions and velocities by coordinate (see `soa`).
     pub(super) fn soa(&self) -> &[Vec<f32>; 6] {
         &self.soa
+    }
+
+    pub(super) fn soa_mut(&mut self) -> &mut [Vec<f32>; 6] {
+        &mut self.soa
     }
 
     /// Boid indices in cell order (cell `c`'s boids, in increasing index, then cell `c + 1`'s).

@@ -308,22 +308,18 @@ impl Flock {
     pub fn step(&mut self, params: &BoidParams, search: Search, dt: f32) {
         let n = self.len();
         let radius = params.search_radius();
-        if search == Search::Grid {
-            let margin = Vec3::splat(radius);
-            self.grid
-                .configure(-params.bounds - margin, params.bounds + margin, radius);
-            self.grid
-                .rebuild_with_velocities(&self.positions, &self.velocities);
-        }
-        let (leader, predator) = self.roles(params);
+        let margin = Vec3::splat(radius);
+        let (min, max) = (-params.bounds - margin, params.bounds + margin);
+        // The naive search is the grid's loop over one single cell: every boid tests every
+        // other, with the same SIMD kernel, so naive against grid measures the search alone.
         match search {
-            Search::Grid => self.steer_all_with_grid(params, leader, predator),
-            Search::Naive => {
-                for i in 0..n {
-                    self.forces[i] = self.steering(params, search, i, leader, predator);
-                }
-            }
+            Search::Grid => self.grid.configure(min, max, radius),
+            Search::Naive => self.grid.configure_single_cell(min, max),
         }
+        self.grid
+            .rebuild_with_velocities(&self.positions, &self.velocities);
+        let (leader, predator) = self.roles(params);
+        self.steer_all_with_grid(params, leader, predator);
         self.time_sec += dt;
         for i in 0..n {
             let (p, v) = (&mut self.positions[i], &mut self.velocities[i]);
@@ -465,8 +461,13 @@ impl Flock {
     ) {
         let mut forces = std::mem::take(&mut self.forces);
         let base_rules = NeighbourRules::new(params, Vec3::ZERO);
+        let pred_slot =
+            predator.and_then(|k| self.grid.sorted().iter().position(|&i| i as usize == k));
+        // The SIMD path skips the predator by a NaN x (restored below).
+        if let Some(k) = pred_slot {
+            self.grid.soa_mut()[0][k] = f32::NAN;
+        }
         let sorted = self.grid.sorted();
-        let pred_slot = predator.and_then(|k| sorted.iter().position(|&i| i as usize == k));
         let [dx, dy, dz] = self.grid.dims.map(|d| d as usize);
         // Cell by cell, so each boid's cell coordinates come without a division or a lookup.
         for ck in 0..dz {
@@ -483,7 +484,7 @@ impl Flock {
                             continue;
                         }
                         let acc = if params.law == ForceLaw::None {
-                            self.steer_simd(params, &base_rules, s, cell, pred_slot)
+                            self.steer_simd(params, &base_rules, s, cell)
                         } else {
                             self.steer_scalar(params, &base_rules, s, cell, pred_slot)
                         };
@@ -495,6 +496,9 @@ impl Flock {
                     }
                 }
             }
+        }
+        if let Some(k) = pred_slot {
+            self.grid.soa_mut()[0][k] = self.grid.sorted_positions()[k].x;
         }
         self.forces = forces;
     }
@@ -542,7 +546,6 @@ impl Flock {
         base_rules: &NeighbourRules,
         s: usize,
         cell: (usize, usize, usize),
-        pred_slot: Option<usize>,
     ) -> Neighbours {
         use glam::Vec4;
         let grid = &self.grid;
@@ -568,9 +571,11 @@ impl Flock {
         let (b_non_negative, bb) = (b >= 0.0, Vec4::splat(b * b));
         let zero = Vec4::ZERO;
         let lanes = Vec4::new(0.0, 1.0, 2.0, 3.0);
-        // Slot numbers as f32 are exact (below MAX_BOIDS < 2²⁴); −1 is no slot.
-        let own = Vec4::splat(s as f32);
-        let pred = Vec4::splat(pred_slot.map_or(-1.0, |k| k as f32));
+        // Slot numbers as f32 are exact (below MAX_BOIDS < 2²⁴). The boid itself is not
+        // masked out: it is always in its own run, at d2 = 0, so it adds exactly p and v to
+        // the cohesion and alignment sums (and nothing to separation); that is taken off after
+        // the loop. The predator's x is NaN in these arrays for the step (see
+        // `steer_all_with_grid`), which fails every comparison.
         let load = |a: &[f32], t: usize| Vec4::from_slice(&a[t..t + 4]);
         // Sixteen SIMD registers: the sums of positions and velocities stay in them; the counts
         // go through lane bitmasks, and separation (rare: its radius is small) is summed across
@@ -584,7 +589,7 @@ impl Flock {
             let mut t = run.start;
             while t < run.end {
                 let slot = Vec4::splat(t as f32) + lanes;
-                let valid = slot.cmplt(end) & slot.cmpne(own) & slot.cmpne(pred);
+                let valid = slot.cmplt(end);
                 let (qx, qy, qz) = (load(xs, t), load(ys, t), load(zs, t));
                 // d = p − q, d2 = |d|² (the order of glam's length_squared).
                 let (dx, dy, dz) = (px - qx, py - qy, pz - qz);
@@ -623,11 +628,12 @@ impl Flock {
                 t += 4;
             }
         });
+        // Take the boid itself off (see above).
         Neighbours {
-            n_c: nc,
-            n_a: na,
-            centre: Vec3::new(cx.element_sum(), cy.element_sum(), cz.element_sum()),
-            mean_v: Vec3::new(mx.element_sum(), my.element_sum(), mz.element_sum()),
+            n_c: nc.saturating_sub(1),
+            n_a: na.saturating_sub(1),
+            centre: Vec3::new(cx.element_sum(), cy.element_sum(), cz.element_sum()) - p,
+            mean_v: Vec3::new(mx.element_sum(), my.element_sum(), mz.element_sum()) - v,
             sep,
             law: Vec3::ZERO,
         }
