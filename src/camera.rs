@@ -6,7 +6,7 @@
 //! Dragging changes yaw and pitch, the wheel scales the distance, panning moves the target in the
 //! view plane. Projection is perspective with depth in `[0, 1]` (wgpu's convention).
 
-use glam::{Mat4, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 
 /// A camera orbiting `target`. Angles in radians, distances in metres.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -86,5 +86,64 @@ impl OrbitCamera {
         let right = view.row(0).truncate();
         let up = view.row(1).truncate();
         self.target += (right * -dx + up * dy) * self.distance;
+    }
+}
+
+/// Where `world` lands on a canvas of `size` CSS pixels seen through `view_proj`, in pixels from
+/// the top-left; `None` behind the camera. (Picking in the figures: what is under the mouse.)
+pub fn project_to_canvas(view_proj: Mat4, size: Vec2, world: Vec3) -> Option<Vec2> {
+    let clip = view_proj * world.extend(1.0);
+    if clip.w <= 1e-6 {
+        return None;
+    }
+    let ndc = clip.truncate() / clip.w;
+    Some(Vec2::new(
+        (ndc.x * 0.5 + 0.5) * size.x,
+        (0.5 - ndc.y * 0.5) * size.y,
+    ))
+}
+
+/// The point under the pixel `p` on the plane through `anchor` that faces the camera (normal
+/// along the line of sight through `anchor`): where a dragged point goes. `None` if the ray
+/// misses the plane.
+pub fn point_on_view_plane(view_proj: Mat4, size: Vec2, anchor: Vec3, p: Vec2) -> Option<Vec3> {
+    let inverse = view_proj.inverse();
+    let unproject = |px: Vec2, z: f32| {
+        let ndc = Vec3::new(2.0 * px.x / size.x - 1.0, 1.0 - 2.0 * px.y / size.y, z);
+        inverse.project_point3(ndc)
+    };
+    let near = unproject(p, 0.0);
+    let dir = unproject(p, 1.0) - near;
+    let anchor_px = project_to_canvas(view_proj, size, anchor)?;
+    let normal = (unproject(anchor_px, 1.0) - unproject(anchor_px, 0.0)).try_normalize()?;
+    let denominator = dir.dot(normal);
+    if denominator.abs() < 1e-9 {
+        return None;
+    }
+    let s = (anchor - near).dot(normal) / denominator;
+    let hit = near + dir * s;
+    hit.is_finite().then_some(hit)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A point projected to its pixel and taken back onto the view plane through itself is the
+    /// same point; the camera's target lands in the middle of the canvas; behind the eye, no pixel.
+    #[test]
+    fn canvas_projection_round_trips() {
+        let camera = OrbitCamera::default();
+        let size = Vec2::new(640.0, 480.0);
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let middle = project_to_canvas(view_proj, size, camera.target).unwrap();
+        assert!((middle - 0.5 * size).length() < 1e-3, "{middle}");
+        for p in [Vec3::new(0.3, -0.2, 0.1), Vec3::new(-1.0, 0.5, 0.7)] {
+            let px = project_to_canvas(view_proj, size, p).unwrap();
+            let back = point_on_view_plane(view_proj, size, p, px).unwrap();
+            assert!((back - p).length() < 1e-3, "{p} -> {px} -> {back}");
+        }
+        let behind = camera.eye() + (camera.eye() - camera.target);
+        assert!(project_to_canvas(view_proj, size, behind).is_none());
     }
 }

@@ -17,7 +17,7 @@ use super::{
     compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
     DEFAULT_RUNNER,
 };
-use crate::camera::OrbitCamera;
+use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
 use crate::cloth::{Cloth, ClothParams, ClothSpec, Colliders, Method, SpringKind};
 use crate::exercises::run;
 use crate::mesh::MeshData;
@@ -578,7 +578,7 @@ impl ClothFigure {
                 if sim.cloth.is_pinned(i) {
                     continue;
                 }
-                if let Some(s) = project(view_proj, size, *q) {
+                if let Some(s) = project_to_canvas(view_proj, size, *q) {
                     let d = s.distance(p);
                     if d < best_d {
                         best_d = d;
@@ -609,7 +609,7 @@ impl ClothFigure {
         else {
             return Ok(());
         };
-        if let Some(world) = on_view_plane(view_proj, size, anchor, p) {
+        if let Some(world) = point_on_view_plane(view_proj, size, anchor, p) {
             let world = world.clamp(Vec3::new(-4.0, 0.0, -4.0), Vec3::new(4.0, 4.0, 4.0));
             self.dragging = Some((k, i, world));
             self.record(Some((k, i, world)));
@@ -801,39 +801,6 @@ fn kind_index(kind: &str) -> Result<usize, String> {
         .iter()
         .position(|k| k.name() == kind)
         .ok_or_else(|| format!("no spring kind named {kind:?} (structural, shear, bending)"))
-}
-
-/// Where `world` lands on the canvas, CSS pixels from the top-left; `None` behind the camera.
-fn project(view_proj: Mat4, size: Vec2, world: Vec3) -> Option<Vec2> {
-    let clip = view_proj * world.extend(1.0);
-    if clip.w <= 1e-6 {
-        return None;
-    }
-    let ndc = clip.truncate() / clip.w;
-    Some(Vec2::new(
-        (ndc.x * 0.5 + 0.5) * size.x,
-        (0.5 - ndc.y * 0.5) * size.y,
-    ))
-}
-
-/// The point under the pixel `p` on the plane through `anchor` facing the camera.
-fn on_view_plane(view_proj: Mat4, size: Vec2, anchor: Vec3, p: Vec2) -> Option<Vec3> {
-    let inverse = view_proj.inverse();
-    let unproject = |px: Vec2, z: f32| {
-        let ndc = Vec3::new(2.0 * px.x / size.x - 1.0, 1.0 - 2.0 * px.y / size.y, z);
-        inverse.project_point3(ndc)
-    };
-    let near = unproject(p, 0.0);
-    let dir = unproject(p, 1.0) - near;
-    let anchor_px = project(view_proj, size, anchor)?;
-    let normal = (unproject(anchor_px, 1.0) - unproject(anchor_px, 0.0)).try_normalize()?;
-    let denominator = dir.dot(normal);
-    if denominator.abs() < 1e-9 {
-        return None;
-    }
-    let s = (anchor - near).dot(normal) / denominator;
-    let hit = near + dir * s;
-    hit.is_finite().then_some(hit)
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -12,7 +12,7 @@ use super::{
     compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
     DEFAULT_RUNNER,
 };
-use crate::camera::OrbitCamera;
+use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
 use crate::exercises::run;
 use crate::ik::{aim, ccd, ccd_limited, fabrik, fabrik_limited, two_joint, IkResult, JointLimit};
 use glam::{Mat4, Quat, Vec2, Vec3};
@@ -556,7 +556,8 @@ impl IkFigure {
         };
         Ok(ROOTS_X.iter().any(|&x| {
             let world = self.target + Vec3::new(x, 0.0, 0.0);
-            project(view_proj, size, world).is_some_and(|s| s.distance(p) <= GRAB_RADIUS_PX)
+            project_to_canvas(view_proj, size, world)
+                .is_some_and(|s| s.distance(p) <= GRAB_RADIUS_PX)
         }))
     }
 
@@ -570,7 +571,7 @@ impl IkFigure {
         };
         let Some(&root_x) = ROOTS_X.iter().min_by(|&&a, &&b| {
             let d = |x: f32| {
-                project(view_proj, size, self.target + Vec3::new(x, 0.0, 0.0))
+                project_to_canvas(view_proj, size, self.target + Vec3::new(x, 0.0, 0.0))
                     .map_or(f32::INFINITY, |s| s.distance(p))
             };
             d(a).total_cmp(&d(b))
@@ -578,7 +579,7 @@ impl IkFigure {
             return Ok(());
         };
         let root = Vec3::new(root_x, 0.0, 0.0);
-        if let Some(world) = on_view_plane(view_proj, size, self.target + root, p) {
+        if let Some(world) = point_on_view_plane(view_proj, size, self.target + root, p) {
             let t = (world - root).clamp(Vec3::splat(-1.5), Vec3::splat(1.5));
             self.set_target(t)?;
         }
@@ -635,40 +636,6 @@ impl IkFigure {
         }
         Ok(self.notes.join(" "))
     }
-}
-
-/// Where `world` lands on the canvas, CSS pixels from the top-left; `None` behind the camera.
-fn project(view_proj: Mat4, size: Vec2, world: Vec3) -> Option<Vec2> {
-    let clip = view_proj * world.extend(1.0);
-    if clip.w <= 1e-6 {
-        return None;
-    }
-    let ndc = clip.truncate() / clip.w;
-    Some(Vec2::new(
-        (ndc.x * 0.5 + 0.5) * size.x,
-        (0.5 - ndc.y * 0.5) * size.y,
-    ))
-}
-
-/// The point under the pixel `p` on the plane through `anchor` that faces the camera (normal
-/// along the line of sight through `anchor`); `None` if the ray misses it.
-fn on_view_plane(view_proj: Mat4, size: Vec2, anchor: Vec3, p: Vec2) -> Option<Vec3> {
-    let inverse = view_proj.inverse();
-    let unproject = |px: Vec2, z: f32| {
-        let ndc = Vec3::new(2.0 * px.x / size.x - 1.0, 1.0 - 2.0 * px.y / size.y, z);
-        inverse.project_point3(ndc)
-    };
-    let near = unproject(p, 0.0);
-    let dir = unproject(p, 1.0) - near;
-    let anchor_px = project(view_proj, size, anchor)?;
-    let normal = (unproject(anchor_px, 1.0) - unproject(anchor_px, 0.0)).try_normalize()?;
-    let denominator = dir.dot(normal);
-    if denominator.abs() < 1e-9 {
-        return None;
-    }
-    let s = (anchor - near).dot(normal) / denominator;
-    let hit = near + dir * s;
-    hit.is_finite().then_some(hit)
 }
 
 /// A chain: a sphere per joint, a bar per segment.
