@@ -15,7 +15,7 @@ use inbetween::rigid::DualQuat;
 use inbetween::skinning::rigs::benchmark_input;
 use inbetween::skinning::{
     dual_quat_palette, skin_dqs, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop,
-    skin_lbs_with_portable_kernel, LbsKernel, SkinVertex,
+    skin_lbs_with, LbsKernel, SkinVertex,
 };
 
 const VERTICES: usize = 100_000;
@@ -68,7 +68,8 @@ fn skinning(c: &mut Criterion) {
     eprintln!("skin_lbs runs {:?}", LbsKernel::best());
     group.bench_function("lbs_separate_arrays_portable_kernel", |b| {
         b.iter(|| {
-            skin_lbs_with_portable_kernel(
+            skin_lbs_with(
+                LbsKernel::Portable,
                 black_box(&input.palette),
                 &input.skin,
                 &input.positions,

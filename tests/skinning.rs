@@ -10,8 +10,8 @@ use inbetween::rigid::DualQuat;
 use inbetween::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig};
 use inbetween::skinning::{
     auto_weights, blend_dual_quats, dqs_vertex, dual_quat_palette, lbs_vertex, mesh_volume,
-    ring_area, skin_dqs, skin_lbs, skin_lbs_interleaved, skin_lbs_with_portable_kernel,
-    skinning_palette, LbsKernel, SkinVertex, SkinWeights, SkinningError,
+    ring_area, skin_dqs, skin_lbs, skin_lbs_interleaved, skin_lbs_with, skinning_palette,
+    LbsKernel, SkinVertex, SkinWeights, SkinningError,
 };
 use proptest::prelude::*;
 use std::f32::consts::PI;
@@ -325,7 +325,7 @@ proptest! {
         skin_lbs_interleaved(&palette, &verts, &mut p, &mut nn).unwrap();
         // Bit for bit against the same (portable) kernel; to rounding against the CPU's best.
         let (mut q, mut qn) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
-        skin_lbs_with_portable_kernel(&palette, &skin, &rig.mesh.positions, &rig.mesh.normals, &mut q, &mut qn).unwrap();
+        skin_lbs_with(LbsKernel::Portable, &palette, &skin, &rig.mesh.positions, &rig.mesh.normals, &mut q, &mut qn).unwrap();
         prop_assert_eq!(&p, &q);
         prop_assert_eq!(&nn, &qn);
         for v in 0..n {
@@ -357,7 +357,8 @@ fn the_best_lbs_kernel_matches_the_portable_one() {
         &mut an,
     )
     .unwrap();
-    skin_lbs_with_portable_kernel(
+    skin_lbs_with(
+        LbsKernel::Portable,
         &input.palette,
         &input.skin,
         &input.positions,

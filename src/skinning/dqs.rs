@@ -96,25 +96,14 @@ pub fn skin_dqs(
     out_positions: &mut [Vec3],
     out_normals: &mut [Vec3],
 ) -> Result<(), SkinningError> {
-    let n = skin.len();
-    check_len("positions", n, positions.len())?;
-    check_len("normals", n, normals.len())?;
-    check_len("output positions", n, out_positions.len())?;
-    check_len("output normals", n, out_normals.len())?;
-    // O(1) per frame: the scan that names the vertex runs only when something is wrong.
-    if skin.joint_bound() > palette.len() {
-        if let Some((vertex, j)) = skin.joints().iter().enumerate().find_map(|(v, j)| {
-            j.iter()
-                .find(|&&j| j as usize >= palette.len())
-                .map(|&j| (v, j))
-        }) {
-            return Err(SkinningError::JointOutOfRange {
-                vertex,
-                joint: j as usize,
-                joints: palette.len(),
-            });
-        }
-    }
+    super::lbs::check_skin(
+        palette.len(),
+        skin,
+        positions.len(),
+        normals.len(),
+        out_positions.len(),
+        out_normals.len(),
+    )?;
     // An index loop over slices cut to one length (the checks above made them equal): the
     // compiler drops the bounds checks, and measured faster than a six-way zip, most of all in wasm.
     let n = skin.len();

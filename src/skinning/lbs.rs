@@ -34,7 +34,7 @@ pub fn skinning_palette(
     Ok(())
 }
 
-fn check_skin(
+pub(super) fn check_skin(
     palette_len: usize,
     skin: &SkinWeights,
     positions: usize,
@@ -85,49 +85,23 @@ pub fn skin_lbs(
     out_positions: &mut [Vec3],
     out_normals: &mut [Vec3],
 ) -> Result<(), SkinningError> {
-    check_skin(
-        palette.len(),
-        skin,
-        positions.len(),
-        normals.len(),
-        out_positions.len(),
-        out_normals.len(),
-    )?;
-    let n = skin.len();
-    let (joints, weights) = (&skin.joints()[..n], &skin.weights()[..n]);
-    #[cfg(target_arch = "x86_64")]
-    if LbsKernel::best() == LbsKernel::X86Fma {
-        // SAFETY: the CPU has AVX2 and FMA (checked by `best`); every slice has `n` entries and
-        // every joint index is below `palette.len()` (checked above).
-        unsafe {
-            x86::skin_lbs_fma(
-                palette,
-                joints,
-                weights,
-                positions,
-                normals,
-                out_positions,
-                out_normals,
-            )
-        };
-        return Ok(());
-    }
-    skin_lbs_portable(
+    let kernel = LbsKernel::best();
+    skin_lbs_with(
+        kernel,
         palette,
-        joints,
-        weights,
-        &positions[..n],
-        &normals[..n],
-        &mut out_positions[..n],
-        &mut out_normals[..n],
-    );
-    Ok(())
+        skin,
+        positions,
+        normals,
+        out_positions,
+        out_normals,
+    )
 }
 
 /// Which implementation [`skin_lbs`] runs: the portable one (SSE2 on x86-64, simd128 in wasm,
 /// through glam), or on an x86-64 CPU with AVX2 and FMA (detected at run time, as skinning
 /// libraries dispatch) the same formula with fused multiply-adds and 256-bit loads of two matrix
-/// columns at once. The two agree to rounding (a fused multiply-add rounds once).
+/// columns at once. The two agree to rounding (a fused multiply-add rounds once). [`skin_dqs`]
+/// (super::skin_dqs) picks its kernel the same way.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LbsKernel {
     Portable,
@@ -146,12 +120,13 @@ impl LbsKernel {
     }
 }
 
-/// [`skin_lbs`] with the portable kernel whatever the CPU (what the wasm build always runs): the
-/// benchmark's and the tests' point of comparison for [`LbsKernel::X86Fma`].
+/// [`skin_lbs`] with a chosen kernel: the benchmark and the tests compare them. A kernel this CPU
+/// cannot run ([`LbsKernel::X86Fma`] without AVX2 and FMA) falls back to the portable one.
 ///
 /// # Errors
 /// As [`skin_lbs`].
-pub fn skin_lbs_with_portable_kernel(
+pub fn skin_lbs_with(
+    kernel: LbsKernel,
     palette: &[Affine3A],
     skin: &SkinWeights,
     positions: &[Vec3],
@@ -168,14 +143,35 @@ pub fn skin_lbs_with_portable_kernel(
         out_normals.len(),
     )?;
     let n = skin.len();
+    let (joints, weights) = (&skin.joints()[..n], &skin.weights()[..n]);
+    let (positions, normals) = (&positions[..n], &normals[..n]);
+    let (out_positions, out_normals) = (&mut out_positions[..n], &mut out_normals[..n]);
+    #[cfg(target_arch = "x86_64")]
+    if kernel == LbsKernel::X86Fma && LbsKernel::best() == LbsKernel::X86Fma {
+        // SAFETY: the CPU has AVX2 and FMA (checked by `best`); every slice has `n` entries and
+        // every joint index is below `palette.len()` (checked above).
+        unsafe {
+            x86::skin_lbs_fma(
+                palette,
+                joints,
+                weights,
+                positions,
+                normals,
+                out_positions,
+                out_normals,
+            )
+        };
+        return Ok(());
+    }
+    let _ = kernel; // only x86-64 has another kernel
     skin_lbs_portable(
         palette,
-        &skin.joints()[..n],
-        &skin.weights()[..n],
-        &positions[..n],
-        &normals[..n],
-        &mut out_positions[..n],
-        &mut out_normals[..n],
+        joints,
+        weights,
+        positions,
+        normals,
+        out_positions,
+        out_normals,
     );
     Ok(())
 }

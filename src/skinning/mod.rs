@@ -26,7 +26,7 @@
 //! | the palette `K_j = M_j B_j⁻¹`, once per frame | [`skinning_palette`], [`dual_quat_palette`] |
 //! | LBS, two layouts | [`skin_lbs`], [`skin_lbs_interleaved`], [`SkinVertex`], [`lbs_vertex`] |
 //! | DQS | [`skin_dqs`], [`blend_dual_quats`], [`dqs_vertex`] |
-//! | kernels: portable (glam: SSE2, wasm simd128) or AVX2 + FMA picked at run time on x86-64 | [`LbsKernel`], [`skin_lbs_with_portable_kernel`] (`skin_dqs` dispatches the same way) |
+//! | kernels: portable (glam: SSE2, wasm simd128) or AVX2 + FMA picked at run time on x86-64 | [`LbsKernel`], [`skin_lbs_with`] (`skin_dqs` dispatches the same way) |
 //! | automatic weights | [`auto_weights`], [`segment_distance`] |
 //! | test rigs and measures | [`rigs`]: the bend-and-twist cylinder, the skinned simple human; [`ring_area`], [`mesh_volume`] |
 //!
@@ -43,7 +43,7 @@ mod weights;
 
 pub use dqs::{blend_dual_quats, dqs_vertex, dual_quat_palette, skin_dqs};
 pub use lbs::{
-    lbs_vertex, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, skin_lbs_with_portable_kernel,
+    lbs_vertex, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, skin_lbs_with,
     skinning_palette, LbsKernel, SkinVertex,
 };
 pub use rigs::{mesh_volume, ring_area};
