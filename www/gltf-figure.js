@@ -32,6 +32,7 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
     viewer.setCamera(x, y, z, distance, 0.6, 0.15);
     timeline.duration = scene.duration;
     timeline.time = 0;
+    timeline.show();
     clipControl?.destroy();
     clipControl = null;
     const names = scene.clipNames();

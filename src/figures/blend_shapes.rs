@@ -160,7 +160,7 @@ impl FaceFigure {
                 .map_err(|e| e.to_string())?;
             if (total - 1.0).abs() > 1e-3 {
                 format!(
-                    "Full form: base weight {} + targets {} = {}, not 1: every vertex is scaled by {} towards the origin.",
+                    "Full form: base weight {} + targets {} = {}, not 1: every vertex's offset from the head's centre (the mesh's origin) is multiplied by {}.",
                     format_number(w0),
                     format_number(sum),
                     format_number(total),

@@ -612,8 +612,13 @@ impl RulesFigure {
             }
         }
         let mut note = format!(
-            "{} neighbours in view within {} m; the orange boid is in cell {c} (of {} × {}).",
+            "{} {} in view within {} m; the orange boid is in cell {c} (of {} × {}).",
             ps.len(),
+            if ps.len() == 1 {
+                "neighbour"
+            } else {
+                "neighbours"
+            },
             format_number(self.radius),
             dims[0],
             dims[2]

@@ -502,7 +502,7 @@ impl GltfFigure {
                         .map_or(String::new(), |f| format!("; {f}")),
                 ),
                 (false, ..) if self.show_mesh && !c.dots.is_empty() => {
-                    ". Grey dots: the mesh's vertices in the bind pose (skinning them is lesson 09)."
+                    ". Grey dots: the mesh's vertices in the bind pose (where the mesh sits before skinning moves it)."
                         .to_string()
                 }
                 _ => ".".to_string(),

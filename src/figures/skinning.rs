@@ -391,7 +391,7 @@ impl CylinderFigure {
             100.0 * a_dqs
         );
         note.push_str(&format!(
-            " Falloff {} m: {} of {} vertices follow both joints.",
+            " Falloff {} m: {} of {} vertices follow both the shoulder and the elbow.",
             format_number(self.falloff),
             blended(&self.skin),
             self.skin.len()
