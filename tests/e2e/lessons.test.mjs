@@ -66,6 +66,25 @@ async function frames(page, n = 6) {
   }), n);
 }
 
+/**
+ * A paused 3D figure's pixel statistics once it has settled, as a person would see it after
+ * waiting a moment: a loaded machine may present a figure's first frames late (a blank or
+ * half-loaded canvas), so up to five looks, a few frames apart, until one is drawn and two in a
+ * row are the same. `still` is the mean difference between the last two looks (0..255).
+ */
+async function settledStats(page, canvas, i) {
+  let stats = await pixelStats(page, canvas, `before${i}`);
+  let still = 255;
+  for (let look = 0; look < 5; look++) {
+    await frames(page);
+    const next = await pixelStats(page, canvas, `still${i}`);
+    still = await meanDifference(page, `before${i}`, `still${i}`);
+    if (next.coverage > 0.02 && still < 0.5) return { ...next, still };
+    stats = await pixelStats(page, canvas, `before${i}`);
+  }
+  return { ...stats, still };
+}
+
 /** A drag on the canvas orbits the camera: the image must change. */
 async function orbitDrag(page, canvas, i) {
   await canvas.scrollIntoViewIfNeeded();
@@ -75,9 +94,13 @@ async function orbitDrag(page, canvas, i) {
   await page.mouse.down();
   await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.6, { steps: 5 });
   await page.mouse.up();
-  await frames(page);
-  await pixelStats(page, canvas, `orbit-after${i}`);
-  const change = await meanDifference(page, `orbit-before${i}`, `orbit-after${i}`);
+  // The new view may reach the screen a few frames late on a loaded machine: up to three looks.
+  let change = 0;
+  for (let look = 0; look < 3 && change <= 0.2; look++) {
+    await frames(page);
+    await pixelStats(page, canvas, `orbit-after${i}`);
+    change = await meanDifference(page, `orbit-before${i}`, `orbit-after${i}`);
+  }
   assert.ok(change > 0.2, `figure ${i}: dragging the canvas did not orbit the camera (${change})`);
 }
 
@@ -331,12 +354,10 @@ for (const backend of BACKENDS) {
               await page.evaluate(() => document.body.classList.remove('thumbnail'));
             }
             assert.equal(await figure.locator('.backend-badge').textContent(), label);
-            const before = await pixelStats(page, canvas, `before${i}`);
+            const before = await settledStats(page, canvas, i);
             assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
             assert.ok(before.colors > 20, `figure ${i}: too few colours (${before.colors}) for shaded geometry`);
-            await frames(page);
-            await pixelStats(page, canvas, `still${i}`);
-            assert.ok(await meanDifference(page, `before${i}`, `still${i}`) < 0.5, `figure ${i}: image changes while paused`);
+            assert.ok(before.still < 0.5, `figure ${i}: image changes while paused (${before.still})`);
             if (light(backend) && interacted) continue;
             interacted = true;
             await orbitDrag(page, canvas, i);

@@ -8,7 +8,7 @@ async function waitForCheck(page, kind) {
   await page.waitForFunction((kind) => {
     const text = document.getElementById('gpu-check')?.textContent ?? '';
     return text.includes(`, ${kind})`) && text.includes('largest difference');
-  }, kind, { timeout: 30_000 });
+  }, kind, { timeout: 90_000 });
   return page.locator('#gpu-check').textContent();
 }
 
