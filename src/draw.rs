@@ -46,7 +46,8 @@ pub struct LineVertex {
     /// World space.
     pub position: [f32; 3],
     /// Pulls the line towards the camera by this much normalised depth, so that an axis drawn
-    /// over a grid line at the same place wins instead of flickering (0 for ordinary lines).
+    /// over a grid line at the same place wins instead of flickering (0 for ordinary lines,
+    /// [`ON_TOP`] for a line drawn over everything). Never past the near plane.
     pub depth_bias: f32,
     /// Linear RGBA.
     pub color: [f32; 4],
@@ -58,7 +59,7 @@ pub struct LineVertex {
 pub struct PointInstance {
     /// World space.
     pub center: [f32; 3],
-    /// World units.
+    /// World units; negative: the disc is drawn over everything ([`Frame::point_on_top`]).
     pub radius: f32,
     /// Linear RGBA.
     pub color: [f32; 4],
@@ -76,6 +77,8 @@ pub struct Label {
 
 /// Depth bias of axes and arrows (see [`LineVertex::depth_bias`]).
 pub const OVERLAY_BIAS: f32 = 2e-5;
+/// Depth bias of a line drawn over everything ([`Frame::line_on_top`]).
+pub const ON_TOP: f32 = 1.0;
 
 /// What to draw this frame. Scenes fill it; the renderer draws it and then calls [`Frame::clear`].
 #[derive(Clone, Debug, Default)]
@@ -179,9 +182,24 @@ impl Frame {
     pub fn point(&mut self, center: Vec3, radius: f32, color: Vec3) {
         self.points.push(PointInstance {
             center: center.to_array(),
-            radius,
+            radius: radius.abs(),
             color: color.extend(1.0).to_array(),
         });
+    }
+
+    /// A [`Frame::point`] drawn over everything, seen through any surface in front of it (the
+    /// joints of a skeleton inside a body).
+    pub fn point_on_top(&mut self, center: Vec3, radius: f32, color: Vec3) {
+        self.points.push(PointInstance {
+            center: center.to_array(),
+            radius: -radius.abs(),
+            color: color.extend(1.0).to_array(),
+        });
+    }
+
+    /// A [`Frame::line`] drawn over everything (the bones of a skeleton inside a body).
+    pub fn line_on_top(&mut self, a: Vec3, b: Vec3, color: Vec3) {
+        self.biased_line(a, b, color, ON_TOP);
     }
 
     /// An arrow from `from` to `to`: a shaft line and a cone head whose length is `head` world

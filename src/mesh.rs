@@ -92,6 +92,55 @@ pub fn uv_sphere(radius: f32, segments: u32, rings: u32) -> MeshData {
     mesh
 }
 
+/// A sphere like [`uv_sphere`] but closed: one vertex per pole and no seam (the meridian where
+/// [`uv_sphere`] repeats its first column of vertices), so that every vertex is shared by all the
+/// triangles around it. For meshes that are deformed and get their normals from their faces
+/// ([`crate::raster::vertex_normals`]): on a seam or a pole of a UV sphere each copy of a vertex
+/// sees only some of its triangles, and the shading shows a crease. `2 + segments · (rings − 1)`
+/// vertices.
+///
+/// # Panics
+/// If `segments < 3` or `rings < 2` (a programming error, not caller data).
+pub fn closed_sphere(radius: f32, segments: u32, rings: u32) -> MeshData {
+    assert!(
+        segments >= 3 && rings >= 2,
+        "a sphere needs at least 3 segments and 2 rings"
+    );
+    let mut mesh = MeshData::default();
+    let mut push = |n: Vec3| {
+        mesh.positions.push(n * radius);
+        mesh.normals.push(n);
+    };
+    push(Vec3::Y);
+    for ring in 1..rings {
+        let polar = std::f32::consts::PI * ring as f32 / rings as f32;
+        for segment in 0..segments {
+            let azimuth = std::f32::consts::TAU * segment as f32 / segments as f32;
+            push(Vec3::new(
+                polar.sin() * azimuth.sin(),
+                polar.cos(),
+                polar.sin() * azimuth.cos(),
+            ));
+        }
+    }
+    push(Vec3::NEG_Y);
+    let bottom = mesh.positions.len() as u32 - 1;
+    // Vertex `segment` (wrapping round) of inner ring `ring` (1 to rings − 1).
+    let at = |ring: u32, segment: u32| 1 + (ring - 1) * segments + segment % segments;
+    for s in 0..segments {
+        // The same winding as uv_sphere: counter-clockwise seen from outside.
+        mesh.indices.extend_from_slice(&[0, at(1, s), at(1, s + 1)]);
+        for ring in 1..rings - 1 {
+            let (a, a1) = (at(ring, s), at(ring, s + 1));
+            let (b, b1) = (at(ring + 1, s), at(ring + 1, s + 1));
+            mesh.indices.extend_from_slice(&[a, b, a1, a1, b, b1]);
+        }
+        mesh.indices
+            .extend_from_slice(&[at(rings - 1, s + 1), at(rings - 1, s), bottom]);
+    }
+    mesh
+}
+
 /// Line segments (pairs of endpoints) of a square grid on the plane y = 0, centred at the origin,
 /// with `cells` cells of size `spacing` along each side. An iterator, so that drawing the grid
 /// every frame allocates nothing.
@@ -133,4 +182,52 @@ pub fn cone(radius: f32, height: f32, segments: u32) -> MeshData {
         mesh.indices.extend([base, base + 1, base + 2]);
     }
     mesh
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::HashMap;
+
+    /// Sum over triangles of (face normal · centroid): positive when they wind outwards.
+    fn outward(mesh: &MeshData) -> Vec<f32> {
+        mesh.indices
+            .chunks(3)
+            .map(|t| {
+                let [a, b, c] = [0, 1, 2].map(|k| mesh.positions[t[k] as usize]);
+                (b - a).cross(c - a).dot(a + b + c)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_closed_sphere_is_watertight_without_seam_and_winds_like_the_uv_sphere() {
+        let (segments, rings) = (12, 7);
+        let mesh = closed_sphere(2.0, segments, rings);
+        assert_eq!(mesh.positions.len(), (2 + segments * (rings - 1)) as usize);
+        assert_eq!(mesh.triangle_count(), (2 * segments * (rings - 1)) as usize);
+        // Closed: every edge is used once in each direction.
+        let mut edges = HashMap::new();
+        for t in mesh.indices.chunks(3) {
+            for k in 0..3 {
+                *edges.entry((t[k], t[(k + 1) % 3])).or_insert(0) += 1;
+            }
+        }
+        for (&(a, b), &n) in &edges {
+            assert_eq!(n, 1, "edge {a}-{b} used {n} times in one direction");
+            assert_eq!(edges.get(&(b, a)), Some(&1), "edge {a}-{b} has no twin");
+        }
+        // No two vertices at the same place (no seam), all on the sphere.
+        for (i, p) in mesh.positions.iter().enumerate() {
+            assert!((p.length() - 2.0).abs() < 1e-5);
+            assert!((mesh.normals[i] - *p / 2.0).length() < 1e-5);
+            for q in &mesh.positions[i + 1..] {
+                assert!(p.distance(*q) > 1e-3, "two vertices at {p}");
+            }
+        }
+        assert!(outward(&mesh).iter().all(|&d| d > 0.0));
+        assert!(outward(&uv_sphere(2.0, segments, rings))
+            .iter()
+            .all(|&d| d > 0.0));
+    }
 }

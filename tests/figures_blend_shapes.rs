@@ -1,28 +1,142 @@
-//! Lesson 10 figure logic: validation, the full form's warning, the animation, and the note about
-//! the student's exercise.
+//! Lesson 10 figure logic: validation, the two forms side by side, the full form's warning, the
+//! animation and its plot, and the note about the student's exercise.
 
+use glam::Vec3;
 use inbetween::draw::{Frame, MeshId};
-use inbetween::figures::blend_shapes::FaceFigure;
+use inbetween::figures::blend_shapes::{FaceFigure, Show, LOOP_SECONDS};
+
+const IDS: [MeshId; 2] = [MeshId(3), MeshId(4)];
 
 #[test]
 fn controls_validate_and_the_full_form_reports_a_bad_sum() {
     let mut f = FaceFigure::new();
     assert!(f.set_weight(7, 0.5).unwrap_err().contains("target index 7"));
     assert!(f.set_weight(0, f32::NAN).unwrap_err().contains("weight"));
-    assert!(f.set_form("half").unwrap_err().contains("form"));
+    assert!(f.set_show("half").unwrap_err().contains("show"));
     assert!(f.set_base_weight(2.0).unwrap_err().contains("base weight"));
+    assert!(f.weight_curves(1).is_err());
+    assert!(f.weight_curves(1_000_000).is_err());
     f.set_animate(false);
     let mut frame = Frame::default();
-    let note = f.draw(&mut frame, MeshId(3), 0.0).unwrap();
-    assert!(note.contains("Differential form"), "{note}");
-    f.set_form("full").unwrap();
-    let note = f.draw(&mut frame, MeshId(3), 0.0).unwrap();
-    assert!(note.contains("= 1."), "{note}");
+    let note = f.draw(&mut frame, IDS, 0.0).unwrap();
+    assert_eq!(f.show(), Show::Both);
+    assert!(note.contains("Differential (left)"), "{note}");
+    assert!(
+        note.contains("the same face as the differential form"),
+        "{note}"
+    );
+    f.set_show("differential").unwrap();
+    let note = f.draw(&mut frame, IDS, 0.0).unwrap();
+    assert!(
+        note.starts_with("Differential:") && !note.contains("Full"),
+        "{note}"
+    );
+    f.set_show("full").unwrap();
     f.set_base_weight(0.5).unwrap();
-    let note = f.draw(&mut frame, MeshId(3), 0.0).unwrap();
-    assert!(note.contains("not 1"), "{note}");
-    assert!(f.draw(&mut frame, MeshId(3), f32::NAN).is_err());
-    assert!(f.mesh.take_dirty());
+    let note = f.draw(&mut frame, IDS, 0.0).unwrap();
+    assert!(
+        note.starts_with("Full:") && note.contains("not 1"),
+        "{note}"
+    );
+    assert!(f.draw(&mut frame, IDS, f32::NAN).is_err());
+    assert!(f.differential.take_dirty() && f.full.take_dirty());
+}
+
+/// The mesh ids drawn in `frame` and where each stands.
+fn heads(frame: &Frame) -> Vec<(MeshId, Vec3)> {
+    frame
+        .meshes
+        .iter()
+        .filter(|m| IDS.contains(&m.mesh))
+        .map(|m| (m.mesh, m.model.w_axis.truncate()))
+        .collect()
+}
+
+#[test]
+fn both_forms_stand_side_by_side_and_agree_when_the_base_weight_is_one_minus_the_sum() {
+    let mut f = FaceFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS, 1.3).unwrap();
+    let h = heads(&frame);
+    assert_eq!(h.len(), 2);
+    assert_eq!((h[0].0, h[1].0), (IDS[0], IDS[1]));
+    assert!(
+        h[0].1.x < -0.5 && h[1].1.x > 0.5,
+        "differential left, full right: {h:?}"
+    );
+    assert_eq!(frame.labels.len(), 2);
+    // Base weight 1 − Σw: the full form is the differential form.
+    for (a, b) in f.differential.positions.iter().zip(&f.full.positions) {
+        assert!(a.distance(*b) < 1e-5, "{a} vs {b}");
+    }
+    // A base weight by hand: full − differential = (s − 1) b₀ (s = base + Σw, b₀ the base).
+    f.set_animate(false);
+    for k in 0..4 {
+        f.set_weight(k, 0.0).unwrap();
+    }
+    f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+    let base = f.differential.positions.clone();
+    for (k, w) in [0.5, 0.25, 0.75, 0.3].into_iter().enumerate() {
+        f.set_weight(k, w).unwrap();
+    }
+    f.set_base_weight(0.8).unwrap();
+    f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+    let s = 0.8 + 1.8;
+    for ((d, full), b) in f
+        .differential
+        .positions
+        .iter()
+        .zip(&f.full.positions)
+        .zip(&base)
+    {
+        assert!(
+            (*full - *d - (s - 1.0) * *b).length() < 1e-4,
+            "{full} vs {d}"
+        );
+    }
+    // One head alone stands in the middle, without labels.
+    f.set_show("full").unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS, 0.0).unwrap();
+    let h = heads(&frame);
+    assert_eq!(h.len(), 1);
+    assert_eq!(h[0].0, IDS[1]);
+    assert!(h[0].1.x.abs() < 1e-6);
+    assert!(frame.labels.is_empty());
+}
+
+#[test]
+fn the_weight_plot_follows_the_animation_and_the_full_forms_total() {
+    let mut f = FaceFigure::new();
+    let samples = 41;
+    let flat = f.weight_curves(samples).unwrap();
+    assert_eq!(flat.len(), samples * 7);
+    for row in flat.chunks(7) {
+        let (t, w) = (row[0], &row[1..5]);
+        assert_eq!(w, f.weights_at(t));
+        assert!((row[5] - w.iter().sum::<f32>()).abs() < 1e-6);
+        assert!((row[6] - 1.0).abs() < 1e-6, "base 1 − Σw: the total is 1");
+    }
+    assert_eq!(flat[0], 0.0);
+    assert!((flat[(samples - 1) * 7] - LOOP_SECONDS).abs() < 1e-6);
+    // Each weight reaches its slider's value during the loop.
+    for k in 0..4 {
+        let peak = flat.chunks(7).map(|r| r[1 + k]).fold(0f32, f32::max);
+        assert!(
+            (peak - [1.0, 0.6, 0.8, 0.7][k]).abs() < 0.01,
+            "weight {k} peaks at {peak}"
+        );
+    }
+    f.set_base_weight(0.25).unwrap();
+    for row in f.weight_curves(samples).unwrap().chunks(7) {
+        assert!((row[6] - (0.25 + row[5])).abs() < 1e-6);
+    }
+    f.set_animate(false);
+    let flat = f.weight_curves(samples).unwrap();
+    assert!(
+        flat.chunks(7).all(|r| r[1..5] == flat[1..5]),
+        "still weights: flat lines"
+    );
 }
 
 #[test]
@@ -33,7 +147,7 @@ fn the_animation_moves_the_weights_and_the_exercise_note_shows() {
     f.set_animate(false);
     assert_eq!(f.weights_at(0.0), f.weights_at(1.0));
     f.set_use_exercise(true);
-    let note = f.draw(&mut Frame::default(), MeshId(3), 0.0).unwrap();
+    let note = f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
     if cfg!(feature = "solutions") {
         assert!(note.contains("matches the reference"), "{note}");
     } else {
@@ -45,9 +159,9 @@ fn the_animation_moves_the_weights_and_the_exercise_note_shows() {
 fn the_eyes_shrink_with_the_face_when_the_full_form_sum_is_not_one() {
     // The eyes are separate spheres: in the full form with weights summing to s, every face
     // vertex is scaled by s towards the head's origin, and the eyes must follow or they float off.
-    let eye_positions = |f: &mut FaceFigure| -> Vec<glam::Vec3> {
+    let eye_positions = |f: &mut FaceFigure| -> Vec<Vec3> {
         let mut frame = Frame::default();
-        f.draw(&mut frame, MeshId(3), 0.0).unwrap();
+        f.draw(&mut frame, IDS, 0.0).unwrap();
         frame
             .meshes
             .iter()
@@ -57,13 +171,13 @@ fn the_eyes_shrink_with_the_face_when_the_full_form_sum_is_not_one() {
     };
     let mut f = FaceFigure::new();
     f.set_animate(false);
-    f.set_form("full").unwrap();
+    f.set_show("full").unwrap();
     let whole = eye_positions(&mut f);
     f.set_base_weight(0.5).unwrap();
     let w: f32 = f.weights_at(0.0).iter().sum();
     let scaled = eye_positions(&mut f);
     assert_eq!(whole.len(), 2);
-    let head = glam::Vec3::new(0.0, 1.2, 0.0);
+    let head = Vec3::new(0.0, 1.2, 0.0);
     for (a, b) in whole.iter().zip(&scaled) {
         let expected = head + (*a - head) * (0.5 + w);
         assert!((*b - expected).length() < 1e-5, "{b} vs {expected}");

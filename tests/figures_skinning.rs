@@ -166,6 +166,17 @@ fn the_human_skins_its_clip_by_both_methods() {
     let note = h.draw(&mut frame, MeshId(3));
     assert!(note.contains("linear blend skinning"), "{note}");
     assert!(frame.labels.iter().any(|l| l.text == "forearm.L"));
+    // The skeleton is drawn over the body (it is inside it): one disc per joint and one bone
+    // per joint with a parent, all on top.
+    let joints = h.joint_names().len();
+    let on_top = frame.points.iter().filter(|p| p.radius < 0.0).count();
+    assert_eq!(on_top, joints);
+    let bones = frame
+        .lines
+        .chunks(2)
+        .filter(|l| l[0].depth_bias == inbetween::draw::ON_TOP)
+        .count();
+    assert_eq!(bones, joints - 1);
     for name in h.clip_names() {
         h.set_clip(&name).unwrap();
         h.skin(0.7).unwrap();

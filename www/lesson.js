@@ -428,10 +428,10 @@ export class Timeline {
  * `setData([xs, ys1, ys2…])` replaces the curves; `setCursor(x)` draws a vertical playhead at `x`
  * (call it every frame with the timeline's time; `null` hides it). Every y axis is labelled with its
  * quantity and unit; the y range is never smaller than `minSpan`, so a constant signal is not
- * autoscaled onto float noise.
+ * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0).
  */
 export class Plot {
-  constructor(element, { title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3 }) {
+  constructor(element, { title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
     // The y label is drawn along the plot area and clipped at the canvas: make the plot tall
     // enough for it (about 110 px of the default height are title, x axis and its label).
@@ -458,7 +458,7 @@ export class Plot {
       height,
       scales: {
         x: { time: false },
-        y: { range: (u, lo, hi) => paddedRange(lo, hi, minSpan) },
+        y: { range: (u, lo, hi) => yRange ?? paddedRange(lo, hi, minSpan) },
       },
       // Small label fonts: a y label such as "angle about x (°)" must fit a 160 px tall plot.
       axes: [

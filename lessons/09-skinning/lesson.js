@@ -20,7 +20,7 @@ if (cylinderViewer) {
   });
   const volumePlot = new Plot(document.getElementById('cyl-plot-volume'), {
     title: 'Tube volume against the bend', xLabel: 'bend angle (°)', yLabel: 'volume (% of rest)',
-    series: ['LBS', 'DQS'], colors: ['#e68a00', '#17a2a8'], minSpan: 5, height: 180,
+    series: ['LBS', 'DQS'], colors: ['#e68a00', '#17a2a8'], yRange: [0, 105], height: 180,
   });
   function updatePlot() {
     const pct = (a) => Array.from(a, (x) => 100 * x);
@@ -32,7 +32,11 @@ if (cylinderViewer) {
   gui.add(p, 'bend', 0, 180, 1).name('bend (°)').onChange((v) => { scene.setBendDeg(v); plot.setCursor?.(v); volumePlot.setCursor?.(v); });
   gui.add(p, 'twist', -180, 180, 1).name('twist (°)').onChange((v) => scene.setTwistDeg(v));
   gui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange((v) => { scene.setFalloff(v); updatePlot(); });
-  gui.add(p, 'heat', ['none', 'shoulder', 'elbow']).name('weights of').onChange((v) => scene.setHeatJoint(v));
+  // The colour ramp's legend only while a joint's weights are painted.
+  const legend = document.querySelector('#fig-cylinder .heat-legend');
+  const showLegend = () => { legend.style.display = p.heat === 'none' ? 'none' : ''; };
+  gui.add(p, 'heat', ['none', 'shoulder', 'elbow']).name('weights of').onChange((v) => { scene.setHeatJoint(v); showLegend(); });
+  showLegend();
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
   updatePlot();
   plot.setCursor?.(p.bend);
@@ -66,16 +70,18 @@ if (humanViewer) {
   gui.add(p, 'on', ['CPU', 'GPU']).name('skin on').onChange((v) => { scene.setGpu(v === 'GPU'); average = 0; });
 
   const note = document.getElementById('human-note');
+  // performance.now() is coarse (0.1 ms, or worse in some browsers): below that, say so.
+  const formatMs = (x) => (x < 0.1 ? 'under 0.1 ms' : `${x.toFixed(2)} ms`);
   let average = 0;
   let frameMs = 0;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
-    const ms = scene.skin(t);
-    average = average === 0 ? ms : 0.9 * average + 0.1 * ms;
+    const took = scene.skin(t);
+    average = average === 0 ? took : 0.9 * average + 0.1 * took;
     frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
     const work = p.on === 'GPU'
-      ? `GPU skinning: ${average.toFixed(2)} ms per frame on the CPU (clip and palette)`
-      : `CPU skinning: ${average.toFixed(2)} ms per frame (clip, palette and vertices)`;
+      ? `GPU skinning: ${formatMs(average)} per frame on the CPU (clip and palette)`
+      : `CPU skinning: ${formatMs(average)} per frame (clip, palette and vertices)`;
     showNote(note, `${scene.draw(humanViewer)} ${work}; frame time ${frameMs.toFixed(1)} ms.`);
     markDrawn('#fig-human');
   });

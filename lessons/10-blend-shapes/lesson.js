@@ -1,29 +1,37 @@
 // Lesson 10: wires the page's controls to the wasm scene. No math here: it lives in Rust
 // (src/blend_shapes/, src/figures/blend_shapes.rs).
-import { startLesson, markDrawn, Timeline, GUI, showNote } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote } from '../../www/lesson.js';
 import { BlendShapeFaceScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
 const viewer = await lesson.figure('#fig-face');
 if (viewer) {
-  viewer.setCamera(0, 1.15, 0, 3.2, 0.35, 0.1);
+  viewer.setCamera(0, 1.3, 0, 4.8, 0.15, 0.1);
   const scene = new BlendShapeFaceScene();
   const timeline = new Timeline(document.getElementById('face-timeline'), { duration: 4, playing: true });
   const names = scene.targetNames();
-  const p = { form: 'differential', base: -0.05, animate: true, useExercise: false };
+  const plot = new Plot(document.getElementById('face-plot'), {
+    title: 'Weights over the loop', xLabel: 'time (s)', yLabel: 'weight',
+    series: [...names, 'Σ w (targets)', 'full form: base + Σ w'],
+    colors: ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#1f2430', '#e68a00'], minSpan: 1, height: 200,
+  });
+  const updatePlot = () => plot.setData(columns(scene.weightCurves(81), 7));
+  const p = { show: 'both', base: -0.05, animate: true, useExercise: false };
   const start = [1, 0.6, 0.8, 0.7];
   names.forEach((n, k) => { p[n] = start[k]; });
   const gui = new GUI({ container: document.querySelector('#fig-face .panel'), title: 'Face' });
   const weights = gui.addFolder('target weights');
-  names.forEach((n, k) => weights.add(p, n, -0.5, 1.5, 0.01).name(n).onChange((w) => scene.setWeight(k, w)));
-  gui.add(p, 'form', ['differential', 'full']).name('form').onChange((f) => scene.setForm(f));
-  gui.add(p, 'base', -0.05, 1, 0.05).name('full: base weight (<0: 1 − Σw)').onChange((w) => scene.setBaseWeight(w));
-  gui.add(p, 'animate').name('animate the weights').onChange((on) => scene.setAnimate(on));
+  names.forEach((n, k) => weights.add(p, n, -0.5, 1.5, 0.01).name(n).onChange((w) => { scene.setWeight(k, w); updatePlot(); }));
+  gui.add(p, 'show', ['both', 'differential', 'full']).name('show').onChange((f) => scene.setShow(f));
+  gui.add(p, 'base', -0.05, 1, 0.05).name('full: base weight (<0: 1 − Σw)').onChange((w) => { scene.setBaseWeight(w); updatePlot(); });
+  gui.add(p, 'animate').name('animate the weights').onChange((on) => { scene.setAnimate(on); updatePlot(); });
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
+  updatePlot();
   const note = document.getElementById('face-note');
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
+    plot.setCursor(t);
     showNote(note, scene.draw(viewer, t));
     markDrawn('#fig-face');
   });

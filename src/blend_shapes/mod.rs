@@ -299,21 +299,29 @@ pub const FACE_TARGETS: [&str; 4] = ["smile", "jaw open", "brows up", "puff chee
 
 /// Builds [`Face`].
 pub fn face() -> Face {
-    let mut mesh = crate::mesh::uv_sphere(1.0, 40, 28);
+    // Closed (no seam, one vertex per pole): the normals are recomputed from the faces for every
+    // target, and a UV sphere's seam would show as a crease down the middle of the face.
+    let mut mesh = crate::mesh::closed_sphere(1.0, 48, 32);
     for p in &mut mesh.positions {
         *p *= Vec3::new(0.8, 1.0, 0.85);
     }
     let bump = |v: f32, centre: f32, width: f32| (-((v - centre) / width).powi(2)).exp();
-    let front = |p: Vec3| ((p.z - 0.2) / 0.4).clamp(0.0, 1.0);
+    // Ramps from 0 to 1 with zero slope at both ends (a plain clamp leaves a crease in the
+    // shading where the displacement starts).
+    let smoothstep = |lo: f32, hi: f32, v: f32| {
+        let t = ((v - lo) / (hi - lo)).clamp(0.0, 1.0);
+        t * t * (3.0 - 2.0 * t)
+    };
+    let front = move |p: Vec3| smoothstep(0.2, 0.6, p.z);
     let displace: [&dyn Fn(Vec3) -> Vec3; 4] = [
         // Smile: the mouth's corners rise and pull back.
         &|p| {
-            let f = front(p) * bump(p.y, -0.42, 0.12) * (p.x.abs() / 0.35).min(1.0);
+            let f = front(p) * bump(p.y, -0.42, 0.12) * smoothstep(0.0, 0.35, p.x.abs());
             Vec3::new(0.05 * p.x.signum(), 0.16, -0.05) * f
         },
         // Jaw open: the chin drops.
         &|p| {
-            let f = front(p) * ((-0.35 - p.y) / 0.3).clamp(0.0, 1.0) * bump(p.x, 0.0, 0.45);
+            let f = front(p) * smoothstep(-0.35, -0.65, p.y) * bump(p.x, 0.0, 0.45);
             Vec3::new(0.0, -0.3, 0.05) * f
         },
         // Brows up: a band above the eyes rises.

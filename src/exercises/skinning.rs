@@ -35,7 +35,8 @@ pub fn lbs_vertex(matrices: &[Mat4], weights: &[f32], position: Vec3) -> Answer<
 /// b   = Σₖ weights[k] · s_k · q_k
 /// q   = b / ‖b.real‖        then make the dual part orthogonal to the real part
 /// ```
-/// Return the normalised blend (an empty input gives [`DualQuat::IDENTITY`]).
+/// Return the normalised blend. An empty input, or a blend whose real part (nearly) cancels
+/// (`‖b.real‖ < 1e-6`, e.g. all weights zero), gives [`DualQuat::IDENTITY`].
 ///
 /// Hints: `q.real.dot(p.real)` is the 4D dot product; `DualQuat` supports `+` and `* f32`, and
 /// [`DualQuat::normalized`] does the last step. Without the sign flip, blending a motion with its

@@ -1,13 +1,14 @@
 //! Figure logic for lesson 10, "Blend shapes" (see [`crate::figures`]).
 //!
-//! [`FaceFigure`]: the procedural face with four targets, a weight per target, the full or the
-//! differential form (the full form also weights the base, `1 − Σ wₖ` unless "base weight" is
-//! set by hand, so a wrong sum shows), a weight animation over time, and the check of the
-//! student's exercise 10.1.
+//! [`FaceFigure`]: the procedural face with four targets and a weight per target, blended in the
+//! differential form and in the full form side by side (or one of them alone). The full form also
+//! weights the base, `1 − Σ wₖ` unless "base weight" is set by hand, so a wrong sum shows. The
+//! weights can be animated over time; [`FaceFigure::weight_curves`] gives their plot. Exercise
+//! 10.1 (the student's differential form) drives the differential head.
 
 use super::{
-    compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
-    DEFAULT_RUNNER,
+    check_samples, compare_note, failure_note, finite, format_number, in_range, palette, Frame,
+    MeshId, Runner, DEFAULT_RUNNER,
 };
 use crate::blend_shapes::{face, Face};
 use crate::exercises::run;
@@ -16,6 +17,20 @@ use glam::{Mat4, Vec3, Vec4};
 
 const EXERCISE_FILE: &str = "src/exercises/blend_shapes.rs";
 const TOLERANCE: f32 = 1e-4;
+/// Length of the weight animation's loop (the lesson's timeline).
+pub const LOOP_SECONDS: f32 = 4.0;
+/// Where the head's centre is, and how far apart the two heads stand.
+const HEAD_CENTRE: Vec3 = Vec3::new(0.0, 1.2, 0.0);
+const HEAD_SPACING: f32 = 1.9;
+
+/// Which blend the figure shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Show {
+    /// The differential form on the left, the full form on the right.
+    Both,
+    Differential,
+    Full,
+}
 
 /// The face figure.
 pub struct FaceFigure {
@@ -23,11 +38,14 @@ pub struct FaceFigure {
     weights: [f32; 4],
     /// The full form's base weight; `None`: `1 − Σ wₖ` (so the weights sum to 1).
     base_weight: Option<f32>,
-    full: bool,
+    show: Show,
     animate: bool,
     use_exercise: bool,
     runner: Runner,
-    pub mesh: SkinnedMesh,
+    /// The face blended in the differential form (the student's, with the exercise on).
+    pub differential: SkinnedMesh,
+    /// The face blended in the full form.
+    pub full: SkinnedMesh,
     exercise_note: String,
 }
 
@@ -38,23 +56,27 @@ impl Default for FaceFigure {
 }
 
 impl FaceFigure {
-    /// Differential form, the weights animated.
+    /// Both forms side by side, the weights animated.
     pub fn new() -> Self {
         let face = face();
         let n = face.mesh.positions.len();
-        let mut mesh = SkinnedMesh::default();
-        mesh.positions = vec![Vec3::ZERO; n];
-        mesh.normals = vec![Vec3::ZERO; n];
-        mesh.colors = vec![Vec4::new(0.85, 0.62, 0.48, 1.0); n];
+        let blank = || {
+            let mut mesh = SkinnedMesh::default();
+            mesh.positions = vec![Vec3::ZERO; n];
+            mesh.normals = vec![Vec3::ZERO; n];
+            mesh.colors = vec![Vec4::new(0.85, 0.62, 0.48, 1.0); n];
+            mesh
+        };
         Self {
+            differential: blank(),
+            full: blank(),
             face,
             weights: [1.0, 0.6, 0.8, 0.7],
             base_weight: None,
-            full: false,
+            show: Show::Both,
             animate: true,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
-            mesh,
             exercise_note: String::new(),
         }
     }
@@ -82,18 +104,23 @@ impl FaceFigure {
         Ok(())
     }
 
-    /// "full" or "differential".
-    pub fn set_form(&mut self, name: &str) -> Result<(), String> {
-        self.full = match name {
-            "full" => true,
-            "differential" => false,
+    /// What to show: "both" (differential left, full right), "differential" or "full".
+    pub fn set_show(&mut self, name: &str) -> Result<(), String> {
+        self.show = match name {
+            "both" => Show::Both,
+            "full" => Show::Full,
+            "differential" => Show::Differential,
             _ => {
                 return Err(format!(
-                    "form: expected \"full\" or \"differential\", got {name:?}"
+                    "show: expected \"both\", \"differential\" or \"full\", got {name:?}"
                 ))
             }
         };
         Ok(())
+    }
+
+    pub fn show(&self) -> Show {
+        self.show
     }
 
     /// The full form's base weight in [0, 1], or a negative number for "1 − Σ wₖ".
@@ -116,14 +143,14 @@ impl FaceFigure {
     }
 
     /// The weights at `time_sec`: the sliders', or (animating) each pulsing between 0 and its
-    /// slider's value over a 4 s loop.
+    /// slider's value over the 4 s loop, a quarter of the loop apart.
     pub fn weights_at(&self, time_sec: f32) -> [f32; 4] {
         if !self.animate {
             return self.weights;
         }
-        // Each weight pulses between 0 and its slider's value, a quarter of the loop apart.
-        let wave =
-            |phase: f32| 0.5 - 0.5 * (std::f32::consts::TAU * (time_sec / 4.0 - phase)).cos();
+        let wave = |phase: f32| {
+            0.5 - 0.5 * (std::f32::consts::TAU * (time_sec / LOOP_SECONDS - phase)).cos()
+        };
         let w = self.weights;
         [
             w[0] * wave(0.0),
@@ -133,69 +160,107 @@ impl FaceFigure {
         ]
     }
 
-    /// Blends the face at `time_sec` and draws it (`mesh`: its GPU id); returns the note.
+    /// The full form's base weight for target weights `w`: the one set by hand, or `1 − Σ w`.
+    pub fn base_weight_for(&self, w: &[f32; 4]) -> f32 {
+        self.base_weight.unwrap_or(1.0 - w.iter().sum::<f32>())
+    }
+
+    /// The plot of the weights over one loop: `[time (s), smile, jaw open, brows up, puff cheeks,
+    /// Σ w (the targets), base + Σ w (the full form's total)]` per sample, `samples` in [2, 10000].
+    /// The last column is the factor the full form multiplies the head by.
+    pub fn weight_curves(&self, samples: usize) -> Result<Vec<f32>, String> {
+        check_samples(samples)?;
+        let mut out = Vec::with_capacity(samples * 7);
+        for i in 0..samples {
+            let t = LOOP_SECONDS * i as f32 / (samples - 1) as f32;
+            let w = self.weights_at(t);
+            let sum: f32 = w.iter().sum();
+            out.push(t);
+            out.extend_from_slice(&w);
+            out.push(sum);
+            out.push(self.base_weight_for(&w) + sum);
+        }
+        Ok(out)
+    }
+
+    /// Where each shown head stands: `(differential, full)`, `None` when hidden.
+    fn head_positions(&self) -> (Option<Vec3>, Option<Vec3>) {
+        let side = Vec3::X * (HEAD_SPACING / 2.0);
+        match self.show {
+            Show::Both => (Some(HEAD_CENTRE - side), Some(HEAD_CENTRE + side)),
+            Show::Differential => (Some(HEAD_CENTRE), None),
+            Show::Full => (None, Some(HEAD_CENTRE)),
+        }
+    }
+
+    /// Blends the faces at `time_sec` and draws them (`meshes`: the GPU ids of the differential
+    /// and the full head); returns the note.
     pub fn draw(
         &mut self,
         frame: &mut Frame,
-        mesh: MeshId,
+        meshes: [MeshId; 2],
         time_sec: f32,
     ) -> Result<String, String> {
         let t = finite("time", time_sec)?;
         let w = self.weights_at(t);
         let sum: f32 = w.iter().sum();
+        let w0 = self.base_weight_for(&w);
+        let total = w0 + sum;
         let shapes = &self.face.shapes;
-        // How much the full form scales the face towards its origin (1 in the differential form);
-        // the eyes are separate spheres, so they are scaled by hand to stay on the face.
-        let mut face_scale = 1.0;
-        let mut note = if self.full {
-            let w0 = self.base_weight.unwrap_or(1.0 - sum);
-            let total = w0 + sum;
-            face_scale = total;
-            shapes
-                .apply_full(
-                    &[w0, w[0], w[1], w[2], w[3]],
-                    &mut self.mesh.positions,
-                    &mut self.mesh.normals,
-                )
-                .map_err(|e| e.to_string())?;
-            if (total - 1.0).abs() > 1e-3 {
-                format!(
-                    "Full form: base weight {} + targets {} = {}, not 1: every vertex's offset from the head's centre (the mesh's origin) is multiplied by {}.",
-                    format_number(w0),
-                    format_number(sum),
-                    format_number(total),
-                    format_number(total)
-                )
-            } else {
-                format!(
-                    "Full form: base weight {} + targets {} = 1.",
-                    format_number(w0),
-                    format_number(sum)
-                )
-            }
-        } else {
-            shapes
-                .apply_differential(&w, &mut self.mesh.positions, &mut self.mesh.normals)
-                .map_err(|e| e.to_string())?;
-            format!(
-                "Differential form: base + Σ w·delta, weights sum to {} (any sum is fine).",
-                format_number(sum)
+        shapes
+            .apply_differential(
+                &w,
+                &mut self.differential.positions,
+                &mut self.differential.normals,
             )
-        };
+            .map_err(|e| e.to_string())?;
+        shapes
+            .apply_full(
+                &[w0, w[0], w[1], w[2], w[3]],
+                &mut self.full.positions,
+                &mut self.full.normals,
+            )
+            .map_err(|e| e.to_string())?;
         if self.use_exercise {
             self.exercise_note = self.run_exercise(&w);
         } else {
             self.exercise_note.clear();
         }
-        note.push_str(&format!(
-            " Full form's base weight: {}.",
-            match self.base_weight {
-                Some(b) => format_number(b),
-                None => "1 − Σw".into(),
-            }
-        ));
-        note.push_str(&format!(
-            " Weights: {}.",
+        self.differential.mark_dirty();
+        self.full.mark_dirty();
+
+        let (left, right) = self.head_positions();
+        let both = self.show == Show::Both;
+        let mut parts = Vec::new();
+        if left.is_some() {
+            parts.push(format!(
+                "Differential{}: base + Σ w·delta; the weights sum to {} (any sum is fine).",
+                if both { " (left)" } else { "" },
+                format_number(sum)
+            ));
+        }
+        if right.is_some() {
+            let verdict = if (total - 1.0).abs() > 1e-3 {
+                format!(
+                    ", not 1: every vertex's offset from the head's centre (the mesh's origin) is multiplied by {}",
+                    format_number(total)
+                )
+            } else if self.base_weight.is_none() {
+                " (the base weight is 1 − Σw): the same face as the differential form".into()
+            } else {
+                String::new()
+            };
+            parts.push(format!(
+                "Full{}: base weight {} + targets {} = {}{}.",
+                if both { " (right)" } else { "" },
+                format_number(w0),
+                format_number(sum),
+                format_number(total),
+                verdict
+            ));
+        }
+        parts.push(format!(
+            "Weights: {}.",
             self.face
                 .names
                 .iter()
@@ -205,23 +270,38 @@ impl FaceFigure {
                 .join(", ")
         ));
         if !self.exercise_note.is_empty() {
-            note.push(' ');
-            note.push_str(&self.exercise_note);
+            parts.push(self.exercise_note.clone());
         }
-        self.mesh.mark_dirty();
+
         frame.grid(8, 0.5);
-        // The head swings gently (±25° over the 4 s loop) so the shapes show from the side too.
-        let yaw = 25f32.to_radians() * (std::f32::consts::TAU * t / 4.0).sin();
-        let head = Mat4::from_translation(Vec3::new(0.0, 1.2, 0.0)) * Mat4::from_rotation_y(yaw);
-        frame.mesh(mesh, head, Vec3::new(0.85, 0.62, 0.48));
-        for x in [-0.27f32, 0.27] {
-            let eye = head
-                * Mat4::from_scale(Vec3::splat(face_scale))
-                * Mat4::from_translation(Vec3::new(x, 0.22, 0.72))
-                * Mat4::from_scale(Vec3::splat(0.09));
-            frame.mesh(MeshId::SPHERE, eye, palette::DARK);
+        // The heads swing gently (±25° over the loop) so the shapes show from the side too.
+        let yaw = 25f32.to_radians() * (std::f32::consts::TAU * t / LOOP_SECONDS).sin();
+        // The full form scales the face about its origin by `total`; the eyes are separate
+        // spheres, so they are scaled by hand to stay on the face.
+        for (at, mesh, scale, name) in [
+            (left, meshes[0], 1.0, "differential".to_string()),
+            (
+                right,
+                meshes[1],
+                total,
+                format!("full (sum {})", format_number(total)),
+            ),
+        ] {
+            let Some(at) = at else { continue };
+            let head = Mat4::from_translation(at) * Mat4::from_rotation_y(yaw);
+            frame.mesh(mesh, head, Vec3::new(0.85, 0.62, 0.48));
+            for x in [-0.27f32, 0.27] {
+                let eye = head
+                    * Mat4::from_scale(Vec3::splat(scale))
+                    * Mat4::from_translation(Vec3::new(x, 0.22, 0.72))
+                    * Mat4::from_scale(Vec3::splat(0.09));
+                frame.mesh(MeshId::SPHERE, eye, palette::DARK);
+            }
+            if both {
+                frame.label(at + Vec3::new(-0.3, 1.3, 0.0), name, palette::DARK);
+            }
         }
-        Ok(note)
+        Ok(parts.join(" "))
     }
 
     fn run_exercise(&mut self, w: &[f32; 4]) -> String {
@@ -240,10 +320,8 @@ impl FaceFigure {
                     if (e > TOLERANCE || e.is_nan()) && worst.is_none() {
                         worst = Some((v, p, r));
                     }
-                    // The face shows the student's vertices in the differential form only.
-                    if !self.full {
-                        self.mesh.positions[v] = if p.is_finite() { p } else { r };
-                    }
+                    // The differential head shows the student's vertices.
+                    self.differential.positions[v] = if p.is_finite() { p } else { r };
                 }
                 Err(f) => {
                     return failure_note("exercise 10.1 differential_vertex", EXERCISE_FILE, &f)

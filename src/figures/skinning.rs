@@ -21,7 +21,7 @@ use crate::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig, SkinnedCha
 use crate::skinning::{
     dual_quat_palette, mesh_volume, ring_area, skin_dqs, skin_lbs, skinning_palette, SkinWeights,
 };
-use glam::{Affine3A, Mat4, Quat, Vec3, Vec4};
+use glam::{Affine3A, Mat4, Vec3, Vec4};
 
 const EXERCISE_FILE: &str = "src/exercises/skinning.rs";
 /// How close the student's skinned positions must be to the reference's, metres.
@@ -757,16 +757,13 @@ impl HumanFigure {
 
     fn overlay(&mut self, frame: &mut Frame, where_: &str) -> String {
         if self.show_skeleton {
+            // The skeleton is inside the body: drawn over it, as an X-ray.
             let parents = self.character.skeleton.parents();
             for (i, m) in self.model.iter().enumerate() {
                 let p = Vec3::from(m.translation);
-                frame.mesh(
-                    MeshId::SPHERE,
-                    Mat4::from_scale_rotation_translation(Vec3::splat(0.015), Quat::IDENTITY, p),
-                    palette::DARK,
-                );
+                frame.point_on_top(p, 0.018, palette::DARK);
                 if parents[i] >= 0 {
-                    frame.line(
+                    frame.line_on_top(
                         Vec3::from(self.model[parents[i] as usize].translation),
                         p,
                         palette::DARK,

@@ -1,5 +1,5 @@
 //! Bindings for lesson 10, "Blend shapes": thin wrappers around [`crate::figures::blend_shapes`].
-//! The face's mesh is created once and rewritten in place each frame.
+//! The two heads' meshes (differential, full) are created once and rewritten in place each frame.
 
 use super::{js, Viewer};
 use crate::draw::MeshId;
@@ -11,7 +11,7 @@ use wasm_bindgen::prelude::*;
 #[wasm_bindgen]
 pub struct BlendShapeFaceScene {
     scene: FaceFigure,
-    mesh: Option<MeshId>,
+    meshes: Option<[MeshId; 2]>,
 }
 
 #[wasm_bindgen]
@@ -20,7 +20,10 @@ impl BlendShapeFaceScene {
     pub fn new() -> BlendShapeFaceScene {
         let mut scene = FaceFigure::new();
         scene.set_runner(super::sandbox::run);
-        BlendShapeFaceScene { scene, mesh: None }
+        BlendShapeFaceScene {
+            scene,
+            meshes: None,
+        }
     }
 
     #[wasm_bindgen(js_name = targetNames)]
@@ -34,10 +37,17 @@ impl BlendShapeFaceScene {
         self.scene.set_weight(k, w).map_err(js)
     }
 
-    /// "full" or "differential".
-    #[wasm_bindgen(js_name = setForm)]
-    pub fn set_form(&mut self, name: &str) -> Result<(), JsError> {
-        self.scene.set_form(name).map_err(js)
+    /// "both" (differential left, full right), "differential" or "full".
+    #[wasm_bindgen(js_name = setShow)]
+    pub fn set_show(&mut self, name: &str) -> Result<(), JsError> {
+        self.scene.set_show(name).map_err(js)
+    }
+
+    /// `[time (s), four weights, Σ w, base + Σ w]` per sample over the 4 s loop; `samples` in
+    /// [2, 10000].
+    #[wasm_bindgen(js_name = weightCurves)]
+    pub fn weight_curves(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+        self.scene.weight_curves(samples).map_err(js)
     }
 
     /// The full form's base weight in [0, 1], or negative for "1 − Σ wₖ".
@@ -58,33 +68,40 @@ impl BlendShapeFaceScene {
 
     /// Blends at `time_sec`, uploads and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
-        let id = match self.mesh {
-            Some(id) => id,
+        let ids = match self.meshes {
+            Some(ids) => ids,
             None => {
-                let data = MeshData {
-                    positions: self.scene.mesh.positions.clone(),
-                    normals: self.scene.mesh.normals.clone(),
-                    indices: self.scene.indices().to_vec(),
+                let indices = self.scene.indices().to_vec();
+                let mut create = |positions: &[glam::Vec3]| {
+                    let data = MeshData {
+                        positions: positions.to_vec(),
+                        normals: vec![glam::Vec3::Y; positions.len()],
+                        indices: indices.clone(),
+                    };
+                    viewer.renderer.create_mesh(&viewer.gpu, &data, None)
                 };
-                let id = viewer.renderer.create_mesh(&viewer.gpu, &data, None);
-                self.mesh = Some(id);
-                id
+                let ids = [
+                    create(&self.scene.differential.positions),
+                    create(&self.scene.full.positions),
+                ];
+                self.meshes = Some(ids);
+                ids
             }
         };
         let note = self
             .scene
-            .draw(&mut viewer.renderer.frame, id, time_sec)
+            .draw(&mut viewer.renderer.frame, ids, time_sec)
             .map_err(js)?;
-        if self.scene.mesh.take_dirty() {
-            viewer
-                .renderer
-                .update_mesh(
-                    &viewer.gpu,
-                    id,
-                    &self.scene.mesh.positions,
-                    &self.scene.mesh.normals,
-                )
-                .map_err(|e| JsError::new(&e))?;
+        for (id, mesh) in ids
+            .into_iter()
+            .zip([&mut self.scene.differential, &mut self.scene.full])
+        {
+            if mesh.take_dirty() {
+                viewer
+                    .renderer
+                    .update_mesh(&viewer.gpu, id, &mesh.positions, &mesh.normals)
+                    .map_err(|e| JsError::new(&e))?;
+            }
         }
         viewer.present()?;
         Ok(note)

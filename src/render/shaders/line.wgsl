@@ -2,7 +2,8 @@
 struct VertexIn {
     @location(0) position: vec3<f32>,
     @location(1) color: vec4<f32>,
-    // Pulls axes and arrows in front of grid lines at the same place (no z-fighting).
+    // Pulls axes and arrows in front of grid lines at the same place (no z-fighting); 1 draws
+    // the line over everything (a skeleton inside a body).
     @location(2) depth_bias: f32,
 };
 struct VertexOut {
@@ -14,7 +15,8 @@ struct VertexOut {
 fn vs_main(in: VertexIn) -> VertexOut {
     var out: VertexOut;
     out.clip = globals.proj * globals.view * vec4<f32>(in.position, 1.0);
-    out.clip.z = out.clip.z - in.depth_bias * out.clip.w;
+    // Never pulled past the near plane; a vertex already in front of it stays clipped.
+    out.clip.z = max(out.clip.z - in.depth_bias * out.clip.w, min(out.clip.z, 0.0));
     out.color = in.color;
     return out;
 }

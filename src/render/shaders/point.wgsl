@@ -1,7 +1,7 @@
 // Point sprites: one camera-facing quad per instance, shaded as a small sphere (billboard).
 struct InstanceIn {
     @location(0) center: vec3<f32>,
-    @location(1) radius: f32,      // world units
+    @location(1) radius: f32,      // world units; negative: drawn over everything
     @location(2) color: vec4<f32>,
 };
 struct VertexOut {
@@ -19,9 +19,13 @@ fn vs_main(@builtin(vertex_index) vertex: u32, in: InstanceIn) -> VertexOut {
     let corner = corners[vertex % 6u];
     // Offset in view space, so the quad always faces the camera.
     let center_view = globals.view * vec4<f32>(in.center, 1.0);
-    let pos_view = center_view + vec4<f32>(corner * in.radius, 0.0, 0.0);
+    let pos_view = center_view + vec4<f32>(corner * abs(in.radius), 0.0, 0.0);
     var out: VertexOut;
     out.clip = globals.proj * pos_view;
+    if (in.radius < 0.0) {
+        // On top: the nearest depth, unless the disc is in front of the near plane (clipped).
+        out.clip.z = min(out.clip.z, 0.0);
+    }
     out.uv = corner;
     out.color = in.color;
     return out;
