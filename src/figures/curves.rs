@@ -36,7 +36,7 @@ pub const HOLD_SEC: f32 = 0.5;
 /// The most keys the editor takes (Lagrange takes at most [`MAX_LAGRANGE_KEYS`]).
 pub const MAX_KEYS: usize = 1000;
 /// About how many points the drawn path has in all (at least one per segment).
-const PATH_POINTS: usize = 400;
+pub const PATH_POINTS: usize = 400;
 const ARC_TABLE_SUBDIVISIONS: usize = 24;
 const EXERCISES_FILE: &str = "src/exercises/curves.rs";
 

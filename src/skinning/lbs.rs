@@ -100,7 +100,7 @@ pub fn skin_lbs(
 /// Which implementation [`skin_lbs`] runs: the portable one (SSE2 on x86-64, simd128 in wasm,
 /// through glam), or on an x86-64 CPU with AVX2 and FMA (detected at run time, as skinning
 /// libraries dispatch) the same formula with fused multiply-adds and 256-bit loads of two matrix
-/// columns at once. The two agree to rounding (a fused multiply-add rounds once). [`skin_dqs`]
+/// columns at once. The two agree to rounding (a fused multiply-add rounds once). [`super::skin_dqs`]
 /// (super::skin_dqs) picks its kernel the same way.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LbsKernel {

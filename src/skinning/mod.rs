@@ -41,7 +41,7 @@ mod lbs;
 pub mod rigs;
 mod weights;
 
-pub use dqs::{blend_dual_quats, dqs_vertex, dual_quat_palette, skin_dqs};
+pub use dqs::{blend_dual_quats, dqs_vertex, dual_quat_palette, skin_dqs, RIGID_TOLERANCE};
 pub use lbs::{
     lbs_vertex, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, skin_lbs_with,
     skinning_palette, LbsKernel, SkinVertex,
