@@ -18,3 +18,17 @@ fn output_color(linear: vec3<f32>) -> vec3<f32> {
     }
     return linear;
 }
+
+// The lit meshes' shading (mesh.wgsl, skin.wgsl): Blinn-Phong with a hemisphere ambient term, in
+// linear RGB, for a surface of colour `albedo` at `world_pos` with normal `world_normal`.
+fn shade(albedo: vec3<f32>, world_pos: vec3<f32>, world_normal: vec3<f32>) -> vec3<f32> {
+    let n = normalize(world_normal);
+    let l = globals.light_dir.xyz;
+    let v = normalize(globals.eye.xyz - world_pos);
+    let h = normalize(l + v);
+    // Sky above, ground bounce below: cheap ambient that still shows the shape's orientation.
+    let ambient = mix(vec3<f32>(0.20, 0.19, 0.18), vec3<f32>(0.32, 0.36, 0.42), 0.5 + 0.5 * n.y);
+    let diffuse = max(dot(n, l), 0.0);
+    let specular = select(0.0, pow(max(dot(n, h), 0.0), 48.0), diffuse > 0.0);
+    return albedo * (ambient + 0.85 * diffuse) + vec3<f32>(0.25 * specular);
+}

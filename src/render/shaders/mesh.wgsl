@@ -1,4 +1,4 @@
-// Lit triangle meshes: Blinn-Phong with a hemisphere ambient term.
+// Lit triangle meshes, shaded by common.wgsl's `shade` (or unlit).
 struct Object {
     model: mat4x4<f32>,
     normal_matrix: mat4x4<f32>, // inverse transpose of the model matrix (normals stay perpendicular)
@@ -36,14 +36,6 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     if (object.flags.y > 0.5) {
         return vec4<f32>(output_color(albedo), in.color.a);
     }
-    let n = normalize(in.world_normal);
-    let l = globals.light_dir.xyz;
-    let v = normalize(globals.eye.xyz - in.world_pos);
-    let h = normalize(l + v);
-    // Sky above, ground bounce below: cheap ambient that still shows the shape's orientation.
-    let ambient = mix(vec3<f32>(0.20, 0.19, 0.18), vec3<f32>(0.32, 0.36, 0.42), 0.5 + 0.5 * n.y);
-    let diffuse = max(dot(n, l), 0.0);
-    let specular = select(0.0, pow(max(dot(n, h), 0.0), 48.0), diffuse > 0.0);
-    let lit = albedo * (ambient + 0.85 * diffuse) + vec3<f32>(0.25 * specular);
+    let lit = shade(albedo, in.world_pos, in.world_normal);
     return vec4<f32>(output_color(lit), in.color.a);
 }

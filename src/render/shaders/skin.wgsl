@@ -31,17 +31,10 @@ fn vs_main(in: VertexIn) -> VertexOut {
     return out;
 }
 
-// The lighting of mesh.wgsl's fs_main (lit only), so a GPU-skinned mesh looks like a CPU-skinned one.
+// Shaded like mesh.wgsl's lit meshes (common.wgsl's `shade`), so a GPU-skinned mesh looks like a
+// CPU-skinned one.
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    let albedo = in.color.rgb;
-    let n = normalize(in.world_normal);
-    let l = globals.light_dir.xyz;
-    let v = normalize(globals.eye.xyz - in.world_pos);
-    let h = normalize(l + v);
-    let ambient = mix(vec3<f32>(0.20, 0.19, 0.18), vec3<f32>(0.32, 0.36, 0.42), 0.5 + 0.5 * n.y);
-    let diffuse = max(dot(n, l), 0.0);
-    let specular = select(0.0, pow(max(dot(n, h), 0.0), 48.0), diffuse > 0.0);
-    let lit = albedo * (ambient + 0.85 * diffuse) + vec3<f32>(0.25 * specular);
+    let lit = shade(in.color.rgb, in.world_pos, in.world_normal);
     return vec4<f32>(output_color(lit), in.color.a);
 }
