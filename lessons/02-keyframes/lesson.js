@@ -233,8 +233,22 @@ if (keysViewer) {
       const [x, y] = [editor.keys[3 * k + 1], editor.keys[3 * k + 2]];
       view.dot(x, y, 7, drag?.kind === 'key' && drag.index === k ? '#b34700' : C.key);
       const [px, py] = view.toPx(x, y);
+      // The number sits off the tangent handle's line, on its upper side (up and right without
+      // handles), so a handle never crosses it.
+      let [ox, oy] = [9, -8];
+      if (isCubic()) {
+        const hd = handleEnds(k);
+        const [pa, pb] = [view.toPx(...hd.in), view.toPx(...hd.out)];
+        const [tx, ty] = [pb[0] - pa[0], pb[1] - pa[1]];
+        const len = Math.hypot(tx, ty);
+        if (len > 1e-3) {
+          let [nx, ny] = [ty / len, -tx / len];
+          if (ny > 0) [nx, ny] = [-nx, -ny];
+          [ox, oy] = [15 * nx - 4, 15 * ny + 4];
+        }
+      }
       ctx.fillStyle = C.ink;
-      ctx.fillText(String(k), px + 9, py - 8);
+      ctx.fillText(String(k), px + ox, py + oy);
     }
     view.dot(...scene.position(tau), 6, C.ball);
   }
