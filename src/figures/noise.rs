@@ -423,7 +423,7 @@ impl TerrainFigure for Noise2d {
 pub const OCTAVES_MAX_N: u32 = 9;
 
 /// Figure 3: the fractal sum with octaves 0..=N; the profile along `v = V_SLICE` is drawn on the
-/// terrain (orange, with the sum without the newest octave in grey) and plotted octave by octave.
+/// terrain (orange, with the sum without the newest octave in dark grey) and plotted octave by octave.
 pub struct Octaves {
     perm: Permutation,
     fractal: Fractal,
@@ -531,7 +531,7 @@ impl Octaves {
         };
         frame.polyline(&profile(&self.fractal), palette::ORANGE);
         if self.fractal.n > 0 {
-            frame.polyline(&profile(&previous), palette::GREY);
+            frame.polyline(&profile(&previous), palette::DARK);
         }
         frame.label(
             Vec3::new(1.05, 0.0, V_SLICE),
