@@ -63,6 +63,42 @@ fn the_default_cylinder_shows_the_collapse_and_the_controls_change_it() {
 }
 
 #[test]
+fn the_lines_along_the_tubes_show_the_twist() {
+    use inbetween::figures::skinning::{CYLINDER_RINGS, DQS_OFFSET, LBS_OFFSET};
+    let mut f = CylinderFigure::new();
+    f.set_bend_deg(0.0).unwrap();
+    f.set_twist_deg(180.0).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS).unwrap();
+    // The stripes are the polylines after each tube's elbow ring: 2 tubes × 2 stripes × one
+    // segment between neighbouring rings, two vertices per segment.
+    let ring = 2 * inbetween::figures::skinning::CYLINDER_AROUND;
+    let stripe = 2 * (CYLINDER_RINGS - 1);
+    let tube = ring + 2 * stripe;
+    let lines: Vec<Vec3> = frame.lines.iter().map(|v| Vec3::from(v.position)).collect();
+    let front = |start: usize, offset: Vec3| -> Vec<Vec3> {
+        let s = start + ring + stripe;
+        lines[s..s + stripe].iter().map(|p| *p - offset).collect()
+    };
+    // Grid lines come first; the LBS tube's ring and stripes, then the DQS tube's.
+    let first = lines.len() - 2 * tube;
+    let (lbs, dqs) = (front(first, LBS_OFFSET), front(first + tube, DQS_OFFSET));
+    // Both start in front (+z) at the shoulder end; DQS ends behind (−z) at the wrist, turned
+    // half round, and keeps its distance to the axis; LBS runs into the pinch at the elbow.
+    for s in [&lbs, &dqs] {
+        assert!(s[0].z > 0.2 && s[0].y.abs() < 0.05, "{:?}", s[0]);
+    }
+    let end = *dqs.last().unwrap();
+    assert!(end.z < -0.2 && end.y.abs() < 0.05, "{end:?}");
+    assert!(dqs.iter().all(|p| (p.y * p.y + p.z * p.z).sqrt() > 0.2));
+    let elbow = lbs[stripe / 2];
+    assert!(
+        (elbow.y * elbow.y + elbow.z * elbow.z).sqrt() < 0.02,
+        "{elbow:?}"
+    );
+}
+
+#[test]
 fn area_curves_start_at_one_and_lbs_falls_below_dqs() {
     let f = CylinderFigure::new();
     let rows = f.area_curves(19).unwrap();
@@ -101,6 +137,37 @@ fn panicking(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
     Err(Failure::Panicked(
         "panicked at src/exercises/skinning.rs:20:5:\nboom".into(),
     ))
+}
+
+/// A 9.2 without the antipodality fix (the rest as the reference).
+fn no_sign_fix(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    use inbetween::exercises::run::Flat;
+    use inbetween::rigid::DualQuat;
+    if name != "blend_dual_quats" {
+        return direct(name, args);
+    }
+    let mut input = args;
+    let q = Vec::<DualQuat>::take(&mut input).unwrap();
+    let w = Vec::<f32>::take(&mut input).unwrap();
+    let mut b = DualQuat::IDENTITY * 0.0;
+    for (q, w) in q.iter().zip(&w) {
+        b = b + *q * *w;
+    }
+    let mut out = Vec::new();
+    b.normalized().put(&mut out);
+    Ok(out)
+}
+
+#[test]
+fn a_blend_without_the_sign_fix_differs_in_the_figure() {
+    let mut f = CylinderFigure::new();
+    f.set_use_exercise(true);
+    f.set_runner(no_sign_fix);
+    let note = f.draw(&mut Frame::default(), IDS).unwrap();
+    assert!(
+        note.contains("blend_dual_quats (9.2), applied to the vertex, differs"),
+        "{note}"
+    );
 }
 
 #[test]

@@ -130,6 +130,10 @@ pub const CYLINDER_RINGS: usize = 41;
 pub const CYLINDER_AROUND: usize = 24;
 
 impl CylinderFigure {
+    /// The vertices (index around each ring) the grey lines along the tube run through: on top
+    /// (+y) and in front (+z) in the bind pose.
+    pub const STRIPES: [usize; 2] = [0, CYLINDER_AROUND / 4];
+
     /// Bent 90°, not twisted, falloff 0.15 m, no heat map.
     pub fn new() -> Self {
         let rig = cylinder_rig(1.0, 0.25, CYLINDER_RINGS, CYLINDER_AROUND)
@@ -309,7 +313,20 @@ impl CylinderFigure {
         for (v, &p) in positions.iter().enumerate() {
             let j = self.skin.joints()[v];
             let w = self.skin.weights()[v];
-            let dqs: Vec<DualQuat> = j.iter().map(|&j| self.dual_quats[j as usize]).collect();
+            // q and −q are the same motion, and a palette may give either: the elbow's is
+            // passed negated, so a blend without the antipodality fix shows (this rig's joints
+            // otherwise all sit on one hemisphere, where a missing fix changes nothing).
+            let dqs: Vec<DualQuat> = j
+                .iter()
+                .map(|&j| {
+                    let q = self.dual_quats[j as usize];
+                    if j == 1 {
+                        q * -1.0
+                    } else {
+                        q
+                    }
+                })
+                .collect();
             match run::blend_dual_quats(self.runner, dqs, w.to_vec()) {
                 Ok(q) => student.push(q.transform_point(p)),
                 Err(f) => {
@@ -371,6 +388,20 @@ impl CylinderFigure {
                 .map(|p| offset + c + (*p - c) * 1.03)
                 .collect();
             frame.polyline(&lifted, palette::DARK);
+            // Two rows of vertices along the tube (on top and facing the camera in the bind
+            // pose): a twist shows as these lines turning round the tube (DQS), or running
+            // into the pinch (LBS); a plain tube looks the same however far it is twisted.
+            for k in Self::STRIPES {
+                let stripe: Vec<Vec3> = (0..self.rig.rings)
+                    .map(|r| {
+                        let s = self.rig.ring_start(r);
+                        let ring = &skinned.positions[s..s + self.rig.around];
+                        let c = ring.iter().sum::<Vec3>() / ring.len() as f32;
+                        offset + c + (ring[k] - c) * 1.03
+                    })
+                    .collect();
+                frame.polyline(&stripe, palette::GREY);
+            }
             // The skeleton: joints and bones, drawn beside the tube's axis.
             let joints: Vec<Vec3> = self
                 .model
