@@ -15,7 +15,7 @@ pub mod grid;
 pub use grid::{cell_index, for_each_neighbour_naive, Grid, MAX_GRID_CELLS};
 
 use crate::particles::{semi_implicit_euler_step, Rng, Sphere};
-use glam::Vec3;
+use glam::{BVec4A, Vec3, Vec4};
 
 /// The most boids a flock may hold (the naive search is quadratic: keep it well below this).
 pub const MAX_BOIDS: usize = 200_000;
@@ -368,7 +368,7 @@ impl Flock {
             }
             let q = self.positions[j];
             let d = p - q;
-            rules.add(&mut acc, d, d.length_squared(), v, q, self.velocities[j]);
+            rules.add(&mut acc, d, d.length_squared(), v, self.velocities[j]);
         });
         self.finish_steering(params, p, v, &acc, leader, predator)
     }
@@ -409,7 +409,7 @@ impl Flock {
     ) -> Vec3 {
         let mut force = Vec3::ZERO;
         if acc.n_c > 0 {
-            force += params.cohesion.weight * (acc.centre / acc.n_c as f32 - p);
+            force += params.cohesion.weight * (acc.offset / acc.n_c as f32);
         }
         if acc.n_a > 0 {
             force += params.alignment.weight * (acc.mean_v / acc.n_a as f32 - v);
@@ -527,7 +527,7 @@ impl Flock {
                 let q = sp[t];
                 if (q - p).length_squared() <= r2 && t != s && t != pred {
                     let d = p - q;
-                    rules.add(&mut acc, d, d.length_squared(), v, q, sv[t]);
+                    rules.add(&mut acc, d, d.length_squared(), v, sv[t]);
                 }
             }
         });
@@ -536,10 +536,15 @@ impl Flock {
 
     /// The neighbour sums of the boid in slot `s` of cell `cell` without a distance law,
     /// four candidates at a time (SSE2 natively, simd128 in wasm, through glam's `Vec4`): every
-    /// test becomes a lane mask (in the ball, in view, not itself, not the predator) and every
-    /// sum a masked add, so there is no branch per candidate. The tests are the scalar ones,
-    /// lane by lane, so the neighbour sets are the same; the sums run in another order (four
-    /// partial sums), so they differ from the scalar path's by rounding.
+    /// test becomes a lane mask (in the ball, in view) and every sum a masked add, so there is
+    /// no branch per candidate. The tests are the scalar ones, lane by lane, so the neighbour
+    /// sets are the same; the sums run in another order (four partial sums), so they differ
+    /// from the scalar path's by rounding.
+    ///
+    /// What keeps the loop short (it is most of the step): each run's six arrays are sliced
+    /// once, so its full chunks of four need no bounds check and no lane mask (only a run's last,
+    /// partial chunk is masked); the counts are sums of lane masks, so there is no bit count;
+    /// cohesion sums `p − q`, which the distance test computed anyway.
     fn steer_simd(
         &self,
         params: &BoidParams,
@@ -547,7 +552,6 @@ impl Flock {
         s: usize,
         cell: (usize, usize, usize),
     ) -> Neighbours {
-        use glam::Vec4;
         let grid = &self.grid;
         let [xs, ys, zs, vxs, vys, vzs] = grid.soa();
         let (p, v) = (
@@ -558,84 +562,155 @@ impl Flock {
             v_len: v.length(),
             ..*base_rules
         };
-        let (px, py, pz) = (Vec4::splat(p.x), Vec4::splat(p.y), Vec4::splat(p.z));
-        let (vx, vy, vz) = (Vec4::splat(v.x), Vec4::splat(v.y), Vec4::splat(v.z));
-        let (rc2, ra2, rs2) = (
-            Vec4::splat(rules.rc2),
-            Vec4::splat(rules.ra2),
-            Vec4::splat(rules.rs2),
-        );
-        // The field of view (see `NeighbourRules::behind`): b = cos(fov/2)|v|.
-        let check_view = !rules.all_round && rules.v_len > 0.0;
-        let b = rules.cos_half * rules.v_len;
-        let (b_non_negative, bb) = (b >= 0.0, Vec4::splat(b * b));
-        let zero = Vec4::ZERO;
-        let lanes = Vec4::new(0.0, 1.0, 2.0, 3.0);
-        // Slot numbers as f32 are exact (below MAX_BOIDS < 2²⁴). The boid itself is not
-        // masked out: it is always in its own run, at d2 = 0, so it adds exactly p and v to
-        // the cohesion and alignment sums (and nothing to separation); that is taken off after
-        // the loop. The predator's x is NaN in these arrays for the step (see
-        // `steer_all_with_grid`), which fails every comparison.
-        let load = |a: &[f32], t: usize| Vec4::from_slice(&a[t..t + 4]);
-        // Sixteen SIMD registers: the sums of positions and velocities stay in them; the counts
-        // go through lane bitmasks, and separation (rare: its radius is small) is summed across
-        // lanes when it happens.
-        let (mut cx, mut cy, mut cz, mut nc) = (zero, zero, zero, 0u32);
-        let (mut mx, mut my, mut mz, mut na) = (zero, zero, zero, 0u32);
-        let mut sep = Vec3::ZERO;
+        let kernel = SimdKernel::new(&rules, p, v);
+        let mut sums = SimdSums::default();
+        let mut runs = [(0u32, 0u32); 9];
         let r2 = params.search_radius().powi(2);
-        grid.for_each_run_near(p, cell, r2, |run| {
-            let end = Vec4::splat(run.end as f32);
-            let mut t = run.start;
-            while t < run.end {
-                let slot = Vec4::splat(t as f32) + lanes;
-                let valid = slot.cmplt(end);
-                let (qx, qy, qz) = (load(xs, t), load(ys, t), load(zs, t));
-                // d = p − q, d2 = |d|² (the order of glam's length_squared).
-                let (dx, dy, dz) = (px - qx, py - qy, pz - qz);
-                let d2 = dx * dx + dy * dy + dz * dz;
-                let mut ok = valid;
-                if check_view {
-                    // a = (q − p)·v; d2 > 0 is never behind.
-                    let a = (-dx) * vx + (-dy) * vy + (-dz) * vz;
-                    let (a2, b2d2) = (a * a, bb * d2);
-                    let negative = a.cmplt(zero);
-                    let behind = if b_non_negative {
-                        negative | a2.cmplt(b2d2)
-                    } else {
-                        negative & a2.cmpgt(b2d2)
-                    };
-                    ok &= !(behind & d2.cmpgt(zero));
-                }
-                let mc = ok & d2.cmple(rc2);
-                cx += Vec4::select(mc, qx, zero);
-                cy += Vec4::select(mc, qy, zero);
-                cz += Vec4::select(mc, qz, zero);
-                nc += mc.bitmask().count_ones();
-                let ma = ok & d2.cmple(ra2);
-                mx += Vec4::select(ma, load(vxs, t), zero);
-                my += Vec4::select(ma, load(vys, t), zero);
-                mz += Vec4::select(ma, load(vzs, t), zero);
-                na += ma.bitmask().count_ones();
-                let ms = ok & d2.cmple(rs2) & d2.cmpgt(zero);
-                if ms.any() {
-                    sep += Vec3::new(
-                        Vec4::select(ms, dx / d2, zero).element_sum(),
-                        Vec4::select(ms, dy / d2, zero).element_sum(),
-                        Vec4::select(ms, dz / d2, zero).element_sum(),
-                    );
-                }
-                t += 4;
+        let n_runs = grid.runs_near(p, cell, r2, &mut runs);
+        // Slot numbers as f32 are exact (below MAX_BOIDS < 2²⁴). The boid itself is not
+        // masked out: it is always in its own run, at d2 = 0, so it adds exactly v to the
+        // alignment sum, 1 to both counts (and nothing to cohesion's p − q or to separation);
+        // that is taken off after the loop. The predator's x is NaN in these arrays for the
+        // step (see `steer_all_with_grid`), which fails every comparison.
+        for &(start, end) in &runs[..n_runs] {
+            let (start, len) = (start as usize, (end - start) as usize);
+            // The arrays are padded with 3 entries, so the last chunk can always be loaded.
+            let padded = (len + 3) & !3;
+            // Each array as chunks of four, all cut to one length: an index loop over them
+            // needs no bounds checks (a zip of six iterators measured slower, in wasm too).
+            let r = start..start + padded;
+            let (qx, qy, qz) = (
+                chunks4(&xs[r.clone()]),
+                chunks4(&ys[r.clone()]),
+                chunks4(&zs[r.clone()]),
+            );
+            let (wx, wy, wz) = (
+                chunks4(&vxs[r.clone()]),
+                chunks4(&vys[r.clone()]),
+                chunks4(&vzs[r]),
+            );
+            let n4 = qx.len();
+            let (qy, qz, wx, wy, wz) = (&qy[..n4], &qz[..n4], &wx[..n4], &wy[..n4], &wz[..n4]);
+            let lanes = |c: usize| [qx[c], qy[c], qz[c], wx[c], wy[c], wz[c]].map(Vec4::from_array);
+            let full = len / 4;
+            for c in 0..full {
+                kernel.add(&mut sums, BVec4A::splat(true), lanes(c));
             }
-        });
+            if full < n4 {
+                // The partial chunk: lanes past the run's end are other cells' boids.
+                let valid = Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat((len % 4) as f32));
+                kernel.add(&mut sums, valid, lanes(full));
+            }
+        }
         // Take the boid itself off (see above).
+        let count = |c: Vec4| (c.element_sum() as u32).saturating_sub(1);
         Neighbours {
-            n_c: nc.saturating_sub(1),
-            n_a: na.saturating_sub(1),
-            centre: Vec3::new(cx.element_sum(), cy.element_sum(), cz.element_sum()) - p,
-            mean_v: Vec3::new(mx.element_sum(), my.element_sum(), mz.element_sum()) - v,
-            sep,
+            n_c: count(sums.nc),
+            n_a: count(sums.na),
+            offset: -Vec3::new(
+                sums.dx.element_sum(),
+                sums.dy.element_sum(),
+                sums.dz.element_sum(),
+            ),
+            mean_v: Vec3::new(
+                sums.wx.element_sum(),
+                sums.wy.element_sum(),
+                sums.wz.element_sum(),
+            ) - v,
+            sep: sums.sep,
             law: Vec3::ZERO,
+        }
+    }
+}
+
+/// `a` as chunks of four (a trailing partial chunk is left out).
+#[inline(always)]
+fn chunks4(a: &[f32]) -> &[[f32; 4]] {
+    a.as_chunks::<4>().0
+}
+
+/// The lane sums of [`Flock::steer_simd`]: cohesion's `Σ (p − q)` and count, alignment's
+/// `Σ w` and count (counts as floats: a lane mask and 1.0 is 1.0 or 0.0), separation.
+#[derive(Default)]
+struct SimdSums {
+    dx: Vec4,
+    dy: Vec4,
+    dz: Vec4,
+    nc: Vec4,
+    wx: Vec4,
+    wy: Vec4,
+    wz: Vec4,
+    na: Vec4,
+    sep: Vec3,
+}
+
+/// One boid's tests, splatted to four lanes, for [`Flock::steer_simd`].
+struct SimdKernel {
+    p: [Vec4; 3],
+    v: [Vec4; 3],
+    rc2: Vec4,
+    ra2: Vec4,
+    rs2: Vec4,
+    /// `(cos(fov/2)|v|)²` and whether `cos(fov/2)|v| ≥ 0` (see [`NeighbourRules::behind`]).
+    bb: Vec4,
+    b_non_negative: bool,
+    check_view: bool,
+}
+
+impl SimdKernel {
+    fn new(rules: &NeighbourRules, p: Vec3, v: Vec3) -> Self {
+        let b = rules.cos_half * rules.v_len;
+        Self {
+            p: [Vec4::splat(p.x), Vec4::splat(p.y), Vec4::splat(p.z)],
+            v: [Vec4::splat(v.x), Vec4::splat(v.y), Vec4::splat(v.z)],
+            rc2: Vec4::splat(rules.rc2),
+            ra2: Vec4::splat(rules.ra2),
+            rs2: Vec4::splat(rules.rs2),
+            bb: Vec4::splat(b * b),
+            b_non_negative: b >= 0.0,
+            check_view: !rules.all_round && rules.v_len > 0.0,
+        }
+    }
+
+    /// Adds the candidates `q` (velocities `w`) in the lanes of `valid` that pass the tests.
+    #[inline(always)]
+    fn add(&self, sums: &mut SimdSums, valid: BVec4A, [qx, qy, qz, wx, wy, wz]: [Vec4; 6]) {
+        let zero = Vec4::ZERO;
+        let one = Vec4::ONE;
+        // d = p − q, d2 = |d|² (the order of glam's length_squared).
+        let (dx, dy, dz) = (self.p[0] - qx, self.p[1] - qy, self.p[2] - qz);
+        let d2 = dx * dx + dy * dy + dz * dz;
+        let mut ok = valid;
+        if self.check_view {
+            // a = (q − p)·v = −(d·v); d2 > 0 is never behind (NeighbourRules::behind).
+            let a = (-dx) * self.v[0] + (-dy) * self.v[1] + (-dz) * self.v[2];
+            let (a2, b2d2) = (a * a, self.bb * d2);
+            let negative = a.cmplt(zero);
+            let behind = if self.b_non_negative {
+                negative | a2.cmplt(b2d2)
+            } else {
+                negative & a2.cmpgt(b2d2)
+            };
+            ok &= !(behind & d2.cmpgt(zero));
+        }
+        let mc = ok & d2.cmple(self.rc2);
+        sums.dx += Vec4::select(mc, dx, zero);
+        sums.dy += Vec4::select(mc, dy, zero);
+        sums.dz += Vec4::select(mc, dz, zero);
+        sums.nc += Vec4::select(mc, one, zero);
+        let ma = ok & d2.cmple(self.ra2);
+        sums.wx += Vec4::select(ma, wx, zero);
+        sums.wy += Vec4::select(ma, wy, zero);
+        sums.wz += Vec4::select(ma, wz, zero);
+        sums.na += Vec4::select(ma, one, zero);
+        let ms = ok & d2.cmple(self.rs2) & d2.cmpgt(zero);
+        if ms.any() {
+            // Rare: the separation radius is small.
+            sums.sep += Vec3::new(
+                Vec4::select(ms, dx / d2, zero).element_sum(),
+                Vec4::select(ms, dy / d2, zero).element_sum(),
+                Vec4::select(ms, dz / d2, zero).element_sum(),
+            );
         }
     }
 }
@@ -645,7 +720,8 @@ impl Flock {
 struct Neighbours {
     n_c: u32,
     n_a: u32,
-    centre: Vec3,
+    /// `Σ (q − p)` over the cohesion neighbours: their centre is `p + offset / n_c`.
+    offset: Vec3,
     mean_v: Vec3,
     sep: Vec3,
     law: Vec3,
@@ -699,12 +775,12 @@ impl NeighbourRules {
     /// Adds neighbour `q` (velocity `w`) of the boid at `p` with velocity `v`, where
     /// `d = p − q` and `d2 = |d|²`, unless it is outside the field of view.
     #[inline(always)]
-    fn add(&self, acc: &mut Neighbours, d: Vec3, d2: f32, v: Vec3, q: Vec3, w: Vec3) {
+    fn add(&self, acc: &mut Neighbours, d: Vec3, d2: f32, v: Vec3, w: Vec3) {
         if !self.all_round && self.v_len > 0.0 && d2 > 0.0 && self.behind((-d).dot(v), d2) {
             return;
         }
         if d2 <= self.rc2 {
-            acc.centre += q;
+            acc.offset -= d;
             acc.n_c += 1;
         }
         if d2 <= self.ra2 {
