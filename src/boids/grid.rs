@@ -258,7 +258,7 @@ impl Grid {
         for (kk, &g2z) in gz2.iter().enumerate() {
             for (jj, &g2y) in gy2.iter().enumerate() {
                 let rest = reach2 - g2z - g2y;
-                if !(rest >= 0.0) {
+                if rest.is_nan() || rest < 0.0 {
                     continue;
                 }
                 let half = rest.sqrt();

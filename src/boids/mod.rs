@@ -544,7 +544,8 @@ impl Flock {
     /// What keeps the loop short (it is most of the step): each run's six arrays are sliced
     /// once, so its full chunks of four need no bounds check and no lane mask (only a run's last,
     /// partial chunk is masked); the counts are sums of lane masks, so there is no bit count;
-    /// cohesion sums `p − q`, which the distance test computed anyway.
+    /// cohesion sums `p − q`, which the distance test computed anyway; when cohesion and
+    /// alignment share a radius (the default), one mask and one count serve both.
     fn steer_simd(
         &self,
         params: &BoidParams,
@@ -552,8 +553,7 @@ impl Flock {
         s: usize,
         cell: (usize, usize, usize),
     ) -> Neighbours {
-        let grid = &self.grid;
-        let [xs, ys, zs, vxs, vys, vzs] = grid.soa();
+        let [xs, ys, zs, vxs, vys, vzs] = self.grid.soa();
         let (p, v) = (
             Vec3::new(xs[s], ys[s], zs[s]),
             Vec3::new(vxs[s], vys[s], vzs[s]),
@@ -563,15 +563,49 @@ impl Flock {
             ..*base_rules
         };
         let kernel = SimdKernel::new(&rules, p, v);
+        let r2 = params.search_radius().powi(2);
+        let same_radii = rules.rc2 == rules.ra2;
+        let mut sums = if same_radii {
+            self.simd_sums::<true>(&kernel, p, cell, r2)
+        } else {
+            self.simd_sums::<false>(&kernel, p, cell, r2)
+        };
+        if same_radii {
+            sums.na = sums.nc;
+        }
+        // Take the boid itself off (see `simd_sums`).
+        let count = |c: Vec4| (c.element_sum() as u32).saturating_sub(1);
+        let sum3 = |x: Vec4, y: Vec4, z: Vec4| {
+            Vec3::new(x.element_sum(), y.element_sum(), z.element_sum())
+        };
+        Neighbours {
+            n_c: count(sums.nc),
+            n_a: count(sums.na),
+            offset: -sum3(sums.dx, sums.dy, sums.dz),
+            mean_v: sum3(sums.wx, sums.wy, sums.wz) - v,
+            sep: sums.sep,
+            law: Vec3::ZERO,
+        }
+    }
+
+    /// The lane sums of [`Flock::steer_simd`] for the boid at `p` in cell `cell`, over the runs
+    /// a ball of squared radius `r2` reaches. The boid itself is not masked out: it is always in
+    /// its own run, at d2 = 0, so it adds exactly its v to the alignment sum and 1 to both
+    /// counts (and nothing to cohesion's p − q or to separation); the caller takes that off.
+    /// The predator's x is NaN in these arrays for the step (see `steer_all_with_grid`), which
+    /// fails every comparison.
+    #[inline(always)]
+    fn simd_sums<const SAME_RADII: bool>(
+        &self,
+        kernel: &SimdKernel,
+        p: Vec3,
+        cell: (usize, usize, usize),
+        r2: f32,
+    ) -> SimdSums {
+        let [xs, ys, zs, vxs, vys, vzs] = self.grid.soa();
         let mut sums = SimdSums::default();
         let mut runs = [(0u32, 0u32); 9];
-        let r2 = params.search_radius().powi(2);
-        let n_runs = grid.runs_near(p, cell, r2, &mut runs);
-        // Slot numbers as f32 are exact (below MAX_BOIDS < 2²⁴). The boid itself is not
-        // masked out: it is always in its own run, at d2 = 0, so it adds exactly v to the
-        // alignment sum, 1 to both counts (and nothing to cohesion's p − q or to separation);
-        // that is taken off after the loop. The predator's x is NaN in these arrays for the
-        // step (see `steer_all_with_grid`), which fails every comparison.
+        let n_runs = self.grid.runs_near(p, cell, r2, &mut runs);
         for &(start, end) in &runs[..n_runs] {
             let (start, len) = (start as usize, (end - start) as usize);
             // The arrays are padded with 3 entries, so the last chunk can always be loaded.
@@ -591,34 +625,51 @@ impl Flock {
             );
             let n4 = qx.len();
             let (qy, qz, wx, wy, wz) = (&qy[..n4], &qz[..n4], &wx[..n4], &wy[..n4], &wz[..n4]);
-            let lanes = |c: usize| [qx[c], qy[c], qz[c], wx[c], wy[c], wz[c]].map(Vec4::from_array);
+            let chunk = |c: usize| [qx[c], qy[c], qz[c], wx[c], wy[c], wz[c]].map(lanes::load);
             let full = len / 4;
             for c in 0..full {
-                kernel.add(&mut sums, BVec4A::splat(true), lanes(c));
+                kernel.add::<SAME_RADII>(&mut sums, BVec4A::splat(true), chunk(c));
             }
             if full < n4 {
                 // The partial chunk: lanes past the run's end are other cells' boids.
                 let valid = Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat((len % 4) as f32));
-                kernel.add(&mut sums, valid, lanes(full));
+                kernel.add::<SAME_RADII>(&mut sums, valid, chunk(full));
             }
         }
-        // Take the boid itself off (see above).
-        let count = |c: Vec4| (c.element_sum() as u32).saturating_sub(1);
-        Neighbours {
-            n_c: count(sums.nc),
-            n_a: count(sums.na),
-            offset: -Vec3::new(
-                sums.dx.element_sum(),
-                sums.dy.element_sum(),
-                sums.dz.element_sum(),
-            ),
-            mean_v: Vec3::new(
-                sums.wx.element_sum(),
-                sums.wy.element_sum(),
-                sums.wz.element_sum(),
-            ) - v,
-            sep: sums.sep,
-            law: Vec3::ZERO,
+        sums
+    }
+}
+
+/// The few lane operations [`SimdKernel`] needs beyond glam's `Vec4`: a load of four floats, and
+/// a lane mask applied with one `and` (`Vec4::select(m, x, 0)` is a three-instruction
+/// bit-select in wasm).
+mod lanes {
+    use glam::{BVec4A, Vec4};
+
+    #[inline(always)]
+    pub fn load(a: [f32; 4]) -> Vec4 {
+        Vec4::from_array(a)
+    }
+
+    #[inline(always)]
+    pub fn and(m: BVec4A, x: Vec4) -> Vec4 {
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        {
+            use core::arch::wasm32::{v128, v128_and};
+            Vec4::from(v128_and(v128::from(m), v128::from(x)))
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            use core::arch::x86_64::{__m128, _mm_and_ps};
+            // SAFETY: SSE2 is part of every x86-64 CPU (glam's Vec4 is built on it there).
+            Vec4::from(unsafe { _mm_and_ps(__m128::from(m), __m128::from(x)) })
+        }
+        #[cfg(not(any(
+            all(target_arch = "wasm32", target_feature = "simd128"),
+            target_arch = "x86_64"
+        )))]
+        {
+            Vec4::select(m, x, Vec4::ZERO)
         }
     }
 }
@@ -672,11 +723,17 @@ impl SimdKernel {
         }
     }
 
-    /// Adds the candidates `q` (velocities `w`) in the lanes of `valid` that pass the tests.
+    /// Adds the candidates `q` (velocities `w`) in the lanes of `valid` that pass the tests;
+    /// with `SAME_RADII` (cohesion and alignment share their radius) one mask and one count
+    /// serve both, and `sums.na` is left to the caller.
     #[inline(always)]
-    fn add(&self, sums: &mut SimdSums, valid: BVec4A, [qx, qy, qz, wx, wy, wz]: [Vec4; 6]) {
+    fn add<const SAME_RADII: bool>(
+        &self,
+        sums: &mut SimdSums,
+        valid: BVec4A,
+        [qx, qy, qz, wx, wy, wz]: [Vec4; 6],
+    ) {
         let zero = Vec4::ZERO;
-        let one = Vec4::ONE;
         // d = p − q, d2 = |d|² (the order of glam's length_squared).
         let (dx, dy, dz) = (self.p[0] - qx, self.p[1] - qy, self.p[2] - qz);
         let d2 = dx * dx + dy * dy + dz * dz;
@@ -694,22 +751,28 @@ impl SimdKernel {
             ok &= !(behind & d2.cmpgt(zero));
         }
         let mc = ok & d2.cmple(self.rc2);
-        sums.dx += Vec4::select(mc, dx, zero);
-        sums.dy += Vec4::select(mc, dy, zero);
-        sums.dz += Vec4::select(mc, dz, zero);
-        sums.nc += Vec4::select(mc, one, zero);
-        let ma = ok & d2.cmple(self.ra2);
-        sums.wx += Vec4::select(ma, wx, zero);
-        sums.wy += Vec4::select(ma, wy, zero);
-        sums.wz += Vec4::select(ma, wz, zero);
-        sums.na += Vec4::select(ma, one, zero);
+        let ma = if SAME_RADII {
+            mc
+        } else {
+            ok & d2.cmple(self.ra2)
+        };
+        sums.dx += lanes::and(mc, dx);
+        sums.dy += lanes::and(mc, dy);
+        sums.dz += lanes::and(mc, dz);
+        sums.nc += lanes::and(mc, Vec4::ONE);
+        sums.wx += lanes::and(ma, wx);
+        sums.wy += lanes::and(ma, wy);
+        sums.wz += lanes::and(ma, wz);
+        if !SAME_RADII {
+            sums.na += lanes::and(ma, Vec4::ONE);
+        }
         let ms = ok & d2.cmple(self.rs2) & d2.cmpgt(zero);
         if ms.any() {
             // Rare: the separation radius is small.
             sums.sep += Vec3::new(
-                Vec4::select(ms, dx / d2, zero).element_sum(),
-                Vec4::select(ms, dy / d2, zero).element_sum(),
-                Vec4::select(ms, dz / d2, zero).element_sum(),
+                lanes::and(ms, dx / d2).element_sum(),
+                lanes::and(ms, dy / d2).element_sum(),
+                lanes::and(ms, dz / d2).element_sum(),
             );
         }
     }
@@ -827,11 +890,18 @@ mod tests {
             (360.0, ForceLaw::InversePower { a1: 0.2, a2: 0.01 }),
             (200.0, ForceLaw::InversePower { a1: 0.2, a2: 0.01 }),
         ] {
+            // Cohesion and alignment with one radius (the default, one mask for both in the
+            // SIMD step) and with two.
+            let alignment_radius = if fov_deg == 270.0 { 1.5 } else { 1.1 };
             let params = BoidParams {
                 fov_deg,
                 law,
                 leader: Some(1.0),
                 predator: Some((2.0, 3.0)),
+                alignment: Rule {
+                    weight: 2.0,
+                    radius: alignment_radius,
+                },
                 ..Default::default()
             };
             let mut flock = Flock::new(2000, &params, 9).unwrap();
