@@ -246,14 +246,21 @@ impl Grid {
         };
         let (gy2, gz2) = (gaps2(p.y, o.y, cj, dy), gaps2(p.z, o.z, ck, dz));
         // ⌊(x − o) / x_size⌋ as in `coords_of`, clamped to ci ± X_SPLIT (a ball of radius
-        // ≤ cell_size reaches no further) and the grid; `as i32` truncates, which is ⌊·⌋ once
-        // clamped at 0 (no libm floor on x86-64 without SSE4.1, no slow float-to-u64).
+        // ≤ cell_size reaches no further) and the grid; truncation is ⌊·⌋ once clamped at 0
+        // (no libm floor on x86-64 without SSE4.1).
         let inv_x = self.inv_sizes().x;
         let (lo_min, hi_max) = (
-            ci.saturating_sub(X_SPLIT) as i32,
-            (ci + X_SPLIT).min(dx - 1) as i32,
+            ci.saturating_sub(X_SPLIT) as f32,
+            (ci + X_SPLIT).min(dx - 1) as f32,
         );
-        let x_cell = |x: f32| ((x - o.x) * inv_x).max(0.0) as i32;
+        // Clamped as floats, then truncated: the value is finite and within the grid, so the
+        // conversion needs none of `as`'s checks for NaN and overflow (f32::max returns the
+        // other operand for NaN).
+        let x_cell = |x: f32| {
+            let c = ((x - o.x) * inv_x).max(lo_min).min(hi_max);
+            // SAFETY: c lies in [lo_min, hi_max] ⊂ [0, dx − 1], finite and representable.
+            unsafe { c.to_int_unchecked::<u32>() as usize }
+        };
         let mut n = 0;
         for (kk, &g2z) in gz2.iter().enumerate() {
             for (jj, &g2y) in gy2.iter().enumerate() {
@@ -262,8 +269,7 @@ impl Grid {
                     continue;
                 }
                 let half = rest.sqrt();
-                let lo = x_cell(p.x - half).clamp(lo_min, hi_max) as usize;
-                let hi = x_cell(p.x + half).clamp(lo_min, hi_max) as usize;
+                let (lo, hi) = (x_cell(p.x - half), x_cell(p.x + half));
                 // kk, jj ∈ {0, 1, 2} stand for ck − 1, ck, ck + 1 (and cj's); a missing row's
                 // infinite gap was skipped above.
                 let row = dx * (cj + jj - 1 + dy * (ck + kk - 1));

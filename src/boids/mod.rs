@@ -565,10 +565,15 @@ impl Flock {
         let kernel = SimdKernel::new(&rules, p, v);
         let r2 = params.search_radius().powi(2);
         let same_radii = rules.rc2 == rules.ra2;
-        let mut sums = if same_radii {
-            self.simd_sums::<true>(&kernel, p, cell, r2)
-        } else {
-            self.simd_sums::<false>(&kernel, p, cell, r2)
+        // One loop per case, so that the loop has no branch but separation's (the view test's
+        // case depends on the boid's speed; the radii are the flock's).
+        let mut sums = match (same_radii, kernel.view) {
+            (true, View::All) => self.simd_sums::<true, VIEW_ALL>(&kernel, p, cell, r2),
+            (true, View::Wide) => self.simd_sums::<true, VIEW_WIDE>(&kernel, p, cell, r2),
+            (true, View::Narrow) => self.simd_sums::<true, VIEW_NARROW>(&kernel, p, cell, r2),
+            (false, View::All) => self.simd_sums::<false, VIEW_ALL>(&kernel, p, cell, r2),
+            (false, View::Wide) => self.simd_sums::<false, VIEW_WIDE>(&kernel, p, cell, r2),
+            (false, View::Narrow) => self.simd_sums::<false, VIEW_NARROW>(&kernel, p, cell, r2),
         };
         if same_radii {
             sums.na = sums.nc;
@@ -595,7 +600,7 @@ impl Flock {
     /// The predator's x is NaN in these arrays for the step (see `steer_all_with_grid`), which
     /// fails every comparison.
     #[inline(always)]
-    fn simd_sums<const SAME_RADII: bool>(
+    fn simd_sums<const SAME_RADII: bool, const VIEW: u8>(
         &self,
         kernel: &SimdKernel,
         p: Vec3,
@@ -628,12 +633,12 @@ impl Flock {
             let chunk = |c: usize| [qx[c], qy[c], qz[c], wx[c], wy[c], wz[c]].map(lanes::load);
             let full = len / 4;
             for c in 0..full {
-                kernel.add::<SAME_RADII>(&mut sums, BVec4A::splat(true), chunk(c));
+                kernel.add::<SAME_RADII, VIEW>(&mut sums, BVec4A::splat(true), chunk(c));
             }
             if full < n4 {
                 // The partial chunk: lanes past the run's end are other cells' boids.
                 let valid = Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat((len % 4) as f32));
-                kernel.add::<SAME_RADII>(&mut sums, valid, chunk(full));
+                kernel.add::<SAME_RADII, VIEW>(&mut sums, valid, chunk(full));
             }
         }
         sums
@@ -695,6 +700,21 @@ struct SimdSums {
     sep: Vec3,
 }
 
+/// Which field-of-view test a boid's neighbours get (see [`NeighbourRules::behind`], with
+/// `b = cos(fov/2)|v|`): none (a full circle, or the boid stands still), `b ≥ 0` (a field of
+/// view up to 180°) or `b < 0` (wider).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum View {
+    All,
+    Narrow,
+    Wide,
+}
+
+/// [`View`] as const generic parameters of [`SimdKernel::add`].
+const VIEW_ALL: u8 = 0;
+const VIEW_NARROW: u8 = 1;
+const VIEW_WIDE: u8 = 2;
+
 /// One boid's tests, splatted to four lanes, for [`Flock::steer_simd`].
 struct SimdKernel {
     p: [Vec4; 3],
@@ -702,10 +722,9 @@ struct SimdKernel {
     rc2: Vec4,
     ra2: Vec4,
     rs2: Vec4,
-    /// `(cos(fov/2)|v|)²` and whether `cos(fov/2)|v| ≥ 0` (see [`NeighbourRules::behind`]).
+    /// `b²` (see [`View`]).
     bb: Vec4,
-    b_non_negative: bool,
-    check_view: bool,
+    view: View,
 }
 
 impl SimdKernel {
@@ -718,8 +737,13 @@ impl SimdKernel {
             ra2: Vec4::splat(rules.ra2),
             rs2: Vec4::splat(rules.rs2),
             bb: Vec4::splat(b * b),
-            b_non_negative: b >= 0.0,
-            check_view: !rules.all_round && rules.v_len > 0.0,
+            view: if rules.all_round || rules.v_len <= 0.0 {
+                View::All
+            } else if b >= 0.0 {
+                View::Narrow
+            } else {
+                View::Wide
+            },
         }
     }
 
@@ -727,7 +751,7 @@ impl SimdKernel {
     /// with `SAME_RADII` (cohesion and alignment share their radius) one mask and one count
     /// serve both, and `sums.na` is left to the caller.
     #[inline(always)]
-    fn add<const SAME_RADII: bool>(
+    fn add<const SAME_RADII: bool, const VIEW: u8>(
         &self,
         sums: &mut SimdSums,
         valid: BVec4A,
@@ -738,12 +762,13 @@ impl SimdKernel {
         let (dx, dy, dz) = (self.p[0] - qx, self.p[1] - qy, self.p[2] - qz);
         let d2 = dx * dx + dy * dy + dz * dz;
         let mut ok = valid;
-        if self.check_view {
-            // a = (q − p)·v = −(d·v); d2 > 0 is never behind (NeighbourRules::behind).
-            let a = (-dx) * self.v[0] + (-dy) * self.v[1] + (-dz) * self.v[2];
-            let (a2, b2d2) = (a * a, self.bb * d2);
-            let negative = a.cmplt(zero);
-            let behind = if self.b_non_negative {
+        if VIEW != VIEW_ALL {
+            // a = (q − p)·v = −e with e = d·v, so a < 0 is e > 0 and a² = e²; d2 > 0 is never
+            // behind (NeighbourRules::behind).
+            let e = dx * self.v[0] + dy * self.v[1] + dz * self.v[2];
+            let (a2, b2d2) = (e * e, self.bb * d2);
+            let negative = zero.cmplt(e);
+            let behind = if VIEW == VIEW_NARROW {
                 negative | a2.cmplt(b2d2)
             } else {
                 negative & a2.cmpgt(b2d2)
