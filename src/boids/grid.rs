@@ -254,10 +254,13 @@ impl Grid {
             (ci + X_SPLIT).min(dx - 1) as f32,
         );
         // Clamped as floats, then truncated: the value is finite and within the grid, so the
-        // conversion needs none of `as`'s checks for NaN and overflow (f32::max returns the
-        // other operand for NaN).
+        // conversion needs none of `as`'s checks for NaN and overflow.
         let x_cell = |x: f32| {
-            let c = ((x - o.x) * inv_x).max(lo_min).min(hi_max);
+            // By comparisons, not f32::max/min (whose NaN rules cost a blend each on x86-64):
+            // a NaN fails `c > lo_min` and becomes lo_min.
+            let c = (x - o.x) * inv_x;
+            let c = if c > lo_min { c } else { lo_min };
+            let c = if c < hi_max { c } else { hi_max };
             // SAFETY: c lies in [lo_min, hi_max] ⊂ [0, dx − 1], finite and representable.
             unsafe { c.to_int_unchecked::<u32>() as usize }
         };

@@ -214,7 +214,8 @@ pub fn leader_path(time_sec: f32, bounds: Vec3) -> Vec3 {
 pub enum Search {
     /// Every pair: O(N²).
     Naive,
-    /// A uniform grid with cells as wide as the largest radius: O(N) at bounded density.
+    /// A uniform grid with cells as wide as the largest radius in y and z (a quarter of it in x,
+    /// see [`grid::X_SPLIT`]): O(N) at bounded density.
     Grid,
 }
 
@@ -599,7 +600,9 @@ impl Flock {
     /// counts (and nothing to cohesion's p − q or to separation); the caller takes that off.
     /// The predator's x is NaN in these arrays for the step (see `steer_all_with_grid`), which
     /// fails every comparison.
-    #[inline(always)]
+    // Not inlined: six copies of the loop inlined into one step made the wasm engine's code
+    // slower (one function per case keeps each small enough to compile well).
+    #[inline(never)]
     fn simd_sums<const SAME_RADII: bool, const VIEW: u8>(
         &self,
         kernel: &SimdKernel,
@@ -608,6 +611,9 @@ impl Flock {
         r2: f32,
     ) -> SimdSums {
         let [xs, ys, zs, vxs, vys, vzs] = self.grid.soa();
+        // One length for all six (they have it): one bounds check per run serves all six.
+        let n = xs.len();
+        let (ys, zs, vxs, vys, vzs) = (&ys[..n], &zs[..n], &vxs[..n], &vys[..n], &vzs[..n]);
         let mut sums = SimdSums::default();
         let mut runs = [(0u32, 0u32); 9];
         let n_runs = self.grid.runs_near(p, cell, r2, &mut runs);
@@ -631,7 +637,7 @@ impl Flock {
             let n4 = qx.len();
             let (qy, qz, wx, wy, wz) = (&qy[..n4], &qz[..n4], &wx[..n4], &wy[..n4], &wz[..n4]);
             let chunk = |c: usize| [qx[c], qy[c], qz[c], wx[c], wy[c], wz[c]].map(lanes::load);
-            let full = len / 4;
+            let full = (len / 4).min(n4);
             for c in 0..full {
                 kernel.add::<SAME_RADII, VIEW>(&mut sums, BVec4A::splat(true), chunk(c));
             }
