@@ -25,6 +25,7 @@
 import { existsSync, readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { skinLoop, skinningInput } from '../www/skin-loop.js';
 
 const VERTICES = 100000;
 const JOINTS = 60;
@@ -53,18 +54,10 @@ await wasm.default({ module_or_path: wasmBytes });
 // nothing worth reporting.
 const debugBuild = WebAssembly.Module.customSections(new WebAssembly.Module(wasmBytes), 'name').length > 0;
 
-// The wasm bench's input, unpacked as www/bench.js's jsSkinning does: palette (12 floats per
-// joint: the three columns of the linear part, then the translation), joint indices, weights
-// (4 per vertex), positions, normals (3 per vertex).
-const flat = wasm.skinningBenchInput(VERTICES);
-let at = 0;
-const take = (n) => flat.subarray(at, (at += n));
-const palette = take(12 * JOINTS);
-const jointIndex = Uint16Array.from(take(4 * VERTICES));
-const weights = take(4 * VERTICES);
-const positions = take(3 * VERTICES);
-const normals = take(3 * VERTICES);
-if (at !== flat.length) throw new Error(`skinningBenchInput: ${flat.length} floats, expected ${at}`);
+// The wasm bench's input, unpacked as www/bench.js does (www/skin-loop.js): palette, joint
+// indices, weights, positions, normals.
+const jsInput = skinningInput(wasm.skinningBenchInput(VERTICES), VERTICES, JOINTS);
+const { palette, jointIndex, weights, positions } = jsInput;
 
 // --- three.js: a SkinnedMesh whose bone matrices are the palette. Bone inverses and the bind
 // matrix are the identity, so matrixWorld × boneInverse is the palette matrix itself (exact: no
@@ -113,34 +106,8 @@ function threePasses(n) {
   }
 }
 
-// --- The plain LBS loop of www/bench.js (jsSkinning), positions and normals, typed arrays, read
-// into locals as there.
-const jsInput = {
-  palette, jointIndex, weights, positions, normals,
-  outP: new Float32Array(3 * VERTICES), outN: new Float32Array(3 * VERTICES),
-};
-function jsPasses(n) {
-  const { palette: m, jointIndex, weights, positions, normals, outP, outN } = jsInput;
-  for (let it = 0; it < n; it++) {
-    for (let v = 0; v < VERTICES; v++) {
-      const px = positions[3 * v], py = positions[3 * v + 1], pz = positions[3 * v + 2];
-      const nx = normals[3 * v], ny = normals[3 * v + 1], nz = normals[3 * v + 2];
-      let ox = 0, oy = 0, oz = 0, mx = 0, my = 0, mz = 0;
-      for (let k = 0; k < 4; k++) {
-        const w = weights[4 * v + k];
-        const b = 12 * jointIndex[4 * v + k];
-        ox += w * (m[b] * px + m[b + 3] * py + m[b + 6] * pz + m[b + 9]);
-        oy += w * (m[b + 1] * px + m[b + 4] * py + m[b + 7] * pz + m[b + 10]);
-        oz += w * (m[b + 2] * px + m[b + 5] * py + m[b + 8] * pz + m[b + 11]);
-        mx += w * (m[b] * nx + m[b + 3] * ny + m[b + 6] * nz);
-        my += w * (m[b + 1] * nx + m[b + 4] * ny + m[b + 7] * nz);
-        mz += w * (m[b + 2] * nx + m[b + 5] * ny + m[b + 8] * nz);
-      }
-      outP[3 * v] = ox; outP[3 * v + 1] = oy; outP[3 * v + 2] = oz;
-      outN[3 * v] = mx; outN[3 * v + 1] = my; outN[3 * v + 2] = mz;
-    }
-  }
-}
+// --- The plain LBS loop of the bench page (www/skin-loop.js), positions and normals.
+const jsPasses = (n) => skinLoop(jsInput, VERTICES, n);
 
 // --- Check: three's skinned positions against the loop's, every vertex.
 threePasses(1);
@@ -187,6 +154,6 @@ if (debugBuild) console.warn('warning: this wasm has a name section (scripts/bui
 const row = (name, t, what) => console.log(`  ${name.padEnd(44)} ${t.toFixed(2).padStart(7)} ms per pass  ${mvs(t).toFixed(1).padStart(6)} M vertices/s  (${what})`);
 row('three.js SkinnedMesh.getVertexPosition', ms.three, `positions only; skeleton.update() + every vertex, ${threeN} passes`);
 row('wasm LBS (benchSkinning "lbs")', ms.wasm, `positions + normals; (1 + ${passes}) − (1) passes`);
-row('JS plain LBS loop (www/bench.js)', ms.js, `positions + normals, ${jsN} passes`);
+row('JS plain LBS loop (www/skin-loop.js)', ms.js, `positions + normals, ${jsN} passes`);
 console.log(`  wasm / three.js: ${(ms.three / ms.wasm).toFixed(1)}×   wasm / JS loop: ${(ms.js / ms.wasm).toFixed(1)}×   JS loop / three.js: ${(ms.three / ms.js).toFixed(1)}×`);
 console.log('  (three.js skins positions only, our kernels positions and normals: the ratios are in three\'s favour)');

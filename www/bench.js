@@ -8,6 +8,7 @@
 // batches the page yields to the event loop, so it stays responsive and shows its progress.
 import init, * as wasm from '../pkg/inbetween.js';
 import './devloop.js';
+import { skinLoop, skinningInput } from './skin-loop.js';
 
 /**
  * A suite: `run(kernel, size, iterations)` returns milliseconds for `iterations` passes over `size`
@@ -108,44 +109,17 @@ export const SUITES = [
 ];
 
 /**
- * The plain LBS loop in JavaScript (the same as `skin_lbs_plain_loop` in src/skinning/lbs.rs), on
- * the wasm bench's own input, typed arrays throughout. Returns milliseconds for `iterations` passes.
+ * The plain LBS loop in JavaScript (www/skin-loop.js) on the wasm bench's own input. Returns
+ * milliseconds for `iterations` passes.
  */
 const jsSkinInputs = new Map();
 function jsSkinning(vertices, iterations) {
   if (!jsSkinInputs.has(vertices)) {
-    const flat = wasm.skinningBenchInput(vertices);
-    const joints = 60 * 12;
-    let at = 0;
-    const take = (n) => flat.subarray(at, (at += n));
-    const palette = take(joints);
-    const jointIndex = Uint16Array.from(take(4 * vertices));
-    jsSkinInputs.set(vertices, {
-      palette, jointIndex, weights: take(4 * vertices), positions: take(3 * vertices), normals: take(3 * vertices),
-      outP: new Float32Array(3 * vertices), outN: new Float32Array(3 * vertices),
-    });
+    jsSkinInputs.set(vertices, skinningInput(wasm.skinningBenchInput(vertices), vertices));
   }
-  const { palette: m, jointIndex, weights, positions, normals, outP, outN } = jsSkinInputs.get(vertices);
+  const input = jsSkinInputs.get(vertices);
   const start = performance.now();
-  for (let it = 0; it < iterations; it++) {
-    for (let v = 0; v < vertices; v++) {
-      const px = positions[3 * v], py = positions[3 * v + 1], pz = positions[3 * v + 2];
-      const nx = normals[3 * v], ny = normals[3 * v + 1], nz = normals[3 * v + 2];
-      let ox = 0, oy = 0, oz = 0, mx = 0, my = 0, mz = 0;
-      for (let k = 0; k < 4; k++) {
-        const w = weights[4 * v + k];
-        const b = 12 * jointIndex[4 * v + k];
-        ox += w * (m[b] * px + m[b + 3] * py + m[b + 6] * pz + m[b + 9]);
-        oy += w * (m[b + 1] * px + m[b + 4] * py + m[b + 7] * pz + m[b + 10]);
-        oz += w * (m[b + 2] * px + m[b + 5] * py + m[b + 8] * pz + m[b + 11]);
-        mx += w * (m[b] * nx + m[b + 3] * ny + m[b + 6] * nz);
-        my += w * (m[b + 1] * nx + m[b + 4] * ny + m[b + 7] * nz);
-        mz += w * (m[b + 2] * nx + m[b + 5] * ny + m[b + 8] * nz);
-      }
-      outP[3 * v] = ox; outP[3 * v + 1] = oy; outP[3 * v + 2] = oz;
-      outN[3 * v] = mx; outN[3 * v + 1] = my; outN[3 * v + 2] = mz;
-    }
-  }
+  skinLoop(input, vertices, iterations);
   return performance.now() - start;
 }
 
