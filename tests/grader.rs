@@ -92,20 +92,103 @@ mod the_grader_itself {
         assert_eq!(report.status, Status::Passed { cases: 2 });
     }
 
+    /// The line of the panic in [`out_of_range`], for the reports' `file:line`.
+    const PANIC_LINE: u32 = line!() + 3;
+    /// An exercise with a bug: reads past the end of `v`.
+    fn out_of_range(v: &[i32], i: usize) -> i32 {
+        v[i + 1]
+    }
+
     #[test]
-    fn catches_a_panicking_exercise_natively() {
+    fn catches_a_panicking_exercise_natively_and_says_where() {
         let report = check(
             "l",
             "e",
             &[0usize],
-            |&i| Ok([1][i + 1]),
+            |&i| Ok(out_of_range(&[1], i)),
             |_| 1,
             |a, b| a == b,
         );
+        let Status::Panicked {
+            case,
+            message,
+            location,
+            ..
+        } = &report.status
+        else {
+            panic!("{:?}", report.status);
+        };
+        assert_eq!(*case, 0);
+        assert!(message.contains("index out of bounds"), "{message}");
+        let at = format!("tests/grader.rs:{PANIC_LINE}:");
         assert!(
-            matches!(report.status, Status::Panicked { case: 0, .. }),
-            "{:?}",
-            report.status
+            location.as_ref().is_some_and(|l| l.starts_with(&at)),
+            "{location:?}, expected {at}…"
         );
+        let shown = report.status.to_string();
+        assert!(
+            shown.starts_with("PANICKED at case 0 (random input): index out of bounds")
+                && shown.contains(&format!("({at}")),
+            "{shown}"
+        );
+    }
+
+    /// Set by [`puts_the_previous_panic_hook_back`] for the process it starts.
+    const CHILD: &str = "INBETWEEN_GRADER_HOOK_CHILD";
+
+    /// Panic hooks are global: a test that sets one must not share its process with the other
+    /// tests, which grade (and swap hooks) in parallel. So this starts the test binary again,
+    /// running only [`hook_child`].
+    #[test]
+    fn puts_the_previous_panic_hook_back() {
+        let out = std::process::Command::new(std::env::current_exe().unwrap())
+            .args([
+                "the_grader_itself::hook_child",
+                "--exact",
+                "--test-threads=1",
+                "--nocapture",
+            ])
+            .env(CHILD, "1")
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout).to_string()
+            + &String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{text}");
+        assert!(
+            text.contains("hook_child ... ok"),
+            "the child ran no test: {text}"
+        );
+    }
+
+    /// In a process of its own (see above; elsewhere it does nothing): the grader's own hook
+    /// takes the student's panic quietly, and afterwards the hook that was there before gets the
+    /// next panic.
+    #[test]
+    fn hook_child() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        if std::env::var_os(CHILD).is_none() {
+            return;
+        }
+        static SEEN: AtomicUsize = AtomicUsize::new(0);
+        std::panic::set_hook(Box::new(|_| {
+            SEEN.fetch_add(1, Ordering::SeqCst);
+        }));
+        let report = check(
+            "l",
+            "e",
+            &[0usize],
+            |&i| Ok(out_of_range(&[1], i)),
+            |_| 1,
+            |a, b| a == b,
+        );
+        assert!(matches!(report.status, Status::Panicked { .. }));
+        assert_eq!(
+            SEEN.load(Ordering::SeqCst),
+            0,
+            "the grader's hook took the student's panic"
+        );
+        assert!(std::panic::catch_unwind(|| out_of_range(&[1], 0)).is_err());
+        assert_eq!(SEEN.load(Ordering::SeqCst), 1, "the previous hook is back");
+        drop(std::panic::take_hook());
     }
 }

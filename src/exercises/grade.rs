@@ -30,6 +30,8 @@ pub enum Status {
         what: String,
         input: String,
         message: String,
+        /// Where it panicked, `file:line:column` (as the browser's report gives it).
+        location: Option<String>,
     },
 }
 
@@ -109,12 +111,13 @@ pub fn check_cases<I: Debug, O: Debug>(
             let context = || format!("exercise {exercise} ({lesson}), case {case} ({what})");
             let answer = match run_caught(context, || student(input)) {
                 Ok(answer) => answer,
-                Err(message) => {
+                Err(Caught { message, location }) => {
                     return Status::Panicked {
                         case,
                         what: what.to_string(),
                         input: format!("{input:?}"),
                         message,
+                        location,
                     };
                 }
             };
@@ -141,14 +144,47 @@ pub fn check_cases<I: Debug, O: Debug>(
     }
 }
 
+/// A caught panic: its message and where it happened.
+struct Caught {
+    message: String,
+    location: Option<String>,
+}
+
+/// Runs `f`, catching a panic. `catch_unwind` gives only the payload (the message); the location
+/// is known only to the panic hook, so while `f` runs a hook records it for this thread (and
+/// prints nothing: the report says it all), handing other threads' panics to the hook that was
+/// there. That hook is put back afterwards. Hooks are global: one grading call at a time swaps
+/// them, so parallel tests put the right one back.
 #[cfg(not(target_arch = "wasm32"))]
-fn run_caught<T>(_context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<T, String> {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).map_err(|payload| {
-        payload
+fn run_caught<T>(_context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<T, Caught> {
+    use std::panic::{self, PanicHookInfo};
+    use std::sync::{Arc, Mutex};
+    static SWAPPING: Mutex<()> = Mutex::new(());
+    let _one_at_a_time = SWAPPING.lock().unwrap_or_else(|e| e.into_inner());
+    let previous: Arc<dyn Fn(&PanicHookInfo<'_>) + Send + Sync> = Arc::from(panic::take_hook());
+    let location = Arc::new(Mutex::new(None::<String>));
+    let (seen, chained) = (location.clone(), previous.clone());
+    let grading = std::thread::current().id();
+    panic::set_hook(Box::new(move |info| {
+        if std::thread::current().id() == grading {
+            let at = info
+                .location()
+                .map(|l| format!("{}:{}:{}", l.file(), l.line(), l.column()));
+            *seen.lock().unwrap_or_else(|e| e.into_inner()) = at;
+        } else {
+            chained(info);
+        }
+    }));
+    let result = panic::catch_unwind(panic::AssertUnwindSafe(f));
+    drop(panic::take_hook());
+    panic::set_hook(Box::new(move |info| previous(info)));
+    result.map_err(|payload| Caught {
+        message: payload
             .downcast_ref::<&str>()
             .map(|s| s.to_string())
             .or_else(|| payload.downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "panic".to_string())
+            .unwrap_or_else(|| "panic".to_string()),
+        location: location.lock().unwrap_or_else(|e| e.into_inner()).take(),
     })
 }
 
@@ -156,7 +192,7 @@ fn run_caught<T>(_context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result
 /// hook first says, in one line, which exercise and case panicked and what to do, then hands over
 /// to the hook that was there (the test runner's).
 #[cfg(target_arch = "wasm32")]
-fn run_caught<T>(context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<T, String> {
+fn run_caught<T>(context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<T, Caught> {
     use std::sync::Arc;
     let previous: Arc<dyn Fn(&std::panic::PanicHookInfo<'_>) + Send + Sync> =
         Arc::from(std::panic::take_hook());
@@ -227,9 +263,10 @@ impl fmt::Display for Status {
                 f,
                 "WRONG at case {case} ({what})\n      input:    {input}\n      expected: {expected}\n      actual:   {actual}"
             ),
-            Status::Panicked { case, what, input, message } => write!(
+            Status::Panicked { case, what, input, message, location } => write!(
                 f,
-                "PANICKED at case {case} ({what}): {message}\n      input: {input}"
+                "PANICKED at case {case} ({what}): {message}{}\n      input: {input}",
+                location.as_ref().map_or(String::new(), |at| format!(" ({at})"))
             ),
         }
     }
