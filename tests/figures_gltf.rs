@@ -77,3 +77,50 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
     assert!((p[0] - lbs[0]).length() < 1e-5);
     assert!(figure.set_skinning("gpu").is_err());
 }
+
+#[test]
+fn after_a_rejected_file_the_note_says_what_is_still_shown() {
+    let mut figure = GltfFigure::new();
+    let mut f = Frame::default();
+    // Nothing loaded yet, then a bad file: the reason, and that nothing is shown.
+    figure.load("broken.gltf", b"{ not json").unwrap_err();
+    let note = figure.draw(&mut f, 0.0, &[]).unwrap();
+    assert!(
+        note.starts_with("Could not load broken.gltf: not a valid glTF")
+            && note.contains("No character loaded"),
+        "{note}"
+    );
+    // A good file: its summary, then what is drawn.
+    figure
+        .load("tiny.gltf", tiny_skinned_gltf().as_bytes())
+        .unwrap();
+    let note = figure.draw(&mut f, 0.5, &[]).unwrap();
+    assert!(
+        note.starts_with("tiny.gltf: 2 joints") && note.contains("Clip \"bend\" at 0.500 s"),
+        "{note}"
+    );
+    assert!(!note.contains("Could not load"), "{note}");
+    // A bad file after it: the note says the file was rejected and why, and that the character
+    // still drawn is the one loaded before (not the rejected file).
+    figure.load("broken.gltf", b"{ not json").unwrap_err();
+    let note = figure.draw(&mut f, 0.5, &[]).unwrap();
+    assert!(
+        note.starts_with("Could not load broken.gltf: not a valid glTF"),
+        "{note}"
+    );
+    assert!(
+        note.contains("The file was rejected: the figure still shows tiny.gltf, loaded before."),
+        "{note}"
+    );
+    assert!(!note.contains(".."), "{note}");
+    assert!(
+        !note.contains("tiny.gltf: 2 joints"),
+        "the old summary is gone: {note}"
+    );
+    // The next good load clears the message.
+    figure
+        .load("tiny.gltf", tiny_skinned_gltf().as_bytes())
+        .unwrap();
+    let note = figure.draw(&mut f, 0.5, &[]).unwrap();
+    assert!(note.starts_with("tiny.gltf: 2 joints"), "{note}");
+}

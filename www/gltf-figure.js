@@ -24,10 +24,12 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
     clip: '', mesh: true, skinning: skinning ?? 'dots', on: 'CPU',
   };
   const gui = new GUI({ container: box.querySelector('.panel'), title: 'glTF character' });
-  let message = samples.length ? '' : 'The sample characters are not on this server (they are copied from ../shared when it is there); load your own file below.';
+  // The note after a load (the file's summary, or why it was rejected and what is still shown)
+  // comes from the scene; this one is only about the server.
+  const message = samples.length ? '' : 'The sample characters are not on this server (they are copied from ../shared when it is there); load your own file below.';
   let clipControl = null;
   scene.setSkinning(p.skinning);
-  const loaded = (summary) => {
+  const loaded = () => {
     const [x, y, z, distance] = scene.fit();
     viewer.setCamera(x, y, z, distance, 0.6, 0.15);
     timeline.duration = scene.duration;
@@ -43,14 +45,14 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
         timeline.duration = scene.duration;
       });
     }
-    message = summary;
   };
   const load = (name, bytes) => {
     try {
-      loaded(scene.load(name, bytes));
-    } catch (e) {
-      message = `Could not load ${e.message ?? e}`.replace(/\.?$/, '.');
+      scene.load(name, bytes);
+    } catch {
+      return; // rejected: the scene's note says why, and what it still shows
     }
+    loaded();
   };
   const loadSample = async (file) => {
     if (!samples.includes(file)) return;

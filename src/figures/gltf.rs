@@ -73,6 +73,10 @@ pub struct GltfFigure {
     gpu: bool,
     /// Why this frame was skinned on the CPU although the GPU was asked for, if it was.
     gpu_fallback: Option<String>,
+    /// The file shown and its one-line summary (see [`GltfFigure::load`]).
+    shown: Option<(String, String)>,
+    /// Why the last file was rejected, when the last load failed (cleared by a good load).
+    rejected: Option<String>,
 }
 
 impl GltfFigure {
@@ -87,7 +91,35 @@ impl GltfFigure {
 
     /// Imports `bytes` (a `.gltf` with embedded buffers or a `.glb`) named `name`; on success
     /// returns a one-line summary, on failure the reason (and keeps what was loaded before).
+    /// The note of [`GltfFigure::draw`] starts with the outcome: the summary, or that the file
+    /// was rejected, why, and which character is still shown.
     pub fn load(&mut self, name: &str, bytes: &[u8]) -> Result<String, String> {
+        let result = self.import_file(name, bytes);
+        match &result {
+            Ok(summary) => {
+                self.shown = Some((name.to_string(), summary.clone()));
+                self.rejected = None;
+            }
+            Err(e) => self.rejected = Some(e.clone()),
+        }
+        result
+    }
+
+    /// The outcome of the last load, for the start of the note.
+    fn load_note(&self) -> String {
+        let rejected = self.rejected.as_deref().map(|e| e.trim_end_matches('.'));
+        match (rejected, &self.shown) {
+            (None, Some((_, summary))) => summary.clone(),
+            (None, None) => String::new(),
+            (Some(why), Some((name, _))) => format!(
+                "Could not load {why}. The file was rejected: the figure still shows {name}, \
+                 loaded before."
+            ),
+            (Some(why), None) => format!("Could not load {why}."),
+        }
+    }
+
+    fn import_file(&mut self, name: &str, bytes: &[u8]) -> Result<String, String> {
         let imported = import(bytes).map_err(|e| format!("{name}: {e}"))?;
         let clips = imported
             .clips
@@ -371,6 +403,24 @@ impl GltfFigure {
         skin_meshes: &[crate::draw::SkinMeshId],
     ) -> Result<String, String> {
         let time_sec = in_range("time", time_sec, 0.0, 1e6)?;
+        let drawn = self.draw_character(frame, time_sec, meshes, skin_meshes)?;
+        let loaded = self.load_note();
+        Ok(if loaded.is_empty() {
+            drawn
+        } else {
+            format!("{loaded} {drawn}")
+        })
+    }
+
+    /// Draws what is loaded; returns the note about it (what [`GltfFigure::draw_with`] says after
+    /// the outcome of the last load).
+    fn draw_character(
+        &mut self,
+        frame: &mut Frame,
+        time_sec: f32,
+        meshes: &[MeshId],
+        skin_meshes: &[crate::draw::SkinMeshId],
+    ) -> Result<String, String> {
         let Some(c) = &self.character else {
             frame.grid(10, 0.5);
             return Ok(
