@@ -251,3 +251,87 @@ fn the_human_skins_its_clip_by_both_methods() {
     assert!(h.mesh.positions.iter().all(|p| p.is_finite()));
     let _ = Vec3::ZERO;
 }
+
+#[test]
+fn the_heat_legend_shows_the_meshes_colours() {
+    use inbetween::draw::palette::{css, BLUE, RED};
+    use inbetween::figures::skinning::heat_ramp_css;
+    let ramp = heat_ramp_css();
+    assert!(ramp.starts_with("linear-gradient(to right, "), "{ramp}");
+    assert!(
+        ramp.contains(&format!("{} 0%", css(BLUE))),
+        "weight 0 is blue: {ramp}"
+    );
+    assert!(
+        ramp.ends_with(&format!("{} 100%)", css(RED))),
+        "weight 1 is red: {ramp}"
+    );
+    assert!(
+        ramp.contains(&format!("{} 50%", css(heat(0.5).truncate()))),
+        "{ramp}"
+    );
+    assert_eq!(ramp.matches('%').count(), 11);
+}
+
+/// The mean change of `joint`'s weights from falloff `a` to `b`, over the vertices where either
+/// weight is above 1% (the part of the body the heat map colours).
+fn heat_change(joint: &str, a: f32, b: f32) -> f32 {
+    let weights = |f: f32| {
+        let mut h = HumanFigure::new();
+        h.set_falloff(f).unwrap();
+        let j = h.joint_names().iter().position(|n| n == joint).unwrap();
+        let skin = &h.character().skin;
+        (0..skin.len())
+            .map(|v| skin.weight_of(v, j))
+            .collect::<Vec<f32>>()
+    };
+    let (wa, wb) = (weights(a), weights(b));
+    let touched: Vec<f32> = wa
+        .iter()
+        .zip(&wb)
+        .filter(|(x, y)| x.max(**y) > 0.01)
+        .map(|(x, y)| (x - y).abs())
+        .collect();
+    touched.iter().sum::<f32>() / touched.len() as f32
+}
+
+#[test]
+fn every_quarter_of_the_characters_falloff_slider_changes_the_heat_map() {
+    use inbetween::figures::skinning::HUMAN_FALLOFF_RANGE;
+    let [lo, hi] = HUMAN_FALLOFF_RANGE;
+    let mut h = HumanFigure::new();
+    assert!(h.set_falloff(lo).is_ok() && h.set_falloff(hi).is_ok());
+    assert!(h.set_falloff(0.9 * lo).is_err() && h.set_falloff(1.1 * hi).is_err());
+    let at = |k: usize| lo + (hi - lo) * k as f32 / 4.0;
+    for joint in ["forearm.L", "shin.L", "spine"] {
+        let steps: Vec<f32> = (0..4)
+            .map(|k| heat_change(joint, at(k), at(k + 1)))
+            .collect();
+        let (least, most) = (
+            steps.iter().cloned().fold(f32::INFINITY, f32::min),
+            steps.iter().cloned().fold(0.0, f32::max),
+        );
+        // A quarter of the slider moves the coloured weights by at least 0.03 on average, and
+        // no quarter is a dead end next to the others (the old 0.005..0.2 m range: the last
+        // quarter changed nine times less than the first).
+        assert!(
+            least > 0.03,
+            "{joint}: quarters of the slider change {steps:?}"
+        );
+        assert!(least > 0.25 * most, "{joint}: uneven slider {steps:?}");
+    }
+}
+
+#[test]
+fn the_characters_note_says_where_the_falloff_shows() {
+    let mut h = HumanFigure::new();
+    h.skin(0.0).unwrap();
+    let note = h.draw(&mut Frame::default(), MeshId(3));
+    assert!(note.contains("Pick a joint under weights of"), "{note}");
+    h.set_heat_joint("shin.L").unwrap();
+    let note = h.draw(&mut Frame::default(), MeshId(3));
+    assert!(
+        note.contains("Colours: the shin.L's weights, blue 0 to red 1."),
+        "{note}"
+    );
+}

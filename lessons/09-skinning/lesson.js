@@ -1,10 +1,22 @@
 // Lesson 09: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/skinning/, src/figures/skinning.rs).
 import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote } from '../../www/lesson.js';
-import { SkinningCylinderScene, SkinnedHumanScene } from '../../pkg/inbetween.js';
+import { SkinningCylinderScene, SkinnedHumanScene, heatRampCss } from '../../pkg/inbetween.js';
 import { gltfFigure } from '../../www/gltf-figure.js';
 
 const lesson = await startLesson();
+
+// The heat maps' legends: the meshes' own colour ramp (from Rust), shown only while a joint's
+// weights are painted, naming the joint.
+const ramp = heatRampCss();
+function heatLegend(selector) {
+  const legend = document.querySelector(`${selector} .heat-legend`);
+  legend.querySelector('.ramp').style.background = ramp;
+  return (joint) => {
+    legend.style.display = joint === 'none' ? 'none' : '';
+    legend.querySelector('.heat-joint').textContent = joint;
+  };
+}
 
 // Figure 1: the bend-and-twist cylinder, LBS beside DQS.
 const cylinderViewer = await lesson.figure('#fig-cylinder');
@@ -32,11 +44,9 @@ if (cylinderViewer) {
   gui.add(p, 'bend', 0, 180, 1).name('bend (°)').onChange((v) => { scene.setBendDeg(v); plot.setCursor?.(v); volumePlot.setCursor?.(v); });
   gui.add(p, 'twist', -180, 180, 1).name('twist (°)').onChange((v) => scene.setTwistDeg(v));
   gui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange((v) => { scene.setFalloff(v); updatePlot(); });
-  // The colour ramp's legend only while a joint's weights are painted.
-  const legend = document.querySelector('#fig-cylinder .heat-legend');
-  const showLegend = () => { legend.style.display = p.heat === 'none' ? 'none' : ''; };
-  gui.add(p, 'heat', ['none', 'shoulder', 'elbow']).name('weights of').onChange((v) => { scene.setHeatJoint(v); showLegend(); });
-  showLegend();
+  const showLegend = heatLegend('#fig-cylinder');
+  gui.add(p, 'heat', ['none', 'shoulder', 'elbow']).name('weights of').onChange((v) => { scene.setHeatJoint(v); showLegend(v); });
+  showLegend(p.heat);
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
   updatePlot();
   plot.setCursor?.(p.bend);
@@ -64,8 +74,11 @@ if (humanViewer) {
     timeline.show();
   });
   gui.add(p, 'method', ['LBS', 'DQS']).name('method').onChange((m) => scene.setMethod(m));
-  gui.add(p, 'heat', ['none', ...scene.jointNames()]).name('weights of').onChange((j) => scene.setHeatJoint(j));
-  gui.add(p, 'falloff', 0.005, 0.2, 0.005).name('falloff (m)').onChange((f) => scene.setFalloff(f));
+  const showLegend = heatLegend('#fig-human');
+  gui.add(p, 'heat', ['none', ...scene.jointNames()]).name('weights of').onChange((j) => { scene.setHeatJoint(j); showLegend(j); });
+  showLegend(p.heat);
+  const [lowest, highest] = scene.falloffRange();
+  gui.add(p, 'falloff', lowest, highest, 0.005).name('falloff (m)').onChange((f) => scene.setFalloff(f));
   gui.add(p, 'skeleton').name('skeleton').onChange((on) => scene.setShowSkeleton(on));
   gui.add(p, 'on', ['CPU', 'GPU']).name('skin on').onChange((v) => { scene.setGpu(v === 'GPU'); average = 0; });
 

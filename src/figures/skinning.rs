@@ -42,6 +42,19 @@ pub fn heat(w: f32) -> Vec4 {
     c.extend(1.0)
 }
 
+/// The heat map's colour ramp as a CSS gradient (left 0, right 1), for the legends beside the
+/// figures: eleven stops of [`heat`], converted to sRGB like the mesh colours, so the legend
+/// shows exactly the colours on the meshes.
+pub fn heat_ramp_css() -> String {
+    let stops: Vec<String> = (0..=10)
+        .map(|k| {
+            let w = k as f32 / 10.0;
+            format!("{} {}%", palette::css(heat(w).truncate()), 10 * k)
+        })
+        .collect();
+    format!("linear-gradient(to right, {})", stops.join(", "))
+}
+
 /// A skinned mesh's current vertices and colours, and whether the GPU copy is stale.
 #[derive(Clone, Debug, Default)]
 pub struct SkinnedMesh {
@@ -546,6 +559,12 @@ pub enum Method {
     Dqs,
 }
 
+/// The character's falloff slider, metres: from nearly rigid parts (a crease at each joint) to
+/// blend zones that reach along the whole part. Past about 0.06 m every vertex already mixes its
+/// part's joints nearly evenly, so a longer range would only add slider travel that changes
+/// little (it used to reach 0.2 m, and its last three quarters barely showed).
+pub const HUMAN_FALLOFF_RANGE: [f32; 2] = [0.005, 0.06];
+
 /// The built-in human with a skinned body, playing one of its clips.
 #[derive(Clone, Debug)]
 pub struct HumanFigure {
@@ -668,9 +687,10 @@ impl HumanFigure {
         Ok(())
     }
 
-    /// Falloff of the automatic weights, metres in [0.005, 0.2].
+    /// Falloff of the automatic weights, metres in [`HUMAN_FALLOFF_RANGE`].
     pub fn set_falloff(&mut self, falloff: f32) -> Result<(), String> {
-        let f = in_range("falloff", falloff, 0.005, 0.2)?;
+        let [lo, hi] = HUMAN_FALLOFF_RANGE;
+        let f = in_range("falloff", falloff, lo, hi)?;
         let c = skinned_human(f).map_err(|e| e.to_string())?;
         self.character.skin = c.skin;
         self.falloff = f;
@@ -810,8 +830,19 @@ impl HumanFigure {
                 palette::RED,
             );
         }
+        let colours = match self.heat_joint {
+            Some(j) => format!(
+                " Colours: the {}'s weights, blue 0 to red 1.",
+                self.character.skeleton.names()[j]
+            ),
+            // The falloff changes the weights; the shapes move only a few centimetres, mostly
+            // inside the neighbouring parts, so the heat map is where it shows.
+            None => {
+                " Pick a joint under weights of to see the blend zones the falloff sets.".into()
+            }
+        };
         format!(
-            "{} vertices, {} joints ({} vertices follow two or more at falloff {} m), skinned by {} {where_} ({} clip).",
+            "{} vertices, {} joints ({} vertices follow two or more at falloff {} m), skinned by {} {where_} ({} clip).{colours}",
             self.character.mesh.positions.len(),
             self.character.skeleton.len(),
             blended(&self.character.skin),

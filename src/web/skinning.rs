@@ -8,6 +8,12 @@ use crate::figures::skinning::{CylinderFigure, HumanFigure, SkinnedMesh};
 use crate::mesh::MeshData;
 use wasm_bindgen::prelude::*;
 
+/// The heat map's colours as a CSS gradient, 0 on the left to 1 on the right (the legends).
+#[wasm_bindgen(js_name = heatRampCss)]
+pub fn heat_ramp_css() -> String {
+    crate::figures::skinning::heat_ramp_css()
+}
+
 /// Uploads `skinned` into `id` (creating the mesh on first use) if it changed.
 fn sync(
     viewer: &mut Viewer,
@@ -171,10 +177,20 @@ impl SkinnedHumanScene {
         self.scene.set_method(name).map_err(js)
     }
 
-    /// Falloff of the automatic weights, metres in [0.005, 0.2].
+    /// Falloff of the automatic weights, metres in [`falloffRange`](Self::falloff_range).
     #[wasm_bindgen(js_name = setFalloff)]
     pub fn set_falloff(&mut self, falloff: f32) -> Result<(), JsError> {
         self.scene.set_falloff(falloff).map_err(js)
+    }
+
+    /// `[lowest, highest]` falloff, metres: the slider's range. As the f32s' shortest decimals
+    /// (0.005, not 0.004999999888), so the slider's steps land on round numbers.
+    #[wasm_bindgen(js_name = falloffRange)]
+    pub fn falloff_range(&self) -> Vec<f64> {
+        crate::figures::skinning::HUMAN_FALLOFF_RANGE
+            .iter()
+            .map(|x| x.to_string().parse().unwrap_or(f64::from(*x)))
+            .collect()
     }
 
     #[wasm_bindgen(js_name = jointNames)]
