@@ -335,3 +335,46 @@ fn the_characters_note_says_where_the_falloff_shows() {
         "{note}"
     );
 }
+
+#[test]
+fn the_plots_dashed_lines_follow_the_pose_where_it_is_on_their_curves() {
+    use inbetween::figures::skinning::PlotCursors;
+    let mut f = CylinderFigure::new();
+    let cursors = |f: &CylinderFigure| f.plot_cursors();
+    // Bent, not twisted: on the bend curves of both plots.
+    f.set_bend_deg(60.0).unwrap();
+    let c = cursors(&f);
+    let near = |x: Option<f32>, want: f32| x.is_some_and(|x| (x - want).abs() < 1e-3);
+    assert!(near(c.area, 60.0) && near(c.volume, 60.0), "{c:?}");
+    let note = f.draw(&mut Frame::default(), IDS).unwrap();
+    assert!(note.contains("dashed lines mark this bend"), "{note}");
+    // Twisted, not bent: on the area plot's twist curves, at |twist|, where the plotted area is
+    // the note's; the volume plot (no twist) has none.
+    f.set_bend_deg(0.0).unwrap();
+    f.set_twist_deg(-120.0).unwrap();
+    let c = cursors(&f);
+    assert_eq!(c.volume, None);
+    let x = c.area.unwrap();
+    assert!((x - 120.0).abs() < 1e-3, "{x}");
+    let note = f.draw(&mut Frame::default(), IDS).unwrap();
+    assert!(note.contains("marks this twist"), "{note}");
+    let curves = f.area_curves(181).unwrap();
+    let row = &curves[5 * 120..5 * 121];
+    assert!((row[0] - 120.0).abs() < 1e-3);
+    let (lbs, dqs) = f.elbow_areas();
+    assert!(
+        (row[3] - lbs).abs() < 1e-3 && (row[4] - dqs).abs() < 1e-3,
+        "plot {row:?}, now {lbs} {dqs}"
+    );
+    // Bent and twisted: on none of the curves, and the note says so.
+    f.set_bend_deg(90.0).unwrap();
+    assert_eq!(
+        cursors(&f),
+        PlotCursors {
+            area: None,
+            volume: None
+        }
+    );
+    let note = f.draw(&mut Frame::default(), IDS).unwrap();
+    assert!(note.contains("on none of the plots' curves"), "{note}");
+}

@@ -41,16 +41,21 @@ if (cylinderViewer) {
     const [bend, lbs, dqs] = columns(scene.volumeCurves(37), 3);
     volumePlot.setData([bend, pct(lbs), pct(dqs)]);
   }
-  gui.add(p, 'bend', 0, 180, 1).name('bend (°)').onChange((v) => { scene.setBendDeg(v); plot.setCursor?.(v); volumePlot.setCursor?.(v); });
-  gui.add(p, 'twist', -180, 180, 1).name('twist (°)').onChange((v) => scene.setTwistDeg(v));
+  // The dashed lines: where the pose lies on each plot's curves (none while bent and twisted).
+  const moveCursors = () => {
+    const [area, volume] = scene.plotCursors();
+    plot.setCursor(area);
+    volumePlot.setCursor(volume);
+  };
+  gui.add(p, 'bend', 0, 180, 1).name('bend (°)').onChange((v) => { scene.setBendDeg(v); moveCursors(); });
+  gui.add(p, 'twist', -180, 180, 1).name('twist (°)').onChange((v) => { scene.setTwistDeg(v); moveCursors(); });
   gui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange((v) => { scene.setFalloff(v); updatePlot(); });
   const showLegend = heatLegend('#fig-cylinder');
   gui.add(p, 'heat', ['none', 'shoulder', 'elbow']).name('weights of').onChange((v) => { scene.setHeatJoint(v); showLegend(v); });
   showLegend(p.heat);
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
   updatePlot();
-  plot.setCursor?.(p.bend);
-  volumePlot.setCursor?.(p.bend);
+  moveCursors();
 
   const note = document.getElementById('cyl-note');
   lesson.onFrame(() => {

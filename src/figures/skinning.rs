@@ -112,6 +112,16 @@ fn parse_heat(names: &[String], name: &str) -> Result<Option<usize>, String> {
         .ok_or_else(|| format!("weights of: no joint named {name:?}"))
 }
 
+/// Where the current pose lies on the cylinder figure's two plots ([`CylinderFigure::plot_cursors`]):
+/// an angle in degrees on each x axis, or `None` when the pose is on none of the plot's curves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlotCursors {
+    /// On the area plot (bend curves with no twist, twist curves with no bend).
+    pub area: Option<f32>,
+    /// On the volume plot (against the bend, with no twist).
+    pub volume: Option<f32>,
+}
+
 /// The lesson's first figure: one rig, skinned by LBS and by DQS side by side.
 #[derive(Clone, Debug)]
 pub struct CylinderFigure {
@@ -440,6 +450,18 @@ impl CylinderFigure {
             blended(&self.skin),
             self.skin.len()
         ));
+        note.push(' ');
+        note.push_str(match self.plot_cursors() {
+            PlotCursors { area: Some(_), volume: Some(_) } => {
+                "The plots' dashed lines mark this bend (no twist)."
+            }
+            PlotCursors { area: Some(_), volume: None } => {
+                "The area plot's dashed line marks this twist, on its twist curves (no bend); the volume plot has no twist."
+            }
+            _ => {
+                "Bent and twisted at once, the tube is on none of the plots' curves (each varies one angle with the other at 0), so they show no dashed line."
+            }
+        });
         if let Some(j) = self.heat_joint {
             note.push_str(&format!(
                 " Colours: the {}'s weights, blue 0 to red 1.",
@@ -451,6 +473,25 @@ impl CylinderFigure {
             note.push_str(&self.exercise_note);
         }
         Ok(note)
+    }
+
+    /// Where the current pose lies on the plots' x axes (their dashed lines), degrees. The area
+    /// plot's curves each vary one angle with the other at 0: with no twist the pose is on the
+    /// bend curves at the bend, with no bend on the twist curves at |twist| (a twist either way
+    /// shrinks the ring alike); bent and twisted at once it is on none. The volume plot is
+    /// against the bend with no twist.
+    pub fn plot_cursors(&self) -> PlotCursors {
+        let (bend, twist) = (self.bend_rad.to_degrees(), self.twist_rad.to_degrees());
+        PlotCursors {
+            area: if twist == 0.0 {
+                Some(bend)
+            } else if bend == 0.0 {
+                Some(twist.abs())
+            } else {
+                None
+            },
+            volume: (twist == 0.0).then_some(bend),
+        }
     }
 
     /// The elbow ring's area (fraction of rest) against the angle: `[angle (°), LBS bend, DQS

@@ -110,6 +110,14 @@ impl SkinningCylinderScene {
     }
 
     /// `[angle (°), LBS, DQS]` per sample: the tube's volume (fraction of rest) against the bend.
+    /// `[area plot, volume plot]`: where the current pose lies on each plot's x axis, degrees
+    /// (their dashed lines), NaN where it is on none of the plot's curves.
+    #[wasm_bindgen(js_name = plotCursors)]
+    pub fn plot_cursors(&self) -> Vec<f32> {
+        let c = self.scene.plot_cursors();
+        vec![c.area.unwrap_or(f32::NAN), c.volume.unwrap_or(f32::NAN)]
+    }
+
     #[wasm_bindgen(js_name = volumeCurves)]
     pub fn volume_curves(&self, samples: usize) -> Result<Vec<f32>, JsError> {
         self.scene.volume_curves(samples).map_err(js)
