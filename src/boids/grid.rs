@@ -1,6 +1,6 @@
 //! Neighbour search: the naive O(N²) loop and a uniform grid filled by counting sort.
 
-use glam::Vec3;
+use glam::{Vec3, Vec4};
 
 /// The most cells a grid may have; a grid that would need more uses larger cells (still correct:
 /// a cell is never narrower in y and z than the search radius). 2¹⁹ cells hold 2 MB of run starts.
@@ -184,9 +184,45 @@ impl Grid {
         }
     }
 
+    /// What a search from cell `(ci, cj, ck)` needs of the grid, computed once for all the boids
+    /// in the cell (see [`Grid::runs_near`]).
+    #[inline(always)]
+    pub(super) fn cell_search(&self, (ci, cj, ck): (usize, usize, usize)) -> CellSearch {
+        let [dx, dy, dz] = self.dims.map(|d| d as usize);
+        let (o, size) = (self.origin, self.cell_size);
+        // The cell's faces in y and z. A missing neighbour row (past the border) gets a face at
+        // infinity, hence an infinite gap; so does the outer side of a border cell, whose
+        // clamped positions may lie anywhere beyond it.
+        let faces = |o: f32, c: usize, n: usize| {
+            let lo = o + c as f32 * size;
+            let hi = lo + size;
+            (
+                if c > 0 { lo } else { f32::NEG_INFINITY },
+                if c + 1 < n { hi } else { f32::INFINITY },
+            )
+        };
+        let ((y0, y1), (z0, z1)) = (faces(o.y, cj, dy), faces(o.z, ck, dz));
+        CellSearch {
+            faces: Vec4::new(y0, -y1, z0, -z1),
+            ox: o.x,
+            inv_x: self.inv_sizes().x,
+            // A ball of radius ≤ cell_size reaches no further than X_SPLIT cells along x.
+            lo_min: ci.saturating_sub(X_SPLIT) as f32,
+            hi_max: (ci + X_SPLIT).min(dx - 1) as f32,
+            // The first slot of row (cj − 1, ck − 1); wrapping, as cj or ck may be 0 (those rows
+            // have an infinite gap and are never read).
+            first_row: cj
+                .wrapping_sub(1)
+                .wrapping_add(dy.wrapping_mul(ck.wrapping_sub(1)))
+                .wrapping_mul(dx),
+            row_stride: dx,
+            plane_stride: dx * dy,
+        }
+    }
+
     /// Calls `f(run)` for the slot runs (ranges of [`Grid::sorted`], in increasing order) of the
     /// cells that a ball of squared radius `radius2 ≤ cell_size²` around `p`, which lies in
-    /// the cell `(ci, cj, ck)`, can reach (see [`Grid::runs_near`]).
+    /// the cell `cell`, can reach (see [`Grid::runs_near`]).
     #[inline(always)]
     pub(super) fn for_each_run_near(
         &self,
@@ -196,7 +232,7 @@ impl Grid {
         mut f: impl FnMut(std::ops::Range<usize>),
     ) {
         let mut runs = [(0u32, 0u32); 9];
-        let n = self.runs_near(p, cell, radius2, &mut runs);
+        let n = self.runs_near(&self.cell_search(cell), p, radius2, &mut runs);
         for &(a, b) in &runs[..n] {
             f(a as usize..b as usize);
         }
@@ -204,79 +240,68 @@ impl Grid {
 
     /// Writes into `runs` the slot runs (`start..end` in [`Grid::sorted`], in increasing order)
     /// of the cells that a ball of squared radius `radius2 ≤ cell_size²` around `p`, which lies
-    /// in the cell `(ci, cj, ck)`, can reach, and returns how many there are (at most 9): per
-    /// row along x of the 3 × 3 rows around the cell's, only the cells that the ball's chord
-    /// through the row's slab crosses, and no row the ball misses or whose run is empty. Every point of
-    /// the grid within the ball is in one of the runs (and, as the full block scan visits them,
-    /// in the same order).
+    /// in the cell of `search` ([`Grid::cell_search`]), can reach, and returns how many there
+    /// are (at most 9): per row along x of the 3 × 3 rows around the cell's, only the cells
+    /// that the ball's chord through the row's slab crosses, and no row the ball misses or
+    /// whose run is empty. Every point of the grid within the ball is in one of the runs (and,
+    /// as the full block scan visits them, in the same order).
     #[inline(always)]
     pub(super) fn runs_near(
         &self,
+        search: &CellSearch,
         p: Vec3,
-        (ci, cj, ck): (usize, usize, usize),
         radius2: f32,
         runs: &mut [(u32, u32); 9],
     ) -> usize {
-        let (dx, dy, dz) = (
-            self.dims[0] as usize,
-            self.dims[1] as usize,
-            self.dims[2] as usize,
-        );
-        let (o, size) = (self.origin, self.cell_size);
         // Slightly widened, so rounding never drops a cell that holds a neighbour (a cell too
         // many only costs its distance tests).
         let reach2 = radius2 * (1.0 + 1e-4) + 1e-12;
-        // The squared distances from p to the rows below, at and above its own along one axis:
-        // its own row is at distance 0 (a border cell reaches to infinity outwards, and the
-        // positions outside the box are clamped into it); the others end at its cell's faces.
-        // A missing row (past the border) gets an infinite gap.
-        let gaps2 = |x: f32, o: f32, c: usize, n: usize| {
-            let lo_face = o + c as f32 * size;
-            let below = if c > 0 {
-                (x - lo_face).max(0.0)
-            } else {
-                f32::INFINITY
-            };
-            let above = if c + 1 < n {
-                (lo_face + size - x).max(0.0)
-            } else {
-                f32::INFINITY
-            };
-            [below * below, 0.0, above * above]
-        };
-        let (gy2, gz2) = (gaps2(p.y, o.y, cj, dy), gaps2(p.z, o.z, ck, dz));
-        // ⌊(x − o) / x_size⌋ as in `coords_of`, clamped to ci ± X_SPLIT (a ball of radius
-        // ≤ cell_size reaches no further) and the grid; truncation is ⌊·⌋ once clamped at 0
-        // (no libm floor on x86-64 without SSE4.1).
-        let inv_x = self.inv_sizes().x;
-        let (lo_min, hi_max) = (
-            ci.saturating_sub(X_SPLIT) as f32,
-            (ci + X_SPLIT).min(dx - 1) as f32,
+        // The squared distances from p to the rows below and above its own, in y and in z (its
+        // own row is at distance 0): p − lower face and upper face − p, at least 0.
+        let gaps = (Vec4::new(p.y, -p.y, p.z, -p.z) - search.faces).max(Vec4::ZERO);
+        let g2 = gaps * gaps;
+        // The three rows of one plane (k fixed, j = cj − 1, cj, cj + 1) are the first three
+        // lanes of a Vec4 (the fourth is never reached): their chords and cells are computed
+        // together.
+        let gy2 = Vec4::new(g2.x, 0.0, g2.y, f32::INFINITY);
+        let gz2 = [g2.z, 0.0, g2.w];
+        // ⌊(x − o) / x_size⌋ as in `coords_of`, clamped to the cells the ball can reach;
+        // truncation is ⌊·⌋ once clamped at 0 (no libm floor on x86-64 without SSE4.1).
+        let (px, ox, inv_x) = (
+            Vec4::splat(p.x),
+            Vec4::splat(search.ox),
+            Vec4::splat(search.inv_x),
         );
-        // Clamped as floats, then truncated: the value is finite and within the grid, so the
-        // conversion needs none of `as`'s checks for NaN and overflow.
-        let x_cell = |x: f32| {
-            // By comparisons, not f32::max/min (whose NaN rules cost a blend each on x86-64):
-            // a NaN fails `c > lo_min` and becomes lo_min.
-            let c = (x - o.x) * inv_x;
-            let c = if c > lo_min { c } else { lo_min };
-            let c = if c < hi_max { c } else { hi_max };
-            // SAFETY: c lies in [lo_min, hi_max] ⊂ [0, dx − 1], finite and representable.
-            unsafe { c.to_int_unchecked::<u32>() as usize }
+        let (lo_min, hi_max) = (Vec4::splat(search.lo_min), Vec4::splat(search.hi_max));
+        // Clamped as floats by comparisons (a NaN fails `c > lo_min` and becomes lo_min), so
+        // every lane is finite and within the grid: its conversion needs none of `as`'s checks.
+        let x_cells = |x: Vec4| {
+            let c = (x - ox) * inv_x;
+            let c = Vec4::select(c.cmpgt(lo_min), c, lo_min);
+            Vec4::select(c.cmplt(hi_max), c, hi_max).to_array()
         };
+        // SAFETY: every lane of `x_cells` lies in [lo_min, hi_max] ⊂ [0, dims.x − 1].
+        let cell = |c: f32| unsafe { c.to_int_unchecked::<u32>() as usize };
         let mut n = 0;
         for (kk, &g2z) in gz2.iter().enumerate() {
-            for (jj, &g2y) in gy2.iter().enumerate() {
-                let rest = reach2 - g2z - g2y;
-                if rest.is_nan() || rest < 0.0 {
+            // A missing row's −∞ and a NaN fail.
+            let rest = Vec4::splat(reach2 - g2z) - gy2;
+            let reached = rest.cmpge(Vec4::ZERO).bitmask();
+            if reached == 0 {
+                continue;
+            }
+            let half = rest.sqrt();
+            let (lo, hi) = (x_cells(px - half), x_cells(px + half));
+            let plane = search.first_row.wrapping_add(kk * search.plane_stride);
+            for jj in 0..3 {
+                if reached & (1 << jj) == 0 {
                     continue;
                 }
-                let half = rest.sqrt();
-                let (lo, hi) = (x_cell(p.x - half), x_cell(p.x + half));
-                // kk, jj ∈ {0, 1, 2} stand for ck − 1, ck, ck + 1 (and cj's); a missing row's
-                // infinite gap was skipped above.
-                let row = dx * (cj + jj - 1 + dy * (ck + kk - 1));
-                let (a, b) = (self.cell_start[row + lo], self.cell_start[row + hi + 1]);
+                let row = plane.wrapping_add(jj * search.row_stride);
+                let (a, b) = (
+                    self.cell_start[row + cell(lo[jj])],
+                    self.cell_start[row + cell(hi[jj]) + 1],
+                );
                 if a < b {
                     runs[n] = (a, b);
                     n += 1;
@@ -358,6 +383,21 @@ impl Grid {
             }
         }
     }
+}
+
+/// What [`Grid::runs_near`] needs of a boid's cell, the same for every boid in it.
+pub(super) struct CellSearch {
+    /// The cell's lower and upper faces in y and z as `(y0, −y1, z0, −z1)` (±∞ where the
+    /// neighbour row is missing).
+    faces: Vec4,
+    ox: f32,
+    inv_x: f32,
+    /// The x cells a ball from this cell can reach: `lo_min..=hi_max`.
+    lo_min: f32,
+    hi_max: f32,
+    first_row: usize,
+    row_stride: usize,
+    plane_stride: usize,
 }
 
 /// Calls `f(j)` for every boid `j ≠ i` within `radius` of `positions[i]`, by testing them all.

@@ -12,6 +12,7 @@
 
 pub mod grid;
 
+use grid::CellSearch;
 pub use grid::{cell_index, for_each_neighbour_naive, Grid, MAX_GRID_CELLS};
 
 use crate::particles::{semi_implicit_euler_step, Rng, Sphere};
@@ -469,23 +470,28 @@ impl Flock {
             self.grid.soa_mut()[0][k] = f32::NAN;
         }
         let sorted = self.grid.sorted();
+        let columns = Columns::new(self.grid.soa());
         let [dx, dy, dz] = self.grid.dims.map(|d| d as usize);
         // Cell by cell, so each boid's cell coordinates come without a division or a lookup.
         for ck in 0..dz {
             for cj in 0..dy {
                 for ci in 0..dx {
                     let cell = (ci, cj, ck);
-                    for s in self
+                    let run = self
                         .grid
-                        .run(ci + dx * (cj + dy * ck), ci + dx * (cj + dy * ck))
-                    {
+                        .run(ci + dx * (cj + dy * ck), ci + dx * (cj + dy * ck));
+                    if run.is_empty() {
+                        continue;
+                    }
+                    let search = self.grid.cell_search(cell);
+                    for s in run {
                         let i = sorted[s] as usize;
                         if Some(i) == predator {
                             forces[i] = self.predator_steering(params, i, leader);
                             continue;
                         }
                         let acc = if params.law == ForceLaw::None {
-                            self.steer_simd(params, &base_rules, s, cell)
+                            self.steer_simd(params, &base_rules, &columns, s, &search)
                         } else {
                             self.steer_scalar(params, &base_rules, s, cell, pred_slot)
                         };
@@ -551,8 +557,9 @@ impl Flock {
         &self,
         params: &BoidParams,
         base_rules: &NeighbourRules,
+        columns: &Columns,
         s: usize,
-        cell: (usize, usize, usize),
+        search: &CellSearch,
     ) -> Neighbours {
         let [xs, ys, zs, vxs, vys, vzs] = self.grid.soa();
         let (p, v) = (
@@ -568,13 +575,14 @@ impl Flock {
         let same_radii = rules.rc2 == rules.ra2;
         // One loop per case, so that the loop has no branch but separation's (the view test's
         // case depends on the boid's speed; the radii are the flock's).
+        let (c, g) = (columns, search);
         let mut sums = match (same_radii, kernel.view) {
-            (true, View::All) => self.simd_sums::<true, VIEW_ALL>(&kernel, p, cell, r2),
-            (true, View::Wide) => self.simd_sums::<true, VIEW_WIDE>(&kernel, p, cell, r2),
-            (true, View::Narrow) => self.simd_sums::<true, VIEW_NARROW>(&kernel, p, cell, r2),
-            (false, View::All) => self.simd_sums::<false, VIEW_ALL>(&kernel, p, cell, r2),
-            (false, View::Wide) => self.simd_sums::<false, VIEW_WIDE>(&kernel, p, cell, r2),
-            (false, View::Narrow) => self.simd_sums::<false, VIEW_NARROW>(&kernel, p, cell, r2),
+            (true, View::All) => self.simd_sums::<true, VIEW_ALL>(&kernel, c, p, g, r2),
+            (true, View::Wide) => self.simd_sums::<true, VIEW_WIDE>(&kernel, c, p, g, r2),
+            (true, View::Narrow) => self.simd_sums::<true, VIEW_NARROW>(&kernel, c, p, g, r2),
+            (false, View::All) => self.simd_sums::<false, VIEW_ALL>(&kernel, c, p, g, r2),
+            (false, View::Wide) => self.simd_sums::<false, VIEW_WIDE>(&kernel, c, p, g, r2),
+            (false, View::Narrow) => self.simd_sums::<false, VIEW_NARROW>(&kernel, c, p, g, r2),
         };
         if same_radii {
             sums.na = sums.nc;
@@ -594,7 +602,7 @@ impl Flock {
         }
     }
 
-    /// The lane sums of [`Flock::steer_simd`] for the boid at `p` in cell `cell`, over the runs
+    /// The lane sums of [`Flock::steer_simd`] for the boid at `p` in `search`'s cell, over the runs
     /// a ball of squared radius `r2` reaches. The boid itself is not masked out: it is always in
     /// its own run, at d2 = 0, so it adds exactly its v to the alignment sum and 1 to both
     /// counts (and nothing to cohesion's p − q or to separation); the caller takes that off.
@@ -606,48 +614,61 @@ impl Flock {
     fn simd_sums<const SAME_RADII: bool, const VIEW: u8>(
         &self,
         kernel: &SimdKernel,
+        columns: &Columns,
         p: Vec3,
-        cell: (usize, usize, usize),
+        search: &CellSearch,
         r2: f32,
     ) -> SimdSums {
-        let [xs, ys, zs, vxs, vys, vzs] = self.grid.soa();
-        // One length for all six (they have it): one bounds check per run serves all six.
-        let n = xs.len();
-        let (ys, zs, vxs, vys, vzs) = (&ys[..n], &zs[..n], &vxs[..n], &vys[..n], &vzs[..n]);
+        let len = columns.len;
+        // The four lanes from slot `at` of all six arrays.
+        let chunk = |at: usize| {
+            debug_assert!(at + 4 <= len);
+            // SAFETY: called below only with `at < end` where `end + 3 <= len` (asserted per
+            // run), so slots at..at + 4 lie within every array (`Columns::new`).
+            columns
+                .ptrs
+                .map(|c| unsafe { lanes::load(c.add(at).cast::<[f32; 4]>().read_unaligned()) })
+        };
         let mut sums = SimdSums::default();
         let mut runs = [(0u32, 0u32); 9];
-        let n_runs = self.grid.runs_near(p, cell, r2, &mut runs);
+        let n_runs = self.grid.runs_near(search, p, r2, &mut runs);
         for &(start, end) in &runs[..n_runs] {
-            let (start, len) = (start as usize, (end - start) as usize);
-            // The arrays are padded with 3 entries, so the last chunk can always be loaded.
-            let padded = (len + 3) & !3;
-            // Each array as chunks of four, all cut to one length: an index loop over them
-            // needs no bounds checks (a zip of six iterators measured slower, in wasm too).
-            let r = start..start + padded;
-            let (qx, qy, qz) = (
-                chunks4(&xs[r.clone()]),
-                chunks4(&ys[r.clone()]),
-                chunks4(&zs[r.clone()]),
-            );
-            let (wx, wy, wz) = (
-                chunks4(&vxs[r.clone()]),
-                chunks4(&vys[r.clone()]),
-                chunks4(&vzs[r]),
-            );
-            let n4 = qx.len();
-            let (qy, qz, wx, wy, wz) = (&qy[..n4], &qz[..n4], &wx[..n4], &wy[..n4], &wz[..n4]);
-            let chunk = |c: usize| [qx[c], qy[c], qz[c], wx[c], wy[c], wz[c]].map(lanes::load);
-            let full = (len / 4).min(n4);
-            for c in 0..full {
-                kernel.add::<SAME_RADII, VIEW>(&mut sums, BVec4A::splat(true), chunk(c));
+            let (mut at, end) = (start as usize, end as usize);
+            // A run ends at most at the last boid, so its last chunk, partial or not, ends
+            // within the padding.
+            assert!(end + 3 <= len);
+            // Full chunks need no lane mask; only a run's last, partial chunk does (lanes past
+            // the run's end are other cells' boids).
+            while at + 4 <= end {
+                kernel.add::<SAME_RADII, VIEW>(&mut sums, BVec4A::splat(true), chunk(at));
+                at += 4;
             }
-            if full < n4 {
-                // The partial chunk: lanes past the run's end are other cells' boids.
-                let valid = Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat((len % 4) as f32));
-                kernel.add::<SAME_RADII, VIEW>(&mut sums, valid, chunk(full));
+            if at < end {
+                let valid = lanes::first((end - at) as u32);
+                kernel.add::<SAME_RADII, VIEW>(&mut sums, valid, chunk(at));
             }
         }
         sums
+    }
+}
+
+/// The grid's six sorted arrays (see `Grid::soa`) as pointers, checked once per step to have one
+/// length: the boids, then 3 padding entries.
+struct Columns<'a> {
+    ptrs: [*const f32; 6],
+    len: usize,
+    _soa: std::marker::PhantomData<&'a [Vec<f32>; 6]>,
+}
+
+impl<'a> Columns<'a> {
+    fn new(soa: &'a [Vec<f32>; 6]) -> Self {
+        let len = soa[0].len();
+        assert!(soa.iter().all(|a| a.len() == len) && len >= 3);
+        Self {
+            ptrs: soa.each_ref().map(|a| a.as_ptr()),
+            len,
+            _soa: std::marker::PhantomData,
+        }
     }
 }
 
@@ -660,6 +681,12 @@ mod lanes {
     #[inline(always)]
     pub fn load(a: [f32; 4]) -> Vec4 {
         Vec4::from_array(a)
+    }
+
+    /// The mask of the first `k < 4` lanes.
+    #[inline(always)]
+    pub fn first(k: u32) -> BVec4A {
+        Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat(k as f32))
     }
 
     #[inline(always)]
@@ -683,12 +710,6 @@ mod lanes {
             Vec4::select(m, x, Vec4::ZERO)
         }
     }
-}
-
-/// `a` as chunks of four (a trailing partial chunk is left out).
-#[inline(always)]
-fn chunks4(a: &[f32]) -> &[[f32; 4]] {
-    a.as_chunks::<4>().0
 }
 
 /// The lane sums of [`Flock::steer_simd`]: cohesion's `Σ (p − q)` and count, alignment's
