@@ -183,3 +183,102 @@ fn the_eyes_shrink_with_the_face_when_the_full_form_sum_is_not_one() {
         assert!((*b - expected).length() < 1e-5, "{b} vs {expected}");
     }
 }
+
+/// The largest distance of a head's vertex from its vertical axis (metres).
+fn horizontal_radius(positions: &[Vec3]) -> f32 {
+    positions
+        .iter()
+        .map(|p| (p.x * p.x + p.z * p.z).sqrt())
+        .fold(0.0, f32::max)
+}
+
+#[test]
+fn the_head_stays_within_its_radius_at_any_weights() {
+    use inbetween::figures::blend_shapes::HEAD_RADIUS;
+    let mut f = FaceFigure::new();
+    f.set_animate(false);
+    for combo in 0..81 {
+        // Every weight at -0.5, 0.5 or 1.5 (the sliders' ends and middle).
+        for k in 0..4 {
+            let w = [-0.5, 0.5, 1.5][(combo / 3usize.pow(k as u32)) % 3];
+            f.set_weight(k, w).unwrap();
+        }
+        f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+        let r = horizontal_radius(&f.differential.positions);
+        assert!(r <= HEAD_RADIUS, "combination {combo}: radius {r}");
+    }
+}
+
+#[test]
+fn side_by_side_neither_head_reaches_into_the_other_and_the_view_frames_both() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera};
+    let size = glam::Vec2::new(650.0, 420.0);
+    let mut f = FaceFigure::new();
+    // At the defaults (base 1 − Σw) the heads keep the figure's opening framing.
+    let start = f.view_fit();
+    assert!(
+        start[0].abs() < 1e-6 && (start[3] - 4.8).abs() < 1e-6,
+        "{start:?}"
+    );
+    for (animate, base, w) in [
+        (false, 1.0, 1.5),  // the largest total: 1 + 4 × 1.5 = 7
+        (true, 1.0, 1.5),   // pulsing up to about 4.5
+        (false, 0.5, 0.5),  // the lesson's "Try this": 2.5
+        (false, 0.0, -0.5), // negative: the head is turned inside out, twice as large
+        (false, 0.2, 0.1),  // smaller than at rest
+    ] {
+        f.set_animate(animate);
+        f.set_base_weight(base).unwrap();
+        for k in 0..4 {
+            f.set_weight(k, w).unwrap();
+        }
+        let s_max = f.largest_full_scale();
+        let [x, y, z, distance] = f.view_fit();
+        let mut camera = OrbitCamera::default();
+        camera.target = Vec3::new(x, y, z);
+        camera.distance = distance;
+        camera.orbit(0.15, 0.1);
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        for i in 0..16 {
+            let t = LOOP_SECONDS * i as f32 / 16.0;
+            let mut frame = Frame::default();
+            f.draw(&mut frame, IDS, t).unwrap();
+            let h = heads(&frame);
+            let (left, right) = (h[0].1, h[1].1);
+            let (r_left, r_right) = (
+                horizontal_radius(&f.differential.positions),
+                horizontal_radius(&f.full.positions),
+            );
+            assert!(
+                r_right <= HEAD_RADIUS_FOR_TEST * s_max.max(1.0) + 1e-4,
+                "{r_right} {s_max}"
+            );
+            let gap = (right - left).length() - r_left - r_right;
+            assert!(
+                gap > 0.0,
+                "base {base}, w {w}, t {t}: the heads overlap by {}",
+                -gap
+            );
+            // Both heads, with their full width and height, project inside the canvas.
+            for (centre, r) in [
+                (left, HEAD_RADIUS_FOR_TEST),
+                (right, HEAD_RADIUS_FOR_TEST * s_max.max(1.0)),
+            ] {
+                for corner in [
+                    Vec3::new(-r, -r, 0.0),
+                    Vec3::new(r, -r, 0.0),
+                    Vec3::new(-r, r, 0.0),
+                    Vec3::new(r, r, 0.0),
+                ] {
+                    let p = project_to_canvas(view_proj, size, centre + corner).unwrap();
+                    assert!(
+                        p.x > 0.0 && p.x < size.x && p.y > 0.0 && p.y < size.y,
+                        "base {base}, w {w}: {corner} of the head at {centre} is off the canvas at {p}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+const HEAD_RADIUS_FOR_TEST: f32 = inbetween::figures::blend_shapes::HEAD_RADIUS;

@@ -19,9 +19,17 @@ const EXERCISE_FILE: &str = "src/exercises/blend_shapes.rs";
 const TOLERANCE: f32 = 1e-4;
 /// Length of the weight animation's loop (the lesson's timeline).
 pub const LOOP_SECONDS: f32 = 4.0;
-/// Where the head's centre is, and how far apart the two heads stand.
+/// Where the head's centre is (the centre of a head shown alone).
 const HEAD_CENTRE: Vec3 = Vec3::new(0.0, 1.2, 0.0);
-const HEAD_SPACING: f32 = 1.9;
+/// How far any vertex of the head lies from its vertical axis, metres, at any weights the sliders
+/// allow (a test checks it). Side by side the heads' centres stand this far apart, each radius
+/// times its scale, so neither reaches into the other however they turn about y.
+pub const HEAD_RADIUS: f32 = 1.1;
+/// The camera's distance when the heads are at their rest size (the framing the figure starts
+/// with); larger heads are framed farther away in proportion.
+const VIEW_DISTANCE: f32 = 4.8;
+/// The camera looks a little above the heads' centres.
+const VIEW_LIFT: f32 = 0.1;
 
 /// Which blend the figure shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -183,14 +191,54 @@ impl FaceFigure {
         Ok(out)
     }
 
-    /// Where each shown head stands: `(differential, full)`, `None` when hidden.
-    fn head_positions(&self) -> (Option<Vec3>, Option<Vec3>) {
-        let side = Vec3::X * (HEAD_SPACING / 2.0);
+    /// The largest factor the full form multiplies the head by over the loop (or now, with the
+    /// weights still): `max |base + Σ w|`, the size the layout and the framing make room for.
+    pub fn largest_full_scale(&self) -> f32 {
+        let total = |w: [f32; 4]| (self.base_weight_for(&w) + w.iter().sum::<f32>()).abs();
+        if !self.animate {
+            return total(self.weights);
+        }
+        // Each weight is a raised cosine over the loop: 96 steps find the peak to 0.1%.
+        (0..=96)
+            .map(|i| total(self.weights_at(LOOP_SECONDS * i as f32 / 96.0)))
+            .fold(0.0, f32::max)
+    }
+
+    /// Where each shown head stands: `(differential, full)`, `None` when hidden. Side by side,
+    /// the full head stands far enough to the right that, at its largest over the loop
+    /// ([`FaceFigure::largest_full_scale`]), it does not reach into the differential head, and
+    /// the differential head stays where it is, however large the other grows.
+    pub fn head_positions(&self) -> (Option<Vec3>, Option<Vec3>) {
+        let s = self.largest_full_scale().max(1.0);
         match self.show {
-            Show::Both => (Some(HEAD_CENTRE - side), Some(HEAD_CENTRE + side)),
+            Show::Both => (
+                Some(HEAD_CENTRE - Vec3::X * HEAD_RADIUS),
+                Some(HEAD_CENTRE + Vec3::X * (HEAD_RADIUS * s)),
+            ),
             Show::Differential => (Some(HEAD_CENTRE), None),
             Show::Full => (None, Some(HEAD_CENTRE)),
         }
+    }
+
+    /// Where to aim the camera so the shown heads fit: `[x, y, z, distance]`, the heads'
+    /// bounding box at their largest over the loop, at the distance that frames it as the
+    /// figure's start frames the heads at rest size. Changes only when a control does.
+    pub fn view_fit(&self) -> [f32; 4] {
+        let s = self.largest_full_scale().max(1.0);
+        let r = HEAD_RADIUS;
+        let (lo, hi, height) = match self.show {
+            Show::Both => (-2.0 * r, 2.0 * r * s, 2.0 * r * s),
+            Show::Differential => (-r, r, 2.0 * r),
+            Show::Full => (-r * s, r * s, 2.0 * r * s),
+        };
+        // At rest size both heads side by side are 4r wide and 2r tall.
+        let grow = ((hi - lo) / (4.0 * r)).max(height / (2.0 * r)).max(1.0);
+        [
+            0.5 * (lo + hi),
+            HEAD_CENTRE.y + VIEW_LIFT,
+            HEAD_CENTRE.z,
+            VIEW_DISTANCE * grow,
+        ]
     }
 
     /// Blends the faces at `time_sec` and draws them (`meshes`: the GPU ids of the differential
@@ -246,7 +294,7 @@ impl FaceFigure {
                     format_number(total)
                 )
             } else if self.base_weight.is_none() {
-                " (the base weight is 1 − Σw): the same face as the differential form".into()
+                " (the base weight is 1 − Σw): the same face as the differential form, by design; set the full form's base weight by hand to see it go wrong".into()
             } else {
                 String::new()
             };
@@ -298,7 +346,8 @@ impl FaceFigure {
                 frame.mesh(MeshId::SPHERE, eye, palette::DARK);
             }
             if both {
-                frame.label(at + Vec3::new(-0.3, 1.3, 0.0), name, palette::DARK);
+                let above = 1.3 * scale.abs().max(1.0);
+                frame.label(at + Vec3::new(-0.3, above, 0.0), name, palette::DARK);
             }
         }
         Ok(parts.join(" "))

@@ -56,6 +56,13 @@ impl BlendShapeFaceScene {
         self.scene.set_base_weight(w).map_err(js)
     }
 
+    /// `[x, y, z, distance]`: where to aim the camera so both heads fit at their largest over
+    /// the loop (changes only when a control does).
+    #[wasm_bindgen(js_name = viewFit)]
+    pub fn view_fit(&self) -> Vec<f32> {
+        self.scene.view_fit().to_vec()
+    }
+
     #[wasm_bindgen(js_name = setAnimate)]
     pub fn set_animate(&mut self, on: bool) {
         self.scene.set_animate(on);

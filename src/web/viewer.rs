@@ -130,6 +130,18 @@ impl Viewer {
         Ok(())
     }
 
+    /// Aims the camera at a new target from a new distance (metres), keeping the direction the
+    /// reader orbited to: for a figure that reframes when what it shows grows.
+    #[wasm_bindgen(js_name = setTarget)]
+    pub fn set_target(&mut self, x: f32, y: f32, z: f32, distance: f32) -> Result<(), JsError> {
+        for (name, v) in [("x", x), ("y", y), ("z", z)] {
+            super::finite(name, v)?;
+        }
+        self.camera.target = glam::Vec3::new(x, y, z);
+        self.camera.distance = super::in_range("distance", distance, 0.01, 1e4)?;
+        Ok(())
+    }
+
     /// Draws what the scene put in the frame, then clears it. The frame's labels are projected
     /// first and kept for [`Viewer::labels_json`].
     pub fn present(&mut self) -> Result<(), JsError> {

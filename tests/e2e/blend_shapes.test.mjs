@@ -1,0 +1,114 @@
+// Lesson 10's face figure in Chromium: at the defaults the two heads are the same and the note
+// says why; with the full form's base weight set by hand and a total far above 1, both heads stay
+// whole in view, side by side (checked by pixels: two separate heads on the row through their
+// centres, neither touching the canvas's edges).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { launch, pixelStats } from './browser.mjs';
+import { startServer } from '../../scripts/serve.mjs';
+
+const SHOTS = 'tests/screenshots';
+mkdirSync(SHOTS, { recursive: true });
+let server;
+let origin;
+before(async () => {
+  server = await startServer('dist', 0);
+  origin = `http://127.0.0.1:${server.address().port}`;
+});
+after(() => server?.close());
+
+const frames = (page, n = 6) => page.evaluate((n) => new Promise((ok) => {
+  const step = (k) => (k === 0 ? ok() : requestAnimationFrame(() => step(k - 1)));
+  step(n);
+}), n);
+
+/** Sets the lil-gui control named `name` in `figure` as a reader would (type, pick or tick). */
+async function setControl(page, figure, name, value) {
+  const c = page.locator(`${figure} .lil-controller`, { hasText: name }).first();
+  const classes = await c.getAttribute('class');
+  if (classes.includes('option')) await c.locator('select').selectOption(String(value));
+  else if (classes.includes('boolean')) await c.locator('input').setChecked(Boolean(value));
+  else {
+    const input = c.locator('input').first();
+    await input.fill(String(value));
+    await input.press('Enter');
+  }
+}
+
+/**
+ * The runs of non-background pixels along rows of the last `pixelStats` image (`key`), at the
+ * fractions `rows` of its height: `[[start, end], …]` per row, runs under 4 px and gaps under
+ * 3 px ignored (antialiasing, thin lines).
+ */
+function runsAlongRows(page, key, width, rows) {
+  return page.evaluate(([key, width, rows]) => {
+    const data = window.__shots[key];
+    const height = data.length / 4 / width;
+    const bg = [data[0], data[1], data[2]];
+    return rows.map((fraction) => {
+      const y = Math.floor(fraction * height);
+      const runs = [];
+      let start = -1;
+      let gap = 0;
+      for (let x = 0; x <= width; x++) {
+        const i = 4 * (y * width + x);
+        const inside = x < width && Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]) > 40;
+        if (inside) {
+          if (start < 0) start = x;
+          gap = 0;
+        } else if (start >= 0 && ++gap >= 3) {
+          const end = x - gap;
+          if (end - start >= 4) runs.push([start, end]);
+          start = -1;
+          gap = 0;
+        }
+      }
+      return runs;
+    });
+  }, [key, width, rows]);
+}
+
+test('lesson 10: identical heads at the defaults, both in view at a total far above 1', async () => {
+  const context = await launch('webgl2');
+  try {
+    const page = await context.newPage();
+    const problems = [];
+    page.on('pageerror', (e) => problems.push(e.message));
+    page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+    await page.goto(`${origin}/lessons/10-blend-shapes/?backend=webgl2`);
+    await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+    const fig = '#fig-face';
+    const canvas = page.locator(`${fig} .stage canvas`);
+    await canvas.scrollIntoViewIfNeeded();
+    // The defaults: the same face twice, and the text and the note say it is meant.
+    const note = () => page.locator('#face-note').textContent();
+    assert.match(await note(), /the same face as the differential form, by design; set the full form's base weight by hand/);
+    assert.match(await page.locator('main').textContent(), /the two heads start out identical, and that is by design/);
+    // A total of 7: base weight 1 by hand, every target at 1.5, still.
+    await page.locator(`${fig} .timeline .play`).click();
+    await setControl(page, fig, 'animate the weights', false);
+    await setControl(page, fig, 'full: base weight', 1);
+    for (const name of ['smile', 'jaw open', 'brows up', 'puff cheeks']) await setControl(page, fig, name, 1.5);
+    await frames(page, 10);
+    assert.match(await note(), /= 7(\.0+)?, not 1/);
+    const { width } = await pixelStats(page, canvas, 'big');
+    await canvas.screenshot({ path: `${SHOTS}/10-blend-shapes-total7-webgl2.png` });
+    // Rows through the heads' middle (above the small grid under the left head): two heads,
+    // apart, the big one not cut off by the edges.
+    const rows = await runsAlongRows(page, 'big', width, [0.46, 0.5]);
+    const separate = rows.filter((runs) => runs.length >= 2);
+    assert.ok(separate.length > 0, `two separate heads on a middle row: ${JSON.stringify(rows)}`);
+    for (const runs of separate) {
+      const [left, right] = [runs[0], runs[runs.length - 1]];
+      assert.ok(left[0] > 2 && right[1] < width - 3, `a head touches the canvas's edge: ${JSON.stringify(runs)} of ${width}`);
+      assert.ok(left[1] - left[0] >= 12, `the differential head is visible: ${JSON.stringify(runs)}`);
+      assert.ok(right[1] - right[0] > 3 * (left[1] - left[0]), `the full head is the larger: ${JSON.stringify(runs)}`);
+    }
+    await page.locator(fig).screenshot({ path: `${SHOTS}/10-blend-shapes-total7-figure-webgl2.png` });
+    assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), []);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
