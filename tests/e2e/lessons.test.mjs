@@ -21,6 +21,19 @@ before(async () => {
 });
 after(() => server?.close());
 
+/**
+ * With E2E_TIMING=1, `clock(what)` prints how long `what` took since the last call (to see where a
+ * page's test spends its time); otherwise it does nothing.
+ */
+function phaseClock(where) {
+  let last = Date.now();
+  return (what) => {
+    const now = Date.now();
+    if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${now - last} ms`);
+    last = now;
+  };
+}
+
 /** Opens `path`, collecting console errors and page errors; waits until every figure is ready. */
 async function open(context, path) {
   const page = await context.newPage();
@@ -323,13 +336,16 @@ for (const backend of BACKENDS) {
       });
       for (const lesson of lessons) {
         await t.test(lesson.folder, async () => {
+          const clock = phaseClock(`${lesson.folder} (${backend})`);
           const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
+          clock('load');
           const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
           assert.equal(await page.evaluate(() => document.body.dataset.backend), label);
           await pauseTimelines(page);
           await frames(page);
           if (lesson.folder.startsWith('02-')) await editorDrags(page);
           if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
+          clock('editor drags, GPU noise check');
           const figures = await page.locator('.figure').all();
           assert.ok(figures.length > 0, 'a lesson has at least one figure');
           let interacted = false;
@@ -345,6 +361,7 @@ for (const backend of BACKENDS) {
               const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
               assert.ok(moved > 0, `figure ${i}: no control was found to move`);
               await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+              clock(`figure ${i} (${kind}): every control`);
               continue;
             }
             if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
@@ -358,12 +375,15 @@ for (const backend of BACKENDS) {
             assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
             assert.ok(before.colors > 20, `figure ${i}: too few colours (${before.colors}) for shaded geometry`);
             assert.ok(before.still < 0.5, `figure ${i}: image changes while paused (${before.still})`);
+            clock(`figure ${i}: settled`);
             if (light(backend) && interacted) continue;
             interacted = true;
             await orbitDrag(page, canvas, i);
+            clock(`figure ${i}: orbit`);
             const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
             assert.ok(moved > 0, `figure ${i}: no control was found to move`);
             await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+            clock(`figure ${i}: every control`);
           }
           // Both page sizes the course supports: no sideways scrolling, screenshots to look at.
           for (const [w, h] of light(backend) ? [] : [[800, 600], [1600, 1000]]) {
@@ -372,6 +392,7 @@ for (const backend of BACKENDS) {
             const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
             assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
             await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`);
+            clock(`${w}x${h} page`);
           }
           await page.setViewportSize({ width: 1100, height: 900 });
           // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
@@ -382,7 +403,9 @@ for (const backend of BACKENDS) {
             const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
             assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
           }
+          clock('exercise switch');
           await fullPageShot(page, `${SHOTS}/${lesson.folder}-${backend}.png`);
+          clock('page screenshot');
           assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
           assert.deepEqual(problems, []);
           await page.close();
