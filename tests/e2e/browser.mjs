@@ -72,3 +72,24 @@ export function meanDifference(page, keyA, keyB) {
     return sum / x.length;
   }, [keyA, keyB]);
 }
+
+/** Waits for `n` animation frames, so the figures show the latest state. */
+export function frames(page, n = 6) {
+  return page.evaluate((n) => new Promise((ok) => {
+    const step = (k) => (k === 0 ? ok() : requestAnimationFrame(() => step(k - 1)));
+    step(n);
+  }), n);
+}
+
+/** Sets the lil-gui control named `name` in `figure` as a reader would (type, pick or tick). */
+export async function setControl(page, figure, name, value) {
+  const c = page.locator(`${figure} .lil-controller`, { hasText: name }).first();
+  const classes = await c.getAttribute('class');
+  if (classes.includes('option')) await c.locator('select').selectOption(String(value));
+  else if (classes.includes('boolean')) await c.locator('input').setChecked(Boolean(value));
+  else {
+    const input = c.locator('input').first();
+    await input.fill(String(value));
+    await input.press('Enter');
+  }
+}

@@ -5,7 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { launch, pixelStats, meanDifference } from './browser.mjs';
+import { launch, pixelStats, meanDifference, frames } from './browser.mjs';
 import { startServer } from '../../scripts/serve.mjs';
 import { gpuNoiseMatchesCpu } from './noise_gpu.mjs';
 
@@ -69,14 +69,6 @@ async function fullPageShot(page, path) {
   await frames(page, 4);
   await page.screenshot({ path });
   await page.setViewportSize(viewport);
-}
-
-/** Waits for a few animation frames so the figures show the latest state. */
-async function frames(page, n = 6) {
-  await page.evaluate((n) => new Promise((ok) => {
-    const step = (k) => (k === 0 ? ok() : requestAnimationFrame(() => step(k - 1)));
-    step(n);
-  }), n);
 }
 
 /**

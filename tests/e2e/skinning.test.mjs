@@ -4,7 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync } from 'node:fs';
-import { launch, pixelStats, meanDifference } from './browser.mjs';
+import { launch, pixelStats, meanDifference, frames, setControl } from './browser.mjs';
 import { startServer } from '../../scripts/serve.mjs';
 
 const SHOTS = 'tests/screenshots';
@@ -17,24 +17,6 @@ before(async () => {
   origin = `http://127.0.0.1:${server.address().port}`;
 });
 after(() => server?.close());
-
-const frames = (page, n = 6) => page.evaluate((n) => new Promise((ok) => {
-  const step = (k) => (k === 0 ? ok() : requestAnimationFrame(() => step(k - 1)));
-  step(n);
-}), n);
-
-/** Sets the lil-gui control named `name` in `figure` as a reader would (type, pick or tick). */
-async function setControl(page, figure, name, value) {
-  const c = page.locator(`${figure} .lil-controller`, { hasText: name }).first();
-  const classes = await c.getAttribute('class');
-  if (classes.includes('option')) await c.locator('select').selectOption(String(value));
-  else if (classes.includes('boolean')) await c.locator('input').setChecked(Boolean(value));
-  else {
-    const input = c.locator('input').first();
-    await input.fill(String(value));
-    await input.press('Enter');
-  }
-}
 
 test('lesson 09: heat legends, falloff range, plot cursor note, rejected glTF note', async () => {
   const context = await launch('webgl2');
