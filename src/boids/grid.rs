@@ -202,7 +202,15 @@ impl Grid {
             )
         };
         let ((y0, y1), (z0, z1)) = (faces(o.y, cj, dy), faces(o.z, ck, dz));
+        // Which of the 3 × 3 rows around the cell's exist (bit 3 k + j for row (cj − 1 + j,
+        // ck − 1 + k)).
+        let exists = |c: usize, n: usize| (c > 0) as u32 | 2 | ((c + 1 < n) as u32) << 2;
+        let (ey, ez) = (exists(cj, dy), exists(ck, dz));
+        let rows = (0..3)
+            .filter(|kk| ez & (1 << kk) != 0)
+            .fold(0, |m, kk| m | ey << (3 * kk));
         CellSearch {
+            rows,
             faces: Vec4::new(y0, -y1, z0, -z1),
             ox: o.x,
             inv_x: self.inv_sizes().x,
@@ -222,7 +230,7 @@ impl Grid {
 
     /// Calls `f(run)` for the slot runs (ranges of [`Grid::sorted`], in increasing order) of the
     /// cells that a ball of squared radius `radius2 ≤ cell_size²` around `p`, which lies in
-    /// the cell `cell`, can reach (see [`Grid::runs_near`]).
+    /// the cell `cell`, can reach (see [`Grid::runs_near`]; empty runs are skipped).
     #[inline(always)]
     pub(super) fn for_each_run_near(
         &self,
@@ -232,19 +240,22 @@ impl Grid {
         mut f: impl FnMut(std::ops::Range<usize>),
     ) {
         let mut runs = [(0u32, 0u32); 9];
-        let n = self.runs_near(&self.cell_search(cell), p, radius2, &mut runs);
-        for &(a, b) in &runs[..n] {
-            f(a as usize..b as usize);
+        self.runs_near(&self.cell_search(cell), p, radius2, &mut runs);
+        for &(a, b) in &runs {
+            if a < b {
+                f(a as usize..b as usize);
+            }
         }
     }
 
-    /// Writes into `runs` the slot runs (`start..end` in [`Grid::sorted`], in increasing order)
-    /// of the cells that a ball of squared radius `radius2 ≤ cell_size²` around `p`, which lies
-    /// in the cell of `search` ([`Grid::cell_search`]), can reach, and returns how many there
-    /// are (at most 9): per row along x of the 3 × 3 rows around the cell's, only the cells
-    /// that the ball's chord through the row's slab crosses, and no row the ball misses or
-    /// whose run is empty. Every point of the grid within the ball is in one of the runs (and,
-    /// as the full block scan visits them, in the same order).
+    /// Writes into `runs` the slot runs (`start..end` in [`Grid::sorted`], `start ≤ end`, in
+    /// increasing order) of the cells that a ball of squared radius `radius2 ≤ cell_size²`
+    /// around `p`, which lies in the cell of `search` ([`Grid::cell_search`]), can reach: per
+    /// row along x of the 3 × 3 rows around the cell's (entry `3 k + j` for the row at
+    /// `(cj − 1 + j, ck − 1 + k)`), only the cells that the ball's chord through the row's slab
+    /// crosses; a row the ball misses, or that lies past the grid's border, gets an empty run.
+    /// Every point of the grid within the ball is in one of the runs (and, as the full block
+    /// scan visits them, in the same order).
     #[inline(always)]
     pub(super) fn runs_near(
         &self,
@@ -252,7 +263,7 @@ impl Grid {
         p: Vec3,
         radius2: f32,
         runs: &mut [(u32, u32); 9],
-    ) -> usize {
+    ) {
         // Slightly widened, so rounding never drops a cell that holds a neighbour (a cell too
         // many only costs its distance tests).
         let reach2 = radius2 * (1.0 + 1e-4) + 1e-12;
@@ -274,41 +285,45 @@ impl Grid {
         );
         let (lo_min, hi_max) = (Vec4::splat(search.lo_min), Vec4::splat(search.hi_max));
         // Clamped as floats by comparisons (a NaN fails `c > lo_min` and becomes lo_min), so
-        // every lane is finite and within the grid: its conversion needs none of `as`'s checks.
+        // every lane is finite and within [lo_min, hi_max] ⊂ [0, dims.x − 1]: its truncation
+        // to an integer needs none of `as`'s checks.
         let x_cells = |x: Vec4| {
             let c = (x - ox) * inv_x;
             let c = Vec4::select(c.cmpgt(lo_min), c, lo_min);
-            Vec4::select(c.cmplt(hi_max), c, hi_max).to_array()
+            lanes::truncate(Vec4::select(c.cmplt(hi_max), c, hi_max))
         };
-        // SAFETY: every lane of `x_cells` lies in [lo_min, hi_max] ⊂ [0, dims.x − 1].
-        let cell = |c: f32| unsafe { c.to_int_unchecked::<u32>() as usize };
-        let mut n = 0;
         for (kk, &g2z) in gz2.iter().enumerate() {
-            // A missing row's −∞ and a NaN fail.
+            let out = &mut runs[3 * kk..3 * kk + 3];
+            // A missing row's −∞ and a NaN fail; so does any row past the border (`rows`: a
+            // NaN p would otherwise reach them).
             let rest = Vec4::splat(reach2 - g2z) - gy2;
-            let reached = rest.cmpge(Vec4::ZERO).bitmask();
-            if reached == 0 {
+            let reached = rest.cmpge(Vec4::ZERO).bitmask() & (search.rows >> (3 * kk));
+            if reached & 7 == 0 {
+                out.fill((0, 0));
                 continue;
             }
             let half = rest.sqrt();
             let (lo, hi) = (x_cells(px - half), x_cells(px + half));
             let plane = search.first_row.wrapping_add(kk * search.plane_stride);
-            for jj in 0..3 {
-                if reached & (1 << jj) == 0 {
-                    continue;
-                }
-                let row = plane.wrapping_add(jj * search.row_stride);
-                let (a, b) = (
-                    self.cell_start[row + cell(lo[jj])],
-                    self.cell_start[row + cell(hi[jj]) + 1],
-                );
-                if a < b {
-                    runs[n] = (a, b);
-                    n += 1;
-                }
+            for (jj, run) in out.iter_mut().enumerate() {
+                *run = if reached & (1 << jj) != 0 {
+                    let row = plane.wrapping_add(jj * search.row_stride);
+                    let (a, b) = (row + lo[jj] as usize, row + hi[jj] as usize + 1);
+                    debug_assert!(a < b && b < self.cell_start.len());
+                    // SAFETY: the row exists (its bit is set in `search.rows`), so `row` is the
+                    // first of its dims.x cells, and lo, hi ≤ dims.x − 1 (`x_cells`): a and b
+                    // are at most the number of cells, the last index of `cell_start`.
+                    unsafe {
+                        (
+                            *self.cell_start.get_unchecked(a),
+                            *self.cell_start.get_unchecked(b),
+                        )
+                    }
+                } else {
+                    (0, 0)
+                };
             }
         }
-        n
     }
 
     /// Sorted positions and velocities by coordinate (see `soa`).
@@ -385,11 +400,43 @@ impl Grid {
     }
 }
 
+mod lanes {
+    use glam::Vec4;
+
+    /// The lanes of `v`, each finite and in `[0, 2³¹)`, truncated to integers (one instruction
+    /// for the four on x86-64 and in wasm, where a per-lane `as` also checks for NaN and range).
+    #[inline(always)]
+    pub fn truncate(v: Vec4) -> [u32; 4] {
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        {
+            use core::arch::wasm32::{i32x4_trunc_sat_f32x4, v128};
+            // SAFETY: v128 and [u32; 4] have the same size, and every bit pattern is valid.
+            unsafe { core::mem::transmute::<v128, [u32; 4]>(i32x4_trunc_sat_f32x4(v128::from(v))) }
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            use core::arch::x86_64::{__m128, __m128i, _mm_cvttps_epi32};
+            // SAFETY: SSE2 is part of every x86-64 CPU; __m128i and [u32; 4] have the same size
+            // and every bit pattern is valid.
+            unsafe { core::mem::transmute::<__m128i, [u32; 4]>(_mm_cvttps_epi32(__m128::from(v))) }
+        }
+        #[cfg(not(any(
+            all(target_arch = "wasm32", target_feature = "simd128"),
+            target_arch = "x86_64"
+        )))]
+        {
+            v.to_array().map(|c| c as u32)
+        }
+    }
+}
+
 /// What [`Grid::runs_near`] needs of a boid's cell, the same for every boid in it.
 pub(super) struct CellSearch {
     /// The cell's lower and upper faces in y and z as `(y0, −y1, z0, −z1)` (±∞ where the
     /// neighbour row is missing).
     faces: Vec4,
+    /// Bit `3 k + j` is set when the row `(cj − 1 + j, ck − 1 + k)` exists.
+    rows: u32,
     ox: f32,
     inv_x: f32,
     /// The x cells a ball from this cell can reach: `lo_min..=hi_max`.

@@ -631,8 +631,8 @@ impl Flock {
         };
         let mut sums = SimdSums::default();
         let mut runs = [(0u32, 0u32); 9];
-        let n_runs = self.grid.runs_near(search, p, r2, &mut runs);
-        for &(start, end) in &runs[..n_runs] {
+        self.grid.runs_near(search, p, r2, &mut runs);
+        for &(start, end) in &runs {
             let (mut at, end) = (start as usize, end as usize);
             // A run ends at most at the last boid, so its last chunk, partial or not, ends
             // within the padding.
