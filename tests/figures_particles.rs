@@ -161,11 +161,16 @@ fn free_fall_errors_grow_linearly_for_euler_and_stay_zero_for_verlet() {
     let rows: Vec<&[f32]> = s.chunks(4).collect();
     let last = rows[rows.len() - 1];
     let t = last[0];
-    // Both Euler variants are off by g t dt / 2, Verlet by rounding only.
+    // Both Euler variants are off by g t dt / 2, Verlet by rounding only. The samples are signed
+    // heights above the parabola: explicit Euler (the old velocity) is above it, semi-implicit
+    // Euler (the new one) as far below, so the plot's two lines do not lie on each other.
     let expected = 9.81 * t * 0.1 / 2.0;
     assert!((last[1] - expected).abs() < 1e-3, "{last:?}");
-    assert!((last[2] - expected).abs() < 1e-3, "{last:?}");
-    assert!(last[3] < 1e-4);
+    assert!((last[2] + expected).abs() < 1e-3, "{last:?}");
+    assert!(last[3].abs() < 1e-4);
+    for row in &rows[1..] {
+        assert!(row[1] > 0.0 && row[2] < 0.0, "explicit above, semi-implicit below: {row:?}");
+    }
     // Halving dt halves the Euler error at the same time.
     let e1 = scene.final_errors();
     scene.set_dt(0.05).unwrap();
@@ -188,6 +193,36 @@ fn free_fall_draws_each_integrator_and_the_exact_path() {
         "{note}"
     );
     assert!(scene.draw(&mut frame, f32::NAN).is_err());
+}
+
+#[test]
+fn free_fall_shows_the_exact_ball_at_the_latest_step() {
+    // Between two steps (t = 0.95 s with dt = 0.1 s: the latest step is at 0.9 s) the exact ball
+    // is drawn where the parabola is at 0.9 s, so Verlet's dot (exact for gravity) sits on it
+    // instead of 5 cm behind it; the note says which side of the parabola each Euler is on.
+    let scene = FreeFallFigure::new();
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame, 0.95).unwrap();
+    let big = |c: glam::Vec3, r: f32| {
+        frame
+            .points
+            .iter()
+            .find(|p| p.color[..3] == c.to_array() && (p.radius - r).abs() < 1e-6)
+            .map(|p| glam::Vec3::from_array(p.center))
+            .unwrap()
+    };
+    let exact = big(EXACT_COLOR, 0.07);
+    let verlet = big(INTEGRATOR_COLORS[2], 0.06);
+    let expected = particles::free_fall(scene.p0, scene.v0, scene.g, 0.9).0;
+    assert!((exact - expected).length() < 1e-4, "{exact} {expected}");
+    assert!((exact - verlet).length() < 1e-4, "{exact} {verlet}");
+    assert!(note.contains("t = 0.900 s"), "{note}");
+    assert!(
+        note.contains("explicit Euler is 0.441 m above")
+            && note.contains("semi-implicit Euler 0.441 m below")
+            && note.contains("velocity Verlet on the parabola"),
+        "{note}"
+    );
 }
 
 #[test]

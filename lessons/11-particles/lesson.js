@@ -64,7 +64,7 @@ if (fallViewer) {
   gui.add(p, 'dt', 0.01, 0.3, 0.01).name('step size Δt (s)');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('freefall-plot'), {
-    title: 'Position error against the exact solution', xLabel: 'time (s)', yLabel: 'error (m)',
+    title: 'Height above the exact parabola (y − y_exact)', xLabel: 'time (s)', yLabel: 'height error (m)',
     series: ['explicit Euler', 'semi-implicit Euler', 'velocity Verlet'],
     colors: [cssVar('--x-axis'), cssVar('--z-axis'), cssVar('--y-axis')], minSpan: 0.01,
   });

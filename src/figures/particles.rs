@@ -477,19 +477,26 @@ impl FreeFallFigure {
         }
     }
 
-    /// Plot samples, flat: `[t, error explicit Euler, error semi-implicit, error Verlet]` (metres)
-    /// after each step, from the paths the figure draws.
+    /// Plot samples, flat: `[t, y error explicit Euler, y error semi-implicit, y error Verlet]`
+    /// after each step, from the paths the figure draws: the signed height error `y − y_exact`
+    /// in metres (positive: above the parabola). Gravity is vertical, so x is exact for every
+    /// integrator and the height error is the whole position error; its sign is what tells the
+    /// two Euler steps apart (explicit Euler is above by ½ g t Δt, semi-implicit below by as
+    /// much), which a plot of distances would draw as one line over the other.
     pub fn error_samples(&self) -> Vec<f32> {
         let mut out = Vec::with_capacity(4 * (self.steps() + 1));
         for k in 0..=self.steps() {
             let t = k as f32 * self.dt_sec;
-            let (exact, _) = free_fall(self.p0, self.v0, self.g, t);
             out.push(t);
-            for path in &self.paths {
-                out.push((path[k] - exact).length());
-            }
+            out.extend(self.height_errors(k));
         }
         out
+    }
+
+    /// Each integrator's signed height error `y − y_exact` (metres) after `k` steps.
+    fn height_errors(&self, k: usize) -> [f32; 3] {
+        let (exact, _) = free_fall(self.p0, self.v0, self.g, k as f32 * self.dt_sec);
+        [0, 1, 2].map(|i| self.paths[i][k].y - exact.y)
     }
 
     /// The errors at the end of the throw computed by [`free_fall_errors`] (for tests).
@@ -521,8 +528,12 @@ impl FreeFallFigure {
             })
             .collect();
         frame.polyline(&exact, EXACT_COLOR);
-        frame.point(free_fall(self.p0, self.v0, self.g, t).0, 0.07, EXACT_COLOR);
-        let k_now = ((t / self.dt_sec).floor() as usize).min(self.steps());
+        // The integrators exist only after whole steps: the exact ball is shown at the same
+        // instant as their big dots (the latest step), so the gaps drawn are their errors and
+        // not the time since that step (Verlet's dot sits on it).
+        let k_now = ((t / self.dt_sec + 1e-4).floor() as usize).min(self.steps());
+        let t_now = k_now as f32 * self.dt_sec;
+        frame.point(free_fall(self.p0, self.v0, self.g, t_now).0, 0.07, EXACT_COLOR);
         for (path, &color) in self.paths.iter().zip(&INTEGRATOR_COLORS) {
             frame.polyline(&path[..=k_now], color);
             for p in &path[..=k_now] {
@@ -530,18 +541,20 @@ impl FreeFallFigure {
             }
             frame.point(path[k_now], 0.06, color);
         }
-        let [e0, e1, e2] = {
-            let (exact, _) = free_fall(self.p0, self.v0, self.g, k_now as f32 * self.dt_sec);
-            [0, 1, 2].map(|i| (self.paths[i][k_now] - exact).length())
-        };
+        let [e0, e1, e2] = self.height_errors(k_now).map(|e| {
+            // Below 10 µm is float rounding (Verlet is exact here): say so instead of a sign.
+            if e.abs() < 1e-5 {
+                "on the parabola (rounding only)".to_string()
+            } else {
+                let side = if e > 0.0 { "above" } else { "below" };
+                format!("{} m {side}", format_number(e.abs()))
+            }
+        });
         let mut note = format!(
-            "After {k_now} steps of dt = {} s (t = {} s): error explicit Euler {} m, semi-implicit \
-             Euler {} m, velocity Verlet {} m.",
+            "After {k_now} steps of dt = {} s (t = {} s): explicit Euler is {e0}, semi-implicit \
+             Euler {e1}, velocity Verlet {e2}.",
             format_number(self.dt_sec),
-            format_number(k_now as f32 * self.dt_sec),
-            format_number(e0),
-            format_number(e1),
-            format_number(e2),
+            format_number(t_now),
         );
         if self.use_exercise {
             note.push(' ');
