@@ -69,6 +69,35 @@ fn the_emitter_figure_fills_up_and_stays_under_its_cap() {
     for p in &frame.points {
         assert!(p.center[1] >= 0.0, "nothing below the floor");
     }
+    // Full without a press of "explode now": the note says it is full, and nothing about
+    // explosions set off by hand (it used to say "Explosions set off by hand: 0 (the system is
+    // full…)").
+    assert!(
+        note.contains("The system is full: new particles wait for free slots."),
+        "{note}"
+    );
+    assert!(!note.contains("by hand"), "{note}");
+    scene.explode();
+    let note = scene
+        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 6.7)
+        .unwrap();
+    assert!(
+        note.contains("The system is full") && note.contains("Explosions set off by hand: 1."),
+        "{note}"
+    );
+    // Not full, one press: only the press.
+    let mut scene = EmitterFigure::new();
+    scene
+        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 1.0)
+        .unwrap();
+    scene.explode();
+    let note = scene
+        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 1.0)
+        .unwrap();
+    assert!(
+        note.contains("Explosions set off by hand: 1.") && !note.contains("full"),
+        "{note}"
+    );
 }
 
 #[test]
@@ -169,7 +198,10 @@ fn free_fall_errors_grow_linearly_for_euler_and_stay_zero_for_verlet() {
     assert!((last[2] + expected).abs() < 1e-3, "{last:?}");
     assert!(last[3].abs() < 1e-4);
     for row in &rows[1..] {
-        assert!(row[1] > 0.0 && row[2] < 0.0, "explicit above, semi-implicit below: {row:?}");
+        assert!(
+            row[1] > 0.0 && row[2] < 0.0,
+            "explicit above, semi-implicit below: {row:?}"
+        );
     }
     // Halving dt halves the Euler error at the same time.
     let e1 = scene.final_errors();

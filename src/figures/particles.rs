@@ -364,17 +364,17 @@ impl EmitterFigure {
             },
             format_number(e),
             format_number(5.0 * e),
-            match (self.bursts.len(), n == self.system.capacity()) {
-                (0, false) => String::new(),
-                (b, full) => format!(
-                    " Explosions set off by hand: {b}{}.",
-                    if full {
-                        " (the system is full: new particles wait for free slots)"
-                    } else {
-                        ""
-                    }
-                ),
-            },
+            // Two separate facts: a full system (which a high rate reaches with no explosion set
+            // off by hand) and the presses of "explode now".
+            [
+                (n == self.system.capacity())
+                    .then(|| " The system is full: new particles wait for free slots.".to_string()),
+                (!self.bursts.is_empty())
+                    .then(|| format!(" Explosions set off by hand: {}.", self.bursts.len())),
+            ]
+            .into_iter()
+            .flatten()
+            .collect::<String>(),
         ))
     }
 
@@ -533,7 +533,11 @@ impl FreeFallFigure {
         // not the time since that step (Verlet's dot sits on it).
         let k_now = ((t / self.dt_sec + 1e-4).floor() as usize).min(self.steps());
         let t_now = k_now as f32 * self.dt_sec;
-        frame.point(free_fall(self.p0, self.v0, self.g, t_now).0, 0.07, EXACT_COLOR);
+        frame.point(
+            free_fall(self.p0, self.v0, self.g, t_now).0,
+            0.07,
+            EXACT_COLOR,
+        );
         for (path, &color) in self.paths.iter().zip(&INTEGRATOR_COLORS) {
             frame.polyline(&path[..=k_now], color);
             for p in &path[..=k_now] {
