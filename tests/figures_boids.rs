@@ -65,6 +65,41 @@ fn the_flock_draws_every_boid_and_the_highlighted_ones_neighbours() {
 }
 
 #[test]
+fn the_steering_arrow_is_long_enough_to_see() {
+    // The purple arrow from the orange boid is STEER_ARROW_M_PER_MS2 metres per m/s² (at most
+    // STEER_ARROW_MAX_M): at the defaults the boid steers at a few tenths of a m/s², which the
+    // old quarter-metre scale drew a few centimetres long, hidden under the neighbour lines.
+    let mut scene = FlockFigure::new();
+    for t in [0.5f32, 1.0, 2.0] {
+        scene.advance_to(t).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let h = scene.highlighted();
+        let steer = scene.flock().steering_of(scene.params(), h);
+        let from = scene.flock().positions[h];
+        let expected = (STEER_ARROW_M_PER_MS2 * steer.length()).min(STEER_ARROW_MAX_M);
+        // The shaft ends where the head (a cone mesh) begins: the tip is the far end of the cone.
+        let shaft: Vec<_> = frame
+            .segments_of(inbetween::draw::palette::PURPLE)
+            .collect();
+        assert_eq!(shaft.len(), 1, "one purple shaft");
+        let (a, b) = shaft[0];
+        assert!((a - from).length() < 1e-5);
+        let head = 0.08f32.min(0.4 * expected);
+        assert!(
+            ((b - a).length() + head - expected).abs() < 1e-3,
+            "{} vs {expected}",
+            (b - a).length() + head
+        );
+        assert!(
+            expected > 0.2 || steer.length() < 0.2,
+            "at {t} s: {} m/s²",
+            steer.length()
+        );
+    }
+}
+
+#[test]
 fn the_flock_rejects_bad_input() {
     let mut scene = FlockFigure::new();
     assert!(scene

@@ -29,6 +29,11 @@ pub const PAGE_MAX_TIMED_BOIDS: usize = 20_000;
 /// a longer jump restarts the flock.
 pub const MAX_CATCH_UP: usize = 10;
 
+/// Length of the flock figure's purple steering arrow per m/s² of steering acceleration, metres.
+pub const STEER_ARROW_M_PER_MS2: f32 = 1.0;
+/// The longest the steering arrow is drawn, metres (the note gives the value).
+pub const STEER_ARROW_MAX_M: f32 = 1.5;
+
 /// What the force-law dropdown offers.
 pub const LAWS: [&str; 3] = ["none", "a1/x² − a2/x⁴", "Gaussian"];
 /// What the search dropdown offers.
@@ -333,10 +338,13 @@ impl FlockFigure {
         }
         let count = found.len();
         self.neighbours = found;
-        // Its steering acceleration now, with the current weights (visible while paused too).
+        // Its steering acceleration now, with the current weights (visible while paused too), at
+        // STEER_ARROW_M_PER_MS2: a quarter metre per m/s² drew the usual 0.3–0.5 m/s² as a few
+        // centimetres, lost under the neighbour lines.
         let steer = self.flock.steering_of(&self.params, h);
         let ph = self.flock.positions[h];
-        frame.arrow(ph, ph + 0.25 * steer, palette::PURPLE, 0.08);
+        let shown = (STEER_ARROW_M_PER_MS2 * steer).clamp_length_max(STEER_ARROW_MAX_M);
+        frame.arrow(ph, ph + shown, palette::PURPLE, 0.08);
         if let Some(l) = leader {
             frame.label(
                 self.flock.positions[l] + Vec3::Y * 0.2,
@@ -353,7 +361,8 @@ impl FlockFigure {
         }
         format!(
             "{} boids, {} search; the orange boid sees {count} neighbours within {} m and steers \
-             at {} m/s² (purple arrow, at most {}); speed at most {} m/s.",
+             at {} m/s² (purple arrow, 1 m per m/s², drawn at most 1.5 m long; the force is at most \
+             {}); speed at most {} m/s.",
             self.flock.len(),
             if self.search == Search::Grid {
                 "grid"
