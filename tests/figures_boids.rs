@@ -211,7 +211,13 @@ fn the_rules_figure_says_what_the_students_code_does() {
         assert!(note.contains(expect), "{expect}: {note}");
     }
     scene.set_runner(wrong);
-    assert!(scene
-        .draw(&mut Frame::default())
-        .contains("Your cell_index differs"));
+    let note = scene.draw(&mut Frame::default());
+    assert!(note.contains("Your cell_index differs"), "{note}");
+    // The wrong runner flips separation only: the note names it, gives both vectors, and says
+    // the other two match.
+    assert!(
+        note.contains("Your three_rules differs at this boid in separation: separation yours (")
+            && note.contains("(cohesion and alignment match.)"),
+        "{note}"
+    );
 }

@@ -377,6 +377,65 @@ impl FlockFigure {
     }
 }
 
+/// How the student's three rules compare with the reference at the figure's boid, naming the
+/// vectors that differ (a flat list of nine numbers left the reader to find which rule was
+/// wrong) and saying which ones match.
+fn rules_note(yours: &[Vec3], reference: &[Vec3; 3]) -> String {
+    const NAMES: [&str; 3] = ["cohesion", "alignment", "separation"];
+    if yours.len() != 3 {
+        return format!(
+            "Your three_rules returned {} vectors instead of 3 (cohesion, alignment, separation).",
+            yours.len()
+        );
+    }
+    let v = |x: Vec3| {
+        format!(
+            "({}, {}, {})",
+            format_number(x.x),
+            format_number(x.y),
+            format_number(x.z)
+        )
+    };
+    let (same, differ): (Vec<usize>, Vec<usize>) = (0..3).partition(|&i| {
+        let e = (yours[i] - reference[i]).abs().max_element();
+        e <= TOLERANCE // false for NaN
+    });
+    if differ.is_empty() {
+        return "Your three_rules matches the reference at this boid.".to_string();
+    }
+    let list = |ids: &[usize]| {
+        ids.iter()
+            .map(|&i| NAMES[i])
+            .collect::<Vec<_>>()
+            .join(" and ")
+    };
+    let details = differ
+        .iter()
+        .map(|&i| {
+            format!(
+                "{} yours {}, reference {}",
+                NAMES[i],
+                v(yours[i]),
+                v(reference[i])
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("; ");
+    let matching = if same.is_empty() {
+        String::new()
+    } else {
+        format!(
+            " ({} {}.)",
+            list(&same),
+            if same.len() == 1 { "matches" } else { "match" }
+        )
+    };
+    format!(
+        "Your three_rules differs at this boid in {}: {details}.{matching}",
+        list(&differ)
+    )
+}
+
 /// The 12 edges of the box `[lo, hi]`.
 fn box_edges(lo: Vec3, hi: Vec3) -> Vec<(Vec3, Vec3)> {
     let c = |i: u32| {
@@ -652,15 +711,7 @@ impl RulesFigure {
             Err(f) => failure_note("exercise 12.1 three_rules", FILE, &f),
             Ok(yours) => {
                 let reference = three_rules(self.boid, self.velocity, &ps, &vs);
-                let flat = |v: &[Vec3]| v.iter().flat_map(|x| x.to_array()).collect::<Vec<f32>>();
-                compare_note(
-                    "three_rules",
-                    "this boid",
-                    &flat(&yours),
-                    &flat(&reference),
-                    TOLERANCE,
-                )
-                .1
+                rules_note(&yours, &reference)
             }
         };
         let dims = self.dims();
