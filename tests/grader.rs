@@ -170,18 +170,32 @@ mod the_grader_itself {
             return;
         }
         static SEEN: AtomicUsize = AtomicUsize::new(0);
-        std::panic::set_hook(Box::new(|_| {
-            SEEN.fetch_add(1, Ordering::SeqCst);
-        }));
-        let report = check(
-            "l",
-            "e",
-            &[0usize],
-            |&i| Ok(out_of_range(&[1], i)),
-            |_| 1,
-            |a, b| a == b,
-        );
-        assert!(matches!(report.status, Status::Panicked { .. }));
+        // A hook with state, so that its box has an address of its own.
+        let step = 1usize;
+        let hook: Box<dyn Fn(&std::panic::PanicHookInfo<'_>) + Send + Sync> = Box::new(move |_| {
+            SEEN.fetch_add(step, Ordering::SeqCst);
+        });
+        let address = |h: &(dyn Fn(&std::panic::PanicHookInfo<'_>) + Send + Sync)| {
+            h as *const _ as *const u8 as usize
+        };
+        let original = address(&*hook);
+        std::panic::set_hook(hook);
+        for _ in 0..3 {
+            let report = check(
+                "l",
+                "e",
+                &[0usize],
+                |&i| Ok(out_of_range(&[1], i)),
+                |_| 1,
+                |a, b| a == b,
+            );
+            assert!(matches!(report.status, Status::Panicked { .. }));
+        }
+        // The very hook that was there is back, not a wrapper around it (a wrapper per graded
+        // case would chain one closure per case).
+        let back = std::panic::take_hook();
+        assert_eq!(address(&*back), original, "the grader put back a wrapper");
+        std::panic::set_hook(back);
         assert_eq!(
             SEEN.load(Ordering::SeqCst),
             0,

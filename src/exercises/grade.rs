@@ -153,15 +153,17 @@ struct Caught {
 /// Runs `f`, catching a panic. `catch_unwind` gives only the payload (the message); the location
 /// is known only to the panic hook, so while `f` runs a hook records it for this thread (and
 /// prints nothing: the report says it all), handing other threads' panics to the hook that was
-/// there. That hook is put back afterwards. Hooks are global: one grading call at a time swaps
-/// them, so parallel tests put the right one back.
+/// there. That very hook is put back afterwards (not wrapped, so grading many cases does not
+/// chain hooks). Hooks are global: one grading call at a time swaps them, so parallel tests put
+/// the right one back.
 #[cfg(not(target_arch = "wasm32"))]
 fn run_caught<T>(_context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<T, Caught> {
     use std::panic::{self, PanicHookInfo};
     use std::sync::{Arc, Mutex};
+    type Hook = Box<dyn Fn(&PanicHookInfo<'_>) + Send + Sync + 'static>;
     static SWAPPING: Mutex<()> = Mutex::new(());
     let _one_at_a_time = SWAPPING.lock().unwrap_or_else(|e| e.into_inner());
-    let previous: Arc<dyn Fn(&PanicHookInfo<'_>) + Send + Sync> = Arc::from(panic::take_hook());
+    let previous: Arc<Mutex<Option<Hook>>> = Arc::new(Mutex::new(Some(panic::take_hook())));
     let location = Arc::new(Mutex::new(None::<String>));
     let (seen, chained) = (location.clone(), previous.clone());
     let grading = std::thread::current().id();
@@ -171,13 +173,17 @@ fn run_caught<T>(_context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result
                 .location()
                 .map(|l| format!("{}:{}:{}", l.file(), l.line(), l.column()));
             *seen.lock().unwrap_or_else(|e| e.into_inner()) = at;
-        } else {
-            chained(info);
+        } else if let Some(hook) = chained.lock().unwrap_or_else(|e| e.into_inner()).as_ref() {
+            hook(info);
         }
     }));
     let result = panic::catch_unwind(panic::AssertUnwindSafe(f));
+    // Dropping the grading hook drops its handle on `previous`.
     drop(panic::take_hook());
-    panic::set_hook(Box::new(move |info| previous(info)));
+    let hook = previous.lock().unwrap_or_else(|e| e.into_inner()).take();
+    if let Some(hook) = hook {
+        panic::set_hook(hook);
+    }
     result.map_err(|payload| Caught {
         message: payload
             .downcast_ref::<&str>()
@@ -193,9 +199,10 @@ fn run_caught<T>(_context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result
 /// to the hook that was there (the test runner's).
 #[cfg(target_arch = "wasm32")]
 fn run_caught<T>(context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<T, Caught> {
-    use std::sync::Arc;
-    let previous: Arc<dyn Fn(&std::panic::PanicHookInfo<'_>) + Send + Sync> =
-        Arc::from(std::panic::take_hook());
+    use std::panic::PanicHookInfo;
+    use std::sync::{Arc, Mutex};
+    type Hook = Box<dyn Fn(&PanicHookInfo<'_>) + Send + Sync + 'static>;
+    let previous: Arc<Mutex<Option<Hook>>> = Arc::new(Mutex::new(Some(std::panic::take_hook())));
     let context = context();
     let chained = previous.clone();
     std::panic::set_hook(Box::new(move |info| {
@@ -205,11 +212,17 @@ fn run_caught<T>(context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<
              PANICKED and grades the other exercises."
         );
         web_sys::console::error_1(&message.into());
-        chained(info);
+        if let Some(hook) = chained.lock().unwrap_or_else(|e| e.into_inner()).as_ref() {
+            hook(info);
+        }
     }));
     let answer = f();
+    // Put back the very hook that was there (see the native `run_caught`).
     drop(std::panic::take_hook());
-    std::panic::set_hook(Box::new(move |info| previous(info)));
+    let hook = previous.lock().unwrap_or_else(|e| e.into_inner()).take();
+    if let Some(hook) = hook {
+        std::panic::set_hook(hook);
+    }
     Ok(answer)
 }
 
