@@ -206,3 +206,46 @@ fn feet_slide_only_without_synchronisation_and_root_motion_moves_the_character()
     assert_eq!(l.origin(), Vec3::ZERO);
     assert!(note.contains("snaps back"), "{note}");
 }
+
+#[test]
+fn unsynchronised_travel_never_jumps_a_cycle_at_a_loop() {
+    // Each clip's cycle count and clip-local time come from one division: a clip's own wrap
+    // (rem_euclid) and the cycle count (floor of t / d) used to disagree in f32 at some loop
+    // times, so the character jumped a whole cycle (about 1 m) for that instant and the
+    // footprints' slide counted the jump (97 cm for the run alone, not synchronised).
+    let mut l = LocomotionFigure::new();
+    let mut frame = Frame::default();
+    let (lo, hi) = l.speed_range();
+    l.set_synchronised(false);
+    for speed in [lo, 0.5 * (lo + hi), hi] {
+        l.set_speed(speed).unwrap();
+        let mut last: Option<Vec3> = None;
+        for k in 0..=2400 {
+            let t = k as f32 / 240.0;
+            l.draw(&mut frame, t).unwrap();
+            if let Some(p) = last {
+                let step = l.origin().z - p.z;
+                assert!(
+                    step.abs() < 0.05,
+                    "speed {speed}: the character moved {step} m between {} s and {t} s",
+                    t - 1.0 / 240.0
+                );
+            }
+            last = Some(l.origin());
+        }
+    }
+    // The run alone slides as little unsynchronised as synchronised.
+    l.set_speed(hi).unwrap();
+    for t in [2.0, 3.3, 5.0, 6.1] {
+        l.set_synchronised(true);
+        l.draw(&mut frame, t).unwrap();
+        let synced = l.slide_m();
+        l.set_synchronised(false);
+        l.draw(&mut frame, t).unwrap();
+        assert!(
+            (l.slide_m() - synced).abs() < 0.02,
+            "at {t} s the run alone slid {} m unsynchronised, {synced} m synchronised",
+            l.slide_m()
+        );
+    }
+}

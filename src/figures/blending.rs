@@ -524,14 +524,22 @@ impl LocomotionFigure {
                 .lerp(self.motion[1].cycle_travel, w);
             (d, phase.floor() * travel + d)
         } else {
-            // The naive blend: both clips at the same clock time, each looping on its own.
-            self.walk.sample(time_sec, &mut cursors[0], &mut self.pose);
-            self.run
-                .sample(time_sec, &mut cursors[1], &mut self.scratch);
+            // The naive blend: both clips at the same clock time, each looping on its own. Each
+            // clip's cycle count and clip-local time come from one division, so they agree at
+            // a loop (the clip's own wrap and ⌊t / d⌋ can differ in f32 there, which put the
+            // character a whole cycle ahead for that instant).
+            let [ka, kb] = [0, 1].map(|i| (time_sec / self.motion[i].duration_sec).floor());
+            let local = |k: f32, d: f32| (time_sec - k * d).clamp(0.0, d * 0.999_999);
+            let (ta, tb) = (
+                local(ka, self.motion[0].duration_sec),
+                local(kb, self.motion[1].duration_sec),
+            );
+            self.walk.sample(ta, &mut cursors[0], &mut self.pose);
+            self.run.sample(tb, &mut cursors[1], &mut self.scratch);
             let da = self.motion[0].extract(&mut self.pose);
             let db = self.motion[1].extract(&mut self.scratch);
-            let pa = self.motion[0].position(time_sec, da);
-            let pb = self.motion[1].position(time_sec, db);
+            let pa = ka * self.motion[0].cycle_travel + da;
+            let pb = kb * self.motion[1].cycle_travel + db;
             for (x, y) in self.pose.local.iter_mut().zip(&self.scratch.local) {
                 *x = crossfade_transform(x, y, w);
             }
