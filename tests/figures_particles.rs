@@ -330,3 +330,100 @@ fn the_squash_ball_keeps_its_volume() {
     assert!(squashed);
     assert!(scene.set_squash(0.9).is_err() && scene.set_stretch(-0.1).is_err());
 }
+
+/// Where `world` lands on a `w × h` canvas seen by the page's camera `view` (setCamera's six
+/// arguments: the Viewer zeroes yaw and pitch, then orbits by them).
+fn on_canvas(view: [f32; 6], w: f32, h: f32, world: Vec3) -> glam::Vec2 {
+    let mut camera = inbetween::camera::OrbitCamera {
+        target: Vec3::new(view[0], view[1], view[2]),
+        distance: view[3],
+        yaw_rad: 0.0,
+        pitch_rad: 0.0,
+        ..Default::default()
+    };
+    camera.orbit(view[4], view[5]);
+    let view_proj = camera.projection(w / h) * camera.view();
+    inbetween::camera::project_to_canvas(view_proj, glam::Vec2::new(w, h), world).unwrap()
+}
+
+#[test]
+fn the_bounce_camera_starts_with_every_ball_and_the_sphere_in_view() {
+    // The page's bounce canvas at 800 x 600 and 1600 x 1000 (CSS pixels). Every ball is dropped
+    // from up to 3.1 m; the old camera (0.9 m up, 4.5 m away) cut the highest ones off.
+    let mut scene = BounceFigure::new();
+    scene.advance_to(0.0).unwrap();
+    let view = scene.view();
+    for (w, h) in [(760.0f32, 380.0f32), (650.0, 365.0)] {
+        let mut points: Vec<Vec3> = Vec::new();
+        for p in scene.positions() {
+            points.push(*p + Vec3::Y * 0.08);
+            points.push(*p - Vec3::Y * 0.08);
+        }
+        // The sphere (centre 0.6 m up, radius 0.6 m), and the floor under the drop.
+        points.extend([
+            Vec3::new(0.0, 1.2, 0.0),
+            Vec3::new(-0.6, 0.6, 0.0),
+            Vec3::new(0.6, 0.6, 0.0),
+        ]);
+        points.extend([Vec3::new(-1.0, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0)]);
+        for p in points {
+            let s = on_canvas(view, w, h, p);
+            assert!(
+                s.x > 5.0 && s.x < w - 5.0 && s.y > 5.0 && s.y < h - 5.0,
+                "{p} lands at {s} on a {w} x {h} canvas"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_squash_figures_labels_never_overlap() {
+    // Labels are HTML over the canvas, running rightwards from 0.35em right of their anchor
+    // (www/style.css: 600 0.8rem, so about 7.7 px a character and 15 px high). At the page's
+    // camera, both canvas sizes, every frame of the 4 s timeline and the sliders' extremes, the
+    // two boxes stay apart; with "squash and stretch" on the left ball they overlapped "rigid".
+    let boxes = |frame: &Frame, view: [f32; 6], w: f32, h: f32| {
+        frame
+            .labels
+            .iter()
+            .map(|l| {
+                let s = on_canvas(view, w, h, l.anchor);
+                let x0 = s.x + 4.5;
+                (
+                    x0,
+                    s.y - 9.0,
+                    x0 + 7.7 * l.text.chars().count() as f32,
+                    s.y + 6.0,
+                )
+            })
+            .collect::<Vec<_>>()
+    };
+    for (k, squash, contact) in [
+        (0.06f32, 0.45f32, 0.09f32),
+        (0.3, 0.8, 0.3),
+        (0.0, 0.0, 0.02),
+    ] {
+        let mut scene = SquashFigure::new();
+        scene.set_stretch(k).unwrap();
+        scene.set_squash(squash).unwrap();
+        scene.set_contact(contact).unwrap();
+        let view = scene.view();
+        for step in 0..=240 {
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, step as f32 / 60.0).unwrap();
+            assert_eq!(frame.labels.len(), 2);
+            for (w, h) in [(760.0f32, 380.0f32), (650.0, 365.0)] {
+                let b = boxes(&frame, view, w, h);
+                let apart =
+                    b[0].2 < b[1].0 || b[1].2 < b[0].0 || b[0].3 < b[1].1 || b[1].3 < b[0].1;
+                assert!(apart, "t = {} s, {w} x {h}: {b:?}", step as f32 / 60.0);
+                for r in &b {
+                    assert!(
+                        r.0 > 0.0 && r.2 < w && r.1 > 0.0 && r.3 < h,
+                        "on the canvas: {r:?}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -88,8 +88,8 @@ if (fallViewer) {
 // Figure 3: bouncing balls.
 const bounceViewer = await lesson.figure('#fig-bounce');
 if (bounceViewer) {
-  bounceViewer.setCamera(0, 0.9, 0, 4.5, 0.3, 0.2);
   const scene = new BounceScene();
+  bounceViewer.setCamera(...scene.view());
   const timeline = new Timeline(document.getElementById('bounce-timeline'), { duration: 6 });
   const p = { restitution: 0.75, friction: 0.1, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-bounce .panel'), title: 'Bouncing' });
@@ -115,8 +115,8 @@ if (bounceViewer) {
 // Figure 4: squash and stretch.
 const squashViewer = await lesson.figure('#fig-squash');
 if (squashViewer) {
-  squashViewer.setCamera(-0.6, 0.9, 0, 5, 0.9, 0.15);
   const scene = new SquashScene();
+  squashViewer.setCamera(...scene.view());
   const timeline = new Timeline(document.getElementById('squash-timeline'), { duration: 4 });
   const p = { stretch: 0.06, squash: 0.45, contact: 0.09 };
   const gui = new GUI({ container: document.querySelector('#fig-squash .panel'), title: 'Squash and stretch' });

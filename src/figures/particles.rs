@@ -647,6 +647,15 @@ impl BounceFigure {
         self.runner = runner;
     }
 
+    /// The camera the page starts with, as `Viewer::setCamera`'s arguments: target x, y, z
+    /// (metres), distance (metres), yaw and pitch (radians). It frames every ball at its drop
+    /// height (up to 3.1 m), the sphere and the floor under them at the page's canvas sizes (a
+    /// test checks it); the old camera, at 0.9 m and 4.5 m away, began with the highest balls
+    /// above the canvas.
+    pub fn view(&self) -> [f32; 6] {
+        [0.0, 1.4, 0.0, 6.4, 0.3, 0.2]
+    }
+
     /// Uses the student's exercise 11.1 for the predicted impact.
     pub fn set_use_exercise(&mut self, on: bool) {
         self.use_exercise = on;
@@ -829,6 +838,9 @@ impl BounceFigure {
 // ---------------------------------------------------------------------------------------------
 // Squash and stretch.
 
+/// How far apart (along z) the squash figure shows its two balls, metres.
+pub const SQUASH_SPACING: f32 = 1.2;
+
 /// The same bounce twice: a rigid ball and one that squashes and stretches.
 #[derive(Clone, Debug)]
 pub struct SquashFigure {
@@ -857,6 +869,13 @@ impl SquashFigure {
             surfaces,
             steps_done: 0,
         }
+    }
+
+    /// The camera the page starts with, as `Viewer::setCamera`'s arguments (target x, y, z,
+    /// distance in metres, yaw and pitch in radians): both balls side by side, the rigid one on
+    /// the left.
+    pub fn view(&self) -> [f32; 6] {
+        [-0.6, 0.9, 0.0, 5.0, 0.9, 0.15]
     }
 
     /// Stretch per m/s of speed, in [0, 0.3].
@@ -923,8 +942,10 @@ impl SquashFigure {
         self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
         let offset = |x: f32| Vec3::new(-1.2, 0.0, x);
-        // The rigid ball, behind.
-        let p = self.plain.position + offset(-0.5);
+        // The rigid ball, in front: at the page's camera it is the left one, so its short label
+        // ends before the squash ball's long one begins (labels run rightwards from their
+        // anchors; with the long label on the left, "squash and stretch" ran into "rigid").
+        let p = self.plain.position + offset(0.5 * SQUASH_SPACING);
         frame.mesh(
             MeshId::SPHERE,
             Mat4::from_translation(p) * Mat4::from_scale(Vec3::splat(self.plain.radius)),
@@ -932,7 +953,7 @@ impl SquashFigure {
         );
         // The squashing ball: keep its lowest point on the floor while squashed.
         let (axis, s) = self.squash.stretch();
-        let mut c = self.squash.position + offset(0.5);
+        let mut c = self.squash.position + offset(-0.5 * SQUASH_SPACING);
         if axis == Vec3::Y && s < 1.0 {
             c.y = self.squash.radius * s;
         }

@@ -245,6 +245,10 @@ impl BounceScene {
     pub fn set_use_exercise(&mut self, on: bool) {
         self.scene.set_use_exercise(on);
     }
+    /// The starting camera, as `Viewer.setCamera`'s six arguments.
+    pub fn view(&self) -> Vec<f32> {
+        self.scene.view().to_vec()
+    }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let note = self
@@ -287,6 +291,10 @@ impl SquashScene {
     #[wasm_bindgen(js_name = setContact)]
     pub fn set_contact(&mut self, sec: f32) -> Result<(), JsError> {
         self.scene.set_contact(sec).map_err(js)
+    }
+    /// The starting camera, as `Viewer.setCamera`'s six arguments.
+    pub fn view(&self) -> Vec<f32> {
+        self.scene.view().to_vec()
     }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
