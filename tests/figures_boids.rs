@@ -221,3 +221,32 @@ fn the_rules_figure_says_what_the_students_code_does() {
         "{note}"
     );
 }
+
+#[test]
+fn the_flock_note_counts_neighbours_in_the_right_number() {
+    // Narrow the view step by step: somewhere the orange boid sees exactly one neighbour, and
+    // the note says "1 neighbour" (it said "1 neighbours"); every count agrees with its noun.
+    let mut scene = FlockFigure::new();
+    let mut seen_one = false;
+    for fov in (0..=360).rev().step_by(2) {
+        scene.set_fov_deg(fov as f32).unwrap();
+        let note = scene.draw(&mut Frame::default());
+        let count: usize = note
+            .split("sees ")
+            .nth(1)
+            .and_then(|r| r.split(' ').next())
+            .and_then(|n| n.parse().ok())
+            .unwrap();
+        seen_one |= count == 1;
+        let noun = if count == 1 {
+            "neighbour"
+        } else {
+            "neighbours"
+        };
+        assert!(
+            note.contains(&format!("sees {count} {noun} within")),
+            "{note}"
+        );
+    }
+    assert!(seen_one, "some field of view shows exactly one neighbour");
+}

@@ -110,3 +110,18 @@ fn emitter_particles_become_atlas_sprites_once_a_texture_is_given() {
         .collect();
     assert!(d.windows(2).all(|w| w[0] >= w[1] - 1e-5), "farthest first");
 }
+
+#[test]
+fn the_note_counts_one_puff_in_the_singular() {
+    let mut s = SmokeFigure::new();
+    s.set_params(1.0, 4.0).unwrap();
+    let note = s
+        .draw(&mut Frame::default(), TextureId(0), Vec3::Z * 5.0, 2.0)
+        .unwrap();
+    assert!(note.starts_with("1 puff, each living"), "{note}");
+    s.set_params(2.0, 4.0).unwrap();
+    let note = s
+        .draw(&mut Frame::default(), TextureId(0), Vec3::Z * 5.0, 2.0)
+        .unwrap();
+    assert!(note.starts_with("2 puffs, each living"), "{note}");
+}

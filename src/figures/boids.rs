@@ -360,7 +360,7 @@ impl FlockFigure {
             );
         }
         format!(
-            "{} boids, {} search; the orange boid sees {count} neighbours within {} m and steers \
+            "{} boids, {} search; the orange boid sees {count} {} within {} m and steers \
              at {} m/s² (purple arrow, 1 m per m/s², drawn at most 1.5 m long; the force is at most \
              {}); speed at most {} m/s.",
             self.flock.len(),
@@ -369,6 +369,7 @@ impl FlockFigure {
             } else {
                 "naive"
             },
+            if count == 1 { "neighbour" } else { "neighbours" },
             format_number(radius),
             format_number(steer.length()),
             format_number(self.params.max_force),

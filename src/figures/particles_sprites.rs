@@ -167,8 +167,9 @@ impl SmokeFigure {
             );
         }
         Ok(format!(
-            "{} puffs, each living {} s and playing {} of the atlas's {} frames; drawn {}.",
+            "{} {}, each living {} s and playing {} of the atlas's {} frames; drawn {}.",
             self.puffs,
+            if self.puffs == 1 { "puff" } else { "puffs" },
             format_number(self.lifetime_sec),
             if self.animate_frames {
                 "all"
