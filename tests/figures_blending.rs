@@ -24,7 +24,11 @@ fn bad_input_is_an_error_naming_the_parameter() {
         .contains("additive weight"));
     assert!(f.pose(f32::INFINITY).unwrap_err().contains("time"));
     let mut l = LocomotionFigure::new();
-    assert!(l.set_speed(100.0).unwrap_err().contains("speed"));
+    let e = l.set_speed(100.0).unwrap_err();
+    assert!(
+        e.contains("speed must lie between the walk's 0.57 and the run's 1.37 m/s, got 100"),
+        "{e}"
+    );
     assert!(l.draw(&mut Frame::default(), f32::NAN).is_err());
 }
 
@@ -248,4 +252,74 @@ fn unsynchronised_travel_never_jumps_a_cycle_at_a_loop() {
             l.slide_m()
         );
     }
+}
+
+#[test]
+fn body_parts_are_coloured_by_the_weight_of_b_alone() {
+    // The figure's colours say which parts take clip B and how much: every part with the same
+    // weight has the same colour, grey for A only and teal for B only. They used to be a 70 %
+    // teal tint over each part's own colour, which the blue shirt and trousers hid (the legs
+    // taking B looked like the shirt taking nothing).
+    use inbetween::draw::palette;
+    let mut f = BlendFigure::new();
+    f.set_clips("walk", "wave").unwrap();
+    f.set_mask("upper body from B").unwrap();
+    f.set_weight(1.0).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, 0.3).unwrap();
+    let n = f.skeleton().len();
+    let weights = f.joint_weights().to_vec();
+    // The first n meshes are the body parts, one per joint, in joint order.
+    let colors: Vec<Vec3> = frame.meshes[..n]
+        .iter()
+        .map(|m| m.color.truncate())
+        .collect();
+    for j in 0..n {
+        let want = BlendFigure::weight_color(weights[j]);
+        assert!(
+            colors[j].distance(want) < 1e-4,
+            "{}: {:?}, want {want:?} (weight {})",
+            f.skeleton().names()[j],
+            colors[j],
+            weights[j]
+        );
+    }
+    let chest = f.skeleton().find("chest").unwrap();
+    let thigh = f.skeleton().find("thigh.L").unwrap();
+    assert_eq!((weights[chest], weights[thigh]), (1.0, 0.0));
+    assert!(colors[chest].distance(palette::TEAL) < 1e-4);
+    assert!(colors[thigh].distance(palette::GREY) < 1e-4);
+}
+
+#[test]
+fn the_synchronised_try_this_is_what_the_note_says() {
+    // Lesson 08's "Try this" under Figure 2: at the default speed the note's slide is about a
+    // centimetre synchronised and tens of centimetres (up to a metre) not synchronised.
+    let mut l = LocomotionFigure::new();
+    let mut frame = Frame::default();
+    let times: Vec<f32> = (0..12).map(|k| 1.5 + 0.53 * k as f32).collect();
+    let mut worst = [0.0f32; 2];
+    let mut least = [f32::INFINITY; 2];
+    for (i, synchronised) in [true, false].into_iter().enumerate() {
+        l.set_synchronised(synchronised);
+        for &t in &times {
+            let note = l.draw(&mut frame, t).unwrap();
+            assert!(
+                note.contains(&format!(
+                    "slid {:.1} cm in the last 1.5 s.",
+                    l.slide_m() * 100.0
+                )),
+                "{note}"
+            );
+            worst[i] = worst[i].max(l.slide_m());
+            least[i] = least[i].min(l.slide_m());
+        }
+    }
+    assert!(worst[0] < 0.02, "synchronised: up to {} m", worst[0]);
+    assert!(
+        least[1] > 0.1 && worst[1] < 1.5,
+        "not synchronised: {} to {} m",
+        least[1],
+        worst[1]
+    );
 }

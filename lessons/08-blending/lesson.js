@@ -7,7 +7,8 @@ const lesson = await startLesson();
 
 const blendViewer = await lesson.figure('#fig-blend');
 if (blendViewer) {
-  blendViewer.setCamera(0, 0.9, 0, 3.0, 0.6, 0.15);
+  // Far enough back that a hand raised over the head stays in view in a wide, short canvas.
+  blendViewer.setCamera(0, 1.0, 0, 3.7, 0.6, 0.15);
   const scene = new BlendScene();
   const timeline = new Timeline(document.getElementById('blend-timeline'), { duration: scene.durationSec(), playing: true });
   const p = { a: 'walk', b: 'wave', weight: 0.5, mask: 'whole body', additive: 'none', additiveWeight: 1, useExercise: false };

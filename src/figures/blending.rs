@@ -345,6 +345,12 @@ impl BlendFigure {
         }
     }
 
+    /// The colour of a body part whose joint takes clip B at weight `w`: grey (A only) to teal
+    /// (B only).
+    pub fn weight_color(w: f32) -> Vec3 {
+        palette::GREY.lerp(palette::TEAL, w.clamp(0.0, 1.0))
+    }
+
     /// Poses at `time_sec` and draws. Returns the note.
     pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let note = self.pose(time_sec)?;
@@ -355,8 +361,10 @@ impl BlendFigure {
             &self.shapes,
             &self.model,
             Mat4::IDENTITY,
-            |j| palette::GREY.lerp(palette::TEAL, self.joint_weights[j]),
-            |j| 0.7 * self.joint_weights[j],
+            |j| Self::weight_color(self.joint_weights[j]),
+            // Coloured by the weight alone (not over the clothes' colours, which hid a teal
+            // tint on the blue shirt and trousers): the same weight, the same colour.
+            |_| 1.0,
         );
         Ok(note)
     }
@@ -467,7 +475,14 @@ impl LocomotionFigure {
     /// Speed in m/s, within [`LocomotionFigure::speed_range`].
     pub fn set_speed(&mut self, speed: f32) -> Result<(), String> {
         let (lo, hi) = self.speed_range();
-        self.speed = in_range("speed", speed, lo, hi)?;
+        let speed = finite("speed", speed)?;
+        if !(lo..=hi).contains(&speed) {
+            // The range's ends are measured from the clips: two decimals say it (the slider's).
+            return Err(format!(
+                "speed must lie between the walk's {lo:.2} and the run's {hi:.2} m/s, got {speed}"
+            ));
+        }
+        self.speed = speed;
         Ok(())
     }
 
@@ -631,9 +646,8 @@ impl LocomotionFigure {
             " Walk and run sampled at the same clock time (not synchronised)."
         };
         note += &format!(
-            " Planted feet slid {} cm in the last {} s.",
-            format_number((slide * 100.0 * 10.0).round() / 10.0),
-            format_number(FOOTPRINT_SEC)
+            " Planted feet slid {:.1} cm in the last {FOOTPRINT_SEC} s.",
+            slide * 100.0
         );
         if !self.root_motion {
             note += " Root motion left in the pose: the character steps forwards within each cycle and snaps back at every loop.";
