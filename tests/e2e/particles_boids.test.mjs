@@ -1,0 +1,83 @@
+// Lessons 11 and 12 in Chromium, the review's points: the squash figure's two labels never
+// overlap (at both page sizes, over its timeline), the free-fall plot shows signed heights (the
+// two Euler lines on either side of zero) and its note says which side each is on, and the flock
+// note gives the steering arrow's scale.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { launch, frames } from './browser.mjs';
+import { startServer } from '../../scripts/serve.mjs';
+
+let server;
+let origin;
+before(async () => {
+  server = await startServer('dist', 0);
+  origin = `http://127.0.0.1:${server.address().port}`;
+});
+after(() => server?.close());
+
+async function open(context, path, width, height) {
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  await page.setViewportSize({ width, height });
+  await page.goto(`${origin}${path}`);
+  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+  return { page, problems };
+}
+
+/** The visible label boxes of `figure`, as the reader sees them. */
+function labelBoxes(page, figure) {
+  return page.evaluate((figure) => [...document.querySelectorAll(`${figure} .labels span`)]
+    .filter((s) => !s.hidden)
+    .map((s) => { const r = s.getBoundingClientRect(); return { text: s.textContent, l: r.left, r: r.right, t: r.top, b: r.bottom }; }), figure);
+}
+
+test('lesson 11: squash labels apart, free-fall plot signed and its note says the side', async () => {
+  const context = await launch('webgl2');
+  try {
+    for (const [w, h] of [[800, 600], [1600, 1000]]) {
+      const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', w, h);
+      const squash = '#fig-squash';
+      await page.locator(squash).scrollIntoViewIfNeeded();
+      const scrub = page.locator(`${squash} .scrub`);
+      for (const at of [0, 150, 330, 500, 720, 1000]) {
+        await scrub.fill(String(at));
+        await scrub.dispatchEvent('input');
+        await frames(page, 4);
+        const boxes = await labelBoxes(page, squash);
+        assert.equal(boxes.length, 2, JSON.stringify(boxes));
+        const [a, b] = boxes;
+        const apart = a.r <= b.l || b.r <= a.l || a.b <= b.t || b.b <= a.t;
+        assert.ok(apart, `${w}x${h}, scrub ${at}: the labels overlap ${JSON.stringify(boxes)}`);
+      }
+      // Free fall at the end of the throw: explicit Euler above the parabola, semi-implicit below.
+      const fall = '#fig-freefall';
+      await page.locator(fall).scrollIntoViewIfNeeded();
+      const fallScrub = page.locator(`${fall} .scrub`);
+      await fallScrub.fill('1000');
+      await fallScrub.dispatchEvent('input');
+      await frames(page, 4);
+      const note = await page.locator('#freefall-note').textContent();
+      assert.match(note, /explicit Euler is 0\.638 m above, semi-implicit Euler 0\.638 m below, velocity Verlet on the parabola/, note);
+      assert.match(await page.locator('#freefall-plot').getAttribute('data-plot'), /Height above the exact parabola/);
+      assert.deepEqual(problems, []);
+      await page.close();
+    }
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 12: the flock note gives the steering arrow scale', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '/lessons/12-boids/?backend=webgl2', 800, 600);
+    await frames(page, 4);
+    const note = await page.locator('#flock-note').textContent();
+    assert.match(note, /purple arrow, 1 m per m\/s²/, note);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
