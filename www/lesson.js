@@ -430,6 +430,16 @@ export class Timeline {
  * quantity and unit; the y range is never smaller than `minSpan`, so a constant signal is not
  * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0).
  */
+/**
+ * The width inside an element's padding, CSS pixels: what a child may fill. (`clientWidth`
+ * includes the padding: a plot that wide overflowed `.plot`'s right padding and the figure's
+ * `overflow: hidden` cut off its last x tick label, e.g. "1,60" for 1,600.)
+ */
+function contentWidth(element) {
+  const style = getComputedStyle(element);
+  return Math.max(0, Math.floor(element.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight)));
+}
+
 export class Plot {
   constructor(element, { title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
@@ -454,7 +464,7 @@ export class Plot {
     };
     this.plot = new window.uPlot({
       title,
-      width: element.clientWidth || 560,
+      width: contentWidth(element) || 560,
       height,
       scales: {
         x: { time: false },
@@ -471,10 +481,10 @@ export class Plot {
       hooks: { draw: [cursorLine] },
     }, [[0], ...series.map(() => [0])], element);
     element.dataset.plot = title ?? '';
-    let width = element.clientWidth;
+    let width = contentWidth(element);
     new ResizeObserver(() => requestAnimationFrame(() => {
-      if (element.clientWidth !== width) {
-        width = element.clientWidth;
+      if (contentWidth(element) !== width) {
+        width = contentWidth(element);
         this.plot.setSize({ width, height });
       }
     })).observe(element);

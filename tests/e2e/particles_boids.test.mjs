@@ -1,7 +1,8 @@
 // Lessons 11 and 12 in Chromium, the review's points: the squash figure's two labels never
 // overlap (at both page sizes, over its timeline), the free-fall plot shows signed heights (the
-// two Euler lines on either side of zero) and its note says which side each is on, and the flock
-// note gives the steering arrow's scale.
+// two Euler lines on either side of zero) and its note says which side each is on, the flock
+// note gives the steering arrow's scale, and a plot fits inside its box (its last tick label
+// was cut off).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, frames } from './browser.mjs';
@@ -76,6 +77,17 @@ test('lesson 12: the flock note gives the steering arrow scale', async () => {
     await frames(page, 4);
     const note = await page.locator('#flock-note').textContent();
     assert.match(note, /purple arrow, 1 m per m\/s²/, note);
+    // The step-time plot fits inside its box's padding, so its last x tick (1,600) is not cut
+    // off by the figure's edge (the shell sized plots by clientWidth, padding included).
+    const fit = await page.evaluate(() => {
+      const box = document.getElementById('flock-plot');
+      const style = getComputedStyle(box);
+      const inner = box.getBoundingClientRect().right - parseFloat(style.paddingRight);
+      const plot = box.querySelector('.uplot').getBoundingClientRect().right;
+      const figure = box.closest('.figure').getBoundingClientRect().right;
+      return { inner, plot, figure };
+    });
+    assert.ok(fit.plot <= fit.inner + 0.5 && fit.plot < fit.figure, JSON.stringify(fit));
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
