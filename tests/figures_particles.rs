@@ -427,3 +427,33 @@ fn the_squash_figures_labels_never_overlap() {
         }
     }
 }
+
+#[test]
+fn the_squash_plot_follows_the_figure() {
+    // The plot's samples are the figure's own stretch factor at each step of the timeline: a
+    // stretch (s > 1) in flight, a squash (s < 1) after each impact, and the change of a slider
+    // shows in them.
+    let mut scene = SquashFigure::new();
+    let samples = scene.plot_samples();
+    let rows: Vec<&[f32]> = samples.chunks(2).collect();
+    assert_eq!(rows.len(), (SQUASH_DURATION * 60.0).round() as usize + 1);
+    for k in [0usize, 30, 61, 62, 100, 170, 240] {
+        scene.advance_to(k as f32 / 60.0).unwrap();
+        assert!((rows[k][0] - k as f32 / 60.0).abs() < 1e-5);
+        assert!(
+            (rows[k][1] - scene.stretch().1).abs() < 1e-6,
+            "step {k}: {:?} vs {:?}",
+            rows[k],
+            scene.stretch()
+        );
+    }
+    assert!(
+        rows.iter().any(|r| r[1] > 1.05) && rows.iter().any(|r| r[1] < 0.7),
+        "stretches and squashes"
+    );
+    scene.set_squash(0.0).unwrap();
+    assert!(
+        scene.plot_samples().chunks(2).all(|r| r[1] >= 1.0),
+        "no squash at 0"
+    );
+}

@@ -117,17 +117,22 @@ const squashViewer = await lesson.figure('#fig-squash');
 if (squashViewer) {
   const scene = new SquashScene();
   squashViewer.setCamera(...scene.view());
-  const timeline = new Timeline(document.getElementById('squash-timeline'), { duration: 4 });
+  const timeline = new Timeline(document.getElementById('squash-timeline'), { duration: scene.durationSec() });
   const p = { stretch: 0.06, squash: 0.45, contact: 0.09 };
   const gui = new GUI({ container: document.querySelector('#fig-squash .panel'), title: 'Squash and stretch' });
   gui.add(p, 'stretch', 0, 0.3, 0.01).name('stretch k (per m/s)');
   gui.add(p, 'squash', 0, 0.8, 0.05).name('squash on impact');
   gui.add(p, 'contact', 0.02, 0.3, 0.01).name('squash time (s)');
+  const plot = new Plot(document.getElementById('squash-plot'), {
+    title: 'Stretch factor of the orange ball', xLabel: 'time (s)', yLabel: 'stretch s (1 = round)',
+    series: ['s: above 1 stretched along v, below 1 squashed on the floor'], colors: [cssVar('--orange')], minSpan: 0.2,
+  });
   let rejected = '';
   const apply = guarded(gui, p, () => {
     scene.setStretch(p.stretch);
     scene.setSquash(p.squash);
     scene.setContact(p.contact);
+    plot.setData(columns(scene.plotSamples(), 2));
   }, (m) => { rejected = m; });
   gui.onChange(apply);
   apply();
@@ -135,6 +140,7 @@ if (squashViewer) {
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     showNote(note, [rejected, scene.draw(squashViewer, t)].filter(Boolean).join(' '));
+    plot.setCursor(t);
     markDrawn('#fig-squash');
   });
 }

@@ -838,6 +838,9 @@ impl BounceFigure {
 // ---------------------------------------------------------------------------------------------
 // Squash and stretch.
 
+/// The squash figure's timeline, seconds.
+pub const SQUASH_DURATION: f32 = 4.0;
+
 /// How far apart (along z) the squash figure shows its two balls, metres.
 pub const SQUASH_SPACING: f32 = 1.2;
 
@@ -935,6 +938,24 @@ impl SquashFigure {
     /// The squashing ball's `(axis, s)` now.
     pub fn stretch(&self) -> (Vec3, f32) {
         self.squash.stretch()
+    }
+
+    /// Plot samples over the figure's timeline ([`SQUASH_DURATION`]), one per step, flat:
+    /// `[t (s), s of the squash-and-stretch ball]`. `s > 1` is a stretch along the velocity,
+    /// `s < 1` a squash along the floor's normal; the volume is 1 either way. From a replay of
+    /// the same steps the figure takes, with the current settings.
+    pub fn plot_samples(&self) -> Vec<f32> {
+        let mut f = self.clone();
+        f.restart();
+        let steps = (SQUASH_DURATION / SIM_DT).round() as usize;
+        let mut out = Vec::with_capacity(2 * (steps + 1));
+        for k in 0..=steps {
+            if k > 0 {
+                f.squash.step(&f.surfaces, SIM_DT);
+            }
+            out.extend([k as f32 * SIM_DT, f.squash.stretch().1]);
+        }
+        out
     }
 
     /// Simulates to `time_sec`, draws, and returns the note.

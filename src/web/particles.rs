@@ -296,6 +296,16 @@ impl SquashScene {
     pub fn view(&self) -> Vec<f32> {
         self.scene.view().to_vec()
     }
+    /// Seconds the timeline lasts.
+    #[wasm_bindgen(js_name = durationSec)]
+    pub fn duration_sec(&self) -> f32 {
+        crate::figures::particles::SQUASH_DURATION
+    }
+    /// `[t, s, …]`: the squash ball's stretch factor at every step of the timeline.
+    #[wasm_bindgen(js_name = plotSamples)]
+    pub fn plot_samples(&self) -> Vec<f32> {
+        self.scene.plot_samples()
+    }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let note = self
