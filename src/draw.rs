@@ -73,6 +73,8 @@ pub struct Label {
     pub text: String,
     /// Linear RGB.
     pub color: Vec3,
+    /// The text ends at the anchor instead of starting there ([`Frame::label_left`]).
+    pub left: bool,
 }
 
 /// Depth bias of axes and arrows (see [`LineVertex::depth_bias`]).
@@ -229,6 +231,18 @@ impl Frame {
             anchor,
             text: text.into(),
             color,
+            left: false,
+        });
+    }
+
+    /// A text label that ends at `anchor` (it reads leftwards from there): for a label that
+    /// would otherwise run into something drawn to the anchor's right.
+    pub fn label_left(&mut self, anchor: Vec3, text: impl Into<String>, color: Vec3) {
+        self.labels.push(Label {
+            anchor,
+            text: text.into(),
+            color,
+            left: true,
         });
     }
 
@@ -355,6 +369,7 @@ impl Frame {
         for l in &self.labels {
             l.anchor.to_array().iter().for_each(|x| eat(x.to_bits()));
             l.text.bytes().for_each(|b| eat(b as u32));
+            eat(l.left as u32);
         }
         for s in &self.skinned {
             eat(s.mesh.0 as u32 | (s.dqs as u32) << 31);
@@ -400,6 +415,8 @@ pub struct ScreenLabel {
     pub text: String,
     /// sRGB hex, `#rrggbb`, ready for CSS.
     pub css_color: String,
+    /// The text ends at `(x_px, y_px)` instead of starting there.
+    pub left: bool,
 }
 
 /// Projects labels with `view_proj` (world to clip space, depth in [0, 1]) onto a canvas of
@@ -425,6 +442,7 @@ pub fn project_labels(
                 visible,
                 text: label.text.clone(),
                 css_color: palette::css(label.color),
+                left: label.left,
             }
         })
         .collect()
@@ -533,11 +551,13 @@ mod tests {
                     anchor: cam.target,
                     text: "c".into(),
                     color: Vec3::ONE,
+                    left: false,
                 },
                 Label {
                     anchor: cam.eye() + (cam.eye() - cam.target),
                     text: "b".into(),
                     color: Vec3::ONE,
+                    left: true,
                 },
             ],
             vp,

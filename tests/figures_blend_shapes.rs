@@ -65,6 +65,11 @@ fn both_forms_stand_side_by_side_and_agree_when_the_base_weight_is_one_minus_the
         "differential left, full right: {h:?}"
     );
     assert_eq!(frame.labels.len(), 2);
+    // The differential head's label reads leftwards from above it, away from the full head
+    // (which grows with the total); the full head's reads rightwards.
+    let (l, r) = (&frame.labels[0], &frame.labels[1]);
+    assert!(l.text == "differential" && l.left && l.anchor.x < h[1].1.x - 1.0);
+    assert!(r.text.starts_with("full") && !r.left);
     // Base weight 1 − Σw: the full form is the differential form.
     for (a, b) in f.differential.positions.iter().zip(&f.full.positions) {
         assert!(a.distance(*b) < 1e-5, "{a} vs {b}");

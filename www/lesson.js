@@ -263,7 +263,9 @@ function labelLayer(canvas, viewer) {
       if (el.hidden) return;
       el.textContent = label.text;
       el.style.color = label.color;
-      el.style.transform = `translate(${label.x.toFixed(1)}px, ${label.y.toFixed(1)}px)`;
+      // A left label ends at its anchor (its own width back from it).
+      el.classList.toggle('left', label.left);
+      el.style.transform = `translate(${label.x.toFixed(1)}px, ${label.y.toFixed(1)}px)${label.left ? ' translateX(-100%)' : ''}`;
     });
   };
 }

@@ -326,13 +326,14 @@ impl FaceFigure {
         let yaw = 25f32.to_radians() * (std::f32::consts::TAU * t / LOOP_SECONDS).sin();
         // The full form scales the face about its origin by `total`; the eyes are separate
         // spheres, so they are scaled by hand to stay on the face.
-        for (at, mesh, scale, name) in [
-            (left, meshes[0], 1.0, "differential".to_string()),
+        for (at, mesh, scale, name, differential) in [
+            (left, meshes[0], 1.0, "differential".to_string(), true),
             (
                 right,
                 meshes[1],
                 total,
                 format!("full (sum {})", format_number(total)),
+                false,
             ),
         ] {
             let Some(at) = at else { continue };
@@ -347,7 +348,13 @@ impl FaceFigure {
             }
             if both {
                 let above = 1.3 * scale.abs().max(1.0);
-                frame.label(at + Vec3::new(-0.3, above, 0.0), name, palette::DARK);
+                if differential {
+                    // The differential head, on the left: its label reads leftwards from above
+                    // the head's centre, away from the full head, which may be many times larger.
+                    frame.label_left(at + Vec3::new(0.3, above, 0.0), name, palette::DARK);
+                } else {
+                    frame.label(at + Vec3::new(-0.3, above, 0.0), name, palette::DARK);
+                }
             }
         }
         Ok(parts.join(" "))

@@ -206,8 +206,8 @@ impl Viewer {
                 })
                 .collect();
             out += &format!(
-                r#"{{"x":{:.1},"y":{:.1},"visible":{},"text":"{}","color":"{}"}}"#,
-                l.x_px, l.y_px, l.visible, text, l.css_color
+                r#"{{"x":{:.1},"y":{:.1},"visible":{},"left":{},"text":"{}","color":"{}"}}"#,
+                l.x_px, l.y_px, l.visible, l.left, text, l.css_color
             );
         }
         out.push(']');

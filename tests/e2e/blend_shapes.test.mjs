@@ -87,6 +87,17 @@ test('lesson 10: identical heads at the defaults, both in view at a total far ab
       assert.ok(left[1] - left[0] >= 12, `the differential head is visible: ${JSON.stringify(runs)}`);
       assert.ok(right[1] - right[0] > 3 * (left[1] - left[0]), `the full head is the larger: ${JSON.stringify(runs)}`);
     }
+    // The differential head's label ends before the full head begins (it reads leftwards).
+    const label = await page.evaluate((fig) => {
+      const canvas = document.querySelector(`${fig} .stage canvas`).getBoundingClientRect();
+      const span = [...document.querySelectorAll(`${fig} .labels span`)].find((s) => s.textContent === 'differential');
+      const r = span.getBoundingClientRect();
+      return { left: r.left - canvas.left, right: r.right - canvas.left };
+    }, fig);
+    for (const runs of separate) {
+      const full = runs[runs.length - 1];
+      assert.ok(label.left >= 0 && label.right < full[0], `the 'differential' label (${label.left}-${label.right} px) runs into the full head (from ${full[0]} px)`);
+    }
     await page.locator(fig).screenshot({ path: `${SHOTS}/10-blend-shapes-total7-figure-webgl2.png` });
     assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), []);
     assert.deepEqual(problems, []);
