@@ -304,7 +304,7 @@ fn the_head_looks_at_the_target_within_its_cone() {
     let mut a = AimFigure::new();
     let note = a.draw(&mut Frame::default(), 0.0).unwrap();
     assert!(note.contains("Looking straight at the target"), "{note}");
-    a.set_target(Vec3::new(0.0, 1.6, -2.0)).unwrap();
+    a.set_target(Vec3::new(0.0, 1.6, -1.2)).unwrap();
     let note = a.draw(&mut Frame::default(), 0.0).unwrap();
     assert!(
         note.contains("outside the 70° cone") && note.contains("reached: no"),
@@ -328,4 +328,85 @@ fn the_pole_steers_the_analytic_solver_only() {
     );
     assert_eq!(before[1], after[1]);
     assert_eq!(before[2], after[2]);
+}
+
+#[test]
+fn the_aim_target_circles_once_per_timeline_loop() {
+    // The caption says the target circles once every 8 s, the timeline's length: it used to
+    // turn at 0.9 rad/s (once every 7 s) and bob at 1.3 rad/s, so it jumped when the timeline
+    // looped from 8 s back to 0.
+    let a = AimFigure::new();
+    let period = inbetween::figures::ik::AIM_PERIOD_SEC;
+    assert_eq!(period, 8.0);
+    assert!(a.target_at(0.0).distance(a.target_at(period)) < 1e-5);
+    // Half a period later it is on the far side of its circle (0.5 m across).
+    let across = a.target_at(0.0) - a.target_at(0.5 * period);
+    assert!((Vec3::new(across.x, 0.0, across.z).length() - 0.5).abs() < 1e-4);
+    // No frame of the loop moves it further than the frames around it (60 frames a second).
+    let steps: Vec<f32> = (0..480)
+        .map(|k| {
+            let t = k as f32 / 60.0;
+            a.target_at(t).distance(a.target_at(t + 1.0 / 60.0))
+        })
+        .collect();
+    let wrap = a.target_at(period - 1.0 / 60.0).distance(a.target_at(0.0));
+    assert!(
+        wrap <= 1.01 * steps.iter().cloned().fold(0.0, f32::max),
+        "{wrap} {steps:?}"
+    );
+}
+
+#[test]
+fn the_aim_targets_range_is_what_the_page_frames() {
+    let reach = inbetween::figures::ik::AIM_REACH_M;
+    let mut a = AimFigure::new();
+    let (low, high) = inbetween::figures::ik::AIM_HEIGHT_M;
+    assert!(a.set_target(Vec3::new(-reach, low, reach)).is_ok());
+    assert!(a.set_target(Vec3::new(reach, high, -reach)).is_ok());
+    assert!(a
+        .set_target(Vec3::new(0.0, low - 0.1, 0.0))
+        .unwrap_err()
+        .contains("target y"));
+    assert!(a
+        .set_target(Vec3::new(reach + 0.5, 1.0, 0.0))
+        .unwrap_err()
+        .contains("target x"));
+    // The cone is labelled with its angle.
+    a.set_max_angle_deg(45.0).unwrap();
+    let mut frame = Frame::default();
+    a.draw(&mut frame, 0.0).unwrap();
+    assert!(frame.labels.iter().any(|l| l.text == "45° cone"));
+}
+
+#[test]
+fn the_hinges_try_this_is_what_the_figure_shows() {
+    // Lesson 07's "Try this" under Joint limits, step by step, at the figure's default 10
+    // iterations and then at 50.
+    let hinges = |segments: f32, target: Vec3, iterations: f32| {
+        let mut f = IkFigure::new();
+        f.set_segments(segments).unwrap();
+        f.set_limits("hinges (bend one way)").unwrap();
+        f.set_target(target).unwrap();
+        f.set_iterations(iterations).unwrap();
+        let r = f.results().unwrap();
+        (r[1].unwrap(), r[2].unwrap())
+    };
+    // The default target (z = 0.15): both stop at least 15 cm short.
+    let (ccd, fabrik) = hinges(2.0, Vec3::new(0.55, 0.65, 0.15), 10.0);
+    assert!(ccd.error >= 0.15 - 1e-3 && fabrik.error >= 0.15 - 1e-3);
+    // z = 0: FABRIK reaches it in a few iterations, CCD is millimetres short after 10 and
+    // reaches it with more.
+    let (ccd, fabrik) = hinges(2.0, Vec3::new(0.55, 0.65, 0.0), 10.0);
+    assert!(fabrik.reached && fabrik.iterations <= 5, "{fabrik:?}");
+    assert!(!ccd.reached && ccd.error < 5e-3, "{ccd:?}");
+    let (ccd, _) = hinges(2.0, Vec3::new(0.55, 0.65, 0.0), 50.0);
+    assert!(ccd.reached, "{ccd:?}");
+    // To the left with 2 segments: neither, even with 50 iterations.
+    let left = Vec3::new(-0.5, 0.65, 0.0);
+    let (ccd, fabrik) = hinges(2.0, left, 50.0);
+    assert!(!ccd.reached && !fabrik.reached);
+    // With 5 segments CCD gets there; FABRIK stays more than 30 cm short.
+    let (ccd, fabrik) = hinges(5.0, left, 50.0);
+    assert!(ccd.reached, "{ccd:?}");
+    assert!(!fabrik.reached && fabrik.error > 0.3, "{fabrik:?}");
 }

@@ -63,7 +63,9 @@ if (viewer) {
     if (e.pointerId !== dragging) return;
     e.stopPropagation();
     scene.dragTarget(...local(e));
-    [p.x, p.y, p.z] = scene.target().map((v) => Math.round(v * 100) / 100);
+    // Array.from: a Float32Array's own map would store the rounded numbers back as f32, and the
+    // sliders would show -0.5199999809265137 for -0.52.
+    [p.x, p.y, p.z] = Array.from(scene.target(), (v) => Math.round(v * 100) / 100);
     refresh();
     update();
   }, { capture: true });
@@ -85,15 +87,17 @@ if (viewer) {
 
 const aimViewer = await lesson.figure('#fig-aim');
 if (aimViewer) {
-  aimViewer.setCamera(0.6, 1.5, 0.4, 4.0, -0.6, 0.2);
+  // From the front left, far enough back that the target stays in view over its whole range
+  // (x and z within ±1.2 m, y from 0.6 to 2.6 m), with the cone seen from the side.
+  aimViewer.setCamera(0, 1.5, 0, 5.2, -0.95, 0.15);
   const scene = new AimScene();
-  const p = { x: 1.5, y: 1.9, z: 1.0, cone: 70 };
+  const p = { x: 1.2, y: 1.9, z: 1.0, cone: 70 };
   const gui = new GUI({ container: document.querySelector('#fig-aim .panel'), title: 'Aim' });
   const target = gui.addFolder('target (m)');
   const applyTarget = () => scene.setTarget(p.x, p.y, p.z);
-  target.add(p, 'x', -3, 3, 0.05).onChange(applyTarget);
-  target.add(p, 'y', 0, 3, 0.05).onChange(applyTarget);
-  target.add(p, 'z', -3, 3, 0.05).onChange(applyTarget);
+  target.add(p, 'x', -1.2, 1.2, 0.05).onChange(applyTarget);
+  target.add(p, 'y', 0.6, 2.6, 0.05).onChange(applyTarget);
+  target.add(p, 'z', -1.2, 1.2, 0.05).onChange(applyTarget);
   gui.add(p, 'cone', 0, 180, 1).name('largest turn (°)').onChange(() => scene.setMaxAngleDeg(p.cone));
   const timeline = new Timeline(document.getElementById('aim-timeline'), { duration: 8, playing: true });
   const note = document.getElementById('aim-note');

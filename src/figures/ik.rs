@@ -745,6 +745,10 @@ impl Default for AimFigure {
 
 /// How long the aim figure's target takes to circle once, seconds.
 pub const AIM_PERIOD_SEC: f32 = 8.0;
+/// How far the aim figure's target may go along x and z, metres (the view frames it all).
+pub const AIM_REACH_M: f32 = 1.2;
+/// How low and how high the aim figure's target may go, metres.
+pub const AIM_HEIGHT_M: (f32, f32) = (0.6, 2.6);
 
 /// Where the aim figure's head sits, and its rest forward and up.
 const HEAD: Vec3 = Vec3::new(0.0, 1.6, 0.0);
@@ -752,19 +756,26 @@ const HEAD: Vec3 = Vec3::new(0.0, 1.6, 0.0);
 impl AimFigure {
     pub fn new() -> Self {
         Self {
-            target: Vec3::new(1.5, 1.9, 1.0),
+            target: Vec3::new(1.2, 1.9, 1.0),
             max_angle_rad: 70.0 * DEG,
         }
     }
 
-    /// The target, each coordinate in [−3, 3] m (y in [0, 3]).
+    /// The target, x and z in [−[`AIM_REACH_M`], [`AIM_REACH_M`]] m, y within [`AIM_HEIGHT_M`].
     pub fn set_target(&mut self, target: Vec3) -> Result<(), String> {
         self.target = Vec3::new(
-            in_range("target x", target.x, -3.0, 3.0)?,
-            in_range("target y", target.y, 0.0, 3.0)?,
-            in_range("target z", target.z, -3.0, 3.0)?,
+            in_range("target x", target.x, -AIM_REACH_M, AIM_REACH_M)?,
+            in_range("target y", target.y, AIM_HEIGHT_M.0, AIM_HEIGHT_M.1)?,
+            in_range("target z", target.z, -AIM_REACH_M, AIM_REACH_M)?,
         );
         Ok(())
+    }
+
+    /// Where the target is at `time_sec`: it circles its set position (radius 0.25 m) once every
+    /// [`AIM_PERIOD_SEC`], bobbing up and down twice, so the motion loops with the timeline.
+    pub fn target_at(&self, time_sec: f32) -> Vec3 {
+        let a = std::f32::consts::TAU * time_sec / AIM_PERIOD_SEC;
+        self.target + 0.25 * Vec3::new(a.cos(), 0.6 * (2.0 * a).sin(), a.sin())
     }
 
     /// How far the head may turn from straight ahead, degrees in [0, 180].
@@ -778,8 +789,7 @@ impl AimFigure {
         let t = finite("time", time_sec)?;
         frame.grid(12, 0.25);
         // The target circles slowly around its set position, so the head keeps following.
-        let target =
-            self.target + 0.25 * Vec3::new((0.9 * t).cos(), 0.6 * (1.3 * t).sin(), (0.9 * t).sin());
+        let target = self.target_at(t);
         let s = aim(HEAD, Vec3::Z, Vec3::Y, target, self.max_angle_rad, 1e-3)
             .map_err(|e| e.to_string())?;
         // Body, neck and head.
@@ -799,25 +809,30 @@ impl AimFigure {
             palette::BROWN,
         );
         frame.axes(head, 0.2);
-        frame.arrow(HEAD, HEAD + s.forward * 0.7, palette::BLUE, 0.08);
-        frame.label(HEAD + s.forward * 0.75, "forward", palette::BLUE);
-        frame.point(target, 0.035, palette::RED);
+        frame.arrow(HEAD, HEAD + s.forward * 0.8, palette::BLUE, 0.08);
+        frame.label(HEAD + s.forward * 0.85, "forward", palette::BLUE);
+        frame.point(target, 0.05, palette::RED);
         frame.label(target + Vec3::new(0.05, 0.05, 0.0), "target", palette::RED);
         if !s.result.reached {
             dashed(frame, HEAD, target, palette::RED);
         }
         // The cone of allowed directions, around the rest forward (+z).
         const STEPS: usize = 24;
-        let rim = Quat::from_rotation_x(self.max_angle_rad.min(179.0 * DEG)) * Vec3::Z * 0.45;
+        let rim = Quat::from_rotation_x(self.max_angle_rad.min(179.0 * DEG)) * Vec3::Z * 0.55;
         let circle: Vec<Vec3> = (0..=STEPS)
             .map(|k| {
                 HEAD + Quat::from_rotation_z(std::f32::consts::TAU * k as f32 / STEPS as f32) * rim
             })
             .collect();
         frame.polyline(&circle, palette::PURPLE);
-        for k in (0..STEPS).step_by(6) {
+        for k in (0..STEPS).step_by(3) {
             frame.line(HEAD, circle[k], palette::PURPLE);
         }
+        frame.label(
+            circle[STEPS / 2] + Vec3::new(0.0, 0.05, 0.0),
+            format!("{:.0}° cone", self.max_angle_rad / DEG),
+            palette::PURPLE,
+        );
         let deg = |r: f32| format!("{:.0}", r / DEG);
         Ok(if s.result.reached {
             format!(

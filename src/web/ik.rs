@@ -133,7 +133,7 @@ impl AimScene {
         }
     }
 
-    /// The target, metres (x, z in [−3, 3], y in [0, 3]).
+    /// The target, metres (x, z in [−1.2, 1.2], y in [0.6, 2.6]).
     #[wasm_bindgen(js_name = setTarget)]
     pub fn set_target(&mut self, x: f32, y: f32, z: f32) -> Result<(), JsError> {
         self.scene.set_target(Vec3::new(x, y, z)).map_err(js)
