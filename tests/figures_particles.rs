@@ -348,12 +348,13 @@ fn on_canvas(view: [f32; 6], w: f32, h: f32, world: Vec3) -> glam::Vec2 {
 
 #[test]
 fn the_bounce_camera_starts_with_every_ball_and_the_sphere_in_view() {
-    // The page's bounce canvas at 800 x 600 and 1600 x 1000 (CSS pixels). Every ball is dropped
-    // from up to 3.1 m; the old camera (0.9 m up, 4.5 m away) cut the highest ones off.
+    // The page's bounce canvas at 800 x 600 and 1600 x 1000 (760 x 380 and 650 x 420 CSS px).
+    // Every ball is dropped from up to 3.1 m; the old camera (0.9 m up, 4.5 m away) cut the
+    // highest ones off.
     let mut scene = BounceFigure::new();
     scene.advance_to(0.0).unwrap();
     let view = scene.view();
-    for (w, h) in [(760.0f32, 380.0f32), (650.0, 365.0)] {
+    for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
         let mut points: Vec<Vec3> = Vec::new();
         for p in scene.positions() {
             points.push(*p + Vec3::Y * 0.08);
@@ -380,8 +381,10 @@ fn the_bounce_camera_starts_with_every_ball_and_the_sphere_in_view() {
 fn the_squash_figures_labels_never_overlap() {
     // Labels are HTML over the canvas, running rightwards from 0.35em right of their anchor
     // (www/style.css: 600 0.8rem, so about 7.7 px a character and 15 px high). At the page's
-    // camera, both canvas sizes, every frame of the 4 s timeline and the sliders' extremes, the
-    // two boxes stay apart; with "squash and stretch" on the left ball they overlapped "rigid".
+    // camera, both canvas sizes (760 x 380 at 800 x 600, 650 x 420 at 1600 x 1000), every frame
+    // of the 4 s timeline and the sliders' extremes, the two boxes stay apart and on the canvas
+    // (the balls drift +x by 2.4 m over the timeline: at the old target, x = −0.6 m, the long
+    // label ran off the 650 px canvas's right edge); with "squash and stretch" on the left ball they overlapped "rigid".
     let boxes = |frame: &Frame, view: [f32; 6], w: f32, h: f32| {
         frame
             .labels
@@ -412,15 +415,15 @@ fn the_squash_figures_labels_never_overlap() {
             let mut frame = Frame::default();
             scene.draw(&mut frame, step as f32 / 60.0).unwrap();
             assert_eq!(frame.labels.len(), 2);
-            for (w, h) in [(760.0f32, 380.0f32), (650.0, 365.0)] {
+            for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
                 let b = boxes(&frame, view, w, h);
                 let apart =
                     b[0].2 < b[1].0 || b[1].2 < b[0].0 || b[0].3 < b[1].1 || b[1].3 < b[0].1;
                 assert!(apart, "t = {} s, {w} x {h}: {b:?}", step as f32 / 60.0);
                 for r in &b {
                     assert!(
-                        r.0 > 0.0 && r.2 < w && r.1 > 0.0 && r.3 < h,
-                        "on the canvas: {r:?}"
+                        r.0 > 10.0 && r.2 < w - 10.0 && r.1 > 0.0 && r.3 < h,
+                        "on the canvas, 10 px from its sides: {r:?}"
                     );
                 }
             }

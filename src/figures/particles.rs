@@ -878,7 +878,7 @@ impl SquashFigure {
     /// distance in metres, yaw and pitch in radians): both balls side by side, the rigid one on
     /// the left.
     pub fn view(&self) -> [f32; 6] {
-        [-0.6, 0.9, 0.0, 5.0, 0.9, 0.15]
+        [-0.1, 0.9, 0.0, 5.0, 0.9, 0.15]
     }
 
     /// Stretch per m/s of speed, in [0, 0.3].
