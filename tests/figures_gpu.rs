@@ -337,5 +337,13 @@ mod figures {
         let note = f.draw_gpu(&mut frame);
         assert!(note.contains("300 boids") && note.contains("GPU"), "{note}");
         assert!(frame.points.is_empty());
+        // The note names only the roles that are on.
+        for (leader, predator) in [(false, false), (true, false), (false, true), (true, true)] {
+            f.set_leader(leader);
+            f.set_predator(predator);
+            let note = f.draw_gpu(&mut inbetween::draw::Frame::default());
+            assert_eq!(note.contains("leader green"), leader, "{note}");
+            assert_eq!(note.contains("predator red"), predator, "{note}");
+        }
     }
 }

@@ -240,10 +240,17 @@ impl FlockFigure {
                 );
             }
         }
+        // Only the roles that are on.
+        let roles = match (self.params.leader.is_some(), self.params.predator.is_some()) {
+            (true, true) => "; leader green, predator red",
+            (true, false) => "; leader green",
+            (false, true) => "; predator red",
+            (false, false) => "",
+        };
         format!(
             "{} boids stepped on the GPU by a compute shader, at t = {} s (the same rules; \
-             neighbours by the naive O(N²) loop, one thread per boid); leader green, predator \
-             red; speed at most {} m/s.",
+             neighbours by the naive O(N²) loop, one thread per boid){roles}; speed at most {} \
+             m/s.",
             self.flock.len(),
             format_number(self.steps_done as f32 * SIM_DT),
             format_number(self.params.max_speed),
