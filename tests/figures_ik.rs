@@ -410,3 +410,36 @@ fn the_hinges_try_this_is_what_the_figure_shows() {
     assert!(ccd.reached, "{ccd:?}");
     assert!(!fabrik.reached && fabrik.error > 0.3, "{fabrik:?}");
 }
+
+#[test]
+fn the_aim_plot_follows_the_target_until_the_cone_stops_the_head() {
+    let mut a = AimFigure::new();
+    a.set_target(Vec3::new(1.2, 1.6, 0.45)).unwrap();
+    let rows = a.plot_samples(80).unwrap();
+    assert_eq!(rows.len(), 3 * 81);
+    assert_eq!(rows[0], 0.0);
+    assert_eq!(rows[3 * 80], inbetween::figures::ik::AIM_PERIOD_SEC);
+    let (mut inside, mut outside) = (0, 0);
+    for row in rows.chunks(3) {
+        let (to_target, head) = (row[1], row[2]);
+        assert!(head <= 70.0 + 0.1, "{row:?}");
+        if to_target <= 70.0 {
+            inside += 1;
+            assert!(
+                (head - to_target).abs() < 0.2,
+                "inside the cone the head follows: {row:?}"
+            );
+        } else {
+            outside += 1;
+            assert!(
+                (head - 70.0).abs() < 0.2,
+                "outside it stops at the rim: {row:?}"
+            );
+        }
+    }
+    // This target's circle crosses the cone's rim: both cases show in the plot.
+    assert!(
+        inside > 5 && outside > 5,
+        "{inside} inside, {outside} outside"
+    );
+}

@@ -94,15 +94,23 @@ if (aimViewer) {
   const p = { x: 1.2, y: 1.9, z: 1.0, cone: 70 };
   const gui = new GUI({ container: document.querySelector('#fig-aim .panel'), title: 'Aim' });
   const target = gui.addFolder('target (m)');
-  const applyTarget = () => scene.setTarget(p.x, p.y, p.z);
+  const plot = new Plot(document.getElementById('aim-plot'), {
+    title: 'Angle from straight ahead', xLabel: 'time (s)', yLabel: 'angle (°)',
+    series: ['to the target', 'head turn'], colors: ['#d62728', '#1f6fd6'], minSpan: 10, height: 170,
+  });
+  const replot = () => plot.setData(columns(scene.plotSamples(), 3));
+  const applyTarget = () => { scene.setTarget(p.x, p.y, p.z); replot(); };
   target.add(p, 'x', -1.2, 1.2, 0.05).onChange(applyTarget);
   target.add(p, 'y', 0.6, 2.6, 0.05).onChange(applyTarget);
   target.add(p, 'z', -1.2, 1.2, 0.05).onChange(applyTarget);
-  gui.add(p, 'cone', 0, 180, 1).name('largest turn (°)').onChange(() => scene.setMaxAngleDeg(p.cone));
+  gui.add(p, 'cone', 0, 180, 1).name('largest turn (°)').onChange(() => { scene.setMaxAngleDeg(p.cone); replot(); });
+  replot();
   const timeline = new Timeline(document.getElementById('aim-timeline'), { duration: 8, playing: true });
   const note = document.getElementById('aim-note');
   lesson.onFrame((dt) => {
-    showNote(note, scene.draw(aimViewer, timeline.advance(dt)));
+    const t = timeline.advance(dt);
+    showNote(note, scene.draw(aimViewer, t));
+    plot.setCursor(t);
     markDrawn('#fig-aim');
   });
 }

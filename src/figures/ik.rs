@@ -784,6 +784,26 @@ impl AimFigure {
         Ok(())
     }
 
+    /// Samples over one loop of the timeline for the plot: `[time (s), angle from straight
+    /// ahead to the target (°), angle the head turns (°), …]`, `samples` + 1 rows from 0 to
+    /// [`AIM_PERIOD_SEC`]. The head's angle follows the target's until it reaches the cone.
+    pub fn plot_samples(&self, samples: usize) -> Result<Vec<f32>, String> {
+        let n = samples.max(1);
+        let mut out = Vec::with_capacity(3 * (n + 1));
+        for k in 0..=n {
+            let t = AIM_PERIOD_SEC * k as f32 / n as f32;
+            let target = self.target_at(t);
+            let s = aim(HEAD, Vec3::Z, Vec3::Y, target, self.max_angle_rad, 1e-3)
+                .map_err(|e| e.to_string())?;
+            out.extend_from_slice(&[
+                t,
+                Vec3::Z.angle_between(target - HEAD) / DEG,
+                Vec3::Z.angle_between(s.forward) / DEG,
+            ]);
+        }
+        Ok(out)
+    }
+
     /// Aims and draws. Returns the note.
     pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let t = finite("time", time_sec)?;

@@ -145,6 +145,12 @@ impl AimScene {
         self.scene.set_max_angle_deg(deg).map_err(js)
     }
 
+    /// `[time (s), angle to the target (°), angle the head turns (°), …]` over one loop.
+    #[wasm_bindgen(js_name = plotSamples)]
+    pub fn plot_samples(&self) -> Result<Vec<f32>, JsError> {
+        self.scene.plot_samples(160).map_err(js)
+    }
+
     /// Aims at `time_sec` (the target circles slowly) and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let note = self
