@@ -424,15 +424,6 @@ export class Timeline {
 }
 
 /**
- * A line plot (uPlot) of curves against time or a parameter.
- *   new Plot(element, { title, xLabel: 'time (s)', yLabel: 'height (m)', series: ['a', 'b'],
- *                       colors: ['#d62728', …], minSpan: 0.1, height: 180 })
- * `setData([xs, ys1, ys2…])` replaces the curves; `setCursor(x)` draws a vertical playhead at `x`
- * (call it every frame with the timeline's time; `null` hides it). Every y axis is labelled with its
- * quantity and unit; the y range is never smaller than `minSpan`, so a constant signal is not
- * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0).
- */
-/**
  * The width inside an element's padding, CSS pixels: what a child may fill. (`clientWidth`
  * includes the padding: a plot that wide overflowed `.plot`'s right padding and the figure's
  * `overflow: hidden` cut off its last x tick label, e.g. "1,60" for 1,600.)
@@ -442,6 +433,15 @@ function contentWidth(element) {
   return Math.max(0, Math.floor(element.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight)));
 }
 
+/**
+ * A line plot (uPlot) of curves against time or a parameter.
+ *   new Plot(element, { title, xLabel: 'time (s)', yLabel: 'height (m)', series: ['a', 'b'],
+ *                       colors: ['#d62728', …], minSpan: 0.1, height: 180 })
+ * `setData([xs, ys1, ys2…])` replaces the curves; `setCursor(x)` draws a vertical playhead at `x`
+ * (call it every frame with the timeline's time; `null` hides it). Every y axis is labelled with its
+ * quantity and unit; the y range is never smaller than `minSpan`, so a constant signal is not
+ * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0).
+ */
 export class Plot {
   constructor(element, { title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);

@@ -368,8 +368,8 @@ impl FlockFigure {
         }
         format!(
             "{} boids, {} search; the orange boid sees {count} {} within {} m and steers \
-             at {} m/s² (purple arrow, 1 m per m/s², drawn at most 1.5 m long; the force is at most \
-             {}); speed at most {} m/s.",
+             at {} m/s² (purple arrow, {STEER_ARROW_M_PER_MS2} m per m/s², drawn at most {STEER_ARROW_MAX_M} m long; the force is at \
+             most {}); speed at most {} m/s.",
             self.flock.len(),
             if self.search == Search::Grid {
                 "grid"
