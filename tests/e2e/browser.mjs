@@ -1,8 +1,45 @@
 // Launching Debian's Chromium with the flag sets from ../shared/TOOLCHAIN.md, one per backend.
 import { chromium } from 'playwright-core';
+import { before, after } from 'node:test';
 import { mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { startServer } from '../../scripts/serve.mjs';
+
+/** The built site the tests serve: dist/, or $INBETWEEN_DIST (scripts/build writes there too). */
+export const DIST = process.env.INBETWEEN_DIST ?? 'dist';
+
+/**
+ * Serves `DIST` on a free port of 127.0.0.1 for the tests of the calling file (registers its
+ * node:test `before` and `after` hooks). Returns an object whose `origin` is set once the server
+ * listens, e.g. `site.origin + '/lessons/'` inside a test.
+ */
+export function serveDist() {
+  const site = { origin: '' };
+  let server;
+  before(async () => {
+    server = await startServer(DIST, 0);
+    site.origin = `http://127.0.0.1:${server.address().port}`;
+  });
+  after(() => server?.close());
+  return site;
+}
+
+/**
+ * Opens `url` in a new tab of `context` (at `width` x `height` when given) and waits until the
+ * lesson page says it is ready. `problems` collects the page's uncaught errors and console
+ * errors, for a test to assert there were none.
+ */
+export async function openPage(context, url, { width, height, timeout = 90_000 } = {}) {
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  if (width) await page.setViewportSize({ width, height });
+  await page.goto(url);
+  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout });
+  return { page, problems };
+}
 
 // 2D canvases are drawn by Skia on the CPU: on SwiftShader an accelerated 2D canvas makes every
 // frame wait for the emulated GPU (a lesson page with a dozen plots and 2D figures took about

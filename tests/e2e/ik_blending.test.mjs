@@ -3,30 +3,19 @@
 // it sits at its end), dragging lesson 07's target leaves the sliders at two decimals (not an
 // f32's float noise), and the blend figure keeps a hand waved over the head inside a short,
 // wide canvas (800 x 600: no figure pixel on the canvas's top rows at any time of the wave).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { launch, pixelStats, frames, setControl } from './browser.mjs';
-import { startServer } from '../../scripts/serve.mjs';
+import { launch, pixelStats, frames, setControl, serveDist, openPage } from './browser.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
-let server;
-let origin;
-before(async () => {
-  server = await startServer('dist', 0);
-  origin = `http://127.0.0.1:${server.address().port}`;
-});
-after(() => server?.close());
+const site = serveDist();
 
+/** `lesson`'s page at 800 x 600 on WebGL2, every timeline paused. */
 async function open(context, lesson) {
-  const page = await context.newPage();
-  await page.setViewportSize({ width: 800, height: 600 });
-  const problems = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-  await page.goto(`${origin}/lessons/${lesson}/?backend=webgl2`);
-  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+  const { page, problems } = await openPage(context, `${site.origin}/lessons/${lesson}/?backend=webgl2`,
+    { width: 800, height: 600 });
   await page.evaluate(() => {
     for (const b of document.querySelectorAll('.timeline .play')) if (b.textContent.includes('pause')) b.click();
   });

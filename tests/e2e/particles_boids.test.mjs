@@ -3,29 +3,12 @@
 // two Euler lines on either side of zero) and its note says which side each is on, the flock
 // note gives the steering arrow's scale, and a plot fits inside its box (its last tick label
 // was cut off).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames } from './browser.mjs';
-import { startServer } from '../../scripts/serve.mjs';
+import { launch, frames, serveDist, openPage } from './browser.mjs';
 
-let server;
-let origin;
-before(async () => {
-  server = await startServer('dist', 0);
-  origin = `http://127.0.0.1:${server.address().port}`;
-});
-after(() => server?.close());
-
-async function open(context, path, width, height) {
-  const page = await context.newPage();
-  const problems = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-  await page.setViewportSize({ width, height });
-  await page.goto(`${origin}${path}`);
-  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
-  return { page, problems };
-}
+const site = serveDist();
+const open = (context, path, width, height) => openPage(context, site.origin + path, { width, height });
 
 /** The visible label boxes of `figure`, as the reader sees them. */
 function labelBoxes(page, figure) {
