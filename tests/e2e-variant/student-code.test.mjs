@@ -3,28 +3,14 @@
 // scripts/build --dev`, in which exercise 3.2 slerp panics (an index out of bounds), 3.3
 // rodrigues_matrix returns the transpose of the right matrix, and every other exercise is right.
 //   node --test tests/e2e-variant/
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { launch, pixelStats, meanDifference } from '../e2e/browser.mjs';
-import { startServer } from '../../scripts/serve.mjs';
+import { launch, pixelStats, meanDifference, frames, serveDist, openPage } from '../e2e/browser.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
-let server;
-let origin;
-before(async () => {
-  server = await startServer('dist', 0);
-  origin = `http://127.0.0.1:${server.address().port}`;
-});
-after(() => server?.close());
-
-async function frames(page, n = 6) {
-  await page.evaluate((n) => new Promise((ok) => {
-    const step = (k) => (k === 0 ? ok() : requestAnimationFrame(() => step(k - 1)));
-    step(n);
-  }), n);
-}
+const site = serveDist();
 
 /** Ticks the figure's "use my exercise" box. */
 async function useMyExercise(figure) {
@@ -48,12 +34,7 @@ for (const backend of ['webgl2', 'webgpu']) {
   test(`a panicking exercise stays in its figure, on ${backend}`, async () => {
     const context = await launch(backend);
     try {
-      const page = await context.newPage();
-      const problems = [];
-      page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
-      page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-      await page.goto(`${origin}/lessons/03-rotations/?backend=${backend}`);
-      await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+      const { page, problems } = await openPage(context, `${site.origin}/lessons/03-rotations/?backend=${backend}`);
       assert.match(await page.evaluate(() => document.getElementById('build-info').textContent), /solutions/);
       for (const button of await page.locator('.timeline .play').all()) {
         if ((await button.textContent()).includes('pause')) await button.click();
@@ -87,9 +68,7 @@ for (const backend of ['webgl2', 'webgpu']) {
       assert.deepEqual(problems, []);
 
       // A right answer is reported as matching (lesson 04's exercises are right in this build).
-      const page4 = await context.newPage();
-      await page4.goto(`${origin}/lessons/04-rigid-motions/?backend=${backend}`);
-      await page4.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+      const { page: page4 } = await openPage(context, `${site.origin}/lessons/04-rigid-motions/?backend=${backend}`);
       const first = page4.locator('.figure').first();
       await useMyExercise(first);
       await frames(page4);

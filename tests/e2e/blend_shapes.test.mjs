@@ -2,21 +2,14 @@
 // says why; with the full form's base weight set by hand and a total far above 1, both heads stay
 // whole in view, side by side (checked by pixels: two separate heads on the row through their
 // centres, neither touching the canvas's edges).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { launch, pixelStats, frames, setControl } from './browser.mjs';
-import { startServer } from '../../scripts/serve.mjs';
+import { launch, pixelStats, frames, setControl, serveDist, openPage } from './browser.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
-let server;
-let origin;
-before(async () => {
-  server = await startServer('dist', 0);
-  origin = `http://127.0.0.1:${server.address().port}`;
-});
-after(() => server?.close());
+const site = serveDist();
 
 /**
  * The runs of non-background pixels along rows of the last `pixelStats` image (`key`), at the
@@ -54,12 +47,7 @@ function runsAlongRows(page, key, width, rows) {
 test('lesson 10: identical heads at the defaults, both in view at a total far above 1', async () => {
   const context = await launch('webgl2');
   try {
-    const page = await context.newPage();
-    const problems = [];
-    page.on('pageerror', (e) => problems.push(e.message));
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-    await page.goto(`${origin}/lessons/10-blend-shapes/?backend=webgl2`);
-    await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/10-blend-shapes/?backend=webgl2`);
     const fig = '#fig-face';
     const canvas = page.locator(`${fig} .stage canvas`);
     await canvas.scrollIntoViewIfNeeded();

@@ -33,8 +33,8 @@ export function serveDist() {
 export async function openPage(context, url, { width, height, timeout = 90_000 } = {}) {
   const page = await context.newPage();
   const problems = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
   if (width) await page.setViewportSize({ width, height });
   await page.goto(url);
   await page.waitForFunction(() => document.body.dataset.ready, null, { timeout });

@@ -1,32 +1,21 @@
 // Lesson 06's glTF figure in Chromium: the sample characters load and play, a file chosen with the
 // picker or dropped on the figure loads, and a broken file gets a readable message while the page
 // keeps working.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
-import { launch, pixelStats, meanDifference } from './browser.mjs';
-import { startServer } from '../../scripts/serve.mjs';
+import { join } from 'node:path';
+import { launch, pixelStats, meanDifference, serveDist, openPage, DIST } from './browser.mjs';
 
-const SAMPLES = existsSync('dist/assets/gltf/index.json');
-let server;
-let origin;
-before(async () => {
-  server = await startServer('dist', 0);
-  origin = `http://127.0.0.1:${server.address().port}`;
-});
-after(() => server?.close());
+const SAMPLES = existsSync(join(DIST, 'assets/gltf/index.json'));
+const site = serveDist();
 
 const noteText = (page) => page.locator('#gltf-note').textContent();
 
 test('glTF characters load, play, and bad files say why', async () => {
   const context = await launch('webgl2');
   try {
-    const page = await context.newPage();
-    const problems = [];
-    page.on('pageerror', (e) => problems.push(e.message));
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-    await page.goto(`${origin}/lessons/06-skeletons/?backend=webgl2`);
-    await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/06-skeletons/?backend=webgl2`);
     const canvas = page.locator('#fig-gltf .stage canvas');
     await canvas.scrollIntoViewIfNeeded();
     if (SAMPLES) {
@@ -37,7 +26,7 @@ test('glTF characters load, play, and bad files say why', async () => {
       await pixelStats(page, canvas, 'b');
       assert.ok(await meanDifference(page, 'a', 'b') > 0.1, 'the walk moves');
       // The picker, with another sample's bytes.
-      const bytes = readFileSync('dist/assets/gltf/CesiumMan.gltf');
+      const bytes = readFileSync(join(DIST, 'assets/gltf/CesiumMan.gltf'));
       await page.setInputFiles('#gltf-file', { name: 'CesiumMan.gltf', mimeType: 'model/gltf+json', buffer: bytes });
       await page.waitForFunction(() => /CesiumMan\.gltf: 19 joints/.test(document.querySelector('#gltf-note').textContent));
     } else {

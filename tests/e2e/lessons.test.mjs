@@ -2,24 +2,17 @@
 // Run by scripts/test after scripts/build; screenshots land in tests/screenshots/ (gitignored).
 //   node --test tests/e2e/            all checks
 //   THUMBNAILS=1 node --test tests/e2e/   also refresh lessons/*/thumbnail.png
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { launch, pixelStats, meanDifference, frames } from './browser.mjs';
-import { startServer } from '../../scripts/serve.mjs';
+import { join } from 'node:path';
+import { launch, pixelStats, meanDifference, frames, serveDist, openPage, DIST } from './browser.mjs';
 import { gpuNoiseMatchesCpu } from './noise_gpu.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
-const catalog = JSON.parse(readFileSync('dist/lessons/catalog.json', 'utf8'));
-let server;
-let origin;
-
-before(async () => {
-  server = await startServer('dist', 0);
-  origin = `http://127.0.0.1:${server.address().port}`;
-});
-after(() => server?.close());
+const catalog = JSON.parse(readFileSync(join(DIST, 'lessons/catalog.json'), 'utf8'));
+const site = serveDist();
 
 /**
  * With E2E_TIMING=1, `clock(what)` prints how long `what` took since the last call (to see where a
@@ -34,16 +27,7 @@ function phaseClock(where) {
   };
 }
 
-/** Opens `path`, collecting console errors and page errors; waits until every figure is ready. */
-async function open(context, path) {
-  const page = await context.newPage();
-  const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  await page.goto(origin + path);
-  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
-  return { page, problems };
-}
+const open = (context, path) => openPage(context, site.origin + path);
 
 async function pauseTimelines(page) {
   await page.evaluate(() => {

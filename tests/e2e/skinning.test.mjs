@@ -1,32 +1,21 @@
 // Lesson 09 in Chromium, the review's points: the heat legends (shown while a joint is painted,
 // naming it, in the meshes' colours), the character's falloff slider range, what the area plot's
 // dashed line follows (the note says), and the glTF figure's note after a rejected file.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync } from 'node:fs';
-import { launch, pixelStats, meanDifference, frames, setControl } from './browser.mjs';
-import { startServer } from '../../scripts/serve.mjs';
+import { join } from 'node:path';
+import { launch, pixelStats, meanDifference, frames, setControl, serveDist, openPage, DIST } from './browser.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
-const SAMPLES = existsSync('dist/assets/gltf/index.json');
-let server;
-let origin;
-before(async () => {
-  server = await startServer('dist', 0);
-  origin = `http://127.0.0.1:${server.address().port}`;
-});
-after(() => server?.close());
+const SAMPLES = existsSync(join(DIST, 'assets/gltf/index.json'));
+const site = serveDist();
 
 test('lesson 09: heat legends, falloff range, plot cursor note, rejected glTF note', async () => {
   const context = await launch('webgl2');
   try {
-    const page = await context.newPage();
-    const problems = [];
-    page.on('pageerror', (e) => problems.push(e.message));
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-    await page.goto(`${origin}/lessons/09-skinning/?backend=webgl2`);
-    await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 90_000 });
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/09-skinning/?backend=webgl2`);
     await page.evaluate(() => {
       for (const b of document.querySelectorAll('.timeline .play')) if (b.textContent.includes('pause')) b.click();
     });
