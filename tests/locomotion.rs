@@ -225,3 +225,67 @@ fn the_speed_slider_picks_the_weight() {
     assert_eq!(weight_for_speed(&ra, &rb, 0.0), 0.0);
     assert_eq!(weight_for_speed(&ra, &rb, 100.0), 1.0);
 }
+
+/// The path length of the planted feet over one cycle of `clip` played alone with root motion
+/// applied, metres: every horizontal step of an ankle that stays within 5 mm of the contact
+/// height, sampled at 400 steps (so a foot that drifts sideways and back counts twice, as the
+/// figure's footprints do).
+fn planted_path(skeleton: &Skeleton, clip: &Clip) -> f32 {
+    let motion = RootMotion::from_clip(clip);
+    let feet = [
+        skeleton.find("foot.L").unwrap(),
+        skeleton.find("foot.R").unwrap(),
+    ];
+    let mut pose = skeleton.rest_pose();
+    let mut model = vec![Affine3A::IDENTITY; skeleton.len()];
+    let mut last: [Option<Vec3>; 2] = [None, None];
+    let mut path = 0.0;
+    let steps = 400;
+    for k in 0..=steps {
+        let t = clip.duration_sec() * (1.0 + k as f32 / steps as f32);
+        clip.sample(t, &mut ClipCursor::new(), &mut pose);
+        let origin = motion.position(t, motion.extract(&mut pose));
+        local_to_model(
+            skeleton.parents(),
+            &pose.local,
+            skeleton.scale_mode(),
+            &mut model,
+        );
+        for (f, &joint) in feet.iter().enumerate() {
+            let p = Vec3::from(model[joint].translation) + origin;
+            if p.y < CONTACT_HEIGHT + 0.005 {
+                if let Some(q) = last[f] {
+                    path += Vec3::new(p.x - q.x, 0.0, p.z - q.z).length();
+                }
+                last[f] = Some(p);
+            } else {
+                last[f] = None;
+            }
+        }
+    }
+    path
+}
+
+#[test]
+fn a_planted_foot_holds_still_sideways_too() {
+    // The travelling clips' root keys cancel the stance foot's whole horizontal step. They used
+    // to cancel its forward (z) step only, and the pelvis's yaw swung the planted foot sideways:
+    // the walk alone slid 5.5 cm per cycle (5 cm in the figure's 1.5 s), out and back, so
+    // a test of where a stance ends against where it began did not see it.
+    let (skeleton, walk, run) = clips();
+    for (name, clip) in [("walk", &walk), ("run", &run)] {
+        let path = planted_path(&skeleton, clip);
+        // What is left (about 1 cm) is the in-betweens: the root moves linearly between keys, the
+        // foot along an arc.
+        assert!(
+            path < 0.015,
+            "{name}: planted feet moved {path} m in one cycle"
+        );
+        let motion = RootMotion::from_clip(clip);
+        assert!(
+            motion.cycle_travel.x.abs() < 1e-4,
+            "{name} goes straight: {:?}",
+            motion.cycle_travel
+        );
+    }
+}
