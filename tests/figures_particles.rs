@@ -52,51 +52,124 @@ fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
     ))
 }
 
+/// How many of the live particles came from emitter `index`, and how many of those were born in
+/// the last step.
+fn from_emitter(scene: &EmitterFigure, index: u16) -> (usize, usize) {
+    let sys = scene.system();
+    let n = sys.len();
+    let mine = (0..n).filter(|&i| sys.emitter_of[i] == index);
+    let all = mine.clone().count();
+    let newborn = mine.filter(|&i| sys.ages[i] <= SIM_DT * 1.01).count();
+    (all, newborn)
+}
+
 #[test]
-fn the_emitter_figure_fills_up_and_stays_under_its_cap() {
+fn a_fast_fountain_keeps_flowing_beside_the_explosions() {
+    // At 1000 particles/s in "both" mode one explosion used to ask for 2 × 1000 particles, all
+    // 2000 slots: the fountain stopped until the sparks died, and a fountain living 10 s filled
+    // every slot and then spurted only as particles died. Now every step of the fountain emits
+    // its 1000 / 60 particles, each emitter stays inside its share, the system is never full,
+    // and an explosion is the burst size it asks for.
     let mut scene = EmitterFigure::new();
     scene.set_mode("both").unwrap();
     scene.set_rate(1000.0).unwrap();
     scene.set_lifetime(10.0).unwrap();
-    let mut frame = Frame::default();
-    // 6.7 s at 1000/s, lifetimes of at least 8 s: full.
-    let note = scene
-        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 6.7)
-        .unwrap();
-    assert_eq!(scene.len(), PAGE_MAX_PARTICLES);
-    assert_eq!(frame.points.len(), PAGE_MAX_PARTICLES);
-    assert!(note.contains("2000 particles"), "{note}");
-    for p in &frame.points {
-        assert!(p.center[1] >= 0.0, "nothing below the floor");
+    let eye = Vec3::new(0.0, 2.0, 6.0);
+    scene.advance_to(SIM_DT).unwrap();
+    assert_eq!(
+        from_emitter(&scene, 1).0,
+        400,
+        "one explosion: its burst size"
+    );
+    for k in 1..=480 {
+        scene.advance_to(k as f32 * SIM_DT).unwrap();
+        let (fountain, born) = from_emitter(&scene, 0);
+        let (sparks, _) = from_emitter(&scene, 1);
+        assert!(
+            (16..=17).contains(&born),
+            "step {k}: the fountain emitted {born} (1000/s is 16.7 a step)"
+        );
+        assert!(
+            fountain <= FOUNTAIN_SLOTS && sparks <= EXPLOSION_SLOTS,
+            "step {k}: {fountain} + {sparks}"
+        );
+        assert!(scene.len() < PAGE_MAX_PARTICLES, "step {k}: full");
     }
-    // Full without a press of "explode now": the note says it is full, and nothing about
-    // explosions set off by hand (it used to say "Explosions set off by hand: 0 (the system is
-    // full…)").
+    // The shortened lifetime is rate × 1.2 l + a step within the fountain's slots, and said.
+    let l = scene.lifetime_sec();
     assert!(
-        note.contains("The system is full: new particles wait for free slots."),
+        l < 1.0 && 1000.0 * (1.2 * l + SIM_DT) + 1.0 <= FOUNTAIN_SLOTS as f32,
+        "{l}"
+    );
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame, eye, 8.0).unwrap();
+    assert!(
+        note.contains("1200 are the fountain's and 800 the explosions'"),
+        "{note}"
+    );
+    assert!(
+        note.contains("living 10.00 s would need about 10000 slots"),
+        "{note}"
+    );
+    assert!(
+        note.contains(&format!("its particles live {l:.2} s")),
         "{note}"
     );
     assert!(!note.contains("by hand"), "{note}");
+    for p in &frame.points {
+        assert!(p.center[1] >= 0.0, "nothing below the floor");
+    }
+    // A slow fountain keeps the slider's lifetime and says nothing about it.
+    scene.set_rate(200.0).unwrap();
+    scene.set_lifetime(2.5).unwrap();
+    assert_eq!(scene.lifetime_sec(), 2.5);
+    let note = scene.draw(&mut Frame::default(), eye, 1.0).unwrap();
+    assert!(!note.contains("would need"), "{note}");
+    // In "explosion" mode the explosions have every slot.
+    scene.set_mode("explosion").unwrap();
+    assert_eq!(scene.slots(), (0, PAGE_MAX_PARTICLES));
+    assert!(scene
+        .set_burst(MAX_BURST as f32 + 1.0)
+        .unwrap_err()
+        .contains("per explosion"));
+}
+
+#[test]
+fn an_explosion_gets_what_is_left_of_its_slots_and_a_press_spawns_once() {
+    let eye = Vec3::new(0.0, 2.0, 6.0);
+    // "both": the automatic explosion at t = 0 takes 400 of the explosions' 800 slots; a press
+    // at 1 s (its sparks live up to 3 s) gets the other 400, one at 1.5 s none, and the note
+    // says why.
+    let mut scene = EmitterFigure::new();
+    scene.set_mode("both").unwrap();
+    scene.draw(&mut Frame::default(), eye, 1.0).unwrap();
     scene.explode();
-    let note = scene
-        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 6.7)
-        .unwrap();
+    assert_eq!(from_emitter(&scene, 1).0, 800);
+    let note = scene.draw(&mut Frame::default(), eye, 1.5).unwrap();
+    assert!(!note.contains("The last explosion got"), "{note}");
+    scene.explode();
+    let note = scene.draw(&mut Frame::default(), eye, 1.5).unwrap();
     assert!(
-        note.contains("The system is full") && note.contains("Explosions set off by hand: 1."),
+        note.contains("The last explosion got 0 of its 400 particles")
+            && note.contains("Explosions set off by hand: 2."),
         "{note}"
     );
-    // Not full, one press: only the press.
-    let mut scene = EmitterFigure::new();
-    scene
-        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 1.0)
-        .unwrap();
-    scene.explode();
-    let note = scene
-        .draw(&mut frame, Vec3::new(0.0, 2.0, 6.0), 1.0)
-        .unwrap();
-    assert!(
-        note.contains("Explosions set off by hand: 1.") && !note.contains("full"),
-        "{note}"
+    // A press while paused spawns at once, and only once: playing on from there gives what a
+    // replay from the start gives (the step it was pressed before spawned it a second time).
+    let mut live = EmitterFigure::new();
+    live.draw(&mut Frame::default(), eye, 1.0).unwrap();
+    live.explode();
+    assert_eq!(from_emitter(&live, 1).0, 400);
+    let mut f1 = Frame::default();
+    live.draw(&mut f1, eye, 1.2).unwrap();
+    assert_eq!(from_emitter(&live, 1).0, 400, "spawned once");
+    let mut f2 = Frame::default();
+    live.draw(&mut Frame::default(), eye, 0.0).unwrap();
+    live.draw(&mut f2, eye, 1.2).unwrap();
+    assert_eq!(
+        f1.fingerprint(),
+        f2.fingerprint(),
+        "a replay shows the same"
     );
 }
 
@@ -459,4 +532,67 @@ fn the_squash_plot_follows_the_figure() {
         scene.plot_samples().chunks(2).all(|r| r[1] >= 1.0),
         "no squash at 0"
     );
+}
+
+#[test]
+fn at_e_1_and_mu_0_the_balls_stay_in_their_box_and_in_view() {
+    // Without walls nothing slows a ball that the sphere sent sideways at e = 1, μ = 0: it left
+    // the canvas within the 6 s timeline. The glass box's walls bounce it back, exactly (no
+    // energy is gained or lost at e = 1), so every ball and the box stay in view at both canvas
+    // sizes for as long as the figure simulates.
+    let mut scene = BounceFigure::new();
+    scene.set_restitution(1.0).unwrap();
+    scene.set_friction(0.0).unwrap();
+    let view = scene.view();
+    let energy = |p: Vec3, v: Vec3| 0.5 * v.length_squared() + 9.81 * p.y;
+    scene.advance_to(0.0).unwrap();
+    let e0: Vec<f32> = scene
+        .positions()
+        .iter()
+        .map(|&p| energy(p, Vec3::ZERO))
+        .collect();
+    let mut went_sideways = false;
+    let inner = BOX_HALF_M - 0.08;
+    for k in 0..=(20 * 60) {
+        scene.advance_to(k as f32 / 60.0).unwrap();
+        for (i, p) in scene.positions().iter().enumerate() {
+            assert!(
+                p.x.abs() <= inner + 1e-4 && p.z.abs() <= inner + 1e-4 && p.y >= 0.08 - 1e-4,
+                "step {k}, ball {i} at {p}"
+            );
+            went_sideways |= p.x.abs() > 1.0;
+            for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+                let s = on_canvas(view, w, h, *p);
+                assert!(
+                    s.x > 5.0 && s.x < w - 5.0 && s.y > 5.0 && s.y < h - 5.0,
+                    "step {k}: ball {i} at {p} lands at {s} on a {w} x {h} canvas"
+                );
+            }
+        }
+        if k % 60 == 0 {
+            // Energy per unit mass: kept by every bounce (the velocities are not public, so the
+            // ball's height at rest is checked instead: it never rises above where it started).
+            for (i, p) in scene.positions().iter().enumerate() {
+                assert!(
+                    9.81 * p.y <= e0[i] + 1e-2,
+                    "ball {i} above its drop height: {p}"
+                );
+            }
+        }
+    }
+    assert!(went_sideways, "some ball is thrown towards the walls");
+    // The box is in view too.
+    for x in [-BOX_HALF_M, BOX_HALF_M] {
+        for z in [-BOX_HALF_M, BOX_HALF_M] {
+            for y in [0.0, BOX_DRAWN_HEIGHT_M] {
+                for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+                    let s = on_canvas(view, w, h, Vec3::new(x, y, z));
+                    assert!(
+                        s.x > 0.0 && s.x < w && s.y > 0.0 && s.y < h,
+                        "box corner ({x}, {y}, {z}) lands at {s} on a {w} x {h} canvas"
+                    );
+                }
+            }
+        }
+    }
 }

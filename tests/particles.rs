@@ -391,3 +391,54 @@ fn the_squash_ball_keeps_its_volume_and_squashes_on_impact() {
     }
     assert!(squashed, "the ball squashed on some impact");
 }
+
+#[test]
+fn a_wall_reflects_at_the_exact_time_of_impact_in_flight_and_in_a_slide() {
+    use inbetween::particles::Plane;
+    // The wall x = 1 faces −x. A ball at x = 0 moving at 3 m/s reaches it at t = 1/3 s; in a
+    // 0.5 s step it then flies back for 1/6 s: x = 1 − 3/6 = 0.5, with its height on the same
+    // parabola (gravity acts along y only, the wall is vertical).
+    let wall = Plane::through(Vec3::X, Vec3::NEG_X);
+    let s = Surfaces {
+        restitution: 1.0,
+        friction: 0.0,
+        floor_y: None,
+        walls: vec![wall],
+        ..Default::default()
+    };
+    let (mut p, mut v, mut resting) = (Vec3::new(0.0, 5.0, 0.0), Vec3::new(3.0, 0.0, 0.0), false);
+    ballistic_step(&mut p, &mut v, &mut resting, 0.5, &s);
+    assert!((p.x - 0.5).abs() < 1e-5, "{p}");
+    assert!((p.y - (5.0 - 0.5 * 9.81 * 0.25)).abs() < 1e-4, "{p}");
+    assert!(
+        (v.x + 3.0).abs() < 1e-5 && (v.y + 9.81 * 0.5).abs() < 1e-4,
+        "{v}"
+    );
+    // Restitution 0.5 halves the normal speed: back 1.5 m/s × 1/6 s.
+    let half = Surfaces {
+        restitution: 0.5,
+        ..s.clone()
+    };
+    let (mut p, mut v) = (Vec3::new(0.0, 5.0, 0.0), Vec3::new(3.0, 0.0, 0.0));
+    ballistic_step(&mut p, &mut v, &mut resting, 0.5, &half);
+    assert!(
+        (p.x - 0.75).abs() < 1e-5 && (v.x + 1.5).abs() < 1e-5,
+        "{p} {v}"
+    );
+    // A ball resting on the floor and sliding at 3 m/s (μ = 0) bounces off the wall as well,
+    // instead of sliding through it.
+    let floor = Surfaces {
+        floor_y: Some(0.0),
+        ..s.clone()
+    };
+    let (mut p, mut v, mut resting) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(3.0, 0.0, 0.0), true);
+    ballistic_step(&mut p, &mut v, &mut resting, 0.5, &floor);
+    assert!(
+        (p.x - 0.5).abs() < 1e-5 && p.y == 0.0 && (v.x + 3.0).abs() < 1e-5,
+        "{p} {v}"
+    );
+    for _ in 0..200 {
+        ballistic_step(&mut p, &mut v, &mut resting, 1.0 / 60.0, &floor);
+        assert!(p.x <= 1.0 + 1e-5, "{p}");
+    }
+}

@@ -12,12 +12,13 @@ if (emitterViewer) {
   const scene = new EmitterScene();
   const timeline = new Timeline(document.getElementById('emitters-timeline'), { duration: 6 });
   const p = {
-    mode: 'fountain', rate: 200, spread: 11, lifetime: 2.5, restitution: 0.7, gravity: 9.81,
+    mode: 'fountain', rate: 200, burst: 400, spread: 11, lifetime: 2.5, restitution: 0.7, gravity: 9.81,
     sort: true, fade: true, on: 'CPU', explode: () => scene.explode(emitterViewer),
   };
   const gui = new GUI({ container: document.querySelector('#fig-emitters .panel'), title: 'Emitters' });
   gui.add(p, 'mode', ['fountain', 'both', 'explosion']).name('emitter');
-  gui.add(p, 'rate', 0, 1000, 10).name('rate (1/s; burst: 2×)');
+  gui.add(p, 'rate', 0, 1000, 10).name('fountain rate (1/s)');
+  gui.add(p, 'burst', 0, 800, 10).name('particles per explosion');
   gui.add(p, 'spread', 0, 90, 1).name('cone half-angle (°)');
   gui.add(p, 'lifetime', 0.2, 6, 0.1).name('lifetime (s)');
   gui.add(p, 'restitution', 0, 1, 0.05).name('restitution e');
@@ -35,6 +36,7 @@ if (emitterViewer) {
   const apply = guarded(gui, p, () => {
     scene.setMode(p.mode);
     scene.setRate(p.rate);
+    scene.setBurst(p.burst);
     scene.setSpreadDeg(p.spread);
     scene.setLifetime(p.lifetime);
     scene.setRestitution(p.restitution);

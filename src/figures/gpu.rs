@@ -264,6 +264,9 @@ impl GpuParticleClock {
                 surfaces.spheres.len()
             ));
         }
+        if !surfaces.walls.is_empty() {
+            return Err("GPU particles bounce on the floor and spheres only, not on walls".into());
+        }
         if !(dt.is_finite() && dt >= 0.0) {
             return Err(format!("dt must be finite and ≥ 0, got {dt}"));
         }

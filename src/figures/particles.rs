@@ -19,7 +19,7 @@ use crate::exercises::run;
 use crate::particles::sprites::{sort_back_to_front, SMOKE_ATLAS};
 use crate::particles::{
     floor_time_of_impact, free_fall, free_fall_errors, Emitter, FreeFallError, Integrator,
-    ParticleSystem, Sphere, SquashBall, Surfaces, VelocityDist,
+    ParticleSystem, Plane, Sphere, SquashBall, Surfaces, VelocityDist,
 };
 use crate::texture::{SpriteInstance, TextureId};
 use glam::{Mat4, Vec3, Vec4};
@@ -41,6 +41,15 @@ pub fn steps_to(time_sec: f32) -> Result<usize, String> {
 
 /// The most particles the emitter figure holds (software rendering in the tests draws them all).
 pub const PAGE_MAX_PARTICLES: usize = 2000;
+/// The emitter figure's slots for the fountain when it runs ("fountain" and "both"); the rest,
+/// [`EXPLOSION_SLOTS`], are the explosions'. In "explosion" mode the explosions have them all.
+/// With a share each, one emitter never starves the other: a burst cannot take the fountain's
+/// slots, and a fast fountain cannot leave an explosion without any.
+pub const FOUNTAIN_SLOTS: usize = 1200;
+/// The explosions' share of the slots next to a fountain.
+pub const EXPLOSION_SLOTS: usize = PAGE_MAX_PARTICLES - FOUNTAIN_SLOTS;
+/// The most particles one explosion may ask for (the burst slider's top).
+pub const MAX_BURST: usize = EXPLOSION_SLOTS;
 
 // ---------------------------------------------------------------------------------------------
 // Emitters and sprites.
@@ -57,9 +66,20 @@ pub struct EmitterFigure {
     mode: usize,
     sort: bool,
     fade: bool,
-    burst_count: usize,
-    /// Steps at which the reader pressed "explode" (replayed with the rest).
-    bursts: Vec<usize>,
+    /// Particles one explosion asks for (its own slider: it used to be twice the fountain's
+    /// rate, so at 1000/s one burst took all 2000 slots).
+    burst_size: usize,
+    /// The lifetime slider's value, seconds (the emitters get at most
+    /// [`EmitterFigure::lifetime_sec`]).
+    lifetime_slider_sec: f32,
+    /// Steps at which the reader pressed "explode" (replayed with the rest), and whether that
+    /// press has been spawned in the current run (a press spawns at once; the step it was
+    /// pressed before must not spawn it a second time, while a replay must).
+    bursts: Vec<(usize, bool)>,
+    /// The explosions of this run still holding slots: (step, particles spawned).
+    spent: Vec<(usize, usize)>,
+    /// The latest explosion: (particles spawned, particles asked for).
+    last_burst: Option<(usize, usize)>,
     steps_done: usize,
     dirty: bool,
     order: Vec<(f32, u32)>,
@@ -102,13 +122,22 @@ impl EmitterFigure {
             mode: 0,
             sort: true,
             fade: true,
-            burst_count: 400, // twice the fountain's rate
+            burst_size: 400,
+            lifetime_slider_sec: 2.5,
             bursts: Vec::with_capacity(MAX_BURSTS),
+            spent: Vec::with_capacity(MAX_BURSTS + 8),
+            last_burst: None,
             steps_done: 0,
             dirty: false,
             order: Vec::with_capacity(PAGE_MAX_PARTICLES),
             sprite_texture: None,
         }
+        .with_budget()
+    }
+
+    fn with_budget(mut self) -> Self {
+        self.apply_budget();
+        self
     }
 
     pub fn len(&self) -> usize {
@@ -125,26 +154,111 @@ impl EmitterFigure {
             .iter()
             .position(|&m| m == name)
             .ok_or_else(|| format!("emitter: no mode named {name:?}"))?;
+        self.apply_budget();
         self.dirty = true;
         Ok(())
     }
 
-    /// Fountain rate, particles per second, and particles per explosion, in [0, 1000].
+    /// The fountain's rate, particles per second, in [0, 1000].
     pub fn set_rate(&mut self, rate: f32) -> Result<(), String> {
         self.emitters[0].rate_per_sec = in_range("rate", rate, 0.0, 1000.0)?;
-        self.burst_count = 2 * rate as usize;
+        self.apply_budget();
         self.dirty = true;
         Ok(())
     }
 
-    /// Lifetime of new particles, seconds, in [0.1, 10] (a ±20 % spread around it).
+    /// Particles one explosion asks for, in [0, [`MAX_BURST`]] (rounded to a whole number).
+    pub fn set_burst(&mut self, count: f32) -> Result<(), String> {
+        self.burst_size =
+            in_range("particles per explosion", count, 0.0, MAX_BURST as f32)?.round() as usize;
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// Lifetime of new particles, seconds, in [0.1, 10] (a ±20 % spread around it); the
+    /// emitters get at most [`EmitterFigure::lifetime_sec`].
     pub fn set_lifetime(&mut self, lifetime_sec: f32) -> Result<(), String> {
-        let l = in_range("lifetime", lifetime_sec, 0.1, 10.0)?;
+        self.lifetime_slider_sec = in_range("lifetime", lifetime_sec, 0.1, 10.0)?;
+        self.apply_budget();
+        self.dirty = true;
+        Ok(())
+    }
+
+    /// The fountain's and the explosions' shares of the [`PAGE_MAX_PARTICLES`] slots.
+    pub fn slots(&self) -> (usize, usize) {
+        if self.mode == 1 {
+            (0, PAGE_MAX_PARTICLES)
+        } else {
+            (FOUNTAIN_SLOTS, EXPLOSION_SLOTS)
+        }
+    }
+
+    /// The mean lifetime the particles get, seconds: the slider's, or less when the fountain
+    /// would need more than its slots. A steady stream at `rate` particles per second, each
+    /// living up to `1.2 l`, holds about `rate · 1.2 l` particles at once (and one step's more
+    /// while the oldest die), so with `F` slots
+    /// ```text
+    /// l ≤ ((F − 2) / rate − Δt) / 1.2
+    /// ```
+    /// The fountain then flows at its full rate and its particles die younger (what "recycle the
+    /// oldest" does in engines), instead of filling every slot and stopping until some die. The
+    /// explosions get the same lifetime, so the GPU's ring of slots never reaches a live one.
+    pub fn lifetime_sec(&self) -> f32 {
+        let l = self.lifetime_slider_sec;
+        let rate = self.emitters[0].rate_per_sec;
+        let (fountain, _) = self.slots();
+        if fountain == 0 || rate <= 0.0 {
+            return l;
+        }
+        let most = ((fountain as f32 - 2.0) / rate - SIM_DT) / 1.2;
+        l.min(most)
+    }
+
+    fn apply_budget(&mut self) {
+        let l = self.lifetime_sec();
         for e in &mut self.emitters {
             e.lifetime_sec = (0.8 * l, 1.2 * l);
         }
-        self.dirty = true;
-        Ok(())
+    }
+
+    /// Steps an explosion's particles may still be alive: they live less than `1.2 l`.
+    fn burst_window_steps(&self) -> usize {
+        (1.2 * self.lifetime_sec() / SIM_DT).ceil() as usize + 1
+    }
+
+    /// How many particles an explosion set off at step `k` gets: what it asks for, or what is
+    /// left of the explosions' slots by the explosions of the last `1.2 l` seconds (counted by
+    /// what they spawned, not by which sparks died, so the CPU and the GPU, whose sparks stay on
+    /// the GPU, count the same). Records it.
+    fn next_burst(&mut self, k: usize) -> usize {
+        let window = self.burst_window_steps();
+        self.spent.retain(|&(at, _)| k < at + window);
+        let (_, share) = self.slots();
+        let used: usize = self.spent.iter().map(|&(_, n)| n).sum();
+        let n = self.burst_size.min(share.saturating_sub(used));
+        self.spent.push((k, n));
+        self.last_burst = Some((n, self.burst_size));
+        n
+    }
+
+    /// The explosions due at the start of step `k` (presses not spawned yet in this run, then
+    /// the automatic one), each with its particle count.
+    fn bursts_at(&mut self, k: usize) -> [usize; 2] {
+        let mut out = [0; 2];
+        let mut pressed = false;
+        for b in &mut self.bursts {
+            if b.0 == k && !b.1 {
+                b.1 = true;
+                pressed = true;
+            }
+        }
+        if pressed {
+            out[0] = self.next_burst(k);
+        }
+        if self.mode >= 1 && k.is_multiple_of(BURST_EVERY) {
+            out[1] = self.next_burst(k);
+        }
+        out
     }
 
     /// Half-angle of the fountain's cone, degrees in [0, 90].
@@ -189,10 +303,11 @@ impl EmitterFigure {
 
     /// Sets off the explosion now (and at this moment in every replay).
     pub fn explode(&mut self) {
-        // Recorded even when the system is full, so the note can say so.
-        if self.bursts.len() < MAX_BURSTS && !self.bursts.contains(&self.steps_done) {
-            self.bursts.push(self.steps_done);
-            self.system.burst(&self.emitters, 1, self.burst_count);
+        let k = self.steps_done;
+        if self.bursts.len() < MAX_BURSTS && !self.bursts.iter().any(|b| b.0 == k) {
+            self.bursts.push((k, true));
+            let n = self.next_burst(k);
+            self.system.burst(&self.emitters, 1, n);
         }
     }
 
@@ -201,14 +316,21 @@ impl EmitterFigure {
         for e in &mut self.emitters {
             e.carry = 0.0;
         }
+        for b in &mut self.bursts {
+            b.1 = false;
+        }
+        self.spent.clear();
+        self.last_burst = None;
         self.steps_done = 0;
         self.dirty = false;
     }
 
     fn step(&mut self) {
         let k = self.steps_done;
-        if (self.mode >= 1 && k.is_multiple_of(BURST_EVERY)) || self.bursts.contains(&k) {
-            self.system.burst(&self.emitters, 1, self.burst_count);
+        for n in self.bursts_at(k) {
+            if n > 0 {
+                self.system.burst(&self.emitters, 1, n);
+            }
         }
         let rate = self.emitters[0].rate_per_sec;
         if self.mode == 1 {
@@ -239,9 +361,11 @@ impl EmitterFigure {
         &mut self,
         burst: impl FnOnce(&mut [Emitter], &Surfaces, usize) -> Result<(), String>,
     ) -> Result<(), String> {
-        if self.bursts.len() < MAX_BURSTS && !self.bursts.contains(&self.steps_done) {
-            self.bursts.push(self.steps_done);
-            burst(&mut self.emitters, &self.surfaces, self.burst_count)?;
+        let k = self.steps_done;
+        if self.bursts.len() < MAX_BURSTS && !self.bursts.iter().any(|b| b.0 == k) {
+            self.bursts.push((k, true));
+            let n = self.next_burst(k);
+            burst(&mut self.emitters, &self.surfaces, n)?;
         }
         Ok(())
     }
@@ -270,12 +394,7 @@ impl EmitterFigure {
         let n = target - self.steps_done;
         for _ in 0..n {
             let k = self.steps_done;
-            let burst =
-                if (self.mode >= 1 && k.is_multiple_of(BURST_EVERY)) || self.bursts.contains(&k) {
-                    self.burst_count
-                } else {
-                    0
-                };
+            let burst = self.bursts_at(k).iter().sum();
             let rate = self.emitters[0].rate_per_sec;
             if self.mode == 1 {
                 self.emitters[0].rate_per_sec = 0.0;
@@ -354,28 +473,62 @@ impl EmitterFigure {
         }
         let e = self.surfaces.restitution;
         Ok(format!(
-            "{n} particles alive (at most {PAGE_MAX_PARTICLES} here, {} in the core); sprites {}. \
-             With e = {}, a particle that hits the floor at 5 m/s leaves it at {} m/s.{}",
-            crate::particles::MAX_PARTICLES,
+            "{n} particles alive; sprites {}. {} With e = {}, a particle that hits the floor at \
+             5 m/s leaves it at {} m/s.{}",
             if self.sort {
                 "sorted back to front"
             } else {
                 "in storage order (unsorted)"
             },
+            self.budget_note(),
             format_number(e),
             format_number(5.0 * e),
-            // Two separate facts: a full system (which a high rate reaches with no explosion set
-            // off by hand) and the presses of "explode now".
-            [
-                (n == self.system.capacity())
-                    .then(|| " The system is full: new particles wait for free slots.".to_string()),
-                (!self.bursts.is_empty())
-                    .then(|| format!(" Explosions set off by hand: {}.", self.bursts.len())),
-            ]
-            .into_iter()
-            .flatten()
-            .collect::<String>(),
+            (!self.bursts.is_empty())
+                .then(|| format!(" Explosions set off by hand: {}.", self.bursts.len()))
+                .unwrap_or_default(),
         ))
+    }
+
+    /// What the slots allow: each emitter's share, a lifetime shortened to fit the fountain's,
+    /// and an explosion that got fewer particles than it asked for.
+    pub fn budget_note(&self) -> String {
+        let (fountain, explosions) = self.slots();
+        let mut note = if fountain == 0 {
+            format!(
+                "The explosions have all {PAGE_MAX_PARTICLES} slots here (the core allows {}).",
+                crate::particles::MAX_PARTICLES
+            )
+        } else {
+            format!(
+                "Of the {PAGE_MAX_PARTICLES} slots here (the core allows {}), {fountain} are the \
+                 fountain's and {explosions} the explosions'.",
+                crate::particles::MAX_PARTICLES
+            )
+        };
+        let (l, asked) = (self.lifetime_sec(), self.lifetime_slider_sec);
+        if l < asked {
+            note.push_str(&format!(
+                " A stream of {:.0} particles/s living {asked:.2} s would need about {:.0} \
+                 slots (rate × lifetime), so its particles live {l:.2} s: the fountain keeps \
+                 flowing, its arcs end sooner.",
+                self.emitters[0].rate_per_sec,
+                self.emitters[0].rate_per_sec * asked,
+            ));
+        }
+        if let Some((got, asked)) = self.last_burst {
+            if got < asked {
+                note.push_str(&format!(
+                    " The last explosion got {got} of its {asked} particles: the sparks of \
+                     the ones before still hold the explosions' slots."
+                ));
+            }
+        }
+        note
+    }
+
+    /// The particles (their emitter, age, position…), for tests.
+    pub fn system(&self) -> &ParticleSystem {
+        &self.system
     }
 
     /// Linear RGBA of the live particles, for tests.
@@ -598,6 +751,14 @@ impl FreeFallFigure {
 
 /// Radius of the bouncing balls, metres.
 const BALL_RADIUS: f32 = 0.08;
+/// The bounce figure's glass box: walls at x, z = ±`BOX_HALF_M` metres. A ball that leaves the
+/// sphere sideways bounces back off them with the same restitution and friction as the floor;
+/// without them, at e = 1 and μ = 0 nothing slows a ball's horizontal speed and it left the view
+/// for good.
+pub const BOX_HALF_M: f32 = 1.5;
+/// How high the box's edges are drawn, metres (the walls themselves have no top; no ball rises
+/// above its drop height, 3.1 m, since a bounce never adds energy).
+pub const BOX_DRAWN_HEIGHT_M: f32 = 3.3;
 /// How many balls the bounce figure drops.
 pub const BOUNCE_BALLS: usize = 7;
 
@@ -690,15 +851,19 @@ impl BounceFigure {
         self.dirty = false;
     }
 
-    /// The surfaces the balls' centres bounce on: the floor and the sphere, grown by the ball's
-    /// radius (a ball touches them when its centre is one radius away).
+    /// The surfaces the balls' centres bounce on: the floor, the sphere and the box's four walls,
+    /// grown by the ball's radius (a ball touches them when its centre is one radius away).
     fn surfaces(&self) -> Surfaces {
+        let inner = BOX_HALF_M - BALL_RADIUS;
         Surfaces {
             floor_y: Some(BALL_RADIUS),
             spheres: vec![Sphere {
                 center: self.sphere.center,
                 radius: self.sphere.radius + BALL_RADIUS,
             }],
+            walls: [Vec3::X, Vec3::NEG_X, Vec3::Z, Vec3::NEG_Z]
+                .map(|n| Plane::through(-inner * n, n))
+                .to_vec(),
             restitution: self.restitution,
             friction: self.friction,
             ..Default::default()
@@ -753,6 +918,16 @@ impl BounceFigure {
     pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
+        // The glass box: its bottom and top rims and its four vertical edges.
+        let (w, h) = (BOX_HALF_M, BOX_DRAWN_HEIGHT_M);
+        let corners = [(-w, -w), (w, -w), (w, w), (-w, w)];
+        for (k, &(x, z)) in corners.iter().enumerate() {
+            let (x2, z2) = corners[(k + 1) % 4];
+            for y in [0.003, h] {
+                frame.line(Vec3::new(x, y, z), Vec3::new(x2, y, z2), palette::GREY);
+            }
+            frame.line(Vec3::new(x, 0.0, z), Vec3::new(x, h, z), palette::GREY);
+        }
         let model = Mat4::from_translation(self.sphere.center)
             * Mat4::from_scale(Vec3::splat(self.sphere.radius));
         frame.mesh(MeshId::SPHERE, model, palette::GREY);

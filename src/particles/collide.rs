@@ -12,6 +12,31 @@ pub struct Sphere {
     pub radius: f32,
 }
 
+/// A wall: the plane `n · p = offset` with unit normal `n`; particles stay on the side it
+/// points to (`n · p ≥ offset`). Its time of impact is the floor's along `n`, with the height,
+/// velocity and gravity measured along `n` ([`floor_time_of_impact`]), so a vertical wall, where
+/// `n · g = 0`, is reached along a straight line in the horizontal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plane {
+    pub normal: Vec3,
+    pub offset: f32,
+}
+
+impl Plane {
+    /// The plane through `point` with unit normal `normal`.
+    pub fn through(point: Vec3, normal: Vec3) -> Self {
+        Self {
+            normal,
+            offset: normal.dot(point),
+        }
+    }
+
+    /// Signed distance of `p` from the plane, positive on the side particles keep to.
+    pub fn distance(&self, p: Vec3) -> f32 {
+        self.normal.dot(p) - self.offset
+    }
+}
+
 /// What particles bounce on, and how.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Surfaces {
@@ -21,6 +46,9 @@ pub struct Surfaces {
     pub floor_y: Option<f32>,
     /// Static spheres.
     pub spheres: Vec<Sphere>,
+    /// Walls (planes) besides the floor, e.g. the four sides of a box; nothing rests on them.
+    /// The GPU step (`figures::gpu`) knows the floor and spheres only.
+    pub walls: Vec<Plane>,
     /// Restitution `e ∈ [0, 1]`: the normal speed after a bounce is `e` times the one before.
     pub restitution: f32,
     /// Friction `μ ≥ 0`: a bounce takes `μ |Δv_n|` off the tangential speed (never reversing
@@ -34,6 +62,7 @@ impl Default for Surfaces {
             gravity: Vec3::new(0.0, -9.81, 0.0),
             floor_y: Some(0.0),
             spheres: Vec::new(),
+            walls: Vec::new(),
             restitution: 0.7,
             friction: 0.2,
         }
@@ -146,8 +175,16 @@ pub fn bounce_velocity(v: Vec3, n: Vec3, restitution: f32, friction: f32) -> Vec
     -restitution * vn + keep * vt
 }
 
-/// Advances one particle by `dt` along its exact ballistic path, bouncing off the floor and the
-/// spheres of `surfaces` at the exact time of impact inside the step. `resting` marks a particle
+/// Which surface a step hits first.
+#[derive(Clone, Copy)]
+enum Surface {
+    Floor,
+    Sphere(Sphere),
+    Wall(Plane),
+}
+
+/// Advances one particle by `dt` along its exact ballistic path, bouncing off the floor, the
+/// spheres and the walls of `surfaces` at the exact time of impact inside the step. `resting` marks a particle
 /// lying on the floor: it then stays at `y = floor_y` with `v.y = 0` and slides with friction
 /// until something lifts it. Nothing ends a step below the floor.
 pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s: &Surfaces) {
@@ -168,6 +205,20 @@ pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s
                 *p += vt * dt;
                 p.y = floor;
                 *v = vt;
+                // A slide is a straight line in the step: a wall it crossed is hit at
+                // τ = depth / speed before the step's end; bounce there and slide on for τ.
+                for wall in &s.walls {
+                    let depth = -wall.distance(*p);
+                    let vn = v.dot(wall.normal);
+                    if depth > 0.0 && vn < 0.0 {
+                        let tau = (depth / -vn).min(dt);
+                        let hit = *p - *v * tau;
+                        *v = bounce_velocity(*v, wall.normal, s.restitution, s.friction);
+                        v.y = 0.0;
+                        *p = hit + *v * tau;
+                        p.y = floor;
+                    }
+                }
                 return;
             }
         }
@@ -176,20 +227,30 @@ pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s
     let mut remaining = dt;
     for _ in 0..MAX_BOUNCES_PER_STEP {
         // The earliest surface hit inside the remaining time.
-        let mut hit: Option<(f32, Option<Sphere>)> = None;
+        let mut hit: Option<(f32, Surface)> = None;
         if let Some(floor) = s.floor_y {
             if let Some(t) = floor_time_of_impact(p.y, v.y, g.y, floor, remaining) {
-                hit = Some((t, None));
+                hit = Some((t, Surface::Floor));
             }
         }
         for &sphere in &s.spheres {
             if let Some(t) = sphere_time_of_impact(*p, *v, g, sphere, remaining) {
                 if hit.is_none_or(|(best, _)| t < best) {
-                    hit = Some((t, Some(sphere)));
+                    hit = Some((t, Surface::Sphere(sphere)));
                 }
             }
         }
-        let Some((t, sphere)) = hit else {
+        for &wall in &s.walls {
+            let n = wall.normal;
+            if let Some(t) =
+                floor_time_of_impact(n.dot(*p), n.dot(*v), n.dot(g), wall.offset, remaining)
+            {
+                if hit.is_none_or(|(best, _)| t < best) {
+                    hit = Some((t, Surface::Wall(wall)));
+                }
+            }
+        }
+        let Some((t, surface)) = hit else {
             let (q, w) = free_fall(*p, *v, g, remaining);
             *p = q;
             *v = w;
@@ -198,8 +259,8 @@ pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s
         let (q, w) = free_fall(*p, *v, g, t);
         *p = q;
         remaining -= t;
-        match sphere {
-            None => {
+        match surface {
+            Surface::Floor => {
                 let floor = s.floor_y.unwrap_or(p.y);
                 p.y = floor; // the impact point lies on the floor (up to the solver's rounding)
                 *v = bounce_velocity(w, Vec3::Y, s.restitution, s.friction);
@@ -211,7 +272,14 @@ pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s
                     remaining = 0.0;
                 }
             }
-            Some(sphere) => {
+            Surface::Wall(wall) => {
+                *p -= wall.distance(*p) * wall.normal; // on the wall, not behind it
+                *v = bounce_velocity(w, wall.normal, s.restitution, s.friction);
+                if v.dot(wall.normal) <= 0.0 {
+                    *v -= v.dot(wall.normal) * wall.normal; // e = 0: slide along it
+                }
+            }
+            Surface::Sphere(sphere) => {
                 let n = (*p - sphere.center).normalize_or(Vec3::Y);
                 *p = sphere.center + n * sphere.radius; // on the surface, not inside
                 *v = bounce_velocity(w, n, s.restitution, s.friction);

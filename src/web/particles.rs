@@ -47,10 +47,15 @@ impl EmitterScene {
     pub fn set_mode(&mut self, name: &str) -> Result<(), JsError> {
         self.scene.set_mode(name).map_err(js)
     }
-    /// Particles per second, in [0, 1000].
+    /// The fountain's particles per second, in [0, 1000].
     #[wasm_bindgen(js_name = setRate)]
     pub fn set_rate(&mut self, rate: f32) -> Result<(), JsError> {
         self.scene.set_rate(rate).map_err(js)
+    }
+    /// Particles one explosion asks for, in [0, 800].
+    #[wasm_bindgen(js_name = setBurst)]
+    pub fn set_burst(&mut self, count: f32) -> Result<(), JsError> {
+        self.scene.set_burst(count).map_err(js)
     }
     /// Seconds, in [0.1, 10].
     #[wasm_bindgen(js_name = setLifetime)]
