@@ -141,6 +141,49 @@ async fn lines_points_and_depth() {
     );
 }
 
+/// A frame the canvas already shows is not drawn again; a change to the frame, the camera, a
+/// mesh's vertices, the size (a resize clears the canvas) or compute-shader points draws it.
+#[wasm_bindgen_test]
+async fn an_unchanged_frame_is_not_drawn_again() {
+    let mut gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    let mut camera = OrbitCamera::default();
+    let data = inbetween::mesh::cuboid(Vec3::splat(0.5));
+    let id = renderer.create_mesh(&gpu, &data, None);
+    let present = |renderer: &mut Renderer, gpu: &Gpu, camera: &OrbitCamera, x: f32| {
+        renderer
+            .frame
+            .mesh(id, Mat4::from_translation(Vec3::X * x), Vec3::ONE);
+        let fingerprint = renderer.frame.fingerprint();
+        renderer.render(gpu, camera, fingerprint).expect("drawn");
+        assert!(renderer.frame.meshes.is_empty(), "the frame is cleared either way");
+        renderer.canvas_frames()
+    };
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.0), 1);
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.0), 1, "same frame: kept");
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 2, "the frame moved");
+    camera.orbit(0.1, 0.0);
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 3, "the camera moved");
+    renderer
+        .update_mesh(&gpu, id, &data.positions, &data.normals)
+        .expect("same vertex count");
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 4, "a mesh changed");
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 4);
+    gpu.resize(80, 48);
+    renderer.canvas_cleared();
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 5, "resized");
+    let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: 64,
+        usage: wgpu::BufferUsages::VERTEX,
+        mapped_at_creation: false,
+    });
+    renderer.gpu_points = vec![(buffer, 0)];
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 6, "compute points");
+    assert!(renderer.gpu_points.is_empty(), "drawn once, then cleared with the frame");
+    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 6);
+}
+
 #[wasm_bindgen_test]
 async fn meshes_update_in_place() {
     let gpu = gpu().await;

@@ -194,6 +194,14 @@ pub struct Renderer {
     /// Point sprites written by compute shaders (`compute.rs`): buffer and count, drawn after
     /// `frame.points` and cleared with the frame.
     pub gpu_points: Vec<(wgpu::Buffer, u32)>,
+    /// Counts the changes to what a frame can name besides itself (meshes' vertices, textures):
+    /// part of [`Renderer::render`]'s test for an unchanged canvas.
+    pub(super) revision: u64,
+    /// The [`Renderer::canvas_key`] of what the canvas shows, `None` when unknown (nothing
+    /// drawn yet, a skipped frame, or a resize, which clears the canvas).
+    shown: Option<u64>,
+    /// How many frames [`Renderer::render`] drew into the canvas (for tests).
+    canvas_frames: u64,
 }
 
 impl Renderer {
@@ -357,6 +365,9 @@ impl Renderer {
             frame: Frame::default(),
             skin: super::skin::SkinPass::new(gpu, &globals_layout, format),
             gpu_points: Vec::new(),
+            revision: 0,
+            shown: None,
+            canvas_frames: 0,
         };
         // The draw list names these three by fixed ids (`MeshId::CUBE`, `SPHERE`, `CONE`).
         renderer.cube = renderer.create_mesh(gpu, &crate::mesh::cuboid(Vec3::ONE), None);
@@ -390,6 +401,7 @@ impl Renderer {
 
     /// Uploads a mesh; `colors` (linear RGBA, one per vertex) defaults to white.
     pub fn create_mesh(&mut self, gpu: &Gpu, data: &MeshData, colors: Option<&[Vec4]>) -> MeshId {
+        self.revision += 1;
         use wgpu::util::DeviceExt;
         let colors: Vec<[f32; 4]> = match colors {
             Some(c) => c.iter().map(|c| c.to_array()).collect(),
@@ -432,6 +444,7 @@ impl Renderer {
     /// Releases a mesh's GPU buffers (a page that loads one glTF file after another frees the
     /// last file's meshes). Drawing a freed id draws nothing; freeing twice is harmless.
     pub fn free_mesh(&mut self, id: MeshId) {
+        self.revision += 1;
         if let Some(slot) = self.meshes.get_mut(id.0) {
             if let Some(mesh) = slot.take() {
                 mesh.vertices.destroy();
@@ -449,6 +462,7 @@ impl Renderer {
         positions: &[Vec3],
         normals: &[Vec3],
     ) -> Result<(), String> {
+        self.revision += 1;
         let mesh = self
             .meshes
             .get(id.0)
@@ -493,6 +507,7 @@ impl Renderer {
         normals: &[Vec3],
         colors: &[Vec4],
     ) -> Result<(), String> {
+        self.revision += 1;
         let mesh = self
             .meshes
             .get_mut(id.0)
@@ -511,18 +526,38 @@ impl Renderer {
         self.update_mesh(gpu, id, positions, normals)
     }
 
-    /// Draws and clears `self.frame` into the canvas.
-    pub fn render(&mut self, gpu: &Gpu, camera: &OrbitCamera) -> Result<(), String> {
+    /// Draws and clears `self.frame` into the canvas; `fingerprint` is the frame's
+    /// [`Frame::fingerprint`] (the caller has it already).
+    ///
+    /// When the canvas already shows this frame, it is not drawn again: same fingerprint, same
+    /// camera, size, light and background, no mesh or texture changed since (`revision`), and
+    /// nothing from compute shaders (`gpu_points`, whose buffers change without the frame
+    /// knowing). A paused figure then costs its scene's frame and a hash, not a GPU frame: the
+    /// canvas keeps its last image (WebGPU and WebGL2 both present only what was drawn).
+    pub fn render(
+        &mut self,
+        gpu: &Gpu,
+        camera: &OrbitCamera,
+        fingerprint: u64,
+    ) -> Result<(), String> {
+        let key = self.canvas_key(gpu, camera, fingerprint);
+        if self.gpu_points.is_empty() && self.shown == Some(key) {
+            self.frame.clear();
+            return Ok(());
+        }
+        self.shown = None;
         let frame = match gpu.surface.get_current_texture() {
             wgpu::CurrentSurfaceTexture::Success(f)
             | wgpu::CurrentSurfaceTexture::Suboptimal(f) => f,
             wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
                 gpu.surface.configure(&gpu.device, &gpu.config);
                 self.frame.clear();
+                self.gpu_points.clear();
                 return Ok(());
             }
             _ => {
                 self.frame.clear();
+                self.gpu_points.clear();
                 return Ok(()); // skipped frame (timeout, occluded): draw the next one
             }
         };
@@ -530,7 +565,39 @@ impl Renderer {
         let commands = self.encode(gpu, camera, &view, (gpu.config.width, gpu.config.height));
         gpu.queue.submit([commands]);
         gpu.queue.present(frame);
+        self.shown = Some(key);
+        self.canvas_frames += 1;
         Ok(())
+    }
+
+    /// How many frames [`Renderer::render`] has drawn into the canvas (not the ones it found
+    /// already shown).
+    pub fn canvas_frames(&self) -> u64 {
+        self.canvas_frames
+    }
+
+    /// Forgets what the canvas shows, so that the next [`Renderer::render`] draws (after a resize,
+    /// which clears the canvas).
+    pub fn canvas_cleared(&mut self) {
+        self.shown = None;
+    }
+
+    /// Everything a frame drawn into the canvas depends on, hashed: the frame's fingerprint, the
+    /// camera's matrices, the canvas size, light, background and the mesh and texture changes.
+    fn canvas_key(&self, gpu: &Gpu, camera: &OrbitCamera, fingerprint: u64) -> u64 {
+        let (w, h) = (gpu.config.width, gpu.config.height);
+        let aspect = w.max(1) as f32 / h.max(1) as f32;
+        let matrices = [camera.view(), camera.projection(aspect)];
+        let words = matrices
+            .iter()
+            .flat_map(|m| m.to_cols_array())
+            .chain(self.light_dir.to_array())
+            .chain(self.clear_srgb.to_array())
+            .map(|x| x.to_bits() as u64)
+            .chain([fingerprint, self.revision, self.skin.revision, w as u64, h as u64]);
+        words.fold(0xcbf2_9ce4_8422_2325u64, |h, x| {
+            (h ^ x).wrapping_mul(0x0100_0000_01b3)
+        })
     }
 
     /// Draws and clears `self.frame` into an offscreen `width × height` texture and returns its

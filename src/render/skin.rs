@@ -66,6 +66,8 @@ pub struct SkinPass {
     scratch: Vec<u8>,
     /// Per draw of the frame: its slot in `uniforms`, or `None` when it was skipped.
     slots: Vec<Option<u32>>,
+    /// Counts the changes to the meshes (see [`super::Renderer::render`]'s unchanged-canvas test).
+    pub(super) revision: u64,
 }
 
 impl SkinPass {
@@ -150,6 +152,7 @@ impl SkinPass {
             meshes: Vec::new(),
             scratch: Vec::new(),
             slots: Vec::new(),
+            revision: 0,
         }
     }
 
@@ -193,6 +196,7 @@ impl SkinPass {
         colors: Option<&[Vec4]>,
         weights: &SkinWeights,
     ) -> Result<SkinMeshId, String> {
+        self.revision += 1;
         use wgpu::util::DeviceExt;
         let n = data.positions.len();
         if data.normals.len() != n || weights.len() != n || colors.is_some_and(|c| c.len() != n) {
@@ -252,6 +256,7 @@ impl SkinPass {
 
     /// Releases a skinned mesh's GPU buffers; drawing a freed id draws nothing.
     pub fn free(&mut self, id: SkinMeshId) {
+        self.revision += 1;
         if let Some(mesh) = self.meshes.get_mut(id.0).and_then(Option::take) {
             for buffer in [&mesh.rest, &mesh.colors, &mesh.influences, &mesh.indices] {
                 buffer.destroy();
@@ -266,6 +271,7 @@ impl SkinPass {
         id: SkinMeshId,
         colors: &[Vec4],
     ) -> Result<(), String> {
+        self.revision += 1;
         let mesh = self
             .meshes
             .get(id.0)
@@ -291,6 +297,7 @@ impl SkinPass {
         id: SkinMeshId,
         weights: &SkinWeights,
     ) -> Result<(), String> {
+        self.revision += 1;
         let mesh = self
             .meshes
             .get_mut(id.0)

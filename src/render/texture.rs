@@ -464,6 +464,7 @@ impl Renderer {
         height: u32,
         rgba: &[u8],
     ) -> Result<TextureId, String> {
+        self.revision += 1;
         validate_rgba(width, height, rgba)?;
         let t = self.textured.make_texture(
             gpu,
@@ -487,6 +488,7 @@ impl Renderer {
         height: u32,
         rgba: &[u8],
     ) -> Result<(), String> {
+        self.revision += 1;
         validate_rgba(width, height, rgba)?;
         let t = self.textured.texture(id)?;
         if t.encoded_srgb {
@@ -522,6 +524,7 @@ impl Renderer {
         width: u32,
         height: u32,
     ) -> Result<TextureId, String> {
+        self.revision += 1;
         validate_rgba(width, height, &vec![0; 4 * (width * height) as usize])?;
         let t = self.textured.make_texture(
             gpu,
@@ -543,6 +546,7 @@ impl Renderer {
         table: &[u8],
         image: &NoiseImage,
     ) -> Result<(), String> {
+        self.revision += 1;
         if table.len() != 256 {
             return Err(format!(
                 "a permutation has 256 entries, got {}",

@@ -74,6 +74,8 @@ impl Viewer {
         let dpr = super::in_range("devicePixelRatio", device_pixel_ratio, 0.1, 8.0)?;
         self.gpu
             .resize((w * dpr).round() as u32, (h * dpr).round() as u32);
+        // The page set the canvas's width and height, which clears it.
+        self.renderer.canvas_cleared();
         self.css_size = (w.max(1.0), h.max(1.0));
         Ok(())
     }
@@ -158,7 +160,7 @@ impl Viewer {
         }
         self.pending = false;
         self.renderer
-            .render(&self.gpu, &self.camera)
+            .render(&self.gpu, &self.camera, self.last_fingerprint)
             .map_err(|e| JsError::new(&e))
     }
 
@@ -170,7 +172,7 @@ impl Viewer {
             std::mem::swap(&mut self.renderer.frame, &mut self.hidden);
             self.pending = false;
             self.renderer
-                .render(&self.gpu, &self.camera)
+                .render(&self.gpu, &self.camera, self.last_fingerprint)
                 .map_err(|e| JsError::new(&e))?;
         }
         Ok(())
