@@ -250,3 +250,146 @@ fn the_flock_note_counts_neighbours_in_the_right_number() {
     }
     assert!(seen_one, "some field of view shows exactly one neighbour");
 }
+
+/// Where `world` lands on a `w × h` canvas seen by the page's camera `view` (setCamera's six
+/// arguments: the Viewer zeroes yaw and pitch, then orbits by them).
+fn on_canvas(view: [f32; 6], w: f32, h: f32, world: Vec3) -> glam::Vec2 {
+    let mut camera = inbetween::camera::OrbitCamera {
+        target: Vec3::new(view[0], view[1], view[2]),
+        distance: view[3],
+        yaw_rad: 0.0,
+        pitch_rad: 0.0,
+        ..Default::default()
+    };
+    camera.orbit(view[4], view[5]);
+    let view_proj = camera.projection(w / h) * camera.view();
+    inbetween::camera::project_to_canvas(view_proj, glam::Vec2::new(w, h), world).unwrap()
+}
+
+#[test]
+fn the_rules_figures_labels_never_overlap() {
+    // Labels are HTML over the canvas (www/style.css: 600 0.8rem, about 7.7 px a character and
+    // 15 px high from 9 px above the anchor, 4.5 px right of it, or ending 4.5 px left of it for
+    // a left label). At the page's camera and both canvas sizes (760 x 380 at 800 x 600, 650 x
+    // 420 at 1600 x 1000), over the sliders' range, the three labels stay apart. At the arrows'
+    // tips alone the short cohesion and alignment arrows put "alignment" on "cohesion" at the
+    // defaults.
+    let boxes = |frame: &Frame, view: [f32; 6], w: f32, h: f32| {
+        frame
+            .labels
+            .iter()
+            .map(|l| {
+                let s = on_canvas(view, w, h, l.anchor);
+                let width = 7.7 * l.text.chars().count() as f32;
+                let x0 = if l.left { s.x - 4.5 - width } else { s.x + 4.5 };
+                (x0, s.y - 9.0, x0 + width, s.y + 6.0)
+            })
+            .collect::<Vec<_>>()
+    };
+    let mut checked = 0;
+    for x in [-1.9f32, -1.15, 0.0, 0.8, 1.9] {
+        for z in [-1.9f32, -1.15, 0.0, 0.8, 1.9] {
+            for heading in (-4..=4).map(|k| 45.0 * k as f32) {
+                for radius in [0.6f32, 1.2, 2.4, 3.0] {
+                    for fov in [70.0f32, 270.0, 360.0] {
+                        let mut scene = RulesFigure::new();
+                        scene.set_position(x, z).unwrap();
+                        scene.set_heading_deg(heading).unwrap();
+                        scene.set_radius(radius).unwrap();
+                        scene.set_fov_deg(fov).unwrap();
+                        let mut frame = Frame::default();
+                        scene.draw(&mut frame);
+                        let view = scene.view();
+                        for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+                            let b = boxes(&frame, view, w, h);
+                            for i in 0..b.len() {
+                                for j in 0..i {
+                                    let (p, q) = (b[i], b[j]);
+                                    let apart =
+                                        p.2 <= q.0 || q.2 <= p.0 || p.3 <= q.1 || q.3 <= p.1;
+                                    assert!(
+                                        apart,
+                                        "x {x}, z {z}, heading {heading}, radius {radius}, fov {fov}, {w} x {h}: {:?} and {:?} overlap: {p:?} {q:?}",
+                                        frame.labels[i].text, frame.labels[j].text
+                                    );
+                                }
+                            }
+                            checked += 1;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(checked > 1000);
+    // At the defaults all three are there and on the canvas.
+    let scene = RulesFigure::new();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame);
+    assert_eq!(frame.labels.len(), 3);
+    for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+        for r in boxes(&frame, scene.view(), w, h) {
+            assert!(r.0 > 0.0 && r.2 < w && r.1 > 0.0 && r.3 < h, "{r:?}");
+        }
+    }
+}
+
+#[test]
+fn the_order_plot_follows_the_flock_step_by_step() {
+    // One sample per step since the flock started, [t, φ, mean speed / max speed], each the
+    // figure's own polarisation and speed at that step; a jump in time, or a new count, starts
+    // the plot again with the fresh flock. The flock has no plot of its motion otherwise.
+    let mut scene = FlockFigure::new();
+    let first = scene.plot_samples();
+    assert_eq!(first.len(), 3, "the start: one sample");
+    assert_eq!(first[0], 0.0);
+    // Random headings: φ is of the order of 1/√N; every boid starts at half the top speed.
+    assert!(first[1] < 0.2, "{first:?}");
+    assert!((first[2] - 0.5).abs() < 1e-4, "{first:?}");
+    for k in 1..=120 {
+        scene.advance_to(k as f32 / 60.0).unwrap();
+        let s = scene.plot_samples();
+        assert_eq!(s.len(), 3 * (k + 1));
+        let last = &s[s.len() - 3..];
+        assert!((last[0] - k as f32 / 60.0).abs() < 1e-5);
+        assert_eq!(last[1], scene.polarisation());
+        assert_eq!(last[2], scene.speed_ratio());
+        assert!((0.0..=1.0).contains(&last[1]) && (0.0..=1.0 + 1e-4).contains(&last[2]));
+    }
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame);
+    assert!(
+        note.contains(&format!("Polarisation φ = {:.2}", scene.polarisation())),
+        "{note}"
+    );
+    // A scrub restarts the plot at the new time; so does a new count.
+    scene.advance_to(7.0).unwrap();
+    let s = scene.plot_samples();
+    assert_eq!(s.len(), 3);
+    assert!((s[0] - 7.0).abs() < 1e-5);
+    scene.advance_to(7.0 + 1.0 / 60.0).unwrap();
+    scene.set_count(100.0).unwrap();
+    assert_eq!(scene.plot_samples().len(), 3);
+    // What the page's Try this says the plot shows, 4 s after the start: at the defaults the
+    // mean speed is below a tenth of the maximum and φ low (alignment matches each boid to its
+    // neighbours' mean velocity, and the mean of random headings is small); without alignment
+    // the boids keep more speed and φ stays low; a leader pulls φ past 0.8.
+    let after_4s = |alignment: f32, leader: bool| {
+        let mut f = FlockFigure::new();
+        f.set_rule("alignment", alignment, 1.5).unwrap();
+        f.set_leader(leader);
+        for k in 1..=240 {
+            f.advance_to(k as f32 / 60.0).unwrap();
+        }
+        (f.polarisation(), f.speed_ratio())
+    };
+    let (phi, speed) = after_4s(2.0, false);
+    assert!(speed < 0.1 && phi < 0.4, "defaults: φ {phi}, speed {speed}");
+    let (phi0, speed0) = after_4s(0.0, false);
+    assert!(
+        speed0 > 2.0 * speed && phi0 < 0.3,
+        "no alignment: φ {phi0}, speed {speed0}"
+    );
+    let (phi_led, _) = after_4s(2.0, true);
+    assert!(phi_led > 0.8, "leader: φ {phi_led}");
+}

@@ -1,6 +1,6 @@
 // Lesson 12: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/boids/, src/figures/boids.rs). The page only times the calls it makes.
-import { startLesson, markDrawn, Plot, GUI, Timeline, guarded, showNote, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Plot, GUI, Timeline, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
 import { BoidRulesScene, FlockScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -8,8 +8,8 @@ const lesson = await startLesson();
 // Figure 1: one boid's rules and its grid cell.
 const rulesViewer = await lesson.figure('#fig-rules');
 if (rulesViewer) {
-  rulesViewer.setCamera(0, 0, 0, 5.2, 0, 1.45);
   const scene = new BoidRulesScene();
+  rulesViewer.setCamera(...scene.view());
   const p = { x: 0, z: 0, heading: 0, radius: 1.2, fov: 270, cell: 1, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-rules .panel'), title: 'One boid' });
   gui.add(p, 'x', -1.9, 1.9, 0.05).name('position x (m)');
@@ -59,7 +59,8 @@ if (flockViewer) {
     const folder = gui.addFolder(name);
     folder.add(rule, 'weight', 0, 10, 0.1).name('weight');
     folder.add(rule, 'radius', 0.1, 3, 0.05).name('radius (m)');
-    if (name !== 'cohesion') folder.close();
+    // All three open at both page sizes: the Try this below sends the reader to alignment and
+    // separation, which started closed.
   }
   gui.add(p, 'fov', 0, 360, 5).name('field of view (°)');
   gui.add(p, 'maxSpeed', 0.2, 5, 0.1).name('max speed (m/s)');
@@ -135,11 +136,20 @@ if (flockViewer) {
   }
   startSweep();
 
+  // The flock's order over time, from Rust: polarisation and speed after every step since the
+  // flock started, with the playhead.
+  const orderPlot = new Plot(document.getElementById('flock-order-plot'), {
+    title: 'Order of the flock', xLabel: 'time (s)', yLabel: 'fraction (0 to 1)',
+    series: ['polarisation φ = |Σ v̂| / N', 'mean speed / max speed'],
+    colors: [cssVar('--purple'), cssVar('--orange')], yRange: [0, 1],
+  });
+
   const note = document.getElementById('flock-note');
   const timing = document.getElementById('flock-timing');
   let average = 0;
   let frame = 0;
   let frameMs = 0;
+  let plotTime = -1;
   const gpuNote = hasCompute ? '' : ' (Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.)';
   lesson.onFrame((dt) => {
     const time = timeline.advance(dt);
@@ -151,6 +161,12 @@ if (flockViewer) {
     if (!onGpu && steps > 0 && steps < 10) average = average === 0 ? ms / steps : 0.9 * average + 0.1 * (ms / steps);
     frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
     showNote(note, [rejected, scene.draw(flockViewer)].filter(Boolean).join(' '));
+    // Ten times a second, and at once after a jump (a scrub or the loop starts a new flock).
+    if (frame % 6 === 0 || Math.abs(time - plotTime) > 0.2) {
+      orderPlot.setData(columns(scene.plotSamples(), 3));
+      plotTime = time;
+    }
+    orderPlot.setCursor(time);
     if (frame++ % 10 === 0) {
       showNote(timing, onGpu
         ? `Stepping ${count} boids on the GPU: the steps are queued and run beside the page (the bench page times them); frame time ${frameMs.toFixed(1)} ms.`

@@ -58,7 +58,14 @@ pub struct FlockFigure {
     neighbours: Vec<usize>,
     seed: u64,
     steps_done: usize,
+    /// The order plot's samples since the flock (re)started, flat `[t (s), φ, speed ratio]`, one
+    /// per step; empty in GPU mode (the flock stays on the GPU).
+    history: Vec<f32>,
 }
+
+/// The most samples the order plot keeps (one per step: the figure's 20 s timeline is
+/// 1,200 steps; [`super::particles::MAX_SIM_TIME`] is 3,600).
+pub const MAX_PLOT_SAMPLES: usize = 3601;
 
 impl Default for FlockFigure {
     fn default() -> Self {
@@ -83,9 +90,74 @@ impl FlockFigure {
             neighbours: Vec::new(),
             seed: 1,
             steps_done: 0,
+            history: Vec::with_capacity(3 * MAX_PLOT_SAMPLES),
         };
         f.set_obstacle(true);
+        f.restart_plot();
         f
+    }
+
+    /// The flock's polarisation (Vicsek's order parameter), the leader and predator left out:
+    /// ```text
+    /// φ = |Σᵢ v̂ᵢ| / N,   v̂ᵢ = vᵢ / |vᵢ|
+    /// ```
+    /// 1 when every boid heads the same way; about `1/√N` for random headings (0.06 for 300
+    /// boids); in between for a flock that has split into groups heading different ways, or
+    /// that mills about.
+    pub fn polarisation(&self) -> f32 {
+        let (leader, predator) = self.flock.roles(&self.params);
+        let mut sum = Vec3::ZERO;
+        let mut n = 0usize;
+        for (i, v) in self.flock.velocities.iter().enumerate() {
+            if Some(i) != leader && Some(i) != predator {
+                sum += v.normalize_or_zero();
+                n += 1;
+            }
+        }
+        if n == 0 {
+            0.0
+        } else {
+            sum.length() / n as f32
+        }
+    }
+
+    /// The mean speed of the flock (the leader and predator left out) over the maximum speed,
+    /// in `[0, 1]`.
+    pub fn speed_ratio(&self) -> f32 {
+        let (leader, predator) = self.flock.roles(&self.params);
+        let (mut sum, mut n) = (0.0, 0usize);
+        for (i, v) in self.flock.velocities.iter().enumerate() {
+            if Some(i) != leader && Some(i) != predator {
+                sum += v.length();
+                n += 1;
+            }
+        }
+        if n == 0 {
+            0.0
+        } else {
+            sum / n as f32 / self.params.max_speed
+        }
+    }
+
+    /// The order plot's samples, flat `[t (s), φ, mean speed / max speed]`
+    /// ([`FlockFigure::polarisation`], [`FlockFigure::speed_ratio`]) after each step since the
+    /// flock last started: a scrub, the timeline's loop or a new count starts it again; a
+    /// changed weight shows from then on.
+    pub fn plot_samples(&self) -> Vec<f32> {
+        self.history.clone()
+    }
+
+    fn restart_plot(&mut self) {
+        self.history.clear();
+        self.record();
+    }
+
+    fn record(&mut self) {
+        if self.history.len() < 3 * MAX_PLOT_SAMPLES {
+            let t = self.steps_done as f32 * SIM_DT;
+            let sample = [t, self.polarisation(), self.speed_ratio()];
+            self.history.extend(sample);
+        }
     }
 
     pub fn len(&self) -> usize {
@@ -108,6 +180,7 @@ impl FlockFigure {
     pub fn set_count(&mut self, count: f32) -> Result<(), String> {
         let n = in_range("count", count, 2.0, PAGE_MAX_BOIDS as f32)? as usize;
         self.flock = Flock::new(n, &self.params, self.seed)?;
+        self.restart_plot();
         Ok(())
     }
 
@@ -198,12 +271,14 @@ impl FlockFigure {
             let seed = self.seed.wrapping_add(target as u64);
             self.flock = Flock::new(self.flock.len(), &self.params, seed)?;
             self.steps_done = target;
+            self.restart_plot();
         }
         let n = target - self.steps_done;
         for _ in 0..n {
             self.flock.step(&self.params, self.search, SIM_DT);
+            self.steps_done += 1;
+            self.record();
         }
-        self.steps_done = target;
         Ok(n)
     }
 
@@ -219,6 +294,7 @@ impl FlockFigure {
             self.steps_done = target;
             restart = true;
         }
+        self.history.clear(); // the GPU's flock never comes back: no samples
         let n = target - self.steps_done;
         self.steps_done = target;
         Ok((restart, n))
@@ -250,7 +326,7 @@ impl FlockFigure {
         format!(
             "{} boids stepped on the GPU by a compute shader, at t = {} s (the same rules; \
              neighbours by the naive O(N²) loop, one thread per boid){roles}; speed at most {} \
-             m/s.",
+             m/s. The order plot is empty: its samples need the flock on the CPU.",
             self.flock.len(),
             format_number(self.steps_done as f32 * SIM_DT),
             format_number(self.params.max_speed),
@@ -369,7 +445,8 @@ impl FlockFigure {
         format!(
             "{} boids, {} search; the orange boid sees {count} {} within {} m and steers \
              at {} m/s² (purple arrow, {STEER_ARROW_M_PER_MS2} m per m/s², drawn at most {STEER_ARROW_MAX_M} m long; the force is at \
-             most {}); speed at most {} m/s.",
+             most {}); speed at most {} m/s. Polarisation φ = {:.2} (1: all head the same way), \
+             mean speed {:.2} m/s.",
             self.flock.len(),
             if self.search == Search::Grid {
                 "grid"
@@ -381,6 +458,8 @@ impl FlockFigure {
             format_number(steer.length()),
             format_number(self.params.max_force),
             format_number(self.params.max_speed),
+            self.polarisation(),
+            self.speed_ratio() * self.params.max_speed,
         )
     }
 }
@@ -442,6 +521,72 @@ fn rules_note(yours: &[Vec3], reference: &[Vec3; 3]) -> String {
         "Your three_rules differs at this boid in {}: {details}.{matching}",
         list(&differ)
     )
+}
+
+/// Metres per CSS pixel on the rules figure's plane at its camera, rounded up (about 90 px a metre
+/// on the 760 × 380 canvas of an 800 × 600 page, 100 on the 650 × 420 one of a 1600 × 1000 page).
+const RULES_M_PER_PX: f32 = 1.0 / 84.0;
+
+/// A label's box on the rules figure's plane, `(x0, z0, x1, z1)` in metres: the page draws a
+/// label 0.35 em (4.5 px) to the right of its anchor (or ending that far to its left), 0.8 rem
+/// bold (about 7.7 px a character) and 15 px high, from 9 px above the anchor; −z is up the
+/// screen. Two pixels of padding all round.
+fn label_box(anchor: Vec3, text: &str, left: bool) -> (f32, f32, f32, f32) {
+    let px = RULES_M_PER_PX;
+    let w = 7.7 * text.chars().count() as f32 * px;
+    let (x0, x1) = if left {
+        (anchor.x - 4.5 * px - w, anchor.x - 4.5 * px)
+    } else {
+        (anchor.x + 4.5 * px, anchor.x + 4.5 * px + w)
+    };
+    (
+        x0 - 2.0 * px,
+        anchor.z - 11.0 * px,
+        x1 + 2.0 * px,
+        anchor.z + 8.5 * px,
+    )
+}
+
+fn boxes_overlap(a: (f32, f32, f32, f32), b: (f32, f32, f32, f32)) -> bool {
+    a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3
+}
+
+/// Where the rules figure's three labels go: each just past its arrow's tip, reading away from
+/// the boid (leftwards for an arrow that points left), the longest arrow's first; a label that
+/// would cover one already placed, or the boid, moves up or down the screen (along z) by as
+/// little as clears them. At the tips alone, short cohesion and alignment arrows put their
+/// labels on top of each other. Returns `(anchor, reads leftwards, text, colour)`.
+fn place_labels(
+    boid: Vec3,
+    tips: &[(Vec3, Vec3, &'static str, Vec3)],
+) -> Vec<(Vec3, bool, &'static str, Vec3)> {
+    let mut order: Vec<usize> = (0..tips.len()).collect();
+    order.sort_by(|&a, &b| tips[b].1.length().total_cmp(&tips[a].1.length()));
+    let r = 12.0 * RULES_M_PER_PX; // the boid's dot and a margin
+    let mut placed: Vec<(f32, f32, f32, f32)> =
+        vec![(boid.x - r, boid.z - r, boid.x + r, boid.z + r)];
+    let mut out = Vec::with_capacity(tips.len());
+    for i in order {
+        let (tip, v, text, color) = tips[i];
+        let dir = v.normalize_or_zero();
+        let left = dir.x < -0.2;
+        let base = tip + dir * (6.0 * RULES_M_PER_PX);
+        let step = 20.0 * RULES_M_PER_PX;
+        let mut anchor = base;
+        for k in 0..=12u32 {
+            // 0, +1, −1, +2, −2 … steps down and up the screen.
+            let dz = if k % 2 == 1 { 1.0 } else { -1.0 } * k.div_ceil(2) as f32 * step;
+            let a = base + Vec3::new(0.0, 0.0, dz);
+            let b = label_box(a, text, left);
+            if !placed.iter().any(|&p| boxes_overlap(p, b)) {
+                anchor = a;
+                break;
+            }
+        }
+        placed.push(label_box(anchor, text, left));
+        out.push((anchor, left, text, color));
+    }
+    out
 }
 
 /// The 12 edges of the box `[lo, hi]`.
@@ -554,6 +699,13 @@ impl RulesFigure {
     pub fn set_cell_size(&mut self, size: f32) -> Result<(), String> {
         self.cell_size = in_range("cell size", size, 0.25, 2.0)?;
         Ok(())
+    }
+
+    /// The camera the page starts with, as `Viewer::setCamera`'s arguments (target x, y, z,
+    /// distance in metres, yaw and pitch in radians): from straight above, +x to the right and
+    /// −z up the screen.
+    pub fn view(&self) -> [f32; 6] {
+        [0.0, 0.0, 0.0, 5.2, 0.0, 1.45]
     }
 
     fn dims(&self) -> [u32; 3] {
@@ -676,15 +828,24 @@ impl RulesFigure {
             0.1,
         );
         let [co, al, se] = self.rules();
-        for (v, color, name) in [
+        let arrows = [
             (co, palette::GREEN, "cohesion"),
             (al, palette::PINK, "alignment"),
             (se, palette::RED, "separation"),
-        ] {
+        ];
+        let mut tips = Vec::with_capacity(3);
+        for &(v, color, name) in &arrows {
             let tip = self.boid + v.clamp_length_max(2.0) + Vec3::Y * 0.01;
             frame.arrow(self.boid + Vec3::Y * 0.01, tip, color, 0.12);
             if v.length() > 1e-4 {
-                frame.label(tip, name, color);
+                tips.push((tip, v, name, color));
+            }
+        }
+        for (anchor, left, name, color) in place_labels(self.boid, &tips) {
+            if left {
+                frame.label_left(anchor, name, color);
+            } else {
+                frame.label(anchor, name, color);
             }
         }
         let mut note = format!(

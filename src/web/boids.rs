@@ -137,6 +137,12 @@ impl FlockScene {
         viewer.present()?;
         Ok(note)
     }
+    /// `[t, φ, …]`: the flock's polarisation after every step since it last started (empty in
+    /// GPU mode).
+    #[wasm_bindgen(js_name = plotSamples)]
+    pub fn plot_samples(&self) -> Vec<f32> {
+        self.scene.plot_samples()
+    }
     /// A separate flock of `n ∈ [2, 20000]` boids for the step-time plot.
     #[wasm_bindgen(js_name = prepareTiming)]
     pub fn prepare_timing(&mut self, n: f32) -> Result<(), JsError> {
@@ -168,6 +174,10 @@ impl BoidRulesScene {
         let mut scene = RulesFigure::new();
         scene.set_runner(super::sandbox::run);
         BoidRulesScene { scene }
+    }
+    /// The starting camera, as `Viewer.setCamera`'s six arguments.
+    pub fn view(&self) -> Vec<f32> {
+        self.scene.view().to_vec()
     }
     #[wasm_bindgen(js_name = setPosition)]
     pub fn set_position(&mut self, x: f32, z: f32) -> Result<(), JsError> {
