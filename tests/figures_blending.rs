@@ -347,3 +347,118 @@ fn each_clip_alone_leaves_its_planted_feet_in_place() {
         }
     }
 }
+
+#[test]
+fn the_snap_back_at_a_loop_is_not_counted_as_sliding() {
+    // With root motion left in the pose the character jumps back a cycle's travel at every loop.
+    // The note's slide counted that jump as the planted foot sliding (about 77 cm at the default
+    // speed, synchronised); it is measured where the travel has taken the feet now, so it is
+    // the same with root motion on or off, and the note gives the jump on its own.
+    let mut l = LocomotionFigure::new();
+    let mut frame = Frame::default();
+    for synchronised in [true, false] {
+        l.set_synchronised(synchronised);
+        // Every 1.5 s window holds at least one loop of each clip.
+        for t in [1.6, 2.0, 3.3, 5.05, 6.1, 7.9] {
+            l.set_root_motion(true);
+            l.draw(&mut frame, t).unwrap();
+            let on = l.slide_m();
+            l.set_root_motion(false);
+            let note = l.draw(&mut frame, t).unwrap();
+            assert!(
+                (l.slide_m() - on).abs() < 1e-3,
+                "synchronised {synchronised}, {t} s: {} m with root motion off, {on} m on",
+                l.slide_m()
+            );
+            assert!(note.contains("(a jump, not counted as sliding)"), "{note}");
+        }
+    }
+    l.set_synchronised(true);
+    let note = l.draw(&mut frame, 2.0).unwrap();
+    let snap = l.snap_back_m()[0];
+    assert!(snap > 0.5 && snap < 1.0, "{snap} m");
+    assert!(
+        note.contains(&format!("snaps back {:.0} cm (a jump", snap * 100.0)),
+        "{note}"
+    );
+    l.set_synchronised(false);
+    let note = l.draw(&mut frame, 2.0).unwrap();
+    let [walk, run] = l.snap_back_m();
+    // Each clip's share of the blended cycle's travel, at its own loop.
+    assert!(walk > 0.1 && run > 0.1 && (walk + run - snap).abs() < 1e-5);
+    assert!(
+        note.contains(&format!(
+            "snaps back {:.0} cm at each loop of the walk and {:.0} cm at each loop of the run",
+            walk * 100.0,
+            run * 100.0
+        )),
+        "{note}"
+    );
+}
+
+#[test]
+fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
+    let mut l = LocomotionFigure::new();
+    let mut frame = Frame::default();
+    l.set_synchronised(false);
+    let rows: Vec<[f32; 5]> = l
+        .plot_samples()
+        .chunks(5)
+        .map(|r| r.try_into().unwrap())
+        .collect();
+    // Every 25 ms over the 8 s timeline; the figure's own setting is left alone.
+    assert_eq!(rows.len(), 321);
+    assert_eq!(rows[0][0], 0.0);
+    assert!((rows[320][0] - 8.0).abs() < 1e-4);
+    assert!(l
+        .draw(&mut frame, 2.0)
+        .unwrap()
+        .contains("not synchronised"));
+    for (k, row) in rows.iter().enumerate() {
+        let [t, gap_on, gap_off, slide_on, slide_off] = *row;
+        assert_eq!(gap_on, 0.0, "synchronised clips are always in step");
+        assert!((0.0..=0.5).contains(&gap_off), "{gap_off} at {t} s");
+        assert!(slide_on < 1.0, "synchronised: {slide_on} cm at {t} s");
+        // The playhead's value is the note's, in both settings.
+        if k % 16 == 3 {
+            for (synchronised, want) in [(true, slide_on), (false, slide_off)] {
+                l.set_synchronised(synchronised);
+                l.draw(&mut frame, t).unwrap();
+                assert!(
+                    (l.slide_m() * 100.0 - want).abs() < 0.05,
+                    "at {t} s synchronised {synchronised}: note {} cm, plot {want} cm",
+                    l.slide_m() * 100.0
+                );
+                assert_eq!(l.phase_gap(t), if synchronised { 0.0 } else { gap_off });
+            }
+        }
+    }
+    // Not synchronised, the clips drift in and out of step (a 1 s and a 0.7 s cycle meet
+    // every 2.33 s) and the slide rises and falls with them.
+    let off: Vec<f32> = rows.iter().map(|r| r[4]).collect();
+    let (lo, hi) = off[60..]
+        .iter()
+        .fold((f32::INFINITY, 0.0f32), |(a, b), &x| (a.min(x), b.max(x)));
+    assert!(lo < 40.0 && hi > 90.0, "{lo} to {hi} cm");
+    let gaps: Vec<f32> = rows.iter().map(|r| r[2]).collect();
+    assert!(gaps.iter().any(|&g| g < 0.02) && gaps.iter().any(|&g| g > 0.48));
+    // The Try this: the slide peaks half a second to a second after the gap reaches half a
+    // cycle (the note sums the last 1.5 s). Gap peaks at 1.17, 3.5 and 5.83 s.
+    let mut peaks = 0;
+    for k in 1..rows.len() - 1 {
+        if gaps[k] > 0.45 && gaps[k] >= gaps[k - 1] && gaps[k] >= gaps[k + 1] {
+            peaks += 1;
+            let (at, best) = (k + 1..(k + 49).min(rows.len()))
+                .map(|i| (i, off[i]))
+                .fold((k, off[k]), |a, b| if b.1 > a.1 { b } else { a });
+            let lag = rows[at][0] - rows[k][0];
+            assert!(
+                (0.4..=1.2).contains(&lag) && best > 1.25 * off[k],
+                "gap peak at {} s: slide {} cm there, {best} cm {lag} s later",
+                rows[k][0],
+                off[k]
+            );
+        }
+    }
+    assert_eq!(peaks, 3);
+}

@@ -1,6 +1,6 @@
 // Lesson 08: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/skeleton/, src/figures/blending.rs).
-import { startLesson, markDrawn, Timeline, GUI, showNote } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote } from '../../www/lesson.js';
 import { BlendScene, LocomotionScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -43,15 +43,53 @@ if (locoViewer) {
   const round = (v) => Math.round(v * 100) / 100;
   const p = { speed: round((lo + hi) / 2), synchronised: true, rootMotion: true };
   scene.setSpeed(p.speed);
-  // Eight seconds, then the walk starts again from the beginning of the loop.
-  const timeline = new Timeline(document.getElementById('loco-timeline'), { duration: 8, playing: true });
+  // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.
+  const timeline = new Timeline(document.getElementById('loco-timeline'), { duration: scene.loopSec(), playing: true });
+  // Both settings at once, whatever the checkbox says: the synchronised line is drawn wide
+  // underneath and the other narrow on top, so where they agree both stay visible. Both plots
+  // as tall as the longer y label needs (the shell sizes each plot by its own label).
+  const series = ['synchronised', 'same clock time'];
+  const colors = ['#1f6fd6', '#d62728'];
+  const gapPlot = new Plot(document.getElementById('loco-phase-plot'), {
+    title: 'How far out of step', xLabel: 'time (s)', yLabel: 'phase gap (cycles)',
+    series, colors, minSpan: 0.1, height: 240,
+  });
+  const slidePlot = new Plot(document.getElementById('loco-slide-plot'), {
+    title: 'Slide in the last 1.5 s', xLabel: 'time (s)', yLabel: 'slide (cm)',
+    series, colors, minSpan: 1, height: 240,
+  });
+  for (const plot of [gapPlot, slidePlot]) widenUnderneath(plot);
+  const replot = () => {
+    const [t, gapOn, gapOff, slideOn, slideOff] = columns(scene.plotSamples(), 5);
+    gapPlot.setData([t, gapOn, gapOff]);
+    slidePlot.setData([t, slideOn, slideOff]);
+  };
   const gui = new GUI({ container: document.querySelector('#fig-locomotion .panel'), title: 'Locomotion' });
-  gui.add(p, 'speed', Math.ceil(lo * 100) / 100, Math.floor(hi * 100) / 100, 0.01).name('speed (m/s)').onChange(() => scene.setSpeed(p.speed));
+  gui.add(p, 'speed', Math.ceil(lo * 100) / 100, Math.floor(hi * 100) / 100, 0.01).name('speed (m/s)').onChange(() => { scene.setSpeed(p.speed); replot(); });
   gui.add(p, 'synchronised').name('synchronised').onChange((on) => scene.setSynchronised(on));
   gui.add(p, 'rootMotion').name('root motion').onChange((on) => scene.setRootMotion(on));
+  replot();
   const note = document.getElementById('loco-note');
   lesson.onFrame((dt) => {
-    showNote(note, scene.draw(locoViewer, timeline.advance(dt)));
+    const t = timeline.advance(dt);
+    showNote(note, scene.draw(locoViewer, t));
+    gapPlot.setCursor(t);
+    slidePlot.setCursor(t);
     markDrawn('#fig-locomotion');
   });
+}
+
+/**
+ * Draws a plot's first series 4 px wide and its second 1.5 px wide (on top), legend markers
+ * too, so two lines that coincide both show. (The shell's Plot draws every series 2 px wide.)
+ */
+function widenUnderneath(plot) {
+  const widths = [4, 1.5];
+  const u = plot.plot;
+  widths.forEach((w, i) => { u.series[i + 1].width = w; });
+  u.root.querySelectorAll('.u-legend .u-series').forEach((row, i) => {
+    const marker = row.querySelector('.u-marker');
+    if (i > 0 && marker && widths[i - 1]) marker.style.borderWidth = `${widths[i - 1]}px`;
+  });
+  u.redraw();
 }

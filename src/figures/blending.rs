@@ -417,6 +417,8 @@ pub struct LocomotionFigure {
     scratch: Pose,
     model: Vec<Affine3A>,
     footprints: Vec<Vec3>,
+    /// The ankles' joints (left, right).
+    feet: [usize; 2],
     /// How far the planted feet slid over the footprint window, metres, at the last draw.
     slide_m: f32,
     /// Where the character's origin was at the last draw (before wrapping onto the track).
@@ -436,6 +438,8 @@ const TRACK_LENGTH: f32 = 4.0;
 /// How far back in time the footprints go, seconds, and how many samples.
 const FOOTPRINT_SEC: f32 = 1.5;
 const FOOTPRINT_SAMPLES: usize = 60;
+/// The locomotion figure's timeline, seconds: then the walk starts again from the start.
+pub const LOCOMOTION_LOOP_SEC: f32 = 8.0;
 
 impl LocomotionFigure {
     /// Halfway between walking and running speed, synchronised, root motion on.
@@ -460,6 +464,7 @@ impl LocomotionFigure {
             scratch: skeleton.rest_pose(),
             model: vec![Affine3A::IDENTITY; n],
             footprints: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
+            feet: ["foot.L", "foot.R"].map(|name| skeleton.find(name).expect("a foot")),
             slide_m: 0.0,
             origin: Vec3::ZERO,
             skeleton,
@@ -509,14 +514,34 @@ impl LocomotionFigure {
         &self.footprints
     }
 
+    /// How far the drawn character jumps back at a loop with root motion left in the pose,
+    /// metres: synchronised, `[blended cycle's travel, 0]` (both clips loop together); not
+    /// synchronised, `[(1 − w) T_walk, w T_run]`, each at its own clip's loop.
+    pub fn snap_back_m(&self) -> [f32; 2] {
+        let w = self.weight();
+        let [ta, tb] = self.motion.map(|m| m.cycle_travel.length());
+        if self.synchronised {
+            [
+                synchronised_cycle(&self.motion[0], &self.motion[1], w).1,
+                0.0,
+            ]
+        } else {
+            [(1.0 - w) * ta, w * tb]
+        }
+    }
+
     /// The run's weight for the current speed.
     pub fn weight(&self) -> f32 {
         weight_for_speed(&self.motion[0], &self.motion[1], self.speed)
     }
 
-    /// Poses at `time_sec` into `self.pose` and returns where the character's origin is (model
-    /// space of the scene).
-    fn pose_at(&mut self, time_sec: f32) -> Vec3 {
+    /// Poses at `time_sec` into `self.pose` and returns where the character's origin is drawn
+    /// (model space of the scene) and `ground`: what to add to a model-space position of the
+    /// pose to put it where the travel has taken it. With root motion that is the origin; with
+    /// root motion left in the pose it is the cycles already played (the pose holds the travel
+    /// within the current one), so a planted foot stays put in it across the snap-back at a
+    /// loop, which is a jump of the drawing, not a slide of the foot.
+    fn pose_at(&mut self, time_sec: f32) -> (Vec3, Vec3) {
         let w = self.weight();
         let (cycle, _, _) = synchronised_cycle(&self.motion[0], &self.motion[1], w);
         let mut cursors = [ClipCursor::new(); 2];
@@ -561,49 +586,127 @@ impl LocomotionFigure {
             (da.lerp(db, w), pa.lerp(pb, w))
         };
         if self.root_motion {
-            total
+            (total, total)
         } else {
             // Root motion left in the pose: the root travels within a cycle, then snaps back.
             self.pose.local[0].translation += within;
-            Vec3::ZERO
+            (Vec3::ZERO, total - within)
         }
     }
 
-    /// Poses at `time_sec`, draws the character and its footprints. Returns the note.
-    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
-        let t = finite("time", time_sec)?;
-        // Footprints: planted ankles over the last FOOTPRINT_SEC seconds, relative to now.
-        self.footprints.clear();
-        let feet = [
-            self.skeleton.find("foot.L").expect("a foot"),
-            self.skeleton.find("foot.R").expect("a foot"),
-        ];
-        let now = self.pose_at(t);
-        let mut slide = 0.0f32;
+    /// Poses at `time_sec` and returns each foot's ankle (left, right) where the travel has
+    /// taken it (see [`LocomotionFigure::pose_at`]'s `ground`) and where it is drawn, relative to
+    /// the character's drawn origin at `now`.
+    fn feet_at(&mut self, time_sec: f32, now: Vec3) -> [(Vec3, Vec3); 2] {
+        let (origin, ground) = self.pose_at(time_sec);
+        local_to_model(
+            self.skeleton.parents(),
+            &self.pose.local,
+            self.skeleton.scale_mode(),
+            &mut self.model,
+        );
+        self.feet.map(|joint| {
+            let p = Vec3::from(self.model[joint].translation);
+            (p + ground, p + origin - now)
+        })
+    }
+
+    /// How far out of step the two clips are at `time_sec`, in cycles: the distance from the
+    /// walk's phase to the run's, around the cycle, in [0, 0.5] (0: in step; 0.5: one clip's
+    /// left foot where the other's right foot is). Always 0 synchronised.
+    pub fn phase_gap(&self, time_sec: f32) -> f32 {
+        if self.synchronised {
+            return 0.0;
+        }
+        let [walk, run] = self.motion.map(|m| time_sec / m.duration_sec);
+        let gap = (run - walk).rem_euclid(1.0);
+        gap.min(1.0 - gap)
+    }
+
+    /// The note's slide at every footprint sample time over the timeline: entry `k` is the
+    /// slide (metres) over the 1.5 s before `k` · 25 ms, measured as
+    /// [`LocomotionFigure::draw`] does (from the same samples, each computed once).
+    fn slide_series(&mut self) -> Vec<f32> {
+        let dt = FOOTPRINT_SEC / FOOTPRINT_SAMPLES as f32;
+        let steps = (LOCOMOTION_LOOP_SEC / dt).round() as usize;
+        // step[i]: how far the planted feet moved from sample i − 1 to sample i, where sample i
+        // is at (i − FOOTPRINT_SAMPLES) · dt.
+        let mut step = vec![0.0f32; steps + FOOTPRINT_SAMPLES + 1];
         let mut last: [Option<Vec3>; 2] = [None, None];
-        for k in 0..=FOOTPRINT_SAMPLES {
-            let s = t - FOOTPRINT_SEC * (1.0 - k as f32 / FOOTPRINT_SAMPLES as f32);
-            let origin = self.pose_at(s);
-            local_to_model(
-                self.skeleton.parents(),
-                &self.pose.local,
-                self.skeleton.scale_mode(),
-                &mut self.model,
-            );
-            for (f, &joint) in feet.iter().enumerate() {
-                let p = Vec3::from(self.model[joint].translation) + origin - now;
-                if p.y < CONTACT_HEIGHT + 0.005 {
-                    self.footprints.push(p);
+        for (i, moved) in step.iter_mut().enumerate() {
+            let t = (i as f32 - FOOTPRINT_SAMPLES as f32) * dt;
+            for (f, (ground, _)) in self.feet_at(t, Vec3::ZERO).into_iter().enumerate() {
+                if ground.y < CONTACT_HEIGHT + 0.005 {
                     if let Some(q) = last[f] {
-                        slide += Vec3::new(p.x - q.x, 0.0, p.z - q.z).length();
+                        *moved += Vec3::new(ground.x - q.x, 0.0, ground.z - q.z).length();
                     }
-                    last[f] = Some(p);
+                    last[f] = Some(ground);
                 } else {
                     last[f] = None;
                 }
             }
         }
-        let origin = self.pose_at(t);
+        (0..=steps)
+            .map(|k| step[k + 1..=k + FOOTPRINT_SAMPLES].iter().sum())
+            .collect()
+    }
+
+    /// The figure's plots over the timeline's [`LOCOMOTION_LOOP_SEC`], at the current speed,
+    /// synchronised and not (the figure's own setting is left as it was): rows of
+    /// ```text
+    /// [time (s), phase gap synchronised (cycles), not synchronised (cycles),
+    ///            slide synchronised (cm),         not synchronised (cm)]
+    /// ```
+    /// one per footprint sample (every 25 ms). The phase gap is [`LocomotionFigure::phase_gap`],
+    /// the slide the note's. Root motion does not change either: the slide is measured where the
+    /// travel has taken the feet.
+    pub fn plot_samples(&mut self) -> Vec<f32> {
+        let synchronised = self.synchronised;
+        let dt = FOOTPRINT_SEC / FOOTPRINT_SAMPLES as f32;
+        let mut columns = Vec::with_capacity(2);
+        for on in [true, false] {
+            self.synchronised = on;
+            columns.push(self.slide_series());
+        }
+        let mut out = Vec::with_capacity(5 * columns[0].len());
+        for k in 0..columns[0].len() {
+            let t = k as f32 * dt;
+            out.push(t);
+            for on in [true, false] {
+                self.synchronised = on;
+                out.push(self.phase_gap(t));
+            }
+            out.extend(columns.iter().map(|c| c[k] * 100.0));
+        }
+        self.synchronised = synchronised;
+        out
+    }
+
+    /// Poses at `time_sec`, draws the character and its footprints. Returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let t = finite("time", time_sec)?;
+        // Footprints: planted ankles over the last FOOTPRINT_SEC seconds, drawn relative to now.
+        // The slide is measured where the travel has taken each foot, so the snap-back at a loop
+        // (root motion left in the pose) is not counted as sliding.
+        self.footprints.clear();
+        let (now, _) = self.pose_at(t);
+        let mut slide = 0.0f32;
+        let mut last: [Option<Vec3>; 2] = [None, None];
+        for k in 0..=FOOTPRINT_SAMPLES {
+            let s = t - FOOTPRINT_SEC * (1.0 - k as f32 / FOOTPRINT_SAMPLES as f32);
+            for (f, (ground, drawn)) in self.feet_at(s, now).into_iter().enumerate() {
+                if ground.y < CONTACT_HEIGHT + 0.005 {
+                    self.footprints.push(drawn);
+                    if let Some(q) = last[f] {
+                        slide += Vec3::new(ground.x - q.x, 0.0, ground.z - q.z).length();
+                    }
+                    last[f] = Some(ground);
+                } else {
+                    last[f] = None;
+                }
+            }
+        }
+        let (origin, _) = self.pose_at(t);
         self.slide_m = slide;
         self.origin = origin;
         local_to_model(
@@ -650,7 +753,19 @@ impl LocomotionFigure {
             slide * 100.0
         );
         if !self.root_motion {
-            note += " Root motion left in the pose: the character steps forwards within each cycle and snaps back at every loop.";
+            let snap = if self.synchronised {
+                format!("{:.0} cm", self.snap_back_m()[0] * 100.0)
+            } else {
+                let [walk, run] = self.snap_back_m();
+                format!(
+                    "{:.0} cm at each loop of the walk and {:.0} cm at each loop of the run",
+                    walk * 100.0,
+                    run * 100.0
+                )
+            };
+            note += &format!(
+                " Root motion left in the pose: the character steps forwards within each cycle and snaps back {snap} (a jump, not counted as sliding)."
+            );
         }
         Ok(note)
     }

@@ -2,7 +2,7 @@
 //! holds the figures' logic and is tested natively.
 
 use super::{js, Viewer};
-use crate::figures::blending::{BlendFigure, LocomotionFigure};
+use crate::figures::blending::{BlendFigure, LocomotionFigure, LOCOMOTION_LOOP_SEC};
 use wasm_bindgen::prelude::*;
 
 /// Crossfade, mask and additive layer on the simple human.
@@ -114,6 +114,19 @@ impl LocomotionScene {
     #[wasm_bindgen(js_name = setRootMotion)]
     pub fn set_root_motion(&mut self, on: bool) {
         self.scene.set_root_motion(on);
+    }
+
+    /// The timeline's length, seconds.
+    #[wasm_bindgen(js_name = loopSec)]
+    pub fn loop_sec(&self) -> f32 {
+        LOCOMOTION_LOOP_SEC
+    }
+
+    /// `[time (s), phase gap synchronised, not (cycles), slide synchronised, not (cm), …]`
+    /// every 25 ms over the timeline, at the current speed.
+    #[wasm_bindgen(js_name = plotSamples)]
+    pub fn plot_samples(&mut self) -> Vec<f32> {
+        self.scene.plot_samples()
     }
 
     /// Poses at `time_sec` and draws. Returns the note.
