@@ -314,6 +314,12 @@ fn the_rules_figures_labels_never_overlap() {
                                     );
                                 }
                             }
+                            for r in &b {
+                                assert!(
+                                    r.0 > 0.0 && r.2 < w && r.1 > 0.0 && r.3 < h,
+                                    "x {x}, z {z}, heading {heading}, radius {radius}, fov {fov}, {w} x {h}: a label leaves the canvas: {r:?}"
+                                );
+                            }
                             checked += 1;
                         }
                     }

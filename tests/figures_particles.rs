@@ -104,11 +104,11 @@ fn a_fast_fountain_keeps_flowing_beside_the_explosions() {
     let mut frame = Frame::default();
     let note = scene.draw(&mut frame, eye, 8.0).unwrap();
     assert!(
-        note.contains("1200 are the fountain's and 800 the explosions'"),
+        note.contains("Of the 2,000 slots here (the core allows 100,000), 1,200 are the fountain's and 800 the explosions'"),
         "{note}"
     );
     assert!(
-        note.contains("living 10.00 s would need about 10000 slots"),
+        note.contains("A stream of 1,000 particles/s living 10.00 s would need about 10,000 slots"),
         "{note}"
     );
     assert!(

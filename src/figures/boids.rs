@@ -570,13 +570,24 @@ fn place_labels(
         let (tip, v, text, color) = tips[i];
         let dir = v.normalize_or_zero();
         let left = dir.x < -0.2;
-        let base = tip + dir * (6.0 * RULES_M_PER_PX);
+        // Kept on the canvas: an arrow from a boid near the border can run past it (the canvas
+        // shows about z ∈ [−2.1, 2.1] m and x ∈ [−3.2, 3.2] m at both page sizes).
+        let mut base = tip + dir * (6.0 * RULES_M_PER_PX);
+        let w = 7.7 * text.chars().count() as f32 * RULES_M_PER_PX;
+        let (z_lo, z_hi) = (-1.9, 1.8);
+        base.z = base.z.clamp(z_lo, z_hi);
+        base.x = if left {
+            base.x.max(-3.1 + w)
+        } else {
+            base.x.min(3.1 - w)
+        };
         let step = 20.0 * RULES_M_PER_PX;
         let mut anchor = base;
         for k in 0..=12u32 {
             // 0, +1, −1, +2, −2 … steps down and up the screen.
             let dz = if k % 2 == 1 { 1.0 } else { -1.0 } * k.div_ceil(2) as f32 * step;
-            let a = base + Vec3::new(0.0, 0.0, dz);
+            let mut a = base + Vec3::new(0.0, 0.0, dz);
+            a.z = a.z.clamp(z_lo, z_hi);
             let b = label_box(a, text, left);
             if !placed.iter().any(|&p| boxes_overlap(p, b)) {
                 anchor = a;

@@ -54,6 +54,19 @@ pub const MAX_BURST: usize = EXPLOSION_SLOTS;
 // ---------------------------------------------------------------------------------------------
 // Emitters and sprites.
 
+/// `n` with a comma every three digits, as the page's text writes numbers (100,000).
+fn with_commas(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::with_capacity(digits.len() + digits.len() / 3);
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
 /// What the emitter figure's dropdown offers.
 pub const EMITTER_MODES: [&str; 3] = ["fountain", "explosion", "both"];
 
@@ -493,26 +506,29 @@ impl EmitterFigure {
     /// and an explosion that got fewer particles than it asked for.
     pub fn budget_note(&self) -> String {
         let (fountain, explosions) = self.slots();
+        let (all, core) = (
+            with_commas(PAGE_MAX_PARTICLES),
+            with_commas(crate::particles::MAX_PARTICLES),
+        );
         let mut note = if fountain == 0 {
-            format!(
-                "The explosions have all {PAGE_MAX_PARTICLES} slots here (the core allows {}).",
-                crate::particles::MAX_PARTICLES
-            )
+            format!("The explosions have all {all} slots here (the core allows {core}).")
         } else {
             format!(
-                "Of the {PAGE_MAX_PARTICLES} slots here (the core allows {}), {fountain} are the \
-                 fountain's and {explosions} the explosions'.",
-                crate::particles::MAX_PARTICLES
+                "Of the {all} slots here (the core allows {core}), {} are the fountain's and {} \
+                 the explosions'.",
+                with_commas(fountain),
+                with_commas(explosions),
             )
         };
         let (l, asked) = (self.lifetime_sec(), self.lifetime_slider_sec);
         if l < asked {
+            let rate = self.emitters[0].rate_per_sec;
             note.push_str(&format!(
-                " A stream of {:.0} particles/s living {asked:.2} s would need about {:.0} \
-                 slots (rate × lifetime), so its particles live {l:.2} s: the fountain keeps \
-                 flowing, its arcs end sooner.",
-                self.emitters[0].rate_per_sec,
-                self.emitters[0].rate_per_sec * asked,
+                " A stream of {} particles/s living {asked:.2} s would need about {} slots \
+                 (rate × lifetime), so its particles live {l:.2} s: the fountain keeps flowing, \
+                 its arcs end sooner.",
+                with_commas(rate.round() as usize),
+                with_commas((rate * asked).round() as usize),
             ));
         }
         if let Some((got, asked)) = self.last_burst {
