@@ -4,7 +4,7 @@
 use glam::Vec3;
 use inbetween::draw::Frame;
 use inbetween::exercises::run::{direct, Failure};
-use inbetween::figures::blending::{BlendFigure, LocomotionFigure};
+use inbetween::figures::blending::{BlendFigure, LocomotionFigure, LOCOMOTION_PLOT_RANGES};
 use inbetween::skeleton::{human, Clip, ClipCursor};
 
 #[test]
@@ -461,4 +461,33 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
         }
     }
     assert_eq!(peaks, 3);
+}
+
+#[test]
+fn the_plots_fixed_ranges_hold_every_speed() {
+    // The plots' y ranges are fixed (so the Try this's "both slide lines lie flat" at the walk's
+    // speed is what the reader sees; autoscaled, a 2 cm slide filled the plot). They must hold
+    // the samples at every speed, and not be so large that the largest slide looks small.
+    let [gap_lo, gap_hi, slide_lo, slide_hi] = LOCOMOTION_PLOT_RANGES;
+    let mut l = LocomotionFigure::new();
+    let (lo, hi) = l.speed_range();
+    let mut largest = 0.0f32;
+    for k in 0..=20 {
+        l.set_speed(lo + (hi - lo) * k as f32 / 20.0).unwrap();
+        for row in l.plot_samples().chunks(5) {
+            assert!(row[1..3].iter().all(|g| (gap_lo..=gap_hi).contains(g)));
+            assert!(row[3..5].iter().all(|x| (slide_lo..=slide_hi).contains(x)));
+            largest = largest.max(row[4]);
+        }
+    }
+    assert!(largest > 0.85 * slide_hi, "largest slide {largest} cm");
+    assert!(gap_lo < 0.0 && slide_lo < 0.0 && gap_hi > 0.5);
+    // At the slider's left end (0.58 m/s, run weight 0.01) both lines lie low on that scale.
+    l.set_speed(0.58).unwrap();
+    let flat = l
+        .plot_samples()
+        .chunks(5)
+        .map(|r| r[3].max(r[4]))
+        .fold(0.0f32, f32::max);
+    assert!(flat < 0.03 * slide_hi, "{flat} cm at 0.58 m/s");
 }

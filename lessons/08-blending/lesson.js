@@ -37,7 +37,9 @@ if (blendViewer) {
 
 const locoViewer = await lesson.figure('#fig-locomotion');
 if (locoViewer) {
-  locoViewer.setCamera(0, 0.8, 0, 4.2, 1.2, 0.25);
+  // Far enough back that the whole 4 m track stays in a 650 px wide canvas (1600 x 1000 page):
+  // at 4.2 m the character near the track's +z end touched the left edge.
+  locoViewer.setCamera(0, 0.8, 0, 4.8, 1.2, 0.25);
   const scene = new LocomotionScene();
   const [lo, hi] = scene.speedRange();
   const round = (v) => Math.round(v * 100) / 100;
@@ -50,13 +52,15 @@ if (locoViewer) {
   // as tall as the longer y label needs (the shell sizes each plot by its own label).
   const series = ['synchronised', 'same clock time'];
   const colors = ['#1f6fd6', '#d62728'];
+  // Fixed y ranges (from Rust): the same scale at every speed, so a small slide looks small.
+  const ranges = scene.plotRanges();
   const gapPlot = new Plot(document.getElementById('loco-phase-plot'), {
     title: 'How far out of step', xLabel: 'time (s)', yLabel: 'phase gap (cycles)',
-    series, colors, minSpan: 0.1, height: 240,
+    series, colors, height: 240, yRange: [ranges[0], ranges[1]],
   });
   const slidePlot = new Plot(document.getElementById('loco-slide-plot'), {
     title: 'Slide in the last 1.5 s', xLabel: 'time (s)', yLabel: 'slide (cm)',
-    series, colors, minSpan: 1, height: 240,
+    series, colors, height: 240, yRange: [ranges[2], ranges[3]],
   });
   for (const plot of [gapPlot, slidePlot]) widenUnderneath(plot);
   const replot = () => {
@@ -80,16 +84,13 @@ if (locoViewer) {
 }
 
 /**
- * Draws a plot's first series 4 px wide and its second 1.5 px wide (on top), legend markers
- * too, so two lines that coincide both show. (The shell's Plot draws every series 2 px wide.)
+ * Draws a plot's first series 5 px wide and its second 1.5 px wide on top, so two lines that
+ * coincide both show: the second inside a border of the first. (The shell's Plot draws every
+ * series 2 px wide and has no option for it; its legend keeps the usual markers.)
  */
 function widenUnderneath(plot) {
-  const widths = [4, 1.5];
   const u = plot.plot;
-  widths.forEach((w, i) => { u.series[i + 1].width = w; });
-  u.root.querySelectorAll('.u-legend .u-series').forEach((row, i) => {
-    const marker = row.querySelector('.u-marker');
-    if (i > 0 && marker && widths[i - 1]) marker.style.borderWidth = `${widths[i - 1]}px`;
-  });
+  u.series[1].width = 5;
+  u.series[2].width = 1.5;
   u.redraw();
 }

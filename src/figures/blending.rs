@@ -440,6 +440,12 @@ const FOOTPRINT_SEC: f32 = 1.5;
 const FOOTPRINT_SAMPLES: usize = 60;
 /// The locomotion figure's timeline, seconds: then the walk starts again from the start.
 pub const LOCOMOTION_LOOP_SEC: f32 = 8.0;
+/// The y ranges of the locomotion figure's plots, fixed so that lines at different speeds
+/// compare and a small slide reads as small (an autoscaled 2 cm looked like a metre):
+/// `[phase gap from, to (cycles), slide from, to (cm)]`. The gap lies in [0, 0.5]; the largest
+/// slide at any speed is 152 cm (not synchronised, near 0.85 m/s). A little below 0, so a line
+/// at 0 is not cut by the plot's edge.
+pub const LOCOMOTION_PLOT_RANGES: [f32; 4] = [-0.02, 0.52, -4.0, 160.0];
 
 impl LocomotionFigure {
     /// Halfway between walking and running speed, synchronised, root motion on.

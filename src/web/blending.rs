@@ -2,7 +2,9 @@
 //! holds the figures' logic and is tested natively.
 
 use super::{js, Viewer};
-use crate::figures::blending::{BlendFigure, LocomotionFigure, LOCOMOTION_LOOP_SEC};
+use crate::figures::blending::{
+    BlendFigure, LocomotionFigure, LOCOMOTION_LOOP_SEC, LOCOMOTION_PLOT_RANGES,
+};
 use wasm_bindgen::prelude::*;
 
 /// Crossfade, mask and additive layer on the simple human.
@@ -120,6 +122,12 @@ impl LocomotionScene {
     #[wasm_bindgen(js_name = loopSec)]
     pub fn loop_sec(&self) -> f32 {
         LOCOMOTION_LOOP_SEC
+    }
+
+    /// The plots' fixed y ranges: `[gap from, to (cycles), slide from, to (cm)]`.
+    #[wasm_bindgen(js_name = plotRanges)]
+    pub fn plot_ranges(&self) -> Vec<f32> {
+        LOCOMOTION_PLOT_RANGES.to_vec()
     }
 
     /// `[time (s), phase gap synchronised, not (cycles), slide synchronised, not (cm), …]`
