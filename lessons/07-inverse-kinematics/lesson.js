@@ -5,21 +5,38 @@ import { IkScene, AimScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
-const viewer = await lesson.figure('#fig-ik');
-if (viewer) {
+// Figures 1-3: the same three solvers side by side, each beside the section it illustrates,
+// starting from that section's settings. The plot of the error per iteration is in the
+// figures that have a .plot (2 and 3: the iterative solvers' sections).
+await ikFigure('#fig-ik', { segments: 2, limits: 'none' });
+await ikFigure('#fig-ik-iterative', { segments: 3, limits: 'none' });
+await ikFigure('#fig-ik-limits', { segments: 2, limits: 'hinges (bend one way)' });
+
+async function ikFigure(id, start) {
+  const viewer = await lesson.figure(id);
+  if (!viewer) return;
+  const figure = document.querySelector(id);
   viewer.setCamera(0.25, 0.45, 0, 4.3, 0.1, 0.25);
   const scene = new IkScene();
+  const home = { x: 0.55, y: 0.65, z: 0.15, pole: 0 };
   const p = {
-    segments: 2, x: 0.55, y: 0.65, z: 0.15, pole: 0, iterations: 10, limits: 'none', useExercise: false,
-    reset: () => { Object.assign(p, { x: 0.55, y: 0.65, z: 0.15, pole: 0 }); applyTarget(); scene.setPoleAngleDeg(0); refresh(); },
+    segments: start.segments, ...home, iterations: 10, limits: start.limits, useExercise: false,
+    reset: () => { Object.assign(p, home); applyTarget(); scene.setPoleAngleDeg(0); refresh(); },
   };
-  const gui = new GUI({ container: document.querySelector('#fig-ik .panel'), title: 'Inverse kinematics' });
+  scene.setSegments(p.segments);
+  scene.setLimits(p.limits);
+  const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Inverse kinematics' });
   const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
-  const plot = new Plot(document.getElementById('ik-plot'), {
+  const plotElement = figure.querySelector('.plot');
+  const plot = plotElement && new Plot(plotElement, {
     title: 'Error after each iteration', xLabel: 'iteration', yLabel: 'log₁₀ error (m)',
     series: ['CCD', 'FABRIK'], colors: ['#e68a00', '#17a2a8'], minSpan: 1, height: 170,
   });
+  // CCD drawn wide underneath, FABRIK narrow on top: where they agree (a target out of reach)
+  // both lines show.
+  if (plot) widenUnderneath(plot);
   const update = () => {
+    if (!plot) return;
     plot.setData(columns(scene.errorSamples(), 3));
     plot.setCursor(p.iterations);
   };
@@ -40,7 +57,7 @@ if (viewer) {
 
   // Dragging a target: capture-phase listeners on the stage run before the canvas's orbit
   // controls, and stop the event only when the pointer is on a target (Rust decides).
-  const canvas = document.querySelector('#fig-ik .stage canvas');
+  const canvas = figure.querySelector('.stage canvas');
   const stage = canvas.parentElement;
   const local = (e) => {
     const r = canvas.getBoundingClientRect();
@@ -78,11 +95,23 @@ if (viewer) {
   stage.addEventListener('pointerup', release, { capture: true });
   stage.addEventListener('pointercancel', release, { capture: true });
 
-  const note = document.getElementById('ik-note');
+  const note = figure.querySelector('.note');
   lesson.onFrame(() => {
     showNote(note, scene.draw(viewer));
-    markDrawn('#fig-ik');
+    markDrawn(id);
   });
+}
+
+/**
+ * Draws a plot's first series 5 px wide and its second 1.5 px wide on top, so two lines that
+ * coincide both show: the second inside a border of the first. (The shell's Plot draws every
+ * series 2 px wide and has no option for it; its legend keeps the usual markers.)
+ */
+function widenUnderneath(plot) {
+  const u = plot.plot;
+  u.series[1].width = 5;
+  u.series[2].width = 1.5;
+  u.redraw();
 }
 
 const aimViewer = await lesson.figure('#fig-aim');
@@ -98,6 +127,9 @@ if (aimViewer) {
     title: 'Angle from straight ahead', xLabel: 'time (s)', yLabel: 'angle (°)',
     series: ['to the target', 'head turn'], colors: ['#d62728', '#1f6fd6'], minSpan: 10, height: 170,
   });
+  // The target's line wide underneath, the head's narrow on top: inside the cone the head's
+  // line lies exactly on the target's, and at one width the red was hidden under the blue.
+  widenUnderneath(plot);
   const replot = () => plot.setData(columns(scene.plotSamples(), 3));
   const applyTarget = () => { scene.setTarget(p.x, p.y, p.z); replot(); };
   target.add(p, 'x', -1.2, 1.2, 0.05).onChange(applyTarget);

@@ -3,6 +3,10 @@
 // it sits at its end), dragging lesson 07's target leaves the sliders at two decimals (not an
 // f32's float noise), and the blend figure keeps a hand waved over the head inside a short,
 // wide canvas (800 x 600: no figure pixel on the canvas's top rows at any time of the wave).
+// Then the second review's: lesson 07's IK figures each stand in the section they illustrate,
+// and the aim plot's red line shows where the blue one lies on it; lesson 08's locomotion figure
+// has its two plots with a playhead that follows the timeline, and its note no longer counts
+// the snap-back of root motion left in the pose as sliding.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
@@ -22,9 +26,11 @@ async function open(context, lesson) {
   return { page, problems };
 }
 
-async function scrub(page, timeline, t) {
+/** Scrubs `timeline` (its range runs 0-1000 over its `duration` seconds) to `t` seconds. */
+async function scrub(page, timeline, t, duration) {
   const range = page.locator(`${timeline} input[type=range]`);
-  await range.fill(String(t));
+  // The range is in thousandths of the duration: filling in seconds set 2 s as 0.016 s.
+  await range.fill(String(Math.round((t / duration) * 1000)));
   await range.dispatchEvent('input');
   await frames(page);
 }
@@ -43,7 +49,7 @@ test('lesson 07: the aim figure shows its target at every corner of the sliders'
           await setControl(page, fig, 'y', y);
           await setControl(page, fig, 'z', z);
           for (const t of [0, 2, 4, 6]) {
-            await scrub(page, '#aim-timeline', t);
+            await scrub(page, '#aim-timeline', t, 8);
             const label = await page.evaluate((fig) => {
               const el = [...document.querySelectorAll(`${fig} .labels span`)].find((e) => e.textContent === 'target');
               const m = el && !el.hidden && /translate\(([-\d.]+)px, ([-\d.]+)px\)/.exec(el.style.transform);
@@ -111,7 +117,7 @@ test('lesson 08: a hand waved over the head stays inside an 800 x 600 canvas', a
     await canvas.scrollIntoViewIfNeeded();
     // The wave clip is 2 s long; the walk (clip A, the timeline's) 1 s: B plays at A's phase.
     for (const t of [0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875]) {
-      await scrub(page, '#blend-timeline', t);
+      await scrub(page, '#blend-timeline', t, 1);
       const { width } = await pixelStats(page, canvas, `blend-${t}`);
       // Pixels on the top 6 rows, right of the backend badge and left of the rounded corner,
       // that differ from the background (read at 10 px from the top right).
@@ -131,6 +137,134 @@ test('lesson 08: a hand waved over the head stays inside an 800 x 600 canvas', a
       assert.equal(touching, 0, `at ${t} s the figure reaches the canvas's top edge (${touching} pixels)`);
     }
     await page.locator(fig).screenshot({ path: `${SHOTS}/08-blending-wave-800-webgl2.png` });
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+/**
+ * Pixels of the plot canvas in `selector` (a .plot box) near each colour of `colors` (hex), and
+ * with `columnsOf` set, the x of the column right of the y axis that holds most pixels of the
+ * playhead's colour. Read from the 2D canvas itself (transparent where nothing is drawn).
+ */
+function plotPixels(page, selector, colors, columnsOf) {
+  return page.evaluate(([selector, colors, columnsOf]) => {
+    const canvas = document.querySelector(`${selector} canvas`);
+    const { width, height } = canvas;
+    const data = canvas.getContext('2d').getImageData(0, 0, width, height).data;
+    const rgb = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+    const near = (i, c) => Math.abs(data[i] - c[0]) + Math.abs(data[i + 1] - c[1]) + Math.abs(data[i + 2] - c[2]) < 60;
+    const counts = colors.map(() => 0);
+    const wanted = colors.map(rgb);
+    const column = new Array(width).fill(0);
+    const cc = columnsOf && rgb('#1f2430');
+    for (let y = 0; y < height; y++) {
+      for (let x = 0; x < width; x++) {
+        const i = 4 * (y * width + x);
+        wanted.forEach((c, k) => { if (near(i, c)) counts[k]++; });
+        // The playhead: the shell draws it in #1f2430 (dashed, antialiased: alpha varies).
+        if (cc && data[i + 3] > 30 && near(i, cc)) column[x]++;
+      }
+    }
+    // Right of the y axis (its ticks and labels are dark too): the plot area starts about
+    // 80 px in (56 px of axis, 22 of label).
+    const from = 100 * devicePixelRatio;
+    const inside = column.slice(from);
+    const best = from + inside.indexOf(Math.max(...inside));
+    return { counts, column: best, width, most: inside[best - from] };
+  }, [selector, colors, columnsOf]);
+}
+
+test('lesson 07: each IK figure stands in the section it illustrates', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '07-inverse-kinematics');
+    // For each figure, the heading of the section it sits in, and that it has drawn.
+    const where = await page.evaluate(() => [...document.querySelectorAll('main .figure')].map((f) => {
+      let h = f.previousElementSibling;
+      while (h && h.tagName !== 'H2') h = h.previousElementSibling;
+      return [f.id, h?.textContent ?? null];
+    }));
+    assert.deepEqual(where, [
+      ['fig-ik', 'Two joints: the law of cosines'],
+      ['fig-ik-iterative', 'FABRIK: reach forward, then backward'],
+      ['fig-ik-limits', 'Joint limits'],
+      ['fig-aim', 'Aiming: look at the target'],
+    ]);
+    // Each starts from its section's settings: 2, 3 and 2 segments; hinges in the limits one.
+    for (const [fig, segments, limits] of [['#fig-ik', '2', 'none'], ['#fig-ik-iterative', '3', 'none'],
+      ['#fig-ik-limits', '2', 'hinges (bend one way)']]) {
+      await page.locator(fig).scrollIntoViewIfNeeded();
+      await frames(page);
+      const shown = await page.evaluate((fig) => ({
+        segments: document.querySelector(`${fig} .lil-controller.lil-number input`).value,
+        limits: document.querySelector(`${fig} .lil-controller.lil-option select`).selectedOptions[0].textContent,
+      }), fig);
+      assert.equal(shown.segments, segments, `${fig} segments`);
+      assert.equal(shown.limits, limits, `${fig} limits`);
+      const { coverage } = await pixelStats(page, page.locator(`${fig} .stage canvas`), fig);
+      assert.ok(coverage > 0.01, `${fig} draws (${coverage})`);
+    }
+    await page.locator('#fig-ik-limits').screenshot({ path: `${SHOTS}/07-inverse-kinematics-limits-webgl2.png` });
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 07: inside the cone the aim plot shows the red line under the blue one', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '07-inverse-kinematics');
+    const fig = '#fig-aim';
+    await page.locator(fig).scrollIntoViewIfNeeded();
+    // A 180° cone: the head follows the target all the way round, the two lines are one.
+    await setControl(page, fig, 'largest turn', 180);
+    await frames(page);
+    const { counts: [red, blue] } = await plotPixels(page, '#aim-plot', ['#d62728', '#1f6fd6']);
+    assert.ok(blue > 200, `the head's line is drawn (${blue} px)`);
+    assert.ok(red > 0.5 * blue, `the target's line shows beside it: ${red} red px, ${blue} blue px`);
+    await page.locator('#aim-plot').screenshot({ path: `${SHOTS}/07-inverse-kinematics-aim-plot-180-webgl2.png` });
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 08: the locomotion plots follow the timeline; the snap-back is not sliding', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '08-blending');
+    const fig = '#fig-locomotion';
+    await page.locator(fig).scrollIntoViewIfNeeded();
+    const titles = await page.evaluate((fig) => [...document.querySelectorAll(`${fig} .plot`)].map((p) => p.dataset.plot), fig);
+    assert.deepEqual(titles, ['How far out of step', 'Slide in the last 1.5 s']);
+    // The playhead (the shell's dark dashed line) moves along x with the timeline, linearly.
+    for (const plot of ['#loco-phase-plot', '#loco-slide-plot']) {
+      const at = [];
+      for (const t of [3, 5, 7]) {
+        await scrub(page, '#loco-timeline', t, 8);
+        const { column, most } = await plotPixels(page, plot, [], true);
+        assert.ok(most > 20, `${plot} at ${t} s: a playhead (${most} px in its column)`);
+        at.push(column);
+      }
+      assert.ok(at[0] < at[1] && at[1] < at[2], `${plot}: playhead at x = ${at} for t = 3, 5, 7 s`);
+      assert.ok(Math.abs((at[2] - at[1]) - (at[1] - at[0])) <= 3, `${plot}: evenly spaced: ${at}`);
+    }
+    // Both settings are plotted, whatever the checkbox: blue (synchronised) and red lines.
+    const { counts: [blue, red] } = await plotPixels(page, '#loco-slide-plot', ['#1f6fd6', '#d62728']);
+    assert.ok(blue > 100 && red > 100, `slide plot: ${blue} blue px, ${red} red px`);
+    await page.locator(fig).screenshot({ path: `${SHOTS}/08-blending-locomotion-plots-webgl2.png` });
+    // Root motion off: the same slide as with it on, and the note gives the jump on its own.
+    const slide = (note) => /slid ([\d.]+) cm/.exec(note)?.[1];
+    await scrub(page, '#loco-timeline', 3, 8);
+    const on = await page.locator('#loco-note').textContent();
+    await setControl(page, fig, 'root motion', false);
+    await frames(page);
+    const off = await page.locator('#loco-note').textContent();
+    assert.ok(slide(on) && Math.abs(slide(off) - slide(on)) <= 0.1, `slide with root motion on: ${slide(on)} cm, off: ${slide(off)} cm`);
+    assert.match(off, /snaps back \d+ cm \(a jump, not counted as sliding\)/);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
