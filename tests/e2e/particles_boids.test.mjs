@@ -2,10 +2,14 @@
 // overlap (at both page sizes, over its timeline), the free-fall plot shows signed heights (the
 // two Euler lines on either side of zero) and its note says which side each is on, the flock
 // note gives the steering arrow's scale, and a plot fits inside its box (its last tick label
-// was cut off).
+// was cut off). Then the second review's: a fountain at 1000/s beside explosions never fills the
+// system (one burst took every slot) and the note says how long its particles live; the bouncing
+// balls stay in the picture at e = 1, μ = 0; the boid rules' three labels stay apart; the flock's
+// rule weights are in view with a panel no taller than the canvas; the flock's order plot is
+// drawn from its samples.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl } from './browser.mjs';
 
 const site = serveDist();
 const open = (context, path, width, height) => openPage(context, site.origin + path, { width, height });
@@ -72,6 +76,132 @@ test('lesson 12: the flock note gives the steering arrow scale', async () => {
     });
     assert.ok(fit.plot <= fit.inner + 0.5 && fit.plot < fit.figure, JSON.stringify(fit));
     assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+/** Moves a figure's timeline to `at` (0–1000 of its length) and lets it draw. */
+async function scrubTo(page, figure, at) {
+  const scrub = page.locator(`${figure} .scrub`);
+  await scrub.fill(String(at));
+  await scrub.dispatchEvent('input');
+  await frames(page, 4);
+}
+
+/** Pixels of `figure`'s 3D canvas close to the balls' blue (shaded #1f6fd6). */
+async function bluePixels(page, figure) {
+  const png = await page.locator(`${figure} .stage canvas`).first().screenshot();
+  return page.evaluate(async (b64) => {
+    const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+    const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+    const ctx = canvas.getContext('2d');
+    ctx.drawImage(bitmap, 0, 0);
+    const { data } = ctx.getImageData(0, 0, bitmap.width, bitmap.height);
+    let n = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+      if (b > 90 && b > r + 50 && b > g + 25) n++;
+    }
+    return n;
+  }, png.toString('base64'));
+}
+
+test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; bouncing balls stay in view at e = 1', async () => {
+  const context = await launch('webgl2');
+  try {
+    for (const [w, h] of [[800, 600], [1600, 1000]]) {
+      const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', w, h);
+      const fig = '#fig-emitters';
+      await page.locator(fig).scrollIntoViewIfNeeded();
+      // The explosion has its own slider; at 1000/s in "both" mode with a 6 s lifetime the
+      // system used to fill (one burst was 2 × the rate, all 2000 slots).
+      await setControl(page, fig, 'emitter', 'both');
+      await setControl(page, fig, 'fountain rate', 1000);
+      await setControl(page, fig, 'lifetime', 6);
+      assert.equal(await page.locator(`${fig} .lil-controller`, { hasText: 'particles per explosion' }).count(), 1);
+      for (const at of [40, 300, 600, 950]) {
+        await scrubTo(page, fig, at);
+        const note = await page.locator('#emitters-note').textContent();
+        const alive = Number(/^(\d+) particles alive/.exec(note)?.[1]);
+        assert.ok(alive > 0 && alive < 2000, `${w}x${h}, scrub ${at}: ${note}`);
+        assert.doesNotMatch(note, /full/, note);
+        assert.match(note, /A stream of 1,000 particles\/s living 6\.00 s would need about 6,000 slots .* its particles live 0\.98 s/, note);
+      }
+      // Bouncing at e = 1, μ = 0: the blue balls that the sphere throws sideways stay in the
+      // picture (they left it within the 6 s timeline; now a glass box bounces them back).
+      const bounce = '#fig-bounce';
+      await page.locator(bounce).scrollIntoViewIfNeeded();
+      await setControl(page, bounce, 'restitution', 1);
+      await setControl(page, bounce, 'friction', 0);
+      await scrubTo(page, bounce, 0);
+      const start = await bluePixels(page, bounce);
+      for (const at of [500, 750, 999]) {
+        await scrubTo(page, bounce, at);
+        const now = await bluePixels(page, bounce);
+        assert.ok(now > 0.6 * start, `${w}x${h}, scrub ${at}: ${now} blue pixels, ${start} at the start`);
+      }
+      assert.deepEqual(problems, []);
+      await page.close();
+    }
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 12: the order plot, the rules labels apart, the rule weights in view', async () => {
+  const context = await launch('webgl2');
+  try {
+    for (const [w, h] of [[800, 600], [1600, 1000]]) {
+      const { page, problems } = await open(context, '/lessons/12-boids/?backend=webgl2', w, h);
+      // The rules figure's three labels do not cover each other (at the defaults "alignment"
+      // sat on "cohesion").
+      const rules = '#fig-rules';
+      await frames(page, 4);
+      const boxes = await labelBoxes(page, rules);
+      assert.equal(boxes.length, 3, JSON.stringify(boxes));
+      for (let i = 0; i < boxes.length; i++) {
+        for (let j = 0; j < i; j++) {
+          const [a, b] = [boxes[i], boxes[j]];
+          const apart = a.r <= b.l || b.r <= a.l || a.b <= b.t || b.b <= a.t;
+          assert.ok(apart, `${w}x${h}: ${a.text} and ${b.text} overlap ${JSON.stringify(boxes)}`);
+        }
+      }
+      // The flock's weights for all three rules are visible (the Try this names alignment and
+      // separation, whose folders started closed), and the panel is no taller than the canvas.
+      const flock = '#fig-flock';
+      await page.locator(flock).scrollIntoViewIfNeeded();
+      for (const name of ['cohesion', 'alignment', 'separation']) {
+        const weight = page.locator(`${flock} .lil-gui .lil-gui`, { hasText: 'rule weights' }).locator('.lil-controller', { hasText: name });
+        assert.ok(await weight.isVisible(), `${w}x${h}: the ${name} weight is hidden`);
+      }
+      const fit = await page.evaluate((flock) => {
+        const canvas = document.querySelector(`${flock} .stage canvas`).getBoundingClientRect();
+        const panel = document.querySelector(`${flock} .panel`).getBoundingClientRect();
+        return { canvas: canvas.bottom, panel: panel.bottom, beside: panel.left >= canvas.right - 1 };
+      }, flock);
+      if (fit.beside) assert.ok(fit.panel <= fit.canvas + 1, `${w}x${h}: panel below the canvas ${JSON.stringify(fit)}`);
+      // The order plot: titled, both series named, and drawn from the flock's samples after a
+      // second of flight (its canvas shows the purple polarisation line).
+      const plot = page.locator('#flock-order-plot');
+      assert.equal(await plot.getAttribute('data-plot'), 'Order of the flock');
+      const legend = await plot.locator('.u-legend').textContent();
+      assert.match(legend, /polarisation φ/);
+      assert.match(legend, /mean speed \/ max speed/);
+      await page.waitForTimeout(1500);
+      await frames(page, 8);
+      const purple = await plot.locator('canvas').evaluate((c) => {
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let n = 0;
+        for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x94) < 40 && Math.abs(d[i + 1] - 0x4f) < 40 && Math.abs(d[i + 2] - 0xc9) < 40) n++;
+        return n;
+      });
+      assert.ok(purple > 50, `${w}x${h}: the polarisation line is not drawn (${purple} purple pixels)`);
+      assert.match(await page.locator('#flock-note').textContent(), /Polarisation φ = \d\.\d\d/);
+      assert.deepEqual(problems, []);
+      await page.close();
+    }
   } finally {
     await context.close();
   }
