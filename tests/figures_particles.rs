@@ -119,6 +119,10 @@ fn a_fast_fountain_keeps_flowing_beside_the_explosions() {
     for p in &frame.points {
         assert!(p.center[1] >= 0.0, "nothing below the floor");
     }
+    // Stepped on the GPU the figure has the same shares and says the same.
+    let gpu_note = scene.draw_gpu(&mut Frame::default());
+    assert!(gpu_note.contains(&scene.budget_note()), "{gpu_note}");
+    assert!(gpu_note.contains("its particles live"), "{gpu_note}");
     // A slow fountain keeps the slider's lifetime and says nothing about it.
     scene.set_rate(200.0).unwrap();
     scene.set_lifetime(2.5).unwrap();

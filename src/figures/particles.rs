@@ -433,8 +433,9 @@ impl EmitterFigure {
             "Stepped on the GPU by compute shaders, at t = {} s: {PAGE_MAX_PARTICLES} slots refilled \
              in ring order, one thread per particle (the same emitters, exact bounces and colours). \
              The sprites stay on the GPU, so they are drawn in storage order (not sorted) and fade \
-             with age.{}",
+             with age. {}{}",
             format_number(self.steps_done as f32 * SIM_DT),
+            self.budget_note(),
             match self.bursts.len() {
                 0 => String::new(),
                 b => format!(" Explosions set off by hand: {b}."),
