@@ -59,7 +59,7 @@ fn with_commas(n: usize) -> String {
     let digits = n.to_string();
     let mut out = String::with_capacity(digits.len() + digits.len() / 3);
     for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
             out.push(',');
         }
         out.push(c);
@@ -497,9 +497,11 @@ impl EmitterFigure {
             self.budget_note(),
             format_number(e),
             format_number(5.0 * e),
-            (!self.bursts.is_empty())
-                .then(|| format!(" Explosions set off by hand: {}.", self.bursts.len()))
-                .unwrap_or_default(),
+            if self.bursts.is_empty() {
+                String::new()
+            } else {
+                format!(" Explosions set off by hand: {}.", self.bursts.len())
+            },
         ))
     }
 
