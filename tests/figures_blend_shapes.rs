@@ -42,6 +42,27 @@ fn controls_validate_and_the_full_form_reports_a_bad_sum() {
     assert!(f.differential.take_dirty() && f.full.take_dirty());
 }
 
+/// A frame at the same weights (the timeline paused) blends and uploads nothing, so the renderer
+/// can keep the canvas's last image; a new time or a moved slider blends again.
+#[test]
+fn a_paused_face_is_blended_once() {
+    let mut f = FaceFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS, 1.3).unwrap();
+    assert!(f.differential.take_dirty() && f.full.take_dirty());
+    let before = f.full.positions.clone();
+    f.draw(&mut frame, IDS, 1.3).unwrap();
+    assert!(!f.differential.take_dirty() && !f.full.take_dirty());
+    assert_eq!(f.full.positions, before);
+    f.draw(&mut frame, IDS, 1.4).unwrap();
+    assert!(f.differential.take_dirty() && f.full.take_dirty(), "a new time");
+    f.draw(&mut frame, IDS, 1.4).unwrap();
+    f.set_weight(0, 0.2).unwrap();
+    f.draw(&mut frame, IDS, 1.4).unwrap();
+    assert!(f.full.take_dirty(), "a moved slider");
+    assert_ne!(f.full.positions, before);
+}
+
 /// The mesh ids drawn in `frame` and where each stands.
 fn heads(frame: &Frame) -> Vec<(MeshId, Vec3)> {
     frame

@@ -55,6 +55,10 @@ pub struct FaceFigure {
     /// The face blended in the full form.
     pub full: SkinnedMesh,
     exercise_note: String,
+    /// The base and target weights the two heads' vertices were last blended with: a frame
+    /// with the same weights (a paused timeline) reuses them, so nothing is uploaded and the
+    /// renderer can keep the canvas's last image.
+    blended: Option<[f32; 5]>,
 }
 
 impl Default for FaceFigure {
@@ -86,6 +90,7 @@ impl FaceFigure {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             exercise_note: String::new(),
+            blended: None,
         }
     }
 
@@ -254,28 +259,32 @@ impl FaceFigure {
         let sum: f32 = w.iter().sum();
         let w0 = self.base_weight_for(&w);
         let total = w0 + sum;
-        let shapes = &self.face.shapes;
-        shapes
-            .apply_differential(
-                &w,
-                &mut self.differential.positions,
-                &mut self.differential.normals,
-            )
-            .map_err(|e| e.to_string())?;
-        shapes
-            .apply_full(
-                &[w0, w[0], w[1], w[2], w[3]],
-                &mut self.full.positions,
-                &mut self.full.normals,
-            )
-            .map_err(|e| e.to_string())?;
+        let weights = [w0, w[0], w[1], w[2], w[3]];
+        if self.blended != Some(weights) {
+            let shapes = &self.face.shapes;
+            shapes
+                .apply_differential(
+                    &w,
+                    &mut self.differential.positions,
+                    &mut self.differential.normals,
+                )
+                .map_err(|e| e.to_string())?;
+            shapes
+                .apply_full(
+                    &weights,
+                    &mut self.full.positions,
+                    &mut self.full.normals,
+                )
+                .map_err(|e| e.to_string())?;
+            self.differential.mark_dirty();
+            self.full.mark_dirty();
+            self.blended = Some(weights);
+        }
         if self.use_exercise {
             self.exercise_note = self.run_exercise(&w);
         } else {
             self.exercise_note.clear();
         }
-        self.differential.mark_dirty();
-        self.full.mark_dirty();
 
         let (left, right) = self.head_positions();
         let both = self.show == Show::Both;

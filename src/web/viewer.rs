@@ -181,9 +181,13 @@ impl Viewer {
 
 #[wasm_bindgen]
 impl Viewer {
-    /// The last presented frame's labels as JSON: `[{"x":…,"y":…,"visible":…,"text":…,"color":…}]`,
-    /// x and y in CSS pixels from the canvas's top-left corner. The shell (`www/lesson.js`) places
-    /// one HTML element per label over the canvas.
+    /// How many frames the figure has drawn into its canvas: frames it already showed are not
+    /// drawn again (see `Renderer::render`). For the page tests.
+    #[wasm_bindgen(getter, js_name = canvasFrames)]
+    pub fn canvas_frames(&self) -> f64 {
+        self.renderer.canvas_frames() as f64
+    }
+
     /// What the last presented frame drew, as a hex fingerprint (changes whenever anything drawn
     /// changes; the camera is not part of it). For the page tests.
     #[wasm_bindgen(js_name = frameFingerprint)]
@@ -191,6 +195,9 @@ impl Viewer {
         format!("{:016x}", self.last_fingerprint)
     }
 
+    /// The last presented frame's labels as JSON: `[{"x":…,"y":…,"visible":…,"text":…,"color":…}]`,
+    /// x and y in CSS pixels from the canvas's top-left corner. The shell (`www/lesson.js`) places
+    /// one HTML element per label over the canvas.
     #[wasm_bindgen(js_name = labelsJson)]
     pub fn labels_json(&self) -> String {
         let mut out = String::from("[");

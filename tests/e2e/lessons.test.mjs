@@ -319,6 +319,13 @@ for (const backend of BACKENDS) {
           assert.equal(await page.evaluate(() => document.body.dataset.backend), label);
           await pauseTimelines(page);
           await frames(page);
+          // Paused, nothing a 3D figure draws changes, so its renderer draws no more frames (at
+          // most a couple, should a late layout change resize a canvas).
+          const drawn = () => page.evaluate(() => window.__inbetween.figures.map((f) => [f.selector, f.viewer.canvasFrames]));
+          const drawnBefore = await drawn();
+          await frames(page, 20);
+          const stillDrawing = (await drawn()).filter(([, n], k) => n - drawnBefore[k][1] > 2);
+          assert.deepEqual(stillDrawing.map(([s]) => s), [], 'these paused figures kept drawing');
           if (lesson.folder.startsWith('02-')) await editorDrags(page);
           if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
           clock('editor drags, GPU noise check');
