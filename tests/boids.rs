@@ -117,6 +117,28 @@ fn force_laws_attract_far_and_repel_near() {
     assert!(g.f(1.0) > g.f(3.0));
 }
 
+/// Every boid flies between the minimum and the maximum speed after each step (the flock starts
+/// at half the top speed, not above the default minimum), and `clamp_speed` leaves a boid at rest at
+/// rest and a speed inside the range untouched.
+#[test]
+fn speed_stays_between_the_minimum_and_the_maximum() {
+    let params = BoidParams::default();
+    assert!(params.min_speed >= 0.5 * params.max_speed, "the start is not above the minimum");
+    let mut flock = Flock::new(300, &params, 4).unwrap();
+    for _ in 0..120 {
+        flock.step(&params, Search::Grid, 1.0 / 60.0);
+        for v in &flock.velocities {
+            let s = v.length();
+            assert!(s >= params.min_speed * 0.9999 && s <= params.max_speed * 1.0001, "{s}");
+        }
+    }
+    use inbetween::boids::clamp_speed;
+    assert_eq!(clamp_speed(Vec3::ZERO, 1.0, 2.0), Vec3::ZERO);
+    assert_eq!(clamp_speed(Vec3::X * 1.5, 1.0, 2.0), Vec3::X * 1.5);
+    assert!((clamp_speed(Vec3::Y * 0.1, 1.0, 2.0) - Vec3::Y).length() < 1e-6);
+    assert!((clamp_speed(Vec3::Z * 5.0, 1.0, 2.0) - Vec3::Z * 2.0).length() < 1e-6);
+}
+
 #[test]
 fn speed_stays_below_the_maximum_and_boids_stay_near_the_box() {
     let params = BoidParams {

@@ -49,25 +49,26 @@ if (flockViewer) {
     separation: { weight: 1.5, radius: 0.5 },
   };
   const p = {
-    count: 300, fov: 270, maxSpeed: 1.8, law: 'none', search: 'grid',
+    count: 300, fov: 270, maxSpeed: 1.8, minSpeed: 1.2, law: 'none', search: 'grid',
     leader: false, predator: false, obstacle: true, on: 'CPU',
     measure: () => startSweep(),
   };
   const gui = new GUI({ container: document.querySelector('#fig-flock .panel'), title: 'Flock' });
   gui.add(p, 'count', 20, 3000, 10).name('boids');
-  // The three weights in one open folder, the radii in a closed one: the Try this below sends
-  // the reader to the alignment and separation weights (each rule had its own folder, and only
-  // cohesion's started open), and with all three rule folders open the panel was taller than
-  // the canvas at 1600 x 1000.
+  // The three weights in one open folder, the radii and the field of view in a closed one: the
+  // Try this below sends the reader to the alignment and separation weights (each rule had its
+  // own folder, and only cohesion's started open), and with all three rule folders open the
+  // panel was taller than the canvas at 1600 x 1000.
   const weights = gui.addFolder('rule weights');
-  const radii = gui.addFolder('rule radii (m)');
+  const radii = gui.addFolder('rule radii (m), field of view');
   for (const [name, rule] of Object.entries(rules)) {
     weights.add(rule, 'weight', 0, 10, 0.1).name(name);
     radii.add(rule, 'radius', 0.1, 3, 0.05).name(name);
   }
+  radii.add(p, 'fov', 0, 360, 5).name('field of view (°)');
   radii.close();
-  gui.add(p, 'fov', 0, 360, 5).name('field of view (°)');
   gui.add(p, 'maxSpeed', 0.2, 5, 0.1).name('max speed (m/s)');
+  gui.add(p, 'minSpeed', 0, 5, 0.1).name('min speed (m/s)');
   gui.add(p, 'law', ['none', 'a1/x² − a2/x⁴', 'Gaussian']).name('force law');
   gui.add(p, 'search', ['grid', 'naive']).name('neighbour search');
   gui.add(p, 'obstacle').name('obstacle');
@@ -87,6 +88,7 @@ if (flockViewer) {
     for (const [name, rule] of Object.entries(rules)) scene.setRule(name, rule.weight, rule.radius);
     scene.setFovDeg(p.fov);
     scene.setMaxSpeed(p.maxSpeed);
+    scene.setMinSpeed(p.minSpeed);
     scene.setLaw(p.law);
     scene.setSearch(p.search);
     scene.setObstacle(p.obstacle);

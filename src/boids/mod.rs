@@ -79,6 +79,11 @@ pub struct BoidParams {
     /// Full field of view, degrees in `[0, 360]`: a boid ignores neighbours behind it.
     pub fov_deg: f32,
     pub max_speed: f32,
+    /// The slowest a boid flies, m/s: a moving boid slower than this is sped up along its
+    /// heading after each step (a value above `max_speed` acts as `max_speed`). Without it the rules only ever pull speeds
+    /// towards the neighbours' mean velocity, and the mean of random headings is small: a flock
+    /// slows down until it hovers instead of flying.
+    pub min_speed: f32,
     /// Largest steering acceleration, m/s².
     pub max_force: f32,
     /// Boids are pushed back into the box `[-bounds, bounds]`.
@@ -112,6 +117,7 @@ impl Default for BoidParams {
             law_radius: 1.5,
             fov_deg: 270.0,
             max_speed: 2.5,
+            min_speed: 1.25,
             max_force: 6.0,
             bounds: Vec3::new(6.0, 3.0, 6.0),
             bounds_weight: 4.0,
@@ -139,6 +145,7 @@ impl BoidParams {
             self.law_radius,
             self.fov_deg,
             self.max_speed,
+            self.min_speed,
             self.max_force,
             self.bounds_weight,
             self.avoid_weight,
@@ -167,6 +174,20 @@ impl BoidParams {
             .max(self.alignment.radius)
             .max(self.separation.radius)
             .max(law)
+    }
+}
+
+/// `v` with its length clamped into `[min, max]` (`max` as glam's `clamp_length_max`, to the
+/// bit); a boid at rest stays at rest (it has no heading to speed up along).
+#[inline]
+pub fn clamp_speed(v: Vec3, min: f32, max: f32) -> Vec3 {
+    let s2 = v.length_squared();
+    if s2 > max * max {
+        max * (v / s2.sqrt())
+    } else if s2 < min * min && s2 > 0.0 {
+        min * (v / s2.sqrt())
+    } else {
+        v
     }
 }
 
@@ -335,8 +356,8 @@ impl Flock {
             }
             semi_implicit_euler_step(p, v, self.forces[i], dt);
             // Clamp the speed after the velocity update, then redo the position with it.
-            let clamped =
-                v.clamp_length_max(params.max_speed * if Some(i) == predator { 1.3 } else { 1.0 });
+            let top = params.max_speed * if Some(i) == predator { 1.3 } else { 1.0 };
+            let clamped = clamp_speed(*v, params.min_speed.min(top), top);
             *p += (clamped - *v) * dt;
             *v = clamped;
         }

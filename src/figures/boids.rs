@@ -78,6 +78,7 @@ impl FlockFigure {
         let params = BoidParams {
             bounds: Vec3::new(3.0, 1.5, 3.0),
             max_speed: 1.8,
+            min_speed: 1.2,
             ..Default::default()
         };
         let flock = Flock::new(300, &params, 1).expect("valid defaults");
@@ -212,6 +213,12 @@ impl FlockFigure {
         Ok(())
     }
 
+    /// Minimum speed, m/s, in [0, 10] (above the maximum speed it acts as the maximum).
+    pub fn set_min_speed(&mut self, speed: f32) -> Result<(), String> {
+        self.params.min_speed = in_range("min speed", speed, 0.0, 10.0)?;
+        Ok(())
+    }
+
     /// Maximum steering acceleration, m/s², in [0.1, 50].
     pub fn set_max_force(&mut self, force: f32) -> Result<(), String> {
         self.params.max_force = in_range("max force", force, 0.1, 50.0)?;
@@ -325,10 +332,11 @@ impl FlockFigure {
         };
         format!(
             "{} boids stepped on the GPU by a compute shader, at t = {} s (the same rules; \
-             neighbours by the naive O(N²) loop, one thread per boid){roles}; speed at most {} \
-             m/s. The order plot is empty: its samples need the flock on the CPU.",
+             neighbours by the naive O(N²) loop, one thread per boid){roles}; speed between {} \
+             and {} m/s. The order plot is empty: its samples need the flock on the CPU.",
             self.flock.len(),
             format_number(self.steps_done as f32 * SIM_DT),
+            format_number(self.params.min_speed.min(self.params.max_speed)),
             format_number(self.params.max_speed),
         )
     }
@@ -445,7 +453,7 @@ impl FlockFigure {
         format!(
             "{} boids, {} search; the orange boid sees {count} {} within {} m and steers \
              at {} m/s² (purple arrow, {STEER_ARROW_M_PER_MS2} m per m/s², drawn at most {STEER_ARROW_MAX_M} m long; the force is at \
-             most {}); speed at most {} m/s. Polarisation φ = {:.2} (1: all head the same way), \
+             most {}); speed between {} and {} m/s. Polarisation φ = {:.2} (1: all head the same way), \
              mean speed {:.2} m/s.",
             self.flock.len(),
             if self.search == Search::Grid {
@@ -457,6 +465,7 @@ impl FlockFigure {
             format_number(radius),
             format_number(steer.length()),
             format_number(self.params.max_force),
+            format_number(self.params.min_speed.min(self.params.max_speed)),
             format_number(self.params.max_speed),
             self.polarisation(),
             self.speed_ratio() * self.params.max_speed,

@@ -433,7 +433,7 @@ pub fn boid_rows(
             16.0 * sq(params.search_radius()),
         ),
         [n as u32, params.obstacles.len() as u32, 0, 0],
-        frow(params.avoid_weight, 0.0, 0.0, 0.0),
+        frow(params.avoid_weight, params.min_speed, 0.0, 0.0),
     ];
     // Looks as the CPU figure draws them (src/figures/boids.rs).
     for (c, r) in [

@@ -91,6 +91,11 @@ impl FlockScene {
     pub fn set_max_speed(&mut self, v: f32) -> Result<(), JsError> {
         self.scene.set_max_speed(v).map_err(js)
     }
+
+    #[wasm_bindgen(js_name = setMinSpeed)]
+    pub fn set_min_speed(&mut self, v: f32) -> Result<(), JsError> {
+        self.scene.set_min_speed(v).map_err(js)
+    }
     #[wasm_bindgen(js_name = setMaxForce)]
     pub fn set_max_force(&mut self, f: f32) -> Result<(), JsError> {
         self.scene.set_max_force(f).map_err(js)

@@ -16,7 +16,7 @@ struct Params {
     leader: vec4<f32>,    // target xyz of the leader this step, w: leader weight (0: none)
     predator: vec4<f32>,  // flee radius², flee weight, 1 = on, predator search radius²
     counts: vec4<u32>,    // boids, obstacles, unused, unused
-    avoid: vec4<f32>,     // x: avoid weight
+    avoid: vec4<f32>,     // x: avoid weight, y: min speed
     looks: array<vec4<f32>, 3>,  // boid, leader, predator: linear RGB, w: sprite radius (m)
     obstacles: array<vec4<f32>, 8>,
 };
@@ -36,6 +36,15 @@ var<workgroup> tile: array<Boid, 64>;
 fn clamp_length(v: vec3<f32>, max_len: f32) -> vec3<f32> {
     let l2 = dot(v, v);
     if (l2 > max_len * max_len) { return v * (max_len / sqrt(l2)); }
+    return v;
+}
+
+// v with its length clamped into [lo, hi] (BoidParams::min_speed and max_speed, clamp_speed in
+// src/boids/mod.rs); a boid at rest stays at rest.
+fn clamp_speed(v: vec3<f32>, lo: f32, hi: f32) -> vec3<f32> {
+    let l2 = dot(v, v);
+    if (l2 > hi * hi) { return v * (hi / sqrt(l2)); }
+    if (l2 < lo * lo && l2 > 0.0) { return v * (lo / sqrt(l2)); }
     return v;
 }
 
@@ -135,7 +144,8 @@ fn step(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     } else {
         nv = v + force * dt;
         np = p + nv * dt;
-        let clamped = clamp_length(nv, params.misc.z * select(1.0, 1.3, i == predator));
+        let top = params.misc.z * select(1.0, 1.3, i == predator);
+        let clamped = clamp_speed(nv, min(params.avoid.y, top), top);
         np += (clamped - nv) * dt;
         nv = clamped;
     }
