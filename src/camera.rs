@@ -42,6 +42,21 @@ impl Default for OrbitCamera {
 }
 
 impl OrbitCamera {
+    /// The camera that the page's `viewer.setCamera(x, y, z, distance, yaw, pitch)` places (a
+    /// figure's `view()` returns these six numbers): aimed at `(x, y, z)` from `distance`, turned
+    /// by yaw and pitch from the view along −Z (pitch clamped as by [`OrbitCamera::orbit`]).
+    pub fn from_view([x, y, z, distance, yaw_rad, pitch_rad]: [f32; 6]) -> Self {
+        let mut camera = Self {
+            target: Vec3::new(x, y, z),
+            distance,
+            yaw_rad: 0.0,
+            pitch_rad: 0.0,
+            ..Self::default()
+        };
+        camera.orbit(yaw_rad, pitch_rad);
+        camera
+    }
+
     /// Position of the eye in world space.
     pub fn eye(&self) -> Vec3 {
         let (sy, cy) = self.yaw_rad.sin_cos();

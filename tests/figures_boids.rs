@@ -252,16 +252,9 @@ fn the_flock_note_counts_neighbours_in_the_right_number() {
 }
 
 /// Where `world` lands on a `w × h` canvas seen by the page's camera `view` (setCamera's six
-/// arguments: the Viewer zeroes yaw and pitch, then orbits by them).
+/// arguments).
 fn on_canvas(view: [f32; 6], w: f32, h: f32, world: Vec3) -> glam::Vec2 {
-    let mut camera = inbetween::camera::OrbitCamera {
-        target: Vec3::new(view[0], view[1], view[2]),
-        distance: view[3],
-        yaw_rad: 0.0,
-        pitch_rad: 0.0,
-        ..Default::default()
-    };
-    camera.orbit(view[4], view[5]);
+    let camera = inbetween::camera::OrbitCamera::from_view(view);
     let view_proj = camera.projection(w / h) * camera.view();
     inbetween::camera::project_to_canvas(view_proj, glam::Vec2::new(w, h), world).unwrap()
 }

@@ -124,11 +124,10 @@ impl Viewer {
         ] {
             super::finite(name, v)?;
         }
-        self.camera.target = glam::Vec3::new(x, y, z);
-        self.camera.distance = super::in_range("distance", distance, 0.01, 1e4)?;
-        self.camera.yaw_rad = 0.0;
-        self.camera.pitch_rad = 0.0;
-        self.camera.orbit(yaw_rad, pitch_rad);
+        let distance = super::in_range("distance", distance, 0.01, 1e4)?;
+        let placed = OrbitCamera::from_view([x, y, z, distance, yaw_rad, pitch_rad]);
+        (self.camera.target, self.camera.distance) = (placed.target, placed.distance);
+        (self.camera.yaw_rad, self.camera.pitch_rad) = (placed.yaw_rad, placed.pitch_rad);
         Ok(())
     }
 
