@@ -123,13 +123,19 @@ fn force_laws_attract_far_and_repel_near() {
 #[test]
 fn speed_stays_between_the_minimum_and_the_maximum() {
     let params = BoidParams::default();
-    assert!(params.min_speed >= 0.5 * params.max_speed, "the start is not above the minimum");
+    assert!(
+        params.min_speed >= 0.5 * params.max_speed,
+        "the start is not above the minimum"
+    );
     let mut flock = Flock::new(300, &params, 4).unwrap();
     for _ in 0..120 {
         flock.step(&params, Search::Grid, 1.0 / 60.0);
         for v in &flock.velocities {
             let s = v.length();
-            assert!(s >= params.min_speed * 0.9999 && s <= params.max_speed * 1.0001, "{s}");
+            assert!(
+                s >= params.min_speed * 0.9999 && s <= params.max_speed * 1.0001,
+                "{s}"
+            );
         }
     }
     use inbetween::boids::clamp_speed;

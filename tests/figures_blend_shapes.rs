@@ -55,7 +55,10 @@ fn a_paused_face_is_blended_once() {
     assert!(!f.differential.take_dirty() && !f.full.take_dirty());
     assert_eq!(f.full.positions, before);
     f.draw(&mut frame, IDS, 1.4).unwrap();
-    assert!(f.differential.take_dirty() && f.full.take_dirty(), "a new time");
+    assert!(
+        f.differential.take_dirty() && f.full.take_dirty(),
+        "a new time"
+    );
     f.draw(&mut frame, IDS, 1.4).unwrap();
     f.set_weight(0, 0.2).unwrap();
     f.draw(&mut frame, IDS, 1.4).unwrap();

@@ -1,5 +1,8 @@
 //! Native tests of lesson 12's figures (src/figures/boids.rs).
 
+#[path = "support/canvas.rs"]
+mod canvas;
+use canvas::on_canvas;
 use glam::Vec3;
 use inbetween::boids;
 use inbetween::draw::Frame;
@@ -249,14 +252,6 @@ fn the_flock_note_counts_neighbours_in_the_right_number() {
         );
     }
     assert!(seen_one, "some field of view shows exactly one neighbour");
-}
-
-/// Where `world` lands on a `w × h` canvas seen by the page's camera `view` (setCamera's six
-/// arguments).
-fn on_canvas(view: [f32; 6], w: f32, h: f32, world: Vec3) -> glam::Vec2 {
-    let camera = inbetween::camera::OrbitCamera::from_view(view);
-    let view_proj = camera.projection(w / h) * camera.view();
-    inbetween::camera::project_to_canvas(view_proj, glam::Vec2::new(w, h), world).unwrap()
 }
 
 #[test]

@@ -1,6 +1,9 @@
 //! Native tests of lesson 11's figures (src/figures/particles.rs): what they draw, what they
 //! reject, and what their notes say about the student's exercises.
 
+#[path = "support/canvas.rs"]
+mod canvas;
+use canvas::on_canvas;
 use glam::Vec3;
 use inbetween::draw::Frame;
 use inbetween::exercises::run::{direct, Failure, Flat};
@@ -406,14 +409,6 @@ fn the_squash_ball_keeps_its_volume() {
     }
     assert!(squashed);
     assert!(scene.set_squash(0.9).is_err() && scene.set_stretch(-0.1).is_err());
-}
-
-/// Where `world` lands on a `w × h` canvas seen by the page's camera `view` (setCamera's six
-/// arguments).
-fn on_canvas(view: [f32; 6], w: f32, h: f32, world: Vec3) -> glam::Vec2 {
-    let camera = inbetween::camera::OrbitCamera::from_view(view);
-    let view_proj = camera.projection(w / h) * camera.view();
-    inbetween::camera::project_to_canvas(view_proj, glam::Vec2::new(w, h), world).unwrap()
 }
 
 #[test]

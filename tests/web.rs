@@ -156,18 +156,37 @@ async fn an_unchanged_frame_is_not_drawn_again() {
             .mesh(id, Mat4::from_translation(Vec3::X * x), Vec3::ONE);
         let fingerprint = renderer.frame.fingerprint();
         renderer.render(gpu, camera, fingerprint).expect("drawn");
-        assert!(renderer.frame.meshes.is_empty(), "the frame is cleared either way");
+        assert!(
+            renderer.frame.meshes.is_empty(),
+            "the frame is cleared either way"
+        );
         renderer.canvas_frames()
     };
     assert_eq!(present(&mut renderer, &gpu, &camera, 0.0), 1);
-    assert_eq!(present(&mut renderer, &gpu, &camera, 0.0), 1, "same frame: kept");
-    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 2, "the frame moved");
+    assert_eq!(
+        present(&mut renderer, &gpu, &camera, 0.0),
+        1,
+        "same frame: kept"
+    );
+    assert_eq!(
+        present(&mut renderer, &gpu, &camera, 0.1),
+        2,
+        "the frame moved"
+    );
     camera.orbit(0.1, 0.0);
-    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 3, "the camera moved");
+    assert_eq!(
+        present(&mut renderer, &gpu, &camera, 0.1),
+        3,
+        "the camera moved"
+    );
     renderer
         .update_mesh(&gpu, id, &data.positions, &data.normals)
         .expect("same vertex count");
-    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 4, "a mesh changed");
+    assert_eq!(
+        present(&mut renderer, &gpu, &camera, 0.1),
+        4,
+        "a mesh changed"
+    );
     assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 4);
     gpu.resize(80, 48);
     renderer.canvas_cleared();
@@ -179,8 +198,15 @@ async fn an_unchanged_frame_is_not_drawn_again() {
         mapped_at_creation: false,
     });
     renderer.gpu_points = vec![(buffer, 0)];
-    assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 6, "compute points");
-    assert!(renderer.gpu_points.is_empty(), "drawn once, then cleared with the frame");
+    assert_eq!(
+        present(&mut renderer, &gpu, &camera, 0.1),
+        6,
+        "compute points"
+    );
+    assert!(
+        renderer.gpu_points.is_empty(),
+        "drawn once, then cleared with the frame"
+    );
     assert_eq!(present(&mut renderer, &gpu, &camera, 0.1), 6);
 }
 

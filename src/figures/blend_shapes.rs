@@ -270,11 +270,7 @@ impl FaceFigure {
                 )
                 .map_err(|e| e.to_string())?;
             shapes
-                .apply_full(
-                    &weights,
-                    &mut self.full.positions,
-                    &mut self.full.normals,
-                )
+                .apply_full(&weights, &mut self.full.positions, &mut self.full.normals)
                 .map_err(|e| e.to_string())?;
             self.differential.mark_dirty();
             self.full.mark_dirty();

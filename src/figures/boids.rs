@@ -106,15 +106,11 @@ impl FlockFigure {
     /// boids); in between for a flock that has split into groups heading different ways, or
     /// that mills about.
     pub fn polarisation(&self) -> f32 {
-        let (leader, predator) = self.flock.roles(&self.params);
-        let mut sum = Vec3::ZERO;
-        let mut n = 0usize;
-        for (i, v) in self.flock.velocities.iter().enumerate() {
-            if Some(i) != leader && Some(i) != predator {
-                sum += v.normalize_or_zero();
-                n += 1;
-            }
-        }
+        let (sum, n) = self
+            .flock_velocities()
+            .fold((Vec3::ZERO, 0usize), |(s, n), v| {
+                (s + v.normalize_or_zero(), n + 1)
+            });
         if n == 0 {
             0.0
         } else {
@@ -122,17 +118,21 @@ impl FlockFigure {
         }
     }
 
+    /// The velocities of the flock's ordinary boids: all but the leader and the predator.
+    fn flock_velocities(&self) -> impl Iterator<Item = Vec3> + '_ {
+        let (leader, predator) = self.flock.roles(&self.params);
+        let velocities = self.flock.velocities.iter().enumerate();
+        velocities
+            .filter(move |&(i, _)| Some(i) != leader && Some(i) != predator)
+            .map(|(_, &v)| v)
+    }
+
     /// The mean speed of the flock (the leader and predator left out) over the maximum speed,
     /// in `[0, 1]`.
     pub fn speed_ratio(&self) -> f32 {
-        let (leader, predator) = self.flock.roles(&self.params);
-        let (mut sum, mut n) = (0.0, 0usize);
-        for (i, v) in self.flock.velocities.iter().enumerate() {
-            if Some(i) != leader && Some(i) != predator {
-                sum += v.length();
-                n += 1;
-            }
-        }
+        let (sum, n) = self
+            .flock_velocities()
+            .fold((0.0, 0usize), |(s, n), v| (s + v.length(), n + 1));
         if n == 0 {
             0.0
         } else {

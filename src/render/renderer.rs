@@ -594,7 +594,13 @@ impl Renderer {
             .chain(self.light_dir.to_array())
             .chain(self.clear_srgb.to_array())
             .map(|x| x.to_bits() as u64)
-            .chain([fingerprint, self.revision, self.skin.revision, w as u64, h as u64]);
+            .chain([
+                fingerprint,
+                self.revision,
+                self.skin.revision,
+                w as u64,
+                h as u64,
+            ]);
         words.fold(0xcbf2_9ce4_8422_2325u64, |h, x| {
             (h ^ x).wrapping_mul(0x0100_0000_01b3)
         })

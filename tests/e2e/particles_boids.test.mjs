@@ -9,7 +9,7 @@
 // drawn from its samples.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage, setControl } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl, pixelStats } from './browser.mjs';
 
 const site = serveDist();
 const open = (context, path, width, height) => openPage(context, site.origin + path, { width, height });
@@ -91,21 +91,17 @@ async function scrubTo(page, figure, at) {
 
 /** Pixels of `figure`'s 3D canvas close to the balls' blue (shaded #1f6fd6). */
 async function bluePixels(page, figure) {
-  const png = await page.locator(`${figure} .stage canvas`).first().screenshot();
-  return page.evaluate(async (b64) => {
-    const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
-    const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
-    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-    const ctx = canvas.getContext('2d');
-    ctx.drawImage(bitmap, 0, 0);
-    const { data } = ctx.getImageData(0, 0, bitmap.width, bitmap.height);
+  // pixelStats decodes the screenshot in the page and keeps its pixels under the key.
+  await pixelStats(page, page.locator(`${figure} .stage canvas`).first(), 'blue');
+  return page.evaluate(() => {
+    const data = window.__shots.blue;
     let n = 0;
     for (let i = 0; i < data.length; i += 4) {
       const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
       if (b > 90 && b > r + 50 && b > g + 25) n++;
     }
     return n;
-  }, png.toString('base64'));
+  });
 }
 
 test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; bouncing balls stay in view at e = 1', async () => {
