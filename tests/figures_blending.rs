@@ -191,8 +191,11 @@ fn feet_slide_only_without_synchronisation_and_root_motion_moves_the_character()
         }
         slides.push(worst);
     }
-    assert!(slides[0] < 0.05, "synchronised: {} m", slides[0]);
-    assert!(slides[1] > 3.0 * slides[0], "{slides:?}");
+    // Synchronised, what is left is the in-betweens and the blend itself (a blended foot is not
+    // the blend of the two clips' feet): about 7 cm in 1.5 s over the whole stance. Not
+    // synchronised, the feet slide metres.
+    assert!(slides[0] < 0.09, "synchronised: {} m", slides[0]);
+    assert!(slides[1] > 10.0 * slides[0], "{slides:?}");
     l.set_synchronised(true);
     l.draw(&mut frame, 3.0).unwrap();
     let at3 = l.origin();
@@ -294,7 +297,9 @@ fn body_parts_are_coloured_by_the_weight_of_b_alone() {
 #[test]
 fn the_synchronised_try_this_is_what_the_note_says() {
     // Lesson 08's "Try this" under Figure 2: at the default speed the note's slide is a few
-    // millimetres synchronised and tens of centimetres (at times over a metre) not synchronised.
+    // centimetres synchronised and most of a metre (at times over a metre) not synchronised.
+    // (It read a few millimetres when only the lowest 5 mm of each stance counted as planted:
+    // about a seventh of the samples. The clips' contacts plant a foot for its whole stance.)
     let mut l = LocomotionFigure::new();
     let mut frame = Frame::default();
     let times: Vec<f32> = (0..12).map(|k| 1.5 + 0.53 * k as f32).collect();
@@ -315,9 +320,14 @@ fn the_synchronised_try_this_is_what_the_note_says() {
             least[i] = least[i].min(l.slide_m());
         }
     }
-    assert!(worst[0] < 0.01, "synchronised: up to {} m", worst[0]);
     assert!(
-        least[1] > 0.1 && worst[1] > 1.0 && worst[1] < 1.5,
+        least[0] > 0.01 && worst[0] < 0.09,
+        "synchronised: {} to {} m",
+        least[0],
+        worst[0]
+    );
+    assert!(
+        least[1] > 0.5 && worst[1] > 1.0 && worst[1] < 1.5,
         "not synchronised: {} to {} m",
         least[1],
         worst[1]
@@ -326,9 +336,13 @@ fn the_synchronised_try_this_is_what_the_note_says() {
 
 #[test]
 fn each_clip_alone_leaves_its_planted_feet_in_place() {
-    // At the ends of the speed range one clip plays alone, synchronised or not: the note's slide
-    // is a few millimetres. The walk alone slid 4.6 cm in 1.5 s when the travelling clips'
-    // root keys cancelled only the stance foot's forward step, not its sideways one.
+    // At the ends of the speed range one clip plays alone, synchronised or not: the root keys
+    // cancel the planted foot's step at every key, and what is left is the in-betweens (the
+    // root moves in a line between keys, the foot along an arc): about 1.7 cm in 1.5 s for the
+    // walk and 5 to 7 cm for the faster run, counted over the whole stance. (Counting only
+    // the lowest 5 mm of each stance, the walk read 0.3 cm.) With the root keys cancelling only
+    // the stance foot's forward step, not its sideways one, the walk slid 28 cm and the run
+    // 70 cm in 1.5 s.
     let mut l = LocomotionFigure::new();
     let mut frame = Frame::default();
     let (lo, hi) = l.speed_range();
@@ -338,8 +352,9 @@ fn each_clip_alone_leaves_its_planted_feet_in_place() {
             l.set_synchronised(synchronised);
             for t in [2.0, 3.3, 5.0, 6.1] {
                 l.draw(&mut frame, t).unwrap();
+                let bound = if speed == lo { 0.025 } else { 0.08 };
                 assert!(
-                    l.slide_m() < 0.006,
+                    l.slide_m() < bound,
                     "{speed} m/s, synchronised {synchronised}, at {t} s: {} m",
                     l.slide_m()
                 );
@@ -418,7 +433,7 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
         let [t, gap_on, gap_off, slide_on, slide_off] = *row;
         assert_eq!(gap_on, 0.0, "synchronised clips are always in step");
         assert!((0.0..=0.5).contains(&gap_off), "{gap_off} at {t} s");
-        assert!(slide_on < 1.0, "synchronised: {slide_on} cm at {t} s");
+        assert!(slide_on < 9.0, "synchronised: {slide_on} cm at {t} s");
         // The playhead's value is the note's, in both settings.
         if k % 16 == 3 {
             for (synchronised, want) in [(true, slide_on), (false, slide_off)] {
@@ -439,7 +454,8 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
     let (lo, hi) = off[60..]
         .iter()
         .fold((f32::INFINITY, 0.0f32), |(a, b), &x| (a.min(x), b.max(x)));
-    assert!(lo < 40.0 && hi > 90.0, "{lo} to {hi} cm");
+    // (70 to 142 cm at the default speed: never near the synchronised few centimetres.)
+    assert!(hi > 1.8 * lo && lo > 30.0, "{lo} to {hi} cm");
     let gaps: Vec<f32> = rows.iter().map(|r| r[2]).collect();
     assert!(gaps.iter().any(|&g| g < 0.02) && gaps.iter().any(|&g| g > 0.48));
     // The Try this: the slide peaks half a second to a second after the gap reaches half a
@@ -479,8 +495,8 @@ fn the_plots_fixed_ranges_hold_every_speed() {
             assert!(row[1..3].iter().all(|g| (gap_lo..=gap_hi).contains(g)));
             assert!(row[3..5].iter().all(|x| (slide_lo..=slide_hi).contains(x)));
             largest = largest.max(row[4]);
-            // The caption: synchronised, the slide is a few millimetres at every speed.
-            assert!(row[3] < 1.0, "synchronised at {speed} m/s: {} cm", row[3]);
+            // The caption: synchronised, the slide is a few centimetres at every speed.
+            assert!(row[3] < 9.0, "synchronised at {speed} m/s: {} cm", row[3]);
         }
     }
     assert!(largest > 0.85 * slide_hi, "largest slide {largest} cm");
@@ -493,4 +509,75 @@ fn the_plots_fixed_ranges_hold_every_speed() {
         .map(|r| r[3].max(r[4]))
         .fold(0.0f32, f32::max);
     assert!(flat < 0.03 * slide_hi, "{flat} cm at 0.58 m/s");
+}
+
+#[test]
+fn footprints_and_slide_follow_the_clips_contacts() {
+    // Which foot is planted comes from the travelling clips' contacts, blended as the poses
+    // are, not from the ankle's height: it used to be "within 5 mm of 6 cm", which a stance
+    // ankle rising to 8.7 cm left for about a seventh of the samples at mid speeds.
+    use inbetween::skeleton::{blend_contacts, synchronised_cycle, RootMotion};
+    let (skeleton, _) = human::simple_human();
+    let clip = |i| {
+        Clip::from_raw(
+            &human::travelling_clip(&skeleton, i, 25).unwrap(),
+            &skeleton,
+        )
+    };
+    let (walk, run) = (clip(1).unwrap(), clip(2).unwrap());
+    let motion = [RootMotion::from_clip(&walk), RootMotion::from_clip(&run)];
+    let mut l = LocomotionFigure::new();
+    let mut frame = Frame::default();
+    let (lo, hi) = l.speed_range();
+    for speed in [lo, 0.5 * (lo + hi), hi] {
+        l.set_speed(speed).unwrap();
+        let w = l.weight();
+        let (cycle, _, _) = synchronised_cycle(&motion[0], &motion[1], w);
+        for synchronised in [true, false] {
+            l.set_synchronised(synchronised);
+            let t = 3.1;
+            l.draw(&mut frame, t).unwrap();
+            let drawn = l.footprint_feet().to_vec();
+            assert_eq!(drawn.len(), l.footprints().len());
+            // The draw's samples: 61 over the last 1.5 s.
+            let mut want = Vec::new();
+            for k in 0..=60 {
+                let s = t - 1.5 * (1.0 - k as f32 / 60.0);
+                let planted = l.planted_at(s);
+                // The clips' own contacts: at the same phase, or at each clip's own time.
+                let (ta, tb) = if synchronised {
+                    let phase = (s / cycle).rem_euclid(1.0);
+                    (phase * walk.duration_sec(), phase * run.duration_sec())
+                } else {
+                    (s, s)
+                };
+                let mut expected = [false; 2];
+                blend_contacts(&walk, ta, &run, tb, w, &mut expected);
+                assert_eq!(
+                    planted, expected,
+                    "{speed} m/s, synchronised {synchronised}, {s} s"
+                );
+                want.extend((0..2).filter(|&f| planted[f]));
+            }
+            assert_eq!(drawn, want, "{speed} m/s, synchronised {synchronised}");
+            // One foot is down at every sample (each clip plants one foot at a time; where the
+            // two disagree at w = 1/2 both would count).
+            if synchronised || w == 0.0 || w == 1.0 {
+                assert_eq!(drawn.len(), 61);
+            }
+            // The footprints lie on the ground, wherever the ankle was.
+            assert!(l.footprints().iter().all(|p| p.y.abs() < 0.01));
+        }
+    }
+    // The slide counts the whole stance: the walk alone, played where the height rule
+    // planted few samples, now has a footprint for every sample and a slide of a centimetre or
+    // two (the in-betweens), against the few millimetres the height rule saw.
+    l.set_speed(lo).unwrap();
+    l.set_synchronised(true);
+    l.draw(&mut frame, 3.1).unwrap();
+    assert!(
+        (0.005..0.025).contains(&l.slide_m()),
+        "walk alone: {} m",
+        l.slide_m()
+    );
 }

@@ -7,7 +7,8 @@
 //!
 //! [`LocomotionFigure`]: the travelling walk and run blended for a speed, synchronised (normalised
 //! time) or not, with root motion extracted and applied to the character or left in the pose; the
-//! footprints of the last second and a half show whether the feet slide.
+//! footprints of the last second and a half show whether the feet slide. Which foot is planted
+//! comes from the clips' own contacts ([`crate::skeleton::Contact`]), blended as the poses are.
 
 use super::{
     compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
@@ -15,9 +16,9 @@ use super::{
 };
 use crate::exercises::run;
 use crate::skeleton::{
-    add_additive, crossfade_transform, human, local_to_model, make_additive, sample_synchronised,
-    subtree_mask, synchronised_cycle, weight_for_speed, Clip, ClipCursor, Pose, RootMotion,
-    Skeleton,
+    add_additive, blend_contacts, crossfade_transform, human, local_to_model, make_additive,
+    sample_synchronised, subtree_mask, synchronised_contacts, synchronised_cycle, weight_for_speed,
+    Clip, ClipCursor, Pose, RootMotion, Skeleton,
 };
 use crate::transform::JointShape;
 use glam::{Affine3A, EulerRot, Mat4, Quat, Vec3};
@@ -419,6 +420,12 @@ pub struct LocomotionFigure {
     footprints: Vec<Vec3>,
     /// The ankles' joints (left, right).
     feet: [usize; 2],
+    /// Each foot's contact in the walk's [`Clip::contacts`] (left, right).
+    foot_contacts: [usize; 2],
+    /// The walk's contacts blended with the run's at the last pose, one per contact of the walk.
+    planted: Vec<bool>,
+    /// Which foot (0 left, 1 right) left each footprint of the last draw.
+    footprint_feet: Vec<usize>,
     /// How far the planted feet slid over the footprint window, metres, at the last draw.
     slide_m: f32,
     /// Where the character's origin was at the last draw (before wrapping onto the track).
@@ -431,8 +438,8 @@ impl Default for LocomotionFigure {
     }
 }
 
-/// The ankle's height with the foot flat on the ground, metres.
-const CONTACT_HEIGHT: f32 = 0.06;
+/// How high above the ground the footprints are drawn, metres (just clear of the grid).
+const FOOTPRINT_HEIGHT: f32 = 0.005;
 /// The character walks along z on a loop this long (metres), so it stays in view.
 const TRACK_LENGTH: f32 = 4.0;
 /// How far back in time the footprints go, seconds, and how many samples.
@@ -443,9 +450,10 @@ pub const LOCOMOTION_LOOP_SEC: f32 = 8.0;
 /// The y ranges of the locomotion figure's plots, fixed so that lines at different speeds
 /// compare and a small slide reads as small (an autoscaled 2 cm looked like a metre):
 /// `[phase gap from, to (cycles), slide from, to (cm)]`. The gap lies in [0, 0.5]; the largest
-/// slide at any speed is 152 cm (not synchronised, near 0.85 m/s). A little below 0, so a line
-/// at 0 is not cut by the plot's edge.
-pub const LOCOMOTION_PLOT_RANGES: [f32; 4] = [-0.02, 0.52, -4.0, 160.0];
+/// slide at any speed is 395 cm (not synchronised, just below run weight ½, where the walk still
+/// decides which foot is planted while the run's half of the pose swings it). A little below 0,
+/// so a line at 0 is not cut by the plot's edge.
+pub const LOCOMOTION_PLOT_RANGES: [f32; 4] = [-0.02, 0.52, -10.0, 410.0];
 
 impl LocomotionFigure {
     /// Halfway between walking and running speed, synchronised, root motion on.
@@ -459,7 +467,13 @@ impl LocomotionFigure {
         let motion = [RootMotion::from_clip(&walk), RootMotion::from_clip(&run)];
         let speed = 0.5 * (motion[0].speed() + motion[1].speed());
         let n = skeleton.len();
+        let feet = ["foot.L", "foot.R"].map(|name| skeleton.find(name).expect("a foot"));
+        let foot_contacts = feet.map(|f| walk.contact_of(f).expect("the walk plants each foot"));
         Self {
+            planted: vec![false; walk.contacts().len()],
+            foot_contacts,
+            footprint_feet: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
+            feet,
             walk,
             run,
             motion,
@@ -470,7 +484,6 @@ impl LocomotionFigure {
             scratch: skeleton.rest_pose(),
             model: vec![Affine3A::IDENTITY; n],
             footprints: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
-            feet: ["foot.L", "foot.R"].map(|name| skeleton.find(name).expect("a foot")),
             slide_m: 0.0,
             origin: Vec3::ZERO,
             skeleton,
@@ -515,9 +528,27 @@ impl LocomotionFigure {
         self.origin
     }
 
-    /// The footprints of the last draw, relative to the character.
+    /// The footprints of the last draw, relative to the character (on the ground, at the
+    /// ankle's x and z).
     pub fn footprints(&self) -> &[Vec3] {
         &self.footprints
+    }
+
+    /// Which foot (0 left, 1 right) left each of [`LocomotionFigure::footprints`].
+    pub fn footprint_feet(&self) -> &[usize] {
+        &self.footprint_feet
+    }
+
+    /// Whether each foot (left, right) is planted at `time_sec`, as the figure decides it for
+    /// its footprints and its slide: the travelling clips' contacts blended like their poses
+    /// (at the same phase synchronised, at each clip's own time otherwise). Poses the figure.
+    pub fn planted_at(&mut self, time_sec: f32) -> [bool; 2] {
+        self.pose_at(time_sec);
+        self.planted_feet()
+    }
+
+    fn planted_feet(&self) -> [bool; 2] {
+        self.foot_contacts.map(|c| self.planted[c])
     }
 
     /// How far the drawn character jumps back at a loop with root motion left in the pose,
@@ -565,6 +596,7 @@ impl LocomotionFigure {
                 Some(rm),
                 &mut self.pose,
             );
+            synchronised_contacts(&self.walk, &self.run, w, phase, &mut self.planted);
             let travel = self.motion[0]
                 .cycle_travel
                 .lerp(self.motion[1].cycle_travel, w);
@@ -582,6 +614,7 @@ impl LocomotionFigure {
             );
             self.walk.sample(ta, &mut cursors[0], &mut self.pose);
             self.run.sample(tb, &mut cursors[1], &mut self.scratch);
+            blend_contacts(&self.walk, ta, &self.run, tb, w, &mut self.planted);
             let da = self.motion[0].extract(&mut self.pose);
             let db = self.motion[1].extract(&mut self.scratch);
             let pa = ka * self.motion[0].cycle_travel + da;
@@ -601,9 +634,9 @@ impl LocomotionFigure {
     }
 
     /// Poses at `time_sec` and returns each foot's ankle (left, right) where the travel has
-    /// taken it (see [`LocomotionFigure::pose_at`]'s `ground`) and where it is drawn, relative to
-    /// the character's drawn origin at `now`.
-    fn feet_at(&mut self, time_sec: f32, now: Vec3) -> [(Vec3, Vec3); 2] {
+    /// taken it (see [`LocomotionFigure::pose_at`]'s `ground`), where it is drawn, relative to
+    /// the character's drawn origin at `now`, and whether it is planted.
+    fn feet_at(&mut self, time_sec: f32, now: Vec3) -> [(Vec3, Vec3, bool); 2] {
         let (origin, ground) = self.pose_at(time_sec);
         local_to_model(
             self.skeleton.parents(),
@@ -611,9 +644,10 @@ impl LocomotionFigure {
             self.skeleton.scale_mode(),
             &mut self.model,
         );
-        self.feet.map(|joint| {
-            let p = Vec3::from(self.model[joint].translation);
-            (p + ground, p + origin - now)
+        let planted = self.planted_feet();
+        [0, 1].map(|f| {
+            let p = Vec3::from(self.model[self.feet[f]].translation);
+            (p + ground, p + origin - now, planted[f])
         })
     }
 
@@ -641,8 +675,8 @@ impl LocomotionFigure {
         let mut last: [Option<Vec3>; 2] = [None, None];
         for (i, moved) in step.iter_mut().enumerate() {
             let t = (i as f32 - FOOTPRINT_SAMPLES as f32) * dt;
-            for (f, (ground, _)) in self.feet_at(t, Vec3::ZERO).into_iter().enumerate() {
-                if ground.y < CONTACT_HEIGHT + 0.005 {
+            for (f, (ground, _, planted)) in self.feet_at(t, Vec3::ZERO).into_iter().enumerate() {
+                if planted {
                     if let Some(q) = last[f] {
                         *moved += Vec3::new(ground.x - q.x, 0.0, ground.z - q.z).length();
                     }
@@ -695,14 +729,17 @@ impl LocomotionFigure {
         // The slide is measured where the travel has taken each foot, so the snap-back at a loop
         // (root motion left in the pose) is not counted as sliding.
         self.footprints.clear();
+        self.footprint_feet.clear();
         let (now, _) = self.pose_at(t);
         let mut slide = 0.0f32;
         let mut last: [Option<Vec3>; 2] = [None, None];
         for k in 0..=FOOTPRINT_SAMPLES {
             let s = t - FOOTPRINT_SEC * (1.0 - k as f32 / FOOTPRINT_SAMPLES as f32);
-            for (f, (ground, drawn)) in self.feet_at(s, now).into_iter().enumerate() {
-                if ground.y < CONTACT_HEIGHT + 0.005 {
-                    self.footprints.push(drawn);
+            for (f, (ground, drawn, planted)) in self.feet_at(s, now).into_iter().enumerate() {
+                if planted {
+                    self.footprints
+                        .push(Vec3::new(drawn.x, FOOTPRINT_HEIGHT, drawn.z));
+                    self.footprint_feet.push(f);
                     if let Some(q) = last[f] {
                         slide += Vec3::new(ground.x - q.x, 0.0, ground.z - q.z).length();
                     }
@@ -726,11 +763,7 @@ impl LocomotionFigure {
         let place = Vec3::new(origin.x, 0.0, z);
         frame.grid(16, 0.25);
         for p in &self.footprints {
-            frame.point(
-                *p + place - Vec3::Y * (CONTACT_HEIGHT - 0.005),
-                0.018,
-                palette::PURPLE,
-            );
+            frame.point(*p + place, 0.018, palette::PURPLE);
         }
         draw_character(
             frame,

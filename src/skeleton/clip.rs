@@ -79,6 +79,9 @@ pub enum ClipError {
     ZeroRotation { joint: usize, key: usize },
     /// More merged key times than [`MAX_CLIP_KEYS`].
     TooManyKeys { count: usize },
+    /// A [`Contact`] is invalid: its joint is not in the clip, or an interval is empty, not
+    /// finite, out of order or outside `[0, duration]`.
+    BadContact { joint: usize, reason: String },
 }
 
 impl fmt::Display for ClipError {
@@ -104,6 +107,7 @@ impl fmt::Display for ClipError {
             Self::TooManyKeys { count } => {
                 write!(f, "the clip has {count} key times; at most {MAX_CLIP_KEYS} are allowed")
             }
+            Self::BadContact { joint, reason } => write!(f, "contact of joint {joint}: {reason}"),
         }
     }
 }
@@ -129,7 +133,66 @@ impl JointTracks {
     }
 }
 
-/// The editable clip: one [`Track`] per animated channel, each with its own key times.
+/// When one joint (a foot) is on the ground: its stance intervals in clip time, part of the clip
+/// like its keys. Locomotion reads which foot is planted from here (the animator's, or the clip
+/// maker's, decision) rather than guessing it from the foot's height, which a stance foot does
+/// not keep exactly.
+/// ```text
+/// in contact at clip time t  ⇔  start_i ≤ t < end_i  for some interval i
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Contact {
+    joint: usize,
+    intervals: Vec<[f32; 2]>,
+}
+
+impl Contact {
+    /// Joint `joint` is in contact during each `[start, end)` of `intervals` (seconds): finite,
+    /// `start < end`, in order and not overlapping (one may start where the previous ends). The
+    /// clip checks the joint and the duration ([`RawClip::with_contacts`]).
+    pub fn new(joint: usize, intervals: Vec<[f32; 2]>) -> Result<Self, ClipError> {
+        let bad = |reason: String| Err(ClipError::BadContact { joint, reason });
+        let mut previous_end = f32::NEG_INFINITY;
+        for &[start, end] in &intervals {
+            if !(start.is_finite() && end.is_finite() && start < end) {
+                return bad(format!(
+                    "the interval [{start}, {end}) s is empty or not finite"
+                ));
+            }
+            if start < previous_end {
+                return bad(format!(
+                    "the interval [{start}, {end}) s starts before the previous one ends ({previous_end} s)"
+                ));
+            }
+            previous_end = end;
+        }
+        Ok(Self { joint, intervals })
+    }
+
+    /// The joint that touches the ground.
+    pub fn joint(&self) -> usize {
+        self.joint
+    }
+
+    /// The stance intervals, `[start, end)` in clip seconds, in order.
+    pub fn intervals(&self) -> &[[f32; 2]] {
+        &self.intervals
+    }
+
+    /// Whether the joint is in contact at clip-local time `t` (not wrapped here).
+    pub fn at(&self, t: f32) -> bool {
+        let i = self.intervals.partition_point(|iv| iv[1] <= t);
+        self.intervals.get(i).is_some_and(|iv| iv[0] <= t)
+    }
+
+    /// Seconds in contact per cycle: the intervals' total length.
+    pub fn stance_sec(&self) -> f32 {
+        self.intervals.iter().map(|iv| iv[1] - iv[0]).sum()
+    }
+}
+
+/// The editable clip: one [`Track`] per animated channel, each with its own key times, and the
+/// joints' ground [`Contact`]s (none unless given).
 #[derive(Clone, Debug, PartialEq)]
 pub struct RawClip {
     name: String,
@@ -138,6 +201,7 @@ pub struct RawClip {
     interpolation: KeyInterpolation,
     rotation_interpolation: QuatInterpolation,
     joints: Vec<JointTracks>,
+    contacts: Vec<Contact>,
 }
 
 fn track_interpolation(k: KeyInterpolation) -> Interpolation {
@@ -214,9 +278,41 @@ impl RawClip {
             interpolation: KeyInterpolation::Linear,
             rotation_interpolation: QuatInterpolation::Nlerp,
             joints,
+            contacts: Vec::new(),
         };
         clip.set_interpolation(KeyInterpolation::Linear);
         Ok(clip)
+    }
+
+    /// The clip with these ground contacts (replacing any it had). Each contact's joint must be
+    /// one of the clip's and its intervals must lie in `[0, duration]`.
+    pub fn with_contacts(mut self, contacts: Vec<Contact>) -> Result<Self, ClipError> {
+        for c in &contacts {
+            let bad = |reason: String| ClipError::BadContact {
+                joint: c.joint,
+                reason,
+            };
+            if c.joint >= self.joints.len() {
+                return Err(bad(format!("the clip has {} joints", self.joints.len())));
+            }
+            if let Some(iv) = c
+                .intervals
+                .iter()
+                .find(|iv| iv[0] < 0.0 || iv[1] > self.duration_sec)
+            {
+                return Err(bad(format!(
+                    "the interval [{}, {}) s lies outside the clip [0, {}] s",
+                    iv[0], iv[1], self.duration_sec
+                )));
+            }
+        }
+        self.contacts = contacts;
+        Ok(self)
+    }
+
+    /// The joints' ground contacts.
+    pub fn contacts(&self) -> &[Contact] {
+        &self.contacts
     }
 
     pub fn name(&self) -> &str {
@@ -438,6 +534,7 @@ pub struct Clip {
     translation_tangents: Vec<Vec3>,
     rotation_tangents: Vec<Vec4>,
     scale_tangents: Vec<Vec3>,
+    contacts: Vec<Contact>,
 }
 
 impl Clip {
@@ -488,6 +585,7 @@ impl Clip {
             rotation_tangents: vec![Vec4::ZERO; keys * n],
             scale_tangents: vec![Vec3::ZERO; keys * n],
             times,
+            contacts: raw.contacts.clone(),
         };
         // Evaluate the editable clip at each key time, linearly (exact at each channel's keys).
         let mut linear = raw.clone();
@@ -592,6 +690,27 @@ impl Clip {
     /// Clip-local time (wrapped when looping, clamped otherwise; NaN reads as 0).
     pub fn local_time(&self, time_sec: f32) -> f32 {
         local_time(time_sec, self.duration_sec, self.looping)
+    }
+
+    /// The joints' ground contacts, as the [`RawClip`] gave them.
+    pub fn contacts(&self) -> &[Contact] {
+        &self.contacts
+    }
+
+    /// Whether contact `index` (of [`Clip::contacts`]) holds at `time_sec`, wrapped or clamped
+    /// as [`Clip::sample`] does (a looping clip's duration is its time 0). `false` for a
+    /// contact the clip does not have.
+    pub fn in_contact(&self, index: usize, time_sec: f32) -> bool {
+        let mut t = self.local_time(time_sec);
+        if self.looping && t >= self.duration_sec {
+            t = 0.0;
+        }
+        self.contacts.get(index).is_some_and(|c| c.at(t))
+    }
+
+    /// The index in [`Clip::contacts`] of `joint`'s contact, if it has one.
+    pub fn contact_of(&self, joint: usize) -> Option<usize> {
+        self.contacts.iter().position(|c| c.joint == joint)
     }
 
     /// Samples every joint at `time_sec` into `pose`: one segment lookup for all joints, then

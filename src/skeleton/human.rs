@@ -457,11 +457,13 @@ pub fn benchmark_humanoid(rng: &mut Rng) -> (Skeleton, RawClip) {
 /// between keys k and k+1, with the stance foot the lower ankle at the segment's middle:
 /// root[k+1] = root[k] − (foot[k+1] − foot[k])     (x and z; the height is the clip's)
 /// ```
-/// Both x and z: the pelvis's yaw swings the planted foot sideways as well as back.
-/// so the character travels exactly as far as its planted foot pushes it back (no sliding at
-/// the keys). The last key's root is one cycle's travel ahead of the first: the clip no longer
-/// loops seamlessly by itself; [`super::RootMotion`] makes it. `None` for other clips or a bad
-/// key count.
+/// Both x and z: the pelvis's yaw swings the planted foot sideways as well as back, so the
+/// character travels exactly as far as its planted foot pushes it back (no sliding at the keys).
+/// The clip records that stance foot as its [`super::Contact`]s (left foot first, then right):
+/// each foot is planted over the segments where it is the lower one, about half the cycle, one
+/// foot at a time. The last key's root is one cycle's travel ahead of the first: the clip no
+/// longer loops seamlessly by itself; [`super::RootMotion`] makes it. `None` for other clips or
+/// a bad key count.
 pub fn travelling_clip(skeleton: &Skeleton, index: usize, keys: usize) -> Option<RawClip> {
     if !(1..=2).contains(&index) {
         return None;
@@ -487,11 +489,14 @@ pub fn travelling_clip(skeleton: &Skeleton, index: usize, keys: usize) -> Option
     }
     // Compensating z alone left the walk's planted foot sliding 5 cm in 1.5 s, sideways.
     let mut offset = vec![Vec3::ZERO; keys];
+    // stance[k]: the foot planted from key k to key k + 1 (0 left, 1 right).
+    let mut stance = Vec::with_capacity(keys - 1);
     for k in 0..keys - 1 {
         let height = |f: usize| ankles[k][f].y + ankles[k + 1][f].y;
-        let stance = if height(0) <= height(1) { 0 } else { 1 };
-        let step = ankles[k + 1][stance] - ankles[k][stance];
+        let foot = if height(0) <= height(1) { 0 } else { 1 };
+        let step = ankles[k + 1][foot] - ankles[k][foot];
         offset[k + 1] = offset[k] - Vec3::new(step.x, 0.0, step.z);
+        stance.push(foot);
     }
     let mut tracks = raw.joints().to_vec();
     let root = tracks[0].translation.as_ref()?;
@@ -507,5 +512,28 @@ pub fn travelling_clip(skeleton: &Skeleton, index: usize, keys: usize) -> Option
     } else {
         "run (travelling)"
     };
-    RawClip::new(name, raw.duration_sec(), true, tracks).ok()
+    // The foot whose step the root cancels is the planted one: record it with the clip, as
+    // stance intervals (runs of segments) per foot, so no one has to guess it from heights.
+    let times = clip.key_times();
+    let contacts = [0, 1]
+        .into_iter()
+        .map(|foot| {
+            let mut intervals: Vec<[f32; 2]> = Vec::new();
+            for (k, &planted) in stance.iter().enumerate() {
+                if planted != foot {
+                    continue;
+                }
+                match intervals.last_mut() {
+                    Some(last) if last[1] == times[k] => last[1] = times[k + 1],
+                    _ => intervals.push([times[k], times[k + 1]]),
+                }
+            }
+            super::clip::Contact::new(feet[foot], intervals)
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .ok()?;
+    RawClip::new(name, raw.duration_sec(), true, tracks)
+        .ok()?
+        .with_contacts(contacts)
+        .ok()
 }

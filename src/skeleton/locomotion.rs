@@ -9,6 +9,11 @@
 //! character walks off and jumps back at every loop. Extracting the root's horizontal offset from
 //! the pose each frame (the pose then walks on the spot) and moving the character by it instead
 //! makes the travel continue across loops, and lets a game steer it.
+//!
+//! **Foot contacts**: which foot is planted is part of a locomotion clip ([`super::Contact`],
+//! stance intervals in clip time). A blend's contacts follow its clips the way its pose does: at
+//! the same phase when synchronised ([`synchronised_contacts`]), at each clip's own time
+//! otherwise ([`blend_contacts`]), weighted like the poses.
 
 use super::blend::crossfade_transform;
 use super::clip::{Clip, ClipCursor};
@@ -77,6 +82,7 @@ impl RootMotion {
 /// `phase` is taken modulo 1. `scratch` receives clip `b`'s pose. Returns the blended horizontal
 /// root offset of the two clips (each extracted from its own [`RootMotion`]) when `root_motion`
 /// is given, leaving the pose on the spot; otherwise `Vec3::ZERO` and the pose keeps its root.
+/// [`synchronised_contacts`] with the same `w` and `phase` says which feet are planted.
 #[allow(clippy::too_many_arguments)]
 pub fn sample_synchronised(
     a: &Clip,
@@ -90,10 +96,8 @@ pub fn sample_synchronised(
 ) -> Vec3 {
     let phase = phase.rem_euclid(1.0);
     let w = w.clamp(0.0, 1.0);
-    // Just short of the end: a looping clip wraps its duration to 0.
-    let at = |clip: &Clip| (phase * clip.duration_sec()).min(clip.duration_sec() * 0.999_999);
-    a.sample(at(a), &mut cursors[0], out);
-    b.sample(at(b), &mut cursors[1], scratch);
+    a.sample(phase_time(a, phase), &mut cursors[0], out);
+    b.sample(phase_time(b, phase), &mut cursors[1], scratch);
     let offset = match root_motion {
         Some([ra, rb]) => {
             let da = ra.extract(out);
@@ -106,6 +110,50 @@ pub fn sample_synchronised(
         *x = crossfade_transform(x, y, w);
     }
     offset
+}
+
+/// Clip time at `phase` ∈ [0, 1): just short of the end, since a looping clip wraps its duration
+/// to 0.
+fn phase_time(clip: &Clip, phase: f32) -> f32 {
+    (phase * clip.duration_sec()).min(clip.duration_sec() * 0.999_999)
+}
+
+/// The ground contacts of a blend of clip `a` at `time_a` and clip `b` at `time_b` (seconds,
+/// wrapped as sampling wraps them) with weight `w` of `b`: `out[i]` for clip `a`'s contact `i`,
+/// matched in `b` by its joint (a joint `b` has no contact for counts as lifted there). The
+/// clips' flags vote with the blend's weights:
+/// ```text
+/// planted_i = (1 − w) · [a: in contact at t_a] + w · [b: in contact at t_b] ≥ ½
+/// ```
+/// so the clip with more weight decides, and at `w = ½` a foot either clip plants is planted.
+/// Fills `out[..a.contacts().len()]` (at most `out.len()`).
+pub fn blend_contacts(a: &Clip, time_a: f32, b: &Clip, time_b: f32, w: f32, out: &mut [bool]) {
+    let w = w.clamp(0.0, 1.0);
+    for (i, slot) in out.iter_mut().enumerate().take(a.contacts().len()) {
+        let joint = a.contacts()[i].joint();
+        let in_a = if a.in_contact(i, time_a) {
+            1.0 - w
+        } else {
+            0.0
+        };
+        let in_b = match b.contact_of(joint) {
+            Some(k) if b.in_contact(k, time_b) => w,
+            _ => 0.0,
+        };
+        *slot = in_a + in_b >= 0.5;
+    }
+}
+
+/// The ground contacts of [`sample_synchronised`]'s blend at `phase`: [`blend_contacts`] with
+/// both clips at the same normalised time,
+/// ```text
+/// t_a = φ · d_a,   t_b = φ · d_b
+/// ```
+/// so a walk and a run whose feet are planted over the same part of their cycles stay planted
+/// together, whatever their durations.
+pub fn synchronised_contacts(a: &Clip, b: &Clip, w: f32, phase: f32, out: &mut [bool]) {
+    let phase = phase.rem_euclid(1.0);
+    blend_contacts(a, phase_time(a, phase), b, phase_time(b, phase), w, out);
 }
 
 /// The blended cycle of two locomotion clips at weight `w`: duration (s), travel per cycle (m)

@@ -17,7 +17,7 @@
 //! | local transforms, TRS → affine, local-to-model | [`Transform`], [`trs_to_affine`], [`Pose`], [`local_to_model`] |
 //! | clips: editable and runtime forms, sampling | [`RawClip`], [`JointTracks`], [`Clip`], [`ClipCursor`], [`KeyInterpolation`], [`QuatInterpolation`], [`sample_rotation_channel`] |
 //! | blending | [`crossfade`], [`blend_weighted`], [`make_additive`], [`add_additive`], [`crossfade_masked`], [`subtree_mask`] |
-//! | locomotion: normalised time, root motion | [`sample_synchronised`], [`RootMotion`], [`weight_for_speed`] |
+//! | locomotion: normalised time, root motion, foot contacts | [`sample_synchronised`], [`RootMotion`], [`weight_for_speed`], [`Contact`], [`synchronised_contacts`], [`blend_contacts`] |
 //! | a character that needs no asset | [`human`]: a procedural simple human and its clips |
 //!
 //! Conventions: see the crate root (Y up, column vectors, glam quaternions `(x, y, z, w)`,
@@ -36,10 +36,13 @@ pub use blend::{
     subtree_mask, BlendError,
 };
 pub use clip::{
-    sample_rotation_channel, Clip, ClipCursor, ClipError, JointTracks, KeyInterpolation,
+    sample_rotation_channel, Clip, ClipCursor, ClipError, Contact, JointTracks, KeyInterpolation,
     QuatInterpolation, RawClip, MAX_CLIP_KEYS,
 };
 pub use hierarchy::{
     local_to_model, trs_to_affine, Pose, Skeleton, SkeletonError, Transform, MAX_JOINTS,
 };
-pub use locomotion::{sample_synchronised, synchronised_cycle, weight_for_speed, RootMotion};
+pub use locomotion::{
+    blend_contacts, sample_synchronised, synchronised_contacts, synchronised_cycle,
+    weight_for_speed, RootMotion,
+};
