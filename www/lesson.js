@@ -441,9 +441,16 @@ function contentWidth(element) {
  * (call it every frame with the timeline's time; `null` hides it). Every y axis is labelled with its
  * quantity and unit; the y range is never smaller than `minSpan`, so a constant signal is not
  * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0).
+ * `widths: [5, 1.5]` sets each series' line width in CSS pixels (default 2) and `dashes:
+ * [null, [6, 4]]` its dash pattern (dash and gap lengths; `null` solid): a wide line under a
+ * narrow one keeps two equal curves both visible. The legend's markers keep the usual 2 px
+ * border, dashed for a dashed series.
  */
 export class Plot {
-  constructor(element, { title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null }) {
+  constructor(element, {
+    title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null,
+    widths = [], dashes = [],
+  }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
     // The y label is drawn along the plot area and clipped at the canvas: make the plot tall
     // enough for it (about 110 px of the default height are title, x axis and its label).
@@ -478,8 +485,14 @@ export class Plot {
         { label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56 },
       ],
       // Series names only: a live legend shows "--" for every value until the pointer hovers.
-      legend: { live: false },
-      series: [{ label: xLabel }, ...series.map((label, i) => ({ label, stroke: colors[i % colors.length], width: 2 }))],
+      legend: { live: false, markers: { width: 2, dash: (u, i) => (u.series[i].dash ? 'dashed' : 'solid') } },
+      series: [{ label: xLabel }, ...series.map((label, i) => ({
+        label,
+        stroke: colors[i % colors.length],
+        width: widths[i] ?? 2,
+        // uPlot scales a width by the pixel ratio but draws a dash pattern in canvas pixels.
+        ...(dashes[i] ? { dash: dashes[i].map((d) => d * devicePixelRatio) } : {}),
+      }))],
       hooks: { draw: [cursorLine] },
     }, [[0], ...series.map(() => [0])], element);
     element.dataset.plot = title ?? '';
@@ -524,7 +537,6 @@ export function paddedRange(lo, hi, minSpan) {
   return [lo - pad, hi + pad];
 }
 
-/** Splits `[a0, b0, c0, a1, b1, c1, …]` (a binding's flat samples) into columns `[[a…], [b…], [c…]]`. */
 /** Sets a note element to `parts` joined by spaces (empty parts dropped), touching the DOM only
  * when the text changed. */
 export function showNote(element, ...parts) {
@@ -558,6 +570,7 @@ export function guarded(gui, p, apply, onReject) {
   };
 }
 
+/** Splits `[a0, b0, c0, a1, b1, c1, …]` (a binding's flat samples) into columns `[[a…], [b…], [c…]]`. */
 export function columns(flat, width) {
   const cols = Array.from({ length: width }, () => []);
   for (let i = 0; i < flat.length; i += width) for (let k = 0; k < width; k++) cols[k].push(flat[i + k]);

@@ -5,6 +5,9 @@ import { IkScene, AimScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
+// Two series that can coincide: the first 5 px wide underneath, the second 1.5 px on top.
+const UNDER_AND_OVER = [5, 1.5];
+
 // Figures 1-3: the same three solvers side by side, each beside the section it illustrates,
 // starting from that section's settings. The plot of the error per iteration is in the
 // figures that have a .plot (2 and 3: the iterative solvers' sections).
@@ -31,10 +34,10 @@ async function ikFigure(id, start) {
   const plot = plotElement && new Plot(plotElement, {
     title: 'Error after each iteration', xLabel: 'iteration', yLabel: 'log₁₀ error (m)',
     series: ['CCD', 'FABRIK'], colors: ['#e68a00', '#17a2a8'], minSpan: 1, height: 170,
+    // CCD drawn wide underneath, FABRIK narrow on top: where they agree (a target out of reach)
+    // both lines show, the second inside a border of the first.
+    widths: UNDER_AND_OVER,
   });
-  // CCD drawn wide underneath, FABRIK narrow on top: where they agree (a target out of reach)
-  // both lines show.
-  if (plot) widenUnderneath(plot);
   const update = () => {
     if (!plot) return;
     plot.setData(columns(scene.errorSamples(), 3));
@@ -102,18 +105,6 @@ async function ikFigure(id, start) {
   });
 }
 
-/**
- * Draws a plot's first series 5 px wide and its second 1.5 px wide on top, so two lines that
- * coincide both show: the second inside a border of the first. (The shell's Plot draws every
- * series 2 px wide and has no option for it; its legend keeps the usual markers.)
- */
-function widenUnderneath(plot) {
-  const u = plot.plot;
-  u.series[1].width = 5;
-  u.series[2].width = 1.5;
-  u.redraw();
-}
-
 const aimViewer = await lesson.figure('#fig-aim');
 if (aimViewer) {
   // From the front left, far enough back that the target stays in view over its whole range
@@ -126,10 +117,10 @@ if (aimViewer) {
   const plot = new Plot(document.getElementById('aim-plot'), {
     title: 'Angle from straight ahead', xLabel: 'time (s)', yLabel: 'angle (°)',
     series: ['to the target', 'head turn'], colors: ['#d62728', '#1f6fd6'], minSpan: 10, height: 170,
+    // The target's line wide underneath, the head's narrow on top: inside the cone the head's
+    // line lies exactly on the target's, and at one width the red was hidden under the blue.
+    widths: UNDER_AND_OVER,
   });
-  // The target's line wide underneath, the head's narrow on top: inside the cone the head's
-  // line lies exactly on the target's, and at one width the red was hidden under the blue.
-  widenUnderneath(plot);
   const replot = () => plot.setData(columns(scene.plotSamples(), 3));
   const applyTarget = () => { scene.setTarget(p.x, p.y, p.z); replot(); };
   target.add(p, 'x', -1.2, 1.2, 0.05).onChange(applyTarget);

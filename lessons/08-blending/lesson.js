@@ -54,15 +54,15 @@ if (locoViewer) {
   const colors = ['#1f6fd6', '#d62728'];
   // Fixed y ranges (from Rust): the same scale at every speed, so a small slide looks small.
   const ranges = scene.plotRanges();
+  const widths = [5, 1.5];
   const gapPlot = new Plot(document.getElementById('loco-phase-plot'), {
     title: 'How far out of step', xLabel: 'time (s)', yLabel: 'phase gap (cycles)',
-    series, colors, height: 240, yRange: [ranges[0], ranges[1]],
+    series, colors, widths, height: 240, yRange: [ranges[0], ranges[1]],
   });
   const slidePlot = new Plot(document.getElementById('loco-slide-plot'), {
     title: 'Slide in the last 1.5 s', xLabel: 'time (s)', yLabel: 'slide (cm)',
-    series, colors, height: 240, yRange: [ranges[2], ranges[3]],
+    series, colors, widths, height: 240, yRange: [ranges[2], ranges[3]],
   });
-  for (const plot of [gapPlot, slidePlot]) widenUnderneath(plot);
   const replot = () => {
     const [t, gapOn, gapOff, slideOn, slideOff] = columns(scene.plotSamples(), 5);
     gapPlot.setData([t, gapOn, gapOff]);
@@ -81,16 +81,4 @@ if (locoViewer) {
     slidePlot.setCursor(t);
     markDrawn('#fig-locomotion');
   });
-}
-
-/**
- * Draws a plot's first series 5 px wide and its second 1.5 px wide on top, so two lines that
- * coincide both show: the second inside a border of the first. (The shell's Plot draws every
- * series 2 px wide and has no option for it; its legend keeps the usual markers.)
- */
-function widenUnderneath(plot) {
-  const u = plot.plot;
-  u.series[1].width = 5;
-  u.series[2].width = 1.5;
-  u.redraw();
 }
