@@ -444,7 +444,9 @@ function contentWidth(element) {
  * `widths: [5, 1.5]` sets each series' line width in CSS pixels (default 2) and `dashes:
  * [null, [6, 4]]` its dash pattern (dash and gap lengths; `null` solid): a wide line under a
  * narrow one keeps two equal curves both visible. The legend's markers keep the usual 2 px
- * border, dashed for a dashed series.
+ * border, dashed for a dashed series. The element gets `data-plot` (the title), `data-x-label`
+ * and `data-y-label` (the axis labels, which uPlot draws on its canvas, where tests cannot
+ * read them).
  */
 export class Plot {
   constructor(element, {
@@ -496,6 +498,8 @@ export class Plot {
       hooks: { draw: [cursorLine] },
     }, [[0], ...series.map(() => [0])], element);
     element.dataset.plot = title ?? '';
+    element.dataset.xLabel = xLabel ?? '';
+    element.dataset.yLabel = yLabel ?? '';
     let width = contentWidth(element);
     new ResizeObserver(() => requestAnimationFrame(() => {
       if (contentWidth(element) !== width) {

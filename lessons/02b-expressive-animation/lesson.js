@@ -20,7 +20,7 @@ if (spacingViewer) {
   gui.add(p, 'squash').name('squash and stretch');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('spacing-plot'), {
-    title: 'Spacing: how much of the path is covered', xLabel: 'time (s)', yLabel: 'fraction of path',
+    title: 'Spacing: how much of the path is covered', xLabel: 'time (s)', yLabel: 'fraction of path (no unit)',
     series: ['this spacing', 'linear'], colors: [cssVar('--z-axis'), cssVar('--grey')], minSpan: 0.5,
   });
   let rejected = '';

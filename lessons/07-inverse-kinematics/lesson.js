@@ -32,7 +32,7 @@ async function ikFigure(id, start) {
   const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
   const plotElement = figure.querySelector('.plot');
   const plot = plotElement && new Plot(plotElement, {
-    title: 'Error after each iteration', xLabel: 'iteration', yLabel: 'log₁₀ error (m)',
+    title: 'Error after each iteration', xLabel: 'iteration (count)', yLabel: 'log₁₀ error (m)',
     series: ['CCD', 'FABRIK'], colors: ['#e68a00', '#17a2a8'], minSpan: 1, height: 170,
     // CCD drawn wide underneath, FABRIK narrow on top: where they agree (a target out of reach)
     // both lines show, the second inside a border of the first.

@@ -21,7 +21,7 @@ if (viewer) {
   const timeline = new Timeline(document.getElementById('face-timeline'), { duration: 4, playing: true });
   const names = scene.targetNames();
   const plot = new Plot(document.getElementById('face-plot'), {
-    title: 'Weights over the loop', xLabel: 'time (s)', yLabel: 'weight',
+    title: 'Weights over the loop', xLabel: 'time (s)', yLabel: 'weight (no unit)',
     series: [...names, 'Σ w (targets)', 'full form: base + Σ w'],
     colors: ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#1f2430', '#e68a00'], minSpan: 1, height: 200,
   });
