@@ -12,6 +12,10 @@ pub const MAX_GRID_CELLS: usize = 1 << 19;
 /// the candidates it tests, four at a time).
 pub const X_SPLIT: usize = 4;
 
+/// The slots after the boids in the grid's sorted arrays (see `Grid::soa`): a SIMD load of four
+/// lanes from any boid's slot stays within the arrays.
+pub const PADDING: usize = 3;
+
 /// The cell of `p` in a grid whose cell `(0, 0, 0)` starts at `origin`, with cubic cells of side
 /// `cell_size` and `dims` cells along x, y, z; positions outside are clamped to the border cells
 /// (clamping keeps neighbouring cells neighbours, so the search stays exact):
@@ -51,14 +55,11 @@ pub struct Grid {
     sorted: Vec<u32>,
     /// Each boid's cell.
     cell_of: Vec<u32>,
-    /// `positions[sorted[k]]`: the positions in cell order, so the distance tests of a cell's
-    /// run read memory front to back instead of jumping around the flock.
-    sorted_positions: Vec<Vec3>,
-    /// `velocities[sorted[k]]`, filled by [`Grid::rebuild_with_velocities`] (the flock's step
-    /// reads every neighbour's velocity; in cell order those reads are coherent too).
-    sorted_velocities: Vec<Vec3>,
-    /// The same, one array per coordinate (positions x, y, z, then velocities), padded with 3
-    /// zeros so that four lanes can always be loaded: the flock's SIMD step reads these.
+    /// `positions[sorted[k]]` and `velocities[sorted[k]]`, one array per coordinate (x, y, z,
+    /// then the velocities'): the positions and velocities in cell order, so the distance
+    /// tests of a cell's run read memory front to back instead of jumping around the flock.
+    /// After the boids come [`PADDING`] slots with a NaN x and zero velocities, so that four
+    /// lanes can always be loaded: the flock's SIMD step reads these.
     soa: [Vec<f32>; 6],
 }
 
@@ -107,38 +108,50 @@ impl Grid {
         )
     }
 
-    /// The cell coordinates of `p`: [`cell_index`]'s clamp(⌊(p − origin) / size⌋, 0, dims − 1)
-    /// per axis, as multiplications by the sizes' reciprocals (the search computes a chord's
-    /// cells the same way, so a boid's cell and the search's ranges agree to the bit). `as i32`
-    /// truncates, which is ⌊·⌋ once clamped at 0 (and is NaN-safe: NaN becomes 0).
-    #[inline(always)]
-    fn coords_of(&self, p: Vec3) -> [usize; 3] {
-        let c = ((p - self.origin) * self.inv_sizes()).max(Vec3::ZERO);
-        let clamp = |x: f32, n: u32| (x as i32).clamp(0, n as i32 - 1) as usize;
-        [
-            clamp(c.x, self.dims[0]),
-            clamp(c.y, self.dims[1]),
-            clamp(c.z, self.dims[2]),
-        ]
-    }
-
     /// The number of the cell that holds `p` (positions outside the box are clamped into the
-    /// border cells).
+    /// border cells): [`cell_index`]'s clamp(⌊(p − origin) / size⌋, 0, dims − 1) per axis, as
+    /// multiplications by the sizes' reciprocals (the search computes a chord's cells the same
+    /// way, so a boid's cell and the search's ranges agree to the bit), the three axes in the
+    /// lanes of one vector. A NaN coordinate gives cell 0 on its axis.
+    #[inline(always)]
     pub fn cell_of_point(&self, p: Vec3) -> usize {
-        let [i, j, k] = self.coords_of(p);
-        i + self.dims[0] as usize * (j + self.dims[1] as usize * k)
+        let inv = self.inv_sizes();
+        let c = (Vec4::from((p - self.origin, 0.0))) * Vec4::from((inv, 0.0));
+        let top = Vec4::new(
+            self.dims[0] as f32 - 1.0,
+            self.dims[1] as f32 - 1.0,
+            self.dims[2] as f32 - 1.0,
+            0.0,
+        );
+        // Clamped as floats, so truncation is ⌊·⌋ and needs none of `as`'s checks.
+        let [i, j, k, _] = lanes::truncate(lanes::clamp(c, Vec4::ZERO, top));
+        let [dx, dy] = [self.dims[0] as usize, self.dims[1] as usize];
+        i as usize + dx * (j as usize + dy * k as usize)
     }
 
     pub fn cell_count(&self) -> usize {
         self.cell_start.len().saturating_sub(1)
     }
 
-    /// Sorts `positions` into the cells (counting sort).
+    /// Sorts `positions` into the cells (counting sort); the velocities in the sorted arrays
+    /// are zero.
     pub fn rebuild(&mut self, positions: &[Vec3]) {
+        self.sort(positions);
+        self.gather(positions, None);
+    }
+
+    /// [`Grid::rebuild`], with the velocities copied into cell order beside the positions
+    /// (what the flock's grid step reads).
+    pub fn rebuild_with_velocities(&mut self, positions: &[Vec3], velocities: &[Vec3]) {
+        self.sort(positions);
+        self.gather(positions, Some(velocities));
+    }
+
+    /// The counting sort: `cell_of`, `cell_start` and `sorted`.
+    fn sort(&mut self, positions: &[Vec3]) {
         let n = positions.len();
         self.sorted.resize(n, 0);
         self.cell_of.resize(n, 0);
-        self.sorted_positions.resize(n, Vec3::ZERO);
         self.cell_start.fill(0);
         for (i, &p) in positions.iter().enumerate() {
             let c = self.cell_of_point(p);
@@ -159,28 +172,36 @@ impl Grid {
         self.cell_start.rotate_left(1);
         let last = self.cell_start.len() - 1;
         self.cell_start[last] = n as u32;
-        for (q, &i) in self.sorted_positions.iter_mut().zip(&self.sorted) {
-            *q = positions[i as usize];
-        }
     }
 
-    /// [`Grid::rebuild`], and the velocities copied into cell order beside the positions (what
-    /// the flock's grid step reads).
-    pub fn rebuild_with_velocities(&mut self, positions: &[Vec3], velocities: &[Vec3]) {
-        self.rebuild(positions);
-        self.sorted_velocities.resize(self.sorted.len(), Vec3::ZERO);
-        for (w, &i) in self.sorted_velocities.iter_mut().zip(&self.sorted) {
-            *w = velocities[i as usize];
-        }
+    /// Fills the sorted arrays (`soa`) in cell order, in one pass, and their padding.
+    fn gather(&mut self, positions: &[Vec3], velocities: Option<&[Vec3]>) {
         let n = self.sorted.len();
         for a in &mut self.soa {
-            a.resize(n + 3, 0.0);
+            a.resize(n + PADDING, 0.0);
         }
         let [x, y, z, vx, vy, vz] = &mut self.soa;
-        for k in 0..n {
-            let (p, v) = (self.sorted_positions[k], self.sorted_velocities[k]);
-            (x[k], y[k], z[k]) = (p.x, p.y, p.z);
-            (vx[k], vy[k], vz[k]) = (v.x, v.y, v.z);
+        match velocities {
+            Some(velocities) => {
+                for (k, &i) in self.sorted.iter().enumerate() {
+                    let (p, v) = (positions[i as usize], velocities[i as usize]);
+                    (x[k], y[k], z[k]) = (p.x, p.y, p.z);
+                    (vx[k], vy[k], vz[k]) = (v.x, v.y, v.z);
+                }
+            }
+            None => {
+                for (k, &i) in self.sorted.iter().enumerate() {
+                    let p = positions[i as usize];
+                    (x[k], y[k], z[k]) = (p.x, p.y, p.z);
+                }
+                for a in [&mut *vx, &mut *vy, &mut *vz] {
+                    a[..n].fill(0.0);
+                }
+            }
+        }
+        // The padding: a NaN x fails every distance test, zero velocities add nothing.
+        for (a, pad) in self.soa.iter_mut().zip([f32::NAN, 0.0, 0.0, 0.0, 0.0, 0.0]) {
+            a[n..].fill(pad);
         }
     }
 
@@ -276,7 +297,7 @@ impl Grid {
         // together.
         let gy2 = Vec4::new(g2.x, 0.0, g2.y, f32::INFINITY);
         let gz2 = [g2.z, 0.0, g2.w];
-        // ⌊(x − o) / x_size⌋ as in `coords_of`, clamped to the cells the ball can reach;
+        // ⌊(x − o) / x_size⌋ as in `cell_of_point`, clamped to the cells the ball can reach;
         // truncation is ⌊·⌋ once clamped at 0 (no libm floor on x86-64 without SSE4.1).
         let (px, ox, inv_x) = (
             Vec4::splat(p.x),
@@ -284,14 +305,10 @@ impl Grid {
             Vec4::splat(search.inv_x),
         );
         let (lo_min, hi_max) = (Vec4::splat(search.lo_min), Vec4::splat(search.hi_max));
-        // Clamped as floats by comparisons (a NaN fails `c > lo_min` and becomes lo_min), so
-        // every lane is finite and within [lo_min, hi_max] ⊂ [0, dims.x − 1]: its truncation
-        // to an integer needs none of `as`'s checks.
-        let x_cells = |x: Vec4| {
-            let c = (x - ox) * inv_x;
-            let c = Vec4::select(c.cmpgt(lo_min), c, lo_min);
-            lanes::truncate(Vec4::select(c.cmplt(hi_max), c, hi_max))
-        };
+        // Clamped as floats (a NaN becomes lo_min), so every lane is finite and within
+        // [lo_min, hi_max] ⊂ [0, dims.x − 1]: its truncation to an integer needs none of
+        // `as`'s checks.
+        let x_cells = |x: Vec4| lanes::truncate(lanes::clamp((x - ox) * inv_x, lo_min, hi_max));
         for (kk, &g2z) in gz2.iter().enumerate() {
             let out = &mut runs[3 * kk..3 * kk + 3];
             // A missing row's −∞ and a NaN fail; so does any row past the border (`rows`: a
@@ -353,12 +370,16 @@ impl Grid {
         self.cell_of[i] as usize
     }
 
-    pub(super) fn sorted_positions(&self) -> &[Vec3] {
-        &self.sorted_positions
+    /// The position of the boid in slot `k` (`positions[sorted[k]]` at the last rebuild).
+    #[inline(always)]
+    pub fn sorted_position(&self, k: usize) -> Vec3 {
+        Vec3::new(self.soa[0][k], self.soa[1][k], self.soa[2][k])
     }
 
-    pub(super) fn sorted_velocities(&self) -> &[Vec3] {
-        &self.sorted_velocities
+    /// The velocity of the boid in slot `k` (zero after [`Grid::rebuild`]).
+    #[inline(always)]
+    pub fn sorted_velocity(&self, k: usize) -> Vec3 {
+        Vec3::new(self.soa[3][k], self.soa[4][k], self.soa[5][k])
     }
 
     /// Calls `f(j)` for every boid `j ≠ i` within `radius ≤ cell_size` of `positions[i]`
@@ -389,9 +410,9 @@ impl Grid {
                     self.cell_start[lo] as usize,
                     self.cell_start[hi + 1] as usize,
                 );
-                for (&jb, q) in self.sorted[a..b].iter().zip(&self.sorted_positions[a..b]) {
+                for (t, &jb) in self.sorted.iter().enumerate().take(b).skip(a) {
                     let jb = jb as usize;
-                    if jb != i && (*q - p).length_squared() <= r2 {
+                    if jb != i && (self.sorted_position(t) - p).length_squared() <= r2 {
                         f(jb);
                     }
                 }
@@ -405,6 +426,35 @@ mod lanes {
 
     /// The lanes of `v`, each finite and in `[0, 2³¹)`, truncated to integers (one instruction
     /// for the four on x86-64 and in wasm, where a per-lane `as` also checks for NaN and range).
+    /// `v` clamped into `[lo, hi]` lane by lane (`lo ≤ hi`), a NaN lane becoming `lo`: two
+    /// instructions (SSE's max returns its second operand when either is NaN; wasm's pmax
+    /// returns its first unless it is less than the second).
+    #[inline(always)]
+    pub fn clamp(v: Vec4, lo: Vec4, hi: Vec4) -> Vec4 {
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        {
+            use core::arch::wasm32::{f32x4_pmax, f32x4_pmin, v128};
+            let above = f32x4_pmax(v128::from(lo), v128::from(v));
+            Vec4::from(f32x4_pmin(v128::from(hi), above))
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            use core::arch::x86_64::{__m128, _mm_max_ps, _mm_min_ps};
+            // SAFETY: SSE, part of every x86-64 CPU.
+            unsafe {
+                let above = _mm_max_ps(__m128::from(v), __m128::from(lo));
+                Vec4::from(_mm_min_ps(above, __m128::from(hi)))
+            }
+        }
+        #[cfg(not(any(
+            all(target_arch = "wasm32", target_feature = "simd128"),
+            target_arch = "x86_64"
+        )))]
+        {
+            Vec4::select(v.cmpgt(lo), v, lo).min(hi)
+        }
+    }
+
     #[inline(always)]
     pub fn truncate(v: Vec4) -> [u32; 4] {
         #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]

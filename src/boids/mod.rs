@@ -431,11 +431,11 @@ impl Flock {
         predator: Option<usize>,
     ) -> Vec3 {
         let mut force = Vec3::ZERO;
-        if acc.n_c > 0 {
-            force += params.cohesion.weight * (acc.offset / acc.n_c as f32);
+        if acc.n_c > 0.0 {
+            force += params.cohesion.weight * (acc.offset / acc.n_c);
         }
-        if acc.n_a > 0 {
-            force += params.alignment.weight * (acc.mean_v / acc.n_a as f32 - v);
+        if acc.n_a > 0.0 {
+            force += params.alignment.weight * (acc.mean_v / acc.n_a - v);
         }
         force += params.separation.weight * acc.sep + acc.law;
         if let (Some(l), Some(w)) = (leader, params.leader) {
@@ -516,17 +516,14 @@ impl Flock {
                         } else {
                             self.steer_scalar(params, &base_rules, s, cell, pred_slot)
                         };
-                        let (p, v) = (
-                            self.grid.sorted_positions()[s],
-                            self.grid.sorted_velocities()[s],
-                        );
+                        let (p, v) = (self.grid.sorted_position(s), self.grid.sorted_velocity(s));
                         forces[i] = self.finish_steering(params, p, v, &acc, leader, predator);
                     }
                 }
             }
         }
         if let Some(k) = pred_slot {
-            self.grid.soa_mut()[0][k] = self.grid.sorted_positions()[k].x;
+            self.grid.soa_mut()[0][k] = self.positions[self.grid.sorted()[k] as usize].x;
         }
         self.forces = forces;
     }
@@ -541,9 +538,8 @@ impl Flock {
         pred_slot: Option<usize>,
     ) -> Neighbours {
         let grid = &self.grid;
-        let (sp, sv) = (grid.sorted_positions(), grid.sorted_velocities());
         let r2 = params.search_radius().powi(2);
-        let (p, v) = (sp[s], sv[s]);
+        let (p, v) = (grid.sorted_position(s), grid.sorted_velocity(s));
         let rules = NeighbourRules {
             v_len: v.length(),
             ..*base_rules
@@ -552,10 +548,10 @@ impl Flock {
         let mut acc = Neighbours::default();
         grid.for_each_run_near(p, cell, r2, |run| {
             for t in run {
-                let q = sp[t];
+                let q = grid.sorted_position(t);
                 if (q - p).length_squared() <= r2 && t != s && t != pred {
                     let d = p - q;
-                    rules.add(&mut acc, d, d.length_squared(), v, sv[t]);
+                    rules.add(&mut acc, d, d.length_squared(), v, grid.sorted_velocity(t));
                 }
             }
         });
@@ -582,11 +578,7 @@ impl Flock {
         s: usize,
         search: &CellSearch,
     ) -> Neighbours {
-        let [xs, ys, zs, vxs, vys, vzs] = self.grid.soa();
-        let (p, v) = (
-            Vec3::new(xs[s], ys[s], zs[s]),
-            Vec3::new(vxs[s], vys[s], vzs[s]),
-        );
+        let (p, v) = (self.grid.sorted_position(s), self.grid.sorted_velocity(s));
         let rules = NeighbourRules {
             v_len: v.length(),
             ..*base_rules
@@ -594,37 +586,29 @@ impl Flock {
         let kernel = SimdKernel::new(&rules, p, v);
         let r2 = params.search_radius().powi(2);
         let same_radii = rules.rc2 == rules.ra2;
-        // One loop per case, so that the loop has no branch but separation's (the view test's
-        // case depends on the boid's speed; the radii are the flock's).
+        // One loop per case, so that the loop has no branch but separation's (whether the view
+        // is tested depends on the boid's speed; the radii are the flock's).
         let (c, g) = (columns, search);
-        let mut sums = match (same_radii, kernel.view) {
+        let [cohesion, alignment, sep] = match (same_radii, kernel.view) {
             (true, View::All) => self.simd_sums::<true, VIEW_ALL>(&kernel, c, p, g, r2),
-            (true, View::Wide) => self.simd_sums::<true, VIEW_WIDE>(&kernel, c, p, g, r2),
-            (true, View::Narrow) => self.simd_sums::<true, VIEW_NARROW>(&kernel, c, p, g, r2),
+            (true, View::Cone) => self.simd_sums::<true, VIEW_CONE>(&kernel, c, p, g, r2),
             (false, View::All) => self.simd_sums::<false, VIEW_ALL>(&kernel, c, p, g, r2),
-            (false, View::Wide) => self.simd_sums::<false, VIEW_WIDE>(&kernel, c, p, g, r2),
-            (false, View::Narrow) => self.simd_sums::<false, VIEW_NARROW>(&kernel, c, p, g, r2),
+            (false, View::Cone) => self.simd_sums::<false, VIEW_CONE>(&kernel, c, p, g, r2),
         };
-        if same_radii {
-            sums.na = sums.nc;
-        }
-        // Take the boid itself off (see `simd_sums`).
-        let count = |c: Vec4| (c.element_sum() as u32).saturating_sub(1);
-        let sum3 = |x: Vec4, y: Vec4, z: Vec4| {
-            Vec3::new(x.element_sum(), y.element_sum(), z.element_sum())
-        };
+        // Take the boid itself off (see `simd_sums`): 1 from each count, v from the velocities.
         Neighbours {
-            n_c: count(sums.nc),
-            n_a: count(sums.na),
-            offset: -sum3(sums.dx, sums.dy, sums.dz),
-            mean_v: sum3(sums.wx, sums.wy, sums.wz) - v,
-            sep: sums.sep,
+            n_c: cohesion.w - 1.0,
+            n_a: alignment.w - 1.0,
+            offset: -cohesion.truncate(),
+            mean_v: alignment.truncate() - v,
+            sep: sep.truncate(),
             law: Vec3::ZERO,
         }
     }
 
-    /// The lane sums of [`Flock::steer_simd`] for the boid at `p` in `search`'s cell, over the runs
-    /// a ball of squared radius `r2` reaches. The boid itself is not masked out: it is always in
+    /// The sums of [`Flock::steer_simd`] for the boid at `p` in `search`'s cell, over the runs
+    /// a ball of squared radius `r2` reaches: `(Σ (p − q), n_c)`, `(Σ w, n_a)` and separation's
+    /// sum. The boid itself is not masked out: it is always in
     /// its own run, at d2 = 0, so it adds exactly its v to the alignment sum and 1 to both
     /// counts (and nothing to cohesion's p − q or to separation); the caller takes that off.
     /// The predator's x is NaN in these arrays for the step (see `steer_all_with_grid`), which
@@ -639,7 +623,7 @@ impl Flock {
         p: Vec3,
         search: &CellSearch,
         r2: f32,
-    ) -> SimdSums {
+    ) -> [Vec4; 3] {
         let len = columns.len;
         // The four lanes from slot `at` of all six arrays.
         let chunk = |at: usize| {
@@ -653,23 +637,28 @@ impl Flock {
         let mut sums = SimdSums::default();
         let mut runs = [(0u32, 0u32); 9];
         self.grid.runs_near(search, p, r2, &mut runs);
+        // Whole chunks only: a run's last chunk reads up to three slots past its end, which
+        // hold other cells' boids (outside the ball: every boid within it is in some run, so
+        // they fail the distance test) or, past the last boid, padding with a NaN x that
+        // fails every test. No slot is read twice: the runs come in increasing order, and
+        // each starts at the first slot not read yet.
+        let mut done = 0usize;
         for &(start, end) in &runs {
-            let (mut at, end) = (start as usize, end as usize);
-            // A run ends at most at the last boid, so its last chunk, partial or not, ends
-            // within the padding.
+            let (mut at, end) = ((start as usize).max(done), end as usize);
+            // A run ends at most at the last boid, so its last chunk ends within the padding.
             assert!(end + 3 <= len);
-            // Full chunks need no lane mask; only a run's last, partial chunk does (lanes past
-            // the run's end are other cells' boids).
-            while at + 4 <= end {
-                kernel.add::<SAME_RADII, VIEW>(&mut sums, BVec4A::splat(true), chunk(at));
+            while at < end {
+                kernel.add::<SAME_RADII, VIEW>(&mut sums, chunk(at));
                 at += 4;
             }
-            if at < end {
-                let valid = lanes::first((end - at) as u32);
-                kernel.add::<SAME_RADII, VIEW>(&mut sums, valid, chunk(at));
-            }
+            done = done.max(at);
         }
-        sums
+        let na = if SAME_RADII { sums.nc } else { sums.na };
+        [
+            lanes::sum4(sums.dx, sums.dy, sums.dz, sums.nc.as_floats()),
+            lanes::sum4(sums.wx, sums.wy, sums.wz, na.as_floats()),
+            sums.sep.extend(0.0),
+        ]
     }
 }
 
@@ -684,7 +673,7 @@ struct Columns<'a> {
 impl<'a> Columns<'a> {
     fn new(soa: &'a [Vec<f32>; 6]) -> Self {
         let len = soa[0].len();
-        assert!(soa.iter().all(|a| a.len() == len) && len >= 3);
+        assert!(soa.iter().all(|a| a.len() == len) && len >= grid::PADDING);
         Self {
             ptrs: soa.each_ref().map(|a| a.as_ptr()),
             len,
@@ -693,21 +682,15 @@ impl<'a> Columns<'a> {
     }
 }
 
-/// The few lane operations [`SimdKernel`] needs beyond glam's `Vec4`: a load of four floats, and
-/// a lane mask applied with one `and` (`Vec4::select(m, x, 0)` is a three-instruction
-/// bit-select in wasm).
+/// The few lane operations [`SimdKernel`] needs beyond glam's `Vec4`: a load of four floats, a
+/// lane mask applied with one `and` or `andnot` (`Vec4::select(m, x, 0)` is a three-instruction
+/// bit-select in wasm), and lane counters.
 mod lanes {
     use glam::{BVec4A, Vec4};
 
     #[inline(always)]
     pub fn load(a: [f32; 4]) -> Vec4 {
         Vec4::from_array(a)
-    }
-
-    /// The mask of the first `k < 4` lanes.
-    #[inline(always)]
-    pub fn first(k: u32) -> BVec4A {
-        Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat(k as f32))
     }
 
     #[inline(always)]
@@ -731,37 +714,168 @@ mod lanes {
             Vec4::select(m, x, Vec4::ZERO)
         }
     }
+
+    /// `x` in the lanes where `m` is false, 0 elsewhere (`x & !m`: one instruction).
+    #[inline(always)]
+    pub fn and_not(m: BVec4A, x: BVec4A) -> BVec4A {
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        {
+            use core::arch::wasm32::{v128, v128_andnot};
+            // SAFETY: BVec4A is a v128 of all-ones or all-zeros lanes, as the result is.
+            unsafe {
+                core::mem::transmute::<v128, BVec4A>(v128_andnot(v128::from(x), v128::from(m)))
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            use core::arch::x86_64::{__m128, _mm_andnot_ps};
+            // SAFETY: SSE2; BVec4A is an __m128 of all-ones or all-zeros lanes, as the result is.
+            unsafe {
+                core::mem::transmute::<__m128, BVec4A>(_mm_andnot_ps(
+                    __m128::from(m),
+                    __m128::from(x),
+                ))
+            }
+        }
+        #[cfg(not(any(
+            all(target_arch = "wasm32", target_feature = "simd128"),
+            target_arch = "x86_64"
+        )))]
+        {
+            x & !m
+        }
+    }
+
+    /// Four lane counters: adding a mask is one integer subtraction (a true lane is −1).
+    #[derive(Clone, Copy)]
+    pub struct Count([i32; 4]);
+
+    impl Default for Count {
+        fn default() -> Self {
+            Self([0; 4])
+        }
+    }
+
+    impl Count {
+        #[inline(always)]
+        pub fn add(&mut self, m: BVec4A) {
+            #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+            {
+                use core::arch::wasm32::{i32x4_sub, v128};
+                // SAFETY: [i32; 4] and v128 have the same size, and every bit pattern is valid.
+                unsafe {
+                    let c = core::mem::transmute::<[i32; 4], v128>(self.0);
+                    self.0 = core::mem::transmute::<v128, [i32; 4]>(i32x4_sub(c, v128::from(m)));
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            {
+                use core::arch::x86_64::{__m128, __m128i, _mm_castps_si128, _mm_sub_epi32};
+                // SAFETY: SSE2; [i32; 4] and __m128i have the same size, every bit pattern is
+                // valid.
+                unsafe {
+                    let c = core::mem::transmute::<[i32; 4], __m128i>(self.0);
+                    let m = _mm_castps_si128(__m128::from(m));
+                    self.0 = core::mem::transmute::<__m128i, [i32; 4]>(_mm_sub_epi32(c, m));
+                }
+            }
+            #[cfg(not(any(
+                all(target_arch = "wasm32", target_feature = "simd128"),
+                target_arch = "x86_64"
+            )))]
+            {
+                let b = m.bitmask();
+                for (l, c) in self.0.iter_mut().enumerate() {
+                    *c += ((b >> l) & 1) as i32;
+                }
+            }
+        }
+
+        /// The counts as floats (exact below 2²⁴).
+        #[inline(always)]
+        pub fn as_floats(&self) -> Vec4 {
+            Vec4::from_array(self.0.map(|c| c as f32))
+        }
+    }
+
+    /// `(Σ a, Σ b, Σ c, Σ d)`, each the sum of its four lanes, by a transposition (six
+    /// shuffles and four adds instead of four separate sums of lanes; the same order of
+    /// additions in every lane: `(l0 + l2) + (l1 + l3)`).
+    #[inline(always)]
+    pub fn sum4(a: Vec4, b: Vec4, c: Vec4, d: Vec4) -> Vec4 {
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        {
+            use core::arch::wasm32::{f32x4_add, i32x4_shuffle, v128};
+            let (a, b, c, d) = (v128::from(a), v128::from(b), v128::from(c), v128::from(d));
+            // (a0 + a2, b0 + b2, a1 + a3, b1 + b3) and the same for c, d.
+            let ab = f32x4_add(
+                i32x4_shuffle::<0, 4, 1, 5>(a, b),
+                i32x4_shuffle::<2, 6, 3, 7>(a, b),
+            );
+            let cd = f32x4_add(
+                i32x4_shuffle::<0, 4, 1, 5>(c, d),
+                i32x4_shuffle::<2, 6, 3, 7>(c, d),
+            );
+            Vec4::from(f32x4_add(
+                i32x4_shuffle::<0, 1, 4, 5>(ab, cd),
+                i32x4_shuffle::<2, 3, 6, 7>(ab, cd),
+            ))
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            use core::arch::x86_64::{
+                __m128, _mm_add_ps, _mm_movehl_ps, _mm_movelh_ps, _mm_unpackhi_ps, _mm_unpacklo_ps,
+            };
+            let (a, b, c, d) = (
+                __m128::from(a),
+                __m128::from(b),
+                __m128::from(c),
+                __m128::from(d),
+            );
+            // SAFETY: SSE, part of every x86-64 CPU.
+            unsafe {
+                let ab = _mm_add_ps(_mm_unpacklo_ps(a, b), _mm_unpackhi_ps(a, b));
+                let cd = _mm_add_ps(_mm_unpacklo_ps(c, d), _mm_unpackhi_ps(c, d));
+                Vec4::from(_mm_add_ps(_mm_movelh_ps(ab, cd), _mm_movehl_ps(cd, ab)))
+            }
+        }
+        #[cfg(not(any(
+            all(target_arch = "wasm32", target_feature = "simd128"),
+            target_arch = "x86_64"
+        )))]
+        {
+            let s = |v: Vec4| (v.x + v.z) + (v.y + v.w);
+            Vec4::new(s(a), s(b), s(c), s(d))
+        }
+    }
 }
 
 /// The lane sums of [`Flock::steer_simd`]: cohesion's `Σ (p − q)` and count, alignment's
-/// `Σ w` and count (counts as floats: a lane mask and 1.0 is 1.0 or 0.0), separation.
+/// `Σ w` and count, separation.
 #[derive(Default)]
 struct SimdSums {
     dx: Vec4,
     dy: Vec4,
     dz: Vec4,
-    nc: Vec4,
+    nc: lanes::Count,
     wx: Vec4,
     wy: Vec4,
     wz: Vec4,
-    na: Vec4,
+    na: lanes::Count,
     sep: Vec3,
 }
 
-/// Which field-of-view test a boid's neighbours get (see [`NeighbourRules::behind`], with
-/// `b = cos(fov/2)|v|`): none (a full circle, or the boid stands still), `b ≥ 0` (a field of
-/// view up to 180°) or `b < 0` (wider).
+/// Whether a boid's neighbours get the field-of-view test ([`NeighbourRules::behind`]): not
+/// with a full circle, nor for a boid that stands still (it has no heading).
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum View {
     All,
-    Narrow,
-    Wide,
+    Cone,
 }
 
 /// [`View`] as const generic parameters of [`SimdKernel::add`].
 const VIEW_ALL: u8 = 0;
-const VIEW_NARROW: u8 = 1;
-const VIEW_WIDE: u8 = 2;
+const VIEW_CONE: u8 = 1;
 
 /// One boid's tests, splatted to four lanes, for [`Flock::steer_simd`].
 struct SimdKernel {
@@ -770,8 +884,8 @@ struct SimdKernel {
     rc2: Vec4,
     ra2: Vec4,
     rs2: Vec4,
-    /// `b²` (see [`View`]).
-    bb: Vec4,
+    /// `−b|b|` with `b = cos(fov/2)|v|` (see [`NeighbourRules::behind`]).
+    cone: Vec4,
     view: View,
 }
 
@@ -784,62 +898,62 @@ impl SimdKernel {
             rc2: Vec4::splat(rules.rc2),
             ra2: Vec4::splat(rules.ra2),
             rs2: Vec4::splat(rules.rs2),
-            bb: Vec4::splat(b * b),
+            cone: Vec4::splat(-(b * b.abs())),
             view: if rules.all_round || rules.v_len <= 0.0 {
                 View::All
-            } else if b >= 0.0 {
-                View::Narrow
             } else {
-                View::Wide
+                View::Cone
             },
         }
     }
 
-    /// Adds the candidates `q` (velocities `w`) in the lanes of `valid` that pass the tests;
-    /// with `SAME_RADII` (cohesion and alignment share their radius) one mask and one count
-    /// serve both, and `sums.na` is left to the caller.
+    /// Adds the candidates `q` (velocities `w`) that pass the tests; with `SAME_RADII`
+    /// (cohesion and alignment share their radius) one mask and one count serve both, and
+    /// `sums.na` is left to the caller.
     #[inline(always)]
     fn add<const SAME_RADII: bool, const VIEW: u8>(
         &self,
         sums: &mut SimdSums,
-        valid: BVec4A,
         [qx, qy, qz, wx, wy, wz]: [Vec4; 6],
     ) {
         let zero = Vec4::ZERO;
         // d = p − q, d2 = |d|² (the order of glam's length_squared).
         let (dx, dy, dz) = (self.p[0] - qx, self.p[1] - qy, self.p[2] - qz);
         let d2 = dx * dx + dy * dy + dz * dz;
-        let mut ok = valid;
-        if VIEW != VIEW_ALL {
-            // a = (q − p)·v = −e with e = d·v, so a < 0 is e > 0 and a² = e²; d2 > 0 is never
-            // behind (NeighbourRules::behind).
-            let e = dx * self.v[0] + dy * self.v[1] + dz * self.v[2];
-            let (a2, b2d2) = (e * e, self.bb * d2);
-            let negative = zero.cmplt(e);
-            let behind = if VIEW == VIEW_NARROW {
-                negative | a2.cmplt(b2d2)
+        let away = d2.cmpgt(zero);
+        // The lanes a test keeps: within its radius and, with a field of view, not hidden.
+        let keep = |within: BVec4A, hidden: BVec4A| {
+            if VIEW == VIEW_ALL {
+                within
             } else {
-                negative & a2.cmpgt(b2d2)
-            };
-            ok &= !(behind & d2.cmpgt(zero));
-        }
-        let mc = ok & d2.cmple(self.rc2);
+                lanes::and_not(hidden, within)
+            }
+        };
+        let hidden = if VIEW == VIEW_ALL {
+            BVec4A::splat(false)
+        } else {
+            // With a = (q − p)·v = −e, e = d·v: behind is a|a| < b|b| d2, that is
+            // e|e| > −b|b| d2, exactly (negation is exact); d2 > 0 is never behind.
+            let e = dx * self.v[0] + dy * self.v[1] + dz * self.v[2];
+            (e * e.abs()).cmpgt(self.cone * d2) & away
+        };
+        let mc = keep(d2.cmple(self.rc2), hidden);
         let ma = if SAME_RADII {
             mc
         } else {
-            ok & d2.cmple(self.ra2)
+            keep(d2.cmple(self.ra2), hidden)
         };
         sums.dx += lanes::and(mc, dx);
         sums.dy += lanes::and(mc, dy);
         sums.dz += lanes::and(mc, dz);
-        sums.nc += lanes::and(mc, Vec4::ONE);
+        sums.nc.add(mc);
         sums.wx += lanes::and(ma, wx);
         sums.wy += lanes::and(ma, wy);
         sums.wz += lanes::and(ma, wz);
         if !SAME_RADII {
-            sums.na += lanes::and(ma, Vec4::ONE);
+            sums.na.add(ma);
         }
-        let ms = ok & d2.cmple(self.rs2) & d2.cmpgt(zero);
+        let ms = keep(d2.cmple(self.rs2) & away, hidden);
         if ms.any() {
             // Rare: the separation radius is small.
             sums.sep += Vec3::new(
@@ -854,8 +968,10 @@ impl SimdKernel {
 /// What the three rules and the distance law sum over a boid's neighbours.
 #[derive(Default)]
 struct Neighbours {
-    n_c: u32,
-    n_a: u32,
+    /// The numbers of cohesion and alignment neighbours (whole numbers, as floats: the step
+    /// divides by them).
+    n_c: f32,
+    n_a: f32,
     /// `Σ (q − p)` over the cohesion neighbours: their centre is `p + offset / n_c`.
     offset: Vec3,
     mean_v: Vec3,
@@ -881,18 +997,13 @@ struct NeighbourRules {
 impl NeighbourRules {
     /// Whether a neighbour at squared distance `d2 > 0` with `(q − p)·v = a` lies outside the
     /// field of view, `a < cos(fov/2) |q − p| |v|`, without the square root: with
-    /// `b = cos(fov/2) |v|`, for `b ≥ 0` that is `a < 0 or a² < b² d2`, for `b < 0` it is
-    /// `a < 0 and a² > b² d2`. The SIMD step ([`Flock::steer_all_with_grid`]) evaluates the
-    /// same expressions lane by lane, so both decide every pair alike.
+    /// `b = cos(fov/2) |v|`, both sides squared with their signs kept (`x ↦ x|x|` is
+    /// increasing), that is `a|a| < b|b| d2`. The SIMD step ([`Flock::steer_all_with_grid`])
+    /// evaluates the same products lane by lane, so both decide every pair alike.
     #[inline(always)]
     fn behind(&self, a: f32, d2: f32) -> bool {
         let b = self.cos_half * self.v_len;
-        let (a2, b2d2) = (a * a, b * b * d2);
-        if b >= 0.0 {
-            a < 0.0 || a2 < b2d2
-        } else {
-            a < 0.0 && a2 > b2d2
-        }
+        a * a.abs() < b * b.abs() * d2
     }
 
     fn new(params: &BoidParams, v: Vec3) -> Self {
@@ -917,11 +1028,11 @@ impl NeighbourRules {
         }
         if d2 <= self.rc2 {
             acc.offset -= d;
-            acc.n_c += 1;
+            acc.n_c += 1.0;
         }
         if d2 <= self.ra2 {
             acc.mean_v += w;
-            acc.n_a += 1;
+            acc.n_a += 1.0;
         }
         if d2 <= self.rs2 && d2 > 0.0 {
             acc.sep += d / d2;
