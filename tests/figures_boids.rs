@@ -58,6 +58,8 @@ fn the_flock_draws_every_boid_and_the_highlighted_ones_neighbours() {
     let note = scene.draw(&mut frame);
     assert_eq!(frame.points.len(), 300);
     assert!(note.contains("300 boids, grid search"), "{note}");
+    // The steering cap with its unit (it read "the force is at most 6.000").
+    assert!(note.contains("capped at 6.000 m/s²"), "{note}");
     scene.set_leader(true);
     scene.set_predator(true);
     scene.advance_to(0.5).unwrap();
@@ -399,4 +401,128 @@ fn the_order_plot_follows_the_flock_step_by_step() {
     // A leader pulls φ past 0.8 within 4 s.
     let ((phi_led, _), _) = run(2.0, 1.2, true);
     assert!(phi_led > 0.8, "leader: φ {phi_led}");
+}
+
+/// Steps `f` on to `time_sec` one step at a time (as the page does, frame by frame).
+fn fly_to(f: &mut FlockFigure, time_sec: f32) {
+    let mut k = (f.plot_samples()[f.plot_samples().len() - 3] * 60.0).round() as usize;
+    while (k as f32) < time_sec * 60.0 - 0.5 {
+        k += 1;
+        f.advance_to(k as f32 / 60.0).unwrap();
+    }
+}
+
+#[test]
+fn the_flock_try_this_holds_when_done_in_mid_flight() {
+    // The reader moves the controls while the flock flies, not only at its start. Minimum speed
+    // to 0 at any moment: the mean speed is under a tenth of the top speed 5 s later ("within
+    // five seconds"; at 4 s it was still 0.13 after a change at 2 s). Then back to 1.2 with the
+    // leader: φ past 0.8 within five seconds.
+    for t0 in [2.0f32, 5.0, 8.0] {
+        let mut f = FlockFigure::new();
+        fly_to(&mut f, t0);
+        f.set_min_speed(0.0).unwrap();
+        fly_to(&mut f, t0 + 5.0);
+        assert!(
+            f.speed_ratio() < 0.1,
+            "min speed 0 at {t0} s: {}",
+            f.speed_ratio()
+        );
+        f.set_min_speed(1.2).unwrap();
+        f.set_leader(true);
+        fly_to(&mut f, t0 + 10.0);
+        assert!(
+            f.polarisation() > 0.8,
+            "leader at {} s: φ {}",
+            t0 + 5.0,
+            f.polarisation()
+        );
+    }
+    // Alignment off in mid-flight: an ordered flock keeps much of its order for a while (which
+    // is why the Try this says to start a new flock by dragging the timeline back to 0 s).
+    let mut f = FlockFigure::new();
+    fly_to(&mut f, 17.0);
+    assert!(f.polarisation() > 0.4, "{}", f.polarisation());
+    f.set_rule("alignment", 0.0, 1.5).unwrap();
+    fly_to(&mut f, 19.0);
+    assert!(f.polarisation() > 0.3, "{}", f.polarisation());
+    // Dragged back to 0 s: a new flock, whose φ stays under 0.15 all through the loop.
+    f.advance_to(0.0).unwrap();
+    let mut highest: f32 = 0.0;
+    for k in 1..=1200 {
+        f.advance_to(k as f32 / 60.0).unwrap();
+        highest = highest.max(f.polarisation());
+    }
+    assert!(
+        highest < 0.15,
+        "no alignment from the start: φ reached {highest}"
+    );
+}
+
+#[test]
+fn the_box_holds_the_flock_loosely() {
+    // The text: a spring pulls back any boid that leaves the box, so boids overshoot the walls,
+    // some by more than a metre, before they turn (it said the flock stays inside the box, while
+    // at 2.5 s 80% of the boids were outside it). None escapes.
+    let mut f = FlockFigure::new();
+    let b = f.params().bounds;
+    let mut farthest: f32 = 0.0;
+    for k in 1..=1200 {
+        f.advance_to(k as f32 / 60.0).unwrap();
+        for p in &f.flock().positions {
+            farthest = farthest.max((p.abs() - b).max(Vec3::ZERO).length());
+        }
+    }
+    assert!(
+        farthest > 1.0 && farthest < 2.5,
+        "farthest outside the box: {farthest} m"
+    );
+}
+
+#[test]
+fn the_force_laws_do_what_the_text_says() {
+    use inbetween::boids::ForceLaw;
+    let mut f = FlockFigure::new();
+    // The Gaussian law (a1 = a2 = 1, k = 2, x0 = 0.7 m): repels at contact, changes sign at
+    // exactly x0 / 2, attracts most a little beyond x0. With a2 = 3 it repelled at x0.
+    f.set_law("Gaussian").unwrap();
+    let ForceLaw::Gaussian { a1, a2, k, x0 } = f.params().law else {
+        panic!("{:?}", f.params().law)
+    };
+    assert_eq!((a1, a2, k, x0), (1.0, 1.0, 2.0, 0.7));
+    let law = f.params().law;
+    assert!(law.f(0.05) < 0.0 && law.f(0.45 * x0) < 0.0 && law.f(0.55 * x0) > 0.0);
+    assert!(law.f(0.5 * x0).abs() < 1e-6, "{}", law.f(0.5 * x0));
+    let xs = (1..=1500).map(|i| i as f32 / 1000.0);
+    let peak = xs.max_by(|a, b| law.f(*a).total_cmp(&law.f(*b))).unwrap();
+    assert!(peak > x0 && peak < 1.15 * x0, "peak at {peak} m");
+    // The inverse-power law (a1 = 0.4, a2 = 0.04) is zero at 0.32 m, but in the flock every
+    // neighbour within 1.5 m pulls, so nearest neighbours end up about 0.2 m apart.
+    f.set_law("a1/x² − a2/x⁴").unwrap();
+    let ForceLaw::InversePower { a1, a2 } = f.params().law else {
+        panic!("{:?}", f.params().law)
+    };
+    let zero = (a2 / a1).sqrt();
+    assert!((zero - 0.316).abs() < 1e-3 && f.params().law.f(zero).abs() < 1e-4);
+    assert_eq!(f.params().law_radius, 1.5);
+    let (mut sum, mut samples) = (0.0, 0);
+    for k in 1..=1200 {
+        f.advance_to(k as f32 / 60.0).unwrap();
+        if k > 600 && k % 30 == 0 {
+            let ps = &f.flock().positions;
+            let nearest = |i: usize| {
+                (0..ps.len())
+                    .filter(|&j| j != i)
+                    .map(|j| (ps[i] - ps[j]).length())
+                    .fold(f32::INFINITY, f32::min)
+            };
+            sum += (0..ps.len()).map(nearest).sum::<f32>() / ps.len() as f32;
+            samples += 1;
+        }
+    }
+    let mean = sum / samples as f32;
+    assert!(
+        mean > 0.15 && mean < 0.26,
+        "mean nearest-neighbour distance {mean} m"
+    );
 }

@@ -230,9 +230,11 @@ impl FlockFigure {
         self.params.law = match LAWS.iter().position(|&l| l == name) {
             Some(0) => ForceLaw::None,
             Some(1) => ForceLaw::InversePower { a1: 0.4, a2: 0.04 },
+            // a2 = a1: the net law repels within x0 / 2 and attracts most near x0, as the
+            // lesson says (with a2 = 3 a1 it repelled at x0 and barely attracted anywhere).
             Some(2) => ForceLaw::Gaussian {
                 a1: 1.0,
-                a2: 3.0,
+                a2: 1.0,
                 k: 2.0,
                 x0: 0.7,
             },
@@ -452,8 +454,8 @@ impl FlockFigure {
         }
         format!(
             "{} boids, {} search; the orange boid sees {count} {} within {} m and steers \
-             at {} m/s² (purple arrow, {STEER_ARROW_M_PER_MS2} m per m/s², drawn at most {STEER_ARROW_MAX_M} m long; the force is at \
-             most {}); speed between {} and {} m/s. Polarisation φ = {:.2} (1: all head the same way), \
+             at {} m/s² (purple arrow, {STEER_ARROW_M_PER_MS2} m per m/s², drawn at most {STEER_ARROW_MAX_M} m long; the steering is \
+             capped at {} m/s²); speed between {} and {} m/s. Polarisation φ = {:.2} (1: all head the same way), \
              mean speed {:.2} m/s.",
             self.flock.len(),
             if self.search == Search::Grid {

@@ -178,6 +178,28 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
         return { canvas: canvas.bottom, panel: panel.bottom, beside: panel.left >= canvas.right - 1 };
       }, flock);
       if (fit.beside) assert.ok(fit.panel <= fit.canvas + 1, `${w}x${h}: panel below the canvas ${JSON.stringify(fit)}`);
+      // The first Try this sends the reader into the closed radii folder, by the name it has in
+      // the panel. Opening it closes the weights (both open, the panel ran 80 px below the
+      // canvas at 1600 x 1000), and the field of view is there; opening the weights closes it.
+      const radiiName = 'rule radii (m), field of view';
+      assert.ok((await page.locator('.callout', { hasText: radiiName }).count()) > 0, 'no text names the radii folder');
+      const folder = (name) => page.locator(`${flock} .lil-gui .lil-gui`, { hasText: name }).first();
+      const fov = folder(radiiName).locator('.lil-controller', { hasText: 'field of view' });
+      assert.ok(!(await fov.isVisible()), `${w}x${h}: the radii folder starts open`);
+      await folder(radiiName).locator('.lil-title').click();
+      await page.waitForTimeout(600);
+      assert.ok(await fov.isVisible(), `${w}x${h}: the field of view is not in the radii folder`);
+      const alignment = folder('rule weights').locator('.lil-controller', { hasText: 'alignment' });
+      assert.ok(!(await alignment.isVisible()), `${w}x${h}: the weights stayed open beside the radii`);
+      const fitOpen = await page.evaluate((flock) => {
+        const canvas = document.querySelector(`${flock} .stage canvas`).getBoundingClientRect();
+        const panel = document.querySelector(`${flock} .panel`).getBoundingClientRect();
+        return { canvas: canvas.bottom, panel: panel.bottom, beside: panel.left >= canvas.right - 1 };
+      }, flock);
+      if (fitOpen.beside) assert.ok(fitOpen.panel <= fitOpen.canvas + 1, `${w}x${h}: radii open, panel below the canvas ${JSON.stringify(fitOpen)}`);
+      await folder('rule weights').locator('.lil-title').click();
+      await page.waitForTimeout(600);
+      assert.ok(await alignment.isVisible() && !(await fov.isVisible()), `${w}x${h}: the folders do not take turns`);
       // The order plot: titled, both series named, and drawn from the flock's samples after a
       // second of flight (its canvas shows the purple polarisation line).
       const plot = page.locator('#flock-order-plot');
