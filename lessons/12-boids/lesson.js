@@ -109,7 +109,7 @@ if (flockViewer) {
   // machine (another tab, a garbage collection) only ever makes one slower, so the minimum is
   // the figure least disturbed by load (the median of 3 let one loaded moment bend the curve).
   const plot = new Plot(document.getElementById('flock-plot'), {
-    title: 'One step of the flock: grid vs naive search', xLabel: 'boids N', yLabel: 'step time (ms)',
+    title: 'One step of the flock: grid vs naive search', xLabel: 'boids N (count)', yLabel: 'step time (ms)',
     series: ['grid', 'naive'], colors: [cssVar('--z-axis'), cssVar('--x-axis')], minSpan: 0.1,
   });
   const SIZES = [100, 200, 400, 800, 1600];

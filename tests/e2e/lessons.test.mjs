@@ -35,16 +35,12 @@ const open = (context, path) => openPage(context, site.origin + path);
  * parenthesis. uPlot draws the labels on its canvas; the shell's Plot copies them to the plot
  * element's data-x-label and data-y-label, and a .plot element that no Plot filled has neither.
  */
-async function plotsNameTheirUnits(page, folder) {
+async function plotsNameTheirUnits(page) {
   const plots = await page.evaluate(() => [...document.querySelectorAll('.plot')]
     .map((p) => ({ id: p.id, title: p.dataset.plot, x: p.dataset.xLabel, y: p.dataset.yLabel })));
   const named = (label) => /\S.*\(\s*[^\s)][^)]*\)/.test(label ?? '');
-  // Lesson 12's page belongs to another piece of work at the time of writing: its step-time
-  // plot's x label "boids N" is let through, that label alone, until it names its unit there
-  // (then delete this line).
-  const pending = (p, axis) => folder.startsWith('12-') && axis === 'x' && p.x === 'boids N';
   const unnamed = plots.flatMap((p) => ['x', 'y']
-    .filter((axis) => !named(p[axis]) && !pending(p, axis))
+    .filter((axis) => !named(p[axis]))
     .map((axis) => `${p.id || p.title || '(a plot)'}: ${axis} label ${JSON.stringify(p[axis] ?? null)}`));
   assert.deepEqual(unnamed, [], 'every plot labels both axes with a quantity and its unit in parentheses');
 }
@@ -346,7 +342,7 @@ for (const backend of BACKENDS) {
           await frames(page, 20);
           const stillDrawing = (await drawn()).filter(([, n], k) => n - drawnBefore[k][1] > 2);
           assert.deepEqual(stillDrawing.map(([s]) => s), [], 'these paused figures kept drawing');
-          await plotsNameTheirUnits(page, lesson.folder);
+          await plotsNameTheirUnits(page);
           if (lesson.folder.startsWith('02-')) await editorDrags(page);
           if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
           clock('editor drags, GPU noise check');
