@@ -39,9 +39,11 @@ pub enum ForceLaw {
         a1: f32,
         a2: f32,
     },
-    /// `f(x) = a1 exp(−k ((x − x0)/x0)²) − a2 exp(−x/x0)`: attraction peaking at `x0`,
-    /// repulsion strongest at contact. (The course writes the repulsion as `a2 exp(x/x0)`;
-    /// with a minus sign in the exponent it fades with distance instead of growing.)
+    /// `f(x) = a1 exp(−k ((x − x0)/x0)²) − a2 exp(−x/x0)`: an attraction term peaking at `x0`
+    /// and a repulsion strongest at contact (the sum peaks beyond `x0`, by how much depends on
+    /// `a2`; with `k = 2` and `a1 = a2` it changes sign at `x0 / 2`). (The course writes the
+    /// repulsion as `a2 exp(x/x0)`; with a minus sign in the exponent it fades with distance
+    /// instead of growing.)
     Gaussian {
         a1: f32,
         a2: f32,
@@ -565,11 +567,12 @@ impl Flock {
     /// sets are the same; the sums run in another order (four partial sums), so they differ
     /// from the scalar path's by rounding.
     ///
-    /// What keeps the loop short (it is most of the step): each run's six arrays are sliced
-    /// once, so its full chunks of four need no bounds check and no lane mask (only a run's last,
-    /// partial chunk is masked); the counts are sums of lane masks, so there is no bit count;
-    /// cohesion sums `p − q`, which the distance test computed anyway; when cohesion and
-    /// alignment share a radius (the default), one mask and one count serve both.
+    /// What keeps the loop short (it is most of the step): the six arrays are read through
+    /// pointers checked once per step, four lanes at a time with no lane mask (a run's last
+    /// chunk reads past its end, see `simd_sums`); the counts are integer lane counters; the
+    /// field of view is one comparison of signed squares; cohesion sums `p − q`, which the
+    /// distance test computed anyway; when cohesion and alignment share a radius (the
+    /// default), one mask and one count serve both.
     fn steer_simd(
         &self,
         params: &BoidParams,
