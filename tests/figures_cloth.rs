@@ -76,6 +76,16 @@ fn past_the_limit_the_mass_spring_flag_explodes_safely_and_xpbd_does_not() {
     assert!(f.exploded(1).is_none(), "XPBD stays");
     assert!(note.contains("exploded at t ="), "{note}");
     assert!(frame.labels.iter().any(|l| l.text.contains("exploded")));
+    // The name stays above the flag and the explosion is said under it: one long label above
+    // the flag ran into the XPBD flag's name.
+    let at = |t: &str| frame.labels.iter().find(|l| l.text == t).map(|l| l.anchor);
+    let name = at("mass-spring").expect("the mass-spring name label");
+    let said = frame
+        .labels
+        .iter()
+        .find(|l| l.text.starts_with("exploded at"))
+        .expect("the explosion label");
+    assert!(said.anchor.y < name.y - 1.0 && said.anchor.y > 0.5, "{:?}", said.anchor);
     // What is drawn is finite (the last good state), and the plot has gaps after the explosion.
     let (p, n, _) = f.render_buffers(0);
     assert!(p.iter().chain(n).all(|v| v.is_finite()));

@@ -672,6 +672,11 @@ impl ClothFigure {
             );
         }
         let rows_per_band = |rows: usize| (rows / 5).max(1);
+        // From a cloth's name label down to the label under it, metres.
+        let below = match self.preset {
+            Preset::Flag => 1.6,
+            Preset::Drape => 0.2,
+        };
         for (k, sim) in self.sims.iter_mut().enumerate() {
             let exploded = sim.cloth.exploded().is_some();
             let n = sim.cloth.len();
@@ -724,15 +729,20 @@ impl ClothFigure {
             }
             let name = sim.method.name();
             match sim.cloth.exploded() {
-                Some(t) => frame.label(
-                    sim.label,
-                    format!(
-                        "{name}: {} at {} s",
-                        if sim.torn { "torn by the drag" } else { "exploded" },
-                        format_number(t)
-                    ),
-                    palette::RED,
-                ),
+                // The name stays where it was, in red, and what happened goes under the cloth: one
+                // long label above each flag ran into the other flag's.
+                Some(t) => {
+                    frame.label(sim.label, name, palette::RED);
+                    frame.label(
+                        sim.label - Vec3::new(0.0, below, 0.0),
+                        format!(
+                            "{} at {} s",
+                            if sim.torn { "torn by the drag" } else { "exploded" },
+                            format_number(t)
+                        ),
+                        palette::RED,
+                    );
+                }
                 None => frame.label(sim.label, name, sim.color),
             }
         }
