@@ -165,6 +165,14 @@ if (drapeViewer) {
   gui.add(p, 'friction', 0, 2, 0.05).name('friction μ');
   gui.add(p, 'pins', ['none', 'two corners', 'whole edge']).name('pins');
   gui.add(p, 'reset').name('reset');
+  const note = document.getElementById('drape-note');
+  const timing = document.getElementById('drape-timing');
+  let average = 0;
+  let frame = 0;
+  let last = 0;
+  // The measurement belongs to one cloth: a new resolution or method starts it again (the old
+  // line would name the new cloth with the old cloth's time).
+  let timed = '';
   let rejected = '';
   const apply = guarded(gui, p, () => {
     scene.setMethod(p.method);
@@ -172,15 +180,16 @@ if (drapeViewer) {
     scene.setObstacles(p.sphereX, p.boxX, p.boxZ);
     scene.setFriction(p.friction);
     scene.setPins(p.pins);
+    const cloth = `${p.resolution} × ${p.resolution}, ${p.method}`;
+    if (cloth !== timed) {
+      timed = cloth;
+      average = 0;
+      showNote(timing, `Measuring the time per frame of the ${cloth} cloth while it plays…`);
+    }
   }, (m) => { rejected = m; });
   gui.onChange(apply);
   apply();
   dragParticles('#fig-drape', scene, timeline);
-  const note = document.getElementById('drape-note');
-  const timing = document.getElementById('drape-timing');
-  let average = 0;
-  let frame = 0;
-  let last = 0;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     const t0 = performance.now();
