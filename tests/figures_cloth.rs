@@ -15,6 +15,24 @@ fn draw(f: &mut ClothFigure, t: f32) -> (String, Frame) {
     (note, frame)
 }
 
+/// Moves a pointer over the view row by row (`step` pixels apart) and grabs the first particle
+/// under it: where it was grabbed.
+fn grab_first(
+    f: &mut ClothFigure,
+    xs: std::ops::Range<u32>,
+    ys: std::ops::Range<u32>,
+    step: usize,
+) -> Option<(f32, f32)> {
+    for y in ys.step_by(step) {
+        for x in xs.clone().step_by(step) {
+            if f.grab(x as f32, y as f32).unwrap() {
+                return Some((x as f32, y as f32));
+            }
+        }
+    }
+    None
+}
+
 #[test]
 fn same_controls_and_time_give_the_same_cloth() {
     let mut a = ClothFigure::new(Preset::Flag);
@@ -85,7 +103,11 @@ fn past_the_limit_the_mass_spring_flag_explodes_safely_and_xpbd_does_not() {
         .iter()
         .find(|l| l.text.starts_with("exploded at"))
         .expect("the explosion label");
-    assert!(said.anchor.y < name.y - 1.0 && said.anchor.y > 0.5, "{:?}", said.anchor);
+    assert!(
+        said.anchor.y < name.y - 1.0 && said.anchor.y > 0.5,
+        "{:?}",
+        said.anchor
+    );
     // What is drawn is finite (the last good state), and the plot has gaps after the explosion.
     let (p, n, _) = f.render_buffers(0);
     assert!(p.iter().chain(n).all(|v| v.is_finite()));
@@ -153,18 +175,11 @@ fn a_dragged_particle_follows_and_is_replayed() {
     let camera = OrbitCamera::default();
     draw(&mut f, 0.5);
     f.set_view(camera, 800.0, 600.0);
-    // Grab whatever is nearest the centre of the view, if the default camera sees the flags.
-    let mut grabbed = false;
-    'search: for y in (100..500).step_by(10) {
-        for x in (100..700).step_by(10) {
-            if f.grab(x as f32, y as f32).unwrap() {
-                grabbed = true;
-                f.drag(x as f32 + 80.0, y as f32 - 60.0).unwrap();
-                break 'search;
-            }
-        }
-    }
-    assert!(grabbed, "no particle under any pointer position");
+    // Grab the first particle under a pointer scanning the view, if the default camera sees
+    // the flags.
+    let (x, y) =
+        grab_first(&mut f, 100..700, 100..500, 10).expect("no particle under any pointer position");
+    f.drag(x + 80.0, y - 60.0).unwrap();
     draw(&mut f, 1.0);
     f.release();
     let dragged = (f.positions(0).to_vec(), f.positions(1).to_vec());
@@ -320,14 +335,27 @@ fn the_flag_try_this_is_what_the_flags_do() {
     assert!(pushed.exploded(0).unwrap() < 0.1);
     assert!(pushed.exploded(1).is_none());
     // "stays near the default's 7 %", "about 2 % at 10 substeps" (means over 3 to 6 s).
-    let (d, p) = (mean_late_stretch(&default, 4), mean_late_stretch(&pushed, 4));
-    assert!((5.5..8.5).contains(&d) && (5.5..8.5).contains(&p), "XPBD stretch {p} % vs {d} %");
+    let (d, p) = (
+        mean_late_stretch(&default, 4),
+        mean_late_stretch(&pushed, 4),
+    );
+    assert!(
+        (5.5..8.5).contains(&d) && (5.5..8.5).contains(&p),
+        "XPBD stretch {p} % vs {d} %"
+    );
     let ten = mean_late_stretch(&flag(2000.0, 10.0, 6.0), 4);
     assert!((1.5..2.5).contains(&ten), "{ten} %");
     // The substeps the mass-spring flag needs grow with √k: 9 at 500 N/m, 18 at 2,000.
     for (k, need) in [(500.0, 9.0), (2000.0, 18.0)] {
-        assert!(flag(k, need, 6.0).exploded(0).is_none(), "{k} N/m, {need} substeps");
-        assert!(flag(k, need - 1.0, 6.0).exploded(0).is_some(), "{k} N/m, {} substeps", need - 1.0);
+        assert!(
+            flag(k, need, 6.0).exploded(0).is_none(),
+            "{k} N/m, {need} substeps"
+        );
+        assert!(
+            flag(k, need - 1.0, 6.0).exploded(0).is_some(),
+            "{k} N/m, {} substeps",
+            need - 1.0
+        );
     }
     // The start is a sample: the exploding flag's energy curve has a line, not a lone point.
     let r = rows(&pushed);
@@ -336,14 +364,23 @@ fn the_flag_try_this_is_what_the_flags_do() {
     // The note's advice is what this figure's controls do; an exploding drape gets its own.
     let mut p = flag(2000.0, 4.0, 6.0);
     let note = draw(&mut p, 1.0).0;
-    assert!(note.contains("raise the substeps: the run starts again"), "{note}");
+    assert!(
+        note.contains("raise the substeps: the run starts again"),
+        "{note}"
+    );
     assert!(!note.contains("then reset"), "{note}");
     let mut drape = ClothFigure::new(Preset::Drape);
     drape.set_resolution(40.0).unwrap();
     let note = draw(&mut drape, 0.5).0;
     assert!(drape.exploded(0).is_some());
-    assert!(note.contains("h is above it: no guarantee, it may explode"), "{note}");
-    assert!(note.contains("fewer particles per side") && note.contains("or XPBD"), "{note}");
+    assert!(
+        note.contains("h is above it: no guarantee, it may explode"),
+        "{note}"
+    );
+    assert!(
+        note.contains("fewer particles per side") && note.contains("or XPBD"),
+        "{note}"
+    );
 }
 
 #[test]
@@ -354,7 +391,10 @@ fn without_wind_mass_spring_energy_only_falls_and_xpbd_wobbles_a_little() {
         let f = flag(k, n, 0.0);
         let r = rows(&f);
         for w in r.windows(2) {
-            assert!(w[1][1] <= w[0][1] + 1e-4 * w[0][1], "mass-spring rises at {k}: {w:?}");
+            assert!(
+                w[1][1] <= w[0][1] + 1e-4 * w[0][1],
+                "mass-spring rises at {k}: {w:?}"
+            );
         }
         let e: Vec<f32> = r.iter().map(|x| x[2]).collect();
         assert!(e[e.len() - 1] < e[0], "XPBD drifts down at {k}");
@@ -412,12 +452,24 @@ fn the_spring_try_this_numbers_hold() {
     assert!(f.exploded_at_sec().is_none());
     let s = f.length_samples();
     let r: Vec<&[f32]> = s.chunks(3).collect();
-    let jumps = r[..30].windows(2).filter(|w| (w[1][1] - w[0][1]).abs() > 0.3).count();
+    let jumps = r[..30]
+        .windows(2)
+        .filter(|w| (w[1][1] - w[0][1]).abs() > 0.3)
+        .count();
     assert!(jumps > 10, "{jumps}");
     let sag = 0.8 + 0.05 * 9.81 / 400.0;
-    let late_xpbd = r[12..60].iter().map(|x| (x[2] - sag).abs()).fold(0.0f32, f32::max);
-    let late_spring = r[12..60].iter().map(|x| (x[1] - sag).abs()).fold(0.0f32, f32::max);
-    assert!(late_xpbd < 0.01 && late_spring > 0.2, "{late_xpbd} {late_spring}");
+    let late_xpbd = r[12..60]
+        .iter()
+        .map(|x| (x[2] - sag).abs())
+        .fold(0.0f32, f32::max);
+    let late_spring = r[12..60]
+        .iter()
+        .map(|x| (x[1] - sag).abs())
+        .fold(0.0f32, f32::max);
+    assert!(
+        late_xpbd < 0.01 && late_spring > 0.2,
+        "{late_xpbd} {late_spring}"
+    );
     // 25 ms: ω h > 2 and the spring particle is gone after three steps.
     f.set_step_ms(25.0).unwrap();
     assert!(f.omega_h() > 2.0);
@@ -437,23 +489,25 @@ fn a_cloth_pulled_apart_by_a_drag_is_torn_not_exploded() {
     };
     draw(&mut f, 0.5);
     f.set_view(camera, 800.0, 600.0);
-    let mut grabbed = None;
-    'search: for y in (100..500).step_by(5) {
-        for x in (400..800).step_by(5) {
-            if f.grab(x as f32, y as f32).unwrap() {
-                grabbed = Some((x as f32, y as f32));
-                break 'search;
-            }
-        }
-    }
-    let (x, y) = grabbed.expect("a particle of the XPBD flag under the pointer");
+    let (x, y) = grab_first(&mut f, 400..800, 100..500, 5)
+        .expect("a particle of the XPBD flag under the pointer");
     f.drag(x + 400.0, y - 800.0).unwrap();
     let (note, frame) = draw(&mut f, 3.0);
-    let k = f.exploded(1).map(|_| 1).or(f.exploded(0).map(|_| 0)).expect("torn");
+    let k = f
+        .exploded(1)
+        .map(|_| 1)
+        .or(f.exploded(0).map(|_| 0))
+        .expect("torn");
     let name = ["mass-spring", "XPBD"][k];
-    assert!(note.contains(&format!("The {name} cloth was torn apart by the drag")), "{note}");
+    assert!(
+        note.contains(&format!("The {name} cloth was torn apart by the drag")),
+        "{note}"
+    );
     assert!(!note.contains("exploded at"), "{note}");
-    assert!(frame.labels.iter().any(|l| l.text.contains("torn by the drag")));
+    assert!(frame
+        .labels
+        .iter()
+        .any(|l| l.text.contains("torn by the drag")));
     // A reset forgets the drag and the tear.
     f.reset();
     let (note, _) = draw(&mut f, 3.0);
