@@ -239,8 +239,11 @@ impl ClothFigure {
             sim.torn = false;
             // The start is a sample too: a cloth that explodes in its first frames still draws a
             // line (from here up to its last good frame) instead of one invisible point.
-            sim.samples
-                .push([0.0, sim.cloth.energy(params), 100.0 * sim.cloth.max_stretch()]);
+            sim.samples.push([
+                0.0,
+                sim.cloth.energy(params),
+                100.0 * sim.cloth.max_stretch(),
+            ]);
         }
         self.frames_done = 0;
         self.drag_cursor = 0;
@@ -737,7 +740,11 @@ impl ClothFigure {
                         sim.label - Vec3::new(0.0, below, 0.0),
                         format!(
                             "{} at {} s",
-                            if sim.torn { "torn by the drag" } else { "exploded" },
+                            if sim.torn {
+                                "torn by the drag"
+                            } else {
+                                "exploded"
+                            },
                             format_number(t)
                         ),
                         palette::RED,
