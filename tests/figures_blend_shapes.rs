@@ -263,9 +263,11 @@ fn side_by_side_neither_head_reaches_into_the_other_and_the_view_frames_both() {
         }
         let s_max = f.largest_full_scale();
         let [x, y, z, distance] = f.view_fit();
-        let mut camera = OrbitCamera::default();
-        camera.target = Vec3::new(x, y, z);
-        camera.distance = distance;
+        let mut camera = OrbitCamera {
+            target: Vec3::new(x, y, z),
+            distance,
+            ..Default::default()
+        };
         camera.orbit(0.15, 0.1);
         let view_proj = camera.projection(size.x / size.y) * camera.view();
         for i in 0..16 {

@@ -750,14 +750,8 @@ mod lanes {
     }
 
     /// Four lane counters: adding a mask is one integer subtraction (a true lane is −1).
-    #[derive(Clone, Copy)]
+    #[derive(Clone, Copy, Default)]
     pub struct Count([i32; 4]);
-
-    impl Default for Count {
-        fn default() -> Self {
-            Self([0; 4])
-        }
-    }
 
     impl Count {
         #[inline(always)]
