@@ -114,11 +114,44 @@ fn past_the_limit_the_mass_spring_flag_explodes_safely_and_xpbd_does_not() {
     let s = f.samples();
     assert!(s.chunks(5).last().unwrap()[1].is_nan());
     assert!(s.chunks(5).last().unwrap()[2].is_finite());
+    // The plots' scales follow the XPBD flag, which held: the mass-spring flag's last samples
+    // before it exploded lie far above them (they squashed the XPBD curves onto a line).
+    let [e_lo, e_hi, s_lo, s_hi] = f.plot_ranges();
+    let rows: Vec<&[f32]> = s.chunks(5).collect();
+    let column = |c: usize| rows.iter().map(move |r| r[c]).filter(|x| x.is_finite());
+    let fold = |c: usize| {
+        column(c).fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        })
+    };
+    assert_eq!((e_lo, e_hi), fold(2), "energy: XPBD's range");
+    assert_eq!((s_lo, s_hi), fold(4), "stretch: XPBD's range");
+    let ms_peak = column(3).fold(0.0f32, f32::max);
+    assert!(
+        ms_peak > 5.0 * s_hi,
+        "mass-spring {ms_peak} % vs XPBD {s_hi} %"
+    );
+    assert!(
+        note.contains("The plots' scales follow the XPBD cloth that held"),
+        "{note}"
+    );
     // Reset and enough substeps: no explosion.
     f.set_substeps(40.0).unwrap();
     f.reset();
-    draw(&mut f, 2.0);
+    let (note, _) = draw(&mut f, 2.0);
     assert!(f.exploded(0).is_none());
+    // Nothing exploded: the scales cover both flags again, and the note says nothing of them.
+    let s = f.samples();
+    let both = |a: usize, b: usize| {
+        s.chunks(5)
+            .flat_map(|r| [r[a], r[b]])
+            .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), x| {
+                (lo.min(x), hi.max(x))
+            })
+    };
+    let [e_lo, e_hi, s_lo, s_hi] = f.plot_ranges();
+    assert_eq!(((e_lo, e_hi), (s_lo, s_hi)), (both(1, 2), both(3, 4)));
+    assert!(!note.contains("scales"), "{note}");
 }
 
 #[test]

@@ -440,13 +440,15 @@ function contentWidth(element) {
  * `setData([xs, ys1, ys2…])` replaces the curves; `setCursor(x)` draws a vertical playhead at `x`
  * (call it every frame with the timeline's time; `null` hides it). Every y axis is labelled with its
  * quantity and unit; the y range is never smaller than `minSpan`, so a constant signal is not
- * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0).
+ * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0);
+ * `setYRange([lo, hi])` sets the data range to show later (padded as autoscaling pads it; `null`
+ * autoscales again), for a figure whose Rust side says which samples the scale should follow.
  * `widths: [5, 1.5]` sets each series' line width in CSS pixels (default 2) and `dashes:
  * [null, [6, 4]]` its dash pattern (dash and gap lengths; `null` solid): a wide line under a
  * narrow one keeps two equal curves both visible. The legend's markers keep the usual 2 px
  * border, dashed for a dashed series. The element gets `data-plot` (the title), `data-x-label`
  * and `data-y-label` (the axis labels, which uPlot draws on its canvas, where tests cannot
- * read them).
+ * read them), and `data-y-range` (the y axis's range, "lo hi").
  */
 export class Plot {
   constructor(element, {
@@ -458,6 +460,7 @@ export class Plot {
     // enough for it (about 110 px of the default height are title, x axis and its label).
     height = Math.max(height, Math.ceil(textWidth(yLabel ?? '', '600 12px system-ui')) + 110);
     this.cursor = null;
+    this.dataRange = null;
     const cursorLine = (u) => {
       if (this.cursor === null || !Number.isFinite(this.cursor)) return;
       const x = u.valToPos(this.cursor, 'x', true);
@@ -479,7 +482,15 @@ export class Plot {
       height,
       scales: {
         x: { time: false },
-        y: { range: (u, lo, hi) => yRange ?? paddedRange(lo, hi, minSpan) },
+        y: {
+          range: (u, lo, hi) => {
+            const r = yRange ?? (this.dataRange
+              ? paddedRange(this.dataRange[0], this.dataRange[1], minSpan)
+              : paddedRange(lo, hi, minSpan));
+            element.dataset.yRange = r.join(' ');
+            return r;
+          },
+        },
       },
       // Small label fonts: a y label such as "angle about x (°)" must fit a 160 px tall plot.
       axes: [
@@ -510,6 +521,10 @@ export class Plot {
   }
   setData(columns) {
     this.plot.setData(columns);
+  }
+  /** Shows the data range `[lo, hi]` (both finite) from the next `setData` on; else autoscales. */
+  setYRange(range) {
+    this.dataRange = range && range.every(Number.isFinite) ? range : null;
   }
   /** Moves the playhead to `x` (in the x axis's unit); redraws only when it moved. */
   setCursor(x) {

@@ -557,6 +557,36 @@ impl ClothFigure {
         out
     }
 
+    /// The y ranges of the flag's two plots, `[energy lo, energy hi, stretch lo, stretch hi]`
+    /// (J, %): over the samples of the cloths that held, so that one cloth's explosion (its
+    /// last samples before it shoot up by orders of magnitude) does not flatten the other's
+    /// curves onto a line; the exploded cloth's curve then runs off the plot. Over every cloth
+    /// when none has exploded or none held; NaN before the first sample.
+    pub fn plot_ranges(&self) -> [f32; 4] {
+        let held: Vec<&Sim> = self
+            .sims
+            .iter()
+            .filter(|s| s.cloth.exploded().is_none())
+            .collect();
+        let shown: Vec<&Sim> = if held.is_empty() {
+            self.sims.iter().collect()
+        } else {
+            held
+        };
+        let mut out = [f32::NAN; 4];
+        for (column, range) in [1, 2].into_iter().zip(out.chunks_mut(2)) {
+            let values = shown
+                .iter()
+                .flat_map(|s| s.samples.iter().map(|r| r[column]));
+            for x in values.filter(|x| x.is_finite()) {
+                // min and max of NaN and x are x: the first finite value replaces the NaN.
+                range[0] = range[0].min(x);
+                range[1] = range[1].max(x);
+            }
+        }
+        out
+    }
+
     /// When cloth `k` exploded (seconds), if it did.
     pub fn exploded(&self, k: usize) -> Option<f32> {
         self.sims.get(k).and_then(|s| s.cloth.exploded())
@@ -838,6 +868,14 @@ impl ClothFigure {
                     }
                 }
             }
+        }
+        let held = self.sims.iter().filter(|s| s.cloth.exploded().is_none());
+        if let (Some(held), true) = (held.clone().next(), held.count() < self.sims.len()) {
+            parts.push(format!(
+                "The plots' scales follow the {} cloth that held: the exploded one's curves run \
+                 off them.",
+                held.method.name()
+            ));
         }
         if self.preset == Preset::Drape {
             parts.push(format!(

@@ -94,6 +94,17 @@ impl ClothScene {
     pub fn samples(&self) -> Vec<f32> {
         self.scene.samples()
     }
+    /// `[energy lo, hi, stretch lo, hi]`: the flag plots' data ranges over the cloths that held
+    /// (NaN before the first sample).
+    #[wasm_bindgen(js_name = plotRanges)]
+    pub fn plot_ranges(&self) -> Vec<f32> {
+        self.scene.plot_ranges().to_vec()
+    }
+    /// When cloth `k` exploded (seconds since the start), or `undefined` while it holds.
+    #[wasm_bindgen(js_name = explodedAt)]
+    pub fn exploded_at(&self, k: usize) -> Option<f32> {
+        self.scene.exploded(k)
+    }
     /// How many cloths are drawn (1 or 2).
     #[wasm_bindgen(js_name = clothCount)]
     pub fn cloth_count(&self) -> usize {

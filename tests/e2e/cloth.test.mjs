@@ -1,0 +1,43 @@
+// Lesson 13 in Chromium: the drape's timing line stops when its cloth explodes (a frozen cloth
+// is not simulated, so its frames would time the drawing alone and the average would sink
+// towards zero while still naming the cloth).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { launch, frames, serveDist, openPage, setControl } from './browser.mjs';
+
+const site = serveDist();
+
+test('lesson 13: the drape stops timing an exploded cloth', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/13-cloth/?backend=webgl2`, { width: 1600, height: 1000 });
+    const drape = '#fig-drape';
+    await page.locator(drape).scrollIntoViewIfNeeded();
+    // 40 x 40 mass-spring: past its stable substep, it explodes within half a second.
+    await setControl(page, drape, 'particles per side', 40);
+    await page.waitForFunction(() => /timing stopped/.test(document.querySelector('#drape-timing').textContent), null, { timeout: 60_000 });
+    const stopped = await page.locator('#drape-timing').textContent();
+    assert.match(stopped, /The timing stopped at t = \d\.\d\d s, when the 40 × 40 mass-spring cloth exploded/, stopped);
+    await frames(page, 30);
+    assert.equal(await page.locator('#drape-timing').textContent(), stopped, 'the line stays as it was');
+    // XPBD at the same resolution holds, and is timed again.
+    await setControl(page, drape, 'method', 'XPBD');
+    await page.locator(`${drape} .lil-controller`, { hasText: 'reset' }).locator('button').click();
+    await page.waitForFunction(() => /Measured here: [\d.]+ ms per frame \(40 × 40, XPBD/.test(document.querySelector('#drape-timing').textContent), null, { timeout: 60_000 });
+    // The flags pushed past the limit: the mass-spring flag explodes, and the plots' scales
+    // follow the XPBD flag (its stretch stays under 15 %; the mass-spring flag's last samples
+    // before it exploded pass 70 % and squashed the XPBD curve onto a line).
+    const flag = '#fig-flag';
+    await page.locator(flag).scrollIntoViewIfNeeded();
+    await page.locator(`${flag} .lil-controller`, { hasText: 'push past the stability limit' }).locator('button').click();
+    await page.waitForFunction(() => /The plots' scales follow the XPBD cloth that held/.test(document.querySelector('#flag-note').textContent), null, { timeout: 60_000 });
+    await frames(page, 10);
+    const [lo, hi] = (await page.locator('#flag-stretch').getAttribute('data-y-range')).split(' ').map(Number);
+    assert.ok(hi < 25 && lo > -2, `stretch axis ${lo}..${hi} %`);
+    await page.locator(flag).screenshot({ path: 'tests/screenshots/13-cloth-flag-exploded-webgl2.png' });
+    assert.deepEqual(problems, []);
+    await page.close();
+  } finally {
+    await context.close();
+  }
+});
