@@ -495,7 +495,12 @@ export class Plot {
       // Small label fonts: a y label such as "angle about x (°)" must fit a 160 px tall plot.
       axes: [
         { label: xLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22 },
-        { label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56 },
+        // A short plot keeps room for four ticks: uPlot's 30 px between y ticks left a plot 80 px
+        // tall with a 2 J range one tick (incr 1 J) and no sense of scale.
+        {
+          label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56,
+          space: (u, i, min, max, dim) => Math.min(30, Math.max(16, dim / 4)),
+        },
       ],
       // Series names only: a live legend shows "--" for every value until the pointer hovers.
       legend: { live: false, markers: { width: 2, dash: (u, i) => (u.series[i].dash ? 'dashed' : 'solid') } },
