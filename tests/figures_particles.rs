@@ -588,3 +588,69 @@ fn at_e_1_and_mu_0_the_balls_stay_in_their_box_and_in_view() {
         }
     }
 }
+
+/// What the page's `apply()` does after every control, the "explode now" button included
+/// (lil-gui calls the panel's onChange for a button too): every setter with the values it has.
+fn apply_unchanged(scene: &mut EmitterFigure, mode: &str) {
+    scene.set_mode(mode).unwrap();
+    scene.set_rate(200.0).unwrap();
+    scene.set_burst(400.0).unwrap();
+    scene.set_spread_deg(11.0).unwrap();
+    scene.set_lifetime(2.5).unwrap();
+    scene.set_restitution(0.7).unwrap();
+    scene.set_gravity(9.81).unwrap();
+    scene.set_sort(true);
+    scene.set_fade(true);
+}
+
+#[test]
+fn explode_now_while_paused_shows_its_sparks_at_once() {
+    // The review pressed "explode now" on a paused figure and nothing appeared: the button's
+    // onChange re-applied every control, each setter marked the run dirty, and the replay stopped
+    // short of the step the press belongs to. Setting a value it already has is no change, and a
+    // replay spawns the presses of the step it stops at.
+    let eye = Vec3::new(0.0, 2.0, 6.0);
+    let mut scene = EmitterFigure::new();
+    scene.set_spread_deg(11.0).unwrap();
+    scene.draw(&mut Frame::default(), eye, 1.8).unwrap();
+    assert_eq!(from_emitter(&scene, 1).0, 0);
+    scene.explode();
+    apply_unchanged(&mut scene, "fountain");
+    let note = scene.draw(&mut Frame::default(), eye, 1.8).unwrap();
+    assert_eq!(from_emitter(&scene, 1).0, 400, "{note}");
+    // A real change replays from the start and still shows the press, once.
+    scene.set_restitution(0.5).unwrap();
+    scene.draw(&mut Frame::default(), eye, 1.8).unwrap();
+    assert_eq!(from_emitter(&scene, 1).0, 400);
+    scene.draw(&mut Frame::default(), eye, 1.9).unwrap();
+    assert_eq!(from_emitter(&scene, 1).0, 400, "spawned once");
+}
+
+#[test]
+fn the_free_fall_plot_ends_where_the_timeline_does() {
+    // At dt = 0.3 s the plot ran to 1.5 s, a fifth step that the figure, whose timeline ends at
+    // 1.3 s, never draws. The last sample is now the figure's state at the end of the timeline.
+    for dt in [0.01, 0.05, 0.07, 0.1, 0.25, 0.3] {
+        let mut scene = FreeFallFigure::new();
+        scene.set_dt(dt).unwrap();
+        let s = scene.error_samples();
+        let last = &s[s.len() - 4..];
+        assert!(last[0] <= FREE_FALL_DURATION + 1e-4, "dt {dt}: {last:?}");
+        let steps = s.len() / 4 - 1;
+        let note = scene
+            .draw(&mut Frame::default(), FREE_FALL_DURATION)
+            .unwrap();
+        let named = if steps == 1 { "step" } else { "steps" };
+        assert!(
+            note.starts_with(&format!("After {steps} {named} ")),
+            "dt {dt}: {note}"
+        );
+        let explicit = format!("explicit Euler is {:.3} m above", last[1]);
+        assert!(note.contains(&explicit), "dt {dt}: {note} / {explicit}");
+    }
+    // One step is one step.
+    let mut scene = FreeFallFigure::new();
+    scene.set_dt(0.3).unwrap();
+    let note = scene.draw(&mut Frame::default(), 0.3).unwrap();
+    assert!(note.starts_with("After 1 step of dt"), "{note}");
+}

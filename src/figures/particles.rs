@@ -161,39 +161,50 @@ impl EmitterFigure {
         self.system.is_empty()
     }
 
+    /// Marks the run for a replay from the start when a setter changed something. The page
+    /// re-applies every control after any of them moves, the "explode now" button included:
+    /// a value set again unchanged must not replay (a replay of a paused figure used to stop
+    /// short of the press, so its sparks did not show).
+    fn changed(&mut self, changed: bool) {
+        self.dirty |= changed;
+    }
+
     /// "fountain", "explosion" or "both".
     pub fn set_mode(&mut self, name: &str) -> Result<(), String> {
-        self.mode = EMITTER_MODES
+        let mode = EMITTER_MODES
             .iter()
             .position(|&m| m == name)
             .ok_or_else(|| format!("emitter: no mode named {name:?}"))?;
+        self.changed(mode != self.mode);
+        self.mode = mode;
         self.apply_budget();
-        self.dirty = true;
         Ok(())
     }
 
     /// The fountain's rate, particles per second, in [0, 1000].
     pub fn set_rate(&mut self, rate: f32) -> Result<(), String> {
-        self.emitters[0].rate_per_sec = in_range("rate", rate, 0.0, 1000.0)?;
+        let rate = in_range("rate", rate, 0.0, 1000.0)?;
+        self.changed(rate != self.emitters[0].rate_per_sec);
+        self.emitters[0].rate_per_sec = rate;
         self.apply_budget();
-        self.dirty = true;
         Ok(())
     }
 
     /// Particles one explosion asks for, in [0, [`MAX_BURST`]] (rounded to a whole number).
     pub fn set_burst(&mut self, count: f32) -> Result<(), String> {
-        self.burst_size =
-            in_range("particles per explosion", count, 0.0, MAX_BURST as f32)?.round() as usize;
-        self.dirty = true;
+        let n = in_range("particles per explosion", count, 0.0, MAX_BURST as f32)?.round() as usize;
+        self.changed(n != self.burst_size);
+        self.burst_size = n;
         Ok(())
     }
 
     /// Lifetime of new particles, seconds, in [0.1, 10] (a ±20 % spread around it); the
     /// emitters get at most [`EmitterFigure::lifetime_sec`].
     pub fn set_lifetime(&mut self, lifetime_sec: f32) -> Result<(), String> {
-        self.lifetime_slider_sec = in_range("lifetime", lifetime_sec, 0.1, 10.0)?;
+        let l = in_range("lifetime", lifetime_sec, 0.1, 10.0)?;
+        self.changed(l != self.lifetime_slider_sec);
+        self.lifetime_slider_sec = l;
         self.apply_budget();
-        self.dirty = true;
         Ok(())
     }
 
@@ -277,24 +288,28 @@ impl EmitterFigure {
     /// Half-angle of the fountain's cone, degrees in [0, 90].
     pub fn set_spread_deg(&mut self, spread_deg: f32) -> Result<(), String> {
         let s = in_range("spread", spread_deg, 0.0, 90.0)?.to_radians();
+        let mut changed = false;
         if let VelocityDist::Cone { half_angle_rad, .. } = &mut self.emitters[0].velocity {
+            changed = *half_angle_rad != s;
             *half_angle_rad = s;
         }
-        self.dirty = true;
+        self.changed(changed);
         Ok(())
     }
 
     /// Restitution in [0, 1].
     pub fn set_restitution(&mut self, e: f32) -> Result<(), String> {
-        self.surfaces.restitution = in_range("restitution", e, 0.0, 1.0)?;
-        self.dirty = true;
+        let e = in_range("restitution", e, 0.0, 1.0)?;
+        self.changed(e != self.surfaces.restitution);
+        self.surfaces.restitution = e;
         Ok(())
     }
 
     /// Gravity's magnitude, m/s², in [0, 30].
     pub fn set_gravity(&mut self, g: f32) -> Result<(), String> {
-        self.surfaces.gravity = Vec3::new(0.0, -in_range("gravity", g, 0.0, 30.0)?, 0.0);
-        self.dirty = true;
+        let g = Vec3::new(0.0, -in_range("gravity", g, 0.0, 30.0)?, 0.0);
+        self.changed(g != self.surfaces.gravity);
+        self.surfaces.gravity = g;
         Ok(())
     }
 
@@ -364,6 +379,17 @@ impl EmitterFigure {
         let n = target - self.steps_done;
         for _ in 0..n {
             self.step();
+        }
+        // A press at the step the run stops at belongs to it already (explode spawns at once);
+        // a replay that ends there spawns it too, or a paused figure would hide it until played.
+        if self.bursts.iter().any(|b| b.0 == target && !b.1) {
+            for b in &mut self.bursts {
+                if b.0 == target {
+                    b.1 = true;
+                }
+            }
+            let count = self.next_burst(target);
+            self.system.burst(&self.emitters, 1, count);
         }
         Ok(n)
     }
@@ -622,8 +648,10 @@ impl FreeFallFigure {
         self.dt_sec
     }
 
+    /// The whole steps inside the timeline: the plot's last sample is what the figure shows at
+    /// its end (a step past [`FREE_FALL_DURATION`] was plotted but never drawn).
     fn steps(&self) -> usize {
-        (FREE_FALL_DURATION / self.dt_sec).ceil() as usize
+        (FREE_FALL_DURATION / self.dt_sec + 1e-3).floor() as usize
     }
 
     fn integrate(&mut self) {
@@ -727,8 +755,9 @@ impl FreeFallFigure {
             }
         });
         let mut note = format!(
-            "After {k_now} steps of dt = {} s (t = {} s): explicit Euler is {e0}, semi-implicit \
+            "After {k_now} {} of dt = {} s (t = {} s): explicit Euler is {e0}, semi-implicit \
              Euler {e1}, velocity Verlet {e2}.",
+            if k_now == 1 { "step" } else { "steps" },
             format_number(self.dt_sec),
             format_number(t_now),
         );
