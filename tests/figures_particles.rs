@@ -654,3 +654,99 @@ fn the_free_fall_plot_ends_where_the_timeline_does() {
     let note = scene.draw(&mut Frame::default(), 0.3).unwrap();
     assert!(note.starts_with("After 1 step of dt"), "{note}");
 }
+
+#[test]
+fn the_stretch_is_capped_and_its_peaks_shrink_below_the_cap() {
+    // The text: s = 1 + k |v| up to 1.6; the plot's peaks shrink with the bounces, except where
+    // the cap flattens them (k = 0.3 reaches it before the first impact).
+    let peaks = |k: f32| {
+        let mut scene = SquashFigure::new();
+        scene.set_stretch(k).unwrap();
+        let s: Vec<f32> = scene.plot_samples().chunks(2).map(|r| r[1]).collect();
+        let peaks: Vec<f32> = s
+            .windows(3)
+            .filter(|w| w[0] > 1.0 && w[1] > w[0] && w[1] >= w[2])
+            .map(|w| w[1])
+            .collect();
+        (s.iter().cloned().fold(0.0, f32::max), peaks)
+    };
+    let (top, p) = peaks(0.06);
+    assert!(top < 1.6 && p.len() >= 4, "{top} {p:?}");
+    assert!(p.windows(2).all(|w| w[1] < w[0]), "shrinking peaks {p:?}");
+    let (top, p) = peaks(0.3);
+    assert!((top - 1.6).abs() < 1e-6, "capped at 1.6: {top} {p:?}");
+}
+
+#[test]
+fn at_e_0_the_orange_ball_stops_dead_and_floor_balls_slide_until_friction_stops_them() {
+    let mut scene = BounceFigure::new();
+    scene.set_restitution(0.0).unwrap();
+    scene.set_friction(0.1).unwrap();
+    scene.advance_to(0.7).unwrap();
+    let at_rest = scene.positions()[0];
+    assert!((at_rest.y - 0.08).abs() < 1e-5, "{at_rest}");
+    scene.advance_to(5.5).unwrap();
+    let before = scene.positions().to_vec();
+    scene.advance_to(6.0).unwrap();
+    assert_eq!(
+        scene.positions()[0],
+        at_rest,
+        "the orange ball never moves again"
+    );
+    for (a, b) in before.iter().zip(scene.positions()) {
+        if (a.y - 0.08).abs() < 1e-5 {
+            assert_eq!(a, b, "a ball on the floor has stopped sliding");
+        }
+    }
+    // Without friction a ball on the floor slides on (until a wall stops it, e = 0).
+    scene.set_friction(0.0).unwrap();
+    scene.advance_to(1.5).unwrap();
+    let a = scene.positions().to_vec();
+    scene.advance_to(1.6).unwrap();
+    let sliding = a
+        .iter()
+        .zip(scene.positions())
+        .any(|(a, b)| (a.y - 0.08).abs() < 1e-5 && (b.y - 0.08).abs() < 1e-5 && a != b);
+    assert!(sliding, "{a:?}");
+}
+
+#[test]
+fn the_try_this_explosions_fill_their_share_and_the_note_says_so() {
+    // The Try this: "both", 1,000/s, 6 s. The automatic explosion at 0 s and a press at 0.5 s
+    // fill the explosions' 800 slots; a press at 0.6 s gets none of its 400, and the note says so.
+    let eye = Vec3::new(0.0, 2.0, 6.0);
+    let mut scene = EmitterFigure::new();
+    scene.set_mode("both").unwrap();
+    scene.set_rate(1000.0).unwrap();
+    scene.set_lifetime(6.0).unwrap();
+    assert!((scene.lifetime_sec() - 0.98).abs() < 0.01);
+    scene.draw(&mut Frame::default(), eye, 0.5).unwrap();
+    scene.explode();
+    let note = scene.draw(&mut Frame::default(), eye, 0.6).unwrap();
+    assert!(!note.contains("The last explosion got"), "{note}");
+    scene.explode();
+    let note = scene.draw(&mut Frame::default(), eye, 0.6).unwrap();
+    assert!(
+        note.contains("The last explosion got 0 of its 400 particles"),
+        "{note}"
+    );
+    // Away from the automatic ones (0 s and 2.5 s; sparks live under 1.2 s): three presses give
+    // 400, 400 and nothing.
+    let mut scene = EmitterFigure::new();
+    scene.set_mode("both").unwrap();
+    scene.set_rate(1000.0).unwrap();
+    scene.set_lifetime(6.0).unwrap();
+    let mut got = Vec::new();
+    for t in [1.5, 1.6, 1.7] {
+        scene.draw(&mut Frame::default(), eye, t).unwrap();
+        let alive = from_emitter(&scene, 1).0;
+        scene.explode();
+        got.push(from_emitter(&scene, 1).0 - alive);
+    }
+    assert_eq!(got, [400, 400, 0]);
+    let note = scene.draw(&mut Frame::default(), eye, 1.7).unwrap();
+    assert!(
+        note.contains("The last explosion got 0 of its 400 particles"),
+        "{note}"
+    );
+}
