@@ -146,6 +146,26 @@ test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; 
   }
 });
 
+test('lesson 11: explode now on a paused figure shows its sparks at once', async () => {
+  // The button's onChange re-applied every control and replayed the run, which stopped short of
+  // the press: a paused figure showed nothing until played.
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', 800, 600);
+    const fig = '#fig-emitters';
+    await page.locator(fig).scrollIntoViewIfNeeded();
+    await scrubTo(page, fig, 300);
+    const alive = async () => Number(/^(\d+) particles alive/.exec(await page.locator('#emitters-note').textContent())?.[1]);
+    const before = await alive();
+    await page.locator(`${fig} .lil-controller`, { hasText: 'explode now' }).locator('button').click();
+    await frames(page, 4);
+    assert.equal(await alive(), before + 400, await page.locator('#emitters-note').textContent());
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
 test('lesson 12: the order plot, the rules labels apart, the rule weights in view', async () => {
   const context = await launch('webgl2');
   try {
