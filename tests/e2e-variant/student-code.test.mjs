@@ -46,6 +46,10 @@ for (const backend of ['webgl2', 'webgpu']) {
       await frames(page);
       const note = await interp.locator('.exercise-note').textContent();
       assert.match(note, /slerp panicked at src\//, note);
+      // Each verdict in its own colour (the exercise-note rule, later in the style sheet with the
+      // same specificity, painted all three beige): red for a panic or a difference, green for a match.
+      const background = (locator) => locator.evaluate((e) => getComputedStyle(e).backgroundColor);
+      assert.equal(await background(interp.locator('.exercise-note')), 'rgb(253, 232, 232)', 'a panic is red');
       assert.match(note, /index out of bounds/, note);
       assert.match(note, /reference/, note);
       assert.ok(await page.evaluate(() => Boolean(window.__inbetween.panickedExercises.slerp)));
@@ -61,6 +65,7 @@ for (const backend of ['webgl2', 'webgpu']) {
       await frames(page);
       const rodNote = await rodrigues.locator('.exercise-note').textContent();
       assert.match(rodNote, /differs/, rodNote);
+      assert.equal(await background(rodrigues.locator('.exercise-note')), 'rgb(253, 232, 232)', 'a difference is red');
       assert.match(rodNote, /yours \(.*\), reference \(/, rodNote);
       await page.screenshot({ path: `${SHOTS}/student-bugs-03-${backend}.png`, fullPage: true });
 
@@ -74,6 +79,7 @@ for (const backend of ['webgl2', 'webgpu']) {
       await frames(page4);
       const note4 = await first.locator('.exercise-note').textContent();
       assert.match(note4, /matches the reference/, note4);
+      assert.equal(await background(first.locator('.exercise-note')), 'rgb(233, 247, 238)', 'a match is green');
     } finally {
       await context.close();
     }
