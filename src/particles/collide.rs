@@ -73,7 +73,8 @@ impl Default for Surfaces {
 /// guard against a particle trapped between two surfaces).
 pub const MAX_BOUNCES_PER_STEP: usize = 8;
 
-/// Below this normal speed (m/s) after a bounce on the floor the particle comes to rest.
+/// Below this normal speed (m/s) after a bounce the particle stays on the surface: it rests on
+/// the floor, or slides on a sphere (or leaves it where the sphere curves away too fast).
 pub const REST_SPEED: f32 = 0.05;
 
 /// The first time `t ∈ [0, t_max]` at which a body falling from height `y0` with vertical
@@ -125,17 +126,22 @@ pub fn floor_time_of_impact(y0: f32, vy: f32, gy: f32, floor_y: f32, t_max: f32)
 /// The first time in `[0, t_max]` at which the ballistic path from `(p, v)` under `g` enters
 /// `sphere`, if it does. `|p(t) − c|² = R²` is a quartic in `t`; the path is sampled at a few
 /// times in the step (so a graze shorter than a sixteenth of the step can be missed) and the
-/// first sign change is refined by bisection to float precision: exact up to rounding.
+/// first sign change is refined by bisection to float precision: exact up to rounding. A path
+/// that starts on the sphere (or inside, by rounding) is an impact at 0 if it goes in, and
+/// otherwise searched like any other (a slow bounce off the surface falls back within the step).
 pub fn sphere_time_of_impact(p: Vec3, v: Vec3, g: Vec3, sphere: Sphere, t_max: f32) -> Option<f32> {
     let f = |t: f32| {
         let (q, _) = free_fall(p, v, g, t);
         (q - sphere.center).length_squared() - sphere.radius * sphere.radius
     };
-    if f(0.0) <= 0.0 {
-        // Already inside: only an impact if moving inwards.
-        return ((p - sphere.center).dot(v) < 0.0).then_some(0.0);
-    }
     const SAMPLES: usize = 16;
+    if f(0.0) <= 0.0 && ((p - sphere.center).dot(v) < 0.0 || f(t_max / SAMPLES as f32) < 0.0) {
+        // Already on or inside, and going in: moving inwards, or inside at the first sample (a
+        // particle sliding along the surface ends its step on it, moving along it up to
+        // rounding, and gravity pulls it in). One on it and leaving it may still fall back in
+        // later in the step: the samples below look for that.
+        return Some(0.0);
+    }
     let mut lo = 0.0;
     for k in 1..=SAMPLES {
         let hi = t_max * k as f32 / SAMPLES as f32;
@@ -175,6 +181,37 @@ pub fn bounce_velocity(v: Vec3, n: Vec3, restitution: f32, friction: f32) -> Vec
     -restitution * vn + keep * vt
 }
 
+/// The force per unit mass (m/s²) with which the outside of `sphere` holds a particle on it at
+/// the unit normal `n`, moving along the surface with velocity `v` under gravity `g`: the surface
+/// supplies what the path's turn needs (`|v|²/R` towards the centre) beyond gravity's pull inwards,
+/// `N = −g·n − |v|²/R`. It can only push: where `N ≤ 0` the particle leaves the surface.
+pub fn sphere_contact_force(n: Vec3, v: Vec3, g: Vec3, sphere: Sphere) -> f32 {
+    -g.dot(n) - v.length_squared() / sphere.radius
+}
+
+/// `dt` seconds of sliding on the outside of `sphere` from `p` (on its surface) with velocity `v`
+/// (along it): gravity's tangential part speeds it up, Coulomb friction `μ N` slows it (never
+/// backwards), a semi-implicit Euler step moves it along the tangent plane, and it is put back
+/// on the surface with its velocity along the surface there. Energy only falls: the step along
+/// the tangent loses `|g_t|² dt² / 2`, and putting it back moves it inwards, which is down where
+/// `N > 0`.
+fn slide_on_sphere(p: &mut Vec3, v: &mut Vec3, sphere: Sphere, dt: f32, s: &Surfaces) {
+    let g = s.gravity;
+    let n = (*p - sphere.center).normalize_or(Vec3::Y);
+    let press = sphere_contact_force(n, *v, g, sphere).max(0.0);
+    let mut vt = *v + (g - g.dot(n) * n) * dt;
+    let slow = s.friction * press * dt;
+    let len = vt.length();
+    vt = if len > slow {
+        vt * (1.0 - slow / len)
+    } else {
+        Vec3::ZERO
+    };
+    let n1 = (*p + vt * dt - sphere.center).normalize_or(n);
+    *p = sphere.center + n1 * sphere.radius;
+    *v = vt - vt.dot(n1) * n1;
+}
+
 /// Which surface a step hits first.
 #[derive(Clone, Copy)]
 enum Surface {
@@ -186,7 +223,9 @@ enum Surface {
 /// Advances one particle by `dt` along its exact ballistic path, bouncing off the floor, the
 /// spheres and the walls of `surfaces` at the exact time of impact inside the step. `resting` marks a particle
 /// lying on the floor: it then stays at `y = floor_y` with `v.y = 0` and slides with friction
-/// until something lifts it. Nothing ends a step below the floor.
+/// until something lifts it. A particle that lands on a sphere too slowly to bounce slides on it
+/// ([`sphere_contact_force`]) until it comes to rest or the sphere curves away beneath it. Nothing
+/// ends a step below the floor.
 pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s: &Surfaces) {
     let g = s.gravity;
     if *resting {
@@ -283,8 +322,19 @@ pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s
                 let n = (*p - sphere.center).normalize_or(Vec3::Y);
                 *p = sphere.center + n * sphere.radius; // on the surface, not inside
                 *v = bounce_velocity(w, n, s.restitution, s.friction);
-                if v.dot(n) <= 0.0 {
-                    *v -= v.dot(n) * n; // nothing pushes it out: slide along the surface
+                if v.dot(n) < REST_SPEED {
+                    // Too slow to leave the surface: it moves along it. Pressed on (gravity's
+                    // pull inwards more than the turn of its path needs), it slides on the sphere
+                    // for the rest of the step; otherwise it flies off, lifted a hair so that the
+                    // next search does not find the same impact at t = 0 (eight of those used to
+                    // spend a whole step without moving: a ball stuck on the sphere's side).
+                    *v -= v.dot(n) * n;
+                    if sphere_contact_force(n, *v, g, sphere) > 0.0 {
+                        slide_on_sphere(p, v, sphere, remaining, s);
+                        remaining = 0.0;
+                    } else {
+                        *p = sphere.center + n * (sphere.radius * (1.0 + 1e-6));
+                    }
                 }
             }
         }

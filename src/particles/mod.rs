@@ -21,8 +21,8 @@ pub mod sprites;
 pub mod system;
 
 pub use collide::{
-    ballistic_step, bounce_velocity, floor_time_of_impact, sphere_time_of_impact, Plane, Sphere,
-    Surfaces,
+    ballistic_step, bounce_velocity, floor_time_of_impact, sphere_contact_force,
+    sphere_time_of_impact, Plane, Sphere, Surfaces,
 };
 pub use integrate::{
     explicit_euler_step, free_fall, free_fall_errors, semi_implicit_euler_step, verlet_step,

@@ -126,7 +126,10 @@ fn sphere_f(p: vec3<f32>, v: vec3<f32>, g: vec3<f32>, s: vec4<f32>, t: f32) -> f
 }
 // crate::particles::sphere_time_of_impact: 16 samples, then bisection; -1 when none.
 fn sphere_toi(p: vec3<f32>, v: vec3<f32>, g: vec3<f32>, s: vec4<f32>, t_max: f32) -> f32 {
-    if (sphere_f(p, v, g, s, 0.0) <= 0.0) { return select(-1.0, 0.0, dot(p - s.xyz, v) < 0.0); }
+    if (sphere_f(p, v, g, s, 0.0) <= 0.0
+        && (dot(p - s.xyz, v) < 0.0 || sphere_f(p, v, g, s, t_max / 16.0) < 0.0)) {
+        return 0.0;
+    }
     var lo = 0.0;
     for (var k = 1u; k <= 16u; k++) {
         let hi = t_max * f32(k) / 16.0;
@@ -154,6 +157,30 @@ fn bounce(v: vec3<f32>, n: vec3<f32>, e: f32, mu: f32) -> vec3<f32> {
 }
 
 struct State { p: vec3<f32>, v: vec3<f32>, resting: bool };
+
+// crate::particles::sphere_contact_force: how hard the sphere holds a particle moving along it.
+fn contact_force(n: vec3<f32>, v: vec3<f32>, g: vec3<f32>, sp: vec4<f32>) -> f32 {
+    return -dot(g, n) - dot(v, v) / sp.w;
+}
+
+// The sphere slide of crate::particles::ballistic_step: gravity along the surface, friction mu N,
+// a step along the tangent plane, then back onto the surface.
+fn sphere_slide(s: State, sp: vec4<f32>, dt: f32) -> State {
+    var o = s;
+    let g = params.gravity.xyz;
+    let d = s.p - sp.xyz;
+    let n = select(vec3<f32>(0.0, 1.0, 0.0), normalize(d), dot(d, d) > 0.0);
+    let press = max(contact_force(n, s.v, g, sp), 0.0);
+    var vt = s.v + (g - dot(g, n) * n) * dt;
+    let slow = params.floor.w * press * dt;
+    let len = length(vt);
+    vt = select(vec3<f32>(0.0), vt * (1.0 - slow / len), len > slow);
+    let d1 = s.p + vt * dt - sp.xyz;
+    let n1 = select(n, normalize(d1), dot(d1, d1) > 0.0);
+    o.p = sp.xyz + n1 * sp.w;
+    o.v = vt - dot(vt, n1) * n1;
+    return o;
+}
 
 // The resting branch of crate::particles::ballistic_step: slide on the floor with friction.
 fn slide(s: State, dt: f32) -> State {
@@ -213,7 +240,15 @@ fn ballistic(s0: State, dt: f32) -> State {
             let n = select(vec3<f32>(0.0, 1.0, 0.0), normalize(d), dot(d, d) > 0.0);
             s.p = sp.xyz + n * sp.w;
             s.v = bounce(w, n, params.floor.z, params.floor.w);
-            if (dot(s.v, n) <= 0.0) { s.v -= dot(s.v, n) * n; }
+            if (dot(s.v, n) < REST_SPEED) {
+                s.v -= dot(s.v, n) * n;
+                if (contact_force(n, s.v, g, sp) > 0.0) {
+                    s = sphere_slide(s, sp, remaining);
+                    remaining = 0.0;
+                } else {
+                    s.p = sp.xyz + n * (sp.w * (1.0 + 1e-6));
+                }
+            }
         }
         if (remaining <= 0.0) { break; }
     }
