@@ -181,16 +181,22 @@ fn a_particle_bounces_off_a_sphere_onto_its_surface() {
     assert!(p.y > 1.5 - 1e-3, "it bounced back up, not through: {p}");
 }
 
-/// A ball on the sphere of centre (0, 1, 0) and radius 0.5, `angle_deg` from its top, `gap` m
-/// above its surface, at rest.
-fn on_sphere(angle_deg: f32, gap: f32) -> (Sphere, Vec3) {
+/// A ball at rest `gap` m above the sphere of centre (0, 1, 0) and radius 0.5, `angle_deg` from
+/// its top, with no bounce (e = 0) and friction `mu`: the sphere, the surfaces, the start.
+fn on_sphere(angle_deg: f32, gap: f32, mu: f32) -> (Sphere, Surfaces, Vec3) {
     let sphere = Sphere {
         center: Vec3::new(0.0, 1.0, 0.0),
         radius: 0.5,
     };
+    let s = Surfaces {
+        spheres: vec![sphere],
+        restitution: 0.0,
+        friction: mu,
+        ..Default::default()
+    };
     let a = angle_deg.to_radians();
     let dir = Vec3::new(a.sin(), a.cos(), 0.0);
-    (sphere, sphere.center + dir * (sphere.radius + gap))
+    (sphere, s, sphere.center + dir * (sphere.radius + gap))
 }
 
 #[test]
@@ -201,13 +207,7 @@ fn a_ball_too_slow_to_bounce_slides_off_the_sphere() {
     // friction and with μ = 0.3 (tan 30° = 0.58 is steeper than the friction holds). It never
     // goes inside the sphere and its energy never grows.
     for mu in [0.0, 0.3] {
-        let (sphere, start) = on_sphere(30.0, 0.01);
-        let s = Surfaces {
-            spheres: vec![sphere],
-            restitution: 0.0,
-            friction: mu,
-            ..Default::default()
-        };
+        let (sphere, s, start) = on_sphere(30.0, 0.01, mu);
         let (mut p, mut v, mut resting) = (start, Vec3::ZERO, false);
         let mut last = energy(p, v);
         for step in 0..180 {
@@ -236,13 +236,7 @@ fn friction_or_the_top_holds_a_ball_on_the_sphere_without_jitter() {
     // 30° from the top with μ = 1 (tan 30° = 0.58 < 1: friction holds it), and the very top
     // without friction: after it lands it stays where it is, step after step.
     for (angle, mu) in [(30.0, 1.0), (0.0, 0.0)] {
-        let (sphere, start) = on_sphere(angle, 0.001);
-        let s = Surfaces {
-            spheres: vec![sphere],
-            restitution: 0.0,
-            friction: mu,
-            ..Default::default()
-        };
+        let (sphere, s, start) = on_sphere(angle, 0.001, mu);
         let (mut p, mut v, mut resting) = (start, Vec3::ZERO, false);
         for _ in 0..10 {
             ballistic_step(&mut p, &mut v, &mut resting, 1.0 / 60.0, &s);

@@ -563,11 +563,7 @@ impl ClothFigure {
     /// curves onto a line; the exploded cloth's curve then runs off the plot. Over every cloth
     /// when none has exploded or none held; NaN before the first sample.
     pub fn plot_ranges(&self) -> [f32; 4] {
-        let held: Vec<&Sim> = self
-            .sims
-            .iter()
-            .filter(|s| s.cloth.exploded().is_none())
-            .collect();
+        let held = self.held();
         let shown: Vec<&Sim> = if held.is_empty() {
             self.sims.iter().collect()
         } else {
@@ -585,6 +581,14 @@ impl ClothFigure {
             }
         }
         out
+    }
+
+    /// The cloths that have not exploded.
+    fn held(&self) -> Vec<&Sim> {
+        self.sims
+            .iter()
+            .filter(|s| s.cloth.exploded().is_none())
+            .collect()
     }
 
     /// When cloth `k` exploded (seconds), if it did.
@@ -869,12 +873,12 @@ impl ClothFigure {
                 }
             }
         }
-        let held = self.sims.iter().filter(|s| s.cloth.exploded().is_none());
-        if let (Some(held), true) = (held.clone().next(), held.count() < self.sims.len()) {
+        let held = self.held();
+        if !held.is_empty() && held.len() < self.sims.len() {
             parts.push(format!(
                 "The plots' scales follow the {} cloth that held: the exploded one's curves run \
                  off them.",
-                held.method.name()
+                held[0].method.name()
             ));
         }
         if self.preset == Preset::Drape {
