@@ -278,13 +278,14 @@ mod figures {
         f.set_mode("both").unwrap();
         // A new mode restarts first, without stepping.
         let (restart, n) = f
-            .advance_gpu(1.0, false, |_, _, _| panic!("no step yet"))
+            .advance_gpu(1.0, false, |_, _, _, _| panic!("no step yet"))
             .unwrap();
         assert!(restart && n == 0);
         let mut bursts = Vec::new();
         let (restart, n) = f
-            .advance_gpu(1.0, true, |e, _, b| {
+            .advance_gpu(1.0, true, |e, _, b, dt| {
                 assert_eq!(e.len(), 2);
+                assert_eq!(dt, inbetween::figures::particles::SIM_DT);
                 bursts.push(b);
                 Ok(())
             })
@@ -294,19 +295,19 @@ mod figures {
         assert!(bursts[1..].iter().all(|&b| b == 0));
         // Forward: more steps, no restart; back in time: a restart.
         assert_eq!(
-            f.advance_gpu(1.5, false, |_, _, _| Ok(())).unwrap(),
+            f.advance_gpu(1.5, false, |_, _, _, _| Ok(())).unwrap(),
             (false, 30)
         );
         assert_eq!(
-            f.advance_gpu(0.5, false, |_, _, _| Ok(())).unwrap(),
+            f.advance_gpu(0.5, false, |_, _, _, _| Ok(())).unwrap(),
             (true, 0)
         );
         // A failing GPU step is the caller's error, and the clock does not move past it.
         let e = f
-            .advance_gpu(0.5, true, |_, _, _| Err("boom".into()))
+            .advance_gpu(0.5, true, |_, _, _, _| Err("boom".into()))
             .unwrap_err();
         assert_eq!(e, "boom");
-        assert!(f.advance_gpu(f32::NAN, false, |_, _, _| Ok(())).is_err());
+        assert!(f.advance_gpu(f32::NAN, false, |_, _, _, _| Ok(())).is_err());
         // "Explode now" reaches the GPU at once, once per step, and the note counts it.
         let mut fired = 0;
         f.explode_gpu(|_, _, n| {
@@ -324,6 +325,50 @@ mod figures {
             "{note}"
         );
         assert!(frame.points.is_empty(), "the sprites are the GPU's");
+    }
+
+    #[test]
+    fn a_paused_gpu_press_survives_a_parameter_change() {
+        // The lesson 11 review: in GPU mode, paused, "explode now" then a real change of a
+        // slider replayed the run up to the paused step and dropped the press made there (the
+        // CPU run spawned it). The replay now hands it over last, as a step of 0 s.
+        let mut f = EmitterFigure::new();
+        let run = |f: &mut EmitterFigure, t: f32| {
+            let mut calls = Vec::new();
+            let (restart, _) = f
+                .advance_gpu(t, false, |_, _, b, dt| {
+                    calls.push((b, dt));
+                    Ok(())
+                })
+                .unwrap();
+            if restart {
+                f.advance_gpu(t, true, |_, _, b, dt| {
+                    calls.push((b, dt));
+                    Ok(())
+                })
+                .unwrap();
+            }
+            calls
+        };
+        assert_eq!(run(&mut f, 1.0).len(), 60);
+        let mut fired = 0;
+        f.explode_gpu(|_, _, n| {
+            fired += n;
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(fired, 400);
+        // Paused: the same time again, nothing to do.
+        assert!(run(&mut f, 1.0).is_empty());
+        f.set_restitution(0.5).unwrap();
+        let calls = run(&mut f, 1.0);
+        assert_eq!(calls.len(), 61, "60 steps, then the press");
+        assert!(calls[..60].iter().all(|&(b, dt)| b == 0 && dt > 0.0));
+        assert_eq!(calls[60], (400, 0.0));
+        // Played on, the press is not spawned a second time.
+        let calls = run(&mut f, 1.5);
+        assert_eq!(calls.len(), 30);
+        assert!(calls.iter().all(|&(b, _)| b == 0));
     }
 
     #[test]

@@ -118,7 +118,7 @@ fn the_note_counts_one_puff_in_the_singular() {
     let note = s
         .draw(&mut Frame::default(), TextureId(0), Vec3::Z * 5.0, 2.0)
         .unwrap();
-    assert!(note.starts_with("1 puff, each living"), "{note}");
+    assert!(note.starts_with("1 puff, living"), "{note}");
     s.set_params(2.0, 4.0).unwrap();
     let note = s
         .draw(&mut Frame::default(), TextureId(0), Vec3::Z * 5.0, 2.0)

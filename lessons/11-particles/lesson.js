@@ -92,17 +92,23 @@ const bounceViewer = await lesson.figure('#fig-bounce');
 if (bounceViewer) {
   const scene = new BounceScene();
   bounceViewer.setCamera(...scene.view());
-  const timeline = new Timeline(document.getElementById('bounce-timeline'), { duration: 6 });
+  const timeline = new Timeline(document.getElementById('bounce-timeline'), { duration: scene.durationSec() });
   const p = { restitution: 0.75, friction: 0.1, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-bounce .panel'), title: 'Bouncing' });
   gui.add(p, 'restitution', 0, 1, 0.05).name('restitution e');
   gui.add(p, 'friction', 0, 1, 0.05).name('friction μ');
   gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('bounce-plot'), {
+    title: 'The orange ball: height and energy', xLabel: 'time (s)', yLabel: 'height (m)',
+    series: ['height above the floor h', 'energy as a height: h + |v|²/2g'],
+    colors: [cssVar('--orange'), cssVar('--dark')], minSpan: 0.5,
+  });
   let rejected = '';
   const apply = guarded(gui, p, () => {
     scene.setRestitution(p.restitution);
     scene.setFriction(p.friction);
     scene.setUseExercise(p.useExercise);
+    plot.setData(columns(scene.plotSamples(), 3));
   }, (m) => { rejected = m; });
   gui.onChange(apply);
   apply();
@@ -110,6 +116,7 @@ if (bounceViewer) {
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     showNote(note, [rejected, scene.draw(bounceViewer, t)].filter(Boolean).join(' '));
+    plot.setCursor(t);
     markDrawn('#fig-bounce');
   });
 }

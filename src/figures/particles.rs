@@ -101,6 +101,12 @@ pub struct EmitterFigure {
     sprite_texture: Option<TextureId>,
 }
 
+/// A sprite's half side over its particle's radius. The atlas's young puff is dense out to about
+/// a third of its frame's half side (`smoke_opacity`: radius 0.5 at birth, its edge fading from
+/// 0.35 of that), so a square 2.6 times the disc shows a puff about the disc's size, growing as
+/// it ages (at 1.8 the puffs were specks).
+pub const SPRITE_SCALE: f32 = 2.6;
+
 /// Steps between two automatic explosions (2.5 s).
 const BURST_EVERY: usize = 150;
 /// The most "explode now" presses a figure remembers.
@@ -380,18 +386,24 @@ impl EmitterFigure {
         for _ in 0..n {
             self.step();
         }
-        // A press at the step the run stops at belongs to it already (explode spawns at once);
-        // a replay that ends there spawns it too, or a paused figure would hide it until played.
-        if self.bursts.iter().any(|b| b.0 == target && !b.1) {
-            for b in &mut self.bursts {
-                if b.0 == target {
-                    b.1 = true;
-                }
-            }
-            let count = self.next_burst(target);
+        if let Some(count) = self.press_at_end(target) {
             self.system.burst(&self.emitters, 1, count);
         }
         Ok(n)
+    }
+
+    /// A press at the step a run stops at belongs to it already (explode spawns at once); a
+    /// replay that ends there must spawn it too, or a paused figure would hide it until played.
+    /// Marks it spawned and returns its particle count, if there is such a press not spawned yet.
+    fn press_at_end(&mut self, target: usize) -> Option<usize> {
+        let mut pending = false;
+        for b in &mut self.bursts {
+            if b.0 == target && !b.1 {
+                b.1 = true;
+                pending = true;
+            }
+        }
+        pending.then(|| self.next_burst(target))
     }
 
     /// GPU mode's [`EmitterFigure::explode`]: records the explosion the same way and hands it to
@@ -416,14 +428,16 @@ impl EmitterFigure {
 
     /// GPU mode ([`crate::figures::gpu`]): brings the clock to `time_sec` as
     /// [`EmitterFigure::advance_to`] does, but hands each step to `step` (emitters, surfaces,
-    /// particles the explosion bursts this step) instead of stepping the CPU system. Returns
-    /// `(restart, steps)`; on `restart` (time went back, a parameter changed) `step` was not called
-    /// yet: the caller clears its GPU system first, then calls again.
+    /// particles the explosion bursts this step, seconds to step: [`SIM_DT`]) instead of stepping
+    /// the CPU system. A press at the step the run stops at is handed over last, as a step of 0 s
+    /// (it spawns and moves nothing), as the CPU run spawns it. Returns `(restart, steps)`; on
+    /// `restart` (time went back, a parameter changed) `step` was not called yet: the caller
+    /// clears its GPU system first, then calls again.
     pub fn advance_gpu(
         &mut self,
         time_sec: f32,
         restarted: bool,
-        mut step: impl FnMut(&mut [Emitter], &Surfaces, usize) -> Result<(), String>,
+        mut step: impl FnMut(&mut [Emitter], &Surfaces, usize, f32) -> Result<(), String>,
     ) -> Result<(bool, usize), String> {
         let target = steps_to(time_sec)?;
         if !restarted && (self.dirty || target < self.steps_done) {
@@ -438,10 +452,13 @@ impl EmitterFigure {
             if self.mode == 1 {
                 self.emitters[0].rate_per_sec = 0.0;
             }
-            let result = step(&mut self.emitters, &self.surfaces, burst);
+            let result = step(&mut self.emitters, &self.surfaces, burst, SIM_DT);
             self.emitters[0].rate_per_sec = rate;
             result?;
             self.steps_done += 1;
+        }
+        if let Some(count) = self.press_at_end(target) {
+            step(&mut self.emitters, &self.surfaces, count, 0.0)?;
         }
         Ok((false, n))
     }
@@ -497,9 +514,14 @@ impl EmitterFigure {
             }
             if self.sprite_texture.is_some() {
                 let life = sys.ages[i] / sys.lifetimes[i].max(1e-6);
+                // The atlas's frames thin out with age on their own: the colour's alpha, which
+                // falls from 1 to 0 over the life, applied as well made every puff past mid-life
+                // nearly invisible. Its square root falls later (0.71 at mid-life, 0.5 at three
+                // quarters) and still reaches 0 at death.
+                color.w = color.w.max(0.0).sqrt();
                 frame.sprites.push(SpriteInstance {
                     center: sys.positions[i].to_array(),
-                    half_size: 1.8 * sys.sizes[i],
+                    half_size: SPRITE_SCALE * sys.sizes[i],
                     uv: SMOKE_ATLAS.frame_at(life).to_array(),
                     color: color.to_array(),
                 });
@@ -809,6 +831,8 @@ pub const BOX_HALF_M: f32 = 1.5;
 pub const BOX_DRAWN_HEIGHT_M: f32 = 3.3;
 /// How many balls the bounce figure drops.
 pub const BOUNCE_BALLS: usize = 7;
+/// The bounce figure's timeline, seconds.
+pub const BOUNCE_DURATION: f32 = 6.0;
 
 /// Balls dropped onto a sphere and the floor.
 #[derive(Clone, Debug)]
@@ -932,18 +956,52 @@ impl BounceFigure {
         let s = self.surfaces();
         let n = target - self.steps_done;
         for _ in 0..n {
-            for i in 0..self.positions.len() {
-                crate::particles::ballistic_step(
-                    &mut self.positions[i],
-                    &mut self.velocities[i],
-                    &mut self.resting[i],
-                    SIM_DT,
-                    &s,
-                );
-            }
+            self.step(&s);
         }
-        self.steps_done = target;
         Ok(n)
+    }
+
+    /// One step of every ball.
+    fn step(&mut self, s: &Surfaces) {
+        for i in 0..self.positions.len() {
+            crate::particles::ballistic_step(
+                &mut self.positions[i],
+                &mut self.velocities[i],
+                &mut self.resting[i],
+                SIM_DT,
+                s,
+            );
+        }
+        self.steps_done += 1;
+    }
+
+    /// Plot samples over the figure's timeline ([`BOUNCE_DURATION`]), one per step, flat:
+    /// `[t (s), h (m), E / (m g) (m)]` for the orange ball (ball 0), from a replay of the steps
+    /// the figure takes with the current settings. `h` is its lowest point's height above the
+    /// floor; the second curve is its energy per unit weight, the height it would reach if all
+    /// its speed went upwards:
+    /// ```text
+    /// E / (m g) = h + |v|² / (2 g)
+    /// ```
+    /// In flight the energy curve is flat (the parabola is exact); each bounce lowers it by the
+    /// part of the speed that restitution and friction take, and with e = 1 and μ = 0 it stays
+    /// flat throughout.
+    pub fn plot_samples(&self) -> Vec<f32> {
+        let mut f = self.clone();
+        f.drop_balls();
+        let s = f.surfaces();
+        let g = -s.gravity.y;
+        let steps = (BOUNCE_DURATION / SIM_DT).round() as usize;
+        let mut out = Vec::with_capacity(3 * (steps + 1));
+        for k in 0..=steps {
+            if k > 0 {
+                f.step(&s);
+            }
+            let (p, v) = (f.positions[0], f.velocities[0]);
+            let h = p.y - BALL_RADIUS;
+            out.extend([k as f32 * SIM_DT, h, h + v.length_squared() / (2.0 * g)]);
+        }
+        out
     }
 
     /// The time until ball 0's centre reaches the floor height (ignoring the sphere), the
@@ -1002,7 +1060,9 @@ impl BounceFigure {
             let mark = Vec3::new(hit.x, 0.002, hit.z);
             frame.point(mark, 0.05, palette::ORANGE);
             frame.line(self.positions[0], mark, palette::ORANGE);
-            frame.label(
+            // Leftwards from the mark: the orange ball falls left of the sphere, and a label
+            // running right covered it.
+            frame.label_left(
                 mark + Vec3::new(0.0, 0.15, 0.0),
                 format!("floor in {} s", format_number(t)),
                 palette::ORANGE,

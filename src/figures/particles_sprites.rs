@@ -167,9 +167,12 @@ impl SmokeFigure {
             );
         }
         Ok(format!(
-            "{} {}, each living {} s and playing {} of the atlas's {} frames; drawn {}.",
-            self.puffs,
-            if self.puffs == 1 { "puff" } else { "puffs" },
+            "{} living {} s and playing {} of the atlas's {} frames; drawn {}.",
+            if self.puffs == 1 {
+                "1 puff,".to_string()
+            } else {
+                format!("{} puffs, each", self.puffs)
+            },
             format_number(self.lifetime_sec),
             if self.animate_frames {
                 "all"

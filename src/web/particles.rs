@@ -129,7 +129,7 @@ impl EmitterScene {
 
 impl EmitterScene {
     fn draw_gpu(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
-        use crate::figures::particles::{PAGE_MAX_PARTICLES, SIM_DT};
+        use crate::figures::particles::PAGE_MAX_PARTICLES;
         use crate::render::ParticlesCompute;
         let err = |e: String| JsError::new(&e);
         let g = &viewer.gpu;
@@ -139,27 +139,29 @@ impl EmitterScene {
             self.gpu = Some(fresh().map_err(err)?);
         }
         let system = self.gpu.as_mut().expect("made above");
-        // One GPU step per figure step, with the explosion's burst of that step.
+        // One GPU step per figure step, with the explosion's burst of that step (a step of 0 s
+        // spawns a press without moving anything).
         fn step(
             system: &mut ParticlesCompute,
             gpu: &crate::render::Gpu,
             e: &mut [crate::particles::Emitter],
             s: &crate::particles::Surfaces,
             burst: usize,
+            dt: f32,
         ) -> Result<(), String> {
             if burst > 0 {
                 system.burst(1, burst);
             }
-            system.step(gpu, e, s, SIM_DT)
+            system.step(gpu, e, s, dt)
         }
         let (restart, _) = self
             .scene
-            .advance_gpu(time_sec, false, |e, s, b| step(system, g, e, s, b))
+            .advance_gpu(time_sec, false, |e, s, b, dt| step(system, g, e, s, b, dt))
             .map_err(js)?;
         if restart {
             *system = fresh().map_err(err)?;
             self.scene
-                .advance_gpu(time_sec, true, |e, s, b| step(system, g, e, s, b))
+                .advance_gpu(time_sec, true, |e, s, b, dt| step(system, g, e, s, b, dt))
                 .map_err(js)?;
         }
         viewer.renderer.gpu_points = vec![self.gpu.as_ref().expect("made above").sprites()];
@@ -253,6 +255,16 @@ impl BounceScene {
     /// The starting camera, as `Viewer.setCamera`'s six arguments.
     pub fn view(&self) -> Vec<f32> {
         self.scene.view().to_vec()
+    }
+    /// Seconds.
+    #[wasm_bindgen(js_name = durationSec)]
+    pub fn duration_sec(&self) -> f32 {
+        crate::figures::particles::BOUNCE_DURATION
+    }
+    /// `[t, h, E / (m g)]` per step, flat (see `BounceFigure::plot_samples`).
+    #[wasm_bindgen(js_name = plotSamples)]
+    pub fn plot_samples(&self) -> Vec<f32> {
+        self.scene.plot_samples()
     }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {

@@ -131,6 +131,12 @@ test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; 
       await page.locator(bounce).scrollIntoViewIfNeeded();
       await setControl(page, bounce, 'restitution', 1);
       await setControl(page, bounce, 'friction', 0);
+      // The plot of the orange ball's height and energy: its y axis spans the drop height
+      // (2.12 m above the floor) and not much more, since the energy never grows.
+      const plot = page.locator('#bounce-plot');
+      assert.equal(await plot.getAttribute('data-plot'), 'The orange ball: height and energy');
+      const [lo, hi] = (await plot.getAttribute('data-y-range')).split(' ').map(Number);
+      assert.ok(lo <= 0 && hi >= 2.1 && hi < 2.8, `bounce plot y range ${lo} ${hi}`);
       await scrubTo(page, bounce, 0);
       const start = await bluePixels(page, bounce);
       for (const at of [500, 750, 999]) {
