@@ -215,11 +215,14 @@ async function moveControls(page, figure, check) {
     await check('timeline scrub', (k) => clickAt(page, scrub, [0.37, 0.81, 0.12][k]), false, 3);
   }
   for (const play of await figure.locator('.timeline .play').all()) {
+    // Up to three plays of 10 frames: a figure that draws its states after each step (lesson 11's
+    // free fall at a step of 0.24 s) changes only when the time crosses a step, which 10 frames
+    // (about 0.17 s at 1x) may not do.
     await check('timeline play', async () => {
       await play.click();
       await frames(page, 10);
       await play.click();
-    });
+    }, false, 3);
   }
   for (const button of await figure.locator('button:not(.lil-controller button):not(.timeline button):not(.lil-title)').all()) {
     if (!(await button.isVisible())) continue;
