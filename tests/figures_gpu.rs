@@ -328,6 +328,41 @@ mod figures {
     }
 
     #[test]
+    fn gpu_particles_are_drawn_as_the_cpu_figures_atlas_sprites() {
+        // The compute shader writes SpriteInstance rows with the figure's scale and the atlas's
+        // grid, written into the WGSL as constants: they must be the Rust ones.
+        use inbetween::figures::particles::SPRITE_SCALE;
+        use inbetween::particles::sprites::SMOKE_ATLAS;
+        let wgsl = include_str!("../src/render/shaders/particles.wgsl");
+        let constant = |name: &str| {
+            let at = wgsl.find(&format!("const {name}: ")).expect(name);
+            let line = wgsl[at..].lines().next().unwrap();
+            line.split('=')
+                .nth(1)
+                .unwrap()
+                .trim()
+                .trim_end_matches(';')
+                .to_string()
+        };
+        assert_eq!(
+            constant("SPRITE_SCALE").parse::<f32>().unwrap(),
+            SPRITE_SCALE
+        );
+        assert_eq!(
+            constant("ATLAS_COLUMNS"),
+            format!("{}u", SMOKE_ATLAS.columns)
+        );
+        assert_eq!(constant("ATLAS_ROWS"), format!("{}u", SMOKE_ATLAS.rows));
+        // The GPU frame carries the atlas for those sprites.
+        let mut f = EmitterFigure::new();
+        f.set_sprite_texture(Some(inbetween::draw::TextureId(3)));
+        let mut frame = inbetween::draw::Frame::default();
+        f.draw_gpu(&mut frame);
+        assert_eq!(frame.sprite_texture, Some(inbetween::draw::TextureId(3)));
+        assert!(frame.sprites.is_empty(), "the sprites are the GPU's");
+    }
+
+    #[test]
     fn a_paused_gpu_press_survives_a_parameter_change() {
         // The lesson 11 review: in GPU mode, paused, "explode now" then a real change of a
         // slider replayed the run up to the paused step and dropped the press made there (the

@@ -175,8 +175,8 @@ pub fn dqs_like_shader(
 use crate::boids::{leader_path, BoidParams, ForceLaw};
 use crate::particles::{Emitter, PositionDist, Surfaces, VelocityDist};
 
-/// The most particle slots the GPU path allocates: about a million (48 bytes of state and 32 of
-/// sprite per slot, 80 MiB in all; WebGPU guarantees 128 MiB per storage binding).
+/// The most particle slots the GPU path allocates: about a million (48 bytes of state and 48 of
+/// sprite per slot, 96 MiB in all; WebGPU guarantees 128 MiB per storage binding).
 pub const MAX_GPU_PARTICLES: usize = 1 << 20;
 /// Emitters and spheres one GPU particle system takes (uniform arrays in the shader).
 pub const MAX_GPU_EMITTERS: usize = 4;

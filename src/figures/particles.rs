@@ -463,10 +463,11 @@ impl EmitterFigure {
         Ok((false, n))
     }
 
-    /// GPU mode: the floor grid and the spheres (the particles are the compute shader's sprites);
-    /// returns the note.
+    /// GPU mode: the floor grid and the spheres, and the atlas for the compute shader's sprites
+    /// (the particles are written on the GPU); returns the note.
     pub fn draw_gpu(&mut self, frame: &mut Frame) -> String {
         frame.grid(8, 0.5);
+        frame.sprite_texture = self.sprite_texture;
         for s in &self.surfaces.spheres {
             let model =
                 Mat4::from_translation(s.center) * Mat4::from_scale(Vec3::splat(s.radius * 0.98));
@@ -475,8 +476,8 @@ impl EmitterFigure {
         format!(
             "Stepped on the GPU by compute shaders, at t = {} s: {PAGE_MAX_PARTICLES} slots refilled \
              in ring order, one thread per particle (the same emitters, exact bounces and colours). \
-             The sprites stay on the GPU, so they are drawn in storage order (not sorted) and fade \
-             with age. {}{}",
+             The sprites stay on the GPU, so they are drawn in storage order (not sorted); they \
+             play the same atlas and fade with age. {}{}",
             format_number(self.steps_done as f32 * SIM_DT),
             self.budget_note(),
             match self.bursts.len() {

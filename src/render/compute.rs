@@ -33,8 +33,10 @@ const WORKGROUP: u32 = 64;
 /// alive, resting, emitter).
 const PARTICLE_BYTES: u64 = 48;
 const BOID_BYTES: u64 = 32;
-/// `crate::draw::PointInstance`.
+/// `crate::draw::PointInstance` (boids).
 const INSTANCE_BYTES: u64 = 32;
+/// `crate::texture::SpriteInstance` (particles).
+const SPRITE_BYTES: u64 = std::mem::size_of::<crate::texture::SpriteInstance>() as u64;
 
 fn no_compute(gpu: &Gpu) -> Result<(), String> {
     if gpu.compute {
@@ -183,7 +185,7 @@ impl ParticlesCompute {
         let instances = storage(
             gpu,
             "particle sprites",
-            n * INSTANCE_BYTES,
+            n * SPRITE_BYTES,
             wgpu::BufferUsages::VERTEX,
         );
         let layout = gpu
@@ -269,7 +271,8 @@ impl ParticlesCompute {
         Ok(())
     }
 
-    /// The sprites of the last step (dead slots have radius 0), for [`super::Renderer::gpu_points`].
+    /// The atlas sprites of the last step (dead slots have size 0), for
+    /// [`super::Renderer::gpu_sprites`].
     pub fn sprites(&self) -> (wgpu::Buffer, u32) {
         (self.instances.clone(), self.capacity() as u32)
     }

@@ -194,6 +194,10 @@ pub struct Renderer {
     /// Point sprites written by compute shaders (`compute.rs`): buffer and count, drawn after
     /// `frame.points` and cleared with the frame.
     pub gpu_points: Vec<(wgpu::Buffer, u32)>,
+    /// Atlas sprites written by compute shaders (`crate::texture::SpriteInstance` layout): buffer
+    /// and count, drawn with `frame.sprite_texture` after the frame's sprites and cleared with
+    /// the frame.
+    pub gpu_sprites: Vec<(wgpu::Buffer, u32)>,
     /// Counts the changes to what a frame can name besides itself (meshes' vertices, textures):
     /// part of [`Renderer::render`]'s test for an unchanged canvas.
     pub(super) revision: u64,
@@ -365,6 +369,7 @@ impl Renderer {
             frame: Frame::default(),
             skin: super::skin::SkinPass::new(gpu, &globals_layout, format),
             gpu_points: Vec::new(),
+            gpu_sprites: Vec::new(),
             revision: 0,
             shown: None,
             canvas_frames: 0,
@@ -541,7 +546,7 @@ impl Renderer {
         fingerprint: u64,
     ) -> Result<(), String> {
         let key = self.canvas_key(gpu, camera, fingerprint);
-        if self.gpu_points.is_empty() && self.shown == Some(key) {
+        if self.gpu_points.is_empty() && self.gpu_sprites.is_empty() && self.shown == Some(key) {
             self.frame.clear();
             return Ok(());
         }
@@ -553,11 +558,13 @@ impl Renderer {
                 gpu.surface.configure(&gpu.device, &gpu.config);
                 self.frame.clear();
                 self.gpu_points.clear();
+                self.gpu_sprites.clear();
                 return Ok(());
             }
             _ => {
                 self.frame.clear();
                 self.gpu_points.clear();
+                self.gpu_sprites.clear();
                 return Ok(()); // skipped frame (timeout, occluded): draw the next one
             }
         };
@@ -838,8 +845,10 @@ impl Renderer {
                 pass.set_vertex_buffer(0, buffer.slice(..));
                 pass.draw(0..6, 0..count);
             }
-            self.textured.draw(&mut pass, &self.frame);
+            self.textured
+                .draw(&mut pass, &self.frame, &self.gpu_sprites);
         }
+        self.gpu_sprites.clear();
         self.frame.clear();
         encoder.finish()
     }

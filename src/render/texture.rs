@@ -406,9 +406,15 @@ impl Textured {
             .write(gpu, bytemuck::cast_slice(&frame.sprites));
     }
 
-    /// Draws this frame's quads, then its sprites (last: they blend over everything). Unknown
-    /// texture ids are skipped.
-    pub(super) fn draw<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>, frame: &Frame) {
+    /// Draws this frame's quads, then its sprites (last: they blend over everything), then the
+    /// sprites compute shaders wrote (`gpu_sprites`: buffers and counts, with the frame's atlas).
+    /// Unknown texture ids are skipped.
+    pub(super) fn draw<'a>(
+        &'a self,
+        pass: &mut wgpu::RenderPass<'a>,
+        frame: &Frame,
+        gpu_sprites: &'a [(wgpu::Buffer, u32)],
+    ) {
         if !frame.quads.is_empty() {
             pass.set_pipeline(&self.quad_pipeline);
             pass.set_bind_group(0, &self.globals_group, &[]);
@@ -428,6 +434,15 @@ impl Textured {
             pass.set_bind_group(1, &t.group, &[]);
             pass.set_vertex_buffer(0, self.sprites.buffer.slice(..));
             pass.draw(0..6, 0..frame.sprites.len() as u32);
+        }
+        if let (Some(t), false) = (atlas, gpu_sprites.is_empty()) {
+            pass.set_pipeline(&self.sprite_pipeline);
+            pass.set_bind_group(0, &self.globals_group, &[]);
+            pass.set_bind_group(1, &t.group, &[]);
+            for (buffer, count) in gpu_sprites {
+                pass.set_vertex_buffer(0, buffer.slice(..));
+                pass.draw(0..6, 0..*count);
+            }
         }
     }
 }

@@ -116,7 +116,7 @@ impl EmitterScene {
         if self.gpu_on {
             return self.draw_gpu(viewer, time_sec);
         }
-        viewer.renderer.gpu_points.clear(); // none left from GPU mode (hidden canvas)
+        viewer.renderer.gpu_sprites.clear(); // none left from GPU mode (hidden canvas)
         let eye = viewer.camera.eye();
         let note = self
             .scene
@@ -164,7 +164,7 @@ impl EmitterScene {
                 .advance_gpu(time_sec, true, |e, s, b, dt| step(system, g, e, s, b, dt))
                 .map_err(js)?;
         }
-        viewer.renderer.gpu_points = vec![self.gpu.as_ref().expect("made above").sprites()];
+        viewer.renderer.gpu_sprites = vec![self.gpu.as_ref().expect("made above").sprites()];
         let note = self.scene.draw_gpu(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)

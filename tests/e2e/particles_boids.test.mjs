@@ -250,3 +250,31 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
     await context.close();
   }
 });
+
+test('lesson 11 on WebGPU: the GPU-stepped particles are drawn as atlas sprites, like the CPU ones', async () => {
+  // The review saw solid discs in GPU mode beside the CPU's smoke puffs. The compute shader now
+  // writes the renderer's sprite rows (atlas frame by age), drawn with the CPU figure's atlas.
+  const context = await launch('webgpu');
+  try {
+    const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgpu', 800, 600);
+    const fig = '#fig-emitters';
+    await page.locator(fig).scrollIntoViewIfNeeded();
+    // The GPU's sprites are drawn in storage order: compare with the CPU's, unsorted.
+    await setControl(page, fig, 'sort back to front', false);
+    await scrubTo(page, fig, 300);
+    const cpu = await bluePixels(page, fig);
+    await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/11-particles-emitters-cpu-webgpu.png' });
+    await setControl(page, fig, 'step on', 'GPU');
+    await scrubTo(page, fig, 300);
+    await frames(page, 4);
+    const note = await page.locator('#emitters-note').textContent();
+    assert.match(note, /Stepped on the GPU .* play the same atlas/, note);
+    const gpu = await bluePixels(page, fig);
+    await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/11-particles-emitters-gpu-webgpu.png' });
+    // Other particles from the same distributions: about as many blue pixels.
+    assert.ok(cpu > 200 && gpu > 0.5 * cpu && gpu < 2 * cpu, `blue pixels: CPU ${cpu}, GPU ${gpu}`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});

@@ -25,11 +25,17 @@ struct Params {
     spheres: array<vec4<f32>, 8>,
     emitters: array<Emitter, 4>,
 };
-struct Instance {          // the renderer's PointInstance
+struct Instance {          // the renderer's SpriteInstance: an atlas sprite
     center: vec3<f32>,
-    radius: f32,
+    half_size: f32,
+    uv: vec4<f32>,
     color: vec4<f32>,
 };
+// The figure's sprites (src/figures/particles.rs, SPRITE_SCALE) and the smoke atlas's grid
+// (src/particles/sprites.rs, SMOKE_ATLAS); a native test checks that these match.
+const SPRITE_SCALE: f32 = 2.6;
+const ATLAS_COLUMNS: u32 = 4u;
+const ATLAS_ROWS: u32 = 4u;
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read_write> particles: array<Particle>;
 @group(0) @binding(2) var<storage, read_write> instances: array<Instance>;
@@ -277,5 +283,14 @@ fn update(@builtin(global_invocation_id) id: vec3<u32>) {
     let em = params.emitters[u32(q.info.w)];
     let t = clamp(q.pos.w / max(q.vel.w, 1e-6), 0.0, 1.0);
     let alive = q.info.y > 0.5;
-    instances[i] = Instance(q.pos.xyz, select(0.0, q.info.x, alive), mix(em.birth, em.death, t));
+    // As the CPU figure draws its sprites: the atlas frame for the life fraction (Atlas::frame_at),
+    // the colour's alpha through a square root (the atlas thins the puff out on its own).
+    let frames = ATLAS_COLUMNS * ATLAS_ROWS;
+    let frame = min(u32(t * f32(frames)), frames - 1u);
+    let cell = vec2<f32>(f32(frame % ATLAS_COLUMNS), f32(frame / ATLAS_COLUMNS));
+    let size = vec2<f32>(1.0 / f32(ATLAS_COLUMNS), 1.0 / f32(ATLAS_ROWS));
+    let uv = vec4<f32>(cell * size, (cell + 1.0) * size);
+    let c = mix(em.birth, em.death, t);
+    instances[i] = Instance(q.pos.xyz, select(0.0, SPRITE_SCALE * q.info.x, alive), uv,
+        vec4<f32>(c.rgb, sqrt(max(c.a, 0.0))));
 }
