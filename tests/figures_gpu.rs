@@ -407,6 +407,44 @@ mod figures {
     }
 
     #[test]
+    fn fade_off_makes_the_gpu_sprites_opaque_as_the_cpu_ones() {
+        // The compute shader colours each sprite by mixing its emitter's birth and death
+        // colours; with "fade with age" off the CPU figure draws every sprite with alpha 1, so
+        // the GPU must get opaque colours too, and the figure's own emitters stay as they were.
+        let mut f = EmitterFigure::new();
+        let alphas = |f: &mut EmitterFigure, t: f32| {
+            let mut seen = Vec::new();
+            let mut step = |e: &mut [inbetween::particles::Emitter]| -> Result<(), String> {
+                seen.extend(e.iter().map(|e| (e.color_birth.w, e.color_death.w)));
+                Ok(())
+            };
+            let (restart, _) = f.advance_gpu(t, false, |e, _, _, _| step(e)).unwrap();
+            if restart {
+                f.advance_gpu(t, true, |e, _, _, _| step(e)).unwrap();
+            }
+            f.explode_gpu(|e, _, _| step(e)).unwrap();
+            seen
+        };
+        let faded = alphas(&mut f, 0.5);
+        assert!(!faded.is_empty());
+        assert!(faded.iter().any(|&(_, death)| death < 1.0), "{faded:?}");
+        let mut frame = inbetween::draw::Frame::default();
+        assert!(f.draw_gpu(&mut frame).contains("fade with age"));
+        // Turning the fade off replays the run, every step with opaque colours.
+        f.set_fade(false);
+        let opaque = alphas(&mut f, 0.5);
+        assert!(opaque.len() >= faded.len(), "a replay: {opaque:?}");
+        assert!(opaque.iter().all(|&a| a == (1.0, 1.0)), "{opaque:?}");
+        assert!(f.draw_gpu(&mut frame).contains("opaque"));
+        // The emitters themselves keep their fade for when it is turned back on.
+        f.set_fade(true);
+        let again = alphas(&mut f, 0.5);
+        assert!(again.iter().any(|&(_, death)| death < 1.0), "{again:?}");
+        // Setting the same value again is no change: no replay.
+        f.set_fade(true);
+        assert!(f.advance_gpu(0.5, false, |_, _, _, _| Ok(())).unwrap() == (false, 0));
+    }
+    #[test]
     fn the_flock_figure_plans_its_gpu_steps() {
         let mut f = FlockFigure::new();
         // A jump of more than the catch-up limit restarts from a fresh seeded flock.

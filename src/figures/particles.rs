@@ -324,8 +324,10 @@ impl EmitterFigure {
         self.sort = on;
     }
 
-    /// Fade sprites out with age (alpha) or keep them opaque.
+    /// Fade sprites out with age (alpha) or keep them opaque. A change replays the run, since
+    /// in GPU mode the compute shader colours the sprites as it steps.
     pub fn set_fade(&mut self, on: bool) {
+        self.dirty |= self.fade != on;
         self.fade = on;
     }
 
@@ -416,7 +418,8 @@ impl EmitterFigure {
         if self.bursts.len() < MAX_BURSTS && !self.bursts.iter().any(|b| b.0 == k) {
             self.bursts.push((k, true));
             let n = self.next_burst(k);
-            burst(&mut self.emitters, &self.surfaces, n)?;
+            let (fade, surfaces) = (self.fade, &self.surfaces);
+            gpu_colours(&mut self.emitters, fade, |e| burst(e, surfaces, n))?;
         }
         Ok(())
     }
@@ -452,13 +455,17 @@ impl EmitterFigure {
             if self.mode == 1 {
                 self.emitters[0].rate_per_sec = 0.0;
             }
-            let result = step(&mut self.emitters, &self.surfaces, burst, SIM_DT);
+            let (fade, surfaces) = (self.fade, &self.surfaces);
+            let result = gpu_colours(&mut self.emitters, fade, |e| {
+                step(e, surfaces, burst, SIM_DT)
+            });
             self.emitters[0].rate_per_sec = rate;
             result?;
             self.steps_done += 1;
         }
         if let Some(count) = self.press_at_end(target) {
-            step(&mut self.emitters, &self.surfaces, count, 0.0)?;
+            let (fade, surfaces) = (self.fade, &self.surfaces);
+            gpu_colours(&mut self.emitters, fade, |e| step(e, surfaces, count, 0.0))?;
         }
         Ok((false, n))
     }
@@ -477,8 +484,13 @@ impl EmitterFigure {
             "Stepped on the GPU by compute shaders, at t = {} s: {PAGE_MAX_PARTICLES} slots refilled \
              in ring order, one thread per particle (the same emitters, exact bounces and colours). \
              The sprites stay on the GPU, so they are drawn in storage order (not sorted); they \
-             play the same atlas and fade with age. {}{}",
+             play the same atlas and {}. {}{}",
             format_number(self.steps_done as f32 * SIM_DT),
+            if self.fade {
+                "fade with age"
+            } else {
+                "stay opaque (fade off)"
+            },
             self.budget_note(),
             match self.bursts.len() {
                 0 => String::new(),
@@ -1288,4 +1300,26 @@ impl SquashFigure {
             format_number(self.squash.contact_sec),
         ))
     }
+}
+
+/// Calls `f` with the emitters as GPU mode should colour its sprites: as they are with the fade
+/// on; without it opaque at birth and at death, as [`EmitterFigure::draw`] makes every CPU sprite
+/// (the compute shader mixes the two colours by age). The alphas are put back afterwards.
+fn gpu_colours<T>(emitters: &mut [Emitter], fade: bool, f: impl FnOnce(&mut [Emitter]) -> T) -> T {
+    if fade {
+        return f(emitters);
+    }
+    let alphas: Vec<(f32, f32)> = emitters
+        .iter_mut()
+        .map(|e| {
+            let a = (e.color_birth.w, e.color_death.w);
+            (e.color_birth.w, e.color_death.w) = (1.0, 1.0);
+            a
+        })
+        .collect();
+    let result = f(emitters);
+    for (e, (birth, death)) in emitters.iter_mut().zip(alphas) {
+        (e.color_birth.w, e.color_death.w) = (birth, death);
+    }
+    result
 }

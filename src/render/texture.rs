@@ -428,21 +428,20 @@ impl Textured {
             }
         }
         let atlas = frame.sprite_texture.and_then(|id| self.textures.get(id.0));
-        if let (Some(t), false) = (atlas, frame.sprites.is_empty()) {
-            pass.set_pipeline(&self.sprite_pipeline);
-            pass.set_bind_group(0, &self.globals_group, &[]);
-            pass.set_bind_group(1, &t.group, &[]);
-            pass.set_vertex_buffer(0, self.sprites.buffer.slice(..));
-            pass.draw(0..6, 0..frame.sprites.len() as u32);
+        let Some(t) = atlas else { return };
+        if frame.sprites.is_empty() && gpu_sprites.is_empty() {
+            return;
         }
-        if let (Some(t), false) = (atlas, gpu_sprites.is_empty()) {
-            pass.set_pipeline(&self.sprite_pipeline);
-            pass.set_bind_group(0, &self.globals_group, &[]);
-            pass.set_bind_group(1, &t.group, &[]);
-            for (buffer, count) in gpu_sprites {
-                pass.set_vertex_buffer(0, buffer.slice(..));
-                pass.draw(0..6, 0..*count);
-            }
+        // One pipeline and atlas binding for both: the frame's sprites, then the GPU's.
+        pass.set_pipeline(&self.sprite_pipeline);
+        pass.set_bind_group(0, &self.globals_group, &[]);
+        pass.set_bind_group(1, &t.group, &[]);
+        let frame_sprites = (!frame.sprites.is_empty())
+            .then_some((&self.sprites.buffer, frame.sprites.len() as u32));
+        let gpu = gpu_sprites.iter().map(|(buffer, count)| (buffer, *count));
+        for (buffer, count) in frame_sprites.into_iter().chain(gpu) {
+            pass.set_vertex_buffer(0, buffer.slice(..));
+            pass.draw(0..6, 0..count);
         }
     }
 }
