@@ -105,7 +105,7 @@ fn a_fast_fountain_keeps_flowing_beside_the_explosions() {
         "{l}"
     );
     let mut frame = Frame::default();
-    let note = scene.draw(&mut frame, eye, 8.0).unwrap();
+    let note = scene.draw(&mut frame, eye, Vec3::ZERO, 8.0).unwrap();
     assert!(
         note.contains("Of the 2,000 slots here (the core allows 100,000), 1,200 are the fountain's and 800 the explosions'"),
         "{note}"
@@ -130,7 +130,9 @@ fn a_fast_fountain_keeps_flowing_beside_the_explosions() {
     scene.set_rate(200.0).unwrap();
     scene.set_lifetime(2.5).unwrap();
     assert_eq!(scene.lifetime_sec(), 2.5);
-    let note = scene.draw(&mut Frame::default(), eye, 1.0).unwrap();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.0)
+        .unwrap();
     assert!(!note.contains("would need"), "{note}");
     // In "explosion" mode the explosions have every slot.
     scene.set_mode("explosion").unwrap();
@@ -149,13 +151,19 @@ fn an_explosion_gets_what_is_left_of_its_slots_and_a_press_spawns_once() {
     // says why.
     let mut scene = EmitterFigure::new();
     scene.set_mode("both").unwrap();
-    scene.draw(&mut Frame::default(), eye, 1.0).unwrap();
+    scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.0)
+        .unwrap();
     scene.explode();
     assert_eq!(from_emitter(&scene, 1).0, 800);
-    let note = scene.draw(&mut Frame::default(), eye, 1.5).unwrap();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.5)
+        .unwrap();
     assert!(!note.contains("The last explosion got"), "{note}");
     scene.explode();
-    let note = scene.draw(&mut Frame::default(), eye, 1.5).unwrap();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.5)
+        .unwrap();
     assert!(
         note.contains("The last explosion got 0 of its 400 particles")
             && note.contains("Explosions set off by hand: 2."),
@@ -164,15 +172,17 @@ fn an_explosion_gets_what_is_left_of_its_slots_and_a_press_spawns_once() {
     // A press while paused spawns at once, and only once: playing on from there gives what a
     // replay from the start gives (the step it was pressed before spawned it a second time).
     let mut live = EmitterFigure::new();
-    live.draw(&mut Frame::default(), eye, 1.0).unwrap();
+    live.draw(&mut Frame::default(), eye, Vec3::ZERO, 1.0)
+        .unwrap();
     live.explode();
     assert_eq!(from_emitter(&live, 1).0, 400);
     let mut f1 = Frame::default();
-    live.draw(&mut f1, eye, 1.2).unwrap();
+    live.draw(&mut f1, eye, Vec3::ZERO, 1.2).unwrap();
     assert_eq!(from_emitter(&live, 1).0, 400, "spawned once");
     let mut f2 = Frame::default();
-    live.draw(&mut Frame::default(), eye, 0.0).unwrap();
-    live.draw(&mut f2, eye, 1.2).unwrap();
+    live.draw(&mut Frame::default(), eye, Vec3::ZERO, 0.0)
+        .unwrap();
+    live.draw(&mut f2, eye, Vec3::ZERO, 1.2).unwrap();
     assert_eq!(
         f1.fingerprint(),
         f2.fingerprint(),
@@ -185,21 +195,23 @@ fn sorted_sprites_are_drawn_back_to_front() {
     let mut scene = EmitterFigure::new();
     let eye = Vec3::new(0.0, 2.0, 5.0);
     let mut frame = Frame::default();
-    scene.draw(&mut frame, eye, 1.0).unwrap();
+    scene.draw(&mut frame, eye, Vec3::ZERO, 1.0).unwrap();
+    // Depth along the view direction (the camera looks at the origin), deepest first.
+    let forward = (-eye).normalize();
     let d: Vec<f32> = frame
         .points
         .iter()
-        .map(|p| (Vec3::from(p.center) - eye).length())
+        .map(|p| (Vec3::from(p.center) - eye).dot(forward))
         .collect();
     assert!(d.len() > 50);
-    assert!(d.windows(2).all(|w| w[0] >= w[1]), "farthest first");
+    assert!(d.windows(2).all(|w| w[0] >= w[1]), "deepest first");
     scene.set_sort(false);
     let mut frame = Frame::default();
-    scene.draw(&mut frame, eye, 1.0).unwrap();
+    scene.draw(&mut frame, eye, Vec3::ZERO, 1.0).unwrap();
     let d: Vec<f32> = frame
         .points
         .iter()
-        .map(|p| (Vec3::from(p.center) - eye).length())
+        .map(|p| (Vec3::from(p.center) - eye).dot(forward))
         .collect();
     assert!(
         !d.windows(2).all(|w| w[0] >= w[1]),
@@ -209,7 +221,7 @@ fn sorted_sprites_are_drawn_back_to_front() {
     assert!(frame.points.iter().any(|p| p.color[3] < 0.9));
     scene.set_fade(false);
     let mut frame = Frame::default();
-    scene.draw(&mut frame, eye, 1.0).unwrap();
+    scene.draw(&mut frame, eye, Vec3::ZERO, 1.0).unwrap();
     assert!(frame.points.iter().all(|p| p.color[3] == 1.0));
 }
 
@@ -225,7 +237,7 @@ fn the_emitter_figure_rejects_bad_input() {
     let mut frame = Frame::default();
     for t in [f32::NAN, -1.0, MAX_SIM_TIME + 1.0] {
         assert!(scene
-            .draw(&mut frame, Vec3::Z, t)
+            .draw(&mut frame, Vec3::Z, Vec3::ZERO, t)
             .unwrap_err()
             .contains("time"));
     }
@@ -237,9 +249,9 @@ fn a_paused_figure_stands_still_and_a_scrub_replays_exactly() {
     a.set_mode("both").unwrap();
     let eye = Vec3::new(0.0, 2.0, 5.0);
     let mut f1 = Frame::default();
-    a.draw(&mut f1, eye, 3.0).unwrap();
+    a.draw(&mut f1, eye, Vec3::ZERO, 3.0).unwrap();
     let mut f2 = Frame::default();
-    a.draw(&mut f2, eye, 3.0).unwrap();
+    a.draw(&mut f2, eye, Vec3::ZERO, 3.0).unwrap();
     assert_eq!(
         f1.fingerprint(),
         f2.fingerprint(),
@@ -249,16 +261,17 @@ fn a_paused_figure_stands_still_and_a_scrub_replays_exactly() {
     let mut b = EmitterFigure::new();
     b.set_mode("both").unwrap();
     for k in 0..=30 {
-        b.draw(&mut Frame::default(), eye, 0.1 * k as f32).unwrap();
+        b.draw(&mut Frame::default(), eye, Vec3::ZERO, 0.1 * k as f32)
+            .unwrap();
     }
-    b.draw(&mut Frame::default(), eye, 0.5).unwrap();
+    b.draw(&mut Frame::default(), eye, Vec3::ZERO, 0.5).unwrap();
     let mut f3 = Frame::default();
-    b.draw(&mut f3, eye, 3.0).unwrap();
+    b.draw(&mut f3, eye, Vec3::ZERO, 3.0).unwrap();
     assert_eq!(f1.fingerprint(), f3.fingerprint());
     // A changed parameter replays with the new value: the frame at the same time changes.
     a.set_restitution(0.1).unwrap();
     let mut f4 = Frame::default();
-    a.draw(&mut f4, eye, 3.0).unwrap();
+    a.draw(&mut f4, eye, Vec3::ZERO, 3.0).unwrap();
     assert_ne!(f1.fingerprint(), f4.fingerprint());
 }
 
@@ -612,17 +625,25 @@ fn explode_now_while_paused_shows_its_sparks_at_once() {
     let eye = Vec3::new(0.0, 2.0, 6.0);
     let mut scene = EmitterFigure::new();
     scene.set_spread_deg(11.0).unwrap();
-    scene.draw(&mut Frame::default(), eye, 1.8).unwrap();
+    scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.8)
+        .unwrap();
     assert_eq!(from_emitter(&scene, 1).0, 0);
     scene.explode();
     apply_unchanged(&mut scene, "fountain");
-    let note = scene.draw(&mut Frame::default(), eye, 1.8).unwrap();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.8)
+        .unwrap();
     assert_eq!(from_emitter(&scene, 1).0, 400, "{note}");
     // A real change replays from the start and still shows the press, once.
     scene.set_restitution(0.5).unwrap();
-    scene.draw(&mut Frame::default(), eye, 1.8).unwrap();
+    scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.8)
+        .unwrap();
     assert_eq!(from_emitter(&scene, 1).0, 400);
-    scene.draw(&mut Frame::default(), eye, 1.9).unwrap();
+    scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.9)
+        .unwrap();
     assert_eq!(from_emitter(&scene, 1).0, 400, "spawned once");
 }
 
@@ -720,12 +741,18 @@ fn the_try_this_explosions_fill_their_share_and_the_note_says_so() {
     scene.set_rate(1000.0).unwrap();
     scene.set_lifetime(6.0).unwrap();
     assert!((scene.lifetime_sec() - 0.98).abs() < 0.01);
-    scene.draw(&mut Frame::default(), eye, 0.5).unwrap();
+    scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 0.5)
+        .unwrap();
     scene.explode();
-    let note = scene.draw(&mut Frame::default(), eye, 0.6).unwrap();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 0.6)
+        .unwrap();
     assert!(!note.contains("The last explosion got"), "{note}");
     scene.explode();
-    let note = scene.draw(&mut Frame::default(), eye, 0.6).unwrap();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 0.6)
+        .unwrap();
     assert!(
         note.contains("The last explosion got 0 of its 400 particles"),
         "{note}"
@@ -738,13 +765,17 @@ fn the_try_this_explosions_fill_their_share_and_the_note_says_so() {
     scene.set_lifetime(6.0).unwrap();
     let mut got = Vec::new();
     for t in [1.5, 1.6, 1.7] {
-        scene.draw(&mut Frame::default(), eye, t).unwrap();
+        scene
+            .draw(&mut Frame::default(), eye, Vec3::ZERO, t)
+            .unwrap();
         let alive = from_emitter(&scene, 1).0;
         scene.explode();
         got.push(from_emitter(&scene, 1).0 - alive);
     }
     assert_eq!(got, [400, 400, 0]);
-    let note = scene.draw(&mut Frame::default(), eye, 1.7).unwrap();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.7)
+        .unwrap();
     assert!(
         note.contains("The last explosion got 0 of its 400 particles"),
         "{note}"
@@ -808,7 +839,7 @@ fn emitter_sprites_stay_visible_until_the_second_half_of_their_life() {
     scene.set_mode("both").unwrap();
     scene.set_sprite_texture(Some(inbetween::draw::TextureId(0)));
     let mut frame = Frame::default();
-    scene.draw(&mut frame, eye, 1.5).unwrap();
+    scene.draw(&mut frame, eye, Vec3::ZERO, 1.5).unwrap();
     let sys = scene.system();
     assert_eq!(frame.sprites.len(), sys.len());
     let mut young = 0;
@@ -832,4 +863,54 @@ fn emitter_sprites_stay_visible_until_the_second_half_of_their_life() {
         frame.sprites.iter().any(|s| s.color[3] < 0.7),
         "the old ones fade"
     );
+}
+
+#[test]
+fn a_second_press_at_the_same_moment_says_why_it_did_nothing() {
+    // The review pressed "explode now" twice on a paused figure: the note still said
+    // "Explosions set off by hand: 1." and nothing said why the second press did nothing.
+    let eye = Vec3::new(0.0, 2.0, 6.0);
+    let mut scene = EmitterFigure::new();
+    scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.5)
+        .unwrap();
+    scene.explode();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.5)
+        .unwrap();
+    assert!(
+        note.contains("set off by hand: 1.") && !note.contains("did nothing"),
+        "{note}"
+    );
+    scene.explode();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.5)
+        .unwrap();
+    assert!(note.contains("set off by hand: 1."), "{note}");
+    assert!(
+        note.contains(
+            "The last press did nothing: an explosion was set off at this moment already"
+        ),
+        "{note}"
+    );
+    assert!(scene
+        .draw_gpu(&mut Frame::default())
+        .contains("did nothing"));
+    // Once the timeline moves the explanation goes, and a press there counts.
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.6)
+        .unwrap();
+    assert!(!note.contains("did nothing"), "{note}");
+    scene.explode();
+    let note = scene
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, 1.6)
+        .unwrap();
+    assert!(
+        note.contains("set off by hand: 2.") && !note.contains("did nothing"),
+        "{note}"
+    );
+    // The GPU note writes its slot count as the others do.
+    assert!(scene
+        .draw_gpu(&mut Frame::default())
+        .contains("2,000 slots refilled"));
 }

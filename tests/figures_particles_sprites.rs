@@ -2,6 +2,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec3;
+use inbetween::camera::OrbitCamera;
 use inbetween::draw::{Frame, TextureId};
 use inbetween::figures::particles::EmitterFigure;
 use inbetween::figures::particles_sprites::*;
@@ -11,20 +12,21 @@ fn the_column_is_sorted_back_to_front_or_left_in_storage_order() {
     let mut s = SmokeFigure::new();
     let eye = Vec3::new(1.0, 2.0, 6.0);
     let mut f = Frame::default();
-    let note = s.draw(&mut f, TextureId(7), eye, 1.3).unwrap();
+    let note = s.draw(&mut f, TextureId(7), eye, Vec3::ZERO, 1.3).unwrap();
     assert!(note.contains("back to front"));
     assert_eq!(f.sprite_texture, Some(TextureId(7)));
     assert_eq!(f.sprites.len(), 30);
+    // Depth along the view direction (towards the origin), which the depth test compares.
     let dist = |f: &Frame| -> Vec<f32> {
         f.sprites
             .iter()
-            .map(|p| (Vec3::from(p.center) - eye).length())
+            .map(|p| (Vec3::from(p.center) - eye).dot(-eye.normalize()))
             .collect()
     };
-    assert!(dist(&f).windows(2).all(|w| w[0] >= w[1]), "farthest first");
+    assert!(dist(&f).windows(2).all(|w| w[0] >= w[1]), "deepest first");
     s.set_sort(false);
     let mut g = Frame::default();
-    s.draw(&mut g, TextureId(7), eye, 1.3).unwrap();
+    s.draw(&mut g, TextureId(7), eye, Vec3::ZERO, 1.3).unwrap();
     assert!(
         !dist(&g).windows(2).all(|w| w[0] >= w[1]),
         "storage order is not depth order"
@@ -50,7 +52,8 @@ fn puffs_play_the_atlas_over_their_life_and_show_it() {
     let mut s = SmokeFigure::new();
     assert_eq!(s.atlas().len(), 4 * ATLAS_SIDE * ATLAS_SIDE);
     let mut f = Frame::default();
-    s.draw(&mut f, TextureId(0), Vec3::Z * 5.0, 2.0).unwrap();
+    s.draw(&mut f, TextureId(0), Vec3::Z * 5.0, Vec3::ZERO, 2.0)
+        .unwrap();
     let frames: std::collections::BTreeSet<[u32; 4]> =
         f.sprites.iter().map(|p| p.uv.map(f32::to_bits)).collect();
     assert!(
@@ -66,7 +69,8 @@ fn puffs_play_the_atlas_over_their_life_and_show_it() {
     s.set_animate_frames(false);
     s.set_show_atlas(false);
     let mut g = Frame::default();
-    s.draw(&mut g, TextureId(0), Vec3::Z * 5.0, 2.0).unwrap();
+    s.draw(&mut g, TextureId(0), Vec3::Z * 5.0, Vec3::ZERO, 2.0)
+        .unwrap();
     assert!(g.sprites.iter().all(|p| p.uv == [0.0, 0.0, 0.25, 0.25]));
     assert!(g.quads.is_empty());
 }
@@ -82,11 +86,18 @@ fn bad_input_is_refused() {
         .unwrap_err()
         .contains("lifetime"));
     assert!(s
-        .draw(&mut Frame::default(), TextureId(0), Vec3::Z, f32::NAN)
+        .draw(
+            &mut Frame::default(),
+            TextureId(0),
+            Vec3::Z,
+            Vec3::ZERO,
+            f32::NAN
+        )
         .is_err());
     s.set_params(200.0, 1.0).unwrap();
     let mut f = Frame::default();
-    s.draw(&mut f, TextureId(0), Vec3::Z, 0.5).unwrap();
+    s.draw(&mut f, TextureId(0), Vec3::Z, Vec3::ZERO, 0.5)
+        .unwrap();
     assert_eq!(f.sprites.len(), MAX_PUFFS);
 }
 
@@ -95,20 +106,22 @@ fn emitter_particles_become_atlas_sprites_once_a_texture_is_given() {
     let mut e = EmitterFigure::new();
     let eye = Vec3::new(0.0, 2.0, 5.0);
     let mut f = Frame::default();
-    e.draw(&mut f, eye, 1.0).unwrap();
+    e.draw(&mut f, eye, Vec3::ZERO, 1.0).unwrap();
     assert!(f.sprites.is_empty() && !f.points.is_empty());
     e.set_sprite_texture(Some(TextureId(2)));
     let mut g = Frame::default();
-    e.draw(&mut g, eye, 1.0).unwrap();
+    e.draw(&mut g, eye, Vec3::ZERO, 1.0).unwrap();
     assert_eq!(g.sprites.len(), f.points.len());
     assert!(g.points.is_empty());
     assert_eq!(g.sprite_texture, Some(TextureId(2)));
+    // Sorted by depth along the view (the camera looks at the origin), deepest first.
+    let forward = (-eye).normalize();
     let d: Vec<f32> = g
         .sprites
         .iter()
-        .map(|p| (Vec3::from(p.center) - eye).length())
+        .map(|p| (Vec3::from(p.center) - eye).dot(forward))
         .collect();
-    assert!(d.windows(2).all(|w| w[0] >= w[1] - 1e-5), "farthest first");
+    assert!(d.windows(2).all(|w| w[0] >= w[1] - 1e-5), "deepest first");
 }
 
 #[test]
@@ -116,12 +129,59 @@ fn the_note_counts_one_puff_in_the_singular() {
     let mut s = SmokeFigure::new();
     s.set_params(1.0, 4.0).unwrap();
     let note = s
-        .draw(&mut Frame::default(), TextureId(0), Vec3::Z * 5.0, 2.0)
+        .draw(
+            &mut Frame::default(),
+            TextureId(0),
+            Vec3::Z * 5.0,
+            Vec3::ZERO,
+            2.0,
+        )
         .unwrap();
     assert!(note.starts_with("1 puff, living"), "{note}");
     s.set_params(2.0, 4.0).unwrap();
     let note = s
-        .draw(&mut Frame::default(), TextureId(0), Vec3::Z * 5.0, 2.0)
+        .draw(
+            &mut Frame::default(),
+            TextureId(0),
+            Vec3::Z * 5.0,
+            Vec3::ZERO,
+            2.0,
+        )
         .unwrap();
     assert!(note.starts_with("2 puffs, each living"), "{note}");
+}
+
+#[test]
+fn sorted_puffs_that_overlap_on_screen_are_drawn_deepest_first_in_the_pages_view() {
+    // The page's camera (lesson.js: setCamera(-0.4, 1.1, 0, 6.0, 0.25, 0.15)). Sorted by their
+    // distance from the eye, 23 overlapping pairs at 4 s were drawn nearer first, and each cut
+    // a hard-edged notch into the puff behind it: the squares face the camera, so the depth
+    // test compares view depths, and the sort must use those.
+    let camera = OrbitCamera::from_view([-0.4, 1.1, 0.0, 6.0, 0.25, 0.15]);
+    let view = camera.view();
+    for t in [1.0, 2.0, 4.0, 5.0, 7.5] {
+        let mut s = SmokeFigure::new();
+        s.set_params(80.0, 4.0).unwrap();
+        let mut f = Frame::default();
+        s.draw(&mut f, TextureId(0), camera.eye(), camera.target, t)
+            .unwrap();
+        let sprites = &f.sprites;
+        for (i, a) in sprites.iter().enumerate() {
+            for b in &sprites[i + 1..] {
+                let (va, vb) = (
+                    view.transform_point3(a.center.into()),
+                    view.transform_point3(b.center.into()),
+                );
+                let reach = a.half_size + b.half_size;
+                let overlap = (va.x - vb.x).abs() < reach && (va.y - vb.y).abs() < reach;
+                // View space looks down -z: the deeper puff has the smaller z, and goes first.
+                assert!(
+                    !overlap || va.z <= vb.z,
+                    "t = {t}: a puff at view depth {} drawn before one behind it at {}",
+                    -va.z,
+                    -vb.z
+                );
+            }
+        }
+    }
 }

@@ -50,7 +50,7 @@ mod the_grader_itself {
         assert_eq!(
             report.status,
             Status::Wrong {
-                case: 1,
+                case: 2,
                 what: "random input".into(),
                 input: "2".into(),
                 expected: "2".into(),
@@ -72,7 +72,7 @@ mod the_grader_itself {
         );
         let shown = report.status.to_string();
         assert!(
-            shown.starts_with("WRONG at case 1 (zero: the edge)"),
+            shown.starts_with("WRONG at case 2 (zero: the edge)"),
             "{shown}"
         );
     }
@@ -118,7 +118,7 @@ mod the_grader_itself {
         else {
             panic!("{:?}", report.status);
         };
-        assert_eq!(*case, 0);
+        assert_eq!(*case, 1, "counted from 1");
         assert!(message.contains("index out of bounds"), "{message}");
         let at = format!("tests/grader.rs:{PANIC_LINE}:");
         assert!(
@@ -127,7 +127,7 @@ mod the_grader_itself {
         );
         let shown = report.status.to_string();
         assert!(
-            shown.starts_with("PANICKED at case 0 (random input): index out of bounds")
+            shown.starts_with("PANICKED at case 1 (random input): index out of bounds")
                 && shown.contains(&format!("({at}")),
             "{shown}"
         );

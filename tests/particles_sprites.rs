@@ -78,23 +78,47 @@ fn atlas_sizes_are_checked() {
 
 proptest! {
     #[test]
-    fn back_to_front_is_a_permutation_sorted_by_decreasing_distance(
+    fn back_to_front_is_a_permutation_sorted_by_decreasing_depth_along_the_view(
         points in proptest::collection::vec((-10f32..10.0, -10f32..10.0, -10f32..10.0), 0..60),
         eye in (-20f32..20.0, -20f32..20.0, -20f32..20.0),
+        look in (-1f32..1.0, -1f32..1.0, -1f32..1.0),
     ) {
         let positions: Vec<Vec3> = points.iter().map(|&(x, y, z)| Vec3::new(x, y, z)).collect();
         let eye = Vec3::new(eye.0, eye.1, eye.2);
+        // A unit view direction, or none (then the squared distance is the key).
+        let forward = Vec3::new(look.0, look.1, look.2).normalize_or_zero();
         let mut order = Vec::new();
-        sort_back_to_front(&mut order, &positions, eye);
+        sort_back_to_front(&mut order, &positions, eye, forward);
         prop_assert_eq!(order.len(), positions.len());
         let mut seen: Vec<u32> = order.iter().map(|&(_, i)| i).collect();
         seen.sort();
         prop_assert!(seen.iter().enumerate().all(|(k, &i)| k as u32 == i), "each index once");
+        let depth = |i: u32| {
+            let d = positions[i as usize] - eye;
+            if forward == Vec3::ZERO { d.length_squared() } else { d.dot(forward) }
+        };
         for w in order.windows(2) {
-            let d = |i: u32| (positions[i as usize] - eye).length_squared();
-            prop_assert!(d(w[0].1) >= d(w[1].1), "farthest first");
+            prop_assert!(depth(w[0].1) >= depth(w[1].1), "deepest first");
+            prop_assert!(depth(w[0].1) > depth(w[1].1) || w[0].1 < w[1].1, "ties in index order");
         }
     }
+}
+
+#[test]
+fn depth_along_the_view_not_distance_decides_the_order() {
+    // The camera at the origin looks down −z. A sprite far off to the side but shallow and one
+    // straight ahead but deeper: by distance the side one is farther, by depth (what the depth
+    // test compares for squares parallel to the image plane) the one ahead is, so it goes first.
+    let (eye, forward) = (Vec3::ZERO, -Vec3::Z);
+    let positions = [Vec3::new(4.0, 0.0, -2.0), Vec3::new(0.0, 0.0, -3.0)];
+    assert!(positions[0].length() > positions[1].length());
+    let mut order = Vec::new();
+    sort_back_to_front(&mut order, &positions, eye, forward);
+    assert_eq!(order.iter().map(|&(_, i)| i).collect::<Vec<_>>(), [1, 0]);
+    assert_eq!(order[0].0, 3.0);
+    // Without a view direction the key is the squared distance.
+    sort_back_to_front(&mut order, &positions, eye, Vec3::ZERO);
+    assert_eq!(order.iter().map(|&(_, i)| i).collect::<Vec<_>>(), [0, 1]);
 }
 
 #[test]
@@ -102,7 +126,7 @@ fn ties_keep_storage_order_and_storage_is_reused() {
     let positions = [Vec3::X, Vec3::Y, Vec3::Z * 3.0, -Vec3::X];
     let mut order = Vec::with_capacity(8);
     let ptr = order.as_ptr();
-    sort_back_to_front(&mut order, &positions, Vec3::ZERO);
+    sort_back_to_front(&mut order, &positions, Vec3::ZERO, Vec3::Z);
     let idx: Vec<u32> = order.iter().map(|&(_, i)| i).collect();
     assert_eq!(idx, [2, 0, 1, 3]);
     assert_eq!(order.as_ptr(), ptr, "no reallocation");

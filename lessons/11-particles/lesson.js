@@ -22,14 +22,19 @@ if (emitterViewer) {
   gui.add(p, 'spread', 0, 90, 1).name('cone half-angle (°)');
   gui.add(p, 'lifetime', 0.2, 6, 0.1).name('lifetime (s)');
   gui.add(p, 'restitution', 0, 1, 0.05).name('restitution e');
-  gui.add(p, 'gravity', 0, 20, 0.1).name('gravity (m/s²)');
-  gui.add(p, 'sort').name('sort back to front');
+  gui.add(p, 'gravity', 0, 20, 0.01).name('gravity (m/s²)');
+  // The GPU's sprites are drawn in storage order (they never come back to sort): the box is
+  // greyed out while the GPU steps, so it does not look as if it still did something.
+  const sortControl = gui.add(p, 'sort').name('sort back to front');
   gui.add(p, 'fade').name('fade with age');
   let rejected = '';
   // CPU or WebGPU compute shaders; WebGL2 has no compute shaders, so there the switch is off.
   const hasCompute = emitterViewer.backend === 'WebGPU';
   const onControl = gui.add(p, 'on', ['CPU', 'GPU']).name('step on').onChange((v) => {
-    try { scene.setGpu(emitterViewer, v === 'GPU'); } catch (e) { rejected = e.message; }
+    try {
+      scene.setGpu(emitterViewer, v === 'GPU');
+      sortControl.enable(v !== 'GPU');
+    } catch (e) { rejected = e.message; }
   });
   if (!hasCompute) onControl.disable();
   gui.add(p, 'explode').name('explode now');

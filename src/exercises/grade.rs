@@ -17,6 +17,7 @@ pub enum Status {
     NotDone,
     /// The first case whose answer differs from the reference.
     Wrong {
+        /// The case's number, counting from 1 (as a student counts them).
         case: usize,
         /// What the case is meant to test ("keys with a·b < 0: the short arc").
         what: String,
@@ -26,6 +27,7 @@ pub enum Status {
     },
     /// The exercise panicked (caught natively only: a wasm panic aborts the module).
     Panicked {
+        /// The case's number, counting from 1.
         case: usize,
         what: String,
         input: String,
@@ -107,7 +109,8 @@ pub fn check_cases<I: Debug, O: Debug>(
     close: impl Fn(&O, &O) -> bool,
 ) -> Report {
     let status = (|| {
-        for (case, (what, input)) in cases.iter().enumerate() {
+        // Numbered from 1: "WRONG at case 1" is the first case a student would count.
+        for (case, (what, input)) in (1..).zip(cases) {
             let context = || format!("exercise {exercise} ({lesson}), case {case} ({what})");
             let answer = match run_caught(context, || student(input)) {
                 Ok(answer) => answer,

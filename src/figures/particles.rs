@@ -89,6 +89,9 @@ pub struct EmitterFigure {
     /// press has been spawned in the current run (a press spawns at once; the step it was
     /// pressed before must not spawn it a second time, while a replay must).
     bursts: Vec<(usize, bool)>,
+    /// The step of the latest press that set off nothing (one at a step already set one off,
+    /// or one past [`MAX_BURSTS`]): the note says why while the figure stays at that step.
+    ignored_press: Option<usize>,
     /// The explosions of this run still holding slots: (step, particles spawned).
     spent: Vec<(usize, usize)>,
     /// The latest explosion: (particles spawned, particles asked for).
@@ -144,6 +147,7 @@ impl EmitterFigure {
             burst_size: 400,
             lifetime_slider_sec: 2.5,
             bursts: Vec::with_capacity(MAX_BURSTS),
+            ignored_press: None,
             spent: Vec::with_capacity(MAX_BURSTS + 8),
             last_burst: None,
             steps_done: 0,
@@ -339,12 +343,44 @@ impl EmitterFigure {
 
     /// Sets off the explosion now (and at this moment in every replay).
     pub fn explode(&mut self) {
+        if let Some(n) = self.press() {
+            self.system.burst(&self.emitters, 1, n);
+        }
+    }
+
+    /// Records a press of "explode now" at the current step and returns its particle count, or
+    /// `None` (remembered for the note) when this step has one already or the list is full.
+    fn press(&mut self) -> Option<usize> {
         let k = self.steps_done;
         if self.bursts.len() < MAX_BURSTS && !self.bursts.iter().any(|b| b.0 == k) {
             self.bursts.push((k, true));
-            let n = self.next_burst(k);
-            self.system.burst(&self.emitters, 1, n);
+            self.ignored_press = None;
+            Some(self.next_burst(k))
+        } else {
+            self.ignored_press = Some(k);
+            None
         }
+    }
+
+    /// The notes' last sentences: how many presses, and why the latest did nothing, if it did.
+    fn presses_note(&self) -> String {
+        let mut note = match self.bursts.len() {
+            0 => String::new(),
+            b => format!(" Explosions set off by hand: {b}."),
+        };
+        if self.ignored_press == Some(self.steps_done) {
+            note.push_str(&if self.bursts.len() >= MAX_BURSTS {
+                format!(
+                    " The last press did nothing: the figure remembers at most {MAX_BURSTS} \
+                     presses."
+                )
+            } else {
+                " The last press did nothing: an explosion was set off at this moment already \
+                 (one per step); move the timeline a little, then press again."
+                    .to_string()
+            });
+        }
+        note
     }
 
     fn reset(&mut self) {
@@ -414,10 +450,7 @@ impl EmitterFigure {
         &mut self,
         burst: impl FnOnce(&mut [Emitter], &Surfaces, usize) -> Result<(), String>,
     ) -> Result<(), String> {
-        let k = self.steps_done;
-        if self.bursts.len() < MAX_BURSTS && !self.bursts.iter().any(|b| b.0 == k) {
-            self.bursts.push((k, true));
-            let n = self.next_burst(k);
+        if let Some(n) = self.press() {
             let (fade, surfaces) = (self.fade, &self.surfaces);
             gpu_colours(&mut self.emitters, fade, |e| burst(e, surfaces, n))?;
         }
@@ -481,27 +514,31 @@ impl EmitterFigure {
             frame.mesh(MeshId::SPHERE, model, palette::GREY);
         }
         format!(
-            "Stepped on the GPU by compute shaders, at t = {} s: {PAGE_MAX_PARTICLES} slots refilled \
+            "Stepped on the GPU by compute shaders, at t = {} s: {} slots refilled \
              in ring order, one thread per particle (the same emitters, exact bounces and colours). \
              The sprites stay on the GPU, so they are drawn in storage order (not sorted); they \
              play the same atlas and {}. {}{}",
             format_number(self.steps_done as f32 * SIM_DT),
+            with_commas(PAGE_MAX_PARTICLES),
             if self.fade {
                 "fade with age"
             } else {
                 "stay opaque (fade off)"
             },
             self.budget_note(),
-            match self.bursts.len() {
-                0 => String::new(),
-                b => format!(" Explosions set off by hand: {b}."),
-            },
+            self.presses_note(),
         )
     }
 
-    /// Simulates to `time_sec` and fills `frame`; `eye` is the camera position (for sorting).
-    /// Returns the note.
-    pub fn draw(&mut self, frame: &mut Frame, eye: Vec3, time_sec: f32) -> Result<String, String> {
+    /// Simulates to `time_sec` and fills `frame`; `eye` is the camera position and `target` the
+    /// point it looks at (for sorting). Returns the note.
+    pub fn draw(
+        &mut self,
+        frame: &mut Frame,
+        eye: Vec3,
+        target: Vec3,
+        time_sec: f32,
+    ) -> Result<String, String> {
         self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
         for s in &self.surfaces.spheres {
@@ -512,8 +549,9 @@ impl EmitterFigure {
         let sys = &self.system;
         let n = sys.len();
         if self.sort {
-            // Farthest first: each sprite blends over what is already behind it.
-            sort_back_to_front(&mut self.order, &sys.positions[..n], eye);
+            // Deepest first: each sprite blends over what is already behind it.
+            let forward = (target - eye).normalize_or_zero();
+            sort_back_to_front(&mut self.order, &sys.positions[..n], eye, forward);
         } else {
             self.order.clear();
             self.order.extend((0..n as u32).map(|i| (0.0, i)));
@@ -558,11 +596,7 @@ impl EmitterFigure {
             self.budget_note(),
             format_number(e),
             format_number(5.0 * e),
-            if self.bursts.is_empty() {
-                String::new()
-            } else {
-                format!(" Explosions set off by hand: {}.", self.bursts.len())
-            },
+            self.presses_note(),
         ))
     }
 

@@ -108,13 +108,14 @@ impl SmokeFigure {
     }
 
     /// Fills `frame` at `time_sec` (seconds, ≥ 0) with the column, the floor grid and the atlas
-    /// (`atlas` is the texture holding [`SmokeFigure::atlas`]); `eye` is the camera position.
-    /// Returns the note.
+    /// (`atlas` is the texture holding [`SmokeFigure::atlas`]); `eye` is the camera position and
+    /// `target` the point it looks at. Returns the note.
     pub fn draw(
         &mut self,
         frame: &mut Frame,
         atlas: TextureId,
         eye: Vec3,
+        target: Vec3,
         time_sec: f32,
     ) -> Result<String, String> {
         let t = in_range("time", time_sec, 0.0, 1e5)?;
@@ -127,7 +128,11 @@ impl SmokeFigure {
             self.positions.push(self.position(k, age));
         }
         if self.sort {
-            sort_back_to_front(&mut self.order, &self.positions, eye);
+            // Every square faces the camera: sorted by depth along the view, the order the
+            // depth test sees (by distance from the eye, 23 overlapping pairs at 4 s in the
+            // page's view came out in the wrong order, each a hard-edged notch).
+            let forward = (target - eye).normalize_or_zero();
+            sort_back_to_front(&mut self.order, &self.positions, eye, forward);
         } else {
             self.order.clear();
             self.order.extend((0..self.puffs as u32).map(|i| (0.0, i)));
@@ -181,7 +186,7 @@ impl SmokeFigure {
             },
             SMOKE_ATLAS.frames(),
             if self.sort {
-                "back to front (sorted by distance from the camera every frame)"
+                "back to front (sorted by depth along the view every frame)"
             } else {
                 "in storage order (unsorted): near puffs drawn early hide the ones behind them"
             }

@@ -4,7 +4,7 @@
 //!   fractal noise, growing, thinning and fading over its life: frame `k` shows the puff at life
 //!   fraction `k / 15`. Opacity is 0 on every frame's border, so filtering never bleeds one frame
 //!   into the next.
-//! - [`sort_back_to_front`]: the draw order of transparent sprites, farthest from the eye first.
+//! - [`sort_back_to_front`]: the draw order of transparent sprites, deepest along the view first.
 //!   Blending `c = α c_sprite + (1 − α) c_behind` needs what is behind already in the image; a
 //!   near sprite drawn first also writes its depth, and a farther one then fails the depth test
 //!   and is never blended in.
@@ -92,16 +92,33 @@ pub fn fill_smoke_atlas(
     Ok(())
 }
 
-/// Fills `order` with `(squared distance to eye, index)` for every position, farthest first
-/// (ties keep index order). Reuses `order`'s storage: no allocation once it is large enough.
-pub fn sort_back_to_front(order: &mut Vec<(f32, u32)>, positions: &[Vec3], eye: Vec3) {
+/// Fills `order` with `(depth, index)` for every position, deepest first (ties keep index
+/// order), where the depth is `(p − eye) · forward` along the camera's unit view direction
+/// `forward`. Camera-facing squares all lie parallel to the image plane, so this is exactly the
+/// depth the depth test compares; sorted by distance from the eye instead, two overlapping
+/// sprites off to the side of the view can come out in the wrong order. With `forward = 0` (no
+/// view direction) the key is the squared distance from the eye. Reuses `order`'s storage: no
+/// allocation once it is large enough.
+pub fn sort_back_to_front(
+    order: &mut Vec<(f32, u32)>,
+    positions: &[Vec3],
+    eye: Vec3,
+    forward: Vec3,
+) {
     order.clear();
+    let key = |p: Vec3| {
+        if forward == Vec3::ZERO {
+            (p - eye).length_squared()
+        } else {
+            (p - eye).dot(forward)
+        }
+    };
     order.extend(
         positions
             .iter()
             .enumerate()
-            .map(|(i, p)| ((*p - eye).length_squared(), i as u32)),
+            .map(|(i, &p)| (key(p), i as u32)),
     );
-    // A stable sort on a total order (NaN distances go first, as if infinitely far).
+    // A stable sort on a total order (NaN depths go first, as if infinitely far).
     order.sort_by(|a, b| b.0.total_cmp(&a.0));
 }

@@ -117,10 +117,10 @@ impl EmitterScene {
             return self.draw_gpu(viewer, time_sec);
         }
         viewer.renderer.gpu_sprites.clear(); // none left from GPU mode (hidden canvas)
-        let eye = viewer.camera.eye();
+        let (eye, target) = (viewer.camera.eye(), viewer.camera.target);
         let note = self
             .scene
-            .draw(&mut viewer.renderer.frame, eye, time_sec)
+            .draw(&mut viewer.renderer.frame, eye, target, time_sec)
             .map_err(js)?;
         viewer.present()?;
         Ok(note)

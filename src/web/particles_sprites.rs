@@ -59,10 +59,10 @@ impl SmokeScene {
                 id
             }
         };
-        let eye = viewer.camera.eye();
+        let (eye, target) = (viewer.camera.eye(), viewer.camera.target);
         let note = self
             .scene
-            .draw(&mut viewer.renderer.frame, atlas, eye, time_sec)
+            .draw(&mut viewer.renderer.frame, atlas, eye, target, time_sec)
             .map_err(js)?;
         viewer.present()?;
         Ok(note)
