@@ -2,11 +2,59 @@
 // frame loop, places figure labels, and builds the timeline, plots and "view source" list. Lesson
 // pages import it.
 import init, { Viewer, buildInfo } from '../pkg/inbetween.js';
-import GUI from '../vendor/lil-gui/lil-gui.esm.min.js';
+import GUI, { NumberController } from '../vendor/lil-gui/lil-gui.esm.min.js';
 // Under `scripts/serve`: reload after a rebuild, show a failed build's errors (idle otherwise).
 import './devloop.js';
 
 export { GUI };
+
+// A value typed into a number box that lil-gui cannot take is otherwise dropped in silence: text
+// that is not a number keeps the old value, a number outside the slider's range is clamped to it.
+// Every number control of every panel (folders included: they are GUIs too) says so under itself
+// until its next accepted value.
+const addControl = GUI.prototype.add;
+GUI.prototype.add = function add(...args) {
+  const controller = addControl.apply(this, args);
+  if (controller instanceof NumberController) reportTypedValues(controller);
+  return controller;
+};
+
+/** The sentence for `typed` (the number box's text) entered into `controller`, or '' when it was
+ * taken as typed (the box shows it already: the control's value after lil-gui parsed, snapped
+ * and clamped it, as the box still shows the typed text while it has the focus). */
+export function typedValueNote(controller, typed) {
+  const text = typed.trim();
+  const value = parseFloat(text);
+  const name = controller._name;
+  if (Number.isNaN(value)) return `“${text}” is not a number: ${name} stays ${controller.getValue()}.`;
+  const [lo, hi] = [controller._min, controller._max];
+  if ((lo !== undefined && value < lo) || (hi !== undefined && value > hi)) {
+    return `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}: ${name} is set to ${controller.getValue()}.`;
+  }
+  return '';
+}
+
+function reportTypedValues(controller) {
+  const note = document.createElement('div');
+  note.className = 'typed-note';
+  note.setAttribute('role', 'status');
+  note.hidden = true;
+  controller.domElement.after(note);
+  // 'change' comes when the box is left or Enter pressed, before lil-gui's blur handler rewrites
+  // the box with the value it took: the typed text is still there.
+  controller.$input.addEventListener('change', () => {
+    note.textContent = typedValueNote(controller, controller.$input.value);
+    note.hidden = !note.textContent;
+  });
+  // A later change made otherwise (a drag of the slider, a preset) clears it; the
+  // changes made while typing come with the box focused. (The instance's own _callOnChange, as
+  // the page's onChange replaces the callback it calls.)
+  const callOnChange = controller._callOnChange.bind(controller);
+  controller._callOnChange = () => {
+    if (!controller._inputFocused) note.hidden = true;
+    callOnChange();
+  };
+}
 
 const state = {
   errors: [], figures: [], frameCallbacks: [], running: true, dead: false,

@@ -172,6 +172,59 @@ test('lesson 11: explode now on a paused figure shows its sparks at once', async
   }
 });
 
+test('a typed value a number box cannot take says what became of it (lesson 11, the student re-review)', async () => {
+  // lil-gui kept the old value for text that is not a number and clamped a number outside the
+  // slider's range, both without a word; the shell now says so under the control, until the
+  // next accepted value. A second "explode now" at the same paused moment says why it did nothing.
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', 800, 600);
+    const fig = '#fig-emitters';
+    await page.locator(fig).scrollIntoViewIfNeeded();
+    const gravity = page.locator(`${fig} .lil-controller`, { hasText: 'gravity' });
+    const box = gravity.locator('input');
+    // Each number control has its note right after it.
+    const note = gravity.locator('xpath=following-sibling::*[1]');
+    const type = async (text) => {
+      await box.fill(text);
+      await box.press('Enter');
+      await frames(page, 2);
+    };
+    await type('abc');
+    assert.equal(await note.getAttribute('class'), 'typed-note');
+    assert.match(await note.textContent(), /“abc” is not a number: gravity \(m\/s²\) stays 9\.81\./);
+    assert.equal(await box.inputValue(), '9.81', 'the old value back in the box');
+    await type('-50');
+    assert.match(await note.textContent(), /-50 is outside 0 to 20: gravity \(m\/s²\) is set to 0\./);
+    assert.ok(await note.isVisible());
+    await page.locator(fig).screenshot({ path: 'tests/screenshots/11-particles-typed-value-webgl2.png' });
+    await type('4.5');
+    assert.ok(!(await note.isVisible()), 'an accepted value takes the note away');
+    // The figure took the accepted value (the note's bounce sentence is unaffected; the
+    // panel shows it).
+    assert.equal(await box.inputValue(), '4.5');
+    // Out of range, then a drag of the slider: the note goes.
+    await type('1e30');
+    assert.match(await note.textContent(), /1e30 is outside 0 to 20: gravity \(m\/s²\) is set to 20\./);
+    const slider = gravity.locator('.lil-slider');
+    const r = await slider.boundingBox();
+    await page.mouse.click(r.x + r.width * 0.5, r.y + r.height / 2);
+    await frames(page, 2);
+    assert.ok(!(await note.isVisible()), 'a drag takes the note away');
+    // Two presses of "explode now" at one paused moment: the second says why it did nothing.
+    await scrubTo(page, fig, 300);
+    const explode = page.locator(`${fig} .lil-controller`, { hasText: 'explode now' }).locator('button');
+    await explode.click();
+    await frames(page, 2);
+    await explode.click();
+    await frames(page, 2);
+    assert.match(await page.locator('#emitters-note').textContent(), /The last press did nothing: an explosion was set off at this moment already/);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
 test('lesson 12: the order plot, the rules labels apart, the rule weights in view', async () => {
   const context = await launch('webgl2');
   try {
