@@ -191,6 +191,13 @@ fn the_rules_figure_draws_three_arrows_and_names_the_cell() {
         assert!(frame.labels.iter().any(|l| l.text == name), "{name}");
     }
     assert!(note.contains("in cell"), "{note}");
+    // At the start separation is over 6 long, drawn cut at 2 m: the note says so (and only of
+    // separation), so that its arrow does not read as three times the cohesion.
+    let cut = note.split("cut at 2 m: ").nth(1).unwrap_or_default();
+    assert!(
+        cut.starts_with("separation ") && !cut.contains("cohesion"),
+        "{note}"
+    );
     // A narrower field of view sees fewer neighbours.
     let (all, _) = scene.neighbours();
     scene.set_fov_deg(60.0).unwrap();
@@ -217,7 +224,14 @@ fn the_rules_figure_says_what_the_students_code_does() {
     }
     scene.set_runner(wrong);
     let note = scene.draw(&mut Frame::default());
-    assert!(note.contains("Your cell_index differs"), "{note}");
+    // An index, in whole numbers, with the reference's (i, j, k): the wrong runner adds 1.
+    assert!(
+        note.contains(
+            "Your cell_index differs at this boid: yours 11, reference 10 (cell i = 2, j = 0, \
+             k = 2 of 4 × 1 × 4)."
+        ),
+        "{note}"
+    );
     // The wrong runner flips separation only: the note names it, gives both vectors, and says
     // the other two match.
     assert!(
@@ -524,5 +538,68 @@ fn the_force_laws_do_what_the_text_says() {
     assert!(
         mean > 0.15 && mean < 0.26,
         "mean nearest-neighbour distance {mean} m"
+    );
+}
+
+#[test]
+fn the_rules_figures_cell_square_lies_on_the_grid_around_the_boid() {
+    // The orange square (the boid's cell) and the teal block are drawn on the grid's plane
+    // y = 0, and the orange one holds the boid. They were drawn from the grid origin's y = −0.5,
+    // half a metre below the grid lines: in the page's perspective, near a corner, the orange
+    // square looked a whole cell away from the boid.
+    let orange = Vec3::new(0.791298, 0.254152, 0.0);
+    for (x, z, size) in [
+        (0.0, 0.0, 1.0),
+        (-1.9, -1.9, 0.25),
+        (1.9, 0.0, 0.25),
+        (1.2, -1.0, 0.5),
+    ] {
+        let mut scene = RulesFigure::new();
+        scene.set_position(x, z).unwrap();
+        scene.set_cell_size(size).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        for v in &frame.lines {
+            assert!(v.position[1] > -0.01, "a line below the grid plane: {v:?}");
+        }
+        // The orange lines within 0.01 m of the plane are the cell square (the boid's velocity
+        // arrow is orange too, but it starts at the boid and points along +x).
+        let square: Vec<Vec3> = frame
+            .lines
+            .iter()
+            .filter(|v| Vec3::from_slice(&v.color[..3]).distance(orange) < 1e-3)
+            .map(|v| Vec3::from(v.position))
+            .filter(|p| (p.y - 0.002).abs() < 1e-4)
+            .collect();
+        assert_eq!(square.len(), 8, "four edges at ({x}, {z}), cell {size}");
+        let (lo, hi) = square.iter().fold(
+            (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+            |(a, b), p| (a.min(*p), b.max(*p)),
+        );
+        assert!(
+            // The square is inset by 3% of a cell; a boid on a boundary belongs to the upper cell.
+            (lo.x - 0.05 * size..=hi.x + 0.05 * size).contains(&x)
+                && (lo.z - 0.05 * size..=hi.z + 0.05 * size).contains(&z),
+            "the boid at ({x}, {z}) is outside its square {lo} .. {hi}"
+        );
+        assert!((hi.x - lo.x - 0.94 * size).abs() < 1e-4, "{lo} .. {hi}");
+    }
+}
+
+#[test]
+fn the_flock_note_says_when_the_min_speed_is_above_the_max() {
+    // Typed min speed 3 with max speed 1: the boids fly at 1 m/s, and the note said "speed
+    // between 1.000 and 1.000 m/s" while the panel showed 3, with no word of why.
+    let mut scene = FlockFigure::new();
+    let note = scene.draw(&mut Frame::default());
+    assert!(note.contains("speed between 1.200 and 1.800 m/s"), "{note}");
+    scene.set_max_speed(1.0).unwrap();
+    scene.set_min_speed(3.0).unwrap();
+    let note = scene.draw(&mut Frame::default());
+    assert!(
+        note.contains(
+            "every boid flies at the max speed, 1.000 m/s (the min speed, 3.000 m/s, is above it)"
+        ),
+        "{note}"
     );
 }

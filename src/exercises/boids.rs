@@ -41,8 +41,9 @@ pub fn three_rules(p: Vec3, v: Vec3, positions: &[Vec3], velocities: &[Vec3]) ->
 /// (i, j, k) = clamp(⌊(p − origin) / cell_size⌋, 0, dims − 1)     per axis
 /// index     = i + nx (j + ny k)
 /// ```
-/// Hints: `Vec3::floor`; clamp while still a float (or as a signed integer) before casting: what
-/// does `-0.5 as u32` give?
+/// Hints: `Vec3::floor`. Rust's `as u32` saturates (a negative float gives 0), so the lower
+/// clamp comes for free, the upper one does not: each of i, j, k must stay below its count, and
+/// a grid may be a single cell thick (`ny = 1`: every position has j = 0).
 pub fn cell_index(p: Vec3, origin: Vec3, cell_size: f32, dims: [u32; 3]) -> Answer<usize> {
     solution!(boids::cell_index(p, origin, cell_size, dims));
     let _ = (p, origin, cell_size, dims);

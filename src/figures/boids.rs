@@ -8,8 +8,7 @@
 
 use super::particles::{steps_to, SIM_DT};
 use super::{
-    compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner,
-    DEFAULT_RUNNER,
+    failure_note, format_number, in_range, palette, Frame, MeshId, Runner, DEFAULT_RUNNER,
 };
 use crate::boids::{cell_index, three_rules, BoidParams, Flock, ForceLaw, Search};
 use crate::exercises::run;
@@ -219,6 +218,26 @@ impl FlockFigure {
         Ok(())
     }
 
+    /// The speeds the boids keep, for the notes. A min speed above the max speed acts as the
+    /// max (the panel still shows the number typed), so the note says so instead of showing
+    /// "between 1.000 and 1.000".
+    fn speed_range(&self) -> String {
+        let (min, max) = (self.params.min_speed, self.params.max_speed);
+        if min > max {
+            format!(
+                "every boid flies at the max speed, {} m/s (the min speed, {} m/s, is above it)",
+                format_number(max),
+                format_number(min)
+            )
+        } else {
+            format!(
+                "speed between {} and {} m/s",
+                format_number(min),
+                format_number(max)
+            )
+        }
+    }
+
     /// Maximum steering acceleration, m/s², in [0.1, 50].
     pub fn set_max_force(&mut self, force: f32) -> Result<(), String> {
         self.params.max_force = in_range("max force", force, 0.1, 50.0)?;
@@ -334,12 +353,11 @@ impl FlockFigure {
         };
         format!(
             "{} boids stepped on the GPU by a compute shader, at t = {} s (the same rules; \
-             neighbours by the naive O(N²) loop, one thread per boid){roles}; speed between {} \
-             and {} m/s. The order plot is empty: its samples need the flock on the CPU.",
+             neighbours by the naive O(N²) loop, one thread per boid){roles}; {}. The order \
+             plot is empty: its samples need the flock on the CPU.",
             self.flock.len(),
             format_number(self.steps_done as f32 * SIM_DT),
-            format_number(self.params.min_speed.min(self.params.max_speed)),
-            format_number(self.params.max_speed),
+            self.speed_range(),
         )
     }
 
@@ -455,7 +473,7 @@ impl FlockFigure {
         format!(
             "{} boids, {} search; the orange boid sees {count} {} within {} m and steers \
              at {} m/s² (purple arrow, {STEER_ARROW_M_PER_MS2} m per m/s², drawn at most {STEER_ARROW_MAX_M} m long; the steering is \
-             capped at {} m/s²); speed between {} and {} m/s. Polarisation φ = {:.2} (1: all head the same way), \
+             capped at {} m/s²); {}. Polarisation φ = {:.2} (1: all head the same way), \
              mean speed {:.2} m/s.",
             self.flock.len(),
             if self.search == Search::Grid {
@@ -467,8 +485,7 @@ impl FlockFigure {
             format_number(radius),
             format_number(steer.length()),
             format_number(self.params.max_force),
-            format_number(self.params.min_speed.min(self.params.max_speed)),
-            format_number(self.params.max_speed),
+            self.speed_range(),
             self.polarisation(),
             self.speed_ratio() * self.params.max_speed,
         )
@@ -647,6 +664,9 @@ pub struct RulesFigure {
     runner: Runner,
 }
 
+/// The longest arrow the rules figure draws, metres (1 m per unit of a steering vector).
+const ARROW_MAX_M: f32 = 2.0;
+
 /// The grid of the rules figure: origin and cells per axis.
 const GRID_ORIGIN: Vec3 = Vec3::new(-2.0, -0.5, -2.0);
 const GRID_EXTENT: f32 = 4.0;
@@ -802,7 +822,14 @@ impl RulesFigure {
                 if i < 0 || k < 0 || i >= dims[0] as i32 || k >= dims[2] as i32 {
                     continue;
                 }
-                let lo = GRID_ORIGIN + Vec3::new(i as f32 * s, 0.0, k as f32 * s);
+                // On the plane y = 0 with the grid lines and the boids (GRID_ORIGIN.y is −0.5:
+                // squares drawn from it sat half a metre below the grid and, in perspective,
+                // looked up to a cell away from the boid near the edges).
+                let lo = Vec3::new(
+                    GRID_ORIGIN.x + i as f32 * s,
+                    0.0,
+                    GRID_ORIGIN.z + k as f32 * s,
+                );
                 let color = if di == 0 && dk == 0 {
                     palette::ORANGE
                 } else {
@@ -857,7 +884,7 @@ impl RulesFigure {
         ];
         let mut tips = Vec::with_capacity(3);
         for &(v, color, name) in &arrows {
-            let tip = self.boid + v.clamp_length_max(2.0) + Vec3::Y * 0.01;
+            let tip = self.boid + v.clamp_length_max(ARROW_MAX_M) + Vec3::Y * 0.01;
             frame.arrow(self.boid + Vec3::Y * 0.01, tip, color, 0.12);
             if v.length() > 1e-4 {
                 tips.push((tip, v, name, color));
@@ -882,6 +909,19 @@ impl RulesFigure {
             dims[0],
             dims[2]
         );
+        // The arrows are drawn 1 m per unit up to ARROW_MAX_M: say which ones are longer, so
+        // that a 6 m separation drawn at 2 m does not read as three times the cohesion.
+        let long: Vec<String> = arrows
+            .iter()
+            .filter(|(v, _, _)| v.length() > ARROW_MAX_M)
+            .map(|(v, _, name)| format!("{name} {}", format_number(v.length())))
+            .collect();
+        if !long.is_empty() {
+            note.push_str(&format!(
+                " Arrows are 1 m per unit, cut at {ARROW_MAX_M} m: {} long.",
+                long.join(", ")
+            ));
+        }
         if self.use_exercise {
             note.push(' ');
             note.push_str(&self.exercise_note());
@@ -910,16 +950,25 @@ impl RulesFigure {
         let cell =
             match run::cell_index(self.runner, self.boid, GRID_ORIGIN, self.cell_size, dims_f) {
                 Err(f) => failure_note("exercise 12.2 cell_index", FILE, &f),
+                // An index is a whole number: "yours 272, reference 240", not "(272.000)", and
+                // the reference's (i, j, k), to see which axis went wrong.
                 Ok(yours) => {
                     let reference = cell_index(self.boid, GRID_ORIGIN, self.cell_size, dims);
-                    compare_note(
-                        "cell_index",
-                        "this boid",
-                        &[yours as f32],
-                        &[reference as f32],
-                        0.0,
-                    )
-                    .1
+                    if yours == reference {
+                        "Your cell_index matches the reference at this boid.".to_string()
+                    } else {
+                        let (nx, ny) = (dims[0] as usize, dims[1] as usize);
+                        format!(
+                            "Your cell_index differs at this boid: yours {yours}, reference \
+                             {reference} (cell i = {}, j = {}, k = {} of {} × {} × {}).",
+                            reference % nx,
+                            reference / nx % ny,
+                            reference / (nx * ny),
+                            dims[0],
+                            dims[1],
+                            dims[2]
+                        )
+                    }
                 }
             };
         format!("{rules} {cell}")
