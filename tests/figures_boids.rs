@@ -603,3 +603,55 @@ fn the_flock_note_says_when_the_min_speed_is_above_the_max() {
         "{note}"
     );
 }
+
+#[test]
+fn the_force_law_plot_shows_what_the_lesson_says_of_the_two_laws() {
+    use inbetween::figures::boids::{law_plot_samples, FLOCK_LAWS, LAW_PLOT_X};
+    let flat = law_plot_samples(1000.0).unwrap();
+    assert_eq!(flat.len(), 3000);
+    let rows: Vec<[f32; 3]> = flat.chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
+    assert_eq!(rows[0][0], LAW_PLOT_X.0);
+    assert!((rows[999][0] - LAW_PLOT_X.1).abs() < 1e-6);
+    // The samples are the laws the flock's dropdown sets.
+    for r in &rows {
+        assert_eq!(r[1], FLOCK_LAWS[1].f(r[0]));
+        assert_eq!(r[2], FLOCK_LAWS[2].f(r[0]));
+    }
+    // Where each crosses zero (repulsion to attraction) and where it pulls hardest, as the text
+    // says: 0.32 m and 1 m/s² at 0.45 m; 0.35 m and about 0.65 m/s² near 0.76 m.
+    let crossing = |k: usize| {
+        let w = rows
+            .windows(2)
+            .find(|w| w[0][k] < 0.0 && w[1][k] >= 0.0)
+            .unwrap();
+        w[0][0]
+    };
+    let peak = |k: usize| {
+        let r = rows.iter().max_by(|a, b| a[k].total_cmp(&b[k])).unwrap();
+        (r[0], r[k])
+    };
+    assert!(
+        (crossing(1) - 0.1f32.sqrt()).abs() < 0.002,
+        "{}",
+        crossing(1)
+    );
+    let (x, f) = peak(1);
+    assert!(
+        (x - 0.2f32.sqrt()).abs() < 0.002 && (f - 1.0).abs() < 1e-3,
+        "{x} {f}"
+    );
+    assert!((crossing(2) - 0.35).abs() < 0.002, "{}", crossing(2));
+    let (x, f) = peak(2);
+    assert!(
+        (x - 0.76).abs() < 0.01 && (f - 0.65).abs() < 0.005,
+        "{x} {f}"
+    );
+    // At contact the Gaussian law pushes with a finite a1 e^(−k) − a2; the other without bound.
+    assert!((FLOCK_LAWS[2].f(0.0) - ((-2.0f32).exp() - 1.0)).abs() < 1e-6);
+    assert!((FLOCK_LAWS[2].f(0.0) + 0.86).abs() < 0.01);
+    assert!(rows[0][1] < -1000.0);
+    // Bad counts are errors, not panics or huge allocations.
+    for bad in [f32::NAN, 1.0, 1e9, -3.0] {
+        assert!(law_plot_samples(bad).is_err(), "{bad}");
+    }
+}

@@ -1,9 +1,17 @@
 // Lesson 12: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/boids/, src/figures/boids.rs). The page only times the calls it makes.
 import { startLesson, markDrawn, Plot, GUI, Timeline, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
-import { BoidRulesScene, FlockScene } from '../../pkg/inbetween.js';
+import { BoidRulesScene, FlockScene, lawPlotSamples } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
+
+// The two distance laws with the flock's constants, sampled in Rust (no canvas needed).
+const lawPlot = new Plot(document.getElementById('law-plot'), {
+  title: 'The force laws f(x) with the flock\'s constants (positive: attraction)',
+  xLabel: 'distance x (m)', yLabel: 'f(x) (m/s²)',
+  series: ['a1/x² − a2/x⁴', 'Gaussian'], colors: [cssVar('--purple'), cssVar('--teal')], yRange: [-1.5, 1.5],
+});
+lawPlot.setData(columns(lawPlotSamples(300), 3));
 
 // Figure 1: one boid's rules and its grid cell.
 const rulesViewer = await lesson.figure('#fig-rules');

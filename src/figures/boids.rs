@@ -35,6 +35,39 @@ pub const STEER_ARROW_MAX_M: f32 = 1.5;
 
 /// What the force-law dropdown offers.
 pub const LAWS: [&str; 3] = ["none", "a1/x² − a2/x⁴", "Gaussian"];
+/// The laws behind [`LAWS`]' names, with the flock's constants.
+pub const FLOCK_LAWS: [ForceLaw; 3] = [
+    ForceLaw::None,
+    ForceLaw::InversePower { a1: 0.4, a2: 0.04 },
+    // a2 = a1: the net law repels within x0 / 2 and attracts most near x0, as the lesson says
+    // (with a2 = 3 a1 it repelled at x0 and barely attracted anywhere).
+    ForceLaw::Gaussian {
+        a1: 1.0,
+        a2: 1.0,
+        k: 2.0,
+        x0: 0.7,
+    },
+];
+
+/// Where the force-law plot starts and ends, metres: the inverse-power law falls to −∞ at
+/// contact, so the plot starts a little away from it; it ends at the law's reach in the flock
+/// (`BoidParams::law_radius`' default).
+pub const LAW_PLOT_X: (f32, f32) = (0.05, 1.5);
+
+/// The force-law plot beside the formulas: `count ∈ [2, 1000]` distances from
+/// [`LAW_PLOT_X`]'s start to its end, each as `[x, f(x) of a1/x² − a2/x⁴, f(x) of the
+/// Gaussian law]` (flat), with the flock's constants ([`FLOCK_LAWS`]). Positive is attraction.
+pub fn law_plot_samples(count: f32) -> Result<Vec<f32>, String> {
+    let n = in_range("samples", count, 2.0, 1000.0)? as usize;
+    let (lo, hi) = LAW_PLOT_X;
+    Ok((0..n)
+        .flat_map(|i| {
+            let x = lo + (hi - lo) * i as f32 / (n - 1) as f32;
+            [x, FLOCK_LAWS[1].f(x), FLOCK_LAWS[2].f(x)]
+        })
+        .collect())
+}
+
 /// What the search dropdown offers.
 pub const SEARCHES: [&str; 2] = ["grid", "naive"];
 
@@ -247,16 +280,7 @@ impl FlockFigure {
     /// One of [`LAWS`].
     pub fn set_law(&mut self, name: &str) -> Result<(), String> {
         self.params.law = match LAWS.iter().position(|&l| l == name) {
-            Some(0) => ForceLaw::None,
-            Some(1) => ForceLaw::InversePower { a1: 0.4, a2: 0.04 },
-            // a2 = a1: the net law repels within x0 / 2 and attracts most near x0, as the
-            // lesson says (with a2 = 3 a1 it repelled at x0 and barely attracted anywhere).
-            Some(2) => ForceLaw::Gaussian {
-                a1: 1.0,
-                a2: 1.0,
-                k: 2.0,
-                x0: 0.7,
-            },
+            Some(k) => FLOCK_LAWS[k],
             _ => return Err(format!("force law: no law named {name:?}")),
         };
         Ok(())

@@ -220,3 +220,10 @@ impl Default for BoidRulesScene {
         Self::new()
     }
 }
+
+/// The force-law plot's samples, `[x, f of a1/x² − a2/x⁴, f of the Gaussian law]` per distance
+/// (see [`crate::figures::boids::law_plot_samples`]; `count ∈ [2, 1000]`).
+#[wasm_bindgen(js_name = lawPlotSamples)]
+pub fn law_plot_samples(count: f32) -> Result<Vec<f32>, JsError> {
+    crate::figures::boids::law_plot_samples(count).map_err(js)
+}
