@@ -192,7 +192,11 @@ if (flockViewer) {
     showNote(note, [rejected, scene.draw(flockViewer)].filter(Boolean).join(' '));
     // Ten times a second, and at once after a jump (a scrub or the loop starts a new flock).
     if (frame % 6 === 0 || Math.abs(time - plotTime) > 0.2) {
-      orderPlot.setData(columns(scene.plotSamples(), 3));
+      // On the GPU there are no samples (they need the flock on the CPU): an empty plot over
+      // the whole loop, not the axes of the CPU run before the switch.
+      orderPlot.setData(onGpu
+        ? [[0, timeline.duration], [null, null], [null, null]]
+        : columns(scene.plotSamples(), 3));
       plotTime = time;
     }
     orderPlot.setCursor(time);

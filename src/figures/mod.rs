@@ -82,8 +82,9 @@ pub fn failure_note(exercise: &str, file: &str, failure: &Failure) -> String {
                 None => format!("panicked: {message}"),
             };
             format!(
-                "Your {exercise} {what}. The figure uses the reference; fix the code, rebuild \
-                 and reload the page."
+                "Your {exercise} {what}. The figure uses the reference until the page reloads: \
+                 fix the code and save (under scripts/serve the page reloads itself after the \
+                 rebuild; otherwise run scripts/build --dev and reload)."
             )
         }
         Failure::Call(message) => {
