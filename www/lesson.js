@@ -19,10 +19,10 @@ GUI.prototype.add = function add(...args) {
   return controller;
 };
 
-/** The sentence for `typed` (the number box's text) entered into `controller`, or '' when it was
- * taken as typed (the box shows it already: the control's value after lil-gui parsed, snapped
- * and clamped it, as the box still shows the typed text while it has the focus). */
-export function typedValueNote(controller, typed) {
+/** What became of `typed` (the number box's text when it was left) in `controller`, whose value
+ * lil-gui has already set from it: '' when it was a number within the range (taken as typed,
+ * snapped to the step at most), else the sentence saying it was kept or clamped. */
+function typedValueNote(controller, typed) {
   const text = typed.trim();
   const value = parseFloat(text);
   const name = controller._name;
