@@ -5,14 +5,32 @@
 //! - with `INBETWEEN_GRADER_EXPECT=stubs` (CI, on the untouched stubs), every exercise reports
 //!   "not yet implemented" (the grader tells a stub from an answer);
 //! - otherwise (a student's build), no exercise may be wrong or panic.
+//!
+//! `INBETWEEN_GRADE_LESSON` (read when the test runs; `scripts/grade LESSON` sets it) grades the
+//! lessons it names only (see `select_lessons`); one that names none fails with a line starting
+//! `grade: ` that lists the lessons.
 // Native only (tests/web_grader.rs is the browser twin); the browser runs tests/transform.rs and tests/web*.rs.
 #![cfg(not(target_arch = "wasm32"))]
 
-use inbetween::exercises::grade::{grade_all, table};
+use inbetween::exercises::grade::{grade_selected, table};
 
 #[test]
 fn grade_exercises() {
-    let reports = grade_all();
+    let selector = std::env::var("INBETWEEN_GRADE_LESSON").unwrap_or_default();
+    let reports = match grade_selected(&selector) {
+        Ok(reports) => reports,
+        Err(message) => {
+            // scripts/grade shows the lines that start with "grade: " and nothing else.
+            println!(
+                "\n{}",
+                message
+                    .lines()
+                    .map(|l| format!("grade: {l}\n"))
+                    .collect::<String>()
+            );
+            panic!("{message}");
+        }
+    };
     println!("\n{}", table(&reports));
     assert!(!reports.is_empty());
     if cfg!(feature = "solutions") {
@@ -33,6 +51,127 @@ fn grade_exercises() {
     }
 }
 
+mod lessons {
+    use inbetween::exercises::grade::{grade_all, select_lessons, LESSONS};
+
+    fn ids(selector: &str) -> Vec<&'static str> {
+        select_lessons(selector)
+            .unwrap_or_else(|e| panic!("{selector:?}: {e}"))
+            .iter()
+            .map(|l| l.id)
+            .collect()
+    }
+
+    #[test]
+    fn a_lesson_is_named_by_its_number_name_or_file() {
+        assert_eq!(ids("03"), ["03-rotations"]);
+        assert_eq!(ids("3"), ["03-rotations"]);
+        assert_eq!(ids(" 03-rotations "), ["03-rotations"]);
+        // rotations.rs holds lessons 03 and 04: the lesson's own name wins over the file's.
+        assert_eq!(ids("rotations"), ["03-rotations"]);
+        assert_eq!(ids("Rigid"), ["04-rigid-motions"]);
+        assert_eq!(ids("rigid-motions"), ["04-rigid-motions"]);
+        assert_eq!(ids("curves"), ["02-keyframes"]);
+        assert_eq!(ids("02"), ["02-keyframes"]);
+        assert_eq!(ids("2b"), ["02b-expressive-animation"]);
+        assert_eq!(ids("expressive"), ["02b-expressive-animation"]);
+        assert_eq!(ids("ik"), ["07-inverse-kinematics"]);
+        assert_eq!(ids("blend_shapes"), ["10-blend-shapes"]);
+        assert_eq!(ids("skeleton"), ["06-skeletons"]);
+        assert_eq!(ids("").len(), LESSONS.len());
+    }
+
+    #[test]
+    fn an_unknown_lesson_gets_the_list_of_lessons() {
+        for selector in ["08", "blending", "99", "xx", "r"] {
+            let Err(message) = select_lessons(selector) else {
+                panic!("{selector:?} selected something");
+            };
+            assert!(message.contains(&format!("\"{selector}\"")), "{message}");
+            for lesson in LESSONS {
+                assert!(
+                    message.contains(lesson.id) && message.contains(&format!("{}.rs", lesson.file)),
+                    "{message}"
+                );
+            }
+        }
+    }
+
+    /// Every lesson draws its inputs from a generator of its own, so grading one lesson alone
+    /// gives exactly the rows (cases, verdicts) of the whole table; and each row names the lesson
+    /// it is registered under.
+    #[test]
+    fn a_lesson_graded_alone_gives_its_rows_of_the_whole_table() {
+        let all = grade_all();
+        let mut seen = 0;
+        for lesson in LESSONS {
+            let alone = lesson.grade();
+            assert!(!alone.is_empty(), "{} grades nothing", lesson.id);
+            assert!(alone.iter().all(|r| r.lesson == lesson.id), "{}", lesson.id);
+            let rows: Vec<_> = all
+                .iter()
+                .filter(|r| r.lesson == lesson.id)
+                .cloned()
+                .collect();
+            assert_eq!(alone, rows, "{}", lesson.id);
+            seen += rows.len();
+        }
+        assert_eq!(seen, all.len(), "a row whose lesson is not registered");
+    }
+
+    /// The names a report gives the inputs are the exercise's own parameter names, in order,
+    /// leaving out only output slices (`&mut`) that the grader fills.
+    #[test]
+    fn inputs_are_named_as_in_the_exercise_signature() {
+        for lesson in LESSONS {
+            let path = format!(
+                "{}/src/exercises/{}.rs",
+                env!("CARGO_MANIFEST_DIR"),
+                lesson.file
+            );
+            let source = std::fs::read_to_string(&path).unwrap();
+            for report in lesson.grade() {
+                let start = format!("pub fn {}(", report.exercise);
+                let at = source
+                    .find(&start)
+                    .unwrap_or_else(|| panic!("{path}: no `{start}`"))
+                    + start.len();
+                let end = at
+                    + source[at..]
+                        .find(") -> Answer")
+                        .expect("an exercise returns Answer");
+                let params: Vec<(&str, &str)> = source[at..end]
+                    .split(',')
+                    .filter(|p| !p.trim().is_empty())
+                    .map(|p| {
+                        let (name, ty) = p.split_once(':').expect("name: type");
+                        (name.trim(), ty.trim())
+                    })
+                    .collect();
+                let mut args = report.args.iter().peekable();
+                for (name, ty) in &params {
+                    if args.peek() == Some(&name) {
+                        args.next();
+                    } else {
+                        assert!(
+                            ty.starts_with("&mut"),
+                            "{}: input `{name}` is not named in the grader ({:?})",
+                            report.exercise,
+                            report.args
+                        );
+                    }
+                }
+                assert!(
+                    args.next().is_none(),
+                    "{}: the grader names {:?}, the signature has {params:?}",
+                    report.exercise,
+                    report.args
+                );
+            }
+        }
+    }
+}
+
 mod the_grader_itself {
     use inbetween::exercises::grade::{check, Status};
     use inbetween::exercises::NotDone;
@@ -42,6 +181,7 @@ mod the_grader_itself {
         let report = check(
             "l",
             "e",
+            ["x"],
             &[1, 2, 3],
             |&x| Ok(if x == 2 { 0 } else { x }),
             |&x| x,
@@ -52,11 +192,45 @@ mod the_grader_itself {
             Status::Wrong {
                 case: 2,
                 what: "random input".into(),
-                input: "2".into(),
+                input: vec![("x", "2".into())],
                 expected: "2".into(),
                 actual: "0".into()
             }
         );
+    }
+
+    #[test]
+    fn names_each_input() {
+        let report = check(
+            "l",
+            "e",
+            ["root", "k"],
+            &[(glam::Vec3::new(1.0, 2.0, 3.0), 0.5f32)],
+            |_| Ok(0),
+            |_| 1,
+            |a, b| a == b,
+        );
+        let shown = report.status.to_string();
+        assert!(
+            shown.contains("\n      input:    root = Vec3(1.0, 2.0, 3.0), k = 0.5\n"),
+            "{shown}"
+        );
+        // Inputs too long for one line go one per line, each under the first.
+        let long = vec![0.25f32; 12];
+        let report = check(
+            "l",
+            "e",
+            ["times", "t"],
+            &[(long.clone(), 2.0f32)],
+            |_| Ok(0),
+            |_| 1,
+            |a, b| a == b,
+        );
+        let shown = report.status.to_string();
+        let expected = format!(
+            "\n      input:    times = {long:?}\n                t = 2.0\n      expected: 1\n"
+        );
+        assert!(shown.contains(&expected), "{shown}");
     }
 
     #[test]
@@ -65,6 +239,7 @@ mod the_grader_itself {
         let report = check_cases(
             "l",
             "e",
+            ["x"],
             &[("positive", 1), ("zero: the edge", 0)],
             |&x| Ok(x.max(1)),
             |&x| x,
@@ -82,13 +257,14 @@ mod the_grader_itself {
         let report = check(
             "l",
             "e",
+            ["x"],
             &[1],
             |_| Err::<i32, _>(NotDone),
             |&x| x,
             |a, b| a == b,
         );
         assert_eq!(report.status, Status::NotDone);
-        let report = check("l", "e", &[1, 5], |&x| Ok(x), |&x| x, |a, b| a == b);
+        let report = check("l", "e", ["x"], &[1, 5], |&x| Ok(x), |&x| x, |a, b| a == b);
         assert_eq!(report.status, Status::Passed { cases: 2 });
     }
 
@@ -104,6 +280,7 @@ mod the_grader_itself {
         let report = check(
             "l",
             "e",
+            ["i"],
             &[0usize],
             |&i| Ok(out_of_range(&[1], i)),
             |_| 1,
@@ -184,6 +361,7 @@ mod the_grader_itself {
             let report = check(
                 "l",
                 "e",
+                ["i"],
                 &[0usize],
                 |&i| Ok(out_of_range(&[1], i)),
                 |_| 1,

@@ -61,6 +61,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     vec![check_cases(
         "10-blend-shapes",
         "differential_vertex",
+        ["base", "targets", "weights"],
         &cases,
         |(b, t, w)| differential_vertex(*b, t, w),
         |(b, t, w)| crate::blend_shapes::differential_vertex(*b, t, w),

@@ -98,6 +98,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let rules = check_cases(
         L,
         "three_rules",
+        ["p", "v", "positions", "velocities"],
         &cases,
         |(p, v, ps, vs)| three_rules(*p, *v, ps, vs),
         |(p, v, ps, vs)| boids::three_rules(*p, *v, ps, vs),
@@ -159,6 +160,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let cell = check_cases(
         L,
         "cell_index",
+        ["p", "origin", "cell_size", "dims"],
         &cells,
         |&(p, o, s, d)| cell_index(p, o, s, d),
         |&(p, o, s, d)| boids::cell_index(p, o, s, d),

@@ -166,6 +166,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let force = check_cases(
         L,
         "spring_force",
+        ["pa", "pb", "va", "vb", "k", "c", "rest"],
         &springs,
         |&(pa, pb, va, vb, k, c, r)| spring_force(pa, pb, va, vb, k, c, r),
         |&(pa, pb, va, vb, k, c, r)| cloth::spring_force(pa, pb, va, vb, k, c, r),
@@ -203,6 +204,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let step = check_cases(
         L,
         "cloth_euler_step",
+        ["p", "v", "f", "w", "dt"],
         &steps,
         |&(p, v, f, w, dt)| cloth_euler_step(p, v, f, w, dt),
         |&(p, v, f, w, dt)| reference_step(p, v, f, w, dt),
@@ -252,6 +254,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let project = check_cases(
         L,
         "project_distance",
+        ["pa", "pb", "wa", "wb", "rest", "alpha", "dt"],
         &projects,
         |&(pa, pb, wa, wb, r, a, dt)| project_distance(pa, pb, wa, wb, r, a, dt),
         |&(pa, pb, wa, wb, r, a, dt)| reference_project(pa, pb, wa, wb, r, a, dt),

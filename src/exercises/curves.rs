@@ -114,6 +114,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let basis = check_cases(
         LESSON,
         "hermite_basis",
+        ["s"],
         &params,
         |&s| hermite_basis(s),
         |&s| crate::curves::hermite_basis(s),
@@ -170,6 +171,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let tangents = check_cases(
         LESSON,
         "cardinal_tangents",
+        ["times", "values", "mu"],
         &cases,
         |(times, values, mu)| {
             let mut out = vec![f32::NAN; times.len()];
@@ -232,6 +234,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let segment = check_cases(
         LESSON,
         "find_segment",
+        ["times", "t"],
         &lookups,
         |(times, t)| find_segment(times, *t),
         |(times, t)| crate::curves::find_segment(times, *t),
@@ -286,6 +289,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let invert = check_cases(
         LESSON,
         "arc_length_invert",
+        ["params", "lengths", "s"],
         &tables,
         |(params, lengths, s)| arc_length_invert(params, lengths, *s),
         |(params, lengths, s)| crate::curves::arc_length_invert(params, lengths, *s),

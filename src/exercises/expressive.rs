@@ -72,6 +72,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let scale = check_cases(
         L,
         "squash_stretch_scale",
+        ["s"],
         &scales,
         |&s| squash_stretch_scale(s),
         |&s| expressive::squash_stretch_scale(s),
@@ -124,6 +125,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let spring = check_cases(
         L,
         "spring_step",
+        ["x", "v", "target", "k", "c", "dt"],
         &springs,
         |&(x, v, t, k, c, dt)| spring_step(x, v, t, k, c, dt),
         |&(x, v, t, k, c, dt)| expressive::spring_step(x, v, t, k, c, dt),

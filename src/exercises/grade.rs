@@ -21,7 +21,8 @@ pub enum Status {
         case: usize,
         /// What the case is meant to test ("keys with a·b < 0: the short arc").
         what: String,
-        input: String,
+        /// The case's arguments, each with the exercise's name for it: `("t", "0.5")`.
+        input: Vec<(&'static str, String)>,
         expected: String,
         actual: String,
     },
@@ -30,7 +31,7 @@ pub enum Status {
         /// The case's number, counting from 1.
         case: usize,
         what: String,
-        input: String,
+        input: Vec<(&'static str, String)>,
         message: String,
         /// Where it panicked, `file:line:column` (as the browser's report gives it).
         location: Option<String>,
@@ -42,6 +43,9 @@ pub enum Status {
 pub struct Report {
     pub lesson: &'static str,
     pub exercise: &'static str,
+    /// The names of the exercise's arguments, in the order of its signature (inputs only: an
+    /// output slice the exercise fills is not an argument of a case).
+    pub args: Vec<&'static str>,
     pub status: Status,
 }
 
@@ -54,34 +58,195 @@ impl Report {
     }
 }
 
+/// Where the grader's inputs come from: each lesson's generator starts from this seed mixed with
+/// the lesson's id, so a lesson graded alone meets the very cases it meets in the whole table.
+const SEED: u64 = 0x1b_e7_7e_e2;
+
+/// A lesson's exercises: the lesson's id (its folder under `lessons/`), the exercise file that
+/// holds them (`src/exercises/<file>.rs`) and the function that grades them.
+pub struct Lesson {
+    pub id: &'static str,
+    pub file: &'static str,
+    grade: fn(&mut Rng) -> Vec<Report>,
+}
+
+/// Every lesson with exercises, in course order. A new exercise file registers its lesson here.
+pub const LESSONS: &[Lesson] = &[
+    lesson("00-triangles-to-pixels", "raster", super::raster::grade),
+    lesson("01-transforms", "transforms", super::transforms::grade),
+    lesson("02-keyframes", "curves", super::curves::grade),
+    lesson(
+        "02b-expressive-animation",
+        "expressive",
+        super::expressive::grade,
+    ),
+    lesson(
+        "03-rotations",
+        "rotations",
+        super::rotations::grade_rotations,
+    ),
+    lesson(
+        "04-rigid-motions",
+        "rotations",
+        super::rotations::grade_rigid_motions,
+    ),
+    lesson("05-noise", "noise", super::noise::grade),
+    lesson("06-skeletons", "skeleton", super::skeleton::grade),
+    lesson("07-inverse-kinematics", "ik", super::ik::grade),
+    lesson("09-skinning", "skinning", super::skinning::grade),
+    lesson(
+        "10-blend-shapes",
+        "blend_shapes",
+        super::blend_shapes::grade,
+    ),
+    lesson("11-particles", "particles", super::particles::grade),
+    lesson("12-boids", "boids", super::boids::grade),
+    lesson("13-cloth", "cloth", super::cloth::grade),
+];
+
+const fn lesson(
+    id: &'static str,
+    file: &'static str,
+    grade: fn(&mut Rng) -> Vec<Report>,
+) -> Lesson {
+    Lesson { id, file, grade }
+}
+
+impl Lesson {
+    /// Grades this lesson's exercises, with its own generator (see [`SEED`]).
+    pub fn grade(&self) -> Vec<Report> {
+        // FNV-1a of the id: a fixed, platform-independent hash (std's hasher may change).
+        let hash = self.id.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+            (h ^ b as u64).wrapping_mul(0x0100_0000_01b3)
+        });
+        (self.grade)(&mut Rng::new(SEED ^ hash))
+    }
+
+    /// The number before the first `-` ("02b"), and the name after it ("expressive-animation").
+    fn number_and_name(&self) -> (&'static str, &'static str) {
+        self.id.split_once('-').unwrap_or((self.id, ""))
+    }
+}
+
 /// Grades every exercise of every lesson.
 pub fn grade_all() -> Vec<Report> {
-    let mut rng = Rng::new(0x1b_e7_7e_e2);
-    let mut reports = Vec::new();
-    reports.extend(super::raster::grade(&mut rng));
-    reports.extend(super::transforms::grade(&mut rng));
-    reports.extend(super::curves::grade(&mut rng));
-    reports.extend(super::expressive::grade(&mut rng));
-    reports.extend(super::rotations::grade(&mut rng));
-    reports.extend(super::noise::grade(&mut rng));
-    reports.extend(super::skeleton::grade(&mut rng));
-    reports.extend(super::ik::grade(&mut rng));
-    reports.extend(super::skinning::grade(&mut rng));
-    reports.extend(super::blend_shapes::grade(&mut rng));
-    reports.extend(super::particles::grade(&mut rng));
-    reports.extend(super::boids::grade(&mut rng));
-    reports.extend(super::cloth::grade(&mut rng));
-    reports
+    LESSONS.iter().flat_map(Lesson::grade).collect()
+}
+
+/// The lessons that `selector` names, for `scripts/grade LESSON`. A selector is a lesson's id
+/// (`03-rotations`), its number (`03`, `3`, `2b`), its name (`rotations`), an exercise file's
+/// name (`curves`: every lesson in that file) or the start of a name, at least three letters long
+/// (`rigid`). The first of these kinds that matches anything decides, so `rotations` is lesson 03
+/// alone although `rotations.rs` also holds lesson 04's exercises. An empty or blank selector
+/// selects every lesson. A selector that matches nothing gets a message listing the lessons.
+pub fn select_lessons(selector: &str) -> Result<Vec<&'static Lesson>, String> {
+    let wanted = selector.trim().to_lowercase();
+    if wanted.is_empty() {
+        return Ok(LESSONS.iter().collect());
+    }
+    let number = |l: &Lesson| {
+        let (n, _) = l.number_and_name();
+        n == wanted || n.trim_start_matches('0') == wanted.trim_start_matches('0')
+    };
+    let kinds: [&dyn Fn(&Lesson) -> bool; 4] = [
+        &|l| l.id == wanted || number(l) || l.number_and_name().1 == wanted,
+        &|l| l.file == wanted,
+        &|l| wanted.chars().count() >= 3 && l.number_and_name().1.starts_with(&wanted),
+        &|l| wanted.chars().count() >= 3 && l.file.starts_with(&wanted),
+    ];
+    for matches in kinds {
+        let found: Vec<&Lesson> = LESSONS.iter().filter(|l| matches(l)).collect();
+        if !found.is_empty() {
+            return Ok(found);
+        }
+    }
+    let list: Vec<String> = LESSONS
+        .iter()
+        .map(|l| format!("  {:<26} (src/exercises/{}.rs)", l.id, l.file))
+        .collect();
+    Err(format!(
+        "no lesson with exercises matches \"{}\". Name one by its number, its name or its \
+         exercise file, e.g. `scripts/grade 03` or `scripts/grade rotations`; the lessons with \
+         exercises are:\n{}",
+        selector.trim(),
+        list.join("\n")
+    ))
+}
+
+/// Grades the lessons that `selector` names (see [`select_lessons`]).
+pub fn grade_selected(selector: &str) -> Result<Vec<Report>, String> {
+    Ok(select_lessons(selector)?
+        .into_iter()
+        .flat_map(Lesson::grade)
+        .collect())
 }
 
 /// What a case of random inputs is said to test.
 pub const RANDOM: &str = "random input";
 
+/// A case's input split into the exercise's arguments, so that a report can name each one
+/// (`x = Vec3(…), k = 50.0`). Implemented for tuples of up to eight arguments and for the
+/// single values that exercises take alone; `N` is the number of arguments, so a list of names of
+/// another length does not compile.
+pub trait Args<const N: usize> {
+    /// Each argument as `{:?}` shows it.
+    fn shown(&self) -> [String; N];
+}
+
+macro_rules! tuple_args {
+    ($n:literal: $($t:ident $i:tt),+) => {
+        impl<$($t: Debug),+> Args<$n> for ($($t,)+) {
+            fn shown(&self) -> [String; $n] {
+                [$(format!("{:?}", self.$i)),+]
+            }
+        }
+    };
+}
+tuple_args!(1: A 0);
+tuple_args!(2: A 0, B 1);
+tuple_args!(3: A 0, B 1, C 2);
+tuple_args!(4: A 0, B 1, C 2, D 3);
+tuple_args!(5: A 0, B 1, C 2, D 3, E 4);
+tuple_args!(6: A 0, B 1, C 2, D 3, E 4, F 5);
+tuple_args!(7: A 0, B 1, C 2, D 3, E 4, F 5, G 6);
+tuple_args!(8: A 0, B 1, C 2, D 3, E 4, F 5, G 6, H 7);
+
+macro_rules! single_args {
+    ($($t:ty),+) => {
+        $(impl Args<1> for $t {
+            fn shown(&self) -> [String; 1] {
+                [format!("{self:?}")]
+            }
+        })+
+    };
+}
+single_args!(
+    f32,
+    i32,
+    u32,
+    usize,
+    glam::Vec2,
+    glam::Vec3,
+    glam::Quat,
+    glam::Mat3,
+    Mat4
+);
+
+/// Pairs each argument with its name.
+fn named<I: Args<N>, const N: usize>(
+    names: [&'static str; N],
+    input: &I,
+) -> Vec<(&'static str, String)> {
+    names.into_iter().zip(input.shown()).collect()
+}
+
 /// Runs `student` and `reference` on each input; the first disagreement (by `close`) fails.
-/// Every case counts as [`RANDOM`]; [`check_cases`] says what each edge case tests.
-pub fn check<I: Debug, O: Debug>(
+/// `args` names the exercise's arguments, in the order of the input tuple. Every case counts as
+/// [`RANDOM`]; [`check_cases`] says what each edge case tests.
+pub fn check<I: Args<N>, O: Debug, const N: usize>(
     lesson: &'static str,
     exercise: &'static str,
+    args: [&'static str; N],
     inputs: &[I],
     student: impl Fn(&I) -> Answer<O>,
     reference: impl Fn(&I) -> O,
@@ -91,6 +256,7 @@ pub fn check<I: Debug, O: Debug>(
     check_cases(
         lesson,
         exercise,
+        args,
         &cases,
         |i| student(i),
         |i| reference(i),
@@ -98,11 +264,19 @@ pub fn check<I: Debug, O: Debug>(
     )
 }
 
+/// References to arguments show as the arguments (so [`check`] can pass its inputs by reference).
+impl<I: Args<N>, const N: usize> Args<N> for &I {
+    fn shown(&self) -> [String; N] {
+        (*self).shown()
+    }
+}
+
 /// Like [`check`], with each input paired with what it tests, e.g.
 /// `("keys with a·b < 0: the short arc", input)`, so that a wrong answer says what it got wrong.
-pub fn check_cases<I: Debug, O: Debug>(
+pub fn check_cases<I: Args<N>, O: Debug, const N: usize>(
     lesson: &'static str,
     exercise: &'static str,
+    args: [&'static str; N],
     cases: &[(&str, I)],
     student: impl Fn(&I) -> Answer<O>,
     reference: impl Fn(&I) -> O,
@@ -118,7 +292,7 @@ pub fn check_cases<I: Debug, O: Debug>(
                     return Status::Panicked {
                         case,
                         what: what.to_string(),
-                        input: format!("{input:?}"),
+                        input: named(args, input),
                         message,
                         location,
                     };
@@ -132,7 +306,7 @@ pub fn check_cases<I: Debug, O: Debug>(
                 return Status::Wrong {
                     case,
                     what: what.to_string(),
-                    input: format!("{input:?}"),
+                    input: named(args, input),
                     expected: format!("{expected:?}"),
                     actual: format!("{actual:?}"),
                 };
@@ -143,6 +317,7 @@ pub fn check_cases<I: Debug, O: Debug>(
     Report {
         lesson,
         exercise,
+        args: args.to_vec(),
         status,
     }
 }
@@ -277,13 +452,30 @@ impl fmt::Display for Status {
             Status::NotDone => write!(f, "not yet implemented"),
             Status::Wrong { case, what, input, expected, actual } => write!(
                 f,
-                "WRONG at case {case} ({what})\n      input:    {input}\n      expected: {expected}\n      actual:   {actual}"
+                "WRONG at case {case} ({what})\n      input:    {}\n      expected: {expected}\n      actual:   {actual}",
+                show_input(input)
             ),
             Status::Panicked { case, what, input, message, location } => write!(
                 f,
-                "PANICKED at case {case} ({what}): {message}{}\n      input: {input}",
-                location.as_ref().map_or(String::new(), |at| format!(" ({at})"))
+                "PANICKED at case {case} ({what}): {message}{}\n      input:    {}",
+                location.as_ref().map_or(String::new(), |at| format!(" ({at})")),
+                show_input(input)
             ),
         }
+    }
+}
+
+/// A case's arguments as `name = value`, on one line when they fit in about a terminal's width,
+/// otherwise one per line, each under the first.
+fn show_input(input: &[(&str, String)]) -> String {
+    let parts: Vec<String> = input
+        .iter()
+        .map(|(name, value)| format!("{name} = {value}"))
+        .collect();
+    let one_line = parts.join(", ");
+    if one_line.chars().count() <= 80 {
+        one_line
+    } else {
+        parts.join(&format!("\n{:16}", ""))
     }
 }

@@ -142,6 +142,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let two = check_cases(
         LESSON,
         "two_joint",
+        ["root", "middle", "end", "target", "pole"],
         &cases,
         |&(r, m, e, t, p)| two_joint(r, m, e, t, p),
         |&(r, m, e, t, p)| reference_two_joint(r, m, e, t, p),
@@ -187,6 +188,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let sweep = check_cases(
         LESSON,
         "ccd_iteration",
+        ["chain", "target"],
         &cases,
         |(chain, target)| {
             let mut c = chain.clone();

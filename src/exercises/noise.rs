@@ -101,6 +101,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let fade_report = check_cases(
         L05,
         "fade",
+        ["t"],
         &ts,
         |&t| fade(t),
         |&t| [crate::noise::fade(t), crate::noise::fade_derivative(t)],
@@ -154,6 +155,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let cell_report = check_cases(
         L05,
         "perlin_cell",
+        ["p", "g00", "g10", "g01", "g11"],
         &cells,
         |&(p, a, b, c, d)| perlin_cell(p, a, b, c, d),
         |&(p, a, b, c, d)| crate::noise::cell2(p, [a, b, c, d]),
@@ -192,6 +194,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let sum_report = check_cases(
         L05,
         "fractal_sum",
+        ["p", "n", "alpha", "omega"],
         &sums,
         |&(p, n, a, w)| fractal_sum(p, n, a, w),
         |&(p, n, a, w)| {
@@ -233,6 +236,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let normal_report = check_cases(
         L05,
         "terrain_normal",
+        ["h", "s", "grad_g"],
         &normals,
         |&(h, s, g)| terrain_normal(h, s, g),
         |&(h, s, g)| crate::terrain::terrain_normal(h, s, g),

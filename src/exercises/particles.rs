@@ -101,6 +101,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let toi = check_cases(
         L,
         "time_of_impact",
+        ["y0", "vy", "gy", "floor_y"],
         &drops,
         |&(y, v, g, f)| time_of_impact(y, v, g, f),
         |&(y, v, g, f)| reference_time_of_impact(y, v, g, f),
@@ -143,6 +144,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let step = check_cases(
         L,
         "semi_implicit_euler_step",
+        ["p", "v", "a", "dt"],
         &steps,
         |&(p, v, a, dt)| semi_implicit_euler_step(p, v, a, dt),
         |&(p, v, a, dt)| reference_semi_implicit(p, v, a, dt),

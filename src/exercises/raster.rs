@@ -154,6 +154,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let perspective = check_cases(
         L00,
         "perspective_matrix",
+        ["fov_y_rad", "aspect", "near", "far"],
         &frusta,
         |&(fov, a, n, f)| perspective_matrix(fov, a, n, f),
         |&(fov, a, n, f)| raster::perspective_wgpu(fov, a, n, f).unwrap_or(Mat4::NAN),
@@ -214,6 +215,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let normals = check_cases(
         L00,
         "vertex_normals",
+        ["positions", "indices"],
         &meshes,
         |(p, i)| vertex_normals(p, i),
         |(p, i)| {
@@ -292,6 +294,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let shading = check_cases(
         L00,
         "blinn_phong",
+        ["n", "l", "v", "color", "weights", "shininess"],
         &fragments,
         |&(n, l, v, c, w, s)| blinn_phong(n, l, v, c, w, s),
         |&(n, l, v, c, w, s)| raster::blinn_phong(n, l, v, &material(c, w, s)),

@@ -234,6 +234,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let l2m = check_cases(
         LESSON,
         "local_to_model",
+        ["parents", "translations", "rotations", "scales"],
         &cases,
         |(p, t, r, s)| {
             let mut model = vec![Mat4::ZERO; p.len()];
@@ -313,6 +314,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let sample = check_cases(
         LESSON,
         "sample_rotation_slerp",
+        ["times", "keys", "time_sec"],
         &cases,
         |(times, keys, t)| sample_rotation_slerp(times, keys, *t),
         |(times, keys, t)| {
@@ -358,6 +360,13 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let blend = check_cases(
         LESSON,
         "crossfade_joint",
+        [
+            "translation_a",
+            "rotation_a",
+            "translation_b",
+            "rotation_b",
+            "w",
+        ],
         &cases,
         |&(ta, qa, tb, qb, w)| crossfade_joint(ta, qa, tb, qb, w),
         |&(ta, qa, tb, qb, w)| reference_crossfade_joint(ta, qa, tb, qb, w),

@@ -109,6 +109,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let lbs = check_cases(
         LESSON,
         "lbs_vertex",
+        ["matrices", "weights", "position"],
         &cases,
         |(m, w, p)| lbs_vertex(m, w, *p),
         |(m, w, p)| crate::skinning::lbs_vertex(m, w, *p),
@@ -161,6 +162,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let blend = check_cases(
         LESSON,
         "blend_dual_quats",
+        ["dual_quats", "weights"],
         &cases,
         |(q, w)| blend_dual_quats(q, w),
         |(q, w)| crate::skinning::blend_dual_quats(q, w),

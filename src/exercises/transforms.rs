@@ -82,6 +82,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let local = check_cases(
         LESSON,
         "local_matrix",
+        ["translation", "euler_xyz_rad"],
         &inputs,
         |&(t, a)| local_matrix(t, a),
         |&(t, a)| crate::transform::local_matrix(t, a),
@@ -128,6 +129,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     let world = check_cases(
         LESSON,
         "world_matrices",
+        ["parents", "local"],
         &cases,
         |(parents, local)| {
             let mut world = vec![Mat4::ZERO; local.len()];
