@@ -47,9 +47,30 @@ fn noise1d_blends_the_two_ramps_at_the_probe() {
     assert!(s.set_probe(9.0).unwrap_err().contains("x"));
     assert!(s.set_seed(1.5).unwrap_err().contains("seed"));
     let fade = s.sample_fade(11).unwrap();
-    assert_eq!(fade[0], [0.0, 0.0, 0.0, 0.0]);
+    // [t, fade, fade′, 3t² − 2t³, fade″, (3t² − 2t³)″]: the curvature plot's ends.
+    assert_eq!(fade[0], [0.0, 0.0, 0.0, 0.0, 0.0, 6.0]);
     assert_eq!(fade[10][1], 1.0);
+    assert_eq!((fade[10][4], fade[10][5]), (0.0, -6.0));
     assert!(s.sample_fade(1).is_err());
+}
+
+#[test]
+fn noise1d_probe_follows_one_ramp_next_to_an_integer() {
+    // The caption's Try this: just right of 3 the pink dot sits on the orange ramp g₀·t of
+    // integer 3, just left of it on the teal ramp g₁·(t − 1) of the same integer.
+    let mut s = Noise1d::new();
+    let pink_and = |s: &Noise1d, ramp: Vec3| {
+        let mut f = Frame::default();
+        s.draw(&mut f);
+        let at = |c: Vec3| f.points.iter().find(|p| p.color[..3] == c.to_array()).map(|p| Vec3::from(p.center)).unwrap();
+        (at(palette::PINK), at(ramp))
+    };
+    s.set_probe(3.02).unwrap();
+    let (pink, orange) = pink_and(&s, palette::ORANGE);
+    assert!((pink - orange).length() < 1e-3, "{pink} vs {orange}");
+    s.set_probe(2.98).unwrap();
+    let (pink, teal) = pink_and(&s, palette::TEAL);
+    assert!((pink - teal).length() < 1e-3, "{pink} vs {teal}");
 }
 
 #[test]
@@ -64,6 +85,20 @@ fn noise1d_reports_the_students_fade() {
     }
     s.set_runner(wrong);
     assert!(s.draw(&mut f).contains("differs at t = "));
+    // A fade that is right except for its slope at the ends: the probe (t = 0.35) cannot tell,
+    // the other inputs tried can.
+    fn slope_wrong_at_ends(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        let mut v = direct(name, args)?;
+        if name == "fade" && (args[0] == 0.0 || args[0] == 1.0) {
+            v[1] = 1.0;
+        }
+        Ok(v)
+    }
+    s.set_runner(slope_wrong_at_ends);
+    let n = s.draw(&mut f);
+    if cfg!(feature = "solutions") {
+        assert!(n.contains("differs at t = 0.000") && n.contains("2 of the 6 inputs") && n.contains("Also at t = 1.000"), "{n}");
+    }
     s.set_runner(panics);
     let n = s.draw(&mut f);
     assert!(
@@ -73,29 +108,121 @@ fn noise1d_reports_the_students_fade() {
 }
 
 #[test]
-fn noise2d_is_zero_at_the_dots_only_on_the_z0_slice() {
+fn noise2d_is_zero_at_the_dots_only_on_integer_slices() {
+    let mut s = Noise2d::new();
+    s.take_dirty();
+    // Vertex 32 (x + 2) of each row and column lies over lattice point x (s = 2, 129 vertices).
+    let dot_heights = |s: &Noise2d| -> Vec<f32> {
+        let t = &s.terrains()[0];
+        let r = t.resolution();
+        let mut h = Vec::new();
+        for j in -2..=2 {
+            for i in -2..=2 {
+                h.push(t.positions[(32 * (j + 2)) as usize * r + (32 * (i + 2)) as usize].y);
+            }
+        }
+        h
+    };
+    assert!(dot_heights(&s).iter().all(|&y| y == 0.0));
+    let mut f = Frame::default();
+    assert!(s.draw(&mut f, MeshId(3)).contains("0 at every dot"));
+    // Between layers the dots lift off, by the value the note's formula gives.
+    s.set_z(0.37).unwrap();
+    assert!(s.take_dirty(), "changing z regenerates");
+    assert!(!s.take_dirty(), "once");
+    let perm = inbetween::noise::Permutation::perlin();
+    let heights = dot_heights(&s);
+    assert!(heights.iter().filter(|&&y| y.abs() > 1e-3).count() >= 10, "{heights:?}");
+    for j in -2..=2 {
+        for i in -2..=2 {
+            let (value, slope) = s.dot_value_and_slope(i, j);
+            let (x, y) = (i as f32, j as f32);
+            assert!((value - perm.noise3(x, y, 0.37)).abs() < 1e-6);
+            // The arrow is the surface's slope at the dot (central differences of the slice).
+            let e = 1e-3;
+            let dx = (perm.noise3(x + e, y, 0.37) - perm.noise3(x - e, y, 0.37)) / (2.0 * e);
+            let dy = (perm.noise3(x, y + e, 0.37) - perm.noise3(x, y - e, 0.37)) / (2.0 * e);
+            assert!((slope - glam::Vec2::new(dx, dy)).length() < 2e-3, "{slope} vs ({dx}, {dy})");
+        }
+    }
+    f.clear();
+    let note = s.draw(&mut f, MeshId(3));
+    assert!(note.contains("slice z = 0.370") && note.contains("no longer 0 at the dots"), "{note}");
+    // One arrow (cone) per lattice point; black sticks from the plane up to the lifted dots.
+    assert_eq!(f.meshes.iter().filter(|m| m.mesh == MeshId::CONE).count(), 25);
+    assert!(f.segments_of(palette::KEY).count() >= 10);
+    // At z = 1 and z = 2 the slice holds a layer of lattice points: 0 at every dot again, with
+    // that layer's gradients, which differ from layer 0's.
+    for z in [1.0, 2.0] {
+        s.set_z(z).unwrap();
+        s.take_dirty();
+        assert!(dot_heights(&s).iter().all(|&y| y.abs() < 1e-6), "z = {z}");
+        f.clear();
+        let note = s.draw(&mut f, MeshId(3));
+        assert!(note.contains("0 at every dot again"), "{note}");
+        assert!(!note.contains("no longer"), "{note}");
+        assert_eq!(f.segments_of(palette::KEY).count(), 0, "no sticks");
+    }
+    s.set_z(1.0).unwrap();
+    let layer1: Vec<_> = (-2..=2).map(|i| s.dot_value_and_slope(i, 0).1).collect();
+    s.set_z(0.0).unwrap();
+    let layer0: Vec<_> = (-2..=2).map(|i| s.dot_value_and_slope(i, 0).1).collect();
+    assert_ne!(layer0, layer1);
+    assert!(s.set_probe(2.5, 0.0).unwrap_err().contains("probe x"));
+}
+
+#[test]
+fn noise2d_colours_show_the_sign() {
     let mut s = Noise2d::new();
     s.take_dirty();
     let t = &s.terrains()[0];
-    // Vertex (64, 64) is u = v = 0, noise coordinates (0, 0): a lattice point.
-    let r = t.resolution();
-    assert_eq!(t.positions[64 * r + 64].y, 0.0);
-    s.set_z(0.37).unwrap();
-    assert!(s.take_dirty(), "changing z regenerates");
-    assert_ne!(s.terrains()[0].positions[64 * r + 64].y, 0.0);
-    assert!(!s.take_dirty(), "once");
-    let mut f = Frame::default();
-    let note = s.draw(&mut f, MeshId(3));
-    assert!(note.contains("slice z = 0.370"));
-    // 25 lattice gradients as arrows (cones).
-    assert_eq!(
-        f.meshes.iter().filter(|m| m.mesh == MeshId::CONE).count(),
-        25
-    );
+    let (mut up, mut down) = (0, 0);
+    for (p, c) in t.positions.iter().zip(&t.colors) {
+        if p.y > 0.1 {
+            assert!(c.x > c.z, "red above 0: {c}");
+            up += 1;
+        } else if p.y < -0.1 {
+            assert!(c.z > c.x, "blue below 0: {c}");
+            down += 1;
+        }
+    }
+    assert!(up > 100 && down > 100);
+}
+
+#[test]
+fn noise2d_draws_the_students_cell_and_checks_it_across_the_cell() {
+    let mut s = Noise2d::new();
+    s.take_dirty();
     s.set_use_exercise(true);
     s.set_runner(wrong);
-    assert!(s.draw(&mut f, MeshId(3)).contains("differs"));
-    assert!(s.set_probe(2.5, 0.0).unwrap_err().contains("probe x"));
+    let mut f = Frame::default();
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(n.contains("perlin_cell (5.2) differs"), "{n}");
+    assert!(n.contains(&format!("of the {} inputs", 1 + STUDENT_GRID * STUDENT_GRID)), "{n}");
+    // The student's values as a pink grid over the probe's cell, at the height they give.
+    assert_eq!(f.segments_of(palette::STUDENT).count() - 1, 2 * STUDENT_GRID * (STUDENT_GRID - 1));
+    assert!(f.labels.iter().any(|l| l.text == "yours"));
+    // Right at the probe, wrong near the cell's far edge: still reported.
+    fn wrong_near_the_far_edge(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        let v = direct(name, args)?;
+        if name == "perlin_cell" && args[0] > 0.9 {
+            return Ok(vec![v[0] + 0.5]);
+        }
+        Ok(v)
+    }
+    s.set_runner(wrong_near_the_far_edge);
+    let n = s.draw(&mut f, MeshId(3));
+    if cfg!(feature = "solutions") {
+        assert!(n.contains("differs at p = (1.000"), "{n}");
+        assert!(n.contains(&format!("{} of the", STUDENT_GRID)), "{n}");
+        s.set_runner(direct);
+        assert!(s.draw(&mut f, MeshId(3)).contains("matches the reference at all"));
+    }
+    s.set_runner(panics);
+    f.clear();
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(n.contains("panicked at src/exercises/noise.rs:30:5: boom"), "{n}");
+    assert_eq!(f.segments_of(palette::STUDENT).count(), 1, "only the probe's stick");
 }
 
 #[test]
@@ -195,7 +322,7 @@ fn quiz_marks_answers_and_says_why() {
         let t = &q.terrains()[i];
         for (k, set) in sets.iter().enumerate() {
             let mut probe = inbetween::terrain::Terrain::new(QUIZ_RESOLUTION).unwrap();
-            probe.regenerate(&perm, &set.params).unwrap();
+            probe.regenerate(&perm, &set.shown_params()).unwrap();
             if probe.positions == t.positions {
                 right[i] = k + 1;
             }
@@ -218,10 +345,14 @@ fn quiz_marks_answers_and_says_why() {
     )));
     assert!(f.labels.iter().any(|l| l.text.ends_with('✗')));
     assert_eq!(f.labels.iter().filter(|l| l.text.ends_with('✓')).count(), 5);
-    let old = q.terrains()[0].positions.clone();
     q.new_round();
     assert_eq!(q.score(), 0, "a new round clears the answers");
-    let _ = old;
+    // The quiz's 97-vertex meshes show octaves up to 4 (up to 3 at s = 3), as the page says;
+    // the sets' own N stays what the table lists.
+    let shown: Vec<u32> = sets.iter().map(|s| s.shown_params().fractal.n).collect();
+    assert_eq!(shown, [4, 1, 4, 4, 3, 4]);
+    let listed: Vec<u32> = sets.iter().map(|s| s.params.fractal.n).collect();
+    assert_eq!(listed, [9, 1, 9, 9, 9, 9]);
 }
 
 #[test]
@@ -256,4 +387,117 @@ fn fractals_count_segments_and_triangles() {
     f.clear();
     s.draw(&mut f);
     assert_eq!(f.segments_of(palette::GRID).count(), 3 * 4 + 3 * 3);
+}
+
+#[test]
+fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
+    let mut s = Octaves::new();
+    // 193 vertices, 0.0104 m apart: octave 5 (cells of 1/32 m) fits, octave 6 does not.
+    assert_eq!(s.last_resolved_octave(), Some(5));
+    s.set_params(5.0, 0.8, 2.0).unwrap();
+    let mut f = Frame::default();
+    assert!(!s.draw(&mut f, MeshId(3)).contains("finer than the mesh"));
+    s.set_params(7.0, 0.8, 2.0).unwrap();
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(n.contains("Octaves 6 to 7 are finer than the mesh") && n.contains("0.010 m apart") && n.contains("(0.021 m)"), "{n}");
+    s.set_params(6.0, 0.8, 2.0).unwrap();
+    assert!(s.draw(&mut f, MeshId(3)).contains("Octave 6 is finer"));
+    // Left out: the surface is the sum up to octave 5, and the plot's sum column too, while the
+    // plot still shows octave 6 itself (grey on the page).
+    s.set_band_limit(true);
+    s.take_dirty();
+    assert!(s.draw(&mut f, MeshId(3)).contains("left out of the surface"));
+    let perm = inbetween::noise::Permutation::perlin();
+    let t = &s.terrains()[0];
+    let five = inbetween::noise::Fractal { n: 5, alpha: 0.8, omega: 2.0 };
+    let k = 77 * OCTAVES_RESOLUTION + 101;
+    let q = t.positions[k];
+    assert!((q.y - 0.5 * five.sum2(&perm, q.x, q.z)).abs() < 1e-5);
+    let rows = s.sample_octaves(3).unwrap();
+    let sum5: f32 = rows[1][1..=6].iter().sum();
+    assert!((rows[1][11] - sum5).abs() < 1e-6 && rows[1][7].is_finite());
+    s.set_band_limit(false);
+    assert!(s.take_dirty(), "the toggle regenerates");
+}
+
+#[test]
+fn octaves_draw_the_students_profile_and_check_it_along_the_line() {
+    let mut s = Octaves::new();
+    s.take_dirty();
+    s.set_use_exercise(true);
+    s.set_runner(wrong);
+    let mut f = Frame::default();
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(n.contains("fractal_sum (5.3) differs at p = (-1.000, 0.250)"), "{n}");
+    assert!(n.contains(&format!("of the {PROFILE_POINTS} inputs")), "{n}");
+    assert_eq!(f.segments_of(palette::STUDENT).count(), PROFILE_POINTS - 1);
+    // Right everywhere but past u = 0.9: the verdict finds it on the drawn line.
+    fn wrong_at_the_right_end(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        let v = direct(name, args)?;
+        if name == "fractal_sum" && args[0] > 0.9 {
+            return Ok(vec![v[0] + 0.2]);
+        }
+        Ok(v)
+    }
+    s.set_runner(wrong_at_the_right_end);
+    let n = s.draw(&mut f, MeshId(3));
+    if cfg!(feature = "solutions") {
+        assert!(n.contains("differs at p = (0.905, 0.250)") && n.contains("20 of the 401") && n.contains("and 16 more"), "{n}");
+        s.set_runner(direct);
+        let n = s.draw(&mut f, MeshId(3));
+        assert!(n.contains("matches the reference at all 401 inputs"), "{n}");
+    } else {
+        assert!(n.contains("Not done yet"), "{n}");
+    }
+}
+
+#[test]
+fn terrain_scene_names_the_octaves_finer_than_the_mesh() {
+    let mut s = TerrainScene::new();
+    s.take_dirty();
+    let mut f = Frame::default();
+    // 128 vertices, 0.0157 m apart: octaves 5 to 9 of the course's N = 9 are wasted.
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(n.contains("0.016 m apart, so octaves 5 to 9 are finer than the mesh"), "{n}");
+    s.set_resolution(512).unwrap();
+    s.take_dirty();
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(n.contains("octaves 7 to 9 are finer"), "{n}");
+    s.set_params(6.0, 0.4, 2.0, 0.3, 1.0, 0.0).unwrap();
+    s.take_dirty();
+    assert!(!s.draw(&mut f, MeshId(3)).contains("finer than the mesh"));
+    // Leaving them out builds the surface from octaves 0 to 4 at 128 × 128.
+    s.set_resolution(128).unwrap();
+    s.set_params(9.0, 0.4, 2.0, 0.3, 1.0, 0.0).unwrap();
+    s.set_band_limit(true);
+    s.take_dirty();
+    assert_eq!(s.shown_params().fractal.n, 4);
+    let mut expected = inbetween::terrain::Terrain::new(128).unwrap();
+    expected
+        .regenerate(&inbetween::noise::Permutation::perlin(), &s.shown_params())
+        .unwrap();
+    assert_eq!(s.terrains()[0].positions, expected.positions);
+}
+
+#[test]
+fn terrain_scene_checks_the_students_normal_beyond_the_sliders() {
+    let mut s = TerrainScene::new();
+    s.take_dirty();
+    s.set_use_exercise(true);
+    // A normal that forgets s: at the default s = 1 every vertex agrees, so only the inputs at
+    // other s can tell.
+    fn forgets_s(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        match name {
+            "terrain_normal" => direct(name, &[args[0], 1.0, args[2], args[3]]),
+            _ => direct(name, args),
+        }
+    }
+    s.set_runner(forgets_s);
+    let mut f = Frame::default();
+    let n = s.draw(&mut f, MeshId(3));
+    if cfg!(feature = "solutions") {
+        assert!(n.contains("differs at the probe's ∇g with h = 0.5, s = 2") && n.contains("2 of the 8 inputs"), "{n}");
+        s.set_runner(direct);
+        assert!(s.draw(&mut f, MeshId(3)).contains("matches the reference at all 8 inputs"));
+    }
 }

@@ -623,3 +623,102 @@ fn regenerate_matches_the_point_by_point_terrain() {
         }
     }
 }
+
+#[test]
+fn fade_second_derivative_is_zero_at_the_ends_unlike_the_1985_curve() {
+    assert_eq!(fade_second_derivative(0.0), 0.0);
+    assert_eq!(fade_second_derivative(1.0), 0.0);
+    let h = 1e-3f64;
+    for i in 1..20 {
+        let t = i as f32 / 20.0;
+        let fd = (fade_derivative(t + h as f32) - fade_derivative(t - h as f32)) / (2.0 * h as f32);
+        assert!((fd - fade_second_derivative(t)).abs() < 2e-2, "t = {t}");
+    }
+    // The 1985 curve 3t² − 2t³: its second derivative 6 − 12t is 6 at t = 0 and −6 at t = 1, so
+    // where one cell's t = 1 meets the next cell's t = 0 the curvature of the blend jumps.
+    let cubic = |t: f64| 3.0 * t * t - 2.0 * t * t * t;
+    let second = |t: f64| (cubic(t + h) - 2.0 * cubic(t) + cubic(t - h)) / (h * h);
+    assert!((second(h) - 6.0).abs() < 0.05 && (second(1.0 - h) + 6.0).abs() < 0.05);
+}
+
+#[test]
+fn the_3d_hash_and_gradient_extend_the_2d_ones() {
+    let perm = Permutation::perlin();
+    for (i, j) in [(0, 0), (3, -2), (-7, 5), (200, 13)] {
+        assert_eq!(perm.hash3(i, j, 0), perm.hash2(i, j), "the 2D noise is the slice z = 0");
+        let g = perm.gradient3(i, j, 0);
+        assert_eq!(g.truncate(), grad2(perm.hash2(i, j)));
+    }
+    // Near a lattice point (i, j, k) the noise is the ramp g·(p − corner).
+    let g = perm.gradient3(2, 1, 3);
+    let d = Vec3::new(1e-3, -2e-3, 1.5e-3);
+    let n = perm.noise3(2.0 + d.x, 1.0 + d.y, 3.0 + d.z);
+    assert!((n - g.dot(d)).abs() < 1e-6, "{n} vs {}", g.dot(d));
+}
+
+#[test]
+fn last_resolved_octave_is_the_nyquist_limit_of_the_mesh() {
+    // Octave k is kept while s ωᵏ ≤ (resolution − 1)/4: a cell spans at least two spacings.
+    assert_eq!(last_resolved_octave(128, 1.0, 2.0), Some(4)); // 31.75 cells per metre at most
+    assert_eq!(last_resolved_octave(129, 1.0, 2.0), Some(5)); // exactly 32: the boundary counts
+    assert_eq!(last_resolved_octave(193, 1.0, 2.0), Some(5));
+    assert_eq!(last_resolved_octave(512, 1.0, 2.0), Some(6));
+    assert_eq!(last_resolved_octave(97, 1.0, 2.0), Some(4));
+    assert_eq!(last_resolved_octave(97, 3.0, 2.0), Some(3));
+    assert_eq!(last_resolved_octave(64, 16.0, 2.0), None);
+    assert_eq!(last_resolved_octave(64, 1.0, 1.0), Some(MAX_N));
+    assert_eq!(last_resolved_octave(512, 1.0, 4.0), Some(3));
+    // Past the limit the mesh's samples stop following the octave: neighbouring vertices of
+    // a resolved octave are strongly correlated, those of an octave past the limit are not.
+    let perm = Permutation::perlin();
+    let step = 2.0 / 127.0;
+    let neighbour_correlation = |k: i32| {
+        let w = 2f32.powi(k);
+        let (mut sab, mut saa, mut sbb) = (0.0f64, 0.0f64, 0.0f64);
+        for j in 0..40 {
+            for i in 0..126 {
+                let (u, v) = (-1.0 + i as f32 * step, -1.0 + j as f32 * 0.05);
+                let a = perm.noise2(w * u, w * v) as f64;
+                let b = perm.noise2(w * (u + step), w * v) as f64;
+                (sab, saa, sbb) = (sab + a * b, saa + a * a, sbb + b * b);
+            }
+        }
+        sab / (saa * sbb).sqrt()
+    };
+    // The last kept octave (4) and the first past the limit (5).
+    assert!(neighbour_correlation(4) > 0.7);
+    assert!(neighbour_correlation(5) < 0.4);
+    assert!(neighbour_correlation(7).abs() < 0.1);
+}
+
+#[test]
+fn inverted_ridge_and_marble_terrains_follow_the_lessons_formulas() {
+    // q = Σ αᵏ (1 − |f|) − 0.7 Σ αᵏ and m = ½ sin(4x + Σ αᵏ |f|), as the lesson writes them.
+    let perm = Permutation::perlin();
+    let f = Fractal::COURSE;
+    let params = |variant| TerrainParams {
+        variant,
+        ..TerrainParams::default()
+    };
+    let mut rng = inbetween::fixtures::Rng::new(3);
+    for _ in 0..200 {
+        let (x, y) = (rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
+        let r: f32 = (0..=f.n).map(|k| f.octave2(&perm, k, x, y).abs()).sum();
+        let q: f32 = (0..=f.n)
+            .map(|k| f.alpha.powi(k as i32) * (1.0 - perm.noise2(f.omega.powi(k as i32) * x, f.omega.powi(k as i32) * y).abs()))
+            .sum();
+        let (got_q, _) = params(Variant::InvertedRidge).g(&perm, x, y);
+        assert!((got_q - (q - 0.7 * f.amplitude_sum())).abs() < 1e-5);
+        let (got_m, _) = params(Variant::Marble).g(&perm, x, y);
+        assert!((got_m - 0.5 * (4.0 * x + r).sin()).abs() < 1e-5);
+    }
+    // The shift keeps the inverted ridge around 0 like the other variants: on the course's
+    // window its mean height lies within 0.1 Σ αᵏ of 0, and it goes below 0 (the water).
+    let mut t = Terrain::new(128).unwrap();
+    t.regenerate(&perm, &params(Variant::InvertedRidge)).unwrap();
+    let heights: Vec<f32> = t.positions.iter().map(|p| p.y / 0.3).collect();
+    let mean = heights.iter().sum::<f32>() / heights.len() as f32;
+    assert!(mean.abs() < 0.1 * f.amplitude_sum(), "mean {mean}");
+    assert!(heights.iter().any(|&y| y < 0.0));
+    assert!(t.colors.iter().any(|c| c.z > 2.0 * c.x), "water in the lowest parts");
+}

@@ -60,9 +60,17 @@ if (v1) {
   gui.add(p, 'seed', 0, 20, 1).name('seed (0: Perlin)');
   gui.add(p, 'ramps').name('show the two ramps');
   gui.add(p, 'useExercise').name('use my exercise');
+  // The 1985 curve first and wide, so that fade(t), which nearly follows it, stays visible on top.
   const plot = new Plot(document.getElementById('n1-fade'), {
     title: 'The fade curve', xLabel: 't (position in the cell, 0 to 1)', yLabel: 'value (no unit)',
-    series: ['fade(t)', 'fade′(t)', '3t² − 2t³ (1985)'], colors: [cssVar('--z-axis'), cssVar('--orange'), cssVar('--grey')], minSpan: 0.5,
+    series: ['3t² − 2t³ (1985)', 'fade(t)', 'fade′(t)'], colors: [cssVar('--grey'), cssVar('--z-axis'), cssVar('--orange')],
+    widths: [5, 2, 2], minSpan: 0.5,
+  });
+  const curvature = new Plot(document.getElementById('n1-curv'), {
+    title: 'Second derivatives: the curvature at the ends of a cell', xLabel: 't (position in the cell, 0 to 1)',
+    yLabel: 'second derivative (no unit)',
+    series: ['(3t² − 2t³)″ = 6 − 12t (1985)', 'fade″(t)'], colors: [cssVar('--grey'), cssVar('--z-axis')],
+    widths: [3, 2], minSpan: 1,
   });
   let rejected = '';
   const apply = () => {
@@ -72,8 +80,12 @@ if (v1) {
     });
     scene.setShowRamps(p.ramps);
     scene.setUseExercise(p.useExercise);
-    plot.setData(columns(scene.sampleFade(101), 4));
+    // Rows [t, fade, fade′, 3t² − 2t³, fade″, (3t² − 2t³)″].
+    const [t, f, d, cubic, f2, cubic2] = columns(scene.sampleFade(101), 6);
+    plot.setData([t, cubic, f, d]);
+    curvature.setData([t, cubic2, f2]);
     plot.setCursor(scene.probeT());
+    curvature.setCursor(scene.probeT());
   };
   gui.onChange(apply);
   apply();
@@ -122,31 +134,40 @@ const v3 = await lesson.figure('#fig-octaves');
 if (v3) {
   v3.setCamera(0, 0, 0, 3.0, 0.3, 0.6);
   const scene = new OctavesScene();
-  const p = { n: 3, alpha: 0.5, omega: 2, useExercise: false };
+  const p = { n: 3, alpha: 0.5, omega: 2, bandLimit: false, useExercise: false };
   const state = { accepted: { ...p } };
   const gui = new GUI({ container: document.querySelector('#fig-octaves .panel'), title: 'Fractal sum' });
   gui.add(p, 'n', 0, 9, 1).name('N (last octave)');
   gui.add(p, 'alpha', 0, 1, 0.01).name('α (attenuation)');
   gui.add(p, 'omega', 1, 4, 0.01).name('ω (frequency gain)');
+  gui.add(p, 'bandLimit').name('leave out octaves finer than the mesh');
   gui.add(p, 'useExercise').name('use my exercise');
   const names = [...Array(10).keys()].map((k) => `octave ${k}`);
+  // The sum first and wide, so that octave 0 stays visible on top of it when N = 0. An octave
+  // finer than the mesh (past scene.lastResolvedOctave()) is drawn in light grey: uPlot calls a
+  // stroke function at every redraw.
+  const octaveColors = ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#17a2a8', '#e35d9c', '#8c564b', '#7f7f7f', '#bcbd22', '#9edae5'];
+  let lastResolved = 9;
   const plot = new Plot(document.getElementById('oct-plot'), {
-    title: 'Each octave along v = 0.25, and their sum', xLabel: 'u (m)', yLabel: 'height (no unit)',
-    series: [...names, 'sum'],
-    colors: ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#17a2a8', '#e35d9c', '#8c564b', '#7f7f7f', '#bcbd22', '#9edae5', '#e68a00'],
-    minSpan: 0.2,
+    title: 'The sum along v = 0.25, and each octave (grey: finer than the mesh)', xLabel: 'u (m)', yLabel: 'height (no unit)',
+    series: ['sum', ...names],
+    colors: [cssVar('--orange'), ...octaveColors.map((c, k) => () => (k > lastResolved ? '#c8c8c8' : c))],
+    widths: [5], minSpan: 0.2,
   });
   let rejected = '';
   const apply = () => {
     rejected = tryApply(gui, p, state, () => scene.setParams(p.n, p.alpha, p.omega));
+    scene.setBandLimit(p.bandLimit);
     scene.setUseExercise(p.useExercise);
+    lastResolved = scene.lastResolvedOctave();
+    // Rows [u, octave 0, …, octave 9, sum], 0.0005 m apart: fine enough for octave 9 itself.
     // Octaves above N come back as NaN: null leaves them out of the plot.
-    const cols = columns(scene.sampleOctaves(401), 12).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
-    plot.setData(cols);
+    const cols = columns(scene.sampleOctaves(4001), 12).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
+    plot.setData([cols[0], cols[11], ...cols.slice(1, 11)]);
     // Octaves above N are not in the sum: grey them out in the legend too.
     for (let k = 0; k < names.length; k++) {
       const show = k <= p.n;
-      if (plot.plot.series[k + 1].show !== show) plot.plot.setSeries(k + 1, { show });
+      if (plot.plot.series[k + 2].show !== show) plot.plot.setSeries(k + 2, { show });
     }
   };
   gui.onChange(apply);
@@ -165,7 +186,7 @@ if (v4) {
   v4.setCamera(0, -0.05, 0, 3.0, 0.5, 0.6);
   const scene = new TerrainFigureScene();
   const variants = { sum: 0, ridge: 1, 'inverted ridge': 2, marble: 3, 'sliding f(x, y + t)': 4, 'evolving f(x, y, t)': 5 };
-  const p = { n: 9, alpha: 0.4, omega: 2, h: 0.3, s: 1, o: 0, variant: 0, resolution: 128, seed: 0, useExercise: false };
+  const p = { n: 9, alpha: 0.4, omega: 2, h: 0.3, s: 1, o: 0, variant: 0, resolution: 128, seed: 0, bandLimit: false, useExercise: false };
   const state = { accepted: { ...p } };
   const gui = new GUI({ container: document.querySelector('#fig-terrain .panel'), title: 'Terrain S(u, v)' });
   gui.add(p, 'n', 0, 12, 1).name('N (last octave)');
@@ -177,6 +198,7 @@ if (v4) {
   gui.add(p, 'variant', variants).name('variant');
   gui.add(p, 'resolution', { '64 × 64': 64, '128 × 128': 128, '256 × 256': 256, '512 × 512': 512 }).name('resolution');
   gui.add(p, 'seed', 0, 20, 1).name('seed (0: Perlin)');
+  gui.add(p, 'bandLimit').name('leave out octaves finer than the mesh');
   gui.add(p, 'useExercise').name('use my exercise');
   const timing = document.getElementById('ter-timing');
   let shownMs = null;
@@ -188,6 +210,7 @@ if (v4) {
       scene.setVariant(Number(p.variant));
       scene.setParams(p.n, p.alpha, p.omega, p.h, p.s, p.o);
     });
+    scene.setBandLimit(p.bandLimit);
     scene.setUseExercise(p.useExercise);
   };
   gui.onChange(apply);
@@ -241,7 +264,7 @@ if (v5) {
 // Figure 6: procedural textures.
 const v6 = await lesson.figure('#fig-textures');
 if (v6) {
-  v6.setCamera(0.5, 0, 0.1, 5.8, 0, 1.3);
+  v6.setCamera(0, 0, 0.1, 6.2, 0, 1.3);
   const scene = new TexturesScene();
   const p = { scale: 4, turbulence: 5, n: 4, animate: false };
   const state = { accepted: { ...p } };
@@ -269,7 +292,7 @@ if (v6) {
 // Figure 7: Perlin and simplex noise, on the CPU and on the GPU (WGSL), with the GPU check.
 const vg = await lesson.figure('#fig-gpu');
 if (vg) {
-  vg.setCamera(0.5, 0, 0.1, 5.8, 0, 1.3);
+  vg.setCamera(0, 0, 0.1, 6.2, 0, 1.3);
   const scene = new NoiseImagesScene();
   const p = { cells: 6, seed: 0, gpu: 'Perlin', lattice: false };
   const state = { accepted: { ...p } };

@@ -8,8 +8,12 @@ use super::{compare_note, failure_note, format_number, in_range, palette, Frame,
 use crate::exercises::run;
 use crate::noise::fractals::{koch_snowflake, sierpinski, MAX_DEPTH};
 use crate::noise::texture::{fill_rgba, TextureKind, TextureParams};
-use crate::noise::{cell2, fade, fade_derivative, grad1, grad2, Fractal, Permutation};
-use crate::terrain::{terrain_normal, Terrain, TerrainParams, Variant, MAX_RESOLUTION};
+use crate::noise::{
+    cell2, fade, fade_derivative, fade_second_derivative, grad1, grad2, Fractal, Permutation,
+};
+use crate::terrain::{
+    last_resolved_octave, terrain_normal, Terrain, TerrainParams, Variant, MAX_RESOLUTION,
+};
 use crate::texture::{TextureId, UvRect};
 use glam::{Mat4, Vec2, Vec3};
 
@@ -39,6 +43,75 @@ fn check_n(n: f32, max: u32) -> Result<u32, String> {
         return Err(format!("N must be a whole number, got {n}"));
     }
     Ok(v as u32)
+}
+
+/// The verdict on a student's exercise over several inputs, so a bug that the displayed input
+/// cannot reveal still shows. `cases` names each input (`"t = 0.250"`) with the reference's
+/// answer; `yours(i)` runs the student's code on case i. Returns the note and, when every case
+/// answered, the student's answers (for drawing). A missing or panicking exercise stops at its
+/// first call and yields [`failure_note`].
+fn probe_verdict(
+    what: &str,
+    exercise: &str,
+    cases: &[(String, Vec<f32>)],
+    mut yours: impl FnMut(usize) -> Result<Vec<f32>, crate::exercises::run::Failure>,
+) -> (String, Option<Vec<Vec<f32>>>) {
+    let mut answers = Vec::with_capacity(cases.len());
+    let mut differ = Vec::new();
+    for (i, (_, reference)) in cases.iter().enumerate() {
+        match yours(i) {
+            Ok(a) => {
+                let bad = a.len() != reference.len()
+                    || a.iter()
+                        .zip(reference)
+                        .any(|(x, r)| !((x - r).abs() <= TOLERANCE));
+                if bad {
+                    differ.push(i);
+                }
+                answers.push(a);
+            }
+            Err(f) => return (failure_note(exercise, FILE, &f), None),
+        }
+    }
+    let n = cases.len();
+    let note = match differ.first() {
+        None => format!(
+            "Your {what} matches the reference at all {n} inputs it was tried on (the first: {}).",
+            cases[0].0
+        ),
+        Some(&i) => {
+            let first = compare_note(what, &cases[i].0, &answers[i], &cases[i].1, TOLERANCE).1;
+            let others: Vec<&str> = differ[1..]
+                .iter()
+                .take(3)
+                .map(|&k| cases[k].0.as_str())
+                .collect();
+            let more = if others.is_empty() {
+                String::new()
+            } else if differ.len() > 4 {
+                format!(
+                    " Also at {} and {} more.",
+                    others.join("; "),
+                    differ.len() - 4
+                )
+            } else {
+                format!(" Also at {}.", others.join("; "))
+            };
+            format!(
+                "{first} It differs at {} of the {n} inputs tried.{more}",
+                differ.len()
+            )
+        }
+    };
+    (note, Some(answers))
+}
+
+/// A diverging colour for a noise value (linear RGBA): red above 0, blue below, white at 0, full
+/// colour at `|n| ≥ 0.6` (one octave of 2D noise seldom passes ±0.7).
+pub fn diverging_color(n: f32) -> glam::Vec4 {
+    let t = (n.abs() / 0.6).min(1.0);
+    let end = if n >= 0.0 { palette::RED } else { palette::BLUE };
+    Vec3::splat(0.85).lerp(end, t).extend(1.0)
 }
 
 /// Terrains a figure shows, for the web layer to upload: each with its model matrix.
@@ -106,22 +179,36 @@ impl Noise1d {
         Vec3::new(x - X0, y * Y_SCALE, 0.0)
     }
 
-    /// `fade(t)` and `fade′(t)` from the student's exercise 5.1 (with "use my exercise"), else the
-    /// reference; the second value is the note about the student's answer.
-    fn fade_pair(&self, t: f32) -> ([f32; 2], Option<String>) {
+    /// `fade(t)` and `fade′(t)` from the student's exercise 5.1 (with "use my exercise", when it
+    /// answers), else the reference.
+    fn fade_pair(&self, t: f32) -> [f32; 2] {
         let reference = [fade(t), fade_derivative(t)];
         if !self.use_exercise {
-            return (reference, None);
+            return reference;
         }
         match run::fade(self.runner, t) {
-            Ok(yours) => {
-                let at = format!("t = {}", format_number(t));
-                let (ok, note) = compare_note("fade (5.1)", &at, &yours, &reference, TOLERANCE);
-                let _ = ok;
-                (yours, Some(note))
-            }
-            Err(f) => (reference, Some(failure_note("exercise 5.1 fade", FILE, &f))),
+            Ok(yours) => yours,
+            Err(_) => reference,
         }
+    }
+
+    /// The verdict on the student's 5.1 at the probe's t and at t = 0, ¼, ½, ¾, 1 (the ends are
+    /// where a wrong derivative shows).
+    fn fade_verdict(&self, t: f32) -> String {
+        let ts = [t, 0.0, 0.25, 0.5, 0.75, 1.0];
+        let cases: Vec<(String, Vec<f32>)> = ts
+            .iter()
+            .map(|&t| {
+                (
+                    format!("t = {}", format_number(t)),
+                    vec![fade(t), fade_derivative(t)],
+                )
+            })
+            .collect();
+        probe_verdict("fade (5.1)", "exercise 5.1 fade", &cases, |i| {
+            run::fade(self.runner, ts[i]).map(|v| v.to_vec())
+        })
+        .0
     }
 
     /// Draws the figure; returns its note.
@@ -171,10 +258,20 @@ impl Noise1d {
                 &[Self::to_world(x0, -g1), Self::to_world(x0 + 1.0, 0.0)],
                 palette::TEAL,
             );
-            frame.label(Self::to_world(x0 + 1.0, g0), "g₀·t", palette::ORANGE);
-            frame.label(Self::to_world(x0, -g1), "g₁·(t − 1)", palette::TEAL);
+            // Labels a quarter of the way in from the ramps' far ends: at the ends, a steep ramp
+            // reaches the bottom edge of the view, and both labels can land there side by side.
+            frame.label(
+                Self::to_world(x0 + 0.75, 0.75 * g0),
+                "g₀·t",
+                palette::ORANGE,
+            );
+            frame.label(
+                Self::to_world(x0 + 0.25, -0.75 * g1),
+                "g₁·(t − 1)",
+                palette::TEAL,
+            );
         }
-        let ([f, _], note) = self.fade_pair(t);
+        let [f, _] = self.fade_pair(t);
         let (a, b) = (g0 * t, g1 * (t - 1.0));
         let n = a + f * (b - a);
         if self.show_ramps {
@@ -204,21 +301,30 @@ impl Noise1d {
             format_number(b),
             format_number(n)
         );
-        if let Some(note) = note {
-            text = format!("{text} {note}");
+        if self.use_exercise {
+            text = format!("{text} {}", self.fade_verdict(t));
         }
         text
     }
 
-    /// The fade curve for the plot: `[t, fade, fade′, 3t² − 2t³]` per row (fade and fade′ from the
-    /// student's exercise when "use my exercise" is ticked and it answers).
-    pub fn sample_fade(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
+    /// The fade curves for the plots: `[t, fade, fade′, 3t² − 2t³, fade″, (3t² − 2t³)″]` per
+    /// row (fade and fade′ from the student's exercise when "use my exercise" is ticked and it
+    /// answers). The second derivatives show the 1985 curve's jump in curvature: `6 − 12t` is 6
+    /// at t = 0 and −6 at t = 1, where the quintic's `fade″` is 0.
+    pub fn sample_fade(&self, samples: usize) -> Result<Vec<[f32; 6]>, String> {
         check_samples(samples)?;
         Ok((0..samples)
             .map(|i| {
                 let t = i as f32 / (samples - 1) as f32;
-                let ([f, d], _) = self.fade_pair(t);
-                [t, f, d, t * t * (3.0 - 2.0 * t)]
+                let [f, d] = self.fade_pair(t);
+                [
+                    t,
+                    f,
+                    d,
+                    t * t * (3.0 - 2.0 * t),
+                    fade_second_derivative(t),
+                    6.0 - 12.0 * t,
+                ]
             })
             .collect())
     }
@@ -286,6 +392,11 @@ impl Noise2d {
         self.terrain
             .regenerate(&self.perm, &p)
             .expect("figure 2's parameters are valid");
+        // One octave has a sign, and the sign is the lesson: a diverging palette instead of the
+        // terrain's water, grass and snow.
+        for (c, q) in self.terrain.colors.iter_mut().zip(&self.terrain.positions) {
+            *c = diverging_color(q.y / FIG2_H);
+        }
         self.dirty = true;
     }
     pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
@@ -323,17 +434,88 @@ impl Noise2d {
         self.perm.noise3(self.probe.x, self.probe.y, self.z)
     }
 
+    /// The layers of 3D lattice points around the slice: `k = ⌊z⌋` and the weight
+    /// `w = fade(z − k)` of layer `k + 1` (0 at an integer slice, where only layer k counts).
+    pub fn layers(&self) -> (i32, f32) {
+        let k = self.z.floor();
+        (k as i32, fade(self.z - k))
+    }
+
+    /// The slice's value and slope `(∂n/∂x, ∂n/∂y)` right over lattice point `(i, j)`. There the
+    /// x and y fades and their derivatives are 0, so only the two 3D lattice points `(i, j, k)` and
+    /// `(i, j, k + 1)` count:
+    /// ```text
+    /// n = lerp(w, g_k.z (z − k), g_k+1.z (z − k − 1)),   ∇n = lerp(w, g_k.xy, g_k+1.xy)
+    /// ```
+    /// At an integer slice (w = 0, z = k) the value is 0 and the slope is layer k's gradient.
+    pub fn dot_value_and_slope(&self, i: i32, j: i32) -> (f32, Vec2) {
+        let (k, w) = self.layers();
+        let t = self.z - k as f32;
+        let (g0, g1) = (
+            self.perm.gradient3(i, j, k),
+            self.perm.gradient3(i, j, k + 1),
+        );
+        let value = g0.z * t + w * (g1.z * (t - 1.0) - g0.z * t);
+        (value, g0.truncate().lerp(g1.truncate(), w))
+    }
+
+    /// The student's 5.2 over the probe's cell on a `STUDENT_GRID`² grid, compared with
+    /// [`cell2`] at every grid point (and at the probe first). Returns the note and, when the
+    /// exercise answered, the values row by row.
+    fn student_cell(&self) -> (String, Option<Vec<f32>>) {
+        let c = self.probe.floor();
+        let (i, j) = (c.x as i32, c.y as i32);
+        let g = [
+            grad2(self.perm.hash2(i, j)),
+            grad2(self.perm.hash2(i + 1, j)),
+            grad2(self.perm.hash2(i, j + 1)),
+            grad2(self.perm.hash2(i + 1, j + 1)),
+        ];
+        let last = (STUDENT_GRID - 1) as f32;
+        let mut points = vec![self.probe - c];
+        for b in 0..STUDENT_GRID {
+            for a in 0..STUDENT_GRID {
+                points.push(Vec2::new(a as f32 / last, b as f32 / last));
+            }
+        }
+        let cases: Vec<(String, Vec<f32>)> = points
+            .iter()
+            .map(|&p| {
+                (
+                    format!(
+                        "p = ({}, {}) in the cell",
+                        format_number(p.x),
+                        format_number(p.y)
+                    ),
+                    vec![cell2(p, g)],
+                )
+            })
+            .collect();
+        let (note, answers) = probe_verdict(
+            "perlin_cell (5.2)",
+            "exercise 5.2 perlin_cell",
+            &cases,
+            |k| run::perlin_cell(self.runner, points[k], g[0], g[1], g[2], g[3]).map(|v| vec![v]),
+        );
+        (note, answers.map(|a| a[1..].iter().map(|v| v[0]).collect()))
+    }
+
     pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
         let lift = Vec3::Y * 0.01;
         for j in -2..=2 {
             for i in -2..=2 {
                 let p = Vec2::new(i as f32, j as f32);
-                let g = grad2(self.perm.hash2(i, j));
-                let at = self.world(p, 0.0) + lift;
+                let (value, slope) = self.dot_value_and_slope(i, j);
+                let at = self.world(p, value) + lift;
                 frame.point(at, 0.025, palette::KEY);
-                let tip = at + Vec3::new(g.x, 0.0, g.y) * 0.18;
-                frame.arrow(at, tip, palette::ORANGE, 0.05);
+                if value != 0.0 {
+                    frame.line(self.world(p, 0.0), at, palette::KEY);
+                }
+                if slope != Vec2::ZERO {
+                    let tip = at + Vec3::new(slope.x, 0.0, slope.y) * 0.18;
+                    frame.arrow(at, tip, palette::ORANGE, 0.05);
+                }
             }
         }
         let c = self.probe.floor();
@@ -359,44 +541,58 @@ impl Noise2d {
             c.y + 1.0,
             format_number(value)
         );
-        if self.z != 0.0 {
+        let (k, w) = self.layers();
+        if w == 0.0 && k == 0 {
+            note += " The slice z = 0 is the 2D noise: 0 at every dot, and each arrow is the \
+                     gradient there.";
+        } else if w == 0.0 {
             note += &format!(
-                " This is the slice z = {} of 3D noise: the lattice points lie above and below \
-                 it, so the surface is no longer 0 at the dots.",
-                format_number(self.z)
+                " z = {k} is an integer: the slice passes through the 3D lattice points of layer \
+                 {k}, so the surface is 0 at every dot again, with that layer's gradients (other \
+                 arrows than at z = 0)."
+            );
+        } else {
+            note += &format!(
+                " The slice z = {} lies between the lattice layers z = {k} and z = {}: at a dot the \
+                 value and the slope (arrow) blend those two layers' gradients with weight \
+                 fade({}) = {} on layer {}, so the surface is no longer 0 at the dots \
+                 (black sticks).",
+                format_number(self.z),
+                k + 1,
+                format_number(self.z - k as f32),
+                format_number(w),
+                k + 1
             );
         }
         if self.use_exercise {
-            let (i, j) = (c.x as i32, c.y as i32);
-            let g = [
-                grad2(self.perm.hash2(i, j)),
-                grad2(self.perm.hash2(i + 1, j)),
-                grad2(self.perm.hash2(i, j + 1)),
-                grad2(self.perm.hash2(i + 1, j + 1)),
-            ];
-            let local = self.probe - c;
-            let reference = cell2(local, g);
-            let at = format!(
-                "p = ({}, {}) in the cell",
-                format_number(local.x),
-                format_number(local.y)
-            );
-            note += " ";
-            note += &match run::perlin_cell(self.runner, local, g[0], g[1], g[2], g[3]) {
-                Ok(yours) => {
-                    let (_, n) =
-                        compare_note("perlin_cell (5.2)", &at, &[yours], &[reference], TOLERANCE);
-                    n
+            let (verdict, values) = self.student_cell();
+            if let Some(values) = values {
+                let point = |a: usize, b: usize| {
+                    let last = (STUDENT_GRID - 1) as f32;
+                    let p = c + Vec2::new(a as f32 / last, b as f32 / last);
+                    self.world(p, values[b * STUDENT_GRID + a]) + lift * 2.0
+                };
+                for b in 0..STUDENT_GRID {
+                    let row: Vec<Vec3> = (0..STUDENT_GRID).map(|a| point(a, b)).collect();
+                    frame.polyline(&row, palette::STUDENT);
+                    let col: Vec<Vec3> = (0..STUDENT_GRID).map(|a| point(b, a)).collect();
+                    frame.polyline(&col, palette::STUDENT);
                 }
-                Err(f) => failure_note("exercise 5.2 perlin_cell", FILE, &f),
-            };
+                frame.label(point(STUDENT_GRID - 1, STUDENT_GRID - 1), "yours", palette::STUDENT);
+            }
+            note += " ";
+            note += &verdict;
             if self.z != 0.0 {
-                note += " (Your 5.2 computes the 2D noise, the slice z = 0.)";
+                note += " (Your 5.2 computes the 2D noise, the slice z = 0: set z to 0 to see \
+                         your grid lie on the surface.)";
             }
         }
         note
     }
 }
+
+/// Grid points per side at which Figure 2 evaluates the student's 5.2 over the probe's cell.
+pub const STUDENT_GRID: usize = 9;
 
 impl Default for Noise2d {
     fn default() -> Self {
@@ -423,13 +619,19 @@ impl TerrainFigure for Noise2d {
 pub const OCTAVES_MAX_N: u32 = 9;
 
 /// Figure 3: the fractal sum with octaves 0..=N; the profile along `v = V_SLICE` is drawn on the
-/// terrain (orange, with the sum without the newest octave in dark grey) and plotted octave by octave.
+/// terrain (orange, with the sum without the newest octave in dark grey) and plotted octave by
+/// octave. Octaves finer than the mesh can show ([`last_resolved_octave`]) are named in the note,
+/// greyed in the plot, and left out of the surface with "leave out octaves finer than the mesh".
 pub struct Octaves {
     perm: Permutation,
     fractal: Fractal,
+    band_limit: bool,
     terrain: Terrain,
     use_exercise: bool,
     runner: Runner,
+    /// The student's 5.3 along the profile for the figure's current sum, with its verdict
+    /// (computed once per change of N, α, ω or the runner: hundreds of calls).
+    student: Option<(Fractal, String, Option<Vec<f32>>)>,
     dirty: bool,
     stale: bool,
 }
@@ -437,8 +639,11 @@ pub struct Octaves {
 /// The profile's v (world z).
 pub const V_SLICE: f32 = 0.25;
 const FIG3_H: f32 = 0.5;
-/// The point where "use my exercise" compares 5.3, in noise coordinates.
-const FIG3_PROBE: Vec2 = Vec2::new(0.3, -0.45);
+/// Vertices per side of Figure 3's mesh.
+pub const OCTAVES_RESOLUTION: usize = 193;
+/// Points along the drawn profiles (the student's too): 0.005 m apart, fine enough for every
+/// octave up to 6.
+pub const PROFILE_POINTS: usize = 401;
 
 impl Octaves {
     pub fn new() -> Self {
@@ -449,18 +654,36 @@ impl Octaves {
                 alpha: 0.5,
                 omega: 2.0,
             },
-            terrain: Terrain::new(193).expect("a valid resolution"),
+            band_limit: false,
+            terrain: Terrain::new(OCTAVES_RESOLUTION).expect("a valid resolution"),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            student: None,
             dirty: true,
             stale: false,
         };
         s.regenerate();
         s
     }
+
+    /// The last octave the mesh shows faithfully (`None`: not even octave 0).
+    pub fn last_resolved_octave(&self) -> Option<u32> {
+        last_resolved_octave(OCTAVES_RESOLUTION, 1.0, self.fractal.omega)
+    }
+
+    /// The sum the surface and the orange profile show: octaves 0..=N, or only those the mesh
+    /// can show when "leave out octaves finer than the mesh" is ticked.
+    pub fn shown_fractal(&self) -> Fractal {
+        let mut f = self.fractal;
+        if self.band_limit {
+            f.n = f.n.min(self.last_resolved_octave().unwrap_or(0));
+        }
+        f
+    }
+
     fn params(&self) -> TerrainParams {
         TerrainParams {
-            fractal: self.fractal,
+            fractal: self.shown_fractal(),
             h: FIG3_H,
             s: 1.0,
             o: 0.0,
@@ -486,17 +709,27 @@ impl Octaves {
         self.stale = true;
         Ok(())
     }
+    /// Leaves the octaves finer than the mesh out of the surface and the orange profile.
+    pub fn set_band_limit(&mut self, on: bool) {
+        if on != self.band_limit {
+            self.band_limit = on;
+            self.stale = true;
+        }
+    }
     pub fn set_use_exercise(&mut self, on: bool) {
         self.use_exercise = on;
     }
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.student = None;
     }
 
     /// The profile along `v = V_SLICE`: per row `[u, octave 0, …, octave 9, sum]` where octaves
-    /// above N are NaN (the plot leaves them out).
+    /// above N are NaN (the plot leaves them out). The sum is the figure's (without the octaves
+    /// finer than the mesh when those are left out); each octave is plotted whole.
     pub fn sample_octaves(&self, samples: usize) -> Result<Vec<[f32; 12]>, String> {
         check_samples(samples)?;
+        let shown = self.shown_fractal().n;
         Ok((0..samples)
             .map(|i| {
                 let u = -1.0 + 2.0 * i as f32 / (samples - 1) as f32;
@@ -506,7 +739,9 @@ impl Octaves {
                 for k in 0..=self.fractal.n {
                     let o = self.fractal.octave2(&self.perm, k, u, V_SLICE);
                     row[1 + k as usize] = o;
-                    sum += o;
+                    if k <= shown {
+                        sum += o;
+                    }
                 }
                 row[11] = sum;
                 row
@@ -514,23 +749,58 @@ impl Octaves {
             .collect())
     }
 
-    pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
+    /// The u of profile point i.
+    fn profile_u(i: usize) -> f32 {
+        -1.0 + 2.0 * i as f32 / (PROFILE_POINTS - 1) as f32
+    }
+
+    /// Runs the student's 5.3 along the profile for the shown sum (once per change).
+    fn update_student(&mut self) {
+        let f = self.shown_fractal();
+        if matches!(&self.student, Some((cached, _, _)) if *cached == f) {
+            return;
+        }
+        let points: Vec<Vec2> = (0..PROFILE_POINTS)
+            .map(|i| Vec2::new(Self::profile_u(i), V_SLICE))
+            .collect();
+        let reference = Permutation::perlin();
+        let cases: Vec<(String, Vec<f32>)> = points
+            .iter()
+            .map(|p| {
+                (
+                    format!("p = ({}, {})", format_number(p.x), format_number(p.y)),
+                    vec![f.sum2(&reference, p.x, p.y)],
+                )
+            })
+            .collect();
+        let runner = self.runner;
+        let (note, answers) = probe_verdict(
+            "fractal_sum (5.3)",
+            "exercise 5.3 fractal_sum",
+            &cases,
+            |i| run::fractal_sum(runner, points[i], f.n as usize, f.alpha, f.omega).map(|v| vec![v]),
+        );
+        self.student = Some((f, note, answers.map(|a| a.iter().map(|v| v[0]).collect())));
+    }
+
+    pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
         let lift = Vec3::Y * 0.004;
+        let shown = self.shown_fractal();
         let previous = Fractal {
-            n: self.fractal.n.saturating_sub(1),
-            ..self.fractal
+            n: shown.n.saturating_sub(1),
+            ..shown
         };
         let profile = |f: &Fractal| -> Vec<Vec3> {
-            (0..=400)
+            (0..PROFILE_POINTS)
                 .map(|i| {
-                    let u = -1.0 + i as f32 / 200.0;
+                    let u = Self::profile_u(i);
                     Vec3::new(u, FIG3_H * f.sum2(&self.perm, u, V_SLICE), V_SLICE) + lift
                 })
                 .collect()
         };
-        frame.polyline(&profile(&self.fractal), palette::ORANGE);
-        if self.fractal.n > 0 {
+        frame.polyline(&profile(&shown), palette::ORANGE);
+        if shown.n > 0 {
             frame.polyline(&profile(&previous), palette::DARK);
         }
         frame.label(
@@ -548,32 +818,54 @@ impl Octaves {
             format_number(self.fractal.omega.powi(k as i32)),
             format_number(1.0 / self.fractal.omega.powi(k as i32))
         );
-        if self.use_exercise {
-            let reference = Fractal {
-                n: self.fractal.n,
-                ..self.fractal
+        let spacing = 2.0 / (OCTAVES_RESOLUTION - 1) as f32;
+        match self.last_resolved_octave() {
+            Some(last) if last >= k => {}
+            last => {
+                let first = last.map_or(0, |l| l + 1);
+                let range = if first == k {
+                    format!("Octave {k} is")
+                } else {
+                    format!("Octaves {first} to {k} are")
+                };
+                note += &format!(
+                    " {range} finer than the mesh: its vertices are {} m apart, and a cell \
+                     narrower than two spacings ({} m) falls between vertices and comes back as \
+                     spikes (aliasing); they are grey in the plot.{}",
+                    format_number(spacing),
+                    format_number(2.0 * spacing),
+                    if self.band_limit {
+                        " They are left out of the surface."
+                    } else {
+                        " Tick “leave out octaves finer than the mesh” to drop them."
+                    }
+                );
             }
-            .sum2(&Permutation::perlin(), FIG3_PROBE.x, FIG3_PROBE.y);
-            let at = format!(
-                "p = ({}, {}), N = {k}, α = {}, ω = {}",
-                FIG3_PROBE.x,
-                FIG3_PROBE.y,
-                format_number(self.fractal.alpha),
-                format_number(self.fractal.omega)
-            );
-            note += " ";
-            note += &match run::fractal_sum(
-                self.runner,
-                FIG3_PROBE,
-                k as usize,
-                self.fractal.alpha,
-                self.fractal.omega,
-            ) {
-                Ok(yours) => {
-                    compare_note("fractal_sum (5.3)", &at, &[yours], &[reference], TOLERANCE).1
+        }
+        if self.use_exercise {
+            self.update_student();
+            if let Some((_, verdict, values)) = &self.student {
+                if let Some(values) = values {
+                    let line: Vec<Vec3> = values
+                        .iter()
+                        .enumerate()
+                        .map(|(i, &g)| {
+                            Vec3::new(Self::profile_u(i), FIG3_H * g, V_SLICE) + lift * 2.0
+                        })
+                        .collect();
+                    frame.polyline(&line, palette::STUDENT);
+                    frame.label(
+                        Vec3::new(-1.05, FIG3_H * values[0], V_SLICE),
+                        "yours",
+                        palette::STUDENT,
+                    );
                 }
-                Err(f) => failure_note("exercise 5.3 fractal_sum", FILE, &f),
-            };
+                note += " ";
+                note += verdict;
+                if values.is_some() {
+                    note += &format!(" Your sum is the pink line along v = {V_SLICE}.");
+                }
+            }
         }
         note
     }
@@ -621,6 +913,7 @@ pub struct TerrainScene {
     variant: usize,
     time_sec: f32,
     terrain: Terrain,
+    band_limit: bool,
     use_exercise: bool,
     runner: Runner,
     dirty: bool,
@@ -635,6 +928,7 @@ impl TerrainScene {
             variant: 0,
             time_sec: 0.0,
             terrain: Terrain::new(128).expect("a valid resolution"),
+            band_limit: false,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             dirty: true,
@@ -654,9 +948,37 @@ impl TerrainScene {
             4 => Variant::Sliding { t: 0.3 * t },
             _ => Variant::Evolving { t: 0.3 * t },
         };
-        self.terrain.regenerate(&self.perm, &self.params)?;
+        let shown = self.shown_params();
+        self.terrain.regenerate(&self.perm, &shown)?;
         self.dirty = true;
         Ok(())
+    }
+
+    /// The last octave the mesh shows faithfully at the current resolution, s and ω.
+    pub fn last_resolved_octave(&self) -> Option<u32> {
+        last_resolved_octave(
+            self.terrain.resolution(),
+            self.params.s,
+            self.params.fractal.omega,
+        )
+    }
+
+    /// The parameters the surface is built from: N capped at the last octave the mesh can show
+    /// when "leave out octaves finer than the mesh" is ticked.
+    pub fn shown_params(&self) -> TerrainParams {
+        let mut p = self.params;
+        if self.band_limit {
+            p.fractal.n = p.fractal.n.min(self.last_resolved_octave().unwrap_or(0));
+        }
+        p
+    }
+
+    /// Leaves the octaves finer than the mesh out of the surface.
+    pub fn set_band_limit(&mut self, on: bool) {
+        if on != self.band_limit {
+            self.band_limit = on;
+            self.stale = true;
+        }
     }
 
     /// Sets N, α, ω, h, s, o (checked by name; nothing changes on an error).
@@ -759,6 +1081,61 @@ impl TerrainScene {
         (2 * r / 3) * r + r / 3
     }
 
+    /// The inputs at which "use my exercise" checks 5.4: the probe vertex first, four more
+    /// vertices and the steepest one at the current settings, then the probe's gradient at other
+    /// h and s (a normal that forgets s still matches at s = 1). Each is `(name, h, s, ∇g)`.
+    fn normal_cases(&self) -> Vec<(String, f32, f32, Vec2)> {
+        let p = self.shown_params();
+        let r = self.terrain.resolution();
+        let steepest = (0..self.terrain.normals.len())
+            .min_by(|&a, &b| self.terrain.normals[a].y.total_cmp(&self.terrain.normals[b].y))
+            .unwrap_or(0);
+        let vertices = [
+            self.probe_index(),
+            (r / 4) * r + r / 4,
+            (r / 4) * r + 3 * r / 4,
+            (r / 2) * r + r / 2,
+            (3 * r / 4) * r + 3 * r / 4,
+            steepest,
+        ];
+        let grad_at = |k: usize| {
+            let q = self.terrain.positions[k];
+            p.g(&self.perm, p.s * (q.x + p.o), p.s * (q.z + p.o)).1
+        };
+        let mut cases: Vec<(String, f32, f32, Vec2)> = vertices
+            .iter()
+            .enumerate()
+            .map(|(i, &k)| {
+                let q = self.terrain.positions[k];
+                let what = match i {
+                    0 => "the probe",
+                    5 => "the steepest vertex",
+                    _ => "the vertex",
+                };
+                (
+                    format!(
+                        "{what} (u = {}, v = {})",
+                        format_number(q.x),
+                        format_number(q.z)
+                    ),
+                    p.h,
+                    p.s,
+                    grad_at(k),
+                )
+            })
+            .collect();
+        let g = cases[0].3;
+        for (h, s) in [(0.5, 2.0), (1.0, 0.5)] {
+            cases.push((
+                format!("the probe's ∇g with h = {h}, s = {s}"),
+                h,
+                s,
+                g,
+            ));
+        }
+        cases
+    }
+
     pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
         let k = self.probe_index();
@@ -778,33 +1155,50 @@ impl TerrainScene {
             format_number(p.s),
             format_number(p.o)
         );
-        if self.use_exercise {
-            let (u, v) = (at.x, at.z);
-            let (_, grad_g) = p.g(&self.perm, p.s * (u + p.o), p.s * (v + p.o));
-            let reference = terrain_normal(p.h, p.s, grad_g);
-            let where_ = format!(
-                "the probe (u = {}, v = {})",
-                format_number(u),
-                format_number(v)
-            );
-            note += " ";
-            note += &match run::terrain_normal(self.runner, p.h, p.s, grad_g) {
-                Ok(yours) => {
-                    if yours.is_finite() && yours.length() > 1e-6 {
-                        frame.arrow(at, at + yours.normalize() * 0.35, palette::STUDENT, 0.06);
-                        frame.label(at + yours.normalize() * 0.45, "yours", palette::STUDENT);
-                    }
-                    compare_note(
-                        "terrain_normal (5.4)",
-                        &where_,
-                        &yours.to_array(),
-                        &reference.to_array(),
-                        TOLERANCE,
-                    )
-                    .1
-                }
-                Err(f) => failure_note("exercise 5.4 terrain_normal", FILE, &f),
+        let spacing = 2.0 / (r - 1) as f32;
+        let last = self.last_resolved_octave();
+        if last.is_none_or(|l| l < p.fractal.n) {
+            let first = last.map_or(0, |l| l + 1);
+            let range = if first == p.fractal.n {
+                format!("octave {first} is")
+            } else {
+                format!("octaves {first} to {} are", p.fractal.n)
             };
+            note += &format!(
+                " The vertices are {} m apart, so {range} finer than the mesh (cells narrower \
+                 than two spacings, {} m): they fall between vertices and only add aliasing{}.",
+                format_number(spacing),
+                format_number(2.0 * spacing),
+                if self.band_limit {
+                    ", and are left out"
+                } else {
+                    "; “leave out octaves finer than the mesh” drops them"
+                }
+            );
+        }
+        if self.use_exercise {
+            let cases = self.normal_cases();
+            let named: Vec<(String, Vec<f32>)> = cases
+                .iter()
+                .map(|(name, h, s, g)| (name.clone(), terrain_normal(*h, *s, *g).to_array().to_vec()))
+                .collect();
+            let (verdict, answers) = probe_verdict(
+                "terrain_normal (5.4)",
+                "exercise 5.4 terrain_normal",
+                &named,
+                |i| {
+                    let (_, h, s, g) = cases[i];
+                    run::terrain_normal(self.runner, h, s, g).map(|v| v.to_array().to_vec())
+                },
+            );
+            if let Some(yours) = answers.as_ref().map(|a| Vec3::from_slice(&a[0])) {
+                if yours.is_finite() && yours.length() > 1e-6 {
+                    frame.arrow(at, at + yours.normalize() * 0.35, palette::STUDENT, 0.06);
+                    frame.label(at + yours.normalize() * 0.45, "yours", palette::STUDENT);
+                }
+            }
+            note += " ";
+            note += &verdict;
         }
         note
     }
@@ -974,6 +1368,17 @@ pub struct QuizSet {
     pub why: &'static str,
 }
 
+impl QuizSet {
+    /// What a quiz terrain is built from: the set's parameters without the octaves finer than
+    /// the quiz's mesh can show ([`last_resolved_octave`]), which would only add spikes.
+    pub fn shown_params(&self) -> TerrainParams {
+        let mut p = self.params;
+        let last = last_resolved_octave(QUIZ_RESOLUTION, p.s, p.fractal.omega).unwrap_or(0);
+        p.fractal.n = p.fractal.n.min(last);
+        p
+    }
+}
+
 /// The six parameter sets of the quiz, numbered 1 to 6 on the page (the course's terrain and one
 /// change each).
 pub fn quiz_sets() -> [QuizSet; 6] {
@@ -1067,7 +1472,7 @@ impl Quiz {
         }
         let sets = quiz_sets();
         for (t, &set) in self.terrains.iter_mut().zip(&self.hidden) {
-            t.regenerate(&self.perm, &sets[set].params)
+            t.regenerate(&self.perm, &sets[set].shown_params())
                 .expect("the quiz's sets are valid");
         }
         self.answers = [None; 6];

@@ -4,7 +4,7 @@
 //! g(x) = Σ_{k=0}^{N} αᵏ f(ωᵏ x)          fractal sum (fBm): N + 1 octaves
 //! r(x) = Σ_{k=0}^{N} αᵏ |f(ωᵏ x)|        ridge; with α = 1/2, ω = 2 this is Perlin's turbulence
 //! q(x) = Σ_{k=0}^{N} αᵏ (1 − |f(ωᵏ x)|)  inverted ridge: sharp crests instead of sharp creases
-//! m(x) = sin(x + r(x))                  marble
+//! m(x) = sin(c x + r(x))                marble: c stripes per 2π along x, bent by r
 //! ```
 //! α is the attenuation (1/α the persistence), ω the frequency gain. Lesson: lessons/05-noise.
 

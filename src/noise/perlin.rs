@@ -43,6 +43,13 @@ pub fn fade_derivative(t: f32) -> f32 {
     30.0 * t * t * (t - 1.0) * (t - 1.0)
 }
 
+/// The second derivative of [`fade`]: `120t³ − 180t² + 60t = 60 t (2t − 1)(t − 1)`, zero at
+/// both ends (the 1985 curve `3t² − 2t³` has `6 − 12t`: 6 at t = 0, −6 at t = 1).
+#[inline]
+pub fn fade_second_derivative(t: f32) -> f32 {
+    60.0 * t * (2.0 * t - 1.0) * (t - 1.0)
+}
+
 /// `a + t (b − a)`, as in the reference (`t = 0` gives `a`, `t = 1` gives `b`).
 #[inline]
 fn lerp(t: f32, a: f32, b: f32) -> f32 {
@@ -176,6 +183,17 @@ impl Permutation {
     pub fn hash2(&self, i: i32, j: i32) -> usize {
         let (x, y) = ((i & 255) as usize, (j & 255) as usize);
         self.at(self.at(self.at(x) + y))
+    }
+
+    /// The hash of lattice point `(i, j, k)` of the 3D noise, as the reference computes it.
+    pub fn hash3(&self, i: i32, j: i32, k: i32) -> usize {
+        let (x, y, z) = ((i & 255) as usize, (j & 255) as usize, (k & 255) as usize);
+        self.at(self.at(self.at(x) + y) + z)
+    }
+
+    /// The gradient of the 3D noise at lattice point `(i, j, k)` (one of [`GRAD3`]).
+    pub fn gradient3(&self, i: i32, j: i32, k: i32) -> Vec3 {
+        Vec3::from(GRAD3[self.hash3(i, j, k) & 15])
     }
 
     /// The hash of lattice point `i` of the 1D noise.

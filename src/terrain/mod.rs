@@ -126,6 +126,29 @@ pub fn terrain_normal(h: f32, s: f32, grad_g: Vec2) -> Vec3 {
     height_field_normal(h * s * grad_g.x, h * s * grad_g.y)
 }
 
+/// The last octave a mesh of `resolution` vertices per side over `[−1, 1]` can show, for a
+/// terrain of scale `s` and frequency gain `omega`. Octave k has noise cells `1/(s ωᵏ)` metres
+/// wide and the vertices are `Δ = 2/(resolution − 1)` apart; a cell narrower than `2Δ` gets
+/// fewer than two vertices (past the Nyquist limit of the mesh), so its bumps fall between
+/// vertices and come back as spikes of the wrong size (aliasing). Octave k is kept while
+/// `s ωᵏ ≤ 1/(2Δ) = (resolution − 1)/4`. `None` when even octave 0 is too fine; with `ω = 1`
+/// every octave has octave 0's cells, so all of them are kept ([`crate::noise::MAX_N`]).
+pub fn last_resolved_octave(resolution: usize, s: f32, omega: f32) -> Option<u32> {
+    let limit = resolution.saturating_sub(1) as f32 / 4.0;
+    // A relative slack so that a cell of exactly 2Δ (s ωᵏ = limit) counts as resolved.
+    let fits = |freq: f32| freq <= limit * (1.0 + 1e-6);
+    if !fits(s) {
+        return None;
+    }
+    let mut k = 0;
+    let mut freq = s;
+    while k < crate::noise::MAX_N && fits(freq * omega) {
+        freq *= omega;
+        k += 1;
+    }
+    Some(k)
+}
+
 /// A colour for a terrain vertex from its height (metres) and its normal: water-blue in the lowest
 /// parts (below `−0.3 · h_max`), sand, then grass, rock on slopes steeper than about 35°, snow
 /// above `0.45 · h_max` on flat ground. Linear RGBA.

@@ -93,7 +93,7 @@ impl Noise1dScene {
     pub fn set_use_exercise(&mut self, on: bool) {
         self.scene.set_use_exercise(on);
     }
-    /// `[t₀, fade₀, fade′₀, smoothstep₀, t₁, …]`.
+    /// `[t₀, fade₀, fade′₀, smoothstep₀, fade″₀, smoothstep″₀, t₁, …]` (six numbers per row).
     #[wasm_bindgen(js_name = sampleFade)]
     pub fn sample_fade(&self, samples: usize) -> Result<Vec<f32>, JsError> {
         Ok(self.scene.sample_fade(samples).map_err(js)?.concat())
@@ -148,7 +148,7 @@ impl Noise2dScene {
     pub fn set_probe(&mut self, x: f32, y: f32) -> Result<(), JsError> {
         self.scene.set_probe(x, y).map_err(js)
     }
-    /// Compares the student's `perlin_cell` (exercise 5.2) at the probe.
+    /// Draws the student's `perlin_cell` (exercise 5.2) over the probe's cell and compares it.
     #[wasm_bindgen(js_name = setUseExercise)]
     pub fn set_use_exercise(&mut self, on: bool) {
         self.scene.set_use_exercise(on);
@@ -190,10 +190,20 @@ impl OctavesScene {
     pub fn set_params(&mut self, n: f32, alpha: f32, omega: f32) -> Result<(), JsError> {
         self.scene.set_params(n, alpha, omega).map_err(js)
     }
-    /// Compares the student's `fractal_sum` (exercise 5.3) at a fixed point.
+    /// Draws the student's `fractal_sum` (exercise 5.3) along the profile and compares it there.
     #[wasm_bindgen(js_name = setUseExercise)]
     pub fn set_use_exercise(&mut self, on: bool) {
         self.scene.set_use_exercise(on);
+    }
+    /// Leaves the octaves finer than the mesh out of the surface.
+    #[wasm_bindgen(js_name = setBandLimit)]
+    pub fn set_band_limit(&mut self, on: bool) {
+        self.scene.set_band_limit(on);
+    }
+    /// The last octave the mesh shows faithfully at the current ω (−1: not even octave 0).
+    #[wasm_bindgen(js_name = lastResolvedOctave)]
+    pub fn last_resolved_octave(&self) -> i32 {
+        self.scene.last_resolved_octave().map_or(-1, |k| k as i32)
     }
     /// `[u₀, octave 0, …, octave 9, sum, u₁, …]` (12 numbers per row, NaN above N).
     #[wasm_bindgen(js_name = sampleOctaves)]
@@ -265,10 +275,15 @@ impl TerrainFigureScene {
     pub fn advance(&mut self, dt_sec: f32) -> Result<(), JsError> {
         self.scene.advance(dt_sec).map_err(js)
     }
-    /// Compares the student's `terrain_normal` (exercise 5.4) at the probe vertex.
+    /// Compares the student's `terrain_normal` (exercise 5.4) at the probe vertex and others.
     #[wasm_bindgen(js_name = setUseExercise)]
     pub fn set_use_exercise(&mut self, on: bool) {
         self.scene.set_use_exercise(on);
+    }
+    /// Leaves the octaves finer than the mesh out of the surface.
+    #[wasm_bindgen(js_name = setBandLimit)]
+    pub fn set_band_limit(&mut self, on: bool) {
+        self.scene.set_band_limit(on);
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let start = now_ms();
