@@ -104,6 +104,74 @@ impl OrbitCamera {
     }
 }
 
+/// Space kept between the points a camera fits and the canvas's edges, CSS pixels (room for a
+/// label beside an anchor near the edge).
+pub const FIT_PAD_PX: f32 = 32.0;
+
+impl OrbitCamera {
+    /// Aims the camera so that every one of `points` lies inside a canvas of `size_px` CSS
+    /// pixels, at least `pad_px` from its edges, keeping the yaw and pitch (the reader's orbit):
+    /// the target moves to the middle of the points as seen from this direction and the
+    /// distance becomes the smallest that fits them all. Returns false, changing nothing, when
+    /// there are no finite points or the canvas is too small for the padding.
+    pub fn fit(&mut self, points: &[Vec3], size_px: Vec2, pad_px: f32) -> bool {
+        let points: Vec<Vec3> = points.iter().copied().filter(|p| p.is_finite()).collect();
+        if points.is_empty() || !size_px.is_finite() || !pad_px.is_finite() {
+            return false;
+        }
+        let usable = Vec2::ONE - 2.0 * pad_px.max(0.0) / size_px;
+        if usable.min_element() <= 0.05 {
+            return false;
+        }
+        let (sy, cy) = self.yaw_rad.sin_cos();
+        let (sp, cp) = self.pitch_rad.sin_cos();
+        // Unit vectors of the view: `back` points from the target to the eye.
+        let back = Vec3::new(cp * sy, sp, cp * cy);
+        let right = Vec3::Y.cross(back).normalize();
+        let up = back.cross(right);
+        let tan_y = (0.5 * self.fov_y_rad).tan() * usable.y;
+        let tan_x = (0.5 * self.fov_y_rad).tan() * size_px.x / size_px.y * usable.x;
+        let (lo, hi) = points.iter().fold(
+            (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+        );
+        let mut target = 0.5 * (lo + hi);
+        // The smallest distance from `target` that shows every point: a point at (x, y) in the
+        // view plane and `z` towards the eye is seen at depth distance − z, and fits when
+        // |x| ≤ tan_x · depth and |y| ≤ tan_y · depth. The depth also stays past the near plane.
+        let needed = |target: Vec3| {
+            points.iter().fold(MIN_DISTANCE.max(self.near), |d, p| {
+                let v = *p - target;
+                let z = v.dot(back);
+                let fit = (v.dot(right).abs() / tan_x).max(v.dot(up).abs() / tan_y);
+                d.max(fit + z).max(2.0 * self.near + z)
+            })
+        };
+        // Twice: centre the points' image on the canvas (in the view plane), then fit again.
+        for _ in 0..2 {
+            let distance = needed(target);
+            let eye = target + back * distance;
+            let (mut x_lo, mut x_hi, mut y_lo, mut y_hi) = (f32::MAX, f32::MIN, f32::MAX, f32::MIN);
+            for p in &points {
+                let v = *p - eye;
+                let depth = -v.dot(back);
+                let (x, y) = (v.dot(right) / depth, v.dot(up) / depth);
+                (x_lo, x_hi, y_lo, y_hi) = (x_lo.min(x), x_hi.max(x), y_lo.min(y), y_hi.max(y));
+            }
+            // Shift by the middle of the image, scaled back to the target's depth.
+            let shift = right * 0.5 * (x_lo + x_hi) + up * 0.5 * (y_lo + y_hi);
+            target += shift * distance;
+        }
+        let distance = needed(target);
+        if !target.is_finite() || !distance.is_finite() {
+            return false;
+        }
+        self.target = target;
+        self.distance = distance.min(self.far * 0.5);
+        true
+    }
+}
+
 /// Where `world` lands on a canvas of `size` CSS pixels seen through `view_proj`, in pixels from
 /// the top-left; `None` behind the camera. (Picking in the figures: what is under the mouse.)
 pub fn project_to_canvas(view_proj: Mat4, size: Vec2, world: Vec3) -> Option<Vec2> {

@@ -9,6 +9,8 @@
 //! `www/palette.css` gives the same colours to the words of the text.
 
 pub use crate::texture::{SpriteInstance, TextureId, TexturedQuad, UvRect};
+
+pub mod layout;
 use glam::{Mat4, Quat, Vec3, Vec4};
 
 /// A mesh known to a renderer. The first three are created by every renderer, in this order.
@@ -65,6 +67,93 @@ pub struct PointInstance {
     pub color: [f32; 4],
 }
 
+/// One segment of a wide line, laid out as the GPU reads it: the vertex shader turns it into a
+/// screen-space quad `width_px` CSS pixels wide with round ends, so consecutive segments of a
+/// polyline join without gaps at any angle (see [`Frame::stroke`]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StrokeSegment {
+    /// World space.
+    pub a: [f32; 3],
+    /// Width in CSS pixels, in [`MIN_WIDTH_PX`, `MAX_WIDTH_PX`].
+    pub width_px: f32,
+    /// World space.
+    pub b: [f32; 3],
+    /// As [`LineVertex::depth_bias`].
+    pub depth_bias: f32,
+    /// Linear RGBA.
+    pub color: [f32; 4],
+    /// Dashes: distance along the whole line at `a` and at `b`, dash length, gap length, all in
+    /// metres (world units). A gap of 0 is a solid line.
+    pub dash: [f32; 4],
+}
+
+/// A marker drawn at a fixed size on screen (it stays visible however far the camera zooms out),
+/// with a white-and-dark outline that shows on light and dark backgrounds alike. Laid out as the
+/// GPU reads it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MarkerInstance {
+    /// World space.
+    pub center: [f32; 3],
+    /// Diameter (a dot) or length across the path (a tick), in CSS pixels, outline included;
+    /// negative: drawn over everything.
+    pub size_px: f32,
+    /// Linear RGBA.
+    pub color: [f32; 4],
+    /// A tick's path direction here (world space); unused by dots.
+    pub tangent: [f32; 3],
+    /// [`MARKER_DOT`] or [`MARKER_TICK`].
+    pub shape: f32,
+}
+
+/// [`MarkerInstance::shape`]: a filled disc.
+pub const MARKER_DOT: f32 = 0.0;
+/// [`MarkerInstance::shape`]: a short bar across a path (equal-time ticks).
+pub const MARKER_TICK: f32 = 1.0;
+/// The narrowest and widest stroke, in CSS pixels.
+pub const MIN_WIDTH_PX: f32 = 1.0;
+pub const MAX_WIDTH_PX: f32 = 6.0;
+/// The smallest and largest marker, in CSS pixels.
+pub const MIN_MARKER_PX: f32 = 4.0;
+pub const MAX_MARKER_PX: f32 = 32.0;
+/// Default widths: a curve or path, a bone or arrow shaft, a dot, a tick.
+pub const CURVE_PX: f32 = 2.5;
+pub const ARROW_PX: f32 = 2.5;
+pub const DOT_PX: f32 = 10.0;
+pub const TICK_PX: f32 = 10.0;
+
+/// How a wide line looks ([`Frame::stroke`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StrokeStyle {
+    /// CSS pixels; clamped to [`MIN_WIDTH_PX`, `MAX_WIDTH_PX`] (NaN draws 1 px).
+    pub width_px: f32,
+    /// Dash and gap lengths in metres along the line; `None`: solid.
+    pub dash_m: Option<(f32, f32)>,
+    /// Drawn over everything (bones inside a body), as [`Frame::line_on_top`].
+    pub on_top: bool,
+}
+
+impl StrokeStyle {
+    /// A solid line `width_px` CSS pixels wide.
+    pub fn solid(width_px: f32) -> Self {
+        Self {
+            width_px,
+            dash_m: None,
+            on_top: false,
+        }
+    }
+
+    /// A dashed line: `dash_m` metres drawn, `gap_m` metres left out, in turn.
+    pub fn dashed(width_px: f32, dash_m: f32, gap_m: f32) -> Self {
+        Self {
+            width_px,
+            dash_m: Some((dash_m, gap_m)),
+            on_top: false,
+        }
+    }
+}
+
 /// A text label anchored at a 3D point; the page draws it as HTML over the canvas.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Label {
@@ -75,6 +164,9 @@ pub struct Label {
     pub color: Vec3,
     /// The text ends at the anchor instead of starting there ([`Frame::label_left`]).
     pub left: bool,
+    /// Where labels crowd, a higher priority keeps its place and a lower one moves or hides
+    /// (see [`layout`]); equal priorities go in the order they were added.
+    pub priority: i32,
 }
 
 /// Depth bias of axes and arrows (see [`LineVertex::depth_bias`]).
@@ -100,6 +192,14 @@ pub struct Frame {
     /// in this order (list them back to front).
     pub sprites: Vec<SpriteInstance>,
     pub sprite_texture: Option<TextureId>,
+    /// Wide lines, one instance per segment (see [`StrokeSegment`]).
+    pub strokes: Vec<StrokeSegment>,
+    /// Dots and ticks of a fixed size on screen (see [`MarkerInstance`]).
+    pub markers: Vec<MarkerInstance>,
+    /// Points that must stay in view: the viewer fits its camera to them (with the label
+    /// anchors) at any canvas size, keeping the reader's orbit. Empty: the figure places its
+    /// camera itself.
+    pub keep_in_view: Vec<Vec3>,
 }
 
 /// A mesh made with the renderer's GPU-skinning path (`Renderer::skin`), by creation order.
@@ -199,6 +299,124 @@ impl Frame {
         });
     }
 
+    /// A wide line through `points` in `style`: one [`StrokeSegment`] per consecutive pair, with
+    /// the distance along the line carried from segment to segment so dashes run on across the
+    /// joins. Segments with a non-finite end are left out (the line breaks there).
+    pub fn stroke(&mut self, points: &[Vec3], color: Vec3, style: StrokeStyle) {
+        let width_px = if style.width_px.is_nan() {
+            MIN_WIDTH_PX
+        } else {
+            style.width_px.clamp(MIN_WIDTH_PX, MAX_WIDTH_PX)
+        };
+        let (dash, gap) = match style.dash_m {
+            Some((d, g)) if d.is_finite() && g.is_finite() && d > 0.0 && g > 0.0 => (d, g),
+            _ => (1.0, 0.0),
+        };
+        let depth_bias = if style.on_top { ON_TOP } else { OVERLAY_BIAS };
+        let color = color.extend(1.0).to_array();
+        let mut along = 0.0;
+        for pair in points.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            if !a.is_finite() || !b.is_finite() {
+                continue;
+            }
+            let next = along + a.distance(b);
+            self.strokes.push(StrokeSegment {
+                a: a.to_array(),
+                width_px,
+                b: b.to_array(),
+                depth_bias,
+                color,
+                dash: [along, next, dash, gap],
+            });
+            along = next;
+        }
+    }
+
+    /// A solid wide line from `a` to `b`, `width_px` CSS pixels wide.
+    pub fn wide_line(&mut self, a: Vec3, b: Vec3, color: Vec3, width_px: f32) {
+        self.stroke(&[a, b], color, StrokeStyle::solid(width_px));
+    }
+
+    /// A solid wide line through `points` (a curve, a path, a trajectory).
+    pub fn wide_polyline(&mut self, points: &[Vec3], color: Vec3, width_px: f32) {
+        self.stroke(points, color, StrokeStyle::solid(width_px));
+    }
+
+    /// A [`Frame::wide_line`] drawn over everything (a bone inside a body).
+    pub fn wide_line_on_top(&mut self, a: Vec3, b: Vec3, color: Vec3, width_px: f32) {
+        let style = StrokeStyle {
+            on_top: true,
+            ..StrokeStyle::solid(width_px)
+        };
+        self.stroke(&[a, b], color, style);
+    }
+
+    /// A dot `size_px` CSS pixels across at `center`, outlined, the same size at any distance.
+    pub fn marker(&mut self, center: Vec3, size_px: f32, color: Vec3) {
+        self.push_marker(center, size_px, color, Vec3::ZERO, MARKER_DOT, false);
+    }
+
+    /// A [`Frame::marker`] drawn over everything (a joint inside a body).
+    pub fn marker_on_top(&mut self, center: Vec3, size_px: f32, color: Vec3) {
+        self.push_marker(center, size_px, color, Vec3::ZERO, MARKER_DOT, true);
+    }
+
+    /// Equal-time ticks: `samples` are the positions of something at equal time steps; each gets
+    /// a short bar across the path (`size_px` long on screen), so close ticks read as slow and
+    /// spread ones as fast. The path's direction at a tick comes from its neighbours.
+    pub fn ticks(&mut self, samples: &[Vec3], size_px: f32, color: Vec3) {
+        let n = samples.len();
+        for (i, p) in samples.iter().enumerate() {
+            let before = samples[i.saturating_sub(1)];
+            let after = samples[(i + 1).min(n - 1)];
+            let tangent = (after - before).try_normalize().unwrap_or(Vec3::ZERO);
+            self.push_marker(*p, size_px, color, tangent, MARKER_TICK, false);
+        }
+    }
+
+    fn push_marker(
+        &mut self,
+        center: Vec3,
+        size_px: f32,
+        color: Vec3,
+        tangent: Vec3,
+        shape: f32,
+        on_top: bool,
+    ) {
+        if !center.is_finite() {
+            return;
+        }
+        let size = if size_px.is_nan() {
+            DOT_PX
+        } else {
+            size_px.clamp(MIN_MARKER_PX, MAX_MARKER_PX)
+        };
+        self.markers.push(MarkerInstance {
+            center: center.to_array(),
+            size_px: if on_top { -size } else { size },
+            color: color.extend(1.0).to_array(),
+            tangent: tangent.to_array(),
+            shape,
+        });
+    }
+
+    /// Declares that the box from `min` to `max` must stay in view (see [`Frame::keep_in_view`]):
+    /// its eight corners join the points the camera fits.
+    pub fn keep_box_in_view(&mut self, min: Vec3, max: Vec3) {
+        for i in 0..8 {
+            let pick = |bit: usize, lo: f32, hi: f32| if i & bit == 0 { lo } else { hi };
+            let corner = Vec3::new(
+                pick(1, min.x, max.x),
+                pick(2, min.y, max.y),
+                pick(4, min.z, max.z),
+            );
+            if corner.is_finite() {
+                self.keep_in_view.push(corner);
+            }
+        }
+    }
+
     /// A [`Frame::line`] drawn over everything (the bones of a skeleton inside a body).
     pub fn line_on_top(&mut self, a: Vec3, b: Vec3, color: Vec3) {
         self.biased_line(a, b, color, ON_TOP);
@@ -216,7 +434,7 @@ impl Frame {
         let dir = v / length;
         let head = head.min(0.4 * length).max(0.0);
         let base = to - dir * head;
-        self.biased_line(from, base, color, OVERLAY_BIAS);
+        self.stroke(&[from, base], color, StrokeStyle::solid(ARROW_PX));
         let model = Mat4::from_scale_rotation_translation(
             Vec3::new(head * 0.35, head, head * 0.35),
             Quat::from_rotation_arc(Vec3::Y, dir),
@@ -232,7 +450,22 @@ impl Frame {
             text: text.into(),
             color,
             left: false,
+            priority: 0,
         });
+    }
+
+    /// A [`Frame::label`] with a `priority`: where labels crowd, the higher one keeps its place.
+    pub fn label_with_priority(
+        &mut self,
+        anchor: Vec3,
+        text: impl Into<String>,
+        color: Vec3,
+        priority: i32,
+    ) {
+        self.label(anchor, text, color);
+        if let Some(last) = self.labels.last_mut() {
+            last.priority = priority;
+        }
     }
 
     /// A text label that ends at `anchor` (it reads leftwards from there): for a label that
@@ -243,6 +476,7 @@ impl Frame {
             text: text.into(),
             color,
             left: true,
+            priority: 0,
         });
     }
 
@@ -300,6 +534,9 @@ impl Frame {
         self.quads.clear();
         self.sprites.clear();
         self.sprite_texture = None;
+        self.strokes.clear();
+        self.markers.clear();
+        self.keep_in_view.clear();
     }
 
     /// Draws `uv` of `texture` on the square `[−1, 1]²` of the xz plane placed by `model`.
@@ -366,10 +603,30 @@ impl Frame {
             eat(s.half_size.to_bits());
         }
         eat(self.sprite_texture.map_or(u32::MAX, |t| t.0 as u32));
+        for s in &self.strokes {
+            s.a.iter()
+                .chain(&s.b)
+                .chain(&s.color)
+                .chain(&s.dash)
+                .chain(&[s.width_px, s.depth_bias])
+                .for_each(|x| eat(x.to_bits()));
+        }
+        for m in &self.markers {
+            m.center
+                .iter()
+                .chain(&m.color)
+                .chain(&m.tangent)
+                .chain(&[m.size_px, m.shape])
+                .for_each(|x| eat(x.to_bits()));
+        }
+        for p in &self.keep_in_view {
+            p.to_array().iter().for_each(|x| eat(x.to_bits()));
+        }
         for l in &self.labels {
             l.anchor.to_array().iter().for_each(|x| eat(x.to_bits()));
             l.text.bytes().for_each(|b| eat(b as u32));
             eat(l.left as u32);
+            eat(l.priority as u32);
         }
         for s in &self.skinned {
             eat(s.mesh.0 as u32 | (s.dqs as u32) << 31);
@@ -385,16 +642,22 @@ impl Frame {
         h
     }
 
-    /// The segments as `(a, b, colour)`, for tests and for scenes that inspect what they drew.
+    /// The segments as `(a, b, colour)`, thin lines first, then wide ones: for tests and for
+    /// scenes that inspect what they drew.
     pub fn segments(&self) -> impl Iterator<Item = (Vec3, Vec3, Vec3)> + '_ {
-        self.lines.chunks_exact(2).map(|pair| {
+        let thin = self.lines.chunks_exact(2).map(|pair| {
             let c = pair[0].color;
             (
                 Vec3::from(pair[0].position),
                 Vec3::from(pair[1].position),
                 Vec3::new(c[0], c[1], c[2]),
             )
-        })
+        });
+        let wide = self.strokes.iter().map(|s| {
+            let c = s.color;
+            (Vec3::from(s.a), Vec3::from(s.b), Vec3::new(c[0], c[1], c[2]))
+        });
+        thin.chain(wide)
     }
 
     /// The segments drawn in exactly `color` (tests: "the path passes through every key").
@@ -417,6 +680,8 @@ pub struct ScreenLabel {
     pub css_color: String,
     /// The text ends at `(x_px, y_px)` instead of starting there.
     pub left: bool,
+    /// As [`Label::priority`].
+    pub priority: i32,
 }
 
 /// Projects labels with `view_proj` (world to clip space, depth in [0, 1]) onto a canvas of
@@ -443,9 +708,62 @@ pub fn project_labels(
                 text: label.text.clone(),
                 css_color: palette::css(label.color),
                 left: label.left,
+                priority: label.priority,
             }
         })
         .collect()
+}
+
+/// Where the stroke shader (`render/shaders/stroke.wgsl`) puts the corners of `segment`'s quad,
+/// in device pixels from the top-left of a `viewport_px` target with `px_per_css` device pixels
+/// per CSS pixel: `[a − side, b − side, b + side, a + side]` (each end pushed out along the
+/// segment by the same reach, for the round caps), and the half width that is drawn solid. The
+/// quad reaches one pixel past the half width for the antialiased edge. `None` when the segment
+/// lies wholly in front of the near plane.
+pub fn stroke_corners(
+    segment: &StrokeSegment,
+    view_proj: Mat4,
+    viewport_px: glam::Vec2,
+    px_per_css: f32,
+) -> Option<([glam::Vec2; 4], f32)> {
+    use glam::Vec2;
+    let ca0 = view_proj * Vec3::from(segment.a).extend(1.0);
+    let cb0 = view_proj * Vec3::from(segment.b).extend(1.0);
+    if ca0.z < 0.0 && cb0.z < 0.0 {
+        return None;
+    }
+    let near = |p: Vec4, q: Vec4| {
+        if p.z >= 0.0 {
+            p
+        } else {
+            p.lerp(q, p.z / (p.z - q.z))
+        }
+    };
+    let (ca, cb) = (near(ca0, cb0), near(cb0, ca0));
+    let half_viewport = 0.5 * viewport_px;
+    let sa = ca.truncate().truncate() / ca.w * half_viewport;
+    let sb = cb.truncate().truncate() / cb.w * half_viewport;
+    let length = sa.distance(sb);
+    let dir = if length > 1e-4 {
+        (sb - sa) / length
+    } else {
+        Vec2::X
+    };
+    let normal = dir.perp();
+    let half_width = 0.5 * segment.width_px * px_per_css;
+    let reach = half_width + 1.0;
+    // From the shader's y-up pixels about the centre to the canvas's y-down pixels.
+    let to_canvas = |p: Vec2| Vec2::new(p.x + half_viewport.x, half_viewport.y - p.y);
+    let corner = |s: Vec2, end: f32, side: f32| to_canvas(s + dir * end * reach + normal * side * reach);
+    Some((
+        [
+            corner(sa, -1.0, -1.0),
+            corner(sb, 1.0, -1.0),
+            corner(sb, 1.0, 1.0),
+            corner(sa, -1.0, 1.0),
+        ],
+        half_width,
+    ))
 }
 
 /// The course's named colours (linear RGB). `www/palette.css` defines the same colours as CSS
@@ -521,13 +839,14 @@ mod tests {
     fn arrow_is_a_shaft_and_a_cone_ending_at_the_tip() {
         let mut f = Frame::default();
         f.arrow(Vec3::ZERO, Vec3::new(0.0, 0.0, 2.0), palette::BLUE, 0.3);
-        assert_eq!(f.lines.len(), 2);
+        assert_eq!(f.strokes.len(), 1);
+        assert_eq!(f.strokes[0].width_px, ARROW_PX);
         assert_eq!(f.meshes.len(), 1);
         let tip = f.meshes[0].model.transform_point3(Vec3::Y);
         assert!((tip - Vec3::new(0.0, 0.0, 2.0)).length() < 1e-5, "{tip}");
         f.clear();
         f.arrow(Vec3::ONE, Vec3::ONE, palette::BLUE, 0.3);
-        assert!(f.lines.is_empty() && f.meshes.is_empty());
+        assert!(f.strokes.is_empty() && f.meshes.is_empty());
     }
 
     #[test]
@@ -552,12 +871,14 @@ mod tests {
                     text: "c".into(),
                     color: Vec3::ONE,
                     left: false,
+                    priority: 0,
                 },
                 Label {
                     anchor: cam.eye() + (cam.eye() - cam.target),
                     text: "b".into(),
                     color: Vec3::ONE,
                     left: true,
+                    priority: 0,
                 },
             ],
             vp,

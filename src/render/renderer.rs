@@ -3,7 +3,7 @@
 use super::Gpu;
 use crate::camera::OrbitCamera;
 pub use crate::draw::{Frame, MeshId};
-use crate::draw::{LineVertex, PointInstance};
+use crate::draw::{LineVertex, MarkerInstance, PointInstance, StrokeSegment};
 use crate::mesh::MeshData;
 use bytemuck::{Pod, Zeroable};
 use glam::{Vec3, Vec4};
@@ -95,6 +95,10 @@ unsafe impl Zeroable for LineVertex {}
 unsafe impl Pod for LineVertex {}
 unsafe impl Zeroable for PointInstance {}
 unsafe impl Pod for PointInstance {}
+unsafe impl Zeroable for StrokeSegment {}
+unsafe impl Pod for StrokeSegment {}
+unsafe impl Zeroable for MarkerInstance {}
+unsafe impl Pod for MarkerInstance {}
 
 struct GpuMesh {
     vertices: wgpu::Buffer,
@@ -165,6 +169,8 @@ pub struct Renderer {
     mesh_pipeline: wgpu::RenderPipeline,
     line_pipeline: wgpu::RenderPipeline,
     point_pipeline: wgpu::RenderPipeline,
+    stroke_pipeline: wgpu::RenderPipeline,
+    marker_pipeline: wgpu::RenderPipeline,
     globals: wgpu::Buffer,
     globals_group: wgpu::BindGroup,
     object_layout: wgpu::BindGroupLayout,
@@ -172,6 +178,10 @@ pub struct Renderer {
     object_group: wgpu::BindGroup,
     lines: StreamBuffer,
     points: StreamBuffer,
+    strokes: StreamBuffer,
+    markers: StreamBuffer,
+    /// Device pixels per CSS pixel: wide lines and markers are sized in CSS pixels.
+    pub px_per_css: f32,
     /// Indexed by `MeshId`; `None` once freed (ids are never reused, so a stale id draws nothing).
     meshes: Vec<Option<GpuMesh>>,
     targets: Option<Targets>,
@@ -266,6 +276,8 @@ impl Renderer {
         let mesh_shader = shader("mesh", include_str!("shaders/mesh.wgsl"));
         let line_shader = shader("line", include_str!("shaders/line.wgsl"));
         let point_shader = shader("point", include_str!("shaders/point.wgsl"));
+        let stroke_shader = shader("stroke", include_str!("shaders/stroke.wgsl"));
+        let marker_shader = shader("marker", include_str!("shaders/marker.wgsl"));
         let layout_with = |layouts: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: None,
@@ -282,6 +294,12 @@ impl Renderer {
             wgpu::vertex_attr_array![0 => Float32x3, 2 => Float32, 1 => Float32x4];
         let point_attributes =
             wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32, 2 => Float32x4];
+        let stroke_attributes = wgpu::vertex_attr_array![
+            0 => Float32x3, 1 => Float32, 2 => Float32x3, 3 => Float32, 4 => Float32x4, 5 => Float32x4
+        ];
+        let marker_attributes = wgpu::vertex_attr_array![
+            0 => Float32x3, 1 => Float32, 2 => Float32x4, 3 => Float32x3, 4 => Float32
+        ];
         let make = |label: &str,
                     layout: &wgpu::PipelineLayout,
                     module: &wgpu::ShaderModule,
@@ -338,6 +356,30 @@ impl Renderer {
             wgpu::PrimitiveTopology::TriangleList,
             None,
         );
+        let stroke_pipeline = make(
+            "stroke",
+            &plain_layout,
+            &stroke_shader,
+            wgpu::VertexBufferLayout {
+                array_stride: std::mem::size_of::<StrokeSegment>() as u64,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &stroke_attributes,
+            },
+            wgpu::PrimitiveTopology::TriangleList,
+            None,
+        );
+        let marker_pipeline = make(
+            "marker",
+            &plain_layout,
+            &marker_shader,
+            wgpu::VertexBufferLayout {
+                array_stride: std::mem::size_of::<MarkerInstance>() as u64,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &marker_attributes,
+            },
+            wgpu::PrimitiveTopology::TriangleList,
+            None,
+        );
         let textured = super::texture::Textured::new(
             device,
             format,
@@ -349,6 +391,8 @@ impl Renderer {
             mesh_pipeline,
             line_pipeline,
             point_pipeline,
+            stroke_pipeline,
+            marker_pipeline,
             globals,
             globals_group,
             object_layout,
@@ -356,6 +400,9 @@ impl Renderer {
             object_group,
             lines: StreamBuffer::new(device, "lines", wgpu::BufferUsages::VERTEX, 1 << 16),
             points: StreamBuffer::new(device, "points", wgpu::BufferUsages::VERTEX, 1 << 12),
+            strokes: StreamBuffer::new(device, "strokes", wgpu::BufferUsages::VERTEX, 1 << 14),
+            markers: StreamBuffer::new(device, "markers", wgpu::BufferUsages::VERTEX, 1 << 12),
+            px_per_css: 1.0,
             meshes: Vec::new(),
             targets: None,
             format,
@@ -600,6 +647,7 @@ impl Renderer {
             .flat_map(|m| m.to_cols_array())
             .chain(self.light_dir.to_array())
             .chain(self.clear_srgb.to_array())
+            .chain([self.px_per_css])
             .map(|x| x.to_bits() as u64)
             .chain([
                 fingerprint,
@@ -738,7 +786,12 @@ impl Renderer {
             proj: camera.projection(aspect).to_cols_array(),
             eye: camera.eye().extend(1.0).to_array(),
             light_dir: self.light_dir.normalize().extend(0.0).to_array(),
-            params: [if self.encode_srgb { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0],
+            params: [
+                if self.encode_srgb { 1.0 } else { 0.0 },
+                size.0 as f32,
+                size.1 as f32,
+                self.px_per_css,
+            ],
         };
         gpu.queue
             .write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
@@ -773,6 +826,10 @@ impl Renderer {
             .write(gpu, bytemuck::cast_slice(&self.frame.lines));
         self.points
             .write(gpu, bytemuck::cast_slice(&self.frame.points));
+        self.strokes
+            .write(gpu, bytemuck::cast_slice(&self.frame.strokes));
+        self.markers
+            .write(gpu, bytemuck::cast_slice(&self.frame.markers));
         self.skin.prepare(gpu, &self.frame);
 
         self.textured.prepare(gpu, &self.frame);
@@ -844,6 +901,18 @@ impl Renderer {
                 pass.set_pipeline(&self.point_pipeline);
                 pass.set_vertex_buffer(0, buffer.slice(..));
                 pass.draw(0..6, 0..count);
+            }
+            // Wide lines and markers after everything opaque: their antialiased edges blend
+            // over what lies behind them.
+            if !self.frame.strokes.is_empty() {
+                pass.set_pipeline(&self.stroke_pipeline);
+                pass.set_vertex_buffer(0, self.strokes.buffer.slice(..));
+                pass.draw(0..6, 0..self.frame.strokes.len() as u32);
+            }
+            if !self.frame.markers.is_empty() {
+                pass.set_pipeline(&self.marker_pipeline);
+                pass.set_vertex_buffer(0, self.markers.buffer.slice(..));
+                pass.draw(0..6, 0..self.frame.markers.len() as u32);
             }
             self.textured
                 .draw(&mut pass, &self.frame, &self.gpu_sprites);

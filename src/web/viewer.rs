@@ -26,6 +26,15 @@ pub struct Viewer {
     hidden: crate::draw::Frame,
     /// Whether `hidden` holds a frame not drawn yet.
     pending: bool,
+    /// Whether the camera fits the frame's declared points ([`crate::draw::Frame::keep_in_view`])
+    /// at every present: on until the reader zooms or pans (orbiting keeps it), back on with
+    /// [`Viewer::frame_all`].
+    fitting: bool,
+    /// Whether the last presented frame declared points to keep in view.
+    declares_view: bool,
+    /// The camera the figure placed with `setCamera` (or the default): "frame all" returns to it
+    /// when the figure declares nothing to keep in view.
+    home: OrbitCamera,
 }
 
 #[wasm_bindgen]
@@ -48,6 +57,9 @@ impl Viewer {
             visible: true,
             hidden: crate::draw::Frame::default(),
             pending: false,
+            fitting: true,
+            declares_view: false,
+            home: OrbitCamera::default(),
         })
     }
 
@@ -76,6 +88,7 @@ impl Viewer {
             .resize((w * dpr).round() as u32, (h * dpr).round() as u32);
         // The page set the canvas's width and height, which clears it.
         self.renderer.canvas_cleared();
+        self.renderer.px_per_css = dpr;
         self.css_size = (w.max(1.0), h.max(1.0));
         Ok(())
     }
@@ -91,16 +104,16 @@ impl Viewer {
     pub fn zoom(&mut self, factor: f32) -> Result<(), JsError> {
         self.camera
             .zoom(super::in_range("zoom factor", factor, 0.01, 100.0)?);
+        self.fitting = false;
         Ok(())
     }
 
     /// Moves the camera target by a drag of `(dx, dy)` CSS pixels on a canvas `height_px` tall.
     pub fn pan(&mut self, dx_px: f32, dy_px: f32, height_px: f32) -> Result<(), JsError> {
         let h = super::in_range("height", height_px, 1.0, 1e5)?;
-        self.camera.pan(
-            super::finite("dx", dx_px)? / h,
-            super::finite("dy", dy_px)? / h,
-        );
+        let (dx, dy) = (super::finite("dx", dx_px)?, super::finite("dy", dy_px)?);
+        self.camera.pan(dx / h, dy / h);
+        self.fitting = false;
         Ok(())
     }
 
@@ -128,6 +141,7 @@ impl Viewer {
         let placed = OrbitCamera::from_view([x, y, z, distance, yaw_rad, pitch_rad]);
         (self.camera.target, self.camera.distance) = (placed.target, placed.distance);
         (self.camera.yaw_rad, self.camera.pitch_rad) = (placed.yaw_rad, placed.pitch_rad);
+        self.home = self.camera;
         Ok(())
     }
 
@@ -138,8 +152,11 @@ impl Viewer {
         for (name, v) in [("x", x), ("y", y), ("z", z)] {
             super::finite(name, v)?;
         }
+        let distance = super::in_range("distance", distance, 0.01, 1e4)?;
         self.camera.target = glam::Vec3::new(x, y, z);
-        self.camera.distance = super::in_range("distance", distance, 0.01, 1e4)?;
+        self.camera.distance = distance;
+        // The figure aims the camera itself from now on.
+        self.fitting = false;
         Ok(())
     }
 
@@ -147,6 +164,18 @@ impl Viewer {
     /// first and kept for [`Viewer::labels_json`].
     pub fn present(&mut self) -> Result<(), JsError> {
         let (w, h) = self.css_size;
+        let frame = &self.renderer.frame;
+        self.declares_view = !frame.keep_in_view.is_empty();
+        if self.fitting && self.declares_view {
+            let points: Vec<glam::Vec3> = frame
+                .keep_in_view
+                .iter()
+                .copied()
+                .chain(frame.labels.iter().map(|l| l.anchor))
+                .collect();
+            self.camera
+                .fit(&points, glam::Vec2::new(w, h), crate::camera::FIT_PAD_PX);
+        }
         let view_proj = self.camera.projection(w / h) * self.camera.view();
         self.labels = crate::draw::project_labels(&self.renderer.frame.labels, view_proj, w, h);
         self.last_fingerprint = self.renderer.frame.fingerprint();
@@ -161,6 +190,31 @@ impl Viewer {
         self.renderer
             .render(&self.gpu, &self.camera, self.last_fingerprint)
             .map_err(|e| JsError::new(&e))
+    }
+
+    /// Returns to the fit view: the camera fits what the figure declares must stay in view
+    /// (keeping the reader's orbit) and follows it again; a figure that declares nothing gets
+    /// back the camera it placed. The page calls it from the "frame all" button and on a
+    /// double-click.
+    #[wasm_bindgen(js_name = frameAll)]
+    pub fn frame_all(&mut self) {
+        self.fitting = true;
+        if !self.declares_view {
+            self.camera = self.home;
+        }
+    }
+
+    /// Whether the last frame declared what must stay in view (the page's double-click returns
+    /// to the fit view only then: an editor figure has its own use for a double-click).
+    #[wasm_bindgen(getter, js_name = declaresView)]
+    pub fn declares_view(&self) -> bool {
+        self.declares_view
+    }
+
+    /// Whether the camera follows the figure's declared view (for the page and its tests).
+    #[wasm_bindgen(getter)]
+    pub fn fitting(&self) -> bool {
+        self.fitting && self.declares_view
     }
 
     /// Tells the figure whether its canvas is on screen; coming back, it draws the frame it kept.
@@ -220,6 +274,58 @@ impl Viewer {
         }
         out.push(']');
         out
+    }
+
+    /// Lays the last frame's labels out (see [`crate::draw::layout`]): `sizes` holds each
+    /// label's measured width and height in CSS pixels, in the order of [`Viewer::labels_json`].
+    /// Returns JSON, one entry per label: `{"shown":…,"x":…,"y":…}` (the box's top-left corner),
+    /// with `"lx","ly"` (the anchor) and `"tx","ty"` (the box's nearest point) when a leader
+    /// line joins a moved label to its anchor.
+    #[wasm_bindgen(js_name = placeLabels)]
+    pub fn place_labels(&self, sizes: Vec<f32>) -> Result<String, JsError> {
+        if sizes.len() != 2 * self.labels.len() {
+            return Err(JsError::new(&format!(
+                "placeLabels needs a width and a height for each of the {} labels, got {} numbers",
+                self.labels.len(),
+                sizes.len()
+            )));
+        }
+        for (i, v) in sizes.iter().enumerate() {
+            super::in_range(&format!("label size {i}"), *v, 0.0, 1e5)?;
+        }
+        use crate::draw::layout::{place, LabelBox};
+        let boxes: Vec<LabelBox> = self
+            .labels
+            .iter()
+            .zip(sizes.chunks_exact(2))
+            .map(|(l, s)| LabelBox {
+                anchor: glam::Vec2::new(l.x_px, l.y_px),
+                size: glam::Vec2::new(s[0], s[1]),
+                left: l.left,
+                visible: l.visible,
+                priority: l.priority,
+            })
+            .collect();
+        let canvas = glam::Vec2::new(self.css_size.0, self.css_size.1);
+        let mut out = String::from("[");
+        for (i, (p, b)) in place(&boxes, canvas).iter().zip(&boxes).enumerate() {
+            if i > 0 {
+                out.push(',');
+            }
+            out += &format!(
+                r#"{{"shown":{},"x":{:.1},"y":{:.1}"#,
+                p.shown, p.top_left.x, p.top_left.y
+            );
+            if let Some(t) = p.leader_to.filter(|_| p.shown) {
+                out += &format!(
+                    r#","lx":{:.1},"ly":{:.1},"tx":{:.1},"ty":{:.1}"#,
+                    b.anchor.x, b.anchor.y, t.x, t.y
+                );
+            }
+            out.push('}');
+        }
+        out.push(']');
+        Ok(out)
     }
 }
 

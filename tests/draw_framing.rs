@@ -1,0 +1,90 @@
+//! Native tests of the camera fit (src/camera.rs, `OrbitCamera::fit`): every declared point lands
+//! inside the canvas, clear of the padding, at 800 × 600 and 1600 × 1000 and at any orbit, and the
+//! fit keeps the reader's yaw and pitch.
+
+use glam::{Vec2, Vec3};
+use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+use proptest::prelude::*;
+
+const SIZES: [Vec2; 3] = [Vec2::new(800.0, 600.0), Vec2::new(1600.0, 1000.0), Vec2::new(420.0, 700.0)];
+
+/// Asserts each point is on the canvas at least `pad` (less a hair) from every edge, and that
+/// the view is tight: some point comes within a pixel of the padding.
+fn assert_fits(camera: &OrbitCamera, size: Vec2, points: &[Vec3], pad: f32) {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let mut slack = f32::MAX;
+    for p in points {
+        let px = project_to_canvas(view_proj, size, *p).expect("in front of the camera");
+        let margins = [px.x, px.y, size.x - px.x, size.y - px.y];
+        let least = margins.iter().copied().fold(f32::MAX, f32::min);
+        assert!(least >= pad - 0.5, "{p} at {px} on {size}: {least} px from the edge");
+        slack = slack.min(least - pad);
+    }
+    assert!(slack < 1.0, "the fit leaves {slack} px spare on {size}: not tight");
+}
+
+fn corners(min: Vec3, max: Vec3) -> Vec<Vec3> {
+    let mut f = inbetween::draw::Frame::default();
+    f.keep_box_in_view(min, max);
+    f.keep_in_view
+}
+
+#[test]
+fn a_box_fits_at_both_canvas_sizes_from_the_default_orbit() {
+    let points = corners(Vec3::new(-2.0, 0.0, -2.0), Vec3::new(2.0, 1.8, 2.0));
+    for size in SIZES {
+        let mut camera = OrbitCamera::default();
+        let (yaw, pitch) = (camera.yaw_rad, camera.pitch_rad);
+        assert!(camera.fit(&points, size, FIT_PAD_PX));
+        assert_eq!((camera.yaw_rad, camera.pitch_rad), (yaw, pitch), "the orbit is kept");
+        assert_fits(&camera, size, &points, FIT_PAD_PX);
+    }
+}
+
+#[test]
+fn a_tall_thin_figure_fits_a_wide_canvas_and_a_wide_one_a_tall_canvas() {
+    let tall = corners(Vec3::new(-0.2, 0.0, -0.2), Vec3::new(0.2, 3.0, 0.2));
+    let wide = corners(Vec3::new(-5.0, 0.0, -0.3), Vec3::new(5.0, 0.4, 0.3));
+    for size in SIZES {
+        for points in [&tall, &wide] {
+            let mut camera = OrbitCamera { yaw_rad: 0.3, pitch_rad: 0.2, ..OrbitCamera::default() };
+            assert!(camera.fit(points, size, FIT_PAD_PX));
+            assert_fits(&camera, size, points, FIT_PAD_PX);
+        }
+    }
+}
+
+#[test]
+fn nothing_to_fit_changes_nothing() {
+    let mut camera = OrbitCamera::default();
+    let before = camera;
+    assert!(!camera.fit(&[], Vec2::new(800.0, 600.0), FIT_PAD_PX));
+    assert!(!camera.fit(&[Vec3::NAN], Vec2::new(800.0, 600.0), FIT_PAD_PX));
+    // A canvas too small for its padding.
+    assert!(!camera.fit(&[Vec3::ZERO, Vec3::ONE], Vec2::new(40.0, 40.0), FIT_PAD_PX));
+    assert_eq!(camera, before);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Any cloud of points, from any orbit, at either canvas size: all of it in view.
+    #[test]
+    fn any_points_fit_from_any_orbit(
+        pts in prop::collection::vec((-10f32..10.0, -1f32..6.0, -10f32..10.0), 1..30),
+        yaw in -3.1f32..3.1,
+        pitch in -1.5f32..1.5,
+        big in any::<bool>(),
+    ) {
+        let points: Vec<Vec3> = pts.iter().map(|&(x, y, z)| Vec3::new(x, y, z)).collect();
+        let size = if big { SIZES[1] } else { SIZES[0] };
+        let mut camera = OrbitCamera { yaw_rad: yaw, pitch_rad: pitch, ..OrbitCamera::default() };
+        prop_assert!(camera.fit(&points, size, FIT_PAD_PX));
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        for p in &points {
+            let px = project_to_canvas(view_proj, size, *p).unwrap();
+            prop_assert!(px.x >= FIT_PAD_PX - 0.5 && px.y >= FIT_PAD_PX - 0.5, "{} at {}", p, px);
+            prop_assert!(px.x <= size.x - FIT_PAD_PX + 0.5 && px.y <= size.y - FIT_PAD_PX + 0.5, "{} at {}", p, px);
+        }
+    }
+}

@@ -1,0 +1,158 @@
+//! Native tests of the label layout (src/draw/layout.rs): no two shown labels overlap, every
+//! shown label lies inside the canvas, and priorities decide who keeps its place.
+
+use glam::Vec2;
+use inbetween::draw::layout::{place, preferred, LabelBox, Placement, Rect, PAD_PX};
+use proptest::prelude::*;
+
+fn rect(label: &LabelBox, p: &Placement) -> Rect {
+    Rect {
+        min: p.top_left,
+        size: label.size,
+    }
+}
+
+/// Asserts what every layout must hold: shown boxes inside the canvas, apart from each other.
+fn check_layout(labels: &[LabelBox], placed: &[Placement], canvas: Vec2) {
+    assert_eq!(labels.len(), placed.len());
+    let shown: Vec<(usize, Rect)> = placed
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.shown)
+        .map(|(i, p)| (i, rect(&labels[i], p)))
+        .collect();
+    for (i, r) in &shown {
+        assert!(labels[*i].visible, "label {i} shown with its anchor out of view");
+        assert!(
+            r.min.x >= 0.0 && r.min.y >= 0.0 && r.max().x <= canvas.x + 1e-3 && r.max().y <= canvas.y + 1e-3,
+            "label {i} at {r:?} leaves the {canvas} canvas"
+        );
+    }
+    for (k, (i, a)) in shown.iter().enumerate() {
+        for (j, b) in &shown[k + 1..] {
+            assert!(!a.overlaps(b, PAD_PX - 1e-3), "labels {i} {a:?} and {j} {b:?} overlap");
+        }
+    }
+}
+
+fn label(x: f32, y: f32, w: f32, priority: i32) -> LabelBox {
+    LabelBox {
+        anchor: Vec2::new(x, y),
+        size: Vec2::new(w, 16.0),
+        left: false,
+        visible: true,
+        priority,
+    }
+}
+
+#[test]
+fn a_lone_label_sits_right_of_its_anchor() {
+    let canvas = Vec2::new(800.0, 600.0);
+    let l = label(100.0, 200.0, 40.0, 0);
+    let p = place(&[l], canvas)[0];
+    assert!(p.shown && p.leader_to.is_none());
+    assert_eq!(p.top_left, preferred(&l));
+    assert!(p.top_left.x > 100.0 && (p.top_left.y + 8.0 - 200.0).abs() < 1e-4);
+}
+
+#[test]
+fn two_labels_on_one_anchor_both_show_apart() {
+    let canvas = Vec2::new(800.0, 600.0);
+    let labels = [label(300.0, 300.0, 60.0, 0), label(300.0, 300.0, 60.0, 0)];
+    let placed = place(&labels, canvas);
+    check_layout(&labels, &placed, canvas);
+    assert!(placed.iter().all(|p| p.shown));
+    // The first keeps its preferred place; the second goes to the anchor's other side.
+    assert_eq!(placed[0].top_left, preferred(&labels[0]));
+    assert!(placed[1].top_left.x + 60.0 <= 300.0, "{:?}", placed[1]);
+}
+
+#[test]
+fn the_higher_priority_label_keeps_its_place_whatever_the_order() {
+    let canvas = Vec2::new(800.0, 600.0);
+    let low = label(300.0, 300.0, 60.0, 0);
+    let high = label(305.0, 302.0, 60.0, 5);
+    let placed = place(&[low, high], canvas);
+    assert_eq!(placed[1].top_left, preferred(&high));
+    assert_ne!(placed[0].top_left, preferred(&low));
+    check_layout(&[low, high], &placed, canvas);
+}
+
+#[test]
+fn a_label_at_the_edge_is_pulled_inside_the_canvas() {
+    let canvas = Vec2::new(400.0, 300.0);
+    let labels = [label(395.0, 2.0, 80.0, 0), label(-3.0, 299.0, 50.0, 0)];
+    let placed = place(&labels, canvas);
+    check_layout(&labels, &placed, canvas);
+    assert!(placed.iter().all(|p| p.shown));
+}
+
+#[test]
+fn a_moved_label_gets_a_leader_line_to_its_box() {
+    let canvas = Vec2::new(800.0, 600.0);
+    // Eight labels on one anchor: the first two sit beside it, the rest are nudged away.
+    let labels: Vec<LabelBox> = (0..8).map(|_| label(400.0, 300.0, 50.0, 0)).collect();
+    let placed = place(&labels, canvas);
+    check_layout(&labels, &placed, canvas);
+    assert!(placed.iter().all(|p| p.shown));
+    assert!(placed[0].leader_to.is_none());
+    let far: Vec<&Placement> = placed.iter().filter(|p| p.leader_to.is_some()).collect();
+    assert!(!far.is_empty());
+    for p in far {
+        let r = Rect { min: p.top_left, size: Vec2::new(50.0, 16.0) };
+        let end = p.leader_to.unwrap();
+        assert!(end.distance(r.nearest(Vec2::new(400.0, 300.0))) < 1e-4);
+    }
+}
+
+#[test]
+fn with_no_room_the_lowest_priorities_hide() {
+    // A canvas with room for a handful of labels, and forty of them on one spot.
+    let canvas = Vec2::new(120.0, 60.0);
+    let labels: Vec<LabelBox> = (0..40).map(|i| label(60.0, 30.0, 50.0, i)).collect();
+    let placed = place(&labels, canvas);
+    check_layout(&labels, &placed, canvas);
+    let shown: Vec<i32> = placed.iter().zip(&labels).filter(|(p, _)| p.shown).map(|(_, l)| l.priority).collect();
+    assert!(shown.len() >= 2 && shown.len() < 40, "{shown:?}");
+    // Everything shown outranks everything hidden.
+    let lowest_shown = *shown.iter().min().unwrap();
+    let hidden_max = placed.iter().zip(&labels).filter(|(p, _)| !p.shown).map(|(_, l)| l.priority).max().unwrap();
+    assert!(hidden_max < lowest_shown, "hidden {hidden_max} outranks shown {lowest_shown}");
+}
+
+#[test]
+fn labels_out_of_view_are_not_shown_and_take_no_room() {
+    let canvas = Vec2::new(800.0, 600.0);
+    let mut hidden = label(300.0, 300.0, 60.0, 9);
+    hidden.visible = false;
+    let seen = label(300.0, 300.0, 60.0, 0);
+    let placed = place(&[hidden, seen], canvas);
+    assert!(!placed[0].shown);
+    assert_eq!(placed[1].top_left, preferred(&seen));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// N labels anywhere in a box: the shown ones never overlap and stay inside; removing every
+    /// label below some priority moves none of those left (a label never gives way to a lower one).
+    #[test]
+    fn no_overlaps_and_priorities_respected(
+        raw in prop::collection::vec((-20f32..820.0, -20f32..620.0, 10f32..140.0, 0i32..4, any::<bool>()), 1..40),
+        cut in 0i32..4,
+        big in any::<bool>(),
+    ) {
+        let canvas = if big { Vec2::new(1600.0, 1000.0) } else { Vec2::new(800.0, 600.0) };
+        let labels: Vec<LabelBox> = raw.iter().map(|&(x, y, w, p, left)| LabelBox {
+            anchor: Vec2::new(x, y), size: Vec2::new(w, 16.0), left, visible: true, priority: p,
+        }).collect();
+        let placed = place(&labels, canvas);
+        check_layout(&labels, &placed, canvas);
+        let kept: Vec<usize> = (0..labels.len()).filter(|&i| labels[i].priority >= cut).collect();
+        let fewer: Vec<LabelBox> = kept.iter().map(|&i| labels[i]).collect();
+        let again = place(&fewer, canvas);
+        for (k, &i) in kept.iter().enumerate() {
+            prop_assert_eq!(again[k], placed[i], "label {} moved when lower priorities left", i);
+        }
+    }
+}

@@ -1,0 +1,192 @@
+//! Browser-only pixel tests of wide lines and markers (`src/render/shaders/stroke.wgsl`,
+//! `marker.wgsl`): WebGL2 has no wide lines, so the width comes from the vertex shader's
+//! expansion, and these tests read it back from the rendered image on both backends
+//! (`scripts/test` runs them with the WebGL2 and the WebGPU flag sets).
+#![cfg(target_arch = "wasm32")]
+
+use glam::Vec3;
+use inbetween::camera::OrbitCamera;
+use inbetween::draw::{palette, StrokeStyle};
+use inbetween::render::{BackendChoice, Gpu, Renderer};
+use wasm_bindgen::JsCast;
+use wasm_bindgen_test::*;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+const W: u32 = 240;
+const H: u32 = 160;
+
+async fn gpu() -> Gpu {
+    let document = web_sys::window().unwrap().document().unwrap();
+    let canvas: web_sys::HtmlCanvasElement = document
+        .create_element("canvas")
+        .unwrap()
+        .dyn_into()
+        .unwrap();
+    canvas.set_width(W);
+    canvas.set_height(H);
+    document.body().unwrap().append_child(&canvas).unwrap();
+    let gpu = Gpu::new(canvas, BackendChoice::Auto)
+        .await
+        .expect("an adapter (WebGPU or WebGL2)");
+    if let Some(expected) = option_env!("INBETWEEN_EXPECT_BACKEND") {
+        assert_eq!(gpu.backend_name, expected, "adapter: {}", gpu.adapter_name);
+    }
+    gpu
+}
+
+/// Looking straight down −Z at the origin from 5 m.
+fn camera() -> OrbitCamera {
+    OrbitCamera {
+        target: Vec3::ZERO,
+        distance: 5.0,
+        yaw_rad: 0.0,
+        pitch_rad: 0.0,
+        ..OrbitCamera::default()
+    }
+}
+
+/// Pixels of row `y` darker than the light background, as runs `(start, length)`.
+fn dark_runs(pixels: &[u8], y: u32) -> Vec<(u32, u32)> {
+    runs(pixels, y, |p| p.iter().map(|&c| c as u32).sum::<u32>() < 3 * 128)
+}
+
+/// Runs `(start, length)` of the pixels of row `y` for which `keep` holds.
+fn runs(pixels: &[u8], y: u32, keep: impl Fn(&[u8]) -> bool) -> Vec<(u32, u32)> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for x in 0..=W {
+        let hit = x < W && {
+            let i = ((y * W + x) * 4) as usize;
+            keep(&pixels[i..i + 3])
+        };
+        match (hit, start) {
+            (true, None) => start = Some(x),
+            (false, Some(s)) => {
+                out.push((s, x - s));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// How many pixels' worth of ink of colour `ink` row `y` holds between columns `from` and `to`:
+/// each pixel counts for how far it has gone from the background towards the ink (its
+/// antialiased coverage), so a line of width w adds up to about w wherever it falls on the grid.
+fn ink(pixels: &[u8], y: u32, from: u32, to: u32, ink: u8) -> f32 {
+    let bg = pixels[(y * W * 4) as usize + 1] as f32;
+    (from..to)
+        .map(|x| {
+            let g = pixels[((y * W + x) * 4 + 1) as usize] as f32;
+            ((bg - g) / (bg - ink as f32)).clamp(0.0, 1.0)
+        })
+        .sum()
+}
+
+#[wasm_bindgen_test]
+async fn a_wide_line_is_as_wide_as_asked_on_this_backend() {
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    // palette::KEY is #222222: its green channel is 0x22.
+    let key = 0x22;
+    for px_per_css in [1.0, 2.0] {
+        for width in [1.0f32, 3.0, 6.0] {
+            renderer.px_per_css = px_per_css;
+            // A vertical line through the middle, and a 1-pixel line 1 m to its right.
+            renderer.frame.wide_line(
+                Vec3::new(0.0, -1.5, 0.0),
+                Vec3::new(0.0, 1.5, 0.0),
+                palette::KEY,
+                width,
+            );
+            renderer
+                .frame
+                .line(Vec3::new(1.0, -1.5, 0.0), Vec3::new(1.0, 1.5, 0.0), palette::KEY);
+            let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+            let expected = width * px_per_css;
+            let wide = ink(&pixels, H / 2, 0, W / 2 + 20, key);
+            let thin = ink(&pixels, H / 2, W / 2 + 20, W, key);
+            assert!(
+                (wide - expected).abs() <= 1.0_f32.max(0.2 * expected),
+                "{}: a {width} px line at {px_per_css} pixels per CSS pixel is {wide} pixels wide",
+                gpu.backend_name
+            );
+            assert!(
+                (0.5..=1.6).contains(&thin),
+                "{}: the 1-pixel line beside it is {thin} pixels wide",
+                gpu.backend_name
+            );
+        }
+    }
+}
+
+#[wasm_bindgen_test]
+async fn a_polyline_joins_without_gaps_and_dashes_leave_gaps() {
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    renderer.px_per_css = 1.0;
+    // A sharp zigzag across the middle row: every column it crosses is dark in some row near
+    // the joins, and the row through a join shows no break.
+    let zig = [
+        Vec3::new(-2.0, -0.5, 0.0),
+        Vec3::new(-1.0, 0.0, 0.0),
+        Vec3::new(0.0, -0.5, 0.0),
+        Vec3::new(1.0, 0.0, 0.0),
+    ];
+    renderer.frame.wide_polyline(&zig, palette::KEY, 6.0);
+    let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+    let centre = |p: Vec3| {
+        let c = camera();
+        let vp = c.projection(W as f32 / H as f32) * c.view();
+        inbetween::camera::project_to_canvas(vp, glam::Vec2::new(W as f32, H as f32), p).unwrap()
+    };
+    for join in [zig[1], zig[2]] {
+        let px = centre(join);
+        let (x, y) = (px.x.round() as u32, px.y.round() as u32);
+        // The join's own pixel and a small square around it are covered.
+        for dy in [-1i32, 0, 1] {
+            for dx in [-1i32, 0, 1] {
+                let i = (((y as i32 + dy) as u32 * W + (x as i32 + dx) as u32) * 4) as usize;
+                let sum: u32 = pixels[i..i + 3].iter().map(|&c| c as u32).sum();
+                assert!(sum < 3 * 128, "{}: a gap at the join {join} ({x}, {y}) + ({dx}, {dy})", gpu.backend_name);
+            }
+        }
+    }
+    // Dashes: a horizontal dashed line breaks into several runs along its row.
+    let y = 0.8;
+    renderer.frame.stroke(
+        &[Vec3::new(-2.0, y, 0.0), Vec3::new(2.0, y, 0.0)],
+        palette::KEY,
+        StrokeStyle::dashed(4.0, 0.25, 0.25),
+    );
+    let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+    let row = centre(Vec3::new(0.0, y, 0.0)).y.round() as u32;
+    let runs = dark_runs(&pixels, row);
+    assert!((7..=9).contains(&runs.len()), "{}: 4 m of 0.25 m dashes and gaps: {runs:?}", gpu.backend_name);
+}
+
+#[wasm_bindgen_test]
+async fn a_marker_keeps_its_size_in_pixels_at_any_distance() {
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    renderer.px_per_css = 1.0;
+    for distance in [2.0, 40.0] {
+        renderer.frame.marker(Vec3::ZERO, 16.0, palette::KEY);
+        let c = OrbitCamera { distance, ..camera() };
+        let pixels = renderer.render_to_rgba(&gpu, &c, W, H).await.unwrap();
+        // The marker is everything that is not the background (the white ring too): the row
+        // through its centre spans its 16 pixels.
+        let bg = [pixels[0], pixels[1], pixels[2]];
+        let across = runs(&pixels, H / 2, |p| (0..3).any(|i| p[i].abs_diff(bg[i]) > 6));
+        assert!(
+            across.len() == 1 && (15..=17).contains(&across[0].1),
+            "{} at {distance} m: {across:?}",
+            gpu.backend_name
+        );
+        // And its middle is the marker's colour.
+        let i = ((H / 2 * W + W / 2) * 4) as usize;
+        assert!(pixels[i + 1] < 0x40, "{}: the fill is {:?}", gpu.backend_name, &pixels[i..i + 3]);
+    }
+}
