@@ -94,6 +94,31 @@ fn step_is_drawn_as_held_values_and_reaches_the_last_key() {
 }
 
 #[test]
+fn step_with_constant_speed_keeps_the_keyed_timing_and_says_why() {
+    let mut s = scene("step");
+    s.set_arc_length(true);
+    assert!(!s.constant_speed());
+    assert!(s.timing_note().contains("step motion"), "{}", s.timing_note());
+    // Default keys at 0, 0.8, 1.6, 2.2, 3.2 s: at 1.85 s the ball holds key 2.
+    let keys = s.track().values().to_vec();
+    assert_eq!(s.position(1.85).unwrap(), keys[2]);
+    assert_eq!(s.position(3.0).unwrap(), keys[3]);
+    // The in-betweens are the held keys, not all key 0.
+    let mut ghosts = Vec::new();
+    s.ghosts(&mut ghosts);
+    for (i, key) in keys.iter().enumerate() {
+        assert!(ghosts.contains(key), "key {i} is among the in-betweens");
+    }
+    // Any other scheme travels at constant speed and the note is empty.
+    s.set_scheme("linear").unwrap();
+    assert!(s.constant_speed());
+    assert_eq!(s.timing_note(), "");
+    s.set_arc_length(false);
+    s.set_scheme("step").unwrap();
+    assert_eq!(s.timing_note(), "", "no note when constant speed is off");
+}
+
+#[test]
 fn constant_speed_is_constant_at_the_corners_of_a_linear_path() {
     let mut s = scene("linear");
     s.set_arc_length(true);
@@ -348,7 +373,11 @@ fn stubs_say_not_done_yet() {
 #[test]
 fn the_basis_note_compares_exercise_2_1() {
     let n = hermite_basis_note(right, 0.25, true).unwrap();
-    assert_eq!(n, "Your hermite_basis matches the reference at s = 0.250.");
+    assert_eq!(
+        n,
+        "Your hermite_basis matches the reference at s = 0.250 and at 4 more inputs \
+         (s = 0.000; s = 0.500; s = 0.750; s = 1.000)."
+    );
     let n = hermite_basis_note(wrong, 0.5, true).unwrap();
     assert!(n.starts_with("Your hermite_basis differs at s = 0.500: yours (1.000, 0.000, 0.000, 0.000), reference (0.500, 0.125, 0.500, -0.125)"), "{n}");
     let n = hermite_basis_note(panics, 0.5, true).unwrap();
@@ -393,4 +422,218 @@ fn the_lagrange_graph_has_labelled_axes_and_passes_through_its_keys() {
     assert!(s.set_key_count(40.0).unwrap_err().contains("key count"));
     assert_eq!(s.key_count(), 6);
     let _ = Interpolation::Lagrange;
+}
+
+#[test]
+fn clip_graph_cuts_at_the_edge_instead_of_running_along_it() {
+    // Up through the top edge, back down, and once through the bottom edge.
+    let graph: Vec<(f32, f32)> = [0.0, 1.0, 3.0, 1.0, -0.5, -3.0, 0.5]
+        .iter()
+        .enumerate()
+        .map(|(k, &y)| (k as f32, y))
+        .collect();
+    let pieces = clip_graph(&graph, (-1.0, 2.0));
+    assert_eq!(pieces.len(), 3, "{pieces:?}");
+    // The first piece ends where the graph crosses y = 2 between t = 1 and t = 2.
+    assert_eq!(*pieces[0].last().unwrap(), (1.5, 2.0));
+    // The second comes back in at y = 2 (t = 2.5) and leaves at y = -1 (t = 4.2).
+    assert_eq!(pieces[1][0], (2.5, 2.0));
+    let (t, y) = *pieces[1].last().unwrap();
+    assert!((t - 4.2).abs() < 1e-5 && y == -1.0, "({t}, {y})");
+    // The third re-enters at y = -1 between t = 5 and t = 6.
+    assert!((pieces[2][0].0 - 5.571_428_5).abs() < 1e-5 && pieces[2][0].1 == -1.0);
+    assert!(pieces.iter().flatten().all(|&(_, y)| (-1.0..=2.0).contains(&y)));
+}
+
+#[test]
+fn the_lagrange_curve_through_more_keys_is_cut_not_flattened_at_the_edge() {
+    // With 14 keys the red polynomial leaves the graph near both ends (Runge).
+    let mut s = LagrangeScene::new();
+    s.set_key_count(14.0).unwrap();
+    let mut frame = Frame::default();
+    s.draw(&mut frame);
+    let red: Vec<(Vec3, Vec3)> = frame.segments_of(LAGRANGE_MORE).collect();
+    assert!(!red.is_empty());
+    let top = s.place(0.0, 3.4).y;
+    let bottom = s.place(0.0, -0.8).y;
+    // No drawn segment runs along an edge: that would be a flat line the polynomial never draws.
+    for (a, b) in &red {
+        let on_edge = |p: &Vec3| (p.y - top).abs() < 1e-4 || (p.y - bottom).abs() < 1e-4;
+        assert!(!(on_edge(a) && on_edge(b)), "segment {a} to {b} runs along the edge");
+        assert!(a.y <= top + 1e-4 && a.y >= bottom - 1e-4);
+    }
+    // The curve is cut: it has more than one piece (one polyline per piece).
+    let pieces = red.windows(2).filter(|w| (w[0].1 - w[1].0).length() > 1e-6).count() + 1;
+    assert!(pieces >= 2, "{pieces} pieces");
+}
+
+/// Right except where a typical mistake shows: `find_segment` without the upper clamp (returns
+/// N − 1 at the last key), `cardinal_tangents` that ignores μ, `hermite_basis` that swaps the
+/// tangent weights' signs only past s = 0.6.
+fn almost(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    match name {
+        "find_segment" => {
+            let n = args[0] as usize;
+            let (times, t) = (&args[1..=n], args[n + 1]);
+            let count = times.iter().filter(|&&k| k <= t).count();
+            Ok(vec![count.max(1) as f32 - 1.0])
+        }
+        "cardinal_tangents" => {
+            let n = args[0] as usize;
+            let mut fixed = args.to_vec();
+            *fixed.last_mut().unwrap() = 1.0;
+            let _ = n;
+            right(name, &fixed)
+        }
+        "hermite_basis" if args[0] > 0.6 => {
+            let [a, b, c, d] = hermite_basis(args[0]);
+            Ok(vec![a, -b, c, -d])
+        }
+        _ => right(name, args),
+    }
+}
+
+#[test]
+fn a_verdict_checks_probe_inputs_beyond_the_one_shown() {
+    let (note, _) = note_with(almost, true);
+    // At the ball's time (1.1 s, s ≈ 0.4 in segment 1, μ = 1) all three look right…
+    assert!(
+        note.contains("Your find_segment matches the reference at t = 1.100 s (the figure's input), but differs at t = 3.200 s: yours (4.000), reference (3.000)"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Your cardinal_tangents matches the reference at all 5 keys (μ = 1.000) (the figure's input), but differs at the figure's keys' x at μ = 0.5"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Your hermite_basis matches the reference at s = ") && note.contains("but differs at s = 0.750"),
+        "{note}"
+    );
+    // At s = 1 both tangent weights are 0, so a sign error cannot show there.
+    assert!(!note.contains("differs at s = 1.000"), "{note}");
+    // The basis figure says the same at its own s.
+    let n = hermite_basis_note(almost, 0.3, true).unwrap();
+    assert!(n.contains("but differs at s = 0.750"), "{n}");
+    assert!(note.contains("It also differs at t = 3.700 s"), "{note}");
+    // A right answer is checked at the probes too, and the note lists them.
+    let (note, _) = note_with(right, true);
+    assert!(note.contains("and at 5 more inputs (t = -0.500 s; t = 0.000 s; t = 1.600 s; t = 3.200 s; t = 3.700 s)"), "{note}");
+    assert!(note.contains("Your arc_length_invert matches the reference at s = "), "{note}");
+}
+
+/// True when two non-neighbouring segments of the polyline cross.
+fn self_intersects(path: &[Vec2]) -> bool {
+    let cross = |o: Vec2, a: Vec2, b: Vec2| (a - o).perp_dot(b - o);
+    for i in 0..path.len().saturating_sub(1) {
+        for j in i + 2..path.len() - 1 {
+            let (p, q, r, s) = (path[i], path[i + 1], path[j], path[j + 1]);
+            let d1 = cross(r, s, p);
+            let d2 = cross(r, s, q);
+            let d3 = cross(p, q, r);
+            let d4 = cross(p, q, s);
+            if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+#[test]
+fn the_captions_preset_claims_hold() {
+    let path = |scheme: &str, name: &str| {
+        let mut s = scene(scheme);
+        let (t, v) = preset(name).unwrap();
+        s.set_keys(t, v).unwrap();
+        path_of(&s)
+    };
+    // Figure 6: "loop-prone makes A (Catmull-Rom) loop while B (centripetal) passes straight".
+    assert!(self_intersects(&path("cardinal", "loop")));
+    assert!(!self_intersects(&path("centripetal", "loop")));
+    // "zig-zag: the paths differ by up to 7.5 cm, and B's speed jumps at every key by 0.3 to
+    // 0.5 m/s while A's is continuous".
+    let (a, b) = (path("cardinal", "centripetal"), path("centripetal", "centripetal"));
+    let gap = a.iter().zip(&b).map(|(p, q)| (*p - *q).length()).fold(0.0f32, f32::max);
+    assert!((gap - 0.075).abs() < 0.005, "largest gap {gap}");
+    for (scheme, lo, hi) in [("cardinal", 0.0, 0.05), ("centripetal", 0.3, 0.55)] {
+        let mut s = scene(scheme);
+        let (times, values) = preset("centripetal").unwrap();
+        s.set_keys(times.clone(), values).unwrap();
+        for &k in &times[1..times.len() - 1] {
+            let before = s.track().evaluate(k - 1e-3).velocity.length();
+            let after = s.track().evaluate(k + 1e-3).velocity.length();
+            let jump = (after - before).abs();
+            assert!((lo..=hi).contains(&jump), "{scheme} at {k} s: {before} to {after}");
+        }
+    }
+    // Figure 2: the uneven preset's linear speeds are 5.09, 1.20 and 9.01 m/s.
+    let mut s = scene("linear");
+    let (t, v) = preset("uneven").unwrap();
+    s.set_keys(t, v).unwrap();
+    let rows = s.sample_motion(601).unwrap();
+    let speed_at = |time: f32| {
+        rows.iter()
+            .min_by(|a, b| (a[0] - time).abs().total_cmp(&(b[0] - time).abs()))
+            .unwrap()[1]
+    };
+    for (time, expected) in [(0.15, 5.09), (1.5, 1.20), (2.9, 9.01)] {
+        assert!((speed_at(time) - expected).abs() < 0.01, "at {time} s: {}", speed_at(time));
+    }
+}
+
+#[test]
+fn the_lagrange_captions_numbers_hold() {
+    use inbetween::curves::Track;
+    // (largest |blue − green|, largest |red|, where red is farthest from green as a fraction of
+    // the time range)
+    let measure = |n: f32| {
+        let mut s = LagrangeScene::new();
+        s.set_key_count(n).unwrap();
+        let ((ta, ya), (tb, yb)) = s.key_sets();
+        let with = |t: Vec<f32>, y: Vec<f32>, i| {
+            Track::new(t, y).unwrap().with_interpolation(i).unwrap()
+        };
+        let blue = with(ta, ya, Interpolation::Lagrange);
+        let red = with(tb.clone(), yb.clone(), Interpolation::Lagrange);
+        let green = with(tb, yb, Interpolation::CATMULL_ROM);
+        let (mut bg, mut rmax, mut worst) = (0.0f32, 0.0f32, (0.0f32, 0.0f32));
+        for k in 0..=2000 {
+            let u = k as f32 / 2000.0;
+            let t = (n - 1.0) * u;
+            bg = bg.max((blue.position(t) - green.position(t)).abs());
+            rmax = rmax.max(red.position(t).abs());
+            let d = (red.position(t) - green.position(t)).abs();
+            if d > worst.0 {
+                worst = (d, u);
+            }
+        }
+        (bg, rmax, worst.1)
+    };
+    // 3 keys: all three nearly agree (within 11 cm).
+    let (bg, rmax, _) = measure(3.0);
+    assert!(bg < 0.11 && rmax < 1.3, "{bg} {rmax}");
+    // 10 keys (the default): blue within 9 cm of green, red already off the 3.4 m graph.
+    let (bg, rmax, _) = measure(10.0);
+    assert!(bg < 0.09 && rmax > 3.4, "{bg} {rmax}");
+    // 16 keys: red swings out past 100 m, worst near an end.
+    let (_, rmax, at) = measure(16.0);
+    assert!(rmax > 100.0 && !(0.15..=0.85).contains(&at), "{rmax} at {at}");
+}
+
+#[test]
+fn figure_5s_acceleration_jumps_for_catmull_rom_and_not_for_natural() {
+    let (times, _) = preset("default").unwrap();
+    for (scheme, jumps) in [("cardinal", true), ("natural", false)] {
+        let s = scene(scheme);
+        for &k in &times[1..times.len() - 1] {
+            // The plot shows |p″|: its magnitude must jump, not only its direction.
+            let before = s.track().evaluate(k - 1e-3).acceleration.length();
+            let after = s.track().evaluate(k + 1e-3).acceleration.length();
+            let jump = (after - before).abs();
+            assert_eq!(jump > 1.0, jumps, "{scheme} at {k} s: a jump of {jump} m/s²");
+            if !jumps {
+                assert!(jump < 0.1, "{scheme} at {k} s: {jump}");
+            }
+        }
+    }
 }

@@ -398,6 +398,7 @@ function compareFigure(id) {
     title: speed ? 'Speed |p′(t)|' : 'Acceleration |p″(t)|',
     xLabel: 'time (s)', yLabel: speed ? 'speed (m/s)' : 'acceleration (m/s²)',
     series: ['A', 'B'], colors: [C.a, C.b], minSpan: 0.1,
+    widths: [5, 2], // A wide under B: the same scheme twice shows both lines
   });
   function sync() {
     const keys = scene.keys();
@@ -510,12 +511,15 @@ if (lagrangeViewer) {
   const speedPlot = new Plot(document.getElementById('keys-speed'), {
     title: 'Speed |p′(t)|', xLabel: 'time (s)', yLabel: 'speed (m/s)',
     series: ['keyed', 'arc length'], colors: [C.path, C.ball], minSpan: 0.1,
+    widths: [5, 2], // keyed wide under arc length: where the two speeds agree both stay visible
   });
   const accelPlot = new Plot(document.getElementById('keys-accel'), {
     title: 'Acceleration |p″(t)| of the motion shown', xLabel: 'time (s)', yLabel: 'acceleration (m/s²)',
     series: ['|p″|'], colors: [C.purple], minSpan: 0.1,
   });
+  const timingNote = document.getElementById('timing-note');
   listen(() => {
+    timingNote.textContent = scene.timingNote;
     layer.path = scene.samplePath();
     layer.ghosts = scene.sampleGhosts();
     layer.held = scene.isHeld;

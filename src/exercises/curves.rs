@@ -15,12 +15,15 @@ use super::NotDone;
 /// Return the four weights `[h00, h10, h01, h11]` at `s` (the parameter inside one segment,
 /// normally in `[0, 1]`):
 /// ```text
-/// h00(s) =  2s³ − 3s² + 1      weight of p0 (start point)
-/// h10(s) =   s³ − 2s² + s      weight of d0 (start tangent)
-/// h01(s) = −2s³ + 3s²          weight of p1 (end point)
-/// h11(s) =   s³ −  s²          weight of d1 (end tangent)
-/// p(s) = h00 p0 + h10 d0 + h01 p1 + h11 d1
+/// h00(s) =  2s³ − 3s² + 1      weight of p_i     (start point)
+/// h10(s) =   s³ − 2s² + s      weight of h·d_i   (start tangent)
+/// h01(s) = −2s³ + 3s²          weight of p_{i+1} (end point)
+/// h11(s) =   s³ −  s²          weight of h·d_{i+1} (end tangent)
+/// p(t) = h00(s) p_i + h10(s) h d_i + h01(s) p_{i+1} + h11(s) h d_{i+1}
 /// ```
+/// as on the lesson page: `h = t_{i+1} − t_i` is the segment's duration and `s = (t − t_i)/h`;
+/// the tangents `d` are in units per second, so `h·d` is the change per unit of `s`. Your
+/// function returns only the four weights; the figure multiplies the tangents by `h`.
 /// Hints: compute `s²` and `s³` once. Check yourself: at `s = 0` the weights are `[1, 0, 0, 0]`,
 /// at `s = 1` they are `[0, 0, 1, 0]`, and `h00 + h01 = 1` for every `s`. Do not clamp `s`: values
 /// outside `[0, 1]` extrapolate the cubic, and the grader tries a few.

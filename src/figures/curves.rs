@@ -81,8 +81,8 @@ pub fn ease_from_name(name: &str) -> Result<Ease, String> {
 /// - `"loop"`: two keys close in space but far apart in time; cardinal tangents make a loop.
 /// - `"uneven"`: one long and one very short interval; halving instead of dividing by the time
 ///   between neighbours (exercise 2.2's classic mistake) bulges here.
-/// - `"centripetal"`: a tight zig-zag where uniform Catmull-Rom overshoots and cusps while
-///   centripetal stays inside.
+/// - `"centripetal"`: a zig-zag where the two Catmull-Rom variants' paths differ by up to
+///   7.5 cm and centripetal's speed jumps at every key.
 pub fn preset(name: &str) -> Result<(Vec<f32>, Vec<Vec2>), String> {
     let v = |xy: &[(f32, f32)]| xy.iter().map(|&(x, y)| Vec2::new(x, y)).collect();
     Ok(match name {
@@ -367,7 +367,7 @@ impl KeyframesScene {
             .map(|k| {
                 let tau = duration * k as f32 / (samples - 1) as f32;
                 let (keyed, arc) = (self.keyed_motion(tau), self.arc_motion(tau));
-                let shown = if self.arc_length { arc } else { keyed };
+                let shown = if self.constant_speed() { arc } else { keyed };
                 [
                     self.track.start_sec() + tau,
                     keyed.velocity.length(),
@@ -496,8 +496,27 @@ impl KeyframesScene {
         ((w - self.track.start_sec()) / duration).clamp(0.0, 1.0)
     }
 
+    /// True when the ball really travels at constant speed: arc length is ticked and the path
+    /// has a length. A step motion jumps from key to key, so its path has no length to spread
+    /// the time over; it keeps its keyed timing and [`KeyframesScene::timing_note`] says why.
+    pub fn constant_speed(&self) -> bool {
+        self.arc_length && !self.is_held() && self.table.total_length() > 0.0
+    }
+
+    /// The sentence under the timing figure: empty, or why "constant speed" does not apply.
+    pub fn timing_note(&self) -> String {
+        if self.arc_length && !self.constant_speed() {
+            "Constant speed needs a path with a length. A step motion has none: it holds each key \
+             and jumps to the next, so the ball keeps the keyed timing (it shows key i from t_i \
+             on). Pick another scheme to see constant speed."
+                .into()
+        } else {
+            String::new()
+        }
+    }
+
     fn motion(&self, tau: f32) -> Sample<Vec2> {
-        if self.arc_length {
+        if self.constant_speed() {
             self.arc_motion(tau)
         } else {
             self.keyed_motion(tau)
@@ -622,7 +641,7 @@ impl KeyframesScene {
     /// The time the ball is at after `tau` seconds: the eased time, or, at constant speed, the
     /// time where the arc length reaches `σ` (exercise 2.4).
     fn student_time(&self, tau: f32, failures: &mut Failures) -> f32 {
-        if !self.arc_length {
+        if !self.constant_speed() {
             return self.warp().warp(self.track.start_sec() + tau)[0];
         }
         let sigma = self.arc_fraction(tau) * self.table.total_length();
@@ -655,8 +674,9 @@ impl KeyframesScene {
         lines.join("\n")
     }
 
-    /// Compares exercise `k` (0 = 2.1 … 3 = 2.4) with the reference where the ball is now;
-    /// `None` when the current scheme does not use it.
+    /// Compares exercise `k` (0 = 2.1 … 3 = 2.4) with the reference where the ball is now, and
+    /// at a few more inputs where typical mistakes show; `None` when the current scheme does
+    /// not use it.
     fn compare(&self, k: usize, tau: f32) -> Option<String> {
         let times = self.track.times();
         let t = self.warp().warp(self.track.start_sec() + tau)[0];
@@ -667,41 +687,71 @@ impl KeyframesScene {
             0.0
         };
         let result = match k {
-            0 if self.is_cubic() => run::hermite_basis(self.runner, s).map(|yours| {
-                let at = format!("s = {}", format_number(s));
-                compare_note(
-                    "hermite_basis",
-                    &at,
-                    &yours,
-                    &curves::hermite_basis(s),
-                    1e-4,
-                )
-                .1
-            }),
+            0 if self.is_cubic() => hermite_basis_probes(self.runner, s)
+                .map(|probes| probe_note("hermite_basis", &probes, 1e-4).1),
             1 if self.scheme_name == "cardinal" => self.compare_tangents(),
-            2 if self.is_piecewise() && times.len() > 1 => {
-                run::find_segment(self.runner, times.to_vec(), t).map(|yours| {
-                    let at = format!("t = {} s", format_number(t));
-                    compare_note("find_segment", &at, &[yours as f32], &[i as f32], 0.0).1
-                })
-            }
-            3 if self.arc_length => {
+            2 if self.is_piecewise() && times.len() > 1 => self.compare_segments(t),
+            3 if self.constant_speed() => {
                 let sigma = self.arc_fraction(tau) * self.table.total_length();
-                let (params, lengths) = (self.table.times_sec(), self.table.lengths());
-                let reference = curves::arc_length_invert(params, lengths, sigma);
-                let yours =
-                    run::arc_length_invert(self.runner, params.to_vec(), lengths.to_vec(), sigma);
-                yours.map(|u| {
-                    let at = format!("s = {} m", format_number(sigma));
-                    compare_note("arc_length_invert", &at, &[u], &[reference], 1e-3).1
-                })
+                self.compare_invert(sigma)
             }
             _ => return None,
         };
         Some(result.unwrap_or_else(|f| failure_note(EXERCISE_NAMES[k], EXERCISES_FILE, &f)))
     }
 
-    /// Exercise 2.2 against the reference, key by key; names the first key that differs.
+    /// Exercise 2.3 at the ball's time `t`, then before the first key, on the first, a middle
+    /// and the last key exactly (the boundaries of `t_i ≤ t < t_{i+1}`) and after the last.
+    fn compare_segments(&self, t: f32) -> Result<String, Failure> {
+        let times = self.track.times();
+        let n = times.len();
+        let mut inputs = vec![t, times[0] - 0.5, times[0], times[n / 2], times[n - 1]];
+        inputs.push(times[n - 1] + 0.5);
+        let probes = inputs
+            .iter()
+            .map(|&u| {
+                let yours = run::find_segment(self.runner, times.to_vec(), u)?;
+                Ok(Probe {
+                    at: format!("t = {} s", format_number(u)),
+                    yours: vec![yours as f32],
+                    reference: vec![curves::find_segment(times, u) as f32],
+                })
+            })
+            .collect::<Result<Vec<_>, Failure>>()?;
+        Ok(probe_note("find_segment", &probes, 0.0).1)
+    }
+
+    /// Exercise 2.4 at the ball's distance `sigma`, then at both ends of the table, exactly on
+    /// a middle entry and half-way between two entries.
+    fn compare_invert(&self, sigma: f32) -> Result<String, Failure> {
+        let (params, lengths) = (self.table.times_sec(), self.table.lengths());
+        let m = lengths.len() / 2;
+        let total = self.table.total_length();
+        let inputs = [
+            sigma,
+            0.0,
+            total,
+            lengths[m],
+            0.5 * (lengths[m] + lengths[m + 1]),
+        ];
+        let probes = inputs
+            .iter()
+            .map(|&u| {
+                let yours = run::arc_length_invert(self.runner, params.to_vec(), lengths.to_vec(), u)?;
+                Ok(Probe {
+                    at: format!("s = {} m", format_number(u)),
+                    yours: vec![yours],
+                    reference: vec![curves::arc_length_invert(params, lengths, u)],
+                })
+            })
+            .collect::<Result<Vec<_>, Failure>>()?;
+        Ok(probe_note("arc_length_invert", &probes, 1e-3).1)
+    }
+
+    /// Exercise 2.2 against the reference, key by key at the figure's keys and tension (the
+    /// note names the first key that differs), then on three more inputs: the same keys at
+    /// μ = 0.5, the uneven-times preset (where halving instead of dividing by the time fails)
+    /// and two keys only (both ends, no interior key).
     fn compare_tangents(&self) -> Result<String, Failure> {
         let mut failures = Failures::default();
         let yours = self.student_tangents(&mut failures);
@@ -717,9 +767,44 @@ impl KeyframesScene {
                 return Ok(note);
             }
         }
-        let at = format!("all {} keys (μ = {mu})", reference.len());
-        Ok(compare_note("cardinal_tangents", &at, &[], &[], 0.0).1)
+        let xs = |v: &[Vec2]| v.iter().map(|p| p.x).collect::<Vec<f32>>();
+        let (uneven_t, uneven_v) = preset("uneven").expect("a known preset");
+        let inputs = [
+            (self.track.times().to_vec(), xs(self.track.values()), 0.5, "the figure's keys' x at μ = 0.5"),
+            (uneven_t, xs(&uneven_v), 1.0, "the uneven-times preset's x at μ = 1"),
+            (vec![0.0, 2.0], vec![1.0, 3.0], 1.0, "two keys (0 s, 1) and (2 s, 3) at μ = 1"),
+        ];
+        let mut probes = vec![Probe {
+            at: format!("all {} keys (μ = {mu})", reference.len()),
+            yours: Vec::new(),
+            reference: Vec::new(),
+        }];
+        for (times, values, mu, at) in inputs {
+            let yours = run::cardinal_tangents(self.runner, times.clone(), values.clone(), mu)?;
+            let mut expected = vec![0.0; times.len()];
+            curves::cardinal_tangents(&times, &values, mu, &mut expected);
+            probes.push(Probe {
+                at: at.to_string(),
+                yours,
+                reference: expected,
+            });
+        }
+        Ok(probe_note("cardinal_tangents", &probes, 1e-3).1)
     }
+}
+
+/// Exercise 2.1 at `s` (the figure's input), then at 0, ¼, ½, ¾ and 1.
+fn hermite_basis_probes(runner: Runner, s: f32) -> Result<Vec<Probe>, Failure> {
+    std::iter::once(s)
+        .chain([0.0, 0.25, 0.5, 0.75, 1.0].into_iter().filter(|&u| u != s))
+        .map(|u| {
+            Ok(Probe {
+                at: format!("s = {}", format_number(u)),
+                yours: run::hermite_basis(runner, u)?.to_vec(),
+                reference: curves::hermite_basis(u).to_vec(),
+            })
+        })
+        .collect()
 }
 
 /// Figure 2: the four Hermite basis functions over `s ∈ [0, 1]` and exercise 2.1 at one `s`.
@@ -739,16 +824,15 @@ pub fn hermite_basis_samples(samples: usize) -> Result<Vec<[f32; 5]>, String> {
 /// exercise 2.1 matches them.
 pub fn hermite_basis_note(runner: Runner, s: f32, use_exercise: bool) -> Result<String, String> {
     let s = in_range("s", s, 0.0, 1.0)?;
-    let reference = curves::hermite_basis(s);
-    let at = format!("s = {}", format_number(s));
     if !use_exercise {
-        let [a, b, c, d] = reference.map(format_number);
+        let [a, b, c, d] = curves::hermite_basis(s).map(format_number);
         return Ok(format!(
-            "At {at}: h00 = {a}, h10 = {b}, h01 = {c}, h11 = {d}."
+            "At s = {}: h00 = {a}, h10 = {b}, h01 = {c}, h11 = {d}.",
+            format_number(s)
         ));
     }
-    Ok(match run::hermite_basis(runner, s) {
-        Ok(yours) => compare_note("hermite_basis", &at, &yours, &reference, 1e-4).1,
+    Ok(match hermite_basis_probes(runner, s) {
+        Ok(probes) => probe_note("hermite_basis", &probes, 1e-4).1,
         Err(f) => failure_note(EXERCISE_NAMES[0], EXERCISES_FILE, &f),
     })
 }
@@ -758,9 +842,10 @@ pub fn hermite_basis_note(runner: Runner, s: f32, use_exercise: bool) -> Result<
 pub struct LagrangeScene {
     keys: usize,
     show_spline: bool,
-    base: Vec<Vec3>,
-    more: Vec<Vec3>,
-    spline: Vec<Vec3>,
+    /// The drawn pieces of each curve: the polynomial is cut where it leaves the graph.
+    base: Vec<Vec<Vec3>>,
+    more: Vec<Vec<Vec3>>,
+    spline: Vec<Vec<Vec3>>,
 }
 
 /// Colours of the Lagrange figure: blue through `n` keys, red through `n + 2`, green spline.
@@ -832,10 +917,16 @@ impl LagrangeScene {
 
     pub fn draw(&self, frame: &mut Frame) {
         self.draw_axes(frame);
-        frame.polyline(&self.base, LAGRANGE_BASE);
-        frame.polyline(&self.more, LAGRANGE_MORE);
+        for piece in &self.base {
+            frame.polyline(piece, LAGRANGE_BASE);
+        }
+        for piece in &self.more {
+            frame.polyline(piece, LAGRANGE_MORE);
+        }
         if self.show_spline {
-            frame.polyline(&self.spline, LAGRANGE_SPLINE);
+            for piece in &self.spline {
+                frame.polyline(piece, LAGRANGE_SPLINE);
+            }
         }
         let (a, b) = self.key_sets();
         for (t, y) in b.0.iter().zip(&b.1) {
@@ -894,18 +985,122 @@ impl LagrangeScene {
             .map_err(|e| e.to_string())?;
         debug_assert!(b.key_count() <= MAX_LAGRANGE_KEYS);
         const SAMPLES: usize = 400;
-        // The polynomial can shoot far off between keys: clip what we draw to the graph.
-        let clip = |y: f32| y.clamp(Y_RANGE.0, Y_RANGE.1);
-        let sample = |track: &Track<f32>| -> Vec<Vec3> {
+        // The polynomial can shoot far off between keys: cut what we draw at the graph's edge
+        // (a clamped curve would run along the edge and read as a value that saturates).
+        let sample = |track: &Track<f32>| -> Vec<Vec<Vec3>> {
             let (t0, t1) = (track.start_sec(), track.end_sec());
-            (0..SAMPLES)
+            let graph: Vec<(f32, f32)> = (0..SAMPLES)
                 .map(|k| {
                     let t = t0 + (t1 - t0) * k as f32 / (SAMPLES - 1) as f32;
-                    self.place(t, clip(track.position(t)))
+                    (t, track.position(t))
                 })
+                .collect();
+            clip_graph(&graph, Y_RANGE)
+                .into_iter()
+                .map(|piece| piece.iter().map(|&(t, y)| self.place(t, y)).collect())
                 .collect()
         };
         (self.base, self.more, self.spline) = (sample(&a), sample(&b), sample(&spline));
         Ok(())
+    }
+}
+
+/// The pieces of a sampled graph `(t, y)` that lie inside `y ∈ [lo, hi]`: a piece ends where the
+/// graph leaves the band and the next starts where it comes back, each at the crossing point
+/// (interpolated linearly between the two samples on either side). Nothing is clamped.
+pub fn clip_graph(graph: &[(f32, f32)], (lo, hi): (f32, f32)) -> Vec<Vec<(f32, f32)>> {
+    let inside = |y: f32| (lo..=hi).contains(&y);
+    // Where the segment from a to b crosses the band's edge nearest to `from`.
+    let crossing = |a: (f32, f32), b: (f32, f32), edge: f32| {
+        let f = (edge - a.1) / (b.1 - a.1);
+        (a.0 + (b.0 - a.0) * f, edge)
+    };
+    let mut pieces: Vec<Vec<(f32, f32)>> = Vec::new();
+    let mut current: Vec<(f32, f32)> = Vec::new();
+    for (k, &p) in graph.iter().enumerate() {
+        let prev = k.checked_sub(1).map(|j| graph[j]);
+        match (prev, inside(p.1)) {
+            (Some(a), true) if !inside(a.1) => {
+                // Coming back in: start at the edge it crosses.
+                let edge = if a.1 > hi { hi } else { lo };
+                current.push(crossing(a, p, edge));
+                current.push(p);
+            }
+            (_, true) => current.push(p),
+            (Some(a), false) if inside(a.1) => {
+                if !p.1.is_nan() {
+                    let edge = if p.1 > hi { hi } else { lo };
+                    current.push(crossing(a, p, edge));
+                }
+                pieces.push(std::mem::take(&mut current));
+            }
+            (_, false) => {}
+        }
+    }
+    if !current.is_empty() {
+        pieces.push(current);
+    }
+    pieces.retain(|piece| piece.len() > 1);
+    pieces
+}
+
+/// One input at which a figure checks a student's function: where (as the note names it), the
+/// student's answer and the reference's.
+pub struct Probe {
+    pub at: String,
+    pub yours: Vec<f32>,
+    pub reference: Vec<f32>,
+}
+
+/// The verdict on a student's function at the input the figure shows (the first probe) and at a
+/// few more chosen where mistakes show (ends, keys, edge cases): the displayed input alone
+/// often cannot tell. Returns whether every probe matches, and the note: "matches at … and at
+/// N more inputs (…)", or where it differs first with both values, naming the other inputs
+/// that differ too.
+pub fn probe_note(what: &str, probes: &[Probe], tolerance: f32) -> (bool, String) {
+    let Some((shown, more)) = probes.split_first() else {
+        return (true, String::new());
+    };
+    let check = |p: &Probe| compare_note(what, &p.at, &p.yours, &p.reference, tolerance);
+    let (shown_ok, shown_note) = check(shown);
+    let wrong: Vec<&Probe> = more.iter().filter(|p| !check(p).0).collect();
+    let names = |ps: &[&Probe]| ps.iter().map(|p| p.at.as_str()).collect::<Vec<_>>().join("; ");
+    match (shown_ok, wrong.split_first()) {
+        (true, None) => {
+            let all: Vec<&Probe> = more.iter().collect();
+            let tail = if all.is_empty() {
+                String::new()
+            } else {
+                format!(" and at {} more inputs ({})", all.len(), names(&all))
+            };
+            (
+                true,
+                format!("Your {what} matches the reference at {}{tail}.", shown.at),
+            )
+        }
+        (true, Some((first, rest))) => {
+            let (_, differs) = check(first);
+            let also = if rest.is_empty() {
+                String::new()
+            } else {
+                format!(" It also differs at {}.", names(rest))
+            };
+            (
+                false,
+                format!(
+                    "Your {what} matches the reference at {} (the figure's input), but {}{also}",
+                    shown.at,
+                    differs.trim_start_matches(&format!("Your {what} "))
+                ),
+            )
+        }
+        (false, _) => {
+            let also = if wrong.is_empty() {
+                String::new()
+            } else {
+                format!(" It also differs at {}.", names(&wrong))
+            };
+            (false, format!("{shown_note}{also}"))
+        }
     }
 }

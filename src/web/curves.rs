@@ -165,6 +165,12 @@ impl KeyframesScene {
         self.scene.is_held()
     }
 
+    /// Empty, or why "constant speed" does not apply to the current scheme (step).
+    #[wasm_bindgen(getter, js_name = timingNote)]
+    pub fn timing_note(&self) -> String {
+        self.scene.timing_note()
+    }
+
     /// The path through every key, sampled segment by segment: `[x0, y0, x1, y1, …]` (for step,
     /// the held values).
     #[wasm_bindgen(js_name = samplePath)]
