@@ -5,7 +5,9 @@ use glam::Vec3;
 use inbetween::draw::{Frame, MeshId};
 use inbetween::exercises::run::{direct, Failure, Flat};
 use inbetween::expressive;
-use inbetween::figures::expressive::{FollowThrough, JumpComparison, Spacing, GHOST, PRINCIPLED};
+use inbetween::figures::expressive::{
+    damping_regime, FollowThrough, DT, JumpComparison, Spacing, GHOST, MAX_STRETCH, PRINCIPLED,
+};
 
 fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
     let v = |k: usize| Vec3::from_slice(&args[k..k + 3]);
@@ -45,7 +47,9 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
     let mut scene = Spacing::new();
     scene.set_ghosts(10.0).unwrap();
     let mut f = Frame::default();
-    scene.draw(&mut f, 0.5).unwrap();
+    // Half-way through the trip from key 1 to key 2.
+    let note = scene.draw(&mut f, 0.5 * scene.duration).unwrap();
+    assert!(note.contains("10 ghosts"), "the note counts what is drawn: {note}");
     let all_ghosts: Vec<Vec3> = f
         .points
         .iter()
@@ -54,11 +58,11 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
         .collect();
     // The arc's ghosts at z = 0, the straight twin's behind them.
     let (ghosts, twin): (Vec<Vec3>, Vec<Vec3>) = all_ghosts.iter().partition(|p| p.z > -0.5);
-    assert_eq!(ghosts.len(), 11);
-    assert_eq!(twin.len(), 11);
+    assert_eq!(ghosts.len(), 10, "as many ghosts as the slider says");
+    assert_eq!(twin.len(), 10);
     for (k, b) in twin.iter().enumerate() {
-        let covered = (b.x - twin[0].x) / (twin[10].x - twin[0].x);
-        let spacing = scene.spacing(k as f32 / 10.0);
+        let covered = (b.x - twin[0].x) / (twin[9].x - twin[0].x);
+        let spacing = scene.spacing(k as f32 / 9.0);
         assert!(
             (covered - spacing).abs() < 1e-4,
             "the same spacing: {covered} vs {spacing}"
@@ -74,16 +78,16 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
     );
     scene.set_twin(false);
     let mut g = Frame::default();
-    scene.draw(&mut g, 0.5).unwrap();
+    scene.draw(&mut g, 0.5 * scene.duration).unwrap();
     assert_eq!(
-        g.points.len() + 11,
+        g.points.len() + 10,
         f.points.len(),
         "no twin when it is off"
     );
     scene.set_twin(true);
     // Slow in and out: ghosts bunch at the ends and spread in the middle.
     let gap = |i: usize| (ghosts[i + 1] - ghosts[i]).length();
-    assert!(gap(5) > 3.0 * gap(0), "{} vs {}", gap(5), gap(0));
+    assert!(gap(4) > 3.0 * gap(0), "{} vs {}", gap(4), gap(0));
     scene.set_ease("linear").unwrap();
     let p: Vec<Vec3> = (0..=10).map(|k| scene.position(k as f32 / 10.0)).collect();
     let d: Vec<f32> = p.windows(2).map(|w| (w[1] - w[0]).length()).collect();
@@ -100,7 +104,7 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
     // The ball's volume is kept.
     scene.set_squash(true);
     f.clear();
-    scene.draw(&mut f, 0.5).unwrap();
+    scene.draw(&mut f, 0.5 * scene.duration).unwrap();
     let ball = f.meshes.iter().find(|m| m.mesh == MeshId::SPHERE).unwrap();
     let det = glam::Mat3::from_mat4(ball.model).determinant() / 0.3f32.powi(3);
     assert!((det - 1.0).abs() < 1e-3, "{det}");
@@ -137,7 +141,7 @@ fn jump_side_by_side() {
     assert!((apex - plain_apex).abs() < 0.05, "both reach the same apex");
     assert!(rows.iter().any(|r| r[3] < 0.8), "the crouch squashes");
     let mut f = Frame::default();
-    let note = scene.draw(&mut f, 0.25).unwrap();
+    let note = scene.draw(&mut f, 0.2).unwrap();
     assert!(note.contains("anticipation"), "{note}");
     let right = f
         .meshes
@@ -204,7 +208,7 @@ fn follow_through_lags_and_is_checked_against_the_reference() {
         .contains("matches the reference"));
     // Every joint is stepped by the student's code: explicit Euler drifts from the reference
     // over the loop, the shown antenna differs from the reference ghost drawn beside it.
-    scene.set(150.0, 4.0, 6.0).unwrap();
+    scene.set(150.0, 10.0, 6.0).unwrap();
     scene.set_runner(wrong);
     let mut e = Frame::default();
     let note = scene.draw(&mut e, 1.5).unwrap();
@@ -233,5 +237,203 @@ fn follow_through_lags_and_is_checked_against_the_reference() {
         .unwrap()
         .contains("Not done yet: exercise 2b.2"));
     assert!(scene.set(1.0, 4.0, 6.0).unwrap_err().contains("stiffness"));
-    assert!(scene.set(100.0, 4.0, 500.0).unwrap_err().contains("joints"));
+    assert!(scene.set(100.0, 10.0, 500.0).unwrap_err().contains("joints"));
+}
+
+#[test]
+fn spacing_loops_there_and_back_with_the_same_spacing_and_the_clock_runs_forward() {
+    let mut scene = Spacing::new();
+    let d = scene.duration;
+    assert_eq!(scene.loop_sec(), 2.0 * d);
+    // "ease in" starts slowly on both trips: after a tenth of each trip the ball has covered 1 %.
+    scene.set_ease("ease in").unwrap();
+    assert!((scene.along(0.1 * d) - 0.01).abs() < 1e-5);
+    assert!((scene.along(1.1 * d) - 0.99).abs() < 1e-5);
+    // The loop is continuous: at the turn and at the end the ball is on a key.
+    assert!((scene.along(d) - 1.0).abs() < 1e-6);
+    assert!(scene.along(2.0 * d).abs() < 1e-6);
+    // The plot's rows run forward in time over the whole loop (the playhead follows the clock).
+    let rows = scene.sample_spacing(61).unwrap();
+    assert_eq!(rows[0][0], 0.0);
+    assert!((rows[60][0] - 2.0 * d).abs() < 1e-5);
+    assert!(rows.windows(2).all(|w| w[1][0] > w[0][0]));
+    assert!((rows[30][1] - 1.0).abs() < 1e-5 && (rows[30][2] - 1.0).abs() < 1e-5);
+    // On the way back the note names the trip.
+    let note = scene.draw(&mut Frame::default(), 1.5 * d).unwrap();
+    assert!(note.contains("from key 2 to key 1"), "{note}");
+    assert!(scene.draw(&mut Frame::default(), 2.0 * d + 0.1).is_err());
+}
+
+#[test]
+fn the_jump_stretch_is_continuous_and_capped_at_1_6() {
+    let mut scene = JumpComparison::new();
+    // Take-off at 4 · 1.6 m / 1 s = 6.4 m/s: with 0.06 per m/s, s = 1 + 0.06 · 6.4 = 1.384.
+    let jump = inbetween::expressive::Jump::default();
+    assert!((jump.take_off_speed() - 6.4).abs() < 1e-5);
+    assert!((jump.take_off_stretch() - 1.384).abs() < 1e-4);
+    // Every slider corner: the stretch changes by less than 0.12 in 10 ms (a stretch that
+    // switches on at take-off jumps by 0.38 in one sample, a squash that starts at landing 0.7).
+    for (a, k) in [(0.0, 0.0), (0.3, 0.06), (0.6, 0.2), (0.0, 0.2), (0.6, 0.0)] {
+        scene.set_principles(a, k).unwrap();
+        let rows = scene.sample_heights(241).unwrap(); // a 2.4 s loop: 10 ms apart
+        let worst = rows
+            .windows(2)
+            .map(|w| (w[1][3] - w[0][3]).abs())
+            .fold(0.0f32, f32::max);
+        assert!(worst < 0.12, "anticipation {a}, stretch {k}: a step of {worst}");
+        assert!(rows.iter().all(|r| r[3] <= MAX_STRETCH + 1e-6 && r[3] > 0.3));
+    }
+    // At 0.2 per m/s, 1 + 0.2 · 6.4 = 2.28 is capped at 1.6, and the note says so.
+    scene.set_principles(0.3, 0.2).unwrap();
+    let note = scene.draw(&mut Frame::default(), 0.55).unwrap();
+    assert!(note.contains("capped at 1.600"), "{note}");
+    // At the apex (1 s) the ball is not moving: not stretched.
+    let rows = scene.sample_heights(241).unwrap();
+    let apex = rows.iter().find(|r| (r[0] - 1.0).abs() < 1e-4).unwrap();
+    assert!((apex[3] - 1.0).abs() < 1e-3, "{apex:?}");
+}
+
+#[test]
+fn the_damping_note_names_the_four_regimes() {
+    assert!(damping_regime(0.0, 150.0).starts_with("undamped"));
+    assert!(damping_regime(4.0, 150.0).starts_with("under-damped"));
+    assert!(damping_regime(20.0, 100.0).starts_with("critically damped"));
+    assert!(damping_regime(30.0, 100.0).starts_with("over-damped"));
+    let mut scene = FollowThrough::new();
+    let note = scene.draw(&mut Frame::default(), 1.0).unwrap();
+    assert!(note.contains("under-damped") && note.contains("2√k = 24.495"), "{note}");
+    scene.set(100.0, 20.0, 6.0).unwrap();
+    let note = scene.draw(&mut Frame::default(), 1.0).unwrap();
+    assert!(note.contains("critically damped"), "{note}");
+}
+
+#[test]
+fn the_antenna_keeps_its_length_and_stays_finite_over_every_slider_corner() {
+    let mut scene = FollowThrough::new();
+    for k in [FollowThrough::MIN_STIFFNESS, 600.0] {
+        for c in [FollowThrough::MIN_DAMPING, 60.0] {
+            for n in [2.0, FollowThrough::MAX_JOINTS as f32] {
+                scene.set(k, c, n).unwrap();
+                for row in scene.sample_tip(401).unwrap() {
+                    assert!(row.iter().all(|v| v.is_finite()));
+                    assert!(
+                        (row[2] - row[1]).abs() <= FollowThrough::LENGTH + 1e-4,
+                        "k {k}, c {c}, {n} joints: tip {} m from the base",
+                        row[2] - row[1]
+                    );
+                }
+            }
+        }
+    }
+    assert!(scene.set(10.0, 10.0, 6.0).unwrap_err().contains("stiffness"));
+    assert!(scene.set(150.0, 4.0, 6.0).unwrap_err().contains("damping"));
+    assert!(scene.set(150.0, 10.0, 20.0).unwrap_err().contains("joints"));
+    assert!(scene.set(150.0, 10.0, 5.5).unwrap_err().contains("joints"));
+}
+
+/// The largest angle (degrees) between neighbouring segments over two loops.
+fn worst_bend(k: f32, c: f32, joints: usize) -> f32 {
+    let segment = FollowThrough::LENGTH / (joints - 1) as f32;
+    let mut antenna = expressive::Antenna::new(FollowThrough::base(0.0), joints, segment);
+    let mut worst = 0.0f32;
+    for step in 1..=(2.0 * FollowThrough::DURATION / DT) as usize {
+        antenna.step(FollowThrough::base(step as f32 * DT), k, c, DT);
+        let p = &antenna.positions;
+        for i in 1..joints - 1 {
+            worst = worst.max((p[i] - p[i - 1]).angle_between(p[i + 1] - p[i]).to_degrees());
+        }
+    }
+    worst
+}
+
+#[test]
+fn inside_the_slider_limits_the_antenna_bends_but_never_folds_over() {
+    for k in [FollowThrough::MIN_STIFFNESS, 100.0, 150.0, 300.0, 600.0] {
+        for c in [FollowThrough::MIN_DAMPING, 10.0, 20.0, 60.0] {
+            for joints in 3..=FollowThrough::MAX_JOINTS {
+                let bend = worst_bend(k, c, joints);
+                assert!(bend < 110.0, "k {k}, c {c}, {joints} joints: a bend of {bend}°");
+            }
+        }
+    }
+    // What the limits keep out: with c = 4 six joints fold over (a bend near 180°).
+    assert!(worst_bend(150.0, 4.0, 6) > 170.0);
+}
+
+#[test]
+fn the_jump_captions_numbers_hold() {
+    let mut scene = JumpComparison::new();
+    let jump = inbetween::expressive::Jump::default();
+    let crouch_min = |rows: &[[f32; 4]]| {
+        rows.iter()
+            .filter(|r| r[0] < jump.wind_up)
+            .map(|r| r[3])
+            .fold(f32::MAX, f32::min)
+    };
+    // Anticipation 0: no crouch at all; 0.6: the stretch dips to 0.4.
+    scene.set_principles(0.0, 0.06).unwrap();
+    assert!((crouch_min(&scene.sample_heights(481).unwrap()) - 1.0).abs() < 1e-6);
+    scene.set_principles(0.6, 0.06).unwrap();
+    assert!((crouch_min(&scene.sample_heights(481).unwrap()) - 0.4).abs() < 1e-3);
+    // At 0.2 per m/s the stretch sits on the 1.6 cap just after take-off and before landing.
+    scene.set_principles(0.3, 0.2).unwrap();
+    let at = |t: f32| jump.principled(t);
+    let capped = inbetween::expressive::Jump {
+        stretch_per_speed: 0.2,
+        ..jump
+    };
+    for t in [jump.wind_up + 0.1, jump.wind_up + jump.flight - 0.1] {
+        assert_eq!(capped.principled(t).stretch, MAX_STRETCH, "at {t} s");
+    }
+    assert!(at(jump.wind_up + 0.1).stretch < MAX_STRETCH, "at 0.06 per m/s it is not capped");
+}
+
+#[test]
+fn a_soft_spring_trails_and_takes_the_whole_hold_to_come_back() {
+    // Rows every 0.01 s: (t, base x, tip x). The body stops at t = 1 s and holds until 2 s.
+    let offsets = |k: f32| -> Vec<(f32, f32)> {
+        let mut scene = FollowThrough::new();
+        scene.set(k, 10.0, 6.0).unwrap();
+        let rows = scene.sample_tip(401).unwrap();
+        rows.iter().map(|r| (r[0], r[2] - r[1])).collect()
+    };
+    let at = |o: &[(f32, f32)], t: f32| o.iter().find(|r| (r.0 - t).abs() < 5e-3).unwrap().1;
+    let soft = offsets(50.0);
+    // k = 50: still 0.3 m behind half-way through the hold, and never swings past.
+    assert!(at(&soft, 1.5) < -0.3, "{}", at(&soft, 1.5));
+    assert!(soft.iter().filter(|r| r.0 > 1.0 && r.0 < 2.0).all(|r| r.1 < 0.05));
+    // k = 150 (the default): it swings past the base during the hold.
+    let default = offsets(150.0);
+    assert!(default.iter().filter(|r| r.0 > 1.0 && r.0 < 2.0).any(|r| r.1 > 0.2));
+}
+
+#[test]
+fn the_scale_verdict_checks_a_squash_too() {
+    // Right for stretches, wrong for squashes (s < 1 left round across).
+    fn only_stretch(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        if name == "squash_stretch_scale" && args[0] < 1.0 {
+            let mut out = Vec::new();
+            Vec3::new(args[0], 1.0, 1.0).put(&mut out);
+            return Ok(out);
+        }
+        reference(name, args)
+    }
+    let mut scene = JumpComparison::new();
+    scene.set_use_exercise(true);
+    scene.set_runner(only_stretch);
+    // In flight (0.6 s) the ball is stretched: that input matches, the probe s = 0.6 does not.
+    let note = scene.draw(&mut Frame::default(), 0.6).unwrap();
+    assert!(
+        note.contains("(the figure's input), but differs at s = 0.600: yours (0.600, 1.000, 1.000)"),
+        "{note}"
+    );
+    scene.set_runner(reference);
+    let note = scene.draw(&mut Frame::default(), 0.6).unwrap();
+    assert!(note.contains("and at 3 more inputs (s = 0.600; s = 1.000; s = 1.600)"), "{note}");
+    // spring_step: one step on inputs where each term shows, after the whole antenna matched.
+    let mut follow = FollowThrough::new();
+    follow.set_use_exercise(true);
+    follow.set_runner(reference);
+    let note = follow.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(note.contains("and at 3 more inputs (one step from x = (0, 0, 0)"), "{note}");
 }

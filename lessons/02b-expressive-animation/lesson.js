@@ -1,6 +1,6 @@
 // Lesson 02b: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/expressive/ and src/figures/expressive.rs).
-import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, guarded, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, cssVar } from '../../www/lesson.js';
 import { SpacingScene, JumpScene, FollowThroughScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -10,7 +10,8 @@ const spacingViewer = await lesson.figure('#fig-spacing');
 if (spacingViewer) {
   spacingViewer.setCamera(0, 0.9, 0, 7.5, 0.0, 0.35);
   const scene = new SpacingScene();
-  const timeline = new Timeline(document.getElementById('spacing-timeline'), { duration: 2 * scene.duration });
+  // One loop: key 1 to key 2, then back with the same spacing (the scene says where the ball is).
+  const timeline = new Timeline(document.getElementById('spacing-timeline'), { duration: scene.loopSec });
   const p = { ease: 'slow in and out', arc: 1.2, twin: true, ghosts: 12, squash: true, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-spacing .panel'), title: 'Spacing' });
   gui.add(p, 'ease', ['slow in and out', 'linear', 'ease in', 'ease out']).name('spacing');
@@ -20,8 +21,9 @@ if (spacingViewer) {
   gui.add(p, 'squash').name('squash and stretch');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('spacing-plot'), {
-    title: 'Spacing: how much of the path is covered', xLabel: 'time (s)', yLabel: 'fraction of path (no unit)',
+    title: 'Spacing: how far along the path from key 1', xLabel: 'time (s)', yLabel: 'fraction of path (no unit)',
     series: ['this spacing', 'linear'], colors: [cssVar('--z-axis'), cssVar('--grey')], minSpan: 0.5,
+    widths: [2.5, 5], // linear drawn wide underneath: with linear spacing the two coincide
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
@@ -38,10 +40,9 @@ if (spacingViewer) {
   const note = document.getElementById('spacing-note');
   lesson.onFrame((dt) => {
     timeline.advance(dt);
-    const t = pingPong(timeline);
-    const message = [rejected, scene.draw(spacingViewer, t)].filter(Boolean).join(' ');
+    const message = [rejected, scene.draw(spacingViewer, timeline.time)].filter(Boolean).join(' ');
     if (note.textContent !== message) note.textContent = message;
-    plot.setCursor(t * scene.duration);
+    plot.setCursor(timeline.time);
     markDrawn('#fig-spacing');
   });
 }
@@ -57,16 +58,23 @@ if (jumpViewer) {
   gui.add(p, 'anticipation', 0, 0.6, 0.01).name('anticipation (crouch)');
   gui.add(p, 'stretch', 0, 0.2, 0.005).name('stretch per m/s');
   gui.add(p, 'useExercise').name('use my exercise');
+  // Two plots, one quantity each: height in metres, stretch as a ratio.
   const plot = new Plot(document.getElementById('jump-plot'), {
-    title: 'Height of the ball', xLabel: 'time (s)', yLabel: 'height (m), stretch s (ratio)',
-    series: ['plain height', 'principled height', 'principled stretch s'],
-    colors: [cssVar('--grey'), cssVar('--orange'), cssVar('--purple')], minSpan: 1,
+    title: 'Height of the ball', xLabel: 'time (s)', yLabel: 'height (m)',
+    series: ['plain', 'with the principles'],
+    colors: [cssVar('--grey'), cssVar('--orange')], minSpan: 1,
+  });
+  const stretchPlot = new Plot(document.getElementById('jump-stretch-plot'), {
+    title: 'Stretch of the ball with the principles', xLabel: 'time (s)', yLabel: 'stretch s (ratio)',
+    series: ['stretch s', 'plain (rigid, 1)'], colors: [cssVar('--orange'), cssVar('--grey')], minSpan: 0.5,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
     scene.setPrinciples(p.anticipation, p.stretch);
     scene.setUseExercise(p.useExercise);
-    plot.setData(columns(scene.sampleHeights(201), 4));
+    const [t, plain, principled, stretch] = columns(scene.sampleHeights(481), 4);
+    plot.setData([t, plain, principled]);
+    stretchPlot.setData([t, stretch, t.map(() => 1)]);
   }, (m) => { rejected = m; });
   gui.onChange(apply);
   apply();
@@ -76,6 +84,7 @@ if (jumpViewer) {
     const message = [rejected, scene.draw(jumpViewer, timeline.time)].filter(Boolean).join(' ');
     if (note.textContent !== message) note.textContent = message;
     plot.setCursor(timeline.time);
+    stretchPlot.setCursor(timeline.time);
     markDrawn('#fig-jump');
   });
 }
@@ -86,11 +95,12 @@ if (followViewer) {
   followViewer.setCamera(0, 1.3, 0, 4.2, 0.0, 0.12);
   const scene = new FollowThroughScene();
   const timeline = new Timeline(document.getElementById('follow-timeline'), { duration: 4 });
-  const p = { stiffness: 150, damping: 4, joints: 6, useExercise: false };
+  const p = { stiffness: 150, damping: 10, joints: 6, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-follow .panel'), title: 'Antenna' });
-  gui.add(p, 'stiffness', 10, 600, 1).name('stiffness k (1/s²)');
-  gui.add(p, 'damping', 0, 60, 0.5).name('damping c (1/s)');
-  gui.add(p, 'joints', 2, 20, 1).name('joints');
+  // The limits the scene takes (FollowThrough::MIN_STIFFNESS, MIN_DAMPING, MAX_JOINTS).
+  gui.add(p, 'stiffness', 50, 600, 1).name('stiffness k (1/s²)');
+  gui.add(p, 'damping', 8, 60, 0.5).name('damping c (1/s)');
+  gui.add(p, 'joints', 2, 6, 1).name('joints');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('follow-plot'), {
     title: 'Base and tip, side to side', xLabel: 'time (s)', yLabel: 'x (m)',

@@ -37,6 +37,10 @@ pub fn squash_stretch_matrix(axis: Vec3, s: f32) -> Mat3 {
     r * Mat3::from_diagonal(squash_stretch_scale(s)) * r.transpose()
 }
 
+/// The largest stretch the lesson's figures apply: at s = 1.6 a ball is already twice as long as
+/// it is wide (s / (1/√s) = s^1.5 ≈ 2.0); beyond that a fast ball reads as a needle.
+pub const MAX_STRETCH: f32 = 1.6;
+
 /// How much to stretch at a speed: `s = 1 + k · speed`, at most `max_stretch`. A common rule:
 /// stretch with speed, and squash (`s < 1`) only on impact.
 pub fn stretch_from_speed(speed: f32, k: f32, max_stretch: f32) -> f32 {
@@ -133,19 +137,41 @@ impl Jump {
         self.wind_up + self.flight + self.settle
     }
 
-    /// The principled jump at `time_sec` (clamped to the duration).
+    /// The vertical speed at take-off and at landing, m/s: `4 apex / flight` (the parabola's
+    /// slope at its ends).
+    pub fn take_off_speed(&self) -> f32 {
+        4.0 * self.apex / self.flight
+    }
+
+    /// The stretch in flight at take-off and landing: `1 + k · take_off_speed`, at most
+    /// [`MAX_STRETCH`].
+    pub fn take_off_stretch(&self) -> f32 {
+        stretch_from_speed(self.take_off_speed(), self.stretch_per_speed, MAX_STRETCH)
+    }
+
+    /// The principled jump at `time_sec` (clamped to the duration). The stretch is continuous:
+    /// the crouch ends in a push-off that stretches the body to the take-off stretch before it
+    /// leaves the ground, and the landing squash starts from the stretch it lands with.
+    /// ```text
+    /// crouch (s = t / wind_up):   stretch = 1 − a·e(sin πs) + (s₀ − 1)·e((s − 0.5) / 0.5)
+    /// flight:                     stretch = min(1 + k |v|, 1.6)
+    /// landing (s = t' / settle):  stretch = 1 + (s₀ − 1)·(1 − e(s / 0.4)) − q·sin(π min(s / 0.8, 1))
+    /// ```
+    /// `e` is smoothstep clamped to [0, 1], `a` the anticipation, `s₀` the take-off stretch,
+    /// `q = max(a, 0.15)` the landing squash.
     pub fn principled(&self, time_sec: f32) -> JumpSample {
         let t = time_sec.clamp(0.0, self.duration());
-        let smooth = |s: f32| crate::curves::Ease::Smoothstep.apply(s);
+        let smooth = |s: f32| crate::curves::Ease::Smoothstep.apply(s.clamp(0.0, 1.0));
+        let take_off = self.take_off_stretch();
         if t < self.wind_up {
-            // Crouch down and back up into the take-off: squash while low.
+            // Crouch down (squash while low), then push off: stretch up to the take-off value.
             let s = t / self.wind_up;
-            let dip = (std::f32::consts::PI * s).sin();
-            let depth = self.anticipation * smooth(dip);
+            let depth = self.anticipation * smooth((std::f32::consts::PI * s).sin());
+            let push = (take_off - 1.0) * smooth((s - 0.5) / 0.5);
             return JumpSample {
                 height: 0.0,
                 vertical_velocity: 0.0,
-                stretch: 1.0 - depth,
+                stretch: 1.0 - depth + push,
             };
         }
         let t = t - self.wind_up;
@@ -157,18 +183,18 @@ impl Jump {
             return JumpSample {
                 height,
                 vertical_velocity: velocity,
-                stretch: stretch_from_speed(velocity, self.stretch_per_speed, 1.6),
+                stretch: stretch_from_speed(velocity, self.stretch_per_speed, MAX_STRETCH),
             };
         }
-        // Landing: a squash that springs back.
+        // Landing: the stretch relaxes while a squash grows and springs back.
         let s = ((t - self.flight) / self.settle).min(1.0);
-        let squash = self.anticipation.max(0.15)
-            * (1.0 - smooth(s))
-            * (std::f32::consts::PI * s * 1.5).cos().max(0.0);
+        let relax = (take_off - 1.0) * (1.0 - smooth(s / 0.4));
+        let squash =
+            self.anticipation.max(0.15) * (std::f32::consts::PI * (s / 0.8).min(1.0)).sin();
         JumpSample {
             height: 0.0,
             vertical_velocity: 0.0,
-            stretch: 1.0 - squash,
+            stretch: 1.0 + relax - squash,
         }
     }
 

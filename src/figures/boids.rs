@@ -58,7 +58,7 @@ pub const LAW_PLOT_X: (f32, f32) = (0.05, 1.5);
 /// [`LAW_PLOT_X`]'s start to its end, each as `[x, f(x) of a1/x² − a2/x⁴, f(x) of the
 /// Gaussian law]` (flat), with the flock's constants ([`FLOCK_LAWS`]). Positive is attraction.
 pub fn law_plot_samples(count: f32) -> Result<Vec<f32>, String> {
-    let n = in_range("samples", count, 2.0, 1000.0)? as usize;
+    let n = super::whole_number("samples", count, 2, 1000)?;
     let (lo, hi) = LAW_PLOT_X;
     Ok((0..n)
         .flat_map(|i| {
@@ -211,7 +211,7 @@ impl FlockFigure {
 
     /// A new flock of `count ∈ [2, PAGE_MAX_BOIDS]` boids.
     pub fn set_count(&mut self, count: f32) -> Result<(), String> {
-        let n = in_range("count", count, 2.0, PAGE_MAX_BOIDS as f32)? as usize;
+        let n = super::whole_number("count", count, 2, PAGE_MAX_BOIDS)?;
         self.flock = Flock::new(n, &self.params, self.seed)?;
         self.restart_plot();
         Ok(())

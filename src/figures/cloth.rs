@@ -388,7 +388,7 @@ impl ClothFigure {
 
     /// Particles per side, in [4, 100] (the flag has about two thirds as many rows).
     pub fn set_resolution(&mut self, side: f32) -> Result<(), String> {
-        let side = in_range("resolution", side, 4.0, PAGE_MAX_SIDE as f32)?.round() as usize;
+        let side = super::whole_number("resolution", side, 4, PAGE_MAX_SIDE)?;
         if side != self.side {
             self.side = side;
             self.build();

@@ -35,6 +35,17 @@ pub const HANDLE_SEC: f32 = 0.25;
 pub const HOLD_SEC: f32 = 0.5;
 /// The most keys the editor takes (Lagrange takes at most [`MAX_LAGRANGE_KEYS`]).
 pub const MAX_KEYS: usize = 1000;
+/// The editor's keys lie in a documented physical range, so that every derived quantity (spline
+/// coefficients, arc length, speeds) stays finite in `f32`: times within ±[`KEY_TIME_LIMIT_SEC`]
+/// and at least [`MIN_KEY_SPACING_SEC`] apart, positions within ±[`KEY_VALUE_LIMIT_M`] on each
+/// axis, tangents within ±[`KEY_TANGENT_LIMIT_M_PER_SEC`] on each axis.
+pub const MIN_KEY_SPACING_SEC: f32 = 1e-3;
+/// See [`MIN_KEY_SPACING_SEC`].
+pub const KEY_TIME_LIMIT_SEC: f32 = 1e4;
+/// See [`MIN_KEY_SPACING_SEC`].
+pub const KEY_VALUE_LIMIT_M: f32 = 1e4;
+/// See [`MIN_KEY_SPACING_SEC`].
+pub const KEY_TANGENT_LIMIT_M_PER_SEC: f32 = 1e6;
 /// About how many points the drawn path has in all (at least one per segment).
 pub const PATH_POINTS: usize = 400;
 const ARC_TABLE_SUBDIVISIONS: usize = 24;
@@ -158,6 +169,37 @@ const EXERCISE_NAMES: [&str; 4] = [
     "exercise 2.4 arc_length_invert",
 ];
 
+/// An error unless every key of `track` lies in the editor's range (see [`MIN_KEY_SPACING_SEC`]).
+fn check_keys(track: &Track<Vec2>) -> Result<(), String> {
+    let times = track.times();
+    if let Some(t) = times.iter().find(|t| t.abs() > KEY_TIME_LIMIT_SEC) {
+        return Err(format!(
+            "key times must lie in [-{KEY_TIME_LIMIT_SEC}, {KEY_TIME_LIMIT_SEC}] s, got {t}"
+        ));
+    }
+    if let Some(w) = times.windows(2).find(|w| w[1] - w[0] < MIN_KEY_SPACING_SEC) {
+        return Err(format!(
+            "keys must be at least {MIN_KEY_SPACING_SEC} s apart, got {} and {}",
+            w[0], w[1]
+        ));
+    }
+    let beyond = |v: &Vec2, limit: f32| v.x.abs() > limit || v.y.abs() > limit;
+    if let Some(p) = track.values().iter().find(|p| beyond(p, KEY_VALUE_LIMIT_M)) {
+        return Err(format!(
+            "key positions must lie in [-{KEY_VALUE_LIMIT_M}, {KEY_VALUE_LIMIT_M}] m on each axis, got ({}, {})",
+            p.x, p.y
+        ));
+    }
+    let tangents = track.tangents_in().iter().chain(track.tangents_out());
+    if let Some(d) = tangents.into_iter().find(|d| beyond(d, KEY_TANGENT_LIMIT_M_PER_SEC)) {
+        return Err(format!(
+            "tangents must lie in [-{KEY_TANGENT_LIMIT_M_PER_SEC}, {KEY_TANGENT_LIMIT_M_PER_SEC}] m/s on each axis, got ({}, {})",
+            d.x, d.y
+        ));
+    }
+    Ok(())
+}
+
 impl Default for KeyframesScene {
     fn default() -> Self {
         Self::new()
@@ -221,16 +263,15 @@ impl KeyframesScene {
                 .and_then(|t| t.with_interpolation(first))
                 .map_err(|e| e.to_string())?
         };
-        self.install(track);
-        Ok(())
+        self.install(track)
     }
 
     /// Sets every key's in and out tangents (metres per second) and switches to Hermite.
     pub fn set_tangents(&mut self, tin: Vec<Vec2>, tout: Vec<Vec2>) -> Result<(), String> {
         let (times, values) = (self.track.times().to_vec(), self.track.values().to_vec());
         let track = Track::new_hermite(times, values, tin, tout).map_err(|e| e.to_string())?;
+        self.install(track)?;
         self.scheme_name = "hermite".into();
-        self.install(track);
         Ok(())
     }
 
@@ -240,8 +281,8 @@ impl KeyframesScene {
         track
             .set_tangents(index, tin, tout)
             .map_err(|e| e.to_string())?;
+        self.install(track)?;
         self.scheme_name = "hermite".into();
-        self.install(track);
         Ok(())
     }
 
@@ -251,8 +292,8 @@ impl KeyframesScene {
         let scheme = scheme_from_name(name, self.tension)?;
         let mut track = self.track.clone();
         track.set_interpolation(scheme).map_err(|e| e.to_string())?;
+        self.install(track)?;
         self.scheme_name = name.to_string();
-        self.install(track);
         Ok(())
     }
 
@@ -263,9 +304,13 @@ impl KeyframesScene {
                 "the tension must be between 0 and 2, but it is {tension}"
             ));
         }
+        let previous = self.tension;
         self.tension = tension;
         if self.scheme_name == "cardinal" {
-            self.set_scheme("cardinal")?;
+            if let Err(e) = self.set_scheme("cardinal") {
+                self.tension = previous;
+                return Err(e);
+            }
         }
         Ok(())
     }
@@ -439,10 +484,18 @@ impl KeyframesScene {
         frame.mesh(MeshId::SPHERE, model, BALL_COLOR);
     }
 
-    fn install(&mut self, track: Track<Vec2>) {
-        self.table = ArcLengthTable::new(&track, ARC_TABLE_SUBDIVISIONS);
+    /// Makes `track` the scene's track if its keys lie in the editor's range (see
+    /// [`MIN_KEY_SPACING_SEC`]) and its path has a finite length; otherwise the scene is unchanged.
+    fn install(&mut self, track: Track<Vec2>) -> Result<(), String> {
+        check_keys(&track)?;
+        let table = ArcLengthTable::new(&track, ARC_TABLE_SUBDIVISIONS);
+        if !table.total_length().is_finite() {
+            return Err("the path's length overflows: bring the keys closer together".into());
+        }
+        self.table = table;
         self.track = track;
         self.student = None;
+        Ok(())
     }
 
     fn warp(&self) -> TimeWarp {
@@ -881,7 +934,7 @@ impl LagrangeScene {
 
     /// Number of keys of the first curve (3 to 16); the second curve has two more.
     pub fn set_key_count(&mut self, keys: f32) -> Result<(), String> {
-        self.keys = in_range("key count", keys, 3.0, 16.0)?.round() as usize;
+        self.keys = super::whole_number("key count", keys, 3, 16)?;
         self.rebuild()
     }
 

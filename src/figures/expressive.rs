@@ -3,7 +3,8 @@
 //! (tests/figures_expressive.rs); `web::expressive` only wraps these for JavaScript.
 
 use super::{check_samples, compare_note, failure_note, format_number, in_range, palette};
-use super::{Frame, MeshId, Runner, DEFAULT_RUNNER};
+use super::curves::{probe_note, Probe};
+use super::{Failure, Frame, MeshId, Runner, DEFAULT_RUNNER};
 use crate::curves::Ease;
 use crate::exercises::run;
 use crate::expressive::{self, arc_point, Antenna, Jump};
@@ -34,23 +35,29 @@ fn stretch_scale(runner: Runner, use_exercise: bool, s: f32) -> Vec3 {
         .unwrap_or_else(|| expressive::squash_stretch_scale(s))
 }
 
-/// The note about exercise 2b.1 at stretch `s`: the comparison and the volume the answer keeps.
+/// The note about exercise 2b.1 at stretch `s` (the figure's input) and at a squash, at rest
+/// and at the largest stretch: the comparison and the volume the answer keeps at `s`.
 fn scale_note(runner: Runner, s: f32) -> String {
-    match run::squash_stretch_scale(runner, s) {
+    let probe = |u: f32| -> Result<Probe, Failure> {
+        Ok(Probe {
+            at: format!("s = {}", format_number(u)),
+            yours: run::squash_stretch_scale(runner, u)?.to_array().to_vec(),
+            reference: expressive::squash_stretch_scale(u).to_array().to_vec(),
+        })
+    };
+    let probes: Result<Vec<Probe>, Failure> = std::iter::once(s)
+        .chain([0.6, 1.0, MAX_STRETCH].into_iter().filter(|&u| u != s))
+        .map(probe)
+        .collect();
+    match probes {
         Err(f) => failure_note("exercise 2b.1 squash_stretch_scale", FILE, &f),
-        Ok(yours) => {
-            let reference = expressive::squash_stretch_scale(s);
-            let at = format!("s = {}", format_number(s));
-            let (_, note) = compare_note(
-                "squash_stretch_scale",
-                &at,
-                &yours.to_array(),
-                &reference.to_array(),
-                TOLERANCE,
-            );
+        Ok(probes) => {
+            let (_, note) = probe_note("squash_stretch_scale", &probes, TOLERANCE);
+            let volume: f32 = probes[0].yours.iter().product();
             format!(
-                "{note} Your scale keeps {} of the volume.",
-                format_number(yours.x * yours.y * yours.z)
+                "{note} At s = {} your scale keeps {} of the volume.",
+                format_number(s),
+                format_number(volume)
             )
         }
     }
@@ -72,6 +79,7 @@ const TWIN_OFFSET: Vec3 = Vec3::new(0.0, 0.0, -1.4);
 
 /// The most ghosts Figure 1 draws.
 pub const MAX_GHOSTS: usize = 60;
+pub use crate::expressive::MAX_STRETCH;
 
 /// Figure 1: one ball between two keys along an arc (or a straight line), with the spacing of an
 /// easing curve: ghosts at equal time steps, a spacing chart under the path, and optional squash
@@ -156,40 +164,88 @@ impl Spacing {
         self.ease.apply(t)
     }
 
-    /// The ball's position at `t ∈ [0, 1]` of the time.
+    /// The ball's position at `t ∈ [0, 1]` of the time from key 1 to key 2.
     pub fn position(&self, t: f32) -> Vec3 {
         arc_point(START, END, Vec3::Y, self.arc_height, self.spacing(t))
     }
 
-    /// The stretch `s` at `t`: `1 + 0.06 · speed` (m/s), at most 1.6.
-    pub fn stretch(&self, t: f32) -> (Vec3, f32) {
+    /// Seconds of one loop: key 1 to key 2, then back to key 1 with the same spacing.
+    pub fn loop_sec(&self) -> f32 {
+        2.0 * self.duration
+    }
+
+    /// At `time_sec` into the loop: whether the ball is on its way back, and `t ∈ [0, 1]`, the
+    /// fraction of the time of the current trip.
+    pub fn trip(&self, time_sec: f32) -> (bool, f32) {
+        let u = (time_sec / self.duration).clamp(0.0, 2.0);
+        if u <= 1.0 {
+            (false, u)
+        } else {
+            (true, u - 1.0)
+        }
+    }
+
+    /// How far along the path from key 1 the ball is at `time_sec` into the loop, as a fraction
+    /// of the path: `e(t)` on the way out, `1 − e(t)` on the way back (each trip starts and ends
+    /// with the same spacing).
+    pub fn along(&self, time_sec: f32) -> f32 {
+        match self.trip(time_sec) {
+            (false, t) => self.spacing(t),
+            (true, t) => 1.0 - self.spacing(t),
+        }
+    }
+
+    /// The ball's position at `time_sec` into the loop.
+    pub fn position_at(&self, time_sec: f32) -> Vec3 {
+        arc_point(START, END, Vec3::Y, self.arc_height, self.along(time_sec))
+    }
+
+    /// The ball's velocity (central difference over 2 ms) and its stretch `s = 1 + 0.06 · speed`
+    /// (m/s), at most [`MAX_STRETCH`], at `time_sec` into the loop.
+    pub fn stretch(&self, time_sec: f32) -> (Vec3, f32) {
         let h = 1e-3;
-        let (a, b) = (
-            self.position((t - h).max(0.0)),
-            self.position((t + h).min(1.0)),
-        );
-        let dt = ((t + h).min(1.0) - (t - h).max(0.0)) * self.duration;
-        let velocity = (b - a) / dt;
+        let (t0, t1) = ((time_sec - h).max(0.0), (time_sec + h).min(self.loop_sec()));
+        let velocity = (self.position_at(t1) - self.position_at(t0)) / (t1 - t0);
         (
             velocity,
-            expressive::stretch_from_speed(velocity.length(), 0.06, 1.6),
+            expressive::stretch_from_speed(velocity.length(), 0.06, MAX_STRETCH),
         )
     }
 
-    /// `(t, fraction of the path, linear for comparison)`, time in seconds.
+    /// `(time, fraction of the path from key 1, the same with linear spacing)` over one loop,
+    /// time in seconds.
     pub fn sample_spacing(&self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
         check_samples(samples)?;
+        let linear = |time: f32| {
+            let u = time / self.duration;
+            if u <= 1.0 {
+                u
+            } else {
+                2.0 - u
+            }
+        };
         Ok((0..samples)
             .map(|k| {
-                let t = k as f32 / (samples - 1) as f32;
-                [t * self.duration, self.spacing(t), t]
+                let time = self.loop_sec() * k as f32 / (samples - 1) as f32;
+                [time, self.along(time), linear(time)]
             })
             .collect())
     }
 
-    /// Draws the path, ghosts, spacing chart and the ball at `t ∈ [0, 1]`; returns the note.
-    pub fn draw(&self, frame: &mut Frame, t: f32) -> Result<String, String> {
-        let t = in_range("t", t, 0.0, 1.0)?;
+    /// Draws the path, ghosts, spacing chart and the ball at `time_sec` into the loop; returns
+    /// the note.
+    pub fn draw(&self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let time = in_range("time", time_sec, 0.0, self.loop_sec())?;
+        let (back, t) = self.trip(time);
+        // Where the k-th of n ghosts of the current trip is, as a fraction of the path.
+        let ghost = |k: usize| {
+            let f = self.spacing(k as f32 / (self.ghosts - 1) as f32);
+            if back {
+                1.0 - f
+            } else {
+                f
+            }
+        };
         frame.grid(14, 0.5);
         let path: Vec<Vec3> = (0..=64)
             .map(|k| arc_point(START, END, Vec3::Y, self.arc_height, k as f32 / 64.0))
@@ -202,11 +258,9 @@ impl Spacing {
         // The spacing chart: a ruler below the path with a tick at each ghost.
         let ruler = |f: f32| Vec3::new(START.x + (END.x - START.x) * f, 0.02, 0.8);
         frame.line(ruler(0.0), ruler(1.0), CHART);
-        for k in 0..=self.ghosts {
-            let tk = k as f32 / self.ghosts as f32;
-            let p = self.position(tk);
-            frame.point(p, 0.06, GHOST);
-            let f = self.spacing(tk);
+        for k in 0..self.ghosts {
+            let f = ghost(k);
+            frame.point(arc_point(START, END, Vec3::Y, self.arc_height, f), 0.06, GHOST);
             frame.line(ruler(f), ruler(f) + Vec3::new(0.0, 0.0, 0.25), CHART);
         }
         frame.label(
@@ -218,11 +272,10 @@ impl Spacing {
             // The straight twin: same keys, same spacing, no arc.
             let (a, b) = (START + TWIN_OFFSET, END + TWIN_OFFSET);
             frame.line(a, b, palette::GREY);
-            for k in 0..=self.ghosts {
-                let f = self.spacing(k as f32 / self.ghosts as f32);
-                frame.point(a.lerp(b, f), 0.04, GHOST);
+            for k in 0..self.ghosts {
+                frame.point(a.lerp(b, ghost(k)), 0.04, GHOST);
             }
-            let q = a.lerp(b, self.spacing(t));
+            let q = a.lerp(b, self.along(time));
             frame.mesh(MeshId::SPHERE, ball(q, Vec3::X, Vec3::ONE), PLAIN);
             frame.label(b + Vec3::new(0.3, 0.45, 0.0), "straight line", PLAIN);
             frame.label(
@@ -231,8 +284,8 @@ impl Spacing {
                 BALL,
             );
         }
-        let p = self.position(t);
-        let (velocity, s) = self.stretch(t);
+        let p = self.position_at(time);
+        let (velocity, s) = self.stretch(time);
         let (s, scale) = if self.squash {
             (s, stretch_scale(self.runner, self.use_exercise, s))
         } else {
@@ -241,12 +294,16 @@ impl Spacing {
         frame.mesh(MeshId::SPHERE, ball(p, velocity, scale), BALL);
         let speed = velocity.length();
         let mut note = format!(
-            "At t = {} s the ball has covered {} % of the path, at {} m/s. {} ghosts at equal time steps: \
-             bunched where it is slow, spread where it is fast.",
-            format_number(t * self.duration),
+            "At {} s the ball has covered {} % of the way from key {} to key {}, at {} m/s \
+             (stretch s = {}). {} ghosts of this trip at equal time steps: bunched where it is \
+             slow, spread where it is fast.",
+            format_number(time),
             format_number(100.0 * self.spacing(t)),
+            if back { 2 } else { 1 },
+            if back { 1 } else { 2 },
             format_number(speed),
-            self.ghosts + 1,
+            format_number(s),
+            self.ghosts,
         );
         if self.use_exercise {
             note += " ";
@@ -353,20 +410,37 @@ impl JumpComparison {
             Vec3::new(2.0, apex, 0.0),
             palette::GRID_AXIS,
         );
-        let phase = if t < self.jump.wind_up {
+        let push_off = self.jump.wind_up * 0.5;
+        let phase = if t < push_off {
             "anticipation: crouching before take-off"
+        } else if t < self.jump.wind_up {
+            "push-off: stretching up to the take-off stretch"
         } else if t < self.jump.wind_up + self.jump.flight {
             "flight: a parabola, slow at the apex, stretched when fast"
         } else if t < self.jump.duration() {
-            "landing: squash, then recover"
+            "landing: the stretch relaxes, a squash springs back"
         } else {
             "at rest"
         };
+        let in_flight = (self.jump.wind_up..self.jump.wind_up + self.jump.flight).contains(&t);
+        let capped = if in_flight && p.stretch >= MAX_STRETCH {
+            format!(
+                ", capped at {} (1 + {} × {} m/s would be {})",
+                format_number(MAX_STRETCH),
+                format_number(self.jump.stretch_per_speed),
+                format_number(p.vertical_velocity.abs()),
+                format_number(1.0 + self.jump.stretch_per_speed * p.vertical_velocity.abs()),
+            )
+        } else {
+            String::new()
+        };
         let mut note = format!(
-            "t = {} s, {phase}. Right ball stretch s = {} (volume kept: {}).",
+            "t = {} s, {phase}. Right ball: stretch s = {}{capped} (volume kept: {}); take-off \
+             at {} m/s.",
             format_number(t),
             format_number(p.stretch),
             format_number(scale.x * scale.y * scale.z),
+            format_number(self.jump.take_off_speed()),
         );
         if self.use_exercise {
             note += " ";
@@ -378,6 +452,21 @@ impl JumpComparison {
 
 // ---------------------------------------------------------------------------------------------
 // Figure 3: follow-through on an antenna.
+
+/// What a damped spring of stiffness `k` and damping `c` does, in words: undamped at `c = 0`,
+/// under-damped below `2√k`, critically damped at it (within 0.1 %), over-damped above.
+pub fn damping_regime(c: f32, k: f32) -> &'static str {
+    let critical = 2.0 * k.sqrt();
+    if c == 0.0 {
+        "undamped, the antenna swings forever and nothing takes energy out"
+    } else if (c - critical).abs() <= 1e-3 * critical {
+        "critically damped, the fastest return without swinging past"
+    } else if c < critical {
+        "under-damped, the antenna swings past and wobbles"
+    } else {
+        "over-damped, it creeps back without swinging"
+    }
+}
 
 /// Colours of Figure 3.
 pub const BODY: Vec3 = palette::TEAL;
@@ -425,14 +514,28 @@ impl Default for FollowThrough {
 impl FollowThrough {
     /// One loop: move right (1 s), hold (1 s), move left (1 s), hold (1 s).
     pub const DURATION: f32 = 4.0;
-    /// Segment length of the antenna, metres.
-    const SEGMENT: f32 = 0.22;
+    /// Length of the antenna, metres: more joints cut it into shorter segments.
+    pub const LENGTH: f32 = 1.1;
+    /// The most joints. Each joint is pulled by the one below and never pulls it back, so a
+    /// wobble grows from joint to joint: with more joints (or less damping than
+    /// [`Self::MIN_DAMPING`], or a softer spring than [`Self::MIN_STIFFNESS`]) the antenna whips
+    /// round and folds over. Inside these limits no joint bends by more than 110°
+    /// (tests/figures_expressive.rs checks a grid of them).
+    pub const MAX_JOINTS: usize = 6;
+    /// The least damping the figure takes, 1/s.
+    pub const MIN_DAMPING: f32 = 8.0;
+    /// The softest spring the figure takes, 1/s².
+    pub const MIN_STIFFNESS: f32 = 50.0;
+
+    fn segment(joints: usize) -> f32 {
+        Self::LENGTH / (joints - 1) as f32
+    }
 
     pub fn new() -> Self {
-        let antenna = Antenna::new(Self::base(0.0), 6, Self::SEGMENT);
+        let antenna = Antenna::new(Self::base(0.0), 6, Self::segment(6));
         FollowThrough {
             stiffness: 150.0,
-            damping: 4.0,
+            damping: 10.0,
             joints: 6,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
@@ -443,11 +546,16 @@ impl FollowThrough {
         }
     }
 
-    /// Stiffness k (1/s², 10 to 600), damping c (1/s, 0 to 60), joints (2 to 20).
+    /// Stiffness k (1/s², [`Self::MIN_STIFFNESS`] to 600), damping c (1/s,
+    /// [`Self::MIN_DAMPING`] to 60), joints (2 to [`Self::MAX_JOINTS`]).
     pub fn set(&mut self, stiffness: f32, damping: f32, joints: f32) -> Result<(), String> {
-        let stiffness = in_range("stiffness", stiffness, 10.0, 600.0)?;
-        let damping = in_range("damping", damping, 0.0, 60.0)?;
-        let joints = in_range("joints", joints, 2.0, 20.0)?.round() as usize;
+        let stiffness = in_range("stiffness", stiffness, Self::MIN_STIFFNESS, 600.0)?;
+        let damping = in_range("damping", damping, Self::MIN_DAMPING, 60.0)?;
+        let joints = in_range("joints", joints, 2.0, Self::MAX_JOINTS as f32)?;
+        if joints.fract() != 0.0 {
+            return Err(format!("joints must be a whole number, got {joints}"));
+        }
+        let joints = joints as usize;
         if (stiffness, damping, joints) != (self.stiffness, self.damping, self.joints) {
             (self.stiffness, self.damping, self.joints) = (stiffness, damping, joints);
             self.steps_done = None;
@@ -495,7 +603,7 @@ impl FollowThrough {
         let steps = (time_sec / DT).round() as usize;
         if self.steps_done.is_none_or(|done| done > steps) {
             // Start from the end of a previous loop at rest: a straight antenna over the left end.
-            self.reference = Antenna::new(Self::base(0.0), self.joints, Self::SEGMENT);
+            self.reference = Antenna::new(Self::base(0.0), self.joints, Self::segment(self.joints));
             self.yours = self.reference.clone();
             self.problem = None;
             self.steps_done = Some(0);
@@ -529,7 +637,7 @@ impl FollowThrough {
     /// `(t, base x, tip x)` over one loop, metres.
     pub fn sample_tip(&mut self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
         check_samples(samples)?;
-        let mut antenna = Antenna::new(Self::base(0.0), self.joints, Self::SEGMENT);
+        let mut antenna = Antenna::new(Self::base(0.0), self.joints, Self::segment(self.joints));
         let total = (Self::DURATION / DT).round() as usize;
         let mut out = Vec::with_capacity(samples);
         let mut next = 0;
@@ -583,11 +691,7 @@ impl FollowThrough {
             "Damping c = {} (critical: 2√k = {}): {}. The tip is {} m behind the base.",
             format_number(self.damping),
             format_number(critical),
-            if self.damping < critical {
-                "under-damped, the antenna swings past and wobbles"
-            } else {
-                "over-damped, it creeps back without swinging"
-            },
+            damping_regime(self.damping, self.stiffness),
             format_number((base.x - antenna.tip().x).abs()),
         );
         if self.use_exercise {
@@ -607,13 +711,49 @@ impl FollowThrough {
             "the tip at t = {} s, every joint stepped by your code since t = 0",
             format_number(self.steps_done.unwrap_or(0) as f32 * DT)
         );
-        compare_note(
+        let (ok, note) = compare_note(
             "spring_step",
             &time,
             &self.yours.tip().to_array(),
             &self.reference.tip().to_array(),
             TIP_TOLERANCE,
-        )
-        .1
+        );
+        if !ok {
+            return note;
+        }
+        // The tip can match while a term the figure barely uses is wrong: one step on inputs
+        // chosen so that each term shows.
+        let one_step = |x: Vec3, v: Vec3, target: Vec3, k: f32, c: f32, dt: f32| {
+            let (yx, yv) = run::spring_step(self.runner, x, v, target, k, c, dt)?;
+            let (rx, rv) = expressive::spring_step(x, v, target, k, c, dt);
+            Ok(Probe {
+                at: format!(
+                    "one step from x = (0, 0, 0), v = ({}, 0, 0) to target (1, 0, 0) with k = {}, \
+                     c = {}, dt = {}",
+                    format_number(v.x),
+                    format_number(k),
+                    format_number(c),
+                    format_number(dt)
+                ),
+                yours: [yx.to_array(), yv.to_array()].concat(),
+                reference: [rx.to_array(), rv.to_array()].concat(),
+            })
+        };
+        let steps: Result<Vec<Probe>, Failure> = [(0.0, 100.0, 0.0), (2.0, 100.0, 10.0), (2.0, 0.0, 10.0)]
+            .into_iter()
+            .map(|(v, k, c)| one_step(Vec3::ZERO, Vec3::X * v, Vec3::X, k, c, 0.1))
+            .collect();
+        match steps {
+            Err(f) => failure_note("exercise 2b.2 spring_step", FILE, &f),
+            Ok(steps) => {
+                let shown = Probe {
+                    at: time,
+                    yours: Vec::new(),
+                    reference: Vec::new(),
+                };
+                let probes: Vec<Probe> = std::iter::once(shown).chain(steps).collect();
+                probe_note("spring_step", &probes, TOLERANCE).1
+            }
+        }
     }
 }

@@ -54,6 +54,18 @@ pub fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, String>
     }
 }
 
+/// `value` as a whole number in `[lo, hi]`: the one rule for every count a page passes (a
+/// fraction, NaN or a number outside the range is an error, never rounded or truncated).
+pub fn whole_number(name: &str, value: f32, lo: usize, hi: usize) -> Result<usize, String> {
+    if value.is_finite() && value.fract() == 0.0 && value >= lo as f32 && value <= hi as f32 {
+        Ok(value as usize)
+    } else {
+        Err(format!(
+            "{name} must be a whole number from {lo} to {hi}, got {value}"
+        ))
+    }
+}
+
 /// The most samples a plot may ask for.
 pub const MAX_SAMPLES: usize = 10_000;
 

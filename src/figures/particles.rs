@@ -202,7 +202,7 @@ impl EmitterFigure {
 
     /// Particles one explosion asks for, in [0, [`MAX_BURST`]] (rounded to a whole number).
     pub fn set_burst(&mut self, count: f32) -> Result<(), String> {
-        let n = in_range("particles per explosion", count, 0.0, MAX_BURST as f32)?.round() as usize;
+        let n = super::whole_number("particles per explosion", count, 0, MAX_BURST)?;
         self.changed(n != self.burst_size);
         self.burst_size = n;
         Ok(())

@@ -152,7 +152,7 @@ impl SkeletonFigure {
 
     /// Keys per cycle of every clip, in [4, 25] (counting the last key, which repeats the first).
     pub fn set_keys_per_cycle(&mut self, keys: f32) -> Result<(), String> {
-        let keys = in_range("keys per cycle", keys, 4.0, 25.0)?.round() as usize;
+        let keys = super::whole_number("keys per cycle", keys, 4, 25)?;
         if keys != self.keys_per_cycle {
             self.keys_per_cycle = keys;
             self.rebuild_clips()?;

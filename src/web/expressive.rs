@@ -61,15 +61,24 @@ impl SpacingScene {
         self.scene.duration
     }
 
+    /// Seconds of one loop: there and back, each trip with the same spacing.
+    #[wasm_bindgen(getter, js_name = loopSec)]
+    pub fn loop_sec(&self) -> f32 {
+        self.scene.loop_sec()
+    }
+
     /// `[t₀ (s), fraction₀, linear₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleSpacing)]
     pub fn sample_spacing(&self, samples: usize) -> Result<Vec<f32>, JsError> {
         Ok(self.scene.sample_spacing(samples).map_err(js)?.concat())
     }
 
-    /// Draws the figure at `t ∈ [0, 1]` of the time; returns the note.
-    pub fn draw(&mut self, viewer: &mut Viewer, t: f32) -> Result<String, JsError> {
-        let note = self.scene.draw(&mut viewer.renderer.frame, t).map_err(js)?;
+    /// Draws the figure at `time_sec` into the loop; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
@@ -151,7 +160,7 @@ impl FollowThroughScene {
         FollowThroughScene { scene }
     }
 
-    /// Stiffness (10 to 600 1/s²), damping (0 to 60 1/s), joints (2 to 20).
+    /// Stiffness (50 to 600 1/s²), damping (8 to 60 1/s), joints (2 to 6).
     pub fn set(&mut self, stiffness: f32, damping: f32, joints: f32) -> Result<(), JsError> {
         self.scene.set(stiffness, damping, joints).map_err(js)
     }
