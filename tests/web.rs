@@ -290,18 +290,18 @@ fn lesson_01_bindings_reject_bad_input_with_messages() {
     let mut scene = HierarchyScene::new();
     let m = message(
         scene
-            .set_joint_angles_deg(0, f32::NAN, 0.0, 0.0)
+            .set_joint_angles_deg(0.0, f32::NAN, 0.0, 0.0)
             .unwrap_err(),
     );
     assert!(m.contains("x must be a finite number"), "{m}");
-    let m = message(scene.set_joint_scale(1, 99.0, 1.0, 1.0).unwrap_err());
+    let m = message(scene.set_joint_scale(1.0, 99.0, 1.0, 1.0).unwrap_err());
     assert!(m.contains("sx must lie in [0.1, 4]"), "{m}");
-    let m = message(scene.select(99).unwrap_err());
+    let m = message(scene.select(99.0).unwrap_err());
     assert!(m.contains("out of range") && m.contains("11 joints"), "{m}");
-    assert!(scene.sample_cycle(1, 1.2).is_err());
-    assert!(scene.sample_cycle(50, f32::INFINITY).is_err());
-    assert!(scene.set_joint_angles_deg(3, 10.0, 20.0, 30.0).is_ok());
-    let back = scene.joint_angles_deg(3).unwrap();
+    assert!(scene.sample_cycle(1.0, 1.2).is_err());
+    assert!(scene.sample_cycle(50.0, f32::INFINITY).is_err());
+    assert!(scene.set_joint_angles_deg(3.0, 10.0, 20.0, 30.0).is_ok());
+    let back = scene.joint_angles_deg(3.0).unwrap();
     assert!(
         back.iter()
             .zip([10.0, 20.0, 30.0])
@@ -309,14 +309,14 @@ fn lesson_01_bindings_reject_bad_input_with_messages() {
         "{back:?}"
     );
     // Selecting a joint keeps its scale (the panel reads it back).
-    scene.set_joint_scale(3, 1.0, 2.0, 1.0).unwrap();
-    scene.select(0).unwrap();
-    scene.select(3).unwrap();
-    assert_eq!(scene.joint_scale(3).unwrap(), vec![1.0, 2.0, 1.0]);
+    scene.set_joint_scale(3.0, 1.0, 2.0, 1.0).unwrap();
+    scene.select(0.0).unwrap();
+    scene.select(3.0).unwrap();
+    assert_eq!(scene.joint_scale(3.0).unwrap(), vec![1.0, 2.0, 1.0]);
     let mut shape = SingleShapeScene::new();
     assert_ne!(
-        shape.matrix_of(false),
-        shape.matrix_of(true),
+        shape.matrix_of(false.into()).unwrap(),
+        shape.matrix_of(true.into()).unwrap(),
         "T·R and R·T differ"
     );
     let m = message(

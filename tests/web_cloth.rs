@@ -32,20 +32,20 @@ fn cloth_sizes_fail_with_their_own_message() {
 
 #[wasm_bindgen_test]
 fn figure_setters_reject_bad_input() {
-    assert!(message(ClothScene::new("curtain").err().unwrap()).contains("no cloth preset"));
-    let mut f = ClothScene::new("flag").unwrap();
+    assert!(message(ClothScene::new("curtain".into()).err().unwrap()).contains("no cloth preset"));
+    let mut f = ClothScene::new("flag".into()).unwrap();
     assert!(
-        message(f.set_stiffness("structural", f32::NAN).unwrap_err())
+        message(f.set_stiffness("structural".into(), f32::NAN).unwrap_err())
             .contains("structural stiffness")
     );
-    assert!(message(f.set_stiffness("wobbly", 1.0).unwrap_err()).contains("spring kind"));
+    assert!(message(f.set_stiffness("wobbly".into(), 1.0).unwrap_err()).contains("spring kind"));
     assert!(message(f.set_substeps(0.0).unwrap_err()).contains("substeps"));
     assert!(message(f.set_wind(-1.0).unwrap_err()).contains("wind"));
-    assert!(message(f.set_pins("all").unwrap_err()).contains("pins"));
-    let mut d = ClothScene::new("drape").unwrap();
+    assert!(message(f.set_pins("all".into()).unwrap_err()).contains("pins"));
+    let mut d = ClothScene::new("drape".into()).unwrap();
     assert!(message(d.set_resolution(0.0).unwrap_err()).contains("resolution"));
     assert!(message(d.set_resolution(1e6).unwrap_err()).contains("resolution"));
-    assert!(message(d.set_method("implicit").unwrap_err()).contains("method"));
+    assert!(message(d.set_method("implicit".into()).unwrap_err()).contains("method"));
     assert!(message(d.set_obstacles(f32::NAN, 0.0, 0.0).unwrap_err()).contains("sphere x"));
     assert!(message(d.grab(0.0, 0.0, 0.0, 10.0).unwrap_err()).contains("width"));
     assert!(d.set_resolution(40.0).is_ok());

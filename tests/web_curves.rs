@@ -34,7 +34,7 @@ fn valid_keys_are_accepted_and_read_back() {
         "natural",
         "centripetal",
     ] {
-        scene.set_scheme(scheme).expect(scheme);
+        scene.set_scheme(scheme.into()).expect(scheme);
         assert!(
             scene.sample_path().len() >= 6,
             "{scheme}: a path through the keys"
@@ -42,15 +42,15 @@ fn valid_keys_are_accepted_and_read_back() {
     }
     scene.set_tension(0.5).expect("tension in range");
     scene
-        .set_key_tangent(1, 1.0, 0.0, 0.0, 1.0)
+        .set_key_tangent(1.0, 1.0, 0.0, 0.0, 1.0)
         .expect("a broken tangent");
     assert_eq!(scene.scheme(), "hermite");
     scene
         .set_tangents(vec![0.0; 6], vec![1.0; 6])
         .expect("one tangent pair per key");
-    scene.set_arc_length(true);
-    scene.set_ease("smoothstep").expect("known ease");
-    assert_eq!(scene.sample_motion(11).expect("motion").len(), 44);
+    scene.set_arc_length(true.into()).unwrap();
+    scene.set_ease("smoothstep".into()).expect("known ease");
+    assert_eq!(scene.sample_motion(11.0).expect("motion").len(), 44);
 }
 
 #[wasm_bindgen_test]
@@ -103,13 +103,13 @@ fn mismatched_lengths_are_rejected() {
 #[wasm_bindgen_test]
 fn bad_tangents_tension_and_names_are_rejected() {
     let mut scene = KeyframesScene::new();
-    assert!(message(scene.set_key_tangent(0, f32::NAN, 0.0, 0.0, 0.0)).contains("NaN"));
-    assert!(message(scene.set_key_tangent(99, 0.0, 0.0, 0.0, 0.0)).contains("99"));
+    assert!(message(scene.set_key_tangent(0.0, f32::NAN, 0.0, 0.0, 0.0)).contains("NaN"));
+    assert!(message(scene.set_key_tangent(99.0, 0.0, 0.0, 0.0, 0.0)).contains("99"));
     assert!(message(scene.set_tension(2.5)).contains("between 0 and 2"));
     assert!(message(scene.set_tension(f32::NAN)).contains("between 0 and 2"));
-    assert!(message(scene.set_scheme("bezier")).contains("unknown scheme"));
-    assert!(message(scene.set_ease("bounce")).contains("unknown ease"));
-    assert!(message(scene.sample_motion(1)).contains("samples"));
+    assert!(message(scene.set_scheme("bezier".into())).contains("unknown scheme"));
+    assert!(message(scene.set_ease("bounce".into())).contains("unknown ease"));
+    assert!(message(scene.sample_motion(1.0)).contains("samples"));
     assert!(message(scene.position(f32::NAN)).contains("finite"));
 }
 
@@ -124,18 +124,18 @@ fn the_lagrange_demo_checks_its_key_count() {
 #[wasm_bindgen_test]
 fn ten_thousand_lagrange_keys_give_an_error_not_a_freeze() {
     let mut scene = KeyframesScene::new();
-    scene.set_scheme("lagrange").expect("five keys");
+    scene.set_scheme("lagrange".into()).expect("five keys");
     let times: Vec<f32> = (0..10_000).map(|i| i as f32).collect();
     let m = message(scene.set_keys(times.clone(), vec![0.0; 20_000]));
     assert!(m.contains("at most"), "{m}");
-    scene.set_scheme("linear").expect("linear");
+    scene.set_scheme("linear".into()).expect("linear");
     let m = message(scene.set_keys(times[..1001].to_vec(), vec![0.0; 2002]));
     assert!(m.contains("at most 1000 keys"), "{m}");
     let times: Vec<f32> = (0..65).map(|i| i as f32).collect();
     scene
         .set_keys(times, vec![0.0; 130])
         .expect("65 linear keys");
-    assert!(message(scene.set_scheme("lagrange")).contains("at most 64 keys"));
-    assert!(message(scene.load_preset("nope")).contains("unknown preset"));
-    scene.load_preset("loop").expect("a preset");
+    assert!(message(scene.set_scheme("lagrange".into())).contains("at most 64 keys"));
+    assert!(message(scene.load_preset("nope".into())).contains("unknown preset"));
+    scene.load_preset("loop".into()).expect("a preset");
 }

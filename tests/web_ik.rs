@@ -25,11 +25,11 @@ fn ik_scene_rejects_bad_input_with_a_message() {
     assert!(message(s.set_segments(1.0).unwrap_err()).contains("segments"));
     assert!(message(s.set_iterations(f32::INFINITY).unwrap_err()).contains("iterations"));
     assert!(message(s.set_pole_angle_deg(500.0).unwrap_err()).contains("pole angle"));
-    assert!(message(s.set_limits("rubber").unwrap_err()).contains("joint limits"));
+    assert!(message(s.set_limits("rubber".into()).unwrap_err()).contains("joint limits"));
     assert!(message(s.hits_target(0.0, 0.0, 0.0, 100.0).unwrap_err()).contains("width"));
     assert!(message(s.drag_target(f32::NAN, 0.0, 100.0, 100.0).unwrap_err()).contains("x"));
     s.set_target(0.3, 0.6, 0.0).unwrap();
-    s.set_limits("cones (40°)").unwrap();
+    s.set_limits("cones (40°)".into()).unwrap();
     assert_eq!(s.error_samples().unwrap().len(), 150);
     assert_eq!(s.target(), vec![0.3, 0.6, 0.0]);
     let mut a = AimScene::new();
@@ -41,10 +41,12 @@ fn ik_scene_rejects_bad_input_with_a_message() {
 fn blending_scenes_reject_bad_input_with_a_message() {
     let mut b = BlendScene::new();
     assert!(message(b.set_weight(2.0).unwrap_err()).contains("weight of B"));
-    assert!(message(b.set_clips("walk", "moonwalk").unwrap_err()).contains("clip B"));
-    assert!(message(b.set_mask("tail").unwrap_err()).contains("mask"));
-    assert!(message(b.set_additive("none", f32::NAN).unwrap_err()).contains("additive weight"));
-    b.set_clips("run", "idle").unwrap();
+    assert!(message(b.set_clips("walk".into(), "moonwalk".into()).unwrap_err()).contains("clip B"));
+    assert!(message(b.set_mask("tail".into()).unwrap_err()).contains("mask"));
+    assert!(
+        message(b.set_additive("none".into(), f32::NAN).unwrap_err()).contains("additive weight")
+    );
+    b.set_clips("run".into(), "idle".into()).unwrap();
     assert!(b.duration_sec() > 0.5);
     let mut l = LocomotionScene::new();
     let range = l.speed_range();

@@ -75,25 +75,25 @@ fn a_singular_affine_key_is_rejected() {
     let flat = glam::Mat4::from_scale(glam::Vec3::new(1.0, 1.0, 0.0))
         .to_cols_array()
         .to_vec();
-    assert!(message(scene.set_key_matrix(0, flat).unwrap_err()).contains("singular"));
+    assert!(message(scene.set_key_matrix(0.0, flat).unwrap_err()).contains("singular"));
     let mut nan = glam::Mat4::IDENTITY.to_cols_array();
     nan[0] = f32::NAN;
-    assert!(scene.set_key_matrix(1, nan.to_vec()).is_err());
+    assert!(scene.set_key_matrix(1.0, nan.to_vec()).is_err());
     let mut projective = glam::Mat4::IDENTITY.to_cols_array();
     projective[3] = 0.5;
     assert!(
-        message(scene.set_key_matrix(1, projective.to_vec()).unwrap_err()).contains("not affine")
+        message(scene.set_key_matrix(1.0, projective.to_vec()).unwrap_err()).contains("not affine")
     );
     assert!(
         scene
-            .set_key_matrix(2, glam::Mat4::IDENTITY.to_cols_array().to_vec())
+            .set_key_matrix(2.0, glam::Mat4::IDENTITY.to_cols_array().to_vec())
             .is_err(),
         "no key 2"
     );
     assert!(scene.set_key_b(-120.0, 0.5, 2.0, 1.0, -0.4).is_ok());
     assert!(scene
         .set_key_matrix(
-            0,
+            0.0,
             glam::Mat4::from_scale(glam::Vec3::splat(2.0))
                 .to_cols_array()
                 .to_vec()
@@ -118,13 +118,13 @@ fn a_zero_axis_is_rejected() {
 #[wasm_bindgen_test]
 fn sampled_plots_have_the_promised_shape() {
     let scene = InterpolationScene::new();
-    let d = scene.sample_determinant(11).map_err(message).unwrap();
+    let d = scene.sample_determinant(11.0).map_err(message).unwrap();
     assert_eq!(d.len(), 33);
     assert!(
         (d[1] - 1.0).abs() < 1e-4 && (d[31] - 1.0).abs() < 1e-4,
         "keys are rotations"
     );
-    let s = scene.sample_angular_speed(11).map_err(message).unwrap();
+    let s = scene.sample_angular_speed(11.0).map_err(message).unwrap();
     let slerp: Vec<f32> = s.chunks(4).map(|c| c[3]).collect();
     let spread = slerp.iter().cloned().fold(f32::MIN, f32::max)
         - slerp.iter().cloned().fold(f32::MAX, f32::min);
@@ -132,9 +132,9 @@ fn sampled_plots_have_the_promised_shape() {
         spread < 0.02 * slerp[0],
         "slerp's angular speed is constant: {slerp:?}"
     );
-    assert!(scene.sample_determinant(1).is_err());
+    assert!(scene.sample_determinant(1.0).is_err());
     let rigid = RigidScene::new();
-    assert_eq!(rigid.sample_speed(5).map_err(message).unwrap().len(), 20);
+    assert_eq!(rigid.sample_speed(5.0).map_err(message).unwrap().len(), 20);
 }
 
 #[wasm_bindgen_test]
@@ -144,14 +144,14 @@ fn new_controls_validate_and_report() {
     assert!((arcs[0] + arcs[1] - 360.0).abs() < 1e-3);
     assert_eq!(RodriguesScene::new().matrix().len(), 9, "R is shown 3×3");
     let mut rigid = RigidScene::new();
-    assert!(message(rigid.set_show(4).unwrap_err()).contains("show must be"));
-    assert!(rigid.set_show(3).is_ok());
-    rigid.set_thirds(true);
+    assert!(message(rigid.set_show(4.0).unwrap_err()).contains("show must be"));
+    assert!(rigid.set_show(3.0).is_ok());
+    rigid.set_thirds(true.into()).unwrap();
     let mut affine = AffineScene::new();
     let huge = glam::Mat4::from_scale(glam::Vec3::new(1e38, 1.0, 1.0));
     assert!(
         affine
-            .set_key_matrix(0, huge.to_cols_array().to_vec())
+            .set_key_matrix(0.0, huge.to_cols_array().to_vec())
             .is_ok(),
         "det 1e38 is not singular"
     );

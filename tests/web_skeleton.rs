@@ -29,16 +29,27 @@ fn rest(n: usize) -> Vec<f32> {
         .collect()
 }
 
+/// `check_skeleton` with Rust values: the names as a JavaScript array, the parents as numbers.
+fn check(
+    names: Vec<String>,
+    parents: Vec<i32>,
+    rest: Vec<f32>,
+) -> Result<String, wasm_bindgen::JsError> {
+    let names: js_sys::Array = names.iter().map(|n| JsValue::from(n.as_str())).collect();
+    check_skeleton(
+        names.into(),
+        parents.iter().map(|&p| f64::from(p)).collect(),
+        rest,
+    )
+}
+
 fn fails(names: Vec<String>, parents: Vec<i32>, rest: Vec<f32>) -> String {
-    message(check_skeleton(names, parents, rest).unwrap_err())
+    message(check(names, parents, rest).unwrap_err())
 }
 
 #[wasm_bindgen_test]
 fn each_skeleton_rule_fails_with_its_own_message() {
-    assert_eq!(
-        check_skeleton(names(3), vec![-1, 0, 1], rest(3)).unwrap(),
-        "ok"
-    );
+    assert_eq!(check(names(3), vec![-1, 0, 1], rest(3)).unwrap(), "ok");
     assert!(fails(vec![], vec![], vec![]).contains("no joints"));
     assert!(fails(names(2), vec![-1, 0], rest(3)).contains("10 numbers per joint"));
     assert!(fails(names(1), vec![-1, 0], rest(2)).contains("names"));
@@ -62,15 +73,17 @@ fn each_skeleton_rule_fails_with_its_own_message() {
 #[wasm_bindgen_test]
 fn bad_figure_input_names_the_parameter() {
     let mut scene = SkeletonScene::new();
-    assert!(message(scene.select(99).unwrap_err()).contains("joint index 99"));
+    assert!(message(scene.select(99.0).unwrap_err()).contains("joint index 99"));
     let e = scene
-        .set_joint_angles_deg(0, f32::NAN, 0.0, 0.0)
+        .set_joint_angles_deg(0.0, f32::NAN, 0.0, 0.0)
         .unwrap_err();
     assert!(message(e).contains("angle x"));
     assert!(message(scene.set_keys_per_cycle(0.0).unwrap_err()).contains("keys per cycle"));
-    assert!(message(scene.set_interpolation("bezier").unwrap_err()).contains("interpolation"));
-    assert!(message(scene.set_clip("dance").unwrap_err()).contains("clip"));
-    assert!(scene.sample_selected(1).is_err());
-    assert!(scene.set_clip("run").is_ok());
-    assert_eq!(scene.sample_selected(10).unwrap().len(), 30);
+    assert!(
+        message(scene.set_interpolation("bezier".into()).unwrap_err()).contains("interpolation")
+    );
+    assert!(message(scene.set_clip("dance".into()).unwrap_err()).contains("clip"));
+    assert!(scene.sample_selected(1.0).is_err());
+    assert!(scene.set_clip("run".into()).is_ok());
+    assert_eq!(scene.sample_selected(10.0).unwrap().len(), 30);
 }

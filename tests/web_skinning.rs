@@ -18,13 +18,23 @@ fn message(e: wasm_bindgen::JsError) -> String {
         .unwrap_or_default()
 }
 
+/// `check_skin_weights` with Rust values (the joint indices and count as JavaScript numbers).
+fn check(
+    joints: Vec<u32>,
+    weights: Vec<f32>,
+    joint_count: usize,
+) -> Result<String, wasm_bindgen::JsError> {
+    let joints = joints.iter().map(|&j| f64::from(j)).collect();
+    check_skin_weights(joints, weights, joint_count as f64)
+}
+
 fn fails(joints: Vec<u32>, weights: Vec<f32>, joint_count: usize) -> String {
-    message(check_skin_weights(joints, weights, joint_count).unwrap_err())
+    message(check(joints, weights, joint_count).unwrap_err())
 }
 
 #[wasm_bindgen_test]
 fn each_weight_rule_fails_with_its_own_message() {
-    let ok = check_skin_weights(vec![0, 1, 0, 0], vec![0.5, 0.5, 0.0, 0.0], 2).unwrap();
+    let ok = check(vec![0, 1, 0, 0], vec![0.5, 0.5, 0.0, 0.0], 2).unwrap();
     assert_eq!(ok, "ok");
     assert!(fails(vec![0, 1, 0], vec![0.5, 0.5, 0.0], 2).contains("four numbers per vertex"));
     assert!(fails(vec![0, 1, 0, 0], vec![0.5, 0.5], 2).contains("four numbers per vertex"));
@@ -41,11 +51,11 @@ fn bad_figure_input_names_the_parameter() {
     assert!(message(cylinder.set_bend_deg(f32::NAN).unwrap_err()).contains("bend"));
     assert!(message(cylinder.set_twist_deg(400.0).unwrap_err()).contains("twist"));
     assert!(message(cylinder.set_falloff(0.0).unwrap_err()).contains("falloff"));
-    assert!(message(cylinder.set_heat_joint("knee").unwrap_err()).contains("knee"));
-    assert!(cylinder.area_curves(1).is_err());
-    assert_eq!(cylinder.area_curves(3).unwrap().len(), 15);
+    assert!(message(cylinder.set_heat_joint("knee".into()).unwrap_err()).contains("knee"));
+    assert!(cylinder.area_curves(1.0).is_err());
+    assert_eq!(cylinder.area_curves(3.0).unwrap().len(), 15);
     let mut human = SkinnedHumanScene::new();
-    assert!(message(human.set_method("GPU").unwrap_err()).contains("method"));
+    assert!(message(human.set_method("GPU".into()).unwrap_err()).contains("method"));
     assert!(message(human.skin(f32::INFINITY).unwrap_err()).contains("time"));
     assert!(human.skin(0.5).is_ok());
 }

@@ -146,9 +146,11 @@ impl ArcLengthTable {
 
     /// Time at which `track` has travelled the arc length `s` (clamped to `[0, L]`): table
     /// lookup, then Newton refinement (see [`ArcLengthTable`]). `track` must be the track the
-    /// table was built from.
+    /// table was built from. Never panics: a NaN `s` counts as 0, and a NaN length (keys so
+    /// close that the path's length overflows) leaves `s` unclamped above.
     pub fn time_at_length<T: Value>(&self, track: &Track<T>, s: f32) -> f32 {
-        let s = s.clamp(0.0, self.total_length());
+        // `f32::clamp` panics on a NaN bound; `max` and `min` skip a NaN operand.
+        let s = s.max(0.0).min(self.total_length());
         let mut u = arc_length_invert(&self.times_sec, &self.lengths, s);
         let j = self.lengths.partition_point(|&length| length < s);
         if j == 0 || j == self.lengths.len() {

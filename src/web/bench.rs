@@ -15,7 +15,11 @@ fn now_ms() -> f64 {
 /// Times `iterations` runs of a hierarchy kernel over `joints` joints and returns milliseconds.
 /// `kernel` is "copy_baseline", "world_matrices" or "local_matrix_from_euler".
 #[wasm_bindgen(js_name = benchHierarchy)]
-pub fn bench_hierarchy(kernel: &str, joints: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_hierarchy(kernel: JsValue, joints: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let joints = super::whole("joints", joints)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("joints", joints as u64, iterations, 1 << 30)?;
     if !(1..=1 << 20).contains(&joints) || !(1..=1 << 24).contains(&iterations) {
         return Err(JsError::new(
             "joints must be in [1, 2^20] and iterations in [1, 2^24]",

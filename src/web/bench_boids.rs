@@ -17,7 +17,11 @@ const MAX_NAIVE_BOIDS: usize = 20_000;
 /// Times `iterations` steps of a flock of `boids` boids and returns milliseconds (building the
 /// flock and the first grid is not timed; restoring the start state before each step is). `kernel` is "grid" or "naive".
 #[wasm_bindgen(js_name = benchBoids)]
-pub fn bench_boids(kernel: &str, boids: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_boids(kernel: JsValue, boids: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let boids = super::whole("boids", boids)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("boids", boids as u64, iterations, 1 << 25)?;
     if !(1..=MAX_BOIDS).contains(&boids) || !(1..=1 << 20).contains(&iterations) {
         return Err(JsError::new(&format!(
             "boids must be in [1, {MAX_BOIDS}] and iterations in [1, 2^20]"
@@ -25,7 +29,11 @@ pub fn bench_boids(kernel: &str, boids: usize, iterations: usize) -> Result<f64,
     }
     let search = match kernel {
         "grid" => Search::Grid,
-        "naive" if boids <= MAX_NAIVE_BOIDS => Search::Naive,
+        "naive" if boids <= MAX_NAIVE_BOIDS => {
+            // The naive step tests every pair: its work grows with the square of the count.
+            super::check_work("boids²", (boids as u64).pow(2), iterations, 1 << 32)?;
+            Search::Naive
+        }
         "naive" => {
             return Err(JsError::new(&format!(
                 "the naive kernel takes at most {MAX_NAIVE_BOIDS} boids"

@@ -19,7 +19,16 @@ const MAX_BENCH_SIDE: usize = 256;
 /// timed); each timed frame starts from that same state (the copy back is timed too, and is small
 /// next to a frame).
 #[wasm_bindgen(js_name = benchCloth)]
-pub fn bench_cloth(kernel: &str, side: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_cloth(kernel: JsValue, side: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let side = super::whole("side", side)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work(
+        "side² × 10 substeps",
+        (side as u64).pow(2).saturating_mul(10),
+        iterations,
+        1 << 27,
+    )?;
     if !(2..=MAX_BENCH_SIDE).contains(&side) || !(1..=1 << 20).contains(&iterations) {
         return Err(JsError::new(&format!(
             "side must be in [2, {MAX_BENCH_SIDE}] and iterations in [1, 2^20]"

@@ -19,7 +19,11 @@ fn now_ms() -> f64 {
 /// "linear_cursor", "linear_binary_search", "catmull_rom_cursor", "catmull_rom_binary_search".
 /// Cursor kernels sample in increasing time order; binary-search kernels at random times.
 #[wasm_bindgen(js_name = benchCurves)]
-pub fn bench_curves(kernel: &str, samples: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_curves(kernel: JsValue, samples: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let samples = super::whole("samples", samples)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("samples", samples as u64, iterations, 1 << 29)?;
     if !(1..=1 << 22).contains(&samples) || !(1..=1 << 20).contains(&iterations) {
         return Err(JsError::new(
             "samples must be in [1, 2^22] and iterations in [1, 2^20]",

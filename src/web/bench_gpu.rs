@@ -40,9 +40,12 @@ fn check_steps(steps: usize) -> Result<(), JsError> {
 #[wasm_bindgen(js_name = benchGpuParticles)]
 pub async fn bench_gpu_particles(
     canvas: HtmlCanvasElement,
-    count: usize,
-    steps: usize,
+    count: f64,
+    steps: f64,
 ) -> Result<f64, JsError> {
+    let count = super::whole("count", count)?;
+    let steps = super::whole("steps", steps)?;
+    super::check_work("count", count as u64, steps, 1 << 28)?;
     check_steps(steps)?;
     if !(1..=MAX_GPU_PARTICLES).contains(&count) {
         return Err(JsError::new(&format!(
@@ -84,9 +87,12 @@ pub async fn bench_gpu_particles(
 #[wasm_bindgen(js_name = benchGpuBoids)]
 pub async fn bench_gpu_boids(
     canvas: HtmlCanvasElement,
-    boids: usize,
-    steps: usize,
+    boids: f64,
+    steps: f64,
 ) -> Result<f64, JsError> {
+    let boids = super::whole("boids", boids)?;
+    let steps = super::whole("steps", steps)?;
+    super::check_work("boids", boids as u64, steps, 1 << 24)?;
     check_steps(steps)?;
     if !(1..=MAX_GPU_BOIDS).contains(&boids) {
         return Err(JsError::new(&format!(

@@ -23,7 +23,11 @@ const FBM8: Fractal = Fractal {
 /// most 1024²); milliseconds. `kernel` is "fbm8_values" (the baseline: the 8-octave sum at every
 /// vertex, values only) or "terrain_with_normals" (heights, exact normals and colours in place).
 #[wasm_bindgen(js_name = benchTerrain)]
-pub fn bench_terrain(kernel: &str, size: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_terrain(kernel: JsValue, size: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let size = super::whole("size", size)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("size", size as u64, iterations, 1 << 29)?;
     let side = (size as f64).sqrt().round() as usize;
     if side * side != size || !(2..=crate::terrain::MAX_RESOLUTION).contains(&side) {
         return Err(JsError::new(&format!(

@@ -26,10 +26,14 @@ fn check(size: usize, iterations: usize) -> Result<(), JsError> {
 /// `kernel` is "nlerp" (the baseline) or "slerp".
 #[wasm_bindgen(js_name = benchQuatInterpolation)]
 pub fn bench_quat_interpolation(
-    kernel: &str,
-    size: usize,
-    iterations: usize,
+    kernel: JsValue,
+    size: f64,
+    iterations: f64,
 ) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let size = super::whole("size", size)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("size", size as u64, iterations, 1 << 30)?;
     check(size, iterations)?;
     let keys: Vec<(Quat, Quat)> = (0..size)
         .map(|i| {
@@ -61,7 +65,11 @@ pub fn bench_quat_interpolation(
 /// `kernel` is "factored" (the baseline: matrix and translation once, then `R p + t` per point)
 /// or "sandwich" (the full dual quaternion product per point).
 #[wasm_bindgen(js_name = benchRigidPoints)]
-pub fn bench_rigid_points(kernel: &str, size: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_rigid_points(kernel: JsValue, size: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let size = super::whole("size", size)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("size", size as u64, iterations, 1 << 30)?;
     check(size, iterations)?;
     let motion = DualQuat::from_rotation_translation(
         Quat::from_axis_angle(Vec3::new(0.3, 1.0, 0.2).normalize(), 1.1),

@@ -24,7 +24,11 @@ const MAX_FRAMES: usize = 1 << 20;
 /// values, then local-to-model), "runtime_sample_only" or "local_to_model_only". Per-item cost is
 /// per frame; divide by 60 for joints.
 #[wasm_bindgen(js_name = benchSkeleton)]
-pub fn bench_skeleton(kernel: &str, frames: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_skeleton(kernel: JsValue, frames: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let frames = super::whole("frames", frames)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("frames", frames as u64, iterations, 1 << 24)?;
     if !(1..=MAX_FRAMES).contains(&frames) || !(1..=MAX_FRAMES).contains(&iterations) {
         return Err(JsError::new(
             "frames must be in [1, 2^20] and iterations in [1, 2^20]",
@@ -65,7 +69,11 @@ pub fn bench_skeleton(kernel: &str, frames: usize, iterations: usize) -> Result<
 /// own time offset with its own cursor, then local-to-model) and returns milliseconds.
 /// `kernel` is "runtime_clip" or "track_baseline".
 #[wasm_bindgen(js_name = benchCrowd)]
-pub fn bench_crowd(kernel: &str, characters: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_crowd(kernel: JsValue, characters: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let characters = super::whole("characters", characters)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("characters", characters as u64, iterations, 1 << 21)?;
     if !(1..=100_000).contains(&characters) || !(1..=MAX_FRAMES).contains(&iterations) {
         return Err(JsError::new(
             "characters must be in [1, 100000] and iterations in [1, 2^20]",

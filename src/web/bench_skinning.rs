@@ -137,7 +137,11 @@ fn prepare(vertices: usize) -> Result<Prepared, JsError> {
 /// turning the palette into dual quaternions, once per pass). Before timing, 200 calls on 512
 /// vertices let the engine optimise the kernel (see [`pass`]).
 #[wasm_bindgen(js_name = benchSkinning)]
-pub fn bench_skinning(kernel: &str, vertices: usize, iterations: usize) -> Result<f64, JsError> {
+pub fn bench_skinning(kernel: JsValue, vertices: f64, iterations: f64) -> Result<f64, JsError> {
+    let kernel: &str = &super::string("kernel", &kernel)?;
+    let vertices = super::whole("vertices", vertices)?;
+    let iterations = super::whole("iterations", iterations)?;
+    super::check_work("vertices", vertices as u64, iterations, 1 << 30)?;
     check(vertices, iterations)?;
     let mut warm = prepare(512)?;
     for _ in 0..200 {
@@ -170,7 +174,8 @@ pub fn bench_skinning(kernel: &str, vertices: usize, iterations: usize) -> Resul
 /// `[palette (12 per joint, 60 joints), joints (4 per vertex, as numbers), weights (4 per vertex),
 /// positions (3 per vertex), normals (3 per vertex)]`.
 #[wasm_bindgen(js_name = skinningBenchInput)]
-pub fn skinning_bench_input(vertices: usize) -> Result<Vec<f32>, JsError> {
+pub fn skinning_bench_input(vertices: f64) -> Result<Vec<f32>, JsError> {
+    let vertices = super::whole("vertices", vertices)?;
     check(vertices, 1)?;
     let (pal, j, w, pos, nrm) = benchmark_input(vertices, SEED).flat();
     let mut out = pal;

@@ -33,20 +33,23 @@ impl BlendShapeFaceScene {
 
     /// Weight of target `k`, in [−0.5, 1.5].
     #[wasm_bindgen(js_name = setWeight)]
-    pub fn set_weight(&mut self, k: usize, w: f32) -> Result<(), JsError> {
+    pub fn set_weight(&mut self, k: f64, w: f32) -> Result<(), JsError> {
+        let k = super::whole("k", k)?;
         self.scene.set_weight(k, w).map_err(js)
     }
 
     /// "both" (differential left, full right), "differential" or "full".
     #[wasm_bindgen(js_name = setShow)]
-    pub fn set_show(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_show(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_show(name).map_err(js)
     }
 
     /// `[time (s), four weights, Σ w, base + Σ w]` per sample over the 4 s loop; `samples` in
     /// [2, 10000].
     #[wasm_bindgen(js_name = weightCurves)]
-    pub fn weight_curves(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn weight_curves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         self.scene.weight_curves(samples).map_err(js)
     }
 
@@ -64,13 +67,17 @@ impl BlendShapeFaceScene {
     }
 
     #[wasm_bindgen(js_name = setAnimate)]
-    pub fn set_animate(&mut self, on: bool) {
+    pub fn set_animate(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_animate(on);
+        Ok(())
     }
 
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// Blends at `time_sec`, uploads and draws. Returns the note.

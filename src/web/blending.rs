@@ -29,7 +29,9 @@ impl BlendScene {
 
     /// Clip A (the timeline's) and clip B (at the same phase).
     #[wasm_bindgen(js_name = setClips)]
-    pub fn set_clips(&mut self, a: &str, b: &str) -> Result<(), JsError> {
+    pub fn set_clips(&mut self, a: JsValue, b: JsValue) -> Result<(), JsError> {
+        let a: &str = &super::string("a", &a)?;
+        let b: &str = &super::string("b", &b)?;
         self.scene.set_clips(a, b).map_err(js)
     }
 
@@ -41,20 +43,24 @@ impl BlendScene {
 
     /// "whole body", "upper body from B" or "lower body from B".
     #[wasm_bindgen(js_name = setMask)]
-    pub fn set_mask(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_mask(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_mask(name).map_err(js)
     }
 
     /// "none", "lean forward (a pose)" or "wave (a clip)", with a weight in [0, 1].
     #[wasm_bindgen(js_name = setAdditive)]
-    pub fn set_additive(&mut self, name: &str, weight: f32) -> Result<(), JsError> {
+    pub fn set_additive(&mut self, name: JsValue, weight: f32) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_additive(name, weight).map_err(js)
     }
 
     /// Blends with the student's exercise 6.3 (in the sandbox).
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// Clip A's duration, seconds.
@@ -109,13 +115,17 @@ impl LocomotionScene {
     }
 
     #[wasm_bindgen(js_name = setSynchronised)]
-    pub fn set_synchronised(&mut self, on: bool) {
+    pub fn set_synchronised(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_synchronised(on);
+        Ok(())
     }
 
     #[wasm_bindgen(js_name = setRootMotion)]
-    pub fn set_root_motion(&mut self, on: bool) {
+    pub fn set_root_motion(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_root_motion(on);
+        Ok(())
     }
 
     /// The timeline's length, seconds.

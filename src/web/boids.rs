@@ -27,7 +27,8 @@ impl FlockScene {
     /// Steps the flock by a compute shader (`true`) or on the CPU. An error on WebGL2 (no
     /// compute shaders), saying so.
     #[wasm_bindgen(js_name = setGpu)]
-    pub fn set_gpu(&mut self, viewer: &Viewer, on: bool) -> Result<(), JsError> {
+    pub fn set_gpu(&mut self, viewer: &Viewer, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         if on && !viewer.gpu.compute {
             return Err(JsError::new(&format!(
                 "GPU compute needs WebGPU; this figure runs on {}",
@@ -80,7 +81,8 @@ impl FlockScene {
     }
     /// `rule`: "cohesion", "alignment" or "separation"; weight in [0, 10], radius in [0.05, 3] m.
     #[wasm_bindgen(js_name = setRule)]
-    pub fn set_rule(&mut self, rule: &str, weight: f32, radius: f32) -> Result<(), JsError> {
+    pub fn set_rule(&mut self, rule: JsValue, weight: f32, radius: f32) -> Result<(), JsError> {
+        let rule: &str = &super::string("rule", &rule)?;
         self.scene.set_rule(rule, weight, radius).map_err(js)
     }
     #[wasm_bindgen(js_name = setFovDeg)]
@@ -102,24 +104,32 @@ impl FlockScene {
     }
     /// "none", "a1/x² − a2/x⁴" or "Gaussian".
     #[wasm_bindgen(js_name = setLaw)]
-    pub fn set_law(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_law(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_law(name).map_err(js)
     }
     #[wasm_bindgen(js_name = setLeader)]
-    pub fn set_leader(&mut self, on: bool) {
+    pub fn set_leader(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_leader(on);
+        Ok(())
     }
     #[wasm_bindgen(js_name = setPredator)]
-    pub fn set_predator(&mut self, on: bool) {
+    pub fn set_predator(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_predator(on);
+        Ok(())
     }
     #[wasm_bindgen(js_name = setObstacle)]
-    pub fn set_obstacle(&mut self, on: bool) {
+    pub fn set_obstacle(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_obstacle(on);
+        Ok(())
     }
     /// "grid" or "naive".
     #[wasm_bindgen(js_name = setSearch)]
-    pub fn set_search(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_search(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_search(name).map_err(js)
     }
     /// Brings the flock to `time_sec` by steps of 1/60 s; returns the number of steps taken (the
@@ -155,7 +165,8 @@ impl FlockScene {
     }
     /// One step of the timing flock with "grid" or "naive" search; the page times this call.
     #[wasm_bindgen(js_name = timingStep)]
-    pub fn timing_step(&mut self, search: &str) -> Result<(), JsError> {
+    pub fn timing_step(&mut self, search: JsValue) -> Result<(), JsError> {
+        let search: &str = &super::string("search", &search)?;
         self.scene.timing_step(search).map_err(js)
     }
 }
@@ -205,8 +216,10 @@ impl BoidRulesScene {
         self.scene.set_cell_size(s).map_err(js)
     }
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let note = self.scene.draw(&mut viewer.renderer.frame);

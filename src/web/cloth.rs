@@ -23,7 +23,8 @@ pub struct ClothScene {
 impl ClothScene {
     /// `preset`: "flag" or "drape".
     #[wasm_bindgen(constructor)]
-    pub fn new(preset: &str) -> Result<ClothScene, JsError> {
+    pub fn new(preset: JsValue) -> Result<ClothScene, JsError> {
+        let preset: &str = &super::string("preset", &preset)?;
         let preset = match preset {
             "flag" => Preset::Flag,
             "drape" => Preset::Drape,
@@ -38,7 +39,8 @@ impl ClothScene {
     }
     /// "structural", "shear" or "bending"; N/m in [0, 5000].
     #[wasm_bindgen(js_name = setStiffness)]
-    pub fn set_stiffness(&mut self, kind: &str, k: f32) -> Result<(), JsError> {
+    pub fn set_stiffness(&mut self, kind: JsValue, k: f32) -> Result<(), JsError> {
+        let kind: &str = &super::string("kind", &kind)?;
         self.scene.set_stiffness(kind, k).map_err(js)
     }
     /// N·s/m in [0, 1].
@@ -63,12 +65,14 @@ impl ClothScene {
     }
     /// "none", "two corners" or "whole edge".
     #[wasm_bindgen(js_name = setPins)]
-    pub fn set_pins(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_pins(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_pins(name).map_err(js)
     }
     /// "mass-spring" or "XPBD".
     #[wasm_bindgen(js_name = setMethod)]
-    pub fn set_method(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_method(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_method(name).map_err(js)
     }
     /// Particles per side, in [4, 100].
@@ -102,8 +106,9 @@ impl ClothScene {
     }
     /// When cloth `k` exploded (seconds since the start), or `undefined` while it holds.
     #[wasm_bindgen(js_name = explodedAt)]
-    pub fn exploded_at(&self, k: usize) -> Option<f32> {
-        self.scene.exploded(k)
+    pub fn exploded_at(&self, k: f64) -> Result<Option<f32>, JsError> {
+        let k = super::whole("k", k)?;
+        Ok(self.scene.exploded(k))
     }
     /// How many cloths are drawn (1 or 2).
     #[wasm_bindgen(js_name = clothCount)]
@@ -199,8 +204,10 @@ impl SpringScene {
         self.scene.set_step_ms(ms).map_err(js)
     }
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
     #[wasm_bindgen(js_name = durationSec)]
     pub fn duration_sec(&self) -> f32 {

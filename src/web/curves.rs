@@ -48,7 +48,8 @@ impl KeyframesScene {
 
     /// Loads the keys of a preset: "default", "loop", "uneven" or "centripetal".
     #[wasm_bindgen(js_name = loadPreset)]
-    pub fn load_preset(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn load_preset(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         let (times, values) = fig::preset(name).map_err(js)?;
         self.scene.set_keys(times, values).map_err(js)
     }
@@ -69,19 +70,21 @@ impl KeyframesScene {
     #[wasm_bindgen(js_name = setKeyTangent)]
     pub fn set_key_tangent(
         &mut self,
-        index: usize,
+        index: f64,
         in_x: f32,
         in_y: f32,
         out_x: f32,
         out_y: f32,
     ) -> Result<(), JsError> {
+        let index = super::whole("index", index)?;
         let (tin, tout) = (Vec2::new(in_x, in_y), Vec2::new(out_x, out_y));
         self.scene.set_key_tangent(index, tin, tout).map_err(js)
     }
 
     /// "step", "linear", "lagrange", "hermite", "cardinal", "natural" or "centripetal".
     #[wasm_bindgen(js_name = setScheme)]
-    pub fn set_scheme(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_scheme(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_scheme(name).map_err(js)
     }
 
@@ -93,26 +96,32 @@ impl KeyframesScene {
 
     /// On: the ball travels the same path at constant speed (arc-length parametrisation).
     #[wasm_bindgen(js_name = setArcLength)]
-    pub fn set_arc_length(&mut self, on: bool) {
+    pub fn set_arc_length(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_arc_length(on);
+        Ok(())
     }
 
     /// "none", "smoothstep", "smootherstep", "sine", "in", "out" or "inout".
     #[wasm_bindgen(js_name = setEase)]
-    pub fn set_ease(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_ease(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_ease(name).map_err(js)
     }
 
     /// Number of in-betweens in the ghost trail (2 to 200).
     #[wasm_bindgen(js_name = setGhostCount)]
-    pub fn set_ghost_count(&mut self, count: usize) -> Result<(), JsError> {
+    pub fn set_ghost_count(&mut self, count: f64) -> Result<(), JsError> {
+        let count = super::whole("count", count)?;
         self.scene.set_ghost_count(count).map_err(js)
     }
 
     /// Draws and checks with the student's functions in `src/exercises/curves.rs`.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// The current scheme's name (the tangent edits switch it to "hermite").
@@ -198,7 +207,8 @@ impl KeyframesScene {
     /// `samples` rows `[t, speed keyed, speed arc length, |acceleration| shown, …]`, `t` in the
     /// keys' seconds, speeds in m/s, acceleration in m/s².
     #[wasm_bindgen(js_name = sampleMotion)]
-    pub fn sample_motion(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_motion(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         let rows = self.scene.sample_motion(samples).map_err(js)?;
         Ok(rows.concat())
     }
@@ -222,13 +232,15 @@ impl Default for KeyframesScene {
 
 /// Rows `[s, h00, h10, h01, h11, …]` of the Hermite basis over `s ∈ [0, 1]`.
 #[wasm_bindgen(js_name = hermiteBasisSamples)]
-pub fn hermite_basis_samples(samples: usize) -> Result<Vec<f32>, JsError> {
+pub fn hermite_basis_samples(samples: f64) -> Result<Vec<f32>, JsError> {
+    let samples = super::whole("samples", samples)?;
     Ok(fig::hermite_basis_samples(samples).map_err(js)?.concat())
 }
 
 /// The note beside the basis plot at `s` (exercise 2.1 checked with `use_exercise`).
 #[wasm_bindgen(js_name = hermiteBasisNote)]
-pub fn hermite_basis_note(s: f32, use_exercise: bool) -> Result<String, JsError> {
+pub fn hermite_basis_note(s: f32, use_exercise: JsValue) -> Result<String, JsError> {
+    let use_exercise = super::boolean("use_exercise", &use_exercise)?;
     fig::hermite_basis_note(super::sandbox::run, s, use_exercise).map_err(js)
 }
 
@@ -255,8 +267,10 @@ impl LagrangeScene {
 
     /// Also draw a Catmull-Rom spline through the larger set of keys, for comparison.
     #[wasm_bindgen(js_name = setShowSpline)]
-    pub fn set_show_spline(&mut self, on: bool) {
+    pub fn set_show_spline(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_spline(on);
+        Ok(())
     }
 
     /// Keys of the first curve then of the second, as `[n, t0, y0, …, m, t0, y0, …]`.

@@ -22,7 +22,8 @@ impl SpacingScene {
 
     /// "linear", "slow in and out", "ease in" or "ease out".
     #[wasm_bindgen(js_name = setEase)]
-    pub fn set_ease(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_ease(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_ease(name).map_err(js)
     }
 
@@ -34,8 +35,10 @@ impl SpacingScene {
 
     /// Shows the straight-line twin behind the ball.
     #[wasm_bindgen(js_name = setTwin)]
-    pub fn set_twin(&mut self, on: bool) {
+    pub fn set_twin(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_twin(on);
+        Ok(())
     }
 
     /// Ghosts at equal time steps, 2 to 60.
@@ -45,14 +48,18 @@ impl SpacingScene {
     }
 
     #[wasm_bindgen(js_name = setSquash)]
-    pub fn set_squash(&mut self, on: bool) {
+    pub fn set_squash(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_squash(on);
+        Ok(())
     }
 
     /// Uses the student's `squash_stretch_scale` (exercise 2b.1).
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// Seconds from key to key.
@@ -69,7 +76,8 @@ impl SpacingScene {
 
     /// `[t₀ (s), fraction₀, linear₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleSpacing)]
-    pub fn sample_spacing(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_spacing(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_spacing(samples).map_err(js)?.concat())
     }
 
@@ -113,8 +121,10 @@ impl JumpScene {
 
     /// Uses the student's `squash_stretch_scale` (exercise 2b.1).
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// The loop's length, seconds.
@@ -125,7 +135,8 @@ impl JumpScene {
 
     /// `[t₀, plain₀, principled₀, stretch₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleHeights)]
-    pub fn sample_heights(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_heights(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_heights(samples).map_err(js)?.concat())
     }
 
@@ -167,13 +178,16 @@ impl FollowThroughScene {
 
     /// Compares the student's `spring_step` (exercise 2b.2) with the reference.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// `[t₀, base x₀, tip x₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleTip)]
-    pub fn sample_tip(&mut self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_tip(&mut self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_tip(samples).map_err(js)?.concat())
     }
 

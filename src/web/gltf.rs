@@ -33,7 +33,9 @@ impl GltfScene {
 
     /// Imports a `.gltf` (embedded buffers) or `.glb` file's bytes; returns a summary, or an
     /// error that says what is wrong with the file (what was loaded before stays).
-    pub fn load(&mut self, name: &str, bytes: &[u8]) -> Result<String, JsError> {
+    pub fn load(&mut self, name: JsValue, bytes: JsValue) -> Result<String, JsError> {
+        let name: &str = &super::string("name", &name)?;
+        let bytes: &[u8] = &super::bytes("bytes", &bytes)?;
         self.scene.load(name, bytes).map_err(js)
     }
 
@@ -48,7 +50,8 @@ impl GltfScene {
     }
 
     #[wasm_bindgen(js_name = setClip)]
-    pub fn set_clip(&mut self, index: usize) -> Result<(), JsError> {
+    pub fn set_clip(&mut self, index: f64) -> Result<(), JsError> {
+        let index = super::whole("index", index)?;
         self.scene.set_clip(index).map_err(js)
     }
 
@@ -59,20 +62,25 @@ impl GltfScene {
     }
 
     #[wasm_bindgen(js_name = setShowMesh)]
-    pub fn set_show_mesh(&mut self, on: bool) {
+    pub fn set_show_mesh(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_mesh(on);
+        Ok(())
     }
 
     /// "dots" (the bind-pose vertices), "lbs" or "dqs".
     #[wasm_bindgen(js_name = setSkinning)]
-    pub fn set_skinning(&mut self, mode: &str) -> Result<(), JsError> {
+    pub fn set_skinning(&mut self, mode: JsValue) -> Result<(), JsError> {
+        let mode: &str = &super::string("mode", &mode)?;
         self.scene.set_skinning(mode).map_err(js)
     }
 
     /// Skins in the vertex shader (`true`) or on the CPU (`false`, the default).
     #[wasm_bindgen(js_name = setGpu)]
-    pub fn set_gpu(&mut self, on: bool) {
+    pub fn set_gpu(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_gpu(on);
+        Ok(())
     }
 
     /// `[x, y, z, distance]` that frame the character.

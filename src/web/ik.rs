@@ -58,14 +58,17 @@ impl IkScene {
 
     /// "none", "hinges (bend one way)" or "cones (40°)".
     #[wasm_bindgen(js_name = setLimits)]
-    pub fn set_limits(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_limits(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_limits(name).map_err(js)
     }
 
     /// Runs the student's exercises 7.1 and 7.2 (in the sandbox) instead of the reference.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// `[iteration, log₁₀ CCD error (m), log₁₀ FABRIK error (m), …]` for the plot.

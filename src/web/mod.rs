@@ -88,3 +88,124 @@ pub(crate) fn finite(name: &str, value: f32) -> Result<f32, JsError> {
 pub(crate) fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, JsError> {
     crate::figures::in_range(name, value, lo, hi).map_err(js)
 }
+
+// Argument checks at the boundary. wasm-bindgen converts a JavaScript argument to the Rust
+// parameter's type without asking: a number for a `u32` or `usize` wraps (NaN and ±Infinity become
+// 0, -1 becomes 4294967295, 1.5 becomes 1, 2^32 + 3 becomes 3), a `bool` takes any value's
+// truthiness, and a non-string for a `&str` makes the glue read past its buffer. Exported functions
+// therefore take counts and indices as `f64` and names, flags and lists of names as `JsValue`, and
+// check them here before any state changes. One rule for every count and index: a whole number in
+// the stated range, else an error that names the parameter, the range and the value.
+
+/// The largest whole number a count or index may be when no narrower range is known: a `u32`.
+pub(crate) const MAX_WHOLE: usize = u32::MAX as usize;
+
+/// `value` as a whole number in `[lo, hi]`, or an error such as "count must be a whole number
+/// from 1 to 1000, got 1.5". NaN, ±Infinity, fractions and numbers outside the range are errors.
+pub(crate) fn whole_in(name: &str, value: f64, lo: usize, hi: usize) -> Result<usize, JsError> {
+    if value.is_finite() && value.fract() == 0.0 && value >= lo as f64 && value <= hi as f64 {
+        Ok(value as usize)
+    } else {
+        Err(JsError::new(&format!(
+            "{name} must be a whole number from {lo} to {hi}, got {value}"
+        )))
+    }
+}
+
+/// `value` as a whole number from 0 to [`MAX_WHOLE`]; the figure checks the narrower range it
+/// knows (a joint index against the joint count, a sample count against its cap).
+pub(crate) fn whole(name: &str, value: f64) -> Result<usize, JsError> {
+    whole_in(name, value, 0, MAX_WHOLE)
+}
+
+/// Every element of `values` as a whole number from `lo` to `hi` (a list of joint indices).
+pub(crate) fn wholes(name: &str, values: &[f64], lo: f64, hi: f64) -> Result<Vec<f64>, JsError> {
+    match values
+        .iter()
+        .position(|&v| !(v.is_finite() && v.fract() == 0.0 && v >= lo && v <= hi))
+    {
+        None => Ok(values.to_vec()),
+        Some(i) => Err(JsError::new(&format!(
+            "{name}[{i}] must be a whole number from {lo} to {hi}, got {}",
+            values[i]
+        ))),
+    }
+}
+
+/// The type of a JavaScript value, for error messages: "number 42", "object", "undefined".
+fn describe(value: &JsValue) -> String {
+    if let Some(n) = value.as_f64() {
+        format!("number {n}")
+    } else if let Some(b) = value.as_bool() {
+        format!("boolean {b}")
+    } else {
+        value.js_typeof().as_string().unwrap_or_default()
+    }
+}
+
+/// `value` as a string, or a TypeError-like error "name must be a string, got number 42".
+pub(crate) fn string(name: &str, value: &JsValue) -> Result<String, JsError> {
+    value
+        .as_string()
+        .ok_or_else(|| JsError::new(&format!("{name} must be a string, got {}", describe(value))))
+}
+
+/// `value` as a boolean: `true` or `false` only ("true", 1 and undefined are errors, not coerced).
+pub(crate) fn boolean(name: &str, value: &JsValue) -> Result<bool, JsError> {
+    value.as_bool().ok_or_else(|| {
+        JsError::new(&format!(
+            "{name} must be true or false, got {}",
+            describe(value)
+        ))
+    })
+}
+
+/// `value` as an array of strings (a plain string is not split into its characters).
+pub(crate) fn strings(name: &str, value: &JsValue) -> Result<Vec<String>, JsError> {
+    if !js_sys::Array::is_array(value) {
+        return Err(JsError::new(&format!(
+            "{name} must be an array of strings, got {}",
+            describe(value)
+        )));
+    }
+    let array = js_sys::Array::from(value);
+    let mut out = Vec::with_capacity(array.length() as usize);
+    for (i, item) in array.iter().enumerate() {
+        out.push(string(&format!("{name}[{i}]"), &item)?);
+    }
+    Ok(out)
+}
+
+/// `value` as bytes: a `Uint8Array` only (an array of numbers would be wrapped modulo 256).
+pub(crate) fn bytes(name: &str, value: &JsValue) -> Result<Vec<u8>, JsError> {
+    value
+        .dyn_ref::<js_sys::Uint8Array>()
+        .map(|a| a.to_vec())
+        .ok_or_else(|| {
+            JsError::new(&format!(
+                "{name} must be a Uint8Array, got {}",
+                describe(value)
+            ))
+        })
+}
+
+/// An error unless a bench call's work, `size × iterations` items, is at most `max_work`. Each
+/// kernel's cap is set so that a call at the cap runs for seconds, not hours (a size and an
+/// iteration count each in its own range can multiply to days of work), and well above what the
+/// bench page's 100 ms batches ask for.
+pub(crate) fn check_work(
+    size_name: &str,
+    size: u64,
+    iterations: usize,
+    max_work: u64,
+) -> Result<(), JsError> {
+    let work = size.saturating_mul(iterations as u64);
+    if work <= max_work {
+        Ok(())
+    } else {
+        Err(JsError::new(&format!(
+            "{size_name} × iterations must be at most {max_work} (the kernel's work cap), got \
+             {size} × {iterations} = {work}"
+        )))
+    }
+}

@@ -85,17 +85,22 @@ impl Noise1dScene {
         self.scene.set_probe(x).map_err(js)
     }
     #[wasm_bindgen(js_name = setShowRamps)]
-    pub fn set_show_ramps(&mut self, on: bool) {
+    pub fn set_show_ramps(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_ramps(on);
+        Ok(())
     }
     /// Uses the student's `fade` (exercise 5.1) for the probe and the plot.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
     /// `[t₀, fade₀, fade′₀, smoothstep₀, fade″₀, smoothstep″₀, t₁, …]` (six numbers per row).
     #[wasm_bindgen(js_name = sampleFade)]
-    pub fn sample_fade(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_fade(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_fade(samples).map_err(js)?.concat())
     }
     #[wasm_bindgen(js_name = probeT)]
@@ -150,8 +155,10 @@ impl Noise2dScene {
     }
     /// Draws the student's `perlin_cell` (exercise 5.2) over the probe's cell and compares it.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let mesh = self.gpu.sync(viewer, &mut self.scene)?[0];
@@ -192,13 +199,17 @@ impl OctavesScene {
     }
     /// Draws the student's `fractal_sum` (exercise 5.3) along the profile and compares it there.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
     /// Leaves the octaves finer than the mesh out of the surface.
     #[wasm_bindgen(js_name = setBandLimit)]
-    pub fn set_band_limit(&mut self, on: bool) {
+    pub fn set_band_limit(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_band_limit(on);
+        Ok(())
     }
     /// The last octave the mesh shows faithfully at the current ω (−1: not even octave 0).
     #[wasm_bindgen(js_name = lastResolvedOctave)]
@@ -207,7 +218,8 @@ impl OctavesScene {
     }
     /// `[u₀, octave 0, …, octave 9, sum, u₁, …]` (12 numbers per row, NaN above N).
     #[wasm_bindgen(js_name = sampleOctaves)]
-    pub fn sample_octaves(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_octaves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_octaves(samples).map_err(js)?.concat())
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
@@ -259,12 +271,14 @@ impl TerrainFigureScene {
     }
     /// 0 sum, 1 ridge, 2 inverted ridge, 3 marble, 4 sliding, 5 evolving.
     #[wasm_bindgen(js_name = setVariant)]
-    pub fn set_variant(&mut self, index: usize) -> Result<(), JsError> {
+    pub fn set_variant(&mut self, index: f64) -> Result<(), JsError> {
+        let index = super::whole("index", index)?;
         self.scene.set_variant(index).map_err(js)
     }
     /// Vertices per side (2 to 1024).
     #[wasm_bindgen(js_name = setResolution)]
-    pub fn set_resolution(&mut self, resolution: usize) -> Result<(), JsError> {
+    pub fn set_resolution(&mut self, resolution: f64) -> Result<(), JsError> {
+        let resolution = super::whole("resolution", resolution)?;
         self.scene.set_resolution(resolution).map_err(js)
     }
     #[wasm_bindgen(js_name = setSeed)]
@@ -277,13 +291,17 @@ impl TerrainFigureScene {
     }
     /// Compares the student's `terrain_normal` (exercise 5.4) at the probe vertex and others.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
     /// Leaves the octaves finer than the mesh out of the surface.
     #[wasm_bindgen(js_name = setBandLimit)]
-    pub fn set_band_limit(&mut self, on: bool) {
+    pub fn set_band_limit(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_band_limit(on);
+        Ok(())
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let start = now_ms();
@@ -339,7 +357,8 @@ impl TexturesScene {
         self.scene.set_params(scale, turbulence, n).map_err(js)
     }
     #[wasm_bindgen(js_name = setAnimate)]
-    pub fn set_animate(&mut self, on: bool) -> Result<(), JsError> {
+    pub fn set_animate(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_animate(on).map_err(js)
     }
     pub fn advance(&mut self, dt_sec: f32) -> Result<(), JsError> {
@@ -394,7 +413,9 @@ impl QuizScene {
     }
     /// Terrain 0 (a) to 5 (f) gets set 1 to 6, or 0 for no answer.
     #[wasm_bindgen(js_name = setAnswer)]
-    pub fn set_answer(&mut self, terrain: usize, set: usize) -> Result<(), JsError> {
+    pub fn set_answer(&mut self, terrain: f64, set: f64) -> Result<(), JsError> {
+        let terrain = super::whole("terrain", terrain)?;
+        let set = super::whole("set", set)?;
         self.scene.set_answer(terrain, set).map_err(js)
     }
     pub fn check(&mut self) {
@@ -438,8 +459,10 @@ impl FractalsScene {
         self.scene.set_depth(depth).map_err(js)
     }
     #[wasm_bindgen(js_name = setShowPrevious)]
-    pub fn set_show_previous(&mut self, on: bool) {
+    pub fn set_show_previous(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_previous(on);
+        Ok(())
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let note = self.scene.draw(&mut viewer.renderer.frame);

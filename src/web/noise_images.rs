@@ -42,16 +42,20 @@ impl NoiseImagesScene {
     }
     /// What the GPU computes: simplex (2D) or Perlin.
     #[wasm_bindgen(js_name = setGpuSimplex)]
-    pub fn set_gpu_simplex(&mut self, on: bool) {
+    pub fn set_gpu_simplex(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_gpu_kind(if on {
             NoiseKind::Simplex
         } else {
             NoiseKind::Perlin
         });
+        Ok(())
     }
     #[wasm_bindgen(js_name = setLattice)]
-    pub fn set_lattice(&mut self, on: bool) {
+    pub fn set_lattice(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_lattice(on);
+        Ok(())
     }
     /// The last GPU check's sentence ('' until one finished).
     #[wasm_bindgen(getter, js_name = gpuCheck)]

@@ -30,7 +30,8 @@ impl EmitterScene {
     /// Steps the particles by compute shaders (`true`) or on the CPU. An error on WebGL2 (no
     /// compute shaders), saying so.
     #[wasm_bindgen(js_name = setGpu)]
-    pub fn set_gpu(&mut self, viewer: &Viewer, on: bool) -> Result<(), JsError> {
+    pub fn set_gpu(&mut self, viewer: &Viewer, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         if on && !viewer.gpu.compute {
             return Err(JsError::new(&format!(
                 "GPU compute needs WebGPU; this figure runs on {}",
@@ -44,7 +45,8 @@ impl EmitterScene {
     }
     /// "fountain", "explosion" or "both".
     #[wasm_bindgen(js_name = setMode)]
-    pub fn set_mode(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_mode(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_mode(name).map_err(js)
     }
     /// The fountain's particles per second, in [0, 1000].
@@ -77,12 +79,16 @@ impl EmitterScene {
         self.scene.set_gravity(g).map_err(js)
     }
     #[wasm_bindgen(js_name = setSort)]
-    pub fn set_sort(&mut self, on: bool) {
+    pub fn set_sort(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_sort(on);
+        Ok(())
     }
     #[wasm_bindgen(js_name = setFade)]
-    pub fn set_fade(&mut self, on: bool) {
+    pub fn set_fade(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_fade(on);
+        Ok(())
     }
     /// Sets off the explosion now (on the GPU too, when the particles are stepped there).
     pub fn explode(&mut self, viewer: &Viewer) -> Result<(), JsError> {
@@ -197,8 +203,10 @@ impl FreeFallScene {
         self.scene.set_dt(dt).map_err(js)
     }
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
     /// Seconds the throw lasts.
     #[wasm_bindgen(js_name = durationSec)]
@@ -249,8 +257,10 @@ impl BounceScene {
         self.scene.set_friction(mu).map_err(js)
     }
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
     /// The starting camera, as `Viewer.setCamera`'s six arguments.
     pub fn view(&self) -> Vec<f32> {
@@ -345,11 +355,12 @@ impl Default for SquashScene {
 /// the core's validation rules and cap.
 #[wasm_bindgen(js_name = checkEmitter)]
 pub fn check_emitter(
-    capacity: usize,
+    capacity: f64,
     rate_per_sec: f32,
     lifetime_min_sec: f32,
     lifetime_max_sec: f32,
 ) -> Result<String, JsError> {
+    let capacity = super::whole("capacity", capacity)?;
     use crate::particles::{Emitter, ParticleSystem};
     ParticleSystem::new(capacity, 1).map_err(|e| JsError::new(&e.to_string()))?;
     let e = Emitter {

@@ -34,16 +34,22 @@ impl SmokeScene {
         self.scene.set_params(puffs, lifetime_sec).map_err(js)
     }
     #[wasm_bindgen(js_name = setSort)]
-    pub fn set_sort(&mut self, on: bool) {
+    pub fn set_sort(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_sort(on);
+        Ok(())
     }
     #[wasm_bindgen(js_name = setAnimateFrames)]
-    pub fn set_animate_frames(&mut self, on: bool) {
+    pub fn set_animate_frames(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_animate_frames(on);
+        Ok(())
     }
     #[wasm_bindgen(js_name = setShowAtlas)]
-    pub fn set_show_atlas(&mut self, on: bool) {
+    pub fn set_show_atlas(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_atlas(on);
+        Ok(())
     }
     /// Draws the column at `time_sec`; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {

@@ -23,7 +23,8 @@ impl MeshStorageScene {
 
     /// "tetrahedron" or "sphere".
     #[wasm_bindgen(js_name = setShape)]
-    pub fn set_shape(&mut self, shape: &str) -> Result<(), JsError> {
+    pub fn set_shape(&mut self, shape: JsValue) -> Result<(), JsError> {
+        let shape: &str = &super::string("shape", &shape)?;
         self.scene.set_shape(shape).map_err(js)
     }
 
@@ -76,8 +77,10 @@ impl FrustumScene {
 
     /// Uses the student's `perspective_matrix` (exercise 0.1).
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// The point's distance at `s ∈ [0, 1]`, metres (the plot's playhead).
@@ -92,13 +95,15 @@ impl FrustumScene {
     }
 
     /// The reference matrix, column-major: wgpu's (`gl = false`) or OpenGL's.
-    pub fn matrix(&self, gl: bool) -> Vec<f32> {
-        self.scene.matrix(gl).to_cols_array().to_vec()
+    pub fn matrix(&self, gl: JsValue) -> Result<Vec<f32>, JsError> {
+        let gl = super::boolean("gl", &gl)?;
+        Ok(self.scene.matrix(gl).to_cols_array().to_vec())
     }
 
     /// `[d₀, depth_wgpu₀, depth_gl₀, d₁, …]`.
     #[wasm_bindgen(js_name = sampleDepth)]
-    pub fn sample_depth(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_depth(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_depth(samples).map_err(js)?.concat())
     }
 
@@ -136,13 +141,16 @@ impl DepthPrecisionScene {
     }
 
     /// The camera's view through the depth buffer: RGBA bytes, `width × height` (each ≤ 512).
-    pub fn image(&self, width: usize, height: usize) -> Result<Vec<u8>, JsError> {
+    pub fn image(&self, width: f64, height: f64) -> Result<Vec<u8>, JsError> {
+        let width = super::whole("width", width)?;
+        let height = super::whole("height", height)?;
         self.scene.image(width, height).map_err(js)
     }
 
     /// `[d₀, step16₀, step24₀, gap, d₁, …]`, metres.
     #[wasm_bindgen(js_name = sampleStep)]
-    pub fn sample_step(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_step(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_step(samples).map_err(js)?.concat())
     }
 
@@ -183,8 +191,10 @@ impl NormalsScene {
     }
 
     #[wasm_bindgen(js_name = setFlat)]
-    pub fn set_flat(&mut self, flat: bool) {
+    pub fn set_flat(&mut self, flat: JsValue) -> Result<(), JsError> {
+        let flat = super::boolean("flat", &flat)?;
         self.scene.set_flat(flat);
+        Ok(())
     }
 
     /// Stretch along x, 0.2 to 4.
@@ -195,15 +205,19 @@ impl NormalsScene {
 
     /// Also draw the normals transformed by the model matrix itself (wrong).
     #[wasm_bindgen(js_name = setShowWrong)]
-    pub fn set_show_wrong(&mut self, on: bool) {
+    pub fn set_show_wrong(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_wrong(on);
+        Ok(())
     }
 
     /// Uses the student's `vertex_normals` (exercise 0.2) for the smooth mesh.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
         self.dirty = true;
+        Ok(())
     }
 
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
@@ -295,7 +309,8 @@ impl ShadingScene {
 
     /// "phong" or "blinn-phong".
     #[wasm_bindgen(js_name = setModel)]
-    pub fn set_model(&mut self, model: &str) -> Result<(), JsError> {
+    pub fn set_model(&mut self, model: JsValue) -> Result<(), JsError> {
+        let model: &str = &super::string("model", &model)?;
         self.scene.set_model(model).map_err(js)
     }
 
@@ -307,12 +322,16 @@ impl ShadingScene {
 
     /// Uses the student's `blinn_phong` (exercise 0.3) at the marked fragment.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// RGBA bytes of one image: "ambient", "diffuse", "specular", "phong" or "blinn-phong".
-    pub fn image(&self, which: &str, size: usize) -> Result<Vec<u8>, JsError> {
+    pub fn image(&self, which: JsValue, size: f64) -> Result<Vec<u8>, JsError> {
+        let which: &str = &super::string("which", &which)?;
+        let size = super::whole("size", size)?;
         self.scene.image(which, size).map_err(js)
     }
 

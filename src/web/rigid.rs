@@ -79,20 +79,25 @@ impl RigidScene {
 
     /// 0 = all three methods, 1 = lerp + slerp only, 2 = dual quaternion blend, 3 = screw.
     #[wasm_bindgen(js_name = setShow)]
-    pub fn set_show(&mut self, which: u32) -> Result<(), JsError> {
+    pub fn set_show(&mut self, which: f64) -> Result<(), JsError> {
+        let which = super::whole("which", which)? as u32;
         self.scene.set_show(which).map_err(js)
     }
 
     /// Draws a third of the motion applied three times (screw: lands on B; lerp + slerp: misses).
     #[wasm_bindgen(js_name = setThirds)]
-    pub fn set_thirds(&mut self, on: bool) {
+    pub fn set_thirds(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_thirds(on);
+        Ok(())
     }
 
     /// Moves the green frame with the student's `dual_quat_apply` (exercise 4.1) and checks it.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// The screw axis of the motion from A to B: `[dx, dy, dz, px, py, pz, angle_deg, slide]`.
@@ -114,7 +119,8 @@ impl RigidScene {
 
     /// Speed of the nose (m per unit of t): `[t₀, lerp+slerp₀, dlb₀, screw₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleSpeed)]
-    pub fn sample_speed(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_speed(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_speed(samples).map_err(js)?.concat())
     }
 }
@@ -156,19 +162,23 @@ impl AffineScene {
 
     /// Sets key `which` (0 = A, 1 = B) from a 4×4 affine matrix (16 numbers, column-major).
     #[wasm_bindgen(js_name = setKeyMatrix)]
-    pub fn set_key_matrix(&mut self, which: u32, cols: Vec<f32>) -> Result<(), JsError> {
+    pub fn set_key_matrix(&mut self, which: f64, cols: Vec<f32>) -> Result<(), JsError> {
+        let which = super::whole("which", which)? as u32;
         self.scene.set_key(which, mat4_cols(&cols)?).map_err(js)
     }
 
     /// Splits the keys with the student's `polar_step` (exercise 4.2) and checks it.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// Determinant of the linear part over t: `[t₀, naive₀, polar₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleDeterminant)]
-    pub fn sample_determinant(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_determinant(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_determinant(samples).map_err(js)?.concat())
     }
 

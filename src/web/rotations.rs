@@ -67,14 +67,18 @@ impl InterpolationScene {
 
     /// `true`: nlerp and slerp take the long arc.
     #[wasm_bindgen(js_name = setLongArc)]
-    pub fn set_long_arc(&mut self, long: bool) {
+    pub fn set_long_arc(&mut self, long: JsValue) -> Result<(), JsError> {
+        let long = super::boolean("long", &long)?;
         self.scene.set_long_arc(long);
+        Ok(())
     }
 
     /// Uses the student's `slerp` (exercise 3.2) for the slerp object and checks it.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// The end key's quaternion `(x, y, z, w)` as used on the current arc.
@@ -99,14 +103,16 @@ impl InterpolationScene {
 
     /// Matrix lerp, sampled: `[t₀, det₀, e₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleDeterminant)]
-    pub fn sample_determinant(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_determinant(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         let rows = self.scene.sample_determinant(samples).map_err(js)?;
         Ok(rows.concat())
     }
 
     /// Angular speed (° per unit of t): `[t₀, euler₀, nlerp₀, slerp₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleAngularSpeed)]
-    pub fn sample_angular_speed(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_angular_speed(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         let rows = self.scene.sample_angular_speed(samples).map_err(js)?;
         Ok(rows.concat())
     }
@@ -207,8 +213,10 @@ impl RodriguesScene {
 
     /// Uses the student's `rodrigues_matrix` (3.3) and `quat_from_axis_angle` (3.1).
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// `R(θ)` as a 3×3 column-major matrix (9 numbers), for the page's matrix table.

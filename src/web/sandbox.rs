@@ -58,7 +58,8 @@ pub fn run(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
 /// Runs the exercise `name` in *this* instance (the sandbox). A stub throws an error whose message
 /// is `not-done`; a panic traps (the shell catches it).
 #[wasm_bindgen(js_name = runExercise)]
-pub fn run_exercise(name: &str, args: &[f32]) -> Result<Vec<f32>, JsError> {
+pub fn run_exercise(name: JsValue, args: &[f32]) -> Result<Vec<f32>, JsError> {
+    let name: &str = &super::string("name", &name)?;
     match run::direct(name, args) {
         Ok(out) => Ok(out),
         Err(Failure::NotDone) => Err(JsError::new("not-done")),

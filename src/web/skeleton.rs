@@ -45,7 +45,8 @@ impl SkeletonScene {
 
     /// Plays the clip with this name (one of `clipNames()`).
     #[wasm_bindgen(js_name = setClip)]
-    pub fn set_clip(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_clip(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_clip(name).map_err(js)
     }
 
@@ -57,30 +58,35 @@ impl SkeletonScene {
 
     /// "step", "linear (nlerp)", "linear (slerp)" or "cubic".
     #[wasm_bindgen(js_name = setInterpolation)]
-    pub fn set_interpolation(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_interpolation(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_interpolation(name).map_err(js)
     }
 
     /// "nlerp" or "slerp".
     #[wasm_bindgen(js_name = setRotationInterpolation)]
-    pub fn set_rotation_interpolation(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_rotation_interpolation(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_rotation_interpolation(name).map_err(js)
     }
 
     /// Crossfades clip `name` (or "none") in with weight `weight ∈ [0, 1]`, at the same phase.
     #[wasm_bindgen(js_name = setBlend)]
-    pub fn set_blend(&mut self, name: &str, weight: f32) -> Result<(), JsError> {
+    pub fn set_blend(&mut self, name: JsValue, weight: f32) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_blend(name, weight).map_err(js)
     }
 
     /// Selects the joint drawn in orange (its group in teal).
-    pub fn select(&mut self, joint: usize) -> Result<(), JsError> {
+    pub fn select(&mut self, joint: f64) -> Result<(), JsError> {
+        let joint = super::whole("joint", joint)?;
         self.scene.select(joint).map_err(js)
     }
 
     /// A joint's angle offsets on top of the clip, degrees (x, y, z).
     #[wasm_bindgen(js_name = jointAnglesDeg)]
-    pub fn joint_angles_deg(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+    pub fn joint_angles_deg(&self, joint: f64) -> Result<Vec<f32>, JsError> {
+        let joint = super::whole("joint", joint)?;
         let a = self.scene.joint_angles_deg(joint).map_err(js)?;
         Ok(a.to_array().to_vec())
     }
@@ -89,11 +95,12 @@ impl SkeletonScene {
     #[wasm_bindgen(js_name = setJointAnglesDeg)]
     pub fn set_joint_angles_deg(
         &mut self,
-        joint: usize,
+        joint: f64,
         x_deg: f32,
         y_deg: f32,
         z_deg: f32,
     ) -> Result<(), JsError> {
+        let joint = super::whole("joint", joint)?;
         let deg = Vec3::new(x_deg, y_deg, z_deg);
         self.scene.set_joint_angles_deg(joint, deg).map_err(js)
     }
@@ -105,19 +112,25 @@ impl SkeletonScene {
     }
 
     #[wasm_bindgen(js_name = setShowBoxes)]
-    pub fn set_show_boxes(&mut self, on: bool) {
+    pub fn set_show_boxes(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_boxes(on);
+        Ok(())
     }
 
     #[wasm_bindgen(js_name = setShowAxes)]
-    pub fn set_show_axes(&mut self, on: bool) {
+    pub fn set_show_axes(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_axes(on);
+        Ok(())
     }
 
     /// Runs the student's exercises 6.1 and 6.2 (in the sandbox) instead of the reference.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// The playing clip's duration, seconds.
@@ -144,21 +157,24 @@ impl SkeletonScene {
 
     /// Local matrix of a joint at the last pose, column-major.
     #[wasm_bindgen(js_name = localMatrix)]
-    pub fn local_matrix(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+    pub fn local_matrix(&self, joint: f64) -> Result<Vec<f32>, JsError> {
+        let joint = super::whole("joint", joint)?;
         let m = self.scene.local_matrix(joint).map_err(js)?;
         Ok(m.to_cols_array().to_vec())
     }
 
     /// Model matrix of a joint at the last pose, column-major.
     #[wasm_bindgen(js_name = modelMatrix)]
-    pub fn model_matrix(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+    pub fn model_matrix(&self, joint: f64) -> Result<Vec<f32>, JsError> {
+        let joint = super::whole("joint", joint)?;
         let m = self.scene.model_matrix(joint).map_err(js)?;
         Ok(m.to_cols_array().to_vec())
     }
 
     /// One cycle of the selected joint for the plots: `[t, angle (°), speed (°/s), …]`.
     #[wasm_bindgen(js_name = sampleSelected)]
-    pub fn sample_selected(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn sample_selected(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         self.scene.sample_selected(samples).map_err(js)
     }
 }
@@ -174,10 +190,16 @@ impl Default for SkeletonScene {
 /// numbers per joint: translation (3), rotation quaternion x, y, z, w (4), scale (3).
 #[wasm_bindgen(js_name = checkSkeleton)]
 pub fn check_skeleton(
-    names: Vec<String>,
-    parents: Vec<i32>,
+    names: JsValue,
+    parents: Vec<f64>,
     rest: Vec<f32>,
 ) -> Result<String, JsError> {
+    let names = super::strings("names", &names)?;
+    // Whole numbers from -1 (the root) up; an Int32Array would wrap 4294967295 to -1.
+    let parents: Vec<i32> = super::wholes("parents", &parents, -1.0, f64::from(i32::MAX))?
+        .into_iter()
+        .map(|p| p as i32)
+        .collect();
     use crate::skeleton::{Skeleton, Transform, MAX_JOINTS};
     if parents.len() > MAX_JOINTS {
         return Err(JsError::new(&format!(

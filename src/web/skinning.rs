@@ -92,20 +92,24 @@ impl SkinningCylinderScene {
 
     /// "none", "shoulder" or "elbow".
     #[wasm_bindgen(js_name = setHeatJoint)]
-    pub fn set_heat_joint(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_heat_joint(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_heat_joint(name).map_err(js)
     }
 
     /// Runs the student's exercises 9.1 and 9.2 (in the sandbox) instead of the reference.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// `[angle (°), LBS bend, DQS bend, LBS twist, DQS twist]` per sample (areas as fractions of
     /// the rest area); `samples` in [2, 10000].
     #[wasm_bindgen(js_name = areaCurves)]
-    pub fn area_curves(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn area_curves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         self.scene.area_curves(samples).map_err(js)
     }
 
@@ -119,7 +123,8 @@ impl SkinningCylinderScene {
     }
 
     #[wasm_bindgen(js_name = volumeCurves)]
-    pub fn volume_curves(&self, samples: usize) -> Result<Vec<f32>, JsError> {
+    pub fn volume_curves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         self.scene.volume_curves(samples).map_err(js)
     }
 
@@ -170,7 +175,8 @@ impl SkinnedHumanScene {
     }
 
     #[wasm_bindgen(js_name = setClip)]
-    pub fn set_clip(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_clip(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_clip(name).map_err(js)
     }
 
@@ -181,7 +187,8 @@ impl SkinnedHumanScene {
 
     /// "LBS" or "DQS".
     #[wasm_bindgen(js_name = setMethod)]
-    pub fn set_method(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_method(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_method(name).map_err(js)
     }
 
@@ -208,13 +215,16 @@ impl SkinnedHumanScene {
 
     /// "none" or a joint's name.
     #[wasm_bindgen(js_name = setHeatJoint)]
-    pub fn set_heat_joint(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn set_heat_joint(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
         self.scene.set_heat_joint(name).map_err(js)
     }
 
     #[wasm_bindgen(js_name = setShowSkeleton)]
-    pub fn set_show_skeleton(&mut self, on: bool) {
+    pub fn set_show_skeleton(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_skeleton(on);
+        Ok(())
     }
 
     /// Samples the clip at `time_sec`, skins the body on the CPU; returns the milliseconds the
@@ -227,8 +237,10 @@ impl SkinnedHumanScene {
 
     /// Skins in the vertex shader (`true`) or on the CPU (`false`, the default).
     #[wasm_bindgen(js_name = setGpu)]
-    pub fn set_gpu(&mut self, on: bool) {
+    pub fn set_gpu(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_gpu(on);
+        Ok(())
     }
 
     /// Uploads the skinned body (or, skinning on the GPU, only its palette) and draws. Returns
@@ -288,10 +300,16 @@ fn now_ms() -> f64 {
 /// check of every rule. `joints` and `weights` hold four numbers per vertex.
 #[wasm_bindgen(js_name = checkSkinWeights)]
 pub fn check_skin_weights(
-    joints: Vec<u32>,
+    joints: Vec<f64>,
     weights: Vec<f32>,
-    joint_count: usize,
+    joint_count: f64,
 ) -> Result<String, JsError> {
+    let joint_count = super::whole("joint_count", joint_count)?;
+    // Whole numbers only: a Uint32Array would turn NaN into joint 0 and -1 into 4294967295.
+    let joints: Vec<u32> = super::wholes("joints", &joints, 0.0, f64::from(u32::MAX))?
+        .into_iter()
+        .map(|j| j as u32)
+        .collect();
     use crate::skinning::{SkinWeights, MAX_SKIN_VERTICES};
     if !joints.len().is_multiple_of(4) || weights.len() != joints.len() {
         return Err(JsError::new(&format!(

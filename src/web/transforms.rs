@@ -47,8 +47,10 @@ impl SingleShapeScene {
 
     /// `false`: the solid box is M = T · R and the ghost R · T; `true`: the other way round.
     #[wasm_bindgen(js_name = setTranslateFirst)]
-    pub fn set_translate_first(&mut self, translate_first: bool) {
+    pub fn set_translate_first(&mut self, translate_first: JsValue) -> Result<(), JsError> {
+        let translate_first = super::boolean("translate_first", &translate_first)?;
         self.scene.set_order(order(translate_first));
+        Ok(())
     }
 
     /// The solid box's 4×4 matrix, column-major (16 numbers).
@@ -59,9 +61,10 @@ impl SingleShapeScene {
 
     /// The matrix of one order (`true`: R · T), column-major.
     #[wasm_bindgen(js_name = matrixOf)]
-    pub fn matrix_of(&self, translate_first: bool) -> Vec<f32> {
+    pub fn matrix_of(&self, translate_first: JsValue) -> Result<Vec<f32>, JsError> {
+        let translate_first = super::boolean("translate_first", &translate_first)?;
         let m = self.scene.matrix(order(translate_first));
-        m.to_cols_array().to_vec()
+        Ok(m.to_cols_array().to_vec())
     }
 
     /// Draws the figure; returns the note for the page.
@@ -99,13 +102,15 @@ impl HierarchyScene {
     }
 
     /// Selects the joint whose axes are drawn and whose values the panel edits.
-    pub fn select(&mut self, joint: usize) -> Result<(), JsError> {
+    pub fn select(&mut self, joint: f64) -> Result<(), JsError> {
+        let joint = super::whole("joint", joint)?;
         self.scene.select(joint).map_err(js)
     }
 
     /// Euler angles of a joint in degrees (x, y, z) as last set or animated.
     #[wasm_bindgen(js_name = jointAnglesDeg)]
-    pub fn joint_angles_deg(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+    pub fn joint_angles_deg(&self, joint: f64) -> Result<Vec<f32>, JsError> {
+        let joint = super::whole("joint", joint)?;
         let a = self.scene.joint_angles_deg(joint).map_err(js)?;
         Ok(a.to_array().to_vec())
     }
@@ -114,18 +119,20 @@ impl HierarchyScene {
     #[wasm_bindgen(js_name = setJointAnglesDeg)]
     pub fn set_joint_angles_deg(
         &mut self,
-        joint: usize,
+        joint: f64,
         x_deg: f32,
         y_deg: f32,
         z_deg: f32,
     ) -> Result<(), JsError> {
+        let joint = super::whole("joint", joint)?;
         let deg = Vec3::new(x_deg, y_deg, z_deg);
         self.scene.set_joint_angles_deg(joint, deg).map_err(js)
     }
 
     /// A joint's scale along its own axes (x, y, z).
     #[wasm_bindgen(js_name = jointScale)]
-    pub fn joint_scale(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+    pub fn joint_scale(&self, joint: f64) -> Result<Vec<f32>, JsError> {
+        let joint = super::whole("joint", joint)?;
         let s = self.scene.joint_scale(joint).map_err(js)?;
         Ok(s.to_array().to_vec())
     }
@@ -134,31 +141,38 @@ impl HierarchyScene {
     #[wasm_bindgen(js_name = setJointScale)]
     pub fn set_joint_scale(
         &mut self,
-        joint: usize,
+        joint: f64,
         sx: f32,
         sy: f32,
         sz: f32,
     ) -> Result<(), JsError> {
+        let joint = super::whole("joint", joint)?;
         let s = Vec3::new(sx, sy, sz);
         self.scene.set_joint_scale(joint, s).map_err(js)
     }
 
     /// Whether a joint's scale is passed on to its children (see the lesson).
     #[wasm_bindgen(js_name = setInheritScale)]
-    pub fn set_inherit_scale(&mut self, inherit: bool) {
+    pub fn set_inherit_scale(&mut self, inherit: JsValue) -> Result<(), JsError> {
+        let inherit = super::boolean("inherit", &inherit)?;
         self.scene.set_inherit_scale(inherit);
+        Ok(())
     }
 
     /// When on, the timeline drives a walk cycle and the angle sliders follow it.
     #[wasm_bindgen(js_name = setAnimate)]
-    pub fn set_animate(&mut self, animate: bool) {
+    pub fn set_animate(&mut self, animate: JsValue) -> Result<(), JsError> {
+        let animate = super::boolean("animate", &animate)?;
         self.scene.set_animate(animate);
+        Ok(())
     }
 
     /// Runs the student's exercises 1.1 and 1.2 (in the sandbox) instead of the reference.
     #[wasm_bindgen(js_name = setUseExercise)]
-    pub fn set_use_exercise(&mut self, on: bool) {
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_use_exercise(on);
+        Ok(())
     }
 
     /// Poses the figure at `time_sec` and draws it. Returns the note for the page: empty, or what
@@ -174,14 +188,16 @@ impl HierarchyScene {
 
     /// World matrix of a joint at the last drawn pose, column-major.
     #[wasm_bindgen(js_name = worldMatrix)]
-    pub fn world_matrix(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+    pub fn world_matrix(&self, joint: f64) -> Result<Vec<f32>, JsError> {
+        let joint = super::whole("joint", joint)?;
         let m = self.scene.world_matrix(joint).map_err(js)?;
         Ok(m.to_cols_array().to_vec())
     }
 
     /// Local matrix of a joint at the last drawn pose, column-major.
     #[wasm_bindgen(js_name = localMatrix)]
-    pub fn local_matrix(&self, joint: usize) -> Result<Vec<f32>, JsError> {
+    pub fn local_matrix(&self, joint: f64) -> Result<Vec<f32>, JsError> {
+        let joint = super::whole("joint", joint)?;
         let m = self.scene.local_matrix(joint).map_err(js)?;
         Ok(m.to_cols_array().to_vec())
     }
@@ -189,7 +205,8 @@ impl HierarchyScene {
     /// One walk cycle of the current figure (pose, scales, scale mode) for the plot:
     /// `[t₀, a₀, h₀, …]`, left thigh angle `a` (degrees), left wrist height `h` (metres).
     #[wasm_bindgen(js_name = sampleCycle)]
-    pub fn sample_cycle(&self, samples: usize, period_sec: f32) -> Result<Vec<f32>, JsError> {
+    pub fn sample_cycle(&self, samples: f64, period_sec: f32) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
         self.scene.sample_cycle(samples, period_sec).map_err(js)
     }
 }

@@ -41,7 +41,8 @@ pub struct Viewer {
 impl Viewer {
     /// Creates the figure's context on `canvas`. `backend` is "auto", "webgpu" or "webgl2".
     /// Rejects with a readable message when the browser offers neither API.
-    pub async fn create(canvas: HtmlCanvasElement, backend: String) -> Result<Viewer, JsError> {
+    pub async fn create(canvas: HtmlCanvasElement, backend: JsValue) -> Result<Viewer, JsError> {
+        let backend: &str = &super::string("backend", &backend)?;
         let choice = BackendChoice::parse(&backend).map_err(|e| JsError::new(&e))?;
         let gpu = Gpu::new(canvas, choice)
             .await
@@ -219,7 +220,8 @@ impl Viewer {
 
     /// Tells the figure whether its canvas is on screen; coming back, it draws the frame it kept.
     #[wasm_bindgen(js_name = setVisible)]
-    pub fn set_visible(&mut self, on: bool) -> Result<(), JsError> {
+    pub fn set_visible(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.visible = on;
         if on && self.pending {
             std::mem::swap(&mut self.renderer.frame, &mut self.hidden);

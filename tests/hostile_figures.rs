@@ -1,0 +1,127 @@
+//! Hostile input to the figures' logic, natively: what a page, a student's console or a dropped
+//! file could pass through a binding. Each rule is checked where it is decided (the figure or the
+//! core), so that the wasm boundary only converts types. A rejected call leaves the scene as it
+//! was; an accepted one never produces NaN or ±Infinity later.
+#![cfg(not(target_arch = "wasm32"))]
+
+use glam::Vec2;
+use inbetween::curves::{ArcLengthTable, Interpolation, Track};
+use inbetween::figures::curves::{KeyframesScene, LagrangeScene};
+
+// ---- one rule for every count: a whole number in range, never rounded ----
+
+#[test]
+fn counts_passed_as_numbers_must_be_whole() {
+    let mut lagrange = LagrangeScene::new();
+    let before = lagrange.key_count();
+    let e = lagrange.set_key_count(4.5).unwrap_err();
+    assert!(e.contains("whole number from 3 to 16"), "{e}");
+    assert_eq!(
+        lagrange.key_count(),
+        before,
+        "a rejected count changes nothing"
+    );
+    lagrange.set_key_count(5.0).unwrap();
+    assert_eq!(lagrange.key_count(), 5);
+
+    let e = inbetween::figures::boids::law_plot_samples(2.5).unwrap_err();
+    assert!(e.contains("whole number from 2 to 1000"), "{e}");
+    assert_eq!(
+        inbetween::figures::boids::law_plot_samples(3.0)
+            .unwrap()
+            .len(),
+        9
+    );
+
+    let mut flock = inbetween::figures::boids::FlockFigure::new();
+    assert!(flock.set_count(20.5).unwrap_err().contains("whole number"));
+    let mut emitter = inbetween::figures::particles::EmitterFigure::new();
+    assert!(emitter
+        .set_burst(10.5)
+        .unwrap_err()
+        .contains("whole number"));
+    let mut skeleton = inbetween::figures::skeleton::SkeletonFigure::new();
+    assert!(skeleton
+        .set_keys_per_cycle(4.5)
+        .unwrap_err()
+        .contains("whole number"));
+    let mut cloth =
+        inbetween::figures::cloth::ClothFigure::new(inbetween::figures::cloth::Preset::Flag);
+    assert!(cloth
+        .set_resolution(10.5)
+        .unwrap_err()
+        .contains("whole number"));
+    for v in [f32::NAN, f32::INFINITY, -1.0, 4_294_967_299.0] {
+        assert!(lagrange.set_key_count(v).is_err(), "{v}");
+    }
+}
+
+// ---- arc length on degenerate keys ----
+
+#[test]
+fn arc_length_lookup_never_panics_on_a_nan_length() {
+    // Keys 1e-30 s apart: the natural spline's tangents overflow, and with them the length.
+    let keys = vec![Vec2::ZERO, Vec2::new(1.0, 1.0), Vec2::new(2.0, 0.0)];
+    let track = Track::new(vec![0.0, 1e-30, 2e-30], keys)
+        .and_then(|t| t.with_interpolation(Interpolation::Natural))
+        .unwrap();
+    let table = ArcLengthTable::new(&track, 24);
+    for s in [0.0, 0.5, 1.0, f32::NAN, f32::INFINITY, -1.0] {
+        let _ = table.time_at_length(&track, s); // must return, not panic
+    }
+}
+
+#[test]
+fn the_key_editor_rejects_keys_closer_than_its_minimum_spacing() {
+    let mut scene = KeyframesScene::new();
+    scene.set_scheme("natural").unwrap();
+    let before = scene.track().clone();
+    let keys = vec![Vec2::ZERO, Vec2::new(1.0, 1.0), Vec2::new(2.0, 0.0)];
+    let e = scene
+        .set_keys(vec![0.0, 1e-30, 2e-30], keys.clone())
+        .unwrap_err();
+    assert!(e.contains("at least 0.001 s apart"), "{e}");
+    assert_eq!(scene.track(), &before, "a rejected edit changes nothing");
+    // What the page then asks for still works and is finite.
+    for row in scene.sample_motion(50).unwrap() {
+        assert!(row.iter().all(|v| v.is_finite()), "{row:?}");
+    }
+    scene.set_keys(vec![0.0, 0.001, 0.002], keys).unwrap();
+    scene.set_arc_length(true);
+    let p = scene.position(0.0015).unwrap();
+    assert!(p.is_finite());
+}
+
+#[test]
+fn the_key_editor_rejects_values_outside_its_range() {
+    let mut scene = KeyframesScene::new();
+    let before = scene.track().clone();
+    let far = vec![Vec2::ZERO, Vec2::new(1e38, 0.0), Vec2::new(2.0, 0.0)];
+    let e = scene.set_keys(vec![0.0, 1.0, 2.0], far).unwrap_err();
+    assert!(e.contains("[-10000, 10000] m"), "{e}");
+    let near = vec![Vec2::ZERO, Vec2::new(1.0, 0.0), Vec2::new(2.0, 0.0)];
+    let e = scene.set_keys(vec![-3e38, 1.0, 3e38], near).unwrap_err();
+    assert!(e.contains("key times must lie in"), "{e}");
+    let e = scene
+        .set_key_tangent(0, Vec2::new(1e38, 0.0), Vec2::ZERO)
+        .unwrap_err();
+    assert!(e.contains("tangents must lie in"), "{e}");
+    assert_eq!(scene.track(), &before);
+    assert!(scene.loop_sec().is_finite());
+    // Centripetal keys at the limit stay finite.
+    scene.set_scheme("centripetal").unwrap();
+    let edge = vec![Vec2::splat(-1e4), Vec2::ZERO, Vec2::splat(1e4)];
+    scene.set_keys(vec![0.0, 1.0, 2.0], edge).unwrap();
+    scene.set_arc_length(true);
+    let mut ghosts = Vec::new();
+    scene.ghosts(&mut ghosts);
+    assert!(ghosts.iter().all(|g| g.is_finite()));
+}
+
+#[test]
+fn a_rejected_tension_keeps_the_previous_tension() {
+    let mut scene = KeyframesScene::new();
+    assert!(scene.set_tension(f32::NAN).is_err());
+    assert!(scene.set_tension(3.0).is_err());
+    scene.set_tension(0.5).unwrap();
+}

@@ -1,0 +1,99 @@
+//! Browser-only tests of the wasm boundary's argument checks: a value of the wrong JavaScript
+//! type is an error that names the parameter (never a panic in the glue, never a silent
+//! coercion), a count or index is a whole number in range, and a rejected call changes nothing.
+#![cfg(target_arch = "wasm32")]
+
+use inbetween::web::{
+    check_emitter, check_skeleton, check_skin_weights, ClothScene, HierarchyScene, KeyframesScene,
+    SkeletonScene,
+};
+use wasm_bindgen::JsValue;
+use wasm_bindgen_test::*;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+fn message(e: wasm_bindgen::JsError) -> String {
+    let value: JsValue = e.into();
+    js_sys::Reflect::get(&value, &"message".into())
+        .ok()
+        .and_then(|m| m.as_string())
+        .unwrap_or_default()
+}
+
+#[wasm_bindgen_test]
+fn a_non_string_name_is_an_error_not_a_read_past_the_buffer() {
+    let mut scene = KeyframesScene::new();
+    let m = message(scene.set_scheme(JsValue::from(42)).unwrap_err());
+    assert_eq!(m, "name must be a string, got number 42");
+    assert!(message(scene.set_ease(JsValue::NULL).unwrap_err()).contains("must be a string"));
+    assert!(message(ClothScene::new(JsValue::from(7)).err().unwrap()).contains("preset"));
+    assert_eq!(
+        scene.scheme(),
+        "cardinal",
+        "the rejected scheme changed nothing"
+    );
+    scene.set_scheme("natural".into()).unwrap();
+}
+
+#[wasm_bindgen_test]
+fn a_flag_must_be_a_boolean() {
+    let mut scene = KeyframesScene::new();
+    for bad in [JsValue::from("true"), JsValue::from(1), JsValue::UNDEFINED] {
+        let m = message(scene.set_arc_length(bad).unwrap_err());
+        assert!(m.starts_with("on must be true or false"), "{m}");
+    }
+    scene.set_arc_length(JsValue::TRUE).unwrap();
+}
+
+#[wasm_bindgen_test]
+fn counts_and_indices_are_whole_numbers_never_wrapped() {
+    let scene = KeyframesScene::new();
+    for bad in [f64::NAN, f64::INFINITY, -1.0, 1.5, 4_294_967_299.0] {
+        let m = message(scene.sample_motion(bad).unwrap_err());
+        assert!(m.contains("whole number"), "{bad}: {m}");
+    }
+    assert_eq!(scene.sample_motion(3.0).unwrap().len(), 12);
+    // 2^32 used to wrap to joint 0.
+    let mut h = HierarchyScene::new();
+    let before = h.joint_angles_deg(0.0).unwrap();
+    assert!(h
+        .set_joint_angles_deg(4_294_967_296.0, 45.0, 0.0, 0.0)
+        .is_err());
+    assert_eq!(h.joint_angles_deg(0.0).unwrap(), before);
+    // 2^32 + 5 used to be a capacity of 5.
+    assert!(
+        message(check_emitter(4_294_967_301.0, 10.0, 1.0, 2.0).unwrap_err())
+            .contains("whole number")
+    );
+    let s = SkeletonScene::new();
+    assert!(s.joint_angles_deg(0.5).is_err());
+}
+
+#[wasm_bindgen_test]
+fn lists_of_names_and_indices_are_checked_element_by_element() {
+    let rest: Vec<f32> = [0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0].repeat(2);
+    // A string is not an array of its characters.
+    let m = message(check_skeleton("ab".into(), vec![-1.0, 0.0], rest.clone()).unwrap_err());
+    assert!(m.contains("names must be an array of strings"), "{m}");
+    let names: js_sys::Array = ["a", "b"].iter().map(|&n| JsValue::from(n)).collect();
+    // 4294967295 used to become -1, a second root.
+    let m = message(
+        check_skeleton(
+            names.clone().into(),
+            vec![4_294_967_295.0, 0.0],
+            rest.clone(),
+        )
+        .unwrap_err(),
+    );
+    assert!(m.contains("parents[0] must be a whole number"), "{m}");
+    assert_eq!(
+        check_skeleton(names.into(), vec![-1.0, 0.0], rest).unwrap(),
+        "ok"
+    );
+    // NaN used to be joint 0.
+    let m = message(
+        check_skin_weights(vec![f64::NAN, 0.0, 0.0, 0.0], vec![1.0, 0.0, 0.0, 0.0], 2.0)
+            .unwrap_err(),
+    );
+    assert!(m.contains("joints[0] must be a whole number"), "{m}");
+}
