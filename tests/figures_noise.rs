@@ -399,7 +399,7 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     assert!(!s.draw(&mut f, MeshId(3)).contains("finer than the mesh"));
     s.set_params(7.0, 0.8, 2.0).unwrap();
     let n = s.draw(&mut f, MeshId(3));
-    assert!(n.contains("Octaves 6 to 7 are finer than the mesh") && n.contains("0.010 m apart") && n.contains("(0.021 m)"), "{n}");
+    assert!(n.contains("Octaves 6 and 7 are finer than the mesh") && n.contains("0.010 m apart") && n.contains("(0.021 m)"), "{n}");
     s.set_params(6.0, 0.8, 2.0).unwrap();
     assert!(s.draw(&mut f, MeshId(3)).contains("Octave 6 is finer"));
     // Left out: the surface is the sum up to octave 5, and the plot's sum column too, while the

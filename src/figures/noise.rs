@@ -508,9 +508,14 @@ impl Noise2d {
                 let p = Vec2::new(i as f32, j as f32);
                 let (value, slope) = self.dot_value_and_slope(i, j);
                 let at = self.world(p, value) + lift;
-                frame.point(at, 0.025, palette::KEY);
-                if value != 0.0 {
-                    frame.line(self.world(p, 0.0), at, palette::KEY);
+                if value == 0.0 {
+                    frame.point(at, 0.025, palette::KEY);
+                } else {
+                    // Between layers the dot stays at height 0 and a stick joins it to the
+                    // surface; both are drawn through the surface, which hides half of them.
+                    let dot = self.world(p, 0.0) + lift;
+                    frame.point_on_top(dot, 0.025, palette::KEY);
+                    frame.line_on_top(dot, at, palette::KEY);
                 }
                 if slope != Vec2::ZERO {
                     let tip = at + Vec3::new(slope.x, 0.0, slope.y) * 0.18;
@@ -555,8 +560,8 @@ impl Noise2d {
             note += &format!(
                 " The slice z = {} lies between the lattice layers z = {k} and z = {}: at a dot the \
                  value and the slope (arrow) blend those two layers' gradients with weight \
-                 fade({}) = {} on layer {}, so the surface is no longer 0 at the dots \
-                 (black sticks).",
+                 fade({}) = {} on layer {}, so the surface is no longer 0 at the dots (each \
+                 black stick joins a dot to the surface).",
                 format_number(self.z),
                 k + 1,
                 format_number(self.z - k as f32),
@@ -825,6 +830,8 @@ impl Octaves {
                 let first = last.map_or(0, |l| l + 1);
                 let range = if first == k {
                     format!("Octave {k} is")
+                } else if first + 1 == k {
+                    format!("Octaves {first} and {k} are")
                 } else {
                     format!("Octaves {first} to {k} are")
                 };
@@ -1141,8 +1148,8 @@ impl TerrainScene {
         let k = self.probe_index();
         let at = self.terrain.positions[k];
         let reference = self.terrain.normals[k];
-        frame.arrow(at, at + reference * 0.35, palette::REFERENCE, 0.06);
-        frame.label(at + reference * 0.4, "n", palette::REFERENCE);
+        frame.arrow(at, at + reference * 0.5, palette::REFERENCE, 0.08);
+        frame.label(at + reference * 0.58, "n", palette::REFERENCE);
         let p = &self.params;
         let r = self.terrain.resolution();
         let mut note = format!(
@@ -1161,6 +1168,8 @@ impl TerrainScene {
             let first = last.map_or(0, |l| l + 1);
             let range = if first == p.fractal.n {
                 format!("octave {first} is")
+            } else if first + 1 == p.fractal.n {
+                format!("octaves {first} and {} are", p.fractal.n)
             } else {
                 format!("octaves {first} to {} are", p.fractal.n)
             };
@@ -1193,8 +1202,8 @@ impl TerrainScene {
             );
             if let Some(yours) = answers.as_ref().map(|a| Vec3::from_slice(&a[0])) {
                 if yours.is_finite() && yours.length() > 1e-6 {
-                    frame.arrow(at, at + yours.normalize() * 0.35, palette::STUDENT, 0.06);
-                    frame.label(at + yours.normalize() * 0.45, "yours", palette::STUDENT);
+                    frame.arrow(at, at + yours.normalize() * 0.5, palette::STUDENT, 0.08);
+                    frame.label(at + yours.normalize() * 0.6, "yours", palette::STUDENT);
                 }
             }
             note += " ";
@@ -1327,6 +1336,8 @@ impl Textures {
 
     /// Draws the textures (`textures[i]` holds `images()[i]`) on three squares; returns the note.
     pub fn draw(&self, frame: &mut Frame, textures: &[TextureId]) -> String {
+        // The three squares and their labels stay whole at any canvas size.
+        frame.keep_box_in_view(Vec3::new(-3.3, 0.0, -1.0), Vec3::new(3.3, 0.0, 1.3));
         for (i, (&texture, (_, name))) in textures.iter().zip(TEXTURE_KINDS).enumerate() {
             let x = (i as f32 - 1.0) * 2.3;
             frame.textured_quad(
