@@ -88,3 +88,46 @@ proptest! {
         }
     }
 }
+
+/// The figures that declare their view, drawn at their defaults: what they declare and their
+/// label anchors all land inside the canvas at 800 × 600 and 1600 × 1000, seen from the page's
+/// own orbit (the yaw and pitch its lesson.js passes to setCamera) and from two others.
+#[test]
+fn figures_that_declare_their_view_fit_at_both_sizes() {
+    use inbetween::draw::{Frame, TextureId};
+    use inbetween::figures::{noise, noise_images, rotations};
+    let mut frames: Vec<(&str, Frame, (f32, f32))> = Vec::new();
+    let mut f = Frame::default();
+    rotations::Interpolation::new().draw(&mut f, 0.5).unwrap();
+    frames.push(("03 interpolation", f, (0.0, 0.25)));
+    let mut f = Frame::default();
+    noise::Textures::new().draw(&mut f, &[TextureId(3), TextureId(4), TextureId(5)]);
+    frames.push(("05 textures", f, (0.0, 1.3)));
+    let mut f = Frame::default();
+    noise_images::NoiseImages::new().draw(&mut f, [TextureId(3), TextureId(4), TextureId(5)]);
+    frames.push(("05 CPU and GPU noise", f, (0.0, 1.3)));
+    for (name, frame, (yaw, pitch)) in frames {
+        assert!(!frame.keep_in_view.is_empty(), "{name} declares its view");
+        let points: Vec<Vec3> = frame
+            .keep_in_view
+            .iter()
+            .copied()
+            .chain(frame.labels.iter().map(|l| l.anchor))
+            .collect();
+        // The two page sizes, and the canvases the page gives a figure at them (420 px tall,
+        // beside or under the 270 px panel).
+        let sizes = [
+            Vec2::new(800.0, 600.0),
+            Vec2::new(1600.0, 1000.0),
+            Vec2::new(760.0, 420.0),
+            Vec2::new(690.0, 420.0),
+        ];
+        for size in sizes {
+            for (dy, dp) in [(0.0, 0.0), (0.8, -0.2), (-1.5, 0.3)] {
+                let mut camera = OrbitCamera { yaw_rad: yaw + dy, pitch_rad: pitch + dp, ..OrbitCamera::default() };
+                assert!(camera.fit(&points, size, FIT_PAD_PX), "{name}");
+                assert_fits(&camera, size, &points, FIT_PAD_PX);
+            }
+        }
+    }
+}

@@ -236,6 +236,8 @@ impl NoiseImages {
             }
             .to_string(),
         ];
+        // The three squares and their labels stay whole at any canvas size.
+        frame.keep_box_in_view(Vec3::new(-3.2, 0.0, -1.0), Vec3::new(3.2, 0.0, 1.3));
         for ((&x, texture), name) in PLACES.iter().zip(textures).zip(&names) {
             frame.textured_quad(
                 texture,

@@ -796,7 +796,7 @@ impl FreeFallFigure {
                 .0
             })
             .collect();
-        frame.polyline(&exact, EXACT_COLOR);
+        frame.wide_polyline(&exact, EXACT_COLOR, crate::draw::CURVE_PX);
         // The integrators exist only after whole steps: the exact ball is shown at the same
         // instant as their big dots (the latest step), so the gaps drawn are their errors and
         // not the time since that step (Verlet's dot sits on it).
@@ -808,9 +808,10 @@ impl FreeFallFigure {
             EXACT_COLOR,
         );
         for (path, &color) in self.paths.iter().zip(&INTEGRATOR_COLORS) {
-            frame.polyline(&path[..=k_now], color);
+            frame.wide_polyline(&path[..=k_now], color, crate::draw::CURVE_PX);
+            // One outlined dot per step, the same size at any zoom.
             for p in &path[..=k_now] {
-                frame.point(*p, 0.025, color);
+                frame.marker(*p, 7.0, color);
             }
             frame.point(path[k_now], 0.06, color);
         }

@@ -163,7 +163,7 @@ impl RigidMotion {
                     let s = k as f32 / 64.0;
                     self.path.push(self.point(method, s, local, student));
                 }
-                frame.polyline(&self.path, color * shade);
+                frame.wide_polyline(&self.path, color * shade, crate::draw::CURVE_PX);
             }
             let m = self.motion(method, t);
             let (r, p) = m.to_rotation_translation();
@@ -526,7 +526,7 @@ impl AffineKeys {
                 let m = shift * self.at(naive, k as f32 / 64.0) * size;
                 self.path.push(m.transform_point3(corner));
             }
-            frame.polyline(&self.path, color * 0.8);
+            frame.wide_polyline(&self.path, color * 0.8, crate::draw::CURVE_PX);
             let m = shift * self.at(naive, t);
             frame.mesh(MeshId::CUBE, m * size, color);
             frame.point(

@@ -185,6 +185,8 @@ impl Interpolation {
         let t = in_range("t", t, 0.0, 1.0)?;
         let student = self.use_exercise && self.arc == Arc::Short;
         frame.grid(16, 0.5);
+        // The four objects, their axes and paths stay in view at any canvas size.
+        frame.keep_box_in_view(Vec3::new(-3.9, 0.5, -0.7), Vec3::new(3.9, 1.9, 0.7));
         for (method, x, color) in METHODS {
             let at = Vec3::new(x, 1.2, 0.0);
             self.path.clear();
@@ -192,7 +194,7 @@ impl Interpolation {
                 let m = self.orientation(method, k as f32 / 64.0, student);
                 self.path.push(at + m * NOSE);
             }
-            frame.polyline(&self.path, color * 0.8);
+            frame.wide_polyline(&self.path, color * 0.8, crate::draw::CURVE_PX);
             frame.point(self.path[0], 0.04, palette::GREY);
             frame.point(self.path[64], 0.04, palette::KEY);
             let m = self.orientation(method, t, student);
@@ -632,7 +634,7 @@ impl Rodrigues {
                 rotation::rodrigues_rotate(v, n, std::f32::consts::TAU * k as f32 / 128.0)
             }),
         );
-        frame.polyline(&self.arc, CIRCLE);
+        frame.wide_polyline(&self.arc, CIRCLE, crate::draw::CURVE_PX);
         frame.point(centre, 0.035, AXIS);
         // The three terms of the formula, tip to tail: they end at v′.
         let cos_part = v * phi.cos();

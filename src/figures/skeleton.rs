@@ -692,10 +692,13 @@ impl SkeletonFigure {
             palette::ORANGE,
         );
         if self.trail.len() >= 2 {
-            frame.polyline(&self.trail, palette::PURPLE);
-            for &dot in &self.trail[..self.trail.len() - 1] {
-                frame.point(dot, 0.008, palette::PURPLE);
-            }
+            frame.wide_polyline(&self.trail, palette::PURPLE, crate::draw::CURVE_PX);
+            // The trail's samples are equal time steps apart: a tick across it at each.
+            frame.ticks(
+                &self.trail[..self.trail.len() - 1],
+                crate::draw::TICK_PX,
+                palette::PURPLE,
+            );
         }
         Ok(note)
     }

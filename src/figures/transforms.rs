@@ -157,7 +157,7 @@ impl SingleShape {
         let arc = self.swing_arc(48);
         let tip = self.matrix(Order::TranslateFirst).w_axis.truncate();
         frame.line(Vec3::ZERO, tip, Order::TranslateFirst.color());
-        frame.polyline(&arc, Order::TranslateFirst.color());
+        frame.wide_polyline(&arc, Order::TranslateFirst.color(), crate::draw::CURVE_PX);
         if arc.len() >= 2 && arc[0].distance(tip) > 0.05 {
             frame.arrow(arc[arc.len() - 2], tip, Order::TranslateFirst.color(), 0.12);
         }
