@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 use inbetween::draw::{Frame, MeshId};
-use inbetween::figures::blend_shapes::{FaceFigure, Show, LOOP_SECONDS};
+use inbetween::figures::blend_shapes::{FaceFigure, Show, DEFAULT_WEIGHTS, LOOP_SECONDS, PROBES};
 
 const IDS: [MeshId; 2] = [MeshId(3), MeshId(4)];
 
@@ -14,17 +14,27 @@ fn controls_validate_and_the_full_form_reports_a_bad_sum() {
     assert!(f.set_weight(0, f32::NAN).unwrap_err().contains("weight"));
     assert!(f.set_show("half").unwrap_err().contains("show"));
     assert!(f.set_base_weight(2.0).unwrap_err().contains("base weight"));
+    assert!(f.set_base_weight(-0.05).unwrap_err().contains("base weight"));
+    assert!(f.set_base_weight(f32::NAN).unwrap_err().contains("base weight"));
     assert!(f.weight_curves(1).is_err());
     assert!(f.weight_curves(1_000_000).is_err());
     f.set_animate(false);
     let mut frame = Frame::default();
+    // The defaults: base weight 0 by hand, so the full form's total is the targets' sum.
     let note = f.draw(&mut frame, IDS, 0.0).unwrap();
     assert_eq!(f.show(), Show::Both);
     assert!(note.contains("Differential (left)"), "{note}");
     assert!(
-        note.contains("the same face as the differential form"),
+        note.contains("Full (right): base weight 0.000 + targets 2.700 = 2.700, not 1: p = 2.700·b₀ + Σ wₖ dₖ"),
         "{note}"
     );
+    f.set_base_auto(true);
+    let note = f.draw(&mut frame, IDS, 0.0).unwrap();
+    assert!(
+        note.contains("base weight -1.700 (1 − Σw) + targets 2.700 = 1.000: the weights sum to 1"),
+        "{note}"
+    );
+    f.set_base_auto(false);
     f.set_show("differential").unwrap();
     let note = f.draw(&mut frame, IDS, 0.0).unwrap();
     assert!(
@@ -94,10 +104,22 @@ fn both_forms_stand_side_by_side_and_agree_when_the_base_weight_is_one_minus_the
     let (l, r) = (&frame.labels[0], &frame.labels[1]);
     assert!(l.text == "differential" && l.left && l.anchor.x < h[1].1.x - 1.0);
     assert!(r.text.starts_with("full") && !r.left);
-    // Base weight 1 − Σw: the full form is the differential form.
+    // At the defaults (base weight 0 by hand) the heads differ; with the automatic base weight
+    // 1 − Σw the full form is the differential form.
+    let apart = f
+        .differential
+        .positions
+        .iter()
+        .zip(&f.full.positions)
+        .map(|(a, b)| a.distance(*b))
+        .fold(0.0, f32::max);
+    assert!(apart > 0.1, "the defaults show the two forms differ: {apart}");
+    f.set_base_auto(true);
+    f.draw(&mut Frame::default(), IDS, 1.3).unwrap();
     for (a, b) in f.differential.positions.iter().zip(&f.full.positions) {
         assert!(a.distance(*b) < 1e-5, "{a} vs {b}");
     }
+    f.set_base_auto(false);
     // A base weight by hand: full − differential = (s − 1) b₀ (s = base + Σw, b₀ the base).
     f.set_animate(false);
     for k in 0..4 {
@@ -144,15 +166,20 @@ fn the_weight_plot_follows_the_animation_and_the_full_forms_total() {
         let (t, w) = (row[0], &row[1..5]);
         assert_eq!(w, f.weights_at(t));
         assert!((row[5] - w.iter().sum::<f32>()).abs() < 1e-6);
+        assert!((row[6] - row[5]).abs() < 1e-6, "base 0 by hand: the total is Σw");
+    }
+    f.set_base_auto(true);
+    for row in f.weight_curves(samples).unwrap().chunks(7) {
         assert!((row[6] - 1.0).abs() < 1e-6, "base 1 − Σw: the total is 1");
     }
+    f.set_base_auto(false);
     assert_eq!(flat[0], 0.0);
     assert!((flat[(samples - 1) * 7] - LOOP_SECONDS).abs() < 1e-6);
     // Each weight reaches its slider's value during the loop.
     for k in 0..4 {
         let peak = flat.chunks(7).map(|r| r[1 + k]).fold(0f32, f32::max);
         assert!(
-            (peak - [1.0, 0.6, 0.8, 0.7][k]).abs() < 0.01,
+            (peak - DEFAULT_WEIGHTS[k]).abs() < 0.01,
             "weight {k} peaks at {peak}"
         );
     }
@@ -201,7 +228,9 @@ fn the_eyes_shrink_with_the_face_when_the_full_form_sum_is_not_one() {
     let mut f = FaceFigure::new();
     f.set_animate(false);
     f.set_show("full").unwrap();
+    f.set_base_auto(true);
     let whole = eye_positions(&mut f);
+    f.set_base_auto(false);
     f.set_base_weight(0.5).unwrap();
     let w: f32 = f.weights_at(0.0).iter().sum();
     let scaled = eye_positions(&mut f);
@@ -243,12 +272,14 @@ fn side_by_side_neither_head_reaches_into_the_other_and_the_view_frames_both() {
     use inbetween::camera::{project_to_canvas, OrbitCamera};
     let size = glam::Vec2::new(650.0, 420.0);
     let mut f = FaceFigure::new();
-    // At the defaults (base 1 − Σw) the heads keep the figure's opening framing.
-    let start = f.view_fit();
+    // With the automatic base weight (total 1) the heads keep the figure's rest framing.
+    f.set_base_auto(true);
+    let rest = f.view_fit();
     assert!(
-        start[0].abs() < 1e-6 && (start[3] - 4.8).abs() < 1e-6,
-        "{start:?}"
+        rest[0].abs() < 1e-6 && (rest[3] - 4.8).abs() < 1e-6,
+        "{rest:?}"
     );
+    f.set_base_auto(false);
     for (animate, base, w) in [
         (false, 1.0, 1.5),  // the largest total: 1 + 4 × 1.5 = 7
         (true, 1.0, 1.5),   // pulsing up to about 4.5
@@ -313,3 +344,203 @@ fn side_by_side_neither_head_reaches_into_the_other_and_the_view_frames_both() {
 }
 
 const HEAD_RADIUS_FOR_TEST: f32 = inbetween::figures::blend_shapes::HEAD_RADIUS;
+
+/// The largest distance between the two heads' matching vertices (each in its head's frame).
+fn largest_gap(f: &FaceFigure) -> f32 {
+    f.differential
+        .positions
+        .iter()
+        .zip(&f.full.positions)
+        .map(|(a, b)| a.distance(*b))
+        .fold(0.0, f32::max)
+}
+
+/// The page's numbers: at the defaults the full form's total (base 0 by hand, so Σw) swings
+/// between 1.03 and 1.67 over the loop.
+#[test]
+fn the_defaults_total_swings_as_the_page_says() {
+    let f = FaceFigure::new();
+    assert_eq!(f.weights(), DEFAULT_WEIGHTS);
+    let (lo, hi) = f.total_range();
+    assert!((lo - 1.03).abs() < 0.006 && (hi - 1.67).abs() < 0.006, "{lo} {hi}");
+    // The samples of the plot agree with the range.
+    let flat = f.weight_curves(401).unwrap();
+    let totals: Vec<f32> = flat.chunks(7).map(|r| r[6]).collect();
+    let (plo, phi) = totals
+        .iter()
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
+    assert!((plo - lo).abs() < 0.005 && (phi - hi).abs() < 0.005);
+}
+
+/// The page's "Try this", step by step, with the settings it names.
+#[test]
+fn the_try_this_steps_do_what_the_page_says() {
+    let mut f = FaceFigure::new();
+    let mut frame = Frame::default();
+    // Untick animate; smile 0.5, the others 0; base weight 0.5 by hand: the sum is 1 and the
+    // heads are the same.
+    f.set_animate(false);
+    for (k, w) in [0.5, 0.0, 0.0, 0.0].into_iter().enumerate() {
+        f.set_weight(k, w).unwrap();
+    }
+    f.set_base_weight(0.5).unwrap();
+    let note = f.draw(&mut frame, IDS, 0.0).unwrap();
+    assert!(largest_gap(&f) < 1e-5);
+    assert!(note.contains("= 1.000: the weights sum to 1"), "{note}");
+    // Brows up 0.5 too: the total is 1.5 and the right head is the left one plus 0.5·b₀.
+    f.set_weight(2, 0.5).unwrap();
+    let note = f.draw(&mut frame, IDS, 0.0).unwrap();
+    assert!(note.contains("= 1.500, not 1"), "{note}");
+    assert!(note.contains("scaled by 1.500 about its centre"), "{note}");
+    let base = inbetween::blend_shapes::face().mesh.positions;
+    for ((d, full), b) in f.differential.positions.iter().zip(&f.full.positions).zip(&base) {
+        assert!((*full - *d - 0.5 * *b).length() < 1e-5);
+    }
+    // The brows rise on the left head: the brow vertices move up by 0.5 × 12 cm at their middle.
+    let brow = base
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| (p.y - 0.4495).abs() < 0.03 && p.z > 0.3)
+        .map(|(v, p)| f.differential.positions[v].y - p.y)
+        .fold(0.0, f32::max);
+    assert!(brow > 0.055, "brows rise {brow}");
+    // Animate: smile and brows pulse half a loop apart, so the total stays 1.0 all along.
+    f.set_animate(true);
+    let (lo, hi) = f.total_range();
+    assert!((lo - 1.0).abs() < 1e-5 && (hi - 1.0).abs() < 1e-5, "{lo} {hi}");
+    // Brows to 0 and jaw open to 0.5: a quarter of a loop apart, the total swings from 0.65
+    // to 1.35 and the right head breathes.
+    f.set_weight(2, 0.0).unwrap();
+    f.set_weight(1, 0.5).unwrap();
+    let (lo, hi) = f.total_range();
+    assert!((lo - 0.65).abs() < 0.005 && (hi - 1.35).abs() < 0.005, "{lo} {hi}");
+    // Tick "automatic": both heads the same again, whatever the time.
+    f.set_base_auto(true);
+    for t in [0.0, 0.7, 2.2] {
+        f.draw(&mut frame, IDS, t).unwrap();
+        assert!(largest_gap(&f) < 1e-5);
+    }
+}
+
+#[test]
+fn the_note_names_a_vanished_and_an_inside_out_base() {
+    let mut f = FaceFigure::new();
+    f.set_animate(false);
+    f.set_show("full").unwrap();
+    for k in 0..4 {
+        f.set_weight(k, 0.0).unwrap();
+    }
+    let note = f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+    assert!(note.contains("= 0.000, so the base vanishes"), "{note}");
+    for k in 0..4 {
+        f.set_weight(k, -0.25).unwrap();
+    }
+    let note = f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+    assert!(note.contains("= -1.000, negative"), "{note}");
+    assert!(note.contains("inside out"), "{note}");
+    // The base is mirrored through the centre: a point at the back of the head ends up in front.
+    let base = inbetween::blend_shapes::face().mesh.positions;
+    let back = (0..base.len()).min_by(|&a, &b| base[a].z.total_cmp(&base[b].z)).unwrap();
+    assert!(base[back].z < -0.8 && f.full.positions[back].z > 0.8);
+}
+
+#[test]
+fn the_delta_arrows_run_from_the_base_to_the_blend() {
+    let mut f = FaceFigure::new();
+    f.set_animate(false);
+    f.set_show("differential").unwrap();
+    let count = |f: &mut FaceFigure| {
+        let mut frame = Frame::default();
+        f.draw(&mut frame, IDS, 0.0).unwrap();
+        frame.meshes.iter().filter(|m| m.mesh == MeshId::CONE).count()
+    };
+    let arrows = f.arrow_vertices().len();
+    assert!((40..400).contains(&arrows), "{arrows} arrows");
+    // At the defaults every sampled vertex that moves more than the arrow's smallest length
+    // carries a cone; with every weight 0 nothing moves and no arrow is drawn.
+    assert!(count(&mut f) > arrows / 2);
+    for k in 0..4 {
+        f.set_weight(k, 0.0).unwrap();
+    }
+    assert_eq!(count(&mut f), 0);
+    f.set_weight(1, 1.0).unwrap();
+    let jaw = count(&mut f);
+    assert!(jaw > 5);
+    f.set_show_deltas(false);
+    assert_eq!(count(&mut f), 0);
+}
+
+/// The face's features move with their targets: the jaw opens the mouth (the two dark rings of
+/// the opening part by about 20 cm in the middle), the smile lifts the corners above the middle.
+#[test]
+fn each_target_moves_its_painted_feature() {
+    let face = inbetween::blend_shapes::face();
+    let mouth: Vec<usize> = (0..face.mesh.positions.len())
+        .filter(|&v| face.colors[v].x < 0.2 && face.mesh.positions[v].y < 0.0)
+        .collect();
+    assert!(mouth.len() >= 10, "{} mouth vertices", mouth.len());
+    let middle = |t: &[Vec3], v: usize| t[v] - face.mesh.positions[v];
+    // Jaw open: the lower dark ring drops, the upper stays.
+    let (mut upper, mut lower) = (0.0f32, 0.0f32);
+    for &v in &mouth {
+        let p = face.mesh.positions[v];
+        if p.x.abs() < 0.05 {
+            let dy = middle(&face.targets[1], v).y;
+            if p.y > -0.4495 { upper = upper.min(dy) } else { lower = lower.min(dy) }
+        }
+    }
+    assert!(upper > -0.01 && lower < -0.2, "upper {upper}, lower {lower}");
+    // Smile: the corners rise more than the middle.
+    let rise = |x_lo: f32, x_hi: f32| {
+        mouth
+            .iter()
+            .filter(|&&v| (x_lo..x_hi).contains(&face.mesh.positions[v].x.abs()))
+            .map(|&v| middle(&face.targets[0], v).y)
+            .fold(0.0, f32::max)
+    };
+    assert!(rise(0.18, 0.25) > 0.1 && rise(0.0, 0.03) < 0.01);
+}
+
+/// A student's differential_vertex that is the full form without the base (Σ wₖ tₖ): right
+/// when the weights sum to 1, wrong elsewhere. The probes catch it even where the sliders sum to 1.
+fn full_form_runner(name: &str, args: &[f32]) -> Result<Vec<f32>, inbetween::figures::Failure> {
+    assert_eq!(name, "differential_vertex");
+    // base (3), targets (count, then 3 each), weights (count, then each).
+    let n = args[3] as usize;
+    let targets = &args[4..4 + 3 * n];
+    let weights = &args[5 + 3 * n..];
+    let mut p = Vec3::ZERO;
+    for k in 0..n {
+        p += weights[k] * Vec3::from_slice(&targets[3 * k..3 * k + 3]);
+    }
+    Ok(p.to_array().to_vec())
+}
+
+#[test]
+fn use_my_exercise_checks_probe_weights_beyond_the_sliders() {
+    let mut f = FaceFigure::new();
+    f.set_runner(full_form_runner);
+    f.set_use_exercise(true);
+    f.set_animate(false);
+    // Smile 1 alone: weights sum to 1, so at the sliders the wrong answer matches.
+    for (k, w) in [1.0, 0.0, 0.0, 0.0].into_iter().enumerate() {
+        f.set_weight(k, w).unwrap();
+    }
+    let note = f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+    assert!(note.contains("matches the reference at all"), "{note}");
+    assert!(
+        note.contains(&format!(
+            "it differs for {0} of the {0} probe weights: all weights 0, weights summing to 0.5,",
+            PROBES.len()
+        )),
+        "{note}"
+    );
+    assert!(note.contains("with all weights 0: yours (0.000, 0.000, 0.000), reference ("), "{note}");
+    // At the defaults (sum 2.7) it differs on the head itself, and the head shows its vertices.
+    for (k, w) in DEFAULT_WEIGHTS.into_iter().enumerate() {
+        f.set_weight(k, w).unwrap();
+    }
+    let note = f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+    assert!(note.contains("differs at vertex"), "{note}");
+    assert!(largest_gap(&f) < 1e-4, "the full form's total is 2.7 as is the student's");
+}

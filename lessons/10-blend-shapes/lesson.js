@@ -20,21 +20,32 @@ if (viewer) {
   };
   const timeline = new Timeline(document.getElementById('face-timeline'), { duration: 4, playing: true });
   const names = scene.targetNames();
+  // Equal curves stay visible: each weight is drawn wider than the next, and Σ w wide under
+  // the full form's dashed total (with the base weight 0 by hand the two are the same curve).
   const plot = new Plot(document.getElementById('face-plot'), {
     title: 'Weights over the loop', xLabel: 'time (s)', yLabel: 'weight (no unit)',
     series: [...names, 'Σ w (targets)', 'full form: base + Σ w'],
     colors: ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#1f2430', '#e68a00'], minSpan: 1, height: 200,
+    widths: [7, 5.5, 4, 2.5, 6, 2], dashes: [null, null, null, null, null, [6, 4]],
   });
   const updatePlot = () => { plot.setData(columns(scene.weightCurves(81), 7)); reframe(); };
-  const p = { show: 'both', base: -0.05, animate: true, useExercise: false };
-  const start = [1, 0.6, 0.8, 0.7];
+  const p = { show: 'both', baseAuto: false, base: 0, animate: true, deltas: true, useExercise: false };
+  const start = scene.weights();
   names.forEach((n, k) => { p[n] = start[k]; });
   const gui = new GUI({ container: document.querySelector('#fig-face .panel'), title: 'Face' });
   const weights = gui.addFolder('target weights');
   names.forEach((n, k) => weights.add(p, n, -0.5, 1.5, 0.01).name(n).onChange((w) => { scene.setWeight(k, w); updatePlot(); }));
   gui.add(p, 'show', ['both', 'differential', 'full']).name('show').onChange((f) => { scene.setShow(f); reframe(); });
-  gui.add(p, 'base', -0.05, 1, 0.05).name('full: base weight (left end: 1 − Σw)').onChange((w) => { scene.setBaseWeight(w); updatePlot(); });
+  const full = gui.addFolder('full form: base weight');
+  const base = full.add(p, 'base', 0, 1, 0.05).name('base weight (by hand)').onChange((w) => { scene.setBaseWeight(w); updatePlot(); });
+  full.add(p, 'baseAuto').name('automatic: 1 − Σw').onChange((on) => {
+    scene.setBaseAuto(on);
+    // The hand value is kept, but unused while the weight is automatic.
+    base.enable(!on);
+    updatePlot();
+  });
   gui.add(p, 'animate').name('animate the weights').onChange((on) => { scene.setAnimate(on); updatePlot(); });
+  gui.add(p, 'deltas').name('delta arrows (left)').onChange((on) => scene.setShowDeltas(on));
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
   updatePlot();
   const note = document.getElementById('face-note');

@@ -2,11 +2,11 @@
 //!
 //! A base mesh `b₀` and targets `b₁ … b_K` share one vertex order. Two ways to mix them:
 //! ```text
-//! full form:          p = Σₖ wₖ bₖ                   (k = 1 … K; the weights must sum to 1)
+//! full form:          p = Σₖ wₖ bₖ                   (k = 0 … K; the weights must sum to 1)
 //! differential form:  p = b₀ + Σₖ wₖ (bₖ − b₀)       (any weights; all zero gives the base)
 //! ```
-//! With weights summing to 1 the two agree. The full form scales the whole mesh by `Σ w` when the
-//! weights do not sum to 1 (half of every target shrinks the face towards the origin), which is
+//! With weights summing to 1 the two agree. Otherwise the full form, `(Σ w) b₀ + Σₖ wₖ dₖ`, scales
+//! the base by `Σ w` about the origin (half of every target shrinks the face towards it), which is
 //! why animation systems store and blend **deltas** `dₖ = bₖ − b₀` (glTF morph targets are deltas
 //! too). Normals are blended the same way and renormalised.
 //!
@@ -15,8 +15,7 @@
 //! | targets as deltas, validation | [`BlendShapes`], [`BlendShapeError`], [`MAX_TARGETS`] |
 //! | the two forms | [`BlendShapes::apply_differential`], [`BlendShapes::apply_full`], [`blend_full`] |
 //!
-//! Nothing allocates per frame: outputs go into the caller's slices. Lesson: `lessons/10-blend-shapes`
-//! (to come).
+//! Nothing allocates per frame: outputs go into the caller's slices. Lesson: `lessons/10-blend-shapes`.
 
 use glam::Vec3;
 use std::fmt;
@@ -282,12 +281,16 @@ pub fn blend_full(
     Ok(())
 }
 
-/// A procedural face-like head for the lesson: a squashed sphere and four sculpted targets, each
-/// a smooth bump of displacement in one region of the front.
+/// A procedural face-like head for the lesson: a squashed sphere painted with a mouth, lips,
+/// brows and cheeks (vertex colours), and four sculpted targets, each a smooth displacement of one
+/// of those features.
 pub struct Face {
     pub shapes: BlendShapes,
     /// The base mesh (positions, normals, indices).
     pub mesh: crate::mesh::MeshData,
+    /// Linear RGBA per vertex: skin, lips, the mouth's opening, brows and cheeks. The paint moves
+    /// with the vertices, so each target visibly moves its feature.
+    pub colors: Vec<glam::Vec4>,
     /// The targets' names, in order.
     pub names: Vec<&'static str>,
     /// The targets' positions (the full form needs the whole meshes).
@@ -297,48 +300,105 @@ pub struct Face {
 /// The targets of [`face`], in order.
 pub const FACE_TARGETS: [&str; 4] = ["smile", "jaw open", "brows up", "puff cheeks"];
 
+/// Segments (around) and rings (pole to pole) of the face's sphere: rings 2.8125° apart, so the
+/// mouth's opening spans two rings (41 and 42, y = −0.428 and −0.471) and each lip one more.
+pub const FACE_SEGMENTS: u32 = 96;
+pub const FACE_RINGS: u32 = 64;
+/// Height of the middle of the mouth (between rings 41 and 42) and of the brows (between rings
+/// 22 and 23), metres from the head's centre.
+pub const MOUTH_Y: f32 = -0.4495;
+pub const BROW_Y: f32 = 0.4495;
+
+/// Ramps from 0 at `lo` to 1 at `hi` with zero slope at both ends (a plain clamp leaves a crease
+/// in the shading where a displacement starts). `lo > hi` ramps the other way.
+fn smoothstep(lo: f32, hi: f32, v: f32) -> f32 {
+    let t = ((v - lo) / (hi - lo)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// A Gaussian bump of `width` around `centre`: 1 there, about 0.37 one width away.
+fn bump(v: f32, centre: f32, width: f32) -> f32 {
+    (-((v - centre) / width).powi(2)).exp()
+}
+
+/// How much a base-mesh point lies on the front of the face: 0 behind z = 0.2, 1 beyond z = 0.6.
+fn front(p: Vec3) -> f32 {
+    smoothstep(0.2, 0.6, p.z)
+}
+
+/// The displacement of base point `p` in target `k` (0 smile, 1 jaw open, 2 brows up, 3 puff
+/// cheeks), metres.
+pub fn face_displacement(k: usize, p: Vec3) -> Vec3 {
+    match k {
+        // Smile: the mouth's corners rise 16 cm and pull back; its middle stays.
+        0 => {
+            let f = front(p) * bump(p.y, MOUTH_Y, 0.12) * smoothstep(0.0, 0.3, p.x.abs());
+            Vec3::new(0.05 * p.x.signum(), 0.16, -0.05) * f
+        }
+        // Jaw open: everything below the middle of the mouth drops 25 cm (less towards the
+        // sides). Across the mouth the drop starts between its two dark rings, so the opening
+        // gapes; beside the mouth it ramps in over 45 cm of height, so the cheeks stretch
+        // smoothly instead of creasing along the mouth's line.
+        1 => {
+            let side = smoothstep(0.2, 0.4, p.x.abs());
+            let top = -0.43 + 0.15 * side;
+            let bottom = -0.47 - 0.25 * side;
+            let f = front(p) * smoothstep(top, bottom, p.y) * bump(p.x, 0.0, 0.4);
+            Vec3::new(0.0, -0.25, 0.03) * f
+        }
+        // Brows up: the brows and the band around them rise 12 cm.
+        2 => {
+            let f = front(p) * bump(p.y, BROW_Y, 0.1) * bump(p.x.abs(), 0.27, 0.2);
+            Vec3::new(0.0, 0.12, 0.02) * f
+        }
+        // Puff cheeks: the cheeks swell outwards and forwards.
+        3 => {
+            let f = front(p) * bump(p.y, -0.2, 0.18) * bump(p.x.abs(), 0.5, 0.18);
+            Vec3::new(p.x.signum() * 0.14, 0.0, 0.08) * f
+        }
+        _ => Vec3::ZERO,
+    }
+}
+
+/// The paint of base point `p` (linear RGBA): the mouth's opening, the lips, the brows, the
+/// cheeks' blush, or skin.
+pub fn face_color(p: Vec3) -> glam::Vec4 {
+    const SKIN: Vec3 = Vec3::new(0.85, 0.62, 0.48);
+    const LIPS: Vec3 = Vec3::new(0.55, 0.1, 0.1);
+    const OPENING: Vec3 = Vec3::new(0.1, 0.02, 0.02);
+    const BROW: Vec3 = Vec3::new(0.16, 0.08, 0.04);
+    const BLUSH: Vec3 = Vec3::new(0.9, 0.38, 0.38);
+    let on_front = p.z > 0.3;
+    let mouth = (p.y - MOUTH_Y).abs();
+    let c = if on_front && mouth < 0.03 && p.x.abs() < 0.24 {
+        OPENING
+    } else if on_front && mouth < 0.075 && p.x.abs() < 0.28 {
+        LIPS
+    } else if on_front && (p.y - BROW_Y).abs() < 0.03 && (0.1..0.44).contains(&p.x.abs()) {
+        BROW
+    } else {
+        let blush = 0.6 * front(p) * bump(p.y, -0.2, 0.1) * bump(p.x.abs(), 0.48, 0.1);
+        SKIN.lerp(BLUSH, blush)
+    };
+    c.extend(1.0)
+}
+
 /// Builds [`Face`].
 pub fn face() -> Face {
     // Closed (no seam, one vertex per pole): the normals are recomputed from the faces for every
     // target, and a UV sphere's seam would show as a crease down the middle of the face.
-    let mut mesh = crate::mesh::closed_sphere(1.0, 48, 32);
+    let mut mesh = crate::mesh::closed_sphere(1.0, FACE_SEGMENTS, FACE_RINGS);
     for p in &mut mesh.positions {
         *p *= Vec3::new(0.8, 1.0, 0.85);
     }
-    let bump = |v: f32, centre: f32, width: f32| (-((v - centre) / width).powi(2)).exp();
-    // Ramps from 0 to 1 with zero slope at both ends (a plain clamp leaves a crease in the
-    // shading where the displacement starts).
-    let smoothstep = |lo: f32, hi: f32, v: f32| {
-        let t = ((v - lo) / (hi - lo)).clamp(0.0, 1.0);
-        t * t * (3.0 - 2.0 * t)
-    };
-    let front = move |p: Vec3| smoothstep(0.2, 0.6, p.z);
-    let displace: [&dyn Fn(Vec3) -> Vec3; 4] = [
-        // Smile: the mouth's corners rise and pull back.
-        &|p| {
-            let f = front(p) * bump(p.y, -0.42, 0.12) * smoothstep(0.0, 0.35, p.x.abs());
-            Vec3::new(0.05 * p.x.signum(), 0.16, -0.05) * f
-        },
-        // Jaw open: the chin drops.
-        &|p| {
-            let f = front(p) * smoothstep(-0.35, -0.65, p.y) * bump(p.x, 0.0, 0.45);
-            Vec3::new(0.0, -0.3, 0.05) * f
-        },
-        // Brows up: a band above the eyes rises.
-        &|p| {
-            let f = front(p) * bump(p.y, 0.42, 0.1) * bump(p.x.abs(), 0.28, 0.2);
-            Vec3::new(0.0, 0.12, 0.02) * f
-        },
-        // Puff cheeks: the cheeks swell outwards.
-        &|p| {
-            let f = front(p) * bump(p.y, -0.2, 0.18) * bump(p.x.abs(), 0.5, 0.18);
-            Vec3::new(p.x.signum() * 0.14, 0.0, 0.08) * f
-        },
-    ];
     let mut targets = Vec::new();
     let mut pairs = Vec::new();
-    for d in displace {
-        let p: Vec<Vec3> = mesh.positions.iter().map(|&p| p + d(p)).collect();
+    for k in 0..FACE_TARGETS.len() {
+        let p: Vec<Vec3> = mesh
+            .positions
+            .iter()
+            .map(|&p| p + face_displacement(k, p))
+            .collect();
         let mut n = vec![Vec3::ZERO; p.len()];
         crate::raster::vertex_normals(&p, &mesh.indices, &mut n).expect("valid indices");
         pairs.push((p.clone(), n));
@@ -348,11 +408,13 @@ pub fn face() -> Face {
     crate::raster::vertex_normals(&mesh.positions, &mesh.indices, &mut base_normals)
         .expect("valid indices");
     mesh.normals = base_normals.clone();
+    let colors = mesh.positions.iter().map(|&p| face_color(p)).collect();
     let shapes = BlendShapes::from_targets(mesh.positions.clone(), base_normals, &pairs)
         .expect("the face's targets match its base");
     Face {
         shapes,
         mesh,
+        colors,
         names: FACE_TARGETS.to_vec(),
         targets,
     }

@@ -2,9 +2,11 @@
 //!
 //! [`FaceFigure`]: the procedural face with four targets and a weight per target, blended in the
 //! differential form and in the full form side by side (or one of them alone). The full form also
-//! weights the base, `1 − Σ wₖ` unless "base weight" is set by hand, so a wrong sum shows. The
-//! weights can be animated over time; [`FaceFigure::weight_curves`] gives their plot. Exercise
-//! 10.1 (the student's differential form) drives the differential head.
+//! weights the base: by hand (0 at the start, as when only the targets get weights), or
+//! automatically `1 − Σ wₖ`, which makes the two forms agree. Arrows on the differential head show
+//! each vertex's offset `Σ wₖ dₖ`. The weights can be animated over time;
+//! [`FaceFigure::weight_curves`] gives their plot. Exercise 10.1 (the student's differential form)
+//! drives the differential head.
 
 use super::{
     check_samples, compare_note, failure_note, finite, format_number, in_range, palette, Frame,
@@ -13,7 +15,7 @@ use super::{
 use crate::blend_shapes::{face, Face};
 use crate::exercises::run;
 use crate::figures::skinning::SkinnedMesh;
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Mat4, Vec3};
 
 const EXERCISE_FILE: &str = "src/exercises/blend_shapes.rs";
 const TOLERANCE: f32 = 1e-4;
@@ -44,11 +46,16 @@ pub enum Show {
 pub struct FaceFigure {
     face: Face,
     weights: [f32; 4],
-    /// The full form's base weight; `None`: `1 − Σ wₖ` (so the weights sum to 1).
-    base_weight: Option<f32>,
+    /// The full form's base weight when set by hand.
+    base_weight: f32,
+    /// The full form's base weight is `1 − Σ wₖ` (so the weights sum to 1), not `base_weight`.
+    base_auto: bool,
     show: Show,
     animate: bool,
+    show_deltas: bool,
     use_exercise: bool,
+    /// Every `DELTA_STRIDE`-th vertex with a visible offset: where the delta arrows start.
+    arrow_vertices: Vec<usize>,
     runner: Runner,
     /// The face blended in the differential form (the student's, with the exercise on).
     pub differential: SkinnedMesh,
@@ -68,7 +75,8 @@ impl Default for FaceFigure {
 }
 
 impl FaceFigure {
-    /// Both forms side by side, the weights animated.
+    /// Both forms side by side, the weights animated, the full form's base weight 0 by hand (so
+    /// the two heads differ from the start).
     pub fn new() -> Self {
         let face = face();
         let n = face.mesh.positions.len();
@@ -76,18 +84,22 @@ impl FaceFigure {
             let mut mesh = SkinnedMesh::default();
             mesh.positions = vec![Vec3::ZERO; n];
             mesh.normals = vec![Vec3::ZERO; n];
-            mesh.colors = vec![Vec4::new(0.85, 0.62, 0.48, 1.0); n];
+            mesh.colors = face.colors.clone();
             mesh
         };
+        let arrow_vertices = arrow_vertices(&face);
         Self {
             differential: blank(),
             full: blank(),
-            face,
-            weights: [1.0, 0.6, 0.8, 0.7],
-            base_weight: None,
+            weights: DEFAULT_WEIGHTS,
+            base_weight: 0.0,
+            base_auto: false,
             show: Show::Both,
             animate: true,
+            show_deltas: true,
             use_exercise: false,
+            arrow_vertices,
+            face,
             runner: DEFAULT_RUNNER,
             exercise_note: String::new(),
             blended: None,
@@ -100,6 +112,11 @@ impl FaceFigure {
 
     pub fn target_names(&self) -> Vec<String> {
         self.face.names.iter().map(|s| s.to_string()).collect()
+    }
+
+    /// The sliders' target weights (smile, jaw open, brows up, puff cheeks).
+    pub fn weights(&self) -> [f32; 4] {
+        self.weights
     }
 
     pub fn indices(&self) -> &[u32] {
@@ -136,23 +153,34 @@ impl FaceFigure {
         self.show
     }
 
-    /// The full form's base weight in [0, 1], or a negative number for "1 − Σ wₖ".
+    /// The full form's base weight by hand, in [0, 1] (used while the base weight is not
+    /// automatic).
     pub fn set_base_weight(&mut self, w: f32) -> Result<(), String> {
-        let w = finite("base weight", w)?;
-        self.base_weight = if w < 0.0 {
-            None
-        } else {
-            Some(in_range("base weight", w, 0.0, 1.0)?)
-        };
+        self.base_weight = in_range("base weight", w, 0.0, 1.0)?;
         Ok(())
+    }
+
+    /// `true`: the full form's base weight is `1 − Σ wₖ` (the weights sum to 1 and the two forms
+    /// agree); `false`: the one set by hand.
+    pub fn set_base_auto(&mut self, on: bool) {
+        self.base_auto = on;
     }
 
     pub fn set_animate(&mut self, on: bool) {
         self.animate = on;
     }
 
+    /// Arrows on the differential head from each sampled vertex's base position to its blended
+    /// one (its offset `Σ wₖ dₖ`).
+    pub fn set_show_deltas(&mut self, on: bool) {
+        self.show_deltas = on;
+    }
+
     pub fn set_use_exercise(&mut self, on: bool) {
         self.use_exercise = on;
+        // Blend again at the next frame: the differential head switches to (or from) the
+        // student's vertices.
+        self.blended = None;
     }
 
     /// The weights at `time_sec`: the sliders', or (animating) each pulsing between 0 and its
@@ -173,9 +201,25 @@ impl FaceFigure {
         ]
     }
 
-    /// The full form's base weight for target weights `w`: the one set by hand, or `1 − Σ w`.
+    /// The full form's base weight for target weights `w`: `1 − Σ w` when automatic, else the
+    /// one set by hand.
     pub fn base_weight_for(&self, w: &[f32; 4]) -> f32 {
-        self.base_weight.unwrap_or(1.0 - w.iter().sum::<f32>())
+        if self.base_auto {
+            1.0 - w.iter().sum::<f32>()
+        } else {
+            self.base_weight
+        }
+    }
+
+    /// The smallest and the largest full-form total `base + Σ w` over the loop (sampled at 97
+    /// times; both equal when the weights are still).
+    pub fn total_range(&self) -> (f32, f32) {
+        let total = |w: [f32; 4]| self.base_weight_for(&w) + w.iter().sum::<f32>();
+        (0..=96)
+            .map(|i| total(self.weights_at(LOOP_SECONDS * i as f32 / 96.0)))
+            .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), x| {
+                (lo.min(x), hi.max(x))
+            })
     }
 
     /// The plot of the weights over one loop: `[time (s), smile, jaw open, brows up, puff cheeks,
@@ -247,7 +291,7 @@ impl FaceFigure {
     }
 
     /// Blends the faces at `time_sec` and draws them (`meshes`: the GPU ids of the differential
-    /// and the full head); returns the note.
+    /// and the full head, both with the face's vertex colours); returns the note.
     pub fn draw(
         &mut self,
         frame: &mut Frame,
@@ -272,14 +316,16 @@ impl FaceFigure {
             shapes
                 .apply_full(&weights, &mut self.full.positions, &mut self.full.normals)
                 .map_err(|e| e.to_string())?;
+            // The student's vertices replace the reference's on the differential head; checked
+            // once per set of weights, like the blend.
+            self.exercise_note = if self.use_exercise {
+                self.run_exercise(&w)
+            } else {
+                String::new()
+            };
             self.differential.mark_dirty();
             self.full.mark_dirty();
             self.blended = Some(weights);
-        }
-        if self.use_exercise {
-            self.exercise_note = self.run_exercise(&w);
-        } else {
-            self.exercise_note.clear();
         }
 
         let (left, right) = self.head_positions();
@@ -293,23 +339,14 @@ impl FaceFigure {
             ));
         }
         if right.is_some() {
-            let verdict = if (total - 1.0).abs() > 1e-3 {
-                format!(
-                    ", not 1: every vertex's offset from the head's centre (the mesh's origin) is multiplied by {}",
-                    format_number(total)
-                )
-            } else if self.base_weight.is_none() {
-                " (the base weight is 1 − Σw): the same face as the differential form, by design; set the full form's base weight by hand to see it go wrong".into()
-            } else {
-                String::new()
-            };
             parts.push(format!(
-                "Full{}: base weight {} + targets {} = {}{}.",
+                "Full{}: base weight {}{} + targets {} = {}{}.",
                 if both { " (right)" } else { "" },
                 format_number(w0),
+                if self.base_auto { " (1 − Σw)" } else { "" },
                 format_number(sum),
                 format_number(total),
-                verdict
+                full_verdict(total)
             ));
         }
         parts.push(format!(
@@ -329,7 +366,7 @@ impl FaceFigure {
         frame.grid(8, 0.5);
         // The heads swing gently (±25° over the loop) so the shapes show from the side too.
         let yaw = 25f32.to_radians() * (std::f32::consts::TAU * t / LOOP_SECONDS).sin();
-        // The full form scales the face about its origin by `total`; the eyes are separate
+        // The full form scales the base about its origin by `total`; the eyes are separate
         // spheres, so they are scaled by hand to stay on the face.
         for (at, mesh, scale, name, differential) in [
             (left, meshes[0], 1.0, "differential".to_string(), true),
@@ -337,19 +374,32 @@ impl FaceFigure {
                 right,
                 meshes[1],
                 total,
-                format!("full (sum {})", format_number(total)),
+                format!("full (total {})", format_number(total)),
                 false,
             ),
         ] {
             let Some(at) = at else { continue };
             let head = Mat4::from_translation(at) * Mat4::from_rotation_y(yaw);
-            frame.mesh(mesh, head, Vec3::new(0.85, 0.62, 0.48));
+            frame.mesh_vertex_colors(mesh, head);
             for x in [-0.27f32, 0.27] {
                 let eye = head
                     * Mat4::from_scale(Vec3::splat(scale))
                     * Mat4::from_translation(Vec3::new(x, 0.22, 0.72))
                     * Mat4::from_scale(Vec3::splat(0.09));
                 frame.mesh(MeshId::SPHERE, eye, palette::DARK);
+            }
+            if differential && self.show_deltas {
+                // Each arrow runs from the vertex on the base head to where the blend puts it:
+                // its offset Σ wₖ dₖ, in the head's frame, lifted 3 cm off the base surface
+                // along its normal so the skin does not hide it.
+                let base = &self.face.mesh.positions;
+                let normals = &self.face.mesh.normals;
+                for &v in &self.arrow_vertices {
+                    let lift = ARROW_LIFT * normals[v];
+                    let from = head.transform_point3(base[v] + lift);
+                    let to = head.transform_point3(self.differential.positions[v] + lift);
+                    frame.arrow(from, to, palette::BLUE, 0.05);
+                }
             }
             if both {
                 let above = 1.3 * scale.abs().max(1.0);
@@ -365,23 +415,27 @@ impl FaceFigure {
         Ok(parts.join(" "))
     }
 
+    /// The vertices the delta arrows start from (see [`arrow_vertices`]).
+    pub fn arrow_vertices(&self) -> &[usize] {
+        &self.arrow_vertices
+    }
+
+    /// Runs the student's 10.1 on every vertex at weights `w` (their vertices go to the
+    /// differential head) and at [`PROBES`] on the vertex that the targets move most, and says
+    /// where it differs from the reference.
     fn run_exercise(&mut self, w: &[f32; 4]) -> String {
+        let n = self.face.mesh.positions.len();
         let mut worst: Option<(usize, Vec3, Vec3)> = None;
-        for v in 0..self.face.mesh.positions.len() {
+        for v in 0..n {
             let base = self.face.mesh.positions[v];
-            let targets: Vec<Vec3> = self.face.targets.iter().map(|t| t[v]).collect();
-            match run::differential_vertex(self.runner, base, targets, w.to_vec()) {
+            let targets = targets_of(&self.face, v);
+            match run::differential_vertex(self.runner, base, targets.clone(), w.to_vec()) {
                 Ok(p) => {
-                    let r = crate::blend_shapes::differential_vertex(
-                        base,
-                        &targets_of(&self.face, v),
-                        w,
-                    );
+                    let r = crate::blend_shapes::differential_vertex(base, &targets, w);
                     let e = (p - r).length();
                     if (e > TOLERANCE || e.is_nan()) && worst.is_none() {
                         worst = Some((v, p, r));
                     }
-                    // The differential head shows the student's vertices.
                     self.differential.positions[v] = if p.is_finite() { p } else { r };
                 }
                 Err(f) => {
@@ -389,23 +443,134 @@ impl FaceFigure {
                 }
             }
         }
-        match worst {
+        let here = match worst {
             None => format!(
-                "Your differential_vertex (10.1) matches the reference (differential form) at all {} vertices.",
-                self.face.mesh.positions.len()
+                "Your differential_vertex (10.1) matches the reference at all {n} vertices at the current weights."
             ),
             Some((v, s, r)) => {
                 compare_note(
                     "differential_vertex (10.1)",
-                    &format!("vertex {v}"),
+                    &format!("vertex {v} at the current weights"),
                     &s.to_array(),
                     &r.to_array(),
                     TOLERANCE,
                 )
                 .1
             }
+        };
+        // Probes: weights the sliders may not be at now, each a classic mistake's trap.
+        let v = self.probe_vertex();
+        let base = self.face.mesh.positions[v];
+        let all_targets = targets_of(&self.face, v);
+        let mut differing = Vec::new();
+        for (name, weights) in PROBES {
+            let targets = all_targets[..weights.len()].to_vec();
+            let r = crate::blend_shapes::differential_vertex(base, &targets, weights);
+            match run::differential_vertex(self.runner, base, targets, weights.to_vec()) {
+                Ok(p) if (p - r).length() <= TOLERANCE => {}
+                Ok(p) => differing.push((name, p, r)),
+                Err(f) => {
+                    return failure_note("exercise 10.1 differential_vertex", EXERCISE_FILE, &f)
+                }
+            }
+        }
+        if differing.is_empty() {
+            format!(
+                "{here} It also matches at the {} probe weights at vertex {v} ({}).",
+                PROBES.len(),
+                PROBES.map(|(name, _)| name).join(", ")
+            )
+        } else {
+            let (first, p, r) = differing[0];
+            format!(
+                "{here} At vertex {v} it differs for {} of the {} probe weights: {}; with {first}: yours ({}), reference ({}).",
+                differing.len(),
+                PROBES.len(),
+                differing.iter().map(|d| d.0).collect::<Vec<_>>().join(", "),
+                fmt_vec(p),
+                fmt_vec(r)
+            )
         }
     }
+
+    /// The vertex whose four deltas are longest together: where a wrong blend shows most.
+    pub fn probe_vertex(&self) -> usize {
+        (0..self.face.mesh.positions.len())
+            .max_by(|&a, &b| {
+                let size = |v: usize| -> f32 {
+                    self.face
+                        .targets
+                        .iter()
+                        .map(|t| (t[v] - self.face.mesh.positions[v]).length())
+                        .sum()
+                };
+                size(a).total_cmp(&size(b))
+            })
+            .unwrap_or(0)
+    }
+}
+
+/// The weights the figure starts with: smile, jaw open, brows up, puff cheeks.
+pub const DEFAULT_WEIGHTS: [f32; 4] = [1.0, 0.8, 0.6, 0.3];
+
+/// The probe weights exercise 10.1 is checked at besides the sliders' (each with as many targets
+/// as weights): the traps of the usual mistakes (the full form, a forgotten base, clamped
+/// weights, a loop over the wrong slice).
+pub const PROBES: [(&str, &[f32]); 6] = [
+    ("all weights 0", &[0.0, 0.0, 0.0, 0.0]),
+    ("weights summing to 0.5", &[0.2, 0.1, 0.1, 0.1]),
+    ("weights summing to 2", &[0.5, 0.5, 0.5, 0.5]),
+    ("a negative weight", &[-0.5, 0.0, 0.0, 0.0]),
+    ("a weight above 1", &[0.0, 1.5, 0.0, 0.0]),
+    ("no targets", &[]),
+];
+
+/// One in this many vertices (along each ring and across rings) carries a delta arrow.
+const DELTA_STRIDE: usize = 4;
+/// How far the delta arrows float above the base surface, metres.
+const ARROW_LIFT: f32 = 0.03;
+/// A target moves a vertex at least this far (metres) for it to carry an arrow.
+const DELTA_MIN: f32 = 0.02;
+
+/// The vertices that carry delta arrows: every [`DELTA_STRIDE`]-th one along and across the
+/// sphere's rings that some target moves at least [`DELTA_MIN`].
+fn arrow_vertices(face: &Face) -> Vec<usize> {
+    let segments = crate::blend_shapes::FACE_SEGMENTS as usize;
+    (1..face.mesh.positions.len().saturating_sub(1))
+        .filter(|&v| {
+            let (ring, segment) = ((v - 1) / segments, (v - 1) % segments);
+            ring % DELTA_STRIDE == 0 && segment % DELTA_STRIDE == 0
+        })
+        .filter(|&v| {
+            face.targets
+                .iter()
+                .any(|t| (t[v] - face.mesh.positions[v]).length() >= DELTA_MIN)
+        })
+        .collect()
+}
+
+/// What the note says about the full form's total `base + Σ w`.
+fn full_verdict(total: f32) -> String {
+    let s = format_number(total);
+    if (total - 1.0).abs() <= 1e-3 {
+        ": the weights sum to 1, so the full form is the differential form".into()
+    } else if total.abs() <= 1e-3 {
+        ", so the base vanishes: p = Σ wₖ dₖ, only the deltas are left, crumpled at the head's centre".into()
+    } else if total < 0.0 {
+        format!(
+            ", negative: p = ({s})·b₀ + Σ wₖ dₖ mirrors the base through the head's centre, so the head is turned inside out (its faces point inwards)"
+        )
+    } else {
+        format!(
+            ", not 1: p = {s}·b₀ + Σ wₖ dₖ, so the base head is scaled by {s} about its centre while the deltas keep their size"
+        )
+    }
+}
+
+fn fmt_vec(v: Vec3) -> String {
+    v.to_array()
+        .map(format_number)
+        .join(", ")
 }
 
 fn targets_of(face: &Face, v: usize) -> Vec<Vec3> {

@@ -31,6 +31,11 @@ impl BlendShapeFaceScene {
         self.scene.target_names()
     }
 
+    /// The sliders' target weights, in the order of `targetNames`.
+    pub fn weights(&self) -> Vec<f32> {
+        self.scene.weights().to_vec()
+    }
+
     /// Weight of target `k`, in [−0.5, 1.5].
     #[wasm_bindgen(js_name = setWeight)]
     pub fn set_weight(&mut self, k: f64, w: f32) -> Result<(), JsError> {
@@ -53,7 +58,7 @@ impl BlendShapeFaceScene {
         self.scene.weight_curves(samples).map_err(js)
     }
 
-    /// The full form's base weight in [0, 1], or negative for "1 − Σ wₖ".
+    /// The full form's base weight by hand, in [0, 1].
     #[wasm_bindgen(js_name = setBaseWeight)]
     pub fn set_base_weight(&mut self, w: f32) -> Result<(), JsError> {
         self.scene.set_base_weight(w).map_err(js)
@@ -64,6 +69,18 @@ impl BlendShapeFaceScene {
     #[wasm_bindgen(js_name = viewFit)]
     pub fn view_fit(&self) -> Vec<f32> {
         self.scene.view_fit().to_vec()
+    }
+
+    /// `true`: the full form's base weight is 1 − Σ wₖ; `false`: the one set by hand.
+    #[wasm_bindgen(js_name = setBaseAuto)]
+    pub fn set_base_auto(&mut self, on: bool) {
+        self.scene.set_base_auto(on);
+    }
+
+    /// Arrows from each sampled vertex's base position to its blended one.
+    #[wasm_bindgen(js_name = setShowDeltas)]
+    pub fn set_show_deltas(&mut self, on: bool) {
+        self.scene.set_show_deltas(on);
     }
 
     #[wasm_bindgen(js_name = setAnimate)]
@@ -86,13 +103,15 @@ impl BlendShapeFaceScene {
             Some(ids) => ids,
             None => {
                 let indices = self.scene.indices().to_vec();
+                // Both heads carry the face's paint (lips, mouth, brows, cheeks) per vertex.
+                let colors = self.scene.differential.colors.clone();
                 let mut create = |positions: &[glam::Vec3]| {
                     let data = MeshData {
                         positions: positions.to_vec(),
                         normals: vec![glam::Vec3::Y; positions.len()],
                         indices: indices.clone(),
                     };
-                    viewer.renderer.create_mesh(&viewer.gpu, &data, None)
+                    viewer.renderer.create_mesh(&viewer.gpu, &data, Some(&colors))
                 };
                 let ids = [
                     create(&self.scene.differential.positions),

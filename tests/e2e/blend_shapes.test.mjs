@@ -1,5 +1,6 @@
-// Lesson 10's face figure in Chromium: at the defaults the two heads are the same and the note
-// says why; with the full form's base weight set by hand and a total far above 1, both heads stay
+// Lesson 10's face figure in Chromium: at the defaults the two heads differ (the full form's base
+// weight is 0 by hand) and the automatic base weight makes them agree, as the note says; with the
+// full form's base weight set by hand and a total far above 1, both heads stay
 // whole in view, side by side (checked by pixels: two separate heads on the row through their
 // centres, neither touching the canvas's edges).
 import { test } from 'node:test';
@@ -51,14 +52,18 @@ test('lesson 10: identical heads at the defaults, both in view at a total far ab
     const fig = '#fig-face';
     const canvas = page.locator(`${fig} .stage canvas`);
     await canvas.scrollIntoViewIfNeeded();
-    // The defaults: the same face twice, and the text and the note say it is meant.
+    // The defaults: base weight 0 by hand, so the full form's total is the targets' sum, not 1;
+    // "automatic" makes the weights sum to 1 and the note says the two forms agree.
     const note = () => page.locator('#face-note').textContent();
-    assert.match(await note(), /the same face as the differential form, by design; set the full form's base weight by hand/);
-    assert.match(await page.locator('main').textContent(), /the two heads start out identical, and that is by design/);
-    // A total of 7: base weight 1 by hand, every target at 1.5, still.
+    assert.match(await note(), /Full \(right\): base weight 0\.000 \+ targets [\d.]+ = [\d.]+, not 1: p = /);
     await page.locator(`${fig} .timeline .play`).click();
+    await setControl(page, fig, 'automatic: 1 − Σw', true);
+    await frames(page, 5);
+    assert.match(await note(), /\(1 − Σw\) \+ targets [\d.]+ = 1\.000: the weights sum to 1, so the full form is the differential form/);
+    await setControl(page, fig, 'automatic: 1 − Σw', false);
+    // A total of 7: base weight 1 by hand, every target at 1.5, still.
     await setControl(page, fig, 'animate the weights', false);
-    await setControl(page, fig, 'full: base weight', 1);
+    await setControl(page, fig, 'base weight (by hand)', 1);
     for (const name of ['smile', 'jaw open', 'brows up', 'puff cheeks']) await setControl(page, fig, name, 1.5);
     await frames(page, 10);
     assert.match(await note(), /= 7(\.0+)?, not 1/);
