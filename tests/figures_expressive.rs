@@ -437,3 +437,20 @@ fn the_scale_verdict_checks_a_squash_too() {
     let note = follow.draw(&mut Frame::default(), 0.5).unwrap();
     assert!(note.contains("and at 3 more inputs (one step from x = (0, 0, 0)"), "{note}");
 }
+
+#[test]
+fn just_past_critical_damping_the_tip_no_longer_swings_past() {
+    // "raise the damping past critical (24.5 at k = 150) and the wobble after each stop
+    // disappears": during the hold after the move right the tip stays behind the base.
+    for c in [25.0, 30.0, 60.0] {
+        let mut scene = FollowThrough::new();
+        scene.set(150.0, c, 6.0).unwrap();
+        let rows = scene.sample_tip(401).unwrap();
+        let past = rows
+            .iter()
+            .filter(|r| r[0] > 1.0 && r[0] < 2.0)
+            .map(|r| r[2] - r[1])
+            .fold(f32::MIN, f32::max);
+        assert!(past < 0.01, "c = {c}: the tip swings {past} m past the base");
+    }
+}

@@ -67,6 +67,7 @@ if (jumpViewer) {
   const stretchPlot = new Plot(document.getElementById('jump-stretch-plot'), {
     title: 'Stretch of the ball with the principles', xLabel: 'time (s)', yLabel: 'stretch s (ratio)',
     series: ['stretch s', 'plain (rigid, 1)'], colors: [cssVar('--orange'), cssVar('--grey')], minSpan: 0.5,
+    widths: [4, 1.5], // at rest the stretch is 1: wide under the plain line, both stay visible
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
