@@ -73,14 +73,18 @@ impl BlendShapeFaceScene {
 
     /// `true`: the full form's base weight is 1 − Σ wₖ; `false`: the one set by hand.
     #[wasm_bindgen(js_name = setBaseAuto)]
-    pub fn set_base_auto(&mut self, on: bool) {
+    pub fn set_base_auto(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_base_auto(on);
+        Ok(())
     }
 
     /// Arrows from each sampled vertex's base position to its blended one.
     #[wasm_bindgen(js_name = setShowDeltas)]
-    pub fn set_show_deltas(&mut self, on: bool) {
+    pub fn set_show_deltas(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
         self.scene.set_show_deltas(on);
+        Ok(())
     }
 
     #[wasm_bindgen(js_name = setAnimate)]
@@ -111,7 +115,9 @@ impl BlendShapeFaceScene {
                         normals: vec![glam::Vec3::Y; positions.len()],
                         indices: indices.clone(),
                     };
-                    viewer.renderer.create_mesh(&viewer.gpu, &data, Some(&colors))
+                    viewer
+                        .renderer
+                        .create_mesh(&viewer.gpu, &data, Some(&colors))
                 };
                 let ids = [
                     create(&self.scene.differential.positions),
