@@ -118,7 +118,7 @@ if (aimViewer) {
     title: 'Angle from straight ahead', xLabel: 'time (s)', yLabel: 'angle (°)',
     series: ['to the target', 'head turn'], colors: ['#d62728', '#1f6fd6'], minSpan: 10, height: 170,
     // The target's line wide underneath, the head's narrow on top: inside the cone the head's
-    // line lies exactly on the target's, and at one width the red was hidden under the blue.
+    // line lies exactly on the target's, and at one width the red would hide under the blue.
     widths: UNDER_AND_OVER,
   });
   const replot = () => plot.setData(columns(scene.plotSamples(), 3));

@@ -38,7 +38,7 @@ if (blendViewer) {
 const locoViewer = await lesson.figure('#fig-locomotion');
 if (locoViewer) {
   // Far enough back that the whole 4 m track stays in a 650 px wide canvas (1600 x 1000 page):
-  // at 4.2 m the character near the track's +z end touched the left edge.
+  // at 4.2 m the character near the track's +z end would touch the left edge.
   locoViewer.setCamera(0, 0.8, 0, 4.8, 1.2, 0.25);
   const scene = new LocomotionScene();
   const [lo, hi] = scene.speedRange();

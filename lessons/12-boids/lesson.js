@@ -63,11 +63,11 @@ if (flockViewer) {
   const gui = new GUI({ container: document.querySelector('#fig-flock .panel'), title: 'Flock' });
   gui.add(p, 'count', 20, 3000, 10).name('boids');
   // The three weights in one open folder, the radii and the field of view in a closed one: the
-  // Try this below sends the reader to the alignment and separation weights (each rule had its
-  // own folder, and only cohesion's started open), and with all three rule folders open the
-  // panel was taller than the canvas at 1600 x 1000. The two folders take turns (opening one
-  // closes the other), so the panel stays beside the canvas when the first Try this sends the
-  // reader to the field of view (both open, it ran 80 px below the canvas).
+  // Try this below sends the reader to the alignment and separation weights, so all three are
+  // in view at once, and a folder per rule, all open, would make the panel taller than the
+  // canvas at 1600 x 1000. The two folders take turns (opening one closes the other), so the
+  // panel stays beside the canvas when the first Try this sends the reader to the field of
+  // view (both open, it would run 80 px below the canvas).
   const weights = gui.addFolder('rule weights');
   const radii = gui.addFolder('rule radii (m), field of view');
   for (const [name, rule] of Object.entries(rules)) {
@@ -115,7 +115,7 @@ if (flockViewer) {
   // Step time against N: one timed step per frame, so the page stays responsive. Each point is
   // the fastest of REPEATS steps: a step is never faster than its work allows, while a busy
   // machine (another tab, a garbage collection) only ever makes one slower, so the minimum is
-  // the figure least disturbed by load (the median of 3 let one loaded moment bend the curve).
+  // the figure least disturbed by load (a median of 3 lets one loaded moment bend the curve).
   const plot = new Plot(document.getElementById('flock-plot'), {
     title: 'One step of the flock: grid vs naive search', xLabel: 'boids N (count)', yLabel: 'step time (ms)',
     series: ['grid', 'naive'], colors: [cssVar('--z-axis'), cssVar('--x-axis')], minSpan: 0.1,
@@ -135,8 +135,8 @@ if (flockViewer) {
     const search = ['grid', 'naive'][sweep.search];
     if (sweep.repeat === 0 && sweep.search === 0) scene.prepareTiming(n);
     // The page's clock ticks in 0.1 ms (performance.now() is coarsened without cross-origin
-    // isolation), and a step of 100 or 200 boids takes less: one step read 0 ms, and the first
-    // points of the plot sat on the axis. So a timing repeats the step for at least 2 ms.
+    // isolation), and a step of 100 or 200 boids takes less: one step can read 0 ms, which would
+    // put the first points of the plot on the axis. So a timing repeats the step for at least 2 ms.
     let k = 0;
     let elapsed = 0;
     const t0 = performance.now();

@@ -46,8 +46,9 @@ for (const backend of ['webgl2', 'webgpu']) {
       await frames(page);
       const note = await interp.locator('.exercise-note').textContent();
       assert.match(note, /slerp panicked at src\//, note);
-      // Each verdict in its own colour (the exercise-note rule, later in the style sheet with the
-      // same specificity, painted all three beige): red for a panic or a difference, green for a match.
+      // Each verdict in its own colour (the exercise-note rule has the same specificity, so placed
+      // after the verdicts it would paint all three beige): red for a panic or a difference, green
+      // for a match.
       const background = (locator) => locator.evaluate((e) => getComputedStyle(e).backgroundColor);
       assert.equal(await background(interp.locator('.exercise-note')), 'rgb(253, 232, 232)', 'a panic is red');
       assert.match(note, /index out of bounds/, note);

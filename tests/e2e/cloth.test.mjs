@@ -26,7 +26,7 @@ test('lesson 13: the drape stops timing an exploded cloth', async () => {
     await page.waitForFunction(() => /Measured here: [\d.]+ ms per frame \(40 × 40, XPBD/.test(document.querySelector('#drape-timing').textContent), null, { timeout: 60_000 });
     // The flags pushed past the limit: the mass-spring flag explodes, and the plots' scales
     // follow the XPBD flag (its stretch stays under 15 %; the mass-spring flag's last samples
-    // before it exploded pass 70 % and squashed the XPBD curve onto a line).
+    // before it explodes pass 70 % and would squash the XPBD curve onto a line).
     const flag = '#fig-flag';
     await page.locator(flag).scrollIntoViewIfNeeded();
     await page.locator(`${flag} .lil-controller`, { hasText: 'push past the stability limit' }).locator('button').click();

@@ -1,12 +1,12 @@
-// Lessons 07 and 08 in Chromium, the review's points that live in the pages: the aim figure
-// keeps its target in view over the sliders' whole range (each slider typed past its end, so
-// it sits at its end), dragging lesson 07's target leaves the sliders at two decimals (not an
-// f32's float noise), and the blend figure keeps a hand waved over the head inside a short,
-// wide canvas (800 x 600: no figure pixel on the canvas's top rows at any time of the wave).
-// Then the second review's: lesson 07's IK figures each stand in the section they illustrate,
-// and the aim plot's red line shows where the blue one lies on it; lesson 08's locomotion figure
-// has its two plots with a playhead that follows the timeline, and its note no longer counts
-// the snap-back of root motion left in the pose as sliding.
+// Lessons 07 and 08 in Chromium, the points that only the pages show: the aim figure keeps
+// its target in view over the sliders' whole range (each slider typed past its end, so it sits
+// at its end), dragging lesson 07's target leaves the sliders at two decimals (not an f32's
+// float noise), and the blend figure keeps a hand waved over the head inside a short, wide
+// canvas (800 x 600: no figure pixel on the canvas's top rows at any time of the wave).
+// Lesson 07's IK figures each stand in the section they illustrate, and the aim plot's red line
+// shows where the blue one lies on it; lesson 08's locomotion figure has its two plots with a
+// playhead that follows the timeline, and its note does not count the snap-back of root motion
+// left in the pose as sliding.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
@@ -29,7 +29,7 @@ async function open(context, lesson) {
 /** Scrubs `timeline` (its range runs 0-1000 over its `duration` seconds) to `t` seconds. */
 async function scrub(page, timeline, t, duration) {
   const range = page.locator(`${timeline} input[type=range]`);
-  // The range is in thousandths of the duration: filling in seconds set 2 s as 0.016 s.
+  // The range is in thousandths of the duration: a value in seconds would set 2 s as 0.016 s.
   await range.fill(String(Math.round((t / duration) * 1000)));
   await range.dispatchEvent('input');
   await frames(page);

@@ -1,12 +1,11 @@
-// Lessons 11 and 12 in Chromium, the review's points: the squash figure's two labels never
-// overlap (at both page sizes, over its timeline), the free-fall plot shows signed heights (the
-// two Euler lines on either side of zero) and its note says which side each is on, the flock
-// note gives the steering arrow's scale, and a plot fits inside its box (its last tick label
-// was cut off). Then the second review's: a fountain at 1000/s beside explosions never fills the
-// system (one burst took every slot) and the note says how long its particles live; the bouncing
-// balls stay in the picture at e = 1, μ = 0; the boid rules' three labels stay apart; the flock's
-// rule weights are in view with a panel no taller than the canvas; the flock's order plot is
-// drawn from its samples.
+// Lessons 11 and 12 in Chromium: the squash figure's two labels never overlap (at both page
+// sizes, over its timeline), the free-fall plot shows signed heights (the two Euler lines on
+// either side of zero) and its note says which side each is on, the flock note gives the
+// steering arrow's scale, and a plot fits inside its box (its last tick label included); a
+// fountain at 1000/s beside explosions never fills the system (a burst never takes every slot)
+// and the note says how long its particles live; the bouncing balls stay in the picture at
+// e = 1, μ = 0; the boid rules' three labels stay apart; the flock's rule weights are in view
+// with a panel no taller than the canvas; the flock's order plot is drawn from its samples.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, frames, serveDist, openPage, setControl, pixelStats } from './browser.mjs';
@@ -65,7 +64,8 @@ test('lesson 12: the flock note gives the steering arrow scale', async () => {
     const note = await page.locator('#flock-note').textContent();
     assert.match(note, /purple arrow, 1 m per m\/s²/, note);
     // The step-time plot fits inside its box's padding, so its last x tick (1,600) is not cut
-    // off by the figure's edge (the shell sized plots by clientWidth, padding included).
+    // off by the figure's edge (the shell sizes plots by the box's content width, not its
+    // clientWidth, which includes the padding).
     const fit = await page.evaluate(() => {
       const box = document.getElementById('flock-plot');
       const style = getComputedStyle(box);
@@ -111,8 +111,8 @@ test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; 
       const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', w, h);
       const fig = '#fig-emitters';
       await page.locator(fig).scrollIntoViewIfNeeded();
-      // The explosion has its own slider; at 1000/s in "both" mode with a 6 s lifetime the
-      // system used to fill (one burst was 2 × the rate, all 2000 slots).
+      // The explosion has its own slider, so at 1000/s in "both" mode with a 6 s lifetime a
+      // burst does not scale with the rate (2 × the rate would take all 2000 slots).
       await setControl(page, fig, 'emitter', 'both');
       await setControl(page, fig, 'fountain rate', 1000);
       await setControl(page, fig, 'lifetime', 6);
@@ -126,7 +126,7 @@ test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; 
         assert.match(note, /A stream of 1,000 particles\/s living 6\.00 s would need about 6,000 slots .* its particles live 0\.98 s/, note);
       }
       // Bouncing at e = 1, μ = 0: the blue balls that the sphere throws sideways stay in the
-      // picture (they left it within the 6 s timeline; now a glass box bounces them back).
+      // picture: a glass box bounces them back (without it they leave within the 6 s timeline).
       const bounce = '#fig-bounce';
       await page.locator(bounce).scrollIntoViewIfNeeded();
       await setControl(page, bounce, 'restitution', 1);
@@ -153,8 +153,8 @@ test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; 
 });
 
 test('lesson 11: explode now on a paused figure shows its sparks at once', async () => {
-  // The button's onChange re-applied every control and replayed the run, which stopped short of
-  // the press: a paused figure showed nothing until played.
+  // A paused figure shows the sparks of a press at once, not only once played (a replay that
+  // stopped short of the press would hide them until then).
   const context = await launch('webgl2');
   try {
     const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', 800, 600);
@@ -173,8 +173,8 @@ test('lesson 11: explode now on a paused figure shows its sparks at once', async
 });
 
 test('a typed value a number box cannot take says what became of it (lesson 11, the student re-review)', async () => {
-  // lil-gui kept the old value for text that is not a number and clamped a number outside the
-  // slider's range, both without a word; the shell now says so under the control, until the
+  // lil-gui keeps the old value for text that is not a number and clamps a number outside the
+  // slider's range, both without a word; the shell says so under the control, until the
   // next accepted value. A second "explode now" at the same paused moment says why it did nothing.
   const context = await launch('webgl2');
   try {
@@ -230,8 +230,7 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
   try {
     for (const [w, h] of [[800, 600], [1600, 1000]]) {
       const { page, problems } = await open(context, '/lessons/12-boids/?backend=webgl2', w, h);
-      // The rules figure's three labels do not cover each other (at the defaults "alignment"
-      // sat on "cohesion").
+      // The rules figure's three labels do not cover each other, at the defaults too.
       const rules = '#fig-rules';
       await frames(page, 4);
       const boxes = await labelBoxes(page, rules);
@@ -244,7 +243,7 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
         }
       }
       // The flock's weights for all three rules are visible (the Try this names alignment and
-      // separation, whose folders started closed), and the panel is no taller than the canvas.
+      // separation), and the panel is no taller than the canvas.
       const flock = '#fig-flock';
       await page.locator(flock).scrollIntoViewIfNeeded();
       for (const name of ['cohesion', 'alignment', 'separation']) {
@@ -258,7 +257,7 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
       }, flock);
       if (fit.beside) assert.ok(fit.panel <= fit.canvas + 1, `${w}x${h}: panel below the canvas ${JSON.stringify(fit)}`);
       // The first Try this sends the reader into the closed radii folder, by the name it has in
-      // the panel. Opening it closes the weights (both open, the panel ran 80 px below the
+      // the panel. Opening it closes the weights (both open, the panel would run 80 px below the
       // canvas at 1600 x 1000), and the field of view is there; opening the weights closes it.
       const radiiName = 'rule radii (m), field of view';
       assert.ok((await page.locator('.callout', { hasText: radiiName }).count()) > 0, 'no text names the radii folder');
@@ -305,8 +304,8 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
 });
 
 test('lesson 11 on WebGPU: the GPU-stepped particles are drawn as atlas sprites, like the CPU ones', async () => {
-  // The review saw solid discs in GPU mode beside the CPU's smoke puffs. The compute shader now
-  // writes the renderer's sprite rows (atlas frame by age), drawn with the CPU figure's atlas.
+  // GPU mode draws smoke puffs like the CPU's, not solid discs: the compute shader writes the
+  // renderer's sprite rows (atlas frame by age), drawn with the CPU figure's atlas.
   const context = await launch('webgpu');
   try {
     const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgpu', 800, 600);

@@ -1,6 +1,6 @@
-// Lesson 09 in Chromium, the review's points: the heat legends (shown while a joint is painted,
-// naming it, in the meshes' colours), the character's falloff slider range, what the area plot's
-// dashed line follows (the note says), and the glTF figure's note after a rejected file.
+// Lesson 09 in Chromium: the heat legends (shown while a joint is painted, naming it, in the
+// meshes' colours), the character's falloff slider range, what the area plot's dashed line
+// follows (the note says), and the glTF figure's note after a rejected file.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync } from 'node:fs';
