@@ -363,8 +363,8 @@ impl BlendFigure {
             &self.model,
             Mat4::IDENTITY,
             |j| Self::weight_color(self.joint_weights[j]),
-            // Coloured by the weight alone (not over the clothes' colours, which hid a teal
-            // tint on the blue shirt and trousers): the same weight, the same colour.
+            // Coloured by the weight alone (not over the clothes' colours, which would hide a
+            // teal tint on the blue shirt and trousers): the same weight, the same colour.
             |_| 1.0,
         );
         Ok(note)
@@ -448,7 +448,7 @@ const FOOTPRINT_SAMPLES: usize = 60;
 /// The locomotion figure's timeline, seconds: then the walk starts again from the start.
 pub const LOCOMOTION_LOOP_SEC: f32 = 8.0;
 /// The y ranges of the locomotion figure's plots, fixed so that lines at different speeds
-/// compare and a small slide reads as small (an autoscaled 2 cm looked like a metre):
+/// compare and a small slide reads as small (autoscaled, 2 cm would look like a metre):
 /// `[phase gap from, to (cycles), slide from, to (cm)]`. The gap lies in [0, 0.5]; the largest
 /// slide at any speed is 395 cm (not synchronised, just below run weight ½, where the walk still
 /// decides which foot is planted while the run's half of the pose swings it). A little below 0,
@@ -604,8 +604,8 @@ impl LocomotionFigure {
         } else {
             // The naive blend: both clips at the same clock time, each looping on its own. Each
             // clip's cycle count and clip-local time come from one division, so they agree at
-            // a loop (the clip's own wrap and ⌊t / d⌋ can differ in f32 there, which put the
-            // character a whole cycle ahead for that instant).
+            // a loop (the clip's own wrap and ⌊t / d⌋ can differ in f32 there, which would put
+            // the character a whole cycle ahead for that instant).
             let [ka, kb] = [0, 1].map(|i| (time_sec / self.motion[i].duration_sec).floor());
             let local = |k: f32, d: f32| (time_sec - k * d).clamp(0.0, d * 0.999_999);
             let (ta, tb) = (

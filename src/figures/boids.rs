@@ -40,7 +40,7 @@ pub const FLOCK_LAWS: [ForceLaw; 3] = [
     ForceLaw::None,
     ForceLaw::InversePower { a1: 0.4, a2: 0.04 },
     // a2 = a1: the net law repels within x0 / 2 and attracts most near x0, as the lesson says
-    // (with a2 = 3 a1 it repelled at x0 and barely attracted anywhere).
+    // (with a2 = 3 a1 it would repel at x0 and barely attract anywhere).
     ForceLaw::Gaussian {
         a1: 1.0,
         a2: 1.0,
@@ -474,8 +474,8 @@ impl FlockFigure {
         let count = found.len();
         self.neighbours = found;
         // Its steering acceleration now, with the current weights (visible while paused too), at
-        // STEER_ARROW_M_PER_MS2: a quarter metre per m/s² drew the usual 0.3–0.5 m/s² as a few
-        // centimetres, lost under the neighbour lines.
+        // STEER_ARROW_M_PER_MS2: a quarter metre per m/s² would draw the usual 0.3–0.5 m/s² as a
+        // few centimetres, lost under the neighbour lines.
         let steer = self.flock.steering_of(&self.params, h);
         let ph = self.flock.positions[h];
         let shown = (STEER_ARROW_M_PER_MS2 * steer).clamp_length_max(STEER_ARROW_MAX_M);
@@ -517,8 +517,8 @@ impl FlockFigure {
 }
 
 /// How the student's three rules compare with the reference at the figure's boid, naming the
-/// vectors that differ (a flat list of nine numbers left the reader to find which rule was
-/// wrong) and saying which ones match.
+/// vectors that differ (a flat list of nine numbers would leave the reader to find which rule
+/// is wrong) and saying which ones match.
 fn rules_note(yours: &[Vec3], reference: &[Vec3; 3]) -> String {
     const NAMES: [&str; 3] = ["cohesion", "alignment", "separation"];
     if yours.len() != 3 {
@@ -847,8 +847,8 @@ impl RulesFigure {
                     continue;
                 }
                 // On the plane y = 0 with the grid lines and the boids (GRID_ORIGIN.y is −0.5:
-                // squares drawn from it sat half a metre below the grid and, in perspective,
-                // looked up to a cell away from the boid near the edges).
+                // squares drawn from it would sit half a metre below the grid and, in
+                // perspective, look up to a cell away from the boid near the edges).
                 let lo = Vec3::new(
                     GRID_ORIGIN.x + i as f32 * s,
                     0.0,

@@ -79,8 +79,8 @@ pub struct EmitterFigure {
     mode: usize,
     sort: bool,
     fade: bool,
-    /// Particles one explosion asks for (its own slider: it used to be twice the fountain's
-    /// rate, so at 1000/s one burst took all 2000 slots).
+    /// Particles one explosion asks for (its own slider, not tied to the fountain's rate: twice
+    /// that rate, at 1000/s, would take all 2000 slots in one burst).
     burst_size: usize,
     /// The lifetime slider's value, seconds (the emitters get at most
     /// [`EmitterFigure::lifetime_sec`]).
@@ -107,7 +107,7 @@ pub struct EmitterFigure {
 /// A sprite's half side over its particle's radius. The atlas's young puff is dense out to about
 /// a third of its frame's half side (`smoke_opacity`: radius 0.5 at birth, its edge fading from
 /// 0.35 of that), so a square 2.6 times the disc shows a puff about the disc's size, growing as
-/// it ages (at 1.8 the puffs were specks).
+/// it ages (at 1.8 the puffs are specks).
 pub const SPRITE_SCALE: f32 = 2.6;
 
 /// Steps between two automatic explosions (2.5 s).
@@ -173,8 +173,8 @@ impl EmitterFigure {
 
     /// Marks the run for a replay from the start when a setter changed something. The page
     /// re-applies every control after any of them moves, the "explode now" button included:
-    /// a value set again unchanged must not replay (a replay of a paused figure used to stop
-    /// short of the press, so its sparks did not show).
+    /// a value set again unchanged must not replay, or every press of the button would replay
+    /// the run.
     fn changed(&mut self, changed: bool) {
         self.dirty |= changed;
     }
@@ -566,9 +566,9 @@ impl EmitterFigure {
             if self.sprite_texture.is_some() {
                 let life = sys.ages[i] / sys.lifetimes[i].max(1e-6);
                 // The atlas's frames thin out with age on their own: the colour's alpha, which
-                // falls from 1 to 0 over the life, applied as well made every puff past mid-life
-                // nearly invisible. Its square root falls later (0.71 at mid-life, 0.5 at three
-                // quarters) and still reaches 0 at death.
+                // falls from 1 to 0 over the life, applied as well would make every puff past
+                // mid-life nearly invisible. Its square root falls later (0.71 at mid-life, 0.5
+                // at three quarters) and still reaches 0 at death.
                 color.w = color.w.max(0.0).sqrt();
                 frame.sprites.push(SpriteInstance {
                     center: sys.positions[i].to_array(),
@@ -718,7 +718,7 @@ impl FreeFallFigure {
     }
 
     /// The whole steps inside the timeline: the plot's last sample is what the figure shows at
-    /// its end (a step past [`FREE_FALL_DURATION`] was plotted but never drawn).
+    /// its end (a step past [`FREE_FALL_DURATION`] would be plotted but never drawn).
     fn steps(&self) -> usize {
         (FREE_FALL_DURATION / self.dt_sec + 1e-3).floor() as usize
     }
@@ -871,8 +871,8 @@ impl FreeFallFigure {
 const BALL_RADIUS: f32 = 0.08;
 /// The bounce figure's glass box: walls at x, z = ±`BOX_HALF_M` metres. A ball that leaves the
 /// sphere sideways bounces back off them with the same restitution and friction as the floor;
-/// without them, at e = 1 and μ = 0 nothing slows a ball's horizontal speed and it left the view
-/// for good.
+/// without them, at e = 1 and μ = 0 nothing slows a ball's horizontal speed and it would leave
+/// the view for good.
 pub const BOX_HALF_M: f32 = 1.5;
 /// How high the box's edges are drawn, metres (the walls themselves have no top; no ball rises
 /// above its drop height, 3.1 m, since a bounce never adds energy).
@@ -931,8 +931,8 @@ impl BounceFigure {
     /// The camera the page starts with, as `Viewer::setCamera`'s arguments: target x, y, z
     /// (metres), distance (metres), yaw and pitch (radians). It frames every ball at its drop
     /// height (up to 3.1 m), the sphere and the floor under them at the page's canvas sizes (a
-    /// test checks it); the old camera, at 0.9 m and 4.5 m away, began with the highest balls
-    /// above the canvas.
+    /// test checks it); a camera aimed 0.9 m up from 4.5 m away would start with the highest
+    /// balls above the canvas.
     pub fn view(&self) -> [f32; 6] {
         [0.0, 1.4, 0.0, 6.4, 0.3, 0.2]
     }
@@ -1109,7 +1109,7 @@ impl BounceFigure {
             frame.point(mark, 0.05, palette::ORANGE);
             frame.line(self.positions[0], mark, palette::ORANGE);
             // Leftwards from the mark: the orange ball falls left of the sphere, and a label
-            // running right covered it.
+            // running right would cover it.
             frame.label_left(
                 mark + Vec3::new(0.0, 0.15, 0.0),
                 format!("floor in {} s", format_number(t)),
@@ -1296,7 +1296,8 @@ impl SquashFigure {
         let offset = |x: f32| Vec3::new(-1.2, 0.0, x);
         // The rigid ball, in front: at the page's camera it is the left one, so its short label
         // ends before the squash ball's long one begins (labels run rightwards from their
-        // anchors; with the long label on the left, "squash and stretch" ran into "rigid").
+        // anchors; with the long label on the left, "squash and stretch" would run into
+        // "rigid").
         let p = self.plain.position + offset(0.5 * SQUASH_SPACING);
         frame.mesh(
             MeshId::SPHERE,

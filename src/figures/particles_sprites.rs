@@ -129,8 +129,8 @@ impl SmokeFigure {
         }
         if self.sort {
             // Every square faces the camera: sorted by depth along the view, the order the
-            // depth test sees (by distance from the eye, 23 overlapping pairs at 4 s in the
-            // page's view came out in the wrong order, each a hard-edged notch).
+            // depth test sees (sorted by distance from the eye, 23 overlapping pairs at 4 s in
+            // the page's view would come out in the wrong order, each a hard-edged notch).
             let forward = (target - eye).normalize_or_zero();
             sort_back_to_front(&mut self.order, &self.positions, eye, forward);
         } else {

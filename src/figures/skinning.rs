@@ -603,7 +603,7 @@ pub enum Method {
 /// The character's falloff slider, metres: from nearly rigid parts (a crease at each joint) to
 /// blend zones that reach along the whole part. Past about 0.06 m every vertex already mixes its
 /// part's joints nearly evenly, so a longer range would only add slider travel that changes
-/// little (it used to reach 0.2 m, and its last three quarters barely showed).
+/// little (up to 0.2 m, the last three quarters of its travel would barely show).
 pub const HUMAN_FALLOFF_RANGE: [f32; 2] = [0.005, 0.06];
 
 /// The built-in human with a skinned body, playing one of its clips.

@@ -582,7 +582,7 @@ impl HierarchyFigure {
             self.hierarchy.names()[self.selected].clone(),
             palette::DARK,
         );
-        // Halfway down the thigh (at the hip it sat on the wrist's label when the arm hangs).
+        // Halfway down the thigh (at the hip it would sit on the wrist's label when the arm hangs).
         let knee = self
             .hierarchy
             .parents()
