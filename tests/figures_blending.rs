@@ -217,9 +217,9 @@ fn feet_slide_only_without_synchronisation_and_root_motion_moves_the_character()
 #[test]
 fn unsynchronised_travel_never_jumps_a_cycle_at_a_loop() {
     // Each clip's cycle count and clip-local time come from one division: a clip's own wrap
-    // (rem_euclid) and the cycle count (floor of t / d) used to disagree in f32 at some loop
-    // times, so the character jumped a whole cycle (about 1 m) for that instant and the
-    // footprints' slide counted the jump (97 cm for the run alone, not synchronised).
+    // (rem_euclid) and the cycle count (floor of t / d) can disagree in f32 at some loop times,
+    // which would make the character jump a whole cycle (about 1 m) for that instant and the
+    // footprints' slide count the jump (97 cm for the run alone, not synchronised).
     let mut l = LocomotionFigure::new();
     let mut frame = Frame::default();
     let (lo, hi) = l.speed_range();
@@ -260,9 +260,9 @@ fn unsynchronised_travel_never_jumps_a_cycle_at_a_loop() {
 #[test]
 fn body_parts_are_coloured_by_the_weight_of_b_alone() {
     // The figure's colours say which parts take clip B and how much: every part with the same
-    // weight has the same colour, grey for A only and teal for B only. They used to be a 70 %
-    // teal tint over each part's own colour, which the blue shirt and trousers hid (the legs
-    // taking B looked like the shirt taking nothing).
+    // weight has the same colour, grey for A only and teal for B only. A 70 % teal tint over
+    // each part's own colour would not do: the blue shirt and trousers hide it (the legs taking
+    // B would look like the shirt taking nothing).
     use inbetween::draw::palette;
     let mut f = BlendFigure::new();
     f.set_clips("walk", "wave").unwrap();
@@ -298,8 +298,8 @@ fn body_parts_are_coloured_by_the_weight_of_b_alone() {
 fn the_synchronised_try_this_is_what_the_note_says() {
     // Lesson 08's "Try this" under Figure 2: at the default speed the note's slide is a few
     // centimetres synchronised and most of a metre (at times over a metre) not synchronised.
-    // (It read a few millimetres when only the lowest 5 mm of each stance counted as planted:
-    // about a seventh of the samples. The clips' contacts plant a foot for its whole stance.)
+    // (The clips' contacts plant a foot for its whole stance; counting only the lowest 5 mm of
+    // each stance as planted, about a seventh of the samples, it would read a few millimetres.)
     let mut l = LocomotionFigure::new();
     let mut frame = Frame::default();
     let times: Vec<f32> = (0..12).map(|k| 1.5 + 0.53 * k as f32).collect();
@@ -340,9 +340,9 @@ fn each_clip_alone_leaves_its_planted_feet_in_place() {
     // cancel the planted foot's step at every key, and what is left is the in-betweens (the
     // root moves in a line between keys, the foot along an arc): about 1.7 cm in 1.5 s for the
     // walk and 5 to 7 cm for the faster run, counted over the whole stance. (Counting only
-    // the lowest 5 mm of each stance, the walk read 0.3 cm.) With the root keys cancelling only
-    // the stance foot's forward step, not its sideways one, the walk slid 28 cm and the run
-    // 70 cm in 1.5 s.
+    // the lowest 5 mm of each stance, the walk would read 0.3 cm.) Root keys that cancelled only
+    // the stance foot's forward step, not its sideways one, would let the walk slide 28 cm and
+    // the run 70 cm in 1.5 s.
     let mut l = LocomotionFigure::new();
     let mut frame = Frame::default();
     let (lo, hi) = l.speed_range();
@@ -366,9 +366,9 @@ fn each_clip_alone_leaves_its_planted_feet_in_place() {
 #[test]
 fn the_snap_back_at_a_loop_is_not_counted_as_sliding() {
     // With root motion left in the pose the character jumps back a cycle's travel at every loop.
-    // The note's slide counted that jump as the planted foot sliding (about 77 cm at the default
-    // speed, synchronised); it is measured where the travel has taken the feet now, so it is
-    // the same with root motion on or off, and the note gives the jump on its own.
+    // The note's slide does not count that jump as the planted foot sliding (it would add about
+    // 77 cm at the default speed, synchronised): it is measured where the travel has taken the
+    // feet, so it is the same with root motion on or off, and the note gives the jump on its own.
     let mut l = LocomotionFigure::new();
     let mut frame = Frame::default();
     for synchronised in [true, false] {
@@ -482,7 +482,7 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
 #[test]
 fn the_plots_fixed_ranges_hold_every_speed() {
     // The plots' y ranges are fixed (so the Try this's "both slide lines lie flat" at the walk's
-    // speed is what the reader sees; autoscaled, a 2 cm slide filled the plot). They must hold
+    // speed is what the reader sees; autoscaled, a 2 cm slide would fill the plot). They must hold
     // the samples at every speed, and not be so large that the largest slide looks small.
     let [gap_lo, gap_hi, slide_lo, slide_hi] = LOCOMOTION_PLOT_RANGES;
     let mut l = LocomotionFigure::new();
@@ -514,8 +514,9 @@ fn the_plots_fixed_ranges_hold_every_speed() {
 #[test]
 fn footprints_and_slide_follow_the_clips_contacts() {
     // Which foot is planted comes from the travelling clips' contacts, blended as the poses
-    // are, not from the ankle's height: it used to be "within 5 mm of 6 cm", which a stance
-    // ankle rising to 8.7 cm left for about a seventh of the samples at mid speeds.
+    // are, not from the ankle's height: a rule such as "within 5 mm of 6 cm" would lose a stance
+    // ankle that rises to 8.7 cm, and plant a foot for only about a seventh of the samples at
+    // mid speeds.
     use inbetween::skeleton::{blend_contacts, synchronised_cycle, RootMotion};
     let (skeleton, _) = human::simple_human();
     let clip = |i| {
@@ -569,9 +570,9 @@ fn footprints_and_slide_follow_the_clips_contacts() {
             assert!(l.footprints().iter().all(|p| p.y.abs() < 0.01));
         }
     }
-    // The slide counts the whole stance: the walk alone, played where the height rule
-    // planted few samples, now has a footprint for every sample and a slide of a centimetre or
-    // two (the in-betweens), against the few millimetres the height rule saw.
+    // The slide counts the whole stance: the walk alone, at a speed where a height rule would
+    // plant few samples, has a footprint for every sample and a slide of a centimetre or two
+    // (the in-betweens), not the few millimetres a height rule would see.
     l.set_speed(lo).unwrap();
     l.set_synchronised(true);
     l.draw(&mut frame, 3.1).unwrap();

@@ -58,7 +58,7 @@ fn the_flock_draws_every_boid_and_the_highlighted_ones_neighbours() {
     let note = scene.draw(&mut frame);
     assert_eq!(frame.points.len(), 300);
     assert!(note.contains("300 boids, grid search"), "{note}");
-    // The steering cap with its unit (it read "the force is at most 6.000").
+    // The steering cap with its unit (not a bare "the force is at most 6.000").
     assert!(note.contains("capped at 6.000 m/s²"), "{note}");
     scene.set_leader(true);
     scene.set_predator(true);
@@ -72,8 +72,8 @@ fn the_flock_draws_every_boid_and_the_highlighted_ones_neighbours() {
 #[test]
 fn the_steering_arrow_is_long_enough_to_see() {
     // The purple arrow from the orange boid is STEER_ARROW_M_PER_MS2 metres per m/s² (at most
-    // STEER_ARROW_MAX_M): at the defaults the boid steers at a few tenths of a m/s², which the
-    // old quarter-metre scale drew a few centimetres long, hidden under the neighbour lines.
+    // STEER_ARROW_MAX_M): at the defaults the boid steers at a few tenths of a m/s², which a
+    // quarter-metre scale would draw a few centimetres long, hidden under the neighbour lines.
     let mut scene = FlockFigure::new();
     for t in [0.5f32, 1.0, 2.0] {
         scene.advance_to(t).unwrap();
@@ -244,7 +244,7 @@ fn the_rules_figure_says_what_the_students_code_does() {
 #[test]
 fn the_flock_note_counts_neighbours_in_the_right_number() {
     // Narrow the view step by step: somewhere the orange boid sees exactly one neighbour, and
-    // the note says "1 neighbour" (it said "1 neighbours"); every count agrees with its noun.
+    // the note says "1 neighbour" (not "1 neighbours"); every count agrees with its noun.
     let mut scene = FlockFigure::new();
     let mut seen_one = false;
     for fov in (0..=360).rev().step_by(2) {
@@ -429,9 +429,9 @@ fn fly_to(f: &mut FlockFigure, time_sec: f32) {
 #[test]
 fn the_flock_try_this_holds_when_done_in_mid_flight() {
     // The reader moves the controls while the flock flies, not only at its start. Minimum speed
-    // to 0 at any moment: the mean speed is under a tenth of the top speed 5 s later ("within
-    // five seconds"; at 4 s it was still 0.13 after a change at 2 s). Then back to 1.2 with the
-    // leader: φ past 0.8 within five seconds.
+    // to 0 at any moment: the mean speed is under a tenth of the top speed 5 s later (the text
+    // says "within five seconds", not four). Then back to 1.2 with the leader: φ past 0.8
+    // within five seconds.
     for t0 in [2.0f32, 5.0, 8.0] {
         let mut f = FlockFigure::new();
         fly_to(&mut f, t0);
@@ -476,8 +476,8 @@ fn the_flock_try_this_holds_when_done_in_mid_flight() {
 #[test]
 fn the_box_holds_the_flock_loosely() {
     // The text: a spring pulls back any boid that leaves the box, so boids overshoot the walls,
-    // some by more than a metre, before they turn (it said the flock stays inside the box, while
-    // at 2.5 s 80% of the boids were outside it). None escapes.
+    // some by more than a metre, before they turn (so the text does not say the flock stays
+    // inside the box). None escapes.
     let mut f = FlockFigure::new();
     let b = f.params().bounds;
     let mut farthest: f32 = 0.0;
@@ -498,7 +498,7 @@ fn the_force_laws_do_what_the_text_says() {
     use inbetween::boids::ForceLaw;
     let mut f = FlockFigure::new();
     // The Gaussian law (a1 = a2 = 1, k = 2, x0 = 0.7 m): repels at contact, changes sign at
-    // exactly x0 / 2, attracts most a little beyond x0. With a2 = 3 it repelled at x0.
+    // exactly x0 / 2, attracts most a little beyond x0. With a2 = 3 it would repel at x0.
     f.set_law("Gaussian").unwrap();
     let ForceLaw::Gaussian { a1, a2, k, x0 } = f.params().law else {
         panic!("{:?}", f.params().law)
@@ -544,9 +544,9 @@ fn the_force_laws_do_what_the_text_says() {
 #[test]
 fn the_rules_figures_cell_square_lies_on_the_grid_around_the_boid() {
     // The orange square (the boid's cell) and the teal block are drawn on the grid's plane
-    // y = 0, and the orange one holds the boid. They were drawn from the grid origin's y = −0.5,
-    // half a metre below the grid lines: in the page's perspective, near a corner, the orange
-    // square looked a whole cell away from the boid.
+    // y = 0, and the orange one holds the boid. Drawn from the grid origin's y = −0.5, half a
+    // metre below the grid lines, the orange square would look a whole cell away from the boid
+    // near a corner in the page's perspective.
     let orange = Vec3::new(0.791298, 0.254152, 0.0);
     for (x, z, size) in [
         (0.0, 0.0, 1.0),

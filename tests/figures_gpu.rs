@@ -364,9 +364,9 @@ mod figures {
 
     #[test]
     fn a_paused_gpu_press_survives_a_parameter_change() {
-        // The lesson 11 review: in GPU mode, paused, "explode now" then a real change of a
-        // slider replayed the run up to the paused step and dropped the press made there (the
-        // CPU run spawned it). The replay now hands it over last, as a step of 0 s.
+        // In GPU mode, paused, "explode now" then a real change of a slider replays the run up
+        // to the paused step; the press made there is handed over last, as a step of 0 s, so it
+        // spawns as in the CPU run instead of being dropped.
         let mut f = EmitterFigure::new();
         let run = |f: &mut EmitterFigure, t: f32| {
             let mut calls = Vec::new();

@@ -332,9 +332,9 @@ fn the_pole_steers_the_analytic_solver_only() {
 
 #[test]
 fn the_aim_target_circles_once_per_timeline_loop() {
-    // The caption says the target circles once every 8 s, the timeline's length: it used to
-    // turn at 0.9 rad/s (once every 7 s) and bob at 1.3 rad/s, so it jumped when the timeline
-    // looped from 8 s back to 0.
+    // The caption says the target circles once every 8 s, the timeline's length, so it does
+    // not jump when the timeline loops from 8 s back to 0 (as a target turning once every 7 s
+    // would).
     let a = AimFigure::new();
     let period = inbetween::figures::ik::AIM_PERIOD_SEC;
     assert_eq!(period, 8.0);

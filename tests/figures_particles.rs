@@ -68,11 +68,11 @@ fn from_emitter(scene: &EmitterFigure, index: u16) -> (usize, usize) {
 
 #[test]
 fn a_fast_fountain_keeps_flowing_beside_the_explosions() {
-    // At 1000 particles/s in "both" mode one explosion used to ask for 2 × 1000 particles, all
-    // 2000 slots: the fountain stopped until the sparks died, and a fountain living 10 s filled
-    // every slot and then spurted only as particles died. Now every step of the fountain emits
-    // its 1000 / 60 particles, each emitter stays inside its share, the system is never full,
-    // and an explosion is the burst size it asks for.
+    // At 1000 particles/s in "both" mode, with particles living 10 s: every step of the fountain
+    // emits its 1000 / 60 particles, each emitter stays inside its share, the system is never
+    // full, and an explosion is the burst size it asks for. (A burst of 2 × the rate would take
+    // all 2000 slots and stop the fountain until the sparks die; a fountain allowed to fill every
+    // slot would then spurt only as particles die.)
     let mut scene = EmitterFigure::new();
     scene.set_mode("both").unwrap();
     scene.set_rate(1000.0).unwrap();
@@ -170,7 +170,7 @@ fn an_explosion_gets_what_is_left_of_its_slots_and_a_press_spawns_once() {
         "{note}"
     );
     // A press while paused spawns at once, and only once: playing on from there gives what a
-    // replay from the start gives (the step it was pressed before spawned it a second time).
+    // replay from the start gives (the step it was pressed before does not spawn it again).
     let mut live = EmitterFigure::new();
     live.draw(&mut Frame::default(), eye, Vec3::ZERO, 1.0)
         .unwrap();
@@ -427,8 +427,8 @@ fn the_squash_ball_keeps_its_volume() {
 #[test]
 fn the_bounce_camera_starts_with_every_ball_and_the_sphere_in_view() {
     // The page's bounce canvas at 800 x 600 and 1600 x 1000 (760 x 380 and 650 x 420 CSS px).
-    // Every ball is dropped from up to 3.1 m; the old camera (0.9 m up, 4.5 m away) cut the
-    // highest ones off.
+    // Every ball is dropped from up to 3.1 m; a camera aimed 0.9 m up from 4.5 m away would cut
+    // the highest ones off.
     let mut scene = BounceFigure::new();
     scene.advance_to(0.0).unwrap();
     let view = scene.view();
@@ -461,8 +461,9 @@ fn the_squash_figures_labels_never_overlap() {
     // (www/style.css: 600 0.8rem, so about 7.7 px a character and 15 px high). At the page's
     // camera, both canvas sizes (760 x 380 at 800 x 600, 650 x 420 at 1600 x 1000), every frame
     // of the 4 s timeline and the sliders' extremes, the two boxes stay apart and on the canvas
-    // (the balls drift +x by 2.4 m over the timeline: at the old target, x = −0.6 m, the long
-    // label ran off the 650 px canvas's right edge); with "squash and stretch" on the left ball they overlapped "rigid".
+    // (the balls drift +x by 2.4 m over the timeline: with the camera's target at x = −0.6 m
+    // the long label would run off the 650 px canvas's right edge); with "squash and stretch"
+    // on the left ball it would run into "rigid".
     let boxes = |frame: &Frame, view: [f32; 6], w: f32, h: f32| {
         frame
             .labels
@@ -541,8 +542,8 @@ fn the_squash_plot_follows_the_figure() {
 
 #[test]
 fn at_e_1_and_mu_0_the_balls_stay_in_their_box_and_in_view() {
-    // Without walls nothing slows a ball that the sphere sent sideways at e = 1, μ = 0: it left
-    // the canvas within the 6 s timeline. The glass box's walls bounce it back, exactly (no
+    // Without walls nothing slows a ball that the sphere sent sideways at e = 1, μ = 0: it would
+    // leave the canvas within the 6 s timeline. The glass box's walls bounce it back, exactly (no
     // energy is gained or lost at e = 1), so every ball and the box stay in view at both canvas
     // sizes for as long as the figure simulates.
     let mut scene = BounceFigure::new();
@@ -618,10 +619,9 @@ fn apply_unchanged(scene: &mut EmitterFigure, mode: &str) {
 
 #[test]
 fn explode_now_while_paused_shows_its_sparks_at_once() {
-    // The review pressed "explode now" on a paused figure and nothing appeared: the button's
-    // onChange re-applied every control, each setter marked the run dirty, and the replay stopped
-    // short of the step the press belongs to. Setting a value it already has is no change, and a
-    // replay spawns the presses of the step it stops at.
+    // "Explode now" on a paused figure shows its sparks at once, although the button's onChange
+    // re-applies every control: setting a value it already has is no change (no replay), and a
+    // replay spawns the presses of the step it stops at (it does not stop short of them).
     let eye = Vec3::new(0.0, 2.0, 6.0);
     let mut scene = EmitterFigure::new();
     scene.set_spread_deg(11.0).unwrap();
@@ -649,8 +649,8 @@ fn explode_now_while_paused_shows_its_sparks_at_once() {
 
 #[test]
 fn the_free_fall_plot_ends_where_the_timeline_does() {
-    // At dt = 0.3 s the plot ran to 1.5 s, a fifth step that the figure, whose timeline ends at
-    // 1.3 s, never draws. The last sample is now the figure's state at the end of the timeline.
+    // The last sample is the figure's state at the end of the timeline: at dt = 0.3 s a fifth
+    // step, at 1.5 s, lies past the timeline's 1.3 s and is never drawn, so it is not plotted.
     for dt in [0.01, 0.05, 0.07, 0.1, 0.25, 0.3] {
         let mut scene = FreeFallFigure::new();
         scene.set_dt(dt).unwrap();
@@ -830,10 +830,10 @@ fn the_bounce_plot_follows_the_orange_ball_and_its_energy_never_grows() {
 
 #[test]
 fn emitter_sprites_stay_visible_until_the_second_half_of_their_life() {
-    // The lesson 11 review found the fountain and the sparks faint at the defaults: the atlas
-    // thins each puff out with age, and the colour's alpha, falling over the whole life, was
-    // applied on top. Sprites now take its square root, which falls later, and are 2.6 times
-    // the disc (it was 1.8).
+    // The fountain and the sparks show clearly at the defaults: the atlas thins each puff out
+    // with age, so sprites do not take the colour's alpha, falling over the whole life, on top as
+    // it is (puffs past mid-life would be faint), but its square root, which falls later; and
+    // they are 2.6 times the disc (at 1.8 they are specks).
     let eye = Vec3::new(0.0, 2.0, 6.0);
     let mut scene = EmitterFigure::new();
     scene.set_mode("both").unwrap();
@@ -867,8 +867,8 @@ fn emitter_sprites_stay_visible_until_the_second_half_of_their_life() {
 
 #[test]
 fn a_second_press_at_the_same_moment_says_why_it_did_nothing() {
-    // The review pressed "explode now" twice on a paused figure: the note still said
-    // "Explosions set off by hand: 1." and nothing said why the second press did nothing.
+    // "Explode now" twice on a paused figure: the note says why the second press did nothing,
+    // not only "Explosions set off by hand: 1.".
     let eye = Vec3::new(0.0, 2.0, 6.0);
     let mut scene = EmitterFigure::new();
     scene

@@ -154,9 +154,9 @@ fn the_note_counts_one_puff_in_the_singular() {
 #[test]
 fn sorted_puffs_that_overlap_on_screen_are_drawn_deepest_first_in_the_pages_view() {
     // The page's camera (lesson.js: setCamera(-0.4, 1.1, 0, 6.0, 0.25, 0.15)). Sorted by their
-    // distance from the eye, 23 overlapping pairs at 4 s were drawn nearer first, and each cut
-    // a hard-edged notch into the puff behind it: the squares face the camera, so the depth
-    // test compares view depths, and the sort must use those.
+    // distance from the eye, 23 overlapping pairs at 4 s would be drawn nearer first, each
+    // cutting a hard-edged notch into the puff behind it: the squares face the camera, so the
+    // depth test compares view depths, and the sort must use those.
     let camera = OrbitCamera::from_view([-0.4, 1.1, 0.0, 6.0, 0.25, 0.15]);
     let view = camera.view();
     for t in [1.0, 2.0, 4.0, 5.0, 7.5] {

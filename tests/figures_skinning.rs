@@ -312,8 +312,8 @@ fn every_quarter_of_the_characters_falloff_slider_changes_the_heat_map() {
             steps.iter().cloned().fold(0.0, f32::max),
         );
         // A quarter of the slider moves the coloured weights by at least 0.03 on average, and
-        // no quarter is a dead end next to the others (the old 0.005..0.2 m range: the last
-        // quarter changed nine times less than the first).
+        // no quarter is a dead end next to the others (over 0.005..0.2 m the last quarter would
+        // change nine times less than the first).
         assert!(
             least > 0.03,
             "{joint}: quarters of the slider change {steps:?}"

@@ -93,8 +93,8 @@ fn unreachable_targets_are_reported_with_the_remaining_distance() {
 fn ccd_and_fabrik_reach_reachable_targets_and_keep_lengths() {
     let mut rng = Rng::new(5);
     // Both must reach every reachable target. CCD needs more iterations: its last corrections
-    // are tiny rotations (which glam's `from_rotation_arc` used to drop, stalling it millimetres
-    // short; `ik::rotation_arc` keeps them).
+    // are tiny rotations (which glam's `from_rotation_arc` drops, stalling it millimetres short;
+    // `ik::rotation_arc` keeps them).
     for (solver, iterations, tolerance, share) in
         [(fabrik as Solver, 200, 1e-3, 1.0), (ccd, 2000, 1e-3, 1.0)]
     {

@@ -274,17 +274,17 @@ fn planted_path(skeleton: &Skeleton, clip: &Clip) -> f32 {
 
 #[test]
 fn a_planted_foot_holds_still_sideways_too() {
-    // The travelling clips' root keys cancel the stance foot's whole horizontal step. They used
-    // to cancel its forward (z) step only, and the pelvis's yaw swung the planted foot sideways:
-    // the walk alone slid 5.5 cm per cycle (5 cm in the figure's 1.5 s), out and back, so
-    // a test of where a stance ends against where it began did not see it.
+    // The travelling clips' root keys cancel the stance foot's whole horizontal step. Root keys
+    // that cancelled its forward (z) step only would leave the pelvis's yaw swinging the planted
+    // foot sideways: the walk alone would slide 5.5 cm per cycle (5 cm in the figure's 1.5 s),
+    // out and back, which a test of where a stance ends against where it began does not see.
     let (skeleton, walk, run) = clips();
     for (name, clip) in [("walk", &walk), ("run", &run)] {
         let path = planted_path(&skeleton, clip);
         // What is left is the in-betweens: the root moves linearly between keys, the foot along
         // an arc. Over the whole stance (the clip's contacts) that is 2.3 cm per cycle for the
         // walk and 7.1 cm for the run, whose foot moves faster; with the sideways step left in,
-        // the walk's was 20 cm. (Counting only the lowest 5 mm of each stance, about 1 cm.)
+        // the walk's would be 20 cm. (Counting only the lowest 5 mm of each stance, about 1 cm.)
         let bound = if name == "walk" { 0.03 } else { 0.09 };
         assert!(
             path < bound,
@@ -366,7 +366,7 @@ fn each_foot_is_planted_for_half_the_cycle_one_at_a_time() {
         }
         // Why contacts, not a height: the planted ankle does not stay at one height. It sits
         // 6 cm up with the foot flat and rises by about 3 cm as the pelvis bobs and the leg
-        // swings under it, so "within 5 mm of 6 cm" planted the walk's feet for a seventh
+        // swings under it, so "within 5 mm of 6 cm" would plant the walk's feet for a seventh
         // of the samples at mid speeds.
         assert!(
             (0.05..0.065).contains(&heights[0]) && heights[1] > 0.08,

@@ -201,7 +201,7 @@ fn on_sphere(angle_deg: f32, gap: f32, mu: f32) -> (Sphere, Surfaces, Vec3) {
 
 #[test]
 fn a_ball_too_slow_to_bounce_slides_off_the_sphere() {
-    // The lesson 11 review: at e = 0 a ball that landed on the sphere's side stayed there (each
+    // At e = 0 a ball that lands on the sphere's side does not stay there (as it would if each
     // step spent its eight impacts at t = 0 without moving). Dropped 1 cm onto a point 30° from
     // the top it slides down, leaves the sphere and lands on the floor beside it, without
     // friction and with μ = 0.3 (tan 30° = 0.58 is steeper than the friction holds). It never
@@ -281,7 +281,7 @@ proptest! {
         for _ in 0..200 {
             ballistic_step(&mut p, &mut v, &mut resting, dt, &s);
             prop_assert!(p.y >= 0.0, "below the floor: {}", p);
-            // Nor inside the sphere (a slow bounce off it used to fall back in unseen).
+            // Nor inside the sphere (a slow bounce off it must not fall back in unseen).
             let r = (p - s.spheres[0].center).length();
             prop_assert!(r >= 0.4 - 1e-4, "inside the sphere: r = {}", r);
             // Rounding of the roots may add a hair; physics may not add energy.
@@ -339,7 +339,7 @@ fn dead_particles_are_recycled_without_growing_the_arrays() {
             .zip(&system.lifetimes)
             .all(|(a, l)| a < l));
     }
-    // 200/s for 2–3 s: about 500 alive at once, so slots were reused many times over.
+    // 200/s for 2–3 s: about 500 alive at once, so slots are reused many times over.
     assert!(max_alive > 350 && max_alive <= 500, "{max_alive}");
     assert_eq!(system.positions.capacity(), cap);
     assert_eq!(system.positions.len(), 500);

@@ -53,14 +53,14 @@ fn counts_and_indices_are_whole_numbers_never_wrapped() {
         assert!(m.contains("whole number"), "{bad}: {m}");
     }
     assert_eq!(scene.sample_motion(3.0).unwrap().len(), 12);
-    // 2^32 used to wrap to joint 0.
+    // 2^32 is not joint 0 (a conversion that wraps would make it so).
     let mut h = HierarchyScene::new();
     let before = h.joint_angles_deg(0.0).unwrap();
     assert!(h
         .set_joint_angles_deg(4_294_967_296.0, 45.0, 0.0, 0.0)
         .is_err());
     assert_eq!(h.joint_angles_deg(0.0).unwrap(), before);
-    // 2^32 + 5 used to be a capacity of 5.
+    // 2^32 + 5 is not a capacity of 5.
     assert!(
         message(check_emitter(4_294_967_301.0, 10.0, 1.0, 2.0).unwrap_err())
             .contains("whole number")
@@ -76,7 +76,7 @@ fn lists_of_names_and_indices_are_checked_element_by_element() {
     let m = message(check_skeleton("ab".into(), vec![-1.0, 0.0], rest.clone()).unwrap_err());
     assert!(m.contains("names must be an array of strings"), "{m}");
     let names: js_sys::Array = ["a", "b"].iter().map(|&n| JsValue::from(n)).collect();
-    // 4294967295 used to become -1, a second root.
+    // 4294967295 is not -1 (a second root).
     let m = message(
         check_skeleton(
             names.clone().into(),
@@ -90,7 +90,7 @@ fn lists_of_names_and_indices_are_checked_element_by_element() {
         check_skeleton(names.into(), vec![-1.0, 0.0], rest).unwrap(),
         "ok"
     );
-    // NaN used to be joint 0.
+    // NaN is not joint 0.
     let m = message(
         check_skin_weights(vec![f64::NAN, 0.0, 0.0, 0.0], vec![1.0, 0.0, 0.0, 0.0], 2.0)
             .unwrap_err(),
