@@ -287,35 +287,86 @@ function webgpuAvailable() {
 
 /**
  * An HTML layer over the canvas with one element per label of the viewer's last frame (labels are
- * anchored at 3D points by the scene; the viewer projects them). Returns the per-frame updater.
+ * anchored at 3D points by the scene; the viewer projects them). The shell measures each label's
+ * text once and the viewer's layout pass (src/draw/layout.rs) says where each box goes, so that no
+ * two overlap and all stay inside the canvas; a label moved away from its anchor gets a leader
+ * line, one with no room is hidden. Returns the per-frame updater.
  */
 function labelLayer(canvas, viewer) {
   const layer = document.createElement('div');
   layer.className = 'labels';
   layer.setAttribute('aria-hidden', 'true');
   canvas.after(layer);
+  const leaders = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
+  leaders.classList.add('leaders');
+  layer.append(leaders);
+  // Each text's box in CSS pixels, measured the first time it is shown.
+  const sizes = new Map();
   let shown = '';
   return () => {
     const json = viewer.labelsJson();
-    if (json === shown) return;
-    shown = json;
+    const key = `${json}|${canvas.clientWidth}x${canvas.clientHeight}`;
+    if (key === shown) return;
+    shown = key;
     const labels = JSON.parse(json);
     layer.style.left = `${canvas.offsetLeft}px`;
     layer.style.top = `${canvas.offsetTop}px`;
     layer.style.width = `${canvas.clientWidth}px`;
     layer.style.height = `${canvas.clientHeight}px`;
-    while (layer.children.length < labels.length) layer.append(document.createElement('span'));
-    [...layer.children].forEach((el, i) => {
-      const label = labels[i];
-      el.hidden = !label || !label.visible;
-      if (el.hidden) return;
+    const spans = [...layer.querySelectorAll('span')];
+    while (spans.length < labels.length) {
+      const span = document.createElement('span');
+      layer.append(span);
+      spans.push(span);
+    }
+    if (sizes.size > 1000) sizes.clear(); // texts that change every frame (a clock) come and go
+    const measured = [];
+    labels.forEach((label, i) => {
+      const el = spans[i];
       el.textContent = label.text;
       el.style.color = label.color;
-      // A left label ends at its anchor (its own width back from it).
-      el.classList.toggle('left', label.left);
-      el.style.transform = `translate(${label.x.toFixed(1)}px, ${label.y.toFixed(1)}px)${label.left ? ' translateX(-100%)' : ''}`;
+      let size = sizes.get(label.text);
+      if (!size) {
+        el.hidden = false;
+        const r = el.getBoundingClientRect();
+        size = [r.width, r.height];
+        if (r.width > 0) sizes.set(label.text, size);
+      }
+      measured.push(...size);
     });
+    const placed = JSON.parse(viewer.placeLabels(new Float32Array(measured)));
+    const lines = [];
+    spans.forEach((el, i) => {
+      const p = placed[i];
+      el.hidden = !p?.shown;
+      if (el.hidden) return;
+      el.style.transform = `translate(${p.x.toFixed(1)}px, ${p.y.toFixed(1)}px)`;
+      if (p.lx !== undefined) {
+        lines.push(`<line x1="${p.lx}" y1="${p.ly}" x2="${p.tx}" y2="${p.ty}" stroke="${labels[i].color}"/>`
+          + `<circle cx="${p.lx}" cy="${p.ly}" r="2" fill="${labels[i].color}"/>`);
+      }
+    });
+    leaders.innerHTML = lines.join('');
   };
+}
+
+/**
+ * The figure's "frame all" button (and a double-click on a figure that declares what must stay
+ * in view): the camera goes back to the view that fits the figure, keeping the reader's orbit.
+ */
+function frameAllButton(canvas, viewer) {
+  const button = document.createElement('button');
+  button.type = 'button';
+  button.className = 'frame-all';
+  button.textContent = '⤢';
+  button.title = 'frame all: show the whole figure again (or double-click it)';
+  button.setAttribute('aria-label', 'frame all');
+  button.addEventListener('click', () => viewer.frameAll());
+  canvas.after(button);
+  // Only figures that declare their view: a double-click means something else in an editor.
+  canvas.addEventListener('dblclick', () => {
+    if (viewer.declaresView) viewer.frameAll();
+  });
 }
 
 /**
@@ -351,6 +402,7 @@ async function createFigure(selector) {
   badge.title = viewer.adapterName;
   document.body.dataset.backend = viewer.backend;
   attachCameraControls(canvas, viewer);
+  frameAllButton(canvas, viewer);
   const resize = () => {
     const r = canvas.getBoundingClientRect();
     const dpr = window.devicePixelRatio || 1;

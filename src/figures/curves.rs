@@ -464,7 +464,7 @@ impl KeyframesScene {
             }
         } else {
             let points: Vec<Vec3> = path.iter().map(|&p| at(p)).collect();
-            frame.polyline(&points, PATH_COLOR);
+            frame.wide_polyline(&points, PATH_COLOR, crate::draw::CURVE_PX);
         }
         for &g in ghosts {
             frame.point(at(g), 0.045, GHOST_COLOR);

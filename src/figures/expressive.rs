@@ -250,7 +250,7 @@ impl Spacing {
         let path: Vec<Vec3> = (0..=64)
             .map(|k| arc_point(START, END, Vec3::Y, self.arc_height, k as f32 / 64.0))
             .collect();
-        frame.polyline(&path, palette::DARK);
+        frame.wide_polyline(&path, palette::DARK, crate::draw::CURVE_PX);
         frame.point(START, 0.09, palette::KEY);
         frame.point(END, 0.09, palette::KEY);
         frame.label(START + Vec3::new(0.0, -0.35, 0.0), "key 1", palette::KEY);

@@ -627,9 +627,9 @@ impl IkFigure {
             if let Some(student) = &self.student[k.min(1)] {
                 if k < 2 && self.use_exercise {
                     let shifted: Vec<Vec3> = student.iter().map(|&p| p + root).collect();
-                    frame.polyline(&shifted, palette::STUDENT);
+                    frame.wide_polyline(&shifted, palette::STUDENT, crate::draw::CURVE_PX);
                     for &p in &shifted {
-                        frame.point(p, 0.018, palette::STUDENT);
+                        frame.marker(p, crate::draw::DOT_PX, palette::STUDENT);
                     }
                 }
             }

@@ -25,6 +25,25 @@ pub(super) fn scene_pipeline(
     buffers: &[Option<wgpu::VertexBufferLayout>],
     primitive: wgpu::PrimitiveState,
 ) -> wgpu::RenderPipeline {
+    let depth_write = true;
+    scene_pipeline_with(device, format, label, layout, module, buffers, primitive, depth_write)
+}
+
+/// [`scene_pipeline`], choosing whether it writes depth. Wide lines and markers only test it:
+/// their antialiased edges are translucent, and an edge that wrote depth would hide the next
+/// segment of the same line wherever it lies a little further away (a receding curve would
+/// come out striped).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn scene_pipeline_with(
+    device: &wgpu::Device,
+    format: wgpu::TextureFormat,
+    label: &str,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    buffers: &[Option<wgpu::VertexBufferLayout>],
+    primitive: wgpu::PrimitiveState,
+    depth_write: bool,
+) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),
         layout: Some(layout),
@@ -37,7 +56,7 @@ pub(super) fn scene_pipeline(
         primitive,
         depth_stencil: Some(wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
+            depth_write_enabled: Some(depth_write),
             depth_compare: Some(wgpu::CompareFunction::LessEqual),
             stencil: Default::default(),
             bias: Default::default(),
@@ -300,13 +319,14 @@ impl Renderer {
         let marker_attributes = wgpu::vertex_attr_array![
             0 => Float32x3, 1 => Float32, 2 => Float32x4, 3 => Float32x3, 4 => Float32
         ];
-        let make = |label: &str,
-                    layout: &wgpu::PipelineLayout,
-                    module: &wgpu::ShaderModule,
-                    buffer: wgpu::VertexBufferLayout,
-                    topology: wgpu::PrimitiveTopology,
-                    cull: Option<wgpu::Face>| {
-            scene_pipeline(
+        let make_with = |label: &str,
+                         layout: &wgpu::PipelineLayout,
+                         module: &wgpu::ShaderModule,
+                         buffer: wgpu::VertexBufferLayout,
+                         topology: wgpu::PrimitiveTopology,
+                         cull: Option<wgpu::Face>,
+                         depth_write: bool| {
+            scene_pipeline_with(
                 device,
                 format,
                 label,
@@ -318,7 +338,16 @@ impl Renderer {
                     cull_mode: cull,
                     ..Default::default()
                 },
+                depth_write,
             )
+        };
+        let make = |label: &str,
+                    layout: &wgpu::PipelineLayout,
+                    module: &wgpu::ShaderModule,
+                    buffer: wgpu::VertexBufferLayout,
+                    topology: wgpu::PrimitiveTopology,
+                    cull: Option<wgpu::Face>| {
+            make_with(label, layout, module, buffer, topology, cull, true)
         };
         let mesh_pipeline = make(
             "mesh",
@@ -356,7 +385,7 @@ impl Renderer {
             wgpu::PrimitiveTopology::TriangleList,
             None,
         );
-        let stroke_pipeline = make(
+        let stroke_pipeline = make_with(
             "stroke",
             &plain_layout,
             &stroke_shader,
@@ -367,8 +396,9 @@ impl Renderer {
             },
             wgpu::PrimitiveTopology::TriangleList,
             None,
+            false,
         );
-        let marker_pipeline = make(
+        let marker_pipeline = make_with(
             "marker",
             &plain_layout,
             &marker_shader,
@@ -379,6 +409,7 @@ impl Renderer {
             },
             wgpu::PrimitiveTopology::TriangleList,
             None,
+            false,
         );
         let textured = super::texture::Textured::new(
             device,
@@ -903,7 +934,8 @@ impl Renderer {
                 pass.draw(0..6, 0..count);
             }
             // Wide lines and markers after everything opaque: their antialiased edges blend
-            // over what lies behind them.
+            // over what lies behind them, and they test depth without writing it (later ones
+            // draw over earlier ones; markers over lines).
             if !self.frame.strokes.is_empty() {
                 pass.set_pipeline(&self.stroke_pipeline);
                 pass.set_vertex_buffer(0, self.strokes.buffer.slice(..));

@@ -224,7 +224,8 @@ async function moveControls(page, figure, check) {
       await play.click();
     }, false, 3);
   }
-  for (const button of await figure.locator('button:not(.lil-controller button):not(.timeline button):not(.lil-title)').all()) {
+  // (Not "frame all": it moves the camera, which the figure's signature leaves out.)
+  for (const button of await figure.locator('button:not(.lil-controller button):not(.timeline button):not(.lil-title):not(.frame-all)').all()) {
     if (!(await button.isVisible())) continue;
     buttons.push([(await button.textContent()).trim(), button]);
   }
