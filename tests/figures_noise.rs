@@ -62,7 +62,13 @@ fn noise1d_probe_follows_one_ramp_next_to_an_integer() {
     let pink_and = |s: &Noise1d, ramp: Vec3| {
         let mut f = Frame::default();
         s.draw(&mut f);
-        let at = |c: Vec3| f.points.iter().find(|p| p.color[..3] == c.to_array()).map(|p| Vec3::from(p.center)).unwrap();
+        let at = |c: Vec3| {
+            f.points
+                .iter()
+                .find(|p| p.color[..3] == c.to_array())
+                .map(|p| Vec3::from(p.center))
+                .unwrap()
+        };
         (at(palette::PINK), at(ramp))
     };
     s.set_probe(3.02).unwrap();
@@ -97,7 +103,12 @@ fn noise1d_reports_the_students_fade() {
     s.set_runner(slope_wrong_at_ends);
     let n = s.draw(&mut f);
     if cfg!(feature = "solutions") {
-        assert!(n.contains("differs at t = 0.000") && n.contains("2 of the 6 inputs") && n.contains("Also at t = 1.000"), "{n}");
+        assert!(
+            n.contains("differs at t = 0.000")
+                && n.contains("2 of the 6 inputs")
+                && n.contains("Also at t = 1.000"),
+            "{n}"
+        );
     }
     s.set_runner(panics);
     let n = s.draw(&mut f);
@@ -132,7 +143,10 @@ fn noise2d_is_zero_at_the_dots_only_on_integer_slices() {
     assert!(!s.take_dirty(), "once");
     let perm = inbetween::noise::Permutation::perlin();
     let heights = dot_heights(&s);
-    assert!(heights.iter().filter(|&&y| y.abs() > 1e-3).count() >= 10, "{heights:?}");
+    assert!(
+        heights.iter().filter(|&&y| y.abs() > 1e-3).count() >= 10,
+        "{heights:?}"
+    );
     for j in -2..=2 {
         for i in -2..=2 {
             let (value, slope) = s.dot_value_and_slope(i, j);
@@ -142,14 +156,23 @@ fn noise2d_is_zero_at_the_dots_only_on_integer_slices() {
             let e = 1e-3;
             let dx = (perm.noise3(x + e, y, 0.37) - perm.noise3(x - e, y, 0.37)) / (2.0 * e);
             let dy = (perm.noise3(x, y + e, 0.37) - perm.noise3(x, y - e, 0.37)) / (2.0 * e);
-            assert!((slope - glam::Vec2::new(dx, dy)).length() < 2e-3, "{slope} vs ({dx}, {dy})");
+            assert!(
+                (slope - glam::Vec2::new(dx, dy)).length() < 2e-3,
+                "{slope} vs ({dx}, {dy})"
+            );
         }
     }
     f.clear();
     let note = s.draw(&mut f, MeshId(3));
-    assert!(note.contains("slice z = 0.370") && note.contains("no longer 0 at the dots"), "{note}");
+    assert!(
+        note.contains("slice z = 0.370") && note.contains("no longer 0 at the dots"),
+        "{note}"
+    );
     // One arrow (cone) per lattice point; black sticks from the plane up to the lifted dots.
-    assert_eq!(f.meshes.iter().filter(|m| m.mesh == MeshId::CONE).count(), 25);
+    assert_eq!(
+        f.meshes.iter().filter(|m| m.mesh == MeshId::CONE).count(),
+        25
+    );
     assert!(f.segments_of(palette::KEY).count() >= 10);
     // At z = 1 and z = 2 the slice holds a layer of lattice points: 0 at every dot again, with
     // that layer's gradients, which differ from layer 0's.
@@ -198,9 +221,18 @@ fn noise2d_draws_the_students_cell_and_checks_it_across_the_cell() {
     let mut f = Frame::default();
     let n = s.draw(&mut f, MeshId(3));
     assert!(n.contains("perlin_cell (5.2) differs"), "{n}");
-    assert!(n.contains(&format!("of the {} inputs", 1 + STUDENT_GRID * STUDENT_GRID)), "{n}");
+    assert!(
+        n.contains(&format!(
+            "of the {} inputs",
+            1 + STUDENT_GRID * STUDENT_GRID
+        )),
+        "{n}"
+    );
     // The student's values as a pink grid over the probe's cell, at the height they give.
-    assert_eq!(f.segments_of(palette::STUDENT).count() - 1, 2 * STUDENT_GRID * (STUDENT_GRID - 1));
+    assert_eq!(
+        f.segments_of(palette::STUDENT).count() - 1,
+        2 * STUDENT_GRID * (STUDENT_GRID - 1)
+    );
     assert!(f.labels.iter().any(|l| l.text == "yours"));
     // Right at the probe, wrong near the cell's far edge: still reported.
     fn wrong_near_the_far_edge(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
@@ -216,13 +248,22 @@ fn noise2d_draws_the_students_cell_and_checks_it_across_the_cell() {
         assert!(n.contains("differs at p = (1.000"), "{n}");
         assert!(n.contains(&format!("{} of the", STUDENT_GRID)), "{n}");
         s.set_runner(direct);
-        assert!(s.draw(&mut f, MeshId(3)).contains("matches the reference at all"));
+        assert!(s
+            .draw(&mut f, MeshId(3))
+            .contains("matches the reference at all"));
     }
     s.set_runner(panics);
     f.clear();
     let n = s.draw(&mut f, MeshId(3));
-    assert!(n.contains("panicked at src/exercises/noise.rs:30:5: boom"), "{n}");
-    assert_eq!(f.segments_of(palette::STUDENT).count(), 1, "only the probe's stick");
+    assert!(
+        n.contains("panicked at src/exercises/noise.rs:30:5: boom"),
+        "{n}"
+    );
+    assert_eq!(
+        f.segments_of(palette::STUDENT).count(),
+        1,
+        "only the probe's stick"
+    );
 }
 
 #[test]
@@ -399,17 +440,28 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     assert!(!s.draw(&mut f, MeshId(3)).contains("finer than the mesh"));
     s.set_params(7.0, 0.8, 2.0).unwrap();
     let n = s.draw(&mut f, MeshId(3));
-    assert!(n.contains("Octaves 6 and 7 are finer than the mesh") && n.contains("0.010 m apart") && n.contains("(0.021 m)"), "{n}");
+    assert!(
+        n.contains("Octaves 6 and 7 are finer than the mesh")
+            && n.contains("0.010 m apart")
+            && n.contains("(0.021 m)"),
+        "{n}"
+    );
     s.set_params(6.0, 0.8, 2.0).unwrap();
     assert!(s.draw(&mut f, MeshId(3)).contains("Octave 6 is finer"));
     // Left out: the surface is the sum up to octave 5, and the plot's sum column too, while the
     // plot still shows octave 6 itself (grey on the page).
     s.set_band_limit(true);
     s.take_dirty();
-    assert!(s.draw(&mut f, MeshId(3)).contains("left out of the surface"));
+    assert!(s
+        .draw(&mut f, MeshId(3))
+        .contains("left out of the surface"));
     let perm = inbetween::noise::Permutation::perlin();
     let t = &s.terrains()[0];
-    let five = inbetween::noise::Fractal { n: 5, alpha: 0.8, omega: 2.0 };
+    let five = inbetween::noise::Fractal {
+        n: 5,
+        alpha: 0.8,
+        omega: 2.0,
+    };
     let k = 77 * OCTAVES_RESOLUTION + 101;
     let q = t.positions[k];
     assert!((q.y - 0.5 * five.sum2(&perm, q.x, q.z)).abs() < 1e-5);
@@ -418,6 +470,14 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     assert!((rows[1][11] - sum5).abs() < 1e-6 && rows[1][7].is_finite());
     s.set_band_limit(false);
     assert!(s.take_dirty(), "the toggle regenerates");
+    // With nothing past the limit, the ticked box says so instead of changing nothing silently.
+    s.set_params(3.0, 0.5, 2.0).unwrap();
+    s.set_band_limit(true);
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(
+        n.contains("shows octaves up to 5, so none of these is left out"),
+        "{n}"
+    );
 }
 
 #[test]
@@ -428,8 +488,14 @@ fn octaves_draw_the_students_profile_and_check_it_along_the_line() {
     s.set_runner(wrong);
     let mut f = Frame::default();
     let n = s.draw(&mut f, MeshId(3));
-    assert!(n.contains("fractal_sum (5.3) differs at p = (-1.000, 0.250)"), "{n}");
-    assert!(n.contains(&format!("of the {PROFILE_POINTS} inputs")), "{n}");
+    assert!(
+        n.contains("fractal_sum (5.3) differs at p = (-1.000, 0.250)"),
+        "{n}"
+    );
+    assert!(
+        n.contains(&format!("of the {PROFILE_POINTS} inputs")),
+        "{n}"
+    );
     assert_eq!(f.segments_of(palette::STUDENT).count(), PROFILE_POINTS - 1);
     // Right everywhere but past u = 0.9: the verdict finds it on the drawn line.
     fn wrong_at_the_right_end(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
@@ -442,7 +508,12 @@ fn octaves_draw_the_students_profile_and_check_it_along_the_line() {
     s.set_runner(wrong_at_the_right_end);
     let n = s.draw(&mut f, MeshId(3));
     if cfg!(feature = "solutions") {
-        assert!(n.contains("differs at p = (0.905, 0.250)") && n.contains("20 of the 401") && n.contains("and 16 more"), "{n}");
+        assert!(
+            n.contains("differs at p = (0.905, 0.250)")
+                && n.contains("20 of the 401")
+                && n.contains("and 16 more"),
+            "{n}"
+        );
         s.set_runner(direct);
         let n = s.draw(&mut f, MeshId(3));
         assert!(n.contains("matches the reference at all 401 inputs"), "{n}");
@@ -458,7 +529,10 @@ fn terrain_scene_names_the_octaves_finer_than_the_mesh() {
     let mut f = Frame::default();
     // 128 vertices, 0.0157 m apart: octaves 5 to 9 of the course's N = 9 are wasted.
     let n = s.draw(&mut f, MeshId(3));
-    assert!(n.contains("0.016 m apart, so octaves 5 to 9 are finer than the mesh"), "{n}");
+    assert!(
+        n.contains("0.016 m apart, so octaves 5 to 9 are finer than the mesh"),
+        "{n}"
+    );
     s.set_resolution(512).unwrap();
     s.take_dirty();
     let n = s.draw(&mut f, MeshId(3));
@@ -496,8 +570,14 @@ fn terrain_scene_checks_the_students_normal_beyond_the_sliders() {
     let mut f = Frame::default();
     let n = s.draw(&mut f, MeshId(3));
     if cfg!(feature = "solutions") {
-        assert!(n.contains("differs at the probe's ∇g with h = 0.5, s = 2") && n.contains("2 of the 8 inputs"), "{n}");
+        assert!(
+            n.contains("differs at the probe's ∇g with h = 0.5, s = 2")
+                && n.contains("2 of the 8 inputs"),
+            "{n}"
+        );
         s.set_runner(direct);
-        assert!(s.draw(&mut f, MeshId(3)).contains("matches the reference at all 8 inputs"));
+        assert!(s
+            .draw(&mut f, MeshId(3))
+            .contains("matches the reference at all 8 inputs"));
     }
 }

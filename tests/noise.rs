@@ -645,7 +645,11 @@ fn fade_second_derivative_is_zero_at_the_ends_unlike_the_1985_curve() {
 fn the_3d_hash_and_gradient_extend_the_2d_ones() {
     let perm = Permutation::perlin();
     for (i, j) in [(0, 0), (3, -2), (-7, 5), (200, 13)] {
-        assert_eq!(perm.hash3(i, j, 0), perm.hash2(i, j), "the 2D noise is the slice z = 0");
+        assert_eq!(
+            perm.hash3(i, j, 0),
+            perm.hash2(i, j),
+            "the 2D noise is the slice z = 0"
+        );
         let g = perm.gradient3(i, j, 0);
         assert_eq!(g.truncate(), grad2(perm.hash2(i, j)));
     }
@@ -705,7 +709,13 @@ fn inverted_ridge_and_marble_terrains_follow_the_lessons_formulas() {
         let (x, y) = (rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
         let r: f32 = (0..=f.n).map(|k| f.octave2(&perm, k, x, y).abs()).sum();
         let q: f32 = (0..=f.n)
-            .map(|k| f.alpha.powi(k as i32) * (1.0 - perm.noise2(f.omega.powi(k as i32) * x, f.omega.powi(k as i32) * y).abs()))
+            .map(|k| {
+                f.alpha.powi(k as i32)
+                    * (1.0
+                        - perm
+                            .noise2(f.omega.powi(k as i32) * x, f.omega.powi(k as i32) * y)
+                            .abs())
+            })
             .sum();
         let (got_q, _) = params(Variant::InvertedRidge).g(&perm, x, y);
         assert!((got_q - (q - 0.7 * f.amplitude_sum())).abs() < 1e-5);
@@ -715,10 +725,14 @@ fn inverted_ridge_and_marble_terrains_follow_the_lessons_formulas() {
     // The shift keeps the inverted ridge around 0 like the other variants: on the course's
     // window its mean height lies within 0.1 Σ αᵏ of 0, and it goes below 0 (the water).
     let mut t = Terrain::new(128).unwrap();
-    t.regenerate(&perm, &params(Variant::InvertedRidge)).unwrap();
+    t.regenerate(&perm, &params(Variant::InvertedRidge))
+        .unwrap();
     let heights: Vec<f32> = t.positions.iter().map(|p| p.y / 0.3).collect();
     let mean = heights.iter().sum::<f32>() / heights.len() as f32;
     assert!(mean.abs() < 0.1 * f.amplitude_sum(), "mean {mean}");
     assert!(heights.iter().any(|&y| y < 0.0));
-    assert!(t.colors.iter().any(|c| c.z > 2.0 * c.x), "water in the lowest parts");
+    assert!(
+        t.colors.iter().any(|c| c.z > 2.0 * c.x),
+        "water in the lowest parts"
+    );
 }

@@ -62,9 +62,10 @@ fn probe_verdict(
         match yours(i) {
             Ok(a) => {
                 let bad = a.len() != reference.len()
-                    || a.iter()
-                        .zip(reference)
-                        .any(|(x, r)| !((x - r).abs() <= TOLERANCE));
+                    || a.iter().zip(reference).any(|(x, r)| {
+                        let e = (x - r).abs();
+                        e.is_nan() || e > TOLERANCE
+                    });
                 if bad {
                     differ.push(i);
                 }
@@ -110,7 +111,11 @@ fn probe_verdict(
 /// colour at `|n| ≥ 0.6` (one octave of 2D noise seldom passes ±0.7).
 pub fn diverging_color(n: f32) -> glam::Vec4 {
     let t = (n.abs() / 0.6).min(1.0);
-    let end = if n >= 0.0 { palette::RED } else { palette::BLUE };
+    let end = if n >= 0.0 {
+        palette::RED
+    } else {
+        palette::BLUE
+    };
     Vec3::splat(0.85).lerp(end, t).extend(1.0)
 }
 
@@ -583,7 +588,11 @@ impl Noise2d {
                     let col: Vec<Vec3> = (0..STUDENT_GRID).map(|a| point(b, a)).collect();
                     frame.polyline(&col, palette::STUDENT);
                 }
-                frame.label(point(STUDENT_GRID - 1, STUDENT_GRID - 1), "yours", palette::STUDENT);
+                frame.label(
+                    point(STUDENT_GRID - 1, STUDENT_GRID - 1),
+                    "yours",
+                    palette::STUDENT,
+                );
             }
             note += " ";
             note += &verdict;
@@ -783,7 +792,9 @@ impl Octaves {
             "fractal_sum (5.3)",
             "exercise 5.3 fractal_sum",
             &cases,
-            |i| run::fractal_sum(runner, points[i], f.n as usize, f.alpha, f.omega).map(|v| vec![v]),
+            |i| {
+                run::fractal_sum(runner, points[i], f.n as usize, f.alpha, f.omega).map(|v| vec![v])
+            },
         );
         self.student = Some((f, note, answers.map(|a| a.iter().map(|v| v[0]).collect())));
     }
@@ -825,7 +836,14 @@ impl Octaves {
         );
         let spacing = 2.0 / (OCTAVES_RESOLUTION - 1) as f32;
         match self.last_resolved_octave() {
-            Some(last) if last >= k => {}
+            Some(last) if last >= k => {
+                if self.band_limit {
+                    note += &format!(
+                        " The mesh shows octaves up to {}, so none of these is left out:                          raise N past it to see the difference.",
+                        last.min(OCTAVES_MAX_N)
+                    );
+                }
+            }
             last => {
                 let first = last.map_or(0, |l| l + 1);
                 let range = if first == k {
@@ -1095,7 +1113,11 @@ impl TerrainScene {
         let p = self.shown_params();
         let r = self.terrain.resolution();
         let steepest = (0..self.terrain.normals.len())
-            .min_by(|&a, &b| self.terrain.normals[a].y.total_cmp(&self.terrain.normals[b].y))
+            .min_by(|&a, &b| {
+                self.terrain.normals[a]
+                    .y
+                    .total_cmp(&self.terrain.normals[b].y)
+            })
             .unwrap_or(0);
         let vertices = [
             self.probe_index(),
@@ -1133,12 +1155,7 @@ impl TerrainScene {
             .collect();
         let g = cases[0].3;
         for (h, s) in [(0.5, 2.0), (1.0, 0.5)] {
-            cases.push((
-                format!("the probe's ∇g with h = {h}, s = {s}"),
-                h,
-                s,
-                g,
-            ));
+            cases.push((format!("the probe's ∇g with h = {h}, s = {s}"), h, s, g));
         }
         cases
     }
@@ -1164,6 +1181,12 @@ impl TerrainScene {
         );
         let spacing = 2.0 / (r - 1) as f32;
         let last = self.last_resolved_octave();
+        if self.band_limit && last.is_some_and(|l| l >= p.fractal.n) {
+            note += &format!(
+                " This mesh shows octaves up to {}, so none is left out.",
+                last.unwrap_or(0).min(crate::noise::MAX_N)
+            );
+        }
         if last.is_none_or(|l| l < p.fractal.n) {
             let first = last.map_or(0, |l| l + 1);
             let range = if first == p.fractal.n {
@@ -1189,7 +1212,9 @@ impl TerrainScene {
             let cases = self.normal_cases();
             let named: Vec<(String, Vec<f32>)> = cases
                 .iter()
-                .map(|(name, h, s, g)| (name.clone(), terrain_normal(*h, *s, *g).to_array().to_vec()))
+                .map(|(name, h, s, g)| {
+                    (name.clone(), terrain_normal(*h, *s, *g).to_array().to_vec())
+                })
                 .collect();
             let (verdict, answers) = probe_verdict(
                 "terrain_normal (5.4)",
