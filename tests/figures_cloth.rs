@@ -547,3 +547,149 @@ fn a_cloth_pulled_apart_by_a_drag_is_torn_not_exploded() {
     assert!(f.exploded(0).is_none() && f.exploded(1).is_none(), "{note}");
     assert!(!note.contains("torn"), "{note}");
 }
+
+
+/// The reference for every exercise of the lesson, except a spring_force that pushes nothing
+/// when compressed (a rope, not a spring): right at the figure's stretched start.
+fn rope_runner(name: &str, a: &[f32]) -> Result<Vec<f32>, Failure> {
+    let v = |i: usize| Vec3::from_slice(&a[i..i + 3]);
+    Ok(match name {
+        "spring_force" => {
+            let (pa, pb) = (v(0), v(3));
+            let f = if pa.distance(pb) < a[14] {
+                Vec3::ZERO
+            } else {
+                inbetween::cloth::spring_force(pa, pb, v(6), v(9), a[12], a[13], a[14])
+            };
+            f.to_array().to_vec()
+        }
+        "cloth_euler_step" => {
+            let (mut p, mut u) = (v(0), v(3));
+            inbetween::cloth::particle_step(&mut p, &mut u, v(6), a[9], a[10]);
+            [p.to_array(), u.to_array()].concat()
+        }
+        "project_distance" => {
+            let (mut pa, mut pb) = (v(0), v(3));
+            inbetween::cloth::project_distance(&mut pa, &mut pb, a[6], a[7], a[8], a[9], a[10]);
+            [pa.to_array(), pb.to_array()].concat()
+        }
+        _ => return Err(Failure::Call(format!("no exercise {name}"))),
+    })
+}
+
+#[test]
+fn use_my_exercise_probes_inputs_the_start_never_reaches() {
+    let mut f = SpringFigure::new();
+    f.set_runner(rope_runner);
+    f.set_use_exercise(true);
+    let note = f.draw(&mut Frame::default(), 1.0).unwrap();
+    // At the start (stretched) all three match; the probes find the compressed case.
+    assert_eq!(note.matches("matches the reference at").count(), 3, "{note}");
+    assert!(
+        note.contains("Of 10 probe inputs beyond the start, yours differ at: spring_force at a compressed spring (ℓ < ℓ₀)."),
+        "{note}"
+    );
+    // With every answer right the probes say so.
+    fn reference_runner(name: &str, a: &[f32]) -> Result<Vec<f32>, Failure> {
+        if name == "spring_force" {
+            let v = |i: usize| Vec3::from_slice(&a[i..i + 3]);
+            let f = inbetween::cloth::spring_force(v(0), v(3), v(6), v(9), a[12], a[13], a[14]);
+            return Ok(f.to_array().to_vec());
+        }
+        rope_runner(name, a)
+    }
+    f.set_runner(reference_runner);
+    let note = f.draw(&mut Frame::default(), 1.0).unwrap();
+    assert!(note.contains("At 10 of 10 probe inputs beyond the start"), "{note}");
+    assert!(note.contains("your answers match too."), "{note}");
+    // Stubs answer nothing: no probe sentence.
+    f.set_runner(panicking_runner);
+    let note = f.draw(&mut Frame::default(), 1.0).unwrap();
+    assert!(!note.contains("probe"), "{note}");
+}
+
+/// The drape's Try this done literally: pause at 3 s, set the sphere's x in one jump, play to
+/// 6 s. The sphere travels there at OBSTACLE_SPEED instead of landing inside the cloth.
+fn drape_after_jump(method: &str, friction: f32, x: f32) -> (ClothFigure, String) {
+    let mut f = ClothFigure::new(Preset::Drape);
+    f.set_method(method).unwrap();
+    f.set_friction(friction).unwrap();
+    draw(&mut f, 3.0);
+    f.set_obstacles(x, -0.9, 0.7).unwrap();
+    let (note, frame) = draw(&mut f, 3.1);
+    // On its way: 0.1 s at 1.5 m/s, with a line to where it is heading.
+    let sphere = f.obstacles().0.x;
+    assert!((sphere - (x.min(0.15))).abs() < 0.03, "{sphere}");
+    if x > 0.15 {
+        assert!(frame.points.iter().any(|p| (p.center[0] - x).abs() < 1e-6), "target marker");
+    }
+    let _ = note;
+    let (note, _) = draw(&mut f, 6.0);
+    assert_eq!(f.obstacles().0.x, x);
+    (f, note)
+}
+
+fn above(f: &ClothFigure, y: f32) -> usize {
+    f.positions(0).iter().filter(|p| p.y > y).count()
+}
+
+#[test]
+fn the_drape_try_this_done_literally_slides_off_without_exploding() {
+    use inbetween::figures::cloth::OBSTACLE_SPEED;
+    assert_eq!(OBSTACLE_SPEED, 1.5);
+    let (f, note) = drape_after_jump("mass-spring", 0.3, 0.5);
+    assert!(f.exploded(0).is_none(), "{note}");
+    assert_eq!(above(&f, 0.9), 0, "slid off onto the ground");
+    let (f, _) = drape_after_jump("mass-spring", 2.0, 0.5);
+    assert!(f.exploded(0).is_none());
+    assert!(above(&f, 0.9) > 40, "friction 2 clings");
+    let (f, _) = drape_after_jump("mass-spring", 0.3, 0.2);
+    assert!(above(&f, 0.9) > 40, "a move of 0.2 does not unseat it");
+    // XPBD does not explode either.
+    let (f, note) = drape_after_jump("XPBD", 0.3, 0.5);
+    assert!(f.exploded(0).is_none(), "{note}");
+}
+
+#[test]
+fn an_explosion_while_an_obstacle_moves_says_so_and_xpbd_is_not_advised_xpbd() {
+    // A 40 × 40 mass-spring drape explodes within a few frames; the sphere set moving at frame 1
+    // is moving then.
+    let mut f = ClothFigure::new(Preset::Drape);
+    f.set_resolution(40.0).unwrap();
+    draw(&mut f, 1.0 / 60.0);
+    f.set_obstacles(1.0, -0.9, 0.7).unwrap();
+    let (note, _) = draw(&mut f, 0.5);
+    assert!(f.exploded(0).is_some());
+    assert!(note.contains("while the sphere or the box was moving through it"), "{note}");
+    assert!(note.contains("or XPBD"), "{note}");
+    // Unmoved obstacles: the plain message.
+    let mut f = ClothFigure::new(Preset::Drape);
+    f.set_resolution(40.0).unwrap();
+    let (note, _) = draw(&mut f, 0.5);
+    assert!(!note.contains("moving through it"), "{note}");
+}
+
+/// The flag's Try this, wind 0: the flags do not hang (the shear springs hold each flag as a
+/// stiff truss in its plane, where gravity acts); with shear 0 as well both fall and hang down
+/// the pole, their free edge from about 1.8 m to about 0.4 m.
+#[test]
+fn without_wind_the_flags_stay_out_until_the_shear_springs_go() {
+    let far_edge_y = |f: &ClothFigure, k: usize| {
+        let p = f.positions(k);
+        (0..9).map(|r| p[r * 14 + 13].y).sum::<f32>() / 9.0
+    };
+    let mut f = ClothFigure::new(Preset::Flag);
+    f.set_wind(0.0).unwrap();
+    draw(&mut f, 6.0);
+    for k in 0..2 {
+        let y = far_edge_y(&f, k);
+        assert!(y > 1.6, "flag {k} stays out: free edge at {y} m");
+    }
+    f.set_stiffness("shear", 0.0).unwrap();
+    draw(&mut f, 6.0);
+    for k in 0..2 {
+        assert!(f.exploded(k).is_none());
+        let y = far_edge_y(&f, k);
+        assert!(y < 0.5, "flag {k} hangs: free edge at {y} m");
+    }
+}

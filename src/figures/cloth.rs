@@ -33,6 +33,10 @@ pub const PAGE_MAX_SIDE: usize = 100;
 pub const GRAB_RADIUS_PX: f32 = 24.0;
 /// The most drag events a figure records for its replays.
 pub const MAX_DRAG_EVENTS: usize = 4000;
+/// How fast the sphere and the box move towards where their sliders put them, m/s. They never
+/// jump: a jump of 0.5 m in one frame would land the sphere inside the cloth, and the collision
+/// would then fling its particles out by half a metre in one step.
+pub const OBSTACLE_SPEED: f32 = 1.5;
 
 /// What the cloth figure shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -66,6 +70,8 @@ struct Sim {
     /// It "exploded" while the reader held one of its particles: the drag pulled it apart (a
     /// held particle follows the pointer whatever the springs say), not the step.
     torn: bool,
+    /// It exploded while the sphere or the box was moving.
+    pushed: bool,
 }
 
 /// A held particle: `(cloth, particle index, target point)`.
@@ -94,9 +100,18 @@ pub struct ClothFigure {
     structure_changed: bool,
     /// Sphere and box centres at the start of a run.
     obstacles_start: (Vec3, Vec3),
-    /// `(frame, sphere centre, box centre)`: the reader moved them then (replayed like drags).
+    /// `(frame, sphere centre, box centre)`: from that frame on the obstacles head there (the
+    /// reader moved the sliders then; replayed like drags).
     obstacle_moves: Vec<(usize, Vec3, Vec3)>,
     obstacle_cursor: usize,
+    /// Where the obstacles are heading (the sliders' values as of the frame simulated last); the
+    /// colliders move towards it at [`OBSTACLE_SPEED`].
+    obstacle_targets: (Vec3, Vec3),
+    /// The obstacles moved during the frame simulated last.
+    obstacles_moving: bool,
+    /// Frames simulated by the last [`ClothFigure::advance_to`] that went on from where the
+    /// previous one stopped; 0 when it replayed from the start (a scrub back, a new setting).
+    last_step_frames: usize,
 }
 
 impl ClothFigure {
@@ -141,8 +156,12 @@ impl ClothFigure {
             obstacles_start: (Vec3::ZERO, Vec3::ZERO),
             obstacle_moves: Vec::new(),
             obstacle_cursor: 0,
+            obstacle_targets: (Vec3::ZERO, Vec3::ZERO),
+            obstacles_moving: false,
+            last_step_frames: 0,
         };
         f.obstacles_start = f.obstacles();
+        f.obstacle_targets = f.obstacles_start;
         f.build();
         f
     }
@@ -196,6 +215,7 @@ impl ClothFigure {
                     color,
                     label,
                     torn: false,
+                    pushed: false,
                 }
             })
             .collect();
@@ -237,6 +257,7 @@ impl ClothFigure {
             sim.last_good.copy_from_slice(&sim.cloth.positions);
             sim.samples.clear();
             sim.torn = false;
+            sim.pushed = false;
             // The start is a sample too: a cloth that explodes in its first frames still draws a
             // line (from here up to its last good frame) instead of one invisible point.
             sim.samples.push([
@@ -250,6 +271,8 @@ impl ClothFigure {
         self.obstacle_cursor = 0;
         let (sphere, cuboid) = self.obstacles_start;
         self.place_obstacles(sphere, cuboid);
+        self.obstacle_targets = self.obstacles_start;
+        self.obstacles_moving = false;
         self.dirty = false;
     }
 
@@ -270,15 +293,42 @@ impl ClothFigure {
         }
     }
 
-    /// Applies the recorded obstacle moves up to `frame`.
+    /// Where the obstacles are heading: the sliders' values as of the frame simulated last.
+    pub fn obstacle_targets(&self) -> (Vec3, Vec3) {
+        self.obstacle_targets
+    }
+
+    /// Takes the recorded obstacle moves up to `frame` as the targets.
     fn catch_up_obstacles(&mut self, frame: usize) {
         while self.obstacle_cursor < self.obstacle_moves.len()
             && self.obstacle_moves[self.obstacle_cursor].0 <= frame
         {
             let (_, sphere, cuboid) = self.obstacle_moves[self.obstacle_cursor];
-            self.place_obstacles(sphere, cuboid);
+            self.obstacle_targets = (sphere, cuboid);
             self.obstacle_cursor += 1;
         }
+    }
+
+    /// Moves the obstacles towards their targets by at most [`OBSTACLE_SPEED`] × Δt (one frame);
+    /// returns whether they moved.
+    fn move_obstacles(&mut self) -> bool {
+        let step = OBSTACLE_SPEED * self.frame_dt;
+        let toward = |from: Vec3, to: Vec3| {
+            let d = to - from;
+            if d.length() <= step {
+                to
+            } else {
+                from + d * (step / d.length())
+            }
+        };
+        let (sphere, cuboid) = self.obstacles();
+        let (ts, tc) = self.obstacle_targets;
+        let next = (toward(sphere, ts), toward(cuboid, tc));
+        if next == (sphere, cuboid) {
+            return false;
+        }
+        self.place_obstacles(next.0, next.1);
+        true
     }
 
     /// Back to the start with no recorded drags or obstacle moves, the obstacles where they are
@@ -291,7 +341,8 @@ impl ClothFigure {
     fn forget_interaction(&mut self) {
         self.drags.clear();
         self.dragging = None;
-        self.obstacles_start = self.obstacles();
+        // The next run starts with the obstacles where the sliders put them.
+        self.obstacles_start = self.obstacle_targets;
         self.obstacle_moves.clear();
     }
 
@@ -397,22 +448,23 @@ impl ClothFigure {
         Ok(())
     }
 
-    /// The sphere's centre x and the box's centre x and z, metres in [−1.5, 1.5]. They move at
-    /// the current frame: the cloth runs into them from there on (and so in every replay). At
-    /// time 0, or once [`MAX_DRAG_EVENTS`] moves are recorded, the run starts again with them in
-    /// their new places.
+    /// The sphere's centre x and the box's centre x and z, metres in [−1.5, 1.5]. From the
+    /// current frame on they head there at [`OBSTACLE_SPEED`], and the cloth runs into them on
+    /// the way (and so in every replay). At time 0, or once [`MAX_DRAG_EVENTS`] moves are
+    /// recorded, the run starts again with them in their new places.
     pub fn set_obstacles(&mut self, sphere_x: f32, box_x: f32, box_z: f32) -> Result<(), String> {
         let sx = in_range("sphere x", sphere_x, -1.5, 1.5)?;
         let bx = in_range("box x", box_x, -1.5, 1.5)?;
         let bz = in_range("box z", box_z, -1.5, 1.5)?;
-        let (mut sphere, mut cuboid) = self.obstacles();
+        let (mut sphere, mut cuboid) = self.obstacle_targets;
         (sphere.x, cuboid.x, cuboid.z) = (sx, bx, bz);
-        if (sphere, cuboid) == self.obstacles() {
+        if (sphere, cuboid) == self.obstacle_targets {
             return Ok(());
         }
-        self.place_obstacles(sphere, cuboid);
+        self.obstacle_targets = (sphere, cuboid);
         let frame = self.frames_done;
         if frame == 0 || self.dirty || self.obstacle_moves.len() >= MAX_DRAG_EVENTS {
+            self.place_obstacles(sphere, cuboid);
             self.obstacles_start = (sphere, cuboid);
             self.obstacle_moves.clear();
             self.dirty = true;
@@ -495,14 +547,23 @@ impl ClothFigure {
     pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
         let t = in_range("time", time_sec, 0.0, DURATION)?;
         let target = (t / self.frame_dt + 1e-3).floor() as usize;
-        if self.dirty || target < self.frames_done {
+        let replay = self.dirty || target < self.frames_done;
+        if replay {
             self.restart();
         }
         let n = target - self.frames_done;
         for _ in 0..n {
             self.step_frame()?;
         }
+        self.last_step_frames = if replay { 0 } else { n };
         Ok(n)
+    }
+
+    /// How many frames the last draw simulated, going on from the previous one (0 when it
+    /// replayed from the start or the time stood still): what a page divides its measured time
+    /// by to time one simulated frame, whatever its own frame rate.
+    pub fn last_step_frames(&self) -> usize {
+        self.last_step_frames
     }
 
     fn step_frame(&mut self) -> Result<(), String> {
@@ -515,6 +576,7 @@ impl ClothFigure {
             .checked_sub(1)
             .and_then(|k| self.drags[k].1);
         self.catch_up_obstacles(frame);
+        self.obstacles_moving = self.move_obstacles();
         let t = frame as f32 * self.frame_dt;
         for k in 0..self.sims.len() {
             let params = self.params_for(self.sims[k].method, t);
@@ -527,6 +589,7 @@ impl ClothFigure {
                 .step(&params, &self.colliders, self.frame_dt)
                 .map_err(|e| e.to_string())?;
             sim.torn = sim.cloth.exploded().is_some() && sim.cloth.grab.is_some();
+            sim.pushed = sim.cloth.exploded().is_some() && self.obstacles_moving;
             if sim.cloth.exploded().is_none() {
                 sim.last_good.copy_from_slice(&sim.cloth.positions);
                 sim.samples.push([
@@ -708,6 +771,18 @@ impl ClothFigure {
                 palette::PURPLE,
             );
         }
+        // An obstacle on its way to where its slider puts it: a line to that point.
+        let (sphere, cuboid) = self.obstacles();
+        let (to_sphere, to_cuboid) = self.obstacle_targets;
+        for (at, to, color) in [
+            (sphere, to_sphere, palette::GREY),
+            (cuboid, to_cuboid, palette::PURPLE),
+        ] {
+            if at != to {
+                frame.line(at, to, color);
+                frame.point(to, 0.03, color);
+            }
+        }
         let rows_per_band = |rows: usize| (rows / 5).max(1);
         // From a cloth's name label down to the label under it, metres.
         let below = match self.preset {
@@ -849,17 +924,26 @@ impl ClothFigure {
                     format_number(crate::cloth::EXPLODED_STRETCH),
                 )),
                 Some(t) => parts.push(format!(
-                    "The {name} cloth exploded at t = {} s (a spring passed {} × its rest length): \
+                    "The {name} cloth exploded at t = {} s (a spring passed {} × its rest length){} \
                      {}",
                     format_number(t),
                     format_number(crate::cloth::EXPLODED_STRETCH),
+                    if sim.pushed {
+                        ", while the sphere or the box was moving through it: the collision \
+                         pushed particles out faster than the springs could follow."
+                    } else {
+                        "."
+                    },
                     // What this figure's controls can do about it; any change starts the run
                     // again (the flag's reset would also bring back every default).
-                    match self.preset {
-                        Preset::Flag => "lower the stiffness or the frame step, or raise the \
-                                         substeps: the run starts again by itself.",
-                        Preset::Drape => "choose fewer particles per side (heavier particles) \
-                                          or XPBD.",
+                    match (self.preset, sim.method) {
+                        (Preset::Flag, _) => "Lower the stiffness or the frame step, or raise \
+                                              the substeps: the run starts again by itself.",
+                        (Preset::Drape, Method::MassSpring) => "Choose fewer particles per side \
+                                                                (heavier particles) or XPBD.",
+                        (Preset::Drape, Method::Xpbd) => "XPBD's projections cannot overshoot, \
+                                                          so the step is not the cause: press \
+                                                          reset.",
                     },
                 )),
                 None => {
@@ -1252,6 +1336,113 @@ impl SpringFigure {
                 );
             }
         }
+        notes.push(self.probe_note());
+        notes.retain(|n| !n.is_empty());
         notes.join(" ")
+    }
+
+    /// Checks the student's three functions at inputs the figure's start never
+    /// reaches (a compressed spring, damping alone, a pinned particle, a rigid constraint, …)
+    /// and names those where an answer differs; failures are said by the start comparisons.
+    fn probe_note(&self) -> String {
+        let close = |a: &[f32], b: &[f32], tolerance: f32| {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| (x - y).abs() <= tolerance)
+        };
+        let w = 1.0 / SPRING_MASS;
+        // Probes asked, and answered (a stub or a panic answers none: the start comparison says
+        // so already).
+        let mut total = 0;
+        let mut answered = 0;
+        let mut differing: Vec<String> = Vec::new();
+        let force_probes: [(&str, [Vec3; 4], [f32; 3]); 3] = [
+            (
+                "a compressed spring (ℓ < ℓ₀)",
+                [Vec3::ZERO, Vec3::new(0.5, 0.0, 0.0), Vec3::ZERO, Vec3::ZERO],
+                [40.0, 0.0, 0.8],
+            ),
+            (
+                "damping alone (ℓ = ℓ₀, b moving away)",
+                [Vec3::ZERO, Vec3::new(0.8, 0.0, 0.0), Vec3::ZERO, Vec3::new(1.0, 0.5, 0.0)],
+                [40.0, 0.3, 0.8],
+            ),
+            (
+                "a stretched spring along −y with both ends moving",
+                [Vec3::Y, Vec3::ZERO, Vec3::new(0.0, 0.4, 0.0), Vec3::new(0.2, -0.3, 0.0)],
+                [25.0, 0.2, 0.5],
+            ),
+        ];
+        for (name, [pa, pb, va, vb], [k, c, rest]) in force_probes {
+            total += 1;
+            if let Ok(f) = run::spring_force(self.runner, pa, pb, va, vb, k, c, rest) {
+                answered += 1;
+                let r = crate::cloth::spring_force(pa, pb, va, vb, k, c, rest);
+                if !close(&f.to_array(), &r.to_array(), 1e-3 * (1.0 + r.length())) {
+                    differing.push(format!("spring_force at {name}"));
+                }
+            }
+        }
+        let (p, v, f) = (Vec3::new(0.1, 1.0, 0.0), Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, -2.0, 1.0));
+        let step_probes: [(&str, f32, f32); 3] = [
+            ("a pinned particle (w = 0)", 0.0, 0.02),
+            ("a zero step (dt = 0)", w, 0.0),
+            ("a long step (dt = 0.1 s)", w, 0.1),
+        ];
+        for (name, w, dt) in step_probes {
+            total += 1;
+            if let Ok((q, u)) = run::cloth_euler_step(self.runner, p, v, f, w, dt) {
+                answered += 1;
+                let (mut rq, mut ru) = (p, v);
+                crate::cloth::particle_step(&mut rq, &mut ru, f, w, dt);
+                if !close(
+                    &[q.to_array(), u.to_array()].concat(),
+                    &[rq.to_array(), ru.to_array()].concat(),
+                    1e-4,
+                ) {
+                    differing.push(format!("cloth_euler_step at {name}"));
+                }
+            }
+        }
+        let (a, b) = (Vec3::ZERO, Vec3::new(1.0, 0.5, 0.0));
+        let project_probes: [(&str, f32, f32, f32, f32); 4] = [
+            ("both ends free and equal (wa = wb)", w, w, 0.8, 1.0 / 40.0),
+            ("a rigid constraint (α = 0)", w, w, 0.8, 0.0),
+            ("a compressed constraint (ℓ < ℓ₀)", w, 2.0 * w, 1.5, 1.0 / 40.0),
+            ("b pinned (wb = 0)", w, 0.0, 0.8, 0.0),
+        ];
+        for (name, wa, wb, rest, alpha) in project_probes {
+            total += 1;
+            if let Ok((x, y)) =
+                run::project_distance(self.runner, a, b, wa, wb, rest, alpha, self.dt)
+            {
+                answered += 1;
+                let (mut ra, mut rb) = (a, b);
+                crate::cloth::project_distance(&mut ra, &mut rb, wa, wb, rest, alpha, self.dt);
+                if !close(
+                    &[x.to_array(), y.to_array()].concat(),
+                    &[ra.to_array(), rb.to_array()].concat(),
+                    1e-4,
+                ) {
+                    differing.push(format!("project_distance at {name}"));
+                }
+            }
+        }
+        if answered == 0 {
+            String::new()
+        } else if differing.is_empty() {
+            format!(
+                "At {answered} of {total} probe inputs beyond the start (compressed, pinned, rigid, \
+                 zero step, …) your answers match too{}.",
+                if answered < total {
+                    " (the others are exercises not done yet)"
+                } else {
+                    ""
+                }
+            )
+        } else {
+            format!(
+                "Of {total} probe inputs beyond the start, yours differ at: {}.",
+                differing.join("; ")
+            )
+        }
     }
 }

@@ -110,6 +110,14 @@ impl ClothScene {
         let k = super::whole("k", k)?;
         Ok(self.scene.exploded(k))
     }
+
+    /// Frames the last `draw` simulated going on from the previous one (0 after a replay from
+    /// the start): the page times one simulated frame with it.
+    #[wasm_bindgen(js_name = lastStepFrames)]
+    pub fn last_step_frames(&self) -> usize {
+        self.scene.last_step_frames()
+    }
+
     /// How many cloths are drawn (1 or 2).
     #[wasm_bindgen(js_name = clothCount)]
     pub fn cloth_count(&self) -> usize {
