@@ -163,17 +163,56 @@ pub fn import(bytes: &[u8]) -> Result<Imported, ImportError> {
         ));
     }
 
-    // Node parents, from the children lists.
-    let node_count = doc.nodes().len();
+    // Node parents, from the children lists. A node has at most one parent and is not its own
+    // child: a second parent would make its place in the hierarchy ambiguous.
+    let all_nodes: Vec<gltf::Node> = doc.nodes().collect();
+    let node_count = all_nodes.len();
     let mut node_parent = vec![usize::MAX; node_count];
-    for node in doc.nodes() {
+    for node in &all_nodes {
         for child in node.children() {
-            node_parent[child.index()] = node.index();
+            let (c, n) = (child.index(), node.index());
+            if c == n {
+                return Err(ImportError::Invalid(format!(
+                    "node {n} lists itself as a child"
+                )));
+            }
+            if node_parent[c] != usize::MAX {
+                return Err(ImportError::Invalid(format!(
+                    "node {c} has two parents (nodes {} and {n}); a node has at most one parent",
+                    node_parent[c]
+                )));
+            }
+            node_parent[c] = n;
         }
+    }
+    // Parents before children: a breadth-first walk from the nodes without a parent. A node it
+    // does not reach lies on a cycle (each node has at most one parent, so nothing else hides
+    // it). One pass: the work grows linearly with the node count, however deep the chains.
+    let mut top_down: Vec<usize> = (0..node_count)
+        .filter(|&n| node_parent[n] == usize::MAX)
+        .collect();
+    let mut next = 0;
+    while next < top_down.len() {
+        let n = top_down[next];
+        next += 1;
+        top_down.extend(all_nodes[n].children().map(|c| c.index()));
+    }
+    if top_down.len() != node_count {
+        return Err(ImportError::Invalid(
+            "the node hierarchy has a cycle".into(),
+        ));
     }
     let skin_joints: Vec<usize> = skin.joints().map(|n| n.index()).collect();
     if skin_joints.is_empty() {
         return Err(ImportError::Skeleton("the skin lists no joints".into()));
+    }
+    // The skeleton's cap, checked before any work that grows with the joint count.
+    if skin_joints.len() > crate::skeleton::MAX_JOINTS {
+        return Err(ImportError::Skeleton(format!(
+            "the skin lists {} joints; a skeleton has at most {}",
+            skin_joints.len(),
+            crate::skeleton::MAX_JOINTS
+        )));
     }
     let mut joint_of_node = vec![usize::MAX; node_count];
     for (k, &n) in skin_joints.iter().enumerate() {
@@ -184,27 +223,24 @@ pub fn import(bytes: &[u8]) -> Result<Imported, ImportError> {
         }
         joint_of_node[n] = k;
     }
-    // The nearest ancestor that is a joint (skin order), or None; the chain is bounded by the
-    // node count, so a cycle in a malformed file cannot loop forever.
-    let joint_parent = |node: usize| -> Result<Option<usize>, ImportError> {
-        let mut k = node_parent[node];
-        for _ in 0..node_count {
-            if k == usize::MAX {
-                return Ok(None);
-            }
-            if joint_of_node[k] != usize::MAX {
-                return Ok(Some(joint_of_node[k]));
-            }
-            k = node_parent[k];
+    // Each node's nearest ancestor that is a joint (skin order), or None, and its world
+    // matrix, both in one top-down pass.
+    let mut joint_above = vec![None; node_count];
+    let mut world = vec![Mat4::IDENTITY; node_count];
+    for &n in &top_down {
+        let p = node_parent[n];
+        if p != usize::MAX {
+            joint_above[n] = if joint_of_node[p] != usize::MAX {
+                Some(joint_of_node[p])
+            } else {
+                joint_above[p]
+            };
+            world[n] = world[p] * local_matrix(&all_nodes[n]);
+        } else {
+            world[n] = local_matrix(&all_nodes[n]);
         }
-        Err(ImportError::Invalid(
-            "the node hierarchy has a cycle".into(),
-        ))
-    };
-    let skin_parents: Vec<Option<usize>> = skin_joints
-        .iter()
-        .map(|&n| joint_parent(n))
-        .collect::<Result<_, _>>()?;
+    }
+    let skin_parents: Vec<Option<usize>> = skin_joints.iter().map(|&n| joint_above[n]).collect();
     // Depth-first order from the roots, children in skin order.
     let mut children = vec![Vec::new(); skin_joints.len()];
     let mut roots = Vec::new();
@@ -231,24 +267,12 @@ pub fn import(bytes: &[u8]) -> Result<Imported, ImportError> {
     }
 
     // Above the roots: one shared world transform.
-    let world_of = |node: usize| -> Mat4 {
-        let mut m = Mat4::IDENTITY;
-        let mut k = node;
-        for _ in 0..node_count {
-            if k == usize::MAX {
-                break;
-            }
-            m = local_matrix(&doc.nodes().nth(k).expect("index in range")) * m;
-            k = node_parent[k];
-        }
-        m
-    };
     let above = |k: usize| {
         let p = node_parent[skin_joints[k]];
         if p == usize::MAX {
             Mat4::IDENTITY
         } else {
-            world_of(p)
+            world[p]
         }
     };
     let root_transform = above(roots[0]);
@@ -264,7 +288,7 @@ pub fn import(bytes: &[u8]) -> Result<Imported, ImportError> {
     let names: Vec<String> = nodes
         .iter()
         .map(|&n| {
-            let node = doc.nodes().nth(n).expect("index in range");
+            let node = &all_nodes[n];
             match node.name() {
                 Some(name) if !name.is_empty() => format!("{name} (node {n})"),
                 _ => format!("node {n}"),
@@ -278,12 +302,7 @@ pub fn import(bytes: &[u8]) -> Result<Imported, ImportError> {
     let rest: Vec<Transform> = nodes
         .iter()
         .map(|&n| {
-            let (t, r, s) = doc
-                .nodes()
-                .nth(n)
-                .expect("index in range")
-                .transform()
-                .decomposed();
+            let (t, r, s) = all_nodes[n].transform().decomposed();
             Transform {
                 translation: Vec3::from(t),
                 rotation: Quat::from_array(r).normalize(),
@@ -365,7 +384,7 @@ pub fn import(bytes: &[u8]) -> Result<Imported, ImportError> {
                 ));
                 continue;
             }
-            let m = import_primitive(&primitive, &new_index, get, world_of(node.index()))
+            let m = import_primitive(&primitive, &new_index, get, world[node.index()])
                 .map_err(|why| ImportError::Invalid(format!("mesh {}: {why}", mesh.index())))?;
             vertices += m.positions.len();
             if vertices > MAX_VERTICES {

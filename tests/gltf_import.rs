@@ -295,3 +295,80 @@ proptest! {
         let _ = import(&bytes);
     }
 }
+
+/// The tiny file with `n` chained non-joint nodes under the hip's sibling list and `n` joint
+/// leaves, one under each chain node (no inverse binds: identity).
+fn deep_chain(n: usize) -> String {
+    let first = 3; // the tiny file's nodes are 0, 1, 2
+    let mut nodes = String::new();
+    for k in 0..n {
+        let chain = first + 2 * k;
+        let next = if k + 1 < n {
+            format!("{},", chain + 2)
+        } else {
+            String::new()
+        };
+        nodes.push_str(&format!(
+            ",{{\"children\":[{next}{}]}},{{\"name\":\"leaf{k}\"}}",
+            chain + 1
+        ));
+    }
+    let leaves: String = (0..n).map(|k| format!(",{}", first + 2 * k + 1)).collect();
+    tiny()
+        .replacen(
+            "{\"name\":\"knee\",\"translation\":[0,1,0]}]",
+            &format!("{{\"name\":\"knee\",\"translation\":[0,1,0]}}{nodes}]"),
+            1,
+        )
+        .replacen("\"nodes\":[0,1]", &format!("\"nodes\":[0,1,{first}]"), 1)
+        .replacen(
+            "\"joints\":[2,1],\"inverseBindMatrices\":3",
+            &format!("\"joints\":[2,1{leaves}]"),
+            1,
+        )
+}
+
+#[test]
+fn a_deep_chain_of_non_joint_nodes_imports_in_linear_time() {
+    // 60,000 chain nodes, each with a joint leaf: walking up the chain from every leaf is
+    // 1.8·10⁹ steps; one top-down pass is 120,000.
+    let n = 60_000;
+    let text = deep_chain(n);
+    let start = std::time::Instant::now();
+    let imported = import(text.as_bytes()).unwrap();
+    let seconds = start.elapsed().as_secs_f32();
+    assert_eq!(imported.skeleton.len(), n + 2);
+    assert!(seconds < 8.0, "{seconds} s for {n} chained nodes");
+    // Each leaf is a root (no joint above it), under the identity chain.
+    assert_eq!(
+        imported
+            .skeleton
+            .parents()
+            .iter()
+            .filter(|&&p| p < 0)
+            .count(),
+        n + 1
+    );
+}
+
+#[test]
+fn a_node_with_two_parents_or_its_own_child_is_rejected() {
+    let msg = |r: Result<_, ImportError>| r.map(|_| ()).unwrap_err().to_string();
+    // The knee (node 2) under the hip and under the mesh node too.
+    let e = msg(tiny_with(
+        "{\"mesh\":0,\"skin\":0}",
+        "{\"mesh\":0,\"skin\":0,\"children\":[2]}",
+    ));
+    assert!(
+        e.contains("node 2 has two parents") && e.contains("at most one parent"),
+        "{e}"
+    );
+    let e = msg(tiny_with(
+        "{\"name\":\"hip\",\"children\":[2]}",
+        "{\"name\":\"hip\",\"children\":[2,1]}",
+    ));
+    assert!(
+        e.contains("lists itself as a child") || e.contains("not a valid"),
+        "{e}"
+    );
+}

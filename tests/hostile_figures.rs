@@ -125,3 +125,68 @@ fn a_rejected_tension_keeps_the_previous_tension() {
     assert!(scene.set_tension(3.0).is_err());
     scene.set_tension(0.5).unwrap();
 }
+
+// ---- a rejected setter changes nothing ----
+
+#[test]
+fn rejected_setters_leave_every_field_as_it_was() {
+    use glam::Vec3;
+    use inbetween::figures::transforms::{Order, SingleShape};
+    let mut shape = SingleShape::new();
+    let before = shape.matrix(Order::RotateFirst);
+    let e = shape
+        .set_transform(Vec3::new(5.0, 6.0, 7.0), Vec3::new(f32::NAN, 0.0, 0.0))
+        .unwrap_err();
+    assert!(e.contains("rx"), "{e}");
+    assert_eq!(
+        shape.matrix(Order::RotateFirst),
+        before,
+        "the translation was kept"
+    );
+
+    let mut jump = inbetween::figures::expressive::JumpComparison::new();
+    let duration = jump.duration();
+    assert!(jump.set_principles(0.55, f32::NAN).is_err());
+    assert_eq!(jump.duration(), duration, "the anticipation was kept");
+
+    let mut skeleton = inbetween::figures::skeleton::SkeletonFigure::new();
+    let e = skeleton.set_blend("none-of-these", 1.0).unwrap_err();
+    assert!(e.contains("no clip named"), "{e}");
+    skeleton.set_blend("none", 1.0).unwrap();
+}
+
+// ---- huge finite values: rejected with their range, never NaN later ----
+
+#[test]
+fn rigid_keys_outside_their_range_are_rejected() {
+    use glam::{Quat, Vec3};
+    use inbetween::figures::rigid::{AffineKeys, RigidMotion};
+    let mut rigid = RigidMotion::new();
+    let axis = rigid.screw_axis();
+    let q = Quat::from_xyzw(1e38, 0.7071, 0.0, 0.7071);
+    let e = rigid.set_end_quat(q, Vec3::X).unwrap_err();
+    assert!(e.contains("[-10000, 10000]"), "{e}");
+    let e = rigid
+        .set_end(Vec3::Y, 90.0, Vec3::new(1e38, 0.0, 0.0))
+        .unwrap_err();
+    assert!(e.contains("tx must lie in [-100, 100]"), "{e}");
+    assert_eq!(rigid.screw_axis(), axis, "a rejected key changes nothing");
+    // At the edge of the range every speed is finite.
+    let q = Quat::from_xyzw(1e4, 1e4, -1e4, 1e4);
+    rigid.set_end_quat(q, Vec3::splat(100.0)).unwrap();
+    for row in rigid.sample_speed(20).unwrap() {
+        assert!(row.iter().all(|v| v.is_finite()), "{row:?}");
+    }
+
+    let mut affine = AffineKeys::new();
+    let e = affine
+        .set_key_b(30.0, Vec3::new(1e38, 2.0, 1.0), 0.3)
+        .unwrap_err();
+    assert!(e.contains("sx must lie in"), "{e}");
+    affine
+        .set_key_b(30.0, Vec3::new(1e4, 2.0, 1.0), 0.3)
+        .unwrap();
+    for row in affine.sample_determinant(20).unwrap() {
+        assert!(row.iter().all(|v| v.is_finite()), "{row:?}");
+    }
+}

@@ -267,7 +267,7 @@ async fn a_freed_mesh_is_gone_and_drawing_it_draws_nothing() {
 
 #[wasm_bindgen_test]
 async fn viewer_rejects_an_unknown_backend_with_a_message() {
-    let result = inbetween::web::Viewer::create(canvas(8, 8), "vulkan".into()).await;
+    let result = inbetween::web::Viewer::create(canvas(8, 8).into(), "vulkan".into()).await;
     assert!(result.is_err());
     assert_eq!(BackendChoice::parse("webgl2"), Ok(BackendChoice::WebGl2));
     assert!(BackendChoice::parse("vulkan")

@@ -239,15 +239,29 @@ impl FlockFigure {
         Ok(())
     }
 
-    /// Maximum speed, m/s, in [0.1, 10].
+    /// Maximum speed, m/s, in [0.1, 10] and not below the minimum speed.
     pub fn set_max_speed(&mut self, speed: f32) -> Result<(), String> {
-        self.params.max_speed = in_range("max speed", speed, 0.1, 10.0)?;
+        let speed = in_range("max speed", speed, 0.1, 10.0)?;
+        let min = self.params.min_speed;
+        if speed < min {
+            return Err(format!(
+                "max speed must be at least the min speed, {min} m/s, got {speed}"
+            ));
+        }
+        self.params.max_speed = speed;
         Ok(())
     }
 
-    /// Minimum speed, m/s, in [0, 10] (above the maximum speed it acts as the maximum).
+    /// Minimum speed, m/s, in [0, 10] and not above the maximum speed.
     pub fn set_min_speed(&mut self, speed: f32) -> Result<(), String> {
-        self.params.min_speed = in_range("min speed", speed, 0.0, 10.0)?;
+        let speed = in_range("min speed", speed, 0.0, 10.0)?;
+        let max = self.params.max_speed;
+        if speed > max {
+            return Err(format!(
+                "min speed must be at most the max speed, {max} m/s, got {speed}"
+            ));
+        }
+        self.params.min_speed = speed;
         Ok(())
     }
 

@@ -353,8 +353,10 @@ impl JumpComparison {
         anticipation: f32,
         stretch_per_speed: f32,
     ) -> Result<(), String> {
-        self.jump.anticipation = in_range("anticipation", anticipation, 0.0, 0.6)?;
-        self.jump.stretch_per_speed = in_range("stretch", stretch_per_speed, 0.0, 0.2)?;
+        let anticipation = in_range("anticipation", anticipation, 0.0, 0.6)?;
+        let stretch_per_speed = in_range("stretch", stretch_per_speed, 0.0, 0.2)?;
+        self.jump.anticipation = anticipation;
+        self.jump.stretch_per_speed = stretch_per_speed;
         Ok(())
     }
 

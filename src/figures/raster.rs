@@ -1039,10 +1039,14 @@ impl Shading {
         ks: f32,
         shininess: f32,
     ) -> Result<(), String> {
-        self.material.ambient = in_range("ambient k_a", ka, 0.0, 1.0)?;
-        self.material.diffuse = in_range("diffuse k_d", kd, 0.0, 1.0)?;
-        self.material.specular = in_range("specular k_s", ks, 0.0, 1.0)?;
-        self.material.shininess = in_range("shininess", shininess, 1.0, 256.0)?;
+        let ambient = in_range("ambient k_a", ka, 0.0, 1.0)?;
+        let diffuse = in_range("diffuse k_d", kd, 0.0, 1.0)?;
+        let specular = in_range("specular k_s", ks, 0.0, 1.0)?;
+        let shininess = in_range("shininess", shininess, 1.0, 256.0)?;
+        self.material.ambient = ambient;
+        self.material.diffuse = diffuse;
+        self.material.specular = specular;
+        self.material.shininess = shininess;
         self.stale = true;
         Ok(())
     }

@@ -4,7 +4,7 @@
 
 use super::rotations::draw_plane;
 use super::{
-    compare_note, failure_note, finite, format_number, in_range, palette, rotation_problem,
+    compare_note, failure_note, format_number, in_range, palette, rotation_problem,
     unit_quat_problem, Frame, MeshId, Runner, DEFAULT_RUNNER,
 };
 use crate::exercises::run;
@@ -32,6 +32,25 @@ pub const METHODS: [(Method, Vec3); 3] = [
     (Method::Screw, palette::Z_AXIS),
 ];
 pub const SCREW_AXIS: Vec3 = palette::PURPLE;
+
+/// The figures' physical range: key translations within ±`MAX_TRANSLATION_M` metres on each axis,
+/// angles within ±`MAX_ANGLE_DEG`, axis, quaternion and matrix entries, scales and shears within
+/// ±`MAX_COMPONENT`. Squares and products of these stay far from `f32`'s overflow, so every
+/// normalisation, determinant and speed derived from a key is finite.
+pub const MAX_TRANSLATION_M: f32 = 100.0;
+/// See [`MAX_TRANSLATION_M`].
+pub const MAX_ANGLE_DEG: f32 = 3600.0;
+/// See [`MAX_TRANSLATION_M`].
+pub const MAX_COMPONENT: f32 = 1e4;
+
+/// Each of `v`'s components in `[-limit, limit]`, else an error naming `name`'s range.
+fn check_vec(name: &str, v: Vec3, limit: f32) -> Result<Vec3, String> {
+    Ok(Vec3::new(
+        in_range(&format!("{name} x"), v.x, -limit, limit)?,
+        in_range(&format!("{name} y"), v.y, -limit, limit)?,
+        in_range(&format!("{name} z"), v.z, -limit, limit)?,
+    ))
+}
 
 /// Figure 1: a frame moving from key A to key B by translation lerp + slerp, by dual quaternion
 /// linear blending and by screw interpolation, with the paths of its origin and nose and the
@@ -81,7 +100,8 @@ impl RigidMotion {
 
     /// Key B: rotation by `angle_deg` about `axis` (any non-zero direction), then `translation`.
     pub fn set_end(&mut self, axis: Vec3, angle_deg: f32, translation: Vec3) -> Result<(), String> {
-        let angle = finite("angle", angle_deg)? * DEG;
+        let angle = in_range("angle", angle_deg, -MAX_ANGLE_DEG, MAX_ANGLE_DEG)? * DEG;
+        let axis = check_vec("axis", axis, MAX_COMPONENT)?;
         let r = AxisAngle::new(axis, angle).map_err(|e| e.to_string())?;
         let t = check_translation(translation)?;
         self.set_end_dq(DualQuat::from_rotation_translation(r.to_quat(), t));
@@ -90,6 +110,13 @@ impl RigidMotion {
 
     /// Key B from a quaternion (normalised; zero or NaN rejected) and a translation.
     pub fn set_end_quat(&mut self, q: Quat, translation: Vec3) -> Result<(), String> {
+        let limit = MAX_COMPONENT;
+        if !q.is_finite() || glam::Vec4::from(q).abs().max_element() > limit {
+            return Err(format!(
+                "the quaternion's components must lie in [-{limit}, {limit}], got ({}, {}, {}, {})",
+                q.x, q.y, q.z, q.w
+            ));
+        }
         let q = check_quat(q).map_err(|e| e.to_string())?;
         let t = check_translation(translation)?;
         self.set_end_dq(DualQuat::from_rotation_translation(q, t));
@@ -324,10 +351,11 @@ impl RigidMotion {
 }
 
 fn check_translation(t: Vec3) -> Result<Vec3, String> {
+    let m = MAX_TRANSLATION_M;
     Ok(Vec3::new(
-        finite("tx", t.x)?,
-        finite("ty", t.y)?,
-        finite("tz", t.z)?,
+        in_range("tx", t.x, -m, m)?,
+        in_range("ty", t.y, -m, m)?,
+        in_range("tz", t.z, -m, m)?,
     ))
 }
 
@@ -394,15 +422,16 @@ impl AffineKeys {
     /// Key B: rotation by `angle_deg` about y, after a shear of x by y and a `scale`. A zero
     /// scale flattens the key (singular), a negative one mirrors it: both are rejected.
     pub fn set_key_b(&mut self, angle_deg: f32, scale: Vec3, shear: f32) -> Result<(), String> {
-        let angle = finite("angle", angle_deg)? * DEG;
+        let angle = in_range("angle", angle_deg, -MAX_ANGLE_DEG, MAX_ANGLE_DEG)? * DEG;
+        let c = MAX_COMPONENT;
         let scale = Vec3::new(
-            finite("sx", scale.x)?,
-            finite("sy", scale.y)?,
-            finite("sz", scale.z)?,
+            in_range("sx", scale.x, -c, c)?,
+            in_range("sy", scale.y, -c, c)?,
+            in_range("sz", scale.z, -c, c)?,
         );
         let shear = Mat3::from_cols(
             Vec3::X,
-            Vec3::new(finite("shear", shear)?, 1.0, 0.0),
+            Vec3::new(in_range("shear", shear, -c, c)?, 1.0, 0.0),
             Vec3::Z,
         );
         let linear = Mat3::from_rotation_y(angle) * shear * Mat3::from_diagonal(scale);
@@ -415,6 +444,12 @@ impl AffineKeys {
     pub fn set_key(&mut self, which: u32, m: Mat4) -> Result<(), String> {
         if which > 1 {
             return Err(format!("key must be 0 (A) or 1 (B), got {which}"));
+        }
+        let c = MAX_COMPONENT;
+        if let Some(v) = m.to_cols_array().iter().find(|v| v.abs() > c) {
+            return Err(format!(
+                "the matrix's entries must lie in [-{c}, {c}], got {v}"
+            ));
         }
         let key = AffineKey::from_mat4(m).map_err(|e| e.to_string())?;
         if which == 0 {

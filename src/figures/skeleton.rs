@@ -294,7 +294,7 @@ impl SkeletonFigure {
         let weight = in_range("blend weight", weight, 0.0, 1.0)?;
         self.blend_clip = match human::CLIP_NAMES.iter().position(|&c| c == name) {
             Some(i) => Some(i),
-            None if name.starts_with("none") => None,
+            None if name == "none" => None,
             None => return Err(format!("blend clip: no clip named {name:?}")),
         };
         self.blend_weight = weight;

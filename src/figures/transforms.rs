@@ -85,16 +85,19 @@ impl SingleShape {
 
     /// Sets the translation (metres) and the Euler angles (degrees, applied z, then y, then x).
     pub fn set_transform(&mut self, translation: Vec3, euler_deg: Vec3) -> Result<(), String> {
-        self.translation = Vec3::new(
+        // Every argument is checked before either field changes: a rejected call changes nothing.
+        let translation = Vec3::new(
             finite("tx", translation.x)?,
             finite("ty", translation.y)?,
             finite("tz", translation.z)?,
         );
-        self.euler_rad = Vec3::new(
+        let euler_deg = Vec3::new(
             finite("rx", euler_deg.x)?,
             finite("ry", euler_deg.y)?,
             finite("rz", euler_deg.z)?,
-        ) * DEG;
+        );
+        self.translation = translation;
+        self.euler_rad = euler_deg * DEG;
         Ok(())
     }
 

@@ -39,10 +39,11 @@ fn check_steps(steps: usize) -> Result<(), JsError> {
 /// lifetimes longer than the run), falling and bouncing on the floor and one sphere.
 #[wasm_bindgen(js_name = benchGpuParticles)]
 pub async fn bench_gpu_particles(
-    canvas: HtmlCanvasElement,
+    canvas: JsValue,
     count: f64,
     steps: f64,
 ) -> Result<f64, JsError> {
+    let canvas = super::canvas("canvas", canvas)?;
     let count = super::whole("count", count)?;
     let steps = super::whole("steps", steps)?;
     super::check_work("count", count as u64, steps, 1 << 28)?;
@@ -86,10 +87,11 @@ pub async fn bench_gpu_particles(
 /// ([`benchmark_flock`], as the CPU kernel `benchBoids`), naive O(N²) neighbours.
 #[wasm_bindgen(js_name = benchGpuBoids)]
 pub async fn bench_gpu_boids(
-    canvas: HtmlCanvasElement,
+    canvas: JsValue,
     boids: f64,
     steps: f64,
 ) -> Result<f64, JsError> {
+    let canvas = super::canvas("canvas", canvas)?;
     let boids = super::whole("boids", boids)?;
     let steps = super::whole("steps", steps)?;
     super::check_work("boids", boids as u64, steps, 1 << 24)?;

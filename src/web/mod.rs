@@ -209,3 +209,13 @@ pub(crate) fn check_work(
         )))
     }
 }
+
+/// `value` as a `<canvas>` element (a figure's or a bench's drawing surface).
+pub(crate) fn canvas(name: &str, value: JsValue) -> Result<web_sys::HtmlCanvasElement, JsError> {
+    value.dyn_into::<web_sys::HtmlCanvasElement>().map_err(|v| {
+        JsError::new(&format!(
+            "{name} must be a canvas element, got {}",
+            describe(&v)
+        ))
+    })
+}

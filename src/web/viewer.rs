@@ -3,7 +3,6 @@
 use crate::camera::OrbitCamera;
 use crate::render::{BackendChoice, Gpu, Renderer};
 use wasm_bindgen::prelude::*;
-use web_sys::HtmlCanvasElement;
 
 /// A 3D figure. JavaScript owns the frame loop and the pointer events; a lesson scene fills
 /// `renderer.frame` and calls [`Viewer::present`].
@@ -41,7 +40,8 @@ pub struct Viewer {
 impl Viewer {
     /// Creates the figure's context on `canvas`. `backend` is "auto", "webgpu" or "webgl2".
     /// Rejects with a readable message when the browser offers neither API.
-    pub async fn create(canvas: HtmlCanvasElement, backend: JsValue) -> Result<Viewer, JsError> {
+    pub async fn create(canvas: JsValue, backend: JsValue) -> Result<Viewer, JsError> {
+        let canvas = super::canvas("canvas", canvas)?;
         let backend: &str = &super::string("backend", &backend)?;
         let choice = BackendChoice::parse(&backend).map_err(|e| JsError::new(&e))?;
         let gpu = Gpu::new(canvas, choice)
