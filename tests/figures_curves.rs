@@ -637,3 +637,54 @@ fn figure_5s_acceleration_jumps_for_catmull_rom_and_not_for_natural() {
         }
     }
 }
+
+#[test]
+fn the_space_time_view_puts_the_clock_along_the_depth() {
+    let mut s = KeyframesScene::new();
+    let mut frame = Frame::default();
+    s.draw(&mut frame, 1.0).unwrap();
+    let curve: Vec<Vec3> = frame.segments_of(SPACETIME_COLOR).map(|(a, _)| a).collect();
+    assert!(!curve.is_empty(), "drawn by default");
+    // Every point is (x(τ), y(τ), −0.8 τ): the depth is the clock, the position the ball's.
+    for p in &curve {
+        let tau = -p.z / TIME_DEPTH_M_PER_SEC;
+        let q = s.position(tau).unwrap();
+        assert!((p.truncate() - q).length() < 1e-4, "{p} against {q} at {tau} s");
+    }
+    let deepest = curve.iter().fold(0.0f32, |m, p| m.min(p.z));
+    assert!((deepest + TIME_DEPTH_M_PER_SEC * s.track().duration_sec()).abs() < 0.02);
+    // The in-betweens lie on it at equal steps of depth (equal time).
+    let ghosts: Vec<f32> = frame
+        .points
+        .iter()
+        .filter(|p| Vec3::from_slice(&p.color[..3]) == GHOST_COLOR)
+        .map(|p| p.center[2])
+        .collect();
+    assert_eq!(ghosts.len(), 24);
+    let step = ghosts[1] - ghosts[0];
+    assert!(ghosts.windows(2).all(|w| (w[1] - w[0] - step).abs() < 1e-4));
+    // The ball rides the curve at the clock's depth.
+    let ball = frame.meshes.iter().find(|m| m.color.truncate() == BALL_COLOR).unwrap();
+    let centre = ball.model.w_axis.truncate();
+    assert!((centre.z + TIME_DEPTH_M_PER_SEC * 1.0).abs() < 1e-5, "{centre}");
+    assert!((centre.truncate() - s.position(1.0).unwrap()).length() < 1e-5);
+    // Off: no space-time curve, the in-betweens back on the path in the plane z = 0.
+    s.set_time_depth(false);
+    let mut flat = Frame::default();
+    s.draw(&mut flat, 1.0).unwrap();
+    assert_eq!(flat.segments_of(SPACETIME_COLOR).count(), 0);
+    assert!(flat
+        .points
+        .iter()
+        .filter(|p| Vec3::from_slice(&p.color[..3]) == GHOST_COLOR)
+        .all(|p| p.center[2] == 0.0));
+    // With the student's functions the curve is theirs: a wrong find_segment moves it.
+    s.set_time_depth(true);
+    s.set_use_exercise(true);
+    s.set_runner(wrong);
+    let mut theirs = Frame::default();
+    s.draw(&mut theirs, 1.0).unwrap();
+    let a: Vec<(Vec3, Vec3)> = theirs.segments_of(SPACETIME_COLOR).collect();
+    assert_eq!(a.len(), frame.segments_of(SPACETIME_COLOR).count());
+    assert!(a.iter().zip(frame.segments_of(SPACETIME_COLOR)).any(|(x, y)| (x.0 - y.0).length() > 0.05));
+}

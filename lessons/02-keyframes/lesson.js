@@ -113,7 +113,7 @@ const listeners = []; // figures that re-sample after an edit of the shared keys
 /** Registers a figure's re-sampling and runs it once now (frames may come before any edit). */
 const listen = (f) => { listeners.push(f); f(); };
 const message = document.getElementById('keys-message');
-const p = { scheme: 'cardinal', tension: 1, ghosts: 24, arcLength: false, ease: 'none', useExercise: false };
+const p = { scheme: 'cardinal', tension: 1, ghosts: 24, timeDepth: true, arcLength: false, ease: 'none', useExercise: false };
 let schemeControl = null;
 lesson.onFrame((dt) => timeline.advance(dt)); // first: every figure below reads timeline.time
 
@@ -140,12 +140,14 @@ function refresh() {
 }
 
 if (keysViewer) {
-  keysViewer.setCamera(0, 1.0, 0, 6.8, 0.35, 0.22);
+  // Raised and turned, so the clock's depth axis of the space-time curve is seen.
+  keysViewer.setCamera(0.3, 0.8, -1.3, 8.2, 0.55, 0.45);
   const note = document.getElementById('keys-note');
   const gui = new GUI({ container: document.querySelector('#fig-keys .panel'), title: 'Keyframes' });
   schemeControl = gui.add(p, 'scheme', SCHEMES).name('scheme').onChange((v) => edit(() => scene.setScheme(v)));
   gui.add(p, 'tension', 0, 2, 0.01).name('tension μ (cardinal)').onChange((v) => edit(() => scene.setTension(v)));
   gui.add(p, 'ghosts', 2, 60, 1).name('in-betweens').onChange((v) => edit(() => scene.setGhostCount(v)));
+  gui.add(p, 'timeDepth').name('time as depth (3D)').onChange((v) => edit(() => scene.setTimeDepth(v)));
   gui.add(p, 'useExercise').name('use my exercise').onChange((v) => edit(() => scene.setUseExercise(v)));
 
   const canvas = document.querySelector('#fig-keys .editor canvas');

@@ -27,6 +27,12 @@ pub const GHOST_COLOR: Vec3 = palette::GREY;
 pub const BALL_COLOR: Vec3 = palette::RED;
 /// Tangent handles, teal.
 pub const TANGENT_COLOR: Vec3 = palette::TEAL;
+/// The motion in space and time (Figure 1's time-as-depth view), purple.
+pub const SPACETIME_COLOR: Vec3 = palette::PURPLE;
+/// Figure 1's time-as-depth view: metres of depth (−z) per second of the clock.
+pub const TIME_DEPTH_M_PER_SEC: f32 = 0.8;
+/// Points of the space-time curve.
+const SPACETIME_POINTS: usize = 200;
 /// The jumps of a step motion (drawn thin, not part of the path).
 pub const JUMP_COLOR: Vec3 = palette::GREY;
 /// Seconds of motion a tangent handle stands for: the handle is `d · HANDLE_SEC` long.
@@ -139,6 +145,7 @@ pub struct KeyframesScene {
     ease: Ease,
     use_exercise: bool,
     ghost_count: usize,
+    time_depth: bool,
     runner: Runner,
     /// The student's path and ghosts, recomputed only after an edit (they do not depend on time).
     student: Option<StudentCache>,
@@ -148,6 +155,8 @@ pub struct KeyframesScene {
 struct StudentCache {
     path: Vec<Vec2>,
     ghosts: Vec<Vec2>,
+    /// Where the ball is at [`SPACETIME_POINTS`] equal steps of the clock.
+    spacetime: Vec<Vec2>,
     tangents: Vec<Vec2>,
     failures: Failures,
 }
@@ -222,6 +231,7 @@ impl KeyframesScene {
             ease: Ease::Linear,
             use_exercise: false,
             ghost_count: 24,
+            time_depth: true,
             runner: DEFAULT_RUNNER,
             student: None,
         }
@@ -340,6 +350,24 @@ impl KeyframesScene {
         Ok(())
     }
 
+    /// On: the 3D view also draws the motion in space and time, the clock along the depth
+    /// (−z, [`TIME_DEPTH_M_PER_SEC`]), with the in-betweens and the ball on that curve.
+    pub fn set_time_depth(&mut self, on: bool) {
+        self.time_depth = on;
+        self.student = None;
+    }
+
+    /// The clock time `τ` of the space-time curve's `k`-th of `n` points.
+    fn spacetime_tau(&self, k: usize) -> f32 {
+        self.track.duration_sec() * k as f32 / (SPACETIME_POINTS - 1) as f32
+    }
+
+    /// Where the ball is at [`SPACETIME_POINTS`] equal steps of the clock (reference functions).
+    pub fn spacetime(&self, out: &mut Vec<Vec2>) {
+        out.clear();
+        out.extend((0..SPACETIME_POINTS).map(|k| self.motion(self.spacetime_tau(k)).position));
+    }
+
     /// Draw (and check) with the student's functions in `src/exercises/curves.rs`.
     pub fn set_use_exercise(&mut self, on: bool) {
         self.use_exercise = on;
@@ -434,7 +462,7 @@ impl KeyframesScene {
     /// note for the page: empty, or what the student's exercises did.
     pub fn draw(&mut self, frame: &mut Frame, tau: f32) -> Result<String, String> {
         let tau = self.wrap(finite("time", tau)?);
-        let (mut path, mut ghosts) = (Vec::new(), Vec::new());
+        let (mut path, mut ghosts, mut spacetime) = (Vec::new(), Vec::new(), Vec::new());
         let (ball, note) = if self.use_exercise {
             if self.student.is_none() {
                 self.student = Some(self.student_cache());
@@ -442,15 +470,22 @@ impl KeyframesScene {
             let cache = self.student.as_ref().expect("just filled");
             path.clone_from(&cache.path);
             ghosts.clone_from(&cache.ghosts);
+            spacetime.clone_from(&cache.spacetime);
             let mut failures = cache.failures.clone();
             let ball = self.student_motion(tau, &cache.tangents, &mut failures);
             (ball, self.exercise_note(tau, &failures))
         } else {
             self.path(&mut path);
             self.ghosts(&mut ghosts);
+            if self.time_depth {
+                self.spacetime(&mut spacetime);
+            }
             (self.motion(tau).position, String::new())
         };
         self.draw_scene(frame, &path, &ghosts, ball);
+        if self.time_depth {
+            self.draw_spacetime(frame, &spacetime, &ghosts, ball, tau);
+        }
         Ok(note)
     }
 
@@ -466,8 +501,10 @@ impl KeyframesScene {
             let points: Vec<Vec3> = path.iter().map(|&p| at(p)).collect();
             frame.wide_polyline(&points, PATH_COLOR, crate::draw::CURVE_PX);
         }
-        for &g in ghosts {
-            frame.point(at(g), 0.045, GHOST_COLOR);
+        if !self.time_depth {
+            for &g in ghosts {
+                frame.point(at(g), 0.045, GHOST_COLOR);
+            }
         }
         let hermite = self.track.interpolation() == Interpolation::Hermite;
         for (i, &p) in self.track.values().iter().enumerate() {
@@ -480,8 +517,59 @@ impl KeyframesScene {
             // A thin stem to the ground makes the plane's depth readable.
             frame.line(Vec3::new(p.x, 0.0, 0.0), at(p), palette::GRID);
         }
-        let model = Mat4::from_translation(at(ball)) * Mat4::from_scale(Vec3::splat(0.16));
+        if self.time_depth {
+            // The ball's place on the path, under the ball on the space-time curve.
+            frame.point(at(ball), 0.06, BALL_COLOR);
+        } else {
+            let model = Mat4::from_translation(at(ball)) * Mat4::from_scale(Vec3::splat(0.16));
+            frame.mesh(MeshId::SPHERE, model, BALL_COLOR);
+        }
+    }
+
+    /// The motion in space and time: `(x(τ), y(τ), −D τ)` with `D` =
+    /// [`TIME_DEPTH_M_PER_SEC`]. The in-betweens lie on it at equal steps of depth (equal
+    /// time), so where the curve runs steeply into the depth the ball is slow; the ball rides
+    /// it, joined by a thin line to its place on the path; a time axis with a tick per second
+    /// runs into the depth beside the path.
+    fn draw_spacetime(
+        &self,
+        frame: &mut Frame,
+        spacetime: &[Vec2],
+        ghosts: &[Vec2],
+        ball: Vec2,
+        tau: f32,
+    ) {
+        let depth = |t: f32| -TIME_DEPTH_M_PER_SEC * t;
+        let points: Vec<Vec3> = spacetime
+            .iter()
+            .enumerate()
+            .map(|(k, p)| p.extend(depth(self.spacetime_tau(k))))
+            .collect();
+        frame.wide_polyline(&points, SPACETIME_COLOR, crate::draw::CURVE_PX);
+        let n = ghosts.len();
+        for (k, g) in ghosts.iter().enumerate() {
+            frame.point(g.extend(depth(self.ghost_tau(k, n))), 0.045, GHOST_COLOR);
+        }
+        let on_curve = ball.extend(depth(tau));
+        frame.line(ball.extend(0.0), on_curve, palette::GRID);
+        let model = Mat4::from_translation(on_curve) * Mat4::from_scale(Vec3::splat(0.16));
         frame.mesh(MeshId::SPHERE, model, BALL_COLOR);
+        // The time axis, left of the path on the ground.
+        let left = self
+            .track
+            .values()
+            .iter()
+            .fold(f32::MAX, |m, p| m.min(p.x))
+            - 0.5;
+        let duration = self.track.duration_sec();
+        let axis = |t: f32| Vec3::new(left, 0.0, depth(t));
+        frame.arrow(axis(0.0), axis(duration + 0.4), palette::DARK, 0.12);
+        for second in 0..=duration.floor() as usize {
+            let p = axis(second as f32);
+            frame.line(p - Vec3::X * 0.08, p + Vec3::X * 0.08, palette::DARK);
+            frame.label(p - Vec3::X * 0.35 - Vec3::Y * 0.1, format!("{second} s"), palette::DARK);
+        }
+        frame.label(axis(duration + 0.6), "time (s)", palette::DARK);
     }
 
     /// Makes `track` the scene's track if its keys lie in the editor's range (see
@@ -600,9 +688,17 @@ impl KeyframesScene {
         let ghosts = (0..n)
             .map(|k| self.student_motion(self.ghost_tau(k, n), &tangents, &mut failures))
             .collect();
+        let spacetime = if self.time_depth {
+            (0..SPACETIME_POINTS)
+                .map(|k| self.student_motion(self.spacetime_tau(k), &tangents, &mut failures))
+                .collect()
+        } else {
+            Vec::new()
+        };
         StudentCache {
             path,
             ghosts,
+            spacetime,
             tangents,
             failures,
         }

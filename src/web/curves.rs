@@ -174,6 +174,14 @@ impl KeyframesScene {
         self.scene.is_held()
     }
 
+    /// On: the 3D view also draws the motion in space and time (the clock along the depth).
+    #[wasm_bindgen(js_name = setTimeDepth)]
+    pub fn set_time_depth(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
+        self.scene.set_time_depth(on);
+        Ok(())
+    }
+
     /// Empty, or why "constant speed" does not apply to the current scheme (step).
     #[wasm_bindgen(getter, js_name = timingNote)]
     pub fn timing_note(&self) -> String {
