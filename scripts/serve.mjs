@@ -3,7 +3,12 @@
 // lessons/ or www/ re-copies the pages; open pages then reload themselves (www/devloop.js), or
 // show the compiler's errors when the build failed (the previous build is still served).
 //
-//   node scripts/serve.mjs [--port 8000] [--watch] [--solutions]
+//   node scripts/serve.mjs [--port 8000] [--watch] [--solutions] [--dist DIR] [--build-first release|dev]
+//
+// --build-first (with --watch) serves what dist/ holds at once and builds the current sources in
+// the background with that profile; open pages reload when it is done.
+// It serves dist/, or DIR (scripts/serve passes its INBETWEEN_DIST, the folder scripts/build
+// writes; the rebuilds then write there too).
 //
 // The watching server tells pages about builds at /__devloop/events (Server-Sent Events, one JSON
 // status per message) and /__devloop/status (the same JSON), and marks every HTML page it serves
@@ -182,26 +187,46 @@ function runBuild(args) {
   });
 }
 
-function watchAndRebuild(extra, devloop) {
-  let pending = null;
+/**
+ * Rebuilds when files change, one build at a time: a change under src/ rebuilds the debug wasm and
+ * the pages, one under lessons/ or www/ the pages alone. With `first` ("release" or "dev"), it
+ * first builds the current sources with that profile: the server is already serving what dist/
+ * held, and open pages reload when the build is done.
+ */
+function watchAndRebuild(extra, devloop, first = null) {
+  const args = { release: extra, dev: ['--dev', ...extra], rust: ['--dev', ...extra], pages: ['--assets-only'] };
+  // Builds waiting, in order. A Rust build also copies the pages, so it takes a waiting pages
+  // build's place, and a pages build waits behind a Rust build for nothing.
+  const queue = [];
   let busy = false;
-  const schedule = (kind) => {
-    pending = pending === 'rust' ? 'rust' : kind;
-    setTimeout(async () => {
-      if (busy || !pending) return;
-      busy = true;
-      const what = pending;
-      pending = null;
+  const run = async () => {
+    if (busy || !queue.length) return;
+    busy = true;
+    const what = queue.shift();
+    if (what === 'release' || what === 'dev') {
+      console.log(`serve: building the current sources (${what}) in the background; open pages reload when it is done`);
+    } else {
       console.log(`\nserve: change in ${what === 'rust' ? 'src/' : 'the pages'}, rebuilding…`);
-      devloop.started(what);
-      const { ok, log } = await runBuild(what === 'rust' ? ['--dev', ...extra] : ['--assets-only']);
-      devloop.finished(what, ok, log);
-      console.log(ok ? 'serve: rebuilt; open pages reload themselves.'
-        : 'serve: the build failed (see above); the old build is still served, and open pages show the errors.');
-      busy = false;
-      if (pending) schedule(pending);
-    }, 300);
+    }
+    // For the pages, every build of the wasm is a Rust build.
+    const kind = what === 'pages' ? 'pages' : 'rust';
+    devloop.started(kind);
+    const { ok, log } = await runBuild(args[what]);
+    devloop.finished(kind, ok, log);
+    console.log(ok ? 'serve: rebuilt; open pages reload themselves.'
+      : 'serve: the build failed (see above); the old build is still served, and open pages show the errors.');
+    busy = false;
+    if (queue.length) setTimeout(run, 300);
   };
+  const schedule = (kind) => {
+    if (kind === 'rust') {
+      const pages = queue.indexOf('pages');
+      if (pages >= 0) queue.splice(pages, 1);
+    }
+    if (!queue.includes(kind) && !(kind === 'pages' && queue.includes('rust'))) queue.push(kind);
+    setTimeout(run, 300);
+  };
+  if (first) schedule(first);
   watch('src', { recursive: true }, () => schedule('rust'));
   for (const dir of ['lessons', 'www']) watch(dir, { recursive: true }, () => schedule('pages'));
 }
@@ -211,10 +236,13 @@ if (import.meta.url === `file://${process.argv[1]}`) {
   const portArg = args.indexOf('--port');
   let port = Number(portArg >= 0 ? args[portArg + 1] : process.env.PORT ?? 8000);
   const devloop = args.includes('--watch') ? new Devloop() : null;
+  const distArg = args.indexOf('--dist');
+  const dist = distArg >= 0 ? args[distArg + 1] : 'dist';
+  if (distArg >= 0) process.env.INBETWEEN_DIST = dist;
   let server;
   for (let attempt = 0; !server; attempt++) {
     try {
-      server = await startServer('dist', port, { devloop });
+      server = await startServer(dist, port, { devloop });
     } catch (e) {
       if (e.code !== 'EADDRINUSE' || attempt > 20) throw e;
       port += 1;
@@ -222,7 +250,13 @@ if (import.meta.url === `file://${process.argv[1]}`) {
   }
   console.log(`serve: lessons at http://127.0.0.1:${server.address().port}/lessons/  (Ctrl-C stops)`);
   if (devloop) {
-    watchAndRebuild(args.includes('--solutions') ? ['--solutions'] : [], devloop);
+    const firstArg = args.indexOf('--build-first');
+    const first = firstArg >= 0 ? args[firstArg + 1] : null;
+    if (first !== null && first !== 'release' && first !== 'dev') {
+      console.error(`serve: --build-first takes release or dev, not ${first}`);
+      process.exit(2);
+    }
+    watchAndRebuild(args.includes('--solutions') ? ['--solutions'] : [], devloop, first);
     console.log('serve: watching src/, lessons/ and www/ for changes; open pages reload after each rebuild');
   }
 }
