@@ -26,12 +26,13 @@ if (viewer) {
     title: 'Weights over the loop', xLabel: 'time (s)', yLabel: 'weight (no unit)',
     series: [...names, 'Σ w (targets)', 'full form: base + Σ w'],
     colors: ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#1f2430', '#e68a00'], minSpan: 1, height: 200,
-    widths: [7, 5.5, 4, 2.5, 6, 2], dashes: [null, null, null, null, null, [6, 4]],
+    widths: [7, 5.5, 4, 2.5, 3.5, 1.5], dashes: [null, null, null, null, null, [6, 4]],
   });
   const updatePlot = () => { plot.setData(columns(scene.weightCurves(81), 7)); reframe(); };
   const p = { show: 'both', baseAuto: false, base: 0, animate: true, deltas: true, useExercise: false };
   const start = scene.weights();
-  names.forEach((n, k) => { p[n] = start[k]; });
+  // The weights come as 32-bit floats: shown at the sliders' 0.01 steps.
+  names.forEach((n, k) => { p[n] = Number(start[k].toFixed(2)); });
   const gui = new GUI({ container: document.querySelector('#fig-face .panel'), title: 'Face' });
   const weights = gui.addFolder('target weights');
   names.forEach((n, k) => weights.add(p, n, -0.5, 1.5, 0.01).name(n).onChange((w) => { scene.setWeight(k, w); updatePlot(); }));

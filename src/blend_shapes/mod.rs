@@ -330,9 +330,12 @@ fn front(p: Vec3) -> f32 {
 /// cheeks), metres.
 pub fn face_displacement(k: usize, p: Vec3) -> Vec3 {
     match k {
-        // Smile: the mouth's corners rise 16 cm and pull back; its middle stays.
+        // Smile: the mouth's corners rise 16 cm and pull back; its middle stays, and the rise
+        // fades out beyond the corners (by |x| = 0.55) so the cheeks do not fold.
         0 => {
-            let f = front(p) * bump(p.y, MOUTH_Y, 0.12) * smoothstep(0.0, 0.3, p.x.abs());
+            let x = p.x.abs();
+            let corners = smoothstep(0.0, 0.25, x) * smoothstep(0.55, 0.3, x);
+            let f = front(p) * bump(p.y, MOUTH_Y, 0.12) * corners;
             Vec3::new(0.05 * p.x.signum(), 0.16, -0.05) * f
         }
         // Jaw open: everything below the middle of the mouth drops 25 cm (less towards the
