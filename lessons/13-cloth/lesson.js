@@ -7,6 +7,8 @@ import { ClothScene, SpringScene } from '../../pkg/inbetween.js';
 const lesson = await startLesson();
 const ORANGE = cssVar('--orange');
 const TEAL = cssVar('--teal');
+// Every plot draws mass-spring wide under a narrow XPBD line, so the two stay visible where
+// they coincide.
 // Columns of flat samples, with NaN (after an explosion) as a gap.
 const gaps = (flat, width) => columns(flat, width).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
 
@@ -61,7 +63,7 @@ if (springViewer) {
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('spring-plot'), {
     title: 'Distance from the anchor', xLabel: 'time (s)', yLabel: 'length (m)',
-    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], minSpan: 0.1,
+    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], widths: [5, 1.5], minSpan: 0.1,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
@@ -109,11 +111,11 @@ if (flagViewer) {
   gui.add(p, 'reset').name('reset');
   const energy = new Plot(document.getElementById('flag-energy'), {
     title: 'Total energy (kinetic + gravity + springs)', xLabel: 'time (s)', yLabel: 'energy (J)',
-    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], minSpan: 0.1,
+    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], widths: [5, 1.5], minSpan: 0.1,
   });
   const stretch = new Plot(document.getElementById('flag-stretch'), {
     title: 'Largest stretch of a structural spring', xLabel: 'time (s)', yLabel: 'stretch (%)',
-    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], minSpan: 1,
+    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], widths: [5, 1.5], minSpan: 1,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
