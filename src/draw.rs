@@ -111,6 +111,11 @@ pub struct MarkerInstance {
 pub const MARKER_DOT: f32 = 0.0;
 /// [`MarkerInstance::shape`]: a short bar across a path (equal-time ticks).
 pub const MARKER_TICK: f32 = 1.0;
+/// [`MarkerInstance::shape`]: a soft dark disc lying on the ground (y = 0) under an object, its
+/// radius in metres in `size_px` and its darkness in the colour's alpha ([`Frame::contact_shadow`]).
+pub const MARKER_SHADOW: f32 = 2.0;
+/// Height of a contact shadow above the ground: over the grid's lines, under anything standing.
+pub const SHADOW_LIFT_M: f32 = 0.002;
 /// The narrowest and widest stroke, in CSS pixels.
 pub const MIN_WIDTH_PX: f32 = 1.0;
 pub const MAX_WIDTH_PX: f32 = 6.0;
@@ -399,6 +404,37 @@ impl Frame {
             tangent: tangent.to_array(),
             shape,
         });
+    }
+
+    /// A soft contact shadow on the ground (y = 0) under an object of about `radius` metres whose
+    /// lowest point is at `bottom`: darkest (alpha 0.45) and as wide as the object when it
+    /// touches the ground, wider (by 0.35 of the height) and fainter as it rises, gone at
+    /// [`Frame::shadow_reach`] metres up. It lets a reader judge from one view how high
+    /// something is and whether it touches the ground. Nothing is drawn for a non-finite or
+    /// non-positive radius or for an object below the ground.
+    pub fn contact_shadow(&mut self, bottom: Vec3, radius: f32) {
+        if !bottom.is_finite() || !radius.is_finite() || radius <= 0.0 || bottom.y < -1e-3 {
+            return;
+        }
+        let height = bottom.y.max(0.0);
+        let darkness = 0.45 * (1.0 - height / Self::shadow_reach(radius));
+        if darkness <= 0.0 {
+            return;
+        }
+        self.markers.push(MarkerInstance {
+            center: [bottom.x, SHADOW_LIFT_M, bottom.z],
+            size_px: radius + 0.35 * height,
+            color: [0.0, 0.0, 0.0, darkness],
+            tangent: [0.0; 3],
+            shape: MARKER_SHADOW,
+        });
+    }
+
+    /// The height (metres) at which an object of `radius` metres no longer casts a
+    /// [`Frame::contact_shadow`]: four radii, and at least 1.5 m so small balls keep theirs
+    /// through a bounce.
+    pub fn shadow_reach(radius: f32) -> f32 {
+        (4.0 * radius).max(1.5)
     }
 
     /// Declares that the box from `min` to `max` must stay in view (see [`Frame::keep_in_view`]):

@@ -132,3 +132,31 @@ fn wide_lines_and_markers_change_the_fingerprint() {
     framed.keep_box_in_view(Vec3::ZERO, Vec3::ONE);
     assert_ne!(framed.fingerprint(), base().fingerprint());
 }
+
+#[test]
+fn a_contact_shadow_widens_and_fades_as_its_object_rises() {
+    let mut f = Frame::default();
+    for h in [0.0, 0.1, 0.3, 0.6, 1.49] {
+        f.contact_shadow(Vec3::new(1.0, h, -2.0), 0.2);
+    }
+    // At the reach (1.5 m for a small object, four radii for a big one) and above, below the
+    // ground, or a bad radius: no shadow.
+    assert_eq!(Frame::shadow_reach(0.2), 1.5);
+    assert_eq!(Frame::shadow_reach(1.0), 4.0);
+    f.contact_shadow(Vec3::new(0.0, 1.5, 0.0), 0.2);
+    f.contact_shadow(Vec3::new(0.0, 4.0, 0.0), 1.0);
+    f.contact_shadow(Vec3::new(0.0, -0.5, 0.0), 0.2);
+    f.contact_shadow(Vec3::ZERO, 0.0);
+    f.contact_shadow(Vec3::ZERO, f32::NAN);
+    f.contact_shadow(Vec3::NAN, 0.2);
+    assert_eq!(f.markers.len(), 5);
+    for m in &f.markers {
+        assert_eq!(m.shape, MARKER_SHADOW);
+        assert_eq!(m.center, [1.0, SHADOW_LIFT_M, -2.0], "on the ground under the object");
+    }
+    assert!((f.markers[0].color[3] - 0.45).abs() < 1e-6 && (f.markers[0].size_px - 0.2).abs() < 1e-6);
+    for pair in f.markers.windows(2) {
+        assert!(pair[1].color[3] < pair[0].color[3], "fainter higher up");
+        assert!(pair[1].size_px > pair[0].size_px, "wider higher up");
+    }
+}

@@ -6,7 +6,7 @@
 
 use glam::Vec3;
 use inbetween::camera::OrbitCamera;
-use inbetween::draw::{palette, StrokeStyle};
+use inbetween::draw::{palette, MeshId, StrokeStyle};
 use inbetween::render::{BackendChoice, Gpu, Renderer};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
@@ -189,4 +189,47 @@ async fn a_marker_keeps_its_size_in_pixels_at_any_distance() {
         let i = ((H / 2 * W + W / 2) * 4) as usize;
         assert!(pixels[i + 1] < 0x40, "{}: the fill is {:?}", gpu.backend_name, &pixels[i..i + 3]);
     }
+}
+
+#[wasm_bindgen_test]
+async fn a_contact_shadow_darkens_the_ground_under_an_object() {
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    renderer.px_per_css = 1.0;
+    // Looking almost straight down on a ball 0.1 m across hanging 0.25 m above the ground.
+    let c = OrbitCamera {
+        distance: 2.0,
+        pitch_rad: 1.5,
+        ..camera()
+    };
+    let ball = glam::Mat4::from_scale_rotation_translation(
+        Vec3::splat(0.1),
+        glam::Quat::IDENTITY,
+        Vec3::new(0.0, 0.35, 0.0),
+    );
+    // A ground point beside the ball's silhouette, inside its shadow.
+    let vp = c.projection(W as f32 / H as f32) * c.view();
+    let px = inbetween::camera::project_to_canvas(
+        vp,
+        glam::Vec2::new(W as f32, H as f32),
+        Vec3::new(0.14, 0.0, 0.0),
+    )
+    .unwrap();
+    let i = ((px.y.round() as u32 * W + px.x.round() as u32) * 4) as usize;
+    let mut green = Vec::new();
+    for shadow in [false, true] {
+        renderer.frame.mesh(MeshId::SPHERE, ball, palette::ORANGE);
+        if shadow {
+            renderer.frame.contact_shadow(Vec3::new(0.0, 0.25, 0.0), 0.1);
+        }
+        let pixels = renderer.render_to_rgba(&gpu, &c, W, H).await.unwrap();
+        green.push(pixels[i + 1]);
+    }
+    assert!(
+        green[1] + 5 < green[0],
+        "{}: the ground beside the ball goes from {} to {} with its shadow",
+        gpu.backend_name,
+        green[0],
+        green[1]
+    );
 }

@@ -1085,6 +1085,8 @@ impl BounceFigure {
         let model = Mat4::from_translation(self.sphere.center)
             * Mat4::from_scale(Vec3::splat(self.sphere.radius));
         frame.mesh(MeshId::SPHERE, model, palette::GREY);
+        let sphere_bottom = self.sphere.center - Vec3::Y * self.sphere.radius;
+        frame.contact_shadow(sphere_bottom, self.sphere.radius);
         for (i, p) in self.positions.iter().enumerate() {
             let color = if i == 0 {
                 palette::ORANGE
@@ -1096,6 +1098,8 @@ impl BounceFigure {
                 Mat4::from_translation(*p) * Mat4::from_scale(Vec3::splat(BALL_RADIUS)),
                 color,
             );
+            // A shadow on the floor shows how high each ball is and when it lands.
+            frame.contact_shadow(*p - Vec3::Y * BALL_RADIUS, BALL_RADIUS);
         }
         let mut note = String::new();
         if let Some(t) = self.impact_time() {

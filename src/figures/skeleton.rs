@@ -683,6 +683,14 @@ impl SkeletonFigure {
                 frame.axes(Mat4::from(self.model[i]), 0.1);
             }
         }
+        // A soft shadow on the floor under the character's middle: it shows how high the body
+        // is and whether its lowest joint is down.
+        if !self.model.is_empty() {
+            let sum: Vec3 = self.model.iter().map(|m| Vec3::from(m.translation)).sum();
+            let middle = sum / self.model.len() as f32;
+            let lowest = self.model.iter().map(|m| m.translation.y).fold(f32::MAX, f32::min);
+            frame.contact_shadow(Vec3::new(middle.x, lowest.max(0.0), middle.z), 0.25);
+        }
         let selected = Mat4::from(self.model[self.selected]);
         frame.labelled_axes(selected, 0.18);
         let p = selected.w_axis.truncate();

@@ -7,7 +7,7 @@ struct InstanceIn {
     @location(1) size_px: f32,      // CSS pixels; negative: drawn over everything
     @location(2) color: vec4<f32>,
     @location(3) tangent: vec3<f32>,
-    @location(4) shape: f32,        // 0: dot, 1: tick
+    @location(4) shape: f32,        // 0: dot, 1: tick, 2: contact shadow (size_px in metres)
 };
 struct VertexOut {
     @builtin(position) clip: vec4<f32>,
@@ -27,6 +27,15 @@ fn vs_main(@builtin(vertex_index) vertex: u32, in: InstanceIn) -> VertexOut {
     let corner = corners[vertex % 6u];
     let view_proj = globals.proj * globals.view;
     var out: VertexOut;
+    if (in.shape > 1.5) {
+        // A contact shadow: a square of the given radius on the ground plane around the centre.
+        let world = in.center + vec3<f32>(corner.x, 0.0, corner.y) * in.size_px;
+        out.clip = view_proj * vec4<f32>(world, 1.0);
+        out.color = in.color;
+        out.local = corner;
+        out.params = vec3<f32>(1.0, 1.0, in.shape);
+        return out;
+    }
     var clip = view_proj * vec4<f32>(in.center, 1.0);
     let half_viewport = 0.5 * globals.params.yz;
     let scale = globals.params.w;
@@ -62,6 +71,15 @@ fn vs_main(@builtin(vertex_index) vertex: u32, in: InstanceIn) -> VertexOut {
 
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
+    if (in.params.z > 1.5) {
+        // A contact shadow: darkest in the middle, fading smoothly to nothing at the rim.
+        let r2 = dot(in.local, in.local);
+        if (r2 >= 1.0) {
+            discard;
+        }
+        let fade = (1.0 - r2) * (1.0 - r2);
+        return vec4<f32>(output_color(in.color.rgb), in.color.a * fade);
+    }
     let half_size = in.params.x;
     let scale = in.params.y;
     // Signed distance to the shape's outline, device pixels (negative inside).
