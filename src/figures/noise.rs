@@ -1100,10 +1100,11 @@ impl TerrainScene {
         self.params
     }
 
-    /// The probe vertex: a third of the way in from the near-left corner.
+    /// The probe vertex: halfway across, a quarter of the way in from the near edge (at the
+    /// defaults, a slope facing the camera's side, where the grey arrow stands out).
     fn probe_index(&self) -> usize {
         let r = self.terrain.resolution();
-        (2 * r / 3) * r + r / 3
+        (3 * r / 4) * r + r / 2
     }
 
     /// The inputs at which "use my exercise" checks 5.4: the probe vertex first, four more
