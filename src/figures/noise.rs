@@ -1229,7 +1229,13 @@ impl TerrainScene {
             if let Some(yours) = answers.as_ref().map(|a| Vec3::from_slice(&a[0])) {
                 if yours.is_finite() && yours.length() > 1e-6 {
                     frame.arrow(at, at + yours.normalize() * 0.5, palette::STUDENT, 0.08);
-                    frame.label(at + yours.normalize() * 0.6, "yours", palette::STUDENT);
+                    // Reading leftwards, so that it sits beside the reference's "n" (which reads
+                    // rightwards) when the two arrows coincide.
+                    frame.label_left(
+                        at + yours.normalize() * 0.58,
+                        "yours",
+                        palette::STUDENT,
+                    );
                 }
             }
             note += " ";
@@ -1371,7 +1377,8 @@ impl Textures {
                 Mat4::from_translation(Vec3::new(x, 0.0, 0.0)),
                 UvRect::FULL,
             );
-            frame.label(Vec3::new(x, 0.0, 1.2), name, palette::DARK);
+            // Labels read rightwards from their anchor: start each at its square's left edge.
+            frame.label(Vec3::new(x - 1.0, 0.0, 1.2), name, palette::DARK);
         }
         format!(
             "Each texture is a {TEXTURE_SIZE} × {TEXTURE_SIZE} RGBA image computed on the CPU and \

@@ -244,7 +244,8 @@ impl NoiseImages {
                 Mat4::from_translation(Vec3::new(x, 0.0, 0.0)),
                 UvRect::FULL,
             );
-            frame.label(Vec3::new(x, 0.0, 1.2), name.as_str(), palette::DARK);
+            // Labels read rightwards from their anchor: start each at its square's left edge.
+            frame.label(Vec3::new(x - 1.0, 0.0, 1.2), name.as_str(), palette::DARK);
         }
         if self.lattice {
             self.draw_lattices(frame);
