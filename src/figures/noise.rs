@@ -1231,11 +1231,7 @@ impl TerrainScene {
                     frame.arrow(at, at + yours.normalize() * 0.5, palette::STUDENT, 0.08);
                     // Reading leftwards, so that it sits beside the reference's "n" (which reads
                     // rightwards) when the two arrows coincide.
-                    frame.label_left(
-                        at + yours.normalize() * 0.58,
-                        "yours",
-                        palette::STUDENT,
-                    );
+                    frame.label_left(at + yours.normalize() * 0.58, "yours", palette::STUDENT);
                 }
             }
             note += " ";
