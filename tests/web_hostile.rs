@@ -4,8 +4,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use inbetween::web::{
-    check_emitter, check_skeleton, check_skin_weights, ClothScene, HierarchyScene, KeyframesScene,
-    SkeletonScene,
+    check_emitter, check_skeleton, check_skin_weights, BounceScene, ClothScene, EmitterScene,
+    HierarchyScene, KeyframesScene, SkeletonScene, SpringScene, SquashScene,
 };
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
@@ -96,4 +96,28 @@ fn lists_of_names_and_indices_are_checked_element_by_element() {
             .unwrap_err(),
     );
     assert!(m.contains("joints[0] must be a whole number"), "{m}");
+}
+
+#[wasm_bindgen_test]
+fn simulations_advance_without_a_canvas_and_reject_bad_times() {
+    let mut emitter = EmitterScene::new();
+    for bad in [f32::NAN, f32::INFINITY, -1.0, 1e30] {
+        let m = message(emitter.advance_to(bad).unwrap_err());
+        assert!(m.contains("time"), "{bad}: {m}");
+    }
+    // 1/60 s steps: half a second is 30 of them, and going on to 1 s 30 more.
+    assert_eq!(emitter.advance_to(0.5).unwrap(), 30);
+    assert_eq!(emitter.advance_to(1.0).unwrap(), 30);
+    let mut bounce = BounceScene::new();
+    assert!(bounce.advance_to(f32::NAN).is_err());
+    assert!(bounce.advance_to(0.5).unwrap() > 0);
+    let mut squash = SquashScene::new();
+    assert!(squash.advance_to(-1.0).is_err());
+    assert!(squash.advance_to(0.5).unwrap() > 0);
+    let mut cloth = ClothScene::new("flag".into()).unwrap();
+    assert!(cloth.advance_to(f32::NAN).is_err());
+    assert!(cloth.advance_to(0.1).unwrap() > 0);
+    let spring = SpringScene::new();
+    assert!(spring.note_at(f32::NAN).is_err());
+    assert!(!spring.note_at(0.5).unwrap().is_empty());
 }

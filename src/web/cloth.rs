@@ -150,6 +150,12 @@ impl ClothScene {
         }
         Ok(())
     }
+    /// Simulates to `time_sec` without drawing; returns the frames simulated. `draw` does the
+    /// same, then draws.
+    #[wasm_bindgen(js_name = advanceTo)]
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, JsError> {
+        self.scene.advance_to(time_sec).map_err(js)
+    }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         self.camera = Some(viewer.camera);
@@ -225,6 +231,13 @@ impl SpringScene {
     #[wasm_bindgen(js_name = lengthSamples)]
     pub fn length_samples(&self) -> Vec<f32> {
         self.scene.length_samples()
+    }
+    /// The note `draw` returns at `time_sec`, without a canvas (the figure is a function of the
+    /// time: nothing is stepped).
+    #[wasm_bindgen(js_name = noteAt)]
+    pub fn note_at(&self, time_sec: f32) -> Result<String, JsError> {
+        let mut scratch = crate::draw::Frame::default();
+        self.scene.draw(&mut scratch, time_sec).map_err(js)
     }
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let note = self

@@ -1,6 +1,18 @@
 //! wasm-bindgen bindings (wasm only). Thin by design: each function checks what JavaScript
 //! passed (lengths, finiteness, ranges), calls a core, and returns `Result<_, JsError>` whose
 //! message the page shows in its error banner. No HTML is built here, no math re-implemented.
+//!
+//! Arguments are checked at this boundary before anything changes (see [`string`], [`whole`]):
+//! a wrong type, a fraction where a count is expected or a value outside its range is an error
+//! that names the parameter. `scripts/probe-bindings.mjs` calls every export with hostile
+//! arguments and fails on a panic, a hang, a non-finite output or a half-applied call.
+//!
+//! One case is not guarded: a method called on an object of another class
+//! (`KeyframesScene.prototype.position.call(new LagrangeScene(), 0.5)`). The generated glue
+//! passes the receiver's `__wbg_ptr` without checking its class, so the method reads the other
+//! object's memory as its own, or traps. Guarding it would take a class tag in every object and a
+//! check in every method of generated code; neither the pages nor the shell make such a call, and
+//! a receiver that is no binding object at all (pointer 0) is already an error.
 
 mod bench;
 mod bench_boids;

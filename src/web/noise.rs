@@ -216,11 +216,20 @@ impl OctavesScene {
     pub fn last_resolved_octave(&self) -> i32 {
         self.scene.last_resolved_octave().map_or(-1, |k| k as i32)
     }
-    /// `[u₀, octave 0, …, octave 9, sum, u₁, …]` (12 numbers per row, NaN above N).
+    /// `[u₀, octave 0, …, octave 9, sum, u₁, …]` (12 values per row): numbers, and `null` for the
+    /// octaves above N, which are not in the sum (a plot's gap marker, as uPlot takes it).
     #[wasm_bindgen(js_name = sampleOctaves)]
-    pub fn sample_octaves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+    pub fn sample_octaves(&self, samples: f64) -> Result<js_sys::Array, JsError> {
         let samples = super::whole("samples", samples)?;
-        Ok(self.scene.sample_octaves(samples).map_err(js)?.concat())
+        let rows = self.scene.sample_octaves(samples).map_err(js)?;
+        let value = |v: f32| {
+            if v.is_finite() {
+                JsValue::from(v)
+            } else {
+                JsValue::NULL
+            }
+        };
+        Ok(rows.iter().flatten().map(|&v| value(v)).collect())
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let mesh = self.gpu.sync(viewer, &mut self.scene)?[0];

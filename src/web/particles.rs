@@ -106,6 +106,12 @@ impl EmitterScene {
             }
         }
     }
+    /// Simulates to `time_sec` on the CPU (fixed steps of 1/60 s, replayed from the start when
+    /// needed) without drawing; returns the steps taken. `draw` does the same, then draws.
+    #[wasm_bindgen(js_name = advanceTo)]
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, JsError> {
+        self.scene.advance_to(time_sec).map_err(js)
+    }
     /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
     /// draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
@@ -218,6 +224,13 @@ impl FreeFallScene {
     pub fn error_samples(&self) -> Vec<f32> {
         self.scene.error_samples()
     }
+    /// The note `draw` returns at `time_sec`, without a canvas (the figure is a function of the
+    /// time: nothing is stepped).
+    #[wasm_bindgen(js_name = noteAt)]
+    pub fn note_at(&self, time_sec: f32) -> Result<String, JsError> {
+        let mut scratch = crate::draw::Frame::default();
+        self.scene.draw(&mut scratch, time_sec).map_err(js)
+    }
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let note = self
             .scene
@@ -276,6 +289,12 @@ impl BounceScene {
     pub fn plot_samples(&self) -> Vec<f32> {
         self.scene.plot_samples()
     }
+    /// Simulates to `time_sec` (fixed steps, replayed from the start when needed) without
+    /// drawing; returns the steps taken. `draw` does the same, then draws.
+    #[wasm_bindgen(js_name = advanceTo)]
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, JsError> {
+        self.scene.advance_to(time_sec).map_err(js)
+    }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let note = self
@@ -332,6 +351,12 @@ impl SquashScene {
     #[wasm_bindgen(js_name = plotSamples)]
     pub fn plot_samples(&self) -> Vec<f32> {
         self.scene.plot_samples()
+    }
+    /// Simulates to `time_sec` (fixed steps, replayed from the start when needed) without
+    /// drawing; returns the steps taken. `draw` does the same, then draws.
+    #[wasm_bindgen(js_name = advanceTo)]
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, JsError> {
+        self.scene.advance_to(time_sec).map_err(js)
     }
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {

@@ -51,6 +51,17 @@ impl SmokeScene {
         self.scene.set_show_atlas(on);
         Ok(())
     }
+    /// The note `draw` returns at `time_sec`, from the default camera and without a canvas (the
+    /// column is computed from the time alone: nothing is stepped).
+    #[wasm_bindgen(js_name = noteAt)]
+    pub fn note_at(&mut self, time_sec: f32) -> Result<String, JsError> {
+        let mut scratch = crate::draw::Frame::default();
+        let camera = crate::camera::OrbitCamera::default();
+        let (eye, target) = (camera.eye(), camera.target);
+        self.scene
+            .draw(&mut scratch, TextureId(0), eye, target, time_sec)
+            .map_err(js)
+    }
     /// Draws the column at `time_sec`; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         let atlas = match self.atlas {

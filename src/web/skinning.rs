@@ -113,15 +113,17 @@ impl SkinningCylinderScene {
         self.scene.area_curves(samples).map_err(js)
     }
 
-    /// `[angle (°), LBS, DQS]` per sample: the tube's volume (fraction of rest) against the bend.
     /// `[area plot, volume plot]`: where the current pose lies on each plot's x axis, degrees
-    /// (their dashed lines), NaN where it is on none of the plot's curves.
+    /// (their dashed lines), `null` where it is on none of the plot's curves (a plot's
+    /// `setCursor(null)` hides its line).
     #[wasm_bindgen(js_name = plotCursors)]
-    pub fn plot_cursors(&self) -> Vec<f32> {
+    pub fn plot_cursors(&self) -> js_sys::Array {
         let c = self.scene.plot_cursors();
-        vec![c.area.unwrap_or(f32::NAN), c.volume.unwrap_or(f32::NAN)]
+        let cursor = |x: Option<f32>| x.map_or(JsValue::NULL, JsValue::from);
+        [cursor(c.area), cursor(c.volume)].into_iter().collect()
     }
 
+    /// `[angle (°), LBS, DQS]` per sample: the tube's volume (fraction of rest) against the bend.
     #[wasm_bindgen(js_name = volumeCurves)]
     pub fn volume_curves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
