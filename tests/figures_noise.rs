@@ -427,7 +427,25 @@ fn fractals_count_segments_and_triangles() {
     s.set_show_previous(true);
     f.clear();
     s.draw(&mut f);
-    assert_eq!(f.segments_of(palette::GRID).count(), 3 * 4 + 3 * 3);
+    assert_eq!(f.segments_of(palette::GREY).count(), 3 * 4 + 3 * 3);
+    // Every segment of the depth before lies on the Sierpinski triangle of this depth: grey covers
+    // its outer edges and the orange left over is the new inner triangles.
+    let orange: Vec<(Vec3, Vec3)> = f.segments_of(palette::ORANGE).collect();
+    let on_orange = |p: Vec3| {
+        orange.iter().any(|(a, b)| {
+            let (a, b, p) = (a.truncate(), b.truncate(), p.truncate());
+            let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+            (a + t * (b - a) - p).length() < 1e-4
+        })
+    };
+    let grey_on_right: Vec<(Vec3, Vec3)> = f
+        .segments_of(palette::GREY)
+        .filter(|(a, _)| a.x > 0.0)
+        .collect();
+    assert_eq!(grey_on_right.len(), 9);
+    assert!(grey_on_right
+        .iter()
+        .all(|(a, b)| on_orange(*a) && on_orange(*b) && on_orange((*a + *b) / 2.0)));
 }
 
 #[test]

@@ -1604,10 +1604,10 @@ impl TerrainFigure for Quiz {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 7: fractals.
+// Figure 8: fractals.
 
-/// Figure 7: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
-/// "show previous depth" the depth before is drawn in grey beneath.
+/// Figure 8: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
+/// "show previous depth" the depth before is drawn in grey over it.
 pub struct Fractals {
     depth: u32,
     show_previous: bool,
@@ -1660,10 +1660,12 @@ impl Fractals {
 
     pub fn draw(&mut self, frame: &mut Frame) -> String {
         let d = self.depth;
-        if self.show_previous && d > 0 {
-            self.draw_depth(frame, d - 1, palette::GRID, palette::GRID, -0.01);
-        }
         self.draw_depth(frame, d, palette::BLUE, palette::ORANGE, 0.0);
+        if self.show_previous && d > 0 {
+            // The depth before in grey, nearer the camera than the current one: where a segment
+            // survives the step it shows grey, so the coloured lines left are what the step adds.
+            self.draw_depth(frame, d - 1, palette::GREY, palette::GREY, 0.01);
+        }
         frame.label(
             Vec3::new(KOCH_CENTRE.x, -1.55, 0.0),
             "Koch snowflake",
