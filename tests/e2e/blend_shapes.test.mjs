@@ -45,7 +45,7 @@ function runsAlongRows(page, key, width, rows) {
   }, [key, width, rows]);
 }
 
-test('lesson 10: identical heads at the defaults, both in view at a total far above 1', async () => {
+test('lesson 10: the heads differ at the defaults and agree with the automatic base weight; both in view at a total far above 1', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await openPage(context, `${site.origin}/lessons/10-blend-shapes/?backend=webgl2`);
