@@ -809,9 +809,9 @@ impl FreeFallFigure {
         );
         for (path, &color) in self.paths.iter().zip(&INTEGRATOR_COLORS) {
             frame.wide_polyline(&path[..=k_now], color, crate::draw::CURVE_PX);
-            // One outlined dot per step, the same size at any zoom.
-            for p in &path[..=k_now] {
-                frame.marker(*p, 7.0, color);
+            // One outlined dot per step before the latest (the big dot), the same size at any zoom.
+            for p in &path[..k_now] {
+                frame.marker(*p, 9.0, color);
             }
             frame.point(path[k_now], 0.06, color);
         }

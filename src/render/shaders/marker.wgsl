@@ -1,5 +1,5 @@
 // Markers of a fixed size on screen: dots (a disc) and ticks (a short bar across a path), each
-// filled with its colour inside a white ring and a thin dark rim, so they show on light
+// filled with its colour inside a thin white ring and a thinner dark rim, so they show on light
 // backgrounds and dark meshes alike. globals.params: y, z = the target's size in device pixels,
 // w = device pixels per CSS pixel.
 struct InstanceIn {
@@ -85,8 +85,8 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     // Signed distance to the shape's outline, device pixels (negative inside).
     var d: f32;
     if (in.params.z > 0.5) {
-        // A bar 6 CSS pixels thick along the path (2 of colour inside the outline), `size` long
-        // across it.
+        // A bar 6 CSS pixels thick along the path (2.5 of colour inside the outline), `size`
+        // long across it.
         let half_extent = vec2<f32>(3.0 * scale, half_size);
         let q = abs(in.local) - half_extent;
         d = length(max(q, vec2<f32>(0.0))) + min(max(q.x, q.y), 0.0);
@@ -97,9 +97,9 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     if (coverage <= 0.0) {
         discard;
     }
-    // From the outside in: 0.75 CSS pixel of dark rim, 1.25 of white ring, then the colour.
+    // From the outside in: 0.75 CSS pixel of dark rim, 1 of white ring, then the colour.
     let rim = 0.75 * scale;
-    let ring = 2.0 * scale;
+    let ring = 1.75 * scale;
     let dark = vec3<f32>(0.02, 0.02, 0.025);
     var rgb = mix(in.color.rgb, vec3<f32>(1.0), clamp(d + ring + 0.5, 0.0, 1.0));
     rgb = mix(rgb, dark, clamp(d + rim + 0.5, 0.0, 1.0));
