@@ -548,7 +548,7 @@ impl KeyframesScene {
         frame.wide_polyline(&points, SPACETIME_COLOR, crate::draw::CURVE_PX);
         let n = ghosts.len();
         for (k, g) in ghosts.iter().enumerate() {
-            frame.point(g.extend(depth(self.ghost_tau(k, n))), 0.045, GHOST_COLOR);
+            frame.point(g.extend(depth(self.ghost_tau(k, n))), 0.065, GHOST_COLOR);
         }
         let on_curve = ball.extend(depth(tau));
         frame.line(ball.extend(0.0), on_curve, palette::GRID);
