@@ -701,12 +701,10 @@ impl SkeletonFigure {
         );
         if self.trail.len() >= 2 {
             frame.wide_polyline(&self.trail, palette::PURPLE, crate::draw::CURVE_PX);
-            // The trail's samples are equal time steps apart: a tick across it at each.
-            frame.ticks(
-                &self.trail[..self.trail.len() - 1],
-                crate::draw::TICK_PX,
-                palette::PURPLE,
-            );
+            // A dot at each of the trail's samples, equal time steps apart.
+            for &dot in &self.trail[..self.trail.len() - 1] {
+                frame.point(dot, 0.008, palette::PURPLE);
+            }
         }
         Ok(note)
     }
