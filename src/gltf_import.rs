@@ -38,6 +38,9 @@ use std::fmt;
 pub const MAX_FILE_BYTES: usize = 64 << 20;
 /// The most vertices over all skinned meshes.
 pub const MAX_VERTICES: usize = 1 << 20;
+/// The largest magnitude of a vertex coordinate or a node's world-matrix entry: a model that
+/// large would overflow the squares and products its viewer takes (the camera's framing of it).
+pub const MAX_COORDINATE: f32 = 1e6;
 /// Linear keys per key interval when a cubic-spline channel is resampled.
 pub const CUBIC_RESAMPLING: usize = 8;
 
@@ -239,6 +242,15 @@ pub fn import(bytes: &[u8]) -> Result<Imported, ImportError> {
         } else {
             world[n] = local_matrix(&all_nodes[n]);
         }
+    }
+    if let Some(n) = (0..node_count).find(|&n| {
+        let m = world[n];
+        !m.is_finite() || m.to_cols_array().iter().any(|v| v.abs() > MAX_COORDINATE)
+    }) {
+        return Err(ImportError::Unsupported(format!(
+            "node {n}'s transform reaches past ±{MAX_COORDINATE} (a scale or translation that \
+             large cannot be framed)"
+        )));
     }
     let skin_parents: Vec<Option<usize>> = skin_joints.iter().map(|&n| joint_above[n]).collect();
     // Depth-first order from the roots, children in skin order.
@@ -921,6 +933,14 @@ fn import_primitive<'a, 's>(
     let n = positions.len();
     if positions.iter().any(|p| !p.is_finite()) {
         return Err("a position is not finite".into());
+    }
+    if positions
+        .iter()
+        .any(|p| p.abs().max_element() > MAX_COORDINATE)
+    {
+        return Err(format!(
+            "a position lies beyond ±{MAX_COORDINATE} (see MAX_COORDINATE)"
+        ));
     }
     let indices: Vec<u32> = match reader.read_indices() {
         Some(it) => it.into_u32().collect(),

@@ -372,3 +372,21 @@ fn a_node_with_two_parents_or_its_own_child_is_rejected() {
         "{e}"
     );
 }
+
+#[test]
+fn a_model_too_large_to_frame_is_rejected() {
+    let msg = |r: Result<_, ImportError>| r.map(|_| ()).unwrap_err().to_string();
+    let e = msg(tiny_with(
+        "{\"name\":\"knee\",\"translation\":[0,1,0]}",
+        "{\"name\":\"knee\",\"translation\":[0,3e38,0]}",
+    ));
+    assert!(
+        e.contains("node 2's transform reaches past ±1000000"),
+        "{e}"
+    );
+    let e = msg(tiny_with(
+        "{\"name\":\"hip\",",
+        "{\"name\":\"hip\",\"scale\":[3e38,3e38,3e38],",
+    ));
+    assert!(e.contains("transform reaches past"), "{e}");
+}
