@@ -250,8 +250,14 @@ fn singular_is_judged_relative_to_the_size_of_the_columns() {
     assert!(key.rotation.abs_diff_eq(Quat::IDENTITY, 1e-5));
     assert!(AffineKey::from_mat4(Mat4::from_scale(Vec3::splat(1e-12))).is_ok());
     let mut scene = AffineKeys::new();
-    assert!(scene
+    // The figure's keys have a range: a 1e38 scale would make its determinant plot NaN.
+    let e = scene
         .set_key(0, Mat4::from_translation(Vec3::Y) * huge)
+        .unwrap_err();
+    assert!(e.contains("[-10000, 10000]"), "{e}");
+    let large = Mat4::from_scale(Vec3::new(1e4, 1.0, 1.0));
+    assert!(scene
+        .set_key(0, Mat4::from_translation(Vec3::Y) * large)
         .is_ok());
     // Nearly parallel columns of ordinary size are singular, and the message has no "-0.000e0".
     let flat = Mat3::from_cols(Vec3::X, Vec3::new(1.0, 1e-9, 0.0), Vec3::Z);
