@@ -11,13 +11,23 @@ export { GUI };
 // A value typed into a number box that lil-gui cannot take is otherwise dropped in silence: text
 // that is not a number keeps the old value, a number outside the slider's range is clamped to it.
 // Every number control of every panel (folders included: they are GUIs too) says so under itself
-// until its next accepted value.
+// until its next accepted value or a change of any other control.
 const addControl = GUI.prototype.add;
 GUI.prototype.add = function add(...args) {
   const controller = addControl.apply(this, args);
   if (controller instanceof NumberController) reportTypedValues(controller);
+  else clearTypedNotesOnChange(controller);
   return controller;
 };
+
+/** A change of `controller` (a checkbox, a dropdown, a button) clears the page's typed-value notes. */
+function clearTypedNotesOnChange(controller) {
+  const callOnChange = controller._callOnChange.bind(controller);
+  controller._callOnChange = () => {
+    for (const open of [...openTypedNotes]) hideTypedNote(open);
+    callOnChange();
+  };
+}
 
 /** What became of `typed` (the number box's text when it was left) in `controller`, whose value
  * lil-gui has already set from it: '' when it was a number within the range (taken as typed,
@@ -34,6 +44,14 @@ function typedValueNote(controller, typed) {
   return '';
 }
 
+/** The typed-value notes on screen: a change of any control of the page clears them. */
+const openTypedNotes = new Set();
+
+function hideTypedNote(note) {
+  note.hidden = true;
+  openTypedNotes.delete(note);
+}
+
 function reportTypedValues(controller) {
   const note = document.createElement('div');
   note.className = 'typed-note';
@@ -44,14 +62,24 @@ function reportTypedValues(controller) {
   // the box with the value it took: the typed text is still there.
   controller.$input.addEventListener('change', () => {
     note.textContent = typedValueNote(controller, controller.$input.value);
-    note.hidden = !note.textContent;
+    if (note.textContent) {
+      note.hidden = false;
+      openTypedNotes.add(note);
+    } else {
+      hideTypedNote(note);
+    }
   });
-  // A later change made otherwise (a drag of the slider, a preset) clears it; the
-  // changes made while typing come with the box focused. (The instance's own _callOnChange, as
-  // the page's onChange replaces the callback it calls.)
+  // Typing in the box again means the student is fixing the value: the note has been read.
+  controller.$input.addEventListener('input', () => hideTypedNote(note));
+  // Any later change made otherwise (a drag of this slider, another control, a preset) clears
+  // every note on the page: a note describes the last value typed, not the page's state. The
+  // changes made while typing come with the box focused and keep this box's note. (The
+  // instance's own _callOnChange, as the page's onChange replaces the callback it calls.)
   const callOnChange = controller._callOnChange.bind(controller);
   controller._callOnChange = () => {
-    if (!controller._inputFocused) note.hidden = true;
+    for (const open of [...openTypedNotes]) {
+      if (open !== note || !controller._inputFocused) hideTypedNote(open);
+    }
     callOnChange();
   };
 }

@@ -211,6 +211,14 @@ test('a typed value a number box cannot take says what became of it (lesson 11, 
     await page.mouse.click(r.x + r.width * 0.5, r.y + r.height / 2);
     await frames(page, 2);
     assert.ok(!(await note.isVisible()), 'a drag takes the note away');
+    // A note says what became of the last value typed: a change of another control clears it.
+    await type('abc');
+    assert.ok(await note.isVisible());
+    const fade = page.locator(`${fig} .lil-controller`, { hasText: 'fade with age' }).locator('input[type="checkbox"]');
+    await fade.click();
+    await frames(page, 2);
+    assert.ok(!(await note.isVisible()), 'another control\'s change takes the note away');
+    await fade.click();
     // Two presses of "explode now" at one paused moment: the second says why it did nothing.
     await scrubTo(page, fig, 300);
     const explode = page.locator(`${fig} .lil-controller`, { hasText: 'explode now' }).locator('button');
