@@ -1,0 +1,571 @@
+// End-to-end: every lesson page in headless Chromium, on each backend, as a person would use it.
+// The tests are registered by `lessonTests`, called by lessons-webgpu.test.mjs and the two halves
+// lessons-webgl2-1/-2.test.mjs, so that scripts/test can run two of them at once (each file is a
+// process with its own browser). Screenshots land in tests/screenshots/ (gitignored).
+//   node --test tests/e2e/            all checks
+//   THUMBNAILS=1 node --test tests/e2e/   also refresh lessons/*/thumbnail.png
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { launch, pixelStats, meanDifference, frames, serveDist, openPage, DIST } from './browser.mjs';
+import { gpuNoiseMatchesCpu } from './noise_gpu.mjs';
+
+const SHOTS = 'tests/screenshots';
+mkdirSync(SHOTS, { recursive: true });
+const catalog = JSON.parse(readFileSync(join(DIST, 'lessons/catalog.json'), 'utf8'));
+const site = serveDist();
+
+/**
+ * With E2E_TIMING=1, `clock(what)` prints how long `what` took since the last call (to see where a
+ * page's test spends its time); otherwise it does nothing.
+ */
+function phaseClock(where) {
+  let last = Date.now();
+  return (what) => {
+    const now = Date.now();
+    if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${now - last} ms`);
+    last = now;
+  };
+}
+
+const open = (context, path) => openPage(context, site.origin + path);
+
+/**
+ * Every plot on the page names the quantity and unit of both axes, as the lessons write them:
+ * "time (s)", "slide (cm)", "weight (0 to 1)", "depth (no unit)": text, then a non-empty
+ * parenthesis. uPlot draws the labels on its canvas; the shell's Plot copies them to the plot
+ * element's data-x-label and data-y-label, and a .plot element that no Plot filled has neither.
+ */
+async function plotsNameTheirUnits(page) {
+  const plots = await page.evaluate(() => [...document.querySelectorAll('.plot')]
+    .map((p) => ({ id: p.id, title: p.dataset.plot, x: p.dataset.xLabel, y: p.dataset.yLabel })));
+  const named = (label) => /\S.*\(\s*[^\s)][^)]*\)/.test(label ?? '');
+  const unnamed = plots.flatMap((p) => ['x', 'y']
+    .filter((axis) => !named(p[axis]))
+    .map((axis) => `${p.id || p.title || '(a plot)'}: ${axis} label ${JSON.stringify(p[axis] ?? null)}`));
+  assert.deepEqual(unnamed, [], 'every plot labels both axes with a quantity and its unit in parentheses');
+}
+
+async function pauseTimelines(page) {
+  await page.evaluate(() => {
+    for (const button of document.querySelectorAll('.timeline .play')) {
+      if (button.textContent.includes('pause')) button.click();
+    }
+  });
+}
+
+/**
+ * A screenshot of the whole page with its figures drawn. Playwright's `fullPage` capture resizes
+ * the page behind our back, which clears every canvas after the figures drew, so the viewport is
+ * made as tall as the page instead: every figure is then on screen (Viewer::set_visible) and
+ * draws, and an ordinary screenshot takes the lot.
+ */
+async function fullPageShot(page, path) {
+  const viewport = page.viewportSize();
+  const height = await page.evaluate(() => document.documentElement.scrollHeight);
+  // Chromium's capture wraps round past about 8,000 px (the page's top reappears below), so a
+  // longer page is shown down to there.
+  await page.setViewportSize({ width: viewport.width, height: Math.min(height, 8000) });
+  await page.evaluate(() => window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true)));
+  await frames(page, 4);
+  await page.screenshot({ path });
+  await page.setViewportSize(viewport);
+}
+
+/**
+ * A paused 3D figure's pixel statistics once it has settled, as a person would see it after
+ * waiting a moment: a loaded machine may present a figure's first frames late (a blank or
+ * half-loaded canvas), so up to five looks, a few frames apart, until one is drawn and two in a
+ * row are the same. `still` is the mean difference between the last two looks (0..255).
+ */
+async function settledStats(page, canvas, i) {
+  let stats = await pixelStats(page, canvas, `before${i}`);
+  let still = 255;
+  for (let look = 0; look < 5; look++) {
+    await frames(page);
+    const next = await pixelStats(page, canvas, `still${i}`);
+    still = await meanDifference(page, `before${i}`, `still${i}`);
+    if (next.coverage > 0.02 && still < 0.5) return { ...next, still };
+    stats = await pixelStats(page, canvas, `before${i}`);
+  }
+  return { ...stats, still };
+}
+
+/** A drag on the canvas orbits the camera: the image must change. */
+async function orbitDrag(page, canvas, i) {
+  await canvas.scrollIntoViewIfNeeded();
+  const box = await canvas.boundingBox();
+  await pixelStats(page, canvas, `orbit-before${i}`);
+  await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.6, { steps: 5 });
+  await page.mouse.up();
+  // The new view may reach the screen a few frames late on a loaded machine: up to three looks.
+  let change = 0;
+  for (let look = 0; look < 3 && change <= 0.2; look++) {
+    await frames(page);
+    await pixelStats(page, canvas, `orbit-after${i}`);
+    change = await meanDifference(page, `orbit-before${i}`, `orbit-after${i}`);
+  }
+  assert.ok(change > 0.2, `figure ${i}: dragging the canvas did not orbit the camera (${change})`);
+}
+
+/**
+ * Moves every control of a figure, one at a time, as a person would (sliders by a click on the
+ * slider, checkboxes, dropdowns, buttons, the timeline's scrub, play and speed), and checks after
+ * each that the figure (canvas, plots and notes) changed and that no error appeared.
+ * Returns how many controls it moved.
+ */
+async function moveEveryControl(page, figure, where, limit = Infinity) {
+  let moved = 0;
+  // `act` must change what the figure shows; with `again` (a toggle), a change in either
+  // direction counts (turning a walk off while paused may keep the pose; turning it on moves it).
+  // A dropdown passes `tries` > 1: the next options are tried in turn until one changes the
+  // figure (a preset equal to the current keys changes nothing, rightly).
+  const check = async (what, act, again = false, tries = 1) => {
+    const started = Date.now();
+    const before = await pausedSignature(figure);
+    let changed = false;
+    let after = before;
+    for (let k = 0; k < tries && !changed; k++) {
+      await act(k);
+      after = await signatureAfter(figure, before);
+      changed = after !== before;
+    }
+    if (again && !changed) {
+      await act(0);
+      changed = (await signatureAfter(figure, after)) !== after;
+    }
+    if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${Date.now() - started} ms`);
+    assert.ok(changed, `${where}: ${what} did not change the figure`);
+    assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], `${where}: ${what} raised an error`);
+    moved += 1;
+    if (moved >= limit) throw DONE;
+  };
+  try {
+    await moveControls(page, figure, check);
+  } catch (e) {
+    if (e !== DONE) throw e;
+  }
+  return moved;
+}
+
+const DONE = Symbol('enough controls moved');
+
+async function moveControls(page, figure, check) {
+  const controllers = await figure.locator('.lil-controller').all();
+  const buttons = [];
+  for (const c of controllers) {
+    if (!(await c.isVisible())) continue;
+    const name = (await c.locator('.lil-name').textContent().catch(() => '')) || '?';
+    const classes = (await c.getAttribute('class')) ?? '';
+    if (classes.includes('disabled')) continue; // e.g. a GPU switch without WebGPU
+    if (classes.includes('function')) { buttons.push([name, c.locator('button')]); continue; }
+    if (classes.includes('boolean')) {
+      await check(`toggle "${name}"`, () => c.locator('input[type="checkbox"]').click(), true);
+      continue;
+    }
+    if (classes.includes('option')) {
+      const select = c.locator('select');
+      const options = await select.locator('option').allTextContents();
+      const current = await select.evaluate((s) => s.selectedIndex);
+      await check(`dropdown "${name}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
+      continue;
+    }
+    if (classes.includes('number')) {
+      const slider = c.locator('.lil-slider');
+      if (await slider.count()) {
+        const fill = await slider.evaluate((s) => s.querySelector('.lil-fill')?.getBoundingClientRect().width / s.getBoundingClientRect().width);
+        const at = fill < 0.5 ? 0.8 : 0.2;
+        await check(`slider "${name}"`, () => clickAt(page, slider, at));
+      } else {
+        const input = c.locator('input');
+        const value = Number(await input.inputValue());
+        await check(`number "${name}"`, async () => {
+          await input.fill(String(value === 0 ? 1 : -value));
+          await input.press('Enter');
+        });
+      }
+    }
+  }
+  // Buttons and dropdowns outside the panels (presets, solo, timeline), then the panels' buttons.
+  for (const select of await figure.locator('select:not(.lil-controller select)').all()) {
+    if (!(await select.isVisible())) continue;
+    const label = (await select.getAttribute('aria-label')) ?? 'select';
+    const options = await select.locator('option').allTextContents();
+    const current = await select.evaluate((s) => s.selectedIndex);
+    if (label === 'speed') {
+      // Speed shows only while playing: play a moment at the new speed, then pause.
+      const play = figure.locator('.timeline .play');
+      await check('timeline speed', async () => {
+        await select.selectOption({ index: (current + 1) % options.length });
+        await play.click();
+        await frames(page, 10);
+        await play.click();
+      });
+    } else {
+      await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
+    }
+  }
+  for (const scrub of await figure.locator('.timeline .scrub').all()) {
+    // Several places: a ping-pong timeline shows the same moment at t and at duration − t.
+    await check('timeline scrub', (k) => clickAt(page, scrub, [0.37, 0.81, 0.12][k]), false, 3);
+  }
+  for (const play of await figure.locator('.timeline .play').all()) {
+    // Up to three plays of 10 frames: a figure that draws its states after each step (lesson 11's
+    // free fall at a step of 0.24 s) changes only when the time crosses a step, which 10 frames
+    // (about 0.17 s at 1x) may not do.
+    await check('timeline play', async () => {
+      await play.click();
+      await frames(page, 10);
+      await play.click();
+    }, false, 3);
+  }
+  // (Not "frame all": it moves the camera, which the figure's signature leaves out.)
+  for (const button of await figure.locator('button:not(.lil-controller button):not(.timeline button):not(.lil-title):not(.frame-all)').all()) {
+    if (!(await button.isVisible())) continue;
+    buttons.push([(await button.textContent()).trim(), button]);
+  }
+  // Last in, first out: a "reset" after the changes above, then "zoom to fit" after the reset (in
+  // DOM order a fit would come first, when the view may already fit).
+  for (const [name, button] of buttons.reverse()) await check(`button "${name}"`, () => button.click());
+}
+
+/**
+ * Lesson 02's curve editor, dragged as a person would: a key across the canvas, a tangent handle,
+ * and the last key's time tick (which must stay on the strip and keep its neighbours' order).
+ */
+async function editorDrags(page) {
+  const canvas = page.locator('#fig-keys .editor canvas');
+  await canvas.scrollIntoViewIfNeeded();
+  const box = await canvas.boundingBox();
+  const drag = async ([x0, y0], dx, dy) => {
+    await page.mouse.move(box.x + x0, box.y + y0);
+    await page.mouse.down();
+    await page.mouse.move(box.x + x0 + dx, box.y + y0 + dy, { steps: 8 });
+    await page.mouse.up();
+    await frames(page, 3);
+  };
+  const ed = (expr) => page.evaluate(`window.__inbetween.editor.${expr}`);
+  const keys0 = await ed('keys()');
+  await pixelStats(page, canvas, 'ed0');
+  await drag(await ed('keyPx(2)'), 30, -25);
+  const keys1 = await ed('keys()');
+  assert.ok(Math.abs(keys1[7] - keys0[7]) > 0.05 && Math.abs(keys1[8] - keys0[8]) > 0.05, 'dragging key 2 moves it');
+  await pixelStats(page, canvas, 'ed1');
+  assert.ok(await meanDifference(page, 'ed0', 'ed1') > 0.2, 'the editor redraws a moved key');
+  const tangents0 = await ed('tangents()');
+  await drag(await ed('outHandlePx(1)'), 0, 30);
+  const tangents1 = await ed('tangents()');
+  assert.notDeepEqual(tangents1.slice(4, 8), tangents0.slice(4, 8), 'dragging a handle changes the tangent');
+  const last = (await ed('keys()')).length / 3 - 1;
+  const before = await ed('keys()');
+  await drag(await ed(`timePx(${last})`), 400, 0);
+  const after = await ed('keys()');
+  assert.ok(after[3 * last] >= before[3 * last], 'the last key moves later');
+  assert.ok(after[3 * last] < before[3 * last] + 3, `the last key stays on the strip (${after[3 * last]} s)`);
+  for (let k = 1; k <= last; k++) assert.ok(after[3 * k] > after[3 * (k - 1)], 'key times stay in order');
+  assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), []);
+}
+
+/** Clicks `locator` at the fraction `at` of its width (after scrolling it into view). */
+async function clickAt(page, locator, at) {
+  await locator.scrollIntoViewIfNeeded();
+  const box = await locator.boundingBox();
+  await page.mouse.click(box.x + box.width * at, box.y + box.height / 2);
+}
+
+/**
+ * What a figure shows, as a string that changes when anything in it changes: the fingerprint of
+ * what its 3D view drew last (the viewer hashes its draw list; pixels are read separately, per
+ * figure), the pixels of its 2D canvases and plots, and its text outside the controls (notes,
+ * matrices, readouts). Much cheaper than two screenshots per control, so every control of every
+ * figure can be moved. Runs in the page (it is passed there as source text).
+ */
+function signatureOf(fig) {
+  const parts = [];
+  const entry = window.__inbetween.figures.find((f) => fig.matches(f.selector));
+  if (entry?.viewer) parts.push(entry.viewer.frameFingerprint());
+  for (const canvas of fig.querySelectorAll('canvas')) {
+    if (entry && canvas.closest('.stage') && !canvas.classList.contains('view2d') && canvas.parentElement.classList.contains('stage')) continue;
+    const ctx = canvas.width && canvas.height ? canvas.getContext('2d', { willReadFrequently: true }) : null;
+    if (!ctx) continue;
+    const data = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
+    let h = 2166136261;
+    for (let i = 0; i < data.length; i += 7) h = Math.imul(h ^ data[i], 16777619);
+    parts.push(`${canvas.width}x${canvas.height}:${h >>> 0}`);
+  }
+  const walker = document.createTreeWalker(fig, NodeFilter.SHOW_TEXT, {
+    acceptNode: (n) => (n.parentElement.closest('.panel, .lil-gui, .timeline, select, option, button') ? NodeFilter.FILTER_REJECT : NodeFilter.FILTER_ACCEPT),
+  });
+  while (walker.nextNode()) parts.push(walker.currentNode.textContent);
+  return parts.join('|');
+}
+
+/**
+ * Pauses every timeline of the page, waits for the next frame and returns the figure's
+ * signature: the state a control is moved from. One round trip to the page.
+ */
+function pausedSignature(figure) {
+  return figure.evaluate((fig, source) => {
+    const signature = (0, eval)(`(${source})`);
+    for (const button of document.querySelectorAll('.timeline .play')) {
+      if (button.textContent.includes('pause')) button.click();
+    }
+    return new Promise((ok) => requestAnimationFrame(() => ok(signature(fig))));
+  }, signatureOf.toString());
+}
+
+/**
+ * The figure's signature once it differs from `before`, looked at after each animation frame,
+ * or after `maxFrames` frames when it does not change (the fixed wait a figure gets to show a
+ * change: a control that changes nothing by then fails its check). Waiting for the change itself
+ * instead of a fixed count of frames makes a control that changes the figure at once cost one frame.
+ */
+function signatureAfter(figure, before, maxFrames = 3) {
+  return figure.evaluate((fig, [source, before, maxFrames]) => {
+    const signature = (0, eval)(`(${source})`);
+    return new Promise((ok) => {
+      let seen = 0;
+      const look = () => {
+        const now = signature(fig);
+        seen += 1;
+        if (now !== before || seen >= maxFrames) ok(now);
+        else requestAnimationFrame(look);
+      };
+      requestAnimationFrame(look);
+    });
+  }, [signatureOf.toString(), before, maxFrames]);
+}
+
+/**
+ * At the page's current size: every figure is scrolled on screen once, so it draws and places
+ * its labels, then no shown label of a figure may overlap another or leave its canvas (read from
+ * the boxes the shell placed).
+ */
+async function labelsApart(page, where) {
+  for (const canvas of await page.locator('.figure .stage canvas').all()) {
+    await canvas.scrollIntoViewIfNeeded();
+    await frames(page, 3);
+  }
+  const figures = await page.evaluate(() => [...document.querySelectorAll('.figure')].map((figure) => {
+    const canvas = figure.querySelector('.stage canvas');
+    if (!canvas) return null;
+    const c = canvas.getBoundingClientRect();
+    const boxes = [...figure.querySelectorAll('.labels span')].filter((s) => !s.hidden).map((s) => {
+      const r = s.getBoundingClientRect();
+      return { text: s.textContent, l: r.left - c.left, r: r.right - c.left, t: r.top - c.top, b: r.bottom - c.top };
+    });
+    return { id: figure.id, w: c.width, h: c.height, boxes };
+  }).filter(Boolean));
+  for (const fig of figures) {
+    const at = `${where}, #${fig.id}`;
+    for (const b of fig.boxes) {
+      assert.ok(b.l >= -1 && b.t >= -1 && b.r <= fig.w + 1 && b.b <= fig.h + 1,
+        `${at}: label "${b.text}" (${b.l.toFixed(0)}..${b.r.toFixed(0)}, ${b.t.toFixed(0)}..${b.b.toFixed(0)}) leaves the ${fig.w} x ${fig.h} canvas`);
+    }
+    for (let i = 0; i < fig.boxes.length; i++) {
+      for (let j = i + 1; j < fig.boxes.length; j++) {
+        const [a, b] = [fig.boxes[i], fig.boxes[j]];
+        const apart = a.r <= b.l + 0.5 || b.r <= a.l + 0.5 || a.b <= b.t + 0.5 || b.b <= a.t + 0.5;
+        assert.ok(apart, `${at}: labels "${a.text}" and "${b.text}" overlap`);
+      }
+    }
+  }
+}
+
+/**
+ * Every figure of the page that declares what must stay in view starts fitted to it; a zoom
+ * leaves the fit, and both "frame all" and a double-click bring it back.
+ */
+async function frameAllReturnsToTheFit(page, where) {
+  const ids = await page.evaluate(() => window.__inbetween.figures
+    .map((f, i) => (f.viewer.declaresView ? i : -1)).filter((i) => i >= 0));
+  for (const i of ids) {
+    const selector = await page.evaluate((i) => window.__inbetween.figures[i].selector, i);
+    const canvas = page.locator(`${selector} .stage canvas`);
+    await canvas.scrollIntoViewIfNeeded();
+    await frames(page, 3);
+    const fitting = () => page.evaluate((i) => window.__inbetween.figures[i].viewer.fitting, i);
+    assert.equal(await fitting(), true, `${where} ${selector}: fits from the start`);
+    const box = await canvas.boundingBox();
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.wheel(0, -600);
+    await frames(page, 3);
+    assert.equal(await fitting(), false, `${where} ${selector}: a zoom leaves the fit`);
+    await page.locator(`${selector} .frame-all`).click();
+    await frames(page, 3);
+    assert.equal(await fitting(), true, `${where} ${selector}: "frame all" returns to it`);
+    await page.mouse.wheel(0, 600);
+    await frames(page, 2);
+    await canvas.dblclick();
+    await frames(page, 3);
+    assert.equal(await fitting(), true, `${where} ${selector}: a double-click returns to it`);
+  }
+  return ids.length;
+}
+
+// E2E_BACKENDS=webgl2 E2E_LESSONS=03 narrows a run while iterating; scripts/test runs everything.
+const BACKENDS = (process.env.E2E_BACKENDS ?? 'webgpu,webgl2').split(',');
+// Every control is moved on WebGL2; the controls' logic is the same on both backends (only the
+// renderer differs), so WebGPU moves the first control of each figure (E2E_FULL=1: all of them).
+const sweepLimit = (backend) => (backend === 'webgl2' || process.env.E2E_FULL ? Infinity : 1);
+// What does not depend on the backend (the page's layout at both sizes, the exercise switch, every
+// control of every figure) is checked on WebGL2. WebGPU checks that every figure draws, and that
+// the first 3D figure of each page orbits and redraws after a control moves (E2E_FULL=1: all).
+const light = (backend) => backend === 'webgpu' && !process.env.E2E_FULL;
+const only = process.env.E2E_LESSONS?.split(',');
+const lessons = catalog.filter((l) => !only || only.some((p) => l.folder.startsWith(p)));
+
+/**
+ * Registers the lesson tests of the calling file: every lesson of the catalog whose position k
+ * has k % parts === part, on each of `backends` (narrowed by E2E_BACKENDS); `extras` adds the
+ * checks without a GPU API. The gallery is checked by part 0.
+ */
+export function lessonTests({ backends, part = 0, parts = 1, extras = false }) {
+  const mine = lessons.filter((_, k) => k % parts === part);
+  for (const backend of BACKENDS.filter((b) => backends.includes(b))) {
+    registerLessons(backend, mine, parts > 1 ? ` (part ${part + 1} of ${parts})` : '', part === 0);
+  }
+  if (extras) registerExtras();
+}
+
+function registerLessons(backend, lessons, which, withGallery) {
+  test(`lessons on ${backend}${which}`, async (t) => {
+    const context = await launch(backend);
+    try {
+      if (withGallery) {
+        const gallery = await open(context, '/lessons/');
+        await t.test('gallery lists every lesson', async () => {
+          const cards = await gallery.page.locator('.card').count();
+          assert.equal(cards, catalog.length);
+          assert.deepEqual(gallery.problems, []);
+          await gallery.page.screenshot({ path: `${SHOTS}/index-${backend}.png`, fullPage: true });
+        });
+      }
+      let framesFitted = 0;
+      for (const lesson of lessons) {
+        await t.test(lesson.folder, async () => {
+          const clock = phaseClock(`${lesson.folder} (${backend})`);
+          const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
+          clock('load');
+          const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
+          assert.equal(await page.evaluate(() => document.body.dataset.backend), label);
+          await pauseTimelines(page);
+          await frames(page);
+          // Paused, nothing a 3D figure draws changes, so its renderer draws no more frames (at
+          // most a couple, should a late layout change resize a canvas).
+          const drawn = () => page.evaluate(() => window.__inbetween.figures.map((f) => [f.selector, f.viewer.canvasFrames]));
+          const drawnBefore = await drawn();
+          await frames(page, 20);
+          const stillDrawing = (await drawn()).filter(([, n], k) => n - drawnBefore[k][1] > 2);
+          assert.deepEqual(stillDrawing.map(([s]) => s), [], 'these paused figures kept drawing');
+          await plotsNameTheirUnits(page);
+          framesFitted += await frameAllReturnsToTheFit(page, lesson.folder);
+          clock('frame all');
+          if (lesson.folder.startsWith('02-')) await editorDrags(page);
+          if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
+          clock('editor drags, GPU noise check');
+          const figures = await page.locator('.figure').all();
+          assert.ok(figures.length > 0, 'a lesson has at least one figure');
+          let interacted = false;
+          for (const [i, figure] of figures.entries()) {
+            // A figure is a 3D view (wgpu canvas), a 2D drawing (canvas.view2d) or plots only.
+            const canvas = figure.locator('.stage > canvas').first();
+            const kind = !(await canvas.count()) ? 'plots'
+              : (await canvas.evaluate((c) => c.classList.contains('view2d'))) ? '2d' : '3d';
+            if (kind !== '3d' && light(backend)) continue;
+            if (kind !== '3d') {
+              const stats = await pixelStats(page, kind === '2d' ? canvas : figure.locator('.plot, canvas').first(), `drawn${i}`);
+              assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
+              const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
+              assert.ok(moved > 0, `figure ${i}: no control was found to move`);
+              await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+              clock(`figure ${i} (${kind}): every control`);
+              continue;
+            }
+            if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
+              // Without the backend badge: the thumbnail shows the figure, not the test's backend.
+              await page.evaluate(() => document.body.classList.add('thumbnail'));
+              writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail ?? 'thumbnail.png'}`, await canvas.screenshot());
+              await page.evaluate(() => document.body.classList.remove('thumbnail'));
+            }
+            assert.equal(await figure.locator('.backend-badge').textContent(), label);
+            const before = await settledStats(page, canvas, i);
+            assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
+            assert.ok(before.colors > 20, `figure ${i}: too few colours (${before.colors}) for shaded geometry`);
+            assert.ok(before.still < 0.5, `figure ${i}: image changes while paused (${before.still})`);
+            clock(`figure ${i}: settled`);
+            if (light(backend) && interacted) continue;
+            interacted = true;
+            await orbitDrag(page, canvas, i);
+            clock(`figure ${i}: orbit`);
+            const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
+            assert.ok(moved > 0, `figure ${i}: no control was found to move`);
+            await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+            clock(`figure ${i}: every control`);
+          }
+          // Both page sizes the course supports: no sideways scrolling, screenshots to look at.
+          for (const [w, h] of light(backend) ? [] : [[800, 600], [1600, 1000]]) {
+            await page.setViewportSize({ width: w, height: h });
+            await frames(page);
+            const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+            assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
+            await labelsApart(page, `${lesson.folder} at ${w} x ${h}`);
+            await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`);
+            clock(`${w}x${h} page`);
+          }
+          await page.setViewportSize({ width: 1100, height: 900 });
+          // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
+          const toggle = page.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]');
+          if (!light(backend) && await toggle.count()) {
+            await toggle.first().check();
+            await frames(page);
+            const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
+            assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
+          }
+          clock('exercise switch');
+          await fullPageShot(page, `${SHOTS}/${lesson.folder}-${backend}.png`);
+          clock('page screenshot');
+          assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
+          assert.deepEqual(problems, []);
+          await page.close();
+        });
+      }
+      if (!only && !which) assert.ok(framesFitted > 0, 'some figure declares its view');
+    } finally {
+      await context.close();
+    }
+  });
+}
+
+function registerExtras() {
+  test('a browser without WebGPU or WebGL2 gets a clear message', async () => {
+    const context = await launch('none');
+    try {
+      for (const lesson of catalog) {
+        const { page } = await open(context, `/lessons/${lesson.folder}/`);
+        const notes = await page.locator('.no-gpu').allTextContents();
+        assert.ok(notes.length > 0, 'each figure is replaced by a message');
+        for (const note of notes) assert.match(note, /Neither WebGPU nor WebGL2 is available/);
+        assert.match(await page.locator('#error-banner').textContent(), /Neither WebGPU nor WebGL2/);
+        await page.screenshot({ path: `${SHOTS}/${lesson.folder}-none.png` });
+        await page.close();
+      }
+    } finally {
+      await context.close();
+    }
+  });
+
+  test('forcing WebGPU where there is none says so', async () => {
+    const context = await launch('webgl2');
+    try {
+      const { page } = await open(context, `/lessons/${catalog[0].folder}/?backend=webgpu`);
+      const note = await page.locator('.no-gpu').first().textContent();
+      assert.match(note, /WebGPU was requested/);
+    } finally {
+      await context.close();
+    }
+  });
+}
