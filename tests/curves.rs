@@ -1271,7 +1271,8 @@ proptest! {
     }
 }
 
-/// Found by the property test above: f32 rounding took smootherstep just past 1 near s = 1.
+/// A case the property test above finds: f32 rounding can take smootherstep just past 1 near
+/// s = 1.
 #[test]
 fn smootherstep_does_not_overshoot_near_one() {
     let e = Ease::Smootherstep.apply(0.998_832_3);

@@ -95,7 +95,7 @@ fn past_the_limit_the_mass_spring_flag_explodes_safely_and_xpbd_does_not() {
     assert!(note.contains("exploded at t ="), "{note}");
     assert!(frame.labels.iter().any(|l| l.text.contains("exploded")));
     // The name stays above the flag and the explosion is said under it: one long label above
-    // the flag ran into the XPBD flag's name.
+    // the flag would run into the XPBD flag's name.
     let at = |t: &str| frame.labels.iter().find(|l| l.text == t).map(|l| l.anchor);
     let name = at("mass-spring").expect("the mass-spring name label");
     let said = frame
@@ -115,7 +115,7 @@ fn past_the_limit_the_mass_spring_flag_explodes_safely_and_xpbd_does_not() {
     assert!(s.chunks(5).last().unwrap()[1].is_nan());
     assert!(s.chunks(5).last().unwrap()[2].is_finite());
     // The plots' scales follow the XPBD flag, which held: the mass-spring flag's last samples
-    // before it exploded lie far above them (they squashed the XPBD curves onto a line).
+    // before it exploded lie far above them (scaled to those, the XPBD curves would be flat).
     let [e_lo, e_hi, s_lo, s_hi] = f.plot_ranges();
     let rows: Vec<&[f32]> = s.chunks(5).collect();
     let column = |c: usize| rows.iter().map(move |r| r[c]).filter(|x| x.is_finite());

@@ -553,8 +553,8 @@ export class Timeline {
 
 /**
  * The width inside an element's padding, CSS pixels: what a child may fill. (`clientWidth`
- * includes the padding: a plot that wide overflowed `.plot`'s right padding and the figure's
- * `overflow: hidden` cut off its last x tick label, e.g. "1,60" for 1,600.)
+ * includes the padding: a plot that wide would overflow `.plot`'s right padding and the
+ * figure's `overflow: hidden` would cut off its last x tick label, e.g. "1,60" for 1,600.)
  */
 function contentWidth(element) {
   const style = getComputedStyle(element);
@@ -623,8 +623,8 @@ export class Plot {
       // Small label fonts: a y label such as "angle about x (°)" must fit a 160 px tall plot.
       axes: [
         { label: xLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22 },
-        // A short plot keeps room for four ticks: uPlot's 30 px between y ticks left a plot 80 px
-        // tall with a 2 J range one tick (incr 1 J) and no sense of scale.
+        // A short plot keeps room for four ticks: uPlot's 30 px between y ticks would leave a plot
+        // 80 px tall with a 2 J range one tick (incr 1 J) and no sense of scale.
         {
           label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56,
           space: (u, i, min, max, dim) => Math.min(30, Math.max(16, dim / 4)),

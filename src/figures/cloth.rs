@@ -842,7 +842,7 @@ impl ClothFigure {
             let name = sim.method.name();
             match sim.cloth.exploded() {
                 // The name stays where it was, in red, and what happened goes under the cloth: one
-                // long label above each flag ran into the other flag's.
+                // long label above each flag would run into the other flag's.
                 Some(t) => {
                     frame.label(sim.label, name, palette::RED);
                     frame.label(

@@ -42,9 +42,9 @@ export async function openPage(context, url, { width, height, timeout = 90_000 }
 }
 
 // 2D canvases are drawn by Skia on the CPU: on SwiftShader an accelerated 2D canvas makes every
-// frame wait for the emulated GPU (a lesson page with a dozen plots and 2D figures took about
-// 180 ms a frame instead of 17, and its e2e pass four times as long). The 3D canvases still go
-// through WebGL2 or WebGPU on SwiftShader.
+// frame wait for the emulated GPU (a lesson page with a dozen plots and 2D figures would take
+// about 180 ms a frame instead of 17, and its e2e pass four times as long). The 3D canvases still
+// go through WebGL2 or WebGPU on SwiftShader.
 const BASE = ['--no-sandbox', '--no-first-run', '--disable-background-networking',
   '--disable-component-update', '--disable-sync', '--disable-quic', '--disable-dev-shm-usage',
   '--disable-accelerated-2d-canvas'];
