@@ -1,5 +1,5 @@
 //! Lesson 12 core: the boid rules, the force laws, grid vs naive neighbour search.
-// Native only (proptest); the browser runs tests/web_particles.rs.
+// Native only (proptest); the browser runs tests/web_cores/particles.rs.
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec3;

@@ -1,6 +1,6 @@
 //! Browser-only tests (wasm-bindgen-test in headless Chromium): the renderer gets an adapter,
 //! draws, and reads its pixels back; the web layer turns bad input into errors, not panics.
-//! `scripts/test` runs this file twice, with the WebGL2 and with the WebGPU flag sets, and sets
+//! `scripts/test` runs this binary twice, with the WebGL2 and with the WebGPU flag sets, and sets
 //! `INBETWEEN_EXPECT_BACKEND` so that each run checks it got the backend it asked for.
 #![cfg(target_arch = "wasm32")]
 
@@ -11,6 +11,15 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 
 wasm_bindgen_test_configure!(run_in_browser);
+
+// The other tests that draw or compute on the GPU (tests/web/), in this binary: scripts/test runs
+// it on both backends, and each wasm test binary costs a link and a browser start.
+#[path = "web/gpu_compute.rs"]
+mod gpu_compute;
+#[path = "web/gpu_skin.rs"]
+mod gpu_skin;
+#[path = "web/render.rs"]
+mod render;
 
 fn canvas(width: u32, height: u32) -> web_sys::HtmlCanvasElement {
     let document = web_sys::window().unwrap().document().unwrap();

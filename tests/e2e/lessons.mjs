@@ -8,6 +8,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { tmpdir } from 'node:os';
 import { launch, pixelStats, meanDifference, frames, serveDist, openPage, DIST } from './browser.mjs';
 import { gpuNoiseMatchesCpu } from './noise_gpu.mjs';
 
@@ -419,19 +420,55 @@ const only = process.env.E2E_LESSONS?.split(',');
 const lessons = catalog.filter((l) => !only || only.some((p) => l.folder.startsWith(p)));
 
 /**
- * Registers the lesson tests of the calling file: every lesson of the catalog whose position k
- * has k % parts === part, on each of `backends` (narrowed by E2E_BACKENDS); `extras` adds the
- * checks without a GPU API. The gallery is checked by part 0.
+ * Seconds a lesson's page test may take on a quiet two-core machine running one other test file
+ * beside it (as scripts/test does), per backend: what the README's test-time budget gives a
+ * lesson. Reported, not asserted (a loaded machine is slower): a lesson over it is named in the
+ * output, and a new lesson must fit it.
+ */
+export const LESSON_BUDGET_SEC = { webgl2: 80, webgpu: 20 };
+
+function reportBudget(backend, seconds) {
+  const budget = LESSON_BUDGET_SEC[backend];
+  const total = seconds.reduce((sum, [, s]) => sum + s, 0);
+  const over = seconds.filter(([, s]) => s > budget);
+  console.log(`e2e time on ${backend}: ${seconds.map(([f, s]) => `${f} ${s.toFixed(0)} s`).join(', ')}; ` +
+    `total ${total.toFixed(0)} s; budget ${budget} s a lesson` +
+    (over.length ? `; OVER BUDGET: ${over.map(([f, s]) => `${f} (${s.toFixed(0)} s)`).join(', ')}` : ''));
+}
+
+/**
+ * Registers the lesson tests of the calling file, on each of `backends` (narrowed by
+ * E2E_BACKENDS); `extras` adds the checks without a GPU API. With `parts` > 1 the lessons are
+ * shared among that many files: when scripts/test sets E2E_RUN_ID, the files running at the same
+ * time take the next lesson nobody has taken (a directory created per lesson, which only one
+ * process can create), so they finish together whatever each lesson costs; otherwise part k takes
+ * the lessons at positions k, k + parts, ... The gallery is checked by part 0.
  */
 export function lessonTests({ backends, part = 0, parts = 1, extras = false }) {
-  const mine = lessons.filter((_, k) => k % parts === part);
+  const runId = process.env.E2E_RUN_ID;
+  const take = parts === 1 ? () => true
+    : runId ? (backend, lesson) => claim(`${runId}`, `${backend}-${lesson.folder}`)
+      : (backend, lesson) => lessons.indexOf(lesson) % parts === part;
   for (const backend of BACKENDS.filter((b) => backends.includes(b))) {
-    registerLessons(backend, mine, parts > 1 ? ` (part ${part + 1} of ${parts})` : '', part === 0);
+    registerLessons(backend, lessons, parts > 1 ? ` (part ${part + 1} of ${parts})` : '', part === 0, take);
   }
   if (extras) registerExtras();
 }
 
-function registerLessons(backend, lessons, which, withGallery) {
+/** Takes `what` for this process in the run `runId`: true for exactly one caller of the run. */
+function claim(runId, what) {
+  const dir = join(tmpdir(), `inbetween-e2e-${runId}`);
+  mkdirSync(dir, { recursive: true });
+  try {
+    mkdirSync(join(dir, what));
+    return true;
+  } catch (e) {
+    if (e.code === 'EEXIST') return false;
+    throw e;
+  }
+}
+
+function registerLessons(backend, lessons, which, withGallery, take) {
   test(`lessons on ${backend}${which}`, async (t) => {
     const context = await launch(backend);
     try {
@@ -445,9 +482,12 @@ function registerLessons(backend, lessons, which, withGallery) {
         });
       }
       let framesFitted = 0;
+      const seconds = [];
       for (const lesson of lessons) {
+        if (!take(backend, lesson)) continue;
         await t.test(lesson.folder, async () => {
           const clock = phaseClock(`${lesson.folder} (${backend})`);
+          const started = Date.now();
           const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
           clock('load');
           const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
@@ -531,9 +571,11 @@ function registerLessons(backend, lessons, which, withGallery) {
           assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
           assert.deepEqual(problems, []);
           await page.close();
+          seconds.push([lesson.folder, (Date.now() - started) / 1000]);
         });
       }
       if (!only && !which) assert.ok(framesFitted > 0, 'some figure declares its view');
+      reportBudget(backend, seconds);
     } finally {
       await context.close();
     }

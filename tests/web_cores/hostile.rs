@@ -10,7 +10,6 @@ use inbetween::web::{
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
-wasm_bindgen_test_configure!(run_in_browser);
 
 fn message(e: wasm_bindgen::JsError) -> String {
     let value: JsValue = e.into();

@@ -6,7 +6,6 @@ use inbetween::web::{KeyframesScene, LagrangeScene};
 use wasm_bindgen::{JsError, JsValue};
 use wasm_bindgen_test::*;
 
-wasm_bindgen_test_configure!(run_in_browser);
 
 fn message<T>(result: Result<T, JsError>) -> String {
     match result {

@@ -6,7 +6,6 @@ use inbetween::web::{AimScene, BlendScene, IkScene, LocomotionScene};
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
-wasm_bindgen_test_configure!(run_in_browser);
 
 /// The message a `JsError` carries to JavaScript.
 fn message(e: wasm_bindgen::JsError) -> String {

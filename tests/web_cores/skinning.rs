@@ -7,7 +7,6 @@ use inbetween::web::{check_skin_weights, SkinnedHumanScene, SkinningCylinderScen
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
-wasm_bindgen_test_configure!(run_in_browser);
 
 /// The message a `JsError` carries to JavaScript.
 fn message(e: wasm_bindgen::JsError) -> String {

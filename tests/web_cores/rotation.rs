@@ -7,7 +7,6 @@ use inbetween::web::{AffineScene, InterpolationScene, RigidScene, RodriguesScene
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
-wasm_bindgen_test_configure!(run_in_browser);
 
 /// The message a `JsError` carries to JavaScript.
 fn message(e: wasm_bindgen::JsError) -> String {

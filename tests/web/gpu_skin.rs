@@ -18,7 +18,6 @@ use inbetween::render::{BackendChoice, Gpu, Renderer};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 
-wasm_bindgen_test_configure!(run_in_browser);
 
 const W: u32 = 160;
 const H: u32 = 160;
