@@ -6,6 +6,15 @@
 
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
+/// The message a `JsError` carries to JavaScript (what a page would show).
+fn message(e: wasm_bindgen::JsError) -> String {
+    let value: wasm_bindgen::JsValue = e.into();
+    js_sys::Reflect::get(&value, &"message".into())
+        .ok()
+        .and_then(|m| m.as_string())
+        .unwrap_or_default()
+}
+
 #[path = "web_cores/cloth.rs"]
 mod cloth;
 #[path = "web_cores/curves.rs"]

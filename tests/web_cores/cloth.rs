@@ -4,17 +4,9 @@
 #![cfg(target_arch = "wasm32")]
 
 use inbetween::web::{check_cloth, ClothScene, SpringScene};
-use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
-
-fn message(e: wasm_bindgen::JsError) -> String {
-    let value: JsValue = e.into();
-    js_sys::Reflect::get(&value, &"message".into())
-        .ok()
-        .and_then(|m| m.as_string())
-        .unwrap_or_default()
-}
+use super::message;
 
 #[wasm_bindgen_test]
 fn cloth_sizes_fail_with_their_own_message() {

@@ -6,7 +6,6 @@ use inbetween::web::{KeyframesScene, LagrangeScene};
 use wasm_bindgen::{JsError, JsValue};
 use wasm_bindgen_test::*;
 
-
 fn message<T>(result: Result<T, JsError>) -> String {
     match result {
         Ok(_) => panic!("expected an error"),

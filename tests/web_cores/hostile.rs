@@ -10,14 +10,7 @@ use inbetween::web::{
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
-
-fn message(e: wasm_bindgen::JsError) -> String {
-    let value: JsValue = e.into();
-    js_sys::Reflect::get(&value, &"message".into())
-        .ok()
-        .and_then(|m| m.as_string())
-        .unwrap_or_default()
-}
+use super::message;
 
 #[wasm_bindgen_test]
 fn a_non_string_name_is_an_error_not_a_read_past_the_buffer() {

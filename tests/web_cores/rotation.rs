@@ -4,18 +4,9 @@
 #![cfg(target_arch = "wasm32")]
 
 use inbetween::web::{AffineScene, InterpolationScene, RigidScene, RodriguesScene};
-use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
-
-/// The message a `JsError` carries to JavaScript.
-fn message(e: wasm_bindgen::JsError) -> String {
-    let value: JsValue = e.into();
-    js_sys::Reflect::get(&value, &"message".into())
-        .ok()
-        .and_then(|m| m.as_string())
-        .unwrap_or_default()
-}
+use super::message;
 
 #[wasm_bindgen_test]
 fn a_zero_or_nan_quaternion_is_rejected() {

@@ -7,15 +7,7 @@ use inbetween::web::{check_skeleton, SkeletonScene};
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
-
-/// The message a `JsError` carries to JavaScript.
-fn message(e: wasm_bindgen::JsError) -> String {
-    let value: JsValue = e.into();
-    js_sys::Reflect::get(&value, &"message".into())
-        .ok()
-        .and_then(|m| m.as_string())
-        .unwrap_or_default()
-}
+use super::message;
 
 fn names(n: usize) -> Vec<String> {
     (0..n).map(|i| format!("j{i}")).collect()
