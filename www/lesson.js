@@ -571,6 +571,7 @@ function contentWidth(element) {
  * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0);
  * `setYRange([lo, hi])` sets the data range to show later (padded as autoscaling pads it; `null`
  * autoscales again), for a figure whose Rust side says which samples the scale should follow.
+ * `log: 'xy'` makes both axes logarithmic (`'x'` or `'y'` one of them; the data must be positive).
  * `widths: [5, 1.5]` sets each series' line width in CSS pixels (default 2) and `dashes:
  * [null, [6, 4]]` its dash pattern (dash and gap lengths; `null` solid): a wide line under a
  * narrow one keeps two equal curves both visible. The legend's markers keep the usual 2 px
@@ -581,7 +582,7 @@ function contentWidth(element) {
 export class Plot {
   constructor(element, {
     title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null,
-    widths = [], dashes = [],
+    widths = [], dashes = [], log = '',
   }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
     // The y label is drawn along the plot area and clipped at the canvas: make the plot tall
@@ -608,9 +609,18 @@ export class Plot {
       title,
       width: contentWidth(element) || 560,
       height,
+      // `log: 'x'`, `'y'` or `'xy'`: those axes are logarithmic (base 10, whole decades shown).
       scales: {
-        x: { time: false },
-        y: {
+        x: log.includes('x') ? { time: false, distr: 3, log: 10 } : { time: false },
+        y: log.includes('y') ? {
+          distr: 3,
+          log: 10,
+          range: (u, lo, hi) => {
+            const r = window.uPlot.rangeLog(lo, hi, 10, true);
+            element.dataset.yRange = r.join(' ');
+            return r;
+          },
+        } : {
           range: (u, lo, hi) => {
             const r = yRange ?? (this.dataRange
               ? paddedRange(this.dataRange[0], this.dataRange[1], minSpan)
