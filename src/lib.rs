@@ -16,7 +16,7 @@
 //! | `05-noise`: noise and terrain | [`noise`], [`terrain`] | [`figures::noise`] | `web::noise` (bench: `web::bench_noise`) | [`exercises::noise`] |
 //! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`], [`gltf_import`] | [`figures::skeleton`], [`figures::gltf`] | `web::skeleton`, `web::gltf` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
 //! | `07-inverse-kinematics`: inverse kinematics | [`ik`] | [`figures::ik`] | `web::ik` | [`exercises::ik`] (7.x) |
-//! | `08-blending`: blending | [`skeleton`] (blend, locomotion) | [`figures::blending`] | `web::blending` | [`exercises::skeleton`] (6.3) |
+//! | `08-blending`: blending | [`skeleton`] (blend, locomotion) | [`figures::blending`] | `web::blending` | [`exercises::blending`] (8.1), [`exercises::skeleton`] (6.3) |
 //! | `09-skinning`: skinning (LBS, DQS, automatic weights) | [`skinning`] | [`figures::skinning`] | `web::skinning` (bench: `web::bench_skinning`) | [`exercises::skinning`] (9.x) |
 //! | `10-blend-shapes`: blend shapes | [`blend_shapes`] | [`figures::blend_shapes`] | `web::blend_shapes` | [`exercises::blend_shapes`] (10.x) |
 //! | `11-particles`: particles | [`particles`] (integrators, time of impact, emitters) | [`figures::particles`] | `web::particles` | [`exercises::particles`] (11.x) |

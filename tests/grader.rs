@@ -78,12 +78,14 @@ mod lessons {
         assert_eq!(ids("ik"), ["07-inverse-kinematics"]);
         assert_eq!(ids("blend_shapes"), ["10-blend-shapes"]);
         assert_eq!(ids("skeleton"), ["06-skeletons"]);
+        assert_eq!(ids("08"), ["08-blending"]);
+        assert_eq!(ids("blending"), ["08-blending"]);
         assert_eq!(ids("").len(), LESSONS.len());
     }
 
     #[test]
     fn an_unknown_lesson_gets_the_list_of_lessons() {
-        for selector in ["08", "blending", "99", "xx", "r"] {
+        for selector in ["14", "walking", "99", "xx", "r"] {
             let Err(message) = select_lessons(selector) else {
                 panic!("{selector:?} selected something");
             };

@@ -93,6 +93,7 @@ pub const LESSONS: &[Lesson] = &[
     lesson("05-noise", "noise", super::noise::grade),
     lesson("06-skeletons", "skeleton", super::skeleton::grade),
     lesson("07-inverse-kinematics", "ik", super::ik::grade),
+    lesson("08-blending", "blending", super::blending::grade),
     lesson("09-skinning", "skinning", super::skinning::grade),
     lesson(
         "10-blend-shapes",

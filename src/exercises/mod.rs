@@ -13,6 +13,7 @@
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
 pub mod blend_shapes;
+pub mod blending;
 pub mod boids;
 pub mod cloth;
 pub mod curves;

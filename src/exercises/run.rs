@@ -230,6 +230,7 @@ macro_rules! exercises {
 }
 
 use super::blend_shapes as bs;
+use super::blending as bl;
 use super::cloth as cl;
 use super::ik as ik7;
 use super::noise as nz;
@@ -304,6 +305,9 @@ exercises! {
     /// Exercise 6.3, [`sk::crossfade_joint`].
     fn crossfade_joint(translation_a: Vec3, rotation_a: Quat, translation_b: Vec3, rotation_b: Quat, w: f32) -> (Vec3, Quat) =
         sk::crossfade_joint(translation_a, rotation_a, translation_b, rotation_b, w);
+    /// Exercise 8.1, [`bl::weight_for_speed`].
+    fn weight_for_speed(d_a: f32, travel_a: f32, d_b: f32, travel_b: f32, v: f32) -> f32 =
+        bl::weight_for_speed(d_a, travel_a, d_b, travel_b, v);
     /// Exercise 7.1, [`ik7::two_joint`]: `(new_middle, new_end)`.
     fn two_joint(root: Vec3, middle: Vec3, end: Vec3, target: Vec3, pole: Vec3) -> (Vec3, Vec3) =
         ik7::two_joint(root, middle, end, target, pole);
@@ -495,7 +499,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 35);
+        assert_eq!(NAMES.len(), 36);
     }
 
     #[test]
