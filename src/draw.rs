@@ -691,7 +691,11 @@ impl Frame {
         });
         let wide = self.strokes.iter().map(|s| {
             let c = s.color;
-            (Vec3::from(s.a), Vec3::from(s.b), Vec3::new(c[0], c[1], c[2]))
+            (
+                Vec3::from(s.a),
+                Vec3::from(s.b),
+                Vec3::new(c[0], c[1], c[2]),
+            )
         });
         thin.chain(wide)
     }
@@ -790,7 +794,8 @@ pub fn stroke_corners(
     let reach = half_width + 1.0;
     // From the shader's y-up pixels about the centre to the canvas's y-down pixels.
     let to_canvas = |p: Vec2| Vec2::new(p.x + half_viewport.x, half_viewport.y - p.y);
-    let corner = |s: Vec2, end: f32, side: f32| to_canvas(s + dir * end * reach + normal * side * reach);
+    let corner =
+        |s: Vec2, end: f32, side: f32| to_canvas(s + dir * end * reach + normal * side * reach);
     Some((
         [
             corner(sa, -1.0, -1.0),

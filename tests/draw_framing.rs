@@ -6,7 +6,11 @@ use glam::{Vec2, Vec3};
 use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
 use proptest::prelude::*;
 
-const SIZES: [Vec2; 3] = [Vec2::new(800.0, 600.0), Vec2::new(1600.0, 1000.0), Vec2::new(420.0, 700.0)];
+const SIZES: [Vec2; 3] = [
+    Vec2::new(800.0, 600.0),
+    Vec2::new(1600.0, 1000.0),
+    Vec2::new(420.0, 700.0),
+];
 
 /// Asserts each point is on the canvas at least `pad` (less a hair) from every edge, and that
 /// the view is tight: some point comes within a pixel of the padding.
@@ -17,10 +21,16 @@ fn assert_fits(camera: &OrbitCamera, size: Vec2, points: &[Vec3], pad: f32) {
         let px = project_to_canvas(view_proj, size, *p).expect("in front of the camera");
         let margins = [px.x, px.y, size.x - px.x, size.y - px.y];
         let least = margins.iter().copied().fold(f32::MAX, f32::min);
-        assert!(least >= pad - 0.5, "{p} at {px} on {size}: {least} px from the edge");
+        assert!(
+            least >= pad - 0.5,
+            "{p} at {px} on {size}: {least} px from the edge"
+        );
         slack = slack.min(least - pad);
     }
-    assert!(slack < 1.0, "the fit leaves {slack} px spare on {size}: not tight");
+    assert!(
+        slack < 1.0,
+        "the fit leaves {slack} px spare on {size}: not tight"
+    );
 }
 
 fn corners(min: Vec3, max: Vec3) -> Vec<Vec3> {
@@ -36,7 +46,11 @@ fn a_box_fits_at_both_canvas_sizes_from_the_default_orbit() {
         let mut camera = OrbitCamera::default();
         let (yaw, pitch) = (camera.yaw_rad, camera.pitch_rad);
         assert!(camera.fit(&points, size, FIT_PAD_PX));
-        assert_eq!((camera.yaw_rad, camera.pitch_rad), (yaw, pitch), "the orbit is kept");
+        assert_eq!(
+            (camera.yaw_rad, camera.pitch_rad),
+            (yaw, pitch),
+            "the orbit is kept"
+        );
         assert_fits(&camera, size, &points, FIT_PAD_PX);
     }
 }
@@ -47,7 +61,11 @@ fn a_tall_thin_figure_fits_a_wide_canvas_and_a_wide_one_a_tall_canvas() {
     let wide = corners(Vec3::new(-5.0, 0.0, -0.3), Vec3::new(5.0, 0.4, 0.3));
     for size in SIZES {
         for points in [&tall, &wide] {
-            let mut camera = OrbitCamera { yaw_rad: 0.3, pitch_rad: 0.2, ..OrbitCamera::default() };
+            let mut camera = OrbitCamera {
+                yaw_rad: 0.3,
+                pitch_rad: 0.2,
+                ..OrbitCamera::default()
+            };
             assert!(camera.fit(points, size, FIT_PAD_PX));
             assert_fits(&camera, size, points, FIT_PAD_PX);
         }
@@ -124,7 +142,11 @@ fn figures_that_declare_their_view_fit_at_both_sizes() {
         ];
         for size in sizes {
             for (dy, dp) in [(0.0, 0.0), (0.8, -0.2), (-1.5, 0.3)] {
-                let mut camera = OrbitCamera { yaw_rad: yaw + dy, pitch_rad: pitch + dp, ..OrbitCamera::default() };
+                let mut camera = OrbitCamera {
+                    yaw_rad: yaw + dy,
+                    pitch_rad: pitch + dp,
+                    ..OrbitCamera::default()
+                };
                 assert!(camera.fit(&points, size, FIT_PAD_PX), "{name}");
                 assert_fits(&camera, size, &points, FIT_PAD_PX);
             }

@@ -22,15 +22,24 @@ fn check_layout(labels: &[LabelBox], placed: &[Placement], canvas: Vec2) {
         .map(|(i, p)| (i, rect(&labels[i], p)))
         .collect();
     for (i, r) in &shown {
-        assert!(labels[*i].visible, "label {i} shown with its anchor out of view");
         assert!(
-            r.min.x >= 0.0 && r.min.y >= 0.0 && r.max().x <= canvas.x + 1e-3 && r.max().y <= canvas.y + 1e-3,
+            labels[*i].visible,
+            "label {i} shown with its anchor out of view"
+        );
+        assert!(
+            r.min.x >= 0.0
+                && r.min.y >= 0.0
+                && r.max().x <= canvas.x + 1e-3
+                && r.max().y <= canvas.y + 1e-3,
             "label {i} at {r:?} leaves the {canvas} canvas"
         );
     }
     for (k, (i, a)) in shown.iter().enumerate() {
         for (j, b) in &shown[k + 1..] {
-            assert!(!a.overlaps(b, PAD_PX - 1e-3), "labels {i} {a:?} and {j} {b:?} overlap");
+            assert!(
+                !a.overlaps(b, PAD_PX - 1e-3),
+                "labels {i} {a:?} and {j} {b:?} overlap"
+            );
         }
     }
 }
@@ -99,7 +108,10 @@ fn a_moved_label_gets_a_leader_line_to_its_box() {
     let far: Vec<&Placement> = placed.iter().filter(|p| p.leader_to.is_some()).collect();
     assert!(!far.is_empty());
     for p in far {
-        let r = Rect { min: p.top_left, size: Vec2::new(50.0, 16.0) };
+        let r = Rect {
+            min: p.top_left,
+            size: Vec2::new(50.0, 16.0),
+        };
         let end = p.leader_to.unwrap();
         assert!(end.distance(r.nearest(Vec2::new(400.0, 300.0))) < 1e-4);
     }
@@ -112,12 +124,26 @@ fn with_no_room_the_lowest_priorities_hide() {
     let labels: Vec<LabelBox> = (0..40).map(|i| label(60.0, 30.0, 50.0, i)).collect();
     let placed = place(&labels, canvas);
     check_layout(&labels, &placed, canvas);
-    let shown: Vec<i32> = placed.iter().zip(&labels).filter(|(p, _)| p.shown).map(|(_, l)| l.priority).collect();
+    let shown: Vec<i32> = placed
+        .iter()
+        .zip(&labels)
+        .filter(|(p, _)| p.shown)
+        .map(|(_, l)| l.priority)
+        .collect();
     assert!(shown.len() >= 2 && shown.len() < 40, "{shown:?}");
     // Everything shown outranks everything hidden.
     let lowest_shown = *shown.iter().min().unwrap();
-    let hidden_max = placed.iter().zip(&labels).filter(|(p, _)| !p.shown).map(|(_, l)| l.priority).max().unwrap();
-    assert!(hidden_max < lowest_shown, "hidden {hidden_max} outranks shown {lowest_shown}");
+    let hidden_max = placed
+        .iter()
+        .zip(&labels)
+        .filter(|(p, _)| !p.shown)
+        .map(|(_, l)| l.priority)
+        .max()
+        .unwrap();
+    assert!(
+        hidden_max < lowest_shown,
+        "hidden {hidden_max} outranks shown {lowest_shown}"
+    );
 }
 
 #[test]

@@ -16,7 +16,10 @@ fn quad_width(corners: &[Vec2; 4]) -> f32 {
 #[test]
 fn wide_lines_are_their_width_in_css_pixels_at_two_canvas_sizes() {
     let camera = OrbitCamera::default();
-    for (size, dpr) in [(Vec2::new(800.0, 600.0), 1.0), (Vec2::new(1600.0, 1000.0), 2.0)] {
+    for (size, dpr) in [
+        (Vec2::new(800.0, 600.0), 1.0),
+        (Vec2::new(1600.0, 1000.0), 2.0),
+    ] {
         let view_proj = camera.projection(size.x / size.y) * camera.view();
         for width in [1.0, 2.5, 4.0, 6.0] {
             // One segment near the camera and one far off: the same width on screen.
@@ -26,11 +29,15 @@ fn wide_lines_are_their_width_in_css_pixels_at_two_canvas_sizes() {
             ] {
                 let mut f = Frame::default();
                 f.wide_line(a, b, palette::ORANGE, width);
-                let (corners, half) = stroke_corners(&f.strokes[0], view_proj, size * dpr, dpr).unwrap();
+                let (corners, half) =
+                    stroke_corners(&f.strokes[0], view_proj, size * dpr, dpr).unwrap();
                 assert!((2.0 * half - width * dpr).abs() < 1e-4);
                 // The quad reaches one device pixel past the solid width on each side.
                 let w = quad_width(&corners);
-                assert!((w - (width * dpr + 2.0)).abs() < 0.05, "{size} x{dpr}: {width} px drawn {w}");
+                assert!(
+                    (w - (width * dpr + 2.0)).abs() < 0.05,
+                    "{size} x{dpr}: {width} px drawn {w}"
+                );
                 // And its middle runs through both ends' projections.
                 let mid_a = 0.5 * (corners[0] + corners[3]);
                 let seen = inbetween::camera::project_to_canvas(view_proj, size * dpr, a).unwrap();
@@ -60,7 +67,12 @@ fn a_segment_crossing_the_near_plane_is_cut_there_and_one_behind_it_is_dropped()
 #[test]
 fn polylines_carry_the_distance_along_for_dashes_and_round_every_join() {
     let mut f = Frame::default();
-    let pts = [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 2.0, 0.0), Vec3::new(1.0, 2.0, 2.0)];
+    let pts = [
+        Vec3::ZERO,
+        Vec3::X,
+        Vec3::new(1.0, 2.0, 0.0),
+        Vec3::new(1.0, 2.0, 2.0),
+    ];
     f.stroke(&pts, palette::BLUE, StrokeStyle::dashed(3.0, 0.1, 0.05));
     assert_eq!(f.strokes.len(), 3);
     let starts: Vec<[f32; 4]> = f.strokes.iter().map(|s| s.dash).collect();
@@ -80,26 +92,43 @@ fn bad_widths_sizes_and_points_never_reach_the_gpu() {
     f.wide_line(Vec3::ZERO, Vec3::X, palette::RED, 40.0);
     f.wide_line(Vec3::ZERO, Vec3::X, palette::RED, 0.0);
     f.wide_line(Vec3::ZERO, Vec3::X, palette::RED, f32::NAN);
-    f.wide_polyline(&[Vec3::ZERO, Vec3::NAN, Vec3::X, Vec3::Y], palette::RED, 2.0);
-    f.stroke(&[Vec3::ZERO, Vec3::X], palette::RED, StrokeStyle::dashed(2.0, -1.0, f32::NAN));
+    f.wide_polyline(
+        &[Vec3::ZERO, Vec3::NAN, Vec3::X, Vec3::Y],
+        palette::RED,
+        2.0,
+    );
+    f.stroke(
+        &[Vec3::ZERO, Vec3::X],
+        palette::RED,
+        StrokeStyle::dashed(2.0, -1.0, f32::NAN),
+    );
     let widths: Vec<f32> = f.strokes.iter().map(|s| s.width_px).collect();
     assert_eq!(&widths[..3], &[MAX_WIDTH_PX, MIN_WIDTH_PX, MIN_WIDTH_PX]);
     // The NaN point drops its two segments; the last pair stays.
     assert_eq!(f.strokes.len(), 3 + 1 + 1);
-    assert_eq!(f.strokes.last().unwrap().dash[3], 0.0, "a bad dash draws solid");
+    assert_eq!(
+        f.strokes.last().unwrap().dash[3],
+        0.0,
+        "a bad dash draws solid"
+    );
     f.marker(Vec3::NAN, 8.0, palette::RED);
     f.marker(Vec3::ZERO, 1000.0, palette::RED);
     f.marker(Vec3::ZERO, f32::NAN, palette::RED);
     f.marker_on_top(Vec3::ZERO, 1.0, palette::RED);
     let sizes: Vec<f32> = f.markers.iter().map(|m| m.size_px).collect();
     assert_eq!(sizes, vec![MAX_MARKER_PX, DOT_PX, -MIN_MARKER_PX]);
-    assert!(f.strokes.iter().all(|s| s.a.iter().chain(&s.b).chain(&s.dash).all(|x| x.is_finite())));
+    assert!(f
+        .strokes
+        .iter()
+        .all(|s| s.a.iter().chain(&s.b).chain(&s.dash).all(|x| x.is_finite())));
 }
 
 #[test]
 fn ticks_mark_each_sample_across_its_path() {
     let mut f = Frame::default();
-    let samples: Vec<Vec3> = (0..5).map(|i| Vec3::new(i as f32 * i as f32, 0.0, 0.0)).collect();
+    let samples: Vec<Vec3> = (0..5)
+        .map(|i| Vec3::new(i as f32 * i as f32, 0.0, 0.0))
+        .collect();
     f.ticks(&samples, TICK_PX, palette::KEY);
     assert_eq!(f.markers.len(), 5);
     for (m, p) in f.markers.iter().zip(&samples) {
@@ -152,9 +181,15 @@ fn a_contact_shadow_widens_and_fades_as_its_object_rises() {
     assert_eq!(f.markers.len(), 5);
     for m in &f.markers {
         assert_eq!(m.shape, MARKER_SHADOW);
-        assert_eq!(m.center, [1.0, SHADOW_LIFT_M, -2.0], "on the ground under the object");
+        assert_eq!(
+            m.center,
+            [1.0, SHADOW_LIFT_M, -2.0],
+            "on the ground under the object"
+        );
     }
-    assert!((f.markers[0].color[3] - 0.45).abs() < 1e-6 && (f.markers[0].size_px - 0.2).abs() < 1e-6);
+    assert!(
+        (f.markers[0].color[3] - 0.45).abs() < 1e-6 && (f.markers[0].size_px - 0.2).abs() < 1e-6
+    );
     for pair in f.markers.windows(2) {
         assert!(pair[1].color[3] < pair[0].color[3], "fainter higher up");
         assert!(pair[1].size_px > pair[0].size_px, "wider higher up");

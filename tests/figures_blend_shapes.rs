@@ -14,8 +14,14 @@ fn controls_validate_and_the_full_form_reports_a_bad_sum() {
     assert!(f.set_weight(0, f32::NAN).unwrap_err().contains("weight"));
     assert!(f.set_show("half").unwrap_err().contains("show"));
     assert!(f.set_base_weight(2.0).unwrap_err().contains("base weight"));
-    assert!(f.set_base_weight(-0.05).unwrap_err().contains("base weight"));
-    assert!(f.set_base_weight(f32::NAN).unwrap_err().contains("base weight"));
+    assert!(f
+        .set_base_weight(-0.05)
+        .unwrap_err()
+        .contains("base weight"));
+    assert!(f
+        .set_base_weight(f32::NAN)
+        .unwrap_err()
+        .contains("base weight"));
     assert!(f.weight_curves(1).is_err());
     assert!(f.weight_curves(1_000_000).is_err());
     f.set_animate(false);
@@ -113,7 +119,10 @@ fn both_forms_stand_side_by_side_and_agree_when_the_base_weight_is_one_minus_the
         .zip(&f.full.positions)
         .map(|(a, b)| a.distance(*b))
         .fold(0.0, f32::max);
-    assert!(apart > 0.1, "the defaults show the two forms differ: {apart}");
+    assert!(
+        apart > 0.1,
+        "the defaults show the two forms differ: {apart}"
+    );
     f.set_base_auto(true);
     f.draw(&mut Frame::default(), IDS, 1.3).unwrap();
     for (a, b) in f.differential.positions.iter().zip(&f.full.positions) {
@@ -166,7 +175,10 @@ fn the_weight_plot_follows_the_animation_and_the_full_forms_total() {
         let (t, w) = (row[0], &row[1..5]);
         assert_eq!(w, f.weights_at(t));
         assert!((row[5] - w.iter().sum::<f32>()).abs() < 1e-6);
-        assert!((row[6] - row[5]).abs() < 1e-6, "base 0 by hand: the total is Σw");
+        assert!(
+            (row[6] - row[5]).abs() < 1e-6,
+            "base 0 by hand: the total is Σw"
+        );
     }
     f.set_base_auto(true);
     for row in f.weight_curves(samples).unwrap().chunks(7) {
@@ -362,13 +374,18 @@ fn the_defaults_total_swings_as_the_page_says() {
     let f = FaceFigure::new();
     assert_eq!(f.weights(), DEFAULT_WEIGHTS);
     let (lo, hi) = f.total_range();
-    assert!((lo - 1.03).abs() < 0.006 && (hi - 1.67).abs() < 0.006, "{lo} {hi}");
+    assert!(
+        (lo - 1.03).abs() < 0.006 && (hi - 1.67).abs() < 0.006,
+        "{lo} {hi}"
+    );
     // The samples of the plot agree with the range.
     let flat = f.weight_curves(401).unwrap();
     let totals: Vec<f32> = flat.chunks(7).map(|r| r[6]).collect();
     let (plo, phi) = totals
         .iter()
-        .fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
     assert!((plo - lo).abs() < 0.005 && (phi - hi).abs() < 0.005);
 }
 
@@ -393,7 +410,13 @@ fn the_try_this_steps_do_what_the_page_says() {
     assert!(note.contains("= 1.500, not 1"), "{note}");
     assert!(note.contains("scaled by 1.500 about its centre"), "{note}");
     let base = inbetween::blend_shapes::face().mesh.positions;
-    for ((d, full), b) in f.differential.positions.iter().zip(&f.full.positions).zip(&base) {
+    for ((d, full), b) in f
+        .differential
+        .positions
+        .iter()
+        .zip(&f.full.positions)
+        .zip(&base)
+    {
         assert!((*full - *d - 0.5 * *b).length() < 1e-5);
     }
     // The brows rise on the left head: the brow vertices move up by 0.5 × 12 cm at their middle.
@@ -407,13 +430,19 @@ fn the_try_this_steps_do_what_the_page_says() {
     // Animate: smile and brows pulse half a loop apart, so the total stays 1.0 all along.
     f.set_animate(true);
     let (lo, hi) = f.total_range();
-    assert!((lo - 1.0).abs() < 1e-5 && (hi - 1.0).abs() < 1e-5, "{lo} {hi}");
+    assert!(
+        (lo - 1.0).abs() < 1e-5 && (hi - 1.0).abs() < 1e-5,
+        "{lo} {hi}"
+    );
     // Brows to 0 and jaw open to 0.5: a quarter of a loop apart, the total swings from 0.65
     // to 1.35 and the right head breathes.
     f.set_weight(2, 0.0).unwrap();
     f.set_weight(1, 0.5).unwrap();
     let (lo, hi) = f.total_range();
-    assert!((lo - 0.65).abs() < 0.005 && (hi - 1.35).abs() < 0.005, "{lo} {hi}");
+    assert!(
+        (lo - 0.65).abs() < 0.005 && (hi - 1.35).abs() < 0.005,
+        "{lo} {hi}"
+    );
     // Tick "automatic": both heads the same again, whatever the time.
     f.set_base_auto(true);
     for t in [0.0, 0.7, 2.2] {
@@ -440,7 +469,9 @@ fn the_note_names_a_vanished_and_an_inside_out_base() {
     assert!(note.contains("inside out"), "{note}");
     // The base is mirrored through the centre: a point at the back of the head ends up in front.
     let base = inbetween::blend_shapes::face().mesh.positions;
-    let back = (0..base.len()).min_by(|&a, &b| base[a].z.total_cmp(&base[b].z)).unwrap();
+    let back = (0..base.len())
+        .min_by(|&a, &b| base[a].z.total_cmp(&base[b].z))
+        .unwrap();
     assert!(base[back].z < -0.8 && f.full.positions[back].z > 0.8);
 }
 
@@ -452,7 +483,11 @@ fn the_delta_arrows_run_from_the_base_to_the_blend() {
     let count = |f: &mut FaceFigure| {
         let mut frame = Frame::default();
         f.draw(&mut frame, IDS, 0.0).unwrap();
-        frame.meshes.iter().filter(|m| m.mesh == MeshId::CONE).count()
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CONE)
+            .count()
     };
     let arrows = f.arrow_vertices().len();
     assert!((40..400).contains(&arrows), "{arrows} arrows");
@@ -486,10 +521,17 @@ fn each_target_moves_its_painted_feature() {
         let p = face.mesh.positions[v];
         if p.x.abs() < 0.05 {
             let dy = middle(&face.targets[1], v).y;
-            if p.y > -0.4495 { upper = upper.min(dy) } else { lower = lower.min(dy) }
+            if p.y > -0.4495 {
+                upper = upper.min(dy)
+            } else {
+                lower = lower.min(dy)
+            }
         }
     }
-    assert!(upper > -0.01 && lower < -0.2, "upper {upper}, lower {lower}");
+    assert!(
+        upper > -0.01 && lower < -0.2,
+        "upper {upper}, lower {lower}"
+    );
     // Smile: the corners rise more than the middle.
     let rise = |x_lo: f32, x_hi: f32| {
         mouth
@@ -535,12 +577,18 @@ fn use_my_exercise_checks_probe_weights_beyond_the_sliders() {
         )),
         "{note}"
     );
-    assert!(note.contains("with all weights 0: yours (0.000, 0.000, 0.000), reference ("), "{note}");
+    assert!(
+        note.contains("with all weights 0: yours (0.000, 0.000, 0.000), reference ("),
+        "{note}"
+    );
     // At the defaults (sum 2.7) it differs on the head itself, and the head shows its vertices.
     for (k, w) in DEFAULT_WEIGHTS.into_iter().enumerate() {
         f.set_weight(k, w).unwrap();
     }
     let note = f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
     assert!(note.contains("differs at vertex"), "{note}");
-    assert!(largest_gap(&f) < 1e-4, "the full form's total is 2.7 as is the student's");
+    assert!(
+        largest_gap(&f) < 1e-4,
+        "the full form's total is 2.7 as is the student's"
+    );
 }

@@ -548,7 +548,6 @@ fn a_cloth_pulled_apart_by_a_drag_is_torn_not_exploded() {
     assert!(!note.contains("torn"), "{note}");
 }
 
-
 /// The reference for every exercise of the lesson, except a spring_force that pushes nothing
 /// when compressed (a rope, not a spring): right at the figure's stretched start.
 fn rope_runner(name: &str, a: &[f32]) -> Result<Vec<f32>, Failure> {
@@ -584,7 +583,11 @@ fn use_my_exercise_probes_inputs_the_start_never_reaches() {
     f.set_use_exercise(true);
     let note = f.draw(&mut Frame::default(), 1.0).unwrap();
     // At the start (stretched) all three match; the probes find the compressed case.
-    assert_eq!(note.matches("matches the reference at").count(), 3, "{note}");
+    assert_eq!(
+        note.matches("matches the reference at").count(),
+        3,
+        "{note}"
+    );
     assert!(
         note.contains("Of 10 probe inputs beyond the start, yours differ at: spring_force at a compressed spring (ℓ < ℓ₀)."),
         "{note}"
@@ -600,7 +603,10 @@ fn use_my_exercise_probes_inputs_the_start_never_reaches() {
     }
     f.set_runner(reference_runner);
     let note = f.draw(&mut Frame::default(), 1.0).unwrap();
-    assert!(note.contains("At 10 of 10 probe inputs beyond the start"), "{note}");
+    assert!(
+        note.contains("At 10 of 10 probe inputs beyond the start"),
+        "{note}"
+    );
     assert!(note.contains("your answers match too."), "{note}");
     // Stubs answer nothing: no probe sentence.
     f.set_runner(panicking_runner);
@@ -621,7 +627,10 @@ fn drape_after_jump(method: &str, friction: f32, x: f32) -> (ClothFigure, String
     let sphere = f.obstacles().0.x;
     assert!((sphere - (x.min(0.15))).abs() < 0.03, "{sphere}");
     if x > 0.15 {
-        assert!(frame.points.iter().any(|p| (p.center[0] - x).abs() < 1e-6), "target marker");
+        assert!(
+            frame.points.iter().any(|p| (p.center[0] - x).abs() < 1e-6),
+            "target marker"
+        );
     }
     let _ = note;
     let (note, _) = draw(&mut f, 6.0);
@@ -660,7 +669,10 @@ fn an_explosion_while_an_obstacle_moves_says_so_and_xpbd_is_not_advised_xpbd() {
     f.set_obstacles(1.0, -0.9, 0.7).unwrap();
     let (note, _) = draw(&mut f, 0.5);
     assert!(f.exploded(0).is_some());
-    assert!(note.contains("while the sphere or the box was moving through it"), "{note}");
+    assert!(
+        note.contains("while the sphere or the box was moving through it"),
+        "{note}"
+    );
     assert!(note.contains("or XPBD"), "{note}");
     // Unmoved obstacles: the plain message.
     let mut f = ClothFigure::new(Preset::Drape);

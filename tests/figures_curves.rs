@@ -98,7 +98,11 @@ fn step_with_constant_speed_keeps_the_keyed_timing_and_says_why() {
     let mut s = scene("step");
     s.set_arc_length(true);
     assert!(!s.constant_speed());
-    assert!(s.timing_note().contains("step motion"), "{}", s.timing_note());
+    assert!(
+        s.timing_note().contains("step motion"),
+        "{}",
+        s.timing_note()
+    );
     // Default keys at 0, 0.8, 1.6, 2.2, 3.2 s: at 1.85 s the ball holds key 2.
     let keys = s.track().values().to_vec();
     assert_eq!(s.position(1.85).unwrap(), keys[2]);
@@ -442,7 +446,10 @@ fn clip_graph_cuts_at_the_edge_instead_of_running_along_it() {
     assert!((t - 4.2).abs() < 1e-5 && y == -1.0, "({t}, {y})");
     // The third re-enters at y = -1 between t = 5 and t = 6.
     assert!((pieces[2][0].0 - 5.571_428_5).abs() < 1e-5 && pieces[2][0].1 == -1.0);
-    assert!(pieces.iter().flatten().all(|&(_, y)| (-1.0..=2.0).contains(&y)));
+    assert!(pieces
+        .iter()
+        .flatten()
+        .all(|&(_, y)| (-1.0..=2.0).contains(&y)));
 }
 
 #[test]
@@ -459,11 +466,18 @@ fn the_lagrange_curve_through_more_keys_is_cut_not_flattened_at_the_edge() {
     // No drawn segment runs along an edge: that would be a flat line the polynomial never draws.
     for (a, b) in &red {
         let on_edge = |p: &Vec3| (p.y - top).abs() < 1e-4 || (p.y - bottom).abs() < 1e-4;
-        assert!(!(on_edge(a) && on_edge(b)), "segment {a} to {b} runs along the edge");
+        assert!(
+            !(on_edge(a) && on_edge(b)),
+            "segment {a} to {b} runs along the edge"
+        );
         assert!(a.y <= top + 1e-4 && a.y >= bottom - 1e-4);
     }
     // The curve is cut: it has more than one piece (one polyline per piece).
-    let pieces = red.windows(2).filter(|w| (w[0].1 - w[1].0).length() > 1e-6).count() + 1;
+    let pieces = red
+        .windows(2)
+        .filter(|w| (w[0].1 - w[1].0).length() > 1e-6)
+        .count()
+        + 1;
     assert!(pieces >= 2, "{pieces} pieces");
 }
 
@@ -506,7 +520,8 @@ fn a_verdict_checks_probe_inputs_beyond_the_one_shown() {
         "{note}"
     );
     assert!(
-        note.contains("Your hermite_basis matches the reference at s = ") && note.contains("but differs at s = 0.750"),
+        note.contains("Your hermite_basis matches the reference at s = ")
+            && note.contains("but differs at s = 0.750"),
         "{note}"
     );
     // At s = 1 both tangent weights are 0, so a sign error cannot show there.
@@ -518,7 +533,10 @@ fn a_verdict_checks_probe_inputs_beyond_the_one_shown() {
     // A right answer is checked at the probes too, and the note lists them.
     let (note, _) = note_with(right, true);
     assert!(note.contains("and at 5 more inputs (t = -0.500 s; t = 0.000 s; t = 1.600 s; t = 3.200 s; t = 3.700 s)"), "{note}");
-    assert!(note.contains("Your arc_length_invert matches the reference at s = "), "{note}");
+    assert!(
+        note.contains("Your arc_length_invert matches the reference at s = "),
+        "{note}"
+    );
 }
 
 /// True when two non-neighbouring segments of the polyline cross.
@@ -552,8 +570,15 @@ fn the_captions_preset_claims_hold() {
     assert!(!self_intersects(&path("centripetal", "loop")));
     // "zig-zag: the paths differ by up to 7.5 cm, and B's speed jumps at every key by 0.3 to
     // 0.5 m/s while A's is continuous".
-    let (a, b) = (path("cardinal", "centripetal"), path("centripetal", "centripetal"));
-    let gap = a.iter().zip(&b).map(|(p, q)| (*p - *q).length()).fold(0.0f32, f32::max);
+    let (a, b) = (
+        path("cardinal", "centripetal"),
+        path("centripetal", "centripetal"),
+    );
+    let gap = a
+        .iter()
+        .zip(&b)
+        .map(|(p, q)| (*p - *q).length())
+        .fold(0.0f32, f32::max);
     assert!((gap - 0.075).abs() < 0.005, "largest gap {gap}");
     for (scheme, lo, hi) in [("cardinal", 0.0, 0.05), ("centripetal", 0.3, 0.55)] {
         let mut s = scene(scheme);
@@ -563,7 +588,10 @@ fn the_captions_preset_claims_hold() {
             let before = s.track().evaluate(k - 1e-3).velocity.length();
             let after = s.track().evaluate(k + 1e-3).velocity.length();
             let jump = (after - before).abs();
-            assert!((lo..=hi).contains(&jump), "{scheme} at {k} s: {before} to {after}");
+            assert!(
+                (lo..=hi).contains(&jump),
+                "{scheme} at {k} s: {before} to {after}"
+            );
         }
     }
     // Figure 2: the uneven preset's linear speeds are 5.09, 1.20 and 9.01 m/s.
@@ -577,7 +605,11 @@ fn the_captions_preset_claims_hold() {
             .unwrap()[1]
     };
     for (time, expected) in [(0.15, 5.09), (1.5, 1.20), (2.9, 9.01)] {
-        assert!((speed_at(time) - expected).abs() < 0.01, "at {time} s: {}", speed_at(time));
+        assert!(
+            (speed_at(time) - expected).abs() < 0.01,
+            "at {time} s: {}",
+            speed_at(time)
+        );
     }
 }
 
@@ -590,9 +622,8 @@ fn the_lagrange_captions_numbers_hold() {
         let mut s = LagrangeScene::new();
         s.set_key_count(n).unwrap();
         let ((ta, ya), (tb, yb)) = s.key_sets();
-        let with = |t: Vec<f32>, y: Vec<f32>, i| {
-            Track::new(t, y).unwrap().with_interpolation(i).unwrap()
-        };
+        let with =
+            |t: Vec<f32>, y: Vec<f32>, i| Track::new(t, y).unwrap().with_interpolation(i).unwrap();
         let blue = with(ta, ya, Interpolation::Lagrange);
         let red = with(tb.clone(), yb.clone(), Interpolation::Lagrange);
         let green = with(tb, yb, Interpolation::CATMULL_ROM);
@@ -617,7 +648,10 @@ fn the_lagrange_captions_numbers_hold() {
     assert!(bg < 0.09 && rmax > 3.4, "{bg} {rmax}");
     // 16 keys: red swings out past 100 m, worst near an end.
     let (_, rmax, at) = measure(16.0);
-    assert!(rmax > 100.0 && !(0.15..=0.85).contains(&at), "{rmax} at {at}");
+    assert!(
+        rmax > 100.0 && !(0.15..=0.85).contains(&at),
+        "{rmax} at {at}"
+    );
 }
 
 #[test]
@@ -630,7 +664,11 @@ fn figure_5s_acceleration_jumps_for_catmull_rom_and_not_for_natural() {
             let before = s.track().evaluate(k - 1e-3).acceleration.length();
             let after = s.track().evaluate(k + 1e-3).acceleration.length();
             let jump = (after - before).abs();
-            assert_eq!(jump > 1.0, jumps, "{scheme} at {k} s: a jump of {jump} m/s²");
+            assert_eq!(
+                jump > 1.0,
+                jumps,
+                "{scheme} at {k} s: a jump of {jump} m/s²"
+            );
             if !jumps {
                 assert!(jump < 0.1, "{scheme} at {k} s: {jump}");
             }
@@ -649,7 +687,10 @@ fn the_space_time_view_puts_the_clock_along_the_depth() {
     for p in &curve {
         let tau = -p.z / TIME_DEPTH_M_PER_SEC;
         let q = s.position(tau).unwrap();
-        assert!((p.truncate() - q).length() < 1e-4, "{p} against {q} at {tau} s");
+        assert!(
+            (p.truncate() - q).length() < 1e-4,
+            "{p} against {q} at {tau} s"
+        );
     }
     let deepest = curve.iter().fold(0.0f32, |m, p| m.min(p.z));
     assert!((deepest + TIME_DEPTH_M_PER_SEC * s.track().duration_sec()).abs() < 0.02);
@@ -664,9 +705,16 @@ fn the_space_time_view_puts_the_clock_along_the_depth() {
     let step = ghosts[1] - ghosts[0];
     assert!(ghosts.windows(2).all(|w| (w[1] - w[0] - step).abs() < 1e-4));
     // The ball rides the curve at the clock's depth.
-    let ball = frame.meshes.iter().find(|m| m.color.truncate() == BALL_COLOR).unwrap();
+    let ball = frame
+        .meshes
+        .iter()
+        .find(|m| m.color.truncate() == BALL_COLOR)
+        .unwrap();
     let centre = ball.model.w_axis.truncate();
-    assert!((centre.z + TIME_DEPTH_M_PER_SEC * 1.0).abs() < 1e-5, "{centre}");
+    assert!(
+        (centre.z + TIME_DEPTH_M_PER_SEC * 1.0).abs() < 1e-5,
+        "{centre}"
+    );
     assert!((centre.truncate() - s.position(1.0).unwrap()).length() < 1e-5);
     // Off: no space-time curve, the in-betweens back on the path in the plane z = 0.
     s.set_time_depth(false);
@@ -686,5 +734,8 @@ fn the_space_time_view_puts_the_clock_along_the_depth() {
     s.draw(&mut theirs, 1.0).unwrap();
     let a: Vec<(Vec3, Vec3)> = theirs.segments_of(SPACETIME_COLOR).collect();
     assert_eq!(a.len(), frame.segments_of(SPACETIME_COLOR).count());
-    assert!(a.iter().zip(frame.segments_of(SPACETIME_COLOR)).any(|(x, y)| (x.0 - y.0).length() > 0.05));
+    assert!(a
+        .iter()
+        .zip(frame.segments_of(SPACETIME_COLOR))
+        .any(|(x, y)| (x.0 - y.0).length() > 0.05));
 }

@@ -6,7 +6,7 @@ use inbetween::draw::{Frame, MeshId};
 use inbetween::exercises::run::{direct, Failure, Flat};
 use inbetween::expressive;
 use inbetween::figures::expressive::{
-    damping_regime, FollowThrough, DT, JumpComparison, Spacing, GHOST, MAX_STRETCH, PRINCIPLED,
+    damping_regime, FollowThrough, JumpComparison, Spacing, DT, GHOST, MAX_STRETCH, PRINCIPLED,
 };
 
 fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
@@ -49,7 +49,10 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
     let mut f = Frame::default();
     // Half-way through the trip from key 1 to key 2.
     let note = scene.draw(&mut f, 0.5 * scene.duration).unwrap();
-    assert!(note.contains("10 ghosts"), "the note counts what is drawn: {note}");
+    assert!(
+        note.contains("10 ghosts"),
+        "the note counts what is drawn: {note}"
+    );
     let all_ghosts: Vec<Vec3> = f
         .points
         .iter()
@@ -237,7 +240,10 @@ fn follow_through_lags_and_is_checked_against_the_reference() {
         .unwrap()
         .contains("Not done yet: exercise 2b.2"));
     assert!(scene.set(1.0, 4.0, 6.0).unwrap_err().contains("stiffness"));
-    assert!(scene.set(100.0, 10.0, 500.0).unwrap_err().contains("joints"));
+    assert!(scene
+        .set(100.0, 10.0, 500.0)
+        .unwrap_err()
+        .contains("joints"));
 }
 
 #[test]
@@ -280,8 +286,13 @@ fn the_jump_stretch_is_continuous_and_capped_at_1_6() {
             .windows(2)
             .map(|w| (w[1][3] - w[0][3]).abs())
             .fold(0.0f32, f32::max);
-        assert!(worst < 0.12, "anticipation {a}, stretch {k}: a step of {worst}");
-        assert!(rows.iter().all(|r| r[3] <= MAX_STRETCH + 1e-6 && r[3] > 0.3));
+        assert!(
+            worst < 0.12,
+            "anticipation {a}, stretch {k}: a step of {worst}"
+        );
+        assert!(rows
+            .iter()
+            .all(|r| r[3] <= MAX_STRETCH + 1e-6 && r[3] > 0.3));
     }
     // At 0.2 per m/s, 1 + 0.2 · 6.4 = 2.28 is capped at 1.6, and the note says so.
     scene.set_principles(0.3, 0.2).unwrap();
@@ -301,7 +312,10 @@ fn the_damping_note_names_the_four_regimes() {
     assert!(damping_regime(30.0, 100.0).starts_with("over-damped"));
     let mut scene = FollowThrough::new();
     let note = scene.draw(&mut Frame::default(), 1.0).unwrap();
-    assert!(note.contains("under-damped") && note.contains("2√k = 24.495"), "{note}");
+    assert!(
+        note.contains("under-damped") && note.contains("2√k = 24.495"),
+        "{note}"
+    );
     scene.set(100.0, 20.0, 6.0).unwrap();
     let note = scene.draw(&mut Frame::default(), 1.0).unwrap();
     assert!(note.contains("critically damped"), "{note}");
@@ -325,7 +339,10 @@ fn the_antenna_keeps_its_length_and_stays_finite_over_every_slider_corner() {
             }
         }
     }
-    assert!(scene.set(10.0, 10.0, 6.0).unwrap_err().contains("stiffness"));
+    assert!(scene
+        .set(10.0, 10.0, 6.0)
+        .unwrap_err()
+        .contains("stiffness"));
     assert!(scene.set(150.0, 4.0, 6.0).unwrap_err().contains("damping"));
     assert!(scene.set(150.0, 10.0, 20.0).unwrap_err().contains("joints"));
     assert!(scene.set(150.0, 10.0, 5.5).unwrap_err().contains("joints"));
@@ -340,7 +357,11 @@ fn worst_bend(k: f32, c: f32, joints: usize) -> f32 {
         antenna.step(FollowThrough::base(step as f32 * DT), k, c, DT);
         let p = &antenna.positions;
         for i in 1..joints - 1 {
-            worst = worst.max((p[i] - p[i - 1]).angle_between(p[i + 1] - p[i]).to_degrees());
+            worst = worst.max(
+                (p[i] - p[i - 1])
+                    .angle_between(p[i + 1] - p[i])
+                    .to_degrees(),
+            );
         }
     }
     worst
@@ -352,7 +373,10 @@ fn inside_the_slider_limits_the_antenna_bends_but_never_folds_over() {
         for c in [FollowThrough::MIN_DAMPING, 10.0, 20.0, 60.0] {
             for joints in 3..=FollowThrough::MAX_JOINTS {
                 let bend = worst_bend(k, c, joints);
-                assert!(bend < 110.0, "k {k}, c {c}, {joints} joints: a bend of {bend}°");
+                assert!(
+                    bend < 110.0,
+                    "k {k}, c {c}, {joints} joints: a bend of {bend}°"
+                );
             }
         }
     }
@@ -385,7 +409,10 @@ fn the_jump_captions_numbers_hold() {
     for t in [jump.wind_up + 0.1, jump.wind_up + jump.flight - 0.1] {
         assert_eq!(capped.principled(t).stretch, MAX_STRETCH, "at {t} s");
     }
-    assert!(at(jump.wind_up + 0.1).stretch < MAX_STRETCH, "at 0.06 per m/s it is not capped");
+    assert!(
+        at(jump.wind_up + 0.1).stretch < MAX_STRETCH,
+        "at 0.06 per m/s it is not capped"
+    );
 }
 
 #[test]
@@ -401,10 +428,16 @@ fn a_soft_spring_trails_and_takes_the_whole_hold_to_come_back() {
     let soft = offsets(50.0);
     // k = 50: still 0.3 m behind half-way through the hold, and never swings past.
     assert!(at(&soft, 1.5) < -0.3, "{}", at(&soft, 1.5));
-    assert!(soft.iter().filter(|r| r.0 > 1.0 && r.0 < 2.0).all(|r| r.1 < 0.05));
+    assert!(soft
+        .iter()
+        .filter(|r| r.0 > 1.0 && r.0 < 2.0)
+        .all(|r| r.1 < 0.05));
     // k = 150 (the default): it swings past the base during the hold.
     let default = offsets(150.0);
-    assert!(default.iter().filter(|r| r.0 > 1.0 && r.0 < 2.0).any(|r| r.1 > 0.2));
+    assert!(default
+        .iter()
+        .filter(|r| r.0 > 1.0 && r.0 < 2.0)
+        .any(|r| r.1 > 0.2));
 }
 
 #[test]
@@ -424,18 +457,26 @@ fn the_scale_verdict_checks_a_squash_too() {
     // In flight (0.6 s) the ball is stretched: that input matches, the probe s = 0.6 does not.
     let note = scene.draw(&mut Frame::default(), 0.6).unwrap();
     assert!(
-        note.contains("(the figure's input), but differs at s = 0.600: yours (0.600, 1.000, 1.000)"),
+        note.contains(
+            "(the figure's input), but differs at s = 0.600: yours (0.600, 1.000, 1.000)"
+        ),
         "{note}"
     );
     scene.set_runner(reference);
     let note = scene.draw(&mut Frame::default(), 0.6).unwrap();
-    assert!(note.contains("and at 3 more inputs (s = 0.600; s = 1.000; s = 1.600)"), "{note}");
+    assert!(
+        note.contains("and at 3 more inputs (s = 0.600; s = 1.000; s = 1.600)"),
+        "{note}"
+    );
     // spring_step: one step on inputs where each term shows, after the whole antenna matched.
     let mut follow = FollowThrough::new();
     follow.set_use_exercise(true);
     follow.set_runner(reference);
     let note = follow.draw(&mut Frame::default(), 0.5).unwrap();
-    assert!(note.contains("and at 3 more inputs (one step from x = (0, 0, 0)"), "{note}");
+    assert!(
+        note.contains("and at 3 more inputs (one step from x = (0, 0, 0)"),
+        "{note}"
+    );
 }
 
 #[test]
@@ -451,6 +492,9 @@ fn just_past_critical_damping_the_tip_no_longer_swings_past() {
             .filter(|r| r[0] > 1.0 && r[0] < 2.0)
             .map(|r| r[2] - r[1])
             .fold(f32::MIN, f32::max);
-        assert!(past < 0.01, "c = {c}: the tip swings {past} m past the base");
+        assert!(
+            past < 0.01,
+            "c = {c}: the tip swings {past} m past the base"
+        );
     }
 }

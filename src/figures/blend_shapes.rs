@@ -568,9 +568,7 @@ fn full_verdict(total: f32) -> String {
 }
 
 fn fmt_vec(v: Vec3) -> String {
-    v.to_array()
-        .map(format_number)
-        .join(", ")
+    v.to_array().map(format_number).join(", ")
 }
 
 fn targets_of(face: &Face, v: usize) -> Vec<Vec3> {

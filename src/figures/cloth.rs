@@ -1362,12 +1362,22 @@ impl SpringFigure {
             ),
             (
                 "damping alone (ℓ = ℓ₀, b moving away)",
-                [Vec3::ZERO, Vec3::new(0.8, 0.0, 0.0), Vec3::ZERO, Vec3::new(1.0, 0.5, 0.0)],
+                [
+                    Vec3::ZERO,
+                    Vec3::new(0.8, 0.0, 0.0),
+                    Vec3::ZERO,
+                    Vec3::new(1.0, 0.5, 0.0),
+                ],
                 [40.0, 0.3, 0.8],
             ),
             (
                 "a stretched spring along −y with both ends moving",
-                [Vec3::Y, Vec3::ZERO, Vec3::new(0.0, 0.4, 0.0), Vec3::new(0.2, -0.3, 0.0)],
+                [
+                    Vec3::Y,
+                    Vec3::ZERO,
+                    Vec3::new(0.0, 0.4, 0.0),
+                    Vec3::new(0.2, -0.3, 0.0),
+                ],
                 [25.0, 0.2, 0.5],
             ),
         ];
@@ -1381,7 +1391,11 @@ impl SpringFigure {
                 }
             }
         }
-        let (p, v, f) = (Vec3::new(0.1, 1.0, 0.0), Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, -2.0, 1.0));
+        let (p, v, f) = (
+            Vec3::new(0.1, 1.0, 0.0),
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(0.0, -2.0, 1.0),
+        );
         let step_probes: [(&str, f32, f32); 3] = [
             ("a pinned particle (w = 0)", 0.0, 0.02),
             ("a zero step (dt = 0)", w, 0.0),
@@ -1406,7 +1420,13 @@ impl SpringFigure {
         let project_probes: [(&str, f32, f32, f32, f32); 4] = [
             ("both ends free and equal (wa = wb)", w, w, 0.8, 1.0 / 40.0),
             ("a rigid constraint (α = 0)", w, w, 0.8, 0.0),
-            ("a compressed constraint (ℓ < ℓ₀)", w, 2.0 * w, 1.5, 1.0 / 40.0),
+            (
+                "a compressed constraint (ℓ < ℓ₀)",
+                w,
+                2.0 * w,
+                1.5,
+                1.0 / 40.0,
+            ),
             ("b pinned (wb = 0)", w, 0.0, 0.8, 0.0),
         ];
         for (name, wa, wb, rest, alpha) in project_probes {

@@ -200,7 +200,10 @@ fn check_keys(track: &Track<Vec2>) -> Result<(), String> {
         ));
     }
     let tangents = track.tangents_in().iter().chain(track.tangents_out());
-    if let Some(d) = tangents.into_iter().find(|d| beyond(d, KEY_TANGENT_LIMIT_M_PER_SEC)) {
+    if let Some(d) = tangents
+        .into_iter()
+        .find(|d| beyond(d, KEY_TANGENT_LIMIT_M_PER_SEC))
+    {
         return Err(format!(
             "tangents must lie in [-{KEY_TANGENT_LIMIT_M_PER_SEC}, {KEY_TANGENT_LIMIT_M_PER_SEC}] m/s on each axis, got ({}, {})",
             d.x, d.y
@@ -555,19 +558,18 @@ impl KeyframesScene {
         let model = Mat4::from_translation(on_curve) * Mat4::from_scale(Vec3::splat(0.16));
         frame.mesh(MeshId::SPHERE, model, BALL_COLOR);
         // The time axis, left of the path on the ground.
-        let left = self
-            .track
-            .values()
-            .iter()
-            .fold(f32::MAX, |m, p| m.min(p.x))
-            - 0.5;
+        let left = self.track.values().iter().fold(f32::MAX, |m, p| m.min(p.x)) - 0.5;
         let duration = self.track.duration_sec();
         let axis = |t: f32| Vec3::new(left, 0.0, depth(t));
         frame.arrow(axis(0.0), axis(duration + 0.4), palette::DARK, 0.12);
         for second in 0..=duration.floor() as usize {
             let p = axis(second as f32);
             frame.line(p - Vec3::X * 0.08, p + Vec3::X * 0.08, palette::DARK);
-            frame.label(p - Vec3::X * 0.35 - Vec3::Y * 0.1, format!("{second} s"), palette::DARK);
+            frame.label(
+                p - Vec3::X * 0.35 - Vec3::Y * 0.1,
+                format!("{second} s"),
+                palette::DARK,
+            );
         }
         frame.label(axis(duration + 0.6), "time (s)", palette::DARK);
     }
@@ -886,7 +888,8 @@ impl KeyframesScene {
         let probes = inputs
             .iter()
             .map(|&u| {
-                let yours = run::arc_length_invert(self.runner, params.to_vec(), lengths.to_vec(), u)?;
+                let yours =
+                    run::arc_length_invert(self.runner, params.to_vec(), lengths.to_vec(), u)?;
                 Ok(Probe {
                     at: format!("s = {} m", format_number(u)),
                     yours: vec![yours],
@@ -919,9 +922,24 @@ impl KeyframesScene {
         let xs = |v: &[Vec2]| v.iter().map(|p| p.x).collect::<Vec<f32>>();
         let (uneven_t, uneven_v) = preset("uneven").expect("a known preset");
         let inputs = [
-            (self.track.times().to_vec(), xs(self.track.values()), 0.5, "the figure's keys' x at μ = 0.5"),
-            (uneven_t, xs(&uneven_v), 1.0, "the uneven-times preset's x at μ = 1"),
-            (vec![0.0, 2.0], vec![1.0, 3.0], 1.0, "two keys (0 s, 1) and (2 s, 3) at μ = 1"),
+            (
+                self.track.times().to_vec(),
+                xs(self.track.values()),
+                0.5,
+                "the figure's keys' x at μ = 0.5",
+            ),
+            (
+                uneven_t,
+                xs(&uneven_v),
+                1.0,
+                "the uneven-times preset's x at μ = 1",
+            ),
+            (
+                vec![0.0, 2.0],
+                vec![1.0, 3.0],
+                1.0,
+                "two keys (0 s, 1) and (2 s, 3) at μ = 1",
+            ),
         ];
         let mut probes = vec![Probe {
             at: format!("all {} keys (μ = {mu})", reference.len()),
@@ -1213,7 +1231,12 @@ pub fn probe_note(what: &str, probes: &[Probe], tolerance: f32) -> (bool, String
     let check = |p: &Probe| compare_note(what, &p.at, &p.yours, &p.reference, tolerance);
     let (shown_ok, shown_note) = check(shown);
     let wrong: Vec<&Probe> = more.iter().filter(|p| !check(p).0).collect();
-    let names = |ps: &[&Probe]| ps.iter().map(|p| p.at.as_str()).collect::<Vec<_>>().join("; ");
+    let names = |ps: &[&Probe]| {
+        ps.iter()
+            .map(|p| p.at.as_str())
+            .collect::<Vec<_>>()
+            .join("; ")
+    };
     match (shown_ok, wrong.split_first()) {
         (true, None) => {
             let all: Vec<&Probe> = more.iter().collect();

@@ -2,8 +2,8 @@
 //! principles applied, and follow-through on an antenna. Native and tested natively
 //! (tests/figures_expressive.rs); `web::expressive` only wraps these for JavaScript.
 
-use super::{check_samples, compare_note, failure_note, format_number, in_range, palette};
 use super::curves::{probe_note, Probe};
+use super::{check_samples, compare_note, failure_note, format_number, in_range, palette};
 use super::{Failure, Frame, MeshId, Runner, DEFAULT_RUNNER};
 use crate::curves::Ease;
 use crate::exercises::run;
@@ -260,7 +260,11 @@ impl Spacing {
         frame.line(ruler(0.0), ruler(1.0), CHART);
         for k in 0..self.ghosts {
             let f = ghost(k);
-            frame.point(arc_point(START, END, Vec3::Y, self.arc_height, f), 0.06, GHOST);
+            frame.point(
+                arc_point(START, END, Vec3::Y, self.arc_height, f),
+                0.06,
+                GHOST,
+            );
             frame.line(ruler(f), ruler(f) + Vec3::new(0.0, 0.0, 0.25), CHART);
         }
         frame.label(
@@ -741,10 +745,11 @@ impl FollowThrough {
                 reference: [rx.to_array(), rv.to_array()].concat(),
             })
         };
-        let steps: Result<Vec<Probe>, Failure> = [(0.0, 100.0, 0.0), (2.0, 100.0, 10.0), (2.0, 0.0, 10.0)]
-            .into_iter()
-            .map(|(v, k, c)| one_step(Vec3::ZERO, Vec3::X * v, Vec3::X, k, c, 0.1))
-            .collect();
+        let steps: Result<Vec<Probe>, Failure> =
+            [(0.0, 100.0, 0.0), (2.0, 100.0, 10.0), (2.0, 0.0, 10.0)]
+                .into_iter()
+                .map(|(v, k, c)| one_step(Vec3::ZERO, Vec3::X * v, Vec3::X, k, c, 0.1))
+                .collect();
         match steps {
             Err(f) => failure_note("exercise 2b.2 spring_step", FILE, &f),
             Ok(steps) => {

@@ -24,6 +24,6 @@ pub mod texture;
 
 pub use fractal::{marble2, turbulence2, Fractal, Shape, MAX_N};
 pub use perlin::{
-    cell2, cell2_with_derivative, fade, fade_derivative, fade_second_derivative, grad1, grad2, noise3_f64, Permutation,
-    GRAD3, PERLIN_PERMUTATION,
+    cell2, cell2_with_derivative, fade, fade_derivative, fade_second_derivative, grad1, grad2,
+    noise3_f64, Permutation, GRAD3, PERLIN_PERMUTATION,
 };

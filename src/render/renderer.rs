@@ -26,7 +26,16 @@ pub(super) fn scene_pipeline(
     primitive: wgpu::PrimitiveState,
 ) -> wgpu::RenderPipeline {
     let depth_write = true;
-    scene_pipeline_with(device, format, label, layout, module, buffers, primitive, depth_write)
+    scene_pipeline_with(
+        device,
+        format,
+        label,
+        layout,
+        module,
+        buffers,
+        primitive,
+        depth_write,
+    )
 }
 
 /// [`scene_pipeline`], choosing whether it writes depth. Wide lines and markers only test it:

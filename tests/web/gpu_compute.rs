@@ -13,7 +13,6 @@ use inbetween::render::{BackendChoice, BoidsCompute, Gpu, ParticlesCompute};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 
-
 async fn gpu() -> Gpu {
     let document = web_sys::window().unwrap().document().unwrap();
     let canvas: web_sys::HtmlCanvasElement = document

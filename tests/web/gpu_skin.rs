@@ -18,7 +18,6 @@ use inbetween::render::{BackendChoice, Gpu, Renderer};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 
-
 const W: u32 = 160;
 const H: u32 = 160;
 

@@ -11,7 +11,6 @@ use inbetween::render::{BackendChoice, Gpu, Renderer};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 
-
 const W: u32 = 240;
 const H: u32 = 160;
 
@@ -47,7 +46,9 @@ fn camera() -> OrbitCamera {
 
 /// Pixels of row `y` darker than the light background, as runs `(start, length)`.
 fn dark_runs(pixels: &[u8], y: u32) -> Vec<(u32, u32)> {
-    runs(pixels, y, |p| p.iter().map(|&c| c as u32).sum::<u32>() < 3 * 128)
+    runs(pixels, y, |p| {
+        p.iter().map(|&c| c as u32).sum::<u32>() < 3 * 128
+    })
 }
 
 /// Runs `(start, length)` of the pixels of row `y` for which `keep` holds.
@@ -100,10 +101,15 @@ async fn a_wide_line_is_as_wide_as_asked_on_this_backend() {
                 palette::KEY,
                 width,
             );
-            renderer
-                .frame
-                .line(Vec3::new(1.0, -1.5, 0.0), Vec3::new(1.0, 1.5, 0.0), palette::KEY);
-            let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+            renderer.frame.line(
+                Vec3::new(1.0, -1.5, 0.0),
+                Vec3::new(1.0, 1.5, 0.0),
+                palette::KEY,
+            );
+            let pixels = renderer
+                .render_to_rgba(&gpu, &camera(), W, H)
+                .await
+                .unwrap();
             let expected = width * px_per_css;
             let wide = ink(&pixels, H / 2, 0, W / 2 + 20, key);
             let thin = ink(&pixels, H / 2, W / 2 + 20, W, key);
@@ -135,7 +141,10 @@ async fn a_polyline_joins_without_gaps_and_dashes_leave_gaps() {
         Vec3::new(1.0, 0.0, 0.0),
     ];
     renderer.frame.wide_polyline(&zig, palette::KEY, 6.0);
-    let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+    let pixels = renderer
+        .render_to_rgba(&gpu, &camera(), W, H)
+        .await
+        .unwrap();
     let centre = |p: Vec3| {
         let c = camera();
         let vp = c.projection(W as f32 / H as f32) * c.view();
@@ -149,7 +158,11 @@ async fn a_polyline_joins_without_gaps_and_dashes_leave_gaps() {
             for dx in [-1i32, 0, 1] {
                 let i = (((y as i32 + dy) as u32 * W + (x as i32 + dx) as u32) * 4) as usize;
                 let sum: u32 = pixels[i..i + 3].iter().map(|&c| c as u32).sum();
-                assert!(sum < 3 * 128, "{}: a gap at the join {join} ({x}, {y}) + ({dx}, {dy})", gpu.backend_name);
+                assert!(
+                    sum < 3 * 128,
+                    "{}: a gap at the join {join} ({x}, {y}) + ({dx}, {dy})",
+                    gpu.backend_name
+                );
             }
         }
     }
@@ -160,10 +173,17 @@ async fn a_polyline_joins_without_gaps_and_dashes_leave_gaps() {
         palette::KEY,
         StrokeStyle::dashed(4.0, 0.25, 0.25),
     );
-    let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+    let pixels = renderer
+        .render_to_rgba(&gpu, &camera(), W, H)
+        .await
+        .unwrap();
     let row = centre(Vec3::new(0.0, y, 0.0)).y.round() as u32;
     let runs = dark_runs(&pixels, row);
-    assert!((7..=9).contains(&runs.len()), "{}: 4 m of 0.25 m dashes and gaps: {runs:?}", gpu.backend_name);
+    assert!(
+        (7..=9).contains(&runs.len()),
+        "{}: 4 m of 0.25 m dashes and gaps: {runs:?}",
+        gpu.backend_name
+    );
 }
 
 #[wasm_bindgen_test]
@@ -173,7 +193,10 @@ async fn a_marker_keeps_its_size_in_pixels_at_any_distance() {
     renderer.px_per_css = 1.0;
     for distance in [2.0, 40.0] {
         renderer.frame.marker(Vec3::ZERO, 16.0, palette::KEY);
-        let c = OrbitCamera { distance, ..camera() };
+        let c = OrbitCamera {
+            distance,
+            ..camera()
+        };
         let pixels = renderer.render_to_rgba(&gpu, &c, W, H).await.unwrap();
         // The marker is everything that is not the background (the white ring too): the row
         // through its centre spans its 16 pixels.
@@ -186,7 +209,12 @@ async fn a_marker_keeps_its_size_in_pixels_at_any_distance() {
         );
         // And its middle is the marker's colour.
         let i = ((H / 2 * W + W / 2) * 4) as usize;
-        assert!(pixels[i + 1] < 0x40, "{}: the fill is {:?}", gpu.backend_name, &pixels[i..i + 3]);
+        assert!(
+            pixels[i + 1] < 0x40,
+            "{}: the fill is {:?}",
+            gpu.backend_name,
+            &pixels[i..i + 3]
+        );
     }
 }
 
@@ -219,7 +247,9 @@ async fn a_contact_shadow_darkens_the_ground_under_an_object() {
     for shadow in [false, true] {
         renderer.frame.mesh(MeshId::SPHERE, ball, palette::ORANGE);
         if shadow {
-            renderer.frame.contact_shadow(Vec3::new(0.0, 0.25, 0.0), 0.1);
+            renderer
+                .frame
+                .contact_shadow(Vec3::new(0.0, 0.25, 0.0), 0.1);
         }
         let pixels = renderer.render_to_rgba(&gpu, &c, W, H).await.unwrap();
         green.push(pixels[i + 1]);
