@@ -36,6 +36,16 @@ pub enum Status {
         /// Where it panicked, `file:line:column` (as the browser's report gives it).
         location: Option<String>,
     },
+    /// The exercise gave no answer within the page's time limit (an endless loop, most likely).
+    /// Only the page reports this: natively the grader would wait for ever.
+    Stopped {
+        /// The case's number, counting from 1.
+        case: usize,
+        what: String,
+        input: Vec<(&'static str, String)>,
+        /// The time limit it ran into, in seconds.
+        seconds: f32,
+    },
 }
 
 /// One row of the grade table.
@@ -182,6 +192,112 @@ pub fn grade_selected(selector: &str) -> Result<Vec<Report>, String> {
         .collect())
 }
 
+/// A failure that an earlier run in the page met and could not survive: a panic ends a wasm
+/// module, and an endless loop has to be stopped from outside. The page grades again in a fresh
+/// module with these known, so the exercise gets its row without running again and the others are
+/// graded on the very same inputs (no case depends on an answer).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Known {
+    pub exercise: String,
+    /// The case it happened at, counting from 1.
+    pub case: usize,
+    pub failure: KnownFailure,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum KnownFailure {
+    Panicked {
+        message: String,
+        location: Option<String>,
+    },
+    Stopped {
+        seconds: f32,
+    },
+}
+
+/// Called with the exercise's name and the case's number before each case runs.
+pub type OnCase = fn(exercise: &str, case: usize);
+
+thread_local! {
+    static KNOWN: std::cell::RefCell<Vec<Known>> = const { std::cell::RefCell::new(Vec::new()) };
+    static ON_CASE: std::cell::Cell<Option<OnCase>> = const { std::cell::Cell::new(None) };
+}
+
+/// Grades `lesson` as [`Lesson::grade`] does, with the failures `known` from earlier runs
+/// replayed instead of run, and `on_case` told of each case as it starts (the page's watchdog
+/// uses it to say which case ran too long).
+pub fn grade_lesson_with(
+    lesson: &Lesson,
+    known: Vec<Known>,
+    on_case: Option<OnCase>,
+) -> Vec<Report> {
+    KNOWN.set(known);
+    ON_CASE.set(on_case);
+    let reports = lesson.grade();
+    KNOWN.set(Vec::new());
+    ON_CASE.set(None);
+    reports
+}
+
+/// The row of an exercise whose failure is known (see [`Known`]), if it is.
+fn replayed<I: Args<N>, const N: usize>(
+    exercise: &'static str,
+    args: [&'static str; N],
+    cases: &[(&str, I)],
+) -> Option<Status> {
+    let known = KNOWN.with_borrow(|all| all.iter().find(|k| k.exercise == exercise).cloned())?;
+    let (what, input) = cases.get(known.case.checked_sub(1)?)?;
+    let (what, input) = (what.to_string(), named(args, input));
+    let case = known.case;
+    Some(match known.failure {
+        KnownFailure::Panicked { message, location } => Status::Panicked {
+            case,
+            what,
+            input,
+            message,
+            location,
+        },
+        KnownFailure::Stopped { seconds } => Status::Stopped {
+            case,
+            what,
+            input,
+            seconds,
+        },
+    })
+}
+
+/// The `student-bugs` build's mistakes, in the grader as in the figures (see
+/// `run::student_bugs`): slerp panics, the Rodrigues matrix comes out transposed, and in the
+/// browser `polar_step` never returns (the page's time limit must stop it; natively it is left
+/// alone, since nothing could stop it there).
+#[cfg(feature = "student-bugs")]
+fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O> {
+    use std::any::Any;
+    let mut answer = answer;
+    match exercise {
+        "slerp" => {
+            let _ = super::run::student_bugs("slerp", &[0.0; 9]);
+        }
+        "rodrigues_matrix" => {
+            if let Some(Ok(m)) = (&mut answer as &mut dyn Any).downcast_mut::<Answer<glam::Mat3>>()
+            {
+                *m = m.transpose();
+            }
+        }
+        #[cfg(target_arch = "wasm32")]
+        "polar_step" => loop {
+            std::hint::black_box(&answer);
+        },
+        _ => {}
+    }
+    answer
+}
+
+#[cfg(not(feature = "student-bugs"))]
+fn with_student_bugs<O>(_exercise: &str, answer: Answer<O>) -> Answer<O> {
+    answer
+}
+
 /// What a case of random inputs is said to test.
 pub const RANDOM: &str = "random input";
 
@@ -244,7 +360,7 @@ fn named<I: Args<N>, const N: usize>(
 /// Runs `student` and `reference` on each input; the first disagreement (by `close`) fails.
 /// `args` names the exercise's arguments, in the order of the input tuple. Every case counts as
 /// [`RANDOM`]; [`check_cases`] says what each edge case tests.
-pub fn check<I: Args<N>, O: Debug, const N: usize>(
+pub fn check<I: Args<N>, O: Debug + 'static, const N: usize>(
     lesson: &'static str,
     exercise: &'static str,
     args: [&'static str; N],
@@ -274,7 +390,7 @@ impl<I: Args<N>, const N: usize> Args<N> for &I {
 
 /// Like [`check`], with each input paired with what it tests, e.g.
 /// `("keys with a·b < 0: the short arc", input)`, so that a wrong answer says what it got wrong.
-pub fn check_cases<I: Args<N>, O: Debug, const N: usize>(
+pub fn check_cases<I: Args<N>, O: Debug + 'static, const N: usize>(
     lesson: &'static str,
     exercise: &'static str,
     args: [&'static str; N],
@@ -284,10 +400,16 @@ pub fn check_cases<I: Args<N>, O: Debug, const N: usize>(
     close: impl Fn(&O, &O) -> bool,
 ) -> Report {
     let status = (|| {
+        if let Some(status) = replayed(exercise, args, cases) {
+            return status;
+        }
         // Numbered from 1: "WRONG at case 1" is the first case a student would count.
         for (case, (what, input)) in (1..).zip(cases) {
             let context = || format!("exercise {exercise} ({lesson}), case {case} ({what})");
-            let answer = match run_caught(context, || student(input)) {
+            if let Some(on_case) = ON_CASE.get() {
+                on_case(exercise, case);
+            }
+            let answer = match run_caught(context, || with_student_bugs(exercise, student(input))) {
                 Ok(answer) => answer,
                 Err(Caught { message, location }) => {
                     return Status::Panicked {
@@ -456,6 +578,11 @@ impl fmt::Display for Status {
                 "WRONG at case {case} ({what})\n      input:    {}\n      expected: {expected}\n      actual:   {actual}",
                 show_input(input)
             ),
+            Status::Stopped { case, what, input, seconds } => write!(
+                f,
+                "STOPPED at case {case} ({what}): no answer within {seconds} s (an endless loop?)\n      input:    {}",
+                show_input(input)
+            ),
             Status::Panicked { case, what, input, message, location } => write!(
                 f,
                 "PANICKED at case {case} ({what}): {message}{}\n      input:    {}",
@@ -478,5 +605,150 @@ fn show_input(input: &[(&str, String)]) -> String {
         one_line
     } else {
         parts.join(&format!("\n{:16}", ""))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    thread_local! {
+        /// How often the fake lesson's first exercise ran on this test's thread.
+        static FIRST_RAN: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+    }
+
+    fn first(x: &f32) -> Answer<f32> {
+        FIRST_RAN.set(FIRST_RAN.get() + 1);
+        if *x > 1.5 {
+            panic!("x is too big: {x}");
+        }
+        Ok(*x)
+    }
+
+    /// Two exercises with inputs from the generator: the first panics at its second case.
+    fn fake(rng: &mut Rng) -> Vec<Report> {
+        let a = [
+            ("one", 1.0_f32),
+            ("two", 2.0),
+            (RANDOM, rng.range(0.0, 1.0)),
+        ];
+        let b = [("small", rng.range(0.0, 1.0)), ("smaller", 0.25)];
+        vec![
+            check_cases("99-fake", "first", ["x"], &a, first, |x| *x, |p, q| p == q),
+            check_cases(
+                "99-fake",
+                "second",
+                ["y"],
+                &b,
+                |y| Ok(*y * 2.0),
+                |y| *y * 2.0,
+                |p, q| p == q,
+            ),
+        ]
+    }
+
+    const FAKE: Lesson = lesson("99-fake", "fake", fake);
+
+    #[test]
+    fn a_known_panic_is_replayed_with_the_same_row_and_not_run_again() {
+        let native = FAKE.grade();
+        let Status::Panicked {
+            case,
+            message,
+            location,
+            ..
+        } = &native[0].status
+        else {
+            panic!("expected a panic: {:?}", native[0].status);
+        };
+        assert_eq!((*case, message.as_str()), (2, "x is too big: 2"));
+        let location = location.clone().expect("the panic's location");
+        assert!(
+            location.starts_with("src/exercises/grade.rs:"),
+            "{location}"
+        );
+        let known = vec![Known {
+            exercise: "first".into(),
+            case: 2,
+            failure: KnownFailure::Panicked {
+                message: message.clone(),
+                location: Some(location),
+            },
+        }];
+        let before = FIRST_RAN.get();
+        let replayed = grade_lesson_with(&FAKE, known, None);
+        assert_eq!(
+            FIRST_RAN.get(),
+            before,
+            "a known failure does not run again"
+        );
+        assert_eq!(replayed, native);
+        assert_eq!(table(&replayed), table(&native));
+    }
+
+    #[test]
+    fn a_stopped_exercise_gets_its_case_and_the_time_limit() {
+        let known = vec![Known {
+            exercise: "second".into(),
+            case: 1,
+            failure: KnownFailure::Stopped { seconds: 5.0 },
+        }];
+        let reports = grade_lesson_with(&FAKE, known, None);
+        let Status::Stopped {
+            case,
+            what,
+            input,
+            seconds,
+        } = &reports[1].status
+        else {
+            panic!("expected a stop: {:?}", reports[1].status);
+        };
+        assert_eq!((*case, what.as_str(), *seconds), (1, "small", 5.0));
+        assert_eq!(input[0].0, "y");
+        let line = reports[1].status.to_string();
+        assert!(
+            line.starts_with("STOPPED at case 1 (small): no answer within 5 s"),
+            "{line}"
+        );
+        assert!(table(&reports).contains("0 passed, 0 not yet implemented, 2 wrong, of 2"));
+        // Nothing stays known for the next grading.
+        assert!(matches!(
+            FAKE.grade()[1].status,
+            Status::Passed { cases: 2 }
+        ));
+    }
+
+    #[test]
+    fn the_watchdog_hears_of_every_case_before_it_runs() {
+        static SEEN: std::sync::Mutex<Vec<(String, usize)>> = std::sync::Mutex::new(Vec::new());
+        fn heard(exercise: &str, case: usize) {
+            SEEN.lock().unwrap().push((exercise.to_string(), case));
+        }
+        grade_lesson_with(&FAKE, Vec::new(), Some(heard));
+        let seen = SEEN.lock().unwrap().clone();
+        let expected: Vec<(String, usize)> =
+            [("first", 1), ("first", 2), ("second", 1), ("second", 2)]
+                .map(|(e, c)| (e.to_string(), c))
+                .to_vec();
+        assert_eq!(seen, expected, "the first exercise stops at its panic");
+    }
+
+    #[cfg(all(feature = "student-bugs", feature = "solutions"))]
+    #[test]
+    fn the_student_bugs_build_grades_wrong_and_panicking_exercises() {
+        let rows = grade_selected("03").unwrap();
+        let status = |name: &str| &rows.iter().find(|r| r.exercise == name).unwrap().status;
+        assert!(matches!(
+            status("quat_from_axis_angle"),
+            Status::Passed { .. }
+        ));
+        let Status::Panicked { location, .. } = status("slerp") else {
+            panic!("slerp: {:?}", status("slerp"));
+        };
+        assert!(location
+            .as_deref()
+            .unwrap_or("")
+            .starts_with("src/exercises/run.rs:"));
+        assert!(matches!(status("rodrigues_matrix"), Status::Wrong { .. }));
     }
 }

@@ -357,10 +357,92 @@ exercises! {
         cl::project_distance(pa, pb, wa, wb, rest, alpha, dt);
 }
 
+/// The numbers the lessons' quizzes ask for (`lessons/*/quiz.json`, `"answer": {"core": name,
+/// "args": [...]}`), computed by the reference cores, never by the student's code and never in
+/// JavaScript. Each entry takes its arguments as plain numbers and returns one number.
+pub const QUIZ_ANSWERS: &[&str] = &[
+    "hermite_basis",
+    "slerp_angle_about_z_deg",
+    "floor_time_of_impact",
+    "spring_force_magnitude",
+    "fade",
+];
+
+/// The answer to a quiz's numeric question: the core named `name` on `args` (see
+/// [`QUIZ_ANSWERS`]); an unknown name or a wrong number of arguments is an error that says so.
+pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
+    let want = |n: usize| {
+        if args.len() == n {
+            Ok(())
+        } else {
+            Err(format!("{name} takes {n} numbers, got {}", args.len()))
+        }
+    };
+    if args.iter().any(|a| !a.is_finite()) {
+        return Err(format!("{name}: the arguments must be finite numbers"));
+    }
+    let answer = match name {
+        // (s, i): the Hermite basis function h_i (h00, h10, h01, h11) at s.
+        "hermite_basis" => {
+            want(2)?;
+            let i = usize::take(&mut &args[1..]).filter(|&i| i < 4);
+            let i = i.ok_or("hermite_basis: i must be 0, 1, 2 or 3")?;
+            crate::curves::hermite_basis(args[0])[i]
+        }
+        // (a_deg, b_deg, t): keys turned a and b degrees about z, slerped at t; the signed angle
+        // about z of the result, in degrees, in (−180, 180].
+        "slerp_angle_about_z_deg" => {
+            want(3)?;
+            let key = |deg: f32| Quat::from_rotation_z(deg.to_radians());
+            let q = crate::rotation::slerp(key(args[0]), key(args[1]), args[2]);
+            let (axis, angle) = q.to_axis_angle();
+            let signed = if axis.z < 0.0 { -angle } else { angle };
+            let deg = signed.to_degrees();
+            if deg > 180.0 {
+                deg - 360.0
+            } else if deg <= -180.0 {
+                deg + 360.0
+            } else {
+                deg
+            }
+        }
+        // (y0, vy, gy, floor_y): when a particle in free fall reaches the floor, in seconds.
+        "floor_time_of_impact" => {
+            want(4)?;
+            crate::particles::collide::floor_time_of_impact(args[0], args[1], args[2], args[3], 1e6)
+                .ok_or("floor_time_of_impact: the particle never reaches the floor")?
+        }
+        // (length, k, rest): the force of a spring of stiffness k stretched (or squeezed) to
+        // `length`, at rest, in newtons.
+        "spring_force_magnitude" => {
+            want(3)?;
+            let b = Vec3::new(args[0], 0.0, 0.0);
+            crate::cloth::spring_force(Vec3::ZERO, b, Vec3::ZERO, Vec3::ZERO, args[1], 0.0, args[2])
+                .length()
+        }
+        // (t): Perlin's fade curve 6t⁵ − 15t⁴ + 10t³.
+        "fade" => {
+            want(1)?;
+            crate::noise::perlin::fade(args[0])
+        }
+        _ => {
+            return Err(format!(
+                "no quiz answer named {name:?}; the names are {}",
+                QUIZ_ANSWERS.join(", ")
+            ))
+        }
+    };
+    if answer.is_finite() {
+        Ok(answer)
+    } else {
+        Err(format!("{name}: no finite answer for these arguments"))
+    }
+}
+
 /// Two typical student mistakes, compiled in only for the isolation test (feature
 /// `student-bugs`): a panic in slerp and a transposed Rodrigues matrix.
 #[cfg(feature = "student-bugs")]
-fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, Failure>> {
+pub(super) fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, Failure>> {
     match name {
         "slerp" => {
             let keys = [0usize; 3];
