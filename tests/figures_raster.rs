@@ -94,12 +94,12 @@ fn mesh_figure_draws_both_storages_with_their_sizes() {
     let mut f = Frame::default();
     let note = scene.draw(&mut f);
     let soup_points = f
-        .points
+        .markers
         .iter()
         .filter(|p| Vec3::from_slice(&p.color[..3]) == SOUP_COLOR)
         .count();
     let indexed_points = f
-        .points
+        .markers
         .iter()
         .filter(|p| Vec3::from_slice(&p.color[..3]) == INDEXED_COLOR)
         .count();
@@ -401,4 +401,294 @@ fn shading_figure_shades_the_sphere_on_the_cpu() {
     assert!(scene
         .draw(&mut Frame::default(), MeshId(7))
         .contains("panicked"));
+}
+
+/// The numbers Figure 1's caption and note give.
+#[test]
+fn mesh_sizes_match_the_caption() {
+    let mut scene = MeshStorage::new();
+    let ratio = |scene: &MeshStorage| {
+        let s = scene.sizes();
+        s.soup_bytes as f32 / s.indexed_bytes as f32
+    };
+    scene.set_segments(8.0).unwrap();
+    let mut f = Frame::default();
+    let note = scene.draw(&mut f);
+    assert!(note.contains("The soup is 1.95× larger"), "{note}");
+    assert_eq!(format!("{:.2}", ratio(&scene)), "1.95");
+    scene.set_segments(64.0).unwrap();
+    assert_eq!(format!("{:.2}", ratio(&scene)), "2.00");
+    assert!(scene.listing().is_empty(), "no listing for a big mesh");
+    scene.set_shape("tetrahedron").unwrap();
+    assert_eq!(ratio(&scene), 1.5);
+    let listing = scene.listing();
+    // Position 0 is a corner of t0, t1 and t2, and t3 does not use it.
+    for t in ["t0: 0 ", "t1: 0 ", "t2: 0 "] {
+        assert!(listing.contains(t), "{listing}");
+    }
+    assert!(!listing.contains("t3: 0 "), "{listing}");
+    assert_eq!(
+        listing.matches("t3:").count(),
+        2,
+        "t3 in the soup and in the index list"
+    );
+    let mut f = Frame::default();
+    scene.draw(&mut f);
+    for t in ["t0", "t1", "t2", "t3", "0", "1", "2", "3"] {
+        assert!(f.labels.iter().any(|l| l.text == t), "label {t}");
+    }
+    assert!(!f.keep_in_view.is_empty());
+}
+
+/// Figure 2's caption: where the wgpu depth passes 0.5, 2nf/(n + f).
+#[test]
+fn depth_passes_one_half_where_the_caption_says() {
+    let mut scene = Frustum::new();
+    let half_at = |scene: &Frustum| {
+        let samples = scene.sample_depth(10_000).unwrap();
+        samples.iter().find(|s| s[1] >= 0.5).unwrap()[0]
+    };
+    let d = half_at(&scene);
+    assert!((d - 1.78).abs() < 0.005, "{d}");
+    assert!((d - 1.0) / (8.0 - 1.0) < 0.25, "not a quarter of the way");
+    scene.set_frustum(50.0, 0.1, 8.0).unwrap();
+    let d = half_at(&scene);
+    assert!((d - 0.2).abs() < 0.005, "{d}");
+    // Point x = 3 m: clipped near the eye, inside once the frustum is wide enough.
+    scene.set_frustum(50.0, 1.0, 8.0).unwrap();
+    scene.set_offset(3.0, 0.3).unwrap();
+    let inside = |s: f32| scene.readout(s).unwrap()[4].abs() <= 1.0;
+    assert!(!inside(0.1) && inside(0.9));
+    // Labels and the whole frustum are declared to stay in view.
+    let mut f = Frame::default();
+    scene.draw(&mut f, 0.0).unwrap();
+    assert!(f.keep_in_view.len() >= 10);
+    let priority = |text: &str| f.labels.iter().find(|l| l.text == text).unwrap().priority;
+    assert!(priority("p") > priority("eye") && priority("eye") > priority("image"));
+}
+
+/// Figure 3's caption: 21.8 m at 16 bits and z_near 0.1 m, 219 m at 1 m, 5.6 km at 24 bits,
+/// hardly any change with z_far 5000 m; the plot's samples span z_near to z_far on a log scale.
+#[test]
+fn fighting_distances_match_the_caption() {
+    let mut scene = DepthPrecision::new();
+    assert_eq!(format!("{:.1}", scene.fighting_from()), "21.8");
+    scene.set(1.0, 1000.0, 0.01, 16.0).unwrap();
+    assert_eq!(format!("{:.0}", scene.fighting_from()), "219");
+    let steps = |s: &DepthPrecision| s.sample_step(50).unwrap();
+    let (a, b) = (DepthPrecision::new(), scene_at(1.0, 1000.0, 16.0));
+    // The step drops by a decade at the same distance; the separation does not move.
+    let (sa, sb) = (steps(&a), steps(&b));
+    let at = |s: &[[f32; 4]], d: f32| {
+        s.iter()
+            .min_by(|x, y| (x[0] - d).abs().total_cmp(&(y[0] - d).abs()))
+            .copied()
+            .unwrap()
+    };
+    let (x, y) = (at(&sa, 10.0), at(&sb, 10.0));
+    let per_d2 = |s: [f32; 4]| s[1] / (s[0] * s[0]);
+    assert!((per_d2(x) / per_d2(y) - 10.0).abs() < 0.1, "{x:?} {y:?}");
+    assert!(
+        (x[3] / x[0] - y[3] / y[0]).abs() < 1e-6,
+        "the separation line stays"
+    );
+    let c = scene_at(0.1, 1000.0, 24.0);
+    assert_eq!(format!("{:.1}", c.fighting_from() / 1000.0), "5.6");
+    assert!(c.fighting_from() > 1000.0);
+    let d = scene_at(0.1, 5000.0, 16.0);
+    assert!((d.fighting_from() / a.fighting_from() - 1.0).abs() < 0.001);
+    // Log spacing: the first sample at z_near, the last at z_far, equal ratios between.
+    assert!((sa[0][0] - 0.1).abs() < 1e-6 && (sa[49][0] - 1000.0).abs() < 0.1);
+    let r = sa[1][0] / sa[0][0];
+    assert!((sa[30][0] / sa[29][0] - r).abs() < 1e-3);
+    assert!((b.fighting_from_bits(24) / b.fighting_from_bits(16) - 256.0).abs() < 0.1);
+    // 24 bits at the defaults: red everywhere in the image, no blue.
+    let blue = |s: &DepthPrecision| {
+        s.image(160, 120)
+            .unwrap()
+            .chunks_exact(4)
+            .filter(|p| p[2] > 120 && p[0] < 90)
+            .count()
+    };
+    assert_eq!(blue(&c), 0);
+    // z_near 1 m: blue only in a thin band just under the horizon.
+    let img = b.image(160, 120).unwrap();
+    let rows: Vec<usize> = img
+        .chunks_exact(4)
+        .enumerate()
+        .filter(|(_, p)| p[2] > 120 && p[0] < 90)
+        .map(|(k, _)| k / 160)
+        .collect();
+    assert!(!rows.is_empty());
+    let (lo, hi) = (rows.iter().min().unwrap(), rows.iter().max().unwrap());
+    assert!(hi - lo <= 4, "rows {lo}..{hi}");
+}
+
+fn scene_at(near: f32, far: f32, bits: f32) -> DepthPrecision {
+    let mut s = DepthPrecision::new();
+    s.set(near, far, 0.01, bits).unwrap();
+    s
+}
+
+/// Figure 4's caption: no lean at scale 1, up to 61° at scale 4, 10 facets around.
+#[test]
+fn normals_lean_as_the_caption_says() {
+    let mut scene = Normals::new();
+    scene.set_scale_x(1.0).unwrap();
+    assert!(scene.worst_wrong_angle_deg() < 0.01);
+    scene.set_scale_x(4.0).unwrap();
+    let worst = scene.worst_wrong_angle_deg();
+    assert_eq!(format!("{worst:.0}"), "61");
+    scene.set_flat(true);
+    // Faces whose centres lie just above the equator: one band of 20 triangles, two to each
+    // flat quad, so 10 different normals: 10 facets.
+    let band: Vec<Vec3> = scene
+        .normals()
+        .iter()
+        .filter(|(c, _)| c.y > 0.0 && c.y < 0.5)
+        .map(|(_, n)| *n)
+        .collect();
+    assert_eq!(band.len(), 20);
+    let mut facets: Vec<Vec3> = Vec::new();
+    for n in band {
+        if !facets.iter().any(|f| f.abs_diff_eq(n, 1e-4)) {
+            facets.push(n);
+        }
+    }
+    assert_eq!(facets.len(), 10);
+    let mut f = Frame::default();
+    scene.draw(&mut f, MeshId(3), MeshId(4));
+    let reach = f.keep_in_view.iter().fold(0.0f32, |m, p| m.max(p.x.abs()));
+    assert!(
+        reach >= 4.0 + 0.35 - 1e-3,
+        "the stretched sphere and its arrows fit"
+    );
+}
+
+/// Figure 5's caption and text: Blinn-Phong's highlight is wider at the same exponent and about
+/// matches Phong's at four times it; per-vertex shading agrees with per-pixel shading at
+/// shininess 8 but not at 128.
+#[test]
+fn shading_claims_hold() {
+    let mut scene = Shading::new();
+    let lit = |img: &[u8]| img.chunks_exact(4).filter(|p| p[0] > 200).count();
+    let diff = |a: &[u8], b: &[u8]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (*x as i32 - *y as i32).abs())
+            .max()
+            .unwrap()
+    };
+    scene.set_material(0.15, 0.7, 0.5, 8.0).unwrap();
+    let (p8, b8) = (
+        scene.image("phong", 128).unwrap(),
+        scene.image("blinn-phong", 128).unwrap(),
+    );
+    assert!(lit(&b8) > lit(&p8), "{} {}", lit(&b8), lit(&p8));
+    let g8 = scene.image("gouraud", 128).unwrap();
+    let small = diff(&g8, &b8);
+    scene.set_material(0.15, 0.7, 0.5, 32.0).unwrap();
+    let p32 = scene.image("phong", 128).unwrap();
+    scene.set_material(0.15, 0.7, 0.5, 128.0).unwrap();
+    let (b128, g128) = (
+        scene.image("blinn-phong", 128).unwrap(),
+        scene.image("gouraud", 128).unwrap(),
+    );
+    let spot = |img: &[u8]| img.chunks_exact(4).filter(|p| p[2] > 150).count() as f32;
+    assert!((spot(&p32) / spot(&b128) - 1.0).abs() < 0.35);
+    let large = diff(&g128, &b128);
+    assert!(large > 3 * small && large > 60, "{small} {large}");
+    // The 3D view: the sphere, the vectors and the light are declared to stay in view.
+    let mut f = Frame::default();
+    scene.draw(&mut f, MeshId(3));
+    assert!(f.keep_in_view.len() >= 8 + 5);
+    assert!(scene.image("nonsense", 64).is_err());
+}
+
+/// A student's function that is right at the figure's input but wrong elsewhere is caught by the
+/// probes, which the note names.
+#[test]
+fn probes_catch_what_the_shown_input_cannot() {
+    // Blinn-Phong with a highlight even when the light is behind the surface.
+    fn no_clamp(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        if name != "blinn_phong" {
+            return reference(name, args);
+        }
+        let v = |k: usize| Vec3::from_slice(&args[k..k + 3]);
+        let (n, l, eye, color) = (v(0), v(3), v(6), v(9));
+        let (ka, kd, ks, s) = (args[12], args[13], args[14], args[15]);
+        let h = (l + eye).normalize();
+        let c = ka * color
+            + kd * n.dot(l).max(0.0) * color
+            + Vec3::splat(ks * n.dot(h).max(0.0).powf(s));
+        Ok(c.to_array().to_vec())
+    }
+    let mut scene = Shading::new();
+    scene.set_runner(no_clamp);
+    let note = scene.exercise_note();
+    assert!(
+        note.contains("matches the reference at the marked fragment (the figure's input), but differs at a light just behind the surface"),
+        "{note}"
+    );
+    scene.set_runner(reference);
+    let note = scene.exercise_note();
+    assert!(note.contains("and at 4 more inputs"), "{note}");
+
+    // A perspective matrix that always uses the figure's aspect ratio, 1.5.
+    fn fixed_aspect(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        let mut a = args.to_vec();
+        if name == "perspective_matrix" {
+            a[1] = 1.5;
+        }
+        reference(name, &a)
+    }
+    let mut frustum = Frustum::new();
+    frustum.set_runner(fixed_aspect);
+    let note = frustum.exercise_note();
+    assert!(
+        note.contains("(the figure's input), but differs at field of view 90.000°, aspect 1.000"),
+        "{note}"
+    );
+    assert!(
+        !note.contains("maps z_near"),
+        "right at the figure's frustum: {note}"
+    );
+    frustum.set_runner(wrong);
+    let note = frustum.exercise_note();
+    assert!(note.contains("maps z_near to depth -1.000"), "{note}");
+
+    // Vertex normals weighted by area: the ridge probe tells.
+    fn by_area(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        if name != "vertex_normals" {
+            return reference(name, args);
+        }
+        let mut rest = args;
+        let p = Vec::<Vec3>::take(&mut rest).unwrap();
+        let i = Vec::<f32>::take(&mut rest).unwrap();
+        let mut n = vec![Vec3::ZERO; p.len()];
+        for t in i.chunks_exact(3) {
+            let [a, b, c] = [t[0], t[1], t[2]].map(|k| k as usize);
+            let face = (p[b] - p[a]).cross(p[c] - p[a]);
+            for k in [a, b, c] {
+                n[k] += face;
+            }
+        }
+        let n: Vec<Vec3> = n.iter().map(|v| v.normalize_or_zero()).collect();
+        let mut out = Vec::new();
+        n.put(&mut out);
+        Ok(out)
+    }
+    let mut normals = Normals::new();
+    normals.set_runner(by_area);
+    normals.set_use_exercise(true);
+    let mut f = Frame::default();
+    let note = normals.draw(&mut f, MeshId(3), MeshId(4));
+    assert!(
+        note.contains("It differs on a ridge of one large and one small triangle"),
+        "{note}"
+    );
+    normals.set_runner(reference);
+    normals.set_use_exercise(true);
+    let note = normals.draw(&mut f, MeshId(3), MeshId(4));
+    assert!(note.contains("It also matches on a tetrahedron"), "{note}");
 }

@@ -29,9 +29,12 @@ if (meshViewer) {
   gui.onChange(apply);
   apply();
   const note = document.getElementById('mesh-note');
+  const listing = document.getElementById('mesh-listing');
   lesson.onFrame(() => {
     const message = scene.draw(meshViewer);
     if (note.textContent !== message) note.textContent = message;
+    const text = scene.listing();
+    if (listing.textContent !== text) listing.textContent = text;
     markDrawn('#fig-mesh');
   });
 }
@@ -95,9 +98,12 @@ if (depthViewer) {
   gui.add(p, 'far', 20, 5000, 10).name('z_far (m)');
   gui.add(p, 'gap', 0.001, 0.1, 0.001).name('gap between floors (m)');
   gui.add(p, 'bits', [16, 24]).name('depth bits');
+  // Log-log axes: each step is a line of slope 2, the separation one of slope 1; the dashed
+  // vertical line marks where the chosen bits' step crosses the separation.
   const plot = new Plot(document.getElementById('depth-step'), {
-    title: 'What one depth step is worth', xLabel: 'distance d (m)', yLabel: 'depth step Δd (m)',
-    series: ['step, 16 bits', 'step, 24 bits', 'separation d·gap/h'], colors: [cssVar('--orange'), cssVar('--y-axis'), cssVar('--grey')], minSpan: 0.01,
+    title: 'What one depth step is worth (log-log)', xLabel: 'distance d (m)', yLabel: 'length (m)',
+    series: ['step Δd, 16 bits', 'step Δd, 24 bits', 'separation d·gap/h'],
+    colors: [cssVar('--orange'), cssVar('--y-axis'), cssVar('--grey')], widths: [2.5, 2.5, 2.5], log: 'xy',
   });
   const image = document.getElementById('depth-image');
   let rejected = '';
@@ -105,6 +111,8 @@ if (depthViewer) {
   const apply = guarded(gui, p, () => {
     scene.set(p.near, p.far, p.gap, Number(p.bits));
     plot.setData(columns(scene.sampleStep(200), 4));
+    const from = scene.fightingFrom();
+    plot.setCursor(from <= p.far ? from : null);
     blit(image, scene.image(320, 240), 320, 240);
   }, (m) => { rejected = m; });
   gui.onChange(apply);
@@ -172,7 +180,8 @@ if (shadingViewer) {
   const SIZE = 128;
   const holder = document.getElementById('shading-images');
   const images = [['ambient', 'ambient'], ['diffuse', 'diffuse'], ['specular', 'specular'],
-    ['phong', 'Phong total'], ['blinn-phong', 'Blinn-Phong total']].map(([key, label]) => {
+    ['phong', 'Phong total, per pixel'], ['blinn-phong', 'Blinn-Phong total, per pixel'],
+    ['gouraud', 'chosen model, per vertex (as in 3D)']].map(([key, label]) => {
     const fig = document.createElement('figure');
     const canvas = document.createElement('canvas');
     canvas.setAttribute('aria-label', `${label}: drag to move the light`);

@@ -101,22 +101,63 @@ impl MeshStorage {
         raster::mesh_sizes(self.positions.len(), self.indices.len() / 3)
     }
 
+    /// The two storages written out, for a mesh of at most 12 positions (the tetrahedron):
+    /// the soup's corners triangle by triangle, then the indexed positions and each triangle's
+    /// three indices. Empty for bigger meshes, whose lists would not fit beside the figure.
+    pub fn listing(&self) -> String {
+        if self.positions.len() > 12 {
+            return String::new();
+        }
+        let xyz = |p: Vec3| {
+            let n = |x: f32| format!("{:6.3}", if x.abs() < 5e-4 { 0.0 } else { x });
+            format!("({}, {}, {})", n(p.x), n(p.y), n(p.z))
+        };
+        let mut out = String::from("triangle soup: 3 corners per triangle\n");
+        for (t, tri) in self.indices.chunks_exact(3).enumerate() {
+            let corners: Vec<String> = tri
+                .iter()
+                .map(|&i| xyz(self.positions[i as usize]))
+                .collect();
+            out += &format!("  t{t}: {}\n", corners.join(" "));
+        }
+        out += "\nindexed: positions (geometry)\n";
+        for (i, p) in self.positions.iter().enumerate() {
+            out += &format!("  {i}: {}\n", xyz(*p));
+        }
+        out += "indexed: triangles (connectivity)\n";
+        for (t, tri) in self.indices.chunks_exact(3).enumerate() {
+            out += &format!("  t{t}: {} {} {}\n", tri[0], tri[1], tri[2]);
+        }
+        out
+    }
+
     /// Left: the soup; right: the indexed mesh. Returns the note with both sizes.
     pub fn draw(&self, frame: &mut Frame) -> String {
         let s = self.sizes();
         let (left, right) = (Vec3::new(-1.4, 1.2, 0.0), Vec3::new(1.4, 1.2, 0.0));
         frame.grid(12, 0.5);
         let small = self.positions.len() <= 12;
-        let dot = if small { 0.05 } else { 0.018 };
+        let dot = if small { 12.0 } else { 6.0 };
         // Soup: each triangle shrunk towards its centre, its own three corners.
         for tri in self.indices.chunks_exact(3) {
             let [a, b, c] = [tri[0], tri[1], tri[2]].map(|i| self.positions[i as usize]);
             let centre = (a + b + c) / 3.0;
             let pull = |p: Vec3| left + centre + (p - centre) * 0.78;
             let (a, b, c) = (pull(a), pull(b), pull(c));
-            frame.polyline(&[a, b, c, a], SOUP_COLOR);
+            frame.wide_polyline(&[a, b, c, a], SOUP_COLOR, 1.5);
             for p in [a, b, c] {
-                frame.point(p, dot, SOUP_COLOR);
+                frame.marker(p, dot, SOUP_COLOR);
+            }
+        }
+        if small {
+            // Number the soup's triangles as the listing beside the figure does.
+            for (t, tri) in self.indices.chunks_exact(3).enumerate() {
+                let centre = tri
+                    .iter()
+                    .map(|&i| self.positions[i as usize])
+                    .sum::<Vec3>()
+                    / 3.0;
+                frame.label(left + centre * 1.15, format!("t{t}"), SOUP_COLOR);
             }
         }
         // Indexed: each edge drawn once (from the triangle where a < b, or from both if the mesh
@@ -127,16 +168,20 @@ impl MeshStorage {
                 if a < b {
                     let pa = right + self.positions[a as usize];
                     let pb = right + self.positions[b as usize];
-                    frame.line(pa, pb, INDEXED_COLOR);
+                    frame.wide_line(pa, pb, INDEXED_COLOR, 1.5);
                 }
             }
         }
         for (i, p) in self.positions.iter().enumerate() {
-            frame.point(right + *p, dot * 1.2, INDEXED_COLOR);
+            frame.marker(right + *p, dot * 1.2, INDEXED_COLOR);
             if small {
-                frame.label(right + *p * 1.18, i.to_string(), palette::DARK);
+                frame.label_with_priority(right + *p * 1.18, i.to_string(), palette::DARK, 1);
             }
         }
+        frame.keep_box_in_view(
+            left - Vec3::splat(1.1),
+            right + Vec3::splat(1.1) + Vec3::Y * 0.3,
+        );
         frame.label(
             left + Vec3::Y * 1.35,
             format!("triangle soup: {}", bytes(s.soup_bytes)),
@@ -332,27 +377,39 @@ impl Frustum {
             [(-w, -h), (w, -h), (w, h), (-w, h)].map(|(x, y)| EYE + Vec3::new(x, y, -d))
         };
         let (near, far) = (corners(self.near), corners(self.far));
-        frame.polyline(&[near[0], near[1], near[2], near[3], near[0]], NEAR);
-        frame.polyline(&[far[0], far[1], far[2], far[3], far[0]], FAR);
+        let w = crate::draw::CURVE_PX;
+        frame.wide_polyline(&[near[0], near[1], near[2], near[3], near[0]], NEAR, w);
+        frame.wide_polyline(&[far[0], far[1], far[2], far[3], far[0]], FAR, w);
         for (n, f) in near.iter().zip(&far) {
-            frame.line(EYE, *n, palette::GREY);
-            frame.line(*n, *f, palette::GREY);
+            frame.wide_line(EYE, *n, palette::GREY, 1.5);
+            frame.wide_line(*n, *f, palette::GREY, 1.5);
         }
-        frame.point(EYE, 0.08, palette::DARK);
-        frame.label(EYE + Vec3::new(0.0, 0.25, 0.0), "eye", palette::DARK);
-        frame.label(near[2], "z_near", NEAR);
-        frame.label(far[2], "z_far", FAR);
+        frame.marker(EYE, 12.0, palette::DARK);
+        // Where the eye, the near plane and the point crowd (the point starts at half of z_near),
+        // the point's label wins, then the eye's; the frustum's own labels sit at its far corners.
+        frame.label_with_priority(EYE + Vec3::new(0.0, 0.25, 0.0), "eye", palette::DARK, 2);
+        frame.label_with_priority(near[2], "z_near", NEAR, 1);
+        frame.label_with_priority(far[2], "z_far", FAR, 1);
         // The point, the ray from the eye, and where the ray crosses the near plane (the image).
         let p = self.point_at(s);
         let m = self.used_matrix();
         let q = raster::project(m, p, 0.0);
         let color = if q.inside { POINT } else { OUTSIDE };
-        frame.line(EYE, EYE + p, palette::GREY);
-        frame.point(EYE + p, 0.1, color);
-        frame.label(EYE + p + Vec3::new(0.0, 0.25, 0.0), "p", color);
+        frame.stroke(
+            &[EYE, EYE + p],
+            palette::GREY,
+            crate::draw::StrokeStyle::dashed(1.5, 0.15, 0.1),
+        );
+        frame.marker(EYE + p, 14.0, color);
+        frame.label_with_priority(EYE + p + Vec3::new(0.0, 0.25, 0.0), "p", color, 3);
         let on_near = p * (self.near / -p.z);
-        frame.point(EYE + on_near, 0.15, ON_NEAR);
-        frame.label(EYE + on_near + Vec3::new(0.0, -0.3, 0.0), "image", ON_NEAR);
+        frame.marker_on_top(EYE + on_near, 10.0, ON_NEAR);
+        frame.label_with_priority(
+            EYE + on_near + Vec3::new(0.0, -0.3, 0.0),
+            "image",
+            ON_NEAR,
+            0,
+        );
         // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z.
         let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
         let box_corners: Vec<Vec3> = [0.0, 1.0]
@@ -364,21 +421,33 @@ impl Frustum {
             .map(ndc_to_world)
             .collect();
         for k in 0..4 {
-            frame.line(box_corners[k], box_corners[(k + 1) % 4], NEAR);
-            frame.line(box_corners[4 + k], box_corners[4 + (k + 1) % 4], FAR);
-            frame.line(box_corners[k], box_corners[4 + k], NDC_BOX);
+            frame.wide_line(box_corners[k], box_corners[(k + 1) % 4], NEAR, w);
+            frame.wide_line(box_corners[4 + k], box_corners[4 + (k + 1) % 4], FAR, w);
+            frame.wide_line(box_corners[k], box_corners[4 + k], NDC_BOX, 1.5);
         }
-        frame.label(box_corners[2], "depth 0", NEAR);
-        frame.label(box_corners[6], "depth 1", FAR);
-        frame.label(
+        frame.label_with_priority(box_corners[2], "depth 0", NEAR, 1);
+        frame.label_with_priority(box_corners[6], "depth 1", FAR, 1);
+        frame.label_with_priority(
             NDC_ORIGIN + Vec3::new(0.0, -1.35, -1.0),
             "NDC (wgpu)",
             NDC_BOX,
+            2,
         );
         if q.clip.w > 0.0 && q.ndc.abs().max_element() < 3.0 {
-            frame.point(ndc_to_world(q.ndc), 0.08, color);
-            frame.label(ndc_to_world(q.ndc) + Vec3::new(0.0, 0.22, 0.0), "p", color);
+            frame.marker(ndc_to_world(q.ndc), 14.0, color);
+            frame.label_with_priority(
+                ndc_to_world(q.ndc) + Vec3::new(0.0, 0.22, 0.0),
+                "p",
+                color,
+                3,
+            );
         }
+        // The whole frustum, the point's path and the NDC box stay in view at any canvas size.
+        frame.keep_in_view.push(EYE);
+        frame.keep_in_view.extend(far);
+        frame.keep_in_view.extend(near);
+        frame.keep_in_view.push(EYE + self.point_at(1.0));
+        frame.keep_in_view.extend(box_corners.iter().copied());
         let d = self.distance_at(s);
         let mut note = format!(
             "Distance d = {} m: depth {} (wgpu), {} (OpenGL). {}",
@@ -402,44 +471,55 @@ impl Frustum {
         Ok(note)
     }
 
-    /// Compares the student's matrix (exercise 0.1) with the reference at the current frustum.
+    /// Compares the student's matrix (exercise 0.1) with the reference at the current frustum and
+    /// at [`PERSPECTIVE_PROBES`] (a wide and a narrow view, a short range, a square screen),
+    /// naming every input where they differ.
     pub fn exercise_note(&self) -> String {
-        let at = format!(
-            "field of view {}°, z_near {}, z_far {}",
-            format_number(self.fov_y_rad / DEG),
-            format_number(self.near),
-            format_number(self.far)
-        );
-        match run::perspective_matrix(
-            self.runner,
-            self.fov_y_rad,
-            Self::ASPECT,
-            self.near,
-            self.far,
-        ) {
-            Err(f) => failure_note("exercise 0.1 perspective_matrix", FILE, &f),
-            Ok(m) => {
-                let reference = self.matrix(false);
-                let (ok, mut note) = compare_note(
-                    "perspective_matrix",
-                    &at,
-                    &m.to_cols_array(),
-                    &reference.to_cols_array(),
-                    TOLERANCE * 10.0,
-                );
-                if !ok {
-                    let z = |d: f32| raster::project(m, Vec3::new(0.0, 0.0, -d), 0.0).ndc.z;
-                    note += &format!(
-                        " Yours maps z_near to depth {} and z_far to {} (should be 0 and 1).",
-                        format_number(z(self.near)),
-                        format_number(z(self.far))
-                    );
-                }
-                note
-            }
+        let here = (self.fov_y_rad / DEG, Self::ASPECT, self.near, self.far);
+        let mut probes = Vec::new();
+        for (fov_deg, aspect, near, far) in std::iter::once(here).chain(PERSPECTIVE_PROBES) {
+            let at = format!(
+                "field of view {}°, aspect {}, z_near {}, z_far {}",
+                format_number(fov_deg),
+                format_number(aspect),
+                format_number(near),
+                format_number(far)
+            );
+            let reference =
+                raster::perspective_wgpu(fov_deg * DEG, aspect, near, far).expect("valid probe");
+            let yours = match run::perspective_matrix(self.runner, fov_deg * DEG, aspect, near, far)
+            {
+                Ok(m) => m,
+                Err(f) => return failure_note("exercise 0.1 perspective_matrix", FILE, &f),
+            };
+            probes.push(super::curves::Probe {
+                at,
+                yours: yours.to_cols_array().to_vec(),
+                reference: reference.to_cols_array().to_vec(),
+            });
         }
+        let mut note = super::curves::probe_note("perspective_matrix", &probes, TOLERANCE * 10.0).1;
+        let yours = Mat4::from_cols_slice(&probes[0].yours);
+        if !yours.abs_diff_eq(self.matrix(false), TOLERANCE * 10.0) {
+            // Where the student's matrix sends the two planes says more than 16 numbers.
+            let z = |d: f32| raster::project(yours, Vec3::new(0.0, 0.0, -d), 0.0).ndc.z;
+            note += &format!(
+                " At the figure's frustum yours maps z_near to depth {} and z_far to {} (should be 0 and 1).",
+                format_number(z(self.near)),
+                format_number(z(self.far))
+            );
+        }
+        note
     }
 }
+
+/// Where exercise 0.1 is checked besides the figure's frustum: (field of view °, aspect,
+/// z_near, z_far).
+pub const PERSPECTIVE_PROBES: [(f32, f32, f32, f32); 3] = [
+    (90.0, 1.0, 0.1, 100.0),
+    (20.0, 2.0, 2.0, 3.0),
+    (120.0, 0.5, 0.5, 50.0),
+];
 
 // ---------------------------------------------------------------------------------------------
 // Figure 3: depth precision and z-fighting.
@@ -511,21 +591,18 @@ impl DepthPrecision {
     /// The view depth beyond which one depth step is worth more than the separation:
     /// `d² (f − n) / (f n (2ᵇ − 1)) = d · gap / h`, so `d = gap f n (2ᵇ − 1) / (h (f − n))`.
     pub fn fighting_from(&self) -> f32 {
-        let steps = ((1u64 << self.bits) - 1) as f32;
-        self.gap * self.far * self.near * steps / (EYE_HEIGHT * (self.far - self.near))
+        self.fighting_from_bits(self.bits)
     }
 
-    /// `(d, step 16 bits, step 24 bits, separation)` in metres, for d from z_near to z_far or to
-    /// 4 times the fighting distance, whichever is nearer (so the crossing stays readable).
+    /// `(d, step 16 bits, step 24 bits, separation)` in metres, for d from z_near to z_far spaced
+    /// evenly on a log scale (the page plots them on log-log axes, where both steps are straight
+    /// lines of slope 2 and the separation one of slope 1, so the crossing is easy to read).
     pub fn sample_step(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
         check_samples(samples)?;
-        let end = self
-            .far
-            .min(4.0 * self.fighting_from())
-            .max(2.0 * self.near);
+        let ratio = self.far / self.near;
         Ok((0..samples)
             .map(|k| {
-                let d = self.near + (end - self.near) * k as f32 / (samples - 1) as f32;
+                let d = self.near * ratio.powf(k as f32 / (samples - 1) as f32);
                 [
                     d,
                     raster::depth_step(d, self.near, self.far, 16),
@@ -534,6 +611,12 @@ impl DepthPrecision {
                 ]
             })
             .collect())
+    }
+
+    /// The fighting distance for `bits` (16 or 24) at the current z_near, z_far and gap.
+    pub fn fighting_from_bits(&self, bits: u32) -> f32 {
+        let steps = ((1u64 << bits.min(32)) - 1) as f32;
+        self.gap * self.far * self.near * steps / (EYE_HEIGHT * (self.far - self.near))
     }
 
     /// Which plane a depth buffer keeps at a pixel where the planes lie at distances `d_upper`
@@ -622,12 +705,16 @@ impl DepthPrecision {
         };
         slab(0.0, UPPER_PLANE, frame);
         slab(-self.gap, LOWER_PLANE, frame);
-        frame.point(eye, 0.15, palette::DARK);
-        frame.label(eye + Vec3::Y * 0.4, "eye", palette::DARK);
+        frame.marker(eye, 14.0, palette::DARK);
+        frame.label_with_priority(eye + Vec3::Y * 0.4, "eye", palette::DARK, 2);
         let (sin_p, cos_p) = PITCH.sin_cos();
         let axis = Vec3::new(0.0, -sin_p, -cos_p);
         let to_ground = EYE_HEIGHT / sin_p;
-        frame.line(eye, eye + axis * to_ground.min(reach), palette::GREY);
+        frame.stroke(
+            &[eye, eye + axis * to_ground.min(reach)],
+            palette::GREY,
+            crate::draw::StrokeStyle::dashed(1.5, 0.4, 0.3),
+        );
         for k in 1..=(reach / 2.0) as usize {
             let d = 2.0 * k as f32;
             let step = raster::depth_step(d, self.near, self.far, self.bits);
@@ -637,15 +724,16 @@ impl DepthPrecision {
                 palette::GREEN
             };
             let top = Vec3::new(1.1, (step * Self::BAR_SCALE).min(6.0), -d);
-            frame.line(Vec3::new(1.1, 0.0, -d), top, color);
-            frame.point(top, 0.25, color);
+            frame.wide_line(Vec3::new(1.1, 0.0, -d), top, color, 4.0);
+            frame.marker(top, 9.0, color);
         }
         let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
-        frame.line(sep(0.0), sep(reach), palette::GREY);
-        frame.label(
+        frame.wide_line(sep(0.0), sep(reach), palette::GREY, 2.5);
+        frame.label_with_priority(
             sep(0.7 * reach) + Vec3::Y * 0.5,
             "separation d·gap/h (×40)",
             palette::GREY,
+            1,
         );
         frame.label(
             Vec3::new(1.1, 2.0, -6.0),
@@ -654,17 +742,19 @@ impl DepthPrecision {
         );
         let from = self.fighting_from();
         if from < reach {
-            frame.line(
-                Vec3::new(1.1, 0.0, -from),
-                Vec3::new(1.1, 6.2, -from),
+            frame.stroke(
+                &[Vec3::new(1.1, 0.0, -from), Vec3::new(1.1, 6.2, -from)],
                 palette::ORANGE,
+                crate::draw::StrokeStyle::dashed(2.5, 0.3, 0.2),
             );
-            frame.label(
+            frame.label_with_priority(
                 Vec3::new(1.1, 6.5, -from),
                 "fighting from here",
                 palette::ORANGE,
+                3,
             );
         }
+        frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 6.6, 0.5));
         format!(
             "z_far / z_near = {}. With {} bits, one depth step is worth {} m at 1 m, {} m at 10 m and {} m at \
              z_far. Along a line of sight the floors are d · gap / h apart; the step exceeds that beyond {} m{}.",
@@ -817,7 +907,57 @@ impl Normals {
                 if yours.len() == self.smooth.len() && yours.iter().all(|v| v.is_finite()) {
                     self.smooth = yours;
                 }
+                self.exercise_note += &self.probe_note();
             }
+        }
+    }
+
+    /// Exercise 0.2 on [`vertex_normal_probes`], beyond the figure's sphere: " It also matches
+    /// on …" or " It differs on …" with the first vertex that differs.
+    fn probe_note(&self) -> String {
+        let mut matching = Vec::new();
+        let mut differing = Vec::new();
+        for (what, positions, indices) in vertex_normal_probes() {
+            let mut reference = vec![Vec3::ZERO; positions.len()];
+            raster::vertex_normals(&positions, &indices, &mut reference).expect("a valid mesh");
+            let idx: Vec<f32> = indices.iter().map(|&i| i as f32).collect();
+            match run::vertex_normals(self.runner, positions, idx) {
+                Err(f) => {
+                    return format!(" {}", failure_note("exercise 0.2 vertex_normals", FILE, &f))
+                }
+                Ok(yours) => {
+                    let wrong = (0..reference.len()).find(|&k| {
+                        yours
+                            .get(k)
+                            .is_none_or(|y| !y.abs_diff_eq(reference[k], 1e-3))
+                    });
+                    match wrong {
+                        None => matching.push(what),
+                        Some(k) => {
+                            let show = |v: Option<&Vec3>| {
+                                v.map_or("missing".to_string(), |v| {
+                                    format!(
+                                        "({}, {}, {})",
+                                        format_number(v.x),
+                                        format_number(v.y),
+                                        format_number(v.z)
+                                    )
+                                })
+                            };
+                            differing.push(format!(
+                                "{what} (vertex {k}: yours {}, reference {})",
+                                show(yours.get(k)),
+                                show(reference.get(k))
+                            ))
+                        }
+                    }
+                }
+            }
+        }
+        if differing.is_empty() {
+            format!(" It also matches on {}.", matching.join(", "))
+        } else {
+            format!(" It differs on {}.", differing.join("; "))
         }
     }
 
@@ -915,6 +1055,10 @@ impl Normals {
                 );
             }
         }
+        // The stretched sphere with its arrows stays in view at every scale.
+        let reach = Vec3::new(self.scale_x, 1.0, 1.0) + Vec3::splat(len);
+        let centre = m.transform_point3(Vec3::ZERO);
+        frame.keep_box_in_view(centre - reach, centre + reach);
         let mut note = format!(
             "{} shading: {}. Stretched {}× along x. Transformed by M itself, a normal leans up to {}° away \
              from the true one (M⁻¹)ᵀ n.",
@@ -929,6 +1073,38 @@ impl Normals {
         }
         note
     }
+}
+
+/// Meshes on which exercise 0.2 is checked besides the figure's sphere, each chosen where a
+/// common mistake shows: `(what it tests, positions, indices)`.
+pub fn vertex_normal_probes() -> [(&'static str, Vec<Vec3>, Vec<u32>); 3] {
+    let (tetra_positions, tetra_indices) = tetrahedron();
+    [
+        ("a tetrahedron", tetra_positions, tetra_indices),
+        (
+            // Two slopes at the same angle, one four times as wide: with each triangle counting
+            // once the ridge's normal points straight up; weighted by area it leans.
+            "a ridge of one large and one small triangle (each counts once)",
+            vec![
+                Vec3::ZERO,
+                Vec3::Z,
+                Vec3::new(2.0, -1.0, 0.5),
+                Vec3::new(-0.5, -0.25, 0.5),
+            ],
+            vec![0, 1, 2, 0, 3, 1],
+        ),
+        (
+            "a vertex no triangle uses and a zero-area triangle",
+            vec![
+                Vec3::ZERO,
+                Vec3::X,
+                Vec3::Y,
+                Vec3::new(5.0, 5.0, 5.0),
+                Vec3::new(2.0, 0.0, 0.0),
+            ],
+            vec![0, 1, 2, 0, 1, 4],
+        ),
+    ]
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -982,10 +1158,10 @@ fn direction(azimuth_deg: f32, elevation_deg: f32) -> Vec3 {
 
 /// Where the sphere of Figure 5 stands.
 const SPHERE_CENTRE: Vec3 = Vec3::new(0.0, 1.3, 0.0);
-/// The tessellation of Figure 5's sphere: fine enough that per-vertex shading shows a round
-/// highlight at shininess 64.
-const SPHERE_SEGMENTS: u32 = 64;
-const SPHERE_RINGS: u32 = 32;
+/// The tessellation of Figure 5's sphere, 11.25° between vertices: per-vertex shading shows a
+/// round highlight at low shininess and a blotch at 128, which the page explains.
+pub const SPHERE_SEGMENTS: u32 = 32;
+pub const SPHERE_RINGS: u32 = 16;
 
 impl Shading {
     pub fn new() -> Self {
@@ -1136,7 +1312,9 @@ impl Shading {
     }
 
     /// An image of one term: "ambient", "diffuse", "specular" (of the chosen model), "phong" or
-    /// "blinn-phong" (the totals). RGBA bytes, `size × size`, size 8 to 512.
+    /// "blinn-phong" (the totals, shaded per pixel), or "gouraud" (the chosen model's total
+    /// shaded per vertex of the 3D sphere's grid and interpolated, as the 3D view shows it).
+    /// RGBA bytes, `size × size`, size 8 to 512.
     pub fn image(&self, which: &str, size: usize) -> Result<Vec<u8>, String> {
         if !(8..=raster::shading::MAX_IMAGE_SIZE).contains(&size) {
             return Err(format!(
@@ -1150,6 +1328,16 @@ impl Shading {
             "specular" => (self.model, Term::Specular),
             "phong" => (ShadingModel::Phong, Term::Total),
             "blinn-phong" => (ShadingModel::BlinnPhong, Term::Total),
+            "gouraud" => {
+                return Ok(raster::shading::gouraud_sphere_image(
+                    size,
+                    self.light,
+                    &self.material,
+                    self.model,
+                    SPHERE_SEGMENTS,
+                    SPHERE_RINGS,
+                ))
+            }
             _ => return Err(format!("no image named {which:?}")),
         };
         Ok(sphere_image(size, self.light, &self.material, model, term))
@@ -1167,26 +1355,32 @@ impl Shading {
         frame.mesh_unlit_vertex_colors(sphere, Mat4::from_translation(SPHERE_CENTRE));
         let p = SPHERE_CENTRE + n;
         let len = 1.3;
-        frame.arrow(p, p + n * len, N, 0.1);
-        frame.label(p + n * len, "n", N);
-        frame.arrow(p, p + l * len, L, 0.1);
-        frame.label(p + l * len, "l", L);
-        frame.arrow(p, p + v * len, V, 0.1);
-        frame.label(p + v * len, "v", V);
-        frame.point(SPHERE_CENTRE + l * 2.6, 0.12, Vec3::new(1.0, 0.8, 0.2));
-        frame.label(SPHERE_CENTRE + l * 2.6 + Vec3::Y * 0.25, "light", L);
-        match self.model {
-            ShadingModel::Phong => {
-                let r = 2.0 * n.dot(l) * n - l;
-                frame.arrow(p, p + r * len, R, 0.1);
-                frame.label(p + r * len, "r", R);
-            }
-            ShadingModel::BlinnPhong => {
-                let h = (l + v).normalize_or_zero();
-                frame.arrow(p, p + h * len, H, 0.1);
-                frame.label(p + h * len, "h", H);
-            }
-        }
+        let head = 0.16;
+        // Labels just past each tip; where tips crowd, n and the model's own vector (r or h) keep
+        // their place and the light's marker label gives way.
+        let tip = |d: Vec3| p + d * (len + 0.12);
+        frame.arrow(p, p + n * len, N, head);
+        frame.label_with_priority(tip(n), "n", N, 3);
+        frame.arrow(p, p + l * len, L, head);
+        frame.label_with_priority(tip(l), "l", L, 2);
+        frame.arrow(p, p + v * len, V, head);
+        frame.label_with_priority(tip(v), "v", V, 2);
+        frame.marker(p, 10.0, palette::DARK);
+        let lamp = SPHERE_CENTRE + l * 2.6;
+        frame.marker(lamp, 16.0, Vec3::new(1.0, 0.8, 0.2));
+        frame.label_with_priority(lamp + Vec3::Y * 0.25, "light", L, 0);
+        let model_vector = match self.model {
+            ShadingModel::Phong => (2.0 * n.dot(l) * n - l, R, "r"),
+            ShadingModel::BlinnPhong => ((l + v).normalize_or_zero(), H, "h"),
+        };
+        let (d, color, name) = model_vector;
+        frame.arrow(p, p + d * len, color, head);
+        frame.label_with_priority(tip(d), name, color, 3);
+        // The sphere, the vectors and the light stay in view at any canvas size.
+        frame.keep_box_in_view(SPHERE_CENTRE - Vec3::ONE, SPHERE_CENTRE + Vec3::ONE);
+        frame
+            .keep_in_view
+            .extend([p + n * len, p + l * len, p + v * len, p + d * len, lamp]);
         let t = raster::shade(n, l, v, &self.material, self.model);
         let rgb = |c: Vec3| {
             format!(
@@ -1222,24 +1416,62 @@ impl Shading {
         note
     }
 
-    /// Compares the student's Blinn-Phong colour (exercise 0.3) at the fragment with the reference.
+    /// Compares the student's Blinn-Phong colour (exercise 0.3) with the reference at the marked
+    /// fragment and at [`BLINN_PHONG_PROBES`] (the light behind the surface, grazing, in line
+    /// with the eye, a low exponent), naming every input where they differ.
     pub fn exercise_note(&self) -> String {
-        let (n, l, v, m) = (self.fragment, self.light, Self::VIEW, self.material);
+        let m = self.material;
         let weights = [m.ambient, m.diffuse, m.specular];
-        match run::blinn_phong(self.runner, n, l, v, m.color, weights, m.shininess) {
-            Err(f) => failure_note("exercise 0.3 blinn_phong", FILE, &f),
-            Ok(yours) => {
-                let reference =
-                    raster::blinn_phong(n, l, v, &material(m.color, weights, m.shininess));
-                compare_note(
-                    "blinn_phong",
-                    "the marked fragment",
-                    &yours.to_array(),
-                    &reference.to_array(),
-                    TOLERANCE,
-                )
-                .1
-            }
+        let shown = (
+            "the marked fragment",
+            self.fragment,
+            self.light,
+            m.shininess,
+        );
+        let mut probes = Vec::new();
+        for (at, n, l, shininess) in std::iter::once(shown).chain(BLINN_PHONG_PROBES) {
+            let (n, l) = (n.normalize(), l.normalize());
+            let v = Self::VIEW;
+            let yours = match run::blinn_phong(self.runner, n, l, v, m.color, weights, shininess) {
+                Ok(c) => c,
+                Err(f) => return failure_note("exercise 0.3 blinn_phong", FILE, &f),
+            };
+            let reference = raster::blinn_phong(n, l, v, &material(m.color, weights, shininess));
+            probes.push(super::curves::Probe {
+                at: at.to_string(),
+                yours: yours.to_array().to_vec(),
+                reference: reference.to_array().to_vec(),
+            });
         }
+        super::curves::probe_note("blinn_phong", &probes, TOLERANCE).1
     }
 }
+
+/// Where exercise 0.3 is checked besides the marked fragment (the eye along +z, the figure's
+/// material): `(what it tests, n, l, shininess)`.
+pub const BLINN_PHONG_PROBES: [(&str, Vec3, Vec3, f32); 4] = [
+    (
+        "a light just behind the surface (n·l < 0), shininess 2",
+        Vec3::new(0.0, 0.0, 1.0),
+        Vec3::new(0.9, 0.0, -0.2),
+        2.0,
+    ),
+    (
+        "a grazing light",
+        Vec3::new(0.0, 0.6, 0.8),
+        Vec3::new(0.0, 1.0, -0.7),
+        32.0,
+    ),
+    (
+        "the light in line with the eye (h = n)",
+        Vec3::new(0.0, 0.0, 1.0),
+        Vec3::new(0.0, 0.0, 1.0),
+        64.0,
+    ),
+    (
+        "shininess 1, an oblique light",
+        Vec3::new(0.6, 0.0, 0.8),
+        Vec3::new(-0.5, 0.5, 0.7),
+        1.0,
+    ),
+];

@@ -169,3 +169,61 @@ pub fn sphere_image(
     }
     out
 }
+
+/// Like [`sphere_image`] with `Term::Total`, but shaded the way a vertex-lit mesh is (Gouraud
+/// shading): the colour is computed only at the vertices of a UV sphere of `segments × rings`
+/// (as [`crate::mesh::uv_sphere`] lays them out) and interpolated linearly across each triangle
+/// of the grid. A highlight narrower than a triangle falls between the vertices and comes out as
+/// a blotch with corners, where [`sphere_image`], shading every pixel, keeps it round.
+/// `segments ≥ 3` and `rings ≥ 2` (smaller values are raised to these).
+pub fn gouraud_sphere_image(
+    size: usize,
+    l: Vec3,
+    m: &Material,
+    model: ShadingModel,
+    segments: u32,
+    rings: u32,
+) -> Vec<u8> {
+    use std::f32::consts::{PI, TAU};
+    let size = size.min(MAX_IMAGE_SIZE);
+    let (segments, rings) = (segments.max(3), rings.max(2));
+    let vertex = |ring: u32, segment: u32| {
+        let polar = PI * ring as f32 / rings as f32;
+        let azimuth = TAU * segment as f32 / segments as f32;
+        let n = Vec3::new(
+            polar.sin() * azimuth.sin(),
+            polar.cos(),
+            polar.sin() * azimuth.cos(),
+        );
+        shade(n, l, Vec3::Z, m, model).total()
+    };
+    let mut out = Vec::with_capacity(size * size * 4);
+    for j in 0..size {
+        for i in 0..size {
+            let rgb = match sphere_normal_at(i, j, size) {
+                None => Vec3::splat(0.87),
+                Some(n) => {
+                    // Where the pixel lies on the grid: ring and segment, and the fractions
+                    // (s across the segment, r down the ring) inside that cell.
+                    let polar = n.y.clamp(-1.0, 1.0).acos() / PI * rings as f32;
+                    let azimuth = n.x.atan2(n.z).rem_euclid(TAU) / TAU * segments as f32;
+                    let ring = (polar.floor() as u32).min(rings - 1);
+                    let segment = (azimuth.floor() as u32).min(segments - 1);
+                    let (r, s) = (polar - ring as f32, azimuth - segment as f32);
+                    let a = vertex(ring, segment);
+                    let a1 = vertex(ring, segment + 1);
+                    let b = vertex(ring + 1, segment);
+                    let b1 = vertex(ring + 1, segment + 1);
+                    // The cell's two triangles (a, b, a+1) and (a+1, b, b+1), as the mesh's.
+                    if s + r <= 1.0 {
+                        a * (1.0 - s - r) + a1 * s + b * r
+                    } else {
+                        b1 * (s + r - 1.0) + b * (1.0 - s) + a1 * (1.0 - r)
+                    }
+                }
+            };
+            out.extend([srgb_byte(rgb.x), srgb_byte(rgb.y), srgb_byte(rgb.z), 255]);
+        }
+    }
+    out
+}

@@ -34,6 +34,11 @@ impl MeshStorageScene {
         self.scene.set_segments(segments).map_err(js)
     }
 
+    /// The tetrahedron's two storages written out (empty for the sphere).
+    pub fn listing(&self) -> String {
+        self.scene.listing()
+    }
+
     /// Draws both storages; returns the note with their sizes.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let note = self.scene.draw(&mut viewer.renderer.frame);
@@ -152,6 +157,12 @@ impl DepthPrecisionScene {
     pub fn sample_step(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
         Ok(self.scene.sample_step(samples).map_err(js)?.concat())
+    }
+
+    /// The distance (metres) beyond which the floors fight with the chosen bits.
+    #[wasm_bindgen(js_name = fightingFrom)]
+    pub fn fighting_from(&self) -> f32 {
+        self.scene.fighting_from()
     }
 
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
@@ -328,7 +339,8 @@ impl ShadingScene {
         Ok(())
     }
 
-    /// RGBA bytes of one image: "ambient", "diffuse", "specular", "phong" or "blinn-phong".
+    /// RGBA bytes of one image: "ambient", "diffuse", "specular", "phong", "blinn-phong" or
+    /// "gouraud".
     pub fn image(&self, which: JsValue, size: f64) -> Result<Vec<u8>, JsError> {
         let which: &str = &super::string("which", &which)?;
         let size = super::whole("size", size)?;
