@@ -150,7 +150,7 @@ fn plot_samples_follow_the_interpolation() {
     f.select(f.skeleton().find("upper_arm.L").unwrap()).unwrap();
     f.set_keys_per_cycle(4.0).unwrap();
     let linear_slerp = f.sample_selected(301).unwrap();
-    assert_eq!(linear_slerp.len(), 3 * 301);
+    assert_eq!(linear_slerp.len(), 5 * 301);
     f.set_interpolation("linear (nlerp)").unwrap();
     let linear_nlerp = f.sample_selected(301).unwrap();
     assert_ne!(linear_slerp, linear_nlerp);
@@ -158,7 +158,7 @@ fn plot_samples_follow_the_interpolation() {
     // segment (t in (0.02, 0.6), keys 120° apart) is tiny for slerp, larger for nlerp.
     let spread = |v: &[f32]| {
         let s: Vec<f32> = v
-            .chunks(3)
+            .chunks(5)
             .filter(|c| c[0] > 0.02 && c[0] < 0.6)
             .map(|c| c[2])
             .collect();
@@ -277,4 +277,370 @@ fn crossfading_a_second_clip() {
     } else {
         assert!(note.contains("Not done yet: exercise 6.3"), "{note}");
     }
+}
+
+/// The speeds (°/s) of the plot's purple and blue series inside segment `k` of a clip with
+/// `keys` keys per cycle and duration `d`, away from the keys' finite-difference samples.
+fn speeds_in_segment(samples: &[f32], d: f32, keys: usize, k: usize) -> Vec<(f32, f32, f32)> {
+    let segment = d / (keys - 1) as f32;
+    samples
+        .chunks(5)
+        .map(|c| (c[0], c[2], c[4]))
+        .filter(|&(t, ..)| t > k as f32 * segment + 0.01 && t < (k + 1) as f32 * segment - 0.02)
+        .map(|(t, a, b)| ((t - k as f32 * segment) / segment, a, b))
+        .collect()
+}
+
+/// Figure 2's start: arm circles, 4 keys, upper_arm.L, slerp (purple) against nlerp (blue).
+fn interpolation_figure() -> SkeletonFigure {
+    let mut f = SkeletonFigure::new();
+    f.set_clip("arm circles").unwrap();
+    f.set_keys_per_cycle(4.0).unwrap();
+    f.select(f.skeleton().find("upper_arm.L").unwrap()).unwrap();
+    f.set_interpolation("linear (slerp)").unwrap();
+    f.set_compare("linear (nlerp)").unwrap();
+    f
+}
+
+#[test]
+fn the_compared_paths_and_speeds_show_what_the_try_this_says() {
+    let mut f = interpolation_figure();
+    assert_eq!(f.compare_name(), "linear (nlerp)");
+    assert!(f
+        .set_compare("squad")
+        .unwrap_err()
+        .contains("interpolation"));
+    let d = f.duration_sec();
+    // The keys are 120° apart: the upper arm turns a third of a circle per segment.
+    let samples = f.sample_selected(241).unwrap();
+    let arm = f.skeleton().find("upper_arm.L").unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, 0.1).unwrap();
+    assert!(
+        note.contains("purple linear (slerp), blue linear (nlerp)"),
+        "{note}"
+    );
+    let times = f.key_times();
+    assert_eq!(times.len(), 4);
+    let rotation_at = |f: &mut SkeletonFigure, t: f32| {
+        f.pose(t).unwrap();
+        Quat::from_mat4(&f.local_matrix(arm).unwrap())
+    };
+    let q0 = rotation_at(&mut f, times[0]);
+    let q1 = rotation_at(&mut f, times[1]);
+    let apart = q0.angle_between(q1).to_degrees();
+    assert!((apart - 120.0).abs() < 3.0, "keys {apart}° apart");
+    // Slerp: flat within a segment. Nlerp: slowest at the keys, fastest midway, by about a third.
+    let seg = speeds_in_segment(&samples, d, 4, 1);
+    let slerp: Vec<f32> = seg.iter().map(|s| s.1).collect();
+    let spread = slerp.iter().cloned().fold(f32::MIN, f32::max)
+        - slerp.iter().cloned().fold(f32::MAX, f32::min);
+    assert!(spread < 0.01 * slerp[0], "slerp's speed spread {spread}");
+    let near_key = seg
+        .iter()
+        .filter(|s| s.0 < 0.1 || s.0 > 0.9)
+        .map(|s| s.2)
+        .fold(f32::MAX, f32::min);
+    let midway = seg
+        .iter()
+        .filter(|s| (s.0 - 0.5).abs() < 0.05)
+        .map(|s| s.2)
+        .fold(0.0, f32::max);
+    assert!(
+        midway > 1.25 * near_key,
+        "nlerp midway {midway} against near a key {near_key}"
+    );
+    // On the blue path the ticks are closer near the keys than midway.
+    let path = f.compare_trail().to_vec();
+    assert_eq!(path.len(), 61);
+    let gap = |i: usize| path[i].distance(path[i + 1]);
+    assert!(
+        gap(30) > 1.2 * gap(20),
+        "ticks near key 1 ({}) against midway ({})",
+        gap(20),
+        gap(30)
+    );
+    // With 25 keys per cycle the two speeds nearly agree (within 2 %).
+    f.set_keys_per_cycle(25.0).unwrap();
+    let samples = f.sample_selected(961).unwrap();
+    for (_, a, b) in speeds_in_segment(&samples, d, 25, 3) {
+        assert!(
+            (a - b).abs() < 0.02 * a,
+            "slerp {a} against nlerp {b} at 25 keys"
+        );
+    }
+    // Step: the dots pile up on the three distinct key poses; the speed is zero between keys.
+    f.set_keys_per_cycle(4.0).unwrap();
+    f.set_compare("step").unwrap();
+    f.draw(&mut Frame::default(), 0.1).unwrap();
+    let mut distinct: Vec<Vec3> = Vec::new();
+    for &p in &f.compare_trail()[..60] {
+        if !distinct.iter().any(|q| q.distance(p) < 1e-4) {
+            distinct.push(p);
+        }
+    }
+    assert_eq!(distinct.len(), 3, "the step path's dots");
+    let samples = f.sample_selected(241).unwrap();
+    assert!(speeds_in_segment(&samples, d, 4, 1)
+        .iter()
+        .all(|s| s.2 == 0.0));
+    // On the walk's thigh, linear keys turn at a constant speed between keys that jumps at each
+    // key; cubic keys change speed smoothly through a key.
+    let mut f = SkeletonFigure::new();
+    f.set_interpolation("linear (slerp)").unwrap();
+    f.set_compare("cubic").unwrap();
+    let times = f.key_times();
+    let samples = f.sample_selected(961).unwrap();
+    let jump = |column: usize, key_t: f32| {
+        let rows: Vec<&[f32]> = samples.chunks(5).collect();
+        let i = rows.iter().position(|c| c[0] >= key_t).unwrap();
+        (rows[i + 2][column] - rows[i - 3][column]).abs()
+            / rows[i + 2][column].max(rows[i - 3][column])
+    };
+    for k in [1, 3] {
+        assert!(
+            jump(2, times[k]) > 0.2,
+            "linear jumps by {} at key {k}",
+            jump(2, times[k])
+        );
+        assert!(
+            jump(4, times[k]) < 0.05,
+            "cubic jumps by {} at key {k}",
+            jump(4, times[k])
+        );
+    }
+}
+
+#[test]
+fn the_crossfade_shows_both_clips_beside_the_blend() {
+    let mut f = SkeletonFigure::new();
+    assert!(f.sources()[0].is_empty());
+    f.set_blend("wave", 0.5).unwrap();
+    let arm = f.skeleton().find("upper_arm.R").unwrap();
+    let thigh = f.skeleton().find("thigh.L").unwrap();
+    f.select(arm).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, 0.25).unwrap();
+    assert!(
+        note.contains("left, in blue: walk alone; right, in brown: wave alone"),
+        "{note}"
+    );
+    let [a, b] = f.sources();
+    assert_eq!((a.len(), b.len()), (21, 21));
+    let blend_root = f.joint_position(0).unwrap();
+    assert!(
+        (a[0].translation.x - blend_root.x + 1.0).abs() < 0.1,
+        "A stands 1 m to the left"
+    );
+    assert!(
+        (b[0].translation.x - blend_root.x - 1.0).abs() < 0.1,
+        "B stands 1 m to the right"
+    );
+    assert!(frame
+        .labels
+        .iter()
+        .any(|l| l.text == "wave alone" && l.color == palette::BROWN));
+    // At weight 0.5 the right arm goes about half way up, and the thigh swings about half as far.
+    let samples = f.sample_selected(101).unwrap();
+    let mut wave = SkeletonFigure::new();
+    wave.set_clip("wave").unwrap();
+    wave.select(arm).unwrap();
+    let wave_arm = wave.sample_selected(101).unwrap();
+    let arm_blend = samples.chunks(5).map(|c| c[1]).fold(0.0, f32::max);
+    let arm_wave = wave_arm.chunks(5).map(|c| c[1]).fold(0.0, f32::max);
+    let ratio = arm_blend / arm_wave;
+    assert!(
+        (0.4..0.6).contains(&ratio),
+        "the arm goes {ratio} of the way up"
+    );
+    f.select(thigh).unwrap();
+    let mut walk = SkeletonFigure::new();
+    walk.select(thigh).unwrap();
+    let swing = |s: Vec<f32>| s.chunks(5).map(|c| c[1]).fold(0.0, f32::max);
+    let ratio = swing(f.sample_selected(101).unwrap()) / swing(walk.sample_selected(101).unwrap());
+    assert!(
+        (0.4..0.6).contains(&ratio),
+        "the stride is {ratio} of the walk's"
+    );
+}
+
+#[test]
+fn everything_drawn_stays_inside_the_declared_view() {
+    use inbetween::draw::MeshId;
+    let corners = |m: Mat4| {
+        (0..8).map(move |i| {
+            let c = Vec3::new(
+                if i & 1 == 0 { -1.0 } else { 1.0 },
+                if i & 2 == 0 { -1.0 } else { 1.0 },
+                if i & 4 == 0 { -1.0 } else { 1.0 },
+            );
+            m.transform_point3(c)
+        })
+    };
+    // The walk with body boxes, the step keys with the arm raised by an offset, the crossfade.
+    let mut cases = Vec::new();
+    let mut f = SkeletonFigure::new();
+    f.set_show_boxes(true);
+    cases.push(f);
+    let mut f = SkeletonFigure::new();
+    f.set_show_boxes(true);
+    f.set_clip("arm circles").unwrap();
+    f.set_interpolation("step").unwrap();
+    let arm = f.skeleton().find("upper_arm.L").unwrap();
+    f.set_joint_angles_deg(arm, Vec3::new(0.0, 0.0, 170.0))
+        .unwrap();
+    cases.push(f);
+    let mut f = SkeletonFigure::new();
+    f.set_blend("wave", 0.5).unwrap();
+    cases.push(f);
+    for (n, f) in cases.iter_mut().enumerate() {
+        for k in 0..20 {
+            let mut frame = Frame::default();
+            f.draw(&mut frame, k as f32 * 0.1).unwrap();
+            let (lo, hi) = frame.keep_in_view.iter().fold(
+                (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+                |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+            );
+            let inside = |p: Vec3| p.cmpge(lo - 1e-4).all() && p.cmple(hi + 1e-4).all();
+            for m in frame
+                .meshes
+                .iter()
+                .filter(|m| m.mesh == MeshId::CUBE || m.mesh == MeshId::SPHERE)
+            {
+                for c in corners(m.model) {
+                    assert!(
+                        inside(c),
+                        "case {n}, t = {}: {c} outside {lo}..{hi}",
+                        k as f32 * 0.1
+                    );
+                }
+            }
+            for l in &frame.labels {
+                assert!(
+                    inside(l.anchor),
+                    "case {n}: label {} at {}",
+                    l.text,
+                    l.anchor
+                );
+            }
+        }
+    }
+    // Comparing paths, the view closes in on the paths and the shoulder.
+    let mut f = interpolation_figure();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, 0.0).unwrap();
+    let (lo, hi) = f.view_bounds();
+    assert!(hi.y - lo.y < 1.5, "a close view of the arm: {lo}..{hi}");
+    for p in f.trail().iter().chain(f.compare_trail()) {
+        assert!(p.cmpge(lo).all() && p.cmple(hi).all());
+    }
+}
+
+#[test]
+fn a_click_picks_the_joint_under_the_pointer() {
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera};
+    let mut f = SkeletonFigure::new();
+    f.draw(&mut Frame::default(), 0.2).unwrap();
+    let camera = OrbitCamera::from_view([0.0, 0.85, 0.0, 2.5, 0.5, 0.2]);
+    for size in [Vec2::new(800.0, 600.0), Vec2::new(690.0, 420.0)] {
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        for name in ["pelvis", "head", "hand.R", "foot.L", "shin.L"] {
+            let j = f.skeleton().find(name).unwrap();
+            let px = project_to_canvas(view_proj, size, f.joint_position(j).unwrap()).unwrap();
+            assert_eq!(
+                f.pick_joint(view_proj, size, px),
+                Some(j),
+                "{name} at its centre"
+            );
+            // A few pixels off still picks it (small joints are hard to hit exactly).
+            assert_eq!(
+                f.pick_joint(view_proj, size, px + Vec2::new(4.0, -3.0)),
+                Some(j),
+                "{name} off centre"
+            );
+        }
+        assert_eq!(
+            f.pick_joint(view_proj, size, Vec2::new(5.0, 5.0)),
+            None,
+            "empty space"
+        );
+        assert_eq!(f.pick_joint(view_proj, size, Vec2::NAN), None);
+    }
+}
+
+#[test]
+fn use_my_exercise_checks_probe_inputs_beyond_the_shown_one() {
+    let mut f = interpolation_figure();
+    f.set_use_exercise(true);
+    // A slerp that forgets the short arc: right wherever q_k·q_k+1 > 0, as on this clip.
+    fn long_arc(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        if name == "sample_rotation_slerp" {
+            let n = args[0] as usize;
+            let times = &args[1..1 + n];
+            // Flattened as [n, times…, n, keys (x, y, z, w)…, time].
+            let keys: Vec<Quat> = args[2 + n..2 + 5 * n]
+                .chunks(4)
+                .map(|c| Quat::from_xyzw(c[0], c[1], c[2], c[3]))
+                .collect();
+            let t = args[2 + 5 * n];
+            let i = times.iter().rposition(|&k| k <= t).unwrap_or(0).min(n - 2);
+            let s = ((t - times[i]) / (times[i + 1] - times[i])).clamp(0.0, 1.0);
+            let (a, b) = (keys[i], keys[i + 1]);
+            let theta = a.dot(b).clamp(-1.0, 1.0).acos();
+            let q = if theta < 1e-4 {
+                a
+            } else {
+                a * ((1.0 - s) * theta).sin() / theta.sin() + b * (s * theta).sin() / theta.sin()
+            };
+            return Ok(q.to_array().to_vec());
+        }
+        direct(name, args)
+    }
+    f.set_runner(long_arc);
+    let note = f.pose(0.3).unwrap();
+    assert!(
+        note.contains("Your sample_rotation_slerp matches the reference"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Of 4 probe inputs beyond the shown one, your sample_rotation_slerp differs at 1: key 1 negated"),
+        "{note}"
+    );
+    if cfg!(feature = "solutions") {
+        f.set_runner(direct);
+        let note = f.pose(0.3).unwrap();
+        assert!(note.contains("It also matches at 4 probe inputs"), "{note}");
+        assert!(note.contains("It also matches at 3 probe inputs"), "{note}");
+    }
+    // A crossfade without the sign test, and a local_to_model that ignores scale.
+    fn sloppy(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        match name {
+            "crossfade_joint" => {
+                let w = args[14];
+                let mut out: Vec<f32> = (0..3)
+                    .map(|i| (1.0 - w) * args[i] + w * args[7 + i])
+                    .collect();
+                let q = Quat::from_xyzw(
+                    (1.0 - w) * args[3] + w * args[10],
+                    (1.0 - w) * args[4] + w * args[11],
+                    (1.0 - w) * args[5] + w * args[12],
+                    (1.0 - w) * args[6] + w * args[13],
+                )
+                .normalize();
+                out.extend(q.to_array());
+                Ok(out)
+            }
+            _ => direct(name, args),
+        }
+    }
+    let mut g = SkeletonFigure::new();
+    g.set_use_exercise(true);
+    g.set_blend("wave", 0.5).unwrap();
+    g.set_runner(sloppy);
+    let note = g.pose(0.3).unwrap();
+    assert!(
+        note.contains("your crossfade_joint differs at 1: q_b negated"),
+        "{note}"
+    );
 }

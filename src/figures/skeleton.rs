@@ -4,13 +4,18 @@
 //! per joint-to-parent segment, local axes), playing one of its clips with step, linear (nlerp or
 //! slerp) or cubic interpolation and a chosen number of keys per cycle; per-joint angle offsets on
 //! top of the clip; the selected joint (orange) and its group (teal), which the page's joint table
-//! highlights too; the path of the selected joint's bone tip over one cycle with dots at equal time
-//! steps; the samples behind the plots; and the check of the student's exercises 6.1 and 6.2.
+//! highlights too; the path of the selected joint's bone tip over one cycle with ticks at equal
+//! time steps, and beside it the same path under a second interpolation to compare with; while a
+//! second clip is crossfaded in, the two clips' own poses to the left and right of the blend;
+//! picking a joint under the pointer; the box the camera keeps in view; the samples behind the
+//! plots; and the check of the student's exercises 6.1, 6.2 and 6.3, at the shown inputs and at
+//! probe inputs beyond them.
 
 use super::{
     compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
     DEFAULT_RUNNER,
 };
+use crate::camera::{point_on_view_plane, project_to_canvas};
 use crate::exercises::run;
 use crate::rotation::angle_between;
 use crate::skeleton::{
@@ -18,7 +23,7 @@ use crate::skeleton::{
     KeyInterpolation, Pose, QuatInterpolation, RawClip, Skeleton,
 };
 use crate::transform::JointShape;
-use glam::{Affine3A, EulerRot, Mat4, Quat, Vec3};
+use glam::{Affine3A, EulerRot, Mat4, Quat, Vec2, Vec3};
 
 const DEG: f32 = std::f32::consts::PI / 180.0;
 const EXERCISE_FILE: &str = "src/exercises/skeleton.rs";
@@ -28,6 +33,14 @@ const TOLERANCE: f32 = 1e-4;
 const TRAIL_DOTS: usize = 60;
 /// Radius of a joint's sphere, metres.
 const JOINT_RADIUS: f32 = 0.022;
+/// Length of the equal-time ticks across a path, CSS pixels.
+const PATH_TICK_PX: f32 = 14.0;
+/// A joint can be picked this many CSS pixels from its centre, however small it is drawn.
+const PICK_RADIUS_PX: f32 = 10.0;
+/// Where the crossfade's two clips stand beside the blend, metres along x (A left, B right).
+pub const SOURCE_OFFSET_X: f32 = 1.0;
+/// Room kept around the skeleton's box for the joint boxes, the head and the labels, metres.
+const VIEW_MARGIN_M: f32 = 0.18;
 
 /// The lesson's figure: a skeleton playing a clip.
 #[derive(Clone, Debug)]
@@ -57,6 +70,15 @@ pub struct SkeletonFigure {
     scratch_pose: Pose,
     scratch_model: Vec<Affine3A>,
     trail: Vec<Vec3>,
+    /// The interpolation the second path uses, its clip (the playing one with that mode), and
+    /// the path.
+    compare: Option<(KeyInterpolation, QuatInterpolation)>,
+    compare_clip: Option<Clip>,
+    compare_trail: Vec<Vec3>,
+    /// The crossfade's clip A and clip B as they play alone (model matrices), while blending.
+    sources: [Vec<Affine3A>; 2],
+    /// The box every joint stays in over one cycle, with the current settings.
+    bounds: (Vec3, Vec3),
 }
 
 impl Default for SkeletonFigure {
@@ -69,7 +91,7 @@ impl Default for SkeletonFigure {
 pub const INTERPOLATIONS: [&str; 4] = ["step", "linear (nlerp)", "linear (slerp)", "cubic"];
 
 impl SkeletonFigure {
-    /// The walk, 9 keys per cycle, linear with slerp, `upper_arm.L` selected.
+    /// The walk, 9 keys per cycle, linear with slerp, `thigh.L` selected.
     pub fn new() -> Self {
         let (skeleton, shapes) = human::simple_human();
         let n = skeleton.len();
@@ -96,6 +118,11 @@ impl SkeletonFigure {
             scratch_pose: skeleton.rest_pose(),
             scratch_model: vec![Affine3A::IDENTITY; n],
             trail: Vec::with_capacity(TRAIL_DOTS + 1),
+            compare: None,
+            compare_clip: None,
+            compare_trail: Vec::with_capacity(TRAIL_DOTS + 1),
+            sources: [Vec::new(), Vec::new()],
+            bounds: (Vec3::ZERO, Vec3::ZERO),
             skeleton,
             shapes,
         };
@@ -117,7 +144,40 @@ impl SkeletonFigure {
             self.raw.push(raw);
             self.clips.push(clip);
         }
+        self.refresh_compare();
         Ok(())
+    }
+
+    /// Rebuilds the second path's clip: the playing clip with the compared interpolation.
+    fn refresh_compare(&mut self) {
+        self.compare_clip = match (self.compare, self.clip) {
+            (Some((interpolation, rotation)), Some(c)) => {
+                let mut clip = self.clips[c].clone();
+                clip.set_interpolation(interpolation);
+                clip.set_rotation_interpolation(rotation);
+                Some(clip)
+            }
+            _ => None,
+        };
+    }
+
+    /// Draws a second path of the selected bone's tip, sampled with the interpolation `name`
+    /// (one of [`INTERPOLATIONS`]), or none with "none"; the plots' last two columns follow it.
+    pub fn set_compare(&mut self, name: &str) -> Result<(), String> {
+        self.compare = match name {
+            "none" => None,
+            _ => Some(parse_interpolation(name, self.rotation)?),
+        };
+        self.refresh_compare();
+        Ok(())
+    }
+
+    /// The compared interpolation's name, or "none".
+    pub fn compare_name(&self) -> &'static str {
+        match self.compare {
+            None => "none",
+            Some(mode) => interpolation_name(mode),
+        }
     }
 
     pub fn skeleton(&self) -> &Skeleton {
@@ -139,6 +199,7 @@ impl SkeletonFigure {
             None => return Err(format!("clip: no clip named {name:?}")),
         };
         self.cursor = ClipCursor::new();
+        self.refresh_compare();
         Ok(())
     }
 
@@ -163,19 +224,7 @@ impl SkeletonFigure {
     /// One of [`INTERPOLATIONS`]: "step", "linear (nlerp)", "linear (slerp)" or "cubic"; a bare
     /// "linear" keeps the current rotation choice.
     pub fn set_interpolation(&mut self, name: &str) -> Result<(), String> {
-        let (interpolation, rotation) = match name {
-            "step" => (KeyInterpolation::Step, self.rotation),
-            "linear" => (KeyInterpolation::Linear, self.rotation),
-            "linear (nlerp)" => (KeyInterpolation::Linear, QuatInterpolation::Nlerp),
-            "linear (slerp)" => (KeyInterpolation::Linear, QuatInterpolation::Slerp),
-            "cubic" => (KeyInterpolation::Cubic, self.rotation),
-            _ => {
-                return Err(format!(
-                    "interpolation must be one of {}, got {name:?}",
-                    INTERPOLATIONS.join(", ")
-                ))
-            }
-        };
+        let (interpolation, rotation) = parse_interpolation(name, self.rotation)?;
         self.interpolation = interpolation;
         self.rotation = rotation;
         self.apply_modes();
@@ -310,8 +359,20 @@ impl SkeletonFigure {
     /// Samples the clip at `time_sec` into `pose` (the rest pose without a clip), crossfades the
     /// blend clip in, and adds the angle offsets.
     fn sample_into(&self, time_sec: f32, cursor: &mut ClipCursor, pose: &mut Pose) {
-        match self.clip {
-            Some(c) => self.clips[c].sample(time_sec, cursor, pose),
+        self.sample_with(self.clip.map(|c| &self.clips[c]), time_sec, cursor, pose);
+    }
+
+    /// As [`SkeletonFigure::sample_into`], with `clip` in place of the playing clip (the same
+    /// clip under another interpolation, for the second path).
+    fn sample_with(
+        &self,
+        clip: Option<&Clip>,
+        time_sec: f32,
+        cursor: &mut ClipCursor,
+        pose: &mut Pose,
+    ) {
+        match clip {
+            Some(clip) => clip.sample(time_sec, cursor, pose),
             None => pose.local.copy_from_slice(self.skeleton.rest()),
         }
         if let Some(b) = self.blend_clip {
@@ -328,6 +389,36 @@ impl SkeletonFigure {
                     (x.rotation * Quat::from_euler(EulerRot::XYZ, o.x, o.y, o.z)).normalize();
             }
         }
+    }
+
+    /// Model matrices of the crossfade's clip `k` (0: A, the playing clip; 1: B) alone at
+    /// `time_sec` (no offsets), shifted to its place beside the blend.
+    fn source_model(&self, k: usize, time_sec: f32, pose: &mut Pose, model: &mut Vec<Affine3A>) {
+        let (clip, t, dx) = match (k, self.blend_clip) {
+            (0, _) => (self.clip, time_sec, -SOURCE_OFFSET_X),
+            (_, Some(b)) => (Some(b), self.blend_time(b, time_sec), SOURCE_OFFSET_X),
+            (_, None) => (None, time_sec, SOURCE_OFFSET_X),
+        };
+        match clip {
+            Some(c) => self.clips[c].sample(t, &mut ClipCursor::new(), pose),
+            None => pose.local.copy_from_slice(self.skeleton.rest()),
+        }
+        model.resize(self.skeleton.len(), Affine3A::IDENTITY);
+        local_to_model(
+            self.skeleton.parents(),
+            &pose.local,
+            self.skeleton.scale_mode(),
+            model,
+        );
+        for m in model.iter_mut() {
+            m.translation.x += dx;
+        }
+    }
+
+    /// The crossfade's two clips as they play alone, left (A) and right (B) of the blend; empty
+    /// without a blend.
+    pub fn sources(&self) -> &[Vec<Affine3A>; 2] {
+        &self.sources
     }
 
     /// Poses the skeleton at `time_sec` (reference cores, then, with "use my exercise", the
@@ -357,6 +448,17 @@ impl SkeletonFigure {
         } else {
             notes.push(self.describe(t));
         }
+        let mut sources = std::mem::take(&mut self.sources);
+        if self.blend_clip.is_some() {
+            let mut pose = std::mem::replace(&mut self.scratch_pose, Pose::identity(0));
+            for (k, model) in sources.iter_mut().enumerate() {
+                self.source_model(k, t, &mut pose, model);
+            }
+            self.scratch_pose = pose;
+        } else {
+            sources.iter_mut().for_each(Vec::clear);
+        }
+        self.sources = sources;
         self.compute_trail();
         Ok(notes.join(" "))
     }
@@ -399,14 +501,27 @@ impl SkeletonFigure {
         };
         let blend = match self.blend_clip {
             Some(b) => format!(
-                " Crossfaded with {} at weight {} (same phase of its own cycle).",
+                " Crossfaded with {} at weight {} (same phase of its own cycle); left, in blue: {} \
+                 alone; right, in brown: {} alone.",
                 self.clips[b].name(),
-                format_number(self.blend_weight)
+                format_number(self.blend_weight),
+                clip.name(),
+                self.clips[b].name(),
+            ),
+            None => String::new(),
+        };
+        let compare = match self.compare {
+            Some(mode) => format!(
+                " Paths of the {} tip over one cycle, a tick every 1/{TRAIL_DOTS} of it: purple {}, \
+                 blue {}.",
+                names[j],
+                interpolation_name((self.interpolation, self.rotation)),
+                interpolation_name(mode)
             ),
             None => String::new(),
         };
         format!(
-            "{joint} Clip {} at {} s: between keys {i} and {} (s = {}), {how}.{blend}",
+            "{joint} Clip {} at {} s: between keys {i} and {} (s = {}), {how}.{blend}{compare}",
             clip.name(),
             format_number(local),
             i + 1,
@@ -438,10 +553,11 @@ impl SkeletonFigure {
         let keys: Vec<Quat> = track.values().iter().map(|&v| Quat::from_vec4(v)).collect();
         let local = self.clips[c].local_time(t);
         let reference = sample_rotation_channel(&times, &keys, local, QuatInterpolation::Slerp);
-        let yours = match run::sample_rotation_slerp(self.runner, times, keys, local) {
-            Ok(q) => q,
-            Err(failure) => return failure_note(exercise, EXERCISE_FILE, &failure),
-        };
+        let yours =
+            match run::sample_rotation_slerp(self.runner, times.clone(), keys.clone(), local) {
+                Ok(q) => q,
+                Err(failure) => return failure_note(exercise, EXERCISE_FILE, &failure),
+            };
         let aligned = if yours.dot(reference) < 0.0 {
             -yours
         } else {
@@ -459,6 +575,7 @@ impl SkeletonFigure {
             &reference.to_array(),
             TOLERANCE,
         );
+        let note = note + &self.probe_sample_rotation(&times, &keys);
         if ok || yours.is_finite() && (yours.length() - 1.0).abs() < 0.1 {
             // Pose with the student's answer (offsets on top, as for the reference).
             let o = self.offsets_rad[j];
@@ -466,6 +583,75 @@ impl SkeletonFigure {
                 (yours.normalize() * Quat::from_euler(EulerRot::XYZ, o.x, o.y, o.z)).normalize();
         }
         note
+    }
+
+    /// Exercise 6.2 on this channel at times the playing clip does not reach (on a key, before
+    /// the first key, after the last) and with a key negated (the short-arc rule).
+    fn probe_sample_rotation(&self, times: &[f32], keys: &[Quat]) -> String {
+        let n = times.len();
+        if n < 2 {
+            return String::new();
+        }
+        let mut flipped = keys.to_vec();
+        flipped[1] = -flipped[1];
+        let middle = 0.5 * (times[0] + times[1]);
+        let probes = [
+            ("on key 1", times[1], keys),
+            ("before the first key", times[0] - 0.25, keys),
+            ("after the last key", times[n - 1] + 0.25, keys),
+            (
+                "key 1 negated (q₀·q₁ < 0: the short arc)",
+                middle,
+                &flipped[..],
+            ),
+        ];
+        let mut asked = 0;
+        let mut differing = Vec::new();
+        for (name, t, keys) in probes {
+            let reference = sample_rotation_channel(times, keys, t, QuatInterpolation::Slerp);
+            let Ok(yours) =
+                run::sample_rotation_slerp(self.runner, times.to_vec(), keys.to_vec(), t)
+            else {
+                continue;
+            };
+            asked += 1;
+            // q and −q are the same rotation.
+            let aligned = if yours.dot(reference) < 0.0 {
+                -yours
+            } else {
+                yours
+            };
+            if !aligned.abs_diff_eq(reference, TOLERANCE) {
+                differing.push(format!("{name} (t = {} s)", format_number(t)));
+            }
+        }
+        probe_summary("sample_rotation_slerp", asked, &differing)
+    }
+
+    /// Exercise 6.3 at weights and rotations the slider may not show: w = 0, w = 1, and q_b on
+    /// the other hemisphere (q_a·q_b < 0).
+    fn probe_crossfade(&self) -> String {
+        let (ta, qa) = (Vec3::new(0.1, 0.9, 0.0), Quat::from_rotation_x(0.5));
+        let (tb, qb) = (Vec3::new(-0.2, 1.0, 0.3), Quat::from_rotation_y(1.0));
+        let probes = [
+            ("w = 0", qb, 0.0),
+            ("w = 1", qb, 1.0),
+            ("q_b negated (q_a·q_b < 0), w = 0.3", -qb, 0.3),
+        ];
+        let mut asked = 0;
+        let mut differing = Vec::new();
+        for (name, qb, w) in probes {
+            let Ok((t, q)) = run::crossfade_joint(self.runner, ta, qa, tb, qb, w) else {
+                continue;
+            };
+            asked += 1;
+            let (rt, rq) = crate::exercises::skeleton::reference_crossfade_joint(ta, qa, tb, qb, w);
+            let q = if q.dot(rq) < 0.0 { -q } else { q };
+            if !(t.abs_diff_eq(rt, TOLERANCE) && q.abs_diff_eq(rq, TOLERANCE)) {
+                differing.push(name.to_string());
+            }
+        }
+        probe_summary("crossfade_joint", asked, &differing)
     }
 
     /// Exercise 6.3 on every joint of the blend (clip A and clip B at time `t`, before the angle
@@ -523,7 +709,7 @@ impl SkeletonFigure {
                 .normalize();
             }
         }
-        match first_wrong {
+        let note = match first_wrong {
             None => format!(
                 "Your crossfade_joint matches the reference at all {n} joints (w = {}).",
                 format_number(w)
@@ -536,7 +722,8 @@ impl SkeletonFigure {
                 );
                 compare_note("crossfade_joint", &at, &yours, &reference, TOLERANCE).1
             }
-        }
+        };
+        note + &self.probe_crossfade()
     }
 
     /// Exercise 6.1 on the current pose; draws the student's matrices when there are some.
@@ -592,7 +779,63 @@ impl SkeletonFigure {
                 *m = Affine3A::from_mat4(*y);
             }
         }
-        note
+        note + &self.probe_local_to_model()
+    }
+
+    /// Exercise 6.1 at small skeletons the figure's human never shows: two roots, a parent
+    /// listed two places back, a non-uniform scale passed on to a turned child.
+    fn probe_local_to_model(&self) -> String {
+        use crate::skeleton::{ScaleMode, Transform};
+        let turn = Quat::from_rotation_z(0.7) * Quat::from_rotation_x(-0.4);
+        let probes: [(&str, Vec<i32>, Vec<Vec3>); 3] = [
+            ("two roots", vec![-1, 0, -1, 2], vec![Vec3::ONE; 4]),
+            (
+                "a parent listed two places back",
+                vec![-1, 0, 0, 2, 1],
+                vec![Vec3::ONE; 5],
+            ),
+            (
+                "a non-uniform scale (2, 0.5, 1) on the root, passed on to its turned children",
+                vec![-1, 0, 1],
+                vec![Vec3::new(2.0, 0.5, 1.0), Vec3::ONE, Vec3::ONE],
+            ),
+        ];
+        let mut asked = 0;
+        let mut differing = Vec::new();
+        for (name, parents, scales) in probes {
+            let n = parents.len();
+            let translations: Vec<Vec3> = (0..n)
+                .map(|i| Vec3::new(0.1 * i as f32, 0.3, -0.05 * i as f32))
+                .collect();
+            let rotations: Vec<Quat> = (0..n)
+                .map(|i| if i % 2 == 0 { turn } else { turn.inverse() })
+                .collect();
+            let local: Vec<Transform> = (0..n)
+                .map(|i| Transform {
+                    translation: translations[i],
+                    rotation: rotations[i],
+                    scale: scales[i],
+                })
+                .collect();
+            let mut reference = vec![Affine3A::IDENTITY; n];
+            local_to_model(&parents, &local, ScaleMode::Inherited, &mut reference);
+            let parents_f: Vec<f32> = parents.iter().map(|&p| p as f32).collect();
+            let Ok(yours) =
+                run::local_to_model(self.runner, parents_f, translations, rotations, scales)
+            else {
+                continue;
+            };
+            asked += 1;
+            let close = yours.len() == n
+                && yours
+                    .iter()
+                    .zip(&reference)
+                    .all(|(y, r)| y.abs_diff_eq(Mat4::from(*r), 1e-4));
+            if !close {
+                differing.push(name.to_string());
+            }
+        }
+        probe_summary("local_to_model", asked, &differing)
     }
 
     /// The tip of the selected joint's bone: its first child's pivot, or a point 10 cm along its
@@ -605,29 +848,158 @@ impl SkeletonFigure {
         }
     }
 
+    /// The selected bone tip's paths over one cycle (with the playing interpolation and, when
+    /// set, the compared one), and the box the camera keeps in view: every joint over the cycle
+    /// (the crossfade's two clips too), or, while comparing paths, the paths and the selected
+    /// joint's pivot, so the paths fill the view.
     fn compute_trail(&mut self) {
         self.trail.clear();
-        if self.clip.is_none() {
-            return;
+        self.compare_trail.clear();
+        let mut lo = Vec3::splat(f32::INFINITY);
+        let mut hi = Vec3::splat(f32::NEG_INFINITY);
+        let mut grow = |p: Vec3| {
+            lo = lo.min(p);
+            hi = hi.max(p);
+        };
+        for m in &self.model {
+            grow(m.translation.into());
         }
-        let d = self.duration_sec();
-        let mut cursor = ClipCursor::new();
         let mut pose = std::mem::replace(&mut self.scratch_pose, Pose::identity(0));
         let mut model = std::mem::take(&mut self.scratch_model);
-        for k in 0..=TRAIL_DOTS {
-            let t = d * k as f32 / TRAIL_DOTS as f32 * 0.99999;
-            self.sample_into(t, &mut cursor, &mut pose);
-            local_to_model(
-                self.skeleton.parents(),
-                &pose.local,
-                self.skeleton.scale_mode(),
-                &mut model,
-            );
-            let tip = self.tip(&model);
-            self.trail.push(tip);
+        if self.clip.is_some() {
+            let d = self.duration_sec();
+            let focus = self.compare_clip.is_some();
+            let main = self.clip.map(|c| &self.clips[c]);
+            for (clip, path) in [(main, 0), (self.compare_clip.as_ref(), 1)] {
+                let Some(clip) = clip else { continue };
+                let mut cursor = ClipCursor::new();
+                for k in 0..=TRAIL_DOTS {
+                    let t = d * k as f32 / TRAIL_DOTS as f32 * 0.99999;
+                    self.sample_with(Some(clip), t, &mut cursor, &mut pose);
+                    local_to_model(
+                        self.skeleton.parents(),
+                        &pose.local,
+                        self.skeleton.scale_mode(),
+                        &mut model,
+                    );
+                    let tip = self.tip(&model);
+                    if path == 0 {
+                        self.trail.push(tip);
+                    } else {
+                        self.compare_trail.push(tip);
+                    }
+                    grow(tip);
+                    if !focus {
+                        model.iter().for_each(|m| grow(m.translation.into()));
+                        if self.show_boxes {
+                            for (shape, m) in self.shapes.iter().zip(&model) {
+                                for corner in box_corners(shape) {
+                                    grow(m.transform_point3(corner));
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            if focus {
+                // Only the paths and the pivot they turn about.
+                let pivot: Vec3 = self.model[self.selected].translation.into();
+                lo = pivot.min(
+                    self.trail
+                        .iter()
+                        .chain(&self.compare_trail)
+                        .fold(pivot, |a, &b| a.min(b)),
+                );
+                hi = pivot.max(
+                    self.trail
+                        .iter()
+                        .chain(&self.compare_trail)
+                        .fold(pivot, |a, &b| a.max(b)),
+                );
+            }
+            if self.blend_clip.is_some() && !focus {
+                for k in 0..2 {
+                    for step in 0..=12 {
+                        let t = d * step as f32 / 12.0 * 0.99999;
+                        self.source_model(k, t, &mut pose, &mut model);
+                        model.iter().for_each(|m| {
+                            lo = lo.min(m.translation.into());
+                            hi = hi.max(m.translation.into());
+                        });
+                    }
+                }
+            }
         }
         self.scratch_pose = pose;
         self.scratch_model = model;
+        // The floor under the feet stays in view (but for the close view of the paths), and
+        // room for the labels.
+        if self.compare_clip.is_none() {
+            lo.y = lo.y.min(0.0);
+        }
+        self.bounds = (
+            lo - Vec3::splat(VIEW_MARGIN_M),
+            hi + Vec3::splat(VIEW_MARGIN_M),
+        );
+    }
+
+    /// The box the camera keeps in view ([`Frame::keep_in_view`]), from the last pose.
+    pub fn view_bounds(&self) -> (Vec3, Vec3) {
+        self.bounds
+    }
+
+    /// The second path (the compared interpolation), empty when none is compared.
+    pub fn compare_trail(&self) -> &[Vec3] {
+        &self.compare_trail
+    }
+
+    /// The joint under the pointer at `pointer` (CSS pixels on a canvas of `size`, seen through
+    /// `view_proj`): the nearest joint sphere the pointer's ray meets, each sphere at least
+    /// [`PICK_RADIUS_PX`] across on screen; `None` when the ray misses them all.
+    pub fn pick_joint(&self, view_proj: Mat4, size: Vec2, pointer: Vec2) -> Option<usize> {
+        if !pointer.is_finite() || !(size.x > 0.0 && size.y > 0.0) {
+            return None;
+        }
+        let inverse = view_proj.inverse();
+        let unproject = |z: f32| {
+            let ndc = Vec3::new(
+                2.0 * pointer.x / size.x - 1.0,
+                1.0 - 2.0 * pointer.y / size.y,
+                z,
+            );
+            inverse.project_point3(ndc)
+        };
+        let origin = unproject(0.0);
+        let dir = (unproject(1.0) - origin).try_normalize()?;
+        let mut best: Option<(f32, usize)> = None;
+        for (j, m) in self.model.iter().enumerate() {
+            let c: Vec3 = m.translation.into();
+            // The sphere's radius, or what PICK_RADIUS_PX pixels measure at its depth.
+            let radius = project_to_canvas(view_proj, size, c)
+                .and_then(|px| {
+                    point_on_view_plane(view_proj, size, c, px + Vec2::new(PICK_RADIUS_PX, 0.0))
+                })
+                .map_or(1.5 * JOINT_RADIUS, |edge| {
+                    edge.distance(c).max(1.5 * JOINT_RADIUS)
+                });
+            // Ray against sphere: |origin + s·dir − c| = radius.
+            let oc = origin - c;
+            let b = oc.dot(dir);
+            let disc = b * b - (oc.length_squared() - radius * radius);
+            if disc < 0.0 {
+                continue;
+            }
+            if -b + disc.sqrt() < 0.0 {
+                continue; // behind the eye
+            }
+            // Of the spheres hit, the one whose centre the ray passes closest to (relative to
+            // its size): where joints crowd, the one the pointer is on.
+            let miss = (oc.length_squared() - b * b).max(0.0).sqrt() / radius;
+            if best.is_none_or(|(d, _)| miss < d) {
+                best = Some((miss, j));
+            }
+        }
+        best.map(|(_, j)| j)
     }
 
     /// The path of the selected bone's tip over one cycle (dots at equal time steps).
@@ -688,7 +1060,11 @@ impl SkeletonFigure {
         if !self.model.is_empty() {
             let sum: Vec3 = self.model.iter().map(|m| Vec3::from(m.translation)).sum();
             let middle = sum / self.model.len() as f32;
-            let lowest = self.model.iter().map(|m| m.translation.y).fold(f32::MAX, f32::min);
+            let lowest = self
+                .model
+                .iter()
+                .map(|m| m.translation.y)
+                .fold(f32::MAX, f32::min);
             frame.contact_shadow(Vec3::new(middle.x, lowest.max(0.0), middle.z), 0.25);
         }
         let selected = Mat4::from(self.model[self.selected]);
@@ -699,49 +1075,166 @@ impl SkeletonFigure {
             self.skeleton.names()[self.selected].clone(),
             palette::ORANGE,
         );
-        if self.trail.len() >= 2 {
-            frame.wide_polyline(&self.trail, palette::PURPLE, crate::draw::CURVE_PX);
-            // A dot at each of the trail's samples, equal time steps apart.
-            for &dot in &self.trail[..self.trail.len() - 1] {
-                frame.point(dot, 0.008, palette::PURPLE);
+        let main_step = self.interpolation == KeyInterpolation::Step;
+        let compare_step = matches!(self.compare, Some((KeyInterpolation::Step, _)));
+        draw_path(frame, &self.trail, palette::PURPLE, main_step);
+        draw_path(frame, &self.compare_trail, palette::BLUE, compare_step);
+        // The crossfade's two clips alone, beside the blend.
+        let source_names = [
+            self.clip_name(),
+            self.blend_clip
+                .map_or(String::new(), |b| human::CLIP_NAMES[b].to_string()),
+        ];
+        for ((model, color), name) in self
+            .sources
+            .iter()
+            .zip([palette::BLUE, palette::BROWN])
+            .zip(source_names)
+        {
+            if model.is_empty() {
+                continue;
             }
+            for (i, &parent) in parents.iter().enumerate() {
+                let p: Vec3 = model[i].translation.into();
+                frame.mesh(
+                    MeshId::SPHERE,
+                    Mat4::from_scale_rotation_translation(
+                        Vec3::splat(JOINT_RADIUS),
+                        Quat::IDENTITY,
+                        p,
+                    ),
+                    color,
+                );
+                if parent >= 0 {
+                    bone(frame, model[parent as usize].translation.into(), p, color);
+                }
+            }
+            let top = model
+                .iter()
+                .map(|m| Vec3::from(m.translation))
+                .fold(Vec3::splat(f32::NEG_INFINITY), Vec3::max);
+            let root: Vec3 = model[0].translation.into();
+            frame.label(
+                Vec3::new(root.x - 0.15, top.y + 0.12, root.z),
+                format!("{name} alone"),
+                color,
+            );
+            frame.contact_shadow(Vec3::new(root.x, 0.0, root.z), 0.25);
         }
+        frame.keep_box_in_view(self.bounds.0, self.bounds.1);
         Ok(note)
     }
 
-    /// One cycle of the selected joint's rotation for the plots: `[t, angle, speed, …]`, the
-    /// angle (degrees) of its local rotation from its rest rotation and the angular speed
-    /// (degrees per second, by finite differences), `samples` times over the clip, with the
-    /// current interpolation and offsets.
+    /// One cycle of the selected joint's rotation for the plots: `[t, angle, speed, angle₂,
+    /// speed₂, …]`, the angle (degrees) of its local rotation from its rest rotation and the
+    /// angular speed (degrees per second, by finite differences), `samples` times over the clip,
+    /// with the current interpolation and offsets; `angle₂` and `speed₂` are the same under the
+    /// compared interpolation (a copy of the first two when none is compared).
     pub fn sample_selected(&self, samples: usize) -> Result<Vec<f32>, String> {
         super::check_samples(samples)?;
         let d = self.duration_sec();
         let j = self.selected;
         let rest = self.skeleton.rest()[j].rotation;
         let mut pose = self.skeleton.rest_pose();
-        let mut cursor = ClipCursor::new();
-        let mut rotations = Vec::with_capacity(samples);
         let dt = d / (samples - 1) as f32;
-        for k in 0..samples {
-            let t = (k as f32 * dt).min(d * 0.99999);
-            self.sample_into(t, &mut cursor, &mut pose);
-            rotations.push(pose.local[j].rotation);
+        let main = self.clip.map(|c| &self.clips[c]);
+        let second = self.compare_clip.as_ref().or(main);
+        let mut series = [Vec::with_capacity(samples), Vec::with_capacity(samples)];
+        for (clip, rotations) in [main, second].into_iter().zip(&mut series) {
+            let mut cursor = ClipCursor::new();
+            for k in 0..samples {
+                let t = (k as f32 * dt).min(d * 0.99999);
+                self.sample_with(clip, t, &mut cursor, &mut pose);
+                rotations.push(pose.local[j].rotation);
+            }
         }
-        let mut out = Vec::with_capacity(3 * samples);
+        let mut out = Vec::with_capacity(5 * samples);
         for k in 0..samples {
             let (a, b) = if k + 1 < samples {
                 (k, k + 1)
             } else {
                 (k - 1, k)
             };
-            let speed = angle_between(rotations[a], rotations[b]) / dt / DEG;
-            out.extend_from_slice(&[
-                k as f32 * dt,
-                angle_between(rest, rotations[k]) / DEG,
-                speed,
-            ]);
+            out.push(k as f32 * dt);
+            for rotations in &series {
+                out.push(angle_between(rest, rotations[k]) / DEG);
+                out.push(angle_between(rotations[a], rotations[b]) / dt / DEG);
+            }
         }
         Ok(out)
+    }
+}
+
+/// The modes an entry of [`INTERPOLATIONS`] names; a bare "linear" keeps `rotation`.
+fn parse_interpolation(
+    name: &str,
+    rotation: QuatInterpolation,
+) -> Result<(KeyInterpolation, QuatInterpolation), String> {
+    Ok(match name {
+        "step" => (KeyInterpolation::Step, rotation),
+        "linear" => (KeyInterpolation::Linear, rotation),
+        "linear (nlerp)" => (KeyInterpolation::Linear, QuatInterpolation::Nlerp),
+        "linear (slerp)" => (KeyInterpolation::Linear, QuatInterpolation::Slerp),
+        "cubic" => (KeyInterpolation::Cubic, rotation),
+        _ => {
+            return Err(format!(
+                "interpolation must be one of {}, got {name:?}",
+                INTERPOLATIONS.join(", ")
+            ))
+        }
+    })
+}
+
+/// The entry of [`INTERPOLATIONS`] for a pair of modes.
+fn interpolation_name(
+    (interpolation, rotation): (KeyInterpolation, QuatInterpolation),
+) -> &'static str {
+    match (interpolation, rotation) {
+        (KeyInterpolation::Step, _) => INTERPOLATIONS[0],
+        (KeyInterpolation::Linear, QuatInterpolation::Nlerp) => INTERPOLATIONS[1],
+        (KeyInterpolation::Linear, QuatInterpolation::Slerp) => INTERPOLATIONS[2],
+        (KeyInterpolation::Cubic, _) => INTERPOLATIONS[3],
+    }
+}
+
+/// What a check at probe inputs found: "" when every probe the student's code answered
+/// matches and none was asked, else which of the `asked` probes differ.
+pub(crate) fn probe_summary(function: &str, asked: usize, differing: &[String]) -> String {
+    if asked == 0 {
+        String::new()
+    } else if differing.is_empty() {
+        format!(" It also matches at {asked} probe inputs beyond the shown one.")
+    } else {
+        format!(
+            " Of {asked} probe inputs beyond the shown one, your {function} differs at {}: {}.",
+            differing.len(),
+            differing.join("; ")
+        )
+    }
+}
+
+/// The eight corners of a joint's body box, in the joint's frame.
+fn box_corners(shape: &JointShape) -> impl Iterator<Item = Vec3> + '_ {
+    (0..8).map(move |i| {
+        let sign = |bit: usize| if i & bit == 0 { -1.0 } else { 1.0 };
+        shape.center + shape.half_extents * Vec3::new(sign(1), sign(2), sign(4))
+    })
+}
+
+/// A path of equal-time samples: a wide line with a tick at each sample, or, for step keys
+/// (where the pose jumps), a dot at each sample, so the dots pile up on the keys.
+fn draw_path(frame: &mut Frame, path: &[Vec3], color: Vec3, step: bool) {
+    if path.len() < 2 {
+        return;
+    }
+    let samples = &path[..path.len() - 1];
+    if step {
+        for &p in samples {
+            frame.marker(p, crate::draw::DOT_PX, color);
+        }
+    } else {
+        frame.wide_polyline(path, color, crate::draw::CURVE_PX);
+        frame.ticks(samples, PATH_TICK_PX, color);
     }
 }
 
@@ -758,5 +1251,5 @@ fn bone(frame: &mut Frame, a: Vec3, b: Vec3, color: Vec3) {
         a + 0.5 * v,
     );
     frame.mesh(MeshId::CUBE, model, color);
-    frame.line(a, b, color);
+    frame.wide_line(a, b, color, 2.0);
 }

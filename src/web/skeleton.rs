@@ -2,14 +2,17 @@
 //! [`crate::figures::skeleton`], which holds the figure's logic and is tested natively.
 
 use super::{js, Viewer};
+use crate::camera::OrbitCamera;
 use crate::figures::skeleton::SkeletonFigure;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use wasm_bindgen::prelude::*;
 
 /// The skeleton figure: the built-in human playing a clip.
 #[wasm_bindgen]
 pub struct SkeletonScene {
     scene: SkeletonFigure,
+    /// The camera of the last drawn frame, for picking a joint.
+    camera: Option<OrbitCamera>,
 }
 
 #[wasm_bindgen]
@@ -18,7 +21,10 @@ impl SkeletonScene {
     pub fn new() -> SkeletonScene {
         let mut scene = SkeletonFigure::new();
         scene.set_runner(super::sandbox::run);
-        SkeletonScene { scene }
+        SkeletonScene {
+            scene,
+            camera: None,
+        }
     }
 
     #[wasm_bindgen(js_name = jointNames)]
@@ -68,6 +74,30 @@ impl SkeletonScene {
     pub fn set_rotation_interpolation(&mut self, name: JsValue) -> Result<(), JsError> {
         let name: &str = &super::string("name", &name)?;
         self.scene.set_rotation_interpolation(name).map_err(js)
+    }
+
+    /// A second path of the selected bone's tip under another interpolation (one of those
+    /// `setInterpolation` takes), or "none".
+    #[wasm_bindgen(js_name = setCompare)]
+    pub fn set_compare(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
+        self.scene.set_compare(name).map_err(js)
+    }
+
+    /// The joint under the pointer at `(x, y)` CSS pixels on a canvas `width` × `height`, or −1.
+    #[wasm_bindgen(js_name = pickJoint)]
+    pub fn pick_joint(&self, x: f32, y: f32, width: f32, height: f32) -> Result<f64, JsError> {
+        let pointer = Vec2::new(super::finite("x", x)?, super::finite("y", y)?);
+        let w = super::in_range("width", width, 1.0, 1e5)?;
+        let h = super::in_range("height", height, 1.0, 1e5)?;
+        let Some(camera) = self.camera else {
+            return Ok(-1.0);
+        };
+        let view_proj = camera.projection(w / h) * camera.view();
+        Ok(self
+            .scene
+            .pick_joint(view_proj, Vec2::new(w, h), pointer)
+            .map_or(-1.0, |j| j as f64))
     }
 
     /// Crossfades clip `name` (or "none") in with weight `weight ∈ [0, 1]`, at the same phase.
@@ -147,6 +177,7 @@ impl SkeletonScene {
 
     /// Poses at `time_sec` and draws. Returns the note for the page.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        self.camera = Some(viewer.camera);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, time_sec)
