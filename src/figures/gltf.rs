@@ -35,6 +35,9 @@ struct Skinned {
 
 /// The most mesh vertices drawn as dots (every k-th vertex beyond it).
 const MAX_DOTS: usize = 2_000;
+/// Width of a bone on screen, and the size of a bind-pose dot, CSS pixels.
+const BONE_PX: f32 = 2.5;
+const DOT_PX: f32 = 4.0;
 
 /// What is loaded.
 struct Character {
@@ -43,6 +46,8 @@ struct Character {
     /// Joint world positions in the rest pose, for the fit and the joint size.
     size: f32,
     centre: Vec3,
+    /// Half the size of that box along each axis.
+    half_extent: Vec3,
     /// A thinned set of the mesh's vertices (bind pose, world space).
     dots: Vec<Vec3>,
     /// Per mesh, or why the mesh cannot be skinned.
@@ -214,6 +219,7 @@ impl GltfFigure {
             clips,
             size,
             centre: 0.5 * (lo + hi),
+            half_extent: 0.5 * (hi - lo),
             dots,
             skinned,
             inverse_bind,
@@ -502,7 +508,12 @@ impl GltfFigure {
                 color,
             );
             if parent >= 0 {
-                frame.line(world(&self.model[parent as usize]), p, palette::BLUE);
+                frame.wide_line(
+                    world(&self.model[parent as usize]),
+                    p,
+                    palette::BLUE,
+                    BONE_PX,
+                );
             }
         }
         let root = skeleton
@@ -517,8 +528,18 @@ impl GltfFigure {
         );
         if self.show_mesh && !skinning {
             for &d in &c.dots {
-                frame.point(d, 0.3 * radius, palette::GREY);
+                frame.marker(d, DOT_PX, palette::GREY);
             }
+        }
+        // The rest pose's box (joints and mesh) and the joints where they are now stay in view,
+        // so the character fills the canvas at any size.
+        let margin = 0.05 * c.size;
+        frame.keep_box_in_view(
+            c.centre - c.half_extent - Vec3::splat(margin),
+            c.centre + c.half_extent + Vec3::splat(margin),
+        );
+        for m in &self.model {
+            frame.keep_in_view.push(world(m));
         }
         let clip = c.clips.get(self.clip);
         Ok(format!(
