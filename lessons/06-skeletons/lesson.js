@@ -1,10 +1,15 @@
-// Lesson 06: wires the page's controls to the wasm scene. No math here: it lives in Rust
-// (src/skeleton/, src/figures/skeleton.rs).
+// Lesson 06: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/skeleton/, src/figures/skeleton.rs), including which joint is under the pointer.
 import { startLesson, markDrawn, Timeline, Plot, showMatrix, columns, GUI, showNote } from '../../www/lesson.js';
 import { SkeletonScene } from '../../pkg/inbetween.js';
 import { gltfFigure } from '../../www/gltf-figure.js';
 
 const lesson = await startLesson();
+
+// Two series that can coincide: the first 5 px wide underneath, the second 1.5 px on top.
+const UNDER_AND_OVER = [5, 1.5];
+const PURPLE = '#944fc9';
+const BLUE = '#1f6fd6';
 
 /** An angle slider that shows whole degrees. */
 function addAngle(folder, object, key, name) {
@@ -12,27 +17,55 @@ function addAngle(folder, object, key, name) {
   return c.decimals ? c.decimals(0) : c;
 }
 
-const viewer = await lesson.figure('#fig-skeleton');
-if (viewer) {
+// Figures 1-3: the same skeleton scene, each beside the section it illustrates and starting
+// from that section's settings, with the controls that section needs.
+await skeletonFigure('#fig-skeleton', {
+  clip: 'walk', keys: 9, joint: 'thigh.L', axes: true,
+  controls: ['clip', 'joint', 'angles', 'axes', 'boxes'], table: true, matrices: true,
+});
+await skeletonFigure('#fig-interpolation', {
+  clip: 'arm circles', keys: 4, joint: 'upper_arm.L', interpolation: 'linear (slerp)',
+  compare: 'linear (nlerp)', axes: false,
+  controls: ['clip', 'keys', 'interpolation', 'compare', 'joint'], plots: true,
+});
+await skeletonFigure('#fig-crossfade', {
+  clip: 'walk', keys: 9, joint: 'upper_arm.R', blend: 'wave', weight: 0.5, axes: false,
+  controls: ['clip', 'blend', 'joint'],
+});
+
+async function skeletonFigure(id, start) {
+  const viewer = await lesson.figure(id);
+  if (!viewer) return;
+  const figure = document.querySelector(id);
+  const has = (name) => start.controls.includes(name);
   viewer.setCamera(0, 0.85, 0, 2.5, 0.5, 0.2);
   const scene = new SkeletonScene();
   const names = scene.jointNames();
   const parents = scene.parents();
   const groups = scene.groupSizes();
-  const timeline = new Timeline(document.getElementById('skel-timeline'), { duration: scene.durationSec(), playing: true });
   const p = {
-    clip: 'walk', keys: 9, interpolation: 'linear (slerp)', joint: 'thigh.L',
-    x: 0, y: 0, z: 0, blend: 'none', weight: 0.5, boxes: false, axes: true, useExercise: false,
+    clip: start.clip, keys: start.keys, interpolation: start.interpolation ?? 'linear (slerp)',
+    compare: start.compare ?? 'none', joint: start.joint, x: 0, y: 0, z: 0,
+    blend: start.blend ?? 'none', weight: start.weight ?? 0.5, boxes: false, axes: start.axes, useExercise: false,
     reset: () => { scene.resetPose(); readJoint(); refresh(); update(); },
   };
+  scene.setClip(p.clip);
+  scene.setKeysPerCycle(p.keys);
+  scene.setInterpolation(p.interpolation);
+  scene.setCompare(p.compare);
+  scene.setBlend(p.blend, p.weight);
+  scene.setShowAxes(p.axes);
+  const timeline = new Timeline(figure.querySelector('.timeline'), { duration: scene.durationSec(), playing: true });
   const index = () => names.indexOf(p.joint);
-  const gui = new GUI({ container: document.querySelector('#fig-skeleton .panel'), title: 'Skeleton' });
+  const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Skeleton' });
   const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
   const readJoint = () => { [p.x, p.y, p.z] = scene.jointAnglesDeg(index()).map((v) => Math.round(v)); };
 
-  // The joint table: rows built once from the skeleton's arrays; clicking a row selects its joint.
-  const body = document.querySelector('#skel-table tbody');
+  // The joint table (Figure 1): rows built once from the skeleton's arrays; clicking a row
+  // selects its joint.
+  const body = start.table ? figure.querySelector('table.joints tbody') : null;
   names.forEach((name, i) => {
+    if (!body) return;
     const row = document.createElement('tr');
     for (const [text, cls] of [[i, ''], [name, 'name'], [parents[i], ''], [groups[i], '']]) {
       const cell = document.createElement('td');
@@ -44,6 +77,7 @@ if (viewer) {
     body.appendChild(row);
   });
   function showSelectionInTable() {
+    if (!body) return;
     const s = index();
     [...body.rows].forEach((row, i) => {
       row.classList.toggle('selected', i === s);
@@ -59,9 +93,10 @@ if (viewer) {
   }
 
   // Key marks under the timeline's scrub.
-  const strip = document.getElementById('skel-keys');
+  const strip = figure.querySelector('.key-strip');
   function showKeys() {
-    const scrub = document.querySelector('#skel-timeline .scrub');
+    if (!strip) return;
+    const scrub = figure.querySelector('.timeline .scrub');
     const area = strip.getBoundingClientRect();
     const box = scrub.getBoundingClientRect();
     const inset = 8; // half the slider thumb: where 0 and the end sit on the track
@@ -75,20 +110,29 @@ if (viewer) {
       return mark;
     }));
   }
-  new ResizeObserver(showKeys).observe(strip);
+  if (strip) new ResizeObserver(showKeys).observe(strip);
 
-  const anglePlot = new Plot(document.getElementById('skel-plot-angle'), {
-    title: 'Selected joint: angle from rest', xLabel: 'time (s)', yLabel: 'angle (°)',
-    series: ['angle'], colors: ['#e68a00'], minSpan: 5, height: 160,
-  });
-  const speedPlot = new Plot(document.getElementById('skel-plot-speed'), {
-    title: 'Selected joint: turning speed', xLabel: 'time (s)', yLabel: 'speed (°/s)',
-    series: ['speed'], colors: ['#944fc9'], minSpan: 5, height: 160,
-  });
+  // Figure 1 plots the selected joint's angle; Figure 2 the angle and speed under both
+  // interpolations (purple wide underneath, blue narrow on top: where they agree both show).
+  const plots = [];
+  const angleBox = figure.querySelector('.plot-angle');
+  if (angleBox) {
+    plots.push([new Plot(angleBox, {
+      title: 'Selected joint: angle from rest', xLabel: 'time (s)', yLabel: 'angle (°)',
+      series: start.plots ? ['purple path', 'blue path'] : ['angle'],
+      colors: start.plots ? [PURPLE, BLUE] : ['#e68a00'], widths: UNDER_AND_OVER, minSpan: 5, height: 160,
+    }), start.plots ? [1, 3] : [1]]);
+  }
+  const speedBox = figure.querySelector('.plot-speed');
+  if (speedBox) {
+    plots.push([new Plot(speedBox, {
+      title: 'Selected joint: turning speed', xLabel: 'time (s)', yLabel: 'speed (°/s)',
+      series: ['purple path', 'blue path'], colors: [PURPLE, BLUE], widths: UNDER_AND_OVER, minSpan: 5, height: 160,
+    }), [2, 4]]);
+  }
   function update() {
-    const [time, angle, speed] = columns(scene.sampleSelected(241), 3);
-    anglePlot.setData([time, angle]);
-    speedPlot.setData([time, speed]);
+    const cols = columns(scene.sampleSelected(241), 5);
+    for (const [plot, which] of plots) plot.setData([cols[0], ...which.map((k) => cols[k])]);
     showKeys();
   }
   function selectJoint() {
@@ -99,50 +143,74 @@ if (viewer) {
     update();
   }
 
-  gui.add(p, 'clip', scene.clipNames()).name('clip').onChange(() => {
-    scene.setClip(p.clip);
-    timeline.duration = scene.durationSec();
-    timeline.time %= timeline.duration;
-    timeline.show();
-    update();
-  });
-  gui.add(p, 'keys', 4, 25, 1).name('keys per cycle').onChange(() => { scene.setKeysPerCycle(p.keys); update(); });
-  gui.add(p, 'interpolation', ['step', 'linear (nlerp)', 'linear (slerp)', 'cubic']).name('interpolation').onChange(() => {
-    scene.setInterpolation(p.interpolation);
-    update();
-  });
-  const blending = gui.addFolder('crossfade a second clip');
-  const applyBlend = () => { scene.setBlend(p.blend, p.weight); update(); };
-  blending.add(p, 'blend', ['none', ...scene.clipNames().slice(0, -1)]).name('with clip').onChange(applyBlend);
-  blending.add(p, 'weight', 0, 1, 0.01).name('weight of it').onChange(applyBlend);
-  gui.add(p, 'joint', names).name('joint').onChange(selectJoint);
-  const angles = gui.addFolder('angles on top of the clip (°)');
-  for (const axis of ['x', 'y', 'z']) {
-    addAngle(angles, p, axis, `about ${axis}`).onChange(() => {
-      scene.setJointAnglesDeg(index(), p.x, p.y, p.z);
+  if (has('clip')) {
+    gui.add(p, 'clip', scene.clipNames()).name(start.blend ? 'clip A' : 'clip').onChange(() => {
+      scene.setClip(p.clip);
+      timeline.duration = scene.durationSec();
+      timeline.time %= timeline.duration;
+      timeline.show();
       update();
     });
   }
-  gui.add(p, 'axes').name('every joint\'s axes').onChange((on) => scene.setShowAxes(on));
-  gui.add(p, 'boxes').name('body boxes').onChange((on) => scene.setShowBoxes(on));
+  if (has('keys')) gui.add(p, 'keys', 4, 25, 1).name('keys per cycle').onChange(() => { scene.setKeysPerCycle(p.keys); update(); });
+  const methods = ['step', 'linear (nlerp)', 'linear (slerp)', 'cubic'];
+  if (has('interpolation')) {
+    gui.add(p, 'interpolation', methods).name('purple path').onChange(() => { scene.setInterpolation(p.interpolation); update(); });
+  }
+  if (has('compare')) {
+    gui.add(p, 'compare', ['none', ...methods]).name('blue path').onChange(() => { scene.setCompare(p.compare); update(); });
+  }
+  if (has('blend')) {
+    const applyBlend = () => { scene.setBlend(p.blend, p.weight); update(); };
+    gui.add(p, 'blend', ['none', ...scene.clipNames().slice(0, -1)]).name('clip B').onChange(applyBlend);
+    gui.add(p, 'weight', 0, 1, 0.01).name('weight of B').onChange(applyBlend);
+  }
+  gui.add(p, 'joint', names).name('joint').onChange(selectJoint);
+  if (has('angles')) {
+    const angles = gui.addFolder('angles on top of the clip (°)');
+    for (const axis of ['x', 'y', 'z']) {
+      addAngle(angles, p, axis, `about ${axis}`).onChange(() => {
+        scene.setJointAnglesDeg(index(), p.x, p.y, p.z);
+        update();
+      });
+    }
+  }
+  if (has('axes')) gui.add(p, 'axes').name('every joint\'s axes').onChange((on) => scene.setShowAxes(on));
+  if (has('boxes')) gui.add(p, 'boxes').name('body boxes').onChange((on) => scene.setShowBoxes(on));
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
-  gui.add(p, 'reset').name('reset the angles');
+  if (has('angles')) gui.add(p, 'reset').name('reset the angles');
   selectJoint();
 
-  const note = document.getElementById('skel-note');
+  // A click (not a drag) on a joint selects it: the scene casts the pointer's ray at the joints.
+  const canvas = figure.querySelector('.stage canvas');
+  let down = null;
+  canvas.addEventListener('pointerdown', (e) => { down = [e.clientX, e.clientY]; });
+  canvas.addEventListener('pointerup', (e) => {
+    if (!down || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 4) return;
+    down = null;
+    const r = canvas.getBoundingClientRect();
+    const j = scene.pickJoint(e.clientX - r.left, e.clientY - r.top, r.width, r.height);
+    if (j >= 0) {
+      p.joint = names[j];
+      selectJoint();
+    }
+  });
+
+  const note = figure.querySelector('.note');
+  const local = figure.querySelector('.matrix-local');
+  const model = figure.querySelector('.matrix-model');
   let frame = 0;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     showNote(note, scene.draw(viewer, t));
-    anglePlot.setCursor?.(t);
-    speedPlot.setCursor?.(t);
-    if (frame++ % 6 === 0) {
-      showMatrix(document.getElementById('skel-local'), scene.localMatrix(index()));
-      showMatrix(document.getElementById('skel-model'), scene.modelMatrix(index()));
+    for (const [plot] of plots) plot.setCursor?.(t);
+    if (local && frame++ % 6 === 0) {
+      showMatrix(local, scene.localMatrix(index()));
+      showMatrix(model, scene.modelMatrix(index()));
     }
-    markDrawn('#fig-skeleton');
+    markDrawn(id);
   });
 }
 
-// Figure 2: a character from a glTF file (the samples served with the site, or the reader's own).
+// Figure 4: a character from a glTF file (the samples served with the site, or the reader's own).
 await gltfFigure(lesson, '#fig-gltf');
