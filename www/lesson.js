@@ -571,6 +571,7 @@ function contentWidth(element) {
  * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0);
  * `setYRange([lo, hi])` sets the data range to show later (padded as autoscaling pads it; `null`
  * autoscales again), for a figure whose Rust side says which samples the scale should follow.
+ * `points: false` never marks the samples with dots (`true` always; uPlot decides by default).
  * `log: 'xy'` makes both axes logarithmic (`'x'` or `'y'` one of them; the data must be positive).
  * `widths: [5, 1.5]` sets each series' line width in CSS pixels (default 2) and `dashes:
  * [null, [6, 4]]` its dash pattern (dash and gap lengths; `null` solid): a wide line under a
@@ -582,7 +583,7 @@ function contentWidth(element) {
 export class Plot {
   constructor(element, {
     title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null,
-    widths = [], dashes = [], log = '',
+    widths = [], dashes = [], log = '', points,
   }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
     // The y label is drawn along the plot area and clipped at the canvas: make the plot tall
@@ -648,6 +649,9 @@ export class Plot {
         width: widths[i] ?? 2,
         // uPlot scales a width by the pixel ratio but draws a dash pattern in canvas pixels.
         ...(dashes[i] ? { dash: dashes[i].map((d) => d * devicePixelRatio) } : {}),
+        // `points: false`: no dots on the samples (uPlot draws them while few samples are in
+        // view, which hides a dashed guide's dashes); `true`: always.
+        ...(points === undefined ? {} : { points: { show: points } }),
       }))],
       hooks: { draw: [cursorLine] },
     }, [[0], ...series.map(() => [0])], element);
