@@ -443,3 +443,154 @@ fn the_aim_plot_follows_the_target_until_the_cone_stops_the_head() {
         "{inside} inside, {outside} outside"
     );
 }
+
+#[test]
+fn fabrik_stalls_near_the_root_where_ccd_reaches() {
+    // A target 7 cm from the root: the two-segment chain must fold almost double. FABRIK's
+    // passes pull the joints along the chain and barely open the fold; CCD turns it.
+    let mut f = IkFigure::new();
+    f.set_target(Vec3::new(0.05, 0.05, 0.0)).unwrap();
+    let [_, ccd, fabrik] = f.results().unwrap();
+    let (ccd, fabrik) = (ccd.unwrap(), fabrik.unwrap());
+    println!("CCD {ccd:?}, FABRIK {fabrik:?}");
+    assert!(ccd.reached && ccd.iterations == 2, "{ccd:?}");
+    assert!(!fabrik.reached && fabrik.iterations == 10, "{fabrik:?}");
+    assert!((fabrik.error * 1000.0 - 41.8).abs() < 0.1, "FABRIK {} mm short", fabrik.error * 1000.0);
+    // The figure marks the gap with its length.
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    assert!(frame.labels.iter().any(|l| l.text == "41.8 mm short"), "{:?}", frame.labels.iter().map(|l| &l.text).collect::<Vec<_>>());
+}
+
+#[test]
+fn each_target_has_its_chains_colour_and_stays_in_view() {
+    use inbetween::draw::palette;
+    let mut f = IkFigure::new();
+    f.set_target(Vec3::new(-1.2, 1.4, 0.5)).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    let colors = [palette::BLUE, palette::ORANGE, palette::TEAL];
+    for (k, name) in ["two-joint", "CCD", "FABRIK"].iter().enumerate() {
+        let label = frame.labels.iter().find(|l| l.text == format!("{name} target")).unwrap();
+        assert_eq!(label.color, colors[k], "{name}");
+        let target = f.target() + Vec3::new([-1.1, 0.0, 1.1][k], 0.0, 0.0);
+        assert!(frame.markers.iter().any(|m| Vec3::from(m.center) == target && glam::Vec4::from(m.color).truncate() == colors[k]));
+        assert!(frame.keep_in_view.contains(&target), "{name}'s target is kept in view");
+    }
+    // With 3 segments the two-joint chain, its pole and its labels are not drawn.
+    f.set_segments(3.0).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    assert!(frame.labels.iter().all(|l| !l.text.contains("two-joint") && l.text != "pole" && !l.text.contains("needs")));
+    assert!(frame.meshes.iter().all(|m| m.color.truncate() != palette::BLUE));
+}
+
+#[test]
+fn the_law_of_cosines_triangle_is_drawn_on_the_two_joint_chain() {
+    let mut f = IkFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    assert!(texts.contains(&"a") && texts.contains(&"b"), "{texts:?}");
+    let d = f.target().length();
+    assert!(texts.contains(&format!("d = {:.3} m", d).as_str()), "{texts:?}");
+    // α as drawn is the angle of the law of cosines: cos α = (a² + d² − b²) / (2ad).
+    let (a, b) = (0.5f32, 0.5f32);
+    let alpha = ((a * a + d * d - b * b) / (2.0 * a * d)).acos().to_degrees();
+    assert!(texts.contains(&format!("α = {alpha:.0}°").as_str()), "{texts:?}");
+    // Every middle joint the pole angle can choose lies on the dashed circle: turning the pole
+    // keeps the middle joint at the same distance from the root→target line.
+    let chain = f.chain(0).unwrap();
+    let root = chain[0];
+    let u = f.target().normalize();
+    let off_line = |p: Vec3| {
+        let v = p - root;
+        (v - u * v.dot(u)).length()
+    };
+    let r0 = off_line(chain[1]);
+    for deg in [-150.0, -60.0, 45.0, 120.0] {
+        f.set_pole_angle_deg(deg).unwrap();
+        let c = f.chain(0).unwrap();
+        assert!((off_line(c[1]) - r0).abs() < 1e-4);
+        assert!(c[2].distance(chain[2]) < 1e-4, "the end stays on the target");
+    }
+}
+
+#[test]
+fn the_hinges_gap_is_marked_with_its_length() {
+    let mut f = IkFigure::new();
+    f.set_limits("hinges (bend one way)").unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    let results = f.results().unwrap();
+    for k in 1..3 {
+        let r = results[k].unwrap();
+        assert!(r.error >= 0.15 - 1e-4, "{r:?}");
+        let text = format!("{:.1} mm short", r.error * 1000.0);
+        assert!(frame.labels.iter().any(|l| l.text == text), "{text}");
+    }
+}
+
+#[test]
+fn the_aim_figure_shows_what_the_head_misses() {
+    let mut f = AimFigure::new();
+    f.set_target(Vec3::new(0.0, 1.6, -1.2)).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, 0.0).unwrap();
+    assert!(note.contains("outside the 70° cone"), "{note}");
+    let missed = frame.labels.iter().find(|l| l.text.starts_with("misses")).expect("the missed angle");
+    let deg: f32 = missed.text.trim_start_matches("misses ").trim_end_matches('°').parse().unwrap();
+    assert!(deg > 90.0, "{deg}");
+    assert!(frame.strokes.iter().any(|s| s.dash[3] > 0.0 && s.width_px >= 2.0), "a wide dashed line to the target");
+    // Every target position of the loop stays inside the declared view.
+    let (lo, hi) = frame.keep_in_view.iter().fold((Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    for k in 0..32 {
+        let p = f.target_at(8.0 * k as f32 / 32.0);
+        assert!(p.cmpge(lo).all() && p.cmple(hi).all(), "{p}");
+    }
+    // At 180° the head turns all the way: nothing is missed.
+    f.set_max_angle_deg(180.0).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, 0.0).unwrap();
+    assert!(frame.labels.iter().all(|l| !l.text.starts_with("misses")));
+}
+
+#[test]
+fn use_my_exercise_checks_probe_inputs_beyond_the_target() {
+    let mut f = IkFigure::new();
+    f.set_use_exercise(true);
+    // A two_joint that ignores the out-of-reach clamp: right wherever the target is in reach.
+    fn no_clamp(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        if name == "two_joint" {
+            let mut input = args;
+            let [r, m, e, g, pole] = [(); 5].map(|_| Vec3::take(&mut input).unwrap());
+            let (a, b) = (m.distance(r), e.distance(m));
+            let d = g.distance(r);
+            let u = (g - r) / d;
+            let w = pole - r;
+            let v = (w - u * w.dot(u)).normalize();
+            let cos = ((a * a + d * d - b * b) / (2.0 * a * d)).clamp(-1.0, 1.0);
+            let middle = r + a * (cos * u + (1.0 - cos * cos).sqrt() * v);
+            let mut out = Vec::new();
+            middle.put(&mut out);
+            g.put(&mut out);
+            return Ok(out);
+        }
+        direct(name, args)
+    }
+    f.set_runner(no_clamp);
+    let note = f.results().map(|_| ()).and_then(|_| {
+        let mut frame = Frame::default();
+        f.draw(&mut frame)
+    }).unwrap();
+    assert!(note.contains("Your two_joint matches the reference"), "{note}");
+    assert!(note.contains("your two_joint differs at 2: a target out of reach; a target closer than |a − b|"), "{note}");
+    if cfg!(feature = "solutions") {
+        f.set_runner(direct);
+        f.set_target(Vec3::new(0.3, 0.6, 0.1)).unwrap();
+        let mut frame = Frame::default();
+        let note = f.draw(&mut frame).unwrap();
+        assert!(note.contains("It also matches at 4 probe inputs"), "{note}");
+        assert!(note.contains("It also matches at 3 probe inputs"), "{note}");
+    }
+}

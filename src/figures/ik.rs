@@ -12,6 +12,7 @@ use super::{
     compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
     DEFAULT_RUNNER,
 };
+use crate::draw::StrokeStyle;
 use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
 use crate::exercises::run;
 use crate::ik::{aim, ccd, ccd_limited, fabrik, fabrik_limited, two_joint, IkResult, JointLimit};
@@ -36,6 +37,13 @@ const GRAB_RADIUS_PX: f32 = 18.0;
 const STUDENT_TOLERANCE: f32 = 2e-3;
 /// The bend of the rest pose at each joint, about −z (the chain leans towards +x).
 const REST_BEND_RAD: f32 = 12.0 * DEG;
+
+/// Each chain's colour (its bars, joints, target and labels): analytic, CCD, FABRIK.
+const SOLVER_COLORS: [Vec3; 3] = [palette::BLUE, palette::ORANGE, palette::TEAL];
+/// Sizes on screen, CSS pixels: a target, the pole, the dashed gap left to a target.
+const TARGET_PX: f32 = 16.0;
+const POLE_PX: f32 = 11.0;
+const GAP_PX: f32 = 2.5;
 
 /// What the joint-limits dropdown offers, in order.
 pub const LIMIT_MODES: [&str; 3] = ["none", "hinges (bend one way)", "cones (40°)"];
@@ -369,7 +377,7 @@ impl IkFigure {
                 "Two-joint: out of reach, {} short (the chain points straight at the target).",
                 mm(r.error)
             )),
-            None => parts.push("Two-joint IK needs exactly 2 segments.".into()),
+            None => parts.push("Two-joint IK needs exactly 2 segments: its chain is hidden.".into()),
         }
         for (k, name) in [(1, "CCD"), (2, "FABRIK")] {
             let Some(r) = self.results[k] else { continue };
@@ -442,7 +450,69 @@ impl IkFigure {
             format_number(middle.distance(root)),
             format_number(end.distance(middle)),
         );
-        note + &lengths
+        note + &lengths + &self.probe_two_joint()
+    }
+
+    /// Exercise 7.1 at inputs the figure may not show: a target out of reach, one closer than
+    /// |a − b|, unequal segments, the pole on the other side.
+    fn probe_two_joint(&self) -> String {
+        let (r, m, e) = (Vec3::ZERO, Vec3::new(0.1, 0.6, 0.0), Vec3::new(0.0, 1.0, 0.05));
+        let probes = [
+            ("a target out of reach", r, m, e, Vec3::new(1.5, 0.4, 0.2), Vec3::new(0.0, 1.0, 1.0)),
+            ("a target closer than |a − b|", r, m, e, Vec3::new(0.05, 0.1, 0.0), Vec3::new(1.0, 0.0, 0.0)),
+            ("the pole behind (−z)", r, m, e, Vec3::new(0.4, 0.6, 0.1), Vec3::new(0.2, 0.3, -1.0)),
+            ("a root away from the origin", Vec3::new(0.3, -0.2, 0.1), m, e, Vec3::new(0.5, 0.4, 0.3), Vec3::new(1.0, 1.0, 0.0)),
+        ];
+        let mut asked = 0;
+        let mut differing = Vec::new();
+        for (name, root, middle, end, target, pole) in probes {
+            let Ok(yours) = run::two_joint(self.runner, root, middle, end, target, pole) else {
+                continue;
+            };
+            asked += 1;
+            let Ok(reference) = two_joint(root, middle, end, target, pole, TOLERANCE_M) else {
+                continue;
+            };
+            let close = yours.0.distance(reference.middle) <= STUDENT_TOLERANCE
+                && yours.1.distance(reference.end) <= STUDENT_TOLERANCE;
+            if !close {
+                differing.push(name.to_string());
+            }
+        }
+        super::skeleton::probe_summary("two_joint", asked, &differing)
+    }
+
+    /// Exercise 7.2, one sweep, at chains the figure may not show: four unequal segments, a
+    /// target out of reach, a target on the chain's own line.
+    fn probe_ccd(&self) -> String {
+        let bent = vec![
+            Vec3::ZERO,
+            Vec3::new(0.0, 0.3, 0.0),
+            Vec3::new(0.2, 0.5, 0.1),
+            Vec3::new(0.3, 0.9, 0.0),
+            Vec3::new(0.1, 1.0, -0.2),
+        ];
+        let probes = [
+            ("four unequal segments", bent.clone(), Vec3::new(-0.4, 0.5, 0.3)),
+            ("a target out of reach", bent.clone(), Vec3::new(2.0, 1.0, 0.5)),
+            ("a target behind the root", bent, Vec3::new(0.0, -0.5, -0.3)),
+        ];
+        let mut asked = 0;
+        let mut differing = Vec::new();
+        for (name, chain, target) in probes {
+            let Ok(yours) = run::ccd_iteration(self.runner, chain.clone(), target) else {
+                continue;
+            };
+            asked += 1;
+            let mut reference = chain;
+            crate::ik::ccd_iteration(&mut reference, target);
+            let close = yours.len() == reference.len()
+                && yours.iter().zip(&reference).all(|(y, r)| y.distance(*r) <= STUDENT_TOLERANCE);
+            if !close {
+                differing.push(name.to_string());
+            }
+        }
+        super::skeleton::probe_summary("ccd_iteration", asked, &differing)
     }
 
     /// Exercise 7.2, iterated like the reference CCD (no limits); keeps the student's chain.
@@ -495,13 +565,14 @@ impl IkFigure {
                 if yours.iter().all(|p| p.is_finite()) {
                     self.student[1] = Some(yours);
                 }
-                return note;
+                return note + &self.probe_ccd();
             }
         }
         let n = self.iterations;
         self.student[1] = Some(yours);
         format!(
-            "Your ccd_iteration matches the reference in every iteration (up to {n}) at this target."
+            "Your ccd_iteration matches the reference in every iteration (up to {n}) at this target.{}",
+            self.probe_ccd()
         )
     }
 
@@ -554,7 +625,7 @@ impl IkFigure {
         let Some((view_proj, size)) = self.view_proj() else {
             return Ok(false);
         };
-        Ok(ROOTS_X.iter().any(|&x| {
+        Ok(ROOTS_X[self.shown_solvers()].iter().any(|&x| {
             let world = self.target + Vec3::new(x, 0.0, 0.0);
             project_to_canvas(view_proj, size, world)
                 .is_some_and(|s| s.distance(p) <= GRAB_RADIUS_PX)
@@ -569,7 +640,7 @@ impl IkFigure {
         let Some((view_proj, size)) = self.view_proj() else {
             return Ok(());
         };
-        let Some(&root_x) = ROOTS_X.iter().min_by(|&&a, &&b| {
+        let Some(&root_x) = ROOTS_X[self.shown_solvers()].iter().min_by(|&&a, &&b| {
             let d = |x: f32| {
                 project_to_canvas(view_proj, size, self.target + Vec3::new(x, 0.0, 0.0))
                     .map_or(f32::INFINITY, |s| s.distance(p))
@@ -586,37 +657,44 @@ impl IkFigure {
         Ok(())
     }
 
+    /// The chains drawn: all three with 2 segments, CCD and FABRIK only otherwise (two-joint
+    /// IK has no answer for them).
+    pub fn shown_solvers(&self) -> std::ops::Range<usize> {
+        if self.segments == 2 {
+            0..3
+        } else {
+            1..3
+        }
+    }
+
     /// Solves (if anything changed) and draws. Returns the note.
     pub fn draw(&mut self, frame: &mut Frame) -> Result<String, String> {
         self.solve()?;
         frame.grid(12, 0.25);
-        let colors = [palette::BLUE, palette::ORANGE, palette::TEAL];
         let limits = self.joint_limits();
-        for k in 0..3 {
+        for k in self.shown_solvers() {
             let root = Vec3::new(ROOTS_X[k], 0.0, 0.0);
             let target = self.target + root;
-            frame.point(target, 0.035, palette::RED);
-            frame.label(target + Vec3::new(0.05, 0.05, 0.0), "target", palette::RED);
-            frame.label(root + Vec3::new(0.0, -0.12, 0.0), SOLVERS[k], colors[k]);
-            let chain = if self.solved[k].is_empty() {
-                // No analytic answer for this chain: its rest pose, in grey.
-                frame.label(
-                    root + Vec3::new(0.0, 1.1, 0.0),
-                    "needs 2 segments",
-                    palette::GREY,
-                );
-                (&self.rest, palette::GREY)
-            } else {
-                (&self.solved[k], colors[k])
-            };
-            draw_chain(frame, root, chain.0, chain.1);
+            let color = SOLVER_COLORS[k];
+            // Each chain's own target, in its colour, so none is taken for a neighbour's.
+            frame.marker(target, TARGET_PX, color);
+            frame.label_with_priority(target + Vec3::new(0.05, 0.05, 0.0), format!("{} target", SOLVERS[k]), color, 1);
+            frame.label_with_priority(root + Vec3::new(0.0, -0.12, 0.0), SOLVERS[k], color, 2);
+            draw_chain(frame, root, &self.solved[k], color);
             if k == 0 {
-                // The pole steers the analytic solver only (drawn even without an answer).
-                let pole = self.pole() + root;
-                frame.point(pole, 0.025, palette::PURPLE);
-                frame.label(pole + Vec3::new(0.04, 0.04, 0.0), "pole", palette::PURPLE);
-                if !self.solved[0].is_empty() {
-                    dashed(frame, self.solved[0][1] + root, pole, palette::PURPLE);
+                self.draw_law_of_cosines(frame, root);
+            }
+            // What is left between the end and the target: a dashed line with its length.
+            if let (Some(r), Some(&end)) = (self.results[k], self.solved[k].last()) {
+                if r.error > 0.01 {
+                    let end = end + root;
+                    frame.stroke(&[end, target], color, StrokeStyle::dashed(GAP_PX, 0.03, 0.02));
+                    frame.label_with_priority(
+                        end.lerp(target, 0.5) + Vec3::new(0.03, -0.06, 0.0),
+                        format!("{:.1} mm short", r.error * 1000.0),
+                        color,
+                        0,
+                    );
                 }
             }
             if k > 0 {
@@ -633,8 +711,62 @@ impl IkFigure {
                     }
                 }
             }
+            // The chain's reach and its target stay in view.
+            frame.keep_box_in_view(root + Vec3::new(-0.6, -0.15, -0.2), root + Vec3::new(0.6, 1.05, 0.2));
+            frame.keep_in_view.push(target);
         }
         Ok(self.notes.join(" "))
+    }
+
+    /// On the two-joint chain: the triangle of the law of cosines (sides a, b, d, the angle α at
+    /// the root), the pole and its dashed line to the middle joint, and the circle of middle
+    /// joints the pole chooses from (one per pole angle).
+    fn draw_law_of_cosines(&self, frame: &mut Frame, root: Vec3) {
+        let pole = self.pole() + root;
+        frame.marker(pole, POLE_PX, palette::PURPLE);
+        frame.label(pole + Vec3::new(0.04, 0.04, 0.0), "pole", palette::PURPLE);
+        let [r, m, e] = match self.solved[0][..] {
+            [r, m, e] => [r + root, m + root, e + root],
+            _ => return,
+        };
+        frame.stroke(&[m, pole], palette::PURPLE, StrokeStyle::dashed(1.5, 0.03, 0.03));
+        let d = (self.target).length();
+        let a = (m - r).length();
+        let u = (e - r).normalize_or(Vec3::Y);
+        // The circle of middle joints: centre on the root→end line at a·cos α, radius a·sin α.
+        let along = (m - r).dot(u);
+        let centre = r + u * along;
+        let radial = m - centre;
+        if radial.length() > 1e-3 {
+            let circle: Vec<Vec3> = (0..=48)
+                .map(|k| centre + Quat::from_axis_angle(u, std::f32::consts::TAU * k as f32 / 48.0) * radial)
+                .collect();
+            frame.stroke(&circle, palette::PURPLE, StrokeStyle::dashed(1.5, 0.02, 0.02));
+        }
+        // Side d along the root→target line (up to the end when the target is out of reach).
+        let g = self.target + root;
+        frame.stroke(&[r, g], palette::GREY, StrokeStyle::dashed(1.5, 0.04, 0.03));
+        let side = |p: Vec3, q: Vec3| {
+            // Labels sit beside a side's middle, away from the triangle's inside.
+            let mid = p.lerp(q, 0.5);
+            let inward = (r.lerp(m, 1.0 / 3.0).lerp(e, 1.0 / 3.0) - mid).normalize_or(Vec3::X);
+            mid - inward * 0.06
+        };
+        frame.label(side(r, m), "a", palette::BLUE);
+        frame.label(side(m, e), "b", palette::BLUE);
+        frame.label(side(r, g) + Vec3::new(0.0, -0.04, 0.0), format!("d = {} m", format_number(d)), palette::GREY);
+        // The angle α at the root, between the line to the target and the first segment.
+        let first = (m - r).normalize_or(Vec3::Y);
+        let angle = u.angle_between(first);
+        if angle > 1e-3 && a > 0.0 {
+            let axis = u.cross(first).normalize_or(Vec3::Z);
+            let arc: Vec<Vec3> = (0..=16)
+                .map(|k| r + Quat::from_axis_angle(axis, angle * k as f32 / 16.0) * u * 0.18)
+                .collect();
+            frame.stroke(&arc, palette::DARK, StrokeStyle::solid(2.0));
+            let mid = r + Quat::from_axis_angle(axis, 0.5 * angle) * u * 0.24;
+            frame.label(mid, format!("α = {:.0}°", angle / DEG), palette::DARK);
+        }
     }
 }
 
@@ -666,16 +798,7 @@ fn bar(frame: &mut Frame, a: Vec3, b: Vec3, color: Vec3) {
         a + 0.5 * v,
     );
     frame.mesh(MeshId::CUBE, model, color);
-    frame.line(a, b, color);
-}
-
-fn dashed(frame: &mut Frame, a: Vec3, b: Vec3, color: Vec3) {
-    const DASHES: usize = 8;
-    for k in 0..DASHES {
-        let s0 = k as f32 / DASHES as f32;
-        let s1 = (k as f32 + 0.5) / DASHES as f32;
-        frame.line(a.lerp(b, s0), a.lerp(b, s1), color);
-    }
+    frame.wide_line(a, b, color, 2.0);
 }
 
 /// Each joint's allowed range: an arc for a hinge, a circle for a cone, 12 cm out.
@@ -709,9 +832,9 @@ fn draw_limits(
                     let a = min_rad + (max_rad - min_rad) * s as f32 / STEPS as f32;
                     *p = pivot + Quat::from_axis_angle(axis, a) * zero * R;
                 }
-                frame.polyline(&points, palette::GREY);
-                frame.line(pivot, points[0], palette::GREY);
-                frame.line(pivot, points[STEPS], palette::GREY);
+                frame.wide_polyline(&points, palette::GREY, 1.5);
+                frame.wide_line(pivot, points[0], palette::GREY, 1.5);
+                frame.wide_line(pivot, points[STEPS], palette::GREY, 1.5);
             }
             JointLimit::Cone { max_rad } => {
                 let side = incoming.any_orthonormal_vector();
@@ -720,9 +843,9 @@ fn draw_limits(
                     let a = std::f32::consts::TAU * s as f32 / STEPS as f32;
                     *p = pivot + Quat::from_axis_angle(incoming, a) * rim;
                 }
-                frame.polyline(&points, palette::GREY);
-                frame.line(pivot, points[0], palette::GREY);
-                frame.line(pivot, points[STEPS / 2], palette::GREY);
+                frame.wide_polyline(&points, palette::GREY, 1.5);
+                frame.wide_line(pivot, points[0], palette::GREY, 1.5);
+                frame.wide_line(pivot, points[STEPS / 2], palette::GREY, 1.5);
             }
         }
     }
@@ -830,11 +953,26 @@ impl AimFigure {
         );
         frame.axes(head, 0.2);
         frame.arrow(HEAD, HEAD + s.forward * 0.8, palette::BLUE, 0.08);
-        frame.label(HEAD + s.forward * 0.85, "forward", palette::BLUE);
-        frame.point(target, 0.05, palette::RED);
-        frame.label(target + Vec3::new(0.05, 0.05, 0.0), "target", palette::RED);
+        frame.label_with_priority(HEAD + s.forward * 0.85, "forward", palette::BLUE, 2);
+        frame.marker(target, TARGET_PX, palette::RED);
+        frame.label_with_priority(target + Vec3::new(0.05, 0.05, 0.0), "target", palette::RED, 2);
+        let to_target = (target - HEAD).normalize_or(Vec3::Z);
         if !s.result.reached {
-            dashed(frame, HEAD, target, palette::RED);
+            // What the head misses: a dashed line to the target, and the angle between where
+            // it looks and where the target is, drawn as an arc with its size.
+            frame.stroke(&[HEAD, target], palette::RED, StrokeStyle::dashed(GAP_PX, 0.06, 0.04));
+            let missed = s.forward.angle_between(to_target);
+            let axis = s.forward.cross(to_target).try_normalize().unwrap_or_else(|| s.forward.any_orthonormal_vector());
+            let arc: Vec<Vec3> = (0..=24)
+                .map(|k| HEAD + Quat::from_axis_angle(axis, missed * k as f32 / 24.0) * s.forward * 0.45)
+                .collect();
+            frame.stroke(&arc, palette::RED, StrokeStyle::solid(GAP_PX));
+            frame.label_with_priority(
+                HEAD + Quat::from_axis_angle(axis, 0.5 * missed) * s.forward * 0.52,
+                format!("misses {:.0}°", missed / DEG),
+                palette::RED,
+                1,
+            );
         }
         // The cone of allowed directions, around the rest forward (+z).
         const STEPS: usize = 24;
@@ -844,14 +982,23 @@ impl AimFigure {
                 HEAD + Quat::from_rotation_z(std::f32::consts::TAU * k as f32 / STEPS as f32) * rim
             })
             .collect();
-        frame.polyline(&circle, palette::PURPLE);
+        frame.wide_polyline(&circle, palette::PURPLE, 1.5);
         for k in (0..STEPS).step_by(3) {
             frame.line(HEAD, circle[k], palette::PURPLE);
         }
-        frame.label(
-            circle[STEPS / 2] + Vec3::new(0.0, 0.05, 0.0),
+        // The cone's name above its rim, clear of the forward arrow's label.
+        let top = circle.iter().copied().fold(circle[0], |a, b| if b.y > a.y { b } else { a });
+        frame.label_with_priority(
+            top + Vec3::new(0.0, 0.12, 0.0),
             format!("{:.0}° cone", self.max_angle_rad / DEG),
             palette::PURPLE,
+            0,
+        );
+        // The body, the head's reach and the target's whole loop stay in view.
+        frame.keep_box_in_view(Vec3::new(-0.6, 0.7, -0.6), Vec3::new(0.6, 2.3, 0.6));
+        frame.keep_box_in_view(
+            self.target - Vec3::new(0.3, 0.2, 0.3),
+            self.target + Vec3::new(0.3, 0.2, 0.3),
         );
         let deg = |r: f32| format!("{:.0}", r / DEG);
         Ok(if s.result.reached {
