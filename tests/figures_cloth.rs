@@ -6,7 +6,7 @@ use glam::Vec3;
 use inbetween::camera::OrbitCamera;
 use inbetween::draw::{Frame, MeshId};
 use inbetween::exercises::run::{direct, Failure};
-use inbetween::figures::cloth::{ClothFigure, Preset, SpringFigure};
+use inbetween::figures::cloth::{ClothFigure, Preset, SpringFigure, SUBSTEP_PLOT_K};
 
 fn draw(f: &mut ClothFigure, t: f32) -> (String, Frame) {
     let mut frame = Frame::default();
@@ -704,4 +704,52 @@ fn without_wind_the_flags_stay_out_until_the_shear_springs_go() {
         let y = far_edge_y(&f, k);
         assert!(y < 0.5, "flag {k} hangs: free edge at {y} m");
     }
+}
+
+#[test]
+fn the_substeps_plot_measures_what_the_flag_needs_and_grows_with_the_root_of_k() {
+    let f = ClothFigure::new(Preset::Flag);
+    let rows: Vec<[f32; 4]> = f
+        .substeps_plot()
+        .unwrap()
+        .chunks(4)
+        .map(|r| [r[0], r[1], r[2], r[3]])
+        .collect();
+    assert_eq!(rows.len(), SUBSTEP_PLOT_K.len());
+    for [k, measured, fit, conservative] in &rows {
+        // The page's numbers: 9 substeps at 500 N/m, 18 at 2,000 (the Try this above the plot).
+        if *k == 500.0 {
+            assert_eq!(*measured, 9.0);
+        }
+        if *k == 2000.0 {
+            assert_eq!(*measured, 18.0);
+        }
+        // The measured count is the fewest that hold: one fewer explodes, and so does every
+        // count below it that the search skipped (the binary search's assumption).
+        let n = *measured;
+        assert!(n.is_finite(), "{k} N/m needs more than 40");
+        for below in [n - 1.0, (n / 2.0).floor()] {
+            if below >= 1.0 {
+                assert!(
+                    flag(*k, below, 6.0).exploded(0).is_some(),
+                    "{k} N/m, {below}"
+                );
+            }
+        }
+        // c·√k stays within 20 % of every measured point: the growth is the square root's.
+        assert!(
+            (fit - n).abs() <= 0.2 * n,
+            "{k} N/m: fit {fit}, measured {n}"
+        );
+        // "The conservative limit asks for about 40 % more" (30 to 50 %).
+        assert!(
+            (1.3..1.5).contains(&(conservative / n)),
+            "{k} N/m: limit {conservative}, measured {n}"
+        );
+    }
+    // The counts the text lists, at the defaults.
+    let measured: Vec<f32> = rows.iter().map(|r| r[1]).collect();
+    assert_eq!(measured, [7.0, 9.0, 13.0, 18.0, 23.0, 27.0]);
+    // The figure itself is untouched by the measurement.
+    assert_eq!(f.substep(), ClothFigure::new(Preset::Flag).substep());
 }

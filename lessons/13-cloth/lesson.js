@@ -95,6 +95,7 @@ if (flagViewer) {
     ...defaults,
     explode: () => { Object.assign(p, { structural: 2000, substeps: 4 }); refresh(); apply(); },
     reset: () => { Object.assign(p, defaults); refresh(); apply(); scene.reset(); timeline.time = 0; timeline.show(); },
+    measure: () => measure(),
   };
   const gui = new GUI({ container: document.querySelector('#fig-flag .panel'), title: 'Flags' });
   const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
@@ -108,6 +109,7 @@ if (flagViewer) {
   gui.add(p, 'wind', 0, 20, 0.5).name('wind (m/s)');
   gui.add(p, 'pins', ['whole edge', 'two corners']).name('pins');
   gui.add(p, 'explode').name('push past the stability limit');
+  gui.add(p, 'measure').name('measure the substeps needed');
   gui.add(p, 'reset').name('reset');
   const energy = new Plot(document.getElementById('flag-energy'), {
     title: 'Total energy (kinetic + gravity + springs)', xLabel: 'time (s)', yLabel: 'energy (J)',
@@ -128,6 +130,38 @@ if (flagViewer) {
   }, (m) => { rejected = m; });
   gui.onChange(apply);
   apply();
+  // The third plot: the fewest substeps that keep the mass-spring flag whole for the 6 s, against
+  // the structural stiffness, at the settings of the last measurement. Rust runs the flag about
+  // 36 times (a second or so), so it measures at load and on the button, not on every change.
+  const substeps = new Plot(document.getElementById('flag-substeps'), {
+    title: 'Substeps the mass-spring flag needs', xLabel: 'structural stiffness k (N/m)', yLabel: 'substeps',
+    series: ['measured (fewest that hold)', 'c·√k fitted', 'conservative limit ⌈Δt/h⌉'],
+    colors: [ORANGE, cssVar('--dark'), cssVar('--grey')], widths: [4, 1.5, 1.5], dashes: [null, [6, 4], [2, 3]],
+    minSpan: 5,
+  });
+  const substepsNote = document.getElementById('flag-substeps-note');
+  // What the plot depends on (the structural stiffness is its x axis).
+  const settings = () => JSON.stringify(['shear', 'bending', 'damping', 'step', 'wind', 'pins'].map((k) => p[k]));
+  let measuredAt = '';
+  const measure = () => {
+    try {
+      const started = performance.now();
+      const rows = columns(scene.substepsPlot(), 4).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
+      substeps.setData(rows);
+      measuredAt = settings();
+      substepsNote.textContent = `Measured at these settings in ${Math.round(performance.now() - started)} ms` +
+        (rows[1].includes(null) ? '; a missing point needs more than 40 substeps.' : '.');
+    } catch (e) {
+      substepsNote.textContent = `Not measured: ${e.message ?? e}`;
+    }
+  };
+  setTimeout(measure, 0);
+  gui.onChange(() => {
+    if (measuredAt && settings() !== measuredAt) {
+      substepsNote.textContent = 'The third plot shows the settings of its last measurement: press ' +
+        '"measure the substeps needed" to measure at these.';
+    }
+  });
   dragParticles('#fig-flag', scene, timeline);
   const note = document.getElementById('flag-note');
   let shown = -1;

@@ -26,6 +26,9 @@ use glam::{Mat4, Quat, Vec2, Vec3, Vec4};
 const FILE: &str = "src/exercises/cloth.rs";
 /// Length of the figures' timelines, seconds (bounds the work of one replay).
 pub const DURATION: f32 = 6.0;
+/// The structural stiffnesses, N/m, at which [`ClothFigure::substeps_plot`] measures the substeps
+/// the mass-spring cloth needs (up to the slider's 5,000).
+pub const SUBSTEP_PLOT_K: [f32; 6] = [250.0, 500.0, 1000.0, 2000.0, 3500.0, 5000.0];
 /// The finest resolution the page offers (particles per side); the core allows
 /// [`crate::cloth::MAX_SIDE`].
 pub const PAGE_MAX_SIDE: usize = 100;
@@ -875,6 +878,89 @@ impl ClothFigure {
     /// A conservative stable substep for the mass-spring cloth, seconds.
     pub fn stable_substep(&self) -> f32 {
         self.sims[0].cloth.stable_substep_estimate(&self.params)
+    }
+
+    /// The fewest substeps per frame (1 to 40, the slider's range) with which this figure's
+    /// mass-spring cloth, given structural stiffness `k` (N/m) and every other setting as it is,
+    /// runs the whole [`DURATION`] without exploding; `None` when 40 are not enough. Each try is a
+    /// fresh run of a copy (the figure itself is untouched, drags and obstacle moves left out); a
+    /// binary search, since a smaller substep does not make this step less stable (the tests
+    /// check every count around the answer).
+    pub fn substeps_needed(&self, k: f32) -> Result<Option<u32>, String> {
+        let k = in_range("structural stiffness", k, 1.0, 5000.0)?;
+        let mut probe = self.clone();
+        probe.set_stiffness("structural", k)?;
+        probe.forget_interaction();
+        let max = 40;
+        if !probe.mass_spring_survives(max)? {
+            return Ok(None);
+        }
+        // `lo` explodes (or is 0), `hi` survives.
+        let (mut lo, mut hi) = (0, max);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if probe.mass_spring_survives(mid)? {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Ok(Some(hi))
+    }
+
+    /// Runs the mass-spring cloth alone with `n` substeps from the start to [`DURATION`]; false
+    /// as soon as it explodes.
+    fn mass_spring_survives(&mut self, n: u32) -> Result<bool, String> {
+        self.params.substeps = n;
+        self.restart();
+        self.sims.retain(|s| s.method == Method::MassSpring);
+        if self.sims.is_empty() {
+            return Err("this figure has no mass-spring cloth".into());
+        }
+        let frames = (DURATION / self.frame_dt + 1e-3).floor() as usize;
+        for _ in 0..frames {
+            self.step_frame()?;
+            if self.sims[0].cloth.exploded().is_some() {
+                return Ok(false);
+            }
+        }
+        Ok(true)
+    }
+
+    /// The plot of the substeps the mass-spring cloth needs against its structural stiffness, at
+    /// the stiffnesses [`SUBSTEP_PLOT_K`] with every other setting as it is: flat rows of
+    /// `[k (N/m), measured fewest substeps (NaN past 40), c·√k fitted to the measured points by
+    /// least squares, ⌈Δt / h_limit⌉ from the conservative limit (NaN past 40)]`.
+    pub fn substeps_plot(&self) -> Result<Vec<f32>, String> {
+        let mut measured = Vec::with_capacity(SUBSTEP_PLOT_K.len());
+        for &k in &SUBSTEP_PLOT_K {
+            measured.push(self.substeps_needed(k)?);
+        }
+        // Least squares for n = c·√k: c = Σ n√k / Σ k over the measured points.
+        let (num, den) = SUBSTEP_PLOT_K
+            .iter()
+            .zip(&measured)
+            .filter_map(|(&k, n)| n.map(|n| (n as f32 * k.sqrt(), k)))
+            .fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
+        let c = if den > 0.0 { num / den } else { f32::NAN };
+        let mut rows = Vec::with_capacity(4 * SUBSTEP_PLOT_K.len());
+        for (&k, n) in SUBSTEP_PLOT_K.iter().zip(&measured) {
+            let mut p = self.params;
+            p.stiffness[0] = k;
+            let limit = self.sims[0].cloth.stable_substep_estimate(&p);
+            let conservative = (self.frame_dt / limit).ceil();
+            rows.extend([
+                k,
+                n.map_or(f32::NAN, |n| n as f32),
+                c * k.sqrt(),
+                if conservative <= 40.0 {
+                    conservative
+                } else {
+                    f32::NAN
+                },
+            ]);
+        }
+        Ok(rows)
     }
 
     /// The substep h, seconds.

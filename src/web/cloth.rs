@@ -104,6 +104,13 @@ impl ClothScene {
     pub fn plot_ranges(&self) -> Vec<f32> {
         self.scene.plot_ranges().to_vec()
     }
+    /// The substeps the mass-spring cloth needs against its structural stiffness, measured at
+    /// this figure's other settings: rows of `[k, fewest substeps, c·√k fit, conservative limit]`
+    /// (NaN where past 40). Costs a few dozen runs of the flag (about a second in a release build).
+    #[wasm_bindgen(js_name = substepsPlot)]
+    pub fn substeps_plot(&self) -> Result<Vec<f32>, JsError> {
+        self.scene.substeps_plot().map_err(js)
+    }
     /// When cloth `k` exploded (seconds since the start), or `undefined` while it holds.
     #[wasm_bindgen(js_name = explodedAt)]
     pub fn exploded_at(&self, k: f64) -> Result<Option<f32>, JsError> {
