@@ -336,8 +336,11 @@ fn free_fall_shows_the_exact_ball_at_the_latest_step() {
             .map(|p| glam::Vec3::from_array(p.center))
             .unwrap()
     };
-    let exact = big(EXACT_COLOR, 0.07);
-    let verlet = big(INTEGRATOR_COLORS[2], 0.06);
+    // The exact ball is the larger one and the integrators' balls are drawn over everything:
+    // where Verlet's sits on it, the exact ball shows as a dark ring around it.
+    assert!(EXACT_BALL_M > 1.5 * STEP_BALL_M);
+    let exact = big(EXACT_COLOR, EXACT_BALL_M);
+    let verlet = big(INTEGRATOR_COLORS[2], -STEP_BALL_M);
     let expected = particles::free_fall(scene.p0, scene.v0, scene.g, 0.9).0;
     assert!((exact - expected).length() < 1e-4, "{exact} {expected}");
     assert!((exact - verlet).length() < 1e-4, "{exact} {verlet}");
@@ -913,4 +916,154 @@ fn a_second_press_at_the_same_moment_says_why_it_did_nothing() {
     assert!(scene
         .draw_gpu(&mut Frame::default())
         .contains("2,000 slots refilled"));
+}
+
+/// Ignores the vertical velocity: right for a ball dropped from rest, wrong for any throw.
+fn forgets_vy(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut out = Vec::new();
+    match name {
+        "time_of_impact" => {
+            let (y, g, f) = (args[0], args[2], args[3]);
+            (2.0 * (y - f) / -g).sqrt().put(&mut out)
+        }
+        // Only y gets the acceleration: right under gravity alone.
+        "semi_implicit_euler_step" => {
+            let v = |k: usize| Vec3::from_slice(&args[k..k + 3]);
+            let (p, vel, a, dt) = (v(0), v(3), v(6), args[9]);
+            let w = vel + Vec3::new(0.0, a.y, 0.0) * dt;
+            (p + w * dt, w).put(&mut out)
+        }
+        _ => return direct(name, args),
+    }
+    Ok(out)
+}
+
+#[test]
+fn the_exercise_notes_check_probe_inputs_beyond_the_figure() {
+    // Dropped from rest, the orange ball cannot tell a formula that forgets vy: the note says it
+    // matches there and names the throws where it differs.
+    let mut bounce = BounceFigure::new();
+    bounce.set_use_exercise(true);
+    bounce.set_runner(forgets_vy);
+    let note = bounce.exercise_note();
+    assert!(
+        note.contains("matches the reference at y0 = 2.200 m, vy = 0.000 m/s (the figure's input)"),
+        "{note}"
+    );
+    assert!(
+        note.contains("a ball thrown up") && note.contains("a ball thrown down"),
+        "{note}"
+    );
+    assert!(
+        !note.contains("a floor at 1 m"),
+        "a drop from rest is right: {note}"
+    );
+    bounce.set_runner(reference);
+    let note = bounce.exercise_note();
+    assert!(note.contains("and at 4 more inputs"), "{note}");
+    bounce.set_runner(panics);
+    assert!(bounce.exercise_note().contains("divide by zero"));
+
+    // Gravity is vertical in the throw: a step that only accelerates y matches there and
+    // differs under the sideways probe.
+    let mut fall = FreeFallFigure::new();
+    fall.set_runner(forgets_vy);
+    let note = fall.exercise_note();
+    assert!(note.contains("(the figure's input)"), "{note}");
+    assert!(note.contains("sideways parts"), "{note}");
+    fall.set_runner(reference);
+    assert!(fall.exercise_note().contains("and at 3 more inputs"));
+    fall.set_runner(wrong);
+    assert!(fall
+        .exercise_note()
+        .starts_with("Your semi_implicit_euler_step differs at the first step"));
+}
+
+#[test]
+fn on_a_spring_explicit_euler_gains_energy_and_semi_implicit_euler_does_not() {
+    let mut scene = SpringFigure::new();
+    let w2 = SPRING_OMEGA * SPRING_OMEGA;
+    let dt = SPRING_DEFAULT_DT;
+    // Explicit Euler multiplies the energy by exactly 1 + ω² Δt² every step.
+    for k in 0..50 {
+        let (x0, v0) = scene.state(0, k);
+        let (x1, v1) = scene.state(0, k + 1);
+        let r = SpringFigure::energy_ratio(x1, v1) / SpringFigure::energy_ratio(x0, v0);
+        assert!((r - (1.0 + w2 * dt * dt)).abs() < 1e-5, "step {k}: {r}");
+    }
+    // The page: "about 7 times its starting energy after 10 s" at Δt = 0.02 s.
+    let s = scene.energy_samples();
+    let last = &s[s.len() - 4..];
+    assert!((last[0] - 10.0).abs() < 1e-3, "{last:?}");
+    assert!((6.8..7.6).contains(&last[1]), "explicit Euler {}", last[1]);
+    // Semi-implicit Euler stays within 7 % of the start at every step (the page: "within a
+    // few per cent"), velocity Verlet within 0.1 %.
+    for row in s.chunks_exact(4) {
+        assert!((row[2] - 1.0).abs() < 0.07, "semi-implicit {row:?}");
+        assert!((row[3] - 1.0).abs() < 1e-3, "Verlet {row:?}");
+    }
+    // The caption's Δt = 0.1 s: explicit Euler passes 4 × its energy (the plot's top) within
+    // 2 s and ends near 12,000 ×; semi-implicit Euler swings by at most a fifth.
+    scene.set_dt(0.1).unwrap();
+    let s = scene.energy_samples();
+    let past_top = s.chunks_exact(4).find(|r| r[1] > 4.0).unwrap()[0];
+    assert!(past_top < 2.0, "{past_top}");
+    assert!(
+        (11_000.0..13_500.0).contains(&s[s.len() - 3]),
+        "{}",
+        s[s.len() - 3]
+    );
+    for row in s.chunks_exact(4) {
+        assert!((row[2] - 1.0).abs() < 0.2, "semi-implicit at 0.1 s {row:?}");
+    }
+    // At the largest step the page allows semi-implicit Euler is still bounded (ω Δt < 2), and
+    // explicit Euler is far gone.
+    scene.set_dt(0.2).unwrap();
+    let s = scene.energy_samples();
+    for row in s.chunks_exact(4) {
+        assert!(row[2] < 1.6, "semi-implicit at 0.2 s {row:?}");
+    }
+    assert!(s[s.len() - 3] > 1e6);
+    // The note gives the ratios and says when explicit Euler's mass is drawn cut.
+    let note = scene.draw(&mut Frame::default(), 10.0).unwrap();
+    assert!(note.contains("Explicit Euler now swings"), "{note}");
+    scene.set_dt(dt).unwrap();
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame, 10.0).unwrap();
+    assert!(
+        note.contains("After 500 steps") && note.contains("explicit Euler ×7.1"),
+        "{note}"
+    );
+    assert!(!frame.keep_in_view.is_empty());
+    assert!(
+        scene.set_dt(0.0).is_err() && scene.set_dt(0.3).is_err() && scene.set_dt(f32::NAN).is_err()
+    );
+    assert!(scene.draw(&mut frame, f32::NAN).is_err());
+}
+
+#[test]
+fn the_fountain_settles_at_rate_times_lifetime() {
+    // At the defaults (200 particles/s, lifetimes uniform around 2.5 s) the fountain's count
+    // climbs for about 2.5 s, then holds near 200 × 2.5 = 500, under its 1,200 slots.
+    let mut scene = EmitterFigure::new();
+    scene.advance_to(5.0).unwrap();
+    let s = scene.count_samples();
+    assert_eq!(s.len(), 5 * 301);
+    let at = |t: f32| &s[5 * (t / SIM_DT).round() as usize..][..5];
+    assert!((at(5.0)[0] - 5.0).abs() < 1e-3);
+    assert!((at(5.0)[3] - 500.0).abs() < 1.0, "{:?}", at(5.0));
+    assert_eq!(at(5.0)[4], FOUNTAIN_SLOTS as f32);
+    for t in [3.5, 4.0, 4.5, 5.0] {
+        let n = at(t)[1];
+        assert!((n - 500.0).abs() < 50.0, "t = {t}: {n}");
+    }
+    assert!(at(1.0)[1] > 150.0 && at(1.0)[1] < 230.0, "{:?}", at(1.0));
+    assert_eq!(at(1.0)[2], 0.0, "no explosion in fountain mode");
+    // A press of "explode now" counts at once; a scrub back starts the samples again.
+    scene.explode();
+    let s = scene.count_samples();
+    assert_eq!(s.len(), 5 * 301);
+    assert_eq!(s[s.len() - 3], 400.0);
+    scene.advance_to(1.0).unwrap();
+    assert_eq!(scene.count_samples().len(), 5 * 61);
 }

@@ -8,43 +8,80 @@ use inbetween::figures::particles::EmitterFigure;
 use inbetween::figures::particles_sprites::*;
 
 #[test]
-fn the_column_is_sorted_back_to_front_or_left_in_storage_order() {
+fn the_left_column_is_sorted_back_to_front_and_the_right_one_left_in_storage_order() {
     let mut s = SmokeFigure::new();
     let eye = Vec3::new(1.0, 2.0, 6.0);
     let mut f = Frame::default();
     let note = s.draw(&mut f, TextureId(7), eye, Vec3::ZERO, 1.3).unwrap();
-    assert!(note.contains("back to front"));
+    assert!(
+        note.contains("Left: drawn back to front")
+            && note.contains("Right: the same puffs in storage")
+    );
     assert_eq!(f.sprite_texture, Some(TextureId(7)));
-    assert_eq!(f.sprites.len(), 30);
+    assert_eq!(f.sprites.len(), 60);
+    let (sorted, unsorted) = f.sprites.split_at(30);
     // Depth along the view direction (towards the origin), which the depth test compares.
-    let dist = |f: &Frame| -> Vec<f32> {
-        f.sprites
-            .iter()
+    let depth = |ps: &[inbetween::texture::SpriteInstance]| -> Vec<f32> {
+        ps.iter()
             .map(|p| (Vec3::from(p.center) - eye).dot(-eye.normalize()))
             .collect()
     };
-    assert!(dist(&f).windows(2).all(|w| w[0] >= w[1]), "deepest first");
-    s.set_sort(false);
-    let mut g = Frame::default();
-    s.draw(&mut g, TextureId(7), eye, Vec3::ZERO, 1.3).unwrap();
     assert!(
-        !dist(&g).windows(2).all(|w| w[0] >= w[1]),
+        depth(sorted).windows(2).all(|w| w[0] >= w[1]),
+        "deepest first"
+    );
+    assert!(
+        !depth(unsorted).windows(2).all(|w| w[0] >= w[1]),
         "storage order is not depth order"
     );
-    // The same puffs either way.
-    let mut a: Vec<[u32; 3]> = f
-        .sprites
-        .iter()
-        .map(|p| p.center.map(f32::to_bits))
-        .collect();
-    let mut b: Vec<[u32; 3]> = g
-        .sprites
-        .iter()
-        .map(|p| p.center.map(f32::to_bits))
-        .collect();
-    a.sort();
-    b.sort();
-    assert_eq!(a, b);
+    // The same puffs in both columns, COLUMN_GAP apart.
+    let key = |ps: &[inbetween::texture::SpriteInstance], offset: Vec3| {
+        // Rounded to 0.1 mm: adding the gap and taking it away again rounds the last bit.
+        let mut k: Vec<[i32; 3]> = ps
+            .iter()
+            .map(|p| {
+                (Vec3::from(p.center) - offset)
+                    .to_array()
+                    .map(|x| (x * 1e4).round() as i32)
+            })
+            .collect();
+        k.sort();
+        k
+    };
+    assert_eq!(key(sorted, Vec3::ZERO), key(unsorted, COLUMN_GAP));
+    let labels: Vec<&str> = f.labels.iter().map(|l| l.text.as_str()).collect();
+    assert!(
+        labels.contains(&"sorted back to front") && labels.contains(&"unsorted (storage order)")
+    );
+}
+
+#[test]
+fn the_two_columns_never_overlap_on_screen_in_the_pages_view() {
+    // Side by side at every moment of the timeline, at the most puffs: a puff of one column
+    // drawn over the other would mix the comparison.
+    let camera = OrbitCamera::from_view([-0.4, 1.1, 0.0, 6.0, 0.25, 0.15]);
+    let view = camera.view();
+    let mut s = SmokeFigure::new();
+    s.set_params(80.0, 4.0).unwrap();
+    for k in 0..40 {
+        let t = k as f32 * 0.2;
+        let mut f = Frame::default();
+        s.draw(&mut f, TextureId(0), camera.eye(), camera.target, t)
+            .unwrap();
+        let (left, right) = f.sprites.split_at(80);
+        let right_edge = left
+            .iter()
+            .map(|p| view.transform_point3(p.center.into()).x + p.half_size)
+            .fold(f32::MIN, f32::max);
+        let left_edge = right
+            .iter()
+            .map(|p| view.transform_point3(p.center.into()).x - p.half_size)
+            .fold(f32::MAX, f32::min);
+        assert!(
+            right_edge < left_edge,
+            "t = {t}: {right_edge} ≥ {left_edge}"
+        );
+    }
 }
 
 #[test]
@@ -98,7 +135,7 @@ fn bad_input_is_refused() {
     let mut f = Frame::default();
     s.draw(&mut f, TextureId(0), Vec3::Z, Vec3::ZERO, 0.5)
         .unwrap();
-    assert_eq!(f.sprites.len(), MAX_PUFFS);
+    assert_eq!(f.sprites.len(), 2 * MAX_PUFFS, "both columns");
 }
 
 #[test]
@@ -165,7 +202,7 @@ fn sorted_puffs_that_overlap_on_screen_are_drawn_deepest_first_in_the_pages_view
         let mut f = Frame::default();
         s.draw(&mut f, TextureId(0), camera.eye(), camera.target, t)
             .unwrap();
-        let sprites = &f.sprites;
+        let sprites = &f.sprites[..80]; // the sorted column
         for (i, a) in sprites.iter().enumerate() {
             for b in &sprites[i + 1..] {
                 let (va, vb) = (

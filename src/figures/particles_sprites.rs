@@ -1,6 +1,7 @@
 //! Lesson 11's sprite figure: a column of smoke drawn as camera-facing textured squares that play
-//! the smoke atlas (`particles::sprites`) over their life, alpha-blended, sorted back to front
-//! or not (to show why sorting matters), with the atlas itself shown beside the column.
+//! the smoke atlas (`particles::sprites`) over their life, alpha-blended, twice side by side: on
+//! the left sorted back to front, on the right the same puffs in storage order (to show why
+//! sorting matters), with the atlas itself shown beside them.
 
 use super::{format_number, in_range, palette, Frame, MeshId};
 use crate::noise::Permutation;
@@ -15,10 +16,14 @@ pub const ATLAS_SIDE: usize = 4 * FRAME_SIDE;
 /// The most puffs the figure shows.
 pub const MAX_PUFFS: usize = 200;
 
-/// Where the smoke rises from.
-const SOURCE: Vec3 = Vec3::new(-0.8, 0.1, -0.6);
-/// Where the atlas is shown (a square of half-side 0.7, standing up, facing +z).
-const ATLAS_AT: Vec3 = Vec3::new(-2.3, 1.0, 0.0);
+/// Where the sorted column rises from.
+const SOURCE: Vec3 = Vec3::new(-1.3, 0.1, -0.6);
+/// How far right of the sorted column the unsorted one rises, metres: the same puffs, far
+/// enough apart that the two columns never overlap on screen.
+pub const COLUMN_GAP: Vec3 = Vec3::new(3.0, 0.0, 0.0);
+/// Where the atlas is shown (a square of half-side [`ATLAS_HALF`], standing up, facing +z).
+const ATLAS_AT: Vec3 = Vec3::new(-3.2, 1.0, 0.0);
+const ATLAS_HALF: f32 = 0.6;
 
 /// The smoke atlas every sprite figure of lesson 11 uses: `ATLAS_SIDE²` RGBA texels.
 pub fn smoke_atlas_image() -> Vec<u8> {
@@ -33,7 +38,6 @@ pub struct SmokeFigure {
     atlas: Vec<u8>,
     puffs: usize,
     lifetime_sec: f32,
-    sort: bool,
     animate_frames: bool,
     show_atlas: bool,
     positions: Vec<Vec3>,
@@ -53,7 +57,6 @@ impl SmokeFigure {
             atlas: smoke_atlas_image(),
             puffs: 30,
             lifetime_sec: 4.0,
-            sort: true,
             animate_frames: true,
             show_atlas: true,
             positions: Vec::with_capacity(MAX_PUFFS),
@@ -76,10 +79,6 @@ impl SmokeFigure {
         self.lifetime_sec = in_range("lifetime", lifetime_sec, 0.5, 10.0)?;
         self.puffs = n as usize;
         Ok(())
-    }
-
-    pub fn set_sort(&mut self, on: bool) {
-        self.sort = on;
     }
 
     /// Plays the atlas over each puff's life, or shows its first frame only.
@@ -127,52 +126,68 @@ impl SmokeFigure {
             self.ages.push(age);
             self.positions.push(self.position(k, age));
         }
-        if self.sort {
-            // Every square faces the camera: sorted by depth along the view, the order the
-            // depth test sees (sorted by distance from the eye, 23 overlapping pairs at 4 s in
-            // the page's view would come out in the wrong order, each a hard-edged notch).
-            let forward = (target - eye).normalize_or_zero();
-            sort_back_to_front(&mut self.order, &self.positions, eye, forward);
-        } else {
-            self.order.clear();
-            self.order.extend((0..self.puffs as u32).map(|i| (0.0, i)));
-        }
+        // Every square faces the camera: sorted by depth along the view, the order the depth
+        // test sees (sorted by distance from the eye, 23 overlapping pairs at 4 s in the page's
+        // view would come out in the wrong order, each a hard-edged notch).
+        let forward = (target - eye).normalize_or_zero();
+        sort_back_to_front(&mut self.order, &self.positions, eye, forward);
         frame.sprite_texture = Some(atlas);
-        for &(_, k) in &self.order {
-            let (p, age) = (self.positions[k as usize], self.ages[k as usize]);
-            let s = age / self.lifetime_sec;
-            let uv = if self.animate_frames {
-                SMOKE_ATLAS.frame_at(s)
-            } else {
-                SMOKE_ATLAS.frame(0)
-            };
-            // Fade in over the first tenth of the life, so puffs do not pop into view.
-            let alpha = (s / 0.1).min(1.0);
-            frame.sprites.push(SpriteInstance {
-                center: p.to_array(),
-                half_size: 0.25 + 0.4 * s,
-                uv: uv.to_array(),
-                color: Vec4::new(0.3, 0.3, 0.33, alpha).to_array(),
-            });
+        // The sorted column, then the same puffs COLUMN_GAP to the right in storage order.
+        let sorted: Vec<u32> = self.order.iter().map(|&(_, k)| k).collect();
+        for (ks, offset) in [
+            (sorted, Vec3::ZERO),
+            ((0..self.puffs as u32).collect(), COLUMN_GAP),
+        ] {
+            for k in ks {
+                let (p, age) = (self.positions[k as usize], self.ages[k as usize]);
+                let s = age / self.lifetime_sec;
+                let uv = if self.animate_frames {
+                    SMOKE_ATLAS.frame_at(s)
+                } else {
+                    SMOKE_ATLAS.frame(0)
+                };
+                // Fade in over the first tenth of the life, so puffs do not pop into view.
+                let alpha = (s / 0.1).min(1.0);
+                frame.sprites.push(SpriteInstance {
+                    center: (p + offset).to_array(),
+                    half_size: 0.25 + 0.4 * s,
+                    uv: uv.to_array(),
+                    color: Vec4::new(0.3, 0.3, 0.33, alpha).to_array(),
+                });
+            }
         }
+        let top = SOURCE + Vec3::new(0.0, 0.55 * self.lifetime_sec + 0.9, 0.0);
+        frame.label(top, "sorted back to front", palette::DARK);
+        frame.label(top + COLUMN_GAP, "unsorted (storage order)", palette::DARK);
         if self.show_atlas {
             // Stand the square up (its z = −1 edge, texel row 0, at the top) facing +z.
             let model = Mat4::from_translation(ATLAS_AT)
                 * Mat4::from_rotation_x(std::f32::consts::FRAC_PI_2)
-                * Mat4::from_scale(Vec3::splat(0.7));
+                * Mat4::from_scale(Vec3::splat(ATLAS_HALF));
             frame.textured_quad(atlas, model, UvRect::FULL);
             // A dark board behind it: the light, half-transparent puffs show against it.
             let board = Mat4::from_translation(ATLAS_AT - Vec3::Z * 0.03)
-                * Mat4::from_scale(Vec3::new(0.74, 0.74, 0.01));
+                * Mat4::from_scale(Vec3::new(ATLAS_HALF + 0.04, ATLAS_HALF + 0.04, 0.01));
             frame.mesh(MeshId::CUBE, board, palette::DARK);
             frame.label(
-                ATLAS_AT + Vec3::new(0.0, 0.85, 0.0),
+                ATLAS_AT + Vec3::new(-ATLAS_HALF, ATLAS_HALF + 0.2, 0.0),
                 "the atlas: 16 frames",
                 palette::DARK,
             );
         }
+        // The atlas, both columns over their whole life (the wind carries a puff 0.35 m/s along
+        // x and 0.3 m/s along z, ±0.6 m of wobble) and their labels stay in view.
+        let reach = self.lifetime_sec;
+        frame.keep_box_in_view(
+            Vec3::new(ATLAS_AT.x - ATLAS_HALF, 0.0, SOURCE.z - 0.7),
+            SOURCE
+                + COLUMN_GAP
+                + Vec3::new(0.35 * reach + 1.3, 0.55 * reach + 0.7, 0.3 * reach + 1.3),
+        );
         Ok(format!(
-            "{} living {} s and playing {} of the atlas's {} frames; drawn {}.",
+            "{} living {} s and playing {} of the atlas's {} frames. Left: drawn back to front \
+             (sorted by depth along the view every frame). Right: the same puffs in storage \
+             order (unsorted): near puffs drawn early hide the ones behind them.",
             if self.puffs == 1 {
                 "1 puff,".to_string()
             } else {
@@ -185,11 +200,6 @@ impl SmokeFigure {
                 "the first"
             },
             SMOKE_ATLAS.frames(),
-            if self.sort {
-                "back to front (sorted by depth along the view every frame)"
-            } else {
-                "in storage order (unsorted): near puffs drawn early hide the ones behind them"
-            }
         ))
     }
 

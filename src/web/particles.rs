@@ -1,7 +1,9 @@
 //! Bindings for lesson 11, "Particles": thin wrappers around [`crate::figures::particles`].
 
 use super::{js, Viewer};
-use crate::figures::particles::{BounceFigure, EmitterFigure, FreeFallFigure, SquashFigure};
+use crate::figures::particles::{
+    BounceFigure, EmitterFigure, FreeFallFigure, SpringFigure, SquashFigure,
+};
 use wasm_bindgen::prelude::*;
 
 /// Fountain and explosion emitters drawn as sprites.
@@ -111,6 +113,16 @@ impl EmitterScene {
     #[wasm_bindgen(js_name = advanceTo)]
     pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, JsError> {
         self.scene.advance_to(time_sec).map_err(js)
+    }
+    /// `[t, fountain's particles, explosions', rate × lifetime, fountain's slots]` per step
+    /// since the run started, flat (see `EmitterFigure::count_samples`); empty on the GPU.
+    #[wasm_bindgen(js_name = countSamples)]
+    pub fn count_samples(&self) -> Vec<f32> {
+        if self.gpu_on {
+            Vec::new()
+        } else {
+            self.scene.count_samples()
+        }
     }
     /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
     /// draws; returns the note.
@@ -242,6 +254,50 @@ impl FreeFallScene {
 }
 
 impl Default for FreeFallScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// A mass on a spring, stepped by three integrators.
+#[wasm_bindgen]
+pub struct OscillatorScene {
+    scene: SpringFigure,
+}
+
+#[wasm_bindgen]
+impl OscillatorScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> OscillatorScene {
+        OscillatorScene {
+            scene: SpringFigure::new(),
+        }
+    }
+    /// Step size, seconds, in [0.005, 0.2].
+    #[wasm_bindgen(js_name = setDt)]
+    pub fn set_dt(&mut self, dt: f32) -> Result<(), JsError> {
+        self.scene.set_dt(dt).map_err(js)
+    }
+    /// The starting camera, as `Viewer.setCamera`'s six arguments.
+    pub fn view(&self) -> Vec<f32> {
+        self.scene.view().to_vec()
+    }
+    /// `[t, E/E₀ explicit Euler, semi-implicit Euler, Verlet, …]` per step.
+    #[wasm_bindgen(js_name = energySamples)]
+    pub fn energy_samples(&self) -> Vec<f32> {
+        self.scene.energy_samples()
+    }
+    pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, time_sec)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for OscillatorScene {
     fn default() -> Self {
         Self::new()
     }

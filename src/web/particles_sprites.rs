@@ -33,12 +33,6 @@ impl SmokeScene {
     pub fn set_params(&mut self, puffs: f32, lifetime_sec: f32) -> Result<(), JsError> {
         self.scene.set_params(puffs, lifetime_sec).map_err(js)
     }
-    #[wasm_bindgen(js_name = setSort)]
-    pub fn set_sort(&mut self, on: JsValue) -> Result<(), JsError> {
-        let on = super::boolean("on", &on)?;
-        self.scene.set_sort(on);
-        Ok(())
-    }
     #[wasm_bindgen(js_name = setAnimateFrames)]
     pub fn set_animate_frames(&mut self, on: JsValue) -> Result<(), JsError> {
         let on = super::boolean("on", &on)?;
