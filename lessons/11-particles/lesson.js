@@ -1,7 +1,7 @@
 // Lesson 11: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/particles/, src/figures/particles.rs).
 import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
-import { EmitterScene, FreeFallScene, BounceScene, SquashScene, SmokeScene } from '../../pkg/inbetween.js';
+import { EmitterScene, FreeFallScene, OscillatorScene, BounceScene, SquashScene, SmokeScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
@@ -52,10 +52,29 @@ if (emitterViewer) {
   gui.onChange(apply);
   apply();
   const note = document.getElementById('emitters-note');
+  // Live particles against time, from Rust: one sample per step since the run started, with
+  // rate × lifetime and the fountain's slots as guides.
+  const countPlot = new Plot(document.getElementById('emitters-plot'), {
+    title: 'Live particles', xLabel: 'time (s)', yLabel: 'particles (count)',
+    series: ['fountain', 'explosions', 'rate × lifetime', 'fountain\'s slots'],
+    colors: [cssVar('--z-axis'), cssVar('--orange'), cssVar('--dark'), cssVar('--grey')],
+    dashes: [null, null, [6, 4], [2, 3]], minSpan: 10, points: false,
+  });
+  let frame = 0;
+  let plotTime = -1;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     showNote(note, [rejected, scene.draw(emitterViewer, t),
       hasCompute ? '' : '(Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.)'].filter(Boolean).join(' '));
+    // Ten times a second, and at once after a jump; the x axis always spans the whole loop.
+    if (frame++ % 6 === 0 || Math.abs(t - plotTime) > 0.2) {
+      const cols = columns(scene.countSamples(), 5);
+      cols[0].push(timeline.duration);
+      for (let k = 1; k < 5; k++) cols[k].push(null);
+      countPlot.setData(cols);
+      plotTime = t;
+    }
+    countPlot.setCursor(t);
     markDrawn('#fig-emitters');
   });
 }
@@ -92,7 +111,38 @@ if (fallViewer) {
   });
 }
 
-// Figure 3: bouncing balls.
+// Figure 3: a spring stepped by the three integrators, and their energy.
+const springViewer = await lesson.figure('#fig-spring');
+if (springViewer) {
+  const scene = new OscillatorScene();
+  springViewer.setCamera(...scene.view());
+  const timeline = new Timeline(document.getElementById('spring-timeline'), { duration: 10 });
+  const p = { dt: 0.02 };
+  const gui = new GUI({ container: document.querySelector('#fig-spring .panel'), title: 'Spring' });
+  gui.add(p, 'dt', 0.005, 0.2, 0.005).name('step size Δt (s)');
+  // Semi-implicit Euler wide under Verlet's narrow line: the two nearly coincide.
+  const plot = new Plot(document.getElementById('spring-plot'), {
+    title: 'Energy over its starting value', xLabel: 'time (s)', yLabel: 'E / E₀ (no unit)',
+    series: ['explicit Euler', 'semi-implicit Euler', 'velocity Verlet'],
+    colors: [cssVar('--x-axis'), cssVar('--z-axis'), cssVar('--y-axis')], widths: [2, 6, 2], yRange: [0, 4],
+  });
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.setDt(p.dt);
+    plot.setData(columns(scene.energySamples(), 4));
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('spring-note');
+  lesson.onFrame((dt) => {
+    const t = timeline.advance(dt);
+    showNote(note, [rejected, scene.draw(springViewer, t)].filter(Boolean).join(' '));
+    plot.setCursor(t);
+    markDrawn('#fig-spring');
+  });
+}
+
+// Figure 4: bouncing balls.
 const bounceViewer = await lesson.figure('#fig-bounce');
 if (bounceViewer) {
   const scene = new BounceScene();
@@ -126,7 +176,7 @@ if (bounceViewer) {
   });
 }
 
-// Figure 4: squash and stretch.
+// Figure 6: squash and stretch.
 const squashViewer = await lesson.figure('#fig-squash');
 if (squashViewer) {
   const scene = new SquashScene();
@@ -159,21 +209,19 @@ if (squashViewer) {
   });
 }
 
-// Sprites: a column of smoke from the atlas, sorted or not.
+// Figure 5: a column of smoke from the atlas, sorted and unsorted side by side.
 const spriteViewer = await lesson.figure('#fig-sprites');
 if (spriteViewer) {
-  spriteViewer.setCamera(-0.4, 1.1, 0, 6.0, 0.25, 0.15);
+  spriteViewer.setCamera(0.2, 1.3, 0, 8.0, 0.25, 0.15);
   const scene = new SmokeScene();
   const timeline = new Timeline(document.getElementById('sprites-timeline'), { duration: 8 });
-  const p = { puffs: 30, sort: true, animate: true };
+  const p = { puffs: 30, animate: true };
   const gui = new GUI({ container: document.querySelector('#fig-sprites .panel'), title: 'Sprites' });
   gui.add(p, 'puffs', 1, 80, 1).name('puffs');
-  gui.add(p, 'sort').name('sort back to front');
   gui.add(p, 'animate').name('play the atlas');
   let rejected = '';
   const apply = guarded(gui, p, () => {
     scene.setParams(p.puffs, 4);
-    scene.setSort(p.sort);
     scene.setAnimateFrames(p.animate);
   }, (m) => { rejected = m; });
   gui.onChange(apply);
