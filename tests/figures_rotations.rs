@@ -129,7 +129,7 @@ fn slerp_feedback_checks_the_answer_and_the_arc() {
     scene.set_runner(reference);
     let note = scene.draw(&mut frame, 0.25).unwrap();
     assert!(
-        note.starts_with("Your slerp matches the reference at t = 0.250."),
+        note.starts_with("Your slerp matches the reference at t = 0.250 and at 5 more inputs"),
         "{note}"
     );
     assert!(note.contains("takes the short arc"), "{note}");
@@ -141,7 +141,10 @@ fn slerp_feedback_checks_the_answer_and_the_arc() {
         "{note}"
     );
     assert!(note.contains("reference ("), "{note}");
-    assert!(note.contains("takes the long arc here"), "{note}");
+    assert!(
+        note.contains("your slerp takes the long arc: negate b"),
+        "{note}"
+    );
     // The figure shows what the student's code does: the slerp plane follows the long arc.
     let shown = Quat::from_mat3(&scene.orientation(Method::Slerp, 0.5, true));
     let (a, b) = (Quat::IDENTITY, scene.end_quat_used());
@@ -151,7 +154,7 @@ fn slerp_feedback_checks_the_answer_and_the_arc() {
     scene.set_long_arc(true);
     let note = scene.draw(&mut frame, 0.25).unwrap();
     assert!(
-        note.contains("differs") && note.contains("long arc here"),
+        note.contains("differs") && note.contains("takes the long arc:"),
         "{note}"
     );
     scene.set_runner(reference);
@@ -348,11 +351,13 @@ fn rodrigues_feedback_compares_and_checks_validity() {
     scene.set_runner(reference);
     let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
     assert!(
-        note.contains("Your rodrigues_matrix matches the reference at θ = 120.000°."),
+        note.contains("Your rodrigues_matrix matches the reference at θ = 120.000° and at 4 more"),
         "{note}"
     );
     assert!(
-        note.contains("Your quat_from_axis_angle matches the reference at θ = 120.000°."),
+        note.contains(
+            "Your quat_from_axis_angle matches the reference at θ = 120.000° and at 4 more"
+        ),
         "{note}"
     );
     scene.set_runner(wrong);
@@ -393,4 +398,201 @@ fn rodrigues_rejects_bad_input() {
         .unwrap_err()
         .contains("v.y"));
     assert!(scene.draw(&mut Frame::default(), -0.1).is_err());
+}
+
+#[test]
+fn a_slerp_without_the_flip_is_caught_at_the_default_keys() {
+    // At the default keys a·b > 0, so a slerp that never negates b agrees with the reference at
+    // every t there: the probes with a·b < 0 must still say it differs, and the arc check must
+    // judge it where a·b < 0.
+    let mut scene = Interpolation::new();
+    assert!(Quat::IDENTITY.dot(scene.end_quat_used()) > 0.0);
+    scene.set_use_exercise(true);
+    scene.set_runner(wrong);
+    let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
+    assert!(
+        note.starts_with("Your slerp matches the reference at t = 0.250 (the figure's input), but"),
+        "{note}"
+    );
+    assert!(
+        note.contains("the figure's keys with −b (a·b = -0.635), t = 0.25")
+            && note.contains("keys 170° and −170° about x (a·b < 0), t = 0.5"),
+        "{note}"
+    );
+    assert!(
+        note.contains(
+            "(the figure's start and −(end key)), your slerp takes the long arc: negate b"
+        ),
+        "{note}"
+    );
+    // A slerp that divides by sin Ω with no fallback fails only at nearly equal keys.
+    fn no_fallback(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+        if name != "slerp" {
+            return direct(name, args);
+        }
+        let (a, mut b, t) = (
+            Quat::from_slice(&args[0..4]),
+            Quat::from_slice(&args[4..8]),
+            args[8],
+        );
+        if a.dot(b) < 0.0 {
+            b = -b;
+        }
+        let omega = a.dot(b).clamp(-1.0, 1.0).acos();
+        let q =
+            a * (((1.0 - t) * omega).sin() / omega.sin()) + b * ((t * omega).sin() / omega.sin());
+        Ok(q.to_array().to_vec())
+    }
+    scene.set_runner(no_fallback);
+    let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
+    assert!(
+        note.contains("but") && note.contains("keys 0.01° apart, t = 0.5"),
+        "{note}"
+    );
+    assert!(
+        !note.contains("about x (a·b < 0)"),
+        "only the near keys differ: {note}"
+    );
+}
+
+#[test]
+fn the_key_circle_holds_both_arcs_and_the_steps_of_nlerp_and_slerp() {
+    use inbetween::figures::rotations::{CIRCLE_CENTRE, CIRCLE_RADIUS};
+    let mut scene = Interpolation::new();
+    let mut frame = Frame::default();
+    let note = scene.draw_circle(&mut frame, 0.3).unwrap();
+    // The default keys: a·b = 0.635, the short arc ends at b, Ω = 50.6°, a turn of 101.2°.
+    assert!(note.starts_with("a·b = 0.635: a·b ≥ 0"), "{note}");
+    assert!(
+        note.contains("from a to b,") && note.contains("2Ω = 101.164°"),
+        "{note}"
+    );
+    let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    for name in [
+        "a",
+        "−a",
+        "b",
+        "−b",
+        "short arc: Ω = 51°, a turn of 101°",
+        "long arc: Ω = 129°, a turn of 259°",
+    ] {
+        assert!(texts.contains(&name), "{name} in {texts:?}");
+    }
+    // Slerp and nlerp stay in the plane of the keys: the drawn points lie on the circle at the
+    // angle of the real quaternions.
+    let (e1, e2) = scene.key_plane();
+    for t in [0.0, 0.3, 0.7, 1.0] {
+        let q = Quat::from_mat3(&scene.orientation(Method::Slerp, t, false));
+        let q = if q.dot(e1) < 0.0 && t == 0.0 { -q } else { q };
+        let in_plane = Vec3::new(q.dot(e1), q.dot(e2), 0.0).length();
+        assert!(
+            (in_plane - 1.0).abs() < 1e-3,
+            "slerp leaves the plane at t = {t}"
+        );
+    }
+    // The equal steps: slerp's ticks are equally spaced on the arc, nlerp's (on the circle) are
+    // closer at the ends than in the middle.
+    let nlerp_dots: Vec<Vec3> = frame
+        .markers
+        .iter()
+        .filter(|m| m.size_px == 7.0)
+        .map(|m| Vec3::from(m.center))
+        .collect();
+    assert_eq!(nlerp_dots.len(), 9);
+    for p in &nlerp_dots {
+        assert!(((*p - CIRCLE_CENTRE).length() - CIRCLE_RADIUS).abs() < 1e-4);
+    }
+    let first = nlerp_dots[0].distance(nlerp_dots[1]);
+    let middle = nlerp_dots[4].distance(nlerp_dots[5]);
+    assert!(
+        middle > 1.05 * first,
+        "nlerp is faster in the middle: {first} vs {middle}"
+    );
+    // With a·b < 0 the short arc ends at −b; with long arc ticked, at the farther one.
+    scene
+        .set_keys_euler_deg(Vec3::new(170.0, 0.0, 0.0), Vec3::new(-170.0, 0.0, 0.0))
+        .unwrap();
+    let note = scene.draw_circle(&mut Frame::default(), 0.5).unwrap();
+    assert!(
+        note.contains("a·b < 0, so −b is the nearer") && note.contains("2Ω = 20.000°"),
+        "{note}"
+    );
+    scene.set_long_arc(true);
+    let note = scene.draw_circle(&mut Frame::default(), 0.5).unwrap();
+    assert!(
+        note.contains("from a to b,") && note.contains("2Ω = 340.000°"),
+        "{note}"
+    );
+    assert!(scene.draw_circle(&mut Frame::default(), f32::NAN).is_err());
+}
+
+#[test]
+fn a_steady_turn_near_the_pole_swings_yaw_and_roll() {
+    let mut g = Gimbal::new();
+    assert_eq!(Gimbal::POLE_MISS_DEG, 5.0);
+    let rows = g.sample_pole_turn(2001).unwrap();
+    // The aeroplane turns 120° per unit of t, steadily; over the 10° of turn around the pole
+    // (t from 0.5 − 5/120 to 0.5 + 5/120) yaw and roll each swing by about 90°.
+    let at = |t: f32| rows[(t * 2000.0).round() as usize];
+    let (before, after) = (at(0.5 - 5.0 / 120.0), at(0.5 + 5.0 / 120.0));
+    for (i, name) in [(1, "yaw"), (3, "roll")] {
+        let swing = (after[i] - before[i]).abs();
+        assert!((85.0..95.0).contains(&swing), "{name} swings {swing}°");
+    }
+    // Up to 11 times faster than the aeroplane turns.
+    let fastest = rows
+        .windows(2)
+        .map(|w| ((w[1][1] - w[0][1]) / (w[1][0] - w[0][0])).abs())
+        .fold(0.0f32, f32::max);
+    assert!(fastest > 11.0 * Gimbal::POLE_TURN_DEG, "{fastest}");
+    // The curves are continuous (unwrapped) away from the pole.
+    assert!(rows.windows(2).all(|w| (w[1][1] - w[0][1]).abs() < 5.0));
+    // Straight through the pole, yaw and roll jump by 180° at once.
+    g.set_pole_miss_deg(0.0).unwrap();
+    let rows = g.sample_pole_turn(2001).unwrap();
+    let jump = rows
+        .windows(2)
+        .map(|w| (w[1][1] - w[0][1]).abs())
+        .fold(0.0f32, f32::max);
+    assert!((jump - 180.0).abs() < 1.0, "{jump}");
+    // The rings follow the turn: the gimbal's rotation is R(t).
+    g.set_pole_miss_deg(5.0).unwrap();
+    let angles = g.fly_at(0.3).unwrap();
+    let (back, _) = g.decomposed_deg();
+    assert!(
+        (back - angles).abs().max_element() < 1e-2,
+        "{back} {angles}"
+    );
+    assert!(g
+        .set_pole_miss_deg(-1.0)
+        .unwrap_err()
+        .contains("distance from the pole"));
+    assert!(g.fly_at(1.5).is_err());
+}
+
+#[test]
+fn rodrigues_probes_catch_a_transposed_matrix_at_a_half_turn() {
+    // At θ = 180° a transposed matrix is right: the figure's input alone cannot tell.
+    let mut scene = Rodrigues::new();
+    scene
+        .set_axis_angle(Vec3::new(0.3, 1.0, 0.2), 180.0)
+        .unwrap();
+    scene.set_use_exercise(true);
+    scene.set_runner(wrong);
+    let note = scene.exercise_note();
+    assert!(
+        note.contains(
+            "Your rodrigues_matrix matches the reference at θ = 180.000° (the figure's input), but"
+        ),
+        "{note}"
+    );
+    assert!(note.contains("θ = 90° about x"), "{note}");
+    scene.set_runner(reference);
+    let note = scene.exercise_note();
+    assert!(
+        note.contains(
+            "Your rodrigues_matrix matches the reference at θ = 180.000° and at 4 more inputs"
+        ),
+        "{note}"
+    );
 }

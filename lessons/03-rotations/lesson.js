@@ -1,12 +1,12 @@
 // Lesson 03: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/figures/rotations.rs).
-import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, cssVar, columns } from '../../www/lesson.js';
 import { InterpolationScene, GimbalScene, RodriguesScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
-const fmt = (v) => Array.from(v, (x) => x.toFixed(3)).join(', ');
-// The palette's colours (www/palette.css) for the plots.
+// Three decimals, and no "-0.000": a component that rounds to zero reads 0.000.
+const fmt = (v) => Array.from(v, (x) => (Math.abs(x) < 5e-4 ? 0 : x).toFixed(3)).join(', ');
 
 /** A 3×3 column-major matrix as a table. */
 function showMatrix3(table, cols) {
@@ -25,7 +25,8 @@ function revert(gui, p, accepted) {
 // Figure 1: matrix lerp, Euler lerp, nlerp, slerp side by side.
 const interpViewer = await lesson.figure('#fig-interp');
 if (interpViewer) {
-  interpViewer.setCamera(0, 1.1, 0, 6.2, 0.0, 0.25);
+  // Raised and turned: the noses' paths and the turns about the vertical read in depth.
+  interpViewer.setCamera(0, 1.1, 0, 7.5, 0.45, 0.5);
   const scene = new InterpolationScene();
   const timeline = new Timeline(document.getElementById('interp-timeline'), { duration: 4 });
   const p = { ex: 120, ey: 70, ez: -120, sx: 0, sy: 0, sz: 0, longArc: false, useExercise: false };
@@ -38,7 +39,6 @@ if (interpViewer) {
   start.add(p, 'sx', -180, 180, 1).name('start angle x');
   start.add(p, 'sy', -90, 90, 1).name('start angle y');
   start.add(p, 'sz', -180, 180, 1).name('start angle z');
-  gui.add(p, 'longArc').name('long arc (use −q)');
   gui.add(p, 'useExercise').name('use my exercise');
   const det = new Plot(document.getElementById('interp-det'), {
     title: 'Matrix lerp: is it still a rotation?', xLabel: 't (0 to 1)', yLabel: 'det M, ‖MᵀM − I‖ (no unit)',
@@ -47,6 +47,9 @@ if (interpViewer) {
   const speed = new Plot(document.getElementById('interp-speed'), {
     title: 'Angular speed', xLabel: 't (0 to 1)', yLabel: 'angular speed (° per unit of t)',
     series: ['Euler lerp', 'nlerp', 'slerp'], colors: ['#e68a00', '#2ca02c', '#1f6fd6'], minSpan: 10,
+    // Wide under narrow: equal curves (nlerp and slerp at the ends, Euler lerp and slerp about
+    // one axis) stay visible.
+    widths: [7, 4, 1.5],
   });
   const apply = () => {
     scene.setKeysEulerDeg(p.sx, p.sy, p.sz, p.ex, p.ey, p.ez);
@@ -62,12 +65,35 @@ if (interpViewer) {
     speed.setData(sc);
     const [short, long] = Array.from(scene.arcAnglesDeg());
     document.getElementById('interp-quat').textContent =
-      `End key as used by nlerp and slerp: q₁ = (${fmt(scene.endQuatUsed())}) (x, y, z, w). ` +
+      `End key as used by nlerp and slerp: b = (${fmt(scene.endQuatUsed())}) (x, y, z, w). ` +
       `Short arc ${short.toFixed(1)}°, long arc ${long.toFixed(1)}° the other way round.`;
   };
   gui.onChange(apply);
-  apply();
   const note = document.getElementById('interp-note');
+
+  // Figure 2: the keys' circle of unit quaternions. It draws Figure 1's scene (same keys, same t),
+  // and its controls set Figure 1's keys and the arc.
+  const circleViewer = await lesson.figure('#fig-circle');
+  const circleNote = document.getElementById('circle-note');
+  if (circleViewer) {
+    circleViewer.setCamera(0, 1.3, 0, 5, 0, 0);
+    const setKeys = (keys) => {
+      Object.assign(p, keys);
+      gui.controllersRecursive().forEach((c) => c.updateDisplay());
+      apply();
+    };
+    const q = {
+      longArc: false,
+      across: () => setKeys({ sx: 170, sy: 0, sz: 0, ex: -170, ey: 0, ez: 0 }),
+      defaults: () => setKeys({ sx: 0, sy: 0, sz: 0, ex: 120, ey: 70, ez: -120 }),
+    };
+    const cgui = new GUI({ container: document.querySelector('#fig-circle .panel'), title: 'Keys of Figure 1' });
+    cgui.add(q, 'across').name('keys 170° and −170° about x');
+    cgui.add(q, 'defaults').name('default keys');
+    cgui.add(q, 'longArc').name('long arc (use the far one of ±b)');
+    cgui.onChange(() => { p.longArc = q.longArc; apply(); });
+  }
+  apply();
   lesson.onFrame((dt) => {
     timeline.advance(dt);
     const t = pingPong(timeline);
@@ -76,6 +102,11 @@ if (interpViewer) {
     det.setCursor?.(t);
     speed.setCursor?.(t);
     markDrawn('#fig-interp');
+    if (circleViewer) {
+      const said = scene.drawCircle(circleViewer, t);
+      if (circleNote.textContent !== said) circleNote.textContent = said;
+      markDrawn('#fig-circle');
+    }
   });
 }
 
@@ -84,20 +115,47 @@ const gimbalViewer = await lesson.figure('#fig-gimbal');
 if (gimbalViewer) {
   gimbalViewer.setCamera(0, 1.4, 0, 5.2, 0.7, 0.35);
   const scene = new GimbalScene();
-  const p = { yaw: 30, pitch: 0, roll: 20, lock: () => { p.pitch = 90; gui.controllersRecursive().forEach((c) => c.updateDisplay()); apply(); } };
+  const timeline = new Timeline(document.getElementById('gimbal-timeline'), { duration: 6 });
+  const p = {
+    yaw: 30, pitch: 0, roll: 20, fly: false, miss: 5,
+    lock: () => { p.fly = false; p.pitch = 90; refresh(); apply(); },
+  };
   const gui = new GUI({ container: document.querySelector('#fig-gimbal .panel'), title: 'Gimbal (°)' });
-  gui.add(p, 'yaw', -180, 180, 1).name('yaw (outer, y)');
-  gui.add(p, 'pitch', -90, 90, 1).name('pitch (middle, x′)');
-  gui.add(p, 'roll', -180, 180, 1).name('roll (inner, z″)');
+  const angles = [
+    gui.add(p, 'yaw', -180, 180, 1).name('yaw (outer, y)'),
+    gui.add(p, 'pitch', -90, 90, 1).name('pitch (middle, x′)'),
+    gui.add(p, 'roll', -180, 180, 1).name('roll (inner, z″)'),
+  ];
   gui.add(p, 'lock').name('go to gimbal lock');
+  gui.add(p, 'fly').name('fly a steady turn past the pole');
+  gui.add(p, 'miss', 0, 45, 1).name('distance from the pole (°)');
+  const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
+  const plot = new Plot(document.getElementById('gimbal-plot'), {
+    title: 'A steady turn past the pole: the angles the rings need', xLabel: 't (0 to 1)', yLabel: 'angle (°)',
+    series: ['yaw', 'pitch', 'roll'], colors: [cssVar('--y-axis') ?? '#2ca02c', cssVar('--orange') ?? '#e68a00', cssVar('--z-axis') ?? '#1f6fd6'],
+    minSpan: 10,
+  });
   const note = document.getElementById('gimbal-note');
   function apply() {
-    scene.setAnglesDeg(p.yaw, p.pitch, p.roll);
+    scene.setPoleMissDeg(p.miss);
+    // Flying, the sliders show the angles the turn needs and cannot be moved.
+    angles.forEach((c) => c.enable(!p.fly));
+    if (!p.fly) scene.setAnglesDeg(p.yaw, p.pitch, p.roll);
+    plot.setData(columns(scene.samplePoleTurn(241), 4));
     note.textContent = scene.note();
   }
   gui.onChange(apply);
   apply();
-  lesson.onFrame(() => {
+  lesson.onFrame((dt) => {
+    timeline.advance(dt);
+    const t = pingPong(timeline);
+    if (p.fly) {
+      [p.yaw, p.pitch, p.roll] = Array.from(scene.flyAt(t), (x) => Math.round(x * 10) / 10);
+      angles.forEach((c) => c.updateDisplay());
+      const said = scene.note();
+      if (note.textContent !== said) note.textContent = said;
+    }
+    plot.setCursor?.(t);
     scene.draw(gimbalViewer);
     markDrawn('#fig-gimbal');
   });

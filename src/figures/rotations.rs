@@ -1,9 +1,10 @@
-//! Lesson 03, "Rotations": one aeroplane interpolated four ways, a three-ring gimbal, and
-//! Rodrigues' formula. Natively testable; `web::rotations` only wraps these for JavaScript.
+//! Lesson 03, "Rotations": one aeroplane interpolated four ways, the two keys' circle of unit
+//! quaternions, a three-ring gimbal (with a steady turn through its pole), and Rodrigues' formula. Natively testable; `web::rotations` only wraps these for JavaScript.
 
+use super::curves::{probe_note, Probe};
 use super::{
-    compare_note, failure_note, finite, format_number, in_range, palette, rotation_problem,
-    unit_quat_problem, Frame, MeshId, Runner, DEFAULT_RUNNER,
+    failure_note, finite, format_number, in_range, palette, rotation_problem, unit_quat_problem,
+    Frame, MeshId, Runner, DEFAULT_RUNNER,
 };
 use crate::exercises::run;
 use crate::rotation::{
@@ -195,8 +196,8 @@ impl Interpolation {
                 self.path.push(at + m * NOSE);
             }
             frame.wide_polyline(&self.path, color * 0.8, crate::draw::CURVE_PX);
-            frame.point(self.path[0], 0.04, palette::GREY);
-            frame.point(self.path[64], 0.04, palette::KEY);
+            frame.marker(self.path[0], crate::draw::DOT_PX, palette::GREY);
+            frame.marker(self.path[64], crate::draw::DOT_PX, palette::KEY);
             let m = self.orientation(method, t, student);
             draw_plane(frame, at, m, color, 1.0);
             frame.axes(Mat4::from_translation(at) * Mat4::from_mat3(m), 0.6);
@@ -220,31 +221,39 @@ impl Interpolation {
         )
     }
 
-    /// Compares the student's slerp with the reference (short arc) at `t`, checks it returns a
-    /// unit quaternion, and says which arc it took.
+    /// Compares the student's slerp with the reference (short arc) at `t` and at probe inputs
+    /// where a slerp often goes wrong (keys with a·b < 0, the ends, nearly equal keys), checks that
+    /// it returns a unit quaternion, and says which arc it takes when a·b < 0.
     pub fn exercise_note(&self, t: f32) -> String {
         let (a, b) = (self.start_quat, self.end_quat);
         let yours = match run::slerp(self.runner, a, b, t) {
             Ok(q) => q,
             Err(f) => return failure_note("exercise 3.2 slerp", FILE, &f),
         };
-        let reference = rotation::slerp(a, b, t);
-        // q and −q are one rotation: compare with the sign that is closer.
-        let aligned = if yours.dot(reference) < 0.0 {
-            -yours
-        } else {
-            yours
-        };
-        let at = format!("t = {}", format_number(t));
-        let (_, mut note) = compare_note(
-            "slerp",
-            &at,
-            &aligned.to_array(),
-            &reference.to_array(),
-            TOLERANCE,
-        );
+        let mut probes = Vec::new();
+        for (at, (pa, pb, pt)) in std::iter::once((format!("t = {}", format_number(t)), (a, b, t)))
+            .chain(slerp_probes(a, b))
+        {
+            let mine = match run::slerp(self.runner, pa, pb, pt) {
+                Ok(q) => q,
+                Err(f) => return failure_note("exercise 3.2 slerp", FILE, &f),
+            };
+            let reference = rotation::slerp(pa, pb, pt);
+            // q and −q are one rotation: compare with the sign that is closer.
+            let aligned = if mine.dot(reference) < 0.0 {
+                -mine
+            } else {
+                mine
+            };
+            probes.push(Probe {
+                at,
+                yours: aligned.to_array().to_vec(),
+                reference: reference.to_array().to_vec(),
+            });
+        }
+        let (_, mut note) = probe_note("slerp", &probes, TOLERANCE);
         if let Some(problem) = unit_quat_problem(yours, 1e-3) {
-            note += &format!(" Your answer at {at}: {problem}.");
+            note += &format!(" Your answer at t = {}: {problem}.", format_number(t));
         }
         note += " ";
         note += &self.arc_check();
@@ -254,9 +263,16 @@ impl Interpolation {
         note
     }
 
-    /// Whether the student's slerp takes the short arc, judged at the midpoint.
+    /// Whether the student's slerp takes the short arc when a·b < 0, judged at the midpoint of
+    /// the figure's keys, or of the figure's start and −(end key) when the keys have a·b ≥ 0 (a
+    /// slerp without the flip takes the short arc there by chance).
     fn arc_check(&self) -> String {
-        let (a, b) = (self.start_quat, self.end_quat);
+        let a = self.start_quat;
+        let (b, which) = if a.dot(self.end_quat) < 0.0 {
+            (self.end_quat, "the figure's keys")
+        } else {
+            (-self.end_quat, "the figure's start and −(end key)")
+        };
         let Ok(mid) = run::slerp(self.runner, a, b, 0.5) else {
             return String::new();
         };
@@ -264,13 +280,164 @@ impl Interpolation {
         let long = slerp_arc(a, b, 0.5, Arc::Long);
         let (to_short, to_long) = (angle_between(mid, short), angle_between(mid, long));
         let dot = format_number(a.dot(b));
-        if to_short <= 1e-2 {
-            format!("Your slerp takes the short arc (a·b = {dot}).")
+        if a.dot(b) > -1e-4 {
+            // The keys are a quarter turn apart on the sphere: both arcs are as long.
+            String::new()
+        } else if to_short <= 1e-2 {
+            format!("With a·b = {dot} < 0 ({which}), your slerp takes the short arc.")
         } else if to_long <= 1e-2 {
-            format!("Your slerp takes the long arc here (a·b = {dot} < 0): negate b when a·b < 0.")
+            format!(
+                "With a·b = {dot} < 0 ({which}), your slerp takes the long arc: negate b when a·b < 0."
+            )
         } else {
-            "At t = 0.5 your slerp is on neither arc between the keys.".into()
+            format!("With a·b = {dot} < 0 ({which}), at t = 0.5 your slerp is on neither arc.")
         }
+    }
+
+    /// The plane of the two keys in quaternion space, as coordinates `(along a, across)`: slerp
+    /// and nlerp between a and ±b never leave the plane through 0, a and b, so its circle of unit
+    /// quaternions shows both arcs exactly. The second axis is the part of b orthogonal to a
+    /// (any unit quaternion orthogonal to a when b = ±a).
+    pub fn key_plane(&self) -> (Quat, Quat) {
+        let (a, b) = (self.start_quat, self.end_quat);
+        let across = b - a * a.dot(b);
+        let e2 = if across.length() > 1e-4 {
+            across.normalize()
+        } else {
+            Quat::from_xyzw(-a.y, a.x, -a.w, a.z)
+        };
+        (a, e2)
+    }
+
+    /// Figure 2: the circle of unit quaternions in the plane of the two keys, with a, b, −b and
+    /// −a, the short arc (solid) and the long arc (dashed), the chord that lerp follows, equal
+    /// steps of t for slerp (blue, outside the circle) and nlerp (green rays from the chord), and
+    /// both at `t`. Returns the note: which of b and −b the arc in use ends at, and why.
+    pub fn draw_circle(&mut self, frame: &mut Frame, t: f32) -> Result<String, String> {
+        let t = in_range("t", t, 0.0, 1.0)?;
+        let (e1, e2) = self.key_plane();
+        let to_world =
+            |q: Quat| CIRCLE_CENTRE + CIRCLE_RADIUS * Vec3::new(q.dot(e1), q.dot(e2), 0.0);
+        let at_angle = |phi: f32, r: f32| CIRCLE_CENTRE + r * Vec3::new(phi.cos(), phi.sin(), 0.0);
+        frame.keep_box_in_view(
+            CIRCLE_CENTRE - Vec3::new(1.5, 1.45, 0.0) * CIRCLE_RADIUS,
+            CIRCLE_CENTRE + Vec3::new(1.5, 1.45, 0.0) * CIRCLE_RADIUS,
+        );
+        self.path.clear();
+        self.path.extend(
+            (0..=128).map(|k| at_angle(k as f32 / 128.0 * std::f32::consts::TAU, CIRCLE_RADIUS)),
+        );
+        frame.wide_polyline(&self.path, palette::GRID_AXIS, 1.5);
+        let (a, b) = (self.start_quat, self.end_quat);
+        // b sits at angle φ_b in [0, π] (its coordinate across is ≥ 0), −b at φ_b − π.
+        let phi_b = b.dot(e2).atan2(b.dot(e1));
+        let used = self.end_quat_used();
+        let phi_used = if used.dot(b) >= 0.0 {
+            phi_b
+        } else {
+            phi_b - std::f32::consts::PI
+        };
+        let phi_other = if used.dot(b) >= 0.0 {
+            phi_b - std::f32::consts::PI
+        } else {
+            phi_b
+        };
+        let (short_phi, long_phi) = if phi_used.abs() <= phi_other.abs() {
+            (phi_used, phi_other)
+        } else {
+            (phi_other, phi_used)
+        };
+        let arc_points = |end: f32| -> Vec<Vec3> {
+            (0..=64)
+                .map(|k| at_angle(end * k as f32 / 64.0, CIRCLE_RADIUS))
+                .collect()
+        };
+        let slerp_color = palette::Z_AXIS;
+        let nlerp_color = palette::Y_AXIS;
+        frame.wide_polyline(&arc_points(short_phi), slerp_color, 5.0);
+        frame.stroke(
+            &arc_points(long_phi),
+            palette::PURPLE,
+            crate::draw::StrokeStyle::dashed(3.0, 0.12, 0.08),
+        );
+        let (short_deg, long_deg) = (short_phi.abs() / DEG, long_phi.abs() / DEG);
+        frame.label_with_priority(
+            at_angle(short_phi * 0.5, CIRCLE_RADIUS * 1.12),
+            format!(
+                "short arc: Ω = {:.0}°, a turn of {:.0}°",
+                short_deg,
+                2.0 * short_deg
+            ),
+            slerp_color,
+            2,
+        );
+        frame.label_with_priority(
+            at_angle(long_phi * 0.5, CIRCLE_RADIUS * 1.12),
+            format!(
+                "long arc: Ω = {:.0}°, a turn of {:.0}°",
+                long_deg,
+                2.0 * long_deg
+            ),
+            palette::PURPLE,
+            2,
+        );
+        // The four quaternions of the two rotations: a and −a, b and −b.
+        for (q, name, color) in [
+            (a, "a", palette::GREY),
+            (-a, "−a", palette::GREY),
+            (b, "b", palette::KEY),
+            (-b, "−b", palette::KEY),
+        ] {
+            let p = to_world(q);
+            frame.marker(p, 12.0, color);
+            frame.label_with_priority(p + (p - CIRCLE_CENTRE) * 0.08, name, color, 3);
+        }
+        // lerp walks the chord at equal steps of t; nlerp pushes each step out onto the circle
+        // (a ray from the centre); slerp walks the arc at equal angles.
+        let end = at_angle(phi_used, CIRCLE_RADIUS);
+        let start = at_angle(0.0, CIRCLE_RADIUS);
+        frame.wide_line(start, end, palette::DARK, 1.5);
+        const STEPS: usize = 8;
+        let mut slerp_ticks = Vec::with_capacity(STEPS + 1);
+        for k in 0..=STEPS {
+            let s = k as f32 / STEPS as f32;
+            let on_chord = start.lerp(end, s);
+            let out =
+                CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS;
+            frame.wide_line(on_chord, out, nlerp_color, 1.5);
+            frame.marker(out, 7.0, nlerp_color);
+            slerp_ticks.push(at_angle(phi_used * s, CIRCLE_RADIUS * 1.05));
+        }
+        frame.ticks(&slerp_ticks, 12.0, slerp_color);
+        let on_chord = start.lerp(end, t);
+        frame.marker(on_chord, 9.0, palette::DARK);
+        frame.marker(
+            CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS,
+            14.0,
+            nlerp_color,
+        );
+        frame.marker(
+            at_angle(phi_used * t, CIRCLE_RADIUS * 1.05),
+            14.0,
+            slerp_color,
+        );
+        let dot = format_number(a.dot(b));
+        let target = if used.dot(b) >= 0.0 { "b" } else { "−b" };
+        let why = match (self.arc, a.dot(b) < 0.0) {
+            (Arc::Short, false) => {
+                "a·b ≥ 0, so b is the nearer of b and −b: the short arc ends at b"
+            }
+            (Arc::Short, true) => {
+                "a·b < 0, so −b is the nearer of b and −b: the short arc ends at −b"
+            }
+            (Arc::Long, _) => "long arc is ticked, so the arc ends at the farther of b and −b",
+        };
+        Ok(format!(
+            "a·b = {dot}: {why}. nlerp and slerp go from a to {target}, through angle Ω = {}° on the \
+             circle: the aeroplane turns by 2Ω = {}°.",
+            format_number(phi_used.abs() / DEG),
+            format_number(2.0 * phi_used.abs() / DEG)
+        ))
     }
 
     /// Matrix lerp, sampled: `(t, det, ‖MᵀM − I‖)`.
@@ -336,6 +503,34 @@ impl Interpolation {
     }
 }
 
+/// Figure 2's circle of unit quaternions: its centre and radius (metres).
+pub const CIRCLE_CENTRE: Vec3 = Vec3::new(0.0, 1.3, 0.0);
+pub const CIRCLE_RADIUS: f32 = 1.2;
+
+/// Where a student's slerp is checked besides the figure's input: `(what the note calls it,
+/// (a, b, t))`. Keys with a·b < 0 (a slerp without the short-arc flip goes the long way), both
+/// ends, and keys 0.01° apart (sin Ω ≈ 0: a slerp without a fallback divides by zero).
+pub fn slerp_probes(a: Quat, b: Quat) -> Vec<(String, (Quat, Quat, f32))> {
+    let x170 = Quat::from_rotation_x(170.0 * DEG);
+    let near = Quat::from_axis_angle(Vec3::new(0.6, 0.0, 0.8), 0.01 * DEG) * a;
+    vec![
+        (
+            format!(
+                "the figure's keys with −b (a·b = {}), t = 0.25",
+                format_number(-a.dot(b))
+            ),
+            (a, -b, 0.25),
+        ),
+        (
+            "keys 170° and −170° about x (a·b < 0), t = 0.5".into(),
+            (x170, x170.inverse(), 0.5),
+        ),
+        ("t = 0".into(), (a, b, 0.0)),
+        ("t = 1".into(), (a, b, 1.0)),
+        ("keys 0.01° apart, t = 0.5".into(), (a, near, 0.5)),
+    ]
+}
+
 /// Points on a circle of `radius` in the plane spanned by `u` and `v`, as thin boxes.
 fn ring(frame: &mut Frame, m: Mat4, u: Vec3, v: Vec3, radius: f32, color: Vec3) {
     const SEGMENTS: usize = 40;
@@ -360,10 +555,12 @@ fn ring(frame: &mut Frame, m: Mat4, u: Vec3, v: Vec3, radius: f32, color: Vec3) 
 pub const GIMBAL_COLORS: [Vec3; 3] = [palette::Y_AXIS, palette::ORANGE, palette::Z_AXIS];
 pub const LOCK_WARNING: Vec3 = palette::X_AXIS;
 
-/// Figure 2: a three-ring gimbal for intrinsic Y-X′-Z″ angles (yaw, pitch, roll),
+/// Figure 3: a three-ring gimbal for intrinsic Y-X′-Z″ angles (yaw, pitch, roll),
 /// `R = R_y(yaw) R_x(pitch) R_z(roll)`. At pitch ±90° the inner axle lines up with the outer one.
 pub struct Gimbal {
     angles_rad: Vec3,
+    /// How far the steady turn of [`Gimbal::pole_turn`] passes from gimbal lock.
+    pole_miss_rad: f32,
 }
 
 impl Default for Gimbal {
@@ -376,7 +573,57 @@ impl Gimbal {
     pub fn new() -> Self {
         Gimbal {
             angles_rad: Vec3::new(30.0, 0.0, 20.0) * DEG,
+            pole_miss_rad: Self::POLE_MISS_DEG * DEG,
         }
+    }
+
+    /// The default distance (degrees) by which the steady turn passes the pole.
+    pub const POLE_MISS_DEG: f32 = 5.0;
+    /// How far the steady turn turns over t in [0, 1] (degrees): pitch 30° to 150° when it
+    /// passes straight through the pole.
+    pub const POLE_TURN_DEG: f32 = 120.0;
+
+    /// Sets how far (degrees, 0 to 45) the steady turn passes from the pole.
+    pub fn set_pole_miss_deg(&mut self, miss: f32) -> Result<(), String> {
+        self.pole_miss_rad = in_range("distance from the pole", miss, 0.0, 45.0)? * DEG;
+        Ok(())
+    }
+
+    /// A steady turn through the pole: `R(t) = R_z(miss) R_x(30° + 120° t)`, one fixed axis at
+    /// constant angular speed. Its roll axle `R z` comes within `miss` of the yaw axle's
+    /// direction (−y) at t = 0.5.
+    pub fn pole_turn(&self, t: f32) -> Mat3 {
+        Mat3::from_rotation_z(self.pole_miss_rad)
+            * Mat3::from_rotation_x((30.0 + Self::POLE_TURN_DEG * t) * DEG)
+    }
+
+    /// Puts the gimbal on the steady turn at `t ∈ [0, 1]`: the rings take the yaw, pitch and
+    /// roll read back from `R(t)`. Returns them in degrees.
+    pub fn fly_at(&mut self, t: f32) -> Result<Vec3, String> {
+        let t = in_range("t", t, 0.0, 1.0)?;
+        let e = EulerAngles::from_mat3(self.pole_turn(t), EulerOrder::IntrinsicYXZ);
+        self.angles_rad = e.angles_rad;
+        Ok(e.angles_rad / DEG)
+    }
+
+    /// Yaw, pitch and roll (degrees) that the rings need to follow the steady turn, sampled:
+    /// `(t, yaw, pitch, roll)`, each unwrapped (a step of 360° removed) so that the curves are
+    /// continuous wherever the turn misses the pole.
+    pub fn sample_pole_turn(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
+        super::check_samples(samples)?;
+        let mut rows: Vec<[f32; 4]> = Vec::with_capacity(samples);
+        for k in 0..samples {
+            let t = k as f32 / (samples - 1) as f32;
+            let e = EulerAngles::from_mat3(self.pole_turn(t), EulerOrder::IntrinsicYXZ);
+            let mut a = e.angles_rad / DEG;
+            if let Some(last) = rows.last() {
+                for (i, x) in [(0, &mut a.x), (2, &mut a.z)] {
+                    *x += 360.0 * ((last[i + 1] - *x) / 360.0).round();
+                }
+            }
+            rows.push([t, a.x, a.y, a.z]);
+        }
+        Ok(rows)
     }
 
     /// Sets (yaw about y, pitch about x′, roll about z″), in degrees.
@@ -469,11 +716,12 @@ impl Gimbal {
         let [c_outer, c_middle, c_inner] = GIMBAL_COLORS;
         frame.grid(8, 0.5);
         // The stand holds the outer ring's bearings on the world's y axis.
-        frame.line(Vec3::ZERO, center - Vec3::Y * 1.35, palette::GREY);
-        frame.line(
+        frame.wide_line(Vec3::ZERO, center - Vec3::Y * 1.35, palette::GREY, 4.0);
+        frame.wide_line(
             center + Vec3::Y * 1.35,
             center + Vec3::Y * 1.6,
             palette::GREY,
+            4.0,
         );
         let warn = |c: Vec3| if locked { LOCK_WARNING } else { c };
         ring(frame, outer, Vec3::X, Vec3::Y, 1.3, warn(c_outer));
@@ -487,9 +735,9 @@ impl Gimbal {
         ] {
             let a = m.transform_point3(-axis * len);
             let b = m.transform_point3(axis * len);
-            frame.line(a, b, color);
-            frame.point(a, 0.05, color);
-            frame.point(b, 0.05, color);
+            frame.wide_line(a, b, color, 3.0);
+            frame.marker(a, crate::draw::DOT_PX, color);
+            frame.marker(b, crate::draw::DOT_PX, color);
             frame.label(b, name, color);
         }
         draw_plane(
@@ -512,7 +760,7 @@ fn wrap_deg(a: f32) -> f32 {
     }
 }
 
-/// Colours of Figure 3, as the page's words name them.
+/// Colours of Figure 4, as the page's words name them.
 pub mod rodrigues_colors {
     use super::palette;
     use glam::Vec3;
@@ -525,7 +773,10 @@ pub mod rodrigues_colors {
     pub const CIRCLE: Vec3 = palette::GREY;
 }
 
-/// Figure 3: Rodrigues' formula. A vector `v` turns about the unit axis `n` by `θ`:
+/// Where Figure 4 draws the box that the quaternion of the rotation turns.
+pub const QUAT_BOX_AT: Vec3 = Vec3::new(-1.6, 0.2, -0.6);
+
+/// Figure 4: Rodrigues' formula. A vector `v` turns about the unit axis `n` by `θ`:
 /// ```text
 /// v′ = v cos θ + (n × v) sin θ + n (n·v)(1 − cos θ)
 /// ```
@@ -620,7 +871,7 @@ impl Rodrigues {
         let phi = s * self.axis.angle_rad;
         frame.grid(8, 0.5);
         // The axis n, both ways through the origin, and v.
-        frame.line(-n * 2.0, Vec3::ZERO, AXIS);
+        frame.wide_line(-n * 2.0, Vec3::ZERO, AXIS, crate::draw::ARROW_PX);
         frame.arrow(Vec3::ZERO, n * 2.0, AXIS, 0.15);
         // Beside the shaft, below the tip: at the tip the label leaves the top of the canvas.
         frame.label(n * 1.7, "n", AXIS);
@@ -635,7 +886,7 @@ impl Rodrigues {
             }),
         );
         frame.wide_polyline(&self.arc, CIRCLE, crate::draw::CURVE_PX);
-        frame.point(centre, 0.035, AXIS);
+        frame.marker(centre, crate::draw::DOT_PX, AXIS);
         // The three terms of the formula, tip to tail: they end at v′.
         let cos_part = v * phi.cos();
         let sin_part = n.cross(v) * phi.sin();
@@ -661,11 +912,25 @@ impl Rodrigues {
         frame.arrow(Vec3::ZERO, turned, ROTATED, 0.14);
         // Just past the tip: the last term's label sits near the tip when that term is short.
         frame.label(turned * 1.15, "v′ = R v", ROTATED);
-        // A small box turned by the quaternion of the same rotation.
+        // A small box turned by the quaternion of the same rotation, beside the arrows so that
+        // it hides none of them and their labels.
         let q = self.quat_at(phi);
-        let box_model = Mat4::from_quat(q) * Mat4::from_scale(Vec3::new(0.22, 0.12, 0.08));
-        frame.mesh(MeshId::CUBE, box_model, palette::GREY);
-        frame.axes(Mat4::from_quat(q), 0.4);
+        let place = Mat4::from_translation(QUAT_BOX_AT) * Mat4::from_quat(q);
+        frame.mesh(
+            MeshId::CUBE,
+            place * Mat4::from_scale(Vec3::new(0.22, 0.12, 0.08)),
+            palette::GREY,
+        );
+        frame.axes(place, 0.4);
+        frame.label(QUAT_BOX_AT - Vec3::Y * 0.5, "turned by q", palette::GREY);
+        // The axis, the circle (which holds v and v′) and the box stay in view.
+        frame.keep_in_view.extend(self.arc.iter().step_by(8));
+        frame.keep_in_view.extend([
+            n * 2.0,
+            -n * 2.0,
+            QUAT_BOX_AT + Vec3::splat(0.4),
+            QUAT_BOX_AT - Vec3::splat(0.4),
+        ]);
         Ok(if self.use_exercise {
             self.exercise_note()
         } else {
@@ -674,46 +939,77 @@ impl Rodrigues {
     }
 
     /// Compares the student's 3.3 matrix and 3.1 quaternion with the reference at the current
-    /// axis and angle θ, and checks that they are a rotation and a unit quaternion.
+    /// axis and angle θ and at a few probe inputs ([`rodrigues_probes`]), and checks that they are
+    /// a rotation and a unit quaternion.
     pub fn exercise_note(&self) -> String {
         let (n, theta) = (self.axis.axis, self.axis.angle_rad);
         let at = format!("θ = {}°", format_number(theta / DEG));
-        let matrix = match run::rodrigues_matrix(self.runner, n, theta) {
+        let inputs: Vec<(String, Vec3, f32)> = std::iter::once((at.clone(), n, theta))
+            .chain(rodrigues_probes(n))
+            .collect();
+        let matrix = (|| {
+            let mut probes = Vec::new();
+            for (at, axis, angle) in &inputs {
+                let m = run::rodrigues_matrix(self.runner, *axis, *angle)?;
+                probes.push(Probe {
+                    at: at.clone(),
+                    yours: m.to_cols_array().to_vec(),
+                    reference: rotation::rodrigues_mat3(*axis, *angle)
+                        .to_cols_array()
+                        .to_vec(),
+                });
+            }
+            Ok(probes)
+        })();
+        let matrix = match matrix {
             Err(f) => failure_note("exercise 3.3 rodrigues_matrix", FILE, &f),
-            Ok(m) => {
-                let reference = rotation::rodrigues_mat3(n, theta);
-                let (_, mut note) = compare_note(
-                    "rodrigues_matrix",
-                    &at,
-                    &m.to_cols_array(),
-                    &reference.to_cols_array(),
-                    TOLERANCE,
-                );
-                if let Some(problem) = rotation_problem(m, 1e-3) {
-                    note += &format!(" Your matrix: {problem}.");
+            Ok(probes) => {
+                let (_, mut note) = probe_note("rodrigues_matrix", &probes, TOLERANCE);
+                let shown = Mat3::from_cols_slice(&probes[0].yours);
+                if let Some(problem) = rotation_problem(shown, 1e-3) {
+                    note += &format!(" Your matrix at {at}: {problem}.");
                 }
                 note
             }
         };
-        let quat = match run::quat_from_axis_angle(self.runner, n, theta) {
-            Err(f) => failure_note("exercise 3.1 quat_from_axis_angle", FILE, &f),
-            Ok(q) => {
-                let reference = rotation::quat_from_axis_angle(n, theta);
+        let quat = (|| {
+            let mut probes = Vec::new();
+            for (at, axis, angle) in &inputs {
+                let q = run::quat_from_axis_angle(self.runner, *axis, *angle)?;
+                let reference = rotation::quat_from_axis_angle(*axis, *angle);
                 // θ and θ + 2π give q and −q, one rotation: compare with the closer sign.
                 let aligned = if q.dot(reference) < 0.0 { -q } else { q };
-                let (_, mut note) = compare_note(
-                    "quat_from_axis_angle",
-                    &at,
-                    &aligned.to_array(),
-                    &reference.to_array(),
-                    TOLERANCE,
-                );
-                if let Some(problem) = unit_quat_problem(q, 1e-3) {
-                    note += &format!(" Your quaternion: {problem}.");
+                probes.push(Probe {
+                    at: at.clone(),
+                    yours: aligned.to_array().to_vec(),
+                    reference: reference.to_array().to_vec(),
+                });
+            }
+            Ok(probes)
+        })();
+        let quat = match quat {
+            Err(f) => failure_note("exercise 3.1 quat_from_axis_angle", FILE, &f),
+            Ok(probes) => {
+                let (_, mut note) = probe_note("quat_from_axis_angle", &probes, TOLERANCE);
+                let shown = Quat::from_slice(&probes[0].yours);
+                if let Some(problem) = unit_quat_problem(shown, 1e-3) {
+                    note += &format!(" Your quaternion at {at}: {problem}.");
                 }
                 note
             }
         };
         format!("{matrix} {quat}")
     }
+}
+
+/// Where the student's 3.1 and 3.3 are checked besides the figure's axis and angle: no turn, a
+/// half turn, a quarter turn about x (a transposed matrix or a full-angle quaternion shows
+/// there, while a half turn hides a transposition), and −90° about the figure's axis.
+pub fn rodrigues_probes(n: Vec3) -> Vec<(String, Vec3, f32)> {
+    vec![
+        ("θ = 0°".into(), n, 0.0),
+        ("θ = 180°".into(), n, 180.0 * DEG),
+        ("θ = 90° about x".into(), Vec3::X, 90.0 * DEG),
+        ("θ = −90°".into(), n, -90.0 * DEG),
+    ]
 }

@@ -101,6 +101,17 @@ impl InterpolationScene {
         Ok(note)
     }
 
+    /// Draws Figure 2, the keys' circle of unit quaternions, at `t ∈ [0, 1]`; returns its note.
+    #[wasm_bindgen(js_name = drawCircle)]
+    pub fn draw_circle(&mut self, viewer: &mut Viewer, t: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw_circle(&mut viewer.renderer.frame, t)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+
     /// Matrix lerp, sampled: `[t₀, det₀, e₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleDeterminant)]
     pub fn sample_determinant(&self, samples: f64) -> Result<Vec<f32>, JsError> {
@@ -124,7 +135,7 @@ impl Default for InterpolationScene {
     }
 }
 
-/// Figure 2: a three-ring gimbal (yaw, pitch, roll).
+/// Figure 3: a three-ring gimbal (yaw, pitch, roll).
 #[wasm_bindgen]
 pub struct GimbalScene {
     scene: Gimbal,
@@ -159,6 +170,25 @@ impl GimbalScene {
         vec![a.x, a.y, a.z, if lock { 1.0 } else { 0.0 }]
     }
 
+    /// Sets how far (degrees, 0 to 45) the steady turn passes from the pole.
+    #[wasm_bindgen(js_name = setPoleMissDeg)]
+    pub fn set_pole_miss_deg(&mut self, miss: f32) -> Result<(), JsError> {
+        self.scene.set_pole_miss_deg(miss).map_err(js)
+    }
+
+    /// Puts the rings on the steady turn at `t ∈ [0, 1]`; returns `[yaw, pitch, roll]` (°).
+    #[wasm_bindgen(js_name = flyAt)]
+    pub fn fly_at(&mut self, t: f32) -> Result<Vec<f32>, JsError> {
+        Ok(self.scene.fly_at(t).map_err(js)?.to_array().to_vec())
+    }
+
+    /// The steady turn's yaw, pitch and roll (°), unwrapped: `[t₀, yaw₀, pitch₀, roll₀, t₁, …]`.
+    #[wasm_bindgen(js_name = samplePoleTurn)]
+    pub fn sample_pole_turn(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
+        Ok(self.scene.sample_pole_turn(samples).map_err(js)?.concat())
+    }
+
     /// What the page says under the gimbal (the read-back, and at lock which sum is determined).
     pub fn note(&self) -> String {
         self.scene.note()
@@ -176,7 +206,7 @@ impl Default for GimbalScene {
     }
 }
 
-/// Figure 3: Rodrigues' formula.
+/// Figure 4: Rodrigues' formula.
 #[wasm_bindgen]
 pub struct RodriguesScene {
     scene: Rodrigues,
