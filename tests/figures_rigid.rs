@@ -153,9 +153,11 @@ fn dual_quat_feedback_compares_at_the_current_t() {
     scene.set_use_exercise(true);
     scene.set_runner(reference);
     let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
-    assert_eq!(
-        note,
-        "Your dual_quat_apply matches the reference at t = 0.250 (the green frame's nose)."
+    assert!(
+        note.starts_with(
+            "Your dual_quat_apply matches the reference at t = 0.250 (the green frame's nose) and at 5 more inputs"
+        ),
+        "{note}"
     );
     scene.set_runner(wrong);
     let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
@@ -294,4 +296,158 @@ fn polar_keeps_volume_positive_and_naive_lerp_does_not() {
         naive_min < 0.5 * det[0][1].min(det[40][1]),
         "naive lerp shrinks: {naive_min}"
     );
+}
+
+use inbetween::figures::rigid::TIP;
+
+const THREE: [Method; 3] = [Method::LerpSlerp, Method::DualQuatNlerp, Method::Screw];
+
+#[test]
+fn the_blend_turns_about_the_screw_axis_and_only_its_timing_differs() {
+    let scene = RigidMotion::new();
+    let axis = scene.screw_axis();
+    let mut worst_slide: f32 = 0.0;
+    for k in 0..=40 {
+        let t = k as f32 / 40.0;
+        let s = scene.screw_time_of_blend(t);
+        assert!((0.0..=1.0 + 1e-4).contains(&s), "{s}");
+        // At the same turn, blend and screw differ by a slide along the screw axis only.
+        let gap =
+            scene.motion(Method::DualQuatNlerp, t) * scene.motion(Method::Screw, s).conjugate();
+        let (r, slide) = gap.to_rotation_translation();
+        assert!(
+            r.angle_between(Quat::IDENTITY) < 2e-3,
+            "t = {t}: a turn of {}",
+            r.angle_between(Quat::IDENTITY)
+        );
+        let across = slide - axis.direction * slide.dot(axis.direction);
+        assert!(across.length() < 2e-3, "t = {t}: {across} off the axis");
+        worst_slide = worst_slide.max(slide.length());
+    }
+    // The page: "up to 9 cm" further along the axis, of a slide of 1.40 m.
+    assert!((0.085..0.095).contains(&worst_slide), "{worst_slide}");
+    assert!(
+        (axis.displacement - 1.40).abs() < 0.005,
+        "{}",
+        axis.displacement
+    );
+    // The distance travelled by the nose: the screw's grows in a straight line, the blend's
+    // slowly at the ends; they end within 1 % of each other, lerp + slerp's path is shorter.
+    let d = scene.sample_distance(101).unwrap();
+    let end = d[100];
+    assert!((end[2] - end[3]).abs() < 0.01 * end[3], "{end:?}");
+    assert!(end[1] < 0.9 * end[3], "{end:?}");
+    for row in &d {
+        assert!(
+            (row[3] - row[0] * end[3]).abs() < 0.01 * end[3],
+            "screw at constant speed: {row:?}"
+        );
+    }
+    assert!(
+        d[10][2] < 0.75 * d[10][3],
+        "the blend starts slowly: {:?}",
+        d[10]
+    );
+}
+
+#[test]
+fn at_half_a_turn_the_blend_is_2_6_times_as_fast_in_the_middle() {
+    let mut scene = RigidMotion::new();
+    scene
+        .set_end(Vec3::new(0.2, 1.0, 0.3), 180.0, Vec3::new(1.5, 1.4, 0.3))
+        .unwrap();
+    let speed = scene.sample_speed(101).unwrap();
+    let ratio = speed[50][2] / speed[0][2];
+    assert!((2.5..2.7).contains(&ratio), "{ratio}");
+    let screw: Vec<f32> = speed.iter().map(|r| r[3]).collect();
+    let (lo, hi) = screw
+        .iter()
+        .fold((f32::MAX, 0.0f32), |(l, h), &x| (l.min(x), h.max(x)));
+    assert!(hi - lo < 0.01 * hi, "the screw stays flat: {lo}..{hi}");
+}
+
+#[test]
+fn only_lerp_slerp_depends_on_the_pivot() {
+    let mut scene = RigidMotion::new();
+    let before: Vec<Vec3> = THREE
+        .iter()
+        .map(|m| scene.point(*m, 0.5, TIP, false))
+        .collect();
+    scene.set_pivot(Vec3::new(1.5, 0.0, 0.0)).unwrap();
+    let after: Vec<Vec3> = THREE
+        .iter()
+        .map(|m| scene.point(*m, 0.5, TIP, false))
+        .collect();
+    assert!(before[0].distance(after[0]) > 0.5, "lerp + slerp moves");
+    assert!(before[1].distance(after[1]) < 1e-4, "the blend does not");
+    assert!(before[2].distance(after[2]) < 1e-4, "the screw does not");
+    // The keys themselves stay where they are.
+    for m in THREE {
+        for t in [0.0, 1.0] {
+            let moved = scene.motion(m, t).transform_point(TIP);
+            let key = if t == 0.0 {
+                RigidMotion::new().motion(m, 0.0)
+            } else {
+                RigidMotion::new().motion(m, 1.0)
+            };
+            assert!(moved.distance(key.transform_point(TIP)) < 1e-4);
+        }
+    }
+    assert!(scene
+        .set_pivot(Vec3::new(0.0, f32::NAN, 0.0))
+        .unwrap_err()
+        .contains("pivot y"));
+    assert!(scene
+        .set_pivot(Vec3::new(9.0, 0.0, 0.0))
+        .unwrap_err()
+        .contains("pivot x"));
+}
+
+#[test]
+fn with_no_turn_the_screw_axis_runs_through_the_keys() {
+    let mut scene = RigidMotion::new();
+    // With a turn, the drawn axis passes closest to the middle of the keys' origins.
+    let axis = scene.screw_axis();
+    let middle = Vec3::new(0.0, 1.0, 0.15);
+    let to_middle = middle - axis.point;
+    assert!(to_middle.dot(axis.direction).abs() < 1e-4);
+    scene
+        .set_end(Vec3::Y, 0.0, Vec3::new(1.5, 1.4, 0.3))
+        .unwrap();
+    let axis = scene.screw_axis();
+    assert!(axis.point.distance(middle) < 1e-5, "{:?}", axis.point);
+    let slide = Vec3::new(3.0, 0.8, 0.3);
+    assert!(axis.direction.distance(slide.normalize()) < 1e-5);
+    assert!((axis.displacement - slide.length()).abs() < 1e-4);
+    // The three methods make one straight line at one speed (the page's Try this).
+    let speed = scene.sample_speed(51).unwrap();
+    for row in &speed {
+        for m in 1..4 {
+            assert!((row[m] - slide.length()).abs() < 2e-3, "{row:?}");
+        }
+    }
+}
+
+#[test]
+fn probes_catch_what_the_figure_input_hides() {
+    // A polar step with the inverse instead of the inverse transpose matches on a diagonal
+    // key but not on a rotation.
+    let mut scene = AffineKeys::new();
+    scene.set_key_b(0.0, Vec3::new(2.0, 0.5, 1.0), 0.0).unwrap();
+    scene.set_runner(wrong);
+    scene.set_use_exercise(true);
+    let note = scene.note().to_string();
+    assert!(note.contains("(the figure's input), but"), "{note}");
+    assert!(note.contains("a 40° turn about y"), "{note}");
+    scene.set_runner(reference);
+    let note = scene.note().to_string();
+    assert!(note.contains("and at 4 more inputs"), "{note}");
+    // dual_quat_apply that forgets the rotation differs on the quarter turn.
+    let mut rigid = RigidMotion::new();
+    rigid.set_use_exercise(true);
+    rigid.set_runner(wrong);
+    let note = rigid.exercise_note(0.0);
+    assert!(note.contains("a quarter turn about z, no slide"), "{note}");
+    rigid.set_runner(reference);
+    assert!(rigid.exercise_note(0.3).contains("and at 5 more inputs"));
 }

@@ -14,12 +14,12 @@ function revert(gui, p, accepted) {
 // Figure 1: lerp + slerp, dual quaternion blending, screw motion.
 const rigidViewer = await lesson.figure('#fig-rigid');
 if (rigidViewer) {
-  rigidViewer.setCamera(0, 1.0, 0, 6.5, 0.35, 0.35);
+  rigidViewer.setCamera(0, 1.0, 0, 6.5, 0.35, 0.4);
   const scene = new RigidScene();
   const timeline = new Timeline(document.getElementById('rigid-timeline'), { duration: 4 });
   const SHOW = { 'all three': 0, 'lerp + slerp': 1, 'dual quaternion blend': 2, screw: 3 };
   const p = {
-    angle: 150, ax: 0.2, ay: 1, az: 0.3, tx: 1.5, ty: 1.4, tz: 0.3, show: 0, thirds: false, useExercise: false,
+    angle: 150, ax: 0.2, ay: 1, az: 0.3, tx: 1.5, ty: 1.4, tz: 0.3, pivot: 0, show: 0, thirds: false, useExercise: false,
   };
   let accepted = { ...p };
   const gui = new GUI({ container: document.querySelector('#fig-rigid .panel'), title: 'Key B' });
@@ -35,16 +35,24 @@ if (rigidViewer) {
   move.add(p, 'tx', -3, 3, 0.01);
   move.add(p, 'ty', 0, 3, 0.01);
   move.add(p, 'tz', -3, 3, 0.01);
+  gui.add(p, 'pivot', -1.5, 1.5, 0.05).name('pivot x (m, along the body)');
   gui.add(p, 'useExercise').name('use my exercise');
+  // Wide under narrow: at angle 0 the three curves are one, and all three stay visible.
+  const curves = {
+    series: ['lerp + slerp', 'dual quaternion blend', 'screw'], colors: ['#e68a00', '#2ca02c', '#1f6fd6'], widths: [7, 1.5, 4],
+  };
+  const distance = new Plot(document.getElementById('rigid-distance'), {
+    title: 'Distance travelled by the nose', xLabel: 't (0 to 1)', yLabel: 'distance (m)', minSpan: 0.5, ...curves,
+  });
   const plot = new Plot(document.getElementById('rigid-plot'), {
-    title: 'Speed of the nose', xLabel: 't (0 to 1)', yLabel: 'speed (m per unit of t)',
-    series: ['lerp + slerp', 'dual quaternion blend', 'screw'], colors: ['#e68a00', '#2ca02c', '#1f6fd6'], minSpan: 0.5,
+    title: 'Speed of the nose', xLabel: 't (0 to 1)', yLabel: 'speed (m per unit of t)', minSpan: 0.5, ...curves,
   });
   const note = document.getElementById('rigid-note');
   let rejected = '';
   function apply() {
     try {
       scene.setEnd(p.ax, p.ay, p.az, p.angle, p.tx, p.ty, p.tz);
+      scene.setPivot(p.pivot, 0, 0);
       accepted = { ...p };
       rejected = '';
     } catch (e) {
@@ -56,10 +64,13 @@ if (rigidViewer) {
     scene.setThirds(p.thirds);
     scene.setUseExercise(p.useExercise);
     plot.setData(columns(scene.sampleSpeed(101), 4));
+    distance.setData(columns(scene.sampleDistance(101), 4));
     const s = Array.from(scene.screwAxis());
-    document.getElementById('rigid-screw').textContent =
-      `Screw A → B: turn ${s[6].toFixed(1)}° about the line through (${s.slice(3, 6).map((x) => x.toFixed(2)).join(', ')}) ` +
-      `along (${s.slice(0, 3).map((x) => x.toFixed(2)).join(', ')}), sliding ${s[7].toFixed(2)} m along it.`;
+    const f = (v) => v.map((x) => (Math.abs(x) < 5e-3 ? 0 : x).toFixed(2)).join(', ');
+    document.getElementById('rigid-screw').textContent = s[6] < 0.05
+      ? `Screw A → B: no turn, a pure slide of ${s[7].toFixed(2)} m along (${f(s.slice(0, 3))}); the axis is drawn through the middle of the keys.`
+      : `Screw A → B: turn ${s[6].toFixed(1)}° about the line through (${f(s.slice(3, 6))}) ` +
+        `along (${f(s.slice(0, 3))}), sliding ${s[7].toFixed(2)} m along it.`;
   }
   gui.onChange(apply);
   apply();
@@ -69,6 +80,7 @@ if (rigidViewer) {
     const message = [rejected, scene.draw(rigidViewer, t)].filter(Boolean).join(' ');
     if (note.textContent !== message) note.textContent = message;
     plot.setCursor?.(t);
+    distance.setCursor?.(t);
     markDrawn('#fig-rigid');
   });
 }
@@ -76,7 +88,7 @@ if (rigidViewer) {
 // Figure 2: affine keys, naive vs polar.
 const affineViewer = await lesson.figure('#fig-affine');
 if (affineViewer) {
-  affineViewer.setCamera(0, 0.9, 0, 6.5, 0.0, 0.3);
+  affineViewer.setCamera(0, 0.7, 0, 6.5, 0.0, 0.3);
   const scene = new AffineScene();
   const timeline = new Timeline(document.getElementById('affine-timeline'), { duration: 4 });
   const p = { angle: 160, sx: 1.6, sy: 0.6, sz: 1, shear: 0.6, useExercise: false };
@@ -91,6 +103,8 @@ if (affineViewer) {
   const plot = new Plot(document.getElementById('affine-plot'), {
     title: 'Volume factor det M(t)', xLabel: 't (0 to 1)', yLabel: 'det M (volume ratio)',
     series: ['naive lerp', 'polar decomposition'], colors: ['#d62728', '#1f6fd6'], minSpan: 0.1,
+    // Wide under narrow: with no rotation the two curves are one.
+    widths: [6, 2],
   });
   const note = document.getElementById('affine-note');
   let rejected = '';

@@ -2,10 +2,11 @@
 //! times" check of the screw motion), and an affine key pair (scale and shear) interpolated
 //! naively vs through polar decomposition. Natively testable; `web::rigid` wraps these.
 
+use super::curves::{probe_note, Probe};
 use super::rotations::draw_plane;
 use super::{
-    compare_note, failure_note, format_number, in_range, palette, rotation_problem,
-    unit_quat_problem, Frame, MeshId, Runner, DEFAULT_RUNNER,
+    failure_note, format_number, in_range, palette, rotation_problem, unit_quat_problem, Frame,
+    MeshId, Runner, DEFAULT_RUNNER,
 };
 use crate::exercises::run;
 use crate::rigid::{DualQuat, ScrewInterpolator};
@@ -17,6 +18,8 @@ const FILE: &str = "src/exercises/rotations.rs";
 const TOLERANCE: f32 = 1e-4;
 /// The nose of the aeroplane, in its own frame.
 pub const TIP: Vec3 = Vec3::new(0.55, 0.0, 0.0);
+/// Equal steps of t marked on each nose path.
+const TICKS: usize = 12;
 
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 pub enum Method {
@@ -57,8 +60,13 @@ fn check_vec(name: &str, v: Vec3, limit: f32) -> Result<Vec3, String> {
 /// screw axis of the motion from A to B. One method can be shown alone (`show`), and the screw
 /// motion's "a third, three times" can be drawn (`thirds`).
 pub struct RigidMotion {
+    /// Key A and key B: the aeroplane's poses (its own origin at the middle of its body).
     start: DualQuat,
     end: DualQuat,
+    /// The point of the aeroplane (its own coordinates) whose frame is interpolated: the keys
+    /// become `A T(pivot)` and `B T(pivot)`, and the result is moved back by `T(−pivot)`.
+    pivot: Vec3,
+    /// The screw interpolation of the pivot's keys.
     screw: ScrewInterpolator,
     /// `None`: all three; `Some(m)`: only `m`.
     solo: Option<Method>,
@@ -84,6 +92,7 @@ impl RigidMotion {
         RigidMotion {
             start,
             end,
+            pivot: Vec3::ZERO,
             screw: ScrewInterpolator::new(start, end),
             solo: None,
             thirds: false,
@@ -95,7 +104,30 @@ impl RigidMotion {
 
     fn set_end_dq(&mut self, end: DualQuat) {
         self.end = end;
-        self.screw = ScrewInterpolator::new(self.start, self.end);
+        self.refresh_screw();
+    }
+
+    fn refresh_screw(&mut self) {
+        let (a, b) = self.pivot_keys();
+        self.screw = ScrewInterpolator::new(a, b);
+    }
+
+    /// The keys of the pivot's frame: `A T(pivot)` and `B T(pivot)`.
+    fn pivot_keys(&self) -> (DualQuat, DualQuat) {
+        let shift = DualQuat::from_translation(self.pivot);
+        (self.start * shift, self.end * shift)
+    }
+
+    /// The farthest the pivot may sit from the aeroplane's middle, in metres on each axis.
+    pub const MAX_PIVOT_M: f32 = 3.0;
+
+    /// Sets the point of the aeroplane (in its own coordinates, metres) whose frame is
+    /// interpolated. lerp + slerp moves that point on a straight line, so its in-betweens
+    /// depend on it; the two dual quaternion methods do not.
+    pub fn set_pivot(&mut self, pivot: Vec3) -> Result<(), String> {
+        self.pivot = check_vec("pivot", pivot, Self::MAX_PIVOT_M)?;
+        self.refresh_screw();
+        Ok(())
     }
 
     /// Key B: rotation by `angle_deg` about `axis` (any non-zero direction), then `translation`.
@@ -154,9 +186,24 @@ impl RigidMotion {
         self.runner = runner;
     }
 
-    /// The screw axis of the motion from A to B.
+    /// The screw axis of the motion from A to B, with its point moved to where the axis passes
+    /// closest to the middle of the keys' origins (the core gives the point closest to the world
+    /// origin, which may lie far from both keys). With no turn the motion is a pure slide, and
+    /// every line along it is an axis: the one through that middle point.
     pub fn screw_axis(&self) -> crate::rigid::ScrewAxis {
-        (self.end * self.start.conjugate()).screw_axis()
+        let mut axis = (self.end * self.start.conjugate()).screw_axis();
+        let middle = (self.start.translation() + self.end.translation()) * 0.5;
+        if axis.angle_rad < 1e-4 {
+            let slide = self.end.translation() - self.start.translation();
+            if let Some(direction) = slide.try_normalize() {
+                axis.direction = direction;
+                axis.displacement = slide.length();
+            }
+            axis.point = middle;
+        } else {
+            axis.point += axis.direction * axis.direction.dot(middle - axis.point);
+        }
+        axis
     }
 
     fn shown(&self, method: Method) -> bool {
@@ -173,8 +220,9 @@ impl RigidMotion {
             axis.point - axis.direction * 3.0,
             axis.point + axis.direction * 3.0,
         );
-        frame.line(a, b, SCREW_AXIS);
+        frame.wide_line(a, b, SCREW_AXIS, 3.0);
         frame.label(b, "screw axis", SCREW_AXIS);
+        frame.keep_box_in_view(Vec3::new(-2.6, 0.0, -1.2), Vec3::new(2.6, 2.4, 1.2));
         for (key, name) in [(self.start, "A"), (self.end, "B")] {
             frame.axes(key.to_mat4(), 0.5);
             frame.label(key.translation() + Vec3::Y * 0.3, name, palette::KEY);
@@ -184,18 +232,33 @@ impl RigidMotion {
             if !self.shown(method) {
                 continue;
             }
-            for (local, shade) in [(Vec3::ZERO, 0.6), (TIP, 1.0)] {
+            // The screw's paths are drawn wide and the blend's narrow on top, in that order: the
+            // two methods travel the same helix, and both stay visible where they coincide.
+            let width = match method {
+                Method::Screw => 6.0,
+                Method::DualQuatNlerp => 2.5,
+                Method::LerpSlerp => 3.0,
+            };
+            for (local, shade) in [(self.pivot, 0.6), (TIP, 1.0)] {
                 self.path.clear();
                 for k in 0..=64 {
                     let s = k as f32 / 64.0;
                     self.path.push(self.point(method, s, local, student));
                 }
-                frame.wide_polyline(&self.path, color * shade, crate::draw::CURVE_PX);
+                frame.wide_polyline(&self.path, color * shade, width);
             }
+            // Equal steps of t on the nose's path: spread where the method is fast.
+            self.path.clear();
+            for k in 0..=TICKS {
+                let s = k as f32 / TICKS as f32;
+                self.path.push(self.point(method, s, TIP, student));
+            }
+            frame.ticks(&self.path, 14.0, color);
             let m = self.motion(method, t);
             let (r, p) = m.to_rotation_translation();
             draw_plane(frame, p, Mat3::from_quat(r), color, 1.0);
-            frame.axes(m.to_mat4(), 0.45);
+            frame.axes(m.to_mat4() * Mat4::from_translation(self.pivot), 0.45);
+            frame.marker(m.transform_point(self.pivot), crate::draw::DOT_PX, color);
         }
         let mut notes = Vec::new();
         if self.thirds {
@@ -205,6 +268,53 @@ impl RigidMotion {
             notes.push(self.exercise_note(t));
         }
         Ok(notes.join(" "))
+    }
+
+    /// The screw parameter `s` at which the screw motion is where dual quaternion blending is at
+    /// `t`: the share of the whole turn the blend has made (of the whole slide, with no turn).
+    /// The blend of two keys stays on the screw's helix, so `screw(s(t)) = blend(t)`; only the
+    /// timing differs.
+    pub fn screw_time_of_blend(&self, t: f32) -> f32 {
+        let (a, b) = self.pivot_keys();
+        let blend = DualQuat::nlerp(a, b, t);
+        let total = rotation::angle_between(a.real, b.real);
+        if total > 1e-3 {
+            rotation::angle_between(a.real, blend.real) / total
+        } else {
+            let (pa, pb) = (a.translation(), b.translation());
+            let slide = pb - pa;
+            if slide.length_squared() > 1e-12 {
+                (blend.translation() - pa).dot(slide) / slide.length_squared()
+            } else {
+                t
+            }
+        }
+    }
+
+    /// Distance travelled by the nose since t = 0 (metres), sampled: `(t, lerp + slerp, blend,
+    /// screw)`. The blend and the screw end at the same distance (one helix); lerp + slerp
+    /// takes another path.
+    pub fn sample_distance(&self, samples: usize) -> Result<Vec<[f32; 4]>, String> {
+        super::check_samples(samples)?;
+        // Each interval is cut into `FINE` steps so the distance is the length of the curve.
+        const FINE: usize = 16;
+        let mut rows = Vec::with_capacity(samples);
+        let mut travelled = [0.0f32; 3];
+        let mut last = METHODS.map(|(m, _)| self.point(m, 0.0, TIP, false));
+        rows.push([0.0, 0.0, 0.0, 0.0]);
+        let steps = (samples - 1) * FINE;
+        for k in 1..=steps {
+            let t = k as f32 / steps as f32;
+            for (i, (method, _)) in METHODS.iter().enumerate() {
+                let p = self.point(*method, t, TIP, false);
+                travelled[i] += p.distance(last[i]);
+                last[i] = p;
+            }
+            if k % FINE == 0 {
+                rows.push([t, travelled[0], travelled[1], travelled[2]]);
+            }
+        }
+        Ok(rows)
     }
 
     /// `step³ A` vs `B`, where `step = q(1/3) A⁻¹` is the method's first third as a motion.
@@ -257,59 +367,74 @@ impl RigidMotion {
     }
 
     /// Compares the student's `dual_quat_apply` with the reference on the green frame's motion
-    /// at `t` and its nose, and checks that the rotation part is a unit quaternion.
+    /// at `t` and its nose, and at probe inputs ([`dual_quat_probes`]); checks that the rotation
+    /// part is a unit quaternion.
     pub fn exercise_note(&self, t: f32) -> String {
-        let (r, p) = DualQuat::nlerp(self.start, self.end, t).to_rotation_translation();
-        let (dq, moved) = match run::dual_quat_apply(self.runner, r, p, TIP) {
-            Ok(answer) => answer,
-            Err(f) => return failure_note("exercise 4.1 dual_quat_apply", FILE, &f),
-        };
-        let ref_dq = DualQuat::from_rotation_translation(r, p);
-        let ref_moved = ref_dq.transform_point(TIP);
-        // q and −q are one motion: compare with the closer sign.
-        let s = if dq.real.dot(ref_dq.real) < 0.0 {
-            -1.0
-        } else {
-            1.0
-        };
-        let flat = |q: DualQuat, v: Vec3| {
-            let mut out = q.real.to_array().to_vec();
-            out.extend(q.dual.to_array());
-            out.extend(v.to_array());
-            out
-        };
-        let yours = flat(
-            DualQuat {
-                real: dq.real * s,
-                dual: dq.dual * s,
-            },
-            moved,
+        let (r, p) = self
+            .motion(Method::DualQuatNlerp, t)
+            .to_rotation_translation();
+        let shown = (
+            format!("t = {} (the green frame's nose)", format_number(t)),
+            (r, p, TIP),
         );
-        let at = format!("t = {} (the green frame's nose)", format_number(t));
-        let (_, mut note) = compare_note(
-            "dual_quat_apply",
-            &at,
-            &yours,
-            &flat(ref_dq, ref_moved),
-            TOLERANCE,
-        );
-        if let Some(problem) = unit_quat_problem(dq.real, 1e-3) {
+        let mut probes = Vec::new();
+        let mut shown_real = Quat::IDENTITY;
+        for (at, (r, p, point)) in
+            std::iter::once(shown).chain(dual_quat_probes(self.start, self.end))
+        {
+            let (dq, moved) = match run::dual_quat_apply(self.runner, r, p, point) {
+                Ok(answer) => answer,
+                Err(f) => return failure_note("exercise 4.1 dual_quat_apply", FILE, &f),
+            };
+            if probes.is_empty() {
+                shown_real = dq.real;
+            }
+            let ref_dq = DualQuat::from_rotation_translation(r, p);
+            // q and −q are one motion: compare with the closer sign.
+            let s = if dq.real.dot(ref_dq.real) < 0.0 {
+                -1.0
+            } else {
+                1.0
+            };
+            let flat = |q: DualQuat, v: Vec3| {
+                let mut out = q.real.to_array().to_vec();
+                out.extend(q.dual.to_array());
+                out.extend(v.to_array());
+                out
+            };
+            probes.push(Probe {
+                at,
+                yours: flat(
+                    DualQuat {
+                        real: dq.real * s,
+                        dual: dq.dual * s,
+                    },
+                    moved,
+                ),
+                reference: flat(ref_dq, ref_dq.transform_point(point)),
+            });
+        }
+        let (_, mut note) = probe_note("dual_quat_apply", &probes, TOLERANCE);
+        if let Some(problem) = unit_quat_problem(shown_real, 1e-3) {
             note += &format!(" Its real part: {problem}.");
         }
         note
     }
 
-    /// The motion of `method` at `t`, always the reference.
+    /// The aeroplane's pose by `method` at `t`, always the reference: the pivot's frame is
+    /// interpolated between `A T(pivot)` and `B T(pivot)`, then moved back by `T(−pivot)`.
     pub fn motion(&self, method: Method, t: f32) -> DualQuat {
-        match method {
+        let (a, b) = self.pivot_keys();
+        let pivot_frame = match method {
             Method::LerpSlerp => {
-                let (ra, pa) = self.start.to_rotation_translation();
-                let (rb, pb) = self.end.to_rotation_translation();
+                let (ra, pa) = a.to_rotation_translation();
+                let (rb, pb) = b.to_rotation_translation();
                 DualQuat::from_rotation_translation(slerp(ra, rb, t), pa.lerp(pb, t))
             }
-            Method::DualQuatNlerp => DualQuat::nlerp(self.start, self.end, t),
+            Method::DualQuatNlerp => DualQuat::nlerp(a, b, t),
             Method::Screw => self.screw.sample(t),
-        }
+        };
+        pivot_frame * DualQuat::from_translation(-self.pivot)
     }
 
     /// Where `local` (a point of the frame) is at `t`. With `student`, the green frame's points
@@ -348,6 +473,42 @@ impl RigidMotion {
             })
             .collect())
     }
+}
+
+/// Where the student's 4.1 is checked besides the figure's input: `(what the note calls it,
+/// (rotation, translation, point))`. A pure slide (the dual part alone), a quarter turn about z
+/// with no slide (the rotation of the point alone), a half turn (w = 0), and both keys.
+pub fn dual_quat_probes(a: DualQuat, b: DualQuat) -> Vec<(String, (Quat, Vec3, Vec3))> {
+    let (ra, pa) = a.to_rotation_translation();
+    let (rb, pb) = b.to_rotation_translation();
+    vec![
+        (
+            "a slide by (1, 2, 3) m, no turn".into(),
+            (
+                Quat::IDENTITY,
+                Vec3::new(1.0, 2.0, 3.0),
+                Vec3::new(0.5, 0.0, 0.0),
+            ),
+        ),
+        (
+            "a quarter turn about z, no slide".into(),
+            (
+                Quat::from_rotation_z(90.0 * DEG),
+                Vec3::ZERO,
+                Vec3::new(1.0, 0.0, 0.0),
+            ),
+        ),
+        (
+            "a half turn about y and a slide".into(),
+            (
+                Quat::from_rotation_y(180.0 * DEG),
+                Vec3::new(0.0, 1.0, 0.0),
+                Vec3::new(0.3, 0.2, 0.1),
+            ),
+        ),
+        ("key A's nose".into(), (ra, pa, TIP)),
+        ("key B's nose".into(), (rb, pb, TIP)),
+    ]
 }
 
 fn check_translation(t: Vec3) -> Result<Vec3, String> {
@@ -508,14 +669,22 @@ impl AffineKeys {
             Ok(step) => step,
             Err(f) => return failure_note("exercise 4.2 polar_step", FILE, &f),
         };
-        let reference = rotation::polar_step(m);
-        let (_, mut note) = compare_note(
-            "polar_step",
-            "key B's matrix (one step from R₀ = M)",
-            &yours.to_cols_array(),
-            &reference.to_cols_array(),
-            1e-3,
-        );
+        let mut probes = vec![Probe {
+            at: "key B's matrix (one step from R₀ = M)".into(),
+            yours: yours.to_cols_array().to_vec(),
+            reference: rotation::polar_step(m).to_cols_array().to_vec(),
+        }];
+        for (at, probe) in polar_probes() {
+            match run::polar_step(self.runner, probe) {
+                Ok(step) => probes.push(Probe {
+                    at: at.into(),
+                    yours: step.to_cols_array().to_vec(),
+                    reference: rotation::polar_step(probe).to_cols_array().to_vec(),
+                }),
+                Err(f) => return failure_note("exercise 4.2 polar_step", FILE, &f),
+            }
+        }
+        let (_, mut note) = probe_note("polar_step", &probes, 1e-3);
         match student_polar(self.runner, m) {
             Ok(Some((r, n))) => match rotation_problem(r, 1e-3) {
                 None => note += &format!(" Iterated, it converges in {n} steps to a rotation; the figure uses your split."),
@@ -561,18 +730,47 @@ impl AffineKeys {
                 let m = shift * self.at(naive, k as f32 / 64.0) * size;
                 self.path.push(m.transform_point3(corner));
             }
-            frame.wide_polyline(&self.path, color * 0.8, crate::draw::CURVE_PX);
+            frame.wide_polyline(&self.path, color * 0.8, 4.0);
+            frame.keep_in_view.extend(self.path.iter().step_by(4));
             let m = shift * self.at(naive, t);
             frame.mesh(MeshId::CUBE, m * size, color);
-            frame.point(
+            // The corner whose path the line is, where it is now.
+            frame.marker_on_top(
                 (m * size).transform_point3(corner),
-                0.045,
+                14.0,
                 Vec3::new(0.95, 0.85, 0.2),
             );
             frame.axes(m, 0.6);
+            for key in [self.a, self.b] {
+                let box_m = shift * key * size;
+                for i in 0..8u32 {
+                    let s = |bit: u32| if i & bit == 0 { -1.0 } else { 1.0 };
+                    frame
+                        .keep_in_view
+                        .push(box_m.transform_point3(Vec3::new(s(1), s(2), s(4))));
+                }
+            }
         }
         Ok(self.note.clone())
     }
+}
+
+/// Where the student's 4.2 is checked besides key B: the identity and a rotation (a step must
+/// leave a rotation alone; a step with the inverse instead of the inverse transpose does not),
+/// a stretch along the axes, and a shear.
+pub fn polar_probes() -> [(&'static str, Mat3); 4] {
+    [
+        ("the identity", Mat3::IDENTITY),
+        ("a 40° turn about y", Mat3::from_rotation_y(40.0 * DEG)),
+        (
+            "a stretch diag(2, 0.5, 1)",
+            Mat3::from_diagonal(Vec3::new(2.0, 0.5, 1.0)),
+        ),
+        (
+            "a shear of x by 0.8 y",
+            Mat3::from_cols(Vec3::X, Vec3::new(0.8, 1.0, 0.0), Vec3::Z),
+        ),
+    ]
 }
 
 /// Iterates the student's step from `R₀ = M` until it stops moving (at most 64 steps):

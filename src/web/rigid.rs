@@ -117,6 +117,19 @@ impl RigidScene {
         Ok(note)
     }
 
+    /// Sets the point of the aeroplane (its own coordinates, metres) whose frame is interpolated.
+    #[wasm_bindgen(js_name = setPivot)]
+    pub fn set_pivot(&mut self, x: f32, y: f32, z: f32) -> Result<(), JsError> {
+        self.scene.set_pivot(Vec3::new(x, y, z)).map_err(js)
+    }
+
+    /// Distance travelled by the nose (m): `[t₀, lerp+slerp₀, dlb₀, screw₀, t₁, …]`.
+    #[wasm_bindgen(js_name = sampleDistance)]
+    pub fn sample_distance(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
+        Ok(self.scene.sample_distance(samples).map_err(js)?.concat())
+    }
+
     /// Speed of the nose (m per unit of t): `[t₀, lerp+slerp₀, dlb₀, screw₀, t₁, …]`.
     #[wasm_bindgen(js_name = sampleSpeed)]
     pub fn sample_speed(&self, samples: f64) -> Result<Vec<f32>, JsError> {
