@@ -16,7 +16,7 @@ fn near(a: Vec3, b: Vec3, eps: f32) -> bool {
 fn both_orders_are_drawn_solid_and_ghost_with_labels() {
     let shape = SingleShape::new();
     let mut frame = Frame::default();
-    shape.draw(&mut frame);
+    shape.draw(&mut frame, 2.0).unwrap();
     let solid = frame
         .meshes
         .iter()
@@ -41,7 +41,7 @@ fn translate_first_makes_rt_the_solid_box() {
     let mut shape = SingleShape::new();
     shape.set_order(Order::TranslateFirst);
     let mut frame = Frame::default();
-    shape.draw(&mut frame);
+    shape.draw(&mut frame, 2.0).unwrap();
     let solid = frame
         .meshes
         .iter()
@@ -67,7 +67,7 @@ fn rt_swings_about_the_origin_and_tr_stays_at_t() {
     assert!(near(arc[0], Vec3::X, 1e-5) && near(arc[19], Vec3::Y, 1e-5));
     assert!(arc.iter().all(|p| (p.length() - 1.0).abs() < 1e-5));
     let mut frame = Frame::default();
-    let note = shape.draw(&mut frame);
+    let note = shape.draw(&mut frame, 2.0).unwrap();
     assert!(note.contains("R·t = (0.000, 1.000, 0.000)"), "{note}");
 }
 
@@ -78,11 +78,86 @@ fn the_direction_never_leaves_the_origin() {
         .set_transform(Vec3::new(5.0, -3.0, 2.0), Vec3::new(10.0, 20.0, 30.0))
         .unwrap();
     let mut frame = Frame::default();
-    shape.draw(&mut frame);
+    shape.draw(&mut frame, 2.0).unwrap();
     let from_origin = frame
         .segments_of(palette::PINK)
         .any(|(a, _)| a == Vec3::ZERO);
     assert!(from_origin, "the pink direction arrow starts at the origin");
+}
+
+/// The Try this of Figure 1: with t = 0 the boxes coincide; with t back at (1, 0.5, 0) and the
+/// angle z at 180°, R·T ends 2|t| = 2.236 m from T·R.
+#[test]
+fn the_try_this_of_figure_1_holds() {
+    let mut shape = SingleShape::new();
+    shape
+        .set_transform(Vec3::ZERO, Vec3::new(0.0, 0.0, 30.0))
+        .unwrap();
+    let centre = |s: &SingleShape, o: Order| s.matrix(o).w_axis.truncate();
+    assert!(near(
+        centre(&shape, Order::RotateFirst),
+        centre(&shape, Order::TranslateFirst),
+        1e-6
+    ));
+    assert!(shape
+        .matrix(Order::RotateFirst)
+        .abs_diff_eq(shape.matrix(Order::TranslateFirst), 1e-6));
+    shape
+        .set_transform(Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, 180.0))
+        .unwrap();
+    let gap = centre(&shape, Order::RotateFirst).distance(centre(&shape, Order::TranslateFirst));
+    assert!((gap - 2.0 * 1.25f32.sqrt()).abs() < 1e-5, "{gap}");
+    let mut frame = Frame::default();
+    let note = shape.draw(&mut frame, 2.0).unwrap();
+    assert!(note.contains("R·t = (-1.000, -0.500, 0.000)"), "{note}");
+    assert!(note.contains("the centres are 2.236 m apart"), "{note}");
+}
+
+/// The two orders step by step: T·R turns in place and then slides; R·T slides and then swings.
+#[test]
+fn the_steps_apply_the_right_hand_factor_first() {
+    let shape = SingleShape::new();
+    let t = Vec3::new(1.0, 0.5, 0.0);
+    let centre = |o: Order, stage: f32| shape.matrix_at(o, stage).w_axis.truncate();
+    let turned = |o: Order, stage: f32| {
+        let x = shape.matrix_at(o, stage).x_axis.truncate();
+        x.y.atan2(x.x).to_degrees()
+    };
+    // Nothing applied at 0; the full products at 2.
+    for o in [Order::RotateFirst, Order::TranslateFirst] {
+        assert!(shape.matrix_at(o, 0.0).abs_diff_eq(Mat4::IDENTITY, 1e-6));
+        assert!(shape.matrix_at(o, 2.0).abs_diff_eq(shape.matrix(o), 1e-6));
+    }
+    // Half-way through step 1: T·R has turned 15° at the origin, R·T has slid half-way unturned.
+    assert!(near(centre(Order::RotateFirst, 0.5), Vec3::ZERO, 1e-6));
+    assert!((turned(Order::RotateFirst, 0.5) - 15.0).abs() < 1e-3);
+    assert!(near(centre(Order::TranslateFirst, 0.5), t * 0.5, 1e-6));
+    assert!(turned(Order::TranslateFirst, 0.5).abs() < 1e-3);
+    // Half-way through step 2: T·R is half-way to t, turned 30°; R·T is on the arc, |t| from
+    // the origin, turned 15°.
+    assert!(near(centre(Order::RotateFirst, 1.5), t * 0.5, 1e-6));
+    assert!((turned(Order::RotateFirst, 1.5) - 30.0).abs() < 1e-3);
+    assert!((centre(Order::TranslateFirst, 1.5).length() - t.length()).abs() < 1e-5);
+    assert!((turned(Order::TranslateFirst, 1.5) - 15.0).abs() < 1e-3);
+    let mut frame = Frame::default();
+    assert!(shape
+        .draw(&mut frame, 0.5)
+        .unwrap()
+        .starts_with("Step 1 of 2"));
+    assert!(shape
+        .draw(&mut frame, 1.5)
+        .unwrap()
+        .starts_with("Step 2 of 2"));
+    assert!(shape.draw(&mut frame, 2.5).unwrap_err().contains("stage"));
+    assert!(shape.draw(&mut frame, f32::NAN).is_err());
+    // The view is the same at every stage (the camera does not jump while it plays).
+    let view = |stage: f32| {
+        let mut f = Frame::default();
+        shape.draw(&mut f, stage).unwrap();
+        f.keep_in_view
+    };
+    assert!(!view(0.0).is_empty());
+    assert_eq!(view(0.0), view(1.3));
 }
 
 #[test]
@@ -417,4 +492,128 @@ fn inheriting_unit_scales_says_why_nothing_changes() {
     figure.set_inherit_scale(true);
     let note = figure.pose(0.0).unwrap();
     assert!(note.contains("every scale is 1"), "{note}");
+}
+
+/// Rotations multiplied in the reverse order (R_z R_y R_x): at the walk, which turns the limbs
+/// about x only, every joint matches, and only the probes can tell.
+fn reversed_rotations(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name == "local_matrix" {
+        let t = Vec3::new(args[0], args[1], args[2]);
+        let m = Mat4::from_translation(t)
+            * Mat4::from_rotation_z(args[5])
+            * Mat4::from_rotation_y(args[4])
+            * Mat4::from_rotation_x(args[3]);
+        return Ok(m.to_cols_array().to_vec());
+    }
+    solved(name, args)
+}
+
+/// World matrices that multiply by the parent's local matrix instead of its world matrix:
+/// right for a root's children, wrong deeper down.
+fn parent_local(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name == "world_matrices" {
+        let n = args[0] as usize;
+        let parents = &args[1..1 + n];
+        let local: Vec<Mat4> = (0..n)
+            .map(|i| Mat4::from_cols_slice(&args[2 + n + 16 * i..2 + n + 16 * (i + 1)]))
+            .collect();
+        let world: Vec<Mat4> = (0..n)
+            .map(|i| {
+                if parents[i] >= 0.0 {
+                    local[parents[i] as usize] * local[i]
+                } else {
+                    local[i]
+                }
+            })
+            .collect();
+        let mut out = vec![n as f32];
+        world.iter().for_each(|m| out.extend(m.to_cols_array()));
+        return Ok(out);
+    }
+    solved(name, args)
+}
+
+#[test]
+fn probes_catch_what_the_walk_cannot() {
+    let mut figure = figure_with(reversed_rotations);
+    let note = figure.pose(0.3).unwrap();
+    assert!(
+        note.contains("Your local_matrix matches the reference at all 11 joints"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Beyond this pose, your local_matrix differs at 3 of 3 more inputs"),
+        "{note}"
+    );
+    assert!(
+        note.contains(
+            "Your local_matrix differs at t = (1, 2, 3), angles (30°, 40°, 50°): yours ("
+        ),
+        "{note}"
+    );
+    let mut figure = figure_with(parent_local);
+    let note = figure.pose(0.3).unwrap();
+    assert!(
+        note.contains("your world_matrices differs at 2 of 2 more inputs")
+            || note.contains(
+                "your world_matrices differs at 1 of 2 more inputs (a chain of four joints)"
+            ),
+        "{note}"
+    );
+    assert!(
+        note.contains("of a chain of four joints: yours ("),
+        "{note}"
+    );
+    let mut figure = figure_with(solved);
+    let note = figure.pose(0.3).unwrap();
+    assert!(
+        note.contains("your local_matrix also matches at 3 more inputs")
+            && note.contains("your world_matrices also matches at 2 more inputs"),
+        "{note}"
+    );
+}
+
+/// Figure 3 from the side: the left forearm's outline is a rectangle (90°) without inherited
+/// scale and a parallelogram with it, whose angle the note and the label give.
+#[test]
+fn the_inherited_forearm_is_a_parallelogram() {
+    use inbetween::figures::transforms::ScaleComparison;
+    let mut comparison = ScaleComparison::new();
+    let mut frame = Frame::default();
+    let note = comparison.draw(&mut frame).unwrap();
+    fn corner(comparison: &ScaleComparison, k: usize) -> f32 {
+        let c = comparison.forearm_outline(k);
+        (c[1] - c[2]).angle_between(c[3] - c[2]).to_degrees()
+    }
+    assert!((corner(&comparison, 0) - 90.0).abs() < 0.01);
+    let sheared = corner(&comparison, 1);
+    assert!((sheared - 90.0).abs() > 10.0, "{sheared}");
+    // The outline lies in a plane x = const (what a side view along x shows undistorted).
+    for k in 0..2 {
+        let c = comparison.forearm_outline(k);
+        assert!(c.iter().all(|p| (p.x - c[0].x).abs() < 1e-5), "{c:?}");
+    }
+    let (_, from_note) = comparison.forearm_shape(1);
+    assert!(
+        (from_note - sheared).abs() < 0.01 || (from_note - (180.0 - sheared)).abs() < 0.01,
+        "{from_note} {sheared}"
+    );
+    let label = format!("{:.0}°", sheared);
+    assert_eq!(label, "64°", "the caption's angle");
+    assert!(frame.labels.iter().any(|l| l.text == label), "{label}");
+    assert!(frame.labels.iter().any(|l| l.text == "90°"));
+    assert!(note.contains("scale inherited"), "{note}");
+    // The copies stand one behind the other along z, both in view.
+    assert!(!frame.keep_in_view.is_empty());
+    // Uniform scale: square corners again, as the Try this says.
+    comparison.set_upper_arm_scale(Vec3::splat(2.0)).unwrap();
+    comparison.draw(&mut frame).unwrap();
+    assert!((corner(&comparison, 1) - 90.0).abs() < 0.01);
+    // An unbent forearm under the non-uniform stretch: square too.
+    comparison
+        .set_upper_arm_scale(Vec3::new(1.0, 2.0, 1.0))
+        .unwrap();
+    comparison.set_forearm_angles_deg(Vec3::ZERO).unwrap();
+    comparison.draw(&mut frame).unwrap();
+    assert!((corner(&comparison, 1) - 90.0).abs() < 0.01);
 }

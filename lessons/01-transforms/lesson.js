@@ -16,6 +16,8 @@ const shapeViewer = await lesson.figure('#fig-shape');
 if (shapeViewer) {
   shapeViewer.setCamera(0.5, 0.3, 0, 5, 0.6, 0.45);
   const scene = new SingleShapeScene();
+  // Two steps of 2 s each (the right-hand factor, then the left-hand one), then 1 s at the end.
+  const steps = new Timeline(document.getElementById('shape-timeline'), { duration: 5 });
   const p = { tx: 1, ty: 0.5, tz: 0, rx: 0, ry: 0, rz: 30, translateFirst: false };
   const gui = new GUI({ container: document.querySelector('#fig-shape .panel'), title: 'Transform' });
   const apply = () => {
@@ -34,8 +36,9 @@ if (shapeViewer) {
   gui.onChange(apply);
   apply();
   const note = document.getElementById('shape-note');
-  lesson.onFrame(() => {
-    showNote(note, scene.draw(shapeViewer));
+  lesson.onFrame((dt) => {
+    const stage = Math.min(2, steps.advance(dt) / 2);
+    showNote(note, scene.draw(shapeViewer, stage));
     markDrawn('#fig-shape');
   });
 }
@@ -55,10 +58,17 @@ if (humanViewer) {
     [p.x, p.y, p.z] = scene.jointAnglesDeg(index()).map((v) => Math.round(v));
     [p.sx, p.sy, p.sz] = scene.jointScale(index());
   };
-  gui.add(p, 'walk').name('walk cycle (timeline)').onChange((on) => {
+  // The timeline drives the walk: with the walk off (a joint posed by hand) it is paused, and
+  // playing or scrubbing it turns the walk back on.
+  let pausedAt = timeline.time;
+  const setWalk = (on) => {
+    pausedAt = timeline.time;
+    p.walk = on;
     scene.setAnimate(on);
-    if (on) timeline.setPlaying(true);
-  });
+    timeline.setPlaying(on);
+    refresh();
+  };
+  gui.add(p, 'walk').name('walk cycle (timeline)').onChange(setWalk);
   gui.add(p, 'joint', names).name('joint').onChange(() => {
     scene.select(index());
     readJoint();
@@ -69,7 +79,7 @@ if (humanViewer) {
   for (const axis of ['x', 'y', 'z']) {
     addAngle(angles, p, axis, `about ${axis}`).onChange(() => {
       // Posing by hand: stop the walk so it does not overwrite the slider.
-      if (p.walk) { p.walk = false; scene.setAnimate(false); refresh(); }
+      if (p.walk) setWalk(false);
       setAngles();
       updatePlot();
     });
@@ -107,6 +117,7 @@ if (humanViewer) {
   const note = document.getElementById('human-note');
   let frame = 0;
   lesson.onFrame((dt) => {
+    if (!p.walk && (timeline.playing || timeline.time !== pausedAt)) setWalk(true);
     const t = timeline.advance(dt);
     showNote(note, scene.draw(humanViewer, t));
     thighPlot.setCursor?.(t);
@@ -126,7 +137,8 @@ if (humanViewer) {
 // Figure 3: scale not inherited and inherited, side by side.
 const scaleViewer = await lesson.figure('#fig-scale');
 if (scaleViewer) {
-  scaleViewer.setCamera(0, 1.0, 0, 3.6, 0.6, 0.2);
+  // From the left side (+x), square to the plane in which the forearm bends and shears.
+  scaleViewer.setCamera(0, 1.0, 0, 3.6, Math.PI / 2, 0.12);
   const scene = new ScaleComparisonScene();
   const p = { sx: 1, sy: 2, sz: 1, x: -70, y: 0, z: 0 };
   const gui = new GUI({ container: document.querySelector('#fig-scale .panel'), title: 'upper_arm.L and forearm.L' });

@@ -10,6 +10,7 @@ use super::{
     check_samples, compare_note, failure_note, finite, in_range, palette, rotation_problem, Frame,
     MeshId, Runner, DEFAULT_RUNNER,
 };
+use crate::draw::StrokeStyle;
 use crate::exercises::run;
 use crate::transform::{self, Hierarchy, JointShape, LocalTransform, ScaleMode};
 use glam::{Mat3, Mat4, Quat, Vec3};
@@ -123,69 +124,135 @@ impl SingleShape {
         }
     }
 
+    /// The box's matrix part-way through its two steps, `stage` in [0, 2]: from 0 to 1 the
+    /// right-hand factor grows from the identity to its full value (a rotation by slerp from the
+    /// identity, a translation by a fraction of `t`), from 1 to 2 the left-hand one. At 2 it is
+    /// [`SingleShape::matrix`]. So `T·R` turns in place, then slides; `R·T` slides, then swings
+    /// about the world origin.
+    pub fn matrix_at(&self, order: Order, stage: f32) -> Mat4 {
+        let first = stage.clamp(0.0, 1.0);
+        let second = (stage - 1.0).clamp(0.0, 1.0);
+        let q = Quat::from_mat4(&self.rotation());
+        let r = |s: f32| Mat4::from_quat(Quat::IDENTITY.slerp(q, s));
+        let t = |s: f32| Mat4::from_translation(self.translation * s);
+        match order {
+            Order::RotateFirst => t(second) * r(first),
+            Order::TranslateFirst => r(second) * t(first),
+        }
+    }
+
     /// Where the `R·T` box's centre goes as the rotation grows from none to `R`: `R(s)·t` for
     /// `s` in [0, 1], with `R(s)` the slerp from the identity (for one angle, a circle's arc).
     pub fn swing_arc(&self, samples: usize) -> Vec<Vec3> {
-        let q = Quat::from_mat4(&self.rotation());
         (0..samples)
             .map(|k| {
                 let s = k as f32 / (samples - 1).max(1) as f32;
-                Quat::IDENTITY.slerp(q, s) * self.translation
+                self.matrix_at(Order::TranslateFirst, 1.0 + s)
+                    .w_axis
+                    .truncate()
             })
             .collect()
     }
 
-    /// Draws both orders (the chosen one solid, the other as a wireframe ghost), the arc of `R·T`,
-    /// the point and the direction. Returns the note under the figure.
-    pub fn draw(&self, frame: &mut Frame) -> String {
+    /// Draws both orders at `stage` (see [`SingleShape::matrix_at`]; 2 shows the full products):
+    /// the chosen one solid, the other as a wireframe ghost, the paths their centres take, the
+    /// point and the direction. Returns the note under the figure.
+    pub fn draw(&self, frame: &mut Frame, stage: f32) -> Result<String, String> {
+        let stage = in_range("stage", stage, 0.0, 2.0)?;
         frame.grid(10, 0.5);
         frame.labelled_axes(Mat4::IDENTITY, 1.0);
-        frame.label(Vec3::new(0.0, -0.12, 0.0), "world origin", palette::DARK);
+        frame.label_with_priority(
+            Vec3::new(-0.15, -0.2, 0.0),
+            "world origin",
+            palette::DARK,
+            -1,
+        );
         let (shown, ghost) = (self.order, self.order.other());
-        let m = self.matrix(shown);
+        let m = self.matrix_at(shown, stage);
         frame.mesh(MeshId::CUBE, m * Mat4::from_scale(BOX_HALF), shown.color());
         frame.axes(m, 0.6);
         wire_box(
             frame,
-            self.matrix(ghost) * Mat4::from_scale(BOX_HALF),
+            self.matrix_at(ghost, stage) * Mat4::from_scale(BOX_HALF),
             ghost.color(),
         );
         for order in [shown, ghost] {
             let top = self
-                .matrix(order)
+                .matrix_at(order, stage)
                 .transform_point3(Vec3::new(0.0, 0.45, 0.0));
-            frame.label(top, order.name(), order.color());
+            frame.label_with_priority(top, order.name(), order.color(), 3);
         }
-        // R·T carries the box around the world origin on an arm as long as t.
+        // The paths of the two centres: T·R stays at the origin while it turns, then slides
+        // straight to t; R·T slides to t first (the same segment, drawn wide underneath so both
+        // show), then swings about the world origin along the arc.
+        let (tr, rt) = (Order::RotateFirst.color(), Order::TranslateFirst.color());
+        let t = self.translation;
+        frame.wide_line(Vec3::ZERO, t, rt, 5.0);
+        frame.stroke(&[Vec3::ZERO, t], tr, StrokeStyle::dashed(2.0, 0.08, 0.06));
         let arc = self.swing_arc(48);
         let tip = self.matrix(Order::TranslateFirst).w_axis.truncate();
-        frame.line(Vec3::ZERO, tip, Order::TranslateFirst.color());
-        frame.wide_polyline(&arc, Order::TranslateFirst.color(), crate::draw::CURVE_PX);
+        frame.wide_polyline(&arc, rt, crate::draw::CURVE_PX);
         if arc.len() >= 2 && arc[0].distance(tip) > 0.05 {
-            frame.arrow(arc[arc.len() - 2], tip, Order::TranslateFirst.color(), 0.12);
+            frame.arrow(arc[arc.len() - 2], tip, rt, 0.12);
+            // The arm of the swing, from the world origin to where R·T ends.
+            frame.stroke(&[Vec3::ZERO, tip], rt, StrokeStyle::dashed(1.5, 0.06, 0.06));
         }
-        // A point (w = 1) moves with the translation; a direction (w = 0) only turns.
-        let p = m * transform::point(BOX_HALF);
-        frame.point(p.truncate(), 0.05, palette::PINK);
-        frame.label(p.truncate(), "p (w = 1)", palette::PINK);
+        // A point (w = 1) moves with the translation; a direction (w = 0) only turns. Their
+        // labels sit just outside the box and past the arrow's tip.
+        let centre = m.w_axis.truncate();
+        let p = (m * transform::point(BOX_HALF)).truncate();
+        frame.marker(p, 11.0, palette::PINK);
+        let out = (p - centre).normalize_or_zero();
+        frame.label_with_priority(p + out * 0.15, "p (w = 1)", palette::PINK, 2);
         let v = (m * transform::direction(Vec3::new(0.6, 0.0, 0.0))).truncate();
         frame.arrow(Vec3::ZERO, v, palette::PINK, 0.1);
-        frame.label(v, "v (w = 0)", palette::PINK);
-        self.note()
+        frame.label_with_priority(
+            v * 1.2 - Vec3::new(0.0, 0.12, 0.0),
+            "v (w = 0)",
+            palette::PINK,
+            2,
+        );
+        // Everything any stage shows stays in view: the origin, t, the arc, a box's reach around.
+        let (lo, hi) = arc
+            .iter()
+            .chain([Vec3::ZERO, t, Vec3::ONE, Vec3::new(0.0, 1.0, 0.0)].iter())
+            .fold(
+                (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+                |(lo, hi), q| (lo.min(*q), hi.max(*q)),
+            );
+        let reach = Vec3::splat(BOX_HALF.length() + 0.1);
+        frame.keep_box_in_view(lo - reach, hi + reach);
+        Ok(self.note(stage))
     }
 
-    fn note(&self) -> String {
+    fn note(&self, stage: f32) -> String {
         // Float noise such as cos 90° = -4e-8 reads as 0.
         let number = |x: f32| super::format_number(if x.abs() < 5e-6 { 0.0 } else { x });
         let fmt = |v: Vec3| format!("({}, {}, {})", number(v.x), number(v.y), number(v.z));
         let swung = self.matrix(Order::TranslateFirst).w_axis.truncate();
-        format!(
-            "T·R keeps the box's centre at t = {}; R·T carries it to R·t = {}, on an arm {} m long \
-             from the world origin.",
-            fmt(self.translation),
-            fmt(swung),
-            super::format_number(self.translation.length())
-        )
+        let arm = super::format_number(self.translation.length());
+        if stage < 1.0 {
+            format!(
+                "Step 1 of 2, the right-hand factor: T·R applies R first, so its box turns in place \
+                 at the origin; R·T applies T first, so its box slides towards t = {}.",
+                fmt(self.translation)
+            )
+        } else if stage < 2.0 {
+            format!(
+                "Step 2 of 2, the left-hand factor: T·R now applies T, so its turned box slides to \
+                 t; R·T now applies R, which turns about the world origin, so its box swings on an \
+                 arm {arm} m long towards R·t = {}.",
+                fmt(swung)
+            )
+        } else {
+            format!(
+                "Both steps done. T·R keeps the box's centre at t = {}; R·T carries it to R·t = {}, \
+                 on an arm {arm} m long from the world origin; the centres are {} m apart.",
+                fmt(self.translation),
+                fmt(swung),
+                super::format_number(self.translation.distance(swung))
+            )
+        }
     }
 }
 
@@ -247,6 +314,9 @@ pub struct HierarchyFigure {
     animate: bool,
     use_exercise: bool,
     runner: Runner,
+    /// What the student's exercises give at [`LOCAL_PROBES`] and [`world_probes`], once per
+    /// switch of "use my exercise" (they do not depend on the pose).
+    probe_note: Option<String>,
     selected: usize,
     local: Vec<Mat4>,
     world: Vec<Mat4>,
@@ -278,6 +348,7 @@ impl HierarchyFigure {
             animate: true,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            probe_note: None,
             local: vec![Mat4::IDENTITY; n],
             world: vec![Mat4::IDENTITY; n],
             draw: vec![Mat4::IDENTITY; n],
@@ -360,11 +431,13 @@ impl HierarchyFigure {
     /// Runs the student's exercises 1.1 and 1.2 (through the runner) instead of the reference.
     pub fn set_use_exercise(&mut self, on: bool) {
         self.use_exercise = on;
+        self.probe_note = None;
     }
 
     /// How the student's code is called (natively in-process; in the page, the sandbox).
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.probe_note = None;
     }
 
     pub fn local_matrix(&self, joint: usize) -> Result<Mat4, String> {
@@ -434,7 +507,13 @@ impl HierarchyFigure {
                 ScaleMode::Inherited => *w,
             };
         }
-        format!("{local_note} {world_note}")
+        if self.probe_note.is_none() {
+            self.probe_note = Some(probe_note(self.runner));
+        }
+        let probes = self.probe_note.as_deref().unwrap_or_default();
+        format!("{local_note} {world_note} {probes}")
+            .trim_end()
+            .to_string()
     }
 
     /// Exercise 1.1 at every joint of the current pose; the first joint where it differs is named.
@@ -534,6 +613,9 @@ impl HierarchyFigure {
         frame.grid(12, 0.25);
         frame.labelled_axes(Mat4::IDENTITY, 0.4);
         self.draw_body(frame, Mat4::IDENTITY, true);
+        frame.contact_shadow(Vec3::ZERO, 0.3);
+        // The standing figure and its reach, whatever the pose.
+        frame.keep_box_in_view(Vec3::new(-0.75, 0.0, -0.6), Vec3::new(0.75, 1.95, 0.6));
         Ok(note)
     }
 
@@ -570,9 +652,9 @@ impl HierarchyFigure {
         // The skeleton: a dot at each pivot, a segment to its parent's pivot.
         let pivot = |i: usize| placement.transform_point3(self.world[i].w_axis.truncate());
         for (i, &parent) in self.hierarchy.parents().iter().enumerate() {
-            frame.point(pivot(i), 0.025, palette::KEY);
+            frame.marker_on_top(pivot(i), 7.0, palette::KEY);
             if parent >= 0 {
-                frame.line(pivot(parent as usize), pivot(i), palette::KEY);
+                frame.wide_line_on_top(pivot(parent as usize), pivot(i), palette::KEY, 2.0);
             }
         }
         if !labels {
@@ -594,7 +676,7 @@ impl HierarchyFigure {
         let thigh_mid = knee.map_or(pivot(self.thigh), |k| (pivot(self.thigh) + pivot(k)) * 0.5);
         frame.label(thigh_mid, "left thigh", palette::PURPLE);
         let wrist = placement.transform_point3(self.wrist());
-        frame.point(wrist, 0.035, palette::PINK);
+        frame.marker_on_top(wrist, 11.0, palette::PINK);
         frame.label(wrist, "left wrist", palette::PINK);
     }
 
@@ -618,6 +700,142 @@ impl HierarchyFigure {
     }
 }
 
+/// Inputs at which exercise 1.1 is checked besides the pose (whose walk turns the limbs about x
+/// only, where the order of the three rotations cannot show): `(what, translation, angles in
+/// degrees)`.
+pub const LOCAL_PROBES: [(&str, Vec3, Vec3); 3] = [
+    (
+        "t = (1, 2, 3), angles (30°, 40°, 50°)",
+        Vec3::new(1.0, 2.0, 3.0),
+        Vec3::new(30.0, 40.0, 50.0),
+    ),
+    (
+        "t = (0, 0, 0), angles (0°, 90°, 45°)",
+        Vec3::ZERO,
+        Vec3::new(0.0, 90.0, 45.0),
+    ),
+    (
+        "t = (0.5, 0, -1), angles (-60°, 0°, 120°)",
+        Vec3::new(0.5, 0.0, -1.0),
+        Vec3::new(-60.0, 0.0, 120.0),
+    ),
+];
+
+/// Hierarchies on which exercise 1.2 is checked besides the figure: `(what, parents, locals)`,
+/// each local a translation and a turn so that the order of every product shows.
+pub fn world_probes() -> [(&'static str, Vec<i32>, Vec<Mat4>); 2] {
+    let local = |t: Vec3, angles_deg: Vec3| transform::local_matrix(t, angles_deg * DEG);
+    [
+        (
+            "a chain of four joints",
+            vec![-1, 0, 1, 2],
+            vec![
+                local(Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, 30.0, 0.0)),
+                local(Vec3::new(0.5, 0.0, 0.0), Vec3::new(0.0, 0.0, 45.0)),
+                local(Vec3::new(0.0, 0.4, 0.2), Vec3::new(60.0, 0.0, 0.0)),
+                local(Vec3::new(0.3, 0.0, 0.0), Vec3::new(0.0, 20.0, 10.0)),
+            ],
+        ),
+        (
+            "two roots, each with a child",
+            vec![-1, 0, -1, 2],
+            vec![
+                local(Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 90.0)),
+                local(Vec3::new(0.0, 0.5, 0.0), Vec3::new(0.0, 0.0, 0.0)),
+                local(Vec3::new(-1.0, 0.0, 0.0), Vec3::new(0.0, 90.0, 0.0)),
+                local(Vec3::new(0.0, 0.0, 0.5), Vec3::new(45.0, 0.0, 0.0)),
+            ],
+        ),
+    ]
+}
+
+/// Exercises 1.1 and 1.2 at [`LOCAL_PROBES`] and [`world_probes`]: which inputs match, and the
+/// first that differs with both answers.
+fn probe_note(runner: Runner) -> String {
+    let mut notes = Vec::new();
+    // Exercise 1.1.
+    let mut differ: Vec<&str> = Vec::new();
+    let mut first = String::new();
+    for (what, t, deg) in LOCAL_PROBES {
+        let reference = transform::local_matrix(t, deg * DEG);
+        match run::local_matrix(runner, t, deg * DEG) {
+            Err(_) => return String::new(),
+            Ok(yours) if close(yours, reference) => {}
+            Ok(yours) => {
+                if first.is_empty() {
+                    first = compare_note(
+                        "local_matrix",
+                        what,
+                        &yours.to_cols_array(),
+                        &reference.to_cols_array(),
+                        TOLERANCE,
+                    )
+                    .1;
+                }
+                differ.push(what);
+            }
+        }
+    }
+    notes.push(summary(
+        "local_matrix",
+        &LOCAL_PROBES.map(|p| p.0),
+        &differ,
+        &first,
+    ));
+    // Exercise 1.2.
+    let mut differ: Vec<&str> = Vec::new();
+    let mut first = String::new();
+    let probes = world_probes();
+    for (what, parents, locals) in &probes {
+        let mut reference = vec![Mat4::IDENTITY; locals.len()];
+        transform::world_matrices(parents, locals, &mut reference);
+        let p: Vec<f32> = parents.iter().map(|&x| x as f32).collect();
+        match run::world_matrices(runner, p, locals.clone()) {
+            Err(_) => return notes.join(" "),
+            Ok(yours) => {
+                let wrong = (0..reference.len())
+                    .find(|&i| yours.get(i).is_none_or(|y| !close(*y, reference[i])));
+                if let Some(i) = wrong {
+                    if first.is_empty() {
+                        let yours_i = yours.get(i).copied().unwrap_or(Mat4::NAN);
+                        first = compare_note(
+                            "world_matrices",
+                            &format!("joint {i} of {what}"),
+                            &yours_i.to_cols_array(),
+                            &reference[i].to_cols_array(),
+                            TOLERANCE,
+                        )
+                        .1;
+                    }
+                    differ.push(what);
+                }
+            }
+        }
+    }
+    let all: Vec<&str> = probes.iter().map(|p| p.0).collect();
+    notes.push(summary("world_matrices", &all, &differ, &first));
+    notes.join(" ")
+}
+
+/// "Beyond this pose, your `what` also matches at N more inputs (…)" or "… differs at k of N
+/// more inputs (…). " followed by `first`, the comparison at the first that differs.
+fn summary(what: &str, all: &[&str], differ: &[&str], first: &str) -> String {
+    if differ.is_empty() {
+        format!(
+            "Beyond this pose, your {what} also matches at {} more inputs ({}).",
+            all.len(),
+            all.join("; ")
+        )
+    } else {
+        format!(
+            "Beyond this pose, your {what} differs at {} of {} more inputs ({}). {first}",
+            differ.len(),
+            all.len(),
+            differ.join("; ")
+        )
+    }
+}
+
 /// How close the student's matrices must be to the reference's, per entry.
 const TOLERANCE: f32 = 1e-4;
 
@@ -635,8 +853,8 @@ pub struct ScaleComparison {
     forearm: usize,
 }
 
-/// How far each copy stands from the centre, metres.
-const COMPARISON_OFFSET: f32 = 0.6;
+/// How far each copy stands from the centre along z, metres.
+const COMPARISON_OFFSET: f32 = 0.8;
 
 impl Default for ScaleComparison {
     fn default() -> Self {
@@ -703,24 +921,85 @@ impl ScaleComparison {
         (length, corner)
     }
 
-    /// Draws both copies with a title above each; returns the note (forearm lengths and shear).
+    /// Where copy `k` stands: one behind the other along z, so that a side view (looking along
+    /// −x at the left arm) shows both forearms in the plane where the shear happens.
+    pub fn placement(k: usize) -> Mat4 {
+        let z = if k == 0 {
+            COMPARISON_OFFSET
+        } else {
+            -COMPARISON_OFFSET
+        };
+        Mat4::from_translation(Vec3::new(0.0, 0.0, z))
+    }
+
+    /// The outline of copy `k`'s drawn left forearm on its face towards +x (the camera's side):
+    /// four corners, a rectangle unless the box is sheared, then a parallelogram.
+    pub fn forearm_outline(&self, k: usize) -> [Vec3; 4] {
+        let f = &self.figures[k];
+        let shape = &f.shapes[self.forearm];
+        let m = Self::placement(k) * f.draw[self.forearm];
+        [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)].map(|(y, z)| {
+            m.transform_point3(shape.center + shape.half_extents * Vec3::new(1.0, y, z))
+        })
+    }
+
+    /// Draws both copies with a title above each, each forearm's outline with its corner angle;
+    /// returns the note (forearm lengths and shear).
     pub fn draw(&mut self, frame: &mut Frame) -> Result<String, String> {
         frame.grid(12, 0.25);
         let titles = ["scale not inherited", "scale inherited"];
+        let outline = StrokeStyle {
+            on_top: true,
+            ..StrokeStyle::solid(3.0)
+        };
         for (k, f) in self.figures.iter_mut().enumerate() {
             f.pose(0.0)?;
-            let x = if k == 0 {
-                -COMPARISON_OFFSET
-            } else {
-                COMPARISON_OFFSET
-            };
-            let placement = Mat4::from_translation(Vec3::new(x, 0.0, 0.0));
+            let placement = Self::placement(k);
             f.draw_body(frame, placement, false);
-            frame.label(Vec3::new(x, 1.95, 0.0), titles[k], palette::DARK);
+            let z = placement.w_axis.z;
+            frame.label_with_priority(Vec3::new(0.0, 1.95, z), titles[k], palette::DARK, 3);
             let wrist = placement.transform_point3(f.wrist());
-            frame.point(wrist, 0.03, palette::PINK);
-            frame.label(wrist, "forearm.L", palette::PINK);
+            frame.marker_on_top(wrist, 10.0, palette::PINK);
+            frame.label_with_priority(wrist, "forearm.L", palette::PINK, 1);
+            frame.contact_shadow(placement.transform_point3(Vec3::ZERO), 0.3);
         }
+        for k in 0..2 {
+            let c = self.forearm_outline(k);
+            frame.stroke(&[c[0], c[1], c[2], c[3], c[0]], palette::PINK, outline);
+            // The angle at the corner between the edges along the forearm and across it.
+            let (a, b) = ((c[1] - c[2]).normalize(), (c[3] - c[2]).normalize());
+            let angle = a.angle_between(b);
+            let r = 0.05;
+            let arc: Vec<Vec3> = (0..=12)
+                .map(|i| {
+                    let s = i as f32 / 12.0;
+                    let d = if angle.sin().abs() < 1e-4 {
+                        a
+                    } else {
+                        (a * ((1.0 - s) * angle).sin() + b * (s * angle).sin()) / angle.sin()
+                    };
+                    c[2] + d * r
+                })
+                .collect();
+            frame.stroke(
+                &arc,
+                palette::DARK,
+                StrokeStyle {
+                    on_top: true,
+                    ..StrokeStyle::solid(2.0)
+                },
+            );
+            frame.label_with_priority(
+                c[2] + (a + b).normalize_or_zero() * (r + 0.05),
+                format!("{:.0}°", angle / DEG),
+                palette::DARK,
+                2,
+            );
+        }
+        frame.keep_box_in_view(
+            Vec3::new(-0.45, 0.0, -COMPARISON_OFFSET - 0.5),
+            Vec3::new(0.45, 2.05, COMPARISON_OFFSET + 0.5),
+        );
         let describe = |k: usize| {
             let (length, angle) = self.forearm_shape(k);
             format!(

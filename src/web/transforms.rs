@@ -67,9 +67,13 @@ impl SingleShapeScene {
         Ok(m.to_cols_array().to_vec())
     }
 
-    /// Draws the figure; returns the note for the page.
-    pub fn draw(&self, viewer: &mut Viewer) -> Result<String, JsError> {
-        let note = self.scene.draw(&mut viewer.renderer.frame);
+    /// Draws the figure with both boxes `stage` into their two steps (0 to 2; 2: the full
+    /// products); returns the note for the page.
+    pub fn draw(&self, viewer: &mut Viewer, stage: f32) -> Result<String, JsError> {
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, stage)
+            .map_err(js)?;
         viewer.present()?;
         Ok(note)
     }
