@@ -19,6 +19,8 @@ async function ikFigure(id, start) {
   const viewer = await lesson.figure(id);
   if (!viewer) return;
   const figure = document.querySelector(id);
+  // From the front, a little above; the scene declares what stays in view (each chain's reach
+  // and its target), and the camera fits it.
   viewer.setCamera(0.25, 0.45, 0, 4.3, 0.1, 0.25);
   const scene = new IkScene();
   const home = { x: 0.55, y: 0.65, z: 0.15, pole: 0 };
@@ -107,8 +109,8 @@ async function ikFigure(id, start) {
 
 const aimViewer = await lesson.figure('#fig-aim');
 if (aimViewer) {
-  // From the front left, far enough back that the target stays in view over its whole range
-  // (x and z within ±1.2 m, y from 0.6 to 2.6 m), with the cone seen from the side.
+  // From the front left, with the cone seen from the side; the scene declares what stays in
+  // view (the body and the target's loop), and the camera fits it.
   aimViewer.setCamera(0, 1.5, 0, 5.2, -0.95, 0.15);
   const scene = new AimScene();
   const p = { x: 1.2, y: 1.9, z: 1.0, cone: 70 };
