@@ -25,7 +25,7 @@ await skeletonFigure('#fig-skeleton', {
 });
 await skeletonFigure('#fig-interpolation', {
   clip: 'arm circles', keys: 4, joint: 'upper_arm.L', interpolation: 'linear (slerp)',
-  compare: 'linear (nlerp)', axes: false,
+  compare: 'linear (nlerp)', axes: false, camera: [1.2, 0.15],
   controls: ['clip', 'keys', 'interpolation', 'compare', 'joint'], plots: true,
 });
 await skeletonFigure('#fig-crossfade', {
@@ -38,7 +38,10 @@ async function skeletonFigure(id, start) {
   if (!viewer) return;
   const figure = document.querySelector(id);
   const has = (name) => start.controls.includes(name);
-  viewer.setCamera(0, 0.85, 0, 2.5, 0.5, 0.2);
+  // Yaw and pitch: from the front right, or (Figure 2) from the left, where the arm's circle
+  // faces the camera; the scene declares what stays in view and the camera fits it.
+  const [yaw, pitch] = start.camera ?? [0.5, 0.2];
+  viewer.setCamera(0, 0.85, 0, 2.5, yaw, pitch);
   const scene = new SkeletonScene();
   const names = scene.jointNames();
   const parents = scene.parents();

@@ -37,7 +37,7 @@ struct Skinned {
 const MAX_DOTS: usize = 2_000;
 /// Width of a bone on screen, and the size of a bind-pose dot, CSS pixels.
 const BONE_PX: f32 = 2.5;
-const DOT_PX: f32 = 4.0;
+const DOT_PX: f32 = 6.0;
 
 /// What is loaded.
 struct Character {

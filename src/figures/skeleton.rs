@@ -1011,7 +1011,10 @@ impl SkeletonFigure {
     pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let note = self.pose(time_sec)?;
         frame.grid(12, 0.25);
-        frame.labelled_axes(Mat4::IDENTITY, 0.3);
+        if self.compare_clip.is_none() {
+            // The world's axes at the feet (left out of the close view of the paths).
+            frame.labelled_axes(Mat4::IDENTITY, 0.3);
+        }
         let parents = self.skeleton.parents();
         let color = |i: usize| {
             if i == self.selected {
