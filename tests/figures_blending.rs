@@ -425,10 +425,17 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
     assert_eq!(rows.len(), 321);
     assert_eq!(rows[0][0], 0.0);
     assert!((rows[320][0] - 8.0).abs() < 1e-4);
+    let note = l.draw(&mut frame, 2.0).unwrap();
+    assert!(
+        note.contains("At the same clock time (right, red footprints), they slid"),
+        "{note}"
+    );
+    l.set_compare(false);
     assert!(l
         .draw(&mut frame, 2.0)
         .unwrap()
         .contains("not synchronised"));
+    l.set_compare(true);
     for (k, row) in rows.iter().enumerate() {
         let [t, gap_on, gap_off, slide_on, slide_off] = *row;
         assert_eq!(gap_on, 0.0, "synchronised clips are always in step");
@@ -445,6 +452,9 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
                     l.slide_m() * 100.0
                 );
                 assert_eq!(l.phase_gap(t), if synchronised { 0.0 } else { gap_off });
+                // Side by side, each lane's slide is its plot line's.
+                let [on, off] = l.slides_m().map(|m| m * 100.0);
+                assert!((on - slide_on).abs() < 0.05 && (off - slide_off).abs() < 0.05);
             }
         }
     }
@@ -580,5 +590,286 @@ fn footprints_and_slide_follow_the_clips_contacts() {
         (0.005..0.025).contains(&l.slide_m()),
         "walk alone: {} m",
         l.slide_m()
+    );
+}
+
+#[test]
+fn the_speed_sliders_rounded_ends_are_the_clips_own_speeds() {
+    let mut l = LocomotionFigure::new();
+    let mut frame = Frame::default();
+    let (lo, hi) = l.speed_range();
+    // The slider's ends are the speeds rounded to 0.01 m/s (what the page's slider offers).
+    let round = |v: f32| (v * 100.0).round() / 100.0;
+    l.set_speed(round(lo)).unwrap();
+    assert_eq!((l.speed(), l.weight()), (lo, 0.0));
+    assert!(l
+        .draw(&mut frame, 1.0)
+        .unwrap()
+        .contains("run weight 0.000 (the walk alone)"));
+    l.set_speed(round(hi)).unwrap();
+    assert_eq!((l.speed(), l.weight()), (hi, 1.0));
+    assert!(l.draw(&mut frame, 1.0).unwrap().contains("(the run alone)"));
+    // Past half a step from an end is still rejected.
+    assert!(l.set_speed(lo - 0.006).is_err() && l.set_speed(hi + 0.006).is_err());
+    l.set_speed(0.5 * (lo + hi)).unwrap();
+    assert!(l.weight() > 0.0 && l.weight() < 1.0);
+}
+
+/// 8.1 with the classic slip: the weight linear in the speed (right at the two ends only).
+fn linear_in_speed(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    match name {
+        "weight_for_speed" => {
+            let [da, ta, db, tb, v] = args.try_into().unwrap();
+            let (va, vb) = (ta / da, tb / db);
+            Ok(vec![((v - va) / (vb - va)).clamp(0.0, 1.0)])
+        }
+        _ => direct(name, args),
+    }
+}
+
+/// 8.1 right inside the range but never clamped.
+fn unclamped(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    match name {
+        "weight_for_speed" => {
+            let [da, ta, db, tb, v] = args.try_into().unwrap();
+            Ok(vec![(v * da - ta) / ((tb - ta) - v * (db - da))])
+        }
+        _ => direct(name, args),
+    }
+}
+
+fn reference_8_1(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    match name {
+        "weight_for_speed" => {
+            use inbetween::skeleton::{weight_for_speed, RootMotion};
+            let [da, ta, db, tb, v] = args.try_into().unwrap();
+            let m = |d: f32, t: f32| RootMotion {
+                start: Vec3::ZERO,
+                cycle_travel: Vec3::new(0.0, 0.0, t),
+                duration_sec: d,
+            };
+            Ok(vec![weight_for_speed(&m(da, ta), &m(db, tb), v)])
+        }
+        _ => direct(name, args),
+    }
+}
+
+fn panicking(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::Panicked(
+        "attempt to divide by zero (src/exercises/blending.rs:40:9)".into(),
+    ))
+}
+
+#[test]
+fn the_note_checks_the_students_weight_at_this_speed_and_the_probes() {
+    let mut l = LocomotionFigure::new();
+    let mut frame = Frame::default();
+    let reference = l.weight();
+    l.set_runner(reference_8_1);
+    l.set_use_exercise(true);
+    let note = l.draw(&mut frame, 1.0).unwrap();
+    assert!(
+        note.contains("Your weight_for_speed (8.1) matches the reference at v = "),
+        "{note}"
+    );
+    assert!(
+        note.contains("It also matches at the probe speeds"),
+        "{note}"
+    );
+    assert_eq!(l.weight(), reference);
+
+    // Linear in the speed: wrong at the default (middle) speed, and the figure blends with it.
+    l.set_runner(linear_in_speed);
+    let note = l.draw(&mut frame, 1.0).unwrap();
+    assert!(note.contains("differs at v = "), "{note}");
+    assert!(
+        note.contains("The figure blends with your weight"),
+        "{note}"
+    );
+    assert!(
+        (l.weight() - reference).abs() > 0.02,
+        "{} {reference}",
+        l.weight()
+    );
+
+    // Unclamped: right at this speed, wrong below the walk and above the run, and says so.
+    l.set_runner(unclamped);
+    let note = l.draw(&mut frame, 1.0).unwrap();
+    assert!(note.contains("matches the reference at v = "), "{note}");
+    assert!(
+        note.contains("it differs at v = 0.300") && note.contains("v = 2.500"),
+        "{note}"
+    );
+    assert!(
+        !note.contains("v = 1.") || !note.contains("differs at v = 1."),
+        "{note}"
+    );
+
+    // A panic: the reference blends, and the note says where.
+    l.set_runner(panicking);
+    let note = l.draw(&mut frame, 1.0).unwrap();
+    assert!(
+        note.contains("panicked") && note.contains("blending.rs:40:9"),
+        "{note}"
+    );
+    assert_eq!(l.weight(), reference);
+
+    // The stub (the plain direct runner in a build without solutions) is "not done yet".
+    l.set_runner(direct);
+    let note = l.draw(&mut frame, 1.0).unwrap();
+    if !cfg!(feature = "solutions") {
+        assert!(
+            note.contains("Not done yet: exercise 8.1 weight_for_speed"),
+            "{note}"
+        );
+    }
+    l.set_use_exercise(false);
+    assert!(!l.draw(&mut frame, 1.0).unwrap().contains("8.1"));
+}
+
+fn crossfade_args(args: &[f32]) -> (Vec3, glam::Quat, Vec3, glam::Quat, f32) {
+    (
+        Vec3::from_slice(&args[0..3]),
+        glam::Quat::from_slice(&args[3..7]),
+        Vec3::from_slice(&args[7..10]),
+        glam::Quat::from_slice(&args[10..14]),
+        args[14],
+    )
+}
+
+/// 6.3 without the short-arc flip: right wherever a·b ≥ 0.
+fn no_flip(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name != "crossfade_joint" {
+        return direct(name, args);
+    }
+    let (ta, qa, tb, qb, w) = crossfade_args(args);
+    let t = ta.lerp(tb, w);
+    let q = glam::Quat::from_vec4(glam::Vec4::from(qa).lerp(glam::Vec4::from(qb), w)).normalize();
+    Ok([t.to_array().as_slice(), q.to_array().as_slice()].concat())
+}
+
+#[test]
+fn the_crossfade_probes_catch_a_missing_short_arc_flip() {
+    let mut f = BlendFigure::new();
+    f.set_runner(no_flip);
+    f.set_use_exercise(true);
+    let note = f.pose(0.3).unwrap();
+    // The clips' own rotations all lie on one hemisphere: the joints alone cannot tell.
+    assert!(
+        note.contains("matches the reference at all 21 joints"),
+        "{note}"
+    );
+    assert!(
+        note.contains(
+            "On the upper arm's probes it differs at w = 0.5 with B's rotation negated (a·b < 0)."
+        ),
+        "{note}"
+    );
+    assert!(!note.contains("w = 0.25,"), "{note}");
+}
+
+/// Rows of the arm plot as `[t, a, b, mix, with additive]`.
+fn arm_rows(f: &mut BlendFigure) -> Vec<[f32; 5]> {
+    f.arm_samples(61)
+        .unwrap()
+        .chunks(5)
+        .map(|r| r.try_into().unwrap())
+        .collect()
+}
+
+#[test]
+fn the_arm_plot_follows_the_weights_the_mask_and_the_additive_layer() {
+    let mut f = BlendFigure::new();
+    f.set_clips("walk", "wave").unwrap();
+    let max = |rows: &[[f32; 5]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MIN, f32::max);
+    let min = |rows: &[[f32; 5]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MAX, f32::min);
+    // One cycle of clip A, the last row at its end, which repeats the first.
+    f.set_weight(0.0).unwrap();
+    let rows = arm_rows(&mut f);
+    assert_eq!(rows.len(), 61);
+    assert!((rows[60][0] - f.duration_sec()).abs() < 1e-5);
+    assert_eq!(rows[60][1..], rows[0][1..]);
+    for r in &rows {
+        assert!(
+            (r[3] - r[1]).abs() < 0.01 && r[4] == r[3],
+            "weight 0 is clip A: {r:?}"
+        );
+    }
+    // The walk swings the arm a little; the wave holds it high.
+    assert!(max(&rows, 1) < 45.0 && min(&rows, 2) > 120.0, "{rows:?}");
+    f.set_weight(1.0).unwrap();
+    for r in &arm_rows(&mut f) {
+        assert!((r[3] - r[2]).abs() < 0.01, "weight 1 is clip B: {r:?}");
+    }
+    // The Try this: the upper body from B at 0.5 raises the arm only part of the way.
+    f.set_mask("upper body from B").unwrap();
+    f.set_weight(0.5).unwrap();
+    let rows = arm_rows(&mut f);
+    for r in &rows {
+        assert!(r[3] > r[1] + 20.0 && r[3] < r[2] - 20.0, "half way: {r:?}");
+    }
+    // The lower body from B leaves the arm to A.
+    f.set_mask("lower body from B").unwrap();
+    for r in &arm_rows(&mut f) {
+        assert!((r[3] - r[1]).abs() < 0.01, "{r:?}");
+    }
+    // The additive Try this: weight of B 0, the wave added: the arm is up and still swings a
+    // little with the walk (it moves more over the cycle than the wave alone).
+    f.set_mask("whole body").unwrap();
+    f.set_weight(0.0).unwrap();
+    f.set_additive("wave (a clip)", 1.0).unwrap();
+    let rows = arm_rows(&mut f);
+    assert!(min(&rows, 4) > 135.0, "{rows:?}");
+    let swing = |i: usize| max(&rows, i) - min(&rows, i);
+    assert!(
+        swing(4) > swing(2) + 2.0,
+        "{} against {}",
+        swing(4),
+        swing(2)
+    );
+}
+
+#[test]
+fn the_ghost_is_the_pose_before_the_additive_layer() {
+    let mut f = BlendFigure::new();
+    let mut frame = Frame::default();
+    f.set_weight(0.0).unwrap();
+    f.draw(&mut frame, 0.4).unwrap();
+    let plain = frame.strokes.len();
+    assert!(!frame.keep_in_view.is_empty());
+    // Every joint stays in the box the camera keeps in view.
+    let (lo, hi) = (frame.keep_in_view[0], frame.keep_in_view[7]);
+    for clip in human::CLIP_NAMES {
+        f.set_clips("walk", clip).unwrap();
+        f.set_weight(1.0).unwrap();
+        f.set_additive("lean forward (a pose)", 1.0).unwrap();
+        for k in 0..20 {
+            f.pose(0.05 * k as f32).unwrap();
+            for p in f.model() {
+                let p = Vec3::from(p.translation);
+                assert!(
+                    p.cmpge(lo).all() && p.cmple(hi).all(),
+                    "{clip}: {p} outside {lo}..{hi}"
+                );
+            }
+        }
+    }
+    f.set_clips("walk", "wave").unwrap();
+    f.set_weight(0.0).unwrap();
+    f.set_additive("wave (a clip)", 1.0).unwrap();
+    frame = Frame::default();
+    f.draw(&mut frame, 0.4).unwrap();
+    assert_eq!(
+        frame.strokes.len(),
+        plain + 20,
+        "one ghost bone per joint with a parent"
+    );
+    let base = Vec3::from(f.base_model()[5].translation);
+    assert!(
+        f.base_model()
+            .iter()
+            .zip(f.model())
+            .any(|(a, b)| { Vec3::from(a.translation).distance(Vec3::from(b.translation)) > 0.2 }),
+        "{base}"
     );
 }

@@ -5,51 +5,111 @@ import { BlendScene, LocomotionScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
-const blendViewer = await lesson.figure('#fig-blend');
-if (blendViewer) {
-  // Far enough back that a hand raised over the head stays in view in a wide, short canvas.
-  blendViewer.setCamera(0, 1.0, 0, 3.7, 0.6, 0.15);
+// The arm plots' colours: clip A grey, clip B teal, the mix dark, the layered pose orange.
+const GREY = '#7f7f7f';
+const TEAL = '#17a2a8';
+const DARK = '#333333';
+const ORANGE = '#e68a00';
+const ARM_SAMPLES = 61;
+
+// Figures 1 and 2: the simple human, a BlendScene each. `controls` adds the figure's own
+// controls; `series` picks the columns of armSamples() the plot shows.
+async function blendFigure(id, { title, setup, controls, series, names, colors, widths }) {
+  const viewer = await lesson.figure(`#${id}`);
+  if (!viewer) return;
+  // Orbit only: the camera fits the body (raised hand included) that the figure keeps in view.
+  viewer.setCamera(0, 1.0, 0, 3.7, 0.6, 0.15);
   const scene = new BlendScene();
-  const timeline = new Timeline(document.getElementById('blend-timeline'), { duration: scene.durationSec(), playing: true });
-  const p = { a: 'walk', b: 'wave', weight: 0.5, mask: 'whole body', additive: 'none', additiveWeight: 1, useExercise: false };
-  const gui = new GUI({ container: document.querySelector('#fig-blend .panel'), title: 'Blend' });
-  const clips = scene.clipNames();
-  const applyClips = () => {
-    scene.setClips(p.a, p.b);
+  setup(scene);
+  const timeline = new Timeline(document.querySelector(`#${id} .timeline`), { duration: scene.durationSec(), playing: true });
+  const plot = new Plot(document.querySelector(`#${id} .plot`), {
+    title: 'Right upper arm over one cycle', xLabel: 'time (s)', yLabel: 'arm raised (°)',
+    series: names, colors, widths, yRange: [0, 180], height: 200,
+  });
+  const replot = () => {
+    const cols = columns(scene.armSamples(ARM_SAMPLES), 5);
+    plot.setData([cols[0], ...series.map((i) => cols[i])]);
+  };
+  const retime = () => {
     timeline.duration = scene.durationSec();
     timeline.time %= timeline.duration;
     timeline.show();
+    replot();
   };
-  gui.add(p, 'a', clips).name('clip A').onChange(applyClips);
-  gui.add(p, 'b', clips).name('clip B').onChange(applyClips);
-  gui.add(p, 'weight', 0, 1, 0.01).name('weight of B').onChange(() => scene.setWeight(p.weight));
-  gui.add(p, 'mask', ['whole body', 'upper body from B', 'lower body from B']).name('mask').onChange(() => scene.setMask(p.mask));
-  const applyAdditive = () => scene.setAdditive(p.additive, p.additiveWeight);
-  gui.add(p, 'additive', ['none', 'lean forward (a pose)', 'wave (a clip)']).name('additive layer').onChange(applyAdditive);
-  gui.add(p, 'additiveWeight', 0, 1, 0.01).name('additive weight').onChange(applyAdditive);
-  gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
-  const note = document.getElementById('blend-note');
+  const gui = new GUI({ container: document.querySelector(`#${id} .panel`), title });
+  controls(gui, scene, { replot, retime });
+  replot();
+  const note = document.querySelector(`#${id} .note`);
   lesson.onFrame((dt) => {
-    showNote(note, scene.draw(blendViewer, timeline.advance(dt)));
-    markDrawn('#fig-blend');
+    const t = timeline.advance(dt);
+    showNote(note, scene.draw(viewer, t));
+    plot.setCursor(t);
+    markDrawn(`#${id}`);
   });
+}
+
+await blendFigure('fig-blend', {
+  title: 'Blend',
+  setup: () => {},
+  // A, B and the mix; the mix narrow on top, so where it equals A or B both stay visible.
+  series: [1, 2, 3],
+  names: ['clip A', 'clip B', 'the mix'],
+  colors: [GREY, TEAL, DARK],
+  widths: [6, 6, 2],
+  controls: (gui, scene, { replot, retime }) => {
+    const p = { a: 'walk', b: 'wave', weight: 0.5, mask: 'whole body', useExercise: false };
+    const clips = scene.clipNames();
+    const applyClips = () => { scene.setClips(p.a, p.b); retime(); };
+    gui.add(p, 'a', clips).name('clip A').onChange(applyClips);
+    gui.add(p, 'b', clips).name('clip B').onChange(applyClips);
+    gui.add(p, 'weight', 0, 1, 0.01).name('weight of B').onChange(() => { scene.setWeight(p.weight); replot(); });
+    gui.add(p, 'mask', ['whole body', 'upper body from B', 'lower body from B']).name('mask')
+      .onChange(() => { scene.setMask(p.mask); replot(); });
+    gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
+  },
+});
+
+await blendFigure('fig-additive', {
+  title: 'Additive layer',
+  // The base plays alone (weight of B 0): the layer is all that is added.
+  setup: (scene) => {
+    scene.setClips('walk', 'wave');
+    scene.setWeight(0);
+    scene.setAdditive('wave (a clip)', 1);
+  },
+  // The base, the wave alone and the base with the layer.
+  series: [1, 2, 4],
+  names: ['base clip', 'wave alone', 'base + layer'],
+  colors: [GREY, TEAL, ORANGE],
+  widths: [6, 6, 2],
+  controls: (gui, scene, { replot, retime }) => {
+    const p = { base: 'walk', additive: 'wave (a clip)', additiveWeight: 1 };
+    gui.add(p, 'base', scene.clipNames()).name('base clip').onChange(() => { scene.setClips(p.base, 'wave'); retime(); });
+    const apply = () => { scene.setAdditive(p.additive, p.additiveWeight); replot(); };
+    gui.add(p, 'additive', ['none', 'lean forward (a pose)', 'wave (a clip)']).name('additive layer').onChange(apply);
+    gui.add(p, 'additiveWeight', 0, 1, 0.01).name('layer weight').onChange(apply);
+  },
+});
+
+// Figures 3 and 4: the travelling walk and run blended for a speed.
+function speedSlider(gui, scene, p, after) {
+  const [lo, hi] = scene.speedRange();
+  // The slider's ends, rounded to its step, stand for the clips' own speeds (Rust snaps them).
+  const round = (v) => Math.round(v * 100) / 100;
+  gui.add(p, 'speed', round(lo), round(hi), 0.01).name('speed (m/s)').onChange(() => { scene.setSpeed(p.speed); after(); });
+  return [lo, hi];
 }
 
 const locoViewer = await lesson.figure('#fig-locomotion');
 if (locoViewer) {
-  // Far enough back that the whole 4 m track stays in a 650 px wide canvas (1600 x 1000 page):
-  // at 4.2 m the character near the track's +z end would touch the left edge.
-  locoViewer.setCamera(0, 0.8, 0, 4.8, 1.2, 0.25);
+  // A raised three-quarter view: both lanes side by side, the footprints seen from above.
+  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.4, 0.5);
   const scene = new LocomotionScene();
-  const [lo, hi] = scene.speedRange();
-  const round = (v) => Math.round(v * 100) / 100;
-  const p = { speed: round((lo + hi) / 2), synchronised: true, rootMotion: true };
-  scene.setSpeed(p.speed);
+  const p = { speed: 0, useExercise: false };
   // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.
   const timeline = new Timeline(document.getElementById('loco-timeline'), { duration: scene.loopSec(), playing: true });
-  // Both settings at once, whatever the checkbox says: the synchronised line is drawn wide
-  // underneath and the other narrow on top, so where they agree both stay visible. Both plots
-  // as tall as the longer y label needs (the shell sizes each plot by its own label).
+  // Both settings, as in the view: the synchronised line is drawn wide underneath and the other
+  // narrow on top, so where they agree both stay visible.
   const series = ['synchronised', 'same clock time'];
   const colors = ['#1f6fd6', '#d62728'];
   // Fixed y ranges (from Rust): the same scale at every speed, so a small slide looks small.
@@ -69,9 +129,11 @@ if (locoViewer) {
     slidePlot.setData([t, slideOn, slideOff]);
   };
   const gui = new GUI({ container: document.querySelector('#fig-locomotion .panel'), title: 'Locomotion' });
-  gui.add(p, 'speed', Math.ceil(lo * 100) / 100, Math.floor(hi * 100) / 100, 0.01).name('speed (m/s)').onChange(() => { scene.setSpeed(p.speed); replot(); });
-  gui.add(p, 'synchronised').name('synchronised').onChange((on) => scene.setSynchronised(on));
-  gui.add(p, 'rootMotion').name('root motion').onChange((on) => scene.setRootMotion(on));
+  const [lo, hi] = scene.speedRange();
+  p.speed = Math.round(50 * (lo + hi)) / 100;
+  scene.setSpeed(p.speed);
+  speedSlider(gui, scene, p, replot);
+  gui.add(p, 'useExercise').name('use my exercise').onChange((on) => { scene.setUseExercise(on); replot(); });
   replot();
   const note = document.getElementById('loco-note');
   lesson.onFrame((dt) => {
@@ -80,5 +142,25 @@ if (locoViewer) {
     gapPlot.setCursor(t);
     slidePlot.setCursor(t);
     markDrawn('#fig-locomotion');
+  });
+}
+
+const rootViewer = await lesson.figure('#fig-root');
+if (rootViewer) {
+  rootViewer.setCamera(0, 0.8, 0, 4.5, 1.1, 0.3);
+  const scene = new LocomotionScene();
+  scene.setCompare(false);
+  const p = { speed: 0, rootMotion: true };
+  const timeline = new Timeline(document.getElementById('root-timeline'), { duration: scene.loopSec(), playing: true });
+  const gui = new GUI({ container: document.querySelector('#fig-root .panel'), title: 'Root motion' });
+  const [lo, hi] = scene.speedRange();
+  p.speed = Math.round(50 * (lo + hi)) / 100;
+  scene.setSpeed(p.speed);
+  speedSlider(gui, scene, p, () => {});
+  gui.add(p, 'rootMotion').name('root motion').onChange((on) => scene.setRootMotion(on));
+  const note = document.getElementById('root-note');
+  lesson.onFrame((dt) => {
+    showNote(note, scene.draw(rootViewer, timeline.advance(dt)));
+    markDrawn('#fig-root');
   });
 }

@@ -50,26 +50,14 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     type Speed = (f32, f32, f32, f32, f32);
     let (da, ta, db, tb) = (1.0, 1.4, 0.7, 2.1);
     let mut cases: Vec<(&str, Speed)> = vec![
-        (
-            "the walk's own speed: weight 0",
-            (da, ta, db, tb, ta / da),
-        ),
-        (
-            "the run's own speed: weight 1",
-            (da, ta, db, tb, tb / db),
-        ),
+        ("the walk's own speed: weight 0", (da, ta, db, tb, ta / da)),
+        ("the run's own speed: weight 1", (da, ta, db, tb, tb / db)),
         (
             "halfway between the speeds: not halfway in weight (the cycle shortens too)",
             (da, ta, db, tb, 0.5 * (ta / da + tb / db)),
         ),
-        (
-            "slower than the walk: clamped to 0",
-            (da, ta, db, tb, 0.5),
-        ),
-        (
-            "faster than the run: clamped to 1",
-            (da, ta, db, tb, 5.0),
-        ),
+        ("slower than the walk: clamped to 0", (da, ta, db, tb, 0.5)),
+        ("faster than the run: clamped to 1", (da, ta, db, tb, 5.0)),
         (
             "clips of equal duration: the weight is linear in the speed",
             (1.0, 1.0, 1.0, 3.0, 2.5),

@@ -24,9 +24,15 @@ use crate::transform::JointShape;
 use glam::{Affine3A, EulerRot, Mat4, Quat, Vec3};
 
 const EXERCISE_FILE: &str = "src/exercises/skeleton.rs";
+/// Where the lesson's own exercise, 8.1, lives.
+const BLENDING_FILE: &str = "src/exercises/blending.rs";
 /// How close the student's blend must be to the reference's.
 const TOLERANCE: f32 = 1e-4;
 const JOINT_RADIUS: f32 = 0.02;
+/// The width of the lines between joints, CSS pixels.
+const BONE_PX: f32 = 2.0;
+/// The width of the ghost of the pose before the additive layer, CSS pixels.
+const GHOST_PX: f32 = 3.0;
 
 /// What the mask dropdown offers, in order.
 pub const MASKS: [&str; 3] = ["whole body", "upper body from B", "lower body from B"];
@@ -55,6 +61,10 @@ pub struct BlendFigure {
     pose: Pose,
     scratch: Pose,
     model: Vec<Affine3A>,
+    /// The model matrices before the additive layer (drawn as a ghost when one is on).
+    base_model: Vec<Affine3A>,
+    /// The right upper arm and its child (the elbow): the joints the plot measures.
+    arm: [usize; 2],
 }
 
 impl Default for BlendFigure {
@@ -86,7 +96,13 @@ impl BlendFigure {
         let mut lean = skeleton.rest_pose();
         make_additive(&lean_pose, &skeleton.rest_pose(), &mut lean).expect("same skeleton");
         let n = skeleton.len();
+        let shoulder = skeleton.find("upper_arm.R").expect("a joint of the human");
+        let elbow = (0..n)
+            .find(|&j| skeleton.parents()[j] == shoulder as i32)
+            .expect("the upper arm has a child");
         let mut figure = Self {
+            arm: [shoulder, elbow],
+            base_model: vec![Affine3A::IDENTITY; n],
             clips,
             a: 1,
             b: 3,
@@ -223,6 +239,12 @@ impl BlendFigure {
         if self.use_exercise {
             notes.push(self.student_blend());
         }
+        local_to_model(
+            self.skeleton.parents(),
+            &self.pose.local,
+            self.skeleton.scale_mode(),
+            &mut self.base_model,
+        );
         match self.additive {
             1 => {
                 add_additive(
@@ -258,10 +280,71 @@ impl BlendFigure {
         Ok(notes.join(" "))
     }
 
+    /// How far the right upper arm is raised in `model`: its angle from hanging straight down,
+    /// degrees (0 hanging, 90 level with the shoulder, 180 straight up).
+    pub fn arm_raise_deg(&self, model: &[Affine3A]) -> f32 {
+        let [shoulder, elbow] = self.arm;
+        let d = Vec3::from(model[elbow].translation - model[shoulder].translation);
+        d.normalize_or_zero()
+            .dot(Vec3::NEG_Y)
+            .clamp(-1.0, 1.0)
+            .acos()
+            .to_degrees()
+    }
+
+    /// The model matrices of the last pose (after the additive layer).
+    pub fn model(&self) -> &[Affine3A] {
+        &self.model
+    }
+
+    /// The model matrices of the last pose before the additive layer.
+    pub fn base_model(&self) -> &[Affine3A] {
+        &self.base_model
+    }
+
+    /// The plot over one cycle of clip A (`samples` rows, the last at its end): rows of
+    /// ```text
+    /// [time (s), right arm raised (°): clip A alone, clip B alone (same phase),
+    ///            the mix (this mask and weight), the mix with the additive layer]
+    /// ```
+    /// computed with the reference blend (the student's is checked in the note).
+    pub fn arm_samples(&mut self, samples: usize) -> Result<Vec<f32>, String> {
+        super::check_samples(samples)?;
+        let use_exercise = std::mem::replace(&mut self.use_exercise, false);
+        let d = self.duration_sec();
+        let mut out = Vec::with_capacity(5 * samples);
+        let mut alone = vec![Affine3A::IDENTITY; self.skeleton.len()];
+        for k in 0..samples {
+            let t = d * k as f32 / (samples - 1) as f32;
+            // The last row is the cycle's end, which loops back to its start.
+            let t_pose = if k + 1 == samples { 0.0 } else { t };
+            if let Err(e) = self.pose(t_pose) {
+                self.use_exercise = use_exercise;
+                return Err(e);
+            }
+            out.push(t);
+            for pose in [&self.pose_a, &self.pose_b] {
+                local_to_model(
+                    self.skeleton.parents(),
+                    &pose.local,
+                    self.skeleton.scale_mode(),
+                    &mut alone,
+                );
+                out.push(self.arm_raise_deg(&alone));
+            }
+            out.push(self.arm_raise_deg(&self.base_model));
+            out.push(self.arm_raise_deg(&self.model));
+        }
+        self.use_exercise = use_exercise;
+        Ok(out)
+    }
+
     fn describe(&self) -> String {
         let names = human::CLIP_NAMES;
         let w = format_number(self.weight);
         let mix = match self.mask {
+            0 if self.weight == 0.0 => format!("{} plays alone (weight of B 0).", names[self.a]),
+            0 if self.weight == 1.0 => format!("{} plays alone (weight of B 1).", names[self.b]),
             0 => format!("{} crossfaded with {} at weight {w}.", names[self.a], names[self.b]),
             1 => format!(
                 "Upper body (spine and up): {} mixed into {} at weight {w}; legs and pelvis: {} only.",
@@ -330,7 +413,7 @@ impl BlendFigure {
                 self.pose.local[j].rotation = yours.1.normalize();
             }
         }
-        match first_wrong {
+        let here = match first_wrong {
             None => format!(
                 "Your crossfade_joint matches the reference at all {} joints.",
                 self.skeleton.len()
@@ -343,6 +426,54 @@ impl BlendFigure {
                 );
                 compare_note("crossfade_joint", &at, &yours, &reference, TOLERANCE).1
             }
+        };
+        format!("{here} {}", self.probe_crossfade())
+    }
+
+    /// Exercise 6.3 on inputs the current settings may not reach: the right upper arm's A and B
+    /// at w = 0, 0.25 and 1, and with B's rotation negated (a·b < 0, the short-arc flip) at
+    /// w = 0.5. Says which differ.
+    fn probe_crossfade(&self) -> String {
+        let j = self.arm[0];
+        let (x, y) = (self.pose_a.local[j], self.pose_b.local[j]);
+        let mut flipped = y;
+        flipped.rotation = -y.rotation;
+        let probes = [
+            ("w = 0", y, 0.0),
+            ("w = 0.25", y, 0.25),
+            ("w = 1", y, 1.0),
+            ("w = 0.5 with B's rotation negated (a·b < 0)", flipped, 0.5),
+        ];
+        let mut differ = Vec::new();
+        for (what, b, w) in probes {
+            let reference = crossfade_transform(&x, &b, w);
+            match run::crossfade_joint(
+                self.runner,
+                x.translation,
+                x.rotation,
+                b.translation,
+                b.rotation,
+                w,
+            ) {
+                Ok((t, q)) => {
+                    let close_t = (t - reference.translation).abs().max_element() <= TOLERANCE;
+                    // q and −q are the same rotation: compare up to sign.
+                    let close_q = q.dot(reference.rotation).abs() >= 1.0 - TOLERANCE
+                        && (q.length() - 1.0).abs() <= TOLERANCE;
+                    if !(close_t && close_q) {
+                        differ.push(what);
+                    }
+                }
+                Err(_) => differ.push(what),
+            }
+        }
+        if differ.is_empty() {
+            "It also matches on the upper arm's probes (w = 0, 0.25, 1, and a·b < 0).".into()
+        } else {
+            format!(
+                "On the upper arm's probes it differs at {}.",
+                differ.join(", ")
+            )
         }
     }
 
@@ -367,6 +498,22 @@ impl BlendFigure {
             // teal tint on the blue shirt and trousers): the same weight, the same colour.
             |_| 1.0,
         );
+        if self.additive != 0 && self.additive_weight > 0.0 {
+            // The pose before the additive layer, as a ghost: where it differs from the body,
+            // the difference is the layer's part.
+            for (j, &parent) in self.skeleton.parents().iter().enumerate() {
+                let p = Vec3::from(self.base_model[j].translation);
+                if parent >= 0 {
+                    let a = Vec3::from(self.base_model[parent as usize].translation);
+                    frame.wide_line(a, p, palette::ORANGE, GHOST_PX);
+                }
+            }
+            let hand = Vec3::from(self.base_model[self.arm[1]].translation);
+            frame.marker(hand, crate::draw::DOT_PX, palette::ORANGE);
+        }
+        frame.contact_shadow(Vec3::ZERO, 0.3);
+        // The body with a hand raised over the head, or leaning forwards: kept in view.
+        frame.keep_box_in_view(Vec3::new(-0.75, -0.05, -0.85), Vec3::new(0.75, 2.2, 0.85));
         Ok(note)
     }
 }
@@ -398,7 +545,7 @@ fn draw_character(
         );
         if parent >= 0 {
             let a = world.transform_point3(model[parent as usize].translation.into());
-            frame.line(a, p, color(j));
+            frame.wide_line(a, p, color(j), BONE_PX);
         }
     }
 }
@@ -430,6 +577,18 @@ pub struct LocomotionFigure {
     slide_m: f32,
     /// Where the character's origin was at the last draw (before wrapping onto the track).
     origin: Vec3,
+    /// Both settings side by side (synchronised on the left, same clock time on the right)
+    /// instead of the one `synchronised` names.
+    compare: bool,
+    /// The planted feet's slide at the last draw, metres: `[synchronised, same clock time]`
+    /// (only the current setting's when not comparing).
+    slides_m: [f32; 2],
+    /// The run's weight in use: the reference's, or the student's 8.1 with "use my exercise".
+    w: f32,
+    use_exercise: bool,
+    runner: Runner,
+    /// What the note says about the student's 8.1 (empty when not in use).
+    exercise_note: String,
 }
 
 impl Default for LocomotionFigure {
@@ -438,10 +597,20 @@ impl Default for LocomotionFigure {
     }
 }
 
+/// How big a footprint is drawn, CSS pixels (the same at any distance).
+const FOOTPRINT_PX: f32 = 7.0;
 /// How high above the ground the footprints are drawn, metres (just clear of the grid).
 const FOOTPRINT_HEIGHT: f32 = 0.005;
 /// The character walks along z on a loop this long (metres), so it stays in view.
-const TRACK_LENGTH: f32 = 4.0;
+const TRACK_LENGTH: f32 = 3.0;
+/// Where the two characters walk when compared: synchronised at −x, same clock time at +x.
+pub const LANE_X: f32 = 0.75;
+/// A speed within this of an end of the range (half the slider's 0.01 m/s step) is that end:
+/// the slider's rounded ends stand for the walk's and the run's own speeds.
+pub const SPEED_SNAP: f32 = 0.005;
+/// The speeds (m/s) at which the note checks the student's 8.1 besides the current one: below
+/// the walk's, above the run's (both clamp), and the figure's range ends and middle are added.
+const PROBE_SPEEDS: [f32; 2] = [0.3, 2.5];
 /// How far back in time the footprints go, seconds, and how many samples.
 const FOOTPRINT_SEC: f32 = 1.5;
 const FOOTPRINT_SAMPLES: usize = 60;
@@ -486,9 +655,118 @@ impl LocomotionFigure {
             footprints: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
             slide_m: 0.0,
             origin: Vec3::ZERO,
+            compare: true,
+            slides_m: [0.0; 2],
+            w: 0.0,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            exercise_note: String::new(),
             skeleton,
             shapes,
         }
+        .with_weight()
+    }
+
+    fn with_weight(mut self) -> Self {
+        self.update_weight();
+        self
+    }
+
+    /// The run's weight for the current speed: the reference's, or with "use my exercise" the
+    /// student's 8.1 (clamped to [0, 1] for the pose; the reference where it gives no answer).
+    /// Also writes the note's verdict on the student's 8.1 at this speed and the probe speeds.
+    fn update_weight(&mut self) {
+        let reference = weight_for_speed(&self.motion[0], &self.motion[1], self.speed);
+        self.w = reference;
+        self.exercise_note.clear();
+        if !self.use_exercise {
+            return;
+        }
+        let [(da, ta), (db, tb)] = self
+            .motion
+            .map(|m| (m.duration_sec, m.cycle_travel.length()));
+        let student = |v: f32| run::weight_for_speed(self.runner, da, ta, db, tb, v);
+        let yours = match student(self.speed) {
+            Ok(w) => w,
+            Err(failure) => {
+                self.exercise_note =
+                    failure_note("exercise 8.1 weight_for_speed", BLENDING_FILE, &failure);
+                return;
+            }
+        };
+        if yours.is_finite() {
+            self.w = yours.clamp(0.0, 1.0);
+        }
+        let (lo, hi) = self.speed_range();
+        let probes = [lo, 0.5 * (lo + hi), hi, PROBE_SPEEDS[0], PROBE_SPEEDS[1]];
+        let at = format!("v = {} m/s", format_number(self.speed));
+        let (ok, mut note) = compare_note(
+            "weight_for_speed (8.1)",
+            &at,
+            &[yours],
+            &[reference],
+            TOLERANCE,
+        );
+        let differ: Vec<String> = probes
+            .iter()
+            .filter_map(|&v| {
+                let r = weight_for_speed(&self.motion[0], &self.motion[1], v);
+                match student(v) {
+                    Ok(y) if (y - r).abs() <= TOLERANCE => None,
+                    Ok(y) => Some(format!(
+                        "v = {} (yours {}, reference {})",
+                        format_number(v),
+                        format_number(y),
+                        format_number(r)
+                    )),
+                    Err(f) => Some(format!("v = {} ({f})", format_number(v))),
+                }
+            })
+            .collect();
+        let probes_text = probes
+            .iter()
+            .map(|v| format_number(*v))
+            .collect::<Vec<_>>()
+            .join(", ");
+        note += &if differ.is_empty() {
+            format!(" It also matches at the probe speeds {probes_text} m/s.")
+        } else {
+            format!(
+                " Of the probe speeds {probes_text} m/s it differs at {}.",
+                differ.join("; ")
+            )
+        };
+        if ok && yours.is_finite() && !(0.0..=1.0).contains(&yours) {
+            note += " (Its weight lies outside [0, 1]: the figure clamps it.)";
+        }
+        if !yours.is_finite() {
+            note += " It is not a number: the figure uses the reference.";
+        } else if !ok {
+            note += " The figure blends with your weight: watch the note's speed.";
+        }
+        self.exercise_note = note;
+    }
+
+    /// Blends with the student's exercise 8.1 (through the runner) instead of the reference.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.update_weight();
+    }
+
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.update_weight();
+    }
+
+    /// Both settings side by side (the default), or only the one `synchronised` names.
+    pub fn set_compare(&mut self, on: bool) {
+        self.compare = on;
+    }
+
+    /// The planted feet's slide over the last 1.5 s at the last draw, metres, `[synchronised,
+    /// same clock time]`; when not comparing, the other setting's entry is 0.
+    pub fn slides_m(&self) -> [f32; 2] {
+        self.slides_m
     }
 
     /// Walking and running speeds, m/s (the slider's range).
@@ -496,10 +774,18 @@ impl LocomotionFigure {
         (self.motion[0].speed(), self.motion[1].speed())
     }
 
-    /// Speed in m/s, within [`LocomotionFigure::speed_range`].
+    /// Speed in m/s, within [`LocomotionFigure::speed_range`]; within [`SPEED_SNAP`] of an end
+    /// it is that end (the walk alone or the run alone).
     pub fn set_speed(&mut self, speed: f32) -> Result<(), String> {
         let (lo, hi) = self.speed_range();
         let speed = finite("speed", speed)?;
+        let speed = if (speed - lo).abs() <= SPEED_SNAP {
+            lo
+        } else if (speed - hi).abs() <= SPEED_SNAP {
+            hi
+        } else {
+            speed
+        };
         if !(lo..=hi).contains(&speed) {
             // The range's ends are measured from the clips: two decimals say it (the slider's).
             return Err(format!(
@@ -507,7 +793,13 @@ impl LocomotionFigure {
             ));
         }
         self.speed = speed;
+        self.update_weight();
         Ok(())
+    }
+
+    /// The speed in use, m/s.
+    pub fn speed(&self) -> f32 {
+        self.speed
     }
 
     pub fn set_synchronised(&mut self, on: bool) {
@@ -567,9 +859,9 @@ impl LocomotionFigure {
         }
     }
 
-    /// The run's weight for the current speed.
+    /// The run's weight for the current speed (the student's with "use my exercise").
     pub fn weight(&self) -> f32 {
-        weight_for_speed(&self.motion[0], &self.motion[1], self.speed)
+        self.w
     }
 
     /// Poses at `time_sec` into `self.pose` and returns where the character's origin is drawn
@@ -722,12 +1014,11 @@ impl LocomotionFigure {
         out
     }
 
-    /// Poses at `time_sec`, draws the character and its footprints. Returns the note.
-    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
-        let t = finite("time", time_sec)?;
-        // Footprints: planted ankles over the last FOOTPRINT_SEC seconds, drawn relative to now.
-        // The slide is measured where the travel has taken each foot, so the snap-back at a loop
-        // (root motion left in the pose) is not counted as sliding.
+    /// The footprints and the slide over the last [`FOOTPRINT_SEC`] before `t` at the current
+    /// setting (into `self.footprints`, relative to the character); returns the slide, metres.
+    /// The slide is measured where the travel has taken each foot, so the snap-back at a loop
+    /// (root motion left in the pose) is not counted as sliding.
+    fn footprints_at(&mut self, t: f32) -> f32 {
         self.footprints.clear();
         self.footprint_feet.clear();
         let (now, _) = self.pose_at(t);
@@ -749,8 +1040,15 @@ impl LocomotionFigure {
                 }
             }
         }
+        slide
+    }
+
+    /// Poses at `t` at the current setting and draws the character, its contact shadow, its
+    /// footprints (markers of a fixed size on screen) and its label in lane `x`. Returns the
+    /// slide, metres.
+    fn draw_lane(&mut self, frame: &mut Frame, t: f32, x: f32, color: Vec3, name: &str) -> f32 {
+        let slide = self.footprints_at(t);
         let (origin, _) = self.pose_at(t);
-        self.slide_m = slide;
         self.origin = origin;
         local_to_model(
             self.skeleton.parents(),
@@ -760,11 +1058,12 @@ impl LocomotionFigure {
         );
         // The character walks along z on a loop of TRACK_LENGTH, so it stays in view.
         let z = (origin.z + 0.5 * TRACK_LENGTH).rem_euclid(TRACK_LENGTH) - 0.5 * TRACK_LENGTH;
-        let place = Vec3::new(origin.x, 0.0, z);
-        frame.grid(16, 0.25);
+        let place = Vec3::new(origin.x + x, 0.0, z);
         for p in &self.footprints {
-            frame.point(*p + place, 0.018, palette::PURPLE);
+            frame.marker(*p + place, FOOTPRINT_PX, color);
         }
+        let pelvis = place + Vec3::from(self.model[0].translation);
+        frame.contact_shadow(Vec3::new(pelvis.x, 0.0, pelvis.z), 0.25);
         draw_character(
             frame,
             &self.skeleton,
@@ -774,23 +1073,73 @@ impl LocomotionFigure {
             |_| palette::DARK,
             |_| 0.0,
         );
+        if !name.is_empty() {
+            frame.label(Vec3::new(place.x, 2.0, place.z), name, color);
+        }
+        slide
+    }
+
+    /// Poses at `time_sec` and draws: comparing, the synchronised blend on the left and the
+    /// same-clock-time blend on the right, each with its footprints; otherwise the one
+    /// `synchronised` names, in the middle. Returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
+        let t = finite("time", time_sec)?;
+        frame.grid(16, 0.25);
+        let own = self.synchronised;
+        self.slides_m = [0.0; 2];
+        if self.compare {
+            // The figure's own setting last, so footprints(), slide_m() and origin() are its.
+            for on in [!own, own] {
+                self.synchronised = on;
+                let (x, color, name) = if on {
+                    (-LANE_X, palette::BLUE, "synchronised")
+                } else {
+                    (LANE_X, palette::RED, "same clock time")
+                };
+                self.slides_m[usize::from(!on)] = self.draw_lane(frame, t, x, color, name);
+            }
+            self.synchronised = own;
+        } else {
+            self.slides_m[usize::from(!own)] = self.draw_lane(frame, t, 0.0, palette::PURPLE, "");
+        }
+        self.slide_m = self.slides_m[usize::from(!own)];
+        // Both lanes, the whole track and a raised head: what the camera must keep in view.
+        let half = 0.5 * TRACK_LENGTH;
+        frame.keep_box_in_view(
+            Vec3::new(-LANE_X - 0.4, 0.0, -half - 0.3),
+            Vec3::new(LANE_X + 0.4, 2.0, half + 0.3),
+        );
         let w = self.weight();
         let (cycle, _, speed) = synchronised_cycle(&self.motion[0], &self.motion[1], w);
+        let (lo, hi) = self.speed_range();
+        let alone = if self.speed == lo {
+            " (the walk alone)"
+        } else if self.speed == hi {
+            " (the run alone)"
+        } else {
+            ""
+        };
         let mut note = format!(
-            "{} m/s: run weight {}, one cycle takes {} s.",
+            "{} m/s: run weight {}{alone}, one cycle takes {} s.",
             format_number(speed),
             format_number(w),
             format_number(cycle)
         );
-        note += if self.synchronised {
-            " Walk and run sampled at the same phase of their cycles."
+        let slid = |m: f32| format!("slid {:.1} cm in the last {FOOTPRINT_SEC} s.", m * 100.0);
+        if self.compare {
+            note += &format!(
+                " Synchronised (left, blue footprints), the planted feet {} At the same clock time (right, red footprints), they {}",
+                slid(self.slides_m[0]),
+                slid(self.slides_m[1])
+            );
         } else {
-            " Walk and run sampled at the same clock time (not synchronised)."
-        };
-        note += &format!(
-            " Planted feet slid {:.1} cm in the last {FOOTPRINT_SEC} s.",
-            slide * 100.0
-        );
+            note += if self.synchronised {
+                " Walk and run sampled at the same phase of their cycles."
+            } else {
+                " Walk and run sampled at the same clock time (not synchronised)."
+            };
+            note += &format!(" Planted feet {}", slid(self.slide_m));
+        }
         if !self.root_motion {
             let snap = if self.synchronised {
                 format!("{:.0} cm", self.snap_back_m()[0] * 100.0)
@@ -805,6 +1154,10 @@ impl LocomotionFigure {
             note += &format!(
                 " Root motion left in the pose: the character steps forwards within each cycle and snaps back {snap} (a jump, not counted as sliding)."
             );
+        }
+        if !self.exercise_note.is_empty() {
+            note.push(' ');
+            note += &self.exercise_note;
         }
         Ok(note)
     }

@@ -63,6 +63,14 @@ impl BlendScene {
         Ok(())
     }
 
+    /// `[time (s), right arm raised (°) in clip A, clip B, the mix, the mix with the additive
+    /// layer]` per sample over one cycle of clip A; `samples` in [2, 10000].
+    #[wasm_bindgen(js_name = armSamples)]
+    pub fn arm_samples(&mut self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
+        self.scene.arm_samples(samples).map_err(js)
+    }
+
     /// Clip A's duration, seconds.
     #[wasm_bindgen(js_name = durationSec)]
     pub fn duration_sec(&self) -> f32 {
@@ -96,9 +104,25 @@ pub struct LocomotionScene {
 impl LocomotionScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> LocomotionScene {
-        LocomotionScene {
-            scene: LocomotionFigure::new(),
-        }
+        let mut scene = LocomotionFigure::new();
+        scene.set_runner(super::sandbox::run);
+        LocomotionScene { scene }
+    }
+
+    /// Blends with the weight from the student's exercise 8.1 (in the sandbox).
+    #[wasm_bindgen(js_name = setUseExercise)]
+    pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
+        self.scene.set_use_exercise(on);
+        Ok(())
+    }
+
+    /// Both settings side by side (`true`, the default) or the one `setSynchronised` names.
+    #[wasm_bindgen(js_name = setCompare)]
+    pub fn set_compare(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
+        self.scene.set_compare(on);
+        Ok(())
     }
 
     /// `[walking speed, running speed]`, m/s.
