@@ -33,8 +33,10 @@ const TOLERANCE: f32 = 1e-4;
 const TRAIL_DOTS: usize = 60;
 /// Radius of a joint's sphere, metres.
 const JOINT_RADIUS: f32 = 0.022;
-/// Length of the equal-time ticks across a path, CSS pixels.
+/// Length of the equal-time ticks across a path, CSS pixels, and how far they sit beside it
+/// when two paths are compared, metres.
 const PATH_TICK_PX: f32 = 14.0;
+const TICK_OFFSET_M: f32 = 0.025;
 /// A joint can be picked this many CSS pixels from its centre, however small it is drawn.
 const PICK_RADIUS_PX: f32 = 10.0;
 /// Where the crossfade's two clips stand beside the blend, metres along x (A left, B right).
@@ -869,6 +871,7 @@ impl SkeletonFigure {
         if self.clip.is_some() {
             let d = self.duration_sec();
             let focus = self.compare_clip.is_some();
+            let mut focus_box = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
             let main = self.clip.map(|c| &self.clips[c]);
             for (clip, path) in [(main, 0), (self.compare_clip.as_ref(), 1)] {
                 let Some(clip) = clip else { continue };
@@ -888,34 +891,30 @@ impl SkeletonFigure {
                     } else {
                         self.compare_trail.push(tip);
                     }
+                    if focus {
+                        // The selected joint's group (the part that turns) and its paths.
+                        let group = self.selected..self.selected + self.skeleton.group_sizes()[self.selected];
+                        focus_box.0 = focus_box.0.min(tip);
+                        focus_box.1 = focus_box.1.max(tip);
+                        for m in &model[group] {
+                            focus_box.0 = focus_box.0.min(m.translation.into());
+                            focus_box.1 = focus_box.1.max(m.translation.into());
+                        }
+                        continue;
+                    }
                     grow(tip);
-                    if !focus {
-                        model.iter().for_each(|m| grow(m.translation.into()));
-                        if self.show_boxes {
-                            for (shape, m) in self.shapes.iter().zip(&model) {
-                                for corner in box_corners(shape) {
-                                    grow(m.transform_point3(corner));
-                                }
+                    model.iter().for_each(|m| grow(m.translation.into()));
+                    if self.show_boxes {
+                        for (shape, m) in self.shapes.iter().zip(&model) {
+                            for corner in box_corners(shape) {
+                                grow(m.transform_point3(corner));
                             }
                         }
                     }
                 }
             }
             if focus {
-                // Only the paths and the pivot they turn about.
-                let pivot: Vec3 = self.model[self.selected].translation.into();
-                lo = pivot.min(
-                    self.trail
-                        .iter()
-                        .chain(&self.compare_trail)
-                        .fold(pivot, |a, &b| a.min(b)),
-                );
-                hi = pivot.max(
-                    self.trail
-                        .iter()
-                        .chain(&self.compare_trail)
-                        .fold(pivot, |a, &b| a.max(b)),
-                );
+                (lo, hi) = focus_box;
             }
             if self.blend_clip.is_some() && !focus {
                 for k in 0..2 {
@@ -1080,8 +1079,16 @@ impl SkeletonFigure {
         );
         let main_step = self.interpolation == KeyInterpolation::Step;
         let compare_step = matches!(self.compare, Some((KeyInterpolation::Step, _)));
-        draw_path(frame, &self.trail, palette::PURPLE, main_step);
-        draw_path(frame, &self.compare_trail, palette::BLUE, compare_step);
+        // While comparing, the two paths often lie on one another: the purple ticks go just
+        // outside the path (away from the joint's pivot), the blue ones just inside.
+        let pivot: Vec3 = self.model[self.selected].translation.into();
+        let (outside, inside) = if self.compare_clip.is_some() {
+            (TICK_OFFSET_M, -TICK_OFFSET_M)
+        } else {
+            (0.0, 0.0)
+        };
+        draw_path(frame, &self.trail, palette::PURPLE, main_step, pivot, outside);
+        draw_path(frame, &self.compare_trail, palette::BLUE, compare_step, pivot, inside);
         // The crossfade's two clips alone, beside the blend.
         let source_names = [
             self.clip_name(),
@@ -1226,18 +1233,23 @@ fn box_corners(shape: &JointShape) -> impl Iterator<Item = Vec3> + '_ {
 
 /// A path of equal-time samples: a wide line with a tick at each sample, or, for step keys
 /// (where the pose jumps), a dot at each sample, so the dots pile up on the keys.
-fn draw_path(frame: &mut Frame, path: &[Vec3], color: Vec3, step: bool) {
+/// The ticks (or dots) sit `offset` metres from the path, away from `pivot` (towards it when
+/// negative).
+fn draw_path(frame: &mut Frame, path: &[Vec3], color: Vec3, step: bool, pivot: Vec3, offset: f32) {
     if path.len() < 2 {
         return;
     }
-    let samples = &path[..path.len() - 1];
+    let samples: Vec<Vec3> = path[..path.len() - 1]
+        .iter()
+        .map(|&p| p + (p - pivot).normalize_or_zero() * offset)
+        .collect();
     if step {
-        for &p in samples {
+        for &p in &samples {
             frame.marker(p, crate::draw::DOT_PX, color);
         }
     } else {
         frame.wide_polyline(path, color, crate::draw::CURVE_PX);
-        frame.ticks(samples, PATH_TICK_PX, color);
+        frame.ticks(&samples, PATH_TICK_PX, color);
     }
 }
 
