@@ -1,10 +1,12 @@
 // Shared lesson shell: loads the wasm, shows errors, renders formulas, creates figures, runs the
 // frame loop, places figure labels, and builds the timeline, plots and "view source" list. Lesson
 // pages import it.
-import init, { Viewer, buildInfo } from '../pkg/inbetween.js';
+import init, { Viewer, buildInfo, gradedLessons, quizAnswer } from '../pkg/inbetween.js';
 import GUI, { NumberController } from '../vendor/lil-gui/lil-gui.esm.min.js';
 // Under `scripts/serve`: reload after a rebuild, show a failed build's errors (idle otherwise).
 import './devloop.js';
+// The course around the page: navigation, outline, "Check my exercises", the quiz.
+import { lessonId, setUpNavigation, addOutline, gradePanel, quiz, scrollToHash, showProgressNotes } from './course.js';
 
 export { GUI };
 
@@ -13,8 +15,11 @@ export { GUI };
 // Every number control of every panel (folders included: they are GUIs too) says so under itself
 // until its next accepted value or a change of any other control.
 const addControl = GUI.prototype.add;
+/** Every control of the page's panels, so that a quiz's "show me" can set one by name. */
+const controllers = [];
 GUI.prototype.add = function add(...args) {
   const controller = addControl.apply(this, args);
+  controllers.push(controller);
   if (controller instanceof NumberController) reportTypedValues(controller);
   else clearTypedNotesOnChange(controller);
   return controller;
@@ -246,6 +251,10 @@ export async function startLesson() {
   installErrorHandlers();
   renderMath();
   buildSourceView().catch(showError);
+  const navigation = fetch('../catalog.json')
+    .then((r) => (r.ok ? r.json() : []))
+    .then((catalog) => setUpNavigation(catalog, lessonId()))
+    .catch(showError);
   try {
     await loadModules();
   } catch (e) {
@@ -253,6 +262,7 @@ export async function startLesson() {
     throw e;
   }
   document.getElementById('build-info')?.replaceChildren(buildInfo());
+  startCourse(navigation).catch(showError);
   styleExerciseNotes();
   document.addEventListener('visibilitychange', () => {
     state.running = !document.hidden;
@@ -260,6 +270,34 @@ export async function startLesson() {
   });
   requestAnimationFrame(tick);
   return { figure: createFigure, onFrame: (cb) => state.frameCallbacks.push(cb) };
+}
+
+/**
+ * The course around the page, once the module is there: the grading panel (for a lesson with
+ * exercises), the quiz, then the outline of every section and the scroll to the URL's #hash
+ * (again once every figure has drawn, as figures above it change the layout while they start).
+ */
+async function startCourse(navigation) {
+  const id = lessonId();
+  if (gradedLessons().includes(id)) {
+    state.grading = gradePanel(sandbox.module, id);
+  }
+  await quiz(id, quizAnswer, controllers).catch(showError);
+  await navigation;
+  addOutline();
+  showProgressNotes(document.querySelector('main'));
+  document.body.dataset.course = 'ready';
+  scrollToHash();
+  if (location.hash && document.body.dataset.ready !== '1') {
+    let scrolled = false;
+    window.addEventListener('wheel', () => { scrolled = true; }, { once: true, passive: true });
+    window.addEventListener('keydown', () => { scrolled = true; }, { once: true });
+    new MutationObserver((_, observer) => {
+      if (document.body.dataset.ready !== '1') return;
+      observer.disconnect();
+      if (!scrolled) scrollToHash();
+    }).observe(document.body, { attributes: true, attributeFilter: ['data-ready'] });
+  }
 }
 
 /**
@@ -633,12 +671,16 @@ export class Plot {
       },
       // Small label fonts: a y label such as "angle about x (°)" must fit a 160 px tall plot.
       axes: [
-        { label: xLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22 },
+        {
+          label: xLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22,
+          ...(log.includes('x') ? { values: logTicks } : {}),
+        },
         // A short plot keeps room for four ticks: uPlot's 30 px between y ticks would leave a plot
         // 80 px tall with a 2 J range one tick (incr 1 J) and no sense of scale.
         {
           label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56,
           space: (u, i, min, max, dim) => Math.min(30, Math.max(16, dim / 4)),
+          ...(log.includes('y') ? { values: logTicks } : {}),
         },
       ],
       // Series names only: a live legend shows "--" for every value until the pointer hovers.
@@ -690,6 +732,16 @@ function textWidth(text, font) {
 
 /** The palette of www/palette.css, in the order plots use it. */
 export const PLOT_COLORS = ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#e68a00', '#17a2a8', '#e35d9c', '#8c564b'];
+
+/** Tick labels of a log axis: powers of ten only ("0.01", "1", "1000", "1e-6"), others blank. */
+function logTicks(u, splits) {
+  return splits.map((v) => {
+    if (!(v > 0)) return '';
+    const k = Math.round(Math.log10(v));
+    if (Math.abs(Math.log10(v) - k) > 1e-6) return '';
+    return k >= -2 && k <= 4 ? String(Number(v.toPrecision(1))) : `1e${k}`;
+  });
+}
 
 /** The y range for data in [lo, hi]: at least `minSpan` tall, padded by 5 %. */
 export function paddedRange(lo, hi, minSpan) {

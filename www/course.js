@@ -1,0 +1,508 @@
+// The course around a lesson page, added by the shell (www/lesson.js) from data, never written
+// into each page: its place in the course and the links to the lessons before and after it (from
+// the catalog the build writes), an outline of its sections, ids on every section and figure for
+// deep links, the "Check my exercises" panel (the grader in a worker, with a time limit) and the
+// quiz (the lesson folder's quiz.json, numeric answers computed by the cores through the bindings).
+import { loadProgress, saveLesson, notes as progressNotes, summary } from './progress.js';
+
+/** The lesson's folder name (`03-rotations`), from the page's URL. */
+export function lessonId() {
+  const parts = location.pathname.split('/').filter(Boolean);
+  const at = parts.lastIndexOf('lessons');
+  return at >= 0 ? parts[at + 1] ?? '' : '';
+}
+
+const slug = (text) => text.toLowerCase().normalize('NFKD').replace(/[^\w\s-]/g, '')
+  .trim().replace(/[\s_]+/g, '-').replace(/-+/g, '-').slice(0, 48);
+
+/** Gives every section heading and figure an id (kept where the page has one) and each heading a
+ * link to itself. */
+function addIds(main) {
+  const taken = new Set([...document.querySelectorAll('[id]')].map((e) => e.id));
+  const unique = (base) => {
+    let id = base;
+    for (let n = 2; taken.has(id); n++) id = `${base}-${n}`;
+    taken.add(id);
+    return id;
+  };
+  main.querySelectorAll('.figure').forEach((figure, i) => {
+    if (!figure.id) figure.id = unique(`fig-${i + 1}`);
+  });
+  for (const h of main.querySelectorAll('h2, h3')) {
+    if (!h.id) h.id = unique(`sec-${slug(h.textContent) || 'section'}`);
+    if (!h.querySelector('a.anchor')) {
+      const a = document.createElement('a');
+      a.className = 'anchor';
+      a.href = `#${h.id}`;
+      a.textContent = '#';
+      a.setAttribute('aria-label', `link to “${h.textContent}”`);
+      h.append(a);
+    }
+  }
+}
+
+/** Scrolls to the element the URL's #hash names (ids added by the shell did not exist when the
+ * browser looked). */
+export function scrollToHash() {
+  const id = decodeURIComponent(location.hash.slice(1));
+  if (id) document.getElementById(id)?.scrollIntoView({ block: 'start' });
+}
+
+function link(href, text, rel) {
+  const a = document.createElement('a');
+  a.href = href;
+  a.textContent = text;
+  if (rel) a.rel = rel;
+  return a;
+}
+
+/**
+ * Navigation from the catalog: "Part 3 · Rotations and rigid motion · lesson 1 of 2" in the header,
+ * the previous and next lessons (catalog order) in the header and at the end of the page, and an
+ * outline of the page's sections (collapsible; beside the text on wide screens only, where it
+ * covers nothing).
+ */
+export function setUpNavigation(catalog, id) {
+  const main = document.querySelector('main');
+  if (!main) return;
+  const index = catalog.findIndex((l) => l.folder === id);
+  const header = document.querySelector('header.site');
+  if (index >= 0 && header) {
+    const lesson = catalog[index];
+    const parts = [...new Set(catalog.map((l) => l.part))];
+    const inPart = catalog.filter((l) => l.part === lesson.part);
+    const place = `Part ${parts.indexOf(lesson.part) + 1} · ${lesson.part} · lesson ${inPart.indexOf(lesson) + 1} of ${inPart.length}`;
+    let span = header.querySelector('span:not(.build)');
+    if (!span) {
+      span = document.createElement('span');
+      header.querySelector('a')?.after(span);
+    }
+    span.className = 'course-place';
+    span.textContent = place;
+    const prev = catalog[index - 1];
+    const next = catalog[index + 1];
+    const nav = document.createElement('nav');
+    nav.className = 'course-nav';
+    nav.setAttribute('aria-label', 'previous and next lesson');
+    if (prev) nav.append(link(`../${prev.folder}/`, `‹ ${prev.title}`, 'prev'));
+    if (next) nav.append(link(`../${next.folder}/`, `${next.title} ›`, 'next'));
+    span.after(nav);
+    const bottom = document.createElement('nav');
+    bottom.className = 'lesson-pager';
+    bottom.setAttribute('aria-label', 'previous and next lesson');
+    bottom.append(
+      prev ? link(`../${prev.folder}/`, `‹ Previous: ${prev.title}`, 'prev') : document.createElement('span'),
+      link('../', 'All lessons'),
+      next ? link(`../${next.folder}/`, `Next: ${next.title} ›`, 'next') : document.createElement('span'),
+    );
+    main.append(bottom);
+  }
+}
+
+/** The outline of the page's sections, after the lede (call once every section is in place). */
+export function addOutline() {
+  const main = document.querySelector('main');
+  if (!main || document.querySelector('details.outline')) return;
+  addIds(main);
+  const outline = document.createElement('details');
+  outline.className = 'outline';
+  const summaryEl = document.createElement('summary');
+  summaryEl.textContent = 'On this page';
+  const list = document.createElement('ol');
+  for (const h of main.querySelectorAll('h2')) {
+    const item = document.createElement('li');
+    item.append(link(`#${h.id}`, h.firstChild?.textContent?.trim() || h.textContent));
+    list.append(item);
+  }
+  outline.append(summaryEl, list);
+  // Open beside the text when the window leaves room for it (style.css places it there).
+  if (window.matchMedia('(min-width: 1400px)').matches) outline.open = true;
+  (main.querySelector('.lede') ?? main.querySelector('h1'))?.after(outline);
+}
+
+/** A note about saved progress that could not be read (see www/progress.js), once per page. */
+function showProgressNotes(where) {
+  if (!progressNotes.length || document.querySelector('.progress-note')) return;
+  const p = document.createElement('p');
+  p.className = 'progress-note';
+  p.setAttribute('role', 'status');
+  p.textContent = progressNotes.join(' ');
+  where.prepend(p);
+}
+
+// ---- Check my exercises -------------------------------------------------------------------------
+
+/** How long a case may run before the panel stops it (an endless loop, most likely). */
+export const CASE_LIMIT_S = 5;
+/** How long a worker may take to start its module (no student code runs then). */
+const START_LIMIT_S = 60;
+
+/** "panicked at src/x.rs:3:5:\nmessage" (Rust's panic hook) as { message, location }. */
+function splitPanic(text) {
+  const m = /^panicked at (.+?:\d+:\d+):\n([\s\S]*)$/.exec(text);
+  return m ? { location: m[1], message: m[2] } : { message: text };
+}
+
+/**
+ * Runs one grading in a fresh worker. Resolves to { kind: 'done', rows, table }, { kind:
+ * 'panicked', exercise, case, message, location }, { kind: 'stopped', exercise, case } or
+ * { kind: 'error', message }; the worker is ended in every case but 'done'.
+ */
+function gradeInWorker(module, lesson, known) {
+  return new Promise((resolve) => {
+    const worker = new Worker(new URL('./grade-worker.js', import.meta.url), { type: 'module' });
+    let current = null; // { exercise, case } the grader last said it started
+    let panic = null;
+    let timer = null;
+    const finish = (result) => {
+      clearTimeout(timer);
+      worker.terminate();
+      resolve(result);
+    };
+    const watch = (seconds, onTimeout) => {
+      clearTimeout(timer);
+      timer = setTimeout(onTimeout, seconds * 1000);
+    };
+    const stop = () => finish(current
+      ? { kind: 'stopped', ...current }
+      : { kind: 'error', message: `the grader gave no sign of life within ${CASE_LIMIT_S} s` });
+    watch(START_LIMIT_S, () => finish({ kind: 'error', message: `the grader did not start within ${START_LIMIT_S} s` }));
+    worker.onerror = (e) => finish({ kind: 'error', message: e.message || 'the grading worker failed to load' });
+    worker.onmessage = ({ data }) => {
+      switch (data.kind) {
+        case 'ready':
+          watch(CASE_LIMIT_S, stop);
+          worker.postMessage({ lesson, known });
+          break;
+        case 'case':
+          current = { exercise: data.exercise, case: data.case };
+          watch(CASE_LIMIT_S, stop);
+          break;
+        case 'panic':
+          panic = splitPanic(data.message);
+          break;
+        case 'done':
+          finish({ kind: 'done', rows: data.rows, table: data.table });
+          break;
+        case 'trapped':
+          finish(panic && current
+            ? { kind: 'panicked', ...current, ...panic }
+            : { kind: 'error', message: `the grader stopped: ${data.message}` });
+          break;
+        default:
+          finish({ kind: 'error', message: data.message });
+      }
+    };
+    worker.postMessage({ module });
+  });
+}
+
+const VERDICT_WORDS = {
+  passed: 'passed', 'not-done': 'not yet implemented', wrong: 'WRONG', panicked: 'PANICKED', stopped: 'STOPPED',
+};
+
+/** One exercise's row: its name, then the verdict and what the case tested, its input, and
+ * expected and actual (or the panic's message and place, or the time limit). */
+function resultRow(row) {
+  const tr = document.createElement('tr');
+  tr.dataset.exercise = row.exercise;
+  tr.dataset.verdict = row.verdict;
+  tr.className = `verdict-${row.verdict}`;
+  const name = document.createElement('td');
+  name.innerHTML = '<code></code>';
+  name.firstChild.textContent = row.exercise;
+  const cell = document.createElement('td');
+  const head = document.createElement('div');
+  head.className = 'verdict';
+  const add = (label, value, cls) => {
+    const line = document.createElement('div');
+    line.className = cls ?? 'detail';
+    const b = document.createElement('span');
+    b.className = 'label';
+    b.textContent = label;
+    const v = document.createElement('code');
+    v.textContent = value;
+    line.append(b, v);
+    cell.append(line);
+  };
+  if (row.verdict === 'passed') head.textContent = `passed (${row.cases} cases)`;
+  else if (row.verdict === 'not-done') head.textContent = 'not yet implemented';
+  else head.textContent = `${VERDICT_WORDS[row.verdict]} at case ${row.case} (${row.what})`;
+  cell.append(head);
+  const input = (row.input ?? []).map(([n, v]) => `${n} = ${v}`).join(', ');
+  if (row.verdict === 'wrong') {
+    add('input', input);
+    add('expected', row.expected);
+    add('yours', row.actual);
+  } else if (row.verdict === 'panicked') {
+    add('message', row.message);
+    if (row.location) add('at', row.location);
+    add('input', input);
+  } else if (row.verdict === 'stopped') {
+    add('why', `no answer within ${row.seconds} s: an endless loop? The page stopped it and graded the others.`);
+    add('input', input);
+  }
+  tr.append(name, cell);
+  return tr;
+}
+
+function countLine(rows) {
+  const passed = rows.filter((r) => r.verdict === 'passed').length;
+  const todo = rows.filter((r) => r.verdict === 'not-done').length;
+  return `${passed} passed, ${todo} not yet implemented, ${rows.length - passed - todo} wrong, of ${rows.length}`;
+}
+
+/**
+ * The "Check my exercises" panel under the lesson's "Your turn" section. It grades in a worker
+ * (a fresh module instance), with CASE_LIMIT_S per case: a panic or a case that never ends is
+ * reported in its row, and the grading goes on in a fresh worker that replays it (see
+ * src/exercises/grade.rs, `Known`). Re-runs by itself when the page loads under `scripts/serve`
+ * (which reloads it after each rebuild) or after the student has checked once in this tab.
+ */
+export function gradePanel(module, id) {
+  const main = document.querySelector('main');
+  if (!main || document.getElementById('check-exercises')) return null;
+  const turn = [...main.querySelectorAll('h2')].find((h) => /^your turn/i.test(h.textContent.trim()));
+  const section = document.createElement('section');
+  section.className = 'grade-panel';
+  section.id = 'check-exercises';
+  section.innerHTML = `
+    <h3>Check my exercises</h3>
+    <p class="grade-intro">Runs the grader of <code>scripts/grade</code> on the exercises of this
+    lesson as this page's build has them (under <code>scripts/serve</code>, a save rebuilds it and the
+    page reloads). Each case gets ${CASE_LIMIT_S} s; one that runs longer is stopped.</p>
+    <div class="grade-actions"><button type="button" class="grade-run">Check my exercises</button>
+    <span class="grade-status" role="status"></span></div>
+    <table class="grade-table" hidden><thead><tr><th>exercise</th><th>result</th></tr></thead><tbody></tbody></table>
+    <details class="grade-text" hidden><summary>the same table as <code>scripts/grade</code> prints it</summary><pre></pre></details>`;
+  let anchor = turn;
+  if (anchor?.nextElementSibling?.classList.contains('callout')) anchor = anchor.nextElementSibling;
+  if (anchor) anchor.after(section);
+  else (main.querySelector('#source-list')?.previousElementSibling ?? main.lastElementChild).before(section);
+  const button = section.querySelector('.grade-run');
+  const status = section.querySelector('.grade-status');
+  const table = section.querySelector('.grade-table');
+  const tbody = table.querySelector('tbody');
+  const text = section.querySelector('.grade-text');
+  const saved = loadProgress()[id];
+  if (saved?.checked) {
+    const s = summary(saved);
+    status.textContent = `Last checked ${new Date(saved.checked).toLocaleString()}: ${s.passed} of ${s.exercises} passed.`;
+  }
+  const seenKey = `inbetween:checked:${id}`;
+
+  async function run() {
+    button.disabled = true;
+    section.dataset.state = 'running';
+    const known = [];
+    const events = [];
+    try {
+      sessionStorage.setItem(seenKey, '1');
+    } catch { /* no session storage: no automatic re-run, nothing else lost */ }
+    // Each round either finishes or learns one more failure: at most one round per exercise.
+    for (let round = 0; round < 64; round++) {
+      status.textContent = round === 0 ? 'Grading…' : `Grading again in a fresh module (${events.at(-1)})…`;
+      const result = await gradeInWorker(module, id, known);
+      if (result.kind === 'done') {
+        tbody.replaceChildren(...result.rows.map(resultRow));
+        table.hidden = false;
+        text.hidden = false;
+        text.querySelector('pre').textContent = result.table;
+        status.textContent = `${countLine(result.rows)}.${events.length ? ` ${events.join('; ')}.` : ''}`;
+        section.dataset.state = 'done';
+        const exercises = Object.fromEntries(result.rows.map((r) => [r.exercise, r.verdict]));
+        saveLesson(id, { exercises, exerciseCount: result.rows.length, checked: Date.now() });
+        break;
+      }
+      if (result.kind === 'panicked') {
+        known.push({ exercise: result.exercise, case: result.case, kind: 'panicked', message: result.message, location: result.location });
+        events.push(`${result.exercise} panicked at case ${result.case}`);
+      } else if (result.kind === 'stopped') {
+        known.push({ exercise: result.exercise, case: result.case, kind: 'stopped', seconds: CASE_LIMIT_S });
+        events.push(`${result.exercise} gave no answer within ${CASE_LIMIT_S} s at case ${result.case} and was stopped`);
+      } else {
+        status.textContent = `The grader could not run: ${result.message}`;
+        section.dataset.state = 'error';
+        break;
+      }
+    }
+    button.disabled = false;
+  }
+  button.addEventListener('click', () => run());
+  let again = false;
+  try {
+    again = sessionStorage.getItem(seenKey) === '1';
+  } catch { /* see above */ }
+  if (again || document.querySelector('meta[name="inbetween-devloop"]')) run();
+  return { run };
+}
+
+// ---- The quiz -----------------------------------------------------------------------------------
+
+/** The page's figure controls by figure id and name (registered by www/lesson.js). */
+function findControl(controllers, figureId, key) {
+  const figure = document.getElementById(figureId);
+  if (!figure) return null;
+  return controllers.find((c) => figure.contains(c.domElement) && (c.property === key || c._name === key)) ?? null;
+}
+
+/** A number to four significant digits with its unit ("30°", "1.01 s"). */
+function withUnit(value, unit) {
+  const number = String(Number(value.toPrecision(4)));
+  if (!unit) return number;
+  return unit === '°' ? `${number}°` : `${number} ${unit}`;
+}
+
+/** Parses what a student typed as a number: "0.25", "0,25", "-3", "1e-3", "30°"; NaN otherwise. */
+function parseAnswer(text) {
+  const cleaned = text.trim().replace(/\s+/g, '').replace(',', '.').replace(/[°a-zA-Z/]+$/, '');
+  if (!/^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(cleaned)) return NaN;
+  return Number(cleaned);
+}
+
+/**
+ * The lesson's quiz (`quiz.json` beside the page), as the last section before the source list:
+ * multiple choice (each choice explains itself once picked) and numeric questions whose answer
+ * `quizAnswer(core, args)` computes with the lesson's core. Answers are remembered (www/progress.js).
+ */
+export async function quiz(id, quizAnswer, controllers) {
+  const response = await fetch('quiz.json');
+  if (!response.ok) return null;
+  const data = await response.json();
+  const questions = data.questions ?? [];
+  const main = document.querySelector('main');
+  const source = [...main.querySelectorAll('h2')].find((h) => /^source/i.test(h.textContent.trim()));
+  const section = document.createElement('section');
+  section.className = 'quiz';
+  section.id = 'quiz';
+  const h2 = document.createElement('h2');
+  h2.textContent = data.title ?? 'Check yourself';
+  h2.id = 'check-yourself';
+  const intro = document.createElement('p');
+  intro.className = 'quiz-intro';
+  intro.textContent = data.intro ?? 'A few questions on this lesson. Your answers stay in this browser.';
+  section.append(h2, intro);
+  const saved = loadProgress()[id]?.quiz ?? {};
+  const record = (q, answer, correct) => saveLesson(id, { quiz: { [q.id]: { answer, correct } }, quizCount: questions.length });
+
+  questions.forEach((q, n) => {
+    const box = document.createElement('div');
+    box.className = 'quiz-question';
+    box.id = `quiz-${q.id}`;
+    box.dataset.type = q.type;
+    const prompt = document.createElement('p');
+    prompt.className = 'prompt';
+    prompt.innerHTML = `<strong>${n + 1}.</strong> `;
+    prompt.append(document.createTextNode(q.prompt));
+    box.append(prompt);
+    const feedback = document.createElement('p');
+    feedback.className = 'feedback';
+    feedback.setAttribute('role', 'status');
+    const verdict = (correct, textOut) => {
+      box.dataset.answered = correct ? 'right' : 'wrong';
+      feedback.className = `feedback ${correct ? 'right' : 'wrong'}`;
+      feedback.textContent = textOut;
+    };
+    if (q.type === 'choice') {
+      const list = document.createElement('div');
+      list.className = 'choices';
+      q.choices.forEach((choice, i) => {
+        const label = document.createElement('label');
+        const input = document.createElement('input');
+        input.type = 'radio';
+        input.name = `quiz-${q.id}`;
+        input.value = String(i);
+        label.append(input, document.createTextNode(` ${choice.text}`));
+        input.addEventListener('change', () => {
+          verdict(Boolean(choice.correct), `${choice.correct ? 'Right.' : 'Not quite.'} ${choice.why}`);
+          record(q, String(i), Boolean(choice.correct));
+        });
+        list.append(label);
+        if (saved[q.id]?.answer === String(i)) {
+          input.checked = true;
+          verdict(Boolean(choice.correct), `${choice.correct ? 'Right.' : 'Not quite.'} ${choice.why}`);
+        }
+      });
+      box.append(list);
+    } else if (q.type === 'number') {
+      const row = document.createElement('div');
+      row.className = 'number-answer';
+      const input = document.createElement('input');
+      input.type = 'text';
+      input.inputMode = 'decimal';
+      input.setAttribute('aria-label', `answer to question ${n + 1}`);
+      const unit = document.createElement('span');
+      unit.textContent = q.unit ?? '';
+      const check = document.createElement('button');
+      check.type = 'button';
+      check.textContent = 'Check';
+      const reveal = document.createElement('button');
+      reveal.type = 'button';
+      reveal.className = 'reveal';
+      reveal.textContent = 'show the answer';
+      reveal.hidden = true;
+      row.append(input, unit, check, reveal);
+      box.append(row);
+      const expected = () => quizAnswer(q.answer.core, new Float32Array(q.answer.args));
+      const judge = (text, store) => {
+        const given = parseAnswer(text);
+        if (!Number.isFinite(given)) {
+          box.dataset.answered = 'unreadable';
+          feedback.className = 'feedback wrong';
+          feedback.textContent = `“${text}” is not a number I can read; type digits, e.g. 0.25.`;
+          return;
+        }
+        let value;
+        try {
+          value = expected();
+        } catch (e) {
+          feedback.className = 'feedback wrong';
+          feedback.textContent = `This question's answer could not be computed: ${e.message ?? e}`;
+          return;
+        }
+        const correct = Math.abs(given - value) <= q.tolerance;
+        verdict(correct, correct
+          ? `Right: the core computes ${withUnit(value, q.unit)}. ${q.why}`
+          : `Not yet (within ${withUnit(q.tolerance, q.unit)} counts). ${q.hint ?? ''}`);
+        reveal.hidden = correct;
+        if (store) record(q, text, correct);
+      };
+      check.addEventListener('click', () => judge(input.value, true));
+      input.addEventListener('keydown', (e) => { if (e.key === 'Enter') judge(input.value, true); });
+      reveal.addEventListener('click', () => {
+        const value = expected();
+        feedback.textContent += ` The core computes ${withUnit(value, q.unit)}. ${q.why}`;
+        reveal.hidden = true;
+      });
+      if (saved[q.id]) {
+        input.value = saved[q.id].answer;
+        judge(saved[q.id].answer, false);
+      }
+    }
+    if (q.show) {
+      const show = document.createElement('button');
+      show.type = 'button';
+      show.className = 'show-me';
+      show.textContent = q.show.label ?? 'show me';
+      show.addEventListener('click', () => {
+        const missing = [];
+        for (const [key, value] of Object.entries(q.show.set ?? {})) {
+          const c = findControl(controllers, q.show.figure, key);
+          if (c) c.setValue(value);
+          else missing.push(key);
+        }
+        if (missing.length) console.warn(`quiz ${q.id}: no control named ${missing.join(', ')} in #${q.show.figure}`);
+        document.getElementById(q.show.figure)?.scrollIntoView({ block: 'start', behavior: 'smooth' });
+      });
+      box.append(show);
+    }
+    box.append(feedback);
+    section.append(box);
+  });
+  if (source) source.before(section);
+  else main.append(section);
+  showProgressNotes(section);
+  return section;
+}
+
+export { showProgressNotes };
