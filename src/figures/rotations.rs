@@ -66,8 +66,11 @@ pub const METHODS: [(Method, f32, Vec3); 4] = [
     (Method::Slerp, 3.3, palette::Z_AXIS),
 ];
 
-/// The nose of the aeroplane, in its own frame.
-const NOSE: Vec3 = Vec3::new(0.55, 0.0, 0.0);
+/// The tip of the yellow pointer on the aeroplane's nose, in its own frame: past the wings, so
+/// that its path is not hidden under the aeroplane.
+const NOSE: Vec3 = Vec3::new(0.9, 0.0, 0.0);
+/// Equal steps of t marked on each path.
+const PATH_TICKS: usize = 8;
 
 /// Figure 1: one aeroplane, two key orientations, interpolated by matrix lerp, Euler-angle lerp,
 /// nlerp and slerp (left to right), with the path of the nose over the whole interpolation.
@@ -187,7 +190,7 @@ impl Interpolation {
         let student = self.use_exercise && self.arc == Arc::Short;
         frame.grid(16, 0.5);
         // The four objects, their axes and paths stay in view at any canvas size.
-        frame.keep_box_in_view(Vec3::new(-3.9, 0.5, -0.7), Vec3::new(3.9, 1.9, 0.7));
+        frame.keep_box_in_view(Vec3::new(-4.3, 0.3, -0.9), Vec3::new(4.3, 2.1, 0.9));
         for (method, x, color) in METHODS {
             let at = Vec3::new(x, 1.2, 0.0);
             self.path.clear();
@@ -195,11 +198,26 @@ impl Interpolation {
                 let m = self.orientation(method, k as f32 / 64.0, student);
                 self.path.push(at + m * NOSE);
             }
-            frame.wide_polyline(&self.path, color * 0.8, crate::draw::CURVE_PX);
-            frame.marker(self.path[0], crate::draw::DOT_PX, palette::GREY);
-            frame.marker(self.path[64], crate::draw::DOT_PX, palette::KEY);
+            // Over everything: the path is seen through the aeroplane that turns about it.
+            let over = crate::draw::StrokeStyle {
+                on_top: true,
+                ..crate::draw::StrokeStyle::solid(3.0)
+            };
+            frame.stroke(&self.path, color * 0.8, over);
+            let ticks: Vec<Vec3> = (0..=PATH_TICKS)
+                .map(|k| self.path[k * 64 / PATH_TICKS])
+                .collect();
+            frame.ticks(&ticks, 12.0, color * 0.8);
+            frame.marker_on_top(self.path[0], crate::draw::DOT_PX, palette::GREY);
+            frame.marker_on_top(self.path[64], crate::draw::DOT_PX, palette::KEY);
             let m = self.orientation(method, t, student);
             draw_plane(frame, at, m, color, 1.0);
+            // The pointer whose tip draws the path.
+            let pointer = Mat4::from_translation(at)
+                * Mat4::from_mat3(m)
+                * Mat4::from_translation(Vec3::new(0.72, 0.0, 0.0))
+                * Mat4::from_scale(Vec3::new(0.18, 0.015, 0.015));
+            frame.mesh(MeshId::CUBE, pointer, Vec3::new(0.95, 0.85, 0.2));
             frame.axes(Mat4::from_translation(at) * Mat4::from_mat3(m), 0.6);
         }
         let mut note = self.arc_note();
@@ -311,7 +329,7 @@ impl Interpolation {
 
     /// Figure 2: the circle of unit quaternions in the plane of the two keys, with a, b, −b and
     /// −a, the short arc (solid) and the long arc (dashed), the chord that lerp follows, equal
-    /// steps of t for slerp (blue, outside the circle) and nlerp (green rays from the chord), and
+    /// steps of t for slerp (blue, just outside the circle) and nlerp (green rays from the chord), and
     /// both at `t`. Returns the note: which of b and −b the arc in use ends at, and why.
     pub fn draw_circle(&mut self, frame: &mut Frame, t: f32) -> Result<String, String> {
         let t = in_range("t", t, 0.0, 1.0)?;
@@ -320,8 +338,8 @@ impl Interpolation {
             |q: Quat| CIRCLE_CENTRE + CIRCLE_RADIUS * Vec3::new(q.dot(e1), q.dot(e2), 0.0);
         let at_angle = |phi: f32, r: f32| CIRCLE_CENTRE + r * Vec3::new(phi.cos(), phi.sin(), 0.0);
         frame.keep_box_in_view(
-            CIRCLE_CENTRE - Vec3::new(1.5, 1.45, 0.0) * CIRCLE_RADIUS,
-            CIRCLE_CENTRE + Vec3::new(1.5, 1.45, 0.0) * CIRCLE_RADIUS,
+            CIRCLE_CENTRE - Vec3::new(1.25, 1.2, 0.0) * CIRCLE_RADIUS,
+            CIRCLE_CENTRE + Vec3::new(1.25, 1.2, 0.0) * CIRCLE_RADIUS,
         );
         self.path.clear();
         self.path.extend(
@@ -390,7 +408,7 @@ impl Interpolation {
         ] {
             let p = to_world(q);
             frame.marker(p, 12.0, color);
-            frame.label_with_priority(p + (p - CIRCLE_CENTRE) * 0.08, name, color, 3);
+            frame.label_with_priority(p + (p - CIRCLE_CENTRE) * 0.12, name, color, 3);
         }
         // lerp walks the chord at equal steps of t; nlerp pushes each step out onto the circle
         // (a ray from the centre); slerp walks the arc at equal angles.
@@ -406,9 +424,9 @@ impl Interpolation {
                 CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS;
             frame.wide_line(on_chord, out, nlerp_color, 1.5);
             frame.marker(out, 7.0, nlerp_color);
-            slerp_ticks.push(at_angle(phi_used * s, CIRCLE_RADIUS * 1.05));
+            slerp_ticks.push(at_angle(phi_used * s, CIRCLE_RADIUS * 1.07));
         }
-        frame.ticks(&slerp_ticks, 12.0, slerp_color);
+        frame.ticks(&slerp_ticks, 10.0, slerp_color);
         let on_chord = start.lerp(end, t);
         frame.marker(on_chord, 9.0, palette::DARK);
         frame.marker(
@@ -417,7 +435,7 @@ impl Interpolation {
             nlerp_color,
         );
         frame.marker(
-            at_angle(phi_used * t, CIRCLE_RADIUS * 1.05),
+            at_angle(phi_used * t, CIRCLE_RADIUS * 1.07),
             14.0,
             slerp_color,
         );
