@@ -217,8 +217,8 @@ impl RigidMotion {
         // The screw axis: the line the relative motion B A⁻¹ turns about and slides along.
         let axis = self.screw_axis();
         let (a, b) = (
-            axis.point - axis.direction * 3.0,
-            axis.point + axis.direction * 3.0,
+            axis.point - axis.direction * 2.0,
+            axis.point + axis.direction * 2.0,
         );
         frame.wide_line(a, b, SCREW_AXIS, 3.0);
         frame.label(b, "screw axis", SCREW_AXIS);
@@ -247,13 +247,16 @@ impl RigidMotion {
                 }
                 frame.wide_polyline(&self.path, color * shade, width);
             }
-            // Equal steps of t on the nose's path: spread where the method is fast.
-            self.path.clear();
-            for k in 0..=TICKS {
-                let s = k as f32 / TICKS as f32;
-                self.path.push(self.point(method, s, TIP, student));
+            // Equal steps of t on the nose's path of the two methods that share the helix:
+            // spread where the method is fast.
+            if method != Method::LerpSlerp {
+                self.path.clear();
+                for k in 0..=TICKS {
+                    let s = k as f32 / TICKS as f32;
+                    self.path.push(self.point(method, s, TIP, student));
+                }
+                frame.ticks(&self.path, 10.0, color);
             }
-            frame.ticks(&self.path, 14.0, color);
             let m = self.motion(method, t);
             let (r, p) = m.to_rotation_translation();
             draw_plane(frame, p, Mat3::from_quat(r), color, 1.0);
