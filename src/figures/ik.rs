@@ -398,9 +398,11 @@ impl IkFigure {
             });
         }
         if self.limits != Limits::None {
-            parts.push(
-                "Limits apply to CCD and FABRIK; two-joint IK bends towards its pole.".into(),
-            );
+            parts.push(if self.segments == 2 {
+                "Limits apply to CCD and FABRIK; two-joint IK bends towards its pole.".into()
+            } else {
+                "Limits apply to CCD and FABRIK.".into()
+            });
         }
         parts.join(" ")
     }

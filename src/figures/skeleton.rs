@@ -514,9 +514,10 @@ impl SkeletonFigure {
         };
         let compare = match self.compare {
             Some(mode) => format!(
-                " Paths of the {} tip over one cycle, a tick every 1/{TRAIL_DOTS} of it: purple {}, \
+                " Paths of the {} tip over one cycle, a tick every 1/{} of it: purple {}, \
                  blue {}.",
                 names[j],
+                TRAIL_DOTS / 2,
                 interpolation_name((self.interpolation, self.rotation)),
                 interpolation_name(mode)
             ),
@@ -1239,8 +1240,11 @@ fn draw_path(frame: &mut Frame, path: &[Vec3], color: Vec3, step: bool, pivot: V
     if path.len() < 2 {
         return;
     }
+    // Beside another path, every other sample: 30 ticks a cycle stay apart on a small circle.
+    let stride = if offset != 0.0 { 2 } else { 1 };
     let samples: Vec<Vec3> = path[..path.len() - 1]
         .iter()
+        .step_by(stride)
         .map(|&p| p + (p - pivot).normalize_or_zero() * offset)
         .collect();
     if step {
