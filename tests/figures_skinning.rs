@@ -236,12 +236,13 @@ fn the_human_skins_its_clip_by_both_methods() {
     // The skeleton is drawn over the body (it is inside it): one disc per joint and one bone
     // per joint with a parent, all on top.
     let joints = h.joint_names().len();
-    let on_top = frame.points.iter().filter(|p| p.radius < 0.0).count();
+    // Markers and wide lines: the same size on screen at any zoom.
+    let on_top = frame.markers.iter().filter(|m| m.size_px < 0.0).count();
     assert_eq!(on_top, joints);
     let bones = frame
-        .lines
-        .chunks(2)
-        .filter(|l| l[0].depth_bias == inbetween::draw::ON_TOP)
+        .strokes
+        .iter()
+        .filter(|s| s.depth_bias == inbetween::draw::ON_TOP)
         .count();
     assert_eq!(bones, joints - 1);
     for name in h.clip_names() {
@@ -331,7 +332,7 @@ fn the_characters_note_says_where_the_falloff_shows() {
     h.set_heat_joint("shin.L").unwrap();
     let note = h.draw(&mut Frame::default(), MeshId(3));
     assert!(
-        note.contains("Colours: the shin.L's weights, blue 0 to red 1."),
+        note.contains("Colours: the weights of shin.L, blue 0 to red 1."),
         "{note}"
     );
 }
@@ -377,4 +378,142 @@ fn the_plots_dashed_lines_follow_the_pose_where_it_is_on_their_curves() {
     );
     let note = f.draw(&mut Frame::default(), IDS).unwrap();
     assert!(note.contains("on none of the plots' curves"), "{note}");
+}
+
+#[test]
+fn side_by_side_the_lbs_leg_loses_volume_at_the_deep_knee_and_dqs_keeps_it() {
+    let mut h = HumanFigure::new();
+    h.set_compare(true);
+    h.set_clip("run").unwrap();
+    h.skin(0.0).unwrap();
+    let note = h.draw_pair(&mut Frame::default(), [MeshId(3), MeshId(4)]);
+    assert!(
+        note.contains("(LBS, left) and dual quaternion skinning (DQS, right)"),
+        "{note}"
+    );
+    let (lbs, dqs) = (
+        h.leg_volume(&h.mesh.positions),
+        h.leg_volume(&h.mesh_dqs.positions),
+    );
+    assert!(
+        note.contains(&format!(
+            "LBS keeps {:.1}% of its volume, DQS {:.1}%",
+            100.0 * lbs,
+            100.0 * dqs
+        )),
+        "{note}"
+    );
+    // The run's knee is deepest at 0 s (about 86°): LBS loses about 6 %, DQS about 1 %.
+    assert!(lbs < 0.95 && dqs > 0.98, "{lbs} {dqs}");
+    // The plot over the clip: 1 at straight knees, LBS below DQS wherever the knee bends, and
+    // its rows at the note's values.
+    let rows: Vec<[f32; 3]> = h
+        .leg_volume_curves(41)
+        .unwrap()
+        .chunks(3)
+        .map(|r| r.try_into().unwrap())
+        .collect();
+    assert_eq!(rows.len(), 41);
+    assert!((rows[0][1] - lbs).abs() < 1e-5 && (rows[0][2] - dqs).abs() < 1e-5);
+    assert!(
+        rows.iter().all(|r| r[1] <= r[2] + 1e-4 && r[2] <= 1.001),
+        "{rows:?}"
+    );
+    let least = rows.iter().map(|r| r[1]).fold(1.0f32, f32::min);
+    assert!(least < 0.95, "{least}");
+    // At 0 s the run's left knee is bent furthest, about 86°.
+    let knee = {
+        use inbetween::skeleton::{Clip, ClipCursor};
+        let sk = &h.character().skeleton;
+        let raw = inbetween::skeleton::human::clip(sk, 2).unwrap();
+        let clip = Clip::from_raw(&raw, sk).unwrap();
+        let mut pose = sk.rest_pose();
+        clip.sample(0.0, &mut ClipCursor::new(), &mut pose);
+        pose.local[sk.find("shin.L").unwrap()]
+            .rotation
+            .angle_between(glam::Quat::IDENTITY)
+            .to_degrees()
+    };
+    assert!((knee - 86.0).abs() < 2.0, "{knee}");
+    let at_most = |rows: &[f32]| rows.chunks(3).map(|r| r[1]).fold(1.0f32, f32::min);
+    assert!(
+        rows.iter().skip(10).take(10).all(|r| r[1] > 0.99),
+        "the straight leg: about 100 %"
+    );
+    // A wide falloff (0.06 m): LBS loses about 9 % in the run.
+    let mut wide = HumanFigure::new();
+    wide.set_clip("run").unwrap();
+    wide.set_falloff(0.06).unwrap();
+    let w = at_most(&wide.leg_volume_curves(41).unwrap());
+    assert!((0.9..0.93).contains(&w), "{w}");
+    // The walk bends the knee less: its LBS leg loses less.
+    h.set_clip("walk").unwrap();
+    let walk = h.leg_volume_curves(41).unwrap();
+    let walk_least = walk.chunks(3).map(|r| r[1]).fold(1.0f32, f32::min);
+    assert!(walk_least > least + 0.02, "{walk_least} {least}");
+    // Both bodies are drawn, labelled, and kept in view; the knees view is a smaller box.
+    let mut frame = Frame::default();
+    h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
+    assert_eq!(frame.meshes.len(), 2);
+    assert!(
+        frame.labels.iter().any(|l| l.text == "LBS")
+            && frame.labels.iter().any(|l| l.text == "DQS")
+    );
+    let span = |f: &Frame| f.keep_in_view[7] - f.keep_in_view[0];
+    let body = span(&frame);
+    h.set_view("left knees").unwrap();
+    let mut frame = Frame::default();
+    h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
+    assert!(span(&frame).y < 0.5 * body.y);
+    assert!(h.set_view("feet").unwrap_err().contains("view"));
+}
+
+#[test]
+fn without_the_sign_fix_the_tube_twists_the_long_way_round() {
+    use inbetween::figures::skinning::SignFigure;
+    let mut f = SignFigure::new();
+    let mut frame = Frame::default();
+    // 300° twist: the elbow's w = cos 150° < 0. Fixed, the ring turns half of −60°; unfixed,
+    // half of 300°.
+    let note = f.draw(&mut frame, MeshId(3)).unwrap();
+    assert!(
+        note.contains("the fix blends −r instead, the short way"),
+        "{note}"
+    );
+    assert!(
+        (f.elbow_ring_turn_deg() + 30.0).abs() < 1.0,
+        "{}",
+        f.elbow_ring_turn_deg()
+    );
+    assert!(
+        note.contains(&format!("has turned {:.1}°", f.elbow_ring_turn_deg())),
+        "{note}"
+    );
+    assert!(note.contains("Elbow twisted by 300°"), "{note}");
+    f.set_fix(false);
+    let note = f.draw(&mut Frame::default(), MeshId(3)).unwrap();
+    assert!(note.contains("the long way round"), "{note}");
+    assert!(
+        (f.elbow_ring_turn_deg() - 150.0).abs() < 1.0,
+        "{}",
+        f.elbow_ring_turn_deg()
+    );
+    // Below 180° both hemispheres agree and so do both blends.
+    f.set_twist_deg(120.0).unwrap();
+    f.draw(&mut Frame::default(), MeshId(3)).unwrap();
+    let unfixed = f.elbow_ring_turn_deg();
+    f.set_fix(true);
+    let note = f.draw(&mut Frame::default(), MeshId(3)).unwrap();
+    assert!(note.contains("the fix changes nothing"), "{note}");
+    assert!((f.elbow_ring_turn_deg() - unfixed).abs() < 1e-3 && (unfixed - 60.0).abs() < 1.0);
+    // DQS keeps the ring round either way: every vertex stays 0.25 m from the axis.
+    let s = f.rig().ring_start(f.rig().elbow_ring());
+    let ring = &f.mesh.positions[s..s + f.rig().around];
+    let c = ring.iter().sum::<Vec3>() / ring.len() as f32;
+    assert!(ring.iter().all(|p| ((*p - c).length() - 0.25).abs() < 1e-3));
+    assert!(f.set_twist_deg(361.0).unwrap_err().contains("twist"));
+    assert!(f.set_twist_deg(f32::NAN).is_err());
+    // The circle, its markers and labels are drawn and kept in view.
+    assert!(frame.labels.iter().any(|l| l.text == "r (elbow)"));
+    assert!(!frame.keep_in_view.is_empty());
 }

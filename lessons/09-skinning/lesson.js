@@ -1,7 +1,7 @@
 // Lesson 09: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/skinning/, src/figures/skinning.rs).
 import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote } from '../../www/lesson.js';
-import { SkinningCylinderScene, SkinnedHumanScene, heatRampCss } from '../../pkg/inbetween.js';
+import { SkinningCylinderScene, SkinningSignScene, SkinnedHumanScene, heatRampCss } from '../../pkg/inbetween.js';
 import { gltfFigure } from '../../www/gltf-figure.js';
 
 const lesson = await startLesson();
@@ -64,46 +64,76 @@ if (cylinderViewer) {
   });
 }
 
-// Figure 2: the built-in human, skinned, playing a clip.
+// Figure 2: the antipodality fix, the tube twisted 0 to 360° by DQS.
+const signViewer = await lesson.figure('#fig-sign');
+if (signViewer) {
+  signViewer.setCamera(0.8, 1.0, 0, 5.5, 0.0, 0.1);
+  const scene = new SkinningSignScene();
+  const p = { twist: 300, fix: true };
+  const gui = new GUI({ container: document.querySelector('#fig-sign .panel'), title: 'Twist' });
+  gui.add(p, 'twist', 0, 360, 1).name('twist (°)').onChange((v) => scene.setTwistDeg(v));
+  gui.add(p, 'fix').name('antipodality fix').onChange((on) => scene.setFix(on));
+  const note = document.getElementById('sign-note');
+  lesson.onFrame(() => {
+    showNote(note, scene.draw(signViewer));
+    markDrawn('#fig-sign');
+  });
+}
+
+// Figure 3: the built-in human, skinned by LBS and DQS side by side, playing a clip.
 const humanViewer = await lesson.figure('#fig-human');
 if (humanViewer) {
-  humanViewer.setCamera(0, 0.9, 0, 2.8, 0.5, 0.15);
+  // From the character's left, a little raised: both bodies side by side, knees in profile.
+  humanViewer.setCamera(0, 0.9, 0, 3.2, 1.45, 0.15);
   const scene = new SkinnedHumanScene();
   const timeline = new Timeline(document.getElementById('human-timeline'), { duration: scene.durationSec(), playing: true });
-  const p = { clip: 'walk', method: 'DQS', heat: 'none', falloff: 0.03, skeleton: false, on: 'CPU' };
+  const p = { clip: 'walk', view: 'whole body', heat: 'none', falloff: 0.03, skeleton: false, on: 'CPU' };
+  const plot = new Plot(document.getElementById('human-plot'), {
+    title: 'Left leg volume over the clip', xLabel: 'time (s)', yLabel: 'volume (% of rest)',
+    series: ['LBS', 'DQS'], colors: ['#e68a00', '#17a2a8'], widths: [2.5, 2.5], minSpan: 2, height: 200,
+  });
+  const replot = () => {
+    const [t, lbs, dqs] = columns(scene.legVolumeCurves(41), 3);
+    const pct = (a) => Array.from(a, (x) => 100 * x);
+    plot.setData([t, pct(lbs), pct(dqs)]);
+  };
   const gui = new GUI({ container: document.querySelector('#fig-human .panel'), title: 'Character' });
   gui.add(p, 'clip', scene.clipNames()).name('clip').onChange((name) => {
     scene.setClip(name);
     timeline.duration = scene.durationSec();
     timeline.time %= timeline.duration;
     timeline.show();
+    replot();
   });
-  gui.add(p, 'method', ['LBS', 'DQS']).name('method').onChange((m) => scene.setMethod(m));
+  gui.add(p, 'view', ['whole body', 'left knees']).name('view').onChange((v) => { scene.setView(v); humanViewer.frameAll(); });
   const showLegend = heatLegend('#fig-human');
   gui.add(p, 'heat', ['none', ...scene.jointNames()]).name('weights of').onChange((j) => { scene.setHeatJoint(j); showLegend(j); });
   showLegend(p.heat);
   const [lowest, highest] = scene.falloffRange();
-  gui.add(p, 'falloff', lowest, highest, 0.005).name('falloff (m)').onChange((f) => scene.setFalloff(f));
+  gui.add(p, 'falloff', lowest, highest, 0.005).name('falloff (m)').onChange((f) => { scene.setFalloff(f); replot(); });
   gui.add(p, 'skeleton').name('skeleton').onChange((on) => scene.setShowSkeleton(on));
-  gui.add(p, 'on', ['CPU', 'GPU']).name('skin on').onChange((v) => { scene.setGpu(v === 'GPU'); average = 0; });
+  gui.add(p, 'on', ['CPU', 'GPU']).name('skin on').onChange((v) => { scene.setGpu(v === 'GPU'); times.length = 0; });
+  replot();
 
   const note = document.getElementById('human-note');
-  // performance.now() is coarse (0.1 ms, or worse in some browsers): below that, say so.
-  const formatMs = (x) => (x < 0.1 ? 'under 0.1 ms' : `${x.toFixed(2)} ms`);
-  let average = 0;
+  // performance.now() is coarse (0.1 ms, with jitter) next to one frame's work: the note gives the
+  // mean over the last 60 frames, which the coarse steps average out of.
+  const times = [];
   let frameMs = 0;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
-    const took = scene.skin(t);
-    average = average === 0 ? took : 0.9 * average + 0.1 * took;
+    times.push(scene.skin(t));
+    if (times.length > 60) times.shift();
+    const mean = times.reduce((a, b) => a + b, 0) / times.length;
     frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
     const work = p.on === 'GPU'
-      ? `GPU skinning: ${formatMs(average)} per frame on the CPU (clip and palette)`
-      : `CPU skinning: ${formatMs(average)} per frame (clip, palette and vertices)`;
-    showNote(note, `${scene.draw(humanViewer)} ${work}; frame time ${frameMs.toFixed(1)} ms.`);
+      ? `Skinning on the GPU: the CPU spends ${mean.toFixed(2)} ms a frame on the clip and the palettes`
+      : `Skinning on the CPU: ${mean.toFixed(2)} ms a frame for the clip, the palettes and both bodies`;
+    showNote(note, `${scene.draw(humanViewer)} ${work} (mean of the last ${times.length} frames); frame time ${frameMs.toFixed(1)} ms.`);
+    plot.setCursor(t);
     markDrawn('#fig-human');
   });
 }
 
-// Figure 3: a character from a glTF file, skinned (the shared glTF figure, www/gltf-figure.js).
+// Figure 4: a character from a glTF file, skinned (the shared glTF figure, www/gltf-figure.js).
 await gltfFigure(lesson, '#fig-gltf', { skinning: 'lbs', gpuSwitch: true });

@@ -626,7 +626,27 @@ pub struct HumanFigure {
     gpu: bool,
     /// The weights or colours changed since the GPU copy was made.
     gpu_dirty: bool,
+    /// LBS and DQS side by side ([`HumanFigure::draw_pair`]) instead of `method` alone: then
+    /// `mesh` holds the LBS body and `mesh_dqs` the DQS one.
+    compare: bool,
+    pub mesh_dqs: SkinnedMesh,
+    /// The camera keeps the whole bodies in view, or only the left knees ([`HumanView`]).
+    view: HumanView,
+    /// The left thigh's and shin's parts (their closed ellipsoids): the leg whose volume the
+    /// note and the plot give.
+    leg: [usize; 2],
 }
+
+/// What the character figure keeps in view.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HumanView {
+    Body,
+    Knees,
+}
+
+/// Where the two bodies stand side by side, along z (seen from the side, +x, both knees show
+/// in profile): LBS at +z (on the left of a view from +x), DQS at −z.
+pub const HUMAN_OFFSET_Z: f32 = 0.5;
 
 impl Default for HumanFigure {
     fn default() -> Self {
@@ -661,12 +681,109 @@ impl HumanFigure {
             palette: vec![Affine3A::IDENTITY; n],
             dual_quats: vec![DualQuat::IDENTITY; n],
             mesh: SkinnedMesh::new(v),
+            mesh_dqs: SkinnedMesh::new(v),
+            leg: ["thigh.L", "shin.L"]
+                .map(|name| skeleton.find(name).expect("a joint of the human")),
             character,
             gpu: false,
             gpu_dirty: true,
+            compare: false,
+            view: HumanView::Body,
         };
         figure.repaint();
         figure
+    }
+
+    /// LBS and DQS side by side (`true`) or the one `method` names.
+    pub fn set_compare(&mut self, on: bool) {
+        self.compare = on;
+        self.mesh.dirty = true;
+        self.mesh_dqs.dirty = true;
+    }
+
+    /// "whole body" or "left knees": what the camera keeps in view.
+    pub fn set_view(&mut self, name: &str) -> Result<(), String> {
+        self.view = match name {
+            "whole body" => HumanView::Body,
+            "left knees" => HumanView::Knees,
+            _ => {
+                return Err(format!(
+                    "view: expected \"whole body\" or \"left knees\", got {name:?}"
+                ))
+            }
+        };
+        Ok(())
+    }
+
+    /// The left leg's volume (thigh and shin parts) in `positions`, as a fraction of its rest
+    /// volume.
+    pub fn leg_volume(&self, positions: &[Vec3]) -> f32 {
+        let c = &self.character;
+        let per_part = c.mesh.indices.len() / c.skeleton.len();
+        let volume = |p: &[Vec3]| -> f32 {
+            self.leg
+                .iter()
+                .map(|&j| {
+                    c.mesh
+                        .indices
+                        .get(j * per_part..(j + 1) * per_part)
+                        .map_or(f32::NAN, |part| mesh_volume(p, part))
+                })
+                .sum()
+        };
+        volume(positions) / volume(&c.mesh.positions)
+    }
+
+    /// The left leg's volume (fraction of rest) over one cycle of the clip, both methods:
+    /// `[time (s), LBS, DQS]` per sample, the last at the clip's end.
+    pub fn leg_volume_curves(&self, samples: usize) -> Result<Vec<f32>, String> {
+        super::check_samples(samples)?;
+        let c = &self.character;
+        let clip = &self.clips[self.clip];
+        let n = c.skeleton.len();
+        let v = c.mesh.positions.len();
+        let mut pose = c.skeleton.rest_pose();
+        let (mut model, mut k, mut dq) = (
+            vec![Affine3A::IDENTITY; n],
+            vec![Affine3A::IDENTITY; n],
+            vec![DualQuat::IDENTITY; n],
+        );
+        let (mut p, mut nn) = (vec![Vec3::ZERO; v], vec![Vec3::ZERO; v]);
+        let m = &c.mesh;
+        let mut out = Vec::with_capacity(3 * samples);
+        for i in 0..samples {
+            let t = clip.duration_sec() * i as f32 / (samples - 1) as f32;
+            clip.sample(t, &mut ClipCursor::new(), &mut pose);
+            c.skeleton
+                .model_matrices(&pose, &mut model)
+                .map_err(|e| e.to_string())?;
+            skinning_palette(&model, c.skeleton.inverse_bind(), &mut k)
+                .map_err(|e| e.to_string())?;
+            dual_quat_palette(&k, &mut dq).map_err(|e| e.to_string())?;
+            out.push(t);
+            skin_lbs(&k, &c.skin, &m.positions, &m.normals, &mut p, &mut nn)
+                .map_err(|e| e.to_string())?;
+            out.push(self.leg_volume(&p));
+            skin_dqs(&dq, &c.skin, &m.positions, &m.normals, &mut p, &mut nn)
+                .map_err(|e| e.to_string())?;
+            out.push(self.leg_volume(&p));
+        }
+        Ok(out)
+    }
+
+    /// The models that place the LBS and the DQS body side by side.
+    fn pair_models() -> [Mat4; 2] {
+        [HUMAN_OFFSET_Z, -HUMAN_OFFSET_Z].map(|z| Mat4::from_translation(Vec3::new(0.0, 0.0, z)))
+    }
+
+    /// Draws the LBS and the DQS body side by side (`meshes`: their GPU ids) after
+    /// [`HumanFigure::skin`] in compare mode; returns the note.
+    pub fn draw_pair(&mut self, frame: &mut Frame, meshes: [MeshId; 2]) -> String {
+        frame.grid(12, 0.25);
+        for (mesh, model) in meshes.into_iter().zip(Self::pair_models()) {
+            frame.mesh_vertex_colors(mesh, model);
+        }
+        self.overlay(frame, "on the CPU")
     }
 
     /// The character: from code here; a glTF importer would build the same
@@ -692,6 +809,8 @@ impl HumanFigure {
         f.palette = vec![Affine3A::IDENTITY; n];
         f.dual_quats = vec![DualQuat::IDENTITY; n];
         f.mesh = SkinnedMesh::new(character.mesh.positions.len());
+        f.mesh_dqs = SkinnedMesh::new(character.mesh.positions.len());
+        f.compare = false;
         f.character = character;
         f.clips = clips;
         f.clip = 0;
@@ -757,7 +876,9 @@ impl HumanFigure {
     fn repaint(&mut self) {
         let c = &self.character;
         paint(&mut self.mesh.colors, &c.skin, self.heat_joint, &c.colors);
+        self.mesh_dqs.colors.clone_from(&self.mesh.colors);
         self.mesh.dirty = true;
+        self.mesh_dqs.dirty = true;
         self.gpu_dirty = true;
     }
 
@@ -788,13 +909,38 @@ impl HumanFigure {
             .map_err(|e| e.to_string())?;
         if self.gpu {
             // The vertex shader skins: only the palette is computed here.
-            if self.method == Method::Dqs {
+            if self.method == Method::Dqs || self.compare {
                 dual_quat_palette(&self.palette, &mut self.dual_quats)
                     .map_err(|e| e.to_string())?;
             }
             return Ok(());
         }
         let m = &c.mesh;
+        if self.compare {
+            skin_lbs(
+                &self.palette,
+                &c.skin,
+                &m.positions,
+                &m.normals,
+                &mut self.mesh.positions,
+                &mut self.mesh.normals,
+            )
+            .and_then(|()| dual_quat_palette(&self.palette, &mut self.dual_quats))
+            .and_then(|()| {
+                skin_dqs(
+                    &self.dual_quats,
+                    &c.skin,
+                    &m.positions,
+                    &m.normals,
+                    &mut self.mesh_dqs.positions,
+                    &mut self.mesh_dqs.normals,
+                )
+            })
+            .map_err(|e| e.to_string())?;
+            self.mesh.dirty = true;
+            self.mesh_dqs.dirty = true;
+            return Ok(());
+        }
         match self.method {
             Method::Lbs => skin_lbs(
                 &self.palette,
@@ -836,6 +982,12 @@ impl HumanFigure {
         mesh: crate::draw::SkinMeshId,
     ) -> Result<String, String> {
         frame.grid(12, 0.25);
+        if self.compare {
+            let [left, right] = Self::pair_models();
+            super::gpu::draw_skinned_lbs(frame, mesh, left, None, &self.palette)?;
+            super::gpu::draw_skinned_dqs(frame, mesh, right, None, &self.dual_quats)?;
+            return Ok(self.overlay(frame, "on the GPU (vertex shader)"));
+        }
         match self.method {
             Method::Lbs => {
                 super::gpu::draw_skinned_lbs(frame, mesh, Mat4::IDENTITY, None, &self.palette)
@@ -848,52 +1000,96 @@ impl HumanFigure {
     }
 
     fn overlay(&mut self, frame: &mut Frame, where_: &str) -> String {
-        if self.show_skeleton {
-            // The skeleton is inside the body: drawn over it, as an X-ray.
-            let parents = self.character.skeleton.parents();
-            for (i, m) in self.model.iter().enumerate() {
-                let p = Vec3::from(m.translation);
-                frame.point_on_top(p, 0.018, palette::DARK);
-                if parents[i] >= 0 {
-                    frame.line_on_top(
-                        Vec3::from(self.model[parents[i] as usize].translation),
-                        p,
-                        palette::DARK,
-                    );
+        let places: Vec<Mat4> = if self.compare {
+            Self::pair_models().to_vec()
+        } else {
+            vec![Mat4::IDENTITY]
+        };
+        let names = self.character.skeleton.names();
+        for place in &places {
+            let at = |m: &Affine3A| place.transform_point3(Vec3::from(m.translation));
+            if self.show_skeleton {
+                // The skeleton is inside the body: drawn over it, as an X-ray.
+                let parents = self.character.skeleton.parents();
+                for (i, m) in self.model.iter().enumerate() {
+                    let p = at(m);
+                    frame.marker_on_top(p, 7.0, palette::DARK);
+                    if parents[i] >= 0 {
+                        let q = at(&self.model[parents[i] as usize]);
+                        frame.wide_line_on_top(q, p, palette::DARK, 2.0);
+                    }
                 }
             }
+            if let Some(j) = self.heat_joint {
+                frame.label(
+                    at(&self.model[j]) + Vec3::new(0.08, 0.05, 0.0),
+                    names[j].clone(),
+                    palette::RED,
+                );
+            }
         }
-        if let Some(j) = self.heat_joint {
-            let p = Vec3::from(self.model[j].translation);
-            frame.label(
-                p + Vec3::new(0.08, 0.05, 0.0),
-                self.character.skeleton.names()[j].clone(),
-                palette::RED,
-            );
+        if self.compare {
+            for (place, name, color) in [
+                (places[0], "LBS", palette::ORANGE),
+                (places[1], "DQS", palette::TEAL),
+            ] {
+                // Over the head, or over the knee in the knees view (the camera fits the labels too).
+                let y = if self.view == HumanView::Knees {
+                    0.85
+                } else {
+                    2.0
+                };
+                frame.label_with_priority(
+                    place.transform_point3(Vec3::new(0.1, y, 0.0)),
+                    name,
+                    color,
+                    1,
+                );
+                frame.contact_shadow(place.transform_point3(Vec3::ZERO), 0.3);
+            }
+            let z = HUMAN_OFFSET_Z;
+            match self.view {
+                HumanView::Body => frame
+                    .keep_box_in_view(Vec3::new(-0.5, 0.0, -z - 0.5), Vec3::new(0.5, 2.0, z + 0.5)),
+                // Both left knees (the character's left is +x), wherever the clips swing them.
+                HumanView::Knees => frame.keep_box_in_view(
+                    Vec3::new(0.0, 0.25, -z - 0.35),
+                    Vec3::new(0.25, 0.8, z + 0.35),
+                ),
+            }
         }
         let colours = match self.heat_joint {
-            Some(j) => format!(
-                " Colours: the {}'s weights, blue 0 to red 1.",
-                self.character.skeleton.names()[j]
-            ),
+            Some(j) => format!(" Colours: the weights of {}, blue 0 to red 1.", names[j]),
             // The falloff changes the weights; the shapes move only a few centimetres, mostly
             // inside the neighbouring parts, so the heat map is where it shows.
             None => {
                 " Pick a joint under weights of to see the blend zones the falloff sets.".into()
             }
         };
-        format!(
-            "{} vertices, {} joints ({} vertices follow two or more at falloff {} m), skinned by {} {where_} ({} clip).{colours}",
+        let method = if self.compare {
+            "linear blend skinning (LBS, left) and dual quaternion skinning (DQS, right)"
+        } else {
+            match self.method {
+                Method::Lbs => "linear blend skinning",
+                Method::Dqs => "dual quaternion skinning",
+            }
+        };
+        let mut note = format!(
+            "{} vertices, {} joints ({} vertices follow two or more at falloff {} m), skinned by {method} {where_} ({} clip).{colours}",
             self.character.mesh.positions.len(),
             self.character.skeleton.len(),
             blended(&self.character.skin),
             format_number(self.falloff),
-            match self.method {
-                Method::Lbs => "linear blend skinning",
-                Method::Dqs => "dual quaternion skinning",
-            },
             self.clips[self.clip].name()
-        )
+        );
+        if self.compare && !self.gpu {
+            note += &format!(
+                " Left leg (thigh and shin) now: LBS keeps {:.1}% of its volume, DQS {:.1}%.",
+                100.0 * self.leg_volume(&self.mesh.positions),
+                100.0 * self.leg_volume(&self.mesh_dqs.positions)
+            );
+        }
+        note
     }
 }
 
@@ -924,4 +1120,257 @@ fn vertices_note(what: &str, at: &str, student: &[Vec3], reference: &[Vec3]) -> 
             .1
         }
     }
+}
+
+/// Where the sign figure draws the quaternion circle: its centre and radius (metres).
+pub const SIGN_CIRCLE_CENTER: Vec3 = Vec3::new(2.3, 0.9, 0.0);
+pub const SIGN_CIRCLE_RADIUS: f32 = 0.75;
+
+/// The antipodality fix on its own: the cylinder twisted at the elbow by 0 to 360° and skinned
+/// by DQS with or without the sign flip, beside the circle on which the shoulder's and the
+/// elbow's rotation quaternions lie.
+///
+/// A twist by θ about the bone's axis `x` is the quaternion `r = cos(θ/2) + sin(θ/2) i`, and
+/// the shoulder's is `1`: both lie on the unit circle of the plane spanned by `1` and `i`, a
+/// great circle of the 4D sphere, where `r` sits at the angle θ/2 from `1`. Past θ = 180° that
+/// angle passes 90°, `r · 1 = cos(θ/2)` turns negative, and the unflipped blend at ½ and ½ sits
+/// at θ/4 (half of θ: the long way round) while the flipped one sits at θ/4 − 90° (half of
+/// θ − 360°: the short way).
+#[derive(Clone, Debug)]
+pub struct SignFigure {
+    rig: CylinderRig,
+    skin: SkinWeights,
+    twist_rad: f32,
+    fix: bool,
+    model: Vec<Affine3A>,
+    palette: Vec<Affine3A>,
+    dual_quats: Vec<DualQuat>,
+    pub mesh: SkinnedMesh,
+    stale: bool,
+}
+
+impl Default for SignFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SignFigure {
+    /// Twisted 300°, fix on.
+    pub fn new() -> Self {
+        let rig = cylinder_rig(1.0, 0.25, CYLINDER_RINGS, CYLINDER_AROUND)
+            .expect("the lesson's cylinder is valid");
+        let skin = rig.weights(0.15).expect("a valid falloff");
+        let n = rig.mesh.positions.len();
+        let j = rig.skeleton.len();
+        let mut mesh = SkinnedMesh::new(n);
+        mesh.colors.fill(palette::TEAL.extend(1.0));
+        Self {
+            skin,
+            twist_rad: 300f32.to_radians(),
+            fix: true,
+            model: vec![Affine3A::IDENTITY; j],
+            palette: vec![Affine3A::IDENTITY; j],
+            dual_quats: vec![DualQuat::IDENTITY; j],
+            mesh,
+            stale: true,
+            rig,
+        }
+    }
+
+    pub fn rig(&self) -> &CylinderRig {
+        &self.rig
+    }
+
+    /// Elbow twist about its bone, degrees in [0, 360].
+    pub fn set_twist_deg(&mut self, deg: f32) -> Result<(), String> {
+        self.twist_rad = in_range("twist", deg, 0.0, 360.0)?.to_radians();
+        self.stale = true;
+        Ok(())
+    }
+
+    /// The antipodality fix on (flip each quaternion onto the pivot's hemisphere) or off.
+    pub fn set_fix(&mut self, on: bool) {
+        self.fix = on;
+        self.stale = true;
+    }
+
+    /// The elbow's rotation quaternion as the twist gives it, `cos(θ/2) + sin(θ/2) i`: past
+    /// 180° on the far hemisphere from the shoulder's `1`.
+    pub fn elbow_rotation(&self) -> glam::Quat {
+        glam::Quat::from_rotation_x(self.twist_rad)
+    }
+
+    /// Skins the tube if a control changed.
+    pub fn update(&mut self) -> Result<(), String> {
+        if !self.stale {
+            return Ok(());
+        }
+        self.stale = false;
+        self.rig
+            .palette(0.0, self.twist_rad, &mut self.model, &mut self.palette)
+            .map_err(|e| e.to_string())?;
+        dual_quat_palette(&self.palette, &mut self.dual_quats).map_err(|e| e.to_string())?;
+        // A palette's dual quaternions may come with either sign; this figure gives each joint
+        // the sign of its rotation cos(θ/2) + sin(θ/2) i, as an animation's keys might.
+        let r = self.elbow_rotation();
+        for q in &mut self.dual_quats[1..] {
+            if q.real.dot(r) < 0.0 {
+                *q = *q * -1.0;
+            }
+        }
+        let m = &self.rig.mesh;
+        for (v, out) in self.mesh.positions.iter_mut().enumerate() {
+            let joints = self.skin.joints()[v];
+            let weights = self.skin.weights()[v];
+            let qs: Vec<DualQuat> = joints
+                .iter()
+                .map(|&j| self.dual_quats[j as usize])
+                .collect();
+            let blend = if self.fix {
+                crate::skinning::blend_dual_quats(&qs, &weights)
+            } else {
+                blend_without_fix(&qs, &weights)
+            };
+            *out = blend.transform_point(m.positions[v]);
+            self.mesh.normals[v] = blend.transform_direction(m.normals[v]);
+        }
+        self.mesh.dirty = true;
+        Ok(())
+    }
+
+    /// How far the elbow ring has turned about the bone, degrees in (−180, 180]: half the twist
+    /// the short way with the fix, the long way round without it (past 180°).
+    pub fn elbow_ring_turn_deg(&self) -> f32 {
+        let s = self.rig.ring_start(self.rig.elbow_ring());
+        let ring = &self.mesh.positions[s..s + self.rig.around];
+        let c = ring.iter().sum::<Vec3>() / ring.len() as f32;
+        let rest = self.rig.mesh.positions[s] - c;
+        let now = ring[0] - c;
+        // About +x: y turns towards z.
+        let angle = now.z.atan2(now.y) - rest.z.atan2(rest.y);
+        let deg = angle.to_degrees();
+        if deg <= -180.0 {
+            deg + 360.0
+        } else if deg > 180.0 {
+            deg - 360.0
+        } else {
+            deg
+        }
+    }
+
+    /// The point at angle `a` (radians) on the drawn circle: `1` to the right, `i` up.
+    fn on_circle(a: f32) -> Vec3 {
+        SIGN_CIRCLE_CENTER + SIGN_CIRCLE_RADIUS * Vec3::new(a.cos(), a.sin(), 0.0)
+    }
+
+    /// Fills the draw list (`mesh`: the tube's GPU id) and returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> Result<String, String> {
+        self.update()?;
+        frame.grid(12, 0.5);
+        let offset = Vec3::new(-1.6, 0.9, 0.0);
+        frame.mesh_vertex_colors(mesh, Mat4::from_translation(offset));
+        // The two rows of vertices along the tube (on top and in front before skinning).
+        for k in CylinderFigure::STRIPES {
+            let stripe: Vec<Vec3> = (0..self.rig.rings)
+                .map(|r| {
+                    let s = self.rig.ring_start(r);
+                    let ring = &self.mesh.positions[s..s + self.rig.around];
+                    let c = ring.iter().sum::<Vec3>() / ring.len() as f32;
+                    offset + c + (ring[k] - c) * 1.03
+                })
+                .collect();
+            frame.wide_polyline(&stripe, palette::DARK, 2.0);
+        }
+        // The circle through 1 and i, the two joints' quaternions on it, −r, and the blend.
+        let circle: Vec<Vec3> = (0..=96)
+            .map(|k| Self::on_circle(std::f32::consts::TAU * k as f32 / 96.0))
+            .collect();
+        frame.wide_polyline(&circle, palette::GREY, 2.0);
+        let c = SIGN_CIRCLE_CENTER;
+        let rr = SIGN_CIRCLE_RADIUS + 0.15;
+        frame.wide_line(c - Vec3::X * rr, c + Vec3::X * rr, palette::GRID_AXIS, 1.5);
+        frame.wide_line(c - Vec3::Y * rr, c + Vec3::Y * rr, palette::GRID_AXIS, 1.5);
+        let half = 0.5 * self.twist_rad;
+        let r = self.elbow_rotation();
+        let far = r.w < 0.0;
+        let blend_angle = if self.fix && far {
+            0.5 * (half - std::f32::consts::PI)
+        } else {
+            0.5 * half
+        };
+        let one = Self::on_circle(0.0);
+        let elbow = Self::on_circle(half);
+        let flipped = Self::on_circle(half + std::f32::consts::PI);
+        let blend = Self::on_circle(blend_angle);
+        frame.marker(one, 12.0, palette::DARK);
+        frame.label_with_priority(
+            one + Vec3::new(0.06, 0.04, 0.0),
+            "1 (shoulder)",
+            palette::DARK,
+            2,
+        );
+        frame.marker(elbow, 12.0, palette::ORANGE);
+        frame.label_with_priority(
+            elbow + Vec3::new(0.06, 0.04, 0.0),
+            "r (elbow)",
+            palette::ORANGE,
+            2,
+        );
+        frame.marker(flipped, 9.0, palette::GREY);
+        frame.label(flipped + Vec3::new(0.06, -0.06, 0.0), "−r", palette::GREY);
+        // The blend's arc from 1, and the blend itself.
+        let arc: Vec<Vec3> = (0..=24)
+            .map(|k| Self::on_circle(blend_angle * k as f32 / 24.0))
+            .collect();
+        frame.wide_polyline(&arc, palette::TEAL, 5.0);
+        frame.marker(blend, 12.0, palette::TEAL);
+        frame.label_with_priority(
+            blend + Vec3::new(-0.05, 0.1, 0.0),
+            "blend at ½, ½",
+            palette::TEAL,
+            1,
+        );
+        frame.label(c + Vec3::new(rr + 0.02, 0.0, 0.0), "w", palette::GREY);
+        frame.label(c + Vec3::new(0.02, rr + 0.02, 0.0), "x (i)", palette::GREY);
+        frame.keep_box_in_view(Vec3::new(-1.7, 0.2, -0.4), Vec3::new(3.3, 1.8, 0.4));
+        let deg = self.twist_rad.to_degrees();
+        let turn = self.elbow_ring_turn_deg();
+        let mut note = format!(
+            "Elbow twisted by {deg:.0}°: its quaternion r = ({}, {}, 0, 0) in (w, x, y, z), r · 1 = {}.",
+            format_number(r.w),
+            format_number(r.x),
+            format_number(r.w)
+        );
+        note += &match (far, self.fix) {
+            (false, _) => " Both on one hemisphere: the fix changes nothing.".to_string(),
+            (true, true) => {
+                " On the far hemisphere: the fix blends −r instead, the short way.".to_string()
+            }
+            (true, false) => {
+                " On the far hemisphere, and not flipped: the blend goes the long way round."
+                    .to_string()
+            }
+        };
+        note += &format!(" The elbow ring has turned {turn:.1}° about the bone.");
+        Ok(note)
+    }
+}
+
+/// The DQS blend without the antipodality fix: `Σ wₖ qₖ`, normalised (identity when the real
+/// part cancels).
+fn blend_without_fix(dual_quats: &[DualQuat], weights: &[f32]) -> DualQuat {
+    let (mut real, mut dual) = (Vec4::ZERO, Vec4::ZERO);
+    for (q, &w) in dual_quats.iter().zip(weights) {
+        real += Vec4::from(q.real) * w;
+        dual += Vec4::from(q.dual) * w;
+    }
+    if real.length() < 1e-6 {
+        return DualQuat::IDENTITY;
+    }
+    DualQuat {
+        real: glam::Quat::from_vec4(real),
+        dual: glam::Quat::from_vec4(dual),
+    }
+    .normalized()
 }

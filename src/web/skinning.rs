@@ -4,7 +4,7 @@
 
 use super::{js, Viewer};
 use crate::draw::MeshId;
-use crate::figures::skinning::{CylinderFigure, HumanFigure, SkinnedMesh};
+use crate::figures::skinning::{CylinderFigure, HumanFigure, SignFigure, SkinnedMesh};
 use crate::mesh::MeshData;
 use wasm_bindgen::prelude::*;
 
@@ -151,11 +151,64 @@ impl Default for SkinningCylinderScene {
     }
 }
 
+/// The antipodality fix: the tube twisted 0 to 360° by DQS, with or without the sign flip.
+#[wasm_bindgen]
+pub struct SkinningSignScene {
+    scene: SignFigure,
+    mesh: Option<MeshId>,
+}
+
+#[wasm_bindgen]
+impl SkinningSignScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> SkinningSignScene {
+        SkinningSignScene {
+            scene: SignFigure::new(),
+            mesh: None,
+        }
+    }
+
+    /// Elbow twist, degrees in [0, 360].
+    #[wasm_bindgen(js_name = setTwistDeg)]
+    pub fn set_twist_deg(&mut self, deg: f32) -> Result<(), JsError> {
+        self.scene.set_twist_deg(deg).map_err(js)
+    }
+
+    /// The antipodality fix on or off.
+    #[wasm_bindgen(js_name = setFix)]
+    pub fn set_fix(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
+        self.scene.set_fix(on);
+        Ok(())
+    }
+
+    /// Skins (if a control changed), uploads and draws. Returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        self.scene.update().map_err(js)?;
+        let indices = self.scene.rig().mesh.indices.clone();
+        let id = sync(viewer, &mut self.mesh, &mut self.scene.mesh, &indices)?;
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, id)
+            .map_err(js)?;
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for SkinningSignScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 /// Figure 3: the built-in human, skinned, playing a clip.
 #[wasm_bindgen]
 pub struct SkinnedHumanScene {
     scene: HumanFigure,
     mesh: Option<MeshId>,
+    /// The DQS body beside the LBS one.
+    mesh_dqs: Option<MeshId>,
     /// The same body for skinning in the vertex shader (made on first use).
     gpu_mesh: Option<crate::draw::SkinMeshId>,
 }
@@ -164,9 +217,12 @@ pub struct SkinnedHumanScene {
 impl SkinnedHumanScene {
     #[wasm_bindgen(constructor)]
     pub fn new() -> SkinnedHumanScene {
+        let mut scene = HumanFigure::new();
+        scene.set_compare(true);
         SkinnedHumanScene {
-            scene: HumanFigure::new(),
+            scene,
             mesh: None,
+            mesh_dqs: None,
             gpu_mesh: None,
         }
     }
@@ -192,6 +248,21 @@ impl SkinnedHumanScene {
     pub fn set_method(&mut self, name: JsValue) -> Result<(), JsError> {
         let name: &str = &super::string("name", &name)?;
         self.scene.set_method(name).map_err(js)
+    }
+
+    /// "whole body" or "left knees": what the camera keeps in view.
+    #[wasm_bindgen(js_name = setView)]
+    pub fn set_view(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name: &str = &super::string("name", &name)?;
+        self.scene.set_view(name).map_err(js)
+    }
+
+    /// `[time (s), LBS, DQS]` per sample: the left leg's volume (fraction of rest) over the
+    /// clip; `samples` in [2, 10000].
+    #[wasm_bindgen(js_name = legVolumeCurves)]
+    pub fn leg_volume_curves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
+        self.scene.leg_volume_curves(samples).map_err(js)
     }
 
     /// Falloff of the automatic weights, metres in [`falloffRange`](Self::falloff_range).
@@ -279,7 +350,15 @@ impl SkinnedHumanScene {
         }
         let indices = self.scene.character().mesh.indices.clone();
         let id = sync(viewer, &mut self.mesh, &mut self.scene.mesh, &indices)?;
-        let note = self.scene.draw(&mut viewer.renderer.frame, id);
+        let other = sync(
+            viewer,
+            &mut self.mesh_dqs,
+            &mut self.scene.mesh_dqs,
+            &indices,
+        )?;
+        let note = self
+            .scene
+            .draw_pair(&mut viewer.renderer.frame, [id, other]);
         viewer.present()?;
         Ok(note)
     }
