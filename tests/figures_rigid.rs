@@ -451,3 +451,22 @@ fn probes_catch_what_the_figure_input_hides() {
     rigid.set_runner(reference);
     assert!(rigid.exercise_note(0.3).contains("and at 5 more inputs"));
 }
+
+#[test]
+fn the_affine_try_this_does_what_it_says() {
+    let mut scene = AffineKeys::new();
+    // Scales 1, shear 0: B is a pure rotation (160° about y), and the naive lerp still shrinks.
+    scene.set_key_b(160.0, Vec3::ONE, 0.0).unwrap();
+    let det = scene.sample_determinant(101).unwrap();
+    assert!(det[50][1] < 0.5, "naive shrinks: {:?}", det[50]);
+    assert!(
+        det.iter().all(|r| (r[2] - 1.0).abs() < 1e-3),
+        "polar keeps the volume"
+    );
+    // Angle 0 and scale x 2: the two methods agree exactly, volume 1 to 2 in a straight line.
+    scene.set_key_b(0.0, Vec3::new(2.0, 1.0, 1.0), 0.0).unwrap();
+    for r in scene.sample_determinant(11).unwrap() {
+        assert!((r[1] - r[2]).abs() < 1e-4, "{r:?}");
+        assert!((r[1] - (1.0 + r[0])).abs() < 1e-4, "{r:?}");
+    }
+}
