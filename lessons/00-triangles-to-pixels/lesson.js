@@ -55,14 +55,17 @@ if (frustumViewer) {
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('frustum-depth'), {
     title: 'Depth against distance', xLabel: 'distance d in front of the camera (m)', yLabel: 'depth (no unit)',
-    series: ['wgpu, [0, 1]', 'OpenGL, [−1, 1]'], colors: [cssVar('--z-axis'), cssVar('--grey')], minSpan: 0.5,
+    series: ['wgpu, [0, 1]', 'OpenGL, [−1, 1]', 'depth 0.5'], colors: [cssVar('--z-axis'), cssVar('--grey'), cssVar('--orange')],
+    dashes: [null, null, [6, 4]], widths: [2.5, 2.5, 1.5], minSpan: 0.5,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
     scene.setFrustum(p.fov, p.near, p.far);
     scene.setOffset(p.x, p.y);
     scene.setUseExercise(p.useExercise);
-    plot.setData(columns(scene.sampleDepth(201), 3));
+    // A dashed guide at depth 0.5, so the reader sees where the wgpu curve is half-way.
+    const [d, wgpu, gl] = columns(scene.sampleDepth(201), 3);
+    plot.setData([d, wgpu, gl, d.map(() => 0.5)]);
     showMatrix(document.getElementById('frustum-wgpu'), scene.matrix(false));
     showMatrix(document.getElementById('frustum-gl'), scene.matrix(true));
   }, (m) => { rejected = m; });
@@ -90,7 +93,7 @@ if (frustumViewer) {
 // Figure 3: depth precision.
 const depthViewer = await lesson.figure('#fig-depth');
 if (depthViewer) {
-  depthViewer.setCamera(0, 3, -20, 30, 1.35, 0.1);
+  depthViewer.setCamera(0, 3, -20, 30, 1.2, 0.45);
   const scene = new DepthPrecisionScene();
   const p = { near: 0.1, far: 1000, gap: 0.01, bits: 16 };
   const gui = new GUI({ container: document.querySelector('#fig-depth .panel'), title: 'Depth buffer' });
@@ -103,7 +106,7 @@ if (depthViewer) {
   const plot = new Plot(document.getElementById('depth-step'), {
     title: 'What one depth step is worth (log-log)', xLabel: 'distance d (m)', yLabel: 'length (m)',
     series: ['step Δd, 16 bits', 'step Δd, 24 bits', 'separation d·gap/h'],
-    colors: [cssVar('--orange'), cssVar('--y-axis'), cssVar('--grey')], widths: [2.5, 2.5, 2.5], log: 'xy',
+    colors: [cssVar('--orange'), cssVar('--y-axis'), cssVar('--grey')], widths: [2.5, 2.5, 2.5], log: 'xy', height: 300,
   });
   const image = document.getElementById('depth-image');
   let rejected = '';
@@ -157,7 +160,7 @@ if (normalsViewer) {
 // Figure 5: shading.
 const shadingViewer = await lesson.figure('#fig-shading');
 if (shadingViewer) {
-  shadingViewer.setCamera(0, 1.5, 0, 7.5, 0.75, 0.25);
+  shadingViewer.setCamera(0, 1.5, 0, 7.5, -0.5, 0.55);
   const scene = new ShadingScene();
   const p = {
     lightAzimuth: 40, lightElevation: 35, ka: 0.15, kd: 0.7, ks: 0.5, shininess: 32,

@@ -729,32 +729,37 @@ impl DepthPrecision {
         }
         let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
         frame.wide_line(sep(0.0), sep(reach), palette::GREY, 2.5);
+        // The names sit near the eye, where the bars are still short: the separation's just
+        // above its line, the step's on the third bar.
+        let d = 6.0f32.min(reach);
         frame.label_with_priority(
-            sep(0.7 * reach) + Vec3::Y * 0.5,
+            sep(d) + Vec3::Y * 0.3,
             "separation d·gap/h (×40)",
             palette::GREY,
             1,
         );
-        frame.label(
-            Vec3::new(1.1, 2.0, -6.0),
+        let step = raster::depth_step(2.0, self.near, self.far, self.bits) * Self::BAR_SCALE;
+        frame.label_with_priority(
+            Vec3::new(1.1, step.min(6.0) + 0.25, -2.0),
             "one depth step (×40)",
             palette::GREEN,
+            1,
         );
         let from = self.fighting_from();
         if from < reach {
             frame.stroke(
-                &[Vec3::new(1.1, 0.0, -from), Vec3::new(1.1, 6.2, -from)],
+                &[Vec3::new(1.1, 0.0, -from), Vec3::new(1.1, 6.8, -from)],
                 palette::ORANGE,
                 crate::draw::StrokeStyle::dashed(2.5, 0.3, 0.2),
             );
             frame.label_with_priority(
-                Vec3::new(1.1, 6.5, -from),
+                Vec3::new(1.1, 7.1, -from),
                 "fighting from here",
                 palette::ORANGE,
                 3,
             );
         }
-        frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 6.6, 0.5));
+        frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 7.2, 0.5));
         format!(
             "z_far / z_near = {}. With {} bits, one depth step is worth {} m at 1 m, {} m at 10 m and {} m at \
              z_far. Along a line of sight the floors are d · gap / h apart; the step exceeds that beyond {} m{}.",
@@ -1399,9 +1404,12 @@ impl Shading {
             rgb(t.total()),
         );
         if self.use_exercise {
+            let verdict = self.exercise_note();
             note += " ";
-            note += &self.exercise_note();
+            note += &verdict;
             note += match (&self.sphere_problem, self.model) {
+                // A stub or a panic is reported once, by the verdict.
+                (Some(problem), _) if *problem == verdict => String::new(),
                 (Some(problem), _) => format!(" {problem}"),
                 (None, ShadingModel::BlinnPhong) => {
                     " The sphere is shaded by your blinn_phong at every vertex.".to_string()
