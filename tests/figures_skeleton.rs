@@ -150,7 +150,7 @@ fn plot_samples_follow_the_interpolation() {
     f.select(f.skeleton().find("upper_arm.L").unwrap()).unwrap();
     f.set_keys_per_cycle(4.0).unwrap();
     let linear_slerp = f.sample_selected(301).unwrap();
-    assert_eq!(linear_slerp.len(), 5 * 301);
+    assert_eq!(linear_slerp.len(), 7 * 301);
     f.set_interpolation("linear (nlerp)").unwrap();
     let linear_nlerp = f.sample_selected(301).unwrap();
     assert_ne!(linear_slerp, linear_nlerp);
@@ -158,7 +158,7 @@ fn plot_samples_follow_the_interpolation() {
     // segment (t in (0.02, 0.6), keys 120° apart) is tiny for slerp, larger for nlerp.
     let spread = |v: &[f32]| {
         let s: Vec<f32> = v
-            .chunks(5)
+            .chunks(7)
             .filter(|c| c[0] > 0.02 && c[0] < 0.6)
             .map(|c| c[2])
             .collect();
@@ -284,7 +284,7 @@ fn crossfading_a_second_clip() {
 fn speeds_in_segment(samples: &[f32], d: f32, keys: usize, k: usize) -> Vec<(f32, f32, f32)> {
     let segment = d / (keys - 1) as f32;
     samples
-        .chunks(5)
+        .chunks(7)
         .map(|c| (c[0], c[2], c[4]))
         .filter(|&(t, ..)| t > k as f32 * segment + 0.01 && t < (k + 1) as f32 * segment - 0.02)
         .map(|(t, a, b)| ((t - k as f32 * segment) / segment, a, b))
@@ -392,7 +392,7 @@ fn the_compared_paths_and_speeds_show_what_the_try_this_says() {
     let times = f.key_times();
     let samples = f.sample_selected(961).unwrap();
     let jump = |column: usize, key_t: f32| {
-        let rows: Vec<&[f32]> = samples.chunks(5).collect();
+        let rows: Vec<&[f32]> = samples.chunks(7).collect();
         let i = rows.iter().position(|c| c[0] >= key_t).unwrap();
         (rows[i + 2][column] - rows[i - 3][column]).abs()
             / rows[i + 2][column].max(rows[i - 3][column])
@@ -446,8 +446,24 @@ fn the_crossfade_shows_both_clips_beside_the_blend() {
     wave.set_clip("wave").unwrap();
     wave.select(arm).unwrap();
     let wave_arm = wave.sample_selected(101).unwrap();
-    let arm_blend = samples.chunks(5).map(|c| c[1]).fold(0.0, f32::max);
-    let arm_wave = wave_arm.chunks(5).map(|c| c[1]).fold(0.0, f32::max);
+    let arm_blend = samples.chunks(7).map(|c| c[1]).fold(0.0, f32::max);
+    // The plot's clip B column is the wave alone, its clip A column the walk alone.
+    let b_column = samples.chunks(7).map(|c| c[6]).fold(0.0, f32::max);
+    let wave_own = wave_arm.chunks(7).map(|c| c[1]).fold(0.0, f32::max);
+    assert!((b_column - wave_own).abs() < 0.5, "{b_column} against {wave_own}");
+    let mut walk_arm = SkeletonFigure::new();
+    walk_arm.select(arm).unwrap();
+    let walk_own: Vec<f32> = walk_arm.sample_selected(101).unwrap().chunks(7).map(|c| c[1]).collect();
+    let a_column: Vec<f32> = samples.chunks(7).map(|c| c[5]).collect();
+    for (a, b) in a_column.iter().zip(&walk_own) {
+        assert!((a - b).abs() < 1e-3);
+    }
+    // The blend's line runs about midway between A's and B's (the Try this).
+    for c in samples.chunks(7) {
+        let (blend, a, b) = (c[1], c[5], c[6]);
+        assert!((blend - 0.5 * (a + b)).abs() < 0.15 * (b - a).abs(), "blend {blend}, A {a}, B {b}");
+    }
+    let arm_wave = wave_arm.chunks(7).map(|c| c[1]).fold(0.0, f32::max);
     let ratio = arm_blend / arm_wave;
     assert!(
         (0.4..0.6).contains(&ratio),
@@ -456,7 +472,7 @@ fn the_crossfade_shows_both_clips_beside_the_blend() {
     f.select(thigh).unwrap();
     let mut walk = SkeletonFigure::new();
     walk.select(thigh).unwrap();
-    let swing = |s: Vec<f32>| s.chunks(5).map(|c| c[1]).fold(0.0, f32::max);
+    let swing = |s: Vec<f32>| s.chunks(7).map(|c| c[1]).fold(0.0, f32::max);
     let ratio = swing(f.sample_selected(101).unwrap()) / swing(walk.sample_selected(101).unwrap());
     assert!(
         (0.4..0.6).contains(&ratio),

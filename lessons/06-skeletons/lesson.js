@@ -10,6 +10,8 @@ const lesson = await startLesson();
 const UNDER_AND_OVER = [5, 1.5];
 const PURPLE = '#944fc9';
 const BLUE = '#1f6fd6';
+const ORANGE = '#e68a00';
+const BROWN = '#8c564b';
 
 /** An angle slider that shows whole degrees. */
 function addAngle(folder, object, key, name) {
@@ -118,13 +120,17 @@ async function skeletonFigure(id, start) {
   // Figure 1 plots the selected joint's angle; Figure 2 the angle and speed under both
   // interpolations (purple wide underneath, blue narrow on top: where they agree both show).
   const plots = [];
+  // Figure 3 plots the angle under clip A alone, the blend and clip B alone.
   const angleBox = figure.querySelector('.plot-angle');
+  const angleSeries = start.plots ? [['purple path', PURPLE, 1], ['blue path', BLUE, 3]]
+    : start.blend ? [['clip A alone', BLUE, 5], ['blend', ORANGE, 1], ['clip B alone', BROWN, 6]]
+      : [['angle', ORANGE, 1]];
   if (angleBox) {
     plots.push([new Plot(angleBox, {
       title: 'Selected joint: angle from rest', xLabel: 'time (s)', yLabel: 'angle (°)',
-      series: start.plots ? ['purple path', 'blue path'] : ['angle'],
-      colors: start.plots ? [PURPLE, BLUE] : ['#e68a00'], widths: UNDER_AND_OVER, minSpan: 5, height: 160,
-    }), start.plots ? [1, 3] : [1]]);
+      series: angleSeries.map((a) => a[0]), colors: angleSeries.map((a) => a[1]),
+      widths: start.blend ? [2.5, 2.5, 2.5] : UNDER_AND_OVER, minSpan: 5, height: 160,
+    }), angleSeries.map((a) => a[2])]);
   }
   const speedBox = figure.querySelector('.plot-speed');
   if (speedBox) {
@@ -134,7 +140,7 @@ async function skeletonFigure(id, start) {
     }), [2, 4]]);
   }
   function update() {
-    const cols = columns(scene.sampleSelected(241), 5);
+    const cols = columns(scene.sampleSelected(241), 7);
     for (const [plot, which] of plots) plot.setData([cols[0], ...which.map((k) => cols[k])]);
     showKeys();
   }

@@ -1137,10 +1137,12 @@ impl SkeletonFigure {
     }
 
     /// One cycle of the selected joint's rotation for the plots: `[t, angle, speed, angle₂,
-    /// speed₂, …]`, the angle (degrees) of its local rotation from its rest rotation and the
+    /// speed₂, angle_A, angle_B, …]`, the angle (degrees) of its local rotation from its rest rotation and the
     /// angular speed (degrees per second, by finite differences), `samples` times over the clip,
     /// with the current interpolation and offsets; `angle₂` and `speed₂` are the same under the
-    /// compared interpolation (a copy of the first two when none is compared).
+    /// compared interpolation (a copy of the first two when none is compared); then the angle
+    /// under clip A alone and under clip B alone while crossfading (`[…, angle_A, angle_B]`,
+    /// without offsets; both the playing clip's without a blend).
     pub fn sample_selected(&self, samples: usize) -> Result<Vec<f32>, String> {
         super::check_samples(samples)?;
         let d = self.duration_sec();
@@ -1159,7 +1161,25 @@ impl SkeletonFigure {
                 rotations.push(pose.local[j].rotation);
             }
         }
-        let mut out = Vec::with_capacity(5 * samples);
+        // The crossfade's clips alone (no offsets): A is the playing clip, B the blended one at
+        // the same phase; without a blend both are the playing clip.
+        let mut alone = [Vec::with_capacity(samples), Vec::with_capacity(samples)];
+        for (k, rotations) in alone.iter_mut().enumerate() {
+            let (clip, scale) = match (k, self.blend_clip) {
+                (1, Some(b)) => (Some(b), self.clips[b].duration_sec() / d),
+                _ => (self.clip, 1.0),
+            };
+            let mut cursor = ClipCursor::new();
+            for i in 0..samples {
+                let t = (i as f32 * dt).min(d * 0.99999) * scale;
+                match clip {
+                    Some(c) => self.clips[c].sample(t, &mut cursor, &mut pose),
+                    None => pose.local.copy_from_slice(self.skeleton.rest()),
+                }
+                rotations.push(pose.local[j].rotation);
+            }
+        }
+        let mut out = Vec::with_capacity(7 * samples);
         for k in 0..samples {
             let (a, b) = if k + 1 < samples {
                 (k, k + 1)
@@ -1170,6 +1190,9 @@ impl SkeletonFigure {
             for rotations in &series {
                 out.push(angle_between(rest, rotations[k]) / DEG);
                 out.push(angle_between(rotations[a], rotations[b]) / dt / DEG);
+            }
+            for rotations in &alone {
+                out.push(angle_between(rest, rotations[k]) / DEG);
             }
         }
         Ok(out)
