@@ -79,10 +79,11 @@ test('lesson 07: dragging a target leaves two-decimal numbers in the sliders', a
     await canvas.scrollIntoViewIfNeeded();
     await frames(page);
     const box = await canvas.boundingBox();
-    // The middle chain's target: hover around its label until the page says the pointer is on it.
+    // The middle (CCD) chain's target: hover around its label until the page says the pointer
+    // is on it.
     const [lx, ly] = await page.evaluate((fig) => {
-      const labels = [...document.querySelectorAll(`${fig} .labels span`)].filter((e) => !e.hidden && e.textContent === 'target');
-      const m = /translate\(([-\d.]+)px, ([-\d.]+)px\)/.exec(labels[1].style.transform);
+      const label = [...document.querySelectorAll(`${fig} .labels span`)].find((e) => !e.hidden && e.textContent === 'CCD target');
+      const m = /translate\(([-\d.]+)px, ([-\d.]+)px\)/.exec(label.style.transform);
       return [Number(m[1]), Number(m[2])];
     }, fig);
     let grab = null;
