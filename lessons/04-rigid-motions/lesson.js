@@ -88,7 +88,8 @@ if (rigidViewer) {
 // Figure 2: affine keys, naive vs polar.
 const affineViewer = await lesson.figure('#fig-affine');
 if (affineViewer) {
-  affineViewer.setCamera(0, 0.7, 0, 6.5, 0.0, 0.3);
+  // From above and in front: the boxes' depth fills the canvas's height.
+  affineViewer.setCamera(0, 0.7, 0, 6.5, 0.0, 0.6);
   const scene = new AffineScene();
   const timeline = new Timeline(document.getElementById('affine-timeline'), { duration: 4 });
   const p = { angle: 160, sx: 1.6, sy: 0.6, sz: 1, shear: 0.6, useExercise: false };

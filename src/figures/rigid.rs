@@ -733,7 +733,12 @@ impl AffineKeys {
                 let m = shift * self.at(naive, k as f32 / 64.0) * size;
                 self.path.push(m.transform_point3(corner));
             }
-            frame.wide_polyline(&self.path, color * 0.8, 4.0);
+            // Over everything: the path runs through and behind the boxes.
+            let over = crate::draw::StrokeStyle {
+                on_top: true,
+                ..crate::draw::StrokeStyle::solid(4.0)
+            };
+            frame.stroke(&self.path, color * 0.8, over);
             frame.keep_in_view.extend(self.path.iter().step_by(4));
             let m = shift * self.at(naive, t);
             frame.mesh(MeshId::CUBE, m * size, color);
