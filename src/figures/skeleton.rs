@@ -1263,11 +1263,10 @@ fn draw_path(frame: &mut Frame, path: &[Vec3], color: Vec3, step: bool, pivot: V
     if path.len() < 2 {
         return;
     }
-    // Beside another path, every other sample: 30 ticks a cycle stay apart on a small circle.
-    let stride = if offset != 0.0 { 2 } else { 1 };
+    // Every other sample: 30 ticks a cycle stay apart on a small path.
     let samples: Vec<Vec3> = path[..path.len() - 1]
         .iter()
-        .step_by(stride)
+        .step_by(2)
         .map(|&p| p + (p - pivot).normalize_or_zero() * offset)
         .collect();
     if step {
