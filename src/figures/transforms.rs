@@ -161,12 +161,6 @@ impl SingleShape {
         let stage = in_range("stage", stage, 0.0, 2.0)?;
         frame.grid(10, 0.5);
         frame.labelled_axes(Mat4::IDENTITY, 1.0);
-        frame.label_with_priority(
-            Vec3::new(-0.15, -0.2, 0.0),
-            "world origin",
-            palette::DARK,
-            -1,
-        );
         let (shown, ghost) = (self.order, self.order.other());
         let m = self.matrix_at(shown, stage);
         frame.mesh(MeshId::CUBE, m * Mat4::from_scale(BOX_HALF), shown.color());
@@ -212,16 +206,17 @@ impl SingleShape {
             palette::PINK,
             2,
         );
-        // Everything any stage shows stays in view: the origin, t, the arc, a box's reach around.
-        let (lo, hi) = arc
-            .iter()
-            .chain([Vec3::ZERO, t, Vec3::ONE, Vec3::new(0.0, 1.0, 0.0)].iter())
-            .fold(
-                (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
-                |(lo, hi), q| (lo.min(*q), hi.max(*q)),
-            );
-        let reach = Vec3::splat(BOX_HALF.length() + 0.1);
+        // Everything any stage shows stays in view: the boxes wherever their centres go (the
+        // origin, t, the arc), and the world axes.
+        let (lo, hi) = arc.iter().chain([Vec3::ZERO, t].iter()).fold(
+            (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+            |(lo, hi), q| (lo.min(*q), hi.max(*q)),
+        );
+        let reach = Vec3::splat(BOX_HALF.max_element() + 0.05);
         frame.keep_box_in_view(lo - reach, hi + reach);
+        frame
+            .keep_in_view
+            .extend([Vec3::X, Vec3::Y, Vec3::Z].map(|a| a * 1.1));
         Ok(self.note(stage))
     }
 
@@ -935,9 +930,14 @@ impl ScaleComparison {
     /// The outline of copy `k`'s drawn left forearm on its face towards +x (the camera's side):
     /// four corners, a rectangle unless the box is sheared, then a parallelogram.
     pub fn forearm_outline(&self, k: usize) -> [Vec3; 4] {
+        self.outline(k, self.forearm)
+    }
+
+    /// The outline of copy `k`'s drawn box of `joint` on its face towards +x.
+    fn outline(&self, k: usize, joint: usize) -> [Vec3; 4] {
         let f = &self.figures[k];
-        let shape = &f.shapes[self.forearm];
-        let m = Self::placement(k) * f.draw[self.forearm];
+        let shape = &f.shapes[joint];
+        let m = Self::placement(k) * f.draw[joint];
         [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)].map(|(y, z)| {
             m.transform_point3(shape.center + shape.half_extents * Vec3::new(1.0, y, z))
         })
@@ -950,7 +950,7 @@ impl ScaleComparison {
         let titles = ["scale not inherited", "scale inherited"];
         let outline = StrokeStyle {
             on_top: true,
-            ..StrokeStyle::solid(3.0)
+            ..StrokeStyle::solid(3.5)
         };
         for (k, f) in self.figures.iter_mut().enumerate() {
             f.pose(0.0)?;
@@ -964,6 +964,9 @@ impl ScaleComparison {
             frame.contact_shadow(placement.transform_point3(Vec3::ZERO), 0.3);
         }
         for k in 0..2 {
+            // The stretched upper arm's side, then the forearm's.
+            let a = self.outline(k, self.arm);
+            frame.stroke(&[a[0], a[1], a[2], a[3], a[0]], palette::TEAL, outline);
             let c = self.forearm_outline(k);
             frame.stroke(&[c[0], c[1], c[2], c[3], c[0]], palette::PINK, outline);
             // The angle at the corner between the edges along the forearm and across it.
