@@ -213,7 +213,8 @@ fn the_rules_figure_says_what_the_students_code_does() {
     for (runner, expect) in [
         (
             reference as fn(&str, &[f32]) -> _,
-            "Your three_rules matches the reference at this boid. Your cell_index matches",
+            "Your three_rules also matches at 3 probe inputs the figure does not show. Your \
+             cell_index matches the reference at this boid.",
         ),
         (wrong, "Your three_rules differs at this boid"),
         (stub, "Not done yet: exercise 12.1"),
@@ -565,10 +566,10 @@ fn the_rules_figures_cell_square_lies_on_the_grid_around_the_boid() {
         // The orange lines within 0.01 m of the plane are the cell square (the boid's velocity
         // arrow is orange too, but it starts at the boid and points along +x).
         let square: Vec<Vec3> = frame
-            .lines
+            .strokes
             .iter()
             .filter(|v| Vec3::from_slice(&v.color[..3]).distance(orange) < 1e-3)
-            .map(|v| Vec3::from(v.position))
+            .flat_map(|v| [Vec3::from(v.a), Vec3::from(v.b)])
             .filter(|p| (p.y - 0.002).abs() < 1e-4)
             .collect();
         assert_eq!(square.len(), 8, "four edges at ({x}, {z}), cell {size}");
@@ -651,4 +652,205 @@ fn the_force_law_plot_shows_what_the_lesson_says_of_the_two_laws() {
     for bad in [f32::NAN, 1.0, 1e9, -3.0] {
         assert!(law_plot_samples(bad).is_err(), "{bad}");
     }
+}
+
+#[test]
+fn the_gaussian_law_changes_sign_twice_within_its_reach() {
+    // With k = 2 and a1 = a2, f(x) = 0 where 2 (x/x0 − 1)² = x/x0: x = x0/2 and x = 2 x0. The
+    // page: zero at 0.35 m and 1.4 m, attraction between, f(1.5 m) ≈ −0.044 m/s² beyond.
+    use inbetween::figures::boids::FLOCK_LAWS;
+    let law = FLOCK_LAWS[2];
+    assert!(law.f(0.35).abs() < 1e-6 && law.f(1.4).abs() < 1e-6);
+    assert!((law.f(1.5) + 0.044).abs() < 0.001, "{}", law.f(1.5));
+    for i in 1..100 {
+        let x = 0.35 + (1.4 - 0.35) * i as f32 / 100.0;
+        assert!(law.f(x) > 0.0, "attracts at {x}");
+    }
+    assert!(law.f(1.45) < 0.0 && law.f(0.3) < 0.0);
+}
+
+/// Sweeps with made-up timings: `grid(N)` and `naive(N)` ms, with a repeat-dependent wobble.
+fn synthetic_sweep(grid: impl Fn(f32) -> f32, naive: impl Fn(f32) -> f32) -> StepTimeSweep {
+    let mut sweep = StepTimeSweep::new();
+    let mut k = 0;
+    while let Some((n, search)) = sweep.next_timing() {
+        let wobble = 1.0 + 0.1 * (k % 3) as f32;
+        let t = if search == "grid" { grid(n as f32) } else { naive(n as f32) };
+        sweep.record(t * wobble).unwrap();
+        k += 1;
+    }
+    sweep
+}
+
+#[test]
+fn the_step_time_sweep_fits_slopes_on_log_log_axes_and_shows_the_spread() {
+    // t = c N for the grid, c N² for the naive search: fitted slopes 1 and 2, guides through the
+    // last medians, fastest ≤ median ≤ slowest.
+    let mut sweep = synthetic_sweep(|n| 1e-3 * n, |n| 1e-6 * n * n);
+    assert!((sweep.fitted_slope(0).unwrap() - 1.0).abs() < 1e-3);
+    assert!((sweep.fitted_slope(1).unwrap() - 2.0).abs() < 1e-3);
+    let s = sweep.plot_samples();
+    assert_eq!(s.len(), 9 * SWEEP_SIZES.len());
+    for row in s.chunks_exact(9) {
+        let n = row[0];
+        assert!(row[2] <= row[1] && row[1] <= row[3] && row[5] <= row[4] && row[4] <= row[6]);
+        assert!(row[3] > row[2], "the spread shows");
+        // The median of 1.0, 1.1, 1.2, 1.0, 1.1 times the law is 1.1 times it.
+        assert!((row[7] - 1.1e-3 * n).abs() < 1e-4 * n, "{row:?}");
+        assert!((row[8] - 1.1e-6 * n * n).abs() < 1e-4 * row[8], "{row:?}");
+    }
+    let note = sweep.note();
+    assert!(note.contains("naive slope 2.0 (×4.0 per doubling of N), grid slope 1.0 (×2.0"), "{note}");
+    assert!(note.contains("At N = 3200 the naive search takes 3.2× as long as the grid."), "{note}");
+    assert!(note.contains("% above the fastest.") && !note.contains("busy"), "{note}");
+    // Grid and naive take turns at each size.
+    let mut sweep = StepTimeSweep::new();
+    let order: Vec<&str> = (0..4)
+        .map(|_| {
+            let (_, s) = sweep.next_timing().unwrap();
+            sweep.record(1.0).unwrap();
+            s
+        })
+        .collect();
+    assert_eq!(order, ["grid", "naive", "grid", "naive"]);
+    assert!(sweep.note().starts_with("Measuring one step at N = 100"));
+    assert!(sweep.record(f32::NAN).is_err() && sweep.record(-1.0).is_err());
+}
+
+#[test]
+fn a_slow_naive_search_is_not_timed_at_larger_sizes() {
+    // A debug build: the naive step passes SWEEP_LIMIT_MS at 800 boids, so 1600 and 3200 are
+    // left out (NaN in the plot) and the note says from where.
+    let mut sweep = synthetic_sweep(|n| 1e-2 * n, |n| 1e-4 * n * n);
+    let s = sweep.plot_samples();
+    assert_eq!(s.len(), 9 * SWEEP_SIZES.len());
+    let row = |n: f32| s.chunks_exact(9).find(|r| r[0] == n).unwrap();
+    assert!(row(800.0)[4] > SWEEP_LIMIT_MS && row(1600.0)[4].is_nan() && row(3200.0)[4].is_nan());
+    assert!(row(3200.0)[1] > 0.0, "the grid goes on");
+    assert!(row(800.0)[8] > 0.0 && row(1600.0)[8].is_nan(), "the slope-2 guide stops with it");
+    let note = sweep.note();
+    assert!(note.contains("not timed from N = 1600 on"), "{note}");
+    assert!(note.contains("At N = 800 the naive search"), "{note}");
+    // A loaded machine: one slow timing in five moves the median little, and the note says so.
+    let mut sweep = StepTimeSweep::new();
+    let mut k = 0;
+    while let Some((n, search)) = sweep.next_timing() {
+        let n = n as f32;
+        let t = if search == "grid" { 1e-3 * n } else { 1e-6 * n * n };
+        sweep.record(if k % 10 == 3 { 3.0 * t } else { t }).unwrap();
+        k += 1;
+    }
+    assert!((sweep.fitted_slope(1).unwrap() - 2.0).abs() < 0.05);
+    assert!(sweep.note().contains("the machine is busy"));
+}
+
+#[test]
+fn cells_narrower_than_the_radius_miss_neighbours_and_the_figure_says_so() {
+    let mut scene = RulesFigure::new();
+    // Cells at least as wide as the radius never miss a neighbour, wherever the boid is.
+    for (cell, radius) in [(1.2, 1.2), (1.5, 1.2), (2.0, 0.5), (0.5, 0.5)] {
+        scene.set_cell_size(cell).unwrap();
+        scene.set_radius(radius).unwrap();
+        for i in 0..20 {
+            for k in 0..20 {
+                let (x, z) = (-1.9 + 0.2 * i as f32, -1.9 + 0.2 * k as f32);
+                scene.set_position(x, z).unwrap();
+                assert!(scene.missed_neighbours().is_empty(), "{cell} {radius} at {x} {z}");
+            }
+        }
+    }
+    // At the defaults with 0.25 m cells (the page's Try this) some neighbours lie beyond the
+    // 3 × 3 block.
+    let mut scene = RulesFigure::new();
+    scene.set_cell_size(0.25).unwrap();
+    let missed = scene.missed_neighbours().len();
+    assert!(missed > 0);
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame);
+    assert!(note.contains(&format!("misses {missed} of its neighbours (on red)")), "{note}");
+    let red = frame
+        .markers
+        .iter()
+        .filter(|m| m.color[..3] == inbetween::draw::palette::RED.to_array())
+        .count();
+    assert_eq!(red, missed);
+    scene.set_cell_size(1.2).unwrap();
+    assert!(!scene.draw(&mut Frame::default()).contains("misses"));
+}
+
+/// Right where no clamp or empty set is needed: no upper clamp in the cell index, a mean over
+/// no neighbours divides by zero.
+fn careless(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut rest = args;
+    let mut out = Vec::new();
+    match name {
+        "three_rules" => {
+            let p = Vec3::take(&mut rest).unwrap();
+            let v = Vec3::take(&mut rest).unwrap();
+            let ps = Vec::<Vec3>::take(&mut rest).unwrap();
+            let vs = Vec::<Vec3>::take(&mut rest).unwrap();
+            let n = ps.len() as f32;
+            let c = ps.iter().sum::<Vec3>() / n - p;
+            let a = vs.iter().sum::<Vec3>() / n - v;
+            let s: Vec3 = ps.iter().map(|q| (p - *q) / (p - *q).length_squared()).sum();
+            vec![c, a, s].put(&mut out)
+        }
+        "cell_index" => {
+            let p = Vec3::take(&mut rest).unwrap();
+            let o = Vec3::take(&mut rest).unwrap();
+            let s = f32::take(&mut rest).unwrap();
+            let d = <[f32; 3]>::take(&mut rest).unwrap();
+            let c = ((p - o) / s).floor().max(Vec3::ZERO);
+            (c.x as usize + d[0] as usize * (c.y as usize + d[1] as usize * c.z as usize))
+                .put(&mut out)
+        }
+        _ => return direct(name, args),
+    }
+    Ok(out)
+}
+
+#[test]
+fn the_rules_figure_checks_probe_inputs_beyond_its_boid() {
+    let mut scene = RulesFigure::new();
+    scene.set_use_exercise(true);
+    scene.set_runner(careless);
+    let note = scene.exercise_note();
+    assert!(note.contains("Your three_rules matches the reference at this boid."), "{note}");
+    assert!(note.contains("your three_rules differs at 1: no neighbours"), "{note}");
+    assert!(note.contains("Your cell_index matches the reference at this boid."), "{note}");
+    assert!(
+        note.contains("your cell_index differs at 1: a boid past the grid's far corner"),
+        "{note}"
+    );
+    scene.set_runner(reference);
+    let note = scene.exercise_note();
+    assert!(note.contains("Your three_rules also matches at 3 probe inputs"), "{note}");
+    assert!(note.contains("Your cell_index also matches at 4 probe inputs"), "{note}");
+}
+
+#[test]
+fn without_separation_the_leaders_flock_piles_into_one_clump() {
+    // The Try this: leader on, then separation 0: nothing keeps the boids apart, and their mean
+    // distance to the nearest neighbour collapses (the boids pile onto one point).
+    let nearest = |f: &FlockFigure| {
+        let ps = &f.flock().positions;
+        (0..ps.len())
+            .map(|i| {
+                (0..ps.len())
+                    .filter(|&j| j != i)
+                    .map(|j| (ps[i] - ps[j]).length())
+                    .fold(f32::INFINITY, f32::min)
+            })
+            .sum::<f32>()
+            / ps.len() as f32
+    };
+    let mut f = FlockFigure::new();
+    f.set_leader(true);
+    fly_to(&mut f, 5.0);
+    let before = nearest(&f);
+    f.set_rule("separation", 0.0, 0.5).unwrap();
+    // The page: "within five seconds … from about a third of a metre to under 2 cm".
+    fly_to(&mut f, 10.0);
+    let after = nearest(&f);
+    assert!((0.25..0.45).contains(&before) && after < 0.02, "{before} → {after}");
 }

@@ -71,6 +71,243 @@ pub fn law_plot_samples(count: f32) -> Result<Vec<f32>, String> {
 /// What the search dropdown offers.
 pub const SEARCHES: [&str; 2] = ["grid", "naive"];
 
+// ---------------------------------------------------------------------------------------------
+// Step time against N: the page times the steps, this keeps the schedule and sums them up.
+
+/// The flock sizes the page times, doubling from 100 to 3,200.
+pub const SWEEP_SIZES: [usize; 6] = [100, 200, 400, 800, 1600, 3200];
+/// Timings per size and search; each point of the plot is their median, drawn with their
+/// fastest and slowest.
+pub const SWEEP_REPEATS: usize = 5;
+/// A search whose median step at one size took longer than this (milliseconds) is not timed at
+/// the larger sizes (a debug build's naive search at 3,200 boids would hold the page for seconds).
+pub const SWEEP_LIMIT_MS: f32 = 60.0;
+/// The smallest size the fitted slopes start at: below it a step's fixed costs blur the power.
+pub const SWEEP_FIT_FROM: usize = 400;
+
+/// The step-time sweep: which timing comes next, the timings so far, the plot's samples and
+/// the note. Grid and naive take turns at each size, repeat by repeat, so a moment of load
+/// falls on both searches alike.
+#[derive(Clone, Debug, Default)]
+pub struct StepTimeSweep {
+    /// Per size, per search (grid, naive): the milliseconds per step of each timing.
+    times: [[Vec<f32>; 2]; SWEEP_SIZES.len()],
+    /// The next timing: (size index, repeat, search).
+    next: (usize, usize, usize),
+}
+
+/// The median of `xs` (not empty).
+fn median(xs: &[f32]) -> f32 {
+    let mut v = xs.to_vec();
+    v.sort_by(f32::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+impl StepTimeSweep {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Whether `search` (0 grid, 1 naive) is still timed at size index `size`: not once its
+    /// median at a smaller size passed [`SWEEP_LIMIT_MS`].
+    fn times_at(&self, size: usize, search: usize) -> bool {
+        (0..size).all(|k| {
+            let t = &self.times[k][search];
+            t.is_empty() || median(t) <= SWEEP_LIMIT_MS
+        })
+    }
+
+    /// The next timing to take, `(boids, search)` with search "grid" or "naive", or `None` when
+    /// the sweep is done. The same answer until [`StepTimeSweep::record`] is called.
+    pub fn next_timing(&mut self) -> Option<(usize, &'static str)> {
+        loop {
+            let (size, _, search) = self.next;
+            if size >= SWEEP_SIZES.len() {
+                return None;
+            }
+            if self.times_at(size, search) {
+                return Some((SWEEP_SIZES[size], SEARCHES[search]));
+            }
+            self.advance();
+        }
+    }
+
+    fn advance(&mut self) {
+        let (mut size, mut repeat, mut search) = self.next;
+        search += 1;
+        if search == 2 {
+            search = 0;
+            repeat += 1;
+        }
+        if repeat == SWEEP_REPEATS {
+            repeat = 0;
+            size += 1;
+        }
+        self.next = (size, repeat, search);
+    }
+
+    /// Records the timing [`StepTimeSweep::next_timing`] asked for: `ms` milliseconds per step
+    /// (finite, ≥ 0).
+    pub fn record(&mut self, ms: f32) -> Result<(), String> {
+        let ms = in_range("step time", ms, 0.0, 1e6)?;
+        if self.next_timing().is_none() {
+            return Err("the sweep is done: start it again first".into());
+        }
+        let (size, _, search) = self.next;
+        self.times[size][search].push(ms);
+        self.advance();
+        Ok(())
+    }
+
+    /// Whether every timing has been taken.
+    pub fn done(&mut self) -> bool {
+        self.next_timing().is_none()
+    }
+
+    /// `(median, fastest, slowest)` of `search` at size index `size`, if timed.
+    fn summary(&self, size: usize, search: usize) -> Option<(f32, f32, f32)> {
+        let t = &self.times[size][search];
+        (!t.is_empty()).then(|| {
+            let lo = t.iter().copied().fold(f32::INFINITY, f32::min);
+            let hi = t.iter().copied().fold(0.0, f32::max);
+            (median(t), lo, hi)
+        })
+    }
+
+    /// The plot's samples, one row per size with every repeat of both searches done, flat:
+    /// `[N, grid median, grid fastest, grid slowest, naive median, naive fastest, naive slowest,
+    /// slope-1 guide, slope-2 guide]` (milliseconds per step; NaN where a search was not timed).
+    /// The guides are `c·N` through the grid's median at the largest size timed and `c·N²`
+    /// through the naive search's, each over the sizes its search was timed at: on log-log axes
+    /// a power law `t ∝ Nᵖ` is a straight line of slope `p`.
+    pub fn plot_samples(&self) -> Vec<f32> {
+        let complete = |k: usize| {
+            (0..2).all(|s| {
+                self.times[k][s].len() == SWEEP_REPEATS
+                    || (self.times[k][s].is_empty() && !self.times_at(k, s))
+            })
+        };
+        let rows: Vec<usize> = (0..SWEEP_SIZES.len()).take_while(|&k| complete(k)).collect();
+        let anchor = |search: usize, power: i32| {
+            rows.iter().rev().find_map(|&k| {
+                self.summary(k, search)
+                    .map(|(m, _, _)| m / (SWEEP_SIZES[k] as f32).powi(power))
+            })
+        };
+        let (c1, c2) = (anchor(0, 1), anchor(1, 2));
+        let mut out = Vec::with_capacity(9 * rows.len());
+        for k in rows {
+            let n = SWEEP_SIZES[k] as f32;
+            out.push(n);
+            for search in 0..2 {
+                let (m, lo, hi) = self.summary(k, search).unwrap_or((f32::NAN, f32::NAN, f32::NAN));
+                out.extend([m, lo, hi]);
+            }
+            // Each guide spans the sizes its search was timed at.
+            let timed = |search: usize| self.summary(k, search).is_some();
+            out.push(c1.filter(|_| timed(0)).map_or(f32::NAN, |c| c * n));
+            out.push(c2.filter(|_| timed(1)).map_or(f32::NAN, |c| c * n * n));
+        }
+        out
+    }
+
+    /// The least-squares slope of log(median time) against log N for `search` over the sizes
+    /// from [`SWEEP_FIT_FROM`] up that are timed: the exponent `p` in `t ∝ Nᵖ`. `None` with
+    /// fewer than two such sizes.
+    pub fn fitted_slope(&self, search: usize) -> Option<f32> {
+        let points: Vec<(f32, f32)> = SWEEP_SIZES
+            .iter()
+            .enumerate()
+            .filter(|&(_, &n)| n >= SWEEP_FIT_FROM)
+            .filter_map(|(k, &n)| {
+                let (m, _, _) = self.summary(k, search)?;
+                (self.times[k][search].len() == SWEEP_REPEATS && m > 0.0)
+                    .then(|| ((n as f32).ln(), m.ln()))
+            })
+            .collect();
+        if points.len() < 2 {
+            return None;
+        }
+        let n = points.len() as f32;
+        let (mx, my) = points
+            .iter()
+            .fold((0.0, 0.0), |(a, b), (x, y)| (a + x / n, b + y / n));
+        let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
+            (a + (x - mx) * (y - my), b + (x - mx) * (x - mx))
+        });
+        Some(sxy / sxx)
+    }
+
+    /// What the sweep measured: each search's fitted slope and what it means per doubling, the
+    /// ratio at the largest size both timed, how much the repeats spread, and a size left out.
+    pub fn note(&mut self) -> String {
+        if !self.done() {
+            let (size, repeat, _) = self.next;
+            return format!(
+                "Measuring one step at N = {} boids (timing {} of {} at each size, grid and naive \
+                 in turn)…",
+                SWEEP_SIZES[size.min(SWEEP_SIZES.len() - 1)],
+                repeat + 1,
+                SWEEP_REPEATS
+            );
+        }
+        let mut parts = Vec::new();
+        for (search, name) in [(1, "naive"), (0, "grid")] {
+            if let Some(p) = self.fitted_slope(search) {
+                parts.push(format!(
+                    "{name} slope {:.1} (×{:.1} per doubling of N)",
+                    p,
+                    2f32.powf(p)
+                ));
+            }
+        }
+        let mut note = format!(
+            "Measured in this run, from N = {SWEEP_FIT_FROM} up: {}.",
+            parts.join(", ")
+        );
+        let both = (0..SWEEP_SIZES.len())
+            .rev()
+            .find_map(|k| Some((k, self.summary(k, 0)?, self.summary(k, 1)?)));
+        if let Some((k, (g, _, _), (n, _, _))) = both {
+            note.push_str(&format!(
+                " At N = {} the naive search takes {:.1}× as long as the grid.",
+                SWEEP_SIZES[k],
+                n / g.max(1e-6)
+            ));
+        }
+        let spread = (0..SWEEP_SIZES.len())
+            .flat_map(|k| [(k, 0), (k, 1)])
+            .filter_map(|(k, s)| self.summary(k, s))
+            .map(|(m, lo, hi)| (hi - lo) / m.max(1e-6))
+            .fold(0.0f32, f32::max);
+        note.push_str(&format!(
+            " The slowest of a point's {SWEEP_REPEATS} timings was up to {:.0} % above the \
+             fastest{}.",
+            100.0 * spread,
+            if spread > 0.5 {
+                ": the machine is busy, so press the button to measure again"
+            } else {
+                ""
+            }
+        ));
+        for (search, name) in [(1, "naive"), (0, "grid")] {
+            if let Some(k) = (0..SWEEP_SIZES.len()).find(|&k| !self.times_at(k, search)) {
+                note.push_str(&format!(
+                    " The {name} search is not timed from N = {} on: a step took over {} ms \
+                     (a debug build?).",
+                    SWEEP_SIZES[k], SWEEP_LIMIT_MS
+                ));
+            }
+        }
+        note
+    }
+}
+
 pub fn parse_search(name: &str) -> Result<Search, String> {
     match name {
         "grid" => Ok(Search::Grid),
@@ -93,6 +330,8 @@ pub struct FlockFigure {
     /// The order plot's samples since the flock (re)started, flat `[t (s), φ, speed ratio]`, one
     /// per step; empty in GPU mode (the flock stays on the GPU).
     history: Vec<f32>,
+    /// The step-time sweep the page runs beside the flock.
+    sweep: StepTimeSweep,
 }
 
 /// The most samples the order plot keeps (one per step: the figure's 20 s timeline is
@@ -124,6 +363,7 @@ impl FlockFigure {
             seed: 1,
             steps_done: 0,
             history: Vec::with_capacity(3 * MAX_PLOT_SAMPLES),
+            sweep: StepTimeSweep::new(),
         };
         f.set_obstacle(true);
         f.restart_plot();
@@ -371,8 +611,10 @@ impl FlockFigure {
     pub fn draw_gpu(&mut self, frame: &mut Frame) -> String {
         let b = self.params.bounds;
         for (a, c) in box_edges(-b, b) {
-            frame.line(a, c, palette::GRID);
+            frame.wide_line(a, c, palette::GREY, 1.5);
         }
+        // The box stays in view at both page sizes (boids overshoot its walls a little).
+        frame.keep_box_in_view(-b, b);
         if self.obstacle {
             for o in &self.params.obstacles {
                 frame.mesh(
@@ -391,8 +633,10 @@ impl FlockFigure {
         };
         format!(
             "{} boids stepped on the GPU by a compute shader, at t = {} s (the same rules; \
-             neighbours by the naive O(N²) loop, one thread per boid){roles}; {}. The order \
-             plot is empty: its samples need the flock on the CPU.",
+             neighbours by the naive O(N²) loop in tiles, one thread per boid, whatever the \
+             neighbour search says){roles}; {}. The orange boid, its neighbour lines and its \
+             steering arrow are not drawn, and the order plot is empty: they need the flock on \
+             the CPU, and it stays on the GPU.",
             self.flock.len(),
             format_number(self.steps_done as f32 * SIM_DT),
             self.speed_range(),
@@ -412,6 +656,34 @@ impl FlockFigure {
         flock.step(&params, Search::Grid, 1.0 / 60.0); // size the grid once, outside the timing
         self.bench = Some(flock);
         Ok(())
+    }
+
+    /// Starts the step-time sweep again (the page's "measure" button).
+    pub fn start_sweep(&mut self) {
+        self.sweep = StepTimeSweep::new();
+    }
+
+    /// The search the sweep times next ("grid" or "naive"), with the timing flock built at its
+    /// size, or `None` when the sweep is done. The page times [`FlockFigure::timing_step`] with
+    /// it, then calls [`FlockFigure::record_sweep`].
+    pub fn next_sweep_timing(&mut self) -> Result<Option<&'static str>, String> {
+        let Some((n, search)) = self.sweep.next_timing() else {
+            return Ok(None);
+        };
+        if self.bench.as_ref().map(Flock::len) != Some(n) {
+            self.prepare_timing(n as f32)?;
+        }
+        Ok(Some(search))
+    }
+
+    /// Records the timing of [`FlockFigure::next_sweep_timing`]: milliseconds per step.
+    pub fn record_sweep(&mut self, ms: f32) -> Result<(), String> {
+        self.sweep.record(ms)
+    }
+
+    /// The sweep, for its plot samples and note.
+    pub fn sweep(&mut self) -> &mut StepTimeSweep {
+        &mut self.sweep
     }
 
     /// One step of the timing flock with `search` ("grid" or "naive"); the page times the call.
@@ -437,10 +709,11 @@ impl FlockFigure {
 
     pub fn draw(&mut self, frame: &mut Frame) -> String {
         let b = self.params.bounds;
-        // The bounding box's edges.
         for (a, c) in box_edges(-b, b) {
-            frame.line(a, c, palette::GRID);
+            frame.wide_line(a, c, palette::GREY, 1.5);
         }
+        // The box stays in view at both page sizes (boids overshoot its walls a little).
+        frame.keep_box_in_view(-b, b);
         if self.obstacle {
             for o in &self.params.obstacles {
                 frame.mesh(
@@ -479,10 +752,11 @@ impl FlockFigure {
                 .sees(h, self.flock.positions[j], self.params.fov_deg)
         });
         for &j in &found {
-            frame.line(
+            frame.wide_line(
                 self.flock.positions[h],
                 self.flock.positions[j],
                 palette::ORANGE,
+                1.5,
             );
         }
         let count = found.len();
@@ -631,6 +905,16 @@ fn place_labels(
     let r = 12.0 * RULES_M_PER_PX; // the boid's dot and a margin
     let mut placed: Vec<(f32, f32, f32, f32)> =
         vec![(boid.x - r, boid.z - r, boid.x + r, boid.z + r)];
+    // The boid and the labels placed so far: what a label must never cover.
+    let mut labels = placed.clone();
+    // The arrows' shafts, as small boxes along each: a label must not sit on another arrow.
+    let m = 3.0 * RULES_M_PER_PX;
+    for &(tip, _, _, _) in tips {
+        for k in 1..=12 {
+            let p = boid.lerp(tip, k as f32 / 12.0);
+            placed.push((p.x - m, p.z - m, p.x + m, p.z + m));
+        }
+    }
     let mut out = Vec::with_capacity(tips.len());
     for i in order {
         let (tip, v, text, color) = tips[i];
@@ -649,18 +933,22 @@ fn place_labels(
         };
         let step = 20.0 * RULES_M_PER_PX;
         let mut anchor = base;
-        for k in 0..=12u32 {
-            // 0, +1, −1, +2, −2 … steps down and up the screen.
-            let dz = if k % 2 == 1 { 1.0 } else { -1.0 } * k.div_ceil(2) as f32 * step;
-            let mut a = base + Vec3::new(0.0, 0.0, dz);
-            a.z = a.z.clamp(z_lo, z_hi);
-            let b = label_box(a, text, left);
-            if !placed.iter().any(|&p| boxes_overlap(p, b)) {
-                anchor = a;
-                break;
+        // Clear of the labels and the arrows if there is room; else clear of the labels.
+        'search: for avoid in [&placed[..], &labels[..]] {
+            for k in 0..=12u32 {
+                // 0, +1, −1, +2, −2 … steps down and up the screen.
+                let dz = if k % 2 == 1 { 1.0 } else { -1.0 } * k.div_ceil(2) as f32 * step;
+                let mut a = base + Vec3::new(0.0, 0.0, dz);
+                a.z = a.z.clamp(z_lo, z_hi);
+                let b = label_box(a, text, left);
+                if !avoid.iter().any(|&p| boxes_overlap(p, b)) {
+                    anchor = a;
+                    break 'search;
+                }
             }
         }
         placed.push(label_box(anchor, text, left));
+        labels.push(label_box(anchor, text, left));
         out.push((anchor, left, text, color));
     }
     out
@@ -808,6 +1096,28 @@ impl RulesFigure {
             .unzip()
     }
 
+    /// The neighbours (within the radius and the field of view) whose cells lie outside the
+    /// 3 × 3 block around the boid's: those a grid search with these cells would miss. None
+    /// when the cells are at least as wide as the radius.
+    pub fn missed_neighbours(&self) -> Vec<Vec3> {
+        let dims = self.dims();
+        let ik = |p: Vec3| {
+            let c = cell_index(p, GRID_ORIGIN, self.cell_size, dims);
+            (
+                (c % dims[0] as usize) as i64,
+                (c / (dims[0] * dims[1]) as usize) as i64,
+            )
+        };
+        let (bi, bk) = ik(self.boid);
+        let (ps, _) = self.neighbours();
+        ps.into_iter()
+            .filter(|&q| {
+                let (i, k) = ik(q);
+                (i - bi).abs() > 1 || (k - bk).abs() > 1
+            })
+            .collect()
+    }
+
     /// The three vectors drawn: the student's (exercise 12.1) when asked and usable.
     pub fn rules(&self) -> [Vec3; 3] {
         let (ps, vs) = self.neighbours();
@@ -881,7 +1191,7 @@ impl RulesFigure {
                     lo + Vec3::new(inset, 0.002, s - inset),
                     lo + Vec3::new(inset, 0.002, inset),
                 ];
-                frame.polyline(&corners, color);
+                frame.wide_polyline(&corners, color, 2.0);
             }
         }
         // Radius circle and field-of-view edges.
@@ -891,19 +1201,24 @@ impl RulesFigure {
                 self.boid + self.radius * Vec3::new(a.cos(), 0.0, a.sin())
             })
             .collect();
-        frame.polyline(&circle, palette::PURPLE);
+        frame.wide_polyline(&circle, palette::PURPLE, 2.0);
         if self.fov_deg < 360.0 {
             let heading = self.velocity.normalize();
             for sign in [-1.0f32, 1.0] {
                 let a = sign * 0.5 * self.fov_deg.to_radians();
                 let dir = glam::Quat::from_rotation_y(a) * heading;
-                frame.line(self.boid, self.boid + dir * self.radius, palette::PURPLE);
+                frame.wide_line(self.boid, self.boid + dir * self.radius, palette::PURPLE, 2.0);
             }
         }
         let (ps, _) = self.neighbours();
+        let missed = self.missed_neighbours();
         for (q, v) in &self.others {
             let seen = ps.iter().any(|p| p == q);
             let color = if seen { palette::BLUE } else { palette::GREY };
+            if missed.contains(q) {
+                // A red disc under the neighbour: the 3 × 3 block never reaches its cell.
+                frame.marker(*q - Vec3::Y * 0.01, 26.0, palette::RED);
+            }
             frame.point(*q, 0.07, color);
             frame.arrow(*q, *q + 0.35 * *v, color, 0.08);
         }
@@ -947,6 +1262,16 @@ impl RulesFigure {
             dims[0],
             dims[2]
         );
+        if !missed.is_empty() {
+            note.push_str(&format!(
+                " The cells ({} m) are narrower than the radius ({} m): the 3 × 3 block around \
+                 the boid's cell misses {} of its neighbours (on red), which a grid search \
+                 would never see. Cells at least as wide as the radius never miss one.",
+                format_number(self.cell_size),
+                format_number(self.radius),
+                missed.len()
+            ));
+        }
         // The arrows are drawn 1 m per unit up to ARROW_MAX_M: say which ones are longer, so
         // that a 6 m separation drawn at 2 m does not read as three times the cohesion.
         let long: Vec<String> = arrows
@@ -967,7 +1292,11 @@ impl RulesFigure {
         note
     }
 
-    /// Compares the student's three rules and cell index with the reference at this boid.
+    /// Compares the student's three rules and cell index with the reference at this boid, then
+    /// at probe inputs the figure's boid never reaches (no neighbours, neighbours off the plane,
+    /// a boid past the grid's far corner or below its origin, a grid several cells thick) and
+    /// names those where an answer differs: at the default position, for one, no clamp is
+    /// needed.
     pub fn exercise_note(&self) -> String {
         let (ps, vs) = self.neighbours();
         let rules = match run::three_rules(
@@ -980,7 +1309,10 @@ impl RulesFigure {
             Err(f) => failure_note("exercise 12.1 three_rules", FILE, &f),
             Ok(yours) => {
                 let reference = three_rules(self.boid, self.velocity, &ps, &vs);
-                rules_note(&yours, &reference)
+                let mut note = rules_note(&yours, &reference);
+                note.push(' ');
+                note.push_str(&self.rules_probe_note());
+                note
             }
         };
         let dims = self.dims();
@@ -992,7 +1324,7 @@ impl RulesFigure {
                 // the reference's (i, j, k), to see which axis went wrong.
                 Ok(yours) => {
                     let reference = cell_index(self.boid, GRID_ORIGIN, self.cell_size, dims);
-                    if yours == reference {
+                    let mut note = if yours == reference {
                         "Your cell_index matches the reference at this boid.".to_string()
                     } else {
                         let (nx, ny) = (dims[0] as usize, dims[1] as usize);
@@ -1006,9 +1338,110 @@ impl RulesFigure {
                             dims[1],
                             dims[2]
                         )
-                    }
+                    };
+                    note.push(' ');
+                    note.push_str(&self.cell_probe_note());
+                    note
                 }
             };
         format!("{rules} {cell}")
+    }
+
+    /// Exercise 12.1 at inputs beyond the figure's boid.
+    fn rules_probe_note(&self) -> String {
+        let v = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+        let probes: [(&str, Vec3, Vec3, Vec<Vec3>, Vec<Vec3>); 3] = [
+            ("no neighbours (three zero vectors)", v(1.0, 0.0, 1.0), Vec3::X, vec![], vec![]),
+            (
+                "a single neighbour",
+                Vec3::ZERO,
+                Vec3::X,
+                vec![v(2.0, 0.0, 0.0)],
+                vec![Vec3::Y],
+            ),
+            (
+                "neighbours above and below the plane",
+                v(0.5, 1.0, -0.5),
+                v(0.0, 1.0, 1.0),
+                vec![v(1.0, 2.0, 0.0), v(0.0, 0.2, -1.0), v(0.5, 1.5, 0.5)],
+                vec![v(1.0, 0.0, 0.0), v(0.0, -1.0, 0.5), v(0.3, 0.3, 0.3)],
+            ),
+        ];
+        let mut differ = Vec::new();
+        for (name, p, vel, qs, ws) in probes {
+            let Ok(yours) = run::three_rules(self.runner, p, vel, qs.clone(), ws.clone()) else {
+                return String::new();
+            };
+            let reference = three_rules(p, vel, &qs, &ws);
+            let close = yours.len() == 3
+                && yours
+                    .iter()
+                    .zip(&reference)
+                    .all(|(a, b)| (*a - *b).abs().max_element() <= TOLERANCE * (1.0 + b.length()));
+            if !close {
+                differ.push(name);
+            }
+        }
+        probe_summary("three_rules", 3, &differ)
+    }
+
+    /// Exercise 12.2 at inputs beyond the figure's boid, on its own grid and on a thicker one.
+    fn cell_probe_note(&self) -> String {
+        let dims = self.dims();
+        let s = self.cell_size;
+        let probes: [(&str, Vec3, Vec3, f32, [u32; 3]); 4] = [
+            (
+                "a boid past the grid's far corner (the upper clamp)",
+                GRID_ORIGIN + Vec3::new(5.0, 0.5, 5.0),
+                GRID_ORIGIN,
+                s,
+                dims,
+            ),
+            (
+                "a boid below the grid's origin (the lower clamp)",
+                GRID_ORIGIN - Vec3::new(0.7, 0.0, 0.3),
+                GRID_ORIGIN,
+                s,
+                dims,
+            ),
+            (
+                "a grid of 4 × 3 × 5 cells (j and k count)",
+                Vec3::new(1.3, 0.7, 2.2),
+                Vec3::ZERO,
+                0.5,
+                [4, 3, 5],
+            ),
+            (
+                "a boid on a cell's corner (floor, not round)",
+                GRID_ORIGIN + Vec3::new(s, 0.5, 2.0 * s),
+                GRID_ORIGIN,
+                s,
+                dims,
+            ),
+        ];
+        let mut differ = Vec::new();
+        for (name, p, origin, size, d) in probes {
+            let Ok(yours) = run::cell_index(self.runner, p, origin, size, d.map(|x| x as f32)) else {
+                return String::new();
+            };
+            if yours != cell_index(p, origin, size, d) {
+                differ.push(name);
+            }
+        }
+        probe_summary("cell_index", 4, &differ)
+    }
+}
+
+/// The sentence after a student's answer at the figure's input: whether it matches at the
+/// `asked` probe inputs too, or at which ones it differs.
+fn probe_summary(what: &str, asked: usize, differ: &[&str]) -> String {
+    if differ.is_empty() {
+        format!("Your {what} also matches at {asked} probe inputs the figure does not show.")
+    } else {
+        format!(
+            "Of {asked} probe inputs the figure does not show, your {what} differs at {}: {}.",
+            differ.len(),
+            differ.join("; ")
+        )
     }
 }

@@ -169,6 +169,33 @@ impl FlockScene {
         let search: &str = &super::string("search", &search)?;
         self.scene.timing_step(search).map_err(js)
     }
+    /// Starts the step-time sweep again.
+    #[wasm_bindgen(js_name = startSweep)]
+    pub fn start_sweep(&mut self) {
+        self.scene.start_sweep();
+    }
+    /// The search the sweep times next ("grid" or "naive"; the timing flock is built at its
+    /// size), or "" when the sweep is done.
+    #[wasm_bindgen(js_name = sweepNext)]
+    pub fn sweep_next(&mut self) -> Result<String, JsError> {
+        Ok(self.scene.next_sweep_timing().map_err(js)?.unwrap_or("").into())
+    }
+    /// Records the timing `sweepNext` asked for, milliseconds per step.
+    #[wasm_bindgen(js_name = sweepRecord)]
+    pub fn sweep_record(&mut self, ms: f32) -> Result<(), JsError> {
+        self.scene.record_sweep(ms).map_err(js)
+    }
+    /// `[N, grid median, fastest, slowest, naive median, fastest, slowest, slope-1 guide,
+    /// slope-2 guide, …]` in ms (NaN: not timed); see `StepTimeSweep::plot_samples`.
+    #[wasm_bindgen(js_name = sweepSamples)]
+    pub fn sweep_samples(&mut self) -> Vec<f32> {
+        self.scene.sweep().plot_samples()
+    }
+    /// What the sweep measured so far.
+    #[wasm_bindgen(js_name = sweepNote)]
+    pub fn sweep_note(&mut self) -> String {
+        self.scene.sweep().note()
+    }
 }
 
 impl Default for FlockScene {
