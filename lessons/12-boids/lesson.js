@@ -83,14 +83,19 @@ if (flockViewer) {
   gui.add(p, 'maxSpeed', 0.2, 5, 0.1).name('max speed (m/s)');
   gui.add(p, 'minSpeed', 0, 5, 0.1).name('min speed (m/s)');
   gui.add(p, 'law', ['none', 'a1/x² − a2/x⁴', 'Gaussian']).name('force law');
-  gui.add(p, 'search', ['grid', 'naive']).name('neighbour search');
+  const searchControl = gui.add(p, 'search', ['grid', 'naive']).name('neighbour search');
   gui.add(p, 'obstacle').name('obstacle');
   gui.add(p, 'leader').name('leader');
   gui.add(p, 'predator').name('predator');
   // CPU or a WebGPU compute shader; WebGL2 has no compute shaders, so there the switch is off.
   const hasCompute = flockViewer.backend === 'WebGPU';
   const onControl = gui.add(p, 'on', ['CPU', 'GPU']).name('step on').onChange((v) => {
-    try { scene.setGpu(flockViewer, v === 'GPU'); frameMs = 0; } catch (e) { rejected = e.message; }
+    try {
+      scene.setGpu(flockViewer, v === 'GPU');
+      frameMs = 0;
+      // The compute shader always runs its tiled naive loop: the dropdown would do nothing.
+      searchControl.enable(v !== 'GPU');
+    } catch (e) { rejected = e.message; }
   });
   if (!hasCompute) onControl.disable();
   // The sweep's button sits above the plot it fills (one row less in the panel).
@@ -112,31 +117,36 @@ if (flockViewer) {
   gui.onChange(apply);
   apply();
 
-  // Step time against N: one timed step per frame, so the page stays responsive. Each point is
-  // the fastest of REPEATS steps: a step is never faster than its work allows, while a busy
-  // machine (another tab, a garbage collection) only ever makes one slower, so the minimum is
-  // the figure least disturbed by load (a median of 3 lets one loaded moment bend the curve).
+  // Step time against N (Figure 3): Rust keeps the schedule (sizes, repeats, grid and naive in
+  // turn) and sums the timings up; the page only times the calls. One timing per frame, so the
+  // page stays responsive.
   const plot = new Plot(document.getElementById('flock-plot'), {
     title: 'One step of the flock: grid vs naive search', xLabel: 'boids N (count)', yLabel: 'step time (ms)',
-    series: ['grid', 'naive'], colors: [cssVar('--z-axis'), cssVar('--x-axis')], minSpan: 0.1,
+    series: ['grid (median)', 'grid fastest', 'grid slowest', 'naive (median)', 'naive fastest', 'naive slowest',
+      'slope 1: t ∝ N', 'slope 2: t ∝ N²'],
+    colors: [cssVar('--z-axis'), cssVar('--z-axis'), cssVar('--z-axis'), cssVar('--x-axis'), cssVar('--x-axis'),
+      cssVar('--x-axis'), cssVar('--grey'), cssVar('--dark')],
+    widths: [2.5, 1, 1, 2.5, 1, 1, 1.5, 1.5],
+    dashes: [null, [2, 3], [2, 3], null, [2, 3], [2, 3], [8, 5], [8, 5]],
+    log: 'xy',
   });
-  const SIZES = [100, 200, 400, 800, 1600];
-  const REPEATS = 5;
-  let sweep = null;
   const status = document.getElementById('flock-sweep');
+  function showSweep() {
+    // NaN marks a search not timed at that size: a gap in the plot.
+    const cols = columns(scene.sweepSamples(), 9).map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) && v > 0 ? v : null))));
+    plot.setData(cols);
+    showNote(status, scene.sweepNote());
+  }
   function startSweep() {
-    sweep = { size: 0, search: 0, repeat: 0, times: [], results: { grid: [], naive: [] } };
-    plot.setData([[], [], []]);
-    showNote(status, `Measuring one step at N = ${SIZES.join(', ')} (the fastest of ${REPEATS} timings each, each timing at least 2 ms of steps)…`);
+    scene.startSweep();
+    showSweep();
   }
   function sweepStep() {
-    if (!sweep) return;
-    const n = SIZES[sweep.size];
-    const search = ['grid', 'naive'][sweep.search];
-    if (sweep.repeat === 0 && sweep.search === 0) scene.prepareTiming(n);
+    const search = scene.sweepNext();
+    if (!search) return;
     // The page's clock ticks in 0.1 ms (performance.now() is coarsened without cross-origin
-    // isolation), and a step of 100 or 200 boids takes less: one step can read 0 ms, which would
-    // put the first points of the plot on the axis. So a timing repeats the step for at least 2 ms.
+    // isolation), and a step of 100 boids takes less: a timing repeats the step for at least
+    // 2 ms.
     let k = 0;
     let elapsed = 0;
     const t0 = performance.now();
@@ -145,23 +155,8 @@ if (flockViewer) {
       k++;
       elapsed = performance.now() - t0;
     } while (elapsed < 2 && k < 256);
-    sweep.times.push(elapsed / k);
-    if (++sweep.repeat < REPEATS) return;
-    sweep.results[search].push(Math.min(...sweep.times));
-    sweep.times = [];
-    sweep.repeat = 0;
-    if (++sweep.search === 2) {
-      sweep.search = 0;
-      sweep.size++;
-      const done = sweep.results.naive.length;
-      plot.setData([SIZES.slice(0, done), sweep.results.grid.slice(0, done), sweep.results.naive.slice(0, done)]);
-      if (sweep.size === SIZES.length) {
-        const last = SIZES.length - 1;
-        const ratio = sweep.results.naive[last] / Math.max(sweep.results.grid[last], 1e-3);
-        showNote(status, `Measured: at N = ${SIZES[last]} the naive search takes ${ratio.toFixed(1)}× as long as the grid.`);
-        sweep = null;
-      }
-    }
+    scene.sweepRecord(elapsed / k);
+    showSweep();
   }
   startSweep();
 
@@ -207,5 +202,9 @@ if (flockViewer) {
     }
     sweepStep();
     markDrawn('#fig-flock');
+    markDrawn('#fig-timing');
   });
+} else {
+  // No canvas for the flock (no WebGPU or WebGL2): nothing to time with.
+  markDrawn('#fig-timing');
 }
