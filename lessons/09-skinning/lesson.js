@@ -23,7 +23,7 @@ const cylinderViewer = await lesson.figure('#fig-cylinder');
 if (cylinderViewer) {
   cylinderViewer.setCamera(0.3, 0.7, 0, 5.0, 0.0, 0.2);
   const scene = new SkinningCylinderScene();
-  const p = { bend: 90, twist: 0, falloff: 0.15, heat: 'none', useExercise: false };
+  const p = { bend: 90, twist: 0, falloff: 0.15, heat: 'none', ring: 20, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-cylinder .panel'), title: 'Elbow' });
   const plot = new Plot(document.getElementById('cyl-plot'), {
     title: 'Elbow cross-section against the angle', xLabel: 'bend or twist angle (°)', yLabel: 'area (% of rest)',
@@ -53,6 +53,7 @@ if (cylinderViewer) {
   const showLegend = heatLegend('#fig-cylinder');
   gui.add(p, 'heat', ['none', 'shoulder', 'elbow']).name('weights of').onChange((v) => { scene.setHeatJoint(v); showLegend(v); });
   showLegend(p.heat);
+  gui.add(p, 'ring', 0, 40, 1).name('followed vertex (ring)').onChange((r) => scene.setProbeRing(r));
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
   updatePlot();
   moveCursors();

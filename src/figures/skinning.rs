@@ -140,7 +140,13 @@ pub struct CylinderFigure {
     pub dqs: SkinnedMesh,
     exercise_note: String,
     stale: bool,
+    /// The ring whose top vertex the figure follows ([`CylinderFigure::set_probe_ring`]).
+    probe_ring: usize,
 }
+
+/// Widths of the elbow ring and of the lines along the tubes, CSS pixels.
+const RING_PX: f32 = 3.0;
+const STRIPE_PX: f32 = 2.0;
 
 impl Default for CylinderFigure {
     fn default() -> Self {
@@ -180,6 +186,7 @@ impl CylinderFigure {
             dqs: SkinnedMesh::new(n),
             exercise_note: String::new(),
             stale: true,
+            probe_ring: CYLINDER_RINGS / 2,
             rig,
         };
         figure.repaint();
@@ -376,7 +383,90 @@ impl CylinderFigure {
                 }
             }
         }
+        let probes = self.probe_exercises();
+        if !probes.is_empty() {
+            notes.push(probes);
+        }
         notes.join(" ")
+    }
+
+    /// Exercises 9.1 and 9.2 on the elbow ring at poses the sliders may not be at: a half
+    /// twist (the candy wrapper), a deep bend, and a bend with a twist. Says which differ.
+    fn probe_exercises(&self) -> String {
+        const POSES: [(f32, f32); 3] = [(0.0, 180.0), (150.0, 0.0), (90.0, 90.0)];
+        let n = self.rig.skeleton.len();
+        let (mut model, mut k, mut dq) = (
+            vec![Affine3A::IDENTITY; n],
+            vec![Affine3A::IDENTITY; n],
+            vec![DualQuat::IDENTITY; n],
+        );
+        let s = self.rig.ring_start(self.rig.elbow_ring());
+        let mut differ = [Vec::new(), Vec::new()];
+        let mut answered = [true, true];
+        for (bend, twist) in POSES {
+            if self
+                .rig
+                .palette(bend.to_radians(), twist.to_radians(), &mut model, &mut k)
+                .is_err()
+                || dual_quat_palette(&k, &mut dq).is_err()
+            {
+                continue;
+            }
+            let at = format!("bend {bend:.0}° twist {twist:.0}°");
+            let (mut lbs_ok, mut dqs_ok) = (true, true);
+            for v in s..s + self.rig.around {
+                let p = self.rig.mesh.positions[v];
+                let (j, w) = (self.skin.joints()[v], self.skin.weights()[v]);
+                let mats: Vec<Mat4> = j.iter().map(|&j| Mat4::from(k[j as usize])).collect();
+                let reference = crate::skinning::lbs_vertex(&mats, &w, p);
+                // An exercise that gives no answer (a stub, a panic) is reported above, not here.
+                lbs_ok &= match run::lbs_vertex(self.runner, mats, w.to_vec(), p) {
+                    Ok(q) => (q - reference).length() <= TOLERANCE,
+                    Err(_) => {
+                        answered[0] = false;
+                        true
+                    }
+                };
+                // The elbow's dual quaternion negated, as in the figure.
+                let qs: Vec<DualQuat> = j
+                    .iter()
+                    .map(|&j| if j == 1 { dq[1] * -1.0 } else { dq[j as usize] })
+                    .collect();
+                let reference = crate::skinning::blend_dual_quats(&qs, &w).transform_point(p);
+                dqs_ok &= match run::blend_dual_quats(self.runner, qs, w.to_vec()) {
+                    Ok(q) => (q.transform_point(p) - reference).length() <= TOLERANCE,
+                    Err(_) => {
+                        answered[1] = false;
+                        true
+                    }
+                };
+            }
+            if !lbs_ok {
+                differ[0].push(at.clone());
+            }
+            if !dqs_ok {
+                differ[1].push(at);
+            }
+        }
+        let poses = "bend 0° twist 180°, bend 150° twist 0°, bend 90° twist 90°";
+        let said: Vec<String> = ["9.1", "9.2"]
+            .iter()
+            .zip(&differ)
+            .zip(answered)
+            .filter(|(_, answered)| *answered)
+            .map(|((name, d), _)| {
+                if d.is_empty() {
+                    format!("{name} matches there")
+                } else {
+                    format!("{name} differs at {}", d.join(", "))
+                }
+            })
+            .collect();
+        match (said.len(), differ.iter().all(Vec::is_empty)) {
+            (0, _) => String::new(),
+            (2, true) => format!("Both also match on the elbow ring at {poses}."),
+            _ => format!("Probed on the elbow ring at {poses}: {}.", said.join("; ")),
+        }
     }
 
     /// The elbow ring's area now, as a fraction of its rest area: (LBS, DQS).
@@ -410,7 +500,7 @@ impl CylinderFigure {
                 .chain(std::iter::once(&ring[0]))
                 .map(|p| offset + c + (*p - c) * 1.03)
                 .collect();
-            frame.polyline(&lifted, palette::DARK);
+            frame.wide_polyline(&lifted, palette::DARK, RING_PX);
             // Two rows of vertices along the tube (on top and facing the camera in the bind
             // pose): a twist shows as these lines turning round the tube (DQS), or running
             // into the pinch (LBS); a plain tube looks the same however far it is twisted.
@@ -423,7 +513,7 @@ impl CylinderFigure {
                         offset + c + (ring[k] - c) * 1.03
                     })
                     .collect();
-                frame.polyline(&stripe, palette::GREY);
+                frame.wide_polyline(&stripe, palette::GREY, STRIPE_PX);
             }
             // The skeleton: joints and bones, drawn beside the tube's axis.
             let joints: Vec<Vec3> = self
@@ -438,6 +528,7 @@ impl CylinderFigure {
                 palette::DARK,
             );
         }
+        let probe = self.draw_probe(frame);
         let (a_lbs, a_dqs) = self.elbow_areas();
         let mut note = format!(
             "Elbow cross-section (black ring): LBS keeps {:.0}% of its rest area, DQS {:.0}%.",
@@ -468,11 +559,74 @@ impl CylinderFigure {
                 self.rig.skeleton.names()[j]
             ));
         }
+        note.push(' ');
+        note.push_str(&probe);
         if !self.exercise_note.is_empty() {
             note.push(' ');
             note.push_str(&self.exercise_note);
         }
         Ok(note)
+    }
+
+    /// The vertex the figure follows: the top one (+y in the bind pose) of ring `ring`, from 0
+    /// at the shoulder end to [`CYLINDER_RINGS`] − 1 at the wrist end.
+    pub fn set_probe_ring(&mut self, ring: usize) -> Result<(), String> {
+        if ring >= self.rig.rings {
+            return Err(format!(
+                "vertex ring must be between 0 and {}, got {ring}",
+                self.rig.rings - 1
+            ));
+        }
+        self.probe_ring = ring;
+        Ok(())
+    }
+
+    /// The followed vertex's index, and where each of its two heaviest joints alone would take
+    /// it, `[K₁p, K₂p]` with their weights (model space, before the tubes' offsets).
+    pub fn probe(&self) -> (usize, [(Vec3, f32); 2]) {
+        let v = self.rig.ring_start(self.probe_ring);
+        let p = self.rig.mesh.positions[v];
+        let (j, w) = (self.skin.joints()[v], self.skin.weights()[v]);
+        let k = |i: usize| (self.palette[j[i] as usize].transform_point3(p), w[i]);
+        (v, [k(0), k(1)])
+    }
+
+    /// Draws the followed vertex on the LBS tube: where each joint alone would take it (K₁p,
+    /// K₂p), the chord between them, LBS's point on that chord and DQS's point; DQS's point on
+    /// the DQS tube too. Returns the note's sentence.
+    fn draw_probe(&self, frame: &mut Frame) -> String {
+        let (v, [(k1, w1), (k2, w2)]) = self.probe();
+        let names = self.rig.skeleton.names();
+        let j = self.skin.joints()[v];
+        let (lbs, dqs) = (self.lbs.positions[v], self.dqs.positions[v]);
+        let o = LBS_OFFSET;
+        if w2 > 0.0 {
+            frame.stroke(
+                &[o + k1, o + k2],
+                palette::DARK,
+                crate::draw::StrokeStyle::dashed(2.0, 0.04, 0.03),
+            );
+            frame.marker_on_top(o + k2, 10.0, palette::GREY);
+            frame.label_with_priority(o + k2, "K₂p", palette::GREY, 1);
+        }
+        frame.marker_on_top(o + k1, 10.0, palette::GREY);
+        frame.label_with_priority(o + k1, "K₁p", palette::GREY, 1);
+        frame.marker_on_top(o + dqs, 12.0, palette::TEAL);
+        frame.marker_on_top(o + lbs, 12.0, palette::ORANGE);
+        frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
+        let elbow = Vec3::from(self.model[1].translation);
+        let rest = self.rig.mesh.positions[v].distance(self.rig.segments[1].0);
+        format!(
+            "The followed vertex (ring {}, weights {} {} and {} {}): LBS puts it on the dashed chord between K₁p and K₂p, {} m from the elbow joint, DQS {} m (as in the bind pose, {} m).",
+            self.probe_ring,
+            names[j[0] as usize],
+            format_number(w1),
+            names[j[1] as usize],
+            format_number(w2),
+            format_number(lbs.distance(elbow)),
+            format_number(dqs.distance(elbow)),
+            format_number(rest)
+        )
     }
 
     /// Where the current pose lies on the plots' x axes (their dashed lines), degrees. The area

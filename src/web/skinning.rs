@@ -97,6 +97,14 @@ impl SkinningCylinderScene {
         self.scene.set_heat_joint(name).map_err(js)
     }
 
+    /// The ring (0 at the shoulder end to 40 at the wrist end) whose top vertex the figure
+    /// follows.
+    #[wasm_bindgen(js_name = setProbeRing)]
+    pub fn set_probe_ring(&mut self, ring: f64) -> Result<(), JsError> {
+        let ring = super::whole("ring", ring)?;
+        self.scene.set_probe_ring(ring).map_err(js)
+    }
+
     /// Runs the student's exercises 9.1 and 9.2 (in the sandbox) instead of the reference.
     #[wasm_bindgen(js_name = setUseExercise)]
     pub fn set_use_exercise(&mut self, on: JsValue) -> Result<(), JsError> {
