@@ -532,7 +532,7 @@ fn wire_cube(frame: &mut Frame, m: Mat4, color: Vec3) {
     for i in 0..8u32 {
         for bit in [1, 2, 4] {
             if i & bit == 0 {
-                frame.line(c(i), c(i | bit), color);
+                frame.wide_line(c(i), c(i | bit), color, 1.5);
             }
         }
     }
