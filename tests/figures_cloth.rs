@@ -752,4 +752,27 @@ fn the_substeps_plot_measures_what_the_flag_needs_and_grows_with_the_root_of_k()
     assert_eq!(measured, [7.0, 9.0, 13.0, 18.0, 23.0, 27.0]);
     // The figure itself is untouched by the measurement.
     assert_eq!(f.substep(), ClothFigure::new(Preset::Flag).substep());
+    // Run a few frames at a time (as the page does), the search finds the same counts, and its
+    // rows fill in as it goes.
+    let mut search = f.substep_search().unwrap();
+    let mut calls = 0;
+    while !search.work(50).unwrap() {
+        calls += 1;
+        if calls == 5 {
+            assert!(search.rows()[1].is_nan(), "no answer after 250 frames");
+        }
+    }
+    assert!(calls > 20, "{calls} calls of 50 frames");
+    assert_eq!(search.done(), SUBSTEP_PLOT_K.len());
+    let stepped: Vec<f32> = search.rows().chunks(4).map(|r| r[1]).collect();
+    assert_eq!(stepped, measured);
+    // A cloth that needs more than the slider's 40 substeps gets no point, not a wrong one.
+    let mut slow = ClothFigure::new(Preset::Flag);
+    slow.set_step_ms(50.0).unwrap();
+    let far: Vec<f32> = slow.substeps_plot().unwrap().chunks(4).map(|r| r[1]).collect();
+    assert!(far[5].is_nan() && far[0].is_finite(), "{far:?}");
+    // The drape with XPBD has no mass-spring cloth to measure.
+    let mut xpbd = ClothFigure::new(Preset::Drape);
+    xpbd.set_method("XPBD").unwrap();
+    assert!(xpbd.substep_search().is_err());
 }

@@ -132,7 +132,8 @@ if (flagViewer) {
   apply();
   // The third plot: the fewest substeps that keep the mass-spring flag whole for the 6 s, against
   // the structural stiffness, at the settings of the last measurement. Rust runs the flag about
-  // 36 times (a second or so), so it measures at load and on the button, not on every change.
+  // 36 times; it goes on a few frames of simulation per drawn frame, so the page stays live and
+  // the points appear one by one. It starts at load and on the button, not on every change.
   const substeps = new Plot(document.getElementById('flag-substeps'), {
     title: 'Substeps the mass-spring flag needs', xLabel: 'structural stiffness k (N/m)', yLabel: 'substeps',
     series: ['measured (fewest that hold)', 'c·√k fitted', 'conservative limit ⌈Δt/h⌉'],
@@ -142,25 +143,44 @@ if (flagViewer) {
   const substepsNote = document.getElementById('flag-substeps-note');
   // What the plot depends on (the structural stiffness is its x axis).
   const settings = () => JSON.stringify(['shear', 'bending', 'damping', 'step', 'wind', 'pins'].map((k) => p[k]));
+  let search = null;
   let measuredAt = '';
+  const stale = 'The third plot shows the settings of its last measurement: press ' +
+    '"measure the substeps needed" to measure at these.';
+  const showSearch = () => {
+    substeps.setData(gaps(search.rows(), 4));
+    const missing = columns(search.rows(), 4)[1].some((v) => !Number.isFinite(v));
+    if (search.done() < 6) {
+      substepsNote.textContent = `Measuring the third plot: ${search.done()} of 6 stiffnesses done…`;
+    } else if (settings() !== measuredAt) {
+      substepsNote.textContent = stale;
+    } else {
+      substepsNote.textContent = 'The third plot is measured at these settings' +
+        (missing ? '; a missing point needs more than 40 substeps.' : '.');
+    }
+  };
   const measure = () => {
     try {
-      const started = performance.now();
-      const rows = columns(scene.substepsPlot(), 4).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
-      substeps.setData(rows);
+      search?.free();
+      search = scene.substepSearch();
       measuredAt = settings();
-      substepsNote.textContent = `Measured at these settings in ${Math.round(performance.now() - started)} ms` +
-        (rows[1].includes(null) ? '; a missing point needs more than 40 substeps.' : '.');
+      showSearch();
     } catch (e) {
+      search = null;
       substepsNote.textContent = `Not measured: ${e.message ?? e}`;
     }
   };
-  setTimeout(measure, 0);
+  measure();
+  lesson.onFrame(() => {
+    if (!search || search.done() === 6) return;
+    // Batches of 10 frames of one small flag (well under a millisecond each) for up to 8 ms of
+    // each drawn frame.
+    const until = performance.now() + 8;
+    while (search.done() < 6 && performance.now() < until) search.work(10);
+    showSearch();
+  });
   gui.onChange(() => {
-    if (measuredAt && settings() !== measuredAt) {
-      substepsNote.textContent = 'The third plot shows the settings of its last measurement: press ' +
-        '"measure the substeps needed" to measure at these.';
-    }
+    if (search?.done() === 6 && settings() !== measuredAt) substepsNote.textContent = stale;
   });
   dragParticles('#fig-flag', scene, timeline);
   const note = document.getElementById('flag-note');

@@ -880,88 +880,32 @@ impl ClothFigure {
         self.sims[0].cloth.stable_substep_estimate(&self.params)
     }
 
-    /// The fewest substeps per frame (1 to 40, the slider's range) with which this figure's
-    /// mass-spring cloth, given structural stiffness `k` (N/m) and every other setting as it is,
-    /// runs the whole [`DURATION`] without exploding; `None` when 40 are not enough. Each try is a
-    /// fresh run of a copy (the figure itself is untouched, drags and obstacle moves left out); a
-    /// binary search, since a smaller substep does not make this step less stable (the tests
-    /// check every count around the answer).
-    pub fn substeps_needed(&self, k: f32) -> Result<Option<u32>, String> {
-        let k = in_range("structural stiffness", k, 1.0, 5000.0)?;
+    /// A measurement of the substeps this figure's mass-spring cloth needs against its structural
+    /// stiffness (at [`SUBSTEP_PLOT_K`], every other setting as it is now), to be run a bounded
+    /// amount of work at a time with [`SubstepSearch::work`] so a page stays responsive.
+    pub fn substep_search(&self) -> Result<SubstepSearch, String> {
         let mut probe = self.clone();
-        probe.set_stiffness("structural", k)?;
         probe.forget_interaction();
-        let max = 40;
-        if !probe.mass_spring_survives(max)? {
-            return Ok(None);
+        probe.sims.retain(|s| s.method == Method::MassSpring);
+        if probe.sims.is_empty() {
+            return Err("this figure has no mass-spring cloth to measure".into());
         }
-        // `lo` explodes (or is 0), `hi` survives.
-        let (mut lo, mut hi) = (0, max);
-        while hi - lo > 1 {
-            let mid = (lo + hi) / 2;
-            if probe.mass_spring_survives(mid)? {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        Ok(Some(hi))
+        Ok(SubstepSearch {
+            probe,
+            results: Vec::with_capacity(SUBSTEP_PLOT_K.len()),
+            lo: 0,
+            hi: MAX_SEARCH_SUBSTEPS + 1,
+            frame: None,
+        })
     }
 
-    /// Runs the mass-spring cloth alone with `n` substeps from the start to [`DURATION`]; false
-    /// as soon as it explodes.
-    fn mass_spring_survives(&mut self, n: u32) -> Result<bool, String> {
-        self.params.substeps = n;
-        self.restart();
-        self.sims.retain(|s| s.method == Method::MassSpring);
-        if self.sims.is_empty() {
-            return Err("this figure has no mass-spring cloth".into());
-        }
-        let frames = (DURATION / self.frame_dt + 1e-3).floor() as usize;
-        for _ in 0..frames {
-            self.step_frame()?;
-            if self.sims[0].cloth.exploded().is_some() {
-                return Ok(false);
-            }
-        }
-        Ok(true)
-    }
-
-    /// The plot of the substeps the mass-spring cloth needs against its structural stiffness, at
-    /// the stiffnesses [`SUBSTEP_PLOT_K`] with every other setting as it is: flat rows of
-    /// `[k (N/m), measured fewest substeps (NaN past 40), c·√k fitted to the measured points by
-    /// least squares, ⌈Δt / h_limit⌉ from the conservative limit (NaN past 40)]`.
+    /// The whole measurement at once: [`SubstepSearch::rows`] of a finished search.
     pub fn substeps_plot(&self) -> Result<Vec<f32>, String> {
-        let mut measured = Vec::with_capacity(SUBSTEP_PLOT_K.len());
-        for &k in &SUBSTEP_PLOT_K {
-            measured.push(self.substeps_needed(k)?);
-        }
-        // Least squares for n = c·√k: c = Σ n√k / Σ k over the measured points.
-        let (num, den) = SUBSTEP_PLOT_K
-            .iter()
-            .zip(&measured)
-            .filter_map(|(&k, n)| n.map(|n| (n as f32 * k.sqrt(), k)))
-            .fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
-        let c = if den > 0.0 { num / den } else { f32::NAN };
-        let mut rows = Vec::with_capacity(4 * SUBSTEP_PLOT_K.len());
-        for (&k, n) in SUBSTEP_PLOT_K.iter().zip(&measured) {
-            let mut p = self.params;
-            p.stiffness[0] = k;
-            let limit = self.sims[0].cloth.stable_substep_estimate(&p);
-            let conservative = (self.frame_dt / limit).ceil();
-            rows.extend([
-                k,
-                n.map_or(f32::NAN, |n| n as f32),
-                c * k.sqrt(),
-                if conservative <= 40.0 {
-                    conservative
-                } else {
-                    f32::NAN
-                },
-            ]);
-        }
-        Ok(rows)
+        let mut search = self.substep_search()?;
+        while !search.work(usize::MAX)? {}
+        Ok(search.rows())
     }
+
 
     /// The substep h, seconds.
     pub fn substep(&self) -> f32 {
@@ -1071,6 +1015,112 @@ fn kind_index(kind: &str) -> Result<usize, String> {
 
 // ---------------------------------------------------------------------------------------------
 // One spring, one constraint.
+
+/// The most substeps a [`SubstepSearch`] tries: the substeps slider's end.
+pub const MAX_SEARCH_SUBSTEPS: u32 = 40;
+
+/// The fewest substeps (1 to [`MAX_SEARCH_SUBSTEPS`]) with which a mass-spring cloth runs the
+/// whole [`DURATION`] without exploding, found for each stiffness of [`SUBSTEP_PLOT_K`] by a binary
+/// search over fresh runs of a copy of the figure (drags and obstacle moves left out). The search
+/// assumes that a smaller substep never makes the step less stable; the tests check the counts
+/// around each answer.
+#[derive(Clone, Debug)]
+pub struct SubstepSearch {
+    /// The figure's copy, with its mass-spring cloth only.
+    probe: ClothFigure,
+    /// The answers so far, in the order of [`SUBSTEP_PLOT_K`] (`None`: more than the maximum).
+    results: Vec<Option<u32>>,
+    /// The current stiffness's bracket: `lo` substeps explode (or `lo` is 0), `hi` hold (or `hi`
+    /// is past the maximum).
+    lo: u32,
+    hi: u32,
+    /// The frame the run being tried has reached, `None` before it starts.
+    frame: Option<usize>,
+}
+
+impl SubstepSearch {
+    /// Simulates at most `max_frames` frames of the runs the search needs; true when every
+    /// stiffness has its answer.
+    pub fn work(&mut self, max_frames: usize) -> Result<bool, String> {
+        let frames = (DURATION / self.probe.frame_dt + 1e-3).floor() as usize;
+        let mut budget = max_frames;
+        while self.results.len() < SUBSTEP_PLOT_K.len() {
+            let trying = (self.lo + self.hi) / 2;
+            let frame = match self.frame {
+                Some(f) => f,
+                None => {
+                    self.probe.params.stiffness[0] = SUBSTEP_PLOT_K[self.results.len()];
+                    self.probe.params.compliance_from_stiffness();
+                    self.probe.params.substeps = trying;
+                    self.probe.restart();
+                    0
+                }
+            };
+            let mut f = frame;
+            let mut exploded = false;
+            while f < frames && budget > 0 {
+                self.probe.step_frame()?;
+                f += 1;
+                budget -= 1;
+                if self.probe.sims[0].cloth.exploded().is_some() {
+                    exploded = true;
+                    break;
+                }
+            }
+            if !exploded && f < frames {
+                self.frame = Some(f);
+                return Ok(false);
+            }
+            self.frame = None;
+            if exploded {
+                self.lo = trying;
+            } else {
+                self.hi = trying;
+            }
+            if self.hi - self.lo <= 1 {
+                self.results
+                    .push((self.hi <= MAX_SEARCH_SUBSTEPS).then_some(self.hi));
+                self.lo = 0;
+                self.hi = MAX_SEARCH_SUBSTEPS + 1;
+            }
+            if budget == 0 {
+                return Ok(self.results.len() == SUBSTEP_PLOT_K.len());
+            }
+        }
+        Ok(true)
+    }
+
+    /// How many stiffnesses have their answer.
+    pub fn done(&self) -> usize {
+        self.results.len()
+    }
+
+    /// Flat rows of `[k (N/m), measured fewest substeps (NaN past the maximum or not yet
+    /// measured), c·√k fitted to the measured points by least squares, ⌈Δt / h_limit⌉ from the
+    /// conservative limit (NaN past the maximum)]`, one per stiffness of [`SUBSTEP_PLOT_K`].
+    pub fn rows(&self) -> Vec<f32> {
+        let measured = |i: usize| self.results.get(i).copied().flatten();
+        // Least squares for n = c·√k: c = Σ n√k / Σ k over the measured points.
+        let (num, den) = (0..SUBSTEP_PLOT_K.len())
+            .filter_map(|i| measured(i).map(|n| (n as f32 * SUBSTEP_PLOT_K[i].sqrt(), SUBSTEP_PLOT_K[i])))
+            .fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
+        let c = if den > 0.0 { num / den } else { f32::NAN };
+        let cloth = &self.probe.sims[0].cloth;
+        let mut rows = Vec::with_capacity(4 * SUBSTEP_PLOT_K.len());
+        for (i, &k) in SUBSTEP_PLOT_K.iter().enumerate() {
+            let mut p = self.probe.params;
+            p.stiffness[0] = k;
+            let conservative = (self.probe.frame_dt / cloth.stable_substep_estimate(&p)).ceil();
+            rows.extend([
+                k,
+                measured(i).map_or(f32::NAN, |n| n as f32),
+                c * k.sqrt(),
+                if conservative <= MAX_SEARCH_SUBSTEPS as f32 { conservative } else { f32::NAN },
+            ]);
+        }
+        rows
+    }
+}
 
 /// Mass of the swinging particles, kg.
 pub const SPRING_MASS: f32 = 0.05;

@@ -104,12 +104,11 @@ impl ClothScene {
     pub fn plot_ranges(&self) -> Vec<f32> {
         self.scene.plot_ranges().to_vec()
     }
-    /// The substeps the mass-spring cloth needs against its structural stiffness, measured at
-    /// this figure's other settings: rows of `[k, fewest substeps, c·√k fit, conservative limit]`
-    /// (NaN where past 40). Costs a few dozen runs of the flag (about a second in a release build).
-    #[wasm_bindgen(js_name = substepsPlot)]
-    pub fn substeps_plot(&self) -> Result<Vec<f32>, JsError> {
-        self.scene.substeps_plot().map_err(js)
+    /// Starts measuring the substeps the mass-spring cloth needs against its structural
+    /// stiffness, at this figure's other settings (see `SubstepSearch`).
+    #[wasm_bindgen(js_name = substepSearch)]
+    pub fn substep_search(&self) -> Result<SubstepSearch, JsError> {
+        Ok(SubstepSearch { search: self.scene.substep_search().map_err(js)? })
     }
     /// When cloth `k` exploded (seconds since the start), or `undefined` while it holds.
     #[wasm_bindgen(js_name = explodedAt)]
@@ -289,4 +288,28 @@ pub fn check_cloth(columns: f64, rows: f64, mass_kg: f32) -> Result<String, JsEr
         cloth.springs.len(),
         cloth.triangles.len()
     ))
+}
+
+/// A measurement of the substeps a mass-spring cloth needs, run a few frames at a time.
+#[wasm_bindgen]
+pub struct SubstepSearch {
+    search: crate::figures::cloth::SubstepSearch,
+}
+
+#[wasm_bindgen]
+impl SubstepSearch {
+    /// Simulates at most `frames` frames (a whole number from 1 to 100,000) of the runs the
+    /// search needs; true when it is finished.
+    pub fn work(&mut self, frames: f64) -> Result<bool, JsError> {
+        let frames = super::whole_in("frames", frames, 1, 100_000)?;
+        self.search.work(frames).map_err(js)
+    }
+    /// How many of the stiffnesses have their answer.
+    pub fn done(&self) -> usize {
+        self.search.done()
+    }
+    /// Rows of `[k, fewest substeps, c·√k fit, conservative limit]` (NaN: past 40 or not yet).
+    pub fn rows(&self) -> Vec<f32> {
+        self.search.rows()
+    }
 }
