@@ -298,10 +298,10 @@ pub struct SubstepSearch {
 
 #[wasm_bindgen]
 impl SubstepSearch {
-    /// Simulates at most `frames` frames (a whole number from 1 to 100,000) of the runs the
+    /// Simulates at most `frames` frames (a whole number from 1 to 10,000: about a second) of the runs the
     /// search needs; true when it is finished.
     pub fn work(&mut self, frames: f64) -> Result<bool, JsError> {
-        let frames = super::whole_in("frames", frames, 1, 100_000)?;
+        let frames = super::whole_in("frames", frames, 1, 10_000)?;
         self.search.work(frames).map_err(js)
     }
     /// How many of the stiffnesses have their answer.
