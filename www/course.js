@@ -346,6 +346,13 @@ function findControl(controllers, figureId, key) {
   return controllers.find((c) => figure.contains(c.domElement) && (c.property === key || c._name === key)) ?? null;
 }
 
+/** A fixed pseudo-random number for `text` (FNV-1a), to order a question's choices. */
+function mix(text) {
+  let h = 0x811c9dc5;
+  for (const c of text) h = Math.imul(h ^ c.codePointAt(0), 0x01000193) >>> 0;
+  return h;
+}
+
 /** A number to four significant digits with its unit ("30°", "1.01 s"). */
 function withUnit(value, unit) {
   const number = String(Number(value.toPrecision(4)));
@@ -406,7 +413,11 @@ export async function quiz(id, quizAnswer, controllers) {
     if (q.type === 'choice') {
       const list = document.createElement('div');
       list.className = 'choices';
-      q.choices.forEach((choice, i) => {
+      // Shown in an order fixed by the question's id (the same on every visit), not the file's:
+      // quiz.json may list the right choice first.
+      const order = q.choices.map((_, i) => i).sort((a, b) => mix(`${q.id}/${a}`) - mix(`${q.id}/${b}`));
+      order.forEach((i) => {
+        const choice = q.choices[i];
         const label = document.createElement('label');
         const input = document.createElement('input');
         input.type = 'radio';
