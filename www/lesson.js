@@ -253,8 +253,14 @@ export async function startLesson() {
   buildSourceView().catch(showError);
   const navigation = fetch('../catalog.json')
     .then((r) => (r.ok ? r.json() : []))
-    .then((catalog) => setUpNavigation(catalog, lessonId()))
-    .catch(showError);
+    .then((catalog) => {
+      setUpNavigation(catalog, lessonId());
+      return catalog;
+    })
+    .catch((e) => {
+      showError(e);
+      return [];
+    });
   try {
     await loadModules();
   } catch (e) {
@@ -282,8 +288,11 @@ async function startCourse(navigation) {
   if (gradedLessons().includes(id)) {
     state.grading = gradePanel(sandbox.module, id);
   }
-  await quiz(id, quizAnswer, controllers).catch(showError);
-  await navigation;
+  // Only a lesson whose folder has a quiz.json asks for it (the catalog says which do).
+  const catalog = await navigation;
+  if (catalog.find((l) => l.folder === id)?.quizQuestions) {
+    await quiz(id, quizAnswer, controllers).catch(showError);
+  }
   addOutline();
   showProgressNotes(document.querySelector('main'));
   document.body.dataset.course = 'ready';
