@@ -226,28 +226,26 @@ impl SingleShape {
         let fmt = |v: Vec3| format!("({}, {}, {})", number(v.x), number(v.y), number(v.z));
         let swung = self.matrix(Order::TranslateFirst).w_axis.truncate();
         let arm = super::format_number(self.translation.length());
-        if stage < 1.0 {
-            format!(
-                "Step 1 of 2, the right-hand factor: T·R applies R first, so its box turns in place \
-                 at the origin; R·T applies T first, so its box slides towards t = {}.",
-                fmt(self.translation)
-            )
+        let step = if stage < 1.0 {
+            "Step 1 of 2, the right-hand factor: T·R applies R first, so its box turns in place at \
+             the origin; R·T applies T first, so its box slides to t."
+                .to_string()
         } else if stage < 2.0 {
             format!(
                 "Step 2 of 2, the left-hand factor: T·R now applies T, so its turned box slides to \
                  t; R·T now applies R, which turns about the world origin, so its box swings on an \
-                 arm {arm} m long towards R·t = {}.",
-                fmt(swung)
+                 arm {arm} m long."
             )
         } else {
-            format!(
-                "Both steps done. T·R keeps the box's centre at t = {}; R·T carries it to R·t = {}, \
-                 on an arm {arm} m long from the world origin; the centres are {} m apart.",
-                fmt(self.translation),
-                fmt(swung),
-                super::format_number(self.translation.distance(swung))
-            )
-        }
+            "Both steps done.".to_string()
+        };
+        format!(
+            "{step} In the end T·R keeps the box's centre at t = {}; R·T carries it to R·t = {}, \
+             on an arm {arm} m long from the world origin; the centres are {} m apart.",
+            fmt(self.translation),
+            fmt(swung),
+            super::format_number(self.translation.distance(swung))
+        )
     }
 }
 
