@@ -102,6 +102,12 @@ fn the_try_this_of_figure_1_holds() {
     assert!(shape
         .matrix(Order::RotateFirst)
         .abs_diff_eq(shape.matrix(Order::TranslateFirst), 1e-6));
+    // During the steps both centres stay at the origin.
+    for stage in [0.3, 0.8, 1.2, 1.7] {
+        for o in [Order::RotateFirst, Order::TranslateFirst] {
+            assert!(near(shape.matrix_at(o, stage).w_axis.truncate(), Vec3::ZERO, 1e-6));
+        }
+    }
     shape
         .set_transform(Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, 180.0))
         .unwrap();
