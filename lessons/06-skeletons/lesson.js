@@ -153,7 +153,9 @@ async function skeletonFigure(id, start) {
   }
 
   if (has('clip')) {
-    gui.add(p, 'clip', scene.clipNames()).name(start.blend ? 'clip A' : 'clip').onChange(() => {
+    // Figure 2 samples keys: the rest pose (no keys) is not offered there.
+    const clips = has('keys') ? scene.clipNames().slice(0, -1) : scene.clipNames();
+    gui.add(p, 'clip', clips).name(start.blend ? 'clip A' : 'clip').onChange(() => {
       scene.setClip(p.clip);
       timeline.duration = scene.durationSec();
       timeline.time %= timeline.duration;

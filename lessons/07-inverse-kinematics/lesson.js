@@ -11,9 +11,11 @@ const UNDER_AND_OVER = [5, 1.5];
 // Figures 1-3: the same three solvers side by side, each beside the section it illustrates,
 // starting from that section's settings. The plot of the error per iteration is in the
 // figures that have a .plot (2 and 3: the iterative solvers' sections).
-await ikFigure('#fig-ik', { segments: 2, limits: 'none' });
-await ikFigure('#fig-ik-iterative', { segments: 3, limits: 'none' });
-await ikFigure('#fig-ik-limits', { segments: 2, limits: 'hinges (bend one way)' });
+// Figure 1 keeps two segments (the two-joint chain needs them) and has the pole; Figures 2 and 3
+// let the number of segments change, which hides the two-joint chain and so its pole.
+await ikFigure('#fig-ik', { segments: 2, limits: 'none', controls: ['pole'] });
+await ikFigure('#fig-ik-iterative', { segments: 3, limits: 'none', controls: ['segments'] });
+await ikFigure('#fig-ik-limits', { segments: 2, limits: 'hinges (bend one way)', controls: ['segments', 'limits'] });
 
 async function ikFigure(id, start) {
   const viewer = await lesson.figure(id);
@@ -47,15 +49,18 @@ async function ikFigure(id, start) {
   };
   const applyTarget = () => { scene.setTarget(p.x, p.y, p.z); update(); };
 
-  gui.add(p, 'segments', 2, 8, 1).name('segments').onChange(() => { scene.setSegments(p.segments); update(); });
+  const has = (name) => start.controls.includes(name);
+  if (has('segments')) gui.add(p, 'segments', 2, 8, 1).name('segments').onChange(() => { scene.setSegments(p.segments); update(); });
   const target = gui.addFolder('target (m, from each root)');
   for (const axis of ['x', 'y', 'z']) target.add(p, axis, -1.5, 1.5, 0.01).name(axis).onChange(applyTarget);
-  gui.add(p, 'pole', -180, 180, 1).name('pole angle (°)').onChange(() => { scene.setPoleAngleDeg(p.pole); update(); });
+  if (has('pole')) gui.add(p, 'pole', -180, 180, 1).name('pole angle (°)').onChange(() => { scene.setPoleAngleDeg(p.pole); update(); });
   gui.add(p, 'iterations', 1, 50, 1).name('iterations').onChange(() => { scene.setIterations(p.iterations); update(); });
-  gui.add(p, 'limits', ['none', 'hinges (bend one way)', 'cones (40°)']).name('joint limits').onChange(() => {
-    scene.setLimits(p.limits);
-    update();
-  });
+  if (has('limits')) {
+    gui.add(p, 'limits', ['none', 'hinges (bend one way)', 'cones (40°)']).name('joint limits').onChange(() => {
+      scene.setLimits(p.limits);
+      update();
+    });
+  }
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => { scene.setUseExercise(on); update(); });
   gui.add(p, 'reset').name('reset the target');
   update();

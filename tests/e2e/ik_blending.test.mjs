@@ -193,17 +193,25 @@ test('lesson 07: each IK figure stands in the section it illustrates', async () 
       ['fig-ik-limits', 'Joint limits'],
       ['fig-aim', 'Aiming: look at the target'],
     ]);
-    // Each starts from its section's settings: 2, 3 and 2 segments; hinges in the limits one.
-    for (const [fig, segments, limits] of [['#fig-ik', '2', 'none'], ['#fig-ik-iterative', '3', 'none'],
+    // Each starts from its section's settings and has the controls its section needs: Figure 1
+    // two segments (no slider: the two-joint chain needs them), Figure 2 three segments, Figure 3
+    // two segments and hinges (the only one with a limits dropdown).
+    for (const [fig, segments, limits] of [['#fig-ik', null, null], ['#fig-ik-iterative', '3', null],
       ['#fig-ik-limits', '2', 'hinges (bend one way)']]) {
       await page.locator(fig).scrollIntoViewIfNeeded();
       await frames(page);
-      const shown = await page.evaluate((fig) => ({
-        segments: document.querySelector(`${fig} .lil-controller.lil-number input`).value,
-        limits: document.querySelector(`${fig} .lil-controller.lil-option select`).selectedOptions[0].textContent,
-      }), fig);
+      const shown = await page.evaluate((fig) => {
+        const control = (name) => [...document.querySelectorAll(`${fig} .lil-controller`)]
+          .find((c) => c.querySelector('.lil-name')?.textContent === name);
+        return {
+          segments: control('segments')?.querySelector('input').value ?? null,
+          limits: control('joint limits')?.querySelector('select').selectedOptions[0].textContent ?? null,
+          note: document.querySelector(`${fig} .note`).textContent,
+        };
+      }, fig);
       assert.equal(shown.segments, segments, `${fig} segments`);
       assert.equal(shown.limits, limits, `${fig} limits`);
+      if (fig === '#fig-ik') assert.match(shown.note, /Two-joint: reached in one step/);
       const { coverage } = await pixelStats(page, page.locator(`${fig} .stage canvas`), fig);
       assert.ok(coverage > 0.01, `${fig} draws (${coverage})`);
     }
