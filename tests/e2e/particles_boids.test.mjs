@@ -233,6 +233,26 @@ test('a typed value a number box cannot take says what became of it (lesson 11, 
   }
 });
 
+test('lesson 12: the step-time sweep ends on log-log axes with a note of the slopes it measured', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '/lessons/12-boids/?backend=webgl2', 1280, 800);
+    const sweep = page.locator('#flock-sweep');
+    await page.waitForFunction(() => document.getElementById('flock-sweep').textContent.startsWith('Measured in this run'), null, { timeout: 60_000 });
+    assert.match(await sweep.textContent(), /slope \d\.\d \(×\d+\.\d per doubling of N\)/);
+    // Log axes: the y range runs between powers of ten, both positive.
+    const [lo, hi] = (await page.locator('#flock-plot').getAttribute('data-y-range')).split(' ').map(Number);
+    assert.ok(lo > 0 && hi > lo && Number.isInteger(Math.log10(lo)) && Number.isInteger(Math.log10(hi)), `${lo} ${hi}`);
+    // The button starts it again.
+    await page.locator('#flock-measure').click();
+    await frames(page, 2);
+    assert.match(await sweep.textContent(), /^Measuring one step at N = /);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
 test('lesson 12: the order plot, the rules labels apart, the rule weights in view', async () => {
   const context = await launch('webgl2');
   try {
