@@ -86,7 +86,7 @@ await blendFigure('fig-additive', {
     const p = { base: 'walk', additive: 'wave (a clip)', additiveWeight: 1 };
     gui.add(p, 'base', scene.clipNames()).name('base clip').onChange(() => { scene.setClips(p.base, 'wave'); retime(); });
     const apply = () => { scene.setAdditive(p.additive, p.additiveWeight); replot(); };
-    gui.add(p, 'additive', ['none', 'lean forward (a pose)', 'wave (a clip)']).name('additive layer').onChange(apply);
+    gui.add(p, 'additive', ['lean forward (a pose)', 'wave (a clip)']).name('additive layer').onChange(apply);
     gui.add(p, 'additiveWeight', 0, 1, 0.01).name('layer weight').onChange(apply);
   },
 });
