@@ -652,3 +652,37 @@ fn a_stub_is_not_reported_as_differing_on_the_probes() {
         );
     }
 }
+
+#[test]
+fn the_weights_plot_is_half_and_half_at_the_elbow_and_widens_with_the_falloff() {
+    let mut f = CylinderFigure::new();
+    let rows = |f: &CylinderFigure| -> Vec<[f32; 3]> {
+        f.weight_curves()
+            .chunks(3)
+            .map(|r| r.try_into().unwrap())
+            .collect()
+    };
+    let blend_zone = |rows: &[[f32; 3]]| {
+        rows.iter()
+            .filter(|r| (0.05..=0.95).contains(&r[1]))
+            .count()
+    };
+    let mut zones = Vec::new();
+    for falloff in [0.01, 0.15, 1.0] {
+        f.set_falloff(falloff).unwrap();
+        let r = rows(&f);
+        assert_eq!(r.len(), inbetween::figures::skinning::CYLINDER_RINGS);
+        // Along 2 m; the two weights sum to 1; ½ and ½ at the elbow, whatever the falloff.
+        assert!(r[0][0].abs() < 1e-5 && (r[r.len() - 1][0] - 2.0).abs() < 1e-4);
+        assert!(r.iter().all(|x| (x[1] + x[2] - 1.0).abs() < 1e-4));
+        let mid = r[r.len() / 2];
+        assert!(
+            (mid[1] - 0.5).abs() < 1e-3 && (mid[0] - 1.0).abs() < 1e-4,
+            "{mid:?}"
+        );
+        // The nearest bone gets the most.
+        assert!(r[..r.len() / 2].iter().all(|x| x[1] >= 0.5));
+        zones.push(blend_zone(&r));
+    }
+    assert!(zones[0] < zones[1] && zones[1] < zones[2], "{zones:?}");
+}

@@ -34,6 +34,15 @@ if (cylinderViewer) {
     title: 'Tube volume against the bend', xLabel: 'bend angle (°)', yLabel: 'volume (% of rest)',
     series: ['LBS', 'DQS'], colors: ['#e68a00', '#17a2a8'], yRange: [0, 105], height: 180,
   });
+  // Figure 2: the same tube's weights along it, with its own falloff slider (Figure 1's too).
+  const weightsPlot = new Plot(document.getElementById('weights-plot'), {
+    title: 'Weights along the tube', xLabel: 'distance from the shoulder end (m)', yLabel: 'weight (no unit)',
+    series: ['shoulder', 'elbow'], colors: ['#1f6fd6', '#d62728'], yRange: [-0.02, 1.02], height: 200,
+  });
+  function updateWeights() {
+    const [x, shoulder, elbow] = columns(scene.weightCurves(), 3);
+    weightsPlot.setData([x, shoulder, elbow]);
+  }
   function updatePlot() {
     const pct = (a) => Array.from(a, (x) => 100 * x);
     const [angle, lbsBend, dqsBend, lbsTwist, dqsTwist] = columns(scene.areaCurves(91), 5);
@@ -49,13 +58,25 @@ if (cylinderViewer) {
   };
   gui.add(p, 'bend', 0, 180, 1).name('bend (°)').onChange((v) => { scene.setBendDeg(v); moveCursors(); });
   gui.add(p, 'twist', -180, 180, 1).name('twist (°)').onChange((v) => { scene.setTwistDeg(v); moveCursors(); });
-  gui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange((v) => { scene.setFalloff(v); updatePlot(); });
+  const falloffs = [];
+  const setFalloff = (v) => {
+    scene.setFalloff(v);
+    p.falloff = v;
+    for (const c of falloffs) c.updateDisplay();
+    updatePlot();
+    updateWeights();
+  };
+  falloffs.push(gui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange(setFalloff));
   const showLegend = heatLegend('#fig-cylinder');
   gui.add(p, 'heat', ['none', 'shoulder', 'elbow']).name('weights of').onChange((v) => { scene.setHeatJoint(v); showLegend(v); });
   showLegend(p.heat);
   gui.add(p, 'ring', 0, 40, 1).name('followed vertex (ring)').onChange((r) => scene.setProbeRing(r));
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
+  const weightsGui = new GUI({ container: document.querySelector('#fig-weights .weights-panel'), title: 'Weights' });
+  falloffs.push(weightsGui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange(setFalloff));
   updatePlot();
+  updateWeights();
+  markDrawn('#fig-weights');
   moveCursors();
 
   const note = document.getElementById('cyl-note');
@@ -72,7 +93,8 @@ if (signViewer) {
   const scene = new SkinningSignScene();
   const p = { twist: 300, fix: true };
   const gui = new GUI({ container: document.querySelector('#fig-sign .panel'), title: 'Twist' });
-  gui.add(p, 'twist', 0, 360, 1).name('twist (°)').onChange((v) => scene.setTwistDeg(v));
+  // From 150°: below it the fix never matters, and the slider's travel goes to where it does.
+  gui.add(p, 'twist', 150, 360, 1).name('twist (°)').onChange((v) => scene.setTwistDeg(v));
   gui.add(p, 'fix').name('antipodality fix').onChange((on) => scene.setFix(on));
   const note = document.getElementById('sign-note');
   lesson.onFrame(() => {

@@ -654,6 +654,23 @@ impl CylinderFigure {
         area_curves(&self.rig, &self.skin, samples)
     }
 
+    /// The weights along the tube at this falloff, ring by ring (each ring's top vertex, in the
+    /// bind pose): `[distance from the shoulder end (m), shoulder's weight, elbow's weight]`
+    /// per ring.
+    pub fn weight_curves(&self) -> Vec<f32> {
+        let start = self.rig.mesh.positions[0].x;
+        (0..self.rig.rings)
+            .flat_map(|r| {
+                let v = self.rig.ring_start(r);
+                [
+                    self.rig.mesh.positions[v].x - start,
+                    self.skin.weight_of(v, 0),
+                    self.skin.weight_of(v, 1),
+                ]
+            })
+            .collect()
+    }
+
     /// See [`volume_curves`].
     pub fn volume_curves(&self, samples: usize) -> Result<Vec<f32>, String> {
         volume_curves(&self.rig, &self.skin, samples)

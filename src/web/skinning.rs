@@ -131,6 +131,13 @@ impl SkinningCylinderScene {
         [cursor(c.area), cursor(c.volume)].into_iter().collect()
     }
 
+    /// `[distance along the tube (m), shoulder's weight, elbow's weight]` per ring, at this
+    /// falloff.
+    #[wasm_bindgen(js_name = weightCurves)]
+    pub fn weight_curves(&self) -> Vec<f32> {
+        self.scene.weight_curves()
+    }
+
     /// `[angle (°), LBS, DQS]` per sample: the tube's volume (fraction of rest) against the bend.
     #[wasm_bindgen(js_name = volumeCurves)]
     pub fn volume_curves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
