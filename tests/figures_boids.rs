@@ -675,7 +675,11 @@ fn synthetic_sweep(grid: impl Fn(f32) -> f32, naive: impl Fn(f32) -> f32) -> Ste
     let mut k = 0;
     while let Some((n, search)) = sweep.next_timing() {
         let wobble = 1.0 + 0.1 * (k % 3) as f32;
-        let t = if search == "grid" { grid(n as f32) } else { naive(n as f32) };
+        let t = if search == "grid" {
+            grid(n as f32)
+        } else {
+            naive(n as f32)
+        };
         sweep.record(t * wobble).unwrap();
         k += 1;
     }
@@ -700,9 +704,18 @@ fn the_step_time_sweep_fits_slopes_on_log_log_axes_and_shows_the_spread() {
         assert!((row[8] - 1.1e-6 * n * n).abs() < 1e-4 * row[8], "{row:?}");
     }
     let note = sweep.note();
-    assert!(note.contains("naive slope 2.0 (×4.0 per doubling of N), grid slope 1.0 (×2.0"), "{note}");
-    assert!(note.contains("At N = 3200 the naive search takes 3.2× as long as the grid."), "{note}");
-    assert!(note.contains("% above the fastest.") && !note.contains("busy"), "{note}");
+    assert!(
+        note.contains("naive slope 2.0 (×4.0 per doubling of N), grid slope 1.0 (×2.0"),
+        "{note}"
+    );
+    assert!(
+        note.contains("At N = 3200 the naive search takes 3.2× as long as the grid."),
+        "{note}"
+    );
+    assert!(
+        note.contains("% above the fastest.") && !note.contains("busy"),
+        "{note}"
+    );
     // Grid and naive take turns at each size.
     let mut sweep = StepTimeSweep::new();
     let order: Vec<&str> = (0..4)
@@ -727,7 +740,10 @@ fn a_slow_naive_search_is_not_timed_at_larger_sizes() {
     let row = |n: f32| s.chunks_exact(9).find(|r| r[0] == n).unwrap();
     assert!(row(800.0)[4] > SWEEP_LIMIT_MS && row(1600.0)[4].is_nan() && row(3200.0)[4].is_nan());
     assert!(row(3200.0)[1] > 0.0, "the grid goes on");
-    assert!(row(800.0)[8] > 0.0 && row(1600.0)[8].is_nan(), "the slope-2 guide stops with it");
+    assert!(
+        row(800.0)[8] > 0.0 && row(1600.0)[8].is_nan(),
+        "the slope-2 guide stops with it"
+    );
     let note = sweep.note();
     assert!(note.contains("not timed from N = 1600 on"), "{note}");
     assert!(note.contains("At N = 800 the naive search"), "{note}");
@@ -736,7 +752,11 @@ fn a_slow_naive_search_is_not_timed_at_larger_sizes() {
     let mut k = 0;
     while let Some((n, search)) = sweep.next_timing() {
         let n = n as f32;
-        let t = if search == "grid" { 1e-3 * n } else { 1e-6 * n * n };
+        let t = if search == "grid" {
+            1e-3 * n
+        } else {
+            1e-6 * n * n
+        };
         sweep.record(if k % 10 == 3 { 3.0 * t } else { t }).unwrap();
         k += 1;
     }
@@ -755,7 +775,10 @@ fn cells_narrower_than_the_radius_miss_neighbours_and_the_figure_says_so() {
             for k in 0..20 {
                 let (x, z) = (-1.9 + 0.2 * i as f32, -1.9 + 0.2 * k as f32);
                 scene.set_position(x, z).unwrap();
-                assert!(scene.missed_neighbours().is_empty(), "{cell} {radius} at {x} {z}");
+                assert!(
+                    scene.missed_neighbours().is_empty(),
+                    "{cell} {radius} at {x} {z}"
+                );
             }
         }
     }
@@ -767,7 +790,10 @@ fn cells_narrower_than_the_radius_miss_neighbours_and_the_figure_says_so() {
     assert!(missed > 0);
     let mut frame = Frame::default();
     let note = scene.draw(&mut frame);
-    assert!(note.contains(&format!("misses {missed} of its neighbours (on red)")), "{note}");
+    assert!(
+        note.contains(&format!("misses {missed} of its neighbours (on red)")),
+        "{note}"
+    );
     let red = frame
         .markers
         .iter()
@@ -792,7 +818,10 @@ fn careless(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
             let n = ps.len() as f32;
             let c = ps.iter().sum::<Vec3>() / n - p;
             let a = vs.iter().sum::<Vec3>() / n - v;
-            let s: Vec3 = ps.iter().map(|q| (p - *q) / (p - *q).length_squared()).sum();
+            let s: Vec3 = ps
+                .iter()
+                .map(|q| (p - *q) / (p - *q).length_squared())
+                .sum();
             vec![c, a, s].put(&mut out)
         }
         "cell_index" => {
@@ -815,17 +844,32 @@ fn the_rules_figure_checks_probe_inputs_beyond_its_boid() {
     scene.set_use_exercise(true);
     scene.set_runner(careless);
     let note = scene.exercise_note();
-    assert!(note.contains("Your three_rules matches the reference at this boid."), "{note}");
-    assert!(note.contains("your three_rules differs at 1: no neighbours"), "{note}");
-    assert!(note.contains("Your cell_index matches the reference at this boid."), "{note}");
+    assert!(
+        note.contains("Your three_rules matches the reference at this boid."),
+        "{note}"
+    );
+    assert!(
+        note.contains("your three_rules differs at 1: no neighbours"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Your cell_index matches the reference at this boid."),
+        "{note}"
+    );
     assert!(
         note.contains("your cell_index differs at 1: a boid past the grid's far corner"),
         "{note}"
     );
     scene.set_runner(reference);
     let note = scene.exercise_note();
-    assert!(note.contains("Your three_rules also matches at 3 probe inputs"), "{note}");
-    assert!(note.contains("Your cell_index also matches at 4 probe inputs"), "{note}");
+    assert!(
+        note.contains("Your three_rules also matches at 3 probe inputs"),
+        "{note}"
+    );
+    assert!(
+        note.contains("Your cell_index also matches at 4 probe inputs"),
+        "{note}"
+    );
 }
 
 #[test]
@@ -852,5 +896,8 @@ fn without_separation_the_leaders_flock_piles_into_one_clump() {
     // The page: "within five seconds … from about a third of a metre to under 2 cm".
     fly_to(&mut f, 10.0);
     let after = nearest(&f);
-    assert!((0.25..0.45).contains(&before) && after < 0.02, "{before} → {after}");
+    assert!(
+        (0.25..0.45).contains(&before) && after < 0.02,
+        "{before} → {after}"
+    );
 }

@@ -192,7 +192,9 @@ impl StepTimeSweep {
                     || (self.times[k][s].is_empty() && !self.times_at(k, s))
             })
         };
-        let rows: Vec<usize> = (0..SWEEP_SIZES.len()).take_while(|&k| complete(k)).collect();
+        let rows: Vec<usize> = (0..SWEEP_SIZES.len())
+            .take_while(|&k| complete(k))
+            .collect();
         let anchor = |search: usize, power: i32| {
             rows.iter().rev().find_map(|&k| {
                 self.summary(k, search)
@@ -205,7 +207,9 @@ impl StepTimeSweep {
             let n = SWEEP_SIZES[k] as f32;
             out.push(n);
             for search in 0..2 {
-                let (m, lo, hi) = self.summary(k, search).unwrap_or((f32::NAN, f32::NAN, f32::NAN));
+                let (m, lo, hi) = self
+                    .summary(k, search)
+                    .unwrap_or((f32::NAN, f32::NAN, f32::NAN));
                 out.extend([m, lo, hi]);
             }
             // Each guide spans the sizes its search was timed at.
@@ -1207,7 +1211,12 @@ impl RulesFigure {
             for sign in [-1.0f32, 1.0] {
                 let a = sign * 0.5 * self.fov_deg.to_radians();
                 let dir = glam::Quat::from_rotation_y(a) * heading;
-                frame.wide_line(self.boid, self.boid + dir * self.radius, palette::PURPLE, 2.0);
+                frame.wide_line(
+                    self.boid,
+                    self.boid + dir * self.radius,
+                    palette::PURPLE,
+                    2.0,
+                );
             }
         }
         let (ps, _) = self.neighbours();
@@ -1351,7 +1360,13 @@ impl RulesFigure {
     fn rules_probe_note(&self) -> String {
         let v = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
         let probes: [(&str, Vec3, Vec3, Vec<Vec3>, Vec<Vec3>); 3] = [
-            ("no neighbours (three zero vectors)", v(1.0, 0.0, 1.0), Vec3::X, vec![], vec![]),
+            (
+                "no neighbours (three zero vectors)",
+                v(1.0, 0.0, 1.0),
+                Vec3::X,
+                vec![],
+                vec![],
+            ),
             (
                 "a single neighbour",
                 Vec3::ZERO,
@@ -1421,7 +1436,8 @@ impl RulesFigure {
         ];
         let mut differ = Vec::new();
         for (name, p, origin, size, d) in probes {
-            let Ok(yours) = run::cell_index(self.runner, p, origin, size, d.map(|x| x as f32)) else {
+            let Ok(yours) = run::cell_index(self.runner, p, origin, size, d.map(|x| x as f32))
+            else {
                 return String::new();
             };
             if yours != cell_index(p, origin, size, d) {

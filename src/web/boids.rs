@@ -178,7 +178,12 @@ impl FlockScene {
     /// size), or "" when the sweep is done.
     #[wasm_bindgen(js_name = sweepNext)]
     pub fn sweep_next(&mut self) -> Result<String, JsError> {
-        Ok(self.scene.next_sweep_timing().map_err(js)?.unwrap_or("").into())
+        Ok(self
+            .scene
+            .next_sweep_timing()
+            .map_err(js)?
+            .unwrap_or("")
+            .into())
     }
     /// Records the timing `sweepNext` asked for, milliseconds per step.
     #[wasm_bindgen(js_name = sweepRecord)]
