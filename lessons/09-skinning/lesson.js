@@ -86,7 +86,11 @@ if (cylinderViewer) {
   });
 }
 
-// Figure 2: the antipodality fix, the tube twisted 0 to 360° by DQS.
+// Without a 3D view there is no tube, so no weights to plot: Figure 2 stays empty, and the page
+// must still count it as ready.
+if (!cylinderViewer) markDrawn('#fig-weights');
+
+// Figure 3: the antipodality fix, the tube twisted 0 to 360° by DQS.
 const signViewer = await lesson.figure('#fig-sign');
 if (signViewer) {
   signViewer.setCamera(0.8, 1.0, 0, 5.5, 0.0, 0.1);
@@ -103,7 +107,7 @@ if (signViewer) {
   });
 }
 
-// Figure 3: the built-in human, skinned by LBS and DQS side by side, playing a clip.
+// Figure 4: the built-in human, skinned by LBS and DQS side by side, playing a clip.
 const humanViewer = await lesson.figure('#fig-human');
 if (humanViewer) {
   // From the character's left, a little raised: both bodies side by side, knees in profile.
@@ -158,5 +162,5 @@ if (humanViewer) {
   });
 }
 
-// Figure 4: a character from a glTF file, skinned (the shared glTF figure, www/gltf-figure.js).
+// Figure 5: a character from a glTF file, skinned (the shared glTF figure, www/gltf-figure.js).
 await gltfFigure(lesson, '#fig-gltf', { skinning: 'lbs', gpuSwitch: true });
