@@ -242,7 +242,7 @@ test('lesson 07: inside the cone the aim plot shows the red line under the blue 
   }
 });
 
-test('lesson 08: the locomotion plots follow the timeline; the snap-back is not sliding', async () => {
+test('lesson 08: the locomotion plots follow the timeline; in the root-motion figure the snap-back is not sliding', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await open(context, '08-blending');
@@ -266,13 +266,18 @@ test('lesson 08: the locomotion plots follow the timeline; the snap-back is not 
     const { counts: [blue, red] } = await plotPixels(page, '#loco-slide-plot', ['#1f6fd6', '#d62728']);
     assert.ok(blue > 100 && red > 100, `slide plot: ${blue} blue px, ${red} red px`);
     await page.locator(fig).screenshot({ path: `${SHOTS}/08-blending-locomotion-plots-webgl2.png` });
-    // Root motion off: the same slide as with it on, and the note gives the jump on its own.
+    // Root motion off (its own figure, beside its section): the same slide as with it on, and
+    // the note gives the jump on its own.
     const slide = (note) => /slid ([\d.]+) cm/.exec(note)?.[1];
-    await scrub(page, '#loco-timeline', 3, 8);
-    const on = await page.locator('#loco-note').textContent();
-    await setControl(page, fig, 'root motion', false);
+    await page.locator('#fig-root').scrollIntoViewIfNeeded();
+    // Paused, so both notes describe the same moment.
+    const play = page.locator('#root-timeline .play');
+    if ((await play.textContent()).includes('pause')) await play.click();
+    await scrub(page, '#root-timeline', 3, 8);
+    const on = await page.locator('#root-note').textContent();
+    await setControl(page, '#fig-root', 'root motion', false);
     await frames(page);
-    const off = await page.locator('#loco-note').textContent();
+    const off = await page.locator('#root-note').textContent();
     assert.ok(slide(on) && Math.abs(slide(off) - slide(on)) <= 0.1, `slide with root motion on: ${slide(on)} cm, off: ${slide(off)} cm`);
     assert.match(off, /snaps back \d+ cm \(a jump, not counted as sliding\)/);
     assert.deepEqual(problems, []);
