@@ -108,9 +108,12 @@ if (interpViewer) {
       markDrawn('#fig-circle');
     }
   });
+} else {
+  // Figure 2 draws Figure 1's scene; without a GPU it gets the same message as the others.
+  await lesson.figure('#fig-circle');
 }
 
-// Figure 2: the gimbal.
+// Figure 3: the gimbal.
 const gimbalViewer = await lesson.figure('#fig-gimbal');
 if (gimbalViewer) {
   gimbalViewer.setCamera(0, 1.4, 0, 5.2, 0.7, 0.35);
