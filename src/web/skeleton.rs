@@ -202,7 +202,8 @@ impl SkeletonScene {
         Ok(m.to_cols_array().to_vec())
     }
 
-    /// One cycle of the selected joint for the plots: `[t, angle (°), speed (°/s), …]`.
+    /// One cycle of the selected joint for the plots: rows of `[t, angle (°), speed (°/s), angle
+    /// and speed under the compared interpolation, angle under clip A alone, under clip B alone]`.
     #[wasm_bindgen(js_name = sampleSelected)]
     pub fn sample_selected(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;

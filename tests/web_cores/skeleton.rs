@@ -76,5 +76,6 @@ fn bad_figure_input_names_the_parameter() {
     assert!(message(scene.set_clip("dance".into()).unwrap_err()).contains("clip"));
     assert!(scene.sample_selected(1.0).is_err());
     assert!(scene.set_clip("run".into()).is_ok());
-    assert_eq!(scene.sample_selected(10.0).unwrap().len(), 30);
+    // Ten rows of [t, angle, speed, angle₂, speed₂, angle_A, angle_B].
+    assert_eq!(scene.sample_selected(10.0).unwrap().len(), 70);
 }
