@@ -128,14 +128,19 @@ if (flagViewer) {
     scene.setWind(p.wind);
     scene.setPins(p.pins);
   }, (m) => { rejected = m; });
-  gui.onChange(apply);
+  // (lil-gui keeps one onChange handler per GUI: this one applies the settings, then marks the
+  // third plot as measured at other settings when they changed.)
+  gui.onChange(() => {
+    apply();
+    if (search?.done() === 6 && settings() !== measuredAt) substepsNote.textContent = stale;
+  });
   apply();
   // The third plot: the fewest substeps that keep the mass-spring flag whole for the 6 s, against
   // the structural stiffness, at the settings of the last measurement. Rust runs the flag about
   // 36 times; it goes on a few frames of simulation per drawn frame, so the page stays live and
   // the points appear one by one. It starts at load and on the button, not on every change.
   const substeps = new Plot(document.getElementById('flag-substeps'), {
-    title: 'Substeps the mass-spring flag needs', xLabel: 'structural stiffness k (N/m)', yLabel: 'substeps',
+    title: 'Substeps the mass-spring flag needs', xLabel: 'structural stiffness k (N/m)', yLabel: 'substeps (per frame)',
     series: ['measured (fewest that hold)', 'c·√k fitted', 'conservative limit ⌈Δt/h⌉'],
     colors: [ORANGE, cssVar('--dark'), cssVar('--grey')], widths: [4, 1.5, 1.5], dashes: [null, [6, 4], [2, 3]],
     minSpan: 5,
@@ -178,9 +183,6 @@ if (flagViewer) {
     const until = performance.now() + 8;
     while (search.done() < 6 && performance.now() < until) search.work(10);
     showSearch();
-  });
-  gui.onChange(() => {
-    if (search?.done() === 6 && settings() !== measuredAt) substepsNote.textContent = stale;
   });
   dragParticles('#fig-flag', scene, timeline);
   const note = document.getElementById('flag-note');
