@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// The bindings' hostile-input probe: calls every export of the built module (every class's
+// The bindings' hostile-input probe: calls every export of the built modules (every class's
 // constructor, static functions and prototype methods, every free function) with hostile arguments
 // and fails on a panic, a hang, a non-finite output or a half-applied rejected call.
 //
@@ -318,9 +318,17 @@ function basesFor(types, arity) {
 
 async function main() {
   const dist = process.argv[2] || 'dist';
-  const gluePath = path.resolve(dist, 'pkg/inbetween.js');
+  // Both modules of the build (scripts/build): the figures module and the course module.
+  let bad = 0;
+  for (const name of ['inbetween', 'course']) bad += await probeModule(dist, name);
+  process.exit(bad ? 1 : 0);
+}
+
+/** Probes the module `name` of dist/pkg/; resolves to the number of failed calls. */
+async function probeModule(dist, name) {
+  const gluePath = path.resolve(dist, `pkg/${name}.js`);
   const glue = readFileSync(gluePath, 'utf8');
-  const module = new WebAssembly.Module(readFileSync(path.resolve(dist, 'pkg/inbetween_bg.wasm')));
+  const module = new WebAssembly.Module(readFileSync(path.resolve(dist, `pkg/${name}_bg.wasm`)));
   const wasm = await import(pathToFileURL(gluePath).href);
   const types = paramTypes(glue);
   const seed = Number(process.env.PROBE_SEED || Date.now() % 1e9);
@@ -445,13 +453,12 @@ async function main() {
 
   for (const f of failures.slice(0, 60)) console.log(f);
   if (failures.length > 60) console.log(`... and ${failures.length - 60} more`);
-  console.log(`probe: ${callables.length} callables (${callables.filter((c) => !c.cls).length} free functions), ` +
+  console.log(`probe: ${name}_bg.wasm: ${callables.length} callables (${callables.filter((c) => !c.cls).length} free functions), ` +
     `${jobs.reduce((n, j) => n + j.calls.length, 0)} of ${full} hostile calls planned (plus the baseline calls), seed ${seed}, ${seconds} s`);
   console.log(`probe: calls ${counts.calls}, clear errors ${counts.error}, accepted ${counts.accepted}, ` +
     `panics ${counts.panic}, hangs ${counts.hang}, non-finite outputs ${counts.nonfinite}, ` +
     `half-applied ${counts.half}, unclear errors ${counts.unclear}`);
-  const bad = counts.panic + counts.hang + counts.nonfinite + counts.half + counts.unclear;
-  process.exit(bad ? 1 : 0);
+  return counts.panic + counts.hang + counts.nonfinite + counts.half + counts.unclear;
 }
 
 if (isMainThread) await main();

@@ -188,15 +188,29 @@ function runBuild(args) {
 }
 
 /**
+ * What a change to `file` (a path under src/) needs rebuilt: "exercises" when it is a student's
+ * exercise or the grader (src/exercises/, except run.rs and mod.rs, which the figures module uses
+ * too): the course module alone, since student code runs only there; "rust" otherwise: both modules.
+ */
+export function sourceChangeKind(file) {
+  const path = String(file ?? '').split(/[\\/]/).join('/');
+  return /^exercises\/(?!run\.rs$|mod\.rs$)[^/]+\.rs$/.test(path) ? 'exercises' : 'rust';
+}
+
+/**
  * Rebuilds when files change, one build at a time: a change under src/ rebuilds the debug wasm and
- * the pages, one under lessons/ or www/ the pages alone. With `first` ("release" or "dev"), it
+ * the pages (the course module alone when only exercises changed, see `sourceChangeKind`; the
+ * figures module already served stays, release or debug), one under lessons/ or www/ the pages alone. With `first` ("release" or "dev"), it
  * first builds the current sources with that profile: the server is already serving what dist/
  * held, and open pages reload when the build is done.
  */
 function watchAndRebuild(extra, devloop, first = null) {
-  const args = { release: extra, dev: ['--dev', ...extra], rust: ['--dev', ...extra], pages: ['--assets-only'] };
-  // Builds waiting, in order. A Rust build also copies the pages, so it takes a waiting pages
-  // build's place, and a pages build waits behind a Rust build for nothing.
+  const args = {
+    release: extra, dev: ['--dev', ...extra], rust: ['--dev', ...extra],
+    exercises: ['--dev', '--course-only', ...extra], pages: ['--assets-only'],
+  };
+  // Builds waiting, in order. A Rust build also copies the pages and builds the course module, so
+  // it takes a waiting pages or exercises build's place, and those wait behind it for nothing.
   const queue = [];
   let busy = false;
   const run = async () => {
@@ -206,7 +220,8 @@ function watchAndRebuild(extra, devloop, first = null) {
     if (what === 'release' || what === 'dev') {
       console.log(`serve: building the current sources (${what}) in the background; open pages reload when it is done`);
     } else {
-      console.log(`\nserve: change in ${what === 'rust' ? 'src/' : 'the pages'}, rebuilding…`);
+      const where = { rust: 'src/', exercises: 'src/exercises/ (the course module alone)', pages: 'the pages' }[what];
+      console.log(`\nserve: change in ${where}, rebuilding…`);
     }
     // For the pages, every build of the wasm is a Rust build.
     const kind = what === 'pages' ? 'pages' : 'rust';
@@ -220,14 +235,22 @@ function watchAndRebuild(extra, devloop, first = null) {
   };
   const schedule = (kind) => {
     if (kind === 'rust') {
+      for (const covered of ['pages', 'exercises']) {
+        const i = queue.indexOf(covered);
+        if (i >= 0) queue.splice(i, 1);
+      }
+    }
+    if (kind === 'exercises') {
       const pages = queue.indexOf('pages');
       if (pages >= 0) queue.splice(pages, 1);
     }
-    if (!queue.includes(kind) && !(kind === 'pages' && queue.includes('rust'))) queue.push(kind);
+    const covered = queue.includes('rust') && kind !== 'rust'
+      || kind === 'pages' && queue.includes('exercises');
+    if (!queue.includes(kind) && !covered) queue.push(kind);
     setTimeout(run, 300);
   };
   if (first) schedule(first);
-  watch('src', { recursive: true }, () => schedule('rust'));
+  watch('src', { recursive: true }, (_event, file) => schedule(sourceChangeKind(file)));
   for (const dir of ['lessons', 'www']) watch(dir, { recursive: true }, () => schedule('pages'));
 }
 

@@ -1,5 +1,5 @@
 // The "Check my exercises" panel's worker: grades one lesson's exercises in its own instance of
-// the course's wasm module (src/web/sandbox.rs, gradeLesson), off the page's thread, so that the
+// the course module (src/web/course.rs, gradeLesson), off the page's thread, so that the
 // page can stop an exercise that never returns by ending this worker (www/course.js).
 //
 // Messages in:  { module }                  the compiled module, once, first
@@ -10,7 +10,7 @@
 //               { kind: 'done', rows, table }
 //               { kind: 'trapped', message }            the module trapped (after a panic)
 //               { kind: 'error', message }              anything else that went wrong
-import init, { gradeLesson } from '../pkg/inbetween.js';
+import init, { gradeLesson } from '../pkg/course.js';
 
 // The Rust panic hook (installed when the module starts) hands the message here before the trap.
 globalThis.__inbetweenPanic = (message) => {

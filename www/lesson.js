@@ -1,7 +1,9 @@
 // Shared lesson shell: loads the wasm, shows errors, renders formulas, creates figures, runs the
 // frame loop, places figure labels, and builds the timeline, plots and "view source" list. Lesson
 // pages import it.
-import init, { Viewer, buildInfo, gradedLessons, quizAnswer } from '../pkg/inbetween.js';
+import init, { Viewer, buildInfo } from '../pkg/inbetween.js';
+// The course module: the grader and the quizzes' answers here, student code in the sandboxes below.
+import initCourse, { gradedLessons, quizAnswer } from '../pkg/course.js';
 import GUI, { NumberController } from '../vendor/lil-gui/lil-gui.esm.min.js';
 // Under `scripts/serve`: reload after a rebuild, show a failed build's errors (idle otherwise).
 import './devloop.js';
@@ -165,14 +167,17 @@ async function buildSourceView() {
 // ---- Student code in its own module instance --------------------------------------------------
 //
 // A Rust panic on wasm aborts its module instance: every object in it is stuck for good. So the
-// page loads the same compiled module twice. The figures live in the first instance; the
-// student's exercises run in the second, the *sandbox* (see src/exercises/run.rs and
-// src/web/sandbox.rs). A figure calls `__inbetweenSandbox.call(name, args)` with the exercise's
-// arguments as numbers. If the student's code panics, only the sandbox traps: we keep the panic
-// message (the panic hook hands it to `__inbetweenPanic` before the trap), answer this call and
-// every later call of that exercise with it (the figure falls back to the reference and says so
-// beside itself), and swap in a spare sandbox, instantiated in advance so the swap is immediate,
-// for the other exercises. Reloading the page after fixing the code starts clean.
+// page loads two modules (scripts/build): the figures module, where the figures live, and the
+// course module (the cores and the exercises, no renderer), whose instances run the student's
+// exercises: the *sandbox* (see src/exercises/run.rs and src/web/sandbox.rs). A figure calls
+// `__inbetweenSandbox.call(name, args)` with the exercise's arguments as numbers. If the student's
+// code panics, only the sandbox traps: we keep the panic message (the panic hook hands it to
+// `__inbetweenPanic` before the trap), answer this call and every later call of that exercise with
+// it (the figure falls back to the reference and says so beside itself), and swap in a spare
+// sandbox, instantiated in advance so the swap is immediate, for the other exercises. Reloading the
+// page after fixing the code starts clean. One more instance of the course module, never given
+// student code, lists the graded lessons and computes the quizzes' answers.
+/** `module`: the compiled course module, shared by the sandboxes and the grading worker. */
 const sandbox = { module: null, current: null, spare: null, generation: 0, calling: null, lastPanic: null };
 // For the tests and the curious.
 state.sandbox = sandbox;
@@ -184,7 +189,7 @@ state.sandbox = sandbox;
  */
 async function newSandbox() {
   sandbox.generation += 1;
-  const glue = await import(`../pkg/inbetween.js?sandbox=${sandbox.generation}`);
+  const glue = await import(`../pkg/course.js?sandbox=${sandbox.generation}`);
   await glue.default({ module_or_path: sandbox.module });
   return glue;
 }
@@ -232,12 +237,18 @@ globalThis.__inbetweenPanic = (message) => {
   return false;
 };
 
-async function loadModules() {
-  const url = new URL('../pkg/inbetween_bg.wasm', import.meta.url);
+/** Fetches and compiles a module of dist/pkg/ (`inbetween` or `course`). */
+async function compileModule(name) {
+  const url = new URL(`../pkg/${name}_bg.wasm`, import.meta.url);
   const response = await fetch(url);
   if (!response.ok) throw new Error(`${url.pathname}: HTTP ${response.status}`);
-  sandbox.module = await WebAssembly.compile(await response.arrayBuffer());
-  await init({ module_or_path: sandbox.module });
+  return WebAssembly.compile(await response.arrayBuffer());
+}
+
+async function loadModules() {
+  const [figures, course] = await Promise.all([compileModule('inbetween'), compileModule('course')]);
+  sandbox.module = course;
+  await Promise.all([init({ module_or_path: figures }), initCourse({ module_or_path: course })]);
   [sandbox.current, sandbox.spare] = await Promise.all([newSandbox(), newSandbox()]);
   globalThis.__inbetweenSandbox = { call: callExercise };
 }

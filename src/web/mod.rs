@@ -14,55 +14,70 @@
 //! check in every method of generated code; neither the pages nor the shell make such a call, and
 //! a receiver that is no binding object at all (pointer 0) is already an error.
 
-mod bench;
-mod bench_boids;
-mod bench_cloth;
-mod bench_curves;
-mod bench_gpu;
-mod bench_noise;
-mod bench_rotation;
-mod bench_skeleton;
-mod bench_skinning;
-mod blend_shapes;
-mod blending;
-mod boids;
-mod cloth;
-mod curves;
-mod expressive;
-mod gltf;
-mod ik;
-mod noise;
-mod noise_images;
-mod particles;
-mod particles_sprites;
-mod raster;
-mod rigid;
-mod rotations;
-pub mod sandbox;
-mod skeleton;
-mod skinning;
-mod transforms;
-mod viewer;
+// The course module uses a few of the argument checks below, not all.
+#![cfg_attr(feature = "course-module", allow(dead_code))]
 
-pub use blend_shapes::BlendShapeFaceScene;
-pub use blending::{BlendScene, LocomotionScene};
-pub use boids::{BoidRulesScene, FlockScene};
-pub use cloth::{check_cloth, ClothScene, SpringScene};
-pub use curves::{KeyframesScene, LagrangeScene};
-pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
-pub use ik::{AimScene, IkScene};
-pub use noise::{
-    FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
-    TexturesScene,
-};
-pub use particles::{check_emitter, BounceScene, EmitterScene, FreeFallScene, SquashScene};
-pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
-pub use rigid::{AffineScene, RigidScene};
-pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
-pub use skeleton::{check_skeleton, SkeletonScene};
-pub use skinning::{check_skin_weights, SkinnedHumanScene, SkinningCylinderScene};
-pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
-pub use viewer::Viewer;
+pub mod sandbox;
+// The course module (feature `course-module`) holds the grader and quiz bindings and none of the
+// figures; the figures module holds everything else (see `course`).
+#[cfg(feature = "course-module")]
+mod course;
+
+/// Items of the figures module only: the figures' and benchmarks' bindings, which use the renderer.
+macro_rules! figures_module {
+    ($($item:item)*) => { $( #[cfg(not(feature = "course-module"))] $item )* };
+}
+
+figures_module! {
+    mod bench;
+    mod bench_boids;
+    mod bench_cloth;
+    mod bench_curves;
+    mod bench_gpu;
+    mod bench_noise;
+    mod bench_rotation;
+    mod bench_skeleton;
+    mod bench_skinning;
+    mod blend_shapes;
+    mod blending;
+    mod boids;
+    mod cloth;
+    mod curves;
+    mod expressive;
+    mod gltf;
+    mod ik;
+    mod noise;
+    mod noise_images;
+    mod particles;
+    mod particles_sprites;
+    mod raster;
+    mod rigid;
+    mod rotations;
+    mod skeleton;
+    mod skinning;
+    mod transforms;
+    mod viewer;
+
+    pub use blend_shapes::BlendShapeFaceScene;
+    pub use blending::{BlendScene, LocomotionScene};
+    pub use boids::{BoidRulesScene, FlockScene};
+    pub use cloth::{check_cloth, ClothScene, SpringScene};
+    pub use curves::{KeyframesScene, LagrangeScene};
+    pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
+    pub use ik::{AimScene, IkScene};
+    pub use noise::{
+        FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
+        TexturesScene,
+    };
+    pub use particles::{check_emitter, BounceScene, EmitterScene, FreeFallScene, SquashScene};
+    pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
+    pub use rigid::{AffineScene, RigidScene};
+    pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
+    pub use skeleton::{check_skeleton, SkeletonScene};
+    pub use skinning::{check_skin_weights, SkinnedHumanScene, SkinningCylinderScene};
+    pub use transforms::{HierarchyScene, ScaleComparisonScene, SingleShapeScene};
+    pub use viewer::Viewer;
+}
 
 use wasm_bindgen::prelude::*;
 

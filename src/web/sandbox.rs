@@ -1,6 +1,7 @@
 //! The page side of [`crate::exercises::run`]: student code runs in a second module instance.
 //!
-//! `www/lesson.js` loads the same wasm twice: once for the figures, once as the *sandbox*, and
+//! `www/lesson.js` runs the figures in the figures module and student code in instances of the
+//! course module (`scripts/build` builds both; see `web::course`), the *sandbox*, and
 //! publishes `globalThis.__inbetweenSandbox = { call(name, args) }`. A figure's [`run`] hands
 //! the flattened arguments to that object, which calls [`run_exercise`] in the sandbox. A panic
 //! there traps only the sandbox: the shell records the message (from [`install_panic_hook`]),
@@ -8,7 +9,6 @@
 //! sandbox for the other exercises. Without a sandbox (browser unit tests, the bench page) the
 //! exercise runs in this instance.
 
-use crate::exercises::grade::{self, Known, KnownFailure, Report, Status};
 use crate::exercises::run::{self, Failure};
 use wasm_bindgen::prelude::*;
 
@@ -21,10 +21,6 @@ extern "C" {
     /// `__inbetweenPanic(message)`: true when the shell took care of the panic (a sandbox call).
     #[wasm_bindgen(catch, js_name = __inbetweenPanic)]
     fn report_panic(message: &str) -> Result<JsValue, JsValue>;
-
-    /// `__inbetweenGradeCase(exercise, case)`: the grading worker's watchdog hears of each case.
-    #[wasm_bindgen(catch, js_name = __inbetweenGradeCase)]
-    fn grade_case(exercise: &str, case: u32) -> Result<JsValue, JsValue>;
 }
 
 fn sandbox_present() -> bool {
@@ -89,163 +85,4 @@ pub fn install_panic_hook() {
             console_error_panic_hook::hook(info);
         }
     }));
-}
-
-/// The lessons whose exercises the page can grade (their folder names), in course order.
-#[wasm_bindgen(js_name = gradedLessons)]
-pub fn graded_lessons() -> Vec<String> {
-    grade::LESSONS.iter().map(|l| l.id.to_string()).collect()
-}
-
-/// Grades the exercises of `lesson` (a folder name from [`graded_lessons`]) in this instance, for
-/// the page's "Check my exercises" panel, which runs it in a worker (`www/grade-worker.js`).
-/// `known` lists the failures earlier runs met (`[{ exercise, case, kind: "panicked", message,
-/// location }]` or `kind: "stopped", seconds`): those rows are replayed, not run again. With
-/// `watch` true, `__inbetweenGradeCase(exercise, case)` hears of each case before it runs.
-/// Returns `{ rows: [{ exercise, verdict, text, … }], table }`, `table` being what
-/// `scripts/grade` prints for the same reports.
-#[wasm_bindgen(js_name = gradeLesson)]
-pub fn grade_lesson(lesson: JsValue, known: JsValue, watch: JsValue) -> Result<JsValue, JsError> {
-    let id = super::string("lesson", &lesson)?;
-    let lesson = grade::LESSONS
-        .iter()
-        .find(|l| l.id == id)
-        .ok_or_else(|| JsError::new(&format!("lesson {id:?} has no exercises to grade")))?;
-    let known = known_failures(&known)?;
-    let watch = super::boolean("watch", &watch)?;
-    let on_case: Option<grade::OnCase> = watch.then_some(|exercise, case| {
-        let _ = grade_case(exercise, case as u32);
-    });
-    let reports = grade::grade_lesson_with(lesson, known, on_case);
-    let rows = js_sys::Array::new();
-    for report in &reports {
-        rows.push(&row(report));
-    }
-    let out = js_sys::Object::new();
-    set(&out, "rows", &rows);
-    set(&out, "table", &grade::table(&reports).into());
-    Ok(out.into())
-}
-
-/// The answer to a quiz's numeric question, computed by the core that `name` picks
-/// ([`run::quiz_answer`]).
-#[wasm_bindgen(js_name = quizAnswer)]
-pub fn quiz_answer(name: JsValue, args: &[f32]) -> Result<f32, JsError> {
-    let name = super::string("name", &name)?;
-    run::quiz_answer(&name, args).map_err(|e| JsError::new(&e))
-}
-
-fn set(object: &js_sys::Object, key: &str, value: &JsValue) {
-    let _ = js_sys::Reflect::set(object, &JsValue::from_str(key), value);
-}
-
-/// One report as a plain object: the verdict's fields by name, and `text`, its line in the table.
-fn row(report: &Report) -> JsValue {
-    let o = js_sys::Object::new();
-    set(&o, "lesson", &report.lesson.into());
-    set(&o, "exercise", &report.exercise.into());
-    set(&o, "text", &report.status.to_string().into());
-    let input = |pairs: &[(&str, String)]| -> JsValue {
-        let list = js_sys::Array::new();
-        for (name, value) in pairs {
-            list.push(&js_sys::Array::of2(&(*name).into(), &value.into()));
-        }
-        list.into()
-    };
-    let verdict = match &report.status {
-        Status::Passed { cases } => {
-            set(&o, "cases", &(*cases as f64).into());
-            "passed"
-        }
-        Status::NotDone => "not-done",
-        Status::Wrong {
-            case,
-            what,
-            input: i,
-            expected,
-            actual,
-        } => {
-            set(&o, "case", &(*case as f64).into());
-            set(&o, "what", &what.into());
-            set(&o, "input", &input(i));
-            set(&o, "expected", &expected.into());
-            set(&o, "actual", &actual.into());
-            "wrong"
-        }
-        Status::Panicked {
-            case,
-            what,
-            input: i,
-            message,
-            location,
-        } => {
-            set(&o, "case", &(*case as f64).into());
-            set(&o, "what", &what.into());
-            set(&o, "input", &input(i));
-            set(&o, "message", &message.into());
-            if let Some(at) = location {
-                set(&o, "location", &at.into());
-            }
-            "panicked"
-        }
-        Status::Stopped {
-            case,
-            what,
-            input: i,
-            seconds,
-        } => {
-            set(&o, "case", &(*case as f64).into());
-            set(&o, "what", &what.into());
-            set(&o, "input", &input(i));
-            set(&o, "seconds", &(*seconds as f64).into());
-            "stopped"
-        }
-    };
-    set(&o, "verdict", &verdict.into());
-    o.into()
-}
-
-/// `known` as the grader's [`Known`] failures; every field is checked before any is used.
-fn known_failures(known: &JsValue) -> Result<Vec<Known>, JsError> {
-    if known.is_undefined() || known.is_null() {
-        return Ok(Vec::new());
-    }
-    if !js_sys::Array::is_array(known) {
-        return Err(JsError::new(
-            "known must be an array of { exercise, case, kind, … }",
-        ));
-    }
-    let mut out = Vec::new();
-    for (i, item) in js_sys::Array::from(known).iter().enumerate() {
-        let field = |key: &str| {
-            js_sys::Reflect::get(&item, &JsValue::from_str(key)).unwrap_or(JsValue::UNDEFINED)
-        };
-        let exercise = super::string(&format!("known[{i}].exercise"), &field("exercise"))?;
-        let case_value = field("case").as_f64().unwrap_or(f64::NAN);
-        let case = super::whole_in(&format!("known[{i}].case"), case_value, 1, super::MAX_WHOLE)?;
-        let kind = super::string(&format!("known[{i}].kind"), &field("kind"))?;
-        let failure = match kind.as_str() {
-            "panicked" => KnownFailure::Panicked {
-                message: super::string(&format!("known[{i}].message"), &field("message"))?,
-                location: field("location").as_string(),
-            },
-            "stopped" => {
-                let seconds = field("seconds").as_f64().unwrap_or(f64::NAN) as f32;
-                let seconds =
-                    super::in_range(&format!("known[{i}].seconds"), seconds, 0.001, 3600.0)?;
-                KnownFailure::Stopped { seconds }
-            }
-            other => {
-                return Err(JsError::new(&format!(
-                    "known[{i}].kind must be \"panicked\" or \"stopped\", got {other:?}"
-                )))
-            }
-        };
-        out.push(Known {
-            exercise,
-            case,
-            failure,
-        });
-    }
-    Ok(out)
 }

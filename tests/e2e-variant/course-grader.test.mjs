@@ -1,10 +1,11 @@
 // The "Check my exercises" panel (www/course.js) on the student-bugs build: its table is the one the
 // native grader prints for the same build (`scripts/grade`'s test with the same features), a panic
 // and an endless loop are each named in their row while the other exercises are graded, and the
-// page's figures keep running. The build: `INBETWEEN_FEATURES=solutions,student-bugs scripts/build
-// --dev` (slerp panics, rodrigues_matrix is transposed, polar_step never returns in the browser,
-// every other exercise is the reference).
-//   node --test tests/e2e-variant/
+// page's figures keep running. The build: a built dist/ whose course module is rebuilt with
+// `INBETWEEN_FEATURES=solutions,student-bugs scripts/build --dev --course-only` (slerp panics,
+// rodrigues_matrix is transposed, polar_step never returns in the browser, every other exercise is
+// the reference).
+//   INBETWEEN_DIST=<that copy> node --test tests/e2e-variant/
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';

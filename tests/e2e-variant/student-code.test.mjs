@@ -1,8 +1,9 @@
 // Student code cannot take the page down, and the page checks the student's answer.
-// Runs on a special build (scripts/test makes it): `INBETWEEN_FEATURES=solutions,student-bugs
-// scripts/build --dev`, in which exercise 3.2 slerp panics (an index out of bounds), 3.3
-// rodrigues_matrix returns the transpose of the right matrix, and every other exercise is right.
-//   node --test tests/e2e-variant/
+// Runs on a special build (scripts/test makes it: a copy of a built dist/ whose course module is
+// rebuilt with `INBETWEEN_FEATURES=solutions,student-bugs scripts/build --dev --course-only`), in
+// which exercise 3.2 slerp panics (an index out of bounds), 3.3 rodrigues_matrix returns the
+// transpose of the right matrix, and every other exercise is right.
+//   INBETWEEN_DIST=<that copy> node --test tests/e2e-variant/
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';

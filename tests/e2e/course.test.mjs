@@ -20,8 +20,8 @@ const quizzes = readdirSync('lessons')
   .map((folder) => ({ folder, quiz: JSON.parse(readFileSync(join('lessons', folder, 'quiz.json'), 'utf8')) }));
 
 test('every quiz question has what the page needs, and every numeric answer comes from a core', async () => {
-  const { initSync, quizAnswer } = await import(pathToFileURL(resolve(DIST, 'pkg', 'inbetween.js')).href);
-  initSync({ module: readFileSync(join(DIST, 'pkg', 'inbetween_bg.wasm')) });
+  const { initSync, quizAnswer } = await import(pathToFileURL(resolve(DIST, 'pkg', 'course.js')).href);
+  initSync({ module: readFileSync(join(DIST, 'pkg', 'course_bg.wasm')) });
   assert.ok(quizzes.length > 0);
   for (const { folder, quiz } of quizzes) {
     assert.ok(quiz.questions.length >= 4 && quiz.questions.length <= 8, `${folder}: 4 to 8 questions`);

@@ -10,7 +10,7 @@ import { chmodSync, copyFileSync, mkdirSync, mkdtempSync, rmSync, writeFileSync 
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { launch } from './browser.mjs';
-import { startServer, compilerErrors } from '../../scripts/serve.mjs';
+import { startServer, compilerErrors, sourceChangeKind } from '../../scripts/serve.mjs';
 
 const CARGO_FAILURE = `   Compiling inbetween v0.1.0 (/tmp/project)
 warning: unused import: \`Mat4\`
@@ -92,6 +92,13 @@ test('compilerErrors keeps the errors with file:line and drops warnings and prog
   assert.equal(compilerErrors('\x1b[1m\x1b[91merror\x1b[0m: boom\n'), 'error: boom');
   // Not a compiler failure: the end of the log.
   assert.equal(compilerErrors('copying\nError: lessons/x/meta.json lacks "title"\n'), 'copying\nError: lessons/x/meta.json lacks "title"');
+});
+
+test('a change to an exercise rebuilds the course module alone; run.rs, mod.rs and the rest rebuild both', () => {
+  for (const f of ['exercises/curves.rs', 'exercises/grade.rs', 'exercises\\noise.rs']) assert.equal(sourceChangeKind(f), 'exercises', f);
+  for (const f of ['exercises/run.rs', 'exercises/mod.rs', 'lib.rs', 'figures/curves.rs', 'web/sandbox.rs', 'exercises', null]) {
+    assert.equal(sourceChangeKind(f), 'rust', String(f));
+  }
 });
 
 test('served without the watcher, devloop.js does nothing and makes no request', async () => {
