@@ -3,7 +3,7 @@
 // pages import it.
 import init, { Viewer, buildInfo } from '../pkg/inbetween.js';
 // The course module: the grader and the quizzes' answers here, student code in the sandboxes below.
-import initCourse, { gradedLessons, quizAnswer } from '../pkg/course.js';
+import initCourse, { gradedLessons, quizAnswer, buildInfo as courseBuildInfo } from '../pkg/course.js';
 import GUI, { NumberController } from '../vendor/lil-gui/lil-gui.esm.min.js';
 // Under `scripts/serve`: reload after a rebuild, show a failed build's errors (idle otherwise).
 import './devloop.js';
@@ -278,7 +278,12 @@ export async function startLesson() {
     showError(`Could not load the lesson's WebAssembly module: ${e}`);
     throw e;
   }
-  document.getElementById('build-info')?.replaceChildren(buildInfo());
+  // The two modules' builds; they differ when only the course module was rebuilt (an exercise
+  // saved under `scripts/serve`, or the test build whose exercises carry planted bugs).
+  const figuresBuild = buildInfo();
+  const courseBuild = courseBuildInfo();
+  document.getElementById('build-info')?.replaceChildren(
+    figuresBuild === courseBuild ? figuresBuild : `${figuresBuild} · exercises: ${courseBuild}`);
   startCourse(navigation).catch(showError);
   styleExerciseNotes();
   document.addEventListener('visibilitychange', () => {

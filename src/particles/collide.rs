@@ -326,8 +326,8 @@ pub fn ballistic_step(p: &mut Vec3, v: &mut Vec3, resting: &mut bool, dt: f32, s
                     // Too slow to leave the surface: it moves along it. Pressed on (gravity's
                     // pull inwards more than the turn of its path needs), it slides on the sphere
                     // for the rest of the step; otherwise it flies off, lifted a hair so that the
-                    // next search does not find the same impact at t = 0 (eight of those used to
-                    // spend a whole step without moving: a ball stuck on the sphere's side).
+                    // next search does not find the same impact at t = 0 (otherwise every bounce the
+                    // step allows lands at t = 0, and the ball sticks to the sphere's side).
                     *v -= v.dot(n) * n;
                     if sphere_contact_force(n, *v, g, sphere) > 0.0 {
                         slide_on_sphere(p, v, sphere, remaining, s);

@@ -172,7 +172,7 @@ test('lesson 11: explode now on a paused figure shows its sparks at once', async
   }
 });
 
-test('a typed value a number box cannot take says what became of it (lesson 11, the student re-review)', async () => {
+test('a typed value a number box cannot take says what became of it (lesson 11)', async () => {
   // lil-gui keeps the old value for text that is not a number and clamps a number outside the
   // slider's range, both without a word; the shell says so under the control, until the
   // next accepted value. A second "explode now" at the same paused moment says why it did nothing.
