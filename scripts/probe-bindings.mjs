@@ -54,6 +54,19 @@ const ARRAY_BASES = [[0, 0, 1, 1], [0, 1, 2]];
 // Zero-argument methods that change state (not used as readers of the object's state).
 const MUTATING = /^(reset|step|advance|explode|free|clear|restart|play|toggle|release|grab|drop|start|stop|tick|update|random|regenerate|shuffle|next|prev|burst|replay|rebuild|frameAll|timing)/i;
 
+/**
+ * Whether accepting `value` for a parameter the glue documents as `type` is a silent coercion: a
+ * value that is not a number for `number`, or neither a typed array nor an array of numbers for
+ * `Float32Array | number[]` (JavaScript would turn "5" into 5 and "12" into [1, 2]).
+ */
+function coerced(type, value) {
+  if (type === 'number') return typeof value !== 'number';
+  if (/^Float(32|64)Array \| number\[\]$/.test(type ?? '')) {
+    return !(ArrayBuffer.isView(value) || (Array.isArray(value) && value.every((v) => typeof v === 'number')));
+  }
+  return false;
+}
+
 /** Every non-finite number in `value` (a number, an array, a typed array or a plain object). */
 function nonFinite(value, depth = 0) {
   if (typeof value === 'number') return Number.isFinite(value) ? 0 : 1;
@@ -239,7 +252,9 @@ async function workerMain() {
         const newlyBad = readers.filter(([name]) => nonFinite(after[name]) > nonFinite(before[name])).map(([name]) => name);
         if (n) outcome = { kind: 'nonfinite', detail: `${n} non-finite values in the result` };
         else if (newlyBad.length) outcome = { kind: 'nonfinite', detail: `accepted, then ${newlyBad.join(', ')} read non-finite values` };
-        else outcome = { kind: 'accepted' };
+        else if (coerced(job.types[position], args[position])) {
+          outcome = { kind: 'coerced', detail: `accepted ${describe(args[position])} for a parameter of type ${job.types[position]}` };
+        } else outcome = { kind: 'accepted' };
         if (!job.method && v && typeof v.free === 'function') v.free();
         if (restore) {
           // Back to the second baseline's state for the next call.
@@ -382,7 +397,7 @@ async function probeModule(dist, name) {
     return { ...c, bases: basesFor(c.types, c.arity), ctorBases: c.ctorBases || [], calls };
   });
 
-  const counts = { calls: 0, error: 0, accepted: 0, panic: 0, hang: 0, nonfinite: 0, half: 0, unclear: 0 };
+  const counts = { calls: 0, error: 0, accepted: 0, panic: 0, hang: 0, nonfinite: 0, half: 0, unclear: 0, coerced: 0 };
   const failures = [];
   const started = Date.now();
   // A queue of jobs shared by WORKERS runners; a runner whose worker dies restarts from the job
@@ -461,7 +476,7 @@ async function probeModule(dist, name) {
     `${jobs.reduce((n, j) => n + j.calls.length, 0)} of ${full} hostile calls planned (plus the baseline calls), seed ${seed}, ${seconds} s`);
   console.log(`probe: calls ${counts.calls}, clear errors ${counts.error}, accepted ${counts.accepted}, ` +
     `panics ${counts.panic}, hangs ${counts.hang}, non-finite outputs ${counts.nonfinite}, ` +
-    `half-applied ${counts.half}, unclear errors ${counts.unclear}`);
+    `half-applied ${counts.half}, unclear errors ${counts.unclear}, silent coercions ${counts.coerced}`);
   return counts.panic + counts.hang + counts.nonfinite + counts.half + counts.unclear;
 }
 
