@@ -366,6 +366,19 @@ pub const QUIZ_ANSWERS: &[&str] = &[
     "floor_time_of_impact",
     "spring_force_magnitude",
     "fade",
+    "wgpu_depth",
+    "soup_over_indexed",
+    "depth_fighting_distance",
+    "squash_stretch_across",
+    "jump_take_off_stretch",
+    "screw_slide",
+    "polar_step_scale",
+    "nlerp_angle_deg",
+    "two_joint_root_angle_deg",
+    "two_joint_error",
+    "weight_for_speed",
+    "lbs_elbow_area_percent",
+    "blend_full_vertex",
 ];
 
 /// The answer to a quiz's numeric question: the core named `name` on `args` (see
@@ -425,6 +438,146 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
             want(1)?;
             crate::noise::perlin::fade(args[0])
         }
+        // (d, near, far): the wgpu depth, in [0, 1], of a point d metres in front of a camera
+        // with these planes.
+        "wgpu_depth" => {
+            want(3)?;
+            let (d, near, far) = (args[0], args[1], args[2]);
+            if !(near > 0.0 && far > near && d > 0.0) {
+                return Err("wgpu_depth: need 0 < near < far and d > 0".into());
+            }
+            crate::raster::ndc_depth_wgpu(d, near, far)
+        }
+        // (V, T): how many times larger the triangle soup is than the indexed form, for V
+        // distinct positions and T triangles.
+        "soup_over_indexed" => {
+            want(2)?;
+            let count = |x: f32, what: &str| {
+                if x >= 1.0 && x <= 1e7 && x.fract() == 0.0 {
+                    Ok(x as usize)
+                } else {
+                    Err(format!("soup_over_indexed: {what} must be a whole number from 1"))
+                }
+            };
+            let sizes = crate::raster::mesh_sizes(count(args[0], "V")?, count(args[1], "T")?);
+            sizes.soup_bytes as f32 / sizes.indexed_bytes as f32
+        }
+        // (near, far, gap, bits): lesson 00's two floors `gap` metres apart under a camera 3 m
+        // up: the distance in metres beyond which one depth step outgrows their separation.
+        "depth_fighting_distance" => {
+            want(4)?;
+            let mut scene = crate::figures::raster::DepthPrecision::new();
+            scene.set(args[0], args[1], args[2], args[3])?;
+            scene.fighting_from()
+        }
+        // (s): the scale across the motion of a volume-preserving stretch by s along it.
+        "squash_stretch_across" => {
+            want(1)?;
+            if args[0] <= 0.0 {
+                return Err("squash_stretch_across: s must be positive".into());
+            }
+            crate::expressive::squash_stretch_scale(args[0]).y
+        }
+        // (k): lesson 02b's jump (apex 1.6 m, 1 s of flight) with k stretch per m/s; the
+        // stretch it takes off with, capped as in the figures.
+        "jump_take_off_stretch" => {
+            want(1)?;
+            if args[0] < 0.0 {
+                return Err("jump_take_off_stretch: k must not be negative".into());
+            }
+            let jump = crate::expressive::Jump {
+                stretch_per_speed: args[0],
+                ..Default::default()
+            };
+            jump.take_off_stretch()
+        }
+        // (angle_deg, ax, ay, az, tx, ty, tz): the rigid motion that turns angle_deg about the
+        // axis (ax, ay, az), then translates by t; how far it slides along its screw axis (m).
+        "screw_slide" => {
+            want(7)?;
+            let axis = Vec3::new(args[1], args[2], args[3])
+                .try_normalize()
+                .ok_or("screw_slide: the axis must not be zero")?;
+            let rotation = Quat::from_axis_angle(axis, args[0].to_radians());
+            let t = Vec3::new(args[4], args[5], args[6]);
+            DualQuat::from_rotation_translation(rotation, t).screw_axis().displacement.abs()
+        }
+        // (sx): one step of the polar iteration on diag(sx, 1, 1); the x scale it leaves.
+        "polar_step_scale" => {
+            want(1)?;
+            if args[0].abs() < 1e-6 {
+                return Err("polar_step_scale: sx must not be 0 (no polar decomposition)".into());
+            }
+            crate::rotation::polar_step(Mat3::from_diagonal(Vec3::new(args[0], 1.0, 1.0))).x_axis.x
+        }
+        // (angle_deg, s): keys 0 and angle_deg about y, nlerped at s; the in-between's angle, in
+        // degrees.
+        "nlerp_angle_deg" => {
+            want(2)?;
+            let (angle, s) = (args[0], args[1]);
+            if !(0.0..=180.0).contains(&angle) || !(0.0..=1.0).contains(&s) {
+                return Err("nlerp_angle_deg: the angle must be in [0, 180] and s in [0, 1]".into());
+            }
+            let b = Quat::from_rotation_y(angle.to_radians());
+            crate::rotation::nlerp(Quat::IDENTITY, b, s).angle_between(Quat::IDENTITY).to_degrees()
+        }
+        // (a, b, d): two-joint IK with segments a and b and the target d metres from the root;
+        // the angle at the root between the line to the target and the first segment, degrees.
+        "two_joint_root_angle_deg" => {
+            want(3)?;
+            let (u, solution) = two_joint_quiz(name, args)?;
+            solution.middle.normalize().dot(u).clamp(-1.0, 1.0).acos().to_degrees()
+        }
+        // (a, b, d): the same; how far the end is left from the target, metres.
+        "two_joint_error" => {
+            want(3)?;
+            two_joint_quiz(name, args)?.1.result.error
+        }
+        // (travel_a, duration_a, travel_b, duration_b, speed): the weight of clip B that makes
+        // the synchronised blend of two travelling cycles move at `speed` m/s.
+        "weight_for_speed" => {
+            want(5)?;
+            if !(args[1] > 0.0 && args[3] > 0.0 && args[0] >= 0.0 && args[2] >= 0.0) {
+                return Err("weight_for_speed: travels must be ≥ 0 and durations > 0".into());
+            }
+            let clip = |travel: f32, duration_sec: f32| crate::skeleton::RootMotion {
+                start: Vec3::ZERO,
+                cycle_travel: Vec3::new(0.0, 0.0, travel),
+                duration_sec,
+            };
+            crate::skeleton::weight_for_speed(
+                &clip(args[0], args[1]),
+                &clip(args[2], args[3]),
+                args[4],
+            )
+        }
+        // (bend_deg, twist_deg): lesson 09's tube bent and twisted at the elbow; the percentage
+        // of its rest area that the elbow ring keeps under linear blend skinning.
+        "lbs_elbow_area_percent" => {
+            want(2)?;
+            let mut tube = crate::figures::skinning::CylinderFigure::new();
+            tube.set_bend_deg(args[0])?;
+            tube.set_twist_deg(args[1])?;
+            tube.update()?;
+            100.0 * tube.elbow_areas().0
+        }
+        // (base, target_1, target_2, w0, w1, w2): one coordinate of one vertex, blended by the
+        // full form w0 b0 + w1 b1 + w2 b2 (whatever the weights' sum).
+        "blend_full_vertex" => {
+            want(6)?;
+            let point = |x: f32| vec![Vec3::new(0.0, x, 0.0)];
+            let shapes = crate::blend_shapes::BlendShapes::from_targets(
+                point(args[0]),
+                vec![Vec3::Y],
+                &[(point(args[1]), vec![Vec3::Y]), (point(args[2]), vec![Vec3::Y])],
+            )
+            .map_err(|e| e.to_string())?;
+            let (mut p, mut n) = ([Vec3::ZERO], [Vec3::ZERO]);
+            shapes
+                .apply_full(&args[3..6], &mut p, &mut n)
+                .map_err(|e| e.to_string())?;
+            p[0].y
+        }
         _ => {
             return Err(format!(
                 "no quiz answer named {name:?}; the names are {}",
@@ -437,6 +590,27 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
     } else {
         Err(format!("{name}: no finite answer for these arguments"))
     }
+}
+
+/// Two-joint IK for the quiz: a straight chain of segments `a` and `b` up the y axis, the
+/// target `d` metres along x, the pole on the chain's side; returns the direction to the target
+/// and the solution.
+fn two_joint_quiz(name: &str, args: &[f32]) -> Result<(Vec3, crate::ik::TwoJointSolution), String> {
+    let (a, b, d) = (args[0], args[1], args[2]);
+    if !(a > 0.0 && b > 0.0 && d > 0.0) {
+        return Err(format!("{name}: the segments and the distance must be positive"));
+    }
+    let u = Vec3::X;
+    let solution = crate::ik::two_joint(
+        Vec3::ZERO,
+        Vec3::new(0.0, a, 0.0),
+        Vec3::new(0.0, a + b, 0.0),
+        u * d,
+        Vec3::Y,
+        1e-4,
+    )
+    .map_err(|e| e.to_string())?;
+    Ok((u, solution))
 }
 
 /// Two typical student mistakes, compiled in only for the isolation test (feature

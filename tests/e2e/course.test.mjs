@@ -186,3 +186,48 @@ test('navigation, the grading panel, the quiz and progress, as a student uses th
     await context.close();
   }
 });
+
+// The eight quizzes written after the course shell's first seven: each renders on its page with
+// all its questions, and each "show me" button finds every control it sets (course.js warns
+// "no control named …" otherwise) and sets it without an error. One WebGL2 browser, one page
+// load per lesson; E2E_QUIZ_LESSONS=00,09 narrows the run to lessons whose folder starts so.
+const NEW_QUIZZES = ['00-triangles-to-pixels', '02b-expressive-animation', '04-rigid-motions', '06-skeletons',
+  '07-inverse-kinematics', '08-blending', '09-skinning', '10-blend-shapes'];
+const only = process.env.E2E_QUIZ_LESSONS?.split(',').map((s) => s.trim()).filter(Boolean);
+
+test('the new quizzes render on their pages, and "show me" sets their figures', async () => {
+  const folders = NEW_QUIZZES.filter((f) => !only || only.some((o) => f.startsWith(o)));
+  assert.ok(folders.length > 0, `E2E_QUIZ_LESSONS=${process.env.E2E_QUIZ_LESSONS} matches no lesson`);
+  const context = await launch('webgl2');
+  try {
+    for (const folder of folders) {
+      const { quiz } = quizzes.find((q) => q.folder === folder);
+      const { page, problems } = await openPage(context, `${site.origin}/lessons/${folder}/?backend=webgl2`);
+      const warnings = [];
+      page.on('console', (m) => { if (m.type() === 'warning') warnings.push(m.text()); });
+      await page.waitForFunction(() => document.body.dataset.course === 'ready');
+      assert.equal(await page.locator('.quiz .quiz-question').count(), quiz.questions.length, folder);
+      for (const q of quiz.questions.filter((x) => x.show)) {
+        await page.locator(`#quiz-${q.id} .show-me`).click();
+        // Two frames: the controls' handlers have run and the figure has redrawn.
+        await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+        // Each number it sets shows in the figure's panel: in a number input, or for a dropdown in
+        // its display (a list of numbers) or its selected index (a map of names to 0, 1, 2 …).
+        const inputs = await page.locator(`#${q.show.figure} .lil-controller`).evaluateAll((els) => els.flatMap((e) => [
+          ...[...e.querySelectorAll('input')].map((i) => i.value),
+          ...[...e.querySelectorAll('select')].map((i) => String(i.selectedIndex)),
+          ...[...e.querySelectorAll('.lil-display')].map((d) => d.textContent.trim()),
+        ]));
+        for (const [key, value] of Object.entries(q.show.set)) {
+          if (typeof value !== 'number') continue;
+          assert.ok(inputs.some((v) => v !== '' && Math.abs(Number(v) - value) < 1e-6), `${folder} ${q.id}: ${key} = ${value} not shown (${inputs.join(' ')})`);
+        }
+      }
+      assert.deepEqual(warnings.filter((w) => /no control named/.test(w)), [], folder);
+      assert.deepEqual(problems, [], folder);
+      await page.close();
+    }
+  } finally {
+    await context.close();
+  }
+});
