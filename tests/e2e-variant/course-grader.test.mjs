@@ -5,16 +5,16 @@
 // `INBETWEEN_FEATURES=solutions,student-bugs scripts/build --dev --course-only` (slerp panics,
 // rodrigues_matrix is transposed, polar_step never returns in the browser, every other exercise is
 // the reference).
-//   INBETWEEN_DIST=<that copy> node --test tests/e2e-variant/
+//   node --test tests/e2e-variant/   (the copy is $INBETWEEN_DIST-student-bugs, or $INBETWEEN_VARIANT_DIST)
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
-import { launch, serveDist, openPage } from '../e2e/browser.mjs';
+import { launch, serveDist, openPage, VARIANT_DIST } from '../e2e/browser.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
-const site = serveDist();
+const site = serveDist(VARIANT_DIST);
 
 /** What the native grader prints for `lesson` built with the page's features: the table alone. */
 function nativeTable(lesson) {

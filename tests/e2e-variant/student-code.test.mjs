@@ -3,15 +3,15 @@
 // rebuilt with `INBETWEEN_FEATURES=solutions,student-bugs scripts/build --dev --course-only`), in
 // which exercise 3.2 slerp panics (an index out of bounds), 3.3 rodrigues_matrix returns the
 // transpose of the right matrix, and every other exercise is right.
-//   INBETWEEN_DIST=<that copy> node --test tests/e2e-variant/
+//   node --test tests/e2e-variant/   (the copy is $INBETWEEN_DIST-student-bugs, or $INBETWEEN_VARIANT_DIST)
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { launch, pixelStats, meanDifference, frames, serveDist, openPage } from '../e2e/browser.mjs';
+import { launch, pixelStats, meanDifference, frames, serveDist, openPage, VARIANT_DIST } from '../e2e/browser.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
-const site = serveDist();
+const site = serveDist(VARIANT_DIST);
 
 /** Ticks the figure's "use my exercise" box. */
 async function useMyExercise(figure) {

@@ -1,24 +1,30 @@
 // Launching Debian's Chromium with the flag sets from ../shared/TOOLCHAIN.md, one per backend.
 import { chromium } from 'playwright-core';
 import { before, after } from 'node:test';
-import { mkdtempSync } from 'node:fs';
+import { existsSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
 
 /** The built site the tests serve: dist/, or $INBETWEEN_DIST (scripts/build writes there too). */
 export const DIST = process.env.INBETWEEN_DIST ?? 'dist';
+/**
+ * The test build whose course module carries planted bugs (tests/e2e-variant/): `$DIST-student-bugs`
+ * as scripts/test makes it, or $INBETWEEN_VARIANT_DIST.
+ */
+export const VARIANT_DIST = process.env.INBETWEEN_VARIANT_DIST ?? `${DIST}-student-bugs`;
 
 /**
- * Serves `DIST` on a free port of 127.0.0.1 for the tests of the calling file (registers its
- * node:test `before` and `after` hooks). Returns an object whose `origin` is set once the server
- * listens, e.g. `site.origin + '/lessons/'` inside a test.
+ * Serves `dist` (`DIST` unless given) on a free port of 127.0.0.1 for the tests of the calling file
+ * (registers its node:test `before` and `after` hooks). Returns an object whose `origin` is set once
+ * the server listens, e.g. `site.origin + '/lessons/'` inside a test.
  */
-export function serveDist() {
+export function serveDist(dist = DIST) {
   const site = { origin: '' };
   let server;
   before(async () => {
-    server = await startServer(DIST, 0);
+    if (!existsSync(join(dist, 'pkg'))) throw new Error(`no build in ${dist}/ (scripts/test makes it; see the test file's first lines)`);
+    server = await startServer(dist, 0);
     site.origin = `http://127.0.0.1:${server.address().port}`;
   });
   after(() => server?.close());
