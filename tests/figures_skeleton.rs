@@ -57,6 +57,11 @@ fn the_clip_moves_the_skeleton_and_offsets_move_a_group() {
         "the walk moves the knee"
     );
     // An offset on the left thigh moves exactly the thigh's group (not the thigh's own pivot).
+    // Only the names the dropdown lists are clips: a name that merely starts like one is refused
+    // and leaves the clip as it was.
+    let e = f.set_clip("none-of-these").unwrap_err();
+    assert!(e.contains("no clip named \"none-of-these\""), "{e}");
+    assert_ne!(f.clip_name(), "none (rest pose)");
     f.set_clip("none (rest pose)").unwrap();
     f.pose(0.0).unwrap();
     let rest = positions(&f);

@@ -197,7 +197,7 @@ impl SkeletonFigure {
     pub fn set_clip(&mut self, name: &str) -> Result<(), String> {
         self.clip = match human::CLIP_NAMES.iter().position(|&c| c == name) {
             Some(i) => Some(i),
-            None if name.starts_with("none") => None,
+            None if name == "none" || name == "none (rest pose)" => None,
             None => return Err(format!("clip: no clip named {name:?}")),
         };
         self.cursor = ClipCursor::new();
