@@ -1,7 +1,8 @@
 //! Lesson 05, "Noise and terrain": 1D noise built from lattice gradients, 2D noise and its 3D
-//! slices, octaves added one by one, the course's terrain with every parameter, procedural
-//! textures, the terrain quiz and two fractals. Natively testable; `web::noise` wraps these for
-//! JavaScript and uploads the terrain meshes (created once, then updated in place).
+//! slices, octaves added one by one, the course's terrain with every parameter, its variants side
+//! by side, procedural textures, the terrain quiz and two fractals. Natively testable;
+//! `web::noise` wraps these for JavaScript and uploads the terrain meshes (created once, then
+//! updated in place).
 
 use super::{check_samples, DEFAULT_RUNNER};
 use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner};
@@ -1261,12 +1262,178 @@ impl TerrainFigure for TerrainScene {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 6: procedural textures.
+// Figure 5: the variants side by side.
 
-/// Texels per side of each of Figure 6's textures.
+/// The variants Figure 5 sets side by side, in its order (back row, then front row).
+pub const SIDE_BY_SIDE_VARIANTS: [(Variant, &str); 4] = [
+    (Variant::Sum, "sum g"),
+    (Variant::Ridge, "ridge Σ αᵏ|f|"),
+    (Variant::InvertedRidge, "inverted ridge"),
+    (Variant::Marble, "marble"),
+];
+
+/// Vertices per side of each of Figure 5's terrains.
+pub const VARIANTS_RESOLUTION: usize = 129;
+
+/// Figure 5: the sum, the ridge, the inverted ridge and marble side by side, built from the same
+/// noise with the same N, α and h (ω = 2, s = 1, o = 0), without the octaves finer than their
+/// mesh, so each difference comes from the variant alone.
+pub struct Variants {
+    perm: Permutation,
+    fractal: Fractal,
+    h: f32,
+    terrains: Vec<Terrain>,
+    stale: bool,
+    dirty: bool,
+}
+
+impl Variants {
+    /// The course's N = 9 and α = 0.4, with h = 0.3.
+    pub fn new() -> Self {
+        let mut f = Self {
+            perm: Permutation::perlin(),
+            fractal: Fractal::COURSE,
+            h: 0.3,
+            terrains: (0..SIDE_BY_SIDE_VARIANTS.len())
+                .map(|_| Terrain::new(VARIANTS_RESOLUTION).expect("a valid resolution"))
+                .collect(),
+            stale: false,
+            dirty: true,
+        };
+        f.regenerate();
+        f
+    }
+
+    /// Sets N (whole, 0 to [`OCTAVES_MAX_N`]), α in [0, 1] and h in [0, 2], checked by name;
+    /// nothing changes on an error.
+    pub fn set_params(&mut self, n: f32, alpha: f32, h: f32) -> Result<(), String> {
+        let fractal = Fractal {
+            n: check_n(n, OCTAVES_MAX_N)?,
+            alpha: in_range("alpha", alpha, 0.0, 1.0)?,
+            omega: 2.0,
+        };
+        let h = in_range("h", h, 0.0, 2.0)?;
+        self.fractal = fractal;
+        self.h = h;
+        self.stale = true;
+        Ok(())
+    }
+
+    /// The parameters variant `i` is built from: the last octave capped where the mesh stops
+    /// resolving them.
+    pub fn shown_params(&self, i: usize) -> TerrainParams {
+        let last = last_resolved_octave(VARIANTS_RESOLUTION, 1.0, 2.0).unwrap_or(0);
+        TerrainParams {
+            fractal: Fractal {
+                n: self.fractal.n.min(last),
+                ..self.fractal
+            },
+            h: self.h,
+            s: 1.0,
+            o: 0.0,
+            variant: SIDE_BY_SIDE_VARIANTS[i].0,
+        }
+    }
+
+    fn regenerate(&mut self) {
+        for i in 0..self.terrains.len() {
+            let p = self.shown_params(i);
+            self.terrains[i]
+                .regenerate(&self.perm, &p)
+                .expect("the setters checked every parameter");
+        }
+        self.dirty = true;
+    }
+
+    /// The lowest and the highest height (metres) of variant `i`'s terrain.
+    pub fn height_range(&self, i: usize) -> (f32, f32) {
+        self.terrains[i]
+            .positions
+            .iter()
+            .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.y), hi.max(p.y))
+            })
+    }
+
+    /// Where terrain i sits: two across, two deep.
+    pub fn placement(i: usize) -> Vec3 {
+        Vec3::new((i % 2) as f32 * 2.6 - 1.3, 0.0, (i / 2) as f32 * 2.7 - 1.35)
+    }
+
+    pub fn draw(&mut self, frame: &mut Frame, meshes: &[MeshId]) -> String {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        for (i, &mesh) in meshes.iter().enumerate().take(self.terrains.len()) {
+            let at = Self::placement(i);
+            frame.mesh_vertex_colors(mesh, Mat4::from_translation(at));
+            frame.label(
+                at + Vec3::new(-0.9, 0.0, 1.15),
+                SIDE_BY_SIDE_VARIANTS[i].1,
+                palette::DARK,
+            );
+        }
+        let h_top = (0.6 * self.h).max(0.1);
+        frame.keep_box_in_view(
+            Self::placement(0) + Vec3::new(-1.0, -h_top, -1.0),
+            Self::placement(3) + Vec3::new(1.0, h_top, 1.25),
+        );
+        let p = self.shown_params(0);
+        let ranges: Vec<String> = (0..self.terrains.len())
+            .map(|i| {
+                let (lo, hi) = self.height_range(i);
+                format!(
+                    "{} from {} to {} m",
+                    SIDE_BY_SIDE_VARIANTS[i].1,
+                    format_number(lo),
+                    format_number(hi)
+                )
+            })
+            .collect();
+        let mut note = format!(
+            "{0} × {0} vertices each, N = {1}, α = {2}, h = {3}, ω = 2, s = 1, o = 0. Heights: {4}.",
+            VARIANTS_RESOLUTION,
+            self.fractal.n,
+            format_number(self.fractal.alpha),
+            format_number(self.h),
+            ranges.join("; ")
+        );
+        if p.fractal.n < self.fractal.n {
+            note += &format!(
+                " Octaves {} to {} are finer than these meshes and left out.",
+                p.fractal.n + 1,
+                self.fractal.n
+            );
+        }
+        note
+    }
+}
+
+impl Default for Variants {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for Variants {
+    fn terrains(&self) -> Vec<&Terrain> {
+        self.terrains.iter().collect()
+    }
+    fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 7: procedural textures.
+
+/// Texels per side of each of Figure 7's textures.
 pub const TEXTURE_SIZE: usize = 128;
 
-/// Figure 6: marble, wood and clouds, each written into an RGBA buffer and shown by the renderer
+/// Figure 7: marble, wood and clouds, each written into an RGBA buffer and shown by the renderer
 /// as a texture on a square (uploaded once, then rewritten in place when a parameter changes).
 pub struct Textures {
     perm: Permutation,
@@ -1399,7 +1566,7 @@ impl Default for Textures {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 5: the course's quiz.
+// Figure 6: the course's quiz.
 
 /// One of the quiz's parameter sets and why it looks the way it does.
 pub struct QuizSet {
@@ -1462,7 +1629,7 @@ pub fn quiz_sets() -> [QuizSet; 6] {
     ]
 }
 
-/// Figure 5: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
+/// Figure 6: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
 /// set to each and checks.
 pub struct Quiz {
     perm: Permutation,
@@ -1604,9 +1771,9 @@ impl TerrainFigure for Quiz {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 8: fractals.
+// Figure 9: fractals.
 
-/// Figure 8: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
+/// Figure 9: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
 /// "show previous depth" the depth before is drawn in grey over it.
 pub struct Fractals {
     depth: u32,
