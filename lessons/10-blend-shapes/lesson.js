@@ -9,7 +9,7 @@ const lesson = await startLesson();
 const targetsViewer = await lesson.figure('#fig-targets');
 if (targetsViewer) {
   const scene = new BlendShapeTargetsScene();
-  targetsViewer.setCamera(0, 1.1, 0, 12, 0.3, 0.12);
+  targetsViewer.setCamera(0, 0, 0, 9, 0.2, 0.05);
   const p = { weight: 1, deltas: true };
   const gui = new GUI({ container: document.querySelector('#fig-targets .panel'), title: 'Targets' });
   gui.add(p, 'weight', 0, 1.5, 0.01).name('weight w of each target').onChange((w) => scene.setWeight(w));

@@ -581,6 +581,9 @@ fn targets_of(face: &Face, v: usize) -> Vec<Vec3> {
 /// How far apart (metres, along x) [`TargetsFigure`] stands its five heads: more than twice
 /// the widest any head gets at the largest weight (a test checks it).
 pub const TARGETS_SPACING: f32 = 2.1;
+/// Half the height between [`TargetsFigure`]'s two rows of heads, metres (a head is 2 m tall,
+/// plus its label).
+pub const TARGETS_ROW: f32 = 1.35;
 /// A vertex that a target moves less than this (metres) does not count as moved in the note.
 pub const MOVED_MIN: f32 = 0.001;
 
@@ -668,9 +671,15 @@ impl TargetsFigure {
         self.show_deltas = on;
     }
 
-    /// Where head `i` stands (0: the base, k: target k), its centre.
+    /// Where head `i` stands (0: the base, k: target k), its centre: the base, the smile and
+    /// the open jaw in the top row, the brows and the cheeks centred below them (two rows fill a
+    /// canvas's width better than one row of five).
     pub fn head_position(i: usize) -> Vec3 {
-        HEAD_CENTRE + Vec3::X * (i as f32 - 2.0) * TARGETS_SPACING
+        if i < 3 {
+            Vec3::new((i as f32 - 1.0) * TARGETS_SPACING, TARGETS_ROW, 0.0)
+        } else {
+            Vec3::new((i as f32 - 3.5) * TARGETS_SPACING, -TARGETS_ROW, 0.0)
+        }
     }
 
     /// Rewrites the target heads at the current weight (the base head once); nothing when the
@@ -751,10 +760,11 @@ impl TargetsFigure {
                 }
             }
         }
+        // Every head with its label, the rows' outer heads at their widest.
         let r = HEAD_RADIUS;
         frame.keep_box_in_view(
-            Self::head_position(0) + Vec3::new(-r, -1.35, -r),
-            Self::head_position(self.heads.len() - 1) + Vec3::new(r, 1.15, r),
+            Vec3::new(-TARGETS_SPACING - r, -TARGETS_ROW - 1.45, 0.0),
+            Vec3::new(TARGETS_SPACING + r, TARGETS_ROW + 1.1, 0.0),
         );
         let parts: Vec<String> = (0..self.face.targets.len())
             .map(|k| {
