@@ -758,3 +758,36 @@ fn noise2d_arrows_turn_and_shrink_between_layers() {
         .count();
     assert!(turned >= 10, "{turned} of 25 arrows turn");
 }
+
+/// Figures 2, 3 and 4 declare their whole terrain as what must stay in view, so the camera fits
+/// it at any canvas size (no corner cut at 800 × 600).
+#[test]
+fn single_terrain_figures_keep_their_whole_surface_in_view() {
+    fn check(frame: &Frame, t: &inbetween::terrain::Terrain) {
+        let (lo, hi) = frame.keep_in_view.iter().fold(
+            (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+        );
+        assert!(!frame.keep_in_view.is_empty());
+        for p in &t.positions {
+            assert!(p.cmpge(lo - 1e-6).all() && p.cmple(hi + 1e-6).all(), "{p} outside");
+        }
+    }
+    let mut n2 = Noise2d::new();
+    n2.take_dirty();
+    let mut f = Frame::default();
+    n2.draw(&mut f, MeshId(3));
+    check(&f, n2.terrains()[0]);
+    let mut oct = Octaves::new();
+    oct.set_params(7.0, 0.8, 2.0).unwrap();
+    oct.take_dirty();
+    let mut f = Frame::default();
+    oct.draw(&mut f, MeshId(3));
+    check(&f, oct.terrains()[0]);
+    let mut ter = TerrainScene::new();
+    ter.set_params(9.0, 0.4, 2.0, 1.5, 1.0, 0.0).unwrap();
+    ter.take_dirty();
+    let mut f = Frame::default();
+    ter.draw(&mut f, MeshId(3));
+    check(&f, ter.terrains()[0]);
+}

@@ -120,6 +120,16 @@ pub fn diverging_color(n: f32) -> glam::Vec4 {
     Vec3::splat(0.85).lerp(end, t).extend(1.0)
 }
 
+/// Declares a terrain over `[−1, 1]²` as what must stay in view, between its lowest and highest
+/// vertex, so no corner is cut at any canvas size.
+fn keep_terrain_in_view(frame: &mut Frame, terrain: &Terrain) {
+    let (lo, hi) = terrain
+        .positions
+        .iter()
+        .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
+    frame.keep_box_in_view(Vec3::new(-1.0, lo, -1.0), Vec3::new(1.0, hi, 1.0));
+}
+
 /// Terrains a figure shows, for the web layer to upload: each with its model matrix.
 pub trait TerrainFigure {
     /// The terrains, in the order their mesh ids are passed to `draw`.
@@ -508,6 +518,7 @@ impl Noise2d {
 
     pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        keep_terrain_in_view(frame, &self.terrain);
         let lift = Vec3::Y * 0.01;
         for j in -2..=2 {
             for i in -2..=2 {
@@ -802,6 +813,7 @@ impl Octaves {
 
     pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        keep_terrain_in_view(frame, &self.terrain);
         let lift = Vec3::Y * 0.004;
         let shown = self.shown_fractal();
         let previous = Fractal {
@@ -1164,6 +1176,7 @@ impl TerrainScene {
 
     pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        keep_terrain_in_view(frame, &self.terrain);
         let k = self.probe_index();
         let at = self.terrain.positions[k];
         let reference = self.terrain.normals[k];
