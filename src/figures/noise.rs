@@ -1,6 +1,7 @@
 //! Lesson 05, "Noise and terrain": 1D noise built from lattice gradients, 2D noise and its 3D
-//! slices, octaves added one by one, the course's terrain with every parameter, its variants side
-//! by side, procedural textures, the terrain quiz and two fractals. Natively testable;
+//! slices, octaves added one by one, the course's terrain with every parameter, its exact normals
+//! against averaged ones, its variants side by side, procedural textures, the terrain quiz and two
+//! fractals. Natively testable;
 //! `web::noise` wraps these for JavaScript and uploads the terrain meshes (created once, then
 //! updated in place).
 
@@ -1275,9 +1276,188 @@ impl TerrainFigure for TerrainScene {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 5: the variants side by side.
+// Figure 5: exact normals against averaged ones.
 
-/// The variants Figure 5 sets side by side, in its order (back row, then front row).
+/// The resolutions Figure 5 offers (vertices per side).
+pub const NORMALS_RESOLUTIONS: [usize; 5] = [9, 17, 33, 65, 129];
+/// The noise Figure 5 samples: octaves 0 to 3 of the course's sum.
+const NORMALS_FRACTAL: Fractal = Fractal {
+    n: 3,
+    ..Fractal::COURSE
+};
+/// Arrows per side of Figure 5's terrain (every vertex at 9 × 9, fewer on finer meshes).
+const NORMALS_ARROWS: usize = 9;
+/// Length of Figure 5's normal arrows, metres.
+const NORMAL_ARROW: f32 = 0.3;
+
+/// Figure 5: one terrain, the same noise at every resolution, with two normals at each sampled
+/// vertex: the exact one from the noise's derivative (grey) and the average of the faces around
+/// the vertex (orange). The note measures the angle between them.
+pub struct Normals {
+    perm: Permutation,
+    h: f32,
+    terrain: Terrain,
+    averaged: Vec<Vec3>,
+    stale: bool,
+    dirty: bool,
+}
+
+impl Normals {
+    /// 17 × 17 vertices, h = 0.3.
+    pub fn new() -> Self {
+        let mut f = Self {
+            perm: Permutation::perlin(),
+            h: 0.3,
+            terrain: Terrain::new(17).expect("a valid resolution"),
+            averaged: Vec::new(),
+            stale: false,
+            dirty: true,
+        };
+        f.regenerate();
+        f
+    }
+
+    /// Vertices per side, one of [`NORMALS_RESOLUTIONS`], and h in [0, 1]; checked by name,
+    /// nothing changes on an error.
+    pub fn set_params(&mut self, resolution: f32, h: f32) -> Result<(), String> {
+        let r = in_range("resolution", resolution, 0.0, 1e4)?;
+        if !NORMALS_RESOLUTIONS.iter().any(|&x| x as f32 == r) {
+            return Err(format!(
+                "resolution must be one of {NORMALS_RESOLUTIONS:?}, got {resolution}"
+            ));
+        }
+        let h = in_range("h", h, 0.0, 1.0)?;
+        if r as usize != self.terrain.resolution() {
+            self.terrain = Terrain::new(r as usize)?;
+        }
+        self.h = h;
+        self.stale = true;
+        Ok(())
+    }
+
+    fn params(&self) -> TerrainParams {
+        TerrainParams {
+            fractal: NORMALS_FRACTAL,
+            h: self.h,
+            ..TerrainParams::default()
+        }
+    }
+
+    fn regenerate(&mut self) {
+        let p = self.params();
+        self.terrain
+            .regenerate(&self.perm, &p)
+            .expect("the setters checked every parameter");
+        self.averaged.resize(self.terrain.positions.len(), Vec3::Y);
+        crate::raster::vertex_normals(
+            &self.terrain.positions,
+            &self.terrain.indices,
+            &mut self.averaged,
+        )
+        .expect("the terrain's indices are valid");
+        self.dirty = true;
+    }
+
+    /// The exact and the averaged normal of every vertex, in the terrain's order.
+    pub fn normals(&self) -> (&[Vec3], &[Vec3]) {
+        (&self.terrain.normals, &self.averaged)
+    }
+
+    /// The mean and the largest angle (degrees) between the exact and the averaged normal, over
+    /// the vertices off the border (a border vertex has fewer faces to average).
+    pub fn angle_stats(&self) -> (f32, f32) {
+        let r = self.terrain.resolution();
+        let mut sum = 0.0;
+        let mut largest = 0.0f32;
+        let mut count = 0;
+        for j in 1..r - 1 {
+            for i in 1..r - 1 {
+                let k = j * r + i;
+                let cos = self.terrain.normals[k]
+                    .dot(self.averaged[k])
+                    .clamp(-1.0, 1.0);
+                let angle = cos.acos().to_degrees();
+                sum += angle;
+                largest = largest.max(angle);
+                count += 1;
+            }
+        }
+        (sum / count.max(1) as f32, largest)
+    }
+
+    pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> String {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        keep_terrain_in_view(frame, &self.terrain);
+        frame.keep_box_in_view(
+            Vec3::new(-1.0, 0.0, -1.0),
+            Vec3::new(1.0, NORMAL_ARROW, 1.0),
+        );
+        let r = self.terrain.resolution();
+        let stride = (r - 1) / (NORMALS_ARROWS - 1);
+        for j in (0..r).step_by(stride) {
+            for i in (0..r).step_by(stride) {
+                let k = j * r + i;
+                let at = self.terrain.positions[k];
+                frame.arrow(
+                    at,
+                    at + self.terrain.normals[k] * NORMAL_ARROW,
+                    palette::REFERENCE,
+                    0.06,
+                );
+                frame.arrow(
+                    at,
+                    at + self.averaged[k] * NORMAL_ARROW,
+                    palette::ORANGE,
+                    0.06,
+                );
+            }
+        }
+        let (mean, largest) = self.angle_stats();
+        format!(
+            "{r} × {r} vertices, {} m apart, octaves 0 to {}, h = {}: off the border, the averaged \
+             normals differ from the exact ones by {}° on average and {}° at most. Arrows at {} × \
+             {} of the vertices.",
+            format_number(2.0 / (r - 1) as f32),
+            NORMALS_FRACTAL.n,
+            format_number(self.h),
+            format_angle(mean),
+            format_angle(largest),
+            NORMALS_ARROWS,
+            NORMALS_ARROWS
+        )
+    }
+}
+
+/// An angle in degrees with one decimal.
+fn format_angle(deg: f32) -> String {
+    format!("{deg:.1}")
+}
+
+impl Default for Normals {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for Normals {
+    fn terrains(&self) -> Vec<&Terrain> {
+        vec![&self.terrain]
+    }
+    fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 6: the variants side by side.
+
+/// The variants Figure 6 sets side by side, in its order (back row, then front row).
 pub const SIDE_BY_SIDE_VARIANTS: [(Variant, &str); 4] = [
     (Variant::Sum, "sum g"),
     (Variant::Ridge, "ridge Σ αᵏ|f|"),
@@ -1285,10 +1465,10 @@ pub const SIDE_BY_SIDE_VARIANTS: [(Variant, &str); 4] = [
     (Variant::Marble, "marble"),
 ];
 
-/// Vertices per side of each of Figure 5's terrains.
+/// Vertices per side of each of Figure 6's terrains.
 pub const VARIANTS_RESOLUTION: usize = 129;
 
-/// Figure 5: the sum, the ridge, the inverted ridge and marble side by side, built from the same
+/// Figure 6: the sum, the ridge, the inverted ridge and marble side by side, built from the same
 /// noise with the same N, α and h (ω = 2, s = 1, o = 0), without the octaves finer than their
 /// mesh, so each difference comes from the variant alone.
 pub struct Variants {
@@ -1441,12 +1621,12 @@ impl TerrainFigure for Variants {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 7: procedural textures.
+// Figure 8: procedural textures.
 
-/// Texels per side of each of Figure 7's textures.
+/// Texels per side of each of Figure 8's textures.
 pub const TEXTURE_SIZE: usize = 128;
 
-/// Figure 7: marble, wood and clouds, each written into an RGBA buffer and shown by the renderer
+/// Figure 8: marble, wood and clouds, each written into an RGBA buffer and shown by the renderer
 /// as a texture on a square (uploaded once, then rewritten in place when a parameter changes).
 pub struct Textures {
     perm: Permutation,
@@ -1579,7 +1759,7 @@ impl Default for Textures {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 6: the course's quiz.
+// Figure 7: the course's quiz.
 
 /// One of the quiz's parameter sets and why it looks the way it does.
 pub struct QuizSet {
@@ -1642,7 +1822,7 @@ pub fn quiz_sets() -> [QuizSet; 6] {
     ]
 }
 
-/// Figure 6: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
+/// Figure 7: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
 /// set to each and checks.
 pub struct Quiz {
     perm: Permutation,
@@ -1784,9 +1964,9 @@ impl TerrainFigure for Quiz {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 9: fractals.
+// Figure 10: fractals.
 
-/// Figure 9: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
+/// Figure 10: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
 /// "show previous depth" the depth before is drawn in grey over it.
 pub struct Fractals {
     depth: u32,

@@ -5,7 +5,8 @@
 use super::{js, Viewer};
 use crate::draw::MeshId;
 use crate::figures::noise::{
-    Fractals, Noise1d, Noise2d, Octaves, Quiz, TerrainFigure, TerrainScene, Textures, Variants,
+    Fractals, Noise1d, Noise2d, Normals, Octaves, Quiz, TerrainFigure, TerrainScene, Textures,
+    Variants,
 };
 use std::collections::HashMap;
 use wasm_bindgen::prelude::*;
@@ -344,7 +345,7 @@ impl Default for TerrainFigureScene {
     }
 }
 
-/// Figure 7: procedural textures.
+/// Figure 8: procedural textures.
 #[wasm_bindgen]
 pub struct TexturesScene {
     scene: Textures,
@@ -404,7 +405,7 @@ impl Default for TexturesScene {
     }
 }
 
-/// Figure 6: the terrain quiz.
+/// Figure 7: the terrain quiz.
 #[wasm_bindgen]
 pub struct QuizScene {
     scene: Quiz,
@@ -448,7 +449,42 @@ impl Default for QuizScene {
     }
 }
 
-/// Figure 5: the variants side by side: sum, ridge, inverted ridge, marble from the same noise.
+/// Figure 5: exact normals against the average of the faces around each vertex.
+#[wasm_bindgen]
+pub struct NormalsScene {
+    scene: Normals,
+    gpu: GpuTerrains,
+}
+
+#[wasm_bindgen]
+impl NormalsScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> NormalsScene {
+        NormalsScene {
+            scene: Normals::new(),
+            gpu: GpuTerrains::default(),
+        }
+    }
+    /// Vertices per side (9, 17, 33, 65 or 129) and h in [0, 1]; nothing changes on an error.
+    #[wasm_bindgen(js_name = setParams)]
+    pub fn set_params(&mut self, resolution: f32, h: f32) -> Result<(), JsError> {
+        self.scene.set_params(resolution, h).map_err(js)
+    }
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let meshes = self.gpu.sync(viewer, &mut self.scene)?.to_vec();
+        let note = self.scene.draw(&mut viewer.renderer.frame, meshes[0]);
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for NormalsScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Figure 6: the variants side by side: sum, ridge, inverted ridge, marble from the same noise.
 #[wasm_bindgen]
 pub struct VariantsScene {
     scene: Variants,
@@ -483,7 +519,7 @@ impl Default for VariantsScene {
     }
 }
 
-/// Figure 9: Koch snowflake and Sierpinski triangle.
+/// Figure 10: Koch snowflake and Sierpinski triangle.
 #[wasm_bindgen]
 pub struct FractalsScene {
     scene: Fractals,
