@@ -673,6 +673,12 @@ fn each_target_moves_a_few_vertices_by_what_the_page_says() {
         f.target_reach(1).0,
         (0..4).map(|k| f.target_reach(k).0).max().unwrap()
     );
+    // The Try this reads the jaw's longest offset in the note: 25.2 cm at weight 1.
+    let note = f.draw(&mut Frame::default(), &HEADS).unwrap();
+    assert!(
+        note.contains("jaw open moves 603 of the 6050 vertices, the farthest by 25.2 cm"),
+        "{note}"
+    );
     // At half weight every offset halves.
     f.set_weight(0.5).unwrap();
     let (_, half) = f.target_reach(1);

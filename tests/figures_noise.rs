@@ -868,3 +868,19 @@ fn normals_figure_rejects_bad_parameters_and_keeps_the_last_good_ones() {
         "{note}"
     );
 }
+
+/// Figure 5's plot: one row per resolution offered, the same numbers as the note at each.
+#[test]
+fn the_normals_plot_gives_the_angle_at_every_resolution() {
+    let mut f = Normals::new();
+    f.set_params(17.0, 0.5).unwrap();
+    f.draw(&mut Frame::default(), MeshId(3));
+    let rows = f.angles_by_resolution();
+    assert_eq!(rows.len(), NORMALS_RESOLUTIONS.len());
+    for (row, r) in rows.iter().zip(NORMALS_RESOLUTIONS) {
+        assert_eq!(row[0], r as f32);
+        assert!(row[1] <= row[2]);
+    }
+    assert!(rows.windows(2).all(|w| w[1][1] < w[0][1]), "{rows:?}");
+    assert_eq!(rows[1][1..], <[f32; 2]>::from(f.angle_stats())[..]);
+}

@@ -245,9 +245,17 @@ if (vn) {
   const gui = new GUI({ container: document.querySelector('#fig-normals .panel'), title: 'Normals' });
   gui.add(p, 'resolution', { '9 × 9': 9, '17 × 17': 17, '33 × 33': 33, '65 × 65': 65, '129 × 129': 129 }).name('resolution');
   gui.add(p, 'h', 0, 1, 0.01).name('h (height)');
+  // One sample per resolution offered, marked with dots.
+  const plot = new Plot(document.getElementById('nor-plot'), {
+    title: 'Averaged against exact normals, by resolution', xLabel: 'vertices per side (count)',
+    yLabel: 'angle between them (°)', series: ['mean', 'largest'], colors: [cssVar('--orange'), cssVar('--grey')],
+    widths: [3, 2], dashes: [null, [6, 4]], minSpan: 1, points: true,
+  });
   let rejected = '';
   const apply = () => {
     rejected = tryApply(gui, p, state, () => scene.setParams(Number(p.resolution), p.h));
+    plot.setData(columns(scene.anglesByResolution(), 3));
+    plot.setCursor(Number(state.accepted.resolution));
   };
   gui.onChange(apply);
   apply();

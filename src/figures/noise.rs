@@ -1385,6 +1385,28 @@ impl Normals {
         (sum / count.max(1) as f32, largest)
     }
 
+    /// The plot of the error against the mesh: `[vertices per side, mean angle (°), largest
+    /// angle (°)]` for each of [`NORMALS_RESOLUTIONS`] at the current h (the same noise; builds
+    /// each mesh once, so call it when a control changes, not every frame).
+    pub fn angles_by_resolution(&self) -> Vec<[f32; 3]> {
+        NORMALS_RESOLUTIONS
+            .iter()
+            .map(|&r| {
+                let mut f = Self {
+                    perm: self.perm.clone(),
+                    h: self.h,
+                    terrain: Terrain::new(r).expect("a valid resolution"),
+                    averaged: Vec::new(),
+                    stale: false,
+                    dirty: false,
+                };
+                f.regenerate();
+                let (mean, largest) = f.angle_stats();
+                [r as f32, mean, largest]
+            })
+            .collect()
+    }
+
     pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> String {
         if std::mem::take(&mut self.stale) {
             self.regenerate();

@@ -465,6 +465,12 @@ impl NormalsScene {
             gpu: GpuTerrains::default(),
         }
     }
+    /// `[vertices per side, mean angle (°), largest angle (°)]` per resolution offered, at the
+    /// current h, flattened.
+    #[wasm_bindgen(js_name = anglesByResolution)]
+    pub fn angles_by_resolution(&self) -> Vec<f32> {
+        self.scene.angles_by_resolution().concat()
+    }
     /// Vertices per side (9, 17, 33, 65 or 129) and h in [0, 1]; nothing changes on an error.
     #[wasm_bindgen(js_name = setParams)]
     pub fn set_params(&mut self, resolution: f32, h: f32) -> Result<(), JsError> {
