@@ -2,8 +2,8 @@
 // (src/noise, src/terrain, src/figures/noise.rs).
 import { startLesson, markDrawn, Plot, GUI, columns, showNote, cssVar } from '../../www/lesson.js';
 import {
-  Noise1dScene, Noise2dScene, OctavesScene, TerrainFigureScene, NormalsScene, VariantsScene, TexturesScene, QuizScene, FractalsScene,
-  NoiseImagesScene,
+  Noise1dScene, Noise2dScene, OctavesScene, TerrainFigureScene, TerrainNormalsScene, VariantsScene, TexturesScene,
+  QuizScene, FractalsScene, NoiseImagesScene,
 } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -239,7 +239,7 @@ if (v4) {
 const vn = await lesson.figure('#fig-normals');
 if (vn) {
   vn.setCamera(0, 0, 0, 3.0, 0.5, 0.6);
-  const scene = new NormalsScene();
+  const scene = new TerrainNormalsScene();
   const p = { resolution: 17, h: 0.3 };
   const state = { accepted: { ...p } };
   const gui = new GUI({ container: document.querySelector('#fig-normals .panel'), title: 'Normals' });

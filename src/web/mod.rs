@@ -67,7 +67,7 @@ figures_module! {
     pub use ik::{AimScene, IkScene};
     pub use noise::{
         FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
-        TexturesScene, VariantsScene, NormalsScene,
+        TexturesScene, TerrainNormalsScene, VariantsScene,
     };
     pub use particles::{check_emitter, BounceScene, EmitterScene, FreeFallScene, SquashScene};
     pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};

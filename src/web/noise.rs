@@ -451,16 +451,16 @@ impl Default for QuizScene {
 
 /// Figure 5: exact normals against the average of the faces around each vertex.
 #[wasm_bindgen]
-pub struct NormalsScene {
+pub struct TerrainNormalsScene {
     scene: Normals,
     gpu: GpuTerrains,
 }
 
 #[wasm_bindgen]
-impl NormalsScene {
+impl TerrainNormalsScene {
     #[wasm_bindgen(constructor)]
-    pub fn new() -> NormalsScene {
-        NormalsScene {
+    pub fn new() -> TerrainNormalsScene {
+        TerrainNormalsScene {
             scene: Normals::new(),
             gpu: GpuTerrains::default(),
         }
@@ -484,7 +484,7 @@ impl NormalsScene {
     }
 }
 
-impl Default for NormalsScene {
+impl Default for TerrainNormalsScene {
     fn default() -> Self {
         Self::new()
     }
