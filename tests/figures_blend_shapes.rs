@@ -3,7 +3,9 @@
 
 use glam::Vec3;
 use inbetween::draw::{Frame, MeshId};
-use inbetween::figures::blend_shapes::{FaceFigure, Show, DEFAULT_WEIGHTS, LOOP_SECONDS, PROBES};
+use inbetween::figures::blend_shapes::{
+    FaceFigure, Show, TargetsFigure, DEFAULT_WEIGHTS, LOOP_SECONDS, PROBES, TARGETS_SPACING,
+};
 
 const IDS: [MeshId; 2] = [MeshId(3), MeshId(4)];
 
@@ -591,4 +593,158 @@ fn use_my_exercise_checks_probe_weights_beyond_the_sliders() {
         largest_gap(&f) < 1e-4,
         "the full form's total is 2.7 as is the student's"
     );
+}
+
+const HEADS: [MeshId; 5] = [MeshId(3), MeshId(4), MeshId(5), MeshId(6), MeshId(7)];
+
+#[test]
+fn the_targets_figure_shows_the_base_and_each_target_as_sculpted() {
+    let mut f = TargetsFigure::new();
+    let face = inbetween::blend_shapes::face();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, &HEADS).unwrap();
+    // Five heads, base first, in a row along x, each at its own place.
+    let h: Vec<(MeshId, Vec3)> = frame
+        .meshes
+        .iter()
+        .filter(|m| HEADS.contains(&m.mesh))
+        .map(|m| (m.mesh, m.model.w_axis.truncate()))
+        .collect();
+    assert_eq!(h.iter().map(|x| x.0).collect::<Vec<_>>(), HEADS.to_vec());
+    for (i, (_, at)) in h.iter().enumerate() {
+        assert!(at.distance(TargetsFigure::head_position(i)) < 1e-6);
+    }
+    // At weight 1 the base head is b₀ and head k is target k, vertex for vertex.
+    for (a, b) in f.heads[0].positions.iter().zip(&face.mesh.positions) {
+        assert!(a.distance(*b) < 1e-6);
+    }
+    for k in 0..4 {
+        for (a, b) in f.heads[k + 1].positions.iter().zip(&face.targets[k]) {
+            assert!(a.distance(*b) < 1e-5, "target {k}: {a} vs {b}");
+        }
+    }
+    let labels: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    assert_eq!(
+        labels,
+        [
+            "b₀ base",
+            "b₁ smile",
+            "b₂ jaw open",
+            "b₃ brows up",
+            "b₄ puff cheeks"
+        ]
+    );
+    assert!(
+        note.starts_with("Each target alone at weight 1.000"),
+        "{note}"
+    );
+    // Every head stays in the declared view.
+    for i in 0..5 {
+        let c = TargetsFigure::head_position(i);
+        let (lo, hi) = frame.keep_in_view.iter().fold(
+            (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+        );
+        assert!(c.cmpge(lo).all() && c.cmple(hi).all());
+    }
+    // The wrong number of meshes is refused.
+    assert!(f
+        .draw(&mut Frame::default(), &HEADS[..2])
+        .unwrap_err()
+        .contains("meshes"));
+}
+
+/// The page says what each target moves, and by how much: the smile's corners by about 17 cm,
+/// the jaw by 25, the brows by 12, the cheeks by 16, each target fewer than one vertex in ten.
+#[test]
+fn each_target_moves_a_few_vertices_by_what_the_page_says() {
+    let mut f = TargetsFigure::new();
+    let n = inbetween::blend_shapes::face().mesh.positions.len();
+    let expected_cm = [17.0, 25.0, 12.0, 16.0];
+    for (k, cm) in expected_cm.into_iter().enumerate() {
+        let (moved, largest) = f.target_reach(k);
+        assert!(
+            (100.0 * largest - cm).abs() < 0.5,
+            "target {k}: {largest} m"
+        );
+        assert!(moved > 100 && moved * 10 < n, "target {k}: {moved} of {n}");
+    }
+    assert_eq!(
+        f.target_reach(1).0,
+        (0..4).map(|k| f.target_reach(k).0).max().unwrap()
+    );
+    // The Try this reads the jaw's longest offset in the note: 25.2 cm at weight 1.
+    let note = f.draw(&mut Frame::default(), &HEADS).unwrap();
+    assert!(
+        note.contains("jaw open moves 603 of the 6050 vertices, the farthest by 25.2 cm"),
+        "{note}"
+    );
+    // At half weight every offset halves.
+    f.set_weight(0.5).unwrap();
+    let (_, half) = f.target_reach(1);
+    assert!((100.0 * half - 12.6).abs() < 0.1, "{half}");
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, &HEADS).unwrap();
+    let jaw = note
+        .split("; ")
+        .find(|p| p.starts_with("jaw open"))
+        .unwrap();
+    assert!(
+        jaw.ends_with("of the 6050 vertices, the farthest by 12.6 cm"),
+        "{note}"
+    );
+    // The head at half weight lies halfway between the base and the target.
+    let face = inbetween::blend_shapes::face();
+    for ((a, b), t) in f.heads[2]
+        .positions
+        .iter()
+        .zip(&face.mesh.positions)
+        .zip(&face.targets[1])
+    {
+        assert!(a.distance(b.lerp(*t, 0.5)) < 1e-5);
+    }
+}
+
+#[test]
+fn the_targets_figure_validates_and_draws_its_arrows_on_request() {
+    let mut f = TargetsFigure::new();
+    assert!(f.set_weight(f32::NAN).unwrap_err().contains("weight"));
+    assert!(f.set_weight(2.0).unwrap_err().contains("weight"));
+    assert!(f.set_weight(-0.1).unwrap_err().contains("weight"));
+    assert_eq!(f.weight(), 1.0, "a rejected weight changes nothing");
+    let cones = |f: &mut TargetsFigure| {
+        let mut frame = Frame::default();
+        f.draw(&mut frame, &HEADS).unwrap();
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CONE)
+            .count()
+    };
+    let with = cones(&mut f);
+    assert!(with > 40, "{with} arrows");
+    // Drawn again at the same weight: nothing to upload.
+    for head in &mut f.heads {
+        head.take_dirty();
+    }
+    assert_eq!(cones(&mut f), with);
+    assert!(f.heads.iter_mut().all(|h| !h.take_dirty()));
+    f.set_show_deltas(false);
+    assert_eq!(cones(&mut f), 0);
+    // A new weight rewrites the target heads.
+    f.set_weight(0.25).unwrap();
+    cones(&mut f);
+    assert!(f.heads.iter_mut().all(|h| h.take_dirty()));
+}
+
+/// Side by side, no head reaches into its neighbour, even puffed at the largest weight.
+#[test]
+fn the_target_heads_never_touch() {
+    let mut f = TargetsFigure::new();
+    f.set_weight(1.5).unwrap();
+    f.draw(&mut Frame::default(), &HEADS).unwrap();
+    for head in &f.heads {
+        let half_width = head.positions.iter().map(|p| p.x.abs()).fold(0.0, f32::max);
+        assert!(2.0 * half_width < TARGETS_SPACING, "{half_width}");
+    }
 }

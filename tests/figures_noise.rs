@@ -599,3 +599,288 @@ fn terrain_scene_checks_the_students_normal_beyond_the_sliders() {
             .contains("matches the reference at all 8 inputs"));
     }
 }
+
+const FOUR: [MeshId; 4] = [MeshId(3), MeshId(4), MeshId(5), MeshId(6)];
+
+/// The mean steepness `1 − n_y` over a terrain's vertices.
+fn mean_steepness(t: &inbetween::terrain::Terrain) -> f32 {
+    t.normals.iter().map(|n| 1.0 - n.y).sum::<f32>() / t.normals.len() as f32
+}
+
+#[test]
+fn variants_stand_side_by_side_from_the_same_noise() {
+    let mut f = Variants::new();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, &FOUR);
+    // Four terrains at their own places, each labelled with its variant.
+    let drawn: Vec<(MeshId, Vec3)> = frame
+        .meshes
+        .iter()
+        .filter(|m| FOUR.contains(&m.mesh))
+        .map(|m| (m.mesh, m.model.w_axis.truncate()))
+        .collect();
+    assert_eq!(drawn.len(), 4);
+    for (i, (id, at)) in drawn.iter().enumerate() {
+        assert_eq!(*id, FOUR[i]);
+        assert!(at.distance(Variants::placement(i)) < 1e-6);
+    }
+    for i in 0..4 {
+        for j in 0..i {
+            let d = Variants::placement(i) - Variants::placement(j);
+            assert!(
+                d.x.abs() > 2.1 || d.z.abs() > 2.1,
+                "terrains {i} and {j} overlap"
+            );
+        }
+    }
+    let labels: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    assert_eq!(labels, SIDE_BY_SIDE_VARIANTS.map(|v| v.1));
+    assert!(!frame.keep_in_view.is_empty());
+    // The page: 129 × 129 vertices each, so octaves past 5 are left out.
+    assert_eq!(VARIANTS_RESOLUTION, 129);
+    assert!(
+        note.contains("Octaves 6 to 9 are finer than these meshes and left out"),
+        "{note}"
+    );
+    for i in 0..4 {
+        assert_eq!(f.shown_params(i).fractal.n, 5);
+    }
+    // The same noise: the sum's terrain is Figure 4's shape at N = 5.
+    let sum = &f.terrains()[0].positions;
+    let perm = inbetween::noise::Permutation::perlin();
+    let p = f.shown_params(0);
+    for &k in &[0, 1000, 8000] {
+        let q = sum[k];
+        assert!((q.y - p.h * p.g(&perm, q.x, q.z).0).abs() < 1e-5);
+    }
+}
+
+/// What the text and the Try this say: the ridge never goes below 0, the inverted ridge lies
+/// around 0 with water in its lowest parts, marble stays within ±h/2; from α = 0.4 to 0.8 the
+/// ridge nearly doubles, the sum gets taller and rougher, marble still spans ±0.15 m; at h = 0
+/// all four are flat.
+#[test]
+fn variants_do_what_the_page_says() {
+    let mut f = Variants::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, &FOUR);
+    let water = inbetween::terrain::terrain_color(-1.0, Vec3::Y, 1.0);
+    let (ridge_lo, ridge_04) = f.height_range(1);
+    assert!(ridge_lo >= 0.0);
+    let (inv_lo, inv_hi) = f.height_range(2);
+    assert!(inv_lo < -0.05 && inv_hi > 0.05, "{inv_lo} {inv_hi}");
+    assert!(f.terrains()[2]
+        .colors
+        .iter()
+        .any(|c| (*c - water).length() < 1e-3));
+    let (m_lo, m_hi) = f.height_range(3);
+    assert!(m_lo >= -0.15 - 1e-6 && m_hi <= 0.15 + 1e-6);
+    assert!(
+        m_lo < -0.149 && m_hi > 0.149,
+        "marble spans ±h/2: {m_lo} {m_hi}"
+    );
+    let (sum_lo, sum_hi) = f.height_range(0);
+    let rough_04 = mean_steepness(f.terrains()[0]);
+
+    f.set_params(9.0, 0.8, 0.3).unwrap();
+    let note = f.draw(&mut frame, &FOUR);
+    let (ridge_lo, ridge_08) = f.height_range(1);
+    assert!(ridge_lo >= 0.0);
+    assert!(
+        ridge_08 / ridge_04 > 1.7 && ridge_08 / ridge_04 < 2.0,
+        "{ridge_04} -> {ridge_08}"
+    );
+    let (lo, hi) = f.height_range(0);
+    assert!(hi - lo > 1.5 * (sum_hi - sum_lo));
+    assert!(mean_steepness(f.terrains()[0]) > 1.5 * rough_04);
+    let (m_lo, m_hi) = f.height_range(3);
+    assert!(m_lo < -0.149 && m_hi > 0.149 && m_lo >= -0.1500001 && m_hi <= 0.1500001);
+    assert!(note.contains("marble from -0.150 to 0.150 m"), "{note}");
+
+    f.set_params(9.0, 0.8, 0.0).unwrap();
+    f.draw(&mut frame, &FOUR);
+    for i in 0..4 {
+        assert_eq!(
+            f.height_range(i),
+            (0.0, 0.0),
+            "variant {i} is flat at h = 0"
+        );
+    }
+}
+
+#[test]
+fn variants_reject_bad_parameters_and_keep_the_last_good_ones() {
+    let mut f = Variants::new();
+    assert!(f
+        .set_params(2.5, 0.4, 0.3)
+        .unwrap_err()
+        .contains("N must be a whole number"));
+    assert!(f.set_params(10.0, 0.4, 0.3).unwrap_err().contains("N"));
+    assert!(f
+        .set_params(9.0, f32::NAN, 0.3)
+        .unwrap_err()
+        .contains("alpha"));
+    assert!(f.set_params(9.0, 0.4, 3.0).unwrap_err().contains("h"));
+    assert!(f.set_params(9.0, 0.4, -0.1).unwrap_err().contains("h"));
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, &FOUR);
+    assert!(note.contains("N = 9, α = 0.400, h = 0.300"), "{note}");
+}
+
+/// Figure 2's Try this: between two layers (z = 0.5) the arrows turn and, on the whole, shrink
+/// (each is the fade-weighted mix of the two layers' gradients).
+#[test]
+fn noise2d_arrows_turn_and_shrink_between_layers() {
+    let mut s = Noise2d::new();
+    let slopes = |s: &Noise2d| -> Vec<glam::Vec2> {
+        let mut v = Vec::new();
+        for j in -2..=2 {
+            for i in -2..=2 {
+                v.push(s.dot_value_and_slope(i, j).1);
+            }
+        }
+        v
+    };
+    let at0 = slopes(&s);
+    s.set_z(0.5).unwrap();
+    let half = slopes(&s);
+    let mean = |v: &[glam::Vec2]| v.iter().map(|g| g.length()).sum::<f32>() / v.len() as f32;
+    assert!(
+        mean(&half) < 0.8 * mean(&at0),
+        "{} vs {}",
+        mean(&half),
+        mean(&at0)
+    );
+    let turned = at0
+        .iter()
+        .zip(&half)
+        .filter(|(a, b)| b.length() > 1e-3 && a.angle_to(**b).abs() > 10f32.to_radians())
+        .count();
+    assert!(turned >= 10, "{turned} of 25 arrows turn");
+}
+
+/// Figures 2, 3 and 4 declare their whole terrain as what must stay in view, so the camera fits
+/// it at any canvas size (no corner cut at 800 × 600).
+#[test]
+fn single_terrain_figures_keep_their_whole_surface_in_view() {
+    fn check(frame: &Frame, t: &inbetween::terrain::Terrain) {
+        let (lo, hi) = frame.keep_in_view.iter().fold(
+            (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+        );
+        assert!(!frame.keep_in_view.is_empty());
+        for p in &t.positions {
+            assert!(
+                p.cmpge(lo - 1e-6).all() && p.cmple(hi + 1e-6).all(),
+                "{p} outside"
+            );
+        }
+    }
+    let mut n2 = Noise2d::new();
+    n2.take_dirty();
+    let mut f = Frame::default();
+    n2.draw(&mut f, MeshId(3));
+    check(&f, n2.terrains()[0]);
+    let mut oct = Octaves::new();
+    oct.set_params(7.0, 0.8, 2.0).unwrap();
+    oct.take_dirty();
+    let mut f = Frame::default();
+    oct.draw(&mut f, MeshId(3));
+    check(&f, oct.terrains()[0]);
+    let mut ter = TerrainScene::new();
+    ter.set_params(9.0, 0.4, 2.0, 1.5, 1.0, 0.0).unwrap();
+    ter.take_dirty();
+    let mut f = Frame::default();
+    ter.draw(&mut f, MeshId(3));
+    check(&f, ter.terrains()[0]);
+}
+
+/// The page: about 11° apart on average at 17 × 17, under 1° at 129 × 129; the Try this: 15.6° at
+/// 9 × 9 down to 0.6° at 129 × 129, always closer on a finer mesh; flat ground at h = 0.
+#[test]
+fn averaged_normals_close_in_on_the_exact_ones_as_the_mesh_gets_finer() {
+    let mut f = Normals::new();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, MeshId(3));
+    assert!(note.starts_with("17 × 17 vertices"), "{note}");
+    let mut last = f32::INFINITY;
+    let mut means = Vec::new();
+    for r in NORMALS_RESOLUTIONS {
+        f.set_params(r as f32, 0.3).unwrap();
+        let mut frame = Frame::default();
+        let note = f.draw(&mut frame, MeshId(3));
+        let (mean, largest) = f.angle_stats();
+        assert!(mean < last && mean <= largest, "{r}: {mean} after {last}");
+        last = mean;
+        means.push(mean);
+        assert!(
+            note.contains(&format!("by {mean:.1}° on average")),
+            "{note}"
+        );
+        // Two arrows (cones) at each of 9 × 9 vertices, the whole terrain in view.
+        assert_eq!(
+            frame
+                .meshes
+                .iter()
+                .filter(|m| m.mesh == MeshId::CONE)
+                .count(),
+            2 * 81
+        );
+        assert!(!frame.keep_in_view.is_empty());
+        // The exact normals are the terrain's own (what lights it).
+        let (exact, averaged) = f.normals();
+        assert_eq!(exact, &f.terrains()[0].normals[..]);
+        assert_eq!(exact.len(), averaged.len());
+    }
+    assert!((means[0] - 15.6).abs() < 0.05, "{}", means[0]);
+    assert!((means[1] - 11.0).abs() < 0.5, "{}", means[1]);
+    assert!(
+        (means[4] - 0.6).abs() < 0.05 && means[4] < 1.0,
+        "{}",
+        means[4]
+    );
+    f.set_params(33.0, 0.0).unwrap();
+    f.draw(&mut Frame::default(), MeshId(3));
+    let (exact, averaged) = f.normals();
+    assert!(exact
+        .iter()
+        .chain(averaged)
+        .all(|n| (*n - Vec3::Y).length() < 1e-6));
+    assert_eq!(f.angle_stats(), (0.0, 0.0));
+}
+
+#[test]
+fn normals_figure_rejects_bad_parameters_and_keeps_the_last_good_ones() {
+    let mut f = Normals::new();
+    assert!(f
+        .set_params(20.0, 0.3)
+        .unwrap_err()
+        .contains("resolution must be one of"));
+    assert!(f
+        .set_params(f32::NAN, 0.3)
+        .unwrap_err()
+        .contains("resolution"));
+    assert!(f.set_params(17.0, 1.5).unwrap_err().contains("h"));
+    assert!(f.set_params(65.0, f32::INFINITY).unwrap_err().contains("h"));
+    let note = f.draw(&mut Frame::default(), MeshId(3));
+    assert!(
+        note.starts_with("17 × 17 vertices") && note.contains("h = 0.300"),
+        "{note}"
+    );
+}
+
+/// Figure 5's plot: one row per resolution offered, the same numbers as the note at each.
+#[test]
+fn the_normals_plot_gives_the_angle_at_every_resolution() {
+    let mut f = Normals::new();
+    f.set_params(17.0, 0.5).unwrap();
+    f.draw(&mut Frame::default(), MeshId(3));
+    let rows = f.angles_by_resolution();
+    assert_eq!(rows.len(), NORMALS_RESOLUTIONS.len());
+    for (row, r) in rows.iter().zip(NORMALS_RESOLUTIONS) {
+        assert_eq!(row[0], r as f32);
+        assert!(row[1] <= row[2]);
+    }
+    assert!(rows.windows(2).all(|w| w[1][1] < w[0][1]), "{rows:?}");
+    assert_eq!(rows[1][1..], <[f32; 2]>::from(f.angle_stats())[..]);
+}

@@ -383,7 +383,7 @@ function webgpuAvailable() {
  * two overlap and all stay inside the canvas; a label moved away from its anchor gets a leader
  * line, one with no room is hidden. Returns the per-frame updater.
  */
-function labelLayer(canvas, viewer) {
+function labelLayer(canvas, viewer, sizeGeneration) {
   const layer = document.createElement('div');
   layer.className = 'labels';
   layer.setAttribute('aria-hidden', 'true');
@@ -396,7 +396,10 @@ function labelLayer(canvas, viewer) {
   let shown = '';
   return () => {
     const json = viewer.labelsJson();
-    const key = `${json}|${canvas.clientWidth}x${canvas.clientHeight}`;
+    // The viewer's own size counts too: the layout keeps labels inside the size it was last told,
+    // which can lag the canvas's by a ResizeObserver callback, and an off-screen figure does not
+    // redraw (so its labels' json stays the same) when it catches up.
+    const key = `${json}|${canvas.clientWidth}x${canvas.clientHeight}|${sizeGeneration()}`;
     if (key === shown) return;
     shown = key;
     const labels = JSON.parse(json);
@@ -494,7 +497,9 @@ async function createFigure(selector) {
   document.body.dataset.backend = viewer.backend;
   attachCameraControls(canvas, viewer);
   frameAllButton(canvas, viewer);
+  let resized = 0;
   const resize = () => {
+    resized++;
     const r = canvas.getBoundingClientRect();
     const dpr = window.devicePixelRatio || 1;
     canvas.width = Math.max(1, Math.round(r.width * dpr));
@@ -511,7 +516,7 @@ async function createFigure(selector) {
       showError(e);
     }
   }, { rootMargin: '100px' }).observe(canvas);
-  state.figures.push({ selector, backend: viewer.backend, viewer, placeLabels: labelLayer(canvas, viewer) });
+  state.figures.push({ selector, backend: viewer.backend, viewer, placeLabels: labelLayer(canvas, viewer, () => resized) });
   return viewer;
 }
 

@@ -2,7 +2,8 @@
 // (src/noise, src/terrain, src/figures/noise.rs).
 import { startLesson, markDrawn, Plot, GUI, columns, showNote, cssVar } from '../../www/lesson.js';
 import {
-  Noise1dScene, Noise2dScene, OctavesScene, TerrainFigureScene, TexturesScene, QuizScene, FractalsScene, NoiseImagesScene,
+  Noise1dScene, Noise2dScene, OctavesScene, TerrainFigureScene, TerrainNormalsScene, VariantsScene, TexturesScene,
+  QuizScene, FractalsScene, NoiseImagesScene,
 } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -29,7 +30,7 @@ function tryApply(gui, p, state, set) {
 }
 
 /**
- * Whether a figure is on screen (or near it). Eight live canvases, four of them with meshes of
+ * Whether a figure is on screen (or near it). Ten live canvases, four of them with meshes of
  * 16 000 to 100 000 vertices, are too much to redraw every frame on a software renderer, so each
  * figure draws only while it can be seen (and always for its first frame).
  */
@@ -45,7 +46,7 @@ function onScreen(selector) {
 }
 
 const shown = Object.fromEntries(
-  ['fig-1d', 'fig-2d', 'fig-octaves', 'fig-terrain', 'fig-quiz', 'fig-textures', 'fig-gpu', 'fig-fractals'].map((id) => [id, onScreen(`#${id}`)]),
+  ['fig-1d', 'fig-2d', 'fig-octaves', 'fig-terrain', 'fig-normals', 'fig-variants', 'fig-quiz', 'fig-textures', 'fig-gpu', 'fig-fractals'].map((id) => [id, onScreen(`#${id}`)]),
 );
 
 // Figure 1: 1D noise.
@@ -234,7 +235,64 @@ if (v4) {
   });
 }
 
-// Figure 5: the quiz.
+// Figure 5: exact normals against averaged ones.
+const vn = await lesson.figure('#fig-normals');
+if (vn) {
+  vn.setCamera(0, 0, 0, 3.0, 0.5, 0.6);
+  const scene = new TerrainNormalsScene();
+  const p = { resolution: 17, h: 0.3 };
+  const state = { accepted: { ...p } };
+  const gui = new GUI({ container: document.querySelector('#fig-normals .panel'), title: 'Normals' });
+  gui.add(p, 'resolution', { '9 × 9': 9, '17 × 17': 17, '33 × 33': 33, '65 × 65': 65, '129 × 129': 129 }).name('resolution');
+  gui.add(p, 'h', 0, 1, 0.01).name('h (height)');
+  // One sample per resolution offered, marked with dots.
+  const plot = new Plot(document.getElementById('nor-plot'), {
+    title: 'Averaged against exact normals, by resolution', xLabel: 'vertices per side (count)',
+    yLabel: 'angle between them (°)', series: ['mean', 'largest'], colors: [cssVar('--orange'), cssVar('--grey')],
+    widths: [3, 2], dashes: [null, [6, 4]], minSpan: 1, points: true,
+  });
+  let rejected = '';
+  const apply = () => {
+    rejected = tryApply(gui, p, state, () => scene.setParams(Number(p.resolution), p.h));
+    plot.setData(columns(scene.anglesByResolution(), 3));
+    plot.setCursor(Number(state.accepted.resolution));
+  };
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('nor-note');
+  lesson.onFrame(() => {
+    if (!shown['fig-normals']()) return;
+    showNote(note, rejected, scene.draw(vn));
+    markDrawn('#fig-normals');
+  });
+}
+
+// Figure 6: the variants side by side.
+const vv = await lesson.figure('#fig-variants');
+if (vv) {
+  vv.setCamera(0, -0.1, 0.1, 6, 0, 0.8);
+  const scene = new VariantsScene();
+  const p = { n: 9, alpha: 0.4, h: 0.3 };
+  const state = { accepted: { ...p } };
+  const gui = new GUI({ container: document.querySelector('#fig-variants .panel'), title: 'Variants' });
+  gui.add(p, 'n', 0, 9, 1).name('N (last octave)');
+  gui.add(p, 'alpha', 0, 1, 0.01).name('α (attenuation)');
+  gui.add(p, 'h', 0, 1, 0.01).name('h (height)');
+  let rejected = '';
+  const apply = () => {
+    rejected = tryApply(gui, p, state, () => scene.setParams(p.n, p.alpha, p.h));
+  };
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('var-note');
+  lesson.onFrame(() => {
+    if (!shown['fig-variants']()) return;
+    showNote(note, rejected, scene.draw(vv));
+    markDrawn('#fig-variants');
+  });
+}
+
+// Figure 7: the quiz.
 const v5 = await lesson.figure('#fig-quiz');
 if (v5) {
   v5.setCamera(0, -0.2, 0.2, 8.2, 0, 0.8);
@@ -266,7 +324,7 @@ if (v5) {
   });
 }
 
-// Figure 6: procedural textures.
+// Figure 8: procedural textures.
 const v6 = await lesson.figure('#fig-textures');
 if (v6) {
   v6.setCamera(0, 0, 0.1, 6.2, 0, 1.3);
@@ -294,7 +352,7 @@ if (v6) {
   });
 }
 
-// Figure 7: Perlin and simplex noise, on the CPU and on the GPU (WGSL), with the GPU check.
+// Figure 9: Perlin and simplex noise, on the CPU and on the GPU (WGSL), with the GPU check.
 const vg = await lesson.figure('#fig-gpu');
 if (vg) {
   vg.setCamera(0, 0, 0.1, 6.2, 0, 1.3);
@@ -324,7 +382,7 @@ if (vg) {
   });
 }
 
-// Figure 8: fractals.
+// Figure 10: fractals.
 const v7 = await lesson.figure('#fig-fractals');
 if (v7) {
   v7.setCamera(0, -0.1, 0, 5.6, 0, 0);

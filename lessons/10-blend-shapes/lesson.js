@@ -1,9 +1,27 @@
 // Lesson 10: wires the page's controls to the wasm scene. No math here: it lives in Rust
 // (src/blend_shapes/, src/figures/blend_shapes.rs).
 import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote } from '../../www/lesson.js';
-import { BlendShapeFaceScene } from '../../pkg/inbetween.js';
+import { BlendShapeFaceScene, BlendShapeTargetsScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
+
+// Figure 1: the base and each target alone, at one weight.
+const targetsViewer = await lesson.figure('#fig-targets');
+if (targetsViewer) {
+  const scene = new BlendShapeTargetsScene();
+  targetsViewer.setCamera(0, 0, 0, 9, 0.2, 0.05);
+  const p = { weight: 1, deltas: true };
+  const gui = new GUI({ container: document.querySelector('#fig-targets .panel'), title: 'Targets' });
+  gui.add(p, 'weight', 0, 1.5, 0.01).name('weight w of each target').onChange((w) => scene.setWeight(w));
+  gui.add(p, 'deltas').name('delta arrows').onChange((on) => scene.setShowDeltas(on));
+  const note = document.getElementById('targets-note');
+  lesson.onFrame(() => {
+    showNote(note, scene.draw(targetsViewer));
+    markDrawn('#fig-targets');
+  });
+}
+
+// Figure 2: the two forms side by side.
 
 const viewer = await lesson.figure('#fig-face');
 if (viewer) {

@@ -574,3 +574,223 @@ fn fmt_vec(v: Vec3) -> String {
 fn targets_of(face: &Face, v: usize) -> Vec<Vec3> {
     face.targets.iter().map(|t| t[v]).collect()
 }
+
+// ---------------------------------------------------------------------------------------------
+// Figure 1: the base and its targets.
+
+/// How far apart (metres, along x) [`TargetsFigure`] stands its five heads: more than twice
+/// the widest any head gets at the largest weight (a test checks it).
+pub const TARGETS_SPACING: f32 = 2.1;
+/// Half the height between [`TargetsFigure`]'s two rows of heads, metres (a head is 2 m tall,
+/// plus its label).
+pub const TARGETS_ROW: f32 = 1.35;
+/// A vertex that a target moves less than this (metres) does not count as moved in the note.
+pub const MOVED_MIN: f32 = 0.001;
+
+/// Figure 1: the base head `b₀` and each target `bₖ = b₀ + dₖ` on its own, five heads in a row,
+/// every target shown at one weight `w` (1: the target as sculpted), with arrows along `w dₖ` on
+/// the vertices it moves.
+pub struct TargetsFigure {
+    face: Face,
+    weight: f32,
+    show_deltas: bool,
+    /// The base, then each target at `weight`, with the face's paint.
+    pub heads: Vec<SkinnedMesh>,
+    /// Per target: the vertices that carry an arrow (every [`DELTA_STRIDE`]-th that it moves at
+    /// least [`DELTA_MIN`]).
+    arrows: Vec<Vec<usize>>,
+    /// The weight the target heads were last blended at.
+    blended: Option<f32>,
+}
+
+impl Default for TargetsFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TargetsFigure {
+    /// Every target at weight 1 (as sculpted), with arrows.
+    pub fn new() -> Self {
+        let face = face();
+        let n = face.mesh.positions.len();
+        let heads = (0..=face.targets.len())
+            .map(|_| {
+                let mut mesh = SkinnedMesh::default();
+                mesh.positions = vec![Vec3::ZERO; n];
+                mesh.normals = vec![Vec3::ZERO; n];
+                mesh.colors = face.colors.clone();
+                mesh
+            })
+            .collect();
+        let sampled = arrow_vertices(&face);
+        let arrows = face
+            .targets
+            .iter()
+            .map(|t| {
+                sampled
+                    .iter()
+                    .copied()
+                    .filter(|&v| (t[v] - face.mesh.positions[v]).length() >= DELTA_MIN)
+                    .collect()
+            })
+            .collect();
+        let mut f = Self {
+            face,
+            weight: 1.0,
+            show_deltas: true,
+            heads,
+            arrows,
+            blended: None,
+        };
+        f.blend();
+        f
+    }
+
+    pub fn indices(&self) -> &[u32] {
+        &self.face.mesh.indices
+    }
+
+    /// The targets' names, in order.
+    pub fn target_names(&self) -> Vec<String> {
+        self.face.names.iter().map(|s| s.to_string()).collect()
+    }
+
+    /// The weight every target head is shown at, in [0, 1.5] (1: as sculpted).
+    pub fn set_weight(&mut self, w: f32) -> Result<(), String> {
+        self.weight = in_range("weight", w, 0.0, 1.5)?;
+        Ok(())
+    }
+
+    pub fn weight(&self) -> f32 {
+        self.weight
+    }
+
+    /// Arrows along `w dₖ` on each target head.
+    pub fn set_show_deltas(&mut self, on: bool) {
+        self.show_deltas = on;
+    }
+
+    /// Where head `i` stands (0: the base, k: target k), its centre: the base, the smile and
+    /// the open jaw in the top row, the brows and the cheeks centred below them (two rows fill a
+    /// canvas's width better than one row of five).
+    pub fn head_position(i: usize) -> Vec3 {
+        if i < 3 {
+            Vec3::new((i as f32 - 1.0) * TARGETS_SPACING, TARGETS_ROW, 0.0)
+        } else {
+            Vec3::new((i as f32 - 3.5) * TARGETS_SPACING, -TARGETS_ROW, 0.0)
+        }
+    }
+
+    /// Rewrites the target heads at the current weight (the base head once); nothing when the
+    /// weight has not changed since.
+    fn blend(&mut self) {
+        if self.blended == Some(self.weight) {
+            return;
+        }
+        let k_count = self.face.targets.len();
+        for i in 0..=k_count {
+            let mut w = vec![0.0; k_count];
+            if i > 0 {
+                w[i - 1] = self.weight;
+            }
+            let head = &mut self.heads[i];
+            self.face
+                .shapes
+                .apply_differential(&w, &mut head.positions, &mut head.normals)
+                .expect("one weight per target, finite");
+            head.mark_dirty();
+        }
+        self.blended = Some(self.weight);
+    }
+
+    /// How target `k` (0-based) moves the head at the current weight: the number of vertices it
+    /// moves by at least [`MOVED_MIN`], and the largest distance any vertex moves (metres).
+    pub fn target_reach(&self, k: usize) -> (usize, f32) {
+        let base = &self.face.mesh.positions;
+        let target = &self.face.targets[k];
+        let mut moved = 0;
+        let mut largest = 0.0f32;
+        for (b, t) in base.iter().zip(target) {
+            let d = self.weight * (*t - *b).length();
+            if d >= MOVED_MIN {
+                moved += 1;
+            }
+            largest = largest.max(d);
+        }
+        (moved, largest)
+    }
+
+    /// Blends what changed and draws the five heads (`meshes`: the GPU ids of the base and of
+    /// each target head, in order); returns the note.
+    pub fn draw(&mut self, frame: &mut Frame, meshes: &[MeshId]) -> Result<String, String> {
+        if meshes.len() != self.heads.len() {
+            return Err(format!(
+                "meshes: expected {} (the base and each target), got {}",
+                self.heads.len(),
+                meshes.len()
+            ));
+        }
+        self.blend();
+        let n = self.face.mesh.positions.len();
+        let base = &self.face.mesh.positions;
+        let normals = &self.face.mesh.normals;
+        for (i, &mesh) in meshes.iter().enumerate() {
+            let at = Self::head_position(i);
+            let model = Mat4::from_translation(at);
+            frame.mesh_vertex_colors(mesh, model);
+            for x in [-0.27f32, 0.27] {
+                let eye = model
+                    * Mat4::from_translation(Vec3::new(x, 0.22, 0.72))
+                    * Mat4::from_scale(Vec3::splat(0.09));
+                frame.mesh(MeshId::SPHERE, eye, palette::DARK);
+            }
+            let name = if i == 0 {
+                "b₀ base".to_string()
+            } else {
+                format!("b{} {}", subscript(i), self.face.names[i - 1])
+            };
+            frame.label(at + Vec3::new(-0.55, -1.25, 0.0), name, palette::DARK);
+            if i > 0 && self.show_deltas {
+                for &v in &self.arrows[i - 1] {
+                    let lift = ARROW_LIFT * normals[v];
+                    let from = model.transform_point3(base[v] + lift);
+                    let to = model.transform_point3(self.heads[i].positions[v] + lift);
+                    frame.arrow(from, to, palette::BLUE, 0.05);
+                }
+            }
+        }
+        // Every head with its label, the rows' outer heads at their widest.
+        let r = HEAD_RADIUS;
+        frame.keep_box_in_view(
+            Vec3::new(-TARGETS_SPACING - r, -TARGETS_ROW - 1.45, 0.0),
+            Vec3::new(TARGETS_SPACING + r, TARGETS_ROW + 1.1, 0.0),
+        );
+        let parts: Vec<String> = (0..self.face.targets.len())
+            .map(|k| {
+                let (moved, largest) = self.target_reach(k);
+                format!(
+                    "{} moves {moved} of the {n} vertices, the farthest by {} cm",
+                    self.face.names[k],
+                    format_number_digits(100.0 * largest, 1)
+                )
+            })
+            .collect();
+        Ok(format!(
+            "Each target alone at weight {}: b₀ + {}·dₖ. {}. The other vertices stay where the base has them: a target stores one position per vertex, but only its delta dₖ matters.",
+            format_number(self.weight),
+            format_number(self.weight),
+            parts.join("; ")
+        ))
+    }
+}
+
+/// `k` as a subscript digit (k < 10).
+fn subscript(k: usize) -> char {
+    char::from_u32(0x2080 + (k % 10) as u32).unwrap_or('?')
+}
+
+/// `x` with `digits` decimals.
+fn format_number_digits(x: f32, digits: usize) -> String {
+    format!("{x:.digits$}")
+}

@@ -1,7 +1,9 @@
 //! Lesson 05, "Noise and terrain": 1D noise built from lattice gradients, 2D noise and its 3D
-//! slices, octaves added one by one, the course's terrain with every parameter, procedural
-//! textures, the terrain quiz and two fractals. Natively testable; `web::noise` wraps these for
-//! JavaScript and uploads the terrain meshes (created once, then updated in place).
+//! slices, octaves added one by one, the course's terrain with every parameter, its exact normals
+//! against averaged ones, its variants side by side, procedural textures, the terrain quiz and two
+//! fractals. Natively testable;
+//! `web::noise` wraps these for JavaScript and uploads the terrain meshes (created once, then
+//! updated in place).
 
 use super::{check_samples, DEFAULT_RUNNER};
 use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner};
@@ -117,6 +119,16 @@ pub fn diverging_color(n: f32) -> glam::Vec4 {
         palette::BLUE
     };
     Vec3::splat(0.85).lerp(end, t).extend(1.0)
+}
+
+/// Declares a terrain over `[−1, 1]²` as what must stay in view, between its lowest and highest
+/// vertex, so no corner is cut at any canvas size.
+fn keep_terrain_in_view(frame: &mut Frame, terrain: &Terrain) {
+    let (lo, hi) = terrain
+        .positions
+        .iter()
+        .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
+    frame.keep_box_in_view(Vec3::new(-1.0, lo, -1.0), Vec3::new(1.0, hi, 1.0));
 }
 
 /// Terrains a figure shows, for the web layer to upload: each with its model matrix.
@@ -507,6 +519,7 @@ impl Noise2d {
 
     pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        keep_terrain_in_view(frame, &self.terrain);
         let lift = Vec3::Y * 0.01;
         for j in -2..=2 {
             for i in -2..=2 {
@@ -801,6 +814,7 @@ impl Octaves {
 
     pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        keep_terrain_in_view(frame, &self.terrain);
         let lift = Vec3::Y * 0.004;
         let shown = self.shown_fractal();
         let previous = Fractal {
@@ -1163,6 +1177,7 @@ impl TerrainScene {
 
     pub fn draw(&self, frame: &mut Frame, mesh: MeshId) -> String {
         frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        keep_terrain_in_view(frame, &self.terrain);
         let k = self.probe_index();
         let at = self.terrain.positions[k];
         let reference = self.terrain.normals[k];
@@ -1261,12 +1276,379 @@ impl TerrainFigure for TerrainScene {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 6: procedural textures.
+// Figure 5: exact normals against averaged ones.
 
-/// Texels per side of each of Figure 6's textures.
+/// The resolutions Figure 5 offers (vertices per side).
+pub const NORMALS_RESOLUTIONS: [usize; 5] = [9, 17, 33, 65, 129];
+/// The noise Figure 5 samples: octaves 0 to 3 of the course's sum.
+const NORMALS_FRACTAL: Fractal = Fractal {
+    n: 3,
+    ..Fractal::COURSE
+};
+/// Arrows per side of Figure 5's terrain (every vertex at 9 × 9, fewer on finer meshes).
+const NORMALS_ARROWS: usize = 9;
+/// Length of Figure 5's normal arrows, metres.
+const NORMAL_ARROW: f32 = 0.3;
+
+/// Figure 5: one terrain, the same noise at every resolution, with two normals at each sampled
+/// vertex: the exact one from the noise's derivative (grey) and the average of the faces around
+/// the vertex (orange). The note measures the angle between them.
+pub struct Normals {
+    perm: Permutation,
+    h: f32,
+    terrain: Terrain,
+    averaged: Vec<Vec3>,
+    stale: bool,
+    dirty: bool,
+}
+
+impl Normals {
+    /// 17 × 17 vertices, h = 0.3.
+    pub fn new() -> Self {
+        let mut f = Self {
+            perm: Permutation::perlin(),
+            h: 0.3,
+            terrain: Terrain::new(17).expect("a valid resolution"),
+            averaged: Vec::new(),
+            stale: false,
+            dirty: true,
+        };
+        f.regenerate();
+        f
+    }
+
+    /// Vertices per side, one of [`NORMALS_RESOLUTIONS`], and h in [0, 1]; checked by name,
+    /// nothing changes on an error.
+    pub fn set_params(&mut self, resolution: f32, h: f32) -> Result<(), String> {
+        let r = in_range("resolution", resolution, 0.0, 1e4)?;
+        if !NORMALS_RESOLUTIONS.iter().any(|&x| x as f32 == r) {
+            return Err(format!(
+                "resolution must be one of {NORMALS_RESOLUTIONS:?}, got {resolution}"
+            ));
+        }
+        let h = in_range("h", h, 0.0, 1.0)?;
+        if r as usize != self.terrain.resolution() {
+            self.terrain = Terrain::new(r as usize)?;
+        }
+        self.h = h;
+        self.stale = true;
+        Ok(())
+    }
+
+    fn params(&self) -> TerrainParams {
+        TerrainParams {
+            fractal: NORMALS_FRACTAL,
+            h: self.h,
+            ..TerrainParams::default()
+        }
+    }
+
+    fn regenerate(&mut self) {
+        let p = self.params();
+        self.terrain
+            .regenerate(&self.perm, &p)
+            .expect("the setters checked every parameter");
+        self.averaged.resize(self.terrain.positions.len(), Vec3::Y);
+        crate::raster::vertex_normals(
+            &self.terrain.positions,
+            &self.terrain.indices,
+            &mut self.averaged,
+        )
+        .expect("the terrain's indices are valid");
+        self.dirty = true;
+    }
+
+    /// The exact and the averaged normal of every vertex, in the terrain's order.
+    pub fn normals(&self) -> (&[Vec3], &[Vec3]) {
+        (&self.terrain.normals, &self.averaged)
+    }
+
+    /// The mean and the largest angle (degrees) between the exact and the averaged normal, over
+    /// the vertices off the border (a border vertex has fewer faces to average).
+    pub fn angle_stats(&self) -> (f32, f32) {
+        let r = self.terrain.resolution();
+        let mut sum = 0.0;
+        let mut largest = 0.0f32;
+        let mut count = 0;
+        for j in 1..r - 1 {
+            for i in 1..r - 1 {
+                let k = j * r + i;
+                let cos = self.terrain.normals[k]
+                    .dot(self.averaged[k])
+                    .clamp(-1.0, 1.0);
+                let angle = cos.acos().to_degrees();
+                sum += angle;
+                largest = largest.max(angle);
+                count += 1;
+            }
+        }
+        (sum / count.max(1) as f32, largest)
+    }
+
+    /// The plot of the error against the mesh: `[vertices per side, mean angle (°), largest
+    /// angle (°)]` for each of [`NORMALS_RESOLUTIONS`] at the current h (the same noise; builds
+    /// each mesh once, so call it when a control changes, not every frame).
+    pub fn angles_by_resolution(&self) -> Vec<[f32; 3]> {
+        NORMALS_RESOLUTIONS
+            .iter()
+            .map(|&r| {
+                let mut f = Self {
+                    perm: self.perm.clone(),
+                    h: self.h,
+                    terrain: Terrain::new(r).expect("a valid resolution"),
+                    averaged: Vec::new(),
+                    stale: false,
+                    dirty: false,
+                };
+                f.regenerate();
+                let (mean, largest) = f.angle_stats();
+                [r as f32, mean, largest]
+            })
+            .collect()
+    }
+
+    pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> String {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        frame.mesh_vertex_colors(mesh, Mat4::IDENTITY);
+        keep_terrain_in_view(frame, &self.terrain);
+        frame.keep_box_in_view(
+            Vec3::new(-1.0, 0.0, -1.0),
+            Vec3::new(1.0, NORMAL_ARROW, 1.0),
+        );
+        let r = self.terrain.resolution();
+        let stride = (r - 1) / (NORMALS_ARROWS - 1);
+        for j in (0..r).step_by(stride) {
+            for i in (0..r).step_by(stride) {
+                let k = j * r + i;
+                let at = self.terrain.positions[k];
+                frame.arrow(
+                    at,
+                    at + self.terrain.normals[k] * NORMAL_ARROW,
+                    palette::REFERENCE,
+                    0.06,
+                );
+                frame.arrow(
+                    at,
+                    at + self.averaged[k] * NORMAL_ARROW,
+                    palette::ORANGE,
+                    0.06,
+                );
+            }
+        }
+        let (mean, largest) = self.angle_stats();
+        format!(
+            "{r} × {r} vertices, {} m apart, octaves 0 to {}, h = {}: off the border, the averaged \
+             normals differ from the exact ones by {}° on average and {}° at most. Arrows at {} × \
+             {} of the vertices.",
+            format_number(2.0 / (r - 1) as f32),
+            NORMALS_FRACTAL.n,
+            format_number(self.h),
+            format_angle(mean),
+            format_angle(largest),
+            NORMALS_ARROWS,
+            NORMALS_ARROWS
+        )
+    }
+}
+
+/// An angle in degrees with one decimal.
+fn format_angle(deg: f32) -> String {
+    format!("{deg:.1}")
+}
+
+impl Default for Normals {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for Normals {
+    fn terrains(&self) -> Vec<&Terrain> {
+        vec![&self.terrain]
+    }
+    fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 6: the variants side by side.
+
+/// The variants Figure 6 sets side by side, in its order (back row, then front row).
+pub const SIDE_BY_SIDE_VARIANTS: [(Variant, &str); 4] = [
+    (Variant::Sum, "sum g"),
+    (Variant::Ridge, "ridge Σ αᵏ|f|"),
+    (Variant::InvertedRidge, "inverted ridge"),
+    (Variant::Marble, "marble"),
+];
+
+/// Vertices per side of each of Figure 6's terrains.
+pub const VARIANTS_RESOLUTION: usize = 129;
+
+/// Figure 6: the sum, the ridge, the inverted ridge and marble side by side, built from the same
+/// noise with the same N, α and h (ω = 2, s = 1, o = 0), without the octaves finer than their
+/// mesh, so each difference comes from the variant alone.
+pub struct Variants {
+    perm: Permutation,
+    fractal: Fractal,
+    h: f32,
+    terrains: Vec<Terrain>,
+    stale: bool,
+    dirty: bool,
+}
+
+impl Variants {
+    /// The course's N = 9 and α = 0.4, with h = 0.3.
+    pub fn new() -> Self {
+        let mut f = Self {
+            perm: Permutation::perlin(),
+            fractal: Fractal::COURSE,
+            h: 0.3,
+            terrains: (0..SIDE_BY_SIDE_VARIANTS.len())
+                .map(|_| Terrain::new(VARIANTS_RESOLUTION).expect("a valid resolution"))
+                .collect(),
+            stale: false,
+            dirty: true,
+        };
+        f.regenerate();
+        f
+    }
+
+    /// Sets N (whole, 0 to [`OCTAVES_MAX_N`]), α in [0, 1] and h in [0, 2], checked by name;
+    /// nothing changes on an error.
+    pub fn set_params(&mut self, n: f32, alpha: f32, h: f32) -> Result<(), String> {
+        let fractal = Fractal {
+            n: check_n(n, OCTAVES_MAX_N)?,
+            alpha: in_range("alpha", alpha, 0.0, 1.0)?,
+            omega: 2.0,
+        };
+        let h = in_range("h", h, 0.0, 2.0)?;
+        self.fractal = fractal;
+        self.h = h;
+        self.stale = true;
+        Ok(())
+    }
+
+    /// The parameters variant `i` is built from: the last octave capped where the mesh stops
+    /// resolving them.
+    pub fn shown_params(&self, i: usize) -> TerrainParams {
+        let last = last_resolved_octave(VARIANTS_RESOLUTION, 1.0, 2.0).unwrap_or(0);
+        TerrainParams {
+            fractal: Fractal {
+                n: self.fractal.n.min(last),
+                ..self.fractal
+            },
+            h: self.h,
+            s: 1.0,
+            o: 0.0,
+            variant: SIDE_BY_SIDE_VARIANTS[i].0,
+        }
+    }
+
+    fn regenerate(&mut self) {
+        for i in 0..self.terrains.len() {
+            let p = self.shown_params(i);
+            self.terrains[i]
+                .regenerate(&self.perm, &p)
+                .expect("the setters checked every parameter");
+        }
+        self.dirty = true;
+    }
+
+    /// The lowest and the highest height (metres) of variant `i`'s terrain.
+    pub fn height_range(&self, i: usize) -> (f32, f32) {
+        self.terrains[i]
+            .positions
+            .iter()
+            .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.y), hi.max(p.y))
+            })
+    }
+
+    /// Where terrain i sits: two across, two deep.
+    pub fn placement(i: usize) -> Vec3 {
+        Vec3::new((i % 2) as f32 * 2.6 - 1.3, 0.0, (i / 2) as f32 * 2.7 - 1.35)
+    }
+
+    pub fn draw(&mut self, frame: &mut Frame, meshes: &[MeshId]) -> String {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        for (i, &mesh) in meshes.iter().enumerate().take(self.terrains.len()) {
+            let at = Self::placement(i);
+            frame.mesh_vertex_colors(mesh, Mat4::from_translation(at));
+            frame.label(
+                at + Vec3::new(-0.9, 0.0, 1.15),
+                SIDE_BY_SIDE_VARIANTS[i].1,
+                palette::DARK,
+            );
+        }
+        let h_top = (0.6 * self.h).max(0.1);
+        frame.keep_box_in_view(
+            Self::placement(0) + Vec3::new(-1.0, -h_top, -1.0),
+            Self::placement(3) + Vec3::new(1.0, h_top, 1.25),
+        );
+        let p = self.shown_params(0);
+        let ranges: Vec<String> = (0..self.terrains.len())
+            .map(|i| {
+                let (lo, hi) = self.height_range(i);
+                format!(
+                    "{} from {} to {} m",
+                    SIDE_BY_SIDE_VARIANTS[i].1,
+                    format_number(lo),
+                    format_number(hi)
+                )
+            })
+            .collect();
+        let mut note = format!(
+            "{0} × {0} vertices each, N = {1}, α = {2}, h = {3}, ω = 2, s = 1, o = 0. Heights: {4}.",
+            VARIANTS_RESOLUTION,
+            self.fractal.n,
+            format_number(self.fractal.alpha),
+            format_number(self.h),
+            ranges.join("; ")
+        );
+        if p.fractal.n < self.fractal.n {
+            note += &format!(
+                " Octaves {} to {} are finer than these meshes and left out.",
+                p.fractal.n + 1,
+                self.fractal.n
+            );
+        }
+        note
+    }
+}
+
+impl Default for Variants {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl TerrainFigure for Variants {
+    fn terrains(&self) -> Vec<&Terrain> {
+        self.terrains.iter().collect()
+    }
+    fn take_dirty(&mut self) -> bool {
+        if std::mem::take(&mut self.stale) {
+            self.regenerate();
+        }
+        std::mem::take(&mut self.dirty)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figure 8: procedural textures.
+
+/// Texels per side of each of Figure 8's textures.
 pub const TEXTURE_SIZE: usize = 128;
 
-/// Figure 6: marble, wood and clouds, each written into an RGBA buffer and shown by the renderer
+/// Figure 8: marble, wood and clouds, each written into an RGBA buffer and shown by the renderer
 /// as a texture on a square (uploaded once, then rewritten in place when a parameter changes).
 pub struct Textures {
     perm: Permutation,
@@ -1399,7 +1781,7 @@ impl Default for Textures {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 5: the course's quiz.
+// Figure 7: the course's quiz.
 
 /// One of the quiz's parameter sets and why it looks the way it does.
 pub struct QuizSet {
@@ -1462,7 +1844,7 @@ pub fn quiz_sets() -> [QuizSet; 6] {
     ]
 }
 
-/// Figure 5: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
+/// Figure 7: six terrains `a`–`f` from the six sets in a hidden order; the student assigns a
 /// set to each and checks.
 pub struct Quiz {
     perm: Permutation,
@@ -1604,9 +1986,9 @@ impl TerrainFigure for Quiz {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Figure 8: fractals.
+// Figure 10: fractals.
 
-/// Figure 8: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
+/// Figure 10: the Koch snowflake (left) and the Sierpinski triangle (right) at one depth; with
 /// "show previous depth" the depth before is drawn in grey over it.
 pub struct Fractals {
     depth: u32,

@@ -3,7 +3,7 @@
 
 use super::{js, Viewer};
 use crate::draw::MeshId;
-use crate::figures::blend_shapes::FaceFigure;
+use crate::figures::blend_shapes::{FaceFigure, TargetsFigure};
 use crate::mesh::MeshData;
 use wasm_bindgen::prelude::*;
 
@@ -148,6 +148,81 @@ impl BlendShapeFaceScene {
 }
 
 impl Default for BlendShapeFaceScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Figure 1: the base head and each target on its own.
+#[wasm_bindgen]
+pub struct BlendShapeTargetsScene {
+    scene: TargetsFigure,
+    meshes: Vec<MeshId>,
+}
+
+#[wasm_bindgen]
+impl BlendShapeTargetsScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> BlendShapeTargetsScene {
+        BlendShapeTargetsScene {
+            scene: TargetsFigure::new(),
+            meshes: Vec::new(),
+        }
+    }
+
+    #[wasm_bindgen(js_name = targetNames)]
+    pub fn target_names(&self) -> Vec<String> {
+        self.scene.target_names()
+    }
+
+    /// The weight every target head is shown at, in [0, 1.5].
+    #[wasm_bindgen(js_name = setWeight)]
+    pub fn set_weight(&mut self, w: f32) -> Result<(), JsError> {
+        self.scene.set_weight(w).map_err(js)
+    }
+
+    /// Arrows along w·dₖ on each target head.
+    #[wasm_bindgen(js_name = setShowDeltas)]
+    pub fn set_show_deltas(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
+        self.scene.set_show_deltas(on);
+        Ok(())
+    }
+
+    /// Blends what changed, uploads and draws. Returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        if self.meshes.is_empty() {
+            let indices = self.scene.indices().to_vec();
+            for head in &self.scene.heads {
+                let data = MeshData {
+                    positions: head.positions.clone(),
+                    normals: head.normals.clone(),
+                    indices: indices.clone(),
+                };
+                let id = viewer
+                    .renderer
+                    .create_mesh(&viewer.gpu, &data, Some(&head.colors));
+                self.meshes.push(id);
+            }
+        }
+        let note = self
+            .scene
+            .draw(&mut viewer.renderer.frame, &self.meshes)
+            .map_err(js)?;
+        for (&id, head) in self.meshes.iter().zip(&mut self.scene.heads) {
+            if head.take_dirty() {
+                viewer
+                    .renderer
+                    .update_mesh(&viewer.gpu, id, &head.positions, &head.normals)
+                    .map_err(|e| JsError::new(&e))?;
+            }
+        }
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for BlendShapeTargetsScene {
     fn default() -> Self {
         Self::new()
     }

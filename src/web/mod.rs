@@ -58,7 +58,7 @@ figures_module! {
     mod transforms;
     mod viewer;
 
-    pub use blend_shapes::BlendShapeFaceScene;
+    pub use blend_shapes::{BlendShapeFaceScene, BlendShapeTargetsScene};
     pub use blending::{BlendScene, LocomotionScene};
     pub use boids::{BoidRulesScene, FlockScene};
     pub use cloth::{check_cloth, ClothScene, SpringScene};
@@ -67,7 +67,7 @@ figures_module! {
     pub use ik::{AimScene, IkScene};
     pub use noise::{
         FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
-        TexturesScene,
+        TexturesScene, TerrainNormalsScene, VariantsScene,
     };
     pub use particles::{check_emitter, BounceScene, EmitterScene, FreeFallScene, SquashScene};
     pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};

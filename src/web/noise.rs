@@ -5,7 +5,8 @@
 use super::{js, Viewer};
 use crate::draw::MeshId;
 use crate::figures::noise::{
-    Fractals, Noise1d, Noise2d, Octaves, Quiz, TerrainFigure, TerrainScene, Textures,
+    Fractals, Noise1d, Noise2d, Normals, Octaves, Quiz, TerrainFigure, TerrainScene, Textures,
+    Variants,
 };
 use std::collections::HashMap;
 use wasm_bindgen::prelude::*;
@@ -344,7 +345,7 @@ impl Default for TerrainFigureScene {
     }
 }
 
-/// Figure 6: procedural textures.
+/// Figure 8: procedural textures.
 #[wasm_bindgen]
 pub struct TexturesScene {
     scene: Textures,
@@ -404,7 +405,7 @@ impl Default for TexturesScene {
     }
 }
 
-/// Figure 5: the terrain quiz.
+/// Figure 7: the terrain quiz.
 #[wasm_bindgen]
 pub struct QuizScene {
     scene: Quiz,
@@ -448,7 +449,83 @@ impl Default for QuizScene {
     }
 }
 
-/// Figure 7: Koch snowflake and Sierpinski triangle.
+/// Figure 5: exact normals against the average of the faces around each vertex.
+#[wasm_bindgen]
+pub struct TerrainNormalsScene {
+    scene: Normals,
+    gpu: GpuTerrains,
+}
+
+#[wasm_bindgen]
+impl TerrainNormalsScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> TerrainNormalsScene {
+        TerrainNormalsScene {
+            scene: Normals::new(),
+            gpu: GpuTerrains::default(),
+        }
+    }
+    /// `[vertices per side, mean angle (°), largest angle (°)]` per resolution offered, at the
+    /// current h, flattened.
+    #[wasm_bindgen(js_name = anglesByResolution)]
+    pub fn angles_by_resolution(&self) -> Vec<f32> {
+        self.scene.angles_by_resolution().concat()
+    }
+    /// Vertices per side (9, 17, 33, 65 or 129) and h in [0, 1]; nothing changes on an error.
+    #[wasm_bindgen(js_name = setParams)]
+    pub fn set_params(&mut self, resolution: f32, h: f32) -> Result<(), JsError> {
+        self.scene.set_params(resolution, h).map_err(js)
+    }
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let meshes = self.gpu.sync(viewer, &mut self.scene)?.to_vec();
+        let note = self.scene.draw(&mut viewer.renderer.frame, meshes[0]);
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for TerrainNormalsScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Figure 6: the variants side by side: sum, ridge, inverted ridge, marble from the same noise.
+#[wasm_bindgen]
+pub struct VariantsScene {
+    scene: Variants,
+    gpu: GpuTerrains,
+}
+
+#[wasm_bindgen]
+impl VariantsScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> VariantsScene {
+        VariantsScene {
+            scene: Variants::new(),
+            gpu: GpuTerrains::default(),
+        }
+    }
+    /// N (whole, 0 to 9), α in [0, 1], h in [0, 2]; nothing changes on an error.
+    #[wasm_bindgen(js_name = setParams)]
+    pub fn set_params(&mut self, n: f32, alpha: f32, h: f32) -> Result<(), JsError> {
+        self.scene.set_params(n, alpha, h).map_err(js)
+    }
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let meshes = self.gpu.sync(viewer, &mut self.scene)?.to_vec();
+        let note = self.scene.draw(&mut viewer.renderer.frame, &meshes);
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for VariantsScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Figure 10: Koch snowflake and Sierpinski triangle.
 #[wasm_bindgen]
 pub struct FractalsScene {
     scene: Fractals,
