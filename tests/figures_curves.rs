@@ -565,7 +565,7 @@ fn the_captions_preset_claims_hold() {
         s.set_keys(t, v).unwrap();
         path_of(&s)
     };
-    // Figure 6: "loop-prone makes A (Catmull-Rom) loop while B (centripetal) passes straight".
+    // Figure 7: "loop-prone makes A (Catmull-Rom) loop while B (centripetal) passes straight".
     assert!(self_intersects(&path("cardinal", "loop")));
     assert!(!self_intersects(&path("centripetal", "loop")));
     // "zig-zag: the paths differ by up to 7.5 cm, and B's speed jumps at every key by 0.3 to
@@ -611,6 +611,19 @@ fn the_captions_preset_claims_hold() {
             speed_at(time)
         );
     }
+    // Figure 8, same keys: at constant speed the red curve is flat at 2.1 m/s (6.34 m in 3 s),
+    // and the keyed in-betweens sit mostly on the middle segment (2.5 of the 3 seconds).
+    s.set_arc_length(true);
+    let rows = s.sample_motion(601).unwrap();
+    for r in &rows {
+        assert!((r[2] - 2.11).abs() < 0.01, "constant speed at {} s: {}", r[0], r[2]);
+    }
+    s.set_arc_length(false);
+    s.set_ghost_count(24).unwrap();
+    let mut ghosts = Vec::new();
+    s.ghosts(&mut ghosts);
+    let on_middle = ghosts.iter().filter(|g| g.y > 1.75 && g.x > -1.6 && g.x < 1.4).count();
+    assert!(on_middle * 2 > ghosts.len(), "{on_middle} of {} ghosts on the middle segment", ghosts.len());
 }
 
 #[test]
@@ -796,6 +809,14 @@ fn spacing_charts_of_the_eases() {
         if ["smoothstep", "smootherstep", "sine", "inout"].contains(&name) {
             assert!(rows[0][2].abs() < 1e-5 && rows[100][2].abs() < 1e-4, "{name}");
         }
+    }
+    // Figure 8 with smoothstep: both speeds start and end at zero.
+    let mut s = KeyframesScene::new();
+    s.set_ease("smoothstep").unwrap();
+    s.set_arc_length(true);
+    let rows = s.sample_motion(201).unwrap();
+    for r in [rows[0], rows[200]] {
+        assert!(r[1].abs() < 1e-4 && r[2].abs() < 1e-4, "{r:?}");
     }
     assert!(spacing_ticks("bounce", 7).is_err());
     assert!(spacing_ticks("none", 1).is_err());

@@ -555,6 +555,7 @@ if (lagrangeViewer) {
   });
   const note = document.getElementById('cardinal-note');
   const RULES = [['time', C.a, 'divided by the time'], ['halved', C.b, 'halved']];
+  const HANDLE_SEC = 0.25; // an arrow is the distance covered in 0.25 s at the key's velocity
   let layer = null;
   const update = () => {
     const keys = cardinal.keys();
@@ -562,9 +563,18 @@ if (lagrangeViewer) {
       rule, color, title,
       path: cardinal.samplePath(rule, 240), ghosts: cardinal.samplePath(rule, 25), d: cardinal.tangents(rule),
     }));
-    const dx = sideOffset(sides[0].path);
+    // Each side's extent: its path and the tips of its tangent arrows.
+    const extent = (side) => {
+      const pts = [...side.path];
+      for (let k = 0; k < keys.length / 3; k++) {
+        pts.push(keys[3 * k + 1] + side.d[2 * k] * HANDLE_SEC, keys[3 * k + 2] + side.d[2 * k + 1] * HANDLE_SEC);
+      }
+      return pts;
+    };
+    const [ea, eb] = sides.map(extent);
+    const dx = sideOffset([...ea, ...eb]);
     layer = { keys, sides, dx };
-    view.fit([...sides[0].path, ...shifted(sides[1].path, dx)]);
+    view.fit([...ea, ...shifted(eb, dx)]);
     plot.setData(columns(cardinal.sampleSpeeds(301), 3));
     note.textContent = cardinal.note();
   };
@@ -573,7 +583,6 @@ if (lagrangeViewer) {
     .name('keys').onChange((v) => { cardinal.setPreset(v); update(); });
   gui.add(cp, 'tension', 0, 2, 0.01).name('tension μ').onChange((v) => { cardinal.setTension(v); update(); });
   update();
-  const HANDLE_SEC = 0.25; // an arrow is the distance covered in 0.25 s at the key's velocity
   lesson.onFrame(() => {
     const { ctx } = view;
     ctx.clearRect(0, 0, view.w, view.h);
@@ -613,6 +622,9 @@ if (lagrangeViewer) {
   const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Timing' });
   gui.add(p, 'ease', EASES).name('ease (slow in / out)').onChange((v) => edit(() => scene.setEase(v)));
   gui.add(p, 'arcLength').name('Figure 1 at constant speed').onChange((v) => edit(() => scene.setArcLength(v)));
+  const tp = { preset: '' };
+  gui.add(tp, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
+    .name('keys (all figures)').onChange((v) => { if (v) edit(() => scene.loadPreset(v)); });
   const speedPlot = new Plot(document.getElementById('keys-speed'), {
     title: 'Speed |p′(t)|', xLabel: 'time (s)', yLabel: 'speed (m/s)',
     series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1,

@@ -1418,10 +1418,12 @@ impl CardinalScene {
                 .iter()
                 .map(|r| if rule == ChordRule::ByTime { r[1] } else { r[2] })
                 .fold(0.0, f32::max);
+            // Rounded to the millimetre, so a straight path reads 0 and not 6e-7.
+            let bulge = (self.max_bulge(rule) * 1000.0).round() / 1000.0;
             format!(
                 "{name}: top speed {} m/s, strays up to {} m from the straight segments.",
                 format_number(top),
-                format_number(self.max_bulge(rule))
+                format_number(bulge)
             )
         };
         format!(
