@@ -247,6 +247,11 @@ impl Spacing {
             }
         };
         frame.grid(14, 0.5);
+        // The path, its straight twin behind and the chart in front: fitted at every canvas size.
+        frame.keep_box_in_view(
+            Vec3::new(START.x - 0.3, 0.0, TWIN_OFFSET.z - 0.3),
+            Vec3::new(END.x + 0.3, START.y + self.arc_height + 0.45, 1.0),
+        );
         let path: Vec<Vec3> = (0..=64)
             .map(|k| arc_point(START, END, Vec3::Y, self.arc_height, k as f32 / 64.0))
             .collect();
@@ -393,6 +398,11 @@ impl JumpComparison {
     pub fn draw(&self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let t = in_range("time", time_sec, 0.0, self.duration())?;
         frame.grid(12, 0.5);
+        // Both balls from the ground to above the apex, whatever the time.
+        frame.keep_box_in_view(
+            Vec3::new(-1.7, -0.3, -0.4),
+            Vec3::new(1.7, self.jump.apex + 2.0 * RADIUS + 0.5, 0.4),
+        );
         let plain = self.jump.plain(t);
         frame.mesh(
             MeshId::SPHERE,
@@ -670,6 +680,11 @@ impl FollowThrough {
         let t = in_range("time", time_sec, 0.0, Self::DURATION)?;
         self.simulate(t);
         frame.grid(12, 0.5);
+        // The body's whole slide and the antenna above it: the camera fits this at every size.
+        frame.keep_box_in_view(
+            Vec3::new(-2.0, 0.0, -0.3),
+            Vec3::new(2.0, Self::base(0.0).y + Self::LENGTH + 0.3, 0.3),
+        );
         let antenna = self.shown();
         let base = antenna.positions[0];
         // A small body, so the antenna (the subject) is not dwarfed by it.
@@ -862,12 +877,9 @@ impl StretchComparison {
             rest.on_top = true;
             frame.stroke(&circle, palette::DARK, rest);
             frame.label(centre + Vec3::new(0.0, -1.45, 0.0), title, color);
-            frame.arrow(
-                centre - a * 1.35,
-                centre + a * 1.35,
-                DIRECTION,
-                0.12,
-            );
+            // Longer than the ball at every stretch, so both ends show.
+            let reach = STRETCH_RADIUS * self.stretch.max(1.0) + 0.35;
+            frame.arrow(centre - a * reach, centre + a * reach, DIRECTION, 0.12);
             // The half-widths across the motion, along and across.
             let half_across = (m * across).length() * STRETCH_RADIUS;
             frame.wide_line_on_top(
@@ -877,8 +889,9 @@ impl StretchComparison {
                 crate::draw::CURVE_PX,
             );
         }
-        frame.label(KEPT_CENTRE + a * 1.5, "a", DIRECTION);
-        frame.keep_box_in_view(Vec3::new(-3.0, -0.35, -0.3), Vec3::new(3.0, 2.95, 0.3));
+        let reach = STRETCH_RADIUS * self.stretch.max(1.0) + 0.5;
+        frame.label(KEPT_CENTRE + a * reach, "a", DIRECTION);
+        frame.keep_box_in_view(Vec3::new(-3.2, -0.35, -0.3), Vec3::new(3.2, 2.95, 0.3));
         let across_kept = 1.0 / self.stretch.sqrt();
         format!(
             "s = {} along a. Left: scale (s, 1/√s, 1/√s) = ({}, {}, {}), volume × {}, {} times as \
