@@ -810,6 +810,9 @@ fn spacing_charts_of_the_eases() {
             assert!(rows[0][2].abs() < 1e-5 && rows[100][2].abs() < 1e-4, "{name}");
         }
     }
+    // Figure 4's Try: at s = 0.3 the note reads h00 = 0.784 and h01 = 0.216, which sum to 1.
+    let note = hermite_basis_note(direct, 0.3, false).unwrap();
+    assert!(note.contains("h00 = 0.784") && note.contains("h01 = 0.216"), "{note}");
     // Figure 8 with smoothstep: both speeds start and end at zero.
     let mut s = KeyframesScene::new();
     s.set_ease("smoothstep").unwrap();

@@ -298,6 +298,9 @@ fn the_jump_stretch_is_continuous_and_capped_at_1_6() {
     scene.set_principles(0.3, 0.2).unwrap();
     let note = scene.draw(&mut Frame::default(), 0.55).unwrap();
     assert!(note.contains("capped at 1.600"), "{note}");
+    // Scrubbing through take-off: the end of the push-off is capped too, at the take-off speed.
+    let note = scene.draw(&mut Frame::default(), 0.499).unwrap();
+    assert!(note.contains("capped at 1.600") && note.contains("would be 2.280"), "{note}");
     // At the apex (1 s) the ball is not moving: not stretched.
     let rows = scene.sample_heights(241).unwrap();
     let apex = rows.iter().find(|r| (r[0] - 1.0).abs() < 1e-4).unwrap();

@@ -89,7 +89,8 @@ function makeView(canvas, reserveBottom = 0) {
     }
     ctx.stroke();
     ctx.setLineDash([]);
-    if (held) for (let i = 0; i < xy.length; i += 2) v.dot(xy[i], xy[i + 1], 5, color);
+    // Held values a little larger than the key dots drawn over them, so their colour rings the key.
+    if (held) for (let i = 0; i < xy.length; i += 2) v.dot(xy[i], xy[i + 1], 7, color);
   };
   v.dot = (x, y, r, color) => {
     const [px, py] = v.toPx(x, y);
@@ -510,7 +511,7 @@ if (lagrangeViewer) {
   const lagrange = new LagrangeScene();
   const lp = { keys: 10, spline: true };
   const gui = new GUI({ container: document.querySelector('#fig-lagrange .panel'), title: 'Lagrange' });
-  gui.add(lp, 'keys', 3, 14, 1).name('keys (blue)').onChange((v) => lagrange.setKeyCount(v));
+  gui.add(lp, 'keys', 3, 16, 1).name('keys (blue)').onChange((v) => lagrange.setKeyCount(v));
   gui.add(lp, 'spline').name('Catmull-Rom (green)').onChange((v) => lagrange.setShowSpline(v));
   lesson.onFrame(() => {
     lagrange.draw(lagrangeViewer);

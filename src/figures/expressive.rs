@@ -439,13 +439,21 @@ impl JumpComparison {
             "at rest"
         };
         let in_flight = (self.jump.wind_up..self.jump.wind_up + self.jump.flight).contains(&t);
-        let capped = if in_flight && p.stretch >= MAX_STRETCH {
+        // The push-off stretches towards the take-off stretch, so when that is capped the note
+        // says so there too, with the take-off speed.
+        let pushing_off = (push_off..self.jump.wind_up).contains(&t);
+        let speed = if in_flight {
+            p.vertical_velocity.abs()
+        } else {
+            self.jump.take_off_speed()
+        };
+        let capped = if (in_flight || pushing_off) && p.stretch >= MAX_STRETCH - 1e-4 {
             format!(
                 ", capped at {} (1 + {} × {} m/s would be {})",
                 format_number(MAX_STRETCH),
                 format_number(self.jump.stretch_per_speed),
-                format_number(p.vertical_velocity.abs()),
-                format_number(1.0 + self.jump.stretch_per_speed * p.vertical_velocity.abs()),
+                format_number(speed),
+                format_number(1.0 + self.jump.stretch_per_speed * speed),
             )
         } else {
             String::new()
