@@ -1,6 +1,6 @@
 // Lesson 02: wires the curve editor, the controls, the plots and the figures to the wasm scenes.
 // No interpolation here: JavaScript only draws what Rust sampled and forwards the mouse edits.
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded } from '../../www/lesson.js';
 import {
   KeyframesScene, LagrangeScene, CardinalScene, hermiteBasisSamples, hermiteBasisNote, easeSamples, spacingTicks,
 } from '../../pkg/inbetween.js';
@@ -556,8 +556,8 @@ if (lagrangeViewer) {
   });
   const note = document.getElementById('cardinal-note');
   const RULES = [['time', C.a, 'divided by the time'], ['halved', C.b, 'halved']];
-  const HANDLE_SEC = 0.25; // an arrow is the distance covered in 0.25 s at the key's velocity
   let layer = null;
+  const HANDLE_SEC = 0.25; // an arrow is the distance covered in 0.25 s at the key's velocity
   const update = () => {
     const keys = cardinal.keys();
     const sides = RULES.map(([rule, color, title]) => ({
@@ -577,18 +577,28 @@ if (lagrangeViewer) {
     layer = { keys, sides, dx };
     view.fit([...ea, ...shifted(eb, dx)]);
     plot.setData(columns(cardinal.sampleSpeeds(301), 3));
-    note.textContent = cardinal.note();
+    layer.note = cardinal.note();
   };
   const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Tangents' });
   gui.add(cp, 'preset', { 'uneven times': 'uneven', default: 'default', 'loop-prone (1 s apart)': 'loop', 'zig-zag': 'centripetal' })
-    .name('keys').onChange((v) => { cardinal.setPreset(v); update(); });
-  gui.add(cp, 'tension', 0, 2, 0.01).name('tension μ').onChange((v) => { cardinal.setTension(v); update(); });
-  update();
+    .name('keys');
+  gui.add(cp, 'tension', 0, 2, 0.01).name('tension μ');
+  // A typed value the scene refuses is named in the note and the controls go back.
+  let rejected = '';
+  const apply = guarded(gui, cp, () => {
+    cardinal.setPreset(cp.preset);
+    cardinal.setTension(cp.tension);
+    update();
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
   lesson.onFrame(() => {
     const { ctx } = view;
     ctx.clearRect(0, 0, view.w, view.h);
     view.grid();
     const { keys, sides, dx } = layer;
+    const text = [rejected, layer.note].filter(Boolean).join(' ');
+    if (note.textContent !== text) note.textContent = text;
     const n = keys.length / 3;
     sides.forEach((side, j) => {
       const off = j * dx;
@@ -699,15 +709,18 @@ if (lagrangeViewer) {
     widths: [3, 2, 1.5], dashes: [null, null, [6, 4]],
   });
   let rows = [];
-  const update = () => {
+  let rejected = '';
+  const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Spacing' });
+  gui.add(ep, 'ease', EASES).name('ease');
+  gui.add(ep, 'frames', 2, 30, 1).name('frames');
+  const apply = guarded(gui, ep, () => {
     rows = Object.entries(EASES).map(([label, name]) => ({ label, name, ticks: spacingTicks(name, ep.frames) }));
     const c = columns(easeSamples(ep.ease, 101), 3);
     plot.setData([c[0], c[1], c[2], c[0]]);
-  };
-  const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Spacing' });
-  gui.add(ep, 'ease', EASES).name('ease').onChange(update);
-  gui.add(ep, 'frames', 2, 30, 1).name('frames').onChange(update);
-  update();
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const easeNote = figure.querySelector('.note');
   const draw = () => {
     const r = canvas.getBoundingClientRect();
     const dpr = window.devicePixelRatio || 1;
@@ -739,6 +752,7 @@ if (lagrangeViewer) {
     const r = canvas.getBoundingClientRect();
     const key = `${ep.ease} ${ep.frames} ${r.width} ${r.height}`;
     if (key !== last) { draw(); last = key; }
+    if (easeNote.textContent !== rejected) easeNote.textContent = rejected;
     markDrawn('#fig-ease');
   });
 }
