@@ -127,14 +127,32 @@ function makeView(canvas, reserveBottom = 0) {
   return v;
 }
 
-/** How far right the second copy of a side-by-side pair is drawn: the first's width plus a gap. */
-function sideOffset(xy) {
-  let [x0, x1] = [Infinity, -Infinity];
-  for (let i = 0; i < xy.length; i += 2) { x0 = Math.min(x0, xy[i]); x1 = Math.max(x1, xy[i]); }
-  return Number.isFinite(x0) ? (x1 - x0) * 1.2 + 0.6 : 6;
+/**
+ * Where the second copy of a pair of drawings goes, `[dx, dy]` metres: beside the first or under
+ * it, whichever lets `view` draw both larger (a wide canvas puts them side by side, a tall one one
+ * above the other). `xy` holds every point of one copy.
+ */
+function pairOffset(view, xy) {
+  let [x0, x1, y0, y1] = [Infinity, -Infinity, Infinity, -Infinity];
+  for (let i = 0; i < xy.length; i += 2) {
+    x0 = Math.min(x0, xy[i]); x1 = Math.max(x1, xy[i]);
+    y0 = Math.min(y0, xy[i + 1]); y1 = Math.max(y1, xy[i + 1]);
+  }
+  if (!Number.isFinite(x0)) return [6, 0];
+  const [w, h] = [Math.max(x1 - x0, 0.5), Math.max(y1 - y0, 0.5)];
+  const [gapX, gapY] = [w * 0.2 + 0.6, 0.9]; // room for the titles above each copy
+  const side = Math.min(view.w / (2 * w + gapX), view.h / h);
+  const stacked = Math.min(view.w / w, view.h / (2 * h + gapY));
+  return side >= stacked ? [w + gapX, 0] : [0, -(h + gapY)];
 }
-/** `[x0, y0, …]` moved right by `dx`. */
-const shifted = (xy, dx) => xy.map((v, i) => (i % 2 === 0 ? v + dx : v));
+/** `xy` plus a point 0.6 m above its highest, where a copy's title goes, so a fit keeps it. */
+function withTitleRoom(xy) {
+  let top = -Infinity; let x = 0;
+  for (let i = 0; i < xy.length; i += 2) if (xy[i + 1] > top) { top = xy[i + 1]; x = xy[i]; }
+  return Number.isFinite(top) ? [...xy, x, top + 0.6] : xy;
+}
+/** `[x0, y0, …]` moved by `[dx, dy]`. */
+const shifted = (xy, [dx, dy]) => xy.map((v, i) => v + (i % 2 === 0 ? dx : dy));
 
 // ---- Figure 1: curve editor + 3D view. Its scene and timeline drive Figures 2, 6, 7 and 8. ----
 const keysViewer = await lesson.figure('#fig-keys');
@@ -573,9 +591,7 @@ if (lagrangeViewer) {
       return pts;
     };
     const [ea, eb] = sides.map(extent);
-    const dx = sideOffset([...ea, ...eb]);
-    layer = { keys, sides, dx };
-    view.fit([...ea, ...shifted(eb, dx)]);
+    layer = { keys, sides, extent: withTitleRoom([...ea, ...eb]), off: null, size: '' };
     plot.setData(columns(cardinal.sampleSpeeds(301), 3));
     layer.note = cardinal.note();
   };
@@ -596,29 +612,36 @@ if (lagrangeViewer) {
     const { ctx } = view;
     ctx.clearRect(0, 0, view.w, view.h);
     view.grid();
-    const { keys, sides, dx } = layer;
+    // Beside or under each other, refitted when the data or the canvas's size changes.
+    const size = `${view.w}x${view.h}`;
+    if (layer.size !== size) {
+      layer.off = pairOffset(view, layer.extent);
+      view.fit([...layer.extent, ...shifted(layer.extent, layer.off)]);
+      layer.size = size;
+    }
+    const { keys, sides, off: [ox, oy] } = layer;
     const text = [rejected, layer.note].filter(Boolean).join(' ');
     if (note.textContent !== text) note.textContent = text;
     const n = keys.length / 3;
     sides.forEach((side, j) => {
-      const off = j * dx;
-      view.path(shifted(side.path, off), side.color);
-      for (let i = 0; i < side.ghosts.length; i += 2) view.dot(side.ghosts[i] + off, side.ghosts[i + 1], 3, C.ghost);
+      const [dx, dy] = [j * ox, j * oy];
+      view.path(shifted(side.path, [dx, dy]), side.color);
+      for (let i = 0; i < side.ghosts.length; i += 2) view.dot(side.ghosts[i] + dx, side.ghosts[i + 1] + dy, 3, C.ghost);
       for (let k = 0; k < n; k++) {
-        const [x, y] = [keys[3 * k + 1] + off, keys[3 * k + 2]];
+        const [x, y] = [keys[3 * k + 1] + dx, keys[3 * k + 2] + dy];
         const [b, a] = [Math.max(0, k - 1), Math.min(n - 1, k + 1)];
-        view.dashed(keys[3 * b + 1] + off, keys[3 * b + 2], keys[3 * a + 1] + off, keys[3 * a + 2], C.ghost);
+        view.dashed(keys[3 * b + 1] + dx, keys[3 * b + 2] + dy, keys[3 * a + 1] + dx, keys[3 * a + 2] + dy, C.ghost);
         view.arrow(x, y, x + side.d[2 * k] * HANDLE_SEC, y + side.d[2 * k + 1] * HANDLE_SEC, C.tangent, 2.5);
       }
       for (let k = 0; k < n; k++) {
-        view.dot(keys[3 * k + 1] + off, keys[3 * k + 2], 5, C.key);
-        view.text(keys[3 * k + 1] + off + 0.1, keys[3 * k + 2] - 0.3, `${k}`, C.ink);
+        view.dot(keys[3 * k + 1] + dx, keys[3 * k + 2] + dy, 5, C.key);
+        view.text(keys[3 * k + 1] + dx + 0.1, keys[3 * k + 2] + dy - 0.3, `${k}`, C.ink);
       }
       let top = -Infinity; let [x0, x1] = [Infinity, -Infinity];
       for (let i = 0; i < side.path.length; i += 2) {
         top = Math.max(top, side.path[i + 1]); x0 = Math.min(x0, side.path[i]); x1 = Math.max(x1, side.path[i]);
       }
-      view.text((x0 + x1) / 2 + off - 0.7, top + 0.35, side.title, side.color);
+      view.text((x0 + x1) / 2 + dx - 0.7, top + dy + 0.35, side.title, side.color);
     });
     markDrawn('#fig-cardinal');
   });
@@ -629,7 +652,7 @@ if (lagrangeViewer) {
   const figure = document.getElementById('fig-timing');
   const view = makeView(figure.querySelector('canvas'));
   const twins = { keyed: new KeyframesScene(), even: new KeyframesScene() };
-  const layers = { keyed: { path: [], ghosts: [] }, even: { path: [], ghosts: [] }, held: false, dx: 0 };
+  const layers = { keyed: { path: [], ghosts: [] }, even: { path: [], ghosts: [] }, held: false, off: [0, 0], size: '' };
   const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Timing' });
   gui.add(p, 'ease', EASES).name('ease (slow in / out)').onChange((v) => edit(() => scene.setEase(v)));
   gui.add(p, 'arcLength').name('Figure 1 at constant speed').onChange((v) => edit(() => scene.setArcLength(v)));
@@ -666,30 +689,37 @@ if (lagrangeViewer) {
       cols.push(c);
     }
     layers.held = twins.keyed.isHeld;
-    layers.dx = sideOffset(layers.keyed.path);
+    layers.size = ''; // refit on the next frame
     timingNote.textContent = [
       twins.even.timingNote,
-      p.arcLength ? "Figure 1's ball follows the constant-speed timing (right)." : "Figure 1's ball follows the keyed timing (left).",
+      p.arcLength ? "Figure 1's ball follows the constant-speed timing (red)." : "Figure 1's ball follows the keyed timing (blue).",
     ].filter(Boolean).join(' ');
-    view.fit([...layers.keyed.path, ...shifted(layers.even.path, layers.dx)]);
     const [k, e] = cols;
     speedPlot.setData([k[0], k[1], k[2]]);
     accelPlot.setData([k[0], k[3], e[3]]);
   });
   lesson.onFrame(() => {
     const tau = timeline.time;
+    // Beside or under each other, refitted when the data or the canvas's size changes.
+    const size = `${view.w}x${view.h}`;
+    if (layers.size !== size) {
+      const both = withTitleRoom([...layers.keyed.path, ...layers.even.path]);
+      layers.off = pairOffset(view, both);
+      view.fit([...both, ...shifted(both, layers.off)]);
+      layers.size = size;
+    }
     view.ctx.clearRect(0, 0, view.w, view.h);
     view.grid();
     [['keyed', C.path, 'keyed timing'], ['even', C.ball, 'constant speed']].forEach(([name, color, title], j) => {
-      const off = j * layers.dx;
+      const off = [j * layers.off[0], j * layers.off[1]];
       const { path, ghosts } = layers[name];
       view.path(shifted(path, off), color, layers.held);
-      for (let i = 0; i < ghosts.length; i += 2) view.dot(ghosts[i] + off, ghosts[i + 1], 3.5, C.ghost);
+      for (let i = 0; i < ghosts.length; i += 2) view.dot(ghosts[i] + off[0], ghosts[i + 1] + off[1], 3.5, C.ghost);
       const [x, y] = twins[name].position(tau);
-      view.dot(x + off, y, 7, color);
+      view.dot(x + off[0], y + off[1], 7, color);
       let top = -Infinity; let [x0, x1] = [Infinity, -Infinity];
       for (let i = 0; i < path.length; i += 2) { top = Math.max(top, path[i + 1]); x0 = Math.min(x0, path[i]); x1 = Math.max(x1, path[i]); }
-      view.text((x0 + x1) / 2 + off - 0.6, top + 0.35, title, color);
+      view.text((x0 + x1) / 2 + off[0] - 0.6, top + off[1] + 0.35, title, color);
     });
     cursor(speedPlot, scene.startSec + tau);
     cursor(accelPlot, scene.startSec + tau);

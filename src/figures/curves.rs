@@ -1429,8 +1429,8 @@ impl CardinalScene {
         format!(
             "μ = {}. {} {}",
             format_number(self.tension),
-            line(ChordRule::ByTime, "Divided by the time (left)"),
-            line(ChordRule::Halved, "Halved (right)")
+            line(ChordRule::ByTime, "Divided by the time (blue)"),
+            line(ChordRule::Halved, "Halved (pink)")
         )
     }
 }
