@@ -565,7 +565,7 @@ fn the_captions_preset_claims_hold() {
         s.set_keys(t, v).unwrap();
         path_of(&s)
     };
-    // Figure 6: "loop-prone makes A (Catmull-Rom) loop while B (centripetal) passes straight".
+    // Figure 7: "loop-prone makes A (Catmull-Rom) loop while B (centripetal) passes straight".
     assert!(self_intersects(&path("cardinal", "loop")));
     assert!(!self_intersects(&path("centripetal", "loop")));
     // "zig-zag: the paths differ by up to 7.5 cm, and B's speed jumps at every key by 0.3 to
@@ -611,6 +611,19 @@ fn the_captions_preset_claims_hold() {
             speed_at(time)
         );
     }
+    // Figure 8, same keys: at constant speed the red curve is flat at 2.1 m/s (6.34 m in 3 s),
+    // and the keyed in-betweens sit mostly on the middle segment (2.5 of the 3 seconds).
+    s.set_arc_length(true);
+    let rows = s.sample_motion(601).unwrap();
+    for r in &rows {
+        assert!((r[2] - 2.11).abs() < 0.01, "constant speed at {} s: {}", r[0], r[2]);
+    }
+    s.set_arc_length(false);
+    s.set_ghost_count(24).unwrap();
+    let mut ghosts = Vec::new();
+    s.ghosts(&mut ghosts);
+    let on_middle = ghosts.iter().filter(|g| g.y > 1.75 && g.x > -1.6 && g.x < 1.4).count();
+    assert!(on_middle * 2 > ghosts.len(), "{on_middle} of {} ghosts on the middle segment", ghosts.len());
 }
 
 #[test]
@@ -738,4 +751,78 @@ fn the_space_time_view_puts_the_clock_along_the_depth() {
         .iter()
         .zip(frame.segments_of(SPACETIME_COLOR))
         .any(|(x, y)| (x.0 - y.0).length() > 0.05));
+}
+
+#[test]
+fn cardinal_figure_compares_the_time_rule_with_the_halved_chord() {
+    let mut s = CardinalScene::new();
+    // Uneven preset at μ = 1: key 0's tangent is the first segment's slope, 1.53 m in 0.3 s.
+    let by_time = s.tangents(ChordRule::ByTime);
+    let halved = s.tangents(ChordRule::Halved);
+    assert!((by_time[0].length() - 5.09).abs() < 0.01, "{}", by_time[0].length());
+    assert!((halved[0].length() - 1.53).abs() < 0.01, "{}", halved[0].length());
+    // The caption's top speeds: 11.6 m/s by the time rule, 12.6 m/s halved.
+    let rows = s.sample_speeds(401).unwrap();
+    let top = |c: usize| rows.iter().map(|r| r[c]).fold(0.0f32, f32::max);
+    assert!((top(1) - 11.6).abs() < 0.05, "{}", top(1));
+    assert!((top(2) - 12.6).abs() < 0.05, "{}", top(2));
+    assert!(s.note().contains("11.605") && s.note().contains("12.646"), "{}", s.note());
+    // With keys one second apart (the loop preset) both rules agree.
+    s.set_preset("loop").unwrap();
+    assert_eq!(s.tangents(ChordRule::ByTime), s.tangents(ChordRule::Halved));
+    // μ = 0: every tangent is zero, so the ball stops at every key.
+    s.set_preset("uneven").unwrap();
+    s.set_tension(0.0).unwrap();
+    let (times, _) = s.keys();
+    let times = times.to_vec();
+    for rule in [ChordRule::ByTime, ChordRule::Halved] {
+        let track = s.track(rule);
+        for &t in &times {
+            assert!(track.velocity(t).length() < 1e-5, "speed at key {t} s");
+        }
+    }
+    // Rejected input changes nothing.
+    assert!(s.set_tension(2.5).is_err());
+    assert!(s.set_tension(f32::NAN).is_err());
+    assert!(s.set_preset("nope").is_err());
+    assert!(ChordRule::from_name("third").is_err());
+    assert_eq!(s.tangents(ChordRule::ByTime), vec![Vec2::ZERO; 4]);
+    assert!(s.path(ChordRule::ByTime, 1).is_err());
+}
+
+#[test]
+fn spacing_charts_of_the_eases() {
+    // Linear spaces the frames evenly; smoothstep's first of 7 frames covers 0.074 of the way,
+    // under half of linear's 0.167; ease in starts slower still (0.028) and ease out faster (0.306).
+    let first = |name: &str| spacing_ticks(name, 7).unwrap()[1];
+    assert!((first("none") - 1.0 / 6.0).abs() < 1e-6);
+    assert!((first("smoothstep") - 0.074).abs() < 1e-3);
+    assert!((first("in") - 0.028).abs() < 1e-3);
+    assert!((first("out") - 0.306).abs() < 1e-3);
+    for name in EASE_NAMES {
+        let ticks = spacing_ticks(name, 13).unwrap();
+        assert_eq!((ticks[0], ticks[12]), (0.0, 1.0), "{name} goes from key to key");
+        assert!(ticks.windows(2).all(|w| w[1] >= w[0]), "{name} never goes back");
+        let rows = ease_samples(name, 101).unwrap();
+        assert_eq!(rows.len(), 101);
+        // Slow in and out start and end at rest: e′ is 0 at both ends.
+        if ["smoothstep", "smootherstep", "sine", "inout"].contains(&name) {
+            assert!(rows[0][2].abs() < 1e-5 && rows[100][2].abs() < 1e-4, "{name}");
+        }
+    }
+    // Figure 4's Try: at s = 0.3 the note reads h00 = 0.784 and h01 = 0.216, which sum to 1.
+    let note = hermite_basis_note(direct, 0.3, false).unwrap();
+    assert!(note.contains("h00 = 0.784") && note.contains("h01 = 0.216"), "{note}");
+    // Figure 8 with smoothstep: both speeds start and end at zero.
+    let mut s = KeyframesScene::new();
+    s.set_ease("smoothstep").unwrap();
+    s.set_arc_length(true);
+    let rows = s.sample_motion(201).unwrap();
+    for r in [rows[0], rows[200]] {
+        assert!(r[1].abs() < 1e-4 && r[2].abs() < 1e-4, "{r:?}");
+    }
+    assert!(spacing_ticks("bounce", 7).is_err());
+    assert!(spacing_ticks("none", 1).is_err());
+    assert!(spacing_ticks("none", 61).is_err());
+    assert!(ease_samples("none", 1).is_err());
 }

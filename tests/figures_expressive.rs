@@ -298,6 +298,9 @@ fn the_jump_stretch_is_continuous_and_capped_at_1_6() {
     scene.set_principles(0.3, 0.2).unwrap();
     let note = scene.draw(&mut Frame::default(), 0.55).unwrap();
     assert!(note.contains("capped at 1.600"), "{note}");
+    // Scrubbing through take-off: the end of the push-off is capped too, at the take-off speed.
+    let note = scene.draw(&mut Frame::default(), 0.499).unwrap();
+    assert!(note.contains("capped at 1.600") && note.contains("would be 2.280"), "{note}");
     // At the apex (1 s) the ball is not moving: not stretched.
     let rows = scene.sample_heights(241).unwrap();
     let apex = rows.iter().find(|r| (r[0] - 1.0).abs() < 1e-4).unwrap();
@@ -497,4 +500,33 @@ fn just_past_critical_damping_the_tip_no_longer_swings_past() {
             "c = {c}: the tip swings {past} m past the base"
         );
     }
+}
+
+#[test]
+fn the_stretch_figure_keeps_the_volume_on_the_left_only() {
+    let mut scene = inbetween::figures::expressive::StretchComparison::new();
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame);
+    // s = 1.6, the lesson's cap: about twice as long as wide, volume kept; stretched only, × 1.6.
+    assert!((scene.kept().determinant() - 1.0).abs() < 1e-5);
+    assert!((scene.grown().determinant() - 1.6).abs() < 1e-5);
+    assert!((scene.kept_aspect() - 2.02).abs() < 0.01);
+    assert!(
+        note.contains("volume × 1.000") && note.contains("volume × 1.600"),
+        "{note}"
+    );
+    // Along a, the left ball is s times as long; across it, 1/√s as wide.
+    let a = scene.axis();
+    assert!(((scene.kept() * a).length() - 1.6).abs() < 1e-5);
+    let across = Vec3::new(-a.y, a.x, 0.0);
+    assert!(((scene.kept() * across).length() - 1.0 / 1.6f32.sqrt()).abs() < 1e-5);
+    assert!(((scene.grown() * across).length() - 1.0).abs() < 1e-5);
+    // A squash keeps the volume too.
+    scene.set(0.5, -40.0).unwrap();
+    assert!((scene.kept().determinant() - 1.0).abs() < 1e-5);
+    // Rejected input changes nothing, whichever argument is wrong.
+    assert!(scene.set(3.0, 0.0).is_err());
+    assert!(scene.set(1.0, f32::NAN).is_err());
+    assert!(scene.set(f32::INFINITY, 0.0).is_err());
+    assert!((scene.grown().determinant() - 0.5).abs() < 1e-5);
 }

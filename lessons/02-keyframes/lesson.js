@@ -1,7 +1,9 @@
 // Lesson 02: wires the curve editor, the controls, the plots and the figures to the wasm scenes.
 // No interpolation here: JavaScript only draws what Rust sampled and forwards the mouse edits.
-import { startLesson, markDrawn, Timeline, Plot, GUI } from '../../www/lesson.js';
-import { KeyframesScene, LagrangeScene, hermiteBasisSamples, hermiteBasisNote } from '../../pkg/inbetween.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded } from '../../www/lesson.js';
+import {
+  KeyframesScene, LagrangeScene, CardinalScene, hermiteBasisSamples, hermiteBasisNote, easeSamples, spacingTicks,
+} from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
@@ -87,12 +89,32 @@ function makeView(canvas, reserveBottom = 0) {
     }
     ctx.stroke();
     ctx.setLineDash([]);
-    if (held) for (let i = 0; i < xy.length; i += 2) v.dot(xy[i], xy[i + 1], 5, color);
+    // Held values a little larger than the key dots drawn over them, so their colour rings the key.
+    if (held) for (let i = 0; i < xy.length; i += 2) v.dot(xy[i], xy[i + 1], 7, color);
   };
   v.dot = (x, y, r, color) => {
     const [px, py] = v.toPx(x, y);
     ctx.fillStyle = color;
     ctx.beginPath(); ctx.arc(px, py, r, 0, 2 * Math.PI); ctx.fill();
+  };
+  /** An arrow from (x0, y0) to (x1, y1), world metres, with a head of 8 px. */
+  v.arrow = (x0, y0, x1, y1, color, width = 2) => {
+    const [a, b] = [v.toPx(x0, y0), v.toPx(x1, y1)];
+    const len = Math.hypot(b[0] - a[0], b[1] - a[1]);
+    if (len < 1) return;
+    const [ux, uy] = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
+    ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = width;
+    ctx.beginPath(); ctx.moveTo(...a); ctx.lineTo(b[0] - 6 * ux, b[1] - 6 * uy); ctx.stroke();
+    ctx.beginPath(); ctx.moveTo(...b);
+    ctx.lineTo(b[0] - 9 * ux - 4 * uy, b[1] - 9 * uy + 4 * ux);
+    ctx.lineTo(b[0] - 9 * ux + 4 * uy, b[1] - 9 * uy - 4 * ux);
+    ctx.fill();
+  };
+  /** A dashed line between two world points. */
+  v.dashed = (x0, y0, x1, y1, color) => {
+    ctx.strokeStyle = color; ctx.lineWidth = 1.5; ctx.setLineDash([5, 4]);
+    ctx.beginPath(); ctx.moveTo(...v.toPx(x0, y0)); ctx.lineTo(...v.toPx(x1, y1)); ctx.stroke();
+    ctx.setLineDash([]);
   };
   v.text = (x, y, text, color = C.ink) => {
     const [px, py] = v.toPx(x, y);
@@ -105,7 +127,34 @@ function makeView(canvas, reserveBottom = 0) {
   return v;
 }
 
-// ---- Figure 1: curve editor + 3D view. Its scene and timeline drive Figures 2, 5, 6 and 7. ----
+/**
+ * Where the second copy of a pair of drawings goes, `[dx, dy]` metres: beside the first or under
+ * it, whichever lets `view` draw both larger (a wide canvas puts them side by side, a tall one one
+ * above the other). `xy` holds every point of one copy.
+ */
+function pairOffset(view, xy) {
+  let [x0, x1, y0, y1] = [Infinity, -Infinity, Infinity, -Infinity];
+  for (let i = 0; i < xy.length; i += 2) {
+    x0 = Math.min(x0, xy[i]); x1 = Math.max(x1, xy[i]);
+    y0 = Math.min(y0, xy[i + 1]); y1 = Math.max(y1, xy[i + 1]);
+  }
+  if (!Number.isFinite(x0)) return [6, 0];
+  const [w, h] = [Math.max(x1 - x0, 0.5), Math.max(y1 - y0, 0.5)];
+  const [gapX, gapY] = [w * 0.2 + 0.6, 0.9]; // room for the titles above each copy
+  const side = Math.min(view.w / (2 * w + gapX), view.h / h);
+  const stacked = Math.min(view.w / w, view.h / (2 * h + gapY));
+  return side >= stacked ? [w + gapX, 0] : [0, -(h + gapY)];
+}
+/** `xy` plus a point 0.6 m above its highest, where a copy's title goes, so a fit keeps it. */
+function withTitleRoom(xy) {
+  let top = -Infinity; let x = 0;
+  for (let i = 0; i < xy.length; i += 2) if (xy[i + 1] > top) { top = xy[i + 1]; x = xy[i]; }
+  return Number.isFinite(top) ? [...xy, x, top + 0.6] : xy;
+}
+/** `[x0, y0, …]` moved by `[dx, dy]`. */
+const shifted = (xy, [dx, dy]) => xy.map((v, i) => v + (i % 2 === 0 ? dx : dy));
+
+// ---- Figure 1: curve editor + 3D view. Its scene and timeline drive Figures 2, 6, 7 and 8. ----
 const keysViewer = await lesson.figure('#fig-keys');
 const scene = new KeyframesScene();
 const timeline = new KeyTimeline(document.getElementById('keys-timeline'), { duration: scene.loopSec });
@@ -387,7 +436,28 @@ if (keysViewer) {
   });
 }
 
-// ---- Figures 2, 5, 6: two schemes on the same keys, at the same time. ----
+/** Gives scene `s` Figure 1's keys, tension (and handles, for Hermite) under `scheme`. */
+function mirror(s, scheme, times, xy) {
+  s.setScheme('linear');
+  s.setKeys(times, xy);
+  s.setTension(p.tension);
+  s.setScheme(scheme);
+  if (scheme === 'hermite') {
+    const d = scene.tangents();
+    const tin = []; const tout = [];
+    for (let i = 0; i < d.length; i += 4) { tin.push(d[i], d[i + 1]); tout.push(d[i + 2], d[i + 3]); }
+    s.setTangents(tin, tout);
+  }
+}
+/** Figure 1's keys as `[times, xy]`. */
+function sharedKeys() {
+  const keys = scene.keys();
+  const times = []; const xy = [];
+  for (let i = 0; i < keys.length; i += 3) { times.push(keys[i]); xy.push(keys[i + 1], keys[i + 2]); }
+  return [times, xy];
+}
+
+// ---- Figures 2, 6, 7: two schemes on the same keys, at the same time. ----
 function compareFigure(id) {
   const figure = document.getElementById(id);
   const schemes = { a: new KeyframesScene(), b: new KeyframesScene() };
@@ -403,24 +473,13 @@ function compareFigure(id) {
     widths: [5, 2], // A wide under B: the same scheme twice shows both lines
   });
   function sync() {
-    const keys = scene.keys();
-    const times = []; const xy = [];
-    for (let i = 0; i < keys.length; i += 3) { times.push(keys[i]); xy.push(keys[i + 1], keys[i + 2]); }
+    const [times, xy] = sharedKeys();
     const cols = [[]];
     const all = [];
     for (const side of ['a', 'b']) {
       const s = schemes[side];
       try {
-        s.setScheme('linear');
-        s.setKeys(times, xy);
-        s.setTension(p.tension);
-        s.setScheme(q[side]);
-        if (q[side] === 'hermite') {
-          const d = scene.tangents();
-          const tin = []; const tout = [];
-          for (let i = 0; i < d.length; i += 4) { tin.push(d[i], d[i + 1]); tout.push(d[i + 2], d[i + 3]); }
-          s.setTangents(tin, tout);
-        }
+        mirror(s, q[side], times, xy);
       } catch (e) {
         message.textContent = `Figure comparison: ${e.message ?? e}`;
       }
@@ -470,7 +529,7 @@ if (lagrangeViewer) {
   const lagrange = new LagrangeScene();
   const lp = { keys: 10, spline: true };
   const gui = new GUI({ container: document.querySelector('#fig-lagrange .panel'), title: 'Lagrange' });
-  gui.add(lp, 'keys', 3, 14, 1).name('keys (blue)').onChange((v) => lagrange.setKeyCount(v));
+  gui.add(lp, 'keys', 3, 16, 1).name('keys (blue)').onChange((v) => lagrange.setKeyCount(v));
   gui.add(lp, 'spline').name('Catmull-Rom (green)').onChange((v) => lagrange.setShowSpline(v));
   lesson.onFrame(() => {
     lagrange.draw(lagrangeViewer);
@@ -502,46 +561,229 @@ if (lagrangeViewer) {
   markDrawn('#fig-basis');
 }
 
-// ---- Figure 7: spacing and timing of Figure 1's motion, with the speed plots. ----
+// ---- Figure 5: the cardinal tangent from the chord, by the time between neighbours and halved. ----
+{
+  const figure = document.getElementById('fig-cardinal');
+  const cardinal = new CardinalScene();
+  const cp = { preset: 'uneven', tension: 1 };
+  const view = makeView(figure.querySelector('canvas'));
+  const plot = new Plot(document.getElementById('cardinal-plot'), {
+    title: 'Speed |p′(t)| by each rule', xLabel: 'time (s)', yLabel: 'speed (m/s)',
+    series: ['divided by the time', 'halved'], colors: [C.a, C.b], minSpan: 0.1,
+    widths: [5, 2], // where the rules agree (keys 1 s apart) the wide blue line shows under the pink
+  });
+  const note = document.getElementById('cardinal-note');
+  const RULES = [['time', C.a, 'divided by the time'], ['halved', C.b, 'halved']];
+  let layer = null;
+  const HANDLE_SEC = 0.25; // an arrow is the distance covered in 0.25 s at the key's velocity
+  const update = () => {
+    const keys = cardinal.keys();
+    const sides = RULES.map(([rule, color, title]) => ({
+      rule, color, title,
+      path: cardinal.samplePath(rule, 240), ghosts: cardinal.samplePath(rule, 25), d: cardinal.tangents(rule),
+    }));
+    // Each side's extent: its path and the tips of its tangent arrows.
+    const extent = (side) => {
+      const pts = [...side.path];
+      for (let k = 0; k < keys.length / 3; k++) {
+        pts.push(keys[3 * k + 1] + side.d[2 * k] * HANDLE_SEC, keys[3 * k + 2] + side.d[2 * k + 1] * HANDLE_SEC);
+      }
+      return pts;
+    };
+    const [ea, eb] = sides.map(extent);
+    layer = { keys, sides, extent: withTitleRoom([...ea, ...eb]), off: null, size: '' };
+    plot.setData(columns(cardinal.sampleSpeeds(301), 3));
+    layer.note = cardinal.note();
+  };
+  const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Tangents' });
+  gui.add(cp, 'preset', { 'uneven times': 'uneven', default: 'default', 'loop-prone (1 s apart)': 'loop', 'zig-zag': 'centripetal' })
+    .name('keys');
+  gui.add(cp, 'tension', 0, 2, 0.01).name('tension μ');
+  // A typed value the scene refuses is named in the note and the controls go back.
+  let rejected = '';
+  const apply = guarded(gui, cp, () => {
+    cardinal.setPreset(cp.preset);
+    cardinal.setTension(cp.tension);
+    update();
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  lesson.onFrame(() => {
+    const { ctx } = view;
+    ctx.clearRect(0, 0, view.w, view.h);
+    view.grid();
+    // Beside or under each other, refitted when the data or the canvas's size changes.
+    const size = `${view.w}x${view.h}`;
+    if (layer.size !== size) {
+      layer.off = pairOffset(view, layer.extent);
+      view.fit([...layer.extent, ...shifted(layer.extent, layer.off)]);
+      layer.size = size;
+    }
+    const { keys, sides, off: [ox, oy] } = layer;
+    const text = [rejected, layer.note].filter(Boolean).join(' ');
+    if (note.textContent !== text) note.textContent = text;
+    const n = keys.length / 3;
+    sides.forEach((side, j) => {
+      const [dx, dy] = [j * ox, j * oy];
+      view.path(shifted(side.path, [dx, dy]), side.color);
+      for (let i = 0; i < side.ghosts.length; i += 2) view.dot(side.ghosts[i] + dx, side.ghosts[i + 1] + dy, 3, C.ghost);
+      for (let k = 0; k < n; k++) {
+        const [x, y] = [keys[3 * k + 1] + dx, keys[3 * k + 2] + dy];
+        const [b, a] = [Math.max(0, k - 1), Math.min(n - 1, k + 1)];
+        view.dashed(keys[3 * b + 1] + dx, keys[3 * b + 2] + dy, keys[3 * a + 1] + dx, keys[3 * a + 2] + dy, C.ghost);
+        view.arrow(x, y, x + side.d[2 * k] * HANDLE_SEC, y + side.d[2 * k + 1] * HANDLE_SEC, C.tangent, 2.5);
+      }
+      for (let k = 0; k < n; k++) {
+        view.dot(keys[3 * k + 1] + dx, keys[3 * k + 2] + dy, 5, C.key);
+        view.text(keys[3 * k + 1] + dx + 0.1, keys[3 * k + 2] + dy - 0.3, `${k}`, C.ink);
+      }
+      let top = -Infinity; let [x0, x1] = [Infinity, -Infinity];
+      for (let i = 0; i < side.path.length; i += 2) {
+        top = Math.max(top, side.path[i + 1]); x0 = Math.min(x0, side.path[i]); x1 = Math.max(x1, side.path[i]);
+      }
+      view.text((x0 + x1) / 2 + dx - 0.7, top + dy + 0.35, side.title, side.color);
+    });
+    markDrawn('#fig-cardinal');
+  });
+}
+
+// ---- Figure 8: Figure 1's motion twice, keyed timing and constant speed, with the plots. ----
 {
   const figure = document.getElementById('fig-timing');
   const view = makeView(figure.querySelector('canvas'));
-  const layer = { path: [], ghosts: [], held: false };
+  const twins = { keyed: new KeyframesScene(), even: new KeyframesScene() };
+  const layers = { keyed: { path: [], ghosts: [] }, even: { path: [], ghosts: [] }, held: false, off: [0, 0], size: '' };
   const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Timing' });
-  gui.add(p, 'arcLength').name('constant speed (arc length)').onChange((v) => edit(() => scene.setArcLength(v)));
   gui.add(p, 'ease', EASES).name('ease (slow in / out)').onChange((v) => edit(() => scene.setEase(v)));
+  gui.add(p, 'arcLength').name('Figure 1 at constant speed').onChange((v) => edit(() => scene.setArcLength(v)));
+  const tp = { preset: '' };
+  gui.add(tp, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
+    .name('keys (all figures)').onChange((v) => { if (v) edit(() => scene.loadPreset(v)); });
   const speedPlot = new Plot(document.getElementById('keys-speed'), {
     title: 'Speed |p′(t)|', xLabel: 'time (s)', yLabel: 'speed (m/s)',
-    series: ['keyed', 'arc length'], colors: [C.path, C.ball], minSpan: 0.1,
+    series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1,
     widths: [5, 2], // keyed wide under arc length: where the two speeds agree both stay visible
   });
   const accelPlot = new Plot(document.getElementById('keys-accel'), {
-    title: 'Acceleration |p″(t)| of the motion shown', xLabel: 'time (s)', yLabel: 'acceleration (m/s²)',
-    series: ['|p″|'], colors: [C.purple], minSpan: 0.1,
+    title: 'Acceleration |p″(t)|', xLabel: 'time (s)', yLabel: 'acceleration (m/s²)',
+    series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1,
+    widths: [5, 2],
   });
   const timingNote = document.getElementById('timing-note');
   listen(() => {
-    timingNote.textContent = scene.timingNote;
-    layer.path = scene.samplePath();
-    layer.ghosts = scene.sampleGhosts();
-    layer.held = scene.isHeld;
-    view.fit(layer.path);
-    const rows = scene.sampleMotion(400);
-    const cols = [[], [], [], []];
-    for (let i = 0; i < rows.length; i += 4) for (let c = 0; c < 4; c++) cols[c].push(rows[i + c]);
-    speedPlot.setData(cols.slice(0, 3));
-    accelPlot.setData([cols[0], cols[3]]);
+    const [times, xy] = sharedKeys();
+    const cols = [];
+    for (const [name, s] of Object.entries(twins)) {
+      try {
+        mirror(s, scene.scheme, times, xy);
+        s.setEase(p.ease);
+        s.setGhostCount(p.ghosts);
+        s.setArcLength(name === 'even');
+      } catch (e) {
+        message.textContent = `Figure 8: ${e.message ?? e}`;
+      }
+      layers[name] = { path: s.samplePath(), ghosts: s.sampleGhosts() };
+      const rows = s.sampleMotion(400);
+      const c = [[], [], [], []];
+      for (let i = 0; i < rows.length; i += 4) for (let k = 0; k < 4; k++) c[k].push(rows[i + k]);
+      cols.push(c);
+    }
+    layers.held = twins.keyed.isHeld;
+    layers.size = ''; // refit on the next frame
+    timingNote.textContent = [
+      twins.even.timingNote,
+      p.arcLength ? "Figure 1's ball follows the constant-speed timing (red)." : "Figure 1's ball follows the keyed timing (blue).",
+    ].filter(Boolean).join(' ');
+    const [k, e] = cols;
+    speedPlot.setData([k[0], k[1], k[2]]);
+    accelPlot.setData([k[0], k[3], e[3]]);
   });
   lesson.onFrame(() => {
     const tau = timeline.time;
+    // Beside or under each other, refitted when the data or the canvas's size changes.
+    const size = `${view.w}x${view.h}`;
+    if (layers.size !== size) {
+      const both = withTitleRoom([...layers.keyed.path, ...layers.even.path]);
+      layers.off = pairOffset(view, both);
+      view.fit([...both, ...shifted(both, layers.off)]);
+      layers.size = size;
+    }
     view.ctx.clearRect(0, 0, view.w, view.h);
     view.grid();
-    view.path(layer.path, C.path, layer.held);
-    for (let i = 0; i < layer.ghosts.length; i += 2) view.dot(layer.ghosts[i], layer.ghosts[i + 1], 3.5, C.ghost);
-    view.dot(...scene.position(tau), 7, C.ball);
+    [['keyed', C.path, 'keyed timing'], ['even', C.ball, 'constant speed']].forEach(([name, color, title], j) => {
+      const off = [j * layers.off[0], j * layers.off[1]];
+      const { path, ghosts } = layers[name];
+      view.path(shifted(path, off), color, layers.held);
+      for (let i = 0; i < ghosts.length; i += 2) view.dot(ghosts[i] + off[0], ghosts[i + 1] + off[1], 3.5, C.ghost);
+      const [x, y] = twins[name].position(tau);
+      view.dot(x + off[0], y + off[1], 7, color);
+      let top = -Infinity; let [x0, x1] = [Infinity, -Infinity];
+      for (let i = 0; i < path.length; i += 2) { top = Math.max(top, path[i + 1]); x0 = Math.min(x0, path[i]); x1 = Math.max(x1, path[i]); }
+      view.text((x0 + x1) / 2 + off[0] - 0.6, top + off[1] + 0.35, title, color);
+    });
     cursor(speedPlot, scene.startSec + tau);
     cursor(accelPlot, scene.startSec + tau);
     markDrawn('#fig-timing');
+  });
+}
+
+// ---- Figure 9: the spacing chart of every ease, one row each, and the chosen ease's curve. ----
+{
+  const figure = document.getElementById('fig-ease');
+  const canvas = figure.querySelector('canvas');
+  const ctx = canvas.getContext('2d');
+  const ep = { ease: 'smoothstep', frames: 7 };
+  const plot = new Plot(document.getElementById('ease-plot'), {
+    title: 'The chosen ease', xLabel: 'x, fraction of the time (no unit)', yLabel: 'e(x) and slope e′(x) (no unit)',
+    series: ['e(x)', 'slope e′(x)', 'linear'], colors: [C.key, C.purple, C.ghost], minSpan: 0.5,
+    widths: [3, 2, 1.5], dashes: [null, null, [6, 4]],
+  });
+  let rows = [];
+  let rejected = '';
+  const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Spacing' });
+  gui.add(ep, 'ease', EASES).name('ease');
+  gui.add(ep, 'frames', 2, 30, 1).name('frames');
+  const apply = guarded(gui, ep, () => {
+    rows = Object.entries(EASES).map(([label, name]) => ({ label, name, ticks: spacingTicks(name, ep.frames) }));
+    const c = columns(easeSamples(ep.ease, 101), 3);
+    plot.setData([c[0], c[1], c[2], c[0]]);
+  }, (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const easeNote = figure.querySelector('.note');
+  const draw = () => {
+    const r = canvas.getBoundingClientRect();
+    const dpr = window.devicePixelRatio || 1;
+    canvas.width = Math.max(1, Math.round(r.width * dpr));
+    canvas.height = Math.max(1, Math.round(r.height * dpr));
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.clearRect(0, 0, r.width, r.height);
+    ctx.font = '12px system-ui, sans-serif';
+    const left = Math.min(150, r.width * 0.3); const right = r.width - 20;
+    const rowH = (r.height - 16) / rows.length;
+    rows.forEach((row, j) => {
+      const y = 8 + rowH * (j + 0.5);
+      const chosen = row.name === ep.ease;
+      const color = chosen ? C.key : C.ink;
+      if (chosen) { ctx.fillStyle = '#fdf1e0'; ctx.fillRect(0, y - rowH / 2, r.width, rowH); }
+      ctx.fillStyle = color;
+      ctx.fillText(row.label, 8, y + 4);
+      ctx.strokeStyle = C.axis; ctx.lineWidth = 1;
+      ctx.beginPath(); ctx.moveTo(left, y); ctx.lineTo(right, y); ctx.stroke();
+      ctx.strokeStyle = chosen ? C.key : C.path; ctx.lineWidth = chosen ? 3 : 2;
+      for (const f of row.ticks) {
+        const x = left + f * (right - left);
+        ctx.beginPath(); ctx.moveTo(x, y - rowH * 0.3); ctx.lineTo(x, y + rowH * 0.3); ctx.stroke();
+      }
+    });
+  };
+  let last = '';
+  lesson.onFrame(() => {
+    const r = canvas.getBoundingClientRect();
+    const key = `${ep.ease} ${ep.frames} ${r.width} ${r.height}`;
+    if (key !== last) { draw(); last = key; }
+    if (easeNote.textContent !== rejected) easeNote.textContent = rejected;
+    markDrawn('#fig-ease');
   });
 }
 

@@ -1,7 +1,7 @@
 // Lesson 02b: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/expressive/ and src/figures/expressive.rs).
 import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, cssVar } from '../../www/lesson.js';
-import { SpacingScene, JumpScene, FollowThroughScene } from '../../pkg/inbetween.js';
+import { SpacingScene, JumpScene, FollowThroughScene, StretchScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
 
@@ -47,7 +47,28 @@ if (spacingViewer) {
   });
 }
 
-// Figure 2: the jump, side by side.
+// Figure 2: squash and stretch with the volume kept, beside a stretch that keeps the width.
+const stretchViewer = await lesson.figure('#fig-stretch');
+if (stretchViewer) {
+  stretchViewer.setCamera(0, 1.3, 0, 7, 0.0, 0.0);
+  const scene = new StretchScene();
+  const p = { stretch: 1.6, angle: 30 };
+  const gui = new GUI({ container: document.querySelector('#fig-stretch .panel'), title: 'Stretch' });
+  gui.add(p, 'stretch', 0.4, 2.5, 0.01).name('stretch s');
+  gui.add(p, 'angle', -90, 90, 1).name('direction a (°)');
+  let rejected = '';
+  const apply = guarded(gui, p, () => scene.set(p.stretch, p.angle), (m) => { rejected = m; });
+  gui.onChange(apply);
+  apply();
+  const note = document.getElementById('stretch-note');
+  lesson.onFrame(() => {
+    const message = [rejected, scene.draw(stretchViewer)].filter(Boolean).join(' ');
+    if (note.textContent !== message) note.textContent = message;
+    markDrawn('#fig-stretch');
+  });
+}
+
+// Figure 3: the jump, side by side.
 const jumpViewer = await lesson.figure('#fig-jump');
 if (jumpViewer) {
   jumpViewer.setCamera(0, 1.1, 0, 6, 0.0, 0.15);
@@ -90,7 +111,7 @@ if (jumpViewer) {
   });
 }
 
-// Figure 3: follow-through.
+// Figure 4: follow-through.
 const followViewer = await lesson.figure('#fig-follow');
 if (followViewer) {
   followViewer.setCamera(0, 1.3, 0, 4.2, 0.0, 0.12);

@@ -1276,3 +1276,211 @@ pub fn probe_note(what: &str, probes: &[Probe], tolerance: f32) -> (bool, String
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// The cardinal figure: a key's tangent from the chord between its neighbours, by two rules.
+
+/// How a cardinal tangent turns the chord between a key's neighbours into a velocity.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ChordRule {
+    /// The course's rule: the chord divided by the time between the neighbours (m/s).
+    ByTime,
+    /// The classic mistake: the chord halved, as if every key were one second from the next.
+    Halved,
+}
+
+impl ChordRule {
+    /// The rule by the name the page uses: "time" or "halved".
+    pub fn from_name(name: &str) -> Result<Self, String> {
+        match name {
+            "time" => Ok(ChordRule::ByTime),
+            "halved" => Ok(ChordRule::Halved),
+            other => Err(format!("unknown rule '{other}': use time or halved")),
+        }
+    }
+}
+
+/// The cardinal figure: one set of keys, and the cardinal spline through them with its tangents
+/// made by both [`ChordRule`]s, side by side. Each key's construction is drawn: the chord between
+/// its neighbours and the tangent `d_i` parallel to it.
+pub struct CardinalScene {
+    times: Vec<f32>,
+    values: Vec<Vec2>,
+    tension: f32,
+}
+
+impl Default for CardinalScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl CardinalScene {
+    /// The "uneven" preset (segments of 0.3 s, 2.5 s and 0.2 s) at tension 1 (Catmull-Rom).
+    pub fn new() -> Self {
+        let (times, values) = preset("uneven").expect("a built-in preset");
+        Self {
+            times,
+            values,
+            tension: 1.0,
+        }
+    }
+
+    /// Loads one of [`preset`]'s key sets.
+    pub fn set_preset(&mut self, name: &str) -> Result<(), String> {
+        let (times, values) = preset(name)?;
+        self.times = times;
+        self.values = values;
+        Ok(())
+    }
+
+    /// The tension `μ`, 0 to 2.
+    pub fn set_tension(&mut self, tension: f32) -> Result<(), String> {
+        self.tension = in_range("tension", tension, 0.0, 2.0)?;
+        Ok(())
+    }
+
+    /// Key times (s) and positions (m).
+    pub fn keys(&self) -> (&[f32], &[Vec2]) {
+        (&self.times, &self.values)
+    }
+
+    /// One tangent per key (m/s) by `rule`. [`ChordRule::ByTime`] is the core's
+    /// [`curves::cardinal_tangents`]; [`ChordRule::Halved`] divides the chord by the number of
+    /// key steps it spans (2 inside, 1 at an end) instead of by seconds.
+    pub fn tangents(&self, rule: ChordRule) -> Vec<Vec2> {
+        let n = self.times.len();
+        let mut out = vec![Vec2::ZERO; n];
+        match rule {
+            ChordRule::ByTime => {
+                curves::cardinal_tangents(&self.times, &self.values, self.tension, &mut out)
+            }
+            ChordRule::Halved => {
+                for (i, d) in out.iter_mut().enumerate() {
+                    let (before, after) = (i.saturating_sub(1), (i + 1).min(n - 1));
+                    let steps = (after - before) as f32;
+                    *d = (self.values[after] - self.values[before]) * (self.tension / steps);
+                }
+            }
+        }
+        out
+    }
+
+    /// The Hermite track through the keys with `rule`'s tangents.
+    pub fn track(&self, rule: ChordRule) -> Track<Vec2> {
+        let d = self.tangents(rule);
+        Track::new_hermite(self.times.clone(), self.values.clone(), d.clone(), d)
+            .expect("preset keys and finite tangents")
+    }
+
+    /// The path by `rule`, `samples` points evenly spaced in time.
+    pub fn path(&self, rule: ChordRule, samples: usize) -> Result<Vec<Vec2>, String> {
+        check_samples(samples)?;
+        let track = self.track(rule);
+        let mut out = vec![Vec2::ZERO; samples];
+        track.positions_evenly(track.start_sec(), track.end_sec(), &mut out);
+        Ok(out)
+    }
+
+    /// Rows `[t, speed by time, speed halved]` over the keys (s, m/s, m/s).
+    pub fn sample_speeds(&self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
+        check_samples(samples)?;
+        let (a, b) = (self.track(ChordRule::ByTime), self.track(ChordRule::Halved));
+        let (t0, t1) = (a.start_sec(), a.end_sec());
+        Ok((0..samples)
+            .map(|k| {
+                let t = t0 + (t1 - t0) * k as f32 / (samples - 1) as f32;
+                [t, a.velocity(t).length(), b.velocity(t).length()]
+            })
+            .collect())
+    }
+
+    /// How far the path by `rule` strays from the straight segments between the keys, at most
+    /// (metres): the bulge a wrong tangent adds.
+    pub fn max_bulge(&self, rule: ChordRule) -> f32 {
+        let path = self.path(rule, 2001).expect("a valid sample count");
+        path.iter()
+            .map(|&p| {
+                self.values
+                    .windows(2)
+                    .map(|w| distance_to_segment(p, w[0], w[1]))
+                    .fold(f32::INFINITY, f32::min)
+            })
+            .fold(0.0, f32::max)
+    }
+
+    /// The note under the figure: each rule's largest speed and bulge.
+    pub fn note(&self) -> String {
+        let line = |rule: ChordRule, name: &str| {
+            let top = self
+                .sample_speeds(401)
+                .expect("a valid sample count")
+                .iter()
+                .map(|r| if rule == ChordRule::ByTime { r[1] } else { r[2] })
+                .fold(0.0, f32::max);
+            // Rounded to the millimetre, so a straight path reads 0 and not 6e-7.
+            let bulge = (self.max_bulge(rule) * 1000.0).round() / 1000.0;
+            format!(
+                "{name}: top speed {} m/s, strays up to {} m from the straight segments.",
+                format_number(top),
+                format_number(bulge)
+            )
+        };
+        format!(
+            "μ = {}. {} {}",
+            format_number(self.tension),
+            line(ChordRule::ByTime, "Divided by the time (blue)"),
+            line(ChordRule::Halved, "Halved (pink)")
+        )
+    }
+}
+
+/// The distance from `p` to the segment `[a, b]`.
+fn distance_to_segment(p: Vec2, a: Vec2, b: Vec2) -> f32 {
+    let ab = b - a;
+    let t = if ab.length_squared() > 0.0 {
+        ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p - (a + ab * t)).length()
+}
+
+// ---------------------------------------------------------------------------------------------
+// The ease figure: spacing charts of every ease, side by side, and one ease's curve.
+
+/// The eases the page offers, by the names [`ease_from_name`] takes, in the order it lists them.
+pub const EASE_NAMES: [&str; 7] = [
+    "none",
+    "smoothstep",
+    "smootherstep",
+    "sine",
+    "in",
+    "out",
+    "inout",
+];
+
+/// Rows `[x, e(x), e′(x)]` over `x ∈ [0, 1]` for the ease `name`.
+pub fn ease_samples(name: &str, samples: usize) -> Result<Vec<[f32; 3]>, String> {
+    let ease = ease_from_name(name)?;
+    check_samples(samples)?;
+    Ok((0..samples)
+        .map(|k| {
+            let x = k as f32 / (samples - 1) as f32;
+            let [e, de, _] = ease.apply_with_derivatives(x);
+            [x, e, de]
+        })
+        .collect())
+}
+
+/// The spacing chart of the ease `name`: where `count` frames at equal time steps land, as
+/// fractions of the way, `e(k / (count − 1))`.
+pub fn spacing_ticks(name: &str, count: usize) -> Result<Vec<f32>, String> {
+    let ease = ease_from_name(name)?;
+    if !(2..=60).contains(&count) {
+        return Err(format!("frames must be from 2 to 60, got {count}"));
+    }
+    Ok((0..count)
+        .map(|k| ease.apply(k as f32 / (count - 1) as f32))
+        .collect())
+}

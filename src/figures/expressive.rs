@@ -247,6 +247,11 @@ impl Spacing {
             }
         };
         frame.grid(14, 0.5);
+        // The path, its straight twin behind and the chart in front: fitted at every canvas size.
+        frame.keep_box_in_view(
+            Vec3::new(START.x - 0.3, 0.0, TWIN_OFFSET.z - 0.3),
+            Vec3::new(END.x + 0.3, START.y + self.arc_height + 0.45, 1.0),
+        );
         let path: Vec<Vec3> = (0..=64)
             .map(|k| arc_point(START, END, Vec3::Y, self.arc_height, k as f32 / 64.0))
             .collect();
@@ -393,6 +398,11 @@ impl JumpComparison {
     pub fn draw(&self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let t = in_range("time", time_sec, 0.0, self.duration())?;
         frame.grid(12, 0.5);
+        // Both balls from the ground to above the apex, whatever the time.
+        frame.keep_box_in_view(
+            Vec3::new(-1.7, -0.3, -0.4),
+            Vec3::new(1.7, self.jump.apex + 2.0 * RADIUS + 0.5, 0.4),
+        );
         let plain = self.jump.plain(t);
         frame.mesh(
             MeshId::SPHERE,
@@ -429,13 +439,21 @@ impl JumpComparison {
             "at rest"
         };
         let in_flight = (self.jump.wind_up..self.jump.wind_up + self.jump.flight).contains(&t);
-        let capped = if in_flight && p.stretch >= MAX_STRETCH {
+        // The push-off stretches towards the take-off stretch, so when that is capped the note
+        // says so there too, with the take-off speed.
+        let pushing_off = (push_off..self.jump.wind_up).contains(&t);
+        let speed = if in_flight {
+            p.vertical_velocity.abs()
+        } else {
+            self.jump.take_off_speed()
+        };
+        let capped = if (in_flight || pushing_off) && p.stretch >= MAX_STRETCH - 1e-4 {
             format!(
                 ", capped at {} (1 + {} × {} m/s would be {})",
                 format_number(MAX_STRETCH),
                 format_number(self.jump.stretch_per_speed),
-                format_number(p.vertical_velocity.abs()),
-                format_number(1.0 + self.jump.stretch_per_speed * p.vertical_velocity.abs()),
+                format_number(speed),
+                format_number(1.0 + self.jump.stretch_per_speed * speed),
             )
         } else {
             String::new()
@@ -670,6 +688,11 @@ impl FollowThrough {
         let t = in_range("time", time_sec, 0.0, Self::DURATION)?;
         self.simulate(t);
         frame.grid(12, 0.5);
+        // The body's whole slide and the antenna above it: the camera fits this at every size.
+        frame.keep_box_in_view(
+            Vec3::new(-2.0, 0.0, -0.3),
+            Vec3::new(2.0, Self::base(0.0).y + Self::LENGTH + 0.3, 0.3),
+        );
         let antenna = self.shown();
         let base = antenna.positions[0];
         // A small body, so the antenna (the subject) is not dwarfed by it.
@@ -762,5 +785,133 @@ impl FollowThrough {
                 probe_note("spring_step", &probes, TOLERANCE).1
             }
         }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The stretch figure: volume kept or not, side by side.
+
+/// Colours of the stretch figure: the ball that keeps its volume, the one that does not, and
+/// the direction of motion.
+pub const KEPT: Vec3 = palette::ORANGE;
+pub const GROWN: Vec3 = palette::GREY;
+pub const DIRECTION: Vec3 = palette::BLUE;
+/// Radius of the stretch figure's balls at rest, metres.
+pub const STRETCH_RADIUS: f32 = 0.5;
+/// Where the two balls of the stretch figure sit.
+const KEPT_CENTRE: Vec3 = Vec3::new(-1.5, 1.3, 0.0);
+const GROWN_CENTRE: Vec3 = Vec3::new(1.5, 1.3, 0.0);
+/// The stretch figure's slider range for `s`.
+pub const STRETCH_FIGURE_RANGE: (f32, f32) = (0.4, 2.5);
+
+/// The stretch figure: two balls stretched by `s` along a direction `a` at an angle in the
+/// picture's plane. Left, `R · diag(s, 1/√s, 1/√s) · Rᵀ` (the lesson's squash and stretch, volume
+/// kept); right, `R · diag(s, 1, 1) · Rᵀ` (stretched along `a` only, the volume grows by `s`).
+pub struct StretchComparison {
+    stretch: f32,
+    angle_deg: f32,
+}
+
+impl Default for StretchComparison {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl StretchComparison {
+    /// `s` = 1.6 (the lesson's cap) along a direction 30° above the x axis.
+    pub fn new() -> Self {
+        Self {
+            stretch: MAX_STRETCH,
+            angle_deg: 30.0,
+        }
+    }
+
+    /// Sets the stretch `s` (0.4 to 2.5) and the direction's angle from the x axis (−90° to 90°).
+    /// Both are checked before either changes.
+    pub fn set(&mut self, stretch: f32, angle_deg: f32) -> Result<(), String> {
+        let (lo, hi) = STRETCH_FIGURE_RANGE;
+        let stretch = in_range("stretch", stretch, lo, hi)?;
+        let angle_deg = in_range("angle", angle_deg, -90.0, 90.0)?;
+        self.stretch = stretch;
+        self.angle_deg = angle_deg;
+        Ok(())
+    }
+
+    /// The unit direction of motion `a`.
+    pub fn axis(&self) -> Vec3 {
+        let a = self.angle_deg.to_radians();
+        Vec3::new(a.cos(), a.sin(), 0.0)
+    }
+
+    /// The left ball's linear map, the core's [`expressive::squash_stretch_matrix`].
+    pub fn kept(&self) -> Mat3 {
+        expressive::squash_stretch_matrix(self.axis(), self.stretch)
+    }
+
+    /// The right ball's linear map: `s` along `a`, nothing across.
+    pub fn grown(&self) -> Mat3 {
+        let r = Mat3::from_quat(glam::Quat::from_rotation_arc(Vec3::X, self.axis()));
+        r * Mat3::from_diagonal(Vec3::new(self.stretch, 1.0, 1.0)) * r.transpose()
+    }
+
+    /// How much longer than wide the left ball is: `s / (1/√s) = s^1.5`.
+    pub fn kept_aspect(&self) -> f32 {
+        self.stretch.powf(1.5)
+    }
+
+    /// Draws both balls, their outlines at rest and the direction `a`; returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(12, 0.5);
+        let a = self.axis();
+        let across = Vec3::new(-a.y, a.x, 0.0);
+        let (kept, grown) = (self.kept(), self.grown());
+        for (centre, m, color, title) in [
+            (KEPT_CENTRE, kept, KEPT, "volume kept"),
+            (GROWN_CENTRE, grown, GROWN, "stretched only"),
+        ] {
+            let model = Mat4::from_translation(centre)
+                * Mat4::from_mat3(m)
+                * Mat4::from_scale(Vec3::splat(STRETCH_RADIUS));
+            frame.mesh(MeshId::SPHERE, model, color);
+            // The ball at rest, as a dashed outline in the picture's plane, over the ball.
+            let circle: Vec<Vec3> = (0..=64)
+                .map(|k| {
+                    let phi = k as f32 / 64.0 * std::f32::consts::TAU;
+                    centre + Vec3::new(phi.cos(), phi.sin(), 0.0) * STRETCH_RADIUS
+                })
+                .collect();
+            let mut rest = crate::draw::StrokeStyle::dashed(2.0, 0.07, 0.05);
+            rest.on_top = true;
+            frame.stroke(&circle, palette::DARK, rest);
+            frame.label(centre + Vec3::new(0.0, -1.45, 0.0), title, color);
+            // Longer than the ball at every stretch, so both ends show.
+            let reach = STRETCH_RADIUS * self.stretch.max(1.0) + 0.35;
+            frame.arrow(centre - a * reach, centre + a * reach, DIRECTION, 0.12);
+            // The half-widths across the motion, along and across.
+            let half_across = (m * across).length() * STRETCH_RADIUS;
+            frame.wide_line_on_top(
+                centre,
+                centre + across * half_across,
+                palette::DARK,
+                crate::draw::CURVE_PX,
+            );
+        }
+        let reach = STRETCH_RADIUS * self.stretch.max(1.0) + 0.5;
+        frame.label(KEPT_CENTRE + a * reach, "a", DIRECTION);
+        frame.keep_box_in_view(Vec3::new(-3.2, -0.35, -0.3), Vec3::new(3.2, 2.95, 0.3));
+        let across_kept = 1.0 / self.stretch.sqrt();
+        format!(
+            "s = {} along a. Left: scale (s, 1/√s, 1/√s) = ({}, {}, {}), volume × {}, {} times as \
+             long as wide. Right: scale (s, 1, 1), volume × {}, {} times as long as wide.",
+            format_number(self.stretch),
+            format_number(self.stretch),
+            format_number(across_kept),
+            format_number(across_kept),
+            format_number(kept.determinant()),
+            format_number(self.kept_aspect()),
+            format_number(grown.determinant()),
+            format_number(self.stretch),
+        )
     }
 }

@@ -303,3 +303,91 @@ impl Default for LagrangeScene {
         Self::new()
     }
 }
+
+/// The cardinal figure: a spline whose tangents come from the chord between each key's
+/// neighbours, divided by the time between them (left) or halved (right).
+#[wasm_bindgen]
+pub struct CardinalScene {
+    scene: fig::CardinalScene,
+}
+
+#[wasm_bindgen]
+impl CardinalScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> CardinalScene {
+        CardinalScene {
+            scene: fig::CardinalScene::new(),
+        }
+    }
+
+    /// "default", "loop", "uneven" or "centripetal".
+    #[wasm_bindgen(js_name = setPreset)]
+    pub fn set_preset(&mut self, name: JsValue) -> Result<(), JsError> {
+        let name = super::string("name", &name)?;
+        self.scene.set_preset(&name).map_err(js)
+    }
+
+    /// The tension μ, 0 to 2.
+    #[wasm_bindgen(js_name = setTension)]
+    pub fn set_tension(&mut self, tension: f32) -> Result<(), JsError> {
+        self.scene.set_tension(tension).map_err(js)
+    }
+
+    /// `[t0, x0, y0, t1, …]`: the keys.
+    pub fn keys(&self) -> Vec<f32> {
+        let (times, values) = self.scene.keys();
+        times
+            .iter()
+            .zip(values)
+            .flat_map(|(t, p)| [*t, p.x, p.y])
+            .collect()
+    }
+
+    /// `[dx0, dy0, dx1, …]`: one tangent per key (m/s) by `rule`, "time" or "halved".
+    pub fn tangents(&self, rule: JsValue) -> Result<Vec<f32>, JsError> {
+        let rule = fig::ChordRule::from_name(&super::string("rule", &rule)?).map_err(js)?;
+        Ok(flat(&self.scene.tangents(rule)))
+    }
+
+    /// `[x0, y0, x1, …]`: the path by `rule`, `samples` points evenly spaced in time.
+    #[wasm_bindgen(js_name = samplePath)]
+    pub fn sample_path(&self, rule: JsValue, samples: f64) -> Result<Vec<f32>, JsError> {
+        let rule = fig::ChordRule::from_name(&super::string("rule", &rule)?).map_err(js)?;
+        let samples = super::whole("samples", samples)?;
+        Ok(flat(&self.scene.path(rule, samples).map_err(js)?))
+    }
+
+    /// `[t, speed by time, speed halved, …]` (s, m/s, m/s).
+    #[wasm_bindgen(js_name = sampleSpeeds)]
+    pub fn sample_speeds(&self, samples: f64) -> Result<Vec<f32>, JsError> {
+        let samples = super::whole("samples", samples)?;
+        Ok(self.scene.sample_speeds(samples).map_err(js)?.concat())
+    }
+
+    /// Each rule's top speed and bulge, in words.
+    pub fn note(&self) -> String {
+        self.scene.note()
+    }
+}
+
+impl Default for CardinalScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// `[x, e(x), e′(x), …]` for the ease `name` (see `figures::curves::EASE_NAMES`).
+#[wasm_bindgen(js_name = easeSamples)]
+pub fn ease_samples(name: JsValue, samples: f64) -> Result<Vec<f32>, JsError> {
+    let name = super::string("name", &name)?;
+    let samples = super::whole("samples", samples)?;
+    Ok(fig::ease_samples(&name, samples).map_err(js)?.concat())
+}
+
+/// The spacing chart of the ease `name`: `frames` fractions of the way at equal time steps.
+#[wasm_bindgen(js_name = spacingTicks)]
+pub fn spacing_ticks(name: JsValue, frames: f64) -> Result<Vec<f32>, JsError> {
+    let name = super::string("name", &name)?;
+    let frames = super::whole_in("frames", frames, 2, 60)?;
+    fig::spacing_ticks(&name, frames).map_err(js)
+}

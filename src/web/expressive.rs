@@ -206,3 +206,37 @@ impl Default for FollowThroughScene {
         Self::new()
     }
 }
+
+/// The stretch figure: volume kept (left) against stretched along the motion only (right).
+#[wasm_bindgen]
+pub struct StretchScene {
+    scene: crate::figures::expressive::StretchComparison,
+}
+
+#[wasm_bindgen]
+impl StretchScene {
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> StretchScene {
+        StretchScene {
+            scene: crate::figures::expressive::StretchComparison::new(),
+        }
+    }
+
+    /// The stretch `s` (0.4 to 2.5) and the direction's angle from the x axis (−90° to 90°).
+    pub fn set(&mut self, stretch: f32, angle_deg: f32) -> Result<(), JsError> {
+        self.scene.set(stretch, angle_deg).map_err(js)
+    }
+
+    /// Draws both balls; returns the note.
+    pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        let note = self.scene.draw(&mut viewer.renderer.frame);
+        viewer.present()?;
+        Ok(note)
+    }
+}
+
+impl Default for StretchScene {
+    fn default() -> Self {
+        Self::new()
+    }
+}

@@ -62,8 +62,8 @@ figures_module! {
     pub use blending::{BlendScene, LocomotionScene};
     pub use boids::{BoidRulesScene, FlockScene};
     pub use cloth::{check_cloth, ClothScene, SpringScene};
-    pub use curves::{KeyframesScene, LagrangeScene};
-    pub use expressive::{FollowThroughScene, JumpScene, SpacingScene};
+    pub use curves::{CardinalScene, KeyframesScene, LagrangeScene};
+    pub use expressive::{FollowThroughScene, JumpScene, SpacingScene, StretchScene};
     pub use ik::{AimScene, IkScene};
     pub use noise::{
         FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,
