@@ -530,3 +530,30 @@ fn the_stretch_figure_keeps_the_volume_on_the_left_only() {
     assert!(scene.set(f32::INFINITY, 0.0).is_err());
     assert!((scene.grown().determinant() - 0.5).abs() < 1e-5);
 }
+
+/// Figure 4's Try this: at the default damping 10 and a stiffness of 50 the antenna trails almost
+/// flat (1.1 m long) when the body stops, takes the whole one-second hold to stand up again, and
+/// never swings past the base.
+#[test]
+fn a_soft_antenna_trails_and_stands_up_over_the_hold_without_swinging_past() {
+    let mut scene = FollowThrough::new();
+    scene.set(50.0, 10.0, 6.0).unwrap();
+    let rows = scene.sample_tip(401).unwrap();
+    let lag_at = |t: f32| {
+        let r = rows
+            .iter()
+            .min_by(|a, b| (a[0] - t).abs().total_cmp(&(b[0] - t).abs()))
+            .unwrap();
+        r[1] - r[2]
+    };
+    assert!(lag_at(1.0) > 0.8, "trails almost flat at the stop: {}", lag_at(1.0));
+    assert!(lag_at(1.5) > 0.3, "still standing up half way through the hold: {}", lag_at(1.5));
+    assert!(lag_at(1.95) < 0.1, "up by the end of the hold: {}", lag_at(1.95));
+    let hold = rows.iter().filter(|r| r[0] > 1.0 && r[0] < 2.0);
+    assert!(hold.map(|r| r[1] - r[2]).all(|lag| lag > 0.0), "never swings past");
+    // The same stiffness with the damping raised past critical (24.5) does not stand up in time.
+    scene.set(50.0, 24.5, 6.0).unwrap();
+    let rows = scene.sample_tip(401).unwrap();
+    let end = rows.iter().filter(|r| r[0] < 1.95).last().unwrap();
+    assert!(end[1] - end[2] > 0.5);
+}
