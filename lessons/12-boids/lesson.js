@@ -18,7 +18,7 @@ const rulesViewer = await lesson.figure('#fig-rules');
 if (rulesViewer) {
   const scene = new BoidRulesScene();
   rulesViewer.setCamera(...scene.view());
-  const p = { x: 0, z: 0, heading: 0, radius: 1.2, fov: 270, cell: 1, useExercise: false };
+  const p = { x: 0, z: 0, heading: 0, radius: 1.2, fov: 270, cell: 1.2, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-rules .panel'), title: 'One boid' });
   gui.add(p, 'x', -1.9, 1.9, 0.05).name('position x (m)');
   gui.add(p, 'z', -1.9, 1.9, 0.05).name('position z (m)');
