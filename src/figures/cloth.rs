@@ -34,6 +34,10 @@ pub const SUBSTEP_PLOT_K: [f32; 6] = [250.0, 500.0, 1000.0, 2000.0, 3500.0, 5000
 pub const PAGE_MAX_SIDE: usize = 100;
 /// How close (CSS pixels) a pointer must be to a particle to grab it.
 pub const GRAB_RADIUS_PX: f32 = 24.0;
+/// Width of a guide line (a drag, an obstacle's way to its slider's place), CSS pixels.
+pub const GUIDE_PX: f32 = 2.0;
+/// Width of the spring figure's springs, CSS pixels.
+pub const SPRING_PX: f32 = 3.0;
 /// The most drag events a figure records for its replays.
 pub const MAX_DRAG_EVENTS: usize = 4000;
 /// How fast the sphere and the box move towards where their sliders put them, m/s. They never
@@ -782,7 +786,7 @@ impl ClothFigure {
             (cuboid, to_cuboid, palette::PURPLE),
         ] {
             if at != to {
-                frame.line(at, to, color);
+                frame.wide_line(at, to, color, GUIDE_PX);
                 frame.point(to, 0.03, color);
             }
         }
@@ -868,7 +872,7 @@ impl ClothFigure {
         if let Some((k, i, target)) = self.dragging {
             if let Some(sim) = self.sims.get(k) {
                 let p = sim.cloth.positions[i];
-                frame.line(p, target, palette::PINK);
+                frame.wide_line(p, target, palette::PINK, GUIDE_PX);
                 frame.point(target, 0.03, palette::PINK);
             }
         }
@@ -1326,9 +1330,10 @@ impl SpringFigure {
             let gone = k == 0 && self.exploded_at.is_some() && s >= path.len();
             let p = path[s.min(path.len() - 1)];
             let trail_start = s.min(path.len() - 1).saturating_sub(40);
-            frame.polyline(
+            frame.wide_polyline(
                 &path[trail_start..=s.min(path.len() - 1)],
                 colors[k].lerp(Vec3::ONE, 0.5),
+                crate::draw::CURVE_PX,
             );
             if gone {
                 frame.label(
@@ -1340,7 +1345,7 @@ impl SpringFigure {
                     palette::RED,
                 );
             } else {
-                frame.line(anchor, p, colors[k]);
+                frame.wide_line(anchor, p, colors[k], SPRING_PX);
                 frame.mesh(
                     MeshId::SPHERE,
                     Mat4::from_translation(p) * Mat4::from_scale(Vec3::splat(0.07)),
