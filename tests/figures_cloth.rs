@@ -776,3 +776,60 @@ fn the_substeps_plot_measures_what_the_flag_needs_and_grows_with_the_root_of_k()
     xpbd.set_method("XPBD").unwrap();
     assert!(xpbd.substep_search().is_err());
 }
+
+/// Only the ground grid may be 1 pixel wide: anything a student must see is a wide stroke.
+fn thin_lines_are_grid_lines_only(frame: &Frame) -> bool {
+    use inbetween::draw::palette;
+    frame.lines.iter().all(|v| {
+        let c = Vec3::from_slice(&v.color[..3]);
+        c == palette::GRID || c == palette::GRID_AXIS
+    })
+}
+
+#[test]
+fn the_springs_and_their_trails_are_wide_strokes() {
+    use inbetween::figures::cloth::SPRING_PX;
+    let f = SpringFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, 1.0).unwrap();
+    assert!(thin_lines_are_grid_lines_only(&frame));
+    // One spring from each anchor (x = ∓0.9 m, 2.3 m up) to its particle.
+    let springs: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| s.width_px == SPRING_PX)
+        .collect();
+    assert_eq!(springs.len(), 2);
+    for (s, x) in springs.iter().zip([-0.9, 0.9]) {
+        assert_eq!(s.a, [x, 2.3, 0.0]);
+    }
+    assert!(SPRING_PX >= 2.5);
+    // And the trails behind the particles.
+    let trails = frame
+        .strokes
+        .iter()
+        .filter(|s| s.width_px == inbetween::draw::CURVE_PX)
+        .count();
+    assert!(trails >= 2 * 30, "{trails} trail segments");
+}
+
+#[test]
+fn an_obstacle_on_its_way_shows_a_wide_guide_to_where_it_goes() {
+    use inbetween::figures::cloth::GUIDE_PX;
+    let mut f = ClothFigure::new(Preset::Drape);
+    let (_, frame) = draw(&mut f, 0.2);
+    assert!(thin_lines_are_grid_lines_only(&frame));
+    assert!(!frame.strokes.iter().any(|s| s.width_px == GUIDE_PX));
+    f.set_obstacles(1.5, 1.5, 1.5).unwrap();
+    let (_, frame) = draw(&mut f, 0.3);
+    assert!(thin_lines_are_grid_lines_only(&frame));
+    let guides: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| s.width_px == GUIDE_PX)
+        .collect();
+    assert!(!guides.is_empty(), "a guide to the sphere's or the box's new place");
+    for g in guides {
+        assert!((g.b[0] - 1.5).abs() < 1e-6, "the guide ends at the slider's place: {g:?}");
+    }
+}
