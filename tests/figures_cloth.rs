@@ -833,3 +833,72 @@ fn an_obstacle_on_its_way_shows_a_wide_guide_to_where_it_goes() {
         assert!((g.b[0] - 1.5).abs() < 1e-6, "the guide ends at the slider's place: {g:?}");
     }
 }
+
+/// Whether `p` lies in the box `lo..hi` (a hair of slack).
+fn in_box(p: Vec3, (lo, hi): (Vec3, Vec3)) -> bool {
+    p.cmpge(lo - 1e-4).all() && p.cmple(hi + 1e-4).all()
+}
+
+#[test]
+fn the_flags_and_the_drape_stay_inside_their_fixed_declared_view() {
+    for preset in [Preset::Flag, Preset::Drape] {
+        let mut f = ClothFigure::new(preset);
+        let view = f.view_box();
+        let mut declared = None;
+        for step in 0..=40 {
+            let t = step as f32 * 0.15;
+            let (_, frame) = draw(&mut f, t);
+            // The same box every frame: the camera holds still.
+            let corners = frame.keep_in_view.clone();
+            assert_eq!(corners.len(), 8);
+            assert_eq!(*declared.get_or_insert(corners.clone()), corners);
+            for k in 0..f.cloth_count() {
+                assert!(f.exploded(k).is_none(), "{preset:?} at its defaults");
+                for p in f.positions(k) {
+                    assert!(in_box(*p, view), "{preset:?} at {t} s: {p} outside {view:?}");
+                }
+            }
+            for l in &frame.labels {
+                assert!(in_box(l.anchor, view), "{preset:?}: label {} at {}", l.text, l.anchor);
+            }
+        }
+    }
+    // The drape's obstacles, wherever the sliders put them.
+    let mut f = ClothFigure::new(Preset::Drape);
+    let view = f.view_box();
+    for (sx, bx, bz) in [(-1.5, -1.5, -1.5), (1.5, 1.5, 1.5), (1.5, -1.5, 1.5)] {
+        f.set_obstacles(sx, bx, bz).unwrap();
+        let (_, frame) = draw(&mut f, 0.0);
+        let (sphere, cuboid) = f.obstacles();
+        for p in [sphere - Vec3::X * 0.55, sphere + Vec3::X * 0.55, cuboid - 0.2, cuboid + 0.2] {
+            assert!(in_box(p, view), "{p} outside {view:?}");
+        }
+        assert_eq!(frame.keep_in_view.len(), 8);
+    }
+}
+
+#[test]
+fn the_springs_swing_inside_their_fixed_declared_view() {
+    use inbetween::figures::cloth::SPRING_VIEW;
+    let mut f = SpringFigure::new();
+    for (k, dt_ms) in [(40.0, 16.7), (200.0, 5.0), (400.0, 2.0)] {
+        f.set_stiffness(k).unwrap();
+        f.set_step_ms(dt_ms).unwrap();
+        for step in 0..=120 {
+            let t = step as f32 * 0.05;
+            let mut frame = Frame::default();
+            f.draw(&mut frame, t).unwrap();
+            let (lo, hi) = SPRING_VIEW;
+            assert_eq!(frame.keep_in_view.len(), 8);
+            assert!(frame.keep_in_view.iter().all(|p| in_box(*p, SPRING_VIEW)));
+            assert!(frame.keep_in_view.contains(&lo) && frame.keep_in_view.contains(&hi));
+            for m in frame.meshes.iter().filter(|m| m.mesh == MeshId::SPHERE) {
+                let p = m.model.w_axis.truncate();
+                assert!(in_box(p, SPRING_VIEW), "k = {k}, h = {dt_ms} ms, {t} s: {p}");
+            }
+            for l in &frame.labels {
+                assert!(in_box(l.anchor, SPRING_VIEW), "label {} at {}", l.text, l.anchor);
+            }
+        }
+    }
+}

@@ -876,7 +876,20 @@ impl ClothFigure {
                 frame.point(target, 0.03, palette::PINK);
             }
         }
+        // A fixed box, so the camera holds still while the cloth moves (the viewer fits it at
+        // every frame): the poles and where the flags fly, or the ground the drape falls on with
+        // every place the sliders can put the obstacles.
+        let (lo, hi) = self.view_box();
+        frame.keep_box_in_view(lo, hi);
         Ok(self.note())
+    }
+
+    /// The box the camera keeps in view ([`Frame::keep_in_view`]): it depends on the preset only.
+    pub fn view_box(&self) -> (Vec3, Vec3) {
+        match self.preset {
+            Preset::Flag => (Vec3::new(-2.05, 0.0, -1.2), Vec3::new(2.05, 2.8, 1.2)),
+            Preset::Drape => (Vec3::new(-2.05, 0.0, -2.05), Vec3::new(2.05, 1.9, 2.05)),
+        }
     }
 
     /// A conservative stable substep for the mass-spring cloth, seconds.
@@ -1134,6 +1147,8 @@ pub const SPRING_REST: f32 = 0.8;
 pub const SPRING_DURATION: f32 = 6.0;
 const ANCHORS: [Vec3; 2] = [Vec3::new(-0.9, 2.3, 0.0), Vec3::new(0.9, 2.3, 0.0)];
 const START_OFFSET: Vec3 = Vec3::new(0.7, -0.9, 0.0);
+/// What the spring figure keeps in view: both anchors and the particles' swings below them.
+pub const SPRING_VIEW: (Vec3, Vec3) = (Vec3::new(-2.2, 1.0, -0.3), Vec3::new(2.2, 2.6, 0.3));
 const GRAVITY: Vec3 = Vec3::new(0.0, -9.81, 0.0);
 
 /// A particle hanging from a damped spring (integrated with semi-implicit Euler) beside one
@@ -1354,6 +1369,9 @@ impl SpringFigure {
             }
             frame.label(anchor + Vec3::new(0.0, 0.2, 0.0), names[k], colors[k]);
         }
+        // A fixed box around both swings (a particle that flies off leaves it: the box does not
+        // chase it), so the camera holds still.
+        frame.keep_box_in_view(SPRING_VIEW.0, SPRING_VIEW.1);
         let oh = self.omega_h();
         let mut note = format!(
             "k = {} N/m, m = {} kg: ω = √(k/m) = {} rad/s, and with h = {} ms, ω h = {} \
