@@ -956,9 +956,10 @@ mod tests {
         let mut f = Frame::default();
         f.grid(4, 1.0);
         f.axes(Mat4::IDENTITY, 1.0);
-        let (grid, axes): (Vec<&LineVertex>, Vec<&LineVertex>) =
-            f.lines.iter().partition(|v| v.depth_bias == 0.0);
-        assert_eq!(axes.len(), 6);
-        assert!(!grid.is_empty());
+        // The grid: thin lines at their depth; the axes: wide strokes biased towards the eye.
+        assert!(!f.lines.is_empty());
+        assert!(f.lines.iter().all(|v| v.depth_bias == 0.0));
+        assert_eq!(f.strokes.len(), 3);
+        assert!(f.strokes.iter().all(|s| s.depth_bias == OVERLAY_BIAS));
     }
 }
