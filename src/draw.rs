@@ -125,6 +125,9 @@ pub const MAX_MARKER_PX: f32 = 32.0;
 /// Default widths: a curve or path, a bone or arrow shaft, a dot, a tick.
 pub const CURVE_PX: f32 = 2.5;
 pub const ARROW_PX: f32 = 2.5;
+/// The axes of a frame ([`Frame::axes`]): a little thinner than a bone, so a joint's axes do not
+/// hide its bones.
+pub const AXIS_PX: f32 = 2.0;
 pub const DOT_PX: f32 = 10.0;
 pub const TICK_PX: f32 = 10.0;
 
@@ -516,8 +519,9 @@ impl Frame {
         });
     }
 
-    /// The x, y and z axes of the frame `m` as arrows in the palette's axis colours, each `length`
-    /// long, drawn over anything at the same depth (the grid's centre lines).
+    /// The x, y and z axes of the frame `m` as wide lines ([`AXIS_PX`]) in the palette's axis
+    /// colours, each `length` long, drawn over anything at the same depth (the grid's centre
+    /// lines).
     pub fn axes(&mut self, m: Mat4, length: f32) {
         let o = m.transform_point3(Vec3::ZERO);
         for (axis, color) in [
@@ -526,7 +530,7 @@ impl Frame {
             (Vec3::Z, palette::Z_AXIS),
         ] {
             let tip = o + m.transform_vector3(axis) * length;
-            self.biased_line(o, tip, color, OVERLAY_BIAS);
+            self.stroke(&[o, tip], color, StrokeStyle::solid(AXIS_PX));
         }
     }
 
@@ -952,9 +956,10 @@ mod tests {
         let mut f = Frame::default();
         f.grid(4, 1.0);
         f.axes(Mat4::IDENTITY, 1.0);
-        let (grid, axes): (Vec<&LineVertex>, Vec<&LineVertex>) =
-            f.lines.iter().partition(|v| v.depth_bias == 0.0);
-        assert_eq!(axes.len(), 6);
-        assert!(!grid.is_empty());
+        // The grid: thin lines at their depth; the axes: wide strokes biased towards the eye.
+        assert!(!f.lines.is_empty());
+        assert!(f.lines.iter().all(|v| v.depth_bias == 0.0));
+        assert_eq!(f.strokes.len(), 3);
+        assert!(f.strokes.iter().all(|s| s.depth_bias == OVERLAY_BIAS));
     }
 }

@@ -124,6 +124,23 @@ fn figures_that_declare_their_view_fit_at_both_sizes() {
     let mut f = Frame::default();
     noise_images::NoiseImages::new().draw(&mut f, [TextureId(3), TextureId(4), TextureId(5)]);
     frames.push(("05 CPU and GPU noise", f, (0.0, 1.3)));
+    {
+        use inbetween::draw::MeshId;
+        use inbetween::figures::cloth::{ClothFigure, Preset, SpringFigure};
+        let mut f = Frame::default();
+        SpringFigure::new().draw(&mut f, 1.0).unwrap();
+        frames.push(("13 one spring", f, (0.1, 0.08)));
+        for (name, preset, orbit) in [
+            ("13 flags", Preset::Flag, (0.3, 0.18)),
+            ("13 drape", Preset::Drape, (0.45, 0.5)),
+        ] {
+            let mut scene = ClothFigure::new(preset);
+            let meshes: Vec<MeshId> = (0..scene.cloth_count()).map(|k| MeshId(10 + k)).collect();
+            let mut f = Frame::default();
+            scene.draw(&mut f, &meshes, 1.0).unwrap();
+            frames.push((name, f, orbit));
+        }
+    }
     for (name, frame, (yaw, pitch)) in frames {
         assert!(!frame.keep_in_view.is_empty(), "{name} declares its view");
         let points: Vec<Vec3> = frame

@@ -195,3 +195,35 @@ fn a_contact_shadow_widens_and_fades_as_its_object_rises() {
         assert!(pair[1].size_px > pair[0].size_px, "wider higher up");
     }
 }
+
+#[test]
+fn axes_are_wide_strokes_in_the_axis_colours() {
+    let mut f = Frame::default();
+    f.axes(glam::Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0)), 0.5);
+    assert!(f.lines.is_empty(), "no 1-pixel axis lines");
+    assert_eq!(f.strokes.len(), 3);
+    for (s, color) in f
+        .strokes
+        .iter()
+        .zip([palette::X_AXIS, palette::Y_AXIS, palette::Z_AXIS])
+    {
+        assert_eq!(s.width_px, AXIS_PX);
+        assert!(AXIS_PX >= 2.0, "wide enough to see at 800 x 600");
+        assert_eq!(s.color[..3], color.to_array());
+        assert_eq!(s.a, [1.0, 2.0, 3.0]);
+        assert!((Vec3::from(s.b).distance(Vec3::from(s.a)) - 0.5).abs() < 1e-6);
+        // Over the grid's centre lines at the same depth, as before.
+        assert_eq!(s.depth_bias, OVERLAY_BIAS);
+    }
+    // Their quads are AXIS_PX CSS pixels wide on screen, at both page sizes.
+    let camera = OrbitCamera::default();
+    for size in [Vec2::new(800.0, 600.0), Vec2::new(1600.0, 1000.0)] {
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        for s in &f.strokes {
+            let (corners, half) = stroke_corners(s, view_proj, size, 1.0).expect("in view");
+            assert!((2.0 * half - AXIS_PX).abs() < 1e-4);
+            // Plus the antialiased pixel on each side.
+            assert!((quad_width(&corners) - (AXIS_PX + 2.0)).abs() < 0.05);
+        }
+    }
+}

@@ -901,3 +901,36 @@ fn without_separation_the_leaders_flock_piles_into_one_clump() {
         "{before} → {after}"
     );
 }
+
+/// Only the ground's cell grid may be 1 pixel wide: anything a student must see is a wide stroke.
+fn thin_lines_are_grid_lines_only(frame: &Frame) -> bool {
+    use inbetween::draw::palette;
+    frame.lines.iter().all(|v| {
+        let c = Vec3::from_slice(&v.color[..3]);
+        c == palette::GRID || c == palette::GRID_AXIS
+    })
+}
+
+#[test]
+fn every_boids_tail_is_a_wide_stroke() {
+    let mut scene = FlockFigure::new();
+    scene.advance_to(0.3).unwrap();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame);
+    assert!(thin_lines_are_grid_lines_only(&frame));
+    let boids = frame.points.len();
+    assert_eq!(boids, 300);
+    // One tail per boid, 0.12 m long behind it, TAIL_PX wide.
+    let tails = frame
+        .strokes
+        .iter()
+        .filter(|s| s.width_px == TAIL_PX)
+        .filter(|s| (Vec3::from(s.a).distance(Vec3::from(s.b)) - 0.12).abs() < 1e-3)
+        .count();
+    assert_eq!(tails, boids);
+    assert!(TAIL_PX >= 2.0);
+    let rules = RulesFigure::new();
+    let mut frame = Frame::default();
+    rules.draw(&mut frame);
+    assert!(thin_lines_are_grid_lines_only(&frame));
+}

@@ -776,3 +776,129 @@ fn the_substeps_plot_measures_what_the_flag_needs_and_grows_with_the_root_of_k()
     xpbd.set_method("XPBD").unwrap();
     assert!(xpbd.substep_search().is_err());
 }
+
+/// Only the ground grid may be 1 pixel wide: anything a student must see is a wide stroke.
+fn thin_lines_are_grid_lines_only(frame: &Frame) -> bool {
+    use inbetween::draw::palette;
+    frame.lines.iter().all(|v| {
+        let c = Vec3::from_slice(&v.color[..3]);
+        c == palette::GRID || c == palette::GRID_AXIS
+    })
+}
+
+#[test]
+fn the_springs_and_their_trails_are_wide_strokes() {
+    use inbetween::figures::cloth::SPRING_PX;
+    let f = SpringFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, 1.0).unwrap();
+    assert!(thin_lines_are_grid_lines_only(&frame));
+    // One spring from each anchor (x = ∓0.9 m, 2.3 m up) to its particle.
+    let springs: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| s.width_px == SPRING_PX)
+        .collect();
+    assert_eq!(springs.len(), 2);
+    for (s, x) in springs.iter().zip([-0.9, 0.9]) {
+        assert_eq!(s.a, [x, 2.3, 0.0]);
+    }
+    assert!(SPRING_PX >= 2.5);
+    // And the trails behind the particles.
+    let trails = frame
+        .strokes
+        .iter()
+        .filter(|s| s.width_px == inbetween::draw::CURVE_PX)
+        .count();
+    assert!(trails >= 2 * 30, "{trails} trail segments");
+}
+
+#[test]
+fn an_obstacle_on_its_way_shows_a_wide_guide_to_where_it_goes() {
+    use inbetween::figures::cloth::GUIDE_PX;
+    let mut f = ClothFigure::new(Preset::Drape);
+    let (_, frame) = draw(&mut f, 0.2);
+    assert!(thin_lines_are_grid_lines_only(&frame));
+    assert!(!frame.strokes.iter().any(|s| s.width_px == GUIDE_PX));
+    f.set_obstacles(1.5, 1.5, 1.5).unwrap();
+    let (_, frame) = draw(&mut f, 0.3);
+    assert!(thin_lines_are_grid_lines_only(&frame));
+    let guides: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| s.width_px == GUIDE_PX)
+        .collect();
+    assert!(!guides.is_empty(), "a guide to the sphere's or the box's new place");
+    for g in guides {
+        assert!((g.b[0] - 1.5).abs() < 1e-6, "the guide ends at the slider's place: {g:?}");
+    }
+}
+
+/// Whether `p` lies in the box `lo..hi` (a hair of slack).
+fn in_box(p: Vec3, (lo, hi): (Vec3, Vec3)) -> bool {
+    p.cmpge(lo - 1e-4).all() && p.cmple(hi + 1e-4).all()
+}
+
+#[test]
+fn the_flags_and_the_drape_stay_inside_their_fixed_declared_view() {
+    for preset in [Preset::Flag, Preset::Drape] {
+        let mut f = ClothFigure::new(preset);
+        let view = f.view_box();
+        let mut declared = None;
+        for step in 0..=40 {
+            let t = step as f32 * 0.15;
+            let (_, frame) = draw(&mut f, t);
+            // The same box every frame: the camera holds still.
+            let corners = frame.keep_in_view.clone();
+            assert_eq!(corners.len(), 8);
+            assert_eq!(*declared.get_or_insert(corners.clone()), corners);
+            for k in 0..f.cloth_count() {
+                assert!(f.exploded(k).is_none(), "{preset:?} at its defaults");
+                for p in f.positions(k) {
+                    assert!(in_box(*p, view), "{preset:?} at {t} s: {p} outside {view:?}");
+                }
+            }
+            for l in &frame.labels {
+                assert!(in_box(l.anchor, view), "{preset:?}: label {} at {}", l.text, l.anchor);
+            }
+        }
+    }
+    // The drape's obstacles, wherever the sliders put them.
+    let mut f = ClothFigure::new(Preset::Drape);
+    let view = f.view_box();
+    for (sx, bx, bz) in [(-1.5, -1.5, -1.5), (1.5, 1.5, 1.5), (1.5, -1.5, 1.5)] {
+        f.set_obstacles(sx, bx, bz).unwrap();
+        let (_, frame) = draw(&mut f, 0.0);
+        let (sphere, cuboid) = f.obstacles();
+        for p in [sphere - Vec3::X * 0.55, sphere + Vec3::X * 0.55, cuboid - 0.2, cuboid + 0.2] {
+            assert!(in_box(p, view), "{p} outside {view:?}");
+        }
+        assert_eq!(frame.keep_in_view.len(), 8);
+    }
+}
+
+#[test]
+fn the_springs_swing_inside_their_fixed_declared_view() {
+    use inbetween::figures::cloth::SPRING_VIEW;
+    let mut f = SpringFigure::new();
+    for (k, dt_ms) in [(40.0, 16.7), (200.0, 5.0), (400.0, 2.0)] {
+        f.set_stiffness(k).unwrap();
+        f.set_step_ms(dt_ms).unwrap();
+        for step in 0..=120 {
+            let t = step as f32 * 0.05;
+            let mut frame = Frame::default();
+            f.draw(&mut frame, t).unwrap();
+            let (lo, hi) = SPRING_VIEW;
+            assert_eq!(frame.keep_in_view.len(), 8);
+            assert!(frame.keep_in_view.iter().all(|p| in_box(*p, SPRING_VIEW)));
+            assert!(frame.keep_in_view.contains(&lo) && frame.keep_in_view.contains(&hi));
+            for m in frame.meshes.iter().filter(|m| m.mesh == MeshId::SPHERE) {
+                let p = m.model.w_axis.truncate();
+                assert!(in_box(p, SPRING_VIEW), "k = {k}, h = {dt_ms} ms, {t} s: {p}");
+            }
+            for l in &frame.labels {
+                assert!(in_box(l.anchor, SPRING_VIEW), "label {} at {}", l.text, l.anchor);
+            }
+        }
+    }
+}

@@ -884,3 +884,28 @@ fn the_normals_plot_gives_the_angle_at_every_resolution() {
     assert!(rows.windows(2).all(|w| w[1][1] < w[0][1]), "{rows:?}");
     assert_eq!(rows[1][1..], <[f32; 2]>::from(f.angle_stats())[..]);
 }
+
+#[test]
+fn the_1d_noise_curve_and_its_guides_are_wide_strokes() {
+    let mut s = Noise1d::new();
+    s.set_probe(3.5).unwrap();
+    let mut f = Frame::default();
+    s.draw(&mut f);
+    // The only 1-pixel line is the baseline, in the grid's axis colour.
+    assert!(f
+        .lines
+        .iter()
+        .all(|v| v.color[..3] == palette::GRID_AXIS.to_array()));
+    let curve: Vec<_> = f
+        .strokes
+        .iter()
+        .filter(|st| st.color[..3] == palette::BLUE.to_array())
+        .collect();
+    assert!(curve.len() > 50, "the curve is many segments");
+    assert!(curve.iter().all(|st| st.width_px == inbetween::draw::CURVE_PX));
+    // The gradients, ramps and the gap between them: GUIDE_PX.
+    assert!(
+        f.strokes.iter().filter(|st| st.width_px == GUIDE_PX).count() >= 9 + 2 + 1,
+        "nine gradients, two ramps, the gap"
+    );
+}

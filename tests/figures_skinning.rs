@@ -686,3 +686,24 @@ fn the_weights_plot_is_half_and_half_at_the_elbow_and_widens_with_the_falloff() 
     }
     assert!(zones[0] < zones[1] && zones[1] < zones[2], "{zones:?}");
 }
+
+#[test]
+fn the_xrayed_skeleton_has_bones_and_joints_that_read_at_a_glance() {
+    use inbetween::figures::skinning::{BONE_PX, JOINT_PX};
+    let mut h = HumanFigure::new();
+    h.set_show_skeleton(true);
+    let mut frame = Frame::default();
+    h.draw(&mut frame, MeshId(3));
+    let joints = h.joint_names().len();
+    let bones: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| s.depth_bias == inbetween::draw::ON_TOP)
+        .collect();
+    assert_eq!(bones.len(), joints - 1);
+    assert!(bones.iter().all(|s| s.width_px == BONE_PX));
+    assert!(BONE_PX >= 3.0, "a bone reads through the body at 800 x 600");
+    let dots: Vec<_> = frame.markers.iter().filter(|m| m.size_px < 0.0).collect();
+    assert_eq!(dots.len(), joints);
+    assert!(dots.iter().all(|m| m.size_px == -JOINT_PX));
+}

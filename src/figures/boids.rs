@@ -32,6 +32,8 @@ pub const MAX_CATCH_UP: usize = 10;
 pub const STEER_ARROW_M_PER_MS2: f32 = 1.0;
 /// The longest the steering arrow is drawn, metres (the note gives the value).
 pub const STEER_ARROW_MAX_M: f32 = 1.5;
+/// Width of a boid's tail (the line behind it along its velocity), in CSS pixels.
+pub const TAIL_PX: f32 = 2.0;
 
 /// What the force-law dropdown offers.
 pub const LAWS: [&str; 3] = ["none", "a1/x² − a2/x⁴", "Gaussian"];
@@ -742,7 +744,8 @@ impl FlockFigure {
                 (palette::BLUE, 0.035)
             };
             frame.point(p, r, color);
-            frame.line(p, p - v.normalize_or_zero() * 0.12, color);
+            // The tail shows which way a boid flies: wide enough to read at 800 x 600.
+            frame.wide_line(p, p - v.normalize_or_zero() * 0.12, color, TAIL_PX);
         }
         // The highlighted boid's neighbours (within the largest radius, in view).
         self.neighbours.clear();

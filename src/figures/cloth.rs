@@ -34,6 +34,10 @@ pub const SUBSTEP_PLOT_K: [f32; 6] = [250.0, 500.0, 1000.0, 2000.0, 3500.0, 5000
 pub const PAGE_MAX_SIDE: usize = 100;
 /// How close (CSS pixels) a pointer must be to a particle to grab it.
 pub const GRAB_RADIUS_PX: f32 = 24.0;
+/// Width of a guide line (a drag, an obstacle's way to its slider's place), CSS pixels.
+pub const GUIDE_PX: f32 = 2.0;
+/// Width of the spring figure's springs, CSS pixels.
+pub const SPRING_PX: f32 = 3.0;
 /// The most drag events a figure records for its replays.
 pub const MAX_DRAG_EVENTS: usize = 4000;
 /// How fast the sphere and the box move towards where their sliders put them, m/s. They never
@@ -782,7 +786,7 @@ impl ClothFigure {
             (cuboid, to_cuboid, palette::PURPLE),
         ] {
             if at != to {
-                frame.line(at, to, color);
+                frame.wide_line(at, to, color, GUIDE_PX);
                 frame.point(to, 0.03, color);
             }
         }
@@ -868,11 +872,24 @@ impl ClothFigure {
         if let Some((k, i, target)) = self.dragging {
             if let Some(sim) = self.sims.get(k) {
                 let p = sim.cloth.positions[i];
-                frame.line(p, target, palette::PINK);
+                frame.wide_line(p, target, palette::PINK, GUIDE_PX);
                 frame.point(target, 0.03, palette::PINK);
             }
         }
+        // A fixed box, so the camera holds still while the cloth moves (the viewer fits it at
+        // every frame): the poles and where the flags fly, or the ground the drape falls on with
+        // every place the sliders can put the obstacles.
+        let (lo, hi) = self.view_box();
+        frame.keep_box_in_view(lo, hi);
         Ok(self.note())
+    }
+
+    /// The box the camera keeps in view ([`Frame::keep_in_view`]): it depends on the preset only.
+    pub fn view_box(&self) -> (Vec3, Vec3) {
+        match self.preset {
+            Preset::Flag => (Vec3::new(-2.05, 0.0, -1.2), Vec3::new(2.05, 2.8, 1.2)),
+            Preset::Drape => (Vec3::new(-2.05, 0.0, -2.05), Vec3::new(2.05, 1.9, 2.05)),
+        }
     }
 
     /// A conservative stable substep for the mass-spring cloth, seconds.
@@ -1130,6 +1147,8 @@ pub const SPRING_REST: f32 = 0.8;
 pub const SPRING_DURATION: f32 = 6.0;
 const ANCHORS: [Vec3; 2] = [Vec3::new(-0.9, 2.3, 0.0), Vec3::new(0.9, 2.3, 0.0)];
 const START_OFFSET: Vec3 = Vec3::new(0.7, -0.9, 0.0);
+/// What the spring figure keeps in view: both anchors and the particles' swings below them.
+pub const SPRING_VIEW: (Vec3, Vec3) = (Vec3::new(-2.2, 1.0, -0.3), Vec3::new(2.2, 2.6, 0.3));
 const GRAVITY: Vec3 = Vec3::new(0.0, -9.81, 0.0);
 
 /// A particle hanging from a damped spring (integrated with semi-implicit Euler) beside one
@@ -1326,9 +1345,10 @@ impl SpringFigure {
             let gone = k == 0 && self.exploded_at.is_some() && s >= path.len();
             let p = path[s.min(path.len() - 1)];
             let trail_start = s.min(path.len() - 1).saturating_sub(40);
-            frame.polyline(
+            frame.wide_polyline(
                 &path[trail_start..=s.min(path.len() - 1)],
                 colors[k].lerp(Vec3::ONE, 0.5),
+                crate::draw::CURVE_PX,
             );
             if gone {
                 frame.label(
@@ -1340,7 +1360,7 @@ impl SpringFigure {
                     palette::RED,
                 );
             } else {
-                frame.line(anchor, p, colors[k]);
+                frame.wide_line(anchor, p, colors[k], SPRING_PX);
                 frame.mesh(
                     MeshId::SPHERE,
                     Mat4::from_translation(p) * Mat4::from_scale(Vec3::splat(0.07)),
@@ -1349,6 +1369,9 @@ impl SpringFigure {
             }
             frame.label(anchor + Vec3::new(0.0, 0.2, 0.0), names[k], colors[k]);
         }
+        // A fixed box around both swings (a particle that flies off leaves it: the box does not
+        // chase it), so the camera holds still.
+        frame.keep_box_in_view(SPRING_VIEW.0, SPRING_VIEW.1);
         let oh = self.omega_h();
         let mut note = format!(
             "k = {} N/m, m = {} kg: ω = √(k/m) = {} rad/s, and with h = {} ms, ω h = {} \

@@ -36,7 +36,7 @@ struct Skinned {
 /// The most mesh vertices drawn as dots (every k-th vertex beyond it).
 const MAX_DOTS: usize = 2_000;
 /// Width of a bone on screen, and the size of a bind-pose dot, CSS pixels.
-const BONE_PX: f32 = 2.5;
+const BONE_PX: f32 = 3.0;
 const DOT_PX: f32 = 6.0;
 
 /// What is loaded.

@@ -7,6 +7,7 @@
 
 use super::{check_samples, DEFAULT_RUNNER};
 use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner};
+use crate::draw::StrokeStyle;
 use crate::exercises::run;
 use crate::noise::fractals::{koch_snowflake, sierpinski, MAX_DEPTH};
 use crate::noise::texture::{fill_rgba, TextureKind, TextureParams};
@@ -21,6 +22,8 @@ use glam::{Mat4, Vec2, Vec3};
 
 const FILE: &str = "src/exercises/noise.rs";
 const TOLERANCE: f32 = 1e-4;
+/// Width of a guide line (a gradient, a ramp, the probe's stalk, the cell's outline), CSS pixels.
+pub const GUIDE_PX: f32 = 2.0;
 
 /// Perlin's table for seed 0, a seeded shuffle otherwise.
 pub fn permutation_for_seed(seed: u32) -> Permutation {
@@ -241,7 +244,7 @@ impl Noise1d {
                 Self::to_world(x, self.perm.noise1(x))
             })
             .collect();
-        frame.polyline(&curve, palette::BLUE);
+        frame.wide_polyline(&curve, palette::BLUE, crate::draw::CURVE_PX);
         let cell = self.probe_x.floor() as i32;
         for i in 0..=8 {
             let g = grad1(self.perm.hash1(i));
@@ -254,10 +257,11 @@ impl Noise1d {
             };
             let x = i as f32;
             frame.point(Self::to_world(x, 0.0), 0.06, palette::KEY);
-            frame.line(
+            frame.wide_line(
                 Self::to_world(x - 0.3, -0.3 * g),
                 Self::to_world(x + 0.3, 0.3 * g),
                 color,
+                GUIDE_PX,
             );
         }
         let t = self.probe_x - cell as f32;
@@ -267,13 +271,15 @@ impl Noise1d {
         );
         let x0 = cell as f32;
         if self.show_ramps {
-            frame.polyline(
+            frame.wide_polyline(
                 &[Self::to_world(x0, 0.0), Self::to_world(x0 + 1.0, g0)],
                 palette::ORANGE,
+                GUIDE_PX,
             );
-            frame.polyline(
+            frame.wide_polyline(
                 &[Self::to_world(x0, -g1), Self::to_world(x0 + 1.0, 0.0)],
                 palette::TEAL,
+                GUIDE_PX,
             );
             // Labels a quarter of the way in from the ramps' far ends: at the ends, a steep ramp
             // reaches the bottom edge of the view, and both labels can land there side by side.
@@ -294,10 +300,11 @@ impl Noise1d {
         if self.show_ramps {
             frame.point(Self::to_world(self.probe_x, a), 0.05, palette::ORANGE);
             frame.point(Self::to_world(self.probe_x, b), 0.05, palette::TEAL);
-            frame.line(
+            frame.wide_line(
                 Self::to_world(self.probe_x, a),
                 Self::to_world(self.probe_x, b),
                 palette::GREY,
+                GUIDE_PX,
             );
         }
         frame.point(Self::to_world(self.probe_x, n), 0.08, palette::PINK);
@@ -533,7 +540,14 @@ impl Noise2d {
                     // surface; both are drawn through the surface, which hides half of them.
                     let dot = self.world(p, 0.0) + lift;
                     frame.point_on_top(dot, 0.025, palette::KEY);
-                    frame.line_on_top(dot, at, palette::KEY);
+                    frame.stroke(
+                        &[dot, at],
+                        palette::KEY,
+                        StrokeStyle {
+                            on_top: true,
+                            ..StrokeStyle::solid(1.5)
+                        },
+                    );
                 }
                 if slope != Vec2::ZERO {
                     let tip = at + Vec3::new(slope.x, 0.0, slope.y) * 0.18;
@@ -544,11 +558,11 @@ impl Noise2d {
         let c = self.probe.floor();
         let corners = [c, c + Vec2::X, c + Vec2::ONE, c + Vec2::Y, c];
         let outline: Vec<Vec3> = corners.iter().map(|&p| self.world(p, 0.0) + lift).collect();
-        frame.polyline(&outline, palette::PURPLE);
+        frame.wide_polyline(&outline, palette::PURPLE, GUIDE_PX);
         let value = self.probe_value();
         let at = self.world(self.probe, value);
         frame.point(at, 0.03, palette::PINK);
-        frame.line(self.world(self.probe, 0.0), at, palette::PINK);
+        frame.wide_line(self.world(self.probe, 0.0), at, palette::PINK, GUIDE_PX);
         frame.label(
             at + Vec3::Y * 0.12,
             format!("n = {}", format_number(value)),
@@ -597,9 +611,9 @@ impl Noise2d {
                 };
                 for b in 0..STUDENT_GRID {
                     let row: Vec<Vec3> = (0..STUDENT_GRID).map(|a| point(a, b)).collect();
-                    frame.polyline(&row, palette::STUDENT);
+                    frame.wide_polyline(&row, palette::STUDENT, 1.5);
                     let col: Vec<Vec3> = (0..STUDENT_GRID).map(|a| point(b, a)).collect();
-                    frame.polyline(&col, palette::STUDENT);
+                    frame.wide_polyline(&col, palette::STUDENT, 1.5);
                 }
                 frame.label(
                     point(STUDENT_GRID - 1, STUDENT_GRID - 1),
@@ -829,9 +843,9 @@ impl Octaves {
                 })
                 .collect()
         };
-        frame.polyline(&profile(&shown), palette::ORANGE);
+        frame.wide_polyline(&profile(&shown), palette::ORANGE, crate::draw::CURVE_PX);
         if shown.n > 0 {
-            frame.polyline(&profile(&previous), palette::DARK);
+            frame.wide_polyline(&profile(&previous), palette::DARK, 1.5);
         }
         frame.label(
             Vec3::new(1.05, 0.0, V_SLICE),
@@ -892,7 +906,7 @@ impl Octaves {
                             Vec3::new(Self::profile_u(i), FIG3_H * g, V_SLICE) + lift * 2.0
                         })
                         .collect();
-                    frame.polyline(&line, palette::STUDENT);
+                    frame.wide_polyline(&line, palette::STUDENT, crate::draw::CURVE_PX);
                     frame.label(
                         Vec3::new(-1.05, FIG3_H * values[0], V_SLICE),
                         "yours",

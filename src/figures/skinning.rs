@@ -147,6 +147,10 @@ pub struct CylinderFigure {
 /// Widths of the elbow ring and of the lines along the tubes, CSS pixels.
 const RING_PX: f32 = 3.0;
 const STRIPE_PX: f32 = 2.0;
+/// The X-rayed skeleton of the skinned character: bone width and joint dot size, CSS pixels (a
+/// bone must read through the body at 800 x 600).
+pub const BONE_PX: f32 = 3.0;
+pub const JOINT_PX: f32 = 9.0;
 
 impl Default for CylinderFigure {
     fn default() -> Self {
@@ -1184,10 +1188,10 @@ impl HumanFigure {
                 let parents = self.character.skeleton.parents();
                 for (i, m) in self.model.iter().enumerate() {
                     let p = at(m);
-                    frame.marker_on_top(p, 7.0, palette::DARK);
+                    frame.marker_on_top(p, JOINT_PX, palette::DARK);
                     if parents[i] >= 0 {
                         let q = at(&self.model[parents[i] as usize]);
-                        frame.wide_line_on_top(q, p, palette::DARK, 2.0);
+                        frame.wide_line_on_top(q, p, palette::DARK, BONE_PX);
                     }
                 }
             }
