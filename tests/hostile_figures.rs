@@ -317,3 +317,35 @@ fn a_fractional_timing_flock_is_rejected_not_truncated() {
     flock.prepare_timing(500.0).unwrap();
     flock.timing_step("grid").unwrap();
 }
+
+#[test]
+fn a_rejected_value_never_leaves_one_copy_of_the_comparison_changed() {
+    use glam::Vec3;
+    use inbetween::figures::transforms::ScaleComparison;
+    let mut c = ScaleComparison::new();
+    c.set_upper_arm_scale(Vec3::new(1.0, 1.5, 1.0)).unwrap();
+    c.set_forearm_angles_deg(Vec3::new(-40.0, 10.0, 0.0))
+        .unwrap();
+    // What the figure shows: its note and both forearms, as drawn (the setters pose nothing).
+    let shown = |c: &mut ScaleComparison| {
+        let note = c.draw(&mut inbetween::draw::Frame::default()).unwrap();
+        let shapes = [c.forearm_shape(0), c.forearm_shape(1)];
+        let outlines = [c.forearm_outline(0), c.forearm_outline(1)];
+        (note, shapes, outlines)
+    };
+    let before = shown(&mut c);
+    let e = c
+        .set_upper_arm_scale(Vec3::new(2.0, 2.0, f32::NAN))
+        .unwrap_err();
+    assert!(e.contains("sz"), "{e}");
+    let e = c
+        .set_forearm_angles_deg(Vec3::new(10.0, f32::INFINITY, 0.0))
+        .unwrap_err();
+    assert!(e.contains("y"), "{e}");
+    assert_eq!(shown(&mut c), before, "both copies as they were");
+    // A good value still reaches both copies.
+    c.set_upper_arm_scale(Vec3::new(1.0, 2.5, 1.0)).unwrap();
+    let after = shown(&mut c);
+    // (Only the copy that inherits scale passes the arm's stretch on to its forearm.)
+    assert_ne!(after.1[1], before.1[1]);
+}
