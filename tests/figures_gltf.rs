@@ -140,3 +140,31 @@ fn after_a_rejected_file_the_note_says_what_is_still_shown() {
     let note = figure.draw(&mut f, 0.5, &[]).unwrap();
     assert!(note.starts_with("tiny.gltf: 2 joints"), "{note}");
 }
+
+#[test]
+fn a_file_too_big_to_copy_is_rejected_like_any_other() {
+    // The web layer checks a file's size before copying it into wasm memory and hands the
+    // rejection to the figure: the note and the character shown are as for a file the importer
+    // rejected.
+    let mut figure = GltfFigure::new();
+    figure
+        .load("tiny.gltf", tiny_skinned_gltf().as_bytes())
+        .unwrap();
+    let clips = figure.clip_names();
+    let e = figure.reject(
+        "huge.glb",
+        "the file has 99999999999 bytes; the importer reads at most 67108864",
+    );
+    assert_eq!(
+        e,
+        "huge.glb: the file has 99999999999 bytes; the importer reads at most 67108864"
+    );
+    assert!(figure.is_loaded());
+    assert_eq!(figure.clip_names(), clips);
+    let note = figure.draw(&mut Frame::default(), 0.0, &[]).unwrap();
+    assert!(
+        note.starts_with("Could not load huge.glb: the file has 99999999999 bytes")
+            && note.contains("the figure still shows tiny.gltf, loaded before."),
+        "{note}"
+    );
+}

@@ -190,3 +190,162 @@ fn rigid_keys_outside_their_range_are_rejected() {
         assert!(row.iter().all(|v| v.is_finite()), "{row:?}");
     }
 }
+
+// ---- setters: every argument checked before any field changes ----
+//
+// Each test sets a known state, calls the setter with good arguments and one bad one, and
+// checks that what the figure shows (its getters, its note, its pose) is exactly as before.
+
+#[test]
+fn a_rejected_additive_weight_keeps_the_additive_layer() {
+    use inbetween::figures::blending::BlendFigure;
+    let mut f = BlendFigure::new();
+    f.set_additive("lean forward (a pose)", 0.5).unwrap();
+    let note = f.pose(0.3).unwrap();
+    let model = f.model().to_vec();
+    for bad in [f32::NAN, -0.1, 1.5, 1e38] {
+        let e = f.set_additive("wave (a clip)", bad).unwrap_err();
+        assert!(e.contains("additive weight"), "{e}");
+        assert_eq!(
+            f.pose(0.3).unwrap(),
+            note,
+            "a rejected call changes nothing"
+        );
+        assert_eq!(f.model(), model.as_slice());
+    }
+    let e = f.set_additive("no such layer", 0.2).unwrap_err();
+    assert!(e.contains("additive layer"), "{e}");
+    assert_eq!(f.pose(0.3).unwrap(), note);
+    // A good call still applies both.
+    f.set_additive("wave (a clip)", 0.25).unwrap();
+    assert!(f
+        .pose(0.3)
+        .unwrap()
+        .contains("wave (a clip) at weight 0.25"));
+}
+
+#[test]
+fn a_rejected_key_count_keeps_the_clips() {
+    use inbetween::figures::skeleton::SkeletonFigure;
+    let mut f = SkeletonFigure::new();
+    f.set_keys_per_cycle(7.0).unwrap();
+    let keys = f.key_times();
+    let note = f.pose(0.4).unwrap();
+    for bad in [f32::NAN, 3.0, 26.0, 7.5, 1e38] {
+        assert!(f.set_keys_per_cycle(bad).is_err(), "{bad}");
+        assert_eq!(
+            f.key_times(),
+            keys,
+            "a rejected count keeps the clips ({bad})"
+        );
+        assert_eq!(f.pose(0.4).unwrap(), note);
+    }
+    f.set_keys_per_cycle(9.0).unwrap();
+    assert_ne!(f.key_times(), keys);
+}
+
+// Counts that were rounded or truncated: each is now an error, and the figure is as it was.
+
+#[test]
+fn a_fractional_substep_count_is_rejected_not_rounded() {
+    use inbetween::figures::cloth::{ClothFigure, Preset};
+    // Cloth: 4.5 substeps was rounded to 5 and replayed the run.
+    let mut cloth = ClothFigure::new(Preset::Flag);
+    cloth.set_substeps(4.0).unwrap();
+    let mut untouched = cloth.clone();
+    let e = cloth.set_substeps(4.5).unwrap_err();
+    assert!(
+        e.contains("substeps must be a whole number from 1 to 40"),
+        "{e}"
+    );
+    cloth.advance_to(0.3).unwrap();
+    untouched.advance_to(0.3).unwrap();
+    // The same run, bit for bit (the exploded cloths' samples are NaN, which is not == NaN).
+    let bits = |f: &ClothFigure| f.samples().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&cloth), bits(&untouched));
+}
+
+#[test]
+fn fractional_segment_and_iteration_counts_are_rejected_not_rounded() {
+    use inbetween::figures::ik::IkFigure;
+    use inbetween::figures::raster::MeshStorage;
+    // IK: 2.5 segments was rounded to 3 (a chain the analytic solver cannot show), 10.5
+    // iterations to 11.
+    let mut ik = IkFigure::new();
+    ik.set_segments(2.0).unwrap();
+    let results = ik.results().unwrap();
+    let e = ik.set_segments(2.5).unwrap_err();
+    assert!(
+        e.contains("segments must be a whole number from 2 to 8"),
+        "{e}"
+    );
+    assert_eq!(ik.segments(), 2);
+    let e = ik.set_iterations(10.5).unwrap_err();
+    assert!(
+        e.contains("iterations must be a whole number from 1 to 50"),
+        "{e}"
+    );
+    assert_eq!(ik.results().unwrap(), results);
+
+    // The mesh storage figure: 8.5 segments was rounded to 9.
+    let mut mesh = MeshStorage::new();
+    mesh.set_shape("sphere").unwrap();
+    mesh.set_segments(8.0).unwrap();
+    let sizes = mesh.sizes();
+    let e = mesh.set_segments(8.5).unwrap_err();
+    assert!(
+        e.contains("segments must be a whole number from 3 to 64"),
+        "{e}"
+    );
+    assert_eq!(mesh.sizes(), sizes);
+}
+
+#[test]
+fn a_fractional_timing_flock_is_rejected_not_truncated() {
+    use inbetween::figures::boids::FlockFigure;
+    // The boids' timing flock: 500.5 boids was truncated to 500.
+    let mut flock = FlockFigure::new();
+    let e = flock.prepare_timing(500.5).unwrap_err();
+    assert!(
+        e.contains("boids to time must be a whole number from 2 to 20000"),
+        "{e}"
+    );
+    assert!(
+        flock.timing_step("grid").is_err(),
+        "no timing flock was built"
+    );
+    flock.prepare_timing(500.0).unwrap();
+    flock.timing_step("grid").unwrap();
+}
+
+#[test]
+fn a_rejected_value_never_leaves_one_copy_of_the_comparison_changed() {
+    use glam::Vec3;
+    use inbetween::figures::transforms::ScaleComparison;
+    let mut c = ScaleComparison::new();
+    c.set_upper_arm_scale(Vec3::new(1.0, 1.5, 1.0)).unwrap();
+    c.set_forearm_angles_deg(Vec3::new(-40.0, 10.0, 0.0))
+        .unwrap();
+    // What the figure shows: its note and both forearms, as drawn (the setters pose nothing).
+    let shown = |c: &mut ScaleComparison| {
+        let note = c.draw(&mut inbetween::draw::Frame::default()).unwrap();
+        let shapes = [c.forearm_shape(0), c.forearm_shape(1)];
+        let outlines = [c.forearm_outline(0), c.forearm_outline(1)];
+        (note, shapes, outlines)
+    };
+    let before = shown(&mut c);
+    let e = c
+        .set_upper_arm_scale(Vec3::new(2.0, 2.0, f32::NAN))
+        .unwrap_err();
+    assert!(e.contains("sz"), "{e}");
+    let e = c
+        .set_forearm_angles_deg(Vec3::new(10.0, f32::INFINITY, 0.0))
+        .unwrap_err();
+    assert!(e.contains("y"), "{e}");
+    assert_eq!(shown(&mut c), before, "both copies as they were");
+    // A good value still reaches both copies.
+    c.set_upper_arm_scale(Vec3::new(1.0, 2.5, 1.0)).unwrap();
+    let after = shown(&mut c);
+    // (Only the copy that inherits scale passes the arm's stretch on to its forearm.)
+    assert_ne!(after.1[1], before.1[1]);
+}

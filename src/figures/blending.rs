@@ -167,13 +167,15 @@ impl BlendFigure {
 
     /// One of [`ADDITIVES`], with its weight in [0, 1].
     pub fn set_additive(&mut self, name: &str, weight: f32) -> Result<(), String> {
-        self.additive = ADDITIVES.iter().position(|&m| m == name).ok_or_else(|| {
+        // Both are checked before either changes: a rejected weight keeps the layer too.
+        let additive = ADDITIVES.iter().position(|&m| m == name).ok_or_else(|| {
             format!(
                 "additive layer must be one of {}, got {name:?}",
                 ADDITIVES.join(", ")
             )
         })?;
-        self.additive_weight = in_range("additive weight", weight, 0.0, 1.0)?;
+        let weight = in_range("additive weight", weight, 0.0, 1.0)?;
+        (self.additive, self.additive_weight) = (additive, weight);
         Ok(())
     }
 

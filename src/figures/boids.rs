@@ -652,7 +652,7 @@ impl FlockFigure {
     /// Builds the flock the page times: `n ∈ [2, PAGE_MAX_TIMED_BOIDS]` boids at the same
     /// density as the figure's flock (the box grows with `n`), so the grid's cost stays O(N).
     pub fn prepare_timing(&mut self, n: f32) -> Result<(), String> {
-        let n = in_range("boids to time", n, 2.0, PAGE_MAX_TIMED_BOIDS as f32)? as usize;
+        let n = super::whole_number("boids to time", n, 2, PAGE_MAX_TIMED_BOIDS)?;
         let scale = (n as f32 / 300.0).cbrt().max(1.0);
         let params = BoidParams {
             bounds: self.params.bounds * scale,

@@ -395,9 +395,9 @@ impl ClothFigure {
         Ok(())
     }
 
-    /// Substeps per frame, in [1, 40].
+    /// Substeps per frame, a whole number in [1, 40] (a fraction is an error, not rounded).
     pub fn set_substeps(&mut self, n: f32) -> Result<(), String> {
-        let n = in_range("substeps", n, 1.0, 40.0)?.round() as u32;
+        let n = super::whole_number("substeps", n, 1, 40)? as u32;
         if n != self.params.substeps {
             self.params.substeps = n;
             self.changed();

@@ -110,6 +110,15 @@ impl GltfFigure {
         result
     }
 
+    /// Records a file rejected before it was read (the web layer checks its size before copying
+    /// it): the note says so, as for any rejected file, and what was loaded before stays.
+    /// Returns the error message, `"{name}: {why}"` as [`GltfFigure::load`] words it.
+    pub fn reject(&mut self, name: &str, why: &str) -> String {
+        let e = format!("{name}: {why}");
+        self.rejected = Some(e.clone());
+        e
+    }
+
     /// The outcome of the last load, for the start of the note.
     fn load_note(&self) -> String {
         let rejected = self.rejected.as_deref().map(|e| e.trim_end_matches('.'));

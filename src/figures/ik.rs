@@ -133,14 +133,10 @@ impl IkFigure {
         self.dirty = true;
     }
 
+    /// Segments per chain, a whole number in [[`MIN_SEGMENTS`], [`MAX_SEGMENTS`]] (a fraction is
+    /// an error, not rounded).
     pub fn set_segments(&mut self, segments: f32) -> Result<(), String> {
-        let s = in_range(
-            "segments",
-            segments,
-            MIN_SEGMENTS as f32,
-            MAX_SEGMENTS as f32,
-        )?;
-        self.segments = s.round() as usize;
+        self.segments = super::whole_number("segments", segments, MIN_SEGMENTS, MAX_SEGMENTS)?;
         self.build_rest();
         Ok(())
     }
@@ -172,10 +168,10 @@ impl IkFigure {
         Ok(())
     }
 
-    /// The most iterations CCD and FABRIK may take, in [1, [`MAX_ITERATIONS`]].
+    /// The most iterations CCD and FABRIK may take, a whole number in [1, [`MAX_ITERATIONS`]]
+    /// (a fraction is an error, not rounded).
     pub fn set_iterations(&mut self, iterations: f32) -> Result<(), String> {
-        self.iterations =
-            in_range("iterations", iterations, 1.0, MAX_ITERATIONS as f32)?.round() as usize;
+        self.iterations = super::whole_number("iterations", iterations, 1, MAX_ITERATIONS)?;
         self.dirty = true;
         Ok(())
     }
@@ -913,7 +909,8 @@ impl AimFigure {
     /// ahead to the target (°), angle the head turns (°), …]`, `samples` + 1 rows from 0 to
     /// [`AIM_PERIOD_SEC`]. The head's angle follows the target's until it reaches the cone.
     pub fn plot_samples(&self, samples: usize) -> Result<Vec<f32>, String> {
-        let n = samples.max(1);
+        super::check_samples(samples)?;
+        let n = samples;
         let mut out = Vec::with_capacity(3 * (n + 1));
         for k in 0..=n {
             let t = AIM_PERIOD_SEC * k as f32 / n as f32;

@@ -89,10 +89,10 @@ impl MeshStorage {
         Ok(())
     }
 
-    /// Segments around the sphere, 3 to [`MAX_SEGMENTS`] (rings: half as many).
+    /// Segments around the sphere, a whole number from 3 to [`MAX_SEGMENTS`] (rings: half as
+    /// many; a fraction is an error, not rounded).
     pub fn set_segments(&mut self, segments: f32) -> Result<(), String> {
-        let s = in_range("segments", segments, 3.0, MAX_SEGMENTS as f32)?;
-        self.segments = s.round() as u32;
+        self.segments = super::whole_number("segments", segments, 3, MAX_SEGMENTS as usize)? as u32;
         self.rebuild();
         Ok(())
     }

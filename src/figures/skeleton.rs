@@ -128,24 +128,28 @@ impl SkeletonFigure {
             skeleton,
             shapes,
         };
-        figure.rebuild_clips().expect("the built-in clips build");
+        let keys = figure.keys_per_cycle;
+        figure
+            .rebuild_clips(keys)
+            .expect("the built-in clips build");
         figure
     }
 
-    fn rebuild_clips(&mut self) -> Result<(), String> {
-        self.raw.clear();
-        self.clips.clear();
+    /// Builds every clip at `keys` keys per cycle into new lists, then swaps them in: a clip that
+    /// fails to build leaves the figure's clips (and its key count) as they were.
+    fn rebuild_clips(&mut self, keys: usize) -> Result<(), String> {
+        let mut raws = Vec::with_capacity(human::CLIP_NAMES.len());
+        let mut clips = Vec::with_capacity(human::CLIP_NAMES.len());
         for index in 0..human::CLIP_NAMES.len() {
-            let mut raw = human::clip_with_keys(&self.skeleton, index, self.keys_per_cycle)
-                .ok_or_else(|| {
-                    format!("keys per cycle: {} is out of range", self.keys_per_cycle)
-                })?;
+            let mut raw = human::clip_with_keys(&self.skeleton, index, keys)
+                .ok_or_else(|| format!("keys per cycle: {keys} is out of range"))?;
             raw.set_interpolation(self.interpolation);
             raw.set_rotation_interpolation(self.rotation);
             let clip = Clip::from_raw(&raw, &self.skeleton).map_err(|e| e.to_string())?;
-            self.raw.push(raw);
-            self.clips.push(clip);
+            raws.push(raw);
+            clips.push(clip);
         }
+        (self.keys_per_cycle, self.raw, self.clips) = (keys, raws, clips);
         self.refresh_compare();
         Ok(())
     }
@@ -217,8 +221,7 @@ impl SkeletonFigure {
     pub fn set_keys_per_cycle(&mut self, keys: f32) -> Result<(), String> {
         let keys = super::whole_number("keys per cycle", keys, 4, 25)?;
         if keys != self.keys_per_cycle {
-            self.keys_per_cycle = keys;
-            self.rebuild_clips()?;
+            self.rebuild_clips(keys)?;
         }
         Ok(())
     }

@@ -880,17 +880,27 @@ impl ScaleComparison {
 
     /// The left upper arm's scale along its own axes (each in [0.1, 4]), in both copies.
     pub fn set_upper_arm_scale(&mut self, scale: Vec3) -> Result<(), String> {
-        for f in &mut self.figures {
-            f.set_joint_scale(self.arm, scale)?;
-        }
-        Ok(())
+        let arm = self.arm;
+        self.set_both(|f| f.set_joint_scale(arm, scale))
     }
 
     /// The left forearm's Euler angles, degrees, in both copies.
     pub fn set_forearm_angles_deg(&mut self, deg: Vec3) -> Result<(), String> {
-        for f in &mut self.figures {
-            f.set_joint_angles_deg(self.forearm, deg)?;
+        let forearm = self.forearm;
+        self.set_both(|f| f.set_joint_angles_deg(forearm, deg))
+    }
+
+    /// Applies `set` to copies of both figures and keeps them only if it succeeded on both: a
+    /// rejected value never leaves one copy changed and the other not.
+    fn set_both(
+        &mut self,
+        set: impl Fn(&mut HierarchyFigure) -> Result<(), String>,
+    ) -> Result<(), String> {
+        let mut figures = self.figures.clone();
+        for f in &mut figures {
+            set(f)?;
         }
+        self.figures = figures;
         Ok(())
     }
 

@@ -16,6 +16,9 @@ const MAX_NAIVE_BOIDS: usize = 20_000;
 
 /// Times `iterations` steps of a flock of `boids` boids and returns milliseconds (building the
 /// flock and the first grid is not timed; restoring the start state before each step is). `kernel` is "grid" or "naive".
+/// Caps (the work grows with both): `boids` in [1, 200000], `iterations` in [1, 2²⁰],
+/// `boids × iterations` at most 2²⁵; the naive kernel at most 20000 boids and `boids² ×
+/// iterations` at most 2³².
 #[wasm_bindgen(js_name = benchBoids)]
 pub fn bench_boids(kernel: JsValue, boids: f64, iterations: f64) -> Result<f64, JsError> {
     let kernel: &str = &super::string("kernel", &kernel)?;

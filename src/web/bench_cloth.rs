@@ -18,6 +18,8 @@ const MAX_BENCH_SIDE: usize = 256;
 /// milliseconds. `kernel` is "mass_spring" or "xpbd". The cloth falls for 30 frames first (not
 /// timed); each timed frame starts from that same state (the copy back is timed too, and is small
 /// next to a frame).
+/// Caps (the work grows with both): `side` in [2, 256], `iterations` in [1, 2²⁰] and
+/// `side² × 10 × iterations` at most 2²⁷.
 #[wasm_bindgen(js_name = benchCloth)]
 pub fn bench_cloth(kernel: JsValue, side: f64, iterations: f64) -> Result<f64, JsError> {
     let kernel: &str = &super::string("kernel", &kernel)?;

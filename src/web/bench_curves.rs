@@ -18,6 +18,8 @@ fn now_ms() -> f64 {
 /// "copy_baseline" (copying precomputed positions: the memory traffic alone),
 /// "linear_cursor", "linear_binary_search", "catmull_rom_cursor", "catmull_rom_binary_search".
 /// Cursor kernels sample in increasing time order; binary-search kernels at random times.
+/// Caps (the work grows with both): `samples` in [1, 2²²], `iterations` in [1, 2²⁰] and
+/// `samples × iterations` at most 2²⁹.
 #[wasm_bindgen(js_name = benchCurves)]
 pub fn bench_curves(kernel: JsValue, samples: f64, iterations: f64) -> Result<f64, JsError> {
     let kernel: &str = &super::string("kernel", &kernel)?;

@@ -37,6 +37,7 @@ fn check_steps(steps: usize) -> Result<(), JsError> {
 
 /// Milliseconds per GPU step of `count ∈ [1, 2^20]` particles, all alive (a fountain burst with
 /// lifetimes longer than the run), falling and bouncing on the floor and one sphere.
+/// Caps (the work grows with both): `steps` in [1, 1000] and `count × steps` at most 2²⁸.
 #[wasm_bindgen(js_name = benchGpuParticles)]
 pub async fn bench_gpu_particles(canvas: JsValue, count: f64, steps: f64) -> Result<f64, JsError> {
     let canvas = super::canvas("canvas", canvas)?;
@@ -81,6 +82,7 @@ pub async fn bench_gpu_particles(canvas: JsValue, count: f64, steps: f64) -> Res
 
 /// Milliseconds per GPU step of the benchmark flock of `boids ∈ [1, 65536]` boids
 /// ([`benchmark_flock`], as the CPU kernel `benchBoids`), naive O(N²) neighbours.
+/// Caps (the work grows with both): `steps` in [1, 1000] and `boids × steps` at most 2²⁴.
 #[wasm_bindgen(js_name = benchGpuBoids)]
 pub async fn bench_gpu_boids(canvas: JsValue, boids: f64, steps: f64) -> Result<f64, JsError> {
     let canvas = super::canvas("canvas", canvas)?;

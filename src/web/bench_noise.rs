@@ -22,6 +22,8 @@ const FBM8: Fractal = Fractal {
 /// Times `iterations` regenerations of a square terrain of `size` vertices (a perfect square, at
 /// most 1024²); milliseconds. `kernel` is "fbm8_values" (the baseline: the 8-octave sum at every
 /// vertex, values only) or "terrain_with_normals" (heights, exact normals and colours in place).
+/// Caps (the work grows with both): `iterations` at least 1 and `size × iterations` at most
+/// 2²⁹.
 #[wasm_bindgen(js_name = benchTerrain)]
 pub fn bench_terrain(kernel: JsValue, size: f64, iterations: f64) -> Result<f64, JsError> {
     let kernel: &str = &super::string("kernel", &kernel)?;

@@ -24,6 +24,8 @@ fn check(size: usize, iterations: usize) -> Result<(), JsError> {
 
 /// Times `iterations` passes of quaternion interpolation over `size` key pairs; milliseconds.
 /// `kernel` is "nlerp" (the baseline) or "slerp".
+/// Caps (the work grows with both): `size` in [1, 2²²], `iterations` in [1, 2²⁴] and
+/// `size × iterations` at most 2³⁰.
 #[wasm_bindgen(js_name = benchQuatInterpolation)]
 pub fn bench_quat_interpolation(
     kernel: JsValue,
@@ -64,6 +66,8 @@ pub fn bench_quat_interpolation(
 /// Times `iterations` applications of one rigid motion to `size` points; milliseconds.
 /// `kernel` is "factored" (the baseline: matrix and translation once, then `R p + t` per point)
 /// or "sandwich" (the full dual quaternion product per point).
+/// Caps (the work grows with both): `size` in [1, 2²²], `iterations` in [1, 2²⁴] and
+/// `size × iterations` at most 2³⁰.
 #[wasm_bindgen(js_name = benchRigidPoints)]
 pub fn bench_rigid_points(kernel: JsValue, size: f64, iterations: f64) -> Result<f64, JsError> {
     let kernel: &str = &super::string("kernel", &kernel)?;

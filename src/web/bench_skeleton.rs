@@ -23,6 +23,8 @@ const MAX_FRAMES: usize = 1 << 20;
 /// one cursor per channel, then local-to-model), "runtime_clip" (shared key times, key-major
 /// values, then local-to-model), "runtime_sample_only" or "local_to_model_only". Per-item cost is
 /// per frame; divide by 60 for joints.
+/// Caps (the work grows with both): `frames` and `iterations` each in [1, 2²⁰] and
+/// `frames × iterations` at most 2²⁴.
 #[wasm_bindgen(js_name = benchSkeleton)]
 pub fn bench_skeleton(kernel: JsValue, frames: f64, iterations: f64) -> Result<f64, JsError> {
     let kernel: &str = &super::string("kernel", &kernel)?;
@@ -68,6 +70,8 @@ pub fn bench_skeleton(kernel: JsValue, frames: f64, iterations: f64) -> Result<f
 /// Times `iterations` frames of a crowd of `characters` 60-joint humanoids (each sampled at its
 /// own time offset with its own cursor, then local-to-model) and returns milliseconds.
 /// `kernel` is "runtime_clip" or "track_baseline".
+/// Caps (the work grows with both): `characters` in [1, 100000], `iterations` in [1, 2²⁰]
+/// and `characters × iterations` at most 2²¹.
 #[wasm_bindgen(js_name = benchCrowd)]
 pub fn bench_crowd(kernel: JsValue, characters: f64, iterations: f64) -> Result<f64, JsError> {
     let kernel: &str = &super::string("kernel", &kernel)?;

@@ -136,6 +136,8 @@ fn prepare(vertices: usize) -> Result<Prepared, JsError> {
 /// milliseconds. `kernel` is "wasm_plain_loop", "lbs", "lbs_interleaved" or "dqs" (DQS includes
 /// turning the palette into dual quaternions, once per pass). Before timing, 200 calls on 512
 /// vertices let the engine optimise the kernel (see [`pass`]).
+/// Caps (the work grows with both): `vertices` and `iterations` each in [1, 2²⁰] and
+/// `vertices × iterations` at most 2³⁰.
 #[wasm_bindgen(js_name = benchSkinning)]
 pub fn bench_skinning(kernel: JsValue, vertices: f64, iterations: f64) -> Result<f64, JsError> {
     let kernel: &str = &super::string("kernel", &kernel)?;
@@ -173,6 +175,7 @@ pub fn bench_skinning(kernel: JsValue, vertices: f64, iterations: f64) -> Result
 /// The benchmark's input as flat arrays for the JavaScript loop, concatenated:
 /// `[palette (12 per joint, 60 joints), joints (4 per vertex, as numbers), weights (4 per vertex),
 /// positions (3 per vertex), normals (3 per vertex)]`.
+/// Cap: `vertices` in [1, 2²⁰] (the arrays grow with it).
 #[wasm_bindgen(js_name = skinningBenchInput)]
 pub fn skinning_bench_input(vertices: f64) -> Result<Vec<f32>, JsError> {
     let vertices = super::whole("vertices", vertices)?;

@@ -76,8 +76,10 @@ impl FlockScene {
     /// A new flock of `count` boids, in [2, 3000].
     #[wasm_bindgen(js_name = setCount)]
     pub fn set_count(&mut self, count: f32) -> Result<(), JsError> {
+        self.scene.set_count(count).map_err(js)?;
+        // Only a new flock drops the GPU's: a rejected count keeps the flock where it is.
         self.gpu = None;
-        self.scene.set_count(count).map_err(js)
+        Ok(())
     }
     /// `rule`: "cohesion", "alignment" or "separation"; weight in [0, 10], radius in [0.05, 3] m.
     #[wasm_bindgen(js_name = setRule)]

@@ -137,18 +137,22 @@ impl ClothScene {
     /// Grabs the free particle under the pointer at `(x, y)` CSS pixels (canvas `width` ×
     /// `height`); returns whether there was one.
     pub fn grab(&mut self, x: f32, y: f32, width: f32, height: f32) -> Result<bool, JsError> {
-        self.use_view(width, height)?;
+        self.use_view(x, y, width, height)?;
         self.scene.grab(x, y).map_err(js)
     }
     /// Moves the grabbed particle's target under the pointer.
     pub fn drag(&mut self, x: f32, y: f32, width: f32, height: f32) -> Result<(), JsError> {
-        self.use_view(width, height)?;
+        self.use_view(x, y, width, height)?;
         self.scene.drag(x, y).map_err(js)
     }
     pub fn release(&mut self) {
         self.scene.release();
     }
-    fn use_view(&mut self, width: f32, height: f32) -> Result<(), JsError> {
+    /// Checks the pointer and the canvas size, then hands the scene the view to pick in: a
+    /// rejected call changes nothing.
+    fn use_view(&mut self, x: f32, y: f32, width: f32, height: f32) -> Result<(), JsError> {
+        super::finite("x", x)?;
+        super::finite("y", y)?;
         let w = super::in_range("width", width, 1.0, 1e5)?;
         let h = super::in_range("height", height, 1.0, 1e5)?;
         if let Some(camera) = self.camera {
@@ -262,7 +266,9 @@ impl Default for SpringScene {
 }
 
 /// Builds a cloth of `columns × rows` particles (2 m square, 0.5 kg) and says what is wrong, or
-/// "ok": the wasm-boundary check of the core's validation and its cap.
+/// "ok": the wasm-boundary check of the core's validation and its cap. Cap (the build's work
+/// grows with columns × rows): each side at most 256 particles (`cloth::MAX_SIDE`), checked
+/// before anything is built.
 #[wasm_bindgen(js_name = checkCloth)]
 pub fn check_cloth(columns: f64, rows: f64, mass_kg: f32) -> Result<String, JsError> {
     use crate::cloth::{Cloth, ClothSpec};

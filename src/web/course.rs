@@ -31,7 +31,8 @@ pub fn graded_lessons() -> Vec<String> {
 /// location }]` or `kind: "stopped", seconds`): those rows are replayed, not run again. With
 /// `watch` true, `__inbetweenGradeCase(exercise, case)` hears of each case before it runs.
 /// Returns `{ rows: [{ exercise, verdict, text, … }], table }`, `table` being what
-/// `scripts/grade` prints for the same reports.
+/// `scripts/grade` prints for the same reports. Cap: `known` holds at most [`MAX_KNOWN`] entries
+/// (a run meets at most one failure per exercise), checked before any is read.
 #[wasm_bindgen(js_name = gradeLesson)]
 pub fn grade_lesson(lesson: JsValue, known: JsValue, watch: JsValue) -> Result<JsValue, JsError> {
     let id = super::string("lesson", &lesson)?;
@@ -133,6 +134,10 @@ fn row(report: &Report) -> JsValue {
     o.into()
 }
 
+/// The most known failures [`grade_lesson`] takes: far more than a lesson has exercises (each
+/// run adds at most one per exercise), so the replay's work stays small.
+pub const MAX_KNOWN: usize = 1000;
+
 /// `known` as the grader's [`Known`] failures; every field is checked before any is used.
 fn known_failures(known: &JsValue) -> Result<Vec<Known>, JsError> {
     if known.is_undefined() || known.is_null() {
@@ -143,8 +148,15 @@ fn known_failures(known: &JsValue) -> Result<Vec<Known>, JsError> {
             "known must be an array of { exercise, case, kind, … }",
         ));
     }
+    let known = js_sys::Array::from(known);
+    if known.length() as usize > MAX_KNOWN {
+        return Err(JsError::new(&format!(
+            "known may hold at most {MAX_KNOWN} failures, got {}",
+            known.length()
+        )));
+    }
     let mut out = Vec::new();
-    for (i, item) in js_sys::Array::from(known).iter().enumerate() {
+    for (i, item) in known.iter().enumerate() {
         let field = |key: &str| {
             js_sys::Reflect::get(&item, &JsValue::from_str(key)).unwrap_or(JsValue::UNDEFINED)
         };

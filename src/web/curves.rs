@@ -39,7 +39,8 @@ impl KeyframesScene {
 
     /// Replaces the keys: `times_sec` strictly increasing, `xy = [x0, y0, x1, y1, …]` (metres).
     /// Errors name the rule broken (NaN, unsorted times, mismatched lengths, too many keys); the
-    /// scene is then unchanged.
+    /// scene is then unchanged. Cap (the curve's work grows with the keys): at most 1000 keys
+    /// (`figures::curves::MAX_KEYS`).
     #[wasm_bindgen(js_name = setKeys)]
     pub fn set_keys(&mut self, times_sec: Vec<f32>, xy: Vec<f32>) -> Result<(), JsError> {
         let values = pairs("xy", &xy)?;
@@ -214,6 +215,7 @@ impl KeyframesScene {
 
     /// `samples` rows `[t, speed keyed, speed arc length, |acceleration| shown, …]`, `t` in the
     /// keys' seconds, speeds in m/s, acceleration in m/s².
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleMotion)]
     pub fn sample_motion(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -239,6 +241,7 @@ impl Default for KeyframesScene {
 }
 
 /// Rows `[s, h00, h10, h01, h11, …]` of the Hermite basis over `s ∈ [0, 1]`.
+/// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
 #[wasm_bindgen(js_name = hermiteBasisSamples)]
 pub fn hermite_basis_samples(samples: f64) -> Result<Vec<f32>, JsError> {
     let samples = super::whole("samples", samples)?;

@@ -75,6 +75,7 @@ impl SpacingScene {
     }
 
     /// `[t₀ (s), fraction₀, linear₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleSpacing)]
     pub fn sample_spacing(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -134,6 +135,7 @@ impl JumpScene {
     }
 
     /// `[t₀, plain₀, principled₀, stretch₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleHeights)]
     pub fn sample_heights(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -185,6 +187,7 @@ impl FollowThroughScene {
     }
 
     /// `[t₀, base x₀, tip x₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleTip)]
     pub fn sample_tip(&mut self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;

@@ -33,9 +33,23 @@ impl GltfScene {
 
     /// Imports a `.gltf` (embedded buffers) or `.glb` file's bytes; returns a summary, or an
     /// error that says what is wrong with the file (what was loaded before stays).
+    ///
+    /// Caps (the import's work grows with the file): at most 64 MiB of bytes
+    /// (`gltf_import::MAX_FILE_BYTES`, checked before the bytes are copied out of JavaScript),
+    /// 2²⁰ skinned vertices (`MAX_VERTICES`), 2¹⁶ joints (`skeleton::MAX_JOINTS`) and 2¹⁶ keys
+    /// per clip (`MAX_CLIP_KEYS`); a file past any of them is rejected with the cap in the
+    /// message.
     pub fn load(&mut self, name: JsValue, bytes: JsValue) -> Result<String, JsError> {
         let name: &str = &super::string("name", &name)?;
-        let bytes: &[u8] = &super::bytes("bytes", &bytes)?;
+        let array = super::bytes("bytes", &bytes)?;
+        let (len, max) = (array.length() as usize, crate::gltf_import::MAX_FILE_BYTES);
+        if len > max {
+            // Rejected before the bytes are copied into wasm memory (a file of gigabytes would
+            // not fit); the note says so, as for any rejected file.
+            let why = format!("the file has {len} bytes; the importer reads at most {max}");
+            return Err(js(self.scene.reject(name, &why)));
+        }
+        let bytes: &[u8] = &array.to_vec();
         self.scene.load(name, bytes).map_err(js)
     }
 

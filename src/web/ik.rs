@@ -86,18 +86,22 @@ impl IkScene {
         width: f32,
         height: f32,
     ) -> Result<bool, JsError> {
-        self.use_view(width, height)?;
+        self.use_view(x, y, width, height)?;
         self.scene.hits_target(x, y).map_err(js)
     }
 
     /// Moves the target under the pointer at `(x, y)` CSS pixels.
     #[wasm_bindgen(js_name = dragTarget)]
     pub fn drag_target(&mut self, x: f32, y: f32, width: f32, height: f32) -> Result<(), JsError> {
-        self.use_view(width, height)?;
+        self.use_view(x, y, width, height)?;
         self.scene.drag_target(x, y).map_err(js)
     }
 
-    fn use_view(&mut self, width: f32, height: f32) -> Result<(), JsError> {
+    /// Checks the pointer and the canvas size, then hands the scene the view to pick in: a
+    /// rejected call changes nothing.
+    fn use_view(&mut self, x: f32, y: f32, width: f32, height: f32) -> Result<(), JsError> {
+        super::finite("x", x)?;
+        super::finite("y", y)?;
         let w = super::in_range("width", width, 1.0, 1e5)?;
         let h = super::in_range("height", height, 1.0, 1e5)?;
         if let Some(camera) = self.camera {

@@ -187,8 +187,15 @@ pub(crate) fn boolean(name: &str, value: &JsValue) -> Result<bool, JsError> {
     })
 }
 
-/// `value` as an array of strings (a plain string is not split into its characters).
-pub(crate) fn strings(name: &str, value: &JsValue) -> Result<Vec<String>, JsError> {
+/// `value` as an array of at most `max_items` strings, each at most `max_chars` UTF-16 code
+/// units long (a plain string is not split into its characters). Both caps are checked before
+/// anything is copied, so the work never grows past them.
+pub(crate) fn strings(
+    name: &str,
+    value: &JsValue,
+    max_items: usize,
+    max_chars: usize,
+) -> Result<Vec<String>, JsError> {
     if !js_sys::Array::is_array(value) {
         return Err(JsError::new(&format!(
             "{name} must be an array of strings, got {}",
@@ -196,18 +203,34 @@ pub(crate) fn strings(name: &str, value: &JsValue) -> Result<Vec<String>, JsErro
         )));
     }
     let array = js_sys::Array::from(value);
-    let mut out = Vec::with_capacity(array.length() as usize);
+    let len = array.length() as usize;
+    if len > max_items {
+        return Err(JsError::new(&format!(
+            "{name} may hold at most {max_items} strings, got {len}"
+        )));
+    }
+    let mut out = Vec::with_capacity(len);
     for (i, item) in array.iter().enumerate() {
-        out.push(string(&format!("{name}[{i}]"), &item)?);
+        let what = format!("{name}[{i}]");
+        if let Some(s) = item.dyn_ref::<js_sys::JsString>() {
+            if s.length() as usize > max_chars {
+                return Err(JsError::new(&format!(
+                    "{what} may be at most {max_chars} characters long, got {}",
+                    s.length()
+                )));
+            }
+        }
+        out.push(string(&what, &item)?);
     }
     Ok(out)
 }
 
-/// `value` as bytes: a `Uint8Array` only (an array of numbers would be wrapped modulo 256).
-pub(crate) fn bytes(name: &str, value: &JsValue) -> Result<Vec<u8>, JsError> {
+/// `value` as a `Uint8Array` (an array of numbers would be wrapped modulo 256), not yet copied
+/// into wasm memory: the caller checks its `length()` against its cap before `to_vec()`.
+pub(crate) fn bytes(name: &str, value: &JsValue) -> Result<js_sys::Uint8Array, JsError> {
     value
         .dyn_ref::<js_sys::Uint8Array>()
-        .map(|a| a.to_vec())
+        .cloned()
         .ok_or_else(|| {
             JsError::new(&format!(
                 "{name} must be a Uint8Array, got {}",

@@ -99,6 +99,7 @@ impl Noise1dScene {
         Ok(())
     }
     /// `[t₀, fade₀, fade′₀, smoothstep₀, fade″₀, smoothstep″₀, t₁, …]` (six numbers per row).
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleFade)]
     pub fn sample_fade(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -219,6 +220,7 @@ impl OctavesScene {
     }
     /// `[u₀, octave 0, …, octave 9, sum, u₁, …]` (12 values per row): numbers, and `null` for the
     /// octaves above N, which are not in the sum (a plot's gap marker, as uPlot takes it).
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleOctaves)]
     pub fn sample_octaves(&self, samples: f64) -> Result<js_sys::Array, JsError> {
         let samples = super::whole("samples", samples)?;

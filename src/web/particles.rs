@@ -433,7 +433,8 @@ impl Default for SquashScene {
 
 /// Builds a particle system of `capacity` particles and an emitter with this rate (particles/s)
 /// and lifetime range (seconds), and says what is wrong, or "ok": the wasm-boundary check of
-/// the core's validation rules and cap.
+/// the core's validation rules and cap. Cap (the build allocates per particle): `capacity` at
+/// most 100,000 (`particles::MAX_PARTICLES`), checked before anything is allocated.
 #[wasm_bindgen(js_name = checkEmitter)]
 pub fn check_emitter(
     capacity: f64,

@@ -106,6 +106,7 @@ impl FrustumScene {
     }
 
     /// `[d₀, depth_wgpu₀, depth_gl₀, d₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleDepth)]
     pub fn sample_depth(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -340,7 +341,8 @@ impl ShadingScene {
     }
 
     /// RGBA bytes of one image: "ambient", "diffuse", "specular", "phong", "blinn-phong" or
-    /// "gouraud".
+    /// "gouraud", `size × size` pixels with `size` from 8 to 512 (`raster::shading::MAX_IMAGE_SIZE`;
+    /// the work grows with size²).
     pub fn image(&self, which: JsValue, size: f64) -> Result<Vec<u8>, JsError> {
         let which: &str = &super::string("which", &which)?;
         let size = super::whole("size", size)?;

@@ -124,6 +124,7 @@ impl RigidScene {
     }
 
     /// Distance travelled by the nose (m): `[t₀, lerp+slerp₀, dlb₀, screw₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleDistance)]
     pub fn sample_distance(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -131,6 +132,7 @@ impl RigidScene {
     }
 
     /// Speed of the nose (m per unit of t): `[t₀, lerp+slerp₀, dlb₀, screw₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleSpeed)]
     pub fn sample_speed(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -189,6 +191,7 @@ impl AffineScene {
     }
 
     /// Determinant of the linear part over t: `[t₀, naive₀, polar₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleDeterminant)]
     pub fn sample_determinant(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;

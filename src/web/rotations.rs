@@ -113,6 +113,7 @@ impl InterpolationScene {
     }
 
     /// Matrix lerp, sampled: `[t₀, det₀, e₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleDeterminant)]
     pub fn sample_determinant(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -121,6 +122,7 @@ impl InterpolationScene {
     }
 
     /// Angular speed (° per unit of t): `[t₀, euler₀, nlerp₀, slerp₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleAngularSpeed)]
     pub fn sample_angular_speed(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -183,6 +185,7 @@ impl GimbalScene {
     }
 
     /// The steady turn's yaw, pitch and roll (°), unwrapped: `[t₀, yaw₀, pitch₀, roll₀, t₁, …]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = samplePoleTurn)]
     pub fn sample_pole_turn(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;

@@ -204,6 +204,7 @@ impl SkeletonScene {
 
     /// One cycle of the selected joint for the plots: rows of `[t, angle (°), speed (°/s), angle
     /// and speed under the compared interpolation, angle under clip A alone, under clip B alone]`.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleSelected)]
     pub fn sample_selected(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -217,28 +218,36 @@ impl Default for SkeletonScene {
     }
 }
 
+/// The longest joint name [`check_skeleton`] takes, in UTF-16 code units (the page's names are
+/// a few words; the cap bounds the copy and the comparisons of a hostile list).
+pub const MAX_NAME_CHARS: usize = 256;
+
 /// Builds a skeleton from JavaScript arrays and says what is wrong, or `"ok"`: the page's check
 /// of a typed-in hierarchy, and the wasm-boundary test of every validation rule. `rest` holds 10
 /// numbers per joint: translation (3), rotation quaternion x, y, z, w (4), scale (3).
+///
+/// Caps (the check's work grows with them): at most 65,536 joints (`skeleton::MAX_JOINTS`, for
+/// `names` and `parents` alike) and names of at most [`MAX_NAME_CHARS`] characters, both
+/// checked before the lists are converted.
 #[wasm_bindgen(js_name = checkSkeleton)]
 pub fn check_skeleton(
     names: JsValue,
     parents: Vec<f64>,
     rest: Vec<f32>,
 ) -> Result<String, JsError> {
-    let names = super::strings("names", &names)?;
-    // Whole numbers from -1 (the root) up; an Int32Array would wrap 4294967295 to -1.
-    let parents: Vec<i32> = super::wholes("parents", &parents, -1.0, f64::from(i32::MAX))?
-        .into_iter()
-        .map(|p| p as i32)
-        .collect();
     use crate::skeleton::{Skeleton, Transform, MAX_JOINTS};
+    let names = super::strings("names", &names, MAX_JOINTS, MAX_NAME_CHARS)?;
     if parents.len() > MAX_JOINTS {
         return Err(JsError::new(&format!(
             "parents: {} joints is too many (at most {MAX_JOINTS})",
             parents.len()
         )));
     }
+    // Whole numbers from -1 (the root) up; an Int32Array would wrap 4294967295 to -1.
+    let parents: Vec<i32> = super::wholes("parents", &parents, -1.0, f64::from(i32::MAX))?
+        .into_iter()
+        .map(|p| p as i32)
+        .collect();
     if rest.len() != 10 * parents.len() {
         return Err(JsError::new(&format!(
             "rest: expected 10 numbers per joint ({}), got {}",

@@ -139,6 +139,7 @@ impl SkinningCylinderScene {
     }
 
     /// `[angle (°), LBS, DQS]` per sample: the tube's volume (fraction of rest) against the bend.
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = volumeCurves)]
     pub fn volume_curves(&self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;
@@ -393,20 +394,17 @@ fn now_ms() -> f64 {
 }
 
 /// Validates skinning data from JavaScript and says what is wrong, or `"ok"`: the wasm-boundary
-/// check of every rule. `joints` and `weights` hold four numbers per vertex.
+/// check of every rule. `joints` and `weights` hold four numbers per vertex. Cap (the check's
+/// work grows with the vertices): at most 2²⁰ vertices (`skinning::MAX_SKIN_VERTICES`), checked
+/// before the lists are read.
 #[wasm_bindgen(js_name = checkSkinWeights)]
 pub fn check_skin_weights(
     joints: Vec<f64>,
     weights: Vec<f32>,
     joint_count: f64,
 ) -> Result<String, JsError> {
-    let joint_count = super::whole("joint_count", joint_count)?;
-    // Whole numbers only: a Uint32Array would turn NaN into joint 0 and -1 into 4294967295.
-    let joints: Vec<u32> = super::wholes("joints", &joints, 0.0, f64::from(u32::MAX))?
-        .into_iter()
-        .map(|j| j as u32)
-        .collect();
     use crate::skinning::{SkinWeights, MAX_SKIN_VERTICES};
+    let joint_count = super::whole("joint_count", joint_count)?;
     if !joints.len().is_multiple_of(4) || weights.len() != joints.len() {
         return Err(JsError::new(&format!(
             "joints and weights: four numbers per vertex each, got {} and {}",
@@ -420,6 +418,11 @@ pub fn check_skin_weights(
             joints.len() / 4
         )));
     }
+    // Whole numbers only: a Uint32Array would turn NaN into joint 0 and -1 into 4294967295.
+    let joints: Vec<u32> = super::wholes("joints", &joints, 0.0, f64::from(u32::MAX))?
+        .into_iter()
+        .map(|j| j as u32)
+        .collect();
     if let Some(&j) = joints.iter().find(|&&j| j > u16::MAX as u32) {
         return Err(JsError::new(&format!("joint index {j} is over 65535")));
     }

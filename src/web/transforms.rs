@@ -208,6 +208,7 @@ impl HierarchyScene {
 
     /// One walk cycle of the current figure (pose, scales, scale mode) for the plot:
     /// `[t₀, a₀, h₀, …]`, left thigh angle `a` (degrees), left wrist height `h` (metres).
+    /// `samples` in [2, 10000] (the plots' cap, `figures::MAX_SAMPLES`; the work grows with it).
     #[wasm_bindgen(js_name = sampleCycle)]
     pub fn sample_cycle(&self, samples: f64, period_sec: f32) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;

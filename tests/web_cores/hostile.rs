@@ -91,6 +91,26 @@ fn lists_of_names_and_indices_are_checked_element_by_element() {
 }
 
 #[wasm_bindgen_test]
+fn list_caps_are_checked_before_the_lists_are_read() {
+    let rest: Vec<f32> = [0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0].repeat(2);
+    // More names than a skeleton may have joints: refused before any is converted.
+    let many: js_sys::Array = (0..70_000).map(|_| JsValue::from(0.5)).collect();
+    let m = message(check_skeleton(many.into(), vec![-1.0, 0.0], rest.clone()).unwrap_err());
+    assert!(m.contains("names may hold at most 65536 strings"), "{m}");
+    // A name past the length cap.
+    let long = "x".repeat(300);
+    let names: js_sys::Array = [long.as_str(), "b"]
+        .iter()
+        .map(|&n| JsValue::from(n))
+        .collect();
+    let m = message(check_skeleton(names.into(), vec![-1.0, 0.0], rest).unwrap_err());
+    assert!(
+        m.contains("names[0] may be at most 256 characters long, got 300"),
+        "{m}"
+    );
+}
+
+#[wasm_bindgen_test]
 fn simulations_advance_without_a_canvas_and_reject_bad_times() {
     let mut emitter = EmitterScene::new();
     for bad in [f32::NAN, f32::INFINITY, -1.0, 1e30] {
