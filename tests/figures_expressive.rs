@@ -103,6 +103,9 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
     assert!((scene.position(0.5).y - scene.position(0.0).y).abs() < 1e-5);
     assert!(scene.set_ease("bouncy").is_err());
     assert!(scene.set_ghosts(1000.0).is_err());
+    // A fraction is refused, not rounded: the count stays as it was.
+    let e = scene.set_ghosts(7.5).unwrap_err();
+    assert!(e.contains("ghosts"), "{e}");
     assert!(scene.set_arc_height(f32::NAN).is_err());
     // The ball's volume is kept.
     scene.set_squash(true);

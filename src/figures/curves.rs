@@ -1048,8 +1048,16 @@ impl LagrangeScene {
 
     /// Number of keys of the first curve (3 to 16); the second curve has two more.
     pub fn set_key_count(&mut self, keys: f32) -> Result<(), String> {
-        self.keys = super::whole_number("key count", keys, 3, 16)?;
-        self.rebuild()
+        let keys = super::whole_number("key count", keys, 3, 16)?;
+        let before = self.keys;
+        self.keys = keys;
+        // A rebuild that fails leaves the figure as it was (the old count rebuilt before).
+        if let Err(e) = self.rebuild() {
+            self.keys = before;
+            self.rebuild()?;
+            return Err(e);
+        }
+        Ok(())
     }
 
     /// Also draw a Catmull-Rom spline through the larger set of keys, for comparison.

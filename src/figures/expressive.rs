@@ -143,7 +143,7 @@ impl Spacing {
 
     /// Ghosts at equal time steps, 2 to [`MAX_GHOSTS`].
     pub fn set_ghosts(&mut self, n: f32) -> Result<(), String> {
-        self.ghosts = in_range("ghosts", n, 2.0, MAX_GHOSTS as f32)?.round() as usize;
+        self.ghosts = super::whole_number("ghosts", n, 2, MAX_GHOSTS)?;
         Ok(())
     }
 
