@@ -551,6 +551,13 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
         lbs.distance(bent_elbow)
     );
     assert!(note.contains("0.177 m from the elbow joint"), "{note}");
+    // A half twist puts LBS's vertex on the axis: the note says 0.000 m, not float noise.
+    f.set_bend_deg(0.0).unwrap();
+    f.set_twist_deg(180.0).unwrap();
+    f.update().unwrap();
+    let twisted = f.draw(&mut Frame::default(), IDS).unwrap();
+    assert!(!twisted.contains("e-"), "{twisted}");
+    assert!(twisted.contains("0.000 m from the elbow joint"), "{twisted}");
     // Towards either end the heavier joint takes over: the dots close in on its K p.
     for rings in [[16, 12, 8], [24, 28, 32]] {
         let gaps: Vec<f32> = rings

@@ -624,12 +624,14 @@ impl CylinderFigure {
             "The followed vertex (ring {}, weights {} {} and {} {}): LBS puts it on the dashed chord between K₁p and K₂p, {} m from the elbow joint, DQS {} m (as in the bind pose, {} m).",
             self.probe_ring,
             names[j[0] as usize],
-            format_number(w1),
+            // Fixed decimals: a weight or distance that is zero up to float noise reads 0.000,
+            // not 1.7e-12.
+            format!("{w1:.3}"),
             names[j[1] as usize],
-            format_number(w2),
-            format_number(lbs.distance(elbow)),
-            format_number(dqs.distance(elbow)),
-            format_number(rest)
+            format!("{w2:.3}"),
+            format!("{:.3}", lbs.distance(elbow)),
+            format!("{:.3}", dqs.distance(elbow)),
+            format!("{rest:.3}")
         )
     }
 
