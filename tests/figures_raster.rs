@@ -692,3 +692,18 @@ fn probes_catch_what_the_shown_input_cannot() {
     let note = normals.draw(&mut f, MeshId(3), MeshId(4));
     assert!(note.contains("It also matches on a tetrahedron"), "{note}");
 }
+
+/// Figure 2's Try this: the wgpu depth passes 0.5 at d = 2nf/(n + f), about 1.78 m for z_near 1 m
+/// and z_far 8 m and about 0.2 m for z_near 0.1 m; the note prints that crossing, and the depth
+/// core gives 0.5 there.
+#[test]
+fn frustum_note_gives_where_the_depth_passes_one_half() {
+    let mut scene = Frustum::new();
+    for (near, printed) in [(1.0, "1.778"), (0.1, "0.198")] {
+        scene.set_frustum(60.0, near, 8.0).unwrap();
+        let half = scene.half_depth_distance();
+        assert!((raster::ndc_depth_wgpu(half, near, 8.0) - 0.5).abs() < 1e-5);
+        let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+        assert!(note.contains(&format!("passes 0.5 at d = {printed} m")), "{note}");
+    }
+}

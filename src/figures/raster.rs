@@ -450,10 +450,11 @@ impl Frustum {
         frame.keep_in_view.extend(box_corners.iter().copied());
         let d = self.distance_at(s);
         let mut note = format!(
-            "Distance d = {} m: depth {} (wgpu), {} (OpenGL). {}",
+            "Distance d = {} m: depth {} (wgpu), {} (OpenGL); the wgpu depth passes 0.5 at d = {} m. {}",
             format_number(d),
             format_number(raster::ndc_depth_wgpu(d, self.near, self.far)),
             format_number(raster::ndc_depth_gl(d, self.near, self.far)),
+            format!("{:.3}", self.half_depth_distance()),
             if q.inside {
                 "Inside the frustum: drawn."
             } else if d < self.near {
@@ -469,6 +470,13 @@ impl Frustum {
             note += &self.exercise_note();
         }
         Ok(note)
+    }
+
+    /// The distance at which the wgpu depth f/(f − n)·(1 − n/d) is 0.5: d = 2nf/(n + f), metres
+    /// (the crossing Figure 2's Try this asks for, printed because a linear axis squeezes it into a
+    /// few pixels when z_near is small).
+    pub fn half_depth_distance(&self) -> f32 {
+        2.0 * self.near * self.far / (self.near + self.far)
     }
 
     /// Compares the student's matrix (exercise 0.1) with the reference at the current frustum and
