@@ -249,7 +249,7 @@ fn a_rejected_key_count_keeps_the_clips() {
 #[test]
 fn a_fractional_substep_count_is_rejected_not_rounded() {
     use inbetween::figures::cloth::{ClothFigure, Preset};
-    // Cloth: 4.5 substeps was rounded to 5 and replayed the run.
+    // Cloth: 4.5 substeps is refused, not rounded to 5 (which would replay the run).
     let mut cloth = ClothFigure::new(Preset::Flag);
     cloth.set_substeps(4.0).unwrap();
     let mut untouched = cloth.clone();
@@ -269,8 +269,8 @@ fn a_fractional_substep_count_is_rejected_not_rounded() {
 fn fractional_segment_and_iteration_counts_are_rejected_not_rounded() {
     use inbetween::figures::ik::IkFigure;
     use inbetween::figures::raster::MeshStorage;
-    // IK: 2.5 segments was rounded to 3 (a chain the analytic solver cannot show), 10.5
-    // iterations to 11.
+    // IK: 2.5 segments and 10.5 iterations are refused, not rounded to 3 (a chain the analytic
+    // solver cannot show) and 11.
     let mut ik = IkFigure::new();
     ik.set_segments(2.0).unwrap();
     let results = ik.results().unwrap();
@@ -287,7 +287,7 @@ fn fractional_segment_and_iteration_counts_are_rejected_not_rounded() {
     );
     assert_eq!(ik.results().unwrap(), results);
 
-    // The mesh storage figure: 8.5 segments was rounded to 9.
+    // The mesh storage figure: 8.5 segments is refused, not rounded to 9.
     let mut mesh = MeshStorage::new();
     mesh.set_shape("sphere").unwrap();
     mesh.set_segments(8.0).unwrap();
@@ -303,7 +303,7 @@ fn fractional_segment_and_iteration_counts_are_rejected_not_rounded() {
 #[test]
 fn a_fractional_timing_flock_is_rejected_not_truncated() {
     use inbetween::figures::boids::FlockFigure;
-    // The boids' timing flock: 500.5 boids was truncated to 500.
+    // The boids' timing flock: 500.5 boids is refused, not truncated to 500.
     let mut flock = FlockFigure::new();
     let e = flock.prepare_timing(500.5).unwrap_err();
     assert!(
