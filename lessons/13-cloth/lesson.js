@@ -186,13 +186,16 @@ if (flagViewer) {
   });
   dragParticles('#fig-flag', scene, timeline);
   const note = document.getElementById('flag-note');
-  let shown = -1;
+  let shown = "";
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     showNote(note, [rejected, scene.draw(flagViewer, t)].filter(Boolean).join(' '));
     const samples = scene.samples();
-    if (samples.length !== shown) {
-      shown = samples.length;
+    // The ranges depend on which cloths held, so an explosion refreshes the plots too, even on a
+    // frame that adds no sample.
+    const key = `${samples.length} ${scene.explodedAt(0)} ${scene.explodedAt(1)}`;
+    if (key !== shown) {
+      shown = key;
       const [time, e0, e1, s0, s1] = gaps(samples, 5);
       // Scales that follow the cloths that held (Rust's choice): an explosion's last samples
       // would squash the other flag's curves onto a line.
