@@ -704,6 +704,151 @@ fn frustum_note_gives_where_the_depth_passes_one_half() {
         let half = scene.half_depth_distance();
         assert!((raster::ndc_depth_wgpu(half, near, 8.0) - 0.5).abs() < 1e-5);
         let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
-        assert!(note.contains(&format!("passes 0.5 at d = {printed} m")), "{note}");
+        assert!(
+            note.contains(&format!("passes 0.5 at d = {printed} m")),
+            "{note}"
+        );
+    }
+}
+
+/// Figure 1 at many segments: dots only on the patch facing the camera, about six corners of the
+/// soup for each indexed position there, and few enough to stay apart.
+#[test]
+fn a_dense_sphere_marks_a_patch_only() {
+    let count = |scene: &MeshStorage| {
+        let mut f = Frame::default();
+        let note = scene.draw(&mut f);
+        let of = |c: Vec3| {
+            f.markers
+                .iter()
+                .filter(|p| Vec3::from_slice(&p.color[..3]) == c)
+                .count()
+        };
+        (of(SOUP_COLOR), of(INDEXED_COLOR), note)
+    };
+    let mut scene = MeshStorage::new();
+    scene.set_segments(16.0).unwrap();
+    let s = scene.sizes();
+    let (soup, indexed, note) = count(&scene);
+    assert_eq!(
+        (soup, indexed),
+        (s.soup_positions, s.vertices),
+        "every dot at 16"
+    );
+    assert!(!note.contains("patch"), "{note}");
+    scene.set_segments(64.0).unwrap();
+    let (soup, indexed, note) = count(&scene);
+    assert!(
+        indexed > 30 && soup + indexed < 600,
+        "{soup} + {indexed} dots"
+    );
+    let ratio = soup as f32 / indexed as f32;
+    assert!((5.0..7.0).contains(&ratio), "{ratio} corners per position");
+    assert!(
+        note.contains(&format!(
+            "Dots only on the patch facing you: {soup} corners of the soup, {indexed} positions indexed."
+        )),
+        "{note}"
+    );
+    assert!(f32_dot_sizes_at_most(&scene, 5.0));
+    // Outside the patch the edges are pale and 1 px wide: far fewer full-colour wide edges.
+    let mut f = Frame::default();
+    scene.draw(&mut f);
+    let wide = |c: Vec3| {
+        f.strokes
+            .iter()
+            .filter(|st| Vec3::from_slice(&st.color[..3]) == c)
+            .count()
+    };
+    assert!(
+        wide(SOUP_COLOR) < soup + 10,
+        "{} wide soup edges",
+        wide(SOUP_COLOR)
+    );
+    assert!(
+        wide(INDEXED_COLOR) < 4 * indexed,
+        "{} wide indexed edges",
+        wide(INDEXED_COLOR)
+    );
+}
+
+fn f32_dot_sizes_at_most(scene: &MeshStorage, px: f32) -> bool {
+    let mut f = Frame::default();
+    scene.draw(&mut f);
+    f.markers.iter().all(|m| m.size_px.abs() <= px)
+}
+
+/// Figure 2's labels at the apex (eye, z_near, p, image) keep their places beside their anchors
+/// and clear of the eye's, the point's and the image's dots, at the page's camera fitted to a
+/// 760 × 380 or 760 × 760 canvas (the 800 × 600 page) and a 650 × 420 one (1600 × 1000), all along the
+/// point's path.
+#[test]
+fn frustum_labels_at_the_apex_stay_apart_and_off_the_dots() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::draw::layout::{place, LabelBox, Rect};
+    let scene = Frustum::new();
+    for size in [
+        Vec2::new(760.0, 380.0),
+        Vec2::new(760.0, 760.0),
+        Vec2::new(650.0, 420.0),
+    ] {
+        for k in 0..=20 {
+            let s = k as f32 / 20.0;
+            let mut f = Frame::default();
+            scene.draw(&mut f, s).unwrap();
+            let mut camera = OrbitCamera::from_view([4.5, 1.2, -4.0, 17.0, 0.45, 0.45]);
+            let fit: Vec<Vec3> = f
+                .keep_in_view
+                .iter()
+                .copied()
+                .chain(f.labels.iter().map(|l| l.anchor))
+                .collect();
+            camera.fit(&fit, size, FIT_PAD_PX);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let on = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+            // The labels' boxes as the page measures them: about 7.7 px a character, 17 px high.
+            let boxes: Vec<LabelBox> = f
+                .labels
+                .iter()
+                .map(|l| LabelBox {
+                    anchor: on(l.anchor),
+                    size: Vec2::new(7.7 * l.text.chars().count() as f32, 17.0),
+                    left: l.left,
+                    visible: true,
+                    priority: l.priority,
+                })
+                .collect();
+            let placed = place(&boxes, size);
+            let dots: Vec<Vec2> = f.markers.iter().map(|m| on(Vec3::from(m.center))).collect();
+            // The frustum's p (the NDC box's p comes later).
+            let first_p = f.labels.iter().position(|l| l.text == "p").unwrap();
+            for (i, (label, p)) in f.labels.iter().zip(&placed).enumerate() {
+                if !["eye", "z_near", "image"].contains(&label.text.as_str()) && i != first_p {
+                    continue;
+                }
+                let at = format!("{} at s = {s} on {size}", label.text);
+                assert!(p.shown, "{at}: hidden");
+                assert!(p.leader_to.is_none(), "{at}: moved off its anchor");
+                let rect = Rect {
+                    min: p.top_left,
+                    size: Vec2::new(7.7 * label.text.chars().count() as f32, 17.0),
+                };
+                // A dot on the label's own dot (the point on the near plane is its own image)
+                // does not count.
+                let own = boxes[i].anchor;
+                for d in dots[..3].iter().filter(|d| d.distance(own) > 16.0) {
+                    assert!(
+                        !rect.overlaps(
+                            &Rect {
+                                min: *d - 4.0,
+                                size: Vec2::splat(8.0)
+                            },
+                            0.0
+                        ),
+                        "{at}: over a dot at {d}"
+                    );
+                }
+            }
+        }
     }
 }

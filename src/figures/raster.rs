@@ -39,6 +39,22 @@ pub const INDEXED_COLOR: Vec3 = palette::TEAL;
 /// The most segments around the sphere of Figure 1 (its cost grows with their square).
 pub const MAX_SEGMENTS: u32 = 64;
 
+/// Above this many segments, Figure 1 marks the corners and positions only on a patch of the
+/// sphere that faces the page's camera, with smaller dots, the soup's triangles pulled further
+/// apart and pale 1 px edges elsewhere: drawn everywhere, thousands of dots and edges merge into
+/// one blot.
+pub const DENSE_SEGMENTS: u32 = 16;
+/// The centre of that patch (towards the page's camera) and the cosine of its angular radius
+/// (25°).
+const PATCH_FACING: Vec3 = Vec3::new(0.0, 0.296, 0.955);
+const PATCH_COS: f32 = 0.906;
+
+/// A pale `color` (mixed with white) for the 1 px edges outside a dense sphere's patch: seen
+/// through the patch's dots, thousands of full-colour edges would fill the disc.
+fn faint(color: Vec3) -> Vec3 {
+    color.lerp(Vec3::ONE, 0.65)
+}
+
 /// Figure 1: the same mesh as a triangle soup (left, every triangle pulled apart a little so that
 /// its own three copies of the corners show) and as indexed geometry (right, each position once).
 pub struct MeshStorage {
@@ -97,6 +113,33 @@ impl MeshStorage {
         Ok(())
     }
 
+    /// Whether the sphere has more than [`DENSE_SEGMENTS`] segments (dots on a patch only).
+    pub fn is_dense(&self) -> bool {
+        self.sphere && self.segments > DENSE_SEGMENTS
+    }
+
+    /// Whether a dot goes at `p` (a position, or a triangle's centre, on the mesh at the origin):
+    /// everywhere, or on a dense sphere only on the patch facing the camera.
+    fn marked(&self, p: Vec3) -> bool {
+        !self.is_dense() || p.normalize_or_zero().dot(PATCH_FACING) > PATCH_COS
+    }
+
+    /// How many corners of the soup get a dot.
+    fn marked_corners(&self) -> usize {
+        self.indices
+            .chunks_exact(3)
+            .filter(|tri| {
+                let centre = tri
+                    .iter()
+                    .map(|&i| self.positions[i as usize])
+                    .sum::<Vec3>()
+                    / 3.0;
+                self.marked(centre)
+            })
+            .count()
+            * 3
+    }
+
     pub fn sizes(&self) -> MeshSizes {
         raster::mesh_sizes(self.positions.len(), self.indices.len() / 3)
     }
@@ -137,16 +180,26 @@ impl MeshStorage {
         let (left, right) = (Vec3::new(-1.4, 1.2, 0.0), Vec3::new(1.4, 1.2, 0.0));
         frame.grid(12, 0.5);
         let small = self.positions.len() <= 12;
-        let dot = if small { 12.0 } else { 6.0 };
+        let dense = self.is_dense();
+        let dot = match (small, dense) {
+            (true, _) => 12.0,
+            (false, false) => 6.0,
+            (false, true) => 4.0,
+        };
+        let keep = if dense { 0.6 } else { 0.78 };
         // Soup: each triangle shrunk towards its centre, its own three corners.
         for tri in self.indices.chunks_exact(3) {
             let [a, b, c] = [tri[0], tri[1], tri[2]].map(|i| self.positions[i as usize]);
             let centre = (a + b + c) / 3.0;
-            let pull = |p: Vec3| left + centre + (p - centre) * 0.78;
-            let (a, b, c) = (pull(a), pull(b), pull(c));
-            frame.wide_polyline(&[a, b, c, a], SOUP_COLOR, 1.5);
-            for p in [a, b, c] {
-                frame.marker(p, dot, SOUP_COLOR);
+            let pull = |p: Vec3| left + centre + (p - centre) * keep;
+            let (pa, pb, pc) = (pull(a), pull(b), pull(c));
+            if self.marked(centre) {
+                frame.wide_polyline(&[pa, pb, pc, pa], SOUP_COLOR, 1.5);
+                for p in [pa, pb, pc] {
+                    frame.marker(p, dot, SOUP_COLOR);
+                }
+            } else {
+                frame.polyline(&[pa, pb, pc, pa], faint(SOUP_COLOR));
             }
         }
         if small {
@@ -166,14 +219,19 @@ impl MeshStorage {
             for k in 0..3 {
                 let (a, b) = (tri[k], tri[(k + 1) % 3]);
                 if a < b {
-                    let pa = right + self.positions[a as usize];
-                    let pb = right + self.positions[b as usize];
-                    frame.wide_line(pa, pb, INDEXED_COLOR, 1.5);
+                    let (a, b) = (self.positions[a as usize], self.positions[b as usize]);
+                    if self.marked((a + b) * 0.5) {
+                        frame.wide_line(right + a, right + b, INDEXED_COLOR, 1.5);
+                    } else {
+                        frame.line(right + a, right + b, faint(INDEXED_COLOR));
+                    }
                 }
             }
         }
         for (i, p) in self.positions.iter().enumerate() {
-            frame.marker(right + *p, dot * 1.2, INDEXED_COLOR);
+            if self.marked(*p) {
+                frame.marker(right + *p, dot * 1.2, INDEXED_COLOR);
+            }
             if small {
                 frame.label_with_priority(right + *p * 1.18, i.to_string(), palette::DARK, 1);
             }
@@ -192,9 +250,18 @@ impl MeshStorage {
             format!("indexed: {}", bytes(s.indexed_bytes)),
             INDEXED_COLOR,
         );
+        let patch = if dense {
+            format!(
+                " Dots only on the patch facing you: {} corners of the soup, {} positions indexed.",
+                self.marked_corners(),
+                self.positions.iter().filter(|p| self.marked(**p)).count()
+            )
+        } else {
+            String::new()
+        };
         format!(
             "{} triangles. Triangle soup: 3 × {} = {} positions × 12 B = {}. Indexed: {} positions × 12 B + \
-             {} indices × 4 B = {}. The soup is {:.2}× larger; every position is stored {:.1} times on average.",
+             {} indices × 4 B = {}. The soup is {:.2}× larger; every position is stored {:.1} times on average.{patch}",
             s.triangles,
             s.triangles,
             s.soup_positions,
@@ -385,10 +452,19 @@ impl Frustum {
             frame.wide_line(*n, *f, palette::GREY, 1.5);
         }
         frame.marker(EYE, 12.0, palette::DARK);
-        // Where the eye, the near plane and the point crowd (the point starts at half of z_near),
-        // the point's label wins, then the eye's; the frustum's own labels sit at its far corners.
-        frame.label_with_priority(EYE + Vec3::new(0.0, 0.25, 0.0), "eye", palette::DARK, 2);
-        frame.label_with_priority(near[2], "z_near", NEAR, 1);
+        // The eye, the near plane, the point and its image crowd at the apex (the point starts at
+        // half of z_near), so each label there reads away from the others: the eye's to the left
+        // of the apex, z_near's to the left of the near plane's top-left corner (the point and
+        // its image stay to the right of the view axis, where x > 0 puts them), the point's above
+        // it and the image's below it, off the ray from the eye. The point's label wins, then the eye's.
+        label_left_with_priority(
+            frame,
+            EYE - Vec3::new(0.1, 0.0, 0.0),
+            "eye",
+            palette::DARK,
+            2,
+        );
+        label_left_with_priority(frame, near[3], "z_near", NEAR, 1);
         frame.label_with_priority(far[2], "z_far", FAR, 1);
         // The point, the ray from the eye, and where the ray crosses the near plane (the image).
         let p = self.point_at(s);
@@ -780,6 +856,23 @@ impl DepthPrecision {
             if from > self.far { ", past z_far: no fighting" } else { ": there the floors fight" },
         )
     }
+}
+
+/// A [`Frame::label_left`] with a priority (as [`Frame::label_with_priority`]).
+fn label_left_with_priority(
+    frame: &mut Frame,
+    anchor: Vec3,
+    text: &str,
+    color: Vec3,
+    priority: i32,
+) {
+    frame.labels.push(crate::draw::Label {
+        anchor,
+        text: text.to_string(),
+        color,
+        left: true,
+        priority,
+    });
 }
 
 /// A fixed pseudo-random number in [0, 1) per pixel and channel (the same every frame).
