@@ -68,9 +68,31 @@ fn opposite_keys() -> Interpolation {
     scene
 }
 
+/// The length of the path drawn in `color` (all its segments).
+fn path_length(frame: &Frame, color: Vec3) -> f32 {
+    frame.segments_of(color).map(|(a, b)| a.distance(b)).sum()
+}
+
+#[test]
+fn a_turn_about_the_nose_axis_still_draws_a_path() {
+    // Keys 170° and −170° about x: every nose stays put, the wing tips sweep arcs.
+    let mut scene = Interpolation::new();
+    scene
+        .set_keys_euler_deg(Vec3::new(170.0, 0.0, 0.0), Vec3::new(-170.0, 0.0, 0.0))
+        .unwrap();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 0.5).unwrap();
+    for (method, _, color) in inbetween::figures::rotations::METHODS {
+        let drawn = path_length(&frame, color * 0.8);
+        // The short arc (20°) at a wing tip 0.5 m out is 0.17 m; Euler lerp's 340° is 3 m; matrix
+        // lerp's chord is 0.17 m.
+        assert!(drawn > 0.15, "{method:?}: {drawn} m of path");
+    }
+}
+
 #[test]
 fn default_keys_make_euler_lerp_wobble() {
-    let scene = Interpolation::new();
+    let mut scene = Interpolation::new();
     let mut deviation: f32 = 0.0;
     for k in 0..=20 {
         let t = k as f32 / 20.0;
@@ -78,10 +100,25 @@ fn default_keys_make_euler_lerp_wobble() {
         let slerp = Quat::from_mat3(&scene.orientation(Method::Slerp, t, false));
         deviation = deviation.max(euler.angle_between(slerp).to_degrees());
     }
-    // The page: "strays up to 39° from slerp".
+    // The page: "strays up to 39° from slerp", and the note under the figure reads the same.
     assert!(
         (38.5..39.5).contains(&deviation),
         "Euler lerp strays {deviation}° from slerp"
+    );
+    let (t_max, max) = scene.max_euler_deviation_deg();
+    assert!((max - deviation).abs() < 0.5, "{max} against {deviation}");
+    assert!((0.0..=1.0).contains(&t_max));
+    let note = scene.draw(&mut Frame::default(), t_max).unwrap();
+    assert!(
+        note.contains(&format!(
+            "Euler lerp is 39° from slerp at t = {t_max:.2}; at most 39° (at t = {t_max:.2})."
+        )),
+        "{note}"
+    );
+    let note = scene.draw(&mut Frame::default(), 0.0).unwrap();
+    assert!(
+        note.contains("Euler lerp is 0° from slerp at t = 0.00"),
+        "{note}"
     );
     let speeds: Vec<[f32; 4]> = scene.sample_angular_speed(41).unwrap();
     let euler: Vec<f32> = speeds.iter().map(|r| r[1]).collect();
@@ -104,7 +141,8 @@ fn long_arc_note_gives_both_angles_adding_to_a_turn() {
     let (short, long) = scene.arc_angles_deg();
     assert!((short + long - 360.0).abs() < 1e-3 && short < 180.0);
     let mut frame = Frame::default();
-    assert_eq!(scene.draw(&mut frame, 0.5).unwrap(), "");
+    let note = scene.draw(&mut frame, 0.5).unwrap();
+    assert!(note.starts_with("Euler lerp is "), "{note}");
     scene.set_long_arc(true);
     let note = scene.draw(&mut frame, 0.5).unwrap();
     assert!(note.contains("the other way round"), "{note}");
@@ -474,8 +512,8 @@ fn the_key_circle_holds_both_arcs_and_the_steps_of_nlerp_and_slerp() {
         "−a",
         "b",
         "−b",
-        "short arc: Ω = 51°, a turn of 101°",
-        "long arc: Ω = 129°, a turn of 259°",
+        "short arc: Ω = 51°",
+        "long arc: Ω = 129°",
     ] {
         assert!(texts.contains(&name), "{name} in {texts:?}");
     }
@@ -609,13 +647,16 @@ fn figure_1_paths_are_over_everything_with_a_tick_per_eighth() {
     let mut scene = Interpolation::new();
     let mut frame = Frame::default();
     scene.draw(&mut frame, 0.4).unwrap();
-    // Four paths of 64 segments each, drawn over the aeroplanes.
-    let on_top = frame
-        .strokes
-        .iter()
-        .filter(|s| s.depth_bias == inbetween::draw::ON_TOP)
-        .count();
-    assert_eq!(on_top, 4 * 64);
+    // Four solid nose paths and four dashed wing-tip paths of 64 segments each, drawn over the
+    // aeroplanes.
+    let on_top = |dashed: bool| {
+        frame
+            .strokes
+            .iter()
+            .filter(|s| s.depth_bias == inbetween::draw::ON_TOP && (s.dash[3] > 0.0) == dashed)
+            .count()
+    };
+    assert_eq!((on_top(false), on_top(true)), (4 * 64, 4 * 64));
     let ticks = frame
         .markers
         .iter()
@@ -643,4 +684,87 @@ fn figure_1_paths_are_over_everything_with_a_tick_per_eighth() {
     );
     let slerp_mid = Quat::from_mat3(&scene.orientation(Method::Slerp, 0.5, false));
     assert!((slerp_mid.angle_between(Quat::IDENTITY).to_degrees() - 180.0).abs() < 0.1);
+}
+
+/// Figure 2's labels keep their places beside their anchors, inside the canvas and off the four
+/// keys' dots, at the page's camera fitted to a 760 × 380 canvas (the 800 × 600 page) and a
+/// 650 × 420 one (1600 × 1000): with the default keys, the keys 170° and −170° about x, and the
+/// long arc.
+#[test]
+fn circle_labels_stay_beside_their_anchors_and_off_the_dots() {
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::draw::layout::{place, LabelBox, Rect};
+    let mut scenes = vec![Interpolation::new()];
+    let mut across = Interpolation::new();
+    across
+        .set_keys_euler_deg(Vec3::new(170.0, 0.0, 0.0), Vec3::new(-170.0, 0.0, 0.0))
+        .unwrap();
+    scenes.push(across);
+    let mut long = Interpolation::new();
+    long.set_keys_euler_deg(Vec3::new(170.0, 0.0, 0.0), Vec3::new(-170.0, 0.0, 0.0))
+        .unwrap();
+    long.set_long_arc(true);
+    scenes.push(long);
+    let mut long_default = Interpolation::new();
+    long_default.set_long_arc(true);
+    scenes.push(long_default);
+    for (n, scene) in scenes.iter_mut().enumerate() {
+        for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+            let mut f = Frame::default();
+            scene.draw_circle(&mut f, 0.3).unwrap();
+            let mut camera = OrbitCamera::from_view([0.0, 1.3, 0.0, 5.0, 0.0, 0.0]);
+            let fit: Vec<Vec3> = f
+                .keep_in_view
+                .iter()
+                .copied()
+                .chain(f.labels.iter().map(|l| l.anchor))
+                .collect();
+            camera.fit(&fit, size, FIT_PAD_PX);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let on = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+            let boxes: Vec<LabelBox> = f
+                .labels
+                .iter()
+                .map(|l| LabelBox {
+                    anchor: on(l.anchor),
+                    size: Vec2::new(7.7 * l.text.chars().count() as f32, 17.0),
+                    left: l.left,
+                    visible: true,
+                    priority: l.priority,
+                })
+                .collect();
+            let keys: Vec<Vec2> = f
+                .markers
+                .iter()
+                .filter(|m| m.size_px == 12.0)
+                .map(|m| on(Vec3::from(m.center)))
+                .collect();
+            assert_eq!(keys.len(), 4);
+            for ((label, b), p) in f.labels.iter().zip(&boxes).zip(place(&boxes, size)) {
+                let at = format!("scene {n}, {} on {size}", label.text);
+                assert!(p.shown, "{at}: hidden");
+                let rect = Rect {
+                    min: p.top_left,
+                    size: b.size,
+                };
+                for d in &keys {
+                    assert!(
+                        !rect.overlaps(
+                            &Rect {
+                                min: *d - 5.0,
+                                size: Vec2::splat(10.0)
+                            },
+                            0.0
+                        ),
+                        "{at}: over a key's dot at {d}"
+                    );
+                }
+                // Only a key's name may give way to a neighbour's (a and −b 10° apart).
+                if label.text.contains("arc") {
+                    assert!(p.leader_to.is_none(), "{at}: moved off its anchor");
+                }
+            }
+        }
+    }
 }

@@ -69,8 +69,14 @@ pub const METHODS: [(Method, f32, Vec3); 4] = [
 /// The tip of the yellow pointer on the aeroplane's nose, in its own frame: past the wings, so
 /// that its path is not hidden under the aeroplane.
 const NOSE: Vec3 = Vec3::new(0.9, 0.0, 0.0);
+/// The tip of the aeroplane's right wing, in its own frame: a second tracer, at right angles to
+/// the nose, so a turn about the nose's own axis (x), which leaves the nose in place, still draws
+/// a path.
+const WING_TIP: Vec3 = Vec3::new(0.05, 0.0, 0.5);
 /// Equal steps of t marked on each path.
 const PATH_TICKS: usize = 8;
+/// Samples of t over which Figure 1's note finds how far Euler lerp strays from slerp.
+const DEVIATION_SAMPLES: usize = 64;
 
 /// Figure 1: one aeroplane, two key orientations, interpolated by matrix lerp, Euler-angle lerp,
 /// nlerp and slerp (left to right), with the path of the nose over the whole interpolation.
@@ -183,8 +189,9 @@ impl Interpolation {
         (short, 360.0 - short)
     }
 
-    /// Draws the four objects at `t ∈ [0, 1]`; returns the note (the arc taken, and the check of
-    /// the student's slerp when "use my exercise" is on).
+    /// Draws the four objects at `t ∈ [0, 1]` with the paths of their noses and wing tips; returns
+    /// the note (the arc taken, the check of the student's slerp when "use my exercise" is on, and
+    /// how far Euler lerp is from slerp at `t` and at most).
     pub fn draw(&mut self, frame: &mut Frame, t: f32) -> Result<String, String> {
         let t = in_range("t", t, 0.0, 1.0)?;
         let student = self.use_exercise && self.arc == Arc::Short;
@@ -210,6 +217,17 @@ impl Interpolation {
             frame.ticks(&ticks, 12.0, color * 0.8);
             frame.marker_on_top(self.path[0], crate::draw::DOT_PX, palette::GREY);
             frame.marker_on_top(self.path[64], crate::draw::DOT_PX, palette::KEY);
+            // The wing tip's path, dashed and thinner: it moves where the nose's stays put.
+            self.path.clear();
+            for k in 0..=64 {
+                let m = self.orientation(method, k as f32 / 64.0, student);
+                self.path.push(at + m * WING_TIP);
+            }
+            let wing = crate::draw::StrokeStyle {
+                on_top: true,
+                ..crate::draw::StrokeStyle::dashed(2.0, 0.06, 0.05)
+            };
+            frame.stroke(&self.path, color * 0.8, wing);
             let m = self.orientation(method, t, student);
             draw_plane(frame, at, m, color, 1.0);
             // The pointer whose tip draws the path.
@@ -220,11 +238,47 @@ impl Interpolation {
             frame.mesh(MeshId::CUBE, pointer, Vec3::new(0.95, 0.85, 0.2));
             frame.axes(Mat4::from_translation(at) * Mat4::from_mat3(m), 0.6);
         }
-        let mut note = self.arc_note();
-        if self.use_exercise {
-            note = [note, self.exercise_note(t)].join(" ").trim().to_string();
-        }
-        Ok(note)
+        let exercise = if self.use_exercise {
+            self.exercise_note(t)
+        } else {
+            String::new()
+        };
+        let parts = [self.arc_note(), exercise, self.deviation_note(t)];
+        Ok(parts
+            .iter()
+            .filter(|p| !p.is_empty())
+            .cloned()
+            .collect::<Vec<_>>()
+            .join(" "))
+    }
+
+    /// The angle (degrees) between Euler lerp's orientation and slerp's at `t` (the reference
+    /// slerp, on the arc in use).
+    pub fn euler_deviation_deg(&self, t: f32) -> f32 {
+        let euler = rotation::quat_from_mat3(self.orientation(Method::EulerLerp, t, false));
+        let slerp = rotation::quat_from_mat3(self.orientation(Method::Slerp, t, false));
+        angle_between(euler, slerp) / DEG
+    }
+
+    /// The largest [`Interpolation::euler_deviation_deg`] over t at
+    /// [`DEVIATION_SAMPLES`] + 1 equal steps: `(t, degrees)`.
+    pub fn max_euler_deviation_deg(&self) -> (f32, f32) {
+        (0..=DEVIATION_SAMPLES)
+            .map(|k| k as f32 / DEVIATION_SAMPLES as f32)
+            .map(|t| (t, self.euler_deviation_deg(t)))
+            .fold((0.0, 0.0), |best, x| if x.1 > best.1 { x } else { best })
+    }
+
+    /// How far Euler lerp is from slerp now, and at most.
+    fn deviation_note(&self, t: f32) -> String {
+        let (t_max, max) = self.max_euler_deviation_deg();
+        format!(
+            "Euler lerp is {:.0}° from slerp at t = {:.2}; at most {:.0}° (at t = {:.2}).",
+            self.euler_deviation_deg(t),
+            t,
+            max,
+            t_max
+        )
     }
 
     fn arc_note(&self) -> String {
@@ -378,24 +432,29 @@ impl Interpolation {
             palette::PURPLE,
             crate::draw::StrokeStyle::dashed(3.0, 0.12, 0.08),
         );
+        // Every label reads away from the circle: rightwards on its right half, leftwards on its
+        // left half, so none covers the circle, its dots or the other labels. The arcs' labels
+        // are short (the note gives the turn, 2Ω) so they fit beside the circle.
+        let outward = |frame: &mut Frame, at: Vec3, text: String, color: Vec3, priority: i32| {
+            frame.label_with_priority(at, text, color, priority);
+            if let Some(label) = frame.labels.last_mut() {
+                label.left = at.x < CIRCLE_CENTRE.x;
+            }
+        };
         let (short_deg, long_deg) = (short_phi.abs() / DEG, long_phi.abs() / DEG);
-        frame.label_with_priority(
-            at_angle(short_phi * 0.5, CIRCLE_RADIUS * 1.12),
-            format!(
-                "short arc: Ω = {:.0}°, a turn of {:.0}°",
-                short_deg,
-                2.0 * short_deg
-            ),
+        // A short arc's label stands farther out, past the names of its two ends.
+        let out = if short_deg < 40.0 { 1.45 } else { 1.15 };
+        outward(
+            frame,
+            at_angle(short_phi * 0.5, CIRCLE_RADIUS * out),
+            format!("short arc: Ω = {short_deg:.0}°"),
             slerp_color,
             2,
         );
-        frame.label_with_priority(
-            at_angle(long_phi * 0.5, CIRCLE_RADIUS * 1.12),
-            format!(
-                "long arc: Ω = {:.0}°, a turn of {:.0}°",
-                long_deg,
-                2.0 * long_deg
-            ),
+        outward(
+            frame,
+            at_angle(long_phi * 0.5, CIRCLE_RADIUS * 1.15),
+            format!("long arc: Ω = {long_deg:.0}°"),
             palette::PURPLE,
             2,
         );
@@ -408,7 +467,13 @@ impl Interpolation {
         ] {
             let p = to_world(q);
             frame.marker(p, 12.0, color);
-            frame.label_with_priority(p + (p - CIRCLE_CENTRE) * 0.12, name, color, 3);
+            outward(
+                frame,
+                p + (p - CIRCLE_CENTRE) * 0.12,
+                name.to_string(),
+                color,
+                3,
+            );
         }
         // lerp walks the chord at equal steps of t; nlerp pushes each step out onto the circle
         // (a ray from the centre); slerp walks the arc at equal angles.
