@@ -105,7 +105,11 @@ fn the_try_this_of_figure_1_holds() {
     // During the steps both centres stay at the origin.
     for stage in [0.3, 0.8, 1.2, 1.7] {
         for o in [Order::RotateFirst, Order::TranslateFirst] {
-            assert!(near(shape.matrix_at(o, stage).w_axis.truncate(), Vec3::ZERO, 1e-6));
+            assert!(near(
+                shape.matrix_at(o, stage).w_axis.truncate(),
+                Vec3::ZERO,
+                1e-6
+            ));
         }
     }
     shape
@@ -250,8 +254,80 @@ fn labels_name_the_selected_joint_and_the_wrist() {
         .iter()
         .find(|l| l.text == "left wrist")
         .unwrap();
-    assert!(near(wrist.anchor, figure.wrist(), 1e-6));
+    // Beside the body, with a guide line from the wrist to the name.
+    assert!(!on_a_box(&frame, wrist.anchor));
+    assert!(frame
+        .segments_of(palette::PINK)
+        .any(|(a, b)| near(a, figure.wrist(), 1e-6) && near(b, wrist.anchor, 1e-6)));
     assert!(frame.labels.iter().any(|l| l.text == "upper_arm.L"));
+}
+
+/// Whether `p`, seen from the front (along z), lies on one of the frame's boxes.
+fn on_a_box(frame: &Frame, p: Vec3) -> bool {
+    frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == MeshId::CUBE)
+        .any(|m| {
+            let corners = (0..8).map(|k| {
+                let c = Vec3::new(
+                    if k & 1 == 0 { -1.0 } else { 1.0 },
+                    if k & 2 == 0 { -1.0 } else { 1.0 },
+                    if k & 4 == 0 { -1.0 } else { 1.0 },
+                );
+                m.model.transform_point3(c)
+            });
+            let (lo, hi) = corners.fold(
+                (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+                |(lo, hi), c| (lo.min(c), hi.max(c)),
+            );
+            (lo.x..=hi.x).contains(&p.x) && (lo.y..=hi.y).contains(&p.y)
+        })
+}
+
+#[test]
+fn the_selected_joints_name_sits_beside_the_body() {
+    let mut figure = HierarchyFigure::new();
+    for k in 0..figure.joint_names().len() {
+        figure.select(k).unwrap();
+        for t in [0.0, 0.3, 0.7] {
+            let mut frame = Frame::default();
+            figure.draw(&mut frame, t).unwrap();
+            let name = &figure.joint_names()[k];
+            for text in [name.as_str(), "left thigh", "left wrist"] {
+                let label = frame.labels.iter().find(|l| l.text == text).unwrap();
+                assert!(
+                    !on_a_box(&frame, label.anchor),
+                    "{text} at t = {t}: on the body"
+                );
+            }
+            let label = frame.labels.iter().find(|l| &l.text == name).unwrap();
+            // The label reads away from the body: leftwards on the figure's right side.
+            assert_eq!(label.left, label.anchor.x < 0.0, "{name}");
+        }
+    }
+}
+
+#[test]
+fn the_direction_and_its_label_leave_the_box_at_every_stage() {
+    let shape = SingleShape::new();
+    for stage in [0.0, 0.5, 1.0, 1.5, 2.0] {
+        let mut frame = Frame::default();
+        shape.draw(&mut frame, stage).unwrap();
+        let label = frame.labels.iter().find(|l| l.text == "v (w = 0)").unwrap();
+        assert!(label.left, "it reads leftwards, off the arrow");
+        assert!(!on_a_box(&frame, label.anchor), "stage {stage}: on the box");
+        let tip = frame
+            .segments_of(palette::PINK)
+            .filter(|(a, _)| *a == Vec3::ZERO)
+            .map(|(_, b)| b)
+            .next()
+            .unwrap();
+        assert!(
+            !on_a_box(&frame, tip),
+            "stage {stage}: the arrow ends inside the box"
+        );
+    }
 }
 
 /// Height of the left wrist at `t` in the drawn figure and in the plot.

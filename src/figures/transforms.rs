@@ -68,6 +68,9 @@ pub struct SingleShape {
 
 /// Half-size of Figure 1's box, metres.
 pub const BOX_HALF: Vec3 = Vec3::new(0.4, 0.25, 0.15);
+/// Figure 1's direction v (w = 0), in the box's frame: longer than the box is wide, so it shows
+/// outside the box while the box turns at the origin.
+pub const DIRECTION: Vec3 = Vec3::new(-0.7, 0.35, 0.0);
 
 impl Default for SingleShape {
     fn default() -> Self {
@@ -192,20 +195,21 @@ impl SingleShape {
             frame.stroke(&[Vec3::ZERO, tip], rt, StrokeStyle::dashed(1.5, 0.06, 0.06));
         }
         // A point (w = 1) moves with the translation; a direction (w = 0) only turns. Their
-        // labels sit just outside the box and past the arrow's tip.
+        // labels sit just outside the box and past the arrow's tip. The direction points to the
+        // box's left and up (its −x side), away from the world axes and from the box's own x
+        // axis, and long enough to leave the box while the box turns at the origin; its label
+        // reads leftwards from past the tip, off the arrow.
         let centre = m.w_axis.truncate();
         let p = (m * transform::point(BOX_HALF)).truncate();
         frame.marker(p, 11.0, palette::PINK);
         let out = (p - centre).normalize_or_zero();
         frame.label_with_priority(p + out * 0.15, "p (w = 1)", palette::PINK, 2);
-        let v = (m * transform::direction(Vec3::new(0.6, 0.0, 0.0))).truncate();
+        let v = (m * transform::direction(DIRECTION)).truncate();
         frame.arrow(Vec3::ZERO, v, palette::PINK, 0.1);
-        frame.label_with_priority(
-            v * 1.2 - Vec3::new(0.0, 0.12, 0.0),
-            "v (w = 0)",
-            palette::PINK,
-            2,
-        );
+        frame.label_left(v * 1.12, "v (w = 0)", palette::PINK);
+        if let Some(label) = frame.labels.last_mut() {
+            label.priority = 2;
+        }
         // Everything any stage shows stays in view: the boxes wherever their centres go (the
         // origin, t, the arc), and the world axes.
         let (lo, hi) = arc.iter().chain([Vec3::ZERO, t].iter()).fold(
@@ -265,6 +269,24 @@ fn wire_box(frame: &mut Frame, model: Mat4, color: Vec3) {
                 frame.line(corner(i), corner(i | bit), color);
             }
         }
+    }
+}
+
+/// Names the point `at` of Figure 2's body beside the body, joined to it by a thin guide line: at
+/// the point itself the name would sit on the boxes. Points on the figure's left (x > 0.05) are
+/// named to that side, the others to its right side, where the name reads leftwards.
+fn name_beside(frame: &mut Frame, at: Vec3, name: &str, color: Vec3) {
+    let (x, left) = if at.x > 0.05 {
+        (at.x.max(0.3) + 0.3, false)
+    } else {
+        (at.x.min(-0.3) - 0.3, true)
+    };
+    let beside = Vec3::new(x, at.y + 0.1, at.z);
+    frame.wide_line_on_top(at, beside, color, 1.0);
+    if left {
+        frame.label_left(beside, name, color);
+    } else {
+        frame.label(beside, name, color);
     }
 }
 
@@ -655,9 +677,10 @@ impl HierarchyFigure {
         }
         let selected = placement * self.world[self.selected];
         frame.labelled_axes(selected, 0.25);
-        frame.label(
+        name_beside(
+            frame,
             pivot(self.selected),
-            self.hierarchy.names()[self.selected].clone(),
+            &self.hierarchy.names()[self.selected],
             palette::DARK,
         );
         // Halfway down the thigh (at the hip it would sit on the wrist's label when the arm hangs).
@@ -667,10 +690,10 @@ impl HierarchyFigure {
             .iter()
             .position(|&p| p == self.thigh as i32);
         let thigh_mid = knee.map_or(pivot(self.thigh), |k| (pivot(self.thigh) + pivot(k)) * 0.5);
-        frame.label(thigh_mid, "left thigh", palette::PURPLE);
+        name_beside(frame, thigh_mid, "left thigh", palette::PURPLE);
         let wrist = placement.transform_point3(self.wrist());
         frame.marker_on_top(wrist, 11.0, palette::PINK);
-        frame.label(wrist, "left wrist", palette::PINK);
+        name_beside(frame, wrist, "left wrist", palette::PINK);
     }
 
     /// One walk cycle of the *current* figure (its pose, scales and scale mode, with the walk
