@@ -3,7 +3,9 @@
 // links, the "Check my exercises" panel on stubs, the quiz (a right and a wrong answer, numbers
 // from the core), progress that survives a reload and shows in the gallery, a corrupt entry that
 // is ignored with a note, and the reset. One browser, WebGL2, five page loads. The quizzes' data
-// is checked without a browser: every numeric answer computes in the module (Node).
+// is checked without a browser: every numeric answer computes in the module (Node). Every quiz's
+// questions and "show me" buttons are checked on each lesson page by the lesson sweep
+// (lessons.mjs, through quiz.mjs), on the page it has loaded anyway.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readdirSync, readFileSync, existsSync } from 'node:fs';
@@ -182,50 +184,6 @@ test('navigation, the grading panel, the quiz and progress, as a student uses th
     assert.equal(await gallery.page.evaluate(() => localStorage.getItem('inbetween:progress:v1')), null);
     assert.equal(await gallery.page.locator('.progress-note').count(), 0);
     assert.deepEqual(gallery.problems, []);
-  } finally {
-    await context.close();
-  }
-});
-
-// Every lesson's quiz renders on its page with all its questions, and each "show me" button finds
-// every control it sets (course.js warns "no control named …" otherwise) and sets it without an
-// error. One WebGL2 browser, one page load per lesson; E2E_QUIZ_LESSONS=00,09 narrows the run to
-// lessons whose folder starts so.
-const only = process.env.E2E_QUIZ_LESSONS?.split(',').map((s) => s.trim()).filter(Boolean);
-
-test('every quiz renders on its page, and "show me" sets its figures', async () => {
-  const folders = quizzes.map((q) => q.folder).filter((f) => !only || only.some((o) => f.startsWith(o)));
-  assert.equal(quizzes.length, 15, 'every lesson has a quiz');
-  assert.ok(folders.length > 0, `E2E_QUIZ_LESSONS=${process.env.E2E_QUIZ_LESSONS} matches no lesson`);
-  const context = await launch('webgl2');
-  try {
-    for (const folder of folders) {
-      const { quiz } = quizzes.find((q) => q.folder === folder);
-      const { page, problems } = await openPage(context, `${site.origin}/lessons/${folder}/?backend=webgl2`);
-      const warnings = [];
-      page.on('console', (m) => { if (m.type() === 'warning') warnings.push(m.text()); });
-      await page.waitForFunction(() => document.body.dataset.course === 'ready');
-      assert.equal(await page.locator('.quiz .quiz-question').count(), quiz.questions.length, folder);
-      for (const q of quiz.questions.filter((x) => x.show)) {
-        await page.locator(`#quiz-${q.id} .show-me`).click();
-        // Two frames: the controls' handlers have run and the figure has redrawn.
-        await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-        // Each number it sets shows in the figure's panel: in a number input, or for a dropdown in
-        // its display (a list of numbers) or its selected index (a map of names to 0, 1, 2 …).
-        const inputs = await page.locator(`#${q.show.figure} .lil-controller`).evaluateAll((els) => els.flatMap((e) => [
-          ...[...e.querySelectorAll('input')].map((i) => i.value),
-          ...[...e.querySelectorAll('select')].map((i) => String(i.selectedIndex)),
-          ...[...e.querySelectorAll('.lil-display')].map((d) => d.textContent.trim()),
-        ]));
-        for (const [key, value] of Object.entries(q.show.set)) {
-          if (typeof value !== 'number') continue;
-          assert.ok(inputs.some((v) => v !== '' && Math.abs(Number(v) - value) < 1e-6), `${folder} ${q.id}: ${key} = ${value} not shown (${inputs.join(' ')})`);
-        }
-      }
-      assert.deepEqual(warnings.filter((w) => /no control named/.test(w)), [], folder);
-      assert.deepEqual(problems, [], folder);
-      await page.close();
-    }
   } finally {
     await context.close();
   }

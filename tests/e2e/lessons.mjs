@@ -11,6 +11,7 @@ import { join } from 'node:path';
 import { tmpdir } from 'node:os';
 import { launch, pixelStats, meanDifference, frames, serveDist, openPage, DIST } from './browser.mjs';
 import { gpuNoiseMatchesCpu } from './noise_gpu.mjs';
+import { quizShowMeSetsFigures } from './quiz.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
@@ -59,10 +60,12 @@ async function pauseTimelines(page) {
 /**
  * A screenshot of the whole page with its figures drawn. Playwright's `fullPage` capture resizes
  * the page behind our back, which clears every canvas after the figures drew, so the viewport is
- * made as tall as the page instead: every figure is then on screen (Viewer::set_visible) and
- * draws, and an ordinary screenshot takes the lot.
+ * made as tall as the page instead: every figure is then on screen (Viewer::set_visible), draws
+ * and places its labels, and an ordinary screenshot takes the lot. `check`, when given, runs in
+ * that state, before the screenshot (the figures' sizes depend on the page's width only, so what
+ * it sees is what the reader's viewport shows).
  */
-async function fullPageShot(page, path) {
+async function fullPageShot(page, path, check = async () => {}) {
   const viewport = page.viewportSize();
   const height = await page.evaluate(() => document.documentElement.scrollHeight);
   // Chromium's capture wraps round past about 8,000 px (the page's top reappears below), so a
@@ -70,6 +73,7 @@ async function fullPageShot(page, path) {
   await page.setViewportSize({ width: viewport.width, height: Math.min(height, 8000) });
   await page.evaluate(() => window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true)));
   await frames(page, 4);
+  await check();
   await page.screenshot({ path });
   await page.setViewportSize(viewport);
 }
@@ -77,18 +81,24 @@ async function fullPageShot(page, path) {
 /**
  * A paused 3D figure's pixel statistics once it has settled, as a person would see it after
  * waiting a moment: a loaded machine may present a figure's first frames late (a blank or
- * half-loaded canvas), so up to five looks, a few frames apart, until one is drawn and two in a
- * row are the same. `still` is the mean difference between the last two looks (0..255).
+ * half-loaded canvas), so up to five looks, a few frames apart, until one is drawn and it stays
+ * the same. It stays the same when its renderer presents no frame during the look and the two
+ * frames after it (the canvas then shows what was captured: `still` is 0), or when a second look
+ * a few frames later differs from it by under 0.5 (`still`: the mean difference, 0..255).
  */
 async function settledStats(page, canvas, i) {
-  let stats = await pixelStats(page, canvas, `before${i}`);
+  const presented = () => canvas.evaluate((c) => window.__inbetween.figures.find((f) => c.closest(f.selector))?.viewer.canvasFrames ?? -1);
+  let stats;
   let still = 255;
   for (let look = 0; look < 5; look++) {
+    const before = await presented();
+    stats = await pixelStats(page, canvas, `before${i}`);
+    await frames(page, 2);
+    if (before >= 0 && stats.coverage > 0.02 && (await presented()) === before) return { ...stats, still: 0 };
     await frames(page);
     const next = await pixelStats(page, canvas, `still${i}`);
     still = await meanDifference(page, `before${i}`, `still${i}`);
     if (next.coverage > 0.02 && still < 0.5) return { ...next, still };
-    stats = await pixelStats(page, canvas, `before${i}`);
   }
   return { ...stats, still };
 }
@@ -341,15 +351,11 @@ function signatureAfter(figure, before, maxFrames = 3) {
 }
 
 /**
- * At the page's current size: every figure is scrolled on screen once, so it draws and places
- * its labels, then no shown label of a figure may overlap another or leave its canvas (read from
- * the boxes the shell placed).
+ * At the page's current width, with every figure on screen and drawn (see `fullPageShot`): no
+ * shown label of a figure may overlap another or leave its canvas (read from the boxes the shell
+ * placed).
  */
 async function labelsApart(page, where) {
-  for (const canvas of await page.locator('.figure .stage canvas').all()) {
-    await canvas.scrollIntoViewIfNeeded();
-    await frames(page, 3);
-  }
   const figures = await page.evaluate(() => [...document.querySelectorAll('.figure')].map((figure) => {
     const canvas = figure.querySelector('.stage canvas');
     if (!canvas) return null;
@@ -387,22 +393,22 @@ async function frameAllReturnsToTheFit(page, where) {
     const selector = await page.evaluate((i) => window.__inbetween.figures[i].selector, i);
     const canvas = page.locator(`${selector} .stage canvas`);
     await canvas.scrollIntoViewIfNeeded();
-    await frames(page, 3);
-    const fitting = () => page.evaluate((i) => window.__inbetween.figures[i].viewer.fitting, i);
-    assert.equal(await fitting(), true, `${where} ${selector}: fits from the start`);
+    // The viewer's `fitting` flag changes as its event handlers run: each step waits, frame by
+    // frame, until the flag reads as expected (for up to 10 s), instead of a fixed count of frames.
+    const fitting = (want) => page.waitForFunction(([i, want]) => window.__inbetween.figures[i].viewer.fitting === want,
+      [i, want], { polling: 'raf', timeout: 10_000 }).then(() => want, () => !want);
+    assert.equal(await fitting(true), true, `${where} ${selector}: fits from the start`);
     const box = await canvas.boundingBox();
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await page.mouse.wheel(0, -600);
-    await frames(page, 3);
-    assert.equal(await fitting(), false, `${where} ${selector}: a zoom leaves the fit`);
+    assert.equal(await fitting(false), false, `${where} ${selector}: a zoom leaves the fit`);
     await page.locator(`${selector} .frame-all`).click();
-    await frames(page, 3);
-    assert.equal(await fitting(), true, `${where} ${selector}: "frame all" returns to it`);
+    assert.equal(await fitting(true), true, `${where} ${selector}: "frame all" returns to it`);
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await page.mouse.wheel(0, 600);
-    await frames(page, 2);
+    assert.equal(await fitting(false), false, `${where} ${selector}: a second zoom leaves the fit`);
     await canvas.dblclick();
-    await frames(page, 3);
-    assert.equal(await fitting(), true, `${where} ${selector}: a double-click returns to it`);
+    assert.equal(await fitting(true), true, `${where} ${selector}: a double-click returns to it`);
   }
   return ids.length;
 }
@@ -552,8 +558,8 @@ function registerLessons(backend, lessons, which, withGallery, take) {
             await frames(page);
             const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
             assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
-            await labelsApart(page, `${lesson.folder} at ${w} x ${h}`);
-            await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`);
+            await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`,
+              () => labelsApart(page, `${lesson.folder} at ${w} x ${h}`));
             clock(`${w}x${h} page`);
           }
           await page.setViewportSize({ width: 1100, height: 900 });
@@ -566,6 +572,10 @@ function registerLessons(backend, lessons, which, withGallery, take) {
             assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
           }
           clock('exercise switch');
+          // The quiz, on this page already loaded (WebGL2 only: it sets controls, which the sweep
+          // has already checked on both backends).
+          if (backend === 'webgl2') await quizShowMeSetsFigures(page, lesson.folder);
+          clock('quiz');
           await fullPageShot(page, `${SHOTS}/${lesson.folder}-${backend}.png`);
           clock('page screenshot');
           assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
