@@ -99,6 +99,12 @@ fn the_additive_layer_adds_on_top() {
     f.set_additive("lean forward (a pose)", 1.0).unwrap();
     let note = f.pose(0.3).unwrap();
     assert!(note.contains("Additive layer: lean forward"), "{note}");
+    // Figure 2's note names its own controls (base clip, layer weight): it has no clip B.
+    assert!(
+        note.starts_with("Base clip: walk, played alone") && note.contains("layer weight 1"),
+        "{note}"
+    );
+    assert!(!note.contains("weight of B"), "{note}");
     let (skeleton, _) = human::simple_human();
     let spine = skeleton.find("spine").unwrap();
     let thigh = skeleton.find("thigh.L").unwrap();
@@ -768,11 +774,11 @@ fn the_crossfade_probes_catch_a_missing_short_arc_flip() {
     assert!(!note.contains("w = 0.25,"), "{note}");
 }
 
-/// Rows of the arm plot as `[t, a, b, mix, with additive]`.
-fn arm_rows(f: &mut BlendFigure) -> Vec<[f32; 5]> {
+/// Rows of the arm plot as `[t, a, b, mix, with additive, additive alone]`.
+fn arm_rows(f: &mut BlendFigure) -> Vec<[f32; 6]> {
     f.arm_samples(61)
         .unwrap()
-        .chunks(5)
+        .chunks(6)
         .map(|r| r.try_into().unwrap())
         .collect()
 }
@@ -781,8 +787,8 @@ fn arm_rows(f: &mut BlendFigure) -> Vec<[f32; 5]> {
 fn the_arm_plot_follows_the_weights_the_mask_and_the_additive_layer() {
     let mut f = BlendFigure::new();
     f.set_clips("walk", "wave").unwrap();
-    let max = |rows: &[[f32; 5]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MIN, f32::max);
-    let min = |rows: &[[f32; 5]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MAX, f32::min);
+    let max = |rows: &[[f32; 6]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MIN, f32::max);
+    let min = |rows: &[[f32; 6]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MAX, f32::min);
     // One cycle of clip A, the last row at its end, which repeats the first.
     f.set_weight(0.0).unwrap();
     let rows = arm_rows(&mut f);
@@ -821,12 +827,37 @@ fn the_arm_plot_follows_the_weights_the_mask_and_the_additive_layer() {
     let rows = arm_rows(&mut f);
     assert!(min(&rows, 4) > 135.0, "{rows:?}");
     let swing = |i: usize| max(&rows, i) - min(&rows, i);
+    // The plot's "layer alone" is the wave played on the rest pose: clip B, the wave itself.
+    for r in &rows {
+        assert!((r[5] - r[2]).abs() < 0.01, "the wave alone: {r:?}");
+    }
     assert!(
-        swing(4) > swing(2) + 2.0,
+        swing(4) > swing(5) + 2.0,
         "{} against {}",
         swing(4),
-        swing(2)
+        swing(5)
     );
+    // With the lean chosen, the plot's third line is the lean alone, not the wave: the rest
+    // pose's hanging arm tilted with the chest, the same all cycle long.
+    f.set_additive("lean forward (a pose)", 1.0).unwrap();
+    let rows = arm_rows(&mut f);
+    assert!(swing_of(&rows, 5) < 0.01, "{rows:?}");
+    assert!(rows[0][5] > 10.0 && rows[0][5] < 90.0, "{rows:?}");
+    for r in &rows {
+        assert!((r[5] - r[2]).abs() > 30.0, "not the wave: {r:?}");
+    }
+    // At layer weight 0 the layer is nothing: alone it is the rest pose, on the base the base.
+    f.set_additive("lean forward (a pose)", 0.0).unwrap();
+    for r in &arm_rows(&mut f) {
+        assert!(r[5] < 1.0 && (r[4] - r[3]).abs() < 0.01, "{r:?}");
+    }
+}
+
+fn swing_of(rows: &[[f32; 6]], i: usize) -> f32 {
+    let (lo, hi) = rows
+        .iter()
+        .fold((f32::MAX, f32::MIN), |(a, b), r| (a.min(r[i]), b.max(r[i])));
+    hi - lo
 }
 
 #[test]
@@ -864,6 +895,10 @@ fn the_ghost_is_the_pose_before_the_additive_layer() {
         plain + 20,
         "one ghost bone per joint with a parent"
     );
+    // The ghost lies mostly inside the body: it is drawn over it, or only the arm would show.
+    assert!(frame.strokes[plain..]
+        .iter()
+        .all(|s| s.depth_bias == inbetween::draw::ON_TOP));
     let base = Vec3::from(f.base_model()[5].translation);
     assert!(
         f.base_model()

@@ -221,7 +221,7 @@ fn a_rejected_additive_weight_keeps_the_additive_layer() {
     assert!(f
         .pose(0.3)
         .unwrap()
-        .contains("wave (a clip) at weight 0.25"));
+        .contains("wave (a clip), layer weight 0.25"));
 }
 
 #[test]

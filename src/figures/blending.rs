@@ -247,31 +247,13 @@ impl BlendFigure {
             self.skeleton.scale_mode(),
             &mut self.base_model,
         );
-        match self.additive {
-            1 => {
-                add_additive(
-                    &self.pose,
-                    &self.lean,
-                    self.additive_weight,
-                    &mut self.scratch,
-                )
-                .map_err(|e| e.to_string())?;
-                std::mem::swap(&mut self.pose, &mut self.scratch);
-            }
-            2 => {
-                // The wave clip minus the rest pose, at the same phase.
-                let wave = &self.clips[3];
-                let tw = (phase * wave.duration_sec()).min(wave.duration_sec() * 0.999_999);
-                wave.sample(tw, &mut ClipCursor::new(), &mut self.scratch);
-                let rest = self.skeleton.rest_pose();
-                let mut delta = self.skeleton.rest_pose();
-                make_additive(&self.scratch, &rest, &mut delta).map_err(|e| e.to_string())?;
-                // The wave's pelvis translation is the rest one: no travel is added.
-                add_additive(&self.pose, &delta, self.additive_weight, &mut self.scratch)
-                    .map_err(|e| e.to_string())?;
-                std::mem::swap(&mut self.pose, &mut self.scratch);
-            }
-            _ => {}
+        if self.additive != 0 {
+            let mut layered = Pose {
+                local: std::mem::take(&mut self.scratch.local),
+            };
+            let added = self.add_layer(&self.pose, phase, &mut layered);
+            self.scratch = std::mem::replace(&mut self.pose, layered);
+            added?;
         }
         local_to_model(
             self.skeleton.parents(),
@@ -280,6 +262,30 @@ impl BlendFigure {
             &mut self.model,
         );
         Ok(notes.join(" "))
+    }
+
+    /// The additive layer at its weight on top of `base` (the wave at `phase` of its cycle),
+    /// into `out`. Both layers are made relative to the rest pose; the wave's pelvis translation
+    /// is the rest one, so no travel is added.
+    fn add_layer(&self, base: &Pose, phase: f32, out: &mut Pose) -> Result<(), String> {
+        match self.additive {
+            1 => add_additive(base, &self.lean, self.additive_weight, out)
+                .map_err(|e| e.to_string()),
+            2 => {
+                let wave = &self.clips[3];
+                let tw = (phase * wave.duration_sec()).min(wave.duration_sec() * 0.999_999);
+                let rest = self.skeleton.rest_pose();
+                let mut sampled = rest.clone();
+                wave.sample(tw, &mut ClipCursor::new(), &mut sampled);
+                let mut delta = rest.clone();
+                make_additive(&sampled, &rest, &mut delta).map_err(|e| e.to_string())?;
+                add_additive(base, &delta, self.additive_weight, out).map_err(|e| e.to_string())
+            }
+            _ => {
+                out.local.clone_from(&base.local);
+                Ok(())
+            }
+        }
     }
 
     /// How far the right upper arm is raised in `model`: its angle from hanging straight down,
@@ -307,15 +313,18 @@ impl BlendFigure {
     /// The plot over one cycle of clip A (`samples` rows, the last at its end): rows of
     /// ```text
     /// [time (s), right arm raised (°): clip A alone, clip B alone (same phase),
-    ///            the mix (this mask and weight), the mix with the additive layer]
+    ///            the mix (this mask and weight), the mix with the additive layer,
+    ///            the additive layer alone (on the rest pose, at its weight)]
     /// ```
     /// computed with the reference blend (the student's is checked in the note).
     pub fn arm_samples(&mut self, samples: usize) -> Result<Vec<f32>, String> {
         super::check_samples(samples)?;
         let use_exercise = std::mem::replace(&mut self.use_exercise, false);
         let d = self.duration_sec();
-        let mut out = Vec::with_capacity(5 * samples);
+        let mut out = Vec::with_capacity(6 * samples);
         let mut alone = vec![Affine3A::IDENTITY; self.skeleton.len()];
+        let rest = self.skeleton.rest_pose();
+        let mut layer_alone = rest.clone();
         for k in 0..samples {
             let t = d * k as f32 / (samples - 1) as f32;
             // The last row is the cycle's end, which loops back to its start.
@@ -336,31 +345,49 @@ impl BlendFigure {
             }
             out.push(self.arm_raise_deg(&self.base_model));
             out.push(self.arm_raise_deg(&self.model));
+            let phase = (t_pose / d).rem_euclid(1.0);
+            let layered = self.add_layer(&rest, phase, &mut layer_alone);
+            if let Err(e) = layered {
+                self.use_exercise = use_exercise;
+                return Err(e);
+            }
+            local_to_model(
+                self.skeleton.parents(),
+                &layer_alone.local,
+                self.skeleton.scale_mode(),
+                &mut alone,
+            );
+            out.push(self.arm_raise_deg(&alone));
         }
         self.use_exercise = use_exercise;
         Ok(out)
     }
 
+    /// The note's first sentences, naming the quantities as the figures' controls do: "weight
+    /// of B" for the crossfade (Figure 1), "base clip" and "layer weight" for the additive
+    /// layer on a base playing alone (Figure 2).
     fn describe(&self) -> String {
         let names = human::CLIP_NAMES;
         let w = format_number(self.weight);
+        let (a, b) = (names[self.a], names[self.b]);
         let mix = match self.mask {
-            0 if self.weight == 0.0 => format!("{} plays alone (weight of B 0).", names[self.a]),
-            0 if self.weight == 1.0 => format!("{} plays alone (weight of B 1).", names[self.b]),
-            0 => format!("{} crossfaded with {} at weight {w}.", names[self.a], names[self.b]),
+            0 if self.weight == 0.0 && self.additive != 0 => {
+                format!("Base clip: {a}, played alone (no crossfade).")
+            }
+            0 if self.weight == 0.0 => format!("{a} plays alone (weight of B 0)."),
+            0 if self.weight == 1.0 => format!("{b} plays alone (weight of B 1)."),
+            0 => format!("{a} crossfaded with {b}, weight of B {w}."),
             1 => format!(
-                "Upper body (spine and up): {} mixed into {} at weight {w}; legs and pelvis: {} only.",
-                names[self.b], names[self.a], names[self.a]
+                "Upper body (spine and up): {b} mixed into {a}, weight of B {w}; legs and pelvis: {a} only."
             ),
             _ => format!(
-                "Legs and pelvis: {} mixed into {} at weight {w}; upper body: {} only.",
-                names[self.b], names[self.a], names[self.a]
+                "Legs and pelvis: {b} mixed into {a}, weight of B {w}; upper body: {a} only."
             ),
         };
         let additive = match self.additive {
             0 => String::new(),
             k => format!(
-                " Additive layer: {} at weight {}, added on top.",
+                " Additive layer: {}, layer weight {}, added on top (orange: the base without it).",
                 ADDITIVES[k],
                 format_number(self.additive_weight)
             ),
@@ -501,17 +528,18 @@ impl BlendFigure {
             |_| 1.0,
         );
         if self.additive != 0 && self.additive_weight > 0.0 {
-            // The pose before the additive layer, as a ghost: where it differs from the body,
-            // the difference is the layer's part.
+            // The pose before the additive layer, as a ghost drawn over the body (most of it
+            // lies inside the body): where it differs from the body, the difference is the
+            // layer's part.
             for (j, &parent) in self.skeleton.parents().iter().enumerate() {
                 let p = Vec3::from(self.base_model[j].translation);
                 if parent >= 0 {
                     let a = Vec3::from(self.base_model[parent as usize].translation);
-                    frame.wide_line(a, p, palette::ORANGE, GHOST_PX);
+                    frame.wide_line_on_top(a, p, palette::ORANGE, GHOST_PX);
                 }
             }
             let hand = Vec3::from(self.base_model[self.arm[1]].translation);
-            frame.marker(hand, crate::draw::DOT_PX, palette::ORANGE);
+            frame.marker_on_top(hand, crate::draw::DOT_PX, palette::ORANGE);
         }
         frame.contact_shadow(Vec3::ZERO, 0.3);
         // The body with a hand raised over the head, or leaning forwards: kept in view.
