@@ -470,8 +470,12 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
     let (lo, hi) = off[60..]
         .iter()
         .fold((f32::INFINITY, 0.0f32), |(a, b), &x| (a.min(x), b.max(x)));
-    // (70 to 142 cm at the default speed: never near the synchronised few centimetres.)
+    // The caption: "between about 70 cm and 1.4 m" at the default speed, never near the
+    // synchronised 7 cm ("about 7 cm").
     assert!(hi > 1.8 * lo && lo > 30.0, "{lo} to {hi} cm");
+    assert!((65.0..75.0).contains(&lo) && (135.0..145.0).contains(&hi), "{lo} to {hi} cm");
+    let on: Vec<f32> = rows[60..].iter().map(|r| r[3]).collect();
+    assert!(on.iter().all(|&x| (6.0..8.0).contains(&x)), "{on:?}");
     let gaps: Vec<f32> = rows.iter().map(|r| r[2]).collect();
     assert!(gaps.iter().any(|&g| g < 0.02) && gaps.iter().any(|&g| g > 0.48));
     // The Try this: the slide peaks half a second to a second after the gap reaches half a
@@ -907,4 +911,67 @@ fn the_ghost_is_the_pose_before_the_additive_layer() {
             .any(|(a, b)| { Vec3::from(a.translation).distance(Vec3::from(b.translation)) > 0.2 }),
         "{base}"
     );
+}
+
+/// The longest trail among the footprints of the last draw: the farthest apart two footprints
+/// of one stance (linked from one to the next) lie, metres.
+fn longest_trail(l: &LocomotionFigure) -> f32 {
+    let prints = l.footprints();
+    let mut stance: Vec<usize> = (0..prints.len()).collect();
+    for &[a, b] in l.footprint_links() {
+        assert!(a < b && l.footprint_feet()[a] == l.footprint_feet()[b], "one foot, in order");
+        stance[b] = stance[a];
+    }
+    let mut longest = 0.0f32;
+    for i in 0..prints.len() {
+        for j in 0..i {
+            if stance[i] == stance[j] {
+                longest = longest.max(prints[i].distance(prints[j]));
+            }
+        }
+    }
+    longest
+}
+
+#[test]
+fn a_planted_foot_leaves_a_dot_and_a_sliding_foot_a_trail() {
+    // The text: each step leaves one dot synchronised, and trails 20 to 40 cm long at the same
+    // clock time (the default speed). The trail is drawn between the footprints of one stance,
+    // over the legs (which stand on it).
+    let mut l = LocomotionFigure::new();
+    l.set_compare(false);
+    let (mut dot, mut shortest, mut longest) = (0.0f32, f32::INFINITY, 0.0f32);
+    for k in 6..=32 {
+        let t = 0.25 * k as f32;
+        l.set_synchronised(true);
+        l.draw(&mut Frame::default(), t).unwrap();
+        dot = dot.max(longest_trail(&l));
+        l.set_synchronised(false);
+        let mut frame = Frame::default();
+        l.draw(&mut frame, t).unwrap();
+        let trail = longest_trail(&l);
+        (shortest, longest) = (shortest.min(trail), longest.max(trail));
+        let links = l.footprint_links().len();
+        assert!(links > 0);
+        let on_top = frame
+            .strokes
+            .iter()
+            .filter(|s| s.depth_bias == inbetween::draw::ON_TOP)
+            .count();
+        assert_eq!(on_top, links, "one line over the legs per link");
+        let dots = frame
+            .markers
+            .iter()
+            .filter(|m| m.shape == inbetween::draw::MARKER_DOT)
+            .count();
+        // A dot at each end of a stance: where it has one sample, one dot.
+        let links = l.footprint_links();
+        let ends = (0..l.footprints().len())
+            .filter(|&i| !(links.iter().any(|k| k[0] == i) && links.iter().any(|k| k[1] == i)))
+            .count();
+        assert_eq!(dots, ends);
+        assert!(dots < l.footprints().len() / 4);
+    }
+    assert!(dot < 0.015, "a step synchronised: {dot} m");
+    assert!(shortest > 0.2 && longest < 0.45, "{shortest} to {longest} m");
 }

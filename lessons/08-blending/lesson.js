@@ -103,7 +103,7 @@ function speedSlider(gui, scene, p, after) {
 const locoViewer = await lesson.figure('#fig-locomotion');
 if (locoViewer) {
   // A raised three-quarter view: both lanes side by side, the footprints seen from above.
-  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.4, 0.5);
+  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.4, 0.8);
   const scene = new LocomotionScene();
   const p = { speed: 0, useExercise: false };
   // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.

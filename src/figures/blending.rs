@@ -603,6 +603,9 @@ pub struct LocomotionFigure {
     planted: Vec<bool>,
     /// Which foot (0 left, 1 right) left each footprint of the last draw.
     footprint_feet: Vec<usize>,
+    /// Footprints of the last draw left by one foot at consecutive samples of one stance, as
+    /// pairs of indices into `footprints`: the trail a sliding foot draws.
+    footprint_links: Vec<[usize; 2]>,
     /// How far the planted feet slid over the footprint window, metres, at the last draw.
     slide_m: f32,
     /// Where the character's origin was at the last draw (before wrapping onto the track).
@@ -627,8 +630,10 @@ impl Default for LocomotionFigure {
     }
 }
 
-/// How big a footprint is drawn, CSS pixels (the same at any distance).
+/// How big a footprint is drawn, and how wide the trail between one foot's footprints, CSS
+/// pixels (the same at any distance).
 const FOOTPRINT_PX: f32 = 7.0;
+const TRAIL_PX: f32 = 4.0;
 /// How high above the ground the footprints are drawn, metres (just clear of the grid).
 const FOOTPRINT_HEIGHT: f32 = 0.005;
 /// The character walks along z on a loop this long (metres), so it stays in view.
@@ -672,6 +677,7 @@ impl LocomotionFigure {
             planted: vec![false; walk.contacts().len()],
             foot_contacts,
             footprint_feet: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
+            footprint_links: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
             feet,
             walk,
             run,
@@ -859,6 +865,12 @@ impl LocomotionFigure {
     /// Which foot (0 left, 1 right) left each of [`LocomotionFigure::footprints`].
     pub fn footprint_feet(&self) -> &[usize] {
         &self.footprint_feet
+    }
+
+    /// The trails of the last draw: pairs of [`LocomotionFigure::footprints`] left by one foot
+    /// at consecutive samples of one stance (drawn as a line between them).
+    pub fn footprint_links(&self) -> &[[usize; 2]] {
+        &self.footprint_links
     }
 
     /// Whether each foot (left, right) is planted at `time_sec`, as the figure decides it for
@@ -1051,20 +1063,24 @@ impl LocomotionFigure {
     fn footprints_at(&mut self, t: f32) -> f32 {
         self.footprints.clear();
         self.footprint_feet.clear();
+        self.footprint_links.clear();
         let (now, _) = self.pose_at(t);
         let mut slide = 0.0f32;
-        let mut last: [Option<Vec3>; 2] = [None, None];
+        // Per foot: where it was at the last sample and that sample's footprint, while planted.
+        let mut last: [Option<(Vec3, usize)>; 2] = [None, None];
         for k in 0..=FOOTPRINT_SAMPLES {
             let s = t - FOOTPRINT_SEC * (1.0 - k as f32 / FOOTPRINT_SAMPLES as f32);
             for (f, (ground, drawn, planted)) in self.feet_at(s, now).into_iter().enumerate() {
                 if planted {
+                    let here = self.footprints.len();
                     self.footprints
                         .push(Vec3::new(drawn.x, FOOTPRINT_HEIGHT, drawn.z));
                     self.footprint_feet.push(f);
-                    if let Some(q) = last[f] {
+                    if let Some((q, before)) = last[f] {
                         slide += Vec3::new(ground.x - q.x, 0.0, ground.z - q.z).length();
+                        self.footprint_links.push([before, here]);
                     }
-                    last[f] = Some(ground);
+                    last[f] = Some((ground, here));
                 } else {
                     last[f] = None;
                 }
@@ -1074,8 +1090,8 @@ impl LocomotionFigure {
     }
 
     /// Poses at `t` at the current setting and draws the character, its contact shadow, its
-    /// footprints (markers of a fixed size on screen) and its label in lane `x`. Returns the
-    /// slide, metres.
+    /// footprints (each stance's trail, with a marker of a fixed size on screen at its two ends,
+    /// drawn over the legs) and its label in lane `x`. Returns the slide, metres.
     fn draw_lane(&mut self, frame: &mut Frame, t: f32, x: f32, color: Vec3, name: &str) -> f32 {
         let slide = self.footprints_at(t);
         let (origin, _) = self.pose_at(t);
@@ -1089,8 +1105,19 @@ impl LocomotionFigure {
         // The character walks along z on a loop of TRACK_LENGTH, so it stays in view.
         let z = (origin.z + 0.5 * TRACK_LENGTH).rem_euclid(TRACK_LENGTH) - 0.5 * TRACK_LENGTH;
         let place = Vec3::new(origin.x + x, 0.0, z);
-        for p in &self.footprints {
-            frame.marker(*p + place, FOOTPRINT_PX, color);
+        // Over everything: a foot slides along the way it walks, under its own leg, which
+        // would hide the trail from most views.
+        for &[a, b] in &self.footprint_links {
+            let (a, b) = (self.footprints[a] + place, self.footprints[b] + place);
+            frame.wide_line_on_top(a, b, color, TRAIL_PX);
+        }
+        // A dot where each stance begins and ends: one dot for a foot that held still, the two
+        // ends of its trail for one that slid.
+        for (i, p) in self.footprints.iter().enumerate() {
+            let linked = |end: usize| self.footprint_links.iter().any(|l| l[end] == i);
+            if !(linked(0) && linked(1)) {
+                frame.marker_on_top(*p + place, FOOTPRINT_PX, color);
+            }
         }
         let pelvis = place + Vec3::from(self.model[0].translation);
         frame.contact_shadow(Vec3::new(pelvis.x, 0.0, pelvis.z), 0.25);
