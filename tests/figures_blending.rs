@@ -21,7 +21,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
     assert!(f
         .set_additive("none", -1.0)
         .unwrap_err()
-        .contains("additive weight"));
+        .contains("layer weight"));
     assert!(f.pose(f32::INFINITY).unwrap_err().contains("time"));
     let mut l = LocomotionFigure::new();
     let e = l.set_speed(100.0).unwrap_err();

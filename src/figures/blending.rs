@@ -174,7 +174,7 @@ impl BlendFigure {
                 ADDITIVES.join(", ")
             )
         })?;
-        let weight = in_range("additive weight", weight, 0.0, 1.0)?;
+        let weight = in_range("layer weight", weight, 0.0, 1.0)?;
         (self.additive, self.additive_weight) = (additive, weight);
         Ok(())
     }
