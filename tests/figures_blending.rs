@@ -473,7 +473,10 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
     // The caption: "between about 70 cm and 1.4 m" at the default speed, never near the
     // synchronised 7 cm ("about 7 cm").
     assert!(hi > 1.8 * lo && lo > 30.0, "{lo} to {hi} cm");
-    assert!((65.0..75.0).contains(&lo) && (135.0..145.0).contains(&hi), "{lo} to {hi} cm");
+    assert!(
+        (65.0..75.0).contains(&lo) && (135.0..145.0).contains(&hi),
+        "{lo} to {hi} cm"
+    );
     let on: Vec<f32> = rows[60..].iter().map(|r| r[3]).collect();
     assert!(on.iter().all(|&x| (6.0..8.0).contains(&x)), "{on:?}");
     let gaps: Vec<f32> = rows.iter().map(|r| r[2]).collect();
@@ -919,7 +922,10 @@ fn longest_trail(l: &LocomotionFigure) -> f32 {
     let prints = l.footprints();
     let mut stance: Vec<usize> = (0..prints.len()).collect();
     for &[a, b] in l.footprint_links() {
-        assert!(a < b && l.footprint_feet()[a] == l.footprint_feet()[b], "one foot, in order");
+        assert!(
+            a < b && l.footprint_feet()[a] == l.footprint_feet()[b],
+            "one foot, in order"
+        );
         stance[b] = stance[a];
     }
     let mut longest = 0.0f32;
@@ -973,5 +979,8 @@ fn a_planted_foot_leaves_a_dot_and_a_sliding_foot_a_trail() {
         assert!(dots < l.footprints().len() / 4);
     }
     assert!(dot < 0.015, "a step synchronised: {dot} m");
-    assert!(shortest > 0.2 && longest < 0.45, "{shortest} to {longest} m");
+    assert!(
+        shortest > 0.2 && longest < 0.45,
+        "{shortest} to {longest} m"
+    );
 }

@@ -100,9 +100,15 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
     figure.set_show_bind_pose(true);
     f.clear();
     let note = figure.draw(&mut f, 0.0, &[MeshId(9)]).unwrap();
-    assert!(f.meshes.iter().any(|m| m.mesh == MeshId(9)), "the mesh stays");
+    assert!(
+        f.meshes.iter().any(|m| m.mesh == MeshId(9)),
+        "the mesh stays"
+    );
     assert_eq!(f.points.len(), 3);
-    assert!(note.contains("Grey dots: the mesh's vertices in the bind pose"), "{note}");
+    assert!(
+        note.contains("Grey dots: the mesh's vertices in the bind pose"),
+        "{note}"
+    );
     figure.set_show_bind_pose(false);
     assert!(figure.set_skinning("gpu").is_err());
 }

@@ -522,7 +522,11 @@ fn the_side_by_side_view_holds_both_bodies_or_both_left_legs_all_clip_long() {
                 h.skin(t).unwrap();
                 for (mesh, place) in [&h.mesh, &h.mesh_dqs].into_iter().zip(places) {
                     let all: Vec<usize> = (0..mesh.positions.len()).collect();
-                    let vertices = if view == "left legs" { &leg_vertices } else { &all };
+                    let vertices = if view == "left legs" {
+                        &leg_vertices
+                    } else {
+                        &all
+                    };
                     for &v in vertices {
                         let p = mesh.positions[v] + place;
                         assert!(
@@ -657,7 +661,10 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
     f.update().unwrap();
     let twisted = f.draw(&mut Frame::default(), IDS).unwrap();
     assert!(!twisted.contains("e-"), "{twisted}");
-    assert!(twisted.contains("0.000 m from the elbow joint"), "{twisted}");
+    assert!(
+        twisted.contains("0.000 m from the elbow joint"),
+        "{twisted}"
+    );
     // Towards either end the heavier joint takes over: the dots close in on its K p.
     for rings in [[16, 12, 8], [24, 28, 32]] {
         let gaps: Vec<f32> = rings
@@ -822,7 +829,10 @@ fn at_a_150_degree_bend_lbs_keeps_a_quarter_of_the_ring_and_82_percent_of_the_tu
     let mut f = CylinderFigure::new();
     f.set_bend_deg(150.0).unwrap();
     let note = f.draw(&mut Frame::default(), IDS).unwrap();
-    assert!(note.contains("LBS keeps 26% of its rest area, DQS 100%"), "{note}");
+    assert!(
+        note.contains("LBS keeps 26% of its rest area, DQS 100%"),
+        "{note}"
+    );
     let (lbs, _) = f.elbow_areas();
     assert!((lbs - 75f32.to_radians().cos()).abs() < 1e-3, "{lbs}");
     let v = f.volume_curves(37).unwrap();
@@ -838,7 +848,11 @@ fn at_a_150_degree_bend_lbs_keeps_a_quarter_of_the_ring_and_82_percent_of_the_tu
         let c = ring.iter().sum::<Vec3>() / ring.len() as f32;
         let n = (ring[0] - c).cross(ring[rig.around / 4] - c).normalize();
         // The normal points along the forearm (the wrist end is on its + side).
-        let n = if (f.dqs.positions[rig.ring_start(rig.rings - 1)] - c).dot(n) > 0.0 { n } else { -n };
+        let n = if (f.dqs.positions[rig.ring_start(rig.rings - 1)] - c).dot(n) > 0.0 {
+            n
+        } else {
+            -n
+        };
         (0..rig.elbow_ring() - 1)
             .flat_map(|r| rig.ring_start(r)..rig.ring_start(r) + rig.around)
             .filter(|&v| (f.dqs.positions[v] - c).dot(n) > 0.0)

@@ -269,8 +269,9 @@ impl BlendFigure {
     /// is the rest one, so no travel is added.
     fn add_layer(&self, base: &Pose, phase: f32, out: &mut Pose) -> Result<(), String> {
         match self.additive {
-            1 => add_additive(base, &self.lean, self.additive_weight, out)
-                .map_err(|e| e.to_string()),
+            1 => {
+                add_additive(base, &self.lean, self.additive_weight, out).map_err(|e| e.to_string())
+            }
             2 => {
                 let wave = &self.clips[3];
                 let tw = (phase * wave.duration_sec()).min(wave.duration_sec() * 0.999_999);

@@ -970,7 +970,10 @@ impl HumanFigure {
                 }
             }
         }
-        let b = (lo - Vec3::splat(VIEW_MARGIN_M), hi + Vec3::splat(VIEW_MARGIN_M));
+        let b = (
+            lo - Vec3::splat(VIEW_MARGIN_M),
+            hi + Vec3::splat(VIEW_MARGIN_M),
+        );
         self.view_box = Some(b);
         Ok(b)
     }
@@ -1267,7 +1270,11 @@ impl HumanFigure {
         } else {
             vec![Mat4::IDENTITY]
         };
-        let view_box = if self.compare { self.view_box().ok() } else { None };
+        let view_box = if self.compare {
+            self.view_box().ok()
+        } else {
+            None
+        };
         let names = self.character.skeleton.names();
         for place in &places {
             let at = |m: &Affine3A| place.transform_point3(Vec3::from(m.translation));
