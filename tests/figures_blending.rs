@@ -21,7 +21,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
     assert!(f
         .set_additive("none", -1.0)
         .unwrap_err()
-        .contains("additive weight"));
+        .contains("layer weight"));
     assert!(f.pose(f32::INFINITY).unwrap_err().contains("time"));
     let mut l = LocomotionFigure::new();
     let e = l.set_speed(100.0).unwrap_err();
@@ -99,6 +99,12 @@ fn the_additive_layer_adds_on_top() {
     f.set_additive("lean forward (a pose)", 1.0).unwrap();
     let note = f.pose(0.3).unwrap();
     assert!(note.contains("Additive layer: lean forward"), "{note}");
+    // Figure 2's note names its own controls (base clip, layer weight): it has no clip B.
+    assert!(
+        note.starts_with("Base clip: walk, played alone") && note.contains("layer weight 1"),
+        "{note}"
+    );
+    assert!(!note.contains("weight of B"), "{note}");
     let (skeleton, _) = human::simple_human();
     let spine = skeleton.find("spine").unwrap();
     let thigh = skeleton.find("thigh.L").unwrap();
@@ -464,8 +470,15 @@ fn the_plot_shows_the_notes_slide_and_how_far_out_of_step_the_clips_are() {
     let (lo, hi) = off[60..]
         .iter()
         .fold((f32::INFINITY, 0.0f32), |(a, b), &x| (a.min(x), b.max(x)));
-    // (70 to 142 cm at the default speed: never near the synchronised few centimetres.)
+    // The caption: "between about 70 cm and 1.4 m" at the default speed, never near the
+    // synchronised 7 cm ("about 7 cm").
     assert!(hi > 1.8 * lo && lo > 30.0, "{lo} to {hi} cm");
+    assert!(
+        (65.0..75.0).contains(&lo) && (135.0..145.0).contains(&hi),
+        "{lo} to {hi} cm"
+    );
+    let on: Vec<f32> = rows[60..].iter().map(|r| r[3]).collect();
+    assert!(on.iter().all(|&x| (6.0..8.0).contains(&x)), "{on:?}");
     let gaps: Vec<f32> = rows.iter().map(|r| r[2]).collect();
     assert!(gaps.iter().any(|&g| g < 0.02) && gaps.iter().any(|&g| g > 0.48));
     // The Try this: the slide peaks half a second to a second after the gap reaches half a
@@ -768,11 +781,11 @@ fn the_crossfade_probes_catch_a_missing_short_arc_flip() {
     assert!(!note.contains("w = 0.25,"), "{note}");
 }
 
-/// Rows of the arm plot as `[t, a, b, mix, with additive]`.
-fn arm_rows(f: &mut BlendFigure) -> Vec<[f32; 5]> {
+/// Rows of the arm plot as `[t, a, b, mix, with additive, additive alone]`.
+fn arm_rows(f: &mut BlendFigure) -> Vec<[f32; 6]> {
     f.arm_samples(61)
         .unwrap()
-        .chunks(5)
+        .chunks(6)
         .map(|r| r.try_into().unwrap())
         .collect()
 }
@@ -781,8 +794,8 @@ fn arm_rows(f: &mut BlendFigure) -> Vec<[f32; 5]> {
 fn the_arm_plot_follows_the_weights_the_mask_and_the_additive_layer() {
     let mut f = BlendFigure::new();
     f.set_clips("walk", "wave").unwrap();
-    let max = |rows: &[[f32; 5]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MIN, f32::max);
-    let min = |rows: &[[f32; 5]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MAX, f32::min);
+    let max = |rows: &[[f32; 6]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MIN, f32::max);
+    let min = |rows: &[[f32; 6]], i: usize| rows.iter().map(|r| r[i]).fold(f32::MAX, f32::min);
     // One cycle of clip A, the last row at its end, which repeats the first.
     f.set_weight(0.0).unwrap();
     let rows = arm_rows(&mut f);
@@ -821,12 +834,37 @@ fn the_arm_plot_follows_the_weights_the_mask_and_the_additive_layer() {
     let rows = arm_rows(&mut f);
     assert!(min(&rows, 4) > 135.0, "{rows:?}");
     let swing = |i: usize| max(&rows, i) - min(&rows, i);
+    // The plot's "layer alone" is the wave played on the rest pose: clip B, the wave itself.
+    for r in &rows {
+        assert!((r[5] - r[2]).abs() < 0.01, "the wave alone: {r:?}");
+    }
     assert!(
-        swing(4) > swing(2) + 2.0,
+        swing(4) > swing(5) + 2.0,
         "{} against {}",
         swing(4),
-        swing(2)
+        swing(5)
     );
+    // With the lean chosen, the plot's third line is the lean alone, not the wave: the rest
+    // pose's hanging arm tilted with the chest, the same all cycle long.
+    f.set_additive("lean forward (a pose)", 1.0).unwrap();
+    let rows = arm_rows(&mut f);
+    assert!(swing_of(&rows, 5) < 0.01, "{rows:?}");
+    assert!(rows[0][5] > 10.0 && rows[0][5] < 90.0, "{rows:?}");
+    for r in &rows {
+        assert!((r[5] - r[2]).abs() > 30.0, "not the wave: {r:?}");
+    }
+    // At layer weight 0 the layer is nothing: alone it is the rest pose, on the base the base.
+    f.set_additive("lean forward (a pose)", 0.0).unwrap();
+    for r in &arm_rows(&mut f) {
+        assert!(r[5] < 1.0 && (r[4] - r[3]).abs() < 0.01, "{r:?}");
+    }
+}
+
+fn swing_of(rows: &[[f32; 6]], i: usize) -> f32 {
+    let (lo, hi) = rows
+        .iter()
+        .fold((f32::MAX, f32::MIN), |(a, b), r| (a.min(r[i]), b.max(r[i])));
+    hi - lo
 }
 
 #[test]
@@ -864,6 +902,10 @@ fn the_ghost_is_the_pose_before_the_additive_layer() {
         plain + 20,
         "one ghost bone per joint with a parent"
     );
+    // The ghost lies mostly inside the body: it is drawn over it, or only the arm would show.
+    assert!(frame.strokes[plain..]
+        .iter()
+        .all(|s| s.depth_bias == inbetween::draw::ON_TOP));
     let base = Vec3::from(f.base_model()[5].translation);
     assert!(
         f.base_model()
@@ -871,5 +913,74 @@ fn the_ghost_is_the_pose_before_the_additive_layer() {
             .zip(f.model())
             .any(|(a, b)| { Vec3::from(a.translation).distance(Vec3::from(b.translation)) > 0.2 }),
         "{base}"
+    );
+}
+
+/// The longest trail among the footprints of the last draw: the farthest apart two footprints
+/// of one stance (linked from one to the next) lie, metres.
+fn longest_trail(l: &LocomotionFigure) -> f32 {
+    let prints = l.footprints();
+    let mut stance: Vec<usize> = (0..prints.len()).collect();
+    for &[a, b] in l.footprint_links() {
+        assert!(
+            a < b && l.footprint_feet()[a] == l.footprint_feet()[b],
+            "one foot, in order"
+        );
+        stance[b] = stance[a];
+    }
+    let mut longest = 0.0f32;
+    for i in 0..prints.len() {
+        for j in 0..i {
+            if stance[i] == stance[j] {
+                longest = longest.max(prints[i].distance(prints[j]));
+            }
+        }
+    }
+    longest
+}
+
+#[test]
+fn a_planted_foot_leaves_a_dot_and_a_sliding_foot_a_trail() {
+    // The text: each step leaves one dot synchronised, and trails 20 to 40 cm long at the same
+    // clock time (the default speed). The trail is drawn between the footprints of one stance,
+    // over the legs (which stand on it).
+    let mut l = LocomotionFigure::new();
+    l.set_compare(false);
+    let (mut dot, mut shortest, mut longest) = (0.0f32, f32::INFINITY, 0.0f32);
+    for k in 6..=32 {
+        let t = 0.25 * k as f32;
+        l.set_synchronised(true);
+        l.draw(&mut Frame::default(), t).unwrap();
+        dot = dot.max(longest_trail(&l));
+        l.set_synchronised(false);
+        let mut frame = Frame::default();
+        l.draw(&mut frame, t).unwrap();
+        let trail = longest_trail(&l);
+        (shortest, longest) = (shortest.min(trail), longest.max(trail));
+        let links = l.footprint_links().len();
+        assert!(links > 0);
+        let on_top = frame
+            .strokes
+            .iter()
+            .filter(|s| s.depth_bias == inbetween::draw::ON_TOP)
+            .count();
+        assert_eq!(on_top, links, "one line over the legs per link");
+        let dots = frame
+            .markers
+            .iter()
+            .filter(|m| m.shape == inbetween::draw::MARKER_DOT)
+            .count();
+        // A dot at each end of a stance: where it has one sample, one dot.
+        let links = l.footprint_links();
+        let ends = (0..l.footprints().len())
+            .filter(|&i| !(links.iter().any(|k| k[0] == i) && links.iter().any(|k| k[1] == i)))
+            .count();
+        assert_eq!(dots, ends);
+        assert!(dots < l.footprints().len() / 4);
+    }
+    assert!(dot < 0.015, "a step synchronised: {dot} m");
+    assert!(
+        shortest > 0.2 && longest < 0.45,
+        "{shortest} to {longest} m"
     );
 }

@@ -1,7 +1,7 @@
 //! Native tests of lesson 06's glTF figure (src/figures/gltf.rs).
 
 use glam::Vec3;
-use inbetween::draw::{Frame, MeshId};
+use inbetween::draw::{palette, Frame, MeshId};
 use inbetween::figures::gltf::GltfFigure;
 use inbetween::fixtures::tiny_skinned_gltf;
 
@@ -39,20 +39,25 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
         rest[1]
     );
     // The clip turns the knee's joint by 90° about z at t = 1; halfway, 45°. The knee is the
-    // child, so its own position does not move; the mesh dots are drawn as markers of a fixed
-    // size on screen, and the view keeps the whole character (box and joints) in.
+    // child, so its own position does not move; the mesh dots are plain grey discs (outlined
+    // markers, close together, would read as black rings), and the view keeps the whole
+    // character (box and joints) in.
     f.clear();
     let note = figure.draw(&mut f, 0.5, &[]).unwrap();
     assert!(note.contains("Clip \"bend\" at 0.500 s"), "{note}");
-    assert_eq!(f.markers.len(), 3, "the three vertices as dots");
-    assert!(f.markers.iter().all(|m| m.size_px >= 4.0));
+    assert_eq!(f.points.len(), 3, "the three vertices as dots");
+    assert!(f.markers.is_empty());
+    assert!(f
+        .points
+        .iter()
+        .all(|p| p.radius > 0.0 && p.color[..3] == palette::GREY.to_array()));
     let (lo, hi) = f.keep_in_view.iter().fold(
         (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
         |(lo, hi), p| (lo.min(*p), hi.max(*p)),
     );
     for p in joints(&f)
         .into_iter()
-        .chain(f.markers.iter().map(|m| Vec3::from(m.center)))
+        .chain(f.points.iter().map(|p| Vec3::from(p.center)))
     {
         assert!(
             p.cmpge(lo).all() && p.cmple(hi).all(),
@@ -63,7 +68,7 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
     figure.set_show_mesh(false);
     f.clear();
     figure.draw(&mut f, 0.5, &[]).unwrap();
-    assert!(f.markers.is_empty());
+    assert!(f.points.is_empty());
     // A bad file: a clear message, and the character loaded before stays.
     let err = figure.load("broken.gltf", b"{ not json").unwrap_err();
     assert!(err.starts_with("broken.gltf: not a valid glTF"), "{err}");
@@ -81,7 +86,7 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
     let note = figure.draw(&mut f, 0.0, &[MeshId(9)]).unwrap();
     assert!(note.contains("Skinned by LBS"), "{note}");
     assert!(f.meshes.iter().any(|m| m.mesh == MeshId(9)));
-    assert!(f.markers.is_empty(), "no dots while skinned");
+    assert!(f.points.is_empty(), "no dots while skinned");
     let knee = joints(&f)[1];
     let (p, _) = figure.skinned(0).unwrap();
     assert!((p[0] - knee).length() < 1e-5, "{} vs {knee}", p[0]);
@@ -91,6 +96,20 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
     figure.draw(&mut f, 0.0, &[MeshId(9)]).unwrap();
     let (p, _) = figure.skinned(0).unwrap();
     assert!((p[0] - lbs[0]).length() < 1e-5);
+    // Lesson 09's bind-pose vertices: the dots over the skinned mesh, which stays.
+    figure.set_show_bind_pose(true);
+    f.clear();
+    let note = figure.draw(&mut f, 0.0, &[MeshId(9)]).unwrap();
+    assert!(
+        f.meshes.iter().any(|m| m.mesh == MeshId(9)),
+        "the mesh stays"
+    );
+    assert_eq!(f.points.len(), 3);
+    assert!(
+        note.contains("Grey dots: the mesh's vertices in the bind pose"),
+        "{note}"
+    );
+    figure.set_show_bind_pose(false);
     assert!(figure.set_skinning("gpu").is_err());
 }
 

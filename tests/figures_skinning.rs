@@ -463,13 +463,117 @@ fn side_by_side_the_lbs_leg_loses_volume_at_the_deep_knee_and_dqs_keeps_it() {
         frame.labels.iter().any(|l| l.text == "LBS")
             && frame.labels.iter().any(|l| l.text == "DQS")
     );
-    let span = |f: &Frame| f.keep_in_view[7] - f.keep_in_view[0];
+    let span = |f: &Frame| {
+        let (lo, hi) = bounds(&f.keep_in_view);
+        hi - lo
+    };
     let body = span(&frame);
-    h.set_view("left knees").unwrap();
+    h.set_view("left legs").unwrap();
     let mut frame = Frame::default();
     h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
-    assert!(span(&frame).y < 0.5 * body.y);
+    assert!(span(&frame).y < 0.75 * body.y, "{} {}", span(&frame), body);
     assert!(h.set_view("feet").unwrap_err().contains("view"));
+}
+
+fn bounds(points: &[Vec3]) -> (Vec3, Vec3) {
+    points.iter().fold(
+        (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    )
+}
+
+#[test]
+fn the_side_by_side_view_holds_both_bodies_or_both_left_legs_all_clip_long() {
+    // The camera fits what the figure declares: every vertex of both bodies (LBS placed at +z,
+    // DQS at -z), or of both left legs' thigh and shin parts, at any time of the clip, and the
+    // labels. A box round the knees alone would let the run's shin, folded back, leave the
+    // canvas.
+    let mut h = HumanFigure::new();
+    h.set_compare(true);
+    let ids = [MeshId(3), MeshId(4)];
+    let places = [Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.0, 0.0, -0.5)];
+    let leg_vertices: Vec<usize> = {
+        let c = h.character();
+        let per_part = c.mesh.indices.len() / c.skeleton.len();
+        ["thigh.L", "shin.L"]
+            .iter()
+            .flat_map(|name| {
+                let j = c.skeleton.find(name).unwrap();
+                c.mesh.indices[j * per_part..(j + 1) * per_part].to_vec()
+            })
+            .map(|i| i as usize)
+            .collect()
+    };
+    for clip in h.clip_names() {
+        h.set_clip(&clip).unwrap();
+        for view in ["whole body", "left legs"] {
+            h.set_view(view).unwrap();
+            let mut frame = Frame::default();
+            h.skin(0.0).unwrap();
+            h.draw_pair(&mut frame, ids);
+            let (lo, hi) = bounds(&frame.keep_in_view);
+            for label in &frame.labels {
+                assert!(label.anchor.cmpge(lo).all() && label.anchor.cmple(hi).all());
+            }
+            // Between the box's sample times too: 4 times as many.
+            let n = 129;
+            for k in 0..n {
+                let t = h.duration_sec() * k as f32 / (n - 1) as f32;
+                h.skin(t).unwrap();
+                for (mesh, place) in [&h.mesh, &h.mesh_dqs].into_iter().zip(places) {
+                    let all: Vec<usize> = (0..mesh.positions.len()).collect();
+                    let vertices = if view == "left legs" {
+                        &leg_vertices
+                    } else {
+                        &all
+                    };
+                    for &v in vertices {
+                        let p = mesh.positions[v] + place;
+                        assert!(
+                            p.cmpge(lo).all() && p.cmple(hi).all(),
+                            "{clip}, {view}, {t} s: {p} outside {lo}..{hi}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_cylinder_figure_keeps_both_tubes_in_view_at_every_bend_and_twist() {
+    use inbetween::figures::skinning::{DQS_OFFSET, LBS_OFFSET};
+    let mut f = CylinderFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS).unwrap();
+    let (lo, hi) = bounds(&frame.keep_in_view);
+    // The same box at every setting: the camera stays put while the sliders move.
+    for bend in (0..=180).step_by(10) {
+        for twist in (-180..=180).step_by(45) {
+            f.set_bend_deg(bend as f32).unwrap();
+            f.set_twist_deg(twist as f32).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame, IDS).unwrap();
+            assert_eq!(bounds(&frame.keep_in_view), (lo, hi));
+            for (mesh, offset) in [(&f.lbs, LBS_OFFSET), (&f.dqs, DQS_OFFSET)] {
+                for p in &mesh.positions {
+                    let p = *p + offset;
+                    assert!(
+                        p.cmpge(lo).all() && p.cmple(hi).all(),
+                        "bend {bend} twist {twist}: {p} outside {lo}..{hi}"
+                    );
+                }
+            }
+            for label in &frame.labels {
+                assert!(
+                    label.anchor.cmpge(lo).all() && label.anchor.cmple(hi).all(),
+                    "{}: {}",
+                    label.text,
+                    label.anchor
+                );
+            }
+        }
+    }
 }
 
 #[test]
@@ -557,7 +661,10 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
     f.update().unwrap();
     let twisted = f.draw(&mut Frame::default(), IDS).unwrap();
     assert!(!twisted.contains("e-"), "{twisted}");
-    assert!(twisted.contains("0.000 m from the elbow joint"), "{twisted}");
+    assert!(
+        twisted.contains("0.000 m from the elbow joint"),
+        "{twisted}"
+    );
     // Towards either end the heavier joint takes over: the dots close in on its K p.
     for rings in [[16, 12, 8], [24, 28, 32]] {
         let gaps: Vec<f32> = rings
@@ -713,4 +820,46 @@ fn the_xrayed_skeleton_has_bones_and_joints_that_read_at_a_glance() {
     let dots: Vec<_> = frame.markers.iter().filter(|m| m.size_px < 0.0).collect();
     assert_eq!(dots.len(), joints);
     assert!(dots.iter().all(|m| m.size_px == -JOINT_PX));
+}
+
+#[test]
+fn at_a_150_degree_bend_lbs_keeps_a_quarter_of_the_ring_and_82_percent_of_the_tube() {
+    // Figure 1's Try this: bend 150°, no twist: the note gives the LBS ring 26% (cos 75°) and
+    // DQS 100%, and the volume plot has the LBS tube at 82% (at the default falloff).
+    let mut f = CylinderFigure::new();
+    f.set_bend_deg(150.0).unwrap();
+    let note = f.draw(&mut Frame::default(), IDS).unwrap();
+    assert!(
+        note.contains("LBS keeps 26% of its rest area, DQS 100%"),
+        "{note}"
+    );
+    let (lbs, _) = f.elbow_areas();
+    assert!((lbs - 75f32.to_radians().cos()).abs() < 1e-3, "{lbs}");
+    let v = f.volume_curves(37).unwrap();
+    let row = &v[3 * 30..3 * 31];
+    assert_eq!(row[0], 150.0);
+    assert!((0.815..0.825).contains(&row[1]) && row[2] > 0.99, "{row:?}");
+    // "The inside of its elbow passes through itself": some vertex of a ring on the upper arm
+    // crosses the elbow ring's plane into the forearm's side (at a gentle bend none does).
+    let crossed = |f: &CylinderFigure| {
+        let rig = f.rig();
+        let e = rig.ring_start(rig.elbow_ring());
+        let ring = &f.dqs.positions[e..e + rig.around];
+        let c = ring.iter().sum::<Vec3>() / ring.len() as f32;
+        let n = (ring[0] - c).cross(ring[rig.around / 4] - c).normalize();
+        // The normal points along the forearm (the wrist end is on its + side).
+        let n = if (f.dqs.positions[rig.ring_start(rig.rings - 1)] - c).dot(n) > 0.0 {
+            n
+        } else {
+            -n
+        };
+        (0..rig.elbow_ring() - 1)
+            .flat_map(|r| rig.ring_start(r)..rig.ring_start(r) + rig.around)
+            .filter(|&v| (f.dqs.positions[v] - c).dot(n) > 0.0)
+            .count()
+    };
+    assert!(crossed(&f) > 0);
+    f.set_bend_deg(60.0).unwrap();
+    f.draw(&mut Frame::default(), IDS).unwrap();
+    assert_eq!(crossed(&f), 0);
 }

@@ -205,7 +205,7 @@ fn a_rejected_additive_weight_keeps_the_additive_layer() {
     let model = f.model().to_vec();
     for bad in [f32::NAN, -0.1, 1.5, 1e38] {
         let e = f.set_additive("wave (a clip)", bad).unwrap_err();
-        assert!(e.contains("additive weight"), "{e}");
+        assert!(e.contains("layer weight"), "{e}");
         assert_eq!(
             f.pose(0.3).unwrap(),
             note,
@@ -221,7 +221,7 @@ fn a_rejected_additive_weight_keeps_the_additive_layer() {
     assert!(f
         .pose(0.3)
         .unwrap()
-        .contains("wave (a clip) at weight 0.25"));
+        .contains("wave (a clip), layer weight 0.25"));
 }
 
 #[test]

@@ -21,7 +21,7 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
   } catch { /* no samples on this server */ }
   const p = {
     character: samples.includes('RiggedFigure.gltf') ? 'RiggedFigure.gltf' : samples[0] ?? '(none)',
-    clip: '', mesh: true, skinning: skinning ?? 'dots', on: 'CPU',
+    clip: '', mesh: true, skinning: skinning ?? 'dots', bindPose: false, on: 'CPU',
   };
   const gui = new GUI({ container: box.querySelector('.panel'), title: 'glTF character' });
   // The note after a load (the file's summary, or why it was rejected and what is still shown)
@@ -61,8 +61,10 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
   };
   if (samples.length) gui.add(p, 'character', samples).name('sample').onChange(() => loadSample(p.character));
   if (skinning) {
-    gui.add(p, 'skinning', { 'linear blend (LBS)': 'lbs', 'dual quaternion (DQS)': 'dqs', 'bind-pose vertices': 'dots' })
+    gui.add(p, 'skinning', { 'linear blend (LBS)': 'lbs', 'dual quaternion (DQS)': 'dqs' })
       .name('mesh').onChange(() => scene.setSkinning(p.skinning));
+    // The bind-pose vertices over the skinned mesh: what skinning moved leaves them.
+    gui.add(p, 'bindPose').name('bind-pose vertices').onChange(() => scene.setShowBindPose(p.bindPose));
   } else {
     gui.add(p, 'mesh').name('mesh vertices').onChange(() => scene.setShowMesh(p.mesh));
   }

@@ -27,7 +27,7 @@ async function blendFigure(id, { title, setup, controls, series, names, colors, 
     series: names, colors, widths, yRange: [0, 180], height: 200,
   });
   const replot = () => {
-    const cols = columns(scene.armSamples(ARM_SAMPLES), 5);
+    const cols = columns(scene.armSamples(ARM_SAMPLES), 6);
     plot.setData([cols[0], ...series.map((i) => cols[i])]);
   };
   const retime = () => {
@@ -71,15 +71,15 @@ await blendFigure('fig-blend', {
 
 await blendFigure('fig-additive', {
   title: 'Additive layer',
-  // The base plays alone (weight of B 0): the layer is all that is added.
+  // The base plays alone (clip B's weight 0): the layer is all that is added.
   setup: (scene) => {
     scene.setClips('walk', 'wave');
     scene.setWeight(0);
     scene.setAdditive('wave (a clip)', 1);
   },
-  // The base, the wave alone and the base with the layer.
-  series: [1, 2, 4],
-  names: ['base clip', 'wave alone', 'base + layer'],
+  // The base, the chosen layer alone (on the rest pose) and the base with the layer.
+  series: [1, 5, 4],
+  names: ['base clip', 'layer alone', 'base + layer'],
   colors: [GREY, TEAL, ORANGE],
   widths: [6, 6, 2],
   controls: (gui, scene, { replot, retime }) => {
@@ -103,7 +103,7 @@ function speedSlider(gui, scene, p, after) {
 const locoViewer = await lesson.figure('#fig-locomotion');
 if (locoViewer) {
   // A raised three-quarter view: both lanes side by side, the footprints seen from above.
-  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.4, 0.5);
+  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.4, 0.8);
   const scene = new LocomotionScene();
   const p = { speed: 0, useExercise: false };
   // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.

@@ -132,7 +132,7 @@ if (humanViewer) {
     timeline.show();
     replot();
   });
-  gui.add(p, 'view', ['whole body', 'left knees']).name('view').onChange((v) => { scene.setView(v); humanViewer.frameAll(); });
+  gui.add(p, 'view', ['whole body', 'left legs']).name('view').onChange((v) => { scene.setView(v); humanViewer.frameAll(); });
   const showLegend = heatLegend('#fig-human');
   gui.add(p, 'heat', ['none', ...scene.jointNames()]).name('weights of').onChange((j) => { scene.setHeatJoint(j); showLegend(j); });
   showLegend(p.heat);

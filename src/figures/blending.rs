@@ -174,7 +174,7 @@ impl BlendFigure {
                 ADDITIVES.join(", ")
             )
         })?;
-        let weight = in_range("additive weight", weight, 0.0, 1.0)?;
+        let weight = in_range("layer weight", weight, 0.0, 1.0)?;
         (self.additive, self.additive_weight) = (additive, weight);
         Ok(())
     }
@@ -247,31 +247,13 @@ impl BlendFigure {
             self.skeleton.scale_mode(),
             &mut self.base_model,
         );
-        match self.additive {
-            1 => {
-                add_additive(
-                    &self.pose,
-                    &self.lean,
-                    self.additive_weight,
-                    &mut self.scratch,
-                )
-                .map_err(|e| e.to_string())?;
-                std::mem::swap(&mut self.pose, &mut self.scratch);
-            }
-            2 => {
-                // The wave clip minus the rest pose, at the same phase.
-                let wave = &self.clips[3];
-                let tw = (phase * wave.duration_sec()).min(wave.duration_sec() * 0.999_999);
-                wave.sample(tw, &mut ClipCursor::new(), &mut self.scratch);
-                let rest = self.skeleton.rest_pose();
-                let mut delta = self.skeleton.rest_pose();
-                make_additive(&self.scratch, &rest, &mut delta).map_err(|e| e.to_string())?;
-                // The wave's pelvis translation is the rest one: no travel is added.
-                add_additive(&self.pose, &delta, self.additive_weight, &mut self.scratch)
-                    .map_err(|e| e.to_string())?;
-                std::mem::swap(&mut self.pose, &mut self.scratch);
-            }
-            _ => {}
+        if self.additive != 0 {
+            let mut layered = Pose {
+                local: std::mem::take(&mut self.scratch.local),
+            };
+            let added = self.add_layer(&self.pose, phase, &mut layered);
+            self.scratch = std::mem::replace(&mut self.pose, layered);
+            added?;
         }
         local_to_model(
             self.skeleton.parents(),
@@ -280,6 +262,31 @@ impl BlendFigure {
             &mut self.model,
         );
         Ok(notes.join(" "))
+    }
+
+    /// The additive layer at its weight on top of `base` (the wave at `phase` of its cycle),
+    /// into `out`. Both layers are made relative to the rest pose; the wave's pelvis translation
+    /// is the rest one, so no travel is added.
+    fn add_layer(&self, base: &Pose, phase: f32, out: &mut Pose) -> Result<(), String> {
+        match self.additive {
+            1 => {
+                add_additive(base, &self.lean, self.additive_weight, out).map_err(|e| e.to_string())
+            }
+            2 => {
+                let wave = &self.clips[3];
+                let tw = (phase * wave.duration_sec()).min(wave.duration_sec() * 0.999_999);
+                let rest = self.skeleton.rest_pose();
+                let mut sampled = rest.clone();
+                wave.sample(tw, &mut ClipCursor::new(), &mut sampled);
+                let mut delta = rest.clone();
+                make_additive(&sampled, &rest, &mut delta).map_err(|e| e.to_string())?;
+                add_additive(base, &delta, self.additive_weight, out).map_err(|e| e.to_string())
+            }
+            _ => {
+                out.local.clone_from(&base.local);
+                Ok(())
+            }
+        }
     }
 
     /// How far the right upper arm is raised in `model`: its angle from hanging straight down,
@@ -307,15 +314,18 @@ impl BlendFigure {
     /// The plot over one cycle of clip A (`samples` rows, the last at its end): rows of
     /// ```text
     /// [time (s), right arm raised (°): clip A alone, clip B alone (same phase),
-    ///            the mix (this mask and weight), the mix with the additive layer]
+    ///            the mix (this mask and weight), the mix with the additive layer,
+    ///            the additive layer alone (on the rest pose, at its weight)]
     /// ```
     /// computed with the reference blend (the student's is checked in the note).
     pub fn arm_samples(&mut self, samples: usize) -> Result<Vec<f32>, String> {
         super::check_samples(samples)?;
         let use_exercise = std::mem::replace(&mut self.use_exercise, false);
         let d = self.duration_sec();
-        let mut out = Vec::with_capacity(5 * samples);
+        let mut out = Vec::with_capacity(6 * samples);
         let mut alone = vec![Affine3A::IDENTITY; self.skeleton.len()];
+        let rest = self.skeleton.rest_pose();
+        let mut layer_alone = rest.clone();
         for k in 0..samples {
             let t = d * k as f32 / (samples - 1) as f32;
             // The last row is the cycle's end, which loops back to its start.
@@ -336,31 +346,49 @@ impl BlendFigure {
             }
             out.push(self.arm_raise_deg(&self.base_model));
             out.push(self.arm_raise_deg(&self.model));
+            let phase = (t_pose / d).rem_euclid(1.0);
+            let layered = self.add_layer(&rest, phase, &mut layer_alone);
+            if let Err(e) = layered {
+                self.use_exercise = use_exercise;
+                return Err(e);
+            }
+            local_to_model(
+                self.skeleton.parents(),
+                &layer_alone.local,
+                self.skeleton.scale_mode(),
+                &mut alone,
+            );
+            out.push(self.arm_raise_deg(&alone));
         }
         self.use_exercise = use_exercise;
         Ok(out)
     }
 
+    /// The note's first sentences, naming the quantities as the figures' controls do: "weight
+    /// of B" for the crossfade (Figure 1), "base clip" and "layer weight" for the additive
+    /// layer on a base playing alone (Figure 2).
     fn describe(&self) -> String {
         let names = human::CLIP_NAMES;
         let w = format_number(self.weight);
+        let (a, b) = (names[self.a], names[self.b]);
         let mix = match self.mask {
-            0 if self.weight == 0.0 => format!("{} plays alone (weight of B 0).", names[self.a]),
-            0 if self.weight == 1.0 => format!("{} plays alone (weight of B 1).", names[self.b]),
-            0 => format!("{} crossfaded with {} at weight {w}.", names[self.a], names[self.b]),
+            0 if self.weight == 0.0 && self.additive != 0 => {
+                format!("Base clip: {a}, played alone (no crossfade).")
+            }
+            0 if self.weight == 0.0 => format!("{a} plays alone (weight of B 0)."),
+            0 if self.weight == 1.0 => format!("{b} plays alone (weight of B 1)."),
+            0 => format!("{a} crossfaded with {b}, weight of B {w}."),
             1 => format!(
-                "Upper body (spine and up): {} mixed into {} at weight {w}; legs and pelvis: {} only.",
-                names[self.b], names[self.a], names[self.a]
+                "Upper body (spine and up): {b} mixed into {a}, weight of B {w}; legs and pelvis: {a} only."
             ),
             _ => format!(
-                "Legs and pelvis: {} mixed into {} at weight {w}; upper body: {} only.",
-                names[self.b], names[self.a], names[self.a]
+                "Legs and pelvis: {b} mixed into {a}, weight of B {w}; upper body: {a} only."
             ),
         };
         let additive = match self.additive {
             0 => String::new(),
             k => format!(
-                " Additive layer: {} at weight {}, added on top.",
+                " Additive layer: {}, layer weight {}, added on top (orange: the base without it).",
                 ADDITIVES[k],
                 format_number(self.additive_weight)
             ),
@@ -501,17 +529,18 @@ impl BlendFigure {
             |_| 1.0,
         );
         if self.additive != 0 && self.additive_weight > 0.0 {
-            // The pose before the additive layer, as a ghost: where it differs from the body,
-            // the difference is the layer's part.
+            // The pose before the additive layer, as a ghost drawn over the body (most of it
+            // lies inside the body): where it differs from the body, the difference is the
+            // layer's part.
             for (j, &parent) in self.skeleton.parents().iter().enumerate() {
                 let p = Vec3::from(self.base_model[j].translation);
                 if parent >= 0 {
                     let a = Vec3::from(self.base_model[parent as usize].translation);
-                    frame.wide_line(a, p, palette::ORANGE, GHOST_PX);
+                    frame.wide_line_on_top(a, p, palette::ORANGE, GHOST_PX);
                 }
             }
             let hand = Vec3::from(self.base_model[self.arm[1]].translation);
-            frame.marker(hand, crate::draw::DOT_PX, palette::ORANGE);
+            frame.marker_on_top(hand, crate::draw::DOT_PX, palette::ORANGE);
         }
         frame.contact_shadow(Vec3::ZERO, 0.3);
         // The body with a hand raised over the head, or leaning forwards: kept in view.
@@ -575,6 +604,9 @@ pub struct LocomotionFigure {
     planted: Vec<bool>,
     /// Which foot (0 left, 1 right) left each footprint of the last draw.
     footprint_feet: Vec<usize>,
+    /// Footprints of the last draw left by one foot at consecutive samples of one stance, as
+    /// pairs of indices into `footprints`: the trail a sliding foot draws.
+    footprint_links: Vec<[usize; 2]>,
     /// How far the planted feet slid over the footprint window, metres, at the last draw.
     slide_m: f32,
     /// Where the character's origin was at the last draw (before wrapping onto the track).
@@ -599,8 +631,10 @@ impl Default for LocomotionFigure {
     }
 }
 
-/// How big a footprint is drawn, CSS pixels (the same at any distance).
+/// How big a footprint is drawn, and how wide the trail between one foot's footprints, CSS
+/// pixels (the same at any distance).
 const FOOTPRINT_PX: f32 = 7.0;
+const TRAIL_PX: f32 = 4.0;
 /// How high above the ground the footprints are drawn, metres (just clear of the grid).
 const FOOTPRINT_HEIGHT: f32 = 0.005;
 /// The character walks along z on a loop this long (metres), so it stays in view.
@@ -644,6 +678,7 @@ impl LocomotionFigure {
             planted: vec![false; walk.contacts().len()],
             foot_contacts,
             footprint_feet: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
+            footprint_links: Vec::with_capacity(2 * FOOTPRINT_SAMPLES),
             feet,
             walk,
             run,
@@ -831,6 +866,12 @@ impl LocomotionFigure {
     /// Which foot (0 left, 1 right) left each of [`LocomotionFigure::footprints`].
     pub fn footprint_feet(&self) -> &[usize] {
         &self.footprint_feet
+    }
+
+    /// The trails of the last draw: pairs of [`LocomotionFigure::footprints`] left by one foot
+    /// at consecutive samples of one stance (drawn as a line between them).
+    pub fn footprint_links(&self) -> &[[usize; 2]] {
+        &self.footprint_links
     }
 
     /// Whether each foot (left, right) is planted at `time_sec`, as the figure decides it for
@@ -1023,20 +1064,24 @@ impl LocomotionFigure {
     fn footprints_at(&mut self, t: f32) -> f32 {
         self.footprints.clear();
         self.footprint_feet.clear();
+        self.footprint_links.clear();
         let (now, _) = self.pose_at(t);
         let mut slide = 0.0f32;
-        let mut last: [Option<Vec3>; 2] = [None, None];
+        // Per foot: where it was at the last sample and that sample's footprint, while planted.
+        let mut last: [Option<(Vec3, usize)>; 2] = [None, None];
         for k in 0..=FOOTPRINT_SAMPLES {
             let s = t - FOOTPRINT_SEC * (1.0 - k as f32 / FOOTPRINT_SAMPLES as f32);
             for (f, (ground, drawn, planted)) in self.feet_at(s, now).into_iter().enumerate() {
                 if planted {
+                    let here = self.footprints.len();
                     self.footprints
                         .push(Vec3::new(drawn.x, FOOTPRINT_HEIGHT, drawn.z));
                     self.footprint_feet.push(f);
-                    if let Some(q) = last[f] {
+                    if let Some((q, before)) = last[f] {
                         slide += Vec3::new(ground.x - q.x, 0.0, ground.z - q.z).length();
+                        self.footprint_links.push([before, here]);
                     }
-                    last[f] = Some(ground);
+                    last[f] = Some((ground, here));
                 } else {
                     last[f] = None;
                 }
@@ -1046,8 +1091,8 @@ impl LocomotionFigure {
     }
 
     /// Poses at `t` at the current setting and draws the character, its contact shadow, its
-    /// footprints (markers of a fixed size on screen) and its label in lane `x`. Returns the
-    /// slide, metres.
+    /// footprints (each stance's trail, with a marker of a fixed size on screen at its two ends,
+    /// drawn over the legs) and its label in lane `x`. Returns the slide, metres.
     fn draw_lane(&mut self, frame: &mut Frame, t: f32, x: f32, color: Vec3, name: &str) -> f32 {
         let slide = self.footprints_at(t);
         let (origin, _) = self.pose_at(t);
@@ -1061,8 +1106,19 @@ impl LocomotionFigure {
         // The character walks along z on a loop of TRACK_LENGTH, so it stays in view.
         let z = (origin.z + 0.5 * TRACK_LENGTH).rem_euclid(TRACK_LENGTH) - 0.5 * TRACK_LENGTH;
         let place = Vec3::new(origin.x + x, 0.0, z);
-        for p in &self.footprints {
-            frame.marker(*p + place, FOOTPRINT_PX, color);
+        // Over everything: a foot slides along the way it walks, under its own leg, which
+        // would hide the trail from most views.
+        for &[a, b] in &self.footprint_links {
+            let (a, b) = (self.footprints[a] + place, self.footprints[b] + place);
+            frame.wide_line_on_top(a, b, color, TRAIL_PX);
+        }
+        // A dot where each stance begins and ends: one dot for a foot that held still, the two
+        // ends of its trail for one that slid.
+        for (i, p) in self.footprints.iter().enumerate() {
+            let linked = |end: usize| self.footprint_links.iter().any(|l| l[end] == i);
+            if !(linked(0) && linked(1)) {
+                frame.marker_on_top(*p + place, FOOTPRINT_PX, color);
+            }
         }
         let pelvis = place + Vec3::from(self.model[0].translation);
         frame.contact_shadow(Vec3::new(pelvis.x, 0.0, pelvis.z), 0.25);

@@ -35,9 +35,11 @@ struct Skinned {
 
 /// The most mesh vertices drawn as dots (every k-th vertex beyond it).
 const MAX_DOTS: usize = 2_000;
-/// Width of a bone on screen, and the size of a bind-pose dot, CSS pixels.
+/// Width of a bone on screen, CSS pixels.
 const BONE_PX: f32 = 3.0;
-const DOT_PX: f32 = 6.0;
+/// The radius of a bind-pose dot, as a fraction of the character's size: a plain grey disc (up to
+/// two thousand of them lie close together, where outlined markers would read as black rings).
+const DOT_RADIUS: f32 = 0.004;
 
 /// What is loaded.
 struct Character {
@@ -66,6 +68,8 @@ pub struct GltfFigure {
     model: Vec<Affine3A>,
     show_mesh: bool,
     mode: SkinMode,
+    /// Skinning: the bind-pose vertices drawn too, over the skinned mesh (lesson 09).
+    bind_dots: bool,
     /// Counts loads, so the page knows when to make new GPU meshes.
     generation: u32,
     /// Scratch: the joints' world matrices this frame.
@@ -268,6 +272,12 @@ impl GltfFigure {
 
     pub fn set_show_mesh(&mut self, on: bool) {
         self.show_mesh = on;
+    }
+
+    /// While skinning: the bind-pose vertices as dots too, over the skinned mesh, so what
+    /// skinning moved stands out from them.
+    pub fn set_show_bind_pose(&mut self, on: bool) {
+        self.bind_dots = on;
     }
 
     /// "dots" (bind-pose vertices), "lbs" or "dqs".
@@ -535,9 +545,11 @@ impl GltfFigure {
             "root",
             palette::ORANGE,
         );
-        if self.show_mesh && !skinning {
+        let dots = self.show_mesh && (!skinning || self.bind_dots);
+        if dots {
+            let radius = DOT_RADIUS * c.size;
             for &d in &c.dots {
-                frame.marker(d, DOT_PX, palette::GREY);
+                frame.point(d, radius, palette::GREY);
             }
         }
         // The rest pose's box (joints and mesh) and the joints where they are now stay in view,
@@ -566,7 +578,7 @@ impl GltfFigure {
                 (true, Some(p), _) => format!(". {p}"),
                 (true, None, Some(f)) => format!(". {f}."),
                 (true, None, None) => format!(
-                    ". Skinned by {} {} with the file's inverse bind matrices{}.",
+                    ". Skinned by {} {} with the file's inverse bind matrices{}.{}",
                     if self.mode == SkinMode::Dqs {
                         "DQS"
                     } else {
@@ -580,6 +592,11 @@ impl GltfFigure {
                     self.gpu_fallback
                         .as_ref()
                         .map_or(String::new(), |f| format!("; {f}")),
+                    if dots && !c.dots.is_empty() {
+                        " Grey dots: the mesh's vertices in the bind pose; where the skinned mesh has left them, skinning moved it."
+                    } else {
+                        ""
+                    },
                 ),
                 (false, ..) if self.show_mesh && !c.dots.is_empty() => {
                     ". Grey dots: the mesh's vertices in the bind pose (where the mesh sits before skinning moves it)."

@@ -158,6 +158,11 @@ impl Default for CylinderFigure {
     }
 }
 
+/// What the cylinder figure keeps in view around each tube (before its offset): the box that
+/// holds the tube bent 0 to 180° (the forearm swings up through +y) and twisted either way,
+/// and the labels below it.
+pub const CYLINDER_VIEW: [Vec3; 2] = [Vec3::new(-0.15, -0.5, -0.4), Vec3::new(2.15, 1.4, 0.4)];
+
 /// The cylinder's resolution: rings along it (odd: one at the elbow) and vertices around.
 pub const CYLINDER_RINGS: usize = 41;
 pub const CYLINDER_AROUND: usize = 24;
@@ -533,6 +538,11 @@ impl CylinderFigure {
             );
         }
         let probe = self.draw_probe(frame);
+        // Both tubes at every bend and twist the sliders reach, with their labels: the camera
+        // stays put while the sliders move.
+        for offset in [LBS_OFFSET, DQS_OFFSET] {
+            frame.keep_box_in_view(offset + CYLINDER_VIEW[0], offset + CYLINDER_VIEW[1]);
+        }
         let (a_lbs, a_dqs) = self.elbow_areas();
         let mut note = format!(
             "Elbow cross-section (black ring): LBS keeps {:.0}% of its rest area, DQS {:.0}%.",
@@ -807,19 +817,28 @@ pub struct HumanFigure {
     /// `mesh` holds the LBS body and `mesh_dqs` the DQS one.
     compare: bool,
     pub mesh_dqs: SkinnedMesh,
-    /// The camera keeps the whole bodies in view, or only the left knees ([`HumanView`]).
+    /// The camera keeps the whole bodies in view, or only the left legs ([`HumanView`]).
     view: HumanView,
+    /// [`HumanFigure::view_box`] for the current clip, weights and view (`None`: not made yet).
+    view_box: Option<(Vec3, Vec3)>,
     /// The left thigh's and shin's parts (their closed ellipsoids): the leg whose volume the
     /// note and the plot give.
     leg: [usize; 2],
 }
 
-/// What the character figure keeps in view.
+/// What the character figure keeps in view ([`HumanFigure::view_box`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum HumanView {
+    /// Both whole bodies.
     Body,
-    Knees,
+    /// Both left legs: the thigh and shin parts, the leg whose volume the plot gives.
+    Legs,
 }
+
+/// How many times over the clip [`HumanFigure::view_box`] skins the bodies, and how far it
+/// widens the box they fill (metres): the box holds them between those times too.
+const VIEW_SAMPLES: usize = 33;
+const VIEW_MARGIN_M: f32 = 0.03;
 
 /// Where the two bodies stand side by side, along z (seen from the side, +x, both knees show
 /// in profile): LBS at +z (on the left of a view from +x), DQS at −z.
@@ -866,6 +885,7 @@ impl HumanFigure {
             gpu_dirty: true,
             compare: false,
             view: HumanView::Body,
+            view_box: None,
         };
         figure.repaint();
         figure
@@ -878,18 +898,84 @@ impl HumanFigure {
         self.mesh_dqs.dirty = true;
     }
 
-    /// "whole body" or "left knees": what the camera keeps in view.
+    /// "whole body" or "left legs": what the camera keeps in view ([`HumanFigure::view_box`]).
     pub fn set_view(&mut self, name: &str) -> Result<(), String> {
         self.view = match name {
             "whole body" => HumanView::Body,
-            "left knees" => HumanView::Knees,
+            "left legs" => HumanView::Legs,
             _ => {
                 return Err(format!(
-                    "view: expected \"whole body\" or \"left knees\", got {name:?}"
+                    "view: expected \"whole body\" or \"left legs\", got {name:?}"
                 ))
             }
         };
+        self.view_box = None;
         Ok(())
+    }
+
+    /// The box the side-by-side figure keeps in view (scene space, both bodies placed): every
+    /// vertex of both bodies (whole body), or of both left legs' thigh and shin parts (left
+    /// legs), skinned by LBS and by DQS at [`VIEW_SAMPLES`] times over the clip, widened by
+    /// [`VIEW_MARGIN_M`]. It holds the bodies wherever the clip takes them, so the camera
+    /// stays put while the clip plays.
+    pub fn view_box(&mut self) -> Result<(Vec3, Vec3), String> {
+        if let Some(b) = self.view_box {
+            return Ok(b);
+        }
+        let c = &self.character;
+        let m = &c.mesh;
+        let vertices: Vec<usize> = match self.view {
+            HumanView::Body => (0..m.positions.len()).collect(),
+            HumanView::Legs => {
+                let per_part = m.indices.len() / c.skeleton.len();
+                self.leg
+                    .iter()
+                    .flat_map(|&j| m.indices[j * per_part..(j + 1) * per_part].iter())
+                    .map(|&i| i as usize)
+                    .collect()
+            }
+        };
+        let clip = &self.clips[self.clip];
+        let n = c.skeleton.len();
+        let mut pose = c.skeleton.rest_pose();
+        let (mut model, mut k, mut dq) = (
+            vec![Affine3A::IDENTITY; n],
+            vec![Affine3A::IDENTITY; n],
+            vec![DualQuat::IDENTITY; n],
+        );
+        let v = m.positions.len();
+        let (mut p, mut nn) = (vec![Vec3::ZERO; v], vec![Vec3::ZERO; v]);
+        let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+        let places = Self::pair_models();
+        for i in 0..VIEW_SAMPLES {
+            let t = clip.duration_sec() * i as f32 / (VIEW_SAMPLES - 1) as f32;
+            clip.sample(t, &mut ClipCursor::new(), &mut pose);
+            c.skeleton
+                .model_matrices(&pose, &mut model)
+                .map_err(|e| e.to_string())?;
+            skinning_palette(&model, c.skeleton.inverse_bind(), &mut k)
+                .map_err(|e| e.to_string())?;
+            dual_quat_palette(&k, &mut dq).map_err(|e| e.to_string())?;
+            for (method, place) in places.iter().enumerate() {
+                if method == 0 {
+                    skin_lbs(&k, &c.skin, &m.positions, &m.normals, &mut p, &mut nn)
+                } else {
+                    skin_dqs(&dq, &c.skin, &m.positions, &m.normals, &mut p, &mut nn)
+                }
+                .map_err(|e| e.to_string())?;
+                for &i in &vertices {
+                    let q = place.transform_point3(p[i]);
+                    lo = lo.min(q);
+                    hi = hi.max(q);
+                }
+            }
+        }
+        let b = (
+            lo - Vec3::splat(VIEW_MARGIN_M),
+            hi + Vec3::splat(VIEW_MARGIN_M),
+        );
+        self.view_box = Some(b);
+        Ok(b)
     }
 
     /// The left leg's volume (thigh and shin parts) in `positions`, as a fraction of its rest
@@ -1007,6 +1093,7 @@ impl HumanFigure {
             .position(|c| c.name() == name)
             .ok_or_else(|| format!("clip: no clip named {name:?}"))?;
         self.cursor = ClipCursor::new();
+        self.view_box = None;
         Ok(())
     }
 
@@ -1031,6 +1118,7 @@ impl HumanFigure {
         let c = skinned_human(f).map_err(|e| e.to_string())?;
         self.character.skin = c.skin;
         self.falloff = f;
+        self.view_box = None;
         self.repaint();
         Ok(())
     }
@@ -1182,6 +1270,11 @@ impl HumanFigure {
         } else {
             vec![Mat4::IDENTITY]
         };
+        let view_box = if self.compare {
+            self.view_box().ok()
+        } else {
+            None
+        };
         let names = self.character.skeleton.names();
         for place in &places {
             let at = |m: &Affine3A| place.transform_point3(Vec3::from(m.translation));
@@ -1210,29 +1303,26 @@ impl HumanFigure {
                 (places[0], "LBS", palette::ORANGE),
                 (places[1], "DQS", palette::TEAL),
             ] {
-                // Over the head, or over the knee in the knees view (the camera fits the labels too).
-                let y = if self.view == HumanView::Knees {
-                    0.85
-                } else {
-                    2.0
+                // Over the head, or over the hip in the legs view; the camera fits them too.
+                let y = match (self.view, view_box) {
+                    (HumanView::Legs, Some((_, hi))) => hi.y + 0.05,
+                    _ => 2.0,
                 };
-                frame.label_with_priority(
-                    place.transform_point3(Vec3::new(0.1, y, 0.0)),
-                    name,
-                    color,
-                    1,
-                );
+                let anchor = place.transform_point3(Vec3::new(0.1, y, 0.0));
+                frame.label_with_priority(anchor, name, color, 1);
+                frame.keep_in_view.push(anchor);
                 frame.contact_shadow(place.transform_point3(Vec3::ZERO), 0.3);
             }
-            let z = HUMAN_OFFSET_Z;
-            match self.view {
-                HumanView::Body => frame
-                    .keep_box_in_view(Vec3::new(-0.5, 0.0, -z - 0.5), Vec3::new(0.5, 2.0, z + 0.5)),
-                // Both left knees (the character's left is +x), wherever the clips swing them.
-                HumanView::Knees => frame.keep_box_in_view(
-                    Vec3::new(0.0, 0.25, -z - 0.35),
-                    Vec3::new(0.25, 0.8, z + 0.35),
-                ),
+            match view_box {
+                Some((lo, hi)) => frame.keep_box_in_view(lo, hi),
+                // A box that holds both bodies standing (only if skinning the clip failed).
+                None => {
+                    let z = HUMAN_OFFSET_Z;
+                    frame.keep_box_in_view(
+                        Vec3::new(-0.5, 0.0, -z - 0.5),
+                        Vec3::new(0.5, 2.0, z + 0.5),
+                    )
+                }
             }
         }
         let colours = match self.heat_joint {

@@ -64,7 +64,8 @@ impl BlendScene {
     }
 
     /// `[time (s), right arm raised (°) in clip A, clip B, the mix, the mix with the additive
-    /// layer]` per sample over one cycle of clip A; `samples` in [2, 10000].
+    /// layer, the additive layer alone]` per sample over one cycle of clip A; `samples` in
+    /// [2, 10000].
     #[wasm_bindgen(js_name = armSamples)]
     pub fn arm_samples(&mut self, samples: f64) -> Result<Vec<f32>, JsError> {
         let samples = super::whole("samples", samples)?;

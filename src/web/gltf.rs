@@ -82,6 +82,14 @@ impl GltfScene {
         Ok(())
     }
 
+    /// While skinning, the bind-pose vertices as dots over the skinned mesh (`true`) or not.
+    #[wasm_bindgen(js_name = setShowBindPose)]
+    pub fn set_show_bind_pose(&mut self, on: JsValue) -> Result<(), JsError> {
+        let on = super::boolean("on", &on)?;
+        self.scene.set_show_bind_pose(on);
+        Ok(())
+    }
+
     /// "dots" (the bind-pose vertices), "lbs" or "dqs".
     #[wasm_bindgen(js_name = setSkinning)]
     pub fn set_skinning(&mut self, mode: JsValue) -> Result<(), JsError> {

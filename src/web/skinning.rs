@@ -266,7 +266,7 @@ impl SkinnedHumanScene {
         self.scene.set_method(name).map_err(js)
     }
 
-    /// "whole body" or "left knees": what the camera keeps in view.
+    /// "whole body" or "left legs": what the camera keeps in view.
     #[wasm_bindgen(js_name = setView)]
     pub fn set_view(&mut self, name: JsValue) -> Result<(), JsError> {
         let name: &str = &super::string("name", &name)?;
