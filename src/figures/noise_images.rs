@@ -15,6 +15,8 @@ pub const IMAGE_SIZE: usize = 128;
 /// GPU writes 16-bit values (a step of 3·10⁻⁵) and may round or fuse operations differently
 /// (about 10⁻⁶ each at these coordinates).
 pub const GPU_TOLERANCE: f32 = 2e-4;
+/// Width of the lattice lines drawn over the images, CSS pixels.
+pub const LATTICE_PX: f32 = 2.0;
 
 /// What a GPU image shows: plain data the web layer hands to the renderer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -277,15 +279,17 @@ impl NoiseImages {
         let n = self.cells.ceil() as i32;
         for k in 0..=n {
             let t = (k as f32).min(self.cells);
-            frame.line(
+            frame.wide_line(
                 world(PLACES[0], t, 0.0),
                 world(PLACES[0], t, self.cells),
                 palette::ORANGE,
+                LATTICE_PX,
             );
-            frame.line(
+            frame.wide_line(
                 world(PLACES[0], 0.0, t),
                 world(PLACES[0], self.cells, t),
                 palette::ORANGE,
+                LATTICE_PX,
             );
         }
         // Simplex: lines i = const, j = const and i − j = const of the skewed grid, clipped to
@@ -299,23 +303,25 @@ impl NoiseImages {
             |(x, y): (f32, f32)| (0.0..=self.cells).contains(&x) && (0.0..=self.cells).contains(&y);
         let m = (2.0 * self.cells).ceil() as i32 + 2;
         let steps = 4 * m;
-        let mut segment = |a: (f32, f32), b: (f32, f32)| {
-            if inside(a) && inside(b) {
-                frame.line(
-                    world(PLACES[1], a.0, a.1),
-                    world(PLACES[1], b.0, b.1),
-                    palette::TEAL,
-                );
+        // Each lattice line as one stroke through its samples inside the square.
+        let mut run: Vec<Vec3> = Vec::new();
+        let mut line = |point: &dyn Fn(f32) -> (f32, f32)| {
+            run.clear();
+            for s in -steps..=steps {
+                let p = point(s as f32 * 0.5);
+                if inside(p) {
+                    run.push(world(PLACES[1], p.0, p.1));
+                }
+            }
+            if run.len() >= 2 {
+                frame.wide_polyline(&run, palette::TEAL, LATTICE_PX);
             }
         };
         for c in -m..=m {
-            for s in -steps..steps {
-                let (u0, u1) = (s as f32 * 0.5, (s + 1) as f32 * 0.5);
-                let c = c as f32;
-                segment(unskew(c, u0), unskew(c, u1));
-                segment(unskew(u0, c), unskew(u1, c));
-                segment(unskew(u0 + c, u0), unskew(u1 + c, u1));
-            }
+            let c = c as f32;
+            line(&|u| unskew(c, u));
+            line(&|u| unskew(u, c));
+            line(&|u| unskew(u + c, u));
         }
     }
 }
