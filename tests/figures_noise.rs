@@ -957,3 +957,27 @@ fn a_new_quiz_round_regenerates_its_terrains_once() {
     let after: Vec<Vec<Vec3>> = q.terrains().iter().map(|t| t.positions.clone()).collect();
     assert_ne!(before, after);
 }
+
+#[test]
+fn the_fractals_figure_declares_a_view_that_holds_both_shapes() {
+    // Without a declared view a narrow canvas cut the snowflake's left and the triangle's right.
+    let (lo, hi) = Fractals::view_box();
+    let mut s = Fractals::new();
+    s.set_show_previous(true);
+    for depth in 0..=6 {
+        s.set_depth(depth as f32).unwrap();
+        let mut f = Frame::default();
+        s.draw(&mut f);
+        assert!(!f.keep_in_view.is_empty());
+        let drawn = f
+            .segments()
+            .flat_map(|(a, b, _)| [a, b])
+            .chain(f.labels.iter().map(|l| l.anchor));
+        for p in drawn {
+            assert!(
+                p.x >= lo.x - 1e-4 && p.x <= hi.x + 1e-4 && p.y >= lo.y - 1e-4 && p.y <= hi.y + 1e-4,
+                "depth {depth}: {p} outside {lo} – {hi}"
+            );
+        }
+    }
+}

@@ -2082,6 +2082,10 @@ pub struct Fractals {
 pub const FRACTAL_PX: f32 = 2.0;
 
 const KOCH_CENTRE: Vec2 = Vec2::new(-1.7, 0.0);
+/// The snowflake's circumradius: its starting triangle's corners, which every depth keeps.
+pub const KOCH_RADIUS: f32 = 1.25;
+/// Height of the two names, under the shapes.
+const LABEL_Y: f32 = -1.55;
 const SIERPINSKI: [Vec2; 3] = [
     Vec2::new(0.4, -1.2),
     Vec2::new(3.0, -1.2),
@@ -2110,7 +2114,7 @@ impl Fractals {
     }
 
     fn draw_depth(&mut self, frame: &mut Frame, depth: u32, koch: Vec3, sier: Vec3, z: f32) {
-        koch_snowflake(depth, 1.25, &mut self.points).expect("depth checked");
+        koch_snowflake(depth, KOCH_RADIUS, &mut self.points).expect("depth checked");
         let pts: Vec<Vec3> = self
             .points
             .iter()
@@ -2124,7 +2128,20 @@ impl Fractals {
         }
     }
 
+    /// What must stay in view, `(min, max)`: the snowflake (inside its circumcircle, radius
+    /// [`KOCH_RADIUS`]), the Sierpinski triangle and the labels under them.
+    pub fn view_box() -> (Vec3, Vec3) {
+        let koch = KOCH_CENTRE - Vec2::splat(KOCH_RADIUS);
+        let top = (KOCH_CENTRE.y + KOCH_RADIUS).max(SIERPINSKI[2].y);
+        (
+            Vec3::new(koch.x, LABEL_Y, 0.0),
+            Vec3::new(SIERPINSKI[1].x, top, 0.0),
+        )
+    }
+
     pub fn draw(&mut self, frame: &mut Frame) -> String {
+        let (lo, hi) = Self::view_box();
+        frame.keep_box_in_view(lo, hi);
         let d = self.depth;
         self.draw_depth(frame, d, palette::BLUE, palette::ORANGE, 0.0);
         if self.show_previous && d > 0 {
@@ -2133,12 +2150,12 @@ impl Fractals {
             self.draw_depth(frame, d - 1, palette::GREY, palette::GREY, 0.01);
         }
         frame.label(
-            Vec3::new(KOCH_CENTRE.x, -1.55, 0.0),
+            Vec3::new(KOCH_CENTRE.x, LABEL_Y, 0.0),
             "Koch snowflake",
             palette::BLUE,
         );
         frame.label(
-            Vec3::new(1.7, -1.55, 0.0),
+            Vec3::new(SIERPINSKI[2].x, LABEL_Y, 0.0),
             "Sierpinski triangle",
             palette::ORANGE,
         );
