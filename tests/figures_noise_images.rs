@@ -114,6 +114,8 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
     assert_eq!(squares.len(), 14);
     assert!(f.lines.is_empty(), "no 1 px lattice line");
     assert!(f.strokes.iter().all(|s| s.width_px == LATTICE_PX && LATTICE_PX >= 2.0));
+    // Over the images: a stroke at the squares' height would be hidden by them.
+    assert!(f.strokes.iter().all(|s| s.depth_bias == inbetween::draw::ON_TOP), "drawn on top");
     assert!(triangles.len() > 50);
     for (a, b) in triangles {
         for p in [a, b] {

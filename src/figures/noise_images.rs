@@ -4,6 +4,7 @@
 //! compared texel by texel with the CPU's ([`NoiseImages::compare_gpu`]).
 
 use super::{format_number, in_range, palette, Frame};
+use crate::draw::StrokeStyle;
 use crate::figures::noise::permutation_for_seed;
 use crate::noise::Permutation;
 use crate::texture::{TextureId, UvRect};
@@ -17,6 +18,13 @@ pub const IMAGE_SIZE: usize = 128;
 pub const GPU_TOLERANCE: f32 = 2e-4;
 /// Width of the lattice lines drawn over the images, CSS pixels.
 pub const LATTICE_PX: f32 = 2.0;
+/// The lattice lines: wide, and over the images (the textured squares would hide them).
+fn lattice_style() -> StrokeStyle {
+    StrokeStyle {
+        on_top: true,
+        ..StrokeStyle::solid(LATTICE_PX)
+    }
+}
 
 /// What a GPU image shows: plain data the web layer hands to the renderer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -279,17 +287,15 @@ impl NoiseImages {
         let n = self.cells.ceil() as i32;
         for k in 0..=n {
             let t = (k as f32).min(self.cells);
-            frame.wide_line(
-                world(PLACES[0], t, 0.0),
-                world(PLACES[0], t, self.cells),
+            frame.stroke(
+                &[world(PLACES[0], t, 0.0), world(PLACES[0], t, self.cells)],
                 palette::ORANGE,
-                LATTICE_PX,
+                lattice_style(),
             );
-            frame.wide_line(
-                world(PLACES[0], 0.0, t),
-                world(PLACES[0], self.cells, t),
+            frame.stroke(
+                &[world(PLACES[0], 0.0, t), world(PLACES[0], self.cells, t)],
                 palette::ORANGE,
-                LATTICE_PX,
+                lattice_style(),
             );
         }
         // Simplex: lines i = const, j = const and i − j = const of the skewed grid, clipped to
@@ -314,7 +320,7 @@ impl NoiseImages {
                 }
             }
             if run.len() >= 2 {
-                frame.wide_polyline(&run, palette::TEAL, LATTICE_PX);
+                frame.stroke(&run, palette::TEAL, lattice_style());
             }
         };
         for c in -m..=m {
