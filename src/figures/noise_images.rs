@@ -4,7 +4,6 @@
 //! compared texel by texel with the CPU's ([`NoiseImages::compare_gpu`]).
 
 use super::{format_number, in_range, palette, Frame};
-use crate::draw::StrokeStyle;
 use crate::figures::noise::permutation_for_seed;
 use crate::noise::Permutation;
 use crate::texture::{TextureId, UvRect};
@@ -16,15 +15,6 @@ pub const IMAGE_SIZE: usize = 128;
 /// GPU writes 16-bit values (a step of 3·10⁻⁵) and may round or fuse operations differently
 /// (about 10⁻⁶ each at these coordinates).
 pub const GPU_TOLERANCE: f32 = 2e-4;
-/// Width of the lattice lines drawn over the images, CSS pixels.
-pub const LATTICE_PX: f32 = 2.0;
-/// The lattice lines: wide, and over the images (the textured squares would hide them).
-fn lattice_style() -> StrokeStyle {
-    StrokeStyle {
-        on_top: true,
-        ..StrokeStyle::solid(LATTICE_PX)
-    }
-}
 
 /// What a GPU image shows: plain data the web layer hands to the renderer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -287,15 +277,15 @@ impl NoiseImages {
         let n = self.cells.ceil() as i32;
         for k in 0..=n {
             let t = (k as f32).min(self.cells);
-            frame.stroke(
-                &[world(PLACES[0], t, 0.0), world(PLACES[0], t, self.cells)],
+            frame.line(
+                world(PLACES[0], t, 0.0),
+                world(PLACES[0], t, self.cells),
                 palette::ORANGE,
-                lattice_style(),
             );
-            frame.stroke(
-                &[world(PLACES[0], 0.0, t), world(PLACES[0], self.cells, t)],
+            frame.line(
+                world(PLACES[0], 0.0, t),
+                world(PLACES[0], self.cells, t),
                 palette::ORANGE,
-                lattice_style(),
             );
         }
         // Simplex: lines i = const, j = const and i − j = const of the skewed grid, clipped to
@@ -309,25 +299,23 @@ impl NoiseImages {
             |(x, y): (f32, f32)| (0.0..=self.cells).contains(&x) && (0.0..=self.cells).contains(&y);
         let m = (2.0 * self.cells).ceil() as i32 + 2;
         let steps = 4 * m;
-        // Each lattice line as one stroke through its samples inside the square.
-        let mut run: Vec<Vec3> = Vec::new();
-        let mut line = |point: &dyn Fn(f32) -> (f32, f32)| {
-            run.clear();
-            for s in -steps..=steps {
-                let p = point(s as f32 * 0.5);
-                if inside(p) {
-                    run.push(world(PLACES[1], p.0, p.1));
-                }
-            }
-            if run.len() >= 2 {
-                frame.stroke(&run, palette::TEAL, lattice_style());
+        let mut segment = |a: (f32, f32), b: (f32, f32)| {
+            if inside(a) && inside(b) {
+                frame.line(
+                    world(PLACES[1], a.0, a.1),
+                    world(PLACES[1], b.0, b.1),
+                    palette::TEAL,
+                );
             }
         };
         for c in -m..=m {
-            let c = c as f32;
-            line(&|u| unskew(c, u));
-            line(&|u| unskew(u, c));
-            line(&|u| unskew(u + c, u));
+            for s in -steps..steps {
+                let (u0, u1) = (s as f32 * 0.5, (s + 1) as f32 * 0.5);
+                let c = c as f32;
+                segment(unskew(c, u0), unskew(c, u1));
+                segment(unskew(u0, c), unskew(u1, c));
+                segment(unskew(u0 + c, u0), unskew(u1 + c, u1));
+            }
         }
     }
 }
