@@ -934,3 +934,48 @@ fn every_boids_tail_is_a_wide_stroke() {
     rules.draw(&mut frame);
     assert!(thin_lines_are_grid_lines_only(&frame));
 }
+
+#[test]
+fn gpu_mode_plots_the_flock_read_back_from_the_gpu() {
+    // In GPU mode the CPU never steps the flock; the order plot takes a sample every
+    // GPU_SAMPLE_SEC from the flock the web layer reads back. Here a CPU flock stands in for
+    // the GPU's: the samples are its φ and speed, at the tickets' times.
+    let mut f = FlockFigure::new();
+    let mut stand_in = f.flock().clone();
+    let params = f.params().clone();
+    let mut samples = 0;
+    for frame in 1..=60 {
+        let (restart, steps) = f.plan_gpu_steps(frame as f32 / 60.0).unwrap();
+        assert!(!restart);
+        for _ in 0..steps {
+            stand_in.step(&params, boids::Search::Grid, 1.0 / 60.0);
+        }
+        if let Some(ticket) = f.gpu_sample_due() {
+            assert!(f.record_gpu_sample(ticket, &stand_in.velocities).unwrap());
+            samples += 1;
+        }
+    }
+    let s = f.plot_samples();
+    assert_eq!(s.len(), 3 * (1 + samples), "the start, then one sample per 0.1 s");
+    assert_eq!(samples, 10);
+    let times: Vec<f32> = s.chunks(3).map(|r| r[0]).collect();
+    assert!(times.windows(2).all(|w| (w[1] - w[0] - GPU_SAMPLE_SEC).abs() < 1e-4), "{times:?}");
+    let last = &s[s.len() - 3..];
+    let mut cpu = FlockFigure::new();
+    for frame in 1..=60 {
+        cpu.advance_to(frame as f32 / 60.0).unwrap();
+    }
+    assert!((last[1] - cpu.polarisation()).abs() < 1e-4 && (last[2] - cpu.speed_ratio()).abs() < 1e-4);
+    // A read-back queued before a scrub back is not plotted after it; bad read-backs are errors.
+    let ticket = GpuSample { time_sec: 1.0, run: 0 };
+    let stale = f.gpu_sample_due().unwrap_or(ticket);
+    assert!(f.plan_gpu_steps(0.2).unwrap().0, "a scrub back restarts the flock");
+    assert!(!f.record_gpu_sample(stale, &stand_in.velocities).unwrap());
+    assert_eq!(f.plot_samples().len(), 3);
+    assert!(f.record_gpu_sample(stale, &stand_in.velocities[1..]).unwrap_err().contains("velocities"));
+    let mut nan = stand_in.velocities.clone();
+    nan[7].x = f32::NAN;
+    assert!(f.record_gpu_sample(stale, &nan).unwrap_err().contains("boid 7"));
+    let note = f.draw_gpu(&mut Frame::default());
+    assert!(note.contains("order plot reads the flock back from the GPU every 0.1 s"), "{note}");
+}

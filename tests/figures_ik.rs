@@ -594,3 +594,24 @@ fn use_my_exercise_checks_probe_inputs_beyond_the_target() {
         assert!(note.contains("It also matches at 3 probe inputs"), "{note}");
     }
 }
+
+#[test]
+fn the_aim_cone_is_drawn_in_wide_lines() {
+    // The cone's rim and its eight rays from the head read at a glance: wide strokes, none of
+    // them a 1 px line (the floor grid keeps its 1 px lines).
+    use inbetween::draw::palette;
+    use inbetween::figures::ik::CONE_PX;
+    let mut a = AimFigure::new();
+    let mut frame = Frame::default();
+    a.draw(&mut frame, 0.0).unwrap();
+    let purple = palette::PURPLE.extend(1.0).to_array();
+    assert!(frame.lines.chunks(2).all(|v| v[0].color != purple), "no 1 px purple line");
+    let head = Vec3::new(0.0, 1.6, 0.0);
+    let rays = frame
+        .strokes
+        .iter()
+        .filter(|s| s.color == purple && Vec3::from(s.a).distance(head) < 1e-5)
+        .collect::<Vec<_>>();
+    assert_eq!(rays.len(), 8, "a ray to every third of the rim's 24 points");
+    assert!(rays.iter().all(|s| s.width_px == CONE_PX && CONE_PX >= 2.0));
+}

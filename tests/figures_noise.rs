@@ -423,6 +423,9 @@ fn fractals_count_segments_and_triangles() {
     s.draw(&mut f);
     assert_eq!(f.segments_of(palette::BLUE).count(), 3 * 16);
     assert_eq!(f.segments_of(palette::ORANGE).count(), 9 * 3);
+    // The outlines are wide strokes, not 1 px lines.
+    assert!(f.lines.is_empty());
+    assert!(f.strokes.iter().all(|s| s.width_px == FRACTAL_PX && FRACTAL_PX >= 2.0));
     assert!(s.set_depth(8.0).unwrap_err().contains("depth"));
     s.set_show_previous(true);
     f.clear();
@@ -908,4 +911,73 @@ fn the_1d_noise_curve_and_its_guides_are_wide_strokes() {
         f.strokes.iter().filter(|st| st.width_px == GUIDE_PX).count() >= 9 + 2 + 1,
         "nine gradients, two ramps, the gap"
     );
+}
+
+#[test]
+fn the_1d_figure_declares_a_view_that_holds_everything_it_draws() {
+    // The camera fits the declared box at every canvas size and "frame all" returns to it: the
+    // box must hold the curve, the ticks and both ramps wherever the probe is, and not move with
+    // the probe.
+    for seed in [0.0, 1.0, 7.0, 42.0] {
+        let mut s = Noise1d::new();
+        s.set_seed(seed).unwrap();
+        let (lo, hi) = s.view_box();
+        for k in 0..32 {
+            s.set_probe(0.05 + 7.9 * k as f32 / 31.0).unwrap();
+            let mut f = Frame::default();
+            s.draw(&mut f);
+            let (flo, fhi) = f.keep_in_view.iter().fold(
+                (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+                |(a, b), p| (a.min(*p), b.max(*p)),
+            );
+            assert_eq!((flo, fhi), (lo, hi), "the declared box does not move with the probe");
+            let drawn = f
+                .segments()
+                .flat_map(|(a, b, _)| [a, b])
+                .chain(f.points.iter().map(|p| Vec3::from(p.center)));
+            for p in drawn {
+                assert!(
+                    p.x >= lo.x - 1e-4 && p.x <= hi.x + 1e-4 && p.y >= lo.y - 1e-4 && p.y <= hi.y + 1e-4,
+                    "seed {seed}: {p} outside {lo} – {hi}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_new_quiz_round_regenerates_its_terrains_once() {
+    let mut q = Quiz::new();
+    assert!(q.take_dirty(), "the first terrains are uploaded");
+    assert!(!q.take_dirty());
+    let before: Vec<Vec<Vec3>> = q.terrains().iter().map(|t| t.positions.clone()).collect();
+    q.new_round();
+    assert!(q.take_dirty(), "a new round reshuffles the terrains");
+    assert!(!q.take_dirty(), "once");
+    let after: Vec<Vec<Vec3>> = q.terrains().iter().map(|t| t.positions.clone()).collect();
+    assert_ne!(before, after);
+}
+
+#[test]
+fn the_fractals_figure_declares_a_view_that_holds_both_shapes() {
+    // Without a declared view a narrow canvas cut the snowflake's left and the triangle's right.
+    let (lo, hi) = Fractals::view_box();
+    let mut s = Fractals::new();
+    s.set_show_previous(true);
+    for depth in 0..=6 {
+        s.set_depth(depth as f32).unwrap();
+        let mut f = Frame::default();
+        s.draw(&mut f);
+        assert!(!f.keep_in_view.is_empty());
+        let drawn = f
+            .segments()
+            .flat_map(|(a, b, _)| [a, b])
+            .chain(f.labels.iter().map(|l| l.anchor));
+        for p in drawn {
+            assert!(
+                p.x >= lo.x - 1e-4 && p.x <= hi.x + 1e-4 && p.y >= lo.y - 1e-4 && p.y <= hi.y + 1e-4,
+                "depth {depth}: {p} outside {lo} – {hi}"
+            );
+        }
+    }
 }

@@ -10,6 +10,8 @@ const lawPlot = new Plot(document.getElementById('law-plot'), {
   title: 'The force laws f(x) with the flock\'s constants (positive: attraction)',
   xLabel: 'distance x (m)', yLabel: 'f(x) (m/s²)',
   series: ['a1/x² − a2/x⁴', 'Gaussian'], colors: [cssVar('--purple'), cssVar('--teal')], yRange: [-1.5, 1.5],
+  // About 190 px of plot area: the zero crossings and the peaks the text names read off it.
+  height: 300,
 });
 lawPlot.setData(columns(lawPlotSamples(300), 3));
 
@@ -187,11 +189,8 @@ if (flockViewer) {
     showNote(note, [rejected, scene.draw(flockViewer)].filter(Boolean).join(' '));
     // Ten times a second, and at once after a jump (a scrub or the loop starts a new flock).
     if (frame % 6 === 0 || Math.abs(time - plotTime) > 0.2) {
-      // On the GPU there are no samples (they need the flock on the CPU): an empty plot over
-      // the whole loop, not the axes of the CPU run before the switch.
-      orderPlot.setData(onGpu
-        ? [[0, timeline.duration], [null, null], [null, null]]
-        : columns(scene.plotSamples(), 3));
+      // On the GPU the samples come from the flock read back every 0.1 s.
+      orderPlot.setData(columns(scene.plotSamples(), 3));
       plotTime = time;
     }
     orderPlot.setCursor(time);

@@ -334,10 +334,27 @@ pub struct FlockFigure {
     seed: u64,
     steps_done: usize,
     /// The order plot's samples since the flock (re)started, flat `[t (s), φ, speed ratio]`, one
-    /// per step; empty in GPU mode (the flock stays on the GPU).
+    /// per step on the CPU, one per [`GPU_SAMPLE_SEC`] in GPU mode.
     history: Vec<f32>,
+    /// How many times the plot has started again: a flock read back from the GPU for an
+    /// earlier run is not plotted ([`GpuSample::run`]).
+    run: u64,
     /// The step-time sweep the page runs beside the flock.
     sweep: StepTimeSweep,
+}
+
+/// GPU mode: the order plot's sampling interval, seconds of flock time (a read-back of the
+/// flock from the GPU each).
+pub const GPU_SAMPLE_SEC: f32 = 0.1;
+
+/// GPU mode: a sample the order plot is due, handed back with the flock read from the GPU
+/// ([`FlockFigure::gpu_sample_due`], [`FlockFigure::record_gpu_sample`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpuSample {
+    /// The flock's clock when the read-back was queued, seconds.
+    pub time_sec: f32,
+    /// The plot's run it belongs to.
+    pub run: u64,
 }
 
 /// The most samples the order plot keeps (one per step: the figure's 20 s timeline is
@@ -369,6 +386,7 @@ impl FlockFigure {
             seed: 1,
             steps_done: 0,
             history: Vec::with_capacity(3 * MAX_PLOT_SAMPLES),
+            run: 0,
             sweep: StepTimeSweep::new(),
         };
         f.set_obstacle(true);
@@ -384,38 +402,81 @@ impl FlockFigure {
     /// boids); in between for a flock that has split into groups heading different ways, or
     /// that mills about.
     pub fn polarisation(&self) -> f32 {
-        let (sum, n) = self
-            .flock_velocities()
-            .fold((Vec3::ZERO, 0usize), |(s, n), v| {
-                (s + v.normalize_or_zero(), n + 1)
-            });
-        if n == 0 {
-            0.0
-        } else {
-            sum.length() / n as f32
-        }
-    }
-
-    /// The velocities of the flock's ordinary boids: all but the leader and the predator.
-    fn flock_velocities(&self) -> impl Iterator<Item = Vec3> + '_ {
-        let (leader, predator) = self.flock.roles(&self.params);
-        let velocities = self.flock.velocities.iter().enumerate();
-        velocities
-            .filter(move |&(i, _)| Some(i) != leader && Some(i) != predator)
-            .map(|(_, &v)| v)
+        self.order_of(&self.flock.velocities).0
     }
 
     /// The mean speed of the flock (the leader and predator left out) over the maximum speed,
     /// in `[0, 1]`.
     pub fn speed_ratio(&self) -> f32 {
-        let (sum, n) = self
-            .flock_velocities()
-            .fold((0.0, 0usize), |(s, n), v| (s + v.length(), n + 1));
+        self.order_of(&self.flock.velocities).1
+    }
+
+    /// `(φ, mean speed / max speed)` of a flock with these velocities, one per boid in the
+    /// flock's order, the leader and the predator left out.
+    fn order_of(&self, velocities: &[Vec3]) -> (f32, f32) {
+        let (leader, predator) = self.flock.roles(&self.params);
+        let (heading, speed, n) = velocities
+            .iter()
+            .enumerate()
+            .filter(|&(i, _)| Some(i) != leader && Some(i) != predator)
+            .fold((Vec3::ZERO, 0.0, 0usize), |(h, s, n), (_, v)| {
+                (h + v.normalize_or_zero(), s + v.length(), n + 1)
+            });
         if n == 0 {
-            0.0
+            (0.0, 0.0)
         } else {
-            sum / n as f32 / self.params.max_speed
+            let n = n as f32;
+            (heading.length() / n, speed / n / self.params.max_speed)
         }
+    }
+
+    /// GPU mode: the order plot's next sample, once the last is [`GPU_SAMPLE_SEC`] behind the
+    /// flock's clock. The web layer then reads the flock back from the GPU (it arrives a frame
+    /// or more later) and hands it to [`FlockFigure::record_gpu_sample`] with this ticket.
+    pub fn gpu_sample_due(&self) -> Option<GpuSample> {
+        let t = self.steps_done as f32 * SIM_DT;
+        let last = self.history.len().checked_sub(3).map(|i| self.history[i]);
+        match last {
+            Some(last) if t - last < GPU_SAMPLE_SEC - 0.5 * SIM_DT => None,
+            _ => Some(GpuSample {
+                time_sec: t,
+                run: self.run,
+            }),
+        }
+    }
+
+    /// GPU mode: adds the order plot's sample for `ticket` from the flock read back from the
+    /// GPU (`velocities`, one per boid, in the flock's order). A ticket from before the plot
+    /// started again (a scrub, the loop, a new count) is dropped; returns whether the sample
+    /// was added.
+    ///
+    /// # Errors
+    /// A count that is not the flock's, or a velocity that is not finite; nothing is added.
+    pub fn record_gpu_sample(
+        &mut self,
+        ticket: GpuSample,
+        velocities: &[Vec3],
+    ) -> Result<bool, String> {
+        if velocities.len() != self.flock.len() {
+            return Err(format!(
+                "GPU sample: {} velocities for a flock of {} boids",
+                velocities.len(),
+                self.flock.len()
+            ));
+        }
+        if let Some(i) = velocities.iter().position(|v| !v.is_finite()) {
+            return Err(format!("GPU sample: boid {i}'s velocity is not finite"));
+        }
+        let last = self.history.len().checked_sub(3).map(|i| self.history[i]);
+        if ticket.run != self.run
+            || last.is_some_and(|last| ticket.time_sec <= last)
+            || self.history.len() >= 3 * MAX_PLOT_SAMPLES
+        {
+            return Ok(false);
+        }
+        let (phi, speed) = self.order_of(velocities);
+        self.history.extend([ticket.time_sec, phi, speed]);
+        Ok(true)
     }
 
     /// The order plot's samples, flat `[t (s), φ, mean speed / max speed]`
@@ -428,6 +489,7 @@ impl FlockFigure {
 
     fn restart_plot(&mut self) {
         self.history.clear();
+        self.run += 1;
         self.record();
     }
 
@@ -604,9 +666,9 @@ impl FlockFigure {
             let seed = self.seed.wrapping_add(target as u64);
             self.flock = Flock::new(self.flock.len(), &self.params, seed)?;
             self.steps_done = target;
+            self.restart_plot();
             restart = true;
         }
-        self.history.clear(); // the GPU's flock never comes back: no samples
         let n = target - self.steps_done;
         self.steps_done = target;
         Ok((restart, n))
@@ -641,11 +703,12 @@ impl FlockFigure {
             "{} boids stepped on the GPU by a compute shader, at t = {} s (the same rules; \
              neighbours by the naive O(N²) loop in tiles, one thread per boid, whatever the \
              neighbour search says){roles}; {}. The orange boid, its neighbour lines and its \
-             steering arrow are not drawn, and the order plot is empty: they need the flock on \
-             the CPU, and it stays on the GPU.",
+             steering arrow are not drawn: they need the flock on the CPU, and it stays on the \
+             GPU. The order plot reads the flock back from the GPU every {} s.",
             self.flock.len(),
             format_number(self.steps_done as f32 * SIM_DT),
             self.speed_range(),
+            GPU_SAMPLE_SEC,
         )
     }
 

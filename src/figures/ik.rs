@@ -44,6 +44,8 @@ const SOLVER_COLORS: [Vec3; 3] = [palette::BLUE, palette::ORANGE, palette::TEAL]
 const TARGET_PX: f32 = 16.0;
 const POLE_PX: f32 = 11.0;
 const GAP_PX: f32 = 2.5;
+/// Width of the aim figure's cone: its rim and the rays from the head to it, CSS pixels.
+pub const CONE_PX: f32 = 2.0;
 
 /// What the joint-limits dropdown offers, in order.
 pub const LIMIT_MODES: [&str; 3] = ["none", "hinges (bend one way)", "cones (40°)"];
@@ -981,9 +983,9 @@ impl AimFigure {
                 HEAD + Quat::from_rotation_z(std::f32::consts::TAU * k as f32 / STEPS as f32) * rim
             })
             .collect();
-        frame.wide_polyline(&circle, palette::PURPLE, 1.5);
+        frame.wide_polyline(&circle, palette::PURPLE, CONE_PX);
         for k in (0..STEPS).step_by(3) {
-            frame.line(HEAD, circle[k], palette::PURPLE);
+            frame.wide_line(HEAD, circle[k], palette::PURPLE, CONE_PX);
         }
         // The cone's name above its rim, clear of the forward arrow's label.
         let top = circle.iter().copied().fold(circle[0], |a, b| if b.y > a.y { b } else { a });

@@ -135,13 +135,29 @@ fn keep_terrain_in_view(frame: &mut Frame, terrain: &Terrain) {
 }
 
 /// Terrains a figure shows, for the web layer to upload: each with its model matrix.
+///
+/// A setter only raises the figure's `stale` flag, so a page that sets five parameters in a row
+/// pays for one regeneration; regenerating raises `dirty`, which the web layer takes to know
+/// when to upload the terrains again.
 pub trait TerrainFigure {
     /// The terrains, in the order their mesh ids are passed to `draw`.
     fn terrains(&self) -> Vec<&Terrain>;
-    /// Regenerates what the setters marked stale (setters only record the change, so a page that
-    /// sets five parameters in a row pays for one regeneration), then returns true once after the
-    /// terrains changed (the web layer then re-uploads them).
-    fn take_dirty(&mut self) -> bool;
+    /// Raised by a setter: the terrains no longer match the parameters.
+    fn stale(&mut self) -> &mut bool;
+    /// Raised by [`TerrainFigure::rebuild`]: the terrains changed since the web layer took them.
+    fn dirty(&mut self) -> &mut bool;
+    /// Regenerates the terrains from the parameters and raises `dirty`. The setters validated
+    /// the parameters, so this fails only on a bug; then the old terrains stay.
+    fn rebuild(&mut self) -> Result<(), String>;
+
+    /// Regenerates what the setters marked stale, then returns true once after the terrains
+    /// changed (the web layer then re-uploads them).
+    fn take_dirty(&mut self) -> bool {
+        if std::mem::take(self.stale()) && self.rebuild().is_err() {
+            return false;
+        }
+        std::mem::take(self.dirty())
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -160,6 +176,8 @@ pub struct Noise1d {
 /// Screen mapping of Figure 1: x ∈ [0, 8] to [−4, 4], values ×4.
 const X0: f32 = 4.0;
 const Y_SCALE: f32 = 4.0;
+/// Half the length along x of the tick that shows a lattice point's gradient.
+const TICK_HALF: f32 = 0.3;
 
 impl Default for Noise1d {
     fn default() -> Self {
@@ -231,8 +249,24 @@ impl Noise1d {
         .0
     }
 
+    /// What must stay in view, `(min, max)`: the lattice from 0 to 8 with its gradient ticks
+    /// and, whichever cell the probe is in, its ramps (a ramp rises by its gradient g over one
+    /// cell, so this seed's steepest `|g|` bounds them, the curve and the ticks). It does not
+    /// depend on the probe, so the camera holds still while the probe moves.
+    pub fn view_box(&self) -> (Vec3, Vec3) {
+        let steepest = (0..=8)
+            .map(|i| grad1(self.perm.hash1(i)).abs())
+            .fold(0.0, f32::max);
+        (
+            Self::to_world(-TICK_HALF, -steepest),
+            Self::to_world(8.0 + TICK_HALF, steepest),
+        )
+    }
+
     /// Draws the figure; returns its note.
     pub fn draw(&self, frame: &mut Frame) -> String {
+        let (lo, hi) = self.view_box();
+        frame.keep_box_in_view(lo, hi);
         frame.line(
             Self::to_world(0.0, 0.0),
             Self::to_world(8.0, 0.0),
@@ -258,8 +292,8 @@ impl Noise1d {
             let x = i as f32;
             frame.point(Self::to_world(x, 0.0), 0.06, palette::KEY);
             frame.wide_line(
-                Self::to_world(x - 0.3, -0.3 * g),
-                Self::to_world(x + 0.3, 0.3 * g),
+                Self::to_world(x - TICK_HALF, -TICK_HALF * g),
+                Self::to_world(x + TICK_HALF, TICK_HALF * g),
                 color,
                 GUIDE_PX,
             );
@@ -645,11 +679,15 @@ impl TerrainFigure for Noise2d {
     fn terrains(&self) -> Vec<&Terrain> {
         vec![&self.terrain]
     }
-    fn take_dirty(&mut self) -> bool {
-        if std::mem::take(&mut self.stale) {
-            self.regenerate();
-        }
-        std::mem::take(&mut self.dirty)
+    fn stale(&mut self) -> &mut bool {
+        &mut self.stale
+    }
+    fn dirty(&mut self) -> &mut bool {
+        &mut self.dirty
+    }
+    fn rebuild(&mut self) -> Result<(), String> {
+        self.regenerate();
+        Ok(())
     }
 }
 
@@ -934,11 +972,15 @@ impl TerrainFigure for Octaves {
     fn terrains(&self) -> Vec<&Terrain> {
         vec![&self.terrain]
     }
-    fn take_dirty(&mut self) -> bool {
-        if std::mem::take(&mut self.stale) {
-            self.regenerate();
-        }
-        std::mem::take(&mut self.dirty)
+    fn stale(&mut self) -> &mut bool {
+        &mut self.stale
+    }
+    fn dirty(&mut self) -> &mut bool {
+        &mut self.dirty
+    }
+    fn rebuild(&mut self) -> Result<(), String> {
+        self.regenerate();
+        Ok(())
     }
 }
 
@@ -1280,12 +1322,14 @@ impl TerrainFigure for TerrainScene {
     fn terrains(&self) -> Vec<&Terrain> {
         vec![&self.terrain]
     }
-    fn take_dirty(&mut self) -> bool {
-        // The setters validated everything, so this cannot fail; if it did, the old terrain stays.
-        if std::mem::take(&mut self.stale) && self.regenerate().is_err() {
-            return false;
-        }
-        std::mem::take(&mut self.dirty)
+    fn stale(&mut self) -> &mut bool {
+        &mut self.stale
+    }
+    fn dirty(&mut self) -> &mut bool {
+        &mut self.dirty
+    }
+    fn rebuild(&mut self) -> Result<(), String> {
+        self.regenerate()
     }
 }
 
@@ -1482,11 +1526,15 @@ impl TerrainFigure for Normals {
     fn terrains(&self) -> Vec<&Terrain> {
         vec![&self.terrain]
     }
-    fn take_dirty(&mut self) -> bool {
-        if std::mem::take(&mut self.stale) {
-            self.regenerate();
-        }
-        std::mem::take(&mut self.dirty)
+    fn stale(&mut self) -> &mut bool {
+        &mut self.stale
+    }
+    fn dirty(&mut self) -> &mut bool {
+        &mut self.dirty
+    }
+    fn rebuild(&mut self) -> Result<(), String> {
+        self.regenerate();
+        Ok(())
     }
 }
 
@@ -1648,11 +1696,15 @@ impl TerrainFigure for Variants {
     fn terrains(&self) -> Vec<&Terrain> {
         self.terrains.iter().collect()
     }
-    fn take_dirty(&mut self) -> bool {
-        if std::mem::take(&mut self.stale) {
-            self.regenerate();
-        }
-        std::mem::take(&mut self.dirty)
+    fn stale(&mut self) -> &mut bool {
+        &mut self.stale
+    }
+    fn dirty(&mut self) -> &mut bool {
+        &mut self.dirty
+    }
+    fn rebuild(&mut self) -> Result<(), String> {
+        self.regenerate();
+        Ok(())
     }
 }
 
@@ -1869,6 +1921,7 @@ pub struct Quiz {
     terrains: Vec<Terrain>,
     round: u64,
     dirty: bool,
+    stale: bool,
 }
 
 /// Vertices per side of each quiz terrain.
@@ -1887,8 +1940,10 @@ impl Quiz {
                 .collect(),
             round: 0,
             dirty: true,
+            stale: false,
         };
         q.new_round();
+        q.regenerate();
         q
     }
 
@@ -1906,13 +1961,17 @@ impl Quiz {
                 break;
             }
         }
+        self.answers = [None; 6];
+        self.checked = false;
+        self.stale = true;
+    }
+
+    fn regenerate(&mut self) {
         let sets = quiz_sets();
         for (t, &set) in self.terrains.iter_mut().zip(&self.hidden) {
             t.regenerate(&self.perm, &sets[set].shown_params())
                 .expect("the quiz's sets are valid");
         }
-        self.answers = [None; 6];
-        self.checked = false;
         self.dirty = true;
     }
 
@@ -1994,8 +2053,15 @@ impl TerrainFigure for Quiz {
     fn terrains(&self) -> Vec<&Terrain> {
         self.terrains.iter().collect()
     }
-    fn take_dirty(&mut self) -> bool {
-        std::mem::take(&mut self.dirty)
+    fn stale(&mut self) -> &mut bool {
+        &mut self.stale
+    }
+    fn dirty(&mut self) -> &mut bool {
+        &mut self.dirty
+    }
+    fn rebuild(&mut self) -> Result<(), String> {
+        self.regenerate();
+        Ok(())
     }
 }
 
@@ -2011,7 +2077,15 @@ pub struct Fractals {
     triangles: Vec<[Vec2; 3]>,
 }
 
+/// Width of the fractals' outlines, CSS pixels. The previous depth's grey is as wide, so where
+/// a segment survives a step the grey covers it whole.
+pub const FRACTAL_PX: f32 = 2.0;
+
 const KOCH_CENTRE: Vec2 = Vec2::new(-1.7, 0.0);
+/// The snowflake's circumradius: its starting triangle's corners, which every depth keeps.
+pub const KOCH_RADIUS: f32 = 1.25;
+/// Height of the two names, under the shapes.
+const LABEL_Y: f32 = -1.55;
 const SIERPINSKI: [Vec2; 3] = [
     Vec2::new(0.4, -1.2),
     Vec2::new(3.0, -1.2),
@@ -2040,21 +2114,34 @@ impl Fractals {
     }
 
     fn draw_depth(&mut self, frame: &mut Frame, depth: u32, koch: Vec3, sier: Vec3, z: f32) {
-        koch_snowflake(depth, 1.25, &mut self.points).expect("depth checked");
+        koch_snowflake(depth, KOCH_RADIUS, &mut self.points).expect("depth checked");
         let pts: Vec<Vec3> = self
             .points
             .iter()
             .map(|p| (*p + KOCH_CENTRE).extend(z))
             .collect();
-        frame.polyline(&pts, koch);
+        frame.wide_polyline(&pts, koch, FRACTAL_PX);
         sierpinski(depth, SIERPINSKI, &mut self.triangles).expect("depth checked");
         for t in &self.triangles {
             let v = t.map(|p| p.extend(z));
-            frame.polyline(&[v[0], v[1], v[2], v[0]], sier);
+            frame.wide_polyline(&[v[0], v[1], v[2], v[0]], sier, FRACTAL_PX);
         }
     }
 
+    /// What must stay in view, `(min, max)`: the snowflake (inside its circumcircle, radius
+    /// [`KOCH_RADIUS`]), the Sierpinski triangle and the labels under them.
+    pub fn view_box() -> (Vec3, Vec3) {
+        let koch = KOCH_CENTRE - Vec2::splat(KOCH_RADIUS);
+        let top = (KOCH_CENTRE.y + KOCH_RADIUS).max(SIERPINSKI[2].y);
+        (
+            Vec3::new(koch.x, LABEL_Y, 0.0),
+            Vec3::new(SIERPINSKI[1].x, top, 0.0),
+        )
+    }
+
     pub fn draw(&mut self, frame: &mut Frame) -> String {
+        let (lo, hi) = Self::view_box();
+        frame.keep_box_in_view(lo, hi);
         let d = self.depth;
         self.draw_depth(frame, d, palette::BLUE, palette::ORANGE, 0.0);
         if self.show_previous && d > 0 {
@@ -2063,12 +2150,12 @@ impl Fractals {
             self.draw_depth(frame, d - 1, palette::GREY, palette::GREY, 0.01);
         }
         frame.label(
-            Vec3::new(KOCH_CENTRE.x, -1.55, 0.0),
+            Vec3::new(KOCH_CENTRE.x, LABEL_Y, 0.0),
             "Koch snowflake",
             palette::BLUE,
         );
         frame.label(
-            Vec3::new(1.7, -1.55, 0.0),
+            Vec3::new(SIERPINSKI[2].x, LABEL_Y, 0.0),
             "Sierpinski triangle",
             palette::ORANGE,
         );

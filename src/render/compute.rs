@@ -121,34 +121,61 @@ fn rows_bytes(rows: &[Row]) -> &[u8] {
 
 /// Copies `size` bytes of `buffer` back to the CPU (tests, benchmarks: it waits for the GPU).
 pub async fn read_buffer(gpu: &Gpu, buffer: &wgpu::Buffer, size: u64) -> Result<Vec<u8>, String> {
-    let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("readback"),
-        size,
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, size);
-    gpu.queue.submit([encoder.finish()]);
-    let done: Rc<Cell<Option<Result<(), String>>>> = Rc::new(Cell::new(None));
-    let signal = done.clone();
-    staging.map_async(wgpu::MapMode::Read, .., move |r| {
-        signal.set(Some(r.map_err(|e| e.to_string())))
-    });
-    let result = loop {
-        let _ = gpu.device.poll(wgpu::PollType::Poll);
-        if let Some(r) = done.take() {
-            break r;
+    let copy = ReadBack::start(gpu, buffer, size);
+    loop {
+        if let Some(bytes) = copy.try_take(gpu) {
+            return bytes;
         }
         super::renderer::sleep_ms(1).await;
-    };
-    result.map_err(|e| format!("reading the GPU buffer back failed: {e}"))?;
-    let bytes = staging
-        .get_mapped_range(..)
-        .map_err(|e| e.to_string())?
-        .to_vec();
-    staging.unmap();
-    Ok(bytes)
+    }
+}
+
+/// A copy of a GPU buffer on its way to the CPU, taken without waiting: a page starts one and
+/// asks [`ReadBack::try_take`] on later frames, so the GPU's queue never stalls a frame.
+pub struct ReadBack {
+    staging: wgpu::Buffer,
+    done: Rc<Cell<Option<Result<(), String>>>>,
+}
+
+impl ReadBack {
+    /// Queues a copy of the first `size` bytes of `buffer` (as it is after everything submitted
+    /// so far) and asks for it to be mapped.
+    pub fn start(gpu: &Gpu, buffer: &wgpu::Buffer, size: u64) -> Self {
+        let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, size);
+        gpu.queue.submit([encoder.finish()]);
+        let done: Rc<Cell<Option<Result<(), String>>>> = Rc::new(Cell::new(None));
+        let signal = done.clone();
+        staging.map_async(wgpu::MapMode::Read, .., move |r| {
+            signal.set(Some(r.map_err(|e| e.to_string())))
+        });
+        Self { staging, done }
+    }
+
+    /// The bytes once they have arrived, `None` before; once only.
+    pub fn try_take(&self, gpu: &Gpu) -> Option<Result<Vec<u8>, String>> {
+        let _ = gpu.device.poll(wgpu::PollType::Poll);
+        let result = self.done.take()?;
+        Some(
+            result
+                .map_err(|e| format!("reading the GPU buffer back failed: {e}"))
+                .and_then(|()| {
+                    let bytes = self
+                        .staging
+                        .get_mapped_range(..)
+                        .map_err(|e| e.to_string())?
+                        .to_vec();
+                    self.staging.unmap();
+                    Ok(bytes)
+                }),
+        )
+    }
 }
 
 /// A particle system stepped by compute shaders. Same model as
@@ -457,11 +484,22 @@ impl BoidsCompute {
     /// Reads the flock back: positions and velocities (tests; waits for the GPU).
     pub async fn read_back(&self, gpu: &Gpu) -> Result<(Vec<Vec3>, Vec<Vec3>), String> {
         let bytes = read_buffer(gpu, &self.state[self.current], self.n as u64 * BOID_BYTES).await?;
-        let floats: &[f32] = bytemuck::cast_slice(&bytes);
-        Ok(floats
+        Ok(Self::unpack(&bytes))
+    }
+
+    /// Starts reading the flock back as it is after the steps submitted so far, without waiting
+    /// (the page's order plot); [`BoidsCompute::unpack`] turns the bytes into the flock.
+    pub fn start_read_back(&self, gpu: &Gpu) -> ReadBack {
+        ReadBack::start(gpu, &self.state[self.current], self.n as u64 * BOID_BYTES)
+    }
+
+    /// Positions and velocities from the bytes of a read-back state buffer.
+    pub fn unpack(bytes: &[u8]) -> (Vec<Vec3>, Vec<Vec3>) {
+        let floats: Vec<f32> = bytemuck::pod_collect_to_vec(bytes);
+        floats
             .chunks_exact(8)
             .map(|b| (Vec3::new(b[0], b[1], b[2]), Vec3::new(b[4], b[5], b[6])))
-            .unzip())
+            .unzip()
     }
 
     /// Waits until the GPU has finished every step submitted so far (benchmarks).

@@ -11,7 +11,7 @@ mod renderer;
 mod skin;
 mod texture;
 
-pub use compute::{BoidsCompute, ParticlesCompute};
+pub use compute::{BoidsCompute, ParticlesCompute, ReadBack};
 pub use context::{BackendChoice, Gpu};
 pub use renderer::{Frame, MeshId, Renderer};
 pub use skin::SkinPass;

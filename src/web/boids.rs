@@ -1,7 +1,7 @@
 //! Bindings for lesson 12, "Boids": thin wrappers around [`crate::figures::boids`].
 
 use super::{js, Viewer};
-use crate::figures::boids::{FlockFigure, RulesFigure};
+use crate::figures::boids::{FlockFigure, GpuSample, RulesFigure};
 use wasm_bindgen::prelude::*;
 
 /// The flock.
@@ -11,6 +11,8 @@ pub struct FlockScene {
     /// The flock on the GPU (compute shader), when that mode is on and WebGPU is there.
     gpu: Option<crate::render::BoidsCompute>,
     gpu_on: bool,
+    /// The flock on its way back from the GPU for the order plot, with its ticket.
+    sample: Option<(GpuSample, crate::render::ReadBack)>,
 }
 
 #[wasm_bindgen]
@@ -21,6 +23,7 @@ impl FlockScene {
             scene: FlockFigure::new(),
             gpu: None,
             gpu_on: false,
+            sample: None,
         }
     }
 
@@ -37,6 +40,7 @@ impl FlockScene {
         }
         self.gpu_on = on;
         self.gpu = None; // uploaded from the CPU flock at the next step
+        self.sample = None;
         Ok(())
     }
 
@@ -71,6 +75,24 @@ impl FlockScene {
             )
             .map_err(|e| JsError::new(&e))?;
         }
+        // The order plot: a read-back that has arrived is plotted (the figure drops one from
+        // before a restart), then the next is queued when due.
+        if let Some((ticket, copy)) = &self.sample {
+            if let Some(bytes) = copy.try_take(&viewer.gpu) {
+                let ticket = *ticket;
+                self.sample = None;
+                let bytes = bytes.map_err(|e| JsError::new(&e))?;
+                let (_, velocities) = crate::render::BoidsCompute::unpack(&bytes);
+                self.scene
+                    .record_gpu_sample(ticket, &velocities)
+                    .map_err(js)?;
+            }
+        }
+        if self.sample.is_none() {
+            if let Some(ticket) = self.scene.gpu_sample_due() {
+                self.sample = Some((ticket, gpu.start_read_back(&viewer.gpu)));
+            }
+        }
         Ok(steps)
     }
     /// A new flock of `count` boids, in [2, 3000].
@@ -79,6 +101,7 @@ impl FlockScene {
         self.scene.set_count(count).map_err(js)?;
         // Only a new flock drops the GPU's: a rejected count keeps the flock where it is.
         self.gpu = None;
+        self.sample = None;
         Ok(())
     }
     /// `rule`: "cohesion", "alignment" or "separation"; weight in [0, 10], radius in [0.05, 3] m.
@@ -154,8 +177,8 @@ impl FlockScene {
         viewer.present()?;
         Ok(note)
     }
-    /// `[t, φ, …]`: the flock's polarisation after every step since it last started (empty in
-    /// GPU mode).
+    /// `[t, φ, speed ratio, …]`: the flock's order after every step since it last started (in
+    /// GPU mode every 0.1 s, read back from the GPU).
     #[wasm_bindgen(js_name = plotSamples)]
     pub fn plot_samples(&self) -> Vec<f32> {
         self.scene.plot_samples()

@@ -358,3 +358,33 @@ test('lesson 11 on WebGPU: the GPU-stepped particles are drawn as atlas sprites,
     await context.close();
   }
 });
+
+test('lesson 12 on WebGPU: the order plot goes on while the GPU steps the flock', async () => {
+  // The flock stays on the GPU; the page reads its velocities back every 0.1 s of flight and the
+  // plot draws their polarisation, so a GPU run is a line, not empty axes.
+  const context = await launch('webgpu');
+  try {
+    const { page, problems } = await open(context, '/lessons/12-boids/?backend=webgpu', 1600, 1000);
+    const fig = '#fig-flock';
+    await page.locator(fig).scrollIntoViewIfNeeded();
+    await setControl(page, fig, 'step on', 'GPU');
+    // A new count starts the flock and its plot again, so every sample after it is the GPU's.
+    await setControl(page, fig, 'boids', 310);
+    await page.waitForTimeout(2500);
+    await frames(page, 8);
+    const note = await page.locator('#flock-note').textContent();
+    assert.match(note, /order plot reads the flock back from the GPU every 0\.1 s/, note);
+    const plot = page.locator('#flock-order-plot');
+    const purple = await plot.locator('canvas').evaluate((c) => {
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x94) < 40 && Math.abs(d[i + 1] - 0x4f) < 40 && Math.abs(d[i + 2] - 0xc9) < 40) n++;
+      return n;
+    });
+    await page.locator(fig).screenshot({ path: 'tests/screenshots/12-boids-flock-gpu-webgpu.png' });
+    assert.ok(purple > 50, `the polarisation line is not drawn on the GPU (${purple} purple pixels)`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
