@@ -22,6 +22,15 @@ const EASES = {
 };
 const cursor = (plot, x) => plot.setCursor?.(x);
 
+// What the 2D figures draw depends on the timeline's time, their canvas's size and what the reader
+// did (controls, drags, clicks: every change here comes from an input event). `inputs` counts
+// those events, so a figure draws a frame only when one of the three changed: a paused page the
+// reader does not touch draws nothing (each redrawn canvas costs a composited frame).
+let inputs = 0;
+for (const type of ['input', 'change', 'click', 'pointerdown', 'pointermove', 'pointerup', 'keydown', 'wheel']) {
+  document.addEventListener(type, () => { inputs += 1; }, { capture: true, passive: true });
+}
+
 /** A timeline whose clock reads the keys' own seconds (`start` + time since the first key). */
 class KeyTimeline extends Timeline {
   start = 0;
@@ -47,6 +56,16 @@ function makeView(canvas, reserveBottom = 0) {
     v.scale = Math.max(1e-3, Math.min(r.width / (x1 - x0), h / (y1 - y0)));
     v.ox = r.width / 2 - (v.scale * (x0 + x1)) / 2;
     v.oy = h / 2 + (v.scale * (y0 + y1)) / 2;
+    drawn = '';
+  };
+  // Set by `layout`, which clears the canvas: the next frame must draw.
+  let drawn = '';
+  /** True when a frame at time `t` must be drawn: `t`, the size or the reader's input changed. */
+  v.stale = (t) => {
+    const key = `${t} ${inputs} ${v.w}x${v.h}`;
+    if (key === drawn) return false;
+    drawn = key;
+    return true;
   };
   v.toPx = (x, y) => [v.ox + x * v.scale, v.oy - y * v.scale];
   v.toWorld = (px, py) => [(px - v.ox) / v.scale, (v.oy - py) / v.scale];
@@ -431,7 +450,7 @@ if (keysViewer) {
     const tau = timeline.time;
     const text = scene.draw(keysViewer, tau);
     if (text !== lastNote) { note.textContent = text; lastNote = text; }
-    draw(tau);
+    if (view.stale(tau)) draw(tau);
     markDrawn('#fig-keys');
   });
 }
@@ -503,6 +522,7 @@ function compareFigure(id) {
   listen(sync);
   lesson.onFrame(() => {
     const tau = timeline.time;
+    if (!view.stale(tau)) return;
     const { ctx } = view;
     ctx.clearRect(0, 0, view.w, view.h);
     view.grid();
@@ -609,6 +629,7 @@ if (lagrangeViewer) {
   gui.onChange(apply);
   apply();
   lesson.onFrame(() => {
+    if (!view.stale(0)) return;
     const { ctx } = view;
     ctx.clearRect(0, 0, view.w, view.h);
     view.grid();
@@ -700,6 +721,7 @@ if (lagrangeViewer) {
   });
   lesson.onFrame(() => {
     const tau = timeline.time;
+    if (!view.stale(tau)) return;
     // Beside or under each other, refitted when the data or the canvas's size changes.
     const size = `${view.w}x${view.h}`;
     if (layers.size !== size) {
