@@ -34,7 +34,7 @@ fn blending_scenes_reject_bad_input_with_a_message() {
     assert!(message(b.set_clips("walk".into(), "moonwalk".into()).unwrap_err()).contains("clip B"));
     assert!(message(b.set_mask("tail".into()).unwrap_err()).contains("mask"));
     assert!(
-        message(b.set_additive("none".into(), f32::NAN).unwrap_err()).contains("additive weight")
+        message(b.set_additive("none".into(), f32::NAN).unwrap_err()).contains("layer weight")
     );
     b.set_clips("run".into(), "idle".into()).unwrap();
     assert!(b.duration_sec() > 0.5);
