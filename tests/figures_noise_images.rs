@@ -110,8 +110,10 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
     s.draw(&mut f, ids);
     let squares: Vec<_> = f.segments_of(palette::ORANGE).collect();
     let triangles: Vec<_> = f.segments_of(palette::TEAL).collect();
-    // 6 cells: 7 vertical and 7 horizontal lines.
+    // 6 cells: 7 vertical and 7 horizontal lines, all wide strokes (none of them 1 px lines).
     assert_eq!(squares.len(), 14);
+    assert!(f.lines.is_empty());
+    assert!(f.strokes.iter().all(|s| s.width_px == LATTICE_PX));
     assert!(triangles.len() > 50);
     for (a, b) in triangles {
         for p in [a, b] {

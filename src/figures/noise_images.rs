@@ -94,6 +94,8 @@ impl Default for NoiseImages {
 
 /// Where the three squares stand (x of their centres).
 const PLACES: [f32; 3] = [-2.2, 0.0, 2.2];
+/// Width of the lattice lines in CSS pixels: wide enough to read over the noise's greys.
+pub const LATTICE_PX: f32 = 2.0;
 
 impl NoiseImages {
     pub fn new() -> Self {
@@ -262,8 +264,8 @@ impl NoiseImages {
         )
     }
 
-    /// Lattice lines over the first two squares: Perlin's square cells and simplex noise's
-    /// triangles (a square grid in skewed coordinates, unskewed), clipped to the image.
+    /// Lattice lines over the first two squares, 2 px wide: Perlin's square cells and simplex
+    /// noise's triangles (a square grid in skewed coordinates, unskewed), clipped to the image.
     fn draw_lattices(&self, frame: &mut Frame) {
         let lift = 0.01;
         // Image point (x, y) in noise units -> world on the square at `cx`.
@@ -277,15 +279,17 @@ impl NoiseImages {
         let n = self.cells.ceil() as i32;
         for k in 0..=n {
             let t = (k as f32).min(self.cells);
-            frame.line(
+            frame.wide_line(
                 world(PLACES[0], t, 0.0),
                 world(PLACES[0], t, self.cells),
                 palette::ORANGE,
+                LATTICE_PX,
             );
-            frame.line(
+            frame.wide_line(
                 world(PLACES[0], 0.0, t),
                 world(PLACES[0], self.cells, t),
                 palette::ORANGE,
+                LATTICE_PX,
             );
         }
         // Simplex: lines i = const, j = const and i − j = const of the skewed grid, clipped to
@@ -301,10 +305,11 @@ impl NoiseImages {
         let steps = 4 * m;
         let mut segment = |a: (f32, f32), b: (f32, f32)| {
             if inside(a) && inside(b) {
-                frame.line(
+                frame.wide_line(
                     world(PLACES[1], a.0, a.1),
                     world(PLACES[1], b.0, b.1),
                     palette::TEAL,
+                    LATTICE_PX,
                 );
             }
         };

@@ -942,6 +942,7 @@ impl Renderer {
                 pass.set_vertex_buffer(0, buffer.slice(..));
                 pass.draw(0..6, 0..count);
             }
+            self.textured.draw_quads(&mut pass, &self.frame);
             // Wide lines and markers after everything opaque: their antialiased edges blend
             // over what lies behind them, and they test depth without writing it (later ones
             // draw over earlier ones; markers over lines).
@@ -956,7 +957,7 @@ impl Renderer {
                 pass.draw(0..6, 0..self.frame.markers.len() as u32);
             }
             self.textured
-                .draw(&mut pass, &self.frame, &self.gpu_sprites);
+                .draw_sprites(&mut pass, &self.frame, &self.gpu_sprites);
         }
         self.gpu_sprites.clear();
         self.frame.clear();

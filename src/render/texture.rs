@@ -406,27 +406,34 @@ impl Textured {
             .write(gpu, bytemuck::cast_slice(&frame.sprites));
     }
 
-    /// Draws this frame's quads, then its sprites (last: they blend over everything), then the
-    /// sprites compute shaders wrote (`gpu_sprites`: buffers and counts, with the frame's atlas).
+    /// Draws this frame's textured quads. They are opaque images (noise pictures, the sprite
+    /// atlas on a board) and write depth, so the renderer draws them with the other opaque
+    /// geometry, before the wide lines and markers that lie on them and only test depth.
     /// Unknown texture ids are skipped.
-    pub(super) fn draw<'a>(
+    pub(super) fn draw_quads<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>, frame: &Frame) {
+        if frame.quads.is_empty() {
+            return;
+        }
+        pass.set_pipeline(&self.quad_pipeline);
+        pass.set_bind_group(0, &self.globals_group, &[]);
+        for (i, q) in frame.quads.iter().enumerate() {
+            let Some(t) = self.textures.get(q.texture.0) else {
+                continue;
+            };
+            pass.set_bind_group(1, &self.quad_group, &[(i as u64 * QUAD_STRIDE) as u32]);
+            pass.set_bind_group(2, &t.group, &[]);
+            pass.draw(0..6, 0..1);
+        }
+    }
+
+    /// Draws this frame's sprites, then the sprites compute shaders wrote (`gpu_sprites`:
+    /// buffers and counts, with the frame's atlas). They come last: they blend over everything.
+    pub(super) fn draw_sprites<'a>(
         &'a self,
         pass: &mut wgpu::RenderPass<'a>,
         frame: &Frame,
         gpu_sprites: &'a [(wgpu::Buffer, u32)],
     ) {
-        if !frame.quads.is_empty() {
-            pass.set_pipeline(&self.quad_pipeline);
-            pass.set_bind_group(0, &self.globals_group, &[]);
-            for (i, q) in frame.quads.iter().enumerate() {
-                let Some(t) = self.textures.get(q.texture.0) else {
-                    continue;
-                };
-                pass.set_bind_group(1, &self.quad_group, &[(i as u64 * QUAD_STRIDE) as u32]);
-                pass.set_bind_group(2, &t.group, &[]);
-                pass.draw(0..6, 0..1);
-            }
-        }
         let atlas = frame.sprite_texture.and_then(|id| self.textures.get(id.0));
         let Some(t) = atlas else { return };
         if frame.sprites.is_empty() && gpu_sprites.is_empty() {

@@ -262,3 +262,42 @@ async fn a_contact_shadow_darkens_the_ground_under_an_object() {
         green[1]
     );
 }
+
+#[wasm_bindgen_test]
+async fn a_wide_line_lying_on_a_textured_quad_stays_visible() {
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    renderer.px_per_css = 1.0;
+    // A light grey 2 × 2 image on the square [−1, 1]² turned to face the camera (the xz plane
+    // rotated into the xy plane), and a 3 px line 1 cm in front of it: the quad writes depth
+    // and the line only tests it, so the quad must be drawn first or it paints over the line.
+    let grey = [200u8, 200, 200, 255].repeat(4);
+    let texture = renderer.create_texture(&gpu, 2, 2, &grey).unwrap();
+    renderer.frame.textured_quad(
+        texture,
+        glam::Mat4::from_rotation_x(std::f32::consts::FRAC_PI_2),
+        inbetween::draw::UvRect::FULL,
+    );
+    renderer.frame.wide_line(
+        Vec3::new(0.3, -0.8, 0.01),
+        Vec3::new(0.3, 0.8, 0.01),
+        palette::KEY,
+        3.0,
+    );
+    let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+    // The row through the middle: the quad's grey around the centre, and one dark run of
+    // about 3 pixels where the line crosses it.
+    let centre = ((H / 2 * W + W / 2) * 4) as usize;
+    assert!(
+        (150..=230).contains(&pixels[centre + 1]),
+        "{}: the quad is {:?} at the centre",
+        gpu.backend_name,
+        &pixels[centre..centre + 3]
+    );
+    let dark = dark_runs(&pixels, H / 2);
+    assert!(
+        dark.len() == 1 && (2..=4).contains(&dark[0].1) && dark[0].0 > W / 2,
+        "{}: dark runs {dark:?} along the middle row",
+        gpu.backend_name
+    );
+}
