@@ -863,3 +863,35 @@ fn at_a_150_degree_bend_lbs_keeps_a_quarter_of_the_ring_and_82_percent_of_the_tu
     f.draw(&mut Frame::default(), IDS).unwrap();
     assert_eq!(crossed(&f), 0);
 }
+
+#[test]
+fn the_human_skins_again_only_when_the_time_or_a_setting_changed() {
+    let mut h = HumanFigure::new();
+    assert!(h.skin(0.5).unwrap(), "the first call skins");
+    assert!(h.mesh.take_dirty());
+    // A paused page asks again at the same time: nothing to do, nothing to upload.
+    assert!(!h.skin(0.5).unwrap());
+    assert!(!h.mesh.take_dirty());
+    assert!(h.skin(0.6).unwrap(), "a new time skins");
+    assert!(h.mesh.take_dirty());
+    // Every setting the bodies depend on makes the same time skin again.
+    let changes: [(&str, fn(&mut HumanFigure)); 6] = [
+        ("method", |h| h.set_method("LBS").unwrap()),
+        ("clip", |h| {
+            let name = h.clip_names()[0].clone();
+            h.set_clip(&name).unwrap()
+        }),
+        ("falloff", |h| h.set_falloff(0.05).unwrap()),
+        ("compare", |h| h.set_compare(true)),
+        ("gpu", |h| h.set_gpu(true)),
+        ("cpu", |h| h.set_gpu(false)),
+    ];
+    for (what, change) in changes {
+        assert!(!h.skin(0.6).unwrap(), "{what}: nothing changed yet");
+        change(&mut h);
+        assert!(h.skin(0.6).unwrap(), "{what} skins again");
+    }
+    // A rejected setting changes nothing, so nothing is skinned again.
+    assert!(h.set_method("neither").is_err());
+    assert!(!h.skin(0.6).unwrap());
+}

@@ -149,7 +149,9 @@ if (humanViewer) {
   let frameMs = 0;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
-    times.push(scene.skin(t));
+    // Paused with nothing changed, the scene has nothing to skin (undefined): the mean stays.
+    const ms = scene.skin(t);
+    if (ms !== undefined) times.push(ms);
     if (times.length > 60) times.shift();
     const mean = times.reduce((a, b) => a + b, 0) / times.length;
     frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;

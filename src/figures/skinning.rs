@@ -824,6 +824,10 @@ pub struct HumanFigure {
     /// The left thigh's and shin's parts (their closed ellipsoids): the leg whose volume the
     /// note and the plot give.
     leg: [usize; 2],
+    /// The clip time the bodies were last skinned at, `None` after a change of anything the
+    /// skinning depends on: [`HumanFigure::skin`] at that same time again has nothing to do (a
+    /// paused page would otherwise skin both bodies and upload them every frame).
+    skinned_at: Option<f32>,
 }
 
 /// What the character figure keeps in view ([`HumanFigure::view_box`]).
@@ -886,6 +890,7 @@ impl HumanFigure {
             compare: false,
             view: HumanView::Body,
             view_box: None,
+            skinned_at: None,
         };
         figure.repaint();
         figure
@@ -894,6 +899,7 @@ impl HumanFigure {
     /// LBS and DQS side by side (`true`) or the one `method` names.
     pub fn set_compare(&mut self, on: bool) {
         self.compare = on;
+        self.skinned_at = None;
         self.mesh.dirty = true;
         self.mesh_dqs.dirty = true;
     }
@@ -1078,6 +1084,7 @@ impl HumanFigure {
         f.clips = clips;
         f.clip = 0;
         f.heat_joint = None;
+        f.skinned_at = None;
         f.repaint();
         Ok(f)
     }
@@ -1094,6 +1101,7 @@ impl HumanFigure {
             .ok_or_else(|| format!("clip: no clip named {name:?}"))?;
         self.cursor = ClipCursor::new();
         self.view_box = None;
+        self.skinned_at = None;
         Ok(())
     }
 
@@ -1108,6 +1116,7 @@ impl HumanFigure {
             "DQS" => Method::Dqs,
             _ => return Err(format!("method: expected \"LBS\" or \"DQS\", got {name:?}")),
         };
+        self.skinned_at = None;
         Ok(())
     }
 
@@ -1119,6 +1128,7 @@ impl HumanFigure {
         self.character.skin = c.skin;
         self.falloff = f;
         self.view_box = None;
+        self.skinned_at = None;
         self.repaint();
         Ok(())
     }
@@ -1150,6 +1160,7 @@ impl HumanFigure {
     /// Skin on the GPU (in the vertex shader) or on the CPU.
     pub fn set_gpu(&mut self, on: bool) {
         self.gpu = on;
+        self.skinned_at = None;
         self.mesh.dirty = true;
     }
 
@@ -1162,9 +1173,19 @@ impl HumanFigure {
         std::mem::take(&mut self.gpu_dirty)
     }
 
-    /// Samples the clip at `time_sec` and skins the body.
-    pub fn skin(&mut self, time_sec: f32) -> Result<(), String> {
+    /// Samples the clip at `time_sec` and skins the body. Returns false, doing nothing, when
+    /// the body is already skinned at this time with these settings.
+    pub fn skin(&mut self, time_sec: f32) -> Result<bool, String> {
         let t = super::finite("time", time_sec)?;
+        if self.skinned_at == Some(t) {
+            return Ok(false);
+        }
+        self.skin_now(t)?;
+        self.skinned_at = Some(t);
+        Ok(true)
+    }
+
+    fn skin_now(&mut self, t: f32) -> Result<(), String> {
         let c = &self.character;
         self.clips[self.clip].sample(t, &mut self.cursor, &mut self.pose);
         c.skeleton

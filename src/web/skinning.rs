@@ -317,11 +317,12 @@ impl SkinnedHumanScene {
     }
 
     /// Samples the clip at `time_sec`, skins the body on the CPU; returns the milliseconds the
-    /// skinning took (sampling, palette and LBS or DQS).
-    pub fn skin(&mut self, time_sec: f32) -> Result<f64, JsError> {
+    /// skinning took (sampling, palette and LBS or DQS), or `undefined` when the body was
+    /// already skinned at this time with these settings (a paused page) and nothing was done.
+    pub fn skin(&mut self, time_sec: f32) -> Result<Option<f64>, JsError> {
         let start = now_ms();
-        self.scene.skin(time_sec).map_err(js)?;
-        Ok(now_ms() - start)
+        let skinned = self.scene.skin(time_sec).map_err(js)?;
+        Ok(skinned.then(|| now_ms() - start))
     }
 
     /// Skins in the vertex shader (`true`) or on the CPU (`false`, the default).
