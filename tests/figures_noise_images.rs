@@ -114,6 +114,10 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
     assert_eq!(squares.len(), 14);
     assert!(f.lines.is_empty());
     assert!(f.strokes.iter().all(|s| s.width_px == LATTICE_PX));
+    // Finer lattices get thinner lines, never under 1 px.
+    assert_eq!(lattice_px(6.0), LATTICE_PX);
+    assert!(lattice_px(9.0) < LATTICE_PX && lattice_px(9.0) > 1.0);
+    assert_eq!(lattice_px(25.5), 1.0);
     assert!(triangles.len() > 50);
     for (a, b) in triangles {
         for p in [a, b] {

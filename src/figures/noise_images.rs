@@ -94,8 +94,16 @@ impl Default for NoiseImages {
 
 /// Where the three squares stand (x of their centres).
 const PLACES: [f32; 3] = [-2.2, 0.0, 2.2];
-/// Width of the lattice lines in CSS pixels: wide enough to read over the noise's greys.
+/// Width of the lattice lines in CSS pixels at up to 6 cells across: wide enough to read over the
+/// noise's greys. Finer lattices get thinner lines ([`lattice_px`]).
 pub const LATTICE_PX: f32 = 2.0;
+
+/// The lattice lines' width for `cells` cells across: [`LATTICE_PX`] up to 6 cells, then
+/// thinner down to 1 px from 12 cells, so that a fine lattice (simplex noise draws three
+/// directions of lines) does not cover the image it explains.
+pub fn lattice_px(cells: f32) -> f32 {
+    (LATTICE_PX * 6.0 / cells).clamp(1.0, LATTICE_PX)
+}
 
 impl NoiseImages {
     pub fn new() -> Self {
@@ -264,10 +272,11 @@ impl NoiseImages {
         )
     }
 
-    /// Lattice lines over the first two squares, 2 px wide: Perlin's square cells and simplex
+    /// Lattice lines over the first two squares, [`lattice_px`] wide: Perlin's square cells and simplex
     /// noise's triangles (a square grid in skewed coordinates, unskewed), clipped to the image.
     fn draw_lattices(&self, frame: &mut Frame) {
         let lift = 0.01;
+        let width = lattice_px(self.cells);
         // Image point (x, y) in noise units -> world on the square at `cx`.
         let world = |cx: f32, x: f32, y: f32| {
             Vec3::new(
@@ -283,13 +292,13 @@ impl NoiseImages {
                 world(PLACES[0], t, 0.0),
                 world(PLACES[0], t, self.cells),
                 palette::ORANGE,
-                LATTICE_PX,
+                width,
             );
             frame.wide_line(
                 world(PLACES[0], 0.0, t),
                 world(PLACES[0], self.cells, t),
                 palette::ORANGE,
-                LATTICE_PX,
+                width,
             );
         }
         // Simplex: lines i = const, j = const and i − j = const of the skewed grid, clipped to
@@ -309,7 +318,7 @@ impl NoiseImages {
                     world(PLACES[1], a.0, a.1),
                     world(PLACES[1], b.0, b.1),
                     palette::TEAL,
-                    LATTICE_PX,
+                    width,
                 );
             }
         };
