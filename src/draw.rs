@@ -10,6 +10,7 @@
 
 pub use crate::texture::{SpriteInstance, TextureId, TexturedQuad, UvRect};
 
+pub mod inset;
 pub mod layout;
 use glam::{Mat4, Quat, Vec3, Vec4};
 
@@ -208,6 +209,8 @@ pub struct Frame {
     /// anchors) at any canvas size, keeping the reader's orbit. Empty: the figure places its
     /// camera itself.
     pub keep_in_view: Vec<Vec3>,
+    /// A second, small view of this frame from above or the side ([`inset::Inset`]).
+    pub inset: Option<inset::Inset>,
 }
 
 /// A mesh made with the renderer's GPU-skinning path (`Renderer::skin`), by creation order.
@@ -577,6 +580,25 @@ impl Frame {
         self.strokes.clear();
         self.markers.clear();
         self.keep_in_view.clear();
+        self.inset = None;
+    }
+
+    /// Adds an inset: the box `min`–`max` seen along `view` (orthographic) in a small square in
+    /// the canvas's bottom-right corner, titled `title` (see [`inset`]). A later call replaces
+    /// an earlier one.
+    pub fn inset(
+        &mut self,
+        view: inset::InsetView,
+        title: impl Into<String>,
+        min: Vec3,
+        max: Vec3,
+    ) {
+        self.inset = Some(inset::Inset {
+            view,
+            title: title.into(),
+            min,
+            max,
+        });
     }
 
     /// Draws `uv` of `texture` on the square `[−1, 1]²` of the xz plane placed by `model`.
@@ -678,6 +700,18 @@ impl Frame {
         }
         for row in self.skin_palette.iter().flatten() {
             row.to_array().iter().for_each(|x| eat(x.to_bits()));
+        }
+        if let Some(inset) = &self.inset {
+            eat(inset.view as u32);
+            inset
+                .min
+                .to_array()
+                .iter()
+                .chain(&inset.max.to_array())
+                .for_each(|x| eat(x.to_bits()));
+            inset.title.bytes().for_each(|b| eat(b as u32));
+        } else {
+            eat(u32::MAX);
         }
         h
     }

@@ -114,6 +114,11 @@ fn inside(top_left: Vec2, size: Vec2, canvas: Vec2) -> Vec2 {
 /// Places `labels` on a canvas of `canvas` CSS pixels (see the module's description). Labels
 /// whose anchor is out of view are not shown.
 pub fn place(labels: &[LabelBox], canvas: Vec2) -> Vec<Placement> {
+    place_avoiding(labels, canvas, &[])
+}
+
+/// [`place`], keeping every label off the `obstacles` too (a figure's inset).
+pub fn place_avoiding(labels: &[LabelBox], canvas: Vec2, obstacles: &[Rect]) -> Vec<Placement> {
     let mut order: Vec<usize> = (0..labels.len()).collect();
     // Stable: equal priorities keep the scene's order.
     order.sort_by_key(|&i| std::cmp::Reverse(labels[i].priority));
@@ -123,7 +128,8 @@ pub fn place(labels: &[LabelBox], canvas: Vec2) -> Vec<Placement> {
         leader_to: None,
     };
     let mut out = vec![hidden; labels.len()];
-    let mut taken: Vec<Rect> = Vec::with_capacity(labels.len());
+    let mut taken: Vec<Rect> = Vec::with_capacity(labels.len() + obstacles.len());
+    taken.extend_from_slice(obstacles);
     for i in order {
         let label = &labels[i];
         if !label.visible || !label.anchor.is_finite() || !label.size.is_finite() {

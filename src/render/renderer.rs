@@ -201,6 +201,11 @@ pub struct Renderer {
     marker_pipeline: wgpu::RenderPipeline,
     globals: wgpu::Buffer,
     globals_group: wgpu::BindGroup,
+    /// The inset's camera ([`crate::draw::inset`]): the same layout as `globals`, its own buffer
+    /// (both are written before the pass runs), and the pipeline of its background.
+    inset_globals: wgpu::Buffer,
+    inset_globals_group: wgpu::BindGroup,
+    inset_pipeline: wgpu::RenderPipeline,
     object_layout: wgpu::BindGroupLayout,
     objects: StreamBuffer,
     object_group: wgpu::BindGroup,
@@ -285,6 +290,20 @@ impl Renderer {
                 resource: globals.as_entire_binding(),
             }],
         });
+        let inset_globals = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("inset globals"),
+            size: std::mem::size_of::<Globals>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let inset_globals_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("inset globals"),
+            layout: &globals_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: inset_globals.as_entire_binding(),
+            }],
+        });
         let objects = StreamBuffer::new(
             device,
             "objects",
@@ -306,6 +325,7 @@ impl Renderer {
         let point_shader = shader("point", include_str!("shaders/point.wgsl"));
         let stroke_shader = shader("stroke", include_str!("shaders/stroke.wgsl"));
         let marker_shader = shader("marker", include_str!("shaders/marker.wgsl"));
+        let inset_shader = shader("inset", include_str!("shaders/inset.wgsl"));
         let layout_with = |layouts: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: None,
@@ -420,6 +440,41 @@ impl Renderer {
             None,
             false,
         );
+        // The inset's background writes its colour and the far depth whatever lies there.
+        let inset_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("inset background"),
+            layout: Some(&plain_layout),
+            vertex: wgpu::VertexState {
+                module: &inset_shader,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Always),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: wgpu::MultisampleState {
+                count: SAMPLE_COUNT,
+                ..Default::default()
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: &inset_shader,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format,
+                    blend: None,
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
         let textured = super::texture::Textured::new(
             device,
             format,
@@ -435,6 +490,9 @@ impl Renderer {
             marker_pipeline,
             globals,
             globals_group,
+            inset_globals,
+            inset_globals_group,
+            inset_pipeline,
             object_layout,
             objects,
             object_group,
@@ -835,6 +893,35 @@ impl Renderer {
         };
         gpu.queue
             .write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
+        // The inset: its square in device pixels (inside the target) and its own camera.
+        let inset = self.frame.inset.as_ref().and_then(|inset| {
+            let (view, proj, eye) = crate::draw::inset::inset_camera(inset)?;
+            let scale = self.px_per_css.max(1e-3);
+            let css = glam::Vec2::new(size.0 as f32, size.1 as f32) / scale;
+            let rect = crate::draw::inset::inset_rect(css);
+            let border = (crate::draw::inset::INSET_BORDER_PX * scale)
+                .round()
+                .max(1.0) as u32;
+            let x = (rect.min.x * scale).round().max(0.0) as u32;
+            let y = (rect.min.y * scale).round().max(0.0) as u32;
+            let side = (rect.size.x * scale).round() as u32;
+            let side = side
+                .min(size.0.saturating_sub(x))
+                .min(size.1.saturating_sub(y));
+            (side > 2 * border + 2).then_some((view, proj, eye, [x, y, side, border]))
+        });
+        if let Some((view, proj, eye, [_, _, side, border])) = inset {
+            let inner = (side - 2 * border) as f32;
+            let inset_globals = Globals {
+                view: view.to_cols_array(),
+                proj: proj.to_cols_array(),
+                eye: eye.extend(1.0).to_array(),
+                params: [globals.params[0], inner, inner, self.px_per_css],
+                ..globals
+            };
+            gpu.queue
+                .write_buffer(&self.inset_globals, 0, bytemuck::bytes_of(&inset_globals));
+        }
 
         self.scratch_objects.clear();
         for draw in &self.frame.meshes {
@@ -910,58 +997,90 @@ impl Renderer {
                 multiview_mask: None,
             });
             pass.set_bind_group(0, &self.globals_group, &[]);
-            if !self.frame.meshes.is_empty() {
-                pass.set_pipeline(&self.mesh_pipeline);
-                for (i, draw) in self.frame.meshes.iter().enumerate() {
-                    let Some(Some(mesh)) = self.meshes.get(draw.mesh.0) else {
-                        continue;
-                    };
-                    pass.set_bind_group(
-                        1,
-                        &self.object_group,
-                        &[(i as u64 * OBJECT_STRIDE) as u32],
-                    );
-                    pass.set_vertex_buffer(0, mesh.vertices.slice(..));
-                    pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-                    pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+            self.draw_scene(&mut pass, true);
+            if let Some((_, _, _, [x, y, side, border])) = inset {
+                // The border's square, then the fill's inside it, then the frame again with the
+                // inset's camera (group 0), clipped to the fill.
+                pass.set_pipeline(&self.inset_pipeline);
+                for (i, (at, width)) in [(0, side), (border, side - 2 * border)]
+                    .into_iter()
+                    .enumerate()
+                {
+                    let (ix, iy) = (x + at, y + at);
+                    pass.set_viewport(ix as f32, iy as f32, width as f32, width as f32, 0.0, 1.0);
+                    pass.set_scissor_rect(ix, iy, width, width);
+                    let first = 3 * i as u32;
+                    pass.draw(first..first + 3, 0..1);
                 }
+                pass.set_bind_group(0, &self.inset_globals_group, &[]);
+                self.draw_scene(&mut pass, false);
+                // The whole target again: WebGL2 resolves the multisampled colour with a blit
+                // that the scissor rectangle would clip to the inset.
+                pass.set_viewport(0.0, 0.0, size.0 as f32, size.1 as f32, 0.0, 1.0);
+                pass.set_scissor_rect(0, 0, size.0, size.1);
             }
-            self.skin.draw(&mut pass, &self.frame);
-            if !self.frame.lines.is_empty() {
-                pass.set_pipeline(&self.line_pipeline);
-                pass.set_vertex_buffer(0, self.lines.buffer.slice(..));
-                pass.draw(0..self.frame.lines.len() as u32, 0..1);
-            }
-            if !self.frame.points.is_empty() {
-                pass.set_pipeline(&self.point_pipeline);
-                pass.set_vertex_buffer(0, self.points.buffer.slice(..));
-                pass.draw(0..6, 0..self.frame.points.len() as u32);
-            }
-            for (buffer, count) in self.gpu_points.drain(..) {
-                pass.set_pipeline(&self.point_pipeline);
-                pass.set_vertex_buffer(0, buffer.slice(..));
-                pass.draw(0..6, 0..count);
-            }
-            self.textured.draw_quads(&mut pass, &self.frame);
-            // Wide lines and markers after everything opaque: their antialiased edges blend
-            // over what lies behind them, and they test depth without writing it (later ones
-            // draw over earlier ones; markers over lines).
-            if !self.frame.strokes.is_empty() {
-                pass.set_pipeline(&self.stroke_pipeline);
-                pass.set_vertex_buffer(0, self.strokes.buffer.slice(..));
-                pass.draw(0..6, 0..self.frame.strokes.len() as u32);
-            }
-            if !self.frame.markers.is_empty() {
-                pass.set_pipeline(&self.marker_pipeline);
-                pass.set_vertex_buffer(0, self.markers.buffer.slice(..));
-                pass.draw(0..6, 0..self.frame.markers.len() as u32);
-            }
-            self.textured
-                .draw_sprites(&mut pass, &self.frame, &self.gpu_sprites);
         }
+        self.gpu_points.clear();
         self.gpu_sprites.clear();
         self.frame.clear();
         encoder.finish()
+    }
+
+    /// Records the frame's draws into `pass` (group 0, the camera, is already set): the opaque
+    /// geometry (meshes, GPU-skinned meshes, lines, points, textured squares), then the wide
+    /// lines and markers, then, `with_textures`, the sprites. Without textures (the inset, whose
+    /// camera is not the textured pipelines' group 0) the squares and sprites are left out.
+    fn draw_scene<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>, with_textures: bool) {
+        if !self.frame.meshes.is_empty() {
+            pass.set_pipeline(&self.mesh_pipeline);
+            for (i, draw) in self.frame.meshes.iter().enumerate() {
+                let Some(Some(mesh)) = self.meshes.get(draw.mesh.0) else {
+                    continue;
+                };
+                pass.set_bind_group(1, &self.object_group, &[(i as u64 * OBJECT_STRIDE) as u32]);
+                pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+            }
+        }
+        self.skin.draw(pass, &self.frame);
+        if !self.frame.lines.is_empty() {
+            pass.set_pipeline(&self.line_pipeline);
+            pass.set_vertex_buffer(0, self.lines.buffer.slice(..));
+            pass.draw(0..self.frame.lines.len() as u32, 0..1);
+        }
+        if !self.frame.points.is_empty() {
+            pass.set_pipeline(&self.point_pipeline);
+            pass.set_vertex_buffer(0, self.points.buffer.slice(..));
+            pass.draw(0..6, 0..self.frame.points.len() as u32);
+        }
+        for (buffer, count) in &self.gpu_points {
+            pass.set_pipeline(&self.point_pipeline);
+            pass.set_vertex_buffer(0, buffer.slice(..));
+            pass.draw(0..6, 0..*count);
+        }
+        if with_textures && !self.frame.quads.is_empty() {
+            self.textured.draw_quads(pass, &self.frame);
+            // The quads bind their own group 0 (the same camera buffer): back to the renderer's.
+            pass.set_bind_group(0, &self.globals_group, &[]);
+        }
+        // Wide lines and markers after everything opaque: their antialiased edges blend over
+        // what lies behind them, and they test depth without writing it (later ones draw over
+        // earlier ones; markers over lines).
+        if !self.frame.strokes.is_empty() {
+            pass.set_pipeline(&self.stroke_pipeline);
+            pass.set_vertex_buffer(0, self.strokes.buffer.slice(..));
+            pass.draw(0..6, 0..self.frame.strokes.len() as u32);
+        }
+        if !self.frame.markers.is_empty() {
+            pass.set_pipeline(&self.marker_pipeline);
+            pass.set_vertex_buffer(0, self.markers.buffer.slice(..));
+            pass.draw(0..6, 0..self.frame.markers.len() as u32);
+        }
+        if with_textures {
+            self.textured
+                .draw_sprites(pass, &self.frame, &self.gpu_sprites);
+        }
     }
 }
 

@@ -25,6 +25,8 @@ pub struct Viewer {
     hidden: crate::draw::Frame,
     /// Whether `hidden` holds a frame not drawn yet.
     pending: bool,
+    /// The last frame had an inset: its title is the last of `labels`.
+    inset_title: bool,
     /// Whether the camera fits the frame's declared points ([`crate::draw::Frame::keep_in_view`])
     /// at every present: on until the reader zooms or pans (orbiting keeps it), back on with
     /// [`Viewer::frame_all`].
@@ -58,6 +60,7 @@ impl Viewer {
             visible: true,
             hidden: crate::draw::Frame::default(),
             pending: false,
+            inset_title: false,
             fitting: true,
             declares_view: false,
             home: OrbitCamera::default(),
@@ -179,6 +182,22 @@ impl Viewer {
         }
         let view_proj = self.camera.projection(w / h) * self.camera.view();
         self.labels = crate::draw::project_labels(&self.renderer.frame.labels, view_proj, w, h);
+        // The inset's title is the last label; the layout puts it inside the inset and keeps
+        // the others off the inset (`place_labels`).
+        self.inset_title = false;
+        if let Some(inset) = &frame.inset {
+            let at = crate::draw::inset::title_top_left(glam::Vec2::new(w, h));
+            self.labels.push(crate::draw::ScreenLabel {
+                x_px: at.x,
+                y_px: at.y,
+                visible: true,
+                text: inset.title.clone(),
+                css_color: crate::draw::palette::css(crate::draw::palette::DARK),
+                left: false,
+                priority: i32::MAX,
+            });
+            self.inset_title = true;
+        }
         self.last_fingerprint = self.renderer.frame.fingerprint();
         if !self.visible {
             // Keep it for when the canvas comes back (swapping reuses both frames' buffers).
@@ -309,8 +328,22 @@ impl Viewer {
             })
             .collect();
         let canvas = glam::Vec2::new(self.css_size.0, self.css_size.1);
+        let placements = if self.inset_title {
+            // Every label but the title keeps off the inset; the title sits inside it.
+            let inset = crate::draw::inset::inset_rect(canvas);
+            let n = boxes.len() - 1;
+            let mut p = crate::draw::layout::place_avoiding(&boxes[..n], canvas, &[inset]);
+            p.push(crate::draw::layout::Placement {
+                top_left: crate::draw::inset::title_top_left(canvas),
+                shown: true,
+                leader_to: None,
+            });
+            p
+        } else {
+            place(&boxes, canvas)
+        };
         let mut out = String::from("[");
-        for (i, (p, b)) in place(&boxes, canvas).iter().zip(&boxes).enumerate() {
+        for (i, (p, b)) in placements.iter().zip(&boxes).enumerate() {
             if i > 0 {
                 out.push(',');
             }

@@ -284,7 +284,10 @@ async fn a_wide_line_lying_on_a_textured_quad_stays_visible() {
         palette::KEY,
         3.0,
     );
-    let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+    let pixels = renderer
+        .render_to_rgba(&gpu, &camera(), W, H)
+        .await
+        .unwrap();
     // The row through the middle: the quad's grey around the centre, and one dark run of
     // about 3 pixels where the line crosses it.
     let centre = ((H / 2 * W + W / 2) * 4) as usize;
@@ -299,5 +302,74 @@ async fn a_wide_line_lying_on_a_textured_quad_stays_visible() {
         dark.len() == 1 && (2..=4).contains(&dark[0].1) && dark[0].0 > W / 2,
         "{}: dark runs {dark:?} along the middle row",
         gpu.backend_name
+    );
+}
+
+#[wasm_bindgen_test]
+async fn an_inset_shows_the_scene_from_above_in_its_corner() {
+    use inbetween::draw::inset::{inset_rect, InsetView};
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    renderer.px_per_css = 1.0;
+    let rect = inset_rect(glam::Vec2::new(W as f32, H as f32));
+    let at = |p: glam::Vec2| ((p.y.round() as u32 * W + p.x.round() as u32) * 4) as usize;
+    let centre = at(rect.min + 0.5 * rect.size);
+    let corner = at(rect.min + glam::Vec2::splat(6.0));
+    let border = at(rect.min + glam::Vec2::new(0.5, 0.5 * rect.size.y));
+    let mut shots = Vec::new();
+    for inset in [false, true] {
+        // A ball at the origin; from above it fills the middle of the inset's box.
+        renderer.frame.mesh(
+            MeshId::SPHERE,
+            glam::Mat4::from_scale(Vec3::splat(0.5)),
+            palette::ORANGE,
+        );
+        if inset {
+            renderer.frame.inset(
+                InsetView::Top,
+                "from above",
+                Vec3::splat(-1.0),
+                Vec3::splat(1.0),
+            );
+        }
+        shots.push(
+            renderer
+                .render_to_rgba(&gpu, &camera(), W, H)
+                .await
+                .unwrap(),
+        );
+    }
+    let rgb = |shot: &Vec<u8>, i: usize| [shot[i], shot[i + 1], shot[i + 2]];
+    let name = &gpu.backend_name;
+    // Without the inset that corner of the canvas is background; with it, the ball is in the
+    // inset's middle (orange: red well above blue), its fill is white and its border grey.
+    let (plain, with) = (&shots[0], &shots[1]);
+    assert!(
+        rgb(plain, centre) == rgb(plain, corner),
+        "{name}: no inset, yet {:?} and {:?}",
+        rgb(plain, centre),
+        rgb(plain, corner)
+    );
+    let ball = rgb(with, centre);
+    assert!(
+        ball[0] as i32 - ball[2] as i32 > 60,
+        "{name}: the inset's middle is {ball:?}"
+    );
+    assert!(
+        rgb(with, corner).iter().all(|&c| c >= 250),
+        "{name}: the fill is {:?}",
+        rgb(with, corner)
+    );
+    let edge = rgb(with, border);
+    assert!(
+        edge.iter().all(|&c| (100..=200).contains(&c)),
+        "{name}: the border is {edge:?}"
+    );
+    // The main view outside the inset is drawn too (WebGL2 resolves through the scissor).
+    let outside = at(glam::Vec2::new(4.0, 4.0));
+    assert_eq!(
+        rgb(with, outside),
+        rgb(plain, outside),
+        "{name}: the main view's corner"
     );
 }

@@ -1,0 +1,240 @@
+//! A second view of the same frame: a small square in the canvas's bottom-right corner that shows
+//! a box of the scene from above, from the side or from the front, with an orthographic camera.
+//!
+//! One perspective view hides depth: a 15 cm gap along the view direction, or how a flock spreads
+//! towards the viewer, cannot be judged from it. The inset draws the frame's meshes, lines,
+//! points, wide lines and markers again (not its textured squares and sprites, nor its labels)
+//! looking along one axis, so a distance along the main view's depth reads as a distance across
+//! the inset. A figure asks for it with [`super::Frame::inset`], naming the box to show; the
+//! renderer draws it after the main view, and the label layout keeps the main view's labels off
+//! it ([`inset_rect`]).
+
+use super::layout::Rect;
+use glam::{Mat4, Vec2, Vec3};
+
+/// Which way the inset looks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InsetView {
+    /// From above, looking down −y; +x to the right, −z up the inset.
+    Top,
+    /// From +x, looking along −x; −z to the right, +y up.
+    Side,
+    /// From +z, looking along −z; +x to the right, +y up.
+    Front,
+}
+
+impl InsetView {
+    /// The unit vector from the box's centre towards the inset's eye, and the inset's up.
+    fn axes(self) -> (Vec3, Vec3) {
+        match self {
+            InsetView::Top => (Vec3::Y, Vec3::NEG_Z),
+            InsetView::Side => (Vec3::X, Vec3::Y),
+            InsetView::Front => (Vec3::Z, Vec3::Y),
+        }
+    }
+}
+
+/// What a frame's inset shows: the view, its title and the box that fills it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Inset {
+    pub view: InsetView,
+    pub title: String,
+    pub min: Vec3,
+    pub max: Vec3,
+}
+
+/// The inset's side as a fraction of the canvas's shorter side.
+pub const INSET_FRACTION: f32 = 0.36;
+/// The inset's side at least (CSS pixels), unless the canvas is smaller.
+pub const INSET_MIN_PX: f32 = 110.0;
+/// Space between the inset and the canvas's edges (CSS pixels).
+pub const INSET_MARGIN_PX: f32 = 8.0;
+/// The inset's border width (CSS pixels).
+pub const INSET_BORDER_PX: f32 = 1.5;
+/// The share of the inset the box leaves empty around it (on each side, as a fraction of the
+/// box's larger extent).
+const INSET_PAD: f32 = 0.08;
+
+/// The inset's square on a canvas of `canvas` CSS pixels: in the bottom-right corner, with its
+/// border inside the rectangle.
+pub fn inset_rect(canvas: Vec2) -> Rect {
+    let shorter = canvas.min_element().max(0.0);
+    let room = (shorter - 2.0 * INSET_MARGIN_PX).max(0.0);
+    let side = (INSET_FRACTION * shorter).max(INSET_MIN_PX).min(room);
+    Rect {
+        min: canvas - Vec2::splat(INSET_MARGIN_PX + side),
+        size: Vec2::splat(side),
+    }
+}
+
+/// Where the inset's title goes: the top-left corner of its box, just inside the inset.
+pub fn title_top_left(canvas: Vec2) -> Vec2 {
+    inset_rect(canvas).min + Vec2::new(6.0, 4.0)
+}
+
+/// The inset's camera: view and orthographic projection (depth in [0, 1], as wgpu's) that fit
+/// the box into a square viewport looking along the inset's direction, and the eye (for the
+/// lighting and for what is drawn on top). `None` when the box is not finite or is empty.
+pub fn inset_camera(inset: &Inset) -> Option<(Mat4, Mat4, Vec3)> {
+    let (lo, hi) = (inset.min.min(inset.max), inset.min.max(inset.max));
+    if !lo.is_finite() || !hi.is_finite() {
+        return None;
+    }
+    let centre = 0.5 * (lo + hi);
+    let radius = 0.5 * (hi - lo).length();
+    if radius <= 1e-6 {
+        return None;
+    }
+    let (towards_eye, up) = inset.view.axes();
+    let eye = centre + towards_eye * (2.0 * radius + 1.0);
+    let view = glam::camera::rh::view::look_at_mat4(eye, centre, up);
+    let corners = (0..8).map(|i| {
+        let pick = |bit: usize, a: f32, b: f32| if i & bit == 0 { a } else { b };
+        view.transform_point3(Vec3::new(
+            pick(1, lo.x, hi.x),
+            pick(2, lo.y, hi.y),
+            pick(4, lo.z, hi.z),
+        ))
+    });
+    let (mut a, mut b) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+    for c in corners {
+        a = a.min(c);
+        b = b.max(c);
+    }
+    // A square viewport: the larger extent sets the scale, the smaller one is centred.
+    let half = 0.5 * (b.x - a.x).max(b.y - a.y) * (1.0 + 2.0 * INSET_PAD);
+    let mid = 0.5 * (a + b);
+    // View space looks down −z: the box lies between −b.z and −a.z in front of the eye.
+    let depth_pad = 0.05 * radius + 0.01;
+    let near = (-b.z - depth_pad).max(1e-3);
+    let far = -a.z + depth_pad;
+    let proj = glam::camera::rh::proj::directx::orthographic(
+        mid.x - half,
+        mid.x + half,
+        mid.y - half,
+        mid.y + half,
+        near,
+        far,
+    );
+    Some((view, proj, eye))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_inset_sits_in_the_bottom_right_corner_inside_the_canvas() {
+        for canvas in [
+            Vec2::new(800.0, 600.0),
+            Vec2::new(1600.0, 1000.0),
+            Vec2::new(300.0, 100.0),
+        ] {
+            let r = inset_rect(canvas);
+            assert!(r.min.cmpge(Vec2::ZERO).all(), "{canvas}: {r:?}");
+            assert!((r.max() - (canvas - INSET_MARGIN_PX)).abs().max_element() < 1e-3);
+            assert_eq!(r.size.x, r.size.y);
+        }
+        assert_eq!(inset_rect(Vec2::new(800.0, 600.0)).size.x, 0.36 * 600.0);
+    }
+
+    #[test]
+    fn the_box_fills_the_inset_from_every_side() {
+        let (min, max) = (Vec3::new(-2.0, 0.0, -0.5), Vec3::new(1.0, 3.0, 0.5));
+        for view in [InsetView::Top, InsetView::Side, InsetView::Front] {
+            let inset = Inset {
+                view,
+                title: String::new(),
+                min,
+                max,
+            };
+            let (v, p, _) = inset_camera(&inset).unwrap();
+            let mut extent = Vec2::ZERO;
+            for i in 0..8 {
+                let pick = |bit: usize, a: f32, b: f32| if i & bit == 0 { a } else { b };
+                let c = Vec3::new(
+                    pick(1, min.x, max.x),
+                    pick(2, min.y, max.y),
+                    pick(4, min.z, max.z),
+                );
+                let ndc = (p * v).project_point3(c);
+                assert!(
+                    ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0,
+                    "{view:?}: {c} at {ndc}"
+                );
+                assert!((0.0..=1.0).contains(&ndc.z), "{view:?}: depth {}", ndc.z);
+                extent = extent.max(ndc.truncate().abs());
+            }
+            // The larger extent reaches the padding, not less.
+            assert!(extent.max_element() > 0.85, "{view:?}: {extent}");
+        }
+    }
+
+    #[test]
+    fn each_view_looks_along_its_axis() {
+        let inset = |view| Inset {
+            view,
+            title: String::new(),
+            min: Vec3::splat(-1.0),
+            max: Vec3::splat(1.0),
+        };
+        let ndc = |view, p: Vec3| {
+            let (v, proj, _) = inset_camera(&inset(view)).unwrap();
+            (proj * v).project_point3(p)
+        };
+        // From above: +x to the right, −z up; height only changes depth.
+        assert!(ndc(InsetView::Top, Vec3::X).x > 0.5);
+        assert!(ndc(InsetView::Top, Vec3::NEG_Z).y > 0.5);
+        assert!(ndc(InsetView::Top, Vec3::Y).z < ndc(InsetView::Top, Vec3::NEG_Y).z);
+        // From the side (+x): −z to the right, +y up.
+        assert!(ndc(InsetView::Side, Vec3::NEG_Z).x > 0.5);
+        assert!(ndc(InsetView::Side, Vec3::Y).y > 0.5);
+        // From the front (+z): +x right, +y up.
+        assert!(ndc(InsetView::Front, Vec3::X).x > 0.5);
+        assert!(ndc(InsetView::Front, Vec3::Z).z < ndc(InsetView::Front, Vec3::NEG_Z).z);
+    }
+
+    #[test]
+    fn labels_keep_off_the_inset_and_its_title_sits_inside_it() {
+        use crate::draw::layout::{place_avoiding, LabelBox};
+        let canvas = Vec2::new(800.0, 600.0);
+        let inset = inset_rect(canvas);
+        // Labels anchored all over the canvas, some inside the inset's square.
+        let labels: Vec<LabelBox> = (0..60)
+            .map(|i| LabelBox {
+                anchor: Vec2::new(13.0 * i as f32 % 800.0, 37.0 * i as f32 % 600.0),
+                size: Vec2::new(70.0, 16.0),
+                left: i % 3 == 0,
+                visible: true,
+                priority: i % 4,
+            })
+            .collect();
+        let placed = place_avoiding(&labels, canvas, &[inset]);
+        let mut shown = 0;
+        for (p, l) in placed.iter().zip(&labels) {
+            if p.shown {
+                shown += 1;
+                let r = Rect {
+                    min: p.top_left,
+                    size: l.size,
+                };
+                assert!(!r.overlaps(&inset, 0.0), "{r:?} on the inset {inset:?}");
+            }
+        }
+        assert!(shown > 20, "only {shown} of 60 labels placed");
+        let title = title_top_left(canvas);
+        assert!(title.cmpgt(inset.min).all() && title.cmplt(inset.max()).all());
+    }
+
+    #[test]
+    fn a_box_that_is_not_finite_or_empty_has_no_camera() {
+        let inset = |min, max| Inset {
+            view: InsetView::Top,
+            title: String::new(),
+            min,
+            max,
+        };
+        assert!(inset_camera(&inset(Vec3::ZERO, Vec3::splat(f32::NAN))).is_none());
+        assert!(inset_camera(&inset(Vec3::ONE, Vec3::ONE)).is_none());
+    }
+}
