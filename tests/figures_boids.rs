@@ -979,3 +979,25 @@ fn gpu_mode_plots_the_flock_read_back_from_the_gpu() {
     let note = f.draw_gpu(&mut Frame::default());
     assert!(note.contains("order plot reads the flock back from the GPU every 0.1 s"), "{note}");
 }
+
+#[test]
+fn the_flock_has_an_inset_from_above_that_holds_its_box_and_its_boids() {
+    use inbetween::draw::inset::{inset_camera, InsetView};
+    let mut f = FlockFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame);
+    let inset = frame.inset.clone().expect("an inset");
+    assert_eq!(inset.view, InsetView::Top);
+    // Every boid and every corner of the box lies inside the inset's view, seen from above.
+    let (view, proj, _) = inset_camera(&inset).unwrap();
+    let vp = proj * view;
+    let corners = frame.keep_in_view.clone();
+    assert!(!corners.is_empty());
+    for p in corners.iter().chain(&f.flock().positions) {
+        let ndc = vp.project_point3(*p);
+        assert!(
+            ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0 && (0.0..=1.0).contains(&ndc.z),
+            "{p} at {ndc}"
+        );
+    }
+}

@@ -11,6 +11,7 @@ use super::{
     failure_note, format_number, in_range, palette, Frame, MeshId, Runner, DEFAULT_RUNNER,
 };
 use crate::boids::{cell_index, three_rules, BoidParams, Flock, ForceLaw, Search};
+use crate::draw::inset::InsetView;
 use crate::exercises::run;
 use crate::particles::Sphere;
 use glam::{Mat4, Vec3};
@@ -683,6 +684,9 @@ impl FlockFigure {
         }
         // The box stays in view at both page sizes (boids overshoot its walls a little).
         frame.keep_box_in_view(-b, b);
+        // The flock from above, where its spread along the main view's depth can be read; a
+        // little wider than the box, as boids overshoot its walls.
+        frame.inset(InsetView::Top, "from above", -1.15 * b, 1.15 * b);
         if self.obstacle {
             for o in &self.params.obstacles {
                 frame.mesh(
@@ -783,6 +787,9 @@ impl FlockFigure {
         }
         // The box stays in view at both page sizes (boids overshoot its walls a little).
         frame.keep_box_in_view(-b, b);
+        // The flock from above, where its spread along the main view's depth can be read; a
+        // little wider than the box, as boids overshoot its walls.
+        frame.inset(InsetView::Top, "from above", -1.15 * b, 1.15 * b);
         if self.obstacle {
             for o in &self.params.obstacles {
                 frame.mesh(
