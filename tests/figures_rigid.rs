@@ -49,6 +49,15 @@ fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
     Ok(out)
 }
 
+/// A dual_quat_apply whose dual part is `t r / 2` with the wrong sign; its moved point is right.
+fn wrong_dual_part(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut out = reference(name, args)?;
+    if name == "dual_quat_apply" {
+        out[4..8].iter_mut().for_each(|x| *x = -*x);
+    }
+    Ok(out)
+}
+
 fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
     Err(Failure::Panicked(
         "index out of bounds (src/exercises/rotations.rs:90:9)".into(),
@@ -167,6 +176,15 @@ fn dual_quat_feedback_compares_at_the_current_t() {
         ),
         "{note}"
     );
+    // The note names the part that is wrong: here q is right and the moved point is not.
+    assert!(
+        note.contains("your q is right and the moved point is not"),
+        "{note}"
+    );
+    scene.set_runner(wrong_dual_part);
+    let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
+    assert!(note.contains("your q itself differs"), "{note}");
+    scene.set_runner(wrong);
     // The figure shows the student's (wrong) nose path.
     let mine = scene.point(
         Method::DualQuatNlerp,

@@ -418,6 +418,27 @@ impl RigidMotion {
             });
         }
         let (_, mut note) = probe_note("dual_quat_apply", &probes, TOLERANCE);
+        // Eleven numbers per answer say little by themselves: name the part that differs at the
+        // first input where the answer is wrong.
+        let close = |a: &[f32], b: &[f32]| {
+            a.iter()
+                .zip(b)
+                .all(|(x, y)| (x - y).abs() <= TOLERANCE * (1.0 + y.abs()))
+        };
+        if let Some(p) = probes.iter().find(|p| !close(&p.yours, &p.reference)) {
+            let (q_yours, point_yours) = p.yours.split_at(8);
+            let (q_reference, point_reference) = p.reference.split_at(8);
+            note += if !close(q_yours, q_reference) {
+                " Each answer is q's real part (x, y, z, w), its dual part (x, y, z, w), then the \
+                 moved point: your q itself differs (d = ½ (t, 0) r)."
+            } else if !close(point_yours, point_reference) {
+                " Each answer is q's real part (x, y, z, w), its dual part (x, y, z, w), then the \
+                 moved point: your q is right and the moved point is not (p' = r p r* + t, with \
+                 t = 2 d r*)."
+            } else {
+                ""
+            };
+        }
         if let Some(problem) = unit_quat_problem(shown_real, 1e-3) {
             note += &format!(" Its real part: {problem}.");
         }
