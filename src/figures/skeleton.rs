@@ -93,7 +93,9 @@ impl Default for SkeletonFigure {
 pub const INTERPOLATIONS: [&str; 4] = ["step", "linear (nlerp)", "linear (slerp)", "cubic"];
 
 impl SkeletonFigure {
-    /// The walk, 9 keys per cycle, linear with slerp, `thigh.L` selected.
+    /// The simple human playing the walk, keyed 9 times per cycle, linear with slerp, `thigh.L`
+    /// selected, every joint's axes shown; no body boxes, no offsets on the clip, no second path,
+    /// no crossfade, and "use my exercise" off (the runner calls the exercises in-process).
     pub fn new() -> Self {
         let (skeleton, shapes) = human::simple_human();
         let n = skeleton.len();
