@@ -189,7 +189,9 @@ impl RigidMotion {
     /// The screw axis of the motion from A to B, with its point moved to where the axis passes
     /// closest to the middle of the keys' origins (the core gives the point closest to the world
     /// origin, which may lie far from both keys). With no turn the motion is a pure slide, and
-    /// every line along it is an axis: the one through that middle point.
+    /// every line along it is an axis: the one through that middle point. A half turn about `n`
+    /// is the same motion as a half turn about `−n`; of the two, the one that slides forwards
+    /// (a positive slide) is given.
     pub fn screw_axis(&self) -> crate::rigid::ScrewAxis {
         let mut axis = (self.end * self.start.conjugate()).screw_axis();
         let middle = (self.start.translation() + self.end.translation()) * 0.5;
@@ -202,6 +204,10 @@ impl RigidMotion {
             axis.point = middle;
         } else {
             axis.point += axis.direction * axis.direction.dot(middle - axis.point);
+            if (axis.angle_rad - std::f32::consts::PI).abs() < 1e-3 && axis.displacement < 0.0 {
+                axis.direction = -axis.direction;
+                axis.displacement = -axis.displacement;
+            }
         }
         axis
     }
