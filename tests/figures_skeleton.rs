@@ -456,14 +456,36 @@ fn the_crossfade_shows_both_clips_beside_the_blend() {
     let [a, b] = f.sources();
     assert_eq!((a.len(), b.len()), (21, 21));
     let blend_root = f.joint_position(0).unwrap();
+    let beside = inbetween::figures::skeleton::SOURCE_OFFSET_X;
     assert!(
-        (a[0].translation.x - blend_root.x + 1.0).abs() < 0.1,
-        "A stands 1 m to the left"
+        (a[0].translation.x - blend_root.x + beside).abs() < 0.1,
+        "A stands {beside} m to the left"
     );
     assert!(
-        (b[0].translation.x - blend_root.x - 1.0).abs() < 0.1,
-        "B stands 1 m to the right"
+        (b[0].translation.x - blend_root.x - beside).abs() < 0.1,
+        "B stands {beside} m to the right"
     );
+    // Over the whole cycle the three skeletons keep apart: the blend's arm, half way up, points
+    // sideways and must not reach into clip A's figure (nor clip B's into the blend).
+    let d = f.duration_sec();
+    for k in 0..=24 {
+        f.draw(&mut Frame::default(), d * k as f32 / 24.0 * 0.9999).unwrap();
+        let xs = |model: &[glam::Affine3A]| {
+            model
+                .iter()
+                .map(|m| m.translation.x)
+                .fold((f32::MAX, f32::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)))
+        };
+        let blend: Vec<glam::Affine3A> = (0..21)
+            .map(|j| {
+                glam::Affine3A::from_translation(f.joint_position(j).unwrap())
+            })
+            .collect();
+        let (blend_lo, blend_hi) = xs(&blend);
+        let [a, b] = f.sources();
+        assert!(xs(a).1 + 0.1 < blend_lo, "clip A reaches the blend at step {k}");
+        assert!(blend_hi + 0.1 < xs(b).0, "the blend reaches clip B at step {k}");
+    }
     assert!(frame
         .labels
         .iter()

@@ -40,7 +40,7 @@ const TICK_OFFSET_M: f32 = 0.025;
 /// A joint can be picked this many CSS pixels from its centre, however small it is drawn.
 const PICK_RADIUS_PX: f32 = 10.0;
 /// Where the crossfade's two clips stand beside the blend, metres along x (A left, B right).
-pub const SOURCE_OFFSET_X: f32 = 1.0;
+pub const SOURCE_OFFSET_X: f32 = 1.4;
 /// Room kept around the skeleton's box for the joint boxes, the head and the labels, metres.
 const VIEW_MARGIN_M: f32 = 0.18;
 
