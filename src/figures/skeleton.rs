@@ -962,7 +962,7 @@ impl SkeletonFigure {
     /// `view_proj`): the nearest joint sphere the pointer's ray meets, each sphere at least
     /// [`PICK_RADIUS_PX`] across on screen; `None` when the ray misses them all.
     pub fn pick_joint(&self, view_proj: Mat4, size: Vec2, pointer: Vec2) -> Option<usize> {
-        if !pointer.is_finite() || !(size.x > 0.0 && size.y > 0.0) {
+        if !(pointer.is_finite() && size.x > 0.0 && size.y > 0.0) {
             return None;
         }
         let inverse = view_proj.inverse();
