@@ -49,6 +49,15 @@ fn wrong(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
     Ok(out)
 }
 
+/// A dual_quat_apply whose dual part is `t r / 2` with the wrong sign; its moved point is right.
+fn wrong_dual_part(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let mut out = reference(name, args)?;
+    if name == "dual_quat_apply" {
+        out[4..8].iter_mut().for_each(|x| *x = -*x);
+    }
+    Ok(out)
+}
+
 fn panics(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
     Err(Failure::Panicked(
         "index out of bounds (src/exercises/rotations.rs:90:9)".into(),
@@ -167,6 +176,15 @@ fn dual_quat_feedback_compares_at_the_current_t() {
         ),
         "{note}"
     );
+    // The note names the part that is wrong: here q is right and the moved point is not.
+    assert!(
+        note.contains("your q is right and the moved point is not"),
+        "{note}"
+    );
+    scene.set_runner(wrong_dual_part);
+    let note = scene.draw(&mut Frame::default(), 0.25).unwrap();
+    assert!(note.contains("your q itself differs"), "{note}");
+    scene.set_runner(wrong);
     // The figure shows the student's (wrong) nose path.
     let mine = scene.point(
         Method::DualQuatNlerp,
@@ -468,5 +486,31 @@ fn the_affine_try_this_does_what_it_says() {
     for r in scene.sample_determinant(11).unwrap() {
         assert!((r[1] - r[2]).abs() < 1e-4, "{r:?}");
         assert!((r[1] - (1.0 + r[0])).abs() < 1e-4, "{r:?}");
+    }
+}
+
+#[test]
+fn a_half_turn_is_described_with_a_forward_slide() {
+    // Turning 180° about n is the same motion as turning 180° about −n: the figure names the
+    // direction that slides forwards, the way a turn just short of 180° is named.
+    let mut scene = RigidMotion::new();
+    let n = Vec3::new(0.2, 1.0, 0.3);
+    let t = Vec3::new(1.5, 1.4, 0.3);
+    scene.set_end(n, 179.0, t).unwrap();
+    let near = scene.screw_axis();
+    for angle in [180.0, -180.0] {
+        scene.set_end(n, angle, t).unwrap();
+        let half = scene.screw_axis();
+        assert!((half.angle_rad - std::f32::consts::PI).abs() < 1e-3);
+        assert!(half.displacement > 0.0, "{angle}°: slide {}", half.displacement);
+        assert!(half.direction.dot(near.direction) > 0.9, "{angle}°: {:?}", half.direction);
+        // The same line: the key B it describes is unchanged.
+        let moved = |axis: &inbetween::rigid::ScrewAxis, p: Vec3| {
+            Quat::from_axis_angle(axis.direction, axis.angle_rad) * (p - axis.point)
+                + axis.point
+                + axis.direction * axis.displacement
+        };
+        let a = Vec3::new(-1.5, 0.6, 0.0);
+        assert!((moved(&half, a) - t).length() < 1e-3, "{angle}°: {:?}", moved(&half, a));
     }
 }

@@ -389,20 +389,43 @@ fn the_compared_paths_and_speeds_show_what_the_try_this_says() {
     assert!(speeds_in_segment(&samples, d, 4, 1)
         .iter()
         .all(|s| s.2 == 0.0));
-    // On the walk's thigh, linear keys turn at a constant speed between keys that jumps at each
-    // key; cubic keys change speed smoothly through a key.
+    // Its speed spikes at the two keys inside the cycle and nowhere else (the jump back to the
+    // first key comes as the cycle wraps, past the plot's end).
+    let step = f.key_times()[1] - f.key_times()[0];
+    let spikes: Vec<f32> = samples
+        .chunks(7)
+        .filter(|row| row[4] > 0.0)
+        .map(|row| row[0])
+        .collect();
+    assert!(!spikes.is_empty());
+    for t in &spikes {
+        let near = [1.0, 2.0].iter().any(|k| (t - k * step).abs() < 0.02 * d);
+        assert!(near, "a step speed spike at {t} s, away from the inner keys");
+    }
+    for k in [1.0, 2.0] {
+        assert!(
+            spikes.iter().any(|t| (t - k * step).abs() < 0.02 * d),
+            "no spike at key {k}: {spikes:?}"
+        );
+    }
+    // On the walk's thigh, still at 4 keys per cycle, linear keys turn at a constant speed
+    // between keys that jumps at the keys; cubic keys change speed smoothly through a key.
     let mut f = SkeletonFigure::new();
+    f.set_keys_per_cycle(4.0).unwrap();
+    assert_eq!(f.skeleton().names()[f.selected()], "thigh.L");
     f.set_interpolation("linear (slerp)").unwrap();
     f.set_compare("cubic").unwrap();
     let times = f.key_times();
     let samples = f.sample_selected(961).unwrap();
+    // The change of speed across a key, against the fastest speed of the cycle (at 4 keys the
+    // cubic thigh slows almost to rest at a key, so a ratio to the speed there says nothing).
     let jump = |column: usize, key_t: f32| {
         let rows: Vec<&[f32]> = samples.chunks(7).collect();
         let i = rows.iter().position(|c| c[0] >= key_t).unwrap();
-        (rows[i + 2][column] - rows[i - 3][column]).abs()
-            / rows[i + 2][column].max(rows[i - 3][column])
+        let fastest = rows.iter().map(|r| r[column]).fold(0.0, f32::max);
+        (rows[i + 2][column] - rows[i - 3][column]).abs() / fastest
     };
-    for k in [1, 3] {
+    for k in [1, 2] {
         assert!(
             jump(2, times[k]) > 0.2,
             "linear jumps by {} at key {k}",
@@ -433,14 +456,36 @@ fn the_crossfade_shows_both_clips_beside_the_blend() {
     let [a, b] = f.sources();
     assert_eq!((a.len(), b.len()), (21, 21));
     let blend_root = f.joint_position(0).unwrap();
+    let beside = inbetween::figures::skeleton::SOURCE_OFFSET_X;
     assert!(
-        (a[0].translation.x - blend_root.x + 1.0).abs() < 0.1,
-        "A stands 1 m to the left"
+        (a[0].translation.x - blend_root.x + beside).abs() < 0.1,
+        "A stands {beside} m to the left"
     );
     assert!(
-        (b[0].translation.x - blend_root.x - 1.0).abs() < 0.1,
-        "B stands 1 m to the right"
+        (b[0].translation.x - blend_root.x - beside).abs() < 0.1,
+        "B stands {beside} m to the right"
     );
+    // Over the whole cycle the three skeletons keep apart: the blend's arm, half way up, points
+    // sideways and must not reach into clip A's figure (nor clip B's into the blend).
+    let d = f.duration_sec();
+    for k in 0..=24 {
+        f.draw(&mut Frame::default(), d * k as f32 / 24.0 * 0.9999).unwrap();
+        let xs = |model: &[glam::Affine3A]| {
+            model
+                .iter()
+                .map(|m| m.translation.x)
+                .fold((f32::MAX, f32::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)))
+        };
+        let blend: Vec<glam::Affine3A> = (0..21)
+            .map(|j| {
+                glam::Affine3A::from_translation(f.joint_position(j).unwrap())
+            })
+            .collect();
+        let (blend_lo, blend_hi) = xs(&blend);
+        let [a, b] = f.sources();
+        assert!(xs(a).1 + 0.1 < blend_lo, "clip A reaches the blend at step {k}");
+        assert!(blend_hi + 0.1 < xs(b).0, "the blend reaches clip B at step {k}");
+    }
     assert!(frame
         .labels
         .iter()

@@ -246,10 +246,14 @@ function resultRow(row) {
   return tr;
 }
 
+/** "1 passed, 1 not yet implemented, 1 wrong, 1 panicked, of 4": a panic or a stopped case is
+ * named as such (it is not a wrong answer), and only when there is one. */
 function countLine(rows) {
-  const passed = rows.filter((r) => r.verdict === 'passed').length;
-  const todo = rows.filter((r) => r.verdict === 'not-done').length;
-  return `${passed} passed, ${todo} not yet implemented, ${rows.length - passed - todo} wrong, of ${rows.length}`;
+  const count = (verdict) => rows.filter((r) => r.verdict === verdict).length;
+  const parts = [`${count('passed')} passed`, `${count('not-done')} not yet implemented`, `${count('wrong')} wrong`];
+  if (count('panicked')) parts.push(`${count('panicked')} panicked`);
+  if (count('stopped')) parts.push(`${count('stopped')} stopped`);
+  return `${parts.join(', ')}, of ${rows.length}`;
 }
 
 /**
@@ -481,9 +485,12 @@ export async function quiz(id, quizAnswer, controllers) {
       check.addEventListener('click', () => judge(input.value, true));
       input.addEventListener('keydown', (e) => { if (e.key === 'Enter') judge(input.value, true); });
       reveal.addEventListener('click', () => {
-        const value = expected();
-        feedback.textContent += ` The core computes ${withUnit(value, q.unit)}. ${q.why}`;
         reveal.hidden = true;
+        try {
+          feedback.textContent += ` The core computes ${withUnit(expected(), q.unit)}. ${q.why}`;
+        } catch (e) {
+          feedback.textContent += ` This question's answer could not be computed: ${e.message ?? e}`;
+        }
       });
       if (saved[q.id]) {
         input.value = saved[q.id].answer;

@@ -286,9 +286,11 @@ pub(super) fn grade_rigid_motions(rng: &mut super::grade::Rng) -> Vec<super::gra
         ),
         (
             "rotate, then translate (not the other order)",
+            // t across the axis: a translation along it commutes with the turn and would hide
+            // the wrong order (and d = ½ r t in place of ½ t r).
             (
                 Quat::from_rotation_z(FRAC_PI_2),
-                Vec3::new(0.0, 0.0, 2.0),
+                Vec3::new(2.0, 0.0, 1.0),
                 Vec3::X,
             ),
         ),
@@ -330,7 +332,8 @@ pub(super) fn grade_rigid_motions(rng: &mut super::grade::Rng) -> Vec<super::gra
         },
     );
 
-    // 4.2: a rotation (fixed point), a scale, a shear, a reflection-free random matrix.
+    // 4.2: the identity and a rotation (fixed points), a scale, a shear, a rotated uneven
+    // scale, then random invertible matrices (|det| > 0.05; mirroring ones included).
     let mut steps = vec![
         ("the identity: a fixed point", Mat3::IDENTITY),
         (

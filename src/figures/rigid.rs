@@ -189,7 +189,9 @@ impl RigidMotion {
     /// The screw axis of the motion from A to B, with its point moved to where the axis passes
     /// closest to the middle of the keys' origins (the core gives the point closest to the world
     /// origin, which may lie far from both keys). With no turn the motion is a pure slide, and
-    /// every line along it is an axis: the one through that middle point.
+    /// every line along it is an axis: the one through that middle point. A half turn about `n`
+    /// is the same motion as a half turn about `−n`; of the two, the one that slides forwards
+    /// (a positive slide) is given.
     pub fn screw_axis(&self) -> crate::rigid::ScrewAxis {
         let mut axis = (self.end * self.start.conjugate()).screw_axis();
         let middle = (self.start.translation() + self.end.translation()) * 0.5;
@@ -202,6 +204,10 @@ impl RigidMotion {
             axis.point = middle;
         } else {
             axis.point += axis.direction * axis.direction.dot(middle - axis.point);
+            if (axis.angle_rad - std::f32::consts::PI).abs() < 1e-3 && axis.displacement < 0.0 {
+                axis.direction = -axis.direction;
+                axis.displacement = -axis.displacement;
+            }
         }
         axis
     }
@@ -418,6 +424,27 @@ impl RigidMotion {
             });
         }
         let (_, mut note) = probe_note("dual_quat_apply", &probes, TOLERANCE);
+        // Eleven numbers per answer say little by themselves: name the part that differs at the
+        // first input where the answer is wrong.
+        let close = |a: &[f32], b: &[f32]| {
+            a.iter()
+                .zip(b)
+                .all(|(x, y)| (x - y).abs() <= TOLERANCE * (1.0 + y.abs()))
+        };
+        if let Some(p) = probes.iter().find(|p| !close(&p.yours, &p.reference)) {
+            let (q_yours, point_yours) = p.yours.split_at(8);
+            let (q_reference, point_reference) = p.reference.split_at(8);
+            note += if !close(q_yours, q_reference) {
+                " Each answer is q's real part (x, y, z, w), its dual part (x, y, z, w), then the \
+                 moved point: your q itself differs (d = ½ (t, 0) r)."
+            } else if !close(point_yours, point_reference) {
+                " Each answer is q's real part (x, y, z, w), its dual part (x, y, z, w), then the \
+                 moved point: your q is right and the moved point is not (p' = r p r* + t, with \
+                 t = 2 d r*)."
+            } else {
+                ""
+            };
+        }
         if let Some(problem) = unit_quat_problem(shown_real, 1e-3) {
             note += &format!(" Its real part: {problem}.");
         }

@@ -40,7 +40,7 @@ const TICK_OFFSET_M: f32 = 0.025;
 /// A joint can be picked this many CSS pixels from its centre, however small it is drawn.
 const PICK_RADIUS_PX: f32 = 10.0;
 /// Where the crossfade's two clips stand beside the blend, metres along x (A left, B right).
-pub const SOURCE_OFFSET_X: f32 = 1.0;
+pub const SOURCE_OFFSET_X: f32 = 1.4;
 /// Room kept around the skeleton's box for the joint boxes, the head and the labels, metres.
 const VIEW_MARGIN_M: f32 = 0.18;
 
@@ -93,7 +93,9 @@ impl Default for SkeletonFigure {
 pub const INTERPOLATIONS: [&str; 4] = ["step", "linear (nlerp)", "linear (slerp)", "cubic"];
 
 impl SkeletonFigure {
-    /// The walk, 9 keys per cycle, linear with slerp, `thigh.L` selected.
+    /// The simple human playing the walk, keyed 9 times per cycle, linear with slerp, `thigh.L`
+    /// selected, every joint's axes shown; no body boxes, no offsets on the clip, no second path,
+    /// no crossfade, and "use my exercise" off (the runner calls the exercises in-process).
     pub fn new() -> Self {
         let (skeleton, shapes) = human::simple_human();
         let n = skeleton.len();
@@ -960,7 +962,7 @@ impl SkeletonFigure {
     /// `view_proj`): the nearest joint sphere the pointer's ray meets, each sphere at least
     /// [`PICK_RADIUS_PX`] across on screen; `None` when the ray misses them all.
     pub fn pick_joint(&self, view_proj: Mat4, size: Vec2, pointer: Vec2) -> Option<usize> {
-        if !pointer.is_finite() || !(size.x > 0.0 && size.y > 0.0) {
+        if !(pointer.is_finite() && size.x > 0.0 && size.y > 0.0) {
             return None;
         }
         let inverse = view_proj.inverse();

@@ -66,6 +66,8 @@ test('the panel grades like the native grader, survives a panic and stops an end
     assert.equal(got.rows.rodrigues_matrix.verdict, 'wrong');
     assert.match(got.rows.rodrigues_matrix.text, /expected.*yours/s);
     assert.match(got.status, /slerp panicked at case 1/);
+    // The count names the panic as a panic, not as a wrong answer.
+    assert.match(got.status, /^1 passed, 0 not yet implemented, 1 wrong, 1 panicked, of 3\./);
     // The figures still run in the page's own instance: a control still redraws, nothing died.
     assert.equal(await page.evaluate(() => window.__inbetween.dead), false);
     await page.locator('.grade-panel').screenshot({ path: `${SHOTS}/course-grader-03-student-bugs.png` });
@@ -80,6 +82,7 @@ test('the panel grades like the native grader, survives a panic and stops an end
     assert.equal(loop.rows.polar_step.verdict, 'stopped');
     assert.match(loop.rows.polar_step.text, /no answer within 5 s/);
     assert.match(loop.status, /polar_step gave no answer within 5 s at case 1 and was stopped/);
+    assert.match(loop.status, /^1 passed, 0 not yet implemented, 0 wrong, 1 stopped, of 2\./);
     assert.match(loop.table, /polar_step +STOPPED at case 1 \(.*\): no answer within 5 s/);
     assert.ok(Date.now() - started >= 5000, 'the time limit ran out before the verdict');
     assert.equal(await second.page.evaluate(() => window.__inbetween.dead), false);
