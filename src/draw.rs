@@ -552,8 +552,10 @@ impl Frame {
     }
 
     /// A ground grid on y = 0 with `cells` cells of `spacing` metres on a side; the lines through
-    /// the origin are darker.
+    /// the origin are darker. The lines fade out towards the grid's rim ([`grid_fade`]), so the
+    /// ground recedes instead of ending at a hard edge: a depth cue in a single view.
     pub fn grid(&mut self, cells: u32, spacing: f32) {
+        let half = cells as f32 * spacing * 0.5;
         for [a, b] in crate::mesh::grid_lines(cells, spacing) {
             let on_axis =
                 a.x.abs() < 1e-6 && b.x.abs() < 1e-6 || a.z.abs() < 1e-6 && b.z.abs() < 1e-6;
@@ -562,7 +564,20 @@ impl Frame {
             } else {
                 palette::GRID
             };
-            self.line(a, b, color);
+            // One segment per cell, so the fade follows the distance from the centre.
+            let fade = |p: Vec3| grid_fade(p.length() / half.max(1e-6));
+            let pieces = cells.max(1);
+            for k in 0..pieces {
+                let p = a.lerp(b, k as f32 / pieces as f32);
+                let q = a.lerp(b, (k + 1) as f32 / pieces as f32);
+                for (v, alpha) in [(p, fade(p)), (q, fade(q))] {
+                    self.lines.push(LineVertex {
+                        position: v.to_array(),
+                        depth_bias: 0.0,
+                        color: color.extend(alpha).to_array(),
+                    });
+                }
+            }
         }
     }
 
@@ -746,6 +761,13 @@ impl Frame {
     }
 }
 
+/// The ground grid's opacity at `r`, the distance from its centre over its half-width: opaque
+/// out to half the way, then easing down to 0.15 at the rim (and beyond, in the corners).
+pub fn grid_fade(r: f32) -> f32 {
+    let t = ((r - 0.5) / 0.5).clamp(0.0, 1.0);
+    1.0 - 0.85 * t * t * (3.0 - 2.0 * t)
+}
+
 /// A label placed on screen: CSS pixels from the canvas's top-left corner.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ScreenLabel {
@@ -913,6 +935,33 @@ pub mod palette {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_grid_fades_towards_its_rim() {
+        let mut f = Frame::default();
+        f.grid(12, 0.25);
+        let half = 1.5;
+        let mut inner = 0;
+        for v in &f.lines {
+            let p = Vec3::from(v.position);
+            let rgb = Vec3::from_slice(&v.color[..3]);
+            assert!(rgb == palette::GRID || rgb == palette::GRID_AXIS);
+            let r = p.length() / half;
+            if r <= 0.5 {
+                inner += 1;
+                assert_eq!(v.color[3], 1.0, "{p}");
+            }
+            if r >= 1.0 {
+                assert!(v.color[3] <= 0.15 + 1e-6, "{p}: {}", v.color[3]);
+            }
+        }
+        assert!(inner > 20);
+        // Opacity never grows outwards.
+        assert!((0..=20).all(|i| grid_fade(i as f32 * 0.1) >= grid_fade((i + 1) as f32 * 0.1)));
+        // The lines still span the whole grid.
+        let far = f.lines.iter().map(|v| Vec3::from(v.position).x.abs()).fold(0.0, f32::max);
+        assert!((far - half).abs() < 1e-5);
+    }
 
     #[test]
     fn arrow_is_a_shaft_and_a_cone_ending_at_the_tip() {
