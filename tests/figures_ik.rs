@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 use inbetween::camera::OrbitCamera;
-use inbetween::draw::Frame;
+use inbetween::draw::{palette, Frame};
 use inbetween::exercises::run::{direct, Failure, Flat};
 use inbetween::figures::ik::{AimFigure, IkFigure, MAX_ITERATIONS, TOLERANCE_M};
 use inbetween::ik::{ccd_iteration, max_violation_rad, JointLimit};
@@ -455,11 +455,19 @@ fn fabrik_stalls_near_the_root_where_ccd_reaches() {
     println!("CCD {ccd:?}, FABRIK {fabrik:?}");
     assert!(ccd.reached && ccd.iterations == 2, "{ccd:?}");
     assert!(!fabrik.reached && fabrik.iterations == 10, "{fabrik:?}");
-    assert!((fabrik.error * 1000.0 - 41.8).abs() < 0.1, "FABRIK {} mm short", fabrik.error * 1000.0);
+    assert!(
+        (fabrik.error * 1000.0 - 41.8).abs() < 0.1,
+        "FABRIK {} mm short",
+        fabrik.error * 1000.0
+    );
     // The figure marks the gap with its length.
     let mut frame = Frame::default();
     f.draw(&mut frame).unwrap();
-    assert!(frame.labels.iter().any(|l| l.text == "41.8 mm short"), "{:?}", frame.labels.iter().map(|l| &l.text).collect::<Vec<_>>());
+    assert!(
+        frame.labels.iter().any(|l| l.text == "41.8 mm short"),
+        "{:?}",
+        frame.labels.iter().map(|l| &l.text).collect::<Vec<_>>()
+    );
 }
 
 #[test]
@@ -471,18 +479,35 @@ fn each_target_has_its_chains_colour_and_stays_in_view() {
     f.draw(&mut frame).unwrap();
     let colors = [palette::BLUE, palette::ORANGE, palette::TEAL];
     for (k, name) in ["two-joint", "CCD", "FABRIK"].iter().enumerate() {
-        let label = frame.labels.iter().find(|l| l.text == format!("{name} target")).unwrap();
+        let label = frame
+            .labels
+            .iter()
+            .find(|l| l.text == format!("{name} target"))
+            .unwrap();
         assert_eq!(label.color, colors[k], "{name}");
         let target = f.target() + Vec3::new([-1.1, 0.0, 1.1][k], 0.0, 0.0);
-        assert!(frame.markers.iter().any(|m| Vec3::from(m.center) == target && glam::Vec4::from(m.color).truncate() == colors[k]));
-        assert!(frame.keep_in_view.contains(&target), "{name}'s target is kept in view");
+        assert!(frame
+            .markers
+            .iter()
+            .any(|m| Vec3::from(m.center) == target
+                && glam::Vec4::from(m.color).truncate() == colors[k]));
+        assert!(
+            frame.keep_in_view.contains(&target),
+            "{name}'s target is kept in view"
+        );
     }
     // With 3 segments the two-joint chain, its pole and its labels are not drawn.
     f.set_segments(3.0).unwrap();
     let mut frame = Frame::default();
     f.draw(&mut frame).unwrap();
-    assert!(frame.labels.iter().all(|l| !l.text.contains("two-joint") && l.text != "pole" && !l.text.contains("needs")));
-    assert!(frame.meshes.iter().all(|m| m.color.truncate() != palette::BLUE));
+    assert!(frame
+        .labels
+        .iter()
+        .all(|l| !l.text.contains("two-joint") && l.text != "pole" && !l.text.contains("needs")));
+    assert!(frame
+        .meshes
+        .iter()
+        .all(|m| m.color.truncate() != palette::BLUE));
 }
 
 #[test]
@@ -493,11 +518,19 @@ fn the_law_of_cosines_triangle_is_drawn_on_the_two_joint_chain() {
     let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
     assert!(texts.contains(&"a") && texts.contains(&"b"), "{texts:?}");
     let d = f.target().length();
-    assert!(texts.contains(&format!("d = {:.3} m", d).as_str()), "{texts:?}");
+    assert!(
+        texts.contains(&format!("d = {:.3} m", d).as_str()),
+        "{texts:?}"
+    );
     // α as drawn is the angle of the law of cosines: cos α = (a² + d² − b²) / (2ad).
     let (a, b) = (0.5f32, 0.5f32);
-    let alpha = ((a * a + d * d - b * b) / (2.0 * a * d)).acos().to_degrees();
-    assert!(texts.contains(&format!("α = {alpha:.0}°").as_str()), "{texts:?}");
+    let alpha = ((a * a + d * d - b * b) / (2.0 * a * d))
+        .acos()
+        .to_degrees();
+    assert!(
+        texts.contains(&format!("α = {alpha:.0}°").as_str()),
+        "{texts:?}"
+    );
     // Every middle joint the pole angle can choose lies on the dashed circle: turning the pole
     // keeps the middle joint at the same distance from the root→target line.
     let chain = f.chain(0).unwrap();
@@ -512,7 +545,10 @@ fn the_law_of_cosines_triangle_is_drawn_on_the_two_joint_chain() {
         f.set_pole_angle_deg(deg).unwrap();
         let c = f.chain(0).unwrap();
         assert!((off_line(c[1]) - r0).abs() < 1e-4);
-        assert!(c[2].distance(chain[2]) < 1e-4, "the end stays on the target");
+        assert!(
+            c[2].distance(chain[2]) < 1e-4,
+            "the end stays on the target"
+        );
     }
 }
 
@@ -532,18 +568,101 @@ fn the_hinges_gap_is_marked_with_its_length() {
 }
 
 #[test]
+fn the_hinges_plane_and_the_targets_drop_to_it_are_drawn() {
+    use inbetween::figures::ik::HINGE_PLANE;
+    let mut f = IkFigure::new();
+    f.set_limits("hinges (bend one way)").unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    let grey: Vec<(Vec3, Vec3)> = frame.segments_of(palette::GREY).collect();
+    let target = f.target();
+    for root_x in [0.0, 1.1] {
+        let root = Vec3::new(root_x, 0.0, 0.0);
+        // The plane's outline: its lower edge along x at z = 0.
+        let lower = (
+            root + Vec3::new(HINGE_PLANE[0].x, HINGE_PLANE[0].y, 0.0),
+            root + Vec3::new(HINGE_PLANE[1].x, HINGE_PLANE[0].y, 0.0),
+        );
+        assert!(
+            grey.iter()
+                .any(|(a, b)| a.distance(lower.0) < 1e-4 && b.distance(lower.1) < 1e-4),
+            "the plane's outline at the chain at x = {root_x}"
+        );
+        // The drop from the target to the plane: 15 cm along z, dashed.
+        let (top, foot) = (root + target, root + Vec3::new(target.x, target.y, 0.0));
+        let drop: f32 = grey
+            .iter()
+            .filter(|(a, b)| {
+                let on = |p: Vec3| {
+                    (p - foot).cross(top - foot).length() < 1e-4
+                        && p.z >= -1e-4
+                        && p.z <= top.z + 1e-4
+                };
+                on(*a) && on(*b)
+            })
+            .map(|(a, b)| a.distance(*b))
+            .sum();
+        assert!(
+            drop > 0.05 && drop <= 0.15 + 1e-4,
+            "the drop's dashes add up to {drop} m"
+        );
+    }
+    let named: Vec<&str> = frame
+        .labels
+        .iter()
+        .filter(|l| l.text.contains("off the hinges' plane"))
+        .map(|l| l.text.as_str())
+        .collect();
+    assert_eq!(named, ["15 cm off the hinges' plane"]);
+    // No plane without hinges, and no drop for a target on the plane.
+    f.set_limits("cones (40°)").unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    assert!(!frame
+        .labels
+        .iter()
+        .any(|l| l.text.contains("hinges' plane")));
+    f.set_limits("hinges (bend one way)").unwrap();
+    f.set_target(Vec3::new(0.55, 0.65, 0.0)).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    assert!(!frame
+        .labels
+        .iter()
+        .any(|l| l.text.contains("hinges' plane")));
+}
+
+#[test]
 fn the_aim_figure_shows_what_the_head_misses() {
     let mut f = AimFigure::new();
     f.set_target(Vec3::new(0.0, 1.6, -1.2)).unwrap();
     let mut frame = Frame::default();
     let note = f.draw(&mut frame, 0.0).unwrap();
     assert!(note.contains("outside the 70° cone"), "{note}");
-    let missed = frame.labels.iter().find(|l| l.text.starts_with("misses")).expect("the missed angle");
-    let deg: f32 = missed.text.trim_start_matches("misses ").trim_end_matches('°').parse().unwrap();
+    let missed = frame
+        .labels
+        .iter()
+        .find(|l| l.text.starts_with("misses"))
+        .expect("the missed angle");
+    let deg: f32 = missed
+        .text
+        .trim_start_matches("misses ")
+        .trim_end_matches('°')
+        .parse()
+        .unwrap();
     assert!(deg > 90.0, "{deg}");
-    assert!(frame.strokes.iter().any(|s| s.dash[3] > 0.0 && s.width_px >= 2.0), "a wide dashed line to the target");
+    assert!(
+        frame
+            .strokes
+            .iter()
+            .any(|s| s.dash[3] > 0.0 && s.width_px >= 2.0),
+        "a wide dashed line to the target"
+    );
     // Every target position of the loop stays inside the declared view.
-    let (lo, hi) = frame.keep_in_view.iter().fold((Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let (lo, hi) = frame.keep_in_view.iter().fold(
+        (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
     for k in 0..32 {
         let p = f.target_at(8.0 * k as f32 / 32.0);
         assert!(p.cmpge(lo).all() && p.cmple(hi).all(), "{p}");
@@ -579,12 +698,24 @@ fn use_my_exercise_checks_probe_inputs_beyond_the_target() {
         direct(name, args)
     }
     f.set_runner(no_clamp);
-    let note = f.results().map(|_| ()).and_then(|_| {
-        let mut frame = Frame::default();
-        f.draw(&mut frame)
-    }).unwrap();
-    assert!(note.contains("Your two_joint matches the reference"), "{note}");
-    assert!(note.contains("your two_joint differs at 2: a target out of reach; a target closer than |a − b|"), "{note}");
+    let note = f
+        .results()
+        .map(|_| ())
+        .and_then(|_| {
+            let mut frame = Frame::default();
+            f.draw(&mut frame)
+        })
+        .unwrap();
+    assert!(
+        note.contains("Your two_joint matches the reference"),
+        "{note}"
+    );
+    assert!(
+        note.contains(
+            "your two_joint differs at 2: a target out of reach; a target closer than |a − b|"
+        ),
+        "{note}"
+    );
     if cfg!(feature = "solutions") {
         f.set_runner(direct);
         f.set_target(Vec3::new(0.3, 0.6, 0.1)).unwrap();
@@ -605,7 +736,10 @@ fn the_aim_cone_is_drawn_in_wide_lines() {
     let mut frame = Frame::default();
     a.draw(&mut frame, 0.0).unwrap();
     let purple = palette::PURPLE.extend(1.0).to_array();
-    assert!(frame.lines.chunks(2).all(|v| v[0].color != purple), "no 1 px purple line");
+    assert!(
+        frame.lines.chunks(2).all(|v| v[0].color != purple),
+        "no 1 px purple line"
+    );
     let head = Vec3::new(0.0, 1.6, 0.0);
     let rays = frame
         .strokes

@@ -47,6 +47,10 @@ const GAP_PX: f32 = 2.5;
 /// Width of the aim figure's cone: its rim and the rays from the head to it, CSS pixels.
 pub const CONE_PX: f32 = 2.0;
 
+/// The part of the hinges' plane (z = 0 through each root) drawn: x and y from the root, metres,
+/// as [lower corner, upper corner]: about the chain's reach.
+pub const HINGE_PLANE: [Vec2; 2] = [Vec2::new(-0.5, -0.1), Vec2::new(0.5, 1.05)];
+
 /// What the joint-limits dropdown offers, in order.
 pub const LIMIT_MODES: [&str; 3] = ["none", "hinges (bend one way)", "cones (40°)"];
 
@@ -701,6 +705,9 @@ impl IkFigure {
                 if let Some((l, d)) = &limits {
                     draw_limits(frame, root, &self.solved[k], l, *d);
                 }
+                if self.limits == Limits::Hinges {
+                    self.draw_hinge_plane(frame, root, k == 1);
+                }
             }
             if let Some(student) = &self.student[k.min(1)] {
                 if k < 2 && self.use_exercise {
@@ -716,6 +723,42 @@ impl IkFigure {
             frame.keep_in_view.push(target);
         }
         Ok(self.notes.join(" "))
+    }
+
+    /// With hinges: the plane z = 0 through the root that the hinges (all about z) keep the chain
+    /// in, as a grey outline, and the target's distance from it as a dashed grey drop from the
+    /// target to its foot on the plane (a hollow dot), so that a gap across the plane, which a
+    /// front view hides, shows. `named`: this chain's drop carries the label with its length.
+    fn draw_hinge_plane(&self, frame: &mut Frame, root: Vec3, named: bool) {
+        let [lo, hi] = HINGE_PLANE;
+        let corners = [
+            Vec3::new(lo.x, lo.y, 0.0),
+            Vec3::new(hi.x, lo.y, 0.0),
+            Vec3::new(hi.x, hi.y, 0.0),
+            Vec3::new(lo.x, hi.y, 0.0),
+            Vec3::new(lo.x, lo.y, 0.0),
+        ]
+        .map(|c| c + root);
+        frame.stroke(&corners, palette::GREY, StrokeStyle::solid(1.5));
+        let off = self.target.z;
+        if off.abs() < 0.01 {
+            return;
+        }
+        let target = self.target + root;
+        let foot = Vec3::new(target.x, target.y, root.z);
+        frame.stroke(&[foot, target], palette::GREY, StrokeStyle::dashed(GAP_PX, 0.03, 0.02));
+        frame.marker(foot, POLE_PX, palette::GREY);
+        if named {
+            frame.label_with_priority(
+                foot.lerp(target, 0.5) - Vec3::new(0.04, 0.0, 0.0),
+                format!("{:.0} cm off the hinges' plane", off.abs() * 100.0),
+                palette::GREY,
+                0,
+            );
+            if let Some(label) = frame.labels.last_mut() {
+                label.left = true;
+            }
+        }
     }
 
     /// On the two-joint chain: the triangle of the law of cosines (sides a, b, d, the angle α at
