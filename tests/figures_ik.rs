@@ -569,67 +569,50 @@ fn the_hinges_gap_is_marked_with_its_length() {
 
 #[test]
 fn the_hinges_plane_and_the_targets_drop_to_it_are_drawn() {
-    use inbetween::figures::ik::HINGE_PLANE;
+    use inbetween::figures::ik::HINGE_PATCH_M;
     let mut f = IkFigure::new();
     f.set_limits("hinges (bend one way)").unwrap();
     let mut frame = Frame::default();
-    f.draw(&mut frame).unwrap();
+    let note = f.draw(&mut frame).unwrap();
+    assert!(
+        note.contains("the target is 15 cm off it (the grey dashed drop to the grey square)"),
+        "{note}"
+    );
     let grey: Vec<(Vec3, Vec3)> = frame.segments_of(palette::GREY).collect();
     let target = f.target();
     for root_x in [0.0, 1.1] {
         let root = Vec3::new(root_x, 0.0, 0.0);
-        // The plane's outline: its lower edge along x at z = 0.
-        let lower = (
-            root + Vec3::new(HINGE_PLANE[0].x, HINGE_PLANE[0].y, 0.0),
-            root + Vec3::new(HINGE_PLANE[1].x, HINGE_PLANE[0].y, 0.0),
-        );
+        let (top, foot) = (root + target, root + Vec3::new(target.x, target.y, 0.0));
+        // The square of the plane around the foot: its lower edge, at z = 0.
+        let h = HINGE_PATCH_M;
+        let lower = (foot + Vec3::new(-h, -h, 0.0), foot + Vec3::new(h, -h, 0.0));
         assert!(
             grey.iter()
                 .any(|(a, b)| a.distance(lower.0) < 1e-4 && b.distance(lower.1) < 1e-4),
-            "the plane's outline at the chain at x = {root_x}"
+            "the square at the chain at x = {root_x}"
         );
-        // The drop from the target to the plane: 15 cm along z, dashed.
-        let (top, foot) = (root + target, root + Vec3::new(target.x, target.y, 0.0));
-        let drop: f32 = grey
-            .iter()
-            .filter(|(a, b)| {
-                let on = |p: Vec3| {
-                    (p - foot).cross(top - foot).length() < 1e-4
-                        && p.z >= -1e-4
-                        && p.z <= top.z + 1e-4
-                };
-                on(*a) && on(*b)
-            })
-            .map(|(a, b)| a.distance(*b))
-            .sum();
+        // The drop from the target to the plane, 15 cm along z.
         assert!(
-            drop > 0.05 && drop <= 0.15 + 1e-4,
-            "the drop's dashes add up to {drop} m"
+            grey.iter()
+                .any(|(a, b)| a.distance(foot) < 1e-4 && b.distance(top) < 1e-4),
+            "the drop at the chain at x = {root_x}"
         );
+        assert!((top - foot).length() > 0.15 - 1e-4);
     }
-    let named: Vec<&str> = frame
-        .labels
-        .iter()
-        .filter(|l| l.text.contains("off the hinges' plane"))
-        .map(|l| l.text.as_str())
-        .collect();
-    assert_eq!(named, ["15 cm off the hinges' plane"]);
-    // No plane without hinges, and no drop for a target on the plane.
+    // None without hinges, nor for a target on the plane.
     f.set_limits("cones (40°)").unwrap();
     let mut frame = Frame::default();
-    f.draw(&mut frame).unwrap();
-    assert!(!frame
-        .labels
-        .iter()
-        .any(|l| l.text.contains("hinges' plane")));
+    let note = f.draw(&mut frame).unwrap();
+    assert!(!note.contains("grey dashed drop"), "{note}");
     f.set_limits("hinges (bend one way)").unwrap();
     f.set_target(Vec3::new(0.55, 0.65, 0.0)).unwrap();
     let mut frame = Frame::default();
-    f.draw(&mut frame).unwrap();
-    assert!(!frame
-        .labels
-        .iter()
-        .any(|l| l.text.contains("hinges' plane")));
+    let note = f.draw(&mut frame).unwrap();
+    assert!(!note.contains("grey dashed drop"), "{note}");
+    // Every grey line (hinge ranges, the side d) now lies in the plane: no drop along z.
+    assert!(frame
+        .segments_of(palette::GREY)
+        .all(|(a, b)| (a.z - b.z).abs() < 1e-6));
 }
 
 #[test]

@@ -18,7 +18,7 @@ await ikFigure('#fig-ik-iterative', { segments: 3, limits: 'none', controls: ['s
 // Figure 3 is seen from the front right: its hinges keep the chains in the z = 0 plane, and the
 // target's distance from that plane (along z) must show, which a view from the front hides.
 await ikFigure('#fig-ik-limits', {
-  segments: 2, limits: 'hinges (bend one way)', controls: ['segments', 'limits'], yaw: 0.7, pitch: 0.3,
+  segments: 2, limits: 'hinges (bend one way)', controls: ['segments', 'limits'], yaw: 0.5, pitch: 0.3,
 });
 
 async function ikFigure(id, start) {
