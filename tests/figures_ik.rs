@@ -559,8 +559,8 @@ fn the_hinges_gap_is_marked_with_its_length() {
     let mut frame = Frame::default();
     f.draw(&mut frame).unwrap();
     let results = f.results().unwrap();
-    for k in 1..3 {
-        let r = results[k].unwrap();
+    for r in &results[1..3] {
+        let r = r.unwrap();
         assert!(r.error >= 0.15 - 1e-4, "{r:?}");
         let text = format!("{:.1} mm short", r.error * 1000.0);
         assert!(frame.labels.iter().any(|l| l.text == text), "{text}");
