@@ -553,6 +553,34 @@ fn the_law_of_cosines_triangle_is_drawn_on_the_two_joint_chain() {
 }
 
 #[test]
+fn every_miss_the_note_reports_is_labelled_at_its_chain() {
+    // The defaults: CCD stops 3.8 mm short after 10 iterations, FABRIK and two-joint reach.
+    let mut f = IkFigure::new();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame).unwrap();
+    let results = f.results().unwrap();
+    let ccd = results[1].unwrap();
+    assert!(
+        !ccd.reached && ccd.error > 0.003 && ccd.error < 0.005,
+        "{ccd:?}"
+    );
+    assert!(
+        note.contains(&format!(
+            "CCD: after 10 iterations, {:.3} mm",
+            ccd.error * 1000.0
+        )),
+        "{note}"
+    );
+    let shorts: Vec<&str> = frame
+        .labels
+        .iter()
+        .filter(|l| l.text.ends_with("mm short"))
+        .map(|l| l.text.as_str())
+        .collect();
+    assert_eq!(shorts, [format!("{:.1} mm short", ccd.error * 1000.0)]);
+}
+
+#[test]
 fn the_hinges_gap_is_marked_with_its_length() {
     let mut f = IkFigure::new();
     f.set_limits("hinges (bend one way)").unwrap();

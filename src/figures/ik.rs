@@ -745,9 +745,10 @@ impl IkFigure {
             if k == 0 {
                 self.draw_law_of_cosines(frame, root);
             }
-            // What is left between the end and the target: a dashed line with its length.
+            // What is left between the end and the target: a dashed line with its length, for
+            // every miss the note reports (a few millimetres show as the label alone).
             if let (Some(r), Some(&end)) = (self.results[k], self.solved[k].last()) {
-                if r.error > 0.01 {
+                if !r.reached {
                     let end = end + root;
                     frame.stroke(
                         &[end, target],
