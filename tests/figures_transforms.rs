@@ -386,6 +386,30 @@ fn drawn_and_plotted(figure: &mut HierarchyFigure, t_index: usize) -> (f32, f32)
 }
 
 #[test]
+fn the_plots_keep_the_walks_angles_about_x_for_the_limbs_and_yours_for_the_rest() {
+    // Figure 2's caption: the walk sets the thighs', shins', upper arms' and forearms' angles
+    // about x, so a limb turned about x by hand leaves the plots as they were, while the same
+    // limb turned about z (or any other joint) changes them.
+    let mut figure = HierarchyFigure::new();
+    let base = figure.sample_cycle(13, 1.2).unwrap();
+    figure.set_animate(false);
+    let arm = joint(&figure, "upper_arm.L");
+    figure
+        .set_joint_angles_deg(arm, Vec3::new(45.0, 0.0, 0.0))
+        .unwrap();
+    let about_x = figure.sample_cycle(13, 1.2).unwrap();
+    assert_eq!(base, about_x, "about x, the walk's angle wins in the plots");
+    figure
+        .set_joint_angles_deg(arm, Vec3::new(45.0, 0.0, 30.0))
+        .unwrap();
+    let about_z = figure.sample_cycle(13, 1.2).unwrap();
+    let moved = (0..13)
+        .map(|k| (about_z[3 * k + 2] - base[3 * k + 2]).abs())
+        .fold(0.0, f32::max);
+    assert!(moved > 0.01, "about z the wrist curve moves: {moved} m");
+}
+
+#[test]
 fn the_plot_follows_the_pose_the_scales_and_the_scale_mode() {
     let mut figure = HierarchyFigure::new();
     let base = figure.sample_cycle(13, 1.2).unwrap();
