@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 use inbetween::camera::OrbitCamera;
-use inbetween::draw::Frame;
+use inbetween::draw::{palette, Frame};
 use inbetween::exercises::run::{direct, Failure, Flat};
 use inbetween::figures::ik::{AimFigure, IkFigure, MAX_ITERATIONS, TOLERANCE_M};
 use inbetween::ik::{ccd_iteration, max_violation_rad, JointLimit};
@@ -455,11 +455,19 @@ fn fabrik_stalls_near_the_root_where_ccd_reaches() {
     println!("CCD {ccd:?}, FABRIK {fabrik:?}");
     assert!(ccd.reached && ccd.iterations == 2, "{ccd:?}");
     assert!(!fabrik.reached && fabrik.iterations == 10, "{fabrik:?}");
-    assert!((fabrik.error * 1000.0 - 41.8).abs() < 0.1, "FABRIK {} mm short", fabrik.error * 1000.0);
+    assert!(
+        (fabrik.error * 1000.0 - 41.8).abs() < 0.1,
+        "FABRIK {} mm short",
+        fabrik.error * 1000.0
+    );
     // The figure marks the gap with its length.
     let mut frame = Frame::default();
     f.draw(&mut frame).unwrap();
-    assert!(frame.labels.iter().any(|l| l.text == "41.8 mm short"), "{:?}", frame.labels.iter().map(|l| &l.text).collect::<Vec<_>>());
+    assert!(
+        frame.labels.iter().any(|l| l.text == "41.8 mm short"),
+        "{:?}",
+        frame.labels.iter().map(|l| &l.text).collect::<Vec<_>>()
+    );
 }
 
 #[test]
@@ -471,18 +479,35 @@ fn each_target_has_its_chains_colour_and_stays_in_view() {
     f.draw(&mut frame).unwrap();
     let colors = [palette::BLUE, palette::ORANGE, palette::TEAL];
     for (k, name) in ["two-joint", "CCD", "FABRIK"].iter().enumerate() {
-        let label = frame.labels.iter().find(|l| l.text == format!("{name} target")).unwrap();
+        let label = frame
+            .labels
+            .iter()
+            .find(|l| l.text == format!("{name} target"))
+            .unwrap();
         assert_eq!(label.color, colors[k], "{name}");
         let target = f.target() + Vec3::new([-1.1, 0.0, 1.1][k], 0.0, 0.0);
-        assert!(frame.markers.iter().any(|m| Vec3::from(m.center) == target && glam::Vec4::from(m.color).truncate() == colors[k]));
-        assert!(frame.keep_in_view.contains(&target), "{name}'s target is kept in view");
+        assert!(frame
+            .markers
+            .iter()
+            .any(|m| Vec3::from(m.center) == target
+                && glam::Vec4::from(m.color).truncate() == colors[k]));
+        assert!(
+            frame.keep_in_view.contains(&target),
+            "{name}'s target is kept in view"
+        );
     }
     // With 3 segments the two-joint chain, its pole and its labels are not drawn.
     f.set_segments(3.0).unwrap();
     let mut frame = Frame::default();
     f.draw(&mut frame).unwrap();
-    assert!(frame.labels.iter().all(|l| !l.text.contains("two-joint") && l.text != "pole" && !l.text.contains("needs")));
-    assert!(frame.meshes.iter().all(|m| m.color.truncate() != palette::BLUE));
+    assert!(frame
+        .labels
+        .iter()
+        .all(|l| !l.text.contains("two-joint") && l.text != "pole" && !l.text.contains("needs")));
+    assert!(frame
+        .meshes
+        .iter()
+        .all(|m| m.color.truncate() != palette::BLUE));
 }
 
 #[test]
@@ -493,11 +518,19 @@ fn the_law_of_cosines_triangle_is_drawn_on_the_two_joint_chain() {
     let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
     assert!(texts.contains(&"a") && texts.contains(&"b"), "{texts:?}");
     let d = f.target().length();
-    assert!(texts.contains(&format!("d = {:.3} m", d).as_str()), "{texts:?}");
+    assert!(
+        texts.contains(&format!("d = {:.3} m", d).as_str()),
+        "{texts:?}"
+    );
     // α as drawn is the angle of the law of cosines: cos α = (a² + d² − b²) / (2ad).
     let (a, b) = (0.5f32, 0.5f32);
-    let alpha = ((a * a + d * d - b * b) / (2.0 * a * d)).acos().to_degrees();
-    assert!(texts.contains(&format!("α = {alpha:.0}°").as_str()), "{texts:?}");
+    let alpha = ((a * a + d * d - b * b) / (2.0 * a * d))
+        .acos()
+        .to_degrees();
+    assert!(
+        texts.contains(&format!("α = {alpha:.0}°").as_str()),
+        "{texts:?}"
+    );
     // Every middle joint the pole angle can choose lies on the dashed circle: turning the pole
     // keeps the middle joint at the same distance from the root→target line.
     let chain = f.chain(0).unwrap();
@@ -512,8 +545,39 @@ fn the_law_of_cosines_triangle_is_drawn_on_the_two_joint_chain() {
         f.set_pole_angle_deg(deg).unwrap();
         let c = f.chain(0).unwrap();
         assert!((off_line(c[1]) - r0).abs() < 1e-4);
-        assert!(c[2].distance(chain[2]) < 1e-4, "the end stays on the target");
+        assert!(
+            c[2].distance(chain[2]) < 1e-4,
+            "the end stays on the target"
+        );
     }
+}
+
+#[test]
+fn every_miss_the_note_reports_is_labelled_at_its_chain() {
+    // The defaults: CCD stops 3.8 mm short after 10 iterations, FABRIK and two-joint reach.
+    let mut f = IkFigure::new();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame).unwrap();
+    let results = f.results().unwrap();
+    let ccd = results[1].unwrap();
+    assert!(
+        !ccd.reached && ccd.error > 0.003 && ccd.error < 0.005,
+        "{ccd:?}"
+    );
+    assert!(
+        note.contains(&format!(
+            "CCD: after 10 iterations, {:.3} mm",
+            ccd.error * 1000.0
+        )),
+        "{note}"
+    );
+    let shorts: Vec<&str> = frame
+        .labels
+        .iter()
+        .filter(|l| l.text.ends_with("mm short"))
+        .map(|l| l.text.as_str())
+        .collect();
+    assert_eq!(shorts, [format!("{:.1} mm short", ccd.error * 1000.0)]);
 }
 
 #[test]
@@ -523,12 +587,60 @@ fn the_hinges_gap_is_marked_with_its_length() {
     let mut frame = Frame::default();
     f.draw(&mut frame).unwrap();
     let results = f.results().unwrap();
-    for k in 1..3 {
-        let r = results[k].unwrap();
+    for r in &results[1..3] {
+        let r = r.unwrap();
         assert!(r.error >= 0.15 - 1e-4, "{r:?}");
         let text = format!("{:.1} mm short", r.error * 1000.0);
         assert!(frame.labels.iter().any(|l| l.text == text), "{text}");
     }
+}
+
+#[test]
+fn the_hinges_plane_and_the_targets_drop_to_it_are_drawn() {
+    use inbetween::figures::ik::HINGE_PATCH_M;
+    let mut f = IkFigure::new();
+    f.set_limits("hinges (bend one way)").unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame).unwrap();
+    assert!(
+        note.contains("the target is 15 cm off it (the grey dashed drop to the grey square)"),
+        "{note}"
+    );
+    let grey: Vec<(Vec3, Vec3)> = frame.segments_of(palette::GREY).collect();
+    let target = f.target();
+    for root_x in [0.0, 1.1] {
+        let root = Vec3::new(root_x, 0.0, 0.0);
+        let (top, foot) = (root + target, root + Vec3::new(target.x, target.y, 0.0));
+        // The square of the plane around the foot: its lower edge, at z = 0.
+        let h = HINGE_PATCH_M;
+        let lower = (foot + Vec3::new(-h, -h, 0.0), foot + Vec3::new(h, -h, 0.0));
+        assert!(
+            grey.iter()
+                .any(|(a, b)| a.distance(lower.0) < 1e-4 && b.distance(lower.1) < 1e-4),
+            "the square at the chain at x = {root_x}"
+        );
+        // The drop from the target to the plane, 15 cm along z.
+        assert!(
+            grey.iter()
+                .any(|(a, b)| a.distance(foot) < 1e-4 && b.distance(top) < 1e-4),
+            "the drop at the chain at x = {root_x}"
+        );
+        assert!((top - foot).length() > 0.15 - 1e-4);
+    }
+    // None without hinges, nor for a target on the plane.
+    f.set_limits("cones (40°)").unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame).unwrap();
+    assert!(!note.contains("grey dashed drop"), "{note}");
+    f.set_limits("hinges (bend one way)").unwrap();
+    f.set_target(Vec3::new(0.55, 0.65, 0.0)).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame).unwrap();
+    assert!(!note.contains("grey dashed drop"), "{note}");
+    // Every grey line (hinge ranges, the side d) now lies in the plane: no drop along z.
+    assert!(frame
+        .segments_of(palette::GREY)
+        .all(|(a, b)| (a.z - b.z).abs() < 1e-6));
 }
 
 #[test]
@@ -538,12 +650,30 @@ fn the_aim_figure_shows_what_the_head_misses() {
     let mut frame = Frame::default();
     let note = f.draw(&mut frame, 0.0).unwrap();
     assert!(note.contains("outside the 70° cone"), "{note}");
-    let missed = frame.labels.iter().find(|l| l.text.starts_with("misses")).expect("the missed angle");
-    let deg: f32 = missed.text.trim_start_matches("misses ").trim_end_matches('°').parse().unwrap();
+    let missed = frame
+        .labels
+        .iter()
+        .find(|l| l.text.starts_with("misses"))
+        .expect("the missed angle");
+    let deg: f32 = missed
+        .text
+        .trim_start_matches("misses ")
+        .trim_end_matches('°')
+        .parse()
+        .unwrap();
     assert!(deg > 90.0, "{deg}");
-    assert!(frame.strokes.iter().any(|s| s.dash[3] > 0.0 && s.width_px >= 2.0), "a wide dashed line to the target");
+    assert!(
+        frame
+            .strokes
+            .iter()
+            .any(|s| s.dash[3] > 0.0 && s.width_px >= 2.0),
+        "a wide dashed line to the target"
+    );
     // Every target position of the loop stays inside the declared view.
-    let (lo, hi) = frame.keep_in_view.iter().fold((Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let (lo, hi) = frame.keep_in_view.iter().fold(
+        (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
     for k in 0..32 {
         let p = f.target_at(8.0 * k as f32 / 32.0);
         assert!(p.cmpge(lo).all() && p.cmple(hi).all(), "{p}");
@@ -579,12 +709,24 @@ fn use_my_exercise_checks_probe_inputs_beyond_the_target() {
         direct(name, args)
     }
     f.set_runner(no_clamp);
-    let note = f.results().map(|_| ()).and_then(|_| {
-        let mut frame = Frame::default();
-        f.draw(&mut frame)
-    }).unwrap();
-    assert!(note.contains("Your two_joint matches the reference"), "{note}");
-    assert!(note.contains("your two_joint differs at 2: a target out of reach; a target closer than |a − b|"), "{note}");
+    let note = f
+        .results()
+        .map(|_| ())
+        .and_then(|_| {
+            let mut frame = Frame::default();
+            f.draw(&mut frame)
+        })
+        .unwrap();
+    assert!(
+        note.contains("Your two_joint matches the reference"),
+        "{note}"
+    );
+    assert!(
+        note.contains(
+            "your two_joint differs at 2: a target out of reach; a target closer than |a − b|"
+        ),
+        "{note}"
+    );
     if cfg!(feature = "solutions") {
         f.set_runner(direct);
         f.set_target(Vec3::new(0.3, 0.6, 0.1)).unwrap();
@@ -605,7 +747,10 @@ fn the_aim_cone_is_drawn_in_wide_lines() {
     let mut frame = Frame::default();
     a.draw(&mut frame, 0.0).unwrap();
     let purple = palette::PURPLE.extend(1.0).to_array();
-    assert!(frame.lines.chunks(2).all(|v| v[0].color != purple), "no 1 px purple line");
+    assert!(
+        frame.lines.chunks(2).all(|v| v[0].color != purple),
+        "no 1 px purple line"
+    );
     let head = Vec3::new(0.0, 1.6, 0.0);
     let rays = frame
         .strokes

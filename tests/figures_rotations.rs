@@ -136,6 +136,44 @@ fn default_keys_make_euler_lerp_wobble() {
 }
 
 #[test]
+fn keys_about_one_axis_say_euler_lerp_follows_slerp() {
+    // The caption's Try this: end key (0, 90, 0), a turn about y alone.
+    let mut scene = Interpolation::new();
+    scene
+        .set_keys_euler_deg(Vec3::ZERO, Vec3::new(0.0, 90.0, 0.0))
+        .unwrap();
+    let (_, max) = scene.max_euler_deviation_deg();
+    assert!(max < 0.5, "{max}°");
+    let note = scene.draw(&mut Frame::default(), 0.3).unwrap();
+    assert!(
+        note.contains("Euler lerp follows slerp here: they are under 0.5° apart at every t."),
+        "{note}"
+    );
+    assert!(!note.contains("at most"), "no largest to point at: {note}");
+}
+
+#[test]
+fn each_wing_tip_carries_a_dot_where_its_dashed_path_is_now() {
+    let mut scene = Interpolation::new();
+    for t in [0.0, 0.4, 1.0] {
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, t).unwrap();
+        for (method, x, color) in inbetween::figures::rotations::METHODS {
+            let tip = Vec3::new(x, 1.2, 0.0)
+                + scene.orientation(method, t, false) * Vec3::new(0.05, 0.0, 0.5);
+            assert!(
+                frame
+                    .markers
+                    .iter()
+                    .any(|m| Vec3::from(m.center).distance(tip) < 1e-4
+                        && glam::Vec4::from(m.color).truncate().distance(color * 0.8) < 1e-4),
+                "{method:?} at t = {t}: no dot on the wing tip {tip}"
+            );
+        }
+    }
+}
+
+#[test]
 fn long_arc_note_gives_both_angles_adding_to_a_turn() {
     let mut scene = Interpolation::new();
     let (short, long) = scene.arc_angles_deg();

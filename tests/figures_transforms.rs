@@ -330,12 +330,83 @@ fn the_direction_and_its_label_leave_the_box_at_every_stage() {
     }
 }
 
+/// The pink point's label as the page places it: the page's camera for Figure 1, fitted to what
+/// the frame declares on a canvas of `size` CSS pixels, with the label's box just right of its
+/// anchor (`p (w = 1)` is about 70 px wide and 16 px tall at the page's font).
+fn point_label_box(frame: &Frame, size: glam::Vec2) -> (glam::Mat4, glam::Vec2, glam::Vec2) {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let mut camera = OrbitCamera::from_view([0.5, 0.3, 0.0, 5.0, 0.6, 0.45]);
+    let points: Vec<Vec3> = frame
+        .keep_in_view
+        .iter()
+        .copied()
+        .chain(frame.labels.iter().map(|l| l.anchor))
+        .collect();
+    assert!(camera.fit(&points, size, FIT_PAD_PX));
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let label = frame.labels.iter().find(|l| l.text == "p (w = 1)").unwrap();
+    assert!(!label.left, "p's label reads rightwards");
+    let anchor = project_to_canvas(view_proj, size, label.anchor).unwrap();
+    let min = anchor + glam::Vec2::new(5.0, -8.0);
+    (view_proj, min, min + glam::Vec2::new(70.0, 16.0))
+}
+
+#[test]
+fn the_points_label_stays_off_the_paths_at_every_stage() {
+    use inbetween::camera::project_to_canvas;
+    let shape = SingleShape::new();
+    let t = Vec3::new(1.0, 0.5, 0.0);
+    // Both centres' paths: the slide from the origin to t, and R·T's swing from t to R·t.
+    let mut path: Vec<Vec3> = (0..=40).map(|k| t * (k as f32 / 40.0)).collect();
+    path.extend(shape.swing_arc(48));
+    for size in [glam::Vec2::new(640.0, 420.0), glam::Vec2::new(760.0, 380.0)] {
+        for k in 0..=16 {
+            let stage = k as f32 / 8.0;
+            let mut frame = Frame::default();
+            shape.draw(&mut frame, stage).unwrap();
+            let (view_proj, lo, hi) = point_label_box(&frame, size);
+            for q in &path {
+                let px = project_to_canvas(view_proj, size, *q).unwrap();
+                let inside = px.cmpge(lo - 2.0).all() && px.cmple(hi + 2.0).all();
+                assert!(
+                    !inside,
+                    "{size}, stage {stage}: the path's point {q} at {px} is under p's label ({lo} to {hi})"
+                );
+            }
+        }
+    }
+}
+
 /// Height of the left wrist at `t` in the drawn figure and in the plot.
 fn drawn_and_plotted(figure: &mut HierarchyFigure, t_index: usize) -> (f32, f32) {
     let samples = figure.sample_cycle(13, 1.2).unwrap();
     let t = samples[3 * t_index];
     figure.pose(t).unwrap();
     (figure.wrist().y, samples[3 * t_index + 2])
+}
+
+#[test]
+fn the_plots_keep_the_walks_angles_about_x_for_the_limbs_and_yours_for_the_rest() {
+    // Figure 2's caption: the walk sets the thighs', shins', upper arms' and forearms' angles
+    // about x, so a limb turned about x by hand leaves the plots as they were, while the same
+    // limb turned about z (or any other joint) changes them.
+    let mut figure = HierarchyFigure::new();
+    let base = figure.sample_cycle(13, 1.2).unwrap();
+    figure.set_animate(false);
+    let arm = joint(&figure, "upper_arm.L");
+    figure
+        .set_joint_angles_deg(arm, Vec3::new(45.0, 0.0, 0.0))
+        .unwrap();
+    let about_x = figure.sample_cycle(13, 1.2).unwrap();
+    assert_eq!(base, about_x, "about x, the walk's angle wins in the plots");
+    figure
+        .set_joint_angles_deg(arm, Vec3::new(45.0, 0.0, 30.0))
+        .unwrap();
+    let about_z = figure.sample_cycle(13, 1.2).unwrap();
+    let moved = (0..13)
+        .map(|k| (about_z[3 * k + 2] - base[3 * k + 2]).abs())
+        .fold(0.0, f32::max);
+    assert!(moved > 0.01, "about z the wrist curve moves: {moved} m");
 }
 
 #[test]

@@ -8,11 +8,11 @@ const lesson = await startLesson();
 // Three decimals, and no "-0.000": a component that rounds to zero reads 0.000.
 const fmt = (v) => Array.from(v, (x) => (Math.abs(x) < 5e-4 ? 0 : x).toFixed(3)).join(', ');
 
-/** A 3×3 column-major matrix as a table. */
+/** A 3×3 column-major matrix as a table, three decimals, no "-0.000". */
 function showMatrix3(table, cols) {
   const rows = [0, 1, 2].map((r) => [0, 1, 2].map((c) => cols[c * 3 + r]));
   table.innerHTML = rows
-    .map((row) => `<tr>${row.map((v) => `<td>${(Math.abs(v) < 5e-5 ? 0 : v).toFixed(3)}</td>`).join('')}</tr>`)
+    .map((row) => `<tr>${row.map((v) => `<td>${(Math.abs(v) < 5e-4 ? 0 : v).toFixed(3)}</td>`).join('')}</tr>`)
     .join('');
 }
 

@@ -15,15 +15,19 @@ const UNDER_AND_OVER = [5, 1.5];
 // let the number of segments change, which hides the two-joint chain and so its pole.
 await ikFigure('#fig-ik', { segments: 2, limits: 'none', controls: ['pole'] });
 await ikFigure('#fig-ik-iterative', { segments: 3, limits: 'none', controls: ['segments'] });
-await ikFigure('#fig-ik-limits', { segments: 2, limits: 'hinges (bend one way)', controls: ['segments', 'limits'] });
+// Figure 3 is seen from the front right: its hinges keep the chains in the z = 0 plane, and the
+// target's distance from that plane (along z) must show, which a view from the front hides.
+await ikFigure('#fig-ik-limits', {
+  segments: 2, limits: 'hinges (bend one way)', controls: ['segments', 'limits'], yaw: 0.5, pitch: 0.3,
+});
 
 async function ikFigure(id, start) {
   const viewer = await lesson.figure(id);
   if (!viewer) return;
   const figure = document.querySelector(id);
-  // From the front, a little above; the scene declares what stays in view (each chain's reach
+  // From the front (unless the figure says otherwise), a little above; the scene declares what stays in view (each chain's reach
   // and its target), and the camera fits it.
-  viewer.setCamera(0.25, 0.45, 0, 4.3, 0.1, 0.25);
+  viewer.setCamera(0.25, 0.45, 0, 4.3, start.yaw ?? 0.1, start.pitch ?? 0.25);
   const scene = new IkScene();
   const home = { x: 0.55, y: 0.65, z: 0.15, pole: 0 };
   const p = {

@@ -12,8 +12,8 @@ use super::{
     compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
     DEFAULT_RUNNER,
 };
-use crate::draw::StrokeStyle;
 use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
+use crate::draw::StrokeStyle;
 use crate::exercises::run;
 use crate::ik::{aim, ccd, ccd_limited, fabrik, fabrik_limited, two_joint, IkResult, JointLimit};
 use glam::{Mat4, Quat, Vec2, Vec3};
@@ -46,6 +46,9 @@ const POLE_PX: f32 = 11.0;
 const GAP_PX: f32 = 2.5;
 /// Width of the aim figure's cone: its rim and the rays from the head to it, CSS pixels.
 pub const CONE_PX: f32 = 2.0;
+
+/// Half the side of the square of the hinges' plane drawn around the target's foot, metres.
+pub const HINGE_PATCH_M: f32 = 0.1;
 
 /// What the joint-limits dropdown offers, in order.
 pub const LIMIT_MODES: [&str; 3] = ["none", "hinges (bend one way)", "cones (40°)"];
@@ -375,7 +378,9 @@ impl IkFigure {
                 "Two-joint: out of reach, {} short (the chain points straight at the target).",
                 mm(r.error)
             )),
-            None => parts.push("Two-joint IK needs exactly 2 segments: its chain is hidden.".into()),
+            None => {
+                parts.push("Two-joint IK needs exactly 2 segments: its chain is hidden.".into())
+            }
         }
         for (k, name) in [(1, "CCD"), (2, "FABRIK")] {
             let Some(r) = self.results[k] else { continue };
@@ -394,6 +399,14 @@ impl IkFigure {
                     mm(r.error)
                 )
             });
+        }
+        if self.limits == Limits::Hinges && self.target.z.abs() >= 0.01 {
+            parts.push(format!(
+                "The hinges keep CCD's and FABRIK's chains in the plane z = 0 through their roots, \
+                 and the target is {:.0} cm off it (the grey dashed drop to the grey square): no \
+                 hinged pose comes closer than that.",
+                self.target.z.abs() * 100.0
+            ));
         }
         if self.limits != Limits::None {
             parts.push(if self.segments == 2 {
@@ -456,12 +469,44 @@ impl IkFigure {
     /// Exercise 7.1 at inputs the figure may not show: a target out of reach, one closer than
     /// |a − b|, unequal segments, the pole on the other side.
     fn probe_two_joint(&self) -> String {
-        let (r, m, e) = (Vec3::ZERO, Vec3::new(0.1, 0.6, 0.0), Vec3::new(0.0, 1.0, 0.05));
+        let (r, m, e) = (
+            Vec3::ZERO,
+            Vec3::new(0.1, 0.6, 0.0),
+            Vec3::new(0.0, 1.0, 0.05),
+        );
         let probes = [
-            ("a target out of reach", r, m, e, Vec3::new(1.5, 0.4, 0.2), Vec3::new(0.0, 1.0, 1.0)),
-            ("a target closer than |a − b|", r, m, e, Vec3::new(0.05, 0.1, 0.0), Vec3::new(1.0, 0.0, 0.0)),
-            ("the pole behind (−z)", r, m, e, Vec3::new(0.4, 0.6, 0.1), Vec3::new(0.2, 0.3, -1.0)),
-            ("a root away from the origin", Vec3::new(0.3, -0.2, 0.1), m, e, Vec3::new(0.5, 0.4, 0.3), Vec3::new(1.0, 1.0, 0.0)),
+            (
+                "a target out of reach",
+                r,
+                m,
+                e,
+                Vec3::new(1.5, 0.4, 0.2),
+                Vec3::new(0.0, 1.0, 1.0),
+            ),
+            (
+                "a target closer than |a − b|",
+                r,
+                m,
+                e,
+                Vec3::new(0.05, 0.1, 0.0),
+                Vec3::new(1.0, 0.0, 0.0),
+            ),
+            (
+                "the pole behind (−z)",
+                r,
+                m,
+                e,
+                Vec3::new(0.4, 0.6, 0.1),
+                Vec3::new(0.2, 0.3, -1.0),
+            ),
+            (
+                "a root away from the origin",
+                Vec3::new(0.3, -0.2, 0.1),
+                m,
+                e,
+                Vec3::new(0.5, 0.4, 0.3),
+                Vec3::new(1.0, 1.0, 0.0),
+            ),
         ];
         let mut asked = 0;
         let mut differing = Vec::new();
@@ -493,8 +538,16 @@ impl IkFigure {
             Vec3::new(0.1, 1.0, -0.2),
         ];
         let probes = [
-            ("four unequal segments", bent.clone(), Vec3::new(-0.4, 0.5, 0.3)),
-            ("a target out of reach", bent.clone(), Vec3::new(2.0, 1.0, 0.5)),
+            (
+                "four unequal segments",
+                bent.clone(),
+                Vec3::new(-0.4, 0.5, 0.3),
+            ),
+            (
+                "a target out of reach",
+                bent.clone(),
+                Vec3::new(2.0, 1.0, 0.5),
+            ),
             ("a target behind the root", bent, Vec3::new(0.0, -0.5, -0.3)),
         ];
         let mut asked = 0;
@@ -507,7 +560,10 @@ impl IkFigure {
             let mut reference = chain;
             crate::ik::ccd_iteration(&mut reference, target);
             let close = yours.len() == reference.len()
-                && yours.iter().zip(&reference).all(|(y, r)| y.distance(*r) <= STUDENT_TOLERANCE);
+                && yours
+                    .iter()
+                    .zip(&reference)
+                    .all(|(y, r)| y.distance(*r) <= STUDENT_TOLERANCE);
             if !close {
                 differing.push(name.to_string());
             }
@@ -678,17 +734,27 @@ impl IkFigure {
             let color = SOLVER_COLORS[k];
             // Each chain's own target, in its colour, so none is taken for a neighbour's.
             frame.marker(target, TARGET_PX, color);
-            frame.label_with_priority(target + Vec3::new(0.05, 0.05, 0.0), format!("{} target", SOLVERS[k]), color, 1);
+            frame.label_with_priority(
+                target + Vec3::new(0.05, 0.05, 0.0),
+                format!("{} target", SOLVERS[k]),
+                color,
+                1,
+            );
             frame.label_with_priority(root + Vec3::new(0.0, -0.12, 0.0), SOLVERS[k], color, 2);
             draw_chain(frame, root, &self.solved[k], color);
             if k == 0 {
                 self.draw_law_of_cosines(frame, root);
             }
-            // What is left between the end and the target: a dashed line with its length.
+            // What is left between the end and the target: a dashed line with its length, for
+            // every miss the note reports (a few millimetres show as the label alone).
             if let (Some(r), Some(&end)) = (self.results[k], self.solved[k].last()) {
-                if r.error > 0.01 {
+                if !r.reached {
                     let end = end + root;
-                    frame.stroke(&[end, target], color, StrokeStyle::dashed(GAP_PX, 0.03, 0.02));
+                    frame.stroke(
+                        &[end, target],
+                        color,
+                        StrokeStyle::dashed(GAP_PX, 0.03, 0.02),
+                    );
                     frame.label_with_priority(
                         end.lerp(target, 0.5) + Vec3::new(0.03, -0.06, 0.0),
                         format!("{:.1} mm short", r.error * 1000.0),
@@ -701,6 +767,9 @@ impl IkFigure {
                 if let Some((l, d)) = &limits {
                     draw_limits(frame, root, &self.solved[k], l, *d);
                 }
+                if self.limits == Limits::Hinges {
+                    self.draw_hinge_plane(frame, root);
+                }
             }
             if let Some(student) = &self.student[k.min(1)] {
                 if k < 2 && self.use_exercise {
@@ -712,10 +781,35 @@ impl IkFigure {
                 }
             }
             // The chain's reach and its target stay in view.
-            frame.keep_box_in_view(root + Vec3::new(-0.6, -0.15, -0.2), root + Vec3::new(0.6, 1.05, 0.2));
+            frame.keep_box_in_view(
+                root + Vec3::new(-0.6, -0.15, -0.2),
+                root + Vec3::new(0.6, 1.05, 0.2),
+            );
             frame.keep_in_view.push(target);
         }
         Ok(self.notes.join(" "))
+    }
+
+    /// With hinges, where the target is off the z = 0 plane through the root that the hinges (all
+    /// about z) keep the chain in: a grey square of that plane around the target's foot, a hollow
+    /// dot at the foot and a grey dashed drop from the target to it. The drop is the distance no
+    /// hinged pose can cover; from the front it would hide, so the figure is seen from the side.
+    fn draw_hinge_plane(&self, frame: &mut Frame, root: Vec3) {
+        if self.target.z.abs() < 0.01 {
+            return;
+        }
+        let target = self.target + root;
+        let foot = Vec3::new(target.x, target.y, root.z);
+        let h = HINGE_PATCH_M;
+        let square = [(-h, -h), (h, -h), (h, h), (-h, h), (-h, -h)]
+            .map(|(x, y)| foot + Vec3::new(x, y, 0.0));
+        frame.stroke(&square, palette::GREY, StrokeStyle::solid(1.5));
+        frame.stroke(
+            &[foot, target],
+            palette::GREY,
+            StrokeStyle::dashed(GAP_PX, 0.03, 0.02),
+        );
+        frame.marker(foot, POLE_PX, palette::GREY);
     }
 
     /// On the two-joint chain: the triangle of the law of cosines (sides a, b, d, the angle α at
@@ -729,7 +823,11 @@ impl IkFigure {
             [r, m, e] => [r + root, m + root, e + root],
             _ => return,
         };
-        frame.stroke(&[m, pole], palette::PURPLE, StrokeStyle::dashed(1.5, 0.03, 0.03));
+        frame.stroke(
+            &[m, pole],
+            palette::PURPLE,
+            StrokeStyle::dashed(1.5, 0.03, 0.03),
+        );
         let d = (self.target).length();
         let a = (m - r).length();
         let u = (e - r).normalize_or(Vec3::Y);
@@ -739,9 +837,16 @@ impl IkFigure {
         let radial = m - centre;
         if radial.length() > 1e-3 {
             let circle: Vec<Vec3> = (0..=48)
-                .map(|k| centre + Quat::from_axis_angle(u, std::f32::consts::TAU * k as f32 / 48.0) * radial)
+                .map(|k| {
+                    centre
+                        + Quat::from_axis_angle(u, std::f32::consts::TAU * k as f32 / 48.0) * radial
+                })
                 .collect();
-            frame.stroke(&circle, palette::PURPLE, StrokeStyle::dashed(1.5, 0.02, 0.02));
+            frame.stroke(
+                &circle,
+                palette::PURPLE,
+                StrokeStyle::dashed(1.5, 0.02, 0.02),
+            );
         }
         // Side d along the root→target line (up to the end when the target is out of reach).
         let g = self.target + root;
@@ -754,7 +859,11 @@ impl IkFigure {
         };
         frame.label(side(r, m), "a", palette::BLUE);
         frame.label(side(m, e), "b", palette::BLUE);
-        frame.label(side(r, g) + Vec3::new(0.0, -0.04, 0.0), format!("d = {} m", format_number(d)), palette::GREY);
+        frame.label(
+            side(r, g) + Vec3::new(0.0, -0.04, 0.0),
+            format!("d = {} m", format_number(d)),
+            palette::GREY,
+        );
         // The angle α at the root, between the line to the target and the first segment.
         let first = (m - r).normalize_or(Vec3::Y);
         let angle = u.angle_between(first);
@@ -956,16 +1065,31 @@ impl AimFigure {
         frame.arrow(HEAD, HEAD + s.forward * 0.8, palette::BLUE, 0.08);
         frame.label_with_priority(HEAD + s.forward * 0.85, "forward", palette::BLUE, 2);
         frame.marker(target, TARGET_PX, palette::RED);
-        frame.label_with_priority(target + Vec3::new(0.05, 0.05, 0.0), "target", palette::RED, 2);
+        frame.label_with_priority(
+            target + Vec3::new(0.05, 0.05, 0.0),
+            "target",
+            palette::RED,
+            2,
+        );
         let to_target = (target - HEAD).normalize_or(Vec3::Z);
         if !s.result.reached {
             // What the head misses: a dashed line to the target, and the angle between where
             // it looks and where the target is, drawn as an arc with its size.
-            frame.stroke(&[HEAD, target], palette::RED, StrokeStyle::dashed(GAP_PX, 0.06, 0.04));
+            frame.stroke(
+                &[HEAD, target],
+                palette::RED,
+                StrokeStyle::dashed(GAP_PX, 0.06, 0.04),
+            );
             let missed = s.forward.angle_between(to_target);
-            let axis = s.forward.cross(to_target).try_normalize().unwrap_or_else(|| s.forward.any_orthonormal_vector());
+            let axis = s
+                .forward
+                .cross(to_target)
+                .try_normalize()
+                .unwrap_or_else(|| s.forward.any_orthonormal_vector());
             let arc: Vec<Vec3> = (0..=24)
-                .map(|k| HEAD + Quat::from_axis_angle(axis, missed * k as f32 / 24.0) * s.forward * 0.45)
+                .map(|k| {
+                    HEAD + Quat::from_axis_angle(axis, missed * k as f32 / 24.0) * s.forward * 0.45
+                })
                 .collect();
             frame.stroke(&arc, palette::RED, StrokeStyle::solid(GAP_PX));
             frame.label_with_priority(
@@ -988,7 +1112,10 @@ impl AimFigure {
             frame.wide_line(HEAD, circle[k], palette::PURPLE, CONE_PX);
         }
         // The cone's name above its rim, clear of the forward arrow's label.
-        let top = circle.iter().copied().fold(circle[0], |a, b| if b.y > a.y { b } else { a });
+        let top = circle
+            .iter()
+            .copied()
+            .fold(circle[0], |a, b| if b.y > a.y { b } else { a });
         frame.label_with_priority(
             top + Vec3::new(0.0, 0.12, 0.0),
             format!("{:.0}° cone", self.max_angle_rad / DEG),

@@ -73,6 +73,8 @@ const NOSE: Vec3 = Vec3::new(0.9, 0.0, 0.0);
 /// the nose, so a turn about the nose's own axis (x), which leaves the nose in place, still draws
 /// a path.
 const WING_TIP: Vec3 = Vec3::new(0.05, 0.0, 0.5);
+/// The dot on the wing tip that draws the dashed path, CSS pixels.
+const WING_TIP_PX: f32 = 8.0;
 /// Equal steps of t marked on each path.
 const PATH_TICKS: usize = 8;
 /// Samples of t over which Figure 1's note finds how far Euler lerp strays from slerp.
@@ -225,10 +227,12 @@ impl Interpolation {
             }
             let wing = crate::draw::StrokeStyle {
                 on_top: true,
-                ..crate::draw::StrokeStyle::dashed(2.0, 0.06, 0.05)
+                ..crate::draw::StrokeStyle::dashed(2.5, 0.08, 0.05)
             };
             frame.stroke(&self.path, color * 0.8, wing);
             let m = self.orientation(method, t, student);
+            // The wing tip that draws the dashed path, where it is now.
+            frame.marker_on_top(at + m * WING_TIP, WING_TIP_PX, color * 0.8);
             draw_plane(frame, at, m, color, 1.0);
             // The pointer whose tip draws the path.
             let pointer = Mat4::from_translation(at)
@@ -272,6 +276,10 @@ impl Interpolation {
     /// How far Euler lerp is from slerp now, and at most.
     fn deviation_note(&self, t: f32) -> String {
         let (t_max, max) = self.max_euler_deviation_deg();
+        if max < 0.5 {
+            // No largest to point at: the two agree everywhere (keys about one axis).
+            return "Euler lerp follows slerp here: they are under 0.5° apart at every t.".into();
+        }
         format!(
             "Euler lerp is {:.0}° from slerp at t = {:.2}; at most {:.0}° (at t = {:.2}).",
             self.euler_deviation_deg(t),

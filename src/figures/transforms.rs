@@ -68,6 +68,11 @@ pub struct SingleShape {
 
 /// Half-size of Figure 1's box, metres.
 pub const BOX_HALF: Vec3 = Vec3::new(0.4, 0.25, 0.15);
+/// Figure 1's point p (w = 1), in the box's frame: the front corner below the box's +x end. The
+/// paths of the centres leave the box upwards and to the right (towards t = (1, 0.5, 0) and
+/// round the swing), so p's label, which reads rightwards from just outside this corner, stays
+/// below them at every stage.
+pub const POINT: Vec3 = Vec3::new(BOX_HALF.x, -BOX_HALF.y, BOX_HALF.z);
 /// Figure 1's direction v (w = 0), in the box's frame: longer than the box is wide, so it shows
 /// outside the box while the box turns at the origin.
 pub const DIRECTION: Vec3 = Vec3::new(-0.7, 0.35, 0.0);
@@ -200,7 +205,7 @@ impl SingleShape {
         // axis, and long enough to leave the box while the box turns at the origin; its label
         // reads leftwards from past the tip, off the arrow.
         let centre = m.w_axis.truncate();
-        let p = (m * transform::point(BOX_HALF)).truncate();
+        let p = (m * transform::point(POINT)).truncate();
         frame.marker(p, 11.0, palette::PINK);
         let out = (p - centre).normalize_or_zero();
         frame.label_with_priority(p + out * 0.15, "p (w = 1)", palette::PINK, 2);
