@@ -163,7 +163,8 @@ fn rigid_keys_outside_their_range_are_rejected() {
     use inbetween::figures::rigid::{AffineKeys, RigidMotion};
     let mut rigid = RigidMotion::new();
     let axis = rigid.screw_axis();
-    let q = Quat::from_xyzw(1e38, 0.7071, 0.0, 0.7071);
+    let h = std::f32::consts::FRAC_1_SQRT_2;
+    let q = Quat::from_xyzw(1e38, h, 0.0, h);
     let e = rigid.set_end_quat(q, Vec3::X).unwrap_err();
     assert!(e.contains("[-10000, 10000]"), "{e}");
     let e = rigid

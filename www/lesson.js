@@ -836,6 +836,6 @@ export function showMatrix(table, cols) {
   const idx = [...Array(n).keys()];
   const rows = idx.map((r) => idx.map((c) => cols[c * n + r]));
   table.innerHTML = rows
-    .map((row) => `<tr>${row.map((v) => `<td>${(Math.abs(v) < 5e-5 ? 0 : v).toFixed(3)}</td>`).join('')}</tr>`)
+    .map((row) => `<tr>${row.map((v) => `<td>${(Math.abs(v) < 5e-4 ? 0 : v).toFixed(3)}</td>`).join('')}</tr>`)
     .join('');
 }

@@ -508,9 +508,10 @@ fn run_caught<T>(context: impl Fn() -> String, f: impl FnOnce() -> T) -> Result<
     let chained = previous.clone();
     std::panic::set_hook(Box::new(move |info| {
         let message = format!(
-            "Your {context} panicked: {info}\nThe browser grader stops at the first panic (a \
-             WebAssembly module cannot continue after one); `scripts/grade` (native) reports it as \
-             PANICKED and grades the other exercises."
+            "Your {context} panicked: {info}\nA WebAssembly module cannot continue after a panic: \
+             the page's Check my exercises panel grades the rest in a fresh module, `scripts/grade \
+             --browser` stops here, and `scripts/grade` (native) reports it as PANICKED and grades \
+             the other exercises."
         );
         web_sys::console::error_1(&message.into());
         if let Some(hook) = chained.lock().unwrap_or_else(|e| e.into_inner()).as_ref() {
