@@ -1,0 +1,247 @@
+//! Rigid bodies: a body's state (position, orientation quaternion, linear and angular velocity),
+//! its inertia in its principal frame, and the integrators the course compares.
+//!
+//! - **Linear part:** semi-implicit Euler, as for particles (`v += g dt`, then `x += v dt`).
+//! - **Orientation:** the quaternion follows `q̇ = ½ ω q` (ω in the world frame, as a pure
+//!   quaternion). [`OrientationStep`] offers the additive step `q + ½ dt ω q` with or without
+//!   normalising it afterwards, and the exact step for a constant ω over the step,
+//!   `q ← exp(½ dt ω) q`, a rotation by `|ω| dt` about `ω`, which keeps `|q| = 1` by construction.
+//!   Without the normalisation the additive step lets `|q|` grow every step, and the matrix built
+//!   from `q` scales and shears the body.
+//! - **Angular velocity:** with no torque the angular momentum `L = R I ω` is constant in the
+//!   world. [`AngularStep::Momentum`] keeps it so and recovers ω from it after each turn of the
+//!   body (`ω = R I⁻¹ Rᵀ L`), so `L` is conserved to float precision. The other two integrate
+//!   Euler's equations in the body frame, `I ω̇ = −ω × I ω` (the gyroscopic term), as solvers that
+//!   store velocities must: [`AngularStep::Explicit`] evaluates the term at the start of the step
+//!   and gains energy; [`AngularStep::Implicit`] solves `I (ω − ω₀) + dt ω × I ω = 0` for the end
+//!   of the step by one Newton step from ω₀ (as Box2D's and Bullet's solvers do), which never
+//!   gains energy but loses some.
+//!
+//! The body's own frame is its principal frame: its inertia tensor there is the diagonal
+//! [`RigidBody::inertia`]. A body made of parts whose tensor has products of inertia would first
+//! be turned to its principal axes.
+
+pub mod inertia;
+
+use glam::{Mat3, Quat, Vec3};
+
+/// How the orientation quaternion advances over a step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OrientationStep {
+    /// `q ← normalize(q + ½ dt ω q)`.
+    Additive,
+    /// `q ← q + ½ dt ω q`, left unnormalised: `|q|` drifts and the body shears.
+    AdditiveUnnormalised,
+    /// `q ← exp(½ dt ω) q`: the rotation by `|ω| dt` about `ω`, exact for a constant ω.
+    Exponential,
+}
+
+/// How the angular velocity advances under no torque.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AngularStep {
+    /// The world angular momentum is held and ω recovered from it (conserves `L`).
+    Momentum,
+    /// The gyroscopic term with the angular velocity at the start of the step (gains energy).
+    Explicit,
+    /// The gyroscopic term with the angular velocity at the end of the step, by one Newton step
+    /// (never gains energy, loses some).
+    Implicit,
+}
+
+/// One step of the orientation `q` under the world-frame angular velocity `omega` (rad/s).
+pub fn orientation_step(q: Quat, omega: Vec3, dt: f32, how: OrientationStep) -> Quat {
+    match how {
+        OrientationStep::Additive | OrientationStep::AdditiveUnnormalised => {
+            let w = Quat::from_xyzw(omega.x, omega.y, omega.z, 0.0);
+            let next = q + (w * q) * (0.5 * dt);
+            if how == OrientationStep::Additive {
+                next.normalize()
+            } else {
+                next
+            }
+        }
+        OrientationStep::Exponential => {
+            let speed = omega.length();
+            if speed * dt < 1e-12 {
+                return q;
+            }
+            Quat::from_axis_angle(omega / speed, speed * dt) * q
+        }
+    }
+}
+
+/// The skew-symmetric matrix of `v`: `skew(v) u = v × u`.
+fn skew(v: Vec3) -> Mat3 {
+    Mat3::from_cols(
+        Vec3::new(0.0, v.z, -v.y),
+        Vec3::new(-v.z, 0.0, v.x),
+        Vec3::new(v.y, -v.x, 0.0),
+    )
+}
+
+/// One step of Euler's equations for the body-frame angular velocity `omega` of a body with
+/// principal moments `inertia` under no torque (`I ω̇ = −ω × I ω`), explicit or implicit in the
+/// gyroscopic term. `implicit` false is the explicit step.
+pub fn gyroscopic_step(inertia: Vec3, omega: Vec3, dt: f32, implicit: bool) -> Vec3 {
+    let i = Mat3::from_diagonal(inertia);
+    match implicit {
+        false => omega - dt * (omega.cross(inertia * omega) / inertia),
+        true => {
+            // f(ω) = I (ω − ω₀) + dt ω × I ω, zero at the end of the step; one Newton step
+            // from ω₀, where f(ω₀) = dt ω₀ × I ω₀ and f′(ω₀) = I + dt (skew(ω₀) I − skew(I ω₀)).
+            let f = dt * omega.cross(inertia * omega);
+            let jacobian = i + dt * (skew(omega) * i - skew(inertia * omega));
+            omega - jacobian.inverse() * f
+        }
+    }
+}
+
+/// A rigid body. Its frame is its principal frame, centred on its centre of mass.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RigidBody {
+    /// Centre of mass, world frame (m).
+    pub position: Vec3,
+    /// Rotation from the body's frame to the world's.
+    pub orientation: Quat,
+    /// Velocity of the centre of mass (m/s).
+    pub velocity: Vec3,
+    /// Angular velocity in the body's frame (rad/s).
+    pub omega_body: Vec3,
+    /// Mass (kg).
+    pub mass: f32,
+    /// Principal moments of inertia (kg m²): the diagonal of the tensor in the body's frame.
+    pub inertia: Vec3,
+}
+
+impl RigidBody {
+    /// A body at rest at the origin. An error unless the mass and the three moments are positive
+    /// and finite, and the moments satisfy the triangle inequality every real body does
+    /// (`I₁ + I₂ ≥ I₃` for each order).
+    pub fn new(mass: f32, inertia: Vec3) -> Result<Self, String> {
+        if !(mass.is_finite() && mass > 0.0) {
+            return Err(format!("mass must be a positive number of kg, got {mass}"));
+        }
+        if !(inertia.is_finite() && inertia.min_element() > 0.0) {
+            return Err(format!(
+                "moments of inertia must be positive, got {inertia}"
+            ));
+        }
+        let sum = inertia.element_sum();
+        if 2.0 * inertia.max_element() > sum * (1.0 + 1e-5) {
+            return Err(format!(
+                "moments of inertia {inertia} are not a body's: each must be at most the sum of the other two"
+            ));
+        }
+        Ok(Self {
+            position: Vec3::ZERO,
+            orientation: Quat::IDENTITY,
+            velocity: Vec3::ZERO,
+            omega_body: Vec3::ZERO,
+            mass,
+            inertia,
+        })
+    }
+
+    /// The rotation matrix of the orientation (from the quaternion as it is: a quaternion that
+    /// is not unit gives a matrix that also scales and shears).
+    pub fn rotation(&self) -> Mat3 {
+        let q = self.orientation;
+        let (x, y, z, w) = (q.x, q.y, q.z, q.w);
+        // The general form, valid for a unit q, that does not assume |q| = 1 (glam's does).
+        Mat3::from_cols(
+            Vec3::new(
+                w * w + x * x - y * y - z * z,
+                2.0 * (x * y + w * z),
+                2.0 * (x * z - w * y),
+            ),
+            Vec3::new(
+                2.0 * (x * y - w * z),
+                w * w - x * x + y * y - z * z,
+                2.0 * (y * z + w * x),
+            ),
+            Vec3::new(
+                2.0 * (x * z + w * y),
+                2.0 * (y * z - w * x),
+                w * w - x * x - y * y + z * z,
+            ),
+        )
+    }
+
+    /// The angular velocity in the world's frame.
+    pub fn omega_world(&self) -> Vec3 {
+        self.orientation.normalize() * self.omega_body
+    }
+
+    /// The inverse inertia tensor in the world's frame, `R I⁻¹ Rᵀ`.
+    pub fn world_inverse_inertia(&self) -> Mat3 {
+        let r = Mat3::from_quat(self.orientation.normalize());
+        r * Mat3::from_diagonal(self.inertia.recip()) * r.transpose()
+    }
+
+    /// The linear momentum `m v`.
+    pub fn linear_momentum(&self) -> Vec3 {
+        self.mass * self.velocity
+    }
+
+    /// The angular momentum about the centre of mass in the world's frame, `R I ω_body`.
+    pub fn angular_momentum(&self) -> Vec3 {
+        self.orientation.normalize() * (self.inertia * self.omega_body)
+    }
+
+    /// Kinetic energy, translation plus rotation: `½ m |v|² + ½ ω · I ω` (J).
+    pub fn kinetic_energy(&self) -> f32 {
+        0.5 * self.mass * self.velocity.length_squared()
+            + 0.5 * self.omega_body.dot(self.inertia * self.omega_body)
+    }
+
+    /// Applies the impulse `j` (N s) at the world point `at`: `Δv = j / m` and
+    /// `Δω = I⁻¹ (r × j)` with `r` from the centre of mass to `at`.
+    pub fn apply_impulse(&mut self, j: Vec3, at: Vec3) {
+        self.velocity += j / self.mass;
+        let r = at - self.position;
+        let d_omega_world = self.world_inverse_inertia() * r.cross(j);
+        self.omega_body += self.orientation.normalize().inverse() * d_omega_world;
+    }
+
+    /// The velocity of the body's material point at the world point `at`: `v + ω × r`.
+    pub fn point_velocity(&self, at: Vec3) -> Vec3 {
+        self.velocity + self.omega_world().cross(at - self.position)
+    }
+
+    /// One step of `dt` seconds under `gravity` and no torque: semi-implicit Euler for the
+    /// centre of mass, `angular` for the angular velocity and `orientation` for the quaternion.
+    pub fn step(
+        &mut self,
+        dt: f32,
+        gravity: Vec3,
+        angular: AngularStep,
+        orientation: OrientationStep,
+    ) {
+        self.velocity += gravity * dt;
+        self.position += self.velocity * dt;
+        match angular {
+            AngularStep::Momentum => {
+                // Turn with the present ω, then read ω off the unchanged L in the new attitude.
+                let l = self.angular_momentum();
+                let omega = self.omega_world();
+                self.orientation = orientation_step(self.orientation, omega, dt, orientation);
+                let q = self.orientation.normalize();
+                self.omega_body = (q.inverse() * l) / self.inertia;
+            }
+            AngularStep::Explicit | AngularStep::Implicit => {
+                let implicit = angular == AngularStep::Implicit;
+                self.omega_body = gyroscopic_step(self.inertia, self.omega_body, dt, implicit);
+                let omega = self.omega_world();
+                self.orientation = orientation_step(self.orientation, omega, dt, orientation);
+            }
+        }
+    }
+
+    /// Whether every number of the state is finite.
+    pub fn is_finite(&self) -> bool {
+        self.position.is_finite()
+            && self.orientation.is_finite()
+            && self.velocity.is_finite()
+            && self.omega_body.is_finite()
+    }
+}
