@@ -21,6 +21,7 @@
 //! [`RigidBody::inertia`]. A body made of parts whose tensor has products of inertia would first
 //! be turned to its principal axes.
 
+pub mod contact;
 pub mod inertia;
 
 use glam::{Mat3, Quat, Vec3};
