@@ -2,7 +2,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::{Quat, Vec3};
-use inbetween::rigid_body::contact::{Shape, World};
+use inbetween::rigid_body::contact::{heap, Shape, World};
 use inbetween::rigid_body::inertia::{solid_box, solid_sphere};
 use inbetween::rigid_body::RigidBody;
 
@@ -31,10 +31,8 @@ fn run(world: &mut World, seconds: f32) {
 #[test]
 fn a_ball_dropped_with_e_1_bounces_back_to_its_height_and_with_e_0_comes_to_rest() {
     for e in [1.0, 0.0] {
-        let mut world = World {
-            restitution: e,
-            ..World::default()
-        };
+        let mut world = World::default();
+        world.restitution = e;
         let (b, s) = ball(1.0, 0.1, Vec3::new(0.0, 1.1, 0.0));
         world.add(b, s).unwrap();
         // Fall (0.47 s), bounce, and rise again: the highest point after the first bounce.
@@ -93,10 +91,8 @@ fn a_box_at_rest_on_the_ground_stays_put_for_1000_steps() {
 
 #[test]
 fn friction_stops_a_sliding_box_after_v_squared_over_2_mu_g() {
-    let mut world = World {
-        friction: 0.5,
-        ..World::default()
-    };
+    let mut world = World::default();
+    world.friction = 0.5;
     let (mut b, s) = cuboid(1.0, Vec3::splat(0.1), Vec3::new(0.0, 0.1, 0.0));
     b.velocity = Vec3::new(2.0, 0.0, 0.0);
     world.add(b, s).unwrap();
@@ -133,11 +129,9 @@ fn a_stack_of_three_boxes_stands_for_ten_seconds() {
 
 #[test]
 fn two_balls_meeting_head_on_exchange_their_velocities_at_e_1_and_keep_the_momentum() {
-    let mut world = World {
-        restitution: 1.0,
-        gravity: Vec3::ZERO,
-        ..World::default()
-    };
+    let mut world = World::default();
+    world.restitution = 1.0;
+    world.gravity = Vec3::ZERO;
     let (mut a, s) = ball(1.0, 0.1, Vec3::new(-0.5, 2.0, 0.0));
     a.velocity = Vec3::new(2.0, 0.0, 0.0);
     let (mut b, t) = ball(1.0, 0.1, Vec3::new(0.5, 2.0, 0.0));
@@ -206,4 +200,31 @@ fn bad_steps_and_shapes_are_refused_and_change_nothing() {
             }
         )
         .is_err());
+}
+
+#[test]
+fn the_grid_finds_the_same_contacts_as_every_pair() {
+    use inbetween::rigid_body::contact::BroadPhase;
+    let mut grid = heap(300).unwrap();
+    let mut all = grid.clone();
+    all.broad_phase = BroadPhase::AllPairs;
+    let mut most = 0;
+    for step in 0..120 {
+        if step % 20 == 0 {
+            let (a, b) = (grid.contacts(), all.contacts());
+            most = most.max(a.len());
+            assert_eq!(a, b, "step {step}");
+        }
+        grid.step(DT).unwrap();
+        all.step(DT).unwrap();
+    }
+    // Once the heap has landed, every body touches something.
+    assert!(most > 300, "a heap has contacts: {most}");
+    assert_eq!(grid.bodies, all.bodies);
+}
+
+#[test]
+fn a_heap_has_a_documented_size() {
+    assert!(heap(0).is_err() && heap(5000).is_err());
+    assert_eq!(heap(7).unwrap().bodies.len(), 7);
 }

@@ -22,6 +22,7 @@
 //! every pair: a world of a few dozen bodies.
 
 use super::{gyroscopic_step, orientation_step, OrientationStep, RigidBody};
+use crate::boids::grid::Grid;
 use glam::{Mat3, Vec3};
 
 /// What a body is.
@@ -217,6 +218,16 @@ fn sphere_box(
     }
 }
 
+/// How a world finds the pairs of bodies that may touch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BroadPhase {
+    /// Every pair: N (N − 1) / 2 tests.
+    AllPairs,
+    /// The boids' uniform grid (counting sort), with cells as wide as the largest reach of two
+    /// bodies: each body is tested against the bodies of the cells around its own.
+    Grid,
+}
+
 /// A world of spheres and boxes above the ground plane `y = 0`.
 #[derive(Clone, Debug)]
 pub struct World {
@@ -228,6 +239,9 @@ pub struct World {
     pub friction: f32,
     /// Solver passes over the contacts per step.
     pub iterations: usize,
+    pub broad_phase: BroadPhase,
+    /// The grid's storage, kept between steps (a rebuild allocates nothing once it has grown).
+    grid: Grid,
 }
 
 impl Default for World {
@@ -238,6 +252,8 @@ impl Default for World {
             restitution: 0.0,
             friction: 0.5,
             iterations: 20,
+            broad_phase: BroadPhase::Grid,
+            grid: Grid::default(),
         }
     }
 }
@@ -280,9 +296,9 @@ impl World {
         Ok(self.bodies.len() - 1)
     }
 
-    /// Every contact at the present positions: with the ground, then between pairs whose
-    /// bounding spheres come within the margin (all pairs: the broad phase of a few bodies).
-    pub fn contacts(&self) -> Vec<Contact> {
+    /// Every contact at the present positions: with the ground, then between the pairs whose
+    /// bounding spheres come within the margin, found by the [`BroadPhase`].
+    pub fn contacts(&mut self) -> Vec<Contact> {
         let mut out = Vec::new();
         let reach = |s: Shape| match s {
             Shape::Sphere { radius } => radius,
@@ -291,14 +307,54 @@ impl World {
         for (i, &(body, shape)) in self.bodies.iter().enumerate() {
             ground_contacts(i, &body, shape, &mut out);
         }
-        for i in 0..self.bodies.len() {
-            for j in i + 1..self.bodies.len() {
-                let (a, sa) = self.bodies[i];
-                let (b, sb) = self.bodies[j];
-                if a.position.distance(b.position) < reach(sa) + reach(sb) + MARGIN_M {
-                    pair_contacts(i, j, &self.bodies, &mut out);
+        let near = |bodies: &[(RigidBody, Shape)], i: usize, j: usize| {
+            let (a, sa) = bodies[i];
+            let (b, sb) = bodies[j];
+            a.position.distance(b.position) < reach(sa) + reach(sb) + MARGIN_M
+        };
+        let n = self.bodies.len();
+        match self.broad_phase {
+            BroadPhase::AllPairs => {
+                for i in 0..n {
+                    for j in i + 1..n {
+                        if near(&self.bodies, i, j) {
+                            pair_contacts(i, j, &self.bodies, &mut out);
+                        }
+                    }
                 }
             }
+            BroadPhase::Grid if n > 1 => {
+                let positions: Vec<Vec3> = self.bodies.iter().map(|(b, _)| b.position).collect();
+                let widest = self
+                    .bodies
+                    .iter()
+                    .map(|&(_, s)| reach(s))
+                    .fold(0.0, f32::max);
+                let radius = 2.0 * widest + MARGIN_M;
+                let (lo, hi) = positions.iter().fold(
+                    (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+                    |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+                );
+                self.grid.configure(lo, hi, radius);
+                self.grid.rebuild(&positions);
+                let mut pairs = Vec::new();
+                for i in 0..n {
+                    self.grid.for_each_neighbour(&positions, i, radius, |j| {
+                        if j > i {
+                            pairs.push((i, j));
+                        }
+                    });
+                }
+                // In increasing pair order, as the all-pairs loop finds them: the solver's
+                // result does not depend on the broad phase.
+                pairs.sort_unstable();
+                for (i, j) in pairs {
+                    if near(&self.bodies, i, j) {
+                        pair_contacts(i, j, &self.bodies, &mut out);
+                    }
+                }
+            }
+            BroadPhase::Grid => {}
         }
         out
     }
@@ -457,4 +513,44 @@ impl World {
     pub fn kinetic_energy(&self) -> f32 {
         self.bodies.iter().map(|(b, _)| b.kinetic_energy()).sum()
     }
+}
+
+/// The scene the benchmarks and tests step: `n` bodies (`1 ≤ n ≤` [`MAX_BODIES`]), balls of
+/// radius 0.2 m and boxes of 0.4 × 0.3 × 0.36 m in turn, 1 kg each, dropped in four layers 0.5 m
+/// apart over a square of 0.5 m cells (a few centimetres off the grid, so they topple).
+pub fn heap(n: usize) -> Result<World, String> {
+    if !(1..=MAX_BODIES).contains(&n) {
+        return Err(format!("a heap has 1 to {MAX_BODIES} bodies, got {n}"));
+    }
+    let per_row = ((n as f32 / 4.0).sqrt().ceil() as usize).max(1);
+    let side = 0.5 * per_row as f32;
+    let mut world = World::default();
+    for k in 0..n {
+        let (i, j, layer) = (
+            k % per_row,
+            (k / per_row) % per_row,
+            k / (per_row * per_row),
+        );
+        let at = Vec3::new(
+            -0.5 * side + 0.25 + 0.5 * i as f32 + 0.03 * (k % 7) as f32,
+            0.3 + 0.5 * layer as f32,
+            -0.5 * side + 0.25 + 0.5 * j as f32,
+        );
+        let (inertia, shape) = if k % 2 == 0 {
+            (
+                super::inertia::solid_sphere(1.0, 0.2),
+                Shape::Sphere { radius: 0.2 },
+            )
+        } else {
+            let half = Vec3::new(0.2, 0.15, 0.18);
+            (super::inertia::solid_box(1.0, half), Shape::Cuboid { half })
+        };
+        let mut body = RigidBody::new(
+            1.0,
+            Vec3::new(inertia.x_axis.x, inertia.y_axis.y, inertia.z_axis.z),
+        )?;
+        body.position = at;
+        world.add(body, shape)?;
+    }
+    Ok(world)
 }
