@@ -258,21 +258,31 @@ impl Default for World {
     }
 }
 
-/// A contact's state during the solver's passes: the arms from each centre, the effective masses
-/// along the normal and the two tangents, the velocity asked for along the normal, and the
-/// impulses accumulated this step.
+/// One direction of a contact for the solver: the direction, its angular parts for each body
+/// (`r × d`) and what a unit impulse along it does to each body's angular velocity
+/// (`I⁻¹ (r × d)`), and the effective mass along it. Precomputed once per step, so a pass reads
+/// only dot products.
+#[derive(Clone, Copy)]
+struct Axis {
+    dir: Vec3,
+    ang_a: Vec3,
+    ang_b: Vec3,
+    push_a: Vec3,
+    push_b: Vec3,
+    mass: f32,
+}
+
+/// A contact's state during the solver's passes: its bodies, its normal and two tangents, the
+/// velocity asked for along the normal, the approach speed before the step, and the impulses
+/// accumulated this step (normal, then the two tangents).
 struct Row {
-    contact: Contact,
-    ra: Vec3,
-    rb: Vec3,
-    tangents: [Vec3; 2],
-    mass_n: f32,
-    mass_t: [f32; 2],
+    a: usize,
+    b: Option<usize>,
+    axes: [Axis; 3],
     target: f32,
     /// The normal velocity before the solver (negative: approaching), for the bounce.
     approach: f32,
-    lambda_n: f32,
-    lambda_t: [f32; 2],
+    lambda: [f32; 3],
 }
 
 impl World {
@@ -395,20 +405,34 @@ impl World {
             .map(|(b, _)| b.world_inverse_inertia())
             .collect();
         let inv_mass: Vec<f32> = self.bodies.iter().map(|(b, _)| 1.0 / b.mass).collect();
-        let mut rows: Vec<Row> = self
-            .contacts()
-            .into_iter()
+        let contacts = self.contacts();
+        let mut rows: Vec<Row> = contacts
+            .iter()
             .map(|c| {
                 let (a, _) = &self.bodies[c.a];
                 let ra = c.point - a.position;
                 let rb =
                     c.b.map_or(Vec3::ZERO, |b| c.point - self.bodies[b].0.position);
-                let mass_along = |d: Vec3| {
-                    let mut k = inv_mass[c.a] + d.dot((inv_inertia[c.a] * ra.cross(d)).cross(ra));
-                    if let Some(b) = c.b {
-                        k += inv_mass[b] + d.dot((inv_inertia[b] * rb.cross(d)).cross(rb));
+                let axis = |d: Vec3| {
+                    let (ang_a, ang_b) = (ra.cross(d), rb.cross(d));
+                    let push_a = inv_inertia[c.a] * ang_a;
+                    let mut k = inv_mass[c.a] + ang_a.dot(push_a);
+                    let push_b = match c.b {
+                        Some(b) => {
+                            let push = inv_inertia[b] * ang_b;
+                            k += inv_mass[b] + ang_b.dot(push);
+                            push
+                        }
+                        None => Vec3::ZERO,
+                    };
+                    Axis {
+                        dir: d,
+                        ang_a,
+                        ang_b,
+                        push_a,
+                        push_b,
+                        mass: 1.0 / k,
                     }
-                    1.0 / k
                 };
                 let t1 = c.normal.any_orthonormal_vector();
                 let t2 = c.normal.cross(t1);
@@ -426,16 +450,12 @@ impl World {
                     0.0
                 };
                 Row {
-                    contact: c,
-                    ra,
-                    rb,
-                    tangents: [t1, t2],
-                    mass_n: mass_along(c.normal),
-                    mass_t: [mass_along(t1), mass_along(t2)],
+                    a: c.a,
+                    b: c.b,
+                    axes: [axis(c.normal), axis(t1), axis(t2)],
                     target,
                     approach,
-                    lambda_n: 0.0,
-                    lambda_t: [0.0; 2],
+                    lambda: [0.0; 3],
                 }
             })
             .collect();
@@ -446,50 +466,52 @@ impl World {
         }
         let mut omega: Vec<Vec3> = self.bodies.iter().map(|(b, _)| b.omega_world()).collect();
         let mut velocity: Vec<Vec3> = self.bodies.iter().map(|(b, _)| b.velocity).collect();
-        let apply = |velocity: &mut Vec<Vec3>, omega: &mut Vec<Vec3>, row: &Row, j: Vec3| {
-            let c = row.contact;
-            velocity[c.a] += inv_mass[c.a] * j;
-            omega[c.a] += inv_inertia[c.a] * row.ra.cross(j);
-            if let Some(b) = c.b {
-                velocity[b] -= inv_mass[b] * j;
-                omega[b] -= inv_inertia[b] * row.rb.cross(j);
+        // The relative speed along axis `k` of a row, and an impulse `l` along it.
+        let speed = |velocity: &[Vec3], omega: &[Vec3], row: &Row, k: usize| {
+            let x = &row.axes[k];
+            let mut v = x.dir.dot(velocity[row.a]) + x.ang_a.dot(omega[row.a]);
+            if let Some(b) = row.b {
+                v -= x.dir.dot(velocity[b]) + x.ang_b.dot(omega[b]);
             }
+            v
         };
-        let relative = |velocity: &Vec<Vec3>, omega: &Vec<Vec3>, row: &Row| {
-            let c = row.contact;
-            velocity[c.a] + omega[c.a].cross(row.ra)
-                - c.b
-                    .map_or(Vec3::ZERO, |b| velocity[b] + omega[b].cross(row.rb))
+        let push = |velocity: &mut [Vec3], omega: &mut [Vec3], row: &Row, k: usize, l: f32| {
+            let x = &row.axes[k];
+            velocity[row.a] += (inv_mass[row.a] * l) * x.dir;
+            omega[row.a] += l * x.push_a;
+            if let Some(b) = row.b {
+                velocity[b] -= (inv_mass[b] * l) * x.dir;
+                omega[b] -= l * x.push_b;
+            }
         };
         for _ in 0..self.iterations {
             for row in &mut rows {
                 // Friction first, bounded by the normal impulse of the previous pass.
-                for k in 0..2 {
-                    let t = row.tangents[k];
-                    let vt = relative(&velocity, &omega, row).dot(t);
-                    let limit = self.friction * row.lambda_n;
-                    let new = (row.lambda_t[k] - vt * row.mass_t[k]).clamp(-limit, limit);
-                    let d = new - row.lambda_t[k];
-                    row.lambda_t[k] = new;
-                    apply(&mut velocity, &mut omega, row, d * t);
+                let limit = self.friction * row.lambda[0];
+                for k in 1..3 {
+                    let vt = speed(&velocity, &omega, row, k);
+                    let new = (row.lambda[k] - vt * row.axes[k].mass).clamp(-limit, limit);
+                    let d = new - row.lambda[k];
+                    row.lambda[k] = new;
+                    push(&mut velocity, &mut omega, row, k, d);
                 }
-                let vn = relative(&velocity, &omega, row).dot(row.contact.normal);
-                let new = (row.lambda_n - (vn - row.target) * row.mass_n).max(0.0);
-                let d = new - row.lambda_n;
-                row.lambda_n = new;
-                apply(&mut velocity, &mut omega, row, d * row.contact.normal);
+                let vn = speed(&velocity, &omega, row, 0);
+                let new = (row.lambda[0] - (vn - row.target) * row.axes[0].mass).max(0.0);
+                let d = new - row.lambda[0];
+                row.lambda[0] = new;
+                push(&mut velocity, &mut omega, row, 0, d);
             }
         }
         // Restitution, once the contacts hold: a contact that was approaching faster than the
         // threshold and pushed this step separates at e times its approach speed.
         for row in &mut rows {
-            if row.approach < -BOUNCE_THRESHOLD && row.lambda_n > 0.0 {
-                let vn = relative(&velocity, &omega, row).dot(row.contact.normal);
+            if row.approach < -BOUNCE_THRESHOLD && row.lambda[0] > 0.0 {
+                let vn = speed(&velocity, &omega, row, 0);
                 let wanted = -self.restitution * row.approach;
-                let new = (row.lambda_n - (vn - wanted) * row.mass_n).max(0.0);
-                let d = new - row.lambda_n;
-                row.lambda_n = new;
-                apply(&mut velocity, &mut omega, row, d * row.contact.normal);
+                let new = (row.lambda[0] - (vn - wanted) * row.axes[0].mass).max(0.0);
+                let d = new - row.lambda[0];
+                row.lambda[0] = new;
+                push(&mut velocity, &mut omega, row, 0, d);
             }
         }
         // Positions and orientations with the solved velocities.
