@@ -22,6 +22,7 @@ pub mod particles;
 pub mod particles_sprites;
 pub mod raster;
 pub mod rigid;
+pub mod rigid_body;
 pub mod rotations;
 pub mod skeleton;
 pub mod skinning;
