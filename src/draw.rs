@@ -598,6 +598,65 @@ impl Frame {
         self.inset = None;
     }
 
+    /// Runs `draw` on this frame and moves everything it added by `offset`: meshes, GPU-skinned
+    /// meshes and textured squares (their models), lines, points, sprites, wide lines, markers,
+    /// labels and the points kept in view. A figure draws a copy of its scene in its own
+    /// coordinates and places it with this, instead of offsetting every item itself.
+    pub fn translated<R>(&mut self, offset: Vec3, draw: impl FnOnce(&mut Frame) -> R) -> R {
+        let start = (
+            self.meshes.len(),
+            self.lines.len(),
+            self.points.len(),
+            self.labels.len(),
+            self.skinned.len(),
+            self.quads.len(),
+            self.sprites.len(),
+            self.strokes.len(),
+            self.markers.len(),
+            self.keep_in_view.len(),
+        );
+        let out = draw(self);
+        let shift = Mat4::from_translation(offset);
+        let moved = |p: &mut [f32; 3]| *p = (Vec3::from(*p) + offset).to_array();
+        self.meshes[start.0..].iter_mut().for_each(|m| m.model = shift * m.model);
+        self.lines[start.1..].iter_mut().for_each(|v| moved(&mut v.position));
+        self.points[start.2..].iter_mut().for_each(|p| moved(&mut p.center));
+        self.labels[start.3..].iter_mut().for_each(|l| l.anchor += offset);
+        self.skinned[start.4..].iter_mut().for_each(|s| s.model = shift * s.model);
+        self.quads[start.5..].iter_mut().for_each(|q| q.model = shift * q.model);
+        self.sprites[start.6..].iter_mut().for_each(|s| moved(&mut s.center));
+        for s in &mut self.strokes[start.7..] {
+            moved(&mut s.a);
+            moved(&mut s.b);
+        }
+        self.markers[start.8..].iter_mut().for_each(|m| moved(&mut m.center));
+        self.keep_in_view[start.9..].iter_mut().for_each(|p| *p += offset);
+        out
+    }
+
+    /// Draws `titles.len()` copies of a scene side by side along `step` (the copies centred on
+    /// the origin), each by `draw(frame, k)` in its own coordinates, with its title (text and
+    /// colour) over it at height `title_y`; the titles are kept in view and placed before other
+    /// labels. The comparisons of the course (two methods on the same input) use it.
+    pub fn side_by_side(
+        &mut self,
+        step: Vec3,
+        titles: &[(&str, Vec3)],
+        title_y: f32,
+        mut draw: impl FnMut(&mut Frame, usize),
+    ) {
+        let n = titles.len();
+        for (k, &(title, color)) in titles.iter().enumerate() {
+            let offset = step * (k as f32 - 0.5 * (n as f32 - 1.0));
+            self.translated(offset, |f| {
+                draw(f, k);
+                let anchor = Vec3::new(0.0, title_y, 0.0);
+                f.label_with_priority(anchor, title, color, 1);
+                f.keep_in_view.push(anchor);
+            });
+        }
+    }
+
     /// Adds an inset: the box `min`–`max` seen along `view` (orthographic) in a small square in
     /// the canvas's bottom-right corner, titled `title` (see [`inset`]). A later call replaces
     /// an earlier one.
@@ -935,6 +994,48 @@ pub mod palette {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn translated_moves_everything_the_closure_added_and_nothing_else() {
+        let mut f = Frame::default();
+        f.line(Vec3::ZERO, Vec3::X, palette::DARK);
+        let offset = Vec3::new(2.0, 0.5, -1.0);
+        f.translated(offset, |f| {
+            f.mesh(MeshId::CUBE, Mat4::IDENTITY, palette::ORANGE);
+            f.line(Vec3::ZERO, Vec3::Y, palette::TEAL);
+            f.wide_line(Vec3::ZERO, Vec3::Z, palette::TEAL, 2.0);
+            f.marker(Vec3::ONE, 10.0, palette::TEAL);
+            f.label(Vec3::Y, "copy", palette::DARK);
+            f.keep_in_view.push(Vec3::ZERO);
+        });
+        // The line drawn before stays; everything drawn inside moved by the offset.
+        assert_eq!(f.segments_of(palette::DARK).next(), Some((Vec3::ZERO, Vec3::X)));
+        let teal: Vec<_> = f.segments_of(palette::TEAL).collect();
+        assert_eq!(teal, vec![(offset, offset + Vec3::Y), (offset, offset + Vec3::Z)]);
+        assert_eq!(f.meshes[0].model.w_axis.truncate(), offset);
+        assert_eq!(Vec3::from(f.markers[0].center), Vec3::ONE + offset);
+        assert_eq!(f.labels[0].anchor, Vec3::Y + offset);
+        assert_eq!(f.keep_in_view, vec![offset]);
+    }
+
+    #[test]
+    fn side_by_side_centres_the_copies_and_titles_each() {
+        let mut f = Frame::default();
+        let titles = [("LBS", palette::ORANGE), ("DQS", palette::TEAL)];
+        f.side_by_side(Vec3::new(1.5, 0.0, 0.0), &titles, 2.0, |f, k| {
+            f.mesh(MeshId::SPHERE, Mat4::from_scale(Vec3::splat(0.1 + k as f32)), palette::GREY);
+        });
+        let centres: Vec<Vec3> = f.meshes.iter().map(|m| m.model.w_axis.truncate()).collect();
+        assert_eq!(centres, vec![Vec3::new(-0.75, 0.0, 0.0), Vec3::new(0.75, 0.0, 0.0)]);
+        // Each copy got its own draw call (k), and its title over it, kept in view, placed first.
+        assert!((f.meshes[1].model.x_axis.x - 1.1).abs() < 1e-6);
+        let l: Vec<_> = f.labels.iter().map(|l| (l.text.as_str(), l.anchor, l.priority)).collect();
+        assert_eq!(
+            l,
+            vec![("LBS", Vec3::new(-0.75, 2.0, 0.0), 1), ("DQS", Vec3::new(0.75, 2.0, 0.0), 1)]
+        );
+        assert_eq!(f.keep_in_view.len(), 2);
+    }
 
     #[test]
     fn the_grid_fades_towards_its_rim() {

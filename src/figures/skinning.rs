@@ -1049,9 +1049,12 @@ impl HumanFigure {
     /// [`HumanFigure::skin`] in compare mode; returns the note.
     pub fn draw_pair(&mut self, frame: &mut Frame, meshes: [MeshId; 2]) -> String {
         frame.grid(12, 0.25);
-        for (mesh, model) in meshes.into_iter().zip(Self::pair_models()) {
-            frame.mesh_vertex_colors(mesh, model);
-        }
+        let view_box = self.view_box().ok();
+        let drawn = self.draw_both(frame, view_box, |f, k| {
+            f.mesh_vertex_colors(meshes[k], Mat4::IDENTITY);
+            Ok(())
+        });
+        debug_assert!(drawn.is_ok(), "drawing a CPU mesh cannot fail");
         self.overlay(frame, "on the CPU")
     }
 
@@ -1269,9 +1272,11 @@ impl HumanFigure {
     ) -> Result<String, String> {
         frame.grid(12, 0.25);
         if self.compare {
-            let [left, right] = Self::pair_models();
-            super::gpu::draw_skinned_lbs(frame, mesh, left, None, &self.palette)?;
-            super::gpu::draw_skinned_dqs(frame, mesh, right, None, &self.dual_quats)?;
+            let view_box = self.view_box().ok();
+            self.draw_both(frame, view_box, |f, k| match k {
+                0 => super::gpu::draw_skinned_lbs(f, mesh, Mat4::IDENTITY, None, &self.palette),
+                _ => super::gpu::draw_skinned_dqs(f, mesh, Mat4::IDENTITY, None, &self.dual_quats),
+            })?;
             return Ok(self.overlay(frame, "on the GPU (vertex shader)"));
         }
         match self.method {
@@ -1285,66 +1290,72 @@ impl HumanFigure {
         Ok(self.overlay(frame, "on the GPU (vertex shader)"))
     }
 
-    fn overlay(&mut self, frame: &mut Frame, where_: &str) -> String {
-        let places: Vec<Mat4> = if self.compare {
-            Self::pair_models().to_vec()
-        } else {
-            vec![Mat4::IDENTITY]
-        };
-        let view_box = if self.compare {
-            self.view_box().ok()
-        } else {
-            None
-        };
+    /// What goes with each body, in its own coordinates: the X-rayed skeleton and the heat
+    /// map's joint label.
+    fn decorate(&self, frame: &mut Frame) {
         let names = self.character.skeleton.names();
-        for place in &places {
-            let at = |m: &Affine3A| place.transform_point3(Vec3::from(m.translation));
-            if self.show_skeleton {
-                // The skeleton is inside the body: drawn over it, as an X-ray.
-                let parents = self.character.skeleton.parents();
-                for (i, m) in self.model.iter().enumerate() {
-                    let p = at(m);
-                    frame.marker_on_top(p, JOINT_PX, palette::DARK);
-                    if parents[i] >= 0 {
-                        let q = at(&self.model[parents[i] as usize]);
-                        frame.wide_line_on_top(q, p, palette::DARK, BONE_PX);
-                    }
+        let at = |m: &Affine3A| Vec3::from(m.translation);
+        if self.show_skeleton {
+            // The skeleton is inside the body: drawn over it, as an X-ray.
+            let parents = self.character.skeleton.parents();
+            for (i, m) in self.model.iter().enumerate() {
+                let p = at(m);
+                frame.marker_on_top(p, JOINT_PX, palette::DARK);
+                if parents[i] >= 0 {
+                    let q = at(&self.model[parents[i] as usize]);
+                    frame.wide_line_on_top(q, p, palette::DARK, BONE_PX);
                 }
-            }
-            if let Some(j) = self.heat_joint {
-                frame.label(
-                    at(&self.model[j]) + Vec3::new(0.08, 0.05, 0.0),
-                    names[j].clone(),
-                    palette::RED,
-                );
             }
         }
-        if self.compare {
-            for (place, name, color) in [
-                (places[0], "LBS", palette::ORANGE),
-                (places[1], "DQS", palette::TEAL),
-            ] {
-                // Over the head, or over the hip in the legs view; the camera fits them too.
-                let y = match (self.view, view_box) {
-                    (HumanView::Legs, Some((_, hi))) => hi.y + 0.05,
-                    _ => 2.0,
-                };
-                let anchor = place.transform_point3(Vec3::new(0.1, y, 0.0));
-                frame.label_with_priority(anchor, name, color, 1);
-                frame.keep_in_view.push(anchor);
-                frame.contact_shadow(place.transform_point3(Vec3::ZERO), 0.3);
+        if let Some(j) = self.heat_joint {
+            frame.label(
+                at(&self.model[j]) + Vec3::new(0.08, 0.05, 0.0),
+                names[j].clone(),
+                palette::RED,
+            );
+        }
+    }
+
+    /// Compare mode: the LBS body (`k = 0`) and the DQS body (`k = 1`) side by side along z, each
+    /// drawn by `body(frame, k)` in its own coordinates with its decorations, title and contact
+    /// shadow; the camera keeps `view_box` (see [`HumanFigure::view_box`]) in view.
+    fn draw_both(
+        &self,
+        frame: &mut Frame,
+        view_box: Option<(Vec3, Vec3)>,
+        mut body: impl FnMut(&mut Frame, usize) -> Result<(), String>,
+    ) -> Result<(), String> {
+        // Titles over the heads, or over the hips in the legs view; the camera fits them too.
+        let title_y = match (self.view, view_box) {
+            (HumanView::Legs, Some((_, hi))) => hi.y + 0.05,
+            _ => 2.0,
+        };
+        let titles = [("LBS", palette::ORANGE), ("DQS", palette::TEAL)];
+        let step = Vec3::new(0.0, 0.0, -2.0 * HUMAN_OFFSET_Z);
+        let mut failed = Ok(());
+        frame.side_by_side(step, &titles, title_y, |f, k| {
+            if let Err(e) = body(f, k) {
+                failed = Err(e);
             }
-            match view_box {
-                Some((lo, hi)) => frame.keep_box_in_view(lo, hi),
-                // A box that holds both bodies standing (only if skinning the clip failed).
-                None => {
-                    let z = HUMAN_OFFSET_Z;
-                    frame.keep_box_in_view(
-                        Vec3::new(-0.5, 0.0, -z - 0.5),
-                        Vec3::new(0.5, 2.0, z + 0.5),
-                    )
-                }
+            self.decorate(f);
+            f.contact_shadow(Vec3::ZERO, 0.3);
+        });
+        match view_box {
+            Some((lo, hi)) => frame.keep_box_in_view(lo, hi),
+            // A box that holds both bodies standing (only if skinning the clip failed).
+            None => {
+                let z = HUMAN_OFFSET_Z;
+                frame.keep_box_in_view(Vec3::new(-0.5, 0.0, -z - 0.5), Vec3::new(0.5, 2.0, z + 0.5))
             }
+        }
+        failed
+    }
+
+    /// The note (and, for one body alone, its decorations).
+    fn overlay(&mut self, frame: &mut Frame, where_: &str) -> String {
+        let names = self.character.skeleton.names();
+        if !self.compare {
+            self.decorate(frame);
         }
         let colours = match self.heat_joint {
             Some(j) => format!(" Colours: the weights of {}, blue 0 to red 1.", names[j]),
