@@ -228,24 +228,39 @@ fn the_exponential_step_keeps_the_quaternion_unit_and_the_unnormalised_one_drift
 }
 
 #[test]
-fn the_unnormalised_quaternion_scales_the_body() {
-    let mut body = racket();
-    body.omega_body = Vec3::new(0.0, 6.0, 0.0);
-    for _ in 0..600 {
-        body.step(
-            1.0 / 60.0,
-            Vec3::ZERO,
-            AngularStep::Implicit,
-            OrientationStep::AdditiveUnnormalised,
-        );
-    }
-    // The rotation matrix of a quaternion of length s scales by s²: the drawn box grows.
-    let scale = body.rotation().x_axis.length();
-    let s = body.orientation.length();
+fn the_unnormalised_quaternion_stretches_and_shears_the_body() {
+    // A tumbling racket: its axes through the rotation matrix built from the drifting q.
+    let shape = |r: Mat3| {
+        let axes = [r.x_axis, r.y_axis, r.z_axis];
+        let lengths = axes.map(|a| a.length());
+        let stretch = lengths.iter().fold(0.0f32, |m, l| m.max(*l))
+            / lengths.iter().fold(f32::INFINITY, |m, l| m.min(*l));
+        let skew = (0..3)
+            .map(|i| axes[i].normalize().dot(axes[(i + 1) % 3].normalize()).abs())
+            .fold(0.0, f32::max);
+        (stretch, skew)
+    };
+    let run = |how| {
+        let mut body = racket();
+        body.omega_body = Vec3::new(3.0, 5.0, 2.0);
+        let (mut stretch, mut skew) = (1.0f32, 0.0f32);
+        for _ in 0..600 {
+            body.step(1.0 / 60.0, Vec3::ZERO, AngularStep::Momentum, how);
+            let (s, k) = shape(body.rotation());
+            stretch = stretch.max(s);
+            skew = skew.max(k);
+        }
+        (body.orientation.length(), stretch, skew)
+    };
+    let (length, stretch, skew) = run(OrientationStep::AdditiveUnnormalised);
+    assert!(length > 1.1, "|q| = {length}");
     assert!(
-        (scale - s * s).abs() < 1e-3 * s * s && scale > 1.1,
-        "{scale} for |q| = {s}"
+        stretch > 1.2 && skew > 0.1,
+        "stretch {stretch}, skew {skew}"
     );
+    // With the normalisation the same matrix stays a rotation.
+    let (length, stretch, skew) = run(OrientationStep::Additive);
+    assert!((length - 1.0).abs() < 1e-5 && stretch < 1.0 + 1e-4 && skew < 1e-4);
 }
 
 #[test]

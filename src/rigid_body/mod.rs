@@ -7,7 +7,7 @@
 //!   normalising it afterwards, and the exact step for a constant ω over the step,
 //!   `q ← exp(½ dt ω) q`, a rotation by `|ω| dt` about `ω`, which keeps `|q| = 1` by construction.
 //!   Without the normalisation the additive step lets `|q|` grow every step, and the matrix built
-//!   from `q` scales and shears the body.
+//!   from `q` ([`RigidBody::rotation`]) stretches and shears the body.
 //! - **Angular velocity:** with no torque the angular momentum `L = R I ω` is constant in the
 //!   world. [`AngularStep::Momentum`] keeps it so and recovers ω from it after each turn of the
 //!   body (`ω = R I⁻¹ Rᵀ L`), so `L` is conserved to float precision. The other two integrate
@@ -143,27 +143,28 @@ impl RigidBody {
         })
     }
 
-    /// The rotation matrix of the orientation (from the quaternion as it is: a quaternion that
-    /// is not unit gives a matrix that also scales and shears).
+    /// The rotation matrix of the orientation, by the formula every engine uses for a unit
+    /// quaternion (`1 − 2(y² + z²)` and so on, as `glam::Mat3::from_quat`), applied to the
+    /// quaternion as it is: a quaternion that has drifted from unit length gives a matrix whose
+    /// axes are neither unit nor perpendicular, and the drawn body stretches and shears.
     pub fn rotation(&self) -> Mat3 {
         let q = self.orientation;
         let (x, y, z, w) = (q.x, q.y, q.z, q.w);
-        // The general form, valid for a unit q, that does not assume |q| = 1 (glam's does).
         Mat3::from_cols(
             Vec3::new(
-                w * w + x * x - y * y - z * z,
+                1.0 - 2.0 * (y * y + z * z),
                 2.0 * (x * y + w * z),
                 2.0 * (x * z - w * y),
             ),
             Vec3::new(
                 2.0 * (x * y - w * z),
-                w * w - x * x + y * y - z * z,
+                1.0 - 2.0 * (x * x + z * z),
                 2.0 * (y * z + w * x),
             ),
             Vec3::new(
                 2.0 * (x * z + w * y),
                 2.0 * (y * z - w * x),
-                w * w - x * x - y * y + z * z,
+                1.0 - 2.0 * (x * x + y * y),
             ),
         )
     }
