@@ -35,6 +35,7 @@ figures_module! {
     mod bench_curves;
     mod bench_gpu;
     mod bench_noise;
+    mod bench_rigid_body;
     mod bench_rotation;
     mod bench_skeleton;
     mod bench_skinning;
