@@ -394,6 +394,21 @@ fn the_snap_back_at_a_loop_is_not_counted_as_sliding() {
             assert!(note.contains("(a jump, not counted as sliding)"), "{note}");
         }
     }
+    // Nor is it drawn as a trail: synchronised, a planted foot's trail is as long with root
+    // motion off as on (the snap leaves two dots, not a line as long as the jump).
+    l.set_synchronised(true);
+    for t in [1.6, 2.0, 3.3, 5.05, 6.1, 7.9] {
+        l.set_root_motion(true);
+        l.draw(&mut frame, t).unwrap();
+        let on = longest_trail(&l);
+        l.set_root_motion(false);
+        l.draw(&mut frame, t).unwrap();
+        let off = longest_trail(&l);
+        assert!(
+            on < 0.1 && (off - on).abs() < 0.01,
+            "{t} s: trail {off} m off, {on} m on"
+        );
+    }
     l.set_synchronised(true);
     let note = l.draw(&mut frame, 2.0).unwrap();
     let snap = l.snap_back_m()[0];

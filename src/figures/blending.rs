@@ -678,6 +678,10 @@ impl Default for LocomotionFigure {
 /// pixels (the same at any distance).
 const FOOTPRINT_PX: f32 = 7.0;
 const TRAIL_PX: f32 = 4.0;
+/// How far (metres) a drawn footprint may move from one sample to the next beyond the foot's
+/// own move before it counts as the drawing's snap-back at a loop rather than a slide: well
+/// below a synchronised snap (a blended cycle's travel, 57 to 96 cm) and far above rounding.
+const SNAP_TOLERANCE_M: f32 = 0.05;
 /// How high above the ground the footprints are drawn, metres (just clear of the grid).
 const FOOTPRINT_HEIGHT: f32 = 0.005;
 /// The character walks along z on a loop this long (metres), so it stays in view.
@@ -1154,8 +1158,9 @@ impl LocomotionFigure {
         self.footprint_links.clear();
         let (now, _) = self.pose_at(t);
         let mut slide = 0.0f32;
-        // Per foot: where it was at the last sample and that sample's footprint, while planted.
-        let mut last: [Option<(Vec3, usize)>; 2] = [None, None];
+        // Per foot, while planted: where the travel had taken it at the last sample, where it
+        // was drawn, and that sample's footprint.
+        let mut last: [Option<(Vec3, Vec3, usize)>; 2] = [None, None];
         for k in 0..=FOOTPRINT_SAMPLES {
             let s = t - FOOTPRINT_SEC * (1.0 - k as f32 / FOOTPRINT_SAMPLES as f32);
             for (f, (ground, drawn, planted)) in self.feet_at(s, now).into_iter().enumerate() {
@@ -1164,11 +1169,17 @@ impl LocomotionFigure {
                     self.footprints
                         .push(Vec3::new(drawn.x, FOOTPRINT_HEIGHT, drawn.z));
                     self.footprint_feet.push(f);
-                    if let Some((q, before)) = last[f] {
-                        slide += Vec3::new(ground.x - q.x, 0.0, ground.z - q.z).length();
-                        self.footprint_links.push([before, here]);
+                    if let Some((q, q_drawn, before)) = last[f] {
+                        let step = Vec3::new(ground.x - q.x, 0.0, ground.z - q.z);
+                        slide += step.length();
+                        // The drawing's snap-back at a loop (root motion left in the pose)
+                        // moves the drawn foot but not the foot: two dots, no trail.
+                        let drawn_step = Vec3::new(drawn.x - q_drawn.x, 0.0, drawn.z - q_drawn.z);
+                        if (drawn_step - step).length() <= SNAP_TOLERANCE_M {
+                            self.footprint_links.push([before, here]);
+                        }
                     }
-                    last[f] = Some((ground, here));
+                    last[f] = Some((ground, drawn, here));
                 } else {
                     last[f] = None;
                 }
