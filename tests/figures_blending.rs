@@ -394,6 +394,21 @@ fn the_snap_back_at_a_loop_is_not_counted_as_sliding() {
             assert!(note.contains("(a jump, not counted as sliding)"), "{note}");
         }
     }
+    // Nor is it drawn as a trail: synchronised, a planted foot's trail is as long with root
+    // motion off as on (the snap leaves two dots, not a line as long as the jump).
+    l.set_synchronised(true);
+    for t in [1.6, 2.0, 3.3, 5.05, 6.1, 7.9] {
+        l.set_root_motion(true);
+        l.draw(&mut frame, t).unwrap();
+        let on = longest_trail(&l);
+        l.set_root_motion(false);
+        l.draw(&mut frame, t).unwrap();
+        let off = longest_trail(&l);
+        assert!(
+            on < 0.1 && (off - on).abs() < 0.01,
+            "{t} s: trail {off} m off, {on} m on"
+        );
+    }
     l.set_synchronised(true);
     let note = l.draw(&mut frame, 2.0).unwrap();
     let snap = l.snap_back_m()[0];
@@ -982,5 +997,161 @@ fn a_planted_foot_leaves_a_dot_and_a_sliding_foot_a_trail() {
     assert!(
         shortest > 0.2 && longest < 0.45,
         "{shortest} to {longest} m"
+    );
+}
+
+/// A panic as the page reports it: Rust's "panicked at file:line:col:" then the message.
+fn rust_panic(message: String) -> Result<Vec<f32>, Failure> {
+    Err(Failure::Panicked(format!(
+        "panicked at src/exercises/blending.rs:37:5:\n{message}"
+    )))
+}
+
+/// 8.1 right at and above the walk's speed, panicking below it (an `assert!` on `v`).
+fn panics_below_the_walk(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name == "weight_for_speed" && args[4] < args[1] / args[0] - 1e-3 {
+        return rust_panic(format!("v is below the walk's speed: {}", args[4]));
+    }
+    reference_8_1(name, args)
+}
+
+thread_local! {
+    /// The first panic of the page-like runner below.
+    static STUCK: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+}
+
+/// [`panics_below_the_walk`] as the page runs it: after a panic, every later call of the
+/// exercise gets that same panic back.
+fn stuck_after_a_panic(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if let Some(message) = STUCK.with(|s| s.borrow().clone()) {
+        return Err(Failure::Panicked(message));
+    }
+    let answer = panics_below_the_walk(name, args);
+    if let Err(Failure::Panicked(message)) = &answer {
+        STUCK.with(|s| *s.borrow_mut() = Some(message.clone()));
+    }
+    answer
+}
+
+#[test]
+fn a_panic_of_8_1_is_reported_once_against_the_speed_that_caused_it() {
+    let mut frame = Frame::default();
+    for runner in [
+        panics_below_the_walk as fn(&str, &[f32]) -> Result<Vec<f32>, Failure>,
+        stuck_after_a_panic,
+    ] {
+        STUCK.with(|s| *s.borrow_mut() = None);
+        let mut l = LocomotionFigure::new();
+        let reference = l.weight();
+        l.set_runner(runner);
+        l.set_use_exercise(true);
+        let note = l.draw(&mut frame, 1.0).unwrap();
+        // The default speed and the range's are fine; the probe at 0.3 m/s panics.
+        assert!(
+            note.contains(
+                "Your exercise 8.1 weight_for_speed, called with v = 0.300 m/s, panicked at \
+                 src/exercises/blending.rs:37:5: v is below the walk's speed: 0.3."
+            ),
+            "{note}"
+        );
+        assert_eq!(note.matches("panicked").count(), 1, "{note}");
+        assert!(!note.contains("2.500"), "{note}");
+        assert!(note.contains("uses the reference"), "{note}");
+        assert_eq!(l.weight(), reference);
+        // Another speed, where the page answers with the same panic: still the speed that
+        // caused it, and the reference's weight.
+        let (lo, hi) = l.speed_range();
+        let v = 0.25 * lo + 0.75 * hi;
+        l.set_speed(v).unwrap();
+        let mut plain = LocomotionFigure::new();
+        plain.set_speed(v).unwrap();
+        let reference = plain.weight();
+        assert!(reference > 0.5);
+        let note = l.draw(&mut frame, 1.0).unwrap();
+        assert!(
+            note.contains("called with v = 0.300 m/s, panicked at"),
+            "{note}"
+        );
+        assert_eq!(l.weight(), reference);
+    }
+    // A panic at the figure's own speed names that speed.
+    let mut l = LocomotionFigure::new();
+    l.set_runner(|_, args| rust_panic(format!("no: {}", args[4])));
+    l.set_use_exercise(true);
+    let v = format!("{:.3}", 0.5 * (l.speed_range().0 + l.speed_range().1));
+    let note = l.draw(&mut frame, 1.0).unwrap();
+    assert!(
+        note.contains(&format!(
+            "Your exercise 8.1 weight_for_speed, called with v = {v} m/s, panicked at"
+        )),
+        "{note}"
+    );
+    // A rebuilt exercise (a new runner) is tried afresh.
+    l.set_runner(reference_8_1);
+    let note = l.draw(&mut frame, 1.0).unwrap();
+    assert!(note.contains("matches the reference"), "{note}");
+}
+
+/// 6.3 right (the reference), panicking at weight 1 (as an `assert!(w < 1.0)` would).
+fn crossfade_panics_at_1(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name != "crossfade_joint" {
+        return direct(name, args);
+    }
+    let w = args[14];
+    if w >= 1.0 {
+        return rust_panic(format!("w must be below 1, got {w}"));
+    }
+    crossfade_reference(args)
+}
+
+/// 6.3 as the reference computes it.
+fn crossfade_reference(args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let (ta, qa, tb, qb, w) = crossfade_args(args);
+    use inbetween::skeleton::{crossfade_transform, Transform};
+    let joint = |translation, rotation| Transform {
+        translation,
+        rotation,
+        scale: Vec3::ONE,
+    };
+    let x = crossfade_transform(&joint(ta, qa), &joint(tb, qb), w);
+    Ok([
+        x.translation.to_array().as_slice(),
+        x.rotation.to_array().as_slice(),
+    ]
+    .concat())
+}
+
+#[test]
+fn a_panic_of_6_3_names_the_input_and_leaves_the_reference_pose() {
+    let mut reference = BlendFigure::new();
+    reference.pose(0.3).unwrap();
+    let mut f = BlendFigure::new();
+    f.set_runner(crossfade_panics_at_1);
+    f.set_use_exercise(true);
+    let note = f.pose(0.3).unwrap();
+    assert!(
+        note.contains(
+            "Your exercise 6.3 crossfade_joint, called for the upper arm's probe (upper_arm.R) at \
+             w = 1, panicked at src/exercises/blending.rs:37:5: w must be below 1, got 1."
+        ),
+        "{note}"
+    );
+    assert_eq!(note.matches("panicked").count(), 1, "{note}");
+    assert!(close(&rotations(&f), &rotations(&reference)));
+    // Kept, as the page keeps it, at any later time.
+    assert!(f.pose(0.6).unwrap().contains("at w = 1, panicked"));
+    // A panic at a joint (at a weight no probe uses) names the joint and its weight.
+    f.set_runner(|name, args| match name {
+        "crossfade_joint" if args[14] == 0.7 => rust_panic(format!("no: {}", args[14])),
+        "crossfade_joint" => crossfade_reference(args),
+        _ => direct(name, args),
+    });
+    f.set_weight(0.7).unwrap();
+    let note = f.pose(0.3).unwrap();
+    assert!(
+        note.contains("crossfade_joint, called for joint 0 (")
+            && note
+                .contains("with w = 0.700, panicked at src/exercises/blending.rs:37:5: no: 0.7."),
+        "{note}"
     );
 }

@@ -1001,3 +1001,83 @@ fn the_flock_has_an_inset_from_above_that_holds_its_box_and_its_boids() {
         );
     }
 }
+
+/// 12.1 right with neighbours, panicking without (a mean over no neighbours, then an `assert!`).
+fn panics_without_neighbours(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name == "three_rules" {
+        let mut rest = args;
+        let _ = (Vec3::take(&mut rest), Vec3::take(&mut rest));
+        if Vec::<Vec3>::take(&mut rest).unwrap().is_empty() {
+            return Err(Failure::Panicked(
+                "panicked at src/exercises/boids.rs:31:5:\nno neighbours: the centre is not a number"
+                    .into(),
+            ));
+        }
+    }
+    reference(name, args)
+}
+
+thread_local! {
+    /// The first panic of the page-like runner below.
+    static STUCK: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+}
+
+/// [`panics_without_neighbours`] as the page runs it: after a panic of 12.1, every later call
+/// of 12.1 gets it back.
+fn stuck_after_a_panic(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name == "three_rules" {
+        if let Some(message) = STUCK.with(|s| s.borrow().clone()) {
+            return Err(Failure::Panicked(message));
+        }
+    }
+    let answer = panics_without_neighbours(name, args);
+    if let Err(Failure::Panicked(message)) = &answer {
+        STUCK.with(|s| *s.borrow_mut() = Some(message.clone()));
+    }
+    answer
+}
+
+#[test]
+fn a_panic_of_12_1_is_named_once_against_the_input_that_caused_it() {
+    for runner in [
+        panics_without_neighbours as fn(&str, &[f32]) -> Result<Vec<f32>, Failure>,
+        stuck_after_a_panic,
+    ] {
+        STUCK.with(|s| *s.borrow_mut() = None);
+        let mut scene = RulesFigure::new();
+        scene.set_runner(runner);
+        scene.set_use_exercise(true);
+        // The figure's boid has neighbours; the probe without any panics. Twice: the second
+        // note is what the page shows from its next frame on.
+        for _ in 0..2 {
+            let note = scene.exercise_note();
+            assert!(
+                note.contains(
+                    "Your exercise 12.1 three_rules, called with the probe input \"no neighbours \
+                     (three zero vectors)\", panicked at src/exercises/boids.rs:31:5: no \
+                     neighbours: the centre is not a number."
+                ),
+                "{note}"
+            );
+            assert_eq!(note.matches("panicked").count(), 1, "{note}");
+            // 12.2 is not touched by 12.1's panic.
+            assert!(note.contains("Your cell_index matches"), "{note}");
+        }
+        // A boid with no neighbours in view, from a fresh figure: the figure's own boid is named.
+        let mut scene = RulesFigure::new();
+        STUCK.with(|s| *s.borrow_mut() = None);
+        scene.set_runner(runner);
+        scene.set_use_exercise(true);
+        scene.set_radius(0.2).unwrap();
+        let note = scene.exercise_note();
+        assert!(
+            note.contains("three_rules, called with the figure's boid at (0.000, 0.000), panicked"),
+            "{note}"
+        );
+        assert_eq!(scene.rules(), {
+            let mut plain = RulesFigure::new();
+            plain.set_radius(0.2).unwrap();
+            plain.rules()
+        });
+    }
+}

@@ -981,3 +981,74 @@ fn the_fractals_figure_declares_a_view_that_holds_both_shapes() {
         }
     }
 }
+
+/// 5.1 right below t = 0.9 and panicking from there (an `assert!` on `t`).
+fn fade_panics_near_1(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if name == "fade" && args[0] >= 0.9 {
+        return Err(Failure::Panicked(format!(
+            "panicked at src/exercises/noise.rs:24:5:\nt is too close to the cell's end: {}",
+            args[0]
+        )));
+    }
+    match name {
+        "fade" => {
+            let t = args[0];
+            Ok(vec![
+                inbetween::noise::fade(t),
+                inbetween::noise::fade_derivative(t),
+            ])
+        }
+        _ => direct(name, args),
+    }
+}
+
+thread_local! {
+    /// The first panic of the page-like runner below.
+    static STUCK: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+}
+
+/// [`fade_panics_near_1`] as the page runs it: after a panic, every later call gets it back.
+fn fade_stuck_after_a_panic(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    if let Some(message) = STUCK.with(|s| s.borrow().clone()) {
+        return Err(Failure::Panicked(message));
+    }
+    let answer = fade_panics_near_1(name, args);
+    if let Err(Failure::Panicked(message)) = &answer {
+        STUCK.with(|s| *s.borrow_mut() = Some(message.clone()));
+    }
+    answer
+}
+
+#[test]
+fn a_panic_of_5_1_is_named_once_against_the_t_that_caused_it() {
+    for runner in [
+        fade_panics_near_1 as fn(&str, &[f32]) -> Result<Vec<f32>, Failure>,
+        fade_stuck_after_a_panic,
+    ] {
+        STUCK.with(|s| *s.borrow_mut() = None);
+        let mut s = Noise1d::new();
+        s.set_runner(runner);
+        s.set_use_exercise(true);
+        // The page samples the fade plot first: its first t at or past 0.9 panics.
+        s.sample_fade(101).unwrap();
+        let n = s.draw(&mut Frame::default());
+        assert!(
+            n.contains(
+                "Your exercise 5.1 fade, called with t = 0.900, panicked at \
+                 src/exercises/noise.rs:24:5: t is too close to the cell's end: 0.9."
+            ),
+            "{n}"
+        );
+        assert_eq!(n.matches("panicked").count(), 1, "{n}");
+        // Without the plot, the verdict's probes meet it first, at t = 1.
+        let mut s = Noise1d::new();
+        STUCK.with(|s| *s.borrow_mut() = None);
+        s.set_runner(runner);
+        s.set_use_exercise(true);
+        let n = s.draw(&mut Frame::default());
+        assert!(
+            n.contains("fade, called with t = 1.000, panicked at") && n.contains("end: 1."),
+            "{n}"
+        );
+    }
+}

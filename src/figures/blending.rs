@@ -11,8 +11,8 @@
 //! comes from the clips' own contacts ([`crate::skeleton::Contact`]), blended as the poses are.
 
 use super::{
-    compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
-    DEFAULT_RUNNER,
+    compare_note, failure_note, finite, format_number, in_range, palette, Failure, Frame, MeshId,
+    Runner, DEFAULT_RUNNER,
 };
 use crate::exercises::run;
 use crate::skeleton::{
@@ -53,6 +53,10 @@ pub struct BlendFigure {
     additive_weight: f32,
     use_exercise: bool,
     runner: Runner,
+    /// Where the student's 6.3 panicked (a joint and its weight, or a probe) and the panic's
+    /// message. The page answers every later call of a panicked exercise with that message, so
+    /// the figure keeps the input that caused it and uses the reference until the page reloads.
+    exercise_panic: Option<(String, String)>,
     /// Per-joint weight of clip B for the current mask and weight.
     joint_weights: Vec<f32>,
     lean: Pose,
@@ -112,6 +116,7 @@ impl BlendFigure {
             additive_weight: 1.0,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            exercise_panic: None,
             joint_weights: vec![0.5; n],
             lean,
             pose_a: skeleton.rest_pose(),
@@ -184,8 +189,10 @@ impl BlendFigure {
         self.use_exercise = on;
     }
 
+    /// A new runner (a rebuilt exercise) forgets an earlier panic.
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.exercise_panic = None;
     }
 
     fn update_weights(&mut self) {
@@ -400,14 +407,23 @@ impl BlendFigure {
     /// student's blend. Returns the note.
     fn student_blend(&mut self) -> String {
         let exercise = "exercise 6.3 crossfade_joint";
-        let mut first_wrong = None;
+        if let Some((at, message)) = &self.exercise_panic {
+            return crossfade_panic_note(at, message);
+        }
+        // The probes first, and every joint's answer before any is used: a panic leaves the
+        // reference's pose whole.
+        let probes = match self.probe_crossfade() {
+            Ok(text) => text,
+            Err(panic) => return self.remember_panic(panic),
+        };
+        let mut answers = Vec::with_capacity(self.skeleton.len());
         for j in 0..self.skeleton.len() {
             let (x, y, w) = (
                 self.pose_a.local[j],
                 self.pose_b.local[j],
                 self.joint_weights[j],
             );
-            let yours = match run::crossfade_joint(
+            match run::crossfade_joint(
                 self.runner,
                 x.translation,
                 x.rotation,
@@ -415,9 +431,21 @@ impl BlendFigure {
                 y.rotation,
                 w,
             ) {
-                Ok(answer) => answer,
+                Ok(answer) => answers.push(answer),
+                Err(Failure::Panicked(message)) => {
+                    let at = format!(
+                        "joint {j} ({}) with w = {}",
+                        self.skeleton.names()[j],
+                        format_number(w)
+                    );
+                    return self.remember_panic((at, message));
+                }
                 Err(failure) => return failure_note(exercise, EXERCISE_FILE, &failure),
-            };
+            }
+        }
+        let mut first_wrong = None;
+        for (j, yours) in answers.into_iter().enumerate() {
+            let w = self.joint_weights[j];
             let reference = self.pose.local[j];
             let q = if yours.1.dot(reference.rotation) < 0.0 {
                 -yours.1
@@ -457,13 +485,20 @@ impl BlendFigure {
                 compare_note("crossfade_joint", &at, &yours, &reference, TOLERANCE).1
             }
         };
-        format!("{here} {}", self.probe_crossfade())
+        format!("{here} {probes}")
+    }
+
+    /// Keeps a panic of 6.3 (where it happened, its message) and returns the note about it.
+    fn remember_panic(&mut self, panic: (String, String)) -> String {
+        let note = crossfade_panic_note(&panic.0, &panic.1);
+        self.exercise_panic = Some(panic);
+        note
     }
 
     /// Exercise 6.3 on inputs the current settings may not reach: the right upper arm's A and B
     /// at w = 0, 0.25 and 1, and with B's rotation negated (a·b < 0, the short-arc flip) at
-    /// w = 0.5. Says which differ.
-    fn probe_crossfade(&self) -> String {
+    /// w = 0.5. Says which differ; a panic comes back as where it happened and its message.
+    fn probe_crossfade(&self) -> Result<String, (String, String)> {
         let j = self.arm[0];
         let (x, y) = (self.pose_a.local[j], self.pose_b.local[j]);
         let mut flipped = y;
@@ -494,17 +529,21 @@ impl BlendFigure {
                         differ.push(what);
                     }
                 }
+                Err(Failure::Panicked(message)) => {
+                    let name = &self.skeleton.names()[j];
+                    return Err((format!("the upper arm's probe ({name}) at {what}"), message));
+                }
                 Err(_) => differ.push(what),
             }
         }
-        if differ.is_empty() {
+        Ok(if differ.is_empty() {
             "It also matches on the upper arm's probes (w = 0, 0.25, 1, and a·b < 0).".into()
         } else {
             format!(
                 "On the upper arm's probes it differs at {}.",
                 differ.join(", ")
             )
-        }
+        })
     }
 
     /// The colour of a body part whose joint takes clip B at weight `w`: grey (A only) to teal
@@ -623,6 +662,10 @@ pub struct LocomotionFigure {
     runner: Runner,
     /// What the note says about the student's 8.1 (empty when not in use).
     exercise_note: String,
+    /// The speed (m/s) at which the student's 8.1 panicked, and the panic's message. The page
+    /// answers every later call of a panicked exercise with that same message, so the figure
+    /// keeps the speed that caused it and uses the reference until the page reloads.
+    exercise_panic: Option<(f32, String)>,
 }
 
 impl Default for LocomotionFigure {
@@ -635,6 +678,10 @@ impl Default for LocomotionFigure {
 /// pixels (the same at any distance).
 const FOOTPRINT_PX: f32 = 7.0;
 const TRAIL_PX: f32 = 4.0;
+/// How far (metres) a drawn footprint may move from one sample to the next beyond the foot's
+/// own move before it counts as the drawing's snap-back at a loop rather than a slide: well
+/// below a synchronised snap (a blended cycle's travel, 57 to 96 cm) and far above rounding.
+const SNAP_TOLERANCE_M: f32 = 0.05;
 /// How high above the ground the footprints are drawn, metres (just clear of the grid).
 const FOOTPRINT_HEIGHT: f32 = 0.005;
 /// The character walks along z on a loop this long (metres), so it stays in view.
@@ -659,6 +706,31 @@ pub const LOCOMOTION_LOOP_SEC: f32 = 8.0;
 /// decides which foot is planted while the run's half of the pose swings it). A little below 0,
 /// so a line at 0 is not cut by the plot's edge.
 pub const LOCOMOTION_PLOT_RANGES: [f32; 4] = [-0.02, 0.52, -10.0, 410.0];
+
+/// What the blend figure says when the student's 6.3 panicked when called `at` (a joint and its
+/// weight, or a probe): that input once, then the panic's own words.
+fn crossfade_panic_note(at: &str, message: &str) -> String {
+    let exercise = format!("exercise 6.3 crossfade_joint, called for {at},");
+    failure_note(
+        &exercise,
+        EXERCISE_FILE,
+        &Failure::Panicked(message.to_string()),
+    )
+}
+
+/// What the locomotion figure says when the student's 8.1 panicked when called with the speed
+/// `v`: that speed once, then the panic's own words (its place and message).
+fn speed_panic_note(v: f32, message: &str) -> String {
+    let exercise = format!(
+        "exercise 8.1 weight_for_speed, called with v = {} m/s,",
+        format_number(v)
+    );
+    failure_note(
+        &exercise,
+        BLENDING_FILE,
+        &Failure::Panicked(message.to_string()),
+    )
+}
 
 impl LocomotionFigure {
     /// Halfway between walking and running speed, synchronised, root motion on.
@@ -698,6 +770,7 @@ impl LocomotionFigure {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             exercise_note: String::new(),
+            exercise_panic: None,
             skeleton,
             shapes,
         }
@@ -722,9 +795,19 @@ impl LocomotionFigure {
         let [(da, ta), (db, tb)] = self
             .motion
             .map(|m| (m.duration_sec, m.cycle_travel.length()));
-        let student = |v: f32| run::weight_for_speed(self.runner, da, ta, db, tb, v);
+        if let Some((v, message)) = &self.exercise_panic {
+            self.exercise_note = speed_panic_note(*v, message);
+            return;
+        }
+        let runner = self.runner;
+        let student = move |v: f32| run::weight_for_speed(runner, da, ta, db, tb, v);
         let yours = match student(self.speed) {
             Ok(w) => w,
+            Err(Failure::Panicked(message)) => {
+                self.exercise_note = speed_panic_note(self.speed, &message);
+                self.exercise_panic = Some((self.speed, message));
+                return;
+            }
             Err(failure) => {
                 self.exercise_note =
                     failure_note("exercise 8.1 weight_for_speed", BLENDING_FILE, &failure);
@@ -744,22 +827,28 @@ impl LocomotionFigure {
             &[reference],
             TOLERANCE,
         );
-        let differ: Vec<String> = probes
-            .iter()
-            .filter_map(|&v| {
-                let r = weight_for_speed(&self.motion[0], &self.motion[1], v);
-                match student(v) {
-                    Ok(y) if (y - r).abs() <= TOLERANCE => None,
-                    Ok(y) => Some(format!(
-                        "v = {} (yours {}, reference {})",
-                        format_number(v),
-                        format_number(y),
-                        format_number(r)
-                    )),
-                    Err(f) => Some(format!("v = {} ({f})", format_number(v))),
+        let mut differ = Vec::new();
+        for &v in &probes {
+            let r = weight_for_speed(&self.motion[0], &self.motion[1], v);
+            match student(v) {
+                Ok(y) if (y - r).abs() <= TOLERANCE => {}
+                Ok(y) => differ.push(format!(
+                    "v = {} (yours {}, reference {})",
+                    format_number(v),
+                    format_number(y),
+                    format_number(r)
+                )),
+                // After a panic the page answers every call with it: the probes stop here, and
+                // the figure names this speed and uses the reference.
+                Err(Failure::Panicked(message)) => {
+                    self.w = reference;
+                    self.exercise_note = speed_panic_note(v, &message);
+                    self.exercise_panic = Some((v, message));
+                    return;
                 }
-            })
-            .collect();
+                Err(f) => differ.push(format!("v = {} ({f})", format_number(v))),
+            }
+        }
         let probes_text = probes
             .iter()
             .map(|v| format_number(*v))
@@ -790,8 +879,10 @@ impl LocomotionFigure {
         self.update_weight();
     }
 
+    /// A new runner (a rebuilt exercise) forgets an earlier panic.
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.exercise_panic = None;
         self.update_weight();
     }
 
@@ -1067,8 +1158,9 @@ impl LocomotionFigure {
         self.footprint_links.clear();
         let (now, _) = self.pose_at(t);
         let mut slide = 0.0f32;
-        // Per foot: where it was at the last sample and that sample's footprint, while planted.
-        let mut last: [Option<(Vec3, usize)>; 2] = [None, None];
+        // Per foot, while planted: where the travel had taken it at the last sample, where it
+        // was drawn, and that sample's footprint.
+        let mut last: [Option<(Vec3, Vec3, usize)>; 2] = [None, None];
         for k in 0..=FOOTPRINT_SAMPLES {
             let s = t - FOOTPRINT_SEC * (1.0 - k as f32 / FOOTPRINT_SAMPLES as f32);
             for (f, (ground, drawn, planted)) in self.feet_at(s, now).into_iter().enumerate() {
@@ -1077,11 +1169,17 @@ impl LocomotionFigure {
                     self.footprints
                         .push(Vec3::new(drawn.x, FOOTPRINT_HEIGHT, drawn.z));
                     self.footprint_feet.push(f);
-                    if let Some((q, before)) = last[f] {
-                        slide += Vec3::new(ground.x - q.x, 0.0, ground.z - q.z).length();
-                        self.footprint_links.push([before, here]);
+                    if let Some((q, q_drawn, before)) = last[f] {
+                        let step = Vec3::new(ground.x - q.x, 0.0, ground.z - q.z);
+                        slide += step.length();
+                        // The drawing's snap-back at a loop (root motion left in the pose)
+                        // moves the drawn foot but not the foot: two dots, no trail.
+                        let drawn_step = Vec3::new(drawn.x - q_drawn.x, 0.0, drawn.z - q_drawn.z);
+                        if (drawn_step - step).length() <= SNAP_TOLERANCE_M {
+                            self.footprint_links.push([before, here]);
+                        }
                     }
-                    last[f] = Some((ground, here));
+                    last[f] = Some((ground, drawn, here));
                 } else {
                     last[f] = None;
                 }

@@ -8,13 +8,14 @@
 
 use super::particles::{steps_to, SIM_DT};
 use super::{
-    failure_note, format_number, in_range, palette, Frame, MeshId, Runner, DEFAULT_RUNNER,
+    failure_note, format_number, in_range, palette, Failure, Frame, MeshId, Runner, DEFAULT_RUNNER,
 };
 use crate::boids::{cell_index, three_rules, BoidParams, Flock, ForceLaw, Search};
 use crate::draw::inset::InsetView;
 use crate::exercises::run;
 use crate::particles::Sphere;
 use glam::{Mat4, Vec3};
+use std::cell::RefCell;
 
 const FILE: &str = "src/exercises/boids.rs";
 const TOLERANCE: f32 = 1e-4;
@@ -1065,6 +1066,45 @@ pub struct RulesFigure {
     cell_size: f32,
     use_exercise: bool,
     runner: Runner,
+    /// The first panics of the student's 12.1 and 12.2, with their inputs.
+    rules_panic: FirstPanic,
+    cell_panic: FirstPanic,
+}
+
+/// The first panic of a student's exercise in a figure: the input it was called with and the
+/// panic's message. The page answers every later call of a panicked exercise with that same
+/// message, whatever its input, so the figure names the input that caused it, not the one it
+/// happened to try next. A new runner (a rebuilt exercise) starts afresh.
+#[derive(Clone, Debug, Default)]
+struct FirstPanic(RefCell<Option<(String, String)>>);
+
+impl FirstPanic {
+    /// Keeps a panic met at `input` unless one is kept already.
+    fn record(&self, input: &str, failure: &Failure) {
+        if let Failure::Panicked(message) = failure {
+            self.0
+                .borrow_mut()
+                .get_or_insert_with(|| (input.to_string(), message.clone()));
+        }
+    }
+
+    /// What the figure says about `failure` met at `input`: [`failure_note`], with a panic named
+    /// once, against the input of the first panic.
+    fn note(&self, exercise: &str, input: &str, failure: &Failure) -> String {
+        self.record(input, failure);
+        match (&*self.0.borrow(), failure) {
+            (Some((at, message)), Failure::Panicked(_)) => failure_note(
+                &format!("{exercise}, called with {at},"),
+                FILE,
+                &Failure::Panicked(message.clone()),
+            ),
+            _ => failure_note(exercise, FILE, failure),
+        }
+    }
+
+    fn clear(&self) {
+        self.0.borrow_mut().take();
+    }
 }
 
 /// The longest arrow the rules figure draws, metres (1 m per unit of a steering vector).
@@ -1103,11 +1143,25 @@ impl RulesFigure {
             cell_size: 1.0,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            rules_panic: FirstPanic::default(),
+            cell_panic: FirstPanic::default(),
         }
     }
 
+    /// A new runner (a rebuilt exercise) forgets earlier panics.
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.rules_panic.clear();
+        self.cell_panic.clear();
+    }
+
+    /// How the notes name the figure's own boid as an exercise's input.
+    fn this_boid(&self) -> String {
+        format!(
+            "the figure's boid at ({}, {})",
+            format_number(self.boid.x),
+            format_number(self.boid.z)
+        )
     }
 
     pub fn set_use_exercise(&mut self, on: bool) {
@@ -1207,6 +1261,7 @@ impl RulesFigure {
                     ps.clone(),
                     vs.clone(),
                 )
+                .map_err(|f| self.rules_panic.record(&self.this_boid(), &f))
                 .ok()
             })
             .flatten()
@@ -1388,7 +1443,9 @@ impl RulesFigure {
             ps.clone(),
             vs.clone(),
         ) {
-            Err(f) => failure_note("exercise 12.1 three_rules", FILE, &f),
+            Err(f) => self
+                .rules_panic
+                .note("exercise 12.1 three_rules", &self.this_boid(), &f),
             Ok(yours) => {
                 let reference = three_rules(self.boid, self.velocity, &ps, &vs);
                 let mut note = rules_note(&yours, &reference);
@@ -1401,7 +1458,9 @@ impl RulesFigure {
         let dims_f = dims.map(|d| d as f32);
         let cell =
             match run::cell_index(self.runner, self.boid, GRID_ORIGIN, self.cell_size, dims_f) {
-                Err(f) => failure_note("exercise 12.2 cell_index", FILE, &f),
+                Err(f) => self
+                    .cell_panic
+                    .note("exercise 12.2 cell_index", &self.this_boid(), &f),
                 // An index is a whole number: "yours 272, reference 240", not "(272.000)", and
                 // the reference's (i, j, k), to see which axis went wrong.
                 Ok(yours) => {
@@ -1457,8 +1516,12 @@ impl RulesFigure {
         ];
         let mut differ = Vec::new();
         for (name, p, vel, qs, ws) in probes {
-            let Ok(yours) = run::three_rules(self.runner, p, vel, qs.clone(), ws.clone()) else {
-                return String::new();
+            let yours = match run::three_rules(self.runner, p, vel, qs.clone(), ws.clone()) {
+                Ok(yours) => yours,
+                Err(f) => {
+                    let at = format!("the probe input \"{name}\"");
+                    return self.rules_panic.note("exercise 12.1 three_rules", &at, &f);
+                }
             };
             let reference = three_rules(p, vel, &qs, &ws);
             let close = yours.len() == 3
@@ -1509,9 +1572,12 @@ impl RulesFigure {
         ];
         let mut differ = Vec::new();
         for (name, p, origin, size, d) in probes {
-            let Ok(yours) = run::cell_index(self.runner, p, origin, size, d.map(|x| x as f32))
-            else {
-                return String::new();
+            let yours = match run::cell_index(self.runner, p, origin, size, d.map(|x| x as f32)) {
+                Ok(yours) => yours,
+                Err(f) => {
+                    let at = format!("the probe input \"{name}\"");
+                    return self.cell_panic.note("exercise 12.2 cell_index", &at, &f);
+                }
             };
             if yours != cell_index(p, origin, size, d) {
                 differ.push(name);

@@ -6,7 +6,9 @@
 //! updated in place).
 
 use super::{check_samples, DEFAULT_RUNNER};
-use super::{compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner};
+use super::{
+    compare_note, failure_note, format_number, in_range, palette, Failure, Frame, MeshId, Runner,
+};
 use crate::draw::StrokeStyle;
 use crate::exercises::run;
 use crate::noise::fractals::{koch_snowflake, sierpinski, MAX_DEPTH};
@@ -19,6 +21,7 @@ use crate::terrain::{
 };
 use crate::texture::{TextureId, UvRect};
 use glam::{Mat4, Vec2, Vec3};
+use std::cell::RefCell;
 
 const FILE: &str = "src/exercises/noise.rs";
 const TOLERANCE: f32 = 1e-4;
@@ -50,14 +53,51 @@ fn check_n(n: f32, max: u32) -> Result<u32, String> {
     Ok(v as u32)
 }
 
+/// The first panic of a student's exercise in a figure: the input it was called with and the
+/// panic's message. The page answers every later call of a panicked exercise with that same
+/// message, whatever its input, so the figure names the input that caused it, not the one it
+/// happened to try next. A new runner (a rebuilt exercise) starts afresh.
+#[derive(Clone, Debug, Default)]
+struct FirstPanic(RefCell<Option<(String, String)>>);
+
+impl FirstPanic {
+    /// Keeps a panic met at `input` unless one is kept already.
+    fn record(&self, input: &str, failure: &Failure) {
+        if let Failure::Panicked(message) = failure {
+            self.0
+                .borrow_mut()
+                .get_or_insert_with(|| (input.to_string(), message.clone()));
+        }
+    }
+
+    /// What the figure says about `failure` met at `input`: [`failure_note`], with a panic named
+    /// once, against the input of the first panic.
+    fn note(&self, exercise: &str, input: &str, failure: &Failure) -> String {
+        self.record(input, failure);
+        match (&*self.0.borrow(), failure) {
+            (Some((at, message)), Failure::Panicked(_)) => failure_note(
+                &format!("{exercise}, called with {at},"),
+                FILE,
+                &Failure::Panicked(message.clone()),
+            ),
+            _ => failure_note(exercise, FILE, failure),
+        }
+    }
+
+    fn clear(&self) {
+        self.0.borrow_mut().take();
+    }
+}
+
 /// The verdict on a student's exercise over several inputs, so a bug that the displayed input
 /// cannot reveal still shows. `cases` names each input (`"t = 0.250"`) with the reference's
 /// answer; `yours(i)` runs the student's code on case i. Returns the note and, when every case
 /// answered, the student's answers (for drawing). A missing or panicking exercise stops at its
-/// first call and yields [`failure_note`].
+/// first call and yields [`failure_note`] (a panic named against its input, see [`FirstPanic`]).
 fn probe_verdict(
     what: &str,
     exercise: &str,
+    first_panic: &FirstPanic,
     cases: &[(String, Vec<f32>)],
     mut yours: impl FnMut(usize) -> Result<Vec<f32>, crate::exercises::run::Failure>,
 ) -> (String, Option<Vec<Vec<f32>>>) {
@@ -76,7 +116,7 @@ fn probe_verdict(
                 }
                 answers.push(a);
             }
-            Err(f) => return (failure_note(exercise, FILE, &f), None),
+            Err(f) => return (first_panic.note(exercise, &cases[i].0, &f), None),
         }
     }
     let n = cases.len();
@@ -171,6 +211,7 @@ pub struct Noise1d {
     show_ramps: bool,
     use_exercise: bool,
     runner: Runner,
+    first_panic: FirstPanic,
 }
 
 /// Screen mapping of Figure 1: x ∈ [0, 8] to [−4, 4], values ×4.
@@ -193,6 +234,7 @@ impl Noise1d {
             show_ramps: true,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            first_panic: FirstPanic::default(),
         }
     }
     pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
@@ -211,6 +253,7 @@ impl Noise1d {
     }
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.first_panic.clear();
     }
 
     fn to_world(x: f32, y: f32) -> Vec3 {
@@ -226,7 +269,11 @@ impl Noise1d {
         }
         match run::fade(self.runner, t) {
             Ok(yours) => yours,
-            Err(_) => reference,
+            Err(failure) => {
+                self.first_panic
+                    .record(&format!("t = {}", format_number(t)), &failure);
+                reference
+            }
         }
     }
 
@@ -243,9 +290,13 @@ impl Noise1d {
                 )
             })
             .collect();
-        probe_verdict("fade (5.1)", "exercise 5.1 fade", &cases, |i| {
-            run::fade(self.runner, ts[i]).map(|v| v.to_vec())
-        })
+        probe_verdict(
+            "fade (5.1)",
+            "exercise 5.1 fade",
+            &self.first_panic,
+            &cases,
+            |i| run::fade(self.runner, ts[i]).map(|v| v.to_vec()),
+        )
         .0
     }
 
@@ -405,6 +456,7 @@ pub struct Noise2d {
     probe: Vec2,
     use_exercise: bool,
     runner: Runner,
+    first_panic: FirstPanic,
     dirty: bool,
     stale: bool,
 }
@@ -422,6 +474,7 @@ impl Noise2d {
             probe: Vec2::new(0.4, 0.7),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            first_panic: FirstPanic::default(),
             dirty: true,
             stale: false,
         };
@@ -481,6 +534,7 @@ impl Noise2d {
     }
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.first_panic.clear();
     }
 
     fn world(&self, p: Vec2, value: f32) -> Vec3 {
@@ -552,6 +606,7 @@ impl Noise2d {
         let (note, answers) = probe_verdict(
             "perlin_cell (5.2)",
             "exercise 5.2 perlin_cell",
+            &self.first_panic,
             &cases,
             |k| run::perlin_cell(self.runner, points[k], g[0], g[1], g[2], g[3]).map(|v| vec![v]),
         );
@@ -708,6 +763,7 @@ pub struct Octaves {
     terrain: Terrain,
     use_exercise: bool,
     runner: Runner,
+    first_panic: FirstPanic,
     /// The student's 5.3 along the profile for the figure's current sum, with its verdict
     /// (computed once per change of N, α, ω or the runner: hundreds of calls).
     student: Option<(Fractal, String, Option<Vec<f32>>)>,
@@ -737,6 +793,7 @@ impl Octaves {
             terrain: Terrain::new(OCTAVES_RESOLUTION).expect("a valid resolution"),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            first_panic: FirstPanic::default(),
             student: None,
             dirty: true,
             stale: false,
@@ -800,6 +857,7 @@ impl Octaves {
     }
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.first_panic.clear();
         self.student = None;
     }
 
@@ -856,6 +914,7 @@ impl Octaves {
         let (note, answers) = probe_verdict(
             "fractal_sum (5.3)",
             "exercise 5.3 fractal_sum",
+            &self.first_panic,
             &cases,
             |i| {
                 run::fractal_sum(runner, points[i], f.n as usize, f.alpha, f.omega).map(|v| vec![v])
@@ -1011,6 +1070,7 @@ pub struct TerrainScene {
     band_limit: bool,
     use_exercise: bool,
     runner: Runner,
+    first_panic: FirstPanic,
     dirty: bool,
     stale: bool,
 }
@@ -1026,6 +1086,7 @@ impl TerrainScene {
             band_limit: false,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            first_panic: FirstPanic::default(),
             dirty: true,
             stale: false,
         };
@@ -1164,6 +1225,7 @@ impl TerrainScene {
     }
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+        self.first_panic.clear();
     }
 
     pub fn params(&self) -> TerrainParams {
@@ -1291,6 +1353,7 @@ impl TerrainScene {
             let (verdict, answers) = probe_verdict(
                 "terrain_normal (5.4)",
                 "exercise 5.4 terrain_normal",
+                &self.first_panic,
                 &named,
                 |i| {
                     let (_, h, s, g) = cases[i];
