@@ -7,15 +7,13 @@
 //!   three steering vectors (exercise 12.1) and the grid cells around it (exercise 12.2).
 
 use super::particles::{steps_to, SIM_DT};
-use super::{
-    failure_note, format_number, in_range, palette, Failure, Frame, MeshId, Runner, DEFAULT_RUNNER,
-};
+use super::FirstPanic;
+use super::{format_number, in_range, palette, Frame, MeshId, Runner, DEFAULT_RUNNER};
 use crate::boids::{cell_index, three_rules, BoidParams, Flock, ForceLaw, Search};
 use crate::draw::inset::InsetView;
 use crate::exercises::run;
 use crate::particles::Sphere;
 use glam::{Mat4, Vec3};
-use std::cell::RefCell;
 
 const FILE: &str = "src/exercises/boids.rs";
 const TOLERANCE: f32 = 1e-4;
@@ -1071,42 +1069,6 @@ pub struct RulesFigure {
     cell_panic: FirstPanic,
 }
 
-/// The first panic of a student's exercise in a figure: the input it was called with and the
-/// panic's message. The page answers every later call of a panicked exercise with that same
-/// message, whatever its input, so the figure names the input that caused it, not the one it
-/// happened to try next. A new runner (a rebuilt exercise) starts afresh.
-#[derive(Clone, Debug, Default)]
-struct FirstPanic(RefCell<Option<(String, String)>>);
-
-impl FirstPanic {
-    /// Keeps a panic met at `input` unless one is kept already.
-    fn record(&self, input: &str, failure: &Failure) {
-        if let Failure::Panicked(message) = failure {
-            self.0
-                .borrow_mut()
-                .get_or_insert_with(|| (input.to_string(), message.clone()));
-        }
-    }
-
-    /// What the figure says about `failure` met at `input`: [`failure_note`], with a panic named
-    /// once, against the input of the first panic.
-    fn note(&self, exercise: &str, input: &str, failure: &Failure) -> String {
-        self.record(input, failure);
-        match (&*self.0.borrow(), failure) {
-            (Some((at, message)), Failure::Panicked(_)) => failure_note(
-                &format!("{exercise}, called with {at},"),
-                FILE,
-                &Failure::Panicked(message.clone()),
-            ),
-            _ => failure_note(exercise, FILE, failure),
-        }
-    }
-
-    fn clear(&self) {
-        self.0.borrow_mut().take();
-    }
-}
-
 /// The longest arrow the rules figure draws, metres (1 m per unit of a steering vector).
 const ARROW_MAX_M: f32 = 2.0;
 
@@ -1443,9 +1405,10 @@ impl RulesFigure {
             ps.clone(),
             vs.clone(),
         ) {
-            Err(f) => self
-                .rules_panic
-                .note("exercise 12.1 three_rules", &self.this_boid(), &f),
+            Err(f) => {
+                self.rules_panic
+                    .note("exercise 12.1 three_rules", FILE, &self.this_boid(), &f)
+            }
             Ok(yours) => {
                 let reference = three_rules(self.boid, self.velocity, &ps, &vs);
                 let mut note = rules_note(&yours, &reference);
@@ -1458,9 +1421,10 @@ impl RulesFigure {
         let dims_f = dims.map(|d| d as f32);
         let cell =
             match run::cell_index(self.runner, self.boid, GRID_ORIGIN, self.cell_size, dims_f) {
-                Err(f) => self
-                    .cell_panic
-                    .note("exercise 12.2 cell_index", &self.this_boid(), &f),
+                Err(f) => {
+                    self.cell_panic
+                        .note("exercise 12.2 cell_index", FILE, &self.this_boid(), &f)
+                }
                 // An index is a whole number: "yours 272, reference 240", not "(272.000)", and
                 // the reference's (i, j, k), to see which axis went wrong.
                 Ok(yours) => {
@@ -1520,7 +1484,9 @@ impl RulesFigure {
                 Ok(yours) => yours,
                 Err(f) => {
                     let at = format!("the probe input \"{name}\"");
-                    return self.rules_panic.note("exercise 12.1 three_rules", &at, &f);
+                    return self
+                        .rules_panic
+                        .note("exercise 12.1 three_rules", FILE, &at, &f);
                 }
             };
             let reference = three_rules(p, vel, &qs, &ws);
@@ -1576,7 +1542,9 @@ impl RulesFigure {
                 Ok(yours) => yours,
                 Err(f) => {
                     let at = format!("the probe input \"{name}\"");
-                    return self.cell_panic.note("exercise 12.2 cell_index", &at, &f);
+                    return self
+                        .cell_panic
+                        .note("exercise 12.2 cell_index", FILE, &at, &f);
                 }
             };
             if yours != cell_index(p, origin, size, d) {

@@ -81,6 +81,43 @@ pub fn check_samples(samples: usize) -> Result<(), String> {
     }
 }
 
+/// The first panic of a student's exercise in a figure: the input it was called with and the
+/// panic's message. The page answers every later call of a panicked exercise with that same
+/// message, whatever its input, so the figure names the input that caused it, not the one it
+/// happened to try next. A new runner (a rebuilt exercise) starts afresh ([`FirstPanic::clear`]).
+#[derive(Clone, Debug, Default)]
+pub struct FirstPanic(std::cell::RefCell<Option<(String, String)>>);
+
+impl FirstPanic {
+    /// Keeps a panic met at `input` unless one is kept already.
+    pub fn record(&self, input: &str, failure: &Failure) {
+        if let Failure::Panicked(message) = failure {
+            self.0
+                .borrow_mut()
+                .get_or_insert_with(|| (input.to_string(), message.clone()));
+        }
+    }
+
+    /// What the figure says about `failure` met at `input` (exercise file `file`):
+    /// [`failure_note`], with a panic named once, against the input of the first panic.
+    pub fn note(&self, exercise: &str, file: &str, input: &str, failure: &Failure) -> String {
+        self.record(input, failure);
+        match (&*self.0.borrow(), failure) {
+            (Some((at, message)), Failure::Panicked(_)) => failure_note(
+                &format!("{exercise}, called with {at},"),
+                file,
+                &Failure::Panicked(message.clone()),
+            ),
+            _ => failure_note(exercise, file, failure),
+        }
+    }
+
+    /// Forgets the panic (the runner changed).
+    pub fn clear(&self) {
+        self.0.borrow_mut().take();
+    }
+}
+
 /// What a figure says when the student's exercise gave no answer; the figure then uses the
 /// reference. `exercise` reads like "exercise 3.2 slerp", `file` like "src/exercises/rotations.rs".
 pub fn failure_note(exercise: &str, file: &str, failure: &Failure) -> String {

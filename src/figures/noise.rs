@@ -5,10 +5,8 @@
 //! `web::noise` wraps these for JavaScript and uploads the terrain meshes (created once, then
 //! updated in place).
 
-use super::{check_samples, DEFAULT_RUNNER};
-use super::{
-    compare_note, failure_note, format_number, in_range, palette, Failure, Frame, MeshId, Runner,
-};
+use super::{check_samples, FirstPanic, DEFAULT_RUNNER};
+use super::{compare_note, format_number, in_range, palette, Frame, MeshId, Runner};
 use crate::draw::StrokeStyle;
 use crate::exercises::run;
 use crate::noise::fractals::{koch_snowflake, sierpinski, MAX_DEPTH};
@@ -21,7 +19,6 @@ use crate::terrain::{
 };
 use crate::texture::{TextureId, UvRect};
 use glam::{Mat4, Vec2, Vec3};
-use std::cell::RefCell;
 
 const FILE: &str = "src/exercises/noise.rs";
 const TOLERANCE: f32 = 1e-4;
@@ -53,42 +50,6 @@ fn check_n(n: f32, max: u32) -> Result<u32, String> {
     Ok(v as u32)
 }
 
-/// The first panic of a student's exercise in a figure: the input it was called with and the
-/// panic's message. The page answers every later call of a panicked exercise with that same
-/// message, whatever its input, so the figure names the input that caused it, not the one it
-/// happened to try next. A new runner (a rebuilt exercise) starts afresh.
-#[derive(Clone, Debug, Default)]
-struct FirstPanic(RefCell<Option<(String, String)>>);
-
-impl FirstPanic {
-    /// Keeps a panic met at `input` unless one is kept already.
-    fn record(&self, input: &str, failure: &Failure) {
-        if let Failure::Panicked(message) = failure {
-            self.0
-                .borrow_mut()
-                .get_or_insert_with(|| (input.to_string(), message.clone()));
-        }
-    }
-
-    /// What the figure says about `failure` met at `input`: [`failure_note`], with a panic named
-    /// once, against the input of the first panic.
-    fn note(&self, exercise: &str, input: &str, failure: &Failure) -> String {
-        self.record(input, failure);
-        match (&*self.0.borrow(), failure) {
-            (Some((at, message)), Failure::Panicked(_)) => failure_note(
-                &format!("{exercise}, called with {at},"),
-                FILE,
-                &Failure::Panicked(message.clone()),
-            ),
-            _ => failure_note(exercise, FILE, failure),
-        }
-    }
-
-    fn clear(&self) {
-        self.0.borrow_mut().take();
-    }
-}
-
 /// The verdict on a student's exercise over several inputs, so a bug that the displayed input
 /// cannot reveal still shows. `cases` names each input (`"t = 0.250"`) with the reference's
 /// answer; `yours(i)` runs the student's code on case i. Returns the note and, when every case
@@ -116,7 +77,7 @@ fn probe_verdict(
                 }
                 answers.push(a);
             }
-            Err(f) => return (first_panic.note(exercise, &cases[i].0, &f), None),
+            Err(f) => return (first_panic.note(exercise, FILE, &cases[i].0, &f), None),
         }
     }
     let n = cases.len();
