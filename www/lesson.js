@@ -216,7 +216,8 @@ function callExercise(name, args) {
     if (e instanceof WebAssembly.RuntimeError) {
       const message = sandbox.lastPanic ?? String(e);
       state.panickedExercises[name] = message;
-      console.warn(`inbetween: your exercise ${name} panicked: ${message}`);
+      // The hook's message already reads "panicked at file:line: …".
+      console.warn(`inbetween: your exercise ${name} ${message.startsWith('panicked') ? message : `panicked: ${message}`}`);
       replaceSandbox();
       throw { kind: 'panic', message };
     }
