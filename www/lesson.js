@@ -44,6 +44,10 @@ function typedValueNote(controller, typed) {
   const value = parseFloat(text);
   const name = controller._name;
   if (Number.isNaN(value)) return `“${text}” is not a number: ${name} stays ${controller.getValue()}.`;
+  // lil-gui reads the number at the start of the text ("0.5.5" as 0.5, "3px" as 3).
+  if (Number.isNaN(Number(text))) {
+    return `“${text}” is not a number; its start was read as ${value}: ${name} is set to ${controller.getValue()}.`;
+  }
   const [lo, hi] = [controller._min, controller._max];
   if ((lo !== undefined && value < lo) || (hi !== undefined && value > hi)) {
     return `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}: ${name} is set to ${controller.getValue()}.`;

@@ -198,6 +198,9 @@ test('a typed value a number box cannot take says what became of it (lesson 11)'
     assert.match(await note.textContent(), /-50 is outside 0 to 20: gravity \(m\/s²\) is set to 0\./);
     assert.ok(await note.isVisible());
     await page.locator(fig).screenshot({ path: 'tests/screenshots/11-particles-typed-value-webgl2.png' });
+    // Text that starts with a number: lil-gui takes the start, and the note says so.
+    await type('4.5.5');
+    assert.match(await note.textContent(), /“4\.5\.5” is not a number; its start was read as 4\.5: gravity \(m\/s²\) is set to 4\.5\./);
     await type('4.5');
     assert.ok(!(await note.isVisible()), 'an accepted value takes the note away');
     // The figure took the accepted value (the note's bounce sentence is unaffected; the
