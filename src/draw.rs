@@ -446,17 +446,8 @@ impl Frame {
     /// Declares that the box from `min` to `max` must stay in view (see [`Frame::keep_in_view`]):
     /// its eight corners join the points the camera fits.
     pub fn keep_box_in_view(&mut self, min: Vec3, max: Vec3) {
-        for i in 0..8 {
-            let pick = |bit: usize, lo: f32, hi: f32| if i & bit == 0 { lo } else { hi };
-            let corner = Vec3::new(
-                pick(1, min.x, max.x),
-                pick(2, min.y, max.y),
-                pick(4, min.z, max.z),
-            );
-            if corner.is_finite() {
-                self.keep_in_view.push(corner);
-            }
-        }
+        let finite = box_corners(min, max).into_iter().filter(|c| c.is_finite());
+        self.keep_in_view.extend(finite);
     }
 
     /// A [`Frame::line`] drawn over everything (the bones of a skeleton inside a body).
@@ -818,6 +809,19 @@ impl Frame {
             .filter(move |(_, _, c)| *c == color)
             .map(|(a, b, _)| (a, b))
     }
+}
+
+/// The eight corners of the box from `min` to `max` (corner `i` takes max's x when bit 0 of `i`
+/// is set, its y for bit 1, its z for bit 2).
+pub fn box_corners(min: Vec3, max: Vec3) -> [Vec3; 8] {
+    std::array::from_fn(|i| {
+        let pick = |bit: usize, lo: f32, hi: f32| if i & bit == 0 { lo } else { hi };
+        Vec3::new(
+            pick(1, min.x, max.x),
+            pick(2, min.y, max.y),
+            pick(4, min.z, max.z),
+        )
+    })
 }
 
 /// The ground grid's opacity at `r`, the distance from its centre over its half-width: opaque

@@ -88,14 +88,7 @@ pub fn inset_camera(inset: &Inset) -> Option<(Mat4, Mat4, Vec3)> {
     let (towards_eye, up) = inset.view.axes();
     let eye = centre + towards_eye * (2.0 * radius + 1.0);
     let view = glam::camera::rh::view::look_at_mat4(eye, centre, up);
-    let corners = (0..8).map(|i| {
-        let pick = |bit: usize, a: f32, b: f32| if i & bit == 0 { a } else { b };
-        view.transform_point3(Vec3::new(
-            pick(1, lo.x, hi.x),
-            pick(2, lo.y, hi.y),
-            pick(4, lo.z, hi.z),
-        ))
-    });
+    let corners = super::box_corners(lo, hi).map(|c| view.transform_point3(c));
     let (mut a, mut b) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
     for c in corners {
         a = a.min(c);
@@ -150,13 +143,7 @@ mod tests {
             };
             let (v, p, _) = inset_camera(&inset).unwrap();
             let mut extent = Vec2::ZERO;
-            for i in 0..8 {
-                let pick = |bit: usize, a: f32, b: f32| if i & bit == 0 { a } else { b };
-                let c = Vec3::new(
-                    pick(1, min.x, max.x),
-                    pick(2, min.y, max.y),
-                    pick(4, min.z, max.z),
-                );
+            for c in crate::draw::box_corners(min, max) {
                 let ndc = (p * v).project_point3(c);
                 assert!(
                     ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0,

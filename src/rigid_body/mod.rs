@@ -143,30 +143,12 @@ impl RigidBody {
         })
     }
 
-    /// The rotation matrix of the orientation, by the formula every engine uses for a unit
-    /// quaternion (`1 − 2(y² + z²)` and so on, as `glam::Mat3::from_quat`), applied to the
+    /// The rotation matrix of the orientation, by the formula for a unit quaternion (lesson 03's
+    /// [`crate::rotation::mat3_from_quat`], as `glam::Mat3::from_quat`), applied to the
     /// quaternion as it is: a quaternion that has drifted from unit length gives a matrix whose
     /// axes are neither unit nor perpendicular, and the drawn body stretches and shears.
     pub fn rotation(&self) -> Mat3 {
-        let q = self.orientation;
-        let (x, y, z, w) = (q.x, q.y, q.z, q.w);
-        Mat3::from_cols(
-            Vec3::new(
-                1.0 - 2.0 * (y * y + z * z),
-                2.0 * (x * y + w * z),
-                2.0 * (x * z - w * y),
-            ),
-            Vec3::new(
-                2.0 * (x * y - w * z),
-                1.0 - 2.0 * (x * x + z * z),
-                2.0 * (y * z + w * x),
-            ),
-            Vec3::new(
-                2.0 * (x * z + w * y),
-                2.0 * (y * z - w * x),
-                1.0 - 2.0 * (x * x + y * y),
-            ),
-        )
+        crate::rotation::mat3_from_quat(self.orientation)
     }
 
     /// The angular velocity in the world's frame.
