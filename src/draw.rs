@@ -443,6 +443,16 @@ impl Frame {
         (4.0 * radius).max(1.5)
     }
 
+    /// The points the viewer fits its camera to: the declared ones ([`Frame::keep_in_view`]) and
+    /// every label's anchor.
+    pub fn fit_points(&self) -> Vec<Vec3> {
+        self.keep_in_view
+            .iter()
+            .copied()
+            .chain(self.labels.iter().map(|l| l.anchor))
+            .collect()
+    }
+
     /// Declares that the box from `min` to `max` must stay in view (see [`Frame::keep_in_view`]):
     /// its eight corners join the points the camera fits.
     pub fn keep_box_in_view(&mut self, min: Vec3, max: Vec3) {

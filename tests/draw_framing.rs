@@ -143,12 +143,7 @@ fn figures_that_declare_their_view_fit_at_both_sizes() {
     }
     for (name, frame, (yaw, pitch)) in frames {
         assert!(!frame.keep_in_view.is_empty(), "{name} declares its view");
-        let points: Vec<Vec3> = frame
-            .keep_in_view
-            .iter()
-            .copied()
-            .chain(frame.labels.iter().map(|l| l.anchor))
-            .collect();
+        let points: Vec<Vec3> = frame.fit_points();
         // The two page sizes, and the canvases the page gives a figure at them (420 px tall,
         // beside or under the 270 px panel).
         let sizes = [

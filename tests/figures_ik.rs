@@ -637,7 +637,7 @@ fn the_hinges_plane_and_the_targets_drop_to_it_are_drawn() {
     let mut frame = Frame::default();
     let note = f.draw(&mut frame).unwrap();
     assert!(!note.contains("grey dashed drop"), "{note}");
-    // Every grey line (hinge ranges, the side d) now lies in the plane: no drop along z.
+    // Every grey line (hinge ranges, the side d) lies in the plane: no drop along z.
     assert!(frame
         .segments_of(palette::GREY)
         .all(|(a, b)| (a.z - b.z).abs() < 1e-6));

@@ -797,12 +797,7 @@ fn frustum_labels_at_the_apex_stay_apart_and_off_the_dots() {
             let mut f = Frame::default();
             scene.draw(&mut f, s).unwrap();
             let mut camera = OrbitCamera::from_view([4.5, 1.2, -4.0, 17.0, 0.45, 0.45]);
-            let fit: Vec<Vec3> = f
-                .keep_in_view
-                .iter()
-                .copied()
-                .chain(f.labels.iter().map(|l| l.anchor))
-                .collect();
+            let fit: Vec<Vec3> = f.fit_points();
             camera.fit(&fit, size, FIT_PAD_PX);
             let view_proj = camera.projection(size.x / size.y) * camera.view();
             let on = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();

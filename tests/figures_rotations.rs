@@ -752,12 +752,7 @@ fn circle_labels_stay_beside_their_anchors_and_off_the_dots() {
             let mut f = Frame::default();
             scene.draw_circle(&mut f, 0.3).unwrap();
             let mut camera = OrbitCamera::from_view([0.0, 1.3, 0.0, 5.0, 0.0, 0.0]);
-            let fit: Vec<Vec3> = f
-                .keep_in_view
-                .iter()
-                .copied()
-                .chain(f.labels.iter().map(|l| l.anchor))
-                .collect();
+            let fit: Vec<Vec3> = f.fit_points();
             camera.fit(&fit, size, FIT_PAD_PX);
             let view_proj = camera.projection(size.x / size.y) * camera.view();
             let on = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();

@@ -336,12 +336,7 @@ fn the_direction_and_its_label_leave_the_box_at_every_stage() {
 fn point_label_box(frame: &Frame, size: glam::Vec2) -> (glam::Mat4, glam::Vec2, glam::Vec2) {
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     let mut camera = OrbitCamera::from_view([0.5, 0.3, 0.0, 5.0, 0.6, 0.45]);
-    let points: Vec<Vec3> = frame
-        .keep_in_view
-        .iter()
-        .copied()
-        .chain(frame.labels.iter().map(|l| l.anchor))
-        .collect();
+    let points: Vec<Vec3> = frame.fit_points();
     assert!(camera.fit(&points, size, FIT_PAD_PX));
     let view_proj = camera.projection(size.x / size.y) * camera.view();
     let label = frame.labels.iter().find(|l| l.text == "p (w = 1)").unwrap();

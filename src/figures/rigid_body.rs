@@ -72,10 +72,15 @@ impl RacketFigure {
         Ok(())
     }
 
-    fn restart(&mut self) {
+    /// The racket at the start of a run: spun about its middle axis, with the wobble.
+    fn first(&self) -> RigidBody {
         let mut body = self.start;
         body.omega_body = Vec3::new(self.wobble, self.spin, self.wobble);
-        self.bodies = [body; 3];
+        body
+    }
+
+    fn restart(&mut self) {
+        self.bodies = [self.first(); 3];
         self.steps_done = 0;
         self.history.clear();
         self.record();
@@ -94,11 +99,7 @@ impl RacketFigure {
             0.0,
             0.0,
         ];
-        let first = {
-            let mut b = self.start;
-            b.omega_body = Vec3::new(self.wobble, self.spin, self.wobble);
-            b
-        };
+        let first = self.first();
         let (e0, l0) = (first.kinetic_energy(), first.angular_momentum().length());
         for (k, b) in self.bodies.iter().enumerate() {
             row[1 + k] = b.kinetic_energy() / e0;
@@ -148,11 +149,7 @@ impl RacketFigure {
             Self::place(0) - Vec3::splat(reach + 0.1),
             Self::place(2) + Vec3::new(reach + 0.1, reach + 0.35, reach + 0.1),
         );
-        let l0 = self.history.first().map_or(1.0, |_| {
-            let mut b = self.start;
-            b.omega_body = Vec3::new(self.wobble, self.spin, self.wobble);
-            b.angular_momentum().length()
-        });
+        let l0 = self.first().angular_momentum().length();
         let mut parts = Vec::new();
         for (k, (body, (_, name))) in self.bodies.iter().zip(INTEGRATORS).enumerate() {
             let at = Self::place(k);

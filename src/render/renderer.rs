@@ -53,6 +53,24 @@ pub(super) fn scene_pipeline_with(
     primitive: wgpu::PrimitiveState,
     depth_write: bool,
 ) -> wgpu::RenderPipeline {
+    let compare = wgpu::CompareFunction::LessEqual;
+    scene_pipeline_depth(device, format, label, layout, module, buffers, primitive, depth_write, compare)
+}
+
+/// [`scene_pipeline_with`], choosing the depth test too (the inset's background passes it
+/// always, to reset the depth inside the inset).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn scene_pipeline_depth(
+    device: &wgpu::Device,
+    format: wgpu::TextureFormat,
+    label: &str,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    buffers: &[Option<wgpu::VertexBufferLayout>],
+    primitive: wgpu::PrimitiveState,
+    depth_write: bool,
+    depth_compare: wgpu::CompareFunction,
+) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),
         layout: Some(layout),
@@ -66,7 +84,7 @@ pub(super) fn scene_pipeline_with(
         depth_stencil: Some(wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
             depth_write_enabled: Some(depth_write),
-            depth_compare: Some(wgpu::CompareFunction::LessEqual),
+            depth_compare: Some(depth_compare),
             stencil: Default::default(),
             bias: Default::default(),
         }),
@@ -432,41 +450,18 @@ impl Renderer {
             None,
             false,
         );
-        // The inset's background writes its colour and the far depth whatever lies there.
-        let inset_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("inset background"),
-            layout: Some(&plain_layout),
-            vertex: wgpu::VertexState {
-                module: &inset_shader,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &[],
-            },
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Always),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: wgpu::MultisampleState {
-                count: SAMPLE_COUNT,
-                ..Default::default()
-            },
-            fragment: Some(wgpu::FragmentState {
-                module: &inset_shader,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format,
-                    blend: None,
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        // The inset's background writes its colour (opaque) and the far depth whatever lies there.
+        let inset_pipeline = scene_pipeline_depth(
+            device,
+            format,
+            "inset background",
+            &plain_layout,
+            &inset_shader,
+            &[],
+            wgpu::PrimitiveState::default(),
+            true,
+            wgpu::CompareFunction::Always,
+        );
         let textured = super::texture::Textured::new(
             device,
             format,

@@ -171,12 +171,7 @@ impl Viewer {
         let frame = &self.renderer.frame;
         self.declares_view = !frame.keep_in_view.is_empty();
         if self.fitting && self.declares_view {
-            let points: Vec<glam::Vec3> = frame
-                .keep_in_view
-                .iter()
-                .copied()
-                .chain(frame.labels.iter().map(|l| l.anchor))
-                .collect();
+            let points: Vec<glam::Vec3> = frame.fit_points();
             self.camera
                 .fit(&points, glam::Vec2::new(w, h), crate::camera::FIT_PAD_PX);
         }
