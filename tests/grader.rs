@@ -69,8 +69,12 @@ mod lessons {
         assert_eq!(ids(" 03-rotations "), ["03-rotations"]);
         // rotations.rs holds lessons 03 and 04: the lesson's own name wins over the file's.
         assert_eq!(ids("rotations"), ["03-rotations"]);
-        assert_eq!(ids("Rigid"), ["04-rigid-motions"]);
+        // A name two lessons start with selects both.
+        assert_eq!(ids("Rigid"), ["04-rigid-motions", "14-rigid-bodies"]);
         assert_eq!(ids("rigid-motions"), ["04-rigid-motions"]);
+        assert_eq!(ids("rigid-bodies"), ["14-rigid-bodies"]);
+        assert_eq!(ids("rigid_body"), ["14-rigid-bodies"]);
+        assert_eq!(ids("14"), ["14-rigid-bodies"]);
         assert_eq!(ids("curves"), ["02-keyframes"]);
         assert_eq!(ids("02"), ["02-keyframes"]);
         assert_eq!(ids("2b"), ["02b-expressive-animation"]);
@@ -85,7 +89,7 @@ mod lessons {
 
     #[test]
     fn an_unknown_lesson_gets_the_list_of_lessons() {
-        for selector in ["14", "walking", "99", "xx", "r"] {
+        for selector in ["15", "walking", "99", "xx", "r"] {
             let Err(message) = select_lessons(selector) else {
                 panic!("{selector:?} selected something");
             };

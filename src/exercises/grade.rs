@@ -113,6 +113,7 @@ pub const LESSONS: &[Lesson] = &[
     lesson("11-particles", "particles", super::particles::grade),
     lesson("12-boids", "boids", super::boids::grade),
     lesson("13-cloth", "cloth", super::cloth::grade),
+    lesson("14-rigid-bodies", "rigid_body", super::rigid_body::grade),
 ];
 
 const fn lesson(

@@ -23,6 +23,7 @@ pub mod ik;
 pub mod noise;
 pub mod particles;
 pub mod raster;
+pub mod rigid_body;
 pub mod rotations;
 pub mod run;
 pub mod skeleton;

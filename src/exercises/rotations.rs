@@ -115,7 +115,7 @@ fn mat3_close(a: &Mat3, b: &Mat3, eps: f32) -> bool {
         .all(|(x, y)| (x - y).abs() <= eps * (1.0 + x.abs().max(y.abs())))
 }
 
-fn unit_quat(rng: &mut super::grade::Rng) -> Quat {
+pub(super) fn unit_quat(rng: &mut super::grade::Rng) -> Quat {
     loop {
         let v = Vec4::new(
             rng.range(-1.0, 1.0),

@@ -234,6 +234,7 @@ use super::blending as bl;
 use super::cloth as cl;
 use super::ik as ik7;
 use super::noise as nz;
+use super::rigid_body as rb;
 use super::skinning as sn;
 use super::{boids as bo, particles as pa};
 use super::{
@@ -355,6 +356,16 @@ exercises! {
     /// Exercise 13.3, [`cl::project_distance`]: returns `(pa', pb')`.
     fn project_distance(pa: Vec3, pb: Vec3, wa: f32, wb: f32, rest: f32, alpha: f32, dt: f32) -> (Vec3, Vec3) =
         cl::project_distance(pa, pb, wa, wb, rest, alpha, dt);
+    /// Exercise 14.1, [`rb::box_inertia`]: the three principal moments.
+    fn box_inertia(mass: f32, half: Vec3) -> Vec3 = rb::box_inertia(mass, half);
+    /// Exercise 14.2, [`rb::orientation_step`].
+    fn orientation_step(q: Quat, omega: Vec3, dt: f32) -> Quat = rb::orientation_step(q, omega, dt);
+    /// Exercise 14.3, [`rb::world_inverse_inertia`].
+    fn world_inverse_inertia(orientation: Quat, inertia: Vec3) -> Mat3 =
+        rb::world_inverse_inertia(orientation, inertia);
+    /// Exercise 14.4, [`rb::normal_impulse`]: the impulse's magnitude.
+    fn normal_impulse(v_rel: Vec3, normal: Vec3, r: Vec3, inv_mass: f32, inv_inertia: Mat3, e: f32) -> f32 =
+        rb::normal_impulse(v_rel, normal, r, inv_mass, inv_inertia, e);
 }
 
 /// The numbers the lessons' quizzes ask for (`lessons/*/quiz.json`, `"answer": {"core": name,

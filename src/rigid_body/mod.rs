@@ -80,6 +80,36 @@ fn skew(v: Vec3) -> Mat3 {
     )
 }
 
+/// The inverse inertia tensor in the world's frame, `R I⁻¹ Rᵀ`, of a body turned by
+/// `orientation` (normalised first) whose principal moments are `inertia`: the body-frame inverse
+/// (a diagonal of reciprocals) seen from the world. It maps a world torque impulse to the change
+/// of world angular velocity it makes.
+pub fn world_inverse_inertia(orientation: Quat, inertia: Vec3) -> Mat3 {
+    let r = Mat3::from_quat(orientation.normalize());
+    r * Mat3::from_diagonal(inertia.recip()) * r.transpose()
+}
+
+/// The magnitude of the impulse along `normal` (unit, pointing out of the immovable surface) that
+/// a body's point at `r` from its centre of mass, moving with `v_rel`, gets on hitting that
+/// surface with restitution `restitution`: `j = −(1 + e) (v_rel · n) / (1/m + n · ((I⁻¹ (r × n)) × r))`
+/// with `inv_inertia` the world inverse inertia. After the impulse `j n` at the point, its normal
+/// speed is `−e` times what it was; 0 when the point already separates (`v_rel · n ≥ 0`).
+pub fn normal_impulse(
+    v_rel: Vec3,
+    normal: Vec3,
+    r: Vec3,
+    inv_mass: f32,
+    inv_inertia: Mat3,
+    restitution: f32,
+) -> f32 {
+    let approach = v_rel.dot(normal);
+    if approach >= 0.0 {
+        return 0.0;
+    }
+    let turning = normal.dot((inv_inertia * r.cross(normal)).cross(r));
+    -(1.0 + restitution) * approach / (inv_mass + turning)
+}
+
 /// One step of Euler's equations for the body-frame angular velocity `omega` of a body with
 /// principal moments `inertia` under no torque (`I ω̇ = −ω × I ω`), explicit or implicit in the
 /// gyroscopic term. `implicit` false is the explicit step.
@@ -158,8 +188,7 @@ impl RigidBody {
 
     /// The inverse inertia tensor in the world's frame, `R I⁻¹ Rᵀ`.
     pub fn world_inverse_inertia(&self) -> Mat3 {
-        let r = Mat3::from_quat(self.orientation.normalize());
-        r * Mat3::from_diagonal(self.inertia.recip()) * r.transpose()
+        world_inverse_inertia(self.orientation, self.inertia)
     }
 
     /// The linear momentum `m v`.
