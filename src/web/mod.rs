@@ -82,10 +82,30 @@ figures_module! {
 
 use wasm_bindgen::prelude::*;
 
+#[wasm_bindgen]
+extern "C" {
+    /// `__inbetweenPanic(message)`: true when the shell took care of the panic (a sandbox call).
+    #[wasm_bindgen(catch, js_name = __inbetweenPanic)]
+    fn report_panic(message: &str) -> Result<JsValue, JsValue>;
+}
+
 /// Runs once when the module loads: panics reach the page (and the console); see [`sandbox`].
 #[wasm_bindgen(start)]
 pub fn start() {
-    sandbox::install_panic_hook();
+    install_panic_hook();
+}
+
+/// Panics go to the page first (which shows the message where it belongs), then to the console
+/// unless the page took care of them.
+pub fn install_panic_hook() {
+    std::panic::set_hook(Box::new(|info| {
+        let handled = report_panic(&info.to_string())
+            .map(|v| v.as_bool() == Some(true))
+            .unwrap_or(false);
+        if !handled {
+            console_error_panic_hook::hook(info);
+        }
+    }));
 }
 
 /// The crate version and whether this build grades with the reference solutions.
