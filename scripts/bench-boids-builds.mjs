@@ -6,7 +6,7 @@
 //   node scripts/bench-boids-builds.mjs [dist ...]      # default: dist (after scripts/build)
 // To compare with an older build: keep a copy of its dist/ (e.g. cp -r dist /tmp/dist-old), rebuild,
 // then pass both folders.
-import { writeFileSync, rmSync } from 'node:fs';
+import { existsSync, writeFileSync, rmSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { launch } from '../tests/e2e/browser.mjs';
 import { startServer } from './serve.mjs';
@@ -18,8 +18,10 @@ const servers = [];
 try {
   const pages = [];
   for (const d of dirs) {
+    // The kernel is the bench module's; a build without one has it in the figures module.
+    const module = existsSync(`${d}/pkg/bench.js`) ? 'bench' : 'inbetween';
     writeFileSync(`${d}/bench-boids.html`, '<!doctype html><body><script type="module">'
-      + "import init, * as w from './pkg/inbetween.js'; await init(); window.w = w;"
+      + `import init, * as w from './pkg/${module}.js'; await init(); window.w = w;`
       + ' document.body.dataset.ready = 1;</script>');
     const server = await startServer(d, 0);
     servers.push(server);

@@ -16,8 +16,8 @@ const cases = args.length ? args : [
   'terrain:fbm8_values:262144:5', 'terrain:terrain_with_normals:262144:5',
   'skinning:lbs:100000:20', 'skinning:dqs:100000:20',
 ];
-const wasm = await import(pathToFileURL(`${dir}/pkg/inbetween.js`).href);
-await wasm.default({ module_or_path: readFileSync(`${dir}/pkg/inbetween_bg.wasm`) });
+const wasm = await import(pathToFileURL(`${dir}/pkg/bench.js`).href);
+await wasm.default({ module_or_path: readFileSync(`${dir}/pkg/bench_bg.wasm`) });
 const kernels = { skinning: wasm.benchSkinning, boids: wasm.benchBoids, terrain: wasm.benchTerrain };
 
 function cpuMs(f) {

@@ -9,7 +9,7 @@
 //   node scripts/bench-three-skinning.mjs [dist] [passes]     # after `scripts/build` (release)
 //
 // THREE_DIR (default /tmp/three-bench/node_modules/three) says where three is; `dist` (default the
-// repository's dist/) holds pkg/inbetween.js and pkg/inbetween_bg.wasm; `passes` (default 20) is
+// repository's dist/) holds pkg/bench.js and pkg/bench_bg.wasm (the bench module); `passes` (default 20) is
 // the wasm kernel's k below. Timing is process CPU time, best of three rounds (the rounds
 // interleave the three kernels, for a machine shared with other jobs, where wall-clock time swings
 // by several times). After warm-up passes, the JavaScript loop times `passes` passes per round and
@@ -42,13 +42,13 @@ if (!existsSync(`${threeDir}/build/three.module.js`)) {
 (or set THREE_DIR to a three.js package directory).`);
   process.exit(2);
 }
-if (!existsSync(`${dist}/pkg/inbetween_bg.wasm`)) {
-  console.error(`bench-three-skinning: no ${dist}/pkg/inbetween_bg.wasm: run scripts/build (release) first.`);
+if (!existsSync(`${dist}/pkg/bench_bg.wasm`)) {
+  console.error(`bench-three-skinning: no ${dist}/pkg/bench_bg.wasm: run scripts/build (release) first.`);
   process.exit(2);
 }
 const THREE = await import(pathToFileURL(`${threeDir}/build/three.module.js`).href);
-const wasm = await import(pathToFileURL(`${dist}/pkg/inbetween.js`).href);
-const wasmBytes = readFileSync(`${dist}/pkg/inbetween_bg.wasm`);
+const wasm = await import(pathToFileURL(`${dist}/pkg/bench.js`).href);
+const wasmBytes = readFileSync(`${dist}/pkg/bench_bg.wasm`);
 await wasm.default({ module_or_path: wasmBytes });
 // scripts/build --dev skips wasm-opt, which is what drops the name section: a debug module times
 // nothing worth reporting.

@@ -119,11 +119,13 @@ async function workerMain() {
 
   function moduleWorks() {
     try {
+      if (typeof wasm.buildInfo() !== 'string') return false;
       // The course module has no figures: its health check is a grader list and a quiz core.
-      if (!wasm.LagrangeScene) {
+      if (wasm.gradedLessons) {
         return wasm.gradedLessons().length > 0 && Math.abs(wasm.quizAnswer('fade', new Float32Array([0.5])) - 0.5) < 1e-6;
       }
-      if (typeof wasm.buildInfo() !== 'string') return false;
+      // Nor has the bench module: its health check is a small kernel run (0 ms in Node, no clock).
+      if (wasm.benchHierarchy) return Number.isFinite(wasm.benchHierarchy('world_matrices', 4, 1));
       const s = new wasm.LagrangeScene();
       const keys = s.keys();
       s.free();
@@ -337,9 +339,9 @@ function basesFor(types, arity) {
 
 async function main() {
   const dist = process.argv[2] || 'dist';
-  // Both modules of the build (scripts/build): the figures module and the course module.
+  // The three modules of the build (scripts/build): the figures, course and bench modules.
   let bad = 0;
-  for (const name of ['inbetween', 'course']) bad += await probeModule(dist, name);
+  for (const name of ['inbetween', 'course', 'bench']) bad += await probeModule(dist, name);
   process.exit(bad ? 1 : 0);
 }
 

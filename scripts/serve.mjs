@@ -190,7 +190,8 @@ function runBuild(args) {
 /**
  * What a change to `file` (a path under src/) needs rebuilt: "exercises" when it is a student's
  * exercise or the grader (src/exercises/, except run.rs and mod.rs, which the figures module uses
- * too): the course module alone, since student code runs only there; "rust" otherwise: both modules.
+ * too): the course module alone, since student code runs only there; "rust" otherwise: all three
+ * modules.
  */
 export function sourceChangeKind(file) {
   const path = String(file ?? '').split(/[\\/]/).join('/');

@@ -1,6 +1,6 @@
 // Makes the JavaScript glue that wasm-bindgen writes refuse arguments of the wrong JavaScript type.
 //
-//   node scripts/strict-glue.mjs dist/pkg/inbetween.js     (scripts/build runs it on both modules)
+//   node scripts/strict-glue.mjs dist/pkg/inbetween.js     (scripts/build runs it on every module)
 //
 // wasm-bindgen hands an `f32` or `f64` argument to WebAssembly as it comes, so JavaScript's own
 // conversion applies: "5" becomes 5, true 1, null 0, and a string such as "12" passed for a

@@ -28,10 +28,13 @@
 //! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
 //! [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
 //! instance, so a panic there cannot stop the page), `render/` (wgpu, wasm only).
-//! The crate builds two wasm modules (`scripts/build`): the *figures module* (every binding but
-//! the grader's, and the renderer) and, with the feature `course-module`, the *course module*
-//! (the cores, the exercises, `web::sandbox`'s `runExercise` and `web::course`: the page's
-//! grader and the quizzes' answers; no renderer). Student code runs only in the course module.
+//! The crate builds three wasm modules (`scripts/build`): the *figures module* (every binding but
+//! the grader's and the CPU bench kernels', and the renderer); with the feature `course-module`,
+//! the *course module* (the cores, the exercises, `web::sandbox`'s `runExercise` and
+//! `web::course`: the page's grader and the quizzes' answers; no renderer); and with the feature
+//! `bench-module`, the *bench module* (the bench page's CPU kernels, `web::bench*` but
+//! `web::bench_gpu`, and the cores they time; no renderer). Student code runs only in the course
+//! module.
 //! GPU paths (lessons 09, 11, 12): skinning in the vertex shader (`render/skin.rs`, both
 //! backends) and compute shaders for particles and boids (`render/compute.rs`, WebGPU only), with
 //! their logic (packing, caps, the statistics compared with the CPU) in [`figures::gpu`].
@@ -73,7 +76,10 @@ pub mod terrain;
 pub mod texture;
 pub mod transform;
 
-#[cfg(all(target_arch = "wasm32", not(feature = "course-module")))]
+#[cfg(all(
+    target_arch = "wasm32",
+    not(any(feature = "course-module", feature = "bench-module"))
+))]
 pub mod render;
 #[cfg(target_arch = "wasm32")]
 pub mod web;

@@ -91,7 +91,7 @@ pub fn bench_rigid_points(kernel: JsValue, size: f64, iterations: f64) -> Result
             "sandwich" => m.transform_points_sandwich(&points, &mut out),
             other => return Err(JsError::new(&format!("unknown kernel '{other}'"))),
         };
-        result.map_err(super::rotations::js_error)?;
+        result.map_err(|e| JsError::new(&e.to_string()))?;
         std::hint::black_box(&out);
     }
     Ok(now_ms() - start)

@@ -14,31 +14,55 @@
 //! check in every method of generated code; neither the pages nor the shell make such a call, and
 //! a receiver that is no binding object at all (pointer 0) is already an error.
 
-// The course module uses a few of the argument checks below, not all.
-#![cfg_attr(feature = "course-module", allow(dead_code))]
+// The course and bench modules use a few of the argument checks below, not all.
+#![cfg_attr(
+    any(feature = "course-module", feature = "bench-module"),
+    allow(dead_code)
+)]
 
-pub mod sandbox;
-// The course module (feature `course-module`) holds the grader and quiz bindings and none of the
-// figures; the figures module holds everything else (see `course`).
+// One crate, three modules (see the crate's doc and `scripts/build`): the figures module (no
+// feature), the course module (feature `course-module`: the grader and quiz bindings, see
+// `course`) and the bench module (feature `bench-module`: the bench page's CPU kernels). Each
+// holds `start` and `buildInfo` below; the figures and course modules hold the sandbox's
+// `runExercise`.
+#[cfg(all(feature = "course-module", feature = "bench-module"))]
+compile_error!(
+    "the features `course-module` and `bench-module` each build a module of their own: enable one"
+);
+
 #[cfg(feature = "course-module")]
 mod course;
+#[cfg(not(feature = "bench-module"))]
+pub mod sandbox;
 
-/// Items of the figures module only: the figures' and benchmarks' bindings, which use the renderer.
+/// Items of the figures module only: the figures' bindings, the GPU benchmarks' and the renderer's
+/// users.
 macro_rules! figures_module {
-    ($($item:item)*) => { $( #[cfg(not(feature = "course-module"))] $item )* };
+    ($($item:item)*) => {
+        $( #[cfg(not(any(feature = "course-module", feature = "bench-module")))] $item )*
+    };
 }
 
-figures_module! {
+/// Items of the bench module only: the bench page's CPU kernels (`www/bench.js`), each timed
+/// inside wasm. The GPU kernels (`bench_gpu`) need the renderer and stay in the figures module.
+macro_rules! bench_module {
+    ($($item:item)*) => { $( #[cfg(feature = "bench-module")] $item )* };
+}
+
+bench_module! {
     mod bench;
     mod bench_boids;
     mod bench_cloth;
     mod bench_curves;
-    mod bench_gpu;
     mod bench_noise;
     mod bench_rigid_body;
     mod bench_rotation;
     mod bench_skeleton;
     mod bench_skinning;
+}
+
+figures_module! {
+    mod bench_gpu;
     mod blend_shapes;
     mod blending;
     mod boids;
@@ -82,10 +106,30 @@ figures_module! {
 
 use wasm_bindgen::prelude::*;
 
+#[wasm_bindgen]
+extern "C" {
+    /// `__inbetweenPanic(message)`: true when the shell took care of the panic (a sandbox call).
+    #[wasm_bindgen(catch, js_name = __inbetweenPanic)]
+    fn report_panic(message: &str) -> Result<JsValue, JsValue>;
+}
+
 /// Runs once when the module loads: panics reach the page (and the console); see [`sandbox`].
 #[wasm_bindgen(start)]
 pub fn start() {
-    sandbox::install_panic_hook();
+    install_panic_hook();
+}
+
+/// Panics go to the page first (which shows the message where it belongs), then to the console
+/// unless the page took care of them.
+pub fn install_panic_hook() {
+    std::panic::set_hook(Box::new(|info| {
+        let handled = report_panic(&info.to_string())
+            .map(|v| v.as_bool() == Some(true))
+            .unwrap_or(false);
+        if !handled {
+            console_error_panic_hook::hook(info);
+        }
+    }));
 }
 
 /// The crate version and whether this build grades with the reference solutions.

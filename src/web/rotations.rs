@@ -3,13 +3,8 @@
 
 use super::{js, Viewer};
 use crate::figures::rotations::{Gimbal, Interpolation, Rodrigues};
-use crate::rotation::RotationError;
 use glam::{Mat3, Quat, Vec3};
 use wasm_bindgen::prelude::*;
-
-pub(crate) fn js_error(e: RotationError) -> JsError {
-    JsError::new(&e.to_string())
-}
 
 pub(crate) fn mat3_cols(values: &[f32]) -> Result<Mat3, JsError> {
     if values.len() != 9 {

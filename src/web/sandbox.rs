@@ -4,7 +4,7 @@
 //! course module (`scripts/build` builds both; see `web::course`), the *sandbox*, and
 //! publishes `globalThis.__inbetweenSandbox = { call(name, args) }`. A figure's [`run`] hands
 //! the flattened arguments to that object, which calls [`run_exercise`] in the sandbox. A panic
-//! there traps only the sandbox: the shell records the message (from [`install_panic_hook`]),
+//! there traps only the sandbox: the shell records the message (from [`super::install_panic_hook`]),
 //! answers this call and later calls of the same exercise with a `panic` error, and starts a fresh
 //! sandbox for the other exercises. Without a sandbox (browser unit tests, the bench page) the
 //! exercise runs in this instance.
@@ -17,10 +17,6 @@ extern "C" {
     /// `__inbetweenSandbox.call(name, args)`: a Float32Array, or throws `{ kind, message }`.
     #[wasm_bindgen(catch, js_namespace = __inbetweenSandbox, js_name = call)]
     fn sandbox_call(name: &str, args: &[f32]) -> Result<js_sys::Float32Array, JsValue>;
-
-    /// `__inbetweenPanic(message)`: true when the shell took care of the panic (a sandbox call).
-    #[wasm_bindgen(catch, js_name = __inbetweenPanic)]
-    fn report_panic(message: &str) -> Result<JsValue, JsValue>;
 }
 
 fn sandbox_present() -> bool {
@@ -72,17 +68,4 @@ pub fn run_exercise(name: JsValue, args: &[f32]) -> Result<Vec<f32>, JsError> {
 #[wasm_bindgen(js_name = exerciseNames)]
 pub fn exercise_names() -> Vec<String> {
     run::NAMES.iter().map(|s| s.to_string()).collect()
-}
-
-/// Panics go to the page first (which shows the message where it belongs), then to the console
-/// unless the page took care of them.
-pub fn install_panic_hook() {
-    std::panic::set_hook(Box::new(|info| {
-        let handled = report_panic(&info.to_string())
-            .map(|v| v.as_bool() == Some(true))
-            .unwrap_or(false);
-        if !handled {
-            console_error_panic_hook::hook(info);
-        }
-    }));
 }

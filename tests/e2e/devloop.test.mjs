@@ -94,7 +94,7 @@ test('compilerErrors keeps the errors with file:line and drops warnings and prog
   assert.equal(compilerErrors('copying\nError: lessons/x/meta.json lacks "title"\n'), 'copying\nError: lessons/x/meta.json lacks "title"');
 });
 
-test('a change to an exercise rebuilds the course module alone; run.rs, mod.rs and the rest rebuild both', () => {
+test('a change to an exercise rebuilds the course module alone; run.rs, mod.rs and the rest rebuild every module', () => {
   for (const f of ['exercises/curves.rs', 'exercises/grade.rs', 'exercises\\noise.rs']) assert.equal(sourceChangeKind(f), 'exercises', f);
   for (const f of ['exercises/run.rs', 'exercises/mod.rs', 'lib.rs', 'figures/curves.rs', 'web/sandbox.rs', 'exercises', null]) {
     assert.equal(sourceChangeKind(f), 'rust', String(f));
