@@ -1,9 +1,12 @@
-//! The tennis-racket figure of the coming rigid-body lesson.
+//! The figures of lesson 14, rigid bodies: the tennis racket, the throw, the impulse at a contact,
+//! the stack and the dominoes, the quaternion drift.
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec3;
 use inbetween::draw::{palette, Frame, MeshId};
-use inbetween::figures::rigid_body::{RacketFigure, INTEGRATORS};
+use inbetween::figures::rigid_body::{
+    RacketFigure, ThrowFigure, INTEGRATORS, THROW_START, THROW_VELOCITY,
+};
 
 #[test]
 fn the_figure_draws_three_rackets_with_their_momentum_and_names() {
@@ -78,4 +81,175 @@ fn the_run_starts_again_when_time_goes_back_or_the_spin_changes() {
     // Without a wobble the spin about the middle axis stays (an unstable balance, held exactly).
     f.advance_to(5.0).unwrap();
     assert!((f.bodies()[0].orientation * Vec3::Y).dot(Vec3::Y) > 0.999);
+}
+
+// ---- Figure 1: a box thrown with spin ----
+
+/// The throw at `spin` and `tilt`, flown to the end, checked at every step.
+fn fly(spin: f32, tilt: f32, mut check: impl FnMut(&ThrowFigure)) -> ThrowFigure {
+    let mut f = ThrowFigure::new();
+    f.set_throw(spin, tilt).unwrap();
+    let steps = (f.duration_sec() * 60.0).floor() as usize;
+    for k in 0..=steps {
+        f.advance_to(k as f32 / 60.0).unwrap();
+        check(&f);
+    }
+    assert_eq!(f.samples().len(), steps + 1, "one sample per step");
+    f
+}
+
+#[test]
+fn the_thrown_box_keeps_its_angular_momentum_to_float_precision() {
+    for spin in [5.0, 15.0] {
+        for tilt in [0.0, 20.0, 45.0, 80.0] {
+            let mut l0 = None;
+            let f = fly(spin, tilt, |f| {
+                let l = f.body().angular_momentum();
+                let l0 = *l0.get_or_insert(l);
+                // Direction and size: L is one fixed vector in the world.
+                assert!(
+                    (l - l0).length() < 2e-6 * l0.length(),
+                    "spin {spin}, tilt {tilt}: L went from {l0} to {l}"
+                );
+            });
+            let l = f.samples().iter().map(|r| r[2]);
+            let (lo, hi) = (l.clone().fold(f32::MAX, f32::min), l.fold(0.0, f32::max));
+            assert!(hi - lo <= 2e-6 * hi, "|L| from {lo} to {hi}");
+        }
+    }
+}
+
+#[test]
+fn omega_wobbles_around_l_unless_the_box_spins_about_a_principal_axis() {
+    let most_turn = |tilt: f32| {
+        let f = fly(10.0, tilt, |_| {});
+        let w0 = f.omegas()[0];
+        f.omegas()
+            .iter()
+            .map(|w| w.angle_between(w0).to_degrees())
+            .fold(0.0, f32::max)
+    };
+    // About the shortest axis (a principal axis) ω stays along L.
+    assert!(most_turn(0.0) < 0.1, "{}", most_turn(0.0));
+    for (tilt, at_least) in [(10.0, 10.0), (20.0, 25.0), (40.0, 45.0)] {
+        let turned = most_turn(tilt);
+        assert!(turned > at_least, "tilt {tilt}: ω turned {turned}°");
+    }
+    // The angle between ω and L comes and goes, and at tilt 0 it is 0.
+    let f = fly(10.0, 20.0, |_| {});
+    let angles: Vec<f32> = f.samples().iter().map(|r| r[3]).collect();
+    let (lo, hi) = (
+        angles.iter().copied().fold(f32::MAX, f32::min),
+        angles.iter().copied().fold(0.0, f32::max),
+    );
+    assert!(lo < 5.0 && hi > 12.0, "ω–L angle from {lo}° to {hi}°");
+    assert!(fly(10.0, 0.0, |_| {}).samples().iter().all(|r| r[3] < 0.05));
+}
+
+#[test]
+fn omegas_tip_stays_on_the_plane_across_l_and_the_energy_holds_to_3_percent() {
+    // Torque-free motion keeps E = ½ ω · L, so ω · L̂ = 2E / |L| is constant: ω's tip moves on
+    // a plane across L (the invariable plane). The first-order step keeps it to a few per cent.
+    for tilt in [20.0, 60.0] {
+        let f = fly(15.0, tilt, |_| {});
+        let e0 = f.samples()[0][4];
+        let l = f.body().angular_momentum().normalize();
+        let along0 = f.omegas()[0].dot(l);
+        for (row, w) in f.samples().iter().zip(f.omegas()) {
+            assert!((row[4] / e0 - 1.0).abs() < 0.03, "tilt {tilt}: {row:?}");
+            assert!((w.dot(l) / along0 - 1.0).abs() < 0.03, "tilt {tilt}: {w}");
+        }
+    }
+}
+
+#[test]
+fn the_centre_of_mass_flies_the_parabola_and_lands_at_its_start_height() {
+    let f = fly(12.0, 30.0, |f| {
+        let t = f.samples().last().unwrap()[0];
+        let at = f.body().position;
+        assert!(
+            (at - ThrowFigure::parabola(t)).length() < 5e-4,
+            "at t = {t}: {at}, parabola {}",
+            ThrowFigure::parabola(t)
+        );
+    });
+    // The parabola's closed form: x₀ + v₀ t + ½ g t², back at the start height at 2 v₀ᵧ / g.
+    let t = f.duration_sec();
+    assert!((t - 2.0 * THROW_VELOCITY.y / 9.81).abs() < 1e-6);
+    assert!((ThrowFigure::parabola(t).y - THROW_START.y).abs() < 1e-4);
+    let apex = ThrowFigure::parabola(0.5 * t);
+    assert!((apex.y - THROW_START.y - THROW_VELOCITY.y.powi(2) / (2.0 * 9.81)).abs() < 1e-4);
+    // Past the flight the box holds where it ended.
+    let mut g = f.clone();
+    g.advance_to(30.0).unwrap();
+    assert_eq!(g.body(), f.body());
+}
+
+#[test]
+fn the_throw_refuses_bad_settings_and_replays_the_same_run() {
+    let mut f = ThrowFigure::new();
+    f.advance_to(1.0).unwrap();
+    let at_one = *f.body();
+    for (spin, tilt, name) in [
+        (-1.0, 20.0, "spin"),
+        (15.5, 20.0, "spin"),
+        (f32::NAN, 20.0, "spin"),
+        (10.0, 81.0, "tilt"),
+        (10.0, -0.5, "tilt"),
+        (10.0, f32::INFINITY, "tilt"),
+    ] {
+        let err = f.set_throw(spin, tilt).unwrap_err();
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(f.advance_to(-0.1).is_err() && f.advance_to(f32::NAN).is_err());
+    assert!(f.advance_to(61.0).is_err());
+    assert_eq!(*f.body(), at_one, "a rejected call changes nothing");
+    f.advance_to(0.5).unwrap();
+    f.advance_to(1.0).unwrap();
+    assert_eq!(*f.body(), at_one, "the replay is the same run");
+    f.set_throw(10.0, 20.0).unwrap();
+    assert_eq!(f.samples().len(), 1, "a new setting starts again");
+}
+
+#[test]
+fn the_throw_draws_the_box_l_omega_and_the_trail_and_says_l_stays_fixed() {
+    let mut f = ThrowFigure::new();
+    f.advance_to(0.8).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert_eq!(
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CUBE)
+            .count(),
+        1
+    );
+    // Two arrows (their heads are cones), labelled.
+    assert_eq!(
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CONE)
+            .count(),
+        2
+    );
+    for name in ["L", "ω"] {
+        assert!(frame.labels.iter().any(|l| l.text == name), "{name}");
+    }
+    assert!(frame.segments_of(palette::PURPLE).count() >= 1);
+    // The trail: one segment per step flown.
+    assert!(frame.strokes.len() >= 48, "{}", frame.strokes.len());
+    assert!(!frame.keep_in_view.is_empty());
+    assert!(
+        note.contains("L stays fixed") && note.contains("|L| = "),
+        "{note}"
+    );
+    // No spin: no arrows, and the note says why.
+    f.set_throw(0.0, 30.0).unwrap();
+    f.advance_to(0.5).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert!(note.contains("No spin"), "{note}");
+    assert!(frame.labels.is_empty());
 }
