@@ -5,7 +5,7 @@
 use glam::Vec3;
 use inbetween::draw::{palette, Frame, MeshId};
 use inbetween::figures::rigid_body::{
-    RacketFigure, ThrowFigure, INTEGRATORS, THROW_START, THROW_VELOCITY,
+    ImpulseFigure, RacketFigure, ThrowFigure, INTEGRATORS, THROW_START, THROW_VELOCITY,
 };
 
 #[test]
@@ -252,4 +252,171 @@ fn the_throw_draws_the_box_l_omega_and_the_trail_and_says_l_stays_fixed() {
     let note = f.draw(&mut frame);
     assert!(note.contains("No spin"), "{note}");
     assert!(frame.labels.is_empty());
+}
+
+// ---- Figure 3: an impulse at a contact ----
+
+fn dropped(tilt: f32, e: f32, height: f32) -> ImpulseFigure {
+    let mut f = ImpulseFigure::new();
+    f.set_drop(tilt, e, height).unwrap();
+    f.advance_to(f.duration_sec()).unwrap();
+    f
+}
+
+#[test]
+fn the_impulse_turns_the_contact_points_normal_velocity_into_minus_e_times_itself() {
+    for tilt in [0.0, 10.0, 30.0, 45.0] {
+        for e in [0.0, 0.3, 0.5, 1.0] {
+            let f = dropped(tilt, e, 1.0);
+            let hit = *f.impact_details().expect("the box lands");
+            assert!(hit.normal_before < -4.0, "{hit:?}");
+            assert!(
+                (hit.normal_after + e * hit.normal_before).abs() < 1e-4 * -hit.normal_before,
+                "tilt {tilt}, e {e}: {} → {}",
+                hit.normal_before,
+                hit.normal_after
+            );
+            assert_eq!(f.impact(), Some((hit.time_sec, hit.j)));
+            // Energy: kept at e = 1, lost below.
+            if e == 1.0 {
+                assert!(
+                    (hit.energy_after - hit.energy_before).abs() < 1e-5 * hit.energy_before,
+                    "{hit:?}"
+                );
+            } else {
+                assert!(hit.energy_after < hit.energy_before, "{hit:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_box_meets_the_ground_after_the_free_fall_time_at_the_free_fall_speed() {
+    for h in [0.2, 1.0, 2.0] {
+        let hit = *dropped(20.0, 0.5, h).impact_details().unwrap();
+        let (t, v): (f32, f32) = ((2.0 * h / 9.81).sqrt(), (2.0 * 9.81 * h).sqrt());
+        assert!(
+            (hit.time_sec - t).abs() < 1e-3,
+            "h {h}: {} s, √(2h/g) = {t}",
+            hit.time_sec
+        );
+        assert!(
+            (hit.normal_before + v).abs() < 5e-3 * v,
+            "h {h}: {}",
+            hit.normal_before
+        );
+        // The contact point is on the ground, and it is the lowest corner.
+        assert!(hit.point.y.abs() < 1e-4, "{}", hit.point);
+    }
+}
+
+#[test]
+fn a_level_drop_gets_no_spin_and_a_tilted_one_does_by_the_inverse_inertia_of_r_cross_j() {
+    for e in [0.0, 0.5, 1.0] {
+        // Level: four corners land together, the impulse acts under the centre of mass, and the
+        // box bounces as a particle would, j = (1 + e) m |v|.
+        let hit = *dropped(0.0, e, 1.0).impact_details().unwrap();
+        assert!(hit.omega_after.length() < 1e-4, "{}", hit.omega_after);
+        let v = -hit.velocity_before.y;
+        assert!(
+            (hit.j - (1.0 + e) * v).abs() < 1e-4 * v,
+            "{} vs {}",
+            hit.j,
+            (1.0 + e) * v
+        );
+        assert!((hit.point - (hit.centre - 0.1 * Vec3::Y)).length() < 1e-4);
+    }
+    for tilt in [1.0, 10.0, 45.0] {
+        let f = dropped(tilt, 0.5, 1.0);
+        let hit = *f.impact_details().unwrap();
+        assert!(
+            hit.omega_after.length() > 1.0,
+            "tilt {tilt}: {}",
+            hit.omega_after
+        );
+        // Δω = I⁻¹ (r × j n), Δv = j n / m, from rest.
+        let mut then = *f.body();
+        then.orientation = hit.orientation;
+        let r = hit.point - hit.centre;
+        let expected = then.world_inverse_inertia() * r.cross(hit.j * Vec3::Y);
+        assert!((hit.omega_after - expected).length() < 1e-4 * expected.length());
+        let dv = hit.velocity_after - hit.velocity_before;
+        assert!((dv - hit.j * Vec3::Y).length() < 1e-5);
+    }
+}
+
+#[test]
+fn the_frictionless_box_never_moves_sideways_and_comes_to_rest_on_a_face() {
+    for (tilt, e) in [(20.0, 0.5), (45.0, 0.0), (5.0, 0.3)] {
+        let mut f = ImpulseFigure::new();
+        f.set_drop(tilt, e, 1.0).unwrap();
+        for k in 0..=120 {
+            f.advance_to(k as f32 / 60.0).unwrap();
+            let p = f.body().position;
+            assert!(
+                p.x.abs() < 1e-5 && p.z.abs() < 1e-5,
+                "t = {}: {p}",
+                k as f32 / 60.0
+            );
+        }
+        assert!(f.stopped().is_none());
+        let last = *f.samples().last().unwrap();
+        assert!((last[1] - 0.1).abs() < 2e-3 && last[3] < 1e-2, "{last:?}");
+        assert_eq!(f.samples().len(), 121);
+    }
+}
+
+#[test]
+fn the_drop_refuses_bad_settings_and_replays_the_same_run() {
+    let mut f = ImpulseFigure::new();
+    f.advance_to(1.0).unwrap();
+    let at_one = *f.body();
+    for (tilt, e, h, name) in [
+        (-1.0, 0.5, 1.0, "tilt"),
+        (46.0, 0.5, 1.0, "tilt"),
+        (10.0, 1.1, 1.0, "restitution"),
+        (10.0, f32::NAN, 1.0, "restitution"),
+        (10.0, 0.5, 0.1, "height"),
+        (10.0, 0.5, 2.5, "height"),
+    ] {
+        let err = f.set_drop(tilt, e, h).unwrap_err();
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(f.advance_to(-1.0).is_err() && f.advance_to(61.0).is_err());
+    assert_eq!(*f.body(), at_one, "a rejected call changes nothing");
+    f.advance_to(0.2).unwrap();
+    assert!(f.impact().is_none(), "scrubbing back forgets the impact");
+    f.advance_to(1.0).unwrap();
+    assert_eq!(*f.body(), at_one, "the replay is the same run");
+}
+
+#[test]
+fn the_drop_draws_the_impulse_and_the_velocities_before_and_after() {
+    let mut f = ImpulseFigure::new();
+    f.advance_to(0.2).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert!(note.starts_with("Falling"), "{note}");
+    assert!(!frame.markers.is_empty(), "the lowest corner is marked");
+    f.advance_to(0.6).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    for name in ["j n", "v before", "v after", "ω after", "contact"] {
+        assert!(frame.labels.iter().any(|l| l.text == name), "{name}");
+    }
+    // Dropped without spin: no ω before to draw.
+    assert!(!frame.labels.iter().any(|l| l.text == "ω before"));
+    let hit = *f.impact_details().unwrap();
+    assert!(
+        frame
+            .markers
+            .iter()
+            .any(|m| Vec3::from(m.center) == hit.point),
+        "the contact point is a dot"
+    );
+    assert!(frame.segments_of(palette::RED).count() >= 1, "the impulse");
+    assert!(
+        note.contains("−e times it") && note.contains("j = "),
+        "{note}"
+    );
 }

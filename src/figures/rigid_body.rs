@@ -5,9 +5,9 @@
 use super::particles::{steps_to, SIM_DT};
 use super::{format_number, in_range, palette, Frame};
 use crate::draw::{MeshId, StrokeStyle, ARROW_PX, DOT_PX};
-use crate::rigid_body::contact::corners;
+use crate::rigid_body::contact::{corners, BroadPhase, Shape, World};
 use crate::rigid_body::inertia::solid_box;
-use crate::rigid_body::{AngularStep, OrientationStep, RigidBody};
+use crate::rigid_body::{normal_impulse, AngularStep, OrientationStep, RigidBody};
 use glam::{Mat4, Quat, Vec3};
 
 /// The racket's half-extents (m): long along x, middle along y, thin along z, so its moments
@@ -438,4 +438,428 @@ fn angle_deg(a: Vec3, b: Vec3) -> f32 {
         return 0.0;
     }
     (a.dot(b) / d).clamp(-1.0, 1.0).acos().to_degrees()
+}
+
+/// The dropped box's half-extents (m), 1 kg: it lies on its largest face (x–z) when level.
+pub const DROP_HALF: Vec3 = Vec3::new(0.3, 0.1, 0.2);
+/// The dropped box's turn about the vertical before it is tilted (degrees): with it, a tilt about
+/// the world z axis lowers one corner below all the others.
+pub const DROP_YAW_DEG: f32 = 25.0;
+/// The impulse figure's timeline (s).
+pub const DROP_DURATION_SEC: f32 = 2.0;
+/// Corners within this height of the lowest one touch together (m): the impulse acts at their
+/// mean (a level box lands on the middle of its face).
+pub const TIE_M: f32 = 1e-4;
+/// Drawn lengths: metres per m/s (v, and the impulse as the velocity change `j / m` it gives)
+/// and per rad/s (ω).
+pub const VELOCITY_SCALE: f32 = 0.1;
+pub const OMEGA_SCALE: f32 = 0.05;
+/// Halvings of a step in the search for the moment of contact.
+const BISECTIONS: usize = 16;
+/// Substeps of the contact solver per [`SIM_DT`] after the first impact.
+pub const AFTER_SUBSTEPS: usize = 10;
+
+/// The first impact of the dropped box: what the page reports.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Impact {
+    /// When (s, between two steps: the moment of contact found by bisection).
+    pub time_sec: f32,
+    /// The contact point (world) and the centre of mass then.
+    pub point: Vec3,
+    pub centre: Vec3,
+    /// The impulse's size (N s); it acts along the ground's normal +y.
+    pub j: f32,
+    pub velocity_before: Vec3,
+    pub velocity_after: Vec3,
+    /// Angular velocity in the world (rad/s).
+    pub omega_before: Vec3,
+    pub omega_after: Vec3,
+    /// The contact point's velocity along the normal (m/s): negative approaching.
+    pub normal_before: f32,
+    pub normal_after: f32,
+    /// Kinetic energy (J).
+    pub energy_before: f32,
+    pub energy_after: f32,
+    /// The box's attitude then.
+    pub orientation: Quat,
+}
+
+/// Figure 3: a box dropped tilted, so that one corner meets the ground first, and the one impulse
+/// that resolves the impact ([`crate::rigid_body::normal_impulse`], frictionless: it acts along
+/// the ground's normal only). The box falls without spin; at the moment of contact (found by
+/// bisection within the step, so the box never sinks into the ground) the corner gets `j n`,
+/// which sets the corner's normal velocity to `−e` times what it was, and gives the box the spin
+/// `I⁻¹ (r × j n)`; [`ImpulseFigure::impact`] reports it. Then the box flies on under the
+/// contact solver of [`crate::rigid_body::contact`] (frictionless, the same `e`,
+/// [`AFTER_SUBSTEPS`] substeps a step) until the timeline's end ([`DROP_DURATION_SEC`]): one
+/// impulse at a time cannot bring a box to rest on several corners (it rattles between them),
+/// the sequential impulses of the stack figure can. No force ever pushes the box sideways, so
+/// its centre of mass moves only up and down.
+#[derive(Clone, Debug)]
+pub struct ImpulseFigure {
+    tilt_deg: f32,
+    restitution: f32,
+    height_m: f32,
+    body: RigidBody,
+    steps_done: usize,
+    first_impact: Option<Impact>,
+    /// The contact solver that takes the box over after the first impact.
+    after: Option<World>,
+    /// When the contact solver's step failed (the figure stops there).
+    stopped: Option<f32>,
+    /// Per step: `[t, centre height, lowest point's normal velocity, kinetic energy]`.
+    history: Vec<[f32; 4]>,
+}
+
+impl Default for ImpulseFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl ImpulseFigure {
+    /// Tilted 20°, restitution 0.5, dropped from 1 m.
+    pub fn new() -> Self {
+        let mut f = Self {
+            tilt_deg: 20.0,
+            restitution: 0.5,
+            height_m: 1.0,
+            body: RigidBody::new(1.0, box_moments(DROP_HALF)).expect("a box's moments"),
+            steps_done: 0,
+            first_impact: None,
+            after: None,
+            stopped: None,
+            history: Vec::new(),
+        };
+        f.restart();
+        f
+    }
+
+    /// The tilt about the world z axis (degrees, 0 to 45), the coefficient of restitution (0 to
+    /// 1) and the height of the lowest corner at release (m, 0.2 to 2); the drop starts again.
+    pub fn set_drop(
+        &mut self,
+        tilt_deg: f32,
+        restitution: f32,
+        height_m: f32,
+    ) -> Result<(), String> {
+        let tilt_deg = in_range("tilt", tilt_deg, 0.0, 45.0)?;
+        let restitution = in_range("restitution", restitution, 0.0, 1.0)?;
+        let height_m = in_range("height", height_m, 0.2, 2.0)?;
+        self.tilt_deg = tilt_deg;
+        self.restitution = restitution;
+        self.height_m = height_m;
+        self.restart();
+        Ok(())
+    }
+
+    /// The timeline's length (s).
+    pub fn duration_sec(&self) -> f32 {
+        DROP_DURATION_SEC
+    }
+
+    /// The box at release: turned by [`DROP_YAW_DEG`] about the vertical, then tilted about z,
+    /// its lowest corner `height_m` above the ground, at rest.
+    pub fn first(&self) -> RigidBody {
+        let mut body = RigidBody::new(1.0, box_moments(DROP_HALF)).expect("a box's moments");
+        body.orientation = Quat::from_rotation_z(-self.tilt_deg.to_radians())
+            * Quat::from_rotation_y(DROP_YAW_DEG.to_radians());
+        let (_, low) = touching(&body);
+        body.position.y = self.height_m - low;
+        body
+    }
+
+    fn restart(&mut self) {
+        self.body = self.first();
+        self.steps_done = 0;
+        self.first_impact = None;
+        self.after = None;
+        self.stopped = None;
+        self.history.clear();
+        self.record();
+    }
+
+    fn record(&mut self) {
+        let b = &self.body;
+        let (point, _) = touching(b);
+        self.history.push([
+            self.steps_done as f32 * SIM_DT,
+            b.position.y,
+            b.point_velocity(point).y,
+            b.kinetic_energy(),
+        ]);
+    }
+
+    /// One step of [`SIM_DT`]: before the first impact, free flight up to the moment of
+    /// contact and the impulse there; after it, the contact solver's substeps.
+    fn step(&mut self) {
+        let mut left = SIM_DT;
+        if self.after.is_none() {
+            let mut trial = self.body;
+            fly_free(&mut trial, left);
+            if touching(&trial).1 >= 0.0 {
+                self.body = trial;
+                return;
+            }
+            // The largest share of the step that keeps every corner above the ground.
+            let (mut lo, mut hi) = (0.0f32, 1.0f32);
+            for _ in 0..BISECTIONS {
+                let mid = 0.5 * (lo + hi);
+                let mut b = self.body;
+                fly_free(&mut b, mid * left);
+                if touching(&b).1 >= 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            fly_free(&mut self.body, lo * left);
+            left -= lo * left;
+            let b = &mut self.body;
+            let (point, _) = touching(b);
+            let v = b.point_velocity(point);
+            let r = point - b.position;
+            let inv_inertia = b.world_inverse_inertia();
+            let j = normal_impulse(v, Vec3::Y, r, 1.0 / b.mass, inv_inertia, self.restitution);
+            let before = *b;
+            b.apply_impulse(j * Vec3::Y, point);
+            self.first_impact = Some(Impact {
+                time_sec: (self.steps_done as f32 + lo) * SIM_DT,
+                point,
+                centre: before.position,
+                j,
+                velocity_before: before.velocity,
+                velocity_after: b.velocity,
+                omega_before: before.omega_world(),
+                omega_after: b.omega_world(),
+                normal_before: v.y,
+                normal_after: b.point_velocity(point).y,
+                energy_before: before.kinetic_energy(),
+                energy_after: b.kinetic_energy(),
+                orientation: before.orientation,
+            });
+            let mut world = World::default();
+            world.restitution = self.restitution;
+            world.friction = 0.0;
+            world.broad_phase = BroadPhase::AllPairs;
+            if world.add(*b, Shape::Cuboid { half: DROP_HALF }).is_err() {
+                self.stopped = Some(self.steps_done as f32 * SIM_DT);
+                return;
+            }
+            self.after = Some(world);
+        }
+        if self.stopped.is_some() {
+            return;
+        }
+        let Some(world) = self.after.as_mut() else {
+            return;
+        };
+        let n = (left * AFTER_SUBSTEPS as f32 / SIM_DT).ceil().max(1.0);
+        for _ in 0..n as usize {
+            if world.step(left / n).is_err() {
+                self.stopped = Some(self.steps_done as f32 * SIM_DT);
+                break;
+            }
+        }
+        self.body = world.bodies[0].0;
+    }
+
+    /// Steps the drop to `time_sec` (0 to 60 s; past [`DROP_DURATION_SEC`] it holds the end); an
+    /// earlier time starts again.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        let end = (DROP_DURATION_SEC / SIM_DT + 1e-3).floor() as usize;
+        let target = steps_to(time_sec)?.min(end);
+        if target < self.steps_done {
+            self.restart();
+        }
+        while self.steps_done < target {
+            self.step();
+            self.steps_done += 1;
+            self.record();
+        }
+        Ok(())
+    }
+
+    /// One row per step so far: `[t (s), height of the centre of mass (m), normal velocity of
+    /// the lowest point (m/s; the lowest corner, or the mean of those level with it), kinetic
+    /// energy (J)]`.
+    pub fn samples(&self) -> &[[f32; 4]] {
+        &self.history
+    }
+
+    /// The first impact so far: its time (s) and the impulse's size `j` (N s).
+    pub fn impact(&self) -> Option<(f32, f32)> {
+        self.first_impact.map(|i| (i.time_sec, i.j))
+    }
+
+    /// Everything about the first impact so far.
+    pub fn impact_details(&self) -> Option<&Impact> {
+        self.first_impact.as_ref()
+    }
+
+    /// When the contact solver failed after the impact (the figure stopped there), if it did.
+    pub fn stopped(&self) -> Option<f32> {
+        self.stopped
+    }
+
+    /// The box now.
+    pub fn body(&self) -> &RigidBody {
+        &self.body
+    }
+
+    /// Draws the box and, from the first impact on, the box as it was then (outlined), the
+    /// contact point, the impulse `j n` (red, drawn as the velocity change `j / m`), and v (blue)
+    /// and ω (teal) before (faded) and after (solid) from the centre of mass then; returns the
+    /// note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(12, 0.25);
+        let top = self.first().position.y + DROP_HALF.length();
+        frame.keep_box_in_view(
+            Vec3::new(-0.8, 0.0, -0.6),
+            Vec3::new(0.8, top.max(1.2), 0.6),
+        );
+        let b = &self.body;
+        let model = Mat4::from_translation(b.position)
+            * Mat4::from_mat3(b.rotation())
+            * Mat4::from_scale(DROP_HALF);
+        frame.mesh(MeshId::CUBE, model, palette::ORANGE);
+        let (low_point, low) = touching(b);
+        frame.contact_shadow(Vec3::new(b.position.x, low, b.position.z), DROP_HALF.x);
+        let e = self.restitution;
+        let Some(hit) = self.first_impact else {
+            frame.marker(low_point, DOT_PX, palette::DARK);
+            return format!(
+                "Falling: the lowest corner is {} m above the ground, moving at {} m/s. \
+                 Restitution e = {}.",
+                format_number(low.max(0.0)),
+                format_number(b.point_velocity(low_point).y),
+                format_number(e),
+            );
+        };
+        // The box at the impact, outlined.
+        let then = {
+            let mut t = *b;
+            t.position = hit.centre;
+            t.orientation = hit.orientation;
+            t
+        };
+        let c = corners(&then, DROP_HALF);
+        for (i, k) in [
+            (0, 1),
+            (2, 3),
+            (4, 5),
+            (6, 7),
+            (0, 2),
+            (1, 3),
+            (4, 6),
+            (5, 7),
+            (0, 4),
+            (1, 5),
+            (2, 6),
+            (3, 7),
+        ] {
+            frame.wide_line(c[i], c[k], palette::GREY, 1.5);
+        }
+        let faded = |c: Vec3| c.lerp(Vec3::ONE, 0.55);
+        let o = hit.centre;
+        frame.marker(o, DOT_PX, palette::DARK);
+        let arrows = [
+            (
+                hit.velocity_before * VELOCITY_SCALE,
+                faded(palette::BLUE),
+                "v before",
+            ),
+            (
+                hit.velocity_after * VELOCITY_SCALE,
+                palette::BLUE,
+                "v after",
+            ),
+            (
+                hit.omega_before * OMEGA_SCALE,
+                faded(palette::TEAL),
+                "ω before",
+            ),
+            (hit.omega_after * OMEGA_SCALE, palette::TEAL, "ω after"),
+        ];
+        for (d, color, name) in arrows {
+            if d.length() > 1e-3 {
+                frame.arrow(o, o + d, color, 0.06);
+                frame.label(o + d + 0.04 * d.normalize(), name, color);
+            }
+        }
+        let j_tip = hit.point + Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE);
+        frame.arrow(hit.point, j_tip, palette::RED, 0.06);
+        frame.label(j_tip + Vec3::new(0.04, 0.02, 0.0), "j n", palette::RED);
+        frame.marker_on_top(hit.point, 12.0, palette::DARK);
+        frame.label_left(
+            hit.point - Vec3::new(0.04, 0.0, 0.0),
+            "contact",
+            palette::DARK,
+        );
+        let v3 = |v: Vec3| {
+            format!(
+                "({}, {}, {})",
+                format_number(v.x),
+                format_number(v.y),
+                format_number(v.z)
+            )
+        };
+        let stopped = match self.stopped {
+            Some(t) => format!(
+                " The contact solver's step failed at t = {} s (a state that is not finite): the \
+                 figure stopped there.",
+                format_number(t)
+            ),
+            None => String::new(),
+        };
+        format!(
+            "Impact at t = {} s: j = {} N s along n = +y at the contact. The contact point's \
+             normal velocity {} → {} m/s (−e times it, e = {}). v {} → {} m/s; ω {} → {} rad/s \
+             (|ω| = {}). Kinetic energy {} → {} J. After the impact the contact solver of the \
+             stack figure takes the box over.{stopped}",
+            format_number(hit.time_sec),
+            format_number(hit.j),
+            format_number(hit.normal_before),
+            format_number(hit.normal_after),
+            format_number(e),
+            v3(hit.velocity_before),
+            v3(hit.velocity_after),
+            v3(hit.omega_before),
+            v3(hit.omega_after),
+            format_number(hit.omega_after.length()),
+            format_number(hit.energy_before),
+            format_number(hit.energy_after),
+        )
+    }
+}
+
+/// Free flight under gravity for `dt` seconds, in substeps of at most [`SIM_DT`] /
+/// [`THROW_SUBSTEPS`] (a box spinning at 40 rad/s after an impact turns 0.7 rad in a whole
+/// `SIM_DT`, where the first-order rotation step gains energy fast).
+fn fly_free(body: &mut RigidBody, dt: f32) {
+    if dt <= 0.0 {
+        return;
+    }
+    let n = (dt * THROW_SUBSTEPS as f32 / SIM_DT).ceil().max(1.0);
+    let h = dt / n;
+    for _ in 0..n as usize {
+        body.step(
+            h,
+            GRAVITY,
+            AngularStep::Momentum,
+            OrientationStep::Exponential,
+        );
+    }
+}
+
+/// The dropped box's touching point and its height: the lowest corner, or the mean of the
+/// corners within [`TIE_M`] of the lowest.
+fn touching(body: &RigidBody) -> (Vec3, f32) {
+    let c = corners(body, DROP_HALF);
+    let low = c.iter().map(|p| p.y).fold(f32::INFINITY, f32::min);
+    let (sum, n) = c
+        .iter()
+        .filter(|p| p.y <= low + TIE_M)
+        .fold((Vec3::ZERO, 0.0), |(s, n), p| (s + *p, n + 1.0));
+    (sum / n, low)
 }
