@@ -5,7 +5,8 @@
 use glam::Vec3;
 use inbetween::draw::{palette, Frame, MeshId};
 use inbetween::figures::rigid_body::{
-    ImpulseFigure, RacketFigure, ThrowFigure, INTEGRATORS, THROW_START, THROW_VELOCITY,
+    ImpulseFigure, RacketFigure, StackFigure, StackPreset, ThrowFigure, DOMINOES, DOMINO_HALF,
+    FALLEN_DEG, INTEGRATORS, THROW_START, THROW_VELOCITY,
 };
 
 #[test]
@@ -419,4 +420,144 @@ fn the_drop_draws_the_impulse_and_the_velocities_before_and_after() {
         note.contains("−e times it") && note.contains("j = "),
         "{note}"
     );
+}
+
+// ---- Figure 4: a stack and a row of dominoes ----
+
+/// The stack or the dominoes at `passes`, run to the end; the top box's largest travel (m).
+fn settle(preset: StackPreset, passes: f32) -> (StackFigure, f32) {
+    let mut f = StackFigure::new(preset);
+    f.set_solver(passes, 0.5, 0.0).unwrap();
+    f.advance_to(f.duration_sec()).unwrap();
+    let most = f.samples().iter().map(|r| r[2]).fold(0.0, f32::max);
+    (f, most)
+}
+
+#[test]
+fn the_stack_stands_for_ten_seconds_at_twenty_passes() {
+    let (f, most) = settle(StackPreset::Stack, 20.0);
+    assert_eq!(f.samples().len(), 601, "one row per step");
+    assert!(most < 0.01, "the top box moved {most} m");
+    for k in 0..3 {
+        assert!(f.tilt_deg(k) < 1.0, "box {k} tilted {}°", f.tilt_deg(k));
+    }
+    assert!(f.samples().last().unwrap()[1] < 1e-4, "still moving");
+    assert!(f.exploded().is_none());
+}
+
+#[test]
+fn with_one_or_two_passes_the_stack_falls_apart() {
+    let (_, twenty) = settle(StackPreset::Stack, 20.0);
+    let (_, two) = settle(StackPreset::Stack, 2.0);
+    let (_, one) = settle(StackPreset::Stack, 1.0);
+    // Measured: about 0.7 cm at 20 passes, 40 cm at 2, 10 m at 1 (the top box slides away).
+    assert!(
+        two > 0.1 && two > 10.0 * twenty,
+        "2 passes: {two} m, 20: {twenty} m"
+    );
+    assert!(one > 1.0, "1 pass: {one} m");
+}
+
+#[test]
+fn every_domino_falls_in_turn_within_the_run() {
+    let mut f = StackFigure::new(StackPreset::Dominoes);
+    let mut fell_at = [None; DOMINOES];
+    let steps = (f.duration_sec() * 60.0) as usize;
+    for s in 0..=steps {
+        f.advance_to(s as f32 / 60.0).unwrap();
+        for (k, at) in fell_at.iter_mut().enumerate() {
+            if at.is_none() && f.tilt_deg(k) > FALLEN_DEG {
+                *at = Some(s);
+            }
+        }
+    }
+    let fell: Vec<usize> = fell_at
+        .iter()
+        .map(|s| s.expect("every domino falls"))
+        .collect();
+    assert!(fell.windows(2).all(|w| w[0] < w[1]), "in turn: {fell:?}");
+    assert!(fell[DOMINOES - 1] < 2 * 60, "all down within 2 s: {fell:?}");
+    assert_eq!(f.fallen(), DOMINOES);
+    assert!(
+        f.samples().last().unwrap()[2] > DOMINO_HALF.y,
+        "the last one moved"
+    );
+    // With one pass the first domino falls into the second without toppling it.
+    let (f, _) = settle(StackPreset::Dominoes, 1.0);
+    assert!(f.fallen() < DOMINOES, "{} down", f.fallen());
+}
+
+#[test]
+fn a_push_is_replayed_and_reset_forgets_it() {
+    let mut f = StackFigure::new(StackPreset::Stack);
+    f.advance_to(1.0).unwrap();
+    f.push().unwrap();
+    f.advance_to(4.0).unwrap();
+    let pushed = f.bodies()[2].0;
+    // The shove slides the top box off the stack.
+    assert!(f.samples().last().unwrap()[2] > 0.3, "{pushed:?}");
+    f.advance_to(0.5).unwrap();
+    f.advance_to(4.0).unwrap();
+    assert_eq!(
+        f.bodies()[2].0,
+        pushed,
+        "the replay pushes at the same frame"
+    );
+    f.reset();
+    f.advance_to(4.0).unwrap();
+    assert!(f.samples().last().unwrap()[2] < 0.01);
+    // The dominoes' push reaches the first domino.
+    let mut d = StackFigure::new(StackPreset::Dominoes);
+    let before = d.bodies()[0].0.velocity;
+    d.push().unwrap();
+    assert!(d.bodies()[0].0.velocity.x > before.x + 0.2);
+}
+
+#[test]
+fn the_solver_settings_are_checked_before_any_is_changed() {
+    let mut f = StackFigure::new(StackPreset::Stack);
+    f.advance_to(1.0).unwrap();
+    let at_one = f.bodies()[2].0;
+    for (passes, mu, e, name) in [
+        (2.5, 0.5, 0.0, "iterations"),
+        (0.0, 0.5, 0.0, "iterations"),
+        (51.0, 0.5, 0.0, "iterations"),
+        (f32::NAN, 0.5, 0.0, "iterations"),
+        (20.0, 1.5, 0.0, "friction"),
+        (20.0, -0.1, 0.0, "friction"),
+        (20.0, 0.5, 1.01, "restitution"),
+        (20.0, 0.5, f32::INFINITY, "restitution"),
+    ] {
+        let err = f.set_solver(passes, mu, e).unwrap_err();
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(f.advance_to(-1.0).is_err() && f.advance_to(61.0).is_err());
+    assert_eq!(f.bodies()[2].0, at_one, "a rejected call changes nothing");
+    f.set_solver(50.0, 0.0, 1.0).unwrap();
+    assert_eq!(f.samples().len(), 1, "a new setting starts again");
+}
+
+#[test]
+fn the_stack_draws_its_boxes_and_contact_points() {
+    for preset in [StackPreset::Stack, StackPreset::Dominoes] {
+        let mut f = StackFigure::new(preset);
+        f.advance_to(0.5).unwrap();
+        let mut frame = Frame::default();
+        let note = f.draw(&mut frame);
+        let cubes = frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CUBE)
+            .count();
+        assert_eq!(cubes, f.bodies().len());
+        assert!(!f.contact_points().is_empty());
+        let dots = frame
+            .markers
+            .iter()
+            .filter(|m| m.color == palette::RED.extend(1.0).to_array())
+            .count();
+        assert_eq!(dots, f.contact_points().len());
+        assert!(note.contains("20 solver passes per step"), "{note}");
+        assert!(f.exploded().is_none() && !note.contains("failed"));
+    }
 }

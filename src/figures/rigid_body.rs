@@ -3,7 +3,7 @@
 //! side, with the energy and the angular momentum each keeps (see [`crate::rigid_body`]).
 
 use super::particles::{steps_to, SIM_DT};
-use super::{format_number, in_range, palette, Frame};
+use super::{format_number, in_range, palette, whole_number, Frame};
 use crate::draw::{MeshId, StrokeStyle, ARROW_PX, DOT_PX};
 use crate::rigid_body::contact::{corners, BroadPhase, Shape, World};
 use crate::rigid_body::inertia::solid_box;
@@ -863,3 +863,388 @@ fn touching(body: &RigidBody) -> (Vec3, f32) {
         .fold((Vec3::ZERO, 0.0), |(s, n), p| (s + *p, n + 1.0));
     (sum / n, low)
 }
+
+/// What the stack figure shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StackPreset {
+    /// Three boxes on the ground, one on another, each [`STACK_OFFSET_M`] further along x.
+    Stack,
+    /// A row of [`DOMINOES`] thin upright boxes, the first tipped by [`DOMINO_TIP_DEG`].
+    Dominoes,
+}
+
+/// The stacked boxes' half-extents (m), 1 kg each.
+pub const STACK_HALF: Vec3 = Vec3::new(0.25, 0.15, 0.25);
+/// How far each box of the stack sits along x from the one under it (m).
+pub const STACK_OFFSET_M: f32 = 0.01;
+/// The dominoes' half-extents (m: 5 cm thick, 40 cm tall, 20 cm wide), 1 kg each.
+pub const DOMINO_HALF: Vec3 = Vec3::new(0.025, 0.2, 0.1);
+pub const DOMINOES: usize = 10;
+/// The distance between neighbouring dominoes' centres (m): less than their height, so each
+/// falling one reaches the next.
+pub const DOMINO_SPACING_M: f32 = 0.25;
+/// The first domino's tilt towards the row at the start (degrees): it falls by itself.
+pub const DOMINO_TIP_DEG: f32 = 15.0;
+/// A domino counts as fallen past this tilt from upright (degrees).
+pub const FALLEN_DEG: f32 = 45.0;
+/// The contact solver's substeps per [`SIM_DT`] (the core's tests step at 1/120 s).
+pub const STACK_SUBSTEPS: usize = 2;
+/// The impulse of [`StackFigure::push`] (N s, along +x): on the top box's centre, or on the
+/// first domino's top.
+pub const STACK_PUSH: f32 = 2.0;
+pub const DOMINO_PUSH: f32 = 0.3;
+/// The most pushes a run remembers.
+pub const MAX_PUSHES: usize = 64;
+/// The boxes' colours, in turn.
+const BOX_COLORS: [Vec3; 7] = [
+    palette::ORANGE,
+    palette::TEAL,
+    palette::PURPLE,
+    palette::BLUE,
+    palette::PINK,
+    palette::GREEN,
+    palette::BROWN,
+];
+
+/// Figure 4: a stack of three boxes, or a row of dominoes, on the contact solver of
+/// [`crate::rigid_body::contact`] (sequential impulses). The reader sets the solver's passes
+/// per step, friction and restitution (the run starts again) and pushes: the top box of the
+/// stack gets a sideways shove, the first domino a push at its top. Pushes are recorded with the
+/// frame they happened at and replayed, so the state at a time is always the same. With too few
+/// passes the contacts are not resolved before the step ends: the stack sinks, jitters and falls
+/// apart. A step that fails ([`World::step`] returns an error: a state that is not finite)
+/// stops the figure there ([`StackFigure::exploded`]).
+#[derive(Clone, Debug)]
+pub struct StackFigure {
+    preset: StackPreset,
+    iterations: usize,
+    friction: f32,
+    restitution: f32,
+    world: World,
+    /// Where each body starts.
+    start: Vec<Vec3>,
+    steps_done: usize,
+    /// The frames at which pushes happened, in order.
+    pushes: Vec<usize>,
+    exploded: Option<f32>,
+    /// The contact points at the present state (what the next step resolves).
+    contact_points: Vec<Vec3>,
+    /// Per step: `[t, total kinetic energy, distance the tracked body has moved]`.
+    history: Vec<[f32; 3]>,
+}
+
+impl StackFigure {
+    /// The figure of `preset` with the core's solver defaults: 20 passes, friction 0.5,
+    /// restitution 0.
+    pub fn new(preset: StackPreset) -> Self {
+        let mut f = Self {
+            preset,
+            iterations: 20,
+            friction: 0.5,
+            restitution: 0.0,
+            world: World::default(),
+            start: Vec::new(),
+            steps_done: 0,
+            pushes: Vec::new(),
+            exploded: None,
+            contact_points: Vec::new(),
+            history: Vec::new(),
+        };
+        f.restart();
+        f
+    }
+
+    /// The solver's passes over the contacts per step (a whole number, 1 to 50), the friction
+    /// coefficient μ (0 to 1) and the restitution e (0 to 1); the run starts again, with the
+    /// pushes made so far.
+    pub fn set_solver(
+        &mut self,
+        iterations: f32,
+        friction: f32,
+        restitution: f32,
+    ) -> Result<(), String> {
+        let iterations = whole_number("iterations", iterations, 1, 50)?;
+        let friction = in_range("friction", friction, 0.0, 1.0)?;
+        let restitution = in_range("restitution", restitution, 0.0, 1.0)?;
+        self.iterations = iterations;
+        self.friction = friction;
+        self.restitution = restitution;
+        self.restart();
+        Ok(())
+    }
+
+    /// The preset shown.
+    pub fn preset(&self) -> StackPreset {
+        self.preset
+    }
+
+    /// The timeline's length (s): 10 for the stack, 4 for the dominoes (they are all down by 2).
+    pub fn duration_sec(&self) -> f32 {
+        match self.preset {
+            StackPreset::Stack => 10.0,
+            StackPreset::Dominoes => 4.0,
+        }
+    }
+
+    /// The body whose travel the samples follow: the top box, or the last domino.
+    pub fn tracked(&self) -> usize {
+        self.world.bodies.len() - 1
+    }
+
+    /// The bodies at the start of a run.
+    fn bodies_at_start(&self) -> Vec<(RigidBody, Shape)> {
+        let make = |half: Vec3, at: Vec3| {
+            let mut b = RigidBody::new(1.0, box_moments(half)).expect("a box's moments");
+            b.position = at;
+            (b, Shape::Cuboid { half })
+        };
+        match self.preset {
+            StackPreset::Stack => (0..3)
+                .map(|k| {
+                    let at = Vec3::new(
+                        STACK_OFFSET_M * k as f32,
+                        STACK_HALF.y * (2 * k + 1) as f32,
+                        0.0,
+                    );
+                    make(STACK_HALF, at)
+                })
+                .collect(),
+            StackPreset::Dominoes => (0..DOMINOES)
+                .map(|k| {
+                    let x = DOMINO_SPACING_M * (k as f32 - 0.5 * (DOMINOES - 1) as f32);
+                    let (mut b, s) = make(DOMINO_HALF, Vec3::new(x, DOMINO_HALF.y, 0.0));
+                    if k == 0 {
+                        // Tipped towards the row about its front bottom edge, which stays on
+                        // the ground.
+                        b.orientation = Quat::from_rotation_z(-DOMINO_TIP_DEG.to_radians());
+                        let low = corners(&b, DOMINO_HALF)
+                            .iter()
+                            .map(|c| c.y)
+                            .fold(f32::INFINITY, f32::min);
+                        b.position.y -= low;
+                    }
+                    (b, s)
+                })
+                .collect(),
+        }
+    }
+
+    fn restart(&mut self) {
+        let mut world = World::default();
+        world.iterations = self.iterations;
+        world.friction = self.friction;
+        world.restitution = self.restitution;
+        world.broad_phase = BroadPhase::AllPairs;
+        for (b, s) in self.bodies_at_start() {
+            world.add(b, s).expect("the preset's bodies are valid");
+        }
+        self.start = world.bodies.iter().map(|(b, _)| b.position).collect();
+        self.world = world;
+        self.steps_done = 0;
+        self.exploded = None;
+        self.history.clear();
+        self.record();
+        self.apply_pushes_at(0);
+        self.find_contacts();
+    }
+
+    fn record(&mut self) {
+        let k = self.tracked();
+        self.history.push([
+            self.steps_done as f32 * SIM_DT,
+            self.world.kinetic_energy(),
+            self.world.bodies[k].0.position.distance(self.start[k]),
+        ]);
+    }
+
+    fn find_contacts(&mut self) {
+        self.contact_points = self.world.contacts().iter().map(|c| c.point).collect();
+    }
+
+    /// The push's impulse on the world as it is now.
+    fn apply_push(&mut self) {
+        let (b, _) = &mut self.world.bodies[match self.preset {
+            StackPreset::Stack => 2,
+            StackPreset::Dominoes => 0,
+        }];
+        match self.preset {
+            StackPreset::Stack => b.apply_impulse(STACK_PUSH * Vec3::X, b.position),
+            StackPreset::Dominoes => {
+                let top = b.position + b.orientation * Vec3::new(0.0, DOMINO_HALF.y, 0.0);
+                b.apply_impulse(DOMINO_PUSH * Vec3::X, top);
+            }
+        }
+    }
+
+    fn apply_pushes_at(&mut self, step: usize) {
+        let n = self.pushes.iter().filter(|&&s| s == step).count();
+        for _ in 0..n {
+            self.apply_push();
+        }
+    }
+
+    /// Pushes now: the top box of the stack sideways ([`STACK_PUSH`] along +x through its
+    /// centre), or the first domino at its top ([`DOMINO_PUSH`]). Remembered for the replays; an
+    /// error past [`MAX_PUSHES`] or after an explosion.
+    pub fn push(&mut self) -> Result<(), String> {
+        if self.pushes.len() >= MAX_PUSHES {
+            return Err(format!(
+                "a run remembers at most {MAX_PUSHES} pushes: press reset"
+            ));
+        }
+        if self.exploded.is_some() {
+            return Err("the run has stopped (the step failed): press reset".into());
+        }
+        self.pushes.push(self.steps_done);
+        self.apply_push();
+        self.find_contacts();
+        Ok(())
+    }
+
+    /// Forgets the pushes and starts again (the solver's settings stay).
+    pub fn reset(&mut self) {
+        self.pushes.clear();
+        self.restart();
+    }
+
+    /// Steps to `time_sec` (0 to 60 s; past [`StackFigure::duration_sec`] it holds the end); an
+    /// earlier time starts again.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        let end = (self.duration_sec() / SIM_DT + 1e-3).floor() as usize;
+        let target = steps_to(time_sec)?.min(end);
+        if target < self.steps_done {
+            self.restart();
+        }
+        let moved = self.steps_done < target;
+        while self.steps_done < target {
+            if self.exploded.is_none() {
+                for _ in 0..STACK_SUBSTEPS {
+                    if self.world.step(SIM_DT / STACK_SUBSTEPS as f32).is_err() {
+                        self.exploded = Some(self.steps_done as f32 * SIM_DT);
+                        break;
+                    }
+                }
+            }
+            self.steps_done += 1;
+            // Recorded before the pushes of this frame, as when the push happened live.
+            if self.exploded.is_none() {
+                self.record();
+                self.apply_pushes_at(self.steps_done);
+            }
+        }
+        if moved {
+            self.find_contacts();
+        }
+        Ok(())
+    }
+
+    /// One row per step so far (none after an explosion): `[t (s), total kinetic energy (J),
+    /// how far the top box (stack) or the last domino has moved from where it started (m)]`.
+    pub fn samples(&self) -> &[[f32; 3]] {
+        &self.history
+    }
+
+    /// When the solver's step failed (s), if it did; the figure stops there.
+    pub fn exploded(&self) -> Option<f32> {
+        self.exploded
+    }
+
+    /// The bodies now.
+    pub fn bodies(&self) -> &[(RigidBody, Shape)] {
+        &self.world.bodies
+    }
+
+    /// The contact points of the present state (world), which the next step resolves.
+    pub fn contact_points(&self) -> &[Vec3] {
+        &self.contact_points
+    }
+
+    /// Body `k`'s tilt: the angle of its own y axis from the vertical (degrees).
+    pub fn tilt_deg(&self, k: usize) -> f32 {
+        self.world.bodies.get(k).map_or(0.0, |(b, _)| {
+            let up = b.orientation.normalize() * Vec3::Y;
+            up.y.clamp(-1.0, 1.0).acos().to_degrees()
+        })
+    }
+
+    /// Dominoes tilted past [`FALLEN_DEG`] (for the stack: boxes, likewise).
+    pub fn fallen(&self) -> usize {
+        (0..self.world.bodies.len())
+            .filter(|&k| self.tilt_deg(k) > FALLEN_DEG)
+            .count()
+    }
+
+    /// Draws the boxes in turns of the palette's colours, the present contact points as red
+    /// dots and a label on the tracked body; returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(16, 0.25);
+        let (lo, hi) = match self.preset {
+            StackPreset::Stack => (Vec3::new(-1.0, 0.0, -0.6), Vec3::new(1.0, 1.2, 0.6)),
+            StackPreset::Dominoes => (Vec3::new(-1.5, 0.0, -0.5), Vec3::new(1.7, 0.7, 0.5)),
+        };
+        frame.keep_box_in_view(lo, hi);
+        for (k, (b, shape)) in self.world.bodies.iter().enumerate() {
+            let half = match shape {
+                Shape::Cuboid { half } => *half,
+                Shape::Sphere { radius } => Vec3::splat(*radius),
+            };
+            let model = Mat4::from_translation(b.position)
+                * Mat4::from_mat3(b.rotation())
+                * Mat4::from_scale(half);
+            frame.mesh(MeshId::CUBE, model, BOX_COLORS[k % BOX_COLORS.len()]);
+        }
+        for p in &self.contact_points {
+            frame.marker_on_top(*p, CONTACT_PX, palette::RED);
+        }
+        let k = self.tracked();
+        let (b, _) = &self.world.bodies[k];
+        let name = match self.preset {
+            StackPreset::Stack => "top box",
+            StackPreset::Dominoes => "last domino",
+        };
+        frame.label(b.position + Vec3::new(0.0, 0.45, 0.0), name, palette::DARK);
+        let row = self.history.last().copied().unwrap_or([0.0; 3]);
+        let t = self.steps_done as f32 * SIM_DT;
+        let solver = format!(
+            "{} solver passes per step ({} steps a frame), friction μ = {}, restitution e = {}.",
+            self.iterations,
+            STACK_SUBSTEPS,
+            format_number(self.friction),
+            format_number(self.restitution),
+        );
+        let state = match self.preset {
+            StackPreset::Stack => format!(
+                "The top box has moved {} cm from where it started; kinetic energy {} J; {} \
+                 contact points.",
+                format_number(100.0 * row[2]),
+                format_number(row[1]),
+                self.contact_points.len(),
+            ),
+            StackPreset::Dominoes => format!(
+                "{} of {DOMINOES} dominoes are down (tilted past {FALLEN_DEG}°); the last one has \
+                 moved {} cm; kinetic energy {} J; {} contact points.",
+                self.fallen(),
+                format_number(100.0 * row[2]),
+                format_number(row[1]),
+                self.contact_points.len(),
+            ),
+        };
+        let pushes = match self.pushes.len() {
+            0 => String::new(),
+            1 => " Pushed once.".to_string(),
+            n => format!(" Pushed {n} times."),
+        };
+        let exploded = match self.exploded {
+            Some(at) => format!(
+                " The solver's step failed at t = {} s (a body's state left the finite \
+                 numbers): the figure stopped there. Raise the passes or press reset.",
+                format_number(at)
+            ),
+            None => String::new(),
+        };
+        format!("t = {t:.2} s. {solver} {state}{pushes}{exploded}")
+    }
+}
+
+/// Size of a contact point's dot (CSS pixels).
+pub const CONTACT_PX: f32 = 9.0;
