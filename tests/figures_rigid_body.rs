@@ -5,8 +5,8 @@
 use glam::Vec3;
 use inbetween::draw::{palette, Frame, MeshId};
 use inbetween::figures::rigid_body::{
-    ImpulseFigure, RacketFigure, StackFigure, StackPreset, ThrowFigure, DOMINOES, DOMINO_HALF,
-    FALLEN_DEG, INTEGRATORS, THROW_START, THROW_VELOCITY,
+    DriftFigure, ImpulseFigure, RacketFigure, StackFigure, StackPreset, ThrowFigure, DOMINOES,
+    DOMINO_HALF, DRIFT_STEPS, FALLEN_DEG, INTEGRATORS, THROW_START, THROW_VELOCITY,
 };
 
 #[test]
@@ -560,4 +560,165 @@ fn the_stack_draws_its_boxes_and_contact_points() {
         assert!(note.contains("20 solver passes per step"), "{note}");
         assert!(f.exploded().is_none() && !note.contains("failed"));
     }
+}
+
+// ---- Figure 5: quaternion drift ----
+
+#[test]
+fn each_additive_step_multiplies_q_by_the_closed_form_and_normalising_keeps_it_1() {
+    for (spin, ms) in [(5.0, 20.0), (10.0, 20.0), (30.0, 50.0), (3.0, 17.0)] {
+        let mut f = DriftFigure::new();
+        f.set_drift(spin, ms).unwrap();
+        f.advance_to(2.0).unwrap();
+        let dt: f32 = ms / 1000.0;
+        let growth = (1.0 + (0.5 * spin * dt).powi(2)).sqrt();
+        assert!((f.growth_per_step() - growth).abs() < 1e-7);
+        let rows = f.samples();
+        assert_eq!(rows.len(), f.steps_done() + 1, "a row per step");
+        for pair in rows.windows(2) {
+            let ratio = pair[1][2] / pair[0][2];
+            assert!(
+                (ratio - growth).abs() < 2e-6 * growth,
+                "spin {spin}, {ms} ms: ×{ratio}, expected ×{growth}"
+            );
+            assert!(pair[1][2] > pair[0][2], "grows every step");
+        }
+        for row in rows {
+            assert!((row[1] - 1.0).abs() < 1e-5, "normalised: {row:?}");
+            assert!((row[3] - 1.0).abs() < 1e-5, "exponential: {row:?}");
+        }
+        let n = f.steps_done() as i32;
+        let expected = (growth as f64).powi(n) as f32;
+        let last = rows.last().unwrap()[2];
+        assert!((last / expected - 1.0).abs() < 1e-4, "{last} vs {expected}");
+    }
+}
+
+#[test]
+fn at_short_steps_the_drift_is_slow_and_a_row_comes_each_frame() {
+    let mut f = DriftFigure::new();
+    f.set_drift(30.0, 1.0).unwrap();
+    // Reached in uneven jumps: the rows are the same as in one go.
+    for t in [0.7, 3.3, 10.0] {
+        f.advance_to(t).unwrap();
+    }
+    let mut g = DriftFigure::new();
+    g.set_drift(30.0, 1.0).unwrap();
+    g.advance_to(10.0).unwrap();
+    assert_eq!(f.samples(), g.samples());
+    assert_eq!(f.samples().len(), 601, "a row per frame");
+    let growth = (1.0f64 + (0.5 * 30.0 * 0.001f64).powi(2)).sqrt();
+    let expected = growth.powi(10_000) as f32;
+    let last = f.samples().last().unwrap();
+    assert!(
+        (last[2] / expected - 1.0).abs() < 1e-3,
+        "{last:?} vs {expected}"
+    );
+    assert!(
+        (last[1] - 1.0).abs() < 1e-5 && (last[3] - 1.0).abs() < 1e-4,
+        "{last:?}"
+    );
+}
+
+#[test]
+fn the_normalised_additive_box_lags_by_the_closed_form_and_the_raw_matrix_stretches() {
+    let mut f = DriftFigure::new();
+    f.set_drift(10.0, 20.0).unwrap();
+    f.advance_to(5.0).unwrap();
+    // Each additive step turns by 2 atan(|ω| Δt / 2) instead of |ω| Δt.
+    let (w, dt) = (10.0f64, 0.02f64);
+    let lag = 250.0 * (w * dt - 2.0 * (0.5 * w * dt).atan());
+    assert!(
+        (f.lag_deg() as f64 - lag.to_degrees()).abs() < 0.1,
+        "{} vs {}",
+        f.lag_deg(),
+        lag.to_degrees()
+    );
+    // The unnormalised box's matrix is (1 − s²) E + s² R: the spin axis keeps its length,
+    // a direction across it is scaled by |1 − s² + s² e^{iθ}|.
+    let b = f.bodies()[1];
+    let s = b.orientation.length();
+    let u = b.orientation.normalize();
+    let theta = 2.0 * u.xyz().length().atan2(u.w);
+    let m = b.rotation();
+    assert!(
+        ((m * Vec3::Z).length() - 1.0).abs() < 1e-4,
+        "{}",
+        m * Vec3::Z
+    );
+    let across =
+        ((1.0 - s * s + s * s * theta.cos()).powi(2) + (s * s * theta.sin()).powi(2)).sqrt();
+    assert!(((m * Vec3::X).length() - across).abs() < 1e-3 * across);
+    assert!(s > 3.0, "{s}");
+}
+
+#[test]
+fn the_drift_refuses_bad_settings_and_stops_the_raw_quaternion_before_it_overflows() {
+    let mut f = DriftFigure::new();
+    f.advance_to(1.0).unwrap();
+    let at_one = *f.bodies();
+    for (spin, ms, name) in [
+        (0.5, 10.0, "spin"),
+        (31.0, 10.0, "spin"),
+        (f32::NAN, 10.0, "spin"),
+        (5.0, 0.5, "step"),
+        (5.0, 51.0, "step"),
+        (5.0, f32::INFINITY, "step"),
+    ] {
+        let err = f.set_drift(spin, ms).unwrap_err();
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(f.advance_to(-1.0).is_err() && f.advance_to(61.0).is_err());
+    assert_eq!(*f.bodies(), at_one, "a rejected call changes nothing");
+    // ×1.25 a step: past 10⁶ in 62 steps; stopped there, every number finite.
+    f.set_drift(30.0, 50.0).unwrap();
+    f.advance_to(10.0).unwrap();
+    let stopped = f.overflowed_at().expect("stopped");
+    assert!((stopped - 62.0 * 0.05).abs() < 1e-3, "{stopped}");
+    assert!(f.samples().iter().flatten().all(|x| x.is_finite()));
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert!(note.contains("stopped there"), "{note}");
+    assert!(frame
+        .labels
+        .iter()
+        .any(|l| l.text.contains("too large to draw")));
+    assert_eq!(
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CUBE)
+            .count(),
+        2
+    );
+}
+
+#[test]
+fn the_drift_draws_three_labelled_boxes_with_their_raw_matrices() {
+    let mut f = DriftFigure::new();
+    f.advance_to(8.0).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    let cubes: Vec<_> = frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == MeshId::CUBE)
+        .collect();
+    assert_eq!(cubes.len(), 3);
+    // The unnormalised box's model matrix is its raw rotation: not a rotation any more.
+    let raw = cubes[1].model;
+    let unit = cubes[0].model;
+    assert!((raw.determinant() - unit.determinant()).abs() > 0.05 * unit.determinant());
+    for (_, name) in DRIFT_STEPS {
+        assert!(
+            frame.labels.iter().any(|l| l.text.starts_with(name)),
+            "{name}"
+        );
+    }
+    // The box it should have been, outlined.
+    assert!(frame.segments_of(palette::GREY).count() >= 12);
+    assert!(
+        note.contains("unnormalised |q| = ") && note.contains("lags"),
+        "{note}"
+    );
 }

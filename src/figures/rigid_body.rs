@@ -2,7 +2,7 @@
 //! instability), spun about its middle axis and stepped by three angular integrators side by
 //! side, with the energy and the angular momentum each keeps (see [`crate::rigid_body`]).
 
-use super::particles::{steps_to, SIM_DT};
+use super::particles::{steps_to, MAX_SIM_TIME, SIM_DT};
 use super::{format_number, in_range, palette, whole_number, Frame};
 use crate::draw::{MeshId, StrokeStyle, ARROW_PX, DOT_PX};
 use crate::rigid_body::contact::{corners, BroadPhase, Shape, World};
@@ -744,20 +744,7 @@ impl ImpulseFigure {
             t
         };
         let c = corners(&then, DROP_HALF);
-        for (i, k) in [
-            (0, 1),
-            (2, 3),
-            (4, 5),
-            (6, 7),
-            (0, 2),
-            (1, 3),
-            (4, 6),
-            (5, 7),
-            (0, 4),
-            (1, 5),
-            (2, 6),
-            (3, 7),
-        ] {
+        for (i, k) in BOX_EDGES {
             frame.wide_line(c[i], c[k], palette::GREY, 1.5);
         }
         let faded = |c: Vec3| c.lerp(Vec3::ONE, 0.55);
@@ -1248,3 +1235,271 @@ impl StackFigure {
 
 /// Size of a contact point's dot (CSS pixels).
 pub const CONTACT_PX: f32 = 9.0;
+
+/// The drift figure's boxes: how each steps its orientation, and its name.
+pub const DRIFT_STEPS: [(OrientationStep, &str); 3] = [
+    (OrientationStep::Additive, "additive, normalised"),
+    (
+        OrientationStep::AdditiveUnnormalised,
+        "additive, unnormalised",
+    ),
+    (OrientationStep::Exponential, "exponential"),
+];
+/// The drift figure's boxes' half-extents (m), 1 kg; they spin about their shortest axis z (the
+/// largest moment: a stable spin), which points along the world's z, towards the viewer.
+pub const DRIFT_HALF: Vec3 = Vec3::new(0.2, 0.1, 0.05);
+/// The drift figure's timeline (s).
+pub const DRIFT_DURATION_SEC: f32 = 10.0;
+/// The unnormalised box is drawn while `|q|` is at most this: its matrix then stretches it by
+/// at most `2|q|² − 1 = 4` across the spin axis.
+pub const DRIFT_DRAWN_MAX_NORM: f32 = 1.581_138_8; // √2.5
+/// The unnormalised box stops being stepped past this `|q|` (its numbers would overflow).
+pub const DRIFT_MAX_NORM: f32 = 1e6;
+/// Where the boxes stand (x, m) and their height.
+const DRIFT_SPACING_M: f32 = 1.5;
+const DRIFT_HEIGHT_M: f32 = 1.0;
+
+/// Figure 5: quaternion drift. Three boxes spun at the same ω, stepped at the same `Δt` by the
+/// three orientation steps of [`DRIFT_STEPS`]. The additive step `q + ½ Δt ω q = (1 + ½ Δt ω) q`
+/// multiplies `|q|` by `|1 + ½ Δt ω| = √(1 + (|ω| Δt / 2)²)` every step, exactly (the norm of a
+/// product of quaternions is the product of the norms): left unnormalised, `|q|` grows
+/// geometrically, and the matrix built from it by the unit-quaternion formula
+/// ([`RigidBody::rotation`]), `(1 − s²) E + s² R` for `q = s u` with `u` unit, keeps the spin
+/// axis but stretches the box across it, by `|1 − s² + s² e^{iθ}|` at rotation angle θ: from 1
+/// at a whole turn to `2 s² − 1` at a half turn, so the drawn box pulses as it spins.
+/// Normalised, the additive step turns by `2 atan(|ω| Δt / 2)` per step instead of `|ω| Δt`, so
+/// it falls behind the exponential step, which is exact for a constant ω.
+#[derive(Clone, Debug)]
+pub struct DriftFigure {
+    spin: f32,
+    step_ms: f32,
+    bodies: [RigidBody; 3],
+    steps_done: usize,
+    /// Set when the unnormalised box passed [`DRIFT_MAX_NORM`] and stopped.
+    overflowed_at: Option<f32>,
+    /// `[t, |q| of each box]`, one row per step or per frame's worth of steps.
+    history: Vec<[f32; 4]>,
+}
+
+impl Default for DriftFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl DriftFigure {
+    /// Spun at 5 rad/s, stepped every 10 ms.
+    pub fn new() -> Self {
+        let body = RigidBody::new(1.0, box_moments(DRIFT_HALF)).expect("a box's moments");
+        let mut f = Self {
+            spin: 5.0,
+            step_ms: 10.0,
+            bodies: [body; 3],
+            steps_done: 0,
+            overflowed_at: None,
+            history: Vec::new(),
+        };
+        f.restart();
+        f
+    }
+
+    /// The spin (rad/s, 1 to 30) and the time step (ms, 1 to 50); the run starts again.
+    pub fn set_drift(&mut self, spin: f32, step_ms: f32) -> Result<(), String> {
+        let spin = in_range("spin", spin, 1.0, 30.0)?;
+        let step_ms = in_range("step", step_ms, 1.0, 50.0)?;
+        self.spin = spin;
+        self.step_ms = step_ms;
+        self.restart();
+        Ok(())
+    }
+
+    /// The timeline's length (s).
+    pub fn duration_sec(&self) -> f32 {
+        DRIFT_DURATION_SEC
+    }
+
+    /// The time step (s).
+    pub fn dt_sec(&self) -> f32 {
+        self.step_ms / 1000.0
+    }
+
+    /// What each step multiplies the additive step's `|q|` by: `√(1 + (|ω| Δt / 2)²)`.
+    pub fn growth_per_step(&self) -> f32 {
+        let half = 0.5 * self.spin * self.dt_sec();
+        (1.0 + half * half).sqrt()
+    }
+
+    fn restart(&mut self) {
+        let mut body = RigidBody::new(1.0, box_moments(DRIFT_HALF)).expect("a box's moments");
+        body.omega_body = Vec3::new(0.0, 0.0, self.spin);
+        self.bodies = [body; 3];
+        self.steps_done = 0;
+        self.overflowed_at = None;
+        self.history.clear();
+        self.record();
+    }
+
+    fn record(&mut self) {
+        let b = &self.bodies;
+        self.history.push([
+            self.steps_done as f32 * self.dt_sec(),
+            b[0].orientation.length(),
+            b[1].orientation.length(),
+            b[2].orientation.length(),
+        ]);
+    }
+
+    /// Steps the three boxes to `time_sec` (0 to 60 s; past [`DRIFT_DURATION_SEC`] they hold
+    /// the end); an earlier time starts again.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        let t = in_range("time", time_sec, 0.0, MAX_SIM_TIME)?;
+        let dt = self.dt_sec();
+        let target = ((t.min(DRIFT_DURATION_SEC) / dt + 1e-3).floor()) as usize;
+        if target < self.steps_done {
+            self.restart();
+        }
+        // A row per step, or per frame when steps are shorter than a frame: at the first step
+        // of each frame, so the rows do not depend on how the time was reached.
+        let frame_of = |n: usize| (n as f32 * dt / SIM_DT + 1e-3).floor() as usize;
+        while self.steps_done < target {
+            for (k, (body, (how, _))) in self.bodies.iter_mut().zip(DRIFT_STEPS).enumerate() {
+                if k == 1 && self.overflowed_at.is_some() {
+                    continue;
+                }
+                body.step(dt, Vec3::ZERO, AngularStep::Momentum, how);
+            }
+            self.steps_done += 1;
+            if self.overflowed_at.is_none() && self.bodies[1].orientation.length() > DRIFT_MAX_NORM
+            {
+                self.overflowed_at = Some(self.steps_done as f32 * dt);
+            }
+            if dt >= SIM_DT || frame_of(self.steps_done) > frame_of(self.steps_done - 1) {
+                self.record();
+            }
+        }
+        Ok(())
+    }
+
+    /// The rows so far: `[t (s), |q| of the normalised additive box, of the unnormalised one,
+    /// of the exponential one]`, one per step, or one per frame ([`SIM_DT`]) when steps are
+    /// shorter than a frame.
+    pub fn samples(&self) -> &[[f32; 4]] {
+        &self.history
+    }
+
+    /// The three boxes, in the order of [`DRIFT_STEPS`].
+    pub fn bodies(&self) -> &[RigidBody; 3] {
+        &self.bodies
+    }
+
+    /// Steps taken so far.
+    pub fn steps_done(&self) -> usize {
+        self.steps_done
+    }
+
+    /// When the unnormalised box passed [`DRIFT_MAX_NORM`] and stopped (s), if it did.
+    pub fn overflowed_at(&self) -> Option<f32> {
+        self.overflowed_at
+    }
+
+    /// How far the normalised additive box has fallen behind the exponential one (degrees, 0 to
+    /// 180): the angle of the rotation between them.
+    pub fn lag_deg(&self) -> f32 {
+        let (a, b) = (self.bodies[0].orientation, self.bodies[2].orientation);
+        let between = a.normalize() * b.normalize().conjugate();
+        // atan2 rather than acos: exact for small angles too.
+        (2.0 * between.xyz().length().atan2(between.w.abs())).to_degrees()
+    }
+
+    /// Where box `k` stands.
+    pub fn place(k: usize) -> Vec3 {
+        Vec3::new((k as f32 - 1.0) * DRIFT_SPACING_M, DRIFT_HEIGHT_M, 0.0)
+    }
+
+    /// Draws each box with the matrix of its raw quaternion (the unnormalised one stretched,
+    /// with the unit-quaternion box it should be outlined in grey), each labelled with its step
+    /// and `|q|`; returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(16, 0.25);
+        // Room for the unnormalised box at its largest drawn stretch.
+        let reach = DRIFT_HALF.x * (2.0 * DRIFT_DRAWN_MAX_NORM.powi(2) - 1.0);
+        frame.keep_box_in_view(
+            Self::place(0) - Vec3::new(0.6, DRIFT_HEIGHT_M, 0.3),
+            Self::place(2) + Vec3::new(0.6, reach.max(0.7), 0.3),
+        );
+        for (k, (body, (_, name))) in self.bodies.iter().zip(DRIFT_STEPS).enumerate() {
+            let at = Self::place(k);
+            let norm = body.orientation.length();
+            let color = BOX_COLORS[k];
+            let label_at = at + Vec3::new(-0.5, 0.75, 0.0);
+            if k == 1 {
+                // The box it should be: the matrix of the normalised quaternion, outlined.
+                let mut unit = *body;
+                unit.orientation = unit.orientation.normalize();
+                unit.position = at;
+                let c = corners(&unit, DRIFT_HALF);
+                for (i, j) in BOX_EDGES {
+                    frame.wide_line(c[i], c[j], palette::GREY, 1.5);
+                }
+            }
+            if norm.is_finite() && norm <= DRIFT_DRAWN_MAX_NORM {
+                let model = Mat4::from_translation(at)
+                    * Mat4::from_mat3(body.rotation())
+                    * Mat4::from_scale(DRIFT_HALF);
+                frame.mesh(MeshId::CUBE, model, color);
+                frame.label(
+                    label_at,
+                    format!("{name}: |q| = {}", format_number(norm)),
+                    color,
+                );
+            } else {
+                frame.label(
+                    label_at,
+                    format!("{name}: |q| = {}, too large to draw", format_number(norm)),
+                    palette::RED,
+                );
+            }
+        }
+        let n = self.steps_done;
+        let s = self.bodies[1].orientation.length();
+        let stopped = match self.overflowed_at {
+            Some(t) => format!(
+                " It passed {} at t = {} s and was stopped there (its numbers would overflow).",
+                format_number(DRIFT_MAX_NORM),
+                format_number(t)
+            ),
+            None => String::new(),
+        };
+        format!(
+            "After {n} steps of Δt = {} ms at |ω| = {} rad/s: the unnormalised |q| = {} (each \
+             step multiplies it by √(1 + (|ω|Δt/2)²) = {:.6}), and its matrix stretches the box \
+             across the spin axis by up to 2|q|² − 1 = {}.{stopped} The normalised and \
+             exponential |q| stay 1 ({} and {}). The normalised additive box lags the \
+             exponential one by {}°: it turns by 2 atan(|ω|Δt/2) a step, not |ω|Δt.",
+            format_number(self.step_ms),
+            format_number(self.spin),
+            format_number(s),
+            self.growth_per_step(),
+            format_number(2.0 * s * s - 1.0),
+            format_number(self.bodies[0].orientation.length()),
+            format_number(self.bodies[2].orientation.length()),
+            format_number(self.lag_deg()),
+        )
+    }
+}
+
+/// The twelve edges of a box, as pairs of indices into [`corners`].
+const BOX_EDGES: [(usize, usize); 12] = [
+    (0, 1),
+    (2, 3),
+    (4, 5),
+    (6, 7),
+    (0, 2),
+    (1, 3),
+    (4, 6),
+    (5, 7),
+    (0, 4),
+    (1, 5),
+    (2, 6),
+    (3, 7),
+];
