@@ -722,3 +722,70 @@ fn the_drift_draws_three_labelled_boxes_with_their_raw_matrices() {
         "{note}"
     );
 }
+
+// ---- every figure at the ends of its ranges ----
+
+/// Everything a frame holds is finite.
+fn finite_frame(frame: &Frame) -> bool {
+    frame.meshes.iter().all(|m| m.model.is_finite())
+        && frame
+            .strokes
+            .iter()
+            .all(|s| s.a.iter().chain(&s.b).all(|x| x.is_finite()))
+        && frame
+            .markers
+            .iter()
+            .all(|m| m.center.iter().all(|x| x.is_finite()))
+        && frame.labels.iter().all(|l| l.anchor.is_finite())
+        && frame.keep_in_view.iter().all(|p| p.is_finite())
+}
+
+#[test]
+fn at_the_ends_of_their_ranges_the_figures_stay_finite_and_draw() {
+    let check = |samples: Vec<f32>, frame: &Frame, what: &str| {
+        assert!(samples.iter().all(|x| x.is_finite()), "{what}: samples");
+        assert!(finite_frame(frame), "{what}: frame");
+    };
+    for spin in [0.0, 15.0] {
+        for tilt in [0.0, 80.0] {
+            let mut f = ThrowFigure::new();
+            f.set_throw(spin, tilt).unwrap();
+            f.advance_to(60.0).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            check(f.samples().concat(), &frame, "throw");
+        }
+    }
+    for tilt in [0.0, 45.0] {
+        for e in [0.0, 1.0] {
+            for h in [0.2, 2.0] {
+                let mut f = ImpulseFigure::new();
+                f.set_drop(tilt, e, h).unwrap();
+                f.advance_to(60.0).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame);
+                check(f.samples().concat(), &frame, "drop");
+                assert!(f.impact().is_some());
+            }
+        }
+    }
+    for preset in [StackPreset::Stack, StackPreset::Dominoes] {
+        for (passes, mu, e) in [(1.0, 0.0, 1.0), (1.0, 1.0, 0.0), (50.0, 0.0, 1.0)] {
+            let mut f = StackFigure::new(preset);
+            f.set_solver(passes, mu, e).unwrap();
+            f.push().unwrap();
+            f.advance_to(60.0).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            check(f.samples().concat(), &frame, "stack");
+        }
+    }
+    for (spin, ms) in [(1.0, 1.0), (30.0, 1.0), (1.0, 50.0), (30.0, 50.0)] {
+        let mut f = DriftFigure::new();
+        f.set_drift(spin, ms).unwrap();
+        f.advance_to(60.0).unwrap();
+        let mut frame = Frame::default();
+        f.draw(&mut frame);
+        check(f.samples().concat(), &frame, "drift");
+    }
+}

@@ -1,6 +1,19 @@
-//! The coming rigid-body lesson's first figure: the tennis racket (the intermediate-axis
-//! instability), spun about its middle axis and stepped by three angular integrators side by
-//! side, with the energy and the angular momentum each keeps (see [`crate::rigid_body`]).
+//! Figure logic for lesson 14, "Rigid bodies" (see [`crate::rigid_body`]):
+//!
+//! - [`ThrowFigure`] (figure 1): a box thrown up with spin; `L` stays fixed in the world while ω
+//!   wobbles around it (the space cone), and the centre of mass flies its parabola.
+//! - [`RacketFigure`] (figure 2): the tennis racket (the intermediate-axis instability), spun
+//!   about its middle axis and stepped by three angular integrators side by side, with the
+//!   energy and the angular momentum each keeps.
+//! - [`ImpulseFigure`] (figure 3): a box dropped tilted meets the ground with one corner; the one
+//!   impulse [`crate::rigid_body::normal_impulse`] that resolves it, with v and ω before and after.
+//! - [`StackFigure`] (figure 4): a stack of boxes or a row of dominoes on the contact solver
+//!   (sequential impulses), with its passes, friction and restitution.
+//! - [`DriftFigure`] (figure 5): quaternion drift, the additive orientation step with and without
+//!   normalising beside the exponential one.
+//!
+//! Each is deterministic: the state at timeline time `t` is the state after `⌊t / Δt⌋` steps from
+//! the start, replayed when the time goes back or a setting changes.
 
 use super::particles::{steps_to, MAX_SIM_TIME, SIM_DT};
 use super::{format_number, in_range, palette, whole_number, Frame};
@@ -217,11 +230,11 @@ fn box_moments(half: Vec3) -> Vec3 {
 /// along a fixed world direction, mostly up.
 ///
 /// The box is stepped [`THROW_SUBSTEPS`] times per [`SIM_DT`]: the rotation with
-/// [`AngularStep::Momentum`] and [`OrientationStep::Exponential`], the centre with semi-implicit
-/// Euler, started with the velocity half a substep of gravity back (`v₀ − ½ g Δt`, leapfrog's start), which puts every
-/// step's centre exactly on the parabola. The flight lasts until the centre is back at its start
-/// height, `2 v₀ᵧ / g` ([`ThrowFigure::duration_sec`]); later times hold that moment (the box is
-/// caught).
+/// [`AngularStep::Momentum`] and [`OrientationStep::Exponential`], with ω read off the `L` of
+/// the throw after each substep; the centre with semi-implicit Euler, started with the velocity
+/// half a substep of gravity back (`v₀ − ½ g h`, leapfrog's start), which puts every step's
+/// centre exactly on the parabola. The flight lasts until the centre is back at its start height,
+/// `2 v₀ᵧ / g` ([`ThrowFigure::duration_sec`]); later times hold that moment (the box is caught).
 #[derive(Clone, Debug)]
 pub struct ThrowFigure {
     spin: f32,
@@ -882,6 +895,8 @@ pub const STACK_PUSH: f32 = 2.0;
 pub const DOMINO_PUSH: f32 = 0.3;
 /// The most pushes a run remembers.
 pub const MAX_PUSHES: usize = 64;
+/// Size of a contact point's dot (CSS pixels).
+pub const CONTACT_PX: f32 = 9.0;
 /// The boxes' colours, in turn.
 const BOX_COLORS: [Vec3; 7] = [
     palette::ORANGE,
@@ -1232,9 +1247,6 @@ impl StackFigure {
         format!("t = {t:.2} s. {solver} {state}{pushes}{exploded}")
     }
 }
-
-/// Size of a contact point's dot (CSS pixels).
-pub const CONTACT_PX: f32 = 9.0;
 
 /// The drift figure's boxes: how each steps its orientation, and its name.
 pub const DRIFT_STEPS: [(OrientationStep, &str); 3] = [
