@@ -1,9 +1,13 @@
-//! The tennis-racket figure of the coming rigid-body lesson.
+//! The figures of lesson 14, rigid bodies: the tennis racket, the throw, the impulse at a contact,
+//! the stack and the dominoes, the quaternion drift.
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec3;
 use inbetween::draw::{palette, Frame, MeshId};
-use inbetween::figures::rigid_body::{RacketFigure, INTEGRATORS};
+use inbetween::figures::rigid_body::{
+    DriftFigure, ImpulseFigure, RacketFigure, StackFigure, StackPreset, ThrowFigure, DOMINOES,
+    DOMINO_HALF, DRIFT_STEPS, FALLEN_DEG, INTEGRATORS, THROW_START, THROW_VELOCITY,
+};
 
 #[test]
 fn the_figure_draws_three_rackets_with_their_momentum_and_names() {
@@ -78,4 +82,710 @@ fn the_run_starts_again_when_time_goes_back_or_the_spin_changes() {
     // Without a wobble the spin about the middle axis stays (an unstable balance, held exactly).
     f.advance_to(5.0).unwrap();
     assert!((f.bodies()[0].orientation * Vec3::Y).dot(Vec3::Y) > 0.999);
+}
+
+// ---- Figure 1: a box thrown with spin ----
+
+/// The throw at `spin` and `tilt`, flown to the end, checked at every step.
+fn fly(spin: f32, tilt: f32, mut check: impl FnMut(&ThrowFigure)) -> ThrowFigure {
+    let mut f = ThrowFigure::new();
+    f.set_throw(spin, tilt).unwrap();
+    let steps = (f.duration_sec() * 60.0).floor() as usize;
+    for k in 0..=steps {
+        f.advance_to(k as f32 / 60.0).unwrap();
+        check(&f);
+    }
+    assert_eq!(f.samples().len(), steps + 1, "one sample per step");
+    f
+}
+
+#[test]
+fn the_thrown_box_keeps_its_angular_momentum_to_float_precision() {
+    for spin in [5.0, 15.0] {
+        for tilt in [0.0, 20.0, 45.0, 80.0] {
+            let mut l0 = None;
+            let f = fly(spin, tilt, |f| {
+                let l = f.body().angular_momentum();
+                let l0 = *l0.get_or_insert(l);
+                // Direction and size: L is one fixed vector in the world.
+                assert!(
+                    (l - l0).length() < 2e-6 * l0.length(),
+                    "spin {spin}, tilt {tilt}: L went from {l0} to {l}"
+                );
+            });
+            let l = f.samples().iter().map(|r| r[2]);
+            let (lo, hi) = (l.clone().fold(f32::MAX, f32::min), l.fold(0.0, f32::max));
+            assert!(hi - lo <= 2e-6 * hi, "|L| from {lo} to {hi}");
+        }
+    }
+}
+
+#[test]
+fn omega_wobbles_around_l_unless_the_box_spins_about_a_principal_axis() {
+    let most_turn = |tilt: f32| {
+        let f = fly(10.0, tilt, |_| {});
+        let w0 = f.omegas()[0];
+        f.omegas()
+            .iter()
+            .map(|w| w.angle_between(w0).to_degrees())
+            .fold(0.0, f32::max)
+    };
+    // About the shortest axis (a principal axis) ω stays along L.
+    assert!(most_turn(0.0) < 0.1, "{}", most_turn(0.0));
+    for (tilt, at_least) in [(10.0, 10.0), (20.0, 25.0), (40.0, 45.0)] {
+        let turned = most_turn(tilt);
+        assert!(turned > at_least, "tilt {tilt}: ω turned {turned}°");
+    }
+    // The angle between ω and L comes and goes, and at tilt 0 it is 0.
+    let f = fly(10.0, 20.0, |_| {});
+    let angles: Vec<f32> = f.samples().iter().map(|r| r[3]).collect();
+    let (lo, hi) = (
+        angles.iter().copied().fold(f32::MAX, f32::min),
+        angles.iter().copied().fold(0.0, f32::max),
+    );
+    assert!(lo < 5.0 && hi > 12.0, "ω–L angle from {lo}° to {hi}°");
+    assert!(fly(10.0, 0.0, |_| {}).samples().iter().all(|r| r[3] < 0.05));
+}
+
+#[test]
+fn omegas_tip_stays_on_the_plane_across_l_and_the_energy_holds_to_3_percent() {
+    // Torque-free motion keeps E = ½ ω · L, so ω · L̂ = 2E / |L| is constant: ω's tip moves on
+    // a plane across L (the invariable plane). The first-order step keeps it to a few per cent.
+    for tilt in [20.0, 60.0] {
+        let f = fly(15.0, tilt, |_| {});
+        let e0 = f.samples()[0][4];
+        let l = f.body().angular_momentum().normalize();
+        let along0 = f.omegas()[0].dot(l);
+        for (row, w) in f.samples().iter().zip(f.omegas()) {
+            assert!((row[4] / e0 - 1.0).abs() < 0.03, "tilt {tilt}: {row:?}");
+            assert!((w.dot(l) / along0 - 1.0).abs() < 0.03, "tilt {tilt}: {w}");
+        }
+    }
+}
+
+#[test]
+fn the_centre_of_mass_flies_the_parabola_and_lands_at_its_start_height() {
+    let f = fly(12.0, 30.0, |f| {
+        let t = f.samples().last().unwrap()[0];
+        let at = f.body().position;
+        assert!(
+            (at - ThrowFigure::parabola(t)).length() < 5e-4,
+            "at t = {t}: {at}, parabola {}",
+            ThrowFigure::parabola(t)
+        );
+    });
+    // The parabola's closed form: x₀ + v₀ t + ½ g t², back at the start height at 2 v₀ᵧ / g.
+    let t = f.duration_sec();
+    assert!((t - 2.0 * THROW_VELOCITY.y / 9.81).abs() < 1e-6);
+    assert!((ThrowFigure::parabola(t).y - THROW_START.y).abs() < 1e-4);
+    let apex = ThrowFigure::parabola(0.5 * t);
+    assert!((apex.y - THROW_START.y - THROW_VELOCITY.y.powi(2) / (2.0 * 9.81)).abs() < 1e-4);
+    // Past the flight the box holds where it ended.
+    let mut g = f.clone();
+    g.advance_to(30.0).unwrap();
+    assert_eq!(g.body(), f.body());
+}
+
+#[test]
+fn the_throw_refuses_bad_settings_and_replays_the_same_run() {
+    let mut f = ThrowFigure::new();
+    f.advance_to(1.0).unwrap();
+    let at_one = *f.body();
+    for (spin, tilt, name) in [
+        (-1.0, 20.0, "spin"),
+        (15.5, 20.0, "spin"),
+        (f32::NAN, 20.0, "spin"),
+        (10.0, 81.0, "tilt"),
+        (10.0, -0.5, "tilt"),
+        (10.0, f32::INFINITY, "tilt"),
+    ] {
+        let err = f.set_throw(spin, tilt).unwrap_err();
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(f.advance_to(-0.1).is_err() && f.advance_to(f32::NAN).is_err());
+    assert!(f.advance_to(61.0).is_err());
+    assert_eq!(*f.body(), at_one, "a rejected call changes nothing");
+    f.advance_to(0.5).unwrap();
+    f.advance_to(1.0).unwrap();
+    assert_eq!(*f.body(), at_one, "the replay is the same run");
+    f.set_throw(10.0, 20.0).unwrap();
+    assert_eq!(f.samples().len(), 1, "a new setting starts again");
+}
+
+#[test]
+fn the_throw_draws_the_box_l_omega_and_the_trail_and_says_l_stays_fixed() {
+    let mut f = ThrowFigure::new();
+    f.advance_to(0.8).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert_eq!(
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CUBE)
+            .count(),
+        1
+    );
+    // Two arrows (their heads are cones), labelled.
+    assert_eq!(
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CONE)
+            .count(),
+        2
+    );
+    for name in ["L", "ω"] {
+        assert!(frame.labels.iter().any(|l| l.text == name), "{name}");
+    }
+    assert!(frame.segments_of(palette::PURPLE).count() >= 1);
+    // The trail: one segment per step flown.
+    assert!(frame.strokes.len() >= 48, "{}", frame.strokes.len());
+    assert!(!frame.keep_in_view.is_empty());
+    assert!(
+        note.contains("L stays fixed") && note.contains("|L| = "),
+        "{note}"
+    );
+    // No spin: no arrows, and the note says why.
+    f.set_throw(0.0, 30.0).unwrap();
+    f.advance_to(0.5).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert!(note.contains("No spin"), "{note}");
+    assert!(frame.labels.is_empty());
+}
+
+// ---- Figure 3: an impulse at a contact ----
+
+fn dropped(tilt: f32, e: f32, height: f32) -> ImpulseFigure {
+    let mut f = ImpulseFigure::new();
+    f.set_drop(tilt, e, height).unwrap();
+    f.advance_to(f.duration_sec()).unwrap();
+    f
+}
+
+#[test]
+fn the_impulse_turns_the_contact_points_normal_velocity_into_minus_e_times_itself() {
+    for tilt in [0.0, 10.0, 30.0, 45.0] {
+        for e in [0.0, 0.3, 0.5, 1.0] {
+            let f = dropped(tilt, e, 1.0);
+            let hit = *f.impact_details().expect("the box lands");
+            assert!(hit.normal_before < -4.0, "{hit:?}");
+            assert!(
+                (hit.normal_after + e * hit.normal_before).abs() < 1e-4 * -hit.normal_before,
+                "tilt {tilt}, e {e}: {} → {}",
+                hit.normal_before,
+                hit.normal_after
+            );
+            assert_eq!(f.impact(), Some((hit.time_sec, hit.j)));
+            // Energy: kept at e = 1, lost below.
+            if e == 1.0 {
+                assert!(
+                    (hit.energy_after - hit.energy_before).abs() < 1e-5 * hit.energy_before,
+                    "{hit:?}"
+                );
+            } else {
+                assert!(hit.energy_after < hit.energy_before, "{hit:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_box_meets_the_ground_after_the_free_fall_time_at_the_free_fall_speed() {
+    for h in [0.2, 1.0, 2.0] {
+        let hit = *dropped(20.0, 0.5, h).impact_details().unwrap();
+        let (t, v): (f32, f32) = ((2.0 * h / 9.81).sqrt(), (2.0 * 9.81 * h).sqrt());
+        assert!(
+            (hit.time_sec - t).abs() < 1e-3,
+            "h {h}: {} s, √(2h/g) = {t}",
+            hit.time_sec
+        );
+        assert!(
+            (hit.normal_before + v).abs() < 5e-3 * v,
+            "h {h}: {}",
+            hit.normal_before
+        );
+        // The contact point is on the ground, and it is the lowest corner.
+        assert!(hit.point.y.abs() < 1e-4, "{}", hit.point);
+    }
+}
+
+#[test]
+fn a_level_drop_gets_no_spin_and_a_tilted_one_does_by_the_inverse_inertia_of_r_cross_j() {
+    for e in [0.0, 0.5, 1.0] {
+        // Level: four corners land together, the impulse acts under the centre of mass, and the
+        // box bounces as a particle would, j = (1 + e) m |v|.
+        let hit = *dropped(0.0, e, 1.0).impact_details().unwrap();
+        assert!(hit.omega_after.length() < 1e-4, "{}", hit.omega_after);
+        let v = -hit.velocity_before.y;
+        assert!(
+            (hit.j - (1.0 + e) * v).abs() < 1e-4 * v,
+            "{} vs {}",
+            hit.j,
+            (1.0 + e) * v
+        );
+        assert!((hit.point - (hit.centre - 0.1 * Vec3::Y)).length() < 1e-4);
+    }
+    for tilt in [1.0, 10.0, 45.0] {
+        let f = dropped(tilt, 0.5, 1.0);
+        let hit = *f.impact_details().unwrap();
+        assert!(
+            hit.omega_after.length() > 1.0,
+            "tilt {tilt}: {}",
+            hit.omega_after
+        );
+        // Δω = I⁻¹ (r × j n), Δv = j n / m, from rest.
+        let mut then = *f.body();
+        then.orientation = hit.orientation;
+        let r = hit.point - hit.centre;
+        let expected = then.world_inverse_inertia() * r.cross(hit.j * Vec3::Y);
+        assert!((hit.omega_after - expected).length() < 1e-4 * expected.length());
+        let dv = hit.velocity_after - hit.velocity_before;
+        assert!((dv - hit.j * Vec3::Y).length() < 1e-5);
+    }
+}
+
+#[test]
+fn the_frictionless_box_never_moves_sideways_and_comes_to_rest_on_a_face() {
+    for (tilt, e) in [(20.0, 0.5), (45.0, 0.0), (5.0, 0.3)] {
+        let mut f = ImpulseFigure::new();
+        f.set_drop(tilt, e, 1.0).unwrap();
+        for k in 0..=120 {
+            f.advance_to(k as f32 / 60.0).unwrap();
+            let p = f.body().position;
+            assert!(
+                p.x.abs() < 1e-5 && p.z.abs() < 1e-5,
+                "t = {}: {p}",
+                k as f32 / 60.0
+            );
+        }
+        assert!(f.stopped().is_none());
+        let last = *f.samples().last().unwrap();
+        assert!((last[1] - 0.1).abs() < 2e-3 && last[3] < 1e-2, "{last:?}");
+        assert_eq!(f.samples().len(), 121);
+    }
+}
+
+#[test]
+fn the_drop_refuses_bad_settings_and_replays_the_same_run() {
+    let mut f = ImpulseFigure::new();
+    f.advance_to(1.0).unwrap();
+    let at_one = *f.body();
+    for (tilt, e, h, name) in [
+        (-1.0, 0.5, 1.0, "tilt"),
+        (46.0, 0.5, 1.0, "tilt"),
+        (10.0, 1.1, 1.0, "restitution"),
+        (10.0, f32::NAN, 1.0, "restitution"),
+        (10.0, 0.5, 0.1, "height"),
+        (10.0, 0.5, 2.5, "height"),
+    ] {
+        let err = f.set_drop(tilt, e, h).unwrap_err();
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(f.advance_to(-1.0).is_err() && f.advance_to(61.0).is_err());
+    assert_eq!(*f.body(), at_one, "a rejected call changes nothing");
+    f.advance_to(0.2).unwrap();
+    assert!(f.impact().is_none(), "scrubbing back forgets the impact");
+    f.advance_to(1.0).unwrap();
+    assert_eq!(*f.body(), at_one, "the replay is the same run");
+}
+
+#[test]
+fn the_drop_draws_the_impulse_and_the_velocities_before_and_after() {
+    let mut f = ImpulseFigure::new();
+    f.advance_to(0.2).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert!(note.starts_with("Falling"), "{note}");
+    assert!(!frame.markers.is_empty(), "the lowest corner is marked");
+    f.advance_to(0.6).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    for name in ["j n", "v before", "v after", "ω after", "contact"] {
+        assert!(frame.labels.iter().any(|l| l.text == name), "{name}");
+    }
+    // Dropped without spin: no ω before to draw.
+    assert!(!frame.labels.iter().any(|l| l.text == "ω before"));
+    let hit = *f.impact_details().unwrap();
+    assert!(
+        frame
+            .markers
+            .iter()
+            .any(|m| Vec3::from(m.center) == hit.point),
+        "the contact point is a dot"
+    );
+    assert!(frame.segments_of(palette::RED).count() >= 1, "the impulse");
+    assert!(
+        note.contains("−e times it") && note.contains("j = "),
+        "{note}"
+    );
+}
+
+// ---- Figure 4: a stack and a row of dominoes ----
+
+/// The stack or the dominoes at `passes`, run to the end; the top box's largest travel (m).
+fn settle(preset: StackPreset, passes: f32) -> (StackFigure, f32) {
+    let mut f = StackFigure::new(preset);
+    f.set_solver(passes, 0.5, 0.0).unwrap();
+    f.advance_to(f.duration_sec()).unwrap();
+    let most = f.samples().iter().map(|r| r[2]).fold(0.0, f32::max);
+    (f, most)
+}
+
+#[test]
+fn the_stack_stands_for_ten_seconds_at_twenty_passes() {
+    let (f, most) = settle(StackPreset::Stack, 20.0);
+    assert_eq!(f.samples().len(), 601, "one row per step");
+    assert!(most < 0.01, "the top box moved {most} m");
+    for k in 0..3 {
+        assert!(f.tilt_deg(k) < 1.0, "box {k} tilted {}°", f.tilt_deg(k));
+    }
+    assert!(f.samples().last().unwrap()[1] < 1e-4, "still moving");
+    assert!(f.exploded().is_none());
+}
+
+#[test]
+fn with_one_or_two_passes_the_stack_falls_apart() {
+    let (_, twenty) = settle(StackPreset::Stack, 20.0);
+    let (_, two) = settle(StackPreset::Stack, 2.0);
+    let (_, one) = settle(StackPreset::Stack, 1.0);
+    // Measured: about 0.7 cm at 20 passes, 40 cm at 2, 10 m at 1 (the top box slides away).
+    assert!(
+        two > 0.1 && two > 10.0 * twenty,
+        "2 passes: {two} m, 20: {twenty} m"
+    );
+    assert!(one > 1.0, "1 pass: {one} m");
+}
+
+#[test]
+fn every_domino_falls_in_turn_within_the_run() {
+    let mut f = StackFigure::new(StackPreset::Dominoes);
+    let mut fell_at = [None; DOMINOES];
+    let steps = (f.duration_sec() * 60.0) as usize;
+    for s in 0..=steps {
+        f.advance_to(s as f32 / 60.0).unwrap();
+        for (k, at) in fell_at.iter_mut().enumerate() {
+            if at.is_none() && f.tilt_deg(k) > FALLEN_DEG {
+                *at = Some(s);
+            }
+        }
+    }
+    let fell: Vec<usize> = fell_at
+        .iter()
+        .map(|s| s.expect("every domino falls"))
+        .collect();
+    assert!(fell.windows(2).all(|w| w[0] < w[1]), "in turn: {fell:?}");
+    assert!(fell[DOMINOES - 1] < 2 * 60, "all down within 2 s: {fell:?}");
+    assert_eq!(f.fallen(), DOMINOES);
+    assert!(
+        f.samples().last().unwrap()[2] > DOMINO_HALF.y,
+        "the last one moved"
+    );
+    // With one pass the first domino falls into the second without toppling it.
+    let (f, _) = settle(StackPreset::Dominoes, 1.0);
+    assert!(f.fallen() < DOMINOES, "{} down", f.fallen());
+}
+
+#[test]
+fn a_push_is_replayed_and_reset_forgets_it() {
+    let mut f = StackFigure::new(StackPreset::Stack);
+    f.advance_to(1.0).unwrap();
+    f.push().unwrap();
+    f.advance_to(4.0).unwrap();
+    let pushed = f.bodies()[2].0;
+    // The shove slides the top box off the stack.
+    assert!(f.samples().last().unwrap()[2] > 0.3, "{pushed:?}");
+    f.advance_to(0.5).unwrap();
+    f.advance_to(4.0).unwrap();
+    assert_eq!(
+        f.bodies()[2].0,
+        pushed,
+        "the replay pushes at the same frame"
+    );
+    f.reset();
+    f.advance_to(4.0).unwrap();
+    assert!(f.samples().last().unwrap()[2] < 0.01);
+    // The dominoes' push reaches the first domino.
+    let mut d = StackFigure::new(StackPreset::Dominoes);
+    let before = d.bodies()[0].0.velocity;
+    d.push().unwrap();
+    assert!(d.bodies()[0].0.velocity.x > before.x + 0.2);
+}
+
+#[test]
+fn the_solver_settings_are_checked_before_any_is_changed() {
+    let mut f = StackFigure::new(StackPreset::Stack);
+    f.advance_to(1.0).unwrap();
+    let at_one = f.bodies()[2].0;
+    for (passes, mu, e, name) in [
+        (2.5, 0.5, 0.0, "iterations"),
+        (0.0, 0.5, 0.0, "iterations"),
+        (51.0, 0.5, 0.0, "iterations"),
+        (f32::NAN, 0.5, 0.0, "iterations"),
+        (20.0, 1.5, 0.0, "friction"),
+        (20.0, -0.1, 0.0, "friction"),
+        (20.0, 0.5, 1.01, "restitution"),
+        (20.0, 0.5, f32::INFINITY, "restitution"),
+    ] {
+        let err = f.set_solver(passes, mu, e).unwrap_err();
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(f.advance_to(-1.0).is_err() && f.advance_to(61.0).is_err());
+    assert_eq!(f.bodies()[2].0, at_one, "a rejected call changes nothing");
+    f.set_solver(50.0, 0.0, 1.0).unwrap();
+    assert_eq!(f.samples().len(), 1, "a new setting starts again");
+}
+
+#[test]
+fn the_stack_draws_its_boxes_and_contact_points() {
+    for preset in [StackPreset::Stack, StackPreset::Dominoes] {
+        let mut f = StackFigure::new(preset);
+        f.advance_to(0.5).unwrap();
+        let mut frame = Frame::default();
+        let note = f.draw(&mut frame);
+        let cubes = frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CUBE)
+            .count();
+        assert_eq!(cubes, f.bodies().len());
+        assert!(!f.contact_points().is_empty());
+        let dots = frame
+            .markers
+            .iter()
+            .filter(|m| m.color == palette::RED.extend(1.0).to_array())
+            .count();
+        assert_eq!(dots, f.contact_points().len());
+        assert!(note.contains("20 solver passes per step"), "{note}");
+        assert!(f.exploded().is_none() && !note.contains("failed"));
+    }
+}
+
+// ---- Figure 5: quaternion drift ----
+
+#[test]
+fn each_additive_step_multiplies_q_by_the_closed_form_and_normalising_keeps_it_1() {
+    for (spin, ms) in [(5.0, 20.0), (10.0, 20.0), (30.0, 50.0), (3.0, 17.0)] {
+        let mut f = DriftFigure::new();
+        f.set_drift(spin, ms).unwrap();
+        f.advance_to(2.0).unwrap();
+        let dt: f32 = ms / 1000.0;
+        let growth = (1.0 + (0.5 * spin * dt).powi(2)).sqrt();
+        assert!((f.growth_per_step() - growth).abs() < 1e-7);
+        let rows = f.samples();
+        assert_eq!(rows.len(), f.steps_done() + 1, "a row per step");
+        for pair in rows.windows(2) {
+            let ratio = pair[1][2] / pair[0][2];
+            assert!(
+                (ratio - growth).abs() < 2e-6 * growth,
+                "spin {spin}, {ms} ms: ×{ratio}, expected ×{growth}"
+            );
+            assert!(pair[1][2] > pair[0][2], "grows every step");
+        }
+        for row in rows {
+            assert!((row[1] - 1.0).abs() < 1e-5, "normalised: {row:?}");
+            assert!((row[3] - 1.0).abs() < 1e-5, "exponential: {row:?}");
+        }
+        let n = f.steps_done() as i32;
+        let expected = (growth as f64).powi(n) as f32;
+        let last = rows.last().unwrap()[2];
+        assert!((last / expected - 1.0).abs() < 1e-4, "{last} vs {expected}");
+    }
+}
+
+#[test]
+fn at_short_steps_the_drift_is_slow_and_a_row_comes_each_frame() {
+    let mut f = DriftFigure::new();
+    f.set_drift(30.0, 1.0).unwrap();
+    // Reached in uneven jumps: the rows are the same as in one go.
+    for t in [0.7, 3.3, 10.0] {
+        f.advance_to(t).unwrap();
+    }
+    let mut g = DriftFigure::new();
+    g.set_drift(30.0, 1.0).unwrap();
+    g.advance_to(10.0).unwrap();
+    assert_eq!(f.samples(), g.samples());
+    assert_eq!(f.samples().len(), 601, "a row per frame");
+    let growth = (1.0f64 + (0.5 * 30.0 * 0.001f64).powi(2)).sqrt();
+    let expected = growth.powi(10_000) as f32;
+    let last = f.samples().last().unwrap();
+    assert!(
+        (last[2] / expected - 1.0).abs() < 1e-3,
+        "{last:?} vs {expected}"
+    );
+    assert!(
+        (last[1] - 1.0).abs() < 1e-5 && (last[3] - 1.0).abs() < 1e-4,
+        "{last:?}"
+    );
+}
+
+#[test]
+fn the_normalised_additive_box_lags_by_the_closed_form_and_the_raw_matrix_stretches() {
+    let mut f = DriftFigure::new();
+    f.set_drift(10.0, 20.0).unwrap();
+    f.advance_to(5.0).unwrap();
+    // Each additive step turns by 2 atan(|ω| Δt / 2) instead of |ω| Δt.
+    let (w, dt) = (10.0f64, 0.02f64);
+    let lag = 250.0 * (w * dt - 2.0 * (0.5 * w * dt).atan());
+    assert!(
+        (f.lag_deg() as f64 - lag.to_degrees()).abs() < 0.1,
+        "{} vs {}",
+        f.lag_deg(),
+        lag.to_degrees()
+    );
+    // The unnormalised box's matrix is (1 − s²) E + s² R: the spin axis keeps its length,
+    // a direction across it is scaled by |1 − s² + s² e^{iθ}|.
+    let b = f.bodies()[1];
+    let s = b.orientation.length();
+    let u = b.orientation.normalize();
+    let theta = 2.0 * u.xyz().length().atan2(u.w);
+    let m = b.rotation();
+    assert!(
+        ((m * Vec3::Z).length() - 1.0).abs() < 1e-4,
+        "{}",
+        m * Vec3::Z
+    );
+    let across =
+        ((1.0 - s * s + s * s * theta.cos()).powi(2) + (s * s * theta.sin()).powi(2)).sqrt();
+    assert!(((m * Vec3::X).length() - across).abs() < 1e-3 * across);
+    assert!(s > 3.0, "{s}");
+}
+
+#[test]
+fn the_drift_refuses_bad_settings_and_stops_the_raw_quaternion_before_it_overflows() {
+    let mut f = DriftFigure::new();
+    f.advance_to(1.0).unwrap();
+    let at_one = *f.bodies();
+    for (spin, ms, name) in [
+        (0.5, 10.0, "spin"),
+        (31.0, 10.0, "spin"),
+        (f32::NAN, 10.0, "spin"),
+        (5.0, 0.5, "step"),
+        (5.0, 51.0, "step"),
+        (5.0, f32::INFINITY, "step"),
+    ] {
+        let err = f.set_drift(spin, ms).unwrap_err();
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(f.advance_to(-1.0).is_err() && f.advance_to(61.0).is_err());
+    assert_eq!(*f.bodies(), at_one, "a rejected call changes nothing");
+    // ×1.25 a step: past 10⁶ in 62 steps; stopped there, every number finite.
+    f.set_drift(30.0, 50.0).unwrap();
+    f.advance_to(10.0).unwrap();
+    let stopped = f.overflowed_at().expect("stopped");
+    assert!((stopped - 62.0 * 0.05).abs() < 1e-3, "{stopped}");
+    assert!(f.samples().iter().flatten().all(|x| x.is_finite()));
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert!(note.contains("stopped there"), "{note}");
+    assert!(frame
+        .labels
+        .iter()
+        .any(|l| l.text.contains("too large to draw")));
+    assert_eq!(
+        frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CUBE)
+            .count(),
+        2
+    );
+}
+
+#[test]
+fn the_drift_draws_three_labelled_boxes_with_their_raw_matrices() {
+    let mut f = DriftFigure::new();
+    f.advance_to(8.0).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    let cubes: Vec<_> = frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == MeshId::CUBE)
+        .collect();
+    assert_eq!(cubes.len(), 3);
+    // The unnormalised box's model matrix is its raw rotation: not a rotation any more.
+    let raw = cubes[1].model;
+    let unit = cubes[0].model;
+    assert!((raw.determinant() - unit.determinant()).abs() > 0.05 * unit.determinant());
+    for (_, name) in DRIFT_STEPS {
+        assert!(
+            frame.labels.iter().any(|l| l.text.starts_with(name)),
+            "{name}"
+        );
+    }
+    // The box it should have been, outlined.
+    assert!(frame.segments_of(palette::GREY).count() >= 12);
+    assert!(
+        note.contains("unnormalised |q| = ") && note.contains("lags"),
+        "{note}"
+    );
+}
+
+// ---- every figure at the ends of its ranges ----
+
+/// Everything a frame holds is finite.
+fn finite_frame(frame: &Frame) -> bool {
+    frame.meshes.iter().all(|m| m.model.is_finite())
+        && frame
+            .strokes
+            .iter()
+            .all(|s| s.a.iter().chain(&s.b).all(|x| x.is_finite()))
+        && frame
+            .markers
+            .iter()
+            .all(|m| m.center.iter().all(|x| x.is_finite()))
+        && frame.labels.iter().all(|l| l.anchor.is_finite())
+        && frame.keep_in_view.iter().all(|p| p.is_finite())
+}
+
+#[test]
+fn at_the_ends_of_their_ranges_the_figures_stay_finite_and_draw() {
+    let check = |samples: Vec<f32>, frame: &Frame, what: &str| {
+        assert!(samples.iter().all(|x| x.is_finite()), "{what}: samples");
+        assert!(finite_frame(frame), "{what}: frame");
+    };
+    for spin in [0.0, 15.0] {
+        for tilt in [0.0, 80.0] {
+            let mut f = ThrowFigure::new();
+            f.set_throw(spin, tilt).unwrap();
+            f.advance_to(60.0).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            check(f.samples().concat(), &frame, "throw");
+        }
+    }
+    for tilt in [0.0, 45.0] {
+        for e in [0.0, 1.0] {
+            for h in [0.2, 2.0] {
+                let mut f = ImpulseFigure::new();
+                f.set_drop(tilt, e, h).unwrap();
+                f.advance_to(60.0).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame);
+                check(f.samples().concat(), &frame, "drop");
+                assert!(f.impact().is_some());
+            }
+        }
+    }
+    for preset in [StackPreset::Stack, StackPreset::Dominoes] {
+        for (passes, mu, e) in [(1.0, 0.0, 1.0), (1.0, 1.0, 0.0), (50.0, 0.0, 1.0)] {
+            let mut f = StackFigure::new(preset);
+            f.set_solver(passes, mu, e).unwrap();
+            f.push().unwrap();
+            f.advance_to(60.0).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            check(f.samples().concat(), &frame, "stack");
+        }
+    }
+    for (spin, ms) in [(1.0, 1.0), (30.0, 1.0), (1.0, 50.0), (30.0, 50.0)] {
+        let mut f = DriftFigure::new();
+        f.set_drift(spin, ms).unwrap();
+        f.advance_to(60.0).unwrap();
+        let mut frame = Frame::default();
+        f.draw(&mut frame);
+        check(f.samples().concat(), &frame, "drift");
+    }
 }

@@ -6,7 +6,9 @@ use glam::{Mat3, Quat, Vec3};
 use inbetween::rigid_body::inertia::{
     boxes, shifted, solid_box, solid_cylinder, solid_sphere, BoxPart,
 };
-use inbetween::rigid_body::{orientation_step, AngularStep, OrientationStep, RigidBody};
+use inbetween::rigid_body::{
+    normal_impulse, orientation_step, AngularStep, OrientationStep, RigidBody,
+};
 
 fn close(a: Mat3, b: Mat3, tol: f32) -> bool {
     (a - b).to_cols_array().iter().all(|x| x.abs() <= tol)
@@ -363,4 +365,68 @@ fn an_impulse_changes_the_velocity_by_j_over_m_and_the_spin_by_the_inverse_inert
     assert!(
         (body.point_velocity(p) - (body.velocity + body.omega_world().cross(r))).length() < 1e-6
     );
+}
+
+#[test]
+fn the_normal_impulse_turns_the_contact_points_normal_velocity_into_minus_e_times_itself() {
+    // A tumbling racket meets the ground with a corner, in several attitudes and spins.
+    let n = Vec3::Y;
+    let mut approaching = 0;
+    for k in 0..12 {
+        let mut body = racket();
+        body.position = Vec3::new(0.0, 0.4, 0.0);
+        body.orientation = Quat::from_rotation_z(0.3 * k as f32) * Quat::from_rotation_x(0.7);
+        body.velocity = Vec3::new(0.5, -3.0, 0.2 * k as f32 - 1.0);
+        body.omega_body = Vec3::new(2.0 - 0.3 * k as f32, 1.0, 4.0);
+        let corner = body.position + body.orientation * Vec3::new(0.3, -0.15, 0.05);
+        let v = body.point_velocity(corner);
+        if v.dot(n) >= 0.0 {
+            continue;
+        }
+        approaching += 1;
+        for e in [0.0, 0.5, 1.0] {
+            let mut hit = body;
+            let r = corner - hit.position;
+            let j = normal_impulse(v, n, r, 1.0 / hit.mass, hit.world_inverse_inertia(), e);
+            assert!(j > 0.0);
+            hit.apply_impulse(j * n, corner);
+            let after = hit.point_velocity(corner).dot(n);
+            assert!(
+                (after + e * v.dot(n)).abs() < 1e-4 * v.dot(n).abs(),
+                "attitude {k}, e = {e}: {} became {after}",
+                v.dot(n)
+            );
+            let (e0, e1) = (body.kinetic_energy(), hit.kinetic_energy());
+            assert!(e1 <= e0 * (1.0 + 1e-5), "e = {e}: energy {e0} became {e1}");
+            if e == 1.0 {
+                assert!((e1 - e0).abs() < 1e-5 * e0, "e = 1 keeps {e0}, got {e1}");
+            }
+        }
+    }
+    assert!(approaching >= 8, "only {approaching} attitudes approach");
+}
+
+#[test]
+fn a_separating_point_gets_no_impulse_and_one_under_the_centre_gets_no_spin() {
+    let body = racket();
+    let inv_i = body.world_inverse_inertia();
+    let r = Vec3::new(0.2, -0.1, 0.0);
+    assert_eq!(
+        normal_impulse(Vec3::new(0.0, 1.0, 0.0), Vec3::Y, r, 1.0, inv_i, 0.5),
+        0.0
+    );
+    assert_eq!(
+        normal_impulse(Vec3::new(3.0, 0.0, 0.0), Vec3::Y, r, 1.0, inv_i, 0.5),
+        0.0
+    );
+    // Straight under the centre of mass the body responds as a particle: j = (1 + e) m |v|.
+    let j = normal_impulse(
+        Vec3::new(0.0, -2.0, 0.0),
+        Vec3::Y,
+        -0.15 * Vec3::Y,
+        1.0,
+        inv_i,
+        0.5,
+    );
+    assert!((j - 3.0).abs() < 1e-6, "{j}");
 }

@@ -1,13 +1,27 @@
-//! The coming rigid-body lesson's first figure: the tennis racket (the intermediate-axis
-//! instability), spun about its middle axis and stepped by three angular integrators side by
-//! side, with the energy and the angular momentum each keeps (see [`crate::rigid_body`]).
+//! Figure logic for lesson 14, "Rigid bodies" (see [`crate::rigid_body`]):
+//!
+//! - [`ThrowFigure`] (figure 1): a box thrown up with spin; `L` stays fixed in the world while ω
+//!   wobbles around it (the space cone), and the centre of mass flies its parabola.
+//! - [`RacketFigure`] (figure 2): the tennis racket (the intermediate-axis instability), spun
+//!   about its middle axis and stepped by three angular integrators side by side, with the
+//!   energy and the angular momentum each keeps.
+//! - [`ImpulseFigure`] (figure 3): a box dropped tilted meets the ground with one corner; the one
+//!   impulse [`crate::rigid_body::normal_impulse`] that resolves it, with v and ω before and after.
+//! - [`StackFigure`] (figure 4): a stack of boxes or a row of dominoes on the contact solver
+//!   (sequential impulses), with its passes, friction and restitution.
+//! - [`DriftFigure`] (figure 5): quaternion drift, the additive orientation step with and without
+//!   normalising beside the exponential one.
+//!
+//! Each is deterministic: the state at timeline time `t` is the state after `⌊t / Δt⌋` steps from
+//! the start, replayed when the time goes back or a setting changes.
 
-use super::particles::{steps_to, SIM_DT};
-use super::{in_range, palette, Frame};
-use crate::draw::{MeshId, ARROW_PX};
+use super::particles::{steps_to, MAX_SIM_TIME, SIM_DT};
+use super::{format_number, in_range, palette, whole_number, Frame};
+use crate::draw::{MeshId, StrokeStyle, ARROW_PX, DOT_PX};
+use crate::rigid_body::contact::{corners, BroadPhase, Shape, World};
 use crate::rigid_body::inertia::solid_box;
-use crate::rigid_body::{AngularStep, OrientationStep, RigidBody};
-use glam::{Mat4, Vec3};
+use crate::rigid_body::{normal_impulse, AngularStep, OrientationStep, RigidBody};
+use glam::{Mat4, Quat, Vec3};
 
 /// The racket's half-extents (m): long along x, middle along y, thin along z, so its moments
 /// are smallest about x, in between about y, largest about z.
@@ -175,3 +189,1329 @@ impl RacketFigure {
         )
     }
 }
+
+/// Gravity of the figures that have it (m/s²).
+pub const GRAVITY: Vec3 = Vec3::new(0.0, -9.81, 0.0);
+/// The thrown box's half-extents (m): long along its x, middle along y, thin along z; 1 kg. Its
+/// moments are smallest about x, in between about y, largest about z (the shortest axis).
+pub const THROW_HALF: Vec3 = Vec3::new(0.3, 0.15, 0.08);
+/// Where the throw starts (the centre of mass, m) and the velocity it is thrown with (m/s).
+pub const THROW_START: Vec3 = Vec3::new(-0.9, 1.0, 0.0);
+pub const THROW_VELOCITY: Vec3 = Vec3::new(1.2, 7.5, 0.0);
+/// Substeps of the throw per [`SIM_DT`]. The rotation is stepped at first order: at a whole
+/// `SIM_DT` a box spun at 10 rad/s gains more than double its rotational energy within the
+/// flight; at 1/50 of it, at most 3 % at the top spin (measured in the tests).
+pub const THROW_SUBSTEPS: usize = 50;
+/// Length of the drawn `L` (m); ω is drawn at the scale that makes its component along `L` as
+/// long, so ω's tip moves on the plane across `L` through `L`'s tip.
+pub const THROW_ARROW_M: f32 = 0.8;
+
+/// The world direction of the thrown box's angular momentum: mostly up, leaning towards the
+/// default camera so the arrow and the cone around it are seen from the side.
+fn throw_l_direction() -> Vec3 {
+    Vec3::new(0.35, 1.0, 0.25).normalize()
+}
+
+/// The moments of a 1 kg solid box of half-extents `half`.
+fn box_moments(half: Vec3) -> Vec3 {
+    let i = solid_box(1.0, half);
+    Vec3::new(i.x_axis.x, i.y_axis.y, i.z_axis.z)
+}
+
+/// Figure 1: a box thrown up with spin. Gravity pulls on the centre of mass only, so it exerts no
+/// torque: the centre flies the parabola `x₀ + v₀ t + ½ g t²` while the angular momentum `L`
+/// stays fixed in the world. The angular velocity ω is not fixed: unless the box spins about a
+/// principal axis, ω wobbles around `L` (its tip runs round the *space cone*), since `ω = I⁻¹ L`
+/// in the body's turning frame.
+///
+/// The spin axis starts in the box's x–z plane, `tilt` degrees from its shortest axis z (the
+/// axis of the largest moment) towards its longest axis x: tilt 0 spins the box about a
+/// principal axis, and ω stays along `L`. The box is turned at the start so that `L` points
+/// along a fixed world direction, mostly up.
+///
+/// The box is stepped [`THROW_SUBSTEPS`] times per [`SIM_DT`]: the rotation with
+/// [`AngularStep::Momentum`] and [`OrientationStep::Exponential`], with ω read off the `L` of
+/// the throw after each substep; the centre with semi-implicit Euler, started with the velocity
+/// half a substep of gravity back (`v₀ − ½ g h`, leapfrog's start), which puts every step's
+/// centre exactly on the parabola. The flight lasts until the centre is back at its start height,
+/// `2 v₀ᵧ / g` ([`ThrowFigure::duration_sec`]); later times hold that moment (the box is caught).
+#[derive(Clone, Debug)]
+pub struct ThrowFigure {
+    spin: f32,
+    tilt_deg: f32,
+    body: RigidBody,
+    /// The angular momentum of the throw (world), held through the flight.
+    l_world: Vec3,
+    steps_done: usize,
+    /// Per step: `[t, |ω|, |L|, angle between ω and L (deg), rotational energy]`.
+    history: Vec<[f32; 5]>,
+    /// Per step: ω in the world (rad/s), for the trail of its tip.
+    omegas: Vec<Vec3>,
+}
+
+impl Default for ThrowFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl ThrowFigure {
+    /// Spun at 10 rad/s, 20° from the shortest axis.
+    pub fn new() -> Self {
+        let mut f = Self {
+            spin: 10.0,
+            tilt_deg: 20.0,
+            body: RigidBody::new(1.0, box_moments(THROW_HALF)).expect("a box's moments"),
+            l_world: Vec3::ZERO,
+            steps_done: 0,
+            history: Vec::new(),
+            omegas: Vec::new(),
+        };
+        f.restart();
+        f
+    }
+
+    /// The spin (rad/s, 0 to 15) and the spin axis's angle from the box's shortest axis towards
+    /// its longest (degrees, 0 to 80); the throw starts again.
+    pub fn set_throw(&mut self, spin: f32, tilt_deg: f32) -> Result<(), String> {
+        let spin = in_range("spin", spin, 0.0, 15.0)?;
+        let tilt_deg = in_range("tilt", tilt_deg, 0.0, 80.0)?;
+        self.spin = spin;
+        self.tilt_deg = tilt_deg;
+        self.restart();
+        Ok(())
+    }
+
+    /// The flight's length (s): until the centre of mass is back at its start height.
+    pub fn duration_sec(&self) -> f32 {
+        2.0 * THROW_VELOCITY.y / -GRAVITY.y
+    }
+
+    /// Steps in the flight.
+    fn flight_steps(&self) -> usize {
+        (self.duration_sec() / SIM_DT).floor() as usize
+    }
+
+    /// The box as thrown.
+    pub fn first(&self) -> RigidBody {
+        let mut body = RigidBody::new(1.0, box_moments(THROW_HALF)).expect("a box's moments");
+        let (s, c) = self.tilt_deg.to_radians().sin_cos();
+        let axis = Vec3::new(s, 0.0, c);
+        // L's direction in the body depends on the tilt only, so the box starts in the same
+        // attitude at any spin, 0 included.
+        let l_body = (body.inertia * axis).normalize();
+        body.orientation = Quat::from_rotation_arc(l_body, throw_l_direction());
+        body.omega_body = self.spin * axis;
+        body.position = THROW_START;
+        body.velocity = THROW_VELOCITY - 0.5 * GRAVITY * (SIM_DT / THROW_SUBSTEPS as f32);
+        body
+    }
+
+    /// The centre of mass on the parabola at `time_sec`.
+    pub fn parabola(time_sec: f32) -> Vec3 {
+        THROW_START + THROW_VELOCITY * time_sec + 0.5 * GRAVITY * time_sec * time_sec
+    }
+
+    fn restart(&mut self) {
+        self.body = self.first();
+        self.l_world = self.body.angular_momentum();
+        self.steps_done = 0;
+        self.history.clear();
+        self.omegas.clear();
+        self.record();
+    }
+
+    fn record(&mut self) {
+        let b = &self.body;
+        let (omega, l) = (b.omega_world(), b.angular_momentum());
+        let rotational = 0.5 * b.omega_body.dot(b.inertia * b.omega_body);
+        self.history.push([
+            self.steps_done as f32 * SIM_DT,
+            omega.length(),
+            l.length(),
+            angle_deg(omega, l),
+            rotational,
+        ]);
+        self.omegas.push(omega);
+    }
+
+    /// Steps the throw to `time_sec` (0 to 60 s; past [`ThrowFigure::duration_sec`] the box
+    /// holds where the flight ends); an earlier time starts again.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        let target = steps_to(time_sec)?.min(self.flight_steps());
+        if target < self.steps_done {
+            self.restart();
+        }
+        let dt = SIM_DT / THROW_SUBSTEPS as f32;
+        let l = self.l_world;
+        while self.steps_done < target {
+            for _ in 0..THROW_SUBSTEPS {
+                let b = &mut self.body;
+                b.step(
+                    dt,
+                    GRAVITY,
+                    AngularStep::Momentum,
+                    OrientationStep::Exponential,
+                );
+                // ω read off the L of the throw, not the L read back from the body: the
+                // rounding of that round trip adds up over the flight's substeps.
+                b.omega_body = (b.orientation.normalize().inverse() * l) / b.inertia;
+            }
+            self.steps_done += 1;
+            self.record();
+        }
+        Ok(())
+    }
+
+    /// One row per step so far: `[t (s), |ω| (rad/s), |L| (kg m²/s), angle between ω and L
+    /// (degrees; 0 without spin), rotational energy ½ ω · I ω (J)]`.
+    pub fn samples(&self) -> &[[f32; 5]] {
+        &self.history
+    }
+
+    /// The box now.
+    pub fn body(&self) -> &RigidBody {
+        &self.body
+    }
+
+    /// ω in the world at every step so far (rad/s).
+    pub fn omegas(&self) -> &[Vec3] {
+        &self.omegas
+    }
+
+    /// Draws the box, the parabola of its centre (dashed), `L` (purple, fixed) and ω (teal) from
+    /// the centre of mass, and the trail of ω's tip; returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(16, 0.25);
+        let t_end = self.duration_sec();
+        let apex = Self::parabola(0.5 * t_end);
+        let reach = THROW_HALF.length().max(THROW_ARROW_M + 0.2);
+        frame.keep_box_in_view(
+            THROW_START.min(Self::parabola(t_end)) - Vec3::new(reach, THROW_START.y, reach),
+            THROW_START.max(Self::parabola(t_end)).max(apex) + Vec3::splat(reach),
+        );
+        let path: Vec<Vec3> = (0..=48)
+            .map(|k| Self::parabola(t_end * k as f32 / 48.0))
+            .collect();
+        frame.stroke(&path, palette::GREY, StrokeStyle::dashed(2.0, 0.08, 0.06));
+        let b = &self.body;
+        let at = b.position;
+        let model = Mat4::from_translation(at)
+            * Mat4::from_mat3(b.rotation())
+            * Mat4::from_scale(THROW_HALF);
+        frame.mesh(MeshId::CUBE, model, palette::ORANGE);
+        let lowest = corners(b, THROW_HALF)
+            .into_iter()
+            .fold(at, |low, c| if c.y < low.y { c } else { low });
+        frame.contact_shadow(Vec3::new(at.x, lowest.y, at.z), THROW_HALF.x);
+        frame.marker(at, DOT_PX, palette::DARK);
+        let t = self.steps_done as f32 * SIM_DT;
+        let l = b.angular_momentum();
+        let omega = b.omega_world();
+        let l_dir = throw_l_direction();
+        let along = self.omegas[0].dot(l_dir);
+        if self.spin == 0.0 || along <= 0.0 {
+            return format!(
+                "t = {t:.2} s. No spin: ω and L are zero, and the box flies its parabola \
+                 without turning."
+            );
+        }
+        let l_tip = at + THROW_ARROW_M * l_dir;
+        frame.arrow(at, l_tip, palette::PURPLE, 0.08);
+        frame.label(l_tip + Vec3::new(-0.12, 0.05, 0.0), "L", palette::PURPLE);
+        // ω at the scale that puts its tip on the plane across L through L's tip.
+        let scale = THROW_ARROW_M / along;
+        let trail: Vec<Vec3> = self.omegas.iter().map(|w| at + scale * *w).collect();
+        let light = palette::TEAL.lerp(Vec3::ONE, 0.45);
+        frame.wide_polyline(&trail, light, 3.0);
+        let w_tip = at + scale * omega;
+        frame.arrow(at, w_tip, palette::TEAL, 0.08);
+        frame.label(w_tip + Vec3::new(0.05, 0.05, 0.0), "ω", palette::TEAL);
+        let row = self.history.last().copied().unwrap_or([0.0; 5]);
+        let turned = angle_deg(omega, self.omegas[0]);
+        let l0 = self.history[0][2];
+        format!(
+            "t = {t:.2} s. L stays fixed in the world: |L| = {} kg m²/s ({} at the throw), its \
+             direction unchanged. ω moves: |ω| = {:.2} rad/s, {:.1}° from L, {:.1}° from where it \
+             started; its tip stays on the plane across L (ω · L = 2 E_rot = {} J).",
+            format_number(l.length()),
+            format_number(l0),
+            row[1],
+            row[3],
+            turned,
+            format_number(omega.dot(l)),
+        )
+    }
+}
+
+/// The angle between two vectors in degrees; 0 when either is (nearly) zero.
+fn angle_deg(a: Vec3, b: Vec3) -> f32 {
+    let d = (a.length() * b.length()).max(0.0);
+    if d < 1e-12 {
+        return 0.0;
+    }
+    (a.dot(b) / d).clamp(-1.0, 1.0).acos().to_degrees()
+}
+
+/// The dropped box's half-extents (m), 1 kg: it lies on its largest face (x–z) when level.
+pub const DROP_HALF: Vec3 = Vec3::new(0.3, 0.1, 0.2);
+/// The dropped box's turn about the vertical before it is tilted (degrees): with it, a tilt about
+/// the world z axis lowers one corner below all the others.
+pub const DROP_YAW_DEG: f32 = 25.0;
+/// The impulse figure's timeline (s).
+pub const DROP_DURATION_SEC: f32 = 2.0;
+/// Corners within this height of the lowest one touch together (m): the impulse acts at their
+/// mean (a level box lands on the middle of its face).
+pub const TIE_M: f32 = 1e-4;
+/// Drawn lengths: metres per m/s (v, and the impulse as the velocity change `j / m` it gives)
+/// and per rad/s (ω).
+pub const VELOCITY_SCALE: f32 = 0.1;
+pub const OMEGA_SCALE: f32 = 0.05;
+/// Halvings of a step in the search for the moment of contact.
+const BISECTIONS: usize = 16;
+/// Substeps of the contact solver per [`SIM_DT`] after the first impact.
+pub const AFTER_SUBSTEPS: usize = 10;
+
+/// The first impact of the dropped box: what the page reports.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Impact {
+    /// When (s, between two steps: the moment of contact found by bisection).
+    pub time_sec: f32,
+    /// The contact point (world) and the centre of mass then.
+    pub point: Vec3,
+    pub centre: Vec3,
+    /// The impulse's size (N s); it acts along the ground's normal +y.
+    pub j: f32,
+    pub velocity_before: Vec3,
+    pub velocity_after: Vec3,
+    /// Angular velocity in the world (rad/s).
+    pub omega_before: Vec3,
+    pub omega_after: Vec3,
+    /// The contact point's velocity along the normal (m/s): negative approaching.
+    pub normal_before: f32,
+    pub normal_after: f32,
+    /// Kinetic energy (J).
+    pub energy_before: f32,
+    pub energy_after: f32,
+    /// The box's attitude then.
+    pub orientation: Quat,
+}
+
+/// Figure 3: a box dropped tilted, so that one corner meets the ground first, and the one impulse
+/// that resolves the impact ([`crate::rigid_body::normal_impulse`], frictionless: it acts along
+/// the ground's normal only). The box falls without spin; at the moment of contact (found by
+/// bisection within the step, so the box never sinks into the ground) the corner gets `j n`,
+/// which sets the corner's normal velocity to `−e` times what it was, and gives the box the spin
+/// `I⁻¹ (r × j n)`; [`ImpulseFigure::impact`] reports it. Then the box flies on under the
+/// contact solver of [`crate::rigid_body::contact`] (frictionless, the same `e`,
+/// [`AFTER_SUBSTEPS`] substeps a step) until the timeline's end ([`DROP_DURATION_SEC`]): one
+/// impulse at a time cannot bring a box to rest on several corners (it rattles between them),
+/// the sequential impulses of the stack figure can. No force ever pushes the box sideways, so
+/// its centre of mass moves only up and down.
+#[derive(Clone, Debug)]
+pub struct ImpulseFigure {
+    tilt_deg: f32,
+    restitution: f32,
+    height_m: f32,
+    body: RigidBody,
+    steps_done: usize,
+    first_impact: Option<Impact>,
+    /// The contact solver that takes the box over after the first impact.
+    after: Option<World>,
+    /// When the contact solver's step failed (the figure stops there).
+    stopped: Option<f32>,
+    /// Per step: `[t, centre height, lowest point's normal velocity, kinetic energy]`.
+    history: Vec<[f32; 4]>,
+}
+
+impl Default for ImpulseFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl ImpulseFigure {
+    /// Tilted 20°, restitution 0.5, dropped from 1 m.
+    pub fn new() -> Self {
+        let mut f = Self {
+            tilt_deg: 20.0,
+            restitution: 0.5,
+            height_m: 1.0,
+            body: RigidBody::new(1.0, box_moments(DROP_HALF)).expect("a box's moments"),
+            steps_done: 0,
+            first_impact: None,
+            after: None,
+            stopped: None,
+            history: Vec::new(),
+        };
+        f.restart();
+        f
+    }
+
+    /// The tilt about the world z axis (degrees, 0 to 45), the coefficient of restitution (0 to
+    /// 1) and the height of the lowest corner at release (m, 0.2 to 2); the drop starts again.
+    pub fn set_drop(
+        &mut self,
+        tilt_deg: f32,
+        restitution: f32,
+        height_m: f32,
+    ) -> Result<(), String> {
+        let tilt_deg = in_range("tilt", tilt_deg, 0.0, 45.0)?;
+        let restitution = in_range("restitution", restitution, 0.0, 1.0)?;
+        let height_m = in_range("height", height_m, 0.2, 2.0)?;
+        self.tilt_deg = tilt_deg;
+        self.restitution = restitution;
+        self.height_m = height_m;
+        self.restart();
+        Ok(())
+    }
+
+    /// The timeline's length (s).
+    pub fn duration_sec(&self) -> f32 {
+        DROP_DURATION_SEC
+    }
+
+    /// The box at release: turned by [`DROP_YAW_DEG`] about the vertical, then tilted about z,
+    /// its lowest corner `height_m` above the ground, at rest.
+    pub fn first(&self) -> RigidBody {
+        let mut body = RigidBody::new(1.0, box_moments(DROP_HALF)).expect("a box's moments");
+        body.orientation = Quat::from_rotation_z(-self.tilt_deg.to_radians())
+            * Quat::from_rotation_y(DROP_YAW_DEG.to_radians());
+        let (_, low) = touching(&body);
+        body.position.y = self.height_m - low;
+        body
+    }
+
+    fn restart(&mut self) {
+        self.body = self.first();
+        self.steps_done = 0;
+        self.first_impact = None;
+        self.after = None;
+        self.stopped = None;
+        self.history.clear();
+        self.record();
+    }
+
+    fn record(&mut self) {
+        let b = &self.body;
+        let (point, _) = touching(b);
+        self.history.push([
+            self.steps_done as f32 * SIM_DT,
+            b.position.y,
+            b.point_velocity(point).y,
+            b.kinetic_energy(),
+        ]);
+    }
+
+    /// One step of [`SIM_DT`]: before the first impact, free flight up to the moment of
+    /// contact and the impulse there; after it, the contact solver's substeps.
+    fn step(&mut self) {
+        let mut left = SIM_DT;
+        if self.after.is_none() {
+            let mut trial = self.body;
+            fly_free(&mut trial, left);
+            if touching(&trial).1 >= 0.0 {
+                self.body = trial;
+                return;
+            }
+            // The largest share of the step that keeps every corner above the ground.
+            let (mut lo, mut hi) = (0.0f32, 1.0f32);
+            for _ in 0..BISECTIONS {
+                let mid = 0.5 * (lo + hi);
+                let mut b = self.body;
+                fly_free(&mut b, mid * left);
+                if touching(&b).1 >= 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            fly_free(&mut self.body, lo * left);
+            left -= lo * left;
+            let b = &mut self.body;
+            let (point, _) = touching(b);
+            let v = b.point_velocity(point);
+            let r = point - b.position;
+            let inv_inertia = b.world_inverse_inertia();
+            let j = normal_impulse(v, Vec3::Y, r, 1.0 / b.mass, inv_inertia, self.restitution);
+            let before = *b;
+            b.apply_impulse(j * Vec3::Y, point);
+            self.first_impact = Some(Impact {
+                time_sec: (self.steps_done as f32 + lo) * SIM_DT,
+                point,
+                centre: before.position,
+                j,
+                velocity_before: before.velocity,
+                velocity_after: b.velocity,
+                omega_before: before.omega_world(),
+                omega_after: b.omega_world(),
+                normal_before: v.y,
+                normal_after: b.point_velocity(point).y,
+                energy_before: before.kinetic_energy(),
+                energy_after: b.kinetic_energy(),
+                orientation: before.orientation,
+            });
+            let mut world = World::default();
+            world.restitution = self.restitution;
+            world.friction = 0.0;
+            world.broad_phase = BroadPhase::AllPairs;
+            if world.add(*b, Shape::Cuboid { half: DROP_HALF }).is_err() {
+                self.stopped = Some(self.steps_done as f32 * SIM_DT);
+                return;
+            }
+            self.after = Some(world);
+        }
+        if self.stopped.is_some() {
+            return;
+        }
+        let Some(world) = self.after.as_mut() else {
+            return;
+        };
+        let n = (left * AFTER_SUBSTEPS as f32 / SIM_DT).ceil().max(1.0);
+        for _ in 0..n as usize {
+            if world.step(left / n).is_err() {
+                self.stopped = Some(self.steps_done as f32 * SIM_DT);
+                break;
+            }
+        }
+        self.body = world.bodies[0].0;
+    }
+
+    /// Steps the drop to `time_sec` (0 to 60 s; past [`DROP_DURATION_SEC`] it holds the end); an
+    /// earlier time starts again.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        let end = (DROP_DURATION_SEC / SIM_DT + 1e-3).floor() as usize;
+        let target = steps_to(time_sec)?.min(end);
+        if target < self.steps_done {
+            self.restart();
+        }
+        while self.steps_done < target {
+            self.step();
+            self.steps_done += 1;
+            self.record();
+        }
+        Ok(())
+    }
+
+    /// One row per step so far: `[t (s), height of the centre of mass (m), normal velocity of
+    /// the lowest point (m/s; the lowest corner, or the mean of those level with it), kinetic
+    /// energy (J)]`.
+    pub fn samples(&self) -> &[[f32; 4]] {
+        &self.history
+    }
+
+    /// The first impact so far: its time (s) and the impulse's size `j` (N s).
+    pub fn impact(&self) -> Option<(f32, f32)> {
+        self.first_impact.map(|i| (i.time_sec, i.j))
+    }
+
+    /// Everything about the first impact so far.
+    pub fn impact_details(&self) -> Option<&Impact> {
+        self.first_impact.as_ref()
+    }
+
+    /// When the contact solver failed after the impact (the figure stopped there), if it did.
+    pub fn stopped(&self) -> Option<f32> {
+        self.stopped
+    }
+
+    /// The box now.
+    pub fn body(&self) -> &RigidBody {
+        &self.body
+    }
+
+    /// Draws the box and, from the first impact on, the box as it was then (outlined), the
+    /// contact point, the impulse `j n` (red, drawn as the velocity change `j / m`), and v (blue)
+    /// and ω (teal) before (faded) and after (solid) from the centre of mass then; returns the
+    /// note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(12, 0.25);
+        let top = self.first().position.y + DROP_HALF.length();
+        frame.keep_box_in_view(
+            Vec3::new(-0.8, 0.0, -0.6),
+            Vec3::new(0.8, top.max(1.2), 0.6),
+        );
+        let b = &self.body;
+        let model = Mat4::from_translation(b.position)
+            * Mat4::from_mat3(b.rotation())
+            * Mat4::from_scale(DROP_HALF);
+        frame.mesh(MeshId::CUBE, model, palette::ORANGE);
+        let (low_point, low) = touching(b);
+        frame.contact_shadow(Vec3::new(b.position.x, low, b.position.z), DROP_HALF.x);
+        let e = self.restitution;
+        let Some(hit) = self.first_impact else {
+            frame.marker(low_point, DOT_PX, palette::DARK);
+            return format!(
+                "Falling: the lowest corner is {} m above the ground, moving at {} m/s. \
+                 Restitution e = {}.",
+                format_number(low.max(0.0)),
+                format_number(b.point_velocity(low_point).y),
+                format_number(e),
+            );
+        };
+        // The box at the impact, outlined.
+        let then = {
+            let mut t = *b;
+            t.position = hit.centre;
+            t.orientation = hit.orientation;
+            t
+        };
+        let c = corners(&then, DROP_HALF);
+        for (i, k) in BOX_EDGES {
+            frame.wide_line(c[i], c[k], palette::GREY, 1.5);
+        }
+        let faded = |c: Vec3| c.lerp(Vec3::ONE, 0.55);
+        let o = hit.centre;
+        frame.marker(o, DOT_PX, palette::DARK);
+        let arrows = [
+            (
+                hit.velocity_before * VELOCITY_SCALE,
+                faded(palette::BLUE),
+                "v before",
+            ),
+            (
+                hit.velocity_after * VELOCITY_SCALE,
+                palette::BLUE,
+                "v after",
+            ),
+            (
+                hit.omega_before * OMEGA_SCALE,
+                faded(palette::TEAL),
+                "ω before",
+            ),
+            (hit.omega_after * OMEGA_SCALE, palette::TEAL, "ω after"),
+        ];
+        for (d, color, name) in arrows {
+            if d.length() > 1e-3 {
+                frame.arrow(o, o + d, color, 0.06);
+                frame.label(o + d + 0.04 * d.normalize(), name, color);
+            }
+        }
+        let j_tip = hit.point + Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE);
+        frame.arrow(hit.point, j_tip, palette::RED, 0.06);
+        frame.label(j_tip + Vec3::new(0.04, 0.02, 0.0), "j n", palette::RED);
+        frame.marker_on_top(hit.point, 12.0, palette::DARK);
+        frame.label_left(
+            hit.point - Vec3::new(0.04, 0.0, 0.0),
+            "contact",
+            palette::DARK,
+        );
+        let v3 = |v: Vec3| {
+            format!(
+                "({}, {}, {})",
+                format_number(v.x),
+                format_number(v.y),
+                format_number(v.z)
+            )
+        };
+        let stopped = match self.stopped {
+            Some(t) => format!(
+                " The contact solver's step failed at t = {} s (a state that is not finite): the \
+                 figure stopped there.",
+                format_number(t)
+            ),
+            None => String::new(),
+        };
+        format!(
+            "Impact at t = {} s: j = {} N s along n = +y at the contact. The contact point's \
+             normal velocity {} → {} m/s (−e times it, e = {}). v {} → {} m/s; ω {} → {} rad/s \
+             (|ω| = {}). Kinetic energy {} → {} J. After the impact the contact solver of the \
+             stack figure takes the box over.{stopped}",
+            format_number(hit.time_sec),
+            format_number(hit.j),
+            format_number(hit.normal_before),
+            format_number(hit.normal_after),
+            format_number(e),
+            v3(hit.velocity_before),
+            v3(hit.velocity_after),
+            v3(hit.omega_before),
+            v3(hit.omega_after),
+            format_number(hit.omega_after.length()),
+            format_number(hit.energy_before),
+            format_number(hit.energy_after),
+        )
+    }
+}
+
+/// Free flight under gravity for `dt` seconds, in substeps of at most [`SIM_DT`] /
+/// [`THROW_SUBSTEPS`] (a box spinning at 40 rad/s after an impact turns 0.7 rad in a whole
+/// `SIM_DT`, where the first-order rotation step gains energy fast).
+fn fly_free(body: &mut RigidBody, dt: f32) {
+    if dt <= 0.0 {
+        return;
+    }
+    let n = (dt * THROW_SUBSTEPS as f32 / SIM_DT).ceil().max(1.0);
+    let h = dt / n;
+    for _ in 0..n as usize {
+        body.step(
+            h,
+            GRAVITY,
+            AngularStep::Momentum,
+            OrientationStep::Exponential,
+        );
+    }
+}
+
+/// The dropped box's touching point and its height: the lowest corner, or the mean of the
+/// corners within [`TIE_M`] of the lowest.
+fn touching(body: &RigidBody) -> (Vec3, f32) {
+    let c = corners(body, DROP_HALF);
+    let low = c.iter().map(|p| p.y).fold(f32::INFINITY, f32::min);
+    let (sum, n) = c
+        .iter()
+        .filter(|p| p.y <= low + TIE_M)
+        .fold((Vec3::ZERO, 0.0), |(s, n), p| (s + *p, n + 1.0));
+    (sum / n, low)
+}
+
+/// What the stack figure shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StackPreset {
+    /// Three boxes on the ground, one on another, each [`STACK_OFFSET_M`] further along x.
+    Stack,
+    /// A row of [`DOMINOES`] thin upright boxes, the first tipped by [`DOMINO_TIP_DEG`].
+    Dominoes,
+}
+
+/// The stacked boxes' half-extents (m), 1 kg each.
+pub const STACK_HALF: Vec3 = Vec3::new(0.25, 0.15, 0.25);
+/// How far each box of the stack sits along x from the one under it (m).
+pub const STACK_OFFSET_M: f32 = 0.01;
+/// The dominoes' half-extents (m: 5 cm thick, 40 cm tall, 20 cm wide), 1 kg each.
+pub const DOMINO_HALF: Vec3 = Vec3::new(0.025, 0.2, 0.1);
+pub const DOMINOES: usize = 10;
+/// The distance between neighbouring dominoes' centres (m): less than their height, so each
+/// falling one reaches the next.
+pub const DOMINO_SPACING_M: f32 = 0.25;
+/// The first domino's tilt towards the row at the start (degrees): it falls by itself.
+pub const DOMINO_TIP_DEG: f32 = 15.0;
+/// A domino counts as fallen past this tilt from upright (degrees).
+pub const FALLEN_DEG: f32 = 45.0;
+/// The contact solver's substeps per [`SIM_DT`] (the core's tests step at 1/120 s).
+pub const STACK_SUBSTEPS: usize = 2;
+/// The impulse of [`StackFigure::push`] (N s, along +x): on the top box's centre, or on the
+/// first domino's top.
+pub const STACK_PUSH: f32 = 2.0;
+pub const DOMINO_PUSH: f32 = 0.3;
+/// The most pushes a run remembers.
+pub const MAX_PUSHES: usize = 64;
+/// Size of a contact point's dot (CSS pixels).
+pub const CONTACT_PX: f32 = 9.0;
+/// The boxes' colours, in turn.
+const BOX_COLORS: [Vec3; 7] = [
+    palette::ORANGE,
+    palette::TEAL,
+    palette::PURPLE,
+    palette::BLUE,
+    palette::PINK,
+    palette::GREEN,
+    palette::BROWN,
+];
+
+/// Figure 4: a stack of three boxes, or a row of dominoes, on the contact solver of
+/// [`crate::rigid_body::contact`] (sequential impulses). The reader sets the solver's passes
+/// per step, friction and restitution (the run starts again) and pushes: the top box of the
+/// stack gets a sideways shove, the first domino a push at its top. Pushes are recorded with the
+/// frame they happened at and replayed, so the state at a time is always the same. With too few
+/// passes the contacts are not resolved before the step ends: the stack sinks, jitters and falls
+/// apart. A step that fails ([`World::step`] returns an error: a state that is not finite)
+/// stops the figure there ([`StackFigure::exploded`]).
+#[derive(Clone, Debug)]
+pub struct StackFigure {
+    preset: StackPreset,
+    iterations: usize,
+    friction: f32,
+    restitution: f32,
+    world: World,
+    /// Where each body starts.
+    start: Vec<Vec3>,
+    steps_done: usize,
+    /// The frames at which pushes happened, in order.
+    pushes: Vec<usize>,
+    exploded: Option<f32>,
+    /// The contact points at the present state (what the next step resolves).
+    contact_points: Vec<Vec3>,
+    /// Per step: `[t, total kinetic energy, distance the tracked body has moved]`.
+    history: Vec<[f32; 3]>,
+}
+
+impl StackFigure {
+    /// The figure of `preset` with the core's solver defaults: 20 passes, friction 0.5,
+    /// restitution 0.
+    pub fn new(preset: StackPreset) -> Self {
+        let mut f = Self {
+            preset,
+            iterations: 20,
+            friction: 0.5,
+            restitution: 0.0,
+            world: World::default(),
+            start: Vec::new(),
+            steps_done: 0,
+            pushes: Vec::new(),
+            exploded: None,
+            contact_points: Vec::new(),
+            history: Vec::new(),
+        };
+        f.restart();
+        f
+    }
+
+    /// The solver's passes over the contacts per step (a whole number, 1 to 50), the friction
+    /// coefficient μ (0 to 1) and the restitution e (0 to 1); the run starts again, with the
+    /// pushes made so far.
+    pub fn set_solver(
+        &mut self,
+        iterations: f32,
+        friction: f32,
+        restitution: f32,
+    ) -> Result<(), String> {
+        let iterations = whole_number("iterations", iterations, 1, 50)?;
+        let friction = in_range("friction", friction, 0.0, 1.0)?;
+        let restitution = in_range("restitution", restitution, 0.0, 1.0)?;
+        self.iterations = iterations;
+        self.friction = friction;
+        self.restitution = restitution;
+        self.restart();
+        Ok(())
+    }
+
+    /// The preset shown.
+    pub fn preset(&self) -> StackPreset {
+        self.preset
+    }
+
+    /// The timeline's length (s): 10 for the stack, 4 for the dominoes (they are all down by 2).
+    pub fn duration_sec(&self) -> f32 {
+        match self.preset {
+            StackPreset::Stack => 10.0,
+            StackPreset::Dominoes => 4.0,
+        }
+    }
+
+    /// The body whose travel the samples follow: the top box, or the last domino.
+    pub fn tracked(&self) -> usize {
+        self.world.bodies.len() - 1
+    }
+
+    /// The bodies at the start of a run.
+    fn bodies_at_start(&self) -> Vec<(RigidBody, Shape)> {
+        let make = |half: Vec3, at: Vec3| {
+            let mut b = RigidBody::new(1.0, box_moments(half)).expect("a box's moments");
+            b.position = at;
+            (b, Shape::Cuboid { half })
+        };
+        match self.preset {
+            StackPreset::Stack => (0..3)
+                .map(|k| {
+                    let at = Vec3::new(
+                        STACK_OFFSET_M * k as f32,
+                        STACK_HALF.y * (2 * k + 1) as f32,
+                        0.0,
+                    );
+                    make(STACK_HALF, at)
+                })
+                .collect(),
+            StackPreset::Dominoes => (0..DOMINOES)
+                .map(|k| {
+                    let x = DOMINO_SPACING_M * (k as f32 - 0.5 * (DOMINOES - 1) as f32);
+                    let (mut b, s) = make(DOMINO_HALF, Vec3::new(x, DOMINO_HALF.y, 0.0));
+                    if k == 0 {
+                        // Tipped towards the row about its front bottom edge, which stays on
+                        // the ground.
+                        b.orientation = Quat::from_rotation_z(-DOMINO_TIP_DEG.to_radians());
+                        let low = corners(&b, DOMINO_HALF)
+                            .iter()
+                            .map(|c| c.y)
+                            .fold(f32::INFINITY, f32::min);
+                        b.position.y -= low;
+                    }
+                    (b, s)
+                })
+                .collect(),
+        }
+    }
+
+    fn restart(&mut self) {
+        let mut world = World::default();
+        world.iterations = self.iterations;
+        world.friction = self.friction;
+        world.restitution = self.restitution;
+        world.broad_phase = BroadPhase::AllPairs;
+        for (b, s) in self.bodies_at_start() {
+            world.add(b, s).expect("the preset's bodies are valid");
+        }
+        self.start = world.bodies.iter().map(|(b, _)| b.position).collect();
+        self.world = world;
+        self.steps_done = 0;
+        self.exploded = None;
+        self.history.clear();
+        self.record();
+        self.apply_pushes_at(0);
+        self.find_contacts();
+    }
+
+    fn record(&mut self) {
+        let k = self.tracked();
+        self.history.push([
+            self.steps_done as f32 * SIM_DT,
+            self.world.kinetic_energy(),
+            self.world.bodies[k].0.position.distance(self.start[k]),
+        ]);
+    }
+
+    fn find_contacts(&mut self) {
+        self.contact_points = self.world.contacts().iter().map(|c| c.point).collect();
+    }
+
+    /// The push's impulse on the world as it is now.
+    fn apply_push(&mut self) {
+        let (b, _) = &mut self.world.bodies[match self.preset {
+            StackPreset::Stack => 2,
+            StackPreset::Dominoes => 0,
+        }];
+        match self.preset {
+            StackPreset::Stack => b.apply_impulse(STACK_PUSH * Vec3::X, b.position),
+            StackPreset::Dominoes => {
+                let top = b.position + b.orientation * Vec3::new(0.0, DOMINO_HALF.y, 0.0);
+                b.apply_impulse(DOMINO_PUSH * Vec3::X, top);
+            }
+        }
+    }
+
+    fn apply_pushes_at(&mut self, step: usize) {
+        let n = self.pushes.iter().filter(|&&s| s == step).count();
+        for _ in 0..n {
+            self.apply_push();
+        }
+    }
+
+    /// Pushes now: the top box of the stack sideways ([`STACK_PUSH`] along +x through its
+    /// centre), or the first domino at its top ([`DOMINO_PUSH`]). Remembered for the replays; an
+    /// error past [`MAX_PUSHES`] or after an explosion.
+    pub fn push(&mut self) -> Result<(), String> {
+        if self.pushes.len() >= MAX_PUSHES {
+            return Err(format!(
+                "a run remembers at most {MAX_PUSHES} pushes: press reset"
+            ));
+        }
+        if self.exploded.is_some() {
+            return Err("the run has stopped (the step failed): press reset".into());
+        }
+        self.pushes.push(self.steps_done);
+        self.apply_push();
+        self.find_contacts();
+        Ok(())
+    }
+
+    /// Forgets the pushes and starts again (the solver's settings stay).
+    pub fn reset(&mut self) {
+        self.pushes.clear();
+        self.restart();
+    }
+
+    /// Steps to `time_sec` (0 to 60 s; past [`StackFigure::duration_sec`] it holds the end); an
+    /// earlier time starts again.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        let end = (self.duration_sec() / SIM_DT + 1e-3).floor() as usize;
+        let target = steps_to(time_sec)?.min(end);
+        if target < self.steps_done {
+            self.restart();
+        }
+        let moved = self.steps_done < target;
+        while self.steps_done < target {
+            if self.exploded.is_none() {
+                for _ in 0..STACK_SUBSTEPS {
+                    if self.world.step(SIM_DT / STACK_SUBSTEPS as f32).is_err() {
+                        self.exploded = Some(self.steps_done as f32 * SIM_DT);
+                        break;
+                    }
+                }
+            }
+            self.steps_done += 1;
+            // Recorded before the pushes of this frame, as when the push happened live.
+            if self.exploded.is_none() {
+                self.record();
+                self.apply_pushes_at(self.steps_done);
+            }
+        }
+        if moved {
+            self.find_contacts();
+        }
+        Ok(())
+    }
+
+    /// One row per step so far (none after an explosion): `[t (s), total kinetic energy (J),
+    /// how far the top box (stack) or the last domino has moved from where it started (m)]`.
+    pub fn samples(&self) -> &[[f32; 3]] {
+        &self.history
+    }
+
+    /// When the solver's step failed (s), if it did; the figure stops there.
+    pub fn exploded(&self) -> Option<f32> {
+        self.exploded
+    }
+
+    /// The bodies now.
+    pub fn bodies(&self) -> &[(RigidBody, Shape)] {
+        &self.world.bodies
+    }
+
+    /// The contact points of the present state (world), which the next step resolves.
+    pub fn contact_points(&self) -> &[Vec3] {
+        &self.contact_points
+    }
+
+    /// Body `k`'s tilt: the angle of its own y axis from the vertical (degrees).
+    pub fn tilt_deg(&self, k: usize) -> f32 {
+        self.world.bodies.get(k).map_or(0.0, |(b, _)| {
+            let up = b.orientation.normalize() * Vec3::Y;
+            up.y.clamp(-1.0, 1.0).acos().to_degrees()
+        })
+    }
+
+    /// Dominoes tilted past [`FALLEN_DEG`] (for the stack: boxes, likewise).
+    pub fn fallen(&self) -> usize {
+        (0..self.world.bodies.len())
+            .filter(|&k| self.tilt_deg(k) > FALLEN_DEG)
+            .count()
+    }
+
+    /// Draws the boxes in turns of the palette's colours, the present contact points as red
+    /// dots and a label on the tracked body; returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(16, 0.25);
+        let (lo, hi) = match self.preset {
+            StackPreset::Stack => (Vec3::new(-1.0, 0.0, -0.6), Vec3::new(1.0, 1.2, 0.6)),
+            StackPreset::Dominoes => (Vec3::new(-1.5, 0.0, -0.5), Vec3::new(1.7, 0.7, 0.5)),
+        };
+        frame.keep_box_in_view(lo, hi);
+        for (k, (b, shape)) in self.world.bodies.iter().enumerate() {
+            let half = match shape {
+                Shape::Cuboid { half } => *half,
+                Shape::Sphere { radius } => Vec3::splat(*radius),
+            };
+            let model = Mat4::from_translation(b.position)
+                * Mat4::from_mat3(b.rotation())
+                * Mat4::from_scale(half);
+            frame.mesh(MeshId::CUBE, model, BOX_COLORS[k % BOX_COLORS.len()]);
+        }
+        for p in &self.contact_points {
+            frame.marker_on_top(*p, CONTACT_PX, palette::RED);
+        }
+        let k = self.tracked();
+        let (b, _) = &self.world.bodies[k];
+        let name = match self.preset {
+            StackPreset::Stack => "top box",
+            StackPreset::Dominoes => "last domino",
+        };
+        frame.label(b.position + Vec3::new(0.0, 0.45, 0.0), name, palette::DARK);
+        let row = self.history.last().copied().unwrap_or([0.0; 3]);
+        let t = self.steps_done as f32 * SIM_DT;
+        let solver = format!(
+            "{} solver passes per step ({} steps a frame), friction μ = {}, restitution e = {}.",
+            self.iterations,
+            STACK_SUBSTEPS,
+            format_number(self.friction),
+            format_number(self.restitution),
+        );
+        let state = match self.preset {
+            StackPreset::Stack => format!(
+                "The top box has moved {} cm from where it started; kinetic energy {} J; {} \
+                 contact points.",
+                format_number(100.0 * row[2]),
+                format_number(row[1]),
+                self.contact_points.len(),
+            ),
+            StackPreset::Dominoes => format!(
+                "{} of {DOMINOES} dominoes are down (tilted past {FALLEN_DEG}°); the last one has \
+                 moved {} cm; kinetic energy {} J; {} contact points.",
+                self.fallen(),
+                format_number(100.0 * row[2]),
+                format_number(row[1]),
+                self.contact_points.len(),
+            ),
+        };
+        let pushes = match self.pushes.len() {
+            0 => String::new(),
+            1 => " Pushed once.".to_string(),
+            n => format!(" Pushed {n} times."),
+        };
+        let exploded = match self.exploded {
+            Some(at) => format!(
+                " The solver's step failed at t = {} s (a body's state left the finite \
+                 numbers): the figure stopped there. Raise the passes or press reset.",
+                format_number(at)
+            ),
+            None => String::new(),
+        };
+        format!("t = {t:.2} s. {solver} {state}{pushes}{exploded}")
+    }
+}
+
+/// The drift figure's boxes: how each steps its orientation, and its name.
+pub const DRIFT_STEPS: [(OrientationStep, &str); 3] = [
+    (OrientationStep::Additive, "additive, normalised"),
+    (
+        OrientationStep::AdditiveUnnormalised,
+        "additive, unnormalised",
+    ),
+    (OrientationStep::Exponential, "exponential"),
+];
+/// The drift figure's boxes' half-extents (m), 1 kg; they spin about their shortest axis z (the
+/// largest moment: a stable spin), which points along the world's z, towards the viewer.
+pub const DRIFT_HALF: Vec3 = Vec3::new(0.2, 0.1, 0.05);
+/// The drift figure's timeline (s).
+pub const DRIFT_DURATION_SEC: f32 = 10.0;
+/// The unnormalised box is drawn while `|q|` is at most this: its matrix then stretches it by
+/// at most `2|q|² − 1 = 4` across the spin axis.
+pub const DRIFT_DRAWN_MAX_NORM: f32 = 1.581_138_8; // √2.5
+/// The unnormalised box stops being stepped past this `|q|` (its numbers would overflow).
+pub const DRIFT_MAX_NORM: f32 = 1e6;
+/// Where the boxes stand (x, m) and their height.
+const DRIFT_SPACING_M: f32 = 1.5;
+const DRIFT_HEIGHT_M: f32 = 1.0;
+
+/// Figure 5: quaternion drift. Three boxes spun at the same ω, stepped at the same `Δt` by the
+/// three orientation steps of [`DRIFT_STEPS`]. The additive step `q + ½ Δt ω q = (1 + ½ Δt ω) q`
+/// multiplies `|q|` by `|1 + ½ Δt ω| = √(1 + (|ω| Δt / 2)²)` every step, exactly (the norm of a
+/// product of quaternions is the product of the norms): left unnormalised, `|q|` grows
+/// geometrically, and the matrix built from it by the unit-quaternion formula
+/// ([`RigidBody::rotation`]), `(1 − s²) E + s² R` for `q = s u` with `u` unit, keeps the spin
+/// axis but stretches the box across it, by `|1 − s² + s² e^{iθ}|` at rotation angle θ: from 1
+/// at a whole turn to `2 s² − 1` at a half turn, so the drawn box pulses as it spins.
+/// Normalised, the additive step turns by `2 atan(|ω| Δt / 2)` per step instead of `|ω| Δt`, so
+/// it falls behind the exponential step, which is exact for a constant ω.
+#[derive(Clone, Debug)]
+pub struct DriftFigure {
+    spin: f32,
+    step_ms: f32,
+    bodies: [RigidBody; 3],
+    steps_done: usize,
+    /// Set when the unnormalised box passed [`DRIFT_MAX_NORM`] and stopped.
+    overflowed_at: Option<f32>,
+    /// `[t, |q| of each box]`, one row per step or per frame's worth of steps.
+    history: Vec<[f32; 4]>,
+}
+
+impl Default for DriftFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl DriftFigure {
+    /// Spun at 5 rad/s, stepped every 10 ms.
+    pub fn new() -> Self {
+        let body = RigidBody::new(1.0, box_moments(DRIFT_HALF)).expect("a box's moments");
+        let mut f = Self {
+            spin: 5.0,
+            step_ms: 10.0,
+            bodies: [body; 3],
+            steps_done: 0,
+            overflowed_at: None,
+            history: Vec::new(),
+        };
+        f.restart();
+        f
+    }
+
+    /// The spin (rad/s, 1 to 30) and the time step (ms, 1 to 50); the run starts again.
+    pub fn set_drift(&mut self, spin: f32, step_ms: f32) -> Result<(), String> {
+        let spin = in_range("spin", spin, 1.0, 30.0)?;
+        let step_ms = in_range("step", step_ms, 1.0, 50.0)?;
+        self.spin = spin;
+        self.step_ms = step_ms;
+        self.restart();
+        Ok(())
+    }
+
+    /// The timeline's length (s).
+    pub fn duration_sec(&self) -> f32 {
+        DRIFT_DURATION_SEC
+    }
+
+    /// The time step (s).
+    pub fn dt_sec(&self) -> f32 {
+        self.step_ms / 1000.0
+    }
+
+    /// What each step multiplies the additive step's `|q|` by: `√(1 + (|ω| Δt / 2)²)`.
+    pub fn growth_per_step(&self) -> f32 {
+        let half = 0.5 * self.spin * self.dt_sec();
+        (1.0 + half * half).sqrt()
+    }
+
+    fn restart(&mut self) {
+        let mut body = RigidBody::new(1.0, box_moments(DRIFT_HALF)).expect("a box's moments");
+        body.omega_body = Vec3::new(0.0, 0.0, self.spin);
+        self.bodies = [body; 3];
+        self.steps_done = 0;
+        self.overflowed_at = None;
+        self.history.clear();
+        self.record();
+    }
+
+    fn record(&mut self) {
+        let b = &self.bodies;
+        self.history.push([
+            self.steps_done as f32 * self.dt_sec(),
+            b[0].orientation.length(),
+            b[1].orientation.length(),
+            b[2].orientation.length(),
+        ]);
+    }
+
+    /// Steps the three boxes to `time_sec` (0 to 60 s; past [`DRIFT_DURATION_SEC`] they hold
+    /// the end); an earlier time starts again.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        let t = in_range("time", time_sec, 0.0, MAX_SIM_TIME)?;
+        let dt = self.dt_sec();
+        let target = ((t.min(DRIFT_DURATION_SEC) / dt + 1e-3).floor()) as usize;
+        if target < self.steps_done {
+            self.restart();
+        }
+        // A row per step, or per frame when steps are shorter than a frame: at the first step
+        // of each frame, so the rows do not depend on how the time was reached.
+        let frame_of = |n: usize| (n as f32 * dt / SIM_DT + 1e-3).floor() as usize;
+        while self.steps_done < target {
+            for (k, (body, (how, _))) in self.bodies.iter_mut().zip(DRIFT_STEPS).enumerate() {
+                if k == 1 && self.overflowed_at.is_some() {
+                    continue;
+                }
+                body.step(dt, Vec3::ZERO, AngularStep::Momentum, how);
+            }
+            self.steps_done += 1;
+            if self.overflowed_at.is_none() && self.bodies[1].orientation.length() > DRIFT_MAX_NORM
+            {
+                self.overflowed_at = Some(self.steps_done as f32 * dt);
+            }
+            if dt >= SIM_DT || frame_of(self.steps_done) > frame_of(self.steps_done - 1) {
+                self.record();
+            }
+        }
+        Ok(())
+    }
+
+    /// The rows so far: `[t (s), |q| of the normalised additive box, of the unnormalised one,
+    /// of the exponential one]`, one per step, or one per frame ([`SIM_DT`]) when steps are
+    /// shorter than a frame.
+    pub fn samples(&self) -> &[[f32; 4]] {
+        &self.history
+    }
+
+    /// The three boxes, in the order of [`DRIFT_STEPS`].
+    pub fn bodies(&self) -> &[RigidBody; 3] {
+        &self.bodies
+    }
+
+    /// Steps taken so far.
+    pub fn steps_done(&self) -> usize {
+        self.steps_done
+    }
+
+    /// When the unnormalised box passed [`DRIFT_MAX_NORM`] and stopped (s), if it did.
+    pub fn overflowed_at(&self) -> Option<f32> {
+        self.overflowed_at
+    }
+
+    /// How far the normalised additive box has fallen behind the exponential one (degrees, 0 to
+    /// 180): the angle of the rotation between them.
+    pub fn lag_deg(&self) -> f32 {
+        let (a, b) = (self.bodies[0].orientation, self.bodies[2].orientation);
+        let between = a.normalize() * b.normalize().conjugate();
+        // atan2 rather than acos: exact for small angles too.
+        (2.0 * between.xyz().length().atan2(between.w.abs())).to_degrees()
+    }
+
+    /// Where box `k` stands.
+    pub fn place(k: usize) -> Vec3 {
+        Vec3::new((k as f32 - 1.0) * DRIFT_SPACING_M, DRIFT_HEIGHT_M, 0.0)
+    }
+
+    /// Draws each box with the matrix of its raw quaternion (the unnormalised one stretched,
+    /// with the unit-quaternion box it should be outlined in grey), each labelled with its step
+    /// and `|q|`; returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        frame.grid(16, 0.25);
+        // Room for the unnormalised box at its largest drawn stretch.
+        let reach = DRIFT_HALF.x * (2.0 * DRIFT_DRAWN_MAX_NORM.powi(2) - 1.0);
+        frame.keep_box_in_view(
+            Self::place(0) - Vec3::new(0.6, DRIFT_HEIGHT_M, 0.3),
+            Self::place(2) + Vec3::new(0.6, reach.max(0.7), 0.3),
+        );
+        for (k, (body, (_, name))) in self.bodies.iter().zip(DRIFT_STEPS).enumerate() {
+            let at = Self::place(k);
+            let norm = body.orientation.length();
+            let color = BOX_COLORS[k];
+            let label_at = at + Vec3::new(-0.5, 0.75, 0.0);
+            if k == 1 {
+                // The box it should be: the matrix of the normalised quaternion, outlined.
+                let mut unit = *body;
+                unit.orientation = unit.orientation.normalize();
+                unit.position = at;
+                let c = corners(&unit, DRIFT_HALF);
+                for (i, j) in BOX_EDGES {
+                    frame.wide_line(c[i], c[j], palette::GREY, 1.5);
+                }
+            }
+            if norm.is_finite() && norm <= DRIFT_DRAWN_MAX_NORM {
+                let model = Mat4::from_translation(at)
+                    * Mat4::from_mat3(body.rotation())
+                    * Mat4::from_scale(DRIFT_HALF);
+                frame.mesh(MeshId::CUBE, model, color);
+                frame.label(
+                    label_at,
+                    format!("{name}: |q| = {}", format_number(norm)),
+                    color,
+                );
+            } else {
+                frame.label(
+                    label_at,
+                    format!("{name}: |q| = {}, too large to draw", format_number(norm)),
+                    palette::RED,
+                );
+            }
+        }
+        let n = self.steps_done;
+        let s = self.bodies[1].orientation.length();
+        let stopped = match self.overflowed_at {
+            Some(t) => format!(
+                " It passed {} at t = {} s and was stopped there (its numbers would overflow).",
+                format_number(DRIFT_MAX_NORM),
+                format_number(t)
+            ),
+            None => String::new(),
+        };
+        format!(
+            "After {n} steps of Δt = {} ms at |ω| = {} rad/s: the unnormalised |q| = {} (each \
+             step multiplies it by √(1 + (|ω|Δt/2)²) = {:.6}), and its matrix stretches the box \
+             across the spin axis by up to 2|q|² − 1 = {}.{stopped} The normalised and \
+             exponential |q| stay 1 ({} and {}). The normalised additive box lags the \
+             exponential one by {}°: it turns by 2 atan(|ω|Δt/2) a step, not |ω|Δt.",
+            format_number(self.step_ms),
+            format_number(self.spin),
+            format_number(s),
+            self.growth_per_step(),
+            format_number(2.0 * s * s - 1.0),
+            format_number(self.bodies[0].orientation.length()),
+            format_number(self.bodies[2].orientation.length()),
+            format_number(self.lag_deg()),
+        )
+    }
+}
+
+/// The twelve edges of a box, as pairs of indices into [`corners`].
+const BOX_EDGES: [(usize, usize); 12] = [
+    (0, 1),
+    (2, 3),
+    (4, 5),
+    (6, 7),
+    (0, 2),
+    (1, 3),
+    (4, 6),
+    (5, 7),
+    (0, 4),
+    (1, 5),
+    (2, 6),
+    (3, 7),
+];

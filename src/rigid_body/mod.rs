@@ -16,6 +16,10 @@
 //!   and gains energy; [`AngularStep::Implicit`] solves `I (ω − ω₀) + dt ω × I ω = 0` for the end
 //!   of the step by one Newton step from ω₀ (as Box2D's and Bullet's solvers do), which never
 //!   gains energy but loses some.
+//! - **Collisions:** an impulse `j` at a point changes `v` by `j / m` and ω by `I⁻¹ (r × j)`
+//!   ([`RigidBody::apply_impulse`]); [`normal_impulse`] is the size of the one impulse that makes
+//!   a contact point with an immovable object bounce with restitution `e`. [`contact`] resolves
+//!   many contacts at once, between moving bodies too, by sequential impulses.
 //!
 //! The body's own frame is its principal frame: its inertia tensor there is the diagonal
 //! [`RigidBody::inertia`]. A body made of parts whose tensor has products of inertia would first
@@ -89,27 +93,6 @@ pub fn world_inverse_inertia(orientation: Quat, inertia: Vec3) -> Mat3 {
     r * Mat3::from_diagonal(inertia.recip()) * r.transpose()
 }
 
-/// The magnitude of the impulse along `normal` (unit, pointing out of the immovable surface) that
-/// a body's point at `r` from its centre of mass, moving with `v_rel`, gets on hitting that
-/// surface with restitution `restitution`: `j = −(1 + e) (v_rel · n) / (1/m + n · ((I⁻¹ (r × n)) × r))`
-/// with `inv_inertia` the world inverse inertia. After the impulse `j n` at the point, its normal
-/// speed is `−e` times what it was; 0 when the point already separates (`v_rel · n ≥ 0`).
-pub fn normal_impulse(
-    v_rel: Vec3,
-    normal: Vec3,
-    r: Vec3,
-    inv_mass: f32,
-    inv_inertia: Mat3,
-    restitution: f32,
-) -> f32 {
-    let approach = v_rel.dot(normal);
-    if approach >= 0.0 {
-        return 0.0;
-    }
-    let turning = normal.dot((inv_inertia * r.cross(normal)).cross(r));
-    -(1.0 + restitution) * approach / (inv_mass + turning)
-}
-
 /// One step of Euler's equations for the body-frame angular velocity `omega` of a body with
 /// principal moments `inertia` under no torque (`I ω̇ = −ω × I ω`), explicit or implicit in the
 /// gyroscopic term. `implicit` false is the explicit step.
@@ -125,6 +108,38 @@ pub fn gyroscopic_step(inertia: Vec3, omega: Vec3, dt: f32, implicit: bool) -> V
             omega - jacobian.inverse() * f
         }
     }
+}
+
+/// The impulse magnitude of a single frictionless contact of a body with an immovable object
+/// (the ground, a wall): the textbook collision response.
+/// ```text
+///          −(1 + e) (v_rel · n)
+/// j = ──────────────────────────────────
+///      1/m + n · ((I⁻¹ (r × n)) × r)
+/// ```
+/// `v_rel` is the velocity of the body's contact point (m/s, world), `n` the unit contact normal
+/// pointing out of the object into the body, `r` the vector from the centre of mass to the
+/// contact point, `inv_mass` = 1/m, `inv_inertia` the world inverse inertia `R I⁻¹ Rᵀ`
+/// ([`RigidBody::world_inverse_inertia`]), `e` the coefficient of restitution in [0, 1].
+/// Applying `j n` at the contact point ([`RigidBody::apply_impulse`]) turns the point's normal
+/// velocity `v_rel · n` into exactly `−e` times itself; for `e ≤ 1` the kinetic energy does not
+/// grow (`e = 1` keeps it). 0 when the point is not approaching (`v_rel · n ≥ 0`). The
+/// denominator is `1/m` plus the rotational share `|I^(−1/2) (r × n)|²`, never below `1/m`.
+/// Lesson: lessons/14-rigid-bodies (exercise 14.4).
+pub fn normal_impulse(
+    v_rel: Vec3,
+    normal: Vec3,
+    r: Vec3,
+    inv_mass: f32,
+    inv_inertia: Mat3,
+    restitution: f32,
+) -> f32 {
+    let approach = v_rel.dot(normal);
+    if approach >= 0.0 {
+        return 0.0;
+    }
+    let k = inv_mass + normal.dot((inv_inertia * r.cross(normal)).cross(r));
+    -(1.0 + restitution) * approach / k
 }
 
 /// A rigid body. Its frame is its principal frame, centred on its centre of mass.
