@@ -48,8 +48,15 @@ fn over_ten_seconds_each_integrator_shows_its_character() {
         601,
         "one sample per step, the start included"
     );
-    // L held: |L| kept to float rounding; the racket turns over.
+    // L held: |L| kept to float rounding, the energy within 0.1 % all along (the splitting's
+    // bounded error); the racket turns over.
     assert!((last[4] - 1.0).abs() < 1e-4, "{last:?}");
+    let held_error = f
+        .samples()
+        .iter()
+        .map(|r| (r[1] - 1.0).abs())
+        .fold(0.0, f32::max);
+    assert!(held_error < 1e-3, "held-L energy off by {held_error}");
     assert!(lowest[0] < -0.9, "the held-L racket flips: {lowest:?}");
     // Explicit: the energy grows; implicit: it never grows and falls.
     let explicit_most = f.samples().iter().map(|r| r[2]).fold(0.0, f32::max);
@@ -578,7 +585,7 @@ fn each_additive_step_multiplies_q_by_the_closed_form_and_normalising_keeps_it_1
         for pair in rows.windows(2) {
             let ratio = pair[1][2] / pair[0][2];
             assert!(
-                (ratio - growth).abs() < 2e-6 * growth,
+                (ratio - growth).abs() < 1e-5 * growth,
                 "spin {spin}, {ms} ms: ×{ratio}, expected ×{growth}"
             );
             assert!(pair[1][2] > pair[0][2], "grows every step");
@@ -615,7 +622,9 @@ fn at_short_steps_the_drift_is_slow_and_a_row_comes_each_frame() {
         "{last:?} vs {expected}"
     );
     assert!(
-        (last[1] - 1.0).abs() < 1e-5 && (last[3] - 1.0).abs() < 1e-4,
+        // The exponential step's |q| drifts by rounding alone (each step multiplies by a unit
+        // quaternion rounded to float): about 2.4e-4 over these 10,000 steps.
+        (last[1] - 1.0).abs() < 1e-5 && (last[3] - 1.0).abs() < 1e-3,
         "{last:?}"
     );
 }
@@ -634,21 +643,25 @@ fn the_normalised_additive_box_lags_by_the_closed_form_and_the_raw_matrix_stretc
         f.lag_deg(),
         lag.to_degrees()
     );
-    // The unnormalised box's matrix is (1 − s²) E + s² R: the spin axis keeps its length,
-    // a direction across it is scaled by |1 − s² + s² e^{iθ}|.
+    // The unnormalised box's matrix is (1 − s²) E + s² R(q/|q|), exactly: every entry of the
+    // rotation formula but the 1s on the diagonal is quadratic in q.
     let b = f.bodies()[1];
     let s = b.orientation.length();
-    let u = b.orientation.normalize();
-    let theta = 2.0 * u.xyz().length().atan2(u.w);
+    let r = glam::Mat3::from_quat(b.orientation.normalize());
     let m = b.rotation();
-    assert!(
-        ((m * Vec3::Z).length() - 1.0).abs() < 1e-4,
-        "{}",
-        m * Vec3::Z
-    );
-    let across =
-        ((1.0 - s * s + s * s * theta.cos()).powi(2) + (s * s * theta.sin()).powi(2)).sqrt();
-    assert!(((m * Vec3::X).length() - across).abs() < 1e-3 * across);
+    let expected = glam::Mat3::IDENTITY * (1.0 - s * s) + r * (s * s);
+    for (x, y) in m.to_cols_array().iter().zip(expected.to_cols_array()) {
+        assert!((x - y).abs() < 1e-3 * s * s, "{m} vs {expected}");
+    }
+    // About an axis that is no axis of the world, the box's edges are no longer perpendicular
+    // (it shears) and no longer unit (it stretches).
+    let cols = [m.x_axis, m.y_axis, m.z_axis];
+    let shear = (0..3)
+        .flat_map(|i| (i + 1..3).map(move |j| (i, j)))
+        .map(|(i, j)| cols[i].normalize().dot(cols[j].normalize()).abs())
+        .fold(0.0f32, f32::max);
+    assert!(shear > 0.2, "largest cosine between edges {shear}");
+    assert!(cols.iter().any(|c| (c.length() - 1.0).abs() > 0.5), "{m}");
     assert!(s > 3.0, "{s}");
 }
 

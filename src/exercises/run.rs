@@ -390,6 +390,8 @@ pub const QUIZ_ANSWERS: &[&str] = &[
     "weight_for_speed",
     "lbs_elbow_area_percent",
     "blend_full_vertex",
+    "box_moment",
+    "unnormalised_quat_length",
 ];
 
 /// The answer to a quiz's numeric question: the core named `name` on `args` (see
@@ -588,6 +590,33 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
                 .apply_full(&args[3..6], &mut p, &mut n)
                 .map_err(|e| e.to_string())?;
             p[0].y
+        }
+        // (m, hx, hy, hz, axis): the moment of inertia (kg m²) of a solid box of mass m and
+        // these half-extents about its own axis 0 (x), 1 (y) or 2 (z).
+        "box_moment" => {
+            want(5)?;
+            if !(args[0] > 0.0 && args[1..4].iter().all(|&h| h > 0.0)) {
+                return Err("box_moment: the mass and the half-extents must be positive".into());
+            }
+            let axis = usize::take(&mut &args[4..]).filter(|&i| i < 3);
+            let axis = axis.ok_or("box_moment: the axis must be 0, 1 or 2")?;
+            let half = Vec3::new(args[1], args[2], args[3]);
+            crate::rigid_body::inertia::solid_box(args[0], half).col(axis)[axis]
+        }
+        // (spin, dt, steps): |q| after `steps` unnormalised additive steps of `dt` seconds at
+        // `spin` rad/s, from a unit quaternion, stepped by the core.
+        "unnormalised_quat_length" => {
+            want(3)?;
+            let steps = usize::take(&mut &args[2..]).filter(|&n| n <= 100_000);
+            let steps = steps.ok_or("unnormalised_quat_length: steps must be a whole number up to 100000")?;
+            if !(args[1] >= 0.0 && args[1] <= 0.1) {
+                return Err("unnormalised_quat_length: dt must be in [0, 0.1] s".into());
+            }
+            let omega = Vec3::new(0.0, args[0], 0.0);
+            let how = crate::rigid_body::OrientationStep::AdditiveUnnormalised;
+            (0..steps)
+                .fold(Quat::IDENTITY, |q, _| crate::rigid_body::orientation_step(q, omega, args[1], how))
+                .length()
         }
         _ => {
             return Err(format!(

@@ -16,11 +16,17 @@
 //! the start, replayed when the time goes back or a setting changes.
 
 use super::particles::{steps_to, MAX_SIM_TIME, SIM_DT};
-use super::{format_number, in_range, palette, whole_number, Frame};
+use super::{
+    compare_note, failure_note, format_number, in_range, palette, whole_number, Frame, Runner,
+    DEFAULT_RUNNER,
+};
 use crate::draw::{MeshId, StrokeStyle, ARROW_PX, DOT_PX};
+use crate::exercises::run;
 use crate::rigid_body::contact::{corners, BroadPhase, Shape, World};
 use crate::rigid_body::inertia::solid_box;
-use crate::rigid_body::{normal_impulse, AngularStep, OrientationStep, RigidBody};
+use crate::rigid_body::{
+    normal_impulse, orientation_step, AngularStep, OrientationStep, RigidBody,
+};
 use glam::{Mat4, Quat, Vec3};
 
 /// The racket's half-extents (m): long along x, middle along y, thin along z, so its moments
@@ -37,6 +43,10 @@ const SPACING_M: f32 = 1.0;
 const HEIGHT_M: f32 = 0.8;
 /// The most samples a figure keeps for its plots (one per step, 60 s at 60 steps a second).
 pub const MAX_SAMPLES: usize = 3600;
+/// The racket figure's timeline (s): several flips at the default spin.
+pub const RACKET_DURATION_SEC: f32 = 12.0;
+/// Where the page's exercises live, for the notes.
+const FILE: &str = "src/exercises/rigid_body.rs";
 
 /// Three copies of the same racket, spun at `spin` rad/s about its middle axis with a small
 /// wobble, each stepped by one of [`INTEGRATORS`] at [`SIM_DT`].
@@ -44,6 +54,11 @@ pub const MAX_SAMPLES: usize = 3600;
 pub struct RacketFigure {
     spin: f32,
     wobble: f32,
+    /// With "use my exercise", the moments come from the student's 14.1 `box_inertia`.
+    use_exercise: bool,
+    runner: Runner,
+    /// What the student's 14.1 gave at the last restart (a comparison or a failure).
+    exercise_note: String,
     start: RigidBody,
     bodies: [RigidBody; 3],
     steps_done: usize,
@@ -66,6 +81,9 @@ impl RacketFigure {
         let mut f = Self {
             spin: 6.0,
             wobble: 0.05,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            exercise_note: String::new(),
             start,
             bodies: [start; 3],
             steps_done: 0,
@@ -86,6 +104,55 @@ impl RacketFigure {
         Ok(())
     }
 
+    /// How the page runs the student's code (see [`crate::exercises::run`]).
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.restart();
+    }
+
+    /// Gives the rackets the moments of the student's 14.1 `box_inertia` (the reference where
+    /// it fails or answers moments no body has); the run starts again.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.restart();
+    }
+
+    /// The timeline's length (s).
+    pub fn duration_sec(&self) -> f32 {
+        RACKET_DURATION_SEC
+    }
+
+    /// The racket's principal moments: the reference's, or the student's, with the note to show.
+    fn moments(&self) -> (Vec3, String) {
+        let reference = box_moments(RACKET_HALF);
+        if !self.use_exercise {
+            return (reference, String::new());
+        }
+        match run::box_inertia(self.runner, 1.0, RACKET_HALF) {
+            Err(f) => (
+                reference,
+                failure_note("exercise 14.1 box_inertia", FILE, &f),
+            ),
+            Ok(m) => {
+                let at = "the racket (1 kg, half-extents 0.3 × 0.15 × 0.05 m)";
+                let (_, note) = compare_note(
+                    "box_inertia",
+                    at,
+                    &m.to_array(),
+                    &reference.to_array(),
+                    1e-4 * reference.max_element(),
+                );
+                match RigidBody::new(1.0, m) {
+                    Ok(_) => (m, format!("{note} The rackets spin with your moments.")),
+                    Err(e) => (
+                        reference,
+                        format!("{note} They are no body's moments ({e}): the figure uses the reference."),
+                    ),
+                }
+            }
+        }
+    }
+
     /// The racket at the start of a run: spun about its middle axis, with the wobble.
     fn first(&self) -> RigidBody {
         let mut body = self.start;
@@ -94,6 +161,9 @@ impl RacketFigure {
     }
 
     fn restart(&mut self) {
+        let (moments, note) = self.moments();
+        self.start.inertia = moments;
+        self.exercise_note = note;
         self.bodies = [self.first(); 3];
         self.steps_done = 0;
         self.history.clear();
@@ -182,11 +252,16 @@ impl RacketFigure {
                 100.0 * row[4 + k]
             ));
         }
-        format!(
+        let mut note = format!(
             "At t = {:.2} s, of their values at the start: {}.",
             self.steps_done as f32 * SIM_DT,
             parts.join("; ")
-        )
+        );
+        if self.use_exercise {
+            note.push(' ');
+            note.push_str(&self.exercise_note);
+        }
+        note
     }
 }
 
@@ -513,6 +588,12 @@ pub struct ImpulseFigure {
     tilt_deg: f32,
     restitution: f32,
     height_m: f32,
+    /// With "use my exercise", the impact's inverse inertia and impulse come from the student's
+    /// 14.3 and 14.4.
+    use_exercise: bool,
+    runner: Runner,
+    /// What the student's 14.3 and 14.4 gave at the impact (comparisons or failures).
+    exercise_note: String,
     body: RigidBody,
     steps_done: usize,
     first_impact: Option<Impact>,
@@ -537,6 +618,9 @@ impl ImpulseFigure {
             tilt_deg: 20.0,
             restitution: 0.5,
             height_m: 1.0,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            exercise_note: String::new(),
             body: RigidBody::new(1.0, box_moments(DROP_HALF)).expect("a box's moments"),
             steps_done: 0,
             first_impact: None,
@@ -571,6 +655,91 @@ impl ImpulseFigure {
         DROP_DURATION_SEC
     }
 
+    /// How the page runs the student's code (see [`crate::exercises::run`]).
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.restart();
+    }
+
+    /// Takes the impact's world inverse inertia from the student's 14.3 and its impulse from
+    /// the student's 14.4 (each the reference where it fails); the drop starts again.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.restart();
+    }
+
+    /// The impulse of the first impact and the world inverse inertia it used: the reference's,
+    /// or with "use my exercise" the student's where they answer, with the note to show.
+    fn impact_impulse(&self, b: &RigidBody, v: Vec3, r: Vec3) -> (f32, String) {
+        let reference_inv = b.world_inverse_inertia();
+        let e = self.restitution;
+        let reference_j = |inv| normal_impulse(v, Vec3::Y, r, 1.0 / b.mass, inv, e);
+        if !self.use_exercise {
+            return (reference_j(reference_inv), String::new());
+        }
+        let at = "the impact";
+        let mut notes = Vec::new();
+        let inv = match run::world_inverse_inertia(self.runner, b.orientation, b.inertia) {
+            Err(f) => {
+                notes.push(failure_note(
+                    "exercise 14.3 world_inverse_inertia",
+                    FILE,
+                    &f,
+                ));
+                reference_inv
+            }
+            Ok(mine) => {
+                let (same, note) = compare_note(
+                    "world_inverse_inertia",
+                    at,
+                    &mine.to_cols_array(),
+                    &reference_inv.to_cols_array(),
+                    1e-3 * reference_inv
+                        .abs()
+                        .to_cols_array()
+                        .into_iter()
+                        .fold(0.0, f32::max),
+                );
+                notes.push(note);
+                if mine.is_finite() {
+                    mine
+                } else {
+                    debug_assert!(!same);
+                    reference_inv
+                }
+            }
+        };
+        let j = match run::normal_impulse(self.runner, v, Vec3::Y, r, 1.0 / b.mass, inv, e) {
+            Err(f) => {
+                notes.push(failure_note("exercise 14.4 normal_impulse", FILE, &f));
+                reference_j(inv)
+            }
+            Ok(mine) => {
+                let reference = reference_j(inv);
+                notes.push(
+                    compare_note(
+                        "normal_impulse",
+                        "the impact (with the inverse inertia above)",
+                        &[mine],
+                        &[reference],
+                        1e-3 * (1.0 + reference.abs()),
+                    )
+                    .1,
+                );
+                if mine.is_finite() && mine >= 0.0 {
+                    mine
+                } else {
+                    notes.push(format!(
+                        "An impulse of {} N s cannot be applied: the figure uses the reference.",
+                        format_number(mine)
+                    ));
+                    reference
+                }
+            }
+        };
+        (j, notes.join(" "))
+    }
+
     /// The box at release: turned by [`DROP_YAW_DEG`] about the vertical, then tilted about z,
     /// its lowest corner `height_m` above the ground, at rest.
     pub fn first(&self) -> RigidBody {
@@ -588,6 +757,7 @@ impl ImpulseFigure {
         self.first_impact = None;
         self.after = None;
         self.stopped = None;
+        self.exercise_note.clear();
         self.history.clear();
         self.record();
     }
@@ -628,12 +798,12 @@ impl ImpulseFigure {
             }
             fly_free(&mut self.body, lo * left);
             left -= lo * left;
+            let (point, _) = touching(&self.body);
+            let v = self.body.point_velocity(point);
+            let r = point - self.body.position;
+            let (j, note) = self.impact_impulse(&self.body, v, r);
+            self.exercise_note = note;
             let b = &mut self.body;
-            let (point, _) = touching(b);
-            let v = b.point_velocity(point);
-            let r = point - b.position;
-            let inv_inertia = b.world_inverse_inertia();
-            let j = normal_impulse(v, Vec3::Y, r, 1.0 / b.mass, inv_inertia, self.restitution);
             let before = *b;
             b.apply_impulse(j * Vec3::Y, point);
             self.first_impact = Some(Impact {
@@ -741,13 +911,17 @@ impl ImpulseFigure {
         let e = self.restitution;
         let Some(hit) = self.first_impact else {
             frame.marker(low_point, DOT_PX, palette::DARK);
-            return format!(
+            let mut note = format!(
                 "Falling: the lowest corner is {} m above the ground, moving at {} m/s. \
                  Restitution e = {}.",
                 format_number(low.max(0.0)),
                 format_number(b.point_velocity(low_point).y),
                 format_number(e),
             );
+            if self.use_exercise {
+                note.push_str(" Your 14.3 and 14.4 act at the impact.");
+            }
+            return note;
         };
         // The box at the impact, outlined.
         let then = {
@@ -829,7 +1003,11 @@ impl ImpulseFigure {
             format_number(hit.omega_after.length()),
             format_number(hit.energy_before),
             format_number(hit.energy_after),
-        )
+        ) + &if self.use_exercise {
+            format!(" {}", self.exercise_note)
+        } else {
+            String::new()
+        }
     }
 }
 
@@ -1258,12 +1436,15 @@ pub const DRIFT_STEPS: [(OrientationStep, &str); 3] = [
     (OrientationStep::Exponential, "exponential"),
 ];
 /// The drift figure's boxes' half-extents (m), 1 kg; they spin about their shortest axis z (the
-/// largest moment: a stable spin), which points along the world's z, towards the viewer.
+/// largest moment: a stable spin), tipped by [`DRIFT_TIP_RAD`] from the world's z (the viewer's
+/// direction).
 pub const DRIFT_HALF: Vec3 = Vec3::new(0.2, 0.1, 0.05);
+/// How far the boxes are tipped about x before they spin about their own z (rad).
+pub const DRIFT_TIP_RAD: f32 = 0.6;
 /// The drift figure's timeline (s).
 pub const DRIFT_DURATION_SEC: f32 = 10.0;
 /// The unnormalised box is drawn while `|q|` is at most this: its matrix then stretches it by
-/// at most `2|q|² − 1 = 4` across the spin axis.
+/// at most `2|q|² − 1 = 4`.
 pub const DRIFT_DRAWN_MAX_NORM: f32 = 1.581_138_8; // √2.5
 /// The unnormalised box stops being stepped past this `|q|` (its numbers would overflow).
 pub const DRIFT_MAX_NORM: f32 = 1e6;
@@ -1276,15 +1457,20 @@ const DRIFT_HEIGHT_M: f32 = 1.0;
 /// multiplies `|q|` by `|1 + ½ Δt ω| = √(1 + (|ω| Δt / 2)²)` every step, exactly (the norm of a
 /// product of quaternions is the product of the norms): left unnormalised, `|q|` grows
 /// geometrically, and the matrix built from it by the unit-quaternion formula
-/// ([`RigidBody::rotation`]), `(1 − s²) E + s² R` for `q = s u` with `u` unit, keeps the spin
-/// axis but stretches the box across it, by `|1 − s² + s² e^{iθ}|` at rotation angle θ: from 1
-/// at a whole turn to `2 s² − 1` at a half turn, so the drawn box pulses as it spins.
+/// ([`RigidBody::rotation`]), `(1 − s²) E + s² R` for `q = s u` with `u` unit, stretches the box
+/// by up to `2 s² − 1` and, since the spin axis is no axis of the world, skews its edges: the
+/// drawn box swells, shrinks and shears as it spins.
 /// Normalised, the additive step turns by `2 atan(|ω| Δt / 2)` per step instead of `|ω| Δt`, so
 /// it falls behind the exponential step, which is exact for a constant ω.
 #[derive(Clone, Debug)]
 pub struct DriftFigure {
     spin: f32,
     step_ms: f32,
+    /// With "use my exercise", the normalised box is stepped by the student's 14.2.
+    use_exercise: bool,
+    runner: Runner,
+    /// Why the student's step stopped being used this run (it failed or left the numbers).
+    exercise_failure: Option<String>,
     bodies: [RigidBody; 3],
     steps_done: usize,
     /// Set when the unnormalised box passed [`DRIFT_MAX_NORM`] and stopped.
@@ -1306,6 +1492,9 @@ impl DriftFigure {
         let mut f = Self {
             spin: 5.0,
             step_ms: 10.0,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            exercise_failure: None,
             bodies: [body; 3],
             steps_done: 0,
             overflowed_at: None,
@@ -1330,9 +1519,86 @@ impl DriftFigure {
         DRIFT_DURATION_SEC
     }
 
+    /// How the page runs the student's code (see [`crate::exercises::run`]).
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.restart();
+    }
+
+    /// Steps the normalised box with the student's 14.2 `orientation_step` (the reference from
+    /// the first step where it fails); the run starts again.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.restart();
+    }
+
+    /// The normalised additive step of box 0: the student's while it answers, else the
+    /// reference's.
+    fn normalised_step(&mut self, q: Quat, omega: Vec3, dt: f32) -> Quat {
+        let reference = orientation_step(q, omega, dt, OrientationStep::Additive);
+        if !self.use_exercise || self.exercise_failure.is_some() {
+            return reference;
+        }
+        match run::orientation_step(self.runner, q, omega, dt) {
+            Ok(mine) if mine.is_finite() => mine,
+            Ok(mine) => {
+                self.exercise_failure = Some(format!(
+                    "Your orientation_step returned {mine}, not a number: the figure uses the \
+                     reference from step {}.",
+                    self.steps_done + 1
+                ));
+                reference
+            }
+            Err(f) => {
+                self.exercise_failure =
+                    Some(failure_note("exercise 14.2 orientation_step", FILE, &f));
+                reference
+            }
+        }
+    }
+
+    /// The note on the student's 14.2: its answer at the first step compared with the
+    /// reference's, and why it stopped being used, if it did.
+    fn exercise_note(&self) -> String {
+        let (q, omega, dt) = (
+            Quat::from_rotation_x(DRIFT_TIP_RAD),
+            self.omega_world(),
+            self.dt_sec(),
+        );
+        let at = format!(
+            "the first step (Δt = {} ms, |ω| = {} rad/s)",
+            format_number(self.step_ms),
+            format_number(self.spin)
+        );
+        let compared = match run::orientation_step(self.runner, q, omega, dt) {
+            Err(f) => failure_note("exercise 14.2 orientation_step", FILE, &f),
+            Ok(mine) => {
+                let reference = orientation_step(q, omega, dt, OrientationStep::Additive);
+                compare_note(
+                    "orientation_step",
+                    &at,
+                    &mine.to_array(),
+                    &reference.to_array(),
+                    1e-5,
+                )
+                .1
+            }
+        };
+        match &self.exercise_failure {
+            Some(why) if !compared.contains(why.as_str()) => format!("{compared} {why}"),
+            _ => compared,
+        }
+    }
+
     /// The time step (s).
     pub fn dt_sec(&self) -> f32 {
         self.step_ms / 1000.0
+    }
+
+    /// The angular velocity every box spins with, in the world's frame (rad/s): `spin` about the
+    /// box's own z axis, tipped with it.
+    pub fn omega_world(&self) -> Vec3 {
+        Quat::from_rotation_x(DRIFT_TIP_RAD) * Vec3::new(0.0, 0.0, self.spin)
     }
 
     /// What each step multiplies the additive step's `|q|` by: `√(1 + (|ω| Δt / 2)²)`.
@@ -1343,10 +1609,15 @@ impl DriftFigure {
 
     fn restart(&mut self) {
         let mut body = RigidBody::new(1.0, box_moments(DRIFT_HALF)).expect("a box's moments");
+        // Tipped towards the viewer first: the spin axis is then no axis of the world, and the
+        // raw matrix of a long quaternion shears the box as well as stretching it (about a world
+        // axis it would only stretch it across that axis).
+        body.orientation = Quat::from_rotation_x(DRIFT_TIP_RAD);
         body.omega_body = Vec3::new(0.0, 0.0, self.spin);
         self.bodies = [body; 3];
         self.steps_done = 0;
         self.overflowed_at = None;
+        self.exercise_failure = None;
         self.history.clear();
         self.record();
     }
@@ -1373,12 +1644,21 @@ impl DriftFigure {
         // A row per step, or per frame when steps are shorter than a frame: at the first step
         // of each frame, so the rows do not depend on how the time was reached.
         let frame_of = |n: usize| (n as f32 * dt / SIM_DT + 1e-3).floor() as usize;
+        let omega = self.omega_world();
         while self.steps_done < target {
+            let student = self.normalised_step(self.bodies[0].orientation, omega, dt);
             for (k, (body, (how, _))) in self.bodies.iter_mut().zip(DRIFT_STEPS).enumerate() {
                 if k == 1 && self.overflowed_at.is_some() {
                     continue;
                 }
-                body.step(dt, Vec3::ZERO, AngularStep::Momentum, how);
+                if k == 0 {
+                    body.orientation = student;
+                    continue;
+                }
+                // Only the orientation steps: the angular velocity is held (a spin about the
+                // body's axis of largest moment needs no torque to stay as it is), so the three
+                // boxes differ by their orientation step alone.
+                body.orientation = orientation_step(body.orientation, omega, dt, how);
             }
             self.steps_done += 1;
             if self.overflowed_at.is_none() && self.bodies[1].orientation.length() > DRIFT_MAX_NORM
@@ -1484,8 +1764,9 @@ impl DriftFigure {
         };
         format!(
             "After {n} steps of Δt = {} ms at |ω| = {} rad/s: the unnormalised |q| = {} (each \
-             step multiplies it by √(1 + (|ω|Δt/2)²) = {:.6}), and its matrix stretches the box \
-             across the spin axis by up to 2|q|² − 1 = {}.{stopped} The normalised and \
+             step multiplies it by √(1 + (|ω|Δt/2)²) = {:.6}), and its matrix (1 − |q|²)E + |q|²R \
+             stretches the box by up to 2|q|² − 1 = {} and skews its edges.{stopped} The \
+             normalised and \
              exponential |q| stay 1 ({} and {}). The normalised additive box lags the \
              exponential one by {}°: it turns by 2 atan(|ω|Δt/2) a step, not |ω|Δt.",
             format_number(self.step_ms),
@@ -1496,7 +1777,11 @@ impl DriftFigure {
             format_number(self.bodies[0].orientation.length()),
             format_number(self.bodies[2].orientation.length()),
             format_number(self.lag_deg()),
-        )
+        ) + &if self.use_exercise {
+            format!(" {}", self.exercise_note())
+        } else {
+            String::new()
+        }
     }
 }
 

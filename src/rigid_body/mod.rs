@@ -9,8 +9,12 @@
 //!   Without the normalisation the additive step lets `|q|` grow every step, and the matrix built
 //!   from `q` ([`RigidBody::rotation`]) stretches and shears the body.
 //! - **Angular velocity:** with no torque the angular momentum `L = R I ω` is constant in the
-//!   world. [`AngularStep::Momentum`] keeps it so and recovers ω from it after each turn of the
-//!   body (`ω = R I⁻¹ Rᵀ L`), so `L` is conserved to float precision. The other two integrate
+//!   world. [`AngularStep::Momentum`] keeps it so and turns the body by a symmetric splitting of
+//!   the torque-free motion into turns about its own principal axes (x and y for half a step, z
+//!   for a whole one, then y and x again: McLachlan 1993, Touma and Wisdom 1994), each at the rate
+//!   read off the unchanged L in the attitude of the moment (`ω_i = (Rᵀ L)_i / I_i`); `L` is
+//!   conserved to float precision and the energy, which no explicit turn keeps, stays within a
+//!   small bounded error (the splitting is symplectic). The other two integrate
 //!   Euler's equations in the body frame, `I ω̇ = −ω × I ω` (the gyroscopic term), as solvers that
 //!   store velocities must: [`AngularStep::Explicit`] evaluates the term at the start of the step
 //!   and gains energy; [`AngularStep::Implicit`] solves `I (ω − ω₀) + dt ω × I ω = 0` for the end
@@ -44,7 +48,9 @@ pub enum OrientationStep {
 /// How the angular velocity advances under no torque.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum AngularStep {
-    /// The world angular momentum is held and ω recovered from it (conserves `L`).
+    /// The world angular momentum is held; the body turns about its principal axes in a
+    /// symmetric splitting, at rates read off `L` (conserves `L`, keeps the energy to a bounded
+    /// error).
     Momentum,
     /// The gyroscopic term with the angular velocity at the start of the step (gains energy).
     Explicit,
@@ -249,10 +255,17 @@ impl RigidBody {
         self.position += self.velocity * dt;
         match angular {
             AngularStep::Momentum => {
-                // Turn with the present ω, then read ω off the unchanged L in the new attitude.
+                // Five turns about the body's own axes, x y z y x, each at the rate about that
+                // axis that the unchanged L gives in the present attitude. A turn about a body
+                // axis e_i at rate w is the world angular velocity w q e_i.
                 let l = self.angular_momentum();
-                let omega = self.omega_world();
-                self.orientation = orientation_step(self.orientation, omega, dt, orientation);
+                for (axis, share) in [(0, 0.5), (1, 0.5), (2, 1.0), (1, 0.5), (0, 0.5)] {
+                    let q = self.orientation.normalize();
+                    let rate = (q.inverse() * l)[axis] / self.inertia[axis];
+                    let e = Vec3::AXES[axis];
+                    self.orientation =
+                        orientation_step(self.orientation, q * (rate * e), share * dt, orientation);
+                }
                 let q = self.orientation.normalize();
                 self.omega_body = (q.inverse() * l) / self.inertia;
             }

@@ -77,6 +77,7 @@ figures_module! {
     mod particles_sprites;
     mod raster;
     mod rigid;
+    mod rigid_body;
     mod rotations;
     mod skeleton;
     mod skinning;
@@ -97,6 +98,7 @@ figures_module! {
     pub use particles::{check_emitter, BounceScene, EmitterScene, FreeFallScene, SquashScene};
     pub use raster::{DepthPrecisionScene, FrustumScene, MeshStorageScene, NormalsScene, ShadingScene};
     pub use rigid::{AffineScene, RigidScene};
+    pub use rigid_body::{DriftScene, ImpulseScene, RacketScene, StackScene, ThrowScene};
     pub use rotations::{GimbalScene, InterpolationScene, RodriguesScene};
     pub use skeleton::{check_skeleton, SkeletonScene};
     pub use skinning::{check_skin_weights, SkinnedHumanScene, SkinningCylinderScene};
