@@ -802,3 +802,140 @@ fn at_the_ends_of_their_ranges_the_figures_stay_finite_and_draw() {
         check(f.samples().concat(), &frame, "drift");
     }
 }
+
+#[test]
+fn the_throw_plots_l_flat_at_one_and_omega_moving() {
+    let mut f = ThrowFigure::new();
+    f.advance_to(f.duration_sec()).unwrap();
+    let rows = f.plot_rows();
+    assert_eq!(rows.len(), f.samples().len());
+    assert_eq!(rows[0][1..3], [1.0, 1.0]);
+    let l_off = rows.iter().map(|r| (r[2] - 1.0).abs()).fold(0.0, f32::max);
+    let w_lo = rows.iter().map(|r| r[1]).fold(f32::INFINITY, f32::min);
+    assert!(l_off < 1e-5, "|L| share off by {l_off}");
+    assert!(w_lo < 0.99, "|ω| share at least {w_lo}");
+    for (row, sample) in rows.iter().zip(f.samples()) {
+        assert_eq!((row[0], row[3]), (sample[0], sample[3]));
+    }
+}
+
+// ---- "use my exercise" ----
+
+use inbetween::exercises::run::Failure;
+use inbetween::rigid_body::{self as rb, OrientationStep};
+
+/// A student whose four exercises are right (the reference cores; the stubs of a plain build
+/// answer "not done").
+fn correct(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    let v3 = |i: usize| Vec3::from_slice(&args[i..i + 3]);
+    let q = |i: usize| glam::Quat::from_slice(&args[i..i + 4]);
+    Ok(match name {
+        "box_inertia" => {
+            let m = inbetween::rigid_body::inertia::solid_box(args[0], v3(1));
+            vec![m.x_axis.x, m.y_axis.y, m.z_axis.z]
+        }
+        "orientation_step" => rb::orientation_step(q(0), v3(4), args[7], OrientationStep::Additive)
+            .to_array()
+            .to_vec(),
+        "world_inverse_inertia" => rb::world_inverse_inertia(q(0), v3(4))
+            .to_cols_array()
+            .to_vec(),
+        "normal_impulse" => {
+            let inv = glam::Mat3::from_cols_slice(&args[10..19]);
+            vec![rb::normal_impulse(
+                v3(0),
+                v3(3),
+                v3(6),
+                args[9],
+                inv,
+                args[19],
+            )]
+        }
+        _ => return Err(Failure::Call(format!("no exercise {name}"))),
+    })
+}
+
+/// A student whose 14.1 swaps the y and z moments, whose 14.2 forgets to normalise, whose 14.4
+/// doubles the impulse and whose 14.3 is not done.
+fn mistaken(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
+    match name {
+        "box_inertia" => correct(name, args).map(|m| vec![m[0], m[2], m[1]]),
+        "orientation_step" => {
+            let (q, omega) = (
+                glam::Quat::from_slice(&args[0..4]),
+                Vec3::from_slice(&args[4..7]),
+            );
+            let w = glam::Quat::from_xyzw(omega.x, omega.y, omega.z, 0.0);
+            Ok((q + (w * q) * (0.5 * args[7])).to_array().to_vec())
+        }
+        "world_inverse_inertia" => Err(Failure::NotDone),
+        "normal_impulse" => correct(name, args).map(|j| vec![2.0 * j[0]]),
+        _ => correct(name, args),
+    }
+}
+
+#[test]
+fn the_rackets_spin_with_the_students_moments() {
+    let mut f = RacketFigure::new();
+    f.set_runner(mistaken);
+    f.set_use_exercise(true);
+    f.advance_to(10.0).unwrap();
+    // With y the largest moment the spin about y is stable: the held-L racket never turns over.
+    let up = f.bodies()[0].orientation * Vec3::Y;
+    assert!(up.y > 0.9, "{up}");
+    let note = f.draw(&mut Frame::default());
+    assert!(note.contains("Your box_inertia differs"), "{note}");
+    assert!(note.contains("spin with your moments"), "{note}");
+    // Off again: the reference's moments, and the racket flips within the 10 s.
+    f.set_use_exercise(false);
+    let mut lowest = 1.0f32;
+    for k in 1..=600 {
+        f.advance_to(k as f32 / 60.0).unwrap();
+        lowest = lowest.min((f.bodies()[0].orientation * Vec3::Y).y);
+    }
+    assert!(lowest < -0.9, "{lowest}");
+}
+
+#[test]
+fn the_drift_steps_the_normalised_box_with_the_students_step() {
+    let mut f = DriftFigure::new();
+    f.set_runner(mistaken);
+    f.set_use_exercise(true);
+    f.advance_to(5.0).unwrap();
+    // The student forgot to normalise: the "normalised" box grows as the unnormalised one.
+    let b = f.bodies();
+    assert!((b[0].orientation.length() - b[1].orientation.length()).abs() < 1e-4);
+    assert!(b[0].orientation.length() > 1.1);
+    let note = f.draw(&mut Frame::default());
+    assert!(note.contains("Your orientation_step differs"), "{note}");
+    // A correct student: the same run as the reference.
+    let mut g = DriftFigure::new();
+    g.set_runner(correct);
+    g.set_use_exercise(true);
+    g.advance_to(5.0).unwrap();
+    let mut h = DriftFigure::new();
+    h.advance_to(5.0).unwrap();
+    assert_eq!(g.samples(), h.samples());
+    assert!(g
+        .draw(&mut Frame::default())
+        .contains("matches the reference"));
+}
+
+#[test]
+fn the_impact_uses_the_students_impulse_and_says_what_is_not_done() {
+    let mut f = ImpulseFigure::new();
+    f.set_runner(mistaken);
+    f.set_use_exercise(true);
+    f.advance_to(1.0).unwrap();
+    let hit = *f.impact_details().expect("hit");
+    let mut r = ImpulseFigure::new();
+    r.advance_to(1.0).unwrap();
+    let reference = *r.impact_details().unwrap();
+    // 14.3 not done: the reference tensor; 14.4 doubled: twice the impulse, so the corner
+    // leaves faster than −e times its approach.
+    assert!((hit.j - 2.0 * reference.j).abs() < 1e-4 * reference.j);
+    assert!(hit.normal_after > reference.normal_after + 0.1);
+    let note = f.draw(&mut Frame::default());
+    assert!(note.contains("Not done yet: exercise 14.3"), "{note}");
+    assert!(note.contains("Your normal_impulse differs"), "{note}");
+}

@@ -57,13 +57,13 @@ await wire('#fig-throw', {
     return p;
   },
   apply: (scene, p) => scene.setThrow(p.spin, p.tilt),
-  width: 5,
+  width: 4,
   plots: [
     {
       id: 'throw-plot', cols: [0, 1, 2],
       options: {
-        title: 'Sizes over the flight', xLabel: 'time (s)', yLabel: '|ω| (rad/s), |L| (0.01 kg m²/s)',
-        series: ['|ω|', '|L|'], colors: [TEAL, PURPLE], widths: [2, 4], minSpan: 1,
+        title: 'Sizes over the flight', xLabel: 'time (s)', yLabel: 'size (share of the throw\'s)',
+        series: ['|ω|', '|L|'], colors: [TEAL, PURPLE], widths: [2, 4], minSpan: 0.05,
       },
     },
     {

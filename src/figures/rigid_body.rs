@@ -410,6 +410,20 @@ impl ThrowFigure {
         self.omegas.push(omega);
     }
 
+    /// The plots' rows: `[t (s), |ω| over its value at the throw, |L| over its value at the
+    /// throw, angle between ω and L (°)]`, one per step so far (the sizes as shares, so the two
+    /// fit one axis: |L| stays at 1 while |ω| moves).
+    pub fn plot_rows(&self) -> Vec<[f32; 4]> {
+        let Some(first) = self.history.first() else {
+            return Vec::new();
+        };
+        let share = |x: f32, x0: f32| if x0 > 0.0 { x / x0 } else { 1.0 };
+        self.history
+            .iter()
+            .map(|r| [r[0], share(r[1], first[1]), share(r[2], first[2]), r[3]])
+            .collect()
+    }
+
     /// Steps the throw to `time_sec` (0 to 60 s; past [`ThrowFigure::duration_sec`] the box
     /// holds where the flight ends); an earlier time starts again.
     pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {

@@ -40,9 +40,9 @@ impl ThrowScene {
     pub fn duration_sec(&self) -> f32 {
         self.scene.duration_sec()
     }
-    /// `[t, |ω|, |L|, angle between ω and L (°), rotational energy]` per step of the whole run.
+    /// `[t, |ω| / |ω₀|, |L| / |L₀|, angle between ω and L (°)]` per step of the whole run.
     pub fn samples(&self) -> Vec<f32> {
-        flat(self.whole.samples())
+        flat(&self.whole.plot_rows())
     }
     /// Steps to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
