@@ -6,7 +6,8 @@ use glam::Vec3;
 use inbetween::draw::{palette, Frame, MeshId};
 use inbetween::figures::rigid_body::{
     DriftFigure, ImpulseFigure, RacketFigure, StackFigure, StackPreset, ThrowFigure, DOMINOES,
-    DOMINO_HALF, DRIFT_STEPS, FALLEN_DEG, INTEGRATORS, THROW_START, THROW_VELOCITY,
+    DOMINO_HALF, DRIFT_DRAWN_MAX_NORM, DRIFT_STEPS, FALLEN_DEG, INTEGRATORS, THROW_START,
+    THROW_VELOCITY,
 };
 
 #[test]
@@ -938,4 +939,96 @@ fn the_impact_uses_the_students_impulse_and_says_what_is_not_done() {
     let note = f.draw(&mut Frame::default());
     assert!(note.contains("Not done yet: exercise 14.3"), "{note}");
     assert!(note.contains("Your normal_impulse differs"), "{note}");
+}
+
+/// The times (s) at which the held-L racket's middle axis turns past horizontal, over 12 s.
+fn flip_times(spin: f32, wobble: f32) -> (Vec<f32>, RacketFigure) {
+    let mut f = RacketFigure::new();
+    f.set_spin(spin, wobble).unwrap();
+    let (mut flips, mut prev) = (Vec::new(), 1.0f32);
+    for k in 1..=720 {
+        f.advance_to(k as f32 / 60.0).unwrap();
+        let y = (f.bodies()[0].orientation * Vec3::Y).y;
+        if (y < 0.0) != (prev < 0.0) {
+            flips.push(k as f32 / 60.0);
+        }
+        prev = y;
+    }
+    (flips, f)
+}
+
+#[test]
+fn the_racket_flips_sooner_with_more_wobble_or_spin_and_never_without_wobble() {
+    // The page: at 6 rad/s and a wobble of 0.05 rad/s the first turn-over near 1.9 s and then
+    // every 3.2 s or so; at 0.01 rad/s first near 2.3 s and every 5 s; at 0 never; at 12 rad/s
+    // twice as often.
+    let (default, f) = flip_times(6.0, 0.05);
+    assert!((default[0] - 1.9).abs() < 0.1, "{default:?}");
+    assert!(
+        default.len() == 4 && (default[1] - default[0] - 3.2).abs() < 0.2,
+        "{default:?}"
+    );
+    assert!(
+        f.exploded_at(1).is_none(),
+        "the explicit racket holds at 6 rad/s"
+    );
+    let (small, _) = flip_times(6.0, 0.01);
+    assert!(
+        (small[0] - 2.3).abs() < 0.1 && (small[1] - small[0] - 5.0).abs() < 0.3,
+        "{small:?}"
+    );
+    let (none, _) = flip_times(6.0, 0.0);
+    assert!(none.is_empty(), "{none:?}");
+    let (fast, f) = flip_times(12.0, 0.05);
+    assert!((fast[0] - 1.05).abs() < 0.1 && fast.len() >= 6, "{fast:?}");
+    // At 12 rad/s the explicit racket's energy runs away: stopped, said, a gap in the plots.
+    let t = f
+        .exploded_at(1)
+        .expect("the explicit racket explodes at 12 rad/s");
+    assert!(t < 12.0 && f.exploded_at(0).is_none() && f.exploded_at(2).is_none());
+    let last = f.samples().last().unwrap();
+    assert!(last[2].is_nan() && last[5].is_nan() && last[1].is_finite());
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame);
+    assert!(note.contains("explicit: exploded at t ="), "{note}");
+    assert!(frame
+        .meshes
+        .iter()
+        .any(|m| m.color.truncate() == palette::RED));
+    assert!(frame.meshes.iter().all(|m| m.model.is_finite()));
+}
+
+#[test]
+fn at_20_rad_s_and_50_ms_the_drift_is_fast_and_the_lag_large() {
+    // The page's "Try this": each step multiplies |q| by √1.25 ≈ 1.118, so the unnormalised box
+    // is too large to draw (|q| past √2.5) after 5 steps, 0.25 s; the normalised box falls
+    // 4.2° behind the exponential one a step, 83° in one second.
+    let mut f = DriftFigure::new();
+    f.set_drift(20.0, 50.0).unwrap();
+    assert!((f.growth_per_step() - 1.25f32.sqrt()).abs() < 1e-6);
+    f.advance_to(0.2).unwrap();
+    assert!(f.bodies()[1].orientation.length() < DRIFT_DRAWN_MAX_NORM);
+    f.advance_to(0.25).unwrap();
+    assert!(f.bodies()[1].orientation.length() > DRIFT_DRAWN_MAX_NORM);
+    f.advance_to(1.0).unwrap();
+    assert!((f.lag_deg() - 83.3).abs() < 0.5, "{}", f.lag_deg());
+}
+
+#[test]
+fn the_default_drop_gives_the_numbers_the_page_quotes() {
+    // 20°, e = 0.5, 1 m: the corner arrives at 4.43 m/s (√(2 g h)) and leaves at 2.21 m/s, the
+    // centre only slows to 3.02 m/s, the box leaves spinning at 18 rad/s, with j = 1.41 N s;
+    // landing flat (tilt 0) takes j = (1 + e) m v = 6.64 N s.
+    let mut f = ImpulseFigure::new();
+    f.advance_to(1.0).unwrap();
+    let hit = *f.impact_details().unwrap();
+    assert!((hit.normal_before + 4.43).abs() < 0.01, "{hit:?}");
+    assert!((hit.normal_after - 2.21).abs() < 0.01, "{hit:?}");
+    assert!((hit.velocity_after.y + 3.02).abs() < 0.01, "{hit:?}");
+    assert!((hit.omega_after.length() - 18.2).abs() < 0.1, "{hit:?}");
+    assert!((hit.j - 1.41).abs() < 0.01, "{hit:?}");
+    f.set_drop(0.0, 0.5, 1.0).unwrap();
+    f.advance_to(1.0).unwrap();
+    let flat = f.impact_details().unwrap();
+    assert!((flat.j - 6.64).abs() < 0.01 && flat.omega_after.length() < 1e-3, "{flat:?}");
 }

@@ -28,7 +28,8 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
   const p = controls(gui, state, timeline);
   const shown = plots.map((plot) => ({ plot: new Plot(document.getElementById(plot.id), plot.options), cols: plot.cols }));
   const replot = () => {
-    const all = columns(state.scene.samples(), width);
+    // A racket that exploded has NaN samples from then on: gaps in its curves.
+    const all = columns(state.scene.samples(), width).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
     for (const { plot, cols } of shown) plot.setData(cols.map((c) => all[c]));
   };
   const run = guarded(gui, p, () => { apply(state.scene, p); replot(); }, (m) => { state.rejected = m; });
