@@ -30,6 +30,11 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
   const replot = () => {
     // A racket that exploded has NaN samples from then on: gaps in its curves.
     const all = columns(state.scene.samples(), width).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
+    // A live plot's x axis spans the whole timeline from the start: a last, empty row at its end.
+    if (live) {
+      all[0].push(timeline.duration);
+      for (let k = 1; k < width; k++) all[k].push(null);
+    }
     for (const { plot, cols } of shown) plot.setData(cols.map((c) => all[c]));
   };
   const run = guarded(gui, p, () => { apply(state.scene, p); replot(); }, (m) => { state.rejected = m; });
@@ -166,6 +171,7 @@ await wire('#fig-stack', {
     gui.add(p, 'preset', ['stack', 'dominoes']).name('scene').onChange((v) => {
       state.scene.free();
       state.scene = new StackScene(v);
+      timeline.duration = state.scene.durationSec();
       timeline.time = 0;
       timeline.show();
     });

@@ -277,8 +277,12 @@ impl RacketFigure {
             frame.mesh(MeshId::CUBE, model, color);
             let middle = body.rotation() * Vec3::Y * (RACKET_HALF.y + 0.12);
             frame.wide_line(at - middle, at + middle, palette::Y_AXIS, ARROW_PX);
-            let l = body.angular_momentum() / l0 * 0.3;
-            frame.arrow(at, at + l, palette::PURPLE, 0.05);
+            // L at 0.3 m for the start's |L|, at most twice that (an explicit racket's grows
+            // without bound before it is stopped); none for a racket that exploded.
+            if self.exploded[k].is_none() {
+                let l = (body.angular_momentum() / l0 * 0.3).clamp_length_max(0.6);
+                frame.arrow(at, at + l, palette::PURPLE, 0.05);
+            }
             frame.label(at + Vec3::new(-0.25, reach + 0.3, 0.0), name, palette::DARK);
             let row = self.history.last().copied().unwrap_or([0.0; 7]);
             parts.push(match self.exploded[k] {
