@@ -243,7 +243,7 @@ impl ParticlesCompute {
                 },
             ],
         });
-        let m = module(gpu, "particles", include_str!("shaders/particles.wgsl"));
+        let m = module(gpu, "particles", super::shader_source!("particles.wgsl"));
         Ok(Self {
             clock,
             spawn: pipeline(gpu, &layout, &m, "spawn"),
@@ -425,7 +425,7 @@ impl BoidsCompute {
             })
         };
         let groups = [group(&state[0], &state[1]), group(&state[1], &state[0])];
-        let m = module(gpu, "boids", include_str!("shaders/boids.wgsl"));
+        let m = module(gpu, "boids", super::shader_source!("boids.wgsl"));
         Ok(Self {
             n,
             pipeline: pipeline(gpu, &layout, &m, "step"),

@@ -5,6 +5,15 @@
 //! matrices, world-space lines, world-space point sprites) and the [`Renderer`] draws it with
 //! depth testing and 4× multisampling. Limits are WebGL2's, so one build runs on both backends.
 
+/// The text of the shader `src/render/shaders/NAME` as the build script wrote it into OUT_DIR
+/// (without comments in a release build: see `scripts/build-shaders.rs`).
+macro_rules! shader_source {
+    ($name:literal) => {
+        include_str!(concat!(env!("OUT_DIR"), "/", $name))
+    };
+}
+pub(crate) use shader_source;
+
 mod compute;
 mod context;
 mod renderer;

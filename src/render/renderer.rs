@@ -326,16 +326,16 @@ impl Renderer {
             device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some(label),
                 source: wgpu::ShaderSource::Wgsl(
-                    format!("{}\n{}", include_str!("shaders/common.wgsl"), source).into(),
+                    format!("{}\n{}", super::shader_source!("common.wgsl"), source).into(),
                 ),
             })
         };
-        let mesh_shader = shader("mesh", include_str!("shaders/mesh.wgsl"));
-        let line_shader = shader("line", include_str!("shaders/line.wgsl"));
-        let point_shader = shader("point", include_str!("shaders/point.wgsl"));
-        let stroke_shader = shader("stroke", include_str!("shaders/stroke.wgsl"));
-        let marker_shader = shader("marker", include_str!("shaders/marker.wgsl"));
-        let inset_shader = shader("inset", include_str!("shaders/inset.wgsl"));
+        let mesh_shader = shader("mesh", super::shader_source!("mesh.wgsl"));
+        let line_shader = shader("line", super::shader_source!("line.wgsl"));
+        let point_shader = shader("point", super::shader_source!("point.wgsl"));
+        let stroke_shader = shader("stroke", super::shader_source!("stroke.wgsl"));
+        let marker_shader = shader("marker", super::shader_source!("marker.wgsl"));
+        let inset_shader = shader("inset", super::shader_source!("inset.wgsl"));
         let layout_with = |layouts: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: None,

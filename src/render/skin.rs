@@ -95,9 +95,9 @@ impl SkinPass {
             source: wgpu::ShaderSource::Wgsl(
                 format!(
                     "{}\n{}\n{}",
-                    include_str!("shaders/common.wgsl"),
-                    include_str!("shaders/skin_common.wgsl"),
-                    include_str!("shaders/skin.wgsl")
+                    super::shader_source!("common.wgsl"),
+                    super::shader_source!("skin_common.wgsl"),
+                    super::shader_source!("skin.wgsl")
                 )
                 .into(),
             ),
@@ -478,8 +478,8 @@ impl SkinPass {
             source: wgpu::ShaderSource::Wgsl(
                 format!(
                     "{}\n{}",
-                    include_str!("shaders/skin_common.wgsl"),
-                    include_str!("shaders/skin_compute.wgsl")
+                    super::shader_source!("skin_common.wgsl"),
+                    super::shader_source!("skin_compute.wgsl")
                 )
                 .into(),
             ),

@@ -193,7 +193,7 @@ impl Textured {
         });
         let shader = |label: &str, source: &str, common: bool| {
             let text = if common {
-                format!("{}\n{}", include_str!("shaders/common.wgsl"), source)
+                format!("{}\n{}", super::shader_source!("common.wgsl"), source)
             } else {
                 source.to_string()
             };
@@ -202,9 +202,9 @@ impl Textured {
                 source: wgpu::ShaderSource::Wgsl(text.into()),
             })
         };
-        let quad_shader = shader("quad", include_str!("shaders/quad.wgsl"), true);
-        let sprite_shader = shader("sprite", include_str!("shaders/sprite.wgsl"), true);
-        let noise_shader = shader("noise", include_str!("shaders/noise.wgsl"), false);
+        let quad_shader = shader("quad", super::shader_source!("quad.wgsl"), true);
+        let sprite_shader = shader("sprite", super::shader_source!("sprite.wgsl"), true);
+        let noise_shader = shader("noise", super::shader_source!("noise.wgsl"), false);
         let layout = |layouts: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: None,
