@@ -371,7 +371,7 @@ fn the_frictionless_box_never_moves_sideways_and_comes_to_rest_on_a_face() {
         assert!(f.stopped().is_none());
         let last = *f.samples().last().unwrap();
         assert!((last[1] - 0.1).abs() < 2e-3 && last[3] < 1e-2, "{last:?}");
-        assert_eq!(f.samples().len(), 121);
+        assert_eq!(f.samples().len(), 121 + 2, "a row per step and two at the hit");
     }
 }
 
@@ -445,7 +445,7 @@ fn settle(preset: StackPreset, passes: f32) -> (StackFigure, f32) {
 fn the_stack_stands_for_ten_seconds_at_twenty_passes() {
     let (f, most) = settle(StackPreset::Stack, 20.0);
     assert_eq!(f.samples().len(), 601, "one row per step");
-    assert!(most < 0.01, "the top box moved {most} m");
+    assert!(most < 0.015, "the top box moved {most} m");
     for k in 0..3 {
         assert!(f.tilt_deg(k) < 1.0, "box {k} tilted {}°", f.tilt_deg(k));
     }
@@ -454,16 +454,18 @@ fn the_stack_stands_for_ten_seconds_at_twenty_passes() {
 }
 
 #[test]
-fn with_one_or_two_passes_the_stack_falls_apart() {
-    let (_, twenty) = settle(StackPreset::Stack, 20.0);
-    let (_, two) = settle(StackPreset::Stack, 2.0);
-    let (_, one) = settle(StackPreset::Stack, 1.0);
-    // Measured: about 0.7 cm at 20 passes, 40 cm at 2, 10 m at 1 (the top box slides away).
-    assert!(
-        two > 0.1 && two > 10.0 * twenty,
-        "2 passes: {two} m, 20: {twenty} m"
-    );
-    assert!(one > 1.0, "1 pass: {one} m");
+fn the_fewer_the_passes_the_more_the_stack_creeps() {
+    // The page: in 10 s the top box creeps about half a metre at 1 pass, a quarter at 2, 4 cm
+    // at 10, 1 cm at 20 and a few millimetres at 50.
+    let creep: Vec<f32> = [1.0, 2.0, 10.0, 20.0, 50.0]
+        .into_iter()
+        .map(|n| settle(StackPreset::Stack, n).1)
+        .collect();
+    assert!(creep.windows(2).all(|w| w[0] > w[1]), "{creep:?}");
+    assert!((0.4..0.7).contains(&creep[0]), "1 pass: {creep:?}");
+    assert!((0.2..0.35).contains(&creep[1]), "2 passes: {creep:?}");
+    assert!((0.03..0.05).contains(&creep[2]), "10 passes: {creep:?}");
+    assert!(creep[4] < 0.005, "50 passes: {creep:?}");
 }
 
 #[test]
@@ -490,9 +492,9 @@ fn every_domino_falls_in_turn_within_the_run() {
         f.samples().last().unwrap()[2] > DOMINO_HALF.y,
         "the last one moved"
     );
-    // With one pass the first domino falls into the second without toppling it.
+    // Even one pass topples them all: a falling domino only needs its push passed on.
     let (f, _) = settle(StackPreset::Dominoes, 1.0);
-    assert!(f.fallen() < DOMINOES, "{} down", f.fallen());
+    assert_eq!(f.fallen(), DOMINOES);
 }
 
 #[test]
@@ -732,7 +734,7 @@ fn the_drift_draws_three_labelled_boxes_with_their_raw_matrices() {
     // The box it should have been, outlined.
     assert!(frame.segments_of(palette::GREY).count() >= 12);
     assert!(
-        note.contains("unnormalised |q| = ") && note.contains("lags"),
+        note.contains("unnormalised |q| = ") && note.contains("behind the exponential one"),
         "{note}"
     );
 }
@@ -1030,5 +1032,29 @@ fn the_default_drop_gives_the_numbers_the_page_quotes() {
     f.set_drop(0.0, 0.5, 1.0).unwrap();
     f.advance_to(1.0).unwrap();
     let flat = f.impact_details().unwrap();
-    assert!((flat.j - 6.64).abs() < 0.01 && flat.omega_after.length() < 1e-3, "{flat:?}");
+    assert!(
+        (flat.j - 6.64).abs() < 0.01 && flat.omega_after.length() < 1e-3,
+        "{flat:?}"
+    );
+}
+
+#[test]
+fn the_impulse_plot_follows_the_point_that_hit() {
+    // Two rows at the moment of the hit: the corner arriving at 4.43 m/s, then leaving at e
+    // times that, 2.21 m/s; the plot draws the jump.
+    let mut f = ImpulseFigure::new();
+    f.advance_to(1.0).unwrap();
+    let hit = *f.impact_details().unwrap();
+    let at: Vec<&[f32; 4]> = f
+        .samples()
+        .iter()
+        .filter(|r| r[0] == hit.time_sec)
+        .collect();
+    assert_eq!(at.len(), 2, "{:?}", f.samples());
+    assert_eq!((at[0][2], at[1][2]), (hit.normal_before, hit.normal_after));
+    assert_eq!((at[0][3], at[1][3]), (hit.energy_before, hit.energy_after));
+    assert!(
+        f.samples().windows(2).all(|w| w[0][0] <= w[1][0]),
+        "time never goes back"
+    );
 }

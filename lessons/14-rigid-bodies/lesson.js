@@ -85,6 +85,8 @@ await wire('#fig-throw', {
 // Figure 2: quaternion drift, three orientation steps side by side.
 await wire('#fig-drift', {
   title: 'Quaternion steps',
+  // Square-on to the row, from far: the three boxes at the same size and seen alike.
+  camera: [0, 1, 0, 6, 0, 0.12],
   make: () => new DriftScene(),
   controls: (gui) => {
     const p = { spin: 5, step: 10, useExercise: false };
@@ -107,6 +109,7 @@ await wire('#fig-drift', {
 // Figure 3: the tennis racket, three angular integrators.
 await wire('#fig-racket', {
   title: 'Racket',
+  camera: [0, 0.9, 0, 5, 0, 0.15],
   make: () => new RacketScene(),
   controls: (gui) => {
     const p = { spin: 6, wobble: 0.05, useExercise: false };

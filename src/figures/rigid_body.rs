@@ -45,6 +45,8 @@ const HEIGHT_M: f32 = 0.8;
 pub const MAX_SAMPLES: usize = 3600;
 /// The racket figure's timeline (s): several flips at the default spin.
 pub const RACKET_DURATION_SEC: f32 = 12.0;
+/// The rackets' colours, in the order of [`INTEGRATORS`] (the page's plots use the same).
+const RACKET_COLORS: [Vec3; 3] = [palette::PURPLE, palette::ORANGE, palette::TEAL];
 /// A racket whose energy passes this multiple of its start has exploded: it stops there.
 pub const RACKET_EXPLODED_ENERGY: f32 = 100.0;
 /// Where the page's exercises live, for the notes.
@@ -270,9 +272,10 @@ impl RacketFigure {
             let at = Self::place(k);
             let r = Mat4::from_mat3(body.rotation());
             let model = Mat4::from_translation(at) * r * Mat4::from_scale(RACKET_HALF);
+            // Each racket in the colour of its curves on the page's plots.
             let color = match self.exploded[k] {
                 Some(_) => palette::RED,
-                None => palette::ORANGE,
+                None => RACKET_COLORS[k],
             };
             frame.mesh(MeshId::CUBE, model, color);
             let middle = body.rotation() * Vec3::Y * (RACKET_HALF.y + 0.12);
@@ -281,7 +284,7 @@ impl RacketFigure {
             // without bound before it is stopped); none for a racket that exploded.
             if self.exploded[k].is_none() {
                 let l = (body.angular_momentum() / l0 * 0.3).clamp_length_max(0.6);
-                frame.arrow(at, at + l, palette::PURPLE, 0.05);
+                frame.arrow(at, at + l, palette::DARK, 0.05);
             }
             frame.label(at + Vec3::new(-0.25, reach + 0.3, 0.0), name, palette::DARK);
             let row = self.history.last().copied().unwrap_or([0.0; 7]);
@@ -316,17 +319,17 @@ impl RacketFigure {
 pub const GRAVITY: Vec3 = Vec3::new(0.0, -9.81, 0.0);
 /// The thrown box's half-extents (m): long along its x, middle along y, thin along z; 1 kg. Its
 /// moments are smallest about x, in between about y, largest about z (the shortest axis).
-pub const THROW_HALF: Vec3 = Vec3::new(0.3, 0.15, 0.08);
+pub const THROW_HALF: Vec3 = Vec3::new(0.45, 0.22, 0.12);
 /// Where the throw starts (the centre of mass, m) and the velocity it is thrown with (m/s).
 pub const THROW_START: Vec3 = Vec3::new(-0.9, 1.0, 0.0);
-pub const THROW_VELOCITY: Vec3 = Vec3::new(1.2, 7.5, 0.0);
+pub const THROW_VELOCITY: Vec3 = Vec3::new(1.0, 6.0, 0.0);
 /// Substeps of the throw per [`SIM_DT`] (and of the dropped box's free flight): the centre's
 /// semi-implicit Euler step then lands within a millimetre of the exact parabola, and the
 /// rotation's energy stays within 3 % at the top spin (measured in the tests).
 pub const THROW_SUBSTEPS: usize = 50;
 /// Length of the drawn `L` (m); ω is drawn at the scale that makes its component along `L` as
 /// long, so ω's tip moves on the plane across `L` through `L`'s tip.
-pub const THROW_ARROW_M: f32 = 0.8;
+pub const THROW_ARROW_M: f32 = 1.0;
 
 /// The world direction of the thrown box's angular momentum: mostly up, leaning towards the
 /// default camera so the arrow and the cone around it are seen from the side.
@@ -825,7 +828,15 @@ impl ImpulseFigure {
 
     fn record(&mut self) {
         let b = &self.body;
-        let (point, _) = touching(b);
+        // The lowest point until the first hit, then the body's point that hit, wherever it
+        // goes: the plot shows that point's velocity jump to −e times itself.
+        let point = match &self.first_impact {
+            Some(hit) => {
+                let local = hit.orientation.normalize().inverse() * (hit.point - hit.centre);
+                b.position + b.orientation.normalize() * local
+            }
+            None => touching(b).0,
+        };
         self.history.push([
             self.steps_done as f32 * SIM_DT,
             b.position.y,
@@ -882,6 +893,17 @@ impl ImpulseFigure {
                 energy_after: b.kinetic_energy(),
                 orientation: before.orientation,
             });
+            // The moment of the hit, twice: the plot jumps there from the approach to the
+            // bounce.
+            if let Some(hit) = self.first_impact {
+                for (normal, energy) in [
+                    (hit.normal_before, hit.energy_before),
+                    (hit.normal_after, hit.energy_after),
+                ] {
+                    self.history
+                        .push([hit.time_sec, hit.centre.y, normal, energy]);
+                }
+            }
             let mut world = World::default();
             world.restitution = self.restitution;
             world.friction = 0.0;
@@ -924,9 +946,10 @@ impl ImpulseFigure {
         Ok(())
     }
 
-    /// One row per step so far: `[t (s), height of the centre of mass (m), normal velocity of
-    /// the lowest point (m/s; the lowest corner, or the mean of those level with it), kinetic
-    /// energy (J)]`.
+    /// One row per step so far, and two at the moment of the first hit (before and after the
+    /// impulse): `[t (s), height of the centre of mass (m), normal velocity (m/s) of the lowest
+    /// point until the hit (the lowest corner, or the mean of those level with it) and of the
+    /// point that hit from then on, kinetic energy (J)]`.
     pub fn samples(&self) -> &[[f32; 4]] {
         &self.history
     }
@@ -1447,8 +1470,9 @@ impl StackFigure {
         let row = self.history.last().copied().unwrap_or([0.0; 3]);
         let t = self.steps_done as f32 * SIM_DT;
         let solver = format!(
-            "{} solver passes per step ({} steps a frame), friction μ = {}, restitution e = {}.",
+            "{} solver pass{} per step ({} steps a frame), friction μ = {}, restitution e = {}.",
             self.iterations,
+            if self.iterations == 1 { "" } else { "es" },
             STACK_SUBSTEPS,
             format_number(self.friction),
             format_number(self.restitution),
@@ -1499,7 +1523,7 @@ pub const DRIFT_STEPS: [(OrientationStep, &str); 3] = [
 /// The drift figure's boxes' half-extents (m), 1 kg; they spin about their shortest axis z (the
 /// largest moment: a stable spin), tipped by [`DRIFT_TIP_RAD`] from the world's z (the viewer's
 /// direction).
-pub const DRIFT_HALF: Vec3 = Vec3::new(0.2, 0.1, 0.05);
+pub const DRIFT_HALF: Vec3 = Vec3::new(0.3, 0.15, 0.075);
 /// How far the boxes are tipped about x before they spin about their own z (rad).
 pub const DRIFT_TIP_RAD: f32 = 0.6;
 /// The drift figure's timeline (s).
@@ -1764,6 +1788,14 @@ impl DriftFigure {
         (2.0 * between.xyz().length().atan2(between.w.abs())).to_degrees()
     }
 
+    /// How far the normalised additive box has fallen behind the exponential one over the steps
+    /// so far, counting whole turns (degrees): `n (|ω| Δt − 2 atan(|ω| Δt / 2))`, which
+    /// [`DriftFigure::lag_deg`] measures modulo a turn.
+    pub fn total_lag_deg(&self) -> f32 {
+        let turn = self.spin * self.dt_sec();
+        (self.steps_done as f32 * (turn - 2.0 * (0.5 * turn).atan())).to_degrees()
+    }
+
     /// Where box `k` stands.
     pub fn place(k: usize) -> Vec3 {
         Vec3::new((k as f32 - 1.0) * DRIFT_SPACING_M, DRIFT_HEIGHT_M, 0.0)
@@ -1784,7 +1816,7 @@ impl DriftFigure {
             let at = Self::place(k);
             let norm = body.orientation.length();
             let color = BOX_COLORS[k];
-            let label_at = at + Vec3::new(-0.5, 0.75, 0.0);
+            let label_at = at + Vec3::new(0.0, 0.3, 0.0);
             if k == 1 {
                 // The box it should be: the matrix of the normalised quaternion, outlined.
                 let mut unit = *body;
@@ -1828,8 +1860,8 @@ impl DriftFigure {
              step multiplies it by √(1 + (|ω|Δt/2)²) = {:.6}), and its matrix (1 − |q|²)E + |q|²R \
              stretches the box by up to 2|q|² − 1 = {} and skews its edges.{stopped} The \
              normalised and \
-             exponential |q| stay 1 ({} and {}). The normalised additive box lags the \
-             exponential one by {}°: it turns by 2 atan(|ω|Δt/2) a step, not |ω|Δt.",
+             exponential |q| stay 1 ({} and {}). The normalised additive box has fallen {}° \
+             behind the exponential one: it turns by 2 atan(|ω|Δt/2) a step, not |ω|Δt.",
             format_number(self.step_ms),
             format_number(self.spin),
             format_number(s),
@@ -1837,7 +1869,7 @@ impl DriftFigure {
             format_number(2.0 * s * s - 1.0),
             format_number(self.bodies[0].orientation.length()),
             format_number(self.bodies[2].orientation.length()),
-            format_number(self.lag_deg()),
+            format_number(self.total_lag_deg()),
         ) + &if self.use_exercise {
             format!(" {}", self.exercise_note())
         } else {

@@ -486,7 +486,14 @@ impl World {
         };
         for _ in 0..self.iterations {
             for row in &mut rows {
-                // Friction first, bounded by the normal impulse of the previous pass.
+                // The normal impulse first, then friction bounded by it: the impulses start at
+                // zero every step (no warm start), so friction solved first would have no bound
+                // to work with in the first pass, and none at all with one pass.
+                let vn = speed(&velocity, &omega, row, 0);
+                let new = (row.lambda[0] - (vn - row.target) * row.axes[0].mass).max(0.0);
+                let d = new - row.lambda[0];
+                row.lambda[0] = new;
+                push(&mut velocity, &mut omega, row, 0, d);
                 let limit = self.friction * row.lambda[0];
                 for k in 1..3 {
                     let vt = speed(&velocity, &omega, row, k);
@@ -495,11 +502,6 @@ impl World {
                     row.lambda[k] = new;
                     push(&mut velocity, &mut omega, row, k, d);
                 }
-                let vn = speed(&velocity, &omega, row, 0);
-                let new = (row.lambda[0] - (vn - row.target) * row.axes[0].mass).max(0.0);
-                let d = new - row.lambda[0];
-                row.lambda[0] = new;
-                push(&mut velocity, &mut omega, row, 0, d);
             }
         }
         // Restitution, once the contacts hold: a contact that was approaching faster than the
