@@ -2,15 +2,15 @@
 //!
 //! - [`ThrowFigure`] (figure 1): a box thrown up with spin; `L` stays fixed in the world while ω
 //!   wobbles around it (the space cone), and the centre of mass flies its parabola.
-//! - [`RacketFigure`] (figure 2): the tennis racket (the intermediate-axis instability), spun
+//! - [`DriftFigure`] (figure 2): quaternion drift, the additive orientation step with and without
+//!   normalising beside the exponential one.
+//! - [`RacketFigure`] (figure 3): the tennis racket (the intermediate-axis instability), spun
 //!   about its middle axis and stepped by three angular integrators side by side, with the
 //!   energy and the angular momentum each keeps.
-//! - [`ImpulseFigure`] (figure 3): a box dropped tilted meets the ground with one corner; the one
+//! - [`ImpulseFigure`] (figure 4): a box dropped tilted meets the ground with one corner; the one
 //!   impulse [`crate::rigid_body::normal_impulse`] that resolves it, with v and ω before and after.
-//! - [`StackFigure`] (figure 4): a stack of boxes or a row of dominoes on the contact solver
+//! - [`StackFigure`] (figure 5): a stack of boxes or a row of dominoes on the contact solver
 //!   (sequential impulses), with its passes, friction and restitution.
-//! - [`DriftFigure`] (figure 5): quaternion drift, the additive orientation step with and without
-//!   normalising beside the exponential one.
 //!
 //! Each is deterministic: the state at timeline time `t` is the state after `⌊t / Δt⌋` steps from
 //! the start, replayed when the time goes back or a setting changes.
@@ -636,7 +636,7 @@ pub struct Impact {
     pub orientation: Quat,
 }
 
-/// Figure 3: a box dropped tilted, so that one corner meets the ground first, and the one impulse
+/// Figure 4: a box dropped tilted, so that one corner meets the ground first, and the one impulse
 /// that resolves the impact ([`crate::rigid_body::normal_impulse`], frictionless: it acts along
 /// the ground's normal only). The box falls without spin; at the moment of contact (found by
 /// bisection within the step, so the box never sinks into the ground) the corner gets `j n`,
@@ -1170,7 +1170,7 @@ const BOX_COLORS: [Vec3; 7] = [
     palette::BROWN,
 ];
 
-/// Figure 4: a stack of three boxes, or a row of dominoes, on the contact solver of
+/// Figure 5: a stack of three boxes, or a row of dominoes, on the contact solver of
 /// [`crate::rigid_body::contact`] (sequential impulses). The reader sets the solver's passes
 /// per step, friction and restitution (the run starts again) and pushes: the top box of the
 /// stack gets a sideways shove, the first domino a push at its top. Pushes are recorded with the
@@ -1537,7 +1537,7 @@ pub const DRIFT_MAX_NORM: f32 = 1e6;
 const DRIFT_SPACING_M: f32 = 1.5;
 const DRIFT_HEIGHT_M: f32 = 1.0;
 
-/// Figure 5: quaternion drift. Three boxes spun at the same ω, stepped at the same `Δt` by the
+/// Figure 2: quaternion drift. Three boxes spun at the same ω, stepped at the same `Δt` by the
 /// three orientation steps of [`DRIFT_STEPS`]. The additive step `q + ½ Δt ω q = (1 + ½ Δt ω) q`
 /// multiplies `|q|` by `|1 + ½ Δt ω| = √(1 + (|ω| Δt / 2)²)` every step, exactly (the norm of a
 /// product of quaternions is the product of the norms): left unnormalised, `|q|` grows
