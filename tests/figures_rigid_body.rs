@@ -371,7 +371,11 @@ fn the_frictionless_box_never_moves_sideways_and_comes_to_rest_on_a_face() {
         assert!(f.stopped().is_none());
         let last = *f.samples().last().unwrap();
         assert!((last[1] - 0.1).abs() < 2e-3 && last[3] < 1e-2, "{last:?}");
-        assert_eq!(f.samples().len(), 121 + 2, "a row per step and two at the hit");
+        assert_eq!(
+            f.samples().len(),
+            121 + 2,
+            "a row per step and two at the hit"
+        );
     }
 }
 
@@ -410,7 +414,7 @@ fn the_drop_draws_the_impulse_and_the_velocities_before_and_after() {
     f.advance_to(0.6).unwrap();
     let mut frame = Frame::default();
     let note = f.draw(&mut frame);
-    for name in ["j n", "v before", "v after", "ω after", "contact"] {
+    for name in ["j n", "v before", "v after", "ω after"] {
         assert!(frame.labels.iter().any(|l| l.text == name), "{name}");
     }
     // Dropped without spin: no ω before to draw.
@@ -424,6 +428,13 @@ fn the_drop_draws_the_impulse_and_the_velocities_before_and_after() {
         "the contact point is a dot"
     );
     assert!(frame.segments_of(palette::RED).count() >= 1, "the impulse");
+    // The impulse's arrow comes up to the contact point from below (outside the box).
+    assert!(
+        frame
+            .segments_of(palette::RED)
+            .all(|(a, b)| a.y <= hit.point.y + 1e-4 && b.y <= hit.point.y + 1e-4),
+        "the impulse ends at the contact"
+    );
     assert!(
         note.contains("−e times it") && note.contains("j = "),
         "{note}"

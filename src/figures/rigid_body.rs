@@ -1045,15 +1045,12 @@ impl ImpulseFigure {
                 frame.label(o + d + 0.04 * d.normalize(), name, color);
             }
         }
-        let j_tip = hit.point + Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE);
-        frame.arrow(hit.point, j_tip, palette::RED, 0.06);
-        frame.label(j_tip + Vec3::new(0.04, 0.02, 0.0), "j n", palette::RED);
+        // The impulse pushes the box up at the corner: drawn from below the ground up to the
+        // contact point (from the corner up it would be hidden inside the box).
+        let j_tail = hit.point - Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE).max(0.05);
+        frame.arrow(j_tail, hit.point, palette::RED, 0.06);
+        frame.label(j_tail + Vec3::new(0.04, 0.0, 0.0), "j n", palette::RED);
         frame.marker_on_top(hit.point, 12.0, palette::DARK);
-        frame.label_left(
-            hit.point - Vec3::new(0.04, 0.0, 0.0),
-            "contact",
-            palette::DARK,
-        );
         let v3 = |v: Vec3| {
             format!(
                 "({}, {}, {})",
