@@ -1813,7 +1813,7 @@ impl DriftFigure {
             let at = Self::place(k);
             let norm = body.orientation.length();
             let color = BOX_COLORS[k];
-            let label_at = at + Vec3::new(0.0, 0.3, 0.0);
+            let label_at = at + Vec3::new(0.0, 0.6, 0.0);
             if k == 1 {
                 // The box it should be: the matrix of the normalised quaternion, outlined.
                 let mut unit = *body;
