@@ -1139,6 +1139,9 @@ pub const STACK_OFFSET_M: f32 = 0.01;
 /// The dominoes' half-extents (m: 5 cm thick, 40 cm tall, 20 cm wide), 1 kg each.
 pub const DOMINO_HALF: Vec3 = Vec3::new(0.025, 0.2, 0.1);
 pub const DOMINOES: usize = 10;
+/// How much energy (J) the contact figure lets the solver's position corrections add before it
+/// calls the run exploded.
+pub const STACK_ENERGY_SLACK_J: f32 = 0.2;
 /// The distance between neighbouring dominoes' centres (m): less than their height, so each
 /// falling one reaches the next.
 pub const DOMINO_SPACING_M: f32 = 0.25;
@@ -1172,9 +1175,11 @@ const BOX_COLORS: [Vec3; 7] = [
 /// per step, friction and restitution (the run starts again) and pushes: the top box of the
 /// stack gets a sideways shove, the first domino a push at its top. Pushes are recorded with the
 /// frame they happened at and replayed, so the state at a time is always the same. With too few
-/// passes the contacts are not resolved before the step ends: the stack sinks, jitters and falls
-/// apart. A step that fails ([`World::step`] returns an error: a state that is not finite)
-/// stops the figure there ([`StackFigure::exploded`]).
+/// passes the contacts are not resolved before the step ends and the stack creeps. A step that
+/// fails ([`World::step`] returns an error: a state that is not finite), or one after which the
+/// bodies hold more energy (kinetic and gravity's) than the run had plus what the pushes gave
+/// and [`STACK_ENERGY_SLACK_J`], stops the figure there ([`StackFigure::exploded`]): no contact
+/// may add energy, so a solver that does has blown up.
 #[derive(Clone, Debug)]
 pub struct StackFigure {
     preset: StackPreset,
@@ -1188,6 +1193,11 @@ pub struct StackFigure {
     /// The frames at which pushes happened, in order.
     pushes: Vec<usize>,
     exploded: Option<f32>,
+    /// Why it stopped: the step failed (false) or the solver added energy (true).
+    gained_energy: bool,
+    /// The most energy (J, kinetic and gravity's) the bodies may hold: the start's, what the
+    /// pushes gave, and [`STACK_ENERGY_SLACK_J`].
+    energy_budget: f32,
     /// The contact points at the present state (what the next step resolves).
     contact_points: Vec<Vec3>,
     /// Per step: `[t, total kinetic energy, distance the tracked body has moved]`.
@@ -1208,6 +1218,8 @@ impl StackFigure {
             steps_done: 0,
             pushes: Vec::new(),
             exploded: None,
+            gained_energy: false,
+            energy_budget: 0.0,
             contact_points: Vec::new(),
             history: Vec::new(),
         };
@@ -1303,6 +1315,8 @@ impl StackFigure {
         self.world = world;
         self.steps_done = 0;
         self.exploded = None;
+        self.gained_energy = false;
+        self.energy_budget = self.total_energy() + STACK_ENERGY_SLACK_J;
         self.history.clear();
         self.record();
         self.apply_pushes_at(0);
@@ -1323,7 +1337,23 @@ impl StackFigure {
     }
 
     /// The push's impulse on the world as it is now.
+    /// The bodies' kinetic energy plus gravity's (`m g y`, from the ground), in J.
+    fn total_energy(&self) -> f32 {
+        let g = -self.world.gravity.y;
+        self.world
+            .bodies
+            .iter()
+            .map(|(b, _)| b.kinetic_energy() + b.mass * g * b.position.y)
+            .sum()
+    }
+
     fn apply_push(&mut self) {
+        let before = self.total_energy();
+        self.shove();
+        self.energy_budget += self.total_energy() - before;
+    }
+
+    fn shove(&mut self) {
         let (b, _) = &mut self.world.bodies[match self.preset {
             StackPreset::Stack => 2,
             StackPreset::Dominoes => 0,
@@ -1384,6 +1414,10 @@ impl StackFigure {
                         self.exploded = Some(self.steps_done as f32 * SIM_DT);
                         break;
                     }
+                }
+                if self.exploded.is_none() && self.total_energy() > self.energy_budget {
+                    self.exploded = Some((self.steps_done + 1) as f32 * SIM_DT);
+                    self.gained_energy = true;
                 }
             }
             self.steps_done += 1;
@@ -1497,6 +1531,14 @@ impl StackFigure {
             n => format!(" Pushed {n} times."),
         };
         let exploded = match self.exploded {
+            Some(at) if self.gained_energy => format!(
+                " At t = {} s the bodies held more energy than the run ever had: the solver \
+                 added some (a restitution near 1 given to several contacts of a body at once, \
+                 or, without friction, boxes sliding into each other and pushed out hard). The \
+                 figure stopped there: press reset, lower the restitution or raise the \
+                 friction.",
+                format_number(at)
+            ),
             Some(at) => format!(
                 " The solver's step failed at t = {} s (a body's state left the finite \
                  numbers): the figure stopped there. Raise the passes or press reset.",
