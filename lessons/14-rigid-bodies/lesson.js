@@ -101,7 +101,9 @@ await wire('#fig-drift', {
     id: 'drift-plot', cols: [0, 1, 2, 3],
     options: {
       title: 'Length of each quaternion', xLabel: 'time (s)', yLabel: '|q| (no unit)',
-      series: ['normalised', 'unnormalised', 'exponential'], colors: [ORANGE, TEAL, PURPLE], widths: [4, 2, 1.5], minSpan: 0.05,
+      // Logarithmic: the unnormalised length grows geometrically (a straight line here), from
+      // 1 to the 10⁶ where the figure stops stepping it.
+      series: ['normalised', 'unnormalised', 'exponential'], colors: [ORANGE, TEAL, PURPLE], widths: [4, 2, 1.5], log: 'y',
     },
   }],
 });
