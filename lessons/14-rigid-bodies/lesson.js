@@ -157,7 +157,7 @@ await wire('#fig-impulse', {
   plots: [{
     id: 'impulse-plot', cols: [0, 2],
     options: {
-      title: 'Normal velocity of the lowest corner', xLabel: 'time (s)', yLabel: 'velocity (m/s)',
+      title: 'Normal velocity of the lowest corner, then of the one that hit', xLabel: 'time (s)', yLabel: 'velocity (m/s)',
       series: ['corner'], colors: [ORANGE], minSpan: 0.5,
     },
   }],
