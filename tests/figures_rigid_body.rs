@@ -1103,3 +1103,16 @@ fn without_friction_the_stack_blows_up_and_the_figure_says_so() {
         assert!(f.exploded().is_none(), "{preset:?} at {:?}", f.exploded());
     }
 }
+
+#[test]
+fn a_level_drop_reads_no_spin_in_the_note() {
+    let mut f = ImpulseFigure::new();
+    f.set_drop(0.0, 0.5, 1.0).unwrap();
+    f.advance_to(0.6).unwrap();
+    let note = f.draw(&mut Frame::default());
+    assert!(note.contains("(|ω| = 0.000)"), "{note}");
+    assert!(
+        !note.contains("e-"),
+        "no rounding leftovers in scientific notation: {note}"
+    );
+}

@@ -1051,12 +1051,14 @@ impl ImpulseFigure {
         frame.arrow(j_tail, hit.point, palette::RED, 0.06);
         frame.label(j_tail + Vec3::new(0.04, 0.0, 0.0), "j n", palette::RED);
         frame.marker_on_top(hit.point, 12.0, palette::DARK);
+        // Rounding leftovers (a spin of 1e-6 rad/s after a level drop) read as the 0 they are.
+        let clean = |x: f32| if x.abs() < 1e-4 { 0.0 } else { x };
         let v3 = |v: Vec3| {
             format!(
                 "({}, {}, {})",
-                format_number(v.x),
-                format_number(v.y),
-                format_number(v.z)
+                format_number(clean(v.x)),
+                format_number(clean(v.y)),
+                format_number(clean(v.z))
             )
         };
         let stopped = match self.stopped {
@@ -1081,7 +1083,7 @@ impl ImpulseFigure {
             v3(hit.velocity_after),
             v3(hit.omega_before),
             v3(hit.omega_after),
-            format_number(hit.omega_after.length()),
+            format_number(clean(hit.omega_after.length())),
             format_number(hit.energy_before),
             format_number(hit.energy_after),
         ) + &if self.use_exercise {
