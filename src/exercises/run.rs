@@ -795,7 +795,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 36);
+        assert_eq!(NAMES.len(), 40);
     }
 
     #[test]
