@@ -235,6 +235,7 @@ pub struct SkinnedDraw {
 
 impl Frame {
     /// Draws `mesh` transformed by `model`, lit, in a uniform colour.
+    #[inline(never)]
     pub fn mesh(&mut self, mesh: MeshId, model: Mat4, color: Vec3) {
         self.meshes.push(MeshDraw {
             mesh,
@@ -246,6 +247,7 @@ impl Frame {
     }
 
     /// Draws `mesh` lit, with the colours stored in its vertices.
+    #[inline(never)]
     pub fn mesh_vertex_colors(&mut self, mesh: MeshId, model: Mat4) {
         self.meshes.push(MeshDraw {
             mesh,
@@ -258,6 +260,7 @@ impl Frame {
 
     /// Draws `mesh` with the colours stored in its vertices, unlit: the colours are the final
     /// (linear RGB) colours, already shaded by the caller.
+    #[inline(never)]
     pub fn mesh_unlit_vertex_colors(&mut self, mesh: MeshId, model: Mat4) {
         self.meshes.push(MeshDraw {
             mesh,
@@ -269,10 +272,12 @@ impl Frame {
     }
 
     /// A line segment from `a` to `b`.
+    #[inline(never)]
     pub fn line(&mut self, a: Vec3, b: Vec3, color: Vec3) {
         self.biased_line(a, b, color, 0.0);
     }
 
+    #[inline(never)]
     fn biased_line(&mut self, a: Vec3, b: Vec3, color: Vec3, depth_bias: f32) {
         let color = color.extend(1.0).to_array();
         for p in [a, b] {
@@ -285,6 +290,7 @@ impl Frame {
     }
 
     /// Consecutive points joined by segments (a curve, a trajectory).
+    #[inline(never)]
     pub fn polyline(&mut self, points: &[Vec3], color: Vec3) {
         for pair in points.windows(2) {
             self.line(pair[0], pair[1], color);
@@ -292,6 +298,7 @@ impl Frame {
     }
 
     /// A shaded disc of `radius` (world units) always facing the camera.
+    #[inline(never)]
     pub fn point(&mut self, center: Vec3, radius: f32, color: Vec3) {
         self.points.push(PointInstance {
             center: center.to_array(),
@@ -302,6 +309,7 @@ impl Frame {
 
     /// A [`Frame::point`] drawn over everything, seen through any surface in front of it (the
     /// joints of a skeleton inside a body).
+    #[inline(never)]
     pub fn point_on_top(&mut self, center: Vec3, radius: f32, color: Vec3) {
         self.points.push(PointInstance {
             center: center.to_array(),
@@ -313,6 +321,7 @@ impl Frame {
     /// A wide line through `points` in `style`: one [`StrokeSegment`] per consecutive pair, with
     /// the distance along the line carried from segment to segment so dashes run on across the
     /// joins. Segments with a non-finite end are left out (the line breaks there).
+    #[inline(never)]
     pub fn stroke(&mut self, points: &[Vec3], color: Vec3, style: StrokeStyle) {
         let width_px = if style.width_px.is_nan() {
             MIN_WIDTH_PX
@@ -345,16 +354,19 @@ impl Frame {
     }
 
     /// A solid wide line from `a` to `b`, `width_px` CSS pixels wide.
+    #[inline(never)]
     pub fn wide_line(&mut self, a: Vec3, b: Vec3, color: Vec3, width_px: f32) {
         self.stroke(&[a, b], color, StrokeStyle::solid(width_px));
     }
 
     /// A solid wide line through `points` (a curve, a path, a trajectory).
+    #[inline(never)]
     pub fn wide_polyline(&mut self, points: &[Vec3], color: Vec3, width_px: f32) {
         self.stroke(points, color, StrokeStyle::solid(width_px));
     }
 
     /// A [`Frame::wide_line`] drawn over everything (a bone inside a body).
+    #[inline(never)]
     pub fn wide_line_on_top(&mut self, a: Vec3, b: Vec3, color: Vec3, width_px: f32) {
         let style = StrokeStyle {
             on_top: true,
@@ -364,11 +376,13 @@ impl Frame {
     }
 
     /// A dot `size_px` CSS pixels across at `center`, outlined, the same size at any distance.
+    #[inline(never)]
     pub fn marker(&mut self, center: Vec3, size_px: f32, color: Vec3) {
         self.push_marker(center, size_px, color, Vec3::ZERO, MARKER_DOT, false);
     }
 
     /// A [`Frame::marker`] drawn over everything (a joint inside a body).
+    #[inline(never)]
     pub fn marker_on_top(&mut self, center: Vec3, size_px: f32, color: Vec3) {
         self.push_marker(center, size_px, color, Vec3::ZERO, MARKER_DOT, true);
     }
@@ -376,6 +390,7 @@ impl Frame {
     /// Equal-time ticks: `samples` are the positions of something at equal time steps; each gets
     /// a short bar across the path (`size_px` long on screen), so close ticks read as slow and
     /// spread ones as fast. The path's direction at a tick comes from its neighbours.
+    #[inline(never)]
     pub fn ticks(&mut self, samples: &[Vec3], size_px: f32, color: Vec3) {
         let n = samples.len();
         for (i, p) in samples.iter().enumerate() {
@@ -418,6 +433,7 @@ impl Frame {
     /// [`Frame::shadow_reach`] metres up. It lets a reader judge from one view how high
     /// something is and whether it touches the ground. Nothing is drawn for a non-finite or
     /// non-positive radius or for an object below the ground.
+    #[inline(never)]
     pub fn contact_shadow(&mut self, bottom: Vec3, radius: f32) {
         if !bottom.is_finite() || !radius.is_finite() || radius <= 0.0 || bottom.y < -1e-3 {
             return;
@@ -455,12 +471,14 @@ impl Frame {
 
     /// Declares that the box from `min` to `max` must stay in view (see [`Frame::keep_in_view`]):
     /// its eight corners join the points the camera fits.
+    #[inline(never)]
     pub fn keep_box_in_view(&mut self, min: Vec3, max: Vec3) {
         let finite = box_corners(min, max).into_iter().filter(|c| c.is_finite());
         self.keep_in_view.extend(finite);
     }
 
     /// A [`Frame::line`] drawn over everything (the bones of a skeleton inside a body).
+    #[inline(never)]
     pub fn line_on_top(&mut self, a: Vec3, b: Vec3, color: Vec3) {
         self.biased_line(a, b, color, ON_TOP);
     }
@@ -468,6 +486,7 @@ impl Frame {
     /// An arrow from `from` to `to`: a shaft line and a cone head whose length is `head` world
     /// units (shortened for short arrows so the head never overshoots the tail). A zero-length
     /// arrow draws nothing.
+    #[inline(never)]
     pub fn arrow(&mut self, from: Vec3, to: Vec3, color: Vec3, head: f32) {
         let v = to - from;
         let length = v.length();
@@ -487,6 +506,7 @@ impl Frame {
     }
 
     /// A text label at `anchor` (world space), drawn over the canvas by the page.
+    #[inline(never)]
     pub fn label(&mut self, anchor: Vec3, text: impl Into<String>, color: Vec3) {
         self.labels.push(Label {
             anchor,
@@ -498,6 +518,7 @@ impl Frame {
     }
 
     /// A [`Frame::label`] with a `priority`: where labels crowd, the higher one keeps its place.
+    #[inline(never)]
     pub fn label_with_priority(
         &mut self,
         anchor: Vec3,
@@ -513,6 +534,7 @@ impl Frame {
 
     /// A text label that ends at `anchor` (it reads leftwards from there): for a label that
     /// would otherwise run into something drawn to the anchor's right.
+    #[inline(never)]
     pub fn label_left(&mut self, anchor: Vec3, text: impl Into<String>, color: Vec3) {
         self.labels.push(Label {
             anchor,
@@ -526,6 +548,7 @@ impl Frame {
     /// The x, y and z axes of the frame `m` as wide lines ([`AXIS_PX`]) in the palette's axis
     /// colours, each `length` long, drawn over anything at the same depth (the grid's centre
     /// lines).
+    #[inline(never)]
     pub fn axes(&mut self, m: Mat4, length: f32) {
         let o = m.transform_point3(Vec3::ZERO);
         for (axis, color) in [
@@ -539,6 +562,7 @@ impl Frame {
     }
 
     /// The axes of `m` as arrows with heads and x, y, z labels at their tips.
+    #[inline(never)]
     pub fn labelled_axes(&mut self, m: Mat4, length: f32) {
         let o = m.transform_point3(Vec3::ZERO);
         for (axis, color, name) in [
@@ -555,6 +579,7 @@ impl Frame {
     /// A ground grid on y = 0 with `cells` cells of `spacing` metres on a side; the lines through
     /// the origin are darker. The lines fade out towards the grid's rim ([`grid_fade`]), so the
     /// ground recedes instead of ending at a hard edge: a depth cue in a single view.
+    #[inline(never)]
     pub fn grid(&mut self, cells: u32, spacing: f32) {
         let half = cells as f32 * spacing * 0.5;
         for [a, b] in crate::mesh::grid_lines(cells, spacing) {
@@ -677,6 +702,7 @@ impl Frame {
     }
 
     /// Draws `uv` of `texture` on the square `[−1, 1]²` of the xz plane placed by `model`.
+    #[inline(never)]
     pub fn textured_quad(&mut self, texture: TextureId, model: Mat4, uv: UvRect) {
         self.quads.push(TexturedQuad {
             texture,

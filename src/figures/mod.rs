@@ -41,8 +41,15 @@ pub fn finite(name: &str, value: f32) -> Result<f32, String> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(format!("{name} must be a finite number, got {value}"))
+        Err(not_finite(name, value))
     }
+}
+
+/// [`finite`]'s message, out of line: every validated argument shares one copy of the formatting.
+#[cold]
+#[inline(never)]
+fn not_finite(name: &str, value: f32) -> String {
+    format!("{name} must be a finite number, got {value}")
 }
 
 /// An error unless `value` lies in `[lo, hi]` (and is finite).
@@ -51,8 +58,15 @@ pub fn in_range(name: &str, value: f32, lo: f32, hi: f32) -> Result<f32, String>
     if (lo..=hi).contains(&value) {
         Ok(value)
     } else {
-        Err(format!("{name} must lie in [{lo}, {hi}], got {value}"))
+        Err(out_of_range(name, value, lo, hi))
     }
+}
+
+/// [`in_range`]'s message, out of line (see [`not_finite`]).
+#[cold]
+#[inline(never)]
+fn out_of_range(name: &str, value: f32, lo: f32, hi: f32) -> String {
+    format!("{name} must lie in [{lo}, {hi}], got {value}")
 }
 
 /// `value` as a whole number in `[lo, hi]`: the one rule for every count a page passes (a
@@ -61,10 +75,15 @@ pub fn whole_number(name: &str, value: f32, lo: usize, hi: usize) -> Result<usiz
     if value.is_finite() && value.fract() == 0.0 && value >= lo as f32 && value <= hi as f32 {
         Ok(value as usize)
     } else {
-        Err(format!(
-            "{name} must be a whole number from {lo} to {hi}, got {value}"
-        ))
+        Err(not_whole(name, value, lo, hi))
     }
+}
+
+/// [`whole_number`]'s message, out of line (see [`not_finite`]).
+#[cold]
+#[inline(never)]
+fn not_whole(name: &str, value: f32, lo: usize, hi: usize) -> String {
+    format!("{name} must be a whole number from {lo} to {hi}, got {value}")
 }
 
 /// The most samples a plot may ask for.

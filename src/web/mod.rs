@@ -148,7 +148,10 @@ pub fn build_info() -> String {
     )
 }
 
-/// A native figure's error message as a JavaScript error.
+/// A native figure's error message as a JavaScript error (out of line: every binding's error
+/// path shares it).
+#[cold]
+#[inline(never)]
 pub(crate) fn js(message: String) -> JsError {
     JsError::new(&message)
 }
@@ -180,10 +183,17 @@ pub(crate) fn whole_in(name: &str, value: f64, lo: usize, hi: usize) -> Result<u
     if value.is_finite() && value.fract() == 0.0 && value >= lo as f64 && value <= hi as f64 {
         Ok(value as usize)
     } else {
-        Err(JsError::new(&format!(
-            "{name} must be a whole number from {lo} to {hi}, got {value}"
-        )))
+        Err(not_whole(name, value, lo, hi))
     }
+}
+
+/// [`whole_in`]'s error, out of line: every count a binding checks shares one copy.
+#[cold]
+#[inline(never)]
+fn not_whole(name: &str, value: f64, lo: usize, hi: usize) -> JsError {
+    JsError::new(&format!(
+        "{name} must be a whole number from {lo} to {hi}, got {value}"
+    ))
 }
 
 /// `value` as a whole number from 0 to [`MAX_WHOLE`]; the figure checks the narrower range it
@@ -218,6 +228,7 @@ fn describe(value: &JsValue) -> String {
 }
 
 /// `value` as a string, or a TypeError-like error "name must be a string, got number 42".
+#[inline(never)]
 pub(crate) fn string(name: &str, value: &JsValue) -> Result<String, JsError> {
     value
         .as_string()
@@ -225,6 +236,7 @@ pub(crate) fn string(name: &str, value: &JsValue) -> Result<String, JsError> {
 }
 
 /// `value` as a boolean: `true` or `false` only ("true", 1 and undefined are errors, not coerced).
+#[inline(never)]
 pub(crate) fn boolean(name: &str, value: &JsValue) -> Result<bool, JsError> {
     value.as_bool().ok_or_else(|| {
         JsError::new(&format!(
