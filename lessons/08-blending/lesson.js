@@ -102,8 +102,10 @@ function speedSlider(gui, scene, p, after) {
 
 const locoViewer = await lesson.figure('#fig-locomotion');
 if (locoViewer) {
-  // A raised three-quarter view: both lanes side by side, the footprints seen from above.
-  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.4, 0.8);
+  // A low three-quarter view along the track: the 3 m track runs across the canvas, so the
+  // characters fill its height even in an 800 px wide window, both lanes stay apart and the
+  // footprints still read on the ground.
+  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.8, 0.5);
   const scene = new LocomotionScene();
   const p = { speed: 0, useExercise: false };
   // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.
