@@ -730,8 +730,21 @@ export class Plot {
         // view, which hides a dashed guide's dashes); `true`: always.
         ...(points === undefined ? {} : { points: { show: points } }),
       }))],
-      hooks: { draw: [cursorLine] },
+      // Hovering one plot of a figure shows the same x in all of them (uPlot's cursor sync,
+      // keyed by the figure) and each plot's readout reads its curves' values there.
+      cursor: {
+        ...(element.closest('.figure')?.id ? { sync: { key: `plots-${element.closest('.figure').id}`, setSeries: false } } : {}),
+        points: { size: 7 },
+      },
+      hooks: { draw: [cursorLine], setCursor: [(u) => this.showReadout(u)] },
     }, [[0], ...series.map(() => [0])], element);
+    // The readout covers the legend while the pointer is on a plot, so it never moves the page.
+    this.readout = document.createElement('div');
+    this.readout.className = 'plot-readout';
+    this.readout.hidden = true;
+    element.append(this.readout);
+    this.xLabel = xLabel ?? 'x';
+    this.colors = colors;
     element.dataset.plot = title ?? '';
     element.dataset.xLabel = xLabel ?? '';
     element.dataset.yLabel = yLabel ?? '';
@@ -749,6 +762,38 @@ export class Plot {
   /** Shows the data range `[lo, hi]` (both finite) from the next `setData` on; else autoscales. */
   setYRange(range) {
     this.dataRange = range && range.every(Number.isFinite) ? range : null;
+  }
+  /** Writes the values under the pointer (this plot's or a synced plot's) into the readout;
+   * hides it when the pointer leaves. */
+  showReadout(u) {
+    const i = u.cursor.idx;
+    const x = i === null || i === undefined ? undefined : u.data[0][i];
+    const legend = u.root.querySelector('.u-legend');
+    if (x === undefined) {
+      this.readout.hidden = true;
+      if (legend) legend.style.visibility = '';
+      return;
+    }
+    // In the legend's place (same names, now with values).
+    if (legend) {
+      legend.style.visibility = 'hidden';
+      this.readout.style.top = `${legend.offsetTop}px`;
+      this.readout.style.bottom = 'auto';
+      this.readout.style.minHeight = `${legend.offsetHeight}px`;
+    }
+    const fmt = (v) => (Number.isFinite(v) ? Number(v.toPrecision(3)).toString() : '–');
+    const span = (text, color) => {
+      const el = document.createElement('span');
+      el.textContent = text;
+      if (color) el.style.color = color;
+      return el;
+    };
+    const parts = [span(`${this.xLabel} = ${fmt(x)}`)];
+    u.series.forEach((s, k) => {
+      if (k > 0 && s.show) parts.push(span(`${s.label}: ${fmt(u.data[k][i])}`, this.colors[(k - 1) % this.colors.length]));
+    });
+    this.readout.replaceChildren(...parts);
+    this.readout.hidden = false;
   }
   /** Moves the playhead to `x` (in the x axis's unit); redraws only when it moved. */
   setCursor(x) {

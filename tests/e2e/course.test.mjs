@@ -188,3 +188,37 @@ test('navigation, the grading panel, the quiz and progress, as a student uses th
     await context.close();
   }
 });
+
+test('hovering one plot of a figure reads every plot of that figure at the same x', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2#fig-timing`, { width: 1280, height: 900 });
+    await page.waitForFunction(() => document.body.dataset.ready === '1');
+    const readout = (id) => page.locator(`#${id} .plot-readout`);
+    assert.ok(await readout('keys-speed').isHidden(), 'no readout before the pointer comes');
+    await page.locator('#keys-speed').scrollIntoViewIfNeeded();
+    const box = await page.locator('#keys-speed .u-over').boundingBox();
+    await page.mouse.move(box.x + box.width * 0.4, box.y + box.height * 0.5);
+    await page.waitForFunction(() => !document.querySelector('#keys-accel .plot-readout').hidden);
+    const read = async (id) => {
+      const text = await readout(id).textContent();
+      const m = text.match(/^time \(s\) = ([\d.]+)keyed: ([-\d.e]+)constant speed: ([-\d.e]+)$/);
+      assert.ok(m, `${id} readout: ${text}`);
+      return m.slice(1).map(Number);
+    };
+    const [speed, accel] = [await read('keys-speed'), await read('keys-accel')];
+    // The same x in both (the cursor is synced), 40 % along a 3.2 s timeline; other values.
+    assert.equal(speed[0], accel[0]);
+    assert.ok(Math.abs(speed[0] - 0.4 * 3.2) < 0.1, `x = ${speed[0]}`);
+    assert.notDeepEqual(speed.slice(1), accel.slice(1));
+    // The readout takes the legend's place; both come back as they were when the pointer leaves.
+    assert.equal(await page.locator('#keys-accel .u-legend').evaluate((e) => getComputedStyle(e).visibility), 'hidden');
+    await page.mouse.move(2, 2);
+    await page.waitForFunction(() => document.querySelector('#keys-speed .plot-readout').hidden
+      && document.querySelector('#keys-accel .plot-readout').hidden);
+    assert.equal(await page.locator('#keys-accel .u-legend').evaluate((e) => getComputedStyle(e).visibility), 'visible');
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
