@@ -24,6 +24,10 @@
 //! | `13-cloth`: cloth | [`cloth`] (mass-spring, XPBD, collisions; uses [`particles`]' step) | [`figures::cloth`] | `web::cloth` (bench: `web::bench_cloth`) | [`exercises::cloth`] (13.x) |
 //! | `14-rigid-bodies`: rigid bodies | [`rigid_body`] (inertia tensors, orientation and angular-velocity steps, impulses, contacts by sequential impulses) | [`figures::rigid_body`] (the throw, quaternion drift, the tennis racket, the impulse at a contact, the stack and dominoes) | `web::rigid_body` (bench: `web::bench_rigid_body`) | [`exercises::rigid_body`] (14.x) |
 //!
+//! Coming (issue: fluids): [`fluid`], SPH and position-based fluids in 2D and 3D on the boids'
+//! grid and the particles' collisions; its lesson, figures, bindings and exercises (15.x) are
+//! not written yet.
+//!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
 //! [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
@@ -61,6 +65,7 @@ pub mod exercises;
 pub mod expressive;
 pub mod figures;
 pub mod fixtures;
+pub mod fluid;
 pub mod gltf_import;
 pub mod ik;
 pub mod mesh;
