@@ -49,11 +49,14 @@ export async function openPage(context, url, { width, height, timeout = 90_000 }
 
 // 2D canvases are drawn by Skia on the CPU: on SwiftShader an accelerated 2D canvas makes every
 // frame wait for the emulated GPU (a lesson page with a dozen plots and 2D figures would take
-// about 180 ms a frame instead of 17, and its e2e pass four times as long). The 3D canvases still
-// go through WebGL2 or WebGPU on SwiftShader.
+// about 180 ms a frame instead of 17, and its e2e pass four times as long). The page's own content
+// (text, boxes) is rasterized on the CPU too, which costs the tests' two cores less than
+// SwiftShader's GL does. The 3D canvases still go through WebGL2 or WebGPU on SwiftShader.
+// Scrolls are instant: a smooth scroll (a quiz's "show me" brings its figure into view) would
+// have every frame of the page's scroll drawn on SwiftShader while the test waits for it to end.
 const BASE = ['--no-sandbox', '--no-first-run', '--disable-background-networking',
   '--disable-component-update', '--disable-sync', '--disable-quic', '--disable-dev-shm-usage',
-  '--disable-accelerated-2d-canvas'];
+  '--disable-accelerated-2d-canvas', '--disable-gpu-rasterization', '--disable-smooth-scrolling'];
 
 export const PROFILES = {
   // SwiftShader through ANGLE; no WebGPU adapter, so "auto" falls back to WebGL2.
