@@ -6,7 +6,7 @@
 //   THUMBNAILS=1 node --test tests/e2e/   also refresh lessons/*/thumbnail.png
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { tmpdir } from 'node:os';
 import { launch, pixelStats, meanDifference, frames, serveDist, openPage, DIST } from './browser.mjs';
@@ -19,14 +19,49 @@ const catalog = JSON.parse(readFileSync(join(DIST, 'lessons/catalog.json'), 'utf
 const site = serveDist();
 
 /**
- * With E2E_TIMING=1, `clock(what)` prints how long `what` took since the last call (to see where a
- * page's test spends its time); otherwise it does nothing.
+ * CPU milliseconds used so far by this process and the browsers it started, by kind of process
+ * (Chromium's gpu-process, renderer, browser ...; node), read from /proc (Linux; only node elsewhere).
+ */
+function cpuByKind() {
+  const out = { node: Math.round((process.cpuUsage().user + process.cpuUsage().system) / 1000) };
+  try {
+    const procs = readdirSync('/proc').filter((d) => /^\d+$/.test(d)).flatMap((pid) => {
+      try {
+        const f = readFileSync(`/proc/${pid}/stat`, 'utf8').split(') ')[1].split(' ');
+        return [{ pid: Number(pid), ppid: Number(f[1]), ms: (Number(f[11]) + Number(f[12])) * 10 }];
+      } catch { return []; }
+    });
+    const mine = new Set([process.pid]);
+    for (let grew = true; grew;) {
+      grew = false;
+      for (const p of procs) if (!mine.has(p.pid) && mine.has(p.ppid)) { mine.add(p.pid); grew = true; }
+    }
+    for (const p of procs) {
+      if (p.pid === process.pid || !mine.has(p.pid)) continue;
+      const cmd = readFileSync(`/proc/${p.pid}/cmdline`, 'utf8');
+      const kind = cmd.includes('chromium') ? /--type=([a-z-]+)/.exec(cmd)?.[1] ?? 'browser' : 'other';
+      out[kind] = (out[kind] ?? 0) + p.ms;
+    }
+  } catch { /* no /proc */ }
+  return out;
+}
+
+/**
+ * With E2E_TIMING=1, `clock(what)` prints how long `what` took since the last call and the CPU time
+ * the browser's processes and this one used meanwhile (to see where a page's test spends its time:
+ * on two cores, mostly in SwiftShader, in Chromium's GPU process); otherwise it does nothing.
  */
 function phaseClock(where) {
   let last = Date.now();
+  let lastCpu = process.env.E2E_TIMING ? cpuByKind() : {};
   return (what) => {
     const now = Date.now();
-    if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${now - last} ms`);
+    if (process.env.E2E_TIMING) {
+      const cpu = cpuByKind();
+      const d = (k) => (cpu[k] ?? 0) - (lastCpu[k] ?? 0);
+      console.log(`${where}: ${what} took ${now - last} ms (CPU ms: gpu-process ${d('gpu-process')}, renderer ${d('renderer')}, browser ${d('browser')}, node ${d('node')})`);
+      lastCpu = cpu;
+    }
     last = now;
   };
 }
@@ -87,14 +122,13 @@ async function fullPageShot(page, path, check = async () => {}) {
  * a few frames later differs from it by under 0.5 (`still`: the mean difference, 0..255).
  */
 async function settledStats(page, canvas, i) {
-  const presented = () => canvas.evaluate((c) => window.__inbetween.figures.find((f) => c.closest(f.selector))?.viewer.canvasFrames ?? -1);
   let stats;
   let still = 255;
   for (let look = 0; look < 5; look++) {
-    const before = await presented();
+    const before = await presented(canvas);
     stats = await pixelStats(page, canvas, `before${i}`);
     await frames(page, 2);
-    if (before >= 0 && stats.coverage > 0.02 && (await presented()) === before) return { ...stats, still: 0 };
+    if (before >= 0 && stats.coverage > 0.02 && (await presented(canvas)) === before) return { ...stats, still: 0 };
     await frames(page);
     const next = await pixelStats(page, canvas, `still${i}`);
     still = await meanDifference(page, `before${i}`, `still${i}`);
@@ -103,19 +137,46 @@ async function settledStats(page, canvas, i) {
   return { ...stats, still };
 }
 
+/**
+ * How many frames the 3D figure around `canvas` has presented (Viewer::canvas_frames), -1 for a
+ * canvas that is not a figure's.
+ */
+const presented = (canvas) => canvas.evaluate((c) => window.__inbetween.figures.find((f) => c.closest(f.selector))?.viewer.canvasFrames ?? -1);
+
+/**
+ * Waits until the 3D figure around `canvas` has presented more than `since` frames and at least two
+ * animation frames have passed (the figure draws in the frame after an input event; the next one
+ * shows it), or `maxFrames` frames when it presents nothing.
+ */
+function presentedSince(canvas, since, maxFrames = 6) {
+  return canvas.evaluate((c, [since, maxFrames]) => new Promise((ok) => {
+    const viewer = window.__inbetween.figures.find((f) => c.closest(f.selector))?.viewer;
+    let seen = 0;
+    const look = () => {
+      seen += 1;
+      if (seen >= maxFrames || (seen >= 2 && viewer && viewer.canvasFrames > since)) ok();
+      else requestAnimationFrame(look);
+    };
+    requestAnimationFrame(look);
+  }), [since, maxFrames]);
+}
+
 /** A drag on the canvas orbits the camera: the image must change. */
 async function orbitDrag(page, canvas, i) {
   await canvas.scrollIntoViewIfNeeded();
   const box = await canvas.boundingBox();
   await pixelStats(page, canvas, `orbit-before${i}`);
+  const since = await presented(canvas);
   await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
   await page.mouse.down();
   await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.6, { steps: 5 });
   await page.mouse.up();
-  // The new view may reach the screen a few frames late on a loaded machine: up to three looks.
+  // The new view may reach the screen a few frames late on a loaded machine: up to three looks,
+  // the first once the figure has presented a new frame (at most 6 animation frames), the others
+  // 6 frames apart.
   let change = 0;
   for (let look = 0; look < 3 && change <= 0.2; look++) {
-    await frames(page);
+    await (look === 0 ? presentedSince(canvas, since) : frames(page));
     await pixelStats(page, canvas, `orbit-after${i}`);
     change = await meanDifference(page, `orbit-before${i}`, `orbit-after${i}`);
   }
@@ -130,7 +191,8 @@ async function orbitDrag(page, canvas, i) {
  */
 async function moveEveryControl(page, figure, where, limit = Infinity) {
   let moved = 0;
-  // `act` must change what the figure shows; with `again` (a toggle), a change in either
+  // `act(k, before)` must change what the figure shows (`before`: its signature before the act);
+  // with `again` (a toggle), a change in either
   // direction counts (turning a walk off while paused may keep the pose; turning it on moves it).
   // A dropdown passes `tries` > 1: the next options are tried in turn until one changes the
   // figure (a preset equal to the current keys changes nothing, rightly).
@@ -140,12 +202,12 @@ async function moveEveryControl(page, figure, where, limit = Infinity) {
     let changed = false;
     let after = before;
     for (let k = 0; k < tries && !changed; k++) {
-      await act(k);
+      await act(k, before);
       after = await signatureAfter(figure, before);
       changed = after !== before;
     }
     if (again && !changed) {
-      await act(0);
+      await act(0, after);
       changed = (await signatureAfter(figure, after)) !== after;
     }
     if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${Date.now() - started} ms`);
@@ -207,12 +269,13 @@ async function moveControls(page, figure, check) {
     const options = await select.locator('option').allTextContents();
     const current = await select.evaluate((s) => s.selectedIndex);
     if (label === 'speed') {
-      // Speed shows only while playing: play a moment at the new speed, then pause.
+      // Speed shows only while playing: play a moment at the new speed (until the figure changes,
+      // at most 10 frames), then pause.
       const play = figure.locator('.timeline .play');
-      await check('timeline speed', async () => {
+      await check('timeline speed', async (k, before) => {
         await select.selectOption({ index: (current + 1) % options.length });
         await play.click();
-        await frames(page, 10);
+        await signatureAfter(figure, before, 10);
         await play.click();
       });
     } else {
@@ -224,12 +287,12 @@ async function moveControls(page, figure, check) {
     await check('timeline scrub', (k) => clickAt(page, scrub, [0.37, 0.81, 0.12][k]), false, 3);
   }
   for (const play of await figure.locator('.timeline .play').all()) {
-    // Up to three plays of 10 frames: a figure that draws its states after each step (lesson 11's
-    // free fall at a step of 0.24 s) changes only when the time crosses a step, which 10 frames
-    // (about 0.17 s at 1x) may not do.
-    await check('timeline play', async () => {
+    // Each play lasts until the figure changes, at most 10 frames, then pauses. Up to three plays:
+    // a figure that draws its states after each step (lesson 11's free fall at a step of 0.24 s)
+    // changes only when the time crosses a step, which 10 frames (about 0.17 s at 1x) may not do.
+    await check('timeline play', async (k, before) => {
       await play.click();
-      await frames(page, 10);
+      await signatureAfter(figure, before, 10);
       await play.click();
     }, false, 3);
   }
