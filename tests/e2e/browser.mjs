@@ -86,8 +86,9 @@ export async function launch(profile) {
  */
 export async function pixelStats(page, locator, key) {
   // JPEG: much faster to encode and decode than PNG for big figures, and deterministic, so an
-  // unchanged image still compares equal.
-  const png = await locator.screenshot({ type: 'jpeg', quality: 80 });
+  // unchanged image still compares equal. The caret is left as it is: hiding it would restyle the
+  // whole page for each capture (a canvas has none).
+  const png = await locator.screenshot({ type: 'jpeg', quality: 80, caret: 'initial' });
   return page.evaluate(async ([b64, key]) => {
     const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
     const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/jpeg' }));
