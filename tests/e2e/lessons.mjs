@@ -1,7 +1,8 @@
 // End-to-end: every lesson page in headless Chromium, on each backend, as a person would use it.
-// The tests are registered by `lessonTests`, called by lessons-webgpu.test.mjs and the two halves
-// lessons-webgl2-1/-2.test.mjs, so that scripts/test can run two of them at once (each file is a
-// process with its own browser). Screenshots land in tests/screenshots/ (gitignored).
+// The tests are registered by `lessonTests`, called by sweep-1.test.mjs and sweep-2.test.mjs, which
+// share the pages so that scripts/test can run them at once (each file is a process with its own
+// browser), and by lessons-no-gpu.test.mjs (the pages without a GPU API). Screenshots land in
+// tests/screenshots/ (gitignored).
 //   node --test tests/e2e/            all checks
 //   THUMBNAILS=1 node --test tests/e2e/   also refresh lessons/*/thumbnail.png
 import { test } from 'node:test';
@@ -520,22 +521,56 @@ function reportBudget(backend, seconds) {
 }
 
 /**
- * Registers the lesson tests of the calling file, on each of `backends` (narrowed by
- * E2E_BACKENDS); `extras` adds the checks without a GPU API. With `parts` > 1 the lessons are
- * shared among that many files: when scripts/test sets E2E_RUN_ID, the files running at the same
- * time take the next lesson nobody has taken (a directory created per lesson, which only one
- * process can create), so they finish together whatever each lesson costs; otherwise part k takes
- * the lessons at positions k, k + parts, ... The gallery is checked by part 0.
+ * Registers the lesson tests of the calling file: every lesson on each backend (narrowed by
+ * E2E_BACKENDS), and the gallery on each; `extras` registers the checks without a GPU API instead.
+ * With `parts` > 1 the pages (a backend's gallery or lesson) are shared among that many files:
+ * when scripts/test sets E2E_RUN_ID, each file takes the next page nobody has taken (a directory
+ * created per page, which only one process can create), so the files finish together whatever
+ * each page costs; otherwise part k takes the pages at positions k, k + parts, ... The pages come
+ * in the order WebGL2's lessons, then WebGPU's (about a quarter as long each), so that the last
+ * ones to be taken are short. A file opens a backend's browser when it takes its first page on
+ * that backend, and closes it when it takes one on the other.
  */
-export function lessonTests({ backends, part = 0, parts = 1, extras = false }) {
-  const runId = process.env.E2E_RUN_ID;
-  const take = parts === 1 ? () => true
-    : runId ? (backend, lesson) => claim(`${runId}`, `${backend}-${lesson.folder}`)
-      : (backend, lesson) => lessons.indexOf(lesson) % parts === part;
-  for (const backend of BACKENDS.filter((b) => backends.includes(b))) {
-    registerLessons(backend, lessons, parts > 1 ? ` (part ${part + 1} of ${parts})` : '', part === 0, take);
+export function lessonTests({ part = 0, parts = 1, extras = false }) {
+  if (extras) {
+    registerExtras();
+    return;
   }
-  if (extras) registerExtras();
+  const runId = process.env.E2E_RUN_ID;
+  const pages = ['webgl2', 'webgpu'].filter((b) => BACKENDS.includes(b))
+    .flatMap((backend) => [{ backend, lesson: null }, ...lessons.map((lesson) => ({ backend, lesson }))]);
+  const take = parts === 1 ? () => true
+    : runId ? ({ backend, lesson }) => claim(runId, `${backend}-${lesson?.folder ?? 'gallery'}`)
+      : (p) => pages.indexOf(p) % parts === part;
+  test(`lesson pages${parts > 1 ? ` (part ${part + 1} of ${parts})` : ''}`, async (t) => {
+    let browser = null;
+    const seconds = { webgl2: [], webgpu: [] };
+    let framesFitted = 0;
+    try {
+      for (const p of pages) {
+        if (!take(p)) continue;
+        if (browser?.backend !== p.backend) {
+          await browser?.context.close();
+          browser = null;
+          browser = { backend: p.backend, context: await launch(p.backend) };
+        }
+        const { context } = browser;
+        if (!p.lesson) {
+          await t.test(`gallery lists every lesson, on ${p.backend}`, () => galleryPage(context, p.backend));
+          continue;
+        }
+        await t.test(`${p.lesson.folder} on ${p.backend}`, async () => {
+          const started = Date.now();
+          framesFitted += await lessonPage(context, p.backend, p.lesson);
+          seconds[p.backend].push([p.lesson.folder, (Date.now() - started) / 1000]);
+        });
+      }
+      if (!only && parts === 1) assert.ok(framesFitted > 0, 'some figure declares its view');
+      for (const backend of ['webgl2', 'webgpu']) if (seconds[backend].length) reportBudget(backend, seconds[backend]);
+    } finally {
+      await browser?.context.close();
+    }
+  });
 }
 
 /** Takes `what` for this process in the run `runId`: true for exactly one caller of the run. */
@@ -551,122 +586,110 @@ function claim(runId, what) {
   }
 }
 
-function registerLessons(backend, lessons, which, withGallery, take) {
-  test(`lessons on ${backend}${which}`, async (t) => {
-    const context = await launch(backend);
-    try {
-      if (withGallery) {
-        const gallery = await open(context, '/lessons/');
-        await t.test('gallery lists every lesson', async () => {
-          const cards = await gallery.page.locator('.card').count();
-          assert.equal(cards, catalog.length);
-          assert.deepEqual(gallery.problems, []);
-          await gallery.page.screenshot({ path: `${SHOTS}/index-${backend}.png`, fullPage: true });
-        });
-      }
-      let framesFitted = 0;
-      const seconds = [];
-      for (const lesson of lessons) {
-        if (!take(backend, lesson)) continue;
-        await t.test(lesson.folder, async () => {
-          const clock = phaseClock(`${lesson.folder} (${backend})`);
-          const started = Date.now();
-          const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
-          clock('load');
-          const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
-          assert.equal(await page.evaluate(() => document.body.dataset.backend), label);
-          await pauseTimelines(page);
-          await frames(page);
-          // Paused, nothing a 3D figure draws changes, so its renderer draws no more frames (at
-          // most a couple, should a late layout change resize a canvas).
-          const drawn = () => page.evaluate(() => window.__inbetween.figures.map((f) => [f.selector, f.viewer.canvasFrames]));
-          const drawnBefore = await drawn();
-          await frames(page, 20);
-          const stillDrawing = (await drawn()).filter(([, n], k) => n - drawnBefore[k][1] > 2);
-          assert.deepEqual(stillDrawing.map(([s]) => s), [], 'these paused figures kept drawing');
-          await plotsNameTheirUnits(page);
-          framesFitted += await frameAllReturnsToTheFit(page, lesson.folder);
-          clock('frame all');
-          if (lesson.folder.startsWith('02-')) await editorDrags(page);
-          if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
-          clock('editor drags, GPU noise check');
-          const figures = await page.locator('.figure').all();
-          assert.ok(figures.length > 0, 'a lesson has at least one figure');
-          let interacted = false;
-          for (const [i, figure] of figures.entries()) {
-            // A figure is a 3D view (wgpu canvas), a 2D drawing (canvas.view2d) or plots only.
-            const canvas = figure.locator('.stage > canvas').first();
-            const kind = !(await canvas.count()) ? 'plots'
-              : (await canvas.evaluate((c) => c.classList.contains('view2d'))) ? '2d' : '3d';
-            if (kind !== '3d' && light(backend)) continue;
-            if (kind !== '3d') {
-              const stats = await pixelStats(page, kind === '2d' ? canvas : figure.locator('.plot, canvas').first(), `drawn${i}`);
-              assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
-              const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
-              assert.ok(moved > 0, `figure ${i}: no control was found to move`);
-              await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
-              clock(`figure ${i} (${kind}): every control`);
-              continue;
-            }
-            if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
-              // Without the backend badge: the thumbnail shows the figure, not the test's backend.
-              await page.evaluate(() => document.body.classList.add('thumbnail'));
-              writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail ?? 'thumbnail.png'}`, await canvas.screenshot());
-              await page.evaluate(() => document.body.classList.remove('thumbnail'));
-            }
-            assert.equal(await figure.locator('.backend-badge').textContent(), label);
-            const before = await settledStats(page, canvas, i);
-            assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
-            assert.ok(before.colors > 20, `figure ${i}: too few colours (${before.colors}) for shaded geometry`);
-            assert.ok(before.still < 0.5, `figure ${i}: image changes while paused (${before.still})`);
-            clock(`figure ${i}: settled`);
-            if (light(backend) && interacted) continue;
-            interacted = true;
-            await orbitDrag(page, canvas, i, before.shot);
-            clock(`figure ${i}: orbit`);
-            const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
-            assert.ok(moved > 0, `figure ${i}: no control was found to move`);
-            await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
-            clock(`figure ${i}: every control`);
-          }
-          // Both page sizes the course supports: no sideways scrolling, screenshots to look at.
-          for (const [w, h] of light(backend) ? [] : [[800, 600], [1600, 1000]]) {
-            await page.setViewportSize({ width: w, height: h });
-            await frames(page);
-            const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
-            assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
-            await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.jpg`,
-              () => labelsApart(page, `${lesson.folder} at ${w} x ${h}`));
-            clock(`${w}x${h} page`);
-          }
-          await page.setViewportSize({ width: 1100, height: 900 });
-          // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
-          const toggle = page.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]');
-          if (!light(backend) && await toggle.count()) {
-            await toggle.first().check();
-            await frames(page);
-            const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
-            assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
-          }
-          clock('exercise switch');
-          // The quiz, on this page already loaded (WebGL2 only: it sets controls, which the sweep
-          // has already checked on both backends).
-          if (backend === 'webgl2') await quizShowMeSetsFigures(page, lesson.folder);
-          clock('quiz');
-          await fullPageShot(page, `${SHOTS}/${lesson.folder}-${backend}.jpg`);
-          clock('page screenshot');
-          assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
-          assert.deepEqual(problems, []);
-          await page.close();
-          seconds.push([lesson.folder, (Date.now() - started) / 1000]);
-        });
-      }
-      if (!only && !which) assert.ok(framesFitted > 0, 'some figure declares its view');
-      reportBudget(backend, seconds);
-    } finally {
-      await context.close();
+/** The gallery lists every lesson of the catalog, without an error (a screenshot to look at). */
+async function galleryPage(context, backend) {
+  const { page, problems } = await open(context, '/lessons/');
+  const cards = await page.locator('.card').count();
+  assert.equal(cards, catalog.length);
+  assert.deepEqual(problems, []);
+  await page.screenshot({ path: `${SHOTS}/index-${backend}.png`, fullPage: true });
+  await page.close();
+}
+
+/**
+ * A lesson's page on `backend`, as a person uses it (see the file's first lines and the README).
+ * Returns how many of its figures were checked to return to their fit ("frame all").
+ */
+async function lessonPage(context, backend, lesson) {
+  const clock = phaseClock(`${lesson.folder} (${backend})`);
+  const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
+  clock('load');
+  const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
+  assert.equal(await page.evaluate(() => document.body.dataset.backend), label);
+  await pauseTimelines(page);
+  await frames(page);
+  // Paused, nothing a 3D figure draws changes, so its renderer draws no more frames (at
+  // most a couple, should a late layout change resize a canvas).
+  const drawn = () => page.evaluate(() => window.__inbetween.figures.map((f) => [f.selector, f.viewer.canvasFrames]));
+  const drawnBefore = await drawn();
+  await frames(page, 20);
+  const stillDrawing = (await drawn()).filter(([, n], k) => n - drawnBefore[k][1] > 2);
+  assert.deepEqual(stillDrawing.map(([s]) => s), [], 'these paused figures kept drawing');
+  await plotsNameTheirUnits(page);
+  const framesFitted = await frameAllReturnsToTheFit(page, lesson.folder);
+  clock('frame all');
+  if (lesson.folder.startsWith('02-')) await editorDrags(page);
+  if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
+  clock('editor drags, GPU noise check');
+  const figures = await page.locator('.figure').all();
+  assert.ok(figures.length > 0, 'a lesson has at least one figure');
+  let interacted = false;
+  for (const [i, figure] of figures.entries()) {
+    // A figure is a 3D view (wgpu canvas), a 2D drawing (canvas.view2d) or plots only.
+    const canvas = figure.locator('.stage > canvas').first();
+    const kind = !(await canvas.count()) ? 'plots'
+      : (await canvas.evaluate((c) => c.classList.contains('view2d'))) ? '2d' : '3d';
+    if (kind !== '3d' && light(backend)) continue;
+    if (kind !== '3d') {
+      const stats = await pixelStats(page, kind === '2d' ? canvas : figure.locator('.plot, canvas').first(), `drawn${i}`);
+      assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
+      const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
+      assert.ok(moved > 0, `figure ${i}: no control was found to move`);
+      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+      clock(`figure ${i} (${kind}): every control`);
+      continue;
     }
-  });
+    if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
+      // Without the backend badge: the thumbnail shows the figure, not the test's backend.
+      await page.evaluate(() => document.body.classList.add('thumbnail'));
+      writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail ?? 'thumbnail.png'}`, await canvas.screenshot());
+      await page.evaluate(() => document.body.classList.remove('thumbnail'));
+    }
+    assert.equal(await figure.locator('.backend-badge').textContent(), label);
+    const before = await settledStats(page, canvas, i);
+    assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
+    assert.ok(before.colors > 20, `figure ${i}: too few colours (${before.colors}) for shaded geometry`);
+    assert.ok(before.still < 0.5, `figure ${i}: image changes while paused (${before.still})`);
+    clock(`figure ${i}: settled`);
+    if (light(backend) && interacted) continue;
+    interacted = true;
+    await orbitDrag(page, canvas, i, before.shot);
+    clock(`figure ${i}: orbit`);
+    const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
+    assert.ok(moved > 0, `figure ${i}: no control was found to move`);
+    await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+    clock(`figure ${i}: every control`);
+  }
+  // Both page sizes the course supports: no sideways scrolling, screenshots to look at.
+  for (const [w, h] of light(backend) ? [] : [[800, 600], [1600, 1000]]) {
+    await page.setViewportSize({ width: w, height: h });
+    await frames(page);
+    const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+    assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
+    await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.jpg`,
+      () => labelsApart(page, `${lesson.folder} at ${w} x ${h}`));
+    clock(`${w}x${h} page`);
+  }
+  await page.setViewportSize({ width: 1100, height: 900 });
+  // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
+  const toggle = page.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]');
+  if (!light(backend) && await toggle.count()) {
+    await toggle.first().check();
+    await frames(page);
+    const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
+    assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
+  }
+  clock('exercise switch');
+  // The quiz, on this page already loaded (WebGL2 only: it sets controls, which the sweep
+  // has already checked on both backends).
+  if (backend === 'webgl2') await quizShowMeSetsFigures(page, lesson.folder);
+  clock('quiz');
+  await fullPageShot(page, `${SHOTS}/${lesson.folder}-${backend}.jpg`);
+  clock('page screenshot');
+  assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
+  assert.deepEqual(problems, []);
+  await page.close();
+  return framesFitted;
 }
 
 function registerExtras() {
