@@ -173,8 +173,7 @@ function presentedSince(canvas, since, maxFrames = 6) {
  * no frame since, the canvas still shows those pixels, which are the image before the drag.
  */
 async function orbitDrag(page, canvas, i, settled) {
-  await canvas.scrollIntoViewIfNeeded();
-  const box = await canvas.boundingBox();
+  const box = await boxInView(canvas);
   let since = await presented(canvas);
   let before = settled?.key;
   if (!settled || since !== settled.presented) {
@@ -253,7 +252,7 @@ async function moveControls(page, figure, check) {
     if (classes.includes('disabled')) continue; // e.g. a GPU switch without WebGPU
     if (classes.includes('function')) { buttons.push([name, c.locator('button')]); continue; }
     if (classes.includes('boolean')) {
-      await check(`toggle "${name}"`, () => c.locator('input[type="checkbox"]').click(), true);
+      await check(`toggle "${name}"`, () => clickAt(page, c.locator('input[type="checkbox"]')), true);
       continue;
     }
     if (classes.includes('option')) {
@@ -287,14 +286,15 @@ async function moveControls(page, figure, check) {
     const current = await select.evaluate((s) => s.selectedIndex);
     if (label === 'speed') {
       // Speed shows only while playing: play a moment at the new speed (until the figure changes,
-      // at most 10 frames), then pause.
+      // at most 10 frames), then pause; up to three plays, as for the play button below (a moment
+      // of a clip may hold a pose).
       const play = figure.locator('.timeline .play');
       await check('timeline speed', async (k, before) => {
-        await select.selectOption({ index: (current + 1) % options.length });
-        await play.click();
+        if (k === 0) await select.selectOption({ index: (current + 1) % options.length });
+        await clickAt(page, play);
         await signatureAfter(figure, before, 10);
-        await play.click();
-      });
+        await clickAt(page, play);
+      }, false, 3);
     } else {
       await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
     }
@@ -308,9 +308,9 @@ async function moveControls(page, figure, check) {
     // a figure that draws its states after each step (lesson 11's free fall at a step of 0.24 s)
     // changes only when the time crosses a step, which 10 frames (about 0.17 s at 1x) may not do.
     await check('timeline play', async (k, before) => {
-      await play.click();
+      await clickAt(page, play);
       await signatureAfter(figure, before, 10);
-      await play.click();
+      await clickAt(page, play);
     }, false, 3);
   }
   // (Not "frame all": it moves the camera, which the figure's signature leaves out.)
@@ -320,7 +320,7 @@ async function moveControls(page, figure, check) {
   }
   // Last in, first out: a "reset" after the changes above, then "zoom to fit" after the reset (in
   // DOM order a fit would come first, when the view may already fit).
-  for (const [name, button] of buttons.reverse()) await check(`button "${name}"`, () => button.click());
+  for (const [name, button] of buttons.reverse()) await check(`button "${name}"`, () => clickAt(page, button));
 }
 
 /**
@@ -360,10 +360,27 @@ async function editorDrags(page) {
   assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), []);
 }
 
-/** Clicks `locator` at the fraction `at` of its width (after scrolling it into view). */
-async function clickAt(page, locator, at) {
-  await locator.scrollIntoViewIfNeeded();
-  const box = await locator.boundingBox();
+/**
+ * Scrolls `locator`'s element into view unless it is wholly in view already (as a reader scrolls to
+ * a control), and returns its box in the viewport: one round trip to the page. Playwright's own
+ * scrollIntoViewIfNeeded and click also wait for the element to keep still over two animation
+ * frames, which the page's controls and canvases do not need; a click that misses its control changes
+ * nothing, and that fails the check.
+ */
+function boxInView(locator) {
+  return locator.evaluate((el) => {
+    let r = el.getBoundingClientRect();
+    if (r.top < 0 || r.left < 0 || r.bottom > window.innerHeight || r.right > window.innerWidth) {
+      el.scrollIntoView({ block: 'center', inline: 'nearest' });
+      r = el.getBoundingClientRect();
+    }
+    return { x: r.left, y: r.top, width: r.width, height: r.height };
+  });
+}
+
+/** Clicks `locator` with the mouse at the fraction `at` of its width (after scrolling it into view). */
+async function clickAt(page, locator, at = 0.5) {
+  const box = await boxInView(locator);
   await page.mouse.click(box.x + box.width * at, box.y + box.height / 2);
 }
 
@@ -472,22 +489,21 @@ async function frameAllReturnsToTheFit(page, where) {
   for (const i of ids) {
     const selector = await page.evaluate((i) => window.__inbetween.figures[i].selector, i);
     const canvas = page.locator(`${selector} .stage canvas`);
-    await canvas.scrollIntoViewIfNeeded();
+    const box = await boxInView(canvas);
     // The viewer's `fitting` flag changes as its event handlers run: each step waits, frame by
     // frame, until the flag reads as expected (for up to 10 s), instead of a fixed count of frames.
     const fitting = (want) => page.waitForFunction(([i, want]) => window.__inbetween.figures[i].viewer.fitting === want,
       [i, want], { polling: 'raf', timeout: 10_000 }).then(() => want, () => !want);
     assert.equal(await fitting(true), true, `${where} ${selector}: fits from the start`);
-    const box = await canvas.boundingBox();
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await page.mouse.wheel(0, -600);
     assert.equal(await fitting(false), false, `${where} ${selector}: a zoom leaves the fit`);
-    await page.locator(`${selector} .frame-all`).click();
+    await clickAt(page, page.locator(`${selector} .frame-all`));
     assert.equal(await fitting(true), true, `${where} ${selector}: "frame all" returns to it`);
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await page.mouse.wheel(0, 600);
     assert.equal(await fitting(false), false, `${where} ${selector}: a second zoom leaves the fit`);
-    await canvas.dblclick();
+    await page.mouse.dblclick(box.x + box.width / 2, box.y + box.height / 2);
     assert.equal(await fitting(true), true, `${where} ${selector}: a double-click returns to it`);
   }
   return ids.length;
