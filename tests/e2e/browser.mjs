@@ -59,8 +59,11 @@ const BASE = ['--no-sandbox', '--no-first-run', '--disable-background-networking
   '--disable-accelerated-2d-canvas', '--disable-gpu-rasterization', '--disable-smooth-scrolling'];
 
 export const PROFILES = {
-  // SwiftShader through ANGLE; no WebGPU adapter, so "auto" falls back to WebGL2.
-  webgl2: [...BASE, '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  // SwiftShader through ANGLE; no WebGPU adapter, so "auto" falls back to WebGL2. The page is
+  // composited in software: SwiftShader's GL would draw every composited frame of the page on the
+  // CPU anyway, at a higher cost than the software compositor, which takes the WebGL canvases'
+  // frames as they are drawn. (A WebGPU canvas needs GPU compositing: its profile keeps it.)
+  webgl2: [...BASE, '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-compositing'],
   // WebGPU on SwiftShader's Vulkan (a CPU adapter: not for timings).
   webgpu: [...BASE, '--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader',
     '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
