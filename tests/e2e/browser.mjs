@@ -49,15 +49,21 @@ export async function openPage(context, url, { width, height, timeout = 90_000 }
 
 // 2D canvases are drawn by Skia on the CPU: on SwiftShader an accelerated 2D canvas makes every
 // frame wait for the emulated GPU (a lesson page with a dozen plots and 2D figures would take
-// about 180 ms a frame instead of 17, and its e2e pass four times as long). The 3D canvases still
-// go through WebGL2 or WebGPU on SwiftShader.
+// about 180 ms a frame instead of 17, and its e2e pass four times as long). The page's own content
+// (text, boxes) is rasterized on the CPU too, which costs the tests' two cores less than
+// SwiftShader's GL does. The 3D canvases still go through WebGL2 or WebGPU on SwiftShader.
+// Scrolls are instant: a smooth scroll (a quiz's "show me" brings its figure into view) would
+// have every frame of the page's scroll drawn on SwiftShader while the test waits for it to end.
 const BASE = ['--no-sandbox', '--no-first-run', '--disable-background-networking',
   '--disable-component-update', '--disable-sync', '--disable-quic', '--disable-dev-shm-usage',
-  '--disable-accelerated-2d-canvas'];
+  '--disable-accelerated-2d-canvas', '--disable-gpu-rasterization', '--disable-smooth-scrolling'];
 
 export const PROFILES = {
-  // SwiftShader through ANGLE; no WebGPU adapter, so "auto" falls back to WebGL2.
-  webgl2: [...BASE, '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  // SwiftShader through ANGLE; no WebGPU adapter, so "auto" falls back to WebGL2. The page is
+  // composited in software: SwiftShader's GL would draw every composited frame of the page on the
+  // CPU anyway, at a higher cost than the software compositor, which takes the WebGL canvases'
+  // frames as they are drawn. (A WebGPU canvas needs GPU compositing: its profile keeps it.)
+  webgl2: [...BASE, '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-compositing'],
   // WebGPU on SwiftShader's Vulkan (a CPU adapter: not for timings).
   webgpu: [...BASE, '--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader',
     '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
@@ -83,8 +89,9 @@ export async function launch(profile) {
  */
 export async function pixelStats(page, locator, key) {
   // JPEG: much faster to encode and decode than PNG for big figures, and deterministic, so an
-  // unchanged image still compares equal.
-  const png = await locator.screenshot({ type: 'jpeg', quality: 80 });
+  // unchanged image still compares equal. The caret is left as it is: hiding it would restyle the
+  // whole page for each capture (a canvas has none).
+  const png = await locator.screenshot({ type: 'jpeg', quality: 80, caret: 'initial' });
   return page.evaluate(async ([b64, key]) => {
     const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
     const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/jpeg' }));

@@ -1,12 +1,13 @@
 // End-to-end: every lesson page in headless Chromium, on each backend, as a person would use it.
-// The tests are registered by `lessonTests`, called by lessons-webgpu.test.mjs and the two halves
-// lessons-webgl2-1/-2.test.mjs, so that scripts/test can run two of them at once (each file is a
-// process with its own browser). Screenshots land in tests/screenshots/ (gitignored).
+// The tests are registered by `lessonTests`, called by sweep-1.test.mjs and sweep-2.test.mjs, which
+// share the pages so that scripts/test can run them at once (each file is a process with its own
+// browser), and by lessons-no-gpu.test.mjs (the pages without a GPU API). Screenshots land in
+// tests/screenshots/ (gitignored).
 //   node --test tests/e2e/            all checks
 //   THUMBNAILS=1 node --test tests/e2e/   also refresh lessons/*/thumbnail.png
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { tmpdir } from 'node:os';
 import { launch, pixelStats, meanDifference, frames, serveDist, openPage, DIST } from './browser.mjs';
@@ -19,14 +20,49 @@ const catalog = JSON.parse(readFileSync(join(DIST, 'lessons/catalog.json'), 'utf
 const site = serveDist();
 
 /**
- * With E2E_TIMING=1, `clock(what)` prints how long `what` took since the last call (to see where a
- * page's test spends its time); otherwise it does nothing.
+ * CPU milliseconds used so far by this process and the browsers it started, by kind of process
+ * (Chromium's gpu-process, renderer, browser ...; node), read from /proc (Linux; only node elsewhere).
+ */
+function cpuByKind() {
+  const out = { node: Math.round((process.cpuUsage().user + process.cpuUsage().system) / 1000) };
+  try {
+    const procs = readdirSync('/proc').filter((d) => /^\d+$/.test(d)).flatMap((pid) => {
+      try {
+        const f = readFileSync(`/proc/${pid}/stat`, 'utf8').split(') ')[1].split(' ');
+        return [{ pid: Number(pid), ppid: Number(f[1]), ms: (Number(f[11]) + Number(f[12])) * 10 }];
+      } catch { return []; }
+    });
+    const mine = new Set([process.pid]);
+    for (let grew = true; grew;) {
+      grew = false;
+      for (const p of procs) if (!mine.has(p.pid) && mine.has(p.ppid)) { mine.add(p.pid); grew = true; }
+    }
+    for (const p of procs) {
+      if (p.pid === process.pid || !mine.has(p.pid)) continue;
+      const cmd = readFileSync(`/proc/${p.pid}/cmdline`, 'utf8');
+      const kind = cmd.includes('chromium') ? /--type=([a-z-]+)/.exec(cmd)?.[1] ?? 'browser' : 'other';
+      out[kind] = (out[kind] ?? 0) + p.ms;
+    }
+  } catch { /* no /proc */ }
+  return out;
+}
+
+/**
+ * With E2E_TIMING=1, `clock(what)` prints how long `what` took since the last call and the CPU time
+ * the browser's processes and this one used meanwhile (to see where a page's test spends its time:
+ * on two cores, mostly in SwiftShader, in Chromium's GPU process); otherwise it does nothing.
  */
 function phaseClock(where) {
   let last = Date.now();
+  let lastCpu = process.env.E2E_TIMING ? cpuByKind() : {};
   return (what) => {
     const now = Date.now();
-    if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${now - last} ms`);
+    if (process.env.E2E_TIMING) {
+      const cpu = cpuByKind();
+      const d = (k) => (cpu[k] ?? 0) - (lastCpu[k] ?? 0);
+      console.log(`${where}: ${what} took ${now - last} ms (CPU ms: gpu-process ${d('gpu-process')}, renderer ${d('renderer')}, browser ${d('browser')}, node ${d('node')})`);
+      lastCpu = cpu;
+    }
     last = now;
   };
 }
@@ -74,7 +110,9 @@ async function fullPageShot(page, path, check = async () => {}) {
   await page.evaluate(() => window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true)));
   await frames(page, 4);
   await check();
-  await page.screenshot({ path });
+  // JPEG (`path` ends in .jpg): a page up to 8,000 px tall costs about half as long to capture as
+  // in PNG. The caret is left as it is (hiding it restyles the whole page).
+  await page.screenshot({ path, type: 'jpeg', quality: 90, caret: 'initial' });
   await page.setViewportSize(viewport);
 }
 
@@ -87,37 +125,76 @@ async function fullPageShot(page, path, check = async () => {}) {
  * a few frames later differs from it by under 0.5 (`still`: the mean difference, 0..255).
  */
 async function settledStats(page, canvas, i) {
-  const presented = () => canvas.evaluate((c) => window.__inbetween.figures.find((f) => c.closest(f.selector))?.viewer.canvasFrames ?? -1);
   let stats;
   let still = 255;
   for (let look = 0; look < 5; look++) {
-    const before = await presented();
+    const before = await presented(canvas);
     stats = await pixelStats(page, canvas, `before${i}`);
     await frames(page, 2);
-    if (before >= 0 && stats.coverage > 0.02 && (await presented()) === before) return { ...stats, still: 0 };
+    if (before >= 0 && stats.coverage > 0.02 && (await presented(canvas)) === before) {
+      return { ...stats, still: 0, shot: { key: `before${i}`, presented: before } };
+    }
     await frames(page);
+    const nextPresented = await presented(canvas);
     const next = await pixelStats(page, canvas, `still${i}`);
     still = await meanDifference(page, `before${i}`, `still${i}`);
-    if (next.coverage > 0.02 && still < 0.5) return { ...next, still };
+    if (next.coverage > 0.02 && still < 0.5) return { ...next, still, shot: { key: `still${i}`, presented: nextPresented } };
   }
   return { ...stats, still };
 }
 
-/** A drag on the canvas orbits the camera: the image must change. */
-async function orbitDrag(page, canvas, i) {
-  await canvas.scrollIntoViewIfNeeded();
-  const box = await canvas.boundingBox();
-  await pixelStats(page, canvas, `orbit-before${i}`);
+/**
+ * How many frames the 3D figure around `canvas` has presented (Viewer::canvas_frames), -1 for a
+ * canvas that is not a figure's.
+ */
+const presented = (canvas) => canvas.evaluate((c) => window.__inbetween.figures.find((f) => c.closest(f.selector))?.viewer.canvasFrames ?? -1);
+
+/**
+ * Waits until the 3D figure around `canvas` has presented more than `since` frames and at least two
+ * animation frames have passed (the figure draws in the frame after an input event; the next one
+ * shows it), or `maxFrames` frames when it presents nothing.
+ */
+function presentedSince(canvas, since, maxFrames = 6) {
+  return canvas.evaluate((c, [since, maxFrames]) => new Promise((ok) => {
+    const viewer = window.__inbetween.figures.find((f) => c.closest(f.selector))?.viewer;
+    let seen = 0;
+    const look = () => {
+      seen += 1;
+      if (seen >= maxFrames || (seen >= 2 && viewer && viewer.canvasFrames > since)) ok();
+      else requestAnimationFrame(look);
+    };
+    requestAnimationFrame(look);
+  }), [since, maxFrames]);
+}
+
+/**
+ * A drag on the canvas orbits the camera: the image must change. `settled` (from settledStats)
+ * names the pixels it captured and the figure's frame count then: while the figure has presented
+ * no frame since, the canvas still shows those pixels, which are the image before the drag.
+ */
+async function orbitDrag(page, canvas, i, settled) {
+  const box = await boxInView(canvas);
+  let since = await presented(canvas);
+  let before = settled?.key;
+  if (!settled || since !== settled.presented) {
+    before = `orbit-before${i}`;
+    await pixelStats(page, canvas, before);
+    since = await presented(canvas);
+  }
+  // Two moves while the button is down: Chromium delivers each in its own animation frame, and the
+  // figure draws a frame for each (five moves cost five renders on SwiftShader for the same check).
   await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
   await page.mouse.down();
-  await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.6, { steps: 5 });
+  await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.6, { steps: 2 });
   await page.mouse.up();
-  // The new view may reach the screen a few frames late on a loaded machine: up to three looks.
+  // The new view may reach the screen a few frames late on a loaded machine: up to three looks,
+  // the first once the figure has presented a new frame (at most 6 animation frames), the others
+  // 6 frames apart.
   let change = 0;
   for (let look = 0; look < 3 && change <= 0.2; look++) {
-    await frames(page);
+    await (look === 0 ? presentedSince(canvas, since) : frames(page));
     await pixelStats(page, canvas, `orbit-after${i}`);
-    change = await meanDifference(page, `orbit-before${i}`, `orbit-after${i}`);
+    change = await meanDifference(page, before, `orbit-after${i}`);
   }
   assert.ok(change > 0.2, `figure ${i}: dragging the canvas did not orbit the camera (${change})`);
 }
@@ -130,7 +207,8 @@ async function orbitDrag(page, canvas, i) {
  */
 async function moveEveryControl(page, figure, where, limit = Infinity) {
   let moved = 0;
-  // `act` must change what the figure shows; with `again` (a toggle), a change in either
+  // `act(k, before)` must change what the figure shows (`before`: its signature before the act);
+  // with `again` (a toggle), a change in either
   // direction counts (turning a walk off while paused may keep the pose; turning it on moves it).
   // A dropdown passes `tries` > 1: the next options are tried in turn until one changes the
   // figure (a preset equal to the current keys changes nothing, rightly).
@@ -140,12 +218,12 @@ async function moveEveryControl(page, figure, where, limit = Infinity) {
     let changed = false;
     let after = before;
     for (let k = 0; k < tries && !changed; k++) {
-      await act(k);
+      await act(k, before);
       after = await signatureAfter(figure, before);
       changed = after !== before;
     }
     if (again && !changed) {
-      await act(0);
+      await act(0, after);
       changed = (await signatureAfter(figure, after)) !== after;
     }
     if (process.env.E2E_TIMING) console.log(`${where}: ${what} took ${Date.now() - started} ms`);
@@ -174,7 +252,7 @@ async function moveControls(page, figure, check) {
     if (classes.includes('disabled')) continue; // e.g. a GPU switch without WebGPU
     if (classes.includes('function')) { buttons.push([name, c.locator('button')]); continue; }
     if (classes.includes('boolean')) {
-      await check(`toggle "${name}"`, () => c.locator('input[type="checkbox"]').click(), true);
+      await check(`toggle "${name}"`, () => clickAt(page, c.locator('input[type="checkbox"]')), true);
       continue;
     }
     if (classes.includes('option')) {
@@ -207,14 +285,16 @@ async function moveControls(page, figure, check) {
     const options = await select.locator('option').allTextContents();
     const current = await select.evaluate((s) => s.selectedIndex);
     if (label === 'speed') {
-      // Speed shows only while playing: play a moment at the new speed, then pause.
+      // Speed shows only while playing: play a moment at the new speed (until the figure changes,
+      // at most 10 frames), then pause; up to three plays, as for the play button below (a moment
+      // of a clip may hold a pose).
       const play = figure.locator('.timeline .play');
-      await check('timeline speed', async () => {
-        await select.selectOption({ index: (current + 1) % options.length });
-        await play.click();
-        await frames(page, 10);
-        await play.click();
-      });
+      await check('timeline speed', async (k, before) => {
+        if (k === 0) await select.selectOption({ index: (current + 1) % options.length });
+        await clickAt(page, play);
+        await signatureAfter(figure, before, 10);
+        await clickAt(page, play);
+      }, false, 3);
     } else {
       await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
     }
@@ -224,13 +304,13 @@ async function moveControls(page, figure, check) {
     await check('timeline scrub', (k) => clickAt(page, scrub, [0.37, 0.81, 0.12][k]), false, 3);
   }
   for (const play of await figure.locator('.timeline .play').all()) {
-    // Up to three plays of 10 frames: a figure that draws its states after each step (lesson 11's
-    // free fall at a step of 0.24 s) changes only when the time crosses a step, which 10 frames
-    // (about 0.17 s at 1x) may not do.
-    await check('timeline play', async () => {
-      await play.click();
-      await frames(page, 10);
-      await play.click();
+    // Each play lasts until the figure changes, at most 10 frames, then pauses. Up to three plays:
+    // a figure that draws its states after each step (lesson 11's free fall at a step of 0.24 s)
+    // changes only when the time crosses a step, which 10 frames (about 0.17 s at 1x) may not do.
+    await check('timeline play', async (k, before) => {
+      await clickAt(page, play);
+      await signatureAfter(figure, before, 10);
+      await clickAt(page, play);
     }, false, 3);
   }
   // (Not "frame all": it moves the camera, which the figure's signature leaves out.)
@@ -240,7 +320,7 @@ async function moveControls(page, figure, check) {
   }
   // Last in, first out: a "reset" after the changes above, then "zoom to fit" after the reset (in
   // DOM order a fit would come first, when the view may already fit).
-  for (const [name, button] of buttons.reverse()) await check(`button "${name}"`, () => button.click());
+  for (const [name, button] of buttons.reverse()) await check(`button "${name}"`, () => clickAt(page, button));
 }
 
 /**
@@ -280,10 +360,27 @@ async function editorDrags(page) {
   assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), []);
 }
 
-/** Clicks `locator` at the fraction `at` of its width (after scrolling it into view). */
-async function clickAt(page, locator, at) {
-  await locator.scrollIntoViewIfNeeded();
-  const box = await locator.boundingBox();
+/**
+ * Scrolls `locator`'s element into view unless it is wholly in view already (as a reader scrolls to
+ * a control), and returns its box in the viewport: one round trip to the page. Playwright's own
+ * scrollIntoViewIfNeeded and click also wait for the element to keep still over two animation
+ * frames, which the page's controls and canvases do not need; a click that misses its control changes
+ * nothing, and that fails the check.
+ */
+function boxInView(locator) {
+  return locator.evaluate((el) => {
+    let r = el.getBoundingClientRect();
+    if (r.top < 0 || r.left < 0 || r.bottom > window.innerHeight || r.right > window.innerWidth) {
+      el.scrollIntoView({ block: 'center', inline: 'nearest' });
+      r = el.getBoundingClientRect();
+    }
+    return { x: r.left, y: r.top, width: r.width, height: r.height };
+  });
+}
+
+/** Clicks `locator` with the mouse at the fraction `at` of its width (after scrolling it into view). */
+async function clickAt(page, locator, at = 0.5) {
+  const box = await boxInView(locator);
   await page.mouse.click(box.x + box.width * at, box.y + box.height / 2);
 }
 
@@ -392,22 +489,21 @@ async function frameAllReturnsToTheFit(page, where) {
   for (const i of ids) {
     const selector = await page.evaluate((i) => window.__inbetween.figures[i].selector, i);
     const canvas = page.locator(`${selector} .stage canvas`);
-    await canvas.scrollIntoViewIfNeeded();
+    const box = await boxInView(canvas);
     // The viewer's `fitting` flag changes as its event handlers run: each step waits, frame by
     // frame, until the flag reads as expected (for up to 10 s), instead of a fixed count of frames.
     const fitting = (want) => page.waitForFunction(([i, want]) => window.__inbetween.figures[i].viewer.fitting === want,
       [i, want], { polling: 'raf', timeout: 10_000 }).then(() => want, () => !want);
     assert.equal(await fitting(true), true, `${where} ${selector}: fits from the start`);
-    const box = await canvas.boundingBox();
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await page.mouse.wheel(0, -600);
     assert.equal(await fitting(false), false, `${where} ${selector}: a zoom leaves the fit`);
-    await page.locator(`${selector} .frame-all`).click();
+    await clickAt(page, page.locator(`${selector} .frame-all`));
     assert.equal(await fitting(true), true, `${where} ${selector}: "frame all" returns to it`);
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await page.mouse.wheel(0, 600);
     assert.equal(await fitting(false), false, `${where} ${selector}: a second zoom leaves the fit`);
-    await canvas.dblclick();
+    await page.mouse.dblclick(box.x + box.width / 2, box.y + box.height / 2);
     assert.equal(await fitting(true), true, `${where} ${selector}: a double-click returns to it`);
   }
   return ids.length;
@@ -443,22 +539,81 @@ function reportBudget(backend, seconds) {
 }
 
 /**
- * Registers the lesson tests of the calling file, on each of `backends` (narrowed by
- * E2E_BACKENDS); `extras` adds the checks without a GPU API. With `parts` > 1 the lessons are
- * shared among that many files: when scripts/test sets E2E_RUN_ID, the files running at the same
- * time take the next lesson nobody has taken (a directory created per lesson, which only one
- * process can create), so they finish together whatever each lesson costs; otherwise part k takes
- * the lessons at positions k, k + parts, ... The gallery is checked by part 0.
+ * Registers the lesson tests of the calling file: every lesson on each backend (narrowed by
+ * E2E_BACKENDS), and the gallery on each; `extras` registers the checks without a GPU API instead.
+ * With `parts` > 1 the pages (a backend's gallery or lesson) are shared among that many files:
+ * when scripts/test sets E2E_RUN_ID, each file takes the next page nobody has taken (a directory
+ * created per page, which only one process can create), so the files finish together whatever
+ * each page costs; otherwise part k takes the pages at positions k, k + parts, ... The pages come
+ * in the order WebGL2's lessons, then WebGPU's (about a quarter as long each), so that the last
+ * ones to be taken are short. A file opens a backend's browser when it takes its first page on
+ * that backend, and closes it when it takes one on the other.
  */
-export function lessonTests({ backends, part = 0, parts = 1, extras = false }) {
-  const runId = process.env.E2E_RUN_ID;
-  const take = parts === 1 ? () => true
-    : runId ? (backend, lesson) => claim(`${runId}`, `${backend}-${lesson.folder}`)
-      : (backend, lesson) => lessons.indexOf(lesson) % parts === part;
-  for (const backend of BACKENDS.filter((b) => backends.includes(b))) {
-    registerLessons(backend, lessons, parts > 1 ? ` (part ${part + 1} of ${parts})` : '', part === 0, take);
+export function lessonTests({ part = 0, parts = 1, extras = false }) {
+  if (extras) {
+    registerExtras();
+    return;
   }
-  if (extras) registerExtras();
+  const runId = process.env.E2E_RUN_ID;
+  const pages = ['webgl2', 'webgpu'].filter((b) => BACKENDS.includes(b))
+    .flatMap((backend) => [{ backend, lesson: null }, ...lessons.map((lesson) => ({ backend, lesson }))]);
+  const take = parts === 1 ? () => true
+    : runId ? ({ backend, lesson }) => claim(runId, `${backend}-${lesson?.folder ?? 'gallery'}`)
+      : (p) => pages.indexOf(p) % parts === part;
+  test(`lesson pages${parts > 1 ? ` (part ${part + 1} of ${parts})` : ''}`, async (t) => {
+    let browser = null;
+    const seconds = { webgl2: [], webgpu: [] };
+    let framesFitted = 0;
+    try {
+      for (const p of pages) {
+        if (!take(p)) continue;
+        if (browser?.backend !== p.backend) {
+          await browser?.context.close();
+          browser = null;
+          browser = { backend: p.backend, context: await launch(p.backend) };
+        }
+        const { context } = browser;
+        if (!p.lesson) {
+          await t.test(`gallery lists every lesson, on ${p.backend}`, () => galleryPage(context, p.backend));
+          continue;
+        }
+        await t.test(`${p.lesson.folder} on ${p.backend}`, async () => {
+          const started = Date.now();
+          framesFitted += await lessonPage(context, p.backend, p.lesson);
+          seconds[p.backend].push([p.lesson.folder, (Date.now() - started) / 1000]);
+        });
+      }
+      if (!only) {
+        // The fit checks find something to check: some figure of the course declares its view.
+        // Files that share the pages add up their counts (`fittedInRun`).
+        const fitted = parts === 1 ? framesFitted : fittedInRun(runId, part, parts, framesFitted);
+        if (fitted !== null) assert.ok(fitted > 0, 'some figure declares its view');
+      }
+      for (const backend of ['webgl2', 'webgpu']) if (seconds[backend].length) reportBudget(backend, seconds[backend]);
+    } finally {
+      await browser?.context.close();
+    }
+  });
+}
+
+/**
+ * Records that part `part` of `parts` checked `count` figures' fit in the run `runId` (without one,
+ * the run of the `node --test` process that started this file) and returns the total of every part,
+ * or null while some part has not finished: the last part to finish gets the total.
+ */
+function fittedInRun(runId, part, parts, count) {
+  const dir = join(tmpdir(), `inbetween-e2e-${runId ?? `runner-${process.ppid}`}`);
+  mkdirSync(dir, { recursive: true });
+  writeFileSync(join(dir, `fitted-${part}-of-${parts}`), String(count));
+  let total = 0;
+  for (let k = 0; k < parts; k++) {
+    try {
+      total += Number(readFileSync(join(dir, `fitted-${k}-of-${parts}`), 'utf8'));
+    } catch {
+      return null;
+    }
+  }
+  return total;
 }
 
 /** Takes `what` for this process in the run `runId`: true for exactly one caller of the run. */
@@ -474,122 +629,114 @@ function claim(runId, what) {
   }
 }
 
-function registerLessons(backend, lessons, which, withGallery, take) {
-  test(`lessons on ${backend}${which}`, async (t) => {
-    const context = await launch(backend);
-    try {
-      if (withGallery) {
-        const gallery = await open(context, '/lessons/');
-        await t.test('gallery lists every lesson', async () => {
-          const cards = await gallery.page.locator('.card').count();
-          assert.equal(cards, catalog.length);
-          assert.deepEqual(gallery.problems, []);
-          await gallery.page.screenshot({ path: `${SHOTS}/index-${backend}.png`, fullPage: true });
-        });
-      }
-      let framesFitted = 0;
-      const seconds = [];
-      for (const lesson of lessons) {
-        if (!take(backend, lesson)) continue;
-        await t.test(lesson.folder, async () => {
-          const clock = phaseClock(`${lesson.folder} (${backend})`);
-          const started = Date.now();
-          const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
-          clock('load');
-          const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
-          assert.equal(await page.evaluate(() => document.body.dataset.backend), label);
-          await pauseTimelines(page);
-          await frames(page);
-          // Paused, nothing a 3D figure draws changes, so its renderer draws no more frames (at
-          // most a couple, should a late layout change resize a canvas).
-          const drawn = () => page.evaluate(() => window.__inbetween.figures.map((f) => [f.selector, f.viewer.canvasFrames]));
-          const drawnBefore = await drawn();
-          await frames(page, 20);
-          const stillDrawing = (await drawn()).filter(([, n], k) => n - drawnBefore[k][1] > 2);
-          assert.deepEqual(stillDrawing.map(([s]) => s), [], 'these paused figures kept drawing');
-          await plotsNameTheirUnits(page);
-          framesFitted += await frameAllReturnsToTheFit(page, lesson.folder);
-          clock('frame all');
-          if (lesson.folder.startsWith('02-')) await editorDrags(page);
-          if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
-          clock('editor drags, GPU noise check');
-          const figures = await page.locator('.figure').all();
-          assert.ok(figures.length > 0, 'a lesson has at least one figure');
-          let interacted = false;
-          for (const [i, figure] of figures.entries()) {
-            // A figure is a 3D view (wgpu canvas), a 2D drawing (canvas.view2d) or plots only.
-            const canvas = figure.locator('.stage > canvas').first();
-            const kind = !(await canvas.count()) ? 'plots'
-              : (await canvas.evaluate((c) => c.classList.contains('view2d'))) ? '2d' : '3d';
-            if (kind !== '3d' && light(backend)) continue;
-            if (kind !== '3d') {
-              const stats = await pixelStats(page, kind === '2d' ? canvas : figure.locator('.plot, canvas').first(), `drawn${i}`);
-              assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
-              const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
-              assert.ok(moved > 0, `figure ${i}: no control was found to move`);
-              await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
-              clock(`figure ${i} (${kind}): every control`);
-              continue;
-            }
-            if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
-              // Without the backend badge: the thumbnail shows the figure, not the test's backend.
-              await page.evaluate(() => document.body.classList.add('thumbnail'));
-              writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail ?? 'thumbnail.png'}`, await canvas.screenshot());
-              await page.evaluate(() => document.body.classList.remove('thumbnail'));
-            }
-            assert.equal(await figure.locator('.backend-badge').textContent(), label);
-            const before = await settledStats(page, canvas, i);
-            assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
-            assert.ok(before.colors > 20, `figure ${i}: too few colours (${before.colors}) for shaded geometry`);
-            assert.ok(before.still < 0.5, `figure ${i}: image changes while paused (${before.still})`);
-            clock(`figure ${i}: settled`);
-            if (light(backend) && interacted) continue;
-            interacted = true;
-            await orbitDrag(page, canvas, i);
-            clock(`figure ${i}: orbit`);
-            const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
-            assert.ok(moved > 0, `figure ${i}: no control was found to move`);
-            await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
-            clock(`figure ${i}: every control`);
-          }
-          // Both page sizes the course supports: no sideways scrolling, screenshots to look at.
-          for (const [w, h] of light(backend) ? [] : [[800, 600], [1600, 1000]]) {
-            await page.setViewportSize({ width: w, height: h });
-            await frames(page);
-            const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
-            assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
-            await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.png`,
-              () => labelsApart(page, `${lesson.folder} at ${w} x ${h}`));
-            clock(`${w}x${h} page`);
-          }
-          await page.setViewportSize({ width: 1100, height: 900 });
-          // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
-          const toggle = page.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]');
-          if (!light(backend) && await toggle.count()) {
-            await toggle.first().check();
-            await frames(page);
-            const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
-            assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
-          }
-          clock('exercise switch');
-          // The quiz, on this page already loaded (WebGL2 only: it sets controls, which the sweep
-          // has already checked on both backends).
-          if (backend === 'webgl2') await quizShowMeSetsFigures(page, lesson.folder);
-          clock('quiz');
-          await fullPageShot(page, `${SHOTS}/${lesson.folder}-${backend}.png`);
-          clock('page screenshot');
-          assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
-          assert.deepEqual(problems, []);
-          await page.close();
-          seconds.push([lesson.folder, (Date.now() - started) / 1000]);
-        });
-      }
-      if (!only && !which) assert.ok(framesFitted > 0, 'some figure declares its view');
-      reportBudget(backend, seconds);
-    } finally {
-      await context.close();
+/** The gallery lists every lesson of the catalog, without an error (a screenshot to look at). */
+async function galleryPage(context, backend) {
+  const { page, problems } = await open(context, '/lessons/');
+  const cards = await page.locator('.card').count();
+  assert.equal(cards, catalog.length);
+  assert.deepEqual(problems, []);
+  await page.screenshot({ path: `${SHOTS}/index-${backend}.png`, fullPage: true });
+  await page.close();
+}
+
+/**
+ * A lesson's page on `backend`, as a person uses it (see the file's first lines and the README).
+ * Returns how many of its figures were checked to return to their fit ("frame all").
+ */
+async function lessonPage(context, backend, lesson) {
+  const clock = phaseClock(`${lesson.folder} (${backend})`);
+  const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
+  clock('load');
+  const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
+  assert.equal(await page.evaluate(() => document.body.dataset.backend), label);
+  await pauseTimelines(page);
+  await frames(page);
+  // Paused, nothing a 3D figure draws changes, so its renderer draws no more frames (at
+  // most a couple, should a late layout change resize a canvas).
+  const drawn = () => page.evaluate(() => window.__inbetween.figures.map((f) => [f.selector, f.viewer.canvasFrames]));
+  const drawnBefore = await drawn();
+  await frames(page, 20);
+  const stillDrawing = (await drawn()).filter(([, n], k) => n - drawnBefore[k][1] > 2);
+  assert.deepEqual(stillDrawing.map(([s]) => s), [], 'these paused figures kept drawing');
+  await plotsNameTheirUnits(page);
+  const framesFitted = await frameAllReturnsToTheFit(page, lesson.folder);
+  clock('frame all');
+  if (lesson.folder.startsWith('02-')) await editorDrags(page);
+  if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
+  clock('editor drags, GPU noise check');
+  const figures = await page.locator('.figure').all();
+  assert.ok(figures.length > 0, 'a lesson has at least one figure');
+  let interacted = false;
+  for (const [i, figure] of figures.entries()) {
+    // A figure is a 3D view (wgpu canvas), a 2D drawing (canvas.view2d) or plots only.
+    const canvas = figure.locator('.stage > canvas').first();
+    const kind = !(await canvas.count()) ? 'plots'
+      : (await canvas.evaluate((c) => c.classList.contains('view2d'))) ? '2d' : '3d';
+    if (kind !== '3d' && light(backend)) continue;
+    if (kind !== '3d') {
+      const stats = await pixelStats(page, kind === '2d' ? canvas : figure.locator('.plot, canvas').first(), `drawn${i}`);
+      assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
+      const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
+      assert.ok(moved > 0, `figure ${i}: no control was found to move`);
+      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+      clock(`figure ${i} (${kind}): every control`);
+      continue;
     }
-  });
+    if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
+      // Without the backend badge: the thumbnail shows the figure, not the test's backend.
+      await page.evaluate(() => document.body.classList.add('thumbnail'));
+      writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail ?? 'thumbnail.png'}`, await canvas.screenshot());
+      await page.evaluate(() => document.body.classList.remove('thumbnail'));
+    }
+    assert.equal(await figure.locator('.backend-badge').textContent(), label);
+    const before = await settledStats(page, canvas, i);
+    assert.ok(before.coverage > 0.02, `figure ${i}: canvas looks blank (coverage ${before.coverage})`);
+    assert.ok(before.colors > 20, `figure ${i}: too few colours (${before.colors}) for shaded geometry`);
+    assert.ok(before.still < 0.5, `figure ${i}: image changes while paused (${before.still})`);
+    clock(`figure ${i}: settled`);
+    if (light(backend) && interacted) continue;
+    interacted = true;
+    await orbitDrag(page, canvas, i, before.shot);
+    clock(`figure ${i}: orbit`);
+    const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
+    assert.ok(moved > 0, `figure ${i}: no control was found to move`);
+    await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+    clock(`figure ${i}: every control`);
+  }
+  // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
+  const toggle = page.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]');
+  if (!light(backend) && await toggle.count()) {
+    await toggle.first().check();
+    await frames(page);
+    const notes = (await page.locator('.exercise-note').allTextContents()).join(' ');
+    assert.match(notes, /not done yet/i, 'a stub exercise is reported in the page');
+  }
+  clock('exercise switch');
+  // The quiz, on this page already loaded (WebGL2 only: it sets controls, which the sweep
+  // has already checked on both backends).
+  if (backend === 'webgl2') await quizShowMeSetsFigures(page, lesson.folder);
+  clock('quiz');
+  // Both page sizes the course supports, last: no sideways scrolling, no label over another or
+  // off its canvas, and the page's screenshots to look at (in the state the controls and the quiz
+  // left). A backend that skips them gets one screenshot at the test's own size.
+  const sizes = light(backend) ? [] : [[800, 600], [1600, 1000]];
+  for (const [w, h] of sizes) {
+    await page.setViewportSize({ width: w, height: h });
+    await frames(page);
+    const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+    assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
+    await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.jpg`,
+      () => labelsApart(page, `${lesson.folder} at ${w} x ${h}`));
+    clock(`${w}x${h} page`);
+  }
+  if (!sizes.length) {
+    await fullPageShot(page, `${SHOTS}/${lesson.folder}-${backend}.jpg`);
+    clock('page screenshot');
+  }
+  assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'the error banner is empty');
+  assert.deepEqual(problems, []);
+  await page.close();
+  return framesFitted;
 }
 
 function registerExtras() {

@@ -1,4 +1,0 @@
-// Lesson pages end to end (see lessons.mjs): { backends: ['webgl2'], part: 0, parts: 2 }.
-import { lessonTests } from './lessons.mjs';
-
-lessonTests({ backends: ['webgl2'], part: 0, parts: 2 });
