@@ -40,60 +40,108 @@ impl Dim {
     }
 }
 
+/// The kernels of one support radius `h` and dimension, their constants computed once (a step
+/// evaluates them millions of times). The free functions below are the same kernels for one
+/// call each.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kernels {
+    pub h: f32,
+    h2: f32,
+    poly6: f32,
+    spiky: f32,
+    spiky_gradient: f32,
+    viscosity_laplacian: f32,
+}
+
+impl Kernels {
+    pub fn new(h: f32, dim: Dim) -> Self {
+        let (poly6, spiky, spiky_gradient, viscosity_laplacian) = match dim {
+            Dim::Three => (
+                315.0 / (64.0 * PI * h.powi(9)),
+                15.0 / (PI * h.powi(6)),
+                45.0 / (PI * h.powi(6)),
+                45.0 / (PI * h.powi(6)),
+            ),
+            Dim::Two => (
+                4.0 / (PI * h.powi(8)),
+                10.0 / (PI * h.powi(5)),
+                30.0 / (PI * h.powi(5)),
+                40.0 / (PI * h.powi(5)),
+            ),
+        };
+        Self {
+            h,
+            h2: h * h,
+            poly6,
+            spiky,
+            spiky_gradient,
+            viscosity_laplacian,
+        }
+    }
+
+    /// poly6 at squared distance `r2` (zero from `h²` on).
+    #[inline]
+    pub fn poly6(&self, r2: f32) -> f32 {
+        if !(r2 < self.h2) {
+            return 0.0;
+        }
+        let d = self.h2 - r2;
+        self.poly6 * d * d * d
+    }
+
+    /// spiky at distance `r`.
+    #[inline]
+    pub fn spiky(&self, r: f32) -> f32 {
+        if !(r < self.h) {
+            return 0.0;
+        }
+        let q = self.h - r;
+        self.spiky * q * q * q
+    }
+
+    /// The spiky kernel's gradient with respect to `x_i` at `rij = x_i − x_j`: `−c (h − r)² r̂`.
+    /// Odd: `∇W(−r) = −∇W(r)` exactly (only the sign changes), which is what makes the
+    /// pressure force symmetric. Zero at `r = 0` (no direction) and from `h` on.
+    #[inline]
+    pub fn spiky_gradient(&self, rij: Vec3) -> Vec3 {
+        let r2 = rij.length_squared();
+        if !(r2 < self.h2) || r2 <= 1e-24 * self.h2 {
+            return Vec3::ZERO;
+        }
+        let r = r2.sqrt();
+        let q = self.h - r;
+        rij * (-self.spiky_gradient * q * q / r)
+    }
+
+    /// The viscosity kernel's Laplacian at distance `r`: positive inside the support.
+    #[inline]
+    pub fn viscosity_laplacian(&self, r: f32) -> f32 {
+        if !(r < self.h) {
+            return 0.0;
+        }
+        self.viscosity_laplacian * (self.h - r)
+    }
+}
+
 /// The poly6 kernel at squared distance `r2` (zero from `h²` on). Exercise 15.1.
 pub fn poly6(r2: f32, h: f32, dim: Dim) -> f32 {
-    let h2 = h * h;
-    if !(r2 < h2) {
-        return 0.0;
-    }
-    let d = h2 - r2;
-    let c = match dim {
-        Dim::Three => 315.0 / (64.0 * PI * h.powi(9)),
-        Dim::Two => 4.0 / (PI * h.powi(8)),
-    };
-    c * d * d * d
+    Kernels::new(h, dim).poly6(r2)
 }
 
 /// The spiky kernel at distance `r`.
 pub fn spiky(r: f32, h: f32, dim: Dim) -> f32 {
-    if !(r < h) {
-        return 0.0;
-    }
-    let q = h - r;
-    let c = match dim {
-        Dim::Three => 15.0 / (PI * h.powi(6)),
-        Dim::Two => 10.0 / (PI * h.powi(5)),
-    };
-    c * q * q * q
+    Kernels::new(h, dim).spiky(r)
 }
 
-/// The gradient of the spiky kernel with respect to `x_i`, at `rij = x_i − x_j`: it points from
-/// `j` to `i` with a negative slope, `−c (h − r)² r̂`. Odd: `∇W(−r) = −∇W(r)` exactly (the
-/// sign is the only thing that changes), which is what makes the pressure force symmetric.
-/// Zero at `r = 0` (no direction) and from `h` on.
+/// The gradient of the spiky kernel with respect to `x_i`, at `rij = x_i − x_j` (see
+/// [`Kernels::spiky_gradient`]).
 pub fn spiky_gradient(rij: Vec3, h: f32, dim: Dim) -> Vec3 {
-    let r = rij.length();
-    if !(r < h) || r <= 1e-12 * h {
-        return Vec3::ZERO;
-    }
-    let q = h - r;
-    let c = match dim {
-        Dim::Three => 45.0 / (PI * h.powi(6)),
-        Dim::Two => 30.0 / (PI * h.powi(5)),
-    };
-    rij * (-c * q * q / r)
+    Kernels::new(h, dim).spiky_gradient(rij)
 }
 
 /// The Laplacian of the viscosity kernel at distance `r`: positive inside the support.
 pub fn viscosity_laplacian(r: f32, h: f32, dim: Dim) -> f32 {
-    if !(r < h) {
-        return 0.0;
-    }
-    let c = match dim {
-        Dim::Three => 45.0 / (PI * h.powi(6)),
-        Dim::Two => 40.0 / (PI * h.powi(5)),
-    };
-    c * (h - r)
+    Kernels::new(h, dim).viscosity_laplacian(r)
 }
 
 /// The 3D viscosity kernel itself (for its plot and its normalisation test); it grows without

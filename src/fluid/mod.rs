@@ -17,7 +17,7 @@ pub mod kernels;
 use crate::boids::grid::Grid;
 use crate::particles::collide::{bounce_velocity, Plane, Sphere};
 use glam::Vec3;
-pub use kernels::Dim;
+pub use kernels::{Dim, Kernels};
 
 /// The most particles a fluid may have: the CPU step's cost grows with the count (and the
 /// neighbour lists with it, about 30 per particle in 3D).
@@ -468,14 +468,15 @@ impl Fluid {
         } else {
             &self.positions
         };
-        let self_weight = m * kernels::poly6(0.0, h, dim);
+        let kern = Kernels::new(h, dim);
         for i in 0..points.len() {
             let p = points[i];
-            let mut rho = self_weight;
+            // Σ W first, one multiplication by m at the end.
+            let mut w = kern.poly6(0.0);
             for &j in &self.nbr[self.start[i] as usize..self.start[i + 1] as usize] {
-                rho += m * kernels::poly6((p - points[j as usize]).length_squared(), h, dim);
+                w += kern.poly6((p - points[j as usize]).length_squared());
             }
-            self.densities[i] = rho;
+            self.densities[i] = m * w;
         }
     }
 
@@ -516,19 +517,19 @@ impl Fluid {
             self.params.viscosity,
         );
         let dt = self.params.dt;
+        let kern = Kernels::new(h, dim);
         for i in 0..self.len() {
             let mut f = Vec3::ZERO;
             for &j in self.neighbours(i) {
                 let j = j as usize;
-                f += pair_force(
+                f += pair_force_with(
+                    &kern,
                     [self.positions[i], self.positions[j]],
                     [self.velocities[i], self.velocities[j]],
                     [self.densities[i], self.densities[j]],
                     [self.pressures[i], self.pressures[j]],
                     m,
                     mu,
-                    h,
-                    dim,
                 );
             }
             self.scratch[i] = f / m + self.params.gravity;
@@ -559,11 +560,13 @@ impl Fluid {
             self.predicted[i] = x;
         }
         self.find_neighbours(true);
-        let w_dq = kernels::poly6((0.2 * h) * (0.2 * h), h, dim);
+        let kern = Kernels::new(h, dim);
+        let w_dq = kern.poly6((0.2 * h) * (0.2 * h));
         for _ in 0..iterations {
             self.compute_densities(true);
             for i in 0..self.len() {
-                let lambda = pbf_lambda(
+                let lambda = pbf_lambda_with(
+                    &kern,
                     self.predicted[i],
                     self.neighbours(i)
                         .iter()
@@ -572,8 +575,6 @@ impl Fluid {
                     m,
                     rho0,
                     eps,
-                    h,
-                    dim,
                 );
                 self.pressures[i] = lambda;
             }
@@ -584,13 +585,13 @@ impl Fluid {
                     let j = j as usize;
                     let rij = xi - self.predicted[j];
                     let s_corr = if k_corr > 0.0 {
-                        let ratio = kernels::poly6(rij.length_squared(), h, dim) / w_dq;
+                        let ratio = kern.poly6(rij.length_squared()) / w_dq;
                         -k_corr * ratio * ratio * ratio * ratio * self.lambda_unit
                     } else {
                         0.0
                     };
-                    dx += (self.pressures[i] + self.pressures[j] + s_corr)
-                        * kernels::spiky_gradient(rij, h, dim);
+                    dx +=
+                        (self.pressures[i] + self.pressures[j] + s_corr) * kern.spiky_gradient(rij);
                 }
                 self.scratch[i] = m / rho0 * dx;
             }
@@ -624,12 +625,13 @@ impl Fluid {
             self.params.vorticity,
         );
         let x = &self.predicted;
+        let kern = Kernels::new(h, dim);
         let omega: Vec<Vec3> = (0..x.len())
             .map(|i| {
                 let mut w = Vec3::ZERO;
                 for &j in self.neighbours(i) {
                     let j = j as usize;
-                    let g = kernels::spiky_gradient(x[i] - x[j], h, dim);
+                    let g = kern.spiky_gradient(x[i] - x[j]);
                     w += m / self.densities[j] * (self.velocities[j] - self.velocities[i]).cross(g);
                 }
                 w
@@ -639,9 +641,7 @@ impl Fluid {
             let mut eta = Vec3::ZERO;
             for &j in self.neighbours(i) {
                 let j = j as usize;
-                eta += m / self.densities[j]
-                    * omega[j].length()
-                    * kernels::spiky_gradient(x[i] - x[j], h, dim);
+                eta += m / self.densities[j] * omega[j].length() * kern.spiky_gradient(x[i] - x[j]);
             }
             let len = eta.length();
             if len > 1e-9 {
@@ -660,13 +660,14 @@ impl Fluid {
     fn xsph(&mut self) {
         let (h, dim, m, c) = (self.params.h, self.params.dim, self.mass, self.params.xsph);
         let x = &self.predicted;
+        let kern = Kernels::new(h, dim);
         for i in 0..x.len() {
             let mut dv = Vec3::ZERO;
             for &j in self.neighbours(i) {
                 let j = j as usize;
                 dv += m / self.densities[j]
                     * (self.velocities[j] - self.velocities[i])
-                    * kernels::poly6((x[i] - x[j]).length_squared(), h, dim);
+                    * kern.poly6((x[i] - x[j]).length_squared());
             }
             self.scratch[i] = c * dv;
         }
@@ -802,11 +803,24 @@ pub fn pair_force(
     h: f32,
     dim: Dim,
 ) -> Vec3 {
+    pair_force_with(&Kernels::new(h, dim), x, v, rho, p, m, mu)
+}
+
+/// [`pair_force`] with the kernels' constants already computed (the step's loop).
+#[inline]
+fn pair_force_with(
+    kern: &Kernels,
+    x: [Vec3; 2],
+    v: [Vec3; 2],
+    rho: [f32; 2],
+    p: [f32; 2],
+    m: f32,
+    mu: f32,
+) -> Vec3 {
     let rij = x[0] - x[1];
     let rr = rho[0] * rho[1];
-    let pressure = -(m * m) * (p[0] + p[1]) / (2.0 * rr) * kernels::spiky_gradient(rij, h, dim);
-    let viscosity =
-        mu * (m * m) / rr * kernels::viscosity_laplacian(rij.length(), h, dim) * (v[1] - v[0]);
+    let pressure = -(m * m) * (p[0] + p[1]) / (2.0 * rr) * kern.spiky_gradient(rij);
+    let viscosity = mu * (m * m) / rr * kern.viscosity_laplacian(rij.length()) * (v[1] - v[0]);
     pressure + viscosity
 }
 
@@ -819,11 +833,12 @@ pub fn density(
     h: f32,
     dim: Dim,
 ) -> f32 {
-    let mut rho = m * kernels::poly6(0.0, h, dim);
+    let kern = Kernels::new(h, dim);
+    let mut w = kern.poly6(0.0);
     for y in neighbours {
-        rho += m * kernels::poly6((x - y).length_squared(), h, dim);
+        w += kern.poly6((x - y).length_squared());
     }
-    rho
+    m * w
 }
 
 /// PBF's `λ_i` for the density constraint `C_i = ρ_i/ρ₀ − 1` (only when compressed: `C_i < 0`
@@ -844,6 +859,20 @@ pub fn pbf_lambda(
     h: f32,
     dim: Dim,
 ) -> f32 {
+    pbf_lambda_with(&Kernels::new(h, dim), x, neighbours, rho, m, rho0, eps)
+}
+
+/// [`pbf_lambda`] with the kernels' constants already computed (the step's loop).
+#[inline]
+fn pbf_lambda_with(
+    kern: &Kernels,
+    x: Vec3,
+    neighbours: impl IntoIterator<Item = Vec3>,
+    rho: f32,
+    m: f32,
+    rho0: f32,
+    eps: f32,
+) -> f32 {
     let c = (rho / rho0 - 1.0).max(0.0);
     if c == 0.0 {
         return 0.0;
@@ -851,7 +880,7 @@ pub fn pbf_lambda(
     let mut grad_i = Vec3::ZERO;
     let mut sum = 0.0;
     for y in neighbours {
-        let g = m / rho0 * kernels::spiky_gradient(x - y, h, dim);
+        let g = m / rho0 * kern.spiky_gradient(x - y);
         grad_i += g;
         sum += g.length_squared();
     }
