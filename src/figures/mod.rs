@@ -13,6 +13,7 @@ pub mod boids;
 pub mod cloth;
 pub mod curves;
 pub mod expressive;
+pub mod fluid;
 pub mod gltf;
 pub mod gpu;
 pub mod ik;

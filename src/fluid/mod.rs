@@ -188,6 +188,15 @@ pub fn box_size(dim: Dim) -> Vec3 {
     }
 }
 
+/// How a step finds each particle's neighbours.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Search {
+    /// The uniform grid: cells one kernel radius wide, the 27 (2D: 9) around a particle.
+    Grid,
+    /// Every pair tested: the same loop over one cell that holds the whole fluid, O(N²).
+    AllPairs,
+}
+
 /// What a step measures.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Stats {
@@ -452,6 +461,16 @@ impl Fluid {
     /// The neighbours of particle `i` (after a search).
     pub fn neighbours(&self, i: usize) -> &[u32] {
         &self.nbr[self.start[i] as usize..self.start[i + 1] as usize]
+    }
+
+    /// Chooses the neighbour search; both find the same neighbours (`tests/fluid.rs`).
+    pub fn set_search(&mut self, search: Search) {
+        let size = box_size(self.params.dim);
+        let pad = Vec3::splat(self.params.h);
+        match search {
+            Search::Grid => self.grid.configure(-pad, size + pad, self.params.h),
+            Search::AllPairs => self.grid.configure_single_cell(-pad, size + pad),
+        }
     }
 
     /// Finds every particle's neighbours among the current positions (the figures' and tests'
