@@ -629,8 +629,8 @@ fn the_captions_preset_claims_hold() {
 #[test]
 fn the_lagrange_captions_numbers_hold() {
     use inbetween::curves::Track;
-    // (largest |blue − green|, largest |red|, where red is farthest from green as a fraction of
-    // the time range)
+    // (largest |blue − green|, largest gap between any two of blue, red and green, largest |red|,
+    // where red is farthest from green as a fraction of the time range)
     let measure = |n: f32| {
         let mut s = LagrangeScene::new();
         s.set_key_count(n).unwrap();
@@ -640,27 +640,30 @@ fn the_lagrange_captions_numbers_hold() {
         let blue = with(ta, ya, Interpolation::Lagrange);
         let red = with(tb.clone(), yb.clone(), Interpolation::Lagrange);
         let green = with(tb, yb, Interpolation::CATMULL_ROM);
-        let (mut bg, mut rmax, mut worst) = (0.0f32, 0.0f32, (0.0f32, 0.0f32));
+        let (mut bg, mut all, mut rmax, mut worst) = (0.0f32, 0.0f32, 0.0f32, (0.0f32, 0.0f32));
         for k in 0..=2000 {
             let u = k as f32 / 2000.0;
             let t = (n - 1.0) * u;
-            bg = bg.max((blue.position(t) - green.position(t)).abs());
+            // The largest gap between any two of the three curves.
+            let (b, r, g) = (blue.position(t), red.position(t), green.position(t));
+            bg = bg.max((b - g).abs());
+            all = all.max(bg).max((r - g).abs()).max((r - b).abs());
             rmax = rmax.max(red.position(t).abs());
             let d = (red.position(t) - green.position(t)).abs();
             if d > worst.0 {
                 worst = (d, u);
             }
         }
-        (bg, rmax, worst.1)
+        (bg, all, rmax, worst.1)
     };
-    // 3 keys: all three nearly agree (within 11 cm).
-    let (bg, rmax, _) = measure(3.0);
-    assert!(bg < 0.11 && rmax < 1.3, "{bg} {rmax}");
+    // 3 keys: all three nearly agree (within 12 cm: red and blue differ by up to 11.9 cm).
+    let (_, all, _, _) = measure(3.0);
+    assert!((0.10..0.12).contains(&all), "{all}");
     // 10 keys (the default): blue within 9 cm of green, red already off the 3.4 m graph.
-    let (bg, rmax, _) = measure(10.0);
+    let (bg, _, rmax, _) = measure(10.0);
     assert!(bg < 0.09 && rmax > 3.4, "{bg} {rmax}");
     // 16 keys: red swings out past 100 m, worst near an end.
-    let (_, rmax, at) = measure(16.0);
+    let (_, _, rmax, at) = measure(16.0);
     assert!(
         rmax > 100.0 && !(0.15..=0.85).contains(&at),
         "{rmax} at {at}"

@@ -847,3 +847,54 @@ fn frustum_labels_at_the_apex_stay_apart_and_off_the_dots() {
         }
     }
 }
+
+/// The text under Figure 5: the 3D sphere has 11.25° between vertices (32 segments, 16 rings),
+/// and at shininess 128 Blinn-Phong's highlight is about 12° across where (n·h)^128 is half.
+#[test]
+fn the_highlight_is_narrower_than_the_spacing_of_the_spheres_vertices() {
+    let scene = Shading::new();
+    let sphere = scene.sphere();
+    // Around the equator: 32 vertices, 11.25° apart.
+    let mut around: Vec<f32> = sphere
+        .positions
+        .iter()
+        .filter(|p| p.y.abs() < 1e-4)
+        .map(|p| p.z.atan2(p.x).to_degrees())
+        .collect();
+    around.sort_by(f32::total_cmp);
+    around.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
+    assert_eq!(around.len(), 32, "{around:?}");
+    assert!((around[1] - around[0] - 11.25).abs() < 1e-3);
+    // From pole to pole: 16 rings of 11.25°.
+    let mut up: Vec<f32> = sphere
+        .positions
+        .iter()
+        .map(|p| p.y.clamp(-1.0, 1.0).acos().to_degrees())
+        .collect();
+    up.sort_by(f32::total_cmp);
+    up.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
+    assert_eq!(up.len(), 17, "{up:?}");
+    // The highlight's full width at half height: tilt n away from h until the specular halves.
+    let m = Material {
+        ambient: 0.0,
+        diffuse: 0.0,
+        specular: 1.0,
+        shininess: 128.0,
+        color: Vec3::ONE,
+    };
+    let (l, v) = (Vec3::Z, Vec3::Z);
+    let specular = |deg: f32| {
+        let a = deg.to_radians();
+        raster::blinn_phong(Vec3::new(a.sin(), 0.0, a.cos()), l, v, &m).x
+    };
+    let half = (0..2000)
+        .map(|k| k as f32 * 0.01)
+        .find(|&d| specular(d) <= 0.5)
+        .unwrap();
+    assert!(
+        (2.0 * half - 12.0).abs() < 0.5,
+        "{} degrees across",
+        2.0 * half
+    );
+    assert!(2.0 * half > 11.25 && 2.0 * half < 2.0 * 11.25);
+}
