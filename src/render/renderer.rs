@@ -54,7 +54,17 @@ pub(super) fn scene_pipeline_with(
     depth_write: bool,
 ) -> wgpu::RenderPipeline {
     let compare = wgpu::CompareFunction::LessEqual;
-    scene_pipeline_depth(device, format, label, layout, module, buffers, primitive, depth_write, compare)
+    scene_pipeline_depth(
+        device,
+        format,
+        label,
+        layout,
+        module,
+        buffers,
+        primitive,
+        depth_write,
+        compare,
+    )
 }
 
 /// [`scene_pipeline_with`], choosing the depth test too (the inset's background passes it
@@ -269,10 +279,22 @@ pub struct Renderer {
     canvas_frames: u64,
 }
 
-impl Renderer {
-    pub fn new(gpu: &Gpu) -> Self {
-        let device = &gpu.device;
-        let format = gpu.config.format;
+/// The renderer's pipelines and bind group layouts: made once per page and format, shared by
+/// every figure (see `Gpu::cached`).
+#[derive(Clone)]
+struct Pipelines {
+    globals_layout: wgpu::BindGroupLayout,
+    object_layout: wgpu::BindGroupLayout,
+    mesh: wgpu::RenderPipeline,
+    line: wgpu::RenderPipeline,
+    point: wgpu::RenderPipeline,
+    stroke: wgpu::RenderPipeline,
+    marker: wgpu::RenderPipeline,
+    inset: wgpu::RenderPipeline,
+}
+
+impl Pipelines {
+    fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
         let uniform_entry = |dynamic: bool, size: u64| wgpu::BindGroupLayoutEntry {
             binding: 0,
             visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
@@ -294,34 +316,6 @@ impl Renderer {
                 std::mem::size_of::<ObjectUniform>() as u64,
             )],
         });
-        // A camera's uniform buffer and its bind group: the main view's, and the inset's.
-        let globals_with_group = |label: &str| {
-            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: std::mem::size_of::<Globals>() as u64,
-                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(label),
-                layout: &globals_layout,
-                entries: &[wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: buffer.as_entire_binding(),
-                }],
-            });
-            (buffer, group)
-        };
-        let (globals, globals_group) = globals_with_group("globals");
-        let (inset_globals, inset_globals_group) = globals_with_group("inset globals");
-        let objects = StreamBuffer::new(
-            device,
-            "objects",
-            wgpu::BufferUsages::UNIFORM,
-            OBJECT_STRIDE * 64,
-        );
-        let object_group = Self::object_group(device, &object_layout, &objects.buffer);
-
         let shader = |label: &str, source: &str| {
             device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some(label),
@@ -462,12 +456,63 @@ impl Renderer {
             true,
             wgpu::CompareFunction::Always,
         );
-        let textured = super::texture::Textured::new(
+        Self {
+            globals_layout,
+            object_layout,
+            mesh: mesh_pipeline,
+            line: line_pipeline,
+            point: point_pipeline,
+            stroke: stroke_pipeline,
+            marker: marker_pipeline,
+            inset: inset_pipeline,
+        }
+    }
+}
+
+impl Renderer {
+    pub fn new(gpu: &Gpu) -> Self {
+        let device = &gpu.device;
+        let format = gpu.config.format;
+        let Pipelines {
+            globals_layout,
+            object_layout,
+            mesh: mesh_pipeline,
+            line: line_pipeline,
+            point: point_pipeline,
+            stroke: stroke_pipeline,
+            marker: marker_pipeline,
+            inset: inset_pipeline,
+        } = gpu.cached(|| Pipelines::new(device, format));
+        // A camera's uniform buffer and its bind group: the main view's, and the inset's.
+        let globals_with_group = |label: &str| {
+            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: std::mem::size_of::<Globals>() as u64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(label),
+                layout: &globals_layout,
+                entries: &[wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: buffer.as_entire_binding(),
+                }],
+            });
+            (buffer, group)
+        };
+        let (globals, globals_group) = globals_with_group("globals");
+        let (inset_globals, inset_globals_group) = globals_with_group("inset globals");
+        let objects = StreamBuffer::new(
             device,
-            format,
-            &globals,
-            std::mem::size_of::<Globals>() as u64,
+            "objects",
+            wgpu::BufferUsages::UNIFORM,
+            OBJECT_STRIDE * 64,
         );
+        let object_group = Self::object_group(device, &object_layout, &objects.buffer);
+
+        let textured =
+            super::texture::Textured::new(gpu, &globals, std::mem::size_of::<Globals>() as u64);
         let mut renderer = Self {
             textured,
             mesh_pipeline,
@@ -683,27 +728,16 @@ impl Renderer {
             return Ok(());
         }
         self.shown = None;
-        let frame = match gpu.surface.get_current_texture() {
-            wgpu::CurrentSurfaceTexture::Success(f)
-            | wgpu::CurrentSurfaceTexture::Suboptimal(f) => f,
-            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
-                gpu.surface.configure(&gpu.device, &gpu.config);
-                self.frame.clear();
-                self.gpu_points.clear();
-                self.gpu_sprites.clear();
-                return Ok(());
-            }
-            _ => {
-                self.frame.clear();
-                self.gpu_points.clear();
-                self.gpu_sprites.clear();
-                return Ok(()); // skipped frame (timeout, occluded): draw the next one
-            }
+        let Some(frame) = gpu.next_frame() else {
+            self.frame.clear();
+            self.gpu_points.clear();
+            self.gpu_sprites.clear();
+            return Ok(());
         };
         let view = frame.texture.create_view(&Default::default());
         let commands = self.encode(gpu, camera, &view, (gpu.config.width, gpu.config.height));
         gpu.queue.submit([commands]);
-        gpu.queue.present(frame);
+        gpu.show(frame)?;
         self.shown = Some(key);
         self.canvas_frames += 1;
         Ok(())
