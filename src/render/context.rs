@@ -130,12 +130,6 @@ impl PageGpu {
                 slots.push((choice, Some(page.clone())));
             }
         });
-        if let Ok(page) = &made {
-            // A lost device is dropped from the page, so that the next figure makes a new one.
-            page.device.set_device_lost_callback(move |_, _| {
-                PAGE_GPUS.with_borrow_mut(|slots| slots.retain(|(c, _)| *c != choice));
-            });
-        }
         made
     }
 
@@ -166,9 +160,8 @@ impl PageGpu {
             .and_then(|d| d.create_element("canvas").ok())
             .and_then(|c| c.dyn_into().ok())
             .ok_or("no document to create a canvas in")?;
-        let surface = instance
-            .create_surface(wgpu::SurfaceTarget::Canvas(canvas.clone()))
-            .map_err(|e| format!("{missing} ({e})."))?;
+        let surface =
+            create_surface(&instance, canvas.clone()).map_err(|e| format!("{missing} ({e})."))?;
         let adapter = instance
             .request_adapter(&wgpu::RequestAdapterOptions {
                 power_preference: wgpu::PowerPreference::HighPerformance,
@@ -218,7 +211,7 @@ impl PageGpu {
         config.alpha_mode = wgpu::CompositeAlphaMode::Auto;
         config.view_formats = vec![];
         let gl = (info.backend == wgpu::Backend::Gl).then(|| {
-            surface.configure(&device, &config);
+            configure(&surface, &device, &config);
             (canvas, surface, Cell::new((1, 1)))
         });
         Ok(Self {
@@ -254,11 +247,9 @@ impl Gpu {
             canvas.set_height(config.height);
             Target::Copy(canvas, context.unchecked_into())
         } else {
-            let surface = page
-                .instance
-                .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+            let surface = create_surface(&page.instance, canvas)
                 .map_err(|e| format!("The {} canvas: {e}.", page.backend_name))?;
-            surface.configure(&page.device, &config);
+            configure(&surface, &page.device, &config);
             Target::Surface(surface)
         };
         Ok(Self {
@@ -283,7 +274,7 @@ impl Gpu {
             self.config.width = width;
             self.config.height = height;
             match &self.target {
-                Target::Surface(surface) => surface.configure(&self.device, &self.config),
+                Target::Surface(surface) => configure(surface, &self.device, &self.config),
                 Target::Copy(canvas, _) => {
                     canvas.set_width(width);
                     canvas.set_height(height);
@@ -300,7 +291,7 @@ impl Gpu {
             Target::Copy(..) => {
                 let (_, surface, size) = self.page.gl.as_ref()?;
                 if size.get() != (self.config.width, self.config.height) {
-                    surface.configure(&self.device, &self.config);
+                    configure(surface, &self.device, &self.config);
                     size.set((self.config.width, self.config.height));
                 }
                 surface
@@ -310,7 +301,7 @@ impl Gpu {
             wgpu::CurrentSurfaceTexture::Success(f)
             | wgpu::CurrentSurfaceTexture::Suboptimal(f) => Some(f),
             wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
-                surface.configure(&self.device, &self.config);
+                configure(surface, &self.device, &self.config);
                 None
             }
             // Timeout, occluded: draw the next one.
@@ -325,7 +316,7 @@ impl Gpu {
         match (&self.target, &self.page.gl) {
             (Target::Copy(_, context), Some((page_canvas, ..))) => context
                 .draw_image(page_canvas, 0.0, 0.0)
-                .map_err(|e| format!("copying the frame into the canvas failed: {e:?}")),
+                .map_err(|_| "copying the frame into the figure's canvas failed".to_string()),
             _ => Ok(()),
         }
     }
@@ -348,4 +339,19 @@ impl Gpu {
         self.page.cache.borrow_mut().push((key.0, key.1, boxed));
         value
     }
+}
+
+// `create_surface` and `configure`, each called from one place: the crate is optimised for speed,
+// and each call site would otherwise get its own inlined copy of wgpu's code for both backends.
+#[inline(never)]
+fn create_surface(
+    instance: &wgpu::Instance,
+    canvas: HtmlCanvasElement,
+) -> Result<wgpu::Surface<'static>, wgpu::CreateSurfaceError> {
+    instance.create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+}
+
+#[inline(never)]
+fn configure(surface: &wgpu::Surface, device: &wgpu::Device, config: &wgpu::SurfaceConfiguration) {
+    surface.configure(device, config);
 }
