@@ -2,8 +2,8 @@
 //!
 //! WebGPU draws each figure into its own canvas (one canvas context each, on the one device).
 //! WebGL2 cannot: a WebGL2 context draws into its own canvas only. There the device is the context
-//! of one hidden canvas, which draws each figure at the figure's size, and each figure's canvas
-//! has a `'2d'` context into which the hidden canvas is copied after every frame.
+//! of one hidden canvas, which draws each figure into its top-left corner, and each figure's
+//! canvas has a `'2d'` context into which that corner is copied after every frame.
 
 use std::any::{Any, TypeId};
 use std::cell::{Cell, RefCell};
@@ -69,12 +69,20 @@ thread_local! {
 extern "C" {
     /// A figure's canvas's `'2d'` context (WebGL2: the page's canvas is copied into it).
     type Context2d;
+    /// Copies the top-left `width × height` of `image` to the top-left of the context's canvas.
     #[wasm_bindgen(method, catch, js_name = drawImage)]
+    #[allow(clippy::too_many_arguments)]
     fn draw_image(
         this: &Context2d,
         image: &HtmlCanvasElement,
-        x: f64,
-        y: f64,
+        sx: f64,
+        sy: f64,
+        width: f64,
+        height: f64,
+        dx: f64,
+        dy: f64,
+        dw: f64,
+        dh: f64,
     ) -> Result<(), JsValue>;
 }
 
@@ -284,15 +292,20 @@ impl Gpu {
     }
 
     /// The texture to draw the canvas's next frame into, `None` for a skipped frame. On WebGL2
-    /// the page's canvas is first resized to this canvas's size when it differs.
+    /// it is the page canvas's, which only grows: resizing it to each figure of another size
+    /// would reallocate it each time (about 3 ms on SwiftShader), so a smaller figure draws into
+    /// its top-left corner (and its renderer's multisampled targets have the page canvas's size).
     pub(super) fn next_frame(&self) -> Option<wgpu::SurfaceTexture> {
+        let mut config = self.config.clone();
         let surface = match &self.target {
             Target::Surface(surface) => surface,
             Target::Copy(..) => {
                 let (_, surface, size) = self.page.gl.as_ref()?;
-                if size.get() != (self.config.width, self.config.height) {
-                    configure(surface, &self.device, &self.config);
-                    size.set((self.config.width, self.config.height));
+                let (w, h) = size.get();
+                (config.width, config.height) = (w.max(config.width), h.max(config.height));
+                if (config.width, config.height) != (w, h) {
+                    configure(surface, &self.device, &config);
+                    size.set((config.width, config.height));
                 }
                 surface
             }
@@ -301,7 +314,7 @@ impl Gpu {
             wgpu::CurrentSurfaceTexture::Success(f)
             | wgpu::CurrentSurfaceTexture::Suboptimal(f) => Some(f),
             wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
-                configure(surface, &self.device, &self.config);
+                configure(surface, &self.device, &config);
                 None
             }
             // Timeout, occluded: draw the next one.
@@ -313,9 +326,10 @@ impl Gpu {
     /// into this one in the same task, before the browser clears the page's canvas.
     pub(super) fn show(&self, frame: wgpu::SurfaceTexture) -> Result<(), String> {
         self.queue.present(frame);
+        let (w, h) = (self.config.width as f64, self.config.height as f64);
         match (&self.target, &self.page.gl) {
             (Target::Copy(_, context), Some((page_canvas, ..))) => context
-                .draw_image(page_canvas, 0.0, 0.0)
+                .draw_image(page_canvas, 0.0, 0.0, w, h, 0.0, 0.0, w, h)
                 .map_err(|_| "copying the frame into the figure's canvas failed".to_string()),
             _ => Ok(()),
         }

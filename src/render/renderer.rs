@@ -735,7 +735,10 @@ impl Renderer {
             return Ok(());
         };
         let view = frame.texture.create_view(&Default::default());
-        let commands = self.encode(gpu, camera, &view, (gpu.config.width, gpu.config.height));
+        // WebGL2's page canvas may be larger than this figure: the figure is its top-left corner.
+        let target_size = (frame.texture.width(), frame.texture.height());
+        let size = (gpu.config.width, gpu.config.height);
+        let commands = self.encode(gpu, camera, &view, size, target_size);
         gpu.queue.submit([commands]);
         gpu.show(frame)?;
         self.shown = Some(key);
@@ -804,7 +807,7 @@ impl Renderer {
             view_formats: &[],
         });
         let view = texture.create_view(&Default::default());
-        let draw = self.encode(gpu, camera, &view, (width, height));
+        let draw = self.encode(gpu, camera, &view, (width, height), (width, height));
         let padded_row = (width * 4).div_ceil(256) * 256;
         let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),
@@ -891,14 +894,16 @@ impl Renderer {
         });
     }
 
+    /// Records the frame into the top-left `size` of `target`, which is `target_size`.
     fn encode(
         &mut self,
         gpu: &Gpu,
         camera: &OrbitCamera,
         target: &wgpu::TextureView,
         size: (u32, u32),
+        target_size: (u32, u32),
     ) -> wgpu::CommandBuffer {
-        self.ensure_targets(gpu, size);
+        self.ensure_targets(gpu, target_size);
         let aspect = size.0 as f32 / size.1.max(1) as f32;
         let globals = Globals {
             view: camera.view().to_cols_array(),
@@ -1018,6 +1023,9 @@ impl Renderer {
                 multiview_mask: None,
             });
             pass.set_bind_group(0, &self.globals_group, &[]);
+            if size != target_size {
+                pass.set_viewport(0.0, 0.0, size.0 as f32, size.1 as f32, 0.0, 1.0);
+            }
             self.draw_scene(&mut pass, true);
             if let Some((_, _, _, [x, y, side, border])) = inset {
                 // The border's square, then the fill's inside it, then the frame again with the
@@ -1037,8 +1045,7 @@ impl Renderer {
                 self.draw_scene(&mut pass, false);
                 // The whole target again: WebGL2 resolves the multisampled colour with a blit
                 // that the scissor rectangle would clip to the inset.
-                pass.set_viewport(0.0, 0.0, size.0 as f32, size.1 as f32, 0.0, 1.0);
-                pass.set_scissor_rect(0, 0, size.0, size.1);
+                pass.set_scissor_rect(0, 0, target_size.0, target_size.1);
             }
         }
         self.gpu_points.clear();
