@@ -1,5 +1,14 @@
-//! Surface, adapter and device for one HTML canvas.
+//! The page's adapter and device, shared by every figure, and each canvas's surface on it.
+//!
+//! WebGPU draws each figure into its own canvas (one canvas context each, on the one device).
+//! WebGL2 cannot: a WebGL2 context draws into its own canvas only. There the device is the context
+//! of one hidden canvas, which draws each figure into its top-left corner, and each figure's
+//! canvas has a `'2d'` context into which that corner is copied after every frame.
 
+use std::any::{Any, TypeId};
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
 /// Which graphics API to ask the browser for (`?backend=` in a lesson's URL).
@@ -29,11 +38,67 @@ impl BackendChoice {
     }
 }
 
-/// The GPU objects of one canvas.
+/// The page's GPU: one instance, adapter, device and queue shared by every figure of the page
+/// (Chromium keeps at most 16 WebGL contexts a page, and each device costs start-up time and
+/// memory), and the pipelines compiled for it (see [`Gpu::cached`]).
+struct PageGpu {
+    instance: wgpu::Instance,
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    /// The surface settings every canvas starts from (format, usage, alpha).
+    config: wgpu::SurfaceConfiguration,
+    backend_name: &'static str,
+    adapter_name: String,
+    encode_srgb_in_shader: bool,
+    compute: bool,
+    /// WebGL2: the hidden canvas whose context draws every figure (a WebGL2 context draws into
+    /// its own canvas only), its surface, and the size that surface is configured at.
+    gl: Option<(HtmlCanvasElement, wgpu::Surface<'static>, Cell<(u32, u32)>)>,
+    /// Pipelines and layouts, one entry per type (see [`Gpu::cached`]).
+    cache: RefCell<Vec<(TypeId, wgpu::TextureFormat, Rc<dyn Any>)>>,
+}
+
+/// The page's GPU for a backend choice: being created (`None`) or ready.
+type PageSlot = (BackendChoice, Option<Rc<PageGpu>>);
+
+thread_local! {
+    static PAGE_GPUS: RefCell<Vec<PageSlot>> = const { RefCell::new(Vec::new()) };
+}
+
+#[wasm_bindgen]
+extern "C" {
+    /// A figure's canvas's `'2d'` context (WebGL2: the page's canvas is copied into it).
+    type Context2d;
+    /// Copies the top-left `width × height` of `image` to the top-left of the context's canvas.
+    #[wasm_bindgen(method, catch, js_name = drawImage)]
+    #[allow(clippy::too_many_arguments)]
+    fn draw_image(
+        this: &Context2d,
+        image: &HtmlCanvasElement,
+        sx: f64,
+        sy: f64,
+        width: f64,
+        height: f64,
+        dx: f64,
+        dy: f64,
+        dw: f64,
+        dh: f64,
+    ) -> Result<(), JsValue>;
+}
+
+/// Where a figure's frames go.
+enum Target {
+    /// WebGPU: the canvas's own surface on the page's device.
+    Surface(wgpu::Surface<'static>),
+    /// WebGL2: the canvas and its `'2d'` context, into which the page's canvas is copied.
+    Copy(HtmlCanvasElement, Context2d),
+}
+
+/// The GPU objects of one canvas: the page's device and queue, and the canvas's surface.
 pub struct Gpu {
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
-    pub surface: wgpu::Surface<'static>,
+    /// The canvas's surface settings; `width` and `height` are its drawing buffer's size.
     pub config: wgpu::SurfaceConfiguration,
     /// "WebGPU" or "WebGL2", for the page to display.
     pub backend_name: &'static str,
@@ -43,13 +108,43 @@ pub struct Gpu {
     pub encode_srgb_in_shader: bool,
     /// Compute shaders and storage buffers are on (WebGPU only; see `compute.rs`).
     pub compute: bool,
+    target: Target,
+    page: Rc<PageGpu>,
 }
 
-impl Gpu {
-    /// Creates the context. The error says which backend was missing and what to try.
-    pub async fn new(canvas: HtmlCanvasElement, choice: BackendChoice) -> Result<Self, String> {
-        let width = canvas.width().max(1);
-        let height = canvas.height().max(1);
+impl PageGpu {
+    /// The page's GPU for `choice`, made by the first canvas that asks; a canvas that asks while
+    /// it is being made waits for it. A failure is not kept: the next canvas tries again.
+    async fn get(choice: BackendChoice) -> Result<Rc<Self>, String> {
+        loop {
+            let slot =
+                PAGE_GPUS.with_borrow_mut(|slots| match slots.iter().find(|(c, _)| *c == choice) {
+                    Some((_, page)) => Some(page.clone()),
+                    None => {
+                        slots.push((choice, None));
+                        None
+                    }
+                });
+            match slot {
+                Some(Some(page)) => return Ok(page),
+                Some(None) => super::renderer::sleep_ms(2).await,
+                None => break,
+            }
+        }
+        let made = Self::new(choice).await.map(Rc::new);
+        PAGE_GPUS.with_borrow_mut(|slots| {
+            slots.retain(|(c, _)| *c != choice);
+            if let Ok(page) = &made {
+                slots.push((choice, Some(page.clone())));
+            }
+        });
+        made
+    }
+
+    /// Creates the instance, adapter and device on a hidden canvas (WebGL2 needs a canvas's
+    /// context to find an adapter; on WebGL2 that canvas draws every figure). The error says
+    /// which backend was missing and what to try.
+    async fn new(choice: BackendChoice) -> Result<Self, String> {
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
         desc.backends = match choice {
             BackendChoice::Auto => wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL,
@@ -68,9 +163,13 @@ impl Gpu {
             BackendChoice::WebGpu => "WebGPU was requested (?backend=webgpu) but this browser offers no WebGPU adapter",
             BackendChoice::WebGl2 => "WebGL2 was requested (?backend=webgl2) but this browser cannot create a WebGL2 context",
         };
-        let surface = instance
-            .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
-            .map_err(|e| format!("{missing} ({e})."))?;
+        let canvas: HtmlCanvasElement = web_sys::window()
+            .and_then(|w| w.document())
+            .and_then(|d| d.create_element("canvas").ok())
+            .and_then(|c| c.dyn_into().ok())
+            .ok_or("no document to create a canvas in")?;
+        let surface =
+            create_surface(&instance, canvas.clone()).map_err(|e| format!("{missing} ({e})."))?;
         let adapter = instance
             .request_adapter(&wgpu::RequestAdapterOptions {
                 power_preference: wgpu::PowerPreference::HighPerformance,
@@ -104,11 +203,9 @@ impl Gpu {
             })
             .await
             .map_err(|e| format!("The {backend_name} adapter refused to create a device: {e}"))?;
-        let mut config = surface
-            .get_default_config(&adapter, width, height)
-            .ok_or_else(|| {
-                format!("The {backend_name} surface is not supported by its adapter.")
-            })?;
+        let mut config = surface.get_default_config(&adapter, 1, 1).ok_or_else(|| {
+            format!("The {backend_name} surface is not supported by its adapter.")
+        })?;
         // Prefer a plain 8-bit format on both backends, so pixels agree; encode sRGB ourselves.
         let formats = surface.get_capabilities(&adapter).formats;
         let plain = formats.iter().copied().find(|f| {
@@ -118,20 +215,61 @@ impl Gpu {
             )
         });
         config.format = plain.unwrap_or(config.format);
-        let encode_srgb_in_shader = !config.format.is_srgb();
         config.usage = wgpu::TextureUsages::RENDER_ATTACHMENT;
         config.alpha_mode = wgpu::CompositeAlphaMode::Auto;
         config.view_formats = vec![];
-        surface.configure(&device, &config);
+        let gl = (info.backend == wgpu::Backend::Gl).then(|| {
+            configure(&surface, &device, &config);
+            (canvas, surface, Cell::new((1, 1)))
+        });
         Ok(Self {
+            instance,
             device,
             queue,
-            surface,
+            encode_srgb_in_shader: !config.format.is_srgb(),
             config,
             backend_name,
             adapter_name: info.name,
-            encode_srgb_in_shader,
             compute,
+            gl,
+            cache: RefCell::new(Vec::new()),
+        })
+    }
+}
+
+impl Gpu {
+    /// The GPU objects of `canvas` on the page's device (made by the first canvas). The error
+    /// says which backend was missing and what to try.
+    pub async fn new(canvas: HtmlCanvasElement, choice: BackendChoice) -> Result<Self, String> {
+        let page = PageGpu::get(choice).await?;
+        let mut config = page.config.clone();
+        config.width = canvas.width().max(1);
+        config.height = canvas.height().max(1);
+        let target = if page.gl.is_some() {
+            let context = canvas
+                .get_context("2d")
+                .ok()
+                .flatten()
+                .ok_or("the figure's canvas has no 2d context (it has another kind already)")?;
+            canvas.set_width(config.width);
+            canvas.set_height(config.height);
+            Target::Copy(canvas, context.unchecked_into())
+        } else {
+            let surface = create_surface(&page.instance, canvas)
+                .map_err(|e| format!("The {} canvas: {e}.", page.backend_name))?;
+            configure(&surface, &page.device, &config);
+            Target::Surface(surface)
+        };
+        Ok(Self {
+            device: page.device.clone(),
+            queue: page.queue.clone(),
+            config,
+            backend_name: page.backend_name,
+            adapter_name: page.adapter_name.clone(),
+            encode_srgb_in_shader: page.encode_srgb_in_shader,
+            compute: page.compute,
+            target,
+            page,
         })
     }
 
@@ -143,7 +281,91 @@ impl Gpu {
         if (width, height) != (self.config.width, self.config.height) {
             self.config.width = width;
             self.config.height = height;
-            self.surface.configure(&self.device, &self.config);
+            match &self.target {
+                Target::Surface(surface) => configure(surface, &self.device, &self.config),
+                Target::Copy(canvas, _) => {
+                    canvas.set_width(width);
+                    canvas.set_height(height);
+                }
+            }
         }
     }
+
+    /// The texture to draw the canvas's next frame into, `None` for a skipped frame. On WebGL2
+    /// it is the page canvas's, which only grows: resizing it to each figure of another size
+    /// would reallocate it each time (about 3 ms on SwiftShader), so a smaller figure draws into
+    /// its top-left corner (and its renderer's multisampled targets have the page canvas's size).
+    pub(super) fn next_frame(&self) -> Option<wgpu::SurfaceTexture> {
+        let mut config = self.config.clone();
+        let surface = match &self.target {
+            Target::Surface(surface) => surface,
+            Target::Copy(..) => {
+                let (_, surface, size) = self.page.gl.as_ref()?;
+                let (w, h) = size.get();
+                (config.width, config.height) = (w.max(config.width), h.max(config.height));
+                if (config.width, config.height) != (w, h) {
+                    configure(surface, &self.device, &config);
+                    size.set((config.width, config.height));
+                }
+                surface
+            }
+        };
+        match surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(f)
+            | wgpu::CurrentSurfaceTexture::Suboptimal(f) => Some(f),
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                configure(surface, &self.device, &config);
+                None
+            }
+            // Timeout, occluded: draw the next one.
+            _ => None,
+        }
+    }
+
+    /// Shows `frame` (drawn and submitted) in the canvas: on WebGL2, copies the page's canvas
+    /// into this one in the same task, before the browser clears the page's canvas.
+    pub(super) fn show(&self, frame: wgpu::SurfaceTexture) -> Result<(), String> {
+        self.queue.present(frame);
+        let (w, h) = (self.config.width as f64, self.config.height as f64);
+        match (&self.target, &self.page.gl) {
+            (Target::Copy(_, context), Some((page_canvas, ..))) => context
+                .draw_image(page_canvas, 0.0, 0.0, w, h, 0.0, 0.0, w, h)
+                .map_err(|_| "copying the frame into the figure's canvas failed".to_string()),
+            _ => Ok(()),
+        }
+    }
+
+    /// The page's one `T` (pipelines and their layouts) for this canvas's format, made by
+    /// `make` the first time: the second figure of a page compiles no shader.
+    pub(super) fn cached<T: Clone + 'static>(&self, make: impl FnOnce() -> T) -> T {
+        let key = (TypeId::of::<T>(), self.config.format);
+        let found = self
+            .page
+            .cache
+            .borrow()
+            .iter()
+            .find_map(|(t, f, v)| ((*t, *f) == key).then(|| v.downcast_ref::<T>().cloned()));
+        if let Some(Some(value)) = found {
+            return value;
+        }
+        let value = make();
+        let boxed: Rc<dyn Any> = Rc::new(value.clone());
+        self.page.cache.borrow_mut().push((key.0, key.1, boxed));
+        value
+    }
+}
+
+// `create_surface` and `configure`, each called from one place: the crate is optimised for speed,
+// and each call site would otherwise get its own inlined copy of wgpu's code for both backends.
+#[inline(never)]
+fn create_surface(
+    instance: &wgpu::Instance,
+    canvas: HtmlCanvasElement,
+) -> Result<wgpu::Surface<'static>, wgpu::CreateSurfaceError> {
+    instance.create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+}
+
+#[inline(never)]
+fn configure(surface: &wgpu::Surface, device: &wgpu::Device, config: &wgpu::SurfaceConfiguration) {
+    surface.configure(device, config);
 }

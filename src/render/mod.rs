@@ -1,4 +1,5 @@
-//! The renderer (wasm only): one GPU context per canvas, WebGPU first, WebGL2 otherwise.
+//! The renderer (wasm only): one GPU device per page, shared by its canvases, WebGPU first,
+//! WebGL2 otherwise.
 //!
 //! Everything here is shared by all lessons: a lesson fills a [`Frame`] (the native draw list of
 //! `crate::draw`) (meshes with model

@@ -54,7 +54,17 @@ pub(super) fn scene_pipeline_with(
     depth_write: bool,
 ) -> wgpu::RenderPipeline {
     let compare = wgpu::CompareFunction::LessEqual;
-    scene_pipeline_depth(device, format, label, layout, module, buffers, primitive, depth_write, compare)
+    scene_pipeline_depth(
+        device,
+        format,
+        label,
+        layout,
+        module,
+        buffers,
+        primitive,
+        depth_write,
+        compare,
+    )
 }
 
 /// [`scene_pipeline_with`], choosing the depth test too (the inset's background passes it
@@ -269,10 +279,22 @@ pub struct Renderer {
     canvas_frames: u64,
 }
 
-impl Renderer {
-    pub fn new(gpu: &Gpu) -> Self {
-        let device = &gpu.device;
-        let format = gpu.config.format;
+/// The renderer's pipelines and bind group layouts: made once per page and format, shared by
+/// every figure (see `Gpu::cached`).
+#[derive(Clone)]
+struct Pipelines {
+    globals_layout: wgpu::BindGroupLayout,
+    object_layout: wgpu::BindGroupLayout,
+    mesh: wgpu::RenderPipeline,
+    line: wgpu::RenderPipeline,
+    point: wgpu::RenderPipeline,
+    stroke: wgpu::RenderPipeline,
+    marker: wgpu::RenderPipeline,
+    inset: wgpu::RenderPipeline,
+}
+
+impl Pipelines {
+    fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
         let uniform_entry = |dynamic: bool, size: u64| wgpu::BindGroupLayoutEntry {
             binding: 0,
             visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
@@ -294,34 +316,6 @@ impl Renderer {
                 std::mem::size_of::<ObjectUniform>() as u64,
             )],
         });
-        // A camera's uniform buffer and its bind group: the main view's, and the inset's.
-        let globals_with_group = |label: &str| {
-            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: std::mem::size_of::<Globals>() as u64,
-                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(label),
-                layout: &globals_layout,
-                entries: &[wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: buffer.as_entire_binding(),
-                }],
-            });
-            (buffer, group)
-        };
-        let (globals, globals_group) = globals_with_group("globals");
-        let (inset_globals, inset_globals_group) = globals_with_group("inset globals");
-        let objects = StreamBuffer::new(
-            device,
-            "objects",
-            wgpu::BufferUsages::UNIFORM,
-            OBJECT_STRIDE * 64,
-        );
-        let object_group = Self::object_group(device, &object_layout, &objects.buffer);
-
         let shader = |label: &str, source: &str| {
             device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some(label),
@@ -462,12 +456,63 @@ impl Renderer {
             true,
             wgpu::CompareFunction::Always,
         );
-        let textured = super::texture::Textured::new(
+        Self {
+            globals_layout,
+            object_layout,
+            mesh: mesh_pipeline,
+            line: line_pipeline,
+            point: point_pipeline,
+            stroke: stroke_pipeline,
+            marker: marker_pipeline,
+            inset: inset_pipeline,
+        }
+    }
+}
+
+impl Renderer {
+    pub fn new(gpu: &Gpu) -> Self {
+        let device = &gpu.device;
+        let format = gpu.config.format;
+        let Pipelines {
+            globals_layout,
+            object_layout,
+            mesh: mesh_pipeline,
+            line: line_pipeline,
+            point: point_pipeline,
+            stroke: stroke_pipeline,
+            marker: marker_pipeline,
+            inset: inset_pipeline,
+        } = gpu.cached(|| Pipelines::new(device, format));
+        // A camera's uniform buffer and its bind group: the main view's, and the inset's.
+        let globals_with_group = |label: &str| {
+            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: std::mem::size_of::<Globals>() as u64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(label),
+                layout: &globals_layout,
+                entries: &[wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: buffer.as_entire_binding(),
+                }],
+            });
+            (buffer, group)
+        };
+        let (globals, globals_group) = globals_with_group("globals");
+        let (inset_globals, inset_globals_group) = globals_with_group("inset globals");
+        let objects = StreamBuffer::new(
             device,
-            format,
-            &globals,
-            std::mem::size_of::<Globals>() as u64,
+            "objects",
+            wgpu::BufferUsages::UNIFORM,
+            OBJECT_STRIDE * 64,
         );
+        let object_group = Self::object_group(device, &object_layout, &objects.buffer);
+
+        let textured =
+            super::texture::Textured::new(gpu, &globals, std::mem::size_of::<Globals>() as u64);
         let mut renderer = Self {
             textured,
             mesh_pipeline,
@@ -683,27 +728,19 @@ impl Renderer {
             return Ok(());
         }
         self.shown = None;
-        let frame = match gpu.surface.get_current_texture() {
-            wgpu::CurrentSurfaceTexture::Success(f)
-            | wgpu::CurrentSurfaceTexture::Suboptimal(f) => f,
-            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
-                gpu.surface.configure(&gpu.device, &gpu.config);
-                self.frame.clear();
-                self.gpu_points.clear();
-                self.gpu_sprites.clear();
-                return Ok(());
-            }
-            _ => {
-                self.frame.clear();
-                self.gpu_points.clear();
-                self.gpu_sprites.clear();
-                return Ok(()); // skipped frame (timeout, occluded): draw the next one
-            }
+        let Some(frame) = gpu.next_frame() else {
+            self.frame.clear();
+            self.gpu_points.clear();
+            self.gpu_sprites.clear();
+            return Ok(());
         };
         let view = frame.texture.create_view(&Default::default());
-        let commands = self.encode(gpu, camera, &view, (gpu.config.width, gpu.config.height));
+        // WebGL2's page canvas may be larger than this figure: the figure is its top-left corner.
+        let target_size = (frame.texture.width(), frame.texture.height());
+        let size = (gpu.config.width, gpu.config.height);
+        let commands = self.encode(gpu, camera, &view, size, target_size);
         gpu.queue.submit([commands]);
-        gpu.queue.present(frame);
+        gpu.show(frame)?;
         self.shown = Some(key);
         self.canvas_frames += 1;
         Ok(())
@@ -770,7 +807,7 @@ impl Renderer {
             view_formats: &[],
         });
         let view = texture.create_view(&Default::default());
-        let draw = self.encode(gpu, camera, &view, (width, height));
+        let draw = self.encode(gpu, camera, &view, (width, height), (width, height));
         let padded_row = (width * 4).div_ceil(256) * 256;
         let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),
@@ -857,14 +894,16 @@ impl Renderer {
         });
     }
 
+    /// Records the frame into the top-left `size` of `target`, which is `target_size`.
     fn encode(
         &mut self,
         gpu: &Gpu,
         camera: &OrbitCamera,
         target: &wgpu::TextureView,
         size: (u32, u32),
+        target_size: (u32, u32),
     ) -> wgpu::CommandBuffer {
-        self.ensure_targets(gpu, size);
+        self.ensure_targets(gpu, target_size);
         let aspect = size.0 as f32 / size.1.max(1) as f32;
         let globals = Globals {
             view: camera.view().to_cols_array(),
@@ -984,6 +1023,9 @@ impl Renderer {
                 multiview_mask: None,
             });
             pass.set_bind_group(0, &self.globals_group, &[]);
+            if size != target_size {
+                pass.set_viewport(0.0, 0.0, size.0 as f32, size.1 as f32, 0.0, 1.0);
+            }
             self.draw_scene(&mut pass, true);
             if let Some((_, _, _, [x, y, side, border])) = inset {
                 // The border's square, then the fill's inside it, then the frame again with the
@@ -1003,8 +1045,7 @@ impl Renderer {
                 self.draw_scene(&mut pass, false);
                 // The whole target again: WebGL2 resolves the multisampled colour with a blit
                 // that the scissor rectangle would clip to the inset.
-                pass.set_viewport(0.0, 0.0, size.0 as f32, size.1 as f32, 0.0, 1.0);
-                pass.set_scissor_rect(0, 0, size.0, size.1);
+                pass.set_scissor_rect(0, 0, target_size.0, target_size.1);
             }
         }
         self.gpu_points.clear();

@@ -70,6 +70,10 @@ pub struct SkinPass {
     pub(super) revision: u64,
 }
 
+/// The skinning pipeline's bind group layout and pipeline.
+#[derive(Clone)]
+struct SkinPipeline(wgpu::BindGroupLayout, wgpu::RenderPipeline);
+
 impl SkinPass {
     pub(super) fn new(
         gpu: &Gpu,
@@ -77,69 +81,73 @@ impl SkinPass {
         format: wgpu::TextureFormat,
     ) -> Self {
         let device = &gpu.device;
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("skin"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: true,
-                    min_binding_size: wgpu::BufferSize::new(UNIFORM_BYTES),
+        // The pipeline and its layout: once per page and format (see `Gpu::cached`).
+        let SkinPipeline(layout, pipeline) = gpu.cached(|| {
+            let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some("skin"),
+                entries: &[wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: true,
+                        min_binding_size: wgpu::BufferSize::new(UNIFORM_BYTES),
+                    },
+                    count: None,
+                }],
+            });
+            let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some("skin"),
+                source: wgpu::ShaderSource::Wgsl(
+                    format!(
+                        "{}\n{}\n{}",
+                        super::shader_source!("common.wgsl"),
+                        super::shader_source!("skin_common.wgsl"),
+                        super::shader_source!("skin.wgsl")
+                    )
+                    .into(),
+                ),
+            });
+            let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some("skin"),
+                bind_group_layouts: &[Some(globals_layout), Some(&layout)],
+                immediate_size: 0,
+            });
+            let rest_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+            let color_attributes = wgpu::vertex_attr_array![2 => Float32x4];
+            let influence_attributes = wgpu::vertex_attr_array![3 => Uint16x4, 4 => Float32x4];
+            let buffers = [
+                Some(wgpu::VertexBufferLayout {
+                    array_stride: std::mem::size_of::<RestVertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &rest_attributes,
+                }),
+                Some(wgpu::VertexBufferLayout {
+                    array_stride: 16,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &color_attributes,
+                }),
+                Some(wgpu::VertexBufferLayout {
+                    array_stride: std::mem::size_of::<Influence>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &influence_attributes,
+                }),
+            ];
+            let pipeline = scene_pipeline(
+                device,
+                format,
+                "skin",
+                &pipeline_layout,
+                &module,
+                &buffers,
+                wgpu::PrimitiveState {
+                    topology: wgpu::PrimitiveTopology::TriangleList,
+                    cull_mode: Some(wgpu::Face::Back),
+                    ..Default::default()
                 },
-                count: None,
-            }],
+            );
+            SkinPipeline(layout, pipeline)
         });
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("skin"),
-            source: wgpu::ShaderSource::Wgsl(
-                format!(
-                    "{}\n{}\n{}",
-                    super::shader_source!("common.wgsl"),
-                    super::shader_source!("skin_common.wgsl"),
-                    super::shader_source!("skin.wgsl")
-                )
-                .into(),
-            ),
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("skin"),
-            bind_group_layouts: &[Some(globals_layout), Some(&layout)],
-            immediate_size: 0,
-        });
-        let rest_attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
-        let color_attributes = wgpu::vertex_attr_array![2 => Float32x4];
-        let influence_attributes = wgpu::vertex_attr_array![3 => Uint16x4, 4 => Float32x4];
-        let buffers = [
-            Some(wgpu::VertexBufferLayout {
-                array_stride: std::mem::size_of::<RestVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &rest_attributes,
-            }),
-            Some(wgpu::VertexBufferLayout {
-                array_stride: 16,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &color_attributes,
-            }),
-            Some(wgpu::VertexBufferLayout {
-                array_stride: std::mem::size_of::<Influence>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &influence_attributes,
-            }),
-        ];
-        let pipeline = scene_pipeline(
-            device,
-            format,
-            "skin",
-            &pipeline_layout,
-            &module,
-            &buffers,
-            wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleList,
-                cull_mode: Some(wgpu::Face::Back),
-                ..Default::default()
-            },
-        );
         let capacity = STRIDE * 2;
         let uniforms = Self::uniform_buffer(device, capacity);
         let group = Self::group(device, &layout, &uniforms);

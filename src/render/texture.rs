@@ -127,27 +127,26 @@ fn uniform_entry(
     }
 }
 
-impl Textured {
-    /// `globals` is the renderer's camera buffer (bind group 0 of every pipeline); `globals_size`
-    /// its size.
-    pub(super) fn new(
-        device: &wgpu::Device,
-        format: wgpu::TextureFormat,
-        globals: &wgpu::Buffer,
-        globals_size: u64,
-    ) -> Self {
+/// The textured pipelines, their layouts and the sampler: made once per page and format (see
+/// `Gpu::cached`).
+#[derive(Clone)]
+struct TexturedPipelines {
+    globals_layout: wgpu::BindGroupLayout,
+    quad_layout: wgpu::BindGroupLayout,
+    texture_layout: wgpu::BindGroupLayout,
+    noise_layout: wgpu::BindGroupLayout,
+    sampler: wgpu::Sampler,
+    quad: wgpu::RenderPipeline,
+    sprite: wgpu::RenderPipeline,
+    noise: wgpu::RenderPipeline,
+}
+
+impl TexturedPipelines {
+    fn new(device: &wgpu::Device, format: wgpu::TextureFormat, globals_size: u64) -> Self {
         let vf = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("textured globals"),
             entries: &[uniform_entry(0, false, globals_size, vf)],
-        });
-        let globals_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("textured globals"),
-            layout: &globals_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: globals.as_entire_binding(),
-            }],
         });
         let quad_size = std::mem::size_of::<QuadUniform>() as u64;
         let quad_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -277,11 +276,48 @@ impl Textured {
             multiview_mask: None,
             cache: None,
         });
+        Self {
+            globals_layout,
+            quad_layout,
+            texture_layout,
+            noise_layout,
+            sampler,
+            quad: quad_pipeline,
+            sprite: sprite_pipeline,
+            noise: noise_pipeline,
+        }
+    }
+}
+
+impl Textured {
+    /// `globals` is the renderer's camera buffer (bind group 0 of every pipeline); `globals_size`
+    /// its size.
+    pub(super) fn new(gpu: &Gpu, globals: &wgpu::Buffer, globals_size: u64) -> Self {
+        let device = &gpu.device;
+        let format = gpu.config.format;
+        let TexturedPipelines {
+            globals_layout,
+            quad_layout,
+            texture_layout,
+            noise_layout,
+            sampler,
+            quad: quad_pipeline,
+            sprite: sprite_pipeline,
+            noise: noise_pipeline,
+        } = gpu.cached(|| TexturedPipelines::new(device, format, globals_size));
+        let globals_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("textured globals"),
+            layout: &globals_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: globals.as_entire_binding(),
+            }],
+        });
         let quads = Growable::new(device, wgpu::BufferUsages::UNIFORM, QUAD_STRIDE * 16);
         let quad_group = Self::quad_group(device, &quad_layout, &quads.buffer);
         let noise_uniform = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("noise"),
-            size: noise_size,
+            size: std::mem::size_of::<NoiseUniform>() as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
