@@ -25,9 +25,10 @@
 //! | `14-rigid-bodies`: rigid bodies | [`rigid_body`] (inertia tensors, orientation and angular-velocity steps, impulses, contacts by sequential impulses) | [`figures::rigid_body`] (the throw, quaternion drift, the tennis racket, the impulse at a contact, the stack and dominoes) | `web::rigid_body` (bench: `web::bench_rigid_body`) | [`exercises::rigid_body`] (14.x) |
 //!
 //! Coming (issue: fluids): [`fluid`], SPH and position-based fluids in 2D and 3D on the boids'
-//! grid and the particles' collisions, with the logic of its first two figures in
-//! [`figures::fluid`] (the kernels' plots, the density of a dragged particle); its lesson page,
-//! other figures, bindings and exercises (15.x) are not written yet.
+//! grid and the particles' collisions, with the logic of three of its figures in
+//! [`figures::fluid`] (the kernels' plots, the density of a dragged particle, SPH beside PBF on
+//! one dam break); its lesson page, other figures, bindings and exercises (15.x) are not written
+//! yet.
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`texture`] (textured quads, sprites and atlases in the draw list),

@@ -92,3 +92,54 @@ fn a_rejected_probe_changes_nothing_and_the_note_says_the_density() {
     assert_eq!(frame.labels.len(), 1);
     assert!(!frame.keep_in_view.is_empty());
 }
+
+use inbetween::figures::fluid::{DamBreakFigure, DAM_FRAME_SEC};
+
+#[test]
+fn the_dam_break_replays_the_same_run_and_pbf_keeps_the_density_closer() {
+    let mut fig = DamBreakFigure::new();
+    fig.advance_to(1.5).unwrap();
+    let first = fig.fluids()[0].positions.clone();
+    let rows = fig.plot_rows().to_vec();
+    assert_eq!(rows.len(), (1.5 / DAM_FRAME_SEC).round() as usize);
+    // Back in time and forward again: the same state, bit for bit.
+    fig.advance_to(0.2).unwrap();
+    fig.advance_to(1.5).unwrap();
+    assert_eq!(fig.fluids()[0].positions, first);
+    assert_eq!(fig.plot_rows(), &rows[..]);
+    // Neither explodes at the defaults; over the fall and the splash PBF's largest compression
+    // stays under SPH's (its constraints hold the density, SPH's pressure only pushes back).
+    assert!(fig.fluids().iter().all(|f| f.exploded().is_none()));
+    let peak = |c: usize| rows.iter().map(|r| r[c]).fold(0.0f32, f32::max);
+    assert!(peak(2) < peak(1), "PBF {} vs SPH {}", peak(2), peak(1));
+    let mut frame = Frame::default();
+    let note = fig.draw(&mut frame);
+    assert!(
+        note.starts_with("SPH: compressed at most") && note.contains("PBF: compressed"),
+        "{note}"
+    );
+    assert_eq!(frame.labels.len(), 2);
+}
+
+#[test]
+fn sph_past_its_time_step_limit_stops_and_the_note_says_why() {
+    let mut fig = DamBreakFigure::new();
+    // A speed of sound of 20 m/s crosses 2.4 kernel radii in a 1/60 s step.
+    fig.set_sph(400.0, 1.0 / 60.0).unwrap();
+    fig.advance_to(2.0).unwrap();
+    assert!(fig.fluids()[0].exploded().is_some());
+    assert!(fig.fluids()[1].exploded().is_none());
+    let note = fig.draw(&mut Frame::default());
+    assert!(
+        note.starts_with("SPH stopped at t = ") && note.contains("lower the time step"),
+        "{note}"
+    );
+    // The plot's SPH curves end where it stopped (NaN), PBF's go on.
+    let last = fig.plot_rows().last().unwrap();
+    assert!(last[1].is_nan() && last[2].is_finite());
+    // Bad settings change nothing.
+    let before = fig.fluids()[0].params.clone();
+    assert!(fig.set_sph(f32::NAN, 0.001).is_err() && fig.set_sph(400.0, 0.0).is_err());
+    assert_eq!(fig.fluids()[0].params, before);
+    assert!(fig.advance_to(-1.0).is_err() && fig.advance_to(1e38).is_err());
+}

@@ -3,6 +3,8 @@
 //! - [`KernelsFigure`]: the four kernels of one support radius, as plot rows.
 //! - [`DensityFigure`]: a 2D pool at rest; the reader drags one particle and sees the neighbours
 //!   within `h`, each one's weight, and the density they add up to.
+//! - [`DamBreakFigure`]: SPH and PBF on the same 2D dam break side by side, SPH's stiffness and
+//!   time step the reader's (past its limit it stops, and says why).
 
 use super::{finite, format_number, palette, Frame};
 use crate::draw::{StrokeStyle, DOT_PX};
@@ -239,6 +241,152 @@ impl DensityFigure {
             format_number(h),
             format_number(rho / rho0),
             format_number(rho0)
+        )
+    }
+}
+
+/// The dam-break figure's particles per fluid, and its kernel radius in spacings.
+pub const DAM_PARTICLES: usize = 800;
+/// The figure's frame: the fluids are stepped to the timeline's time at their own steps.
+pub const DAM_FRAME_SEC: f32 = 1.0 / 60.0;
+/// The longest the timeline runs, seconds (the samples of the plots cover it).
+pub const DAM_DURATION_SEC: f32 = 6.0;
+
+/// SPH and PBF on the same 2D dam break, side by side: SPH at its small step (Tait, `k` the
+/// reader's stiffness), PBF at 1/240 s. The state at time `t` is the state after the steps up to
+/// `t` from the start, replayed when the time goes back or a setting changes; a sample per frame
+/// feeds the plots.
+#[derive(Clone, Debug)]
+pub struct DamBreakFigure {
+    start: [Fluid; 2],
+    fluids: [Fluid; 2],
+    /// Per frame: `[t, SPH's largest ρ/ρ₀ − 1, PBF's, SPH's kinetic energy, PBF's]`.
+    samples: Vec<[f32; 5]>,
+}
+
+impl Default for DamBreakFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl DamBreakFigure {
+    pub fn new() -> Self {
+        let make = |method| {
+            let mut params = FluidParams::default_2d(method);
+            params.h = DENSITY_H_SPACINGS * spacing_for(Dim::Two, Scene::DamBreak, DAM_PARTICLES);
+            Fluid::new(params, Scene::DamBreak, DAM_PARTICLES, 3).expect("valid defaults")
+        };
+        let start = [make(Method::Sph), make(Method::Pbf)];
+        Self {
+            fluids: start.clone(),
+            start,
+            samples: Vec::new(),
+        }
+    }
+
+    pub fn fluids(&self) -> &[Fluid; 2] {
+        &self.fluids
+    }
+
+    /// Sets SPH's stiffness `k` (10 to 10,000) and time step (1/4000 to 1/60 s) and starts over;
+    /// nothing changes on an error.
+    pub fn set_sph(&mut self, stiffness: f32, dt: f32) -> Result<(), String> {
+        let k = super::in_range("stiffness k", stiffness, 10.0, 10_000.0)?;
+        let dt = super::in_range("SPH time step (s)", dt, 1.0 / 4000.0, 1.0 / 60.0)?;
+        self.start[0].params.stiffness = k;
+        self.start[0].params.dt = dt;
+        self.reset();
+        Ok(())
+    }
+
+    /// Back to the start.
+    pub fn reset(&mut self) {
+        self.fluids = self.start.clone();
+        self.samples.clear();
+    }
+
+    /// Steps both fluids to `time_sec` (0 to [`DAM_DURATION_SEC`]), replaying from the start when
+    /// the time goes back; records a sample per frame passed.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        let t = super::in_range("time (s)", time_sec, 0.0, DAM_DURATION_SEC)?;
+        if t + 1e-6 < self.fluids[1].time {
+            self.reset();
+        }
+        while self.fluids[1].time + 0.5 * DAM_FRAME_SEC <= t {
+            let frame_end = self.fluids[1].time + DAM_FRAME_SEC;
+            for f in &mut self.fluids {
+                // An exploded fluid stops; its time stays where it stopped.
+                while f.exploded().is_none() && f.time + 0.5 * f.params.dt < frame_end {
+                    f.step();
+                }
+            }
+            if self.fluids[1].time + 0.5 * DAM_FRAME_SEC < frame_end {
+                // PBF cannot fall behind (it never explodes at its defaults); guard anyway.
+                break;
+            }
+            let [a, b] = [self.fluids[0].stats(), self.fluids[1].stats()];
+            let gone = |f: &Fluid, v: f32| if f.exploded().is_some() { f32::NAN } else { v };
+            self.samples.push([
+                frame_end,
+                gone(&self.fluids[0], a.density_error_max),
+                b.density_error_max,
+                gone(&self.fluids[0], a.kinetic),
+                b.kinetic,
+            ]);
+        }
+        Ok(())
+    }
+
+    /// The plots' rows so far.
+    pub fn plot_rows(&self) -> &[[f32; 5]] {
+        &self.samples
+    }
+
+    /// Both fluids side by side, particles coloured by density, and the note: each one's
+    /// largest compression and CFL number, or why SPH stopped.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        let size = crate::fluid::box_size(Dim::Two);
+        let titles = [("SPH", palette::BLUE), ("PBF", palette::ORANGE)];
+        frame.side_by_side(
+            Vec3::new(size.x + 0.3, 0.0, 0.0),
+            &titles,
+            size.y + 0.12,
+            |frame, k| {
+                let f = &self.fluids[k];
+                let offset = Vec3::new(-0.5 * size.x, 0.0, 0.0);
+                let rho0 = f.params.rest_density;
+                for (p, rho) in f.positions.iter().zip(&f.densities) {
+                    let color = super::noise::diverging_color((rho / rho0 - 1.0) / 0.5 * 0.6);
+                    frame.point(*p + offset, 0.4 * f.spacing, color.truncate());
+                }
+                let corners = [
+                    Vec3::new(0.0, size.y, 0.0),
+                    Vec3::ZERO,
+                    Vec3::new(size.x, 0.0, 0.0),
+                    Vec3::new(size.x, size.y, 0.0),
+                ]
+                .map(|c| c + offset);
+                frame.wide_polyline(&corners, palette::DARK, 2.0);
+                frame.keep_box_in_view(offset, offset + Vec3::new(size.x, size.y, 0.0));
+            },
+        );
+        let describe = |f: &Fluid, name: &str| match f.exploded() {
+            Some((t, why)) => format!("{name} stopped at t = {} s: {why}.", format_number(t)),
+            None => {
+                let s = f.stats();
+                format!(
+                    "{name}: compressed at most {:.1} %, CFL {} ({} steps a frame).",
+                    100.0 * s.density_error_max.max(0.0),
+                    format_number(s.cfl),
+                    (DAM_FRAME_SEC / f.params.dt).round()
+                )
+            }
+        };
+        format!(
+            "{} {}",
+            describe(&self.fluids[0], "SPH"),
+            describe(&self.fluids[1], "PBF")
         )
     }
 }
