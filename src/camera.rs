@@ -115,6 +115,14 @@ impl OrbitCamera {
     /// distance becomes the smallest that fits them all. Returns false, changing nothing, when
     /// there are no finite points or the canvas is too small for the padding.
     pub fn fit(&mut self, points: &[Vec3], size_px: Vec2, pad_px: f32) -> bool {
+        self.fit_offset(points, size_px, pad_px, 0.0)
+    }
+
+    /// [`OrbitCamera::fit`] into a part of the canvas `size_px` wide and as tall as the canvas
+    /// whose centre is `x_off` right of the canvas's (in units of the view's tangent at unit depth,
+    /// `x_off = Δpx / (height / 2) · tan(fov/2)`): a point at `a` along the view's right and
+    /// `depth` in front fits when `|a / depth − x_off| ≤ tan_x`.
+    fn fit_offset(&mut self, points: &[Vec3], size_px: Vec2, pad_px: f32, x_off: f32) -> bool {
         let points: Vec<Vec3> = points.iter().copied().filter(|p| p.is_finite()).collect();
         if points.is_empty() || !size_px.is_finite() || !pad_px.is_finite() {
             return false;
@@ -131,6 +139,9 @@ impl OrbitCamera {
         let up = back.cross(right);
         let tan_y = (0.5 * self.fov_y_rad).tan() * usable.y;
         let tan_x = (0.5 * self.fov_y_rad).tan() * size_px.x / size_px.y * usable.x;
+        if !(tan_x > x_off.abs()) {
+            return false;
+        }
         let (lo, hi) = points.iter().fold(
             (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
             |(lo, hi), p| (lo.min(*p), hi.max(*p)),
@@ -138,12 +149,17 @@ impl OrbitCamera {
         let mut target = 0.5 * (lo + hi);
         // The smallest distance from `target` that shows every point: a point at (x, y) in the
         // view plane and `z` towards the eye is seen at depth distance − z, and fits when
-        // |x| ≤ tan_x · depth and |y| ≤ tan_y · depth. The depth also stays past the near plane.
+        // |x − x_off · depth| ≤ tan_x · depth and |y| ≤ tan_y · depth, that is depth ≥
+        // x / (tan_x + x_off) and depth ≥ −x / (tan_x − x_off). The depth also stays past the
+        // near plane.
         let needed = |target: Vec3| {
             points.iter().fold(MIN_DISTANCE.max(self.near), |d, p| {
                 let v = *p - target;
                 let z = v.dot(back);
-                let fit = (v.dot(right).abs() / tan_x).max(v.dot(up).abs() / tan_y);
+                let x = v.dot(right);
+                let fit = (x / (tan_x + x_off))
+                    .max(-x / (tan_x - x_off))
+                    .max(v.dot(up).abs() / tan_y);
                 d.max(fit + z).max(2.0 * self.near + z)
             })
         };
@@ -158,8 +174,9 @@ impl OrbitCamera {
                 let (x, y) = (v.dot(right) / depth, v.dot(up) / depth);
                 (x_lo, x_hi, y_lo, y_hi) = (x_lo.min(x), x_hi.max(x), y_lo.min(y), y_hi.max(y));
             }
-            // Shift by the middle of the image, scaled back to the target's depth.
-            let shift = right * 0.5 * (x_lo + x_hi) + up * 0.5 * (y_lo + y_hi);
+            // Shift by the middle of the image (less where it should be), scaled back to the
+            // target's depth.
+            let shift = right * (0.5 * (x_lo + x_hi) - x_off) + up * 0.5 * (y_lo + y_hi);
             target += shift * distance;
         }
         let distance = needed(target);
@@ -169,6 +186,27 @@ impl OrbitCamera {
         self.target = target;
         self.distance = distance.min(self.far * 0.5);
         true
+    }
+}
+
+impl OrbitCamera {
+    /// As [`OrbitCamera::fit`], into the canvas's left part, `width_px` of its `size_px.x` (a
+    /// figure's inset takes the right), as tall as the canvas. False (nothing changed) when the
+    /// fit is impossible.
+    pub fn fit_left_of(
+        &mut self,
+        points: &[Vec3],
+        size_px: Vec2,
+        width_px: f32,
+        pad_px: f32,
+    ) -> bool {
+        if !(width_px > 0.0 && width_px <= size_px.x) {
+            return false;
+        }
+        // The part's centre is half the strip left of the canvas's.
+        let shift_px = -0.5 * (size_px.x - width_px);
+        let x_off = shift_px / (0.5 * size_px.y) * (0.5 * self.fov_y_rad).tan();
+        self.fit_offset(points, Vec2::new(width_px, size_px.y), pad_px, x_off)
     }
 }
 

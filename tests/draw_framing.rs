@@ -165,3 +165,33 @@ fn figures_that_declare_their_view_fit_at_both_sizes() {
         }
     }
 }
+
+#[test]
+fn a_figure_with_an_inset_fits_beside_it() {
+    use inbetween::draw::inset::inset_rect;
+    // A flock's box, seen from several orbits, on the canvases lesson 12 gives its flock figure
+    // at the two page sizes and at 1280 px: every point lands left of the inset's square (and
+    // inside the canvas), and the fit is tight against one of those edges.
+    let points = corners(Vec3::new(-2.0, 0.0, -1.5), Vec3::new(2.0, 2.0, 1.5));
+    for size in [Vec2::new(760.0, 420.0), Vec2::new(690.0, 420.0), Vec2::new(960.0, 420.0), Vec2::new(1600.0, 1000.0)] {
+        let left = inset_rect(size).min.x;
+        for (yaw, pitch) in [(0.5, 0.4), (1.2, 0.2), (-0.7, 0.8)] {
+            let mut camera = OrbitCamera { yaw_rad: yaw, pitch_rad: pitch, ..OrbitCamera::default() };
+            assert!(camera.fit_left_of(&points, size, left, FIT_PAD_PX));
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let mut slack = f32::MAX;
+            for p in &points {
+                let px = project_to_canvas(view_proj, size, *p).unwrap();
+                let margins = [px.x, px.y, left - px.x, size.y - px.y];
+                let least = margins.iter().copied().fold(f32::MAX, f32::min);
+                assert!(least >= FIT_PAD_PX - 0.5, "{p} at {px} on {size}, inset from x = {left}");
+                slack = slack.min(least - FIT_PAD_PX);
+            }
+            assert!(slack < 1.0, "{slack} px spare on {size}");
+        }
+        // An impossible part (no width) changes nothing.
+        let mut camera = OrbitCamera::default();
+        assert!(!camera.fit_left_of(&points, size, 0.0, FIT_PAD_PX));
+        assert_eq!(camera, OrbitCamera::default());
+    }
+}

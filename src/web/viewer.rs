@@ -172,8 +172,18 @@ impl Viewer {
         self.declares_view = !frame.keep_in_view.is_empty();
         if self.fitting && self.declares_view {
             let points: Vec<glam::Vec3> = frame.fit_points();
-            self.camera
-                .fit(&points, glam::Vec2::new(w, h), crate::camera::FIT_PAD_PX);
+            let size = glam::Vec2::new(w, h);
+            let pad = crate::camera::FIT_PAD_PX;
+            // With an inset, the figure fits beside it (left of its square), so the inset hides
+            // nothing the figure declared.
+            let beside = frame.inset.as_ref().map(|_| crate::draw::inset::inset_rect(size).min.x);
+            let fitted = match beside {
+                Some(left) => self.camera.fit_left_of(&points, size, left, pad),
+                None => false,
+            };
+            if !fitted {
+                self.camera.fit(&points, size, pad);
+            }
         }
         let view_proj = self.camera.projection(w / h) * self.camera.view();
         self.labels = crate::draw::project_labels(&self.renderer.frame.labels, view_proj, w, h);
