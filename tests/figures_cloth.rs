@@ -716,6 +716,9 @@ fn the_substeps_plot_measures_what_the_flag_needs_and_grows_with_the_root_of_k()
         .map(|r| [r[0], r[1], r[2], r[3]])
         .collect();
     assert_eq!(rows.len(), SUBSTEP_PLOT_K.len());
+    // The page lists the six counts: "7, 9, 13, 18, 23 and 27 from 250 to 5,000 N/m".
+    let counts: Vec<f32> = rows.iter().map(|r| r[1]).collect();
+    assert_eq!(counts, [7.0, 9.0, 13.0, 18.0, 23.0, 27.0]);
     for [k, measured, fit, conservative] in &rows {
         // The page's numbers: 9 substeps at 500 N/m, 18 at 2,000 (the Try this above the plot).
         if *k == 500.0 {
