@@ -56,7 +56,16 @@ struct PageGpu {
     gl: Option<(HtmlCanvasElement, wgpu::Surface<'static>, Cell<(u32, u32)>)>,
     /// Pipelines and layouts, one entry per type (see [`Gpu::cached`]).
     cache: RefCell<Vec<(TypeId, wgpu::TextureFormat, Rc<dyn Any>)>>,
+    /// Multisampled colour and depth targets by size and format, most recently used last (see
+    /// [`Gpu::shared_targets`]).
+    targets: RefCell<Vec<SharedTargets>>,
 }
+
+/// A size, a colour format, and the multisampled colour and depth views of that size.
+type SharedTargets = ((u32, u32), wgpu::TextureFormat, [wgpu::TextureView; 2]);
+
+/// The most target sets a page keeps for figures to share (a figure keeps the set it uses).
+const MAX_SHARED_TARGETS: usize = 4;
 
 /// The page's GPU for a backend choice: being created (`None`) or ready.
 type PageSlot = (BackendChoice, Option<Rc<PageGpu>>);
@@ -233,6 +242,7 @@ impl PageGpu {
             compute,
             gl,
             cache: RefCell::new(Vec::new()),
+            targets: RefCell::new(Vec::new()),
         })
     }
 }
@@ -333,6 +343,31 @@ impl Gpu {
                 .map_err(|_| "copying the frame into the figure's canvas failed".to_string()),
             _ => Ok(()),
         }
+    }
+
+    /// The page's multisampled colour and depth targets of `size` and `format`, made by `make`
+    /// when the page has none: every pass clears them first and discards them after resolving,
+    /// so figures drawn one after another can share them (on WebGL2 every figure draws at the
+    /// hidden canvas's size, so a page holds one set instead of one per figure).
+    pub(super) fn shared_targets(
+        &self,
+        size: (u32, u32),
+        format: wgpu::TextureFormat,
+        make: impl FnOnce() -> [wgpu::TextureView; 2],
+    ) -> [wgpu::TextureView; 2] {
+        let mut list = self.page.targets.borrow_mut();
+        if let Some(i) = list.iter().position(|(s, f, _)| (*s, *f) == (size, format)) {
+            let entry = list.remove(i);
+            let views = entry.2.clone();
+            list.push(entry);
+            return views;
+        }
+        let views = make();
+        list.push((size, format, views.clone()));
+        if list.len() > MAX_SHARED_TARGETS {
+            list.remove(0);
+        }
+        views
     }
 
     /// The page's one `T` (pipelines and their layouts) for this canvas's format, made by

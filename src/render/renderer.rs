@@ -887,11 +887,10 @@ impl Renderer {
                 })
                 .create_view(&Default::default())
         };
-        self.targets = Some(Targets {
-            size,
-            color: make(self.format, "msaa color"),
-            depth: make(DEPTH_FORMAT, "depth"),
+        let [color, depth] = gpu.shared_targets(size, self.format, || {
+            [make(self.format, "msaa color"), make(DEPTH_FORMAT, "depth")]
         });
+        self.targets = Some(Targets { size, color, depth });
     }
 
     /// Records the frame into the top-left `size` of `target`, which is `target_size`.
