@@ -768,7 +768,7 @@ export class Plot {
   showReadout(u) {
     const i = u.cursor.idx;
     const x = i === null || i === undefined ? undefined : u.data[0][i];
-    const legend = u.root.querySelector('.u-legend');
+    const legend = (this.legend ??= u.root.querySelector('.u-legend'));
     if (x === undefined) {
       this.readout.hidden = true;
       if (legend) legend.style.visibility = '';

@@ -6,7 +6,7 @@
 //! - [`DamBreakFigure`]: SPH and PBF on the same 2D dam break side by side, SPH's stiffness and
 //!   time step the reader's (past its limit it stops, and says why).
 
-use super::{finite, format_number, palette, Frame};
+use super::{format_number, palette, Frame};
 use crate::draw::{StrokeStyle, DOT_PX};
 use crate::fluid::kernels::{Dim, Kernels};
 use crate::fluid::{density, spacing_for, Fluid, FluidParams, Method, Scene};
@@ -130,8 +130,8 @@ impl DensityFigure {
     /// an error leaves the figure as it was.
     pub fn set_probe(&mut self, x: f32, y: f32) -> Result<(), String> {
         let size = crate::fluid::box_size(Dim::Two);
-        let x = super::in_range("x (m)", finite("x (m)", x)?, 0.0, size.x)?;
-        let y = super::in_range("y (m)", finite("y (m)", y)?, 0.0, size.y)?;
+        let x = super::in_range("x (m)", x, 0.0, size.x)?;
+        let y = super::in_range("y (m)", y, 0.0, size.y)?;
         self.fluid.positions[0] = Vec3::new(x, y, 0.0);
         self.fluid.search();
         self.fluid.refresh_densities();

@@ -203,7 +203,8 @@ pub struct Stats {
     /// Mean and largest `ρ/ρ₀ − 1` over the particles (compression; negative at the surface).
     pub density_error_mean: f32,
     pub density_error_max: f32,
-    /// Kinetic energy `½ Σ m |v|²` and potential energy `Σ m (−g)·(x − corner)`, joules.
+    /// Kinetic energy `½ Σ m |v|²` and potential energy `Σ m (−g)·x` (the box's corner is the
+    /// origin, so heights are measured from its floor), joules.
     pub kinetic: f32,
     pub potential: f32,
     /// The largest `|v| Δt / h`: the share of a kernel radius a particle crosses in one step.
@@ -234,7 +235,6 @@ pub struct Fluid {
     nbr: Vec<u32>,
     predicted: Vec<Vec3>,
     scratch: Vec<Vec3>,
-    corner: Vec3,
     /// PBF: `1 / Σ_k |∇_k C|²` for a particle inside a lattice at rest, the `|λ|` a constraint
     /// violated by `C = 1` gets: the artificial pressure `s_corr` is measured in it, so that
     /// `k = 0.1` means "as if compressed by 10 %" whatever the units.
@@ -398,7 +398,6 @@ impl Fluid {
             grid,
             start: Vec::new(),
             nbr: Vec::new(),
-            corner: Vec3::ZERO,
             lambda_unit,
         })
     }
@@ -743,7 +742,7 @@ impl Fluid {
             s.density_error_max = s.density_error_max.max(err);
             let v2 = self.velocities[i].length_squared();
             s.kinetic += 0.5 * self.mass * v2;
-            s.potential -= self.mass * self.params.gravity.dot(self.positions[i] - self.corner);
+            s.potential -= self.mass * self.params.gravity.dot(self.positions[i]);
             s.max_speed = s.max_speed.max(v2.sqrt());
         }
         if self.is_empty() {
