@@ -23,12 +23,7 @@
 //! | `12-boids`: boids | [`boids`] (rules, force laws, grid) | [`figures::boids`] | `web::boids` (bench: `web::bench_boids`) | [`exercises::boids`] (12.x) |
 //! | `13-cloth`: cloth | [`cloth`] (mass-spring, XPBD, collisions; uses [`particles`]' step) | [`figures::cloth`] | `web::cloth` (bench: `web::bench_cloth`) | [`exercises::cloth`] (13.x) |
 //! | `14-rigid-bodies`: rigid bodies | [`rigid_body`] (inertia tensors, orientation and angular-velocity steps, impulses, contacts by sequential impulses) | [`figures::rigid_body`] (the throw, quaternion drift, the tennis racket, the impulse at a contact, the stack and dominoes) | `web::rigid_body` (bench: `web::bench_rigid_body`) | [`exercises::rigid_body`] (14.x) |
-//!
-//! Coming (issue: fluids): [`fluid`], SPH and position-based fluids in 2D and 3D on the boids'
-//! grid and the particles' collisions, with the logic of three of its figures in
-//! [`figures::fluid`] (the kernels' plots, the density of a dragged particle, SPH beside PBF on
-//! one dam break); its lesson page, other figures, bindings and exercises (15.x) are not written
-//! yet.
+//! | `15-fluids`: fluids | [`fluid`] (kernels, SPH and PBF in 2D and 3D on the boids' grid, the particles' collisions) | [`figures::fluid`] (the kernels, the density of a dragged particle, SPH beside PBF on one dam break, a 3D splash and its step-time sweep) | `web::fluid` | [`exercises::fluid`] (15.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`texture`] (textured quads, sprites and atlases in the draw list),

@@ -91,6 +91,10 @@ fn a_rejected_probe_changes_nothing_and_the_note_says_the_density() {
     );
     assert_eq!(frame.labels.len(), 1);
     assert!(!frame.keep_in_view.is_empty());
+    assert!(
+        note.contains("SPH: pressure") && note.contains("PBF: λ"),
+        "{note}"
+    );
 }
 
 use inbetween::figures::fluid::{DamBreakFigure, DAM_FRAME_SEC};
@@ -142,4 +146,249 @@ fn sph_past_its_time_step_limit_stops_and_the_note_says_why() {
     assert!(fig.set_sph(f32::NAN, 0.001).is_err() && fig.set_sph(400.0, 0.0).is_err());
     assert_eq!(fig.fluids()[0].params, before);
     assert!(fig.advance_to(-1.0).is_err() && fig.advance_to(1e38).is_err());
+}
+
+/// The numbers lesson 15's text gives for Figure 2 (its "Try this" callouts).
+#[test]
+fn the_density_figure_shows_what_the_lesson_says() {
+    let mut fig = DensityFigure::new();
+    let rho0 = fig.fluid().params.rest_density;
+    // The caption: h = 9.7 cm, 2.7 spacings.
+    assert!((fig.h() - 0.097).abs() < 0.0005 && (fig.h() / fig.fluid().spacing - 2.7).abs() < 1e-4);
+    // The start: 21 neighbours, ρ₀ to within 0.1 %, a pressure of about 120 Pa.
+    let (rho, n) = fig.probe();
+    assert_eq!(n, 21);
+    assert!((rho / rho0 - 1.0).abs() < 0.001, "{rho}");
+    let p = fig.forces().pressure;
+    assert!((100.0..140.0).contains(&p), "{p}");
+    // At the surface: about 10 neighbours, about 60 % of ρ₀.
+    fig.set_probe(0.8, 0.4).unwrap();
+    let (rho, n) = fig.probe();
+    assert!(
+        (9..=11).contains(&n) && (0.57..0.63).contains(&(rho / rho0)),
+        "{n} {rho}"
+    );
+    // Out of the water: its own term alone, 17 % of ρ₀.
+    fig.set_probe(0.8, 0.9).unwrap();
+    let (rho, n) = fig.probe();
+    assert!(n == 0 && (0.165..0.18).contains(&(rho / rho0)), "{rho}");
+    // Half a spacing sideways: one particle more, 0.9 % denser, about 3,700 Pa, pushed back
+    // towards where it came from (−x), and PBF's move of about 0.3 mm.
+    fig.set_probe(0.818, 0.2).unwrap();
+    let (rho, n) = fig.probe();
+    let f = fig.forces();
+    assert!(
+        n == 23 && (0.0085..0.0095).contains(&(rho / rho0 - 1.0)),
+        "{n} {rho}"
+    );
+    assert!((3500.0..3900.0).contains(&f.pressure), "{}", f.pressure);
+    assert!(
+        f.force.x < 0.0 && f.force.x.abs() > f.force.y.abs(),
+        "{}",
+        f.force
+    );
+    let mm = 1000.0 * f.correction.length();
+    assert!((0.25..0.35).contains(&mm), "{mm} mm");
+    assert!(f.lambda < 0.0 && f.correction.x < 0.0, "{f:?}");
+}
+
+/// Exercises 15.2 to 15.4 in the density figure: the reference passes, a wrong answer is named.
+#[test]
+fn the_density_figure_checks_the_students_exercises() {
+    use inbetween::exercises::run::{direct, Failure};
+    let mut fig = DensityFigure::new();
+    fig.set_probe(0.818, 0.2).unwrap();
+    let reference = fig.forces();
+    fig.set_runner(|name, args| match name {
+        "sph_density" | "pressure_force" | "pbf_lambda" => {
+            let mut out = direct(name, args);
+            if let Ok(v) = &mut out {
+                for x in v.iter_mut() {
+                    *x *= 1.1;
+                }
+            }
+            if name == "pbf_lambda" {
+                return Err(Failure::NotDone);
+            }
+            out.or_else(|_| {
+                // The stubs: answer with the reference, scaled, so that the note says "differs".
+                let mut f = DensityFigure::new();
+                f.set_probe(0.818, 0.2).unwrap();
+                let r = f.forces();
+                Ok(match name {
+                    "sph_density" => vec![1.1 * r.density],
+                    _ => vec![1.1 * r.force.x / 23.0, 1.1 * r.force.y / 23.0],
+                })
+            })
+        }
+        _ => direct(name, args),
+    });
+    fig.set_use_exercise(true);
+    let note = fig.draw(&mut Frame::default());
+    assert!(note.contains("Your sph_density differs"), "{note}");
+    assert!(
+        note.contains("Not done yet: exercise 15.4 pbf_lambda"),
+        "{note}"
+    );
+    // What is drawn is the student's density; λ falls back to the reference.
+    assert!((fig.probe().0 / reference.density - 1.1).abs() < 1e-3);
+    assert_eq!(fig.forces().lambda, reference.lambda);
+    fig.set_use_exercise(false);
+    assert_eq!(fig.forces(), reference);
+}
+
+#[test]
+fn the_kernel_figure_draws_the_students_poly6_and_says_where_it_differs() {
+    use inbetween::exercises::run::direct;
+    let mut fig = KernelsFigure::new();
+    // Off: no curve, no note.
+    let (yours, note) = fig.exercise(101).unwrap();
+    assert!(yours.is_none() && note.is_empty());
+    // A kernel that goes negative beyond h (no clamp): the note names where.
+    fig.set_runner(|name, args| match name {
+        "poly6" => {
+            let (r2, h) = (args[0], args[1]);
+            let d = h * h - r2;
+            Ok(vec![4.0 / (std::f32::consts::PI * h.powi(8)) * d * d * d])
+        }
+        _ => direct(name, args),
+    });
+    fig.set_use_exercise(true);
+    let (yours, note) = fig.exercise(101).unwrap();
+    let yours = yours.unwrap();
+    assert!(
+        note.starts_with("Your poly6 differs at r = 0.125"),
+        "{note}"
+    );
+    assert!((yours[0] - 1.0).abs() < 1e-5 && yours[100] < 0.0);
+    // The right kernel matches at every sample; 3D says the exercise is 2D.
+    fig.set_runner(|name, args| match name {
+        "poly6" => Ok(vec![inbetween::fluid::kernels::poly6(
+            args[0],
+            args[1],
+            inbetween::fluid::Dim::Two,
+        )]),
+        _ => direct(name, args),
+    });
+    let (_, note) = fig.exercise(101).unwrap();
+    assert!(
+        note.starts_with("Your poly6 matches the reference at all 101"),
+        "{note}"
+    );
+    fig.set(0.1, 3).unwrap();
+    let (yours, note) = fig.exercise(101).unwrap();
+    assert!(yours.is_none() && note.contains("2D"), "{note}");
+}
+
+/// Figure 3's numbers in lesson 15's text: the squeeze at the defaults, where SPH's step stops
+/// being stable, what stiffness does.
+#[test]
+fn the_dam_break_figure_shows_what_the_lesson_says() {
+    let peak = |k: f32, dt: f32| {
+        let mut fig = DamBreakFigure::new();
+        fig.set_sph(k, dt).unwrap();
+        fig.advance_to(2.5).unwrap();
+        let rows = fig.plot_rows();
+        let max = |c: usize| {
+            rows.iter()
+                .map(|r| r[c])
+                .filter(|v| v.is_finite())
+                .fold(0.0f32, f32::max)
+        };
+        (max(1), max(2), fig.fluids()[0].exploded().map(|e| e.0))
+    };
+    // The text's rule of thumb: Δt ≤ 0.4 h / c with h = 7 cm and c = √400 = 20 m/s, 1.4 ms.
+    let fig = DamBreakFigure::new();
+    let h = fig.fluids()[0].params.h;
+    assert!((h - 0.070).abs() < 0.0005, "{h}");
+    assert!((0.4 * h / 400f32.sqrt() * 1000.0 - 1.4).abs() < 0.05);
+    // Defaults (k = 400, 0.83 ms): SPH squeezed by about 19 %, PBF by 2 to 3 %.
+    let (sph, pbf, gone) = peak(400.0, 1.0 / 1200.0);
+    assert!(gone.is_none() && (0.17..0.21).contains(&sph), "{sph}");
+    assert!((0.02..0.03).contains(&pbf), "{pbf}");
+    // 1.67 ms runs with about the same squeeze; 2.5 ms explodes within about half a second.
+    let (sph2, _, gone) = peak(400.0, 1.0 / 600.0);
+    assert!(gone.is_none() && (sph2 - sph).abs() < 0.03, "{sph2}");
+    let (_, _, gone) = peak(400.0, 1.0 / 400.0);
+    assert!(gone.is_some_and(|t| (0.3..0.8).contains(&t)), "{gone:?}");
+    // Stiffer at the default step explodes; softer is squashed by about a third.
+    assert!(peak(1600.0, 1.0 / 1200.0).2.is_some());
+    let (soft, _, gone) = peak(100.0, 1.0 / 1200.0);
+    assert!(gone.is_none() && (0.29..0.37).contains(&soft), "{soft}");
+}
+
+use inbetween::figures::fluid::{SplashFigure, SPLASH_DURATION_SEC, SPLASH_STEPS_PER_CALL};
+
+#[test]
+fn the_splash_steps_a_few_steps_a_call_and_replays_when_the_time_goes_back() {
+    let mut fig = SplashFigure::new();
+    // Far ahead: at most a few steps a call, and the fluid catches up over the calls.
+    assert_eq!(fig.advance_to(0.5).unwrap(), SPLASH_STEPS_PER_CALL);
+    let mut calls = 1;
+    while fig.advance_to(0.5).unwrap() > 0 {
+        calls += 1;
+    }
+    assert_eq!(calls, 120usize.div_ceil(SPLASH_STEPS_PER_CALL));
+    // The same time again takes no step (the fluid may be up to half a step past it).
+    assert_eq!(fig.advance_to(0.5).unwrap(), 0);
+    let there = fig.fluid().positions.clone();
+    // Back in time: the run starts over, and reaches the same state bit for bit.
+    fig.advance_to(0.1).unwrap();
+    while fig.advance_to(0.5).unwrap() > 0 {}
+    assert_eq!(fig.fluid().positions, there);
+    assert!(fig.advance_to(SPLASH_DURATION_SEC + 1.0).is_err());
+    // Bad settings change nothing.
+    let before = fig.fluid().len();
+    for bad in [
+        fig.set("FLIP", 3000.0, "grid", 0.0),
+        fig.set("PBF", 3000.5, "grid", 0.0),
+        fig.set("PBF", 1e9, "grid", 0.0),
+        fig.set("PBF", 3000.0, "octree", 0.0),
+        fig.set("PBF", 3000.0, "grid", f32::NAN),
+    ] {
+        assert!(bad.is_err());
+    }
+    assert_eq!(fig.fluid().len(), before);
+    let note = fig.draw(&mut Frame::default());
+    assert!(note.starts_with("PBF, 2584 particles"), "{note}");
+}
+
+/// Vorticity confinement gives back motion that PBF's damping takes: the splash keeps more
+/// kinetic energy with it than without (a sign error in the curl makes it damp instead).
+#[test]
+fn vorticity_confinement_keeps_the_splash_moving() {
+    let energy = |eps: f32| {
+        let mut fig = SplashFigure::new();
+        fig.set("PBF", 1000.0, "grid", eps).unwrap();
+        while fig.advance_to(1.5).unwrap() > 0 {}
+        assert!(fig.fluid().exploded().is_none());
+        fig.fluid().stats().kinetic
+    };
+    let (without, with) = (energy(0.0), energy(0.2));
+    assert!(with > 1.03 * without, "{with} J with, {without} J without");
+}
+
+#[test]
+fn the_step_time_sweep_times_the_grid_and_all_pairs_in_turn() {
+    let mut fig = SplashFigure::new();
+    let mut seen = Vec::new();
+    while let Some(search) = fig.next_sweep_timing().unwrap() {
+        fig.timing_step(search).unwrap();
+        // Synthetic timings: N / 1000 ms for the grid, N² / 10⁶ ms for all pairs.
+        seen.push(search);
+        let size = [250.0f32, 500.0, 1000.0, 2000.0, 4000.0, 8000.0][seen.len().div_ceil(10) - 1];
+        let ms = if search == "grid" {
+            size / 1000.0
+        } else {
+            size * size / 1e6
+        };
+        fig.record_sweep(ms).unwrap();
+    }
+    // The all-pairs search stops once a median passed the limit (60 ms at N = 8000 is 64).
+    assert!(seen.iter().filter(|s| **s == "grid").count() == 30);
+    let note = fig.sweep().note();
+    assert!(
+        note.contains("all-pairs slope 2.0") && note.contains("grid slope 1.0"),
+        "{note}"
+    );
 }

@@ -75,6 +75,8 @@ mod lessons {
         assert_eq!(ids("rigid-bodies"), ["14-rigid-bodies"]);
         assert_eq!(ids("rigid_body"), ["14-rigid-bodies"]);
         assert_eq!(ids("14"), ["14-rigid-bodies"]);
+        assert_eq!(ids("15"), ["15-fluids"]);
+        assert_eq!(ids("fluid"), ["15-fluids"]);
         assert_eq!(ids("curves"), ["02-keyframes"]);
         assert_eq!(ids("02"), ["02-keyframes"]);
         assert_eq!(ids("2b"), ["02b-expressive-animation"]);
@@ -89,7 +91,7 @@ mod lessons {
 
     #[test]
     fn an_unknown_lesson_gets_the_list_of_lessons() {
-        for selector in ["15", "walking", "99", "xx", "r"] {
+        for selector in ["16", "walking", "99", "xx", "r"] {
             let Err(message) = select_lessons(selector) else {
                 panic!("{selector:?} selected something");
             };

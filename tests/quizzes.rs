@@ -53,7 +53,7 @@ fn every_lesson_but_none_has_a_quiz() {
         "00-triangles-to-pixels", "01-transforms", "02-keyframes", "02b-expressive-animation",
         "03-rotations", "04-rigid-motions", "05-noise", "06-skeletons", "07-inverse-kinematics",
         "08-blending", "09-skinning", "10-blend-shapes", "11-particles", "12-boids", "13-cloth",
-        "14-rigid-bodies",
+        "14-rigid-bodies", "15-fluids",
     ] {
         assert!(folders.iter().any(|f| f == lesson), "lessons/{lesson} has no quiz.json");
     }

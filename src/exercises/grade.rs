@@ -114,6 +114,7 @@ pub const LESSONS: &[Lesson] = &[
     lesson("12-boids", "boids", super::boids::grade),
     lesson("13-cloth", "cloth", super::cloth::grade),
     lesson("14-rigid-bodies", "rigid_body", super::rigid_body::grade),
+    lesson("15-fluids", "fluid", super::fluid::grade),
 ];
 
 const fn lesson(

@@ -18,6 +18,7 @@ pub mod boids;
 pub mod cloth;
 pub mod curves;
 pub mod expressive;
+pub mod fluid;
 pub mod grade;
 pub mod ik;
 pub mod noise;

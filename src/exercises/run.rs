@@ -97,6 +97,17 @@ impl<const N: usize> Flat for [f32; N] {
     }
 }
 
+/// Two points, as the pair exercises take them (`[i, j]`).
+impl Flat for [glam::Vec2; 2] {
+    fn put(&self, out: &mut Vec<f32>) {
+        self[0].put(out);
+        self[1].put(out);
+    }
+    fn take(input: &mut &[f32]) -> Option<Self> {
+        Some([glam::Vec2::take(input)?, glam::Vec2::take(input)?])
+    }
+}
+
 impl Flat for Vec3 {
     fn put(&self, out: &mut Vec<f32>) {
         self.to_array().put(out);
@@ -232,6 +243,7 @@ macro_rules! exercises {
 use super::blend_shapes as bs;
 use super::blending as bl;
 use super::cloth as cl;
+use super::fluid as fl;
 use super::ik as ik7;
 use super::noise as nz;
 use super::rigid_body as rb;
@@ -366,6 +378,17 @@ exercises! {
     /// Exercise 14.4, [`rb::normal_impulse`]: the impulse's magnitude.
     fn normal_impulse(v_rel: Vec3, normal: Vec3, r: Vec3, inv_mass: f32, inv_inertia: Mat3, e: f32) -> f32 =
         rb::normal_impulse(v_rel, normal, r, inv_mass, inv_inertia, e);
+    /// Exercise 15.1, [`fl::poly6`] (2D).
+    fn poly6(r2: f32, h: f32) -> f32 = fl::poly6(r2, h);
+    /// Exercise 15.2, [`fl::sph_density`] (2D).
+    fn sph_density(x: glam::Vec2, neighbours: Vec<glam::Vec2>, m: f32, h: f32) -> f32 =
+        fl::sph_density(x, &neighbours, m, h);
+    /// Exercise 15.3, [`fl::pressure_force`] (2D): the force on particle 0.
+    fn pressure_force(x: [glam::Vec2; 2], rho: [f32; 2], p: [f32; 2], m: f32, h: f32) -> glam::Vec2 =
+        fl::pressure_force(x, rho, p, m, h);
+    /// Exercise 15.4, [`fl::pbf_lambda`] (2D).
+    fn pbf_lambda(x: glam::Vec2, neighbours: Vec<glam::Vec2>, rho: f32, m: f32, rho0: f32, eps: f32, h: f32) -> f32 =
+        fl::pbf_lambda(x, &neighbours, rho, m, rho0, eps, h);
 }
 
 /// The numbers the lessons' quizzes ask for (`lessons/*/quiz.json`, `"answer": {"core": name,
@@ -392,6 +415,7 @@ pub const QUIZ_ANSWERS: &[&str] = &[
     "blend_full_vertex",
     "box_moment",
     "unnormalised_quat_length",
+    "poly6_share",
 ];
 
 /// The answer to a quiz's numeric question: the core named `name` on `args` (see
@@ -469,7 +493,9 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
                 if x >= 1.0 && x <= 1e7 && x.fract() == 0.0 {
                     Ok(x as usize)
                 } else {
-                    Err(format!("soup_over_indexed: {what} must be a whole number from 1"))
+                    Err(format!(
+                        "soup_over_indexed: {what} must be a whole number from 1"
+                    ))
                 }
             };
             let sizes = crate::raster::mesh_sizes(count(args[0], "V")?, count(args[1], "T")?);
@@ -513,7 +539,10 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
                 .ok_or("screw_slide: the axis must not be zero")?;
             let rotation = Quat::from_axis_angle(axis, args[0].to_radians());
             let t = Vec3::new(args[4], args[5], args[6]);
-            DualQuat::from_rotation_translation(rotation, t).screw_axis().displacement.abs()
+            DualQuat::from_rotation_translation(rotation, t)
+                .screw_axis()
+                .displacement
+                .abs()
         }
         // (sx): one step of the polar iteration on diag(sx, 1, 1); the x scale it leaves.
         "polar_step_scale" => {
@@ -521,7 +550,9 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
             if args[0].abs() < 1e-6 {
                 return Err("polar_step_scale: sx must not be 0 (no polar decomposition)".into());
             }
-            crate::rotation::polar_step(Mat3::from_diagonal(Vec3::new(args[0], 1.0, 1.0))).x_axis.x
+            crate::rotation::polar_step(Mat3::from_diagonal(Vec3::new(args[0], 1.0, 1.0)))
+                .x_axis
+                .x
         }
         // (angle_deg, s): keys 0 and angle_deg about y, nlerped at s; the in-between's angle, in
         // degrees.
@@ -529,17 +560,27 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
             want(2)?;
             let (angle, s) = (args[0], args[1]);
             if !(0.0..=180.0).contains(&angle) || !(0.0..=1.0).contains(&s) {
-                return Err("nlerp_angle_deg: the angle must be in [0, 180] and s in [0, 1]".into());
+                return Err(
+                    "nlerp_angle_deg: the angle must be in [0, 180] and s in [0, 1]".into(),
+                );
             }
             let b = Quat::from_rotation_y(angle.to_radians());
-            crate::rotation::nlerp(Quat::IDENTITY, b, s).angle_between(Quat::IDENTITY).to_degrees()
+            crate::rotation::nlerp(Quat::IDENTITY, b, s)
+                .angle_between(Quat::IDENTITY)
+                .to_degrees()
         }
         // (a, b, d): two-joint IK with segments a and b and the target d metres from the root;
         // the angle at the root between the line to the target and the first segment, degrees.
         "two_joint_root_angle_deg" => {
             want(3)?;
             let (u, solution) = two_joint_quiz(name, args)?;
-            solution.middle.normalize().dot(u).clamp(-1.0, 1.0).acos().to_degrees()
+            solution
+                .middle
+                .normalize()
+                .dot(u)
+                .clamp(-1.0, 1.0)
+                .acos()
+                .to_degrees()
         }
         // (a, b, d): the same; how far the end is left from the target, metres.
         "two_joint_error" => {
@@ -582,7 +623,10 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
             let shapes = crate::blend_shapes::BlendShapes::from_targets(
                 point(args[0]),
                 vec![Vec3::Y],
-                &[(point(args[1]), vec![Vec3::Y]), (point(args[2]), vec![Vec3::Y])],
+                &[
+                    (point(args[1]), vec![Vec3::Y]),
+                    (point(args[2]), vec![Vec3::Y]),
+                ],
             )
             .map_err(|e| e.to_string())?;
             let (mut p, mut n) = ([Vec3::ZERO], [Vec3::ZERO]);
@@ -593,6 +637,16 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
         }
         // (m, hx, hy, hz, axis): the moment of inertia (kg m²) of a solid box of mass m and
         // these half-extents about its own axis 0 (x), 1 (y) or 2 (z).
+        // (r, h): the 2D poly6 kernel at distance r as a share of its peak W(0).
+        "poly6_share" => {
+            want(2)?;
+            if !(args[1] > 0.0 && args[0] >= 0.0) {
+                return Err("poly6_share: r must be at least 0 and h positive".into());
+            }
+            let (r, h) = (args[0], args[1]);
+            let w = |r2| crate::fluid::kernels::poly6(r2, h, crate::fluid::Dim::Two);
+            w(r * r) / w(0.0)
+        }
         "box_moment" => {
             want(5)?;
             if !(args[0] > 0.0 && args[1..4].iter().all(|&h| h > 0.0)) {
@@ -608,14 +662,17 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
         "unnormalised_quat_length" => {
             want(3)?;
             let steps = usize::take(&mut &args[2..]).filter(|&n| n <= 100_000);
-            let steps = steps.ok_or("unnormalised_quat_length: steps must be a whole number up to 100000")?;
+            let steps = steps
+                .ok_or("unnormalised_quat_length: steps must be a whole number up to 100000")?;
             if !(args[1] >= 0.0 && args[1] <= 0.1) {
                 return Err("unnormalised_quat_length: dt must be in [0, 0.1] s".into());
             }
             let omega = Vec3::new(0.0, args[0], 0.0);
             let how = crate::rigid_body::OrientationStep::AdditiveUnnormalised;
             (0..steps)
-                .fold(Quat::IDENTITY, |q, _| crate::rigid_body::orientation_step(q, omega, args[1], how))
+                .fold(Quat::IDENTITY, |q, _| {
+                    crate::rigid_body::orientation_step(q, omega, args[1], how)
+                })
                 .length()
         }
         _ => {
@@ -638,7 +695,9 @@ pub fn quiz_answer(name: &str, args: &[f32]) -> Result<f32, String> {
 fn two_joint_quiz(name: &str, args: &[f32]) -> Result<(Vec3, crate::ik::TwoJointSolution), String> {
     let (a, b, d) = (args[0], args[1], args[2]);
     if !(a > 0.0 && b > 0.0 && d > 0.0) {
-        return Err(format!("{name}: the segments and the distance must be positive"));
+        return Err(format!(
+            "{name}: the segments and the distance must be positive"
+        ));
     }
     let u = Vec3::X;
     let solution = crate::ik::two_joint(
@@ -795,7 +854,7 @@ mod tests {
         }
         assert!(matches!(direct("nope", &[]), Err(Failure::Call(_))));
         assert!(matches!(direct("slerp", &[1.0]), Err(Failure::Call(_))));
-        assert_eq!(NAMES.len(), 40);
+        assert_eq!(NAMES.len(), 44);
     }
 
     #[test]

@@ -90,12 +90,27 @@ pub const SWEEP_FIT_FROM: usize = 400;
 /// The step-time sweep: which timing comes next, the timings so far, the plot's samples and
 /// the note. Grid and naive take turns at each size, repeat by repeat, so a moment of load
 /// falls on both searches alike.
-#[derive(Clone, Debug, Default)]
+/// The fluids lesson times its particles with the same sweep (see [`StepTimeSweep::with`]).
+#[derive(Clone, Debug)]
 pub struct StepTimeSweep {
-    /// Per size, per search (grid, naive): the milliseconds per step of each timing.
-    times: [[Vec<f32>; 2]; SWEEP_SIZES.len()],
+    /// The sizes timed, smallest first.
+    sizes: &'static [usize],
+    /// The two searches' names, the fast one first ("grid", then "naive").
+    names: [&'static str; 2],
+    /// What is counted ("boids", "particles").
+    noun: &'static str,
+    /// The smallest size the fitted slopes start at.
+    fit_from: usize,
+    /// Per size, per search: the milliseconds per step of each timing.
+    times: Vec<[Vec<f32>; 2]>,
     /// The next timing: (size index, repeat, search).
     next: (usize, usize, usize),
+}
+
+impl Default for StepTimeSweep {
+    fn default() -> Self {
+        Self::new()
+    }
 }
 
 /// The median of `xs` (not empty).
@@ -111,8 +126,27 @@ fn median(xs: &[f32]) -> f32 {
 }
 
 impl StepTimeSweep {
+    /// The boids' sweep: [`SWEEP_SIZES`], grid against naive, fitted from [`SWEEP_FIT_FROM`].
     pub fn new() -> Self {
-        Self::default()
+        Self::with(&SWEEP_SIZES, SEARCHES, "boids", SWEEP_FIT_FROM)
+    }
+
+    /// A sweep over `sizes` (smallest first) of two searches named `names` (the fast one
+    /// first) counting `noun`, its slopes fitted from `fit_from` up.
+    pub fn with(
+        sizes: &'static [usize],
+        names: [&'static str; 2],
+        noun: &'static str,
+        fit_from: usize,
+    ) -> Self {
+        Self {
+            sizes,
+            names,
+            noun,
+            fit_from,
+            times: vec![Default::default(); sizes.len()],
+            next: (0, 0, 0),
+        }
     }
 
     /// Whether `search` (0 grid, 1 naive) is still timed at size index `size`: not once its
@@ -129,11 +163,11 @@ impl StepTimeSweep {
     pub fn next_timing(&mut self) -> Option<(usize, &'static str)> {
         loop {
             let (size, _, search) = self.next;
-            if size >= SWEEP_SIZES.len() {
+            if size >= self.sizes.len() {
                 return None;
             }
             if self.times_at(size, search) {
-                return Some((SWEEP_SIZES[size], SEARCHES[search]));
+                return Some((self.sizes[size], self.names[search]));
             }
             self.advance();
         }
@@ -194,19 +228,17 @@ impl StepTimeSweep {
                     || (self.times[k][s].is_empty() && !self.times_at(k, s))
             })
         };
-        let rows: Vec<usize> = (0..SWEEP_SIZES.len())
-            .take_while(|&k| complete(k))
-            .collect();
+        let rows: Vec<usize> = (0..self.sizes.len()).take_while(|&k| complete(k)).collect();
         let anchor = |search: usize, power: i32| {
             rows.iter().rev().find_map(|&k| {
                 self.summary(k, search)
-                    .map(|(m, _, _)| m / (SWEEP_SIZES[k] as f32).powi(power))
+                    .map(|(m, _, _)| m / (self.sizes[k] as f32).powi(power))
             })
         };
         let (c1, c2) = (anchor(0, 1), anchor(1, 2));
         let mut out = Vec::with_capacity(9 * rows.len());
         for k in rows {
-            let n = SWEEP_SIZES[k] as f32;
+            let n = self.sizes[k] as f32;
             out.push(n);
             for search in 0..2 {
                 let (m, lo, hi) = self
@@ -226,10 +258,11 @@ impl StepTimeSweep {
     /// from [`SWEEP_FIT_FROM`] up that are timed: the exponent `p` in `t ∝ Nᵖ`. `None` with
     /// fewer than two such sizes.
     pub fn fitted_slope(&self, search: usize) -> Option<f32> {
-        let points: Vec<(f32, f32)> = SWEEP_SIZES
+        let points: Vec<(f32, f32)> = self
+            .sizes
             .iter()
             .enumerate()
-            .filter(|&(_, &n)| n >= SWEEP_FIT_FROM)
+            .filter(|&(_, &n)| n >= self.fit_from)
             .filter_map(|(k, &n)| {
                 let (m, _, _) = self.summary(k, search)?;
                 (self.times[k][search].len() == SWEEP_REPEATS && m > 0.0)
@@ -255,15 +288,18 @@ impl StepTimeSweep {
         if !self.done() {
             let (size, repeat, _) = self.next;
             return format!(
-                "Measuring one step at N = {} boids (timing {} of {} at each size, grid and naive \
-                 in turn)…",
-                SWEEP_SIZES[size.min(SWEEP_SIZES.len() - 1)],
+                "Measuring one step at N = {} {} (timing {} of {} at each size, {} and {} in \
+                 turn)…",
+                self.sizes[size.min(self.sizes.len() - 1)],
+                self.noun,
                 repeat + 1,
-                SWEEP_REPEATS
+                SWEEP_REPEATS,
+                self.names[0],
+                self.names[1]
             );
         }
         let mut parts = Vec::new();
-        for (search, name) in [(1, "naive"), (0, "grid")] {
+        for (search, name) in [(1, self.names[1]), (0, self.names[0])] {
             if let Some(p) = self.fitted_slope(search) {
                 parts.push(format!(
                     "{name} slope {:.1} (×{:.1} per doubling of N)",
@@ -273,20 +309,23 @@ impl StepTimeSweep {
             }
         }
         let mut note = format!(
-            "Measured in this run, from N = {SWEEP_FIT_FROM} up: {}.",
+            "Measured in this run, from N = {} up: {}.",
+            self.fit_from,
             parts.join(", ")
         );
-        let both = (0..SWEEP_SIZES.len())
+        let both = (0..self.sizes.len())
             .rev()
             .find_map(|k| Some((k, self.summary(k, 0)?, self.summary(k, 1)?)));
         if let Some((k, (g, _, _), (n, _, _))) = both {
             note.push_str(&format!(
-                " At N = {} the naive search takes {:.1}× as long as the grid.",
-                SWEEP_SIZES[k],
-                n / g.max(1e-6)
+                " At N = {} the {} search takes {:.1}× as long as the {}.",
+                self.sizes[k],
+                self.names[1],
+                n / g.max(1e-6),
+                self.names[0]
             ));
         }
-        let spread = (0..SWEEP_SIZES.len())
+        let spread = (0..self.sizes.len())
             .flat_map(|k| [(k, 0), (k, 1)])
             .filter_map(|(k, s)| self.summary(k, s))
             .map(|(m, lo, hi)| (hi - lo) / m.max(1e-6))
@@ -301,12 +340,12 @@ impl StepTimeSweep {
                 ""
             }
         ));
-        for (search, name) in [(1, "naive"), (0, "grid")] {
-            if let Some(k) = (0..SWEEP_SIZES.len()).find(|&k| !self.times_at(k, search)) {
+        for (search, name) in [(1, self.names[1]), (0, self.names[0])] {
+            if let Some(k) = (0..self.sizes.len()).find(|&k| !self.times_at(k, search)) {
                 note.push_str(&format!(
                     " The {name} search is not timed from N = {} on: a step took over {} ms \
                      (a debug build?).",
-                    SWEEP_SIZES[k], SWEEP_LIMIT_MS
+                    self.sizes[k], SWEEP_LIMIT_MS
                 ));
             }
         }

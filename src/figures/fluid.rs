@@ -1,22 +1,37 @@
-//! Figure logic for the fluids lesson (see [`crate::fluid`]); the lesson page is not written yet.
+//! Figure logic for lesson 15, "Fluids" (see [`crate::fluid`]).
 //!
-//! - [`KernelsFigure`]: the four kernels of one support radius, as plot rows.
+//! - [`KernelsFigure`]: the four kernels of one support radius, as plot rows, with the student's
+//!   poly6 (exercise 15.1) beside the reference.
 //! - [`DensityFigure`]: a 2D pool at rest; the reader drags one particle and sees the neighbours
-//!   within `h`, each one's weight, and the density they add up to.
+//!   within `h`, each one's weight, the density they add up to, the pressure force SPH puts on it
+//!   and the move PBF's constraint asks of it (exercises 15.2 to 15.4).
 //! - [`DamBreakFigure`]: SPH and PBF on the same 2D dam break side by side, SPH's stiffness and
 //!   time step the reader's (past its limit it stops, and says why).
+//! - [`SplashFigure`]: a 3D drop into a pool, either solver, with a step-time sweep of the grid
+//!   against all pairs.
 
-use super::{format_number, palette, Frame};
+use super::boids::StepTimeSweep;
+use super::{failure_note, format_number, palette, Frame, DEFAULT_RUNNER};
+use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
 use crate::draw::{StrokeStyle, DOT_PX};
+use crate::exercises::run::{self, compare_note, Runner};
 use crate::fluid::kernels::{Dim, Kernels};
-use crate::fluid::{density, spacing_for, Fluid, FluidParams, Method, Scene};
-use glam::Vec3;
+use crate::fluid::{
+    box_size, density, pair_force, pbf_lambda, spacing_for, Fluid, FluidParams, Method, Scene,
+    Search,
+};
+use glam::{Mat4, Vec2, Vec3};
+
+/// The exercises' file, as the notes name it.
+const FILE: &str = "src/exercises/fluid.rs";
 
 /// The kernels of support radius `h` in 2D or 3D, for the lesson's kernel plots.
 #[derive(Clone, Debug)]
 pub struct KernelsFigure {
     h: f32,
     dim: Dim,
+    use_exercise: bool,
+    runner: Runner,
 }
 
 impl Default for KernelsFigure {
@@ -30,7 +45,76 @@ impl KernelsFigure {
         Self {
             h: 0.1,
             dim: Dim::Two,
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
         }
+    }
+
+    /// How the student's exercise is called (the page's sandbox; tests pass their own).
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+    }
+
+    /// Plots the student's poly6 (exercise 15.1, 2D) beside the reference.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+    }
+
+    /// The student's poly6 over the plot's rows as a share of the reference's peak (`None` when
+    /// the exercise is off or gave no answer), and the note: where it differs most from the
+    /// reference, or why it could not run (empty when the exercise is off).
+    pub fn exercise(&self, samples: usize) -> Result<(Option<Vec<f32>>, String), String> {
+        super::check_samples(samples)?;
+        if !self.use_exercise {
+            return Ok((None, String::new()));
+        }
+        if self.dim != Dim::Two {
+            return Ok((
+                None,
+                "Exercise 15.1 is the 2D kernel: choose 2D to see yours.".into(),
+            ));
+        }
+        let k = Kernels::new(self.h, Dim::Two);
+        let peak = k.poly6(0.0);
+        let mut yours = Vec::with_capacity(samples);
+        let mut worst = (0.0f32, 0.0f32, 0.0f32, 0.0f32);
+        for i in 0..samples {
+            let r = 1.25 * self.h * i as f32 / (samples - 1) as f32;
+            let reference = k.poly6(r * r);
+            match run::poly6(self.runner, r * r, self.h) {
+                Err(f) => {
+                    let note = failure_note("exercise 15.1 poly6", FILE, &f);
+                    return Ok((None, note));
+                }
+                Ok(w) => {
+                    let error = if w.is_nan() {
+                        f32::INFINITY
+                    } else {
+                        (w - reference).abs()
+                    };
+                    if error > worst.0 {
+                        worst = (error, r, w, reference);
+                    }
+                    yours.push(w / peak);
+                }
+            }
+        }
+        let (error, r, w, reference) = worst;
+        let at = format!(
+            "r = {} m, h = {} m",
+            format_number(r),
+            format_number(self.h)
+        );
+        let (_, note) = compare_note("poly6", &at, &[w], &[reference], 1e-4 * peak);
+        let note = if error <= 1e-4 * peak {
+            format!(
+                "Your poly6 matches the reference at all {samples} distances (h = {} m).",
+                format_number(self.h)
+            )
+        } else {
+            note
+        };
+        Ok((Some(yours), note))
     }
 
     /// Sets the support radius (0.01 to 1 m) and the dimension (2 or 3); nothing changes on an
@@ -79,18 +163,44 @@ impl KernelsFigure {
 pub const DENSITY_PARTICLES: usize = 500;
 /// The density figure's kernel radius, in particle spacings (about 23 neighbours in 2D).
 pub const DENSITY_H_SPACINGS: f32 = 2.7;
+/// How near the pointer must be to the dragged particle to grab it, CSS pixels.
+pub const GRAB_RADIUS_PX: f32 = 20.0;
+/// The pressure-force arrow's length: `ARROW_MAX_M · tanh(|F| / (m · ARROW_ACCEL))`, so that a
+/// small force still shows and a large one stays inside the box.
+const ARROW_MAX_M: f32 = 0.25;
+const ARROW_ACCEL: f32 = 50.0;
+
+/// What SPH and PBF make of the dragged particle's neighbourhood: its density, its pressure,
+/// the pressure force of its neighbours, and its PBF `λ` with the move `λ ∇ᵢCᵢ` it asks of the
+/// particle.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ProbeForces {
+    pub density: f32,
+    pub pressure: f32,
+    pub force: Vec3,
+    pub lambda: f32,
+    pub correction: Vec3,
+}
 
 /// A 2D pool at rest whose first particle the reader moves (the probe). Dropped into the
-/// water, the probe takes the place of the particle nearest to it (within half a spacing).
+/// water, the probe takes the place of the particle nearest to it (within half a spacing),
+/// which goes to the probe's own place in the lattice: every particle then counts once.
 #[derive(Clone, Debug)]
 pub struct DensityFigure {
     fluid: Fluid,
+    /// The lattice at rest, before the probe moved.
+    home: Vec<Vec3>,
     /// The probe's neighbours (indices) and their distances, after the last move.
     neighbours: Vec<(usize, f32)>,
-    probe_density: f32,
-    /// The particle the probe stands in for: the nearest one within half a spacing, left out of
-    /// the sum and the drawing (two particles in one place would count the fluid there twice).
-    replaced: Option<usize>,
+    /// The reference's values at the probe, and the ones the figure shows (the student's, when
+    /// "use my exercise" is on and they answered).
+    reference: ProbeForces,
+    shown: ProbeForces,
+    use_exercise: bool,
+    runner: Runner,
+    exercise_note: String,
+    /// The camera and canvas size (CSS pixels) of the last frame, for picking.
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for DensityFigure {
@@ -105,10 +215,15 @@ impl DensityFigure {
         params.h = DENSITY_H_SPACINGS * spacing_for(Dim::Two, Scene::Pool, DENSITY_PARTICLES);
         let fluid = Fluid::new(params, Scene::Pool, DENSITY_PARTICLES, 1).expect("valid defaults");
         let mut figure = Self {
+            home: fluid.positions.clone(),
             fluid,
             neighbours: Vec::new(),
-            probe_density: 0.0,
-            replaced: None,
+            reference: ProbeForces::default(),
+            shown: ProbeForces::default(),
+            use_exercise: false,
+            runner: DEFAULT_RUNNER,
+            exercise_note: String::new(),
+            view: None,
         };
         // The probe starts in the middle of the pool (0.4 m deep), half-way down.
         figure
@@ -126,16 +241,37 @@ impl DensityFigure {
         self.fluid.params.h
     }
 
+    /// How the student's exercises are called (the page's sandbox; tests pass their own).
+    pub fn set_runner(&mut self, runner: Runner) {
+        self.runner = runner;
+        self.evaluate();
+    }
+
+    /// Computes the probe's density, force and `λ` with the student's 15.2 to 15.4.
+    pub fn set_use_exercise(&mut self, on: bool) {
+        self.use_exercise = on;
+        self.evaluate();
+    }
+
     /// Moves the probe (particle 0) to `(x, y)` inside the box and recomputes every density;
     /// an error leaves the figure as it was.
     pub fn set_probe(&mut self, x: f32, y: f32) -> Result<(), String> {
-        let size = crate::fluid::box_size(Dim::Two);
+        let size = box_size(Dim::Two);
         let x = super::in_range("x (m)", x, 0.0, size.x)?;
         let y = super::in_range("y (m)", y, 0.0, size.y)?;
-        self.fluid.positions[0] = Vec3::new(x, y, 0.0);
+        let p = Vec3::new(x, y, 0.0);
+        self.fluid.positions.clone_from(&self.home);
+        self.fluid.positions[0] = p;
+        // The particle the probe lands on moves to the probe's place in the lattice.
+        let nearest = (1..self.home.len())
+            .map(|j| (j, (self.home[j] - p).length()))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .filter(|&(_, r)| r < 0.5 * self.fluid.spacing);
+        if let Some((j, _)) = nearest {
+            self.fluid.positions[j] = self.home[0];
+        }
         self.fluid.search();
         self.fluid.refresh_densities();
-        let p = self.fluid.positions[0];
         self.neighbours = self
             .fluid
             .neighbours(0)
@@ -143,29 +279,155 @@ impl DensityFigure {
             .map(|&j| (j as usize, (self.fluid.positions[j as usize] - p).length()))
             .collect();
         self.neighbours.sort_by(|a, b| a.1.total_cmp(&b.1));
-        self.replaced = self
-            .neighbours
-            .first()
-            .filter(|&&(_, r)| r < 0.5 * self.fluid.spacing)
-            .map(|&(j, _)| j);
-        if self.replaced.is_some() {
-            self.neighbours.remove(0);
-        }
-        self.probe_density = density(
-            p,
-            self.neighbours
-                .iter()
-                .map(|&(j, _)| self.fluid.positions[j]),
-            self.fluid.mass,
-            self.h(),
-            Dim::Two,
-        );
+        self.evaluate();
         Ok(())
+    }
+
+    /// The probe's and its neighbours' positions, densities and pressures.
+    fn neighbourhood(&self) -> (Vec3, Vec<(Vec3, f32, f32)>) {
+        let f = &self.fluid;
+        let nbrs = self
+            .neighbours
+            .iter()
+            .map(|&(j, _)| {
+                let rho = f.densities[j];
+                (f.positions[j], rho, f.pressure(rho))
+            })
+            .collect();
+        (f.positions[0], nbrs)
+    }
+
+    /// The reference's density, force and `λ` at the probe, then the student's when asked.
+    fn evaluate(&mut self) {
+        let f = &self.fluid;
+        let (h, m, rho0) = (f.params.h, f.mass, f.params.rest_density);
+        let eps = f.params.relaxation;
+        let (p, nbrs) = self.neighbourhood();
+        let rho = density(p, nbrs.iter().map(|n| n.0), m, h, Dim::Two);
+        let pressure = f.pressure(rho);
+        let force: Vec3 = nbrs
+            .iter()
+            .map(|&(x, rho_j, p_j)| {
+                let v = [Vec3::ZERO; 2];
+                pair_force(
+                    [p, x],
+                    v,
+                    [rho, rho_j],
+                    [pressure, p_j],
+                    m,
+                    0.0,
+                    h,
+                    Dim::Two,
+                )
+            })
+            .sum();
+        let lambda = pbf_lambda(p, nbrs.iter().map(|n| n.0), rho, m, rho0, eps, h, Dim::Two);
+        let kern = Kernels::new(h, Dim::Two);
+        let grad: Vec3 = nbrs
+            .iter()
+            .map(|n| m / rho0 * kern.spiky_gradient(p - n.0))
+            .sum();
+        self.reference = ProbeForces {
+            density: rho,
+            pressure,
+            force,
+            lambda,
+            correction: lambda * grad,
+        };
+        self.shown = self.reference;
+        self.exercise_note.clear();
+        if self.use_exercise {
+            self.run_exercises(&nbrs, grad);
+        }
+    }
+
+    /// Runs 15.2 to 15.4 at the probe, compares each with the reference and shows the
+    /// student's values where they answered.
+    fn run_exercises(&mut self, nbrs: &[(Vec3, f32, f32)], grad: Vec3) {
+        let f = &self.fluid;
+        let (h, m, rho0, eps) = (
+            f.params.h,
+            f.mass,
+            f.params.rest_density,
+            f.params.relaxation,
+        );
+        let p = f.positions[0].truncate();
+        let points: Vec<Vec2> = nbrs.iter().map(|n| n.0.truncate()).collect();
+        let r = self.reference;
+        let at = format!(
+            "the dragged particle at ({}, {}) m with {} neighbours",
+            format_number(p.x),
+            format_number(p.y),
+            points.len()
+        );
+        let mut notes = Vec::new();
+        match run::sph_density(self.runner, p, points.clone(), m, h) {
+            Err(e) => notes.push(failure_note("exercise 15.2 sph_density", FILE, &e)),
+            Ok(rho) => {
+                notes.push(
+                    compare_note("sph_density", &at, &[rho], &[r.density], 1e-4 * r.density).1,
+                );
+                if rho.is_finite() {
+                    self.shown.density = rho;
+                }
+            }
+        }
+        // The force as the sum of the student's pair forces, with the reference's densities
+        // and pressures (each exercise is checked on its own).
+        let mut force = Vec2::ZERO;
+        let mut failed = None;
+        for &(x, rho_j, p_j) in nbrs {
+            let pair = [p, x.truncate()];
+            match run::pressure_force(
+                self.runner,
+                pair,
+                [r.density, rho_j],
+                [r.pressure, p_j],
+                m,
+                h,
+            ) {
+                Ok(fij) => force += fij,
+                Err(e) => {
+                    failed = Some(e);
+                    break;
+                }
+            }
+        }
+        match failed {
+            Some(e) => notes.push(failure_note("exercise 15.3 pressure_force", FILE, &e)),
+            None => {
+                let reference = r.force.truncate();
+                let tol = 1e-4 * (1.0 + reference.length());
+                let what = "pressure_force, summed over the neighbours,";
+                notes
+                    .push(compare_note(what, &at, &force.to_array(), &reference.to_array(), tol).1);
+                if force.is_finite() {
+                    self.shown.force = force.extend(0.0);
+                }
+            }
+        }
+        match run::pbf_lambda(self.runner, p, points, r.density, m, rho0, eps, h) {
+            Err(e) => notes.push(failure_note("exercise 15.4 pbf_lambda", FILE, &e)),
+            Ok(lambda) => {
+                let tol = 1e-4 * (1e-6 + r.lambda.abs());
+                notes.push(compare_note("pbf_lambda", &at, &[lambda], &[r.lambda], tol).1);
+                if lambda.is_finite() {
+                    self.shown.lambda = lambda;
+                    self.shown.correction = lambda * grad;
+                }
+            }
+        }
+        self.exercise_note = notes.join(" ");
     }
 
     /// The probe's density, kg/m² (2D), and its neighbours' count.
     pub fn probe(&self) -> (f32, usize) {
-        (self.probe_density, self.neighbours.len())
+        (self.shown.density, self.neighbours.len())
+    }
+
+    /// What the figure shows at the probe (the student's values with "use my exercise").
+    pub fn forces(&self) -> ProbeForces {
+        self.shown
     }
 
     /// One row per neighbour, nearest first: `[distance / h, m W(r)]`, and the probe's own
@@ -182,19 +444,58 @@ impl DensityFigure {
             .collect()
     }
 
+    /// The camera and canvas size (CSS pixels) of the last frame, for picking.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
+    fn view_proj(&self) -> Option<(Mat4, Vec2)> {
+        let (camera, size) = self.view?;
+        Some((camera.projection(size.x / size.y) * camera.view(), size))
+    }
+
+    /// Whether a pointer at `(x, y)` CSS pixels is on the dragged particle.
+    pub fn hits_probe(&self, x_px: f32, y_px: f32) -> Result<bool, String> {
+        let p = Vec2::new(super::finite("x", x_px)?, super::finite("y", y_px)?);
+        let Some((view_proj, size)) = self.view_proj() else {
+            return Ok(false);
+        };
+        Ok(project_to_canvas(view_proj, size, self.fluid.positions[0])
+            .is_some_and(|s| s.distance(p) <= GRAB_RADIUS_PX))
+    }
+
+    /// Moves the probe under a pointer at `(x, y)` CSS pixels: the point of the slab (z = 0)
+    /// under it, kept inside the box.
+    pub fn drag_probe(&mut self, x_px: f32, y_px: f32) -> Result<(), String> {
+        let p = Vec2::new(super::finite("x", x_px)?, super::finite("y", y_px)?);
+        let Some((view_proj, size)) = self.view_proj() else {
+            return Ok(());
+        };
+        let anchor = self.fluid.positions[0];
+        if let Some(world) = point_on_view_plane(view_proj, size, anchor, p) {
+            let b = box_size(Dim::Two);
+            self.set_probe(world.x.clamp(0.0, b.x), world.y.clamp(0.0, b.y))?;
+        }
+        Ok(())
+    }
+
+    /// The probe's position, metres.
+    pub fn probe_position(&self) -> Vec3 {
+        self.fluid.positions[0]
+    }
+
     /// The pool's particles coloured by density (white at the rest density, red above, blue
-    /// below), the probe's support circle, lines to its neighbours (thicker for larger weights)
-    /// and its label. Returns the note.
+    /// below), the probe's support circle, lines to its neighbours (thicker for larger weights),
+    /// the pressure force on it and PBF's move. Returns the note.
     pub fn draw(&self, frame: &mut Frame) -> String {
         let f = &self.fluid;
         let rho0 = f.params.rest_density;
         let h = self.h();
-        let size = crate::fluid::box_size(Dim::Two);
+        let size = box_size(Dim::Two);
         let radius = 0.35 * f.spacing;
         for (i, &p) in f.positions.iter().enumerate().skip(1) {
-            if Some(i) == self.replaced {
-                continue;
-            }
             let ratio = f.densities[i] / rho0 - 1.0;
             // Full red or blue at ±50 % of the rest density.
             let color = super::noise::diverging_color(ratio / 0.5 * 0.6).truncate();
@@ -224,6 +525,20 @@ impl DensityFigure {
             "dragged particle",
             palette::PURPLE,
         );
+        let s = self.shown;
+        let accel = s.force.length() / f.mass;
+        if accel > 1e-3 && accel.is_finite() {
+            let length = ARROW_MAX_M * (accel / ARROW_ACCEL).tanh();
+            frame.arrow(
+                p,
+                p + s.force / s.force.length() * length,
+                palette::TEAL,
+                0.04,
+            );
+        }
+        if s.correction.length() > 1e-6 && s.correction.is_finite() {
+            frame.arrow(p, p + s.correction, palette::ORANGE, 0.02);
+        }
         // The box's walls.
         let corners = [
             Vec3::ZERO,
@@ -235,13 +550,23 @@ impl DensityFigure {
         frame.wide_polyline(&corners, palette::DARK, 2.0);
         frame.keep_box_in_view(Vec3::ZERO, size);
         let (rho, n) = self.probe();
-        format!(
-            "ρ = {} kg/m² from {n} neighbours within h = {} m and itself: {} of the rest density {} kg/m².",
+        let mut note = format!(
+            "ρ = {} kg/m² from {n} neighbours within h = {} m and itself: {} of the rest density {} kg/m². SPH: pressure {} Pa, force {} N ({} m/s² on the particle). PBF: λ = {}, a move of {} mm.",
             format_number(rho),
             format_number(h),
             format_number(rho / rho0),
-            format_number(rho0)
-        )
+            format_number(rho0),
+            format_number(s.pressure),
+            format_number(s.force.length()),
+            format_number(accel),
+            format_number(s.lambda),
+            format_number(1000.0 * s.correction.length()),
+        );
+        if self.use_exercise {
+            note.push(' ');
+            note.push_str(&self.exercise_note);
+        }
+        note
     }
 }
 
@@ -250,7 +575,7 @@ pub const DAM_PARTICLES: usize = 800;
 /// The figure's frame: the fluids are stepped to the timeline's time at their own steps.
 pub const DAM_FRAME_SEC: f32 = 1.0 / 60.0;
 /// The longest the timeline runs, seconds (the samples of the plots cover it).
-pub const DAM_DURATION_SEC: f32 = 6.0;
+pub const DAM_DURATION_SEC: f32 = 4.0;
 
 /// SPH and PBF on the same 2D dam break, side by side: SPH at its small step (Tait, `k` the
 /// reader's stiffness), PBF at 1/240 s. The state at time `t` is the state after the steps up to
@@ -310,7 +635,9 @@ impl DamBreakFigure {
     /// the time goes back; records a sample per frame passed.
     pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
         let t = super::in_range("time (s)", time_sec, 0.0, DAM_DURATION_SEC)?;
-        if t + 1e-6 < self.fluids[1].time {
+        // A frame is taken once less than half of it is left to `t`, so the fluids may be up to
+        // half a frame past `t`: only an earlier time starts over.
+        if t + 0.5 * DAM_FRAME_SEC + 1e-6 < self.fluids[1].time {
             self.reset();
         }
         while self.fluids[1].time + 0.5 * DAM_FRAME_SEC <= t {
@@ -389,4 +716,243 @@ impl DamBreakFigure {
             describe(&self.fluids[1], "PBF")
         )
     }
+}
+
+/// The splash's particle counts: the fewest, the default and the most the page offers.
+pub const SPLASH_MIN: usize = 500;
+pub const SPLASH_DEFAULT: usize = 3000;
+pub const SPLASH_MAX: usize = 20_000;
+/// The splash's kernel radius, in particle spacings (about 33 neighbours in 3D).
+pub const SPLASH_H_SPACINGS: f32 = 2.0;
+/// The timeline's length, simulated seconds.
+pub const SPLASH_DURATION_SEC: f32 = 3.0;
+/// The most steps one call of [`SplashFigure::advance_to`] takes: a frame that cannot catch up
+/// leaves the rest to the next frames (the fluid falls behind the timeline) instead of holding
+/// the page.
+pub const SPLASH_STEPS_PER_CALL: usize = 8;
+/// The step-time sweep's sizes, particles.
+pub const SPLASH_SWEEP_SIZES: [usize; 6] = [250, 500, 1000, 2000, 4000, 8000];
+
+/// The 3D splash's kernel radius for `count` particles.
+fn splash_h(count: usize) -> f32 {
+    SPLASH_H_SPACINGS * spacing_for(Dim::Three, Scene::Drop, count)
+}
+
+/// A 3D fluid for `count` particles: the splash's drop, or the sweep's dam break.
+fn fluid_3d(method: Method, scene: Scene, count: usize, vorticity: f32) -> Result<Fluid, String> {
+    let mut params = FluidParams::default_3d(method);
+    params.h = SPLASH_H_SPACINGS * spacing_for(Dim::Three, scene, count);
+    params.vorticity = vorticity;
+    Fluid::new(params, scene, count, 5)
+}
+
+/// A ball of water dropped into a pool in 3D, stepped by SPH or PBF with the grid or all pairs,
+/// and the step-time sweep the page runs beside it.
+#[derive(Clone, Debug)]
+pub struct SplashFigure {
+    start: Fluid,
+    fluid: Fluid,
+    method: Method,
+    count: usize,
+    search: Search,
+    vorticity: f32,
+    sweep: StepTimeSweep,
+    /// The fluid the sweep times, at the size it asked for.
+    bench: Option<Fluid>,
+}
+
+impl Default for SplashFigure {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+fn parse_method(name: &str) -> Result<Method, String> {
+    match name {
+        "SPH" => Ok(Method::Sph),
+        "PBF" => Ok(Method::Pbf),
+        other => Err(format!("method must be \"SPH\" or \"PBF\", got {other:?}")),
+    }
+}
+
+fn parse_search(name: &str) -> Result<Search, String> {
+    match name {
+        "grid" => Ok(Search::Grid),
+        "all pairs" => Ok(Search::AllPairs),
+        other => Err(format!(
+            "search must be \"grid\" or \"all pairs\", got {other:?}"
+        )),
+    }
+}
+
+impl SplashFigure {
+    pub fn new() -> Self {
+        let start =
+            fluid_3d(Method::Pbf, Scene::Drop, SPLASH_DEFAULT, 0.0).expect("valid defaults");
+        Self {
+            fluid: start.clone(),
+            start,
+            method: Method::Pbf,
+            count: SPLASH_DEFAULT,
+            search: Search::Grid,
+            vorticity: 0.0,
+            sweep: StepTimeSweep::with(
+                &SPLASH_SWEEP_SIZES,
+                ["grid", "all-pairs"],
+                "particles",
+                1000,
+            ),
+            bench: None,
+        }
+    }
+
+    /// Chooses the solver ("SPH" or "PBF"), about `count` particles (whole, from
+    /// [`SPLASH_MIN`] to [`SPLASH_MAX`]), the search ("grid" or "all pairs") and PBF's
+    /// vorticity confinement `ε` (0 to 0.5), and starts over; nothing changes on an error.
+    pub fn set(
+        &mut self,
+        method: &str,
+        count: f32,
+        search: &str,
+        vorticity: f32,
+    ) -> Result<(), String> {
+        let method = parse_method(method)?;
+        let count = super::whole_number("particles", count, SPLASH_MIN, SPLASH_MAX)?;
+        let search = parse_search(search)?;
+        let vorticity = super::in_range("vorticity confinement", vorticity, 0.0, 0.5)?;
+        let same_fluid = (method, count, vorticity) == (self.method, self.count, self.vorticity);
+        if !same_fluid {
+            self.start = fluid_3d(method, Scene::Drop, count, vorticity)?;
+        }
+        self.start.set_search(search);
+        (self.method, self.count, self.search, self.vorticity) = (method, count, search, vorticity);
+        self.fluid = self.start.clone();
+        Ok(())
+    }
+
+    pub fn fluid(&self) -> &Fluid {
+        &self.fluid
+    }
+
+    /// The kernel radius at the present count, metres.
+    pub fn h(&self) -> f32 {
+        splash_h(self.count)
+    }
+
+    /// Steps towards `time_sec` (0 to [`SPLASH_DURATION_SEC`]), at most
+    /// [`SPLASH_STEPS_PER_CALL`] steps; back in time starts over. Returns the steps taken.
+    pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, String> {
+        let t = super::in_range("time (s)", time_sec, 0.0, SPLASH_DURATION_SEC)?;
+        // A step is taken once less than half of it is left to `t`: only a time more than half
+        // a step before the fluid's starts over.
+        if t + 0.5 * self.fluid.params.dt + 1e-6 < self.fluid.time {
+            self.fluid = self.start.clone();
+        }
+        let mut steps = 0;
+        while steps < SPLASH_STEPS_PER_CALL
+            && self.fluid.exploded().is_none()
+            && self.fluid.time + 0.5 * self.fluid.params.dt <= t
+        {
+            self.fluid.step();
+            steps += 1;
+        }
+        Ok(steps)
+    }
+
+    /// The particles coloured by speed (blue at rest, through white, to red at 3 m/s), the
+    /// box's edges; returns the note.
+    pub fn draw(&self, frame: &mut Frame) -> String {
+        let f = &self.fluid;
+        let size = box_size(Dim::Three);
+        for (p, v) in f.positions.iter().zip(&f.velocities) {
+            let speed = (v.length() / 3.0).min(1.0);
+            let color = super::noise::diverging_color(1.2 * speed - 0.6).truncate();
+            frame.point(*p, 0.45 * f.spacing, color);
+        }
+        let corners = |i: usize| {
+            Vec3::new(
+                if i & 1 == 0 { 0.0 } else { size.x },
+                if i & 2 == 0 { 0.0 } else { size.y },
+                if i & 4 == 0 { 0.0 } else { size.z },
+            )
+        };
+        for i in 0..8 {
+            for bit in [1, 2, 4] {
+                if i & bit == 0 {
+                    frame.wide_line(corners(i), corners(i | bit), palette::GREY, 1.5);
+                }
+            }
+        }
+        frame.keep_box_in_view(Vec3::ZERO, size);
+        let name = match self.method {
+            Method::Sph => "SPH",
+            Method::Pbf => "PBF",
+        };
+        match f.exploded() {
+            Some((t, why)) => format!("{name} stopped at t = {} s: {why}.", format_number(t)),
+            None => {
+                let s = f.stats();
+                format!(
+                    "{name}, {} particles, h = {} m, t = {} s: largest compression {:.1} %, fastest particle {} m/s.",
+                    f.len(),
+                    format_number(f.params.h),
+                    format_number(f.time),
+                    100.0 * s.density_error_max.max(0.0),
+                    format_number(s.max_speed)
+                )
+            }
+        }
+    }
+
+    /// Starts the step-time sweep again (the page's "measure" button).
+    pub fn start_sweep(&mut self) {
+        self.sweep = StepTimeSweep::with(
+            &SPLASH_SWEEP_SIZES,
+            ["grid", "all-pairs"],
+            "particles",
+            1000,
+        );
+    }
+
+    /// The search the sweep times next ("grid" or "all-pairs"), with the timing fluid (a 3D
+    /// SPH dam break) built at its size, or `None` when the sweep is done. The page times
+    /// [`SplashFigure::timing_step`], then calls [`SplashFigure::record_sweep`].
+    pub fn next_sweep_timing(&mut self) -> Result<Option<&'static str>, String> {
+        let Some((n, search)) = self.sweep.next_timing() else {
+            return Ok(None);
+        };
+        if self.bench.as_ref().map(|f| f.params.h) != Some(splash_h_pool(n)) {
+            let mut fluid = fluid_3d(Method::Sph, Scene::Pool, n, 0.0)?;
+            fluid.step(); // the neighbour lists' first allocation stays out of the timings
+            self.bench = Some(fluid);
+        }
+        Ok(Some(search))
+    }
+
+    /// One SPH step of the timing fluid with `search` ("grid" or "all-pairs").
+    pub fn timing_step(&mut self, search: &str) -> Result<(), String> {
+        let search = match search {
+            "all-pairs" => Search::AllPairs,
+            other => parse_search(other)?,
+        };
+        let fluid = self.bench.as_mut().ok_or("ask for the next timing first")?;
+        fluid.set_search(search);
+        fluid.step();
+        Ok(())
+    }
+
+    /// Records the timing of [`SplashFigure::next_sweep_timing`]: milliseconds per step.
+    pub fn record_sweep(&mut self, ms: f32) -> Result<(), String> {
+        self.sweep.record(ms)
+    }
+
+    /// The sweep, for its plot samples and note.
+    pub fn sweep(&mut self) -> &mut StepTimeSweep {
+        &mut self.sweep
+    }
+}
+
+/// The sweep's pool's kernel radius for `count` particles.
+fn splash_h_pool(count: usize) -> f32 {
+    SPLASH_H_SPACINGS * spacing_for(Dim::Three, Scene::Pool, count)
 }

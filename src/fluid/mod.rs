@@ -632,7 +632,7 @@ impl Fluid {
         std::mem::swap(&mut self.positions, &mut self.predicted);
     }
 
-    /// Vorticity confinement (PBF): `ω_i = Σ (m/ρ_j)(v_j − v_i) × ∇W_ij`, `N = η/|η|` with
+    /// Vorticity confinement (PBF): `ω_i = Σ (m/ρ_j)(v_j − v_i) × ∇_j W_ij`, `N = η/|η|` with
     /// `η = ∇|ω|`, and `v_i += Δt ε (N × ω_i)`: it gives back the swirls that damping takes.
     fn confine_vorticity(&mut self) {
         let (h, dim, m, dt, eps) = (
@@ -649,7 +649,10 @@ impl Fluid {
                 let mut w = Vec3::ZERO;
                 for &j in self.neighbours(i) {
                     let j = j as usize;
-                    let g = kern.spiky_gradient(x[i] - x[j]);
+                    // ∇_j W_ij (the paper's form): the gradient with respect to x_j, the
+                    // opposite of `spiky_gradient(x_i − x_j)`. With ∇_i W the curl's sign
+                    // flips and the "confinement" damps the swirls instead.
+                    let g = kern.spiky_gradient(x[j] - x[i]);
                     w += m / self.densities[j] * (self.velocities[j] - self.velocities[i]).cross(g);
                 }
                 w

@@ -69,6 +69,7 @@ figures_module! {
     mod cloth;
     mod curves;
     mod expressive;
+    mod fluid;
     mod gltf;
     mod ik;
     mod noise;
@@ -90,6 +91,7 @@ figures_module! {
     pub use cloth::{check_cloth, ClothScene, SpringScene};
     pub use curves::{CardinalScene, KeyframesScene, LagrangeScene};
     pub use expressive::{FollowThroughScene, JumpScene, SpacingScene, StretchScene};
+    pub use fluid::{DamBreakScene, DensityScene, KernelsScene, SplashScene};
     pub use ik::{AimScene, IkScene};
     pub use noise::{
         FractalsScene, Noise1dScene, Noise2dScene, OctavesScene, QuizScene, TerrainFigureScene,

@@ -1,0 +1,246 @@
+// Lesson 15: wires the page's controls to the wasm scenes. No math here: it lives in Rust
+// (src/fluid/, src/figures/fluid.rs), which also says what each figure draws and plots.
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
+import { KernelsScene, DensityScene, DamBreakScene, SplashScene } from '../../pkg/inbetween.js';
+
+const lesson = await startLesson();
+const ORANGE = cssVar('--orange');
+const TEAL = cssVar('--teal');
+const PURPLE = cssVar('--purple');
+const BLUE = cssVar('--z-axis');
+const RED = cssVar('--x-axis');
+const DARK = cssVar('--dark');
+const GREY = cssVar('--grey');
+
+/** NaN (a curve that stops, a sample not taken) as uPlot's gap. */
+const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) ? v : null))));
+
+// Figure 1: the kernels, plotted; no canvas.
+{
+  const scene = new KernelsScene();
+  const gui = new GUI({ container: document.querySelector('#fig-kernels .panel'), title: 'Kernels' });
+  const p = { h: 10, dim: '2D', useExercise: false };
+  gui.add(p, 'h', 2, 30, 0.5).name('support radius h (cm)');
+  gui.add(p, 'dim', ['2D', '3D']).name('dimension');
+  gui.add(p, 'useExercise').name('use my exercise');
+  const plot = new Plot(document.getElementById('kernels-plot'), {
+    title: 'Kernels as shares of their peaks', xLabel: 'distance r (m)', yLabel: 'W (share of its peak)',
+    series: ['poly6', 'spiky', 'spiky slope −dW/dr', 'viscosity ∇²W', 'your poly6'],
+    colors: [PURPLE, BLUE, TEAL, ORANGE, DARK], widths: [3, 2, 2, 2, 2], dashes: [null, null, null, null, [6, 4]],
+    yRange: [0, 1.05],
+  });
+  const note = document.getElementById('kernels-note');
+  let rejected = '';
+  const apply = guarded(gui, p, () => {
+    scene.set(p.h / 100, p.dim === '2D' ? 2 : 3);
+    scene.setUseExercise(p.useExercise);
+    const cols = columns(scene.samples(), 5);
+    const yours = scene.yourCurve();
+    cols.push(yours.length ? Array.from(yours, (v) => (Number.isFinite(v) ? v : null)) : cols[0].map(() => null));
+    plot.setData(cols);
+    rejected = '';
+  }, (m) => { rejected = m; });
+  gui.onChange(() => { apply(); showNote(note, [rejected, scene.note()].filter(Boolean).join(' ')); markDrawn('#fig-kernels'); });
+  apply();
+  showNote(note, scene.note());
+  markDrawn('#fig-kernels');
+}
+
+// Figure 2: a pool at rest and one dragged particle.
+{
+  const viewer = await lesson.figure('#fig-density');
+  if (viewer) {
+    // Square-on to the slab, the whole box in view.
+    viewer.setCamera(0.8, 0.5, 0, 2.6, 0, 0);
+    const scene = new DensityScene();
+    const gui = new GUI({ container: document.querySelector('#fig-density .panel'), title: 'Dragged particle' });
+    const p = { x: 0.8, y: 0.2, useExercise: false };
+    const xs = gui.add(p, 'x', 0, 1.6, 0.002).name('x (m)');
+    const ys = gui.add(p, 'y', 0, 1, 0.002).name('y (m)');
+    gui.add(p, 'useExercise').name('use my exercise');
+    const terms = new Plot(document.getElementById('density-terms'), {
+      title: 'Terms of the density sum, nearest first', xLabel: 'distance r / h (no unit)', yLabel: 'm W(r) (kg/m²)',
+      series: ['m W(r) of each term'], colors: [PURPLE], points: true, minSpan: 0.1,
+    });
+    let rejected = '';
+    const apply = guarded(gui, p, () => {
+      scene.setProbe(p.x, p.y);
+      scene.setUseExercise(p.useExercise);
+      terms.setData(columns(scene.terms(), 2));
+      rejected = '';
+    }, (m) => { rejected = m; });
+    gui.onChange(apply);
+    apply();
+
+    // Dragging the particle: capture-phase listeners on the stage run before the canvas's orbit
+    // controls and take the event only when the pointer is on the particle (Rust decides).
+    const canvas = document.querySelector('#fig-density .stage canvas');
+    const stage = canvas.parentElement;
+    const local = (e) => {
+      const r = canvas.getBoundingClientRect();
+      return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
+    };
+    let dragging = null;
+    stage.addEventListener('pointerdown', (e) => {
+      if (e.target !== canvas || e.button !== 0 || e.shiftKey) return;
+      if (!scene.hitsProbe(...local(e))) return;
+      e.stopPropagation();
+      dragging = e.pointerId;
+      canvas.setPointerCapture(e.pointerId);
+      canvas.classList.add('dragging');
+    }, { capture: true });
+    stage.addEventListener('pointermove', (e) => {
+      if (dragging === null) {
+        if (e.target === canvas) canvas.classList.toggle('over-target', scene.hitsProbe(...local(e)));
+        return;
+      }
+      if (e.pointerId !== dragging) return;
+      e.stopPropagation();
+      scene.dragProbe(...local(e));
+      // Array.from: a Float32Array's own map would keep the rounded numbers as f32.
+      [p.x, p.y] = Array.from(scene.probe(), (v) => Math.round(v * 1000) / 1000);
+      xs.updateDisplay();
+      ys.updateDisplay();
+      terms.setData(columns(scene.terms(), 2));
+    }, { capture: true });
+    const release = (e) => {
+      if (e.pointerId !== dragging) return;
+      e.stopPropagation();
+      dragging = null;
+      canvas.classList.remove('dragging');
+    };
+    stage.addEventListener('pointerup', release, { capture: true });
+    stage.addEventListener('pointercancel', release, { capture: true });
+
+    const note = document.getElementById('density-note');
+    lesson.onFrame(() => {
+      showNote(note, [rejected, scene.draw(viewer)].filter(Boolean).join(' '));
+      markDrawn('#fig-density');
+    });
+  }
+}
+
+// Figure 3: SPH beside PBF on one dam break; the plots show the run so far.
+{
+  const viewer = await lesson.figure('#fig-dam');
+  if (viewer) {
+    viewer.setCamera(0, 0.55, 0, 4, 0, 0);
+    const scene = new DamBreakScene();
+    const timeline = new Timeline(document.getElementById('dam-timeline'), { duration: scene.durationSec() });
+    const gui = new GUI({ container: document.querySelector('#fig-dam .panel'), title: 'SPH' });
+    const p = { k: 400, dt: 0.83 };
+    gui.add(p, 'k', 25, 3200, 25).name('stiffness k');
+    gui.add(p, 'dt', 0.25, 5, 0.01).name('SPH time step Δt (ms)');
+    const compression = new Plot(document.getElementById('dam-compression'), {
+      title: 'Largest compression', xLabel: 'time (s)', yLabel: 'max ρ/ρ₀ − 1 (share)',
+      series: ['SPH', 'PBF'], colors: [BLUE, ORANGE], widths: [2, 3], minSpan: 0.05,
+    });
+    const energy = new Plot(document.getElementById('dam-energy'), {
+      title: 'Kinetic energy', xLabel: 'time (s)', yLabel: 'energy (J per m of depth)',
+      series: ['SPH', 'PBF'], colors: [BLUE, ORANGE], widths: [2, 3], minSpan: 1,
+    });
+    let rejected = '';
+    const replot = () => {
+      const all = gaps(columns(scene.samples(), 5));
+      // The x axis spans the whole timeline from the start: a last, empty row at its end.
+      all[0].push(timeline.duration);
+      for (let k = 1; k < 5; k++) all[k].push(null);
+      compression.setData([all[0], all[1], all[2]]);
+      energy.setData([all[0], all[3], all[4]]);
+    };
+    const apply = guarded(gui, p, () => {
+      scene.setSph(p.k, p.dt);
+      timeline.time = 0;
+      timeline.show();
+      rejected = '';
+      replot();
+    }, (m) => { rejected = m; });
+    gui.onChange(apply);
+    apply();
+    const note = document.getElementById('dam-note');
+    let frame = 0;
+    lesson.onFrame((dt) => {
+      const t = timeline.advance(dt);
+      showNote(note, [rejected, scene.draw(viewer, t)].filter(Boolean).join(' '));
+      if (frame++ % 6 === 0) replot();
+      compression.setCursor(t);
+      energy.setCursor(t);
+      markDrawn('#fig-dam');
+    });
+  }
+}
+
+// Figures 4 and 5: the 3D splash, and the step time against N.
+{
+  const viewer = await lesson.figure('#fig-splash');
+  if (viewer) {
+    viewer.setCamera(0.8, 0.35, 0.3, 3, 0.5, 0.45);
+    const scene = new SplashScene();
+    const timeline = new Timeline(document.getElementById('splash-timeline'), { duration: scene.durationSec() });
+    // A quarter of real speed: one PBF step of 1/240 s a 60 Hz frame.
+    timeline.speed = 0.25;
+    document.querySelector('#splash-timeline .speed').value = '0.25';
+    const gui = new GUI({ container: document.querySelector('#fig-splash .panel'), title: 'Splash' });
+    const p = { method: 'PBF', count: 3000, search: 'grid', vorticity: 0 };
+    gui.add(p, 'method', ['PBF', 'SPH']).name('solver');
+    gui.add(p, 'count', 500, 20000, 500).name('particles');
+    gui.add(p, 'search', ['grid', 'all pairs']).name('neighbour search');
+    gui.add(p, 'vorticity', 0, 0.5, 0.05).name('vorticity confinement ε (PBF)');
+    let rejected = '';
+    const apply = guarded(gui, p, () => {
+      scene.set(p.method, p.count, p.search, p.vorticity);
+      timeline.time = 0;
+      timeline.show();
+      rejected = '';
+    }, (m) => { rejected = m; });
+    gui.onChange(apply);
+    apply();
+
+    // Step time against N (Figure 5): Rust keeps the schedule and the statistics; the page only
+    // times the calls, one timing per frame so the page stays responsive.
+    const plot = new Plot(document.getElementById('splash-plot'), {
+      title: 'One SPH step in 3D: grid vs all pairs', xLabel: 'particles N (count)', yLabel: 'step time (ms)',
+      series: ['grid (median)', 'grid fastest', 'grid slowest', 'all pairs (median)', 'all pairs fastest',
+        'all pairs slowest', 'slope 1: t ∝ N', 'slope 2: t ∝ N²'],
+      colors: [BLUE, BLUE, BLUE, RED, RED, RED, GREY, DARK],
+      widths: [2.5, 1, 1, 2.5, 1, 1, 1.5, 1.5],
+      dashes: [null, [2, 3], [2, 3], null, [2, 3], [2, 3], [8, 5], [8, 5]],
+      log: 'xy',
+    });
+    const status = document.getElementById('splash-sweep');
+    const showSweep = () => {
+      const cols = columns(scene.sweepSamples(), 9).map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) && v > 0 ? v : null))));
+      plot.setData(cols);
+      showNote(status, scene.sweepNote());
+    };
+    const sweepStep = () => {
+      const search = scene.sweepNext();
+      if (!search) return;
+      // The page's clock ticks in 0.1 ms: a timing repeats the step for at least 2 ms.
+      let k = 0;
+      let elapsed = 0;
+      const t0 = performance.now();
+      do {
+        scene.timingStep(search);
+        k++;
+        elapsed = performance.now() - t0;
+      } while (elapsed < 2 && k < 64);
+      scene.sweepRecord(elapsed / k);
+      showSweep();
+    };
+    document.getElementById('splash-measure').addEventListener('click', () => { scene.startSweep(); showSweep(); });
+    showSweep();
+
+    const note = document.getElementById('splash-note');
+    lesson.onFrame((dt) => {
+      const t = timeline.advance(dt);
+      scene.advanceTo(t);
+      showNote(note, [rejected, scene.draw(viewer)].filter(Boolean).join(' '));
+      sweepStep();
+      markDrawn('#fig-splash');
+      markDrawn('#fig-timing');
+    });
+  } else {
+    markDrawn('#fig-timing');
+  }
+}
