@@ -33,9 +33,30 @@ pub use crate::draw::{palette, Frame, MeshId};
 pub use crate::exercises::run::{compare_note, format_number, Failure, Runner};
 use glam::{Mat3, Quat};
 
-/// The runner figures start with: natively the exercise runs in-process; the web layer swaps in
-/// `web::sandbox::run`.
+/// The runner figures start with: natively (and in debug and course-module builds) the exercise
+/// runs in-process; the web layer swaps in `web::sandbox::run`.
+#[cfg(not(all(
+    target_arch = "wasm32",
+    not(debug_assertions),
+    not(feature = "course-module"),
+    not(feature = "bench-module")
+)))]
 pub const DEFAULT_RUNNER: Runner = crate::exercises::run::direct;
+
+/// The release figures module never runs student code itself (the page's sandbox, an instance of
+/// the course module, does), so it starts with a runner that says so and carries none of the
+/// exercises' argument decoding.
+#[cfg(all(
+    target_arch = "wasm32",
+    not(debug_assertions),
+    not(feature = "course-module"),
+    not(feature = "bench-module")
+))]
+pub const DEFAULT_RUNNER: Runner = |name, _| {
+    Err(Failure::Call(format!(
+        "{name}: this page has no exercise sandbox"
+    )))
+};
 
 /// An error unless `value` is finite. Messages name the parameter, for the page.
 pub fn finite(name: &str, value: f32) -> Result<f32, String> {

@@ -6,8 +6,8 @@
 //! the flattened arguments to that object, which calls [`run_exercise`] in the sandbox. A panic
 //! there traps only the sandbox: the shell records the message (from [`super::install_panic_hook`]),
 //! answers this call and later calls of the same exercise with a `panic` error, and starts a fresh
-//! sandbox for the other exercises. Without a sandbox (browser unit tests, the bench page) the
-//! exercise runs in this instance.
+//! sandbox for the other exercises. Without a sandbox (browser unit tests) the exercise runs in
+//! this instance, except in the release figures module, which carries no exercise code.
 
 use crate::exercises::run::{self, Failure};
 use wasm_bindgen::prelude::*;
@@ -27,7 +27,7 @@ fn sandbox_present() -> bool {
 /// The [`run::Runner`] the figures use in the page.
 pub fn run(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
     if !sandbox_present() {
-        return run::direct(name, args);
+        return crate::figures::DEFAULT_RUNNER(name, args);
     }
     match sandbox_call(name, args) {
         Ok(out) => Ok(out.to_vec()),
@@ -53,7 +53,9 @@ pub fn run(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
 }
 
 /// Runs the exercise `name` in *this* instance (the sandbox). A stub throws an error whose message
-/// is `not-done`; a panic traps (the shell catches it).
+/// is `not-done`; a panic traps (the shell catches it). The shell's sandboxes are course modules;
+/// the release figures module has no copy of it (see `figures::DEFAULT_RUNNER`).
+#[cfg(any(debug_assertions, feature = "course-module"))]
 #[wasm_bindgen(js_name = runExercise)]
 pub fn run_exercise(name: JsValue, args: &[f32]) -> Result<Vec<f32>, JsError> {
     let name: &str = &super::string("name", &name)?;
