@@ -355,6 +355,10 @@ function tick(nowMs) {
   }
   const dt = lastMs === null ? 0 : Math.min((nowMs - lastMs) / 1000, 0.1);
   lastMs = nowMs;
+  if (renewLostFigures()) {
+    requestAnimationFrame(tick);
+    return;
+  }
   try {
     for (const cb of state.frameCallbacks) cb(dt);
     for (const figure of state.figures) figure.placeLabels?.();
@@ -366,6 +370,38 @@ function tick(nowMs) {
     return;
   }
   requestAnimationFrame(tick);
+}
+
+/**
+ * The browser can take the page's GPU away (a GPU process reset, a driver update): then no figure
+ * draws. While any figure's GPU is lost, the figures' frames stop (their scenes would draw with the
+ * lost device), each figure makes its GPU objects again on a new device (`Viewer.renew`), and a
+ * note at the top of the page says so. Returns true while that goes on.
+ */
+function renewLostFigures() {
+  const lost = state.figures.filter((f) => f.viewer.lost);
+  let note = document.getElementById('gpu-note');
+  if (!lost.length) {
+    note?.remove();
+    return false;
+  }
+  if (!note) {
+    note = document.createElement('div');
+    note.id = 'gpu-note';
+    note.setAttribute('role', 'status');
+    note.textContent = 'The browser reset the GPU; the figures are being set up again…';
+    document.body.prepend(note);
+    state.gpuResets = (state.gpuResets ?? 0) + 1;
+  }
+  for (const f of lost) {
+    try {
+      f.viewer.renew();
+    } catch (e) {
+      note.textContent = `The browser reset the GPU and it could not be set up again (${e.message ?? e}); ` +
+        'the page tries again; reloading it may help.';
+    }
+  }
+  return true;
 }
 
 /** Probes WebGPU once per page, so that WebGL2-only browsers log "No available adapters" once. */

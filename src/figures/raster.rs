@@ -1372,6 +1372,12 @@ impl Shading {
         &self.sphere
     }
 
+    /// Makes the next [`Shading::shade_sphere`] shade and return the sphere (its GPU copy was
+    /// lost).
+    pub fn reshade(&mut self) {
+        self.stale = true;
+    }
+
     /// Shades every vertex of [`Shading::sphere`] if anything changed since the last call;
     /// returns the sphere and its colours when they changed (to upload), `None` when they did
     /// not.

@@ -42,6 +42,9 @@ impl BackendChoice {
 /// (Chromium keeps at most 16 WebGL contexts a page, and each device costs start-up time and
 /// memory), and the pipelines compiled for it (see [`Gpu::cached`]).
 struct PageGpu {
+    choice: BackendChoice,
+    /// Names this page GPU in `LOST_DEVICES`.
+    id: u32,
     instance: wgpu::Instance,
     device: wgpu::Device,
     queue: wgpu::Queue,
@@ -52,8 +55,14 @@ struct PageGpu {
     encode_srgb_in_shader: bool,
     compute: bool,
     /// WebGL2: the hidden canvas whose context draws every figure (a WebGL2 context draws into
-    /// its own canvas only), its surface, and the size that surface is configured at.
-    gl: Option<(HtmlCanvasElement, wgpu::Surface<'static>, Cell<(u32, u32)>)>,
+    /// its own canvas only), its surface, the size that surface is configured at, and its
+    /// context (asked whether it is lost).
+    gl: Option<(
+        HtmlCanvasElement,
+        wgpu::Surface<'static>,
+        Cell<(u32, u32)>,
+        GlContext,
+    )>,
     /// Pipelines and layouts, one entry per type (see [`Gpu::cached`]).
     cache: RefCell<Vec<(TypeId, wgpu::TextureFormat, Rc<dyn Any>)>>,
     /// Multisampled colour and depth targets by size and format, most recently used last (see
@@ -72,6 +81,11 @@ type PageSlot = (BackendChoice, Option<Rc<PageGpu>>);
 
 thread_local! {
     static PAGE_GPUS: RefCell<Vec<PageSlot>> = const { RefCell::new(Vec::new()) };
+    /// The ids of page GPUs whose WebGPU device the browser reported lost.
+    static LOST_DEVICES: RefCell<Vec<u32>> = const { RefCell::new(Vec::new()) };
+    static NEXT_PAGE_ID: Cell<u32> = const { Cell::new(0) };
+    /// Why the last try to make a page GPU again failed, for [`Gpu::renew`] to report.
+    static RENEW_ERROR: RefCell<Option<String>> = const { RefCell::new(None) };
 }
 
 #[wasm_bindgen]
@@ -93,14 +107,19 @@ extern "C" {
         dw: f64,
         dh: f64,
     ) -> Result<(), JsValue>;
+
+    /// The hidden canvas's WebGL2 context.
+    type GlContext;
+    #[wasm_bindgen(method, js_name = isContextLost)]
+    fn is_context_lost(this: &GlContext) -> bool;
 }
 
 /// Where a figure's frames go.
 enum Target {
     /// WebGPU: the canvas's own surface on the page's device.
     Surface(wgpu::Surface<'static>),
-    /// WebGL2: the canvas and its `'2d'` context, into which the page's canvas is copied.
-    Copy(HtmlCanvasElement, Context2d),
+    /// WebGL2: the canvas's `'2d'` context, into which the page's canvas is copied.
+    Copy(Context2d),
 }
 
 /// The GPU objects of one canvas: the page's device and queue, and the canvas's surface.
@@ -117,6 +136,7 @@ pub struct Gpu {
     pub encode_srgb_in_shader: bool,
     /// Compute shaders and storage buffers are on (WebGPU only; see `compute.rs`).
     pub compute: bool,
+    canvas: HtmlCanvasElement,
     target: Target,
     page: Rc<PageGpu>,
 }
@@ -227,11 +247,21 @@ impl PageGpu {
         config.usage = wgpu::TextureUsages::RENDER_ATTACHMENT;
         config.alpha_mode = wgpu::CompositeAlphaMode::Auto;
         config.view_formats = vec![];
-        let gl = (info.backend == wgpu::Backend::Gl).then(|| {
-            configure(&surface, &device, &config);
-            (canvas, surface, Cell::new((1, 1)))
-        });
+        let gl = match info.backend {
+            wgpu::Backend::Gl => {
+                configure(&surface, &device, &config);
+                // The context wgpu made on the canvas: asking again returns it.
+                let context = canvas.get_context("webgl2").ok().flatten();
+                let context = context.ok_or("the WebGL2 canvas lost its context")?;
+                Some((canvas, surface, Cell::new((1, 1)), context.unchecked_into()))
+            }
+            _ => None,
+        };
+        let id = NEXT_PAGE_ID.replace(NEXT_PAGE_ID.get() + 1);
+        device.set_device_lost_callback(move |_, _| LOST_DEVICES.with_borrow_mut(|l| l.push(id)));
         Ok(Self {
+            choice,
+            id,
             instance,
             device,
             queue,
@@ -245,13 +275,26 @@ impl PageGpu {
             targets: RefCell::new(Vec::new()),
         })
     }
+
+    /// Whether the browser took the device (WebGPU) or the hidden canvas's context (WebGL2)
+    /// away: a GPU process that crashed or was reset, a driver update, `device.destroy()`,
+    /// `WEBGL_lose_context`. Nothing drawn with it shows any more.
+    fn lost(&self) -> bool {
+        match &self.gl {
+            Some((.., context)) => context.is_context_lost(),
+            None => LOST_DEVICES.with_borrow(|l| l.contains(&self.id)),
+        }
+    }
 }
 
 impl Gpu {
     /// The GPU objects of `canvas` on the page's device (made by the first canvas). The error
     /// says which backend was missing and what to try.
     pub async fn new(canvas: HtmlCanvasElement, choice: BackendChoice) -> Result<Self, String> {
-        let page = PageGpu::get(choice).await?;
+        Self::on_page(canvas, PageGpu::get(choice).await?)
+    }
+
+    fn on_page(canvas: HtmlCanvasElement, page: Rc<PageGpu>) -> Result<Self, String> {
         let mut config = page.config.clone();
         config.width = canvas.width().max(1);
         config.height = canvas.height().max(1);
@@ -263,9 +306,9 @@ impl Gpu {
                 .ok_or("the figure's canvas has no 2d context (it has another kind already)")?;
             canvas.set_width(config.width);
             canvas.set_height(config.height);
-            Target::Copy(canvas, context.unchecked_into())
+            Target::Copy(context.unchecked_into())
         } else {
-            let surface = create_surface(&page.instance, canvas)
+            let surface = create_surface(&page.instance, canvas.clone())
                 .map_err(|e| format!("The {} canvas: {e}.", page.backend_name))?;
             configure(&surface, &page.device, &config);
             Target::Surface(surface)
@@ -278,9 +321,46 @@ impl Gpu {
             adapter_name: page.adapter_name.clone(),
             encode_srgb_in_shader: page.encode_srgb_in_shader,
             compute: page.compute,
+            canvas,
             target,
             page,
         })
+    }
+
+    /// Whether the page's device or WebGL2 context was lost (see [`Gpu::renew`]). While it is,
+    /// frames are skipped and resizes only remember the size.
+    pub fn lost(&self) -> bool {
+        self.page.lost()
+    }
+
+    /// This canvas's GPU objects on a new page GPU, after [`Gpu::lost`]: the first call drops
+    /// the lost one (with its pipelines and shared targets) and starts making a new one, on a
+    /// new hidden canvas for WebGL2 (wgpu cannot rebuild its objects on a restored context).
+    /// `None` while it is being made; call again at a later frame.
+    pub fn renew(&self) -> Option<Result<Self, String>> {
+        if let Some(e) = RENEW_ERROR.take() {
+            return Some(Err(e));
+        }
+        let choice = self.page.choice;
+        let slot = PAGE_GPUS.with_borrow_mut(|slots| {
+            slots.retain(|(_, page)| !page.as_ref().is_some_and(|p| p.lost()));
+            slots
+                .iter()
+                .find(|(c, _)| *c == choice)
+                .map(|(_, page)| page.clone())
+        });
+        match slot {
+            Some(Some(page)) => Some(Self::on_page(self.canvas.clone(), page)),
+            Some(None) => None,
+            None => {
+                wasm_bindgen_futures::spawn_local(async move {
+                    if let Err(e) = PageGpu::get(choice).await {
+                        RENEW_ERROR.set(Some(e));
+                    }
+                });
+                None
+            }
+        }
     }
 
     /// Resizes the surface to `width × height` physical pixels (at least 1 × 1, at most the
@@ -288,14 +368,15 @@ impl Gpu {
     pub fn resize(&mut self, width: u32, height: u32) {
         let max = self.device.limits().max_texture_dimension_2d;
         let (width, height) = (width.clamp(1, max), height.clamp(1, max));
-        if (width, height) != (self.config.width, self.config.height) {
+        // A lost WebGL2 context cannot make the surface's textures (wgpu would panic).
+        if (width, height) != (self.config.width, self.config.height) && !self.lost() {
             self.config.width = width;
             self.config.height = height;
             match &self.target {
                 Target::Surface(surface) => configure(surface, &self.device, &self.config),
-                Target::Copy(canvas, _) => {
-                    canvas.set_width(width);
-                    canvas.set_height(height);
+                Target::Copy(_) => {
+                    self.canvas.set_width(width);
+                    self.canvas.set_height(height);
                 }
             }
         }
@@ -306,11 +387,14 @@ impl Gpu {
     /// would reallocate it each time (about 3 ms on SwiftShader), so a smaller figure draws into
     /// its top-left corner (and its renderer's multisampled targets have the page canvas's size).
     pub(super) fn next_frame(&self) -> Option<wgpu::SurfaceTexture> {
+        if self.lost() {
+            return None;
+        }
         let mut config = self.config.clone();
         let surface = match &self.target {
             Target::Surface(surface) => surface,
             Target::Copy(..) => {
-                let (_, surface, size) = self.page.gl.as_ref()?;
+                let (_, surface, size, _) = self.page.gl.as_ref()?;
                 let (w, h) = size.get();
                 (config.width, config.height) = (w.max(config.width), h.max(config.height));
                 if (config.width, config.height) != (w, h) {
@@ -338,7 +422,7 @@ impl Gpu {
         self.queue.present(frame);
         let (w, h) = (self.config.width as f64, self.config.height as f64);
         match (&self.target, &self.page.gl) {
-            (Target::Copy(_, context), Some((page_canvas, ..))) => context
+            (Target::Copy(context), Some((page_canvas, ..))) => context
                 .draw_image(page_canvas, 0.0, 0.0, w, h, 0.0, 0.0, w, h)
                 .map_err(|_| "copying the frame into the figure's canvas failed".to_string()),
             _ => Ok(()),

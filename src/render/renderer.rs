@@ -562,6 +562,18 @@ impl Renderer {
         renderer
     }
 
+    /// A new renderer on `gpu` (after the page's GPU was lost) with `old`'s settings: pixel
+    /// ratio, background, light and frame count. The scene uploads its meshes again.
+    pub fn renewed(gpu: &Gpu, old: &Renderer) -> Self {
+        Self {
+            px_per_css: old.px_per_css,
+            clear_srgb: old.clear_srgb,
+            light_dir: old.light_dir,
+            canvas_frames: old.canvas_frames,
+            ..Self::new(gpu)
+        }
+    }
+
     fn object_group(
         device: &wgpu::Device,
         layout: &wgpu::BindGroupLayout,

@@ -36,6 +36,9 @@ pub struct Viewer {
     /// The camera the figure placed with `setCamera` (or the default): "frame all" returns to it
     /// when the figure declares nothing to keep in view.
     home: OrbitCamera,
+    /// How many times [`Viewer::renew`] remade the figure's GPU objects: a scene that keeps
+    /// meshes or textures on the GPU uploads them again when it changes (see [`Viewer::renewed`]).
+    generation: u32,
 }
 
 #[wasm_bindgen]
@@ -64,7 +67,35 @@ impl Viewer {
             fitting: true,
             declares_view: false,
             home: OrbitCamera::default(),
+            generation: 0,
         })
+    }
+
+    /// Whether the page's GPU was lost (a GPU reset, a driver update): the page then stops the
+    /// figures' frames and calls [`Viewer::renew`] at each frame until it returns true.
+    #[wasm_bindgen(getter)]
+    pub fn lost(&self) -> bool {
+        self.gpu.lost()
+    }
+
+    /// Makes the figure's GPU objects again on the page's new device, after a loss. Returns
+    /// false while that device is being made, true once the figure is renewed (or was never
+    /// lost); its scene then uploads its meshes and textures again at its next draw. Rejects with
+    /// the reason when no new device could be made.
+    pub fn renew(&mut self) -> Result<bool, JsError> {
+        if !self.gpu.lost() {
+            return Ok(true);
+        }
+        let Some(gpu) = self.gpu.renew() else {
+            return Ok(false);
+        };
+        let gpu = gpu.map_err(|e| JsError::new(&e))?;
+        self.renderer = Renderer::renewed(&gpu, &self.renderer);
+        self.gpu = gpu;
+        // The kept frame names the lost renderer's meshes.
+        self.pending = false;
+        self.generation += 1;
+        Ok(true)
     }
 
     /// "WebGPU" or "WebGL2".
@@ -176,7 +207,10 @@ impl Viewer {
             let pad = crate::camera::FIT_PAD_PX;
             // With an inset, the figure fits beside it (left of its square), so the inset hides
             // nothing the figure declared.
-            let beside = frame.inset.as_ref().map(|_| crate::draw::inset::inset_rect(size).min.x);
+            let beside = frame
+                .inset
+                .as_ref()
+                .map(|_| crate::draw::inset::inset_rect(size).min.x);
             let fitted = match beside {
                 Some(left) => self.camera.fit_left_of(&points, size, left, pad),
                 None => false,
@@ -370,6 +404,13 @@ impl Viewer {
 }
 
 impl Viewer {
+    /// True once after each [`Viewer::renew`] for a scene that last saw generation `seen` (and
+    /// updates it): the scene's meshes, textures and compute buffers were on the lost device, and
+    /// it makes them again.
+    pub(crate) fn renewed(&self, seen: &mut u32) -> bool {
+        std::mem::replace(seen, self.generation) != self.generation
+    }
+
     /// Draws the current frame offscreen and returns RGBA bytes (tests).
     pub async fn read_pixels(&mut self, width: u32, height: u32) -> Result<Vec<u8>, String> {
         self.renderer
