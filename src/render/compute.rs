@@ -83,6 +83,44 @@ fn entry(binding: u32, ty: wgpu::BufferBindingType) -> wgpu::BindGroupLayoutEntr
     }
 }
 
+/// A compute shader's bind group layout and pipelines (one per entry point): made once per page
+/// (see `Gpu::cached`), so a second figure, or a restart that makes a new system, compiles no
+/// shader.
+#[derive(Clone)]
+struct Kernels<const N: usize> {
+    layout: wgpu::BindGroupLayout,
+    pipelines: [wgpu::ComputePipeline; N],
+}
+
+/// The particles' kernels: `spawn`, then `update`.
+#[derive(Clone)]
+struct ParticleKernels(Kernels<2>);
+/// The flock's kernel: `step`.
+#[derive(Clone)]
+struct BoidKernels(Kernels<1>);
+
+impl<const N: usize> Kernels<N> {
+    /// `entry_points` of `source`, on a layout of `bindings` (binding i is `bindings[i]`).
+    fn new(
+        gpu: &Gpu,
+        label: &str,
+        source: &str,
+        bindings: &[wgpu::BufferBindingType],
+        entry_points: [&str; N],
+    ) -> Self {
+        let entries: Vec<_> = (0..).zip(bindings).map(|(i, ty)| entry(i, *ty)).collect();
+        let layout = gpu
+            .device
+            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some(label),
+                entries: &entries,
+            });
+        let m = module(gpu, label, source);
+        let pipelines = entry_points.map(|e| pipeline(gpu, &layout, &m, e));
+        Self { layout, pipelines }
+    }
+}
+
 fn module(gpu: &Gpu, label: &str, source: &str) -> wgpu::ShaderModule {
     gpu.device
         .create_shader_module(wgpu::ShaderModuleDescriptor {
@@ -215,16 +253,19 @@ impl ParticlesCompute {
             n * SPRITE_BYTES,
             wgpu::BufferUsages::VERTEX,
         );
-        let layout = gpu
-            .device
-            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                label: Some("particles"),
-                entries: &[
-                    entry(0, wgpu::BufferBindingType::Uniform),
-                    entry(1, wgpu::BufferBindingType::Storage { read_only: false }),
-                    entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
-                ],
-            });
+        let ParticleKernels(Kernels {
+            layout,
+            pipelines: [spawn, update],
+        }) = gpu.cached(|| {
+            let rw = wgpu::BufferBindingType::Storage { read_only: false };
+            ParticleKernels(Kernels::new(
+                gpu,
+                "particles",
+                super::shader_source!("particles.wgsl"),
+                &[wgpu::BufferBindingType::Uniform, rw, rw],
+                ["spawn", "update"],
+            ))
+        });
         let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("particles"),
             layout: &layout,
@@ -243,17 +284,21 @@ impl ParticlesCompute {
                 },
             ],
         });
-        let m = module(gpu, "particles", super::shader_source!("particles.wgsl"));
         Ok(Self {
             clock,
-            spawn: pipeline(gpu, &layout, &m, "spawn"),
-            update: pipeline(gpu, &layout, &m, "update"),
+            spawn,
+            update,
             params,
             particles,
             instances,
             group,
             bursts: [0; MAX_GPU_EMITTERS],
         })
+    }
+
+    /// Whether `other` steps with the same compiled kernels (two figures of one page do).
+    pub fn shares_kernels(&self, other: &Self) -> bool {
+        (&self.spawn, &self.update) == (&other.spawn, &other.update)
     }
 
     pub fn capacity(&self) -> usize {
@@ -389,17 +434,24 @@ impl BoidsCompute {
             "boid params",
             12 + crate::figures::gpu::MAX_GPU_OBSTACLES,
         );
-        let layout = gpu
-            .device
-            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                label: Some("boids"),
-                entries: &[
-                    entry(0, wgpu::BufferBindingType::Uniform),
-                    entry(1, wgpu::BufferBindingType::Storage { read_only: true }),
-                    entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
-                    entry(3, wgpu::BufferBindingType::Storage { read_only: false }),
+        let BoidKernels(Kernels {
+            layout,
+            pipelines: [step],
+        }) = gpu.cached(|| {
+            let storage = |read_only| wgpu::BufferBindingType::Storage { read_only };
+            BoidKernels(Kernels::new(
+                gpu,
+                "boids",
+                super::shader_source!("boids.wgsl"),
+                &[
+                    wgpu::BufferBindingType::Uniform,
+                    storage(true),
+                    storage(false),
+                    storage(false),
                 ],
-            });
+                ["step"],
+            ))
+        });
         let group = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
             gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("boids"),
@@ -425,10 +477,9 @@ impl BoidsCompute {
             })
         };
         let groups = [group(&state[0], &state[1]), group(&state[1], &state[0])];
-        let m = module(gpu, "boids", super::shader_source!("boids.wgsl"));
         Ok(Self {
             n,
-            pipeline: pipeline(gpu, &layout, &m, "step"),
+            pipeline: step,
             params,
             state,
             instances,
@@ -436,6 +487,11 @@ impl BoidsCompute {
             current: 0,
             time_sec,
         })
+    }
+
+    /// Whether `other` steps with the same compiled kernel (two figures of one page do).
+    pub fn shares_kernels(&self, other: &Self) -> bool {
+        self.pipeline == other.pipeline
     }
 
     pub fn len(&self) -> usize {
