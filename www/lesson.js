@@ -375,8 +375,9 @@ function tick(nowMs) {
 /**
  * The browser can take the page's GPU away (a GPU process reset, a driver update): then no figure
  * draws. While any figure's GPU is lost, the figures' frames stop (their scenes would draw with the
- * lost device), each figure makes its GPU objects again on a new device (`Viewer.renew`), and a
- * note at the top of the page says so. Returns true while that goes on.
+ * lost device), each figure gets a new `Viewer` on its canvas, which makes a new device, and takes
+ * its GPU objects (`Viewer.adopt`), and a note at the top of the page says so. Returns true while
+ * that goes on.
  */
 function renewLostFigures() {
   const lost = state.figures.filter((f) => f.viewer.lost);
@@ -394,12 +395,12 @@ function renewLostFigures() {
     state.gpuResets = (state.gpuResets ?? 0) + 1;
   }
   for (const f of lost) {
-    try {
-      f.viewer.renew();
-    } catch (e) {
-      note.textContent = `The browser reset the GPU and it could not be set up again (${e.message ?? e}); ` +
-        'the page tries again; reloading it may help.';
-    }
+    f.renewing ??= Viewer.create(f.canvas, f.requested)
+      .then((fresh) => f.viewer.adopt(fresh), (e) => {
+        note.textContent = `The browser reset the GPU and it could not be set up again (${e.message ?? e}); ` +
+          'the page tries again; reloading it may help.';
+      })
+      .finally(() => { f.renewing = null; });
   }
   return true;
 }
@@ -517,8 +518,8 @@ async function createFigure(selector) {
   badge.className = 'backend-badge';
   box.append(badge);
   let viewer;
+  let backend = requestedBackend();
   try {
-    let backend = requestedBackend();
     if (backend === 'auto' && !(await webgpuAvailable())) backend = 'auto-no-webgpu';
     viewer = await Viewer.create(canvas, backend);
   } catch (e) {
@@ -557,7 +558,10 @@ async function createFigure(selector) {
       showError(e);
     }
   }, { rootMargin: '100px' }).observe(canvas);
-  state.figures.push({ selector, backend: viewer.backend, viewer, placeLabels: labelLayer(canvas, viewer, () => resized) });
+  state.figures.push({
+    selector, backend: viewer.backend, viewer, canvas, requested: backend,
+    placeLabels: labelLayer(canvas, viewer, () => resized),
+  });
   return viewer;
 }
 

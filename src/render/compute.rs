@@ -86,27 +86,26 @@ fn entry(binding: u32, ty: wgpu::BufferBindingType) -> wgpu::BindGroupLayoutEntr
 /// A compute shader's bind group layout and pipelines (one per entry point): made once per page
 /// (see `Gpu::cached`), so a second figure, or a restart that makes a new system, compiles no
 /// shader.
-#[derive(Clone)]
-struct Kernels<const N: usize> {
+struct Kernels {
     layout: wgpu::BindGroupLayout,
-    pipelines: [wgpu::ComputePipeline; N],
+    pipelines: Vec<wgpu::ComputePipeline>,
 }
 
-/// The particles' kernels: `spawn`, then `update`.
+/// The particles' kernels (`spawn`, then `update`), as the page caches them.
 #[derive(Clone)]
-struct ParticleKernels(Kernels<2>);
-/// The flock's kernel: `step`.
+struct ParticleKernels(Rc<Kernels>);
+/// The flock's kernel (`step`), as the page caches it.
 #[derive(Clone)]
-struct BoidKernels(Kernels<1>);
+struct BoidKernels(Rc<Kernels>);
 
-impl<const N: usize> Kernels<N> {
+impl Kernels {
     /// `entry_points` of `source`, on a layout of `bindings` (binding i is `bindings[i]`).
     fn new(
         gpu: &Gpu,
         label: &str,
         source: &str,
         bindings: &[wgpu::BufferBindingType],
-        entry_points: [&str; N],
+        entry_points: &[&str],
     ) -> Self {
         let entries: Vec<_> = (0..).zip(bindings).map(|(i, ty)| entry(i, *ty)).collect();
         let layout = gpu
@@ -116,7 +115,10 @@ impl<const N: usize> Kernels<N> {
                 entries: &entries,
             });
         let m = module(gpu, label, source);
-        let pipelines = entry_points.map(|e| pipeline(gpu, &layout, &m, e));
+        let pipelines = entry_points
+            .iter()
+            .map(|e| pipeline(gpu, &layout, &m, e))
+            .collect();
         Self { layout, pipelines }
     }
 }
@@ -224,8 +226,8 @@ pub struct ParticlesCompute {
     particles: wgpu::Buffer,
     instances: wgpu::Buffer,
     group: wgpu::BindGroup,
-    spawn: wgpu::ComputePipeline,
-    update: wgpu::ComputePipeline,
+    /// `spawn` and `update`.
+    kernels: Rc<Kernels>,
     /// Bursts requested for the next step, per emitter.
     bursts: [u32; MAX_GPU_EMITTERS],
 }
@@ -253,22 +255,19 @@ impl ParticlesCompute {
             n * SPRITE_BYTES,
             wgpu::BufferUsages::VERTEX,
         );
-        let ParticleKernels(Kernels {
-            layout,
-            pipelines: [spawn, update],
-        }) = gpu.cached(|| {
+        let ParticleKernels(kernels) = gpu.cached(|| {
             let rw = wgpu::BufferBindingType::Storage { read_only: false };
-            ParticleKernels(Kernels::new(
+            ParticleKernels(Rc::new(Kernels::new(
                 gpu,
                 "particles",
                 super::shader_source!("particles.wgsl"),
                 &[wgpu::BufferBindingType::Uniform, rw, rw],
-                ["spawn", "update"],
-            ))
+                &["spawn", "update"],
+            )))
         });
         let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("particles"),
-            layout: &layout,
+            layout: &kernels.layout,
             entries: &[
                 wgpu::BindGroupEntry {
                     binding: 0,
@@ -286,8 +285,7 @@ impl ParticlesCompute {
         });
         Ok(Self {
             clock,
-            spawn,
-            update,
+            kernels,
             params,
             particles,
             instances,
@@ -298,7 +296,7 @@ impl ParticlesCompute {
 
     /// Whether `other` steps with the same compiled kernels (two figures of one page do).
     pub fn shares_kernels(&self, other: &Self) -> bool {
-        (&self.spawn, &self.update) == (&other.spawn, &other.update)
+        Rc::ptr_eq(&self.kernels, &other.kernels)
     }
 
     pub fn capacity(&self) -> usize {
@@ -333,10 +331,10 @@ impl ParticlesCompute {
             let mut pass = encoder.begin_compute_pass(&Default::default());
             pass.set_bind_group(0, &self.group, &[]);
             if spawned > 0 {
-                pass.set_pipeline(&self.spawn);
+                pass.set_pipeline(&self.kernels.pipelines[0]);
                 pass.dispatch_workgroups(spawned.div_ceil(WORKGROUP), 1, 1);
             }
-            pass.set_pipeline(&self.update);
+            pass.set_pipeline(&self.kernels.pipelines[1]);
             pass.dispatch_workgroups((self.capacity() as u32).div_ceil(WORKGROUP), 1, 1);
         }
         gpu.queue.submit([encoder.finish()]);
@@ -382,7 +380,8 @@ pub struct BoidsCompute {
     state: [wgpu::Buffer; 2],
     instances: wgpu::Buffer,
     groups: [wgpu::BindGroup; 2],
-    pipeline: wgpu::ComputePipeline,
+    /// `step`.
+    kernels: Rc<Kernels>,
     current: usize,
     time_sec: f32,
 }
@@ -434,12 +433,9 @@ impl BoidsCompute {
             "boid params",
             12 + crate::figures::gpu::MAX_GPU_OBSTACLES,
         );
-        let BoidKernels(Kernels {
-            layout,
-            pipelines: [step],
-        }) = gpu.cached(|| {
+        let BoidKernels(kernels) = gpu.cached(|| {
             let storage = |read_only| wgpu::BufferBindingType::Storage { read_only };
-            BoidKernels(Kernels::new(
+            BoidKernels(Rc::new(Kernels::new(
                 gpu,
                 "boids",
                 super::shader_source!("boids.wgsl"),
@@ -449,13 +445,13 @@ impl BoidsCompute {
                     storage(false),
                     storage(false),
                 ],
-                ["step"],
-            ))
+                &["step"],
+            )))
         });
         let group = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
             gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("boids"),
-                layout: &layout,
+                layout: &kernels.layout,
                 entries: &[
                     wgpu::BindGroupEntry {
                         binding: 0,
@@ -479,7 +475,7 @@ impl BoidsCompute {
         let groups = [group(&state[0], &state[1]), group(&state[1], &state[0])];
         Ok(Self {
             n,
-            pipeline: step,
+            kernels,
             params,
             state,
             instances,
@@ -491,7 +487,7 @@ impl BoidsCompute {
 
     /// Whether `other` steps with the same compiled kernel (two figures of one page do).
     pub fn shares_kernels(&self, other: &Self) -> bool {
-        self.pipeline == other.pipeline
+        Rc::ptr_eq(&self.kernels, &other.kernels)
     }
 
     pub fn len(&self) -> usize {
@@ -522,7 +518,7 @@ impl BoidsCompute {
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         {
             let mut pass = encoder.begin_compute_pass(&Default::default());
-            pass.set_pipeline(&self.pipeline);
+            pass.set_pipeline(&self.kernels.pipelines[0]);
             pass.set_bind_group(0, &self.groups[self.current], &[]);
             pass.dispatch_workgroups((self.n as u32).div_ceil(WORKGROUP), 1, 1);
         }

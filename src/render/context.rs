@@ -42,7 +42,6 @@ impl BackendChoice {
 /// (Chromium keeps at most 16 WebGL contexts a page, and each device costs start-up time and
 /// memory), and the pipelines compiled for it (see [`Gpu::cached`]).
 struct PageGpu {
-    choice: BackendChoice,
     /// Names this page GPU in `LOST_DEVICES`.
     id: u32,
     instance: wgpu::Instance,
@@ -84,8 +83,6 @@ thread_local! {
     /// The ids of page GPUs whose WebGPU device the browser reported lost.
     static LOST_DEVICES: RefCell<Vec<u32>> = const { RefCell::new(Vec::new()) };
     static NEXT_PAGE_ID: Cell<u32> = const { Cell::new(0) };
-    /// Why the last try to make a page GPU again failed, for [`Gpu::renew`] to report.
-    static RENEW_ERROR: RefCell<Option<String>> = const { RefCell::new(None) };
 }
 
 #[wasm_bindgen]
@@ -118,8 +115,8 @@ extern "C" {
 enum Target {
     /// WebGPU: the canvas's own surface on the page's device.
     Surface(wgpu::Surface<'static>),
-    /// WebGL2: the canvas's `'2d'` context, into which the page's canvas is copied.
-    Copy(Context2d),
+    /// WebGL2: the canvas and its `'2d'` context, into which the page's canvas is copied.
+    Copy(HtmlCanvasElement, Context2d),
 }
 
 /// The GPU objects of one canvas: the page's device and queue, and the canvas's surface.
@@ -136,24 +133,26 @@ pub struct Gpu {
     pub encode_srgb_in_shader: bool,
     /// Compute shaders and storage buffers are on (WebGPU only; see `compute.rs`).
     pub compute: bool,
-    canvas: HtmlCanvasElement,
     target: Target,
     page: Rc<PageGpu>,
 }
 
 impl PageGpu {
     /// The page's GPU for `choice`, made by the first canvas that asks; a canvas that asks while
-    /// it is being made waits for it. A failure is not kept: the next canvas tries again.
+    /// it is being made waits for it. A failure is not kept: the next canvas tries again. A lost
+    /// one is dropped (with its pipelines and shared targets) and made again.
     async fn get(choice: BackendChoice) -> Result<Rc<Self>, String> {
         loop {
-            let slot =
-                PAGE_GPUS.with_borrow_mut(|slots| match slots.iter().find(|(c, _)| *c == choice) {
+            let slot = PAGE_GPUS.with_borrow_mut(|slots| {
+                slots.retain(|(_, page)| !page.as_ref().is_some_and(|p| p.lost()));
+                match slots.iter().find(|(c, _)| *c == choice) {
                     Some((_, page)) => Some(page.clone()),
                     None => {
                         slots.push((choice, None));
                         None
                     }
-                });
+                }
+            });
             match slot {
                 Some(Some(page)) => return Ok(page),
                 Some(None) => super::renderer::sleep_ms(2).await,
@@ -260,7 +259,6 @@ impl PageGpu {
         let id = NEXT_PAGE_ID.replace(NEXT_PAGE_ID.get() + 1);
         device.set_device_lost_callback(move |_, _| LOST_DEVICES.with_borrow_mut(|l| l.push(id)));
         Ok(Self {
-            choice,
             id,
             instance,
             device,
@@ -291,10 +289,7 @@ impl Gpu {
     /// The GPU objects of `canvas` on the page's device (made by the first canvas). The error
     /// says which backend was missing and what to try.
     pub async fn new(canvas: HtmlCanvasElement, choice: BackendChoice) -> Result<Self, String> {
-        Self::on_page(canvas, PageGpu::get(choice).await?)
-    }
-
-    fn on_page(canvas: HtmlCanvasElement, page: Rc<PageGpu>) -> Result<Self, String> {
+        let page = PageGpu::get(choice).await?;
         let mut config = page.config.clone();
         config.width = canvas.width().max(1);
         config.height = canvas.height().max(1);
@@ -306,9 +301,9 @@ impl Gpu {
                 .ok_or("the figure's canvas has no 2d context (it has another kind already)")?;
             canvas.set_width(config.width);
             canvas.set_height(config.height);
-            Target::Copy(context.unchecked_into())
+            Target::Copy(canvas, context.unchecked_into())
         } else {
-            let surface = create_surface(&page.instance, canvas.clone())
+            let surface = create_surface(&page.instance, canvas)
                 .map_err(|e| format!("The {} canvas: {e}.", page.backend_name))?;
             configure(&surface, &page.device, &config);
             Target::Surface(surface)
@@ -321,46 +316,15 @@ impl Gpu {
             adapter_name: page.adapter_name.clone(),
             encode_srgb_in_shader: page.encode_srgb_in_shader,
             compute: page.compute,
-            canvas,
             target,
             page,
         })
     }
 
-    /// Whether the page's device or WebGL2 context was lost (see [`Gpu::renew`]). While it is,
-    /// frames are skipped and resizes only remember the size.
+    /// Whether the page's device or WebGL2 context was lost: frames are then skipped and resizes
+    /// ignored, and a new `Gpu` on the same canvas ([`Gpu::new`]) gets a new device.
     pub fn lost(&self) -> bool {
         self.page.lost()
-    }
-
-    /// This canvas's GPU objects on a new page GPU, after [`Gpu::lost`]: the first call drops
-    /// the lost one (with its pipelines and shared targets) and starts making a new one, on a
-    /// new hidden canvas for WebGL2 (wgpu cannot rebuild its objects on a restored context).
-    /// `None` while it is being made; call again at a later frame.
-    pub fn renew(&self) -> Option<Result<Self, String>> {
-        if let Some(e) = RENEW_ERROR.take() {
-            return Some(Err(e));
-        }
-        let choice = self.page.choice;
-        let slot = PAGE_GPUS.with_borrow_mut(|slots| {
-            slots.retain(|(_, page)| !page.as_ref().is_some_and(|p| p.lost()));
-            slots
-                .iter()
-                .find(|(c, _)| *c == choice)
-                .map(|(_, page)| page.clone())
-        });
-        match slot {
-            Some(Some(page)) => Some(Self::on_page(self.canvas.clone(), page)),
-            Some(None) => None,
-            None => {
-                wasm_bindgen_futures::spawn_local(async move {
-                    if let Err(e) = PageGpu::get(choice).await {
-                        RENEW_ERROR.set(Some(e));
-                    }
-                });
-                None
-            }
-        }
     }
 
     /// Resizes the surface to `width × height` physical pixels (at least 1 × 1, at most the
@@ -374,9 +338,9 @@ impl Gpu {
             self.config.height = height;
             match &self.target {
                 Target::Surface(surface) => configure(surface, &self.device, &self.config),
-                Target::Copy(_) => {
-                    self.canvas.set_width(width);
-                    self.canvas.set_height(height);
+                Target::Copy(canvas, _) => {
+                    canvas.set_width(width);
+                    canvas.set_height(height);
                 }
             }
         }
@@ -422,7 +386,7 @@ impl Gpu {
         self.queue.present(frame);
         let (w, h) = (self.config.width as f64, self.config.height as f64);
         match (&self.target, &self.page.gl) {
-            (Target::Copy(context), Some((page_canvas, ..))) => context
+            (Target::Copy(_, context), Some((page_canvas, ..))) => context
                 .draw_image(page_canvas, 0.0, 0.0, w, h, 0.0, 0.0, w, h)
                 .map_err(|_| "copying the frame into the figure's canvas failed".to_string()),
             _ => Ok(()),

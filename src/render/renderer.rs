@@ -562,16 +562,13 @@ impl Renderer {
         renderer
     }
 
-    /// A new renderer on `gpu` (after the page's GPU was lost) with `old`'s settings: pixel
-    /// ratio, background, light and frame count. The scene uploads its meshes again.
-    pub fn renewed(gpu: &Gpu, old: &Renderer) -> Self {
-        Self {
-            px_per_css: old.px_per_css,
-            clear_srgb: old.clear_srgb,
-            light_dir: old.light_dir,
-            canvas_frames: old.canvas_frames,
-            ..Self::new(gpu)
-        }
+    /// Takes `old`'s pixel ratio, background, light and frame count (a renderer made anew after
+    /// the page's GPU was lost).
+    pub fn keep_settings_of(&mut self, old: &Renderer) {
+        self.px_per_css = old.px_per_css;
+        self.clear_srgb = old.clear_srgb;
+        self.light_dir = old.light_dir;
+        self.canvas_frames = old.canvas_frames;
     }
 
     fn object_group(

@@ -36,7 +36,7 @@ pub struct Viewer {
     /// The camera the figure placed with `setCamera` (or the default): "frame all" returns to it
     /// when the figure declares nothing to keep in view.
     home: OrbitCamera,
-    /// How many times [`Viewer::renew`] remade the figure's GPU objects: a scene that keeps
+    /// How many times the figure took new GPU objects ([`Viewer::adopt`]): a scene that keeps
     /// meshes or textures on the GPU uploads them again when it changes (see [`Viewer::renewed`]).
     generation: u32,
 }
@@ -72,30 +72,23 @@ impl Viewer {
     }
 
     /// Whether the page's GPU was lost (a GPU reset, a driver update): the page then stops the
-    /// figures' frames and calls [`Viewer::renew`] at each frame until it returns true.
+    /// figures' frames, makes a new `Viewer` on the figure's canvas (which gets a new device) and
+    /// passes it to [`Viewer::adopt`].
     #[wasm_bindgen(getter)]
     pub fn lost(&self) -> bool {
         self.gpu.lost()
     }
 
-    /// Makes the figure's GPU objects again on the page's new device, after a loss. Returns
-    /// false while that device is being made, true once the figure is renewed (or was never
-    /// lost); its scene then uploads its meshes and textures again at its next draw. Rejects with
-    /// the reason when no new device could be made.
-    pub fn renew(&mut self) -> Result<bool, JsError> {
-        if !self.gpu.lost() {
-            return Ok(true);
-        }
-        let Some(gpu) = self.gpu.renew() else {
-            return Ok(false);
-        };
-        let gpu = gpu.map_err(|e| JsError::new(&e))?;
-        self.renderer = Renderer::renewed(&gpu, &self.renderer);
-        self.gpu = gpu;
+    /// Takes the GPU objects of `fresh` (just made on this figure's canvas, after a loss),
+    /// keeping this figure's camera, size and settings; the lost ones go with `fresh`. The scene
+    /// uploads its meshes and textures again at its next draw (see [`Viewer::renewed`]).
+    pub fn adopt(&mut self, mut fresh: Viewer) {
+        fresh.renderer.keep_settings_of(&self.renderer);
+        std::mem::swap(&mut self.gpu, &mut fresh.gpu);
+        std::mem::swap(&mut self.renderer, &mut fresh.renderer);
         // The kept frame names the lost renderer's meshes.
         self.pending = false;
         self.generation += 1;
-        Ok(true)
     }
 
     /// "WebGPU" or "WebGL2".
@@ -404,7 +397,7 @@ impl Viewer {
 }
 
 impl Viewer {
-    /// True once after each [`Viewer::renew`] for a scene that last saw generation `seen` (and
+    /// True once after each [`Viewer::adopt`] for a scene that last saw generation `seen` (and
     /// updates it): the scene's meshes, textures and compute buffers were on the lost device, and
     /// it makes them again.
     pub(crate) fn renewed(&self, seen: &mut u32) -> bool {
