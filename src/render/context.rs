@@ -8,6 +8,8 @@
 use std::any::{Any, TypeId};
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
@@ -42,8 +44,8 @@ impl BackendChoice {
 /// (Chromium keeps at most 16 WebGL contexts a page, and each device costs start-up time and
 /// memory), and the pipelines compiled for it (see [`Gpu::cached`]).
 struct PageGpu {
-    /// Names this page GPU in `LOST_DEVICES`.
-    id: u32,
+    /// Set when the browser reports the WebGPU device lost.
+    device_lost: Arc<AtomicBool>,
     instance: wgpu::Instance,
     device: wgpu::Device,
     queue: wgpu::Queue,
@@ -80,9 +82,6 @@ type PageSlot = (BackendChoice, Option<Rc<PageGpu>>);
 
 thread_local! {
     static PAGE_GPUS: RefCell<Vec<PageSlot>> = const { RefCell::new(Vec::new()) };
-    /// The ids of page GPUs whose WebGPU device the browser reported lost.
-    static LOST_DEVICES: RefCell<Vec<u32>> = const { RefCell::new(Vec::new()) };
-    static NEXT_PAGE_ID: Cell<u32> = const { Cell::new(0) };
 }
 
 #[wasm_bindgen]
@@ -256,10 +255,11 @@ impl PageGpu {
             }
             _ => None,
         };
-        let id = NEXT_PAGE_ID.replace(NEXT_PAGE_ID.get() + 1);
-        device.set_device_lost_callback(move |_, _| LOST_DEVICES.with_borrow_mut(|l| l.push(id)));
+        let device_lost = Arc::new(AtomicBool::new(false));
+        let flag = device_lost.clone();
+        device.set_device_lost_callback(move |_, _| flag.store(true, Ordering::Relaxed));
         Ok(Self {
-            id,
+            device_lost,
             instance,
             device,
             queue,
@@ -280,7 +280,7 @@ impl PageGpu {
     fn lost(&self) -> bool {
         match &self.gl {
             Some((.., context)) => context.is_context_lost(),
-            None => LOST_DEVICES.with_borrow(|l| l.contains(&self.id)),
+            None => self.device_lost.load(Ordering::Relaxed),
         }
     }
 }

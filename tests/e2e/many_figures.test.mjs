@@ -127,7 +127,13 @@ for (const backend of ['webgl2', 'webgpu']) {
         }));
         assert.deepEqual(after, { gpus: 2, resets: 1, errors: [], lost: 0 }, `${path}: one new device, no error`);
         for (const [i, canvas] of canvases.entries()) {
-          const s = await pixelStats(page, canvas, `after${i}`);
+          // A figure scrolled into view draws at its next frame; a loaded machine may take a few.
+          let s;
+          for (let tries = 0; tries < 10; tries++) {
+            s = await pixelStats(page, canvas, `after${i}`);
+            if (s.coverage > 0.02 && s.colors > 8) break;
+            await frames(page, 6);
+          }
           assert.ok(s.coverage > 0.02 && s.colors > 8, `${path}: figure ${selectors[i]} draws again: ${JSON.stringify(s)}`);
         }
         assert.deepEqual(problems, []);
