@@ -119,6 +119,11 @@ fn figures_that_declare_their_view_fit_at_both_sizes() {
     rotations::Interpolation::new().draw(&mut f, 0.5).unwrap();
     frames.push(("03 interpolation", f, (0.0, 0.25)));
     let mut f = Frame::default();
+    inbetween::figures::curves::KeyframesScene::new()
+        .draw(&mut f, 1.0)
+        .unwrap();
+    frames.push(("02 keys in space and time", f, (0.75, 0.4)));
+    let mut f = Frame::default();
     noise::Textures::new().draw(&mut f, &[TextureId(3), TextureId(4), TextureId(5)]);
     frames.push(("05 textures", f, (0.0, 1.3)));
     let mut f = Frame::default();
@@ -173,10 +178,19 @@ fn a_figure_with_an_inset_fits_beside_it() {
     // at the two page sizes and at 1280 px: every point lands left of the inset's square (and
     // inside the canvas), and the fit is tight against one of those edges.
     let points = corners(Vec3::new(-2.0, 0.0, -1.5), Vec3::new(2.0, 2.0, 1.5));
-    for size in [Vec2::new(760.0, 420.0), Vec2::new(690.0, 420.0), Vec2::new(960.0, 420.0), Vec2::new(1600.0, 1000.0)] {
+    for size in [
+        Vec2::new(760.0, 420.0),
+        Vec2::new(690.0, 420.0),
+        Vec2::new(960.0, 420.0),
+        Vec2::new(1600.0, 1000.0),
+    ] {
         let left = inset_rect(size).min.x;
         for (yaw, pitch) in [(0.5, 0.4), (1.2, 0.2), (-0.7, 0.8)] {
-            let mut camera = OrbitCamera { yaw_rad: yaw, pitch_rad: pitch, ..OrbitCamera::default() };
+            let mut camera = OrbitCamera {
+                yaw_rad: yaw,
+                pitch_rad: pitch,
+                ..OrbitCamera::default()
+            };
             assert!(camera.fit_left_of(&points, size, left, FIT_PAD_PX));
             let view_proj = camera.projection(size.x / size.y) * camera.view();
             let mut slack = f32::MAX;
@@ -184,7 +198,10 @@ fn a_figure_with_an_inset_fits_beside_it() {
                 let px = project_to_canvas(view_proj, size, *p).unwrap();
                 let margins = [px.x, px.y, left - px.x, size.y - px.y];
                 let least = margins.iter().copied().fold(f32::MAX, f32::min);
-                assert!(least >= FIT_PAD_PX - 0.5, "{p} at {px} on {size}, inset from x = {left}");
+                assert!(
+                    least >= FIT_PAD_PX - 0.5,
+                    "{p} at {px} on {size}, inset from x = {left}"
+                );
                 slack = slack.min(least - FIT_PAD_PX);
             }
             assert!(slack < 1.0, "{slack} px spare on {size}");

@@ -748,3 +748,40 @@ fn the_target_heads_never_touch() {
         assert!(2.0 * half_width < TARGETS_SPACING, "{half_width}");
     }
 }
+
+/// The face figure declares its heads at their largest (with their titles), so the camera fits
+/// them at every canvas size: on the canvases the page gives it at 800 × 600 and 1600 × 1000,
+/// from the page's orbit, each head lies inside the canvas over the whole loop and the two heads
+/// fill most of the canvas's height (the full head at its largest, more than half of it).
+#[test]
+fn the_face_figure_fits_its_heads_large_at_both_page_sizes() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let mut f = FaceFigure::new();
+    let s_max = f.largest_full_scale();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS, 0.0).unwrap();
+    let points = frame.fit_points();
+    for size in [glam::Vec2::new(760.0, 420.0), glam::Vec2::new(650.0, 420.0)] {
+        let [x, y, z, distance] = f.view_fit();
+        let mut camera = OrbitCamera::from_view([x, y, z, distance, 0.15, 0.1]);
+        assert!(camera.fit(&points, size, FIT_PAD_PX));
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        for i in 0..16 {
+            let mut frame = Frame::default();
+            f.draw(&mut frame, IDS, LOOP_SECONDS * i as f32 / 16.0)
+                .unwrap();
+            let mut now = OrbitCamera::from_view([x, y, z, distance, 0.15, 0.1]);
+            now.fit(&frame.fit_points(), size, FIT_PAD_PX);
+            assert_eq!(now, camera, "the camera holds still over the loop");
+        }
+        let (_, right) = f.head_positions();
+        let r = HEAD_RADIUS_FOR_TEST * s_max;
+        let top = project_to_canvas(view_proj, size, right.unwrap() + Vec3::Y * r).unwrap();
+        let bottom = project_to_canvas(view_proj, size, right.unwrap() - Vec3::Y * r).unwrap();
+        let share = (bottom.y - top.y) / size.y;
+        assert!(
+            share > 0.5,
+            "on {size} the full head at its largest takes {share} of the height"
+        );
+    }
+}

@@ -355,6 +355,10 @@ function tick(nowMs) {
   }
   const dt = lastMs === null ? 0 : Math.min((nowMs - lastMs) / 1000, 0.1);
   lastMs = nowMs;
+  if (renewLostFigures()) {
+    requestAnimationFrame(tick);
+    return;
+  }
   try {
     for (const cb of state.frameCallbacks) cb(dt);
     for (const figure of state.figures) figure.placeLabels?.();
@@ -366,6 +370,39 @@ function tick(nowMs) {
     return;
   }
   requestAnimationFrame(tick);
+}
+
+/**
+ * The browser can take the page's GPU away (a GPU process reset, a driver update): then no figure
+ * draws. While any figure's GPU is lost, the figures' frames stop (their scenes would draw with the
+ * lost device), each figure gets a new `Viewer` on its canvas, which makes a new device, and takes
+ * its GPU objects (`Viewer.adopt`), and a note at the top of the page says so. Returns true while
+ * that goes on.
+ */
+function renewLostFigures() {
+  const lost = state.figures.filter((f) => f.viewer.lost);
+  let note = document.getElementById('gpu-note');
+  if (!lost.length) {
+    note?.remove();
+    return false;
+  }
+  if (!note) {
+    note = document.createElement('div');
+    note.id = 'gpu-note';
+    note.setAttribute('role', 'status');
+    note.textContent = 'The browser reset the GPU; the figures are being set up again…';
+    document.body.prepend(note);
+    state.gpuResets = (state.gpuResets ?? 0) + 1;
+  }
+  for (const f of lost) {
+    f.renewing ??= Viewer.create(f.canvas, f.requested)
+      .then((fresh) => f.viewer.adopt(fresh), (e) => {
+        note.textContent = `The browser reset the GPU and it could not be set up again (${e.message ?? e}); ` +
+          'the page tries again; reloading it may help.';
+      })
+      .finally(() => { f.renewing = null; });
+  }
+  return true;
 }
 
 /** Probes WebGPU once per page, so that WebGL2-only browsers log "No available adapters" once. */
@@ -481,8 +518,8 @@ async function createFigure(selector) {
   badge.className = 'backend-badge';
   box.append(badge);
   let viewer;
+  let backend = requestedBackend();
   try {
-    let backend = requestedBackend();
     if (backend === 'auto' && !(await webgpuAvailable())) backend = 'auto-no-webgpu';
     viewer = await Viewer.create(canvas, backend);
   } catch (e) {
@@ -521,7 +558,10 @@ async function createFigure(selector) {
       showError(e);
     }
   }, { rootMargin: '100px' }).observe(canvas);
-  state.figures.push({ selector, backend: viewer.backend, viewer, placeLabels: labelLayer(canvas, viewer, () => resized) });
+  state.figures.push({
+    selector, backend: viewer.backend, viewer, canvas, requested: backend,
+    placeLabels: labelLayer(canvas, viewer, () => resized),
+  });
   return viewer;
 }
 

@@ -26,16 +26,9 @@ if (targetsViewer) {
 const viewer = await lesson.figure('#fig-face');
 if (viewer) {
   const scene = new BlendShapeFaceScene();
-  // The framing makes room for the heads at their largest (from Rust); it changes only with a
-  // control, and keeps the direction the reader orbited to.
-  let framed = scene.viewFit();
-  viewer.setCamera(...framed, 0.15, 0.1);
-  const reframe = () => {
-    const fit = scene.viewFit();
-    if (fit.every((x, i) => x === framed[i])) return;
-    framed = fit;
-    viewer.setTarget(...fit);
-  };
+  // The figure declares the heads at their largest (from Rust): the camera fits them at every
+  // canvas size, moves only when a control changes that size, and keeps the reader's orbit.
+  viewer.setCamera(...scene.viewFit(), 0.15, 0.1);
   const timeline = new Timeline(document.getElementById('face-timeline'), { duration: 4, playing: true });
   const names = scene.targetNames();
   // Equal curves stay visible: each weight is drawn wider than the next, and Σ w wide under
@@ -46,7 +39,7 @@ if (viewer) {
     colors: ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#1f2430', '#e68a00'], minSpan: 1, height: 200,
     widths: [7, 5.5, 4, 2.5, 3.5, 1.5], dashes: [null, null, null, null, null, [6, 4]],
   });
-  const updatePlot = () => { plot.setData(columns(scene.weightCurves(81), 7)); reframe(); };
+  const updatePlot = () => plot.setData(columns(scene.weightCurves(81), 7));
   const p = { show: 'both', baseAuto: false, base: 0, animate: true, deltas: true, useExercise: false };
   const start = scene.weights();
   // The weights come as 32-bit floats: shown at the sliders' 0.01 steps.
@@ -54,7 +47,7 @@ if (viewer) {
   const gui = new GUI({ container: document.querySelector('#fig-face .panel'), title: 'Face' });
   const weights = gui.addFolder('target weights');
   names.forEach((n, k) => weights.add(p, n, -0.5, 1.5, 0.01).name(n).onChange((w) => { scene.setWeight(k, w); updatePlot(); }));
-  gui.add(p, 'show', ['both', 'differential', 'full']).name('show').onChange((f) => { scene.setShow(f); reframe(); });
+  gui.add(p, 'show', ['both', 'differential', 'full']).name('show').onChange((f) => scene.setShow(f));
   const full = gui.addFolder('full form: base weight');
   const base = full.add(p, 'base', 0, 1, 0.05).name('base weight (by hand)').onChange((w) => { scene.setBaseWeight(w); updatePlot(); });
   full.add(p, 'baseAuto').name('automatic: 1 − Σw').onChange((on) => {

@@ -412,6 +412,16 @@ impl FaceFigure {
                 }
             }
         }
+        // The camera fits each shown head at its largest over the loop, with its title's anchor
+        // (1.3 k above its centre): it holds still while the heads breathe and moves only when
+        // a control changes that size.
+        let largest = self.largest_full_scale().max(1.0);
+        for (at, k) in [(left, 1.0), (right, largest)] {
+            if let Some(at) = at {
+                let (r, top) = (HEAD_RADIUS * k, 1.3 * k);
+                frame.keep_box_in_view(at - Vec3::splat(r), at + Vec3::new(r, top, r));
+            }
+        }
         Ok(parts.join(" "))
     }
 

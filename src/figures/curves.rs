@@ -557,21 +557,25 @@ impl KeyframesScene {
         frame.line(ball.extend(0.0), on_curve, palette::GRID);
         let model = Mat4::from_translation(on_curve) * Mat4::from_scale(Vec3::splat(0.16));
         frame.mesh(MeshId::SPHERE, model, BALL_COLOR);
-        // The time axis, left of the path on the ground.
-        let left = self.track.values().iter().fold(f32::MAX, |m, p| m.min(p.x)) - 0.5;
+        // The time axis, on the ground right of the rightmost key: from the page's camera the
+        // depth runs up and to the right, so an axis left of the path would run under the curves
+        // and its labels over them.
+        let right = self.track.values().iter().fold(f32::MIN, |m, p| m.max(p.x)) + 0.8;
         let duration = self.track.duration_sec();
-        let axis = |t: f32| Vec3::new(left, 0.0, depth(t));
+        let axis = |t: f32| Vec3::new(right, 0.0, depth(t));
         frame.arrow(axis(0.0), axis(duration + 0.4), palette::DARK, 0.12);
         for second in 0..=duration.floor() as usize {
             let p = axis(second as f32);
             frame.line(p - Vec3::X * 0.08, p + Vec3::X * 0.08, palette::DARK);
-            frame.label(
-                p - Vec3::X * 0.35 - Vec3::Y * 0.1,
-                format!("{second} s"),
-                palette::DARK,
-            );
+            frame.label(p + Vec3::X * 0.15, format!("{second} s"), palette::DARK);
         }
-        frame.label(axis(duration + 0.6), "time (s)", palette::DARK);
+        frame.label(axis(duration + 0.9), "time (s)", palette::DARK);
+        // The camera fits the curve, the path's keys and the axis at every canvas size.
+        frame.keep_in_view.extend(points);
+        frame
+            .keep_in_view
+            .extend(self.track.values().iter().map(|p| p.extend(0.0)));
+        frame.keep_in_view.extend([axis(0.0), axis(duration + 0.9)]);
     }
 
     /// Makes `track` the scene's track if its keys lie in the editor's range (see
@@ -1424,7 +1428,13 @@ impl CardinalScene {
                 .sample_speeds(401)
                 .expect("a valid sample count")
                 .iter()
-                .map(|r| if rule == ChordRule::ByTime { r[1] } else { r[2] })
+                .map(|r| {
+                    if rule == ChordRule::ByTime {
+                        r[1]
+                    } else {
+                        r[2]
+                    }
+                })
                 .fold(0.0, f32::max);
             // Rounded to the millimetre, so a straight path reads 0 and not 6e-7.
             let bulge = (self.max_bulge(rule) * 1000.0).round() / 1000.0;

@@ -790,7 +790,7 @@ impl DepthPrecision {
         slab(0.0, UPPER_PLANE, frame);
         slab(-self.gap, LOWER_PLANE, frame);
         frame.marker(eye, 14.0, palette::DARK);
-        frame.label_with_priority(eye + Vec3::Y * 0.4, "eye", palette::DARK, 2);
+        frame.label_with_priority(eye + Vec3::Y * 1.0, "eye", palette::DARK, 2);
         let (sin_p, cos_p) = PITCH.sin_cos();
         let axis = Vec3::new(0.0, -sin_p, -cos_p);
         let to_ground = EYE_HEIGHT / sin_p;
@@ -813,20 +813,18 @@ impl DepthPrecision {
         }
         let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
         frame.wide_line(sep(0.0), sep(reach), palette::GREY, 2.5);
-        // The names sit near the eye, where the bars are still short: the separation's just
-        // above its line, the step's on the third bar.
-        let d = 6.0f32.min(reach);
+        // The names sit on the ground in front of where the bars and the line start (the side
+        // of the floor towards the page's camera), clear of every dot and line.
         frame.label_with_priority(
-            sep(d) + Vec3::Y * 0.3,
-            "separation d·gap/h (×40)",
-            palette::GREY,
-            1,
-        );
-        let step = raster::depth_step(2.0, self.near, self.far, self.bits) * Self::BAR_SCALE;
-        frame.label_with_priority(
-            Vec3::new(1.1, step.min(6.0) + 0.25, -2.0),
+            Vec3::new(2.6, 0.0, -2.0),
             "one depth step (×40)",
             palette::GREEN,
+            1,
+        );
+        frame.label_with_priority(
+            Vec3::new(4.2, 0.0, -1.0),
+            "separation d·gap/h (×40)",
+            palette::GREY,
             1,
         );
         let from = self.fighting_from();
@@ -836,12 +834,13 @@ impl DepthPrecision {
                 palette::ORANGE,
                 crate::draw::StrokeStyle::dashed(2.5, 0.3, 0.2),
             );
-            frame.label_with_priority(
+            // Leftwards: to its right the orange bars rise to their dots.
+            frame.label_left(
                 Vec3::new(1.1, 7.1, -from),
                 "fighting from here",
                 palette::ORANGE,
-                3,
             );
+            frame.labels.last_mut().expect("just added").priority = 3;
         }
         frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 7.2, 0.5));
         format!(
@@ -1370,6 +1369,12 @@ impl Shading {
     /// The unit sphere the 3D figure draws (create its GPU mesh from this once).
     pub fn sphere(&self) -> &MeshData {
         &self.sphere
+    }
+
+    /// Makes the next [`Shading::shade_sphere`] shade and return the sphere (its GPU copy was
+    /// lost).
+    pub fn reshade(&mut self) {
+        self.stale = true;
     }
 
     /// Shades every vertex of [`Shading::sphere`] if anything changed since the last call;

@@ -83,6 +83,46 @@ fn entry(binding: u32, ty: wgpu::BufferBindingType) -> wgpu::BindGroupLayoutEntr
     }
 }
 
+/// A compute shader's bind group layout and pipelines (one per entry point): made once per page
+/// (see `Gpu::cached`), so a second figure, or a restart that makes a new system, compiles no
+/// shader.
+struct Kernels {
+    layout: wgpu::BindGroupLayout,
+    pipelines: Vec<wgpu::ComputePipeline>,
+}
+
+/// The particles' kernels (`spawn`, then `update`), as the page caches them.
+#[derive(Clone)]
+struct ParticleKernels(Rc<Kernels>);
+/// The flock's kernel (`step`), as the page caches it.
+#[derive(Clone)]
+struct BoidKernels(Rc<Kernels>);
+
+impl Kernels {
+    /// `entry_points` of `source`, on a layout of `bindings` (binding i is `bindings[i]`).
+    fn new(
+        gpu: &Gpu,
+        label: &str,
+        source: &str,
+        bindings: &[wgpu::BufferBindingType],
+        entry_points: &[&str],
+    ) -> Self {
+        let entries: Vec<_> = (0..).zip(bindings).map(|(i, ty)| entry(i, *ty)).collect();
+        let layout = gpu
+            .device
+            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some(label),
+                entries: &entries,
+            });
+        let m = module(gpu, label, source);
+        let pipelines = entry_points
+            .iter()
+            .map(|e| pipeline(gpu, &layout, &m, e))
+            .collect();
+        Self { layout, pipelines }
+    }
+}
+
 fn module(gpu: &Gpu, label: &str, source: &str) -> wgpu::ShaderModule {
     gpu.device
         .create_shader_module(wgpu::ShaderModuleDescriptor {
@@ -186,8 +226,8 @@ pub struct ParticlesCompute {
     particles: wgpu::Buffer,
     instances: wgpu::Buffer,
     group: wgpu::BindGroup,
-    spawn: wgpu::ComputePipeline,
-    update: wgpu::ComputePipeline,
+    /// `spawn` and `update`.
+    kernels: Rc<Kernels>,
     /// Bursts requested for the next step, per emitter.
     bursts: [u32; MAX_GPU_EMITTERS],
 }
@@ -215,19 +255,19 @@ impl ParticlesCompute {
             n * SPRITE_BYTES,
             wgpu::BufferUsages::VERTEX,
         );
-        let layout = gpu
-            .device
-            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                label: Some("particles"),
-                entries: &[
-                    entry(0, wgpu::BufferBindingType::Uniform),
-                    entry(1, wgpu::BufferBindingType::Storage { read_only: false }),
-                    entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
-                ],
-            });
+        let ParticleKernels(kernels) = gpu.cached(|| {
+            let rw = wgpu::BufferBindingType::Storage { read_only: false };
+            ParticleKernels(Rc::new(Kernels::new(
+                gpu,
+                "particles",
+                super::shader_source!("particles.wgsl"),
+                &[wgpu::BufferBindingType::Uniform, rw, rw],
+                &["spawn", "update"],
+            )))
+        });
         let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("particles"),
-            layout: &layout,
+            layout: &kernels.layout,
             entries: &[
                 wgpu::BindGroupEntry {
                     binding: 0,
@@ -243,17 +283,20 @@ impl ParticlesCompute {
                 },
             ],
         });
-        let m = module(gpu, "particles", super::shader_source!("particles.wgsl"));
         Ok(Self {
             clock,
-            spawn: pipeline(gpu, &layout, &m, "spawn"),
-            update: pipeline(gpu, &layout, &m, "update"),
+            kernels,
             params,
             particles,
             instances,
             group,
             bursts: [0; MAX_GPU_EMITTERS],
         })
+    }
+
+    /// Whether `other` steps with the same compiled kernels (two figures of one page do).
+    pub fn shares_kernels(&self, other: &Self) -> bool {
+        Rc::ptr_eq(&self.kernels, &other.kernels)
     }
 
     pub fn capacity(&self) -> usize {
@@ -288,10 +331,10 @@ impl ParticlesCompute {
             let mut pass = encoder.begin_compute_pass(&Default::default());
             pass.set_bind_group(0, &self.group, &[]);
             if spawned > 0 {
-                pass.set_pipeline(&self.spawn);
+                pass.set_pipeline(&self.kernels.pipelines[0]);
                 pass.dispatch_workgroups(spawned.div_ceil(WORKGROUP), 1, 1);
             }
-            pass.set_pipeline(&self.update);
+            pass.set_pipeline(&self.kernels.pipelines[1]);
             pass.dispatch_workgroups((self.capacity() as u32).div_ceil(WORKGROUP), 1, 1);
         }
         gpu.queue.submit([encoder.finish()]);
@@ -337,7 +380,8 @@ pub struct BoidsCompute {
     state: [wgpu::Buffer; 2],
     instances: wgpu::Buffer,
     groups: [wgpu::BindGroup; 2],
-    pipeline: wgpu::ComputePipeline,
+    /// `step`.
+    kernels: Rc<Kernels>,
     current: usize,
     time_sec: f32,
 }
@@ -389,21 +433,25 @@ impl BoidsCompute {
             "boid params",
             12 + crate::figures::gpu::MAX_GPU_OBSTACLES,
         );
-        let layout = gpu
-            .device
-            .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                label: Some("boids"),
-                entries: &[
-                    entry(0, wgpu::BufferBindingType::Uniform),
-                    entry(1, wgpu::BufferBindingType::Storage { read_only: true }),
-                    entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
-                    entry(3, wgpu::BufferBindingType::Storage { read_only: false }),
+        let BoidKernels(kernels) = gpu.cached(|| {
+            let storage = |read_only| wgpu::BufferBindingType::Storage { read_only };
+            BoidKernels(Rc::new(Kernels::new(
+                gpu,
+                "boids",
+                super::shader_source!("boids.wgsl"),
+                &[
+                    wgpu::BufferBindingType::Uniform,
+                    storage(true),
+                    storage(false),
+                    storage(false),
                 ],
-            });
+                &["step"],
+            )))
+        });
         let group = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
             gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("boids"),
-                layout: &layout,
+                layout: &kernels.layout,
                 entries: &[
                     wgpu::BindGroupEntry {
                         binding: 0,
@@ -425,10 +473,9 @@ impl BoidsCompute {
             })
         };
         let groups = [group(&state[0], &state[1]), group(&state[1], &state[0])];
-        let m = module(gpu, "boids", super::shader_source!("boids.wgsl"));
         Ok(Self {
             n,
-            pipeline: pipeline(gpu, &layout, &m, "step"),
+            kernels,
             params,
             state,
             instances,
@@ -436,6 +483,11 @@ impl BoidsCompute {
             current: 0,
             time_sec,
         })
+    }
+
+    /// Whether `other` steps with the same compiled kernel (two figures of one page do).
+    pub fn shares_kernels(&self, other: &Self) -> bool {
+        Rc::ptr_eq(&self.kernels, &other.kernels)
     }
 
     pub fn len(&self) -> usize {
@@ -466,7 +518,7 @@ impl BoidsCompute {
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         {
             let mut pass = encoder.begin_compute_pass(&Default::default());
-            pass.set_pipeline(&self.pipeline);
+            pass.set_pipeline(&self.kernels.pipelines[0]);
             pass.set_bind_group(0, &self.groups[self.current], &[]);
             pass.dispatch_workgroups((self.n as u32).div_ceil(WORKGROUP), 1, 1);
         }

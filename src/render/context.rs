@@ -8,6 +8,8 @@
 use std::any::{Any, TypeId};
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
@@ -42,6 +44,8 @@ impl BackendChoice {
 /// (Chromium keeps at most 16 WebGL contexts a page, and each device costs start-up time and
 /// memory), and the pipelines compiled for it (see [`Gpu::cached`]).
 struct PageGpu {
+    /// Set when the browser reports the WebGPU device lost.
+    device_lost: Arc<AtomicBool>,
     instance: wgpu::Instance,
     device: wgpu::Device,
     queue: wgpu::Queue,
@@ -52,8 +56,14 @@ struct PageGpu {
     encode_srgb_in_shader: bool,
     compute: bool,
     /// WebGL2: the hidden canvas whose context draws every figure (a WebGL2 context draws into
-    /// its own canvas only), its surface, and the size that surface is configured at.
-    gl: Option<(HtmlCanvasElement, wgpu::Surface<'static>, Cell<(u32, u32)>)>,
+    /// its own canvas only), its surface, the size that surface is configured at, and its
+    /// context (asked whether it is lost).
+    gl: Option<(
+        HtmlCanvasElement,
+        wgpu::Surface<'static>,
+        Cell<(u32, u32)>,
+        GlContext,
+    )>,
     /// Pipelines and layouts, one entry per type (see [`Gpu::cached`]).
     cache: RefCell<Vec<(TypeId, wgpu::TextureFormat, Rc<dyn Any>)>>,
     /// Multisampled colour and depth targets by size and format, most recently used last (see
@@ -93,6 +103,11 @@ extern "C" {
         dw: f64,
         dh: f64,
     ) -> Result<(), JsValue>;
+
+    /// The hidden canvas's WebGL2 context.
+    type GlContext;
+    #[wasm_bindgen(method, js_name = isContextLost)]
+    fn is_context_lost(this: &GlContext) -> bool;
 }
 
 /// Where a figure's frames go.
@@ -123,17 +138,20 @@ pub struct Gpu {
 
 impl PageGpu {
     /// The page's GPU for `choice`, made by the first canvas that asks; a canvas that asks while
-    /// it is being made waits for it. A failure is not kept: the next canvas tries again.
+    /// it is being made waits for it. A failure is not kept: the next canvas tries again. A lost
+    /// one is dropped (with its pipelines and shared targets) and made again.
     async fn get(choice: BackendChoice) -> Result<Rc<Self>, String> {
         loop {
-            let slot =
-                PAGE_GPUS.with_borrow_mut(|slots| match slots.iter().find(|(c, _)| *c == choice) {
+            let slot = PAGE_GPUS.with_borrow_mut(|slots| {
+                slots.retain(|(_, page)| !page.as_ref().is_some_and(|p| p.lost()));
+                match slots.iter().find(|(c, _)| *c == choice) {
                     Some((_, page)) => Some(page.clone()),
                     None => {
                         slots.push((choice, None));
                         None
                     }
-                });
+                }
+            });
             match slot {
                 Some(Some(page)) => return Ok(page),
                 Some(None) => super::renderer::sleep_ms(2).await,
@@ -227,11 +245,21 @@ impl PageGpu {
         config.usage = wgpu::TextureUsages::RENDER_ATTACHMENT;
         config.alpha_mode = wgpu::CompositeAlphaMode::Auto;
         config.view_formats = vec![];
-        let gl = (info.backend == wgpu::Backend::Gl).then(|| {
-            configure(&surface, &device, &config);
-            (canvas, surface, Cell::new((1, 1)))
-        });
+        let gl = match info.backend {
+            wgpu::Backend::Gl => {
+                configure(&surface, &device, &config);
+                // The context wgpu made on the canvas: asking again returns it.
+                let context = canvas.get_context("webgl2").ok().flatten();
+                let context = context.ok_or("the WebGL2 canvas lost its context")?;
+                Some((canvas, surface, Cell::new((1, 1)), context.unchecked_into()))
+            }
+            _ => None,
+        };
+        let device_lost = Arc::new(AtomicBool::new(false));
+        let flag = device_lost.clone();
+        device.set_device_lost_callback(move |_, _| flag.store(true, Ordering::Relaxed));
         Ok(Self {
+            device_lost,
             instance,
             device,
             queue,
@@ -244,6 +272,16 @@ impl PageGpu {
             cache: RefCell::new(Vec::new()),
             targets: RefCell::new(Vec::new()),
         })
+    }
+
+    /// Whether the browser took the device (WebGPU) or the hidden canvas's context (WebGL2)
+    /// away: a GPU process that crashed or was reset, a driver update, `device.destroy()`,
+    /// `WEBGL_lose_context`. Nothing drawn with it shows any more.
+    fn lost(&self) -> bool {
+        match &self.gl {
+            Some((.., context)) => context.is_context_lost(),
+            None => self.device_lost.load(Ordering::Relaxed),
+        }
     }
 }
 
@@ -283,12 +321,19 @@ impl Gpu {
         })
     }
 
+    /// Whether the page's device or WebGL2 context was lost: frames are then skipped and resizes
+    /// ignored, and a new `Gpu` on the same canvas ([`Gpu::new`]) gets a new device.
+    pub fn lost(&self) -> bool {
+        self.page.lost()
+    }
+
     /// Resizes the surface to `width × height` physical pixels (at least 1 × 1, at most the
     /// device's texture limit).
     pub fn resize(&mut self, width: u32, height: u32) {
         let max = self.device.limits().max_texture_dimension_2d;
         let (width, height) = (width.clamp(1, max), height.clamp(1, max));
-        if (width, height) != (self.config.width, self.config.height) {
+        // A lost WebGL2 context cannot make the surface's textures (wgpu would panic).
+        if (width, height) != (self.config.width, self.config.height) && !self.lost() {
             self.config.width = width;
             self.config.height = height;
             match &self.target {
@@ -306,11 +351,14 @@ impl Gpu {
     /// would reallocate it each time (about 3 ms on SwiftShader), so a smaller figure draws into
     /// its top-left corner (and its renderer's multisampled targets have the page canvas's size).
     pub(super) fn next_frame(&self) -> Option<wgpu::SurfaceTexture> {
+        if self.lost() {
+            return None;
+        }
         let mut config = self.config.clone();
         let surface = match &self.target {
             Target::Surface(surface) => surface,
             Target::Copy(..) => {
-                let (_, surface, size) = self.page.gl.as_ref()?;
+                let (_, surface, size, _) = self.page.gl.as_ref()?;
                 let (w, h) = size.get();
                 (config.width, config.height) = (w.max(config.width), h.max(config.height));
                 if (config.width, config.height) != (w, h) {

@@ -562,6 +562,15 @@ impl Renderer {
         renderer
     }
 
+    /// Takes `old`'s pixel ratio, background, light and frame count (a renderer made anew after
+    /// the page's GPU was lost).
+    pub fn keep_settings_of(&mut self, old: &Renderer) {
+        self.px_per_css = old.px_per_css;
+        self.clear_srgb = old.clear_srgb;
+        self.light_dir = old.light_dir;
+        self.canvas_frames = old.canvas_frames;
+    }
+
     fn object_group(
         device: &wgpu::Device,
         layout: &wgpu::BindGroupLayout,

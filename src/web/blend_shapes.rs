@@ -12,6 +12,8 @@ use wasm_bindgen::prelude::*;
 pub struct BlendShapeFaceScene {
     scene: FaceFigure,
     meshes: Option<[MeshId; 2]>,
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -23,6 +25,7 @@ impl BlendShapeFaceScene {
         BlendShapeFaceScene {
             scene,
             meshes: None,
+            gpu_seen: 0,
         }
     }
 
@@ -103,6 +106,10 @@ impl BlendShapeFaceScene {
 
     /// Blends at `time_sec`, uploads and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        let renewed = viewer.renewed(&mut self.gpu_seen);
+        if renewed {
+            self.meshes = None;
+        }
         let ids = match self.meshes {
             Some(ids) => ids,
             None => {
@@ -135,7 +142,7 @@ impl BlendShapeFaceScene {
             .into_iter()
             .zip([&mut self.scene.differential, &mut self.scene.full])
         {
-            if mesh.take_dirty() {
+            if mesh.take_dirty() || renewed {
                 viewer
                     .renderer
                     .update_mesh(&viewer.gpu, id, &mesh.positions, &mesh.normals)
@@ -158,6 +165,8 @@ impl Default for BlendShapeFaceScene {
 pub struct BlendShapeTargetsScene {
     scene: TargetsFigure,
     meshes: Vec<MeshId>,
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -167,6 +176,7 @@ impl BlendShapeTargetsScene {
         BlendShapeTargetsScene {
             scene: TargetsFigure::new(),
             meshes: Vec::new(),
+            gpu_seen: 0,
         }
     }
 
@@ -191,6 +201,9 @@ impl BlendShapeTargetsScene {
 
     /// Blends what changed, uploads and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.meshes.clear();
+        }
         if self.meshes.is_empty() {
             let indices = self.scene.indices().to_vec();
             for head in &self.scene.heads {

@@ -13,6 +13,8 @@ pub struct FlockScene {
     gpu_on: bool,
     /// The flock on its way back from the GPU for the order plot, with its ticket.
     sample: Option<(GpuSample, crate::render::ReadBack)>,
+    /// The viewer's generation `gpu` was made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -24,6 +26,7 @@ impl FlockScene {
             gpu: None,
             gpu_on: false,
             sample: None,
+            gpu_seen: 0,
         }
     }
 
@@ -52,6 +55,9 @@ impl FlockScene {
             return Err(JsError::new(
                 "GPU mode is off: call setGpu(viewer, true) first",
             ));
+        }
+        if viewer.renewed(&mut self.gpu_seen) {
+            (self.gpu, self.sample) = (None, None);
         }
         let (restart, steps) = self.scene.plan_gpu_steps(time_sec).map_err(js)?;
         if restart || self.gpu.is_none() {

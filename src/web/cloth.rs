@@ -17,6 +17,8 @@ pub struct ClothScene {
     meshes: HashMap<(usize, usize), MeshId>,
     current: Vec<MeshId>,
     camera: Option<OrbitCamera>,
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -35,6 +37,7 @@ impl ClothScene {
             meshes: HashMap::new(),
             current: Vec::new(),
             camera: None,
+            gpu_seen: 0,
         })
     }
     /// "structural", "shear" or "bending"; N/m in [0, 5000].
@@ -108,7 +111,9 @@ impl ClothScene {
     /// stiffness, at this figure's other settings (see `SubstepSearch`).
     #[wasm_bindgen(js_name = substepSearch)]
     pub fn substep_search(&self) -> Result<SubstepSearch, JsError> {
-        Ok(SubstepSearch { search: self.scene.substep_search().map_err(js)? })
+        Ok(SubstepSearch {
+            search: self.scene.substep_search().map_err(js)?,
+        })
     }
     /// When cloth `k` exploded (seconds since the start), or `undefined` while it holds.
     #[wasm_bindgen(js_name = explodedAt)]
@@ -169,6 +174,10 @@ impl ClothScene {
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         self.camera = Some(viewer.camera);
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.meshes.clear();
+            self.current.clear();
+        }
         if self.scene.take_structure_changed() || self.current.len() != self.scene.cloth_count() {
             self.current.clear();
             for k in 0..self.scene.cloth_count() {

@@ -16,6 +16,8 @@ pub struct GltfScene {
     /// The same meshes for skinning in the vertex shader (made on first use per file).
     skin_meshes: Vec<crate::draw::SkinMeshId>,
     skin_generation: u32,
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -28,6 +30,7 @@ impl GltfScene {
             generation: 0,
             skin_meshes: Vec::new(),
             skin_generation: 0,
+            gpu_seen: 0,
         }
     }
 
@@ -112,6 +115,12 @@ impl GltfScene {
 
     /// Draws at `time_sec`; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        if viewer.renewed(&mut self.gpu_seen) {
+            // The meshes went with the lost renderer: make them again, as for a new file.
+            (self.meshes, self.skin_meshes) = (Vec::new(), Vec::new());
+            self.generation = self.scene.generation().wrapping_add(1);
+            self.skin_generation = self.generation;
+        }
         if self.generation != self.scene.generation() {
             // A new file: the last file's GPU meshes are released, the new ones made once.
             for id in self.meshes.drain(..) {

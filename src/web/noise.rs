@@ -16,6 +16,8 @@ use wasm_bindgen::prelude::*;
 struct GpuTerrains {
     meshes: HashMap<(usize, usize), MeshId>,
     current: Vec<MeshId>,
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 impl GpuTerrains {
@@ -25,6 +27,9 @@ impl GpuTerrains {
         viewer: &mut Viewer,
         scene: &mut dyn TerrainFigure,
     ) -> Result<&[MeshId], JsError> {
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.meshes.clear();
+        }
         let dirty = scene.take_dirty();
         let terrains = scene.terrains();
         self.current.clear();
@@ -352,6 +357,8 @@ impl Default for TerrainFigureScene {
 pub struct TexturesScene {
     scene: Textures,
     textures: Vec<crate::texture::TextureId>,
+    /// The viewer's generation the textures were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -361,6 +368,7 @@ impl TexturesScene {
         TexturesScene {
             scene: Textures::new(),
             textures: Vec::new(),
+            gpu_seen: 0,
         }
     }
     /// scale (0.5 to 16), turbulence (0 to 20), N (0 to 8).
@@ -378,6 +386,9 @@ impl TexturesScene {
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let side = crate::figures::noise::TEXTURE_SIZE as u32;
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.textures.clear();
+        }
         if self.scene.take_dirty() || self.textures.is_empty() {
             for (i, rgba) in self.scene.images().into_iter().enumerate() {
                 match self.textures.get(i) {

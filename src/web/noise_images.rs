@@ -16,6 +16,8 @@ pub struct NoiseImagesScene {
     textures: Option<[TextureId; 4]>,
     pending: Option<PendingRead>,
     check: String,
+    /// The viewer's generation the textures were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 impl Default for NoiseImagesScene {
@@ -33,6 +35,7 @@ impl NoiseImagesScene {
             textures: None,
             pending: None,
             check: String::new(),
+            gpu_seen: 0,
         }
     }
     /// Cells across an image (1 to 32) and the seed (0: Perlin's table).
@@ -65,6 +68,10 @@ impl NoiseImagesScene {
     /// Draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let side = IMAGE_SIZE as u32;
+        let renewed = viewer.renewed(&mut self.gpu_seen);
+        if renewed {
+            (self.textures, self.pending) = (None, None);
+        }
         let renderer = &mut viewer.renderer;
         let gpu = &viewer.gpu;
         let ids = match self.textures {
@@ -95,7 +102,7 @@ impl NoiseImagesScene {
                 ids
             }
         };
-        if self.scene.take_gpu_dirty() {
+        if self.scene.take_gpu_dirty() || renewed {
             let s = self.scene.spec();
             let mut image = NoiseImage {
                 origin: s.origin,

@@ -15,6 +15,8 @@ pub struct EmitterScene {
     /// The particles on the GPU (compute shaders), when that mode is on and WebGPU is there.
     gpu: Option<crate::render::ParticlesCompute>,
     gpu_on: bool,
+    /// The viewer's generation the atlas and `gpu` were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -26,6 +28,7 @@ impl EmitterScene {
             atlas: None,
             gpu: None,
             gpu_on: false,
+            gpu_seen: 0,
         }
     }
 
@@ -127,6 +130,9 @@ impl EmitterScene {
     /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
     /// draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        if viewer.renewed(&mut self.gpu_seen) {
+            (self.atlas, self.gpu) = (None, None);
+        }
         if self.atlas.is_none() {
             let side = crate::figures::particles_sprites::ATLAS_SIDE as u32;
             let image = crate::figures::particles_sprites::smoke_atlas_image();

@@ -11,6 +11,8 @@ use wasm_bindgen::prelude::*;
 pub struct SmokeScene {
     scene: SmokeFigure,
     atlas: Option<TextureId>,
+    /// The viewer's generation the atlas was made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 impl Default for SmokeScene {
@@ -26,6 +28,7 @@ impl SmokeScene {
         SmokeScene {
             scene: SmokeFigure::new(),
             atlas: None,
+            gpu_seen: 0,
         }
     }
     /// Puffs (1 to 200) and their lifetime (0.5 to 10 s).
@@ -58,6 +61,9 @@ impl SmokeScene {
     }
     /// Draws the column at `time_sec`; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.atlas = None;
+        }
         let atlas = match self.atlas {
             Some(id) => id,
             None => {

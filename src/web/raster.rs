@@ -187,6 +187,8 @@ pub struct NormalsScene {
     meshes: Option<(MeshId, MeshId)>,
     /// The smooth normals changed (the student's exercise): upload them on the next draw.
     dirty: bool,
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -199,6 +201,7 @@ impl NormalsScene {
             scene,
             meshes: None,
             dirty: false,
+            gpu_seen: 0,
         }
     }
 
@@ -233,6 +236,9 @@ impl NormalsScene {
     }
 
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.meshes = None;
+        }
         let (flat, smooth) = match self.meshes {
             Some(ids) => ids,
             None => {
@@ -274,6 +280,8 @@ pub struct ShadingScene {
     scene: Shading,
     /// The CPU-shaded sphere's GPU mesh, created on the first draw.
     sphere: Option<MeshId>,
+    /// The viewer's generation the sphere was made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -285,6 +293,7 @@ impl ShadingScene {
         ShadingScene {
             scene,
             sphere: None,
+            gpu_seen: 0,
         }
     }
 
@@ -352,6 +361,10 @@ impl ShadingScene {
     /// Draws the sphere (lit from the scene's light) and the vectors at the fragment.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         viewer.renderer.light_dir = self.scene.light();
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.sphere = None;
+            self.scene.reshade();
+        }
         let id = *self.sphere.get_or_insert_with(|| {
             viewer
                 .renderer

@@ -58,6 +58,8 @@ fn sync(
 pub struct SkinningCylinderScene {
     scene: CylinderFigure,
     meshes: [Option<MeshId>; 2],
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -69,6 +71,7 @@ impl SkinningCylinderScene {
         SkinningCylinderScene {
             scene,
             meshes: [None, None],
+            gpu_seen: 0,
         }
     }
 
@@ -149,6 +152,9 @@ impl SkinningCylinderScene {
     /// Skins (if a control changed), uploads and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         self.scene.update().map_err(js)?;
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.meshes = [None, None];
+        }
         let indices = self.scene.rig().mesh.indices.clone();
         let a = sync(viewer, &mut self.meshes[0], &mut self.scene.lbs, &indices)?;
         let b = sync(viewer, &mut self.meshes[1], &mut self.scene.dqs, &indices)?;
@@ -172,6 +178,8 @@ impl Default for SkinningCylinderScene {
 pub struct SkinningSignScene {
     scene: SignFigure,
     mesh: Option<MeshId>,
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -181,6 +189,7 @@ impl SkinningSignScene {
         SkinningSignScene {
             scene: SignFigure::new(),
             mesh: None,
+            gpu_seen: 0,
         }
     }
 
@@ -201,6 +210,9 @@ impl SkinningSignScene {
     /// Skins (if a control changed), uploads and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         self.scene.update().map_err(js)?;
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.mesh = None;
+        }
         let indices = self.scene.rig().mesh.indices.clone();
         let id = sync(viewer, &mut self.mesh, &mut self.scene.mesh, &indices)?;
         let note = self
@@ -227,6 +239,8 @@ pub struct SkinnedHumanScene {
     mesh_dqs: Option<MeshId>,
     /// The same body for skinning in the vertex shader (made on first use).
     gpu_mesh: Option<crate::draw::SkinMeshId>,
+    /// The viewer's generation the meshes were made in (see `Viewer::renewed`).
+    gpu_seen: u32,
 }
 
 #[wasm_bindgen]
@@ -240,6 +254,7 @@ impl SkinnedHumanScene {
             mesh: None,
             mesh_dqs: None,
             gpu_mesh: None,
+            gpu_seen: 0,
         }
     }
 
@@ -336,6 +351,9 @@ impl SkinnedHumanScene {
     /// Uploads the skinned body (or, skinning on the GPU, only its palette) and draws. Returns
     /// the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        if viewer.renewed(&mut self.gpu_seen) {
+            (self.mesh, self.mesh_dqs, self.gpu_mesh) = (None, None, None);
+        }
         if self.scene.gpu() {
             let dirty = self.scene.take_gpu_dirty();
             let skins = &mut viewer.renderer.skin;

@@ -36,6 +36,9 @@ pub struct Viewer {
     /// The camera the figure placed with `setCamera` (or the default): "frame all" returns to it
     /// when the figure declares nothing to keep in view.
     home: OrbitCamera,
+    /// How many times the figure took new GPU objects ([`Viewer::adopt`]): a scene that keeps
+    /// meshes or textures on the GPU uploads them again when it changes (see [`Viewer::renewed`]).
+    generation: u32,
 }
 
 #[wasm_bindgen]
@@ -64,7 +67,28 @@ impl Viewer {
             fitting: true,
             declares_view: false,
             home: OrbitCamera::default(),
+            generation: 0,
         })
+    }
+
+    /// Whether the page's GPU was lost (a GPU reset, a driver update): the page then stops the
+    /// figures' frames, makes a new `Viewer` on the figure's canvas (which gets a new device) and
+    /// passes it to [`Viewer::adopt`].
+    #[wasm_bindgen(getter)]
+    pub fn lost(&self) -> bool {
+        self.gpu.lost()
+    }
+
+    /// Takes the GPU objects of `fresh` (just made on this figure's canvas, after a loss),
+    /// keeping this figure's camera, size and settings; the lost ones go with `fresh`. The scene
+    /// uploads its meshes and textures again at its next draw (see [`Viewer::renewed`]).
+    pub fn adopt(&mut self, mut fresh: Viewer) {
+        fresh.renderer.keep_settings_of(&self.renderer);
+        std::mem::swap(&mut self.gpu, &mut fresh.gpu);
+        std::mem::swap(&mut self.renderer, &mut fresh.renderer);
+        // The kept frame names the lost renderer's meshes.
+        self.pending = false;
+        self.generation += 1;
     }
 
     /// "WebGPU" or "WebGL2".
@@ -176,7 +200,10 @@ impl Viewer {
             let pad = crate::camera::FIT_PAD_PX;
             // With an inset, the figure fits beside it (left of its square), so the inset hides
             // nothing the figure declared.
-            let beside = frame.inset.as_ref().map(|_| crate::draw::inset::inset_rect(size).min.x);
+            let beside = frame
+                .inset
+                .as_ref()
+                .map(|_| crate::draw::inset::inset_rect(size).min.x);
             let fitted = match beside {
                 Some(left) => self.camera.fit_left_of(&points, size, left, pad),
                 None => false,
@@ -370,6 +397,13 @@ impl Viewer {
 }
 
 impl Viewer {
+    /// True once after each [`Viewer::adopt`] for a scene that last saw generation `seen` (and
+    /// updates it): the scene's meshes, textures and compute buffers were on the lost device, and
+    /// it makes them again.
+    pub(crate) fn renewed(&self, seen: &mut u32) -> bool {
+        std::mem::replace(seen, self.generation) != self.generation
+    }
+
     /// Draws the current frame offscreen and returns RGBA bytes (tests).
     pub async fn read_pixels(&mut self, width: u32, height: u32) -> Result<Vec<u8>, String> {
         self.renderer

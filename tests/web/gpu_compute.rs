@@ -171,3 +171,51 @@ async fn compare_flocks(gpu: &Gpu, params: &BoidParams) {
         0.02,
     );
 }
+
+/// Two figures of one page step their particles and their flocks with the page's kernels (each
+/// compute shader compiled once per page), and both figures' systems run.
+#[wasm_bindgen_test]
+async fn two_figures_share_the_compute_kernels_and_both_run() {
+    let figures = [gpu().await, gpu().await];
+    if !figures[0].compute {
+        return;
+    }
+    let surfaces = Surfaces::default();
+    let mut emitters = [[Emitter::fountain(Vec3::ZERO)]; 2];
+    let mut systems =
+        [1, 2].map(|seed| ParticlesCompute::new(&figures[seed - 1], 512, seed as u32).unwrap());
+    assert!(systems[0].shares_kernels(&systems[1]));
+    let start = Flock::new(64, &BoidParams::default(), 3).unwrap();
+    let mut flocks = figures
+        .each_ref()
+        .map(|g| BoidsCompute::new(g, &start.positions, &start.velocities, 0.0).unwrap());
+    assert!(flocks[0].shares_kernels(&flocks[1]));
+    for _ in 0..30 {
+        for k in 0..2 {
+            let g = &figures[k];
+            systems[k]
+                .step(g, &mut emitters[k], &surfaces, 1.0 / 60.0)
+                .unwrap();
+            flocks[k]
+                .step(g, &BoidParams::default(), 1.0 / 60.0)
+                .unwrap();
+        }
+    }
+    for k in 0..2 {
+        let (p, _, alive) = systems[k].read_back(&figures[k]).await.unwrap();
+        // The fountain spawns 200 a second: about 100 in 0.5 s, risen off the ground.
+        let risen = p
+            .iter()
+            .zip(&alive)
+            .filter(|(p, a)| **a && p.y > 0.05)
+            .count();
+        assert!(risen > 50, "figure {k}: {risen} particles alive and risen");
+        let (p, _) = flocks[k].read_back(&figures[k]).await.unwrap();
+        let moved = p
+            .iter()
+            .zip(&start.positions)
+            .filter(|(a, b)| a.distance(**b) > 0.01)
+            .count();
+        assert_eq!(moved, 64, "figure {k}: every boid moved");
+    }
+}

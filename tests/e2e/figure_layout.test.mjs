@@ -1,0 +1,57 @@
+// Where a figure's parts sit at the two page sizes (www/style.css): a canvas stacked over its
+// panel keeps its 420 px; a "stacked" figure (lesson 11's short panels) puts its controls under a
+// full-width canvas at 1600 px too, leaving no empty column beside it; a "notes-first" figure
+// (lesson 13's drape) shows its note right under the canvas and timeline at 800 px, before its
+// controls.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { launch, serveDist, openPage } from './browser.mjs';
+
+const site = serveDist();
+
+/** Boxes of `selectors` (CSS px, page coordinates) inside the figure `figure`. */
+function boxes(page, figure, selectors) {
+  return page.evaluate(([figure, selectors]) => Object.fromEntries(selectors.map((s) => {
+    const r = document.querySelector(`${figure} ${s}`).getBoundingClientRect();
+    return [s, { top: r.top + scrollY, bottom: r.bottom + scrollY, left: r.left, right: r.right, width: r.width, height: r.height }];
+  })), [figure, selectors]);
+}
+
+test('figures keep their canvas height, and short or tall panels sit where the page reads best', async () => {
+  const context = await launch('webgl2');
+  try {
+    const open = (lesson, width, height) =>
+      openPage(context, `${site.origin}/lessons/${lesson}/?backend=webgl2`, { width, height });
+    {
+      const { page } = await open('09-skinning', 800, 600);
+      const b = await boxes(page, '#fig-human', ['.stage canvas', '.panel']);
+      assert.equal(b['.stage canvas'].height, 420, '800 px: the canvas over its panel keeps 420 px');
+      assert.ok(b['.panel'].top >= b['.stage canvas'].bottom - 1, '800 px: the panel is under the canvas');
+      await page.close();
+    }
+    {
+      const { page } = await open('11-particles', 1600, 1000);
+      const figure = await boxes(page, '#fig-freefall', ['.stage canvas', '.panel', '.note']);
+      const canvas = figure['.stage canvas'];
+      assert.ok(figure['.panel'].top >= canvas.bottom - 1, `1600 px: the short panel is under the canvas ${JSON.stringify(figure)}`);
+      assert.ok(canvas.width > 880, `1600 px: the canvas takes the figure's width (${canvas.width} px)`);
+      // The figure with many controls keeps its panel beside the canvas.
+      const emitters = await boxes(page, '#fig-emitters', ['.stage canvas', '.panel']);
+      assert.ok(emitters['.panel'].left >= emitters['.stage canvas'].right - 1, '1600 px: a tall panel stays beside');
+      await page.close();
+    }
+    for (const [width, height] of [[800, 600], [1600, 1000]]) {
+      const { page } = await open('13-cloth', width, height);
+      const b = await boxes(page, '#fig-drape', ['.stage canvas', '.panel', '#drape-timeline', '#drape-note']);
+      const canvas = b['.stage canvas'];
+      // The timeline, then the note, right under the canvas (on a wide page the panel is beside).
+      assert.ok(b['#drape-note'].top - canvas.bottom < 80,
+        `${width} px: the note starts ${b['#drape-note'].top - canvas.bottom} px under the canvas`);
+      if (width === 800) assert.ok(b['.panel'].top >= b['#drape-note'].bottom - 1, '800 px: the controls come after the note');
+      else assert.ok(b['.panel'].left >= canvas.right - 1, '1600 px: the panel is beside the canvas');
+      await page.close();
+    }
+  } finally {
+    await context.close();
+  }
+});

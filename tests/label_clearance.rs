@@ -1,0 +1,112 @@
+//! Native tests that a figure's labels, placed by the shell's layout (src/draw/layout.rs) on the
+//! canvas the page gives the figure at 800 × 600 and 1600 × 1000, keep off the dots (markers) and
+//! wide lines (strokes) of the figure, so that no label hides what it names. Text is measured as
+//! the page sets it (bold, 0.8 rem): about 7.5 px a character and 16 px tall.
+#![cfg(not(target_arch = "wasm32"))]
+
+use glam::{Vec2, Vec3};
+use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+use inbetween::draw::layout::{place, LabelBox, Rect};
+use inbetween::draw::{project_labels, Frame};
+
+/// The canvases a 3D figure gets at the two page sizes (beside or under its 270 px panel), CSS px.
+const CANVASES: [Vec2; 2] = [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)];
+
+/// The shown labels' boxes, as the page lays them out.
+fn label_boxes(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<(String, Rect)> {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let labels = project_labels(&frame.labels, view_proj, size.x, size.y);
+    let boxes: Vec<LabelBox> = labels
+        .iter()
+        .map(|l| LabelBox {
+            anchor: Vec2::new(l.x_px, l.y_px),
+            size: Vec2::new(7.5 * l.text.chars().count() as f32, 16.0),
+            left: l.left,
+            visible: l.visible,
+            priority: l.priority,
+        })
+        .collect();
+    place(&boxes, size)
+        .iter()
+        .zip(labels.iter().zip(&boxes))
+        .filter(|(p, _)| p.shown)
+        .map(|(p, (l, b))| {
+            let rect = Rect {
+                min: p.top_left,
+                size: b.size,
+            };
+            (l.text.clone(), rect)
+        })
+        .collect()
+}
+
+/// Asserts that no shown label's box covers a marker (its whole dot) or a point of a stroke.
+fn assert_clear(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2) {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
+    for (text, rect) in label_boxes(frame, camera, size) {
+        for m in &frame.markers {
+            let Some(c) = at(m.center) else { continue };
+            let r = 0.5 * m.size_px.abs();
+            let grown = Rect {
+                min: rect.min - r,
+                size: rect.size + 2.0 * r,
+            };
+            let inside = c.cmpge(grown.min).all() && c.cmple(grown.max()).all();
+            assert!(
+                !inside,
+                "{name} on {size}: label {text:?} at {:?} covers a dot at {c}",
+                rect.min
+            );
+        }
+        for s in &frame.strokes {
+            let (Some(a), Some(b)) = (at(s.a), at(s.b)) else {
+                continue;
+            };
+            for k in 0..=16 {
+                let p = a.lerp(b, k as f32 / 16.0);
+                let inside = p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all();
+                assert!(
+                    !inside,
+                    "{name} on {size}: label {text:?} at {:?} crosses a line at {p}",
+                    rect.min
+                );
+            }
+        }
+    }
+}
+
+/// The camera a page's `setCamera` places, fitted to what the frame declares (as the viewer does).
+fn page_camera(view: [f32; 6], frame: &Frame, size: Vec2) -> OrbitCamera {
+    let mut camera = OrbitCamera::from_view(view);
+    if !frame.keep_in_view.is_empty() {
+        camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+    }
+    camera
+}
+
+#[test]
+fn lesson_00_depth_side_view_labels_keep_off_the_bars_and_the_line() {
+    // The page's defaults (lessons/00-triangles-to-pixels/lesson.js): 16 bits, 0.1 m to 1 km.
+    let mut scene = inbetween::figures::raster::DepthPrecision::new();
+    scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame);
+    for size in CANVASES {
+        let camera = page_camera([0.0, 3.0, -20.0, 30.0, 1.2, 0.45], &frame, size);
+        assert_clear("00 depth", &frame, &camera, size);
+    }
+}
+
+#[test]
+fn lesson_02_keys_time_axis_labels_keep_off_the_curves() {
+    let mut scene = inbetween::figures::curves::KeyframesScene::new();
+    for tau in [0.0, 1.7, 3.6] {
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, tau).unwrap();
+        for size in [Vec2::new(760.0, 300.0), Vec2::new(650.0, 300.0)] {
+            let camera = page_camera([0.3, 0.8, -1.3, 6.5, 0.75, 0.4], &frame, size);
+            assert_clear("02 keys", &frame, &camera, size);
+        }
+    }
+}
