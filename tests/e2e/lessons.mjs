@@ -214,15 +214,16 @@ async function moveEveryControl(page, figure, where, limit = Infinity) {
   // with `again` (a toggle), a change in either
   // direction counts (turning a walk off while paused may keep the pose; turning it on moves it).
   // A dropdown passes `tries` > 1: the next options are tried in turn until one changes the
-  // figure (a preset equal to the current keys changes nothing, rightly).
-  const check = async (what, act, again = false, tries = 1) => {
+  // figure (a preset equal to the current keys changes nothing, rightly), each for up to 12 frames
+  // (`waitFrames`), since an option may load a file first (the glTF figures' sample character).
+  const check = async (what, act, again = false, tries = 1, waitFrames = 3) => {
     const started = Date.now();
     const before = await pausedSignature(figure);
     let changed = false;
     let after = before;
     for (let k = 0; k < tries && !changed; k++) {
       await act(k, before);
-      after = await signatureAfter(figure, before);
+      after = await signatureAfter(figure, before, waitFrames);
       changed = after !== before;
     }
     if (again && !changed) {
@@ -262,7 +263,7 @@ async function moveControls(page, figure, check) {
       const select = c.locator('select');
       const options = await select.locator('option').allTextContents();
       const current = await select.evaluate((s) => s.selectedIndex);
-      await check(`dropdown "${name}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
+      await check(`dropdown "${name}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1, 12);
       continue;
     }
     if (classes.includes('number')) {
@@ -299,7 +300,7 @@ async function moveControls(page, figure, check) {
         await clickAt(page, play);
       }, false, 3);
     } else {
-      await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
+      await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1, 12);
     }
   }
   for (const scrub of await figure.locator('.timeline .scrub').all()) {
