@@ -1,5 +1,5 @@
 //! Lesson 11 core: free fall, integrators, bouncing, the particle system.
-// Native only (proptest); the browser runs tests/web_cores/particles.rs.
+// Native only (proptest); the browser runs tests/web_cores/particles.rs (in tests/web.rs).
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::{Vec3, Vec4};

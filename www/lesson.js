@@ -101,6 +101,13 @@ const state = {
   panic: null,
   /** Exercises that panicked in the sandbox this page load: name -> message. */
   panickedExercises: {},
+  /** The 3D figures' drawing-buffer pixels per device pixel (see `requestedRenderScale`). */
+  renderScale: requestedRenderScale(),
+  /** Sets `renderScale` and resizes every 3D figure's drawing buffer to it. */
+  setRenderScale(scale) {
+    state.renderScale = scale;
+    for (const figure of state.figures) figure.resize();
+  },
 };
 // For tests and for the curious: what went wrong, which backend each figure uses.
 window.__inbetween = state;
@@ -134,6 +141,17 @@ function installErrorHandlers() {
 /** `?backend=webgpu|webgl2|auto` from the page URL. */
 export function requestedBackend() {
   return new URLSearchParams(location.search).get('backend') ?? 'auto';
+}
+
+/**
+ * `?render-scale=S` from the page URL, S in [0.25, 1] (1 otherwise): the 3D figures' drawing
+ * buffers get S times the canvas's device pixels in each direction, and the browser scales the
+ * image up to the canvas. A software GPU (the tests' SwiftShader) or a slow machine then draws
+ * S² of the pixels; what a figure draws (its draw list, its labels) does not change.
+ */
+function requestedRenderScale() {
+  const scale = Number(new URLSearchParams(location.search).get('render-scale') ?? 1);
+  return scale >= 0.25 && scale <= 1 ? scale : 1;
 }
 
 function renderMath() {
@@ -543,7 +561,7 @@ async function createFigure(selector) {
   const resize = () => {
     resized++;
     const r = canvas.getBoundingClientRect();
-    const dpr = window.devicePixelRatio || 1;
+    const dpr = (window.devicePixelRatio || 1) * state.renderScale;
     canvas.width = Math.max(1, Math.round(r.width * dpr));
     canvas.height = Math.max(1, Math.round(r.height * dpr));
     viewer.resize(r.width, r.height, dpr);
@@ -559,7 +577,7 @@ async function createFigure(selector) {
     }
   }, { rootMargin: '100px' }).observe(canvas);
   state.figures.push({
-    selector, backend: viewer.backend, viewer, canvas, requested: backend,
+    selector, backend: viewer.backend, viewer, canvas, requested: backend, resize,
     placeLabels: labelLayer(canvas, viewer, () => resized),
   });
   return viewer;

@@ -69,6 +69,9 @@ function phaseClock(where) {
 
 const open = (context, path) => openPage(context, site.origin + path);
 
+/** The 3D figures' render scale (`?render-scale`) while a lesson page's controls are moved. */
+const SWEEP_RENDER_SCALE = Number(process.env.E2E_RENDER_SCALE ?? 0.5);
+
 /**
  * Every plot on the page names the quantity and unit of both axes, as the lessons write them:
  * "time (s)", "slide (cm)", "weight (0 to 1)", "depth (no unit)": text, then a non-empty
@@ -211,15 +214,16 @@ async function moveEveryControl(page, figure, where, limit = Infinity) {
   // with `again` (a toggle), a change in either
   // direction counts (turning a walk off while paused may keep the pose; turning it on moves it).
   // A dropdown passes `tries` > 1: the next options are tried in turn until one changes the
-  // figure (a preset equal to the current keys changes nothing, rightly).
-  const check = async (what, act, again = false, tries = 1) => {
+  // figure (a preset equal to the current keys changes nothing, rightly), each for up to 12 frames
+  // (`waitFrames`), since an option may load a file first (the glTF figures' sample character).
+  const check = async (what, act, again = false, tries = 1, waitFrames = 3) => {
     const started = Date.now();
     const before = await pausedSignature(figure);
     let changed = false;
     let after = before;
     for (let k = 0; k < tries && !changed; k++) {
       await act(k, before);
-      after = await signatureAfter(figure, before);
+      after = await signatureAfter(figure, before, waitFrames);
       changed = after !== before;
     }
     if (again && !changed) {
@@ -259,7 +263,7 @@ async function moveControls(page, figure, check) {
       const select = c.locator('select');
       const options = await select.locator('option').allTextContents();
       const current = await select.evaluate((s) => s.selectedIndex);
-      await check(`dropdown "${name}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
+      await check(`dropdown "${name}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1, 12);
       continue;
     }
     if (classes.includes('number')) {
@@ -296,7 +300,7 @@ async function moveControls(page, figure, check) {
         await clickAt(page, play);
       }, false, 3);
     } else {
-      await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1);
+      await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1, 12);
     }
   }
   for (const scrub of await figure.locator('.timeline .scrub').all()) {
@@ -645,7 +649,11 @@ async function galleryPage(context, backend) {
  */
 async function lessonPage(context, backend, lesson) {
   const clock = phaseClock(`${lesson.folder} (${backend})`);
-  const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}`);
+  // The checks before the page sizes' look at the figures' draw lists, text and plots, and at
+  // their 3D pixels only through fractions and means (coverage, colours, a mean difference): they
+  // run with the 3D figures drawn at half resolution (a quarter of SwiftShader's pixels), and the
+  // page sizes' checks and screenshots at full resolution.
+  const { page, problems } = await open(context, `/lessons/${lesson.folder}/?backend=${backend}&render-scale=${SWEEP_RENDER_SCALE}`);
   clock('load');
   const label = backend === 'webgpu' ? 'WebGPU' : 'WebGL2';
   assert.equal(await page.evaluate(() => document.body.dataset.backend), label);
@@ -720,6 +728,7 @@ async function lessonPage(context, backend, lesson) {
   // off its canvas, and the page's screenshots to look at (in the state the controls and the quiz
   // left). A backend that skips them gets one screenshot at the test's own size.
   const sizes = light(backend) ? [] : [[800, 600], [1600, 1000]];
+  await page.evaluate(() => window.__inbetween.setRenderScale(1));
   for (const [w, h] of sizes) {
     await page.setViewportSize({ width: w, height: h });
     await frames(page);

@@ -27,7 +27,7 @@ async fn gpu() -> Gpu {
     let gpu = Gpu::new(canvas, BackendChoice::Auto)
         .await
         .expect("an adapter (WebGPU or WebGL2)");
-    if let Some(expected) = option_env!("INBETWEEN_EXPECT_BACKEND") {
+    if let Some(expected) = crate::EXPECTED_BACKEND {
         assert_eq!(gpu.backend_name, expected, "adapter: {}", gpu.adapter_name);
     }
     gpu
