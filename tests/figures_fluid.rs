@@ -329,6 +329,13 @@ fn the_splash_steps_a_few_steps_a_call_and_replays_when_the_time_goes_back() {
         calls += 1;
     }
     assert_eq!(calls, 120usize.div_ceil(SPLASH_STEPS_PER_CALL));
+    // Many particles: fewer steps a call; all pairs: one.
+    fig.set("PBF", 12_000.0, "grid", 0.0).unwrap();
+    assert_eq!(fig.advance_to(0.5).unwrap(), 2);
+    fig.set("PBF", 4000.0, "all pairs", 0.0).unwrap();
+    assert_eq!(fig.advance_to(0.5).unwrap(), 1);
+    fig.set("PBF", 3000.0, "grid", 0.0).unwrap();
+    while fig.advance_to(0.5).unwrap() > 0 {}
     // The same time again takes no step (the fluid may be up to half a step past it).
     assert_eq!(fig.advance_to(0.5).unwrap(), 0);
     let there = fig.fluid().positions.clone();
@@ -345,12 +352,16 @@ fn the_splash_steps_a_few_steps_a_call_and_replays_when_the_time_goes_back() {
         fig.set("PBF", 1e9, "grid", 0.0),
         fig.set("PBF", 3000.0, "octree", 0.0),
         fig.set("PBF", 3000.0, "grid", f32::NAN),
+        fig.set("PBF", 8000.0, "all pairs", 0.0),
     ] {
         assert!(bad.is_err());
     }
     assert_eq!(fig.fluid().len(), before);
     let note = fig.draw(&mut Frame::default());
-    assert!(note.starts_with("PBF, 2584 particles"), "{note}");
+    assert!(
+        note.starts_with("PBF, 2584 particles, neighbours from the grid"),
+        "{note}"
+    );
 }
 
 /// Vorticity confinement gives back motion that PBF's damping takes: the splash keeps more

@@ -634,13 +634,21 @@ impl DamBreakFigure {
     /// Steps both fluids to `time_sec` (0 to [`DAM_DURATION_SEC`]), replaying from the start when
     /// the time goes back; records a sample per frame passed.
     pub fn advance_to(&mut self, time_sec: f32) -> Result<(), String> {
+        self.advance_toward(time_sec, usize::MAX)
+    }
+
+    /// As [`DamBreakFigure::advance_to`], at most `frames` frames of [`DAM_FRAME_SEC`] a call
+    /// (the page's: a frame that cannot catch up leaves the rest to the next ones).
+    pub fn advance_toward(&mut self, time_sec: f32, frames: usize) -> Result<(), String> {
         let t = super::in_range("time (s)", time_sec, 0.0, DAM_DURATION_SEC)?;
+        let mut left = frames;
         // A frame is taken once less than half of it is left to `t`, so the fluids may be up to
         // half a frame past `t`: only an earlier time starts over.
         if t + 0.5 * DAM_FRAME_SEC + 1e-6 < self.fluids[1].time {
             self.reset();
         }
-        while self.fluids[1].time + 0.5 * DAM_FRAME_SEC <= t {
+        while left > 0 && self.fluids[1].time + 0.5 * DAM_FRAME_SEC <= t {
+            left -= 1;
             let frame_end = self.fluids[1].time + DAM_FRAME_SEC;
             for f in &mut self.fluids {
                 // An exploded fluid stops; its time stays where it stopped.
@@ -728,8 +736,13 @@ pub const SPLASH_H_SPACINGS: f32 = 2.0;
 pub const SPLASH_DURATION_SEC: f32 = 3.0;
 /// The most steps one call of [`SplashFigure::advance_to`] takes: a frame that cannot catch up
 /// leaves the rest to the next frames (the fluid falls behind the timeline) instead of holding
-/// the page.
+/// the page. With many particles fewer: [`SPLASH_STEP_BUDGET`] particle-steps a call, at least
+/// one step; with all pairs, one step.
 pub const SPLASH_STEPS_PER_CALL: usize = 8;
+pub const SPLASH_STEP_BUDGET: usize = 24_000;
+/// The most particles the all-pairs search takes: it tests N² pairs a step, 16 million at
+/// 4,000, which a frame can just afford.
+pub const SPLASH_ALL_PAIRS_MAX: usize = 4000;
 /// The step-time sweep's sizes, particles.
 pub const SPLASH_SWEEP_SIZES: [usize; 6] = [250, 500, 1000, 2000, 4000, 8000];
 
@@ -820,6 +833,11 @@ impl SplashFigure {
         let count = super::whole_number("particles", count, SPLASH_MIN, SPLASH_MAX)?;
         let search = parse_search(search)?;
         let vorticity = super::in_range("vorticity confinement", vorticity, 0.0, 0.5)?;
+        if search == Search::AllPairs && count > SPLASH_ALL_PAIRS_MAX {
+            return Err(format!(
+                "all pairs takes at most {SPLASH_ALL_PAIRS_MAX} particles (it tests N² pairs a step), got {count}: use the grid, or fewer particles"
+            ));
+        }
         let same_fluid = (method, count, vorticity) == (self.method, self.count, self.vorticity);
         if !same_fluid {
             self.start = fluid_3d(method, Scene::Drop, count, vorticity)?;
@@ -848,8 +866,14 @@ impl SplashFigure {
         if t + 0.5 * self.fluid.params.dt + 1e-6 < self.fluid.time {
             self.fluid = self.start.clone();
         }
+        let most = match self.search {
+            Search::Grid => {
+                (SPLASH_STEP_BUDGET / self.fluid.len().max(1)).clamp(1, SPLASH_STEPS_PER_CALL)
+            }
+            Search::AllPairs => 1,
+        };
         let mut steps = 0;
-        while steps < SPLASH_STEPS_PER_CALL
+        while steps < most
             && self.fluid.exploded().is_none()
             && self.fluid.time + 0.5 * self.fluid.params.dt <= t
         {
@@ -884,16 +908,25 @@ impl SplashFigure {
             }
         }
         frame.keep_box_in_view(Vec3::ZERO, size);
-        let name = match self.method {
-            Method::Sph => "SPH",
-            Method::Pbf => "PBF",
+        let search = match self.search {
+            Search::Grid => "neighbours from the grid",
+            Search::AllPairs => "neighbours by testing all pairs",
+        };
+        let name = match (self.method, self.vorticity > 0.0) {
+            (Method::Sph, false) => "SPH".to_string(),
+            (Method::Sph, true) => "SPH (vorticity confinement is PBF's)".to_string(),
+            (Method::Pbf, false) => "PBF".to_string(),
+            (Method::Pbf, true) => format!(
+                "PBF with vorticity confinement ε = {}",
+                format_number(self.vorticity)
+            ),
         };
         match f.exploded() {
             Some((t, why)) => format!("{name} stopped at t = {} s: {why}.", format_number(t)),
             None => {
                 let s = f.stats();
                 format!(
-                    "{name}, {} particles, h = {} m, t = {} s: largest compression {:.1} %, fastest particle {} m/s.",
+                    "{name}, {} particles, {search}, h = {} m, t = {} s: largest compression {:.1} %, fastest particle {} m/s.",
                     f.len(),
                     format_number(f.params.h),
                     format_number(f.time),

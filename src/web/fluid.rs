@@ -169,9 +169,9 @@ impl DamBreakScene {
     pub fn samples(&self) -> Vec<f32> {
         flat(self.scene.plot_rows())
     }
-    /// Steps to `time_sec` and draws; returns the note.
+    /// Steps towards `time_sec` (at most two frames a call) and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
-        self.scene.advance_to(time_sec).map_err(js)?;
+        self.scene.advance_toward(time_sec, 2).map_err(js)?;
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)
@@ -198,8 +198,9 @@ impl SplashScene {
             scene: SplashFigure::new(),
         }
     }
-    /// The solver ("SPH" or "PBF"), the particle count (500 to 20,000), the search ("grid" or
-    /// "all pairs") and PBF's vorticity confinement (0 to 0.5); starts over.
+    /// The solver ("SPH" or "PBF"), the particle count (500 to 20,000; all pairs at most 4,000),
+    /// the search ("grid" or "all pairs") and PBF's vorticity confinement (0 to 0.5); starts
+    /// over.
     pub fn set(
         &mut self,
         method: JsValue,
