@@ -317,21 +317,25 @@ fn the_dam_break_figure_shows_what_the_lesson_says() {
     assert!(gone.is_none() && (0.29..0.37).contains(&soft), "{soft}");
 }
 
-use inbetween::figures::fluid::{SplashFigure, SPLASH_DURATION_SEC, SPLASH_STEPS_PER_CALL};
+use inbetween::figures::fluid::{
+    SplashFigure, SPLASH_DURATION_SEC, SPLASH_STEPS_PER_CALL, SPLASH_STEP_BUDGET,
+};
 
 #[test]
 fn the_splash_steps_a_few_steps_a_call_and_replays_when_the_time_goes_back() {
     let mut fig = SplashFigure::new();
     // Far ahead: at most a few steps a call, and the fluid catches up over the calls.
-    assert_eq!(fig.advance_to(0.5).unwrap(), SPLASH_STEPS_PER_CALL);
+    let per_call = (SPLASH_STEP_BUDGET / fig.fluid().len()).min(SPLASH_STEPS_PER_CALL);
+    assert_eq!(fig.advance_to(0.5).unwrap(), per_call);
     let mut calls = 1;
     while fig.advance_to(0.5).unwrap() > 0 {
         calls += 1;
     }
-    assert_eq!(calls, 120usize.div_ceil(SPLASH_STEPS_PER_CALL));
+    let per_call = (SPLASH_STEP_BUDGET / fig.fluid().len()).min(SPLASH_STEPS_PER_CALL);
+    assert_eq!(calls, 120usize.div_ceil(per_call));
     // Many particles: fewer steps a call; all pairs: one.
-    fig.set("PBF", 12_000.0, "grid", 0.0).unwrap();
-    assert_eq!(fig.advance_to(0.5).unwrap(), 2);
+    fig.set("PBF", 10_000.0, "grid", 0.0).unwrap();
+    assert_eq!(fig.advance_to(0.5).unwrap(), 1);
     fig.set("PBF", 4000.0, "all pairs", 0.0).unwrap();
     assert_eq!(fig.advance_to(0.5).unwrap(), 1);
     fig.set("PBF", 3000.0, "grid", 0.0).unwrap();

@@ -38,7 +38,6 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     const yours = scene.yourCurve();
     cols.push(yours.length ? Array.from(yours, (v) => (Number.isFinite(v) ? v : null)) : cols[0].map(() => null));
     plot.setData(cols);
-    rejected = '';
   }, (m) => { rejected = m; });
   gui.onChange(() => { apply(); showNote(note, [rejected, scene.note()].filter(Boolean).join(' ')); markDrawn('#fig-kernels'); });
   apply();
@@ -67,7 +66,6 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       scene.setProbe(p.x, p.y);
       scene.setUseExercise(p.useExercise);
       terms.setData(columns(scene.terms(), 2));
-      rejected = '';
     }, (m) => { rejected = m; });
     gui.onChange(apply);
     apply();
@@ -152,7 +150,6 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       scene.setSph(p.k, p.dt);
       timeline.time = 0;
       timeline.show();
-      rejected = '';
       replot();
     }, (m) => { rejected = m; });
     gui.onChange(apply);
@@ -183,7 +180,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     const gui = new GUI({ container: document.querySelector('#fig-splash .panel'), title: 'Splash' });
     const p = { method: 'PBF', count: 3000, search: 'grid', vorticity: 0 };
     gui.add(p, 'method', ['PBF', 'SPH']).name('solver');
-    gui.add(p, 'count', 500, 20000, 500).name('particles');
+    gui.add(p, 'count', 500, 10000, 500).name('particles');
     gui.add(p, 'search', ['grid', 'all pairs']).name('neighbour search');
     gui.add(p, 'vorticity', 0, 0.5, 0.05).name('vorticity confinement ε (PBF)');
     let rejected = '';
@@ -191,7 +188,6 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       scene.set(p.method, p.count, p.search, p.vorticity);
       timeline.time = 0;
       timeline.show();
-      rejected = '';
     }, (m) => { rejected = m; });
     gui.onChange(apply);
     apply();

@@ -729,7 +729,7 @@ impl DamBreakFigure {
 /// The splash's particle counts: the fewest, the default and the most the page offers.
 pub const SPLASH_MIN: usize = 500;
 pub const SPLASH_DEFAULT: usize = 3000;
-pub const SPLASH_MAX: usize = 20_000;
+pub const SPLASH_MAX: usize = 10_000;
 /// The splash's kernel radius, in particle spacings (about 33 neighbours in 3D).
 pub const SPLASH_H_SPACINGS: f32 = 2.0;
 /// The timeline's length, simulated seconds.
@@ -739,7 +739,7 @@ pub const SPLASH_DURATION_SEC: f32 = 3.0;
 /// the page. With many particles fewer: [`SPLASH_STEP_BUDGET`] particle-steps a call, at least
 /// one step; with all pairs, one step.
 pub const SPLASH_STEPS_PER_CALL: usize = 8;
-pub const SPLASH_STEP_BUDGET: usize = 24_000;
+pub const SPLASH_STEP_BUDGET: usize = 12_000;
 /// The most particles the all-pairs search takes: it tests N² pairs a step, 16 million at
 /// 4,000, which a frame can just afford.
 pub const SPLASH_ALL_PAIRS_MAX: usize = 4000;

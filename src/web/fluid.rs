@@ -198,7 +198,7 @@ impl SplashScene {
             scene: SplashFigure::new(),
         }
     }
-    /// The solver ("SPH" or "PBF"), the particle count (500 to 20,000; all pairs at most 4,000),
+    /// The solver ("SPH" or "PBF"), the particle count (500 to 10,000; all pairs at most 4,000),
     /// the search ("grid" or "all pairs") and PBF's vorticity confinement (0 to 0.5); starts
     /// over.
     pub fn set(
