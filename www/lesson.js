@@ -399,14 +399,14 @@ function tick(nowMs) {
  */
 function renewLostFigures() {
   const lost = state.figures.filter((f) => f.viewer.lost);
-  let note = document.getElementById('gpu-note');
+  let note = document.getElementById('gpu-reset-note');
   if (!lost.length) {
     note?.remove();
     return false;
   }
   if (!note) {
     note = document.createElement('div');
-    note.id = 'gpu-note';
+    note.id = 'gpu-reset-note';
     note.setAttribute('role', 'status');
     note.textContent = 'The browser reset the GPU; the figures are being set up again…';
     document.body.prepend(note);

@@ -116,7 +116,7 @@ for (const backend of ['webgl2', 'webgpu']) {
         });
         // The note shows while the figures are set up again, and goes when they are.
         await page.waitForFunction(() => window.__inbetween.gpuResets === 1, null, { timeout: 10_000 });
-        await page.waitForFunction(() => !document.getElementById('gpu-note'), null, { timeout: 30_000 });
+        await page.waitForFunction(() => !document.getElementById('gpu-reset-note'), null, { timeout: 30_000 });
         await page.evaluate(() => window.__gpus[0].getExtension?.('WEBGL_lose_context')?.restoreContext());
         await frames(page, 6);
         const after = await page.evaluate(() => ({
