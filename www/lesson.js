@@ -926,6 +926,28 @@ export function guarded(gui, p, apply, onReject) {
   };
 }
 
+/**
+ * Takes the next timing of a step-time sweep kept in Rust (`scene.sweepNext()` names the search
+ * to time, "" when the sweep is done; `scene.timingStep(search)` is one step; `scene.sweepRecord(ms)`
+ * records milliseconds per step). The page's clock ticks in 0.1 ms (performance.now() is
+ * coarsened without cross-origin isolation) and a small step takes less, so a timing repeats the
+ * step for at least 2 ms, at most `maxRepeats` times. Returns whether a timing was recorded.
+ */
+export function timeSweepStep(scene, maxRepeats) {
+  const search = scene.sweepNext();
+  if (!search) return false;
+  let k = 0;
+  let elapsed = 0;
+  const t0 = performance.now();
+  do {
+    scene.timingStep(search);
+    k++;
+    elapsed = performance.now() - t0;
+  } while (elapsed < 2 && k < maxRepeats);
+  scene.sweepRecord(elapsed / k);
+  return true;
+}
+
 /** Splits `[a0, b0, c0, a1, b1, c1, …]` (a binding's flat samples) into columns `[[a…], [b…], [c…]]`. */
 export function columns(flat, width) {
   const cols = Array.from({ length: width }, () => []);

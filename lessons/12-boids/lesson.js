@@ -1,6 +1,6 @@
 // Lesson 12: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/boids/, src/figures/boids.rs). The page only times the calls it makes.
-import { startLesson, markDrawn, Plot, GUI, Timeline, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Plot, GUI, Timeline, columns, guarded, showNote, cssVar, timeSweepStep } from '../../www/lesson.js';
 import { BoidRulesScene, FlockScene, lawPlotSamples } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -144,21 +144,7 @@ if (flockViewer) {
     showSweep();
   }
   function sweepStep() {
-    const search = scene.sweepNext();
-    if (!search) return;
-    // The page's clock ticks in 0.1 ms (performance.now() is coarsened without cross-origin
-    // isolation), and a step of 100 boids takes less: a timing repeats the step for at least
-    // 2 ms.
-    let k = 0;
-    let elapsed = 0;
-    const t0 = performance.now();
-    do {
-      scene.timingStep(search);
-      k++;
-      elapsed = performance.now() - t0;
-    } while (elapsed < 2 && k < 256);
-    scene.sweepRecord(elapsed / k);
-    showSweep();
+    if (timeSweepStep(scene, 256)) showSweep();
   }
   startSweep();
 

@@ -1,6 +1,6 @@
 // Lesson 15: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/fluid/, src/figures/fluid.rs), which also says what each figure draws and plots.
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar, timeSweepStep } from '../../www/lesson.js';
 import { KernelsScene, DensityScene, DamBreakScene, SplashScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -210,19 +210,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       showNote(status, scene.sweepNote());
     };
     const sweepStep = () => {
-      const search = scene.sweepNext();
-      if (!search) return;
-      // The page's clock ticks in 0.1 ms: a timing repeats the step for at least 2 ms.
-      let k = 0;
-      let elapsed = 0;
-      const t0 = performance.now();
-      do {
-        scene.timingStep(search);
-        k++;
-        elapsed = performance.now() - t0;
-      } while (elapsed < 2 && k < 64);
-      scene.sweepRecord(elapsed / k);
-      showSweep();
+      if (timeSweepStep(scene, 64)) showSweep();
     };
     document.getElementById('splash-measure').addEventListener('click', () => { scene.startSweep(); showSweep(); });
     showSweep();

@@ -746,6 +746,17 @@ pub const SPLASH_ALL_PAIRS_MAX: usize = 4000;
 /// The step-time sweep's sizes, particles.
 pub const SPLASH_SWEEP_SIZES: [usize; 6] = [250, 500, 1000, 2000, 4000, 8000];
 
+/// The splash's step-time sweep: [`SPLASH_SWEEP_SIZES`], grid against all pairs, slopes fitted
+/// from 1,000 particles.
+fn splash_sweep() -> StepTimeSweep {
+    StepTimeSweep::with(
+        &SPLASH_SWEEP_SIZES,
+        ["grid", "all-pairs"],
+        "particles",
+        1000,
+    )
+}
+
 /// The 3D splash's kernel radius for `count` particles.
 fn splash_h(count: usize) -> f32 {
     SPLASH_H_SPACINGS * spacing_for(Dim::Three, Scene::Drop, count)
@@ -809,12 +820,7 @@ impl SplashFigure {
             count: SPLASH_DEFAULT,
             search: Search::Grid,
             vorticity: 0.0,
-            sweep: StepTimeSweep::with(
-                &SPLASH_SWEEP_SIZES,
-                ["grid", "all-pairs"],
-                "particles",
-                1000,
-            ),
+            sweep: splash_sweep(),
             bench: None,
         }
     }
@@ -939,12 +945,7 @@ impl SplashFigure {
 
     /// Starts the step-time sweep again (the page's "measure" button).
     pub fn start_sweep(&mut self) {
-        self.sweep = StepTimeSweep::with(
-            &SPLASH_SWEEP_SIZES,
-            ["grid", "all-pairs"],
-            "particles",
-            1000,
-        );
+        self.sweep = splash_sweep();
     }
 
     /// The search the sweep times next ("grid" or "all-pairs"), with the timing fluid (a 3D
