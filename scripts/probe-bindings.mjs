@@ -126,6 +126,16 @@ async function workerMain() {
       }
       // Nor has the bench module: its health check is a small kernel run (0 ms in Node, no clock).
       if (wasm.benchHierarchy) return Number.isFinite(wasm.benchHierarchy('world_matrices', 4, 1));
+      // Nor has the glTF module: its health check is an empty file, which must be refused with
+      // the importer's message (a trap would be a RuntimeError without it).
+      if (wasm.importGltf) {
+        try {
+          wasm.importGltf(new Uint8Array(0));
+          return false;
+        } catch (e) {
+          return /not a valid glTF/.test(e.message);
+        }
+      }
       const s = new wasm.LagrangeScene();
       const keys = s.keys();
       s.free();
@@ -339,9 +349,9 @@ function basesFor(types, arity) {
 
 async function main() {
   const dist = process.argv[2] || 'dist';
-  // The three modules of the build (scripts/build): the figures, course and bench modules.
+  // The four modules of the build (scripts/build): the figures, course, bench and glTF modules.
   let bad = 0;
-  for (const name of ['inbetween', 'course', 'bench']) bad += await probeModule(dist, name);
+  for (const name of ['inbetween', 'course', 'bench', 'gltf']) bad += await probeModule(dist, name);
   process.exit(bad ? 1 : 0);
 }
 

@@ -29,6 +29,8 @@
 //!
 //! Caps: [`MAX_FILE_BYTES`], [`MAX_VERTICES`], the skeleton's and clips' own caps.
 
+pub mod wire;
+
 use crate::curves::Track;
 use crate::skeleton::{JointTracks, RawClip, Skeleton, Transform};
 use glam::{Mat4, Quat, Vec3, Vec4};

@@ -14,7 +14,7 @@
 //! | `03-rotations`: rotations | [`rotation`] | [`figures::rotations`] | `web::rotations` (bench: `web::bench_rotation`) | [`exercises::rotations`] (3.x) |
 //! | `04-rigid-motions`: rigid motions | [`rigid`], [`rotation`] (polar, affine keys) | [`figures::rigid`] | `web::rigid` | [`exercises::rotations`] (4.x) |
 //! | `05-noise`: noise and terrain | [`noise`], [`terrain`] | [`figures::noise`] | `web::noise` (bench: `web::bench_noise`) | [`exercises::noise`] |
-//! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`], [`gltf_import`] | [`figures::skeleton`], [`figures::gltf`] | `web::skeleton`, `web::gltf` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
+//! | `06-skeletons`: skeletons and forward kinematics | [`skeleton`], [`gltf_import`] | [`figures::skeleton`], [`figures::gltf`] | `web::skeleton`, `web::gltf`, `web::gltf_module` (bench: `web::bench_skeleton`) | [`exercises::skeleton`] (6.x) |
 //! | `07-inverse-kinematics`: inverse kinematics | [`ik`] | [`figures::ik`] | `web::ik` | [`exercises::ik`] (7.x) |
 //! | `08-blending`: blending | [`skeleton`] (blend, locomotion) | [`figures::blending`] | `web::blending` | [`exercises::blending`] (8.1), [`exercises::skeleton`] (6.3) |
 //! | `09-skinning`: skinning (LBS, DQS, automatic weights) | [`skinning`] | [`figures::skinning`] | `web::skinning` (bench: `web::bench_skinning`) | [`exercises::skinning`] (9.x) |
@@ -29,13 +29,15 @@
 //! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
 //! [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
 //! instance, so a panic there cannot stop the page), `render/` (wgpu, wasm only).
-//! The crate builds three wasm modules (`scripts/build`): the *figures module* (every binding but
-//! the grader's and the CPU bench kernels', and the renderer); with the feature `course-module`,
-//! the *course module* (the cores, the exercises, `web::sandbox`'s `runExercise` and
-//! `web::course`: the page's grader and the quizzes' answers; no renderer); and with the feature
-//! `bench-module`, the *bench module* (the bench page's CPU kernels, `web::bench*` but
-//! `web::bench_gpu`, and the cores they time; no renderer). Student code runs only in the course
-//! module.
+//! The crate builds four wasm modules (`scripts/build`): the *figures module* (every binding but
+//! the grader's, the CPU bench kernels' and the glTF importer's, and the renderer); with the
+//! feature `course-module`, the *course module* (the cores, the exercises, `web::sandbox`'s
+//! `runExercise` and `web::course`: the page's grader and the quizzes' answers; no renderer);
+//! with the feature `bench-module`, the *bench module* (the bench page's CPU kernels,
+//! `web::bench*` but `web::bench_gpu`, and the cores they time; no renderer); and with the
+//! feature `gltf-module`, the *glTF module* (`web::gltf_module`: [`gltf_import::import`], its
+//! result handed to the figures module as bytes by [`gltf_import::wire`]). Student code runs only
+//! in the course module.
 //! GPU paths (lessons 09, 11, 12): skinning in the vertex shader (`render/skin.rs`, both
 //! backends) and compute shaders for particles and boids (`render/compute.rs`, WebGPU only), with
 //! their logic (packing, caps, the statistics compared with the CPU) in [`figures::gpu`].
@@ -80,7 +82,11 @@ pub mod transform;
 
 #[cfg(all(
     target_arch = "wasm32",
-    not(any(feature = "course-module", feature = "bench-module"))
+    not(any(
+        feature = "course-module",
+        feature = "bench-module",
+        feature = "gltf-module"
+    ))
 ))]
 pub mod render;
 #[cfg(target_arch = "wasm32")]

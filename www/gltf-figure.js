@@ -2,10 +2,25 @@
 // (dist/assets/gltf/index.json lists them) or the reader's own file, by file picker or dropped
 // on the figure. Used by lesson 06 (the skeleton and the bind-pose vertices) and lesson 09 (the
 // mesh skinned by LBS or DQS). No math here: it lives in Rust (src/gltf_import.rs,
-// src/figures/gltf.rs). The figure's HTML needs a .stage with a canvas and a .panel, a
+// src/figures/gltf.rs). A file is imported by the glTF module (dist/pkg/gltf.js, loaded on the
+// first file), which hands the result to the figure as bytes: the importer stays out of the
+// figures module that every page loads. The figure's HTML needs a .stage with a canvas and a .panel, a
 // .timeline, an input[type=file] and a .note, all inside `selector`.
 import { markDrawn, Timeline, GUI, showNote } from './lesson.js';
 import { GltfScene } from '../pkg/inbetween.js';
+
+// The glTF module, instantiated once per page on first use: its `importGltf`.
+let importer = null;
+const gltfImporter = () => {
+  importer ??= import('../pkg/gltf.js').then(async (glue) => {
+    await glue.default();
+    return glue.importGltf;
+  }).catch((e) => {
+    importer = null; // the next file tries again
+    throw new Error(`the glTF importer could not be loaded (${e?.message ?? e})`);
+  });
+  return importer;
+};
 
 export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch = false } = {}) {
   const viewer = await lesson.figure(selector);
@@ -46,9 +61,16 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
       });
     }
   };
-  const load = (name, bytes) => {
+  const load = async (name, bytes) => {
+    let imported;
     try {
-      scene.load(name, bytes);
+      imported = (await gltfImporter())(bytes);
+    } catch (e) {
+      scene.reject(name, String(e?.message ?? e)); // the note says why, and what it still shows
+      return;
+    }
+    try {
+      scene.loadImported(name, imported);
     } catch {
       return; // rejected: the scene's note says why, and what it still shows
     }
@@ -57,7 +79,7 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
   const loadSample = async (file) => {
     if (!samples.includes(file)) return;
     const response = await fetch(new URL(`../assets/gltf/${file}`, import.meta.url));
-    load(file, new Uint8Array(await response.arrayBuffer()));
+    await load(file, new Uint8Array(await response.arrayBuffer()));
   };
   if (samples.length) gui.add(p, 'character', samples).name('sample').onChange(() => loadSample(p.character));
   if (skinning) {

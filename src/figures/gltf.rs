@@ -5,7 +5,7 @@
 //! inverse bind matrices, by linear blend or dual quaternion skinning ([`crate::skinning`]).
 
 use super::{format_number, in_range, palette, Frame, MeshId};
-use crate::gltf_import::{import, Imported};
+use crate::gltf_import::{import, ImportError, Imported};
 use crate::rigid::DualQuat;
 use crate::skeleton::{Clip, ClipCursor, Pose};
 use crate::skinning::{dual_quat_palette, skin_dqs, skin_lbs, skinning_palette, SkinWeights};
@@ -103,7 +103,23 @@ impl GltfFigure {
     /// The note of [`GltfFigure::draw`] starts with the outcome: the summary, or that the file
     /// was rejected, why, and which character is still shown.
     pub fn load(&mut self, name: &str, bytes: &[u8]) -> Result<String, String> {
-        let result = self.import_file(name, bytes);
+        self.show_import(name, import(bytes))
+    }
+
+    /// [`GltfFigure::load`] for a file imported elsewhere and handed over as
+    /// [`crate::gltf_import::wire`] bytes: the page imports in the glTF module and draws here.
+    pub fn load_imported(&mut self, name: &str, bytes: &[u8]) -> Result<String, String> {
+        self.show_import(name, crate::gltf_import::wire::decode(bytes))
+    }
+
+    fn show_import(
+        &mut self,
+        name: &str,
+        imported: Result<Imported, ImportError>,
+    ) -> Result<String, String> {
+        let result = imported
+            .map_err(|e| format!("{name}: {e}"))
+            .and_then(|imported| self.show(name, imported));
         match &result {
             Ok(summary) => {
                 self.shown = Some((name.to_string(), summary.clone()));
@@ -137,8 +153,7 @@ impl GltfFigure {
         }
     }
 
-    fn import_file(&mut self, name: &str, bytes: &[u8]) -> Result<String, String> {
-        let imported = import(bytes).map_err(|e| format!("{name}: {e}"))?;
+    fn show(&mut self, name: &str, imported: Imported) -> Result<String, String> {
         let clips = imported
             .clips
             .iter()

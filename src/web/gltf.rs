@@ -34,26 +34,32 @@ impl GltfScene {
         }
     }
 
-    /// Imports a `.gltf` (embedded buffers) or `.glb` file's bytes; returns a summary, or an
-    /// error that says what is wrong with the file (what was loaded before stays).
-    ///
-    /// Caps (the import's work grows with the file): at most 64 MiB of bytes
-    /// (`gltf_import::MAX_FILE_BYTES`, checked before the bytes are copied out of JavaScript),
-    /// 2²⁰ skinned vertices (`MAX_VERTICES`), 2¹⁶ joints (`skeleton::MAX_JOINTS`) and 2¹⁶ keys
-    /// per clip (`MAX_CLIP_KEYS`); a file past any of them is rejected with the cap in the
-    /// message.
-    pub fn load(&mut self, name: JsValue, bytes: JsValue) -> Result<String, JsError> {
+    /// Shows a file imported by the glTF module (`importGltf` there returns `bytes`, a
+    /// `Uint8Array`); returns a summary, or an error that says what is wrong (what was loaded
+    /// before stays). The bytes are checked as thoroughly as a file is
+    /// ([`crate::gltf_import::wire::decode`]), at most `wire::MAX_WIRE_BYTES` of them (checked
+    /// before they are copied out of JavaScript).
+    #[wasm_bindgen(js_name = loadImported)]
+    pub fn load_imported(&mut self, name: JsValue, bytes: JsValue) -> Result<String, JsError> {
         let name: &str = &super::string("name", &name)?;
         let array = super::bytes("bytes", &bytes)?;
-        let (len, max) = (array.length() as usize, crate::gltf_import::MAX_FILE_BYTES);
+        let (len, max) = (
+            array.length() as usize,
+            crate::gltf_import::wire::MAX_WIRE_BYTES,
+        );
         if len > max {
-            // Rejected before the bytes are copied into wasm memory (a file of gigabytes would
-            // not fit); the note says so, as for any rejected file.
-            let why = format!("the file has {len} bytes; the importer reads at most {max}");
+            let why = format!("the imported model has {len} bytes; the figure reads at most {max}");
             return Err(js(self.scene.reject(name, &why)));
         }
-        let bytes: &[u8] = &array.to_vec();
-        self.scene.load(name, bytes).map_err(js)
+        self.scene.load_imported(name, &array.to_vec()).map_err(js)
+    }
+
+    /// Records that the file `name` could not be imported, and why (the glTF module's error):
+    /// the note says so, and what was loaded before stays. Returns the message it shows.
+    pub fn reject(&mut self, name: JsValue, why: JsValue) -> Result<String, JsError> {
+        let name = super::string("name", &name)?;
+        let why = super::string("why", &why)?;
+        Ok(self.scene.reject(&name, &why))
     }
 
     #[wasm_bindgen(getter, js_name = isLoaded)]

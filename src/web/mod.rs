@@ -16,30 +16,40 @@
 
 // The course and bench modules use a few of the argument checks below, not all.
 #![cfg_attr(
-    any(feature = "course-module", feature = "bench-module"),
+    any(
+        feature = "course-module",
+        feature = "bench-module",
+        feature = "gltf-module"
+    ),
     allow(dead_code)
 )]
 
-// One crate, three modules (see the crate's doc and `scripts/build`): the figures module (no
+// One crate, four modules (see the crate's doc and `scripts/build`): the figures module (no
 // feature), the course module (feature `course-module`: the grader and quiz bindings, see
-// `course`) and the bench module (feature `bench-module`: the bench page's CPU kernels). Each
-// holds `start` and `buildInfo` below; the figures and course modules hold the sandbox's
-// `runExercise`.
-#[cfg(all(feature = "course-module", feature = "bench-module"))]
+// `course`), the bench module (feature `bench-module`: the bench page's CPU kernels) and the
+// glTF module (feature `gltf-module`: the importer, see `gltf_module`). Each holds `start` and
+// `buildInfo` below; the figures and course modules hold the sandbox's `runExercise`.
+#[cfg(any(
+    all(feature = "course-module", feature = "bench-module"),
+    all(feature = "course-module", feature = "gltf-module"),
+    all(feature = "bench-module", feature = "gltf-module")
+))]
 compile_error!(
-    "the features `course-module` and `bench-module` each build a module of their own: enable one"
+    "the features `course-module`, `bench-module` and `gltf-module` each build a module of their own: enable one"
 );
 
 #[cfg(feature = "course-module")]
 mod course;
-#[cfg(not(feature = "bench-module"))]
+#[cfg(feature = "gltf-module")]
+mod gltf_module;
+#[cfg(not(any(feature = "bench-module", feature = "gltf-module")))]
 pub mod sandbox;
 
 /// Items of the figures module only: the figures' bindings, the GPU benchmarks' and the renderer's
 /// users.
 macro_rules! figures_module {
     ($($item:item)*) => {
-        $( #[cfg(not(any(feature = "course-module", feature = "bench-module")))] $item )*
+        $( #[cfg(not(any(feature = "course-module", feature = "bench-module", feature = "gltf-module")))] $item )*
     };
 }
 
