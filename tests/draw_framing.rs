@@ -146,6 +146,11 @@ fn figures_that_declare_their_view_fit_at_both_sizes() {
             frames.push((name, f, orbit));
         }
     }
+    let mut f = Frame::default();
+    inbetween::figures::particles::SquashFigure::new()
+        .draw(&mut f, 1.0)
+        .unwrap();
+    frames.push(("11 squash and stretch", f, (0.9, 0.15)));
     for (name, frame, (yaw, pitch)) in frames {
         assert!(!frame.keep_in_view.is_empty(), "{name} declares its view");
         let points: Vec<Vec3> = frame.fit_points();
@@ -210,5 +215,32 @@ fn a_figure_with_an_inset_fits_beside_it() {
         let mut camera = OrbitCamera::default();
         assert!(!camera.fit_left_of(&points, size, 0.0, FIT_PAD_PX));
         assert_eq!(camera, OrbitCamera::default());
+    }
+}
+
+/// Lesson 11's squash figure fits its balls' path (every 0.1 s), not a box around it nor its
+/// 4 m floor grid: in the page's canvas (760 × 420 at 800 px, from the page's orbit) a ball at
+/// the top of its drop is at least 45 px across (2.45 m of drop and label must fit 420 px).
+#[test]
+fn the_squash_figure_frames_its_balls_closely() {
+    use inbetween::draw::{Frame, MeshId};
+    use inbetween::figures::particles::SquashFigure;
+    let mut f = Frame::default();
+    SquashFigure::new().draw(&mut f, 0.0).unwrap();
+    let size = Vec2::new(760.0, 420.0);
+    let mut camera = OrbitCamera {
+        yaw_rad: 0.9,
+        pitch_rad: 0.15,
+        ..OrbitCamera::default()
+    };
+    assert!(camera.fit(&f.fit_points(), size, FIT_PAD_PX));
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    // The rigid ball, drawn first (the other one's model matrix carries its stretch).
+    for m in f.meshes.iter().filter(|m| m.mesh == MeshId::SPHERE).take(1) {
+        let centre = m.model.w_axis.truncate();
+        let radius = m.model.x_axis.truncate().length();
+        let [a, b] = [centre - Vec3::Y * radius, centre + Vec3::Y * radius]
+            .map(|p| project_to_canvas(view_proj, size, p).unwrap());
+        assert!((a - b).length() >= 45.0, "{} px across", (a - b).length());
     }
 }

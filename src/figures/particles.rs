@@ -1530,6 +1530,9 @@ pub struct SquashFigure {
     squash: SquashBall,
     surfaces: Surfaces,
     steps_done: usize,
+    /// Where the balls' centres pass over the timeline, every 0.1 s (the same for both: the
+    /// squash only changes the shape), which the camera fits.
+    path: Vec<Vec3>,
 }
 
 impl Default for SquashFigure {
@@ -1545,17 +1548,28 @@ impl SquashFigure {
             friction: 0.0,
             ..Default::default()
         };
+        let plain = SquashBall::new(0.25, 2.0, 0.6);
+        let mut ball = plain.clone();
+        let mut path = vec![ball.position];
+        let every = (0.1 / SIM_DT).round() as usize;
+        for k in 1..=(SQUASH_DURATION / SIM_DT).round() as usize {
+            ball.step(&surfaces, SIM_DT);
+            if k % every == 0 {
+                path.push(ball.position);
+            }
+        }
         Self {
-            plain: SquashBall::new(0.25, 2.0, 0.6),
+            plain,
             squash: SquashBall::new(0.25, 2.0, 0.6),
             surfaces,
             steps_done: 0,
+            path,
         }
     }
 
     /// The camera the page starts with, as `Viewer::setCamera`'s arguments (target x, y, z,
     /// distance in metres, yaw and pitch in radians): both balls side by side, the rigid one on
-    /// the left.
+    /// the left. The viewer then fits the balls' whole path ([`SquashFigure::draw`] declares it).
     pub fn view(&self) -> [f32; 6] {
         [-0.1, 0.9, 0.0, 5.0, 0.9, 0.15]
     }
@@ -1591,6 +1605,7 @@ impl SquashFigure {
             self.squash.contact_sec,
         );
         self.squash = fresh.squash;
+
         (
             self.squash.stretch_per_speed,
             self.squash.squash,
@@ -1642,6 +1657,18 @@ impl SquashFigure {
         self.advance_to(time_sec)?;
         frame.grid(8, 0.5);
         let offset = |x: f32| Vec3::new(-1.2, 0.0, x);
+        // Both balls' whole path stays in view, as far as a stretched ball reaches and with
+        // the labels above: the camera fits these points, not the 4 m grid.
+        let reach = self.plain.radius * self.squash.max_stretch;
+        for &p in &self.path {
+            for z in [-0.5 * SQUASH_SPACING, 0.5 * SQUASH_SPACING] {
+                let c = p + offset(z);
+                frame.keep_box_in_view(
+                    Vec3::new(c.x - reach, 0.0, c.z - reach),
+                    c + Vec3::new(reach, reach.max(0.45), reach),
+                );
+            }
+        }
         // The rigid ball, in front: at the page's camera it is the left one, so its short label
         // ends before the squash ball's long one begins (labels run rightwards from their
         // anchors; with the long label on the left, "squash and stretch" would run into
