@@ -45,6 +45,26 @@ proptest! {
         );
     }
 
+    /// The grid lists a point's neighbours in cell order, and by index within a cell (the
+    /// order the fluid's sums take, so a faster search must keep it).
+    #[test]
+    fn the_grid_lists_neighbours_in_cell_then_index_order(
+        positions in prop::collection::vec(prop::array::uniform3(-6.0f32..6.0), 0..150),
+        radius in 0.1f32..3.0,
+    ) {
+        let positions: Vec<Vec3> = positions.into_iter().map(Vec3::from_array).collect();
+        let mut grid = Grid::default();
+        grid.configure(Vec3::splat(-4.0), Vec3::splat(4.0), radius);
+        grid.rebuild(&positions);
+        for i in 0..positions.len() {
+            let mut keys = Vec::new();
+            grid.for_each_neighbour(&positions, i, radius, |j| {
+                keys.push((grid.cell_of_point(positions[j]), j))
+            });
+            prop_assert!(keys.windows(2).all(|w| w[0] < w[1]), "{:?}", keys);
+        }
+    }
+
     #[test]
     fn cell_index_is_within_the_grid(p in prop::array::uniform3(-100.0f32..100.0)) {
         let dims = [4, 5, 6];

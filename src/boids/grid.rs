@@ -382,9 +382,11 @@ impl Grid {
         Vec3::new(self.soa[3][k], self.soa[4][k], self.soa[5][k])
     }
 
-    /// Calls `f(j)` for every boid `j ≠ i` within `radius ≤ cell_size` of `positions[i]`
-    /// (the 3 × 3 rows around `i`'s cell, `X_SPLIT` cells either side along x), in increasing
-    /// cell order.
+    /// Calls `f(j)` for every boid `j ≠ i` within `radius ≤ cell_size` of `positions[i]`, in
+    /// increasing cell order (within a cell, increasing index). It reads only the cells that the
+    /// ball's chords cross ([`Grid::for_each_run_near`]), and tests four sorted positions at a
+    /// time: the same tests, in the same order and with the same float operations, as a scan of
+    /// the whole 3 × 3 block of rows, so the neighbours and their order are the same.
     pub fn for_each_neighbour(
         &self,
         positions: &[Vec3],
@@ -396,28 +398,35 @@ impl Grid {
         let r2 = radius * radius;
         let c = self.cell_of[i] as usize;
         let (dx, dy) = (self.dims[0] as usize, self.dims[1] as usize);
-        let (ci, cj, ck) = (c % dx, (c / dx) % dy, c / (dx * dy));
-        let range = |x: usize, n: u32| x.saturating_sub(1)..=(x + 1).min(n as usize - 1);
-        for k in range(ck, self.dims[2]) {
-            for j in range(cj, self.dims[1]) {
-                let row = dx * (j + dy * k);
-                let (lo, hi) = (
-                    row + ci.saturating_sub(X_SPLIT),
-                    row + (ci + X_SPLIT).min(dx - 1),
-                );
-                // Cells lo..=hi are contiguous in memory, and so are their runs in `sorted`.
-                let (a, b) = (
-                    self.cell_start[lo] as usize,
-                    self.cell_start[hi + 1] as usize,
-                );
-                for (t, &jb) in self.sorted.iter().enumerate().take(b).skip(a) {
-                    let jb = jb as usize;
-                    if jb != i && (self.sorted_position(t) - p).length_squared() <= r2 {
+        let cell = (c % dx, (c / dx) % dy, c / (dx * dy));
+        let [x, y, z, ..] = &self.soa;
+        let (px, py, pz, r2v) = (
+            Vec4::splat(p.x),
+            Vec4::splat(p.y),
+            Vec4::splat(p.z),
+            Vec4::splat(r2),
+        );
+        self.for_each_run_near(p, cell, r2, |run| {
+            let mut t = run.start;
+            while t < run.end {
+                // Four lanes from slot t: the padding after the last boid (`PADDING`) keeps
+                // the loads in the arrays; lanes past the run are masked off.
+                let lane = |a: &[f32]| Vec4::from_slice(&a[t..t + 4]);
+                let (ex, ey, ez) = (lane(x) - px, lane(y) - py, lane(z) - pz);
+                let d2 = ex * ex + ey * ey + ez * ez;
+                let left = run.end - t;
+                let mut hits =
+                    d2.cmple(r2v).bitmask() & if left < 4 { (1 << left) - 1 } else { 15 };
+                while hits != 0 {
+                    let jb = self.sorted[t + hits.trailing_zeros() as usize] as usize;
+                    if jb != i {
                         f(jb);
                     }
+                    hits &= hits - 1;
                 }
+                t += 4;
             }
-        }
+        });
     }
 }
 
