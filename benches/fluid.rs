@@ -1,5 +1,6 @@
-//! One step of the 3D dam break (src/fluid) after a tenth of a second of fall, SPH and PBF, at
-//! 10,000 and 50,000 particles (kernel radius 2 spacings, about 33 neighbours), and the
+//! One step of the 3D dam break (src/fluid, `benchmark_fluid`: after a tenth of a second of
+//! fall), SPH and PBF, at 10,000 and 50,000 particles (kernel radius 2 spacings, about 33
+//! neighbours), one step of the 2D one at 10,000 particles (2.7 spacings, about 23), and the
 //! neighbour search alone at 10,000 particles with the grid and with every pair tested. Each
 //! iteration steps a copy of the same state (the copy is not timed).
 //!
@@ -7,22 +8,10 @@
 //! Criterion reports steps per second (one element = one step).
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
-use inbetween::fluid::{spacing_for, Dim, Fluid, FluidParams, Method, Scene, Search};
+use inbetween::fluid::{benchmark_fluid, Dim, Fluid, Method, Search};
 
 fn fluid(method: Method, count: usize) -> Fluid {
-    let mut params = FluidParams::default_3d(method);
-    params.h = 2.0 * spacing_for(Dim::Three, Scene::DamBreak, count);
-    // The time step at this smaller h, for SPH's speed of sound of 20 m/s.
-    if method == Method::Sph {
-        params.dt = 0.4 * params.h / 20.0;
-    }
-    let mut f = Fluid::new(params, Scene::DamBreak, count, 1).expect("valid");
-    let steps = (0.1 / f.params.dt).round() as usize;
-    for _ in 0..steps {
-        f.step();
-    }
-    assert!(f.exploded().is_none());
-    f
+    benchmark_fluid(Dim::Three, method, count).expect("valid")
 }
 
 fn steps(c: &mut Criterion) {
@@ -38,6 +27,16 @@ fn steps(c: &mut Criterion) {
         }
         group.finish();
     }
+    let mut group = c.benchmark_group("fluid/step_2d_10000");
+    group.throughput(Throughput::Elements(1));
+    group.sample_size(10);
+    for (name, method) in [("sph", Method::Sph), ("pbf_4_iterations", Method::Pbf)] {
+        let start = benchmark_fluid(Dim::Two, method, 10_000).expect("valid");
+        group.bench_function(name, |b| {
+            b.iter_batched_ref(|| start.clone(), |f| f.step(), BatchSize::LargeInput)
+        });
+    }
+    group.finish();
     let mut group = c.benchmark_group("fluid/search_3d_10000");
     group.throughput(Throughput::Elements(1));
     group.sample_size(10);

@@ -18,7 +18,12 @@ const cases = args.length ? args : [
 ];
 const wasm = await import(pathToFileURL(`${dir}/pkg/bench.js`).href);
 await wasm.default({ module_or_path: readFileSync(`${dir}/pkg/bench_bg.wasm`) });
-const kernels = { skinning: wasm.benchSkinning, boids: wasm.benchBoids, terrain: wasm.benchTerrain };
+const kernels = {
+  skinning: wasm.benchSkinning, boids: wasm.benchBoids, terrain: wasm.benchTerrain,
+  // The fluid's kernels take the dimension too: fluid2 and fluid3 (size = particles).
+  fluid2: (kernel, size, n) => wasm.benchFluid(kernel, 2, size, n),
+  fluid3: (kernel, size, n) => wasm.benchFluid(kernel, 3, size, n),
+};
 
 function cpuMs(f) {
   const start = process.cpuUsage();

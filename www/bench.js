@@ -102,6 +102,31 @@ export const SUITES = [
     unit: 'step',
   },
   {
+    name: 'fluid 3D: one step of a 20,000-particle dam break, SPH vs PBF with 4 iterations (lesson 15; target under 16 ms per step)',
+    // One item is one step of the fluid (the count is fixed; size counts steps).
+    run: (kernel, size, iterations) => wasm.benchFluid(kernel, 3, 20_000, size * iterations),
+    kernels: ['sph', 'pbf'],
+    baseline: 'sph',
+    size: 1,
+    unit: 'step',
+  },
+  {
+    name: 'fluid 2D: one step of a 10,000-particle dam break, SPH vs PBF with 4 iterations (lesson 15; target under 16 ms per step)',
+    run: (kernel, size, iterations) => wasm.benchFluid(kernel, 2, 10_000, size * iterations),
+    kernels: ['sph', 'pbf'],
+    baseline: 'sph',
+    size: 1,
+    unit: 'step',
+  },
+  {
+    name: 'fluid 3D: the neighbour search of 10,000 particles, grid vs every pair (lesson 15)',
+    run: (kernel, size, iterations) => wasm.benchFluid(kernel, 3, 10_000, size * iterations),
+    kernels: ['search_grid', 'search_all_pairs'],
+    baseline: 'search_all_pairs',
+    size: 1,
+    unit: 'search',
+  },
+  {
     name: 'terrain 512 × 512, 8 octaves (lesson 05)',
     run: (kernel, size, iterations) => wasm.benchTerrain(kernel, size, iterations),
     kernels: ['fbm8_values', 'terrain_with_normals'],

@@ -280,6 +280,34 @@ pub fn spacing_for(dim: Dim, scene: Scene, count: usize) -> f32 {
     (volume / count.max(1) as f32).powf(1.0 / dim.count() as f32)
 }
 
+/// The benchmarks' fluid (`benches/fluid.rs` and the bench page's `benchFluid`): the dam break
+/// of `count` particles with `h` at 2 spacings in 3D (about 33 neighbours) and 2.7 in 2D (about
+/// 23), SPH's time step for a speed of sound of 20 m/s at that `h`, after 0.1 s of fall (so the
+/// step timed is one of water in motion). An error when the count is out of range or the fall
+/// already exploded.
+pub fn benchmark_fluid(dim: Dim, method: Method, count: usize) -> Result<Fluid, String> {
+    let mut params = match dim {
+        Dim::Two => FluidParams::default_2d(method),
+        Dim::Three => FluidParams::default_3d(method),
+    };
+    let spacings = match dim {
+        Dim::Two => 2.7,
+        Dim::Three => 2.0,
+    };
+    params.h = spacings * spacing_for(dim, Scene::DamBreak, count.max(1));
+    if method == Method::Sph {
+        params.dt = 0.4 * params.h / 20.0;
+    }
+    let mut f = Fluid::new(params, Scene::DamBreak, count, 1)?;
+    for _ in 0..(0.1 / f.params.dt).round() as usize {
+        f.step();
+    }
+    match f.exploded() {
+        Some((t, why)) => Err(format!("the benchmark fluid exploded at {t} s: {why}")),
+        None => Ok(f),
+    }
+}
+
 /// A small deterministic generator (xorshift32) for the start's jitter: a seeded run is the
 /// same bit for bit.
 fn jitter(state: &mut u32) -> f32 {

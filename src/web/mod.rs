@@ -64,6 +64,7 @@ bench_module! {
     mod bench_boids;
     mod bench_cloth;
     mod bench_curves;
+    mod bench_fluid;
     mod bench_noise;
     mod bench_rigid_body;
     mod bench_rotation;
