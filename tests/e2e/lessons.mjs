@@ -681,6 +681,9 @@ async function lessonPage(context, backend, lesson) {
     const kind = !(await canvas.count()) ? 'plots'
       : (await canvas.evaluate((c) => c.classList.contains('view2d'))) ? '2d' : '3d';
     if (kind !== '3d' && light(backend)) continue;
+    // Each figure as the page first shows it (timelines paused at 0, the page's own camera),
+    // before the sweep orbits it and moves its controls: the screenshot to review its looks by.
+    if (!light(backend)) await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-default-${backend}.png` });
     if (kind !== '3d') {
       const stats = await pixelStats(page, kind === '2d' ? canvas : figure.locator('.plot, canvas').first(), `drawn${i}`);
       assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
