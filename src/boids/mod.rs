@@ -233,6 +233,26 @@ pub fn leader_path(time_sec: f32, bounds: Vec3) -> Vec3 {
     )
 }
 
+/// [`Flock::new`]'s start without its cap (the GPU steps larger flocks): `count` boids at seeded
+/// random places inside `params.bounds`, moving at half the maximum speed in random directions.
+pub fn seeded_start(count: usize, params: &BoidParams, seed: u64) -> (Vec<Vec3>, Vec<Vec3>) {
+    let mut rng = Rng::new(seed);
+    let b = params.bounds;
+    let positions = (0..count)
+        .map(|_| {
+            Vec3::new(
+                rng.range(-b.x, b.x),
+                rng.range(-b.y, b.y),
+                rng.range(-b.z, b.z),
+            )
+        })
+        .collect();
+    let velocities = (0..count)
+        .map(|_| rng.on_unit_sphere() * 0.5 * params.max_speed)
+        .collect();
+    (positions, velocities)
+}
+
 /// How the flock finds neighbours.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Search {
@@ -263,20 +283,7 @@ impl Flock {
             return Err(format!("{count} boids is too many (at most {MAX_BOIDS})"));
         }
         params.validate()?;
-        let mut rng = Rng::new(seed);
-        let b = params.bounds;
-        let positions = (0..count)
-            .map(|_| {
-                Vec3::new(
-                    rng.range(-b.x, b.x),
-                    rng.range(-b.y, b.y),
-                    rng.range(-b.z, b.z),
-                )
-            })
-            .collect();
-        let velocities = (0..count)
-            .map(|_| rng.on_unit_sphere() * 0.5 * params.max_speed)
-            .collect();
+        let (positions, velocities) = seeded_start(count, params, seed);
         Ok(Self {
             positions,
             velocities,

@@ -4,7 +4,7 @@
 //! first step are not timed; then `steps` steps are queued and the time runs until the GPU has
 //! finished them (a read-back of a few bytes waits for it).
 
-use crate::boids::benchmark_flock;
+use crate::boids::{benchmark_flock, Search};
 use crate::figures::gpu::{MAX_GPU_BOIDS, MAX_GPU_PARTICLES};
 use crate::particles::{Emitter, Sphere, Surfaces};
 use crate::render::{BackendChoice, BoidsCompute, Gpu, ParticlesCompute};
@@ -101,11 +101,11 @@ pub async fn bench_gpu_boids(canvas: JsValue, boids: f64, steps: f64) -> Result<
     let mut on_gpu =
         BoidsCompute::new(&gpu, &flock.positions, &flock.velocities, 0.0).map_err(err)?;
     let dt = 1.0 / 60.0;
-    on_gpu.step(&gpu, &params, dt).map_err(err)?;
+    on_gpu.step(&gpu, &params, dt, Search::Naive).map_err(err)?;
     on_gpu.finish(&gpu).await.map_err(err)?;
     let start = now_ms();
     for _ in 0..steps {
-        on_gpu.step(&gpu, &params, dt).map_err(err)?;
+        on_gpu.step(&gpu, &params, dt, Search::Naive).map_err(err)?;
     }
     on_gpu.finish(&gpu).await.map_err(err)?;
     Ok((now_ms() - start) / steps as f64)
