@@ -287,6 +287,7 @@ mod compute {
         assert_eq!(grid_rows(&cubic, 10, 2).unwrap()[2], [8, 4, 4, 128]);
         assert!(grid_rows(&cubic, MAX_GPU_GRID_BOIDS + 1, 2).is_err());
         assert!(grid_rows(&cubic, 10, 0).is_err());
+        assert!(grid_rows(&cubic, 0, 2).is_err());
         let huge = GridLayout {
             dims: [4096, 4096, 1],
             ..cubic

@@ -219,8 +219,8 @@ impl GridLayout {
     pub fn cubic(min: Vec3, max: Vec3, radius: f32) -> Result<Self, String> {
         if !(min.is_finite() && max.is_finite() && radius.is_finite() && radius > 0.0) {
             return Err(format!(
-                "GPU grid: the box and the radius must be finite and the radius > 0, got \
-                 {min} to {max}, radius {radius}"
+                "GPU grid: the box must be finite and the radius finite and > 0, got radius \
+                 {radius}"
             ));
         }
         let extent = (max - min).max(Vec3::splat(1e-3));
@@ -276,7 +276,8 @@ impl GridLayout {
 /// (its position the first `vec4`'s xyz).
 ///
 /// # Errors
-/// More than [`MAX_GPU_GRID_CELLS`] cells or [`MAX_GPU_GRID_BOIDS`] points, a stride of 0.
+/// More than [`MAX_GPU_GRID_CELLS`] cells, no points or more than [`MAX_GPU_GRID_BOIDS`], a
+/// stride of 0.
 pub fn grid_rows(layout: &GridLayout, n: usize, stride: u32) -> Result<Vec<Row>, String> {
     let cells = layout.cells();
     if cells == 0 || cells > MAX_GPU_GRID_CELLS {
@@ -284,9 +285,9 @@ pub fn grid_rows(layout: &GridLayout, n: usize, stride: u32) -> Result<Vec<Row>,
             "GPU grid: the cell count must lie in [1, {MAX_GPU_GRID_CELLS}], got {cells}"
         ));
     }
-    if n > MAX_GPU_GRID_BOIDS || stride == 0 {
+    if n == 0 || n > MAX_GPU_GRID_BOIDS || stride == 0 {
         return Err(format!(
-            "GPU grid: at most {MAX_GPU_GRID_BOIDS} points of at least one vec4, got {n} of \
+            "GPU grid: 1 to {MAX_GPU_GRID_BOIDS} points of at least one vec4 each, got {n} of \
              {stride}"
         ));
     }

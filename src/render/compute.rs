@@ -462,7 +462,7 @@ impl BoidsCompute {
                 "boids",
                 &format!(
                     "{}\n{}",
-                    super::shader_source!("grid_common.wgsl"),
+                    super::grid::GRID_COMMON,
                     super::shader_source!("boids.wgsl")
                 ),
                 &[

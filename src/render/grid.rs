@@ -21,6 +21,9 @@ use std::rc::Rc;
 
 const WORKGROUP: u32 = 256;
 
+/// `grid_common.wgsl`, for the shaders that search a grid to prefix (one copy in the module).
+pub(super) static GRID_COMMON: &str = super::shader_source!("grid_common.wgsl");
+
 /// The grid's passes, as the page caches them (one compile per page).
 #[derive(Clone)]
 struct GridKernels(Rc<Kernels>);
@@ -65,11 +68,7 @@ impl GpuGrid {
             GridKernels(Rc::new(Kernels::new(
                 gpu,
                 "grid",
-                &format!(
-                    "{}\n{}",
-                    super::shader_source!("grid_common.wgsl"),
-                    super::shader_source!("grid.wgsl")
-                ),
+                &format!("{GRID_COMMON}\n{}", super::shader_source!("grid.wgsl")),
                 &[
                     wgpu::BufferBindingType::Uniform,
                     wgpu::BufferBindingType::Storage { read_only: true },
@@ -88,7 +87,7 @@ impl GpuGrid {
                 ],
             )))
         });
-        let per_point = (n.max(1) * 4) as u64;
+        let per_point = (n * 4) as u64;
         let mut grid = Self {
             n,
             stride,
