@@ -308,6 +308,9 @@ mod compute {
         f.set_gpu_mode(true).unwrap();
         f.set_gpu_count(1_000_000).unwrap();
         assert_eq!(f.gpu_len(), 1_000_000);
+        // A million boids queue one step a call, however far the timeline moved.
+        assert_eq!(f.plan_gpu_steps(0.0).unwrap(), (false, 0));
+        assert_eq!(f.plan_gpu_steps(0.1).unwrap(), (false, 1));
         let scale = f.gpu_params().bounds.x / f.params().bounds.x;
         assert!(
             (scale - (1_000_000f32 / 300.0).cbrt()).abs() < 1e-3,

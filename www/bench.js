@@ -240,7 +240,8 @@ async function main() {
  */
 const GPU_SUITES = [
   { name: 'particles, GPU step (fall, floor and sphere bounces)', run: figures.benchGpuParticles, sizes: QUICK ? [100_000] : [100_000, 1_000_000], unit: 'particle' },
-  { name: 'boids, GPU step (naive O(N²) neighbours, tiled)', run: figures.benchGpuBoids, sizes: QUICK ? [1_000] : [1_000, 4_096], unit: 'boid' },
+  { name: 'boids, GPU step (naive O(N²) neighbours, tiled)', run: (c, n, k) => figures.benchGpuBoids(c, n, k, 'naive'), sizes: QUICK ? [1_000] : [1_000, 4_096], unit: 'boid' },
+  { name: 'boids, GPU step (GPU grid built each step)', run: (c, n, k) => figures.benchGpuBoids(c, n, k, 'grid'), sizes: QUICK ? [10_000] : [100_000, 1_000_000], unit: 'boid' },
 ];
 async function gpuBenches() {
   const status = document.getElementById('gpu-status');

@@ -1052,14 +1052,23 @@ impl NeighbourRules {
 /// the same work): `n` boids at one boid per cubic metre in a cube (about 14 within the default
 /// 1.5 m radius), default rules with a 270° field of view, seeded.
 pub fn benchmark_flock(n: usize) -> Result<(BoidParams, Flock), String> {
-    let half = 0.5 * (n.max(1) as f32).cbrt();
-    let params = BoidParams {
-        bounds: Vec3::splat(half),
-        ..Default::default()
-    };
-    let flock = Flock::new(n, &params, 0x5eed_b01d)?;
+    let params = benchmark_params(n);
+    let flock = Flock::new(n, &params, BENCHMARK_SEED)?;
     Ok((params, flock))
 }
+
+/// [`benchmark_flock`]'s parameters for `n` boids: its box grows with `n`, so the density stays.
+pub fn benchmark_params(n: usize) -> BoidParams {
+    let half = 0.5 * (n.max(1) as f32).cbrt();
+    BoidParams {
+        bounds: Vec3::splat(half),
+        ..Default::default()
+    }
+}
+
+/// [`benchmark_flock`]'s seed: with [`seeded_start`], its start at any count (the GPU benchmarks
+/// step more boids than a [`Flock`] takes).
+pub const BENCHMARK_SEED: u64 = 0x5eed_b01d;
 
 #[cfg(test)]
 mod tests {

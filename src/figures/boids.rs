@@ -29,6 +29,13 @@ pub const PAGE_MAX_TIMED_BOIDS: usize = 20_000;
 /// a longer jump restarts the flock.
 pub const MAX_CATCH_UP: usize = 10;
 
+/// GPU mode: the most steps queued in one call for a flock of `n` boids: [`MAX_CATCH_UP`] up to
+/// 10,000 boids, fewer above, one from 100,000 on, so that a frame queues about the same work
+/// at any size.
+pub fn max_gpu_steps(n: usize) -> usize {
+    (MAX_CATCH_UP * 10_000 / n.max(1)).clamp(1, MAX_CATCH_UP)
+}
+
 /// Length of the flock figure's purple steering arrow per m/s² of steering acceleration, metres.
 pub const STEER_ARROW_M_PER_MS2: f32 = 1.0;
 /// The longest the steering arrow is drawn, metres (the note gives the value).
@@ -795,7 +802,8 @@ impl FlockFigure {
 
     /// GPU mode ([`crate::figures::gpu`]): what [`FlockFigure::advance_to`] would do, without
     /// stepping on the CPU. Returns `(restart, steps)`: on `restart` the flock was reset to a
-    /// fresh seeded start (upload it, then step); then run `steps` steps of [`SIM_DT`] on the GPU.
+    /// fresh seeded start (upload it, then step); then run `steps` steps of [`SIM_DT`] on the GPU,
+    /// at most [`max_gpu_steps`] (a large flock then runs slower than the timeline).
     pub fn plan_gpu_steps(&mut self, time_sec: f32) -> Result<(bool, usize), String> {
         let target = steps_to(time_sec)?;
         let mut restart = false;
@@ -806,7 +814,7 @@ impl FlockFigure {
             self.restart_plot();
             restart = true;
         }
-        let n = target - self.steps_done;
+        let n = (target - self.steps_done).min(max_gpu_steps(self.gpu_len()));
         self.steps_done = target;
         Ok((restart, n))
     }

@@ -8,7 +8,9 @@
 
 use glam::Vec3;
 use inbetween::boids::grid::Grid;
-use inbetween::boids::{BoidParams, Flock, Search};
+use inbetween::boids::{
+    benchmark_flock, benchmark_params, seeded_start, BoidParams, Flock, Search, BENCHMARK_SEED,
+};
 use inbetween::figures::gpu::{flock_stats, particle_stats, GridLayout, MAX_GPU_BOIDS};
 use inbetween::particles::{Emitter, ParticleSystem, Sphere, Surfaces};
 use inbetween::render::{BackendChoice, BoidsCompute, Gpu, GpuGrid, ParticlesCompute};
@@ -173,15 +175,46 @@ async fn gpu_boids_on_the_grid_match_the_cpu_statistically() {
         compare_flocks(&gpu, params, Search::Grid).await;
     }
     // Every pair takes at most MAX_GPU_BOIDS boids; the grid more: a clear error, not a panic.
-    let (params, start) = inbetween::boids::benchmark_flock(MAX_GPU_BOIDS + 1).unwrap();
-    let mut big = BoidsCompute::new(&gpu, &start.positions, &start.velocities, 0.0).unwrap();
+    // Three grid steps of that flock from the same state move every boid as the CPU's grid steps
+    // do (the sums' order differs, so to within float noise, not to the bit).
+    let (params, mut cpu) = benchmark_flock(MAX_GPU_BOIDS + 1).unwrap();
+    let mut big = BoidsCompute::new(&gpu, &cpu.positions, &cpu.velocities, 0.0).unwrap();
     let e = big
         .step(&gpu, &params, 1.0 / 60.0, Search::Naive)
         .unwrap_err();
     assert!(e.contains("65536") && e.contains("every pair"), "{e}");
-    big.step(&gpu, &params, 1.0 / 60.0, Search::Grid).unwrap();
+    for _ in 0..3 {
+        big.step(&gpu, &params, 1.0 / 60.0, Search::Grid).unwrap();
+        cpu.step(&params, Search::Grid, 1.0 / 60.0);
+    }
     let (p, _) = big.read_back(&gpu).await.unwrap();
-    assert!(p.iter().all(|p| p.is_finite()));
+    let off = p
+        .iter()
+        .zip(&cpu.positions)
+        .filter(|(g, c)| !(g.distance(**c) < 1e-4))
+        .count();
+    assert!(
+        off <= p.len() / 1000,
+        "{off} of {} boids off by 0.1 mm or more",
+        p.len()
+    );
+    // The cap itself: a million boids (2²⁰ is the cap) step on the grid, every one moving at
+    // most the top speed (the leader and predator are off).
+    let n = 1_000_000;
+    let params = benchmark_params(n);
+    let (p0, v0) = seeded_start(n, &params, BENCHMARK_SEED);
+    let mut million = BoidsCompute::new(&gpu, &p0, &v0, 0.0).unwrap();
+    million
+        .step(&gpu, &params, 1.0 / 60.0, Search::Grid)
+        .unwrap();
+    let (p, _) = million.read_back(&gpu).await.unwrap();
+    let reach = params.max_speed / 60.0 * 1.001 + 1e-5;
+    let moved = p
+        .iter()
+        .zip(&p0)
+        .filter(|(a, b)| a.distance(**b) > 0.0 && a.distance(**b) <= reach)
+        .count();
+    assert_eq!(moved, n, "boids that moved, by at most {reach} m");
 }
 
 /// The GPU grid sorts points into the same cells as the CPU grid (`Grid`, counting sort), given
