@@ -5,7 +5,7 @@
 //! in `shaders/grid.wgsl`; the layout and its caps ([`MAX_GPU_GRID_CELLS`] cells,
 //! [`MAX_GPU_GRID_BOIDS`] points) are [`crate::figures::gpu::GridLayout`] and
 //! [`crate::figures::gpu::grid_rows`], natively. Any kernel whose points are `vec4`s with the
-//! position first can use it: the boids (`BoidsCompute`), later the fluids.
+//! position first can use it, as the boids' `BoidsCompute` does.
 //!
 //! A kernel that searches the grid binds [`GpuGrid::params`], [`GpuGrid::cell_start`]
 //! (`cell_start[c]..cell_start[c + 1]` is cell c's run, `cell_start[cells]` the point count) and
