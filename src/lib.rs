@@ -39,8 +39,9 @@
 //! result handed to the figures module as bytes by [`gltf_import::wire`]). Student code runs only
 //! in the course module.
 //! GPU paths (lessons 09, 11, 12): skinning in the vertex shader (`render/skin.rs`, both
-//! backends) and compute shaders for particles and boids (`render/compute.rs`, WebGPU only), with
-//! their logic (packing, caps, the statistics compared with the CPU) in [`figures::gpu`].
+//! backends) and compute shaders for particles and boids (`render/compute.rs`, WebGPU only) on a
+//! uniform grid built on the GPU (`render/grid.rs`), with their logic (packing, grid layouts,
+//! caps, the statistics compared with the CPU) in [`figures::gpu`].
 //!
 //! ## Conventions, stated once
 //! - Right-handed coordinates, **Y up**, the camera looks down −Z in view space.

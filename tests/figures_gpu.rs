@@ -168,9 +168,12 @@ fn the_human_figure_draws_a_gpu_skinned_body_when_asked() {
 
 mod compute {
     use glam::Vec3;
-    use inbetween::boids::BoidParams;
+    use inbetween::boids::grid::Grid;
+    use inbetween::boids::{BoidParams, Flock, Search};
+    use inbetween::figures::boids::FlockFigure;
     use inbetween::figures::gpu::{
-        boid_rows, flock_stats, particle_stats, GpuParticleClock, MAX_GPU_BOIDS, MAX_GPU_PARTICLES,
+        boid_rows, flock_stats, grid_rows, particle_stats, GpuParticleClock, GridLayout,
+        MAX_GPU_BOIDS, MAX_GPU_GRID_BOIDS, MAX_GPU_GRID_CELLS, MAX_GPU_PARTICLES,
     };
     use inbetween::particles::{Emitter, ParticleSystem, Sphere, Surfaces};
 
@@ -233,17 +236,106 @@ mod compute {
         let rows = clock.step(&mut [e], &s, 0.0, [500, 0, 0, 0]).unwrap();
         assert_eq!(rows[3].iter().sum::<u32>(), 100);
         let p = BoidParams::default();
-        assert!(boid_rows(&p, MAX_GPU_BOIDS + 1, 0.0, 0.01)
+        let e = boid_rows(&p, MAX_GPU_BOIDS + 1, Search::Naive, 0.0, 0.01).unwrap_err();
+        assert!(e.contains("count") && e.contains("every pair"), "{e}");
+        // The grid takes a million boids and more.
+        assert!(boid_rows(&p, 1_000_000, Search::Grid, 0.0, 0.01).is_ok());
+        let e = boid_rows(&p, MAX_GPU_GRID_BOIDS + 1, Search::Grid, 0.0, 0.01).unwrap_err();
+        assert!(e.contains("1048576"), "{e}");
+        assert!(boid_rows(&p, 0, Search::Grid, 0.0, 0.01).is_err());
+        assert!(boid_rows(&p, 10, Search::Grid, 0.0, -1.0)
             .unwrap_err()
-            .contains("count"));
-        assert!(boid_rows(&p, 0, 0.0, 0.01).is_err());
-        assert!(boid_rows(&p, 10, 0.0, -1.0).unwrap_err().contains("dt"));
+            .contains("dt"));
         let nan = BoidParams {
             max_speed: f32::NAN,
             ..Default::default()
         };
-        assert!(boid_rows(&nan, 10, 0.0, 0.01).is_err());
-        assert_eq!(boid_rows(&p, 10, 0.0, 0.01).unwrap().len(), 12 + 8);
+        assert!(boid_rows(&nan, 10, Search::Naive, 0.0, 0.01).is_err());
+        assert_eq!(
+            boid_rows(&p, 10, Search::Naive, 0.0, 0.01).unwrap().len(),
+            12 + 8
+        );
+    }
+
+    /// The GPU grid's cells (`GridLayout::cell_of`, the formula of `grid_common.wgsl`) are the
+    /// CPU grid's for the CPU grid's layout, points outside the box included; a cubic layout
+    /// keeps under its cap by growing its cells; `grid_rows` checks its caps.
+    #[test]
+    fn the_gpu_grid_layout_has_the_cpu_grids_cells_and_caps() {
+        let params = BoidParams {
+            bounds: Vec3::new(4.0, 2.0, 3.0),
+            ..Default::default()
+        };
+        let flock = Flock::new(2000, &params, 4).unwrap();
+        let mut cpu = Grid::default();
+        cpu.configure(-params.bounds, params.bounds, 0.7);
+        let layout = GridLayout::of_cpu_grid(&cpu);
+        assert_eq!(layout.cells(), cpu.cell_count());
+        let outside = [Vec3::new(50.0, -9.0, 0.1), Vec3::splat(-1e9)];
+        for p in flock.positions.iter().chain(&outside) {
+            assert_eq!(layout.cell_of(*p), cpu.cell_of_point(*p), "{p}");
+        }
+        assert_eq!(layout.cell_of(Vec3::NAN), 0);
+        let cubic = GridLayout::cubic(Vec3::splat(-1.0), Vec3::new(3.0, 1.0, 1.0), 0.5).unwrap();
+        assert_eq!(cubic.dims, [8, 4, 4]);
+        assert_eq!(cubic.reach(2.0), 4);
+        assert_eq!(cubic.reach(0.1), 1);
+        let fine = GridLayout::cubic(Vec3::splat(-100.0), Vec3::splat(100.0), 0.05).unwrap();
+        assert!(fine.cells() <= MAX_GPU_GRID_CELLS && fine.cell_size.x > 0.05);
+        assert!(GridLayout::cubic(Vec3::ZERO, Vec3::ONE, 0.0).is_err());
+        assert!(GridLayout::cubic(Vec3::ZERO, Vec3::NAN, 1.0).is_err());
+        assert_eq!(grid_rows(&cubic, 10, 2).unwrap()[2], [8, 4, 4, 128]);
+        assert!(grid_rows(&cubic, MAX_GPU_GRID_BOIDS + 1, 2).is_err());
+        assert!(grid_rows(&cubic, 10, 0).is_err());
+        assert!(grid_rows(&cubic, 0, 2).is_err());
+        let huge = GridLayout {
+            dims: [4096, 4096, 1],
+            ..cubic
+        };
+        assert!(grid_rows(&huge, 10, 2).unwrap_err().contains("cell count"));
+    }
+
+    /// Lesson 12's flock in GPU mode: a flock of its own up to the grid's cap, in a box that
+    /// keeps the density; every pair takes at most MAX_GPU_BOIDS, and a setter that would break
+    /// that changes nothing.
+    #[test]
+    fn the_flock_figure_chooses_the_gpu_search_and_count() {
+        let mut f = FlockFigure::new();
+        for bad in [1, MAX_GPU_GRID_BOIDS + 1] {
+            assert!(f.set_gpu_count(bad).unwrap_err().contains("GPU boids"));
+        }
+        assert_eq!(f.gpu_count(), 0);
+        f.set_gpu_mode(true).unwrap();
+        f.set_gpu_count(1_000_000).unwrap();
+        assert_eq!(f.gpu_len(), 1_000_000);
+        // A million boids queue one step a call, however far the timeline moved.
+        assert_eq!(f.plan_gpu_steps(0.0).unwrap(), (false, 0));
+        assert_eq!(f.plan_gpu_steps(0.1).unwrap(), (false, 1));
+        let scale = f.gpu_params().bounds.x / f.params().bounds.x;
+        assert!(
+            (scale - (1_000_000f32 / 300.0).cbrt()).abs() < 1e-3,
+            "{scale}"
+        );
+        let (p, v, _) = f.gpu_start();
+        assert_eq!((p.len(), v.len()), (1_000_000, 1_000_000));
+        let b = f.gpu_params().bounds;
+        assert!(p.iter().all(|p| p.abs().cmple(b).all()));
+        // Every pair at a million: refused, and the search stays the grid.
+        assert!(f.set_search("naive").unwrap_err().contains("every pair"));
+        assert_eq!(f.search(), Search::Grid);
+        f.set_gpu_count(MAX_GPU_BOIDS as usize).unwrap();
+        f.set_search("naive").unwrap();
+        assert!(f.set_gpu_count(MAX_GPU_BOIDS + 1).is_err());
+        assert_eq!(f.gpu_len(), MAX_GPU_BOIDS);
+        // Back to the slider's flock (300 boids) in the figure's own box.
+        f.set_gpu_count(0).unwrap();
+        assert_eq!(f.gpu_len(), 300);
+        assert_eq!(f.gpu_params().bounds, f.params().bounds);
+        // GPU mode cannot start with every pair over the cap.
+        f.set_gpu_mode(false).unwrap();
+        f.set_gpu_count(100_000).unwrap();
+        assert!(f.set_gpu_mode(true).is_err());
+        assert!(!f.gpu_mode());
     }
 
     #[test]

@@ -85,25 +85,23 @@ if (flockViewer) {
   gui.add(p, 'maxSpeed', 0.2, 5, 0.1).name('max speed (m/s)');
   gui.add(p, 'minSpeed', 0, 5, 0.1).name('min speed (m/s)');
   gui.add(p, 'law', ['none', 'a1/x² − a2/x⁴', 'Gaussian']).name('force law');
-  const searchControl = gui.add(p, 'search', ['grid', 'naive']).name('neighbour search');
+  gui.add(p, 'search', ['grid', 'naive']).name('neighbour search');
   gui.add(p, 'obstacle').name('obstacle');
   gui.add(p, 'leader').name('leader');
   gui.add(p, 'predator').name('predator');
-  // CPU or a WebGPU compute shader; WebGL2 has no compute shaders, so there the switch is off.
+  // CPU or a WebGPU compute shader, with the slider's flock or a larger one of its own (up to a
+  // million boids on the GPU grid, 65,536 with every pair); on the GPU the search dropdown picks
+  // the GPU grid or every pair. WebGL2 has no compute shaders, so there the switch is off. One
+  // dropdown, not two: the panel must fit beside the canvas at 1600 x 1000.
   const hasCompute = flockViewer.backend === 'WebGPU';
-  const onControl = gui.add(p, 'on', ['CPU', 'GPU']).name('step on').onChange((v) => {
-    try {
-      scene.setGpu(flockViewer, v === 'GPU');
-      frameMs = 0;
-      // The compute shader always runs its tiled naive loop: the dropdown would do nothing.
-      searchControl.enable(v !== 'GPU');
-    } catch (e) { rejected = e.message; }
-  });
+  const gpuFlocks = { GPU: 0, 'GPU, 10,000 boids': 10_000, 'GPU, 100,000 boids': 100_000, 'GPU, 1,000,000 boids': 1_000_000 };
+  const onControl = gui.add(p, 'on', ['CPU', ...Object.keys(gpuFlocks)]).name('step on');
   if (!hasCompute) onControl.disable();
   // The sweep's button sits above the plot it fills (one row less in the panel).
   document.getElementById('flock-measure').addEventListener('click', () => startSweep());
   let rejected = '';
   let count = 0;
+  let on = 'CPU';
   const apply = guarded(gui, p, () => {
     if (p.count !== count) { scene.setCount(p.count); count = p.count; }
     for (const [name, rule] of Object.entries(rules)) scene.setRule(name, rule.weight, rule.radius);
@@ -115,6 +113,12 @@ if (flockViewer) {
     scene.setObstacle(p.obstacle);
     scene.setLeader(p.leader);
     scene.setPredator(p.predator);
+    if (hasCompute) scene.setGpuCount(gpuFlocks[p.on] ?? 0);
+    if ((p.on === 'CPU') !== (on === 'CPU')) {
+      scene.setGpu(flockViewer, p.on !== 'CPU');
+      frameMs = 0;
+    }
+    on = p.on;
   }, (m) => { rejected = m; });
   gui.onChange(apply);
   apply();
@@ -165,7 +169,7 @@ if (flockViewer) {
   const gpuNote = hasCompute ? '' : ' (Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.)';
   lesson.onFrame((dt) => {
     const time = timeline.advance(dt);
-    const onGpu = p.on === 'GPU' && hasCompute;
+    const onGpu = p.on !== 'CPU' && hasCompute;
     const t0 = performance.now();
     const steps = onGpu ? scene.advanceOnGpu(flockViewer, time) : scene.advanceTo(time);
     const ms = performance.now() - t0;
@@ -181,8 +185,9 @@ if (flockViewer) {
     }
     orderPlot.setCursor(time);
     if (frame++ % 10 === 0) {
+      const gpuCount = gpuFlocks[p.on] || count;
       showNote(timing, onGpu
-        ? `Stepping ${count} boids on the GPU: the steps are queued and run beside the page (the bench page times them); frame time ${frameMs.toFixed(1)} ms.`
+        ? `Stepping ${gpuCount.toLocaleString('en')} boids on the GPU (${p.search === 'grid' ? 'GPU grid' : 'every pair'}): the steps are queued and run beside the page (the bench page times them); frame time ${frameMs.toFixed(1)} ms.`
         : `Measured step time (${p.search} search, ${count} boids): ${average.toFixed(2)} ms per step, averaged over recent frames.${gpuNote}`);
     }
     sweepStep();

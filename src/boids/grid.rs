@@ -352,6 +352,12 @@ impl Grid {
         &mut self.soa
     }
 
+    /// Where each cell's run starts in [`Grid::sorted`], one more entry for the boid count:
+    /// `cell_starts()[c]..cell_starts()[c + 1]` is cell `c`'s run.
+    pub fn cell_starts(&self) -> &[u32] {
+        &self.cell_start
+    }
+
     /// Boid indices in cell order (cell `c`'s boids, in increasing index, then cell `c + 1`'s).
     pub fn sorted(&self) -> &[u32] {
         &self.sorted

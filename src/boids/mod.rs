@@ -233,6 +233,26 @@ pub fn leader_path(time_sec: f32, bounds: Vec3) -> Vec3 {
     )
 }
 
+/// [`Flock::new`]'s start without its cap (the GPU steps larger flocks): `count` boids at seeded
+/// random places inside `params.bounds`, moving at half the maximum speed in random directions.
+pub fn seeded_start(count: usize, params: &BoidParams, seed: u64) -> (Vec<Vec3>, Vec<Vec3>) {
+    let mut rng = Rng::new(seed);
+    let b = params.bounds;
+    let positions = (0..count)
+        .map(|_| {
+            Vec3::new(
+                rng.range(-b.x, b.x),
+                rng.range(-b.y, b.y),
+                rng.range(-b.z, b.z),
+            )
+        })
+        .collect();
+    let velocities = (0..count)
+        .map(|_| rng.on_unit_sphere() * 0.5 * params.max_speed)
+        .collect();
+    (positions, velocities)
+}
+
 /// How the flock finds neighbours.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Search {
@@ -263,20 +283,7 @@ impl Flock {
             return Err(format!("{count} boids is too many (at most {MAX_BOIDS})"));
         }
         params.validate()?;
-        let mut rng = Rng::new(seed);
-        let b = params.bounds;
-        let positions = (0..count)
-            .map(|_| {
-                Vec3::new(
-                    rng.range(-b.x, b.x),
-                    rng.range(-b.y, b.y),
-                    rng.range(-b.z, b.z),
-                )
-            })
-            .collect();
-        let velocities = (0..count)
-            .map(|_| rng.on_unit_sphere() * 0.5 * params.max_speed)
-            .collect();
+        let (positions, velocities) = seeded_start(count, params, seed);
         Ok(Self {
             positions,
             velocities,
@@ -1045,14 +1052,23 @@ impl NeighbourRules {
 /// the same work): `n` boids at one boid per cubic metre in a cube (about 14 within the default
 /// 1.5 m radius), default rules with a 270° field of view, seeded.
 pub fn benchmark_flock(n: usize) -> Result<(BoidParams, Flock), String> {
-    let half = 0.5 * (n.max(1) as f32).cbrt();
-    let params = BoidParams {
-        bounds: Vec3::splat(half),
-        ..Default::default()
-    };
-    let flock = Flock::new(n, &params, 0x5eed_b01d)?;
+    let params = benchmark_params(n);
+    let flock = Flock::new(n, &params, BENCHMARK_SEED)?;
     Ok((params, flock))
 }
+
+/// [`benchmark_flock`]'s parameters for `n` boids: its box grows with `n`, so the density stays.
+pub fn benchmark_params(n: usize) -> BoidParams {
+    let half = 0.5 * (n.max(1) as f32).cbrt();
+    BoidParams {
+        bounds: Vec3::splat(half),
+        ..Default::default()
+    }
+}
+
+/// [`benchmark_flock`]'s seed: with [`seeded_start`], its start at any count (the GPU benchmarks
+/// step more boids than a [`Flock`] takes).
+pub const BENCHMARK_SEED: u64 = 0x5eed_b01d;
 
 #[cfg(test)]
 mod tests {

@@ -9,9 +9,10 @@
 use super::particles::{steps_to, SIM_DT};
 use super::FirstPanic;
 use super::{format_number, in_range, palette, Frame, MeshId, Runner, DEFAULT_RUNNER};
-use crate::boids::{cell_index, three_rules, BoidParams, Flock, ForceLaw, Search};
+use crate::boids::{cell_index, seeded_start, three_rules, BoidParams, Flock, ForceLaw, Search};
 use crate::draw::inset::InsetView;
 use crate::exercises::run;
+use crate::figures::gpu::{check_gpu_boids, MAX_GPU_GRID_BOIDS};
 use crate::particles::Sphere;
 use glam::{Mat4, Vec3};
 
@@ -27,6 +28,13 @@ pub const PAGE_MAX_TIMED_BOIDS: usize = 20_000;
 /// The most steps the flock takes to catch up with the timeline in one call (a slow frame);
 /// a longer jump restarts the flock.
 pub const MAX_CATCH_UP: usize = 10;
+
+/// GPU mode: the most steps queued in one call for a flock of `n` boids: [`MAX_CATCH_UP`] up to
+/// 10,000 boids, fewer above, one from 100,000 on, so that a frame queues about the same work
+/// at any size.
+pub fn max_gpu_steps(n: usize) -> usize {
+    (MAX_CATCH_UP * 10_000 / n.max(1)).clamp(1, MAX_CATCH_UP)
+}
 
 /// Length of the flock figure's purple steering arrow per m/s² of steering acceleration, metres.
 pub const STEER_ARROW_M_PER_MS2: f32 = 1.0;
@@ -380,6 +388,10 @@ pub struct FlockFigure {
     run: u64,
     /// The step-time sweep the page runs beside the flock.
     sweep: StepTimeSweep,
+    /// Whether the flock steps on the GPU (the web layer's compute shader).
+    gpu_mode: bool,
+    /// GPU mode: the flock's size, or 0 for the slider's flock (see [`FlockFigure::set_gpu_count`]).
+    gpu_count: usize,
 }
 
 /// GPU mode: the order plot's sampling interval, seconds of flock time (a read-back of the
@@ -427,6 +439,8 @@ impl FlockFigure {
             history: Vec::with_capacity(3 * MAX_PLOT_SAMPLES),
             run: 0,
             sweep: StepTimeSweep::new(),
+            gpu_mode: false,
+            gpu_count: 0,
         };
         f.set_obstacle(true);
         f.restart_plot();
@@ -496,11 +510,11 @@ impl FlockFigure {
         ticket: GpuSample,
         velocities: &[Vec3],
     ) -> Result<bool, String> {
-        if velocities.len() != self.flock.len() {
+        if velocities.len() != self.gpu_len() {
             return Err(format!(
                 "GPU sample: {} velocities for a flock of {} boids",
                 velocities.len(),
-                self.flock.len()
+                self.gpu_len()
             ));
         }
         if let Some(i) = velocities.iter().position(|v| !v.is_finite()) {
@@ -667,10 +681,101 @@ impl FlockFigure {
         };
     }
 
-    /// "grid" or "naive".
+    /// "grid" or "naive". In GPU mode "naive" tests every pair on the GPU, which takes at most
+    /// [`crate::figures::gpu::MAX_GPU_BOIDS`] boids: a larger GPU flock rejects it.
     pub fn set_search(&mut self, name: &str) -> Result<(), String> {
-        self.search = parse_search(name)?;
+        let search = parse_search(name)?;
+        if self.gpu_mode {
+            check_gpu_boids(self.gpu_len(), search)?;
+        }
+        self.search = search;
         Ok(())
+    }
+
+    pub fn search(&self) -> Search {
+        self.search
+    }
+
+    /// Steps the flock on the GPU (`true`: the web layer's compute shader, neighbours by the
+    /// GPU grid or every pair as [`FlockFigure::set_search`] says) or on the CPU.
+    ///
+    /// # Errors
+    /// A GPU flock that the search cannot step ([`check_gpu_boids`]); nothing changes.
+    pub fn set_gpu_mode(&mut self, on: bool) -> Result<(), String> {
+        if on {
+            check_gpu_boids(self.gpu_len(), self.search)?;
+        }
+        self.gpu_mode = on;
+        Ok(())
+    }
+
+    pub fn gpu_mode(&self) -> bool {
+        self.gpu_mode
+    }
+
+    /// GPU mode: a flock of `count` boids instead of the slider's (`0`: the slider's flock), in
+    /// a box grown with the count so that the density stays that of the page's 300 boids
+    /// ([`FlockFigure::gpu_params`]); it starts afresh. `count` is 0 or in `[2,`
+    /// [`MAX_GPU_GRID_BOIDS`]`]`, and at most [`crate::figures::gpu::MAX_GPU_BOIDS`] in GPU mode with every pair
+    /// tested.
+    ///
+    /// # Errors
+    /// A count out of range, or one the search cannot step in GPU mode; nothing changes.
+    pub fn set_gpu_count(&mut self, count: usize) -> Result<(), String> {
+        if count == 1 || count > MAX_GPU_GRID_BOIDS {
+            return Err(format!(
+                "GPU boids must be 0 (the slider's flock) or a whole number from 2 to \
+                 {MAX_GPU_GRID_BOIDS}, got {count}"
+            ));
+        }
+        let n = if count == 0 { self.flock.len() } else { count };
+        if self.gpu_mode {
+            check_gpu_boids(n, self.search)?;
+        }
+        self.gpu_count = count;
+        self.restart_plot();
+        Ok(())
+    }
+
+    /// The GPU flock's own size, 0 for the slider's flock.
+    pub fn gpu_count(&self) -> usize {
+        self.gpu_count
+    }
+
+    /// The number of boids GPU mode steps.
+    pub fn gpu_len(&self) -> usize {
+        if self.gpu_count == 0 {
+            self.flock.len()
+        } else {
+            self.gpu_count
+        }
+    }
+
+    /// The parameters GPU mode steps with: the figure's, and for a GPU flock of its own
+    /// ([`FlockFigure::set_gpu_count`]) the box scaled by `∛(N / 300)` (at least 1).
+    pub fn gpu_params(&self) -> BoidParams {
+        let scale = if self.gpu_count == 0 {
+            1.0
+        } else {
+            (self.gpu_count as f32 / 300.0).cbrt().max(1.0)
+        };
+        BoidParams {
+            bounds: self.params.bounds * scale,
+            ..self.params.clone()
+        }
+    }
+
+    /// GPU mode: the flock to upload (positions, velocities, clock): the slider's flock, or a
+    /// seeded start of the GPU flock's size in its box.
+    pub fn gpu_start(&self) -> (Vec<Vec3>, Vec<Vec3>, f32) {
+        if self.gpu_count == 0 {
+            let f = &self.flock;
+            (f.positions.clone(), f.velocities.clone(), f.time_sec)
+        } else {
+            let seed = self.seed.wrapping_add(self.steps_done as u64);
+            let (p, v) = seeded_start(self.gpu_count, &self.gpu_params(), seed);
+            (p, v, self.steps_done as f32 * SIM_DT)
+        }
     }
 
     /// Brings the flock to `time_sec` by fixed steps of [`SIM_DT`]. A jump in time (the timeline
@@ -697,7 +802,8 @@ impl FlockFigure {
 
     /// GPU mode ([`crate::figures::gpu`]): what [`FlockFigure::advance_to`] would do, without
     /// stepping on the CPU. Returns `(restart, steps)`: on `restart` the flock was reset to a
-    /// fresh seeded start (upload it, then step); then run `steps` steps of [`SIM_DT`] on the GPU.
+    /// fresh seeded start (upload it, then step); then run `steps` steps of [`SIM_DT`] on the GPU,
+    /// at most [`max_gpu_steps`] (a large flock then runs slower than the timeline).
     pub fn plan_gpu_steps(&mut self, time_sec: f32) -> Result<(bool, usize), String> {
         let target = steps_to(time_sec)?;
         let mut restart = false;
@@ -708,7 +814,7 @@ impl FlockFigure {
             self.restart_plot();
             restart = true;
         }
-        let n = target - self.steps_done;
+        let n = (target - self.steps_done).min(max_gpu_steps(self.gpu_len()));
         self.steps_done = target;
         Ok((restart, n))
     }
@@ -716,7 +822,7 @@ impl FlockFigure {
     /// GPU mode: the box and the obstacles (the boids themselves are the compute shader's
     /// sprites, drawn by the renderer); returns the note.
     pub fn draw_gpu(&mut self, frame: &mut Frame) -> String {
-        let b = self.params.bounds;
+        let b = self.gpu_params().bounds;
         for (a, c) in box_edges(-b, b) {
             frame.wide_line(a, c, palette::GREY, 1.5);
         }
@@ -741,13 +847,27 @@ impl FlockFigure {
             (false, true) => "; predator red",
             (false, false) => "",
         };
+        let search = match self.search {
+            Search::Grid => {
+                "neighbours from a uniform grid built on the GPU every step (count, prefix sum, \
+                 scatter), the 3 × 3 × 3 cells around each boid"
+            }
+            Search::Naive => "neighbours by testing every pair, in tiles",
+        };
+        let own = if self.gpu_count == 0 {
+            String::new()
+        } else {
+            format!(
+                " in a box {} m wide (the density of 300 boids in the figure's)",
+                format_number(2.0 * b.x)
+            )
+        };
         format!(
-            "{} boids stepped on the GPU by a compute shader, at t = {} s (the same rules; \
-             neighbours by the naive O(N²) loop in tiles, one thread per boid, whatever the \
-             neighbour search says){roles}; {}. The orange boid, its neighbour lines and its \
+            "{} boids{own} stepped on the GPU by a compute shader, at t = {} s (the same rules; \
+             {search}, one thread per boid){roles}; {}. The orange boid, its neighbour lines and its \
              steering arrow are not drawn: they need the flock on the CPU, and it stays on the \
              GPU. The order plot reads the flock back from the GPU every {} s.",
-            self.flock.len(),
+            self.gpu_len(),
             format_number(self.steps_done as f32 * SIM_DT),
             self.speed_range(),
             GPU_SAMPLE_SEC,

@@ -172,7 +172,7 @@ pub fn dqs_like_shader(
 // `crate::particles` and `crate::boids` one thread per particle or boid. What they receive is
 // packed here, as rows of four 32-bit words (floats by their bits), with every cap checked.
 
-use crate::boids::{leader_path, BoidParams, ForceLaw};
+use crate::boids::{leader_path, BoidParams, ForceLaw, Search};
 use crate::particles::{Emitter, PositionDist, Surfaces, VelocityDist};
 
 /// The most particle slots the GPU path allocates: about a million (48 bytes of state and 48 of
@@ -181,9 +181,124 @@ pub const MAX_GPU_PARTICLES: usize = 1 << 20;
 /// Emitters and spheres one GPU particle system takes (uniform arrays in the shader).
 pub const MAX_GPU_EMITTERS: usize = 4;
 pub const MAX_GPU_SPHERES: usize = 8;
-/// The most boids the GPU path steps. Its neighbour search is the naive O(N²) loop (tiled
-/// through workgroup memory): N = 65,536 is 4·10⁹ pair tests per step.
+/// The most boids the GPU path steps with every pair tested (the O(N²) loop, tiled through
+/// workgroup memory): N = 65,536 is 4·10⁹ pair tests per step.
 pub const MAX_GPU_BOIDS: usize = 1 << 16;
+/// The most boids the GPU path steps with the GPU uniform grid (`src/render/grid.rs`): 2²⁰,
+/// 32 MiB for each of the two state buffers and the sprites (WebGPU guarantees 128 MiB per
+/// storage binding), 4,096 workgroups of 256 for the grid's passes (at most 65,535 per
+/// dispatch).
+pub const MAX_GPU_GRID_BOIDS: usize = 1 << 20;
+/// The most cells a GPU grid has: 2²¹ (8 MiB of counts). A layout that would need more gets
+/// larger cells ([`GridLayout::cubic`]). The prefix sum scans blocks of [`GRID_SCAN_BLOCK`]
+/// cells, then the 4,096 block sums in one workgroup, [`GRID_SCAN_BLOCK`] at a time.
+pub const MAX_GPU_GRID_CELLS: usize = 1 << 21;
+/// Cells one workgroup of the grid's prefix sum scans (256 threads, two cells each).
+pub const GRID_SCAN_BLOCK: usize = 512;
+
+/// Where a GPU uniform grid lies: cell `(i, j, k)` spans `origin + (i, j, k) · cell_size` to the
+/// next corner and is number `i + dims.x · (j + dims.y · k)`, so a row of cells along x is one
+/// run of the sorted points. Points outside are clamped into the border cells, as
+/// [`crate::boids::cell_index`] does.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GridLayout {
+    /// The corner of cell (0, 0, 0), metres.
+    pub origin: Vec3,
+    /// The cells' size along x, y, z, metres.
+    pub cell_size: Vec3,
+    pub dims: [u32; 3],
+}
+
+impl GridLayout {
+    /// Cubic cells at least `radius` wide over the box `[min, max]`: the points within `radius`
+    /// of a point lie in the 3 × 3 × 3 cells around its own. Cells grow by a quarter at a time
+    /// while there would be more than [`MAX_GPU_GRID_CELLS`].
+    ///
+    /// # Errors
+    /// A corner or the radius not finite, or a radius that is not positive.
+    pub fn cubic(min: Vec3, max: Vec3, radius: f32) -> Result<Self, String> {
+        if !(min.is_finite() && max.is_finite() && radius.is_finite() && radius > 0.0) {
+            return Err(format!(
+                "GPU grid: the box must be finite and the radius finite and > 0, got radius \
+                 {radius}"
+            ));
+        }
+        let extent = (max - min).max(Vec3::splat(1e-3));
+        let mut size = radius;
+        loop {
+            let d = (extent / size).ceil().max(Vec3::ONE);
+            let dims = [d.x as u32, d.y as u32, d.z as u32];
+            let layout = Self {
+                origin: min,
+                cell_size: Vec3::splat(size),
+                dims,
+            };
+            if layout.cells() <= MAX_GPU_GRID_CELLS {
+                return Ok(layout);
+            }
+            size *= 1.25;
+        }
+    }
+
+    /// The layout of the CPU grid `grid` (its cells a quarter as wide along x), so that the GPU
+    /// grid sorts points into the very same cells (the browser test compares the two).
+    pub fn of_cpu_grid(grid: &crate::boids::grid::Grid) -> Self {
+        Self {
+            origin: grid.origin,
+            cell_size: Vec3::new(grid.x_size, grid.cell_size, grid.cell_size),
+            dims: grid.dims,
+        }
+    }
+
+    pub fn cells(&self) -> usize {
+        self.dims.iter().map(|&d| d as usize).product()
+    }
+
+    /// How many cells along each axis a search of `radius` reaches from a point's cell (at
+    /// least 1).
+    pub fn reach(&self, radius: f32) -> u32 {
+        ((radius / self.cell_size.min_element()).ceil() as u32).max(1)
+    }
+
+    /// The cell of `p`, as `shaders/grid_common.wgsl` computes it:
+    /// ```text
+    /// (i, j, k) = clamp(⌊(p − origin) · (1 / cell_size)⌋, 0, dims − 1)   (a NaN gives 0)
+    /// ```
+    pub fn cell_of(&self, p: Vec3) -> usize {
+        let f = (p - self.origin) * self.cell_size.recip();
+        let c = |x: f32, d: u32| (if x >= 0.0 { x } else { 0.0 }).min(d as f32 - 1.0) as usize;
+        let [dx, dy, dz] = self.dims;
+        c(f.x, dx) + dx as usize * (c(f.y, dy) + dy as usize * c(f.z, dz))
+    }
+}
+
+/// The uniform block of a GPU grid of `layout` over `n` points, each `stride` `vec4`s long
+/// (its position the first `vec4`'s xyz).
+///
+/// # Errors
+/// More than [`MAX_GPU_GRID_CELLS`] cells, no points or more than [`MAX_GPU_GRID_BOIDS`], a
+/// stride of 0.
+pub fn grid_rows(layout: &GridLayout, n: usize, stride: u32) -> Result<Vec<Row>, String> {
+    let cells = layout.cells();
+    if cells == 0 || cells > MAX_GPU_GRID_CELLS {
+        return Err(format!(
+            "GPU grid: the cell count must lie in [1, {MAX_GPU_GRID_CELLS}], got {cells}"
+        ));
+    }
+    if n == 0 || n > MAX_GPU_GRID_BOIDS || stride == 0 {
+        return Err(format!(
+            "GPU grid: 1 to {MAX_GPU_GRID_BOIDS} points of at least one vec4 each, got {n} of \
+             {stride}"
+        ));
+    }
+    let (o, inv, [dx, dy, dz]) = (layout.origin, layout.cell_size.recip(), layout.dims);
+    Ok(vec![
+        frow(o.x, o.y, o.z, 0.0),
+        frow(inv.x, inv.y, inv.z, 0.0),
+        [dx, dy, dz, cells as u32],
+        [n as u32, stride, cells.div_ceil(GRID_SCAN_BLOCK) as u32, 0],
+    ])
+}
 /// Obstacles one GPU flock takes.
 pub const MAX_GPU_OBSTACLES: usize = 8;
 
@@ -359,25 +474,49 @@ fn emitter_rows(e: &Emitter) -> [Row; 6] {
     ]
 }
 
-/// The uniform block of one GPU flock step of `dt` seconds for `n` boids whose clock reads
-/// `time_after_sec` after the step (the leader's target is [`leader_path`] then, as on the CPU).
-/// Colours of the drawn boids are the shader's.
+/// The most boids the GPU steps with `search`: [`MAX_GPU_BOIDS`] for every pair,
+/// [`MAX_GPU_GRID_BOIDS`] on the grid.
+pub fn max_gpu_boids(search: Search) -> usize {
+    match search {
+        Search::Naive => MAX_GPU_BOIDS,
+        Search::Grid => MAX_GPU_GRID_BOIDS,
+    }
+}
+
+/// Whether the GPU steps `n` boids with `search`.
 ///
 /// # Errors
-/// Invalid parameters, `n` over [`MAX_GPU_BOIDS`] or 0, more than [`MAX_GPU_OBSTACLES`]
+/// `n` of 0 or over [`max_gpu_boids`], with a message that names the search and its cap.
+pub fn check_gpu_boids(n: usize, search: Search) -> Result<(), String> {
+    let cap = max_gpu_boids(search);
+    if n == 0 || n > cap {
+        let how = match search {
+            Search::Naive => "with every pair tested (the grid takes more)",
+            Search::Grid => "on the grid",
+        };
+        return Err(format!(
+            "GPU boids: the count must lie in [1, {cap}] {how}, got {n}"
+        ));
+    }
+    Ok(())
+}
+
+/// The uniform block of one GPU flock step of `dt` seconds for `n` boids whose clock reads
+/// `time_after_sec` after the step (the leader's target is [`leader_path`] then, as on the CPU),
+/// neighbours found by `search`. Colours of the drawn boids are the shader's.
+///
+/// # Errors
+/// Invalid parameters, what [`check_gpu_boids`] rejects, more than [`MAX_GPU_OBSTACLES`]
 /// obstacles, a non-finite or negative `dt`.
 pub fn boid_rows(
     params: &BoidParams,
     n: usize,
+    search: Search,
     time_after_sec: f32,
     dt: f32,
 ) -> Result<Vec<Row>, String> {
     params.validate()?;
-    if n == 0 || n > MAX_GPU_BOIDS {
-        return Err(format!(
-            "GPU boids: the count must lie in [1, {MAX_GPU_BOIDS}], got {n}"
-        ));
-    }
+    check_gpu_boids(n, search)?;
     if params.obstacles.len() > MAX_GPU_OBSTACLES {
         return Err(format!(
             "GPU boids take at most {MAX_GPU_OBSTACLES} obstacles, got {}",

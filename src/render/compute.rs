@@ -5,19 +5,24 @@
 //! the renderer's point sprites (`PointInstance` layout) into a buffer that
 //! [`super::Renderer::gpu_points`] draws without a trip through the CPU.
 
+use super::grid::GpuGrid;
 use super::Gpu;
+use crate::boids::{BoidParams, Search};
 use crate::figures::gpu::{
-    boid_rows, GpuParticleClock, Row, MAX_GPU_BOIDS, MAX_GPU_EMITTERS, MAX_GPU_PARTICLES,
+    boid_rows, check_gpu_boids, GpuParticleClock, GridLayout, Row, MAX_GPU_EMITTERS,
+    MAX_GPU_PARTICLES,
 };
 use crate::particles::{Emitter, Surfaces};
 use glam::Vec3;
 use std::cell::Cell;
 use std::rc::Rc;
 
-/// Raises `limits` to what the compute paths need: WebGPU's guaranteed minimums.
+/// Raises `limits` to what the compute paths need: WebGPU's guaranteed minimums (8 storage
+/// buffers per stage: the boids' grid step binds 5).
 pub(super) fn add_compute_limits(limits: &mut wgpu::Limits) {
     let d = wgpu::Limits::downlevel_defaults();
-    limits.max_storage_buffers_per_shader_stage = d.max_storage_buffers_per_shader_stage;
+    limits.max_storage_buffers_per_shader_stage =
+        wgpu::Limits::default().max_storage_buffers_per_shader_stage;
     limits.max_storage_buffer_binding_size = d.max_storage_buffer_binding_size;
     limits.max_buffer_size = limits.max_buffer_size.max(d.max_buffer_size);
     limits.max_compute_workgroup_storage_size = d.max_compute_workgroup_storage_size;
@@ -38,7 +43,7 @@ const INSTANCE_BYTES: u64 = 32;
 /// `crate::texture::SpriteInstance` (particles).
 const SPRITE_BYTES: u64 = std::mem::size_of::<crate::texture::SpriteInstance>() as u64;
 
-fn no_compute(gpu: &Gpu) -> Result<(), String> {
+pub(super) fn no_compute(gpu: &Gpu) -> Result<(), String> {
     if gpu.compute {
         Ok(())
     } else {
@@ -49,7 +54,12 @@ fn no_compute(gpu: &Gpu) -> Result<(), String> {
     }
 }
 
-fn storage(gpu: &Gpu, label: &str, size: u64, extra: wgpu::BufferUsages) -> wgpu::Buffer {
+pub(super) fn storage(
+    gpu: &Gpu,
+    label: &str,
+    size: u64,
+    extra: wgpu::BufferUsages,
+) -> wgpu::Buffer {
     gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: Some(label),
         size,
@@ -61,7 +71,7 @@ fn storage(gpu: &Gpu, label: &str, size: u64, extra: wgpu::BufferUsages) -> wgpu
     })
 }
 
-fn uniform(gpu: &Gpu, label: &str, rows: usize) -> wgpu::Buffer {
+pub(super) fn uniform(gpu: &Gpu, label: &str, rows: usize) -> wgpu::Buffer {
     gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: Some(label),
         size: (rows * 16) as u64,
@@ -86,9 +96,9 @@ fn entry(binding: u32, ty: wgpu::BufferBindingType) -> wgpu::BindGroupLayoutEntr
 /// A compute shader's bind group layout and pipelines (one per entry point): made once per page
 /// (see `Gpu::cached`), so a second figure, or a restart that makes a new system, compiles no
 /// shader.
-struct Kernels {
-    layout: wgpu::BindGroupLayout,
-    pipelines: Vec<wgpu::ComputePipeline>,
+pub(super) struct Kernels {
+    pub(super) layout: wgpu::BindGroupLayout,
+    pub(super) pipelines: Vec<wgpu::ComputePipeline>,
 }
 
 /// The particles' kernels (`spawn`, then `update`), as the page caches them.
@@ -100,7 +110,7 @@ struct BoidKernels(Rc<Kernels>);
 
 impl Kernels {
     /// `entry_points` of `source`, on a layout of `bindings` (binding i is `bindings[i]`).
-    fn new(
+    pub(super) fn new(
         gpu: &Gpu,
         label: &str,
         source: &str,
@@ -153,6 +163,17 @@ fn pipeline(
             compilation_options: Default::default(),
             cache: None,
         })
+}
+
+/// Bind group entries 0, 1, … for `buffers`, whole.
+pub(super) fn bind_entries<'a>(buffers: &[&'a wgpu::Buffer]) -> Vec<wgpu::BindGroupEntry<'a>> {
+    (0..)
+        .zip(buffers)
+        .map(|(binding, b)| wgpu::BindGroupEntry {
+            binding,
+            resource: b.as_entire_binding(),
+        })
+        .collect()
 }
 
 fn rows_bytes(rows: &[Row]) -> &[u8] {
@@ -371,16 +392,19 @@ impl ParticlesCompute {
     }
 }
 
-/// A flock stepped by a compute shader: same model as [`crate::boids::Flock::step`] with the
-/// naive neighbour search (see `shaders/boids.wgsl`).
+/// A flock stepped by a compute shader: same model as [`crate::boids::Flock::step`], the
+/// neighbours found by testing every pair or through a [`GpuGrid`] rebuilt every step (see
+/// `shaders/boids.wgsl`).
 pub struct BoidsCompute {
     n: usize,
     params: wgpu::Buffer,
     /// Ping-pong state: step k reads `state[k % 2]` and writes the other.
     state: [wgpu::Buffer; 2],
     instances: wgpu::Buffer,
+    /// Built from `state[current]` at each grid step.
+    grid: GpuGrid,
     groups: [wgpu::BindGroup; 2],
-    /// `step`.
+    /// `step` (every pair) and `step_grid`.
     kernels: Rc<Kernels>,
     current: usize,
     time_sec: f32,
@@ -390,7 +414,8 @@ impl BoidsCompute {
     /// Uploads a flock (positions and velocities, one each per boid) at clock `time_sec`.
     ///
     /// # Errors
-    /// No compute on this backend, lengths that differ, a count out of `[1,` [`MAX_GPU_BOIDS`]`]`.
+    /// No compute on this backend, lengths that differ, a count out of `[1,`
+    /// [`crate::figures::gpu::MAX_GPU_GRID_BOIDS`]`]`.
     pub fn new(
         gpu: &Gpu,
         positions: &[Vec3],
@@ -405,11 +430,7 @@ impl BoidsCompute {
                 velocities.len()
             ));
         }
-        if n == 0 || n > MAX_GPU_BOIDS {
-            return Err(format!(
-                "GPU boids: the count must lie in [1, {MAX_GPU_BOIDS}], got {n}"
-            ));
-        }
+        check_gpu_boids(n, Search::Grid)?;
         let size = n as u64 * BOID_BYTES;
         let state = [
             storage(gpu, "boids a", size, wgpu::BufferUsages::empty()),
@@ -435,54 +456,73 @@ impl BoidsCompute {
         );
         let BoidKernels(kernels) = gpu.cached(|| {
             let storage = |read_only| wgpu::BufferBindingType::Storage { read_only };
+            let uniform = wgpu::BufferBindingType::Uniform;
             BoidKernels(Rc::new(Kernels::new(
                 gpu,
                 "boids",
-                super::shader_source!("boids.wgsl"),
+                &format!(
+                    "{}\n{}",
+                    super::grid::GRID_COMMON,
+                    super::shader_source!("boids.wgsl")
+                ),
                 &[
-                    wgpu::BufferBindingType::Uniform,
+                    uniform,
                     storage(true),
                     storage(false),
                     storage(false),
+                    uniform,
+                    storage(true),
+                    storage(true),
                 ],
-                &["step"],
+                &["step", "step_grid"],
             )))
         });
-        let group = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
-            gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("boids"),
-                layout: &kernels.layout,
-                entries: &[
-                    wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: params.as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 1,
-                        resource: from.as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 2,
-                        resource: to.as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 3,
-                        resource: instances.as_entire_binding(),
-                    },
-                ],
-            })
+        // One cell until the first grid step lays the grid over the flock's box.
+        let one_cell = GridLayout {
+            origin: Vec3::ZERO,
+            cell_size: Vec3::ONE,
+            dims: [1, 1, 1],
         };
-        let groups = [group(&state[0], &state[1]), group(&state[1], &state[0])];
+        let grid = GpuGrid::new(gpu, &[&state[0], &state[1]], n, 2, one_cell)?;
+        let groups = Self::groups(gpu, &kernels, &params, &state, &instances, &grid);
         Ok(Self {
             n,
             kernels,
             params,
             state,
             instances,
+            grid,
             groups,
             current: 0,
             time_sec,
         })
+    }
+
+    fn groups(
+        gpu: &Gpu,
+        kernels: &Kernels,
+        params: &wgpu::Buffer,
+        state: &[wgpu::Buffer; 2],
+        instances: &wgpu::Buffer,
+        grid: &GpuGrid,
+    ) -> [wgpu::BindGroup; 2] {
+        let group = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
+            let buffers = [
+                params,
+                from,
+                to,
+                instances,
+                grid.params(),
+                grid.cell_start(),
+                grid.sorted(),
+            ];
+            gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("boids"),
+                layout: &kernels.layout,
+                entries: &bind_entries(&buffers),
+            })
+        };
+        [group(&state[0], &state[1]), group(&state[1], &state[0])]
     }
 
     /// Whether `other` steps with the same compiled kernel (two figures of one page do).
@@ -503,22 +543,51 @@ impl BoidsCompute {
         self.time_sec
     }
 
-    /// One step of `dt` seconds, submitted to the queue.
+    /// One step of `dt` seconds, neighbours by `search` (on the grid: built first, in the same
+    /// pass, over the bounds' box enlarged by a quarter and a cell, with cubic cells as wide as
+    /// the widest rule's radius; boids outside it are clamped into its border cells, which
+    /// keeps the search exact), submitted to the queue.
     ///
     /// # Errors
-    /// What [`boid_rows`] rejects.
+    /// What [`boid_rows`] rejects (every pair: at most [`crate::figures::gpu::MAX_GPU_BOIDS`]
+    /// boids).
     pub fn step(
         &mut self,
         gpu: &Gpu,
-        params: &crate::boids::BoidParams,
+        params: &BoidParams,
         dt: f32,
+        search: Search,
     ) -> Result<(), String> {
-        let rows = boid_rows(params, self.n, self.time_sec + dt, dt)?;
+        let mut rows = boid_rows(params, self.n, search, self.time_sec + dt, dt)?;
+        if search == Search::Grid {
+            let r = params.search_radius();
+            let half = 1.25 * params.bounds + Vec3::splat(r);
+            let layout = GridLayout::cubic(-half, half, r)?;
+            // The predator chases prey up to 4 search radii away (`boid_rows`).
+            rows[7][2] = layout.reach(4.0 * r);
+            if self.grid.set_layout(gpu, layout)? {
+                self.groups = Self::groups(
+                    gpu,
+                    &self.kernels,
+                    &self.params,
+                    &self.state,
+                    &self.instances,
+                    &self.grid,
+                );
+            }
+        }
         gpu.queue.write_buffer(&self.params, 0, rows_bytes(&rows));
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         {
             let mut pass = encoder.begin_compute_pass(&Default::default());
-            pass.set_pipeline(&self.kernels.pipelines[0]);
+            let kernel = match search {
+                Search::Naive => 0,
+                Search::Grid => {
+                    self.grid.encode(&mut pass, self.current);
+                    1
+                }
+            };
+            pass.set_pipeline(&self.kernels.pipelines[kernel]);
             pass.set_bind_group(0, &self.groups[self.current], &[]);
             pass.dispatch_workgroups((self.n as u32).div_ceil(WORKGROUP), 1, 1);
         }
@@ -526,6 +595,11 @@ impl BoidsCompute {
         self.current = 1 - self.current;
         self.time_sec += dt;
         Ok(())
+    }
+
+    /// The grid of the last grid step (tests).
+    pub fn grid(&self) -> &GpuGrid {
+        &self.grid
     }
 
     /// The sprites of the last step, for [`super::Renderer::gpu_points`].

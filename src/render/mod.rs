@@ -17,12 +17,14 @@ pub(crate) use shader_source;
 
 mod compute;
 mod context;
+mod grid;
 mod renderer;
 mod skin;
 mod texture;
 
 pub use compute::{BoidsCompute, ParticlesCompute, ReadBack};
 pub use context::{BackendChoice, Gpu};
+pub use grid::GpuGrid;
 pub use renderer::{Frame, MeshId, Renderer};
 pub use skin::SkinPass;
 pub use texture::{NoiseImage, PendingRead};

@@ -4,8 +4,10 @@
 //! first step are not timed; then `steps` steps are queued and the time runs until the GPU has
 //! finished them (a read-back of a few bytes waits for it).
 
+#[cfg(doc)]
 use crate::boids::benchmark_flock;
-use crate::figures::gpu::{MAX_GPU_BOIDS, MAX_GPU_PARTICLES};
+use crate::boids::{benchmark_params, seeded_start, Search, BENCHMARK_SEED};
+use crate::figures::gpu::{check_gpu_boids, MAX_GPU_PARTICLES};
 use crate::particles::{Emitter, Sphere, Surfaces};
 use crate::render::{BackendChoice, BoidsCompute, Gpu, ParticlesCompute};
 use glam::Vec3;
@@ -80,32 +82,41 @@ pub async fn bench_gpu_particles(canvas: JsValue, count: f64, steps: f64) -> Res
     Ok((now_ms() - start) / steps as f64)
 }
 
-/// Milliseconds per GPU step of the benchmark flock of `boids ∈ [1, 65536]` boids
-/// ([`benchmark_flock`], as the CPU kernel `benchBoids`), naive O(N²) neighbours.
-/// Caps (the work grows with both): `steps` in [1, 1000] and `boids × steps` at most 2²⁴.
+/// Milliseconds per GPU step of the benchmark flock ([`benchmark_flock`]'s start at any count,
+/// as the CPU kernel `benchBoids`: the box grows with the count), neighbours by `search`:
+/// "naive" tests every pair (tiled; `boids ∈ [1, 65536]`, `boids × steps` at most 2²⁴),
+/// "grid" builds the GPU grid each step (`boids ∈ [1, 2²⁰]`, `boids × steps` at most 2²⁸).
+/// `steps` in [1, 1000].
 #[wasm_bindgen(js_name = benchGpuBoids)]
-pub async fn bench_gpu_boids(canvas: JsValue, boids: f64, steps: f64) -> Result<f64, JsError> {
+pub async fn bench_gpu_boids(
+    canvas: JsValue,
+    boids: f64,
+    steps: f64,
+    search: JsValue,
+) -> Result<f64, JsError> {
     let canvas = super::canvas("canvas", canvas)?;
+    let search = super::string("search", &search)?;
+    let search = crate::figures::boids::parse_search(&search).map_err(|e| JsError::new(&e))?;
     let boids = super::whole("boids", boids)?;
     let steps = super::whole("steps", steps)?;
-    super::check_work("boids", boids as u64, steps, 1 << 24)?;
+    let work = match search {
+        Search::Naive => 1 << 24,
+        Search::Grid => 1 << 28,
+    };
+    super::check_work("boids", boids as u64, steps, work)?;
     check_steps(steps)?;
-    if !(1..=MAX_GPU_BOIDS).contains(&boids) {
-        return Err(JsError::new(&format!(
-            "boids must lie in [1, {MAX_GPU_BOIDS}], got {boids}"
-        )));
-    }
+    check_gpu_boids(boids, search).map_err(|e| JsError::new(&e))?;
     let gpu = webgpu(canvas).await?;
-    let (params, flock) = benchmark_flock(boids).map_err(|e| JsError::new(&e))?;
+    let params = benchmark_params(boids);
+    let (positions, velocities) = seeded_start(boids, &params, BENCHMARK_SEED);
     let err = |e: String| JsError::new(&e);
-    let mut on_gpu =
-        BoidsCompute::new(&gpu, &flock.positions, &flock.velocities, 0.0).map_err(err)?;
+    let mut on_gpu = BoidsCompute::new(&gpu, &positions, &velocities, 0.0).map_err(err)?;
     let dt = 1.0 / 60.0;
-    on_gpu.step(&gpu, &params, dt).map_err(err)?;
+    on_gpu.step(&gpu, &params, dt, search).map_err(err)?;
     on_gpu.finish(&gpu).await.map_err(err)?;
     let start = now_ms();
     for _ in 0..steps {
-        on_gpu.step(&gpu, &params, dt).map_err(err)?;
+        on_gpu.step(&gpu, &params, dt, search).map_err(err)?;
     }
     on_gpu.finish(&gpu).await.map_err(err)?;
     Ok((now_ms() - start) / steps as f64)

@@ -10,7 +10,6 @@ pub struct FlockScene {
     scene: FlockFigure,
     /// The flock on the GPU (compute shader), when that mode is on and WebGPU is there.
     gpu: Option<crate::render::BoidsCompute>,
-    gpu_on: bool,
     /// The flock on its way back from the GPU for the order plot, with its ticket.
     sample: Option<(GpuSample, crate::render::ReadBack)>,
     /// The viewer's generation `gpu` was made in (see `Viewer::renewed`).
@@ -24,14 +23,13 @@ impl FlockScene {
         FlockScene {
             scene: FlockFigure::new(),
             gpu: None,
-            gpu_on: false,
             sample: None,
             gpu_seen: 0,
         }
     }
 
     /// Steps the flock by a compute shader (`true`) or on the CPU. An error on WebGL2 (no
-    /// compute shaders), saying so.
+    /// compute shaders), saying so, or for a GPU flock over the search's cap.
     #[wasm_bindgen(js_name = setGpu)]
     pub fn set_gpu(&mut self, viewer: &Viewer, on: JsValue) -> Result<(), JsError> {
         let on = super::boolean("on", &on)?;
@@ -41,7 +39,7 @@ impl FlockScene {
                 viewer.gpu.backend_name
             )));
         }
-        self.gpu_on = on;
+        self.scene.set_gpu_mode(on).map_err(js)?;
         self.gpu = None; // uploaded from the CPU flock at the next step
         self.sample = None;
         Ok(())
@@ -51,7 +49,7 @@ impl FlockScene {
     /// page goes on; the bench page measures their time). Returns the steps queued.
     #[wasm_bindgen(js_name = advanceOnGpu)]
     pub fn advance_on_gpu(&mut self, viewer: &Viewer, time_sec: f32) -> Result<usize, JsError> {
-        if !self.gpu_on {
+        if !self.scene.gpu_mode() {
             return Err(JsError::new(
                 "GPU mode is off: call setGpu(viewer, true) first",
             ));
@@ -61,23 +59,20 @@ impl FlockScene {
         }
         let (restart, steps) = self.scene.plan_gpu_steps(time_sec).map_err(js)?;
         if restart || self.gpu.is_none() {
-            let f = self.scene.flock();
+            let (positions, velocities, time_sec) = self.scene.gpu_start();
             self.gpu = Some(
-                crate::render::BoidsCompute::new(
-                    &viewer.gpu,
-                    &f.positions,
-                    &f.velocities,
-                    f.time_sec,
-                )
-                .map_err(|e| JsError::new(&e))?,
+                crate::render::BoidsCompute::new(&viewer.gpu, &positions, &velocities, time_sec)
+                    .map_err(|e| JsError::new(&e))?,
             );
         }
         let gpu = self.gpu.as_mut().expect("made above");
+        let params = self.scene.gpu_params();
         for _ in 0..steps {
             gpu.step(
                 &viewer.gpu,
-                self.scene.params(),
+                &params,
                 crate::figures::particles::SIM_DT,
+                self.scene.search(),
             )
             .map_err(|e| JsError::new(&e))?;
         }
@@ -100,6 +95,24 @@ impl FlockScene {
             }
         }
         Ok(steps)
+    }
+    /// GPU mode: a flock of `count` boids of its own, in a box that keeps the figure's density,
+    /// instead of the slider's (`0`): 0 or a whole number in [2, 1,048,576], at most 65,536 with
+    /// the "naive" search (every pair). A rejected count changes nothing.
+    #[wasm_bindgen(js_name = setGpuCount)]
+    pub fn set_gpu_count(&mut self, count: f64) -> Result<(), JsError> {
+        let n = super::whole_in(
+            "GPU boids",
+            count,
+            0,
+            crate::figures::gpu::MAX_GPU_GRID_BOIDS,
+        )?;
+        if n != self.scene.gpu_count() {
+            self.scene.set_gpu_count(n).map_err(js)?;
+            self.gpu = None;
+            self.sample = None;
+        }
+        Ok(())
     }
     /// A new flock of `count` boids, in [2, 3000].
     #[wasm_bindgen(js_name = setCount)]
@@ -157,7 +170,7 @@ impl FlockScene {
         self.scene.set_obstacle(on);
         Ok(())
     }
-    /// "grid" or "naive".
+    /// "grid" or "naive" (in GPU mode: the GPU grid or every pair, at most 65,536 boids).
     #[wasm_bindgen(js_name = setSearch)]
     pub fn set_search(&mut self, name: JsValue) -> Result<(), JsError> {
         let name: &str = &super::string("name", &name)?;
@@ -170,7 +183,7 @@ impl FlockScene {
         self.scene.advance_to(time_sec).map_err(js)
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
-        let note = match (&self.gpu, self.gpu_on) {
+        let note = match (&self.gpu, self.scene.gpu_mode()) {
             (Some(gpu), true) => {
                 viewer.renderer.gpu_points = vec![gpu.sprites()];
                 self.scene.draw_gpu(&mut viewer.renderer.frame)

@@ -386,6 +386,11 @@ test('lesson 12 on WebGPU: the order plot goes on while the GPU steps the flock'
     });
     await page.locator(fig).screenshot({ path: 'tests/screenshots/12-boids-flock-gpu-webgpu.png' });
     assert.ok(purple > 50, `the polarisation line is not drawn on the GPU (${purple} purple pixels)`);
+    // The GPU grid (the default search) with a flock of its own, in a box that keeps the density.
+    await setControl(page, fig, 'step on', 'GPU, 10,000 boids');
+    await frames(page, 2);
+    const grid = await page.locator('#flock-note').textContent();
+    assert.match(grid, /^10000 boids in a box .* uniform grid built on the GPU every step/, grid);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
