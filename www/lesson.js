@@ -251,6 +251,8 @@ function callExercise(name, args) {
 }
 
 /** Called by the Rust panic hook of either instance. True: the panic is the sandbox's, handled. */
+// A GPU validation error no call caught (src/render/context.rs): a bug, shown like one.
+globalThis.__inbetweenGpuError = (message) => showError(message);
 globalThis.__inbetweenPanic = (message) => {
   if (sandbox.calling) {
     sandbox.lastPanic = message;

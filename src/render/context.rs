@@ -13,6 +13,14 @@ use std::sync::Arc;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
+#[wasm_bindgen]
+extern "C" {
+    /// `__inbetweenGpuError(message)`: the lesson shell shows it in the error banner (absent on
+    /// other pages: the call then fails, and the console has the message).
+    #[wasm_bindgen(catch, js_name = __inbetweenGpuError)]
+    fn report_gpu_error(message: &str) -> Result<JsValue, JsValue>;
+}
+
 /// Which graphics API to ask the browser for (`?backend=` in a lesson's URL).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BackendChoice {
@@ -258,6 +266,15 @@ impl PageGpu {
         let device_lost = Arc::new(AtomicBool::new(false));
         let flag = device_lost.clone();
         device.set_device_lost_callback(move |_, _| flag.store(true, Ordering::Relaxed));
+        // A validation error no call caught (an invalid pipeline or bind group: a bug here) goes
+        // to the console as an error, where the page tests look, instead of the browser's
+        // warning, which they would not see, while the figure silently draws or computes nothing.
+        // The lesson shell's `__inbetweenGpuError` shows it in the page's error banner too.
+        device.on_uncaptured_error(Arc::new(|e: wgpu::Error| {
+            let message = format!("GPU error (a bug in inbetween): {e}");
+            web_sys::console::error_1(&message.as_str().into());
+            let _ = report_gpu_error(&message);
+        }));
         Ok(Self {
             device_lost,
             instance,
