@@ -12,6 +12,9 @@ const RED = cssVar('--x-axis');
 const DARK = cssVar('--dark');
 const GREY = cssVar('--grey');
 
+/** A rejected setting's message and the figure's note as one text, each part a sentence. */
+const sentences = (...parts) => parts.filter(Boolean).map((s) => (/[.!?]$/.test(s.trim()) ? s : `${s}.`)).join(' ');
+
 /** NaN (a curve that stops, a sample not taken) as uPlot's gap. */
 const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) ? v : null))));
 
@@ -39,7 +42,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     cols.push(yours.length ? Array.from(yours, (v) => (Number.isFinite(v) ? v : null)) : cols[0].map(() => null));
     plot.setData(cols);
   }, (m) => { rejected = m; });
-  gui.onChange(() => { apply(); showNote(note, [rejected, scene.note()].filter(Boolean).join(' ')); markDrawn('#fig-kernels'); });
+  gui.onChange(() => { apply(); showNote(note, sentences(rejected, scene.note())); markDrawn('#fig-kernels'); });
   apply();
   showNote(note, scene.note());
   markDrawn('#fig-kernels');
@@ -112,7 +115,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
 
     const note = document.getElementById('density-note');
     lesson.onFrame(() => {
-      showNote(note, [rejected, scene.draw(viewer)].filter(Boolean).join(' '));
+      showNote(note, sentences(rejected, scene.draw(viewer)));
       markDrawn('#fig-density');
     });
   }
@@ -158,7 +161,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     let frame = 0;
     lesson.onFrame((dt) => {
       const t = timeline.advance(dt);
-      showNote(note, [rejected, scene.draw(viewer, t)].filter(Boolean).join(' '));
+      showNote(note, sentences(rejected, scene.draw(viewer, t)));
       if (frame++ % 6 === 0) replot();
       compression.setCursor(t);
       energy.setCursor(t);
@@ -219,7 +222,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     lesson.onFrame((dt) => {
       const t = timeline.advance(dt);
       scene.advanceTo(t);
-      showNote(note, [rejected, scene.draw(viewer)].filter(Boolean).join(' '));
+      showNote(note, sentences(rejected, scene.draw(viewer)));
       sweepStep();
       markDrawn('#fig-splash');
       markDrawn('#fig-timing');
