@@ -30,7 +30,6 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     title: 'Kernels as shares of their peaks', xLabel: 'distance r (m)', yLabel: 'W (share of its peak)',
     series: ['poly6', 'spiky', 'spiky slope −dW/dr', 'viscosity ∇²W', 'your poly6'],
     colors: [PURPLE, BLUE, TEAL, ORANGE, DARK], widths: [3, 2, 2, 2, 2], dashes: [null, null, null, null, [6, 4]],
-    yRange: [0, 1.05],
   });
   const note = document.getElementById('kernels-note');
   let rejected = '';
@@ -40,6 +39,9 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     const cols = columns(scene.samples(), 5);
     const yours = scene.yourCurve();
     cols.push(yours.length ? Array.from(yours, (v) => (Number.isFinite(v) ? v : null)) : cols[0].map(() => null));
+    // 0 to 1, and as far as the student's curve goes beyond (a kernel that turns negative past h).
+    const mine = cols[5].filter((v) => v !== null);
+    plot.setYRange([Math.min(0, ...mine), Math.max(1, ...mine)]);
     plot.setData(cols);
   }, (m) => { rejected = m; });
   gui.onChange(() => { apply(); showNote(note, sentences(rejected, scene.note())); markDrawn('#fig-kernels'); });
