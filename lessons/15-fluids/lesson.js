@@ -143,8 +143,12 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       series: ['SPH', 'PBF'], colors: [BLUE, ORANGE], widths: [2, 3], minSpan: 1,
     });
     let rejected = '';
+    // The fluids' time (the last sample's): on a slow machine it falls behind the timeline's, and
+    // the plots' playhead shows where the drawn fluids are.
+    let simulated = 0;
     const replot = () => {
       const all = gaps(columns(scene.samples(), 5));
+      simulated = all[0].length ? all[0][all[0].length - 1] : 0;
       // The x axis spans the whole timeline from the start: a last, empty row at its end.
       all[0].push(timeline.duration);
       for (let k = 1; k < 5; k++) all[k].push(null);
@@ -165,8 +169,10 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       const t = timeline.advance(dt);
       showNote(note, sentences(rejected, scene.draw(viewer, t)));
       if (frame++ % 6 === 0) replot();
-      compression.setCursor(t);
-      energy.setCursor(t);
+      // Samples are read every 6 frames (0.1 s): within that the fluids keep up.
+      const at = t - simulated < 0.15 ? t : simulated;
+      compression.setCursor(at);
+      energy.setCursor(at);
       markDrawn('#fig-dam');
     });
   }
