@@ -488,6 +488,21 @@ fn the_splash_steps_a_few_steps_a_call_and_replays_when_the_time_goes_back() {
     );
 }
 
+/// The splash's lattice holds up to about a quarter fewer particles than the slider asks for (the
+/// caption; the note gives the count).
+#[test]
+fn the_splash_holds_up_to_about_a_quarter_fewer_particles_than_asked_for() {
+    let mut fig = SplashFigure::new();
+    let mut fewest = 1.0f32;
+    for asked in (500..=10_000).step_by(500) {
+        fig.set("PBF", asked as f32, "grid", 0.0).unwrap();
+        let share = fig.fluid().len() as f32 / asked as f32;
+        assert!(share <= 1.0, "{asked}: {}", fig.fluid().len());
+        fewest = fewest.min(share);
+    }
+    assert!((0.74..0.8).contains(&fewest), "{fewest}");
+}
+
 /// Vorticity confinement gives back motion that PBF's damping takes: the splash keeps more
 /// kinetic energy with it than without (a sign error in the curl makes it damp instead).
 #[test]
