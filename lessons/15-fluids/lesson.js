@@ -12,6 +12,9 @@ const RED = cssVar('--x-axis');
 const DARK = cssVar('--dark');
 const GREY = cssVar('--grey');
 
+/** A rejected setting's message and the figure's note as one text, each part a sentence. */
+const sentences = (...parts) => parts.filter(Boolean).map((s) => (/[.!?]$/.test(s.trim()) ? s : `${s}.`)).join(' ');
+
 /** NaN (a curve that stops, a sample not taken) as uPlot's gap. */
 const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) ? v : null))));
 
@@ -27,7 +30,6 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     title: 'Kernels as shares of their peaks', xLabel: 'distance r (m)', yLabel: 'W (share of its peak)',
     series: ['poly6', 'spiky', 'spiky slope −dW/dr', 'viscosity ∇²W', 'your poly6'],
     colors: [PURPLE, BLUE, TEAL, ORANGE, DARK], widths: [3, 2, 2, 2, 2], dashes: [null, null, null, null, [6, 4]],
-    yRange: [0, 1.05],
   });
   const note = document.getElementById('kernels-note');
   let rejected = '';
@@ -37,9 +39,12 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     const cols = columns(scene.samples(), 5);
     const yours = scene.yourCurve();
     cols.push(yours.length ? Array.from(yours, (v) => (Number.isFinite(v) ? v : null)) : cols[0].map(() => null));
+    // 0 to 1, and as far as the student's curve goes beyond (a kernel that turns negative past h).
+    const mine = cols[5].filter((v) => v !== null);
+    plot.setYRange([Math.min(0, ...mine), Math.max(1, ...mine)]);
     plot.setData(cols);
   }, (m) => { rejected = m; });
-  gui.onChange(() => { apply(); showNote(note, [rejected, scene.note()].filter(Boolean).join(' ')); markDrawn('#fig-kernels'); });
+  gui.onChange(() => { apply(); showNote(note, sentences(rejected, scene.note())); markDrawn('#fig-kernels'); });
   apply();
   showNote(note, scene.note());
   markDrawn('#fig-kernels');
@@ -112,7 +117,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
 
     const note = document.getElementById('density-note');
     lesson.onFrame(() => {
-      showNote(note, [rejected, scene.draw(viewer)].filter(Boolean).join(' '));
+      showNote(note, sentences(rejected, scene.draw(viewer)));
       markDrawn('#fig-density');
     });
   }
@@ -138,8 +143,12 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       series: ['SPH', 'PBF'], colors: [BLUE, ORANGE], widths: [2, 3], minSpan: 1,
     });
     let rejected = '';
+    // The fluids' time (the last sample's): on a slow machine it falls behind the timeline's, and
+    // the plots' playhead shows where the drawn fluids are.
+    let simulated = 0;
     const replot = () => {
       const all = gaps(columns(scene.samples(), 5));
+      simulated = all[0].length ? all[0][all[0].length - 1] : 0;
       // The x axis spans the whole timeline from the start: a last, empty row at its end.
       all[0].push(timeline.duration);
       for (let k = 1; k < 5; k++) all[k].push(null);
@@ -158,10 +167,12 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     let frame = 0;
     lesson.onFrame((dt) => {
       const t = timeline.advance(dt);
-      showNote(note, [rejected, scene.draw(viewer, t)].filter(Boolean).join(' '));
+      showNote(note, sentences(rejected, scene.draw(viewer, t)));
       if (frame++ % 6 === 0) replot();
-      compression.setCursor(t);
-      energy.setCursor(t);
+      // Samples are read every 6 frames (0.1 s): within that the fluids keep up.
+      const at = t - simulated < 0.15 ? t : simulated;
+      compression.setCursor(at);
+      energy.setCursor(at);
       markDrawn('#fig-dam');
     });
   }
@@ -219,7 +230,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     lesson.onFrame((dt) => {
       const t = timeline.advance(dt);
       scene.advanceTo(t);
-      showNote(note, [rejected, scene.draw(viewer)].filter(Boolean).join(' '));
+      showNote(note, sentences(rejected, scene.draw(viewer)));
       sweepStep();
       markDrawn('#fig-splash');
       markDrawn('#fig-timing');

@@ -130,6 +130,44 @@ impl KernelsFigure {
         Ok(())
     }
 
+    /// The largest values of the four kernels, in the plot's order: `W(0)` of poly6 and spiky
+    /// (1/m² in 2D, 1/m³ in 3D), spiky's slope `−dW/dr` as `r → 0` and the viscosity
+    /// Laplacian at 0 (each one power of 1/m more).
+    pub fn peaks(&self) -> [f32; 4] {
+        let k = Kernels::new(self.h, self.dim);
+        [
+            k.poly6(0.0),
+            k.spiky(0.0),
+            -k.spiky_gradient(Vec3::X * 1e-6 * self.h).x,
+            k.viscosity_laplacian(0.0),
+        ]
+    }
+
+    /// What the plot's shares are shares of: poly6's and spiky's peaks `W(0)`, with their unit.
+    /// Doubling `h` divides them by 4 in 2D and by 8 in 3D (the same unit weight over 4 or 8
+    /// times the area or volume).
+    pub fn peaks_note(&self) -> String {
+        let [poly6, spiky, _, _] = self.peaks();
+        // Whole numbers from 100 up, one decimal below (31.8 at h = 20 cm in 2D).
+        let show = |w: f32| {
+            if w >= 100.0 {
+                format!("{w:.0}")
+            } else {
+                format!("{w:.1}")
+            }
+        };
+        let (d, unit) = match self.dim {
+            Dim::Two => (2, "1/m²"),
+            Dim::Three => (3, "1/m³"),
+        };
+        format!(
+            "Peaks at h = {} cm in {d}D: poly6 W(0) = {} {unit}, spiky W(0) = {} {unit}.",
+            show(100.0 * self.h),
+            show(poly6),
+            show(spiky)
+        )
+    }
+
     /// `samples` rows from `r = 0` to `1.25 h`: `[r, poly6, spiky, −dW/dr of spiky, ∇²W of
     /// viscosity]`, each kernel as a share of its largest value, so one axis shows all four
     /// (they differ by orders of magnitude) and where each reaches zero: at `h`, and beyond.
@@ -137,13 +175,8 @@ impl KernelsFigure {
         super::check_samples(samples)?;
         let k = Kernels::new(self.h, self.dim);
         let slope = |r: f32| -k.spiky_gradient(Vec3::X * r).x;
-        // The spiky slope is largest as r → 0: its value at a millionth of h.
-        let peaks = [
-            k.poly6(0.0),
-            k.spiky(0.0),
-            slope(1e-6 * self.h),
-            k.viscosity_laplacian(0.0),
-        ];
+        // The spiky slope is largest as r → 0: `peaks` takes its value at a millionth of h.
+        let peaks = self.peaks();
         Ok((0..samples)
             .map(|i| {
                 let r = 1.25 * self.h * i as f32 / (samples - 1) as f32;
@@ -169,6 +202,15 @@ pub const GRAB_RADIUS_PX: f32 = 20.0;
 /// small force still shows and a large one stays inside the box.
 const ARROW_MAX_M: f32 = 0.25;
 const ARROW_ACCEL: f32 = 50.0;
+/// PBF's move is a fraction of a millimetre: its arrow is `PBF_ARROW_MAX_M · tanh(|Δx| /
+/// PBF_ARROW_MOVE_M)` long, like the force's (the note gives the move's true length).
+pub const PBF_ARROW_MAX_M: f32 = 0.3;
+pub const PBF_ARROW_MOVE_M: f32 = 6e-4;
+
+/// The orange arrow's length for a PBF move of `move_m` metres.
+pub fn pbf_arrow_length(move_m: f32) -> f32 {
+    PBF_ARROW_MAX_M * (move_m / PBF_ARROW_MOVE_M).tanh()
+}
 
 /// What SPH and PBF make of the dragged particle's neighbourhood: its density, its pressure,
 /// the pressure force of its neighbours, and its PBF `λ` with the move `λ ∇ᵢCᵢ` it asks of the
@@ -537,7 +579,12 @@ impl DensityFigure {
             );
         }
         if s.correction.length() > 1e-6 && s.correction.is_finite() {
-            frame.arrow(p, p + s.correction, palette::ORANGE, 0.02);
+            // A little in front of the slab (towards the default camera): the move mostly
+            // points where the force does, and the teal arrow would hide it.
+            let front = p + Vec3::new(0.0, 0.0, 0.03);
+            let length = pbf_arrow_length(s.correction.length());
+            let drawn = s.correction.normalize() * length;
+            frame.arrow(front, front + drawn, palette::ORANGE, 0.02);
         }
         // The box's walls.
         let corners = [
@@ -570,6 +617,12 @@ impl DensityFigure {
     }
 }
 
+/// PBF's artificial pressure `s_corr` in the figures' fluids. The core's default, 0.1, suits
+/// finer fluids; in these coarse ones it holds the whole pool apart below ρ₀, since the density
+/// constraint never pulls (the dam break's water settles a fifth below ρ₀, a fifth too tall),
+/// while 0 lets about 4 surface particles in 10 pair up.
+pub const FIGURE_S_CORR: f32 = 0.03;
+
 /// The dam-break figure's particles per fluid, and its kernel radius in spacings.
 pub const DAM_PARTICLES: usize = 800;
 /// The figure's frame: the fluids are stepped to the timeline's time at their own steps.
@@ -600,7 +653,13 @@ impl DamBreakFigure {
         let make = |method| {
             let mut params = FluidParams::default_2d(method);
             params.h = DENSITY_H_SPACINGS * spacing_for(Dim::Two, Scene::DamBreak, DAM_PARTICLES);
-            Fluid::new(params, Scene::DamBreak, DAM_PARTICLES, 3).expect("valid defaults")
+            params.s_corr = FIGURE_S_CORR;
+            let mut f =
+                Fluid::new(params, Scene::DamBreak, DAM_PARTICLES, 3).expect("valid defaults");
+            // The start's densities, for the note and colours before the first step.
+            f.search();
+            f.refresh_densities();
+            f
         };
         let start = [make(Method::Sph), make(Method::Pbf)];
         Self {
@@ -711,17 +770,19 @@ impl DamBreakFigure {
             None => {
                 let s = f.stats();
                 format!(
-                    "{name}: compressed at most {:.1} %, CFL {} ({} steps a frame).",
-                    100.0 * s.density_error_max.max(0.0),
+                    "{name}: densest particle {:+.1} % from ρ₀, CFL {} ({} steps a frame).",
+                    100.0 * s.density_error_max,
                     format_number(s.cfl),
                     (DAM_FRAME_SEC / f.params.dt).round()
                 )
             }
         };
+        // The fluids' own time: on a slow machine they fall behind the timeline.
         format!(
-            "{} {}",
+            "{} {} Simulated so far: {} s.",
             describe(&self.fluids[0], "SPH"),
-            describe(&self.fluids[1], "PBF")
+            describe(&self.fluids[1], "PBF"),
+            format_number(self.fluids[1].time)
         )
     }
 }
@@ -767,6 +828,7 @@ fn fluid_3d(method: Method, scene: Scene, count: usize, vorticity: f32) -> Resul
     let mut params = FluidParams::default_3d(method);
     params.h = SPLASH_H_SPACINGS * spacing_for(Dim::Three, scene, count);
     params.vorticity = vorticity;
+    params.s_corr = FIGURE_S_CORR;
     Fluid::new(params, scene, count, 5)
 }
 

@@ -53,9 +53,16 @@ impl KernelsScene {
             .0
             .unwrap_or_default())
     }
-    /// What the figure says about the student's poly6 ("" when the exercise is off).
+    /// The kernels' peaks (what the plot's shares are shares of), then what the figure says
+    /// about the student's poly6 (nothing more when the exercise is off).
     pub fn note(&self) -> Result<String, JsError> {
-        Ok(self.scene.exercise(KERNEL_SAMPLES).map_err(js)?.1)
+        let exercise = self.scene.exercise(KERNEL_SAMPLES).map_err(js)?.1;
+        let peaks = self.scene.peaks_note();
+        Ok(if exercise.is_empty() {
+            peaks
+        } else {
+            format!("{peaks} {exercise}")
+        })
     }
 }
 
