@@ -561,13 +561,21 @@ pub fn table(reports: &[Report]) -> String {
             r.lesson, r.exercise, r.status
         );
     }
-    let passed = reports.iter().filter(|r| r.passed()).count();
-    let todo = reports.iter().filter(|r| r.not_done()).count();
-    out += &format!(
-        "\n{passed} passed, {todo} not yet implemented, {} wrong, of {}\n",
-        reports.len() - passed - todo,
-        reports.len()
-    );
+    let count = |f: fn(&Status) -> bool| reports.iter().filter(|r| f(&r.status)).count();
+    let passed = count(|s| matches!(s, Status::Passed { .. }));
+    let todo = count(|s| *s == Status::NotDone);
+    // A panic and a stop are counted apart from wrong answers (as the page's summary does),
+    // and named only when there are any.
+    let panicked = count(|s| matches!(s, Status::Panicked { .. }));
+    let stopped = count(|s| matches!(s, Status::Stopped { .. }));
+    let wrong = reports.len() - passed - todo - panicked - stopped;
+    let mut line = format!("{passed} passed, {todo} not yet implemented, {wrong} wrong");
+    for (n, what) in [(panicked, "panicked"), (stopped, "stopped")] {
+        if n > 0 {
+            line += &format!(", {n} {what}");
+        }
+    }
+    out += &format!("\n{line}, of {}\n", reports.len());
     out
 }
 
@@ -713,7 +721,7 @@ mod tests {
             line.starts_with("STOPPED at case 1 (small): no answer within 5 s"),
             "{line}"
         );
-        assert!(table(&reports).contains("0 passed, 0 not yet implemented, 2 wrong, of 2"));
+        assert!(table(&reports).contains("0 passed, 0 not yet implemented, 0 wrong, 1 panicked, 1 stopped, of 2"));
         // Nothing stays known for the next grading.
         assert!(matches!(
             FAKE.grade()[1].status,
