@@ -721,7 +721,8 @@ mod tests {
             line.starts_with("STOPPED at case 1 (small): no answer within 5 s"),
             "{line}"
         );
-        assert!(table(&reports).contains("0 passed, 0 not yet implemented, 0 wrong, 1 panicked, 1 stopped, of 2"));
+        assert!(table(&reports)
+            .contains("0 passed, 0 not yet implemented, 0 wrong, 1 panicked, 1 stopped, of 2"));
         // Nothing stays known for the next grading.
         assert!(matches!(
             FAKE.grade()[1].status,
