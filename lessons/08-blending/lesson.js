@@ -80,7 +80,8 @@ await blendFigure('fig-additive', {
   // The base, the chosen layer alone (on the rest pose) and the base with the layer.
   series: [1, 5, 4],
   names: ['base clip', 'layer alone', 'base + layer'],
-  colors: [GREY, TEAL, ORANGE],
+  // As in the view: the orange stick figure is the base, the grey body the base with the layer.
+  colors: [ORANGE, TEAL, GREY],
   widths: [6, 6, 2],
   controls: (gui, scene, { replot, retime }) => {
     const p = { base: 'walk', additive: 'wave (a clip)', additiveWeight: 1 };

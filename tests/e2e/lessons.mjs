@@ -666,6 +666,18 @@ async function lessonPage(context, backend, lesson) {
   await frames(page, 20);
   const stillDrawing = (await drawn()).filter(([, n], k) => n - drawnBefore[k][1] > 2);
   assert.deepEqual(stillDrawing.map(([s]) => s), [], 'these paused figures kept drawing');
+  // Every figure as the page first shows it (timelines paused, the page's own cameras and
+  // settings), before the sweep orbits any camera or moves any control (some figures share
+  // their settings): the screenshots to review the looks by. Each is taken once the figure,
+  // scrolled into view, has drawn again (a figure off screen keeps its last frame).
+  if (!light(backend)) {
+    for (const [i, figure] of (await page.locator('.figure').all()).entries()) {
+      await figure.scrollIntoViewIfNeeded();
+      await frames(page, 3);
+      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-default-${backend}.png` });
+    }
+    clock('default screenshots');
+  }
   await plotsNameTheirUnits(page);
   const framesFitted = await frameAllReturnsToTheFit(page, lesson.folder);
   clock('frame all');
@@ -681,9 +693,6 @@ async function lessonPage(context, backend, lesson) {
     const kind = !(await canvas.count()) ? 'plots'
       : (await canvas.evaluate((c) => c.classList.contains('view2d'))) ? '2d' : '3d';
     if (kind !== '3d' && light(backend)) continue;
-    // Each figure as the page first shows it (timelines paused at 0, the page's own camera),
-    // before the sweep orbits it and moves its controls: the screenshot to review its looks by.
-    if (!light(backend)) await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-default-${backend}.png` });
     if (kind !== '3d') {
       const stats = await pixelStats(page, kind === '2d' ? canvas : figure.locator('.plot, canvas').first(), `drawn${i}`);
       assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
