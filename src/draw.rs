@@ -488,6 +488,17 @@ impl Frame {
     /// arrow draws nothing.
     #[inline(never)]
     pub fn arrow(&mut self, from: Vec3, to: Vec3, color: Vec3, head: f32) {
+        self.arrow_with(from, to, color, head, false);
+    }
+
+    /// A [`Frame::arrow`] whose shaft is drawn over everything: an offset that starts inside a
+    /// surface (a vertex's move under the skin it moved) still shows its whole length.
+    #[inline(never)]
+    pub fn arrow_on_top(&mut self, from: Vec3, to: Vec3, color: Vec3, head: f32) {
+        self.arrow_with(from, to, color, head, true);
+    }
+
+    fn arrow_with(&mut self, from: Vec3, to: Vec3, color: Vec3, head: f32, on_top: bool) {
         let v = to - from;
         let length = v.length();
         if length.is_nan() || length <= 1e-6 || length.is_infinite() {
@@ -496,7 +507,11 @@ impl Frame {
         let dir = v / length;
         let head = head.min(0.4 * length).max(0.0);
         let base = to - dir * head;
-        self.stroke(&[from, base], color, StrokeStyle::solid(ARROW_PX));
+        let style = StrokeStyle {
+            on_top,
+            ..StrokeStyle::solid(ARROW_PX)
+        };
+        self.stroke(&[from, base], color, style);
         let model = Mat4::from_scale_rotation_translation(
             Vec3::new(head * 0.35, head, head * 0.35),
             Quat::from_rotation_arc(Vec3::Y, dir),

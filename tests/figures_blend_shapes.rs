@@ -723,6 +723,20 @@ fn the_targets_figure_validates_and_draws_its_arrows_on_request() {
     };
     let with = cones(&mut f);
     assert!(with > 40, "{with} arrows");
+    // The shafts are drawn over the skin: a target that moves the skin outwards (the jaw, the
+    // cheeks) would otherwise hide where each arrow starts, and it would read as a dot.
+    let mut frame = Frame::default();
+    f.draw(&mut frame, &HEADS).unwrap();
+    let blue = inbetween::draw::palette::BLUE;
+    let shafts: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| glam::Vec3::from_slice(&s.color[..3]).abs_diff_eq(blue, 1e-3))
+        .collect();
+    assert!(shafts.len() >= with, "{} shafts", shafts.len());
+    assert!(shafts
+        .iter()
+        .all(|s| s.depth_bias == inbetween::draw::ON_TOP));
     // Drawn again at the same weight: nothing to upload.
     for head in &mut f.heads {
         head.take_dirty();

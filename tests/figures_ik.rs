@@ -760,3 +760,33 @@ fn the_aim_cone_is_drawn_in_wide_lines() {
     assert_eq!(rays.len(), 8, "a ray to every third of the rim's 24 points");
     assert!(rays.iter().all(|s| s.width_px == CONE_PX && CONE_PX >= 2.0));
 }
+
+/// With hinges and a target off the chains' plane, a corner view from the side shows the gap
+/// across (the main view sees it nearly end on): the target and the foot of its drop lie in the
+/// inset's box. Without the gap there is no inset.
+#[test]
+fn the_hinges_gap_gets_a_side_view() {
+    use inbetween::draw::inset::InsetView;
+    let mut f = IkFigure::new();
+    f.set_limits("hinges (bend one way)").unwrap();
+    f.set_target(Vec3::new(0.55, 0.65, 0.15)).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    let inset = frame.inset.clone().expect("a side view");
+    assert_eq!(inset.view, InsetView::Side);
+    assert_eq!(inset.title, "from the side");
+    // FABRIK's chain stands at x = 1.1 (the last one drawn).
+    let target = Vec3::new(1.1 + 0.55, 0.65, 0.15);
+    for p in [target, Vec3::new(target.x, target.y, 0.0)] {
+        assert!(p.cmpge(inset.min).all() && p.cmple(inset.max).all(), "{p}");
+    }
+    f.set_target(Vec3::new(0.55, 0.65, 0.0)).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    assert!(frame.inset.is_none());
+    f.set_target(Vec3::new(0.55, 0.65, 0.15)).unwrap();
+    f.set_limits("none").unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    assert!(frame.inset.is_none());
+}

@@ -33,10 +33,13 @@ fn noise1d_blends_the_two_ramps_at_the_probe() {
     );
     // The pink probe sits on the blue curve.
     let probe = f
-        .points
+        .markers
         .iter()
         .find(|p| p.color[..3] == palette::PINK.to_array())
         .unwrap();
+    // A dot of a fixed size on screen, drawn over the lines (negative size): visible at any
+    // zoom of the eight-cell view.
+    assert!(probe.size_px <= -12.0, "{}", probe.size_px);
     let curve: Vec<(Vec3, Vec3)> = f.segments_of(palette::BLUE).collect();
     let c = Vec3::from(probe.center);
     let near = curve
@@ -63,7 +66,7 @@ fn noise1d_probe_follows_one_ramp_next_to_an_integer() {
         let mut f = Frame::default();
         s.draw(&mut f);
         let at = |c: Vec3| {
-            f.points
+            f.markers
                 .iter()
                 .find(|p| p.color[..3] == c.to_array())
                 .map(|p| Vec3::from(p.center))

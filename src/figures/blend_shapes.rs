@@ -391,14 +391,15 @@ impl FaceFigure {
             if differential && self.show_deltas {
                 // Each arrow runs from the vertex on the base head to where the blend puts it:
                 // its offset Σ wₖ dₖ, in the head's frame, lifted 3 cm off the base surface
-                // along its normal so the skin does not hide it.
+                // along its normal, its shaft drawn over the skin (which hides where it starts
+                // when the blend moves the skin outwards).
                 let base = &self.face.mesh.positions;
                 let normals = &self.face.mesh.normals;
                 for &v in &self.arrow_vertices {
                     let lift = ARROW_LIFT * normals[v];
                     let from = head.transform_point3(base[v] + lift);
                     let to = head.transform_point3(self.differential.positions[v] + lift);
-                    frame.arrow(from, to, palette::BLUE, 0.05);
+                    frame.arrow_on_top(from, to, palette::BLUE, 0.05);
                 }
             }
             if both {
@@ -766,7 +767,7 @@ impl TargetsFigure {
                     let lift = ARROW_LIFT * normals[v];
                     let from = model.transform_point3(base[v] + lift);
                     let to = model.transform_point3(self.heads[i].positions[v] + lift);
-                    frame.arrow(from, to, palette::BLUE, 0.05);
+                    frame.arrow_on_top(from, to, palette::BLUE, 0.05);
                 }
             }
         }

@@ -13,6 +13,7 @@ use super::{
     DEFAULT_RUNNER,
 };
 use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
+use crate::draw::inset::InsetView;
 use crate::draw::StrokeStyle;
 use crate::exercises::run;
 use crate::ik::{aim, ccd, ccd_limited, fabrik, fabrik_limited, two_joint, IkResult, JointLimit};
@@ -734,12 +735,17 @@ impl IkFigure {
             let color = SOLVER_COLORS[k];
             // Each chain's own target, in its colour, so none is taken for a neighbour's.
             frame.marker(target, TARGET_PX, color);
+            // Above the target and the grey square around its foot; the rightmost chain's
+            // reads leftwards, so that it stays clear of the canvas's right edge.
             frame.label_with_priority(
-                target + Vec3::new(0.05, 0.05, 0.0),
+                target + Vec3::new(if k == 2 { -0.05 } else { 0.05 }, 0.12, 0.0),
                 format!("{} target", SOLVERS[k]),
                 color,
                 1,
             );
+            if let Some(label) = frame.labels.last_mut() {
+                label.left = k == 2;
+            }
             frame.label_with_priority(root + Vec3::new(0.0, -0.12, 0.0), SOLVERS[k], color, 2);
             draw_chain(frame, root, &self.solved[k], color);
             if k == 0 {
@@ -810,6 +816,15 @@ impl IkFigure {
             StrokeStyle::dashed(GAP_PX, 0.03, 0.02),
         );
         frame.marker(foot, POLE_PX, palette::GREY);
+        // From the side (looking along −x) the chains' plane is a vertical line and the drop
+        // runs across: the corner view shows the gap that the main view sees nearly end on.
+        let depth = (self.target.z.abs() + 0.1).max(0.35);
+        frame.inset(
+            InsetView::Side,
+            "from the side",
+            root + Vec3::new(-0.6, -0.15, -depth),
+            root + Vec3::new(0.6, 1.05, depth),
+        );
     }
 
     /// On the two-joint chain: the triangle of the law of cosines (sides a, b, d, the angle α at

@@ -302,7 +302,7 @@ impl Noise1d {
                 palette::GREY
             };
             let x = i as f32;
-            frame.point(Self::to_world(x, 0.0), 0.06, palette::KEY);
+            frame.marker(Self::to_world(x, 0.0), 9.0, palette::KEY);
             frame.wide_line(
                 Self::to_world(x - TICK_HALF, -TICK_HALF * g),
                 Self::to_world(x + TICK_HALF, TICK_HALF * g),
@@ -344,8 +344,10 @@ impl Noise1d {
         let (a, b) = (g0 * t, g1 * (t - 1.0));
         let n = a + f * (b - a);
         if self.show_ramps {
-            frame.point(Self::to_world(self.probe_x, a), 0.05, palette::ORANGE);
-            frame.point(Self::to_world(self.probe_x, b), 0.05, palette::TEAL);
+            // Dots of a fixed size on screen, outlined, over the lines: the view is eight cells
+            // wide, so a dot sized in metres would be a couple of pixels.
+            frame.marker_on_top(Self::to_world(self.probe_x, a), 11.0, palette::ORANGE);
+            frame.marker_on_top(Self::to_world(self.probe_x, b), 11.0, palette::TEAL);
             frame.wide_line(
                 Self::to_world(self.probe_x, a),
                 Self::to_world(self.probe_x, b),
@@ -353,9 +355,9 @@ impl Noise1d {
                 GUIDE_PX,
             );
         }
-        frame.point(Self::to_world(self.probe_x, n), 0.08, palette::PINK);
+        frame.marker_on_top(Self::to_world(self.probe_x, n), 14.0, palette::PINK);
         frame.label(
-            Self::to_world(self.probe_x, n) + Vec3::Y * 0.3,
+            Self::to_world(self.probe_x, n) + Vec3::Y * 0.45,
             "n(x)",
             palette::PINK,
         );
