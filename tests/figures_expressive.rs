@@ -560,3 +560,29 @@ fn a_soft_antenna_trails_and_stands_up_over_the_hold_without_swinging_past() {
     let end = rows.iter().filter(|r| r[0] < 1.95).last().unwrap();
     assert!(end[1] - end[2] > 0.5);
 }
+
+/// Both balls of the jump cast a shadow on the ground: darkest when a ball touches it, fainter
+/// at the apex, so the heights compare from one view.
+#[test]
+fn the_jumping_balls_cast_shadows_that_fade_with_height() {
+    use inbetween::draw::MARKER_SHADOW;
+    let f = JumpComparison::new();
+    let shadows = |t: f32| -> Vec<f32> {
+        let mut frame = Frame::default();
+        f.draw(&mut frame, t).unwrap();
+        frame
+            .markers
+            .iter()
+            .filter(|m| m.shape == MARKER_SHADOW)
+            .map(|m| m.color[3])
+            .collect()
+    };
+    let rest = shadows(0.0);
+    assert_eq!(rest.len(), 2);
+    assert!(rest.iter().all(|&a| a > 0.4), "{rest:?}");
+    // Somewhere in the flight both balls are up: their shadows are fainter.
+    let duration = (1..100)
+        .map(|k| k as f32 * 0.05)
+        .find(|&t| shadows(t).iter().all(|&a| a < 0.4));
+    assert!(duration.is_some(), "the shadows never fade");
+}

@@ -1067,3 +1067,19 @@ fn the_fountain_settles_at_rate_times_lifetime() {
     scene.advance_to(1.0).unwrap();
     assert_eq!(scene.count_samples().len(), 5 * 61);
 }
+
+/// The squash figure's balls cast shadows on the floor, one each, once they are low enough
+/// (`Frame::shadow_reach`: 1.5 m for these 25 cm balls; they drop from 2 m).
+#[test]
+fn the_squash_balls_cast_shadows() {
+    use inbetween::draw::{Frame, MARKER_SHADOW};
+    let mut f = inbetween::figures::particles::SquashFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, 0.6).unwrap();
+    let n = frame
+        .markers
+        .iter()
+        .filter(|m| m.shape == MARKER_SHADOW)
+        .count();
+    assert_eq!(n, 2);
+}

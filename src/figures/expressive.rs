@@ -417,6 +417,10 @@ impl JumpComparison {
         let scale = stretch_scale(self.runner, self.use_exercise, p.stretch);
         let centre = Vec3::new(1.2, p.height + RADIUS * scale.x, 0.0);
         frame.mesh(MeshId::SPHERE, ball(centre, Vec3::Y, scale), PRINCIPLED);
+        // Shadows on the ground under both: how high each is, and when it lands, read from one
+        // view.
+        frame.contact_shadow(Vec3::new(-1.2, plain.height, 0.0), RADIUS);
+        frame.contact_shadow(Vec3::new(1.2, p.height, 0.0), RADIUS * scale.y);
         frame.label(Vec3::new(-1.2, -0.25, 0.6), "plain", PLAIN);
         frame.label(Vec3::new(1.2, -0.25, 0.6), "principles", PRINCIPLED);
         // The apex both reach.

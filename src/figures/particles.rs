@@ -1687,6 +1687,10 @@ impl SquashFigure {
         }
         let m = Mat4::from_translation(c) * Mat4::from_mat3(self.squash.shape_matrix());
         frame.mesh(MeshId::SPHERE, m, palette::ORANGE);
+        // Shadows on the floor: each ball's height, and the moment it lands, from one view.
+        let r = self.plain.radius;
+        frame.contact_shadow(p - Vec3::Y * r, r);
+        frame.contact_shadow(Vec3::new(c.x, (c.y - r).max(0.0), c.z), r);
         frame.label(p + Vec3::new(0.0, 0.45, 0.0), "rigid", palette::DARK);
         frame.label(
             c + Vec3::new(0.0, 0.45, 0.0),
