@@ -106,27 +106,7 @@ async fn gpu_boids_match_the_cpu_statistically() {
         assert!(e.contains("needs WebGPU"), "{e}");
         return;
     }
-    let plain = BoidParams {
-        obstacles: vec![Sphere {
-            center: Vec3::ZERO,
-            radius: 0.8,
-        }],
-        bounds: Vec3::new(3.0, 1.5, 3.0),
-        ..Default::default()
-    };
-    // Every rule at once: a force law, a narrower field of view, a leader and a predator.
-    let busy = BoidParams {
-        law: inbetween::boids::ForceLaw::Gaussian {
-            a1: 1.0,
-            a2: 2.0,
-            k: 2.0,
-            x0: 0.6,
-        },
-        fov_deg: 240.0,
-        leader: Some(1.5),
-        predator: Some((1.2, 3.0)),
-        ..plain.clone()
-    };
+    let (plain, busy) = compared_params();
     // No minimum speed: the flock slows into a hovering swarm (the other two keep their speed).
     let hovering = BoidParams {
         min_speed: 0.0,
@@ -151,26 +131,7 @@ async fn gpu_boids_on_the_grid_match_the_cpu_statistically() {
     if !gpu.compute {
         return; // the error for WebGL2 is checked above
     }
-    let plain = BoidParams {
-        obstacles: vec![Sphere {
-            center: Vec3::ZERO,
-            radius: 0.8,
-        }],
-        bounds: Vec3::new(3.0, 1.5, 3.0),
-        ..Default::default()
-    };
-    let busy = BoidParams {
-        law: inbetween::boids::ForceLaw::Gaussian {
-            a1: 1.0,
-            a2: 2.0,
-            k: 2.0,
-            x0: 0.6,
-        },
-        fov_deg: 240.0,
-        leader: Some(1.5),
-        predator: Some((1.2, 3.0)),
-        ..plain.clone()
-    };
+    let (plain, busy) = compared_params();
     for params in [&plain, &busy] {
         compare_flocks(&gpu, params, Search::Grid).await;
     }
@@ -307,6 +268,32 @@ async fn the_gpu_grid_has_the_cpu_grids_cells() {
             }
         }
     }
+}
+
+/// The flocks both GPU searches are compared on: a plain one around an obstacle, and one with
+/// every rule at once (a force law, a narrower field of view, a leader and a predator).
+fn compared_params() -> (BoidParams, BoidParams) {
+    let plain = BoidParams {
+        obstacles: vec![Sphere {
+            center: Vec3::ZERO,
+            radius: 0.8,
+        }],
+        bounds: Vec3::new(3.0, 1.5, 3.0),
+        ..Default::default()
+    };
+    let busy = BoidParams {
+        law: inbetween::boids::ForceLaw::Gaussian {
+            a1: 1.0,
+            a2: 2.0,
+            k: 2.0,
+            x0: 0.6,
+        },
+        fov_deg: 240.0,
+        leader: Some(1.5),
+        predator: Some((1.2, 3.0)),
+        ..plain.clone()
+    };
+    (plain, busy)
 }
 
 async fn compare_flocks(gpu: &Gpu, params: &BoidParams, search: Search) {
