@@ -244,3 +244,43 @@ fn the_squash_figure_frames_its_balls_closely() {
         assert!((a - b).length() >= 45.0, "{} px across", (a - b).length());
     }
 }
+
+/// Lesson 03 Figure 1 declares a sphere of 0.95 m around each aeroplane: whatever the keys,
+/// every path it draws stays within it, and from the page's orbit a plane's 0.9 m reach is at
+/// least 88 px on the 760 × 420 canvas (80 px when the camera fitted a box around the same
+/// reach).
+#[test]
+fn the_aeroplanes_fit_their_reach_and_fill_more_of_the_view() {
+    use inbetween::draw::Frame;
+    use inbetween::figures::rotations::{Interpolation, METHODS};
+    let mut s = Interpolation::new();
+    for (start, end) in [
+        (Vec3::ZERO, Vec3::new(120.0, 70.0, -120.0)),
+        (Vec3::new(170.0, 0.0, 0.0), Vec3::new(-170.0, 0.0, 0.0)),
+        (Vec3::new(-90.0, 45.0, 30.0), Vec3::new(180.0, -89.0, 179.0)),
+    ] {
+        s.set_keys_euler_deg(start, end).unwrap();
+        for t in [0.0, 0.3, 0.7, 1.0] {
+            let mut f = Frame::default();
+            s.draw(&mut f, t).unwrap();
+            for st in &f.strokes {
+                for p in [Vec3::from(st.a), Vec3::from(st.b)] {
+                    let reach = METHODS
+                        .iter()
+                        .map(|&(_, x, _)| (p - Vec3::new(x, 1.2, 0.0)).length())
+                        .fold(f32::INFINITY, f32::min);
+                    assert!(reach <= 0.95, "{p} is {reach} m from its plane");
+                }
+            }
+        }
+    }
+    let mut f = Frame::default();
+    Interpolation::new().draw(&mut f, 0.2).unwrap();
+    let size = Vec2::new(760.0, 420.0);
+    let mut camera = OrbitCamera::from_view([0.0, 1.1, 0.0, 7.5, 0.45, 0.5]);
+    assert!(camera.fit(&f.fit_points(), size, FIT_PAD_PX));
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let [a, b] = [Vec3::new(3.3, 1.2, 0.0), Vec3::new(3.3, 2.1, 0.0)]
+        .map(|p| project_to_canvas(view_proj, size, p).unwrap());
+    assert!((a - b).length() >= 88.0, "{} px", (a - b).length());
+}

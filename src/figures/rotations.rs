@@ -198,10 +198,20 @@ impl Interpolation {
         let t = in_range("t", t, 0.0, 1.0)?;
         let student = self.use_exercise && self.arc == Arc::Short;
         frame.grid(16, 0.5);
-        // The four objects, their axes and paths stay in view at any canvas size.
-        frame.keep_box_in_view(Vec3::new(-4.3, 0.3, -0.9), Vec3::new(4.3, 2.1, 0.9));
         for (method, x, color) in METHODS {
             let at = Vec3::new(x, 1.2, 0.0);
+            // Whatever the keys, the object, its axes and its paths stay within 0.9 m of its
+            // centre (the nose's pointer reaches furthest): 26 points on a sphere of 0.95 m
+            // stay in view at any canvas size. A box's corners would reach √3 times as far, and
+            // leave the objects small.
+            for d in [-1.0f32, 0.0, 1.0]
+                .into_iter()
+                .flat_map(|x| [-1.0f32, 0.0, 1.0].map(move |y| (x, y)))
+                .flat_map(|(x, y)| [-1.0f32, 0.0, 1.0].map(move |z| Vec3::new(x, y, z)))
+                .filter(|d| *d != Vec3::ZERO)
+            {
+                frame.keep_in_view.push(at + 0.95 * d.normalize());
+            }
             self.path.clear();
             for k in 0..=64 {
                 let m = self.orientation(method, k as f32 / 64.0, student);
