@@ -897,6 +897,48 @@ export function paddedRange(lo, hi, minSpan) {
 
 /** Sets a note element to `parts` joined by spaces (empty parts dropped), touching the DOM only
  * when the text changed. */
+/**
+ * Dragging something in a figure's 3D canvas with the mouse (a target, a particle): listeners
+ * in the capture phase on the canvas's stage run before the canvas's orbit controls, and take a
+ * press only when `grab(x, y, width, height)` (canvas pixels; Rust decides) says the pointer is
+ * on the thing. Then each move calls `drag(x, y, width, height)` and the release `release()`.
+ * With `hover`, the canvas gets the class `over-target` while the pointer is over it.
+ */
+export function dragInCanvas(canvas, { grab, drag, release = () => {}, hover = null }) {
+  const stage = canvas.parentElement;
+  const local = (e) => {
+    const r = canvas.getBoundingClientRect();
+    return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
+  };
+  let dragging = null;
+  stage.addEventListener('pointerdown', (e) => {
+    if (e.target !== canvas || e.button !== 0 || e.shiftKey) return;
+    if (!grab(...local(e))) return;
+    e.stopPropagation();
+    dragging = e.pointerId;
+    canvas.setPointerCapture(e.pointerId);
+    canvas.classList.add('dragging');
+  }, { capture: true });
+  stage.addEventListener('pointermove', (e) => {
+    if (dragging === null) {
+      if (hover && e.target === canvas) canvas.classList.toggle('over-target', hover(...local(e)));
+      return;
+    }
+    if (e.pointerId !== dragging) return;
+    e.stopPropagation();
+    drag(...local(e));
+  }, { capture: true });
+  const end = (e) => {
+    if (e.pointerId !== dragging) return;
+    e.stopPropagation();
+    dragging = null;
+    release();
+    canvas.classList.remove('dragging');
+  };
+  stage.addEventListener('pointerup', end, { capture: true });
+  stage.addEventListener('pointercancel', end, { capture: true });
+}
+
 export function showNote(element, ...parts) {
   const text = parts.filter(Boolean).join(' ');
   if (element.textContent !== text) element.textContent = text;

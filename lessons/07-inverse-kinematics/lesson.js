@@ -1,6 +1,6 @@
 // Lesson 07: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/ik/, src/figures/ik.rs), including picking and dragging the target.
-import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, columns, GUI, showNote, dragInCanvas } from '../../www/lesson.js';
 import { IkScene, AimScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -69,45 +69,19 @@ async function ikFigure(id, start) {
   gui.add(p, 'reset').name('reset the target');
   update();
 
-  // Dragging a target: capture-phase listeners on the stage run before the canvas's orbit
-  // controls, and stop the event only when the pointer is on a target (Rust decides).
-  const canvas = figure.querySelector('.stage canvas');
-  const stage = canvas.parentElement;
-  const local = (e) => {
-    const r = canvas.getBoundingClientRect();
-    return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
-  };
-  let dragging = null;
-  stage.addEventListener('pointerdown', (e) => {
-    if (e.target !== canvas || e.button !== 0 || e.shiftKey) return;
-    if (!scene.hitsTarget(...local(e))) return;
-    e.stopPropagation();
-    dragging = e.pointerId;
-    canvas.setPointerCapture(e.pointerId);
-    canvas.classList.add('dragging');
-  }, { capture: true });
-  stage.addEventListener('pointermove', (e) => {
-    if (dragging === null) {
-      if (e.target === canvas) canvas.classList.toggle('over-target', scene.hitsTarget(...local(e)));
-      return;
-    }
-    if (e.pointerId !== dragging) return;
-    e.stopPropagation();
-    scene.dragTarget(...local(e));
-    // Array.from: a Float32Array's own map would store the rounded numbers back as f32, and the
-    // sliders would show -0.5199999809265137 for -0.52.
-    [p.x, p.y, p.z] = Array.from(scene.target(), (v) => Math.round(v * 100) / 100);
-    refresh();
-    update();
-  }, { capture: true });
-  const release = (e) => {
-    if (e.pointerId !== dragging) return;
-    e.stopPropagation();
-    dragging = null;
-    canvas.classList.remove('dragging');
-  };
-  stage.addEventListener('pointerup', release, { capture: true });
-  stage.addEventListener('pointercancel', release, { capture: true });
+  // Dragging a target with the mouse (the canvas's orbit controls get every other press).
+  dragInCanvas(figure.querySelector('.stage canvas'), {
+    grab: (...at) => scene.hitsTarget(...at),
+    hover: (...at) => scene.hitsTarget(...at),
+    drag: (...at) => {
+      scene.dragTarget(...at);
+      // Array.from: a Float32Array's own map would store the rounded numbers back as f32, and the
+      // sliders would show -0.5199999809265137 for -0.52.
+      [p.x, p.y, p.z] = Array.from(scene.target(), (v) => Math.round(v * 100) / 100);
+      refresh();
+      update();
+    },
+  });
 
   const note = figure.querySelector('.note');
   lesson.onFrame(() => {

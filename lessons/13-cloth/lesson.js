@@ -1,7 +1,7 @@
 // Lesson 13: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/cloth/, src/figures/cloth.rs), including picking and dragging a particle. The page only
 // times the calls it makes.
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar, dragInCanvas } from '../../www/lesson.js';
 import { ClothScene, SpringScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -13,40 +13,15 @@ const TEAL = cssVar('--teal');
 const gaps = (flat, width) => columns(flat, width).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
 
 /**
- * Dragging a particle: capture-phase listeners on the stage run before the canvas's orbit
- * controls and take the event only when the timeline plays and Rust finds a particle under the
+ * Dragging a particle: taken only while the timeline plays and Rust finds a particle under the
  * pointer; otherwise the drag orbits the camera.
  */
 function dragParticles(selector, scene, timeline) {
-  const canvas = document.querySelector(`${selector} .stage canvas`);
-  const stage = canvas.parentElement;
-  const local = (e) => {
-    const r = canvas.getBoundingClientRect();
-    return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
-  };
-  let dragging = null;
-  stage.addEventListener('pointerdown', (e) => {
-    if (e.target !== canvas || e.button !== 0 || e.shiftKey || !timeline.playing) return;
-    if (!scene.grab(...local(e))) return;
-    e.stopPropagation();
-    dragging = e.pointerId;
-    canvas.setPointerCapture(e.pointerId);
-    canvas.classList.add('dragging');
-  }, { capture: true });
-  stage.addEventListener('pointermove', (e) => {
-    if (e.pointerId !== dragging) return;
-    e.stopPropagation();
-    scene.drag(...local(e));
-  }, { capture: true });
-  const release = (e) => {
-    if (e.pointerId !== dragging) return;
-    e.stopPropagation();
-    dragging = null;
-    scene.release();
-    canvas.classList.remove('dragging');
-  };
-  stage.addEventListener('pointerup', release, { capture: true });
-  stage.addEventListener('pointercancel', release, { capture: true });
+  dragInCanvas(document.querySelector(`${selector} .stage canvas`), {
+    grab: (...at) => timeline.playing && scene.grab(...at),
+    drag: (...at) => scene.drag(...at),
+    release: () => scene.release(),
+  });
 }
 
 // Figure 1: one spring, one constraint (the exercises).

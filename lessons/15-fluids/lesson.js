@@ -1,6 +1,6 @@
 // Lesson 15: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/fluid/, src/figures/fluid.rs), which also says what each figure draws and plots.
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar, timeSweepStep } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar, timeSweepStep, dragInCanvas } from '../../www/lesson.js';
 import { KernelsScene, DensityScene, DamBreakScene, SplashScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -75,45 +75,19 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     gui.onChange(apply);
     apply();
 
-    // Dragging the particle: capture-phase listeners on the stage run before the canvas's orbit
-    // controls and take the event only when the pointer is on the particle (Rust decides).
-    const canvas = document.querySelector('#fig-density .stage canvas');
-    const stage = canvas.parentElement;
-    const local = (e) => {
-      const r = canvas.getBoundingClientRect();
-      return [e.clientX - r.left, e.clientY - r.top, r.width, r.height];
-    };
-    let dragging = null;
-    stage.addEventListener('pointerdown', (e) => {
-      if (e.target !== canvas || e.button !== 0 || e.shiftKey) return;
-      if (!scene.hitsProbe(...local(e))) return;
-      e.stopPropagation();
-      dragging = e.pointerId;
-      canvas.setPointerCapture(e.pointerId);
-      canvas.classList.add('dragging');
-    }, { capture: true });
-    stage.addEventListener('pointermove', (e) => {
-      if (dragging === null) {
-        if (e.target === canvas) canvas.classList.toggle('over-target', scene.hitsProbe(...local(e)));
-        return;
-      }
-      if (e.pointerId !== dragging) return;
-      e.stopPropagation();
-      scene.dragProbe(...local(e));
-      // Array.from: a Float32Array's own map would keep the rounded numbers as f32.
-      [p.x, p.y] = Array.from(scene.probe(), (v) => Math.round(v * 1000) / 1000);
-      xs.updateDisplay();
-      ys.updateDisplay();
-      terms.setData(columns(scene.terms(), 2));
-    }, { capture: true });
-    const release = (e) => {
-      if (e.pointerId !== dragging) return;
-      e.stopPropagation();
-      dragging = null;
-      canvas.classList.remove('dragging');
-    };
-    stage.addEventListener('pointerup', release, { capture: true });
-    stage.addEventListener('pointercancel', release, { capture: true });
+    // Dragging the particle with the mouse (the canvas's orbit controls get every other press).
+    dragInCanvas(document.querySelector('#fig-density .stage canvas'), {
+      grab: (...at) => scene.hitsProbe(...at),
+      hover: (...at) => scene.hitsProbe(...at),
+      drag: (...at) => {
+        scene.dragProbe(...at);
+        // Array.from: a Float32Array's own map would keep the rounded numbers as f32.
+        [p.x, p.y] = Array.from(scene.probe(), (v) => Math.round(v * 1000) / 1000);
+        xs.updateDisplay();
+        ys.updateDisplay();
+        terms.setData(columns(scene.terms(), 2));
+      },
+    });
 
     const note = document.getElementById('density-note');
     lesson.onFrame(() => {
