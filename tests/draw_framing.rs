@@ -247,8 +247,7 @@ fn the_squash_figure_frames_its_balls_closely() {
 
 /// Lesson 03 Figure 1 declares a sphere of 0.95 m around each aeroplane: whatever the keys,
 /// every path it draws stays within it, and from the page's orbit a plane's 0.9 m reach is at
-/// least 88 px on the 760 × 420 canvas (80 px when the camera fitted a box around the same
-/// reach).
+/// least 88 px on the 760 × 420 canvas (a box around the same reach gives 80 px).
 #[test]
 fn the_aeroplanes_fit_their_reach_and_fill_more_of_the_view() {
     use inbetween::draw::Frame;

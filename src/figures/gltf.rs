@@ -39,8 +39,8 @@ const MAX_DOTS: usize = 2_000;
 const BONE_PX: f32 = 3.0;
 /// The radius of a bind-pose dot, as a fraction of the character's size: a plain grey disc (up to
 /// two thousand of them lie close together, where outlined markers would read as black rings),
-/// about 6 px across when the character fills a 420 px canvas (at 0.004 they were 2 to 3 px: grey
-/// specks the caption's "grey dots" could not be found by).
+/// about 6 px across when the character fills a 420 px canvas, large enough to find the
+/// caption's "grey dots" by.
 const DOT_RADIUS: f32 = 0.009;
 
 /// What is loaded.
