@@ -212,7 +212,7 @@ fn axes_are_wide_strokes_in_the_axis_colours() {
         assert_eq!(s.color[..3], color.to_array());
         assert_eq!(s.a, [1.0, 2.0, 3.0]);
         assert!((Vec3::from(s.b).distance(Vec3::from(s.a)) - 0.5).abs() < 1e-6);
-        // Over the grid's centre lines at the same depth, as before.
+        // Drawn over the grid's centre lines, which lie at the same depth (the overlay bias).
         assert_eq!(s.depth_bias, OVERLAY_BIAS);
     }
     // Their quads are AXIS_PX CSS pixels wide on screen, at both page sizes.

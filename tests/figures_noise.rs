@@ -963,7 +963,7 @@ fn a_new_quiz_round_regenerates_its_terrains_once() {
 
 #[test]
 fn the_fractals_figure_declares_a_view_that_holds_both_shapes() {
-    // Without a declared view a narrow canvas cut the snowflake's left and the triangle's right.
+    // Without a declared view a narrow canvas would cut the snowflake's left and the triangle's right.
     let (lo, hi) = Fractals::view_box();
     let mut s = Fractals::new();
     s.set_show_previous(true);

@@ -171,38 +171,44 @@ fn a_fluid_at_rest_without_gravity_stays_at_rest_for_1000_steps() {
     // rest density) and PBF without s_corr (which pushes neighbours apart, so without gravity it
     // spreads a fluid out). In SPH no particle moves a fifth of a spacing; PBF takes the start's
     // 1 % jitter out of the constraints it compresses, and no particle moves a whole spacing.
-    for (method, bound) in [(Method::Sph, 0.2), (Method::Pbf, 1.0)] {
-        for dim in [Dim::Two, Dim::Three] {
-            let mut params = if dim == Dim::Two {
-                FluidParams::default_2d(method)
-            } else {
-                FluidParams::default_3d(method)
-            };
-            params.gravity = Vec3::ZERO;
-            params.s_corr = 0.0;
-            let count = if dim == Dim::Two { 1000 } else { 1500 };
-            // About 23 neighbours in 2D and 65 in 3D, where the lattice sum is within 1 % of ρ₀.
-            let ratio = if dim == Dim::Two { 2.7 } else { 2.5 };
-            params.h = ratio * spacing_for(dim, Scene::DamBreak, count);
-            let mut fluid = Fluid::new(params, Scene::DamBreak, count, 1).unwrap();
-            let start = fluid.positions.clone();
-            for _ in 0..1000 {
-                fluid.step();
-            }
-            let moved = fluid
-                .positions
-                .iter()
-                .zip(&start)
-                .map(|(a, b)| (*a - *b).length())
-                .fold(0.0, f32::max);
-            assert!(fluid.exploded().is_none());
-            assert!(
-                moved < bound * fluid.spacing,
-                "{method:?} {dim:?}: moved {} spacings",
-                moved / fluid.spacing
-            );
+    // The four runs are independent: each on its own thread (a second core, where free, halves
+    // the test's time).
+    let cases = [Method::Sph, Method::Pbf].map(|m| [Dim::Two, Dim::Three].map(|d| (m, d)));
+    std::thread::scope(|s| {
+        for (method, dim) in cases.into_iter().flatten() {
+            let bound = if method == Method::Sph { 0.2 } else { 1.0 };
+            s.spawn(move || {
+                let mut params = if dim == Dim::Two {
+                    FluidParams::default_2d(method)
+                } else {
+                    FluidParams::default_3d(method)
+                };
+                params.gravity = Vec3::ZERO;
+                params.s_corr = 0.0;
+                let count = if dim == Dim::Two { 1000 } else { 1500 };
+                // About 23 neighbours in 2D and 65 in 3D, where the lattice sum is within 1 % of ρ₀.
+                let ratio = if dim == Dim::Two { 2.7 } else { 2.5 };
+                params.h = ratio * spacing_for(dim, Scene::DamBreak, count);
+                let mut fluid = Fluid::new(params, Scene::DamBreak, count, 1).unwrap();
+                let start = fluid.positions.clone();
+                for _ in 0..1000 {
+                    fluid.step();
+                }
+                let moved = fluid
+                    .positions
+                    .iter()
+                    .zip(&start)
+                    .map(|(a, b)| (*a - *b).length())
+                    .fold(0.0, f32::max);
+                assert!(fluid.exploded().is_none());
+                assert!(
+                    moved < bound * fluid.spacing,
+                    "{method:?} {dim:?}: moved {} spacings",
+                    moved / fluid.spacing
+                );
+            });
         }
-    }
+    });
 }
 
 #[test]

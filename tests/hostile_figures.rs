@@ -245,7 +245,7 @@ fn a_rejected_key_count_keeps_the_clips() {
     assert_ne!(f.key_times(), keys);
 }
 
-// Counts that were rounded or truncated: each is now an error, and the figure is as it was.
+// A fractional count is an error, never rounded or truncated, and the figure is left as it was.
 
 #[test]
 fn a_fractional_substep_count_is_rejected_not_rounded() {

@@ -741,7 +741,7 @@ pub fn area_curves(
             out.push(a_dqs);
         }
     }
-    // Reorder each row to [deg, lbs bend, dqs bend, lbs twist, dqs twist] (already in order).
+    // Each row: [deg, lbs bend, dqs bend, lbs twist, dqs twist].
     Ok(out)
 }
 
@@ -1058,8 +1058,8 @@ impl HumanFigure {
         self.overlay(frame, "on the CPU")
     }
 
-    /// The character: from code here; a glTF importer would build the same
-    /// [`SkinnedCharacter`] and hand it to [`HumanFigure::with_character`].
+    /// The character, built in code here; any other [`SkinnedCharacter`] can be shown through
+    /// [`HumanFigure::with_character`].
     pub fn character(&self) -> &SkinnedCharacter {
         &self.character
     }

@@ -1,7 +1,7 @@
 // Launching Debian's Chromium with the flag sets from ../shared/TOOLCHAIN.md, one per backend.
 import { chromium } from 'playwright-core';
 import { before, after } from 'node:test';
-import { existsSync, mkdtempSync } from 'node:fs';
+import { existsSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
@@ -71,15 +71,27 @@ export const PROFILES = {
   none: [...BASE, '--disable-3d-apis', '--disable-webgl', '--disable-gpu'],
 };
 
-/** A persistent Chromium context with the flags of `profile` (webgl2, webgpu or none). */
+/**
+ * A persistent Chromium context with the flags of `profile` (webgl2, webgpu or none). Its profile
+ * folder (a temporary one) is removed when the context closes.
+ */
 export async function launch(profile) {
   const dir = mkdtempSync(join(tmpdir(), `inbetween-${profile}-`));
-  return chromium.launchPersistentContext(dir, {
+  const context = await chromium.launchPersistentContext(dir, {
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     headless: true,
     args: PROFILES[profile],
     viewport: { width: 1100, height: 900 },
   });
+  const close = context.close.bind(context);
+  context.close = async (...args) => {
+    await close(...args);
+    // The browser has exited by then; a file it left behind only leaves the folder in /tmp.
+    try {
+      rmSync(dir, { recursive: true, force: true, maxRetries: 3 });
+    } catch { /* kept */ }
+  };
+  return context;
 }
 
 /**

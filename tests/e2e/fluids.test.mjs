@@ -10,6 +10,13 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse', asyn
   const context = await launch('webgl2');
   try {
     const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgl2`, { width: 1280, height: 900 });
+    // The other figures' timelines pause: their fluids step every frame while they play, and
+    // this test waits on frames and mouse moves only.
+    await page.evaluate(() => {
+      for (const button of document.querySelectorAll('.timeline .play')) {
+        if (button.textContent.includes('pause')) button.click();
+      }
+    });
     const canvas = page.locator('#fig-density .stage canvas');
     await canvas.scrollIntoViewIfNeeded();
     await frames(page, 4);
