@@ -11,7 +11,9 @@
 //! The two libraries' 2D noises are different functions (ours is Perlin's 3D reference on z = 0,
 //! theirs a 2D variant); both cost one hash and four gradient ramps per sample.
 //! Run: `cargo bench --bench perlin -- --warm-up-time 1 --measurement-time 2`.
-//! After criterion's report, the ratios are printed from a short separate timing.
+//! After criterion's report, the ratios are printed from a short separate timing, then the
+//! scattered-point batches and the fast fractal sums against simdnoise's SSE2 functions and
+//! FastNoise Lite, interleaved (`cargo bench --bench perlin -- --batch-only`: those alone).
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -357,11 +359,252 @@ fn print_ratios(x: &Inputs) {
     );
 }
 
+/// Each kernel's median time over `rounds` rounds, the kernels interleaved within a round (so a
+/// change of the machine's load falls on all of them alike), in seconds.
+fn interleaved(rounds: usize, kernels: &mut [(&str, &mut dyn FnMut())]) -> Vec<f64> {
+    let mut times = vec![Vec::with_capacity(rounds); kernels.len()];
+    for _ in 0..rounds {
+        for (k, (_, f)) in kernels.iter_mut().enumerate() {
+            let start = Instant::now();
+            f();
+            times[k].push(start.elapsed().as_secs_f64());
+        }
+    }
+    times
+        .into_iter()
+        .map(|mut t| {
+            t.sort_by(f64::total_cmp);
+            t[t.len() / 2]
+        })
+        .collect()
+}
+
+/// Prints a group of kernels timed by [`interleaved`]: each one's rate and its time relative to
+/// the first (the group's reference).
+fn print_group(title: &str, points: usize, kernels: &mut [(&str, &mut dyn FnMut())]) {
+    let t = interleaved(11, kernels);
+    println!("{title} ({points} points, median of 11 interleaved rounds):");
+    for ((name, _), &tk) in kernels.iter().zip(&t) {
+        println!(
+            "  {name:<58} {:>7.1} M points/s  {:>5.2}x the first's speed",
+            points as f64 / tk / 1e6,
+            t[0] / tk
+        );
+    }
+}
+
+/// The scattered-point batches and the fast fractal sums against simdnoise (its SSE2 functions:
+/// four points a call, the width our kernels have natively at the x86-64 baseline and in wasm)
+/// and FastNoise Lite (one point a call, as its users call it). simdnoise computes simplex noise
+/// and FastNoise Lite here Perlin noise, each with its own tables: the same work per point in
+/// kind, not the same function.
+fn print_batch_ratios(x: &Inputs) {
+    let split = |pts: &[[f32; 3]], c: usize| pts.iter().map(|p| p[c]).collect::<Vec<f32>>();
+    let (xs, ys, zs) = (split(&x.s3f, 0), split(&x.s3f, 1), split(&x.s3f, 2));
+    let (xs2, ys2): (Vec<f32>, Vec<f32>) = x.s2f.iter().map(|p| (p[0], p[1])).unzip();
+    let n = xs.len();
+    let out = std::cell::RefCell::new(vec![0.0f32; n]);
+    let sink = std::cell::Cell::new(0.0f32);
+    let keep = |v: f32| sink.set(sink.get() + v);
+    let fast = {
+        let mut f = fastnoise_lite::FastNoiseLite::new();
+        f.set_noise_type(Some(fastnoise_lite::NoiseType::Perlin));
+        f.set_frequency(Some(1.0));
+        f
+    };
+    print_group(
+        "Perlin 3D at scattered points",
+        n,
+        &mut [
+            (
+                "inbetween Permutation::noise3, one point a call",
+                &mut || keep(ours3(&x.perm, black_box(&x.s3f))),
+            ),
+            ("inbetween Permutation::noise3_batch", &mut || {
+                let mut out = out.borrow_mut();
+                x.perm.noise3_batch(black_box(&xs), &ys, &zs, &mut out);
+                keep(out[n / 2]);
+            }),
+            (
+                "FastNoise Lite 1.1 Perlin 3D, one point a call",
+                &mut || {
+                    keep(
+                        x.s3f
+                            .iter()
+                            .map(|p| fast.get_noise_3d(p[0], p[1], p[2]))
+                            .sum::<f32>(),
+                    )
+                },
+            ),
+            #[cfg(target_arch = "x86_64")]
+            (
+                "simdnoise 3.1 sse2::simplex_3d, 4 points a call",
+                &mut || keep(simd3(black_box(&xs), &ys, &zs, &mut out.borrow_mut())),
+            ),
+        ],
+    );
+    print_group(
+        "Perlin 2D at scattered points",
+        n,
+        &mut [
+            (
+                "inbetween Permutation::noise2, one point a call",
+                &mut || keep(ours2(&x.perm, black_box(&x.s2f))),
+            ),
+            ("inbetween Permutation::noise2_batch", &mut || {
+                let mut out = out.borrow_mut();
+                x.perm.noise2_batch(black_box(&xs2), &ys2, &mut out);
+                keep(out[n / 2]);
+            }),
+            (
+                "FastNoise Lite 1.1 Perlin 2D, one point a call",
+                &mut || {
+                    keep(
+                        x.s2f
+                            .iter()
+                            .map(|p| fast.get_noise_2d(p[0], p[1]))
+                            .sum::<f32>(),
+                    )
+                },
+            ),
+            #[cfg(target_arch = "x86_64")]
+            (
+                "simdnoise 3.1 sse2::simplex_2d, 4 points a call",
+                &mut || keep(simd2(black_box(&xs2), &ys2, &mut out.borrow_mut())),
+            ),
+        ],
+    );
+    // 8-octave fBm (α = ½, ω = 2) on the 512² grid, row by row.
+    let side = FBM_SIDE;
+    let step = 4.0 / side as f32;
+    let row: Vec<f32> = (0..side).map(|i| i as f32 * step).collect();
+    let (gx, gy): (Vec<f32>, Vec<f32>) = (0..side * side)
+        .map(|k| ((k % side) as f32 * step, (k / side) as f32 * step))
+        .unzip();
+    let grid = std::cell::RefCell::new(vec![0.0f32; side * side]);
+    let fbm = {
+        let mut f = fastnoise_lite::FastNoiseLite::new();
+        f.set_noise_type(Some(fastnoise_lite::NoiseType::Perlin));
+        f.set_frequency(Some(1.0));
+        f.set_fractal_type(Some(fastnoise_lite::FractalType::FBm));
+        f.set_fractal_octaves(Some(8));
+        f.set_fractal_lacunarity(Some(2.0));
+        f.set_fractal_gain(Some(0.5));
+        f
+    };
+    print_group(
+        "fBm, 8 octaves of 2D noise, 512 x 512 grid",
+        side * side,
+        &mut [
+            (
+                "FastNoise Lite 1.1 FBm (Perlin), one point a call",
+                &mut || {
+                    let mut grid = grid.borrow_mut();
+                    for (k, g) in grid.iter_mut().enumerate() {
+                        *g = fbm.get_noise_2d(gx[k], gy[k]);
+                    }
+                    keep(grid[side]);
+                },
+            ),
+            ("inbetween Fractal::sum2, one point a call", &mut || {
+                let mut grid = grid.borrow_mut();
+                ours_fbm(&x.perm, &mut grid);
+                keep(grid[side]);
+            }),
+            ("inbetween Fractal::sum2_row, one row a call", &mut || {
+                let mut grid = grid.borrow_mut();
+                for (j, g) in grid.chunks_mut(side).enumerate() {
+                    OURS_FBM.sum2_row(&x.perm, black_box(&row), j as f32 * step, g);
+                }
+                keep(grid[side]);
+            }),
+            (
+                "inbetween Fractal::sum2_batch, the grid as scattered points",
+                &mut || {
+                    let mut grid = grid.borrow_mut();
+                    OURS_FBM.sum2_batch(&x.perm, black_box(&gx), &gy, &mut grid);
+                    keep(grid[side]);
+                },
+            ),
+            #[cfg(target_arch = "x86_64")]
+            ("simdnoise 3.1 sse2::fbm_2d, 4 points a call", &mut || {
+                keep(simd_fbm2(black_box(&gx), &gy, &mut grid.borrow_mut()))
+            }),
+        ],
+    );
+    black_box(sink.get());
+}
+
+/// simdnoise's SSE2 simplex noise at the points, four at a time; returns one value (kept).
+#[cfg(target_arch = "x86_64")]
+fn simd3(xs: &[f32], ys: &[f32], zs: &[f32], out: &mut [f32]) -> f32 {
+    use std::arch::x86_64::{_mm_loadu_ps, _mm_storeu_ps};
+    for k in (0..xs.len() / 4 * 4).step_by(4) {
+        // SAFETY: SSE2 is part of the x86-64 baseline; each load and store reads or writes four
+        // f32s at k..k + 4, inside the slices.
+        unsafe {
+            let (x, y, z) = (
+                _mm_loadu_ps(xs.as_ptr().add(k)),
+                _mm_loadu_ps(ys.as_ptr().add(k)),
+                _mm_loadu_ps(zs.as_ptr().add(k)),
+            );
+            _mm_storeu_ps(
+                out.as_mut_ptr().add(k),
+                simdnoise::sse2::simplex_3d(x, y, z, 0),
+            );
+        }
+    }
+    out[xs.len() / 2]
+}
+
+/// As [`simd3`], in 2D.
+#[cfg(target_arch = "x86_64")]
+fn simd2(xs: &[f32], ys: &[f32], out: &mut [f32]) -> f32 {
+    use std::arch::x86_64::{_mm_loadu_ps, _mm_storeu_ps};
+    for k in (0..xs.len() / 4 * 4).step_by(4) {
+        // SAFETY: as in `simd3`.
+        unsafe {
+            let (x, y) = (
+                _mm_loadu_ps(xs.as_ptr().add(k)),
+                _mm_loadu_ps(ys.as_ptr().add(k)),
+            );
+            _mm_storeu_ps(
+                out.as_mut_ptr().add(k),
+                simdnoise::sse2::simplex_2d(x, y, 0),
+            );
+        }
+    }
+    out[xs.len() / 2]
+}
+
+/// simdnoise's SSE2 fBm (8 octaves, gain ½, lacunarity 2) at the points, four at a time.
+#[cfg(target_arch = "x86_64")]
+fn simd_fbm2(xs: &[f32], ys: &[f32], out: &mut [f32]) -> f32 {
+    use std::arch::x86_64::{_mm_loadu_ps, _mm_set1_ps, _mm_storeu_ps};
+    for k in (0..xs.len() / 4 * 4).step_by(4) {
+        // SAFETY: as in `simd3`.
+        unsafe {
+            let (x, y) = (
+                _mm_loadu_ps(xs.as_ptr().add(k)),
+                _mm_loadu_ps(ys.as_ptr().add(k)),
+            );
+            let v = simdnoise::sse2::fbm_2d(x, y, _mm_set1_ps(2.0), _mm_set1_ps(0.5), 8, 0);
+            _mm_storeu_ps(out.as_mut_ptr().add(k), v);
+        }
+    }
+    out[xs.len() / 2]
+}
+
 fn main() {
     let x = inputs();
+    if std::env::args().any(|a| a == "--batch-only") {
+        print_batch_ratios(&x);
+        return;
+    }
     let mut c = Criterion::default().configure_from_args();
     bench_samples(&mut c, &x);
     bench_fbm(&mut c, &x);
     c.final_summary();
     print_ratios(&x);
+    print_batch_ratios(&x);
 }

@@ -19,11 +19,19 @@ const cases = args.length ? args : [
 const wasm = await import(pathToFileURL(`${dir}/pkg/bench.js`).href);
 await wasm.default({ module_or_path: readFileSync(`${dir}/pkg/bench_bg.wasm`) });
 const kernels = {
-  skinning: wasm.benchSkinning, boids: wasm.benchBoids, terrain: wasm.benchTerrain,
+  skinning: wasm.benchSkinning, boids: wasm.benchBoids, terrain: wasm.benchTerrain, noise: wasm.benchNoise,
   // The fluid's kernels take the dimension too: fluid2 and fluid3 (size = particles).
   fluid2: (kernel, size, n) => wasm.benchFluid(kernel, 2, size, n),
   fluid3: (kernel, size, n) => wasm.benchFluid(kernel, 3, size, n),
+  // The bench page's JavaScript noise baselines (www/noise-loop.js) on the wasm's own points:
+  // kernels js_perlin_loop and js_simplex_noise_npm (size = points).
+  noisejs: (kernel, size, n) => {
+    const loop = kernel === 'js_perlin_loop' ? noiseLoop.perlinLoop : noiseLoop.simplexLoop;
+    loop(wasm.noiseBenchInput(size), new Float64Array(size), n);
+  },
 };
+const noiseLoop = await import(pathToFileURL(`${dir}/www/noise-loop.js`).href);
+noiseLoop.setPermutation(wasm.perlinTable());
 
 function cpuMs(f) {
   const start = process.cpuUsage();

@@ -736,3 +736,136 @@ fn inverted_ridge_and_marble_terrains_follow_the_lessons_formulas() {
         "water in the lowest parts"
     );
 }
+
+/// Scattered points for the batch kernels: negative, large, on lattice lines and cell borders,
+/// at lengths that are not multiples of the batch width, and one longer than a sum's chunk.
+fn scattered_cases() -> Vec<Vec<[f32; 3]>> {
+    let mut rng = inbetween::fixtures::Rng::new(5);
+    let mut cases: Vec<Vec<[f32; 3]>> = [0usize, 1, 7, 8, 9, 31, 600]
+        .iter()
+        .map(|&n| {
+            (0..n)
+                .map(|_| std::array::from_fn(|_| rng.range(-300.0, 300.0)))
+                .collect()
+        })
+        .collect();
+    cases.push(
+        (0..40)
+            .map(|i| {
+                let t = i as f32 * 0.5 - 10.0;
+                [t, t.floor(), -t]
+            })
+            .collect(),
+    );
+    cases.push(vec![
+        [1e6, -1e6, 0.25],
+        [-0.0, 255.999, 256.0],
+        [1e-30, -1e-30, 3.5],
+    ]);
+    cases
+}
+
+#[test]
+fn the_batch_kernels_equal_the_per_point_noise() {
+    for seed in [None, Some(3)] {
+        let perm = seed.map_or_else(Permutation::perlin, Permutation::seeded);
+        for points in scattered_cases() {
+            let [xs, ys, zs]: [Vec<f32>; 3] =
+                std::array::from_fn(|c| points.iter().map(|p| p[c]).collect());
+            let n = points.len();
+            // One slot more than the points: the shortest length wins, the extra is untouched.
+            let (mut out2, mut out3) = (vec![7.0; n + 1], vec![7.0; n + 1]);
+            perm.noise2_batch(&xs, &ys, &mut out2);
+            perm.noise3_batch(&xs, &ys, &zs, &mut out3);
+            assert_eq!((out2[n], out3[n]), (7.0, 7.0));
+            for k in 0..n {
+                let ([x, y, z], at) = (points[k], k);
+                assert_eq!(
+                    out2[at].to_bits(),
+                    perm.noise2(x, y).to_bits(),
+                    "2D at {x} {y}"
+                );
+                // 3D: equal as numbers (the batch may give -0 for 0 at a lattice point).
+                assert_eq!(out3[at], perm.noise3(x, y, z), "3D at {x} {y} {z}");
+            }
+        }
+    }
+    // A NaN gives what the per-point noise gives there (NaN), and no panic.
+    let perm = Permutation::perlin();
+    let mut out = [0.0; 3];
+    let (xs, ys, zs) = ([f32::NAN, 0.5, 0.5], [0.5, f32::NAN, 0.5], [0.5, 0.5, 0.25]);
+    perm.noise3_batch(&xs, &ys, &zs, &mut out);
+    for k in 0..3 {
+        assert_eq!(
+            out[k].is_nan(),
+            perm.noise3(xs[k], ys[k], zs[k]).is_nan(),
+            "{k}"
+        );
+    }
+    assert!(out[0].is_nan() && !out[2].is_nan());
+}
+
+#[test]
+fn the_batch_fractal_sums_equal_sum2_and_sum3() {
+    let perm = Permutation::seeded(9);
+    for fractal in [
+        Fractal::COURSE,
+        Fractal {
+            n: 7,
+            alpha: 0.5,
+            omega: 2.0,
+        },
+        Fractal {
+            n: 0,
+            alpha: 1.0,
+            omega: 1.0,
+        },
+    ] {
+        for points in scattered_cases() {
+            let points: Vec<[f32; 3]> = points.iter().map(|p| p.map(|v| v * 0.01)).collect();
+            let [xs, ys, zs]: [Vec<f32>; 3] =
+                std::array::from_fn(|c| points.iter().map(|p| p[c]).collect());
+            let n = points.len();
+            let (mut g2, mut g3) = (vec![0.0; n], vec![0.0; n]);
+            fractal.sum2_batch(&perm, &xs, &ys, &mut g2);
+            fractal.sum3_batch(&perm, &xs, &ys, &zs, &mut g3);
+            for (k, &[x, y, z]) in points.iter().enumerate() {
+                assert_eq!(g2[k].to_bits(), fractal.sum2(&perm, x, y).to_bits());
+                let p = Vec3::new(x, y, z);
+                assert_eq!(g3[k], fractal.sum3(&perm, p));
+            }
+        }
+    }
+}
+
+#[test]
+fn the_row_fractal_sums_match_sum2_and_sum3() {
+    let perm = Permutation::perlin();
+    let fractal = Fractal {
+        n: 7,
+        alpha: 0.5,
+        omega: 2.0,
+    };
+    // A sorted row longer than a chunk, an unsorted one, and a row on lattice lines.
+    let mut rng = inbetween::fixtures::Rng::new(8);
+    let sorted: Vec<f32> = (0..700).map(|i| i as f32 * 0.0173 - 3.0).collect();
+    let unsorted: Vec<f32> = (0..300).map(|_| rng.range(-40.0, 40.0)).collect();
+    let lattice: Vec<f32> = (0..64).map(|i| i as f32 * 0.25).collect();
+    for (xs, y, z) in [
+        (sorted, 0.37, -1.2),
+        (unsorted, -5.5, 2.0),
+        (lattice, 2.0, 3.0),
+    ] {
+        let n = xs.len();
+        let (mut g2, mut g3) = (vec![0.0; n], vec![0.0; n]);
+        fractal.sum2_row(&perm, &xs, y, &mut g2);
+        fractal.sum3_row(&perm, &xs, y, z, &mut g3);
+        for (k, &x) in xs.iter().enumerate() {
+            // Each octave's row agrees with the point's noise to about 2e-6; the weights sum to 2.
+            let e2 = fractal.sum2(&perm, x, y);
+            let e3 = fractal.sum3(&perm, Vec3::new(x, y, z));
+            assert!((g2[k] - e2).abs() < 1e-5, "2D at {x}: {} vs {e2}", g2[k]);
+            assert!((g3[k] - e3).abs() < 1e-5, "3D at {x}: {} vs {e3}", g3[k]);
+        }
+    }
+}

@@ -12,6 +12,7 @@ import init, * as wasm from '../pkg/bench.js';
 import initFigures, * as figures from '../pkg/inbetween.js';
 import './devloop.js';
 import { skinLoop, skinningInput } from './skin-loop.js';
+import { perlin3, perlinLoop, setPermutation, simplexLoop } from './noise-loop.js';
 
 /**
  * A suite: `run(kernel, size, iterations)` returns milliseconds for `iterations` passes over `size`
@@ -129,10 +130,19 @@ export const SUITES = [
   {
     name: 'terrain 512 × 512, 8 octaves (lesson 05)',
     run: (kernel, size, iterations) => wasm.benchTerrain(kernel, size, iterations),
-    kernels: ['fbm8_values', 'terrain_with_normals'],
+    kernels: ['fbm8_values', 'fbm8_rows', 'fbm8_batch', 'terrain_with_normals'],
     baseline: 'fbm8_values',
     size: 512 * 512,
     unit: 'vertex',
+  },
+  {
+    name: 'Perlin 3D noise at 65,536 scattered points (lesson 05)',
+    run: (kernel, size, iterations) => (kernel.startsWith('js_')
+      ? jsNoise(kernel, size, iterations) : wasm.benchNoise(kernel, size, iterations)),
+    kernels: ['js_perlin_loop', 'js_simplex_noise_npm', 'noise3_per_point', 'noise3_batch'],
+    baseline: 'js_perlin_loop',
+    size: 65_536,
+    unit: 'point',
   },
   {
     name: 'skinning: 100k vertices, 4 influences, 60 joints, positions and normals (lesson 09)',
@@ -157,6 +167,30 @@ function jsSkinning(vertices, iterations) {
   const input = jsSkinInputs.get(vertices);
   const start = performance.now();
   skinLoop(input, vertices, iterations);
+  return performance.now() - start;
+}
+
+/**
+ * The JavaScript noise kernels (www/noise-loop.js) on the wasm bench's own points: Perlin's
+ * reference in plain JavaScript, or the simplex-noise package. Returns milliseconds for
+ * `iterations` passes.
+ */
+const jsNoiseInputs = new Map();
+function jsNoise(kernel, points, iterations) {
+  if (!jsNoiseInputs.has(points)) {
+    setPermutation(wasm.perlinTable());
+    const xyz = wasm.noiseBenchInput(points);
+    // The JavaScript loop computes the wasm's function (in doubles): checked on the first points.
+    const few = xyz.subarray(0, 3 * Math.min(points, 1000));
+    const reference = wasm.perlinNoise3(few);
+    const worst = reference.reduce((m, v, k) => Math.max(m, Math.abs(v - perlin3(few[3 * k], few[3 * k + 1], few[3 * k + 2]))), 0);
+    if (!(worst < 1e-5)) throw new Error(`the JavaScript Perlin loop differs from the wasm noise3 by ${worst}`);
+    jsNoiseInputs.set(points, { xyz, out: new Float64Array(points) });
+  }
+  const { xyz, out } = jsNoiseInputs.get(points);
+  const loop = kernel === 'js_perlin_loop' ? perlinLoop : simplexLoop;
+  const start = performance.now();
+  loop(xyz, out, iterations);
   return performance.now() - start;
 }
 

@@ -545,6 +545,152 @@ impl Permutation {
     }
 }
 
+/// How many scattered points the batch kernels ([`Permutation::noise2_batch`],
+/// [`Permutation::noise3_batch`]) take at a time: the lattice work of a block is done point by
+/// point (hashes and gradient lookups do not vectorise), then the blend of every point of the
+/// block in one loop without branches over arrays of this length, which the compiler turns into
+/// SIMD (two SSE2 or simd128 vectors of four).
+pub const BATCH_LANES: usize = 8;
+
+impl Permutation {
+    /// [`Permutation::noise2`] at `(xs[k], ys[k])` for every `k`, into `out[k]` (the shortest
+    /// length wins): the fast path for scattered points, [`BATCH_LANES`] points at a time (in
+    /// wasm, point by point: see the body). Equal to `noise2` bit for bit: the same operations in
+    /// the same order.
+    pub fn noise2_batch(&self, xs: &[f32], ys: &[f32], out: &mut [f32]) {
+        let n = xs.len().min(ys.len()).min(out.len());
+        // In wasm the blocks cost more than they save in 2D (V8: 1.6 ms against 0.67 ms point
+        // by point for 65,536 points; in 3D the blocks win): there the points go one by one.
+        if cfg!(target_arch = "wasm32") {
+            for k in 0..n {
+                out[k] = self.noise2(xs[k], ys[k]);
+            }
+            return;
+        }
+        const L: usize = BATCH_LANES;
+        for start in (0..n).step_by(L) {
+            let m = (n - start).min(L);
+            // Per lane: the position in its cell and the x, y of the four corner gradients
+            // (order 00, 10, 01, 11). Unused lanes stay zero and are not copied out.
+            let mut f = [[0.0f32; L]; 2];
+            let mut g = [[[0.0f32; L]; 2]; 4];
+            for l in 0..m {
+                let (x, y) = (xs[start + l], ys[start + l]);
+                let (xi, yi) = (floor_i32(x), floor_i32(y));
+                f[0][l] = x - xi as f32;
+                f[1][l] = y - yi as f32;
+                let (xx, yy) = ((xi & 255) as usize, (yi & 255) as usize);
+                let a = self.at(xx) + yy;
+                let b = self.at(xx + 1) + yy;
+                // The hash of (i, j, 0), as noise2: p[p[p[i] + j] + 0].
+                let hashes = [self.at(a), self.at(b), self.at(a + 1), self.at(b + 1)];
+                for (c, h) in hashes.into_iter().enumerate() {
+                    let v = GRAD3[self.at(h) & 15];
+                    g[c][0][l] = v[0];
+                    g[c][1][l] = v[1];
+                }
+            }
+            let mut o = [0.0f32; L];
+            for l in 0..L {
+                let (x, y) = (f[0][l], f[1][l]);
+                let dot = |c: usize, dx: f32, dy: f32| g[c][0][l] * dx + g[c][1][l] * dy;
+                let (u, v) = (fade(x), fade(y));
+                o[l] = lerp(
+                    v,
+                    lerp(u, dot(0, x, y), dot(1, x - 1.0, y)),
+                    lerp(u, dot(2, x, y - 1.0), dot(3, x - 1.0, y - 1.0)),
+                );
+            }
+            out[start..start + m].copy_from_slice(&o[..m]);
+        }
+    }
+
+    /// [`Permutation::noise3`] at `(xs[k], ys[k], zs[k])` for every `k`, into `out[k]` (the
+    /// shortest length wins), as [`Permutation::noise2_batch`]: equal to `noise3` (as numbers:
+    /// where the noise is zero, at lattice points, the zero's sign may differ).
+    pub fn noise3_batch(&self, xs: &[f32], ys: &[f32], zs: &[f32], out: &mut [f32]) {
+        let n = xs.len().min(ys.len()).min(zs.len()).min(out.len());
+        const L: usize = BATCH_LANES;
+        for start in (0..n).step_by(L) {
+            let m = (n - start).min(L);
+            // The block's points (unused lanes zero), their cells and positions in them: loops
+            // without branches over whole arrays, which vectorise.
+            let mut p = [[0.0f32; L]; 3];
+            for (c, src) in [xs, ys, zs].into_iter().enumerate() {
+                p[c][..m].copy_from_slice(&src[start..start + m]);
+            }
+            let mut cell = [[0i32; L]; 3];
+            let mut f = [[0.0f32; L]; 3];
+            for c in 0..3 {
+                for l in 0..L {
+                    cell[c][l] = floor_i32(p[c][l]);
+                    f[c][l] = p[c][l] - cell[c][l] as f32;
+                }
+            }
+            // Per lane, the hashes of the eight corners, in the order 000, 100, 010, 110, 001,
+            // 101, 011, 111 (corner xyz): table lookups, one lane at a time. The gradients are
+            // picked from the hashes in the blend loop (selects, which vectorise; a table lookup
+            // per component would not).
+            let mut h = [[0u32; L]; 8];
+            for l in 0..m {
+                let (xx, yy, zz) = (
+                    (cell[0][l] & 255) as usize,
+                    (cell[1][l] & 255) as usize,
+                    (cell[2][l] & 255) as usize,
+                );
+                let a = self.at(xx) + yy;
+                let aa = self.at(a) + zz;
+                let ab = self.at(a + 1) + zz;
+                let b = self.at(xx + 1) + yy;
+                let ba = self.at(b) + zz;
+                let bb = self.at(b + 1) + zz;
+                let hashes = [aa, ba, ab, bb, aa + 1, ba + 1, ab + 1, bb + 1];
+                for (c, hc) in hashes.into_iter().enumerate() {
+                    h[c][l] = self.at(hc) as u32;
+                }
+            }
+            let mut o = [0.0f32; L];
+            for l in 0..L {
+                let (x, y, z) = (f[0][l], f[1][l], f[2][l]);
+                let dot = |c: usize, dx: f32, dy: f32, dz: f32| grad3_dot(h[c][l], dx, dy, dz);
+                let n000 = dot(0, x, y, z);
+                let n100 = dot(1, x - 1.0, y, z);
+                let n010 = dot(2, x, y - 1.0, z);
+                let n110 = dot(3, x - 1.0, y - 1.0, z);
+                let n001 = dot(4, x, y, z - 1.0);
+                let n101 = dot(5, x - 1.0, y, z - 1.0);
+                let n011 = dot(6, x, y - 1.0, z - 1.0);
+                let n111 = dot(7, x - 1.0, y - 1.0, z - 1.0);
+                let (u, v, w) = (fade(x), fade(y), fade(z));
+                o[l] = lerp(
+                    w,
+                    lerp(v, lerp(u, n000, n100), lerp(u, n010, n110)),
+                    lerp(v, lerp(u, n001, n101), lerp(u, n011, n111)),
+                );
+            }
+            out[start..start + m].copy_from_slice(&o[..m]);
+        }
+    }
+}
+
+/// `GRAD3[hash & 15] · (dx, dy, dz)` as the reference's `grad` computes it, with selects instead
+/// of a table (selects vectorise across points; see [`grad3_vector`] for the rule): `±u ± v`,
+/// u = dx or dy, v = dy, dx or dz. The same number as the table's dot product, which also adds
+/// the zero component's `0 · d`: only the sign of a zero result can differ.
+#[inline(always)]
+fn grad3_dot(hash: u32, dx: f32, dy: f32, dz: f32) -> f32 {
+    let h = hash & 15;
+    let u = if h < 8 { dx } else { dy };
+    let v = if h < 4 {
+        dy
+    } else if h == 12 || h == 14 {
+        dx
+    } else {
+        dz
+    };
+    (if h & 1 == 0 { u } else { -u }) + (if h & 2 == 0 { v } else { -v })
+}
+
 /// Splits `xs` into runs of consecutive entries in one lattice cell `[xi, xi + 1)` and calls
 /// `f(xi, run)` for each, in order (a NaN makes a run of its own).
 #[inline(always)]
