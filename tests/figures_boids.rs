@@ -1143,3 +1143,39 @@ fn the_rules_figure_shows_its_whole_grid_and_the_heading_under_the_arrows() {
         .unwrap();
     assert!(green > orange[0], "cohesion is drawn over the heading");
 }
+
+/// The three steering arrows start at the boid: the shorter of two lies above the longer (the
+/// camera looks down), so a short rule pointing along a long one is not hidden under it, at the
+/// defaults and at other places and headings.
+#[test]
+fn the_rules_figures_shorter_steering_arrows_lie_over_the_longer() {
+    use inbetween::draw::palette;
+    for (x, z, heading) in [(0.0, 0.0, 0.0), (0.3, 0.3, 45.0), (-0.4, 0.2, 180.0)] {
+        let mut scene = RulesFigure::new();
+        scene.set_position(x, z).unwrap();
+        scene.set_heading_deg(heading).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let shafts: Vec<(f32, f32)> = [palette::GREEN, palette::PINK, palette::RED]
+            .iter()
+            .filter_map(|c| {
+                frame
+                    .strokes
+                    .iter()
+                    .find(|s| s.color[..3] == c.to_array())
+                    .map(|s| {
+                        let (a, b) = (Vec3::from(s.a), Vec3::from(s.b));
+                        ((b - a).length(), a.y)
+                    })
+            })
+            .collect();
+        assert_eq!(shafts.len(), 3, "at ({x}, {z}), heading {heading}");
+        for a in &shafts {
+            for b in &shafts {
+                if a.0 < b.0 - 1e-4 {
+                    assert!(a.1 > b.1, "at ({x}, {z}), heading {heading}: {shafts:?}");
+                }
+            }
+        }
+    }
+}

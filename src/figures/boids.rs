@@ -1523,10 +1523,20 @@ impl RulesFigure {
             (al, palette::PINK, "alignment"),
             (se, palette::RED, "separation"),
         ];
+        // Shorter arrows over longer ones, each a centimetre higher above the plane (the camera
+        // looks down): a short rule that points along a long one still shows.
+        let drawn = |i: usize| arrows[i].0.clamp_length_max(ARROW_MAX_M).length();
+        let mut by_length = [0usize, 1, 2];
+        by_length.sort_by(|&a, &b| drawn(b).total_cmp(&drawn(a)));
+        let mut lift = [0.0f32; 3];
+        for (rank, &i) in by_length.iter().enumerate() {
+            lift[i] = 0.01 * (rank + 1) as f32;
+        }
         let mut tips = Vec::with_capacity(3);
-        for &(v, color, name) in &arrows {
-            let tip = self.boid + v.clamp_length_max(ARROW_MAX_M) + Vec3::Y * 0.01;
-            frame.arrow(self.boid + Vec3::Y * 0.01, tip, color, 0.12);
+        for (&(v, color, name), up) in arrows.iter().zip(lift) {
+            let up = Vec3::Y * up;
+            let tip = self.boid + v.clamp_length_max(ARROW_MAX_M) + up;
+            frame.arrow(self.boid + up, tip, color, 0.12);
             if v.length() > 1e-4 {
                 tips.push((tip, v, name, color));
             }
