@@ -1155,3 +1155,62 @@ fn a_panic_of_6_3_names_the_input_and_leaves_the_reference_pose() {
         "{note}"
     );
 }
+
+/// Figures 3 and 4 fill their canvases: the footprints are dots of at least 10 px, the
+/// single character's figure declares only its own lane, and with the camera fitted on the
+/// page's 760 × 420 canvas from the page's orbits the characters' body parts span on average
+/// at least 210 px (side by side) and 225 px (alone) from top to bottom over four times of the
+/// walk (197 px and about 180 px with a box around both lanes and the view from further
+/// round the front).
+#[test]
+fn the_locomotion_figures_fill_their_canvases() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::figures::blending::LANE_X;
+    let size = glam::Vec2::new(760.0, 420.0);
+    for (compare, orbit, least) in [
+        (true, [0.0, 0.8, 0.0, 5.0, 1.0, 0.45], 210.0),
+        (false, [0.0, 0.8, 0.0, 4.5, 1.3, 0.3], 225.0),
+    ] {
+        let mut l = LocomotionFigure::new();
+        l.set_compare(compare);
+        let (lo, hi) = l.speed_range();
+        l.set_speed(0.5 * (lo + hi)).unwrap();
+        let mut spans = Vec::new();
+        for t in [0.2, 1.0, 2.0, 3.0] {
+            let mut f = Frame::default();
+            l.draw(&mut f, t).unwrap();
+            let widest = f.keep_in_view.iter().map(|p| p.x.abs()).fold(0.0, f32::max);
+            if !compare {
+                assert!(widest < LANE_X, "one lane: {widest} m either side");
+            }
+            let dots: Vec<f32> = f
+                .markers
+                .iter()
+                .filter(|m| m.shape == inbetween::draw::MARKER_DOT)
+                .map(|m| m.size_px.abs())
+                .collect();
+            assert!(
+                !dots.is_empty() && dots.iter().all(|&s| s >= 10.0),
+                "{dots:?}"
+            );
+            let mut camera = OrbitCamera::from_view(orbit);
+            assert!(camera.fit(&f.fit_points(), size, FIT_PAD_PX));
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let ys: Vec<f32> = f
+                .meshes
+                .iter()
+                .map(|m| {
+                    project_to_canvas(view_proj, size, m.model.w_axis.truncate())
+                        .unwrap()
+                        .y
+                })
+                .collect();
+            let (top, bottom) = ys
+                .iter()
+                .fold((f32::MAX, f32::MIN), |(a, b), y| (a.min(*y), b.max(*y)));
+            spans.push(bottom - top);
+        }
+        let mean = spans.iter().sum::<f32>() / spans.len() as f32;
+        assert!(mean >= least, "compare {compare}: {spans:?} px");
+    }
+}

@@ -1,8 +1,5 @@
 //! Native tests of lesson 12's figures (src/figures/boids.rs).
 
-#[path = "support/canvas.rs"]
-mod canvas;
-use canvas::on_canvas;
 use glam::Vec3;
 use inbetween::boids;
 use inbetween::draw::Frame;
@@ -278,13 +275,21 @@ fn the_rules_figures_labels_never_overlap() {
     // a left label). At the page's camera and both canvas sizes (760 x 380 at 800 x 600, 650 x
     // 420 at 1600 x 1000), over the sliders' range, the three labels stay apart. At the arrows'
     // tips alone the short cohesion and alignment arrows put "alignment" on "cohesion" at the
-    // defaults.
+    // defaults. The cell size sets how much the camera takes in (it fits the grid), so the
+    // labels' sizes in metres.
+    // The camera as the viewer places it: the page's direction, fitted to what the figure
+    // declares (its grid) and its labels.
     let boxes = |frame: &Frame, view: [f32; 6], w: f32, h: f32| {
+        use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+        let size = glam::Vec2::new(w, h);
+        let mut camera = OrbitCamera::from_view(view);
+        assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+        let view_proj = camera.projection(w / h) * camera.view();
         frame
             .labels
             .iter()
             .map(|l| {
-                let s = on_canvas(view, w, h, l.anchor);
+                let s = project_to_canvas(view_proj, size, l.anchor).unwrap();
                 let width = 7.7 * l.text.chars().count() as f32;
                 let x0 = if l.left { s.x - 4.5 - width } else { s.x + 4.5 };
                 (x0, s.y - 9.0, x0 + width, s.y + 6.0)
@@ -296,8 +301,11 @@ fn the_rules_figures_labels_never_overlap() {
         for z in [-1.9f32, -1.15, 0.0, 0.8, 1.9] {
             for heading in (-4..=4).map(|k| 45.0 * k as f32) {
                 for radius in [0.6f32, 1.2, 2.4, 3.0] {
-                    for fov in [70.0f32, 270.0, 360.0] {
+                    for (fov, cell) in
+                        [(70.0f32, 1.9f32), (270.0, 1.2), (360.0, 0.25), (270.0, 1.5)]
+                    {
                         let mut scene = RulesFigure::new();
+                        scene.set_cell_size(cell).unwrap();
                         scene.set_position(x, z).unwrap();
                         scene.set_heading_deg(heading).unwrap();
                         scene.set_radius(radius).unwrap();
@@ -314,7 +322,7 @@ fn the_rules_figures_labels_never_overlap() {
                                         p.2 <= q.0 || q.2 <= p.0 || p.3 <= q.1 || q.3 <= p.1;
                                     assert!(
                                         apart,
-                                        "x {x}, z {z}, heading {heading}, radius {radius}, fov {fov}, {w} x {h}: {:?} and {:?} overlap: {p:?} {q:?}",
+                                        "x {x}, z {z}, heading {heading}, radius {radius}, fov {fov}, cell {cell}, {w} x {h}: {:?} and {:?} overlap: {p:?} {q:?}",
                                         frame.labels[i].text, frame.labels[j].text
                                     );
                                 }
@@ -322,7 +330,7 @@ fn the_rules_figures_labels_never_overlap() {
                             for r in &b {
                                 assert!(
                                     r.0 > 0.0 && r.2 < w && r.1 > 0.0 && r.3 < h,
-                                    "x {x}, z {z}, heading {heading}, radius {radius}, fov {fov}, {w} x {h}: a label leaves the canvas: {r:?}"
+                                    "x {x}, z {z}, heading {heading}, radius {radius}, fov {fov}, cell {cell}, {w} x {h}: a label leaves the canvas: {r:?}"
                                 );
                             }
                             checked += 1;
@@ -1079,5 +1087,95 @@ fn a_panic_of_12_1_is_named_once_against_the_input_that_caused_it() {
             plain.set_radius(0.2).unwrap();
             plain.rules()
         });
+    }
+}
+
+/// The rules figure declares its whole grid as its view: for every cell size (the last row and
+/// column reach up to 2 m past the boids' square), with the camera fitted from the page's
+/// direction, every grid line lies on the canvas at 800 × 600, 1600 × 1000 and the figure's
+/// own canvases. The heading is drawn wider than the steering arrows, which go over it.
+#[test]
+fn the_rules_figure_shows_its_whole_grid_and_the_heading_under_the_arrows() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::draw::{palette, ARROW_PX};
+    for cell in [0.25f32, 0.9, 1.2, 1.5, 1.9, 2.0] {
+        let mut scene = RulesFigure::new();
+        scene.set_cell_size(cell).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let (lo, hi) = scene.grid_box();
+        assert!(hi.x - lo.x >= 4.0 && hi.x - lo.x < 4.0 + cell + 1e-4);
+        for p in &frame.keep_in_view {
+            assert!(p.cmpge(lo - 1e-5).all() && p.cmple(hi + 1e-5).all(), "{p}");
+        }
+        for (w, h) in [
+            (800.0, 600.0),
+            (1600.0, 1000.0),
+            (760.0, 380.0),
+            (650.0, 420.0),
+        ] {
+            let size = glam::Vec2::new(w, h);
+            let mut camera = OrbitCamera::from_view(scene.view());
+            assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+            let view_proj = camera.projection(w / h) * camera.view();
+            let ends = frame.lines.iter().map(|v| Vec3::from(v.position));
+            for p in ends {
+                let s = project_to_canvas(view_proj, size, p).unwrap();
+                assert!(
+                    s.x >= 0.0 && s.y >= 0.0 && s.x <= w && s.y <= h,
+                    "cell {cell}, {w} x {h}: a grid line ends at {s} ({p})"
+                );
+            }
+        }
+    }
+    let mut frame = Frame::default();
+    RulesFigure::new().draw(&mut frame);
+    let orange: Vec<usize> = (0..frame.strokes.len())
+        .filter(|&i| frame.strokes[i].color[..3] == palette::ORANGE.to_array())
+        .filter(|&i| frame.strokes[i].width_px == HEADING_PX)
+        .collect();
+    assert_eq!(orange.len(), 1, "one wide heading");
+    assert!(HEADING_PX >= 2.0 * ARROW_PX);
+    let green = frame
+        .strokes
+        .iter()
+        .position(|s| s.color[..3] == palette::GREEN.to_array())
+        .unwrap();
+    assert!(green > orange[0], "cohesion is drawn over the heading");
+}
+
+/// The three steering arrows start at the boid: the shorter of two lies above the longer (the
+/// camera looks down), so a short rule pointing along a long one is not hidden under it, at the
+/// defaults and at other places and headings.
+#[test]
+fn the_rules_figures_shorter_steering_arrows_lie_over_the_longer() {
+    use inbetween::draw::palette;
+    for (x, z, heading) in [(0.0, 0.0, 0.0), (0.3, 0.3, 45.0), (-0.4, 0.2, 180.0)] {
+        let mut scene = RulesFigure::new();
+        scene.set_position(x, z).unwrap();
+        scene.set_heading_deg(heading).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let shafts: Vec<(f32, f32)> = [palette::GREEN, palette::PINK, palette::RED]
+            .iter()
+            .filter_map(|c| {
+                frame
+                    .strokes
+                    .iter()
+                    .find(|s| s.color[..3] == c.to_array())
+                    .map(|s| {
+                        let (a, b) = (Vec3::from(s.a), Vec3::from(s.b));
+                        ((b - a).length(), a.y)
+                    })
+            })
+            .collect();
+        assert_eq!(shafts.len(), 3, "at ({x}, {z}), heading {heading}");
+        for a in &shafts {
+            for b in &shafts {
+                if a.0 < b.0 - 1e-4 {
+                    assert!(a.1 > b.1, "at ({x}, {z}), heading {heading}: {shafts:?}");
+                }
+            }
+        }
     }
 }

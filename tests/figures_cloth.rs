@@ -866,18 +866,85 @@ fn the_flags_and_the_drape_stay_inside_their_fixed_declared_view() {
             }
         }
     }
-    // The drape's obstacles, wherever the sliders put them.
+    // The drape's obstacles, wherever the sliders put them, on their way and there, and the
+    // cloth they push: the declared box grows to hold them.
     let mut f = ClothFigure::new(Preset::Drape);
-    let view = f.view_box();
+    let mut t = 0.0;
     for (sx, bx, bz) in [(-1.5, -1.5, -1.5), (1.5, 1.5, 1.5), (1.5, -1.5, 1.5)] {
         f.set_obstacles(sx, bx, bz).unwrap();
-        let (_, frame) = draw(&mut f, 0.0);
-        let (sphere, cuboid) = f.obstacles();
-        for p in [sphere - Vec3::X * 0.55, sphere + Vec3::X * 0.55, cuboid - 0.2, cuboid + 0.2] {
-            assert!(in_box(p, view), "{p} outside {view:?}");
+        for _ in 0..4 {
+            t += 0.5;
+            let (_, frame) = draw(&mut f, t);
+            assert_eq!(frame.keep_in_view.len(), 8);
+            let view = frame
+                .keep_in_view
+                .iter()
+                .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| {
+                    (lo.min(*p), hi.max(*p))
+                });
+            assert_eq!(view, f.view_box());
+            let (sphere, cuboid) = f.obstacles();
+            let (to_sphere, to_cuboid) = f.obstacle_targets();
+            let mut inside = vec![];
+            for c in [sphere, to_sphere] {
+                inside.extend([c - Vec3::X * 0.55, c + Vec3::X * 0.55]);
+            }
+            for c in [cuboid, to_cuboid] {
+                inside.extend([c - 0.2, c + 0.2]);
+            }
+            inside.extend(f.positions(0).iter().copied());
+            for p in inside {
+                assert!(in_box(p, view), "{p} outside {view:?} at {t} s");
+            }
         }
-        assert_eq!(frame.keep_in_view.len(), 8);
     }
+}
+
+/// The drape frames what it shows, not the whole ground: from the page's orbit on its
+/// 760 × 420 canvas the sphere at its defaults is at least 110 px across (87 px when the
+/// view held every place the sliders can put the obstacles). The sphere, the box and the cloth
+/// each cast a contact shadow, and the cloth's is darker once it has fallen.
+#[test]
+fn the_drape_fills_its_canvas_and_casts_contact_shadows() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::draw::MARKER_SHADOW;
+    let mut f = ClothFigure::new(Preset::Drape);
+    // The caption's cloth: 2 m on a side, level at 1.5 m.
+    let (lo, hi) = f
+        .positions(0)
+        .iter()
+        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(*p), hi.max(*p))
+        });
+    assert!((hi - lo - Vec3::new(2.0, 0.0, 2.0)).abs().max_element() < 1e-4);
+    assert!((lo.y - 1.5).abs() < 1e-6);
+    let (_, start) = draw(&mut f, 0.0);
+    let size = glam::Vec2::new(760.0, 420.0);
+    let mut camera = OrbitCamera::from_view([0.5, 0.6, 0.0, 5.0, 0.45, 0.5]);
+    assert!(camera.fit(&start.fit_points(), size, FIT_PAD_PX));
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let (sphere, _) = f.obstacles();
+    let right = camera.view().row(0).truncate();
+    let [a, b] = [sphere - right * 0.55, sphere + right * 0.55]
+        .map(|p| project_to_canvas(view_proj, size, p).unwrap());
+    assert!((a - b).length() >= 110.0, "{} px across", (a - b).length());
+    let shadows = |frame: &Frame| -> Vec<f32> {
+        frame
+            .markers
+            .iter()
+            .filter(|m| m.shape == MARKER_SHADOW)
+            .map(|m| m.color[3])
+            .collect()
+    };
+    let before = shadows(&start);
+    assert_eq!(before.len(), 3, "the sphere's, the box's and the cloth's");
+    let (_, later) = draw(&mut f, 3.0);
+    let after = shadows(&later);
+    assert_eq!(after.len(), 3);
+    assert!(
+        after[2] > before[2] + 0.1,
+        "the cloth's: {before:?} then {after:?}"
+    );
 }
 
 #[test]

@@ -586,3 +586,46 @@ fn the_jumping_balls_cast_shadows_that_fade_with_height() {
         .find(|&t| shadows(t).iter().all(|&a| a < 0.4));
     assert!(duration.is_some(), "the shadows never fade");
 }
+
+/// The ghosts read as copies of the ball: each at least half the ball's size, and, with the
+/// camera fitted on the page's 760 × 420 canvas from its orbit, at least 20 px across.
+#[test]
+fn spacing_ghosts_are_copies_of_the_ball_not_dots() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let scene = Spacing::new();
+    let mut f = Frame::default();
+    scene.draw(&mut f, 0.4).unwrap();
+    let ball = f
+        .meshes
+        .iter()
+        .find(|m| m.mesh == MeshId::SPHERE)
+        .map(|m| {
+            m.model
+                .x_axis
+                .truncate()
+                .length()
+                .min(m.model.y_axis.truncate().length())
+        })
+        .unwrap();
+    let ghosts: Vec<_> = f
+        .points
+        .iter()
+        .filter(|p| Vec3::from_slice(&p.color[..3]) == GHOST)
+        .collect();
+    assert!(ghosts.len() >= 2 * 12, "the arc's and the twin's");
+    let size = glam::Vec2::new(760.0, 420.0);
+    let mut camera = OrbitCamera::from_view([0.0, 0.9, 0.0, 7.5, 0.0, 0.35]);
+    assert!(camera.fit(&f.fit_points(), size, FIT_PAD_PX));
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    for g in ghosts {
+        assert!(
+            g.radius >= 0.5 * ball,
+            "a ghost of {} m by a ball of {ball} m",
+            g.radius
+        );
+        let c = Vec3::from(g.center);
+        let [a, b] = [c - Vec3::Y * g.radius, c + Vec3::Y * g.radius]
+            .map(|p| project_to_canvas(view_proj, size, p).unwrap());
+        assert!((a - b).length() >= 20.0, "{} px across", (a - b).length());
+    }
+}

@@ -919,24 +919,25 @@ fn the_1d_noise_curve_and_its_guides_are_wide_strokes() {
 #[test]
 fn the_1d_figure_declares_a_view_that_holds_everything_it_draws() {
     // The camera fits the declared box at every canvas size and "frame all" returns to it: the
-    // box must hold the curve, the ticks and both ramps wherever the probe is, and not move with
-    // the probe.
+    // box must hold the curve, the ticks, what is drawn of both ramps and every dot, wherever
+    // the probe is.
     for seed in [0.0, 1.0, 7.0, 42.0] {
         let mut s = Noise1d::new();
         s.set_seed(seed).unwrap();
-        let (lo, hi) = s.view_box();
         for k in 0..32 {
             s.set_probe(0.05 + 7.9 * k as f32 / 31.0).unwrap();
+            let (lo, hi) = s.view_box();
             let mut f = Frame::default();
             s.draw(&mut f);
             let (flo, fhi) = f.keep_in_view.iter().fold(
                 (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
                 |(a, b), p| (a.min(*p), b.max(*p)),
             );
-            assert_eq!((flo, fhi), (lo, hi), "the declared box does not move with the probe");
+            assert_eq!((flo, fhi), (lo, hi), "the frame declares view_box()");
             let drawn = f
                 .segments()
                 .flat_map(|(a, b, _)| [a, b])
+                .chain(f.markers.iter().map(|m| Vec3::from(m.center)))
                 .chain(f.points.iter().map(|p| Vec3::from(p.center)));
             for p in drawn {
                 assert!(
@@ -946,6 +947,68 @@ fn the_1d_figure_declares_a_view_that_holds_everything_it_draws() {
             }
         }
     }
+}
+
+/// The ramps are drawn as far as the curve's own height (and the probe's dots) reach, not
+/// to a steep gradient's full rise: at the defaults the curve spans at least 60 % of the
+/// declared height (41 % in a box fitted to the steepest ramp), each ramp still
+/// runs from its lattice point past the probe's dot on it, and with the camera fitted on the
+/// page's 760 × 420 canvas from its orbit the curve is at least 200 px tall.
+#[test]
+fn the_1d_figure_frames_the_curve_and_cuts_the_ramps_at_its_height() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let s = Noise1d::new();
+    let mut f = Frame::default();
+    s.draw(&mut f);
+    let (lo, hi) = s.view_box();
+    let curve: Vec<Vec3> = f
+        .segments_of(palette::BLUE)
+        .flat_map(|(a, b)| [a, b])
+        .collect();
+    let (c_lo, c_hi) = curve
+        .iter()
+        .fold((f32::MAX, f32::MIN), |(l, h), p| (l.min(p.y), h.max(p.y)));
+    let share = (c_hi - c_lo) / (hi.y - lo.y);
+    assert!(share >= 0.6, "the curve spans {share} of the view's height");
+    let ramps: Vec<(Vec3, Vec3)> = f
+        .strokes
+        .iter()
+        .filter(|st| {
+            st.color[..3] == palette::ORANGE.to_array() || st.color[..3] == palette::TEAL.to_array()
+        })
+        // A ramp ends on the axis at its lattice point; a gradient tick crosses it mid-way.
+        .filter(|st| st.a[1] == 0.0 || st.b[1] == 0.0)
+        .map(|st| (Vec3::from(st.a), Vec3::from(st.b)))
+        .collect();
+    assert_eq!(ramps.len(), 2, "two ramps");
+    for color in [palette::ORANGE, palette::TEAL] {
+        let dot = f
+            .markers
+            .iter()
+            .find(|m| m.color[..3] == color.to_array())
+            .map(|m| Vec3::from(m.center))
+            .unwrap();
+        let on_ramp = ramps.iter().any(|(a, b)| {
+            let (l, r) = (a.x.min(b.x), a.x.max(b.x));
+            dot.x >= l - 1e-4 && dot.x <= r + 1e-4
+        });
+        assert!(
+            on_ramp,
+            "the {color} dot at {dot} lies on what is drawn of its ramp"
+        );
+    }
+    let size = glam::Vec2::new(760.0, 420.0);
+    let mut camera = OrbitCamera::from_view([0.0, 0.0, 0.0, 7.5, 0.0, 0.0]);
+    assert!(camera.fit(&f.fit_points(), size, FIT_PAD_PX));
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let px: Vec<glam::Vec2> = curve
+        .iter()
+        .map(|p| project_to_canvas(view_proj, size, *p).unwrap())
+        .collect();
+    let (y_lo, y_hi) = px
+        .iter()
+        .fold((f32::MAX, f32::MIN), |(l, h), p| (l.min(p.y), h.max(p.y)));
+    assert!(y_hi - y_lo >= 200.0, "the curve is {} px tall", y_hi - y_lo);
 }
 
 #[test]

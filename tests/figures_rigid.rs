@@ -514,3 +514,43 @@ fn a_half_turn_is_described_with_a_forward_slide() {
         assert!((moved(&half, a) - t).length() < 1e-3, "{angle}°: {:?}", moved(&half, a));
     }
 }
+
+/// Where the three aeroplanes start (key A) and end (key B) together, the figure is not a pile:
+/// with all three shown only the keys' own axes are drawn (a plane shown alone has its own
+/// too), and each key's name lies on its far side from the other key, at least 0.65 m from
+/// the centre of every part of the planes there and from every point of the paths.
+#[test]
+fn the_keys_stay_readable_where_the_planes_meet_them() {
+    use inbetween::draw::{palette, AXIS_PX};
+    let x_axes = |f: &Frame| {
+        f.strokes
+            .iter()
+            .filter(|s| s.color[..3] == palette::X_AXIS.to_array() && s.width_px == AXIS_PX)
+            .count()
+    };
+    let mut scene = RigidMotion::new();
+    for (t, key) in [(0.0, "A"), (1.0, "B")] {
+        let mut f = Frame::default();
+        scene.draw(&mut f, t).unwrap();
+        assert_eq!(x_axes(&f), 2, "the keys' axes alone at t = {t}");
+        let label = f.labels.iter().find(|l| l.text == key).unwrap();
+        let centres = f
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CUBE)
+            .map(|m| m.model.w_axis.truncate());
+        let paths = f
+            .strokes
+            .iter()
+            .flat_map(|s| [Vec3::from(s.a), Vec3::from(s.b)]);
+        let nearest = centres
+            .chain(paths)
+            .map(|p| (p - label.anchor).length())
+            .fold(f32::INFINITY, f32::min);
+        assert!(nearest >= 0.65, "{key}: {nearest} m from a plane or a path");
+    }
+    scene.set_show(1).unwrap();
+    let mut f = Frame::default();
+    scene.draw(&mut f, 0.0).unwrap();
+    assert_eq!(x_axes(&f), 3, "a plane shown alone has its axes");
+}

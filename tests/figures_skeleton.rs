@@ -710,3 +710,31 @@ fn use_my_exercise_checks_probe_inputs_beyond_the_shown_one() {
         "{note}"
     );
 }
+
+/// The selected joint's name is the only label at the joint: its axes are drawn without their
+/// x, y and z (which crowded the name at the figures' scale), in the default figure and in
+/// the one comparing two interpolations, whichever joint is selected; the world's axes at the
+/// feet keep their letters.
+#[test]
+fn the_selected_joints_name_has_the_joint_to_itself() {
+    let mut figures = vec![SkeletonFigure::new(), interpolation_figure()];
+    let thigh = figures[0].skeleton().find("thigh.L").unwrap();
+    figures[0].select(thigh).unwrap();
+    for (n, f) in figures.iter_mut().enumerate() {
+        let mut frame = Frame::default();
+        f.draw(&mut frame, 0.4).unwrap();
+        let at = f.joint_position(f.selected()).unwrap();
+        let name = &f.skeleton().names()[f.selected()];
+        let near: Vec<&str> = frame
+            .labels
+            .iter()
+            .filter(|l| (l.anchor - at).length() < 0.3)
+            .map(|l| l.text.as_str())
+            .collect();
+        assert_eq!(near, vec![name.as_str()], "figure {n}");
+        if n == 0 {
+            let letters = frame.labels.iter().filter(|l| l.text.len() == 1).count();
+            assert_eq!(letters, 3, "the world's x, y and z");
+        }
+    }
+}

@@ -17,6 +17,9 @@ if (rigidViewer) {
   rigidViewer.setCamera(0, 1.0, 0, 6.5, 0.35, 0.4);
   const scene = new RigidScene();
   const timeline = new Timeline(document.getElementById('rigid-timeline'), { duration: 4 });
+  // It opens half-way from A to B, where the three methods have parted (at the keys they meet).
+  timeline.time = 1;
+  timeline.show();
   const SHOW = { 'all three': 0, 'lerp + slerp': 1, 'dual quaternion blend': 2, screw: 3 };
   const p = {
     angle: 150, ax: 0.2, ay: 1, az: 0.3, tx: 1.5, ty: 1.4, tz: 0.3, pivot: 0, show: 0, thirds: false, useExercise: false,

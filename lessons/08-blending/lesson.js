@@ -106,7 +106,7 @@ if (locoViewer) {
   // A low three-quarter view along the track: the 3 m track runs across the canvas, so the
   // characters fill its height even in an 800 px wide window, both lanes stay apart and the
   // footprints still read on the ground.
-  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.8, 0.5);
+  locoViewer.setCamera(0, 0.8, 0, 5.0, 1.0, 0.45);
   const scene = new LocomotionScene();
   const p = { speed: 0, useExercise: false };
   // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.
@@ -150,7 +150,7 @@ if (locoViewer) {
 
 const rootViewer = await lesson.figure('#fig-root');
 if (rootViewer) {
-  rootViewer.setCamera(0, 0.8, 0, 4.5, 1.1, 0.3);
+  rootViewer.setCamera(0, 0.8, 0, 4.5, 1.3, 0.3);
   const scene = new LocomotionScene();
   scene.setCompare(false);
   const p = { speed: 0, rootMotion: true };

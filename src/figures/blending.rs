@@ -676,8 +676,8 @@ impl Default for LocomotionFigure {
 
 /// How big a footprint is drawn, and how wide the trail between one foot's footprints, CSS
 /// pixels (the same at any distance).
-const FOOTPRINT_PX: f32 = 7.0;
-const TRAIL_PX: f32 = 4.0;
+const FOOTPRINT_PX: f32 = 11.0;
+const TRAIL_PX: f32 = 5.0;
 /// How far (metres) a drawn footprint may move from one sample to the next beyond the foot's
 /// own move before it counts as the drawing's snap-back at a loop rather than a slide: well
 /// below a synchronised snap (a blended cycle's travel, 57 to 96 cm) and far above rounding.
@@ -1259,11 +1259,12 @@ impl LocomotionFigure {
             self.slides_m[usize::from(!own)] = self.draw_lane(frame, t, 0.0, palette::PURPLE, "");
         }
         self.slide_m = self.slides_m[usize::from(!own)];
-        // Both lanes, the whole track and a raised head: what the camera must keep in view.
+        // The lanes drawn, the whole track and a raised head: what the camera must keep in view.
         let half = 0.5 * TRACK_LENGTH;
+        let side = if self.compare { LANE_X } else { 0.0 } + 0.4;
         frame.keep_box_in_view(
-            Vec3::new(-LANE_X - 0.4, 0.0, -half - 0.3),
-            Vec3::new(LANE_X + 0.4, 2.0, half + 0.3),
+            Vec3::new(-side, 0.0, -half - 0.3),
+            Vec3::new(side, 2.0, half + 0.3),
         );
         let w = self.weight();
         let (cycle, _, speed) = synchronised_cycle(&self.motion[0], &self.motion[1], w);

@@ -1098,16 +1098,19 @@ fn rules_note(yours: &[Vec3], reference: &[Vec3; 3]) -> String {
     )
 }
 
-/// Metres per CSS pixel on the rules figure's plane at its camera, rounded up (about 90 px a metre
-/// on the 760 × 380 canvas of an 800 × 600 page, 100 on the 650 × 420 one of a 1600 × 1000 page).
-const RULES_M_PER_PX: f32 = 1.0 / 84.0;
+/// Metres per CSS pixel on the rules figure's plane when the camera fits a grid `extent` metres
+/// across, rounded up: the fit keeps 32 px clear top and bottom, so the grid is 316 px tall on
+/// the 760 × 380 canvas of an 800 × 600 page and 356 px on the 650 × 420 one of a 1600 × 1000
+/// page.
+fn rules_m_per_px(extent: f32) -> f32 {
+    extent / 310.0
+}
 
 /// A label's box on the rules figure's plane, `(x0, z0, x1, z1)` in metres: the page draws a
 /// label 0.35 em (4.5 px) to the right of its anchor (or ending that far to its left), 0.8 rem
 /// bold (about 7.7 px a character) and 15 px high, from 9 px above the anchor; −z is up the
 /// screen. Two pixels of padding all round.
-fn label_box(anchor: Vec3, text: &str, left: bool) -> (f32, f32, f32, f32) {
-    let px = RULES_M_PER_PX;
+fn label_box(anchor: Vec3, text: &str, left: bool, px: f32) -> (f32, f32, f32, f32) {
     let w = 7.7 * text.chars().count() as f32 * px;
     let (x0, x1) = if left {
         (anchor.x - 4.5 * px - w, anchor.x - 4.5 * px)
@@ -1130,20 +1133,25 @@ fn boxes_overlap(a: (f32, f32, f32, f32), b: (f32, f32, f32, f32)) -> bool {
 /// the boid (leftwards for an arrow that points left), the longest arrow's first; a label that
 /// would cover one already placed, or the boid, moves up or down the screen (along z) by as
 /// little as clears them. At the tips alone, short cohesion and alignment arrows put their
-/// labels on top of each other. Returns `(anchor, reads leftwards, text, colour)`.
+/// labels on top of each other. Every label stays over the grid `(lo, hi)` (which the camera
+/// fits) along z, and within 0.85 of the grid's width of its middle along x (the canvases are
+/// at least 1.55 times as wide as tall). Returns `(anchor, reads leftwards, text, colour)`.
 fn place_labels(
     boid: Vec3,
     tips: &[(Vec3, Vec3, &'static str, Vec3)],
+    (lo, hi): (Vec3, Vec3),
 ) -> Vec<(Vec3, bool, &'static str, Vec3)> {
+    let extent = (hi - lo).max_element();
+    let px = rules_m_per_px(extent);
     let mut order: Vec<usize> = (0..tips.len()).collect();
     order.sort_by(|&a, &b| tips[b].1.length().total_cmp(&tips[a].1.length()));
-    let r = 12.0 * RULES_M_PER_PX; // the boid's dot and a margin
+    let r = 12.0 * px; // the boid's dot and a margin
     let mut placed: Vec<(f32, f32, f32, f32)> =
         vec![(boid.x - r, boid.z - r, boid.x + r, boid.z + r)];
     // The boid and the labels placed so far: what a label must never cover.
     let mut labels = placed.clone();
     // The arrows' shafts, as small boxes along each: a label must not sit on another arrow.
-    let m = 3.0 * RULES_M_PER_PX;
+    let m = 3.0 * px;
     for &(tip, _, _, _) in tips {
         for k in 1..=12 {
             let p = boid.lerp(tip, k as f32 / 12.0);
@@ -1155,18 +1163,19 @@ fn place_labels(
         let (tip, v, text, color) = tips[i];
         let dir = v.normalize_or_zero();
         let left = dir.x < -0.2;
-        // Kept on the canvas: an arrow from a boid near the border can run past it (the canvas
-        // shows about z ∈ [−2.1, 2.1] m and x ∈ [−3.2, 3.2] m at both page sizes).
-        let mut base = tip + dir * (6.0 * RULES_M_PER_PX);
-        let w = 7.7 * text.chars().count() as f32 * RULES_M_PER_PX;
-        let (z_lo, z_hi) = (-1.9, 1.8);
+        // Kept on the canvas: an arrow from a boid near the border can run past it.
+        let mut base = tip + dir * (6.0 * px);
+        let w = 7.7 * text.chars().count() as f32 * px;
+        let (z_lo, z_hi) = (lo.z + 0.05 * extent, hi.z - 0.05 * extent);
+        let middle = 0.5 * (lo.x + hi.x);
+        let (x_lo, x_hi) = (middle - 0.85 * extent, middle + 0.85 * extent);
         base.z = base.z.clamp(z_lo, z_hi);
         base.x = if left {
-            base.x.max(-3.1 + w)
+            base.x.max(x_lo + w)
         } else {
-            base.x.min(3.1 - w)
+            base.x.min(x_hi - w)
         };
-        let step = 20.0 * RULES_M_PER_PX;
+        let step = 20.0 * px;
         let mut anchor = base;
         // Clear of the labels and the arrows if there is room; else clear of the labels.
         'search: for avoid in [&placed[..], &labels[..]] {
@@ -1175,15 +1184,15 @@ fn place_labels(
                 let dz = if k % 2 == 1 { 1.0 } else { -1.0 } * k.div_ceil(2) as f32 * step;
                 let mut a = base + Vec3::new(0.0, 0.0, dz);
                 a.z = a.z.clamp(z_lo, z_hi);
-                let b = label_box(a, text, left);
+                let b = label_box(a, text, left, px);
                 if !avoid.iter().any(|&p| boxes_overlap(p, b)) {
                     anchor = a;
                     break 'search;
                 }
             }
         }
-        placed.push(label_box(anchor, text, left));
-        labels.push(label_box(anchor, text, left));
+        placed.push(label_box(anchor, text, left, px));
+        labels.push(label_box(anchor, text, left, px));
         out.push((anchor, left, text, color));
     }
     out
@@ -1230,6 +1239,9 @@ pub struct RulesFigure {
 
 /// The longest arrow the rules figure draws, metres (1 m per unit of a steering vector).
 const ARROW_MAX_M: f32 = 2.0;
+/// Width of the rules figure's heading arrow, CSS pixels: wider than a steering arrow
+/// ([`crate::draw::ARROW_PX`]), which is drawn over it.
+pub const HEADING_PX: f32 = 6.0;
 
 /// The grid of the rules figure: origin and cells per axis.
 const GRID_ORIGIN: Vec3 = Vec3::new(-2.0, -0.5, -2.0);
@@ -1323,7 +1335,8 @@ impl RulesFigure {
 
     /// The camera the page starts with, as `Viewer::setCamera`'s arguments (target x, y, z,
     /// distance in metres, yaw and pitch in radians): from straight above, +x to the right and
-    /// −z up the screen.
+    /// −z up the screen. The viewer then fits its target and distance to the grid
+    /// ([`RulesFigure::grid_box`]), keeping this direction.
     pub fn view(&self) -> [f32; 6] {
         [0.0, 0.0, 0.0, 5.2, 0.0, 1.45]
     }
@@ -1331,6 +1344,18 @@ impl RulesFigure {
     fn dims(&self) -> [u32; 3] {
         let n = (GRID_EXTENT / self.cell_size).ceil() as u32;
         [n, 1, n]
+    }
+
+    /// The grid's cells on the plane y = 0, `(min, max)`: whole cells from the grid's origin,
+    /// so with cells that do not divide [`GRID_EXTENT`] the last row and column reach past it.
+    /// The figure declares it as its view, so the camera fits the whole grid at every cell size.
+    pub fn grid_box(&self) -> (Vec3, Vec3) {
+        let [n, _, _] = self.dims();
+        let lo = Vec3::new(GRID_ORIGIN.x, 0.0, GRID_ORIGIN.z);
+        (
+            lo,
+            lo + Vec3::new(1.0, 0.0, 1.0) * (n as f32 * self.cell_size),
+        )
     }
 
     /// The neighbours the boid takes into account: within the radius and the field of view.
@@ -1394,6 +1419,8 @@ impl RulesFigure {
     pub fn draw(&self, frame: &mut Frame) -> String {
         let dims = self.dims();
         let s = self.cell_size;
+        let (grid_lo, grid_hi) = self.grid_box();
+        frame.keep_box_in_view(grid_lo, grid_hi);
         // Grid lines on y = 0 (the grid's cells seen from above).
         for k in 0..=dims[0] {
             let x = GRID_ORIGIN.x + k as f32 * s;
@@ -1481,27 +1508,40 @@ impl RulesFigure {
             frame.arrow(*q, *q + 0.35 * *v, color, 0.08);
         }
         frame.point(self.boid, 0.09, palette::ORANGE);
-        frame.arrow(
-            self.boid,
-            self.boid + 0.5 * self.velocity,
+        // The heading wide under the steering arrows drawn next: where one of them points the
+        // same way, both colours still show.
+        let heading = self.boid + 0.5 * self.velocity;
+        frame.stroke(
+            &[self.boid, heading],
             palette::ORANGE,
-            0.1,
+            crate::draw::StrokeStyle::solid(HEADING_PX),
         );
+        frame.arrow(self.boid, heading, palette::ORANGE, 0.1);
         let [co, al, se] = self.rules();
         let arrows = [
             (co, palette::GREEN, "cohesion"),
             (al, palette::PINK, "alignment"),
             (se, palette::RED, "separation"),
         ];
+        // Shorter arrows over longer ones, each a centimetre higher above the plane (the camera
+        // looks down): a short rule that points along a long one still shows.
+        let drawn = |i: usize| arrows[i].0.clamp_length_max(ARROW_MAX_M).length();
+        let mut by_length = [0usize, 1, 2];
+        by_length.sort_by(|&a, &b| drawn(b).total_cmp(&drawn(a)));
+        let mut lift = [0.0f32; 3];
+        for (rank, &i) in by_length.iter().enumerate() {
+            lift[i] = 0.01 * (rank + 1) as f32;
+        }
         let mut tips = Vec::with_capacity(3);
-        for &(v, color, name) in &arrows {
-            let tip = self.boid + v.clamp_length_max(ARROW_MAX_M) + Vec3::Y * 0.01;
-            frame.arrow(self.boid + Vec3::Y * 0.01, tip, color, 0.12);
+        for (&(v, color, name), up) in arrows.iter().zip(lift) {
+            let up = Vec3::Y * up;
+            let tip = self.boid + v.clamp_length_max(ARROW_MAX_M) + up;
+            frame.arrow(self.boid + up, tip, color, 0.12);
             if v.length() > 1e-4 {
                 tips.push((tip, v, name, color));
             }
         }
-        for (anchor, left, name, color) in place_labels(self.boid, &tips) {
+        for (anchor, left, name, color) in place_labels(self.boid, &tips, (grid_lo, grid_hi)) {
             if left {
                 frame.label_left(anchor, name, color);
             } else {

@@ -44,6 +44,21 @@ pub const MAX_DRAG_EVENTS: usize = 4000;
 /// jump: a jump of 0.5 m in one frame would land the sphere inside the cloth, and the collision
 /// would then fling its particles out by half a metre in one step.
 pub const OBSTACLE_SPEED: f32 = 1.5;
+/// What the drape's camera keeps in view at least ([`ClothFigure::view_box`]): the 2 m cloth
+/// where it starts (level, 1.5 m up) and its label above it, with a margin.
+/// Its floor is a little under the ground, where the cloth lies by its collision thickness.
+pub const DRAPE_VIEW: (Vec3, Vec3) = (Vec3::new(-1.1, -0.05, -1.1), Vec3::new(1.1, 1.9, 1.1));
+
+/// The smallest box holding the finite ones of `points`; (+∞, −∞) when there are none, which
+/// leaves a union unchanged.
+fn bounds(points: &[Vec3]) -> (Vec3, Vec3) {
+    points
+        .iter()
+        .filter(|p| p.is_finite())
+        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(*p), hi.max(*p))
+        })
+}
 
 /// What the cloth figure shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -770,6 +785,7 @@ impl ClothFigure {
         if let Some((c, r)) = self.colliders.sphere {
             let m = Mat4::from_translation(c) * Mat4::from_scale(Vec3::splat(r));
             frame.mesh(MeshId::SPHERE, m, palette::GREY);
+            frame.contact_shadow(c - Vec3::Y * r, r);
         }
         if let Some((c, h)) = self.colliders.cuboid {
             frame.mesh(
@@ -777,6 +793,16 @@ impl ClothFigure {
                 Mat4::from_translation(c) * Mat4::from_scale(h),
                 palette::PURPLE,
             );
+            frame.contact_shadow(c - Vec3::Y * h.y, h.x.max(h.z));
+        }
+        if self.preset == Preset::Drape {
+            // Under the cloth, from its lowest point: how high it still is as it falls.
+            for sim in &self.sims {
+                let (lo, hi) = bounds(&sim.cloth.positions);
+                let middle = 0.5 * (lo + hi);
+                let radius = 0.5 * (hi.x - lo.x).max(hi.z - lo.z);
+                frame.contact_shadow(Vec3::new(middle.x, lo.y.max(0.0), middle.z), radius);
+            }
         }
         // An obstacle on its way to where its slider puts it: a line to that point.
         let (sphere, cuboid) = self.obstacles();
@@ -876,19 +902,43 @@ impl ClothFigure {
                 frame.point(target, 0.03, palette::PINK);
             }
         }
-        // A fixed box, so the camera holds still while the cloth moves (the viewer fits it at
-        // every frame): the poles and where the flags fly, or the ground the drape falls on with
-        // every place the sliders can put the obstacles.
         let (lo, hi) = self.view_box();
         frame.keep_box_in_view(lo, hi);
         Ok(self.note())
     }
 
-    /// The box the camera keeps in view ([`Frame::keep_in_view`]): it depends on the preset only.
+    /// The box the camera keeps in view ([`Frame::keep_in_view`]). The flags': the poles and
+    /// where the flags fly. The drape's: [`DRAPE_VIEW`] (the cloth from its start to where it
+    /// lies over the sphere, and its label), grown to hold the obstacles where they are and
+    /// where their sliders send them, and the cloth wherever it is. The camera holds still while
+    /// the cloth falls and drapes, and re-fits when a slider moves an obstacle or the cloth
+    /// is pushed past that.
     pub fn view_box(&self) -> (Vec3, Vec3) {
         match self.preset {
             Preset::Flag => (Vec3::new(-2.05, 0.0, -1.2), Vec3::new(2.05, 2.8, 1.2)),
-            Preset::Drape => (Vec3::new(-2.05, 0.0, -2.05), Vec3::new(2.05, 1.9, 2.05)),
+            Preset::Drape => {
+                let (mut lo, mut hi) = DRAPE_VIEW;
+                let (sphere, cuboid) = self.obstacles();
+                let (to_sphere, to_cuboid) = self.obstacle_targets;
+                if let Some((_, r)) = self.colliders.sphere {
+                    for c in [sphere, to_sphere] {
+                        (lo, hi) = (lo.min(c - r), hi.max(c + r));
+                    }
+                }
+                if let Some((_, h)) = self.colliders.cuboid {
+                    for c in [cuboid, to_cuboid] {
+                        (lo, hi) = (lo.min(c - h), hi.max(c + h));
+                    }
+                }
+                for sim in &self.sims {
+                    let (a, b) = bounds(&sim.cloth.positions);
+                    (lo, hi) = (lo.min(a), hi.max(b));
+                }
+                (
+                    lo.max(Vec3::new(-4.0, -0.05, -4.0)),
+                    hi.min(Vec3::splat(4.0)),
+                )
+            }
         }
     }
 

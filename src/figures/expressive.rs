@@ -70,6 +70,9 @@ fn scale_note(runner: Runner, s: f32) -> String {
 pub const BALL: Vec3 = palette::BLUE;
 pub const GHOST: Vec3 = palette::GREY;
 pub const CHART: Vec3 = palette::ORANGE;
+/// Radius of a ghost, metres: smaller than the ball, so the ball stands out where it passes one
+/// and bunched ghosts stay apart, and large enough to read as a copy of it.
+pub const GHOST_RADIUS: f32 = 0.6 * RADIUS;
 
 /// Where the path of Figure 1 starts and ends.
 const START: Vec3 = Vec3::new(-2.5, 0.3, 0.0);
@@ -256,8 +259,9 @@ impl Spacing {
             .map(|k| arc_point(START, END, Vec3::Y, self.arc_height, k as f32 / 64.0))
             .collect();
         frame.wide_polyline(&path, palette::DARK, crate::draw::CURVE_PX);
-        frame.point(START, 0.09, palette::KEY);
-        frame.point(END, 0.09, palette::KEY);
+        // Over everything: the first and last ghosts sit on the keys.
+        frame.marker_on_top(START, crate::draw::DOT_PX, palette::KEY);
+        frame.marker_on_top(END, crate::draw::DOT_PX, palette::KEY);
         frame.label(START + Vec3::new(0.0, -0.35, 0.0), "key 1", palette::KEY);
         frame.label(END + Vec3::new(0.0, -0.35, 0.0), "key 2", palette::KEY);
         // The spacing chart: a ruler below the path with a tick at each ghost.
@@ -267,7 +271,7 @@ impl Spacing {
             let f = ghost(k);
             frame.point(
                 arc_point(START, END, Vec3::Y, self.arc_height, f),
-                0.06,
+                GHOST_RADIUS,
                 GHOST,
             );
             frame.line(ruler(f), ruler(f) + Vec3::new(0.0, 0.0, 0.25), CHART);
@@ -282,7 +286,7 @@ impl Spacing {
             let (a, b) = (START + TWIN_OFFSET, END + TWIN_OFFSET);
             frame.line(a, b, palette::GREY);
             for k in 0..self.ghosts {
-                frame.point(a.lerp(b, ghost(k)), 0.04, GHOST);
+                frame.point(a.lerp(b, ghost(k)), GHOST_RADIUS, GHOST);
             }
             let q = a.lerp(b, self.along(time));
             frame.mesh(MeshId::SPHERE, ball(q, Vec3::X, Vec3::ONE), PLAIN);

@@ -180,6 +180,11 @@ const X0: f32 = 4.0;
 const Y_SCALE: f32 = 4.0;
 /// Half the length along x of the tick that shows a lattice point's gradient.
 const TICK_HALF: f32 = 0.3;
+/// Samples of Figure 1's curve over x ∈ [0, 8].
+const CURVE_SAMPLES: usize = 800;
+/// Room kept above and below what Figure 1 must show, in noise units (×[`Y_SCALE`] metres):
+/// the ramps run on that far past the curve, and the pink label above the probe has space.
+pub const RAMP_MARGIN: f32 = 0.1;
 
 impl Default for Noise1d {
     fn default() -> Self {
@@ -261,17 +266,38 @@ impl Noise1d {
         .0
     }
 
-    /// What must stay in view, `(min, max)`: the lattice from 0 to 8 with its gradient ticks
-    /// and, whichever cell the probe is in, its ramps (a ramp rises by its gradient g over one
-    /// cell, so this seed's steepest `|g|` bounds them, the curve and the ticks). It does not
-    /// depend on the probe, so the camera holds still while the probe moves.
+    /// The probe's cell, its `t`, the two gradients `(g₀, g₁)` and the two ramps' values at
+    /// the probe `(g₀ t, g₁ (t − 1))`.
+    fn probe_ramps(&self) -> (i32, f32, (f32, f32), (f32, f32)) {
+        let cell = self.probe_x.floor() as i32;
+        let t = self.probe_x - cell as f32;
+        let (g0, g1) = (
+            grad1(self.perm.hash1(cell)),
+            grad1(self.perm.hash1(cell + 1)),
+        );
+        (cell, t, (g0, g1), (g0 * t, g1 * (t - 1.0)))
+    }
+
+    /// What must stay in view, `(min, max)`, in world space: the lattice from 0 to 8 with its
+    /// gradient ticks, the curve, and the probe's dots on the two ramps, with [`RAMP_MARGIN`]
+    /// above and below. The ramps are drawn only inside it (a steep ramp rises by up to 1 over
+    /// its cell, about twice the curve's height), so the curve fills the view; the box grows
+    /// only while the probe's dots on a steep ramp lie beyond the curve, and the camera
+    /// re-fits then.
     pub fn view_box(&self) -> (Vec3, Vec3) {
-        let steepest = (0..=8)
-            .map(|i| grad1(self.perm.hash1(i)).abs())
-            .fold(0.0, f32::max);
+        let (_, _, _, (a, b)) = self.probe_ramps();
+        let (mut lo, mut hi) = (a.min(b).min(0.0), a.max(b).max(0.0));
+        for i in 0..=8 {
+            let tick = TICK_HALF * grad1(self.perm.hash1(i)).abs();
+            (lo, hi) = (lo.min(-tick), hi.max(tick));
+        }
+        for k in 0..=CURVE_SAMPLES {
+            let n = self.perm.noise1(k as f32 * 8.0 / CURVE_SAMPLES as f32);
+            (lo, hi) = (lo.min(n), hi.max(n));
+        }
         (
-            Self::to_world(-TICK_HALF, -steepest),
-            Self::to_world(8.0 + TICK_HALF, steepest),
+            Self::to_world(-TICK_HALF, lo - RAMP_MARGIN),
+            Self::to_world(8.0 + TICK_HALF, hi + RAMP_MARGIN),
         )
     }
 
@@ -284,14 +310,14 @@ impl Noise1d {
             Self::to_world(8.0, 0.0),
             palette::GRID_AXIS,
         );
-        let curve: Vec<Vec3> = (0..=800)
-            .map(|i| {
-                let x = i as f32 / 100.0;
+        let curve: Vec<Vec3> = (0..=CURVE_SAMPLES)
+            .map(|k| {
+                let x = k as f32 * 8.0 / CURVE_SAMPLES as f32;
                 Self::to_world(x, self.perm.noise1(x))
             })
             .collect();
         frame.wide_polyline(&curve, palette::BLUE, crate::draw::CURVE_PX);
-        let cell = self.probe_x.floor() as i32;
+        let (cell, t, (g0, g1), (a, b)) = self.probe_ramps();
         for i in 0..=8 {
             let g = grad1(self.perm.hash1(i));
             let color = if i == cell {
@@ -310,38 +336,48 @@ impl Noise1d {
                 GUIDE_PX,
             );
         }
-        let t = self.probe_x - cell as f32;
-        let (g0, g1) = (
-            grad1(self.perm.hash1(cell)),
-            grad1(self.perm.hash1(cell + 1)),
-        );
         let x0 = cell as f32;
         if self.show_ramps {
+            // Each ramp as far as it stays inside the view: `g₀ t` from t = 0 and `g₁ (t − 1)`
+            // back from t = 1, up to where it leaves [lo, hi] (the probe's dots are inside).
+            let (y_lo, y_hi) = (lo.y / Y_SCALE, hi.y / Y_SCALE);
+            let reach = |g: f32| {
+                if g > 0.0 {
+                    (y_hi / g).min(1.0)
+                } else if g < 0.0 {
+                    (y_lo / g).min(1.0)
+                } else {
+                    1.0
+                }
+            };
+            let (u0, u1) = (reach(g0), reach(-g1));
             frame.wide_polyline(
-                &[Self::to_world(x0, 0.0), Self::to_world(x0 + 1.0, g0)],
+                &[Self::to_world(x0, 0.0), Self::to_world(x0 + u0, g0 * u0)],
                 palette::ORANGE,
                 GUIDE_PX,
             );
             frame.wide_polyline(
-                &[Self::to_world(x0, -g1), Self::to_world(x0 + 1.0, 0.0)],
+                &[
+                    Self::to_world(x0 + 1.0 - u1, -g1 * u1),
+                    Self::to_world(x0 + 1.0, 0.0),
+                ],
                 palette::TEAL,
                 GUIDE_PX,
             );
-            // Labels a quarter of the way in from the ramps' far ends: at the ends, a steep ramp
-            // reaches the bottom edge of the view, and both labels can land there side by side.
+            // Labels three quarters of the way out along what is drawn of each ramp, away from
+            // the lattice point it starts at.
             frame.label(
-                Self::to_world(x0 + 0.75, 0.75 * g0),
+                Self::to_world(x0 + 0.75 * u0, 0.75 * u0 * g0),
                 "g₀·t",
                 palette::ORANGE,
             );
             frame.label(
-                Self::to_world(x0 + 0.25, -0.75 * g1),
+                Self::to_world(x0 + 1.0 - 0.75 * u1, -0.75 * u1 * g1),
                 "g₁·(t − 1)",
                 palette::TEAL,
             );
         }
         let [f, _] = self.fade_pair(t);
-        let (a, b) = (g0 * t, g1 * (t - 1.0));
         let n = a + f * (b - a);
         if self.show_ramps {
             // Dots of a fixed size on screen, outlined, over the lines: the view is eight cells

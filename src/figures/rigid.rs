@@ -20,6 +20,8 @@ const TOLERANCE: f32 = 1e-4;
 pub const TIP: Vec3 = Vec3::new(0.55, 0.0, 0.0);
 /// Equal steps of t marked on each nose path.
 const TICKS: usize = 12;
+/// How far a key's name is put from the key, metres: past the aeroplane drawn there.
+pub const KEY_LABEL_M: f32 = 1.0;
 
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 pub enum Method {
@@ -229,10 +231,22 @@ impl RigidMotion {
         frame.wide_line(a, b, SCREW_AXIS, 3.0);
         frame.label(b, "screw axis", SCREW_AXIS);
         frame.keep_box_in_view(Vec3::new(-2.6, 0.0, -1.2), Vec3::new(2.6, 2.4, 1.2));
-        for (key, name) in [(self.start, "A"), (self.end, "B")] {
+        // Each key's name on its far side from the other key, clear of the plane there (its
+        // parts reach 0.56 m from its centre) and of the paths leaving it.
+        let (pa, pb) = (self.start.translation(), self.end.translation());
+        let away = (pa - pb).try_normalize().unwrap_or(Vec3::NEG_X);
+        for (key, name, out) in [(self.start, "A", away), (self.end, "B", -away)] {
             frame.axes(key.to_mat4(), 0.5);
-            frame.label(key.translation() + Vec3::Y * 0.3, name, palette::KEY);
+            let anchor = key.translation() + out * KEY_LABEL_M;
+            if out.x < 0.0 {
+                frame.label_left(anchor, name, palette::KEY);
+            } else {
+                frame.label(anchor, name, palette::KEY);
+            }
         }
+        // Each moving plane's own axes only when it is shown alone: with all three shown they
+        // would pile up on the keys' axes where the planes start and end together.
+        let own_axes = self.solo.is_some();
         let student = self.use_exercise;
         for (method, color) in METHODS {
             if !self.shown(method) {
@@ -266,7 +280,9 @@ impl RigidMotion {
             let m = self.motion(method, t);
             let (r, p) = m.to_rotation_translation();
             draw_plane(frame, p, Mat3::from_quat(r), color, 1.0);
-            frame.axes(m.to_mat4() * Mat4::from_translation(self.pivot), 0.45);
+            if own_axes {
+                frame.axes(m.to_mat4() * Mat4::from_translation(self.pivot), 0.45);
+            }
             frame.marker(m.transform_point(self.pivot), crate::draw::DOT_PX, color);
         }
         let mut notes = Vec::new();

@@ -1076,7 +1076,9 @@ impl SkeletonFigure {
             frame.contact_shadow(Vec3::new(middle.x, lowest.max(0.0), middle.z), 0.25);
         }
         let selected = Mat4::from(self.model[self.selected]);
-        frame.labelled_axes(selected, 0.18);
+        // Its axes without their letters: at this size the x, y and z would crowd the joint's
+        // name (the world's axes at the feet carry the letters, the caption the colours).
+        frame.axes(selected, 0.18);
         let p = selected.w_axis.truncate();
         frame.label(
             p + Vec3::new(0.05, 0.05, 0.0),
