@@ -1,8 +1,8 @@
 //! Skinning 100,000 vertices with 4 influences each over a 60-joint palette, positions and
 //! normals: the plain scalar loop (the baseline, the same loop the bench page runs in JavaScript)
 //! against linear blend skinning with separate arrays and with interleaved vertices, and dual
-//! quaternion skinning (with and without turning the palette into dual quaternions), in the same
-//! run.
+//! quaternion skinning (with and without turning the palette into dual quaternions), each also
+//! with the portable kernel (the one wasm runs), and LBS of positions only, in the same run.
 //!
 //! `cargo bench --bench skinning -- --warm-up-time 1 --measurement-time 2`
 //! Criterion reports vertices per second.
@@ -14,8 +14,8 @@ use glam::Vec3;
 use inbetween::rigid::DualQuat;
 use inbetween::skinning::rigs::benchmark_input;
 use inbetween::skinning::{
-    dual_quat_palette, skin_dqs, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop,
-    skin_lbs_with, LbsKernel, SkinVertex,
+    dual_quat_palette, skin_dqs, skin_dqs_with, skin_lbs, skin_lbs_interleaved,
+    skin_lbs_plain_loop, skin_lbs_positions, skin_lbs_with, LbsKernel, SkinVertex,
 };
 
 const VERTICES: usize = 100_000;
@@ -81,6 +81,18 @@ fn skinning(c: &mut Criterion) {
             black_box(&out_p);
         });
     });
+    group.bench_function("lbs_positions_only_portable_kernel", |b| {
+        b.iter(|| {
+            skin_lbs_positions(
+                black_box(&input.palette),
+                &input.skin,
+                &input.positions,
+                &mut out_p,
+            )
+            .unwrap();
+            black_box(&out_p);
+        });
+    });
     group.bench_function("lbs_interleaved", |b| {
         b.iter(|| {
             skin_lbs_interleaved(
@@ -97,6 +109,21 @@ fn skinning(c: &mut Criterion) {
     group.bench_function("dqs", |b| {
         b.iter(|| {
             skin_dqs(
+                black_box(&dq),
+                &input.skin,
+                &input.positions,
+                &input.normals,
+                &mut out_p,
+                &mut out_n,
+            )
+            .unwrap();
+            black_box(&out_p);
+        });
+    });
+    group.bench_function("dqs_portable_kernel", |b| {
+        b.iter(|| {
+            skin_dqs_with(
+                LbsKernel::Portable,
                 black_box(&dq),
                 &input.skin,
                 &input.positions,

@@ -10,8 +10,8 @@ use inbetween::rigid::DualQuat;
 use inbetween::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig};
 use inbetween::skinning::{
     auto_weights, blend_dual_quats, dqs_vertex, dual_quat_palette, lbs_vertex, mesh_volume,
-    ring_area, skin_dqs, skin_lbs, skin_lbs_interleaved, skin_lbs_with, skinning_palette,
-    LbsKernel, SkinVertex, SkinWeights, SkinningError,
+    ring_area, skin_dqs, skin_dqs_with, skin_lbs, skin_lbs_interleaved, skin_lbs_positions,
+    skin_lbs_with, skinning_palette, LbsKernel, SkinVertex, SkinWeights, SkinningError,
 };
 use proptest::prelude::*;
 use std::f32::consts::PI;
@@ -382,6 +382,106 @@ fn the_best_lbs_kernel_matches_the_portable_one() {
     }
     // The output has exactly n entries and the last one is whole (not clobbered by a wide store).
     assert!(a[n - 1].is_finite() && (a[n - 1] - b[n - 1]).length() < 1e-4);
+}
+
+/// The DQS kernel switch: the portable loop (what wasm runs) agrees with the best one (AVX2 here
+/// when the CPU has it) to rounding, and with `dqs_vertex`, the formula written out.
+#[test]
+fn the_best_dqs_kernel_matches_the_portable_one() {
+    let input = inbetween::skinning::rigs::benchmark_input(1003, 11);
+    let n = input.positions.len();
+    let mut dq = vec![DualQuat::IDENTITY; input.palette.len()];
+    dual_quat_palette(&input.palette, &mut dq).unwrap();
+    let mut out = [0, 1, 2, 3].map(|_| vec![Vec3::ZERO; n]);
+    let [a, an, b, bn] = &mut out;
+    skin_dqs(&dq, &input.skin, &input.positions, &input.normals, a, an).unwrap();
+    skin_dqs_with(
+        LbsKernel::Portable,
+        &dq,
+        &input.skin,
+        &input.positions,
+        &input.normals,
+        b,
+        bn,
+    )
+    .unwrap();
+    for v in 0..n {
+        let tol = 1e-5 * (1.0 + b[v].length());
+        assert!(
+            (a[v] - b[v]).length() < tol,
+            "vertex {v}: {} vs {}",
+            a[v],
+            b[v]
+        );
+        assert!(
+            (an[v] - bn[v]).length() < 1e-5 * (1.0 + bn[v].length()),
+            "normal {v}"
+        );
+        let w = &input.skin.weights()[v];
+        let js = input.skin.joints()[v].map(|j| dq[j as usize]);
+        let r = dqs_vertex(&js, w, input.positions[v]);
+        assert!(
+            (b[v] - r).length() < tol,
+            "vertex {v}: {} vs dqs_vertex {r}",
+            b[v]
+        );
+    }
+    // A bad input is refused by the switch as by skin_dqs.
+    let mut short = vec![Vec3::ZERO; n - 1];
+    let e = skin_dqs_with(
+        LbsKernel::Portable,
+        &dq,
+        &input.skin,
+        &input.positions,
+        &input.normals,
+        &mut short,
+        bn,
+    );
+    assert!(
+        matches!(e, Err(SkinningError::LengthMismatch { .. })),
+        "{e:?}"
+    );
+}
+
+/// Positions-only LBS gives the positions of the portable LBS kernel bit for bit, and checks its
+/// input as `skin_lbs` does.
+#[test]
+fn positions_only_lbs_matches_the_full_kernel() {
+    let input = inbetween::skinning::rigs::benchmark_input(1003, 11);
+    let n = input.positions.len();
+    let (mut p, mut pn, mut q) = (
+        vec![Vec3::ZERO; n],
+        vec![Vec3::ZERO; n],
+        vec![Vec3::ZERO; n],
+    );
+    skin_lbs_with(
+        LbsKernel::Portable,
+        &input.palette,
+        &input.skin,
+        &input.positions,
+        &input.normals,
+        &mut p,
+        &mut pn,
+    )
+    .unwrap();
+    skin_lbs_positions(&input.palette, &input.skin, &input.positions, &mut q).unwrap();
+    for v in 0..n {
+        assert_eq!(
+            p[v].to_array().map(f32::to_bits),
+            q[v].to_array().map(f32::to_bits),
+            "{v}"
+        );
+    }
+    let e = skin_lbs_positions(&input.palette[..3], &input.skin, &input.positions, &mut q);
+    assert!(
+        matches!(e, Err(SkinningError::JointOutOfRange { .. })),
+        "{e:?}"
+    );
+    let e = skin_lbs_positions(&input.palette, &input.skin, &input.positions[1..], &mut q);
+    assert!(
+        matches!(e, Err(SkinningError::LengthMismatch { .. })),
+        "{e:?}"
+    );
 }
 
 #[test]

@@ -96,6 +96,32 @@ pub fn skin_dqs(
     out_positions: &mut [Vec3],
     out_normals: &mut [Vec3],
 ) -> Result<(), SkinningError> {
+    skin_dqs_with(
+        super::LbsKernel::best(),
+        palette,
+        skin,
+        positions,
+        normals,
+        out_positions,
+        out_normals,
+    )
+}
+
+/// [`skin_dqs`] with a chosen kernel, as [`super::skin_lbs_with`]: `Portable` is the loop wasm
+/// runs (glam's SSE2 natively), so the browser's path can be timed and tested natively; a kernel
+/// this CPU cannot run falls back to the portable one.
+///
+/// # Errors
+/// As [`skin_dqs`].
+pub fn skin_dqs_with(
+    kernel: super::LbsKernel,
+    palette: &[DualQuat],
+    skin: &SkinWeights,
+    positions: &[Vec3],
+    normals: &[Vec3],
+    out_positions: &mut [Vec3],
+    out_normals: &mut [Vec3],
+) -> Result<(), SkinningError> {
     super::lbs::check_skin(
         palette.len(),
         skin,
@@ -111,7 +137,7 @@ pub fn skin_dqs(
     let (positions, normals) = (&positions[..n], &normals[..n]);
     let (out_positions, out_normals) = (&mut out_positions[..n], &mut out_normals[..n]);
     #[cfg(target_arch = "x86_64")]
-    if super::LbsKernel::best() == super::LbsKernel::X86Fma {
+    if kernel == super::LbsKernel::X86Fma && super::LbsKernel::best() == super::LbsKernel::X86Fma {
         // SAFETY: the CPU has AVX2 (checked by `best`).
         unsafe {
             dqs_loop_avx2(
@@ -126,6 +152,7 @@ pub fn skin_dqs(
         };
         return Ok(());
     }
+    let _ = kernel; // only x86-64 has another kernel
     dqs_loop(
         palette,
         joints,

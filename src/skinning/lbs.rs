@@ -176,6 +176,39 @@ pub fn skin_lbs_with(
     Ok(())
 }
 
+/// Linear blend skinning of positions only (`p' = Σ_j w_j K_j p`, as [`skin_lbs`] without the
+/// normals): for meshes whose normals are recomputed or not needed (shadow passes, picking,
+/// collision proxies). The portable loop on every target (the one wasm runs); the same
+/// positions as `skin_lbs_with(LbsKernel::Portable, …)`, bit for bit. Allocates nothing.
+///
+/// # Errors
+/// [`SkinningError::LengthMismatch`] unless `positions` and `out_positions` have one entry per
+/// vertex, [`SkinningError::JointOutOfRange`] when a vertex names a joint past the palette.
+pub fn skin_lbs_positions(
+    palette: &[Affine3A],
+    skin: &SkinWeights,
+    positions: &[Vec3],
+    out_positions: &mut [Vec3],
+) -> Result<(), SkinningError> {
+    let n = skin.len();
+    // No normals: their lengths are checked as the vertex count.
+    check_skin(
+        palette.len(),
+        skin,
+        positions.len(),
+        n,
+        out_positions.len(),
+        n,
+    )?;
+    let (joints, weights) = (&skin.joints()[..n], &skin.weights()[..n]);
+    let (positions, out_positions) = (&positions[..n], &mut out_positions[..n]);
+    for v in 0..n {
+        let k = blend4(palette, &joints[v], &weights[v]);
+        out_positions[v] = k.transform_point3(positions[v]);
+    }
+    Ok(())
+}
+
 /// The portable LBS loop over validated slices of one length.
 #[inline(always)]
 fn skin_lbs_portable(

@@ -41,10 +41,12 @@ mod lbs;
 pub mod rigs;
 mod weights;
 
-pub use dqs::{blend_dual_quats, dqs_vertex, dual_quat_palette, skin_dqs, RIGID_TOLERANCE};
+pub use dqs::{
+    blend_dual_quats, dqs_vertex, dual_quat_palette, skin_dqs, skin_dqs_with, RIGID_TOLERANCE,
+};
 pub use lbs::{
-    lbs_vertex, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, skin_lbs_with,
-    skinning_palette, LbsKernel, SkinVertex,
+    lbs_vertex, skin_lbs, skin_lbs_interleaved, skin_lbs_plain_loop, skin_lbs_positions,
+    skin_lbs_with, skinning_palette, LbsKernel, SkinVertex,
 };
 pub use rigs::{mesh_volume, ring_area};
 pub use weights::{auto_weights, segment_distance, SkinWeights};
