@@ -11,10 +11,12 @@
 use super::compute::{bind_entries, no_compute, read_buffer, storage, uniform, Kernels};
 use super::grid::GpuGrid;
 use super::Gpu;
-use crate::figures::gpu::{fluid_layout, fluid_rows, GPU_FLUID_ROWS};
+use crate::figures::gpu::{fluid_layout, fluid_rows, GPU_FLUID_RED_SPEED, GPU_FLUID_ROWS};
 use crate::fluid::{Fluid, Method};
 use glam::Vec3;
 use std::rc::Rc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 
 const WORKGROUP: u32 = 64;
 /// One `vec4` per particle in each state buffer.
@@ -59,6 +61,8 @@ pub struct FluidCompute {
     grid: GpuGrid,
     group: wgpu::BindGroup,
     kernels: Rc<Kernels>,
+    /// Set while steps submitted by [`FluidCompute::step`] have not finished on the GPU.
+    busy: Arc<AtomicBool>,
 }
 
 impl FluidCompute {
@@ -99,6 +103,21 @@ impl FluidCompute {
         // The predicted positions start as the positions: PBF's grid never sees garbage.
         gpu.queue
             .write_buffer(&pred, 0, bytemuck::cast_slice(&vec4s(&fluid.positions)));
+        // The start's sprites, coloured by speed as the shader colours them: a fluid drawn
+        // before its first step shows where it is.
+        let radius = f32::from_bits(rows[5][2]);
+        let sprites: Vec<[f32; 8]> = fluid
+            .positions
+            .iter()
+            .zip(&fluid.velocities)
+            .map(|(p, v)| {
+                let s = (v.length() / GPU_FLUID_RED_SPEED).min(1.0);
+                let c = crate::figures::noise::diverging_color(1.2 * s - 0.6);
+                [p.x, p.y, p.z, radius, c.x, c.y, c.z, 1.0]
+            })
+            .collect();
+        gpu.queue
+            .write_buffer(&instances, 0, bytemuck::cast_slice(&sprites));
         let params = uniform(gpu, "fluid params", rows.len());
         gpu.queue
             .write_buffer(&params, 0, bytemuck::cast_slice(&rows));
@@ -153,6 +172,7 @@ impl FluidCompute {
             grid,
             group,
             kernels,
+            busy: Arc::new(AtomicBool::new(false)),
         })
     }
 
@@ -227,6 +247,27 @@ impl FluidCompute {
         }
         gpu.queue.submit([encoder.finish()]);
         self.time += steps as f32 * self.dt;
+        self.busy.store(true, Ordering::Relaxed);
+        let busy = self.busy.clone();
+        gpu.queue
+            .on_submitted_work_done(move || busy.store(false, Ordering::Relaxed));
+    }
+
+    /// Whether the GPU has finished every step submitted so far (a page queues more only then).
+    pub fn idle(&self) -> bool {
+        !self.busy.load(Ordering::Relaxed)
+    }
+
+    /// A future that completes once the GPU has finished the steps submitted so far; it holds
+    /// nothing of the fluid (a page awaits it while the fluid lives on). Polled every
+    /// millisecond.
+    pub fn settled(&self) -> impl std::future::Future<Output = ()> + 'static {
+        let busy = self.busy.clone();
+        async move {
+            while busy.load(Ordering::Relaxed) {
+                super::renderer::sleep_ms(1).await;
+            }
+        }
     }
 
     /// The sprites of the last step, for [`super::Renderer::gpu_points`].
