@@ -561,7 +561,8 @@ fn the_step_time_sweep_times_the_grid_and_all_pairs_in_turn() {
 mod splash_on_the_gpu {
     use inbetween::draw::Frame;
     use inbetween::figures::fluid::{
-        SplashFigure, SPLASH_GPU_REPEATS, SPLASH_GPU_STEPS_PER_CALL, SPLASH_SWEEP_SIZES,
+        SplashFigure, SPLASH_GPU_REPEATS, SPLASH_GPU_STEPS_PER_CALL, SPLASH_GPU_TIMING_STEPS,
+        SPLASH_SWEEP_SIZES,
     };
     use inbetween::figures::gpu::MAX_GPU_FLUID_PARTICLES;
 
@@ -594,7 +595,11 @@ mod splash_on_the_gpu {
         let mut fig = SplashFigure::new();
         fig.set_gpu(1_000_000.0).unwrap();
         let f = fig.gpu_start().unwrap();
-        assert!(f.len() > 700_000 && f.len() <= MAX_GPU_FLUID_PARTICLES, "{}", f.len());
+        assert!(
+            f.len() > 700_000 && f.len() <= MAX_GPU_FLUID_PARTICLES,
+            "{}",
+            f.len()
+        );
         assert_eq!(f.params.method, inbetween::fluid::Method::Pbf);
         fig.set("SPH", 3000.0, "grid", 0.0).unwrap();
         let f = fig.gpu_start().unwrap();
@@ -623,8 +628,14 @@ mod splash_on_the_gpu {
         assert_eq!(fig.plan_gpu_steps(0.5, true).unwrap(), (false, 1));
         let mut frame = Frame::default();
         let note = fig.draw_gpu(&mut frame);
-        assert!(note.contains("on the GPU") && note.contains("GPU grid"), "{note}");
-        assert!(frame.points.is_empty(), "the particles are the GPU's sprites");
+        assert!(
+            note.contains("on the GPU") && note.contains("GPU grid"),
+            "{note}"
+        );
+        assert!(
+            frame.points.is_empty(),
+            "the particles are the GPU's sprites"
+        );
     }
 
     #[test]
@@ -636,7 +647,8 @@ mod splash_on_the_gpu {
         assert!(fig.record_gpu_sweep(1.0).is_err());
         while let Some(search) = fig.next_sweep_timing().unwrap() {
             fig.timing_step(search).unwrap();
-            fig.record_sweep(if search == "grid" { 1.0 } else { 4.0 }).unwrap();
+            fig.record_sweep(if search == "grid" { 1.0 } else { 4.0 })
+                .unwrap();
         }
         let mut sizes = Vec::new();
         while let Some(n) = fig.next_gpu_timing() {
@@ -651,6 +663,11 @@ mod splash_on_the_gpu {
             assert_eq!(row[9..12], [n as f32 / 8000.0; 3]);
         }
         let note = fig.sweep_note();
-        assert!(note.contains("GPU grid") && note.contains("1.00 ms"), "{note}");
+        assert!(
+            note.contains("GPU grid") && note.contains("1.00 ms"),
+            "{note}"
+        );
+        // Figure 5's caption: the median of three timings of four steps queued at once.
+        assert_eq!((SPLASH_GPU_REPEATS, SPLASH_GPU_TIMING_STEPS), (3, 4));
     }
 }

@@ -951,12 +951,12 @@ impl SplashFigure {
         let same_fluid = (method, count, vorticity) == (self.method, self.count, self.vorticity);
         // The GPU's start follows the solver and ε; it is built first, so an error changes
         // nothing.
-        let gpu_start = if self.gpu_count > 0 && (method, vorticity) != (self.method, self.vorticity)
-        {
-            Some(self.gpu_fluid(method, self.gpu_count, vorticity)?)
-        } else {
-            None
-        };
+        let gpu_start =
+            if self.gpu_count > 0 && (method, vorticity) != (self.method, self.vorticity) {
+                Some(self.gpu_fluid(method, self.gpu_count, vorticity)?)
+            } else {
+                None
+            };
         if !same_fluid {
             self.start = fluid_3d(method, Scene::Drop, count, vorticity)?;
         }
@@ -1088,23 +1088,25 @@ impl SplashFigure {
     /// The GPU steps towards `time_sec`: `(start over, steps to queue)`. Back in time (more than
     /// half a step) starts over from the start; ahead, at most [`SPLASH_GPU_STEPS_PER_CALL`]
     /// steps (fewer with many particles: [`SPLASH_GPU_STEP_BUDGET`]), and none while `gpu_idle` is false (the GPU still runs the steps queued before).
-    pub fn plan_gpu_steps(&mut self, time_sec: f32, gpu_idle: bool) -> Result<(bool, usize), String> {
+    pub fn plan_gpu_steps(
+        &mut self,
+        time_sec: f32,
+        gpu_idle: bool,
+    ) -> Result<(bool, usize), String> {
         let t = super::in_range("time (s)", time_sec, 0.0, SPLASH_DURATION_SEC)?;
         let start = self
             .gpu_start
             .as_ref()
             .ok_or("GPU mode is off: choose a GPU count first")?;
         let dt = start.params.dt;
-        let most = (SPLASH_GPU_STEP_BUDGET / start.len().max(1)).clamp(1, SPLASH_GPU_STEPS_PER_CALL);
+        let most =
+            (SPLASH_GPU_STEP_BUDGET / start.len().max(1)).clamp(1, SPLASH_GPU_STEPS_PER_CALL);
         let restart = t + 0.5 * dt + 1e-6 < self.gpu_time;
         if restart {
             self.gpu_time = 0.0;
         }
         let mut steps = 0;
-        while (gpu_idle || restart)
-            && steps < most
-            && self.gpu_time + 0.5 * dt <= t
-        {
+        while (gpu_idle || restart) && steps < most && self.gpu_time + 0.5 * dt <= t {
             self.gpu_time += dt;
             steps += 1;
         }
@@ -1195,7 +1197,9 @@ impl SplashFigure {
         for row in cpu.chunks_exact(9) {
             out.extend_from_slice(row);
             let k = SPLASH_SWEEP_SIZES.iter().position(|&n| n as f32 == row[0]);
-            let t = k.map(|k| &self.gpu_times[k]).filter(|t| t.len() == SPLASH_GPU_REPEATS);
+            let t = k
+                .map(|k| &self.gpu_times[k])
+                .filter(|t| t.len() == SPLASH_GPU_REPEATS);
             match t {
                 Some(t) => {
                     let mut v = t.clone();

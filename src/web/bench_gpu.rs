@@ -157,8 +157,8 @@ pub async fn bench_gpu_fluid(
     if method == Method::Sph {
         params.dt = 0.4 * params.h / 20.0;
     }
-    let fluid = Fluid::with_cap(params, Scene::DamBreak, count, 1, MAX_GPU_FLUID_PARTICLES)
-        .map_err(err)?;
+    let fluid =
+        Fluid::with_cap(params, Scene::DamBreak, count, 1, MAX_GPU_FLUID_PARTICLES).map_err(err)?;
     let gpu = webgpu(canvas).await?;
     let mut on_gpu = crate::render::FluidCompute::new(&gpu, &fluid).map_err(err)?;
     on_gpu.step(&gpu, 1);

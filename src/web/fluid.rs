@@ -246,19 +246,26 @@ impl SplashScene {
     #[wasm_bindgen(js_name = advanceOnGpu)]
     pub fn advance_on_gpu(&mut self, viewer: &Viewer, time_sec: f32) -> Result<usize, JsError> {
         if !self.scene.gpu_mode() {
-            return Err(JsError::new("GPU mode is off: call setGpu(viewer, count) first"));
+            return Err(JsError::new(
+                "GPU mode is off: call setGpu(viewer, count) first",
+            ));
         }
         if viewer.renewed(&mut self.gpu_seen) {
             self.gpu = None;
         }
         if self.gpu.is_none() {
             // A new GPU fluid starts from the start: its clock too.
-            self.scene.set_gpu(self.scene.gpu_start().map_or(0, |f| f.len()) as f32).ok();
+            self.scene
+                .set_gpu(self.scene.gpu_start().map_or(0, |f| f.len()) as f32)
+                .ok();
         }
         let idle = self.gpu.as_ref().is_none_or(|g| g.idle());
         let (restart, steps) = self.scene.plan_gpu_steps(time_sec, idle).map_err(js)?;
         if restart || self.gpu.is_none() {
-            let start = self.scene.gpu_start().ok_or_else(|| JsError::new("GPU mode is off"))?;
+            let start = self
+                .scene
+                .gpu_start()
+                .ok_or_else(|| JsError::new("GPU mode is off"))?;
             self.gpu = Some(
                 crate::render::FluidCompute::new(&viewer.gpu, start)
                     .map_err(|e| JsError::new(&e))?,
