@@ -289,7 +289,9 @@ impl SplashScene {
         let search = super::string("search", &search)?;
         self.scene
             .set(&method, count, &search, vorticity)
-            .map_err(js)
+            .map_err(js)?;
+        self.gpu = None; // the GPU fluid starts over from the figure's start too
+        Ok(())
     }
     #[wasm_bindgen(js_name = durationSec)]
     pub fn duration_sec(&self) -> f32 {

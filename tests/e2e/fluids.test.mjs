@@ -110,6 +110,22 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
   }
 });
 
+test('lesson 15 on WebGPU: the step-time sweep times the GPU grid after the CPU grid and all pairs', async () => {
+  const context = await launch('webgpu');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgpu`, { width: 1280, height: 900 });
+    await page.locator('#fig-timing').scrollIntoViewIfNeeded();
+    // The CPU's 60 timings, then the GPU's 18 (each a few queued steps of up to 8,000 particles).
+    await page.waitForFunction(() => /The GPU grid \(WebGPU compute/.test(document.getElementById('splash-sweep').textContent), null, { timeout: 300_000 });
+    const note = await page.locator('#splash-sweep').textContent();
+    assert.match(note, /takes [\d.]+ ms a step at N = 8000/, note);
+    await page.locator('#fig-timing').screenshot({ path: 'tests/screenshots/15-fluids-timing-gpu-webgpu.png' });
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
 test('lesson 15 on WebGL2: the GPU switch is off and the note says why', async () => {
   const context = await launch('webgl2');
   try {
