@@ -9,7 +9,7 @@ const context = await launch(process.env.BENCH_PROFILE ?? 'webgl2');
 try {
   const page = await context.newPage();
   await page.goto(`http://127.0.0.1:${server.address().port}/www/bench.html`);
-  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 600_000 });
+  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 1_200_000 });
   const results = await page.evaluate(() => window.__benchResults);
   if (!Array.isArray(results)) throw new Error(`bench page failed: ${JSON.stringify(results)}`);
   const rows = results.map((r) => ({

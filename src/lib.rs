@@ -23,7 +23,7 @@
 //! | `12-boids`: boids | [`boids`] (rules, force laws, grid) | [`figures::boids`] | `web::boids` (bench: `web::bench_boids`) | [`exercises::boids`] (12.x) |
 //! | `13-cloth`: cloth | [`cloth`] (mass-spring, XPBD, collisions; uses [`particles`]' step) | [`figures::cloth`] | `web::cloth` (bench: `web::bench_cloth`) | [`exercises::cloth`] (13.x) |
 //! | `14-rigid-bodies`: rigid bodies | [`rigid_body`] (inertia tensors, orientation and angular-velocity steps, impulses, contacts by sequential impulses) | [`figures::rigid_body`] (the throw, quaternion drift, the tennis racket, the impulse at a contact, the stack and dominoes) | `web::rigid_body` (bench: `web::bench_rigid_body`) | [`exercises::rigid_body`] (14.x) |
-//! | `15-fluids`: fluids | [`fluid`] (kernels, SPH and PBF in 2D and 3D on the boids' grid, the particles' collisions) | [`figures::fluid`] (the kernels, the density of a dragged particle, SPH beside PBF on one dam break, a 3D splash and its step-time sweep) | `web::fluid` | [`exercises::fluid`] (15.x) |
+//! | `15-fluids`: fluids | [`fluid`] (kernels, SPH and PBF in 2D and 3D on the boids' grid, the particles' collisions) | [`figures::fluid`] (the kernels, the density of a dragged particle, SPH beside PBF on one dam break, a 3D splash on the CPU or the GPU grid and its step-time sweep) | `web::fluid` | [`exercises::fluid`] (15.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
 //! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
@@ -38,10 +38,11 @@
 //! feature `gltf-module`, the *glTF module* (`web::gltf_module`: [`gltf_import::import`], its
 //! result handed to the figures module as bytes by [`gltf_import::wire`]). Student code runs only
 //! in the course module.
-//! GPU paths (lessons 09, 11, 12): skinning in the vertex shader (`render/skin.rs`, both
-//! backends) and compute shaders for particles and boids (`render/compute.rs`, WebGPU only) on a
-//! uniform grid built on the GPU (`render/grid.rs`), with their logic (packing, grid layouts,
-//! caps, the statistics compared with the CPU) in [`figures::gpu`].
+//! GPU paths (lessons 09, 11, 12, 15): skinning in the vertex shader (`render/skin.rs`, both
+//! backends) and compute shaders for particles and boids (`render/compute.rs`, WebGPU only) and
+//! for the fluid's SPH and PBF steps (`render/fluid.rs`) on a uniform grid built on the GPU
+//! (`render/grid.rs`), with their logic (packing, grid layouts, caps, the statistics compared
+//! with the CPU) in [`figures::gpu`].
 //!
 //! ## Conventions, stated once
 //! - Right-handed coordinates, **Y up**, the camera looks down −Z in view space.

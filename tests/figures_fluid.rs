@@ -138,6 +138,21 @@ fn the_dam_break_note_at_the_start_gives_the_starting_densities() {
     }
 }
 
+/// The particles are outlined screen-space dots of a readable size (world-space points as wide as
+/// 0.4 spacings came out 1 to 2 px on the page's canvas), one per particle of both fluids.
+#[test]
+fn the_dam_break_draws_its_particles_as_readable_dots() {
+    use inbetween::figures::fluid::DAM_DOT_PX;
+    let fig = DamBreakFigure::new();
+    let mut frame = Frame::default();
+    fig.draw(&mut frame);
+    let n: usize = fig.fluids().iter().map(|f| f.len()).sum();
+    assert!(frame.points.is_empty());
+    assert_eq!(frame.markers.len(), n);
+    assert!(DAM_DOT_PX >= 5.0);
+    assert!(frame.markers.iter().all(|m| m.size_px == DAM_DOT_PX));
+}
+
 #[test]
 fn sph_past_its_time_step_limit_stops_and_the_note_says_why() {
     let mut fig = DamBreakFigure::new();
@@ -551,4 +566,118 @@ fn the_step_time_sweep_times_the_grid_and_all_pairs_in_turn() {
         note.contains("all-pairs slope 2.0") && note.contains("grid slope 1.0"),
         "{note}"
     );
+}
+
+mod splash_on_the_gpu {
+    use inbetween::draw::Frame;
+    use inbetween::figures::fluid::{
+        SplashFigure, SPLASH_GPU_REPEATS, SPLASH_GPU_STEPS_PER_CALL, SPLASH_GPU_TIMING_STEPS,
+        SPLASH_SWEEP_SIZES,
+    };
+    use inbetween::figures::gpu::MAX_GPU_FLUID_PARTICLES;
+
+    #[test]
+    fn a_gpu_count_out_of_range_changes_nothing() {
+        let mut fig = SplashFigure::new();
+        fig.set_gpu(2000.0).unwrap();
+        let n = fig.gpu_start().unwrap().len();
+        for bad in [
+            f32::NAN,
+            1e38,
+            -500.0,
+            499.0,
+            1500.5,
+            (MAX_GPU_FLUID_PARTICLES + 1) as f32,
+        ] {
+            let e = fig.set_gpu(bad).unwrap_err();
+            assert!(e.contains("1048576"), "{bad}: {e}");
+            assert!(fig.gpu_mode());
+            assert_eq!(fig.gpu_start().unwrap().len(), n, "{bad}");
+        }
+        // 0 goes back to the CPU.
+        fig.set_gpu(0.0).unwrap();
+        assert!(!fig.gpu_mode() && fig.gpu_start().is_none());
+        assert!(fig.plan_gpu_steps(0.1, true).is_err());
+    }
+
+    #[test]
+    fn the_gpu_start_follows_the_solver_and_holds_a_million() {
+        let mut fig = SplashFigure::new();
+        fig.set_gpu(1_000_000.0).unwrap();
+        let f = fig.gpu_start().unwrap();
+        assert!(
+            f.len() > 700_000 && f.len() <= MAX_GPU_FLUID_PARTICLES,
+            "{}",
+            f.len()
+        );
+        assert_eq!(f.params.method, inbetween::fluid::Method::Pbf);
+        fig.set("SPH", 3000.0, "grid", 0.0).unwrap();
+        let f = fig.gpu_start().unwrap();
+        assert_eq!(f.params.method, inbetween::fluid::Method::Sph);
+        assert!(f.len() > 700_000);
+        // The CPU fluid keeps the slider's count.
+        assert!(fig.fluid().len() <= 3000);
+    }
+
+    #[test]
+    fn gpu_steps_wait_for_the_gpu_and_a_jump_back_starts_over() {
+        let mut fig = SplashFigure::new();
+        fig.set_gpu(3000.0).unwrap();
+        let dt = fig.gpu_start().unwrap().params.dt;
+        // A busy GPU gets no more steps; an idle one a few, towards the time.
+        assert_eq!(fig.plan_gpu_steps(0.5, false).unwrap(), (false, 0));
+        assert_eq!(
+            fig.plan_gpu_steps(0.5, true).unwrap(),
+            (false, SPLASH_GPU_STEPS_PER_CALL)
+        );
+        assert!((fig.gpu_time() - SPLASH_GPU_STEPS_PER_CALL as f32 * dt).abs() < 1e-6);
+        assert_eq!(fig.plan_gpu_steps(2.0 * dt, true).unwrap(), (true, 2));
+        assert!(fig.plan_gpu_steps(f32::NAN, true).is_err());
+        // A million particles: one step a call.
+        fig.set_gpu(1_000_000.0).unwrap();
+        assert_eq!(fig.plan_gpu_steps(0.5, true).unwrap(), (false, 1));
+        let mut frame = Frame::default();
+        let note = fig.draw_gpu(&mut frame);
+        assert!(
+            note.contains("on the GPU") && note.contains("GPU grid"),
+            "{note}"
+        );
+        assert!(
+            frame.points.is_empty(),
+            "the particles are the GPU's sprites"
+        );
+    }
+
+    #[test]
+    fn the_sweep_times_the_gpu_grid_after_the_cpu() {
+        let mut fig = SplashFigure::new();
+        assert_eq!(fig.next_gpu_timing(), None, "not asked for");
+        fig.set_gpu_sweep(true);
+        assert_eq!(fig.next_gpu_timing(), None, "the CPU's timings first");
+        assert!(fig.record_gpu_sweep(1.0).is_err());
+        while let Some(search) = fig.next_sweep_timing().unwrap() {
+            fig.timing_step(search).unwrap();
+            fig.record_sweep(if search == "grid" { 1.0 } else { 4.0 })
+                .unwrap();
+        }
+        let mut sizes = Vec::new();
+        while let Some(n) = fig.next_gpu_timing() {
+            sizes.push(n);
+            fig.record_gpu_sweep(n as f32 / 8000.0).unwrap();
+        }
+        assert_eq!(sizes.len(), SPLASH_SWEEP_SIZES.len() * SPLASH_GPU_REPEATS);
+        let rows = fig.sweep_samples();
+        assert_eq!(rows.len(), 12 * SPLASH_SWEEP_SIZES.len());
+        for (row, n) in rows.chunks_exact(12).zip(SPLASH_SWEEP_SIZES) {
+            assert_eq!(row[0], n as f32);
+            assert_eq!(row[9..12], [n as f32 / 8000.0; 3]);
+        }
+        let note = fig.sweep_note();
+        assert!(
+            note.contains("GPU grid") && note.contains("1.00 ms"),
+            "{note}"
+        );
+        // Figure 5's caption: the median of three timings of four steps queued at once.
+        assert_eq!((SPLASH_GPU_REPEATS, SPLASH_GPU_TIMING_STEPS), (3, 4));
+    }
 }

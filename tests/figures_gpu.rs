@@ -557,3 +557,126 @@ mod figures {
         }
     }
 }
+
+/// The GPU fluid's uniform block and grid (`src/render/fluid.rs` steps with them; the browser
+/// test tests/web/gpu_fluid.rs compares its steps with the CPU's).
+mod fluid_compute {
+    use glam::Vec3;
+    use inbetween::figures::gpu::{
+        check_gpu_fluid, fluid_layout, fluid_rows, GPU_FLUID_ROWS, MAX_GPU_FLUID_PARTICLES,
+        MAX_GPU_GRID_CELLS,
+    };
+    use inbetween::fluid::{spacing_for, Dim, Fluid, FluidParams, Kernels, Method, Scene};
+    use inbetween::particles::Sphere;
+
+    fn f(bits: u32) -> f32 {
+        f32::from_bits(bits)
+    }
+
+    fn fluid(dim: Dim, method: Method, count: usize, cap: usize) -> Fluid {
+        let mut params = match dim {
+            Dim::Two => FluidParams::default_2d(method),
+            Dim::Three => FluidParams::default_3d(method),
+        };
+        params.h = 2.0 * spacing_for(dim, Scene::DamBreak, count);
+        Fluid::with_cap(params, Scene::DamBreak, count, 1, cap).unwrap()
+    }
+
+    #[test]
+    fn the_rows_carry_the_cpu_fluids_kernels_walls_and_obstacle() {
+        for (dim, walls) in [(Dim::Two, 4), (Dim::Three, 6)] {
+            for method in [Method::Sph, Method::Pbf] {
+                let mut fl = fluid(dim, method, 2000, 2000);
+                let rows = fluid_rows(&fl).unwrap();
+                assert_eq!(rows.len(), GPU_FLUID_ROWS);
+                let p = &fl.params;
+                assert_eq!(
+                    [f(rows[0][0]), f(rows[0][2]), f(rows[0][3])],
+                    [p.h, fl.mass, p.dt]
+                );
+                let k = Kernels::new(p.h, dim);
+                // The shader's poly6(r²) = c (h² − r²)³ is the CPU kernel at r = h/2.
+                let r2 = 0.25 * p.h * p.h;
+                let d = p.h * p.h - r2;
+                assert_eq!(f(rows[1][0]) * d * d * d, k.poly6(r2));
+                assert_eq!(f(rows[1][3]), k.poly6(0.04 * p.h * p.h));
+                assert_eq!(f(rows[4][2]), p.s_corr * fl.lambda_unit());
+                assert!(fl.lambda_unit() > 0.0);
+                assert_eq!(
+                    rows[7],
+                    [fl.len() as u32, walls, (method == Method::Pbf) as u32, 0]
+                );
+                assert_eq!(f(rows[5][1]), if dim == Dim::Two { 1.0 } else { 0.0 });
+                // The walls as the CPU's planes; the unused slots are zero.
+                for (w, row) in fl.walls.iter().zip(&rows[10..]) {
+                    assert_eq!(
+                        [f(row[0]), f(row[1]), f(row[2]), f(row[3])],
+                        [w.normal.x, w.normal.y, w.normal.z, w.offset]
+                    );
+                }
+                assert!(rows[10 + walls as usize..].iter().all(|r| *r == [0; 4]));
+                // No obstacle: radius 0; one: its centre and radius.
+                assert_eq!(rows[6], [0; 4]);
+                let s = Sphere {
+                    center: Vec3::new(0.8, 0.3, 0.0),
+                    radius: 0.2,
+                };
+                fl.set_obstacle(Some(s)).unwrap();
+                let rows = fluid_rows(&fl).unwrap();
+                assert_eq!(f(rows[6][3]), 0.2);
+                assert_eq!(f(rows[6][0]), 0.8);
+            }
+        }
+    }
+
+    #[test]
+    fn the_cap_is_a_million_and_more_is_an_error() {
+        assert!(MAX_GPU_FLUID_PARTICLES >= 1_000_000);
+        assert!(check_gpu_fluid(MAX_GPU_FLUID_PARTICLES).is_ok());
+        for n in [0, MAX_GPU_FLUID_PARTICLES + 1] {
+            let e = check_gpu_fluid(n).unwrap_err();
+            assert!(e.contains("1048576") && e.contains(&n.to_string()), "{e}");
+        }
+        // A fluid the CPU fills past the cap is refused as a whole.
+        let big = fluid(
+            Dim::Three,
+            Method::Sph,
+            MAX_GPU_FLUID_PARTICLES + 60_000,
+            1 << 21,
+        );
+        assert!(big.len() > MAX_GPU_FLUID_PARTICLES, "{}", big.len());
+        assert!(fluid_rows(&big).unwrap_err().contains("1048576"));
+    }
+
+    #[test]
+    fn the_grid_has_cells_at_least_h_wide_up_to_the_cap() {
+        for (dim, n) in [
+            (Dim::Three, 1_000_000),
+            (Dim::Three, 2000),
+            (Dim::Two, 100_000),
+        ] {
+            let fl = fluid(dim, Method::Pbf, n, MAX_GPU_FLUID_PARTICLES);
+            let layout = fluid_layout(&fl).unwrap();
+            assert!(
+                layout.cells() <= MAX_GPU_GRID_CELLS,
+                "{n}: {}",
+                layout.cells()
+            );
+            // One cell each way finds every neighbour within h (the shader's reach).
+            assert_eq!(layout.reach(fl.params.h), 1, "{n}");
+            let size = inbetween::fluid::box_size(dim);
+            let h = Vec3::splat(fl.params.h);
+            let far = layout.origin
+                + layout.cell_size
+                    * Vec3::new(
+                        layout.dims[0] as f32,
+                        layout.dims[1] as f32,
+                        layout.dims[2] as f32,
+                    );
+            assert!(
+                layout.origin.cmple(-h).all() && far.cmpge(size + h).all(),
+                "{n}"
+            );
+        }
+    }
+}

@@ -293,7 +293,7 @@ async function main() {
 }
 
 /**
- * GPU compute (lessons 11 and 12), where the browser offers WebGPU: milliseconds per GPU step,
+ * GPU compute (lessons 11, 12 and 15), where the browser offers WebGPU: milliseconds per GPU step,
  * timed until the GPU has finished the queued steps. Kept apart from the CPU table (its own table
  * and window.__benchGpuResults), since the kernels are asynchronous and need an adapter.
  */
@@ -302,6 +302,9 @@ const GPU_SUITES = [
   { name: 'boids, GPU step (naive O(N²) neighbours, tiled)', run: (c, n, k) => figures.benchGpuBoids(c, n, k, 'naive'), sizes: QUICK ? [1_000] : [1_000, 4_096], unit: 'boid' },
   // Two steps: a step of a million boids takes about 20 s on SwiftShader (headless WebGPU here).
   { name: 'boids, GPU step (GPU grid built each step)', run: (c, n, k) => figures.benchGpuBoids(c, n, k, 'grid'), sizes: QUICK ? [10_000] : [100_000, 1_000_000], unit: 'boid', steps: 2 },
+  // A 3D dam break let go (lesson 15), the GPU grid built every step; one step at a million.
+  { name: 'fluid 3D, GPU step (SPH, GPU grid built each step)', run: (c, n, k) => figures.benchGpuFluid(c, 'sph', n, k), sizes: QUICK ? [10_000] : [100_000, 1_000_000], unit: 'particle', steps: 1 },
+  { name: 'fluid 3D, GPU step (PBF, 4 iterations, GPU grid built each step)', run: (c, n, k) => figures.benchGpuFluid(c, 'pbf', n, k), sizes: QUICK ? [10_000] : [100_000, 1_000_000], unit: 'particle', steps: 1 },
 ];
 async function gpuBenches() {
   const status = document.getElementById('gpu-status');
@@ -325,7 +328,7 @@ async function gpuBenches() {
         rows.map((r) => `<tr><td>${r.suite}</td><td>${r.size.toLocaleString('en')}</td><td>${r.ms_per_step.toFixed(2)}</td><td>${r.ns_per_item.toFixed(2)}</td></tr>`).join('');
     }
   }
-  status.textContent = `done: ${rows.length} GPU runs (${QUICK ? 2 : '2 to 5'} steps each, timed until the GPU finished).`;
+  status.textContent = `done: ${rows.length} GPU runs (${QUICK ? 2 : '1 to 5'} steps each, timed until the GPU finished).`;
   window.__benchGpuResults = rows;
 }
 

@@ -163,14 +163,21 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     timeline.speed = 0.25;
     document.querySelector('#splash-timeline .speed').value = '0.25';
     const gui = new GUI({ container: document.querySelector('#fig-splash .panel'), title: 'Splash' });
-    const p = { method: 'PBF', count: 3000, search: 'grid', vorticity: 0 };
+    const p = { method: 'PBF', count: 3000, search: 'grid', vorticity: 0, on: 'CPU' };
     gui.add(p, 'method', ['PBF', 'SPH']).name('solver');
     gui.add(p, 'count', 500, 10000, 500).name('particles');
     gui.add(p, 'search', ['grid', 'all pairs']).name('neighbour search');
     gui.add(p, 'vorticity', 0, 0.5, 0.05).name('vorticity confinement ε (PBF)');
+    // The CPU, or WebGPU compute shaders on the GPU grid with the slider's count or a larger
+    // fluid of their own. WebGL2 has no compute shaders, so there the switch is off.
+    const hasCompute = viewer.backend === 'WebGPU';
+    const gpuFluids = { GPU: 0, 'GPU, 100,000 particles': 100_000, 'GPU, 1,000,000 particles': 1_000_000 };
+    const onControl = gui.add(p, 'on', ['CPU', ...Object.keys(gpuFluids)]).name('step on');
+    if (!hasCompute) onControl.disable();
     let rejected = '';
     const apply = guarded(gui, p, () => {
       scene.set(p.method, p.count, p.search, p.vorticity);
+      if (hasCompute) scene.setGpu(viewer, p.on === 'CPU' ? 0 : (gpuFluids[p.on] || p.count));
       timeline.time = 0;
       timeline.show();
     }, (m) => { rejected = m; });
@@ -180,31 +187,52 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     // Step time against N (Figure 5): Rust keeps the schedule and the statistics; the page only
     // times the calls, one timing per frame so the page stays responsive.
     const plot = new Plot(document.getElementById('splash-plot'), {
-      title: 'One SPH step in 3D: grid vs all pairs', xLabel: 'particles N (count)', yLabel: 'step time (ms)',
-      series: ['grid (median)', 'grid fastest', 'grid slowest', 'all pairs (median)', 'all pairs fastest',
-        'all pairs slowest', 'slope 1: t ∝ N', 'slope 2: t ∝ N²'],
-      colors: [BLUE, BLUE, BLUE, RED, RED, RED, GREY, DARK],
-      widths: [2.5, 1, 1, 2.5, 1, 1, 1.5, 1.5],
-      dashes: [null, [2, 3], [2, 3], null, [2, 3], [2, 3], [8, 5], [8, 5]],
+      title: 'One SPH step in 3D: CPU grid vs all pairs vs GPU grid', xLabel: 'particles N (count)', yLabel: 'step time (ms)',
+      series: ['CPU grid (median)', 'CPU grid fastest', 'CPU grid slowest', 'all pairs (median)', 'all pairs fastest',
+        'all pairs slowest', 'slope 1: t ∝ N', 'slope 2: t ∝ N²', 'GPU grid (median)', 'GPU grid fastest', 'GPU grid slowest'],
+      colors: [BLUE, BLUE, BLUE, RED, RED, RED, GREY, DARK, TEAL, TEAL, TEAL],
+      widths: [2.5, 1, 1, 2.5, 1, 1, 1.5, 1.5, 2.5, 1, 1],
+      dashes: [null, [2, 3], [2, 3], null, [2, 3], [2, 3], [8, 5], [8, 5], null, [2, 3], [2, 3]],
       log: 'xy',
     });
     const status = document.getElementById('splash-sweep');
     const showSweep = () => {
-      const cols = columns(scene.sweepSamples(), 9).map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) && v > 0 ? v : null))));
+      const cols = columns(scene.sweepSamples(), 12).map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) && v > 0 ? v : null))));
       plot.setData(cols);
       showNote(status, scene.sweepNote());
     };
+    // The GPU grid's timings (WebGPU), after the CPU's: a few steps queued at once, timed until
+    // the GPU has finished them; one timing at a time, beside the frames.
+    let gpuTiming = false;
+    const timeGpu = async () => {
+      gpuTiming = true;
+      try {
+        if (!scene.gpuSweepNext(viewer)) return;
+        await scene.gpuSettled();
+        const t0 = performance.now();
+        const steps = scene.gpuTimingSteps(viewer);
+        await scene.gpuSettled();
+        scene.gpuSweepRecord((performance.now() - t0) / steps);
+        showSweep();
+      } finally {
+        gpuTiming = false;
+      }
+    };
     const sweepStep = () => {
       if (timeSweepStep(scene, 64)) showSweep();
+      else if (hasCompute && !gpuTiming) timeGpu().catch((e) => showNote(status, String(e)));
     };
     document.getElementById('splash-measure').addEventListener('click', () => { scene.startSweep(); showSweep(); });
+    scene.setGpuSweep(viewer);
     showSweep();
 
     const note = document.getElementById('splash-note');
+    const gpuNote = hasCompute ? '' : 'Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.';
     lesson.onFrame((dt) => {
       const t = timeline.advance(dt);
-      scene.advanceTo(t);
-      showNote(note, sentences(rejected, scene.draw(viewer)));
+      if (hasCompute && p.on !== 'CPU') scene.advanceOnGpu(viewer, t);
+      else scene.advanceTo(t);
+      showNote(note, sentences(rejected, scene.draw(viewer), gpuNote));
       sweepStep();
       markDrawn('#fig-splash');
       markDrawn('#fig-timing');

@@ -7,10 +7,11 @@
 //!   and the move PBF's constraint asks of it (exercises 15.2 to 15.4).
 //! - [`DamBreakFigure`]: SPH and PBF on the same 2D dam break side by side, SPH's stiffness and
 //!   time step the reader's (past its limit it stops, and says why).
-//! - [`SplashFigure`]: a 3D drop into a pool, either solver, with a step-time sweep of the grid
-//!   against all pairs.
+//! - [`SplashFigure`]: a 3D drop into a pool, either solver, on the CPU or (WebGPU) on the GPU
+//!   grid, with a step-time sweep of the CPU grid against all pairs and the GPU grid.
 
 use super::boids::StepTimeSweep;
+use super::gpu::MAX_GPU_FLUID_PARTICLES;
 use super::{failure_note, format_number, palette, Frame, DEFAULT_RUNNER};
 use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
 use crate::draw::{StrokeStyle, DOT_PX};
@@ -629,6 +630,11 @@ pub const DAM_PARTICLES: usize = 800;
 pub const DAM_FRAME_SEC: f32 = 1.0 / 60.0;
 /// The longest the timeline runs, seconds (the samples of the plots cover it).
 pub const DAM_DURATION_SEC: f32 = 4.0;
+/// The dam break's particles on screen: outlined dots this many CSS pixels across at any canvas
+/// size (the white of a particle at rest shows on the page's light background by its outline).
+/// The lattice is about 4.4 px apart at the page's default canvas, so neighbours overlap a little,
+/// as water does.
+pub const DAM_DOT_PX: f32 = 7.0;
 
 /// SPH and PBF on the same 2D dam break, side by side: SPH at its small step (Tait, `k` the
 /// reader's stiffness), PBF at 1/240 s. The state at time `t` is the state after the steps up to
@@ -752,7 +758,7 @@ impl DamBreakFigure {
                 let rho0 = f.params.rest_density;
                 for (p, rho) in f.positions.iter().zip(&f.densities) {
                     let color = super::noise::diverging_color((rho / rho0 - 1.0) / 0.5 * 0.6);
-                    frame.point(*p + offset, 0.4 * f.spacing, color.truncate());
+                    frame.marker(*p + offset, DAM_DOT_PX, color.truncate());
                 }
                 let corners = [
                     Vec3::new(0.0, size.y, 0.0),
@@ -806,6 +812,16 @@ pub const SPLASH_STEP_BUDGET: usize = 12_000;
 pub const SPLASH_ALL_PAIRS_MAX: usize = 4000;
 /// The step-time sweep's sizes, particles.
 pub const SPLASH_SWEEP_SIZES: [usize; 6] = [250, 500, 1000, 2000, 4000, 8000];
+/// The most GPU steps one call of [`SplashFigure::plan_gpu_steps`] queues, and only when the
+/// GPU has finished the ones before: a GPU slower than the timeline lets the fluid fall behind
+/// instead of piling up work. With many particles fewer: [`SPLASH_GPU_STEP_BUDGET`]
+/// particle-steps a call, at least one step (a million particles: one).
+pub const SPLASH_GPU_STEPS_PER_CALL: usize = 4;
+pub const SPLASH_GPU_STEP_BUDGET: usize = 400_000;
+/// The GPU sweep: the steps one timing queues at once (timed until the GPU has finished them),
+/// and the timings at each size.
+pub const SPLASH_GPU_TIMING_STEPS: usize = 4;
+pub const SPLASH_GPU_REPEATS: usize = 3;
 
 /// The splash's step-time sweep: [`SPLASH_SWEEP_SIZES`], grid against all pairs, slopes fitted
 /// from 1,000 particles.
@@ -823,17 +839,29 @@ fn splash_h(count: usize) -> f32 {
     SPLASH_H_SPACINGS * spacing_for(Dim::Three, Scene::Drop, count)
 }
 
-/// A 3D fluid for `count` particles: the splash's drop, or the sweep's dam break.
+/// A 3D fluid for `count` particles: the splash's drop, or the sweep's pool.
 fn fluid_3d(method: Method, scene: Scene, count: usize, vorticity: f32) -> Result<Fluid, String> {
+    fluid_3d_capped(method, scene, count, vorticity, crate::fluid::MAX_PARTICLES)
+}
+
+/// [`fluid_3d`] with a cap of `max` particles (the GPU's start is larger than the CPU's cap).
+fn fluid_3d_capped(
+    method: Method,
+    scene: Scene,
+    count: usize,
+    vorticity: f32,
+    max: usize,
+) -> Result<Fluid, String> {
     let mut params = FluidParams::default_3d(method);
     params.h = SPLASH_H_SPACINGS * spacing_for(Dim::Three, scene, count);
     params.vorticity = vorticity;
     params.s_corr = FIGURE_S_CORR;
-    Fluid::new(params, scene, count, 5)
+    Fluid::with_cap(params, scene, count, 5, max)
 }
 
-/// A ball of water dropped into a pool in 3D, stepped by SPH or PBF with the grid or all pairs,
-/// and the step-time sweep the page runs beside it.
+/// A ball of water dropped into a pool in 3D, stepped by SPH or PBF with the grid or all pairs
+/// on the CPU, or on the GPU grid (WebGPU compute: the page's binding holds the GPU fluid, this
+/// figure its start, its clock and its note), and the step-time sweep the page runs beside it.
 #[derive(Clone, Debug)]
 pub struct SplashFigure {
     start: Fluid,
@@ -845,6 +873,15 @@ pub struct SplashFigure {
     sweep: StepTimeSweep,
     /// The fluid the sweep times, at the size it asked for.
     bench: Option<Fluid>,
+    /// GPU mode: the particle count (0: the CPU steps the fluid) and the GPU fluid's start.
+    gpu_count: usize,
+    gpu_start: Option<Fluid>,
+    /// The GPU fluid's clock: the time after the steps queued so far, seconds.
+    gpu_time: f32,
+    /// The GPU grid's timings, per size of [`SPLASH_SWEEP_SIZES`] (ms per step), once the page
+    /// asked for them ([`SplashFigure::set_gpu_sweep`]).
+    gpu_sweep: bool,
+    gpu_times: Vec<Vec<f32>>,
 }
 
 impl Default for SplashFigure {
@@ -884,6 +921,11 @@ impl SplashFigure {
             vorticity: 0.0,
             sweep: splash_sweep(),
             bench: None,
+            gpu_count: 0,
+            gpu_start: None,
+            gpu_time: 0.0,
+            gpu_sweep: false,
+            gpu_times: vec![Vec::new(); SPLASH_SWEEP_SIZES.len()],
         }
     }
 
@@ -907,9 +949,21 @@ impl SplashFigure {
             ));
         }
         let same_fluid = (method, count, vorticity) == (self.method, self.count, self.vorticity);
+        // The GPU's start follows the solver and ε; it is built first, so an error changes
+        // nothing.
+        let gpu_start =
+            if self.gpu_count > 0 && (method, vorticity) != (self.method, self.vorticity) {
+                Some(self.gpu_fluid(method, self.gpu_count, vorticity)?)
+            } else {
+                None
+            };
         if !same_fluid {
             self.start = fluid_3d(method, Scene::Drop, count, vorticity)?;
         }
+        if let Some(start) = gpu_start {
+            self.gpu_start = Some(start);
+        }
+        self.gpu_time = 0.0;
         self.start.set_search(search);
         (self.method, self.count, self.search, self.vorticity) = (method, count, search, vorticity);
         self.fluid = self.start.clone();
@@ -955,40 +1009,17 @@ impl SplashFigure {
     /// box's edges; returns the note.
     pub fn draw(&self, frame: &mut Frame) -> String {
         let f = &self.fluid;
-        let size = box_size(Dim::Three);
         for (p, v) in f.positions.iter().zip(&f.velocities) {
             let speed = (v.length() / 3.0).min(1.0);
             let color = super::noise::diverging_color(1.2 * speed - 0.6).truncate();
             frame.point(*p, 0.45 * f.spacing, color);
         }
-        let corners = |i: usize| {
-            Vec3::new(
-                if i & 1 == 0 { 0.0 } else { size.x },
-                if i & 2 == 0 { 0.0 } else { size.y },
-                if i & 4 == 0 { 0.0 } else { size.z },
-            )
-        };
-        for i in 0..8 {
-            for bit in [1, 2, 4] {
-                if i & bit == 0 {
-                    frame.wide_line(corners(i), corners(i | bit), palette::GREY, 1.5);
-                }
-            }
-        }
-        frame.keep_box_in_view(Vec3::ZERO, size);
+        draw_box(frame);
         let search = match self.search {
             Search::Grid => "neighbours from the grid",
             Search::AllPairs => "neighbours by testing all pairs",
         };
-        let name = match (self.method, self.vorticity > 0.0) {
-            (Method::Sph, false) => "SPH".to_string(),
-            (Method::Sph, true) => "SPH (vorticity confinement is PBF's)".to_string(),
-            (Method::Pbf, false) => "PBF".to_string(),
-            (Method::Pbf, true) => format!(
-                "PBF with vorticity confinement ε = {}",
-                format_number(self.vorticity)
-            ),
-        };
+        let name = self.method_name();
         match f.exploded() {
             Some((t, why)) => format!("{name} stopped at t = {} s: {why}.", format_number(t)),
             None => {
@@ -1005,9 +1036,206 @@ impl SplashFigure {
         }
     }
 
-    /// Starts the step-time sweep again (the page's "measure" button).
+    /// The GPU fluid's start for `count` particles (the slider's count, or up to
+    /// [`MAX_GPU_FLUID_PARTICLES`]).
+    fn gpu_fluid(&self, method: Method, count: usize, vorticity: f32) -> Result<Fluid, String> {
+        fluid_3d_capped(
+            method,
+            Scene::Drop,
+            count,
+            vorticity,
+            MAX_GPU_FLUID_PARTICLES,
+        )
+    }
+
+    /// GPU mode with about `count` particles (whole, from [`SPLASH_MIN`] to
+    /// [`MAX_GPU_FLUID_PARTICLES`]), or the CPU with 0; the GPU fluid starts over. Nothing
+    /// changes on an error (a count over the cap among them).
+    pub fn set_gpu(&mut self, count: f32) -> Result<(), String> {
+        if count == 0.0 {
+            (self.gpu_count, self.gpu_start) = (0, None);
+            return Ok(());
+        }
+        let n = super::whole_number(
+            "GPU particles (0 for the CPU)",
+            count,
+            SPLASH_MIN,
+            MAX_GPU_FLUID_PARTICLES,
+        )?;
+        if n != self.gpu_count {
+            self.gpu_start = Some(self.gpu_fluid(self.method, n, self.vorticity)?);
+            self.gpu_count = n;
+        }
+        self.gpu_time = 0.0;
+        Ok(())
+    }
+
+    /// Whether the GPU steps the fluid.
+    pub fn gpu_mode(&self) -> bool {
+        self.gpu_count > 0
+    }
+
+    /// The GPU fluid's start (GPU mode only), for the binding to upload.
+    pub fn gpu_start(&self) -> Option<&Fluid> {
+        self.gpu_start.as_ref()
+    }
+
+    /// The GPU fluid's clock, seconds.
+    pub fn gpu_time(&self) -> f32 {
+        self.gpu_time
+    }
+
+    /// The GPU steps towards `time_sec`: `(start over, steps to queue)`. Back in time (more than
+    /// half a step) starts over from the start; ahead, at most [`SPLASH_GPU_STEPS_PER_CALL`]
+    /// steps (fewer with many particles: [`SPLASH_GPU_STEP_BUDGET`]), and none while `gpu_idle` is false (the GPU still runs the steps queued before).
+    pub fn plan_gpu_steps(
+        &mut self,
+        time_sec: f32,
+        gpu_idle: bool,
+    ) -> Result<(bool, usize), String> {
+        let t = super::in_range("time (s)", time_sec, 0.0, SPLASH_DURATION_SEC)?;
+        let start = self
+            .gpu_start
+            .as_ref()
+            .ok_or("GPU mode is off: choose a GPU count first")?;
+        let dt = start.params.dt;
+        let most =
+            (SPLASH_GPU_STEP_BUDGET / start.len().max(1)).clamp(1, SPLASH_GPU_STEPS_PER_CALL);
+        let restart = t + 0.5 * dt + 1e-6 < self.gpu_time;
+        if restart {
+            self.gpu_time = 0.0;
+        }
+        let mut steps = 0;
+        while (gpu_idle || restart) && steps < most && self.gpu_time + 0.5 * dt <= t {
+            self.gpu_time += dt;
+            steps += 1;
+        }
+        Ok((restart, steps))
+    }
+
+    /// GPU mode: the box's edges (the particles are the GPU's sprites, coloured by speed as
+    /// [`SplashFigure::draw`] colours them); returns the note.
+    pub fn draw_gpu(&self, frame: &mut Frame) -> String {
+        draw_box(frame);
+        let Some(f) = &self.gpu_start else {
+            return "GPU mode is off.".into();
+        };
+        format!(
+            "{} on the GPU, {} particles, neighbours from the GPU grid, h = {} m, t = {} s. The steps are queued and run beside the page, a few a frame once the GPU has finished the ones before (it falls behind the timeline when it is slower); the fluid stays on the GPU, so this note has no statistics.",
+            self.method_name(),
+            f.len(),
+            format_number(f.params.h),
+            format_number(self.gpu_time),
+        )
+    }
+
+    /// The solver's name, with vorticity confinement when it is on.
+    fn method_name(&self) -> String {
+        match (self.method, self.vorticity > 0.0) {
+            (Method::Sph, false) => "SPH".to_string(),
+            (Method::Sph, true) => "SPH (vorticity confinement is PBF's)".to_string(),
+            (Method::Pbf, false) => "PBF".to_string(),
+            (Method::Pbf, true) => format!(
+                "PBF with vorticity confinement ε = {}",
+                format_number(self.vorticity)
+            ),
+        }
+    }
+
+    /// Starts the step-time sweep again (the page's "measure" button), the GPU's timings too.
     pub fn start_sweep(&mut self) {
         self.sweep = splash_sweep();
+        self.gpu_times = vec![Vec::new(); SPLASH_SWEEP_SIZES.len()];
+    }
+
+    /// Whether the sweep times the GPU grid as well (the page says so where WebGPU is there);
+    /// starts the sweep again.
+    pub fn set_gpu_sweep(&mut self, on: bool) {
+        self.gpu_sweep = on;
+        self.start_sweep();
+    }
+
+    /// The size the sweep times the GPU grid at next, once the CPU's timings are done
+    /// ([`SPLASH_GPU_REPEATS`] at each size, [`SPLASH_GPU_TIMING_STEPS`] steps each), or `None`.
+    /// The binding uploads [`SplashFigure::gpu_timing_fluid`] of that size, times the steps,
+    /// then calls [`SplashFigure::record_gpu_sweep`].
+    pub fn next_gpu_timing(&mut self) -> Option<usize> {
+        if !self.gpu_sweep || !self.sweep.done() {
+            return None;
+        }
+        let k = self
+            .gpu_times
+            .iter()
+            .position(|t| t.len() < SPLASH_GPU_REPEATS)?;
+        Some(SPLASH_SWEEP_SIZES[k])
+    }
+
+    /// The fluid the GPU sweep times at `count` particles: the CPU sweep's 3D SPH pool.
+    pub fn gpu_timing_fluid(count: usize) -> Result<Fluid, String> {
+        fluid_3d(Method::Sph, Scene::Pool, count, 0.0)
+    }
+
+    /// Records the GPU timing [`SplashFigure::next_gpu_timing`] asked for, ms per step.
+    pub fn record_gpu_sweep(&mut self, ms: f32) -> Result<(), String> {
+        let ms = super::in_range("GPU step time (ms)", ms, 0.0, 1e6)?;
+        let k = self
+            .gpu_times
+            .iter()
+            .position(|t| t.len() < SPLASH_GPU_REPEATS)
+            .filter(|_| self.gpu_sweep && self.sweep.done())
+            .ok_or("no GPU timing is due")?;
+        self.gpu_times[k].push(ms);
+        Ok(())
+    }
+
+    /// The sweep's plot rows, flat: the CPU sweep's nine columns (see
+    /// [`StepTimeSweep::plot_samples`]), then the GPU grid's median, fastest and slowest (NaN
+    /// until timed).
+    pub fn sweep_samples(&self) -> Vec<f32> {
+        let cpu = self.sweep.plot_samples();
+        let mut out = Vec::with_capacity(cpu.len() / 9 * 12);
+        for row in cpu.chunks_exact(9) {
+            out.extend_from_slice(row);
+            let k = SPLASH_SWEEP_SIZES.iter().position(|&n| n as f32 == row[0]);
+            let t = k
+                .map(|k| &self.gpu_times[k])
+                .filter(|t| t.len() == SPLASH_GPU_REPEATS);
+            match t {
+                Some(t) => {
+                    let mut v = t.clone();
+                    v.sort_by(f32::total_cmp);
+                    out.extend([v[v.len() / 2], v[0], v[v.len() - 1]]);
+                }
+                None => out.extend([f32::NAN; 3]),
+            }
+        }
+        out
+    }
+
+    /// The sweep's note: the CPU's, then where the GPU grid stands.
+    pub fn sweep_note(&mut self) -> String {
+        let mut note = self.sweep.note();
+        if !self.gpu_sweep {
+            return note;
+        }
+        if let Some(n) = self.next_gpu_timing() {
+            if self.sweep.done() {
+                note.push_str(&format!(" Now timing the GPU grid at N = {n}…"));
+            }
+            return note;
+        }
+        let k = SPLASH_SWEEP_SIZES.len() - 1;
+        let mut v = self.gpu_times[k].clone();
+        if v.is_empty() {
+            return note;
+        }
+        v.sort_by(f32::total_cmp);
+        note.push_str(&format!(
+            " The GPU grid (WebGPU compute, {SPLASH_GPU_TIMING_STEPS} steps queued at once and timed until the GPU has finished them) takes {:.2} ms a step at N = {}.",
+            v[v.len() / 2],
+            SPLASH_SWEEP_SIZES[k]
+        ));
+        note
     }
 
     /// The search the sweep times next ("grid" or "all-pairs"), with the timing fluid (a 3D
@@ -1046,6 +1274,26 @@ impl SplashFigure {
     pub fn sweep(&mut self) -> &mut StepTimeSweep {
         &mut self.sweep
     }
+}
+
+/// The 3D box's edges, and the box kept in view.
+fn draw_box(frame: &mut Frame) {
+    let size = box_size(Dim::Three);
+    let corners = |i: usize| {
+        Vec3::new(
+            if i & 1 == 0 { 0.0 } else { size.x },
+            if i & 2 == 0 { 0.0 } else { size.y },
+            if i & 4 == 0 { 0.0 } else { size.z },
+        )
+    };
+    for i in 0..8 {
+        for bit in [1, 2, 4] {
+            if i & bit == 0 {
+                frame.wide_line(corners(i), corners(i | bit), palette::GREY, 1.5);
+            }
+        }
+    }
+    frame.keep_box_in_view(Vec3::ZERO, size);
 }
 
 /// The sweep's pool's kernel radius for `count` particles.

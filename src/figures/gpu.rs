@@ -657,3 +657,122 @@ pub fn flock_stats(positions: &[Vec3], velocities: &[Vec3]) -> FlockStats {
         mean_nearest_m: nearest / k,
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Fluids (WebGPU only): SPH and PBF on the GPU grid.
+//
+// `src/render/fluid.rs` and `shaders/fluid.wgsl` step a `crate::fluid::Fluid` one thread per
+// particle, its neighbours found in the GPU grid of `src/render/grid.rs` (cells one kernel radius
+// wide over the box). What the shader receives is packed here, with its caps.
+
+use crate::fluid::{Dim, Eos, Fluid, Kernels as FluidKernels, Method};
+
+/// The most particles the GPU fluid steps: 2²⁰ = 1,048,576, the GPU grid's cap
+/// ([`MAX_GPU_GRID_BOIDS`]). Five state buffers of 16 bytes a particle (16 MiB each at the cap)
+/// and the sprites (32 MiB) stay under the 128 MiB WebGPU guarantees per storage binding, and a
+/// pass is 16,384 workgroups of 64 (at most 65,535 per dispatch).
+pub const MAX_GPU_FLUID_PARTICLES: usize = MAX_GPU_GRID_BOIDS;
+/// The most walls a GPU fluid takes: the 3D box's six.
+pub const MAX_GPU_FLUID_WALLS: usize = 6;
+/// `vec4` rows of [`fluid_rows`]: eight of parameters, two colours, then the walls.
+pub const GPU_FLUID_ROWS: usize = 10 + MAX_GPU_FLUID_WALLS;
+/// The speed the GPU fluid's sprites are coloured red at (blue at rest, through grey), m/s: as
+/// the CPU splash draws it.
+pub const GPU_FLUID_RED_SPEED: f32 = 3.0;
+
+/// Whether the GPU steps a fluid of `n` particles.
+///
+/// # Errors
+/// `n` of 0 or over [`MAX_GPU_FLUID_PARTICLES`].
+pub fn check_gpu_fluid(n: usize) -> Result<(), String> {
+    if n == 0 || n > MAX_GPU_FLUID_PARTICLES {
+        return Err(format!(
+            "GPU fluid: the particle count must lie in [1, {MAX_GPU_FLUID_PARTICLES}], got {n}"
+        ));
+    }
+    Ok(())
+}
+
+/// The GPU grid of `fluid`: cubic cells one kernel radius `h` wide over its box enlarged by `h`
+/// (as the CPU fluid's grid), so the neighbours within `h` lie in the 3 × 3 × 3 cells around a
+/// particle's own (3 × 3 in 2D, where the slab is one cell deep).
+///
+/// # Errors
+/// What [`GridLayout::cubic`] rejects.
+pub fn fluid_layout(fluid: &Fluid) -> Result<GridLayout, String> {
+    let h = fluid.params.h;
+    let size = crate::fluid::box_size(fluid.params.dim);
+    GridLayout::cubic(Vec3::splat(-h), size + Vec3::splat(h), h)
+}
+
+/// The uniform block of `fluid`'s GPU step (`Params` in `shaders/fluid.wgsl`): the kernels'
+/// constants of [`FluidKernels::constants`], the equation of state, the collisions' box walls
+/// and obstacle, PBF's relaxation, `s_corr` (already times [`Fluid::lambda_unit`]), XSPH and
+/// vorticity confinement.
+///
+/// # Errors
+/// Invalid parameters, what [`check_gpu_fluid`] rejects, more than [`MAX_GPU_FLUID_WALLS`]
+/// walls.
+pub fn fluid_rows(fluid: &Fluid) -> Result<Vec<Row>, String> {
+    let p = &fluid.params;
+    p.validate()?;
+    check_gpu_fluid(fluid.len())?;
+    if fluid.walls.len() > MAX_GPU_FLUID_WALLS {
+        return Err(format!(
+            "GPU fluid: at most {MAX_GPU_FLUID_WALLS} walls, got {}",
+            fluid.walls.len()
+        ));
+    }
+    let kern = FluidKernels::new(p.h, p.dim);
+    let [poly6, spiky_gradient, viscosity_laplacian] = kern.constants();
+    let eos = match p.eos {
+        Eos::IdealGas => 0.0,
+        Eos::Tait => 1.0,
+    };
+    let two_d = if p.dim == Dim::Two { 1.0 } else { 0.0 };
+    let (g, o) = (p.gravity, fluid.obstacle);
+    let mut rows = vec![
+        frow(p.h, p.h * p.h, fluid.mass, p.dt),
+        frow(
+            poly6,
+            spiky_gradient,
+            viscosity_laplacian,
+            kern.poly6((0.2 * p.h) * (0.2 * p.h)),
+        ),
+        frow(p.rest_density, p.stiffness, p.viscosity, eos),
+        frow(g.x, g.y, g.z, p.restitution),
+        frow(
+            p.friction,
+            p.relaxation,
+            p.s_corr * fluid.lambda_unit(),
+            p.xsph,
+        ),
+        frow(
+            p.vorticity,
+            two_d,
+            0.45 * fluid.spacing,
+            GPU_FLUID_RED_SPEED,
+        ),
+        match o {
+            Some(s) => frow(s.center.x, s.center.y, s.center.z, s.radius),
+            None => [0; 4],
+        },
+        [
+            fluid.len() as u32,
+            fluid.walls.len() as u32,
+            matches!(p.method, Method::Pbf) as u32,
+            0,
+        ],
+    ];
+    // The sprites' colours at rest and at GPU_FLUID_RED_SPEED, as `noise::diverging_color`.
+    for c in [palette::BLUE, palette::RED] {
+        rows.push(frow(c.x, c.y, c.z, 0.85));
+    }
+    for k in 0..MAX_GPU_FLUID_WALLS {
+        rows.push(match fluid.walls.get(k) {
+            Some(w) => frow(w.normal.x, w.normal.y, w.normal.z, w.offset),
+            None => [0; 4],
+        });
+    }
+    Ok(rows)
+}

@@ -79,6 +79,13 @@ impl Kernels {
         }
     }
 
+    /// The constants of poly6, spiky's gradient and the viscosity Laplacian, in that order (the
+    /// numbers in front of the table's formulas, without their sign): what a GPU step uploads,
+    /// so that its kernels are these.
+    pub fn constants(&self) -> [f32; 3] {
+        [self.poly6, self.spiky_gradient, self.viscosity_laplacian]
+    }
+
     /// poly6 at squared distance `r2` (zero from `h²` on).
     #[inline]
     pub fn poly6(&self, r2: f32) -> f32 {

@@ -321,10 +321,23 @@ impl Fluid {
     /// Fills `scene` with about `count` particles (the lattice's exact count may differ by a few
     /// percent), at rest. The spacing follows from the scene's water volume and the count.
     pub fn new(params: FluidParams, scene: Scene, count: usize, seed: u32) -> Result<Self, String> {
+        Self::with_cap(params, scene, count, seed, MAX_PARTICLES)
+    }
+
+    /// As [`Fluid::new`], with `max_particles` in place of [`MAX_PARTICLES`]: the GPU step's
+    /// start ([`crate::figures::gpu::MAX_GPU_FLUID_PARTICLES`]), which the CPU only fills and
+    /// uploads.
+    pub fn with_cap(
+        params: FluidParams,
+        scene: Scene,
+        count: usize,
+        seed: u32,
+        max_particles: usize,
+    ) -> Result<Self, String> {
         params.validate()?;
-        if !(1..=MAX_PARTICLES).contains(&count) {
+        if !(1..=max_particles).contains(&count) {
             return Err(format!(
-                "particle count must be from 1 to {MAX_PARTICLES}, got {count}"
+                "particle count must be from 1 to {max_particles}, got {count}"
             ));
         }
         let dim = params.dim;
@@ -387,9 +400,9 @@ impl Fluid {
                 q.length() <= r
             });
         }
-        if positions.len() > MAX_PARTICLES {
+        if positions.len() > max_particles {
             return Err(format!(
-                "the scene would hold {} particles, more than {MAX_PARTICLES}",
+                "the scene would hold {} particles, more than {max_particles}",
                 positions.len()
             ));
         }
@@ -459,6 +472,12 @@ impl Fluid {
         }
         self.obstacle = obstacle;
         Ok(())
+    }
+
+    /// PBF's `1 / Σ_k |∇_k C|²` of a particle in the lattice at rest, the unit `s_corr` is
+    /// measured in (see [`FluidParams::s_corr`]).
+    pub fn lambda_unit(&self) -> f32 {
+        self.lambda_unit
     }
 
     /// When and why the run stopped, once a step exploded.

@@ -18,7 +18,7 @@ use std::cell::Cell;
 use std::rc::Rc;
 
 /// Raises `limits` to what the compute paths need: WebGPU's guaranteed minimums (8 storage
-/// buffers per stage: the boids' grid step binds 5).
+/// buffers per stage: the fluid's passes bind 8, the boids' grid step 5).
 pub(super) fn add_compute_limits(limits: &mut wgpu::Limits) {
     let d = wgpu::Limits::downlevel_defaults();
     limits.max_storage_buffers_per_shader_stage =

@@ -17,6 +17,7 @@ pub(crate) use shader_source;
 
 mod compute;
 mod context;
+mod fluid;
 mod grid;
 mod renderer;
 mod skin;
@@ -24,6 +25,7 @@ mod texture;
 
 pub use compute::{BoidsCompute, ParticlesCompute, ReadBack};
 pub use context::{BackendChoice, Gpu};
+pub use fluid::FluidCompute;
 pub use grid::GpuGrid;
 pub use renderer::{Frame, MeshId, Renderer};
 pub use skin::SkinPass;

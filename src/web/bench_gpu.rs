@@ -121,3 +121,50 @@ pub async fn bench_gpu_boids(
     on_gpu.finish(&gpu).await.map_err(err)?;
     Ok((now_ms() - start) / steps as f64)
 }
+
+/// Milliseconds per GPU step of a 3D dam break of `count ∈ [1000, 2^20]` particles at rest
+/// (`method` "sph" or "pbf" with 4 iterations; `h` at 2 spacings, about 33 neighbours; SPH's time
+/// step for a speed of sound of 20 m/s, as the CPU's [`crate::fluid::benchmark_fluid`], which
+/// starts after 0.1 s of fall: here the water is let go, since the CPU cannot run a million
+/// particles first). The GPU grid is built every step. `steps` in [1, 1000], `count × steps` at
+/// most 2²⁶.
+#[wasm_bindgen(js_name = benchGpuFluid)]
+pub async fn bench_gpu_fluid(
+    canvas: JsValue,
+    method: JsValue,
+    count: f64,
+    steps: f64,
+) -> Result<f64, JsError> {
+    use crate::figures::gpu::MAX_GPU_FLUID_PARTICLES;
+    use crate::fluid::{spacing_for, Dim, Fluid, FluidParams, Method, Scene};
+    let canvas = super::canvas("canvas", canvas)?;
+    let method = match super::string("method", &method)?.as_str() {
+        "sph" => Method::Sph,
+        "pbf" => Method::Pbf,
+        other => {
+            return Err(JsError::new(&format!(
+                "method must be \"sph\" or \"pbf\", got {other:?}"
+            )))
+        }
+    };
+    let count = super::whole_in("count", count, 1000, MAX_GPU_FLUID_PARTICLES)?;
+    let steps = super::whole("steps", steps)?;
+    super::check_work("count", count as u64, steps, 1 << 26)?;
+    check_steps(steps)?;
+    let err = |e: String| JsError::new(&e);
+    let mut params = FluidParams::default_3d(method);
+    params.h = 2.0 * spacing_for(Dim::Three, Scene::DamBreak, count);
+    if method == Method::Sph {
+        params.dt = 0.4 * params.h / 20.0;
+    }
+    let fluid =
+        Fluid::with_cap(params, Scene::DamBreak, count, 1, MAX_GPU_FLUID_PARTICLES).map_err(err)?;
+    let gpu = webgpu(canvas).await?;
+    let mut on_gpu = crate::render::FluidCompute::new(&gpu, &fluid).map_err(err)?;
+    on_gpu.step(&gpu, 1);
+    on_gpu.finish(&gpu).await.map_err(err)?;
+    let start = now_ms();
+    on_gpu.step(&gpu, steps);
+    on_gpu.finish(&gpu).await.map_err(err)?;
+    Ok((now_ms() - start) / steps as f64)
+}

@@ -191,10 +191,17 @@ impl Default for DamBreakScene {
     }
 }
 
-/// A 3D drop into a pool, and the step-time sweep of the grid against all pairs.
+/// A 3D drop into a pool, on the CPU or on the GPU grid, and the step-time sweep of the CPU
+/// grid against all pairs and the GPU grid.
 #[wasm_bindgen]
 pub struct SplashScene {
     scene: SplashFigure,
+    /// The fluid on the GPU, in GPU mode (WebGPU only).
+    gpu: Option<crate::render::FluidCompute>,
+    /// The viewer's generation `gpu` was made in (see `Viewer::renewed`).
+    gpu_seen: u32,
+    /// The GPU sweep's fluid and its particle count.
+    timing: Option<(usize, crate::render::FluidCompute)>,
 }
 
 #[wasm_bindgen]
@@ -203,7 +210,70 @@ impl SplashScene {
     pub fn new() -> SplashScene {
         SplashScene {
             scene: SplashFigure::new(),
+            gpu: None,
+            gpu_seen: 0,
+            timing: None,
         }
+    }
+    /// Steps the splash on the GPU grid with about `count` particles (a whole number from 500 to
+    /// 1,048,576), or on the CPU with 0; the GPU fluid starts over. An error on WebGL2 (no
+    /// compute shaders), saying so, or for a count out of range; nothing changes on an error.
+    #[wasm_bindgen(js_name = setGpu)]
+    pub fn set_gpu(&mut self, viewer: &Viewer, count: f64) -> Result<(), JsError> {
+        let count = if count == 0.0 {
+            0
+        } else {
+            super::whole_in(
+                "GPU particles (0 for the CPU)",
+                count,
+                crate::figures::fluid::SPLASH_MIN,
+                crate::figures::gpu::MAX_GPU_FLUID_PARTICLES,
+            )?
+        };
+        if count != 0 && !viewer.gpu.compute {
+            return Err(JsError::new(&format!(
+                "GPU compute needs WebGPU; this figure runs on {}",
+                viewer.gpu.backend_name
+            )));
+        }
+        self.scene.set_gpu(count as f32).map_err(js)?;
+        self.gpu = None; // uploaded from the figure's start at the next step
+        Ok(())
+    }
+    /// GPU mode's `advanceTo`: queues the steps towards `time_sec` on the GPU (they run while
+    /// the page goes on), a few a call and only once the GPU has finished the ones before.
+    /// Returns the steps queued.
+    #[wasm_bindgen(js_name = advanceOnGpu)]
+    pub fn advance_on_gpu(&mut self, viewer: &Viewer, time_sec: f32) -> Result<usize, JsError> {
+        if !self.scene.gpu_mode() {
+            return Err(JsError::new(
+                "GPU mode is off: call setGpu(viewer, count) first",
+            ));
+        }
+        if viewer.renewed(&mut self.gpu_seen) {
+            self.gpu = None;
+        }
+        if self.gpu.is_none() {
+            // A new GPU fluid starts from the start: its clock too.
+            self.scene
+                .set_gpu(self.scene.gpu_start().map_or(0, |f| f.len()) as f32)
+                .ok();
+        }
+        let idle = self.gpu.as_ref().is_none_or(|g| g.idle());
+        let (restart, steps) = self.scene.plan_gpu_steps(time_sec, idle).map_err(js)?;
+        if restart || self.gpu.is_none() {
+            let start = self
+                .scene
+                .gpu_start()
+                .ok_or_else(|| JsError::new("GPU mode is off"))?;
+            self.gpu = Some(
+                crate::render::FluidCompute::new(&viewer.gpu, start)
+                    .map_err(|e| JsError::new(&e))?,
+            );
+        }
+        let gpu = self.gpu.as_mut().expect("made above");
+        gpu.step(&viewer.gpu, steps);
+        Ok(steps)
     }
     /// The solver ("SPH" or "PBF"), the particle count (500 to 10,000; all pairs at most 4,000),
     /// the search ("grid" or "all pairs") and PBF's vorticity confinement (0 to 0.5); starts
@@ -219,7 +289,9 @@ impl SplashScene {
         let search = super::string("search", &search)?;
         self.scene
             .set(&method, count, &search, vorticity)
-            .map_err(js)
+            .map_err(js)?;
+        self.gpu = None; // the GPU fluid starts over from the figure's start too
+        Ok(())
     }
     #[wasm_bindgen(js_name = durationSec)]
     pub fn duration_sec(&self) -> f32 {
@@ -231,7 +303,16 @@ impl SplashScene {
         self.scene.advance_to(time_sec).map_err(js)
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
-        let note = self.scene.draw(&mut viewer.renderer.frame);
+        let note = match (&self.gpu, self.scene.gpu_mode()) {
+            (Some(gpu), true) => {
+                viewer.renderer.gpu_points = vec![gpu.sprites()];
+                self.scene.draw_gpu(&mut viewer.renderer.frame)
+            }
+            _ => {
+                viewer.renderer.gpu_points.clear();
+                self.scene.draw(&mut viewer.renderer.frame)
+            }
+        };
         viewer.present()?;
         Ok(note)
     }
@@ -239,6 +320,60 @@ impl SplashScene {
     #[wasm_bindgen(js_name = startSweep)]
     pub fn start_sweep(&mut self) {
         self.scene.start_sweep();
+    }
+    /// Whether the sweep times the GPU grid as well: where `viewer` has WebGPU. Starts the
+    /// sweep again.
+    #[wasm_bindgen(js_name = setGpuSweep)]
+    pub fn set_gpu_sweep(&mut self, viewer: &Viewer) {
+        self.scene.set_gpu_sweep(viewer.gpu.compute);
+        self.timing = None;
+    }
+    /// The size the sweep times the GPU grid at next (0: none due). Uploads that fluid (the
+    /// CPU sweep's pool) and queues one step that is not timed.
+    #[wasm_bindgen(js_name = gpuSweepNext)]
+    pub fn gpu_sweep_next(&mut self, viewer: &Viewer) -> Result<f64, JsError> {
+        let Some(n) = self.scene.next_gpu_timing() else {
+            return Ok(0.0);
+        };
+        if self.timing.as_ref().map(|t| t.0) != Some(n) {
+            let fluid = SplashFigure::gpu_timing_fluid(n).map_err(js)?;
+            let gpu = crate::render::FluidCompute::new(&viewer.gpu, &fluid)
+                .map_err(|e| JsError::new(&e))?;
+            self.timing = Some((n, gpu));
+        }
+        let (_, gpu) = self.timing.as_mut().expect("made above");
+        gpu.step(&viewer.gpu, 1);
+        Ok(n as f64)
+    }
+    /// Queues the GPU sweep's timed steps (call once `gpuSettled` has resolved); returns how
+    /// many.
+    #[wasm_bindgen(js_name = gpuTimingSteps)]
+    pub fn gpu_timing_steps(&mut self, viewer: &Viewer) -> Result<usize, JsError> {
+        let (_, gpu) = self
+            .timing
+            .as_mut()
+            .ok_or_else(|| JsError::new("ask gpuSweepNext first"))?;
+        let steps = crate::figures::fluid::SPLASH_GPU_TIMING_STEPS;
+        gpu.step(&viewer.gpu, steps);
+        Ok(steps)
+    }
+    /// A promise that resolves once the GPU has finished the sweep's steps queued so far.
+    #[wasm_bindgen(js_name = gpuSettled)]
+    pub fn gpu_settled(&self) -> Result<js_sys::Promise, JsError> {
+        let (_, gpu) = self
+            .timing
+            .as_ref()
+            .ok_or_else(|| JsError::new("ask gpuSweepNext first"))?;
+        let settled = gpu.settled();
+        Ok(wasm_bindgen_futures::future_to_promise(async move {
+            settled.await;
+            Ok(JsValue::UNDEFINED)
+        }))
+    }
+    /// Records the GPU timing `gpuSweepNext` asked for, milliseconds per step.
+    #[wasm_bindgen(js_name = gpuSweepRecord)]
+    pub fn gpu_sweep_record(&mut self, ms: f32) -> Result<(), JsError> {
+        self.scene.record_gpu_sweep(ms).map_err(js)
     }
     /// The search the sweep times next ("grid" or "all-pairs"), or "" when it is done.
     #[wasm_bindgen(js_name = sweepNext)]
@@ -262,14 +397,14 @@ impl SplashScene {
         self.scene.record_sweep(ms).map_err(js)
     }
     /// `[N, grid median, fastest, slowest, all-pairs median, fastest, slowest, slope-1 guide,
-    /// slope-2 guide]` per size, ms (NaN: not timed).
+    /// slope-2 guide, GPU grid median, fastest, slowest]` per size, ms (NaN: not timed).
     #[wasm_bindgen(js_name = sweepSamples)]
     pub fn sweep_samples(&mut self) -> Vec<f32> {
-        self.scene.sweep().plot_samples()
+        self.scene.sweep_samples()
     }
     #[wasm_bindgen(js_name = sweepNote)]
     pub fn sweep_note(&mut self) -> String {
-        self.scene.sweep().note()
+        self.scene.sweep_note()
     }
 }
 

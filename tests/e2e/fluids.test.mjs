@@ -2,7 +2,7 @@
 // sliders; the drag is the canvas's own path), and the note follows it out of the water.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl, pixelStats, meanDifference } from './browser.mjs';
 
 const site = serveDist();
 
@@ -40,6 +40,109 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse', asyn
     assert.ok(Number(after[0]) > Number(before[0]) && Number(after[1]) > Number(before[1]) + 0.2, `${before} -> ${after}`);
     const note = await page.locator('#density-note').textContent();
     assert.match(note, /from 0 neighbours/, note);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+/** Pixels of the splash's canvas close to the particles' blue at rest (shaded #1f6fd6). */
+async function bluePixels(page) {
+  await pixelStats(page, page.locator('#fig-splash .stage canvas').first(), 'blue');
+  return page.evaluate(() => {
+    const data = window.__shots.blue;
+    let n = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+      if (b > 90 && b > r + 50 && b > g + 25) n++;
+    }
+    return n;
+  });
+}
+
+/** Moves the splash's timeline to `at` (in 1/1000 of its duration) and waits for frames. */
+async function scrubTo(page, at) {
+  const scrub = page.locator('#fig-splash .scrub');
+  await scrub.fill(String(at));
+  await scrub.dispatchEvent('input');
+  await frames(page, 4);
+}
+
+test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the slider\'s count or 100,000', async () => {
+  const context = await launch('webgpu');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgpu`, { width: 1280, height: 900 });
+    const fig = '#fig-splash';
+    await page.locator(fig).scrollIntoViewIfNeeded();
+    // Paused, so both counts see the fluid at rest.
+    const play = page.locator('#splash-timeline .play');
+    if ((await play.textContent()).includes('pause')) await play.click();
+    await scrubTo(page, 0);
+    const cpu = await bluePixels(page);
+    await setControl(page, fig, 'step on', 'GPU');
+    await scrubTo(page, 0);
+    await page.waitForTimeout(1000);
+    await frames(page, 4);
+    const note = await page.locator('#splash-note').textContent();
+    assert.match(note, /^PBF on the GPU, \d+ particles, neighbours from the GPU grid/, note);
+    // The same fluid at rest drawn from the GPU's sprites: about as many blue pixels.
+    const gpu = await bluePixels(page);
+    await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/15-fluids-splash-gpu-webgpu.png' });
+    assert.ok(cpu > 2000 && gpu > 0.7 * cpu && gpu < 1.4 * cpu, `blue pixels: CPU ${cpu}, GPU ${gpu}`);
+    // The splash: at 0.3 s the drop has hit the pool (it falls 0.28 m, 0.24 s), once the GPU's
+    // steps have caught up with the timeline (the note's time): the picture is no longer the
+    // fluid at rest.
+    await pixelStats(page, page.locator(`${fig} .stage canvas`).first(), 'rest');
+    await scrubTo(page, 100);
+    await page.waitForFunction(() => {
+      const t = /t = ([\d.]+) s/.exec(document.getElementById('splash-note').textContent);
+      return t && Number(t[1]) >= 0.29;
+    }, null, { timeout: 120_000 });
+    await frames(page, 4);
+    await pixelStats(page, page.locator(`${fig} .stage canvas`).first(), 'splash');
+    await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/15-fluids-splash-gpu-0.3s-webgpu.png' });
+    const change = await meanDifference(page, 'rest', 'splash');
+    assert.ok(change > 3, `the splash differs from the rest by ${change} per channel`);
+    // A larger fluid of its own: the note gives its count.
+    await setControl(page, fig, 'step on', 'GPU, 100,000 particles');
+    await frames(page, 4);
+    await page.waitForTimeout(3000);
+    const big = await page.locator('#splash-note').textContent();
+    const n = Number(/on the GPU, (\d+) particles/.exec(big)?.[1]);
+    assert.ok(n > 70_000 && n <= 100_000, big);
+    await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/15-fluids-splash-gpu-100k-webgpu.png' });
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 15 on WebGPU: the step-time sweep times the GPU grid after the CPU grid and all pairs', async () => {
+  const context = await launch('webgpu');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgpu`, { width: 1280, height: 900 });
+    await page.locator('#fig-timing').scrollIntoViewIfNeeded();
+    // The CPU's 60 timings, then the GPU's 18 (each a few queued steps of up to 8,000 particles).
+    await page.waitForFunction(() => /The GPU grid \(WebGPU compute/.test(document.getElementById('splash-sweep').textContent), null, { timeout: 300_000 });
+    const note = await page.locator('#splash-sweep').textContent();
+    assert.match(note, /takes [\d.]+ ms a step at N = 8000/, note);
+    await page.locator('#fig-timing').screenshot({ path: 'tests/screenshots/15-fluids-timing-gpu-webgpu.png' });
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 15 on WebGL2: the GPU switch is off and the note says why', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgl2`, { width: 1280, height: 900 });
+    await page.locator('#fig-splash').scrollIntoViewIfNeeded();
+    await frames(page, 4);
+    const control = page.locator('#fig-splash .lil-controller', { hasText: 'step on' }).first();
+    assert.match(await control.getAttribute('class'), /disabled/);
+    const note = await page.locator('#splash-note').textContent();
+    assert.match(note, /Step on GPU needs WebGPU: this browser draws with WebGL2/, note);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

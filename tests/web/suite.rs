@@ -16,6 +16,8 @@ use wasm_bindgen_test::*;
 mod web_cores;
 #[path = "gpu_compute.rs"]
 mod gpu_compute;
+#[path = "gpu_fluid.rs"]
+mod gpu_fluid;
 #[path = "gpu_skin.rs"]
 mod gpu_skin;
 #[path = "render.rs"]
