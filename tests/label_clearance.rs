@@ -110,3 +110,48 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_curves() {
         }
     }
 }
+
+#[test]
+fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
+    // Over the whole twist slider, with the fix on and off: every label is shown where the
+    // figure put it (no leader line from the page's layout), clear of every dot and line. Near
+    // 0° and 360° three points meet at 1, so their labels are stacked by the figure.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::skinning::SignFigure;
+    for fix in [true, false] {
+        for deg in (0..=360).step_by(5) {
+            let mut scene = SignFigure::new();
+            scene.set_fix(fix);
+            scene.set_twist_deg(deg as f32).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, MeshId(1)).unwrap();
+            assert_eq!(frame.labels.len(), 6);
+            let name = format!("09 sign at {deg}°, fix {fix}");
+            for size in CANVASES {
+                // The page's camera (lessons/09-skinning/lesson.js).
+                let camera = page_camera([0.8, 1.0, 0.0, 5.5, 0.0, 0.1], &frame, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let labels = project_labels(&frame.labels, view_proj, size.x, size.y);
+                let boxes: Vec<LabelBox> = labels
+                    .iter()
+                    .map(|l| LabelBox {
+                        anchor: Vec2::new(l.x_px, l.y_px),
+                        size: Vec2::new(7.5 * l.text.chars().count() as f32, 16.0),
+                        left: l.left,
+                        visible: l.visible,
+                        priority: l.priority,
+                    })
+                    .collect();
+                for (p, l) in place(&boxes, size).iter().zip(&labels) {
+                    assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
+                    assert!(
+                        p.leader_to.is_none(),
+                        "{name} on {size}: {:?} moved off its place",
+                        l.text
+                    );
+                }
+                assert_clear(&name, &frame, &camera, size);
+            }
+        }
+    }
+}

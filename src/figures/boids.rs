@@ -1432,7 +1432,6 @@ impl RulesFigure {
     pub fn draw(&self, frame: &mut Frame) -> String {
         let dims = self.dims();
         let s = self.cell_size;
-        let (grid_lo, grid_hi) = self.grid_box();
         let (view_lo, view_hi) = self.view_box();
         frame.keep_box_in_view(view_lo, view_hi);
         // Grid lines on y = 0 (the grid's cells seen from above).
