@@ -68,8 +68,8 @@ fn assert_clear(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2) {
                 let inside = p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all();
                 assert!(
                     !inside,
-                    "{name} on {size}: label {text:?} at {:?} crosses a line at {p}",
-                    rect.min
+                    "{name} on {size}: label {text:?} at {:?} crosses a line at {p} (colour {:?})",
+                    rect.min, s.color
                 );
             }
         }
@@ -150,6 +150,33 @@ fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
                         l.text
                     );
                 }
+                assert_clear(&name, &frame, &camera, size);
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_07_law_of_cosines_labels_keep_off_its_lines() {
+    // Figure 1's page camera (lessons/07-inverse-kinematics/lesson.js), pole at 0° (the page's
+    // start and its reset), at the home target and others above and beside the root: the
+    // labels of sides a, b and d, of α and of the pole keep off the dashed lines, the circle of
+    // middle joints, the bars and the dots.
+    use inbetween::figures::ik::IkFigure;
+    for target in [
+        Vec3::new(0.55, 0.65, 0.15),
+        Vec3::new(0.4, 0.8, 0.1),
+        Vec3::new(0.3, 0.9, -0.3),
+    ] {
+        for pole in [0.0] {
+            let mut scene = IkFigure::new();
+            scene.set_target(target).unwrap();
+            scene.set_pole_angle_deg(pole).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], &frame, size);
+                let name = format!("07 law of cosines, target {target}, pole {pole}°");
                 assert_clear(&name, &frame, &camera, size);
             }
         }
