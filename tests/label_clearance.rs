@@ -182,3 +182,30 @@ fn lesson_07_law_of_cosines_labels_keep_off_its_lines() {
         }
     }
 }
+
+#[test]
+fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
+    // Figure 3's page camera (lessons/01-transforms/lesson.js: from +x), at the page's start,
+    // at the caption's two tries (a uniform scale; the elbow at 0°) and another stretch: the
+    // corner angles' labels and the forearms' names sit off the outlines, the arcs, the
+    // skeletons' lines and their dots.
+    use inbetween::figures::transforms::ScaleComparison;
+    for (scale, elbow) in [
+        (Vec3::new(1.0, 2.0, 1.0), -70.0),
+        (Vec3::new(2.0, 2.0, 2.0), -70.0),
+        (Vec3::new(1.0, 2.0, 1.0), 0.0),
+        (Vec3::new(1.0, 1.5, 1.0), -90.0),
+    ] {
+        let mut scene = ScaleComparison::new();
+        scene.set_upper_arm_scale(scale).unwrap();
+        scene.set_forearm_angles_deg(Vec3::new(elbow, 0.0, 0.0)).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame).unwrap();
+        let view = [0.0, 1.0, 0.0, 3.6, std::f32::consts::FRAC_PI_2, 0.12];
+        for size in CANVASES {
+            let camera = page_camera(view, &frame, size);
+            let name = format!("01 scale comparison, scale {scale}, elbow {elbow}°");
+            assert_clear(&name, &frame, &camera, size);
+        }
+    }
+}
