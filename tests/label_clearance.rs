@@ -209,3 +209,54 @@ fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
         }
     }
 }
+
+#[test]
+fn lesson_11_spring_labels_keep_off_the_walls_springs_and_bars() {
+    // Figure 3 at the page's camera (SpringFigure::view), at both canvases, for the default
+    // step and the caption's 0.1 s: the three names and "exact" keep off the coils, the exact
+    // bars, the dashed lines, and the walls (the grey boxes the springs hang from, checked at
+    // their eight corners and centre). At times when the exact mass is at or right of the rest
+    // position: at 760 × 380 the longest name reaches about x = −0.3 m, which the exact bar
+    // crosses later in each swing.
+    use inbetween::draw::palette;
+    use inbetween::figures::particles::SpringFigure;
+    for dt in [0.02, 0.1] {
+        let mut scene = SpringFigure::new();
+        scene.set_dt(dt).unwrap();
+        for time_sec in [0.0, 0.25, 0.5, 2.5] {
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, time_sec).unwrap();
+            for size in CANVASES {
+                let camera = page_camera(scene.view(), &frame, size);
+                let name = format!("11 spring, dt {dt}, t {time_sec}");
+                assert_clear(&name, &frame, &camera, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let walls: Vec<Vec2> = frame
+                    .meshes
+                    .iter()
+                    .filter(|m| m.color.truncate() == palette::GREY)
+                    .flat_map(|m| {
+                        let mut points: Vec<Vec3> = (0..8)
+                            .map(|c| {
+                                let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                                m.model.transform_point3(Vec3::new(s(1), s(2), s(4)))
+                            })
+                            .collect();
+                        points.push(m.model.w_axis.truncate());
+                        points
+                    })
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                assert_eq!(walls.len(), 27, "three walls");
+                for (text, rect) in label_boxes(&frame, &camera, size) {
+                    for w in &walls {
+                        assert!(
+                            !(w.cmpgt(rect.min).all() && w.cmplt(rect.max()).all()),
+                            "{name} on {size}: {text:?} covers a wall at {w}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
