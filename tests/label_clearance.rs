@@ -214,10 +214,10 @@ fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
 fn lesson_11_spring_labels_keep_off_the_walls_springs_and_bars() {
     // Figure 3 at the page's camera (SpringFigure::view), at both canvases, for the default
     // step and the caption's 0.1 s: the three names and "exact" keep off the coils, the exact
-    // bars, the dashed lines, and the walls (the grey boxes the springs hang from, checked at
-    // their eight corners and centre). At times when the exact mass is at or right of the rest
-    // position: at 760 × 380 the longest name reaches about x = −0.3 m, which the exact bar
-    // crosses later in each swing.
+    // bars, the rest and turning-point ticks, and the walls (the grey boxes the springs hang
+    // from, checked at their eight corners and centre). At times when the exact mass is at or
+    // right of the rest position: at 760 × 380 the longest name reaches about x = −0.3 m,
+    // which the exact bar crosses later in each swing.
     use inbetween::draw::palette;
     use inbetween::figures::particles::SpringFigure;
     for dt in [0.02, 0.1] {

@@ -1090,14 +1090,15 @@ impl SpringFigure {
         let t_now = k as f32 * self.dt_sec;
         let exact = SPRING_X0_M * (SPRING_OMEGA * t_now).cos();
         let y = 0.25;
-        // The rest position and the two turning points of the exact motion.
-        // One dash line across each row, leaving the gaps between rows to the rows' names.
+        // The rest position and the two turning points of the exact motion: a short solid
+        // tick across each row on the ground, leaving the gaps between rows to the rows' names.
         for x in [-SPRING_X0_M, 0.0, SPRING_X0_M] {
             for z in SPRING_ROWS_Z {
-                frame.stroke(
-                    &[Vec3::new(x, 0.0, z - 0.16), Vec3::new(x, 0.0, z + 0.16)],
+                frame.wide_line(
+                    Vec3::new(x, 0.0, z - 0.16),
+                    Vec3::new(x, 0.0, z + 0.16),
                     palette::GRID,
-                    crate::draw::StrokeStyle::dashed(1.5, 0.08, 0.06),
+                    2.0,
                 );
             }
         }
