@@ -178,10 +178,10 @@ impl SingleShape {
             self.matrix_at(ghost, stage) * Mat4::from_scale(BOX_HALF),
             ghost.color(),
         );
+        // Each order's name straight above its box's centre, past the tip of the box's y axis
+        // (0.6 m, however the box has turned), so the axis never runs through the name.
         for order in [shown, ghost] {
-            let top = self
-                .matrix_at(order, stage)
-                .transform_point3(Vec3::new(0.0, 0.45, 0.0));
+            let top = self.matrix_at(order, stage).w_axis.truncate() + Vec3::Y * 0.75;
             frame.label_with_priority(top, order.name(), order.color(), 3);
         }
         // The paths of the two centres: T·R stays at the origin while it turns, then slides
