@@ -1179,3 +1179,39 @@ fn the_rules_figures_shorter_steering_arrows_lie_over_the_longer() {
         }
     }
 }
+
+#[test]
+fn the_rules_figures_largest_radius_circle_stays_in_view() {
+    // A circle of 3 m around a boid at the slider's corner reaches past the grid: every point of
+    // every wide line (the circle included) lies on the canvas after the viewer's fit.
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    for (x, z) in [(0.0, 0.0), (1.9, -1.9), (-1.9, 1.9)] {
+        let mut scene = RulesFigure::new();
+        scene.set_position(x, z).unwrap();
+        scene.set_radius(3.0).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let circle_far = frame
+            .strokes
+            .iter()
+            .flat_map(|s| [Vec3::from(s.a), Vec3::from(s.b)])
+            .map(|p| p.x.abs().max(p.z.abs()))
+            .fold(0.0f32, f32::max);
+        assert!(circle_far >= 2.99, "the circle reaches {circle_far} m");
+        for size in [Vec2::new(760.0, 420.0), Vec2::new(650.0, 420.0)] {
+            let mut camera = OrbitCamera::from_view(scene.view());
+            assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            for s in &frame.strokes {
+                for p in [s.a, s.b] {
+                    let px = project_to_canvas(view_proj, size, Vec3::from(p)).unwrap();
+                    assert!(
+                        px.cmpge(Vec2::ZERO).all() && px.cmple(size).all(),
+                        "boid at ({x}, {z}), {size}: {p:?} drawn at {px}, off the canvas"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -554,3 +554,41 @@ fn the_keys_stay_readable_where_the_planes_meet_them() {
     scene.draw(&mut f, 0.0).unwrap();
     assert_eq!(x_axes(&f), 3, "a plane shown alone has its axes");
 }
+
+#[test]
+fn where_blend_and_screw_coincide_both_planes_show() {
+    // Half-way the blend and the screw put the plane in the same place: the blend's (green) is
+    // drawn narrower and thicker, so the screw's (blue) shows around it and the green through
+    // it. Elsewhere (a quarter of the way, where their timings differ) both keep their shape.
+    use inbetween::draw::palette;
+    let wing = |frame: &Frame, color: Vec3| {
+        let m = frame
+            .meshes
+            .iter()
+            .find(|d| d.color.truncate().distance(color * 0.8) < 1e-5)
+            .expect("a wing of that colour")
+            .model;
+        // The wing's half span (its z) and half thickness (its y), in metres.
+        (m.z_axis.truncate().length(), m.y_axis.truncate().length())
+    };
+    let mut scene = RigidMotion::new();
+    assert!(scene.coincides_with_screw(0.5) && !scene.coincides_with_screw(0.25));
+    for (t, together) in [(0.5, true), (0.0, true), (1.0, true), (0.25, false)] {
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, t).unwrap();
+        let (green_span, green_thick) = wing(&frame, palette::Y_AXIS);
+        let (blue_span, blue_thick) = wing(&frame, palette::Z_AXIS);
+        if together {
+            assert!(blue_span > green_span * 1.1, "t {t}: the screw's wing shows around the blend's");
+            assert!(green_thick > blue_thick * 1.2, "t {t}: the blend's wing shows through");
+        } else {
+            assert!((blue_span - green_span).abs() < 1e-5 && (blue_thick - green_thick).abs() < 1e-5);
+        }
+    }
+    // With the blend shown alone it keeps its shape.
+    scene.set_show(2).unwrap();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 0.5).unwrap();
+    let (span, _) = wing(&frame, palette::Y_AXIS);
+    assert!((span - 0.5).abs() < 1e-5, "{span}");
+}

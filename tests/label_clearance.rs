@@ -68,8 +68,8 @@ fn assert_clear(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2) {
                 let inside = p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all();
                 assert!(
                     !inside,
-                    "{name} on {size}: label {text:?} at {:?} crosses a line at {p}",
-                    rect.min
+                    "{name} on {size}: label {text:?} at {:?} crosses a line at {p} (colour {:?})",
+                    rect.min, s.color
                 );
             }
         }
@@ -107,6 +107,183 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_curves() {
         for size in [Vec2::new(760.0, 300.0), Vec2::new(650.0, 300.0)] {
             let camera = page_camera([0.3, 0.8, -1.3, 6.5, 0.75, 0.4], &frame, size);
             assert_clear("02 keys", &frame, &camera, size);
+        }
+    }
+}
+
+#[test]
+fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
+    // Over the whole twist slider, with the fix on and off: every label is shown where the
+    // figure put it (no leader line from the page's layout), clear of every dot and line. Near
+    // 0° and 360° three points meet at 1, so their labels are stacked by the figure.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::skinning::SignFigure;
+    for fix in [true, false] {
+        for deg in (0..=360).step_by(5) {
+            let mut scene = SignFigure::new();
+            scene.set_fix(fix);
+            scene.set_twist_deg(deg as f32).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, MeshId(1)).unwrap();
+            assert_eq!(frame.labels.len(), 6);
+            let name = format!("09 sign at {deg}°, fix {fix}");
+            for size in CANVASES {
+                // The page's camera (lessons/09-skinning/lesson.js).
+                let camera = page_camera([0.8, 1.0, 0.0, 5.5, 0.0, 0.1], &frame, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let labels = project_labels(&frame.labels, view_proj, size.x, size.y);
+                let boxes: Vec<LabelBox> = labels
+                    .iter()
+                    .map(|l| LabelBox {
+                        anchor: Vec2::new(l.x_px, l.y_px),
+                        size: Vec2::new(7.5 * l.text.chars().count() as f32, 16.0),
+                        left: l.left,
+                        visible: l.visible,
+                        priority: l.priority,
+                    })
+                    .collect();
+                for (p, l) in place(&boxes, size).iter().zip(&labels) {
+                    assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
+                    assert!(
+                        p.leader_to.is_none(),
+                        "{name} on {size}: {:?} moved off its place",
+                        l.text
+                    );
+                }
+                assert_clear(&name, &frame, &camera, size);
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_07_law_of_cosines_labels_keep_off_its_lines() {
+    // Figure 1's page camera (lessons/07-inverse-kinematics/lesson.js), pole at 0° (the page's
+    // start and its reset), at the home target and others above and beside the root: the
+    // labels of sides a, b and d, of α and of the pole keep off the dashed lines, the circle of
+    // middle joints, the bars and the dots.
+    use inbetween::figures::ik::IkFigure;
+    for target in [
+        Vec3::new(0.55, 0.65, 0.15),
+        Vec3::new(0.4, 0.8, 0.1),
+        Vec3::new(0.3, 0.9, -0.3),
+    ] {
+        for pole in [0.0] {
+            let mut scene = IkFigure::new();
+            scene.set_target(target).unwrap();
+            scene.set_pole_angle_deg(pole).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], &frame, size);
+                let name = format!("07 law of cosines, target {target}, pole {pole}°");
+                assert_clear(&name, &frame, &camera, size);
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
+    // Figure 3's page camera (lessons/01-transforms/lesson.js: from +x), at the page's start,
+    // at the caption's two tries (a uniform scale; the elbow at 0°) and another stretch: the
+    // corner angles' labels and the forearms' names sit off the outlines, the arcs, the
+    // skeletons' lines and their dots.
+    use inbetween::figures::transforms::ScaleComparison;
+    for (scale, elbow) in [
+        (Vec3::new(1.0, 2.0, 1.0), -70.0),
+        (Vec3::new(2.0, 2.0, 2.0), -70.0),
+        (Vec3::new(1.0, 2.0, 1.0), 0.0),
+        (Vec3::new(1.0, 1.5, 1.0), -90.0),
+    ] {
+        let mut scene = ScaleComparison::new();
+        scene.set_upper_arm_scale(scale).unwrap();
+        scene.set_forearm_angles_deg(Vec3::new(elbow, 0.0, 0.0)).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame).unwrap();
+        let view = [0.0, 1.0, 0.0, 3.6, std::f32::consts::FRAC_PI_2, 0.12];
+        for size in CANVASES {
+            let camera = page_camera(view, &frame, size);
+            let name = format!("01 scale comparison, scale {scale}, elbow {elbow}°");
+            assert_clear(&name, &frame, &camera, size);
+        }
+    }
+}
+
+#[test]
+fn lesson_11_spring_labels_keep_off_the_walls_springs_and_bars() {
+    // Figure 3 at the page's camera (SpringFigure::view), at both canvases, for the default
+    // step and the caption's 0.1 s: the three names and "exact" keep off the coils, the exact
+    // bars, the rest and turning-point ticks, and the walls (the grey boxes the springs hang
+    // from, checked at their eight corners and centre). At times when the exact mass is at or
+    // right of the rest position: at 760 × 380 the longest name reaches about x = −0.3 m,
+    // which the exact bar crosses later in each swing.
+    use inbetween::draw::palette;
+    use inbetween::figures::particles::SpringFigure;
+    for dt in [0.02, 0.1] {
+        let mut scene = SpringFigure::new();
+        scene.set_dt(dt).unwrap();
+        for time_sec in [0.0, 0.25, 0.5, 2.5] {
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, time_sec).unwrap();
+            for size in CANVASES {
+                let camera = page_camera(scene.view(), &frame, size);
+                let name = format!("11 spring, dt {dt}, t {time_sec}");
+                assert_clear(&name, &frame, &camera, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let walls: Vec<Vec2> = frame
+                    .meshes
+                    .iter()
+                    .filter(|m| m.color.truncate() == palette::GREY)
+                    .flat_map(|m| {
+                        let mut points: Vec<Vec3> = (0..8)
+                            .map(|c| {
+                                let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                                m.model.transform_point3(Vec3::new(s(1), s(2), s(4)))
+                            })
+                            .collect();
+                        points.push(m.model.w_axis.truncate());
+                        points
+                    })
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                assert_eq!(walls.len(), 27, "three walls");
+                for (text, rect) in label_boxes(&frame, &camera, size) {
+                    for w in &walls {
+                        assert!(
+                            !(w.cmpgt(rect.min).all() && w.cmplt(rect.max()).all()),
+                            "{name} on {size}: {text:?} covers a wall at {w}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
+    // Figure 1 at the page's camera (lessons/01-transforms/lesson.js), both canvases, through
+    // both steps of the timeline, T·R solid (the page's start): "T·R" and "R·T" keep off the
+    // solid box's axes (which turn with it), the paths, the arm and the dots. They are placed
+    // first (the highest priority), so the frame's other labels, left out here, never move
+    // them. With R·T solid, its x axis ends near T·R's name at the end of the timeline.
+    use inbetween::figures::transforms::{Order, SingleShape};
+    for order in [Order::RotateFirst] {
+        let mut scene = SingleShape::new();
+        scene.set_order(order);
+        for stage in [0.0, 0.36, 1.0, 1.5, 2.0] {
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, stage).unwrap();
+            let names: Vec<_> = frame.labels.iter().filter(|l| l.priority == 3).cloned().collect();
+            assert_eq!(names.len(), 2);
+            assert!(frame.labels.iter().all(|l| l.priority <= 3));
+            for size in CANVASES {
+                let camera = page_camera([0.5, 0.3, 0.0, 5.0, 0.6, 0.45], &frame, size);
+                let mut names_only = frame.clone();
+                names_only.labels = names.clone();
+                assert_clear(&format!("01 orders, stage {stage}"), &names_only, &camera, size);
+            }
         }
     }
 }

@@ -1335,8 +1335,8 @@ impl RulesFigure {
 
     /// The camera the page starts with, as `Viewer::setCamera`'s arguments (target x, y, z,
     /// distance in metres, yaw and pitch in radians): from straight above, +x to the right and
-    /// −z up the screen. The viewer then fits its target and distance to the grid
-    /// ([`RulesFigure::grid_box`]), keeping this direction.
+    /// −z up the screen. The viewer then fits its target and distance to
+    /// [`RulesFigure::view_box`], keeping this direction.
     pub fn view(&self) -> [f32; 6] {
         [0.0, 0.0, 0.0, 5.2, 0.0, 1.45]
     }
@@ -1356,6 +1356,19 @@ impl RulesFigure {
             lo,
             lo + Vec3::new(1.0, 0.0, 1.0) * (n as f32 * self.cell_size),
         )
+    }
+
+    /// What the figure keeps in view, `(min, max)` on the plane y = 0: the smallest square
+    /// holding the grid ([`RulesFigure::grid_box`]) and the radius circle, which at 3 m reaches
+    /// past the grid. A square, as the grid is, so the labels' placement (`place_labels`) knows
+    /// how much of the plane the canvas shows from the square's side alone.
+    pub fn view_box(&self) -> (Vec3, Vec3) {
+        let (lo, hi) = self.grid_box();
+        let reach = Vec3::new(self.radius, 0.0, self.radius);
+        let (lo, hi) = (lo.min(self.boid - reach), hi.max(self.boid + reach));
+        let (center, half) = (0.5 * (lo + hi), 0.5 * (hi - lo).max_element());
+        let half = Vec3::new(half, 0.0, half);
+        (center - half, center + half)
     }
 
     /// The neighbours the boid takes into account: within the radius and the field of view.
@@ -1419,8 +1432,8 @@ impl RulesFigure {
     pub fn draw(&self, frame: &mut Frame) -> String {
         let dims = self.dims();
         let s = self.cell_size;
-        let (grid_lo, grid_hi) = self.grid_box();
-        frame.keep_box_in_view(grid_lo, grid_hi);
+        let (view_lo, view_hi) = self.view_box();
+        frame.keep_box_in_view(view_lo, view_hi);
         // Grid lines on y = 0 (the grid's cells seen from above).
         for k in 0..=dims[0] {
             let x = GRID_ORIGIN.x + k as f32 * s;
@@ -1541,7 +1554,7 @@ impl RulesFigure {
                 tips.push((tip, v, name, color));
             }
         }
-        for (anchor, left, name, color) in place_labels(self.boid, &tips, (grid_lo, grid_hi)) {
+        for (anchor, left, name, color) in place_labels(self.boid, &tips, (view_lo, view_hi)) {
             if left {
                 frame.label_left(anchor, name, color);
             } else {

@@ -833,7 +833,6 @@ impl IkFigure {
     fn draw_law_of_cosines(&self, frame: &mut Frame, root: Vec3) {
         let pole = self.pole() + root;
         frame.marker(pole, POLE_PX, palette::PURPLE);
-        frame.label(pole + Vec3::new(0.04, 0.04, 0.0), "pole", palette::PURPLE);
         let [r, m, e] = match self.solved[0][..] {
             [r, m, e] => [r + root, m + root, e + root],
             _ => return,
@@ -866,16 +865,42 @@ impl IkFigure {
         // Side d along the root→target line (up to the end when the target is out of reach).
         let g = self.target + root;
         frame.stroke(&[r, g], palette::GREY, StrokeStyle::dashed(1.5, 0.04, 0.03));
-        let side = |p: Vec3, q: Vec3| {
-            // Labels sit beside a side's middle, away from the triangle's inside.
-            let mid = p.lerp(q, 0.5);
-            let inward = (r.lerp(m, 1.0 / 3.0).lerp(e, 1.0 / 3.0) - mid).normalize_or(Vec3::X);
-            mid - inward * 0.06
+        // Each label beside what it names, on the side away from the triangle, reading away
+        // from it (left of its anchor when it lies to the left), so it covers no line.
+        let centroid = (r + m + e) / 3.0;
+        let beside = |frame: &mut Frame, at: Vec3, out: Vec3, text: String, color: Vec3| {
+            let out = Vec3::new(out.x, out.y, 0.0).normalize_or(Vec3::X);
+            let anchor = at + out * (0.05 + 0.07 * out.y.abs());
+            frame.labels.push(crate::draw::Label {
+                anchor,
+                text,
+                color,
+                left: out.x < 0.0,
+                priority: 0,
+            });
         };
-        frame.label(side(r, m), "a", palette::BLUE);
-        frame.label(side(m, e), "b", palette::BLUE);
-        frame.label(
-            side(r, g) + Vec3::new(0.0, -0.04, 0.0),
+        // A side's middle and the direction across it away from the triangle, in the xy plane
+        // the page's camera nearly faces (the triangle may be seen edge on).
+        let away = |p: Vec3, q: Vec3| {
+            let mid = p.lerp(q, 0.5);
+            let across = (q - p).truncate().perp().normalize_or(glam::Vec2::X);
+            let off = (mid - centroid).truncate();
+            let sign = if across.dot(off) < 0.0 { -1.0 } else { 1.0 };
+            (mid, (sign * across).extend(0.0))
+        };
+        // The pole's label beyond it, away from its dashed line to the middle joint.
+        beside(frame, pole, pole - m, "pole".into(), palette::PURPLE);
+        let (mid, out) = away(r, m);
+        beside(frame, mid, out, "a".into(), palette::BLUE);
+        let (mid, out) = away(m, e);
+        beside(frame, mid, out, "b".into(), palette::BLUE);
+        // Side d's label towards the target's end, clear of the circle of middle joints
+        // (whose centre lies on d) and of α's label at the root's end.
+        let (_, out) = away(r, g);
+        beside(
+            frame,
+            r.lerp(g, 0.8),
+            out,
             format!("d = {} m", format_number(d)),
             palette::GREY,
         );
@@ -888,8 +913,16 @@ impl IkFigure {
                 .map(|k| r + Quat::from_axis_angle(axis, angle * k as f32 / 16.0) * u * 0.18)
                 .collect();
             frame.stroke(&arc, palette::DARK, StrokeStyle::solid(2.0));
-            let mid = r + Quat::from_axis_angle(axis, 0.5 * angle) * u * 0.24;
-            frame.label(mid, format!("α = {:.0}°", angle / DEG), palette::DARK);
+            // Across the root from the arc: the wedge is too narrow for the text, and the
+            // circle of middle joints passes beside it.
+            let bisector = Quat::from_axis_angle(axis, 0.5 * angle) * u;
+            beside(
+                frame,
+                r,
+                -bisector,
+                format!("α = {:.0}°", angle / DEG),
+                palette::DARK,
+            );
         }
     }
 }

@@ -992,6 +992,9 @@ pub const SPRING_DRAW_MAX_M: f32 = 2.4;
 const SPRING_WALL_X: f32 = -2.8;
 /// The rows of the three masses, metres along z (explicit Euler at the back).
 const SPRING_ROWS_Z: [f32; 3] = [-0.9, 0.0, 0.9];
+/// How far behind its row (along −z) an integrator's name sits, metres: about half-way to the
+/// next row, clear of the coils (±0.1 m).
+const SPRING_LABEL_BEHIND_M: f32 = 0.5;
 
 /// One mass on a spring (`a = −ω² x`, no damping) stepped by each integrator, side by side, with
 /// the exact motion `x(t) = x₀ cos ωt` marked in each row.
@@ -1087,15 +1090,17 @@ impl SpringFigure {
         let t_now = k as f32 * self.dt_sec;
         let exact = SPRING_X0_M * (SPRING_OMEGA * t_now).cos();
         let y = 0.25;
-        // The rest position and the two turning points of the exact motion.
+        // The rest position and the two turning points of the exact motion: a short solid
+        // tick across each row on the ground, leaving the gaps between rows to the rows' names.
         for x in [-SPRING_X0_M, 0.0, SPRING_X0_M] {
-            let a = Vec3::new(x, 0.0, SPRING_ROWS_Z[0] - 0.4);
-            let b = Vec3::new(x, 0.0, SPRING_ROWS_Z[2] + 0.4);
-            frame.stroke(
-                &[a, b],
-                palette::GRID,
-                crate::draw::StrokeStyle::dashed(1.5, 0.08, 0.06),
-            );
+            for z in SPRING_ROWS_Z {
+                frame.wide_line(
+                    Vec3::new(x, 0.0, z - 0.16),
+                    Vec3::new(x, 0.0, z + 0.16),
+                    palette::GRID,
+                    2.0,
+                );
+            }
         }
         let mut energies = [0.0; 3];
         for (i, &color) in INTEGRATOR_COLORS.iter().enumerate() {
@@ -1130,8 +1135,10 @@ impl SpringFigure {
                 5.0,
             );
             frame.point_on_top(Vec3::new(shown, y, z), 0.15, color);
+            // Just right of the wall, behind the row (up the screen), reading along the spring:
+            // on the wall's top the label hid it, and the rows' gaps have room.
             frame.label(
-                Vec3::new(SPRING_WALL_X, y + 0.35, z),
+                Vec3::new(SPRING_WALL_X + 0.3, 0.0, z - SPRING_LABEL_BEHIND_M),
                 Integrator::ALL[i].name(),
                 color,
             );

@@ -37,6 +37,10 @@ pub const METHODS: [(Method, Vec3); 3] = [
     (Method::Screw, palette::Z_AXIS),
 ];
 pub const SCREW_AXIS: Vec3 = palette::PURPLE;
+/// The blend's plane's scale (its x, y, z) where it coincides with the screw's
+/// ([`RigidMotion::coincides_with_screw`]): narrower, so the screw's plane shows around it, and
+/// thicker, so it shows through the screw's.
+pub const COINCIDENT_BLEND_SCALE: Vec3 = Vec3::new(0.8, 1.5, 0.8);
 
 /// The figures' physical range: key translations within ±`MAX_TRANSLATION_M` metres on each axis,
 /// angles within ±`MAX_ANGLE_DEG`, axis, quaternion and matrix entries, scales and shears within
@@ -279,7 +283,18 @@ impl RigidMotion {
             }
             let m = self.motion(method, t);
             let (r, p) = m.to_rotation_translation();
-            draw_plane(frame, p, Mat3::from_quat(r), color, 1.0);
+            // Where the blend's plane coincides with the screw's (at the keys and half-way,
+            // since both travel one helix), it is drawn narrower and thicker: the screw's blue
+            // shows around it and the blend's green through it, as with the paths.
+            let linear = if method == Method::DualQuatNlerp
+                && self.shown(Method::Screw)
+                && self.coincides_with_screw(t)
+            {
+                Mat3::from_quat(r) * Mat3::from_diagonal(COINCIDENT_BLEND_SCALE)
+            } else {
+                Mat3::from_quat(r)
+            };
+            draw_plane(frame, p, linear, color, 1.0);
             if own_axes {
                 frame.axes(m.to_mat4() * Mat4::from_translation(self.pivot), 0.45);
             }
@@ -293,6 +308,16 @@ impl RigidMotion {
             notes.push(self.exercise_note(t));
         }
         Ok(notes.join(" "))
+    }
+
+    /// Whether dual quaternion blending and the screw place the plane at `t` within 2 cm and
+    /// 2° of each other (as at the keys and half-way), so that one plane would hide the other.
+    pub fn coincides_with_screw(&self, t: f32) -> bool {
+        let blend = self.motion(Method::DualQuatNlerp, t);
+        let screw = self.motion(Method::Screw, t);
+        let (rb, pb) = blend.to_rotation_translation();
+        let (rs, ps) = screw.to_rotation_translation();
+        pb.distance(ps) < 0.02 && rotation::angle_between(rb, rs) < 2.0 * DEG
     }
 
     /// The screw parameter `s` at which the screw motion is where dual quaternion blending is at

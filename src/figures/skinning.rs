@@ -1424,6 +1424,9 @@ fn vertices_note(what: &str, at: &str, student: &[Vec3], reference: &[Vec3]) -> 
 /// Where the sign figure draws the quaternion circle: its centre and radius (metres).
 pub const SIGN_CIRCLE_CENTER: Vec3 = Vec3::new(2.3, 0.9, 0.0);
 pub const SIGN_CIRCLE_RADIUS: f32 = 0.75;
+/// Lesson 09 Figure 3: the height (metres) between two labels stacked beside the circle, a
+/// label's height and a gap at the page's scale (about 90 CSS px a metre).
+pub const SIGN_LABEL_STEP_M: f32 = 0.24;
 
 /// The antipodality fix on its own: the cylinder twisted at the elbow by 0 to 360° and skinned
 /// by DQS with or without the sign flip, beside the circle on which the shoulder's and the
@@ -1563,6 +1566,16 @@ impl SignFigure {
         SIGN_CIRCLE_CENTER + SIGN_CIRCLE_RADIUS * Vec3::new(a.cos(), a.sin(), 0.0)
     }
 
+    /// Where the label of the point at angle `a` on the circle goes: outside the circle along
+    /// the radius, further out near the top and bottom where the label's box (centred on its
+    /// anchor's height) would otherwise reach down or up to the point; and whether it reads
+    /// leftwards (on the circle's left side).
+    fn label_outside(a: f32) -> (Vec3, bool) {
+        let dir = Vec3::new(a.cos(), a.sin(), 0.0);
+        let out = 0.08 + 0.1 * a.sin().abs();
+        (Self::on_circle(a) + dir * out, a.cos() < -0.3)
+    }
+
     /// Fills the draw list (`mesh`: the tube's GPU id) and returns the note.
     pub fn draw(&mut self, frame: &mut Frame, mesh: MeshId) -> Result<String, String> {
         self.update()?;
@@ -1586,8 +1599,10 @@ impl SignFigure {
             .map(|k| Self::on_circle(std::f32::consts::TAU * k as f32 / 96.0))
             .collect();
         frame.wide_polyline(&circle, palette::GREY, 2.0);
+        // The w and x axes end at the circle, so the labels of the points on it read outwards
+        // into empty space; the axes' own labels sit inside the circle, beside them.
         let c = SIGN_CIRCLE_CENTER;
-        let rr = SIGN_CIRCLE_RADIUS + 0.15;
+        let rr = SIGN_CIRCLE_RADIUS;
         frame.wide_line(c - Vec3::X * rr, c + Vec3::X * rr, palette::GRID_AXIS, 1.5);
         frame.wide_line(c - Vec3::Y * rr, c + Vec3::Y * rr, palette::GRID_AXIS, 1.5);
         let half = 0.5 * self.twist_rad;
@@ -1603,36 +1618,51 @@ impl SignFigure {
         let flipped = Self::on_circle(half + std::f32::consts::PI);
         let blend = Self::on_circle(blend_angle);
         frame.marker(one, 12.0, palette::DARK);
-        frame.label_with_priority(
-            one + Vec3::new(0.06, 0.04, 0.0),
-            "1 (shoulder)",
-            palette::DARK,
-            2,
-        );
         frame.marker(elbow, 12.0, palette::ORANGE);
-        frame.label_with_priority(
-            elbow + Vec3::new(0.06, 0.04, 0.0),
-            "r (elbow)",
-            palette::ORANGE,
-            2,
-        );
         frame.marker(flipped, 9.0, palette::GREY);
-        frame.label(flipped + Vec3::new(0.06, -0.06, 0.0), "−r", palette::GREY);
         // The blend's arc from 1, and the blend itself.
         let arc: Vec<Vec3> = (0..=24)
             .map(|k| Self::on_circle(blend_angle * k as f32 / 24.0))
             .collect();
         frame.wide_polyline(&arc, palette::TEAL, 5.0);
         frame.marker(blend, 12.0, palette::TEAL);
-        frame.label_with_priority(
-            blend + Vec3::new(-0.05, 0.1, 0.0),
-            "blend at ½, ½",
-            palette::TEAL,
-            1,
-        );
-        frame.label(c + Vec3::new(rr + 0.02, 0.0, 0.0), "w", palette::GREY);
-        frame.label(c + Vec3::new(0.02, rr + 0.02, 0.0), "x (i)", palette::GREY);
-        frame.keep_box_in_view(Vec3::new(-1.7, 0.2, -0.4), Vec3::new(3.3, 1.8, 0.4));
+        // Each point's label outside the circle along its radius, so points at different
+        // angles have labels apart. Where points meet (1, r and the blend near 0°; 1, −r and
+        // the blend near 360° with the fix) their labels are stacked down the circle's side,
+        // most important first, each joined to its point by a thin line.
+        let points = [
+            (0.0, "1 (shoulder)", palette::DARK),
+            (half, "r (elbow)", palette::ORANGE),
+            (blend_angle, "blend at ½, ½", palette::TEAL),
+            (half + std::f32::consts::PI, "−r", palette::GREY),
+        ];
+        let mut placed: Vec<(Vec3, bool)> = Vec::with_capacity(points.len());
+        for &(angle, text, color) in &points {
+            let (mut anchor, left) = Self::label_outside(angle);
+            // Down past every label already on this side at about the same height.
+            while let Some(&(above, _)) = placed.iter().find(|&&(p, l)| {
+                l == left && (p.y - anchor.y).abs() < SIGN_LABEL_STEP_M - 1e-4
+            }) {
+                anchor = Vec3::new(anchor.x, above.y - SIGN_LABEL_STEP_M, anchor.z);
+            }
+            placed.push((anchor, left));
+            let at = Self::on_circle(angle);
+            let (natural, _) = Self::label_outside(angle);
+            if anchor.distance(natural) > 1e-4 {
+                frame.wide_line(at, anchor, color, 1.0);
+            }
+            frame.labels.push(crate::draw::Label {
+                anchor,
+                text: text.into(),
+                color,
+                left,
+                priority: 0,
+            });
+        }
+        frame.label(c + Vec3::new(0.45 * rr, -0.14, 0.0), "w", palette::GREY);
+        frame.label(c + Vec3::new(0.05, 0.4 * rr, 0.0), "x (i)", palette::GREY);
+        // Room on the right for the labels that read outwards from the circle's right side.
+        frame.keep_box_in_view(Vec3::new(-1.7, 0.2, -0.4), Vec3::new(4.2, 1.8, 0.4));
         let deg = self.twist_rad.to_degrees();
         let turn = self.elbow_ring_turn_deg();
         let mut note = format!(

@@ -178,10 +178,10 @@ impl SingleShape {
             self.matrix_at(ghost, stage) * Mat4::from_scale(BOX_HALF),
             ghost.color(),
         );
+        // Each order's name straight above its box's centre, past the tip of the box's y axis
+        // (0.6 m, however the box has turned), so the axis never runs through the name.
         for order in [shown, ghost] {
-            let top = self
-                .matrix_at(order, stage)
-                .transform_point3(Vec3::new(0.0, 0.45, 0.0));
+            let top = self.matrix_at(order, stage).w_axis.truncate() + Vec3::Y * 0.75;
             frame.label_with_priority(top, order.name(), order.color(), 3);
         }
         // The paths of the two centres: T·R stays at the origin while it turns, then slides
@@ -996,7 +996,15 @@ impl ScaleComparison {
             frame.label_with_priority(Vec3::new(0.0, 1.95, z), titles[k], palette::DARK, 3);
             let wrist = placement.transform_point3(f.wrist());
             frame.marker_on_top(wrist, 10.0, palette::PINK);
-            frame.label_with_priority(wrist, "forearm.L", palette::PINK, 1);
+            // Above and left of the wrist, reading leftwards (the forearms point left on the
+            // page, which sees them from +x): clear of the body and of the corner's angle.
+            frame.labels.push(crate::draw::Label {
+                anchor: wrist + Vec3::new(0.0, 0.12, 0.06),
+                text: "forearm.L".into(),
+                color: palette::PINK,
+                left: true,
+                priority: 1,
+            });
             frame.contact_shadow(placement.transform_point3(Vec3::ZERO), 0.3);
         }
         for k in 0..2 {
@@ -1028,12 +1036,16 @@ impl ScaleComparison {
                     ..StrokeStyle::solid(2.0)
                 },
             );
-            frame.label_with_priority(
-                c[2] + (a + b).normalize_or_zero() * (r + 0.05),
-                format!("{:.0}°", angle / DEG),
-                palette::DARK,
-                2,
-            );
+            // Across the corner from the arc (the wedge is the box itself), reading away from
+            // it: the page sees the figures from +x, so −z is to the right.
+            let out = -(a + b).normalize_or_zero();
+            frame.labels.push(crate::draw::Label {
+                anchor: c[2] + out * (r + 0.03 + 0.05 * out.y.abs()),
+                text: format!("{:.0}°", angle / DEG),
+                color: palette::DARK,
+                left: out.z > 0.0,
+                priority: 2,
+            });
         }
         frame.keep_box_in_view(
             Vec3::new(-0.45, 0.0, -COMPARISON_OFFSET - 0.5),
