@@ -106,6 +106,29 @@ impl Fractal {
         g
     }
 
+    /// The octave loop of the row and batch sums: `out[k] = Σ αᵏ f_k(k)` over the octaves, [`CHUNK`]
+    /// points at a time. `octave(start, w, scratch)` writes octave `w`'s noise (ω to the octave's
+    /// power) at points `start..start + scratch.len()` into `scratch`; the weights are added in
+    /// the order `sum2` adds them, so a batch of exact per-point values gives `sum2`'s bits.
+    fn octaves(&self, out: &mut [f32], mut octave: impl FnMut(usize, f32, &mut [f32])) {
+        let mut scratch = [0.0f32; CHUNK];
+        let n = out.len();
+        for start in (0..n).step_by(CHUNK) {
+            let m = (n - start).min(CHUNK);
+            let out = &mut out[start..start + m];
+            out.fill(0.0);
+            let (mut a, mut w) = (1.0f32, 1.0f32);
+            for _ in 0..=self.n {
+                octave(start, w, &mut scratch[..m]);
+                for (o, &v) in out.iter_mut().zip(&scratch[..m]) {
+                    *o += a * v;
+                }
+                a *= self.alpha;
+                w *= self.omega;
+            }
+        }
+    }
+
     /// [`Fractal::sum2`] at `(xs[k], y)` for every `k`, into `out[k]` (the shorter length wins):
     /// the fast path for rows of a grid (terrains, textures). Each octave is one
     /// [`Permutation::noise2_row`] over the row scaled by ωᵏ (the scaled row stays sorted when
@@ -113,48 +136,28 @@ impl Fractal {
     /// points at a time. Agrees with `sum2` to a few `f32` roundings per octave.
     pub fn sum2_row(&self, perm: &Permutation, xs: &[f32], y: f32, out: &mut [f32]) {
         let n = xs.len().min(out.len());
-        let (mut scaled, mut octave) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
-        for start in (0..n).step_by(CHUNK) {
-            let m = (n - start).min(CHUNK);
-            let (xs, out) = (&xs[start..start + m], &mut out[start..start + m]);
-            out.fill(0.0);
-            let (mut a, mut w) = (1.0f32, 1.0f32);
-            for _ in 0..=self.n {
-                for (s, &x) in scaled[..m].iter_mut().zip(xs) {
-                    *s = w * x;
-                }
-                perm.noise2_row(&scaled[..m], w * y, &mut octave[..m]);
-                for (o, &v) in out.iter_mut().zip(&octave[..m]) {
-                    *o += a * v;
-                }
-                a *= self.alpha;
-                w *= self.omega;
+        let mut sx = [0.0f32; CHUNK];
+        self.octaves(&mut out[..n], |start, w, octave| {
+            let m = octave.len();
+            for (s, &x) in sx[..m].iter_mut().zip(&xs[start..start + m]) {
+                *s = w * x;
             }
-        }
+            perm.noise2_row(&sx[..m], w * y, octave);
+        });
     }
 
     /// [`Fractal::sum3`] at `(xs[k], y, z)` for every `k`, into `out[k]`, as
     /// [`Fractal::sum2_row`] with [`Permutation::noise3_row`].
     pub fn sum3_row(&self, perm: &Permutation, xs: &[f32], y: f32, z: f32, out: &mut [f32]) {
         let n = xs.len().min(out.len());
-        let (mut scaled, mut octave) = ([0.0f32; CHUNK], [0.0f32; CHUNK]);
-        for start in (0..n).step_by(CHUNK) {
-            let m = (n - start).min(CHUNK);
-            let (xs, out) = (&xs[start..start + m], &mut out[start..start + m]);
-            out.fill(0.0);
-            let (mut a, mut w) = (1.0f32, 1.0f32);
-            for _ in 0..=self.n {
-                for (s, &x) in scaled[..m].iter_mut().zip(xs) {
-                    *s = w * x;
-                }
-                perm.noise3_row(&scaled[..m], w * y, w * z, &mut octave[..m]);
-                for (o, &v) in out.iter_mut().zip(&octave[..m]) {
-                    *o += a * v;
-                }
-                a *= self.alpha;
-                w *= self.omega;
+        let mut sx = [0.0f32; CHUNK];
+        self.octaves(&mut out[..n], |start, w, octave| {
+            let m = octave.len();
+            for (s, &x) in sx[..m].iter_mut().zip(&xs[start..start + m]) {
+                *s = w * x;
             }
-        }
+            perm.noise3_row(&sx[..m], w * y, w * z, octave);
+        });
     }
 
     /// [`Fractal::sum2`] at scattered points `(xs[k], ys[k])`, into `out[k]` (the shortest length
@@ -162,26 +165,15 @@ impl Fractal {
     /// `sum2` bit for bit (the same operations in the same order).
     pub fn sum2_batch(&self, perm: &Permutation, xs: &[f32], ys: &[f32], out: &mut [f32]) {
         let n = xs.len().min(ys.len()).min(out.len());
-        let (mut sx, mut sy, mut octave) = ([0.0f32; CHUNK], [0.0f32; CHUNK], [0.0f32; CHUNK]);
-        for start in (0..n).step_by(CHUNK) {
-            let m = (n - start).min(CHUNK);
-            let (xs, ys) = (&xs[start..start + m], &ys[start..start + m]);
-            let out = &mut out[start..start + m];
-            out.fill(0.0);
-            let (mut a, mut w) = (1.0f32, 1.0f32);
-            for _ in 0..=self.n {
-                for k in 0..m {
-                    sx[k] = w * xs[k];
-                    sy[k] = w * ys[k];
-                }
-                perm.noise2_batch(&sx[..m], &sy[..m], &mut octave[..m]);
-                for (o, &v) in out.iter_mut().zip(&octave[..m]) {
-                    *o += a * v;
-                }
-                a *= self.alpha;
-                w *= self.omega;
+        let mut s = [[0.0f32; CHUNK]; 2];
+        self.octaves(&mut out[..n], |start, w, octave| {
+            let m = octave.len();
+            for k in 0..m {
+                s[0][k] = w * xs[start + k];
+                s[1][k] = w * ys[start + k];
             }
-        }
+            perm.noise2_batch(&s[0][..m], &s[1][..m], octave);
+        });
     }
 
     /// [`Fractal::sum3`] at scattered points `(xs[k], ys[k], zs[k])`, into `out[k]`, as
@@ -197,31 +189,15 @@ impl Fractal {
     ) {
         let n = xs.len().min(ys.len()).min(zs.len()).min(out.len());
         let mut s = [[0.0f32; CHUNK]; 3];
-        let mut octave = [0.0f32; CHUNK];
-        for start in (0..n).step_by(CHUNK) {
-            let m = (n - start).min(CHUNK);
-            let (xs, ys, zs) = (
-                &xs[start..start + m],
-                &ys[start..start + m],
-                &zs[start..start + m],
-            );
-            let out = &mut out[start..start + m];
-            out.fill(0.0);
-            let (mut a, mut w) = (1.0f32, 1.0f32);
-            for _ in 0..=self.n {
-                for k in 0..m {
-                    s[0][k] = w * xs[k];
-                    s[1][k] = w * ys[k];
-                    s[2][k] = w * zs[k];
-                }
-                perm.noise3_batch(&s[0][..m], &s[1][..m], &s[2][..m], &mut octave[..m]);
-                for (o, &v) in out.iter_mut().zip(&octave[..m]) {
-                    *o += a * v;
-                }
-                a *= self.alpha;
-                w *= self.omega;
+        self.octaves(&mut out[..n], |start, w, octave| {
+            let m = octave.len();
+            for k in 0..m {
+                s[0][k] = w * xs[start + k];
+                s[1][k] = w * ys[start + k];
+                s[2][k] = w * zs[start + k];
             }
-        }
+            perm.noise3_batch(&s[0][..m], &s[1][..m], &s[2][..m], octave);
+        });
     }
 
     /// The 1D fractal sum (the lesson's first plots).
