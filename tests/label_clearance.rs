@@ -6,14 +6,19 @@
 
 use glam::{Vec2, Vec3};
 use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
-use inbetween::draw::layout::{place, LabelBox, Rect};
-use inbetween::draw::{project_labels, Frame};
+use inbetween::draw::layout::{place, LabelBox, Placement, Rect};
+use inbetween::draw::{project_labels, Frame, ScreenLabel};
 
 /// The canvases a 3D figure gets at the two page sizes (beside or under its 270 px panel), CSS px.
 const CANVASES: [Vec2; 2] = [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)];
 
-/// The shown labels' boxes, as the page lays them out.
-fn label_boxes(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<(String, Rect)> {
+/// Every label of the frame as the page lays it out: its projection, its box as measured, and
+/// where the layout put it.
+fn layout(
+    frame: &Frame,
+    camera: &OrbitCamera,
+    size: Vec2,
+) -> Vec<(ScreenLabel, LabelBox, Placement)> {
     let view_proj = camera.projection(size.x / size.y) * camera.view();
     let labels = project_labels(&frame.labels, view_proj, size.x, size.y);
     let boxes: Vec<LabelBox> = labels
@@ -26,16 +31,26 @@ fn label_boxes(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<(String, 
             priority: l.priority,
         })
         .collect();
-    place(&boxes, size)
-        .iter()
-        .zip(labels.iter().zip(&boxes))
-        .filter(|(p, _)| p.shown)
-        .map(|(p, (l, b))| {
+    let placed = place(&boxes, size);
+    labels
+        .into_iter()
+        .zip(boxes)
+        .zip(placed)
+        .map(|((l, b), p)| (l, b, p))
+        .collect()
+}
+
+/// The shown labels' boxes, as the page lays them out.
+fn label_boxes(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<(String, Rect)> {
+    layout(frame, camera, size)
+        .into_iter()
+        .filter(|(_, _, p)| p.shown)
+        .map(|(l, b, p)| {
             let rect = Rect {
                 min: p.top_left,
                 size: b.size,
             };
-            (l.text.clone(), rect)
+            (l.text, rect)
         })
         .collect()
 }
@@ -130,19 +145,7 @@ fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
             for size in CANVASES {
                 // The page's camera (lessons/09-skinning/lesson.js).
                 let camera = page_camera([0.8, 1.0, 0.0, 5.5, 0.0, 0.1], &frame, size);
-                let view_proj = camera.projection(size.x / size.y) * camera.view();
-                let labels = project_labels(&frame.labels, view_proj, size.x, size.y);
-                let boxes: Vec<LabelBox> = labels
-                    .iter()
-                    .map(|l| LabelBox {
-                        anchor: Vec2::new(l.x_px, l.y_px),
-                        size: Vec2::new(7.5 * l.text.chars().count() as f32, 16.0),
-                        left: l.left,
-                        visible: l.visible,
-                        priority: l.priority,
-                    })
-                    .collect();
-                for (p, l) in place(&boxes, size).iter().zip(&labels) {
+                for (l, _, p) in layout(&frame, &camera, size) {
                     assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
                     assert!(
                         p.leader_to.is_none(),
@@ -198,7 +201,9 @@ fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
     ] {
         let mut scene = ScaleComparison::new();
         scene.set_upper_arm_scale(scale).unwrap();
-        scene.set_forearm_angles_deg(Vec3::new(elbow, 0.0, 0.0)).unwrap();
+        scene
+            .set_forearm_angles_deg(Vec3::new(elbow, 0.0, 0.0))
+            .unwrap();
         let mut frame = Frame::default();
         scene.draw(&mut frame).unwrap();
         let view = [0.0, 1.0, 0.0, 3.6, std::f32::consts::FRAC_PI_2, 0.12];
@@ -275,14 +280,24 @@ fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
         for stage in [0.0, 0.36, 1.0, 1.5, 2.0] {
             let mut frame = Frame::default();
             scene.draw(&mut frame, stage).unwrap();
-            let names: Vec<_> = frame.labels.iter().filter(|l| l.priority == 3).cloned().collect();
+            let names: Vec<_> = frame
+                .labels
+                .iter()
+                .filter(|l| l.priority == 3)
+                .cloned()
+                .collect();
             assert_eq!(names.len(), 2);
             assert!(frame.labels.iter().all(|l| l.priority <= 3));
             for size in CANVASES {
                 let camera = page_camera([0.5, 0.3, 0.0, 5.0, 0.6, 0.45], &frame, size);
                 let mut names_only = frame.clone();
                 names_only.labels = names.clone();
-                assert_clear(&format!("01 orders, stage {stage}"), &names_only, &camera, size);
+                assert_clear(
+                    &format!("01 orders, stage {stage}"),
+                    &names_only,
+                    &camera,
+                    size,
+                );
             }
         }
     }

@@ -185,6 +185,21 @@ impl Permutation {
         self.at(self.at(self.at(x) + y))
     }
 
+    /// The reference's hash chain for the 3D cell whose low corner is `(xx, yy, zz)` (each
+    /// coordinate `& 255`): the table indices `[aa, ba, ab, bb]`, whose entries hash the cell's
+    /// corners 000, 100, 010, 110 and whose next entries (`aa + 1`, …) the corners 001, 101, 011,
+    /// 111. Shared by the per-point, row and batch noises.
+    #[inline(always)]
+    fn cell_hashes3(&self, xx: usize, yy: usize, zz: usize) -> [usize; 4] {
+        let (a, b) = (self.at(xx) + yy, self.at(xx + 1) + yy);
+        [
+            self.at(a) + zz,
+            self.at(b) + zz,
+            self.at(a + 1) + zz,
+            self.at(b + 1) + zz,
+        ]
+    }
+
     /// The hash of lattice point `(i, j, k)` of the 3D noise, as the reference computes it.
     pub fn hash3(&self, i: i32, j: i32, k: i32) -> usize {
         let (x, y, z) = ((i & 255) as usize, (j & 255) as usize, (k & 255) as usize);
@@ -296,12 +311,7 @@ impl Permutation {
             (yi & 255) as usize,
             (zi & 255) as usize,
         );
-        let a = self.at(xx) + yy;
-        let aa = self.at(a) + zz;
-        let ab = self.at(a + 1) + zz;
-        let b = self.at(xx + 1) + yy;
-        let ba = self.at(b) + zz;
-        let bb = self.at(b + 1) + zz;
+        let [aa, ba, ab, bb] = self.cell_hashes3(xx, yy, zz);
         let g = |h: usize| GRAD3[self.at(h) & 15];
         let dot = |g: [f32; 3], dx: f32, dy: f32, dz: f32| g[0] * dx + g[1] * dy + g[2] * dz;
         let (g000, g100, g010, g110) = (g(aa), g(ba), g(ab), g(bb));
@@ -505,12 +515,7 @@ impl Permutation {
         let (v, w) = (fade(fy), fade(fz));
         for_each_cell_run(xs, |xi, run| {
             let xx = (xi & 255) as usize;
-            let a = self.at(xx) + yy;
-            let aa = self.at(a) + zz;
-            let ab = self.at(a + 1) + zz;
-            let b = self.at(xx + 1) + yy;
-            let ba = self.at(b) + zz;
-            let bb = self.at(b + 1) + zz;
+            let [aa, ba, ab, bb] = self.cell_hashes3(xx, yy, zz);
             let g = |h: usize| GRAD3[self.at(h) & 15];
             // A corner's ramp along x at this row: slope gx, plus its y, z part.
             let yz = |g: [f32; 3], dy: f32, dz: f32| g[1] * dy + g[2] * dz;
@@ -638,12 +643,7 @@ impl Permutation {
                     (cell[1][l] & 255) as usize,
                     (cell[2][l] & 255) as usize,
                 );
-                let a = self.at(xx) + yy;
-                let aa = self.at(a) + zz;
-                let ab = self.at(a + 1) + zz;
-                let b = self.at(xx + 1) + yy;
-                let ba = self.at(b) + zz;
-                let bb = self.at(b + 1) + zz;
+                let [aa, ba, ab, bb] = self.cell_hashes3(xx, yy, zz);
                 let hashes = [aa, ba, ab, bb, aa + 1, ba + 1, ab + 1, bb + 1];
                 for (c, hc) in hashes.into_iter().enumerate() {
                     h[c][l] = self.at(hc) as u32;

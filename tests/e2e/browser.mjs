@@ -124,6 +124,24 @@ export async function pixelStats(page, locator, key) {
   }, [png.toString('base64'), key]);
 }
 
+/**
+ * How many pixels of `figure`'s 3D canvas are close to the figures' blue (#1f6fd6, shaded): the
+ * particles and balls of lessons 11 and 15.
+ */
+export async function bluePixels(page, figure) {
+  // pixelStats decodes the screenshot in the page and keeps its pixels under the key.
+  await pixelStats(page, page.locator(`${figure} .stage canvas`).first(), 'blue');
+  return page.evaluate(() => {
+    const data = window.__shots.blue;
+    let n = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+      if (b > 90 && b > r + 50 && b > g + 25) n++;
+    }
+    return n;
+  });
+}
+
 /** Mean absolute difference per channel (0..255) between two screenshots kept by `pixelStats`. */
 export function meanDifference(page, keyA, keyB) {
   return page.evaluate(([a, b]) => {

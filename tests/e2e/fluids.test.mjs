@@ -2,7 +2,7 @@
 // sliders; the drag is the canvas's own path), and the note follows it out of the water.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage, setControl, pixelStats, meanDifference } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl, pixelStats, meanDifference, bluePixels } from './browser.mjs';
 
 const site = serveDist();
 
@@ -46,20 +46,6 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse', asyn
   }
 });
 
-/** Pixels of the splash's canvas close to the particles' blue at rest (shaded #1f6fd6). */
-async function bluePixels(page) {
-  await pixelStats(page, page.locator('#fig-splash .stage canvas').first(), 'blue');
-  return page.evaluate(() => {
-    const data = window.__shots.blue;
-    let n = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
-      if (b > 90 && b > r + 50 && b > g + 25) n++;
-    }
-    return n;
-  });
-}
-
 /** Moves the splash's timeline to `at` (in 1/1000 of its duration) and waits for frames. */
 async function scrubTo(page, at) {
   const scrub = page.locator('#fig-splash .scrub');
@@ -78,7 +64,7 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
     const play = page.locator('#splash-timeline .play');
     if ((await play.textContent()).includes('pause')) await play.click();
     await scrubTo(page, 0);
-    const cpu = await bluePixels(page);
+    const cpu = await bluePixels(page, fig);
     await setControl(page, fig, 'step on', 'GPU');
     await scrubTo(page, 0);
     await page.waitForTimeout(1000);
@@ -86,7 +72,7 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
     const note = await page.locator('#splash-note').textContent();
     assert.match(note, /^PBF on the GPU, \d+ particles, neighbours from the GPU grid/, note);
     // The same fluid at rest drawn from the GPU's sprites: about as many blue pixels.
-    const gpu = await bluePixels(page);
+    const gpu = await bluePixels(page, fig);
     await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/15-fluids-splash-gpu-webgpu.png' });
     assert.ok(cpu > 2000 && gpu > 0.7 * cpu && gpu < 1.4 * cpu, `blue pixels: CPU ${cpu}, GPU ${gpu}`);
     // The splash: at 0.3 s the drop has hit the pool (it falls 0.28 m, 0.24 s), once the GPU's

@@ -8,7 +8,7 @@
 // with a panel no taller than the canvas; the flock's order plot is drawn from its samples.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage, setControl, pixelStats } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl, bluePixels } from './browser.mjs';
 
 const site = serveDist();
 const open = (context, path, width, height) => openPage(context, site.origin + path, { width, height });
@@ -87,21 +87,6 @@ async function scrubTo(page, figure, at) {
   await scrub.fill(String(at));
   await scrub.dispatchEvent('input');
   await frames(page, 4);
-}
-
-/** Pixels of `figure`'s 3D canvas close to the balls' blue (shaded #1f6fd6). */
-async function bluePixels(page, figure) {
-  // pixelStats decodes the screenshot in the page and keeps its pixels under the key.
-  await pixelStats(page, page.locator(`${figure} .stage canvas`).first(), 'blue');
-  return page.evaluate(() => {
-    const data = window.__shots.blue;
-    let n = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
-      if (b > 90 && b > r + 50 && b > g + 25) n++;
-    }
-    return n;
-  });
 }
 
 test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; bouncing balls stay in view at e = 1', async () => {
