@@ -178,6 +178,12 @@ pub struct Label {
     pub priority: i32,
 }
 
+/// The box the page gives a label's text (bold, 0.8 rem), CSS pixels: about 7.5 px a character
+/// and 16 px tall.
+pub fn label_size_px(text: &str) -> glam::Vec2 {
+    glam::Vec2::new(7.5 * text.chars().count() as f32, 16.0)
+}
+
 /// Depth bias of axes and arrows (see [`LineVertex::depth_bias`]).
 pub const OVERLAY_BIAS: f32 = 2e-5;
 /// Depth bias of a line drawn over everything ([`Frame::line_on_top`]).
@@ -530,6 +536,76 @@ impl Frame {
             left: false,
             priority: 0,
         });
+    }
+
+    /// Whether a label of `text` anchored at `anchor` (reading leftwards when `left`), in the box
+    /// the page's layout first tries ([`layout::preferred`], moved inside the canvas) on a `size`
+    /// canvas (CSS pixels) seen through `view_proj`, stays clear of the frame's markers (their
+    /// whole dot), its strokes (sampled along each segment) and the first places of the labels
+    /// the layout places before one of `priority` (those of at least that priority; a lower
+    /// one moves out of its way). The box is measured as [`label_size_px`] does. For figures
+    /// that choose among places for a label near crowded lines; an anchor behind the camera is
+    /// not clear.
+    pub fn label_is_clear(
+        &self,
+        view_proj: Mat4,
+        size: glam::Vec2,
+        anchor: Vec3,
+        left: bool,
+        text: &str,
+        priority: i32,
+    ) -> bool {
+        use crate::camera::project_to_canvas;
+        use layout::{preferred, LabelBox, Rect};
+        let place = |anchor: Vec3, left: bool, text: &str| {
+            let a = project_to_canvas(view_proj, size, anchor)?;
+            let label = LabelBox {
+                anchor: a,
+                size: label_size_px(text),
+                left,
+                visible: true,
+                priority: 0,
+            };
+            let min = preferred(&label)
+                .min(size - label.size)
+                .max(glam::Vec2::ZERO);
+            Some(Rect {
+                min,
+                size: label.size,
+            })
+        };
+        let Some(rect) = place(anchor, left, text) else {
+            return false;
+        };
+        let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
+        let markers_clear = self.markers.iter().all(|m| {
+            at(m.center).is_none_or(|c| {
+                let r = 0.5 * m.size_px.abs();
+                !(c.cmpge(rect.min - r).all() && c.cmple(rect.max() + r).all())
+            })
+        });
+        let strokes_clear = || {
+            self.strokes.iter().all(|s| {
+                let (Some(a), Some(b)) = (at(s.a), at(s.b)) else {
+                    return true;
+                };
+                let r = 0.5 * s.width_px;
+                (0..=16).all(|k| {
+                    let p = a.lerp(b, k as f32 / 16.0);
+                    !(p.cmpgt(rect.min - r).all() && p.cmplt(rect.max() + r).all())
+                })
+            })
+        };
+        let labels_clear = || {
+            self.labels
+                .iter()
+                .filter(|l| l.priority >= priority)
+                .all(|l| {
+                    place(l.anchor, l.left, &l.text)
+                        .is_none_or(|other| !other.overlaps(&rect, layout::PAD_PX))
+                })
+        };
+        markers_clear && strokes_clear() && labels_clear()
     }
 
     /// A [`Frame::label`] with a `priority`: where labels crowd, the higher one keeps its place.

@@ -302,3 +302,60 @@ fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
         }
     }
 }
+
+#[test]
+fn lesson_07_root_labels_keep_off_the_chains_at_every_pole_and_target() {
+    // Figure 1 at its page camera, both canvases: each chain's name and α, the labels at the
+    // roots, keep off every dot and line of the figure (the reach circle, the bars, side d, the
+    // pole's line) at every pole angle of the slider, for targets above, beside and below the
+    // roots (a low target bends the chains down past their roots), as far as the sliders go.
+    // As on the page, the figure places them for the view of the frame before (set_view); a
+    // failing case is collected so the message shows how many fail, not only the first.
+    use inbetween::figures::ik::{IkFigure, SOLVERS};
+    let mut targets = vec![Vec3::new(0.55, 0.65, 0.15)];
+    for x in [-1.5, -0.8, -0.3, 0.0, 0.3, 0.8, 1.5] {
+        for y in [-1.5, -0.8, -0.3, 0.0, 0.3, 1.0, 1.5] {
+            for z in [-0.6, 0.0, 0.6] {
+                targets.push(Vec3::new(x, y, z));
+            }
+        }
+    }
+    let mut failures = Vec::new();
+    for &target in &targets {
+        for pole in (-180..=180).step_by(30) {
+            let mut scene = IkFigure::new();
+            scene.set_target(target).unwrap();
+            scene.set_pole_angle_deg(pole as f32).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], &frame, size);
+                scene.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                scene.draw(&mut frame).unwrap();
+                let camera = page_camera([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], &frame, size);
+                let mut roots = frame.clone();
+                roots
+                    .labels
+                    .retain(|l| SOLVERS.contains(&l.text.as_str()) || l.text.starts_with("α"));
+                let name = format!("07 roots, target {target}, pole {pole}°");
+                if let Err(e) =
+                    std::panic::catch_unwind(|| assert_clear(&name, &roots, &camera, size))
+                {
+                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures, e.g.\n{}",
+        failures.len(),
+        failures
+            .iter()
+            .take(20)
+            .cloned()
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+}
