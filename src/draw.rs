@@ -176,6 +176,10 @@ pub struct Label {
     /// Where labels crowd, a higher priority keeps its place and a lower one moves or hides
     /// (see [`layout`]); equal priorities go in the order they were added.
     pub priority: i32,
+    /// CSS pixels from the anchor's projection to where the label is placed (x right, y down):
+    /// keeps a label a fixed distance on screen from the dot it names whatever the camera's
+    /// distance, where an offset in metres would shrink onto the dot ([`Frame::label_off_dot`]).
+    pub offset_px: glam::Vec2,
 }
 
 /// The box the page gives a label's text (bold, 0.8 rem), CSS pixels: about 7.5 px a character
@@ -183,6 +187,9 @@ pub struct Label {
 pub fn label_size_px(text: &str) -> glam::Vec2 {
     glam::Vec2::new(7.5 * text.chars().count() as f32, 16.0)
 }
+
+/// The gap between a dot and a label placed off it ([`Frame::label_off_dot`]), CSS pixels.
+pub const LABEL_DOT_GAP_PX: f32 = 4.0;
 
 /// Depth bias of axes and arrows (see [`LineVertex::depth_bias`]).
 pub const OVERLAY_BIAS: f32 = 2e-5;
@@ -535,6 +542,7 @@ impl Frame {
             color,
             left: false,
             priority: 0,
+            offset_px: glam::Vec2::ZERO,
         });
     }
 
@@ -557,8 +565,8 @@ impl Frame {
     ) -> bool {
         use crate::camera::project_to_canvas;
         use layout::{preferred, LabelBox, Rect};
-        let place = |anchor: Vec3, left: bool, text: &str| {
-            let a = project_to_canvas(view_proj, size, anchor)?;
+        let place = |anchor: Vec3, offset_px: glam::Vec2, left: bool, text: &str| {
+            let a = project_to_canvas(view_proj, size, anchor)? + offset_px;
             let label = LabelBox {
                 anchor: a,
                 size: label_size_px(text),
@@ -574,7 +582,7 @@ impl Frame {
                 size: label.size,
             })
         };
-        let Some(rect) = place(anchor, left, text) else {
+        let Some(rect) = place(anchor, glam::Vec2::ZERO, left, text) else {
             return false;
         };
         let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
@@ -601,7 +609,7 @@ impl Frame {
                 .iter()
                 .filter(|l| l.priority >= priority)
                 .all(|l| {
-                    place(l.anchor, l.left, &l.text)
+                    place(l.anchor, l.offset_px, l.left, &l.text)
                         .is_none_or(|other| !other.overlaps(&rect, layout::PAD_PX))
                 })
         };
@@ -633,6 +641,61 @@ impl Frame {
             color,
             left: true,
             priority: 0,
+            offset_px: glam::Vec2::ZERO,
+        });
+    }
+
+    /// A label beside a dot `dot_px` CSS pixels across at `anchor`, towards `side` on screen (x
+    /// right, y down: each component −1, 0 or 1, so eight places round the dot), with a gap of
+    /// [`LABEL_DOT_GAP_PX`] between the dot's edge and the label's box at any camera distance,
+    /// where an offset in metres would shrink onto the dot as the camera backs away. A label to
+    /// the left reads leftwards; one straight above or below is centred on the dot (its width
+    /// from [`label_size_px`]).
+    #[inline(never)]
+    pub fn label_off_dot(
+        &mut self,
+        anchor: Vec3,
+        dot_px: f32,
+        side: glam::Vec2,
+        text: impl Into<String>,
+        color: Vec3,
+        priority: i32,
+    ) {
+        let text = text.into();
+        let size = label_size_px(&text);
+        let mut clear = 0.5 * dot_px.abs() + LABEL_DOT_GAP_PX;
+        if side.x != 0.0 && side.y != 0.0 {
+            // The box's corner nearest the dot, on the diagonal.
+            clear *= std::f32::consts::FRAC_1_SQRT_2;
+        }
+        // The box's top-left corner relative to the dot's centre.
+        let x = match side.x {
+            x if x > 0.0 => clear,
+            x if x < 0.0 => -clear - size.x,
+            _ => -0.5 * size.x,
+        };
+        let y = match side.y {
+            y if y > 0.0 => clear,
+            y if y < 0.0 => -clear - size.y,
+            _ => -0.5 * size.y,
+        };
+        // The anchor that puts the layout's first place there (see layout::preferred).
+        let left = side.x < 0.0;
+        let offset_px = glam::Vec2::new(
+            if left {
+                x + size.x + layout::GAP_PX
+            } else {
+                x - layout::GAP_PX
+            },
+            y + 0.5 * size.y,
+        );
+        self.labels.push(Label {
+            anchor,
+            text,
+            color,
+            left,
+            priority,
+            offset_px,
         });
     }
 
@@ -881,6 +944,8 @@ impl Frame {
             l.text.bytes().for_each(|b| eat(b as u32));
             eat(l.left as u32);
             eat(l.priority as u32);
+            eat(l.offset_px.x.to_bits());
+            eat(l.offset_px.y.to_bits());
         }
         for s in &self.skinned {
             eat(s.mesh.0 as u32 | (s.dqs as u32) << 31);
@@ -992,8 +1057,8 @@ pub fn project_labels(
                 && ndc.y.abs() <= 1.05
                 && (0.0..=1.0).contains(&ndc.z);
             ScreenLabel {
-                x_px: (ndc.x * 0.5 + 0.5) * width_px,
-                y_px: (0.5 - ndc.y * 0.5) * height_px,
+                x_px: (ndc.x * 0.5 + 0.5) * width_px + label.offset_px.x,
+                y_px: (0.5 - ndc.y * 0.5) * height_px + label.offset_px.y,
                 visible,
                 text: label.text.clone(),
                 css_color: palette::css(label.color),
@@ -1232,6 +1297,7 @@ mod tests {
                     color: Vec3::ONE,
                     left: false,
                     priority: 0,
+                    offset_px: glam::Vec2::ZERO,
                 },
                 Label {
                     anchor: cam.eye() + (cam.eye() - cam.target),
@@ -1239,6 +1305,7 @@ mod tests {
                     color: Vec3::ONE,
                     left: true,
                     priority: 0,
+                    offset_px: glam::Vec2::ZERO,
                 },
             ],
             vp,

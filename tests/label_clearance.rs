@@ -359,3 +359,59 @@ fn lesson_07_root_labels_keep_off_the_chains_at_every_pole_and_target() {
             .join("\n")
     );
 }
+
+#[test]
+fn lesson_00_point_and_image_labels_stay_apart_where_the_point_crosses_the_near_plane() {
+    // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
+    // through the first third of the point's path (t = 0.2 s of the 6 s timeline is s ≈ 0.07,
+    // where the point crosses z_near and its dot meets its image's), for the page's point and
+    // two others: "p" and "image" stay where the figure put them (no leader line), keep a few
+    // pixels from each other, and cover neither dot nor the dashed ray from the eye.
+    use inbetween::draw::palette;
+    use inbetween::figures::raster::Frustum;
+    for (x, y) in [(0.6, 0.3), (0.9, 0.2), (1.0, -0.2)] {
+        let mut scene = Frustum::new();
+        scene.set_offset(x, y).unwrap();
+        for k in 0..=30 {
+            let s = k as f32 * 0.01;
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, s).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([4.5, 1.2, -4.0, 17.0, 0.45, 0.45], &frame, size);
+                let name = format!("00 frustum, point ({x}, {y}), s {s}");
+                let mut pair = frame.clone();
+                // The point's label in the frustum (the NDC box's comes later) and the image's.
+                let p = pair.labels.iter().position(|l| l.text == "p").unwrap();
+                let image = pair.labels.iter().position(|l| l.text == "image").unwrap();
+                pair.labels = vec![pair.labels[p].clone(), pair.labels[image].clone()];
+                // The ray from the eye (grey, dashed); the frustum's edges pass the point and
+                // its image near the apex.
+                pair.strokes
+                    .retain(|s| s.color[..3] == palette::GREY.to_array() && s.dash[3] > 0.0);
+                assert_clear(&name, &pair, &camera, size);
+                let placed = layout(&frame, &camera, size);
+                let boxes: Vec<Rect> = [p, image]
+                    .map(|i| {
+                        let (l, b, at) = &placed[i];
+                        assert!(at.shown, "{name} on {size}: {:?} hidden", l.text);
+                        assert!(
+                            at.leader_to.is_none(),
+                            "{name} on {size}: {:?} moved",
+                            l.text
+                        );
+                        Rect {
+                            min: at.top_left,
+                            size: b.size,
+                        }
+                    })
+                    .into();
+                assert!(
+                    !boxes[0].overlaps(&boxes[1], 4.0),
+                    "{name} on {size}: \"p\" at {:?} and \"image\" at {:?} crowd",
+                    boxes[0].min,
+                    boxes[1].min
+                );
+            }
+        }
+    }
+}

@@ -853,6 +853,7 @@ impl IkFigure {
             color: label.color,
             left: chosen.1,
             priority: label.priority,
+            offset_px: glam::Vec2::ZERO,
         });
     }
 
@@ -938,6 +939,7 @@ impl IkFigure {
                 color,
                 left: out.x < 0.0,
                 priority: 0,
+                offset_px: glam::Vec2::ZERO,
             });
         };
         // A side's middle and the direction across it away from the triangle, in the xy plane
