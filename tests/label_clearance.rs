@@ -415,3 +415,68 @@ fn lesson_00_point_and_image_labels_stay_apart_where_the_point_crosses_the_near_
         }
     }
 }
+
+#[test]
+fn lesson_04_key_names_sit_at_their_keys_and_off_the_paths() {
+    // Figure 1 at its page camera (lessons/04-rigid-motions/lesson.js), both canvases, at the
+    // keys, the page's start (t = 0.5 at 1 s of the 4 s ping-pong), a third and the end, for
+    // the page's key B and a turn of 0°: "A" and "B" each end within the reach of their key's
+    // axes (0.5 m) and 10 px on screen from its origin (they lay 1 m out to the side), clear
+    // of every path, tick and dot and of the aeroplanes.
+    use inbetween::figures::rigid::{RigidMotion, KEY_LABEL_M};
+    for angle in [150.0, 0.0] {
+        let mut scene = RigidMotion::new();
+        scene
+            .set_end(Vec3::new(0.2, 1.0, 0.3), angle, Vec3::new(1.5, 1.4, 0.3))
+            .unwrap();
+        for t in [0.0, 0.33, 0.5, 1.0] {
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, t).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([0.0, 1.0, 0.0, 6.5, 0.35, 0.4], &frame, size);
+                let name = format!("04 keys, angle {angle}°, t {t}");
+                let mut keys = frame.clone();
+                keys.labels.retain(|l| l.text == "A" || l.text == "B");
+                assert_eq!(keys.labels.len(), 2);
+                assert_clear(&name, &keys, &camera, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                for (text, rect) in label_boxes(&keys, &camera, size) {
+                    // The key's origin, KEY_LABEL_M below the name's anchor.
+                    let anchor = keys.labels.iter().find(|l| l.text == text).unwrap().anchor;
+                    let key = anchor - Vec3::Y * KEY_LABEL_M;
+                    let origin = project_to_canvas(view_proj, size, key).unwrap();
+                    let gap = rect.nearest(origin).distance(origin);
+                    // The key's axes are 0.5 m long; the name ends no more than 10 px past
+                    // their tips' reach.
+                    let axis = project_to_canvas(view_proj, size, key + Vec3::Y * 0.5)
+                        .unwrap()
+                        .distance(origin);
+                    assert!(
+                        gap <= axis + 10.0,
+                        "{name} on {size}: {text:?} {gap} px from its key (axes {axis} px)"
+                    );
+                    // Nor over the aeroplanes' parts (boxes: their corners and centres).
+                    for m in &frame.meshes {
+                        for c in 0..9 {
+                            let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                            let local = if c == 8 {
+                                Vec3::ZERO
+                            } else {
+                                Vec3::new(s(1), s(2), s(4))
+                            };
+                            let Some(p) =
+                                project_to_canvas(view_proj, size, m.model.transform_point3(local))
+                            else {
+                                continue;
+                            };
+                            assert!(
+                                !(p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all()),
+                                "{name} on {size}: {text:?} covers a plane's part at {p}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
