@@ -574,9 +574,7 @@ impl Frame {
                 visible: true,
                 priority: 0,
             };
-            let min = preferred(&label)
-                .min(size - label.size)
-                .max(glam::Vec2::ZERO);
+            let min = layout::inside(preferred(&label), label.size, size);
             Some(Rect {
                 min,
                 size: label.size,

@@ -480,3 +480,45 @@ fn lesson_04_key_names_sit_at_their_keys_and_off_the_paths() {
         }
     }
 }
+
+#[test]
+fn lesson_14_drift_labels_stay_inside_the_canvas_and_apart() {
+    // Figure 2 at its page camera (lessons/14-rigid-bodies/lesson.js), both canvases, at the
+    // start, part-way and at the end of the run, at the page's spin and step and at the
+    // sliders' largest (where the unnormalised box grows too large to draw and its label reads
+    // "too large to draw"): every label is shown where the figure put it, inside the canvas
+    // with EDGE_PX to spare (the rightmost read out past the right edge), and over its box.
+    use inbetween::draw::layout::EDGE_PX;
+    use inbetween::figures::rigid_body::DriftFigure;
+    for (spin, step_ms) in [(5.0, 10.0), (30.0, 50.0)] {
+        let mut scene = DriftFigure::new();
+        scene.set_drift(spin, step_ms).unwrap();
+        let end = scene.duration_sec();
+        for time_sec in [0.0, 0.35, 0.5 * end, end] {
+            scene.advance_to(time_sec).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame);
+            assert_eq!(frame.labels.len(), 3);
+            for size in CANVASES {
+                let camera = page_camera([0.0, 1.0, 0.0, 6.0, 0.0, 0.12], &frame, size);
+                let name = format!("14 drift, spin {spin}, step {step_ms} ms, t {time_sec}");
+                for (l, b, p) in layout(&frame, &camera, size) {
+                    assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
+                    assert!(
+                        p.leader_to.is_none(),
+                        "{name} on {size}: {:?} moved",
+                        l.text
+                    );
+                    let max = p.top_left + b.size;
+                    assert!(
+                        p.top_left.cmpge(Vec2::splat(EDGE_PX)).all()
+                            && max.cmple(size - EDGE_PX).all(),
+                        "{name} on {size}: {:?} at {} to {max} touches the edge",
+                        l.text,
+                        p.top_left
+                    );
+                }
+            }
+        }
+    }
+}
