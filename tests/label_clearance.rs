@@ -522,3 +522,34 @@ fn lesson_14_drift_labels_stay_inside_the_canvas_and_apart() {
         }
     }
 }
+
+#[test]
+fn lesson_00_light_label_sits_on_its_lamp() {
+    // Figure 5 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
+    // the page's light and two others: "light" is shown beside the lamp's dot (its box within
+    // 12 px of the dot's edge; 0.25 m up left a 20 px gap), covering no dot or line.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::raster::Shading;
+    for (azimuth, elevation) in [(40.0, 35.0), (-60.0, 10.0), (120.0, 70.0)] {
+        let mut scene = Shading::new();
+        scene.set_light_deg(azimuth, elevation).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, MeshId(1));
+        for size in CANVASES {
+            let camera = page_camera([0.0, 1.5, 0.0, 7.5, -0.5, 0.55], &frame, size);
+            let name = format!("00 shading, light at {azimuth}°, {elevation}°");
+            let mut light = frame.clone();
+            light.labels.retain(|l| l.text == "light");
+            assert_clear(&name, &light, &camera, size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let lamp = frame.markers.iter().find(|m| m.size_px == 16.0).unwrap();
+            let dot = project_to_canvas(view_proj, size, Vec3::from(lamp.center)).unwrap();
+            let (_, rect) = label_boxes(&light, &camera, size).pop().unwrap();
+            let gap = rect.nearest(dot).distance(dot) - 8.0;
+            assert!(
+                gap <= 12.0,
+                "{name} on {size}: \"light\" {gap} px from its lamp"
+            );
+        }
+    }
+}

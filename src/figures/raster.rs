@@ -295,6 +295,8 @@ const EYE: Vec3 = Vec3::new(0.0, 1.2, 0.0);
 /// Figure 2's dots: the point (and its place in the NDC box) and its image on the near plane,
 /// CSS pixels across.
 const POINT_PX: f32 = 14.0;
+/// Figure 5's lamp, CSS pixels across.
+const LAMP_PX: f32 = 16.0;
 const IMAGE_PX: f32 = 10.0;
 /// Where the NDC box of Figure 2 stands (its centre of the near face).
 const NDC_ORIGIN: Vec3 = Vec3::new(9.0, 1.2, -2.0);
@@ -1488,8 +1490,9 @@ impl Shading {
         frame.label_with_priority(tip(v), "v", V, 2);
         frame.marker(p, 10.0, palette::DARK);
         let lamp = SPHERE_CENTRE + l * 2.6;
-        frame.marker(lamp, 16.0, Vec3::new(1.0, 0.8, 0.2));
-        frame.label_with_priority(lamp + Vec3::Y * 0.25, "light", L, 0);
+        frame.marker(lamp, LAMP_PX, Vec3::new(1.0, 0.8, 0.2));
+        // Just above the lamp's dot, a few pixels off it at any zoom.
+        frame.label_off_dot(lamp, LAMP_PX, Vec2::new(0.0, -1.0), "light", L, 0);
         let model_vector = match self.model {
             ShadingModel::Phong => (2.0 * n.dot(l) * n - l, R, "r"),
             ShadingModel::BlinnPhong => ((l + v).normalize_or_zero(), H, "h"),
