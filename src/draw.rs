@@ -176,7 +176,20 @@ pub struct Label {
     /// Where labels crowd, a higher priority keeps its place and a lower one moves or hides
     /// (see [`layout`]); equal priorities go in the order they were added.
     pub priority: i32,
+    /// CSS pixels from the anchor's projection to where the label is placed (x right, y down):
+    /// keeps a label a fixed distance on screen from the dot it names whatever the camera's
+    /// distance, where an offset in metres would shrink onto the dot ([`Frame::label_off_dot`]).
+    pub offset_px: glam::Vec2,
 }
+
+/// The box the page gives a label's text (bold, 0.8 rem), CSS pixels: about 7.5 px a character
+/// and 16 px tall.
+pub fn label_size_px(text: &str) -> glam::Vec2 {
+    glam::Vec2::new(7.5 * text.chars().count() as f32, 16.0)
+}
+
+/// The gap between a dot and a label placed off it ([`Frame::label_off_dot`]), CSS pixels.
+pub const LABEL_DOT_GAP_PX: f32 = 4.0;
 
 /// Depth bias of axes and arrows (see [`LineVertex::depth_bias`]).
 pub const OVERLAY_BIAS: f32 = 2e-5;
@@ -529,7 +542,76 @@ impl Frame {
             color,
             left: false,
             priority: 0,
+            offset_px: glam::Vec2::ZERO,
         });
+    }
+
+    /// Whether a label of `text` anchored at `anchor` (reading leftwards when `left`), in the box
+    /// the page's layout first tries ([`layout::preferred`], moved inside the canvas) on a `size`
+    /// canvas (CSS pixels) seen through `view_proj`, stays clear of the frame's markers (their
+    /// whole dot), its strokes (sampled along each segment) and the first places of the labels
+    /// the layout places before one of `priority` (those of at least that priority; a lower
+    /// one moves out of its way). The box is measured as [`label_size_px`] does. For figures
+    /// that choose among places for a label near crowded lines; an anchor behind the camera is
+    /// not clear.
+    pub fn label_is_clear(
+        &self,
+        view_proj: Mat4,
+        size: glam::Vec2,
+        anchor: Vec3,
+        left: bool,
+        text: &str,
+        priority: i32,
+    ) -> bool {
+        use crate::camera::project_to_canvas;
+        use layout::{preferred, LabelBox, Rect};
+        let place = |anchor: Vec3, offset_px: glam::Vec2, left: bool, text: &str| {
+            let a = project_to_canvas(view_proj, size, anchor)? + offset_px;
+            let label = LabelBox {
+                anchor: a,
+                size: label_size_px(text),
+                left,
+                visible: true,
+                priority: 0,
+            };
+            let min = layout::inside(preferred(&label), label.size, size);
+            Some(Rect {
+                min,
+                size: label.size,
+            })
+        };
+        let Some(rect) = place(anchor, glam::Vec2::ZERO, left, text) else {
+            return false;
+        };
+        let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
+        let markers_clear = self.markers.iter().all(|m| {
+            at(m.center).is_none_or(|c| {
+                let r = 0.5 * m.size_px.abs();
+                !(c.cmpge(rect.min - r).all() && c.cmple(rect.max() + r).all())
+            })
+        });
+        let strokes_clear = || {
+            self.strokes.iter().all(|s| {
+                let (Some(a), Some(b)) = (at(s.a), at(s.b)) else {
+                    return true;
+                };
+                let r = 0.5 * s.width_px;
+                (0..=16).all(|k| {
+                    let p = a.lerp(b, k as f32 / 16.0);
+                    !(p.cmpgt(rect.min - r).all() && p.cmplt(rect.max() + r).all())
+                })
+            })
+        };
+        let labels_clear = || {
+            self.labels
+                .iter()
+                .filter(|l| l.priority >= priority)
+                .all(|l| {
+                    place(l.anchor, l.offset_px, l.left, &l.text)
+                        .is_none_or(|other| !other.overlaps(&rect, layout::PAD_PX))
+                })
+        };
+        markers_clear && strokes_clear() && labels_clear()
     }
 
     /// A [`Frame::label`] with a `priority`: where labels crowd, the higher one keeps its place.
@@ -557,6 +639,61 @@ impl Frame {
             color,
             left: true,
             priority: 0,
+            offset_px: glam::Vec2::ZERO,
+        });
+    }
+
+    /// A label beside a dot `dot_px` CSS pixels across at `anchor`, towards `side` on screen (x
+    /// right, y down: each component −1, 0 or 1, so eight places round the dot), with a gap of
+    /// [`LABEL_DOT_GAP_PX`] between the dot's edge and the label's box at any camera distance,
+    /// where an offset in metres would shrink onto the dot as the camera backs away. A label to
+    /// the left reads leftwards; one straight above or below is centred on the dot (its width
+    /// from [`label_size_px`]).
+    #[inline(never)]
+    pub fn label_off_dot(
+        &mut self,
+        anchor: Vec3,
+        dot_px: f32,
+        side: glam::Vec2,
+        text: impl Into<String>,
+        color: Vec3,
+        priority: i32,
+    ) {
+        let text = text.into();
+        let size = label_size_px(&text);
+        let mut clear = 0.5 * dot_px.abs() + LABEL_DOT_GAP_PX;
+        if side.x != 0.0 && side.y != 0.0 {
+            // The box's corner nearest the dot, on the diagonal.
+            clear *= std::f32::consts::FRAC_1_SQRT_2;
+        }
+        // The box's top-left corner relative to the dot's centre.
+        let x = match side.x {
+            x if x > 0.0 => clear,
+            x if x < 0.0 => -clear - size.x,
+            _ => -0.5 * size.x,
+        };
+        let y = match side.y {
+            y if y > 0.0 => clear,
+            y if y < 0.0 => -clear - size.y,
+            _ => -0.5 * size.y,
+        };
+        // The anchor that puts the layout's first place there (see layout::preferred).
+        let left = side.x < 0.0;
+        let offset_px = glam::Vec2::new(
+            if left {
+                x + size.x + layout::GAP_PX
+            } else {
+                x - layout::GAP_PX
+            },
+            y + 0.5 * size.y,
+        );
+        self.labels.push(Label {
+            anchor,
+            text,
+            color,
+            left,
+            priority,
+            offset_px,
         });
     }
 
@@ -805,6 +942,8 @@ impl Frame {
             l.text.bytes().for_each(|b| eat(b as u32));
             eat(l.left as u32);
             eat(l.priority as u32);
+            eat(l.offset_px.x.to_bits());
+            eat(l.offset_px.y.to_bits());
         }
         for s in &self.skinned {
             eat(s.mesh.0 as u32 | (s.dqs as u32) << 31);
@@ -916,8 +1055,8 @@ pub fn project_labels(
                 && ndc.y.abs() <= 1.05
                 && (0.0..=1.0).contains(&ndc.z);
             ScreenLabel {
-                x_px: (ndc.x * 0.5 + 0.5) * width_px,
-                y_px: (0.5 - ndc.y * 0.5) * height_px,
+                x_px: (ndc.x * 0.5 + 0.5) * width_px + label.offset_px.x,
+                y_px: (0.5 - ndc.y * 0.5) * height_px + label.offset_px.y,
                 visible,
                 text: label.text.clone(),
                 css_color: palette::css(label.color),
@@ -1156,6 +1295,7 @@ mod tests {
                     color: Vec3::ONE,
                     left: false,
                     priority: 0,
+                    offset_px: glam::Vec2::ZERO,
                 },
                 Label {
                     anchor: cam.eye() + (cam.eye() - cam.target),
@@ -1163,6 +1303,7 @@ mod tests {
                     color: Vec3::ONE,
                     left: true,
                     priority: 0,
+                    offset_px: glam::Vec2::ZERO,
                 },
             ],
             vp,

@@ -2,7 +2,7 @@
 //! shown label lies inside the canvas, and priorities decide who keeps its place.
 
 use glam::Vec2;
-use inbetween::draw::layout::{place, preferred, LabelBox, Placement, Rect, PAD_PX};
+use inbetween::draw::layout::{place, preferred, LabelBox, Placement, Rect, EDGE_PX, PAD_PX};
 use proptest::prelude::*;
 
 fn rect(label: &LabelBox, p: &Placement) -> Rect {
@@ -12,7 +12,8 @@ fn rect(label: &LabelBox, p: &Placement) -> Rect {
     }
 }
 
-/// Asserts what every layout must hold: shown boxes inside the canvas, apart from each other.
+/// Asserts what every layout must hold: shown boxes inside the canvas, `EDGE_PX` from its
+/// edges (text touching the edge reads as cut), apart from each other.
 fn check_layout(labels: &[LabelBox], placed: &[Placement], canvas: Vec2) {
     assert_eq!(labels.len(), placed.len());
     let shown: Vec<(usize, Rect)> = placed
@@ -27,11 +28,11 @@ fn check_layout(labels: &[LabelBox], placed: &[Placement], canvas: Vec2) {
             "label {i} shown with its anchor out of view"
         );
         assert!(
-            r.min.x >= 0.0
-                && r.min.y >= 0.0
-                && r.max().x <= canvas.x + 1e-3
-                && r.max().y <= canvas.y + 1e-3,
-            "label {i} at {r:?} leaves the {canvas} canvas"
+            r.min.x >= EDGE_PX - 1e-3
+                && r.min.y >= EDGE_PX - 1e-3
+                && r.max().x <= canvas.x - EDGE_PX + 1e-3
+                && r.max().y <= canvas.y - EDGE_PX + 1e-3,
+            "label {i} at {r:?} leaves the {canvas} canvas or touches its edge"
         );
     }
     for (k, (i, a)) in shown.iter().enumerate() {

@@ -187,3 +187,60 @@ fn a_file_too_big_to_copy_is_rejected_like_any_other() {
         "{note}"
     );
 }
+
+/// Lesson 09 Figure 5 frames the skinned mesh wherever the clip takes it: at the page's camera
+/// (the scene's fit, yaw 0.6, pitch 0.15) fitted as the viewer does, on the canvases the page
+/// gives it at 800 × 600 and 1600 × 1000, every skinned vertex, every joint and every
+/// bind-pose dot lies inside the canvas, through the clip, with LBS and DQS, the bind-pose dots
+/// on and off. The tiny file's triangle is given a vertex 2 m out along the knee's x axis, which
+/// the clip's quarter turn raises above everything in the rest pose: the rest pose's box and the
+/// joints alone let it leave the canvas at the top.
+#[test]
+fn the_skinned_mesh_stays_in_view_through_the_clip() {
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::gltf_import::{import, wire};
+    let mut imported = import(tiny_skinned_gltf().as_bytes()).unwrap();
+    let knee = imported.skeleton.find("knee (node 2)").unwrap();
+    let mesh = &mut imported.meshes[0];
+    // The rest pose puts the knee's origin at (0, 1, 0): a vertex at the knee's (2, 0, 0).
+    let bind = imported.inverse_bind[knee].inverse();
+    mesh.positions[1] = bind.transform_point3(Vec3::new(2.0, 0.0, 0.0));
+    mesh.joints[1] = [knee as u16, 0, 0, 0];
+    mesh.weights[1] = [1.0, 0.0, 0.0, 0.0];
+    let bytes = wire::encode(&imported).unwrap();
+    for mode in ["lbs", "dqs"] {
+        for dots in [false, true] {
+            let mut figure = GltfFigure::new();
+            figure.load_imported("long.gltf", &bytes).unwrap();
+            figure.set_skinning(mode).unwrap();
+            figure.set_show_bind_pose(dots);
+            let [x, y, z, distance] = figure.fit();
+            for k in 0..=20 {
+                let time_sec = k as f32 * 0.05;
+                let mut f = Frame::default();
+                figure.draw(&mut f, time_sec, &[MeshId(100)]).unwrap();
+                let (skinned, _) = figure.skinned(0).unwrap();
+                let dots_drawn: Vec<Vec3> = f.points.iter().map(|p| Vec3::from(p.center)).collect();
+                let joints: Vec<Vec3> = f
+                    .meshes
+                    .iter()
+                    .filter(|m| m.mesh == MeshId::SPHERE)
+                    .map(|m| m.model.w_axis.truncate())
+                    .collect();
+                for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+                    let mut camera = OrbitCamera::from_view([x, y, z, distance, 0.6, 0.15]);
+                    camera.fit(&f.fit_points(), size, FIT_PAD_PX);
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    for p in skinned.iter().chain(&dots_drawn).chain(&joints) {
+                        let s = project_to_canvas(view_proj, size, *p).unwrap();
+                        assert!(
+                            s.cmpge(Vec2::ZERO).all() && s.cmple(size).all(),
+                            "{mode}, dots {dots}, t {time_sec} on {size}: {p} lands at {s}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1118,3 +1118,42 @@ fn a_panic_of_5_1_is_named_once_against_the_t_that_caused_it() {
         );
     }
 }
+
+/// Figure 7 keeps all six quiz terrains in view from any orbit the student can reach: at the
+/// page's camera (lessons/05-noise/lesson.js) turned to every 30° of yaw and pitches from below
+/// the ground to straight down, fitted as the viewer does on the canvases the page gives it at
+/// 800 × 600 and 1600 × 1000, every vertex of every terrain lands on the canvas. Without a
+/// declared view the page's fixed camera cut the back and front rows once orbited.
+#[test]
+fn the_quiz_terrains_stay_in_view_from_every_orbit() {
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let q = Quiz::new();
+    let mut f = Frame::default();
+    let meshes: Vec<MeshId> = (0..6).map(MeshId).collect();
+    q.draw(&mut f, &meshes);
+    let points: Vec<Vec3> = q
+        .terrains()
+        .iter()
+        .enumerate()
+        .flat_map(|(i, t)| t.positions.iter().map(move |&p| p + Quiz::placement(i)))
+        .collect();
+    assert_eq!(points.len(), 6 * QUIZ_RESOLUTION * QUIZ_RESOLUTION);
+    for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+        for k in 0..12 {
+            let yaw = k as f32 * std::f32::consts::TAU / 12.0;
+            for pitch in [-1.5, -0.6, 0.0, 0.4, 0.8, 1.2, 1.55] {
+                let mut camera = OrbitCamera::from_view([0.0, -0.2, 0.2, 8.2, yaw, pitch]);
+                camera.fit(&f.fit_points(), size, FIT_PAD_PX);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                for p in points.iter().step_by(5) {
+                    let s = project_to_canvas(view_proj, size, *p).unwrap();
+                    assert!(
+                        s.cmpge(Vec2::ZERO).all() && s.cmple(size).all(),
+                        "yaw {yaw}, pitch {pitch} on {size}: {p} lands at {s}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -806,7 +806,7 @@ fn frustum_labels_at_the_apex_stay_apart_and_off_the_dots() {
                 .labels
                 .iter()
                 .map(|l| LabelBox {
-                    anchor: on(l.anchor),
+                    anchor: on(l.anchor) + l.offset_px,
                     size: Vec2::new(7.7 * l.text.chars().count() as f32, 17.0),
                     left: l.left,
                     visible: true,

@@ -517,8 +517,9 @@ fn a_half_turn_is_described_with_a_forward_slide() {
 
 /// Where the three aeroplanes start (key A) and end (key B) together, the figure is not a pile:
 /// with all three shown only the keys' own axes are drawn (a plane shown alone has its own
-/// too), and each key's name lies on its far side from the other key, at least 0.65 m from
-/// the centre of every part of the planes there and from every point of the paths.
+/// too), and each key's name is anchored above its key, at least 0.45 m from the centre of
+/// every part of the planes there and from every point of the paths (the page places it a few
+/// pixels higher still: tests/label_clearance.rs checks its box on screen).
 #[test]
 fn the_keys_stay_readable_where_the_planes_meet_them() {
     use inbetween::draw::{palette, AXIS_PX};
@@ -539,15 +540,18 @@ fn the_keys_stay_readable_where_the_planes_meet_them() {
             .iter()
             .filter(|m| m.mesh == MeshId::CUBE)
             .map(|m| m.model.w_axis.truncate());
+        // The paths (the keys' axes are left out: the name sits just past the tip of its
+        // key's y axis, which leads to it).
         let paths = f
             .strokes
             .iter()
+            .filter(|s| s.width_px != AXIS_PX)
             .flat_map(|s| [Vec3::from(s.a), Vec3::from(s.b)]);
         let nearest = centres
             .chain(paths)
             .map(|p| (p - label.anchor).length())
             .fold(f32::INFINITY, f32::min);
-        assert!(nearest >= 0.65, "{key}: {nearest} m from a plane or a path");
+        assert!(nearest >= 0.45, "{key}: {nearest} m from a plane or a path");
     }
     scene.set_show(1).unwrap();
     let mut f = Frame::default();

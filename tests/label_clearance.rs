@@ -302,3 +302,254 @@ fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
         }
     }
 }
+
+#[test]
+fn lesson_07_root_labels_keep_off_the_chains_at_every_pole_and_target() {
+    // Figure 1 at its page camera, both canvases: each chain's name and α, the labels at the
+    // roots, keep off every dot and line of the figure (the reach circle, the bars, side d, the
+    // pole's line) at every pole angle of the slider, for targets above, beside and below the
+    // roots (a low target bends the chains down past their roots), as far as the sliders go.
+    // As on the page, the figure places them for the view of the frame before (set_view); a
+    // failing case is collected so the message shows how many fail, not only the first.
+    use inbetween::figures::ik::{IkFigure, SOLVERS};
+    let mut targets = vec![Vec3::new(0.55, 0.65, 0.15)];
+    for x in [-1.5, -0.8, -0.3, 0.0, 0.3, 0.8, 1.5] {
+        for y in [-1.5, -0.8, -0.3, 0.0, 0.3, 1.0, 1.5] {
+            for z in [-0.6, 0.0, 0.6] {
+                targets.push(Vec3::new(x, y, z));
+            }
+        }
+    }
+    let mut failures = Vec::new();
+    for &target in &targets {
+        for pole in (-180..=180).step_by(30) {
+            let mut scene = IkFigure::new();
+            scene.set_target(target).unwrap();
+            scene.set_pole_angle_deg(pole as f32).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], &frame, size);
+                scene.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                scene.draw(&mut frame).unwrap();
+                let camera = page_camera([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], &frame, size);
+                let mut roots = frame.clone();
+                roots
+                    .labels
+                    .retain(|l| SOLVERS.contains(&l.text.as_str()) || l.text.starts_with("α"));
+                let name = format!("07 roots, target {target}, pole {pole}°");
+                if let Err(e) =
+                    std::panic::catch_unwind(|| assert_clear(&name, &roots, &camera, size))
+                {
+                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures, e.g.\n{}",
+        failures.len(),
+        failures
+            .iter()
+            .take(20)
+            .cloned()
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+}
+
+#[test]
+fn lesson_00_point_and_image_labels_stay_apart_where_the_point_crosses_the_near_plane() {
+    // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
+    // through the first third of the point's path (t = 0.2 s of the 6 s timeline is s ≈ 0.07,
+    // where the point crosses z_near and its dot meets its image's), for the page's point and
+    // two others: "p" and "image" stay where the figure put them (no leader line), keep a few
+    // pixels from each other, and cover neither dot nor the dashed ray from the eye.
+    use inbetween::draw::palette;
+    use inbetween::figures::raster::Frustum;
+    for (x, y) in [(0.6, 0.3), (0.9, 0.2), (1.0, -0.2)] {
+        let mut scene = Frustum::new();
+        scene.set_offset(x, y).unwrap();
+        for k in 0..=30 {
+            let s = k as f32 * 0.01;
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, s).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([4.5, 1.2, -4.0, 17.0, 0.45, 0.45], &frame, size);
+                let name = format!("00 frustum, point ({x}, {y}), s {s}");
+                let mut pair = frame.clone();
+                // The point's label in the frustum (the NDC box's comes later) and the image's.
+                let p = pair.labels.iter().position(|l| l.text == "p").unwrap();
+                let image = pair.labels.iter().position(|l| l.text == "image").unwrap();
+                pair.labels = vec![pair.labels[p].clone(), pair.labels[image].clone()];
+                // The ray from the eye (grey, dashed); the frustum's edges pass the point and
+                // its image near the apex.
+                pair.strokes
+                    .retain(|s| s.color[..3] == palette::GREY.to_array() && s.dash[3] > 0.0);
+                assert_clear(&name, &pair, &camera, size);
+                let placed = layout(&frame, &camera, size);
+                let boxes: Vec<Rect> = [p, image]
+                    .map(|i| {
+                        let (l, b, at) = &placed[i];
+                        assert!(at.shown, "{name} on {size}: {:?} hidden", l.text);
+                        assert!(
+                            at.leader_to.is_none(),
+                            "{name} on {size}: {:?} moved",
+                            l.text
+                        );
+                        Rect {
+                            min: at.top_left,
+                            size: b.size,
+                        }
+                    })
+                    .into();
+                assert!(
+                    !boxes[0].overlaps(&boxes[1], 4.0),
+                    "{name} on {size}: \"p\" at {:?} and \"image\" at {:?} crowd",
+                    boxes[0].min,
+                    boxes[1].min
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_04_key_names_sit_at_their_keys_and_off_the_paths() {
+    // Figure 1 at its page camera (lessons/04-rigid-motions/lesson.js), both canvases, at the
+    // keys, the page's start (t = 0.5 at 1 s of the 4 s ping-pong), a third and the end, for
+    // the page's key B and a turn of 0°: "A" and "B" each end within the reach of their key's
+    // axes (0.5 m) and 10 px on screen from its origin (they lay 1 m out to the side), clear
+    // of every path, tick and dot and of the aeroplanes.
+    use inbetween::figures::rigid::{RigidMotion, KEY_LABEL_M};
+    for angle in [150.0, 0.0] {
+        let mut scene = RigidMotion::new();
+        scene
+            .set_end(Vec3::new(0.2, 1.0, 0.3), angle, Vec3::new(1.5, 1.4, 0.3))
+            .unwrap();
+        for t in [0.0, 0.33, 0.5, 1.0] {
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, t).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([0.0, 1.0, 0.0, 6.5, 0.35, 0.4], &frame, size);
+                let name = format!("04 keys, angle {angle}°, t {t}");
+                let mut keys = frame.clone();
+                keys.labels.retain(|l| l.text == "A" || l.text == "B");
+                assert_eq!(keys.labels.len(), 2);
+                assert_clear(&name, &keys, &camera, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                for (text, rect) in label_boxes(&keys, &camera, size) {
+                    // The key's origin, KEY_LABEL_M below the name's anchor.
+                    let anchor = keys.labels.iter().find(|l| l.text == text).unwrap().anchor;
+                    let key = anchor - Vec3::Y * KEY_LABEL_M;
+                    let origin = project_to_canvas(view_proj, size, key).unwrap();
+                    let gap = rect.nearest(origin).distance(origin);
+                    // The key's axes are 0.5 m long; the name ends no more than 10 px past
+                    // their tips' reach.
+                    let axis = project_to_canvas(view_proj, size, key + Vec3::Y * 0.5)
+                        .unwrap()
+                        .distance(origin);
+                    assert!(
+                        gap <= axis + 10.0,
+                        "{name} on {size}: {text:?} {gap} px from its key (axes {axis} px)"
+                    );
+                    // Nor over the aeroplanes' parts (boxes: their corners and centres).
+                    for m in &frame.meshes {
+                        for c in 0..9 {
+                            let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                            let local = if c == 8 {
+                                Vec3::ZERO
+                            } else {
+                                Vec3::new(s(1), s(2), s(4))
+                            };
+                            let Some(p) =
+                                project_to_canvas(view_proj, size, m.model.transform_point3(local))
+                            else {
+                                continue;
+                            };
+                            assert!(
+                                !(p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all()),
+                                "{name} on {size}: {text:?} covers a plane's part at {p}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_14_drift_labels_stay_inside_the_canvas_and_apart() {
+    // Figure 2 at its page camera (lessons/14-rigid-bodies/lesson.js), both canvases, at the
+    // start, part-way and at the end of the run, at the page's spin and step and at the
+    // sliders' largest (where the unnormalised box grows too large to draw and its label reads
+    // "too large to draw"): every label is shown where the figure put it, inside the canvas
+    // with EDGE_PX to spare (the rightmost read out past the right edge), and over its box.
+    use inbetween::draw::layout::EDGE_PX;
+    use inbetween::figures::rigid_body::DriftFigure;
+    for (spin, step_ms) in [(5.0, 10.0), (30.0, 50.0)] {
+        let mut scene = DriftFigure::new();
+        scene.set_drift(spin, step_ms).unwrap();
+        let end = scene.duration_sec();
+        for time_sec in [0.0, 0.35, 0.5 * end, end] {
+            scene.advance_to(time_sec).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame);
+            assert_eq!(frame.labels.len(), 3);
+            for size in CANVASES {
+                let camera = page_camera([0.0, 1.0, 0.0, 6.0, 0.0, 0.12], &frame, size);
+                let name = format!("14 drift, spin {spin}, step {step_ms} ms, t {time_sec}");
+                for (l, b, p) in layout(&frame, &camera, size) {
+                    assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
+                    assert!(
+                        p.leader_to.is_none(),
+                        "{name} on {size}: {:?} moved",
+                        l.text
+                    );
+                    let max = p.top_left + b.size;
+                    assert!(
+                        p.top_left.cmpge(Vec2::splat(EDGE_PX)).all()
+                            && max.cmple(size - EDGE_PX).all(),
+                        "{name} on {size}: {:?} at {} to {max} touches the edge",
+                        l.text,
+                        p.top_left
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_00_light_label_sits_on_its_lamp() {
+    // Figure 5 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
+    // the page's light and two others: "light" is shown beside the lamp's dot (its box within
+    // 12 px of the dot's edge; 0.25 m up left a 20 px gap), covering no dot or line.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::raster::Shading;
+    for (azimuth, elevation) in [(40.0, 35.0), (-60.0, 10.0), (120.0, 70.0)] {
+        let mut scene = Shading::new();
+        scene.set_light_deg(azimuth, elevation).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, MeshId(1));
+        for size in CANVASES {
+            let camera = page_camera([0.0, 1.5, 0.0, 7.5, -0.5, 0.55], &frame, size);
+            let name = format!("00 shading, light at {azimuth}°, {elevation}°");
+            let mut light = frame.clone();
+            light.labels.retain(|l| l.text == "light");
+            assert_clear(&name, &light, &camera, size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let lamp = frame.markers.iter().find(|m| m.size_px == 16.0).unwrap();
+            let dot = project_to_canvas(view_proj, size, Vec3::from(lamp.center)).unwrap();
+            let (_, rect) = label_boxes(&light, &camera, size).pop().unwrap();
+            let gap = rect.nearest(dot).distance(dot) - 8.0;
+            assert!(
+                gap <= 12.0,
+                "{name} on {size}: \"light\" {gap} px from its lamp"
+            );
+        }
+    }
+}

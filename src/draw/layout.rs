@@ -4,10 +4,10 @@
 //! label's text and asks for a layout. Labels are placed one at a time, highest priority first
 //! (equal priorities in the order the scene added them). Each tries its preferred place beside
 //! its anchor, then the other side, above and below, then places nudged further away along the
-//! screen; every candidate is first moved inside the canvas. The first candidate that overlaps no
-//! label already placed wins. A label placed away from its anchor gets a leader line back to it;
-//! a label with no free candidate is hidden. So a label never moves or hides because of a label
-//! of lower priority.
+//! screen; every candidate is first moved inside the canvas, [`EDGE_PX`] from its edges. The
+//! first candidate that overlaps no label already placed wins. A label placed away from its
+//! anchor gets a leader line back to it; a label with no free candidate is hidden. So a label
+//! never moves or hides because of a label of lower priority.
 
 use glam::Vec2;
 
@@ -15,6 +15,9 @@ use glam::Vec2;
 pub const GAP_PX: f32 = 5.0;
 /// Space kept between two labels' boxes, CSS pixels.
 pub const PAD_PX: f32 = 2.0;
+/// Space kept between a label's box and the canvas's edges, CSS pixels: text that touches the
+/// edge reads as cut.
+pub const EDGE_PX: f32 = 4.0;
 /// How far from its anchor a label may be nudged, in label heights.
 const MAX_RINGS: usize = 5;
 
@@ -105,10 +108,12 @@ fn candidates(label: &LabelBox) -> Vec<Vec2> {
     out
 }
 
-/// Moves a box's corner so the box lies inside a `canvas`-sized area (a box larger than the
-/// canvas keeps its top-left corner at the canvas's).
-fn inside(top_left: Vec2, size: Vec2, canvas: Vec2) -> Vec2 {
-    top_left.min(canvas - size).max(Vec2::ZERO)
+/// Moves a box's corner so the box lies inside a `canvas`-sized area, [`EDGE_PX`] from its
+/// edges (a box too large for that keeps its top-left corner `EDGE_PX` from the canvas's).
+pub fn inside(top_left: Vec2, size: Vec2, canvas: Vec2) -> Vec2 {
+    top_left
+        .min(canvas - size - Vec2::splat(EDGE_PX))
+        .max(Vec2::splat(EDGE_PX))
 }
 
 /// Places `labels` on a canvas of `canvas` CSS pixels (see the module's description). Labels

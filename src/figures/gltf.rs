@@ -54,6 +54,8 @@ struct Character {
     half_extent: Vec3,
     /// A thinned set of the mesh's vertices (bind pose, world space).
     dots: Vec<Vec3>,
+    /// Every how many vertices (across the meshes) `dots` takes one.
+    dot_step: usize,
     /// Per mesh, or why the mesh cannot be skinned.
     skinned: Result<Vec<Skinned>, String>,
     /// The file's inverse bind matrices.
@@ -251,6 +253,7 @@ impl GltfFigure {
             centre: 0.5 * (lo + hi),
             half_extent: 0.5 * (hi - lo),
             dots,
+            dot_step: step,
             skinned,
             inverse_bind,
             imported,
@@ -578,6 +581,27 @@ impl GltfFigure {
         );
         for m in &self.model {
             frame.keep_in_view.push(world(m));
+        }
+        // The skinned mesh wherever the pose takes it (the rest pose's box cuts a raised arm or
+        // a bent tip): every k-th vertex skinned by the palette (LBS, on the CPU whichever
+        // skins the mesh), the same thinned set as the dots.
+        if skinning && problem.is_none() {
+            let step = c.dot_step;
+            let palette = &self.palette;
+            let skin = |p: Vec3, joints: &[u16; 4], weights: &[f32; 4]| {
+                let terms = joints.iter().zip(weights);
+                terms.fold(Vec3::ZERO, |sum, (&j, &w)| {
+                    let k = palette.get(j as usize);
+                    k.map_or(sum, |k| sum + w * k.transform_point3(p))
+                })
+            };
+            let skinned = c.imported.meshes.iter().flat_map(|m| {
+                let vertices = m.positions.iter().zip(&m.joints).zip(&m.weights);
+                vertices.map(|((&p, j), w)| skin(p, j, w))
+            });
+            frame
+                .keep_in_view
+                .extend(skinned.step_by(step).filter(|p| p.is_finite()));
         }
         let clip = c.clips.get(self.clip);
         Ok(format!(

@@ -729,6 +729,7 @@ impl IkFigure {
         self.solve()?;
         frame.grid(12, 0.25);
         let limits = self.joint_limits();
+        let mut root_labels = Vec::new();
         for k in self.shown_solvers() {
             let root = Vec3::new(ROOTS_X[k], 0.0, 0.0);
             let target = self.target + root;
@@ -746,10 +747,16 @@ impl IkFigure {
             if let Some(label) = frame.labels.last_mut() {
                 label.left = k == 2;
             }
-            frame.label_with_priority(root + Vec3::new(0.0, -0.12, 0.0), SOLVERS[k], color, 2);
+            root_labels.push(RootLabel {
+                root,
+                out: Vec3::NEG_Y,
+                text: SOLVERS[k].into(),
+                color,
+                priority: 2,
+            });
             draw_chain(frame, root, &self.solved[k], color);
             if k == 0 {
-                self.draw_law_of_cosines(frame, root);
+                root_labels.extend(self.draw_law_of_cosines(frame, root));
             }
             // What is left between the end and the target: a dashed line with its length, for
             // every miss the note reports (a few millimetres show as the label alone).
@@ -793,7 +800,61 @@ impl IkFigure {
             );
             frame.keep_in_view.push(target);
         }
+        // Last, once every chain is drawn: a chain passes another's root when the target lies
+        // far to the side.
+        for label in root_labels {
+            self.place_root_label(frame, label);
+        }
         Ok(self.notes.join(" "))
+    }
+
+    /// Adds a label at a root: in its preferred place (`out` from the root, reading away from
+    /// it) when that covers none of the frame's dots, lines and labels on the canvas the figure
+    /// was last drawn on, else in the first such place around the root, nearest the preferred
+    /// direction first. The chains, side d, the circle of middle joints and the pole's line
+    /// sweep round the root as the target and the pole move. The places stay inside the box the
+    /// chain keeps in view, so the label never moves the camera's fit.
+    fn place_root_label(&self, frame: &mut Frame, label: RootLabel) {
+        let anchor_at = |dir: Vec3, r: f32| {
+            let a = label.root + dir * r;
+            Vec3::new(a.x, a.y.max(label.root.y + ROOT_LABEL_LOW_M), a.z)
+        };
+        let preferred = (
+            anchor_at(label.out, 0.05 + 0.07 * label.out.y.abs()),
+            label.out.x < 0.0,
+        );
+        let mut chosen = preferred;
+        if let Some((view_proj, size)) = self.view_proj() {
+            let base = label.out.y.atan2(label.out.x);
+            let mut places = vec![preferred];
+            // Nearest the preferred direction first, a ring at a time.
+            for r in [0.12, 0.2, 0.28, 0.36, 0.44] {
+                for step in 0..16 {
+                    let turn = (step as f32 * 0.5).ceil() * if step % 2 == 0 { 1.0 } else { -1.0 };
+                    let angle = base + turn * std::f32::consts::TAU / 16.0;
+                    let dir = Vec3::new(angle.cos(), angle.sin(), 0.0);
+                    let at = anchor_at(dir, r);
+                    if dir.x.abs() < 0.4 {
+                        places.extend([(at, false), (at, true)]);
+                    } else {
+                        places.push((at, dir.x < 0.0));
+                    }
+                }
+            }
+            if let Some(&place) = places.iter().find(|(at, left)| {
+                frame.label_is_clear(view_proj, size, *at, *left, &label.text, label.priority)
+            }) {
+                chosen = place;
+            }
+        }
+        frame.labels.push(crate::draw::Label {
+            anchor: chosen.0,
+            text: label.text,
+            color: label.color,
+            left: chosen.1,
+            priority: label.priority,
+            offset_px: glam::Vec2::ZERO,
+        });
     }
 
     /// With hinges, where the target is off the z = 0 plane through the root that the hinges (all
@@ -830,12 +891,13 @@ impl IkFigure {
     /// On the two-joint chain: the triangle of the law of cosines (sides a, b, d, the angle α at
     /// the root), the pole and its dashed line to the middle joint, and the circle of middle
     /// joints the pole chooses from (one per pole angle).
-    fn draw_law_of_cosines(&self, frame: &mut Frame, root: Vec3) {
+    /// Returns α's label, which [`IkFigure::place_root_label`] places once everything is drawn.
+    fn draw_law_of_cosines(&self, frame: &mut Frame, root: Vec3) -> Option<RootLabel> {
         let pole = self.pole() + root;
         frame.marker(pole, POLE_PX, palette::PURPLE);
         let [r, m, e] = match self.solved[0][..] {
             [r, m, e] => [r + root, m + root, e + root],
-            _ => return,
+            _ => return None,
         };
         frame.stroke(
             &[m, pole],
@@ -877,6 +939,7 @@ impl IkFigure {
                 color,
                 left: out.x < 0.0,
                 priority: 0,
+                offset_px: glam::Vec2::ZERO,
             });
         };
         // A side's middle and the direction across it away from the triangle, in the xy plane
@@ -913,19 +976,35 @@ impl IkFigure {
                 .map(|k| r + Quat::from_axis_angle(axis, angle * k as f32 / 16.0) * u * 0.18)
                 .collect();
             frame.stroke(&arc, palette::DARK, StrokeStyle::solid(2.0));
-            // Across the root from the arc: the wedge is too narrow for the text, and the
-            // circle of middle joints passes beside it.
+            // Across the root from the arc where that is clear: the wedge is too narrow for the
+            // text, and the circle of middle joints passes beside it.
             let bisector = Quat::from_axis_angle(axis, 0.5 * angle) * u;
-            beside(
-                frame,
-                r,
-                -bisector,
-                format!("α = {:.0}°", angle / DEG),
-                palette::DARK,
-            );
+            let out = Vec3::new(-bisector.x, -bisector.y, 0.0).normalize_or(Vec3::NEG_Y);
+            return Some(RootLabel {
+                root: r,
+                out,
+                text: format!("α = {:.0}°", angle / DEG),
+                color: palette::DARK,
+                priority: 0,
+            });
         }
+        None
     }
 }
+
+/// A label at a chain's root (its solver's name, α), placed once the whole figure is drawn.
+struct RootLabel {
+    root: Vec3,
+    /// The preferred direction from the root, in the xy plane.
+    out: Vec3,
+    text: String,
+    color: Vec3,
+    priority: i32,
+}
+
+/// How far below its root a root label's anchor may go, metres: the bottom of the box each chain
+/// keeps in view.
+const ROOT_LABEL_LOW_M: f32 = -0.15;
 
 /// A chain: a sphere per joint, a bar per segment.
 fn draw_chain(frame: &mut Frame, root: Vec3, chain: &[Vec3], color: Vec3) {

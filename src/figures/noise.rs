@@ -2084,6 +2084,17 @@ impl Quiz {
             }
             frame.label(at + Vec3::new(0.0, 0.0, 1.15), text, color);
         }
+        // All six terrains stay in view from any orbit: their squares, from the lowest ground
+        // to the highest peak among them (set 4's h = 0.8 is the tallest).
+        let (lo, hi) = self
+            .terrains
+            .iter()
+            .flat_map(|t| &t.positions)
+            .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
+        frame.keep_box_in_view(
+            Self::placement(0) + Vec3::new(-1.0, lo, -1.0),
+            Self::placement(5) + Vec3::new(1.0, hi, 1.0),
+        );
         if !self.checked {
             let answered = self.answers.iter().filter(|a| a.is_some()).count();
             return format!(

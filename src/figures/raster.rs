@@ -292,6 +292,12 @@ pub mod frustum_colors {
 
 /// Where the camera of Figure 2 stands in the world: view space moved up by 1.2 m.
 const EYE: Vec3 = Vec3::new(0.0, 1.2, 0.0);
+/// Figure 2's dots: the point (and its place in the NDC box) and its image on the near plane,
+/// CSS pixels across.
+const POINT_PX: f32 = 14.0;
+/// Figure 5's lamp, CSS pixels across.
+const LAMP_PX: f32 = 16.0;
+const IMAGE_PX: f32 = 10.0;
 /// Where the NDC box of Figure 2 stands (its centre of the near face).
 const NDC_ORIGIN: Vec3 = Vec3::new(9.0, 1.2, -2.0);
 
@@ -476,12 +482,17 @@ impl Frustum {
             palette::GREY,
             crate::draw::StrokeStyle::dashed(1.5, 0.15, 0.1),
         );
-        frame.marker(EYE + p, 14.0, color);
-        frame.label_with_priority(EYE + p + Vec3::new(0.0, 0.25, 0.0), "p", color, 3);
+        // The point's label straight above its dot and the image's below and right of its
+        // own, off the ray (which rises to the right towards the point), each a few pixels
+        // from its dot at any zoom: where the point crosses the near plane the two dots meet.
+        frame.marker(EYE + p, POINT_PX, color);
+        frame.label_off_dot(EYE + p, POINT_PX, Vec2::new(0.0, -1.0), "p", color, 3);
         let on_near = p * (self.near / -p.z);
-        frame.marker_on_top(EYE + on_near, 10.0, ON_NEAR);
-        frame.label_with_priority(
-            EYE + on_near + Vec3::new(0.0, -0.3, 0.0),
+        frame.marker_on_top(EYE + on_near, IMAGE_PX, ON_NEAR);
+        frame.label_off_dot(
+            EYE + on_near,
+            POINT_PX.max(IMAGE_PX),
+            Vec2::new(1.0, 1.0),
             "image",
             ON_NEAR,
             0,
@@ -510,7 +521,7 @@ impl Frustum {
             2,
         );
         if q.clip.w > 0.0 && q.ndc.abs().max_element() < 3.0 {
-            frame.marker(ndc_to_world(q.ndc), 14.0, color);
+            frame.marker(ndc_to_world(q.ndc), POINT_PX, color);
             frame.label_with_priority(
                 ndc_to_world(q.ndc) + Vec3::new(0.0, 0.22, 0.0),
                 "p",
@@ -871,6 +882,7 @@ fn label_left_with_priority(
         color,
         left: true,
         priority,
+        offset_px: glam::Vec2::ZERO,
     });
 }
 
@@ -1478,8 +1490,9 @@ impl Shading {
         frame.label_with_priority(tip(v), "v", V, 2);
         frame.marker(p, 10.0, palette::DARK);
         let lamp = SPHERE_CENTRE + l * 2.6;
-        frame.marker(lamp, 16.0, Vec3::new(1.0, 0.8, 0.2));
-        frame.label_with_priority(lamp + Vec3::Y * 0.25, "light", L, 0);
+        frame.marker(lamp, LAMP_PX, Vec3::new(1.0, 0.8, 0.2));
+        // Just above the lamp's dot, a few pixels off it at any zoom.
+        frame.label_off_dot(lamp, LAMP_PX, Vec2::new(0.0, -1.0), "light", L, 0);
         let model_vector = match self.model {
             ShadingModel::Phong => (2.0 * n.dot(l) * n - l, R, "r"),
             ShadingModel::BlinnPhong => ((l + v).normalize_or_zero(), H, "h"),

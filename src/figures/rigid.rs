@@ -20,8 +20,8 @@ const TOLERANCE: f32 = 1e-4;
 pub const TIP: Vec3 = Vec3::new(0.55, 0.0, 0.0);
 /// Equal steps of t marked on each nose path.
 const TICKS: usize = 12;
-/// How far a key's name is put from the key, metres: past the aeroplane drawn there.
-pub const KEY_LABEL_M: f32 = 1.0;
+/// How far above a key its name is put, metres: past the aeroplane drawn there.
+pub const KEY_LABEL_M: f32 = 0.55;
 
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 pub enum Method {
@@ -235,18 +235,14 @@ impl RigidMotion {
         frame.wide_line(a, b, SCREW_AXIS, 3.0);
         frame.label(b, "screw axis", SCREW_AXIS);
         frame.keep_box_in_view(Vec3::new(-2.6, 0.0, -1.2), Vec3::new(2.6, 2.4, 1.2));
-        // Each key's name on its far side from the other key, clear of the plane there (its
-        // parts reach 0.56 m from its centre) and of the paths leaving it.
-        let (pa, pb) = (self.start.translation(), self.end.translation());
-        let away = (pa - pb).try_normalize().unwrap_or(Vec3::NEG_X);
-        for (key, name, out) in [(self.start, "A", away), (self.end, "B", -away)] {
+        // Each key's name just above its axes' origin, past the plane there (its parts reach
+        // 0.56 m from its centre), a few pixels over that point at any zoom, so the name sits
+        // on the key it names.
+        for (key, name) in [(self.start, "A"), (self.end, "B")] {
             frame.axes(key.to_mat4(), 0.5);
-            let anchor = key.translation() + out * KEY_LABEL_M;
-            if out.x < 0.0 {
-                frame.label_left(anchor, name, palette::KEY);
-            } else {
-                frame.label(anchor, name, palette::KEY);
-            }
+            let anchor = key.translation() + Vec3::Y * KEY_LABEL_M;
+            let above = glam::Vec2::new(0.0, -1.0);
+            frame.label_off_dot(anchor, 0.0, above, name, palette::KEY, 0);
         }
         // Each moving plane's own axes only when it is shown alone: with all three shown they
         // would pile up on the keys' axes where the planes start and end together.

@@ -1569,6 +1569,21 @@ pub const DRIFT_HALF: Vec3 = Vec3::new(0.3, 0.15, 0.075);
 pub const DRIFT_TIP_RAD: f32 = 0.6;
 /// The drift figure's timeline (s).
 pub const DRIFT_DURATION_SEC: f32 = 10.0;
+/// A box's label in Figure 2, centred over the box (the outer two would run past the canvas's
+/// sides reading outwards); the middle one a row higher, since each is wider than the boxes'
+/// spacing on screen.
+fn drift_label(frame: &mut Frame, at: Vec3, k: usize, text: String, color: Vec3) {
+    frame.label_off_dot(at, 0.0, glam::Vec2::new(0.0, -1.0), text, color, 0);
+    if k == 1 {
+        if let Some(label) = frame.labels.last_mut() {
+            label.offset_px.y -= DRIFT_ROW_PX;
+        }
+    }
+}
+
+/// How much higher the middle label of Figure 2 sits, CSS pixels: a label's height and a gap.
+const DRIFT_ROW_PX: f32 = 22.0;
+
 /// The unnormalised box is drawn while `|q|` is at most this: its matrix then stretches it by
 /// at most `2|q|² − 1 = 4`.
 pub const DRIFT_DRAWN_MAX_NORM: f32 = 1.581_138_8; // √2.5
@@ -1873,17 +1888,11 @@ impl DriftFigure {
                     * Mat4::from_mat3(body.rotation())
                     * Mat4::from_scale(DRIFT_HALF);
                 frame.mesh(MeshId::CUBE, model, color);
-                frame.label(
-                    label_at,
-                    format!("{name}: |q| = {}", format_number(norm)),
-                    color,
-                );
+                let text = format!("{name}: |q| = {}", format_number(norm));
+                drift_label(frame, label_at, k, text, color);
             } else {
-                frame.label(
-                    label_at,
-                    format!("{name}: |q| = {}, too large to draw", format_number(norm)),
-                    palette::RED,
-                );
+                let text = format!("{name}: |q| = {}, too large to draw", format_number(norm));
+                drift_label(frame, label_at, k, text, palette::RED);
             }
         }
         let n = self.steps_done;

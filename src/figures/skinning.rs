@@ -1657,6 +1657,7 @@ impl SignFigure {
                 color,
                 left,
                 priority: 0,
+                offset_px: glam::Vec2::ZERO,
             });
         }
         frame.label(c + Vec3::new(0.45 * rr, -0.14, 0.0), "w", palette::GREY);

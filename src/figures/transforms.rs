@@ -1004,6 +1004,7 @@ impl ScaleComparison {
                 color: palette::PINK,
                 left: true,
                 priority: 1,
+                offset_px: glam::Vec2::ZERO,
             });
             frame.contact_shadow(placement.transform_point3(Vec3::ZERO), 0.3);
         }
@@ -1045,6 +1046,7 @@ impl ScaleComparison {
                 color: palette::DARK,
                 left: out.z > 0.0,
                 priority: 2,
+                offset_px: glam::Vec2::ZERO,
             });
         }
         frame.keep_box_in_view(

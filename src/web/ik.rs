@@ -113,6 +113,9 @@ impl IkScene {
     /// Solves (when something changed) and draws. Returns the note for the page.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         self.camera = Some(viewer.camera);
+        // The view the labels at the roots are placed for (the last frame's fitted camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame).map_err(js)?;
         viewer.present()?;
         Ok(note)

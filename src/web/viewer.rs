@@ -12,7 +12,7 @@ pub struct Viewer {
     pub(crate) renderer: Renderer,
     pub(crate) camera: OrbitCamera,
     /// The canvas's size in CSS pixels (labels are placed in these units).
-    css_size: (f32, f32),
+    pub(crate) css_size: (f32, f32),
     /// The last frame's labels, projected, for the page's HTML overlay.
     labels: Vec<crate::draw::ScreenLabel>,
     /// [`crate::draw::Frame::fingerprint`] of the last presented frame.
