@@ -444,6 +444,12 @@ impl Permutation {
     /// branches, which the compiler vectorises (SSE2 natively, simd128 in wasm). `xs` may come
     /// in any order; sorted rows make the longest runs. Agrees with `noise2` to a few `f32`
     /// roundings (the same function, summed in another order).
+    ///
+    /// Never inlined: a function of its own, it is compiled the same way whatever else is in
+    /// the build (inlined into `Fractal::sum2_row`'s octave loop in the full release module, the
+    /// fBm rows ran 18 to 27 % slower than built alone; `scripts/bench-alone.mjs`). It is
+    /// called once per row of up to 256 points, so the call costs nothing measurable.
+    #[inline(never)]
     pub fn noise2_row(&self, xs: &[f32], y: f32, out: &mut [f32]) {
         let n = xs.len().min(out.len());
         let (xs, out) = (&xs[..n], &mut out[..n]);

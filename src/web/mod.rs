@@ -37,6 +37,17 @@
 compile_error!(
     "the features `course-module`, `bench-module` and `gltf-module` each build a module of their own: enable one"
 );
+#[cfg(all(
+    feature = "bench-full",
+    any(
+        feature = "course-module",
+        feature = "bench-module",
+        feature = "gltf-module"
+    )
+))]
+compile_error!("`bench-full` is the figures module with the bench kernels: no other module feature");
+#[cfg(all(feature = "bench-alone", not(feature = "bench-module")))]
+compile_error!("`bench-alone-X` narrows the bench module: enable `bench-module` too");
 
 #[cfg(feature = "course-module")]
 mod course;
@@ -55,20 +66,34 @@ macro_rules! figures_module {
 
 /// Items of the bench module only: the bench page's CPU kernels (`www/bench.js`), each timed
 /// inside wasm. The GPU kernels (`bench_gpu`) need the renderer and stay in the figures module.
+/// A benchmark build adds them to the figures module (`bench-full`) or keeps one family
+/// (`bench-alone-X`, see Cargo.toml).
 macro_rules! bench_module {
-    ($($item:item)*) => { $( #[cfg(feature = "bench-module")] $item )* };
+    ($($item:item)*) => {
+        $( #[cfg(any(feature = "bench-module", feature = "bench-full"))] $item )*
+    };
 }
 
 bench_module! {
+    #[cfg(not(feature = "bench-alone"))]
     mod bench;
+    #[cfg(any(not(feature = "bench-alone"), feature = "bench-alone-boids"))]
     mod bench_boids;
+    #[cfg(not(feature = "bench-alone"))]
     mod bench_cloth;
+    #[cfg(not(feature = "bench-alone"))]
     mod bench_curves;
+    #[cfg(not(feature = "bench-alone"))]
     mod bench_fluid;
+    #[cfg(any(not(feature = "bench-alone"), feature = "bench-alone-noise"))]
     mod bench_noise;
+    #[cfg(not(feature = "bench-alone"))]
     mod bench_rigid_body;
+    #[cfg(not(feature = "bench-alone"))]
     mod bench_rotation;
+    #[cfg(any(not(feature = "bench-alone"), feature = "bench-alone-skeleton"))]
     mod bench_skeleton;
+    #[cfg(any(not(feature = "bench-alone"), feature = "bench-alone-skinning"))]
     mod bench_skinning;
 }
 
