@@ -839,3 +839,36 @@ fn a_splash_particle_on_the_grid_tests_a_couple_of_hundred_candidates() {
         / inner.len() as f32;
     assert!((150.0..300.0).contains(&mean), "{mean} candidates");
 }
+
+/// Figure 3's caption: once the water has landed, a few of SPH's particles, the most squeezed
+/// (8 % over ρ₀ and more: half-way from blue to red at 12.5 %), show purple; none of PBF's.
+#[test]
+fn sph_squeezed_particles_turn_purple_and_pbf_stays_blue() {
+    use inbetween::figures::fluid::density_color;
+    let mut fig = DamBreakFigure::new();
+    let mut counts = Vec::new();
+    for t in [1.0, 1.5, 2.0, 3.0] {
+        fig.advance_to(t).unwrap();
+        let purple = |f: &inbetween::fluid::Fluid| {
+            let rho0 = f.params.rest_density;
+            let colors: Vec<_> = f
+                .densities
+                .iter()
+                .map(|&rho| density_color(rho / rho0))
+                .collect();
+            (
+                colors.iter().filter(|c| c.x > 0.5 * c.z).count(),
+                colors.iter().all(|c| c.z > c.x),
+            )
+        };
+        let [sph, pbf] = fig.fluids();
+        counts.push((t, purple(sph), purple(pbf)));
+    }
+    for (t, (sph_purple, _), (pbf_purple, pbf_blue)) in counts {
+        assert!(sph_purple >= 3, "{t} s: {sph_purple} SPH particles purple");
+        assert!(
+            pbf_purple == 0 && pbf_blue,
+            "{t} s: {pbf_purple} PBF particles purple"
+        );
+    }
+}
