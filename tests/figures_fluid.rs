@@ -138,19 +138,40 @@ fn the_dam_break_note_at_the_start_gives_the_starting_densities() {
     }
 }
 
-/// The particles are outlined screen-space dots of a readable size (world-space points as wide as
-/// 0.4 spacings came out 1 to 2 px on the page's canvas), one per particle of both fluids.
+/// The particles are shaded discs nearly a spacing wide, one per particle of both fluids, and
+/// the two boxes fill the width of the page's canvas (the figure's controls sit under it), so
+/// each particle is at least 5 px across at 800 and 1600 px wide windows (outlined 7 px dots,
+/// mostly white ring and dark rim, and boxes in 60 % of a canvas beside the controls read as
+/// grey specks).
 #[test]
-fn the_dam_break_draws_its_particles_as_readable_dots() {
-    use inbetween::figures::fluid::DAM_DOT_PX;
+fn the_dam_break_draws_its_water_across_the_canvas_in_particles_5_px_wide() {
+    use glam::{Vec2, Vec3};
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::figures::fluid::DAM_POINT_SPACINGS;
     let fig = DamBreakFigure::new();
     let mut frame = Frame::default();
     fig.draw(&mut frame);
     let n: usize = fig.fluids().iter().map(|f| f.len()).sum();
-    assert!(frame.points.is_empty());
-    assert_eq!(frame.markers.len(), n);
-    assert!(DAM_DOT_PX >= 5.0);
-    assert!(frame.markers.iter().all(|m| m.size_px == DAM_DOT_PX));
+    assert!(frame.markers.is_empty());
+    assert_eq!(frame.points.len(), n);
+    let radius = DAM_POINT_SPACINGS * fig.fluids()[0].spacing;
+    assert!(frame.points.iter().all(|p| p.radius == radius));
+    assert!((0.4..=0.5).contains(&DAM_POINT_SPACINGS));
+    // The page's canvas: the figure's width by 420 px, at windows 800 and 1600 px wide; the page
+    // places the camera square-on to the slab and the viewer fits what the figure keeps in view.
+    for size in [Vec2::new(760.0, 420.0), Vec2::new(920.0, 420.0)] {
+        let mut camera = OrbitCamera::from_view([0.0, 0.55, 0.0, 4.0, 0.0, 0.0]);
+        assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+        let p = Vec3::from(frame.points[0].center);
+        let across = 2.0 * (at(p + radius * Vec3::X) - at(p)).x;
+        assert!(across >= 5.0, "{size}: {across} px");
+        let xs: Vec<f32> = frame.fit_points().iter().map(|&q| at(q).x).collect();
+        let span =
+            xs.iter().fold(f32::MIN, |a, &b| a.max(b)) - xs.iter().fold(f32::MAX, |a, &b| a.min(b));
+        assert!(span > 0.85 * size.x, "{size}: the boxes span {span} px");
+    }
 }
 
 #[test]
@@ -648,6 +669,59 @@ mod splash_on_the_gpu {
         );
     }
 
+    /// The GPU's fluid gets the CPU's explosion verdict from the readback of its fastest
+    /// particle: past the limit it stops queueing steps and the note says why, in the CPU's
+    /// words; below it the note gives the speed; a restart clears the verdict.
+    #[test]
+    fn a_gpu_fluid_whose_fastest_particle_is_too_fast_stops_as_the_cpus_does() {
+        use inbetween::fluid::{explosion_speed, explosion_verdict};
+        let mut fig = SplashFigure::new();
+        fig.set("SPH", 3000.0, "grid", 0.0).unwrap();
+        assert!(fig.record_gpu_fastest(0.0, 1.0).is_err(), "GPU mode is off");
+        fig.set_gpu(3000.0).unwrap();
+        let params = fig.gpu_start().unwrap().params.clone();
+        let limit = explosion_speed(&params);
+        let (_, steps) = fig.plan_gpu_steps(0.5, true).unwrap();
+        assert!(steps > 0);
+        let t = fig.gpu_time();
+        // Below the limit: the note gives the speed, and the steps go on.
+        fig.record_gpu_fastest(t, 1.25).unwrap();
+        let note = fig.draw_gpu(&mut Frame::default());
+        assert!(note.contains("Fastest particle 1.250 m/s"), "{note}");
+        assert!(fig.gpu_exploded().is_none());
+        assert!(fig.plan_gpu_steps(0.5, true).unwrap().1 > 0);
+        // A readback from later than the clock (before a restart) is ignored; bad times are
+        // rejected.
+        fig.record_gpu_fastest(fig.gpu_time() + 1.0, 2.0 * limit)
+            .unwrap();
+        assert!(fig.gpu_exploded().is_none());
+        assert!(fig.record_gpu_fastest(f32::NAN, 1.0).is_err());
+        // Past the limit: stopped, in the CPU's words, and no more steps.
+        let t = fig.gpu_time();
+        fig.record_gpu_fastest(t, 2.0 * limit).unwrap();
+        let why = explosion_verdict(&params, 2.0 * limit).unwrap();
+        assert_eq!(fig.gpu_exploded(), Some((t, why.as_str())));
+        let note = fig.draw_gpu(&mut Frame::default());
+        assert!(
+            note.starts_with("SPH on the GPU stopped at t = ") && note.contains(&why),
+            "{note}"
+        );
+        assert_eq!(fig.plan_gpu_steps(1.0, true).unwrap(), (false, 0));
+        assert_eq!(fig.gpu_time(), t, "its clock stays where it stopped");
+        // A later readback changes nothing; a NaN is "not a number".
+        fig.record_gpu_fastest(t, 0.5).unwrap();
+        assert!(fig.gpu_exploded().is_some());
+        // Back in time starts over, without the verdict.
+        assert!(fig.plan_gpu_steps(0.0, true).unwrap().0);
+        assert!(fig.gpu_exploded().is_none());
+        fig.record_gpu_fastest(0.0, f32::INFINITY).unwrap();
+        let (_, why) = fig.gpu_exploded().unwrap();
+        assert!(why.contains("stopped being a number"), "{why}");
+        // A new count, solver or ε starts over too.
+        fig.set_gpu(2000.0).unwrap();
+        assert!(fig.gpu_exploded().is_none());
+    }
+
     #[test]
     fn the_sweep_times_the_gpu_grid_after_the_cpu() {
         let mut fig = SplashFigure::new();
@@ -679,5 +753,122 @@ mod splash_on_the_gpu {
         );
         // Figure 5's caption: the median of three timings of four steps queued at once.
         assert_eq!((SPLASH_GPU_REPEATS, SPLASH_GPU_TIMING_STEPS), (3, 4));
+    }
+}
+
+/// Figures 2 and 3 colour a particle by its density as their captions say: water blue at ρ₀,
+/// paler below (pale blue at half of ρ₀), red above (full red at 25 % over); at rest the
+/// particles stand out from the canvas's light background (a light grey at ρ₀ did not).
+#[test]
+fn particles_at_rest_are_water_blue_paler_below_and_red_above() {
+    use inbetween::draw::palette;
+    use inbetween::figures::fluid::{density_color, THIN_WATER, WATER};
+    assert_eq!(density_color(1.0), palette::BLUE);
+    assert_eq!(WATER, palette::BLUE);
+    assert_eq!(density_color(0.5), THIN_WATER);
+    assert_eq!(density_color(0.0), THIN_WATER);
+    assert_eq!(density_color(1.25), palette::RED);
+    assert_eq!(density_color(2.0), palette::RED);
+    assert_eq!(density_color(f32::NAN), palette::RED);
+    // Relative luminance (linear light): the background's light grey against water at rest and
+    // at half its density. WCAG's contrast ratio, (L1 + 0.05) / (L2 + 0.05).
+    let lum = |c: glam::Vec3| 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+    let contrast =
+        |a: glam::Vec3, b: glam::Vec3| (lum(a).max(lum(b)) + 0.05) / (lum(a).min(lum(b)) + 0.05);
+    let background = glam::Vec3::splat(0.91); // #f5f5f5, lighter than the canvas's clear colour
+    assert!(
+        contrast(background, WATER) > 3.0,
+        "{}",
+        contrast(background, WATER)
+    );
+    assert!(
+        contrast(background, THIN_WATER) > 1.4,
+        "{}",
+        contrast(background, THIN_WATER)
+    );
+    // Blue stays blue: more blue than red or green from half of ρ₀ up to 10 % over (PBF's
+    // densest particles), and redder than blue from 15 % over (SPH's squeeze).
+    for ratio in [0.5, 0.8, 1.0, 1.05, 1.1] {
+        let c = density_color(ratio);
+        assert!(c.z > c.x && c.z > c.y, "{ratio}: {c}");
+    }
+    let c = density_color(1.15);
+    assert!(c.x > c.z, "{c}");
+    // Denser is redder, thinner is paler, without a jump.
+    let mut last = density_color(0.4);
+    for k in 1..=100 {
+        let c = density_color(0.4 + 0.9 * k as f32 / 100.0);
+        assert!((c - last).abs().max_element() < 0.05, "{c} after {last}");
+        last = c;
+    }
+}
+
+/// Figure 4's "Try this": on the grid, a particle of the 3,771-particle splash tests "the couple
+/// of hundred" particles of its 27 cells (cells one kernel radius wide, 2 spacings: 8 particles
+/// a cell in the water), against 3,771 with all pairs.
+#[test]
+fn a_splash_particle_on_the_grid_tests_a_couple_of_hundred_candidates() {
+    let mut fig = SplashFigure::new();
+    fig.set("PBF", 4000.0, "grid", 0.0).unwrap();
+    let f = fig.fluid();
+    assert_eq!(f.len(), 3771);
+    let h = f.params.h;
+    let cell = |p: glam::Vec3| (p / h).floor().as_ivec3();
+    let cells: Vec<_> = f.positions.iter().map(|&p| cell(p)).collect();
+    // The pool's particles away from its walls and surface: a full block of 27 cells.
+    let size = inbetween::fluid::box_size(inbetween::fluid::Dim::Three);
+    let inner: Vec<usize> = (0..f.len())
+        .filter(|&i| {
+            let p = f.positions[i];
+            p.cmpgt(glam::Vec3::splat(1.5 * h)).all()
+                && p.x < size.x - 1.5 * h
+                && p.z < size.z - 1.5 * h
+                && p.y < 0.3 * size.y - 1.5 * h
+        })
+        .collect();
+    assert!(inner.len() > 100, "{}", inner.len());
+    let mean = inner
+        .iter()
+        .map(|&i| {
+            cells
+                .iter()
+                .filter(|c| (**c - cells[i]).abs().max_element() <= 1)
+                .count()
+        })
+        .sum::<usize>() as f32
+        / inner.len() as f32;
+    assert!((150.0..300.0).contains(&mean), "{mean} candidates");
+}
+
+/// Figure 3's caption: once the water has landed, a few of SPH's particles, the most squeezed
+/// (8 % over ρ₀ and more: half-way from blue to red at 12.5 %), show purple; none of PBF's.
+#[test]
+fn sph_squeezed_particles_turn_purple_and_pbf_stays_blue() {
+    use inbetween::figures::fluid::density_color;
+    let mut fig = DamBreakFigure::new();
+    let mut counts = Vec::new();
+    for t in [1.0, 1.5, 2.0, 3.0] {
+        fig.advance_to(t).unwrap();
+        let purple = |f: &inbetween::fluid::Fluid| {
+            let rho0 = f.params.rest_density;
+            let colors: Vec<_> = f
+                .densities
+                .iter()
+                .map(|&rho| density_color(rho / rho0))
+                .collect();
+            (
+                colors.iter().filter(|c| c.x > 0.5 * c.z).count(),
+                colors.iter().all(|c| c.z > c.x),
+            )
+        };
+        let [sph, pbf] = fig.fluids();
+        counts.push((t, purple(sph), purple(pbf)));
+    }
+    for (t, (sph_purple, _), (pbf_purple, pbf_blue)) in counts {
+        assert!(sph_purple >= 3, "{t} s: {sph_purple} SPH particles purple");
+        assert!(
+            pbf_purple == 0 && pbf_blue,
+            "{t} s: {pbf_purple} PBF particles purple"
+        );
     }
 }

@@ -306,6 +306,7 @@ fn a_step_past_the_cfl_limit_explodes_and_says_so() {
         f.step();
     }
     let (t, why) = f.exploded().expect("the step should explode");
+    let why = why.to_string();
     assert!(t < 2.0);
     assert!(
         why.contains("lower the time step or the stiffness"),
@@ -314,6 +315,40 @@ fn a_step_past_the_cfl_limit_explodes_and_says_so() {
     let frozen = f.positions.clone();
     f.step();
     assert_eq!(f.positions, frozen, "an exploded run stops");
+    // The verdict is the one `explosion_verdict` gives on the fastest particle (the GPU's
+    // readback goes through it too).
+    let fastest = f
+        .velocities
+        .iter()
+        .map(|v| v.length())
+        .fold(0.0f32, f32::max);
+    assert_eq!(
+        inbetween::fluid::explosion_verdict(&f.params, fastest),
+        Some(why)
+    );
+}
+
+#[test]
+fn the_explosion_verdict_starts_past_four_times_a_fall_from_the_top() {
+    use inbetween::fluid::{explosion_speed, explosion_verdict};
+    // 2D box 1 m tall, g = 9.81 m/s²: 4 √(2 g H) = 17.7 m/s (the note's "more than 17.7 m/s").
+    let params = FluidParams::default_2d(Method::Sph);
+    let limit = explosion_speed(&params);
+    assert!(
+        (limit - 4.0 * (2.0f32 * 9.81).sqrt()).abs() < 0.01,
+        "{limit}"
+    );
+    assert_eq!(explosion_verdict(&params, 0.0), None);
+    assert_eq!(explosion_verdict(&params, limit), None);
+    let why = explosion_verdict(&params, 20.0).unwrap();
+    assert!(
+        why.starts_with("a particle reached 20.0 m/s") && why.contains("more than 17.7 m/s"),
+        "{why}"
+    );
+    for bad in [f32::INFINITY, f32::NAN] {
+        let why = explosion_verdict(&params, bad).unwrap();
+        assert!(why.contains("stopped being a number"), "{why}");
+    }
 }
 
 #[test]

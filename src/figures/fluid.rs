@@ -193,6 +193,29 @@ impl KernelsFigure {
     }
 }
 
+/// The colour of water at its rest density in Figures 2 and 3: the palette's blue.
+pub const WATER: Vec3 = palette::BLUE;
+/// The colour of water at half its rest density or less (a surface particle with half of its
+/// disc in the air): a pale blue (#a9c9ef), still darker than the canvas's background.
+pub const THIN_WATER: Vec3 = Vec3::new(0.397, 0.585, 0.863);
+/// The compression `ρ/ρ₀ − 1` drawn full red: SPH's densest particles (10 to 20 % over) are
+/// half-way there, PBF's (a few percent) stay blue.
+pub const RED_COMPRESSION: f32 = 0.25;
+
+/// A particle's colour for its density as a share of the rest density, `ratio = ρ/ρ₀`:
+/// [`WATER`] at 1, towards [`THIN_WATER`] below (reached at 0.5), towards red above (reached at
+/// `1 +` [`RED_COMPRESSION`]). Mixed in linear light; a NaN ratio is red.
+pub fn density_color(ratio: f32) -> Vec3 {
+    let error = ratio - 1.0;
+    if error < 0.0 {
+        WATER.lerp(THIN_WATER, (-error / 0.5).min(1.0))
+    } else if error.is_nan() {
+        palette::RED
+    } else {
+        WATER.lerp(palette::RED, (error / RED_COMPRESSION).min(1.0))
+    }
+}
+
 /// Particles in the density figure's pool.
 pub const DENSITY_PARTICLES: usize = 500;
 /// The density figure's kernel radius, in particle spacings (about 23 neighbours in 2D).
@@ -529,8 +552,9 @@ impl DensityFigure {
         self.fluid.positions[0]
     }
 
-    /// The pool's particles coloured by density (white at the rest density, red above, blue
-    /// below), the probe's support circle, lines to its neighbours (thicker for larger weights),
+    /// The pool's particles coloured by density ([`density_color`]: water blue at the rest
+    /// density, paler below, red above), the probe's support circle, lines to its neighbours
+    /// (thicker for larger weights),
     /// the pressure force on it and PBF's move. Returns the note.
     pub fn draw(&self, frame: &mut Frame) -> String {
         let f = &self.fluid;
@@ -539,10 +563,7 @@ impl DensityFigure {
         let size = box_size(Dim::Two);
         let radius = 0.35 * f.spacing;
         for (i, &p) in f.positions.iter().enumerate().skip(1) {
-            let ratio = f.densities[i] / rho0 - 1.0;
-            // Full red or blue at ±50 % of the rest density.
-            let color = super::noise::diverging_color(ratio / 0.5 * 0.6).truncate();
-            frame.point(p, radius, color);
+            frame.point(p, radius, density_color(f.densities[i] / rho0));
         }
         let p = f.positions[0];
         let k = Kernels::new(h, Dim::Two);
@@ -630,11 +651,10 @@ pub const DAM_PARTICLES: usize = 800;
 pub const DAM_FRAME_SEC: f32 = 1.0 / 60.0;
 /// The longest the timeline runs, seconds (the samples of the plots cover it).
 pub const DAM_DURATION_SEC: f32 = 4.0;
-/// The dam break's particles on screen: outlined dots this many CSS pixels across at any canvas
-/// size (the white of a particle at rest shows on the page's light background by its outline).
-/// The lattice is about 4.4 px apart at the page's default canvas, so neighbours overlap a little,
-/// as water does.
-pub const DAM_DOT_PX: f32 = 7.0;
+/// The dam break's particles on screen: shaded discs of this radius in spacings, so that
+/// neighbours in the lattice touch, as water does. On the page's canvas (the figure's whole
+/// width) a spacing is 5 to 6.5 px: each particle shows its colour over 5 px or more.
+pub const DAM_POINT_SPACINGS: f32 = 0.5;
 
 /// SPH and PBF on the same 2D dam break, side by side: SPH at its small step (Tait, `k` the
 /// reader's stiffness), PBF at 1/240 s. The state at time `t` is the state after the steps up to
@@ -748,8 +768,9 @@ impl DamBreakFigure {
     pub fn draw(&self, frame: &mut Frame) -> String {
         let size = crate::fluid::box_size(Dim::Two);
         let titles = [("SPH", palette::BLUE), ("PBF", palette::ORANGE)];
+        // A narrow gap between the two boxes: the pair is what the canvas's width must hold.
         frame.side_by_side(
-            Vec3::new(size.x + 0.3, 0.0, 0.0),
+            Vec3::new(size.x + 0.2, 0.0, 0.0),
             &titles,
             size.y + 0.12,
             |frame, k| {
@@ -757,8 +778,8 @@ impl DamBreakFigure {
                 let offset = Vec3::new(-0.5 * size.x, 0.0, 0.0);
                 let rho0 = f.params.rest_density;
                 for (p, rho) in f.positions.iter().zip(&f.densities) {
-                    let color = super::noise::diverging_color((rho / rho0 - 1.0) / 0.5 * 0.6);
-                    frame.marker(*p + offset, DAM_DOT_PX, color.truncate());
+                    let radius = DAM_POINT_SPACINGS * f.spacing;
+                    frame.point(*p + offset, radius, density_color(rho / rho0));
                 }
                 let corners = [
                     Vec3::new(0.0, size.y, 0.0),
@@ -878,6 +899,10 @@ pub struct SplashFigure {
     gpu_start: Option<Fluid>,
     /// The GPU fluid's clock: the time after the steps queued so far, seconds.
     gpu_time: f32,
+    /// The GPU fluid's fastest particle at the last readback (m/s), and when and why it
+    /// exploded (the CPU's verdict, [`crate::fluid::explosion_verdict`]).
+    gpu_fastest: Option<f32>,
+    gpu_exploded: Option<(f32, String)>,
     /// The GPU grid's timings, per size of [`SPLASH_SWEEP_SIZES`] (ms per step), once the page
     /// asked for them ([`SplashFigure::set_gpu_sweep`]).
     gpu_sweep: bool,
@@ -924,6 +949,8 @@ impl SplashFigure {
             gpu_count: 0,
             gpu_start: None,
             gpu_time: 0.0,
+            gpu_fastest: None,
+            gpu_exploded: None,
             gpu_sweep: false,
             gpu_times: vec![Vec::new(); SPLASH_SWEEP_SIZES.len()],
         }
@@ -963,7 +990,7 @@ impl SplashFigure {
         if let Some(start) = gpu_start {
             self.gpu_start = Some(start);
         }
-        self.gpu_time = 0.0;
+        self.restart_gpu_clock();
         self.start.set_search(search);
         (self.method, self.count, self.search, self.vorticity) = (method, count, search, vorticity);
         self.fluid = self.start.clone();
@@ -1066,8 +1093,41 @@ impl SplashFigure {
             self.gpu_start = Some(self.gpu_fluid(self.method, n, self.vorticity)?);
             self.gpu_count = n;
         }
-        self.gpu_time = 0.0;
+        self.restart_gpu_clock();
         Ok(())
+    }
+
+    /// The GPU fluid starts over: its clock at 0, no readback, no verdict.
+    fn restart_gpu_clock(&mut self) {
+        self.gpu_time = 0.0;
+        self.gpu_fastest = None;
+        self.gpu_exploded = None;
+    }
+
+    /// Records the GPU fluid's fastest particle, `speed` m/s (infinite or NaN: a position or
+    /// velocity stopped being a number), read back after the steps up to `time_sec`; past
+    /// [`crate::fluid::explosion_speed`] the GPU fluid has exploded, as the CPU's would, and
+    /// stops. A readback from before a restart (later than the clock) is ignored.
+    pub fn record_gpu_fastest(&mut self, time_sec: f32, speed: f32) -> Result<(), String> {
+        let t = super::finite("time (s)", time_sec)?;
+        let Some(start) = &self.gpu_start else {
+            return Err("GPU mode is off: choose a GPU count first".into());
+        };
+        if self.gpu_exploded.is_some() || t > self.gpu_time + 1e-4 {
+            return Ok(());
+        }
+        self.gpu_fastest = Some(speed);
+        if let Some(why) = crate::fluid::explosion_verdict(&start.params, speed) {
+            self.gpu_exploded = Some((t, why));
+        }
+        Ok(())
+    }
+
+    /// When and why the GPU fluid exploded, once a readback showed it.
+    pub fn gpu_exploded(&self) -> Option<(f32, &str)> {
+        self.gpu_exploded
+            .as_ref()
+            .map(|(t, why)| (*t, why.as_str()))
     }
 
     /// Whether the GPU steps the fluid.
@@ -1103,10 +1163,12 @@ impl SplashFigure {
             (SPLASH_GPU_STEP_BUDGET / start.len().max(1)).clamp(1, SPLASH_GPU_STEPS_PER_CALL);
         let restart = t + 0.5 * dt + 1e-6 < self.gpu_time;
         if restart {
-            self.gpu_time = 0.0;
+            self.restart_gpu_clock();
         }
         let mut steps = 0;
-        while (gpu_idle || restart) && steps < most && self.gpu_time + 0.5 * dt <= t {
+        // An exploded fluid stops, as the CPU's does; its clock stays where it stopped.
+        let going = (gpu_idle || restart) && self.gpu_exploded.is_none();
+        while going && steps < most && self.gpu_time + 0.5 * dt <= t {
             self.gpu_time += dt;
             steps += 1;
         }
@@ -1114,15 +1176,26 @@ impl SplashFigure {
     }
 
     /// GPU mode: the box's edges (the particles are the GPU's sprites, coloured by speed as
-    /// [`SplashFigure::draw`] colours them); returns the note.
+    /// [`SplashFigure::draw`] colours them); returns the note, with the fastest particle of
+    /// the last readback, or why the fluid stopped.
     pub fn draw_gpu(&self, frame: &mut Frame) -> String {
         draw_box(frame);
         let Some(f) = &self.gpu_start else {
             return "GPU mode is off.".into();
         };
+        let name = self.method_name();
+        if let Some((t, why)) = &self.gpu_exploded {
+            return format!(
+                "{name} on the GPU stopped at t = {} s: {why}.",
+                format_number(*t)
+            );
+        }
+        let fastest = match self.gpu_fastest {
+            Some(v) => format!(" Fastest particle {} m/s.", format_number(v)),
+            None => String::new(),
+        };
         format!(
-            "{} on the GPU, {} particles, neighbours from the GPU grid, h = {} m, t = {} s. The steps are queued and run beside the page, a few a frame once the GPU has finished the ones before (it falls behind the timeline when it is slower); the fluid stays on the GPU, so this note has no statistics.",
-            self.method_name(),
+            "{name} on the GPU, {} particles, neighbours from the GPU grid, h = {} m, t = {} s.{fastest} The steps are queued and run beside the page, a few a frame once the GPU has finished the ones before (it falls behind the timeline when it is slower); the particles stay on the GPU, and only the fastest one's speed comes back, to stop the fluid if it explodes.",
             f.len(),
             format_number(f.params.h),
             format_number(self.gpu_time),

@@ -808,9 +808,6 @@ impl Fluid {
     }
 
     fn check_explosion(&mut self) {
-        let height = box_size(self.params.dim).y;
-        let limit =
-            EXPLOSION_SPEED_FACTOR * (2.0 * self.params.gravity.length().max(1.0) * height).sqrt();
         let mut worst = 0.0f32;
         for (p, v) in self.positions.iter().zip(&self.velocities) {
             if !p.is_finite() || !v.is_finite() {
@@ -819,17 +816,32 @@ impl Fluid {
             }
             worst = worst.max(v.length());
         }
-        if worst > limit {
-            let why = if worst.is_finite() {
-                format!(
-                    "a particle reached {worst:.1} m/s, {:.1} kernel radii per step (more than {limit:.1} m/s): the step is unstable; lower the time step or the stiffness",
-                    worst * self.params.dt / self.params.h
-                )
-            } else {
-                "a position or velocity stopped being a number: the step is unstable; lower the time step or the stiffness".to_string()
-            };
+        if let Some(why) = explosion_verdict(&self.params, worst) {
             self.exploded = Some((self.time, why));
         }
+    }
+}
+
+/// The speed past which a step counts as exploded, m/s: [`EXPLOSION_SPEED_FACTOR`] times the
+/// speed of a fall from the top of the box, `√(2 |g| H)` (`|g|` at least 1 m/s²).
+pub fn explosion_speed(params: &FluidParams) -> f32 {
+    let height = box_size(params.dim).y;
+    EXPLOSION_SPEED_FACTOR * (2.0 * params.gravity.length().max(1.0) * height).sqrt()
+}
+
+/// Why a step whose fastest particle moves at `fastest` m/s has exploded, or `None` when it has
+/// not (at most [`explosion_speed`]). An infinite or NaN `fastest` stands for a position or
+/// velocity that stopped being a number. The CPU's step and the GPU's readback of its fastest
+/// particle give the same verdict through it.
+pub fn explosion_verdict(params: &FluidParams, fastest: f32) -> Option<String> {
+    let limit = explosion_speed(params);
+    if fastest.is_finite() {
+        (fastest > limit).then(|| format!(
+            "a particle reached {fastest:.1} m/s, {:.1} kernel radii per step (more than {limit:.1} m/s): the step is unstable; lower the time step or the stiffness",
+            fastest * params.dt / params.h
+        ))
+    } else {
+        Some("a position or velocity stopped being a number: the step is unstable; lower the time step or the stiffness".to_string())
     }
 }
 

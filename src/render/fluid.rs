@@ -5,10 +5,12 @@
 //! (caps included). Each step writes the renderer's point sprites, which
 //! [`super::Renderer::gpu_points`] draws without a trip through the CPU.
 //!
-//! The GPU does not watch for an explosion (the CPU's step stops itself); a caller that needs
-//! to know reads the state back.
+//! The CPU's step stops itself when it explodes; the GPU's cannot read its own result, so after
+//! each step a pass (`shaders/fluid_speed.wgsl`) keeps the fastest particle's speed in a small
+//! buffer that is read back without waiting ([`FluidCompute::fastest`]), and the caller gives
+//! the CPU's verdict on it ([`crate::fluid::explosion_verdict`]).
 
-use super::compute::{bind_entries, no_compute, read_buffer, storage, uniform, Kernels};
+use super::compute::{bind_entries, no_compute, read_buffer, storage, uniform, Kernels, ReadBack};
 use super::grid::GpuGrid;
 use super::Gpu;
 use crate::figures::gpu::{fluid_layout, fluid_rows, GPU_FLUID_RED_SPEED, GPU_FLUID_ROWS};
@@ -43,6 +45,11 @@ const ENTRY_POINTS: [&str; 12] = [
 /// The fluid's kernels, as the page caches them (one compile per page).
 #[derive(Clone)]
 struct FluidKernels(Rc<Kernels>);
+/// The fastest-particle pass, as the page caches it.
+#[derive(Clone)]
+struct SpeedKernel(Rc<Kernels>);
+/// The speed buffer: the largest `|v|²`'s bits in its first u32 (a whole `vec4<u32>`).
+const SPEED_BYTES: u64 = 16;
 
 /// A fluid on the GPU: its particles' state, the grid over them, and the step's passes.
 pub struct FluidCompute {
@@ -63,6 +70,14 @@ pub struct FluidCompute {
     kernels: Rc<Kernels>,
     /// Set while steps submitted by [`FluidCompute::step`] have not finished on the GPU.
     busy: Arc<AtomicBool>,
+    /// The largest `|v|²` since the last readback (`fluid_speed.wgsl`), its pass and bindings.
+    speed: wgpu::Buffer,
+    speed_kernel: Rc<Kernels>,
+    speed_group: wgpu::BindGroup,
+    /// The readback under way, and the fluid's time after the steps it covers.
+    watch: Option<(ReadBack, f32)>,
+    /// The speed buffer was copied for a readback: the next steps start it again from 0.
+    restart_speed: bool,
 }
 
 impl FluidCompute {
@@ -156,6 +171,22 @@ impl FluidCompute {
             layout: &kernels.layout,
             entries: &bind_entries(&buffers),
         });
+        let speed = storage(gpu, "fluid fastest", SPEED_BYTES, none);
+        let SpeedKernel(speed_kernel) = gpu.cached(|| {
+            let storage = |read_only| wgpu::BufferBindingType::Storage { read_only };
+            SpeedKernel(Rc::new(Kernels::new(
+                gpu,
+                "fluid speed",
+                super::shader_source!("fluid_speed.wgsl"),
+                &[storage(true), storage(true), storage(false)],
+                &["fastest"],
+            )))
+        });
+        let speed_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("fluid speed"),
+            layout: &speed_kernel.layout,
+            entries: &bind_entries(&[&pos, &vel, &speed]),
+        });
         let p = &fluid.params;
         Ok(Self {
             n,
@@ -173,6 +204,11 @@ impl FluidCompute {
             group,
             kernels,
             busy: Arc::new(AtomicBool::new(false)),
+            speed,
+            speed_kernel,
+            speed_group,
+            watch: None,
+            restart_speed: false,
         })
     }
 
@@ -202,6 +238,10 @@ impl FluidCompute {
         }
         let groups = (self.n as u32).div_ceil(WORKGROUP);
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        if self.restart_speed {
+            encoder.clear_buffer(&self.speed, 0, None);
+            self.restart_speed = false;
+        }
         {
             let mut pass = encoder.begin_compute_pass(&Default::default());
             let pipelines = &self.kernels.pipelines;
@@ -243,14 +283,38 @@ impl FluidCompute {
                         run(&mut pass, "pbf_finish");
                     }
                 }
+                // The fastest particle after the step, as the CPU checks after each of its own.
+                pass.set_pipeline(&self.speed_kernel.pipelines[0]);
+                pass.set_bind_group(0, &self.speed_group, &[]);
+                pass.dispatch_workgroups(groups, 1, 1);
             }
         }
         gpu.queue.submit([encoder.finish()]);
         self.time += steps as f32 * self.dt;
+        // One readback at a time; until it is taken, the next steps add to the same maximum.
+        if self.watch.is_none() {
+            self.watch = Some((ReadBack::start(gpu, &self.speed, SPEED_BYTES), self.time));
+            self.restart_speed = true;
+        }
         self.busy.store(true, Ordering::Relaxed);
         let busy = self.busy.clone();
         gpu.queue
             .on_submitted_work_done(move || busy.store(false, Ordering::Relaxed));
+    }
+
+    /// The fastest particle's speed (m/s) over the steps since the readback before, and the
+    /// fluid's time after them, once their readback has arrived (`None` before; once each). The
+    /// speed is infinite when a position or velocity stopped being a finite number. Never waits.
+    pub fn fastest(&mut self, gpu: &Gpu) -> Option<Result<(f32, f32), String>> {
+        let (watch, time) = self.watch.as_ref()?;
+        let bytes = watch.try_take(gpu)?;
+        let time = *time;
+        self.watch = None;
+        Some(bytes.map(|b| {
+            let bits = u32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+            let speed = f32::from_bits(bits).sqrt();
+            (time, if speed.is_nan() { f32::INFINITY } else { speed })
+        }))
     }
 
     /// Whether the GPU has finished every step submitted so far (a page queues more only then).

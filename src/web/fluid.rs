@@ -241,8 +241,9 @@ impl SplashScene {
         Ok(())
     }
     /// GPU mode's `advanceTo`: queues the steps towards `time_sec` on the GPU (they run while
-    /// the page goes on), a few a call and only once the GPU has finished the ones before.
-    /// Returns the steps queued.
+    /// the page goes on), a few a call and only once the GPU has finished the ones before, and
+    /// none once a readback of the fastest particle has shown that the fluid exploded. Returns
+    /// the steps queued.
     #[wasm_bindgen(js_name = advanceOnGpu)]
     pub fn advance_on_gpu(&mut self, viewer: &Viewer, time_sec: f32) -> Result<usize, JsError> {
         if !self.scene.gpu_mode() {
@@ -258,6 +259,12 @@ impl SplashScene {
             self.scene
                 .set_gpu(self.scene.gpu_start().map_or(0, |f| f.len()) as f32)
                 .ok();
+        }
+        // The fastest particle of the steps before, when its readback has come: past the
+        // CPU's limit the fluid has exploded and the figure queues no more steps.
+        if let Some(read) = self.gpu.as_mut().and_then(|g| g.fastest(&viewer.gpu)) {
+            let (time, speed) = read.map_err(|e| JsError::new(&e))?;
+            self.scene.record_gpu_fastest(time, speed).map_err(js)?;
         }
         let idle = self.gpu.as_ref().is_none_or(|g| g.idle());
         let (restart, steps) = self.scene.plan_gpu_steps(time_sec, idle).map_err(js)?;

@@ -164,3 +164,72 @@ async fn the_gpu_fluid_refuses_more_than_its_cap() {
     let e = FluidCompute::new(&gpu, &big).err().unwrap();
     assert!(e.contains("1048576"), "{e}");
 }
+
+/// The readback of the fastest particle the GPU keeps after each step, waiting for it (a page
+/// asks on later frames instead).
+async fn fastest(gpu: &inbetween::render::Gpu, fluid: &mut FluidCompute) -> (f32, f32) {
+    for _ in 0..1000 {
+        if let Some(read) = fluid.fastest(gpu) {
+            return read.unwrap();
+        }
+        fluid.finish(gpu).await.unwrap();
+    }
+    panic!("the fastest particle's speed never came back");
+}
+
+/// The GPU's explosion verdict: the speed it reads back after a batch of steps is the fastest
+/// particle's (at least the last step's, whose velocities are read back whole), and a step past
+/// the CFL limit reads back a speed past the CPU's limit within the time the CPU's step
+/// explodes in (the 2D dam break at 1/120 s, as the CPU test in tests/fluid.rs).
+#[wasm_bindgen_test]
+async fn the_gpu_fluid_reads_back_its_fastest_particle_and_explodes_as_the_cpu_does() {
+    use inbetween::fluid::{explosion_speed, explosion_verdict};
+    let gpu = super::gpu().await;
+    if !gpu.compute {
+        return; // the error for WebGL2 is checked above
+    }
+    let calm = start(FluidParams::default_2d(Method::Pbf), Scene::DamBreak, 1500);
+    let mut on_gpu = FluidCompute::new(&gpu, &calm).unwrap();
+    on_gpu.step(&gpu, 30);
+    let (time, speed) = fastest(&gpu, &mut on_gpu).await;
+    assert!(
+        (time - on_gpu.time()).abs() < 1e-5,
+        "{time} {}",
+        on_gpu.time()
+    );
+    let (_, v, _) = on_gpu.read_back(&gpu).await.unwrap();
+    let last = v.iter().map(|v| v.length()).fold(0.0f32, f32::max);
+    assert!(last > 0.3, "the water barely moved ({last} m/s)");
+    assert!(
+        speed >= 0.999 * last && speed < 2.0 * last,
+        "read back {speed} m/s, fastest of the last step {last} m/s"
+    );
+    assert_eq!(explosion_verdict(&calm.params, speed), None);
+    // Once taken, a readback comes once; the next steps get their own.
+    assert!(on_gpu.fastest(&gpu).is_none());
+
+    let mut params = FluidParams::default_2d(Method::Sph);
+    params.dt = 1.0 / 120.0;
+    let wild = Fluid::new(params, Scene::DamBreak, 2000, 7).unwrap();
+    let mut cpu = wild.clone();
+    while cpu.exploded().is_none() && cpu.time < 2.0 {
+        cpu.step();
+    }
+    let (cpu_t, _) = cpu.exploded().expect("the CPU's step explodes");
+    let limit = explosion_speed(&wild.params);
+    let mut on_gpu = FluidCompute::new(&gpu, &wild).unwrap();
+    let mut verdict = None;
+    while verdict.is_none() && on_gpu.time() < 2.0 {
+        on_gpu.step(&gpu, 8);
+        let (t, speed) = fastest(&gpu, &mut on_gpu).await;
+        verdict = explosion_verdict(&wild.params, speed).map(|why| (t, speed, why));
+    }
+    let (t, speed, why) = verdict.expect("the GPU's step explodes too");
+    web_sys::console::log_1(
+        &format!("GPU exploded by t = {t} s ({speed} m/s, limit {limit}); CPU at {cpu_t} s: {why}")
+            .into(),
+    );
+    assert!(speed > limit || !speed.is_finite());
+    // The GPU sums in another order: the same blow-up, not the same step.
+    assert!((t - cpu_t).abs() < 0.5, "GPU by {t} s, CPU at {cpu_t} s");
+}
