@@ -94,6 +94,8 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
       const t = /t = ([\d.]+) s/.exec(document.getElementById('splash-note').textContent);
       return t && Number(t[1]) >= 0.29;
     }, null, { timeout: 120_000 });
+    // The GPU's fastest particle, read back after the steps (the explosion verdict's input).
+    assert.match(await page.locator('#splash-note').textContent(), /Fastest particle [\d.]+ m\/s/);
     await frames(page, 4);
     await pixelStats(page, page.locator(`${fig} .stage canvas`).first(), 'splash');
     await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/15-fluids-splash-gpu-0.3s-webgpu.png' });
