@@ -546,23 +546,16 @@ impl Frame {
         });
     }
 
-    /// Whether a label of `text` anchored at `anchor` (reading leftwards when `left`), in the box
-    /// the page's layout first tries ([`layout::preferred`], moved inside the canvas) on a `size`
-    /// canvas (CSS pixels) seen through `view_proj`, stays clear of the frame's markers (their
-    /// whole dot), its strokes (sampled along each segment) and the first places of the labels
-    /// the layout places before one of `priority` (those of at least that priority; a lower
-    /// one moves out of its way). The box is measured as [`label_size_px`] does. For figures
-    /// that choose among places for a label near crowded lines; an anchor behind the camera is
-    /// not clear.
-    pub fn label_is_clear(
-        &self,
-        view_proj: Mat4,
-        size: glam::Vec2,
-        anchor: Vec3,
-        left: bool,
-        text: &str,
-        priority: i32,
-    ) -> bool {
+    /// Whether `label` (not yet added), in the box the page's layout first tries for it
+    /// ([`layout::preferred`] at its anchor's projection plus its offset, moved inside the
+    /// canvas) on a `size` canvas (CSS pixels) seen through `view_proj`, stays clear of the
+    /// frame's markers (their whole dot), its strokes (sampled along each segment), the first
+    /// places of the labels the layout places before it (those of at least its priority; a
+    /// lower one moves out of its way) and the frame's inset. The box is measured as
+    /// [`label_size_px`] does. For figures that choose among places for a label near crowded
+    /// lines; an anchor behind the camera is not clear.
+    pub fn label_is_clear(&self, view_proj: Mat4, size: glam::Vec2, label: &Label) -> bool {
+        let priority = label.priority;
         use crate::camera::project_to_canvas;
         use layout::{preferred, LabelBox, Rect};
         let place = |anchor: Vec3, offset_px: glam::Vec2, left: bool, text: &str| {
@@ -580,7 +573,7 @@ impl Frame {
                 size: label.size,
             })
         };
-        let Some(rect) = place(anchor, glam::Vec2::ZERO, left, text) else {
+        let Some(rect) = place(label.anchor, label.offset_px, label.left, &label.text) else {
             return false;
         };
         let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
@@ -611,7 +604,12 @@ impl Frame {
                         .is_none_or(|other| !other.overlaps(&rect, layout::PAD_PX))
                 })
         };
-        markers_clear && strokes_clear() && labels_clear()
+        // The page's layout keeps labels off the inset's square (and its title).
+        let inset_clear = self
+            .inset
+            .as_ref()
+            .is_none_or(|_| !inset::inset_rect(size).overlaps(&rect, layout::PAD_PX));
+        inset_clear && markers_clear && strokes_clear() && labels_clear()
     }
 
     /// A [`Frame::label`] with a `priority`: where labels crowd, the higher one keeps its place.
