@@ -665,3 +665,77 @@ fn lesson_07_hinge_figure_labels_keep_off_the_hinges_and_their_plane() {
             .join("\n")
     );
 }
+
+#[test]
+fn lesson_14_throw_names_l_and_omega_apart_at_their_tips() {
+    // Figure 1 at the page's default camera (the figure sets none; the viewer fits it), both
+    // canvases, through the flight, for spins and tilts across the sliders: L's and ω's names
+    // are spelt out, each shown where the figure put it, its box within 42 px of its arrow's tip
+    // (just off it unless the trail or the path is there), at least 6 px from the other's box,
+    // and off the trail, the path, the shafts and the dot.
+    // As on the page, the figure places them for the view of the frame before (set_view).
+    use inbetween::draw::LABEL_DOT_GAP_PX;
+    use inbetween::figures::rigid_body::ThrowFigure;
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    let mut failures = Vec::new();
+    for (spin, tilt) in [
+        (10.0, 20.0),
+        (15.0, 50.0),
+        (5.0, 80.0),
+        (10.0, 5.0),
+        (15.0, 80.0),
+    ] {
+        for k in 0..=8 {
+            for size in CANVASES {
+                let mut f = ThrowFigure::new();
+                f.set_throw(spin, tilt).unwrap();
+                f.advance_to(f.duration_sec() * k as f32 / 8.0).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame);
+                let camera = page_camera(view, &frame, size);
+                f.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame);
+                let camera = page_camera(view, &frame, size);
+                let name = format!("14 throw, spin {spin}, tilt {tilt}°, step {k}/8");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let check = || {
+                    assert_clear(&name, &frame, &camera, size);
+                    let placed = layout(&frame, &camera, size);
+                    assert_eq!(placed.len(), 2, "{name}");
+                    let mut boxes = Vec::new();
+                    for (l, b, p) in &placed {
+                        assert!(p.shown && p.leader_to.is_none(), "{name}: {} moved", l.text);
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        // The tip: the label's anchor (its offset is on screen).
+                        let label = frame.labels.iter().find(|f| f.text == l.text).unwrap();
+                        let tip = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                        let gap = rect.nearest(tip).distance(tip);
+                        assert!(
+                            (LABEL_DOT_GAP_PX..=42.0).contains(&gap),
+                            "{name} on {size}: {} {gap} px from its tip",
+                            l.text
+                        );
+                        boxes.push(rect);
+                    }
+                    assert!(
+                        !boxes[0].overlaps(&boxes[1], 6.0),
+                        "{name} on {size}: the names crowd: {boxes:?}"
+                    );
+                };
+                if let Err(e) = std::panic::catch_unwind(check) {
+                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures, e.g.\n{}",
+        failures.len(),
+        failures[..failures.len().min(12)].join("\n")
+    );
+}
