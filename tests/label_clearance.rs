@@ -739,3 +739,89 @@ fn lesson_14_throw_names_l_and_omega_apart_at_their_tips() {
         failures[..failures.len().min(12)].join("\n")
     );
 }
+
+/// Checks that every label of `frame` is shown where the figure put it, its box `reach_px` at
+/// most from its anchor's projection (the dot it names; `LABEL_DOT_GAP_PX` at least), every two
+/// boxes at least 6 px apart, and all clear of the dots and lines.
+fn assert_named_beside_dots(
+    name: &str,
+    frame: &Frame,
+    camera: &OrbitCamera,
+    size: Vec2,
+    reach_px: f32,
+) {
+    use inbetween::draw::LABEL_DOT_GAP_PX;
+    assert_clear(name, frame, camera, size);
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let mut boxes: Vec<(String, Rect)> = Vec::new();
+    for ((l, b, p), label) in layout(frame, camera, size).into_iter().zip(&frame.labels) {
+        assert!(
+            p.shown && p.leader_to.is_none(),
+            "{name} on {size}: {} moved",
+            l.text
+        );
+        let rect = Rect {
+            min: p.top_left,
+            size: b.size,
+        };
+        let dot = project_to_canvas(view_proj, size, label.anchor).unwrap();
+        let gap = rect.nearest(dot).distance(dot);
+        assert!(
+            (LABEL_DOT_GAP_PX - 0.01..=reach_px).contains(&gap),
+            "{name} on {size}: {} {gap} px from its dot",
+            l.text
+        );
+        for (other, r) in &boxes {
+            assert!(
+                !r.overlaps(&rect, 6.0),
+                "{name} on {size}: {} and {other} crowd",
+                l.text
+            );
+        }
+        boxes.push((l.text, rect));
+    }
+}
+
+#[test]
+fn lesson_11_integrators_are_named_beside_their_dots() {
+    // Figure 2 at its page camera (lessons/11-particles/lesson.js), both canvases, through the
+    // throw, at the page's step and across the slider: each integrator's name (as the text
+    // names it) beside its latest dot, at most 60 px off it, the three 6 px apart and off every
+    // dot and path. As on the page, the figure places them for the view of the frame before.
+    use inbetween::figures::particles::FreeFallFigure;
+    let view = [-0.3, 1.3, 0.0, 5.5, 0.0, 0.1];
+    let mut failures = Vec::new();
+    for dt in [0.1, 0.03, 0.05, 0.2, 0.3] {
+        for k in 0..=10 {
+            let t = 1.3 * k as f32 / 10.0;
+            for size in CANVASES {
+                let mut f = FreeFallFigure::new();
+                f.set_dt(dt).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame, t).unwrap();
+                let camera = page_camera(view, &frame, size);
+                f.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame, t).unwrap();
+                let camera = page_camera(view, &frame, size);
+                let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+                assert_eq!(
+                    texts,
+                    ["explicit Euler", "semi-implicit Euler", "velocity Verlet"]
+                );
+                let name = format!("11 free fall, dt {dt} s, t {t} s");
+                if let Err(e) = std::panic::catch_unwind(|| {
+                    assert_named_beside_dots(&name, &frame, &camera, size, 60.0)
+                }) {
+                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures, e.g.\n{}",
+        failures.len(),
+        failures[..failures.len().min(12)].join("\n")
+    );
+}
