@@ -825,3 +825,81 @@ fn lesson_11_integrators_are_named_beside_their_dots() {
         failures[..failures.len().min(12)].join("\n")
     );
 }
+
+#[test]
+fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
+    // Figure 4 at its page camera (lessons/03-rotations/lesson.js), both canvases, through the
+    // sweep, at the page's axis, angle and v and others across the sliders: each term's label
+    // (v cos θ, (n × v) sin θ, n (n·v)(1 − cos θ)) is shown where the figure put it, at most
+    // 70 px from a point of its arrow, and covers no arrow, circle or dot (the terms run tip to
+    // tail beside v and v′). As on the page, the
+    // figure places them for the view of the frame before (set_view).
+    use inbetween::figures::rotations::Rodrigues;
+    let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
+    let term = |text: &str| text.contains("θ") && !text.starts_with("v′");
+    let mut failures = Vec::new();
+    let mut cases = 0;
+    let settings = [
+        (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), 60.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), -200.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.0, 1.0, 0.0), 90.0, Vec3::new(1.0, 1.0, 0.0)),
+        (Vec3::new(1.0, 0.2, -0.3), 150.0, Vec3::new(0.5, 1.5, 0.8)),
+        (Vec3::new(0.3, 1.0, 0.2), 300.0, Vec3::new(-1.5, 0.2, 1.0)),
+    ];
+    for (n, angle, v) in settings {
+        for k in 1..=8 {
+            let s = k as f32 / 8.0;
+            for size in CANVASES {
+                let mut f = Rodrigues::new();
+                f.set_axis_angle(n, angle).unwrap();
+                f.set_vector(v).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame, s).unwrap();
+                let camera = page_camera(view, &frame, size);
+                f.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame, s).unwrap();
+                let camera = page_camera(view, &frame, size);
+                cases += 1;
+                let name = format!("03 Rodrigues, n {n}, θ {angle}°, v {v}, s {s}");
+                let check = || {
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    for ((l, b, p), label) in
+                        layout(&frame, &camera, size).into_iter().zip(&frame.labels)
+                    {
+                        if term(&l.text) {
+                            assert!(
+                                p.shown && p.leader_to.is_none(),
+                                "{name} on {size}: {} moved",
+                                l.text
+                            );
+                            // Its anchor is the point of the arrow it sits beside.
+                            let at = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                            let rect = Rect {
+                                min: p.top_left,
+                                size: b.size,
+                            };
+                            let gap = rect.nearest(at).distance(at);
+                            assert!(
+                                gap <= 70.0,
+                                "{name} on {size}: {} {gap} px off its arrow",
+                                l.text
+                            );
+                        }
+                    }
+                    assert_clear_of(&name, &frame, &camera, size, term);
+                };
+                if let Err(e) = std::panic::catch_unwind(check) {
+                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {cases} cases fail, e.g.\n{}",
+        failures.len(),
+        failures[..failures.len().min(12)].join("\n")
+    );
+}
