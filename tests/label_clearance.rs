@@ -903,3 +903,62 @@ fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
         failures[..failures.len().min(12)].join("\n")
     );
 }
+
+#[test]
+fn lesson_14_stack_names_its_top_box_just_above_it() {
+    // Figure 5 at the page's default camera (the figure sets none; the viewer fits it), both
+    // canvases, the stack and the dominoes, settled and after a push: the tracked body's name
+    // sits over it, its box's bottom between 14 px above the body's topmost point on screen
+    // and 2 px into it, its middle over the body.
+    use inbetween::figures::rigid_body::{StackFigure, StackPreset};
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    for preset in [StackPreset::Stack, StackPreset::Dominoes] {
+        for (push, t) in [(false, 0.0), (false, 1.0), (true, 0.5), (true, 2.0)] {
+            let mut f = StackFigure::new(preset);
+            if push {
+                f.advance_to(0.5).unwrap();
+                f.push().unwrap();
+            }
+            f.advance_to(t + if push { 0.5 } else { 0.0 }).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            for size in CANVASES {
+                let camera = page_camera(view, &frame, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let name = format!("14 stack {preset:?}, push {push}, t {t} s");
+                let placed = layout(&frame, &camera, size);
+                assert_eq!(placed.len(), 1, "{name}");
+                let (l, b, p) = &placed[0];
+                assert!(p.shown && p.leader_to.is_none(), "{name}: moved");
+                // The tracked body: the last cube the frame draws.
+                let model = frame.meshes.last().unwrap().model;
+                let corners: Vec<Vec2> = (0..8)
+                    .map(|i| {
+                        let s = Vec3::new(
+                            if i & 1 == 0 { -1.0 } else { 1.0 },
+                            if i & 2 == 0 { -1.0 } else { 1.0 },
+                            if i & 4 == 0 { -1.0 } else { 1.0 },
+                        );
+                        project_to_canvas(view_proj, size, model.transform_point3(s)).unwrap()
+                    })
+                    .collect();
+                let top = corners.iter().map(|c| c.y).fold(f32::MAX, f32::min);
+                let (left, right) = corners.iter().fold((f32::MAX, f32::MIN), |(lo, hi), c| {
+                    (lo.min(c.x), hi.max(c.x))
+                });
+                let bottom = p.top_left.y + b.size.y;
+                let middle = p.top_left.x + 0.5 * b.size.x;
+                assert!(
+                    (top - 14.0..=top + 2.0).contains(&bottom),
+                    "{name} on {size}: {:?}'s bottom at {bottom}, the body's top at {top}",
+                    l.text
+                );
+                assert!(
+                    (left..=right).contains(&middle),
+                    "{name} on {size}: {:?}'s middle at {middle}, the body from {left} to {right}",
+                    l.text
+                );
+            }
+        }
+    }
+}

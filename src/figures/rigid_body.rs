@@ -649,6 +649,11 @@ impl ThrowFigure {
 /// How wide an arrow's head is taken to be on screen, CSS pixels, for the labels at the tips.
 const TIP_PX: f32 = 10.0;
 
+/// The stack figure's name of its tracked body sits this far above the body's highest corner,
+/// taken as a dot this wide (CSS pixels): the top face seen from above rises about 10 px above
+/// that corner's height at the page's camera.
+const NAME_CLEAR_PX: f32 = 24.0;
+
 /// The angle between two vectors in degrees; 0 when either is (nearly) zero.
 fn angle_deg(a: Vec3, b: Vec3) -> f32 {
     let d = (a.length() * b.length()).max(0.0);
@@ -1560,12 +1565,29 @@ impl StackFigure {
             frame.marker_on_top(*p, CONTACT_PX, palette::RED);
         }
         let k = self.tracked();
-        let (b, _) = &self.world.bodies[k];
+        let (b, shape) = &self.world.bodies[k];
         let name = match self.preset {
             StackPreset::Stack => "top box",
             StackPreset::Dominoes => "last domino",
         };
-        frame.label(b.position + Vec3::new(0.0, 0.45, 0.0), name, palette::DARK);
+        // Over the body's middle, at its highest corner's height, a fixed few pixels up at any
+        // zoom (NAME_CLEAR_PX: the top face seen from above rises above that point).
+        let half = match shape {
+            Shape::Cuboid { half } => *half,
+            Shape::Sphere { radius } => Vec3::splat(*radius),
+        };
+        let top = corners(b, half)
+            .into_iter()
+            .fold(f32::MIN, |top, c| top.max(c.y));
+        let anchor = Vec3::new(b.position.x, top, b.position.z);
+        frame.label_off_dot(
+            anchor,
+            NAME_CLEAR_PX,
+            Vec2::new(0.0, -1.0),
+            name,
+            palette::DARK,
+            0,
+        );
         let row = self.history.last().copied().unwrap_or([0.0; 3]);
         let t = self.steps_done as f32 * SIM_DT;
         let solver = format!(
