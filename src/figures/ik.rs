@@ -746,6 +746,7 @@ impl IkFigure {
                 first_m: up.length(),
                 low_y: f32::NEG_INFINITY,
                 along: Vec::new(),
+                own_side: true,
                 text: format!("{} target", SOLVERS[k]),
                 color,
                 priority: 1,
@@ -756,6 +757,7 @@ impl IkFigure {
                 first_m: ROOT_LABEL_FIRST_M,
                 low_y: root.y + ROOT_LABEL_LOW_M,
                 along: Vec::new(),
+                own_side: false,
                 text: SOLVERS[k].into(),
                 color,
                 priority: 2,
@@ -781,6 +783,7 @@ impl IkFigure {
                         first_m: below.length(),
                         low_y: f32::NEG_INFINITY,
                         along: Vec::new(),
+                        own_side: false,
                         text: format!("{:.1} mm short", r.error * 1000.0),
                         color,
                         priority: 0,
@@ -855,9 +858,13 @@ impl IkFigure {
         let base = label.out.y.atan2(label.out.x);
         let mut places = vec![(placed.anchor, placed.left)];
         // Nearest the preferred direction first, a ring at a time, each place reading away
-        // from the point first.
-        for r in [0.12, 0.16, 0.2, 0.24, 0.28, 0.36, 0.44, 0.52] {
-            for step in 0..16 {
+        // from the point first; a label that reads best on its own side of the point tries
+        // that side (within 45°) at every ring before it turns further.
+        const RINGS_M: [f32; 8] = [0.12, 0.16, 0.2, 0.24, 0.28, 0.36, 0.44, 0.52];
+        let side_steps = if label.own_side { 0..5 } else { 0..0 };
+        let rings = RINGS_M.iter().map(|&r| (r, side_steps.clone()));
+        for (r, steps) in rings.chain(RINGS_M.iter().map(|&r| (r, 0..16))) {
+            for step in steps {
                 let turn = (step as f32 * 0.5).ceil() * if step % 2 == 0 { 1.0 } else { -1.0 };
                 let angle = base + turn * std::f32::consts::TAU / 16.0;
                 let dir = Vec3::new(angle.cos(), angle.sin(), 0.0);
@@ -1009,6 +1016,7 @@ impl IkFigure {
             first_m: 0.05 + 0.07 * out.y.abs(),
             low_y: f32::NEG_INFINITY,
             along: [0.6, 0.4, 0.9].map(|t| r.lerp(g, t)).to_vec(),
+            own_side: true,
             text: format!("d = {} m", format_number(d)),
             color: palette::GREY,
             priority: 0,
@@ -1033,6 +1041,7 @@ impl IkFigure {
                     first_m: 0.05 + 0.07 * out.y.abs(),
                     low_y: r.y + ROOT_LABEL_LOW_M,
                     along: Vec::new(),
+                    own_side: false,
                     text: format!("α = {:.0}°", angle / DEG),
                     color: palette::DARK,
                     priority: 0,
@@ -1058,6 +1067,9 @@ struct PlacedLabel {
     /// Other points the label may sit beside, after those round `at` (along the line it
     /// names).
     along: Vec<Vec3>,
+    /// It tries its own side of `at` (within 45° of `out`) further out before turning round
+    /// `at`: a target's name below its target reads as naming the chain beneath.
+    own_side: bool,
     text: String,
     color: Vec3,
     priority: i32,
