@@ -191,6 +191,11 @@ pub fn label_size_px(text: &str) -> glam::Vec2 {
 /// The gap between a dot and a label placed off it ([`Frame::label_off_dot`]), CSS pixels.
 pub const LABEL_DOT_GAP_PX: f32 = 4.0;
 
+/// The space [`Frame::label_is_clear`] keeps between a label and the others, CSS pixels: more
+/// than the layout's least ([`layout::PAD_PX`]), so that two labels placed near each other read
+/// as two, not as one label of two lines.
+pub const LABELS_APART_PX: f32 = 6.0;
+
 /// Depth bias of axes and arrows (see [`LineVertex::depth_bias`]).
 pub const OVERLAY_BIAS: f32 = 2e-5;
 /// Depth bias of a line drawn over everything ([`Frame::line_on_top`]).
@@ -546,23 +551,16 @@ impl Frame {
         });
     }
 
-    /// Whether a label of `text` anchored at `anchor` (reading leftwards when `left`), in the box
-    /// the page's layout first tries ([`layout::preferred`], moved inside the canvas) on a `size`
-    /// canvas (CSS pixels) seen through `view_proj`, stays clear of the frame's markers (their
-    /// whole dot), its strokes (sampled along each segment) and the first places of the labels
-    /// the layout places before one of `priority` (those of at least that priority; a lower
-    /// one moves out of its way). The box is measured as [`label_size_px`] does. For figures
-    /// that choose among places for a label near crowded lines; an anchor behind the camera is
-    /// not clear.
-    pub fn label_is_clear(
-        &self,
-        view_proj: Mat4,
-        size: glam::Vec2,
-        anchor: Vec3,
-        left: bool,
-        text: &str,
-        priority: i32,
-    ) -> bool {
+    /// Whether `label` (not yet added), in the box the page's layout first tries for it
+    /// ([`layout::preferred`] at its anchor's projection plus its offset, moved inside the
+    /// canvas) on a `size` canvas (CSS pixels) seen through `view_proj`, stays clear of the
+    /// frame's markers (their whole dot), its strokes (sampled along each segment), the first
+    /// places of the labels the layout places before it (those of at least its priority, by
+    /// [`LABELS_APART_PX`]; a lower one moves out of its way) and the frame's inset. The box is
+    /// measured as [`label_size_px`] does. For figures that choose among places for a label
+    /// near crowded lines; an anchor behind the camera is not clear.
+    pub fn label_is_clear(&self, view_proj: Mat4, size: glam::Vec2, label: &Label) -> bool {
+        let priority = label.priority;
         use crate::camera::project_to_canvas;
         use layout::{preferred, LabelBox, Rect};
         let place = |anchor: Vec3, offset_px: glam::Vec2, left: bool, text: &str| {
@@ -580,7 +578,7 @@ impl Frame {
                 size: label.size,
             })
         };
-        let Some(rect) = place(anchor, glam::Vec2::ZERO, left, text) else {
+        let Some(rect) = place(label.anchor, label.offset_px, label.left, &label.text) else {
             return false;
         };
         let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
@@ -608,10 +606,15 @@ impl Frame {
                 .filter(|l| l.priority >= priority)
                 .all(|l| {
                     place(l.anchor, l.offset_px, l.left, &l.text)
-                        .is_none_or(|other| !other.overlaps(&rect, layout::PAD_PX))
+                        .is_none_or(|other| !other.overlaps(&rect, LABELS_APART_PX))
                 })
         };
-        markers_clear && strokes_clear() && labels_clear()
+        // The page's layout keeps labels off the inset's square (and its title).
+        let inset_clear = self
+            .inset
+            .as_ref()
+            .is_none_or(|_| !inset::inset_rect(size).overlaps(&rect, layout::PAD_PX));
+        inset_clear && markers_clear && strokes_clear() && labels_clear()
     }
 
     /// A [`Frame::label`] with a `priority`: where labels crowd, the higher one keeps its place.
@@ -659,7 +662,45 @@ impl Frame {
         color: Vec3,
         priority: i32,
     ) {
-        let text = text.into();
+        let label = Label::off_dot(anchor, dot_px, side, text.into(), color, priority);
+        self.labels.push(label);
+    }
+
+    /// Adds the first of `candidates` that [`Frame::label_is_clear`] finds clear on a canvas of
+    /// `view`'s size (CSS pixels) seen through its matrix, else the first: for a label that has
+    /// several good places (the sides of a dot, [`Label::off_dot`]) and must keep off lines that
+    /// move. Without a view (the figure not drawn yet) or candidates, adds the first or nothing.
+    pub fn first_clear_label(
+        &mut self,
+        view: Option<(Mat4, glam::Vec2)>,
+        candidates: impl IntoIterator<Item = Label>,
+    ) {
+        let mut candidates = candidates.into_iter();
+        let Some(first) = candidates.next() else {
+            return;
+        };
+        let chosen = view
+            .and_then(|(view_proj, size)| {
+                std::iter::once(first.clone())
+                    .chain(candidates)
+                    .find(|l| self.label_is_clear(view_proj, size, l))
+            })
+            .unwrap_or(first);
+        self.labels.push(chosen);
+    }
+}
+
+impl Label {
+    /// The label [`Frame::label_off_dot`] adds: beside a dot `dot_px` CSS pixels across at
+    /// `anchor`, towards `side` on screen, [`LABEL_DOT_GAP_PX`] from the dot's edge.
+    pub fn off_dot(
+        anchor: Vec3,
+        dot_px: f32,
+        side: glam::Vec2,
+        text: String,
+        color: Vec3,
+        priority: i32,
+    ) -> Label {
         let size = label_size_px(&text);
         let mut clear = 0.5 * dot_px.abs() + LABEL_DOT_GAP_PX;
         if side.x != 0.0 && side.y != 0.0 {
@@ -687,15 +728,18 @@ impl Frame {
             },
             y + 0.5 * size.y,
         );
-        self.labels.push(Label {
+        Label {
             anchor,
             text,
             color,
             left,
             priority,
             offset_px,
-        });
+        }
     }
+}
+
+impl Frame {
 
     /// The x, y and z axes of the frame `m` as wide lines ([`AXIS_PX`]) in the palette's axis
     /// colours, each `length` long, drawn over anything at the same depth (the grid's centre

@@ -243,7 +243,7 @@ fn the_throw_draws_the_box_l_omega_and_the_trail_and_says_l_stays_fixed() {
             .count(),
         2
     );
-    for name in ["L", "ω"] {
+    for name in ["L (angular momentum)", "ω (angular velocity)"] {
         assert!(frame.labels.iter().any(|l| l.text == name), "{name}");
     }
     assert!(frame.segments_of(palette::PURPLE).count() >= 1);

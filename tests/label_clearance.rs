@@ -6,7 +6,8 @@
 
 use glam::{Vec2, Vec3};
 use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
-use inbetween::draw::layout::{place, LabelBox, Placement, Rect};
+use inbetween::draw::inset::inset_rect;
+use inbetween::draw::layout::{place_avoiding, LabelBox, Placement, Rect};
 use inbetween::draw::{project_labels, Frame, ScreenLabel};
 
 /// The canvases a 3D figure gets at the two page sizes (beside or under its 270 px panel), CSS px.
@@ -31,7 +32,9 @@ fn layout(
             priority: l.priority,
         })
         .collect();
-    let placed = place(&boxes, size);
+    // As the page: with an inset, the labels keep off its square.
+    let obstacles: Vec<Rect> = frame.inset.iter().map(|_| inset_rect(size)).collect();
+    let placed = place_avoiding(&boxes, size, &obstacles);
     labels
         .into_iter()
         .zip(boxes)
@@ -57,9 +60,23 @@ fn label_boxes(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<(String, 
 
 /// Asserts that no shown label's box covers a marker (its whole dot) or a point of a stroke.
 fn assert_clear(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2) {
+    assert_clear_of(name, frame, camera, size, |_| true);
+}
+
+/// [`assert_clear`] for the labels whose text passes `checked`, laid out among all the frame's.
+fn assert_clear_of(
+    name: &str,
+    frame: &Frame,
+    camera: &OrbitCamera,
+    size: Vec2,
+    checked: impl Fn(&str) -> bool,
+) {
     let view_proj = camera.projection(size.x / size.y) * camera.view();
     let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
     for (text, rect) in label_boxes(frame, camera, size) {
+        if !checked(&text) {
+            continue;
+        }
         for m in &frame.markers {
             let Some(c) = at(m.center) else { continue };
             let r = 0.5 * m.size_px.abs();
@@ -91,11 +108,19 @@ fn assert_clear(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2) {
     }
 }
 
-/// The camera a page's `setCamera` places, fitted to what the frame declares (as the viewer does).
+/// The camera a page's `setCamera` places, fitted to what the frame declares (as the viewer does:
+/// left of the inset when the frame has one).
 fn page_camera(view: [f32; 6], frame: &Frame, size: Vec2) -> OrbitCamera {
     let mut camera = OrbitCamera::from_view(view);
     if !frame.keep_in_view.is_empty() {
-        camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+        let points = frame.fit_points();
+        let beside = frame
+            .inset
+            .as_ref()
+            .is_some_and(|_| camera.fit_left_of(&points, size, inset_rect(size).min.x, FIT_PAD_PX));
+        if !beside {
+            camera.fit(&points, size, FIT_PAD_PX);
+        }
     }
     camera
 }
@@ -550,6 +575,446 @@ fn lesson_00_light_label_sits_on_its_lamp() {
                 gap <= 12.0,
                 "{name} on {size}: \"light\" {gap} px from its lamp"
             );
+        }
+    }
+}
+
+#[test]
+fn lesson_07_hinge_figure_labels_keep_off_the_hinges_and_their_plane() {
+    // Figure 3 at its page camera (from the front right, lessons/07-inverse-kinematics/
+    // lesson.js), both canvases, over its controls: 2, 3 and 8 segments, each kind of joint
+    // limit, targets above, beside and below the roots within the chains' reach in the
+    // hinges' plane, and off that plane on either side as far as the z slider goes. The
+    // targets' names, the misses' lengths, side d, α and the chains' names keep off every dot
+    // and line (the grey squares of the hinges' plane, the hinges' arcs, the cones' rims, the
+    // dashed drops and misses) and off the inset. As on the page, the figure places them for
+    // the view of the frame before (set_view). At the page's start (x, y = 0.55, 0.65) with z
+    // anywhere on its slider every case passes; over the sweep a few cases may fail, where
+    // the two-joint chain's triangle, circle and pole crowd its root or a long miss crosses a
+    // neighbouring chain and no place near the label's point is clear. Targets far past the
+    // reach are left out: their misses cross the whole figure.
+    use inbetween::figures::ik::{IkFigure, SOLVERS};
+    let mut targets: Vec<Vec3> = [-0.8, -0.3, 0.0, 0.15, 0.4, 0.8]
+        .map(|z| Vec3::new(0.55, 0.65, z))
+        .to_vec();
+    let start = targets.len();
+    for x in [-1.0, -0.6, -0.3, 0.0, 0.3, 0.55, 1.0] {
+        for y in [-1.0, -0.5, 0.0, 0.3, 0.65, 1.0] {
+            for z in [-0.8, -0.3, 0.15, 0.8] {
+                if glam::Vec2::new(x, y).length() <= 1.0 {
+                    targets.push(Vec3::new(x, y, z));
+                }
+            }
+        }
+    }
+    let placed = |text: &str| {
+        SOLVERS.contains(&text)
+            || text.ends_with(" target")
+            || text.ends_with(" mm short")
+            || text.starts_with("d = ")
+            || text.starts_with("α")
+    };
+    let mut failures = Vec::new();
+    let mut at_start = Vec::new();
+    let mut cases = 0;
+    for segments in [2.0, 3.0, 8.0] {
+        for limits in ["hinges (bend one way)", "cones (40°)", "none"] {
+            for (i, &target) in targets.iter().enumerate() {
+                let mut scene = IkFigure::new();
+                scene.set_segments(segments).unwrap();
+                scene.set_limits(limits).unwrap();
+                scene.set_target(target).unwrap();
+                let mut frame = Frame::default();
+                scene.draw(&mut frame).unwrap();
+                for size in CANVASES {
+                    let view = [0.25, 0.45, 0.0, 4.3, 0.5, 0.3];
+                    let camera = page_camera(view, &frame, size);
+                    scene.set_view(camera, size.x, size.y);
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    cases += 1;
+                    let name = format!("07 Fig 3, {segments} segments, {limits}, target {target}");
+                    if let Err(e) = std::panic::catch_unwind(|| {
+                        assert_clear_of(&name, &frame, &camera, size, placed)
+                    }) {
+                        let message = e.downcast_ref::<String>().cloned().unwrap_or_default();
+                        if i < start {
+                            at_start.push(message.clone());
+                        }
+                        failures.push(message);
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        at_start.is_empty(),
+        "at the start:\n{}",
+        at_start.join("\n")
+    );
+    assert!(
+        failures.len() * 100 <= 3 * cases,
+        "{} of {cases} cases fail (at most 3 % may), e.g.\n{}",
+        failures.len(),
+        failures
+            .iter()
+            .take(20)
+            .cloned()
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+}
+
+#[test]
+fn lesson_14_throw_names_l_and_omega_apart_at_their_tips() {
+    // Figure 1 at the page's default camera (the figure sets none; the viewer fits it), both
+    // canvases, through the flight, for spins and tilts across the sliders: L's and ω's names
+    // are spelt out, each shown where the figure put it, its box within 42 px of its arrow's tip
+    // (just off it unless the trail or the path is there), at least 6 px from the other's box,
+    // and off the trail, the path, the shafts and the dot.
+    // As on the page, the figure places them for the view of the frame before (set_view).
+    use inbetween::draw::LABEL_DOT_GAP_PX;
+    use inbetween::figures::rigid_body::ThrowFigure;
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    let mut failures = Vec::new();
+    for (spin, tilt) in [
+        (10.0, 20.0),
+        (15.0, 50.0),
+        (5.0, 80.0),
+        (10.0, 5.0),
+        (15.0, 80.0),
+    ] {
+        for k in 0..=8 {
+            for size in CANVASES {
+                let mut f = ThrowFigure::new();
+                f.set_throw(spin, tilt).unwrap();
+                f.advance_to(f.duration_sec() * k as f32 / 8.0).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame);
+                let camera = page_camera(view, &frame, size);
+                f.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame);
+                let camera = page_camera(view, &frame, size);
+                let name = format!("14 throw, spin {spin}, tilt {tilt}°, step {k}/8");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let check = || {
+                    assert_clear(&name, &frame, &camera, size);
+                    let placed = layout(&frame, &camera, size);
+                    assert_eq!(placed.len(), 2, "{name}");
+                    let mut boxes = Vec::new();
+                    for (l, b, p) in &placed {
+                        assert!(p.shown && p.leader_to.is_none(), "{name}: {} moved", l.text);
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        // The tip: the label's anchor (its offset is on screen).
+                        let label = frame.labels.iter().find(|f| f.text == l.text).unwrap();
+                        let tip = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                        let gap = rect.nearest(tip).distance(tip);
+                        assert!(
+                            (LABEL_DOT_GAP_PX..=42.0).contains(&gap),
+                            "{name} on {size}: {} {gap} px from its tip",
+                            l.text
+                        );
+                        boxes.push(rect);
+                    }
+                    assert!(
+                        !boxes[0].overlaps(&boxes[1], 6.0),
+                        "{name} on {size}: the names crowd: {boxes:?}"
+                    );
+                };
+                if let Err(e) = std::panic::catch_unwind(check) {
+                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures, e.g.\n{}",
+        failures.len(),
+        failures[..failures.len().min(12)].join("\n")
+    );
+}
+
+/// Checks that every label of `frame` is shown where the figure put it, its box `reach_px` at
+/// most from its anchor's projection (the dot it names; `LABEL_DOT_GAP_PX` at least), every two
+/// boxes at least 6 px apart, and all clear of the dots and lines.
+fn assert_named_beside_dots(
+    name: &str,
+    frame: &Frame,
+    camera: &OrbitCamera,
+    size: Vec2,
+    reach_px: f32,
+) {
+    use inbetween::draw::LABEL_DOT_GAP_PX;
+    assert_clear(name, frame, camera, size);
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let mut boxes: Vec<(String, Rect)> = Vec::new();
+    for ((l, b, p), label) in layout(frame, camera, size).into_iter().zip(&frame.labels) {
+        assert!(
+            p.shown && p.leader_to.is_none(),
+            "{name} on {size}: {} moved",
+            l.text
+        );
+        let rect = Rect {
+            min: p.top_left,
+            size: b.size,
+        };
+        let dot = project_to_canvas(view_proj, size, label.anchor).unwrap();
+        let gap = rect.nearest(dot).distance(dot);
+        assert!(
+            (LABEL_DOT_GAP_PX - 0.01..=reach_px).contains(&gap),
+            "{name} on {size}: {} {gap} px from its dot",
+            l.text
+        );
+        for (other, r) in &boxes {
+            assert!(
+                !r.overlaps(&rect, 6.0),
+                "{name} on {size}: {} and {other} crowd",
+                l.text
+            );
+        }
+        boxes.push((l.text, rect));
+    }
+}
+
+#[test]
+fn lesson_11_integrators_are_named_beside_their_dots() {
+    // Figure 2 at its page camera (lessons/11-particles/lesson.js), both canvases, through the
+    // throw, at the page's step and across the slider: each integrator's name (as the text
+    // names it) beside its latest dot, at most 60 px off it, the three 6 px apart and off every
+    // dot and path. As on the page, the figure places them for the view of the frame before.
+    use inbetween::figures::particles::FreeFallFigure;
+    let view = [-0.3, 1.3, 0.0, 5.5, 0.0, 0.1];
+    let mut failures = Vec::new();
+    for dt in [0.1, 0.03, 0.05, 0.2, 0.3] {
+        for k in 0..=10 {
+            let t = 1.3 * k as f32 / 10.0;
+            for size in CANVASES {
+                let mut f = FreeFallFigure::new();
+                f.set_dt(dt).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame, t).unwrap();
+                let camera = page_camera(view, &frame, size);
+                f.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame, t).unwrap();
+                let camera = page_camera(view, &frame, size);
+                let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+                assert_eq!(
+                    texts,
+                    ["explicit Euler", "semi-implicit Euler", "velocity Verlet"]
+                );
+                let name = format!("11 free fall, dt {dt} s, t {t} s");
+                if let Err(e) = std::panic::catch_unwind(|| {
+                    assert_named_beside_dots(&name, &frame, &camera, size, 60.0)
+                }) {
+                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures, e.g.\n{}",
+        failures.len(),
+        failures[..failures.len().min(12)].join("\n")
+    );
+}
+
+#[test]
+fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
+    // Figure 4 at its page camera (lessons/03-rotations/lesson.js), both canvases, through the
+    // sweep, at the page's axis, angle and v and others across the sliders: each term's label
+    // (v cos θ, (n × v) sin θ, n (n·v)(1 − cos θ)) is shown where the figure put it, at most
+    // 70 px from a point of its arrow, and covers no arrow, circle or dot (the terms run tip to
+    // tail beside v and v′). As on the page, the
+    // figure places them for the view of the frame before (set_view).
+    use inbetween::figures::rotations::Rodrigues;
+    let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
+    let term = |text: &str| text.contains("θ") && !text.starts_with("v′");
+    let mut failures = Vec::new();
+    let mut cases = 0;
+    let settings = [
+        (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), 60.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), -200.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.0, 1.0, 0.0), 90.0, Vec3::new(1.0, 1.0, 0.0)),
+        (Vec3::new(1.0, 0.2, -0.3), 150.0, Vec3::new(0.5, 1.5, 0.8)),
+        (Vec3::new(0.3, 1.0, 0.2), 300.0, Vec3::new(-1.5, 0.2, 1.0)),
+    ];
+    for (n, angle, v) in settings {
+        for k in 1..=8 {
+            let s = k as f32 / 8.0;
+            for size in CANVASES {
+                let mut f = Rodrigues::new();
+                f.set_axis_angle(n, angle).unwrap();
+                f.set_vector(v).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame, s).unwrap();
+                let camera = page_camera(view, &frame, size);
+                f.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame, s).unwrap();
+                let camera = page_camera(view, &frame, size);
+                cases += 1;
+                let name = format!("03 Rodrigues, n {n}, θ {angle}°, v {v}, s {s}");
+                let check = || {
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    for ((l, b, p), label) in
+                        layout(&frame, &camera, size).into_iter().zip(&frame.labels)
+                    {
+                        if term(&l.text) {
+                            assert!(
+                                p.shown && p.leader_to.is_none(),
+                                "{name} on {size}: {} moved",
+                                l.text
+                            );
+                            // Its anchor is the point of the arrow it sits beside.
+                            let at = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                            let rect = Rect {
+                                min: p.top_left,
+                                size: b.size,
+                            };
+                            let gap = rect.nearest(at).distance(at);
+                            assert!(
+                                gap <= 70.0,
+                                "{name} on {size}: {} {gap} px off its arrow",
+                                l.text
+                            );
+                        }
+                    }
+                    assert_clear_of(&name, &frame, &camera, size, term);
+                };
+                if let Err(e) = std::panic::catch_unwind(check) {
+                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {cases} cases fail, e.g.\n{}",
+        failures.len(),
+        failures[..failures.len().min(12)].join("\n")
+    );
+}
+
+#[test]
+fn lesson_14_stack_names_its_top_box_just_above_it() {
+    // Figure 5 at the page's default camera (the figure sets none; the viewer fits it), both
+    // canvases, the stack and the dominoes, settled and after a push: the tracked body's name
+    // sits over it, its box's bottom between 14 px above the body's topmost point on screen
+    // and 2 px into it, its middle over the body.
+    use inbetween::figures::rigid_body::{StackFigure, StackPreset};
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    for preset in [StackPreset::Stack, StackPreset::Dominoes] {
+        for (push, t) in [(false, 0.0), (false, 1.0), (true, 0.5), (true, 2.0)] {
+            let mut f = StackFigure::new(preset);
+            if push {
+                f.advance_to(0.5).unwrap();
+                f.push().unwrap();
+            }
+            f.advance_to(t + if push { 0.5 } else { 0.0 }).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            for size in CANVASES {
+                let camera = page_camera(view, &frame, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let name = format!("14 stack {preset:?}, push {push}, t {t} s");
+                let placed = layout(&frame, &camera, size);
+                assert_eq!(placed.len(), 1, "{name}");
+                let (l, b, p) = &placed[0];
+                assert!(p.shown && p.leader_to.is_none(), "{name}: moved");
+                // The tracked body: the last cube the frame draws.
+                let model = frame.meshes.last().unwrap().model;
+                let corners: Vec<Vec2> = (0..8)
+                    .map(|i| {
+                        let s = Vec3::new(
+                            if i & 1 == 0 { -1.0 } else { 1.0 },
+                            if i & 2 == 0 { -1.0 } else { 1.0 },
+                            if i & 4 == 0 { -1.0 } else { 1.0 },
+                        );
+                        project_to_canvas(view_proj, size, model.transform_point3(s)).unwrap()
+                    })
+                    .collect();
+                let top = corners.iter().map(|c| c.y).fold(f32::MAX, f32::min);
+                let (left, right) = corners.iter().fold((f32::MAX, f32::MIN), |(lo, hi), c| {
+                    (lo.min(c.x), hi.max(c.x))
+                });
+                let bottom = p.top_left.y + b.size.y;
+                let middle = p.top_left.x + 0.5 * b.size.x;
+                assert!(
+                    (top - 14.0..=top + 2.0).contains(&bottom),
+                    "{name} on {size}: {:?}'s bottom at {bottom}, the body's top at {top}",
+                    l.text
+                );
+                assert!(
+                    (left..=right).contains(&middle),
+                    "{name} on {size}: {:?}'s middle at {middle}, the body from {left} to {right}",
+                    l.text
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_13_drape_name_sits_on_the_cloth() {
+    // Figure 3 at its page camera (lessons/13-cloth/lesson.js), both canvases, each method, as
+    // the cloth falls and after it has draped: the method's name sits just above the cloth's
+    // topmost point on screen (its box's bottom between 12 px above it and 2 px into it), over
+    // that point. As on the page, the figure places it for the view of the frame before.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::cloth::{ClothFigure, Preset};
+    let view = [0.5, 0.6, 0.0, 5.0, 0.45, 0.5];
+    for method in ["mass-spring", "XPBD"] {
+        for size in CANVASES {
+            let mut f = ClothFigure::new(Preset::Drape);
+            f.set_method(method).unwrap();
+            let meshes = [MeshId(10)];
+            let mut frame = Frame::default();
+            f.draw(&mut frame, &meshes, 0.0).unwrap();
+            let camera = page_camera(view, &frame, size);
+            f.set_view(camera, size.x, size.y);
+            for t in [0.0, 0.3, 0.8, 2.0] {
+                let mut frame = Frame::default();
+                f.draw(&mut frame, &meshes, t).unwrap();
+                let camera = page_camera(view, &frame, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let name = format!("13 drape, {method}, t {t} s");
+                let placed = layout(&frame, &camera, size);
+                let (l, b, p) = placed
+                    .iter()
+                    .find(|(l, _, _)| l.text == method)
+                    .unwrap_or_else(|| panic!("{name}: no name"));
+                assert!(p.shown && p.leader_to.is_none(), "{name}: moved");
+                let tops: Vec<Vec2> = f
+                    .positions(0)
+                    .iter()
+                    .filter_map(|q| project_to_canvas(view_proj, size, *q))
+                    .collect();
+                let top = tops.iter().map(|c| c.y).fold(f32::MAX, f32::min);
+                let (left, right) = tops.iter().fold((f32::MAX, f32::MIN), |(lo, hi), c| {
+                    (lo.min(c.x), hi.max(c.x))
+                });
+                let bottom = p.top_left.y + b.size.y;
+                let middle = p.top_left.x + 0.5 * b.size.x;
+                assert!(
+                    (top - 12.0..=top + 2.0).contains(&bottom),
+                    "{name} on {size}: {:?}'s bottom at {bottom}, the cloth's top at {top}",
+                    l.text
+                );
+                assert!(
+                    (left..=right).contains(&middle),
+                    "{name} on {size}: {:?}'s middle at {middle}, the cloth from {left} to {right}",
+                    l.text
+                );
+            }
         }
     }
 }

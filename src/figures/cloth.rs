@@ -822,6 +822,7 @@ impl ClothFigure {
             Preset::Flag => 1.6,
             Preset::Drape => 0.2,
         };
+        let view = self.view_proj();
         for (k, sim) in self.sims.iter_mut().enumerate() {
             let exploded = sim.cloth.exploded().is_some();
             let n = sim.cloth.len();
@@ -891,6 +892,25 @@ impl ClothFigure {
                         ),
                         palette::RED,
                     );
+                }
+                // The drape's name just above the cloth's topmost point on screen (its highest
+                // without a view), wherever the cloth has fallen to.
+                None if self.preset == Preset::Drape => {
+                    let top = |p: &Vec3| match view {
+                        Some((view_proj, size)) => {
+                            project_to_canvas(view_proj, size, *p).map_or(f32::INFINITY, |s| s.y)
+                        }
+                        None => -p.y,
+                    };
+                    let at = sim
+                        .cloth
+                        .positions
+                        .iter()
+                        .min_by(|a, b| top(a).total_cmp(&top(b)))
+                        .copied()
+                        .unwrap_or(sim.label);
+                    let up = Vec2::new(0.0, -1.0);
+                    frame.label_off_dot(at, 0.0, up, name, sim.color, 0);
                 }
                 None => frame.label(sim.label, name, sim.color),
             }
@@ -972,7 +992,6 @@ impl ClothFigure {
         while !search.work(usize::MAX)? {}
         Ok(search.rows())
     }
-
 
     /// The substep h, seconds.
     pub fn substep(&self) -> f32 {
@@ -1169,7 +1188,9 @@ impl SubstepSearch {
         let measured = |i: usize| self.results.get(i).copied().flatten();
         // Least squares for n = c·√k: c = Σ n√k / Σ k over the measured points.
         let (num, den) = (0..SUBSTEP_PLOT_K.len())
-            .filter_map(|i| measured(i).map(|n| (n as f32 * SUBSTEP_PLOT_K[i].sqrt(), SUBSTEP_PLOT_K[i])))
+            .filter_map(|i| {
+                measured(i).map(|n| (n as f32 * SUBSTEP_PLOT_K[i].sqrt(), SUBSTEP_PLOT_K[i]))
+            })
             .fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
         let c = if den > 0.0 { num / den } else { f32::NAN };
         let cloth = &self.probe.sims[0].cloth;
@@ -1182,7 +1203,11 @@ impl SubstepSearch {
                 k,
                 measured(i).map_or(f32::NAN, |n| n as f32),
                 c * k.sqrt(),
-                if conservative <= MAX_SEARCH_SUBSTEPS as f32 { conservative } else { f32::NAN },
+                if conservative <= MAX_SEARCH_SUBSTEPS as f32 {
+                    conservative
+                } else {
+                    f32::NAN
+                },
             ]);
         }
         rows

@@ -729,34 +729,42 @@ impl IkFigure {
         self.solve()?;
         frame.grid(12, 0.25);
         let limits = self.joint_limits();
-        let mut root_labels = Vec::new();
+        let mut placed_labels = Vec::new();
         for k in self.shown_solvers() {
             let root = Vec3::new(ROOTS_X[k], 0.0, 0.0);
             let target = self.target + root;
             let color = SOLVER_COLORS[k];
             // Each chain's own target, in its colour, so none is taken for a neighbour's.
             frame.marker(target, TARGET_PX, color);
-            // Above the target and the grey square around its foot; the rightmost chain's
-            // reads leftwards, so that it stays clear of the canvas's right edge.
-            frame.label_with_priority(
-                target + Vec3::new(if k == 2 { -0.05 } else { 0.05 }, 0.12, 0.0),
-                format!("{} target", SOLVERS[k]),
+            // Above the target where that is clear (the grey square around its foot and the
+            // hinges' arcs lie near it); the rightmost chain's reads leftwards, so that it stays
+            // clear of the canvas's right edge.
+            let up = Vec3::new(if k == 2 { -0.05 } else { 0.05 }, 0.12, 0.0);
+            placed_labels.push(PlacedLabel {
+                at: target,
+                out: up.normalize(),
+                first_m: up.length(),
+                low_y: f32::NEG_INFINITY,
+                along: Vec::new(),
+                own_side: true,
+                text: format!("{} target", SOLVERS[k]),
                 color,
-                1,
-            );
-            if let Some(label) = frame.labels.last_mut() {
-                label.left = k == 2;
-            }
-            root_labels.push(RootLabel {
-                root,
+                priority: 1,
+            });
+            placed_labels.push(PlacedLabel {
+                at: root,
                 out: Vec3::NEG_Y,
+                first_m: ROOT_LABEL_FIRST_M,
+                low_y: root.y + ROOT_LABEL_LOW_M,
+                along: Vec::new(),
+                own_side: false,
                 text: SOLVERS[k].into(),
                 color,
                 priority: 2,
             });
             draw_chain(frame, root, &self.solved[k], color);
             if k == 0 {
-                root_labels.extend(self.draw_law_of_cosines(frame, root));
+                placed_labels.extend(self.draw_law_of_cosines(frame, root));
             }
             // What is left between the end and the target: a dashed line with its length, for
             // every miss the note reports (a few millimetres show as the label alone).
@@ -768,12 +776,18 @@ impl IkFigure {
                         color,
                         StrokeStyle::dashed(GAP_PX, 0.03, 0.02),
                     );
-                    frame.label_with_priority(
-                        end.lerp(target, 0.5) + Vec3::new(0.03, -0.06, 0.0),
-                        format!("{:.1} mm short", r.error * 1000.0),
+                    let below = Vec3::new(0.03, -0.06, 0.0);
+                    placed_labels.push(PlacedLabel {
+                        at: end.lerp(target, 0.5),
+                        out: below.normalize(),
+                        first_m: below.length(),
+                        low_y: f32::NEG_INFINITY,
+                        along: Vec::new(),
+                        own_side: false,
+                        text: format!("{:.1} mm short", r.error * 1000.0),
                         color,
-                        0,
-                    );
+                        priority: 0,
+                    });
                 }
             }
             if k > 0 {
@@ -800,61 +814,95 @@ impl IkFigure {
             );
             frame.keep_in_view.push(target);
         }
-        // Last, once every chain is drawn: a chain passes another's root when the target lies
-        // far to the side.
-        for label in root_labels {
-            self.place_root_label(frame, label);
+        // Last, once every chain is drawn (a chain passes another's root when the target lies
+        // far to the side), highest priority first, as the page's layout places them.
+        placed_labels.sort_by_key(|l| std::cmp::Reverse(l.priority));
+        for label in placed_labels {
+            self.place_label(frame, label);
         }
         Ok(self.notes.join(" "))
     }
 
-    /// Adds a label at a root: in its preferred place (`out` from the root, reading away from
-    /// it) when that covers none of the frame's dots, lines and labels on the canvas the figure
-    /// was last drawn on, else in the first such place around the root, nearest the preferred
-    /// direction first. The chains, side d, the circle of middle joints and the pole's line
-    /// sweep round the root as the target and the pole move. The places stay inside the box the
-    /// chain keeps in view, so the label never moves the camera's fit.
-    fn place_root_label(&self, frame: &mut Frame, label: RootLabel) {
+    /// Adds a label near the point it names: in its preferred place (`first_m` along `out`,
+    /// reading away from the point) when that covers none of the frame's dots, lines and labels
+    /// on the canvas the figure was last drawn on, else in the first such place around the
+    /// point, nearest the preferred direction first (rings in metres, then rings on screen), and
+    /// along the line it names. The chains, side d, the circle of middle joints, the pole's
+    /// line, the hinges' arcs and the grey square of their plane sweep round the roots and the
+    /// targets as the target and the pole move. Where no place is clear it keeps the preferred
+    /// one. The anchor stays at the preferred place and the others are screen offsets from it
+    /// ([`crate::draw::Label::offset_px`]), so the place chosen never moves the camera's fit.
+    fn place_label(&self, frame: &mut Frame, label: PlacedLabel) {
         let anchor_at = |dir: Vec3, r: f32| {
-            let a = label.root + dir * r;
-            Vec3::new(a.x, a.y.max(label.root.y + ROOT_LABEL_LOW_M), a.z)
+            let a = label.at + dir * r;
+            Vec3::new(a.x, a.y.max(label.low_y), a.z)
         };
-        let preferred = (
-            anchor_at(label.out, 0.05 + 0.07 * label.out.y.abs()),
-            label.out.x < 0.0,
-        );
-        let mut chosen = preferred;
-        if let Some((view_proj, size)) = self.view_proj() {
-            let base = label.out.y.atan2(label.out.x);
-            let mut places = vec![preferred];
-            // Nearest the preferred direction first, a ring at a time.
-            for r in [0.12, 0.2, 0.28, 0.36, 0.44] {
-                for step in 0..16 {
-                    let turn = (step as f32 * 0.5).ceil() * if step % 2 == 0 { 1.0 } else { -1.0 };
-                    let angle = base + turn * std::f32::consts::TAU / 16.0;
-                    let dir = Vec3::new(angle.cos(), angle.sin(), 0.0);
-                    let at = anchor_at(dir, r);
-                    if dir.x.abs() < 0.4 {
-                        places.extend([(at, false), (at, true)]);
-                    } else {
-                        places.push((at, dir.x < 0.0));
-                    }
-                }
-            }
-            if let Some(&place) = places.iter().find(|(at, left)| {
-                frame.label_is_clear(view_proj, size, *at, *left, &label.text, label.priority)
-            }) {
-                chosen = place;
-            }
-        }
-        frame.labels.push(crate::draw::Label {
-            anchor: chosen.0,
+        // Every label's anchor joins the points the camera fits: a place chosen for the last
+        // frame's view must not move the next frame's fit.
+        let mut placed = crate::draw::Label {
+            anchor: anchor_at(label.out, label.first_m),
             text: label.text,
             color: label.color,
-            left: chosen.1,
+            left: label.out.x < 0.0,
             priority: label.priority,
-            offset_px: glam::Vec2::ZERO,
+            offset_px: Vec2::ZERO,
+        };
+        let Some((view_proj, size)) = self.view_proj() else {
+            frame.labels.push(placed);
+            return;
+        };
+        let Some(home) = project_to_canvas(view_proj, size, placed.anchor) else {
+            frame.labels.push(placed);
+            return;
+        };
+        let base = label.out.y.atan2(label.out.x);
+        let mut places = vec![(placed.anchor, placed.left)];
+        // Nearest the preferred direction first, a ring at a time, each place reading away
+        // from the point first; a label that reads best on its own side of the point tries
+        // that side (within 45°) at every ring before it turns further.
+        const RINGS_M: [f32; 8] = [0.12, 0.16, 0.2, 0.24, 0.28, 0.36, 0.44, 0.52];
+        let side_steps = if label.own_side { 0..5 } else { 0..0 };
+        let rings = RINGS_M.iter().map(|&r| (r, side_steps.clone()));
+        for (r, steps) in rings.chain(RINGS_M.iter().map(|&r| (r, 0..16))) {
+            for step in steps {
+                let turn = (step as f32 * 0.5).ceil() * if step % 2 == 0 { 1.0 } else { -1.0 };
+                let angle = base + turn * std::f32::consts::TAU / 16.0;
+                let dir = Vec3::new(angle.cos(), angle.sin(), 0.0);
+                let at = anchor_at(dir, r);
+                let left = dir.x < 0.0;
+                places.extend([(at, left), (at, !left)]);
+            }
+        }
+        let mut offsets: Vec<(Vec2, bool)> = places
+            .iter()
+            .filter_map(|&(at, left)| Some((project_to_canvas(view_proj, size, at)? - home, left)))
+            .collect();
+        // Then rings on screen round the point (and along the line it names), for a canvas
+        // where the figure is small.
+        let centres = std::iter::once(label.at).chain(label.along.iter().copied());
+        for centre in centres.filter_map(|c| project_to_canvas(view_proj, size, c)) {
+            for r_px in [12.0, 18.0, 26.0, 36.0, 48.0, 64.0] {
+                for step in 0..16 {
+                    let angle = step as f32 * std::f32::consts::TAU / 16.0;
+                    let p = centre + r_px * Vec2::new(angle.cos(), -angle.sin());
+                    offsets.extend([(p - home, false), (p - home, true)]);
+                }
+            }
+        }
+        let clear = offsets.iter().find_map(|&(offset_px, left)| {
+            let candidate = crate::draw::Label {
+                offset_px,
+                left,
+                ..placed.clone()
+            };
+            frame
+                .label_is_clear(view_proj, size, &candidate)
+                .then_some(candidate)
         });
+        if let Some(candidate) = clear {
+            placed = candidate;
+        }
+        frame.labels.push(placed);
     }
 
     /// With hinges, where the target is off the z = 0 plane through the root that the hinges (all
@@ -891,13 +939,14 @@ impl IkFigure {
     /// On the two-joint chain: the triangle of the law of cosines (sides a, b, d, the angle α at
     /// the root), the pole and its dashed line to the middle joint, and the circle of middle
     /// joints the pole chooses from (one per pole angle).
-    /// Returns α's label, which [`IkFigure::place_root_label`] places once everything is drawn.
-    fn draw_law_of_cosines(&self, frame: &mut Frame, root: Vec3) -> Option<RootLabel> {
+    /// Returns α's and d's labels, which [`IkFigure::place_label`] places once everything is
+    /// drawn.
+    fn draw_law_of_cosines(&self, frame: &mut Frame, root: Vec3) -> Vec<PlacedLabel> {
         let pole = self.pole() + root;
         frame.marker(pole, POLE_PX, palette::PURPLE);
         let [r, m, e] = match self.solved[0][..] {
             [r, m, e] => [r + root, m + root, e + root],
-            _ => return None,
+            _ => return Vec::new(),
         };
         frame.stroke(
             &[m, pole],
@@ -960,13 +1009,18 @@ impl IkFigure {
         // Side d's label towards the target's end, clear of the circle of middle joints
         // (whose centre lies on d) and of α's label at the root's end.
         let (_, out) = away(r, g);
-        beside(
-            frame,
-            r.lerp(g, 0.8),
+        let out = Vec3::new(out.x, out.y, 0.0).normalize_or(Vec3::X);
+        let d_label = PlacedLabel {
+            at: r.lerp(g, 0.8),
             out,
-            format!("d = {} m", format_number(d)),
-            palette::GREY,
-        );
+            first_m: 0.05 + 0.07 * out.y.abs(),
+            low_y: f32::NEG_INFINITY,
+            along: [0.6, 0.4, 0.9].map(|t| r.lerp(g, t)).to_vec(),
+            own_side: true,
+            text: format!("d = {} m", format_number(d)),
+            color: palette::GREY,
+            priority: 0,
+        };
         // The angle α at the root, between the line to the target and the first segment.
         let first = (m - r).normalize_or(Vec3::Y);
         let angle = u.angle_between(first);
@@ -980,27 +1034,49 @@ impl IkFigure {
             // text, and the circle of middle joints passes beside it.
             let bisector = Quat::from_axis_angle(axis, 0.5 * angle) * u;
             let out = Vec3::new(-bisector.x, -bisector.y, 0.0).normalize_or(Vec3::NEG_Y);
-            return Some(RootLabel {
-                root: r,
-                out,
-                text: format!("α = {:.0}°", angle / DEG),
-                color: palette::DARK,
-                priority: 0,
-            });
+            return vec![
+                PlacedLabel {
+                    at: r,
+                    out,
+                    first_m: 0.05 + 0.07 * out.y.abs(),
+                    low_y: r.y + ROOT_LABEL_LOW_M,
+                    along: Vec::new(),
+                    own_side: false,
+                    text: format!("α = {:.0}°", angle / DEG),
+                    color: palette::DARK,
+                    priority: 0,
+                },
+                d_label,
+            ];
         }
-        None
+        vec![d_label]
     }
 }
 
-/// A label at a chain's root (its solver's name, α), placed once the whole figure is drawn.
-struct RootLabel {
-    root: Vec3,
-    /// The preferred direction from the root, in the xy plane.
+/// A label placed once the whole figure is drawn ([`IkFigure::place_label`]): a chain's name
+/// and α at its root, a target's name, a miss's length, side d.
+struct PlacedLabel {
+    /// The point it names (or sits beside), world space.
+    at: Vec3,
+    /// The preferred direction from `at`, in the xy plane, unit length.
     out: Vec3,
+    /// How far along `out` the preferred anchor lies, metres.
+    first_m: f32,
+    /// The lowest the anchor may go, world y in metres.
+    low_y: f32,
+    /// Other points the label may sit beside, after those round `at` (along the line it
+    /// names).
+    along: Vec<Vec3>,
+    /// It tries its own side of `at` (within 45° of `out`) further out before turning round
+    /// `at`: a target's name below its target reads as naming the chain beneath.
+    own_side: bool,
     text: String,
     color: Vec3,
     priority: i32,
 }
+
+/// How far below its root a chain's name sits first, metres.
+const ROOT_LABEL_FIRST_M: f32 = 0.12;
 
 /// How far below its root a root label's anchor may go, metres: the bottom of the box each chain
 /// keeps in view.

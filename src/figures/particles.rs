@@ -734,6 +734,9 @@ pub struct FreeFallFigure {
     runner: Runner,
     /// Each integrator's positions after 0, 1, 2, … steps.
     paths: [Vec<Vec3>; 3],
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the integrators'
+    /// names take the sides of their dots that keep them apart and off the paths.
+    view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
 }
 
 /// How long the throw is shown, seconds.
@@ -743,6 +746,11 @@ pub const FREE_FALL_DURATION: f32 = 1.3;
 pub const EXACT_BALL_M: f32 = 0.11;
 /// Radius of each integrator's ball at its latest step, metres.
 pub const STEP_BALL_M: f32 = 0.06;
+/// Each integrator's dot at its latest step, CSS pixels across, outline included: drawn over
+/// its ball so that it reads at any zoom.
+pub const STEP_DOT_PX: f32 = 14.0;
+/// Each integrator's dots at its earlier steps, CSS pixels across.
+pub const PAST_DOT_PX: f32 = 11.0;
 
 impl Default for FreeFallFigure {
     fn default() -> Self {
@@ -760,9 +768,18 @@ impl FreeFallFigure {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             paths: Default::default(),
+            view: None,
         };
         f.integrate();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the integrators' names are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, glam::Vec2::new(width_px, height_px)));
+        }
     }
 
     pub fn set_runner(&mut self, runner: Runner) {
@@ -883,10 +900,12 @@ impl FreeFallFigure {
             frame.wide_polyline(&path[..=k_now], color, crate::draw::CURVE_PX);
             // One outlined dot per step before the latest (the big dot), the same size at any zoom.
             for p in &path[..k_now] {
-                frame.marker(*p, 9.0, color);
+                frame.marker(*p, PAST_DOT_PX, color);
             }
             frame.point_on_top(path[k_now], STEP_BALL_M, color);
+            frame.marker_on_top(path[k_now], STEP_DOT_PX, color);
         }
+        self.name_integrators(frame, k_now);
         // The whole throw stays in view at every step size: the camera fits the paths' box
         // (fixed for a given Δt, so it does not move while the throw plays).
         let (lo, hi) = self.paths.iter().flatten().chain(&exact).fold(
@@ -916,6 +935,42 @@ impl FreeFallFigure {
             note.push_str(&self.exercise_note());
         }
         Ok(note)
+    }
+
+    /// Names each integrator beside its latest dot, as the text names it: the first side round
+    /// the dot (then 12, 24, 36 and 48 px further out) that covers no dot, path or name already placed,
+    /// on the last frame's view, starting above and right (the throw rises to the right, so the
+    /// paths run below and left of the dots on the way up). The three dots start together and
+    /// part slowly, so only the names tell them apart where the colours overlap.
+    fn name_integrators(&self, frame: &mut Frame, k_now: usize) {
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let sides = [
+            (1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, -1.0),
+            (-1.0, 1.0),
+            (0.0, -1.0),
+            (0.0, 1.0),
+            (1.0, 0.0),
+            (-1.0, 0.0),
+        ]
+        .map(|(x, y)| glam::Vec2::new(x, y));
+        for (k, integrator) in Integrator::ALL.iter().enumerate() {
+            let dot = self.paths[k][k_now];
+            let color = INTEGRATOR_COLORS[k];
+            let candidates = [0.0, 12.0, 24.0, 36.0, 48.0]
+                .into_iter()
+                .flat_map(|out_px| {
+                    sides.map(|side| {
+                        let clear_px = STEP_DOT_PX + 2.0 * out_px;
+                        let name = integrator.name().to_string();
+                        crate::draw::Label::off_dot(dot, clear_px, side, name, color, 0)
+                    })
+                });
+            frame.first_clear_label(view, candidates);
+        }
     }
 
     /// Compares the student's semi-implicit step with the reference at the figure's first step

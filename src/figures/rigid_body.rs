@@ -20,14 +20,15 @@ use super::{
     compare_note, failure_note, format_number, in_range, palette, whole_number, Frame, Runner,
     DEFAULT_RUNNER,
 };
-use crate::draw::{MeshId, StrokeStyle, ARROW_PX, DOT_PX};
+use crate::camera::{project_to_canvas, OrbitCamera};
+use crate::draw::{Label, MeshId, StrokeStyle, ARROW_PX, DOT_PX};
 use crate::exercises::run;
 use crate::rigid_body::contact::{corners, BroadPhase, Shape, World};
 use crate::rigid_body::inertia::solid_box;
 use crate::rigid_body::{
     normal_impulse, orientation_step, AngularStep, OrientationStep, RigidBody,
 };
-use glam::{Mat4, Quat, Vec3};
+use glam::{Mat4, Quat, Vec2, Vec3};
 
 /// The racket's half-extents (m): long along x, middle along y, thin along z, so its moments
 /// are smallest about x, in between about y, largest about z.
@@ -372,6 +373,9 @@ pub struct ThrowFigure {
     history: Vec<[f32; 5]>,
     /// Per step: ω in the world (rad/s), for the trail of its tip.
     omegas: Vec<Vec3>,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the labels of L
+    /// and ω take the sides of their tips that keep them apart and off the lines.
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for ThrowFigure {
@@ -391,9 +395,18 @@ impl ThrowFigure {
             steps_done: 0,
             history: Vec::new(),
             omegas: Vec::new(),
+            view: None,
         };
         f.restart();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the labels of L and ω are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The spin (rad/s, 0 to 15) and the spin axis's angle from the box's shortest axis towards
@@ -557,7 +570,6 @@ impl ThrowFigure {
         }
         let l_tip = at + THROW_ARROW_M * l_dir;
         frame.arrow(at, l_tip, palette::PURPLE, 0.08);
-        frame.label(l_tip + Vec3::new(-0.12, 0.05, 0.0), "L", palette::PURPLE);
         // ω at the scale that puts its tip on the plane across L through L's tip.
         let scale = THROW_ARROW_M / along;
         let trail: Vec<Vec3> = self.omegas.iter().map(|w| at + scale * *w).collect();
@@ -565,7 +577,7 @@ impl ThrowFigure {
         frame.wide_polyline(&trail, light, 3.0);
         let w_tip = at + scale * omega;
         frame.arrow(at, w_tip, palette::TEAL, 0.08);
-        frame.label(w_tip + Vec3::new(0.05, 0.05, 0.0), "ω", palette::TEAL);
+        self.label_tips(frame, l_tip, w_tip);
         let row = self.history.last().copied().unwrap_or([0.0; 5]);
         let turned = angle_deg(omega, self.omegas[0]);
         let l0 = self.history[0][2];
@@ -582,6 +594,65 @@ impl ThrowFigure {
         )
     }
 }
+
+impl ThrowFigure {
+    /// Names L and ω at their tips, which lie a few pixels apart: each on the side of its tip
+    /// away from the other's (on screen, for the last frame's view), else the first side round
+    /// its tip that covers no line, dot or the other's name. The names are spelt out: a lone
+    /// letter reads as a speck beside an arrow head.
+    fn label_tips(&self, frame: &mut Frame, l_tip: Vec3, w_tip: Vec3) {
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        // +1: ω's tip lies right of L's on screen (from the page's default view, before the
+        // first frame is drawn).
+        let apart = view
+            .and_then(|(view_proj, size)| {
+                let l = project_to_canvas(view_proj, size, l_tip)?;
+                let w = project_to_canvas(view_proj, size, w_tip)?;
+                Some(if w.x >= l.x { 1.0 } else { -1.0 })
+            })
+            .unwrap_or(1.0);
+        // Sideways away from the other first, then up and down that side, then over the top,
+        // then the other side.
+        let sides = |x: f32| {
+            [
+                (x, 0.0),
+                (x, -1.0),
+                (x, 1.0),
+                (0.0, -1.0),
+                (0.0, 1.0),
+                (-x, -1.0),
+                (-x, 1.0),
+                (-x, 0.0),
+            ]
+            .map(|(x, y)| Vec2::new(x, y))
+        };
+        let names = [
+            (l_tip, -apart, "L (angular momentum)", palette::PURPLE, 1),
+            (w_tip, apart, "ω (angular velocity)", palette::TEAL, 0),
+        ];
+        for (tip, x, text, color, priority) in names {
+            // Every side just off the tip, then further out: the trail circles L's tip and the
+            // path passes the arrows.
+            let candidates = [0.0, 16.0, 32.0].into_iter().flat_map(|out_px| {
+                sides(x).map(|side| {
+                    let clear_px = TIP_PX + 2.0 * out_px;
+                    Label::off_dot(tip, clear_px, side, text.into(), color, priority)
+                })
+            });
+            frame.first_clear_label(view, candidates);
+        }
+    }
+}
+
+/// How wide an arrow's head is taken to be on screen, CSS pixels, for the labels at the tips.
+const TIP_PX: f32 = 10.0;
+
+/// The stack figure's name of its tracked body sits this far above the body's highest corner,
+/// taken as a dot this wide (CSS pixels): the top face seen from above rises about 10 px above
+/// that corner's height at the page's camera.
+const NAME_CLEAR_PX: f32 = 24.0;
 
 /// The angle between two vectors in degrees; 0 when either is (nearly) zero.
 fn angle_deg(a: Vec3, b: Vec3) -> f32 {
@@ -1494,12 +1565,29 @@ impl StackFigure {
             frame.marker_on_top(*p, CONTACT_PX, palette::RED);
         }
         let k = self.tracked();
-        let (b, _) = &self.world.bodies[k];
+        let (b, shape) = &self.world.bodies[k];
         let name = match self.preset {
             StackPreset::Stack => "top box",
             StackPreset::Dominoes => "last domino",
         };
-        frame.label(b.position + Vec3::new(0.0, 0.45, 0.0), name, palette::DARK);
+        // Over the body's middle, at its highest corner's height, a fixed few pixels up at any
+        // zoom (NAME_CLEAR_PX: the top face seen from above rises above that point).
+        let half = match shape {
+            Shape::Cuboid { half } => *half,
+            Shape::Sphere { radius } => Vec3::splat(*radius),
+        };
+        let top = corners(b, half)
+            .into_iter()
+            .fold(f32::MIN, |top, c| top.max(c.y));
+        let anchor = Vec3::new(b.position.x, top, b.position.z);
+        frame.label_off_dot(
+            anchor,
+            NAME_CLEAR_PX,
+            Vec2::new(0.0, -1.0),
+            name,
+            palette::DARK,
+            0,
+        );
         let row = self.history.last().copied().unwrap_or([0.0; 3]);
         let t = self.steps_done as f32 * SIM_DT;
         let solver = format!(

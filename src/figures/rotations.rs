@@ -889,6 +889,9 @@ pub struct Rodrigues {
     use_exercise: bool,
     runner: Runner,
     arc: Vec<Vec3>,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the terms' labels
+    /// take places beside their arrows that cover no line.
+    view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
 }
 
 impl Default for Rodrigues {
@@ -908,6 +911,15 @@ impl Rodrigues {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             arc: Vec::with_capacity(129),
+            view: None,
+        }
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the terms' labels are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, glam::Vec2::new(width_px, height_px)));
         }
     }
 
@@ -964,6 +976,41 @@ impl Rodrigues {
             .unwrap_or_else(|| rotation::quat_from_axis_angle(self.axis.axis, angle_rad))
     }
 
+    /// Adds a term's label beside its arrow from `from` to `to`: the first place beside its
+    /// middle, then nearer either end, then further out (12 to 60 px), that covers no line,
+    /// dot or label already placed on the last frame's view (the middle itself, above and
+    /// right, without one).
+    fn label_beside_arrow(&self, frame: &mut Frame, from: Vec3, to: Vec3, text: &str, color: Vec3) {
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let sides = [
+            (1.0, -1.0),
+            (-1.0, 1.0),
+            (-1.0, -1.0),
+            (1.0, 1.0),
+            (0.0, -1.0),
+            (0.0, 1.0),
+            (1.0, 0.0),
+            (-1.0, 0.0),
+        ]
+        .map(|(x, y)| glam::Vec2::new(x, y));
+        // The shaft as a dot this wide: the label keeps LABEL_DOT_GAP_PX off its stroke.
+        const SHAFT_PX: f32 = 2.0 * crate::draw::ARROW_PX;
+        let candidates = [0.0, 12.0, 24.0, 36.0, 48.0, 60.0]
+            .into_iter()
+            .flat_map(move |out_px| {
+                [0.5, 0.35, 0.65, 0.2, 0.8].into_iter().flat_map(move |t| {
+                    sides.map(|side| {
+                        let at = from.lerp(to, t);
+                        let clear_px = SHAFT_PX + 2.0 * out_px;
+                        crate::draw::Label::off_dot(at, clear_px, side, text.into(), color, 0)
+                    })
+                })
+            });
+        frame.first_clear_label(view, candidates);
+    }
+
     /// Draws the rotation swept up to `s · θ`, `s ∈ [0, 1]`. Returns the note about the exercises.
     pub fn draw(&mut self, frame: &mut Frame, s: f32) -> Result<String, String> {
         use rodrigues_colors::*;
@@ -997,16 +1044,17 @@ impl Rodrigues {
         // A term's label only when the term is long enough to carry it (labels of short terms
         // all land on the same spot near the tip of v′).
         const LABELLED: f32 = 0.25;
+        let mut terms = Vec::new();
         if cos_part.length() > LABELLED {
-            frame.label(p1 * 0.5, "v cos θ", COS_PART);
+            terms.push((Vec3::ZERO, p1, "v cos θ", COS_PART));
         }
         frame.arrow(p1, p2, SIN_PART, 0.1);
         if sin_part.length() > LABELLED {
-            frame.label((p1 + p2) * 0.5, "(n × v) sin θ", SIN_PART);
+            terms.push((p1, p2, "(n × v) sin θ", SIN_PART));
         }
         frame.arrow(p2, p2 + axial_part, AXIAL_PART, 0.1);
         if axial_part.length() > LABELLED {
-            frame.label(p2 + axial_part * 0.5, "n (n·v)(1 − cos θ)", AXIAL_PART);
+            terms.push((p2, p2 + axial_part, "n (n·v)(1 − cos θ)", AXIAL_PART));
         }
         // v′ = R(sθ) v, from the matrix (the student's when used).
         let turned = self.matrix_at(phi) * v;
@@ -1024,6 +1072,11 @@ impl Rodrigues {
         );
         frame.axes(place, 0.4);
         frame.label(QUAT_BOX_AT - Vec3::Y * 0.5, "turned by q", palette::GREY);
+        // Last, once every arrow and the other labels are down: the terms run tip to tail
+        // beside v, v′ and the circle, so a label at a term's middle lies on some arrow.
+        for (from, to, text, color) in terms {
+            self.label_beside_arrow(frame, from, to, text, color);
+        }
         // The axis, the circle (which holds v and v′) and the box stay in view.
         frame.keep_in_view.extend(self.arc.iter().step_by(8));
         frame.keep_in_view.extend([

@@ -174,6 +174,9 @@ impl ClothScene {
     /// Simulates to `time_sec` and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         self.camera = Some(viewer.camera);
+        // The view the drape's name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         if viewer.renewed(&mut self.gpu_seen) {
             self.meshes.clear();
             self.current.clear();

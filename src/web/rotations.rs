@@ -259,6 +259,9 @@ impl RodriguesScene {
 
     /// Draws the rotation swept up to `s · θ`, `s ∈ [0, 1]`; returns the note about the exercises.
     pub fn draw(&mut self, viewer: &mut Viewer, s: f32) -> Result<String, JsError> {
+        // The view the terms' labels are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame, s).map_err(js)?;
         viewer.present()?;
         Ok(note)
