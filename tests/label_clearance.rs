@@ -125,6 +125,24 @@ fn page_camera(view: [f32; 6], frame: &Frame, size: Vec2) -> OrbitCamera {
     camera
 }
 
+/// Runs one case's checks and returns its assertion's message, if it failed: a sweep keeps going
+/// and reports how many cases fail, with a few of them.
+fn failure_of(check: impl FnOnce() + std::panic::UnwindSafe) -> Option<String> {
+    std::panic::catch_unwind(check)
+        .err()
+        .map(|e| e.downcast_ref::<String>().cloned().unwrap_or_default())
+}
+
+/// Fails with the number of failed cases and the first twelve messages.
+fn assert_none_failed(failures: &[String]) {
+    assert!(
+        failures.is_empty(),
+        "{} failures, e.g.\n{}",
+        failures.len(),
+        failures[..failures.len().min(12)].join("\n")
+    );
+}
+
 #[test]
 fn lesson_00_depth_side_view_labels_keep_off_the_bars_and_the_line() {
     // The page's defaults (lessons/00-triangles-to-pixels/lesson.js): 16 bits, 0.1 m to 1 km.
@@ -364,11 +382,7 @@ fn lesson_07_root_labels_keep_off_the_chains_at_every_pole_and_target() {
                     .labels
                     .retain(|l| SOLVERS.contains(&l.text.as_str()) || l.text.starts_with("α"));
                 let name = format!("07 roots, target {target}, pole {pole}°");
-                if let Err(e) =
-                    std::panic::catch_unwind(|| assert_clear(&name, &roots, &camera, size))
-                {
-                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
-                }
+                failures.extend(failure_of(|| assert_clear(&name, &roots, &camera, size)));
             }
         }
     }
@@ -635,10 +649,9 @@ fn lesson_07_hinge_figure_labels_keep_off_the_hinges_and_their_plane() {
                     let camera = page_camera(view, &frame, size);
                     cases += 1;
                     let name = format!("07 Fig 3, {segments} segments, {limits}, target {target}");
-                    if let Err(e) = std::panic::catch_unwind(|| {
-                        assert_clear_of(&name, &frame, &camera, size, placed)
-                    }) {
-                        let message = e.downcast_ref::<String>().cloned().unwrap_or_default();
+                    if let Some(message) =
+                        failure_of(|| assert_clear_of(&name, &frame, &camera, size, placed))
+                    {
                         if i < start {
                             at_start.push(message.clone());
                         }
@@ -726,18 +739,11 @@ fn lesson_14_throw_names_l_and_omega_apart_at_their_tips() {
                         "{name} on {size}: the names crowd: {boxes:?}"
                     );
                 };
-                if let Err(e) = std::panic::catch_unwind(check) {
-                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
-                }
+                failures.extend(failure_of(check));
             }
         }
     }
-    assert!(
-        failures.is_empty(),
-        "{} failures, e.g.\n{}",
-        failures.len(),
-        failures[..failures.len().min(12)].join("\n")
-    );
+    assert_none_failed(&failures);
 }
 
 /// Checks that every label of `frame` is shown where the figure put it, its box `reach_px` at
@@ -810,20 +816,13 @@ fn lesson_11_integrators_are_named_beside_their_dots() {
                     ["explicit Euler", "semi-implicit Euler", "velocity Verlet"]
                 );
                 let name = format!("11 free fall, dt {dt} s, t {t} s");
-                if let Err(e) = std::panic::catch_unwind(|| {
+                failures.extend(failure_of(|| {
                     assert_named_beside_dots(&name, &frame, &camera, size, 60.0)
-                }) {
-                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
-                }
+                }));
             }
         }
     }
-    assert!(
-        failures.is_empty(),
-        "{} failures, e.g.\n{}",
-        failures.len(),
-        failures[..failures.len().min(12)].join("\n")
-    );
+    assert_none_failed(&failures);
 }
 
 #[test]
@@ -890,9 +889,7 @@ fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
                     }
                     assert_clear_of(&name, &frame, &camera, size, term);
                 };
-                if let Err(e) = std::panic::catch_unwind(check) {
-                    failures.push(e.downcast_ref::<String>().cloned().unwrap_or_default());
-                }
+                failures.extend(failure_of(check));
             }
         }
     }
