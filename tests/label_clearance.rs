@@ -143,6 +143,23 @@ fn assert_none_failed(failures: &[String]) {
     );
 }
 
+/// A name just above what it names: its box's bottom from `gap` px above the topmost of
+/// `points` (on the canvas) to 2 px into it, and its middle over them.
+fn assert_just_above(at: &str, bottom: f32, middle: f32, points: &[Vec2], gap: f32, what: &str) {
+    let top = points.iter().map(|c| c.y).fold(f32::MAX, f32::min);
+    let (left, right) = points.iter().fold((f32::MAX, f32::MIN), |(lo, hi), c| {
+        (lo.min(c.x), hi.max(c.x))
+    });
+    assert!(
+        (top - gap..=top + 2.0).contains(&bottom),
+        "{at}'s bottom at {bottom}, the {what}'s top at {top}"
+    );
+    assert!(
+        (left..=right).contains(&middle),
+        "{at}'s middle at {middle}, the {what} from {left} to {right}"
+    );
+}
+
 #[test]
 fn lesson_00_depth_side_view_labels_keep_off_the_bars_and_the_line() {
     // The page's defaults (lessons/00-triangles-to-pixels/lesson.js): 16 bits, 0.1 m to 1 km.
@@ -939,22 +956,9 @@ fn lesson_14_stack_names_its_top_box_just_above_it() {
                         project_to_canvas(view_proj, size, model.transform_point3(s)).unwrap()
                     })
                     .collect();
-                let top = corners.iter().map(|c| c.y).fold(f32::MAX, f32::min);
-                let (left, right) = corners.iter().fold((f32::MAX, f32::MIN), |(lo, hi), c| {
-                    (lo.min(c.x), hi.max(c.x))
-                });
-                let bottom = p.top_left.y + b.size.y;
-                let middle = p.top_left.x + 0.5 * b.size.x;
-                assert!(
-                    (top - 14.0..=top + 2.0).contains(&bottom),
-                    "{name} on {size}: {:?}'s bottom at {bottom}, the body's top at {top}",
-                    l.text
-                );
-                assert!(
-                    (left..=right).contains(&middle),
-                    "{name} on {size}: {:?}'s middle at {middle}, the body from {left} to {right}",
-                    l.text
-                );
+                let (bottom, middle) = (p.top_left.y + b.size.y, p.top_left.x + 0.5 * b.size.x);
+                let at = format!("{name} on {size}: {:?}", l.text);
+                assert_just_above(&at, bottom, middle, &corners, 14.0, "body");
             }
         }
     }
@@ -995,22 +999,9 @@ fn lesson_13_drape_name_sits_on_the_cloth() {
                     .iter()
                     .filter_map(|q| project_to_canvas(view_proj, size, *q))
                     .collect();
-                let top = tops.iter().map(|c| c.y).fold(f32::MAX, f32::min);
-                let (left, right) = tops.iter().fold((f32::MAX, f32::MIN), |(lo, hi), c| {
-                    (lo.min(c.x), hi.max(c.x))
-                });
-                let bottom = p.top_left.y + b.size.y;
-                let middle = p.top_left.x + 0.5 * b.size.x;
-                assert!(
-                    (top - 12.0..=top + 2.0).contains(&bottom),
-                    "{name} on {size}: {:?}'s bottom at {bottom}, the cloth's top at {top}",
-                    l.text
-                );
-                assert!(
-                    (left..=right).contains(&middle),
-                    "{name} on {size}: {:?}'s middle at {middle}, the cloth from {left} to {right}",
-                    l.text
-                );
+                let (bottom, middle) = (p.top_left.y + b.size.y, p.top_left.x + 0.5 * b.size.x);
+                let at = format!("{name} on {size}: {:?}", l.text);
+                assert_just_above(&at, bottom, middle, &tops, 12.0, "cloth");
             }
         }
     }
