@@ -20,7 +20,7 @@
 // `!(r < h)` on purpose: a NaN distance gives a zero weight, never a NaN one.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use glam::Vec3;
+use glam::{Vec3, Vec4};
 use std::f32::consts::PI;
 
 /// Whether the fluid lives in a vertical slab (`z = 0`, 2D kernels) or in space.
@@ -118,6 +118,28 @@ impl Kernels {
         let r = r2.sqrt();
         let q = self.h - r;
         rij * (-self.spiky_gradient * q * q / r)
+    }
+
+    /// [`Kernels::poly6`] of four squared distances at once, lane by lane: the same float
+    /// operations in the same order, so each lane equals the scalar kernel bit for bit.
+    #[inline(always)]
+    pub fn poly6_x4(&self, r2: Vec4) -> Vec4 {
+        let h2 = Vec4::splat(self.h2);
+        let d = h2 - r2;
+        let w = Vec4::splat(self.poly6) * d * d * d;
+        Vec4::select(r2.cmplt(h2), w, Vec4::ZERO)
+    }
+
+    /// The factor `s` of [`Kernels::spiky_gradient`] (`∇W = rij s`) for four squared distances
+    /// at once: `−c (h − r)² / r` inside `(0, h)`, zero elsewhere, each lane equal to the scalar
+    /// kernel's bit for bit (the same operations in the same order; a NaN lane gives zero).
+    #[inline(always)]
+    pub fn spiky_gradient_factor_x4(&self, r2: Vec4) -> Vec4 {
+        let inside = r2.cmplt(Vec4::splat(self.h2)) & r2.cmpgt(Vec4::splat(1e-24 * self.h2));
+        let r = r2.sqrt();
+        let q = Vec4::splat(self.h) - r;
+        let s = Vec4::splat(-self.spiky_gradient) * q * q / r;
+        Vec4::select(inside, s, Vec4::ZERO)
     }
 
     /// The viscosity kernel's Laplacian at distance `r`: positive inside the support.

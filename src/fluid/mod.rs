@@ -16,7 +16,7 @@ pub mod kernels;
 
 use crate::boids::grid::Grid;
 use crate::particles::collide::{bounce_velocity, Plane, Sphere};
-use glam::Vec3;
+use glam::{Vec3, Vec4};
 pub use kernels::{Dim, Kernels};
 
 /// The most particles a fluid may have: the CPU step's cost grows with the count (and the
@@ -538,11 +538,41 @@ impl Fluid {
             let p = points[i];
             // Σ W first, one multiplication by m at the end.
             let mut w = kern.poly6(0.0);
-            for &j in &self.nbr[self.start[i] as usize..self.start[i + 1] as usize] {
-                w += kern.poly6((p - points[j as usize]).length_squared());
-            }
+            let nbr = &self.nbr[self.start[i] as usize..self.start[i + 1] as usize];
+            for_each_four(points, p, nbr, |_, n, o| {
+                let v = kern.poly6_x4(o.r2).to_array();
+                for &v in &v[..n] {
+                    w += v;
+                }
+            });
             self.densities[i] = m * w;
         }
+    }
+
+    /// PBF's `λ_i` for particle `i` at the predicted positions: [`pbf_lambda`] over its
+    /// neighbour list, four neighbours at a time with the terms added in list order (the same
+    /// value bit for bit; this module's test compares the two).
+    fn lambda(&self, kern: &Kernels, i: usize) -> f32 {
+        let (m, rho0) = (self.mass, self.params.rest_density);
+        let c = (self.densities[i] / rho0 - 1.0).max(0.0);
+        if c == 0.0 {
+            return 0.0;
+        }
+        let k = Vec4::splat(m / rho0);
+        let (mut grad_i, mut sum) = (Vec3::ZERO, 0.0);
+        let nbr = &self.nbr[self.start[i] as usize..self.start[i + 1] as usize];
+        for_each_four(&self.predicted, self.predicted[i], nbr, |_, n, o| {
+            let s = kern.spiky_gradient_factor_x4(o.r2);
+            let (gx, gy, gz) = (k * (o.x * s), k * (o.y * s), k * (o.z * s));
+            let len2 = (gx * gx + gy * gy + gz * gz).to_array();
+            let (gx, gy, gz) = (gx.to_array(), gy.to_array(), gz.to_array());
+            for l in 0..n {
+                grad_i += Vec3::new(gx[l], gy[l], gz[l]);
+                sum += len2[l];
+            }
+        });
+        sum += grad_i.length_squared();
+        -c / (sum + self.params.relaxation)
     }
 
     /// The pressure of the equation of state at density `rho`.
@@ -616,8 +646,7 @@ impl Fluid {
     /// vorticity confinement and XSPH viscosity.
     fn step_pbf(&mut self) {
         let p = &self.params;
-        let (dt, h, dim, m, rho0) = (p.dt, p.h, p.dim, self.mass, p.rest_density);
-        let (iterations, eps, k_corr) = (p.iterations, p.relaxation, p.s_corr);
+        let (dt, h, dim, iterations) = (p.dt, p.h, p.dim, p.iterations);
         for i in 0..self.len() {
             self.velocities[i] += dt * self.params.gravity;
             let mut x = self.positions[i] + dt * self.velocities[i];
@@ -630,36 +659,9 @@ impl Fluid {
         for _ in 0..iterations {
             self.compute_densities(true);
             for i in 0..self.len() {
-                let lambda = pbf_lambda_with(
-                    &kern,
-                    self.predicted[i],
-                    self.neighbours(i)
-                        .iter()
-                        .map(|&j| self.predicted[j as usize]),
-                    self.densities[i],
-                    m,
-                    rho0,
-                    eps,
-                );
-                self.pressures[i] = lambda;
+                self.pressures[i] = self.lambda(&kern, i);
             }
-            for i in 0..self.len() {
-                let xi = self.predicted[i];
-                let mut dx = Vec3::ZERO;
-                for &j in self.neighbours(i) {
-                    let j = j as usize;
-                    let rij = xi - self.predicted[j];
-                    let s_corr = if k_corr > 0.0 {
-                        let ratio = kern.poly6(rij.length_squared()) / w_dq;
-                        -k_corr * ratio * ratio * ratio * ratio * self.lambda_unit
-                    } else {
-                        0.0
-                    };
-                    dx +=
-                        (self.pressures[i] + self.pressures[j] + s_corr) * kern.spiky_gradient(rij);
-                }
-                self.scratch[i] = m / rho0 * dx;
-            }
+            self.position_corrections(&kern, w_dq);
             for i in 0..self.len() {
                 let mut x = self.predicted[i] + self.scratch[i];
                 self.collide(&mut x, None);
@@ -677,6 +679,45 @@ impl Fluid {
             self.xsph();
         }
         std::mem::swap(&mut self.positions, &mut self.predicted);
+    }
+
+    /// PBF's position corrections into `scratch`: `Δx_i = (m/ρ₀) Σ_j (λ_i + λ_j + s_corr)
+    /// ∇W(x_i − x_j)` at the predicted positions, with the `λ`s in `pressures` and `w_dq` the
+    /// poly6 value `s_corr` is measured against.
+    fn position_corrections(&mut self, kern: &Kernels, w_dq: f32) {
+        let (m, rho0, k_corr) = (self.mass, self.params.rest_density, self.params.s_corr);
+        // Four neighbours at a time: the lanes hold each term's factors, and the terms are
+        // added in list order.
+        let (k_lanes, w_dq_lanes, unit_lanes) = (
+            Vec4::splat(-k_corr),
+            Vec4::splat(w_dq),
+            Vec4::splat(self.lambda_unit),
+        );
+        for i in 0..self.len() {
+            let xi = self.predicted[i];
+            let lambda_i = Vec4::splat(self.pressures[i]);
+            let mut dx = Vec3::ZERO;
+            let nbr = &self.nbr[self.start[i] as usize..self.start[i + 1] as usize];
+            for_each_four(&self.predicted, xi, nbr, |js, n, o| {
+                let s_corr = if k_corr > 0.0 {
+                    let ratio = kern.poly6_x4(o.r2) / w_dq_lanes;
+                    k_lanes * ratio * ratio * ratio * ratio * unit_lanes
+                } else {
+                    Vec4::ZERO
+                };
+                let s = kern.spiky_gradient_factor_x4(o.r2);
+                let c = lambda_i + gather(&self.pressures, js) + s_corr;
+                let (gx, gy, gz) = (
+                    (c * (o.x * s)).to_array(),
+                    (c * (o.y * s)).to_array(),
+                    (c * (o.z * s)).to_array(),
+                );
+                for l in 0..n {
+                    dx += Vec3::new(gx[l], gy[l], gz[l]);
+                }
+            });
+            self.scratch[i] = m / rho0 * dx;
+        }
     }
 
     /// Vorticity confinement (PBF): `ω_i = Σ (m/ρ_j)(v_j − v_i) × ∇_j W_ij`, `N = η/|η|` with
@@ -729,14 +770,29 @@ impl Fluid {
         let (h, dim, m, c) = (self.params.h, self.params.dim, self.mass, self.params.xsph);
         let x = &self.predicted;
         let kern = Kernels::new(h, dim);
+        let m_lanes = Vec4::splat(m);
         for i in 0..x.len() {
+            let vi = self.velocities[i];
             let mut dv = Vec3::ZERO;
-            for &j in self.neighbours(i) {
-                let j = j as usize;
-                dv += m / self.densities[j]
-                    * (self.velocities[j] - self.velocities[i])
-                    * kern.poly6((x[i] - x[j]).length_squared());
-            }
+            let nbr = &self.nbr[self.start[i] as usize..self.start[i + 1] as usize];
+            // Four neighbours at a time, the terms added in list order.
+            for_each_four(x, x[i], nbr, |js, n, o| {
+                let share = m_lanes / gather(&self.densities, js);
+                let w = kern.poly6_x4(o.r2);
+                let (mut vx, mut vy, mut vz) = ([vi.x; 4], [vi.y; 4], [vi.z; 4]);
+                for (l, &j) in js.iter().enumerate() {
+                    let v = self.velocities[j as usize];
+                    (vx[l], vy[l], vz[l]) = (v.x, v.y, v.z);
+                }
+                let (tx, ty, tz) = (
+                    (share * (Vec4::from_array(vx) - Vec4::splat(vi.x)) * w).to_array(),
+                    (share * (Vec4::from_array(vy) - Vec4::splat(vi.y)) * w).to_array(),
+                    (share * (Vec4::from_array(vz) - Vec4::splat(vi.z)) * w).to_array(),
+                );
+                for l in 0..n {
+                    dv += Vec3::new(tx[l], ty[l], tz[l]);
+                }
+            });
             self.scratch[i] = c * dv;
         }
         for i in 0..x.len() {
@@ -819,6 +875,63 @@ impl Fluid {
         if let Some(why) = explosion_verdict(&self.params, worst) {
             self.exploded = Some((self.time, why));
         }
+    }
+}
+
+/// The offsets `x_i − x_j` from `p = x_i` to four of its neighbours, lane by lane, and their
+/// squared lengths (`(x² + y²) + z²`, the order of `Vec3::length_squared`, so each lane equals
+/// the scalar computation bit for bit). `js` holds one to four indices; lanes past its end are
+/// `p − p` (a step reads only the first `js.len()` lanes).
+#[derive(Clone, Copy)]
+struct Offsets {
+    x: Vec4,
+    y: Vec4,
+    z: Vec4,
+    r2: Vec4,
+}
+
+#[inline(always)]
+fn offsets(points: &[Vec3], p: Vec3, js: &[u32]) -> Offsets {
+    let (mut xs, mut ys, mut zs) = ([p.x; 4], [p.y; 4], [p.z; 4]);
+    for (l, &j) in js.iter().enumerate() {
+        let q = points[j as usize];
+        (xs[l], ys[l], zs[l]) = (q.x, q.y, q.z);
+    }
+    let x = Vec4::splat(p.x) - Vec4::from_array(xs);
+    let y = Vec4::splat(p.y) - Vec4::from_array(ys);
+    let z = Vec4::splat(p.z) - Vec4::from_array(zs);
+    Offsets {
+        x,
+        y,
+        z,
+        r2: x * x + y * y + z * z,
+    }
+}
+
+/// Four of `values` gathered by index (lanes past `js` are 1, a value no sum reads).
+#[inline(always)]
+fn gather(values: &[f32], js: &[u32]) -> Vec4 {
+    let mut v = [1.0; 4];
+    for (l, &j) in js.iter().enumerate() {
+        v[l] = values[j as usize];
+    }
+    Vec4::from_array(v)
+}
+
+/// Calls `f(js, n, offsets)` for the neighbour list `nbr` of the particle at `p`, four
+/// neighbours at a time in list order (`n = js.len()`, 4 but for the last call). The step's
+/// sums evaluate their kernels four lanes at a time and add the lanes in list order, so every
+/// sum is the one a loop over the list, one neighbour at a time, computes, bit for bit (this
+/// module's test compares them).
+#[inline(always)]
+fn for_each_four(points: &[Vec3], p: Vec3, nbr: &[u32], mut f: impl FnMut(&[u32], usize, Offsets)) {
+    let mut chunks = nbr.chunks_exact(4);
+    for js in &mut chunks {
+        f(js, 4, offsets(points, p, js));
+    }
+    let rest = chunks.remainder();
+    if !rest.is_empty() {
+        f(rest, rest.len(), offsets(points, p, rest));
     }
 }
 
@@ -966,4 +1079,90 @@ fn pbf_lambda_with(
     }
     sum += grad_i.length_squared();
     -c / (sum + eps)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The step's sums, which evaluate four neighbours at a time, against a loop over each list
+    /// one neighbour at a time with the scalar kernels: equal bit for bit (the lanes add their
+    /// terms in list order), on a splashing 3D and 2D dam break.
+    #[test]
+    fn the_four_lane_sums_are_the_scalar_loops_bit_for_bit() {
+        for dim in [Dim::Three, Dim::Two] {
+            let params = match dim {
+                Dim::Three => FluidParams::default_3d(Method::Pbf),
+                Dim::Two => FluidParams::default_2d(Method::Pbf),
+            };
+            let mut f = Fluid::new(params, Scene::DamBreak, 3000, 7).unwrap();
+            for _ in 0..40 {
+                f.step();
+            }
+            assert!(f.exploded().is_none());
+            let (m, rho0) = (f.mass, f.params.rest_density);
+            let kern = Kernels::new(f.params.h, dim);
+            f.predicted.clone_from(&f.positions);
+            f.find_neighbours(true);
+            f.compute_densities(true);
+            let x = f.predicted.clone();
+            let nbrs = |f: &Fluid, i: usize| f.neighbours(i).to_vec();
+            let mut compressed = 0;
+            for i in 0..f.len() {
+                let mut w = kern.poly6(0.0);
+                for j in nbrs(&f, i) {
+                    w += kern.poly6((x[i] - x[j as usize]).length_squared());
+                }
+                assert_eq!(
+                    f.densities[i].to_bits(),
+                    (m * w).to_bits(),
+                    "density of {i}"
+                );
+                let lambda = pbf_lambda_with(
+                    &kern,
+                    x[i],
+                    nbrs(&f, i).iter().map(|&j| x[j as usize]),
+                    f.densities[i],
+                    m,
+                    rho0,
+                    f.params.relaxation,
+                );
+                f.pressures[i] = lambda;
+                compressed += usize::from(lambda != 0.0);
+            }
+            assert!(
+                compressed > 100,
+                "{compressed} particles compressed: too few to test λ"
+            );
+            for i in 0..f.len() {
+                let lambda = f.lambda(&kern, i);
+                assert_eq!(lambda.to_bits(), f.pressures[i].to_bits(), "λ of {i}");
+            }
+            let w_dq = kern.poly6((0.2 * f.params.h) * (0.2 * f.params.h));
+            f.position_corrections(&kern, w_dq);
+            for i in 0..f.len() {
+                let mut dx = Vec3::ZERO;
+                for j in nbrs(&f, i) {
+                    let j = j as usize;
+                    let rij = x[i] - x[j];
+                    let ratio = kern.poly6(rij.length_squared()) / w_dq;
+                    let s_corr = -f.params.s_corr * ratio * ratio * ratio * ratio * f.lambda_unit;
+                    dx += (f.pressures[i] + f.pressures[j] + s_corr) * kern.spiky_gradient(rij);
+                }
+                assert_eq!(f.scratch[i], m / rho0 * dx, "correction of {i}");
+            }
+            let v = f.velocities.clone();
+            f.xsph();
+            for i in 0..f.len() {
+                let mut dv = Vec3::ZERO;
+                for j in nbrs(&f, i) {
+                    let j = j as usize;
+                    dv += m / f.densities[j]
+                        * (v[j] - v[i])
+                        * kern.poly6((x[i] - x[j]).length_squared());
+                }
+                assert_eq!(f.velocities[i], v[i] + f.params.xsph * dv, "XSPH of {i}");
+            }
+        }
+    }
 }
