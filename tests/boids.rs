@@ -65,6 +65,26 @@ proptest! {
         }
     }
 
+    /// `append_neighbours` (the fluid's lists) writes the neighbours `for_each_neighbour`
+    /// visits, in the same order, after what the list already holds.
+    #[test]
+    fn append_neighbours_lists_what_for_each_neighbour_visits(
+        positions in prop::collection::vec(prop::array::uniform3(-6.0f32..6.0), 0..150),
+        radius in 0.1f32..3.0,
+    ) {
+        let positions: Vec<Vec3> = positions.into_iter().map(Vec3::from_array).collect();
+        let mut grid = Grid::default();
+        grid.configure(Vec3::splat(-4.0), Vec3::splat(4.0), radius);
+        grid.rebuild(&positions);
+        let mut appended = vec![7u32];
+        let mut visited = vec![7u32];
+        for i in 0..positions.len() {
+            grid.append_neighbours(&positions, i, radius, &mut appended);
+            grid.for_each_neighbour(&positions, i, radius, |j| visited.push(j as u32));
+            prop_assert_eq!(&appended, &visited);
+        }
+    }
+
     #[test]
     fn cell_index_is_within_the_grid(p in prop::array::uniform3(-100.0f32..100.0)) {
         let dims = [4, 5, 6];

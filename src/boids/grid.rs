@@ -436,6 +436,57 @@ impl Grid {
     }
 }
 
+impl Grid {
+    /// Appends to `out` the neighbours of `i` that [`Grid::for_each_neighbour`] finds, in the
+    /// same order, without a branch per neighbour: each group of four tested slots writes its
+    /// four indices at the end of the list and keeps as many as are within `radius` (the
+    /// fluid's neighbour lists, where a mispredicted branch per group cost more than the
+    /// distance tests).
+    pub fn append_neighbours(&self, positions: &[Vec3], i: usize, radius: f32, out: &mut Vec<u32>) {
+        let p = positions[i];
+        let r2 = radius * radius;
+        let c = self.cell_of[i] as usize;
+        let (dx, dy) = (self.dims[0] as usize, self.dims[1] as usize);
+        let cell = (c % dx, (c / dx) % dy, c / (dx * dy));
+        let mut runs = [(0u32, 0u32); 9];
+        self.runs_near(&self.cell_search(cell), p, r2, &mut runs);
+        let slots: usize = runs.iter().map(|&(a, b)| (b - a) as usize).sum();
+        out.reserve(slots + 4);
+        let spare = out.spare_capacity_mut();
+        let [x, y, z, ..] = &self.soa;
+        let (px, py, pz, r2v) = (
+            Vec4::splat(p.x),
+            Vec4::splat(p.y),
+            Vec4::splat(p.z),
+            Vec4::splat(r2),
+        );
+        let me = i as u32;
+        let mut kept = 0;
+        for &(a, b) in &runs {
+            let (mut t, end) = (a as usize, b as usize);
+            while t < end {
+                // As in `for_each_neighbour`: four lanes from slot t, those past the run masked.
+                let lane = |a: &[f32]| Vec4::from_slice(&a[t..t + 4]);
+                let (ex, ey, ez) = (lane(x) - px, lane(y) - py, lane(z) - pz);
+                let d2 = ex * ex + ey * ey + ez * ez;
+                let left = end - t;
+                let hits = d2.cmple(r2v).bitmask() & if left < 4 { (1 << left) - 1 } else { 15 };
+                for l in 0..4 {
+                    // Slots past the last boid hold no index: u32::MAX there, never kept.
+                    let j = self.sorted.get(t + l).copied().unwrap_or(u32::MAX);
+                    spare[kept].write(j);
+                    kept += ((hits >> l) & 1) as usize & usize::from(j != me);
+                }
+                t += 4;
+            }
+        }
+        // SAFETY: `kept` counts tested slots within the radius, at most `slots`, and the first
+        // `kept` entries of the spare capacity (of at least `slots + 4`) were written above:
+        // every write lands at the current `kept`, which only grows.
+        unsafe { out.set_len(out.len() + kept) };
+    }
+}
+
 mod lanes {
     use glam::Vec4;
 

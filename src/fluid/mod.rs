@@ -497,9 +497,8 @@ impl Fluid {
         self.nbr.clear();
         self.start.push(0);
         for i in 0..points.len() {
-            let nbr = &mut self.nbr;
             self.grid
-                .for_each_neighbour(points, i, self.params.h, |j| nbr.push(j as u32));
+                .append_neighbours(points, i, self.params.h, &mut self.nbr);
             self.start.push(self.nbr.len() as u32);
         }
     }
