@@ -53,6 +53,8 @@ fn all_three_solvers_reach_a_reachable_target_and_keep_the_chain() {
     f.set_iterations(MAX_ITERATIONS as f32).unwrap();
     let note = f.draw(&mut Frame::default()).unwrap();
     assert!(note.contains("Two-joint: reached in one step"), "{note}");
+    // Side d's length, which the figure's label may shorten to "d": |(0.55, 0.65, 0.15)|.
+    assert!(note.contains("side d = 0.865 m."), "{note}");
     assert!(note.contains("FABRIK: reached after"), "{note}");
     assert!(note.contains("CCD: reached after"), "{note}");
     let results = f.results().unwrap();

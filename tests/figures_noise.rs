@@ -432,8 +432,15 @@ fn fractals_count_segments_and_triangles() {
     assert!(s.set_depth(8.0).unwrap_err().contains("depth"));
     s.set_show_previous(true);
     f.clear();
-    s.draw(&mut f);
+    let note = s.draw(&mut f);
     assert_eq!(f.segments_of(palette::GREY).count(), 3 * 4 + 3 * 3);
+    // The note counts what the step adds: 2 bump sides per segment of depth 1, and 3 triangles
+    // of depth 1 cut.
+    assert!(
+        note.contains("each of the snowflake's 12 segments into 4 and adds the 24 coloured sides")
+            && note.contains("each of the Sierpinski triangle's 3 triangles"),
+        "{note}"
+    );
     // Every segment of the depth before lies on the Sierpinski triangle of this depth: grey covers
     // its outer edges and the orange left over is the new inner triangles.
     let orange: Vec<(Vec3, Vec3)> = f.segments_of(palette::ORANGE).collect();
@@ -561,6 +568,18 @@ fn terrain_scene_names_the_octaves_finer_than_the_mesh() {
     s.take_dirty();
     let n = s.draw(&mut f, MeshId(3));
     assert!(n.contains("octaves 7 to 9 are finer"), "{n}");
+    // One octave past the mesh: the sentence speaks of it in the singular.
+    s.set_params(7.0, 0.4, 2.0, 0.3, 1.0, 0.0).unwrap();
+    s.take_dirty();
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(
+        n.contains(
+            "so octave 7 is finer than the mesh (cells narrower than two spacings, 0.008 m): it \
+             falls between vertices and only adds aliasing; “leave out octaves finer than the \
+             mesh” drops it."
+        ),
+        "{n}"
+    );
     s.set_params(6.0, 0.4, 2.0, 0.3, 1.0, 0.0).unwrap();
     s.take_dirty();
     assert!(!s.draw(&mut f, MeshId(3)).contains("finer than the mesh"));

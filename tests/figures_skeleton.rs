@@ -118,6 +118,17 @@ fn interpolation_choices_change_the_pose_between_keys_only() {
 }
 
 #[test]
+fn the_note_gives_the_time_and_the_fraction_in_fixed_decimals() {
+    // A timeline back at its start passes times such as 4.4e-16 s.
+    let mut f = SkeletonFigure::new();
+    let note = f.draw(&mut Frame::default(), 4.441e-16).unwrap();
+    assert!(
+        note.contains("at 0.000 s: between keys 0 and 1 (s = 0.000)"),
+        "{note}"
+    );
+}
+
+#[test]
 fn the_drawing_highlights_the_selected_joint_and_its_group() {
     let mut f = SkeletonFigure::new();
     let mut frame = Frame::default();

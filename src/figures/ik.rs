@@ -31,7 +31,7 @@ pub const MAX_SEGMENTS: usize = 8;
 /// Total length of every chain, metres.
 const CHAIN_LENGTH: f32 = 1.0;
 /// Where the three chains stand: analytic, CCD, FABRIK (x of each root, metres).
-const ROOTS_X: [f32; 3] = [-1.1, 0.0, 1.1];
+pub const ROOTS_X: [f32; 3] = [-1.1, 0.0, 1.1];
 /// How close (CSS pixels) a pointer must come to a target to grab it.
 const GRAB_RADIUS_PX: f32 = 18.0;
 /// How close the student's joints must be to the reference's, metres.
@@ -372,12 +372,15 @@ impl IkFigure {
         let mm = |e: f32| format!("{} mm", format_number(e * 1000.0));
         match self.results[0] {
             Some(r) if r.reached => parts.push(format!(
-                "Two-joint: reached in one step (error {}).",
-                mm(r.error)
+                "Two-joint: reached in one step (error {}), side d = {} m.",
+                mm(r.error),
+                format_number(self.target.length())
             )),
             Some(r) => parts.push(format!(
-                "Two-joint: out of reach, {} short (the chain points straight at the target).",
-                mm(r.error)
+                "Two-joint: out of reach, {} short (the chain points straight at the target), \
+                 side d = {} m.",
+                mm(r.error),
+                format_number(self.target.length())
             )),
             None => {
                 parts.push("Two-joint IK needs exactly 2 segments: its chain is hidden.".into())
@@ -745,7 +748,8 @@ impl IkFigure {
                 out: up.normalize(),
                 first_m: up.length(),
                 low_y: f32::NEG_INFINITY,
-                along: Vec::new(),
+                line: None,
+                short_text: None,
                 own_side: true,
                 text: format!("{} target", SOLVERS[k]),
                 color,
@@ -756,7 +760,8 @@ impl IkFigure {
                 out: Vec3::NEG_Y,
                 first_m: ROOT_LABEL_FIRST_M,
                 low_y: root.y + ROOT_LABEL_LOW_M,
-                along: Vec::new(),
+                line: None,
+                short_text: None,
                 own_side: false,
                 text: SOLVERS[k].into(),
                 color,
@@ -782,7 +787,8 @@ impl IkFigure {
                         out: below.normalize(),
                         first_m: below.length(),
                         low_y: f32::NEG_INFINITY,
-                        along: Vec::new(),
+                        line: Some([end, target]),
+                        short_text: None,
                         own_side: false,
                         text: format!("{:.1} mm short", r.error * 1000.0),
                         color,
@@ -823,13 +829,14 @@ impl IkFigure {
         Ok(self.notes.join(" "))
     }
 
-    /// Adds a label near the point it names: in its preferred place (`first_m` along `out`,
-    /// reading away from the point) when that covers none of the frame's dots, lines and labels
-    /// on the canvas the figure was last drawn on, else in the first such place around the
-    /// point, nearest the preferred direction first (rings in metres, then rings on screen), and
-    /// along the line it names. The chains, side d, the circle of middle joints, the pole's
-    /// line, the hinges' arcs and the grey square of their plane sweep round the roots and the
-    /// targets as the target and the pole move. Where no place is clear it keeps the preferred
+    /// Adds a label near the point it names: a label that measures a segment just beside that
+    /// segment when such a place is clear ([`beside_line_px`]); otherwise in its preferred place
+    /// (`first_m` along `out`, reading away from the point) when that covers none of the frame's
+    /// dots, lines and labels on the canvas the figure was last drawn on, else in the first such
+    /// place around the point, nearest the preferred direction first (rings in metres, then
+    /// rings on screen), and round points along the segment. The chains, side d, the circle of
+    /// middle joints, the pole's line, the hinges' arcs and the grey square of their plane sweep
+    /// round the roots and the targets as the target and the pole move. Where no place is clear it keeps the preferred
     /// one. The anchor stays at the preferred place and the others are screen offsets from it
     /// ([`crate::draw::Label::offset_px`]), so the place chosen never moves the camera's fit.
     fn place_label(&self, frame: &mut Frame, label: PlacedLabel) {
@@ -873,13 +880,55 @@ impl IkFigure {
                 places.extend([(at, left), (at, !left)]);
             }
         }
+        let line_px = label.line.and_then(|[p, q]| {
+            let (a, b) = (
+                project_to_canvas(view_proj, size, p)?,
+                project_to_canvas(view_proj, size, q)?,
+            );
+            (a.distance(b) > 1.0).then_some((a, b))
+        });
+        // Just beside the segment it measures: in full up to 10 px from it, then shortened up
+        // to 16 px, then in full at 16 px.
+        if let Some((a, b)) = line_px {
+            let full = placed.text.clone();
+            let tries = [
+                (Some(full.clone()), &[4.0, 10.0][..]),
+                (label.short_text.clone(), &[4.0, 10.0, 16.0][..]),
+                (Some(full), &[16.0][..]),
+            ];
+            let out = label.out.truncate();
+            let beside = tries.into_iter().flat_map(|(text, gaps)| {
+                let offsets = match &text {
+                    Some(text) => beside_line_px(a, b, home, text, out, gaps),
+                    None => Vec::new(),
+                };
+                offsets
+                    .into_iter()
+                    .map(move |offset_px| (offset_px, text.clone().unwrap_or_default()))
+            });
+            for (offset_px, text) in beside {
+                let candidate = crate::draw::Label {
+                    offset_px,
+                    left: false,
+                    text,
+                    ..placed.clone()
+                };
+                if frame.label_is_clear(view_proj, size, &candidate) {
+                    frame.labels.push(candidate);
+                    return;
+                }
+            }
+        }
         let mut offsets: Vec<(Vec2, bool)> = places
             .iter()
             .filter_map(|&(at, left)| Some((project_to_canvas(view_proj, size, at)? - home, left)))
             .collect();
-        // Then rings on screen round the point (and along the line it names), for a canvas
-        // where the figure is small.
-        let centres = std::iter::once(label.at).chain(label.along.iter().copied());
+        // Then rings on screen round the point (and points along the line it measures), for a
+        // canvas where the figure is small.
+        let along = label.line.map_or(Vec::new(), |[p, q]| {
+            [0.6, 0.4, 0.9].map(|t| p.lerp(q, t)).to_vec()
+        });
+        let centres = std::iter::once(label.at).chain(along);
         for centre in centres.filter_map(|c| project_to_canvas(view_proj, size, c)) {
             for r_px in [12.0, 18.0, 26.0, 36.0, 48.0, 64.0] {
                 for step in 0..16 {
@@ -1015,7 +1064,8 @@ impl IkFigure {
             out,
             first_m: 0.05 + 0.07 * out.y.abs(),
             low_y: f32::NEG_INFINITY,
-            along: [0.6, 0.4, 0.9].map(|t| r.lerp(g, t)).to_vec(),
+            line: Some([r, g]),
+            short_text: Some("d".into()),
             own_side: true,
             text: format!("d = {} m", format_number(d)),
             color: palette::GREY,
@@ -1040,7 +1090,8 @@ impl IkFigure {
                     out,
                     first_m: 0.05 + 0.07 * out.y.abs(),
                     low_y: r.y + ROOT_LABEL_LOW_M,
-                    along: Vec::new(),
+                    line: None,
+                    short_text: None,
                     own_side: false,
                     text: format!("α = {:.0}°", angle / DEG),
                     color: palette::DARK,
@@ -1064,15 +1115,68 @@ struct PlacedLabel {
     first_m: f32,
     /// The lowest the anchor may go, world y in metres.
     low_y: f32,
-    /// Other points the label may sit beside, after those round `at` (along the line it
-    /// names).
-    along: Vec<Vec3>,
+    /// The segment the label measures, if any (side d, a miss): its first places lie just
+    /// beside it on screen, and its last ones round points along it.
+    line: Option<[Vec3; 2]>,
+    /// A shorter text it takes just beside `line` where the full text fits no clear place there
+    /// (side d's letter alone: the note gives its length).
+    short_text: Option<String>,
     /// It tries its own side of `at` (within 45° of `out`) further out before turning round
     /// `at`: a target's name below its target reads as naming the chain beneath.
     own_side: bool,
     text: String,
     color: Vec3,
     priority: i32,
+}
+
+/// Screen offsets (from the place the page's layout first gives a label reading `text`
+/// rightwards from `home`, its anchor's projection) that put the label's box just beside the
+/// segment `a`–`b` on the canvas: its nearest edge each of `gaps_px` in turn from the
+/// segment's line, at points from three quarters of the way to `b` out to `b` and back towards
+/// `a`, on the side `out` (a direction on screen, y up) points to first, then on the other, and
+/// last (for gaps up to 10 px) past `b` on the line's continuation, 8 px further out for the
+/// target's dot there.
+fn beside_line_px(
+    a: Vec2,
+    b: Vec2,
+    home: Vec2,
+    text: &str,
+    out: Vec2,
+    gaps_px: &[f32],
+) -> Vec<Vec2> {
+    use crate::draw::layout::{preferred, LabelBox};
+    let size = crate::draw::label_size_px(text);
+    let first = preferred(&LabelBox {
+        anchor: home,
+        size,
+        left: false,
+        visible: true,
+        priority: 0,
+    });
+    // Screen y runs down: `out`'s y flips.
+    let mut normal = (b - a).perp().normalize();
+    if normal.dot(Vec2::new(out.x, -out.y)) < 0.0 {
+        normal = -normal;
+    }
+    // The box's half extent along a direction on screen.
+    let half = |dir: Vec2| 0.5 * (size.x * dir.x.abs() + size.y * dir.y.abs());
+    let mut offsets = Vec::new();
+    for &gap_px in gaps_px {
+        for t in [0.75, 0.9, 0.6, 1.0, 0.45, 0.3, 0.15] {
+            for side in [normal, -normal] {
+                let centre = a.lerp(b, t) + side * (gap_px + half(side));
+                offsets.push(centre - 0.5 * size - first);
+            }
+        }
+        // Past the end at `b`, on the line's continuation, clear of a target's dot there (at
+        // the smaller gaps only: a wide box far along a steep line ends up far from it).
+        if gap_px <= 10.0 {
+            let on = (b - a).normalize();
+            let centre = b + on * (gap_px + 8.0 + half(on));
+            offsets.push(centre - 0.5 * size - first);
+        }
+    }
+    offsets
 }
 
 /// How far below its root a chain's name sits first, metres.

@@ -1322,22 +1322,30 @@ impl TerrainScene {
         }
         if last.is_none_or(|l| l < p.fractal.n) {
             let first = last.map_or(0, |l| l + 1);
-            let range = if first == p.fractal.n {
+            let one = first == p.fractal.n;
+            let range = if one {
                 format!("octave {first} is")
             } else if first + 1 == p.fractal.n {
                 format!("octaves {first} and {} are", p.fractal.n)
             } else {
                 format!("octaves {first} to {} are", p.fractal.n)
             };
+            // One octave or several: the rest of the sentence agrees.
+            let (they, fall, add, are, them) = if one {
+                ("it", "falls", "adds", "is", "it")
+            } else {
+                ("they", "fall", "add", "are", "them")
+            };
             note += &format!(
                 " The vertices are {} m apart, so {range} finer than the mesh (cells narrower \
-                 than two spacings, {} m): they fall between vertices and only add aliasing{}.",
+                 than two spacings, {} m): {they} {fall} between vertices and only {add} \
+                 aliasing{}.",
                 format_number(spacing),
                 format_number(2.0 * spacing),
                 if self.band_limit {
-                    ", and are left out"
+                    format!(", and {are} left out")
                 } else {
-                    "; “leave out octaves finer than the mesh” drops them"
+                    format!("; “leave out octaves finer than the mesh” drops {them}")
                 }
             );
         }
@@ -2233,10 +2241,25 @@ impl Fractals {
             palette::ORANGE,
         );
         let segments = 3 * 4usize.pow(d);
+        // What the grey depth before leaves coloured: the two sides of each new bump, and the
+        // outline of the middle triangle cut out of each old triangle.
+        let step = if self.show_previous && d > 0 {
+            let before = 3 * 4usize.pow(d - 1);
+            format!(
+                " Over depth {} in grey, the step turns each of the snowflake's {before} segments \
+                 into 4 and adds the {} coloured sides of the new bumps; it cuts the middle out of \
+                 each of the Sierpinski triangle's {} triangles, whose outlines are the orange left.",
+                d - 1,
+                2 * before,
+                3usize.pow(d - 1)
+            )
+        } else {
+            String::new()
+        };
         format!(
             "Depth {d}: the snowflake has {segments} segments and a perimeter (4/3)^{d} = {} times \
              the triangle's; the Sierpinski triangle has 3^{d} = {} triangles covering (3/4)^{d} = {} \
-             of the area.",
+             of the area.{step}",
             format_number((4.0f32 / 3.0).powi(d as i32)),
             3usize.pow(d),
             format_number(0.75f32.powi(d as i32))

@@ -528,12 +528,14 @@ impl SkeletonFigure {
             ),
             None => String::new(),
         };
+        // Fixed decimals: a timeline back at its start can pass a time of a few 1e-16 s,
+        // which format_number would print in scientific notation.
         format!(
-            "{joint} Clip {} at {} s: between keys {i} and {} (s = {}), {how}.{blend}{compare}",
+            "{joint} Clip {} at {local:.3} s: between keys {i} and {} (s = {:.3}), \
+             {how}.{blend}{compare}",
             clip.name(),
-            format_number(local),
             i + 1,
-            format_number(s.clamp(0.0, 1.0)),
+            s.clamp(0.0, 1.0),
         )
     }
 
@@ -571,11 +573,7 @@ impl SkeletonFigure {
         } else {
             yours
         };
-        let at = format!(
-            "t = {} s ({})",
-            format_number(local),
-            self.skeleton.names()[j]
-        );
+        let at = format!("t = {local:.3} s ({})", self.skeleton.names()[j]);
         let (ok, note) = compare_note(
             "sample_rotation_slerp",
             &at,
