@@ -560,31 +560,28 @@ impl Frame {
     /// measured as [`label_size_px`] does. For figures that choose among places for a label
     /// near crowded lines; an anchor behind the camera is not clear.
     pub fn label_is_clear(&self, view_proj: Mat4, size: glam::Vec2, label: &Label) -> bool {
+        self.label_is_clear_by(view_proj, size, label, 0.0)
+    }
+
+    /// [`Frame::label_is_clear`] with `margin_px` more between the label's box and the frame's
+    /// markers and strokes: for a label that must not touch the lines it sits among.
+    pub fn label_is_clear_by(
+        &self,
+        view_proj: Mat4,
+        size: glam::Vec2,
+        label: &Label,
+        margin_px: f32,
+    ) -> bool {
         let priority = label.priority;
         use crate::camera::project_to_canvas;
-        use layout::{preferred, LabelBox, Rect};
-        let place = |anchor: Vec3, offset_px: glam::Vec2, left: bool, text: &str| {
-            let a = project_to_canvas(view_proj, size, anchor)? + offset_px;
-            let label = LabelBox {
-                anchor: a,
-                size: label_size_px(text),
-                left,
-                visible: true,
-                priority: 0,
-            };
-            let min = layout::inside(preferred(&label), label.size, size);
-            Some(Rect {
-                min,
-                size: label.size,
-            })
-        };
-        let Some(rect) = place(label.anchor, label.offset_px, label.left, &label.text) else {
+        let place = |l: &Label| l.first_place(view_proj, size);
+        let Some(rect) = place(label) else {
             return false;
         };
         let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
         let markers_clear = self.markers.iter().all(|m| {
             at(m.center).is_none_or(|c| {
-                let r = 0.5 * m.size_px.abs();
+                let r = 0.5 * m.size_px.abs() + margin_px;
                 !(c.cmpge(rect.min - r).all() && c.cmple(rect.max() + r).all())
             })
         });
@@ -593,7 +590,7 @@ impl Frame {
                 let (Some(a), Some(b)) = (at(s.a), at(s.b)) else {
                     return true;
                 };
-                let r = 0.5 * s.width_px;
+                let r = 0.5 * s.width_px + margin_px;
                 (0..=16).all(|k| {
                     let p = a.lerp(b, k as f32 / 16.0);
                     !(p.cmpgt(rect.min - r).all() && p.cmplt(rect.max() + r).all())
@@ -604,10 +601,7 @@ impl Frame {
             self.labels
                 .iter()
                 .filter(|l| l.priority >= priority)
-                .all(|l| {
-                    place(l.anchor, l.offset_px, l.left, &l.text)
-                        .is_none_or(|other| !other.overlaps(&rect, LABELS_APART_PX))
-                })
+                .all(|l| place(l).is_none_or(|other| !other.overlaps(&rect, LABELS_APART_PX)))
         };
         // The page's layout keeps labels off the inset's square (and its title).
         let inset_clear = self
@@ -675,15 +669,30 @@ impl Frame {
         view: Option<(Mat4, glam::Vec2)>,
         candidates: impl IntoIterator<Item = Label>,
     ) {
+        self.first_clear_label_by(view, 0.0, candidates, |_| true);
+    }
+
+    /// [`Frame::first_clear_label`] with `margin_px` kept from the markers and strokes
+    /// ([`Frame::label_is_clear_by`]) and a further test `also_clear` of each candidate's box
+    /// (its first place on the canvas, [`Label::first_place`]): for a figure that knows of
+    /// things under the label that the frame does not list (a mesh).
+    pub fn first_clear_label_by(
+        &mut self,
+        view: Option<(Mat4, glam::Vec2)>,
+        margin_px: f32,
+        candidates: impl IntoIterator<Item = Label>,
+        also_clear: impl Fn(layout::Rect) -> bool,
+    ) {
         let mut candidates = candidates.into_iter();
         let Some(first) = candidates.next() else {
             return;
         };
         let chosen = view
             .and_then(|(view_proj, size)| {
-                std::iter::once(first.clone())
-                    .chain(candidates)
-                    .find(|l| self.label_is_clear(view_proj, size, l))
+                std::iter::once(first.clone()).chain(candidates).find(|l| {
+                    self.label_is_clear_by(view_proj, size, l, margin_px)
+                        && l.first_place(view_proj, size).is_some_and(&also_clear)
+                })
             })
             .unwrap_or(first);
         self.labels.push(chosen);
@@ -691,6 +700,75 @@ impl Frame {
 }
 
 impl Label {
+    /// The box the page's layout first tries for this label on a `size` canvas (CSS pixels)
+    /// seen through `view_proj`: [`layout::preferred`] at its anchor's projection plus its
+    /// offset, moved inside the canvas, measured as [`label_size_px`] does. `None` when the
+    /// anchor is behind the camera.
+    pub fn first_place(&self, view_proj: Mat4, size: glam::Vec2) -> Option<layout::Rect> {
+        let anchor =
+            crate::camera::project_to_canvas(view_proj, size, self.anchor)? + self.offset_px;
+        let label = layout::LabelBox {
+            anchor,
+            size: label_size_px(&self.text),
+            left: self.left,
+            visible: true,
+            priority: 0,
+        };
+        Some(layout::Rect {
+            min: layout::inside(layout::preferred(&label), label.size, size),
+            size: label.size,
+        })
+    }
+
+    /// Candidates for [`Frame::first_clear_label`]: [`Label::off_dot`] on the eight sides of a
+    /// dot `dot_px` across at `anchor`, the sides that point most along `toward` (a screen
+    /// direction, x right, y down) first, at the dot's gap and then `step_px` further out each
+    /// time, `steps` places in all per side. A zero `toward` keeps the order right, left, above,
+    /// below, then the diagonals.
+    pub fn around_dot(
+        anchor: Vec3,
+        dot_px: f32,
+        toward: glam::Vec2,
+        text: &str,
+        color: Vec3,
+        priority: i32,
+        steps: usize,
+        step_px: f32,
+    ) -> Vec<Label> {
+        let mut sides = [
+            (1.0, 0.0),
+            (-1.0, 0.0),
+            (0.0, -1.0),
+            (0.0, 1.0),
+            (1.0, -1.0),
+            (-1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, 1.0),
+        ]
+        .map(|(x, y)| glam::Vec2::new(x, y));
+        let toward = toward.normalize_or_zero();
+        // A stable sort: equal scores keep the order above.
+        sides.sort_by(|a, b| {
+            let score = |s: &glam::Vec2| -s.normalize().dot(toward);
+            score(a).total_cmp(&score(b))
+        });
+        (0..steps.max(1))
+            .flat_map(|k| {
+                let out_px = k as f32 * step_px;
+                sides.map(|side| {
+                    Label::off_dot(
+                        anchor,
+                        dot_px + 2.0 * out_px,
+                        side,
+                        text.into(),
+                        color,
+                        priority,
+                    )
+                })
+            })
+            .collect()
+    }
+
     /// The label [`Frame::label_off_dot`] adds: beside a dot `dot_px` CSS pixels across at
     /// `anchor`, towards `side` on screen, [`LABEL_DOT_GAP_PX`] from the dot's edge.
     pub fn off_dot(
@@ -840,19 +918,37 @@ impl Frame {
         let out = draw(self);
         let shift = Mat4::from_translation(offset);
         let moved = |p: &mut [f32; 3]| *p = (Vec3::from(*p) + offset).to_array();
-        self.meshes[start.0..].iter_mut().for_each(|m| m.model = shift * m.model);
-        self.lines[start.1..].iter_mut().for_each(|v| moved(&mut v.position));
-        self.points[start.2..].iter_mut().for_each(|p| moved(&mut p.center));
-        self.labels[start.3..].iter_mut().for_each(|l| l.anchor += offset);
-        self.skinned[start.4..].iter_mut().for_each(|s| s.model = shift * s.model);
-        self.quads[start.5..].iter_mut().for_each(|q| q.model = shift * q.model);
-        self.sprites[start.6..].iter_mut().for_each(|s| moved(&mut s.center));
+        self.meshes[start.0..]
+            .iter_mut()
+            .for_each(|m| m.model = shift * m.model);
+        self.lines[start.1..]
+            .iter_mut()
+            .for_each(|v| moved(&mut v.position));
+        self.points[start.2..]
+            .iter_mut()
+            .for_each(|p| moved(&mut p.center));
+        self.labels[start.3..]
+            .iter_mut()
+            .for_each(|l| l.anchor += offset);
+        self.skinned[start.4..]
+            .iter_mut()
+            .for_each(|s| s.model = shift * s.model);
+        self.quads[start.5..]
+            .iter_mut()
+            .for_each(|q| q.model = shift * q.model);
+        self.sprites[start.6..]
+            .iter_mut()
+            .for_each(|s| moved(&mut s.center));
         for s in &mut self.strokes[start.7..] {
             moved(&mut s.a);
             moved(&mut s.b);
         }
-        self.markers[start.8..].iter_mut().for_each(|m| moved(&mut m.center));
-        self.keep_in_view[start.9..].iter_mut().for_each(|p| *p += offset);
+        self.markers[start.8..]
+            .iter_mut()
+            .for_each(|m| moved(&mut m.center));
+        self.keep_in_view[start.9..]
+            .iter_mut()
+            .for_each(|p| *p += offset);
         out
     }
 
@@ -1247,9 +1343,15 @@ mod tests {
             f.keep_in_view.push(Vec3::ZERO);
         });
         // The line drawn before stays; everything drawn inside moved by the offset.
-        assert_eq!(f.segments_of(palette::DARK).next(), Some((Vec3::ZERO, Vec3::X)));
+        assert_eq!(
+            f.segments_of(palette::DARK).next(),
+            Some((Vec3::ZERO, Vec3::X))
+        );
         let teal: Vec<_> = f.segments_of(palette::TEAL).collect();
-        assert_eq!(teal, vec![(offset, offset + Vec3::Y), (offset, offset + Vec3::Z)]);
+        assert_eq!(
+            teal,
+            vec![(offset, offset + Vec3::Y), (offset, offset + Vec3::Z)]
+        );
         assert_eq!(f.meshes[0].model.w_axis.truncate(), offset);
         assert_eq!(Vec3::from(f.markers[0].center), Vec3::ONE + offset);
         assert_eq!(f.labels[0].anchor, Vec3::Y + offset);
@@ -1261,16 +1363,30 @@ mod tests {
         let mut f = Frame::default();
         let titles = [("LBS", palette::ORANGE), ("DQS", palette::TEAL)];
         f.side_by_side(Vec3::new(1.5, 0.0, 0.0), &titles, 2.0, |f, k| {
-            f.mesh(MeshId::SPHERE, Mat4::from_scale(Vec3::splat(0.1 + k as f32)), palette::GREY);
+            f.mesh(
+                MeshId::SPHERE,
+                Mat4::from_scale(Vec3::splat(0.1 + k as f32)),
+                palette::GREY,
+            );
         });
         let centres: Vec<Vec3> = f.meshes.iter().map(|m| m.model.w_axis.truncate()).collect();
-        assert_eq!(centres, vec![Vec3::new(-0.75, 0.0, 0.0), Vec3::new(0.75, 0.0, 0.0)]);
+        assert_eq!(
+            centres,
+            vec![Vec3::new(-0.75, 0.0, 0.0), Vec3::new(0.75, 0.0, 0.0)]
+        );
         // Each copy got its own draw call (k), and its title over it, kept in view, placed first.
         assert!((f.meshes[1].model.x_axis.x - 1.1).abs() < 1e-6);
-        let l: Vec<_> = f.labels.iter().map(|l| (l.text.as_str(), l.anchor, l.priority)).collect();
+        let l: Vec<_> = f
+            .labels
+            .iter()
+            .map(|l| (l.text.as_str(), l.anchor, l.priority))
+            .collect();
         assert_eq!(
             l,
-            vec![("LBS", Vec3::new(-0.75, 2.0, 0.0), 1), ("DQS", Vec3::new(0.75, 2.0, 0.0), 1)]
+            vec![
+                ("LBS", Vec3::new(-0.75, 2.0, 0.0), 1),
+                ("DQS", Vec3::new(0.75, 2.0, 0.0), 1)
+            ]
         );
         assert_eq!(f.keep_in_view.len(), 2);
     }
@@ -1298,7 +1414,11 @@ mod tests {
         // Opacity never grows outwards.
         assert!((0..=20).all(|i| grid_fade(i as f32 * 0.1) >= grid_fade((i + 1) as f32 * 0.1)));
         // The lines still span the whole grid.
-        let far = f.lines.iter().map(|v| Vec3::from(v.position).x.abs()).fold(0.0, f32::max);
+        let far = f
+            .lines
+            .iter()
+            .map(|v| Vec3::from(v.position).x.abs())
+            .fold(0.0, f32::max);
         assert!((far - half).abs() < 1e-5);
     }
 

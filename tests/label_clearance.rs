@@ -1075,3 +1075,170 @@ fn lesson_13_drape_name_sits_on_the_cloth() {
         }
     }
 }
+
+/// Asserts that the labels of `frame` at `indices` are shown where the figure put them (no
+/// leader line) and keep `margin_px` off every marker's dot and every stroke's edge: a label
+/// that touches a line reads as part of it.
+fn assert_shown_clear_by(
+    name: &str,
+    frame: &Frame,
+    camera: &OrbitCamera,
+    size: Vec2,
+    indices: &[usize],
+    margin_px: f32,
+) {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
+    let placed = layout(frame, camera, size);
+    for &i in indices {
+        let (l, b, p) = &placed[i];
+        assert!(
+            p.shown && p.leader_to.is_none(),
+            "{name} on {size}: {:?} moved",
+            l.text
+        );
+        let grown = |r: f32| Rect {
+            min: p.top_left - (r + margin_px),
+            size: b.size + 2.0 * (r + margin_px),
+        };
+        for m in &frame.markers {
+            let Some(c) = at(m.center) else { continue };
+            let rect = grown(0.5 * m.size_px.abs());
+            assert!(
+                !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                "{name} on {size}: {:?} at {:?} within {margin_px} px of a dot at {c}",
+                l.text,
+                p.top_left
+            );
+        }
+        for s in &frame.strokes {
+            let (Some(a), Some(e)) = (at(s.a), at(s.b)) else {
+                continue;
+            };
+            let rect = grown(0.5 * s.width_px);
+            for k in 0..=32 {
+                let q = a.lerp(e, k as f32 / 32.0);
+                assert!(
+                    !(q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all()),
+                    "{name} on {size}: {:?} at {:?} within {margin_px} px of a line at {q} (colour {:?})",
+                    l.text,
+                    p.top_left,
+                    s.color
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_00_ndc_box_labels_keep_off_its_lines() {
+    // Figure 2's NDC box at its page camera (lessons/00-triangles-to-pixels/lesson.js), both
+    // canvases, along the point's path, for the page's point and two others: "depth 0",
+    // "depth 1", "NDC (wgpu)" and the box's "p" stay where the figure put them and keep 2 px
+    // off every line and dot (three lines meet at each corner the depth labels name, and the
+    // point's dot moves among them). As on the page, the figure places them for the view of
+    // the frame before.
+    use inbetween::figures::raster::Frustum;
+    let mut failures = Vec::new();
+    for (x, y) in [(0.6, 0.3), (0.9, 0.2), (-1.0, -0.4)] {
+        for k in 0..=10 {
+            let s = k as f32 * 0.1;
+            for size in CANVASES {
+                let mut scene = Frustum::new();
+                scene.set_offset(x, y).unwrap();
+                let mut frame = Frame::default();
+                scene.draw(&mut frame, s).unwrap();
+                let camera = page_camera([4.5, 1.2, -4.0, 17.0, 0.45, 0.45], &frame, size);
+                scene.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                scene.draw(&mut frame, s).unwrap();
+                let camera = page_camera([4.5, 1.2, -4.0, 17.0, 0.45, 0.45], &frame, size);
+                let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+                let mut checked: Vec<usize> = ["depth 0", "depth 1", "NDC (wgpu)"]
+                    .iter()
+                    .map(|t| texts.iter().position(|l| l == t).unwrap())
+                    .collect();
+                // The box's p (drawn while the point is in front of the eye) comes after the
+                // frustum's p and image.
+                let image = texts.iter().position(|l| *l == "image").unwrap();
+                checked.extend(texts.iter().rposition(|l| *l == "p").filter(|&i| i > image));
+                let name = format!("00 NDC box, point ({x}, {y}), s {s}");
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &checked, 2.0)
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_03_gimbal_axle_names_keep_off_the_rings_and_axles() {
+    // Figure 3 at its page camera (lessons/03-rotations/lesson.js), both canvases, at the page's
+    // angles, at gimbal lock both ways and at others across the sliders: each axle's name is
+    // shown where the figure put it, keeps 2 px off every line and dot, and covers no point of
+    // the three rings (drawn as meshes, sampled here as the figure builds them: yaw's ring in
+    // its x-y plane, 1.3 m; pitch's in x-z, 1.1 m; roll's in y-z, 0.9 m). As on the page, the
+    // figure places them for the view of the frame before.
+    use glam::Mat4;
+    use inbetween::figures::rotations::Gimbal;
+    let view = [0.0, 1.4, 0.0, 5.2, 0.7, 0.35];
+    let mut failures = Vec::new();
+    for [yaw, pitch, roll] in [
+        [30.0, 0.0, 20.0],
+        [30.0, 90.0, 20.0],
+        [30.0, -90.0, 20.0],
+        [-120.0, 45.0, 90.0],
+        [150.0, -30.0, -160.0],
+        [0.0, 60.0, 0.0],
+    ] {
+        for size in CANVASES {
+            let mut scene = Gimbal::new();
+            scene.set_angles_deg(yaw, pitch, roll).unwrap();
+            let camera = page_camera(view, &Frame::default(), size);
+            scene.set_view(camera, size.x, size.y);
+            let mut frame = Frame::default();
+            scene.draw(&mut frame);
+            let name = format!("03 gimbal ({yaw}, {pitch}, {roll})");
+            let names: Vec<usize> = (0..frame.labels.len())
+                .filter(|&i| frame.labels[i].text.ends_with("axle"))
+                .collect();
+            assert_eq!(names.len(), 3);
+            failures.extend(failure_of(|| {
+                assert_shown_clear_by(&name, &frame, &camera, size, &names, 2.0)
+            }));
+            // The rings.
+            let deg = std::f32::consts::PI / 180.0;
+            let outer =
+                Mat4::from_translation(Vec3::new(0.0, 1.5, 0.0)) * Mat4::from_rotation_y(yaw * deg);
+            let middle = outer * Mat4::from_rotation_x(pitch * deg);
+            let inner = middle * Mat4::from_rotation_z(roll * deg);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let boxes = label_boxes(&frame, &camera, size);
+            failures.extend(failure_of(|| {
+                for (m, u, v, r) in [
+                    (outer, Vec3::X, Vec3::Y, 1.3),
+                    (middle, Vec3::X, Vec3::Z, 1.1),
+                    (inner, Vec3::Y, Vec3::Z, 0.9),
+                ] {
+                    for k in 0..80 {
+                        let phi = k as f32 / 80.0 * std::f32::consts::TAU;
+                        let p = m.transform_point3((u * phi.cos() + v * phi.sin()) * r);
+                        let Some(c) = project_to_canvas(view_proj, size, p) else {
+                            continue;
+                        };
+                        for (text, rect) in boxes.iter().filter(|(t, _)| t.ends_with("axle")) {
+                            let inside = c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all();
+                            assert!(
+                                !inside,
+                                "{name} on {size}: {text:?} at {:?} covers a ring at {c}",
+                                rect.min
+                            );
+                        }
+                    }
+                }
+            }));
+        }
+    }
+    assert_none_failed(&failures);
+}

@@ -116,6 +116,14 @@ function makeView(canvas, reserveBottom = 0) {
     ctx.fillStyle = color;
     ctx.beginPath(); ctx.arc(px, py, r, 0, 2 * Math.PI); ctx.fill();
   };
+  /** A ball: a dot with a white rim, which sets it apart from the key and held dots under it. */
+  v.ball = (x, y, r, color) => {
+    v.dot(x, y, r, color);
+    const [px, py] = v.toPx(x, y);
+    ctx.strokeStyle = '#ffffff';
+    ctx.lineWidth = 1.5;
+    ctx.beginPath(); ctx.arc(px, py, r, 0, 2 * Math.PI); ctx.stroke();
+  };
   /** An arrow from (x0, y0) to (x1, y1), world metres, with a head of 8 px. */
   v.arrow = (x0, y0, x1, y1, color, width = 2) => {
     const [a, b] = [v.toPx(x0, y0), v.toPx(x1, y1)];
@@ -532,7 +540,9 @@ function compareFigure(id) {
     for (let i = 0; i < keys.length; i += 3) view.dot(keys[i + 1], keys[i + 2], 4, C.ink);
     for (const side of ['a', 'b']) {
       const [x, y] = schemes[side].position(tau);
-      view.dot(x, y, 7, C[side]);
+      // A's ball wider than B's, drawn first: where the two schemes agree (at the keys, and
+      // everywhere for the same scheme twice) A rings B, as its wide line shows under B's in the plot.
+      view.ball(x, y, side === 'a' ? 11 : 6, C[side]);
       const dx = side === 'a' ? -0.25 : 0.12; // A left of its ball, B right: never on top of each other
       view.text(x + dx, y + 0.12, side.toUpperCase(), C[side]);
     }

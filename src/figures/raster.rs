@@ -4,6 +4,7 @@
 
 use super::{check_samples, compare_note, failure_note, finite, format_number, in_range, palette};
 use super::{Frame, MeshId, Runner, DEFAULT_RUNNER};
+use crate::draw::Label;
 use crate::exercises::raster::material;
 use crate::exercises::run;
 use crate::mesh::MeshData;
@@ -312,6 +313,9 @@ pub struct Frustum {
     offset: Vec2,
     use_exercise: bool,
     runner: Runner,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the NDC box's
+    /// labels take places that cover none of its lines.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 impl Default for Frustum {
@@ -334,6 +338,15 @@ impl Frustum {
             offset: Vec2::new(0.6, 0.3),
             use_exercise: false,
             runner: DEFAULT_RUNNER,
+            view: None,
+        }
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the NDC box's labels are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
         }
     }
 
@@ -512,22 +525,43 @@ impl Frustum {
             frame.wide_line(box_corners[4 + k], box_corners[4 + (k + 1) % 4], FAR, w);
             frame.wide_line(box_corners[k], box_corners[4 + k], NDC_BOX, 1.5);
         }
-        frame.label_with_priority(box_corners[2], "depth 0", NEAR, 1);
-        frame.label_with_priority(box_corners[6], "depth 1", FAR, 1);
-        frame.label_with_priority(
-            NDC_ORIGIN + Vec3::new(0.0, -1.35, -1.0),
-            "NDC (wgpu)",
-            NDC_BOX,
-            2,
-        );
+        // The box's labels go where they cover none of its lines (three meet at each corner,
+        // and the point's dot moves among them) on the last frame's view, each clear of those
+        // placed before it: the point's name first, preferably above its dot, then the box's
+        // name, preferably below it, then each face's depth beside its top-right corner,
+        // preferably away from the box's centre.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let away_from_box = |corner: Vec3| {
+            let centre = ndc_to_world(Vec3::new(0.0, 0.0, 0.5));
+            view.and_then(|(view_proj, size)| {
+                let at = |p| crate::camera::project_to_canvas(view_proj, size, p);
+                Some(at(corner)? - at(centre)?)
+            })
+            .unwrap_or(Vec2::X)
+        };
         if q.clip.w > 0.0 && q.ndc.abs().max_element() < 3.0 {
-            frame.marker(ndc_to_world(q.ndc), POINT_PX, color);
-            frame.label_with_priority(
-                ndc_to_world(q.ndc) + Vec3::new(0.0, 0.22, 0.0),
-                "p",
-                color,
-                3,
-            );
+            let at = ndc_to_world(q.ndc);
+            frame.marker(at, POINT_PX, color);
+            let candidates = Label::around_dot(at, POINT_PX, -Vec2::Y, "p", color, 3, 4, 6.0);
+            frame.first_clear_label_by(view, LINE_MARGIN_PX, candidates, |_| true);
+        }
+        // A corner as a dot this wide: the label keeps LABEL_DOT_GAP_PX off its lines.
+        const CORNER_PX: f32 = 4.0 * crate::draw::CURVE_PX;
+        // The least gap between a label and a line: one that touches a line reads as part of it.
+        const LINE_MARGIN_PX: f32 = 3.0;
+        let bottom = ndc_to_world(Vec3::new(0.0, -1.0, 0.5));
+        let candidates =
+            Label::around_dot(bottom, CORNER_PX, Vec2::Y, "NDC (wgpu)", NDC_BOX, 2, 6, 8.0);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, candidates, |_| true);
+        for (corner, text, color) in [
+            (box_corners[2], "depth 0", NEAR),
+            (box_corners[6], "depth 1", FAR),
+        ] {
+            let toward = away_from_box(corner);
+            let candidates = Label::around_dot(corner, CORNER_PX, toward, text, color, 1, 4, 6.0);
+            frame.first_clear_label_by(view, LINE_MARGIN_PX, candidates, |_| true);
         }
         // The whole frustum, the point's path and the NDC box stay in view at any canvas size.
         frame.keep_in_view.push(EYE);
@@ -535,6 +569,11 @@ impl Frustum {
         frame.keep_in_view.extend(near);
         frame.keep_in_view.push(EYE + self.point_at(1.0));
         frame.keep_in_view.extend(box_corners.iter().copied());
+        // Room for the depth labels right of the box's right-hand corners, the box being the
+        // rightmost thing in the page's view.
+        frame
+            .keep_in_view
+            .extend([2, 6].map(|k| box_corners[k] + Vec3::X * 1.4));
         let d = self.distance_at(s);
         let mut note = format!(
             "Distance d = {} m: depth {} (wgpu), {} (OpenGL); the wgpu depth passes 0.5 at d = {} m. {}",

@@ -662,6 +662,9 @@ pub struct Gimbal {
     angles_rad: Vec3,
     /// How far the steady turn of [`Gimbal::pole_turn`] passes from gimbal lock.
     pole_miss_rad: f32,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the axles' names
+    /// take places that cover no line.
+    view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
 }
 
 impl Default for Gimbal {
@@ -675,8 +678,21 @@ impl Gimbal {
         Gimbal {
             angles_rad: Vec3::new(30.0, 0.0, 20.0) * DEG,
             pole_miss_rad: Self::POLE_MISS_DEG * DEG,
+            view: None,
         }
     }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the axles' names are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, glam::Vec2::new(width_px, height_px)));
+        }
+    }
+
+    /// How far from the gimbal's centre each axle's name sits, metres: past the outer ring
+    /// (1.3 m), where no ring runs under it, at the top of the stand for the yaw axle.
+    pub const AXLE_NAME_R: f32 = 1.6;
 
     /// The default distance (degrees) by which the steady turn passes the pole.
     pub const POLE_MISS_DEG: f32 = 5.0;
@@ -825,21 +841,68 @@ impl Gimbal {
             4.0,
         );
         let warn = |c: Vec3| if locked { LOCK_WARNING } else { c };
-        ring(frame, outer, Vec3::X, Vec3::Y, 1.3, warn(c_outer));
-        ring(frame, middle, Vec3::X, Vec3::Z, 1.1, warn(c_middle));
-        ring(frame, inner, Vec3::Y, Vec3::Z, 0.9, c_inner);
-        // Each ring's axle, in the colour of the ring it turns, labelled at its tip.
-        for (m, axis, len, color, name) in [
+        let rings = [
+            (outer, Vec3::X, Vec3::Y, 1.3, warn(c_outer)),
+            (middle, Vec3::X, Vec3::Z, 1.1, warn(c_middle)),
+            (inner, Vec3::Y, Vec3::Z, 0.9, c_inner),
+        ];
+        for (m, u, v, radius, color) in rings {
+            ring(frame, m, u, v, radius, color);
+        }
+        // Each ring's axle, in the colour of the ring it turns, with its bearings on the ring,
+        // and a thin line on to its name past the outer ring: the axle's tips lie on the rings,
+        // where a name would cover them.
+        let axles = [
             (base, Vec3::Y, 1.3, c_outer, "yaw axle"),
             (outer, Vec3::X, 1.1, c_middle, "pitch axle"),
             (middle, Vec3::Z, 0.9, c_inner, "roll axle"),
-        ] {
+        ];
+        for (m, axis, len, color, _) in axles {
             let a = m.transform_point3(-axis * len);
             let b = m.transform_point3(axis * len);
             frame.wide_line(a, b, color, 3.0);
+            frame.wide_line(b, m.transform_point3(axis * Self::AXLE_NAME_R), color, 1.5);
             frame.marker(a, crate::draw::DOT_PX, color);
             frame.marker(b, crate::draw::DOT_PX, color);
-            frame.label(b, name, color);
+        }
+        // Each name beside its line's end, on the side away from the centre on the last
+        // frame's view when that covers no line, dot, name or ring (first the side facing
+        // away). The rings are meshes, which the frame's own test does not see: their centre
+        // lines are sampled here, every 4.5°, and kept 4 px (about their half thickness) off.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let ring_points: Vec<glam::Vec2> = view
+            .map(|(view_proj, size)| {
+                rings
+                    .iter()
+                    .flat_map(|&(m, u, v, radius, _)| {
+                        (0..80).filter_map(move |k| {
+                            let phi = k as f32 / 80.0 * std::f32::consts::TAU;
+                            let p = m.transform_point3((u * phi.cos() + v * phi.sin()) * radius);
+                            crate::camera::project_to_canvas(view_proj, size, p)
+                        })
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        let off_the_rings = |rect: crate::draw::layout::Rect| {
+            let (lo, hi) = (rect.min - 4.0, rect.max() + 4.0);
+            ring_points
+                .iter()
+                .all(|c| !(c.cmpgt(lo).all() && c.cmplt(hi).all()))
+        };
+        for (m, axis, _, color, name) in axles {
+            let end = m.transform_point3(axis * Self::AXLE_NAME_R);
+            let toward = view
+                .and_then(|(view_proj, size)| {
+                    let at = |p| crate::camera::project_to_canvas(view_proj, size, p);
+                    Some(at(end)? - at(center)?)
+                })
+                .unwrap_or(glam::Vec2::X);
+            let candidates =
+                crate::draw::Label::around_dot(end, 4.0, toward, name, color, 0, 10, 8.0);
+            frame.first_clear_label_by(view, 2.0, candidates, off_the_rings);
         }
         draw_plane(
             frame,

@@ -114,6 +114,9 @@ impl FrustumScene {
     }
 
     pub fn draw(&mut self, viewer: &mut Viewer, s: f32) -> Result<String, JsError> {
+        // The view the NDC box's labels are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame, s).map_err(js)?;
         viewer.present()?;
         Ok(note)

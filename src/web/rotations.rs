@@ -193,6 +193,9 @@ impl GimbalScene {
     }
 
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<(), JsError> {
+        // The view the axles' names are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()
     }
