@@ -419,6 +419,17 @@ fn the_drop_draws_the_impulse_and_the_velocities_before_and_after() {
     }
     // Dropped without spin: no ω before to draw.
     assert!(!frame.labels.iter().any(|l| l.text == "ω before"));
+    // The names read: "v before" in the full blue (its arrow is faded), and ω after, whose
+    // arrow points to −x, reads leftwards from its head instead of back over it.
+    let label = |name: &str| frame.labels.iter().find(|l| l.text == name).unwrap();
+    assert_eq!(label("v before").color, palette::BLUE);
+    let omega = f.impact_details().unwrap().omega_after;
+    assert!(omega.x < 0.0, "{omega}");
+    assert!(
+        label("ω after").left,
+        "ω after reads back over its arrow's head"
+    );
+    assert!(!label("v after").left);
     let hit = *f.impact_details().unwrap();
     assert!(
         frame

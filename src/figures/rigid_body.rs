@@ -1092,28 +1092,45 @@ impl ImpulseFigure {
         let faded = |c: Vec3| c.lerp(Vec3::ONE, 0.55);
         let o = hit.centre;
         frame.marker(o, DOT_PX, palette::DARK);
+        // Each arrow with its name, the name always in the full colour: "before" says which
+        // one it is, and faded text does not read on the grid.
         let arrows = [
             (
                 hit.velocity_before * VELOCITY_SCALE,
                 faded(palette::BLUE),
+                palette::BLUE,
                 "v before",
             ),
             (
                 hit.velocity_after * VELOCITY_SCALE,
+                palette::BLUE,
                 palette::BLUE,
                 "v after",
             ),
             (
                 hit.omega_before * OMEGA_SCALE,
                 faded(palette::TEAL),
+                palette::TEAL,
                 "ω before",
             ),
-            (hit.omega_after * OMEGA_SCALE, palette::TEAL, "ω after"),
+            (
+                hit.omega_after * OMEGA_SCALE,
+                palette::TEAL,
+                palette::TEAL,
+                "ω after",
+            ),
         ];
-        for (d, color, name) in arrows {
+        for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
                 frame.arrow(o, o + d, color, 0.06);
-                frame.label(o + d + 0.04 * d.normalize(), name, color);
+                // An arrow that points left (−x; the page's camera looks along −z) gets a name
+                // that reads leftwards from its head, not back over the head.
+                let at = o + d + 0.04 * d.normalize();
+                if d.x < 0.0 {
+                    frame.label_left(at, name, text_color);
+                } else {
+                    frame.label(at, name, text_color);
+                }
             }
         }
         // The impulse pushes the box up at the corner: drawn from below the ground up to the
