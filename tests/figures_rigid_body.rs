@@ -968,6 +968,12 @@ fn the_impact_uses_the_students_impulse_and_says_what_is_not_done() {
     let note = f.draw(&mut Frame::default());
     assert!(note.contains("Not done yet: exercise 14.3"), "{note}");
     assert!(note.contains("Your normal_impulse differs"), "{note}");
+    // The wrong impulse does not bounce the corner at −e times its approach: the note says so
+    // instead of calling it that.
+    assert!(!note.contains("(−e times it"), "{note}");
+    assert!(note.contains("e = 0.500 asks for −e times it, 2.214 m/s"), "{note}");
+    let reference_note = r.draw(&mut Frame::default());
+    assert!(reference_note.contains("(−e times it, e = 0.500)"), "{reference_note}");
 }
 
 /// The times (s) at which the held-L racket's middle axis turns past horizontal, over 12 s.

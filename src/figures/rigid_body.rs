@@ -1157,16 +1157,27 @@ impl ImpulseFigure {
             ),
             None => String::new(),
         };
+        // A student's 14.4 can give another impulse: the note then says what e asks for
+        // instead of calling the result −e times the approach.
+        let asked = -e * hit.normal_before;
+        let bounce = if (hit.normal_after - asked).abs() <= 1e-3 * asked.abs().max(1e-2) {
+            format!("−e times it, e = {}", format_number(e))
+        } else {
+            format!(
+                "e = {} asks for −e times it, {} m/s: this impulse does not give that",
+                format_number(e),
+                format_number(asked)
+            )
+        };
         format!(
             "Impact at t = {} s: j = {} N s along n = +y at the contact. The contact point's \
-             normal velocity {} → {} m/s (−e times it, e = {}). v {} → {} m/s; ω {} → {} rad/s \
+             normal velocity {} → {} m/s ({bounce}). v {} → {} m/s; ω {} → {} rad/s \
              (|ω| = {}). Kinetic energy {} → {} J. After the impact the contact solver of the \
              stack figure takes the box over.{stopped}",
             format_number(hit.time_sec),
             format_number(hit.j),
             format_number(hit.normal_before),
             format_number(hit.normal_after),
-            format_number(e),
             v3(hit.velocity_before),
             v3(hit.velocity_after),
             v3(hit.omega_before),
