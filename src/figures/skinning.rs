@@ -631,8 +631,15 @@ impl CylinderFigure {
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
         let elbow = Vec3::from(self.model[1].translation);
         let rest = self.rig.mesh.positions[v].distance(self.rig.segments[1].0);
+        // With one joint at weight 1 there is no chord (none is drawn): both methods move the
+        // vertex rigidly with that joint, to K₁p.
+        let place = if w2 > 0.0 {
+            "LBS puts it on the dashed chord between K₁p and K₂p"
+        } else {
+            "one joint has it all, so LBS and DQS both put it at K₁p"
+        };
         format!(
-            "The followed vertex (ring {}, weights {} {} and {} {}): LBS puts it on the dashed chord between K₁p and K₂p, {} m from the elbow joint, DQS {} m (as in the bind pose, {} m).",
+            "The followed vertex (ring {}, weights {} {} and {} {}): {place}, {} m from the elbow joint, DQS {} m (as in the bind pose, {} m).",
             self.probe_ring,
             names[j[0] as usize],
             // Fixed decimals: a weight or distance that is zero up to float noise reads 0.000,
