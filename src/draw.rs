@@ -180,12 +180,32 @@ pub struct Label {
     /// keeps a label a fixed distance on screen from the dot it names whatever the camera's
     /// distance, where an offset in metres would shrink onto the dot ([`Frame::label_off_dot`]).
     pub offset_px: glam::Vec2,
+    /// Drawn [`LARGE_LABEL_SCALE`] times the usual size ([`Frame::label_large`]): for a short
+    /// name with subscripts (K₁p), whose subscript digits are too small to read at 0.8 rem.
+    pub large: bool,
 }
 
 /// The box the page gives a label's text (bold, 0.8 rem), CSS pixels: about 7.5 px a character
 /// and 16 px tall.
 pub fn label_size_px(text: &str) -> glam::Vec2 {
     glam::Vec2::new(7.5 * text.chars().count() as f32, 16.0)
+}
+
+/// How much bigger a large label's text is than a plain one's (1.05 rem against 0.8 rem, in
+/// `www/style.css`).
+pub const LARGE_LABEL_SCALE: f32 = 1.3125;
+
+impl Label {
+    /// The box the page gives this label's text, CSS pixels ([`label_size_px`], scaled for a
+    /// large label).
+    pub fn size_px(&self) -> glam::Vec2 {
+        let size = label_size_px(&self.text);
+        if self.large {
+            LARGE_LABEL_SCALE * size
+        } else {
+            size
+        }
+    }
 }
 
 /// The gap between a dot and a label placed off it ([`Frame::label_off_dot`]), CSS pixels.
@@ -548,6 +568,7 @@ impl Frame {
             left: false,
             priority: 0,
             offset_px: glam::Vec2::ZERO,
+            large: false,
         });
     }
 
@@ -557,7 +578,7 @@ impl Frame {
     /// frame's markers (their whole dot), its strokes (sampled along each segment), the first
     /// places of the labels the layout places before it (those of at least its priority, by
     /// [`LABELS_APART_PX`]; a lower one moves out of its way) and the frame's inset. The box is
-    /// measured as [`label_size_px`] does. For figures that choose among places for a label
+    /// measured as [`Label::size_px`] does. For figures that choose among places for a label
     /// near crowded lines; an anchor behind the camera is not clear.
     pub fn label_is_clear(&self, view_proj: Mat4, size: glam::Vec2, label: &Label) -> bool {
         self.label_is_clear_by(view_proj, size, label, 0.0)
@@ -626,6 +647,22 @@ impl Frame {
         }
     }
 
+    /// A [`Frame::label_with_priority`] whose text is [`LARGE_LABEL_SCALE`] times the usual
+    /// size: for a short name with subscripts (K₁p) that must read at 800 × 600.
+    #[inline(never)]
+    pub fn label_large(
+        &mut self,
+        anchor: Vec3,
+        text: impl Into<String>,
+        color: Vec3,
+        priority: i32,
+    ) {
+        self.label_with_priority(anchor, text, color, priority);
+        if let Some(last) = self.labels.last_mut() {
+            last.large = true;
+        }
+    }
+
     /// A text label that ends at `anchor` (it reads leftwards from there): for a label that
     /// would otherwise run into something drawn to the anchor's right.
     #[inline(never)]
@@ -637,6 +674,7 @@ impl Frame {
             left: true,
             priority: 0,
             offset_px: glam::Vec2::ZERO,
+            large: false,
         });
     }
 
@@ -702,14 +740,14 @@ impl Frame {
 impl Label {
     /// The box the page's layout first tries for this label on a `size` canvas (CSS pixels)
     /// seen through `view_proj`: [`layout::preferred`] at its anchor's projection plus its
-    /// offset, moved inside the canvas, measured as [`label_size_px`] does. `None` when the
+    /// offset, moved inside the canvas, measured as [`Label::size_px`] does. `None` when the
     /// anchor is behind the camera.
     pub fn first_place(&self, view_proj: Mat4, size: glam::Vec2) -> Option<layout::Rect> {
         let anchor =
             crate::camera::project_to_canvas(view_proj, size, self.anchor)? + self.offset_px;
         let label = layout::LabelBox {
             anchor,
-            size: label_size_px(&self.text),
+            size: self.size_px(),
             left: self.left,
             visible: true,
             priority: 0,
@@ -813,6 +851,7 @@ impl Label {
             left,
             priority,
             offset_px,
+            large: false,
         }
     }
 }
@@ -1175,6 +1214,8 @@ pub struct ScreenLabel {
     pub left: bool,
     /// As [`Label::priority`].
     pub priority: i32,
+    /// As [`Label::large`].
+    pub large: bool,
 }
 
 /// Projects labels with `view_proj` (world to clip space, depth in [0, 1]) onto a canvas of
@@ -1202,6 +1243,7 @@ pub fn project_labels(
                 css_color: palette::css(label.color),
                 left: label.left,
                 priority: label.priority,
+                large: label.large,
             }
         })
         .collect()
@@ -1460,6 +1502,7 @@ mod tests {
                     left: false,
                     priority: 0,
                     offset_px: glam::Vec2::ZERO,
+                    large: false,
                 },
                 Label {
                     anchor: cam.eye() + (cam.eye() - cam.target),
@@ -1468,6 +1511,7 @@ mod tests {
                     left: true,
                     priority: 0,
                     offset_px: glam::Vec2::ZERO,
+                    large: false,
                 },
             ],
             vp,

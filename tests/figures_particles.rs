@@ -381,7 +381,11 @@ fn bouncing_balls_never_go_through_the_floor_and_predict_their_impact() {
     let mut frame = Frame::default();
     let note = scene.draw(&mut frame, 0.0).unwrap();
     assert!(note.contains("reaches the floor in t = "), "{note}");
-    assert!(frame.labels.iter().any(|l| l.text.starts_with("floor in")));
+    let label = frame.labels.iter().find(|l| l.text.starts_with("floor in"));
+    let label = label.expect("the impact mark's label");
+    // It reads leftwards and ends clear of the ball (radius 0.08 m) that lands on the mark.
+    let mark = frame.markers.iter().find(|m| m.center[1] < 0.01).expect("the impact mark");
+    assert!(label.left && label.anchor.x < mark.center[0] - 0.1, "{label:?}");
     for k in 0..400 {
         scene.advance_to(k as f32 / 60.0).unwrap();
         for p in scene.positions() {

@@ -419,6 +419,17 @@ fn the_drop_draws_the_impulse_and_the_velocities_before_and_after() {
     }
     // Dropped without spin: no ω before to draw.
     assert!(!frame.labels.iter().any(|l| l.text == "ω before"));
+    // The names read: "v before" in the full blue (its arrow is faded), and ω after, whose
+    // arrow points to −x, reads leftwards from its head instead of back over it.
+    let label = |name: &str| frame.labels.iter().find(|l| l.text == name).unwrap();
+    assert_eq!(label("v before").color, palette::BLUE);
+    let omega = f.impact_details().unwrap().omega_after;
+    assert!(omega.x < 0.0, "{omega}");
+    assert!(
+        label("ω after").left,
+        "ω after reads back over its arrow's head"
+    );
+    assert!(!label("v after").left);
     let hit = *f.impact_details().unwrap();
     assert!(
         frame
@@ -957,6 +968,12 @@ fn the_impact_uses_the_students_impulse_and_says_what_is_not_done() {
     let note = f.draw(&mut Frame::default());
     assert!(note.contains("Not done yet: exercise 14.3"), "{note}");
     assert!(note.contains("Your normal_impulse differs"), "{note}");
+    // The wrong impulse does not bounce the corner at −e times its approach: the note says so
+    // instead of calling it that.
+    assert!(!note.contains("(−e times it"), "{note}");
+    assert!(note.contains("e = 0.500 asks for −e times it, 2.214 m/s"), "{note}");
+    let reference_note = r.draw(&mut Frame::default());
+    assert!(reference_note.contains("(−e times it, e = 0.500)"), "{reference_note}");
 }
 
 /// The times (s) at which the held-L racket's middle axis turns past horizontal, over 12 s.

@@ -695,16 +695,45 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
         )),
         "{note}"
     );
-    assert!(
-        frame.labels.iter().any(|l| l.text == "K₁p")
-            && frame.labels.iter().any(|l| l.text == "K₂p")
-    );
+    // K₁p and K₂p sit on the orange tube: large dark text, not 0.8 rem grey (whose subscript
+    // digits do not read at 800 × 600), in a box the layout measures at the large size.
+    for name in ["K₁p", "K₂p"] {
+        let label = frame.labels.iter().find(|l| l.text == name);
+        let label = label.unwrap_or_else(|| panic!("no {name} label"));
+        assert!(label.large, "{name} is not a large label");
+        assert_eq!(
+            label.color,
+            inbetween::draw::palette::DARK,
+            "{name}'s colour"
+        );
+        let plain = inbetween::draw::label_size_px(name);
+        assert!(
+            label.size_px().y > 1.3 * plain.y,
+            "{name}: {:?}",
+            label.size_px()
+        );
+    }
     // At the shoulder end one joint has it all: no chord.
     f.set_probe_ring(0).unwrap();
     let mut frame = Frame::default();
     f.draw(&mut frame, IDS).unwrap();
     let (_, [(_, w1), (_, w2)]) = f.probe();
     assert!(w1 > 0.99 && w2 < 0.01, "{w1} {w2}");
+    // Where the second weight is 0 the note names no chord (none is drawn): the far ends at
+    // the narrowest falloff.
+    f.set_falloff(0.01).unwrap();
+    let mut rigid = 0;
+    for ring in [0, 40] {
+        f.set_probe_ring(ring).unwrap();
+        let note = f.draw(&mut Frame::default(), IDS).unwrap();
+        let (_, [_, (_, w2)]) = f.probe();
+        assert_eq!(note.contains("dashed chord"), w2 > 0.0, "ring {ring}: {note}");
+        if w2 == 0.0 {
+            assert!(note.contains("LBS and DQS both put it at K₁p"), "{note}");
+            rigid += 1;
+        }
+    }
+    assert!(rigid > 0, "no ring with one joint at weight 1");
     assert!(f.set_probe_ring(41).unwrap_err().contains("vertex ring"));
 }
 

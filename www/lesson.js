@@ -481,12 +481,14 @@ function labelLayer(canvas, viewer, sizeGeneration) {
       const el = spans[i];
       el.textContent = label.text;
       el.style.color = label.color;
-      let size = sizes.get(label.text);
+      el.classList.toggle('large', Boolean(label.large));
+      const sizeKey = `${label.large ? 'L' : ''}|${label.text}`;
+      let size = sizes.get(sizeKey);
       if (!size) {
         el.hidden = false;
         const r = el.getBoundingClientRect();
         size = [r.width, r.height];
-        if (r.width > 0) sizes.set(label.text, size);
+        if (r.width > 0) sizes.set(sizeKey, size);
       }
       measured.push(...size);
     });

@@ -853,6 +853,7 @@ impl IkFigure {
             left: label.out.x < 0.0,
             priority: label.priority,
             offset_px: Vec2::ZERO,
+            large: false,
         };
         let Some((view_proj, size)) = self.view_proj() else {
             frame.labels.push(placed);
@@ -1038,6 +1039,7 @@ impl IkFigure {
                 left: out.x < 0.0,
                 priority: 0,
                 offset_px: glam::Vec2::ZERO,
+                large: false,
             });
         };
         // A side's middle and the direction across it away from the triangle, in the xy plane

@@ -1484,9 +1484,10 @@ impl BounceFigure {
                 crate::draw::StrokeStyle::dashed(2.0, 0.06, 0.04),
             );
             // Leftwards from the mark: the orange ball falls left of the sphere, and a label
-            // running right would cover it.
+            // running right would cover it. The label ends a ball's radius and a gap left of
+            // the mark, so the ball, landing on the mark, does not cover its end either.
             frame.label_left(
-                mark + Vec3::new(0.0, 0.15, 0.0),
+                mark + Vec3::new(-(BALL_RADIUS + 0.05), 0.15, 0.0),
                 format!("floor in {} s", format_number(t)),
                 palette::ORANGE,
             );

@@ -922,6 +922,7 @@ fn label_left_with_priority(
         left: true,
         priority,
         offset_px: glam::Vec2::ZERO,
+        large: false,
     });
 }
 

@@ -1092,28 +1092,45 @@ impl ImpulseFigure {
         let faded = |c: Vec3| c.lerp(Vec3::ONE, 0.55);
         let o = hit.centre;
         frame.marker(o, DOT_PX, palette::DARK);
+        // Each arrow with its name, the name always in the full colour: "before" says which
+        // one it is, and faded text does not read on the grid.
         let arrows = [
             (
                 hit.velocity_before * VELOCITY_SCALE,
                 faded(palette::BLUE),
+                palette::BLUE,
                 "v before",
             ),
             (
                 hit.velocity_after * VELOCITY_SCALE,
+                palette::BLUE,
                 palette::BLUE,
                 "v after",
             ),
             (
                 hit.omega_before * OMEGA_SCALE,
                 faded(palette::TEAL),
+                palette::TEAL,
                 "ω before",
             ),
-            (hit.omega_after * OMEGA_SCALE, palette::TEAL, "ω after"),
+            (
+                hit.omega_after * OMEGA_SCALE,
+                palette::TEAL,
+                palette::TEAL,
+                "ω after",
+            ),
         ];
-        for (d, color, name) in arrows {
+        for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
                 frame.arrow(o, o + d, color, 0.06);
-                frame.label(o + d + 0.04 * d.normalize(), name, color);
+                // An arrow that points left (−x; the page's camera looks along −z) gets a name
+                // that reads leftwards from its head, not back over the head.
+                let at = o + d + 0.04 * d.normalize();
+                if d.x < 0.0 {
+                    frame.label_left(at, name, text_color);
+                } else {
+                    frame.label(at, name, text_color);
+                }
             }
         }
         // The impulse pushes the box up at the corner: drawn from below the ground up to the
@@ -1140,16 +1157,27 @@ impl ImpulseFigure {
             ),
             None => String::new(),
         };
+        // A student's 14.4 can give another impulse: the note then says what e asks for
+        // instead of calling the result −e times the approach.
+        let asked = -e * hit.normal_before;
+        let bounce = if (hit.normal_after - asked).abs() <= 1e-3 * asked.abs().max(1e-2) {
+            format!("−e times it, e = {}", format_number(e))
+        } else {
+            format!(
+                "e = {} asks for −e times it, {} m/s: this impulse does not give that",
+                format_number(e),
+                format_number(asked)
+            )
+        };
         format!(
             "Impact at t = {} s: j = {} N s along n = +y at the contact. The contact point's \
-             normal velocity {} → {} m/s (−e times it, e = {}). v {} → {} m/s; ω {} → {} rad/s \
+             normal velocity {} → {} m/s ({bounce}). v {} → {} m/s; ω {} → {} rad/s \
              (|ω| = {}). Kinetic energy {} → {} J. After the impact the contact solver of the \
              stack figure takes the box over.{stopped}",
             format_number(hit.time_sec),
             format_number(hit.j),
             format_number(hit.normal_before),
             format_number(hit.normal_after),
-            format_number(e),
             v3(hit.velocity_before),
             v3(hit.velocity_after),
             v3(hit.omega_before),

@@ -607,7 +607,8 @@ impl CylinderFigure {
 
     /// Draws the followed vertex on the LBS tube: where each joint alone would take it (K₁p,
     /// K₂p), the chord between them, LBS's point on that chord and DQS's point; DQS's point on
-    /// the DQS tube too. Returns the note's sentence.
+    /// the DQS tube too. The two names are large and dark: they sit on the orange tube, where
+    /// grey text and 0.8 rem subscripts do not read. Returns the note's sentence.
     fn draw_probe(&self, frame: &mut Frame) -> String {
         let (v, [(k1, w1), (k2, w2)]) = self.probe();
         let names = self.rig.skeleton.names();
@@ -621,17 +622,24 @@ impl CylinderFigure {
                 crate::draw::StrokeStyle::dashed(2.0, 0.04, 0.03),
             );
             frame.marker_on_top(o + k2, 10.0, palette::GREY);
-            frame.label_with_priority(o + k2, "K₂p", palette::GREY, 1);
+            frame.label_large(o + k2, "K₂p", palette::DARK, 1);
         }
         frame.marker_on_top(o + k1, 10.0, palette::GREY);
-        frame.label_with_priority(o + k1, "K₁p", palette::GREY, 1);
+        frame.label_large(o + k1, "K₁p", palette::DARK, 1);
         frame.marker_on_top(o + dqs, 12.0, palette::TEAL);
         frame.marker_on_top(o + lbs, 12.0, palette::ORANGE);
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
         let elbow = Vec3::from(self.model[1].translation);
         let rest = self.rig.mesh.positions[v].distance(self.rig.segments[1].0);
+        // With one joint at weight 1 there is no chord (none is drawn): both methods move the
+        // vertex rigidly with that joint, to K₁p.
+        let place = if w2 > 0.0 {
+            "LBS puts it on the dashed chord between K₁p and K₂p"
+        } else {
+            "one joint has it all, so LBS and DQS both put it at K₁p"
+        };
         format!(
-            "The followed vertex (ring {}, weights {} {} and {} {}): LBS puts it on the dashed chord between K₁p and K₂p, {} m from the elbow joint, DQS {} m (as in the bind pose, {} m).",
+            "The followed vertex (ring {}, weights {} {} and {} {}): {place}, {} m from the elbow joint, DQS {} m (as in the bind pose, {} m).",
             self.probe_ring,
             names[j[0] as usize],
             // Fixed decimals: a weight or distance that is zero up to float noise reads 0.000,
@@ -1658,6 +1666,7 @@ impl SignFigure {
                 left,
                 priority: 0,
                 offset_px: glam::Vec2::ZERO,
+                large: false,
             });
         }
         frame.label(c + Vec3::new(0.45 * rr, -0.14, 0.0), "w", palette::GREY);

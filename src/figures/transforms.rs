@@ -1005,6 +1005,7 @@ impl ScaleComparison {
                 left: true,
                 priority: 1,
                 offset_px: glam::Vec2::ZERO,
+                large: false,
             });
             frame.contact_shadow(placement.transform_point3(Vec3::ZERO), 0.3);
         }
@@ -1047,6 +1048,7 @@ impl ScaleComparison {
                 left: out.z > 0.0,
                 priority: 2,
                 offset_px: glam::Vec2::ZERO,
+                large: false,
             });
         }
         frame.keep_box_in_view(

@@ -227,6 +227,7 @@ impl Viewer {
                 css_color: crate::draw::palette::css(crate::draw::palette::DARK),
                 left: false,
                 priority: i32::MAX,
+                large: false,
             });
             self.inset_title = true;
         }
@@ -301,7 +302,8 @@ impl Viewer {
         format!("{:016x}", self.last_fingerprint)
     }
 
-    /// The last presented frame's labels as JSON: `[{"x":…,"y":…,"visible":…,"text":…,"color":…}]`,
+    /// The last presented frame's labels as JSON:
+    /// `[{"x":…,"y":…,"visible":…,"left":…,"large":…,"text":…,"color":…}]`,
     /// x and y in CSS pixels from the canvas's top-left corner. The shell (`www/lesson.js`) places
     /// one HTML element per label over the canvas.
     #[wasm_bindgen(js_name = labelsJson)]
@@ -321,8 +323,8 @@ impl Viewer {
                 })
                 .collect();
             out += &format!(
-                r#"{{"x":{:.1},"y":{:.1},"visible":{},"left":{},"text":"{}","color":"{}"}}"#,
-                l.x_px, l.y_px, l.visible, l.left, text, l.css_color
+                r#"{{"x":{:.1},"y":{:.1},"visible":{},"left":{},"large":{},"text":"{}","color":"{}"}}"#,
+                l.x_px, l.y_px, l.visible, l.left, l.large, text, l.css_color
             );
         }
         out.push(']');
