@@ -483,7 +483,24 @@ impl Frustum {
             palette::DARK,
             2,
         );
-        label_left_with_priority(frame, near[3], "z_near", NEAR, 1);
+        // At a small z_near the near plane's corner sits a few pixels from the eye, and a name
+        // ending at it would butt against the eye's: then z_near's goes to the first place round
+        // the corner, up and to the left first, clear of the eye's name, the dots and the lines
+        // (on the last frame's view).
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let at_corner = crate::draw::Label {
+            anchor: near[3],
+            text: "z_near".to_string(),
+            color: NEAR,
+            left: true,
+            priority: 1,
+            offset_px: Vec2::ZERO,
+        };
+        let round_corner =
+            Label::around_dot(near[3], 0.0, Vec2::new(-1.0, -1.0), "z_near", NEAR, 1, 6, 8.0);
+        frame.first_clear_label(view, std::iter::once(at_corner).chain(round_corner));
         frame.label_with_priority(far[2], "z_far", FAR, 1);
         // The point, the ray from the eye, and where the ray crosses the near plane (the image).
         let p = self.point_at(s);
@@ -530,9 +547,6 @@ impl Frustum {
         // placed before it: the point's name first, preferably above its dot, then the box's
         // name, preferably below it, then each face's depth beside its top-right corner,
         // preferably away from the box's centre.
-        let view = self
-            .view
-            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
         let away_from_box = |corner: Vec3| {
             let centre = ndc_to_world(Vec3::new(0.0, 0.0, 0.5));
             view.and_then(|(view_proj, size)| {
