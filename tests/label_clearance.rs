@@ -1300,3 +1300,73 @@ fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbited() {
+    // Figure 3 at its page camera (lessons/00-triangles-to-pixels/lesson.js) and orbited round
+    // it (azimuths round the side view, from low to steep), both canvases, at the page's
+    // settings and with half the gap (the fighting line nearer, at 10.9 m): "eye" and "fighting from here"
+    // are shown where the figure put them, keep 2 px off every dot and line, and cover no point
+    // of the upper floor (a mesh, sampled here every half metre). As on the page, the figure
+    // places them for the view of the frame before.
+    use inbetween::figures::raster::DepthPrecision;
+    let mut failures = Vec::new();
+    for gap in [0.01, 0.005] {
+        for (yaw, pitch) in [
+            (1.2, 0.45),
+            (0.6, 0.45),
+            (0.0, 0.3),
+            (-0.6, 0.45),
+            (1.8, 0.3),
+            (2.6, 0.45),
+            (1.2, 0.9),
+            (0.3, 1.1),
+            (1.2, 0.1),
+        ] {
+            let view = [0.0, 3.0, -20.0, 30.0, yaw, pitch];
+            for size in CANVASES {
+                let mut scene = DepthPrecision::new();
+                scene.set(0.1, 1000.0, gap, 16.0).unwrap();
+                let mut frame = Frame::default();
+                scene.draw(&mut frame);
+                let camera = page_camera(view, &frame, size);
+                scene.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                scene.draw(&mut frame);
+                let camera = page_camera(view, &frame, size);
+                let name = format!("00 depth, gap {gap}, orbit ({yaw}, {pitch})");
+                let named: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| ["eye", "fighting from here"].contains(&&*frame.labels[i].text))
+                    .collect();
+                assert_eq!(named.len(), 2, "{name}");
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
+                }));
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let floor: Vec<Vec2> = (0..=4)
+                    .flat_map(|i| {
+                        (0..=80)
+                            .map(move |k| Vec3::new(-1.0 + 0.5 * i as f32, 0.0, -0.5 * k as f32))
+                    })
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let boxes = label_boxes(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    for (text, rect) in boxes
+                        .iter()
+                        .filter(|(t, _)| t == "eye" || t == "fighting from here")
+                    {
+                        for c in &floor {
+                            assert!(
+                                !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                "{name} on {size}: {text:?} at {:?} covers the floor at {c}",
+                                rect.min
+                            );
+                        }
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
