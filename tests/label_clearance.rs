@@ -1416,3 +1416,60 @@ fn lesson_05_probe_value_keeps_off_the_cell_square_and_the_arrows() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_06_selected_joint_name_keeps_off_the_path_ticks_and_bones() {
+    // Figures 1 and 2 at their page cameras (lessons/06-skeletons/lesson.js), both canvases,
+    // with each figure's starting clip, keys, interpolations and joint, across a cycle: the
+    // selected joint's name is shown where the figure put it and keeps 2 px off every dot,
+    // tick and line (the ring of path ticks round the joint's path, the bones). As on the page,
+    // the figure places it for the view of the frame before.
+    use inbetween::figures::skeleton::SkeletonFigure;
+    let mut failures = Vec::new();
+    for (clip, keys, joint, compare, yaw, pitch) in [
+        ("walk", 9.0, "thigh.L", "none", 0.5, 0.2),
+        (
+            "arm circles",
+            4.0,
+            "upper_arm.L",
+            "linear (nlerp)",
+            1.2,
+            0.15,
+        ),
+    ] {
+        for k in 0..8 {
+            let t = k as f32 * 0.15;
+            for size in CANVASES {
+                let mut scene = SkeletonFigure::new();
+                scene.set_clip(clip).unwrap();
+                scene.set_keys_per_cycle(keys).unwrap();
+                scene.set_interpolation("linear (slerp)").unwrap();
+                scene.set_compare(compare).unwrap();
+                let index = scene
+                    .skeleton()
+                    .names()
+                    .iter()
+                    .position(|n| n == joint)
+                    .unwrap();
+                scene.select(index).unwrap();
+                let view = [0.0, 0.85, 0.0, 2.5, yaw, pitch];
+                let mut frame = Frame::default();
+                scene.draw(&mut frame, t).unwrap();
+                let camera = page_camera(view, &frame, size);
+                scene.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                scene.draw(&mut frame, t).unwrap();
+                let camera = page_camera(view, &frame, size);
+                let name = format!("06 {clip}, {joint}, t {t}");
+                let named: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| frame.labels[i].text == joint)
+                    .collect();
+                assert_eq!(named.len(), 1, "{name}");
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
