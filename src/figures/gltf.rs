@@ -9,7 +9,7 @@ use crate::gltf_import::{import, ImportError, Imported};
 use crate::rigid::DualQuat;
 use crate::skeleton::{Clip, ClipCursor, Pose};
 use crate::skinning::{dual_quat_palette, skin_dqs, skin_lbs, skinning_palette, SkinWeights};
-use glam::{Affine3A, Mat4, Vec3};
+use glam::{Affine3A, Mat4, Vec2, Vec3};
 
 /// How the figure shows the mesh.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -90,6 +90,9 @@ pub struct GltfFigure {
     shown: Option<(String, String)>,
     /// Why the last file was rejected, when the last load failed (cleared by a good load).
     rejected: Option<String>,
+    /// The camera and canvas size (CSS pixels) of the last frame, which the root's name is
+    /// placed for.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 impl GltfFigure {
@@ -418,6 +421,14 @@ impl GltfFigure {
     }
 
     /// Where to aim the camera: `[x, y, z, distance]`, framing the rest pose.
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the root's name is placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
     pub fn fit(&self) -> [f32; 4] {
         match &self.character {
             Some(c) => [c.centre.x, c.centre.y, c.centre.z, 2.0 * c.size],
@@ -560,11 +571,42 @@ impl GltfFigure {
             .iter()
             .position(|&p| p < 0)
             .expect("a skeleton has a root");
-        frame.label(
-            world(&self.model[root]) + Vec3::Y * 2.0 * radius,
+        // The root's name above its ball; where a bone runs there (CesiumMan's spine rises
+        // straight up from its root), the first place round the ball clear of the bones by a
+        // few pixels on the last frame's view, to the side first.
+        let at = world(&self.model[root]);
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let first = crate::draw::Label {
+            anchor: at + Vec3::Y * 2.0 * radius,
+            text: "root".to_string(),
+            color: palette::ORANGE,
+            left: false,
+            priority: 0,
+            offset_px: Vec2::ZERO,
+            large: false,
+        };
+        // The ball's width on screen.
+        let ball_px = view.map_or(0.0, |(view_proj, size)| {
+            let px = |p| crate::camera::project_to_canvas(view_proj, size, p);
+            [Vec3::X, Vec3::Y, Vec3::Z]
+                .iter()
+                .filter_map(|&axis| Some(px(at + axis * radius)?.distance(px(at)?)))
+                .fold(0.0, f32::max)
+                * 2.0
+        });
+        let around = crate::draw::Label::around_dot(
+            at,
+            ball_px,
+            Vec2::new(1.0, 0.0),
             "root",
             palette::ORANGE,
+            0,
+            6,
+            8.0,
         );
+        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
         let dots = self.show_mesh && (!skinning || self.bind_dots);
         if dots {
             let radius = DOT_RADIUS * c.size;

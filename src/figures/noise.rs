@@ -458,11 +458,16 @@ pub struct Noise2d {
     first_panic: FirstPanic,
     dirty: bool,
     stale: bool,
+    /// The camera and canvas size (CSS pixels) of the last frame, which the probe's value is
+    /// placed for.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 /// Figure 2's terrain: `s = 2` noise cells per metre, so `u ∈ [−1, 1]` covers `x ∈ [−2, 2]`.
 const FIG2_S: f32 = 2.0;
 const FIG2_H: f32 = 0.6;
+/// The radius of Figure 2's probe dot, metres.
+const PROBE_RADIUS: f32 = 0.03;
 
 impl Noise2d {
     pub fn new() -> Self {
@@ -476,6 +481,7 @@ impl Noise2d {
             first_panic: FirstPanic::default(),
             dirty: true,
             stale: false,
+            view: None,
         };
         s.regenerate();
         s
@@ -534,6 +540,13 @@ impl Noise2d {
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
         self.first_panic.clear();
+    }
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the probe's value is placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     fn world(&self, p: Vec2, value: f32) -> Vec3 {
@@ -649,13 +662,36 @@ impl Noise2d {
         frame.wide_polyline(&outline, palette::PURPLE, GUIDE_PX);
         let value = self.probe_value();
         let at = self.world(self.probe, value);
-        frame.point(at, 0.03, palette::PINK);
+        frame.point(at, PROBE_RADIUS, palette::PINK);
         frame.wide_line(self.world(self.probe, 0.0), at, palette::PINK, GUIDE_PX);
-        frame.label(
-            at + Vec3::Y * 0.12,
-            format!("n = {}", format_number(value)),
-            palette::PINK,
-        );
+        // The value above the probe's dot; where the cell's square, the sticks or the arrows
+        // run there (on the last frame's view), the first place round the dot clear of them,
+        // above it first.
+        let text = format!("n = {}", format_number(value));
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let first = crate::draw::Label {
+            anchor: at + Vec3::Y * 0.12,
+            text: text.clone(),
+            color: palette::PINK,
+            left: false,
+            priority: 0,
+            offset_px: Vec2::ZERO,
+            large: false,
+        };
+        // The dot's width on screen: the most a radius along any axis spans there.
+        let dot_px = view.map_or(0.0, |(view_proj, size)| {
+            let px = |p| crate::camera::project_to_canvas(view_proj, size, p);
+            [Vec3::X, Vec3::Y, Vec3::Z]
+                .iter()
+                .filter_map(|&axis| Some(px(at + axis * PROBE_RADIUS)?.distance(px(at)?)))
+                .fold(0.0, f32::max)
+                * 2.0
+        });
+        let around =
+            crate::draw::Label::around_dot(at, dot_px, -Vec2::Y, &text, palette::PINK, 0, 6, 8.0);
+        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
         let mut note = format!(
             "Probe ({}, {}) in cell [{}, {}] × [{}, {}]: n = {}.",
             format_number(self.probe.x),

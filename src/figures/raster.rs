@@ -483,7 +483,33 @@ impl Frustum {
             palette::DARK,
             2,
         );
-        label_left_with_priority(frame, near[3], "z_near", NEAR, 1);
+        // At a small z_near the near plane's corner sits a few pixels from the eye, and a name
+        // ending at it would butt against the eye's: then z_near's goes to the first place round
+        // the corner, up and to the left first, clear of the eye's name, the dots and the lines
+        // (on the last frame's view).
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let at_corner = crate::draw::Label {
+            anchor: near[3],
+            text: "z_near".to_string(),
+            color: NEAR,
+            left: true,
+            priority: 1,
+            offset_px: Vec2::ZERO,
+            large: false,
+        };
+        let round_corner = Label::around_dot(
+            near[3],
+            0.0,
+            Vec2::new(-1.0, -1.0),
+            "z_near",
+            NEAR,
+            1,
+            6,
+            8.0,
+        );
+        frame.first_clear_label(view, std::iter::once(at_corner).chain(round_corner));
         frame.label_with_priority(far[2], "z_far", FAR, 1);
         // The point, the ray from the eye, and where the ray crosses the near plane (the image).
         let p = self.point_at(s);
@@ -530,9 +556,6 @@ impl Frustum {
         // placed before it: the point's name first, preferably above its dot, then the box's
         // name, preferably below it, then each face's depth beside its top-right corner,
         // preferably away from the box's centre.
-        let view = self
-            .view
-            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
         let away_from_box = |corner: Vec3| {
             let centre = ndc_to_world(Vec3::new(0.0, 0.0, 0.5));
             view.and_then(|(view_proj, size)| {
@@ -671,6 +694,9 @@ pub struct DepthPrecision {
     far: f32,
     gap: f32,
     bits: u32,
+    /// The camera and canvas size (CSS pixels) of the last frame, which the eye's and the
+    /// fighting line's names are placed for.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 impl Default for DepthPrecision {
@@ -695,7 +721,34 @@ impl DepthPrecision {
             far: 1000.0,
             gap: 0.01,
             bits: 16,
+            view: None,
         }
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the eye's and the fighting line's names are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
+    /// Whether a label's box (CSS pixels) on the last frame's view covers none of the upper
+    /// floor (sampled every half metre across and along it, out to `reach`), which the frame
+    /// draws as a mesh.
+    fn off_the_floor(&self, reach: f32, rect: crate::draw::layout::Rect) -> bool {
+        let Some((camera, size)) = self.view else {
+            return true;
+        };
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let along = (2.0 * reach).ceil() as usize;
+        (0..=4).all(|i| {
+            (0..=along).all(|k| {
+                let p = Vec3::new(-1.0 + 0.5 * i as f32, 0.0, -reach * k as f32 / along as f32);
+                crate::camera::project_to_canvas(view_proj, size, p)
+                    .is_none_or(|c| !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()))
+            })
+        })
     }
 
     /// z_near in [0.01, 10] m, z_far in (z_near, 10⁵] m, the gap in [10⁻⁴, 1] m, 16 or 24 bits.
@@ -832,6 +885,12 @@ impl DepthPrecision {
     pub fn draw(&self, frame: &mut Frame) -> String {
         let reach = self.far.min(40.0);
         let eye = Vec3::new(0.0, EYE_HEIGHT, 0.0);
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        // The least gap between a label and a line or dot: one that touches a line reads as
+        // part of it.
+        const LINE_MARGIN_PX: f32 = 3.0;
         let slab = |y: f32, color: Vec3, frame: &mut Frame| {
             let model = Mat4::from_translation(Vec3::new(0.0, y - 0.005, -reach / 2.0))
                 * Mat4::from_scale(Vec3::new(1.0, 0.005, reach / 2.0));
@@ -840,7 +899,6 @@ impl DepthPrecision {
         slab(0.0, UPPER_PLANE, frame);
         slab(-self.gap, LOWER_PLANE, frame);
         frame.marker(eye, 14.0, palette::DARK);
-        frame.label_with_priority(eye + Vec3::Y * 1.0, "eye", palette::DARK, 2);
         let (sin_p, cos_p) = PITCH.sin_cos();
         let axis = Vec3::new(0.0, -sin_p, -cos_p);
         let to_ground = EYE_HEIGHT / sin_p;
@@ -884,14 +942,46 @@ impl DepthPrecision {
                 palette::ORANGE,
                 crate::draw::StrokeStyle::dashed(2.5, 0.3, 0.2),
             );
-            // Leftwards: to its right the orange bars rise to their dots.
-            frame.label_left(
-                Vec3::new(1.1, 7.1, -from),
-                "fighting from here",
-                palette::ORANGE,
+            // Leftwards of the dashed line's top (to its right the orange bars rise to their
+            // dots) at the page's camera; once the camera is orbited, the first place round the
+            // top that covers no dot, line or floor.
+            let top = Vec3::new(1.1, 6.8, -from);
+            let first = crate::draw::Label {
+                anchor: Vec3::new(1.1, 7.1, -from),
+                text: "fighting from here".to_string(),
+                color: palette::ORANGE,
+                left: true,
+                priority: 3,
+                offset_px: Vec2::ZERO,
+                large: false,
+            };
+            let around =
+                Label::around_dot(top, 0.0, -Vec2::Y, &first.text, first.color, 3, 6, 10.0);
+            frame.first_clear_label_by(
+                view,
+                LINE_MARGIN_PX,
+                std::iter::once(first).chain(around),
+                |rect| self.off_the_floor(reach, rect),
             );
-            frame.labels.last_mut().expect("just added").priority = 3;
         }
+        // The eye's name above its dot at the page's camera; once orbited, the first place round
+        // the dot that covers no dot, line, floor or the fighting line's name.
+        let first = crate::draw::Label {
+            anchor: eye + Vec3::Y * 1.0,
+            text: "eye".to_string(),
+            color: palette::DARK,
+            left: false,
+            priority: 2,
+            offset_px: Vec2::ZERO,
+            large: false,
+        };
+        let around = Label::around_dot(eye, 14.0, -Vec2::Y, "eye", palette::DARK, 2, 6, 10.0);
+        frame.first_clear_label_by(
+            view,
+            LINE_MARGIN_PX,
+            std::iter::once(first).chain(around),
+            |rect| self.off_the_floor(reach, rect),
+        );
         frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 7.2, 0.5));
         format!(
             "z_far / z_near = {}. With {} bits, one depth step is worth {} m at 1 m, {} m at 10 m and {} m at \

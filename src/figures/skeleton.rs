@@ -37,6 +37,9 @@ const JOINT_RADIUS: f32 = 0.022;
 /// when two paths are compared, metres.
 const PATH_TICK_PX: f32 = 14.0;
 const TICK_OFFSET_M: f32 = 0.025;
+/// The width round the selected joint (its ball and the root of its axes) that its name keeps
+/// clear of, CSS pixels.
+const NAME_CLEAR_PX: f32 = 14.0;
 /// A joint can be picked this many CSS pixels from its centre, however small it is drawn.
 const PICK_RADIUS_PX: f32 = 10.0;
 /// Where the crossfade's two clips stand beside the blend, metres along x (A left, B right).
@@ -81,6 +84,9 @@ pub struct SkeletonFigure {
     sources: [Vec<Affine3A>; 2],
     /// The box every joint stays in over one cycle, with the current settings.
     bounds: (Vec3, Vec3),
+    /// The camera and canvas size (CSS pixels) of the last frame, which the selected joint's
+    /// name is placed for.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 impl Default for SkeletonFigure {
@@ -127,6 +133,7 @@ impl SkeletonFigure {
             compare_trail: Vec::with_capacity(TRAIL_DOTS + 1),
             sources: [Vec::new(), Vec::new()],
             bounds: (Vec3::ZERO, Vec3::ZERO),
+            view: None,
             skeleton,
             shapes,
         };
@@ -270,6 +277,14 @@ impl SkeletonFigure {
     }
 
     /// Selects the joint drawn in orange (its group in teal) whose angles the sliders edit.
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the selected joint's name is placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
     pub fn select(&mut self, joint: usize) -> Result<(), String> {
         self.selected = self.joint(joint)?;
         Ok(())
@@ -897,7 +912,8 @@ impl SkeletonFigure {
                     }
                     if focus {
                         // The selected joint's group (the part that turns) and its paths.
-                        let group = self.selected..self.selected + self.skeleton.group_sizes()[self.selected];
+                        let group = self.selected
+                            ..self.selected + self.skeleton.group_sizes()[self.selected];
                         focus_box.0 = focus_box.0.min(tip);
                         focus_box.1 = focus_box.1.max(tip);
                         for m in &model[group] {
@@ -1077,12 +1093,6 @@ impl SkeletonFigure {
         // Its axes without their letters: at this size the x, y and z would crowd the joint's
         // name (the world's axes at the feet carry the letters, the caption the colours).
         frame.axes(selected, 0.18);
-        let p = selected.w_axis.truncate();
-        frame.label(
-            p + Vec3::new(0.05, 0.05, 0.0),
-            self.skeleton.names()[self.selected].clone(),
-            palette::ORANGE,
-        );
         let main_step = self.interpolation == KeyInterpolation::Step;
         let compare_step = matches!(self.compare, Some((KeyInterpolation::Step, _)));
         // While comparing, the two paths often lie on one another: the purple ticks go just
@@ -1093,8 +1103,50 @@ impl SkeletonFigure {
         } else {
             (0.0, 0.0)
         };
-        draw_path(frame, &self.trail, palette::PURPLE, main_step, pivot, outside);
-        draw_path(frame, &self.compare_trail, palette::BLUE, compare_step, pivot, inside);
+        draw_path(
+            frame,
+            &self.trail,
+            palette::PURPLE,
+            main_step,
+            pivot,
+            outside,
+        );
+        draw_path(
+            frame,
+            &self.compare_trail,
+            palette::BLUE,
+            compare_step,
+            pivot,
+            inside,
+        );
+        // The joint's name up and to the right of it; where the ring of path ticks or a bone
+        // runs there (on the last frame's view), the first place round the joint clear of them
+        // by a few pixels, up and to the right first.
+        let p = selected.w_axis.truncate();
+        let name = self.skeleton.names()[self.selected].clone();
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let first = crate::draw::Label {
+            anchor: p + Vec3::new(0.05, 0.05, 0.0),
+            text: name.clone(),
+            color: palette::ORANGE,
+            left: false,
+            priority: 0,
+            offset_px: Vec2::ZERO,
+            large: false,
+        };
+        let around = crate::draw::Label::around_dot(
+            p,
+            NAME_CLEAR_PX,
+            Vec2::new(1.0, -1.0),
+            &name,
+            palette::ORANGE,
+            0,
+            8,
+            8.0,
+        );
+        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
         // The crossfade's two clips alone, beside the blend.
         let source_names = [
             self.clip_name(),

@@ -168,6 +168,9 @@ impl GltfScene {
             } else {
                 &[]
             };
+        // The view the root's name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw_with(

@@ -169,6 +169,9 @@ impl Noise2dScene {
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let mesh = self.gpu.sync(viewer, &mut self.scene)?[0];
+        // The view the probe's value is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame, mesh);
         viewer.present()?;
         Ok(note)

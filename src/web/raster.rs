@@ -170,6 +170,9 @@ impl DepthPrecisionScene {
     }
 
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the eye's and the fighting line's names are placed for (the last frame's).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)

@@ -178,6 +178,9 @@ impl SkeletonScene {
     /// Poses at `time_sec` and draws. Returns the note for the page.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         self.camera = Some(viewer.camera);
+        // The view the selected joint's name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, time_sec)
