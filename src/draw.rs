@@ -1203,8 +1203,12 @@ pub fn grid_fade(r: f32) -> f32 {
 /// A label placed on screen: CSS pixels from the canvas's top-left corner.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ScreenLabel {
+    /// Where the layout starts from: the anchor's projection plus the label's offset.
     pub x_px: f32,
     pub y_px: f32,
+    /// The anchor's own projection (CSS pixels): the point the label names, where a leader line
+    /// starts ([`layout::leader`]).
+    pub dot_px: glam::Vec2,
     /// False when the anchor is behind the camera or outside the view.
     pub visible: bool,
     pub text: String,
@@ -1235,9 +1239,14 @@ pub fn project_labels(
                 && ndc.x.abs() <= 1.05
                 && ndc.y.abs() <= 1.05
                 && (0.0..=1.0).contains(&ndc.z);
+            let dot_px = glam::Vec2::new(
+                (ndc.x * 0.5 + 0.5) * width_px,
+                (0.5 - ndc.y * 0.5) * height_px,
+            );
             ScreenLabel {
-                x_px: (ndc.x * 0.5 + 0.5) * width_px + label.offset_px.x,
-                y_px: (0.5 - ndc.y * 0.5) * height_px + label.offset_px.y,
+                x_px: dot_px.x + label.offset_px.x,
+                y_px: dot_px.y + label.offset_px.y,
+                dot_px,
                 visible,
                 text: label.text.clone(),
                 css_color: palette::css(label.color),

@@ -183,3 +183,58 @@ proptest! {
         }
     }
 }
+
+/// The canvas and view the leader-line tests use: the project's orbit camera, 5 m from the origin.
+fn leader_view() -> (glam::Mat4, Vec2) {
+    let canvas = Vec2::new(800.0, 600.0);
+    let camera = inbetween::camera::OrbitCamera::from_view([0.0, 0.0, 0.0, 5.0, 0.3, 0.2]);
+    (camera.projection(canvas.x / canvas.y) * camera.view(), canvas)
+}
+
+#[test]
+fn a_name_just_off_its_dot_gets_no_leader_line_and_one_moved_out_gets_one_to_its_box() {
+    use inbetween::draw::{layout::leader, project_labels, Label};
+    let (view_proj, canvas) = leader_view();
+    let anchor = glam::Vec3::new(0.3, -0.2, 0.5);
+    for dot_px in [0.0, 4.0, 8.0, 14.0, 16.0] {
+        // Eight sides at the dot's gap, then six places further out by 10 px each.
+        let candidates = Label::around_dot(anchor, dot_px, Vec2::ZERO, "name", glam::Vec3::ONE, 0, 7, 10.0);
+        let screen = project_labels(&candidates, view_proj, canvas.x, canvas.y);
+        let dot = screen[0].dot_px;
+        for (k, (label, s)) in candidates.iter().zip(&screen).enumerate() {
+            assert_eq!(s.dot_px, dot, "every candidate names the same point");
+            let rect = label.first_place(view_proj, canvas).unwrap();
+            let gap = rect.nearest(dot).distance(dot);
+            let line = leader(rect, dot, false);
+            if k < 8 {
+                // The first ring: just off the dot, as the figures place a name first.
+                assert!(line.is_none(), "dot {dot_px} px, side {k}: {gap} px away, leader {line:?}");
+            }
+            match line {
+                Some(end) => {
+                    assert!(gap > inbetween::draw::layout::LEADER_PX);
+                    assert!(end.distance(rect.nearest(dot)) < 1e-4, "the line ends on the box");
+                }
+                None => assert!(gap <= inbetween::draw::layout::LEADER_PX),
+            }
+        }
+        // The outermost ring is 60 px further out: every one of its places is led back.
+        assert!(candidates[48..]
+            .iter()
+            .all(|l| leader(l.first_place(view_proj, canvas).unwrap(), dot, false).is_some()));
+    }
+}
+
+#[test]
+fn a_label_the_layout_moved_off_its_dot_gets_a_leader_line_unless_it_still_touches_the_dot() {
+    use inbetween::draw::layout::{leader, GAP_PX};
+    let dot = Vec2::new(100.0, 100.0);
+    let size = Vec2::new(40.0, 16.0);
+    // Moved to just below the dot, touching it: no line; moved 12 px off: a line.
+    let touching = Rect { min: Vec2::new(80.0, 100.0 + GAP_PX), size };
+    assert!(leader(touching, dot, true).is_none());
+    assert!(leader(touching, dot, false).is_none());
+    let off = Rect { min: Vec2::new(80.0, 112.0), size };
+    assert_eq!(leader(off, dot, true), Some(Vec2::new(100.0, 112.0)));
+    assert!(leader(off, dot, false).is_none(), "12 px, where the figure put it: no line");
+}

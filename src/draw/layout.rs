@@ -20,6 +20,11 @@ pub const PAD_PX: f32 = 2.0;
 pub const EDGE_PX: f32 = 4.0;
 /// How far from its anchor a label may be nudged, in label heights.
 const MAX_RINGS: usize = 5;
+/// A label whose box ends further than this from the point it names (CSS pixels) gets a leader
+/// line back to it, even where the figure put it there on purpose: beyond about a label's height
+/// the eye no longer pairs a name with its dot. A name just off a dot (half the dot's size plus a
+/// few pixels, at most 12 px for the largest dots the figures draw) gets none.
+pub const LEADER_PX: f32 = 20.0;
 
 /// One label to place: its anchor on the canvas (CSS pixels from the top-left), its box's size,
 /// whether it reads leftwards from the anchor, whether its anchor is in view, and its priority.
@@ -114,6 +119,16 @@ pub fn inside(top_left: Vec2, size: Vec2, canvas: Vec2) -> Vec2 {
     top_left
         .min(canvas - size - Vec2::splat(EDGE_PX))
         .max(Vec2::splat(EDGE_PX))
+}
+
+/// Where a leader line from `dot` (the projection of the point a label names) ends on the
+/// label's placed box `rect`, if it needs one: when the box ends more than [`LEADER_PX`] from the
+/// dot, or when the layout `moved` the label from its first place and the box is not touching
+/// the dot. The line ends at the box's point nearest the dot.
+pub fn leader(rect: Rect, dot: Vec2, moved: bool) -> Option<Vec2> {
+    let near = rect.nearest(dot);
+    let d = near.distance(dot);
+    (d > LEADER_PX || (moved && d > GAP_PX + 2.0)).then_some(near)
 }
 
 /// Places `labels` on a canvas of `canvas` CSS pixels (see the module's description). Labels

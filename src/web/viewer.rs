@@ -222,6 +222,7 @@ impl Viewer {
             self.labels.push(crate::draw::ScreenLabel {
                 x_px: at.x,
                 y_px: at.y,
+                dot_px: at,
                 visible: true,
                 text: inset.title.clone(),
                 css_color: crate::draw::palette::css(crate::draw::palette::DARK),
@@ -377,7 +378,7 @@ impl Viewer {
             place(&boxes, canvas)
         };
         let mut out = String::from("[");
-        for (i, (p, b)) in placements.iter().zip(&boxes).enumerate() {
+        for (i, ((p, b), l)) in placements.iter().zip(&boxes).zip(&self.labels).enumerate() {
             if i > 0 {
                 out.push(',');
             }
@@ -385,10 +386,15 @@ impl Viewer {
                 r#"{{"shown":{},"x":{:.1},"y":{:.1}"#,
                 p.shown, p.top_left.x, p.top_left.y
             );
-            if let Some(t) = p.leader_to.filter(|_| p.shown) {
+            let rect = crate::draw::layout::Rect {
+                min: p.top_left,
+                size: b.size,
+            };
+            let leader = p.shown.then(|| crate::draw::layout::leader(rect, l.dot_px, p.leader_to.is_some()));
+            if let Some(t) = leader.flatten() {
                 out += &format!(
                     r#","lx":{:.1},"ly":{:.1},"tx":{:.1},"ty":{:.1}"#,
-                    b.anchor.x, b.anchor.y, t.x, t.y
+                    l.dot_px.x, l.dot_px.y, t.x, t.y
                 );
             }
             out.push('}');
