@@ -6,7 +6,7 @@
 //!
 //! Each iteration steps a copy of the same flock (the copy is not timed).
 //!
-//! `cargo bench --bench boids -- --warm-up-time 1 --measurement-time 2`
+//! `cargo bench --features native-bench --bench boids -- --warm-up-time 1 --measurement-time 2`
 //! Criterion reports boids per second; compare grid and naive at the same N.
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};

@@ -3,7 +3,7 @@
 //! with mass-spring and with XPBD ([`inbetween::cloth::benchmark_cloth`], the same cloth as the
 //! browser bench page). Each iteration steps a copy of the same state (the copy is not timed).
 //!
-//! `cargo bench --bench cloth -- --warm-up-time 1 --measurement-time 2`
+//! `cargo bench --features native-bench --bench cloth -- --warm-up-time 1 --measurement-time 2`
 //! Criterion reports frames per second (one element = one frame of 10 substeps).
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};

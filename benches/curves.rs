@@ -1,7 +1,7 @@
 //! Sampling a 100-key `Vec3` track 10⁶ times: in increasing time order with a cursor, and at
 //! random times with a binary search per sample; linear and Catmull-Rom.
 //!
-//! `cargo bench --bench curves -- --warm-up-time 1 --measurement-time 2`
+//! `cargo bench --features native-bench --bench curves -- --warm-up-time 1 --measurement-time 2`
 //! Criterion reports the throughput in samples (elements) per second.
 
 use std::hint::black_box;

@@ -4,7 +4,7 @@
 //! neighbour search alone at 10,000 particles with the grid and with every pair tested. Each
 //! iteration steps a copy of the same state (the copy is not timed).
 //!
-//! `cargo bench --bench fluid -- --warm-up-time 1 --measurement-time 3`
+//! `cargo bench --features native-bench --bench fluid -- --warm-up-time 1 --measurement-time 3`
 //! Criterion reports steps per second (one element = one step).
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};

@@ -10,10 +10,10 @@
 //!
 //! The two libraries' 2D noises are different functions (ours is Perlin's 3D reference on z = 0,
 //! theirs a 2D variant); both cost one hash and four gradient ramps per sample.
-//! Run: `cargo bench --bench perlin -- --warm-up-time 1 --measurement-time 2`.
+//! Run: `cargo bench --features native-bench --bench perlin -- --warm-up-time 1 --measurement-time 2`.
 //! After criterion's report, the ratios are printed from a short separate timing, then the
 //! scattered-point batches and the fast fractal sums against simdnoise's SSE2 functions and
-//! FastNoise Lite, interleaved (`cargo bench --bench perlin -- --batch-only`: those alone).
+//! FastNoise Lite, interleaved (`cargo bench --features native-bench --bench perlin -- --batch-only`: those alone).
 
 use std::hint::black_box;
 use std::time::Instant;

@@ -2,7 +2,7 @@
 //! one second ([`inbetween::rigid_body::contact::heap`]), with the grid broad phase and with
 //! every pair tested. Each iteration steps a copy of the same state (the copy is not timed).
 //!
-//! `cargo bench --bench rigid_body -- --warm-up-time 1 --measurement-time 3`
+//! `cargo bench --features native-bench --bench rigid_body -- --warm-up-time 1 --measurement-time 3`
 //! Criterion reports steps per second (one element = one step).
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};

@@ -3,7 +3,7 @@
 //! - one rigid motion applied to 1e6 points, factored (rotation matrix + translation computed
 //!   once) vs the naive per-point dual quaternion sandwich (`rigid_1e6_points`).
 //!
-//! Run: `cargo bench --bench rotation -- --warm-up-time 1 --measurement-time 2`.
+//! Run: `cargo bench --features native-bench --bench rotation -- --warm-up-time 1 --measurement-time 2`.
 //! After criterion's report, the ratios are printed from a short separate timing.
 
 use std::hint::black_box;

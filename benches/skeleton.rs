@@ -3,7 +3,7 @@
 //! against the straightforward per-channel `Track` sampling of the editable [`RawClip`], in the
 //! same run. Also each half alone, and slerp instead of nlerp.
 //!
-//! `cargo bench --bench skeleton -- --warm-up-time 1 --measurement-time 3`
+//! `cargo bench --features native-bench --bench skeleton -- --warm-up-time 1 --measurement-time 3`
 //! Criterion reports joints per second (elements = joints × frames).
 
 use std::hint::black_box;

@@ -4,7 +4,7 @@
 //! quaternion skinning (with and without turning the palette into dual quaternions), each also
 //! with the portable kernel (the one wasm runs), and LBS of positions only, in the same run.
 //!
-//! `cargo bench --bench skinning -- --warm-up-time 1 --measurement-time 2`
+//! `cargo bench --features native-bench --bench skinning -- --warm-up-time 1 --measurement-time 2`
 //! Criterion reports vertices per second.
 
 use std::hint::black_box;

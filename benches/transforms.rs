@@ -1,6 +1,6 @@
 //! Forward kinematics throughput: world matrices of a hierarchy, as the lesson computes them.
 //!
-//! Run: `cargo bench --bench transforms`. Compare within one run: `world_matrices` against a
+//! Run: `cargo bench --features native-bench --bench transforms`. Compare within one run: `world_matrices` against a
 //! baseline that only copies the local matrices (the memory traffic with no arithmetic).
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use glam::{Mat4, Vec3};
