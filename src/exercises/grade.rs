@@ -275,8 +275,8 @@ fn replayed<I: Args<N>, const N: usize>(
 }
 
 /// The `student-bugs` build's mistakes, in the grader as in the figures (see
-/// `run::student_bugs`): slerp panics, the Rodrigues matrix comes out transposed, and in the
-/// browser `polar_step` never returns (the page's time limit must stop it; natively it is left
+/// `run::student_bugs`): slerp panics, the Rodrigues matrix comes out transposed, the middle
+/// vertex normal is reversed, and in the browser `polar_step` never returns (the page's time limit must stop it; natively it is left
 /// alone, since nothing could stop it there).
 #[cfg(feature = "student-bugs")]
 fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O> {
@@ -290,6 +290,12 @@ fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O>
             if let Some(Ok(m)) = (&mut answer as &mut dyn Any).downcast_mut::<Answer<glam::Mat3>>()
             {
                 *m = m.transpose();
+            }
+        }
+        "vertex_normals" => {
+            let normals = (&mut answer as &mut dyn Any).downcast_mut::<Answer<Vec<glam::Vec3>>>();
+            if let Some(Ok(normals)) = normals {
+                super::run::reverse_middle_normal(normals);
             }
         }
         #[cfg(target_arch = "wasm32")]
@@ -847,5 +853,15 @@ mod tests {
             .unwrap_or("")
             .starts_with("src/exercises/run.rs:"));
         assert!(matches!(status("rodrigues_matrix"), Status::Wrong { .. }));
+        // Lesson 00's vertex normals: the middle one of the first mesh (the tetrahedron's four)
+        // is reversed, and the report says which.
+        let rows = grade_selected("00").unwrap();
+        let normals = rows.iter().find(|r| r.exercise == "vertex_normals").unwrap();
+        let Status::Wrong { case, list, .. } = &normals.status else {
+            panic!("vertex_normals: {:?}", normals.status);
+        };
+        assert_eq!(*case, 1);
+        let list = list.as_deref().unwrap_or("");
+        assert!(list.starts_with("index 2 first, 1 of 4 elements in all: expected Vec3("), "{list}");
     }
 }
