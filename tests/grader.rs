@@ -289,8 +289,14 @@ mod the_grader_itself {
             Some("index 17 first, 2 of 40 elements in all: expected 17.0, actual -1.0")
         );
         // The long lists show the elements round index 17 and how many are left out.
-        assert_eq!(expected, "[… 15 before, 15.0, 16.0, 17.0, 18.0, 19.0, … 20 after]");
-        assert_eq!(actual, "[… 15 before, 15.0, 16.0, -1.0, 18.0, 19.0, … 20 after]");
+        assert_eq!(
+            expected,
+            "[… 15 before, 15.0, 16.0, 17.0, 18.0, 19.0, … 20 after]"
+        );
+        assert_eq!(
+            actual,
+            "[… 15 before, 15.0, 16.0, -1.0, 18.0, 19.0, … 20 after]"
+        );
         let shown = report.status.to_string();
         let lines = "\n      wrong:    index 17 first, 2 of 40 elements in all: expected 17.0, \
                      actual -1.0\n      expected: [… 15 before, 15.0,";

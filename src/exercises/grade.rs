@@ -856,12 +856,18 @@ mod tests {
         // Lesson 00's vertex normals: the middle one of the first mesh (the tetrahedron's four)
         // is reversed, and the report says which.
         let rows = grade_selected("00").unwrap();
-        let normals = rows.iter().find(|r| r.exercise == "vertex_normals").unwrap();
+        let normals = rows
+            .iter()
+            .find(|r| r.exercise == "vertex_normals")
+            .unwrap();
         let Status::Wrong { case, list, .. } = &normals.status else {
             panic!("vertex_normals: {:?}", normals.status);
         };
         assert_eq!(*case, 1);
         let list = list.as_deref().unwrap_or("");
-        assert!(list.starts_with("index 2 first, 1 of 4 elements in all: expected Vec3("), "{list}");
+        assert!(
+            list.starts_with("index 2 first, 1 of 4 elements in all: expected Vec3("),
+            "{list}"
+        );
     }
 }
