@@ -186,7 +186,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         ),
         ("a sphere: close to the radial direction", (sp, si)),
         (
-            "a big and a tiny triangle: the sum weighs by area",
+            "a big and a tiny triangle: each counts once, whatever its area",
             (fan, fan_idx),
         ),
         (
