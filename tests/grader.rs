@@ -202,6 +202,7 @@ mod the_grader_itself {
                 case: 2,
                 what: "random input".into(),
                 input: vec![("x", "2".into())],
+                list: None,
                 expected: "2".into(),
                 actual: "0".into()
             }
@@ -240,6 +241,125 @@ mod the_grader_itself {
             "\n      input:    times = {long:?}\n                t = 2.0\n      expected: 1\n"
         );
         assert!(shown.contains(&expected), "{shown}");
+    }
+
+    /// The lists `0.0, 1.0, …` of `n` elements: the reference of the list tests below.
+    fn count_to(&n: &usize) -> Vec<f32> {
+        (0..n).map(|i| i as f32).collect()
+    }
+
+    fn within_1e4(a: &f32, b: &f32) -> bool {
+        (a - b).abs() <= 1e-4
+    }
+
+    #[test]
+    fn names_the_first_wrong_element_of_a_long_list_with_both_values() {
+        use inbetween::exercises::grade::check_list_cases;
+        let report = check_list_cases(
+            "l",
+            "e",
+            ["n"],
+            &[("short", 3usize), ("long", 40)],
+            |&n| {
+                let mut list = count_to(&n);
+                if n == 40 {
+                    list[17] = -1.0;
+                    list[30] += 0.5;
+                    // Within the tolerance: not wrong.
+                    list[35] += 5e-5;
+                }
+                Ok(list)
+            },
+            count_to,
+            within_1e4,
+        );
+        let Status::Wrong {
+            case,
+            list,
+            expected,
+            actual,
+            ..
+        } = &report.status
+        else {
+            panic!("{:?}", report.status);
+        };
+        assert_eq!(*case, 2, "the short list is right");
+        assert_eq!(
+            list.as_deref(),
+            Some("index 17 first, 2 of 40 elements in all: expected 17.0, actual -1.0")
+        );
+        // The long lists show the elements round index 17 and how many are left out.
+        assert_eq!(
+            expected,
+            "[… 15 before, 15.0, 16.0, 17.0, 18.0, 19.0, … 20 after]"
+        );
+        assert_eq!(
+            actual,
+            "[… 15 before, 15.0, 16.0, -1.0, 18.0, 19.0, … 20 after]"
+        );
+        let shown = report.status.to_string();
+        let lines = "\n      wrong:    index 17 first, 2 of 40 elements in all: expected 17.0, \
+                     actual -1.0\n      expected: [… 15 before, 15.0,";
+        assert!(shown.contains(lines), "{shown}");
+    }
+
+    #[test]
+    fn a_short_list_shows_whole_and_a_length_is_wrong_even_when_every_element_matches() {
+        use inbetween::exercises::grade::check_list_cases;
+        let short = check_list_cases(
+            "l",
+            "e",
+            ["n"],
+            &[4usize].map(|n| ("short", n)),
+            |&n| Ok(count_to(&n).into_iter().map(|x| x * x).collect()),
+            count_to,
+            within_1e4,
+        );
+        let Status::Wrong {
+            list,
+            expected,
+            actual,
+            ..
+        } = &short.status
+        else {
+            panic!("{:?}", short.status);
+        };
+        assert_eq!(
+            list.as_deref(),
+            Some("index 2 first, 2 of 4 elements in all: expected 2.0, actual 4.0")
+        );
+        assert_eq!(
+            (expected.as_str(), actual.as_str()),
+            ("[0.0, 1.0, 2.0, 3.0]", "[0.0, 1.0, 4.0, 9.0]")
+        );
+        // One element short: the list says so, and the lists show their ends.
+        let shorter = check_list_cases(
+            "l",
+            "e",
+            ["n"],
+            &[("long", 20usize)],
+            |&n| Ok(count_to(&(n - 1))),
+            count_to,
+            within_1e4,
+        );
+        let Status::Wrong {
+            list,
+            expected,
+            actual,
+            ..
+        } = &shorter.status
+        else {
+            panic!("{:?}", shorter.status);
+        };
+        assert_eq!(
+            list.as_deref(),
+            Some("the length: expected 20 elements, actual 19")
+        );
+        assert_eq!(expected, "[… 15 before, 15.0, 16.0, 17.0, 18.0, 19.0]");
+        assert_eq!(actual, "[… 14 before, 14.0, 15.0, 16.0, 17.0, 18.0]");
+        // An answer that is no list says nothing of elements.
+        let plain = check("l", "e", ["x"], &[1], |_| Ok(2), |&x| x, |a, b| a == b);
+        assert!(!plain.status.to_string().contains("wrong:"));
     }
 
     #[test]

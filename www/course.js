@@ -201,8 +201,9 @@ const VERDICT_WORDS = {
   passed: 'passed', 'not-done': 'not yet implemented', wrong: 'WRONG', panicked: 'PANICKED', stopped: 'STOPPED',
 };
 
-/** One exercise's row: its name, then the verdict and what the case tested, its input, and
- * expected and actual (or the panic's message and place, or the time limit). */
+/** One exercise's row: its name, then the verdict and what the case tested, its input, for a list
+ * answer where it is wrong, and expected and actual (or the panic's message and place, or the
+ * time limit). */
 function resultRow(row) {
   const tr = document.createElement('tr');
   tr.dataset.exercise = row.exercise;
@@ -232,6 +233,7 @@ function resultRow(row) {
   const input = (row.input ?? []).map(([n, v]) => `${n} = ${v}`).join(', ');
   if (row.verdict === 'wrong') {
     add('input', input);
+    if (row.list) add('wrong', row.list);
     add('expected', row.expected);
     add('yours', row.actual);
   } else if (row.verdict === 'panicked') {

@@ -23,7 +23,13 @@ pub enum Status {
         what: String,
         /// The case's arguments, each with the exercise's name for it: `("t", "0.5")`.
         input: Vec<(&'static str, String)>,
+        /// For a list answer, where it is wrong: "index 17 first, 3 of 34 elements in all:
+        /// expected …, actual …", or "the length: expected 34 elements, actual 33". `None` for
+        /// an answer that is no list.
+        list: Option<String>,
+        /// The reference's answer; a long list shows the elements round the first wrong one.
         expected: String,
+        /// The exercise's answer, shown as `expected` is.
         actual: String,
     },
     /// The exercise panicked (caught natively only: a wasm panic aborts the module).
@@ -269,8 +275,8 @@ fn replayed<I: Args<N>, const N: usize>(
 }
 
 /// The `student-bugs` build's mistakes, in the grader as in the figures (see
-/// `run::student_bugs`): slerp panics, the Rodrigues matrix comes out transposed, and in the
-/// browser `polar_step` never returns (the page's time limit must stop it; natively it is left
+/// `run::student_bugs`): slerp panics, the Rodrigues matrix comes out transposed, the middle
+/// vertex normal is reversed, and in the browser `polar_step` never returns (the page's time limit must stop it; natively it is left
 /// alone, since nothing could stop it there).
 #[cfg(feature = "student-bugs")]
 fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O> {
@@ -284,6 +290,12 @@ fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O>
             if let Some(Ok(m)) = (&mut answer as &mut dyn Any).downcast_mut::<Answer<glam::Mat3>>()
             {
                 *m = m.transpose();
+            }
+        }
+        "vertex_normals" => {
+            let normals = (&mut answer as &mut dyn Any).downcast_mut::<Answer<Vec<glam::Vec3>>>();
+            if let Some(Ok(normals)) = normals {
+                super::run::reverse_middle_normal(normals);
             }
         }
         #[cfg(target_arch = "wasm32")]
@@ -401,6 +413,84 @@ pub fn check_cases<I: Args<N>, O: Debug + 'static, const N: usize>(
     reference: impl Fn(&I) -> O,
     close: impl Fn(&O, &O) -> bool,
 ) -> Report {
+    grade_cases(lesson, exercise, args, cases, student, reference, |e, a| {
+        (!close(e, a)).then(|| (None, format!("{e:?}"), format!("{a:?}")))
+    })
+}
+
+/// Like [`check_cases`], for an exercise whose answer is a list: `close` compares two elements,
+/// and the lists match when they have the same length and every element is close. A wrong answer
+/// names its first wrong element (its index, both values) and how many are wrong, or says that
+/// the lengths differ; a long list shows the elements round the first wrong one (see
+/// [`Status::Wrong`]).
+pub fn check_list_cases<I: Args<N>, T: Debug + 'static, const N: usize>(
+    lesson: &'static str,
+    exercise: &'static str,
+    args: [&'static str; N],
+    cases: &[(&str, I)],
+    student: impl Fn(&I) -> Answer<Vec<T>>,
+    reference: impl Fn(&I) -> Vec<T>,
+    close: impl Fn(&T, &T) -> bool,
+) -> Report {
+    grade_cases(lesson, exercise, args, cases, student, reference, |e, a| {
+        let wrong: Vec<usize> = (0..e.len().min(a.len()))
+            .filter(|&i| !close(&e[i], &a[i]))
+            .collect();
+        let (at, list) = if e.len() != a.len() {
+            let at = wrong.first().copied().unwrap_or(e.len().min(a.len()));
+            let list = format!(
+                "the length: expected {} elements, actual {}",
+                e.len(),
+                a.len()
+            );
+            (at, list)
+        } else {
+            let &at = wrong.first()?;
+            let list = format!(
+                "index {at} first, {} of {} elements in all: expected {:?}, actual {:?}",
+                wrong.len(),
+                e.len(),
+                e[at],
+                a[at]
+            );
+            (at, list)
+        };
+        Some((Some(list), shown_round(e, at), shown_round(a, at)))
+    })
+}
+
+/// A list as `{:?}` shows it or, when it is long, the few elements round index `at` with how many
+/// are left out before and after them: `[… 15 before, Vec3(…), …, … 14 after]`.
+fn shown_round<T: Debug>(list: &[T], at: usize) -> String {
+    const SHOWN: usize = 5;
+    if list.len() <= SHOWN + 2 {
+        return format!("{list:?}");
+    }
+    let start = at.saturating_sub(SHOWN / 2).min(list.len() - SHOWN);
+    let end = start + SHOWN;
+    let mut parts: Vec<String> = list[start..end].iter().map(|x| format!("{x:?}")).collect();
+    if start > 0 {
+        parts.insert(0, format!("… {start} before"));
+    }
+    if end < list.len() {
+        parts.push(format!("… {} after", list.len() - end));
+    }
+    format!("[{}]", parts.join(", "))
+}
+
+/// What [`check_cases`] and [`check_list_cases`] share: runs each case, and `wrong` compares the
+/// reference's answer with the exercise's, giving `None` when they match, else what
+/// [`Status::Wrong`] shows (`list`, `expected`, `actual`).
+#[allow(clippy::type_complexity)]
+fn grade_cases<I: Args<N>, O: 'static, const N: usize>(
+    lesson: &'static str,
+    exercise: &'static str,
+    args: [&'static str; N],
+    cases: &[(&str, I)],
+    student: impl Fn(&I) -> Answer<O>,
+    reference: impl Fn(&I) -> O,
+    wrong: impl Fn(&O, &O) -> Option<(Option<String>, String, String)>,
+) -> Report {
     let status = (|| {
         if let Some(status) = replayed(exercise, args, cases) {
             return status;
@@ -426,14 +516,14 @@ pub fn check_cases<I: Args<N>, O: Debug + 'static, const N: usize>(
             let Ok(actual) = answer else {
                 return Status::NotDone;
             };
-            let expected = reference(input);
-            if !close(&expected, &actual) {
+            if let Some((list, expected, actual)) = wrong(&reference(input), &actual) {
                 return Status::Wrong {
                     case,
                     what: what.to_string(),
                     input: named(args, input),
-                    expected: format!("{expected:?}"),
-                    actual: format!("{actual:?}"),
+                    list,
+                    expected,
+                    actual,
                 };
             }
         }
@@ -584,10 +674,11 @@ impl fmt::Display for Status {
         match self {
             Status::Passed { cases } => write!(f, "passed ({cases} cases)"),
             Status::NotDone => write!(f, "not yet implemented"),
-            Status::Wrong { case, what, input, expected, actual } => write!(
+            Status::Wrong { case, what, input, list, expected, actual } => write!(
                 f,
-                "WRONG at case {case} ({what})\n      input:    {}\n      expected: {expected}\n      actual:   {actual}",
-                show_input(input)
+                "WRONG at case {case} ({what})\n      input:    {}{}\n      expected: {expected}\n      actual:   {actual}",
+                show_input(input),
+                list.as_ref().map_or(String::new(), |l| format!("\n      wrong:    {l}"))
             ),
             Status::Stopped { case, what, input, seconds } => write!(
                 f,
@@ -762,5 +853,21 @@ mod tests {
             .unwrap_or("")
             .starts_with("src/exercises/run.rs:"));
         assert!(matches!(status("rodrigues_matrix"), Status::Wrong { .. }));
+        // Lesson 00's vertex normals: the middle one of the first mesh (the tetrahedron's four)
+        // is reversed, and the report says which.
+        let rows = grade_selected("00").unwrap();
+        let normals = rows
+            .iter()
+            .find(|r| r.exercise == "vertex_normals")
+            .unwrap();
+        let Status::Wrong { case, list, .. } = &normals.status else {
+            panic!("vertex_normals: {:?}", normals.status);
+        };
+        assert_eq!(*case, 1);
+        let list = list.as_deref().unwrap_or("");
+        assert!(
+            list.starts_with("index 2 first, 1 of 4 elements in all: expected Vec3("),
+            "{list}"
+        );
     }
 }

@@ -80,7 +80,7 @@ pub fn ccd_iteration(chain: &mut [Vec3], target: Vec3) -> Answer<()> {
 /// Grades this file's exercises against the reference on edge cases (each saying what it tests)
 /// and random inputs.
 pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
-    use super::grade::{check_cases, RANDOM};
+    use super::grade::{check_cases, check_list_cases, RANDOM};
     const LESSON: &str = "07-inverse-kinematics";
     let close = |a: &Vec3, b: &Vec3| a.abs_diff_eq(*b, 1e-3);
 
@@ -185,7 +185,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         }
         cases.push((RANDOM, (chain, rng.vec3(-2.5, 2.5))));
     }
-    let sweep = check_cases(
+    let sweep = check_list_cases(
         LESSON,
         "ccd_iteration",
         ["chain", "target"],
@@ -199,7 +199,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
             crate::ik::ccd_iteration(&mut c, *target);
             c
         },
-        |a, b| a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.abs_diff_eq(*y, 2e-3)),
+        |x, y| x.abs_diff_eq(*y, 2e-3),
     );
     vec![two, sweep]
 }

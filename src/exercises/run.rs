@@ -712,11 +712,27 @@ fn two_joint_quiz(name: &str, args: &[f32]) -> Result<(Vec3, crate::ik::TwoJoint
     Ok((u, solution))
 }
 
-/// Two typical student mistakes, compiled in only for the isolation test (feature
-/// `student-bugs`): a panic in slerp and a transposed Rodrigues matrix.
+/// Three student mistakes, compiled in only for the isolation test (feature `student-bugs`): a
+/// panic in slerp, a transposed Rodrigues matrix and vertex normals with the middle one reversed
+/// (see [`reverse_middle_normal`]).
 #[cfg(feature = "student-bugs")]
 pub(super) fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, Failure>> {
     match name {
+        "vertex_normals" => {
+            let mut rest = args;
+            let positions = Vec::<Vec3>::take(&mut rest)?;
+            let indices: Vec<u32> = Vec::<f32>::take(&mut rest)?
+                .iter()
+                .map(|&i| i as u32)
+                .collect();
+            let mut normals = vec![Vec3::ZERO; positions.len()];
+            // Invalid indices: the exercise's own path reports them.
+            crate::raster::vertex_normals(&positions, &indices, &mut normals).ok()?;
+            reverse_middle_normal(&mut normals);
+            let mut out = Vec::new();
+            normals.put(&mut out);
+            Some(Ok(out))
+        }
         "slerp" => {
             let keys = [0usize; 3];
             let index = args.len(); // 9 numbers: past the end, as an off-by-one would be
@@ -733,6 +749,16 @@ pub(super) fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, 
             Some(Ok(out))
         }
         _ => None,
+    }
+}
+
+/// The `student-bugs` build's vertex normals: the one in the middle of the list (index
+/// `len / 2`) points the wrong way, as if its triangles were wound backwards. A wrong element in
+/// the middle of a long list, for the grader's report of where a list is wrong.
+#[cfg(feature = "student-bugs")]
+pub(super) fn reverse_middle_normal(normals: &mut [Vec3]) {
+    if let Some(n) = normals.get_mut(normals.len() / 2) {
+        *n = -*n;
     }
 }
 

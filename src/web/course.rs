@@ -91,12 +91,16 @@ fn row(report: &Report) -> JsValue {
             case,
             what,
             input: i,
+            list,
             expected,
             actual,
         } => {
             set(&o, "case", &(*case as f64).into());
             set(&o, "what", &what.into());
             set(&o, "input", &input(i));
+            if let Some(list) = list {
+                set(&o, "list", &list.into());
+            }
             set(&o, "expected", &expected.into());
             set(&o, "actual", &actual.into());
             "wrong"

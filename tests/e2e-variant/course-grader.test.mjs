@@ -3,8 +3,8 @@
 // and an endless loop are each named in their row while the other exercises are graded, and the
 // page's figures keep running. The build: a built dist/ whose course module is rebuilt with
 // `INBETWEEN_FEATURES=solutions,student-bugs scripts/build --dev --course-only` (slerp panics,
-// rodrigues_matrix is transposed, polar_step never returns in the browser, every other exercise is
-// the reference).
+// rodrigues_matrix is transposed, vertex_normals reverses the middle normal of its list, polar_step
+// never returns in the browser, every other exercise is the reference).
 //   node --test tests/e2e-variant/   (the copy is $INBETWEEN_DIST-student-bugs, or $INBETWEEN_VARIANT_DIST)
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
@@ -36,7 +36,7 @@ let native = {};
 before(() => {
   // Natively the grader cannot stop an endless loop, so the build's polar_step returns there
   // (src/exercises/grade.rs, with_student_bugs): lesson 04 is compared row by row below instead.
-  for (const lesson of ['03', '01']) native[lesson] = nativeTable(lesson);
+  for (const lesson of ['03', '01', '00']) native[lesson] = nativeTable(lesson);
 });
 
 /** Clicks "Check my exercises" and waits for the table; returns its rows and its text. */
@@ -98,6 +98,16 @@ test('the panel grades like the native grader, survives a panic and stops an end
     await third.page.waitForFunction(() => document.body.dataset.ready);
     const card = third.page.locator('.card[data-lesson="01-transforms"] .progress');
     assert.match(await card.textContent(), /exercises 2 of 2 passed/);
+
+    // Lesson 00: a wrong list answer names its first wrong element, in its row as in the table.
+    const fourth = await openPage(context, `${site.origin}/lessons/00-triangles-to-pixels/?backend=webgl2`);
+    const list = await check(fourth.page);
+    assert.equal(list.table, native['00']);
+    assert.equal(list.rows.vertex_normals.verdict, 'wrong');
+    const wrong = /wrong\s*index 2 first, 1 of 4 elements in all: expected Vec3\(.*\), actual Vec3\(.*\)/;
+    assert.match(list.rows.vertex_normals.text, wrong);
+    assert.match(list.table, /\n {6}wrong: {4}index 2 first, 1 of 4 elements in all/);
+    await fourth.page.locator('.grade-panel').screenshot({ path: `${SHOTS}/course-grader-00-list.png` });
   } finally {
     await context.close();
   }

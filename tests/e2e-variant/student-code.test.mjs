@@ -2,7 +2,8 @@
 // Runs on a special build (scripts/test makes it: a copy of a built dist/ whose course module is
 // rebuilt with `INBETWEEN_FEATURES=solutions,student-bugs scripts/build --dev --course-only`), in
 // which exercise 3.2 slerp panics (an index out of bounds), 3.3 rodrigues_matrix returns the
-// transpose of the right matrix, and every other exercise is right.
+// transpose of the right matrix, 0.2 vertex_normals reverses the middle normal of its list, and
+// every other exercise is right.
 //   node --test tests/e2e-variant/   (the copy is $INBETWEEN_DIST-student-bugs, or $INBETWEEN_VARIANT_DIST)
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
