@@ -163,12 +163,17 @@ fn assert_just_above(at: &str, bottom: f32, middle: f32, points: &[Vec2], gap: f
 #[test]
 fn lesson_00_depth_side_view_labels_keep_off_the_bars_and_the_line() {
     // The page's defaults (lessons/00-triangles-to-pixels/lesson.js): 16 bits, 0.1 m to 1 km.
-    let mut scene = inbetween::figures::raster::DepthPrecision::new();
-    scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
-    let mut frame = Frame::default();
-    scene.draw(&mut frame);
+    // As on the page, the figure places its labels for the view of the frame before.
+    let view = [0.0, 3.0, -20.0, 30.0, 1.2, 0.45];
     for size in CANVASES {
-        let camera = page_camera([0.0, 3.0, -20.0, 30.0, 1.2, 0.45], &frame, size);
+        let mut scene = inbetween::figures::raster::DepthPrecision::new();
+        scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        scene.set_view(page_camera(view, &frame, size), size.x, size.y);
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let camera = page_camera(view, &frame, size);
         assert_clear("00 depth", &frame, &camera, size);
     }
 }
@@ -1305,11 +1310,18 @@ fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
 fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbited() {
     // Figure 3 at its page camera (lessons/00-triangles-to-pixels/lesson.js) and orbited round
     // it (azimuths round the side view, from low to steep), both canvases, at the page's
-    // settings and with half the gap (the fighting line nearer, at 10.9 m): "eye" and "fighting from here"
-    // are shown where the figure put them, keep 2 px off every dot and line, and cover no point
-    // of the upper floor (a mesh, sampled here every half metre). As on the page, the figure
-    // places them for the view of the frame before.
+    // settings and with half the gap (the fighting line nearer, at 10.9 m): "eye", "fighting
+    // from here" and the bars' and the grey line's names are shown where the figure put them
+    // (so none sits on another), keep 2 px off every dot and line, and cover no point of the
+    // upper floor (a mesh, sampled here every half metre). As on the page, the figure places
+    // them for the view of the frame before.
     use inbetween::figures::raster::DepthPrecision;
+    const NAMES: [&str; 4] = [
+        "eye",
+        "fighting from here",
+        "one depth step (×40)",
+        "separation d·gap/h (×40)",
+    ];
     let mut failures = Vec::new();
     for gap in [0.01, 0.005] {
         for (yaw, pitch) in [
@@ -1336,9 +1348,9 @@ fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbi
                 let camera = page_camera(view, &frame, size);
                 let name = format!("00 depth, gap {gap}, orbit ({yaw}, {pitch})");
                 let named: Vec<usize> = (0..frame.labels.len())
-                    .filter(|&i| ["eye", "fighting from here"].contains(&&*frame.labels[i].text))
+                    .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
                     .collect();
-                assert_eq!(named.len(), 2, "{name}");
+                assert_eq!(named.len(), NAMES.len(), "{name}");
                 failures.extend(failure_of(|| {
                     assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
                 }));
@@ -1352,10 +1364,7 @@ fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbi
                     .collect();
                 let boxes = label_boxes(&frame, &camera, size);
                 failures.extend(failure_of(|| {
-                    for (text, rect) in boxes
-                        .iter()
-                        .filter(|(t, _)| t == "eye" || t == "fighting from here")
-                    {
+                    for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
                         for c in &floor {
                             assert!(
                                 !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),

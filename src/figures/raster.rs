@@ -907,6 +907,8 @@ impl DepthPrecision {
             palette::GREY,
             crate::draw::StrokeStyle::dashed(1.5, 0.4, 0.3),
         );
+        // The top of the tallest bar (the farthest of equals), which the bars' name sits beside.
+        let mut tallest = Vec3::new(1.1, 0.0, 0.0);
         for k in 1..=(reach / 2.0) as usize {
             let d = 2.0 * k as f32;
             let step = raster::depth_step(d, self.near, self.far, self.bits);
@@ -918,23 +920,12 @@ impl DepthPrecision {
             let top = Vec3::new(1.1, (step * Self::BAR_SCALE).min(6.0), -d);
             frame.wide_line(Vec3::new(1.1, 0.0, -d), top, color, 4.0);
             frame.marker(top, 9.0, color);
+            if top.y >= tallest.y {
+                tallest = top;
+            }
         }
         let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
         frame.wide_line(sep(0.0), sep(reach), palette::GREY, 2.5);
-        // The names sit on the ground in front of where the bars and the line start (the side
-        // of the floor towards the page's camera), clear of every dot and line.
-        frame.label_with_priority(
-            Vec3::new(2.6, 0.0, -2.0),
-            "one depth step (×40)",
-            palette::GREEN,
-            1,
-        );
-        frame.label_with_priority(
-            Vec3::new(4.2, 0.0, -1.0),
-            "separation d·gap/h (×40)",
-            palette::GREY,
-            1,
-        );
         let from = self.fighting_from();
         if from < reach {
             frame.stroke(
@@ -982,6 +973,19 @@ impl DepthPrecision {
             std::iter::once(first).chain(around),
             |rect| self.off_the_floor(reach, rect),
         );
+        // The bars' name at the first place round the tallest bar's top, above first, that covers
+        // no dot, line, floor or name placed before; the grey line's likewise round its far
+        // (highest) end, else round a point further down the line: the end sits among the
+        // tallest bars, and at the canvas's edge when the camera looks along the floor.
+        let off_floor = |rect| self.off_the_floor(reach, rect);
+        let text = "one depth step (×40)";
+        let around = Label::around_dot(tallest, 9.0, -Vec2::Y, text, palette::GREEN, 1, 6, 10.0);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, around, off_floor);
+        let text = "separation d·gap/h (×40)";
+        let along = [1.0, 0.75, 0.5, 0.25, 0.0].into_iter().flat_map(|t| {
+            Label::around_dot(sep(t * reach), 2.5, -Vec2::Y, text, palette::GREY, 1, 4, 10.0)
+        });
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, along, off_floor);
         frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 7.2, 0.5));
         format!(
             "z_far / z_near = {}. With {} bits, one depth step is worth {} m at 1 m, {} m at 10 m and {} m at \
