@@ -1252,16 +1252,17 @@ fn lesson_03_gimbal_axle_names_keep_off_the_rings_and_axles() {
 fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
     // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
     // across the z_near slider's low end (0.05 m, the lesson's 0.1 m and 0.2 m) and at the
-    // page's 1 m: near the eye the near plane's corner, which "z_near" names, is a few pixels
-    // from the eye's dot, so the two names sit at least LABELS_APART_PX apart, each where the
-    // figure put it (no leader line), and "z_near" covers no dot. As on the page, the figure
-    // places them for the view of the frame before.
+    // page's 1 m, along the point's path: near the eye the near plane's corner, which "z_near"
+    // names, is a few pixels from the eye's dot and from the point's image, so "eye", "z_near"
+    // and "image" sit at least LABELS_APART_PX apart, each where the figure put it (no leader
+    // line), and "z_near" and "image" cover no dot. As on the page, the figure places them for
+    // the view of the frame before.
     use inbetween::draw::LABELS_APART_PX;
     use inbetween::figures::raster::Frustum;
     let view = [4.5, 1.2, -4.0, 17.0, 0.45, 0.45];
     let mut failures = Vec::new();
     for near in [0.05, 0.1, 0.15, 0.2, 0.5, 1.0] {
-        for s in [0.0, 0.5] {
+        for s in [0.0, 0.03, 0.07, 0.15, 0.5, 1.0] {
             for size in CANVASES {
                 let mut scene = Frustum::new();
                 scene.set_frustum(50.0, near, 8.0).unwrap();
@@ -1274,10 +1275,10 @@ fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
                 let camera = page_camera(view, &frame, size);
                 let name = format!("00 frustum, z_near {near}, s {s}");
                 let index = |t: &str| frame.labels.iter().position(|l| l.text == t).unwrap();
-                let (eye, z_near) = (index("eye"), index("z_near"));
+                let (eye, z_near, image) = (index("eye"), index("z_near"), index("image"));
                 let placed = layout(&frame, &camera, size);
                 failures.extend(failure_of(|| {
-                    let boxes = [eye, z_near].map(|i| {
+                    let boxes = [eye, z_near, image].map(|i| {
                         let (l, b, at) = &placed[i];
                         assert!(
                             at.shown && at.leader_to.is_none(),
@@ -1289,14 +1290,18 @@ fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
                             size: b.size,
                         }
                     });
-                    assert!(
-                        !boxes[0].overlaps(&boxes[1], LABELS_APART_PX - 0.5),
-                        "{name} on {size}: \"eye\" at {:?} and \"z_near\" at {:?} butt",
-                        boxes[0].min,
-                        boxes[1].min
-                    );
+                    for (a, b) in [(0, 1), (1, 2), (0, 2)] {
+                        assert!(
+                            !boxes[a].overlaps(&boxes[b], LABELS_APART_PX - 0.5),
+                            "{name} on {size}: {:?} at {:?} and {:?} at {:?} butt",
+                            frame.labels[[eye, z_near, image][a]].text,
+                            boxes[a].min,
+                            frame.labels[[eye, z_near, image][b]].text,
+                            boxes[b].min
+                        );
+                    }
                     let mut only = frame.clone();
-                    only.labels = vec![frame.labels[z_near].clone()];
+                    only.labels = vec![frame.labels[z_near].clone(), frame.labels[image].clone()];
                     only.strokes.clear();
                     assert_clear(&name, &only, &camera, size);
                 }));

@@ -524,18 +524,17 @@ impl Frustum {
         // The point's label straight above its dot and the image's below and right of its
         // own, off the ray (which rises to the right towards the point), each a few pixels
         // from its dot at any zoom: where the point crosses the near plane the two dots meet.
+        // At a small z_near the image sits by the eye and the near plane's corner, so its name
+        // goes to the first place round its dot, below and right first, clear of the names
+        // placed before (the eye's, z_near's, the point's), the dots and the lines.
         frame.marker(EYE + p, POINT_PX, color);
         frame.label_off_dot(EYE + p, POINT_PX, Vec2::new(0.0, -1.0), "p", color, 3);
         let on_near = p * (self.near / -p.z);
         frame.marker_on_top(EYE + on_near, IMAGE_PX, ON_NEAR);
-        frame.label_off_dot(
-            EYE + on_near,
-            POINT_PX.max(IMAGE_PX),
-            Vec2::new(1.0, 1.0),
-            "image",
-            ON_NEAR,
-            0,
-        );
+        let dot_px = POINT_PX.max(IMAGE_PX);
+        let candidates =
+            Label::around_dot(EYE + on_near, dot_px, Vec2::ONE, "image", ON_NEAR, 0, 4, 6.0);
+        frame.first_clear_label(view, candidates);
         // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z.
         let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
         let box_corners: Vec<Vec3> = [0.0, 1.0]
