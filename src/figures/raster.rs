@@ -925,6 +925,9 @@ impl DepthPrecision {
         }
         let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
         frame.wide_line(sep(0.0), sep(reach), palette::GREY, 2.5);
+        // Whether a name's box covers none of the floor: one closure for all four names, so
+        // that Frame::first_clear_label_by is compiled once for them.
+        let off_floor = |rect| self.off_the_floor(reach, rect);
         let from = self.fighting_from();
         if from < reach {
             frame.stroke(
@@ -945,14 +948,10 @@ impl DepthPrecision {
                 offset_px: Vec2::ZERO,
                 large: false,
             };
-            let around =
+            let mut around =
                 Label::around_dot(top, 0.0, -Vec2::Y, &first.text, first.color, 3, 6, 10.0);
-            frame.first_clear_label_by(
-                view,
-                LINE_MARGIN_PX,
-                std::iter::once(first).chain(around),
-                |rect| self.off_the_floor(reach, rect),
-            );
+            around.insert(0, first);
+            frame.first_clear_label_by(view, LINE_MARGIN_PX, around, &off_floor);
         }
         // The eye's name above its dot at the page's camera; once orbited, the first place round
         // the dot that covers no dot, line, floor or the fighting line's name.
@@ -965,26 +964,23 @@ impl DepthPrecision {
             offset_px: Vec2::ZERO,
             large: false,
         };
-        let around = Label::around_dot(eye, 14.0, -Vec2::Y, "eye", palette::DARK, 2, 6, 10.0);
-        frame.first_clear_label_by(
-            view,
-            LINE_MARGIN_PX,
-            std::iter::once(first).chain(around),
-            |rect| self.off_the_floor(reach, rect),
-        );
+        let mut around = Label::around_dot(eye, 14.0, -Vec2::Y, "eye", palette::DARK, 2, 6, 10.0);
+        around.insert(0, first);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, around, &off_floor);
         // The bars' name at the first place round the tallest bar's top, above first, that covers
         // no dot, line, floor or name placed before; the grey line's likewise round its far
         // (highest) end, else round a point further down the line: the end sits among the
         // tallest bars, and at the canvas's edge when the camera looks along the floor.
-        let off_floor = |rect| self.off_the_floor(reach, rect);
         let text = "one depth step (×40)";
         let around = Label::around_dot(tallest, 9.0, -Vec2::Y, text, palette::GREEN, 1, 6, 10.0);
-        frame.first_clear_label_by(view, LINE_MARGIN_PX, around, off_floor);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, around, &off_floor);
         let text = "separation d·gap/h (×40)";
-        let along = [1.0, 0.75, 0.5, 0.25, 0.0].into_iter().flat_map(|t| {
-            Label::around_dot(sep(t * reach), 2.5, -Vec2::Y, text, palette::GREY, 1, 4, 10.0)
-        });
-        frame.first_clear_label_by(view, LINE_MARGIN_PX, along, off_floor);
+        let mut along = Vec::new();
+        for t in [1.0, 0.75, 0.5, 0.25, 0.0] {
+            let at = sep(t * reach);
+            along.extend(Label::around_dot(at, 2.5, -Vec2::Y, text, palette::GREY, 1, 4, 10.0));
+        }
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, along, &off_floor);
         frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 7.2, 0.5));
         format!(
             "z_far / z_near = {}. With {} bits, one depth step is worth {} m at 1 m, {} m at 10 m and {} m at \
