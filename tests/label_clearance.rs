@@ -163,12 +163,17 @@ fn assert_just_above(at: &str, bottom: f32, middle: f32, points: &[Vec2], gap: f
 #[test]
 fn lesson_00_depth_side_view_labels_keep_off_the_bars_and_the_line() {
     // The page's defaults (lessons/00-triangles-to-pixels/lesson.js): 16 bits, 0.1 m to 1 km.
-    let mut scene = inbetween::figures::raster::DepthPrecision::new();
-    scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
-    let mut frame = Frame::default();
-    scene.draw(&mut frame);
+    // As on the page, the figure places its labels for the view of the frame before.
+    let view = [0.0, 3.0, -20.0, 30.0, 1.2, 0.45];
     for size in CANVASES {
-        let camera = page_camera([0.0, 3.0, -20.0, 30.0, 1.2, 0.45], &frame, size);
+        let mut scene = inbetween::figures::raster::DepthPrecision::new();
+        scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        scene.set_view(page_camera(view, &frame, size), size.x, size.y);
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let camera = page_camera(view, &frame, size);
         assert_clear("00 depth", &frame, &camera, size);
     }
 }
@@ -1247,16 +1252,17 @@ fn lesson_03_gimbal_axle_names_keep_off_the_rings_and_axles() {
 fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
     // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
     // across the z_near slider's low end (0.05 m, the lesson's 0.1 m and 0.2 m) and at the
-    // page's 1 m: near the eye the near plane's corner, which "z_near" names, is a few pixels
-    // from the eye's dot, so the two names sit at least LABELS_APART_PX apart, each where the
-    // figure put it (no leader line), and "z_near" covers no dot. As on the page, the figure
-    // places them for the view of the frame before.
+    // page's 1 m, along the point's path: near the eye the near plane's corner, which "z_near"
+    // names, is a few pixels from the eye's dot and from the point's image, so "eye", "z_near"
+    // and "image" sit at least LABELS_APART_PX apart, each where the figure put it (no leader
+    // line), and "z_near" and "image" cover no dot. As on the page, the figure places them for
+    // the view of the frame before.
     use inbetween::draw::LABELS_APART_PX;
     use inbetween::figures::raster::Frustum;
     let view = [4.5, 1.2, -4.0, 17.0, 0.45, 0.45];
     let mut failures = Vec::new();
     for near in [0.05, 0.1, 0.15, 0.2, 0.5, 1.0] {
-        for s in [0.0, 0.5] {
+        for s in [0.0, 0.03, 0.07, 0.15, 0.5, 1.0] {
             for size in CANVASES {
                 let mut scene = Frustum::new();
                 scene.set_frustum(50.0, near, 8.0).unwrap();
@@ -1269,10 +1275,10 @@ fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
                 let camera = page_camera(view, &frame, size);
                 let name = format!("00 frustum, z_near {near}, s {s}");
                 let index = |t: &str| frame.labels.iter().position(|l| l.text == t).unwrap();
-                let (eye, z_near) = (index("eye"), index("z_near"));
+                let (eye, z_near, image) = (index("eye"), index("z_near"), index("image"));
                 let placed = layout(&frame, &camera, size);
                 failures.extend(failure_of(|| {
-                    let boxes = [eye, z_near].map(|i| {
+                    let boxes = [eye, z_near, image].map(|i| {
                         let (l, b, at) = &placed[i];
                         assert!(
                             at.shown && at.leader_to.is_none(),
@@ -1284,14 +1290,18 @@ fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
                             size: b.size,
                         }
                     });
-                    assert!(
-                        !boxes[0].overlaps(&boxes[1], LABELS_APART_PX - 0.5),
-                        "{name} on {size}: \"eye\" at {:?} and \"z_near\" at {:?} butt",
-                        boxes[0].min,
-                        boxes[1].min
-                    );
+                    for (a, b) in [(0, 1), (1, 2), (0, 2)] {
+                        assert!(
+                            !boxes[a].overlaps(&boxes[b], LABELS_APART_PX - 0.5),
+                            "{name} on {size}: {:?} at {:?} and {:?} at {:?} butt",
+                            frame.labels[[eye, z_near, image][a]].text,
+                            boxes[a].min,
+                            frame.labels[[eye, z_near, image][b]].text,
+                            boxes[b].min
+                        );
+                    }
                     let mut only = frame.clone();
-                    only.labels = vec![frame.labels[z_near].clone()];
+                    only.labels = vec![frame.labels[z_near].clone(), frame.labels[image].clone()];
                     only.strokes.clear();
                     assert_clear(&name, &only, &camera, size);
                 }));
@@ -1305,11 +1315,18 @@ fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
 fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbited() {
     // Figure 3 at its page camera (lessons/00-triangles-to-pixels/lesson.js) and orbited round
     // it (azimuths round the side view, from low to steep), both canvases, at the page's
-    // settings and with half the gap (the fighting line nearer, at 10.9 m): "eye" and "fighting from here"
-    // are shown where the figure put them, keep 2 px off every dot and line, and cover no point
-    // of the upper floor (a mesh, sampled here every half metre). As on the page, the figure
-    // places them for the view of the frame before.
+    // settings and with half the gap (the fighting line nearer, at 10.9 m): "eye", "fighting
+    // from here" and the bars' and the grey line's names are shown where the figure put them
+    // (so none sits on another), keep 2 px off every dot and line, and cover no point of the
+    // upper floor (a mesh, sampled here every half metre). As on the page, the figure places
+    // them for the view of the frame before.
     use inbetween::figures::raster::DepthPrecision;
+    const NAMES: [&str; 4] = [
+        "eye",
+        "fighting from here",
+        "one depth step (×40)",
+        "separation d·gap/h (×40)",
+    ];
     let mut failures = Vec::new();
     for gap in [0.01, 0.005] {
         for (yaw, pitch) in [
@@ -1336,9 +1353,9 @@ fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbi
                 let camera = page_camera(view, &frame, size);
                 let name = format!("00 depth, gap {gap}, orbit ({yaw}, {pitch})");
                 let named: Vec<usize> = (0..frame.labels.len())
-                    .filter(|&i| ["eye", "fighting from here"].contains(&&*frame.labels[i].text))
+                    .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
                     .collect();
-                assert_eq!(named.len(), 2, "{name}");
+                assert_eq!(named.len(), NAMES.len(), "{name}");
                 failures.extend(failure_of(|| {
                     assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
                 }));
@@ -1352,10 +1369,7 @@ fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbi
                     .collect();
                 let boxes = label_boxes(&frame, &camera, size);
                 failures.extend(failure_of(|| {
-                    for (text, rect) in boxes
-                        .iter()
-                        .filter(|(t, _)| t == "eye" || t == "fighting from here")
-                    {
+                    for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
                         for c in &floor {
                             assert!(
                                 !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),

@@ -524,18 +524,17 @@ impl Frustum {
         // The point's label straight above its dot and the image's below and right of its
         // own, off the ray (which rises to the right towards the point), each a few pixels
         // from its dot at any zoom: where the point crosses the near plane the two dots meet.
+        // At a small z_near the image sits by the eye and the near plane's corner, so its name
+        // goes to the first place round its dot, below and right first, clear of the names
+        // placed before (the eye's, z_near's, the point's), the dots and the lines.
         frame.marker(EYE + p, POINT_PX, color);
         frame.label_off_dot(EYE + p, POINT_PX, Vec2::new(0.0, -1.0), "p", color, 3);
         let on_near = p * (self.near / -p.z);
         frame.marker_on_top(EYE + on_near, IMAGE_PX, ON_NEAR);
-        frame.label_off_dot(
-            EYE + on_near,
-            POINT_PX.max(IMAGE_PX),
-            Vec2::new(1.0, 1.0),
-            "image",
-            ON_NEAR,
-            0,
-        );
+        let dot_px = POINT_PX.max(IMAGE_PX);
+        let candidates =
+            Label::around_dot(EYE + on_near, dot_px, Vec2::ONE, "image", ON_NEAR, 0, 4, 6.0);
+        frame.first_clear_label(view, candidates);
         // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z.
         let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
         let box_corners: Vec<Vec3> = [0.0, 1.0]
@@ -907,6 +906,8 @@ impl DepthPrecision {
             palette::GREY,
             crate::draw::StrokeStyle::dashed(1.5, 0.4, 0.3),
         );
+        // The top of the tallest bar (the farthest of equals), which the bars' name sits beside.
+        let mut tallest = Vec3::new(1.1, 0.0, 0.0);
         for k in 1..=(reach / 2.0) as usize {
             let d = 2.0 * k as f32;
             let step = raster::depth_step(d, self.near, self.far, self.bits);
@@ -918,23 +919,15 @@ impl DepthPrecision {
             let top = Vec3::new(1.1, (step * Self::BAR_SCALE).min(6.0), -d);
             frame.wide_line(Vec3::new(1.1, 0.0, -d), top, color, 4.0);
             frame.marker(top, 9.0, color);
+            if top.y >= tallest.y {
+                tallest = top;
+            }
         }
         let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
         frame.wide_line(sep(0.0), sep(reach), palette::GREY, 2.5);
-        // The names sit on the ground in front of where the bars and the line start (the side
-        // of the floor towards the page's camera), clear of every dot and line.
-        frame.label_with_priority(
-            Vec3::new(2.6, 0.0, -2.0),
-            "one depth step (×40)",
-            palette::GREEN,
-            1,
-        );
-        frame.label_with_priority(
-            Vec3::new(4.2, 0.0, -1.0),
-            "separation d·gap/h (×40)",
-            palette::GREY,
-            1,
-        );
+        // Whether a name's box covers none of the floor: one closure for all four names, so
+        // that Frame::first_clear_label_by is compiled once for them.
+        let off_floor = |rect| self.off_the_floor(reach, rect);
         let from = self.fighting_from();
         if from < reach {
             frame.stroke(
@@ -955,14 +948,10 @@ impl DepthPrecision {
                 offset_px: Vec2::ZERO,
                 large: false,
             };
-            let around =
+            let mut around =
                 Label::around_dot(top, 0.0, -Vec2::Y, &first.text, first.color, 3, 6, 10.0);
-            frame.first_clear_label_by(
-                view,
-                LINE_MARGIN_PX,
-                std::iter::once(first).chain(around),
-                |rect| self.off_the_floor(reach, rect),
-            );
+            around.insert(0, first);
+            frame.first_clear_label_by(view, LINE_MARGIN_PX, around, &off_floor);
         }
         // The eye's name above its dot at the page's camera; once orbited, the first place round
         // the dot that covers no dot, line, floor or the fighting line's name.
@@ -975,13 +964,23 @@ impl DepthPrecision {
             offset_px: Vec2::ZERO,
             large: false,
         };
-        let around = Label::around_dot(eye, 14.0, -Vec2::Y, "eye", palette::DARK, 2, 6, 10.0);
-        frame.first_clear_label_by(
-            view,
-            LINE_MARGIN_PX,
-            std::iter::once(first).chain(around),
-            |rect| self.off_the_floor(reach, rect),
-        );
+        let mut around = Label::around_dot(eye, 14.0, -Vec2::Y, "eye", palette::DARK, 2, 6, 10.0);
+        around.insert(0, first);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, around, &off_floor);
+        // The bars' name at the first place round the tallest bar's top, above first, that covers
+        // no dot, line, floor or name placed before; the grey line's likewise round its far
+        // (highest) end, else round a point further down the line: the end sits among the
+        // tallest bars, and at the canvas's edge when the camera looks along the floor.
+        let text = "one depth step (×40)";
+        let around = Label::around_dot(tallest, 9.0, -Vec2::Y, text, palette::GREEN, 1, 6, 10.0);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, around, &off_floor);
+        let text = "separation d·gap/h (×40)";
+        let mut along = Vec::new();
+        for t in [1.0, 0.75, 0.5, 0.25, 0.0] {
+            let at = sep(t * reach);
+            along.extend(Label::around_dot(at, 2.5, -Vec2::Y, text, palette::GREY, 1, 4, 10.0));
+        }
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, along, &off_floor);
         frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 7.2, 0.5));
         format!(
             "z_far / z_near = {}. With {} bits, one depth step is worth {} m at 1 m, {} m at 10 m and {} m at \
