@@ -203,8 +203,13 @@ impl PageGpu {
             .and_then(|d| d.create_element("canvas").ok())
             .and_then(|c| c.dyn_into().ok())
             .ok_or("no document to create a canvas in")?;
-        let surface =
-            create_surface(&instance, canvas.clone()).map_err(|e| format!("{missing} ({e})."))?;
+        // The reader gets the sentence; wgpu's own error (a Rust debug print) goes to the console
+        // for whoever debugs the browser.
+        let unavailable = |e: &dyn std::fmt::Display| {
+            web_sys::console::warn_1(&format!("inbetween: {missing}: {e}").into());
+            missing.to_string()
+        };
+        let surface = create_surface(&instance, canvas.clone()).map_err(|e| unavailable(&e))?;
         let adapter = instance
             .request_adapter(&wgpu::RequestAdapterOptions {
                 power_preference: wgpu::PowerPreference::HighPerformance,
@@ -213,7 +218,7 @@ impl PageGpu {
                 apply_limit_buckets: false,
             })
             .await
-            .map_err(|e| format!("{missing} ({e})."))?;
+            .map_err(|e| unavailable(&e))?;
         let info = adapter.get_info();
         let backend_name = match info.backend {
             wgpu::Backend::Gl => "WebGL2",
@@ -239,7 +244,7 @@ impl PageGpu {
             .await
             .map_err(|e| format!("The {backend_name} adapter refused to create a device: {e}"))?;
         let mut config = surface.get_default_config(&adapter, 1, 1).ok_or_else(|| {
-            format!("The {backend_name} surface is not supported by its adapter.")
+            format!("The {backend_name} surface is not supported by its adapter")
         })?;
         // Prefer a plain 8-bit format on both backends, so pixels agree; encode sRGB ourselves.
         let formats = surface.get_capabilities(&adapter).formats;
