@@ -58,8 +58,11 @@ function render() {
   }
   const total = document.createElement('span');
   total.className = 'total';
-  total.textContent = `Your progress: ${totals.done} of ${catalog.length} lessons done · exercises ${totals.passed} of ` +
-    `${totals.exercises} passed (in the lessons checked) · quiz ${totals.right} of ${totals.questions} right`;
+  // Before any lesson's exercises are checked there is no count to give ("0 of 0 passed").
+  const exercises = totals.exercises === 0 ? 'no exercises checked yet'
+    : `exercises ${totals.passed} of ${totals.exercises} passed (in the lessons checked)`;
+  total.textContent = `Your progress: ${totals.done} of ${catalog.length} lessons done · ${exercises} · ` +
+    `quiz ${totals.right} of ${totals.questions} right`;
   const reset = document.createElement('button');
   reset.type = 'button';
   reset.textContent = 'reset my progress';

@@ -161,6 +161,7 @@ test('navigation, the grading panel, the quiz and progress, as a student uses th
     assert.equal(await card.locator('.progress').textContent(), `exercises 0 of 3 passed · quiz 2 of ${quiz.questions.length}`);
     assert.equal(await page.locator('.card[data-lesson="01-transforms"]').getAttribute('data-state'), 'not-started');
     assert.match(await page.locator('.progress-bar').textContent(), /nothing leaves the browser/);
+    assert.match(await page.locator('.progress-bar .total').textContent(), /· exercises 0 of 3 passed \(in the lessons checked\) · quiz 2 of \d+ right/);
     await page.screenshot({ path: `${SHOTS}/course-gallery.png` });
 
     // A corrupt entry is ignored with a note, never a crash; then the reset forgets everything.
@@ -183,6 +184,10 @@ test('navigation, the grading panel, the quiz and progress, as a student uses th
     await gallery.page.locator('.progress-bar button', { hasText: 'reset my progress' }).click();
     assert.equal(await gallery.page.evaluate(() => localStorage.getItem('inbetween:progress:v1')), null);
     assert.equal(await gallery.page.locator('.progress-note').count(), 0);
+    // Nothing checked or answered: the total says so rather than "0 of 0".
+    await gallery.page.reload();
+    await gallery.page.waitForFunction(() => document.body.dataset.ready);
+    assert.match(await gallery.page.locator('.progress-bar .total').textContent(), /lessons done · no exercises checked yet · quiz 0 of \d+ right$/);
     assert.deepEqual(gallery.problems, []);
   } finally {
     await context.close();
