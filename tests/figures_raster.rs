@@ -772,6 +772,51 @@ fn a_dense_sphere_marks_a_patch_only() {
     );
 }
 
+/// Figure 1's patch of dots on a dense sphere turns with the camera: from any eye round the
+/// figure, every dot on each sphere lies on the side facing the eye (within the patch's 25° of
+/// the direction from between the spheres), and the counts keep about six corners per position.
+#[test]
+fn a_dense_sphere_patch_faces_the_eye_after_an_orbit() {
+    let (left, right) = (Vec3::new(-1.4, 1.2, 0.0), Vec3::new(1.4, 1.2, 0.0));
+    let middle = Vec3::new(0.0, 1.2, 0.0);
+    let mut scene = MeshStorage::new();
+    scene.set_segments(51.0).unwrap();
+    for eye in [
+        Vec3::new(6.0, 2.0, 1.0),
+        Vec3::new(-3.0, 4.0, -5.0),
+        Vec3::new(0.5, -2.0, 6.0),
+        Vec3::new(0.0, 8.0, 0.5),
+    ] {
+        scene.set_eye(eye);
+        let facing = (eye - middle).normalize();
+        let mut f = Frame::default();
+        let note = scene.draw(&mut f);
+        let dots = |c: Vec3, centre: Vec3| -> Vec<Vec3> {
+            f.markers
+                .iter()
+                .filter(|m| Vec3::from_slice(&m.color[..3]) == c)
+                .map(|m| Vec3::from(m.center) - centre)
+                .collect()
+        };
+        let (soup, indexed) = (dots(SOUP_COLOR, left), dots(INDEXED_COLOR, right));
+        assert!(indexed.len() > 30, "eye {eye}: {} positions marked", indexed.len());
+        for p in soup.iter().chain(&indexed) {
+            // The soup's corners are pulled towards their triangle's centre: a few degrees more.
+            let cos = p.normalize().dot(facing);
+            assert!(cos > 0.85, "eye {eye}: a dot at {p} is {:.0}° from the eye's side", cos.acos().to_degrees());
+        }
+        let ratio = soup.len() as f32 / indexed.len() as f32;
+        assert!((5.0..7.0).contains(&ratio), "eye {eye}: {ratio} corners per position");
+        assert!(note.contains(&format!("{} corners of the soup, {} positions indexed", soup.len(), indexed.len())), "{note}");
+    }
+    // An eye at the point between the spheres, or not a number, keeps the last direction.
+    let mut f = Frame::default();
+    let before = scene.draw(&mut f);
+    scene.set_eye(middle);
+    scene.set_eye(Vec3::NAN);
+    assert_eq!(scene.draw(&mut Frame::default()), before);
+}
+
 fn f32_dot_sizes_at_most(scene: &MeshStorage, px: f32) -> bool {
     let mut f = Frame::default();
     scene.draw(&mut f);

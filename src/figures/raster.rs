@@ -45,9 +45,12 @@ pub const MAX_SEGMENTS: u32 = 64;
 /// apart and pale 1 px edges elsewhere: drawn everywhere, thousands of dots and edges merge into
 /// one blot.
 pub const DENSE_SEGMENTS: u32 = 16;
-/// The centre of that patch (towards the page's camera) and the cosine of its angular radius
-/// (25°).
+/// The centre of that patch before the first frame's camera is known (towards the page's
+/// camera; then [`MeshStorage::set_eye`] turns it to the eye) and the cosine of its angular
+/// radius (25°).
 const PATCH_FACING: Vec3 = Vec3::new(0.0, 0.296, 0.955);
+/// The point between Figure 1's two spheres: the patch faces the eye from there.
+const MESH_MIDDLE: Vec3 = Vec3::new(0.0, 1.2, 0.0);
 const PATCH_COS: f32 = 0.906;
 
 /// A pale `color` (mixed with white) for the 1 px edges outside a dense sphere's patch: seen
@@ -63,6 +66,8 @@ pub struct MeshStorage {
     segments: u32,
     positions: Vec<Vec3>,
     indices: Vec<u32>,
+    /// The direction the dense sphere's marked patch faces (unit).
+    facing: Vec3,
 }
 
 impl Default for MeshStorage {
@@ -78,9 +83,21 @@ impl MeshStorage {
             segments: 8,
             positions: Vec::new(),
             indices: Vec::new(),
+            facing: PATCH_FACING,
         };
         s.rebuild();
         s
+    }
+
+    /// The camera's eye (world space), so that a dense sphere's patch of dots faces the reader
+    /// after an orbit too (one direction for both spheres, from the point between them, so the
+    /// two patches hold the same part of the mesh and the note's counts compare). An eye at that
+    /// point or not finite keeps the last direction.
+    pub fn set_eye(&mut self, eye: Vec3) {
+        let to_eye = eye - MESH_MIDDLE;
+        if to_eye.is_finite() && to_eye.length() > 1e-3 {
+            self.facing = to_eye.normalize();
+        }
     }
 
     fn rebuild(&mut self) {
@@ -122,7 +139,7 @@ impl MeshStorage {
     /// Whether a dot goes at `p` (a position, or a triangle's centre, on the mesh at the origin):
     /// everywhere, or on a dense sphere only on the patch facing the camera.
     fn marked(&self, p: Vec3) -> bool {
-        !self.is_dense() || p.normalize_or_zero().dot(PATCH_FACING) > PATCH_COS
+        !self.is_dense() || p.normalize_or_zero().dot(self.facing) > PATCH_COS
     }
 
     /// How many corners of the soup get a dot.

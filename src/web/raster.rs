@@ -41,6 +41,8 @@ impl MeshStorageScene {
 
     /// Draws both storages; returns the note with their sizes.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The dense sphere's patch of dots faces the last frame's eye.
+        self.scene.set_eye(viewer.camera.eye());
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)
