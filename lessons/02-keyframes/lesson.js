@@ -96,10 +96,10 @@ function makeView(canvas, reserveBottom = 0) {
       ctx.beginPath(); ctx.moveTo(0, py); ctx.lineTo(v.w, py); ctx.stroke();
     }
   };
-  /** A path `[x0, y0, …]`; held values (step) as dots joined by thin dashed jumps. */
+  /** A path `[x0, y0, …]`; held values (step) as dots joined by dashed grey jumps. */
   v.path = (xy, color, held) => {
     ctx.strokeStyle = held ? C.ghost : color;
-    ctx.lineWidth = held ? 1 : 2;
+    ctx.lineWidth = 2; // held jumps as wide as a path: over another scheme's line they must still show
     ctx.setLineDash(held ? [4, 4] : []);
     ctx.beginPath();
     for (let i = 0; i < xy.length; i += 2) {
@@ -535,7 +535,9 @@ function compareFigure(id) {
     const { ctx } = view;
     ctx.clearRect(0, 0, view.w, view.h);
     view.grid();
-    for (const side of ['a', 'b']) view.path(layers[side].path, C[side], layers[side].held);
+    // A step's grey jumps run from key to key, where a linear path runs too: drawn last, on top.
+    const order = ['a', 'b'].sort((p, q) => Number(layers[p].held) - Number(layers[q].held));
+    for (const side of order) view.path(layers[side].path, C[side], layers[side].held);
     const keys = scene.keys();
     for (let i = 0; i < keys.length; i += 3) view.dot(keys[i + 1], keys[i + 2], 4, C.ink);
     for (const side of ['a', 'b']) {
