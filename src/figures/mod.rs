@@ -220,6 +220,32 @@ pub fn unit_quat_problem(q: Quat, tolerance: f32) -> Option<String> {
     }
 }
 
+/// `points` on the canvas of `view` (a view-projection and the canvas size, CSS pixels); none
+/// without a view, or behind the camera.
+pub fn project_all(
+    view: Option<(glam::Mat4, glam::Vec2)>,
+    points: &[glam::Vec3],
+) -> Vec<glam::Vec2> {
+    view.map(|(view_proj, size)| {
+        points
+            .iter()
+            .filter_map(|&p| crate::camera::project_to_canvas(view_proj, size, p))
+            .collect()
+    })
+    .unwrap_or_default()
+}
+
+/// A test for [`Frame::first_clear_label_by`]: the label's box, and 2 px round it, holds none
+/// of `points` (canvas pixels).
+pub fn covers_none(points: &[glam::Vec2]) -> impl Fn(crate::draw::layout::Rect) -> bool + '_ {
+    move |rect| {
+        let (lo, hi) = (rect.min - 2.0, rect.max() + 2.0);
+        points
+            .iter()
+            .all(|c| !(c.cmpgt(lo).all() && c.cmplt(hi).all()))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
