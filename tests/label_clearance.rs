@@ -1049,6 +1049,83 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
 }
 
 #[test]
+fn lesson_11_sprite_names_keep_off_the_puffs_and_the_atlas_when_orbited() {
+    // Figure 5 at its page camera (lessons/11-particles/lesson.js) and orbited round it (the
+    // page sweep's drag turns it by −1.2 rad and tilts it by 0.3 rad: the columns line up on
+    // the screen and the atlas's board turns edge on), both canvases, at 30 and 64 puffs,
+    // through the puffs' life: the two columns' names and the atlas's are shown where the
+    // figure put them (so none sits on another), keep off every line, and cover no puff's
+    // centre and no point of the atlas's board (7 × 7 points). As on the page, the figure
+    // places them for the view of the frame before.
+    use inbetween::figures::particles_sprites::{SmokeFigure, COLUMN_GAP};
+    use inbetween::texture::TextureId;
+    const NAMES: [&str; 3] = [
+        "sorted back to front",
+        "unsorted (storage order)",
+        "the atlas: 16 frames",
+    ];
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [(0.25, 0.15), (-0.966, 0.454), (1.466, 0.454), (-0.4, 0.6)] {
+        let view = [0.2, 1.3, 0.0, 8.0, yaw, pitch];
+        for puffs in [30.0, 64.0] {
+            for time_sec in [0.5, 2.0, 4.37] {
+                for size in CANVASES {
+                    let mut scene = SmokeFigure::new();
+                    scene.set_params(puffs, 4.0).unwrap();
+                    let draw = |scene: &mut SmokeFigure, camera: &OrbitCamera| {
+                        let mut frame = Frame::default();
+                        let (eye, target) = (camera.eye(), camera.target);
+                        scene
+                            .draw(&mut frame, TextureId(0), eye, target, time_sec)
+                            .unwrap();
+                        frame
+                    };
+                    let frame = draw(&mut scene, &OrbitCamera::from_view(view));
+                    let camera = page_camera(view, &frame, size);
+                    scene.set_view(camera, size.x, size.y);
+                    let frame = draw(&mut scene, &camera);
+                    let camera = page_camera(view, &frame, size);
+                    let name =
+                        format!("11 sprites, orbit ({yaw}, {pitch}), {puffs} puffs, t {time_sec}");
+                    let named: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                        .collect();
+                    assert_eq!(named.len(), 3, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                    }));
+                    // The atlas stands at (−3.2, 1.0, 0.0), 0.64 m each side of its centre.
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let puffs_at = frame.sprites.iter().map(|s| Vec3::from(s.center));
+                    let board = (0..49).map(|k| {
+                        let s = |i: i32| (i as f32 / 3.0 - 1.0) * 0.64;
+                        Vec3::new(-3.2 + s(k % 7), 1.0 + s(k / 7), 0.0)
+                    });
+                    let solid: Vec<Vec2> = puffs_at
+                        .chain(board)
+                        .filter_map(|p| project_to_canvas(view_proj, size, p))
+                        .collect();
+                    assert!(solid.len() >= 2 * puffs as usize, "{name}: {COLUMN_GAP}");
+                    let boxes = label_boxes(&frame, &camera, size);
+                    failures.extend(failure_of(|| {
+                        for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
+                            for c in &solid {
+                                assert!(
+                                    !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                    "{name} on {size}: {text:?} at {:?} covers a puff or the atlas at {c}",
+                                    rect.min
+                                );
+                            }
+                        }
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
 fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
     // Figure 4 at its page camera (lessons/03-rotations/lesson.js), both canvases, through the
     // sweep, at the page's axis, angle and v and others across the sliders: each term's label

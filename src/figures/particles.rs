@@ -1234,7 +1234,6 @@ impl SpringFigure {
             solid.extend([Vec3::X, Vec3::Y, Vec3::Z].map(|d| mass + d * SPRING_MASS_M));
             solid.extend([Vec3::X, Vec3::Y, Vec3::Z].map(|d| mass - d * SPRING_MASS_M));
         }
-        let solid = super::project_all(view, &solid);
         for (i, z) in SPRING_ROWS_Z.into_iter().enumerate() {
             let anchor = Vec3::new(SPRING_WALL_X + 0.3, 0.0, z - SPRING_LABEL_BEHIND_M);
             let name = Integrator::ALL[i].name();
@@ -1245,10 +1244,10 @@ impl SpringFigure {
                 name,
                 INTEGRATOR_COLORS[i],
                 0,
-                10,
+                16,
                 8.0,
             );
-            frame.first_clear_label_by(view, 0.0, candidates, super::covers_none(&solid));
+            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &solid));
         }
         frame.keep_box_in_view(
             Vec3::new(SPRING_WALL_X - 0.2, 0.0, SPRING_ROWS_Z[0] - 0.5),

@@ -550,7 +550,7 @@ impl Interpolation {
                 .unwrap_or(glam::Vec2::new(out.x, -out.y));
             let candidates =
                 crate::draw::Label::around_dot(p, KEY_DOT_PX, toward, name, color, 3, 8, 8.0);
-            frame.first_clear_label_by(view, 0.0, candidates, super::covers_none(&[]));
+            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &[]));
         }
         let dot = format_number(a.dot(b));
         let target = if used.dot(b) >= 0.0 { "b" } else { "−b" };
@@ -1181,7 +1181,6 @@ impl Rodrigues {
             // along the axis (4 m), which passes close to the names.
             .chain((0..=200).map(|k| n * (k as f32 * 0.02 - 2.0)))
             .collect();
-        let solid = super::project_all(view, &solid);
         for (at, dot_px, text, color) in [
             (n * 1.7, 0.0, "n", AXIS),
             (v, 12.0, "v", V),
@@ -1195,7 +1194,7 @@ impl Rodrigues {
         ] {
             let candidates =
                 crate::draw::Label::around_dot(at, dot_px, glam::Vec2::X, text, color, 0, 10, 8.0);
-            frame.first_clear_label_by(view, 2.0, candidates, super::covers_none(&solid));
+            frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &solid));
         }
         // Last, once every arrow and the other labels are down: the terms run tip to tail
         // beside v, v′ and the circle, so a label at a term's middle lies on some arrow.
