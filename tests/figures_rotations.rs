@@ -801,3 +801,57 @@ fn circle_labels_stay_beside_their_anchors_and_off_the_dots() {
         }
     }
 }
+
+#[test]
+fn with_a_panicking_slerp_the_key_circle_names_the_dots_it_draws() {
+    // The student's slerp panics while "use my exercise" is on and the keys change (the page's
+    // slider): Figure 1 falls back to the reference and says so, and Figure 2 draws one state,
+    // the new keys': each name of a, −a, b and −b stands at one of the four key dots, which
+    // are where the new keys lie on the circle, and the note's a·b is theirs.
+    let mut scene = Interpolation::new();
+    scene.set_runner(panics);
+    scene.set_use_exercise(true);
+    let mut frame = Frame::default();
+    let note = scene.draw(&mut frame, 0.3).unwrap();
+    assert!(note.contains("panicked"), "{note}");
+    scene
+        .set_keys_euler_deg(Vec3::ZERO, Vec3::new(-126.0, 70.0, -120.0))
+        .unwrap();
+    let note = scene.draw(&mut Frame::default(), 0.3).unwrap();
+    assert!(note.contains("panicked"), "{note}");
+    let mut frame = Frame::default();
+    let said = scene.draw_circle(&mut frame, 0.3).unwrap();
+    let start = Quat::IDENTITY;
+    let end = inbetween::rotation::EulerAngles::new(
+        inbetween::rotation::EulerOrder::IntrinsicXYZ,
+        Vec3::new(-126.0, 70.0, -120.0) * std::f32::consts::PI / 180.0,
+    )
+    .to_quat();
+    let dot = start.dot(end);
+    assert!(dot < 0.0, "keys with a·b < 0: {dot}");
+    assert!(
+        said.starts_with(&format!("a·b = {}", inbetween::figures::format_number(dot))),
+        "{said}"
+    );
+    let (e1, e2) = scene.key_plane();
+    let keys: Vec<Vec3> = frame
+        .markers
+        .iter()
+        .filter(|m| m.size_px == 12.0)
+        .map(|m| Vec3::from(m.center))
+        .collect();
+    assert_eq!(keys.len(), 4);
+    for (q, name) in [(start, "a"), (-start, "−a"), (end, "b"), (-end, "−b")] {
+        let on_circle = Vec3::new(0.0, 1.3, 0.0) + 1.2 * Vec3::new(q.dot(e1), q.dot(e2), 0.0);
+        assert!(
+            keys.iter().any(|k| k.distance(on_circle) < 1e-4),
+            "{name}: no dot at {on_circle}"
+        );
+        let label = frame.labels.iter().find(|l| l.text == name).unwrap();
+        assert!(
+            label.anchor.distance(on_circle) < 1e-4,
+            "{name} named at {}, its dot at {on_circle}",
+            label.anchor
+        );
+    }
+}

@@ -917,6 +917,215 @@ fn lesson_11_integrators_are_named_beside_their_dots() {
 }
 
 #[test]
+fn lesson_11_integrators_are_named_beside_their_dots_when_orbited() {
+    // Figure 2 orbited round its page camera (the page sweep's drag turns it by −1.2 rad and
+    // tilts it by 0.3 rad), both canvases, through the throw, at small and large steps: the
+    // names keep beside their latest dots (at most 100 px off), 6 px apart, off every dot and
+    // path, where the three paths bunch at the top of the throw. As on the page, the figure
+    // places them for the view of the frame before.
+    use inbetween::figures::particles::FreeFallFigure;
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [
+        (-1.216, 0.404),
+        (-0.6, 0.3),
+        (0.6, 0.5),
+        (1.2, 0.4),
+        (-1.5, 0.9),
+    ] {
+        let view = [-0.3, 1.3, 0.0, 5.5, yaw, pitch];
+        for dt in [0.05, 0.03, 0.1, 0.24] {
+            for k in 0..=13 {
+                let t = 1.3 * k as f32 / 13.0;
+                for size in CANVASES {
+                    let mut f = FreeFallFigure::new();
+                    f.set_dt(dt).unwrap();
+                    let mut frame = Frame::default();
+                    f.draw(&mut frame, t).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    f.set_view(camera, size.x, size.y);
+                    let mut frame = Frame::default();
+                    f.draw(&mut frame, t).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    let name = format!("11 free fall, orbit ({yaw}, {pitch}), dt {dt} s, t {t} s");
+                    failures.extend(failure_of(|| {
+                        assert_named_beside_dots(&name, &frame, &camera, size, 100.0)
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
+    // Figure 3 at its page camera (SpringFigure::view) and orbited round it (the page sweep's
+    // drag, −1.2 rad and 0.3 rad, looks along the springs: the rows line up on the screen), both
+    // canvases, at the default step, the caption's 0.1 s and 0.16 s (explicit Euler's mass cut
+    // short at the wall): the three names are shown where the figure put them (so none sits on
+    // another), keep off every dot and line, and cover no wall (its corners and centre) and no
+    // mass (its centre and six points of its rim). As on the page, the figure places them for
+    // the view of the frame before.
+    use inbetween::draw::palette;
+    use inbetween::figures::particles::SpringFigure;
+    const NAMES: [&str; 3] = ["explicit Euler", "semi-implicit Euler", "velocity Verlet"];
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [
+        (0.0, 1.0),
+        (-1.216, 1.304),
+        (1.216, 1.304),
+        (-0.6, 0.6),
+        (0.6, 0.4),
+    ] {
+        let view = [0.0, 0.0, 0.0, 8.0, yaw, pitch];
+        for dt in [0.02, 0.1, 0.16] {
+            for time_sec in [0.0, 0.5, 1.0, 2.5, 3.8] {
+                for size in CANVASES {
+                    let mut scene = SpringFigure::new();
+                    scene.set_dt(dt).unwrap();
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, time_sec).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    scene.set_view(camera, size.x, size.y);
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, time_sec).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    let name = format!("11 spring, orbit ({yaw}, {pitch}), dt {dt}, t {time_sec}");
+                    let named: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                        .collect();
+                    assert_eq!(named.len(), 3, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                    }));
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let solid: Vec<Vec2> = frame
+                        .meshes
+                        .iter()
+                        .filter(|m| m.color.truncate() == palette::GREY)
+                        .flat_map(|m| {
+                            let mut points: Vec<Vec3> = (0..8)
+                                .map(|c| {
+                                    let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                                    m.model.transform_point3(Vec3::new(s(1), s(2), s(4)))
+                                })
+                                .collect();
+                            points.push(m.model.w_axis.truncate());
+                            points
+                        })
+                        .chain(frame.points.iter().flat_map(|p| {
+                            let (c, r) = (Vec3::from(p.center), p.radius.abs());
+                            [
+                                Vec3::ZERO,
+                                Vec3::X,
+                                -Vec3::X,
+                                Vec3::Y,
+                                -Vec3::Y,
+                                Vec3::Z,
+                                -Vec3::Z,
+                            ]
+                            .map(|d| c + d * r)
+                        }))
+                        .filter_map(|p| project_to_canvas(view_proj, size, p))
+                        .collect();
+                    assert_eq!(solid.len(), 27 + 21, "{name}: three walls and three masses");
+                    let boxes = label_boxes(&frame, &camera, size);
+                    failures.extend(failure_of(|| {
+                        for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
+                            for c in &solid {
+                                assert!(
+                                    !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                    "{name} on {size}: {text:?} at {:?} covers a wall or mass at {c}",
+                                    rect.min
+                                );
+                            }
+                        }
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_11_sprite_names_keep_off_the_puffs_and_the_atlas_when_orbited() {
+    // Figure 5 at its page camera (lessons/11-particles/lesson.js) and orbited round it (the
+    // page sweep's drag turns it by −1.2 rad and tilts it by 0.3 rad: the columns line up on
+    // the screen and the atlas's board turns edge on), both canvases, at 30 and 64 puffs,
+    // through the puffs' life: the two columns' names and the atlas's are shown where the
+    // figure put them (so none sits on another), keep off every line, and cover no puff's
+    // centre and no point of the atlas's board (7 × 7 points). As on the page, the figure
+    // places them for the view of the frame before.
+    use inbetween::figures::particles_sprites::{SmokeFigure, COLUMN_GAP};
+    use inbetween::texture::TextureId;
+    const NAMES: [&str; 3] = [
+        "sorted back to front",
+        "unsorted (storage order)",
+        "the atlas: 16 frames",
+    ];
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [(0.25, 0.15), (-0.966, 0.454), (1.466, 0.454), (-0.4, 0.6)] {
+        let view = [0.2, 1.3, 0.0, 8.0, yaw, pitch];
+        for puffs in [30.0, 64.0] {
+            for time_sec in [0.5, 2.0, 4.37] {
+                for size in CANVASES {
+                    let mut scene = SmokeFigure::new();
+                    scene.set_params(puffs, 4.0).unwrap();
+                    let draw = |scene: &mut SmokeFigure, camera: &OrbitCamera| {
+                        let mut frame = Frame::default();
+                        let (eye, target) = (camera.eye(), camera.target);
+                        scene
+                            .draw(&mut frame, TextureId(0), eye, target, time_sec)
+                            .unwrap();
+                        frame
+                    };
+                    let frame = draw(&mut scene, &OrbitCamera::from_view(view));
+                    let camera = page_camera(view, &frame, size);
+                    scene.set_view(camera, size.x, size.y);
+                    let frame = draw(&mut scene, &camera);
+                    let camera = page_camera(view, &frame, size);
+                    let name =
+                        format!("11 sprites, orbit ({yaw}, {pitch}), {puffs} puffs, t {time_sec}");
+                    let named: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                        .collect();
+                    assert_eq!(named.len(), 3, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                    }));
+                    // The atlas stands at (−3.2, 1.0, 0.0), 0.64 m each side of its centre.
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let puffs_at = frame.sprites.iter().map(|s| Vec3::from(s.center));
+                    let board = (0..49).map(|k| {
+                        let s = |i: i32| (i as f32 / 3.0 - 1.0) * 0.64;
+                        Vec3::new(-3.2 + s(k % 7), 1.0 + s(k / 7), 0.0)
+                    });
+                    let solid: Vec<Vec2> = puffs_at
+                        .chain(board)
+                        .filter_map(|p| project_to_canvas(view_proj, size, p))
+                        .collect();
+                    assert!(solid.len() >= 2 * puffs as usize, "{name}: {COLUMN_GAP}");
+                    let boxes = label_boxes(&frame, &camera, size);
+                    failures.extend(failure_of(|| {
+                        for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
+                            for c in &solid {
+                                assert!(
+                                    !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                    "{name} on {size}: {text:?} at {:?} covers a puff or the atlas at {c}",
+                                    rect.min
+                                );
+                            }
+                        }
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
 fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
     // Figure 4 at its page camera (lessons/03-rotations/lesson.js), both canvases, through the
     // sweep, at the page's axis, angle and v and others across the sliders: each term's label
@@ -990,6 +1199,135 @@ fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
         failures.len(),
         failures[..failures.len().min(12)].join("\n")
     );
+}
+
+#[test]
+fn lesson_03_rodrigues_names_keep_apart_with_v_along_the_axis() {
+    // Figure 4 at its page camera, both canvases, through the sweep: at the page's settings,
+    // and with v along the axis n (either way, short and long), where n, v, v′ and the box
+    // meet near the origin on the screen. The names n, v, "v′ = R v" and "turned by q" are
+    // shown where the figure put them (so none sits on another), keep off every line and dot,
+    // and cover no corner of the box. As on the page, the figure places them for the view of the
+    // frame before.
+    use glam::{Mat4, Quat};
+    use inbetween::figures::rotations::{Rodrigues, QUAT_BOX_AT};
+    const NAMES: [&str; 4] = ["n", "v", "v′ = R v", "turned by q"];
+    let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
+    let mut failures = Vec::new();
+    let settings = [
+        (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::splat(-0.6), -217.0, Vec3::splat(-1.21)),
+        (Vec3::splat(0.6), 90.0, Vec3::splat(0.7)),
+        (
+            Vec3::new(0.3, 1.0, 0.2),
+            120.0,
+            Vec3::new(0.3, 1.0, 0.2) * 1.5,
+        ),
+        (
+            Vec3::new(0.3, 1.0, 0.2),
+            60.0,
+            Vec3::new(0.3, 1.0, 0.2) * -0.8,
+        ),
+    ];
+    for (n, angle, v) in settings {
+        for k in [1, 4, 8] {
+            let s = k as f32 / 8.0;
+            for size in CANVASES {
+                let mut f = Rodrigues::new();
+                f.set_axis_angle(n, angle).unwrap();
+                f.set_vector(v).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame, s).unwrap();
+                let camera = page_camera(view, &frame, size);
+                f.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame, s).unwrap();
+                let camera = page_camera(view, &frame, size);
+                let name = format!("03 Rodrigues names, n {n}, θ {angle}°, v {v}, s {s}");
+                let named: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                    .collect();
+                assert_eq!(named.len(), 4, "{name}");
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                }));
+                // The box, turned by the quaternion of the rotation swept so far.
+                let q = Quat::from_axis_angle(n.normalize(), s * angle.to_radians());
+                let place = Mat4::from_translation(QUAT_BOX_AT) * Mat4::from_quat(q);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let corners: Vec<Vec2> = (0..8)
+                    .map(|c| {
+                        let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                        place.transform_point3(Vec3::new(0.22 * s(1), 0.12 * s(2), 0.08 * s(4)))
+                    })
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let boxes = label_boxes(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
+                        for c in &corners {
+                            assert!(
+                                !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                "{name} on {size}: {text:?} at {:?} covers the box at {c}",
+                                rect.min
+                            );
+                        }
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_03_circle_key_names_keep_off_the_dots_when_orbited() {
+    // Figure 2 at its page camera (lessons/03-rotations/lesson.js) and orbited round it (the
+    // page sweep's drag turns it by −1.2 rad and tilts it by 0.3 rad), both canvases, at the
+    // default keys and at 170° and −170° about x (a and −b 10° apart), on either arc, at t = 0,
+    // where slerp's and nlerp's dots sit on a, and across the timeline: the names a, −a, b and
+    // −b are shown where the figure put them (so none sits on another) and keep off every dot
+    // and line. As on the page, the figure places them for the view of the frame before.
+    use inbetween::figures::rotations::Interpolation;
+    const NAMES: [&str; 4] = ["a", "−a", "b", "−b"];
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [(0.0, 0.0), (-1.216, 0.304), (1.216, 0.304), (-0.6, 0.6)] {
+        let view = [0.0, 1.3, 0.0, 5.0, yaw, pitch];
+        for (across, long) in [(false, false), (false, true), (true, false), (true, true)] {
+            for t in [0.0, 0.02, 0.3, 0.5, 1.0] {
+                for size in CANVASES {
+                    let mut scene = Interpolation::new();
+                    if across {
+                        scene
+                            .set_keys_euler_deg(
+                                Vec3::new(170.0, 0.0, 0.0),
+                                Vec3::new(-170.0, 0.0, 0.0),
+                            )
+                            .unwrap();
+                    }
+                    scene.set_long_arc(long);
+                    let mut frame = Frame::default();
+                    scene.draw_circle(&mut frame, t).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    scene.set_circle_view(camera, size.x, size.y);
+                    let mut frame = Frame::default();
+                    scene.draw_circle(&mut frame, t).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    let name = format!(
+                        "03 circle, orbit ({yaw}, {pitch}), across {across}, long {long}, t {t}"
+                    );
+                    let named: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                        .collect();
+                    assert_eq!(named.len(), 4, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
 }
 
 #[test]

@@ -220,6 +220,31 @@ pub fn unit_quat_problem(q: Quat, tolerance: f32) -> Option<String> {
     }
 }
 
+/// A test for [`Frame::first_clear_label_by`] on `view` (a view-projection and the canvas size,
+/// CSS pixels): the label's box lies inside the canvas where the layout first puts it (not pushed
+/// in from an edge, which the layout marks with a leader line), and it and 2 px round it hold
+/// none of `points` (things the frame does not list: a wall, a mass, a board).
+pub fn clear_of(
+    view: Option<(glam::Mat4, glam::Vec2)>,
+    points: &[glam::Vec3],
+) -> impl Fn(crate::draw::layout::Rect) -> bool {
+    let (view_proj, size) = view.unwrap_or((glam::Mat4::IDENTITY, glam::Vec2::ZERO));
+    let on_canvas: Vec<glam::Vec2> = points
+        .iter()
+        .filter_map(|&p| crate::camera::project_to_canvas(view_proj, size, p))
+        .collect();
+    move |rect| {
+        let edge = crate::draw::layout::EDGE_PX;
+        let inside =
+            rect.min.cmpgt(glam::Vec2::splat(edge)).all() && rect.max().cmplt(size - edge).all();
+        let (lo, hi) = (rect.min - 2.0, rect.max() + 2.0);
+        inside
+            && on_canvas
+                .iter()
+                .all(|c| !(c.cmpgt(lo).all() && c.cmplt(hi).all()))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -938,7 +938,7 @@ impl FreeFallFigure {
     }
 
     /// Names each integrator beside its latest dot, as the text names it: the first side round
-    /// the dot (then 12, 24, 36 and 48 px further out) that covers no dot, path or name already placed,
+    /// the dot (then 12, 24, … 84 px further out) that covers no dot, path or name already placed,
     /// on the last frame's view, starting above and right (the throw rises to the right, so the
     /// paths run below and left of the dots on the way up). The three dots start together and
     /// part slowly, so only the names tell them apart where the colours overlap.
@@ -960,15 +960,13 @@ impl FreeFallFigure {
         for (k, integrator) in Integrator::ALL.iter().enumerate() {
             let dot = self.paths[k][k_now];
             let color = INTEGRATOR_COLORS[k];
-            let candidates = [0.0, 12.0, 24.0, 36.0, 48.0]
-                .into_iter()
-                .flat_map(|out_px| {
-                    sides.map(|side| {
-                        let clear_px = STEP_DOT_PX + 2.0 * out_px;
-                        let name = integrator.name().to_string();
-                        crate::draw::Label::off_dot(dot, clear_px, side, name, color, 0)
-                    })
-                });
+            let candidates = (0..8).map(|step| 12.0 * step as f32).flat_map(|out_px| {
+                sides.map(|side| {
+                    let clear_px = STEP_DOT_PX + 2.0 * out_px;
+                    let name = integrator.name().to_string();
+                    crate::draw::Label::off_dot(dot, clear_px, side, name, color, 0)
+                })
+            });
             frame.first_clear_label(view, candidates);
         }
     }
@@ -1050,6 +1048,8 @@ const SPRING_ROWS_Z: [f32; 3] = [-0.9, 0.0, 0.9];
 /// How far behind its row (along −z) an integrator's name sits, metres: about half-way to the
 /// next row, clear of the coils (±0.1 m).
 const SPRING_LABEL_BEHIND_M: f32 = 0.5;
+/// Radius of each spring's mass, metres.
+const SPRING_MASS_M: f32 = 0.15;
 
 /// One mass on a spring (`a = −ω² x`, no damping) stepped by each integrator, side by side, with
 /// the exact motion `x(t) = x₀ cos ωt` marked in each row.
@@ -1058,6 +1058,9 @@ pub struct SpringFigure {
     dt_sec: f32,
     /// Each integrator's (x, v) after 0, 1, 2, … steps, in [`Integrator::ALL`] order.
     states: [Vec<(f32, f32)>; 3],
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the integrators'
+    /// names take places that cover no wall, mass, coil, bar or other name.
+    view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
 }
 
 impl Default for SpringFigure {
@@ -1071,9 +1074,18 @@ impl SpringFigure {
         let mut f = Self {
             dt_sec: SPRING_DEFAULT_DT,
             states: Default::default(),
+            view: None,
         };
         f.integrate();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the integrators' names are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, glam::Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The camera the page starts with (target x, y, z, distance in metres, yaw and pitch in
@@ -1189,14 +1201,7 @@ impl SpringFigure {
                 EXACT_COLOR,
                 5.0,
             );
-            frame.point_on_top(Vec3::new(shown, y, z), 0.15, color);
-            // Just right of the wall, behind the row (up the screen), reading along the spring:
-            // on the wall's top the label hid it, and the rows' gaps have room.
-            frame.label(
-                Vec3::new(SPRING_WALL_X + 0.3, 0.0, z - SPRING_LABEL_BEHIND_M),
-                Integrator::ALL[i].name(),
-                color,
-            );
+            frame.point_on_top(Vec3::new(shown, y, z), SPRING_MASS_M, color);
         }
         frame.label_with_priority(
             Vec3::new(exact, y, SPRING_ROWS_Z[2] + 0.45),
@@ -1204,6 +1209,46 @@ impl SpringFigure {
             EXACT_COLOR,
             1,
         );
+        // Each name just right of its wall, behind its row (up the screen from the front),
+        // reading along the spring; on the last frame's view, the first place round there (then
+        // further out) that covers no wall (its corners and centre), mass (its centre and six
+        // points of its rim), coil, bar, tick or name placed before it: orbited, the rows line
+        // up and the walls and a mass cut short at the wall come under the names.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let mut solid = Vec::new();
+        for (i, z) in SPRING_ROWS_Z.into_iter().enumerate() {
+            let wall = Vec3::new(SPRING_WALL_X - 0.05, y, z);
+            let half = Vec3::new(0.05, 0.3, 0.3);
+            solid.push(wall);
+            solid.extend((0..8).map(|c| {
+                let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                wall + half * Vec3::new(s(1), s(2), s(4))
+            }));
+            let x = self.states[i][k]
+                .0
+                .clamp(-SPRING_DRAW_MAX_M, SPRING_DRAW_MAX_M);
+            let mass = Vec3::new(x, y, z);
+            solid.push(mass);
+            solid.extend([Vec3::X, Vec3::Y, Vec3::Z].map(|d| mass + d * SPRING_MASS_M));
+            solid.extend([Vec3::X, Vec3::Y, Vec3::Z].map(|d| mass - d * SPRING_MASS_M));
+        }
+        for (i, z) in SPRING_ROWS_Z.into_iter().enumerate() {
+            let anchor = Vec3::new(SPRING_WALL_X + 0.3, 0.0, z - SPRING_LABEL_BEHIND_M);
+            let name = Integrator::ALL[i].name();
+            let candidates = crate::draw::Label::around_dot(
+                anchor,
+                0.0,
+                glam::Vec2::X,
+                name,
+                INTEGRATOR_COLORS[i],
+                0,
+                16,
+                8.0,
+            );
+            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &solid));
+        }
         frame.keep_box_in_view(
             Vec3::new(SPRING_WALL_X - 0.2, 0.0, SPRING_ROWS_Z[0] - 0.5),
             Vec3::new(SPRING_DRAW_MAX_M + 0.2, 0.5, SPRING_ROWS_Z[2] + 0.6),

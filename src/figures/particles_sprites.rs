@@ -43,6 +43,9 @@ pub struct SmokeFigure {
     positions: Vec<Vec3>,
     ages: Vec<f32>,
     order: Vec<(f32, u32)>,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the names take
+    /// places that cover no puff's centre, the atlas's board or each other.
+    view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
 }
 
 impl Default for SmokeFigure {
@@ -62,6 +65,15 @@ impl SmokeFigure {
             positions: Vec::with_capacity(MAX_PUFFS),
             ages: Vec::with_capacity(MAX_PUFFS),
             order: Vec::with_capacity(MAX_PUFFS),
+            view: None,
+        }
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the names are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, glam::Vec2::new(width_px, height_px)));
         }
     }
 
@@ -157,8 +169,17 @@ impl SmokeFigure {
             }
         }
         let top = SOURCE + Vec3::new(0.0, 0.55 * self.lifetime_sec + 0.9, 0.0);
-        frame.label(top, "sorted back to front", palette::DARK);
-        frame.label(top + COLUMN_GAP, "unsorted (storage order)", palette::DARK);
+        let mut names = vec![
+            (top, "sorted back to front"),
+            (top + COLUMN_GAP, "unsorted (storage order)"),
+        ];
+        // What the names must not cover: the puffs' centres (in both columns) and, when shown,
+        // the atlas's board at 7 × 7 points.
+        let mut solid: Vec<Vec3> = self
+            .positions
+            .iter()
+            .flat_map(|&p| [p, p + COLUMN_GAP])
+            .collect();
         if self.show_atlas {
             // Stand the square up (its z = −1 edge, texel row 0, at the top) facing +z.
             let model = Mat4::from_translation(ATLAS_AT)
@@ -169,11 +190,34 @@ impl SmokeFigure {
             let board = Mat4::from_translation(ATLAS_AT - Vec3::Z * 0.03)
                 * Mat4::from_scale(Vec3::new(ATLAS_HALF + 0.04, ATLAS_HALF + 0.04, 0.01));
             frame.mesh(MeshId::CUBE, board, palette::DARK);
-            frame.label(
+            names.push((
                 ATLAS_AT + Vec3::new(-ATLAS_HALF, ATLAS_HALF + 0.2, 0.0),
                 "the atlas: 16 frames",
+            ));
+            solid.extend((0..49).map(|k| {
+                let s = |i: i32| (i as f32 / 3.0 - 1.0) * (ATLAS_HALF + 0.04);
+                ATLAS_AT + Vec3::new(s(k % 7), s(k / 7), 0.0)
+            }));
+        }
+        // Each name at the first place round its spot (right first, then further out), on the
+        // last frame's view, that covers no puff's centre, the board, a line or a name placed
+        // before it: orbited, a column's name lands on the other column's top, and the atlas's
+        // on its board.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        for (at, text) in names {
+            let candidates = crate::draw::Label::around_dot(
+                at,
+                0.0,
+                glam::Vec2::X,
+                text,
                 palette::DARK,
+                0,
+                10,
+                8.0,
             );
+            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &solid));
         }
         // The atlas, both columns over their whole life (the wind carries a puff 0.35 m/s along
         // x and 0.3 m/s along z, ±0.6 m of wobble) and their labels stay in view.

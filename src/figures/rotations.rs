@@ -91,6 +91,9 @@ pub struct Interpolation {
     use_exercise: bool,
     runner: Runner,
     path: Vec<Vec3>,
+    /// The camera and canvas size (CSS pixels) Figure 2's last frame was drawn with: the names
+    /// of a, b, −a and −b take places beside their dots that cover no dot or line.
+    circle_view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
 }
 
 impl Default for Interpolation {
@@ -116,6 +119,7 @@ impl Interpolation {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             path: Vec::with_capacity(65),
+            circle_view: None,
         };
         scene.set_keys(Self::START_DEG * DEG, Self::END_DEG * DEG);
         scene
@@ -168,6 +172,19 @@ impl Interpolation {
     /// How the student's exercise is called (natively: in-process; in the page: the sandbox).
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
+    }
+
+    /// The camera and canvas size (CSS pixels) Figure 2 is drawn for (its last frame's), which
+    /// the names of its keys are placed for.
+    pub fn set_circle_view(
+        &mut self,
+        camera: crate::camera::OrbitCamera,
+        width_px: f32,
+        height_px: f32,
+    ) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.circle_view = Some((camera, glam::Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The end key's quaternion as used on the current arc (negated when needed).
@@ -450,9 +467,9 @@ impl Interpolation {
             palette::PURPLE,
             crate::draw::StrokeStyle::dashed(3.0, 0.12, 0.08),
         );
-        // Every label reads away from the circle: rightwards on its right half, leftwards on its
-        // left half, so none covers the circle, its dots or the other labels. The arcs' labels
-        // are short (the note gives the turn, 2Ω) so they fit beside the circle.
+        // The arcs' labels read away from the circle: rightwards on its right half, leftwards on
+        // its left half, so neither covers the circle or its dots. They are short (the note
+        // gives the turn, 2Ω) so they fit beside the circle.
         let outward = |frame: &mut Frame, at: Vec3, text: String, color: Vec3, priority: i32| {
             frame.label_with_priority(at, text, color, priority);
             if let Some(label) = frame.labels.last_mut() {
@@ -477,21 +494,14 @@ impl Interpolation {
             2,
         );
         // The four quaternions of the two rotations: a and −a, b and −b.
-        for (q, name, color) in [
+        let keys = [
             (a, "a", palette::GREY),
             (-a, "−a", palette::GREY),
             (b, "b", palette::KEY),
             (-b, "−b", palette::KEY),
-        ] {
-            let p = to_world(q);
-            frame.marker(p, 12.0, color);
-            outward(
-                frame,
-                p + (p - CIRCLE_CENTRE) * 0.12,
-                name.to_string(),
-                color,
-                3,
-            );
+        ];
+        for (q, _, color) in keys {
+            frame.marker(to_world(q), KEY_DOT_PX, color);
         }
         // lerp walks the chord at equal steps of t; nlerp pushes each step out onto the circle
         // (a ray from the centre); slerp walks the arc at equal angles.
@@ -522,6 +532,26 @@ impl Interpolation {
             14.0,
             slerp_color,
         );
+        // The keys' names, once every dot and line is down: each at the first place round its
+        // dot, outward first (then further out), on the last frame's view, that covers no dot,
+        // line or name placed before it (near t = 0 or 1, slerp's and nlerp's dots sit on a
+        // key's).
+        let view = self
+            .circle_view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        for (q, name, color) in keys {
+            let p = to_world(q);
+            let out = p - CIRCLE_CENTRE;
+            let toward = view
+                .and_then(|(view_proj, size)| {
+                    let at = |x| crate::camera::project_to_canvas(view_proj, size, x);
+                    Some(at(p + out)? - at(p)?)
+                })
+                .unwrap_or(glam::Vec2::new(out.x, -out.y));
+            let candidates =
+                crate::draw::Label::around_dot(p, KEY_DOT_PX, toward, name, color, 3, 8, 8.0);
+            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &[]));
+        }
         let dot = format_number(a.dot(b));
         let target = if used.dot(b) >= 0.0 { "b" } else { "−b" };
         let why = match (self.arc, a.dot(b) < 0.0) {
@@ -603,6 +633,9 @@ impl Interpolation {
         }
     }
 }
+
+/// Figure 2's dots of a, −a, b and −b, CSS pixels across.
+const KEY_DOT_PX: f32 = 12.0;
 
 /// Figure 2's circle of unit quaternions: its centre and radius (metres).
 pub const CIRCLE_CENTRE: Vec3 = Vec3::new(0.0, 1.3, 0.0);
@@ -1084,10 +1117,7 @@ impl Rodrigues {
         // The axis n, both ways through the origin, and v.
         frame.wide_line(-n * 2.0, Vec3::ZERO, AXIS, crate::draw::ARROW_PX);
         frame.arrow(Vec3::ZERO, n * 2.0, AXIS, 0.15);
-        // Beside the shaft, below the tip: at the tip the label leaves the top of the canvas.
-        frame.label(n * 1.7, "n", AXIS);
         frame.arrow(Vec3::ZERO, v, V, 0.12);
-        frame.label(v, "v", V);
         // The circle the tip sweeps, about its centre n (n·v).
         let centre = n * n.dot(v);
         self.arc.clear();
@@ -1122,8 +1152,6 @@ impl Rodrigues {
         // v′ = R(sθ) v, from the matrix (the student's when used).
         let turned = self.matrix_at(phi) * v;
         frame.arrow(Vec3::ZERO, turned, ROTATED, 0.14);
-        // Just past the tip: the last term's label sits near the tip when that term is short.
-        frame.label(turned * 1.15, "v′ = R v", ROTATED);
         // A small box turned by the quaternion of the same rotation, beside the arrows so that
         // it hides none of them and their labels.
         let q = self.quat_at(phi);
@@ -1134,7 +1162,40 @@ impl Rodrigues {
             palette::GREY,
         );
         frame.axes(place, 0.4);
-        frame.label(QUAT_BOX_AT - Vec3::Y * 0.5, "turned by q", palette::GREY);
+        // The names, once every arrow is down, each at the first place round its anchor (right
+        // first, then further out) on the last frame's view that covers no line, dot or name
+        // placed before it, nor the box's corners: with v along the axis, n, v, v′ and
+        // the box all meet near the origin on the screen. n beside its shaft, below the tip (at
+        // the tip the name leaves the top of the canvas); v at its tip; v′ just past its tip
+        // (the last term's label sits near the tip when that term is short); the box's name
+        // below it.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let solid: Vec<Vec3> = (0..8)
+            .map(|c| {
+                let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                place.transform_point3(Vec3::new(0.22 * s(1), 0.12 * s(2), 0.08 * s(4)))
+            })
+            // The axis every 2 cm: the frame's own test samples a line at 17 points, sparse
+            // along the axis (4 m), which passes close to the names.
+            .chain((0..=200).map(|k| n * (k as f32 * 0.02 - 2.0)))
+            .collect();
+        for (at, dot_px, text, color) in [
+            (n * 1.7, 0.0, "n", AXIS),
+            (v, 12.0, "v", V),
+            (turned * 1.15, 0.0, "v′ = R v", ROTATED),
+            (
+                QUAT_BOX_AT - Vec3::Y * 0.5,
+                0.0,
+                "turned by q",
+                palette::GREY,
+            ),
+        ] {
+            let candidates =
+                crate::draw::Label::around_dot(at, dot_px, glam::Vec2::X, text, color, 0, 10, 8.0);
+            frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &solid));
+        }
         // Last, once every arrow and the other labels are down: the terms run tip to tail
         // beside v, v′ and the circle, so a label at a term's middle lies on some arrow.
         for (from, to, text, color) in terms {

@@ -77,6 +77,9 @@ impl SmokeScene {
             }
         };
         let (eye, target) = (viewer.camera.eye(), viewer.camera.target);
+        // The view the names are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, atlas, eye, target, time_sec)

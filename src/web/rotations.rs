@@ -99,6 +99,9 @@ impl InterpolationScene {
     /// Draws Figure 2, the keys' circle of unit quaternions, at `t ∈ [0, 1]`; returns its note.
     #[wasm_bindgen(js_name = drawCircle)]
     pub fn draw_circle(&mut self, viewer: &mut Viewer, t: f32) -> Result<String, JsError> {
+        // The view the keys' names are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_circle_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw_circle(&mut viewer.renderer.frame, t)

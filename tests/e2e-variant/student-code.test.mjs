@@ -70,7 +70,17 @@ for (const backend of ['webgl2', 'webgpu']) {
       assert.match(rodNote, /differs/, rodNote);
       assert.equal(await background(rodrigues.locator('.exercise-note')), 'rgb(253, 232, 232)', 'a difference is red');
       assert.match(rodNote, /yours \(.*\), reference \(/, rodNote);
-      await page.screenshot({ path: `${SHOTS}/student-bugs-03-${backend}.png`, fullPage: true });
+      // As tests/e2e/lessons.mjs's fullPageShot: Playwright's fullPage capture clears the
+      // canvases behind our back, and a figure off screen keeps its last drawn frame (while its
+      // labels, HTML over the canvas, follow the scene): the viewport is made as tall as the
+      // page, so every figure is on screen and draws its current frame before the capture.
+      const viewport = page.viewportSize();
+      const height = await page.evaluate(() => document.documentElement.scrollHeight);
+      await page.setViewportSize({ width: viewport.width, height: Math.min(height, 8000) });
+      await page.evaluate(() => window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true)));
+      await frames(page, 4);
+      await page.screenshot({ path: `${SHOTS}/student-bugs-03-${backend}.png` });
+      await page.setViewportSize(viewport);
 
       assert.deepEqual(await page.evaluate(() => window.__inbetween.errors), [], 'nothing reached the error banner');
       assert.deepEqual(problems, []);
