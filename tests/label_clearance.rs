@@ -1477,12 +1477,16 @@ fn lesson_06_selected_joint_name_keeps_off_the_path_ticks_and_bones() {
 #[test]
 fn lesson_06_gltf_root_name_keeps_off_the_bones() {
     // Lesson 06's glTF figure at the camera the page fits to each sample character
-    // (www/gltf-figure.js: the figure's fit, yaw 0.6, pitch 0.15), both canvases, across the
-    // first clip: "root" is shown where the figure put it and keeps 2 px off every bone and dot
-    // (CesiumMan's spine rises straight up from its root). As on the page, the figure places
-    // it for the view of the frame before. The characters are read from ../shared/assets/gltf
-    // (or INBETWEEN_GLTF_ASSETS); without them the check is not run, as in tests/gltf_import.rs.
+    // (www/gltf-figure.js: the figure's fit, yaw 0.6, pitch 0.15) and orbited round it (from
+    // the side, from behind, from above, from below), both canvases, across the first clip:
+    // "root" is shown where the figure put it, keeps 2 px off every bone and dot (CesiumMan's
+    // spine rises straight up from its root) and off the mesh's grey dots (its hips surround
+    // the root), and ends within 60 px of the root's ball, so that it still names it. As on the
+    // page, the figure places it for the view of the frame before. The characters are read
+    // from ../shared/assets/gltf (or INBETWEEN_GLTF_ASSETS); without them the check is not run,
+    // as in tests/gltf_import.rs.
     use inbetween::figures::gltf::GltfFigure;
+    use inbetween::figures::palette;
     let dir = std::env::var_os("INBETWEEN_GLTF_ASSETS")
         .map(std::path::PathBuf::from)
         .unwrap_or_else(|| {
@@ -1500,28 +1504,68 @@ fn lesson_06_gltf_root_name_keeps_off_the_bones() {
     let mut failures = Vec::new();
     for character in ["CesiumMan", "RiggedFigure"] {
         let bytes = std::fs::read(dir.join(format!("{character}.gltf"))).unwrap();
-        for k in 0..6 {
-            for size in CANVASES {
-                let mut scene = GltfFigure::new();
-                scene.load(character, &bytes).unwrap();
-                let t = k as f32 / 6.0 * scene.duration_sec();
-                let [x, y, z, distance] = scene.fit();
-                let view = [x, y, z, distance, 0.6, 0.15];
-                let mut frame = Frame::default();
-                scene.draw(&mut frame, t, &[]).unwrap();
-                let camera = page_camera(view, &frame, size);
-                scene.set_view(camera, size.x, size.y);
-                let mut frame = Frame::default();
-                scene.draw(&mut frame, t, &[]).unwrap();
-                let camera = page_camera(view, &frame, size);
-                let name = format!("06 glTF {character}, t {t}");
-                let root: Vec<usize> = (0..frame.labels.len())
-                    .filter(|&i| frame.labels[i].text == "root")
-                    .collect();
-                assert_eq!(root.len(), 1, "{name}");
-                failures.extend(failure_of(|| {
-                    assert_shown_clear_by(&name, &frame, &camera, size, &root, 2.0)
-                }));
+        for (yaw, pitch) in [
+            (0.6, 0.15),
+            (-0.6, 0.15),
+            (1.6, 0.3),
+            (3.1, 0.15),
+            (0.6, 0.9),
+            (0.6, -0.3),
+        ] {
+            for k in 0..6 {
+                for size in CANVASES {
+                    let mut scene = GltfFigure::new();
+                    scene.load(character, &bytes).unwrap();
+                    let t = k as f32 / 6.0 * scene.duration_sec();
+                    let [x, y, z, distance] = scene.fit();
+                    let view = [x, y, z, distance, yaw, pitch];
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, t, &[]).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    scene.set_view(camera, size.x, size.y);
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, t, &[]).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    let name = format!("06 glTF {character}, t {t}, orbit ({yaw}, {pitch})");
+                    let root: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| frame.labels[i].text == "root")
+                        .collect();
+                    assert_eq!(root.len(), 1, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &root, 2.0)
+                    }));
+                    // The mesh's dots are points of a radius in metres: their disc on screen,
+                    // measured along the camera's right.
+                    assert!(!frame.points.is_empty(), "{name}: no mesh dots drawn");
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let at = |p: Vec3| project_to_canvas(view_proj, size, p);
+                    let right = camera.view().row(0).truncate();
+                    let ball = frame
+                        .meshes
+                        .iter()
+                        .find(|m| m.color.truncate() == palette::ORANGE)
+                        .unwrap();
+                    let ball = at(ball.model.w_axis.truncate()).unwrap();
+                    let boxes = label_boxes(&frame, &camera, size);
+                    failures.extend(failure_of(|| {
+                        let (_, rect) = boxes.iter().find(|(t, _)| t == "root").unwrap();
+                        let gap = rect.nearest(ball).distance(ball);
+                        assert!(
+                            gap <= 60.0,
+                            "{name} on {size}: \"root\" {gap} px from the root's ball"
+                        );
+                        for d in &frame.points {
+                            let centre = Vec3::from(d.center);
+                            let Some(c) = at(centre) else { continue };
+                            let r = at(centre + right * d.radius).map_or(0.0, |e| e.distance(c));
+                            assert!(
+                                rect.nearest(c).distance(c) > r + 2.0,
+                                "{name} on {size}: \"root\" at {:?} within 2 px of a mesh dot at {c}",
+                                rect.min
+                            );
+                        }
+                    }));
+                }
             }
         }
     }
