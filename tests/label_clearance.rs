@@ -1599,8 +1599,9 @@ fn lesson_06_gltf_root_name_keeps_off_the_bones() {
     // the side, from behind, from above, from below), both canvases, across the first clip:
     // "root" is shown where the figure put it, keeps 2 px off every bone and dot (CesiumMan's
     // spine rises straight up from its root) and off the mesh's grey dots (its hips surround
-    // the root), and ends within 60 px of the root's ball, so that it still names it. As on the
-    // page, the figure places it for the view of the frame before. The characters are read
+    // the root), keeps 6 px off every other joint's ball (beside one, it would seem to name it)
+    // and ends within 60 px of the root's ball, so that it still names it. As on the page, the
+    // figure places it for the view of the frame before. The characters are read
     // from ../shared/assets/gltf (or INBETWEEN_GLTF_ASSETS); without them the check is not run,
     // as in tests/gltf_import.rs.
     use inbetween::figures::gltf::GltfFigure;
@@ -1672,6 +1673,19 @@ fn lesson_06_gltf_root_name_keeps_off_the_bones() {
                             gap <= 60.0,
                             "{name} on {size}: \"root\" {gap} px from the root's ball"
                         );
+                        // Nor beside another joint's ball (dark), which it would seem to name.
+                        let joints = frame.meshes.iter();
+                        for m in joints.filter(|m| m.color.truncate() == palette::DARK) {
+                            let centre = m.model.w_axis.truncate();
+                            let Some(c) = at(centre) else { continue };
+                            let edge = at(centre + right * m.model.x_axis.length());
+                            let r = edge.map_or(0.0, |e| e.distance(c));
+                            let gap = rect.nearest(c).distance(c);
+                            assert!(
+                                gap > r + 6.0,
+                                "{name} on {size}: \"root\" {gap} px from a joint's centre at {c}"
+                            );
+                        }
                         for d in &frame.points {
                             let centre = Vec3::from(d.center);
                             let Some(c) = at(centre) else { continue };

@@ -577,8 +577,8 @@ impl GltfFigure {
             .expect("a skeleton has a root");
         // The root's name above its ball; where a bone or the mesh's dots lie there (CesiumMan's
         // spine rises straight up from its root, and its hips surround it), the first place
-        // round the ball clear of the bones and the dots by a few pixels on the last frame's
-        // view, to the side first.
+        // round the ball clear of the bones and the dots by a few pixels, and of the other
+        // joints by more, on the last frame's view, to the side first.
         let at = world(&self.model[root]);
         let dots = self.show_mesh && (!skinning || self.bind_dots);
         let view = self
@@ -620,10 +620,23 @@ impl GltfFigure {
             self.dots_px.extend(c.dots.iter().filter_map(px));
         }
         let dots_px = &self.dots_px;
-        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |rect| {
-            dots_px
+        // Nor beside another joint's ball, which it would seem to name.
+        let joints_px: Vec<Vec2> = match view {
+            Some((view_proj, size)) => self
+                .model
                 .iter()
-                .all(|&d| rect.nearest(d).distance(d) > dot_clear_px)
+                .enumerate()
+                .filter(|&(i, _)| i != root)
+                .filter_map(|(_, m)| crate::camera::project_to_canvas(view_proj, size, world(m)))
+                .collect(),
+            None => Vec::new(),
+        };
+        let joint_clear_px = 0.5 * ball_px + 7.0;
+        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |rect| {
+            let clear = |points: &[Vec2], gap: f32| {
+                points.iter().all(|&d| rect.nearest(d).distance(d) > gap)
+            };
+            clear(dots_px, dot_clear_px) && clear(&joints_px, joint_clear_px)
         });
         if dots {
             let radius = DOT_RADIUS * c.size;
