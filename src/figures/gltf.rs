@@ -631,7 +631,7 @@ impl GltfFigure {
                 .collect(),
             None => Vec::new(),
         };
-        let joint_clear_px = 0.5 * ball_px + 7.0;
+        let joint_clear_px = 0.5 * ball_px + 12.0;
         frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |rect| {
             let clear = |points: &[Vec2], gap: f32| {
                 points.iter().all(|&d| rect.nearest(d).distance(d) > gap)
