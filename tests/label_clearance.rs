@@ -533,6 +533,124 @@ fn lesson_04_key_names_sit_at_their_keys_and_off_the_paths() {
 }
 
 #[test]
+fn lesson_04_thirds_names_sit_at_their_aeroplanes_and_off_the_paths() {
+    // Figure 1 with "a third, three times" on, at its page camera (lessons/04-rigid-motions/
+    // lesson.js) and orbited round it, both canvases, for the page's key B, a turn of 90° and one
+    // of 0° (where the two methods' thirds coincide), all three methods shown and each of the two
+    // with thirds alone, at the keys and half-way: each "k/3" (the screw's third lands on B,
+    // which "B" names) is shown where the figure put it, keeps 2 px off every dot, tick and line
+    // (the paths, the axes, the screw axis), covers no aeroplane's part (its boxes' corners,
+    // edge and face middles and centres), and ends within three label heights (48 px) of its
+    // own aeroplane (the method's first third applied k times to A). As on the page, the figure
+    // places them for the view of the frame before.
+    use inbetween::figures::palette;
+    use inbetween::figures::rigid::{Method, RigidMotion};
+    let mut failures = Vec::new();
+    for (angle, show) in [(150.0, 0), (150.0, 1), (150.0, 3), (90.0, 0), (0.0, 0)] {
+        for t in [0.0, 0.5, 1.0] {
+            for (yaw, pitch) in [
+                (0.35, 0.4),
+                (0.0, 0.2),
+                (1.0, 0.4),
+                (-0.5, 0.6),
+                (0.35, 1.1),
+                (2.5, 0.3),
+            ] {
+                for size in CANVASES {
+                    let mut scene = RigidMotion::new();
+                    scene
+                        .set_end(Vec3::new(0.2, 1.0, 0.3), angle, Vec3::new(1.5, 1.4, 0.3))
+                        .unwrap();
+                    scene.set_show(show).unwrap();
+                    scene.set_thirds(true);
+                    let view = [0.0, 1.0, 0.0, 6.5, yaw, pitch];
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, t).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    scene.set_view(camera, size.x, size.y);
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, t).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    let name = format!(
+                        "04 thirds, angle {angle}°, show {show}, t {t}, orbit ({yaw}, {pitch})"
+                    );
+                    // The screw's 3/3 is B, which "B" names.
+                    let thirds: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| frame.labels[i].text.ends_with("/3"))
+                        .collect();
+                    assert_eq!(thirds.len(), [5, 3, 0, 2][show as usize], "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &thirds, 2.0)
+                    }));
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let at = |p: Vec3| project_to_canvas(view_proj, size, p);
+                    // Each aeroplane part's points: a box's corners, edge and face middles and
+                    // centre.
+                    let points = |m: &inbetween::draw::MeshDraw| -> Vec<Vec2> {
+                        (0..27)
+                            .filter_map(|i| {
+                                let c = |k: i32| (k % 3 - 1) as f32;
+                                at(m.model
+                                    .transform_point3(Vec3::new(c(i), c(i / 3), c(i / 9))))
+                            })
+                            .collect()
+                    };
+                    let parts: Vec<Vec2> = frame.meshes.iter().flat_map(points).collect();
+                    let placed = layout(&frame, &camera, size);
+                    let a = scene.motion(Method::LerpSlerp, 0.0);
+                    for &i in &thirds {
+                        let label = &frame.labels[i];
+                        let (_, b, p) = &placed[i];
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        let method = if label.color == palette::Z_AXIS {
+                            Method::Screw
+                        } else {
+                            Method::LerpSlerp
+                        };
+                        let step = scene.motion(method, 1.0 / 3.0) * a.conjugate();
+                        let k: usize = label.text[..1].parse().unwrap();
+                        // The gap to its aeroplane: to the points of the four boxes from the one
+                        // centred there.
+                        let gap = || {
+                            let centre = (0..k).fold(a, |f, _| step * f).translation();
+                            let first = frame
+                                .meshes
+                                .iter()
+                                .position(|m| m.model.w_axis.truncate().distance(centre) < 1e-4)
+                                .unwrap();
+                            frame.meshes[first..first + 4]
+                                .iter()
+                                .flat_map(points)
+                                .map(|q| rect.nearest(q).distance(q))
+                                .fold(f32::MAX, f32::min)
+                        };
+                        let text = &label.text;
+                        failures.extend(failure_of(|| {
+                            let own = gap();
+                            assert!(
+                                own <= 48.0,
+                                "{name} on {size}: {text:?} {own} px from its aeroplane"
+                            );
+                            for q in &parts {
+                                assert!(
+                                    !(q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all()),
+                                    "{name} on {size}: {text:?} at {:?} covers an aeroplane's part at {q}",
+                                    rect.min
+                                );
+                            }
+                        }));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
 fn lesson_14_drift_labels_stay_inside_the_canvas_and_apart() {
     // Figure 2 at its page camera (lessons/14-rigid-bodies/lesson.js), both canvases, at the
     // start, part-way and at the end of the run, at the page's spin and step and at the
@@ -1829,12 +1947,17 @@ fn lesson_06_selected_joint_name_keeps_off_the_path_ticks_and_bones() {
 #[test]
 fn lesson_06_gltf_root_name_keeps_off_the_bones() {
     // Lesson 06's glTF figure at the camera the page fits to each sample character
-    // (www/gltf-figure.js: the figure's fit, yaw 0.6, pitch 0.15), both canvases, across the
-    // first clip: "root" is shown where the figure put it and keeps 2 px off every bone and dot
-    // (CesiumMan's spine rises straight up from its root). As on the page, the figure places
-    // it for the view of the frame before. The characters are read from ../shared/assets/gltf
-    // (or INBETWEEN_GLTF_ASSETS); without them the check is not run, as in tests/gltf_import.rs.
+    // (www/gltf-figure.js: the figure's fit, yaw 0.6, pitch 0.15) and orbited round it (from
+    // the side, from behind, from above, from below), both canvases, across the first clip:
+    // "root" is shown where the figure put it, keeps 2 px off every bone and dot (CesiumMan's
+    // spine rises straight up from its root) and off the mesh's grey dots (its hips surround
+    // the root), keeps 11 px off every other joint's ball (beside one, it would seem to name
+    // it) and ends within 64 px (four label heights) of the root's ball, so that it still names
+    // it. As on the page, the figure places it for the view of the frame before. The
+    // characters are read from ../shared/assets/gltf (or INBETWEEN_GLTF_ASSETS); without them
+    // the check is not run, as in tests/gltf_import.rs.
     use inbetween::figures::gltf::GltfFigure;
+    use inbetween::figures::palette;
     let dir = std::env::var_os("INBETWEEN_GLTF_ASSETS")
         .map(std::path::PathBuf::from)
         .unwrap_or_else(|| {
@@ -1852,28 +1975,81 @@ fn lesson_06_gltf_root_name_keeps_off_the_bones() {
     let mut failures = Vec::new();
     for character in ["CesiumMan", "RiggedFigure"] {
         let bytes = std::fs::read(dir.join(format!("{character}.gltf"))).unwrap();
-        for k in 0..6 {
-            for size in CANVASES {
-                let mut scene = GltfFigure::new();
-                scene.load(character, &bytes).unwrap();
-                let t = k as f32 / 6.0 * scene.duration_sec();
-                let [x, y, z, distance] = scene.fit();
-                let view = [x, y, z, distance, 0.6, 0.15];
-                let mut frame = Frame::default();
-                scene.draw(&mut frame, t, &[]).unwrap();
-                let camera = page_camera(view, &frame, size);
-                scene.set_view(camera, size.x, size.y);
-                let mut frame = Frame::default();
-                scene.draw(&mut frame, t, &[]).unwrap();
-                let camera = page_camera(view, &frame, size);
-                let name = format!("06 glTF {character}, t {t}");
-                let root: Vec<usize> = (0..frame.labels.len())
-                    .filter(|&i| frame.labels[i].text == "root")
-                    .collect();
-                assert_eq!(root.len(), 1, "{name}");
-                failures.extend(failure_of(|| {
-                    assert_shown_clear_by(&name, &frame, &camera, size, &root, 2.0)
-                }));
+        for (yaw, pitch) in [
+            (0.6, 0.15),
+            (-0.6, 0.15),
+            (1.6, 0.3),
+            (3.1, 0.15),
+            (0.6, 0.9),
+            (0.6, -0.3),
+        ] {
+            for k in 0..6 {
+                for size in CANVASES {
+                    let mut scene = GltfFigure::new();
+                    scene.load(character, &bytes).unwrap();
+                    let t = k as f32 / 6.0 * scene.duration_sec();
+                    let [x, y, z, distance] = scene.fit();
+                    let view = [x, y, z, distance, yaw, pitch];
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, t, &[]).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    scene.set_view(camera, size.x, size.y);
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, t, &[]).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    let name = format!("06 glTF {character}, t {t}, orbit ({yaw}, {pitch})");
+                    let root: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| frame.labels[i].text == "root")
+                        .collect();
+                    assert_eq!(root.len(), 1, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &root, 2.0)
+                    }));
+                    // The mesh's dots are points of a radius in metres: their disc on screen,
+                    // measured along the camera's right.
+                    assert!(!frame.points.is_empty(), "{name}: no mesh dots drawn");
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let at = |p: Vec3| project_to_canvas(view_proj, size, p);
+                    let right = camera.view().row(0).truncate();
+                    let ball = frame
+                        .meshes
+                        .iter()
+                        .find(|m| m.color.truncate() == palette::ORANGE)
+                        .unwrap();
+                    let ball = at(ball.model.w_axis.truncate()).unwrap();
+                    let boxes = label_boxes(&frame, &camera, size);
+                    failures.extend(failure_of(|| {
+                        let (_, rect) = boxes.iter().find(|(t, _)| t == "root").unwrap();
+                        let gap = rect.nearest(ball).distance(ball);
+                        assert!(
+                            gap <= 64.0,
+                            "{name} on {size}: \"root\" {gap} px from the root's ball"
+                        );
+                        // Nor beside another joint's ball (dark), which it would seem to name.
+                        let joints = frame.meshes.iter();
+                        for m in joints.filter(|m| m.color.truncate() == palette::DARK) {
+                            let centre = m.model.w_axis.truncate();
+                            let Some(c) = at(centre) else { continue };
+                            let edge = at(centre + right * m.model.x_axis.length());
+                            let r = edge.map_or(0.0, |e| e.distance(c));
+                            let gap = rect.nearest(c).distance(c);
+                            assert!(
+                                gap > r + 11.0,
+                                "{name} on {size}: \"root\" {gap} px from a joint's centre at {c}"
+                            );
+                        }
+                        for d in &frame.points {
+                            let centre = Vec3::from(d.center);
+                            let Some(c) = at(centre) else { continue };
+                            let r = at(centre + right * d.radius).map_or(0.0, |e| e.distance(c));
+                            assert!(
+                                rect.nearest(c).distance(c) > r + 2.0,
+                                "{name} on {size}: \"root\" at {:?} within 2 px of a mesh dot at {c}",
+                                rect.min
+                            );
+                        }
+                    }));
+                }
             }
         }
     }

@@ -42,6 +42,8 @@ const BONE_PX: f32 = 3.0;
 /// about 6 px across when the character fills a 420 px canvas, large enough to find the
 /// caption's "grey dots" by.
 const DOT_RADIUS: f32 = 0.009;
+/// The radius of a joint's ball, as a fraction of the character's size.
+const JOINT_RADIUS: f32 = 0.012;
 
 /// What is loaded.
 struct Character {
@@ -78,6 +80,8 @@ pub struct GltfFigure {
     generation: u32,
     /// Scratch: the joints' world matrices this frame.
     world: Vec<Affine3A>,
+    /// Scratch: the bind-pose dots on the canvas (CSS pixels), on the last frame's view.
+    dots_px: Vec<Vec2>,
     palette: Vec<Affine3A>,
     dual_quats: Vec<DualQuat>,
     /// Why DQS fell back to LBS this frame, if it did.
@@ -544,7 +548,7 @@ impl GltfFigure {
                 .transform_point3(m.translation.into())
         };
         frame.grid(12, (c.size / 6.0).max(0.05));
-        let radius = 0.012 * c.size;
+        let radius = JOINT_RADIUS * c.size;
         for (i, &parent) in skeleton.parents().iter().enumerate() {
             let p = world(&self.model[i]);
             let color = if parent < 0 {
@@ -571,10 +575,12 @@ impl GltfFigure {
             .iter()
             .position(|&p| p < 0)
             .expect("a skeleton has a root");
-        // The root's name above its ball; where a bone runs there (CesiumMan's spine rises
-        // straight up from its root), the first place round the ball clear of the bones by a
-        // few pixels on the last frame's view, to the side first.
+        // The root's name above its ball; where a bone or the mesh's dots lie there (CesiumMan's
+        // spine rises straight up from its root, and its hips surround it), the first place
+        // round the ball clear of the bones and the dots by a few pixels, and of the other
+        // joints by more, on the last frame's view, to the side first.
         let at = world(&self.model[root]);
+        let dots = self.show_mesh && (!skinning || self.bind_dots);
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
@@ -603,11 +609,35 @@ impl GltfFigure {
             "root",
             palette::ORANGE,
             0,
-            6,
+            12,
             8.0,
         );
-        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
-        let dots = self.show_mesh && (!skinning || self.bind_dots);
+        // A dot's radius on screen (the ball's in proportion) and a gap of a few pixels.
+        let dot_clear_px = 0.5 * ball_px * DOT_RADIUS / JOINT_RADIUS + 3.0;
+        self.dots_px.clear();
+        if let (true, Some((view_proj, size))) = (dots, view) {
+            let px = |&p| crate::camera::project_to_canvas(view_proj, size, p);
+            self.dots_px.extend(c.dots.iter().filter_map(px));
+        }
+        let dots_px = &self.dots_px;
+        // Nor beside another joint's ball, which it would seem to name.
+        let joints_px: Vec<Vec2> = match view {
+            Some((view_proj, size)) => self
+                .model
+                .iter()
+                .enumerate()
+                .filter(|&(i, _)| i != root)
+                .filter_map(|(_, m)| crate::camera::project_to_canvas(view_proj, size, world(m)))
+                .collect(),
+            None => Vec::new(),
+        };
+        let joint_clear_px = 0.5 * ball_px + 12.0;
+        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |rect| {
+            let clear = |points: &[Vec2], gap: f32| {
+                points.iter().all(|&d| rect.nearest(d).distance(d) > gap)
+            };
+            clear(dots_px, dot_clear_px) && clear(&joints_px, joint_clear_px)
+        });
         if dots {
             let radius = DOT_RADIUS * c.size;
             for &d in &c.dots {

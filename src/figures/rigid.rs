@@ -80,6 +80,11 @@ pub struct RigidMotion {
     use_exercise: bool,
     runner: Runner,
     path: Vec<Vec3>,
+    /// The camera and canvas size (CSS pixels) of the last frame, which the thirds' names are
+    /// placed for.
+    view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
+    /// Scratch: points of the aeroplanes' parts on the canvas (CSS pixels), on that view.
+    parts_px: Vec<glam::Vec2>,
 }
 
 impl Default for RigidMotion {
@@ -105,6 +110,16 @@ impl RigidMotion {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             path: Vec::with_capacity(65),
+            view: None,
+            parts_px: Vec::new(),
+        }
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the thirds' names are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, glam::Vec2::new(width_px, height_px)));
         }
     }
 
@@ -232,7 +247,10 @@ impl RigidMotion {
             axis.point - axis.direction * 2.0,
             axis.point + axis.direction * 2.0,
         );
-        frame.wide_line(a, b, SCREW_AXIS, 3.0);
+        // In pieces, so that a label placed clear of the frame's strokes (sampled along each
+        // piece) is clear of the whole axis.
+        let pieces: [Vec3; 9] = std::array::from_fn(|k| a.lerp(b, k as f32 / 8.0));
+        frame.wide_polyline(&pieces, SCREW_AXIS, 3.0);
         frame.label(b, "screw axis", SCREW_AXIS);
         frame.keep_box_in_view(Vec3::new(-2.6, 0.0, -1.2), Vec3::new(2.6, 2.4, 1.2));
         // Each key's name just above its axes' origin, past the plane there (its parts reach
@@ -373,8 +391,11 @@ impl RigidMotion {
         (landed, miss)
     }
 
-    fn draw_thirds(&self, frame: &mut Frame) -> String {
+    /// Draws the thirds (see [`RigidMotion::set_thirds`]) after the rest of the figure, and
+    /// names them; returns the note.
+    fn draw_thirds(&mut self, frame: &mut Frame) -> String {
         let mut said = Vec::new();
+        let mut names = Vec::new();
         for (method, color, name) in [
             (Method::Screw, palette::Z_AXIS, "screw"),
             (Method::LerpSlerp, palette::ORANGE, "lerp + slerp"),
@@ -394,7 +415,10 @@ impl RigidMotion {
                     color * 0.5 + Vec3::splat(0.4),
                     0.8,
                 );
-                frame.label(p - Vec3::Y * 0.3, format!("{k}/3"), color);
+                // The screw's third lands on B, which "B" names.
+                if method == Method::LerpSlerp || k < 3 {
+                    names.push((p, format!("{k}/3"), color));
+                }
             }
             let (_, miss) = self.third_three_times(method);
             let result = if miss < 1e-3 {
@@ -405,6 +429,32 @@ impl RigidMotion {
             said.push(format!(
                 "{name}: its first third, applied three times to A, {result}"
             ));
+        }
+        // Each name at the first place round its aeroplane's centre, below first, on the last
+        // frame's view, clear by a few pixels of every path, tick, axis and name and of every
+        // aeroplane: of the points of a 5 × 5 × 5 lattice through each of their boxes.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        self.parts_px.clear();
+        if let Some((view_proj, size)) = view {
+            for m in &frame.meshes {
+                self.parts_px.extend((0..125).filter_map(|i| {
+                    let c = |k: i32| (k % 5) as f32 * 0.5 - 1.0;
+                    let p = m
+                        .model
+                        .transform_point3(Vec3::new(c(i), c(i / 5), c(i / 25)));
+                    crate::camera::project_to_canvas(view_proj, size, p)
+                }));
+            }
+        }
+        for (p, text, color) in names {
+            let down = glam::Vec2::Y;
+            let around = crate::draw::Label::around_dot(p, 0.0, down, &text, color, 0, 10, 8.0);
+            let parts = &self.parts_px;
+            frame.first_clear_label_by(view, 3.0, around, |rect| {
+                parts.iter().all(|&q| rect.nearest(q).distance(q) > 3.0)
+            });
         }
         if said.is_empty() {
             return "A third, three times: show the screw or lerp + slerp to see it.".into();

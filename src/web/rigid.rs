@@ -112,6 +112,9 @@ impl RigidScene {
 
     /// Draws the frames at `t ∈ [0, 1]`; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, t: f32) -> Result<String, JsError> {
+        // The view the thirds' names are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame, t).map_err(js)?;
         viewer.present()?;
         Ok(note)
