@@ -601,6 +601,7 @@ impl FlockFigure {
     }
 
     /// Maximum speed, m/s, in [0.1, 10] and not below the minimum speed.
+    /// The flock's speeds are clamped into the new limits at once ([`Flock::clamp_speeds`]).
     pub fn set_max_speed(&mut self, speed: f32) -> Result<(), String> {
         let speed = in_range("max speed", speed, 0.1, 10.0)?;
         let min = self.params.min_speed;
@@ -610,10 +611,12 @@ impl FlockFigure {
             ));
         }
         self.params.max_speed = speed;
+        self.flock.clamp_speeds(&self.params);
         Ok(())
     }
 
     /// Minimum speed, m/s, in [0, 10] and not above the maximum speed.
+    /// The flock's speeds are clamped into the new limits at once ([`Flock::clamp_speeds`]).
     pub fn set_min_speed(&mut self, speed: f32) -> Result<(), String> {
         let speed = in_range("min speed", speed, 0.0, 10.0)?;
         let max = self.params.max_speed;
@@ -623,6 +626,7 @@ impl FlockFigure {
             ));
         }
         self.params.min_speed = speed;
+        self.flock.clamp_speeds(&self.params);
         Ok(())
     }
 
