@@ -987,6 +987,12 @@ fn gpu_mode_plots_the_flock_read_back_from_the_gpu() {
     assert!(f.record_gpu_sample(stale, &nan).unwrap_err().contains("boid 7"));
     let note = f.draw_gpu(&mut Frame::default());
     assert!(note.contains("order plot reads the flock back from the GPU every 0.1 s"), "{note}");
+    // The GPU's boids are the shader's sprites, dots without the CPU flock's heading tails:
+    // the note says so, and the frame draws no boid of its own.
+    assert!(note.contains("Each boid is a dot"), "{note}");
+    let mut frame = Frame::default();
+    f.draw_gpu(&mut frame);
+    assert!(frame.points.is_empty(), "{} points", frame.points.len());
 }
 
 #[test]

@@ -893,8 +893,9 @@ impl FlockFigure {
         };
         format!(
             "{} boids{own} stepped on the GPU by a compute shader, at t = {} s (the same rules; \
-             {search}, one thread per boid){roles}; {}. The orange boid, its neighbour lines and its \
-             steering arrow are not drawn: they need the flock on the CPU, and it stays on the \
+             {search}, one thread per boid){roles}; {}. Each boid is a dot (the shader writes one \
+             sprite per boid), without the heading tail of the CPU flock; the orange boid, its \
+             neighbour lines and its steering arrow are not drawn: they need the flock on the CPU, and it stays on the \
              GPU. The order plot reads the flock back from the GPU every {} s.",
             self.gpu_len(),
             format_number(self.steps_done as f32 * SIM_DT),
