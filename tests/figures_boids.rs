@@ -362,9 +362,10 @@ fn the_order_plot_follows_the_flock_step_by_step() {
     let first = scene.plot_samples();
     assert_eq!(first.len(), 3, "the start: one sample");
     assert_eq!(first[0], 0.0);
-    // Random headings: φ is of the order of 1/√N; every boid starts at half the top speed.
+    // Random headings: φ is of the order of 1/√N; every boid starts at half the top speed
+    // clamped into the speed limits: the min speed, 1.2 of 1.8 m/s.
     assert!(first[1] < 0.2, "{first:?}");
-    assert!((first[2] - 0.5).abs() < 1e-4, "{first:?}");
+    assert!((first[2] - 1.2 / 1.8).abs() < 1e-4, "{first:?}");
     for k in 1..=120 {
         scene.advance_to(k as f32 / 60.0).unwrap();
         let s = scene.plot_samples();
@@ -986,6 +987,12 @@ fn gpu_mode_plots_the_flock_read_back_from_the_gpu() {
     assert!(f.record_gpu_sample(stale, &nan).unwrap_err().contains("boid 7"));
     let note = f.draw_gpu(&mut Frame::default());
     assert!(note.contains("order plot reads the flock back from the GPU every 0.1 s"), "{note}");
+    // The GPU's boids are the shader's sprites, dots without the CPU flock's heading tails:
+    // the note says so, and the frame draws no boid of its own.
+    assert!(note.contains("Each boid is a dot"), "{note}");
+    let mut frame = Frame::default();
+    f.draw_gpu(&mut frame);
+    assert!(frame.points.is_empty(), "{} points", frame.points.len());
 }
 
 #[test]
@@ -1214,4 +1221,36 @@ fn the_rules_figures_largest_radius_circle_stays_in_view() {
             }
         }
     }
+}
+
+#[test]
+fn the_mean_speed_lies_within_the_speed_limits_the_note_states() {
+    // The note's "speed between min and max" holds of the flock it describes: at the start
+    // (a seeded flock at half the max speed would fly below the min speed), and at once after
+    // the limits move (not only after the next step), also for a flock started afresh then.
+    let mean = |f: &FlockFigure| f.speed_ratio() * f.params().max_speed;
+    let within = |f: &FlockFigure| {
+        let (lo, hi) = (f.params().min_speed, f.params().max_speed);
+        let ok = f.flock().velocities.iter().all(|v| {
+            let s = v.length();
+            s >= lo - 1e-4 && s <= hi + 1e-4
+        });
+        ok && mean(f) >= lo - 1e-4 && mean(f) <= hi + 1e-4
+    };
+    let mut f = FlockFigure::new();
+    assert!(within(&f), "at the start: mean {}", mean(&f));
+    fly_to(&mut f, 0.5);
+    f.set_max_speed(4.0).unwrap();
+    f.set_min_speed(4.0).unwrap();
+    assert!(within(&f), "after the limits moved: mean {}", mean(&f));
+    let note = f.draw(&mut Frame::default());
+    assert!(
+        note.contains("speed between 4.000 and 4.000 m/s") && note.contains("mean speed 4.00 m/s"),
+        "{note}"
+    );
+    f.set_min_speed(0.5).unwrap();
+    f.set_max_speed(0.8).unwrap();
+    assert!(within(&f), "after the max fell: mean {}", mean(&f));
+    f.set_count(500.0).unwrap();
+    assert!(within(&f), "a new flock: mean {}", mean(&f));
 }

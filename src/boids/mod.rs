@@ -234,7 +234,8 @@ pub fn leader_path(time_sec: f32, bounds: Vec3) -> Vec3 {
 }
 
 /// [`Flock::new`]'s start without its cap (the GPU steps larger flocks): `count` boids at seeded
-/// random places inside `params.bounds`, moving at half the maximum speed in random directions.
+/// random places inside `params.bounds`, moving in random directions at half the maximum speed
+/// clamped into the speed limits (so at the min speed where that is higher).
 pub fn seeded_start(count: usize, params: &BoidParams, seed: u64) -> (Vec<Vec3>, Vec<Vec3>) {
     let mut rng = Rng::new(seed);
     let b = params.bounds;
@@ -248,9 +249,19 @@ pub fn seeded_start(count: usize, params: &BoidParams, seed: u64) -> (Vec<Vec3>,
         })
         .collect();
     let velocities = (0..count)
-        .map(|_| rng.on_unit_sphere() * 0.5 * params.max_speed)
+        .map(|_| {
+            let (min, max) = speed_limits(params, false);
+            clamp_speed(rng.on_unit_sphere() * 0.5 * params.max_speed, min, max)
+        })
         .collect();
     (positions, velocities)
+}
+
+/// The speeds a step keeps a boid between, `(min, max)` in m/s: the predator's top is 1.3 times
+/// the max speed; a min speed above the top acts as the top.
+fn speed_limits(params: &BoidParams, predator: bool) -> (f32, f32) {
+    let top = params.max_speed * if predator { 1.3 } else { 1.0 };
+    (params.min_speed.min(top), top)
 }
 
 /// How the flock finds neighbours.
@@ -276,8 +287,8 @@ pub struct Flock {
 }
 
 impl Flock {
-    /// `count ≤` [`MAX_BOIDS`] boids at seeded random places inside `bounds`, moving at half the
-    /// maximum speed in random directions.
+    /// `count ≤` [`MAX_BOIDS`] boids at seeded random places inside `bounds`, moving in random
+    /// directions as [`seeded_start`] says.
     pub fn new(count: usize, params: &BoidParams, seed: u64) -> Result<Self, String> {
         if count > MAX_BOIDS {
             return Err(format!("{count} boids is too many (at most {MAX_BOIDS})"));
@@ -365,10 +376,23 @@ impl Flock {
             }
             semi_implicit_euler_step(p, v, self.forces[i], dt);
             // Clamp the speed after the velocity update, then redo the position with it.
-            let top = params.max_speed * if Some(i) == predator { 1.3 } else { 1.0 };
-            let clamped = clamp_speed(*v, params.min_speed.min(top), top);
+            let (min, top) = speed_limits(params, Some(i) == predator);
+            let clamped = clamp_speed(*v, min, top);
             *p += (clamped - *v) * dt;
             *v = clamped;
+        }
+    }
+
+    /// Clamps every velocity into the speed limits a step keeps ([`clamp_speed`]) now, the
+    /// leader's (set from its path by each step) left as it is: after a change of the min or
+    /// max speed the flock's speeds lie within the new limits before the next step.
+    pub fn clamp_speeds(&mut self, params: &BoidParams) {
+        let (leader, predator) = self.roles(params);
+        for (i, v) in self.velocities.iter_mut().enumerate() {
+            if Some(i) != leader {
+                let (min, max) = speed_limits(params, Some(i) == predator);
+                *v = clamp_speed(*v, min, max);
+            }
         }
     }
 

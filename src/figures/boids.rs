@@ -14,7 +14,9 @@ use crate::draw::inset::InsetView;
 use crate::exercises::run;
 use crate::figures::gpu::{check_gpu_boids, MAX_GPU_GRID_BOIDS};
 use crate::particles::Sphere;
-use glam::{Mat4, Vec3};
+use crate::camera::OrbitCamera;
+use crate::draw::{layout::Rect, Label};
+use glam::{Mat4, Vec2, Vec3};
 
 const FILE: &str = "src/exercises/boids.rs";
 const TOLERANCE: f32 = 1e-4;
@@ -42,6 +44,25 @@ pub const STEER_ARROW_M_PER_MS2: f32 = 1.0;
 pub const STEER_ARROW_MAX_M: f32 = 1.5;
 /// Width of a boid's tail (the line behind it along its velocity), in CSS pixels.
 pub const TAIL_PX: f32 = 2.0;
+
+/// The last frame's view-projection and canvas size (CSS pixels), which names are placed for.
+fn view_of(view: Option<(OrbitCamera, Vec2)>) -> Option<(Mat4, Vec2)> {
+    view.map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size))
+}
+
+/// Places the first of `candidates` that keeps [`NAME_CLEAR_PX`] off the frame's dots, lines and
+/// names on the last frame's `view` (the first one without a view, or if none is clear). One
+/// function for both figures' names, so `Frame::first_clear_label_by` is compiled once for them.
+fn place_name(frame: &mut Frame, view: Option<(Mat4, Vec2)>, candidates: Vec<Label>) {
+    fn anywhere(_: Rect) -> bool {
+        true
+    }
+    frame.first_clear_label_by(view, NAME_CLEAR_PX, candidates, anywhere);
+}
+
+/// What a name keeps off the lines and dots around it, CSS pixels: 2 px, and 1 px more as the
+/// clearance test samples each line at 17 points (a line can graze the box between two).
+const NAME_CLEAR_PX: f32 = 3.0;
 
 /// What the force-law dropdown offers.
 pub const LAWS: [&str; 3] = ["none", "a1/x² − a2/x⁴", "Gaussian"];
@@ -392,6 +413,9 @@ pub struct FlockFigure {
     gpu_mode: bool,
     /// GPU mode: the flock's size, or 0 for the slider's flock (see [`FlockFigure::set_gpu_count`]).
     gpu_count: usize,
+    /// The camera and canvas size (CSS pixels) of the last frame: the leader's and the
+    /// predator's names are placed for it ([`FlockFigure::set_view`]).
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 /// GPU mode: the order plot's sampling interval, seconds of flock time (a read-back of the
@@ -441,6 +465,7 @@ impl FlockFigure {
             sweep: StepTimeSweep::new(),
             gpu_mode: false,
             gpu_count: 0,
+            view: None,
         };
         f.set_obstacle(true);
         f.restart_plot();
@@ -601,6 +626,7 @@ impl FlockFigure {
     }
 
     /// Maximum speed, m/s, in [0.1, 10] and not below the minimum speed.
+    /// The flock's speeds are clamped into the new limits at once ([`Flock::clamp_speeds`]).
     pub fn set_max_speed(&mut self, speed: f32) -> Result<(), String> {
         let speed = in_range("max speed", speed, 0.1, 10.0)?;
         let min = self.params.min_speed;
@@ -610,10 +636,12 @@ impl FlockFigure {
             ));
         }
         self.params.max_speed = speed;
+        self.flock.clamp_speeds(&self.params);
         Ok(())
     }
 
     /// Minimum speed, m/s, in [0, 10] and not above the maximum speed.
+    /// The flock's speeds are clamped into the new limits at once ([`Flock::clamp_speeds`]).
     pub fn set_min_speed(&mut self, speed: f32) -> Result<(), String> {
         let speed = in_range("min speed", speed, 0.0, 10.0)?;
         let max = self.params.max_speed;
@@ -623,6 +651,7 @@ impl FlockFigure {
             ));
         }
         self.params.min_speed = speed;
+        self.flock.clamp_speeds(&self.params);
         Ok(())
     }
 
@@ -864,8 +893,9 @@ impl FlockFigure {
         };
         format!(
             "{} boids{own} stepped on the GPU by a compute shader, at t = {} s (the same rules; \
-             {search}, one thread per boid){roles}; {}. The orange boid, its neighbour lines and its \
-             steering arrow are not drawn: they need the flock on the CPU, and it stays on the \
+             {search}, one thread per boid){roles}; {}. Each boid is a dot (the shader writes one \
+             sprite per boid), without the heading tail of the CPU flock; the orange boid, its \
+             neighbour lines and its steering arrow are not drawn: they need the flock on the CPU, and it stays on the \
              GPU. The order plot reads the flock back from the GPU every {} s.",
             self.gpu_len(),
             format_number(self.steps_done as f32 * SIM_DT),
@@ -930,6 +960,13 @@ impl FlockFigure {
         Ok(())
     }
 
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's).
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
     /// The highlighted boid: the first that is neither leader nor predator.
     pub fn highlighted(&self) -> usize {
         let (l, p) = self.flock.roles(&self.params);
@@ -941,7 +978,9 @@ impl FlockFigure {
     pub fn draw(&mut self, frame: &mut Frame) -> String {
         let b = self.params.bounds;
         for (a, c) in box_edges(-b, b) {
-            frame.wide_line(a, c, palette::GREY, 1.5);
+            // In eight pieces: the names' clearance samples each piece along its length.
+            let edge: Vec<Vec3> = (0..=8).map(|k| a.lerp(c, k as f32 / 8.0)).collect();
+            frame.wide_polyline(&edge, palette::GREY, 1.5);
         }
         // The box stays in view at both page sizes (boids overshoot its walls a little).
         frame.keep_box_in_view(-b, b);
@@ -959,22 +998,6 @@ impl FlockFigure {
         }
         let (leader, predator) = self.flock.roles(&self.params);
         let h = self.highlighted();
-        let f = &self.flock;
-        for i in 0..f.len() {
-            let (p, v) = (f.positions[i], f.velocities[i]);
-            let (color, r) = if Some(i) == leader {
-                (palette::GREEN, 0.09)
-            } else if Some(i) == predator {
-                (palette::RED, 0.11)
-            } else if i == h {
-                (palette::ORANGE, 0.06)
-            } else {
-                (palette::BLUE, 0.035)
-            };
-            frame.point(p, r, color);
-            // The tail shows which way a boid flies: wide enough to read at 800 x 600.
-            frame.wide_line(p, p - v.normalize_or_zero() * 0.12, color, TAIL_PX);
-        }
         // The highlighted boid's neighbours (within the largest radius, in view).
         self.neighbours.clear();
         let radius = self.params.search_radius();
@@ -1003,19 +1026,39 @@ impl FlockFigure {
         let ph = self.flock.positions[h];
         let shown = (STEER_ARROW_M_PER_MS2 * steer).clamp_length_max(STEER_ARROW_MAX_M);
         frame.arrow(ph, ph + shown, palette::PURPLE, 0.08);
-        if let Some(l) = leader {
-            frame.label(
-                self.flock.positions[l] + Vec3::Y * 0.2,
-                "leader",
-                palette::GREEN,
-            );
+        // The leader's and the predator's names at the first place round their dots, above
+        // first, clear of the neighbour lines, the steering arrow and the box (on the last
+        // frame's view): the boids are drawn after them, as no place in a flock is clear of
+        // every boid.
+        let view = view_of(self.view);
+        for (role, text, color) in [
+            (leader, "leader", palette::GREEN),
+            (predator, "predator", palette::RED),
+        ] {
+            if let Some(i) = role {
+                let at = self.flock.positions[i];
+                place_name(
+                    frame,
+                    view,
+                    Label::around_dot(at, 12.0, -Vec2::Y, text, color, 0, 10, 10.0),
+                );
+            }
         }
-        if let Some(p) = predator {
-            frame.label(
-                self.flock.positions[p] + Vec3::Y * 0.2,
-                "predator",
-                palette::RED,
-            );
+        let f = &self.flock;
+        for i in 0..f.len() {
+            let (p, v) = (f.positions[i], f.velocities[i]);
+            let (color, r) = if Some(i) == leader {
+                (palette::GREEN, 0.09)
+            } else if Some(i) == predator {
+                (palette::RED, 0.11)
+            } else if i == h {
+                (palette::ORANGE, 0.06)
+            } else {
+                (palette::BLUE, 0.035)
+            };
+            frame.point(p, r, color);
+            // The tail shows which way a boid flies: wide enough to read at 800 x 600.
+            frame.wide_line(p, p - v.normalize_or_zero() * 0.12, color, TAIL_PX);
         }
         format!(
             "{} boids, {} search; the orange boid sees {count} {} within {} m and steers \
@@ -1235,6 +1278,9 @@ pub struct RulesFigure {
     /// The first panics of the student's 12.1 and 12.2, with their inputs.
     rules_panic: FirstPanic,
     cell_panic: FirstPanic,
+    /// The camera and canvas size (CSS pixels) of the last frame: the rules' names are placed
+    /// for it ([`RulesFigure::set_view`]).
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 /// The longest arrow the rules figure draws, metres (1 m per unit of a steering vector).
@@ -1278,6 +1324,14 @@ impl RulesFigure {
             runner: DEFAULT_RUNNER,
             rules_panic: FirstPanic::default(),
             cell_panic: FirstPanic::default(),
+            view: None,
+        }
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's).
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
         }
     }
 
@@ -1554,12 +1608,27 @@ impl RulesFigure {
                 tips.push((tip, v, name, color));
             }
         }
+        // Each name where `place_labels` puts it past its arrow's tip, else (on the last frame's
+        // view) at the first place round the tip, along the arrow first, clear of the cells'
+        // squares, the circle, the arrows, the dots and the names placed before.
+        let view = view_of(self.view);
         for (anchor, left, name, color) in place_labels(self.boid, &tips, (view_lo, view_hi)) {
-            if left {
-                frame.label_left(anchor, name, color);
-            } else {
-                frame.label(anchor, name, color);
-            }
+            let (tip, v, _, _) = tips.iter().find(|t| t.2 == name).expect("a tip per name");
+            let mut candidates =
+                Label::around_dot(*tip, 10.0, Vec2::new(v.x, v.z), name, color, 0, 12, 12.0);
+            candidates.insert(
+                0,
+                Label {
+                    anchor,
+                    text: name.to_string(),
+                    color,
+                    left,
+                    priority: 0,
+                    offset_px: Vec2::ZERO,
+                    large: false,
+                },
+            );
+            place_name(frame, view, candidates);
         }
         let mut note = format!(
             "{} {} in view within {} m; the orange boid is in cell {c} (of {} × {}).",

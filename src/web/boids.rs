@@ -183,6 +183,9 @@ impl FlockScene {
         self.scene.advance_to(time_sec).map_err(js)
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the leader's and the predator's names are placed for (the last frame's).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = match (&self.gpu, self.scene.gpu_mode()) {
             (Some(gpu), true) => {
                 viewer.renderer.gpu_points = vec![gpu.sprites()];
@@ -298,6 +301,9 @@ impl BoidRulesScene {
         Ok(())
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the rules' names are placed for (the last frame's).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)

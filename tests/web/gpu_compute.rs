@@ -319,6 +319,21 @@ async fn compare_flocks(gpu: &Gpu, params: &BoidParams, search: Search) {
     );
     web_sys::console::log_1(&format!("{search:?}: start {start:?}\nCPU {c:?}\nGPU {g:?}").into());
     close("mean speed (m/s)", c.mean_speed, g.mean_speed, 0.1, 0.05);
+    // The box is a spring, not a wall (`bounds_weight` times the distance outside, in
+    // src/boids and boids.wgsl alike): on the CPU too boids overshoot it, some by more than a
+    // metre (tests/figures_boids.rs, the_box_holds_the_flock_loosely), so no step keeps every
+    // boid inside. Both keep every boid within 2.5 m of it, and overshoot it alike.
+    let outside = |ps: &[Vec3]| {
+        ps.iter()
+            .map(|q| (q.abs() - params.bounds).max(Vec3::ZERO).length())
+            .fold(0.0f32, f32::max)
+    };
+    let (c_out, g_out) = (outside(&cpu.positions), outside(&p));
+    assert!(
+        c_out < 2.5 && g_out < 2.5,
+        "{search:?}: farthest outside the box: CPU {c_out} m, GPU {g_out} m"
+    );
+    close("farthest outside the box (m)", c_out, g_out, 0.5, 0.3);
     close("polarisation", c.polarisation, g.polarisation, 0.0, 0.15);
     close(
         "mean nearest-neighbour distance (m)",
