@@ -721,6 +721,24 @@ impl Frame {
         candidates: impl IntoIterator<Item = Label>,
         also_clear: impl Fn(layout::Rect) -> bool,
     ) {
+        // One compiled body serves every figure's candidates and test (the wasm's size: each
+        // caller's iterator and closure types would otherwise copy the whole search).
+        self.first_clear_label_dyn(
+            view,
+            margin_px,
+            candidates.into_iter().collect(),
+            &also_clear,
+        );
+    }
+
+    #[inline(never)]
+    fn first_clear_label_dyn(
+        &mut self,
+        view: Option<(Mat4, glam::Vec2)>,
+        margin_px: f32,
+        candidates: Vec<Label>,
+        also_clear: &dyn Fn(layout::Rect) -> bool,
+    ) {
         let mut candidates = candidates.into_iter();
         let Some(first) = candidates.next() else {
             return;
@@ -729,7 +747,7 @@ impl Frame {
             .and_then(|(view_proj, size)| {
                 std::iter::once(first.clone()).chain(candidates).find(|l| {
                     self.label_is_clear_by(view_proj, size, l, margin_px)
-                        && l.first_place(view_proj, size).is_some_and(&also_clear)
+                        && l.first_place(view_proj, size).is_some_and(also_clear)
                 })
             })
             .unwrap_or(first);
