@@ -933,23 +933,13 @@ impl ScaleComparison {
     }
 
     /// The drawn left forearm of copy `k` (0: not inherited): its length (pivot to wrist, metres)
-    /// and the corner angle of its box furthest from square (degrees; 90 unless sheared).
+    /// and the angle at the corner of its outline ([`ScaleComparison::forearm_outline`]) that the
+    /// figure marks with an arc and labels (degrees; 90 unless sheared in that side's plane).
     pub fn forearm_shape(&self, k: usize) -> (f32, f32) {
         let f = &self.figures[k];
-        let draw = f.draw[self.forearm];
-        let length = (f.wrist() - draw.w_axis.truncate()).length();
-        let [x, y, z] = [draw.x_axis, draw.y_axis, draw.z_axis].map(|a| a.truncate());
-        let corner = [(x, y), (y, z), (z, x)]
-            .map(|(a, b)| a.angle_between(b) / DEG)
-            .into_iter()
-            .fold(90.0f32, |worst, a| {
-                if (a - 90.0).abs() > (worst - 90.0).abs() {
-                    a
-                } else {
-                    worst
-                }
-            });
-        (length, corner)
+        let length = (f.wrist() - f.draw[self.forearm].w_axis.truncate()).length();
+        let c = self.forearm_outline(k);
+        (length, (c[1] - c[2]).angle_between(c[3] - c[2]) / DEG)
     }
 
     /// Where copy `k` stands: one behind the other along z, so that a side view (looking along
@@ -1017,7 +1007,7 @@ impl ScaleComparison {
             frame.stroke(&[c[0], c[1], c[2], c[3], c[0]], palette::PINK, outline);
             // The angle at the corner between the edges along the forearm and across it.
             let (a, b) = ((c[1] - c[2]).normalize(), (c[3] - c[2]).normalize());
-            let angle = a.angle_between(b);
+            let angle = self.forearm_shape(k).1 * DEG;
             let r = 0.05;
             let arc: Vec<Vec3> = (0..=12)
                 .map(|i| {
@@ -1058,7 +1048,7 @@ impl ScaleComparison {
         let describe = |k: usize| {
             let (length, angle) = self.forearm_shape(k);
             format!(
-                "{}: the forearm is {} m long, its box's corner angle {}°",
+                "{}: the forearm is {} m long, the marked corner of its outline {}°",
                 titles[k],
                 super::format_number(length),
                 super::format_number(angle)
