@@ -191,6 +191,73 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_curves() {
     }
 }
 
+/// The orbits Figure 4 of lesson 09 is checked from: the page's (lessons/09-skinning/lesson.js)
+/// and the page's after the page test's drag (a fifth of a 650 px canvas across, a tenth of its
+/// 420 px down, at 0.008 rad a pixel).
+const HUMAN_ORBITS: [[f32; 6]; 2] = [
+    [0.0, 0.9, 0.0, 3.2, 1.45, 0.15],
+    [0.0, 0.9, 0.0, 3.2, 1.45 - 0.008 * 130.0, 0.15 + 0.008 * 42.0],
+];
+
+#[test]
+fn lesson_09_human_pair_names_keep_off_the_bodies_and_the_skeletons() {
+    // Both bodies side by side with the skeleton X-rayed and a heat map's joint named, in both
+    // views, through the run and the walk, from both orbits: the titles and the joint's names
+    // cover no vertex of either body (as skinned, on the CPU), no joint dot or bone, and no
+    // other name. As on the page, the joint's names are placed for the view of the frame
+    // before (set_canvas_view).
+    use inbetween::draw::MeshId;
+    use inbetween::figures::skinning::HumanFigure;
+    let places = [Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.0, 0.0, -0.5)];
+    let mut failures = Vec::new();
+    for clip in ["walk", "run"] {
+        for view in ["whole body", "left legs"] {
+            for joint in ["pelvis", "thigh.L", "chest"] {
+                let mut h = HumanFigure::new();
+                h.set_compare(true);
+                h.set_clip(clip).unwrap();
+                h.set_view(view).unwrap();
+                h.set_heat_joint(joint).unwrap();
+                h.set_show_skeleton(true);
+                for t in [0.0, 0.21, 0.42] {
+                    h.skin(t).unwrap();
+                    for size in CANVASES {
+                        for orbit in HUMAN_ORBITS {
+                            let mut frame = Frame::default();
+                            h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
+                            let camera = page_camera(orbit, &frame, size);
+                            h.set_canvas_view(camera, size.x, size.y);
+                            let mut frame = Frame::default();
+                            h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
+                            let camera = page_camera(orbit, &frame, size);
+                            let name = format!("09 pair, {clip} at {t} s, {view}, {joint}, orbit {orbit:?}");
+                            let view_proj = camera.projection(size.x / size.y) * camera.view();
+                            let body: Vec<Vec2> = [&h.mesh, &h.mesh_dqs]
+                                .into_iter()
+                                .zip(places)
+                                .flat_map(|(m, place)| m.positions.iter().map(move |p| *p + place))
+                                .filter_map(|p| project_to_canvas(view_proj, size, p))
+                                .collect();
+                            let labels = label_boxes(&frame, &camera, size);
+                            failures.extend(failure_of(|| {
+                                assert_eq!(labels.len(), 4, "{name} on {size}: all shown");
+                                assert_clear(&name, &frame, &camera, size);
+                                for (text, rect) in &labels {
+                                    let on = body
+                                        .iter()
+                                        .find(|p| p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all());
+                                    assert!(on.is_none(), "{name} on {size}: {text:?} at {:?} covers a body at {on:?}", rect.min);
+                                }
+                            }));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
 #[test]
 fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
     // Over the whole twist slider, with the fix on and off: every label is shown where the

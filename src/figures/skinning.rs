@@ -21,7 +21,10 @@ use crate::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig, SkinnedCha
 use crate::skinning::{
     dual_quat_palette, mesh_volume, ring_area, skin_dqs, skin_lbs, skinning_palette, SkinWeights,
 };
-use glam::{Affine3A, Mat4, Vec3, Vec4};
+use crate::camera::{project_to_canvas, OrbitCamera};
+use crate::draw::layout::Rect;
+use crate::draw::Label;
+use glam::{Affine3A, Mat4, Vec2, Vec3, Vec4};
 
 const EXERCISE_FILE: &str = "src/exercises/skinning.rs";
 /// How close the student's skinned positions must be to the reference's, metres.
@@ -29,6 +32,23 @@ const TOLERANCE: f32 = 1e-4;
 /// Where the two cylinders stand: LBS on the left, DQS on the right.
 pub const LBS_OFFSET: Vec3 = Vec3::new(-2.4, 0.3, 0.0);
 pub const DQS_OFFSET: Vec3 = Vec3::new(0.4, 0.3, 0.0);
+
+/// Whether a label's box (CSS pixels) covers none of `points` (on the canvas), with `margin_px`
+/// round each: the further test of [`Frame::first_clear_label_by`] for a label that must keep off
+/// a surface the frame does not list (a body, a tube), given as points on it. Lessons 01 and 09
+/// share it, so that the placement is compiled once for them.
+pub fn off_points(points: &[Vec2], margin_px: f32) -> impl Fn(Rect) -> bool + '_ {
+    move |rect| {
+        let (lo, hi) = (rect.min - margin_px, rect.max() + margin_px);
+        points.iter().all(|p| !(p.cmpgt(lo).all() && p.cmplt(hi).all()))
+    }
+}
+
+/// The matrix and canvas size (CSS pixels) a figure places its labels for: the last frame's
+/// camera, as the page passes it (`set_*view`).
+pub fn view_of(view: Option<(OrbitCamera, Vec2)>) -> Option<(Mat4, Vec2)> {
+    view.map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size))
+}
 
 /// Heat-map colour of a weight in `[0, 1]`: blue (0) through pale yellow (½) to red (1).
 pub fn heat(w: f32) -> Vec4 {
@@ -836,6 +856,9 @@ pub struct HumanFigure {
     /// skinning depends on: [`HumanFigure::skin`] at that same time again has nothing to do (a
     /// paused page would otherwise skin both bodies and upload them every frame).
     skinned_at: Option<f32>,
+    /// The last frame's camera and canvas size (CSS pixels), which the heat map's joint name is
+    /// placed for ([`HumanFigure::set_canvas_view`]).
+    canvas_view: Option<(OrbitCamera, Vec2)>,
 }
 
 /// What the character figure keeps in view ([`HumanFigure::view_box`]).
@@ -899,6 +922,7 @@ impl HumanFigure {
             view: HumanView::Body,
             view_box: None,
             skinned_at: None,
+            canvas_view: None,
         };
         figure.repaint();
         figure
@@ -910,6 +934,14 @@ impl HumanFigure {
         self.skinned_at = None;
         self.mesh.dirty = true;
         self.mesh_dqs.dirty = true;
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the heat map's joint name is placed for.
+    pub fn set_canvas_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.canvas_view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// "whole body" or "left legs": what the camera keeps in view ([`HumanFigure::view_box`]).
@@ -1298,10 +1330,8 @@ impl HumanFigure {
         Ok(self.overlay(frame, "on the GPU (vertex shader)"))
     }
 
-    /// What goes with each body, in its own coordinates: the X-rayed skeleton and the heat
-    /// map's joint label.
+    /// What goes with each body, in its own coordinates: the X-rayed skeleton.
     fn decorate(&self, frame: &mut Frame) {
-        let names = self.character.skeleton.names();
         let at = |m: &Affine3A| Vec3::from(m.translation);
         if self.show_skeleton {
             // The skeleton is inside the body: drawn over it, as an X-ray.
@@ -1315,12 +1345,61 @@ impl HumanFigure {
                 }
             }
         }
-        if let Some(j) = self.heat_joint {
-            frame.label(
-                at(&self.model[j]) + Vec3::new(0.08, 0.05, 0.0),
-                names[j].clone(),
-                palette::RED,
-            );
+    }
+
+    /// Points on the canvas (the last frame's view) that stand for the bodies placed at
+    /// `places`: every vertex, moved rigidly with its part's joint (the palette; the
+    /// blend zones move a few centimetres more), so that skinning on the GPU has them too.
+    fn body_points_px(&self, places: &[Vec3]) -> Vec<Vec2> {
+        let Some((view_proj, size)) = view_of(self.canvas_view) else {
+            return Vec::new();
+        };
+        let bind = &self.character.mesh.positions;
+        let per_part = bind.len() / self.palette.len();
+        let mut out = Vec::new();
+        for place in places {
+            for v in 0..bind.len() {
+                let p = *place + self.palette[v / per_part].transform_point3(bind[v]);
+                out.extend(project_to_canvas(view_proj, size, p));
+            }
+        }
+        out
+    }
+
+    /// Adds the first of `candidates` that covers none of `body_px` ([`HumanFigure::body_points_px`])
+    /// and no dot, bone or name placed before, on the last frame's view.
+    fn label_off_bodies(&self, frame: &mut Frame, body_px: &[Vec2], candidates: Vec<Label>) {
+        let view = view_of(self.canvas_view);
+        frame.first_clear_label_by(view, 2.0, candidates, off_points(body_px, 4.0));
+    }
+
+    /// The labels of the bodies placed at `places` (after they are drawn): each title (the
+    /// labels from `titles_from` on) where it was put, else at the first place round it clear
+    /// of the bodies; then the heat map's joint name, anchored at the joint of each body, at the
+    /// first place round it, away from the other body first. The page draws a leader line to
+    /// a name placed away from its joint.
+    fn place_labels(&self, frame: &mut Frame, places: &[Vec3], titles_from: usize) {
+        let body_px = self.body_points_px(places);
+        let view = view_of(self.canvas_view);
+        let at = |p: Vec3| view.and_then(|(m, size)| project_to_canvas(m, size, p));
+        let toward = |k: usize| {
+            let other = places[places.len() - 1 - k];
+            at(places[k]).zip(at(other)).map_or(Vec2::X, |(a, b)| a - b)
+        };
+        let titles: Vec<Label> = frame.labels.drain(titles_from..).collect();
+        for (k, title) in titles.into_iter().enumerate() {
+            let mut candidates =
+                Label::around_dot(title.anchor, 0.0, toward(k), &title.text, title.color, 1, 8, 10.0);
+            candidates.insert(0, title);
+            self.label_off_bodies(frame, &body_px, candidates);
+        }
+        let Some(j) = self.heat_joint else { return };
+        let name = &self.character.skeleton.names()[j];
+        for (k, place) in places.iter().enumerate() {
+            let anchor = *place + Vec3::from(self.model[j].translation);
+            let candidates =
+                Label::around_dot(anchor, JOINT_PX, toward(k), name, palette::RED, 0, 20, 10.0);
+            self.label_off_bodies(frame, &body_px, candidates);
         }
     }
 
@@ -1333,14 +1412,16 @@ impl HumanFigure {
         view_box: Option<(Vec3, Vec3)>,
         mut body: impl FnMut(&mut Frame, usize) -> Result<(), String>,
     ) -> Result<(), String> {
-        // Titles over the heads, or over the hips in the legs view; the camera fits them too.
+        // Titles over the heads, or under the feet in the legs view (over the hips they would
+        // sit on the bodies); the camera fits them too.
         let title_y = match (self.view, view_box) {
-            (HumanView::Legs, Some((_, hi))) => hi.y + 0.05,
+            (HumanView::Legs, Some((lo, _))) => lo.y - 0.15,
             _ => 2.0,
         };
         let titles = [("LBS", palette::ORANGE), ("DQS", palette::TEAL)];
         let step = Vec3::new(0.0, 0.0, -2.0 * HUMAN_OFFSET_Z);
         let mut failed = Ok(());
+        let titles_from = frame.labels.len();
         frame.side_by_side(step, &titles, title_y, |f, k| {
             if let Err(e) = body(f, k) {
                 failed = Err(e);
@@ -1348,6 +1429,8 @@ impl HumanFigure {
             self.decorate(f);
             f.contact_shadow(Vec3::ZERO, 0.3);
         });
+        let places = Self::pair_models().map(|m| m.w_axis.truncate());
+        self.place_labels(frame, &places, titles_from);
         match view_box {
             Some((lo, hi)) => frame.keep_box_in_view(lo, hi),
             // A box that holds both bodies standing (only if skinning the clip failed).
@@ -1364,6 +1447,7 @@ impl HumanFigure {
         let names = self.character.skeleton.names();
         if !self.compare {
             self.decorate(frame);
+            self.place_labels(frame, &[Vec3::ZERO], frame.labels.len());
         }
         let colours = match self.heat_joint {
             Some(j) => format!(" Colours: the weights of {}, blue 0 to red 1.", names[j]),

@@ -351,6 +351,9 @@ impl SkinnedHumanScene {
     /// Uploads the skinned body (or, skinning on the GPU, only its palette) and draws. Returns
     /// the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the heat map's joint name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_canvas_view(viewer.camera, w, h);
         if viewer.renewed(&mut self.gpu_seen) {
             (self.mesh, self.mesh_dqs, self.gpu_mesh) = (None, None, None);
         }
