@@ -259,6 +259,82 @@ fn lesson_09_human_pair_names_keep_off_the_bodies_and_the_skeletons() {
 }
 
 #[test]
+fn lesson_09_cylinder_names_keep_off_the_tubes_and_each_other() {
+    // Figure 1 at its defaults, at the page test's settings (bend 36°, twist −109°, falloff
+    // 0.79 m, ring 8) and at a straight and a fully bent elbow, from the page's orbit and the
+    // page test's drag: each elbow's name is anchored at the elbow joint and covers neither
+    // tube (placed off it, the page draws a leader line); no name covers a dot or line; K₁p's
+    // and K₂p's boxes (large text) stay apart. As on the page, the labels are placed for the
+    // view of the frame before (set_view).
+    use inbetween::draw::layout::{leader, LEADER_PX};
+    use inbetween::draw::{MeshId, LABELS_APART_PX};
+    use inbetween::figures::skinning::{CylinderFigure, DQS_OFFSET, LBS_OFFSET};
+    let orbits = [
+        [0.3, 0.7, 0.0, 5.0, 0.0, 0.2],
+        [0.3, 0.7, 0.0, 5.0, -0.008 * 130.0, 0.2 + 0.008 * 42.0],
+    ];
+    let mut failures = Vec::new();
+    for (bend, twist, falloff, ring) in [
+        (90.0, 0.0, 0.15, 20),
+        (36.0, -109.0, 0.79, 8),
+        (0.0, 0.0, 0.15, 20),
+        (180.0, 45.0, 0.05, 23),
+    ] {
+        let mut f = CylinderFigure::new();
+        f.set_bend_deg(bend).unwrap();
+        f.set_twist_deg(twist).unwrap();
+        f.set_falloff(falloff).unwrap();
+        f.set_probe_ring(ring).unwrap();
+        let elbow = f.rig().segments[1].0;
+        for size in CANVASES {
+            for orbit in orbits {
+                let mut frame = Frame::default();
+                f.draw(&mut frame, [MeshId(1), MeshId(2)]).unwrap();
+                f.set_view(page_camera(orbit, &frame, size), size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame, [MeshId(1), MeshId(2)]).unwrap();
+                let camera = page_camera(orbit, &frame, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let name = format!("09 cylinder, bend {bend}, twist {twist}, orbit {orbit:?}");
+                let tubes: Vec<Vec2> = [(LBS_OFFSET, &f.lbs), (DQS_OFFSET, &f.dqs)]
+                    .into_iter()
+                    .flat_map(|(o, m)| m.positions.iter().map(move |p| o + *p))
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let placed = layout(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert_clear(&name, &frame, &camera, size);
+                    let elbows: Vec<_> = placed.iter().filter(|(l, _, _)| l.text == "elbow").collect();
+                    assert_eq!(elbows.len(), 2, "{name}");
+                    for ((l, b, p), offset) in elbows.into_iter().zip([LBS_OFFSET, DQS_OFFSET]) {
+                        let at = project_to_canvas(view_proj, size, offset + elbow).unwrap();
+                        assert!(l.dot_px.distance(at) < 0.01, "{name}: anchored at the elbow");
+                        assert!(p.shown, "{name} on {size}: elbow shown");
+                        let rect = Rect { min: p.top_left, size: b.size };
+                        let on = tubes.iter().find(|q| q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all());
+                        assert!(on.is_none(), "{name} on {size}: elbow at {:?} covers a tube at {on:?}", rect.min);
+                        // Further than a label's height from the joint, it gets a leader line.
+                        if rect.nearest(at).distance(at) > LEADER_PX {
+                            assert!(leader(rect, at, false).is_some());
+                        }
+                    }
+                    let k: Vec<Rect> = frame
+                        .labels
+                        .iter()
+                        .filter(|l| l.text.starts_with('K'))
+                        .map(|l| l.first_place(view_proj, size).unwrap())
+                        .collect();
+                    if let [a, b] = k[..] {
+                        assert!(!a.overlaps(&b, LABELS_APART_PX - 0.5), "{name} on {size}: K₁p and K₂p at {a:?} and {b:?}");
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
 fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
     // Over the whole twist slider, with the fix on and off: every label is shown where the
     // figure put it (no leader line from the page's layout), clear of every dot and line. Near

@@ -162,6 +162,9 @@ pub struct CylinderFigure {
     stale: bool,
     /// The ring whose top vertex the figure follows ([`CylinderFigure::set_probe_ring`]).
     probe_ring: usize,
+    /// The last frame's camera and canvas size (CSS pixels), which the labels are placed for
+    /// ([`CylinderFigure::set_view`]).
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 /// Widths of the elbow ring and of the lines along the tubes, CSS pixels.
@@ -192,6 +195,14 @@ impl CylinderFigure {
     /// (+y) and in front (+z) in the bind pose.
     pub const STRIPES: [usize; 2] = [0, CYLINDER_AROUND / 4];
 
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the elbows' and the followed vertex's names are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
     /// Bent 90°, not twisted, falloff 0.15 m, no heat map.
     pub fn new() -> Self {
         let rig = cylinder_rig(1.0, 0.25, CYLINDER_RINGS, CYLINDER_AROUND)
@@ -216,6 +227,7 @@ impl CylinderFigure {
             exercise_note: String::new(),
             stale: true,
             probe_ring: CYLINDER_RINGS / 2,
+            view: None,
             rig,
         };
         figure.repaint();
@@ -515,9 +527,9 @@ impl CylinderFigure {
         frame.grid(12, 0.5);
         let s = self.rig.ring_start(self.rig.elbow_ring());
         let e = s + self.rig.around;
-        for (mesh, offset, color, name, skinned) in [
-            (meshes[0], LBS_OFFSET, palette::ORANGE, "LBS", &self.lbs),
-            (meshes[1], DQS_OFFSET, palette::TEAL, "DQS", &self.dqs),
+        for (mesh, offset, skinned) in [
+            (meshes[0], LBS_OFFSET, &self.lbs),
+            (meshes[1], DQS_OFFSET, &self.dqs),
         ] {
             let model = Mat4::from_translation(offset);
             frame.mesh_vertex_colors(mesh, model);
@@ -544,20 +556,33 @@ impl CylinderFigure {
                     .collect();
                 frame.wide_polyline(&stripe, palette::GREY, STRIPE_PX);
             }
-            // The skeleton: joints and bones, drawn beside the tube's axis.
-            let joints: Vec<Vec3> = self
-                .model
-                .iter()
-                .map(|m| offset + Vec3::from(m.translation))
-                .collect();
-            frame.label(offset + Vec3::new(0.2, -0.45, 0.0), name, color);
-            frame.label(
-                joints[1] + Vec3::new(0.0, -0.4, 0.3),
-                "elbow",
-                palette::DARK,
-            );
         }
         let probe = self.draw_probe(frame);
+        // Each tube's name below it, and its elbow's name anchored at the elbow joint: each at
+        // the first place round its anchor, below first, that covers neither tube nor any dot,
+        // line or name (on the last frame's view); the page draws a leader line to a name
+        // placed away from its anchor.
+        let view = view_of(self.view);
+        let tubes_px: Vec<Vec2> = view.map_or(Vec::new(), |(view_proj, size)| {
+            [(LBS_OFFSET, &self.lbs), (DQS_OFFSET, &self.dqs)]
+                .into_iter()
+                .flat_map(|(o, m)| m.positions.iter().map(move |p| o + *p))
+                .filter_map(|p| project_to_canvas(view_proj, size, p))
+                .collect()
+        });
+        let elbow = Vec3::from(self.model[1].translation);
+        for (offset, color, name) in [
+            (LBS_OFFSET, palette::ORANGE, "LBS"),
+            (DQS_OFFSET, palette::TEAL, "DQS"),
+        ] {
+            for (anchor, color, name) in [
+                (offset + Vec3::new(0.2, -0.45, 0.0), color, name),
+                (offset + elbow, palette::DARK, "elbow"),
+            ] {
+                let candidates = Label::around_dot(anchor, 0.0, Vec2::Y, name, color, 0, 16, 10.0);
+                frame.first_clear_label_by(view, 2.0, candidates, off_points(&tubes_px, 3.0));
+            }
+        }
         // Both tubes at every bend and twist the sliders reach, with their labels: the camera
         // stays put while the sliders move.
         for offset in [LBS_OFFSET, DQS_OFFSET] {
@@ -642,13 +667,27 @@ impl CylinderFigure {
                 crate::draw::StrokeStyle::dashed(2.0, 0.04, 0.03),
             );
             frame.marker_on_top(o + k2, 10.0, palette::GREY);
-            frame.label_large(o + k2, "K₂p", palette::DARK, 1);
         }
         frame.marker_on_top(o + k1, 10.0, palette::GREY);
-        frame.label_large(o + k1, "K₁p", palette::DARK, 1);
         frame.marker_on_top(o + dqs, 12.0, palette::TEAL);
         frame.marker_on_top(o + lbs, 12.0, palette::ORANGE);
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
+        // Each name at the first place round its dot, away from the other dot first, clear of
+        // the dots, lines and the other name (on the last frame's view): where the dots meet,
+        // names beside them touch.
+        let view = view_of(self.view);
+        let at = |p: Vec3| view.and_then(|(m, size)| project_to_canvas(m, size, o + p));
+        let named = [(k2, k1, "K₂p"), (k1, k2, "K₁p")];
+        let named = if w2 > 0.0 { &named[..] } else { &named[1..] };
+        for &(k, other, text) in named {
+            let toward = at(k).zip(at(other)).map_or(Vec2::X, |(a, b)| a - b);
+            let mut candidates =
+                Label::around_dot(o + k, 10.0, toward, text, palette::DARK, 1, 6, 8.0);
+            for l in &mut candidates {
+                l.large = true;
+            }
+            frame.first_clear_label_by(view, 2.0, candidates, off_points(&[], 0.0));
+        }
         let elbow = Vec3::from(self.model[1].translation);
         let rest = self.rig.mesh.positions[v].distance(self.rig.segments[1].0);
         // With one joint at weight 1 there is no chord (none is drawn): both methods move the
