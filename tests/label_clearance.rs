@@ -394,33 +394,121 @@ fn lesson_07_law_of_cosines_labels_keep_off_its_lines() {
     }
 }
 
+/// Points on the frame's boxes (`MeshId::CUBE`) as seen on the canvas: a 9 × 9 × 9 grid
+/// through each.
+fn cube_points(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<Vec2> {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == inbetween::draw::MeshId::CUBE)
+        .flat_map(|m| {
+            (0..729).map(move |i| {
+                let g = Vec3::new((i % 9) as f32, (i / 9 % 9) as f32, (i / 81) as f32);
+                m.model.transform_point3(g * 0.25 - 1.0)
+            })
+        })
+        .filter_map(|p| project_to_canvas(view_proj, size, p))
+        .collect()
+}
+
+/// Asserts that no shown label's box covers one of `points` (canvas pixels).
+fn assert_off(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2, points: &[Vec2]) {
+    for (text, rect) in label_boxes(frame, camera, size) {
+        let on = points
+            .iter()
+            .find(|p| p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all());
+        assert!(on.is_none(), "{name} on {size}: {text:?} at {:?} covers a box at {on:?}", rect.min);
+    }
+}
+
 #[test]
 fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
-    // Figure 3's page camera (lessons/01-transforms/lesson.js: from +x), at the page's start,
-    // at the caption's two tries (a uniform scale; the elbow at 0°) and another stretch: the
-    // corner angles' labels and the forearms' names sit off the outlines, the arcs, the
-    // skeletons' lines and their dots.
+    // Figure 3 from the page's camera (lessons/01-transforms/lesson.js: from +x) and after the
+    // page test's drag (a fifth of a 650 px canvas across, a tenth of 420 px down, 0.008 rad a
+    // pixel), at the page's start, at the caption's two tries (a uniform scale; the elbow at
+    // 0°), another stretch and the page test's settings: the titles, the corner angles and the
+    // forearms' names sit off the outlines, the arcs, the skeletons' lines and dots, and the
+    // bodies' boxes. As on the page, they are placed for the view of the frame before.
     use inbetween::figures::transforms::ScaleComparison;
-    for (scale, elbow) in [
-        (Vec3::new(1.0, 2.0, 1.0), -70.0),
-        (Vec3::new(2.0, 2.0, 2.0), -70.0),
-        (Vec3::new(1.0, 2.0, 1.0), 0.0),
-        (Vec3::new(1.0, 1.5, 1.0), -90.0),
+    let mut failures = Vec::new();
+    for (scale, angles) in [
+        (Vec3::new(1.0, 2.0, 1.0), Vec3::new(-70.0, 0.0, 0.0)),
+        (Vec3::new(2.0, 2.0, 2.0), Vec3::new(-70.0, 0.0, 0.0)),
+        (Vec3::new(1.0, 2.0, 1.0), Vec3::ZERO),
+        (Vec3::new(1.0, 1.5, 1.0), Vec3::new(-90.0, 0.0, 0.0)),
+        (Vec3::new(2.42, 0.8, 2.42), Vec3::new(105.0, -109.0, -109.0)),
     ] {
         let mut scene = ScaleComparison::new();
         scene.set_upper_arm_scale(scale).unwrap();
-        scene
-            .set_forearm_angles_deg(Vec3::new(elbow, 0.0, 0.0))
-            .unwrap();
-        let mut frame = Frame::default();
-        scene.draw(&mut frame).unwrap();
-        let view = [0.0, 1.0, 0.0, 3.6, std::f32::consts::FRAC_PI_2, 0.12];
-        for size in CANVASES {
-            let camera = page_camera(view, &frame, size);
-            let name = format!("01 scale comparison, scale {scale}, elbow {elbow}°");
-            assert_clear(&name, &frame, &camera, size);
+        scene.set_forearm_angles_deg(angles).unwrap();
+        let yaw = std::f32::consts::FRAC_PI_2;
+        for view in [
+            [0.0, 1.0, 0.0, 3.6, yaw, 0.12],
+            [0.0, 1.0, 0.0, 3.6, yaw - 0.008 * 130.0, 0.12 + 0.008 * 42.0],
+        ] {
+            for size in CANVASES {
+                let mut frame = Frame::default();
+                scene.draw(&mut frame).unwrap();
+                scene.set_view(page_camera(view, &frame, size), size.x, size.y);
+                let mut frame = Frame::default();
+                scene.draw(&mut frame).unwrap();
+                let camera = page_camera(view, &frame, size);
+                let name = format!("01 scale comparison, scale {scale}, angles {angles}, view {view:?}");
+                let boxes = cube_points(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert_clear(&name, &frame, &camera, size);
+                    assert_off(&name, &frame, &camera, size, &boxes);
+                }));
+            }
         }
     }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_01_point_and_direction_names_keep_off_the_boxes() {
+    // Figure 1 from the page's camera and after the page test's drag, at the page's start and
+    // at the page test's settings (every slider at −1.21 m or −109°, the solid box R·T), over
+    // the steps: p's and v's names cover neither box, no dot or line, and no other name.
+    use inbetween::figures::transforms::{Order, SingleShape};
+    let page = [0.5, 0.3, 0.0, 5.0, 0.6, 0.45];
+    let mut failures = Vec::new();
+    for (t, angles, order) in [
+        (Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, 30.0), Order::RotateFirst),
+        (Vec3::splat(-1.21), Vec3::splat(-109.0), Order::TranslateFirst),
+    ] {
+        let mut scene = SingleShape::new();
+        scene.set_transform(t, angles).unwrap();
+        scene.set_order(order);
+        for stage in [0.0, 0.5, 1.0, 1.35, 2.0] {
+            for view in [page, [0.5, 0.3, 0.0, 5.0, 0.6 - 0.008 * 130.0, 0.45 + 0.008 * 42.0]] {
+                for size in CANVASES {
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, stage).unwrap();
+                    scene.set_view(page_camera(view, &frame, size), size.x, size.y);
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, stage).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    let name = format!("01 single shape, t {t}, stage {stage}, view {view:?}");
+                    // The solid box and the ghost's corners and edges (its wireframe).
+                    let mut boxes = cube_points(&frame, &camera, size);
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    boxes.extend(frame.segments_of(order.other().color()).flat_map(|(a, b)| {
+                        (0..=8).filter_map(move |k| project_to_canvas(view_proj, size, a.lerp(b, k as f32 / 8.0)))
+                    }));
+                    let pink = |text: &str| text.starts_with("p (") || text.starts_with("v (");
+                    failures.extend(failure_of(|| {
+                        assert_clear_of(&name, &frame, &camera, size, pink);
+                        let mut only = frame.clone();
+                        only.labels.retain(|l| pink(&l.text));
+                        assert_off(&name, &only, &camera, size, &boxes);
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
 }
 
 #[test]
