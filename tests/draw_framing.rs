@@ -322,7 +322,10 @@ fn the_skinned_pair_keeps_both_bodies_or_both_left_legs_in_view() {
                 .collect();
             assert_eq!(titles.len(), 2);
             if view == "left legs" {
-                assert!(titles.iter().all(|t| t.y < 0.0), "under the feet: {titles:?}");
+                assert!(
+                    titles.iter().all(|t| t.y < 0.0),
+                    "under the feet: {titles:?}"
+                );
             }
             for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
                 for (yaw, pitch) in [(1.45, 0.15), (1.45 - 0.008 * 130.0, 0.15 + 0.008 * 42.0)] {

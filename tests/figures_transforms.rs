@@ -794,7 +794,10 @@ fn the_corner_label_and_the_note_give_the_same_angle() {
             let (_, angle) = comparison.forearm_shape(k);
             assert!((angle - at_corner).abs() < 1e-3, "{angle} {at_corner}");
             assert_eq!(shown[k], format!("{angle:.0}°"), "{scale} {angles}");
-            let in_note = format!("the marked corner of its outline {}°", run::format_number(angle));
+            let in_note = format!(
+                "the marked corner of its outline {}°",
+                run::format_number(angle)
+            );
             assert!(note.contains(&in_note), "{in_note:?} in {note}");
         }
     }

@@ -196,7 +196,14 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_curves() {
 /// 420 px down, at 0.008 rad a pixel).
 const HUMAN_ORBITS: [[f32; 6]; 2] = [
     [0.0, 0.9, 0.0, 3.2, 1.45, 0.15],
-    [0.0, 0.9, 0.0, 3.2, 1.45 - 0.008 * 130.0, 0.15 + 0.008 * 42.0],
+    [
+        0.0,
+        0.9,
+        0.0,
+        3.2,
+        1.45 - 0.008 * 130.0,
+        0.15 + 0.008 * 42.0,
+    ],
 ];
 
 #[test]
@@ -230,7 +237,9 @@ fn lesson_09_human_pair_names_keep_off_the_bodies_and_the_skeletons() {
                             let mut frame = Frame::default();
                             h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
                             let camera = page_camera(orbit, &frame, size);
-                            let name = format!("09 pair, {clip} at {t} s, {view}, {joint}, orbit {orbit:?}");
+                            let name = format!(
+                                "09 pair, {clip} at {t} s, {view}, {joint}, orbit {orbit:?}"
+                            );
                             let view_proj = camera.projection(size.x / size.y) * camera.view();
                             let body: Vec<Vec2> = [&h.mesh, &h.mesh_dqs]
                                 .into_iter()
@@ -304,15 +313,30 @@ fn lesson_09_cylinder_names_keep_off_the_tubes_and_each_other() {
                 let placed = layout(&frame, &camera, size);
                 failures.extend(failure_of(|| {
                     assert_clear(&name, &frame, &camera, size);
-                    let elbows: Vec<_> = placed.iter().filter(|(l, _, _)| l.text == "elbow").collect();
+                    let elbows: Vec<_> = placed
+                        .iter()
+                        .filter(|(l, _, _)| l.text == "elbow")
+                        .collect();
                     assert_eq!(elbows.len(), 2, "{name}");
                     for ((l, b, p), offset) in elbows.into_iter().zip([LBS_OFFSET, DQS_OFFSET]) {
                         let at = project_to_canvas(view_proj, size, offset + elbow).unwrap();
-                        assert!(l.dot_px.distance(at) < 0.01, "{name}: anchored at the elbow");
+                        assert!(
+                            l.dot_px.distance(at) < 0.01,
+                            "{name}: anchored at the elbow"
+                        );
                         assert!(p.shown, "{name} on {size}: elbow shown");
-                        let rect = Rect { min: p.top_left, size: b.size };
-                        let on = tubes.iter().find(|q| q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all());
-                        assert!(on.is_none(), "{name} on {size}: elbow at {:?} covers a tube at {on:?}", rect.min);
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        let on = tubes
+                            .iter()
+                            .find(|q| q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all());
+                        assert!(
+                            on.is_none(),
+                            "{name} on {size}: elbow at {:?} covers a tube at {on:?}",
+                            rect.min
+                        );
                         // Further than a label's height from the joint, it gets a leader line.
                         if rect.nearest(at).distance(at) > LEADER_PX {
                             assert!(leader(rect, at, false).is_some());
@@ -325,7 +349,10 @@ fn lesson_09_cylinder_names_keep_off_the_tubes_and_each_other() {
                         .map(|l| l.first_place(view_proj, size).unwrap())
                         .collect();
                     if let [a, b] = k[..] {
-                        assert!(!a.overlaps(&b, LABELS_APART_PX - 0.5), "{name} on {size}: K₁p and K₂p at {a:?} and {b:?}");
+                        assert!(
+                            !a.overlaps(&b, LABELS_APART_PX - 0.5),
+                            "{name} on {size}: K₁p and K₂p at {a:?} and {b:?}"
+                        );
                     }
                 }));
             }
@@ -418,7 +445,11 @@ fn assert_off(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2, point
         let on = points
             .iter()
             .find(|p| p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all());
-        assert!(on.is_none(), "{name} on {size}: {text:?} at {:?} covers a box at {on:?}", rect.min);
+        assert!(
+            on.is_none(),
+            "{name} on {size}: {text:?} at {:?} covers a box at {on:?}",
+            rect.min
+        );
     }
 }
 
@@ -454,7 +485,8 @@ fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
                 let mut frame = Frame::default();
                 scene.draw(&mut frame).unwrap();
                 let camera = page_camera(view, &frame, size);
-                let name = format!("01 scale comparison, scale {scale}, angles {angles}, view {view:?}");
+                let name =
+                    format!("01 scale comparison, scale {scale}, angles {angles}, view {view:?}");
                 let boxes = cube_points(&frame, &camera, size);
                 failures.extend(failure_of(|| {
                     assert_clear(&name, &frame, &camera, size);
@@ -475,14 +507,25 @@ fn lesson_01_point_and_direction_names_keep_off_the_boxes() {
     let page = [0.5, 0.3, 0.0, 5.0, 0.6, 0.45];
     let mut failures = Vec::new();
     for (t, angles, order) in [
-        (Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, 30.0), Order::RotateFirst),
-        (Vec3::splat(-1.21), Vec3::splat(-109.0), Order::TranslateFirst),
+        (
+            Vec3::new(1.0, 0.5, 0.0),
+            Vec3::new(0.0, 0.0, 30.0),
+            Order::RotateFirst,
+        ),
+        (
+            Vec3::splat(-1.21),
+            Vec3::splat(-109.0),
+            Order::TranslateFirst,
+        ),
     ] {
         let mut scene = SingleShape::new();
         scene.set_transform(t, angles).unwrap();
         scene.set_order(order);
         for stage in [0.0, 0.5, 1.0, 1.35, 2.0] {
-            for view in [page, [0.5, 0.3, 0.0, 5.0, 0.6 - 0.008 * 130.0, 0.45 + 0.008 * 42.0]] {
+            for view in [
+                page,
+                [0.5, 0.3, 0.0, 5.0, 0.6 - 0.008 * 130.0, 0.45 + 0.008 * 42.0],
+            ] {
                 for size in CANVASES {
                     let mut frame = Frame::default();
                     scene.draw(&mut frame, stage).unwrap();
@@ -495,7 +538,9 @@ fn lesson_01_point_and_direction_names_keep_off_the_boxes() {
                     let mut boxes = cube_points(&frame, &camera, size);
                     let view_proj = camera.projection(size.x / size.y) * camera.view();
                     boxes.extend(frame.segments_of(order.other().color()).flat_map(|(a, b)| {
-                        (0..=8).filter_map(move |k| project_to_canvas(view_proj, size, a.lerp(b, k as f32 / 8.0)))
+                        (0..=8).filter_map(move |k| {
+                            project_to_canvas(view_proj, size, a.lerp(b, k as f32 / 8.0))
+                        })
                     }));
                     let pink = |text: &str| text.starts_with("p (") || text.starts_with("v (");
                     failures.extend(failure_of(|| {

@@ -14,6 +14,9 @@ use super::{
     compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner,
     DEFAULT_RUNNER,
 };
+use crate::camera::{project_to_canvas, OrbitCamera};
+use crate::draw::layout::Rect;
+use crate::draw::Label;
 use crate::exercises::run;
 use crate::rigid::DualQuat;
 use crate::skeleton::{human, Clip, ClipCursor, Pose};
@@ -21,9 +24,6 @@ use crate::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig, SkinnedCha
 use crate::skinning::{
     dual_quat_palette, mesh_volume, ring_area, skin_dqs, skin_lbs, skinning_palette, SkinWeights,
 };
-use crate::camera::{project_to_canvas, OrbitCamera};
-use crate::draw::layout::Rect;
-use crate::draw::Label;
 use glam::{Affine3A, Mat4, Vec2, Vec3, Vec4};
 
 const EXERCISE_FILE: &str = "src/exercises/skinning.rs";
@@ -40,7 +40,9 @@ pub const DQS_OFFSET: Vec3 = Vec3::new(0.4, 0.3, 0.0);
 pub fn off_points(points: &[Vec2], margin_px: f32) -> impl Fn(Rect) -> bool + '_ {
     move |rect| {
         let (lo, hi) = (rect.min - margin_px, rect.max() + margin_px);
-        points.iter().all(|p| !(p.cmpgt(lo).all() && p.cmplt(hi).all()))
+        points
+            .iter()
+            .all(|p| !(p.cmpgt(lo).all() && p.cmplt(hi).all()))
     }
 }
 
@@ -1427,8 +1429,16 @@ impl HumanFigure {
         };
         let titles: Vec<Label> = frame.labels.drain(titles_from..).collect();
         for (k, title) in titles.into_iter().enumerate() {
-            let mut candidates =
-                Label::around_dot(title.anchor, 0.0, toward(k), &title.text, title.color, 1, 8, 10.0);
+            let mut candidates = Label::around_dot(
+                title.anchor,
+                0.0,
+                toward(k),
+                &title.text,
+                title.color,
+                1,
+                8,
+                10.0,
+            );
             candidates.insert(0, title);
             self.label_off_bodies(frame, &body_px, candidates);
         }

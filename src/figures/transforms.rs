@@ -6,11 +6,11 @@
 //!   `world = parent · local`, the walk plot computed from the current pose, and the check of the
 //!   student's exercises 1.1 and 1.2.
 
+use super::skinning::{off_points, view_of};
 use super::{
     check_samples, compare_note, failure_note, finite, in_range, palette, rotation_problem, Frame,
     MeshId, Runner, DEFAULT_RUNNER,
 };
-use super::skinning::{off_points, view_of};
 use crate::camera::{project_to_canvas, OrbitCamera};
 use crate::draw::{Label, StrokeStyle};
 use crate::exercises::run;
@@ -30,16 +30,22 @@ fn boxes_px(models: &[Mat4], view: Option<(Mat4, Vec2)>) -> Vec<Vec2> {
         return Vec::new();
     };
     let grid = (0..125).map(|i| Vec3::new((i % 5) as f32, (i / 5 % 5) as f32, (i / 25) as f32));
-    grid.flat_map(|g| models.iter().map(move |m| m.transform_point3(g * 0.5 - 1.0)))
-        .filter_map(|p| project_to_canvas(view_proj, size, p))
-        .collect()
+    grid.flat_map(|g| {
+        models
+            .iter()
+            .map(move |m| m.transform_point3(g * 0.5 - 1.0))
+    })
+    .filter_map(|p| project_to_canvas(view_proj, size, p))
+    .collect()
 }
 
 /// Where `p` lies on the canvas (`view`) relative to `from`: the screen direction a label of
 /// `p` looks away from `from` in; `otherwise` without a view.
 fn away(view: Option<(Mat4, Vec2)>, p: Vec3, from: Vec3, otherwise: Vec2) -> Vec2 {
-    view.and_then(|(m, size)| Some(project_to_canvas(m, size, p)? - project_to_canvas(m, size, from)?))
-        .unwrap_or(otherwise)
+    view.and_then(|(m, size)| {
+        Some(project_to_canvas(m, size, p)? - project_to_canvas(m, size, from)?)
+    })
+    .unwrap_or(otherwise)
 }
 
 /// Which product places the box.
@@ -1084,14 +1090,22 @@ impl ScaleComparison {
             );
             let out = -(a + b).normalize_or_zero();
             let toward = away(view, c[2] + out, c[2], Vec2::new(-out.z, -out.y));
-            names.push((c[2], toward, format!("{:.0}°", angle / DEG), palette::DARK, 2, 0.0));
+            names.push((
+                c[2],
+                toward,
+                format!("{:.0}°", angle / DEG),
+                palette::DARK,
+                2,
+                0.0,
+            ));
         }
         for wrist in wrists {
             let name = "forearm.L".to_string();
             names.push((wrist, Vec2::new(-1.0, -1.0), name, palette::PINK, 1, 10.0));
         }
         for (anchor, toward, text, color, priority, dot_px) in names {
-            let candidates = Label::around_dot(anchor, dot_px, toward, &text, color, priority, 10, 8.0);
+            let candidates =
+                Label::around_dot(anchor, dot_px, toward, &text, color, priority, 10, 8.0);
             frame.first_clear_label_by(view, 2.0, candidates, off_points(&boxes, 2.0));
         }
         frame.keep_box_in_view(
