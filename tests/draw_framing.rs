@@ -283,3 +283,78 @@ fn the_aeroplanes_fit_their_reach_and_fill_more_of_the_view() {
         .map(|p| project_to_canvas(view_proj, size, p).unwrap());
     assert!((a - b).length() >= 88.0, "{} px", (a - b).length());
 }
+
+/// Lesson 09 Figure 4 (LBS and DQS side by side), in both views, through the walk and the run:
+/// from the page's orbit and the page test's (a drag of a fifth of the canvas across and a tenth
+/// down), at both page sizes, every vertex of both bodies (whole body) or of both left legs'
+/// thigh and shin parts (left legs) lands inside the canvas, clear of the padding, at any time
+/// of the clip, and so do the titles, which in the legs view stand under the feet.
+#[test]
+fn the_skinned_pair_keeps_both_bodies_or_both_left_legs_in_view() {
+    use inbetween::draw::{Frame, MeshId};
+    use inbetween::figures::skinning::HumanFigure;
+    let mut h = HumanFigure::new();
+    h.set_compare(true);
+    let leg: Vec<usize> = {
+        let c = h.character();
+        let per_part = c.mesh.positions.len() / c.skeleton.len();
+        ["thigh.L", "shin.L"]
+            .iter()
+            .flat_map(|name| {
+                let j = c.skeleton.find(name).unwrap();
+                j * per_part..(j + 1) * per_part
+            })
+            .collect()
+    };
+    let places = [Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.0, 0.0, -0.5)];
+    for clip in ["walk", "run"] {
+        h.set_clip(clip).unwrap();
+        for view in ["whole body", "left legs"] {
+            h.set_view(view).unwrap();
+            h.skin(0.0).unwrap();
+            let mut frame = Frame::default();
+            h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
+            let titles: Vec<Vec3> = frame
+                .labels
+                .iter()
+                .filter(|l| l.text == "LBS" || l.text == "DQS")
+                .map(|l| l.anchor)
+                .collect();
+            assert_eq!(titles.len(), 2);
+            if view == "left legs" {
+                assert!(
+                    titles.iter().all(|t| t.y < 0.0),
+                    "under the feet: {titles:?}"
+                );
+            }
+            for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+                for (yaw, pitch) in [(1.45, 0.15), (1.45 - 0.008 * 130.0, 0.15 + 0.008 * 42.0)] {
+                    let mut camera = OrbitCamera::from_view([0.0, 0.9, 0.0, 3.2, yaw, pitch]);
+                    assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let inside = |p: Vec3, what: &str| {
+                        let px = project_to_canvas(view_proj, size, p).expect("in front");
+                        let least = [px.x, px.y, size.x - px.x, size.y - px.y]
+                            .into_iter()
+                            .fold(f32::MAX, f32::min);
+                        assert!(
+                            least >= FIT_PAD_PX - 0.5,
+                            "{clip}, {view}, {size}, yaw {yaw}: {what} at {px}"
+                        );
+                    };
+                    titles.iter().for_each(|t| inside(*t, "a title"));
+                    for k in 0..=32 {
+                        h.skin(h.duration_sec() * k as f32 / 32.0).unwrap();
+                        for (mesh, place) in [&h.mesh, &h.mesh_dqs].into_iter().zip(places) {
+                            let all: Vec<usize> = (0..mesh.positions.len()).collect();
+                            let vertices = if view == "left legs" { &leg } else { &all };
+                            for &v in vertices {
+                                inside(mesh.positions[v] + place, "a vertex");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

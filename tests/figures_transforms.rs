@@ -765,3 +765,40 @@ fn the_inherited_forearm_is_a_parallelogram() {
     comparison.draw(&mut frame).unwrap();
     assert!((corner(&comparison, 1) - 90.0).abs() < 0.01);
 }
+
+/// The label at each forearm's marked corner and the note give the same angle, whatever the
+/// sliders: with the elbow turned about y and z as well as x, the box's other sides shear too,
+/// and an angle measured at another corner than the marked one disagrees with the label.
+#[test]
+fn the_corner_label_and_the_note_give_the_same_angle() {
+    use inbetween::figures::transforms::ScaleComparison;
+    for (scale, angles) in [
+        (Vec3::new(1.0, 2.0, 1.0), Vec3::new(-70.0, 0.0, 0.0)),
+        (Vec3::new(2.42, 0.8, 2.42), Vec3::new(105.0, -109.0, -109.0)),
+        (Vec3::new(0.5, 3.0, 1.5), Vec3::new(-40.0, 60.0, 30.0)),
+    ] {
+        let mut comparison = ScaleComparison::new();
+        comparison.set_upper_arm_scale(scale).unwrap();
+        comparison.set_forearm_angles_deg(angles).unwrap();
+        let mut frame = Frame::default();
+        let note = comparison.draw(&mut frame).unwrap();
+        let shown: Vec<&str> = frame
+            .labels
+            .iter()
+            .filter(|l| l.text.ends_with('°'))
+            .map(|l| l.text.as_str())
+            .collect();
+        for k in 0..2 {
+            let c = comparison.forearm_outline(k);
+            let at_corner = (c[1] - c[2]).angle_between(c[3] - c[2]).to_degrees();
+            let (_, angle) = comparison.forearm_shape(k);
+            assert!((angle - at_corner).abs() < 1e-3, "{angle} {at_corner}");
+            assert_eq!(shown[k], format!("{angle:.0}°"), "{scale} {angles}");
+            let in_note = format!(
+                "the marked corner of its outline {}°",
+                run::format_number(angle)
+            );
+            assert!(note.contains(&in_note), "{in_note:?} in {note}");
+        }
+    }
+}

@@ -191,6 +191,176 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_curves() {
     }
 }
 
+/// The orbits Figure 4 of lesson 09 is checked from: the page's (lessons/09-skinning/lesson.js)
+/// and the page's after the page test's drag (a fifth of a 650 px canvas across, a tenth of its
+/// 420 px down, at 0.008 rad a pixel).
+const HUMAN_ORBITS: [[f32; 6]; 2] = [
+    [0.0, 0.9, 0.0, 3.2, 1.45, 0.15],
+    [
+        0.0,
+        0.9,
+        0.0,
+        3.2,
+        1.45 - 0.008 * 130.0,
+        0.15 + 0.008 * 42.0,
+    ],
+];
+
+#[test]
+fn lesson_09_human_pair_names_keep_off_the_bodies_and_the_skeletons() {
+    // Both bodies side by side with the skeleton X-rayed and a heat map's joint named, in both
+    // views, through the run and the walk, from both orbits: the titles and the joint's names
+    // cover no vertex of either body (as skinned, on the CPU), no joint dot or bone, and no
+    // other name. As on the page, the joint's names are placed for the view of the frame
+    // before (set_canvas_view).
+    use inbetween::draw::MeshId;
+    use inbetween::figures::skinning::HumanFigure;
+    let places = [Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.0, 0.0, -0.5)];
+    let mut failures = Vec::new();
+    for clip in ["walk", "run"] {
+        for view in ["whole body", "left legs"] {
+            for joint in ["pelvis", "thigh.L", "chest"] {
+                let mut h = HumanFigure::new();
+                h.set_compare(true);
+                h.set_clip(clip).unwrap();
+                h.set_view(view).unwrap();
+                h.set_heat_joint(joint).unwrap();
+                h.set_show_skeleton(true);
+                for t in [0.0, 0.21, 0.42] {
+                    h.skin(t).unwrap();
+                    for size in CANVASES {
+                        for orbit in HUMAN_ORBITS {
+                            let mut frame = Frame::default();
+                            h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
+                            let camera = page_camera(orbit, &frame, size);
+                            h.set_canvas_view(camera, size.x, size.y);
+                            let mut frame = Frame::default();
+                            h.draw_pair(&mut frame, [MeshId(3), MeshId(4)]);
+                            let camera = page_camera(orbit, &frame, size);
+                            let name = format!(
+                                "09 pair, {clip} at {t} s, {view}, {joint}, orbit {orbit:?}"
+                            );
+                            let view_proj = camera.projection(size.x / size.y) * camera.view();
+                            let body: Vec<Vec2> = [&h.mesh, &h.mesh_dqs]
+                                .into_iter()
+                                .zip(places)
+                                .flat_map(|(m, place)| m.positions.iter().map(move |p| *p + place))
+                                .filter_map(|p| project_to_canvas(view_proj, size, p))
+                                .collect();
+                            let labels = label_boxes(&frame, &camera, size);
+                            failures.extend(failure_of(|| {
+                                assert_eq!(labels.len(), 4, "{name} on {size}: all shown");
+                                assert_clear(&name, &frame, &camera, size);
+                                for (text, rect) in &labels {
+                                    let on = body
+                                        .iter()
+                                        .find(|p| p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all());
+                                    assert!(on.is_none(), "{name} on {size}: {text:?} at {:?} covers a body at {on:?}", rect.min);
+                                }
+                            }));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_09_cylinder_names_keep_off_the_tubes_and_each_other() {
+    // Figure 1 at its defaults, at the page test's settings (bend 36°, twist −109°, falloff
+    // 0.79 m, ring 8) and at a straight and a fully bent elbow, from the page's orbit and the
+    // page test's drag: each elbow's name is anchored at the elbow joint and covers neither
+    // tube (placed off it, the page draws a leader line); no name covers a dot or line; K₁p's
+    // and K₂p's boxes (large text) stay apart. As on the page, the labels are placed for the
+    // view of the frame before (set_view).
+    use inbetween::draw::layout::{leader, LEADER_PX};
+    use inbetween::draw::{MeshId, LABELS_APART_PX};
+    use inbetween::figures::skinning::{CylinderFigure, DQS_OFFSET, LBS_OFFSET};
+    let orbits = [
+        [0.3, 0.7, 0.0, 5.0, 0.0, 0.2],
+        [0.3, 0.7, 0.0, 5.0, -0.008 * 130.0, 0.2 + 0.008 * 42.0],
+    ];
+    let mut failures = Vec::new();
+    for (bend, twist, falloff, ring) in [
+        (90.0, 0.0, 0.15, 20),
+        (36.0, -109.0, 0.79, 8),
+        (0.0, 0.0, 0.15, 20),
+        (180.0, 45.0, 0.05, 23),
+    ] {
+        let mut f = CylinderFigure::new();
+        f.set_bend_deg(bend).unwrap();
+        f.set_twist_deg(twist).unwrap();
+        f.set_falloff(falloff).unwrap();
+        f.set_probe_ring(ring).unwrap();
+        let elbow = f.rig().segments[1].0;
+        for size in CANVASES {
+            for orbit in orbits {
+                let mut frame = Frame::default();
+                f.draw(&mut frame, [MeshId(1), MeshId(2)]).unwrap();
+                f.set_view(page_camera(orbit, &frame, size), size.x, size.y);
+                let mut frame = Frame::default();
+                f.draw(&mut frame, [MeshId(1), MeshId(2)]).unwrap();
+                let camera = page_camera(orbit, &frame, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let name = format!("09 cylinder, bend {bend}, twist {twist}, orbit {orbit:?}");
+                let tubes: Vec<Vec2> = [(LBS_OFFSET, &f.lbs), (DQS_OFFSET, &f.dqs)]
+                    .into_iter()
+                    .flat_map(|(o, m)| m.positions.iter().map(move |p| o + *p))
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let placed = layout(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert_clear(&name, &frame, &camera, size);
+                    let elbows: Vec<_> = placed
+                        .iter()
+                        .filter(|(l, _, _)| l.text == "elbow")
+                        .collect();
+                    assert_eq!(elbows.len(), 2, "{name}");
+                    for ((l, b, p), offset) in elbows.into_iter().zip([LBS_OFFSET, DQS_OFFSET]) {
+                        let at = project_to_canvas(view_proj, size, offset + elbow).unwrap();
+                        assert!(
+                            l.dot_px.distance(at) < 0.01,
+                            "{name}: anchored at the elbow"
+                        );
+                        assert!(p.shown, "{name} on {size}: elbow shown");
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        let on = tubes
+                            .iter()
+                            .find(|q| q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all());
+                        assert!(
+                            on.is_none(),
+                            "{name} on {size}: elbow at {:?} covers a tube at {on:?}",
+                            rect.min
+                        );
+                        // Further than a label's height from the joint, it gets a leader line.
+                        if rect.nearest(at).distance(at) > LEADER_PX {
+                            assert!(leader(rect, at, false).is_some());
+                        }
+                    }
+                    let k: Vec<Rect> = frame
+                        .labels
+                        .iter()
+                        .filter(|l| l.text.starts_with('K'))
+                        .map(|l| l.first_place(view_proj, size).unwrap())
+                        .collect();
+                    if let [a, b] = k[..] {
+                        assert!(
+                            !a.overlaps(&b, LABELS_APART_PX - 0.5),
+                            "{name} on {size}: K₁p and K₂p at {a:?} and {b:?}"
+                        );
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
 #[test]
 fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
     // Over the whole twist slider, with the fix on and off: every label is shown where the
@@ -251,33 +421,139 @@ fn lesson_07_law_of_cosines_labels_keep_off_its_lines() {
     }
 }
 
+/// Points on the frame's boxes (`MeshId::CUBE`) as seen on the canvas: a 9 × 9 × 9 grid
+/// through each.
+fn cube_points(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<Vec2> {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == inbetween::draw::MeshId::CUBE)
+        .flat_map(|m| {
+            (0..729).map(move |i| {
+                let g = Vec3::new((i % 9) as f32, (i / 9 % 9) as f32, (i / 81) as f32);
+                m.model.transform_point3(g * 0.25 - 1.0)
+            })
+        })
+        .filter_map(|p| project_to_canvas(view_proj, size, p))
+        .collect()
+}
+
+/// Asserts that no shown label's box covers one of `points` (canvas pixels).
+fn assert_off(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2, points: &[Vec2]) {
+    for (text, rect) in label_boxes(frame, camera, size) {
+        let on = points
+            .iter()
+            .find(|p| p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all());
+        assert!(
+            on.is_none(),
+            "{name} on {size}: {text:?} at {:?} covers a box at {on:?}",
+            rect.min
+        );
+    }
+}
+
 #[test]
 fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
-    // Figure 3's page camera (lessons/01-transforms/lesson.js: from +x), at the page's start,
-    // at the caption's two tries (a uniform scale; the elbow at 0°) and another stretch: the
-    // corner angles' labels and the forearms' names sit off the outlines, the arcs, the
-    // skeletons' lines and their dots.
+    // Figure 3 from the page's camera (lessons/01-transforms/lesson.js: from +x) and after the
+    // page test's drag (a fifth of a 650 px canvas across, a tenth of 420 px down, 0.008 rad a
+    // pixel), at the page's start, at the caption's two tries (a uniform scale; the elbow at
+    // 0°), another stretch and the page test's settings: the titles, the corner angles and the
+    // forearms' names sit off the outlines, the arcs, the skeletons' lines and dots, and the
+    // bodies' boxes. As on the page, they are placed for the view of the frame before.
     use inbetween::figures::transforms::ScaleComparison;
-    for (scale, elbow) in [
-        (Vec3::new(1.0, 2.0, 1.0), -70.0),
-        (Vec3::new(2.0, 2.0, 2.0), -70.0),
-        (Vec3::new(1.0, 2.0, 1.0), 0.0),
-        (Vec3::new(1.0, 1.5, 1.0), -90.0),
+    let mut failures = Vec::new();
+    for (scale, angles) in [
+        (Vec3::new(1.0, 2.0, 1.0), Vec3::new(-70.0, 0.0, 0.0)),
+        (Vec3::new(2.0, 2.0, 2.0), Vec3::new(-70.0, 0.0, 0.0)),
+        (Vec3::new(1.0, 2.0, 1.0), Vec3::ZERO),
+        (Vec3::new(1.0, 1.5, 1.0), Vec3::new(-90.0, 0.0, 0.0)),
+        (Vec3::new(2.42, 0.8, 2.42), Vec3::new(105.0, -109.0, -109.0)),
     ] {
         let mut scene = ScaleComparison::new();
         scene.set_upper_arm_scale(scale).unwrap();
-        scene
-            .set_forearm_angles_deg(Vec3::new(elbow, 0.0, 0.0))
-            .unwrap();
-        let mut frame = Frame::default();
-        scene.draw(&mut frame).unwrap();
-        let view = [0.0, 1.0, 0.0, 3.6, std::f32::consts::FRAC_PI_2, 0.12];
-        for size in CANVASES {
-            let camera = page_camera(view, &frame, size);
-            let name = format!("01 scale comparison, scale {scale}, elbow {elbow}°");
-            assert_clear(&name, &frame, &camera, size);
+        scene.set_forearm_angles_deg(angles).unwrap();
+        let yaw = std::f32::consts::FRAC_PI_2;
+        for view in [
+            [0.0, 1.0, 0.0, 3.6, yaw, 0.12],
+            [0.0, 1.0, 0.0, 3.6, yaw - 0.008 * 130.0, 0.12 + 0.008 * 42.0],
+        ] {
+            for size in CANVASES {
+                let mut frame = Frame::default();
+                scene.draw(&mut frame).unwrap();
+                scene.set_view(page_camera(view, &frame, size), size.x, size.y);
+                let mut frame = Frame::default();
+                scene.draw(&mut frame).unwrap();
+                let camera = page_camera(view, &frame, size);
+                let name =
+                    format!("01 scale comparison, scale {scale}, angles {angles}, view {view:?}");
+                let boxes = cube_points(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert_clear(&name, &frame, &camera, size);
+                    assert_off(&name, &frame, &camera, size, &boxes);
+                }));
+            }
         }
     }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_01_point_and_direction_names_keep_off_the_boxes() {
+    // Figure 1 from the page's camera and after the page test's drag, at the page's start and
+    // at the page test's settings (every slider at −1.21 m or −109°, the solid box R·T), over
+    // the steps: p's and v's names cover neither box, no dot or line, and no other name.
+    use inbetween::figures::transforms::{Order, SingleShape};
+    let page = [0.5, 0.3, 0.0, 5.0, 0.6, 0.45];
+    let mut failures = Vec::new();
+    for (t, angles, order) in [
+        (
+            Vec3::new(1.0, 0.5, 0.0),
+            Vec3::new(0.0, 0.0, 30.0),
+            Order::RotateFirst,
+        ),
+        (
+            Vec3::splat(-1.21),
+            Vec3::splat(-109.0),
+            Order::TranslateFirst,
+        ),
+    ] {
+        let mut scene = SingleShape::new();
+        scene.set_transform(t, angles).unwrap();
+        scene.set_order(order);
+        for stage in [0.0, 0.5, 1.0, 1.35, 2.0] {
+            for view in [
+                page,
+                [0.5, 0.3, 0.0, 5.0, 0.6 - 0.008 * 130.0, 0.45 + 0.008 * 42.0],
+            ] {
+                for size in CANVASES {
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, stage).unwrap();
+                    scene.set_view(page_camera(view, &frame, size), size.x, size.y);
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, stage).unwrap();
+                    let camera = page_camera(view, &frame, size);
+                    let name = format!("01 single shape, t {t}, stage {stage}, view {view:?}");
+                    // The solid box and the ghost's corners and edges (its wireframe).
+                    let mut boxes = cube_points(&frame, &camera, size);
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    boxes.extend(frame.segments_of(order.other().color()).flat_map(|(a, b)| {
+                        (0..=8).filter_map(move |k| {
+                            project_to_canvas(view_proj, size, a.lerp(b, k as f32 / 8.0))
+                        })
+                    }));
+                    let pink = |text: &str| text.starts_with("p (") || text.starts_with("v (");
+                    failures.extend(failure_of(|| {
+                        assert_clear_of(&name, &frame, &camera, size, pink);
+                        let mut only = frame.clone();
+                        only.labels.retain(|l| pink(&l.text));
+                        assert_off(&name, &only, &camera, size, &boxes);
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
 }
 
 #[test]

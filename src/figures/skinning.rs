@@ -14,6 +14,9 @@ use super::{
     compare_note, failure_note, format_number, in_range, palette, Frame, MeshId, Runner,
     DEFAULT_RUNNER,
 };
+use crate::camera::{project_to_canvas, OrbitCamera};
+use crate::draw::layout::Rect;
+use crate::draw::Label;
 use crate::exercises::run;
 use crate::rigid::DualQuat;
 use crate::skeleton::{human, Clip, ClipCursor, Pose};
@@ -21,7 +24,7 @@ use crate::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig, SkinnedCha
 use crate::skinning::{
     dual_quat_palette, mesh_volume, ring_area, skin_dqs, skin_lbs, skinning_palette, SkinWeights,
 };
-use glam::{Affine3A, Mat4, Vec3, Vec4};
+use glam::{Affine3A, Mat4, Vec2, Vec3, Vec4};
 
 const EXERCISE_FILE: &str = "src/exercises/skinning.rs";
 /// How close the student's skinned positions must be to the reference's, metres.
@@ -29,6 +32,25 @@ const TOLERANCE: f32 = 1e-4;
 /// Where the two cylinders stand: LBS on the left, DQS on the right.
 pub const LBS_OFFSET: Vec3 = Vec3::new(-2.4, 0.3, 0.0);
 pub const DQS_OFFSET: Vec3 = Vec3::new(0.4, 0.3, 0.0);
+
+/// Whether a label's box (CSS pixels) covers none of `points` (on the canvas), with `margin_px`
+/// round each: the further test of [`Frame::first_clear_label_by`] for a label that must keep off
+/// a surface the frame does not list (a body, a tube), given as points on it. Lessons 01 and 09
+/// share it, so that the placement is compiled once for them.
+pub fn off_points(points: &[Vec2], margin_px: f32) -> impl Fn(Rect) -> bool + '_ {
+    move |rect| {
+        let (lo, hi) = (rect.min - margin_px, rect.max() + margin_px);
+        points
+            .iter()
+            .all(|p| !(p.cmpgt(lo).all() && p.cmplt(hi).all()))
+    }
+}
+
+/// The matrix and canvas size (CSS pixels) a figure places its labels for: the last frame's
+/// camera, as the page passes it (`set_*view`).
+pub fn view_of(view: Option<(OrbitCamera, Vec2)>) -> Option<(Mat4, Vec2)> {
+    view.map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size))
+}
 
 /// Heat-map colour of a weight in `[0, 1]`: blue (0) through pale yellow (½) to red (1).
 pub fn heat(w: f32) -> Vec4 {
@@ -142,6 +164,9 @@ pub struct CylinderFigure {
     stale: bool,
     /// The ring whose top vertex the figure follows ([`CylinderFigure::set_probe_ring`]).
     probe_ring: usize,
+    /// The last frame's camera and canvas size (CSS pixels), which the labels are placed for
+    /// ([`CylinderFigure::set_view`]).
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 /// Widths of the elbow ring and of the lines along the tubes, CSS pixels.
@@ -172,6 +197,14 @@ impl CylinderFigure {
     /// (+y) and in front (+z) in the bind pose.
     pub const STRIPES: [usize; 2] = [0, CYLINDER_AROUND / 4];
 
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the elbows' and the followed vertex's names are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
     /// Bent 90°, not twisted, falloff 0.15 m, no heat map.
     pub fn new() -> Self {
         let rig = cylinder_rig(1.0, 0.25, CYLINDER_RINGS, CYLINDER_AROUND)
@@ -196,6 +229,7 @@ impl CylinderFigure {
             exercise_note: String::new(),
             stale: true,
             probe_ring: CYLINDER_RINGS / 2,
+            view: None,
             rig,
         };
         figure.repaint();
@@ -495,9 +529,9 @@ impl CylinderFigure {
         frame.grid(12, 0.5);
         let s = self.rig.ring_start(self.rig.elbow_ring());
         let e = s + self.rig.around;
-        for (mesh, offset, color, name, skinned) in [
-            (meshes[0], LBS_OFFSET, palette::ORANGE, "LBS", &self.lbs),
-            (meshes[1], DQS_OFFSET, palette::TEAL, "DQS", &self.dqs),
+        for (mesh, offset, skinned) in [
+            (meshes[0], LBS_OFFSET, &self.lbs),
+            (meshes[1], DQS_OFFSET, &self.dqs),
         ] {
             let model = Mat4::from_translation(offset);
             frame.mesh_vertex_colors(mesh, model);
@@ -524,20 +558,33 @@ impl CylinderFigure {
                     .collect();
                 frame.wide_polyline(&stripe, palette::GREY, STRIPE_PX);
             }
-            // The skeleton: joints and bones, drawn beside the tube's axis.
-            let joints: Vec<Vec3> = self
-                .model
-                .iter()
-                .map(|m| offset + Vec3::from(m.translation))
-                .collect();
-            frame.label(offset + Vec3::new(0.2, -0.45, 0.0), name, color);
-            frame.label(
-                joints[1] + Vec3::new(0.0, -0.4, 0.3),
-                "elbow",
-                palette::DARK,
-            );
         }
         let probe = self.draw_probe(frame);
+        // Each tube's name below it, and its elbow's name anchored at the elbow joint: each at
+        // the first place round its anchor, below first, that covers neither tube nor any dot,
+        // line or name (on the last frame's view); the page draws a leader line to a name
+        // placed away from its anchor.
+        let view = view_of(self.view);
+        let tubes_px: Vec<Vec2> = view.map_or(Vec::new(), |(view_proj, size)| {
+            [(LBS_OFFSET, &self.lbs), (DQS_OFFSET, &self.dqs)]
+                .into_iter()
+                .flat_map(|(o, m)| m.positions.iter().map(move |p| o + *p))
+                .filter_map(|p| project_to_canvas(view_proj, size, p))
+                .collect()
+        });
+        let elbow = Vec3::from(self.model[1].translation);
+        for (offset, color, name) in [
+            (LBS_OFFSET, palette::ORANGE, "LBS"),
+            (DQS_OFFSET, palette::TEAL, "DQS"),
+        ] {
+            for (anchor, color, name) in [
+                (offset + Vec3::new(0.2, -0.45, 0.0), color, name),
+                (offset + elbow, palette::DARK, "elbow"),
+            ] {
+                let candidates = Label::around_dot(anchor, 0.0, Vec2::Y, name, color, 0, 16, 10.0);
+                frame.first_clear_label_by(view, 2.0, candidates, off_points(&tubes_px, 3.0));
+            }
+        }
         // Both tubes at every bend and twist the sliders reach, with their labels: the camera
         // stays put while the sliders move.
         for offset in [LBS_OFFSET, DQS_OFFSET] {
@@ -622,13 +669,27 @@ impl CylinderFigure {
                 crate::draw::StrokeStyle::dashed(2.0, 0.04, 0.03),
             );
             frame.marker_on_top(o + k2, 10.0, palette::GREY);
-            frame.label_large(o + k2, "K₂p", palette::DARK, 1);
         }
         frame.marker_on_top(o + k1, 10.0, palette::GREY);
-        frame.label_large(o + k1, "K₁p", palette::DARK, 1);
         frame.marker_on_top(o + dqs, 12.0, palette::TEAL);
         frame.marker_on_top(o + lbs, 12.0, palette::ORANGE);
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
+        // Each name at the first place round its dot, away from the other dot first, clear of
+        // the dots, lines and the other name (on the last frame's view): where the dots meet,
+        // names beside them touch.
+        let view = view_of(self.view);
+        let at = |p: Vec3| view.and_then(|(m, size)| project_to_canvas(m, size, o + p));
+        let named = [(k2, k1, "K₂p"), (k1, k2, "K₁p")];
+        let named = if w2 > 0.0 { &named[..] } else { &named[1..] };
+        for &(k, other, text) in named {
+            let toward = at(k).zip(at(other)).map_or(Vec2::X, |(a, b)| a - b);
+            let mut candidates =
+                Label::around_dot(o + k, 10.0, toward, text, palette::DARK, 1, 6, 8.0);
+            for l in &mut candidates {
+                l.large = true;
+            }
+            frame.first_clear_label_by(view, 2.0, candidates, off_points(&[], 0.0));
+        }
         let elbow = Vec3::from(self.model[1].translation);
         let rest = self.rig.mesh.positions[v].distance(self.rig.segments[1].0);
         // With one joint at weight 1 there is no chord (none is drawn): both methods move the
@@ -836,6 +897,9 @@ pub struct HumanFigure {
     /// skinning depends on: [`HumanFigure::skin`] at that same time again has nothing to do (a
     /// paused page would otherwise skin both bodies and upload them every frame).
     skinned_at: Option<f32>,
+    /// The last frame's camera and canvas size (CSS pixels), which the heat map's joint name is
+    /// placed for ([`HumanFigure::set_canvas_view`]).
+    canvas_view: Option<(OrbitCamera, Vec2)>,
 }
 
 /// What the character figure keeps in view ([`HumanFigure::view_box`]).
@@ -899,6 +963,7 @@ impl HumanFigure {
             view: HumanView::Body,
             view_box: None,
             skinned_at: None,
+            canvas_view: None,
         };
         figure.repaint();
         figure
@@ -910,6 +975,14 @@ impl HumanFigure {
         self.skinned_at = None;
         self.mesh.dirty = true;
         self.mesh_dqs.dirty = true;
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the heat map's joint name is placed for.
+    pub fn set_canvas_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.canvas_view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// "whole body" or "left legs": what the camera keeps in view ([`HumanFigure::view_box`]).
@@ -1298,10 +1371,8 @@ impl HumanFigure {
         Ok(self.overlay(frame, "on the GPU (vertex shader)"))
     }
 
-    /// What goes with each body, in its own coordinates: the X-rayed skeleton and the heat
-    /// map's joint label.
+    /// What goes with each body, in its own coordinates: the X-rayed skeleton.
     fn decorate(&self, frame: &mut Frame) {
-        let names = self.character.skeleton.names();
         let at = |m: &Affine3A| Vec3::from(m.translation);
         if self.show_skeleton {
             // The skeleton is inside the body: drawn over it, as an X-ray.
@@ -1315,12 +1386,69 @@ impl HumanFigure {
                 }
             }
         }
-        if let Some(j) = self.heat_joint {
-            frame.label(
-                at(&self.model[j]) + Vec3::new(0.08, 0.05, 0.0),
-                names[j].clone(),
-                palette::RED,
+    }
+
+    /// Points on the canvas (the last frame's view) that stand for the bodies placed at
+    /// `places`: every vertex, moved rigidly with its part's joint (the palette; the
+    /// blend zones move a few centimetres more), so that skinning on the GPU has them too.
+    fn body_points_px(&self, places: &[Vec3]) -> Vec<Vec2> {
+        let Some((view_proj, size)) = view_of(self.canvas_view) else {
+            return Vec::new();
+        };
+        let bind = &self.character.mesh.positions;
+        let per_part = bind.len() / self.palette.len();
+        let mut out = Vec::new();
+        for place in places {
+            for v in 0..bind.len() {
+                let p = *place + self.palette[v / per_part].transform_point3(bind[v]);
+                out.extend(project_to_canvas(view_proj, size, p));
+            }
+        }
+        out
+    }
+
+    /// Adds the first of `candidates` that covers none of `body_px` ([`HumanFigure::body_points_px`])
+    /// and no dot, bone or name placed before, on the last frame's view.
+    fn label_off_bodies(&self, frame: &mut Frame, body_px: &[Vec2], candidates: Vec<Label>) {
+        let view = view_of(self.canvas_view);
+        frame.first_clear_label_by(view, 2.0, candidates, off_points(body_px, 4.0));
+    }
+
+    /// The labels of the bodies placed at `places` (after they are drawn): each title (the
+    /// labels from `titles_from` on) where it was put, else at the first place round it clear
+    /// of the bodies; then the heat map's joint name, anchored at the joint of each body, at the
+    /// first place round it, away from the other body first. The page draws a leader line to
+    /// a name placed away from its joint.
+    fn place_labels(&self, frame: &mut Frame, places: &[Vec3], titles_from: usize) {
+        let body_px = self.body_points_px(places);
+        let view = view_of(self.canvas_view);
+        let at = |p: Vec3| view.and_then(|(m, size)| project_to_canvas(m, size, p));
+        let toward = |k: usize| {
+            let other = places[places.len() - 1 - k];
+            at(places[k]).zip(at(other)).map_or(Vec2::X, |(a, b)| a - b)
+        };
+        let titles: Vec<Label> = frame.labels.drain(titles_from..).collect();
+        for (k, title) in titles.into_iter().enumerate() {
+            let mut candidates = Label::around_dot(
+                title.anchor,
+                0.0,
+                toward(k),
+                &title.text,
+                title.color,
+                1,
+                8,
+                10.0,
             );
+            candidates.insert(0, title);
+            self.label_off_bodies(frame, &body_px, candidates);
+        }
+        let Some(j) = self.heat_joint else { return };
+        let name = &self.character.skeleton.names()[j];
+        for (k, place) in places.iter().enumerate() {
+            let anchor = *place + Vec3::from(self.model[j].translation);
+            let candidates =
+                Label::around_dot(anchor, JOINT_PX, toward(k), name, palette::RED, 0, 20, 10.0);
+            self.label_off_bodies(frame, &body_px, candidates);
         }
     }
 
@@ -1333,14 +1461,16 @@ impl HumanFigure {
         view_box: Option<(Vec3, Vec3)>,
         mut body: impl FnMut(&mut Frame, usize) -> Result<(), String>,
     ) -> Result<(), String> {
-        // Titles over the heads, or over the hips in the legs view; the camera fits them too.
+        // Titles over the heads, or under the feet in the legs view (over the hips they would
+        // sit on the bodies); the camera fits them too.
         let title_y = match (self.view, view_box) {
-            (HumanView::Legs, Some((_, hi))) => hi.y + 0.05,
+            (HumanView::Legs, Some((lo, _))) => lo.y - 0.15,
             _ => 2.0,
         };
         let titles = [("LBS", palette::ORANGE), ("DQS", palette::TEAL)];
         let step = Vec3::new(0.0, 0.0, -2.0 * HUMAN_OFFSET_Z);
         let mut failed = Ok(());
+        let titles_from = frame.labels.len();
         frame.side_by_side(step, &titles, title_y, |f, k| {
             if let Err(e) = body(f, k) {
                 failed = Err(e);
@@ -1348,6 +1478,8 @@ impl HumanFigure {
             self.decorate(f);
             f.contact_shadow(Vec3::ZERO, 0.3);
         });
+        let places = Self::pair_models().map(|m| m.w_axis.truncate());
+        self.place_labels(frame, &places, titles_from);
         match view_box {
             Some((lo, hi)) => frame.keep_box_in_view(lo, hi),
             // A box that holds both bodies standing (only if skinning the clip failed).
@@ -1364,6 +1496,7 @@ impl HumanFigure {
         let names = self.character.skeleton.names();
         if !self.compare {
             self.decorate(frame);
+            self.place_labels(frame, &[Vec3::ZERO], frame.labels.len());
         }
         let colours = match self.heat_joint {
             Some(j) => format!(" Colours: the weights of {}, blue 0 to red 1.", names[j]),

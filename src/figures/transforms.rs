@@ -6,19 +6,47 @@
 //!   `world = parent · local`, the walk plot computed from the current pose, and the check of the
 //!   student's exercises 1.1 and 1.2.
 
+use super::skinning::{off_points, view_of};
 use super::{
     check_samples, compare_note, failure_note, finite, in_range, palette, rotation_problem, Frame,
     MeshId, Runner, DEFAULT_RUNNER,
 };
-use crate::draw::StrokeStyle;
+use crate::camera::{project_to_canvas, OrbitCamera};
+use crate::draw::{Label, StrokeStyle};
 use crate::exercises::run;
 use crate::transform::{self, Hierarchy, JointShape, LocalTransform, ScaleMode};
-use glam::{Mat3, Mat4, Quat, Vec3};
+use glam::{Mat3, Mat4, Quat, Vec2, Vec3};
 
 /// Degrees to radians.
 pub const DEG: f32 = std::f32::consts::PI / 180.0;
 
 const EXERCISE_FILE: &str = "src/exercises/transforms.rs";
+
+/// Points on the canvas (`view`) that stand for the boxes `models` place (the unit cube's
+/// [−1, 1]³): a 5 × 5 × 5 grid through each, close enough that a label's box cannot lie on a
+/// box between them.
+fn boxes_px(models: &[Mat4], view: Option<(Mat4, Vec2)>) -> Vec<Vec2> {
+    let Some((view_proj, size)) = view else {
+        return Vec::new();
+    };
+    let grid = (0..125).map(|i| Vec3::new((i % 5) as f32, (i / 5 % 5) as f32, (i / 25) as f32));
+    grid.flat_map(|g| {
+        models
+            .iter()
+            .map(move |m| m.transform_point3(g * 0.5 - 1.0))
+    })
+    .filter_map(|p| project_to_canvas(view_proj, size, p))
+    .collect()
+}
+
+/// Where `p` lies on the canvas (`view`) relative to `from`: the screen direction a label of
+/// `p` looks away from `from` in; `otherwise` without a view.
+fn away(view: Option<(Mat4, Vec2)>, p: Vec3, from: Vec3, otherwise: Vec2) -> Vec2 {
+    view.and_then(|(m, size)| {
+        Some(project_to_canvas(m, size, p)? - project_to_canvas(m, size, from)?)
+    })
+    .unwrap_or(otherwise)
+}
 
 /// Which product places the box.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -64,6 +92,9 @@ pub struct SingleShape {
     euler_rad: Vec3,
     /// The order drawn solid; the other is the ghost.
     order: Order,
+    /// The last frame's camera and canvas size (CSS pixels), which p's and v's names are
+    /// placed for ([`SingleShape::set_view`]).
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 /// Half-size of Figure 1's box, metres.
@@ -89,6 +120,14 @@ impl SingleShape {
             translation: Vec3::new(1.0, 0.5, 0.0),
             euler_rad: Vec3::new(0.0, 0.0, 30.0 * DEG),
             order: Order::RotateFirst,
+            view: None,
+        }
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's).
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
         }
     }
 
@@ -199,21 +238,28 @@ impl SingleShape {
             // The arm of the swing, from the world origin to where R·T ends.
             frame.stroke(&[Vec3::ZERO, tip], rt, StrokeStyle::dashed(1.5, 0.06, 0.06));
         }
-        // A point (w = 1) moves with the translation; a direction (w = 0) only turns. Their
-        // labels sit just outside the box and past the arrow's tip. The direction points to the
-        // box's left and up (its −x side), away from the world axes and from the box's own x
-        // axis, and long enough to leave the box while the box turns at the origin; its label
-        // reads leftwards from past the tip, off the arrow.
+        // A point (w = 1) moves with the translation; a direction (w = 0) only turns. The
+        // direction points to the box's left and up (its −x side), away from the world axes and
+        // from the box's own x axis, and long enough to leave the box while the box turns at
+        // the origin. Each name goes to the first place round its dot or the arrow's tip, away
+        // from the box's centre or the origin first, that covers neither box nor any dot, line
+        // or name (on the last frame's view).
         let centre = m.w_axis.truncate();
         let p = (m * transform::point(POINT)).truncate();
         frame.marker(p, 11.0, palette::PINK);
-        let out = (p - centre).normalize_or_zero();
-        frame.label_with_priority(p + out * 0.15, "p (w = 1)", palette::PINK, 2);
         let v = (m * transform::direction(DIRECTION)).truncate();
         frame.arrow(Vec3::ZERO, v, palette::PINK, 0.1);
-        frame.label_left(v * 1.12, "v (w = 0)", palette::PINK);
-        if let Some(label) = frame.labels.last_mut() {
-            label.priority = 2;
+        let view = view_of(self.view);
+        let ghost_m = self.matrix_at(ghost, stage);
+        let boxes = boxes_px(&[m, ghost_m].map(|b| b * Mat4::from_scale(BOX_HALF)), view);
+        // Without a view: p's name rightwards, v's leftwards from past the tip, off the arrow.
+        for (at, from, text, otherwise) in [
+            (p, centre, "p (w = 1)", Vec2::X),
+            (v, Vec3::ZERO, "v (w = 0)", -Vec2::X),
+        ] {
+            let toward = away(view, at, from, otherwise);
+            let candidates = Label::around_dot(at, 11.0, toward, text, palette::PINK, 2, 10, 8.0);
+            frame.first_clear_label_by(view, 2.0, candidates, off_points(&boxes, 2.0));
         }
         // Everything any stage shows stays in view: the boxes wherever their centres go (the
         // origin, t, the arc), and the world axes.
@@ -872,6 +918,9 @@ pub struct ScaleComparison {
     figures: [HierarchyFigure; 2],
     arm: usize,
     forearm: usize,
+    /// The last frame's camera and canvas size (CSS pixels), which the labels are placed for
+    /// ([`ScaleComparison::set_view`]).
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 /// How far each copy stands from the centre along z, metres.
@@ -896,6 +945,7 @@ impl ScaleComparison {
             figures: [figure, inherited],
             arm,
             forearm,
+            view: None,
         };
         comparison
             .set_upper_arm_scale(Vec3::new(1.0, 2.0, 1.0))
@@ -904,6 +954,13 @@ impl ScaleComparison {
             .set_forearm_angles_deg(Vec3::new(-70.0, 0.0, 0.0))
             .expect("finite");
         comparison
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's).
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The left upper arm's scale along its own axes (each in [0.1, 4]), in both copies.
@@ -933,23 +990,13 @@ impl ScaleComparison {
     }
 
     /// The drawn left forearm of copy `k` (0: not inherited): its length (pivot to wrist, metres)
-    /// and the corner angle of its box furthest from square (degrees; 90 unless sheared).
+    /// and the angle at the corner of its outline ([`ScaleComparison::forearm_outline`]) that the
+    /// figure marks with an arc and labels (degrees; 90 unless sheared in that side's plane).
     pub fn forearm_shape(&self, k: usize) -> (f32, f32) {
         let f = &self.figures[k];
-        let draw = f.draw[self.forearm];
-        let length = (f.wrist() - draw.w_axis.truncate()).length();
-        let [x, y, z] = [draw.x_axis, draw.y_axis, draw.z_axis].map(|a| a.truncate());
-        let corner = [(x, y), (y, z), (z, x)]
-            .map(|(a, b)| a.angle_between(b) / DEG)
-            .into_iter()
-            .fold(90.0f32, |worst, a| {
-                if (a - 90.0).abs() > (worst - 90.0).abs() {
-                    a
-                } else {
-                    worst
-                }
-            });
-        (length, corner)
+        let length = (f.wrist() - f.draw[self.forearm].w_axis.truncate()).length();
+        let c = self.forearm_outline(k);
+        (length, (c[1] - c[2]).angle_between(c[3] - c[2]) / DEG)
     }
 
     /// Where copy `k` stands: one behind the other along z, so that a side view (looking along
@@ -988,26 +1035,29 @@ impl ScaleComparison {
             on_top: true,
             ..StrokeStyle::solid(3.5)
         };
+        let first_box = frame.meshes.len();
+        let mut wrists = [Vec3::ZERO; 2];
         for (k, f) in self.figures.iter_mut().enumerate() {
             f.pose(0.0)?;
             let placement = Self::placement(k);
             f.draw_body(frame, placement, false);
-            let z = placement.w_axis.z;
-            frame.label_with_priority(Vec3::new(0.0, 1.95, z), titles[k], palette::DARK, 3);
-            let wrist = placement.transform_point3(f.wrist());
-            frame.marker_on_top(wrist, 10.0, palette::PINK);
-            // Above and left of the wrist, reading leftwards (the forearms point left on the
-            // page, which sees them from +x): clear of the body and of the corner's angle.
-            frame.labels.push(crate::draw::Label {
-                anchor: wrist + Vec3::new(0.0, 0.12, 0.06),
-                text: "forearm.L".into(),
-                color: palette::PINK,
-                left: true,
-                priority: 1,
-                offset_px: glam::Vec2::ZERO,
-                large: false,
-            });
+            wrists[k] = placement.transform_point3(f.wrist());
+            frame.marker_on_top(wrists[k], 10.0, palette::PINK);
             frame.contact_shadow(placement.transform_point3(Vec3::ZERO), 0.3);
+        }
+        // Each name goes to the first place round its anchor that covers no box, dot, line or
+        // name placed before (on the last frame's view), most important first: the titles above
+        // the heads, the corner angles across the corner from the box, the forearms' names
+        // above and left of the wrists (the page sees the figures from +x: the forearms point
+        // left).
+        let view = view_of(self.view);
+        let models: Vec<Mat4> = frame.meshes[first_box..].iter().map(|m| m.model).collect();
+        let boxes = boxes_px(&models, view);
+        let mut names = Vec::new();
+        for k in 0..2 {
+            let z = Self::placement(k).w_axis.z;
+            let top = Vec3::new(0.0, 1.95, z);
+            names.push((top, -Vec2::Y, titles[k].to_string(), palette::DARK, 3, 0.0));
         }
         for k in 0..2 {
             // The stretched upper arm's side, then the forearm's.
@@ -1017,7 +1067,7 @@ impl ScaleComparison {
             frame.stroke(&[c[0], c[1], c[2], c[3], c[0]], palette::PINK, outline);
             // The angle at the corner between the edges along the forearm and across it.
             let (a, b) = ((c[1] - c[2]).normalize(), (c[3] - c[2]).normalize());
-            let angle = a.angle_between(b);
+            let angle = self.forearm_shape(k).1 * DEG;
             let r = 0.05;
             let arc: Vec<Vec3> = (0..=12)
                 .map(|i| {
@@ -1038,18 +1088,25 @@ impl ScaleComparison {
                     ..StrokeStyle::solid(2.0)
                 },
             );
-            // Across the corner from the arc (the wedge is the box itself), reading away from
-            // it: the page sees the figures from +x, so −z is to the right.
             let out = -(a + b).normalize_or_zero();
-            frame.labels.push(crate::draw::Label {
-                anchor: c[2] + out * (r + 0.03 + 0.05 * out.y.abs()),
-                text: format!("{:.0}°", angle / DEG),
-                color: palette::DARK,
-                left: out.z > 0.0,
-                priority: 2,
-                offset_px: glam::Vec2::ZERO,
-                large: false,
-            });
+            let toward = away(view, c[2] + out, c[2], Vec2::new(-out.z, -out.y));
+            names.push((
+                c[2],
+                toward,
+                format!("{:.0}°", angle / DEG),
+                palette::DARK,
+                2,
+                0.0,
+            ));
+        }
+        for wrist in wrists {
+            let name = "forearm.L".to_string();
+            names.push((wrist, Vec2::new(-1.0, -1.0), name, palette::PINK, 1, 10.0));
+        }
+        for (anchor, toward, text, color, priority, dot_px) in names {
+            let candidates =
+                Label::around_dot(anchor, dot_px, toward, &text, color, priority, 10, 8.0);
+            frame.first_clear_label_by(view, 2.0, candidates, off_points(&boxes, 2.0));
         }
         frame.keep_box_in_view(
             Vec3::new(-0.45, 0.0, -COMPARISON_OFFSET - 0.5),
@@ -1058,7 +1115,7 @@ impl ScaleComparison {
         let describe = |k: usize| {
             let (length, angle) = self.forearm_shape(k);
             format!(
-                "{}: the forearm is {} m long, its box's corner angle {}°",
+                "{}: the forearm is {} m long, the marked corner of its outline {}°",
                 titles[k],
                 super::format_number(length),
                 super::format_number(angle)

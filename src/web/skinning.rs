@@ -151,6 +151,9 @@ impl SkinningCylinderScene {
 
     /// Skins (if a control changed), uploads and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the labels are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         self.scene.update().map_err(js)?;
         if viewer.renewed(&mut self.gpu_seen) {
             self.meshes = [None, None];
@@ -351,6 +354,9 @@ impl SkinnedHumanScene {
     /// Uploads the skinned body (or, skinning on the GPU, only its palette) and draws. Returns
     /// the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the heat map's joint name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_canvas_view(viewer.camera, w, h);
         if viewer.renewed(&mut self.gpu_seen) {
             (self.mesh, self.mesh_dqs, self.gpu_mesh) = (None, None, None);
         }

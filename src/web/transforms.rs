@@ -69,7 +69,10 @@ impl SingleShapeScene {
 
     /// Draws the figure with both boxes `stage` into their two steps (0 to 2; 2: the full
     /// products); returns the note for the page.
-    pub fn draw(&self, viewer: &mut Viewer, stage: f32) -> Result<String, JsError> {
+    pub fn draw(&mut self, viewer: &mut Viewer, stage: f32) -> Result<String, JsError> {
+        // The view p's and v's names are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, stage)
@@ -253,6 +256,9 @@ impl ScaleComparisonScene {
 
     /// Draws both copies; returns the note (forearm lengths and corner angles).
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the labels are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame).map_err(js)?;
         viewer.present()?;
         Ok(note)
