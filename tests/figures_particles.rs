@@ -118,6 +118,13 @@ fn a_fast_fountain_keeps_flowing_beside_the_explosions() {
         note.contains(&format!("its particles live {l:.2} s")),
         "{note}"
     );
+    // The dashed guide the note names is the plot's: rate × the lifetime the particles live.
+    let guide = scene.count_samples()[3];
+    assert!(
+        note.contains(&format!("rate × lifetime (the plot's dashed guide) is {}", (1000.0 * l).round() as usize)),
+        "{note}"
+    );
+    assert!((guide - 1000.0 * l).abs() < 0.5, "guide {guide}, lifetime {l}");
     assert!(!note.contains("by hand"), "{note}");
     for p in &frame.points {
         assert!(p.center[1] >= 0.0, "nothing below the floor");

@@ -687,11 +687,12 @@ impl EmitterFigure {
         if l < asked {
             let rate = self.emitters[0].rate_per_sec;
             note.push_str(&format!(
-                " A stream of {} particles/s living {asked:.2} s would need about {} slots \
-                 (rate × lifetime), so its particles live {l:.2} s: the fountain keeps flowing, \
-                 its arcs end sooner.",
+                " A stream of {} particles/s living {asked:.2} s would need about {} slots, \
+                 so its particles live {l:.2} s: the fountain keeps flowing, its arcs end \
+                 sooner, and rate × lifetime (the plot's dashed guide) is {}.",
                 with_commas(rate.round() as usize),
                 with_commas((rate * asked).round() as usize),
+                with_commas(self.steady_count().round() as usize),
             ));
         }
         if let Some((got, asked)) = self.last_burst {
