@@ -402,9 +402,7 @@ impl Grid {
     ) {
         let p = positions[i];
         let r2 = radius * radius;
-        let c = self.cell_of[i] as usize;
-        let (dx, dy) = (self.dims[0] as usize, self.dims[1] as usize);
-        let cell = (c % dx, (c / dx) % dy, c / (dx * dy));
+        let cell = self.cell_coords(i);
         let [x, y, z, ..] = &self.soa;
         let (px, py, pz, r2v) = (
             Vec4::splat(p.x),
@@ -437,6 +435,14 @@ impl Grid {
 }
 
 impl Grid {
+    /// The cell (x, y, z) that boid `i` was sorted into by the last rebuild.
+    #[inline(always)]
+    fn cell_coords(&self, i: usize) -> (usize, usize, usize) {
+        let c = self.cell_of[i] as usize;
+        let (dx, dy) = (self.dims[0] as usize, self.dims[1] as usize);
+        (c % dx, (c / dx) % dy, c / (dx * dy))
+    }
+
     /// Appends to `out` the neighbours of `i` that [`Grid::for_each_neighbour`] finds, in the
     /// same order, without a branch per neighbour: each group of four tested slots writes its
     /// four indices at the end of the list and keeps as many as are within `radius` (the
@@ -445,9 +451,7 @@ impl Grid {
     pub fn append_neighbours(&self, positions: &[Vec3], i: usize, radius: f32, out: &mut Vec<u32>) {
         let p = positions[i];
         let r2 = radius * radius;
-        let c = self.cell_of[i] as usize;
-        let (dx, dy) = (self.dims[0] as usize, self.dims[1] as usize);
-        let cell = (c % dx, (c / dx) % dy, c / (dx * dy));
+        let cell = self.cell_coords(i);
         let mut runs = [(0u32, 0u32); 9];
         self.runs_near(&self.cell_search(cell), p, r2, &mut runs);
         let slots: usize = runs.iter().map(|&(a, b)| (b - a) as usize).sum();
