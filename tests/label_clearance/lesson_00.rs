@@ -1,0 +1,294 @@
+//! Lesson 00: its figures' labels keep clear of what they name (see main.rs).
+
+use super::*;
+
+#[test]
+fn lesson_00_depth_side_view_labels_keep_off_the_bars_and_the_line() {
+    // The page's defaults (lessons/00-triangles-to-pixels/lesson.js): 16 bits, 0.1 m to 1 km.
+    // As on the page, the figure places its labels for the view of the frame before.
+    let view = [0.0, 3.0, -20.0, 30.0, 1.2, 0.45];
+    for size in CANVASES {
+        let mut scene = inbetween::figures::raster::DepthPrecision::new();
+        scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
+        let (frame, camera) = drawn_for_view(
+            &mut scene,
+            view,
+            size,
+            |fig, out| {
+                fig.draw(out);
+            },
+            |fig, cam, px| fig.set_view(cam, px.x, px.y),
+        );
+        assert_clear("00 depth", &frame, &camera, size);
+    }
+}
+
+#[test]
+fn lesson_00_point_and_image_labels_stay_apart_where_the_point_crosses_the_near_plane() {
+    // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
+    // through the first third of the point's path (t = 0.2 s of the 6 s timeline is s ≈ 0.07,
+    // where the point crosses z_near and its dot meets its image's), for the page's point and
+    // two others: "p" and "image" stay where the figure put them (no leader line), keep a few
+    // pixels from each other, and cover neither dot nor the dashed ray from the eye.
+    use inbetween::draw::palette;
+    use inbetween::figures::raster::Frustum;
+    for (x, y) in [(0.6, 0.3), (0.9, 0.2), (1.0, -0.2)] {
+        let mut scene = Frustum::new();
+        scene.set_offset(x, y).unwrap();
+        for k in 0..=30 {
+            let s = k as f32 * 0.01;
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, s).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([4.5, 1.2, -4.0, 17.0, 0.45, 0.45], &frame, size);
+                let name = format!("00 frustum, point ({x}, {y}), s {s}");
+                let mut pair = frame.clone();
+                // The point's label in the frustum (the NDC box's comes later) and the image's.
+                let p = pair.labels.iter().position(|l| l.text == "p").unwrap();
+                let image = pair.labels.iter().position(|l| l.text == "image").unwrap();
+                pair.labels = vec![pair.labels[p].clone(), pair.labels[image].clone()];
+                // The ray from the eye (grey, dashed); the frustum's edges pass the point and
+                // its image near the apex.
+                pair.strokes
+                    .retain(|s| s.color[..3] == palette::GREY.to_array() && s.dash[3] > 0.0);
+                assert_clear(&name, &pair, &camera, size);
+                let placed = layout(&frame, &camera, size);
+                let boxes: Vec<Rect> = [p, image]
+                    .map(|i| {
+                        let (l, b, at) = &placed[i];
+                        assert!(at.shown, "{name} on {size}: {:?} hidden", l.text);
+                        assert!(
+                            at.leader_to.is_none(),
+                            "{name} on {size}: {:?} moved",
+                            l.text
+                        );
+                        Rect {
+                            min: at.top_left,
+                            size: b.size,
+                        }
+                    })
+                    .into();
+                assert!(
+                    !boxes[0].overlaps(&boxes[1], 4.0),
+                    "{name} on {size}: \"p\" at {:?} and \"image\" at {:?} crowd",
+                    boxes[0].min,
+                    boxes[1].min
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_00_light_label_sits_on_its_lamp() {
+    // Figure 5 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
+    // the page's light and two others: "light" is shown beside the lamp's dot (its box within
+    // 12 px of the dot's edge; 0.25 m up left a 20 px gap), covering no dot or line.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::raster::Shading;
+    for (azimuth, elevation) in [(40.0, 35.0), (-60.0, 10.0), (120.0, 70.0)] {
+        let mut scene = Shading::new();
+        scene.set_light_deg(azimuth, elevation).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, MeshId(1));
+        for size in CANVASES {
+            let camera = page_camera([0.0, 1.5, 0.0, 7.5, -0.5, 0.55], &frame, size);
+            let name = format!("00 shading, light at {azimuth}°, {elevation}°");
+            let mut light = frame.clone();
+            light.labels.retain(|l| l.text == "light");
+            assert_clear(&name, &light, &camera, size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let lamp = frame.markers.iter().find(|m| m.size_px == 16.0).unwrap();
+            let dot = project_to_canvas(view_proj, size, Vec3::from(lamp.center)).unwrap();
+            let (_, rect) = label_boxes(&light, &camera, size).pop().unwrap();
+            let gap = rect.nearest(dot).distance(dot) - 8.0;
+            assert!(
+                gap <= 12.0,
+                "{name} on {size}: \"light\" {gap} px from its lamp"
+            );
+        }
+    }
+}
+
+#[test]
+fn lesson_00_ndc_box_labels_keep_off_its_lines() {
+    // Figure 2's NDC box at its page camera (lessons/00-triangles-to-pixels/lesson.js), both
+    // canvases, along the point's path, for the page's point and two others: "depth 0",
+    // "depth 1", "NDC (wgpu)" and the box's "p" stay where the figure put them and keep 2 px
+    // off every line and dot (three lines meet at each corner the depth labels name, and the
+    // point's dot moves among them). As on the page, the figure places them for the view of
+    // the frame before.
+    use inbetween::figures::raster::Frustum;
+    let mut failures = Vec::new();
+    for (x, y) in [(0.6, 0.3), (0.9, 0.2), (-1.0, -0.4)] {
+        for k in 0..=10 {
+            let s = k as f32 * 0.1;
+            for size in CANVASES {
+                let mut scene = Frustum::new();
+                scene.set_offset(x, y).unwrap();
+                let mut frame = Frame::default();
+                scene.draw(&mut frame, s).unwrap();
+                let camera = page_camera([4.5, 1.2, -4.0, 17.0, 0.45, 0.45], &frame, size);
+                scene.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                scene.draw(&mut frame, s).unwrap();
+                let camera = page_camera([4.5, 1.2, -4.0, 17.0, 0.45, 0.45], &frame, size);
+                let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+                let mut checked: Vec<usize> = ["depth 0", "depth 1", "NDC (wgpu)"]
+                    .iter()
+                    .map(|t| texts.iter().position(|l| l == t).unwrap())
+                    .collect();
+                // The box's p (drawn while the point is in front of the eye) comes after the
+                // frustum's p and image.
+                let image = texts.iter().position(|l| *l == "image").unwrap();
+                checked.extend(texts.iter().rposition(|l| *l == "p").filter(|&i| i > image));
+                let name = format!("00 NDC box, point ({x}, {y}), s {s}");
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &checked, 2.0)
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_00_eye_and_z_near_labels_stay_apart_at_a_small_z_near() {
+    // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases,
+    // across the z_near slider's low end (0.05 m, the lesson's 0.1 m and 0.2 m) and at the
+    // page's 1 m, along the point's path: near the eye the near plane's corner, which "z_near"
+    // names, is a few pixels from the eye's dot and from the point's image, so "eye", "z_near"
+    // and "image" sit at least LABELS_APART_PX apart, each where the figure put it (no leader
+    // line), and "z_near" and "image" cover no dot. As on the page, the figure places them for
+    // the view of the frame before.
+    use inbetween::draw::LABELS_APART_PX;
+    use inbetween::figures::raster::Frustum;
+    let view = [4.5, 1.2, -4.0, 17.0, 0.45, 0.45];
+    let mut failures = Vec::new();
+    for near in [0.05, 0.1, 0.15, 0.2, 0.5, 1.0] {
+        for s in [0.0, 0.03, 0.07, 0.15, 0.5, 1.0] {
+            for size in CANVASES {
+                let mut scene = Frustum::new();
+                scene.set_frustum(50.0, near, 8.0).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out, s).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("00 frustum, z_near {near}, s {s}");
+                let index = |t: &str| frame.labels.iter().position(|l| l.text == t).unwrap();
+                let (eye, z_near, image) = (index("eye"), index("z_near"), index("image"));
+                let placed = layout(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    let boxes = [eye, z_near, image].map(|i| {
+                        let (l, b, at) = &placed[i];
+                        assert!(
+                            at.shown && at.leader_to.is_none(),
+                            "{name} on {size}: {:?} moved",
+                            l.text
+                        );
+                        Rect {
+                            min: at.top_left,
+                            size: b.size,
+                        }
+                    });
+                    for (a, b) in [(0, 1), (1, 2), (0, 2)] {
+                        assert!(
+                            !boxes[a].overlaps(&boxes[b], LABELS_APART_PX - 0.5),
+                            "{name} on {size}: {:?} at {:?} and {:?} at {:?} butt",
+                            frame.labels[[eye, z_near, image][a]].text,
+                            boxes[a].min,
+                            frame.labels[[eye, z_near, image][b]].text,
+                            boxes[b].min
+                        );
+                    }
+                    let mut only = frame.clone();
+                    only.labels = vec![frame.labels[z_near].clone(), frame.labels[image].clone()];
+                    only.strokes.clear();
+                    assert_clear(&name, &only, &camera, size);
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbited() {
+    // Figure 3 at its page camera (lessons/00-triangles-to-pixels/lesson.js) and orbited round
+    // it (azimuths round the side view, from low to steep), both canvases, at the page's
+    // settings and with half the gap (the fighting line nearer, at 10.9 m): "eye", "fighting
+    // from here" and the bars' and the grey line's names are shown where the figure put them
+    // (so none sits on another), keep 2 px off every dot and line, and cover no point of the
+    // upper floor (a mesh, sampled here every half metre). As on the page, the figure places
+    // them for the view of the frame before.
+    use inbetween::figures::raster::DepthPrecision;
+    const NAMES: [&str; 4] = [
+        "eye",
+        "fighting from here",
+        "one depth step (×40)",
+        "separation d·gap/h (×40)",
+    ];
+    let mut failures = Vec::new();
+    for gap in [0.01, 0.005] {
+        for (yaw, pitch) in [
+            (1.2, 0.45),
+            (0.6, 0.45),
+            (0.0, 0.3),
+            (-0.6, 0.45),
+            (1.8, 0.3),
+            (2.6, 0.45),
+            (1.2, 0.9),
+            (0.3, 1.1),
+            (1.2, 0.1),
+        ] {
+            let view = [0.0, 3.0, -20.0, 30.0, yaw, pitch];
+            for size in CANVASES {
+                let mut scene = DepthPrecision::new();
+                scene.set(0.1, 1000.0, gap, 16.0).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out);
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("00 depth, gap {gap}, orbit ({yaw}, {pitch})");
+                let named: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                    .collect();
+                assert_eq!(named.len(), NAMES.len(), "{name}");
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
+                }));
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let floor: Vec<Vec2> = (0..=4)
+                    .flat_map(|i| {
+                        (0..=80)
+                            .map(move |k| Vec3::new(-1.0 + 0.5 * i as f32, 0.0, -0.5 * k as f32))
+                    })
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let boxes = label_boxes(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
+                        for c in &floor {
+                            assert!(
+                                !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                "{name} on {size}: {text:?} at {:?} covers the floor at {c}",
+                                rect.min
+                            );
+                        }
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

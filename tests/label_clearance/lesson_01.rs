@@ -1,0 +1,181 @@
+//! Lesson 01: its figures' labels keep clear of what they name (see main.rs).
+
+use super::*;
+
+/// Points on the frame's boxes (`MeshId::CUBE`) as seen on the canvas: a 9 × 9 × 9 grid
+/// through each.
+fn cube_points(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<Vec2> {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == inbetween::draw::MeshId::CUBE)
+        .flat_map(|m| {
+            (0..729).map(move |i| {
+                let g = Vec3::new((i % 9) as f32, (i / 9 % 9) as f32, (i / 81) as f32);
+                m.model.transform_point3(g * 0.25 - 1.0)
+            })
+        })
+        .filter_map(|p| project_to_canvas(view_proj, size, p))
+        .collect()
+}
+
+/// Asserts that no shown label's box covers one of `points` (canvas pixels).
+fn assert_off(name: &str, frame: &Frame, camera: &OrbitCamera, size: Vec2, points: &[Vec2]) {
+    for (text, rect) in label_boxes(frame, camera, size) {
+        let on = points
+            .iter()
+            .find(|p| p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all());
+        assert!(
+            on.is_none(),
+            "{name} on {size}: {text:?} at {:?} covers a box at {on:?}",
+            rect.min
+        );
+    }
+}
+
+#[test]
+fn lesson_01_scale_comparison_labels_keep_off_the_outlines_and_the_bodies() {
+    // Figure 3 from the page's camera (lessons/01-transforms/lesson.js: from +x) and after the
+    // page test's drag (a fifth of a 650 px canvas across, a tenth of 420 px down, 0.008 rad a
+    // pixel), at the page's start, at the caption's two tries (a uniform scale; the elbow at
+    // 0°), another stretch and the page test's settings: the titles, the corner angles and the
+    // forearms' names sit off the outlines, the arcs, the skeletons' lines and dots, and the
+    // bodies' boxes. As on the page, they are placed for the view of the frame before.
+    use inbetween::figures::transforms::ScaleComparison;
+    let mut failures = Vec::new();
+    for (scale, angles) in [
+        (Vec3::new(1.0, 2.0, 1.0), Vec3::new(-70.0, 0.0, 0.0)),
+        (Vec3::new(2.0, 2.0, 2.0), Vec3::new(-70.0, 0.0, 0.0)),
+        (Vec3::new(1.0, 2.0, 1.0), Vec3::ZERO),
+        (Vec3::new(1.0, 1.5, 1.0), Vec3::new(-90.0, 0.0, 0.0)),
+        (Vec3::new(2.42, 0.8, 2.42), Vec3::new(105.0, -109.0, -109.0)),
+    ] {
+        let mut scene = ScaleComparison::new();
+        scene.set_upper_arm_scale(scale).unwrap();
+        scene.set_forearm_angles_deg(angles).unwrap();
+        let yaw = std::f32::consts::FRAC_PI_2;
+        for view in [
+            [0.0, 1.0, 0.0, 3.6, yaw, 0.12],
+            [0.0, 1.0, 0.0, 3.6, yaw - 0.008 * 130.0, 0.12 + 0.008 * 42.0],
+        ] {
+            for size in CANVASES {
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name =
+                    format!("01 scale comparison, scale {scale}, angles {angles}, view {view:?}");
+                let boxes = cube_points(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert_clear(&name, &frame, &camera, size);
+                    assert_off(&name, &frame, &camera, size, &boxes);
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_01_point_and_direction_names_keep_off_the_boxes() {
+    // Figure 1 from the page's camera and after the page test's drag, at the page's start and
+    // at the page test's settings (every slider at −1.21 m or −109°, the solid box R·T), over
+    // the steps: p's and v's names cover neither box, no dot or line, and no other name.
+    use inbetween::figures::transforms::{Order, SingleShape};
+    let page = [0.5, 0.3, 0.0, 5.0, 0.6, 0.45];
+    let mut failures = Vec::new();
+    for (t, angles, order) in [
+        (
+            Vec3::new(1.0, 0.5, 0.0),
+            Vec3::new(0.0, 0.0, 30.0),
+            Order::RotateFirst,
+        ),
+        (
+            Vec3::splat(-1.21),
+            Vec3::splat(-109.0),
+            Order::TranslateFirst,
+        ),
+    ] {
+        let mut scene = SingleShape::new();
+        scene.set_transform(t, angles).unwrap();
+        scene.set_order(order);
+        for stage in [0.0, 0.5, 1.0, 1.35, 2.0] {
+            for view in [
+                page,
+                [0.5, 0.3, 0.0, 5.0, 0.6 - 0.008 * 130.0, 0.45 + 0.008 * 42.0],
+            ] {
+                for size in CANVASES {
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw(out, stage).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name = format!("01 single shape, t {t}, stage {stage}, view {view:?}");
+                    // The solid box and the ghost's corners and edges (its wireframe).
+                    let mut boxes = cube_points(&frame, &camera, size);
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    boxes.extend(frame.segments_of(order.other().color()).flat_map(|(a, b)| {
+                        (0..=8).filter_map(move |k| {
+                            project_to_canvas(view_proj, size, a.lerp(b, k as f32 / 8.0))
+                        })
+                    }));
+                    let pink = |text: &str| text.starts_with("p (") || text.starts_with("v (");
+                    failures.extend(failure_of(|| {
+                        assert_clear_of(&name, &frame, &camera, size, pink);
+                        let mut only = frame.clone();
+                        only.labels.retain(|l| pink(&l.text));
+                        assert_off(&name, &only, &camera, size, &boxes);
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
+    // Figure 1 at the page's camera (lessons/01-transforms/lesson.js), both canvases, through
+    // both steps of the timeline, T·R solid (the page's start): "T·R" and "R·T" keep off the
+    // solid box's axes (which turn with it), the paths, the arm and the dots. They are placed
+    // first (the highest priority), so the frame's other labels, left out here, never move
+    // them. With R·T solid, its x axis ends near T·R's name at the end of the timeline.
+    use inbetween::figures::transforms::{Order, SingleShape};
+    for order in [Order::RotateFirst] {
+        let mut scene = SingleShape::new();
+        scene.set_order(order);
+        for stage in [0.0, 0.36, 1.0, 1.5, 2.0] {
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, stage).unwrap();
+            let names: Vec<_> = frame
+                .labels
+                .iter()
+                .filter(|l| l.priority == 3)
+                .cloned()
+                .collect();
+            assert_eq!(names.len(), 2);
+            assert!(frame.labels.iter().all(|l| l.priority <= 3));
+            for size in CANVASES {
+                let camera = page_camera([0.5, 0.3, 0.0, 5.0, 0.6, 0.45], &frame, size);
+                let mut names_only = frame.clone();
+                names_only.labels = names.clone();
+                assert_clear(
+                    &format!("01 orders, stage {stage}"),
+                    &names_only,
+                    &camera,
+                    size,
+                );
+            }
+        }
+    }
+}

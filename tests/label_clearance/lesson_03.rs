@@ -1,0 +1,285 @@
+//! Lesson 03: its figures' labels keep clear of what they name (see main.rs).
+
+use super::*;
+
+#[test]
+fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
+    // Figure 4 at its page camera (lessons/03-rotations/lesson.js), both canvases, through the
+    // sweep, at the page's axis, angle and v and others across the sliders: each term's label
+    // (v cos θ, (n × v) sin θ, n (n·v)(1 − cos θ)) is shown where the figure put it, at most
+    // 70 px from a point of its arrow, and covers no arrow, circle or dot (the terms run tip to
+    // tail beside v and v′). As on the page, the
+    // figure places them for the view of the frame before (set_view).
+    use inbetween::figures::rotations::Rodrigues;
+    let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
+    let term = |text: &str| text.contains("θ") && !text.starts_with("v′");
+    let mut failures = Vec::new();
+    let mut cases = 0;
+    let settings = [
+        (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), 60.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), -200.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.0, 1.0, 0.0), 90.0, Vec3::new(1.0, 1.0, 0.0)),
+        (Vec3::new(1.0, 0.2, -0.3), 150.0, Vec3::new(0.5, 1.5, 0.8)),
+        (Vec3::new(0.3, 1.0, 0.2), 300.0, Vec3::new(-1.5, 0.2, 1.0)),
+    ];
+    for (n, angle, v) in settings {
+        for k in 1..=8 {
+            let s = k as f32 / 8.0;
+            for size in CANVASES {
+                let mut f = Rodrigues::new();
+                f.set_axis_angle(n, angle).unwrap();
+                f.set_vector(v).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut f,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out, s).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                cases += 1;
+                let name = format!("03 Rodrigues, n {n}, θ {angle}°, v {v}, s {s}");
+                let check = || {
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    for ((l, b, p), label) in
+                        layout(&frame, &camera, size).into_iter().zip(&frame.labels)
+                    {
+                        if term(&l.text) {
+                            assert!(
+                                p.shown && p.leader_to.is_none(),
+                                "{name} on {size}: {} moved",
+                                l.text
+                            );
+                            // Its anchor is the point of the arrow it sits beside.
+                            let at = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                            let rect = Rect {
+                                min: p.top_left,
+                                size: b.size,
+                            };
+                            let gap = rect.nearest(at).distance(at);
+                            assert!(
+                                gap <= 70.0,
+                                "{name} on {size}: {} {gap} px off its arrow",
+                                l.text
+                            );
+                        }
+                    }
+                    assert_clear_of(&name, &frame, &camera, size, term);
+                };
+                failures.extend(failure_of(check));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {cases} cases fail, e.g.\n{}",
+        failures.len(),
+        failures[..failures.len().min(12)].join("\n")
+    );
+}
+
+#[test]
+fn lesson_03_rodrigues_names_keep_apart_with_v_along_the_axis() {
+    // Figure 4 at its page camera, both canvases, through the sweep: at the page's settings,
+    // and with v along the axis n (either way, short and long), where n, v, v′ and the box
+    // meet near the origin on the screen. The names n, v, "v′ = R v" and "turned by q" are
+    // shown where the figure put them (so none sits on another), keep off every line and dot,
+    // and cover no corner of the box. As on the page, the figure places them for the view of the
+    // frame before.
+    use glam::{Mat4, Quat};
+    use inbetween::figures::rotations::{Rodrigues, QUAT_BOX_AT};
+    const NAMES: [&str; 4] = ["n", "v", "v′ = R v", "turned by q"];
+    let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
+    let mut failures = Vec::new();
+    let settings = [
+        (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::splat(-0.6), -217.0, Vec3::splat(-1.21)),
+        (Vec3::splat(0.6), 90.0, Vec3::splat(0.7)),
+        (
+            Vec3::new(0.3, 1.0, 0.2),
+            120.0,
+            Vec3::new(0.3, 1.0, 0.2) * 1.5,
+        ),
+        (
+            Vec3::new(0.3, 1.0, 0.2),
+            60.0,
+            Vec3::new(0.3, 1.0, 0.2) * -0.8,
+        ),
+    ];
+    for (n, angle, v) in settings {
+        for k in [1, 4, 8] {
+            let s = k as f32 / 8.0;
+            for size in CANVASES {
+                let mut f = Rodrigues::new();
+                f.set_axis_angle(n, angle).unwrap();
+                f.set_vector(v).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut f,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out, s).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("03 Rodrigues names, n {n}, θ {angle}°, v {v}, s {s}");
+                let named: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                    .collect();
+                assert_eq!(named.len(), 4, "{name}");
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                }));
+                // The box, turned by the quaternion of the rotation swept so far.
+                let q = Quat::from_axis_angle(n.normalize(), s * angle.to_radians());
+                let place = Mat4::from_translation(QUAT_BOX_AT) * Mat4::from_quat(q);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let corners: Vec<Vec2> = (0..8)
+                    .map(|c| {
+                        let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                        place.transform_point3(Vec3::new(0.22 * s(1), 0.12 * s(2), 0.08 * s(4)))
+                    })
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let boxes = label_boxes(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
+                        for c in &corners {
+                            assert!(
+                                !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                "{name} on {size}: {text:?} at {:?} covers the box at {c}",
+                                rect.min
+                            );
+                        }
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_03_circle_key_names_keep_off_the_dots_when_orbited() {
+    // Figure 2 at its page camera (lessons/03-rotations/lesson.js) and orbited round it (the
+    // page sweep's drag turns it by −1.2 rad and tilts it by 0.3 rad), both canvases, at the
+    // default keys and at 170° and −170° about x (a and −b 10° apart), on either arc, at t = 0,
+    // where slerp's and nlerp's dots sit on a, and across the timeline: the names a, −a, b and
+    // −b are shown where the figure put them (so none sits on another) and keep off every dot
+    // and line. As on the page, the figure places them for the view of the frame before.
+    use inbetween::figures::rotations::Interpolation;
+    const NAMES: [&str; 4] = ["a", "−a", "b", "−b"];
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [(0.0, 0.0), (-1.216, 0.304), (1.216, 0.304), (-0.6, 0.6)] {
+        let view = [0.0, 1.3, 0.0, 5.0, yaw, pitch];
+        for (across, long) in [(false, false), (false, true), (true, false), (true, true)] {
+            for t in [0.0, 0.02, 0.3, 0.5, 1.0] {
+                for size in CANVASES {
+                    let mut scene = Interpolation::new();
+                    if across {
+                        scene
+                            .set_keys_euler_deg(
+                                Vec3::new(170.0, 0.0, 0.0),
+                                Vec3::new(-170.0, 0.0, 0.0),
+                            )
+                            .unwrap();
+                    }
+                    scene.set_long_arc(long);
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw_circle(out, t).unwrap();
+                        },
+                        |fig, cam, px| fig.set_circle_view(cam, px.x, px.y),
+                    );
+                    let name = format!(
+                        "03 circle, orbit ({yaw}, {pitch}), across {across}, long {long}, t {t}"
+                    );
+                    let named: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                        .collect();
+                    assert_eq!(named.len(), 4, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_03_gimbal_axle_names_keep_off_the_rings_and_axles() {
+    // Figure 3 at its page camera (lessons/03-rotations/lesson.js), both canvases, at the page's
+    // angles, at gimbal lock both ways and at others across the sliders: each axle's name is
+    // shown where the figure put it, keeps 2 px off every line and dot, and covers no point of
+    // the three rings (drawn as meshes, sampled here as the figure builds them: yaw's ring in
+    // its x-y plane, 1.3 m; pitch's in x-z, 1.1 m; roll's in y-z, 0.9 m). As on the page, the
+    // figure places them for the view of the frame before.
+    use glam::Mat4;
+    use inbetween::figures::rotations::Gimbal;
+    let view = [0.0, 1.4, 0.0, 5.2, 0.7, 0.35];
+    let mut failures = Vec::new();
+    for [yaw, pitch, roll] in [
+        [30.0, 0.0, 20.0],
+        [30.0, 90.0, 20.0],
+        [30.0, -90.0, 20.0],
+        [-120.0, 45.0, 90.0],
+        [150.0, -30.0, -160.0],
+        [0.0, 60.0, 0.0],
+    ] {
+        for size in CANVASES {
+            let mut scene = Gimbal::new();
+            scene.set_angles_deg(yaw, pitch, roll).unwrap();
+            let camera = page_camera(view, &Frame::default(), size);
+            scene.set_view(camera, size.x, size.y);
+            let mut frame = Frame::default();
+            scene.draw(&mut frame);
+            let name = format!("03 gimbal ({yaw}, {pitch}, {roll})");
+            let names: Vec<usize> = (0..frame.labels.len())
+                .filter(|&i| frame.labels[i].text.ends_with("axle"))
+                .collect();
+            assert_eq!(names.len(), 3);
+            failures.extend(failure_of(|| {
+                assert_shown_clear_by(&name, &frame, &camera, size, &names, 2.0)
+            }));
+            // The rings.
+            let deg = std::f32::consts::PI / 180.0;
+            let outer =
+                Mat4::from_translation(Vec3::new(0.0, 1.5, 0.0)) * Mat4::from_rotation_y(yaw * deg);
+            let middle = outer * Mat4::from_rotation_x(pitch * deg);
+            let inner = middle * Mat4::from_rotation_z(roll * deg);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let boxes = label_boxes(&frame, &camera, size);
+            failures.extend(failure_of(|| {
+                for (m, u, v, r) in [
+                    (outer, Vec3::X, Vec3::Y, 1.3),
+                    (middle, Vec3::X, Vec3::Z, 1.1),
+                    (inner, Vec3::Y, Vec3::Z, 0.9),
+                ] {
+                    for k in 0..80 {
+                        let phi = k as f32 / 80.0 * std::f32::consts::TAU;
+                        let p = m.transform_point3((u * phi.cos() + v * phi.sin()) * r);
+                        let Some(c) = project_to_canvas(view_proj, size, p) else {
+                            continue;
+                        };
+                        for (text, rect) in boxes.iter().filter(|(t, _)| t.ends_with("axle")) {
+                            let inside = c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all();
+                            assert!(
+                                !inside,
+                                "{name} on {size}: {text:?} at {:?} covers a ring at {c}",
+                                rect.min
+                            );
+                        }
+                    }
+                }
+            }));
+        }
+    }
+    assert_none_failed(&failures);
+}

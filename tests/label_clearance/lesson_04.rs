@@ -1,0 +1,188 @@
+//! Lesson 04: its figures' labels keep clear of what they name (see main.rs).
+
+use super::*;
+
+#[test]
+fn lesson_04_key_names_sit_at_their_keys_and_off_the_paths() {
+    // Figure 1 at its page camera (lessons/04-rigid-motions/lesson.js), both canvases, at the
+    // keys, the page's start (t = 0.5 at 1 s of the 4 s ping-pong), a third and the end, for
+    // the page's key B and a turn of 0°: "A" and "B" each end within the reach of their key's
+    // axes (0.5 m) and 10 px on screen from its origin (they lay 1 m out to the side), clear
+    // of every path, tick and dot and of the aeroplanes.
+    use inbetween::figures::rigid::{RigidMotion, KEY_LABEL_M};
+    for angle in [150.0, 0.0] {
+        let mut scene = RigidMotion::new();
+        scene
+            .set_end(Vec3::new(0.2, 1.0, 0.3), angle, Vec3::new(1.5, 1.4, 0.3))
+            .unwrap();
+        for t in [0.0, 0.33, 0.5, 1.0] {
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, t).unwrap();
+            for size in CANVASES {
+                let camera = page_camera([0.0, 1.0, 0.0, 6.5, 0.35, 0.4], &frame, size);
+                let name = format!("04 keys, angle {angle}°, t {t}");
+                let mut keys = frame.clone();
+                keys.labels.retain(|l| l.text == "A" || l.text == "B");
+                assert_eq!(keys.labels.len(), 2);
+                assert_clear(&name, &keys, &camera, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                for (text, rect) in label_boxes(&keys, &camera, size) {
+                    // The key's origin, KEY_LABEL_M below the name's anchor.
+                    let anchor = keys.labels.iter().find(|l| l.text == text).unwrap().anchor;
+                    let key = anchor - Vec3::Y * KEY_LABEL_M;
+                    let origin = project_to_canvas(view_proj, size, key).unwrap();
+                    let gap = rect.nearest(origin).distance(origin);
+                    // The key's axes are 0.5 m long; the name ends no more than 10 px past
+                    // their tips' reach.
+                    let axis = project_to_canvas(view_proj, size, key + Vec3::Y * 0.5)
+                        .unwrap()
+                        .distance(origin);
+                    assert!(
+                        gap <= axis + 10.0,
+                        "{name} on {size}: {text:?} {gap} px from its key (axes {axis} px)"
+                    );
+                    // Nor over the aeroplanes' parts (boxes: their corners and centres).
+                    for m in &frame.meshes {
+                        for c in 0..9 {
+                            let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
+                            let local = if c == 8 {
+                                Vec3::ZERO
+                            } else {
+                                Vec3::new(s(1), s(2), s(4))
+                            };
+                            let Some(p) =
+                                project_to_canvas(view_proj, size, m.model.transform_point3(local))
+                            else {
+                                continue;
+                            };
+                            assert!(
+                                !(p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all()),
+                                "{name} on {size}: {text:?} covers a plane's part at {p}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_04_thirds_names_sit_at_their_aeroplanes_and_off_the_paths() {
+    // Figure 1 with "a third, three times" on, at its page camera (lessons/04-rigid-motions/
+    // lesson.js) and orbited round it, both canvases, for the page's key B, a turn of 90° and one
+    // of 0° (where the two methods' thirds coincide), all three methods shown and each of the two
+    // with thirds alone, at the keys and half-way: each "k/3" (the screw's third lands on B,
+    // which "B" names) is shown where the figure put it, keeps 2 px off every dot, tick and line
+    // (the paths, the axes, the screw axis), covers no aeroplane's part (its boxes' corners,
+    // edge and face middles and centres), and ends within three label heights (48 px) of its
+    // own aeroplane (the method's first third applied k times to A). As on the page, the figure
+    // places them for the view of the frame before.
+    use inbetween::figures::palette;
+    use inbetween::figures::rigid::{Method, RigidMotion};
+    let mut failures = Vec::new();
+    for (angle, show) in [(150.0, 0), (150.0, 1), (150.0, 3), (90.0, 0), (0.0, 0)] {
+        for t in [0.0, 0.5, 1.0] {
+            for (yaw, pitch) in [
+                (0.35, 0.4),
+                (0.0, 0.2),
+                (1.0, 0.4),
+                (-0.5, 0.6),
+                (0.35, 1.1),
+                (2.5, 0.3),
+            ] {
+                for size in CANVASES {
+                    let mut scene = RigidMotion::new();
+                    scene
+                        .set_end(Vec3::new(0.2, 1.0, 0.3), angle, Vec3::new(1.5, 1.4, 0.3))
+                        .unwrap();
+                    scene.set_show(show).unwrap();
+                    scene.set_thirds(true);
+                    let view = [0.0, 1.0, 0.0, 6.5, yaw, pitch];
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw(out, t).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name = format!(
+                        "04 thirds, angle {angle}°, show {show}, t {t}, orbit ({yaw}, {pitch})"
+                    );
+                    // The screw's 3/3 is B, which "B" names.
+                    let thirds: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| frame.labels[i].text.ends_with("/3"))
+                        .collect();
+                    assert_eq!(thirds.len(), [5, 3, 0, 2][show as usize], "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &thirds, 2.0)
+                    }));
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let at = |p: Vec3| project_to_canvas(view_proj, size, p);
+                    // Each aeroplane part's points: a box's corners, edge and face middles and
+                    // centre.
+                    let points = |m: &inbetween::draw::MeshDraw| -> Vec<Vec2> {
+                        (0..27)
+                            .filter_map(|i| {
+                                let c = |k: i32| (k % 3 - 1) as f32;
+                                at(m.model
+                                    .transform_point3(Vec3::new(c(i), c(i / 3), c(i / 9))))
+                            })
+                            .collect()
+                    };
+                    let parts: Vec<Vec2> = frame.meshes.iter().flat_map(points).collect();
+                    let placed = layout(&frame, &camera, size);
+                    let a = scene.motion(Method::LerpSlerp, 0.0);
+                    for &i in &thirds {
+                        let label = &frame.labels[i];
+                        let (_, b, p) = &placed[i];
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        let method = if label.color == palette::Z_AXIS {
+                            Method::Screw
+                        } else {
+                            Method::LerpSlerp
+                        };
+                        let step = scene.motion(method, 1.0 / 3.0) * a.conjugate();
+                        let k: usize = label.text[..1].parse().unwrap();
+                        // The gap to its aeroplane: to the points of the four boxes from the one
+                        // centred there.
+                        let gap = || {
+                            let centre = (0..k).fold(a, |f, _| step * f).translation();
+                            let first = frame
+                                .meshes
+                                .iter()
+                                .position(|m| m.model.w_axis.truncate().distance(centre) < 1e-4)
+                                .unwrap();
+                            frame.meshes[first..first + 4]
+                                .iter()
+                                .flat_map(points)
+                                .map(|q| rect.nearest(q).distance(q))
+                                .fold(f32::MAX, f32::min)
+                        };
+                        let text = &label.text;
+                        failures.extend(failure_of(|| {
+                            let own = gap();
+                            assert!(
+                                own <= 48.0,
+                                "{name} on {size}: {text:?} {own} px from its aeroplane"
+                            );
+                            for q in &parts {
+                                assert!(
+                                    !(q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all()),
+                                    "{name} on {size}: {text:?} at {:?} covers an aeroplane's part at {q}",
+                                    rect.min
+                                );
+                            }
+                        }));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

@@ -1,0 +1,51 @@
+//! Lesson 05: its figures' labels keep clear of what they name (see main.rs).
+
+use super::*;
+
+#[test]
+fn lesson_05_probe_value_keeps_off_the_cell_square_and_the_arrows() {
+    // Figure 2 at its page camera (lessons/05-noise/lesson.js), both canvases, for the
+    // page's probe (0.4, 0.7) and others across the grid, on the 2D noise and on slices of 3D
+    // noise (z = 0.5, whose sticks join the dots to the surface, and 1.3): the probe's "n = …"
+    // is shown where the figure put it and keeps 2 px off every dot and line (the purple
+    // square of the probe's cell, the sticks, the arrows, the probe's stem). As on the page,
+    // the figure places it for the view of the frame before.
+    use inbetween::figures::noise::{Noise2d, TerrainFigure};
+    let view = [0.0, 0.0, 0.0, 2.9, 0.35, 0.75];
+    let mut failures = Vec::new();
+    for (x, y) in [
+        (0.4, 0.7),
+        (0.1, 0.1),
+        (-0.5, 0.5),
+        (0.9, -0.9),
+        (-1.5, -1.2),
+        (1.5, 1.5),
+    ] {
+        for z in [0.0, 0.5, 1.3] {
+            for size in CANVASES {
+                let mut scene = Noise2d::new();
+                scene.set_probe(x, y).unwrap();
+                scene.set_z(z).unwrap();
+                scene.take_dirty();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out, inbetween::draw::MeshId(1));
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("05 noise 2D, probe ({x}, {y}), z {z}");
+                let value: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| frame.labels[i].text.starts_with("n = "))
+                    .collect();
+                assert_eq!(value.len(), 1, "{name}");
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &value, 2.0)
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

@@ -1,0 +1,211 @@
+//! Lesson 09: its figures' labels keep clear of what they name (see main.rs).
+
+use super::*;
+
+/// The orbits Figure 4 of lesson 09 is checked from: the page's (lessons/09-skinning/lesson.js)
+/// and the page's after the page test's drag (a fifth of a 650 px canvas across, a tenth of its
+/// 420 px down, at 0.008 rad a pixel).
+const HUMAN_ORBITS: [[f32; 6]; 2] = [
+    [0.0, 0.9, 0.0, 3.2, 1.45, 0.15],
+    [
+        0.0,
+        0.9,
+        0.0,
+        3.2,
+        1.45 - 0.008 * 130.0,
+        0.15 + 0.008 * 42.0,
+    ],
+];
+
+#[test]
+fn lesson_09_human_pair_names_keep_off_the_bodies_and_the_skeletons() {
+    // Both bodies side by side with the skeleton X-rayed and a heat map's joint named, in both
+    // views, through the run and the walk, from both orbits: the titles and the joint's names
+    // cover no vertex of either body (as skinned, on the CPU), no joint dot or bone, and no
+    // other name. As on the page, the joint's names are placed for the view of the frame
+    // before (set_canvas_view).
+    use inbetween::draw::MeshId;
+    use inbetween::figures::skinning::HumanFigure;
+    let places = [Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.0, 0.0, -0.5)];
+    let mut failures = Vec::new();
+    for clip in ["walk", "run"] {
+        for view in ["whole body", "left legs"] {
+            for joint in ["pelvis", "thigh.L", "chest"] {
+                let mut h = HumanFigure::new();
+                h.set_compare(true);
+                h.set_clip(clip).unwrap();
+                h.set_view(view).unwrap();
+                h.set_heat_joint(joint).unwrap();
+                h.set_show_skeleton(true);
+                for t in [0.0, 0.21, 0.42] {
+                    h.skin(t).unwrap();
+                    for size in CANVASES {
+                        for orbit in HUMAN_ORBITS {
+                            let (frame, camera) = drawn_for_view(
+                                &mut h,
+                                orbit,
+                                size,
+                                |fig, out| {
+                                    fig.draw_pair(out, [MeshId(3), MeshId(4)]);
+                                },
+                                |fig, cam, px| fig.set_canvas_view(cam, px.x, px.y),
+                            );
+                            let name = format!(
+                                "09 pair, {clip} at {t} s, {view}, {joint}, orbit {orbit:?}"
+                            );
+                            let view_proj = camera.projection(size.x / size.y) * camera.view();
+                            let body: Vec<Vec2> = [&h.mesh, &h.mesh_dqs]
+                                .into_iter()
+                                .zip(places)
+                                .flat_map(|(m, place)| m.positions.iter().map(move |p| *p + place))
+                                .filter_map(|p| project_to_canvas(view_proj, size, p))
+                                .collect();
+                            let labels = label_boxes(&frame, &camera, size);
+                            failures.extend(failure_of(|| {
+                                assert_eq!(labels.len(), 4, "{name} on {size}: all shown");
+                                assert_clear(&name, &frame, &camera, size);
+                                for (text, rect) in &labels {
+                                    let on = body
+                                        .iter()
+                                        .find(|p| p.cmpgt(rect.min).all() && p.cmplt(rect.max()).all());
+                                    assert!(on.is_none(), "{name} on {size}: {text:?} at {:?} covers a body at {on:?}", rect.min);
+                                }
+                            }));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_09_cylinder_names_keep_off_the_tubes_and_each_other() {
+    // Figure 1 at its defaults, at the page test's settings (bend 36°, twist −109°, falloff
+    // 0.79 m, ring 8) and at a straight and a fully bent elbow, from the page's orbit and the
+    // page test's drag: each elbow's name is anchored at the elbow joint and covers neither
+    // tube (placed off it, the page draws a leader line); no name covers a dot or line; K₁p's
+    // and K₂p's boxes (large text) stay apart. As on the page, the labels are placed for the
+    // view of the frame before (set_view).
+    use inbetween::draw::layout::{leader, LEADER_PX};
+    use inbetween::draw::{MeshId, LABELS_APART_PX};
+    use inbetween::figures::skinning::{CylinderFigure, DQS_OFFSET, LBS_OFFSET};
+    let orbits = [
+        [0.3, 0.7, 0.0, 5.0, 0.0, 0.2],
+        [0.3, 0.7, 0.0, 5.0, -0.008 * 130.0, 0.2 + 0.008 * 42.0],
+    ];
+    let mut failures = Vec::new();
+    for (bend, twist, falloff, ring) in [
+        (90.0, 0.0, 0.15, 20),
+        (36.0, -109.0, 0.79, 8),
+        (0.0, 0.0, 0.15, 20),
+        (180.0, 45.0, 0.05, 23),
+    ] {
+        let mut f = CylinderFigure::new();
+        f.set_bend_deg(bend).unwrap();
+        f.set_twist_deg(twist).unwrap();
+        f.set_falloff(falloff).unwrap();
+        f.set_probe_ring(ring).unwrap();
+        let elbow = f.rig().segments[1].0;
+        for size in CANVASES {
+            for orbit in orbits {
+                let (frame, camera) = drawn_for_view(
+                    &mut f,
+                    orbit,
+                    size,
+                    |fig, out| {
+                        fig.draw(out, [MeshId(1), MeshId(2)]).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let name = format!("09 cylinder, bend {bend}, twist {twist}, orbit {orbit:?}");
+                let tubes: Vec<Vec2> = [(LBS_OFFSET, &f.lbs), (DQS_OFFSET, &f.dqs)]
+                    .into_iter()
+                    .flat_map(|(o, m)| m.positions.iter().map(move |p| o + *p))
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let placed = layout(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert_clear(&name, &frame, &camera, size);
+                    let elbows: Vec<_> = placed
+                        .iter()
+                        .filter(|(l, _, _)| l.text == "elbow")
+                        .collect();
+                    assert_eq!(elbows.len(), 2, "{name}");
+                    for ((l, b, p), offset) in elbows.into_iter().zip([LBS_OFFSET, DQS_OFFSET]) {
+                        let at = project_to_canvas(view_proj, size, offset + elbow).unwrap();
+                        assert!(
+                            l.dot_px.distance(at) < 0.01,
+                            "{name}: anchored at the elbow"
+                        );
+                        assert!(p.shown, "{name} on {size}: elbow shown");
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        let on = tubes
+                            .iter()
+                            .find(|q| q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all());
+                        assert!(
+                            on.is_none(),
+                            "{name} on {size}: elbow at {:?} covers a tube at {on:?}",
+                            rect.min
+                        );
+                        // Further than a label's height from the joint, it gets a leader line.
+                        if rect.nearest(at).distance(at) > LEADER_PX {
+                            assert!(leader(rect, at, false).is_some());
+                        }
+                    }
+                    let k: Vec<Rect> = frame
+                        .labels
+                        .iter()
+                        .filter(|l| l.text.starts_with('K'))
+                        .map(|l| l.first_place(view_proj, size).unwrap())
+                        .collect();
+                    if let [a, b] = k[..] {
+                        assert!(
+                            !a.overlaps(&b, LABELS_APART_PX - 0.5),
+                            "{name} on {size}: K₁p and K₂p at {a:?} and {b:?}"
+                        );
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
+    // Over the whole twist slider, with the fix on and off: every label is shown where the
+    // figure put it (no leader line from the page's layout), clear of every dot and line. Near
+    // 0° and 360° three points meet at 1, so their labels are stacked by the figure.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::skinning::SignFigure;
+    for fix in [true, false] {
+        for deg in (0..=360).step_by(5) {
+            let mut scene = SignFigure::new();
+            scene.set_fix(fix);
+            scene.set_twist_deg(deg as f32).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, MeshId(1)).unwrap();
+            assert_eq!(frame.labels.len(), 6);
+            let name = format!("09 sign at {deg}°, fix {fix}");
+            for size in CANVASES {
+                // The page's camera (lessons/09-skinning/lesson.js).
+                let camera = page_camera([0.8, 1.0, 0.0, 5.5, 0.0, 0.1], &frame, size);
+                for (l, _, p) in layout(&frame, &camera, size) {
+                    assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
+                    assert!(
+                        p.leader_to.is_none(),
+                        "{name} on {size}: {:?} moved off its place",
+                        l.text
+                    );
+                }
+                assert_clear(&name, &frame, &camera, size);
+            }
+        }
+    }
+}

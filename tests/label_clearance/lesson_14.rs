@@ -1,0 +1,160 @@
+//! Lesson 14: its figures' labels keep clear of what they name (see main.rs).
+
+use super::*;
+
+#[test]
+fn lesson_14_drift_labels_stay_inside_the_canvas_and_apart() {
+    // Figure 2 at its page camera (lessons/14-rigid-bodies/lesson.js), both canvases, at the
+    // start, part-way and at the end of the run, at the page's spin and step and at the
+    // sliders' largest (where the unnormalised box grows too large to draw and its label reads
+    // "too large to draw"): every label is shown where the figure put it, inside the canvas
+    // with EDGE_PX to spare (the rightmost read out past the right edge), and over its box.
+    use inbetween::draw::layout::EDGE_PX;
+    use inbetween::figures::rigid_body::DriftFigure;
+    for (spin, step_ms) in [(5.0, 10.0), (30.0, 50.0)] {
+        let mut scene = DriftFigure::new();
+        scene.set_drift(spin, step_ms).unwrap();
+        let end = scene.duration_sec();
+        for time_sec in [0.0, 0.35, 0.5 * end, end] {
+            scene.advance_to(time_sec).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame);
+            assert_eq!(frame.labels.len(), 3);
+            for size in CANVASES {
+                let camera = page_camera([0.0, 1.0, 0.0, 6.0, 0.0, 0.12], &frame, size);
+                let name = format!("14 drift, spin {spin}, step {step_ms} ms, t {time_sec}");
+                for (l, b, p) in layout(&frame, &camera, size) {
+                    assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
+                    assert!(
+                        p.leader_to.is_none(),
+                        "{name} on {size}: {:?} moved",
+                        l.text
+                    );
+                    let max = p.top_left + b.size;
+                    assert!(
+                        p.top_left.cmpge(Vec2::splat(EDGE_PX)).all()
+                            && max.cmple(size - EDGE_PX).all(),
+                        "{name} on {size}: {:?} at {} to {max} touches the edge",
+                        l.text,
+                        p.top_left
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn lesson_14_throw_names_l_and_omega_apart_at_their_tips() {
+    // Figure 1 at the page's default camera (the figure sets none; the viewer fits it), both
+    // canvases, through the flight, for spins and tilts across the sliders: L's and ω's names
+    // are spelt out, each shown where the figure put it, its box within 42 px of its arrow's tip
+    // (just off it unless the trail or the path is there), at least 6 px from the other's box,
+    // and off the trail, the path, the shafts and the dot.
+    // As on the page, the figure places them for the view of the frame before (set_view).
+    use inbetween::draw::LABEL_DOT_GAP_PX;
+    use inbetween::figures::rigid_body::ThrowFigure;
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    let mut failures = Vec::new();
+    for (spin, tilt) in [
+        (10.0, 20.0),
+        (15.0, 50.0),
+        (5.0, 80.0),
+        (10.0, 5.0),
+        (15.0, 80.0),
+    ] {
+        for k in 0..=8 {
+            for size in CANVASES {
+                let mut f = ThrowFigure::new();
+                f.set_throw(spin, tilt).unwrap();
+                f.advance_to(f.duration_sec() * k as f32 / 8.0).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut f,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out);
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("14 throw, spin {spin}, tilt {tilt}°, step {k}/8");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let check = || {
+                    assert_clear(&name, &frame, &camera, size);
+                    let placed = layout(&frame, &camera, size);
+                    assert_eq!(placed.len(), 2, "{name}");
+                    let mut boxes = Vec::new();
+                    for (l, b, p) in &placed {
+                        assert!(p.shown && p.leader_to.is_none(), "{name}: {} moved", l.text);
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        // The tip: the label's anchor (its offset is on screen).
+                        let label = frame.labels.iter().find(|f| f.text == l.text).unwrap();
+                        let tip = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                        let gap = rect.nearest(tip).distance(tip);
+                        assert!(
+                            (LABEL_DOT_GAP_PX..=42.0).contains(&gap),
+                            "{name} on {size}: {} {gap} px from its tip",
+                            l.text
+                        );
+                        boxes.push(rect);
+                    }
+                    assert!(
+                        !boxes[0].overlaps(&boxes[1], 6.0),
+                        "{name} on {size}: the names crowd: {boxes:?}"
+                    );
+                };
+                failures.extend(failure_of(check));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_14_stack_names_its_top_box_just_above_it() {
+    // Figure 5 at the page's default camera (the figure sets none; the viewer fits it), both
+    // canvases, the stack and the dominoes, settled and after a push: the tracked body's name
+    // sits over it, its box's bottom between 14 px above the body's topmost point on screen
+    // and 2 px into it, its middle over the body.
+    use inbetween::figures::rigid_body::{StackFigure, StackPreset};
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    for preset in [StackPreset::Stack, StackPreset::Dominoes] {
+        for (push, t) in [(false, 0.0), (false, 1.0), (true, 0.5), (true, 2.0)] {
+            let mut f = StackFigure::new(preset);
+            if push {
+                f.advance_to(0.5).unwrap();
+                f.push().unwrap();
+            }
+            f.advance_to(t + if push { 0.5 } else { 0.0 }).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            for size in CANVASES {
+                let camera = page_camera(view, &frame, size);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let name = format!("14 stack {preset:?}, push {push}, t {t} s");
+                let placed = layout(&frame, &camera, size);
+                assert_eq!(placed.len(), 1, "{name}");
+                let (l, b, p) = &placed[0];
+                assert!(p.shown && p.leader_to.is_none(), "{name}: moved");
+                // The tracked body: the last cube the frame draws.
+                let model = frame.meshes.last().unwrap().model;
+                let corners: Vec<Vec2> = (0..8)
+                    .map(|i| {
+                        let s = Vec3::new(
+                            if i & 1 == 0 { -1.0 } else { 1.0 },
+                            if i & 2 == 0 { -1.0 } else { 1.0 },
+                            if i & 4 == 0 { -1.0 } else { 1.0 },
+                        );
+                        project_to_canvas(view_proj, size, model.transform_point3(s)).unwrap()
+                    })
+                    .collect();
+                let (bottom, middle) = (p.top_left.y + b.size.y, p.top_left.x + 0.5 * b.size.x);
+                let at = format!("{name} on {size}: {:?}", l.text);
+                assert_just_above(&at, bottom, middle, &corners, 14.0, "body");
+            }
+        }
+    }
+}
