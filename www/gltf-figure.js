@@ -43,8 +43,13 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
   // comes from the scene; this one is only about the server.
   const message = samples.length ? '' : 'The sample characters are not on this server (they are copied from ../shared when it is there); load your own file below.';
   let clipControl = null;
+  let characterControl = null;
   scene.setSkinning(p.skinning);
-  const loaded = () => {
+  // After a file loads, from the dropdown, the picker or a drop: the dropdown names the character
+  // shown (a file of the reader's own joins its options).
+  const loaded = (name) => {
+    p.character = name;
+    characterControl?.options(samples.includes(name) ? samples : [...samples, name]);
     const [x, y, z, distance] = scene.fit();
     viewer.setCamera(x, y, z, distance, 0.6, 0.15);
     timeline.duration = scene.duration;
@@ -74,14 +79,14 @@ export async function gltfFigure(lesson, selector, { skinning = null, gpuSwitch 
     } catch {
       return; // rejected: the scene's note says why, and what it still shows
     }
-    loaded();
+    loaded(name);
   };
   const loadSample = async (file) => {
     if (!samples.includes(file)) return;
     const response = await fetch(new URL(`../assets/gltf/${file}`, import.meta.url));
     await load(file, new Uint8Array(await response.arrayBuffer()));
   };
-  if (samples.length) gui.add(p, 'character', samples).name('sample').onChange(() => loadSample(p.character));
+  if (samples.length) characterControl = gui.add(p, 'character', samples).name('sample').onChange(() => loadSample(p.character));
   if (skinning) {
     gui.add(p, 'skinning', { 'linear blend (LBS)': 'lbs', 'dual quaternion (DQS)': 'dqs' })
       .name('mesh').onChange(() => scene.setSkinning(p.skinning));

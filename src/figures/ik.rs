@@ -1276,6 +1276,8 @@ pub struct AimFigure {
     /// The target, metres (model space; the head sits at (0, 1.6, 0) looking along +z).
     target: Vec3,
     max_angle_rad: f32,
+    /// The camera and canvas size (CSS pixels) of the last frame, that the labels keep clear on.
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for AimFigure {
@@ -1299,6 +1301,15 @@ impl AimFigure {
         Self {
             target: Vec3::new(1.2, 1.9, 1.0),
             max_angle_rad: 70.0 * DEG,
+            view: None,
+        }
+    }
+
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the labels of
+    /// the forward arrow and of the miss keep off the body and the lines on that view.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
         }
     }
 
@@ -1371,8 +1382,14 @@ impl AimFigure {
             palette::BROWN,
         );
         frame.axes(head, 0.2);
-        frame.arrow(HEAD, HEAD + s.forward * 0.8, palette::BLUE, 0.08);
-        frame.label_with_priority(HEAD + s.forward * 0.85, "forward", palette::BLUE, 2);
+        // From the head's surface, over everything: a head turned down and back looks through
+        // its own body, and the arrow stays whole.
+        frame.arrow_on_top(
+            HEAD + s.forward * 0.13,
+            HEAD + s.forward * 0.8,
+            palette::BLUE,
+            0.08,
+        );
         frame.marker(target, TARGET_PX, palette::RED);
         frame.label_with_priority(
             target + Vec3::new(0.05, 0.05, 0.0),
@@ -1381,6 +1398,12 @@ impl AimFigure {
             2,
         );
         let to_target = (target - HEAD).normalize_or(Vec3::Z);
+        let missed = s.forward.angle_between(to_target);
+        let axis = s
+            .forward
+            .cross(to_target)
+            .try_normalize()
+            .unwrap_or_else(|| s.forward.any_orthonormal_vector());
         if !s.result.reached {
             // What the head misses: a dashed line to the target, and the angle between where
             // it looks and where the target is, drawn as an arc with its size.
@@ -1389,24 +1412,12 @@ impl AimFigure {
                 palette::RED,
                 StrokeStyle::dashed(GAP_PX, 0.06, 0.04),
             );
-            let missed = s.forward.angle_between(to_target);
-            let axis = s
-                .forward
-                .cross(to_target)
-                .try_normalize()
-                .unwrap_or_else(|| s.forward.any_orthonormal_vector());
             let arc: Vec<Vec3> = (0..=24)
                 .map(|k| {
                     HEAD + Quat::from_axis_angle(axis, missed * k as f32 / 24.0) * s.forward * 0.45
                 })
                 .collect();
             frame.stroke(&arc, palette::RED, StrokeStyle::solid(GAP_PX));
-            frame.label_with_priority(
-                HEAD + Quat::from_axis_angle(axis, 0.5 * missed) * s.forward * 0.52,
-                format!("misses {:.0}°", missed / DEG),
-                palette::RED,
-                1,
-            );
         }
         // The cone of allowed directions, around the rest forward (+z).
         const STEPS: usize = 24;
@@ -1431,6 +1442,63 @@ impl AimFigure {
             palette::PURPLE,
             0,
         );
+        // The body's and the head's boxes on the last frame's view: the labels placed below
+        // keep off them (meshes are not among the frame's dots and lines).
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let solids: Vec<crate::draw::layout::Rect> =
+            view.map_or(Vec::new(), |(view_proj, size)| {
+                [
+                    (Vec3::new(0.2, 0.35, 0.12), Vec3::new(0.0, 1.1, 0.0)),
+                    (Vec3::splat(0.13), HEAD),
+                ]
+                .iter()
+                .filter_map(|&(half, centre)| {
+                    let corners = crate::draw::box_corners(centre - half, centre + half);
+                    let px: Option<Vec<Vec2>> = corners
+                        .iter()
+                        .map(|&c| project_to_canvas(view_proj, size, c))
+                        .collect();
+                    let px = px?;
+                    let lo = px.iter().copied().fold(Vec2::MAX, Vec2::min);
+                    let hi = px.iter().copied().fold(Vec2::MIN, Vec2::max);
+                    Some(crate::draw::layout::Rect {
+                        min: lo,
+                        size: hi - lo,
+                    })
+                })
+                .collect()
+            });
+        // The arrow's name past its tip, and the miss's size past the middle of its arc; where
+        // the body, the head or a line lies there, the first place round that point clear of
+        // them.
+        let mut labels = vec![(s.forward * 0.85, "forward".to_string(), palette::BLUE, 2)];
+        if !s.result.reached {
+            labels.push((
+                Quat::from_axis_angle(axis, 0.5 * missed) * s.forward * 0.52,
+                format!("misses {:.0}°", missed / DEG),
+                palette::RED,
+                1,
+            ));
+        }
+        for (out, text, color, priority) in labels {
+            let at = HEAD + out;
+            let first = crate::draw::Label {
+                anchor: at,
+                text: text.clone(),
+                color,
+                left: false,
+                priority,
+                offset_px: Vec2::ZERO,
+                large: false,
+            };
+            let around =
+                crate::draw::Label::around_dot(at, 4.0, Vec2::ZERO, &text, color, priority, 8, 8.0);
+            frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |r| {
+                solids.iter().all(|b| !b.overlaps(&r, 2.0))
+            });
+        }
         // The body, the head's reach and the target's whole loop stay in view.
         frame.keep_box_in_view(Vec3::new(-0.6, 0.7, -0.6), Vec3::new(0.6, 2.3, 0.6));
         frame.keep_box_in_view(

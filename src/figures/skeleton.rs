@@ -1119,34 +1119,6 @@ impl SkeletonFigure {
             pivot,
             inside,
         );
-        // The joint's name up and to the right of it; where the ring of path ticks or a bone
-        // runs there (on the last frame's view), the first place round the joint clear of them
-        // by a few pixels, up and to the right first.
-        let p = selected.w_axis.truncate();
-        let name = self.skeleton.names()[self.selected].clone();
-        let view = self
-            .view
-            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
-        let first = crate::draw::Label {
-            anchor: p + Vec3::new(0.05, 0.05, 0.0),
-            text: name.clone(),
-            color: palette::ORANGE,
-            left: false,
-            priority: 0,
-            offset_px: Vec2::ZERO,
-            large: false,
-        };
-        let around = crate::draw::Label::around_dot(
-            p,
-            NAME_CLEAR_PX,
-            Vec2::new(1.0, -1.0),
-            &name,
-            palette::ORANGE,
-            0,
-            8,
-            8.0,
-        );
-        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
         // The crossfade's two clips alone, beside the blend.
         let source_names = [
             self.clip_name(),
@@ -1189,6 +1161,34 @@ impl SkeletonFigure {
             );
             frame.contact_shadow(Vec3::new(root.x, 0.0, root.z), 0.25);
         }
+        // The joint's name up and to the right of it; where the ring of path ticks, a bone or
+        // the crossfade's clips alone (and their names) lie there on the last frame's view, the
+        // first place round the joint clear of them by a few pixels, up and to the right first.
+        let p = selected.w_axis.truncate();
+        let name = self.skeleton.names()[self.selected].clone();
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let first = crate::draw::Label {
+            anchor: p + Vec3::new(0.05, 0.05, 0.0),
+            text: name.clone(),
+            color: palette::ORANGE,
+            left: false,
+            priority: 0,
+            offset_px: Vec2::ZERO,
+            large: false,
+        };
+        let around = crate::draw::Label::around_dot(
+            p,
+            NAME_CLEAR_PX,
+            Vec2::new(1.0, -1.0),
+            &name,
+            palette::ORANGE,
+            0,
+            8,
+            8.0,
+        );
+        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
         frame.keep_box_in_view(self.bounds.0, self.bounds.1);
         Ok(note)
     }

@@ -163,6 +163,9 @@ impl AimScene {
 
     /// Aims at `time_sec` (the target circles slowly) and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        // The view its labels keep clear on (the last frame's fitted camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, time_sec)

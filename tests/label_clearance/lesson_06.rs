@@ -174,3 +174,50 @@ fn lesson_06_gltf_root_name_keeps_off_the_bones() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_06_crossfade_joint_name_keeps_off_the_clips_alone() {
+    // Figure 3 at its page camera (lessons/06-skeletons/lesson.js: yaw 0.5, pitch 0.2, fitted),
+    // both canvases, at its start (walk and wave at weight 0.5, upper_arm.R) and with run as
+    // clip B, across a cycle: the selected joint's name is shown where the figure put it and
+    // keeps 2 px off every dot and line, the bones of the clips alone beside the blend
+    // included (the walk alone stands just left of the blend's raised right arm).
+    use inbetween::figures::skeleton::SkeletonFigure;
+    let mut failures = Vec::new();
+    for blend in ["wave", "run"] {
+        for k in 0..8 {
+            let t = k as f32 * 0.125;
+            for size in CANVASES {
+                let mut scene = SkeletonFigure::new();
+                scene.set_clip("walk").unwrap();
+                scene.set_keys_per_cycle(9.0).unwrap();
+                scene.set_blend(blend, 0.5).unwrap();
+                let names = scene.skeleton().names();
+                let index = names.iter().position(|n| n == "upper_arm.R").unwrap();
+                scene.select(index).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    [0.0, 0.85, 0.0, 2.5, 0.5, 0.2],
+                    size,
+                    |fig, out| {
+                        fig.draw(out, t).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("06 crossfade walk and {blend}, t {t}");
+                let named: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| frame.labels[i].text == "upper_arm.R")
+                    .collect();
+                assert_eq!(named.len(), 1, "{name}");
+                assert!(
+                    frame.labels.iter().any(|l| l.text == "walk alone"),
+                    "{name}: the clip alone is drawn"
+                );
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

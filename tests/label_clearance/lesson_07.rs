@@ -236,3 +236,145 @@ fn lesson_07_side_d_label_sits_beside_its_line() {
         far[..far.len().min(12)].join("\n")
     );
 }
+
+#[test]
+fn lesson_07_aim_labels_keep_off_the_body_and_the_lines() {
+    // Figure 4 at its page camera (lessons/07-inverse-kinematics/lesson.js: yaw −0.95, pitch
+    // 0.15, fitted), both canvases, over the target's loop: at the page's start, with the target
+    // behind the body (the head stops at the cone's rim and a red arc gives the miss), and with
+    // a wide cone that lets the head look down through its body. "forward" and "misses …°" are
+    // shown where the figure put them, off every dot and line, and off the body's and the
+    // head's boxes on the canvas (a label on the body's edge reads as part of it). As on the
+    // page, the figure places them for the view of the frame before.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::ik::AimFigure;
+    use inbetween::figures::palette;
+    let mut failures = Vec::new();
+    let mut misses = 0;
+    for (target, cone) in [
+        (Vec3::new(1.2, 1.9, 1.0), 70.0),
+        (Vec3::new(-0.7, 1.0, -1.2), 70.0),
+        (Vec3::new(0.0, 1.9, -1.2), 40.0),
+        (Vec3::new(-0.7, 1.0, -0.7), 142.0),
+    ] {
+        for k in 0..8 {
+            let t = k as f32;
+            for size in CANVASES {
+                let mut scene = AimFigure::new();
+                scene.set_target(target).unwrap();
+                scene.set_max_angle_deg(cone).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    [0.0, 1.5, 0.0, 5.2, -0.95, 0.15],
+                    size,
+                    |fig, out| {
+                        fig.draw(out, t).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("07 aim, target {target}, cone {cone}°, t {t}");
+                let placed: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| {
+                        let text = &frame.labels[i].text;
+                        text == "forward" || text.starts_with("misses ")
+                    })
+                    .collect();
+                misses += placed.len() - 1;
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &placed, 0.0)
+                }));
+                // The body (grey box) and the head (brown ball): their boxes on the canvas.
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let solids: Vec<Rect> = frame
+                    .meshes
+                    .iter()
+                    .filter(|m| {
+                        (m.mesh == MeshId::CUBE && m.color.truncate() == palette::GREY)
+                            || (m.mesh == MeshId::SPHERE && m.color.truncate() == palette::BROWN)
+                    })
+                    .map(|m| {
+                        let corners = inbetween::draw::box_corners(Vec3::splat(-1.0), Vec3::ONE)
+                            .map(|c| {
+                                project_to_canvas(view_proj, size, m.model.transform_point3(c))
+                                    .unwrap()
+                            });
+                        let lo = corners.iter().copied().fold(Vec2::MAX, Vec2::min);
+                        let hi = corners.iter().copied().fold(Vec2::MIN, Vec2::max);
+                        Rect {
+                            min: lo,
+                            size: hi - lo,
+                        }
+                    })
+                    .collect();
+                assert_eq!(solids.len(), 2, "{name}: the body and the head");
+                for (text, rect) in label_boxes(&frame, &camera, size) {
+                    if text != "forward" && !text.starts_with("misses ") {
+                        continue;
+                    }
+                    if solids.iter().any(|b| b.overlaps(&rect, 0.0)) {
+                        failures.push(format!(
+                            "{name} on {size}: {text:?} at {:?} over the body or the head",
+                            rect.min
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    // The targets behind the body are missed for most of the loop: their labels were checked.
+    assert!(misses >= 24, "only {misses} frames show a miss");
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_07_hinge_figure_labels_keep_off_the_arcs_at_every_segment_count() {
+    // Figure 3 at its page camera and orbited round it (to the front, to the front left, from
+    // above), both
+    // canvases, at the page's target with every number of
+    // segments the slider gives, each kind of joint limit, and 10 and 40 iterations: the
+    // targets' names, the misses' lengths and the chains' names keep off every dot and line
+    // (with hinges, one arc per joint crowds the targets as the chains reach for them). As on
+    // the page, the figure places them for the view of the frame before.
+    use inbetween::figures::ik::{IkFigure, SOLVERS};
+    let placed = |text: &str| {
+        SOLVERS.contains(&text)
+            || text.ends_with(" target")
+            || text.ends_with(" mm short")
+            || text.starts_with("d = ")
+            || text.starts_with("α")
+    };
+    let mut failures = Vec::new();
+    for segments in 2..=8 {
+        for limits in ["hinges (bend one way)", "cones (40°)", "none"] {
+            for iterations in [10.0, 40.0] {
+                let mut scene = IkFigure::new();
+                scene.set_segments(segments as f32).unwrap();
+                scene.set_limits(limits).unwrap();
+                scene.set_iterations(iterations).unwrap();
+                scene.set_target(Vec3::new(0.55, 0.65, 0.15)).unwrap();
+                for (size, (yaw, pitch)) in CANVASES
+                    .iter()
+                    .flat_map(|&size| [(0.5, 0.3), (-0.54, 0.64), (0.0, 0.64)].map(|v| (size, v)))
+                {
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        [0.25, 0.45, 0.0, 4.3, yaw, pitch],
+                        size,
+                        |fig, out| {
+                            fig.draw(out).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name = format!(
+                        "07 Fig 3, {segments} segments, {limits}, {iterations} iterations, \
+                         orbit ({yaw}, {pitch})"
+                    );
+                    failures.extend(failure_of(|| {
+                        assert_clear_of(&name, &frame, &camera, size, placed)
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
