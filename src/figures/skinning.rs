@@ -368,6 +368,7 @@ impl CylinderFigure {
                 }
             }
         }
+        let lbs_not_done = matches!(failure, Some(run::Failure::NotDone));
         match failure {
             Some(f) => notes.push(failure_note("exercise 9.1 lbs_vertex", EXERCISE_FILE, &f)),
             None => {
@@ -409,6 +410,14 @@ impl CylinderFigure {
             }
         }
         match failure {
+            // Neither done: one sentence for both.
+            Some(f @ run::Failure::NotDone) if lbs_not_done => {
+                notes[0] = failure_note(
+                    "exercises 9.1 lbs_vertex and 9.2 blend_dual_quats",
+                    EXERCISE_FILE,
+                    &f,
+                );
+            }
             Some(f) => notes.push(failure_note(
                 "exercise 9.2 blend_dual_quats",
                 EXERCISE_FILE,
