@@ -556,7 +556,8 @@ impl Frame {
             let (a, b) = dir.any_orthonormal_pair();
             for k in 0..3 {
                 let (sin, cos) = (k as f32 * std::f32::consts::TAU / 3.0).sin_cos();
-                self.stroke(&[base + 0.35 * head * (a * cos + b * sin), to], color, style);
+                let rim = base + 0.35 * head * (a * cos + b * sin);
+                self.stroke(&[rim, to], color, style);
             }
         }
         let model = Mat4::from_scale_rotation_translation(

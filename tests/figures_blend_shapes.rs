@@ -770,7 +770,12 @@ fn the_target_heads_never_touch() {
 fn the_target_heads_stand_apart_from_any_orbit() {
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     let size = glam::Vec2::new(650.0, 420.0);
-    for [yaw, pitch] in [[0.2, 0.05], [0.2 - 1.04, 0.05 + 0.336], [1.6, 0.0], [0.0, 1.4]] {
+    for [yaw, pitch] in [
+        [0.2, 0.05],
+        [0.2 - 1.04, 0.05 + 0.336],
+        [1.6, 0.0],
+        [0.0, 1.4],
+    ] {
         let mut f = TargetsFigure::new();
         f.set_weight(1.5).unwrap();
         let mut camera = OrbitCamera::from_view([0.0, 0.0, 0.0, 9.0, yaw, pitch]);
@@ -786,14 +791,19 @@ fn the_target_heads_stand_apart_from_any_orbit() {
                     .positions
                     .iter()
                     .map(|p| project_to_canvas(view_proj, size, *p + at).unwrap())
-                    .fold((size, glam::Vec2::ZERO), |(lo, hi), p| (lo.min(p), hi.max(p)))
+                    .fold((size, glam::Vec2::ZERO), |(lo, hi), p| {
+                        (lo.min(p), hi.max(p))
+                    })
             })
             .collect();
         for (i, a) in boxes.iter().enumerate() {
             assert!(a.0.cmpge(glam::Vec2::ZERO).all() && a.1.cmple(size).all());
             for (j, b) in boxes.iter().enumerate().skip(i + 1) {
                 let apart = a.1.x < b.0.x || b.1.x < a.0.x || a.1.y < b.0.y || b.1.y < a.0.y;
-                assert!(apart, "yaw {yaw}, pitch {pitch}: heads {i} {a:?} and {j} {b:?} overlap");
+                assert!(
+                    apart,
+                    "yaw {yaw}, pitch {pitch}: heads {i} {a:?} and {j} {b:?} overlap"
+                );
             }
         }
     }

@@ -839,7 +839,11 @@ fn the_weights_plot_is_half_and_half_at_the_elbow_and_widens_with_the_falloff() 
     for [x, shoulder, elbow] in rows(&f) {
         let s = (1.0 - x).abs();
         let e = (-(((s * s + 0.0625f32).sqrt() - 0.25) / 0.15).powi(2)).exp();
-        let (near, other) = if x < 1.0 { (shoulder, elbow) } else { (elbow, shoulder) };
+        let (near, other) = if x < 1.0 {
+            (shoulder, elbow)
+        } else {
+            (elbow, shoulder)
+        };
         if s > 1e-4 {
             assert!((other - e / (1.0 + e)).abs() < 1e-4, "at {x} m: {other}");
             assert!(near > other);

@@ -793,7 +793,11 @@ impl TargetsFigure {
             }
         }
         // Every head with its label, the rows' outer heads at their widest.
-        let (x, bottom, top) = (TARGETS_SPACING + HEAD_RADIUS, -TARGETS_ROW - 1.45, TARGETS_ROW + 1.1);
+        let (x, bottom, top) = (
+            TARGETS_SPACING + HEAD_RADIUS,
+            -TARGETS_ROW - 1.45,
+            TARGETS_ROW + 1.1,
+        );
         for (x, y) in [(-x, bottom), (x, bottom), (-x, top), (x, top)] {
             frame.keep_in_view.push(self.on_view_plane(x, y));
         }

@@ -1791,7 +1791,8 @@ impl SignFigure {
         let view = view_of(self.view);
         for &(angle, text, color, size) in &points {
             let toward = Vec2::new(angle.cos(), -angle.sin());
-            let candidates = Label::around_dot(on_circle(angle), size, toward, text, color, 0, 8, 8.0);
+            let candidates =
+                Label::around_dot(on_circle(angle), size, toward, text, color, 0, 8, 8.0);
             frame.first_clear_label_by(view, 2.0, candidates, |_| true);
         }
         for (at, toward, text) in [

@@ -212,8 +212,10 @@ fn lesson_09_sign_circle_faces_the_camera_and_its_labels_keep_clear() {
                     let (right, up) = scene.circle_axes();
                     let px = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
                     let c = SIGN_CIRCLE_CENTER;
-                    let wide = px(c + right * SIGN_CIRCLE_RADIUS).distance(px(c - right * SIGN_CIRCLE_RADIUS));
-                    let tall = px(c + up * SIGN_CIRCLE_RADIUS).distance(px(c - up * SIGN_CIRCLE_RADIUS));
+                    let wide = px(c + right * SIGN_CIRCLE_RADIUS)
+                        .distance(px(c - right * SIGN_CIRCLE_RADIUS));
+                    let tall =
+                        px(c + up * SIGN_CIRCLE_RADIUS).distance(px(c - up * SIGN_CIRCLE_RADIUS));
                     failures.extend(failure_of(|| {
                         assert_eq!(frame.labels.len(), 6);
                         assert!(
