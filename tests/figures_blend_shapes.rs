@@ -783,6 +783,17 @@ fn the_target_heads_stand_apart_from_any_orbit() {
         let mut frame = Frame::default();
         f.draw(&mut frame, &HEADS).unwrap();
         assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+        // Told the fitted camera, the figure draws the same frame again and again (a paused
+        // page draws nothing new): the rows follow the camera's yaw and pitch, not its target.
+        let mut prints = Vec::new();
+        for _ in 0..3 {
+            f.set_view(camera);
+            let mut again = Frame::default();
+            f.draw(&mut again, &HEADS).unwrap();
+            assert!(camera.fit(&again.fit_points(), size, FIT_PAD_PX));
+            prints.push(again.fingerprint());
+        }
+        assert!(prints.windows(2).all(|p| p[0] == p[1]), "{prints:?}");
         let view_proj = camera.projection(size.x / size.y) * camera.view();
         let boxes: Vec<(glam::Vec2, glam::Vec2)> = (0..5)
             .map(|i| {

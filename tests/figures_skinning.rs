@@ -950,3 +950,19 @@ fn the_human_skins_again_only_when_the_time_or_a_setting_changed() {
     assert!(h.set_method("neither").is_err());
     assert!(!h.skin(0.6).unwrap());
 }
+
+#[test]
+fn screen_axes_are_the_cameras_right_and_up_whatever_its_target() {
+    use inbetween::camera::OrbitCamera;
+    use inbetween::figures::skinning::screen_axes;
+    for [yaw, pitch] in [[0.0, 0.0], [0.3, 0.1], [-1.04, 0.44], [2.5, -1.2]] {
+        let camera = OrbitCamera::from_view([0.4, 1.0, -2.0, 5.5, yaw, pitch]);
+        let view = camera.view();
+        let (right, up) = screen_axes(&camera);
+        assert!(right.abs_diff_eq(view.row(0).truncate(), 1e-5), "{right}");
+        assert!(up.abs_diff_eq(view.row(1).truncate(), 1e-5), "{up}");
+        // The same from any target and distance: only the turn counts.
+        let moved = OrbitCamera::from_view([-3.0, 0.2, 7.0, 0.9, yaw, pitch]);
+        assert_eq!(screen_axes(&moved), (right, up));
+    }
+}

@@ -669,8 +669,7 @@ impl TargetsFigure {
     /// view, so an orbit turns each head in its place instead of lining them up behind each
     /// other.
     pub fn set_view(&mut self, camera: crate::camera::OrbitCamera) {
-        let v = camera.view();
-        self.axes = (v.row(0).truncate(), v.row(1).truncate());
+        self.axes = super::skinning::screen_axes(&camera);
     }
 
     pub fn indices(&self) -> &[u32] {

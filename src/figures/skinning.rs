@@ -52,6 +52,16 @@ pub fn view_of(view: Option<(OrbitCamera, Vec2)>) -> Option<(Mat4, Vec2)> {
     view.map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size))
 }
 
+/// The camera's right and up in world space, from its yaw and pitch alone: for a diagram that
+/// faces the camera. Not its view matrix's rows, which move in their last bits as the fit moves
+/// the target, so that a figure following them would change every frame and never rest.
+/// Lessons 09 and 10 share it.
+pub fn screen_axes(camera: &OrbitCamera) -> (Vec3, Vec3) {
+    let (sy, cy) = camera.yaw_rad.sin_cos();
+    let (sp, cp) = camera.pitch_rad.sin_cos();
+    (Vec3::new(cy, 0.0, -sy), Vec3::new(-sy * sp, cp, -cy * sp))
+}
+
 /// Heat-map colour of a weight in `[0, 1]`: blue (0) through pale yellow (½) to red (1).
 pub fn heat(w: f32) -> Vec4 {
     let w = w.clamp(0.0, 1.0);
@@ -1725,10 +1735,8 @@ impl SignFigure {
     /// of the 4D sphere, not an object in the scene: it faces the camera, so no orbit sees it
     /// edge-on.
     pub fn circle_axes(&self) -> (Vec3, Vec3) {
-        self.view.map_or((Vec3::X, Vec3::Y), |(camera, _)| {
-            let v = camera.view();
-            (v.row(0).truncate(), v.row(1).truncate())
-        })
+        self.view
+            .map_or((Vec3::X, Vec3::Y), |(camera, _)| screen_axes(&camera))
     }
 
     /// Fills the draw list (`mesh`: the tube's GPU id) and returns the note.
