@@ -529,8 +529,9 @@ impl Frame {
         self.arrow_with(from, to, color, head, false);
     }
 
-    /// A [`Frame::arrow`] whose shaft is drawn over everything: an offset that starts inside a
-    /// surface (a vertex's move under the skin it moved) still shows its whole length.
+    /// A [`Frame::arrow`] whose shaft, and three strokes from its tip along its cone, are drawn
+    /// over everything: an offset that starts inside a surface (a vertex's move under the skin
+    /// it moved) still shows its whole length and its direction.
     #[inline(never)]
     pub fn arrow_on_top(&mut self, from: Vec3, to: Vec3, color: Vec3, head: f32) {
         self.arrow_with(from, to, color, head, true);
@@ -550,6 +551,15 @@ impl Frame {
             ..StrokeStyle::solid(ARROW_PX)
         };
         self.stroke(&[from, base], color, style);
+        if on_top {
+            // Three, a third of a turn apart, so at least two open a V from any side.
+            let (a, b) = dir.any_orthonormal_pair();
+            for k in 0..3 {
+                let (sin, cos) = (k as f32 * std::f32::consts::TAU / 3.0).sin_cos();
+                let rim = base + 0.35 * head * (a * cos + b * sin);
+                self.stroke(&[rim, to], color, style);
+            }
+        }
         let model = Mat4::from_scale_rotation_translation(
             Vec3::new(head * 0.35, head, head * 0.35),
             Quat::from_rotation_arc(Vec3::Y, dir),
@@ -1503,6 +1513,16 @@ mod tests {
         f.clear();
         f.arrow(Vec3::ONE, Vec3::ONE, palette::BLUE, 0.3);
         assert!(f.strokes.is_empty() && f.meshes.is_empty());
+        // On top: the shaft and three head strokes from the cone's rim to the tip, all over
+        // everything (a cone inside a surface is hidden, and the arrow would read as a line).
+        f.arrow_on_top(Vec3::ZERO, Vec3::new(0.0, 0.0, 2.0), palette::BLUE, 0.3);
+        assert_eq!(f.strokes.len(), 4);
+        assert!(f.strokes.iter().all(|s| s.depth_bias == ON_TOP));
+        for s in &f.strokes[1..] {
+            let (rim, tip) = (Vec3::from(s.a), Vec3::from(s.b));
+            assert!(tip.distance(Vec3::new(0.0, 0.0, 2.0)) < 1e-5, "{tip}");
+            assert!((rim.z - 1.7).abs() < 1e-5 && (rim.truncate().length() - 0.105).abs() < 1e-5);
+        }
     }
 
     #[test]

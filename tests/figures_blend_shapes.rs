@@ -612,7 +612,7 @@ fn the_targets_figure_shows_the_base_and_each_target_as_sculpted() {
         .collect();
     assert_eq!(h.iter().map(|x| x.0).collect::<Vec<_>>(), HEADS.to_vec());
     for (i, (_, at)) in h.iter().enumerate() {
-        assert!(at.distance(TargetsFigure::head_position(i)) < 1e-6);
+        assert!(at.distance(f.head_position(i)) < 1e-6);
     }
     // At weight 1 the base head is b₀ and head k is target k, vertex for vertex.
     for (a, b) in f.heads[0].positions.iter().zip(&face.mesh.positions) {
@@ -640,7 +640,7 @@ fn the_targets_figure_shows_the_base_and_each_target_as_sculpted() {
     );
     // Every head stays in the declared view.
     for i in 0..5 {
-        let c = TargetsFigure::head_position(i);
+        let c = f.head_position(i);
         let (lo, hi) = frame.keep_in_view.iter().fold(
             (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
             |(lo, hi), p| (lo.min(*p), hi.max(*p)),
@@ -760,6 +760,63 @@ fn the_target_heads_never_touch() {
     for head in &f.heads {
         let half_width = head.positions.iter().map(|p| p.x.abs()).fold(0.0, f32::max);
         assert!(2.0 * half_width < TARGETS_SPACING, "{half_width}");
+    }
+}
+
+/// From any orbit (the page's, the page test's drag, from the side and from above) the five
+/// heads stand apart on the canvas, at the largest weight: their rows run across the last
+/// frame's view, so no head hides behind another.
+#[test]
+fn the_target_heads_stand_apart_from_any_orbit() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let size = glam::Vec2::new(650.0, 420.0);
+    for [yaw, pitch] in [
+        [0.2, 0.05],
+        [0.2 - 1.04, 0.05 + 0.336],
+        [1.6, 0.0],
+        [0.0, 1.4],
+    ] {
+        let mut f = TargetsFigure::new();
+        f.set_weight(1.5).unwrap();
+        let mut camera = OrbitCamera::from_view([0.0, 0.0, 0.0, 9.0, yaw, pitch]);
+        f.set_view(camera);
+        let mut frame = Frame::default();
+        f.draw(&mut frame, &HEADS).unwrap();
+        assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+        // Told the fitted camera, the figure draws the same frame again and again (a paused
+        // page draws nothing new): the rows follow the camera's yaw and pitch, not its target.
+        let mut prints = Vec::new();
+        for _ in 0..3 {
+            f.set_view(camera);
+            let mut again = Frame::default();
+            f.draw(&mut again, &HEADS).unwrap();
+            assert!(camera.fit(&again.fit_points(), size, FIT_PAD_PX));
+            prints.push(again.fingerprint());
+        }
+        assert!(prints.windows(2).all(|p| p[0] == p[1]), "{prints:?}");
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let boxes: Vec<(glam::Vec2, glam::Vec2)> = (0..5)
+            .map(|i| {
+                let at = f.head_position(i);
+                f.heads[i]
+                    .positions
+                    .iter()
+                    .map(|p| project_to_canvas(view_proj, size, *p + at).unwrap())
+                    .fold((size, glam::Vec2::ZERO), |(lo, hi), p| {
+                        (lo.min(p), hi.max(p))
+                    })
+            })
+            .collect();
+        for (i, a) in boxes.iter().enumerate() {
+            assert!(a.0.cmpge(glam::Vec2::ZERO).all() && a.1.cmple(size).all());
+            for (j, b) in boxes.iter().enumerate().skip(i + 1) {
+                let apart = a.1.x < b.0.x || b.1.x < a.0.x || a.1.y < b.0.y || b.1.y < a.0.y;
+                assert!(
+                    apart,
+                    "yaw {yaw}, pitch {pitch}: heads {i} {a:?} and {j} {b:?} overlap"
+                );
+            }
+        }
     }
 }
 

@@ -1007,6 +1007,9 @@ fn on_a_spring_explicit_euler_gains_energy_and_semi_implicit_euler_does_not() {
     let last = &s[s.len() - 4..];
     assert!((last[0] - 10.0).abs() < 1e-3, "{last:?}");
     assert!((6.8..7.6).contains(&last[1]), "explicit Euler {}", last[1]);
+    // The caption: it leaves the plot (4 × its energy, the plot's top) after about 7 s.
+    let past_top = s.chunks_exact(4).find(|r| r[1] > 4.0).unwrap()[0];
+    assert!((6.8..7.3).contains(&past_top), "{past_top}");
     // Semi-implicit Euler stays within 7 % of the start at every step (the page: "within a
     // few per cent"), velocity Verlet within 0.1 %.
     for row in s.chunks_exact(4) {

@@ -39,7 +39,14 @@ if (viewer) {
     colors: ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#1f2430', '#e68a00'], minSpan: 1, height: 200,
     widths: [7, 5.5, 4, 2.5, 3.5, 1.5], dashes: [null, null, null, null, null, [6, 4]],
   });
-  const updatePlot = () => plot.setData(columns(scene.weightCurves(81), 7));
+  // The weights read against 0: the y axis always spans 0 (the four at 1.5 with the total at 7
+  // would otherwise sit on the axis's floor and read as 0).
+  const updatePlot = () => {
+    const data = columns(scene.weightCurves(81), 7);
+    const ys = data.slice(1).flat();
+    plot.setYRange([Math.min(0, ...ys), Math.max(1, ...ys)]);
+    plot.setData(data);
+  };
   const p = { show: 'both', baseAuto: false, base: 0, animate: true, deltas: true, useExercise: false };
   const start = scene.weights();
   // The weights come as 32-bit floats: shown at the sliders' 0.01 steps.

@@ -120,11 +120,12 @@ if (springViewer) {
   const p = { dt: 0.02 };
   const gui = new GUI({ container: document.querySelector('#fig-spring .panel'), title: 'Spring' });
   gui.add(p, 'dt', 0.005, 0.2, 0.005).name('step size Δt (s)');
-  // Semi-implicit Euler wide under Verlet's narrow line: the two nearly coincide.
+  // Semi-implicit Euler wide under Verlet's narrower line: the two nearly coincide. Tall, so that
+  // semi-implicit Euler's swings show on the 0 to 4 scale that explicit Euler's growth needs.
   const plot = new Plot(document.getElementById('spring-plot'), {
     title: 'Energy over its starting value', xLabel: 'time (s)', yLabel: 'E / E₀ (no unit)',
     series: ['explicit Euler', 'semi-implicit Euler', 'velocity Verlet'],
-    colors: [cssVar('--x-axis'), cssVar('--z-axis'), cssVar('--y-axis')], widths: [2, 6, 2], yRange: [0, 4],
+    colors: [cssVar('--x-axis'), cssVar('--z-axis'), cssVar('--y-axis')], widths: [2, 6, 3], yRange: [0, 4], height: 240,
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {

@@ -399,7 +399,7 @@ impl FaceFigure {
                     let lift = ARROW_LIFT * normals[v];
                     let from = head.transform_point3(base[v] + lift);
                     let to = head.transform_point3(self.differential.positions[v] + lift);
-                    frame.arrow_on_top(from, to, palette::BLUE, 0.05);
+                    frame.arrow_on_top(from, to, palette::BLUE, ARROW_HEAD_M);
                 }
             }
             if both {
@@ -540,6 +540,9 @@ pub const PROBES: [(&str, &[f32]); 6] = [
 const DELTA_STRIDE: usize = 4;
 /// How far the delta arrows float above the base surface, metres.
 const ARROW_LIFT: f32 = 0.03;
+/// The length of a delta arrow's head, metres (at most 0.4 of the arrow): most arrows are
+/// 5 to 25 cm long on heads 2 m tall, and a shorter head does not show their direction.
+const ARROW_HEAD_M: f32 = 0.08;
 /// A target moves a vertex at least this far (metres) for it to carry an arrow.
 const DELTA_MIN: f32 = 0.02;
 
@@ -612,6 +615,9 @@ pub struct TargetsFigure {
     arrows: Vec<Vec<usize>>,
     /// The weight the target heads were last blended at.
     blended: Option<f32>,
+    /// The directions the rows of heads run along and stack up: the last frame's camera's
+    /// right and up ([`TargetsFigure::set_view`]).
+    axes: (Vec3, Vec3),
 }
 
 impl Default for TargetsFigure {
@@ -653,9 +659,17 @@ impl TargetsFigure {
             heads,
             arrows,
             blended: None,
+            axes: (Vec3::X, Vec3::Y),
         };
         f.blend();
         f
+    }
+
+    /// The camera the frame is drawn for (the last frame's): the heads stand in rows across its
+    /// view, so an orbit turns each head in its place instead of lining them up behind each
+    /// other.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera) {
+        self.axes = super::skinning::screen_axes(&camera);
     }
 
     pub fn indices(&self) -> &[u32] {
@@ -684,13 +698,19 @@ impl TargetsFigure {
 
     /// Where head `i` stands (0: the base, k: target k), its centre: the base, the smile and
     /// the open jaw in the top row, the brows and the cheeks centred below them (two rows fill a
-    /// canvas's width better than one row of five).
-    pub fn head_position(i: usize) -> Vec3 {
-        if i < 3 {
-            Vec3::new((i as f32 - 1.0) * TARGETS_SPACING, TARGETS_ROW, 0.0)
+    /// canvas's width better than one row of five), the rows across the camera's view.
+    pub fn head_position(&self, i: usize) -> Vec3 {
+        let (x, y) = if i < 3 {
+            ((i as f32 - 1.0) * TARGETS_SPACING, TARGETS_ROW)
         } else {
-            Vec3::new((i as f32 - 3.5) * TARGETS_SPACING, -TARGETS_ROW, 0.0)
-        }
+            ((i as f32 - 3.5) * TARGETS_SPACING, -TARGETS_ROW)
+        };
+        self.on_view_plane(x, y)
+    }
+
+    /// The point `x` along the camera's right and `y` along its up from the origin.
+    fn on_view_plane(&self, x: f32, y: f32) -> Vec3 {
+        self.axes.0 * x + self.axes.1 * y
     }
 
     /// Rewrites the target heads at the current weight (the base head once); nothing when the
@@ -747,7 +767,7 @@ impl TargetsFigure {
         let base = &self.face.mesh.positions;
         let normals = &self.face.mesh.normals;
         for (i, &mesh) in meshes.iter().enumerate() {
-            let at = Self::head_position(i);
+            let at = self.head_position(i);
             let model = Mat4::from_translation(at);
             frame.mesh_vertex_colors(mesh, model);
             for x in [-0.27f32, 0.27] {
@@ -761,22 +781,25 @@ impl TargetsFigure {
             } else {
                 format!("b{} {}", subscript(i), self.face.names[i - 1])
             };
-            frame.label(at + Vec3::new(-0.55, -1.25, 0.0), name, palette::DARK);
+            frame.label(at - self.on_view_plane(0.55, 1.25), name, palette::DARK);
             if i > 0 && self.show_deltas {
                 for &v in &self.arrows[i - 1] {
                     let lift = ARROW_LIFT * normals[v];
                     let from = model.transform_point3(base[v] + lift);
                     let to = model.transform_point3(self.heads[i].positions[v] + lift);
-                    frame.arrow_on_top(from, to, palette::BLUE, 0.05);
+                    frame.arrow_on_top(from, to, palette::BLUE, ARROW_HEAD_M);
                 }
             }
         }
         // Every head with its label, the rows' outer heads at their widest.
-        let r = HEAD_RADIUS;
-        frame.keep_box_in_view(
-            Vec3::new(-TARGETS_SPACING - r, -TARGETS_ROW - 1.45, 0.0),
-            Vec3::new(TARGETS_SPACING + r, TARGETS_ROW + 1.1, 0.0),
+        let (x, bottom, top) = (
+            TARGETS_SPACING + HEAD_RADIUS,
+            -TARGETS_ROW - 1.45,
+            TARGETS_ROW + 1.1,
         );
+        for (x, y) in [(-x, bottom), (x, bottom), (-x, top), (x, top)] {
+            frame.keep_in_view.push(self.on_view_plane(x, y));
+        }
         let parts: Vec<String> = (0..self.face.targets.len())
             .map(|k| {
                 let (moved, largest) = self.target_reach(k);

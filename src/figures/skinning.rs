@@ -52,6 +52,16 @@ pub fn view_of(view: Option<(OrbitCamera, Vec2)>) -> Option<(Mat4, Vec2)> {
     view.map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size))
 }
 
+/// The camera's right and up in world space, from its yaw and pitch alone: for a diagram that
+/// faces the camera. Not its view matrix's rows, which move in their last bits as the fit moves
+/// the target, so that a figure following them would change every frame and never rest.
+/// Lessons 09 and 10 share it.
+pub fn screen_axes(camera: &OrbitCamera) -> (Vec3, Vec3) {
+    let (sy, cy) = camera.yaw_rad.sin_cos();
+    let (sp, cp) = camera.pitch_rad.sin_cos();
+    (Vec3::new(cy, 0.0, -sy), Vec3::new(-sy * sp, cp, -cy * sp))
+}
+
 /// Heat-map colour of a weight in `[0, 1]`: blue (0) through pale yellow (½) to red (1).
 pub fn heat(w: f32) -> Vec4 {
     let w = w.clamp(0.0, 1.0);
@@ -368,6 +378,7 @@ impl CylinderFigure {
                 }
             }
         }
+        let lbs_not_done = matches!(failure, Some(run::Failure::NotDone));
         match failure {
             Some(f) => notes.push(failure_note("exercise 9.1 lbs_vertex", EXERCISE_FILE, &f)),
             None => {
@@ -409,6 +420,14 @@ impl CylinderFigure {
             }
         }
         match failure {
+            // Neither done: one sentence for both.
+            Some(f @ run::Failure::NotDone) if lbs_not_done => {
+                notes[0] = failure_note(
+                    "exercises 9.1 lbs_vertex and 9.2 blend_dual_quats",
+                    EXERCISE_FILE,
+                    &f,
+                );
+            }
             Some(f) => notes.push(failure_note(
                 "exercise 9.2 blend_dual_quats",
                 EXERCISE_FILE,
@@ -1565,9 +1584,6 @@ fn vertices_note(what: &str, at: &str, student: &[Vec3], reference: &[Vec3]) -> 
 /// Where the sign figure draws the quaternion circle: its centre and radius (metres).
 pub const SIGN_CIRCLE_CENTER: Vec3 = Vec3::new(2.3, 0.9, 0.0);
 pub const SIGN_CIRCLE_RADIUS: f32 = 0.75;
-/// Lesson 09 Figure 3: the height (metres) between two labels stacked beside the circle, a
-/// label's height and a gap at the page's scale (about 90 CSS px a metre).
-pub const SIGN_LABEL_STEP_M: f32 = 0.24;
 
 /// The antipodality fix on its own: the cylinder twisted at the elbow by 0 to 360° and skinned
 /// by DQS with or without the sign flip, beside the circle on which the shoulder's and the
@@ -1590,6 +1606,9 @@ pub struct SignFigure {
     dual_quats: Vec<DualQuat>,
     pub mesh: SkinnedMesh,
     stale: bool,
+    /// The last frame's camera and canvas size (CSS pixels): the circle faces that camera and
+    /// its labels are placed for it ([`SignFigure::set_view`]).
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for SignFigure {
@@ -1617,7 +1636,16 @@ impl SignFigure {
             dual_quats: vec![DualQuat::IDENTITY; j],
             mesh,
             stale: true,
+            view: None,
             rig,
+        }
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the circle turns to face and its labels are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
         }
     }
 
@@ -1702,19 +1730,13 @@ impl SignFigure {
         }
     }
 
-    /// The point at angle `a` (radians) on the drawn circle: `1` to the right, `i` up.
-    fn on_circle(a: f32) -> Vec3 {
-        SIGN_CIRCLE_CENTER + SIGN_CIRCLE_RADIUS * Vec3::new(a.cos(), a.sin(), 0.0)
-    }
-
-    /// Where the label of the point at angle `a` on the circle goes: outside the circle along
-    /// the radius, further out near the top and bottom where the label's box (centred on its
-    /// anchor's height) would otherwise reach down or up to the point; and whether it reads
-    /// leftwards (on the circle's left side).
-    fn label_outside(a: f32) -> (Vec3, bool) {
-        let dir = Vec3::new(a.cos(), a.sin(), 0.0);
-        let out = 0.08 + 0.1 * a.sin().abs();
-        (Self::on_circle(a) + dir * out, a.cos() < -0.3)
+    /// The directions on screen of the circle's `1` and `i` axes, in world space: the last
+    /// frame's camera's right and up (x and y before the first frame). The circle is a diagram
+    /// of the 4D sphere, not an object in the scene: it faces the camera, so no orbit sees it
+    /// edge-on.
+    pub fn circle_axes(&self) -> (Vec3, Vec3) {
+        self.view
+            .map_or((Vec3::X, Vec3::Y), |(camera, _)| screen_axes(&camera))
     }
 
     /// Fills the draw list (`mesh`: the tube's GPU id) and returns the note.
@@ -1736,16 +1758,18 @@ impl SignFigure {
             frame.wide_polyline(&stripe, palette::DARK, 2.0);
         }
         // The circle through 1 and i, the two joints' quaternions on it, −r, and the blend.
+        let c = SIGN_CIRCLE_CENTER;
+        let rr = SIGN_CIRCLE_RADIUS;
+        let (right, up) = self.circle_axes();
+        let on_circle = |a: f32| c + rr * (right * a.cos() + up * a.sin());
         let circle: Vec<Vec3> = (0..=96)
-            .map(|k| Self::on_circle(std::f32::consts::TAU * k as f32 / 96.0))
+            .map(|k| on_circle(std::f32::consts::TAU * k as f32 / 96.0))
             .collect();
         frame.wide_polyline(&circle, palette::GREY, 2.0);
         // The w and x axes end at the circle, so the labels of the points on it read outwards
-        // into empty space; the axes' own labels sit inside the circle, beside them.
-        let c = SIGN_CIRCLE_CENTER;
-        let rr = SIGN_CIRCLE_RADIUS;
-        frame.wide_line(c - Vec3::X * rr, c + Vec3::X * rr, palette::GRID_AXIS, 1.5);
-        frame.wide_line(c - Vec3::Y * rr, c + Vec3::Y * rr, palette::GRID_AXIS, 1.5);
+        // into empty space; the axes' own labels sit inside the circle, beside them (below).
+        frame.wide_line(c - right * rr, c + right * rr, palette::GRID_AXIS, 1.5);
+        frame.wide_line(c - up * rr, c + up * rr, palette::GRID_AXIS, 1.5);
         let half = 0.5 * self.twist_rad;
         let r = self.elbow_rotation();
         let far = r.w < 0.0;
@@ -1754,58 +1778,46 @@ impl SignFigure {
         } else {
             0.5 * half
         };
-        let one = Self::on_circle(0.0);
-        let elbow = Self::on_circle(half);
-        let flipped = Self::on_circle(half + std::f32::consts::PI);
-        let blend = Self::on_circle(blend_angle);
-        frame.marker(one, 12.0, palette::DARK);
-        frame.marker(elbow, 12.0, palette::ORANGE);
-        frame.marker(flipped, 9.0, palette::GREY);
-        // The blend's arc from 1, and the blend itself.
+        // The blend's arc from 1, under the points.
         let arc: Vec<Vec3> = (0..=24)
-            .map(|k| Self::on_circle(blend_angle * k as f32 / 24.0))
+            .map(|k| on_circle(blend_angle * k as f32 / 24.0))
             .collect();
         frame.wide_polyline(&arc, palette::TEAL, 5.0);
-        frame.marker(blend, 12.0, palette::TEAL);
-        // Each point's label outside the circle along its radius, so points at different
-        // angles have labels apart. Where points meet (1, r and the blend near 0°; 1, −r and
-        // the blend near 360° with the fix) their labels are stacked down the circle's side,
-        // most important first, each joined to its point by a thin line.
         let points = [
-            (0.0, "1 (shoulder)", palette::DARK),
-            (half, "r (elbow)", palette::ORANGE),
-            (blend_angle, "blend at ½, ½", palette::TEAL),
-            (half + std::f32::consts::PI, "−r", palette::GREY),
+            (0.0, "1 (shoulder)", palette::DARK, 12.0),
+            (half, "r (elbow)", palette::ORANGE, 12.0),
+            (blend_angle, "blend at ½, ½", palette::TEAL, 12.0),
+            (half + std::f32::consts::PI, "−r", palette::GREY, 9.0),
         ];
-        let mut placed: Vec<(Vec3, bool)> = Vec::with_capacity(points.len());
-        for &(angle, text, color) in &points {
-            let (mut anchor, left) = Self::label_outside(angle);
-            // Down past every label already on this side at about the same height.
-            while let Some(&(above, _)) = placed.iter().find(|&&(p, l)| {
-                l == left && (p.y - anchor.y).abs() < SIGN_LABEL_STEP_M - 1e-4
-            }) {
-                anchor = Vec3::new(anchor.x, above.y - SIGN_LABEL_STEP_M, anchor.z);
-            }
-            placed.push((anchor, left));
-            let at = Self::on_circle(angle);
-            let (natural, _) = Self::label_outside(angle);
-            if anchor.distance(natural) > 1e-4 {
-                frame.wide_line(at, anchor, color, 1.0);
-            }
-            frame.labels.push(crate::draw::Label {
-                anchor,
-                text: text.into(),
-                color,
-                left,
-                priority: 0,
-                offset_px: glam::Vec2::ZERO,
-                large: false,
-            });
+        for &(angle, _, color, size) in points.iter().rev() {
+            frame.marker(on_circle(angle), size, color);
         }
-        frame.label(c + Vec3::new(0.45 * rr, -0.14, 0.0), "w", palette::GREY);
-        frame.label(c + Vec3::new(0.05, 0.4 * rr, 0.0), "x (i)", palette::GREY);
-        // Room on the right for the labels that read outwards from the circle's right side.
-        frame.keep_box_in_view(Vec3::new(-1.7, 0.2, -0.4), Vec3::new(4.2, 1.8, 0.4));
+        // Each point's label outside the circle along its radius, at the first place round its
+        // dot (on the last frame's view) that covers no dot, line or label placed before it:
+        // where points meet (1, r and the blend near 0°; 1, −r and the blend near 360° with the
+        // fix) the later ones step out of the way, most important first.
+        let view = view_of(self.view);
+        for &(angle, text, color, size) in &points {
+            let toward = Vec2::new(angle.cos(), -angle.sin());
+            let candidates =
+                Label::around_dot(on_circle(angle), size, toward, text, color, 0, 8, 8.0);
+            frame.first_clear_label_by(view, 2.0, candidates, |_| true);
+        }
+        for (at, toward, text) in [
+            (c + right * (0.5 * rr), Vec2::Y, "w"),
+            (c + up * (0.5 * rr), Vec2::X, "x (i)"),
+        ] {
+            let candidates = Label::around_dot(at, 0.0, toward, text, palette::GREY, 0, 3, 8.0);
+            frame.first_clear_label_by(view, 2.0, candidates, |_| true);
+        }
+        // The tube, and room round the circle for the labels that read outwards from its sides.
+        frame.keep_box_in_view(Vec3::new(-1.7, 0.5, -0.4), Vec3::new(0.5, 1.3, 0.4));
+        frame.keep_in_view.extend([
+            c - right * (rr + 1.15),
+            c + right * (rr + 1.15),
+            c - up * (rr + 0.15),
+            c + up * (rr + 0.15),
+        ]);
         let deg = self.twist_rad.to_degrees();
         let turn = self.elbow_ring_turn_deg();
         let mut note = format!(

@@ -218,6 +218,8 @@ impl BlendShapeTargetsScene {
                 self.meshes.push(id);
             }
         }
+        // The rows of heads run across the last frame's view.
+        self.scene.set_view(viewer.camera);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, &self.meshes)

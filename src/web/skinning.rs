@@ -212,6 +212,9 @@ impl SkinningSignScene {
 
     /// Skins (if a control changed), uploads and draws. Returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the circle faces and its labels are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         self.scene.update().map_err(js)?;
         if viewer.renewed(&mut self.gpu_seen) {
             self.mesh = None;

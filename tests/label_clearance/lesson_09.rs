@@ -178,34 +178,58 @@ fn lesson_09_cylinder_names_keep_off_the_tubes_and_each_other() {
 }
 
 #[test]
-fn lesson_09_sign_circle_labels_keep_off_the_points_and_each_other() {
-    // Over the whole twist slider, with the fix on and off: every label is shown where the
-    // figure put it (no leader line from the page's layout), clear of every dot and line. Near
-    // 0° and 360° three points meet at 1, so their labels are stacked by the figure.
+fn lesson_09_sign_circle_faces_the_camera_and_its_labels_keep_clear() {
+    // Over the whole twist slider, with the fix on and off, from the page's orbit and the page
+    // test's (a fifth of a 650 px canvas across, a tenth of its 420 px down, at 0.008 rad a
+    // pixel): the circle is seen face-on (as wide as tall on the canvas, never edge-on), and
+    // every label is shown, clear of every dot and line. As on the page, the circle and its
+    // labels follow the view of the frame before (set_view).
     use inbetween::draw::MeshId;
-    use inbetween::figures::skinning::SignFigure;
+    use inbetween::figures::skinning::{SignFigure, SIGN_CIRCLE_CENTER, SIGN_CIRCLE_RADIUS};
+    let orbits = [
+        [0.8, 1.0, 0.0, 5.5, 0.0, 0.1],
+        [0.8, 1.0, 0.0, 5.5, -0.008 * 130.0, 0.1 + 0.008 * 42.0],
+    ];
+    let mut failures = Vec::new();
     for fix in [true, false] {
         for deg in (0..=360).step_by(5) {
-            let mut scene = SignFigure::new();
-            scene.set_fix(fix);
-            scene.set_twist_deg(deg as f32).unwrap();
-            let mut frame = Frame::default();
-            scene.draw(&mut frame, MeshId(1)).unwrap();
-            assert_eq!(frame.labels.len(), 6);
-            let name = format!("09 sign at {deg}°, fix {fix}");
             for size in CANVASES {
-                // The page's camera (lessons/09-skinning/lesson.js).
-                let camera = page_camera([0.8, 1.0, 0.0, 5.5, 0.0, 0.1], &frame, size);
-                for (l, _, p) in layout(&frame, &camera, size) {
-                    assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
-                    assert!(
-                        p.leader_to.is_none(),
-                        "{name} on {size}: {:?} moved off its place",
-                        l.text
+                for orbit in orbits {
+                    let mut scene = SignFigure::new();
+                    scene.set_fix(fix);
+                    scene.set_twist_deg(deg as f32).unwrap();
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        orbit,
+                        size,
+                        |fig, out| {
+                            fig.draw(out, MeshId(1)).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
                     );
+                    let name = format!("09 sign at {deg}°, fix {fix}, orbit {orbit:?}");
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let (right, up) = scene.circle_axes();
+                    let px = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+                    let c = SIGN_CIRCLE_CENTER;
+                    let wide = px(c + right * SIGN_CIRCLE_RADIUS)
+                        .distance(px(c - right * SIGN_CIRCLE_RADIUS));
+                    let tall =
+                        px(c + up * SIGN_CIRCLE_RADIUS).distance(px(c - up * SIGN_CIRCLE_RADIUS));
+                    failures.extend(failure_of(|| {
+                        assert_eq!(frame.labels.len(), 6);
+                        assert!(
+                            (wide / tall - 1.0).abs() < 0.1 && tall > 80.0,
+                            "{name} on {size}: the circle {wide} px wide, {tall} px tall"
+                        );
+                        for (l, _, p) in layout(&frame, &camera, size) {
+                            assert!(p.shown, "{name} on {size}: {:?} hidden", l.text);
+                        }
+                        assert_clear(&name, &frame, &camera, size);
+                    }));
                 }
-                assert_clear(&name, &frame, &camera, size);
             }
         }
     }
+    assert_none_failed(&failures);
 }
