@@ -663,7 +663,9 @@ impl Noise2d {
         let value = self.probe_value();
         let at = self.world(self.probe, value);
         frame.point(at, PROBE_RADIUS, palette::PINK);
-        frame.wide_line(self.world(self.probe, 0.0), at, palette::PINK, GUIDE_PX);
+        // Through the surface, as the black sticks: it runs from height 0 to the surface, inside
+        // the hill or the hollow round the probe, which hides half of it from most views.
+        frame.wide_line_on_top(self.world(self.probe, 0.0), at, palette::PINK, GUIDE_PX);
         // The value above the probe's dot; where the cell's square, the sticks or the arrows
         // run there (on the last frame's view), the first place round the dot clear of them,
         // above it first.
@@ -2266,16 +2268,14 @@ impl Fractals {
             // survives the step it shows grey, so the coloured lines left are what the step adds.
             self.draw_depth(frame, d - 1, palette::GREY, palette::GREY, 0.01);
         }
-        frame.label(
-            Vec3::new(KOCH_CENTRE.x, LABEL_Y, 0.0),
-            "Koch snowflake",
-            palette::BLUE,
-        );
-        frame.label(
-            Vec3::new(SIERPINSKI[2].x, LABEL_Y, 0.0),
-            "Sierpinski triangle",
-            palette::ORANGE,
-        );
+        // Each name centred under its shape (a side of zero centres the box on the anchor).
+        for (x, name, color) in [
+            (KOCH_CENTRE.x, "Koch snowflake", palette::BLUE),
+            (SIERPINSKI[2].x, "Sierpinski triangle", palette::ORANGE),
+        ] {
+            let at = Vec3::new(x, LABEL_Y, 0.0);
+            frame.label_off_dot(at, 0.0, Vec2::ZERO, name, color, 0);
+        }
         let segments = 3 * 4usize.pow(d);
         // What the grey depth before leaves coloured: the two sides of each new bump, and the
         // outline of the middle triangle cut out of each old triangle.
