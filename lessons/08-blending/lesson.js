@@ -112,12 +112,13 @@ if (locoViewer) {
   // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.
   const timeline = new Timeline(document.getElementById('loco-timeline'), { duration: scene.loopSec(), playing: true });
   // Both settings, as in the view: the synchronised line is drawn wide underneath and the other
-  // narrow on top, so where they agree both stay visible.
+  // narrower on top, so where they agree both stay visible; the narrower one still 2.5 px, as
+  // wide as the figure's curves, so it reads as a line of its own beside the wide one.
   const series = ['synchronised', 'same clock time'];
   const colors = ['#1f6fd6', '#d62728'];
   // Fixed y ranges (from Rust): the same scale at every speed, so a small slide looks small.
   const ranges = scene.plotRanges();
-  const widths = [5, 1.5];
+  const widths = [6, 2.5];
   const gapPlot = new Plot(document.getElementById('loco-phase-plot'), {
     title: 'How far out of step', xLabel: 'time (s)', yLabel: 'phase gap (cycles)',
     series, colors, widths, height: 240, yRange: [ranges[0], ranges[1]],
