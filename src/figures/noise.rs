@@ -173,6 +173,9 @@ pub struct Noise1d {
     use_exercise: bool,
     runner: Runner,
     first_panic: FirstPanic,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the probe's name
+    /// takes the first place round its dot there that covers no line, dot or name.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 /// Screen mapping of Figure 1: x ∈ [0, 8] to [−4, 4], values ×4.
@@ -201,6 +204,14 @@ impl Noise1d {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             first_panic: FirstPanic::default(),
+            view: None,
+        }
+    }
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the probe's name is placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
         }
     }
     pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
@@ -329,12 +340,14 @@ impl Noise1d {
             };
             let x = i as f32;
             frame.marker(Self::to_world(x, 0.0), 9.0, palette::KEY);
-            frame.wide_line(
+            // In three pieces, so that a label placed clear of the frame's strokes (sampled
+            // along each piece) is clear of all of it: a steep tick is long on screen.
+            let (from, to) = (
                 Self::to_world(x - TICK_HALF, -TICK_HALF * g),
                 Self::to_world(x + TICK_HALF, TICK_HALF * g),
-                color,
-                GUIDE_PX,
             );
+            let tick: [Vec3; 4] = std::array::from_fn(|k| from.lerp(to, k as f32 / 3.0));
+            frame.wide_polyline(&tick, color, GUIDE_PX);
         }
         let x0 = cell as f32;
         if self.show_ramps {
@@ -391,12 +404,17 @@ impl Noise1d {
                 GUIDE_PX,
             );
         }
-        frame.marker_on_top(Self::to_world(self.probe_x, n), 14.0, palette::PINK);
-        frame.label(
-            Self::to_world(self.probe_x, n) + Vec3::Y * 0.45,
-            "n(x)",
-            palette::PINK,
-        );
+        let at = Self::to_world(self.probe_x, n);
+        frame.marker_on_top(at, 14.0, palette::PINK);
+        // The probe's name at the first place round its dot, above first, on the last frame's
+        // view, 2 px clear of the curve, the ramps, the ticks, the dots and the names: the
+        // curve climbs steeply through the dot, and after an orbit it runs close beside it.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let candidates =
+            crate::draw::Label::around_dot(at, 14.0, -Vec2::Y, "n(x)", palette::PINK, 0, 10, 8.0);
+        frame.first_clear_label_by(view, 2.0, candidates, |_| true);
         let mut text = format!(
             "x = {}: cell [{}, {}], t = {}, fade(t) = {}; ramps g₀t = {}, g₁(t − 1) = {}; \
              n(x) = lerp(fade(t), g₀t, g₁(t − 1)) = {}.",
