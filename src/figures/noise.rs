@@ -1688,6 +1688,9 @@ pub struct Variants {
     terrains: Vec<Terrain>,
     stale: bool,
     dirty: bool,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the names take
+    /// the first places round their corners there that cover no terrain.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 impl Variants {
@@ -1702,9 +1705,18 @@ impl Variants {
                 .collect(),
             stale: false,
             dirty: true,
+            view: None,
         };
         f.regenerate();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the names are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// Sets N (whole, 0 to [`OCTAVES_MAX_N`]), α in [0, 1] and h in [0, 2], checked by name;
@@ -1768,13 +1780,37 @@ impl Variants {
             self.regenerate();
         }
         for (i, &mesh) in meshes.iter().enumerate().take(self.terrains.len()) {
-            let at = Self::placement(i);
-            frame.mesh_vertex_colors(mesh, Mat4::from_translation(at));
-            frame.label(
-                at + Vec3::new(-0.9, 0.0, 1.15),
-                SIDE_BY_SIDE_VARIANTS[i].1,
+            frame.mesh_vertex_colors(mesh, Mat4::from_translation(Self::placement(i)));
+        }
+        // Each name at the first place round the middle of its terrain's outer edge (the back
+        // row's far edge, above first; the front row's near edge, below first), on the last
+        // frame's view, that covers no terrain (every 4th vertex of each) nor a name placed
+        // before it: a name at a corner facing the middle lands on the terrain beside it.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let surfaces: Vec<Vec3> = (self.terrains.iter().enumerate())
+            .flat_map(|(i, t)| {
+                let r = t.resolution();
+                (0..r * r)
+                    .filter(move |k| (k % r) % 4 == 0 && (k / r) % 4 == 0)
+                    .map(move |k| t.positions[k] + Self::placement(i))
+            })
+            .collect();
+        for (i, &(_, name)) in SIDE_BY_SIDE_VARIANTS.iter().enumerate() {
+            let out = if i < 2 { -1.0 } else { 1.0 };
+            let edge = Self::placement(i) + Vec3::Z * 1.1 * out;
+            let candidates = crate::draw::Label::around_dot(
+                edge,
+                0.0,
+                Vec2::Y * out,
+                name,
                 palette::DARK,
+                0,
+                16,
+                8.0,
             );
+            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &surfaces));
         }
         let h_top = (0.6 * self.h).max(0.1);
         frame.keep_box_in_view(

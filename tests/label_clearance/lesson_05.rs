@@ -93,3 +93,60 @@ fn lesson_05_noise_1d_probe_name_keeps_off_the_curve() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_05_variant_names_keep_off_the_terrains() {
+    // Figure 6 at its page camera (lessons/05-noise/lesson.js) and orbited round it (the page
+    // sweep's drag turns it by −1.2 rad and tilts it by 0.3 rad), both canvases, at the
+    // course's parameters, the page test's (N 2, α 0.79, h 0.79) and the slider's tallest h: each
+    // variant's name is shown and covers no point of any terrain (every 4th vertex of each,
+    // sampled finer than the figure does). As on the page, the figure places them for the view
+    // of the frame before.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::noise::{TerrainFigure, Variants};
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [(0.0, 0.8), (-1.216, 1.104), (1.216, 1.104), (-0.6, 0.5)] {
+        let view = [0.0, -0.1, 0.1, 6.0, yaw, pitch];
+        for (n, alpha, h) in [(9.0, 0.4, 0.3), (2.0, 0.79, 0.79), (9.0, 0.6, 1.0)] {
+            for size in CANVASES {
+                let mut scene = Variants::new();
+                scene.set_params(n, alpha, h).unwrap();
+                let meshes = [MeshId(1), MeshId(2), MeshId(3), MeshId(4)];
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out, &meshes);
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("05 variants, orbit ({yaw}, {pitch}), N {n}, α {alpha}, h {h}");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let points: Vec<Vec2> = (scene.terrains().iter().enumerate())
+                    .flat_map(|(i, t)| {
+                        let r = t.resolution();
+                        (0..r * r)
+                            .filter(move |k| (k % r) % 4 == 0 && (k / r) % 4 == 0)
+                            .map(move |k| t.positions[k] + Variants::placement(i))
+                    })
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let boxes = label_boxes(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert_eq!(boxes.len(), 4, "{name} on {size}: four names shown");
+                    for (text, rect) in &boxes {
+                        for c in &points {
+                            assert!(
+                                !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                "{name} on {size}: {text:?} at {:?} covers a terrain at {c}",
+                                rect.min
+                            );
+                        }
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
