@@ -81,8 +81,10 @@ await blendFigure('fig-additive', {
   series: [1, 5, 4],
   names: ['base clip', 'layer alone', 'base + layer'],
   // As in the view: the orange stick figure is the base, the grey body the base with the layer.
+  // The layer alone 3 px: a lean lowers the arm onto it, and a grey 2 px line over a 6 px teal
+  // band is lost; over 3 px it still reads.
   colors: [ORANGE, TEAL, GREY],
-  widths: [6, 6, 2],
+  widths: [6, 3, 2],
   controls: (gui, scene, { replot, retime }) => {
     const p = { base: 'walk', additive: 'wave (a clip)', additiveWeight: 1 };
     gui.add(p, 'base', scene.clipNames()).name('base clip').onChange(() => { scene.setClips(p.base, 'wave'); retime(); });
