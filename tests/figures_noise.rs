@@ -324,6 +324,25 @@ fn octaves_plot_each_octave_and_their_sum() {
 }
 
 #[test]
+fn terrain_normal_is_drawn_over_the_peaks() {
+    // At the page test's rough ridge (s 4.76, h 1.19, ω 3.37) the peaks round the vertex are
+    // taller than the arrow: depth-tested, its shaft is hidden among them.
+    let mut s = TerrainScene::new();
+    s.set_params(2.0, 0.79, 3.37, 1.19, 4.76, -3.02).unwrap();
+    s.set_variant(1).unwrap();
+    s.take_dirty();
+    let mut f = Frame::default();
+    s.draw(&mut f, MeshId(3));
+    let grey: Vec<_> = f
+        .strokes
+        .iter()
+        .filter(|st| Vec3::new(st.color[0], st.color[1], st.color[2]) == palette::REFERENCE)
+        .collect();
+    assert!(!grey.is_empty(), "the normal is drawn");
+    assert!(grey.iter().all(|st| st.depth_bias == inbetween::draw::ON_TOP));
+}
+
+#[test]
 fn terrain_scene_regenerates_lazily_and_in_place() {
     let mut s = TerrainScene::new();
     s.take_dirty();

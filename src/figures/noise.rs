@@ -1354,7 +1354,9 @@ impl TerrainScene {
         let k = self.probe_index();
         let at = self.terrain.positions[k];
         let reference = self.terrain.normals[k];
-        frame.arrow(at, at + reference * 0.5, palette::REFERENCE, 0.08);
+        // The normals' shafts over the surface: on a rough terrain (s and h high) the peaks
+        // round the vertex hide a depth-tested arrow.
+        frame.arrow_on_top(at, at + reference * 0.5, palette::REFERENCE, 0.08);
         frame.label(at + reference * 0.58, "n", palette::REFERENCE);
         let p = &self.params;
         let r = self.terrain.resolution();
@@ -1425,7 +1427,7 @@ impl TerrainScene {
             );
             if let Some(yours) = answers.as_ref().map(|a| Vec3::from_slice(&a[0])) {
                 if yours.is_finite() && yours.length() > 1e-6 {
-                    frame.arrow(at, at + yours.normalize() * 0.5, palette::STUDENT, 0.08);
+                    frame.arrow_on_top(at, at + yours.normalize() * 0.5, palette::STUDENT, 0.08);
                     // Reading leftwards, so that it sits beside the reference's "n" (which reads
                     // rightwards) when the two arrows coincide.
                     frame.label_left(at + yours.normalize() * 0.58, "yours", palette::STUDENT);
