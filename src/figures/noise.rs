@@ -414,7 +414,7 @@ impl Noise1d {
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
         let candidates =
             crate::draw::Label::around_dot(at, 14.0, -Vec2::Y, "n(x)", palette::PINK, 0, 10, 8.0);
-        frame.first_clear_label_by(view, 2.0, candidates, |_| true);
+        frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &[]));
         let mut text = format!(
             "x = {}: cell [{}, {}], t = {}, fade(t) = {}; ramps g₀t = {}, g₁(t − 1) = {}; \
              n(x) = lerp(fade(t), g₀t, g₁(t − 1)) = {}.",

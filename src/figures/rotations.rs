@@ -1206,7 +1206,7 @@ impl Rodrigues {
             let mut candidates =
                 crate::draw::Label::around_dot(at, dot_px, toward, text, color, 0, 10, 8.0);
             if let (Some((view_proj, size)), true) = (view, text == "turned by q") {
-                // Places outside the circle first (a stable sort keeps the order round the box).
+                // Places outside the circle first, each part in its order round the box.
                 let ring: Vec<glam::Vec2> = (self.arc.iter())
                     .filter_map(|&p| crate::camera::project_to_canvas(view_proj, size, p))
                     .collect();
@@ -1222,11 +1222,14 @@ impl Rodrigues {
                         % 2
                         == 1
                 };
-                candidates.sort_by_key(|l| {
-                    l.first_place(view_proj, size).is_none_or(|r| {
-                        [r.min, r.max(), r.min + 0.5 * r.size].into_iter().any(in_ring)
-                    })
-                });
+                let (outside, inside): (Vec<_>, Vec<_>) =
+                    candidates.into_iter().partition(|l| {
+                        l.first_place(view_proj, size).is_some_and(|r| {
+                            ![r.min, r.max(), r.min + 0.5 * r.size].into_iter().any(in_ring)
+                        })
+                    });
+                candidates = outside;
+                candidates.extend(inside);
             }
             frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &solid));
         }
