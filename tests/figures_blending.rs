@@ -1214,3 +1214,28 @@ fn the_locomotion_figures_fill_their_canvases() {
         assert!(mean >= least, "compare {compare}: {spans:?} px");
     }
 }
+
+#[test]
+fn the_compared_characters_walk_abreast() {
+    // Blended at the same clock time, the root drifts most of a metre ahead of or behind the
+    // synchronised one's (and wraps round the loop at another moment): drawn where each root
+    // is, one character stands behind the other from the page's three-quarter view. Both are
+    // drawn level, each in its own lane; the names stand over them.
+    let mut l = LocomotionFigure::new();
+    let (lo, hi) = l.speed_range();
+    for speed in [lo, 0.97, 0.5 * (lo + hi), hi] {
+        l.set_speed(speed).unwrap();
+        for k in 0..32 {
+            let t = k as f32 * 0.25;
+            let mut f = Frame::default();
+            l.draw(&mut f, t).unwrap();
+            let at = |name: &str| f.labels.iter().find(|x| x.text == name).unwrap().anchor;
+            let (sync, clock) = (at("synchronised"), at("same clock time"));
+            assert!(
+                (sync.z - clock.z).abs() < 1e-4,
+                "speed {speed}, t {t}: synchronised at {sync}, same clock time at {clock}"
+            );
+            assert!(clock.x - sync.x > 1.0, "speed {speed}, t {t}: lanes apart");
+        }
+    }
+}

@@ -198,6 +198,26 @@ fn noise2d_is_zero_at_the_dots_only_on_integer_slices() {
 }
 
 #[test]
+fn noise2d_probe_stick_is_drawn_through_the_surface() {
+    // The stick from height 0 up (or down) to the probe's value runs inside the hill or hollow
+    // round the probe: depth-tested, the surface hides part of it.
+    let mut s = Noise2d::new();
+    s.set_probe(0.4, -0.3).unwrap();
+    let mut f = Frame::default();
+    s.draw(&mut f, MeshId(3));
+    let pink: Vec<_> = f
+        .strokes
+        .iter()
+        .filter(|st| Vec3::new(st.color[0], st.color[1], st.color[2]) == palette::PINK)
+        .collect();
+    assert!(!pink.is_empty(), "the probe's stick is drawn");
+    assert!(
+        pink.iter().all(|st| st.depth_bias == inbetween::draw::ON_TOP),
+        "the probe's stick is drawn over the surface"
+    );
+}
+
+#[test]
 fn noise2d_colours_show_the_sign() {
     let mut s = Noise2d::new();
     s.take_dirty();
@@ -301,6 +321,25 @@ fn octaves_plot_each_octave_and_their_sum() {
     } else {
         assert!(n.contains("Not done yet"), "{n}");
     }
+}
+
+#[test]
+fn terrain_normal_is_drawn_over_the_peaks() {
+    // At the page test's rough ridge (s 4.76, h 1.19, ω 3.37) the peaks round the vertex are
+    // taller than the arrow: depth-tested, its shaft is hidden among them.
+    let mut s = TerrainScene::new();
+    s.set_params(2.0, 0.79, 3.37, 1.19, 4.76, -3.02).unwrap();
+    s.set_variant(1).unwrap();
+    s.take_dirty();
+    let mut f = Frame::default();
+    s.draw(&mut f, MeshId(3));
+    let grey: Vec<_> = f
+        .strokes
+        .iter()
+        .filter(|st| Vec3::new(st.color[0], st.color[1], st.color[2]) == palette::REFERENCE)
+        .collect();
+    assert!(!grey.is_empty(), "the normal is drawn");
+    assert!(grey.iter().all(|st| st.depth_bias == inbetween::draw::ON_TOP));
 }
 
 #[test]
@@ -1062,6 +1101,42 @@ fn the_fractals_figure_declares_a_view_that_holds_both_shapes() {
             assert!(
                 p.x >= lo.x - 1e-4 && p.x <= hi.x + 1e-4 && p.y >= lo.y - 1e-4 && p.y <= hi.y + 1e-4,
                 "depth {depth}: {p} outside {lo} – {hi}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_fractals_names_are_centred_under_their_shapes() {
+    // A name that starts at the shape's middle reads as belonging to whatever lies to its right.
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let mut s = Fractals::new();
+    let mut f = Frame::default();
+    s.draw(&mut f);
+    for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+        // The page's camera (lessons/05-noise/lesson.js), fitted to the declared view.
+        let mut camera = OrbitCamera::from_view([0.0, -0.1, 0.0, 5.6, 0.0, 0.0]);
+        camera.fit(&f.fit_points(), size, FIT_PAD_PX);
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        // Each shape's middle on the canvas: the extremes of its lines in its colour.
+        for (name, color) in [
+            ("Koch snowflake", palette::BLUE),
+            ("Sierpinski triangle", palette::ORANGE),
+        ] {
+            let xs: Vec<f32> = f
+                .segments()
+                .filter(|(_, _, c)| *c == color)
+                .flat_map(|(a, b, _)| [a, b])
+                .map(|p| project_to_canvas(view_proj, size, p).unwrap().x)
+                .collect();
+            let lo = xs.iter().copied().fold(f32::MAX, f32::min);
+            let hi = xs.iter().copied().fold(f32::MIN, f32::max);
+            let label = f.labels.iter().find(|l| l.text == name).unwrap();
+            let rect = label.first_place(view_proj, size).unwrap();
+            let middle = rect.min.x + 0.5 * rect.size.x;
+            assert!(
+                (middle - 0.5 * (lo + hi)).abs() < 2.0,
+                "{name} on {size}: box middle at {middle}, the shape from {lo} to {hi}"
             );
         }
     }

@@ -127,4 +127,25 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
             );
         }
     }
+    // A fine lattice covers only the top-left LATTICE_CELLS cells (x and z from −1 on the
+    // square): at 25.5 cells across, lines over the whole image would hide the noise.
+    s.set_params(25.5, 0.0).unwrap();
+    f.clear();
+    let note = s.draw(&mut f, ids);
+    assert!(note.contains("top-left 6 × 6 cells"), "{note}");
+    let corner = -1.0 + 2.0 * LATTICE_CELLS / 25.5;
+    let (mut far_x, mut far_z) = (-1.0f32, -1.0f32);
+    for (a, b) in f.segments_of(palette::ORANGE).chain(f.segments_of(palette::TEAL)) {
+        for p in [a, b] {
+            let x = if p.x < -1.1 { p.x + 2.2 } else { p.x };
+            far_x = far_x.max(x);
+            far_z = far_z.max(p.z);
+        }
+    }
+    assert!((far_x - corner).abs() < 1e-3 && (far_z - corner).abs() < 1e-3, "{far_x}, {far_z}");
+    // Up to LATTICE_CELLS the lattices cover the whole image, and the note says nothing of it.
+    s.set_params(LATTICE_CELLS, 0.0).unwrap();
+    f.clear();
+    assert!(!s.draw(&mut f, ids).contains("top-left"));
+    assert_eq!(f.segments_of(palette::ORANGE).count(), 14);
 }

@@ -596,3 +596,20 @@ fn where_blend_and_screw_coincide_both_planes_show() {
     let (span, _) = wing(&frame, palette::Y_AXIS);
     assert!((span - 0.5).abs() < 1e-5, "{span}");
 }
+
+#[test]
+fn the_affine_keys_wireframes_tell_a_from_b() {
+    // The caption names key A's wireframe grey and dashed, key B's dark and solid: two greys
+    // alone, 1.5 px wide, read as one colour.
+    use inbetween::draw::palette;
+    let mut scene = AffineKeys::new();
+    let mut f = Frame::default();
+    scene.draw(&mut f, 0.3).unwrap();
+    let color = |s: &inbetween::draw::StrokeSegment| Vec3::new(s.color[0], s.color[1], s.color[2]);
+    let a: Vec<_> = f.strokes.iter().filter(|s| color(s) == palette::GREY).collect();
+    let b: Vec<_> = f.strokes.iter().filter(|s| color(s) == palette::DARK).collect();
+    // 12 edges a box, one box a side.
+    assert_eq!((a.len(), b.len()), (24, 24));
+    assert!(a.iter().all(|s| s.dash[3] > 0.0), "A dashed");
+    assert!(b.iter().all(|s| s.dash[3] == 0.0), "B solid");
+}

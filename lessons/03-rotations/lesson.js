@@ -136,8 +136,9 @@ if (gimbalViewer) {
   const plot = new Plot(document.getElementById('gimbal-plot'), {
     title: 'A steady turn past the pole: the angles the rings need', xLabel: 't (0 to 1)', yLabel: 'angle (°)',
     series: ['yaw', 'pitch', 'roll'], colors: [cssVar('--y-axis') ?? '#2ca02c', cssVar('--orange') ?? '#e68a00', cssVar('--z-axis') ?? '#1f6fd6'],
-    // Wide under narrow: yaw and roll swing together and would hide each other.
-    minSpan: 10, widths: [6, 2, 2],
+    // Wide under narrow: yaw and roll swing together and would hide each other. As tall as
+    // the plots of Figure 1: at the default height the swing past the pole is 90 px high.
+    minSpan: 10, widths: [6, 2, 2], height: 240,
   });
   const note = document.getElementById('gimbal-note');
   function apply() {

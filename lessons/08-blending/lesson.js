@@ -81,8 +81,10 @@ await blendFigure('fig-additive', {
   series: [1, 5, 4],
   names: ['base clip', 'layer alone', 'base + layer'],
   // As in the view: the orange stick figure is the base, the grey body the base with the layer.
+  // The layer alone 3 px: a lean lowers the arm onto it, and a grey 2 px line over a 6 px teal
+  // band is lost; over 3 px it still reads.
   colors: [ORANGE, TEAL, GREY],
-  widths: [6, 6, 2],
+  widths: [6, 3, 2],
   controls: (gui, scene, { replot, retime }) => {
     const p = { base: 'walk', additive: 'wave (a clip)', additiveWeight: 1 };
     gui.add(p, 'base', scene.clipNames()).name('base clip').onChange(() => { scene.setClips(p.base, 'wave'); retime(); });
@@ -112,12 +114,13 @@ if (locoViewer) {
   // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.
   const timeline = new Timeline(document.getElementById('loco-timeline'), { duration: scene.loopSec(), playing: true });
   // Both settings, as in the view: the synchronised line is drawn wide underneath and the other
-  // narrow on top, so where they agree both stay visible.
+  // narrower on top, so where they agree both stay visible; the narrower one still 2.5 px, as
+  // wide as the figure's curves, so it reads as a line of its own beside the wide one.
   const series = ['synchronised', 'same clock time'];
   const colors = ['#1f6fd6', '#d62728'];
   // Fixed y ranges (from Rust): the same scale at every speed, so a small slide looks small.
   const ranges = scene.plotRanges();
-  const widths = [5, 1.5];
+  const widths = [6, 2.5];
   const gapPlot = new Plot(document.getElementById('loco-phase-plot'), {
     title: 'How far out of step', xLabel: 'time (s)', yLabel: 'phase gap (cycles)',
     series, colors, widths, height: 240, yRange: [ranges[0], ranges[1]],

@@ -1190,8 +1190,17 @@ impl LocomotionFigure {
 
     /// Poses at `t` at the current setting and draws the character, its contact shadow, its
     /// footprints (each stance's trail, with a marker of a fixed size on screen at its two ends,
-    /// drawn over the legs) and its label in lane `x`. Returns the slide, metres.
-    fn draw_lane(&mut self, frame: &mut Frame, t: f32, x: f32, color: Vec3, name: &str) -> f32 {
+    /// drawn over the legs) and its label in lane `x`, at `along` on the loop (metres before
+    /// wrapping; `None`: where its own travel has taken it). Returns the slide, metres.
+    fn draw_lane(
+        &mut self,
+        frame: &mut Frame,
+        t: f32,
+        x: f32,
+        color: Vec3,
+        name: &str,
+        along: Option<f32>,
+    ) -> f32 {
         let slide = self.footprints_at(t);
         let (origin, _) = self.pose_at(t);
         self.origin = origin;
@@ -1202,7 +1211,8 @@ impl LocomotionFigure {
             &mut self.model,
         );
         // The character walks along z on a loop of TRACK_LENGTH, so it stays in view.
-        let z = (origin.z + 0.5 * TRACK_LENGTH).rem_euclid(TRACK_LENGTH) - 0.5 * TRACK_LENGTH;
+        let z = along.unwrap_or(origin.z);
+        let z = (z + 0.5 * TRACK_LENGTH).rem_euclid(TRACK_LENGTH) - 0.5 * TRACK_LENGTH;
         let place = Vec3::new(origin.x + x, 0.0, z);
         // Over everything: a foot slides along the way it walks, under its own leg, which
         // would hide the trail from most views.
@@ -1244,6 +1254,11 @@ impl LocomotionFigure {
         let own = self.synchronised;
         self.slides_m = [0.0; 2];
         if self.compare {
+            // Both abreast, at the synchronised character's place on the loop: blended at the
+            // same clock time, the root drifts ahead or behind (most of a metre), and from the
+            // page's three-quarter view one character then stands behind the other.
+            self.synchronised = true;
+            let along = Some(self.pose_at(t).0.z);
             // The figure's own setting last, so footprints(), slide_m() and origin() are its.
             for on in [!own, own] {
                 self.synchronised = on;
@@ -1252,11 +1267,12 @@ impl LocomotionFigure {
                 } else {
                     (LANE_X, palette::RED, "same clock time")
                 };
-                self.slides_m[usize::from(!on)] = self.draw_lane(frame, t, x, color, name);
+                self.slides_m[usize::from(!on)] = self.draw_lane(frame, t, x, color, name, along);
             }
             self.synchronised = own;
         } else {
-            self.slides_m[usize::from(!own)] = self.draw_lane(frame, t, 0.0, palette::PURPLE, "");
+            self.slides_m[usize::from(!own)] =
+                self.draw_lane(frame, t, 0.0, palette::PURPLE, "", None);
         }
         self.slide_m = self.slides_m[usize::from(!own)];
         // The lanes drawn, the whole track and a raised head: what the camera must keep in view.

@@ -173,6 +173,9 @@ pub struct Noise1d {
     use_exercise: bool,
     runner: Runner,
     first_panic: FirstPanic,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the probe's name
+    /// takes the first place round its dot there that covers no line, dot or name.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 /// Screen mapping of Figure 1: x ∈ [0, 8] to [−4, 4], values ×4.
@@ -201,6 +204,14 @@ impl Noise1d {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             first_panic: FirstPanic::default(),
+            view: None,
+        }
+    }
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the probe's name is placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
         }
     }
     pub fn set_seed(&mut self, seed: f32) -> Result<(), String> {
@@ -329,12 +340,14 @@ impl Noise1d {
             };
             let x = i as f32;
             frame.marker(Self::to_world(x, 0.0), 9.0, palette::KEY);
-            frame.wide_line(
+            // In three pieces, so that a label placed clear of the frame's strokes (sampled
+            // along each piece) is clear of all of it: a steep tick is long on screen.
+            let (from, to) = (
                 Self::to_world(x - TICK_HALF, -TICK_HALF * g),
                 Self::to_world(x + TICK_HALF, TICK_HALF * g),
-                color,
-                GUIDE_PX,
             );
+            let tick: [Vec3; 4] = std::array::from_fn(|k| from.lerp(to, k as f32 / 3.0));
+            frame.wide_polyline(&tick, color, GUIDE_PX);
         }
         let x0 = cell as f32;
         if self.show_ramps {
@@ -391,12 +404,17 @@ impl Noise1d {
                 GUIDE_PX,
             );
         }
-        frame.marker_on_top(Self::to_world(self.probe_x, n), 14.0, palette::PINK);
-        frame.label(
-            Self::to_world(self.probe_x, n) + Vec3::Y * 0.45,
-            "n(x)",
-            palette::PINK,
-        );
+        let at = Self::to_world(self.probe_x, n);
+        frame.marker_on_top(at, 14.0, palette::PINK);
+        // The probe's name at the first place round its dot, above first, on the last frame's
+        // view, 2 px clear of the curve, the ramps, the ticks, the dots and the names: the
+        // curve climbs steeply through the dot, and after an orbit it runs close beside it.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let candidates =
+            crate::draw::Label::around_dot(at, 14.0, -Vec2::Y, "n(x)", palette::PINK, 0, 10, 8.0);
+        frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &[]));
         let mut text = format!(
             "x = {}: cell [{}, {}], t = {}, fade(t) = {}; ramps g₀t = {}, g₁(t − 1) = {}; \
              n(x) = lerp(fade(t), g₀t, g₁(t − 1)) = {}.",
@@ -663,7 +681,9 @@ impl Noise2d {
         let value = self.probe_value();
         let at = self.world(self.probe, value);
         frame.point(at, PROBE_RADIUS, palette::PINK);
-        frame.wide_line(self.world(self.probe, 0.0), at, palette::PINK, GUIDE_PX);
+        // Through the surface, as the black sticks: it runs from height 0 to the surface, inside
+        // the hill or the hollow round the probe, which hides half of it from most views.
+        frame.wide_line_on_top(self.world(self.probe, 0.0), at, palette::PINK, GUIDE_PX);
         // The value above the probe's dot; where the cell's square, the sticks or the arrows
         // run there (on the last frame's view), the first place round the dot clear of them,
         // above it first.
@@ -1334,7 +1354,9 @@ impl TerrainScene {
         let k = self.probe_index();
         let at = self.terrain.positions[k];
         let reference = self.terrain.normals[k];
-        frame.arrow(at, at + reference * 0.5, palette::REFERENCE, 0.08);
+        // The normals' shafts over the surface: on a rough terrain (s and h high) the peaks
+        // round the vertex hide a depth-tested arrow.
+        frame.arrow_on_top(at, at + reference * 0.5, palette::REFERENCE, 0.08);
         frame.label(at + reference * 0.58, "n", palette::REFERENCE);
         let p = &self.params;
         let r = self.terrain.resolution();
@@ -1405,7 +1427,7 @@ impl TerrainScene {
             );
             if let Some(yours) = answers.as_ref().map(|a| Vec3::from_slice(&a[0])) {
                 if yours.is_finite() && yours.length() > 1e-6 {
-                    frame.arrow(at, at + yours.normalize() * 0.5, palette::STUDENT, 0.08);
+                    frame.arrow_on_top(at, at + yours.normalize() * 0.5, palette::STUDENT, 0.08);
                     // Reading leftwards, so that it sits beside the reference's "n" (which reads
                     // rightwards) when the two arrows coincide.
                     frame.label_left(at + yours.normalize() * 0.58, "yours", palette::STUDENT);
@@ -1668,6 +1690,9 @@ pub struct Variants {
     terrains: Vec<Terrain>,
     stale: bool,
     dirty: bool,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the names take
+    /// the first places round their corners there that cover no terrain.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 impl Variants {
@@ -1682,9 +1707,18 @@ impl Variants {
                 .collect(),
             stale: false,
             dirty: true,
+            view: None,
         };
         f.regenerate();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the names are placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// Sets N (whole, 0 to [`OCTAVES_MAX_N`]), α in [0, 1] and h in [0, 2], checked by name;
@@ -1748,13 +1782,37 @@ impl Variants {
             self.regenerate();
         }
         for (i, &mesh) in meshes.iter().enumerate().take(self.terrains.len()) {
-            let at = Self::placement(i);
-            frame.mesh_vertex_colors(mesh, Mat4::from_translation(at));
-            frame.label(
-                at + Vec3::new(-0.9, 0.0, 1.15),
-                SIDE_BY_SIDE_VARIANTS[i].1,
+            frame.mesh_vertex_colors(mesh, Mat4::from_translation(Self::placement(i)));
+        }
+        // Each name at the first place round the middle of its terrain's outer edge (the back
+        // row's far edge, above first; the front row's near edge, below first), on the last
+        // frame's view, that covers no terrain (every 4th vertex of each) nor a name placed
+        // before it: a name at a corner facing the middle lands on the terrain beside it.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let surfaces: Vec<Vec3> = (self.terrains.iter().enumerate())
+            .flat_map(|(i, t)| {
+                let r = t.resolution();
+                (0..r * r)
+                    .filter(move |k| (k % r) % 4 == 0 && (k / r) % 4 == 0)
+                    .map(move |k| t.positions[k] + Self::placement(i))
+            })
+            .collect();
+        for (i, &(_, name)) in SIDE_BY_SIDE_VARIANTS.iter().enumerate() {
+            let out = if i < 2 { -1.0 } else { 1.0 };
+            let edge = Self::placement(i) + Vec3::Z * 1.1 * out;
+            let candidates = crate::draw::Label::around_dot(
+                edge,
+                0.0,
+                Vec2::Y * out,
+                name,
                 palette::DARK,
+                0,
+                16,
+                8.0,
             );
+            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &surfaces));
         }
         let h_top = (0.6 * self.h).max(0.1);
         frame.keep_box_in_view(
@@ -2266,16 +2324,14 @@ impl Fractals {
             // survives the step it shows grey, so the coloured lines left are what the step adds.
             self.draw_depth(frame, d - 1, palette::GREY, palette::GREY, 0.01);
         }
-        frame.label(
-            Vec3::new(KOCH_CENTRE.x, LABEL_Y, 0.0),
-            "Koch snowflake",
-            palette::BLUE,
-        );
-        frame.label(
-            Vec3::new(SIERPINSKI[2].x, LABEL_Y, 0.0),
-            "Sierpinski triangle",
-            palette::ORANGE,
-        );
+        // Each name centred under its shape (a side of zero centres the box on the anchor).
+        for (x, name, color) in [
+            (KOCH_CENTRE.x, "Koch snowflake", palette::BLUE),
+            (SIERPINSKI[2].x, "Sierpinski triangle", palette::ORANGE),
+        ] {
+            let at = Vec3::new(x, LABEL_Y, 0.0);
+            frame.label_off_dot(at, 0.0, Vec2::ZERO, name, color, 0);
+        }
         let segments = 3 * 4usize.pow(d);
         // What the grey depth before leaves coloured: the two sides of each new bump, and the
         // outline of the middle triangle cut out of each old triangle.

@@ -105,6 +105,10 @@ pub fn lattice_px(cells: f32) -> f32 {
     (LATTICE_PX * 6.0 / cells).clamp(1.0, LATTICE_PX)
 }
 
+/// The most cells across that the lattices cover, from the image's top-left corner: at 25 cells
+/// across, lines over the whole image (three directions for simplex noise) hide the noise.
+pub const LATTICE_CELLS: f32 = 6.0;
+
 impl NoiseImages {
     pub fn new() -> Self {
         let image = || vec![0; 4 * IMAGE_SIZE * IMAGE_SIZE];
@@ -257,12 +261,19 @@ impl NoiseImages {
             // Labels read rightwards from their anchor: start each at its square's left edge.
             frame.label(Vec3::new(x - 1.0, 0.0, 1.2), name.as_str(), palette::DARK);
         }
+        let mut part = String::new();
         if self.lattice {
             self.draw_lattices(frame);
+            if self.cells > LATTICE_CELLS {
+                part = format!(
+                    " The lattices cover the top-left {0} × {0} cells, so the noise shows beside them.",
+                    LATTICE_CELLS
+                );
+            }
         }
         format!(
             "{} noise cells across each image, {}. Perlin's cells are squares, simplex noise's are \
-             triangles (a skewed grid); Perlin noise is 0 at every lattice point.",
+             triangles (a skewed grid); Perlin noise is 0 at every lattice point.{part}",
             format_number(self.cells),
             if self.seed == 0 {
                 "Perlin's permutation".to_string()
@@ -273,10 +284,12 @@ impl NoiseImages {
     }
 
     /// Lattice lines over the first two squares, [`lattice_px`] wide: Perlin's square cells and simplex
-    /// noise's triangles (a square grid in skewed coordinates, unskewed), clipped to the image.
+    /// noise's triangles (a square grid in skewed coordinates, unskewed), clipped to the image's
+    /// top-left [`LATTICE_CELLS`] cells square.
     fn draw_lattices(&self, frame: &mut Frame) {
         let lift = 0.01;
         let width = lattice_px(self.cells);
+        let span = self.cells.min(LATTICE_CELLS);
         // Image point (x, y) in noise units -> world on the square at `cx`.
         let world = |cx: f32, x: f32, y: f32| {
             Vec3::new(
@@ -285,18 +298,18 @@ impl NoiseImages {
                 -1.0 + 2.0 * y / self.cells,
             )
         };
-        let n = self.cells.ceil() as i32;
+        let n = span.ceil() as i32;
         for k in 0..=n {
-            let t = (k as f32).min(self.cells);
+            let t = (k as f32).min(span);
             frame.wide_line(
                 world(PLACES[0], t, 0.0),
-                world(PLACES[0], t, self.cells),
+                world(PLACES[0], t, span),
                 palette::ORANGE,
                 width,
             );
             frame.wide_line(
                 world(PLACES[0], 0.0, t),
-                world(PLACES[0], self.cells, t),
+                world(PLACES[0], span, t),
                 palette::ORANGE,
                 width,
             );
@@ -308,9 +321,8 @@ impl NoiseImages {
             let t = (i + j) * g2;
             (i - t, j - t)
         };
-        let inside =
-            |(x, y): (f32, f32)| (0.0..=self.cells).contains(&x) && (0.0..=self.cells).contains(&y);
-        let m = (2.0 * self.cells).ceil() as i32 + 2;
+        let inside = |(x, y): (f32, f32)| (0.0..=span).contains(&x) && (0.0..=span).contains(&y);
+        let m = (2.0 * span).ceil() as i32 + 2;
         let steps = 4 * m;
         let mut segment = |a: (f32, f32), b: (f32, f32)| {
             if inside(a) && inside(b) {

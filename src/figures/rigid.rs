@@ -637,8 +637,8 @@ fn check_translation(t: Vec3) -> Result<Vec3, String> {
     ))
 }
 
-/// The 12 edges of the cube `[-1, 1]³` transformed by `m`.
-fn wire_cube(frame: &mut Frame, m: Mat4, color: Vec3) {
+/// The 12 edges of the cube `[-1, 1]³` transformed by `m`, in `style`.
+fn wire_cube(frame: &mut Frame, m: Mat4, color: Vec3, style: crate::draw::StrokeStyle) {
     let c = |i: u32| {
         let s = |bit: u32| if i & bit == 0 { -1.0 } else { 1.0 };
         m.transform_point3(Vec3::new(s(1), s(2), s(4)))
@@ -646,7 +646,7 @@ fn wire_cube(frame: &mut Frame, m: Mat4, color: Vec3) {
     for i in 0..8u32 {
         for bit in [1, 2, 4] {
             if i & bit == 0 {
-                frame.wide_line(c(i), c(i | bit), color, 1.5);
+                frame.stroke(&[c(i), c(i | bit)], color, style);
             }
         }
     }
@@ -840,8 +840,11 @@ impl AffineKeys {
         let size = Mat4::from_scale(Vec3::splat(HALF));
         for (offset, color, naive) in [(-1.8, NAIVE, true), (1.8, POLAR, false)] {
             let shift = Mat4::from_translation(Vec3::new(offset, 0.0, 0.0));
-            wire_cube(frame, shift * self.a * size, palette::GREY);
-            wire_cube(frame, shift * self.b * size, palette::DARK);
+            // Key A dashed and key B solid: at these widths grey and dark grey look alike.
+            let dashed = crate::draw::StrokeStyle::dashed(1.5, 0.06, 0.05);
+            wire_cube(frame, shift * self.a * size, palette::GREY, dashed);
+            let solid = crate::draw::StrokeStyle::solid(2.0);
+            wire_cube(frame, shift * self.b * size, palette::DARK, solid);
             self.path.clear();
             for k in 0..=64 {
                 let m = shift * self.at(naive, k as f32 / 64.0) * size;

@@ -1164,36 +1164,73 @@ impl Rodrigues {
         frame.axes(place, 0.4);
         // The names, once every arrow is down, each at the first place round its anchor (right
         // first, then further out) on the last frame's view that covers no line, dot or name
-        // placed before it, nor the box's corners: with v along the axis, n, v, v′ and
-        // the box all meet near the origin on the screen. n beside its shaft, below the tip (at
-        // the tip the name leaves the top of the canvas); v at its tip; v′ just past its tip
-        // (the last term's label sits near the tip when that term is short); the box's name
-        // below it.
+        // placed before it, nor the box: with v along the axis, n, v, v′ and the box all meet
+        // near the origin on the screen. n beside its shaft, below the tip (at the tip the name
+        // leaves the top of the canvas); v at its tip; v′ just past its tip (the last term's
+        // label sits near the tip when that term is short); the box's name beside the box, left
+        // first, away from the circle (the box stands left of it in the page's view; a grey
+        // name on the grey circle reads as the circle's).
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
-        let solid: Vec<Vec3> = (0..8)
+        // The box's points on a 3 × 3 × 3 grid: its corners, edges' and faces' middles, so that
+        // a name over part of the box holds one of them.
+        let box_points: Vec<Vec3> = (0..27)
             .map(|c| {
-                let s = |bit: i32| if c & bit == 0 { -1.0 } else { 1.0 };
-                place.transform_point3(Vec3::new(0.22 * s(1), 0.12 * s(2), 0.08 * s(4)))
+                let s = |k: i32| ((c / k) % 3 - 1) as f32;
+                place.transform_point3(Vec3::new(0.22 * s(1), 0.12 * s(3), 0.08 * s(9)))
             })
+            .collect();
+        // The box's width on the last frame's view, as a dot's: twice its farthest corner.
+        let box_px = view.map_or(0.0, |(view_proj, size)| {
+            let px = |p| crate::camera::project_to_canvas(view_proj, size, p);
+            box_points
+                .iter()
+                .filter_map(|&p| Some(px(p)?.distance(px(QUAT_BOX_AT)?)))
+                .fold(0.0, f32::max)
+                * 2.0
+        });
+        let solid: Vec<Vec3> = box_points
+            .iter()
+            .copied()
             // The axis every 2 cm: the frame's own test samples a line at 17 points, sparse
             // along the axis (4 m), which passes close to the names.
             .chain((0..=200).map(|k| n * (k as f32 * 0.02 - 2.0)))
             .collect();
-        for (at, dot_px, text, color) in [
-            (n * 1.7, 0.0, "n", AXIS),
-            (v, 12.0, "v", V),
-            (turned * 1.15, 0.0, "v′ = R v", ROTATED),
-            (
-                QUAT_BOX_AT - Vec3::Y * 0.5,
-                0.0,
-                "turned by q",
-                palette::GREY,
-            ),
+        for (at, dot_px, toward, text, color) in [
+            (n * 1.7, 0.0, glam::Vec2::X, "n", AXIS),
+            (v, 12.0, glam::Vec2::X, "v", V),
+            (turned * 1.15, 0.0, glam::Vec2::X, "v′ = R v", ROTATED),
+            (QUAT_BOX_AT, box_px, -glam::Vec2::X, "turned by q", palette::GREY),
         ] {
-            let candidates =
-                crate::draw::Label::around_dot(at, dot_px, glam::Vec2::X, text, color, 0, 10, 8.0);
+            let mut candidates =
+                crate::draw::Label::around_dot(at, dot_px, toward, text, color, 0, 10, 8.0);
+            if let (Some((view_proj, size)), true) = (view, text == "turned by q") {
+                // Places outside the circle first, each part in its order round the box.
+                let ring: Vec<glam::Vec2> = (self.arc.iter())
+                    .filter_map(|&p| crate::camera::project_to_canvas(view_proj, size, p))
+                    .collect();
+                let in_ring = |c: glam::Vec2| {
+                    // Crossings of a ray to the right of c with the circle's edges: odd inside.
+                    let edges = ring.iter().zip(ring.iter().cycle().skip(1));
+                    edges
+                        .filter(|(a, b)| {
+                            (a.y > c.y) != (b.y > c.y)
+                                && c.x < a.x + (c.y - a.y) / (b.y - a.y) * (b.x - a.x)
+                        })
+                        .count()
+                        % 2
+                        == 1
+                };
+                let (outside, inside): (Vec<_>, Vec<_>) =
+                    candidates.into_iter().partition(|l| {
+                        l.first_place(view_proj, size).is_some_and(|r| {
+                            ![r.min, r.max(), r.min + 0.5 * r.size].into_iter().any(in_ring)
+                        })
+                    });
+                candidates = outside;
+                candidates.extend(inside);
+            }
             frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &solid));
         }
         // Last, once every arrow and the other labels are down: the terms run tip to tail

@@ -116,6 +116,9 @@ impl Noise1dScene {
     }
     /// Draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the probe's name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)
@@ -529,6 +532,9 @@ impl VariantsScene {
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         let meshes = self.gpu.sync(viewer, &mut self.scene)?.to_vec();
+        // The view the names are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame, &meshes);
         viewer.present()?;
         Ok(note)

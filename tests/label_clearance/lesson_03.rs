@@ -283,3 +283,71 @@ fn lesson_03_gimbal_axle_names_keep_off_the_rings_and_axles() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_03_rodrigues_box_name_stands_outside_the_circle() {
+    // Figure 4 at its page camera and settings, both canvases, through the sweep: "turned by q"
+    // (grey, like the circle the tip sweeps) stands beside the box, outside the circle on the
+    // canvas, where it cannot read as the circle's name, and no further from the box than a
+    // dot's name from its dot. As on the page, the figure places it for the view of the frame
+    // before.
+    use inbetween::draw::palette;
+    use inbetween::figures::rotations::{Rodrigues, QUAT_BOX_AT};
+    let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
+    let mut failures = Vec::new();
+    for k in 1..=8 {
+        let s = k as f32 / 8.0;
+        for size in CANVASES {
+            let mut f = Rodrigues::new();
+            let (frame, camera) = drawn_for_view(
+                &mut f,
+                view,
+                size,
+                |fig, out| {
+                    fig.draw(out, s).unwrap();
+                },
+                |fig, cam, px| fig.set_view(cam, px.x, px.y),
+            );
+            let name = format!("03 Rodrigues box name, s {s}");
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+            // The circle on the canvas: the grey wide polyline.
+            let circle: Vec<Vec2> = frame
+                .strokes
+                .iter()
+                .filter(|st| Vec3::new(st.color[0], st.color[1], st.color[2]) == palette::GREY)
+                .map(|st| at(Vec3::from(st.a)))
+                .collect();
+            assert!(circle.len() > 100, "{name}: the circle is drawn");
+            let inside_circle = |p: Vec2| {
+                let mut inside = false;
+                for (i, a) in circle.iter().enumerate() {
+                    let b = circle[(i + 1) % circle.len()];
+                    if (a.y > p.y) != (b.y > p.y)
+                        && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x)
+                    {
+                        inside = !inside;
+                    }
+                }
+                inside
+            };
+            let boxes = label_boxes(&frame, &camera, size);
+            failures.extend(failure_of(|| {
+                let (_, rect) = boxes
+                    .iter()
+                    .find(|(t, _)| t == "turned by q")
+                    .unwrap_or_else(|| panic!("{name} on {size}: the box's name is shown"));
+                for c in [rect.min, rect.max(), rect.min + rect.size * 0.5] {
+                    assert!(
+                        !inside_circle(c),
+                        "{name} on {size}: the box's name at {:?} lies inside the circle",
+                        rect.min
+                    );
+                }
+                let gap = rect.nearest(at(QUAT_BOX_AT)).distance(at(QUAT_BOX_AT));
+                assert!(gap < 60.0, "{name} on {size}: the box's name {gap} px from it");
+            }));
+        }
+    }
+    assert_none_failed(&failures);
+}
