@@ -428,6 +428,41 @@ fn the_lagrange_graph_has_labelled_axes_and_passes_through_its_keys() {
     let _ = Interpolation::Lagrange;
 }
 
+/// The Lagrange graph declares its axes and their labels for the camera's fit, so that after an
+/// orbit (lessons/02-keyframes/lesson.js: target (0.15, 1.4, 0), distance 6.5, yaw 0, pitch 0)
+/// the value axis's foot stays on the canvas: every label's anchor and both axes' ends lie on
+/// a 650 × 420 canvas, at 3, 6 and 16 keys, seen straight on and orbited.
+#[test]
+fn the_lagrange_graph_stays_on_the_canvas_when_orbited() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    for keys in [3.0, 6.0, 16.0] {
+        let mut s = LagrangeScene::new();
+        s.set_key_count(keys).unwrap();
+        let mut frame = Frame::default();
+        s.draw(&mut frame);
+        assert!(
+            !frame.keep_in_view.is_empty(),
+            "nothing declared for the fit"
+        );
+        let last = keys - 1.0;
+        let ends = [s.place(0.0, -0.8), s.place(0.0, 3.4), s.place(last, 0.0)];
+        for (yaw, pitch) in [(0.0, 0.0), (-1.04, 0.34), (0.8, -0.3), (1.4, 0.6)] {
+            let size = Vec2::new(650.0, 420.0);
+            let mut camera = OrbitCamera::from_view([0.15, 1.4, 0.0, 6.5, yaw, pitch]);
+            camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let anchors = frame.labels.iter().map(|l| l.anchor);
+            for p in ends.into_iter().chain(anchors) {
+                let c = project_to_canvas(view_proj, size, p).unwrap();
+                assert!(
+                    c.cmpge(Vec2::ZERO).all() && c.cmple(size).all(),
+                    "{keys} keys, yaw {yaw}, pitch {pitch}: {p} at {c}, off the canvas"
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn clip_graph_cuts_at_the_edge_instead_of_running_along_it() {
     // Up through the top edge, back down, and once through the bottom edge.

@@ -629,3 +629,67 @@ fn spacing_ghosts_are_copies_of_the_ball_not_dots() {
         assert!((a - b).length() >= 20.0, "{} px across", (a - b).length());
     }
 }
+
+/// The stretch figure's names sit just under their balls (within 0.5 m of the lowest point at
+/// any stretch and direction, not a fixed distance that leaves a gap of a ball's height), and
+/// the dark dashed outline at rest shows on both balls: each ball's surface is lighter than
+/// mid-grey or coloured, never a dark grey under dark dashes.
+#[test]
+fn stretch_names_sit_under_their_balls_and_the_outline_shows_on_both() {
+    use inbetween::figures::expressive::StretchComparison;
+    for s in [0.4, 1.0, 1.6, 2.5] {
+        for angle in [-90.0, -30.0, 0.0, 30.0, 90.0] {
+            let mut scene = StretchComparison::new();
+            scene.set(s, angle).unwrap();
+            let mut f = Frame::default();
+            scene.draw(&mut f);
+            let balls: Vec<_> = f
+                .meshes
+                .iter()
+                .filter(|m| m.mesh == MeshId::SPHERE)
+                .collect();
+            assert_eq!(balls.len(), 2);
+            for (ball, title) in balls.iter().zip(["volume kept", "stretched only"]) {
+                let m = ball.model;
+                let lowest = m.w_axis.y - Vec3::new(m.x_axis.y, m.y_axis.y, m.z_axis.y).length();
+                let label = f.labels.iter().find(|l| l.text == title).unwrap();
+                let below = lowest - label.anchor.y;
+                assert!(
+                    (0.0..0.5).contains(&below),
+                    "s {s}, {angle}°: {title:?} {below} m under its ball"
+                );
+                assert!(
+                    (label.anchor.x - m.w_axis.x).abs() < 1e-3,
+                    "s {s}, {angle}°: {title:?} not under its ball"
+                );
+                let c = ball.color.truncate();
+                let grey = (c.max_element() - c.min_element()) < 0.05;
+                assert!(
+                    !grey || c.x > 0.4,
+                    "s {s}, {angle}°: the {title:?} ball's grey {c} hides the dark outline"
+                );
+            }
+        }
+    }
+}
+
+/// Figure 1's ghosts are paler than the straight twin's grey ball, so the ball stands out
+/// among them as the blue one does on the arc.
+#[test]
+fn ghosts_are_paler_than_the_twin_ball() {
+    use inbetween::figures::expressive::PLAIN;
+    let mut scene = Spacing::new();
+    scene.set_twin(true);
+    let mut f = Frame::default();
+    scene.draw(&mut f, 0.5).unwrap();
+    let twin = f
+        .meshes
+        .iter()
+        .find(|m| m.color.truncate() == PLAIN)
+        .expect("the twin's ball");
+    assert!(
+        GHOST.x > twin.color.x + 0.2,
+        "ghosts {GHOST} against the twin ball's {}",
+        twin.color
+    );
+}

@@ -817,6 +817,63 @@ fn a_dense_sphere_patch_faces_the_eye_after_an_orbit() {
     assert_eq!(scene.draw(&mut Frame::default()), before);
 }
 
+/// Figure 1's soup corners at up to 10 segments show their orange inside the outline (a marker's
+/// white-and-dark rim takes 2.5 px of its radius: at 6 px across a dot reads as a grey ring), and
+/// at the page's camera (target (0, 1.2, 0), distance 5.6, pitch 0.3) on a 650 × 420 canvas the
+/// corners of neighbouring triangles stay apart (but round the poles), so the dots read as a ring
+/// round each position.
+#[test]
+fn soup_corners_show_their_colour_and_stay_apart() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    for segments in [4.0, 6.0, 8.0, 10.0] {
+        let mut scene = MeshStorage::new();
+        scene.set_segments(segments).unwrap();
+        let mut f = Frame::default();
+        scene.draw(&mut f);
+        let soup: Vec<_> = f
+            .markers
+            .iter()
+            .filter(|m| Vec3::from_slice(&m.color[..3]) == SOUP_COLOR)
+            .collect();
+        assert!(
+            soup.iter().all(|m| m.size_px >= 8.0),
+            "{segments} segments: dots under 8 px"
+        );
+        let size = Vec2::new(650.0, 420.0);
+        let mut camera = OrbitCamera::from_view([0.0, 1.2, 0.0, 5.6, 0.0, 0.3]);
+        camera.fit(&f.fit_points(), size, FIT_PAD_PX);
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let eye = camera.eye();
+        // The corners on the half facing the eye, where none hides behind the sphere.
+        let centre = Vec3::new(-1.4, 1.2, 0.0);
+        let front: Vec<(Vec2, f32)> = soup
+            .iter()
+            .filter(|m| (Vec3::from(m.center) - centre).dot(eye - centre) > 0.5)
+            .map(|m| {
+                (
+                    project_to_canvas(view_proj, size, Vec3::from(m.center)).unwrap(),
+                    m.size_px,
+                )
+            })
+            .collect();
+        // Round the poles, where every triangle of a ring meets, the corners crowd whatever
+        // the dots' size; elsewhere each keeps at least half a dot from its nearest.
+        let crowded = front
+            .iter()
+            .filter(|a| {
+                front
+                    .iter()
+                    .any(|b| b.0 != a.0 && a.0.distance(b.0) < 0.5 * a.1)
+            })
+            .count();
+        assert!(
+            crowded * 5 <= front.len(),
+            "{segments} segments: {crowded} of {} corners crowd a neighbour",
+            front.len()
+        );
+    }
+}
+
 fn f32_dot_sizes_at_most(scene: &MeshStorage, px: f32) -> bool {
     let mut f = Frame::default();
     scene.draw(&mut f);

@@ -540,14 +540,29 @@ function compareFigure(id) {
     for (const side of order) view.path(layers[side].path, C[side], layers[side].held);
     const keys = scene.keys();
     for (let i = 0; i < keys.length; i += 3) view.dot(keys[i + 1], keys[i + 2], 4, C.ink);
-    for (const side of ['a', 'b']) {
-      const [x, y] = schemes[side].position(tau);
-      // A's ball wider than B's, drawn first: where the two schemes agree (at the keys, and
-      // everywhere for the same scheme twice) A rings B, as its wide line shows under B's in the plot.
-      view.ball(x, y, side === 'a' ? 11 : 6, C[side]);
-      const dx = side === 'a' ? -0.25 : 0.12; // A left of its ball, B right: never on top of each other
-      view.text(x + dx, y + 0.12, side.toUpperCase(), C[side]);
+    const at = { a: schemes.a.position(tau), b: schemes.b.position(tau) };
+    const radius = { a: 11, b: 6 };
+    // A's ball wider than B's, drawn first: where the two schemes agree (at the keys, and
+    // everywhere for the same scheme twice) A rings B, as its wide line shows under B's in the plot.
+    for (const side of ['a', 'b']) view.ball(...at[side], radius[side], C[side]);
+    // Each name over both balls, 4 px beside its own on the side away from the other ball (A left,
+    // B right where they meet), with a white edge that keeps it readable on the lines.
+    const { ctx: c } = view;
+    c.font = 'bold 13px system-ui, sans-serif';
+    c.textBaseline = 'middle';
+    c.lineWidth = 3;
+    c.strokeStyle = '#ffffff';
+    for (const [side, other] of [['a', 'b'], ['b', 'a']]) {
+      const [p, q] = [view.toPx(...at[side]), view.toPx(...at[other])];
+      const dir = Math.sign(p[0] - q[0]) || (side === 'a' ? -1 : 1);
+      c.textAlign = dir < 0 ? 'right' : 'left';
+      const x = p[0] + dir * (radius[side] + 4);
+      c.strokeText(side.toUpperCase(), x, p[1]);
+      c.fillStyle = C[side];
+      c.fillText(side.toUpperCase(), x, p[1]);
     }
+    c.textAlign = 'start';
+    c.textBaseline = 'alphabetic';
     cursor(plot, scene.startSec + tau);
     markDrawn(`#${id}`);
   });
@@ -668,8 +683,18 @@ if (lagrangeViewer) {
         view.arrow(x, y, x + side.d[2 * k] * HANDLE_SEC, y + side.d[2 * k + 1] * HANDLE_SEC, C.tangent, 2.5);
       }
       for (let k = 0; k < n; k++) {
-        view.dot(keys[3 * k + 1] + dx, keys[3 * k + 2] + dy, 5, C.key);
-        view.text(keys[3 * k + 1] + dx + 0.1, keys[3 * k + 2] + dy - 0.3, `${k}`, C.ink);
+        const [x, y] = [keys[3 * k + 1] + dx, keys[3 * k + 2] + dy];
+        view.dot(x, y, 5, C.key);
+        // The number 14 px off the dot across its tangent, on the upper side (as in Figure 1's
+        // editor), so neither the dot nor the arrow covers it; up and right where μ = 0.
+        const [px, py] = view.toPx(x, y);
+        const [tx, ty] = [side.d[2 * k], -side.d[2 * k + 1]];
+        const len = Math.hypot(tx, ty);
+        let [nx, ny] = len > 1e-6 ? [ty / len, -tx / len] : [0.7, -0.7];
+        if (ny > 0) [nx, ny] = [-nx, -ny];
+        view.ctx.fillStyle = C.ink;
+        view.ctx.font = '12px system-ui, sans-serif';
+        view.ctx.fillText(`${k}`, px + 14 * nx - 4, py + 14 * ny + 4);
       }
       let top = -Infinity; let [x0, x1] = [Infinity, -Infinity];
       for (let i = 0; i < side.path.length; i += 2) {

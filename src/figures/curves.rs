@@ -1150,6 +1150,12 @@ impl LagrangeScene {
             "value y (m)",
             axis,
         );
+        // Both axes with their numbers and names stay in view at any canvas size and after an
+        // orbit (the value axis's foot otherwise leaves the canvas's bottom).
+        frame.keep_box_in_view(
+            self.place(0.0, Y_RANGE.0) - Vec3::new(0.5, 0.0, 0.1),
+            self.place(last, Y_RANGE.1) + Vec3::new(1.5, 0.4, 0.1),
+        );
     }
 
     fn rebuild(&mut self) -> Result<(), String> {

@@ -68,7 +68,8 @@ fn scale_note(runner: Runner, s: f32) -> String {
 
 /// Colours of Figure 1.
 pub const BALL: Vec3 = palette::BLUE;
-pub const GHOST: Vec3 = palette::GREY;
+/// Pale grey: the ghosts read as copies behind the straight twin's ball (grey, as its name).
+pub const GHOST: Vec3 = palette::GRID;
 pub const CHART: Vec3 = palette::ORANGE;
 /// Radius of a ghost, metres: smaller than the ball, so the ball stands out where it passes one
 /// and bunched ghosts stay apart, and large enough to read as a copy of it.
@@ -98,6 +99,8 @@ pub struct Spacing {
     runner: Runner,
     /// Seconds from key to key.
     pub duration: f32,
+    /// The last frame's camera and canvas size (CSS pixels), which the labels are placed for.
+    view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
 }
 
 impl Default for Spacing {
@@ -117,6 +120,15 @@ impl Spacing {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             duration: 1.5,
+            view: None,
+        }
+    }
+
+    /// The last frame's camera and canvas size (CSS pixels): the paths' names take places clear
+    /// of the ghosts, balls and lines on it. A size that is not positive and finite is ignored.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 && (width_px * height_px).is_finite() {
+            self.view = Some((camera, glam::Vec2::new(width_px, height_px)));
         }
     }
 
@@ -290,14 +302,11 @@ impl Spacing {
             }
             let q = a.lerp(b, self.along(time));
             frame.mesh(MeshId::SPHERE, ball(q, Vec3::X, Vec3::ONE), PLAIN);
-            frame.label(b + Vec3::new(0.3, 0.45, 0.0), "straight line", PLAIN);
-            frame.label(
-                START.lerp(END, 0.5) + Vec3::Y * (self.arc_height + 0.4),
-                "arc",
-                BALL,
-            );
         }
         let p = self.position_at(time);
+        if self.twin {
+            self.name_paths(frame, ghost, p, time);
+        }
         let (velocity, s) = self.stretch(time);
         let (s, scale) = if self.squash {
             (s, stretch_scale(self.runner, self.use_exercise, s))
@@ -323,6 +332,61 @@ impl Spacing {
             note += &scale_note(self.runner, s);
         }
         Ok(note)
+    }
+}
+
+impl Spacing {
+    /// The names of the arc and of its straight twin: above the arc's top and right of the
+    /// twin's end at the page's camera; once orbited, the first place round those that covers no
+    /// ghost, ball (the frame draws them as meshes and points, which the search does not see),
+    /// line or the other name, on the last frame's view.
+    fn name_paths(&self, frame: &mut Frame, ghost: impl Fn(usize) -> f32, p: Vec3, time: f32) {
+        use crate::draw::Label;
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let (a, b) = (START + TWIN_OFFSET, END + TWIN_OFFSET);
+        // Every round thing (centre, radius in metres) and the twin's thin line, sampled.
+        let mut round: Vec<(Vec3, f32)> = (0..self.ghosts)
+            .flat_map(|k| {
+                let f = ghost(k);
+                [
+                    (
+                        arc_point(START, END, Vec3::Y, self.arc_height, f),
+                        GHOST_RADIUS,
+                    ),
+                    (a.lerp(b, f), GHOST_RADIUS),
+                ]
+            })
+            .collect();
+        round.push((p, RADIUS * MAX_STRETCH));
+        round.push((a.lerp(b, self.along(time)), RADIUS));
+        round.extend((0..=16).map(|k| (a.lerp(b, k as f32 / 16.0), 0.0)));
+        let clear = |rect: crate::draw::layout::Rect| {
+            let Some((view_proj, size)) = view else {
+                return true;
+            };
+            let at = |p| crate::camera::project_to_canvas(view_proj, size, p);
+            round.iter().all(|&(c, r)| {
+                let (Some(centre), Some(edge)) = (at(c), at(c + Vec3::Y * r)) else {
+                    return true;
+                };
+                rect.nearest(centre).distance(centre) > centre.distance(edge) + 3.0
+            })
+        };
+        let top = START.lerp(END, 0.5) + Vec3::Y * self.arc_height;
+        for (anchor, first, text, color) in [
+            (top, top + Vec3::Y * 0.4, "arc", BALL),
+            (b, b + Vec3::new(0.3, 0.45, 0.0), "straight line", PLAIN),
+        ] {
+            let up = -glam::Vec2::Y;
+            let mut around = Label::around_dot(anchor, 0.0, up, text, color, 1, 8, 10.0);
+            around.insert(
+                0,
+                Label::off_dot(first, 0.0, glam::Vec2::ZERO, text.into(), color, 1),
+            );
+            frame.first_clear_label_by(view, 3.0, around, &clear);
+        }
     }
 }
 
@@ -803,6 +867,9 @@ impl FollowThrough {
 /// the direction of motion.
 pub const KEPT: Vec3 = palette::ORANGE;
 pub const GROWN: Vec3 = palette::GREY;
+/// The right ball's surface: a pale grey, on which the dark dashed outline at rest shows (the
+/// name keeps [`GROWN`], the caption's grey).
+const GROWN_SURFACE: Vec3 = palette::GRID;
 pub const DIRECTION: Vec3 = palette::BLUE;
 /// Radius of the stretch figure's balls at rest, metres.
 pub const STRETCH_RADIUS: f32 = 0.5;
@@ -881,7 +948,8 @@ impl StretchComparison {
             let model = Mat4::from_translation(centre)
                 * Mat4::from_mat3(m)
                 * Mat4::from_scale(Vec3::splat(STRETCH_RADIUS));
-            frame.mesh(MeshId::SPHERE, model, color);
+            let surface = if color == GROWN { GROWN_SURFACE } else { color };
+            frame.mesh(MeshId::SPHERE, model, surface);
             // The ball at rest, as a dashed outline in the picture's plane, over the ball.
             let circle: Vec<Vec3> = (0..=64)
                 .map(|k| {
@@ -892,7 +960,17 @@ impl StretchComparison {
             let mut rest = crate::draw::StrokeStyle::dashed(2.0, 0.07, 0.05);
             rest.on_top = true;
             frame.stroke(&circle, palette::DARK, rest);
-            frame.label(centre + Vec3::new(0.0, -1.45, 0.0), title, color);
+            // The name 0.3 m under the ball's lowest point (its half-height is the length of the
+            // map's second row times the radius), at any stretch and direction.
+            let below = STRETCH_RADIUS * m.row(1).length() + 0.3;
+            frame.label_off_dot(
+                centre - Vec3::Y * below,
+                0.0,
+                glam::Vec2::Y,
+                title,
+                color,
+                0,
+            );
             // Longer than the ball at every stretch, so both ends show.
             let reach = STRETCH_RADIUS * self.stretch.max(1.0) + 0.35;
             frame.arrow(centre - a * reach, centre + a * reach, DIRECTION, 0.12);

@@ -68,6 +68,8 @@ pub struct MeshStorage {
     indices: Vec<u32>,
     /// The direction the dense sphere's marked patch faces (unit).
     facing: Vec3,
+    /// The last frame's camera and canvas size (CSS pixels), which the labels are placed for.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 impl Default for MeshStorage {
@@ -84,6 +86,7 @@ impl MeshStorage {
             positions: Vec::new(),
             indices: Vec::new(),
             facing: PATCH_FACING,
+            view: None,
         };
         s.rebuild();
         s
@@ -97,6 +100,16 @@ impl MeshStorage {
         let to_eye = eye - MESH_MIDDLE;
         if to_eye.is_finite() && to_eye.length() > 1e-3 {
             self.facing = to_eye.normalize();
+        }
+    }
+
+    /// The last frame's camera and canvas size (CSS pixels): the patch faces its eye
+    /// ([`Self::set_eye`]) and the labels take places clear of the lines, dots and the other
+    /// sphere on it. A size that is not positive and finite is ignored.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        self.set_eye(camera.eye());
+        if width_px > 0.0 && height_px > 0.0 && (width_px * height_px).is_finite() {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
         }
     }
 
@@ -199,12 +212,17 @@ impl MeshStorage {
         frame.grid(12, 0.5);
         let small = self.positions.len() <= 12;
         let dense = self.is_dense();
+        // A marker's outline takes 2.5 px of its radius: 8 px shows a disc of colour, which the
+        // soup's triangles, pulled to half their size, leave room for round each position up to
+        // 10 segments. Beyond, and on the dense patch, the dots must stay apart more than show
+        // their colour.
         let dot = match (small, dense) {
             (true, _) => 12.0,
+            (false, false) if self.segments <= 10 => 8.0,
             (false, false) => 6.0,
             (false, true) => 4.0,
         };
-        let keep = if dense { 0.6 } else { 0.78 };
+        let keep = if dense { 0.6 } else { 0.5 };
         // Soup: each triangle shrunk towards its centre, its own three corners.
         for tri in self.indices.chunks_exact(3) {
             let [a, b, c] = [tri[0], tri[1], tri[2]].map(|i| self.positions[i as usize]);
@@ -220,17 +238,13 @@ impl MeshStorage {
                 frame.polyline(&[pa, pb, pc, pa], faint(SOUP_COLOR));
             }
         }
-        if small {
-            // Number the soup's triangles as the listing beside the figure does.
-            for (t, tri) in self.indices.chunks_exact(3).enumerate() {
-                let centre = tri
-                    .iter()
-                    .map(|&i| self.positions[i as usize])
-                    .sum::<Vec3>()
-                    / 3.0;
-                frame.label(left + centre * 1.15, format!("t{t}"), SOUP_COLOR);
-            }
-        }
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        // The least gap between a label and a line or dot: one that touches a line reads as
+        // part of it. Wide, as the search samples each line at 17 points: a line that crosses
+        // a label's corner between two of them is still kept off.
+        const LINE_MARGIN_PX: f32 = 4.0;
         // Indexed: each edge drawn once (from the triangle where a < b, or from both if the mesh
         // is open, which ours is not), each position once.
         for tri in self.indices.chunks_exact(3) {
@@ -246,28 +260,113 @@ impl MeshStorage {
                 }
             }
         }
-        for (i, p) in self.positions.iter().enumerate() {
+        for p in &self.positions {
             if self.marked(*p) {
                 frame.marker(right + *p, dot * 1.2, INDEXED_COLOR);
-            }
-            if small {
-                frame.label_with_priority(right + *p * 1.18, i.to_string(), palette::DARK, 1);
             }
         }
         frame.keep_box_in_view(
             left - Vec3::splat(1.1),
             right + Vec3::splat(1.1) + Vec3::Y * 0.3,
         );
-        frame.label(
-            left + Vec3::Y * 1.35,
-            format!("triangle soup: {}", bytes(s.soup_bytes)),
-            SOUP_COLOR,
-        );
-        frame.label(
-            right + Vec3::Y * 1.35,
-            format!("indexed: {}", bytes(s.indexed_bytes)),
-            INDEXED_COLOR,
-        );
+        // Each sphere's disc on the last frame's view (centre and radius, CSS pixels, the radius
+        // from points 1.2 m off the centre along the axes: a sphere's outline in perspective is
+        // a little wider than its axes' ends): the names keep off both, so that neither name
+        // reads as the other sphere's.
+        let disc = |c: Vec3| {
+            let (view_proj, size) = view?;
+            let at = |p| crate::camera::project_to_canvas(view_proj, size, p);
+            let centre = at(c)?;
+            let r = [Vec3::X, Vec3::Y, Vec3::Z]
+                .iter()
+                .filter_map(|&a| Some(at(c + a * 1.2)?.distance(centre)))
+                .fold(0.0, f32::max);
+            Some((centre, r))
+        };
+        let discs = [disc(left), disc(right)];
+        let off_discs = |rect: crate::draw::layout::Rect| {
+            discs
+                .iter()
+                .flatten()
+                .all(|&(c, r)| rect.nearest(c).distance(c) > r)
+        };
+        // The names above their spheres at the page's camera; once orbited, the first place round
+        // the sphere's disc (as a dot as wide) that covers neither sphere.
+        for (centre, disc, text, color) in [
+            (
+                left,
+                discs[0],
+                format!("triangle soup: {}", bytes(s.soup_bytes)),
+                SOUP_COLOR,
+            ),
+            (
+                right,
+                discs[1],
+                format!("indexed: {}", bytes(s.indexed_bytes)),
+                INDEXED_COLOR,
+            ),
+        ] {
+            let width = disc.map_or(0.0, |d| 2.0 * d.1);
+            let mut around = Label::around_dot(centre, width, -Vec2::Y, &text, color, 2, 4, 12.0);
+            around.insert(
+                0,
+                Label {
+                    anchor: centre + Vec3::Y * 1.35,
+                    text,
+                    color,
+                    left: false,
+                    priority: 2,
+                    offset_px: Vec2::ZERO,
+                    large: false,
+                },
+            );
+            frame.first_clear_label_by(view, 0.0, around, &off_discs);
+        }
+        if small {
+            // Number the soup's triangles as the listing beside the figure does, each at the
+            // first place clear of the lines, dots and other names: on its face's centre, else
+            // round it, else round a point out from the face (a face turned away from the eye
+            // has its centre among the near faces' lines); the indexed positions likewise round
+            // their dots.
+            for (t, tri) in self.indices.chunks_exact(3).enumerate() {
+                let centre = left
+                    + tri
+                        .iter()
+                        .map(|&i| self.positions[i as usize])
+                        .sum::<Vec3>()
+                        / 3.0;
+                let text = format!("t{t}");
+                let out = left + (centre - left).normalize_or_zero() * 1.6;
+                let mut around =
+                    Label::around_dot(centre, 0.0, Vec2::ZERO, &text, SOUP_COLOR, 1, 6, 6.0);
+                around.extend(Label::around_dot(
+                    out,
+                    0.0,
+                    Vec2::ZERO,
+                    &text,
+                    SOUP_COLOR,
+                    1,
+                    6,
+                    8.0,
+                ));
+                let on = Label::off_dot(centre, 0.0, Vec2::ZERO, text, SOUP_COLOR, 1);
+                around.insert(0, on);
+                frame.first_clear_label_by(view, LINE_MARGIN_PX, around, |_| true);
+            }
+            for (i, p) in self.positions.iter().enumerate() {
+                let around = Label::around_dot(
+                    right + *p,
+                    dot * 1.2,
+                    Vec2::ZERO,
+                    &i.to_string(),
+                    palette::DARK,
+                    1,
+                    8,
+                    6.0,
+                );
+                frame.first_clear_label_by(view, LINE_MARGIN_PX, around, |_| true);
+            }
+        }
         let patch = if dense {
             format!(
                 " Dots only on the patch facing you: {} corners of the soup, {} positions indexed.",
@@ -318,6 +417,9 @@ const LAMP_PX: f32 = 16.0;
 const IMAGE_PX: f32 = 10.0;
 /// Where the NDC box of Figure 2 stands (its centre of the near face).
 const NDC_ORIGIN: Vec3 = Vec3::new(9.0, 1.2, -2.0);
+/// The far plane's half-width at the page's defaults (50°, z_far 8 m, aspect 1.5), beside which
+/// the NDC box is drawn at its own size.
+const NDC_FAR_HALF_WIDTH: f32 = 5.6;
 
 /// Figure 2: a camera's frustum (field of view, z_near, z_far), a point that travels along the
 /// view direction through it, and the same point in normalised device coordinates (the box on
@@ -552,8 +654,12 @@ impl Frustum {
         let candidates =
             Label::around_dot(EYE + on_near, dot_px, Vec2::ONE, "image", ON_NEAR, 0, 4, 6.0);
         frame.first_clear_label(view, candidates);
-        // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z.
-        let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
+        // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z, all
+        // scaled (with its place right of the eye) by k, how much wider the far plane is than
+        // at the page's defaults: beside a wide or deep frustum the box keeps its share of the
+        // picture instead of shrinking to a few pixels.
+        let k = (half_h(self.far) * Self::ASPECT / NDC_FAR_HALF_WIDTH).max(1.0);
+        let ndc_to_world = |v: Vec3| EYE + (NDC_ORIGIN - EYE + Vec3::new(v.x, v.y, -2.0 * v.z)) * k;
         let box_corners: Vec<Vec3> = [0.0, 1.0]
             .iter()
             .flat_map(|&z| {
@@ -612,7 +718,7 @@ impl Frustum {
         // rightmost thing in the page's view.
         frame
             .keep_in_view
-            .extend([2, 6].map(|k| box_corners[k] + Vec3::X * 1.4));
+            .extend([2, 6].map(|i| box_corners[i] + Vec3::X * 1.4 * k));
         let d = self.distance_at(s);
         let mut note = format!(
             "Distance d = {} m: depth {} (wgpu), {} (OpenGL); the wgpu depth passes 0.5 at d = {} m. {}",

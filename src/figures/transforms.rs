@@ -217,12 +217,6 @@ impl SingleShape {
             self.matrix_at(ghost, stage) * Mat4::from_scale(BOX_HALF),
             ghost.color(),
         );
-        // Each order's name straight above its box's centre, past the tip of the box's y axis
-        // (0.6 m, however the box has turned), so the axis never runs through the name.
-        for order in [shown, ghost] {
-            let top = self.matrix_at(order, stage).w_axis.truncate() + Vec3::Y * 0.75;
-            frame.label_with_priority(top, order.name(), order.color(), 3);
-        }
         // The paths of the two centres: T·R stays at the origin while it turns, then slides
         // straight to t; R·T slides to t first (the same segment, drawn wide underneath so both
         // show), then swings about the world origin along the arc.
@@ -252,6 +246,27 @@ impl SingleShape {
         let view = view_of(self.view);
         let ghost_m = self.matrix_at(ghost, stage);
         let boxes = boxes_px(&[m, ghost_m].map(|b| b * Mat4::from_scale(BOX_HALF)), view);
+        // Each order's name straight above its box's centre, past the tip of the box's y axis
+        // (0.6 m, however the box has turned); where an axis, path or dot runs through it there
+        // (the x axis's head when the box has turned half round), the first place round that
+        // point clear of them and of the boxes, upwards first.
+        for order in [shown, ghost] {
+            let top = self.matrix_at(order, stage).w_axis.truncate() + Vec3::Y * 0.75;
+            let (name, color) = (order.name(), order.color());
+            let mut candidates = Label::around_dot(top, 0.0, -Vec2::Y, name, color, 3, 8, 8.0);
+            let above = Label {
+                anchor: top,
+                text: name.into(),
+                color,
+                left: false,
+                priority: 3,
+                offset_px: Vec2::ZERO,
+                large: false,
+            };
+            candidates.insert(0, above);
+            // 8 px off the boxes' sampled points, a quarter of a box apart on the canvas.
+            frame.first_clear_label_by(view, 2.0, candidates, off_points(&boxes, 8.0));
+        }
         // Without a view: p's name rightwards, v's leftwards from past the tip, off the arrow.
         for (at, from, text, otherwise) in [
             (p, centre, "p (w = 1)", Vec2::X),
@@ -324,21 +339,40 @@ fn wire_box(frame: &mut Frame, model: Mat4, color: Vec3) {
 }
 
 /// Names the point `at` of Figure 2's body beside the body, joined to it by a thin guide line: at
-/// the point itself the name would sit on the boxes. Points on the figure's left (x > 0.05) are
-/// named to that side, the others to its right side, where the name reads leftwards.
-fn name_beside(frame: &mut Frame, at: Vec3, name: &str, color: Vec3) {
-    let (x, left) = if at.x > 0.05 {
-        (at.x.max(0.3) + 0.3, false)
-    } else {
-        (at.x.min(-0.3) - 0.3, true)
-    };
-    let beside = Vec3::new(x, at.y + 0.1, at.z);
+/// the point itself the name would sit on the boxes. The name goes `right` (the camera's right,
+/// world space) of the point, or left of it reading leftwards, 0.3 m past the point or past
+/// 0.3 m from the middle, whichever is further, and further out in steps of 0.15 m, at the
+/// first place whose box covers none of the `body`'s points (canvas pixels),
+/// dots, lines or names on `view`; without a view, to the figure's left (x > 0) for a point there
+/// and to its right otherwise.
+fn name_beside(
+    frame: &mut Frame,
+    at: Vec3,
+    name: &str,
+    color: Vec3,
+    right: Vec3,
+    view: Option<(Mat4, Vec2)>,
+    body: &[Vec2],
+) {
+    let along = at.dot(right);
+    let first = if along > 0.05 { 1.0 } else { -1.0 };
+    let candidates = (0..10).flat_map(|k| {
+        // At least 0.3 m out along `right` (past the arms, from the body's middle), then 0.3 m
+        // and more beyond.
+        let out = |side: f32| (along * side).max(0.3) + 0.3 + 0.15 * k as f32;
+        [first, -first].map(|side| Label {
+            anchor: at + right * (side * out(side) - along) + Vec3::Y * 0.1,
+            text: name.to_string(),
+            color,
+            left: side < 0.0,
+            priority: 1,
+            offset_px: Vec2::ZERO,
+            large: false,
+        })
+    });
+    frame.first_clear_label_by(view, 2.0, candidates, off_points(body, 2.0));
+    let beside = frame.labels.last().map_or(at, |l| l.anchor);
     frame.wide_line_on_top(at, beside, color, 1.0);
-    if left {
-        frame.label_left(beside, name, color);
-    } else {
-        frame.label(beside, name, color);
-    }
 }
 
 /// A box drawn in a joint's frame that is not a joint of its own: the nose and the feet, so that
@@ -390,6 +424,8 @@ pub struct HierarchyFigure {
     angles: Vec<Vec3>,
     thigh: usize,
     forearm: usize,
+    /// The last frame's camera and canvas size (CSS pixels), which the names are placed for.
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for HierarchyFigure {
@@ -415,6 +451,7 @@ impl HierarchyFigure {
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             probe_note: None,
+            view: None,
             local: vec![Mat4::IDENTITY; n],
             world: vec![Mat4::IDENTITY; n],
             draw: vec![Mat4::IDENTITY; n],
@@ -673,6 +710,14 @@ impl HierarchyFigure {
         note
     }
 
+    /// The last frame's camera and canvas size (CSS pixels): the names beside the body take
+    /// places off its boxes on it. A size that is not positive and finite is ignored.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 && (width_px * height_px).is_finite() {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
+    }
+
     /// Poses the figure at `time_sec` and draws it. Returns the note for the page.
     pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let note = self.pose(time_sec)?;
@@ -728,8 +773,25 @@ impl HierarchyFigure {
         }
         let selected = placement * self.world[self.selected];
         frame.labelled_axes(selected, 0.25);
-        name_beside(
-            frame,
+        let view = view_of(self.view);
+        let models: Vec<Mat4> = (self.shapes.iter().zip(&self.draw))
+            .map(|(shape, draw)| {
+                placement
+                    * *draw
+                    * Mat4::from_translation(shape.center)
+                    * Mat4::from_scale(shape.half_extents)
+            })
+            .collect();
+        let body = boxes_px(&models, view);
+        // The camera's right on the page (world x before the first frame): names go beside
+        // the body across the screen, whichever way the camera has turned.
+        let right = self
+            .view
+            .map_or(Vec3::X, |(camera, _)| camera.view().row(0).truncate());
+        let mut name = |at: Vec3, text: &str, color: Vec3| {
+            name_beside(frame, at, text, color, right, view, &body)
+        };
+        name(
             pivot(self.selected),
             &self.hierarchy.names()[self.selected],
             palette::DARK,
@@ -741,10 +803,10 @@ impl HierarchyFigure {
             .iter()
             .position(|&p| p == self.thigh as i32);
         let thigh_mid = knee.map_or(pivot(self.thigh), |k| (pivot(self.thigh) + pivot(k)) * 0.5);
-        name_beside(frame, thigh_mid, "left thigh", palette::PURPLE);
+        name(thigh_mid, "left thigh", palette::PURPLE);
         let wrist = placement.transform_point3(self.wrist());
+        name(wrist, "left wrist", palette::PINK);
         frame.marker_on_top(wrist, 11.0, palette::PINK);
-        name_beside(frame, wrist, "left wrist", palette::PINK);
     }
 
     /// One walk cycle of the *current* figure (its pose, scales and scale mode, with the walk

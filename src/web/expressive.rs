@@ -84,6 +84,9 @@ impl SpacingScene {
 
     /// Draws the figure at `time_sec` into the loop; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        // The view the paths' names are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, time_sec)

@@ -41,8 +41,10 @@ impl MeshStorageScene {
 
     /// Draws both storages; returns the note with their sizes.
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
-        // The dense sphere's patch of dots faces the last frame's eye.
-        self.scene.set_eye(viewer.camera.eye());
+        // The dense sphere's patch of dots faces the last frame's eye; the labels are placed for
+        // its view.
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)

@@ -185,6 +185,9 @@ impl HierarchyScene {
     /// Poses the figure at `time_sec` and draws it. Returns the note for the page: empty, or what
     /// the student's exercises did.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
+        // The view the names beside the body are placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, time_sec)

@@ -292,3 +292,179 @@ fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbi
     }
     assert_none_failed(&failures);
 }
+
+/// The canvas disc (centre, radius) of a unit sphere at `centre` on `camera`'s view: the
+/// farthest of 26 points round it from its centre's projection.
+fn sphere_disc(centre: Vec3, camera: &OrbitCamera, size: Vec2) -> (Vec2, f32) {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let at = |p| project_to_canvas(view_proj, size, p).unwrap();
+    let c = at(centre);
+    let mut r: f32 = 0.0;
+    for x in -1..=1 {
+        for y in -1..=1 {
+            for z in -1..=1 {
+                let d = Vec3::new(x as f32, y as f32, z as f32).normalize_or_zero();
+                r = r.max(at(centre + d).distance(c));
+            }
+        }
+    }
+    (c, r)
+}
+
+#[test]
+fn lesson_00_mesh_names_keep_off_both_spheres_when_orbited() {
+    // Figure 1 (lessons/00-triangles-to-pixels/lesson.js: target (0, 1.2, 0), distance 5.6,
+    // yaw 0, pitch 0.3), orbited round (a drag across the canvas turns it by up to 1.6 rad), at
+    // 8 and 51 segments: each sphere's name covers neither sphere's disc (a name over the other
+    // sphere reads as its name) nor a dot or line, where the figure put it.
+    use inbetween::figures::raster::MeshStorage;
+    let mut failures = Vec::new();
+    for segments in [8.0, 51.0] {
+        for yaw in [-1.6, -1.04, -0.5, 0.0, 0.5, 1.04, 1.6] {
+            for pitch in [0.1, 0.3, 0.64] {
+                for size in CANVASES {
+                    failures.extend(failure_of(|| {
+                        let mut scene = MeshStorage::new();
+                        scene.set_segments(segments).unwrap();
+                        let view = [0.0, 1.2, 0.0, 5.6, yaw, pitch];
+                        let (frame, camera) = drawn_for_view(
+                            &mut scene,
+                            view,
+                            size,
+                            |fig, out| {
+                                fig.draw(out);
+                            },
+                            |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                        );
+                        let name =
+                            format!("00 mesh, {segments} segments, yaw {yaw}, pitch {pitch}");
+                        let discs =
+                            [-1.4, 1.4].map(|x| sphere_disc(Vec3::new(x, 1.2, 0.0), &camera, size));
+                        let placed = layout(&frame, &camera, size);
+                        for (i, (l, b, p)) in placed.iter().enumerate() {
+                            if !(l.text.starts_with("triangle soup")
+                                || l.text.starts_with("indexed"))
+                            {
+                                continue;
+                            }
+                            let rect = Rect {
+                                min: p.top_left,
+                                size: b.size,
+                            };
+                            for (c, r) in discs {
+                                assert!(
+                                    rect.nearest(c).distance(c) > r,
+                                    "{name} on {size}: {:?} at {:?} over the sphere at {c}",
+                                    l.text,
+                                    rect.min
+                                );
+                            }
+                            assert_shown_clear_by(&name, &frame, &camera, size, &[i], 0.0);
+                        }
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_00_tetrahedron_numbers_keep_off_its_lines_and_apart() {
+    // Figure 1 with the tetrahedron, at its page camera and orbited: the triangles' names (t0
+    // to t3) and the positions' numbers (0 to 3) cover no dot or line (keeping 2 px off them:
+    // a number on an edge reads as the edge's) and keep 2 px from each other.
+    use inbetween::figures::raster::MeshStorage;
+    let mut failures = Vec::new();
+    for yaw in [-1.04, -0.5, 0.0, 0.5, 1.04] {
+        for pitch in [0.1, 0.3, 0.64] {
+            for size in CANVASES {
+                failures.extend(failure_of(|| {
+                    let mut scene = MeshStorage::new();
+                    scene.set_shape("tetrahedron").unwrap();
+                    let view = [0.0, 1.2, 0.0, 5.6, yaw, pitch];
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw(out);
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name = format!("00 tetrahedron, yaw {yaw}, pitch {pitch}");
+                    let small: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| frame.labels[i].text.len() <= 2)
+                        .collect();
+                    assert_eq!(small.len(), 8, "{name}: four t-names and four numbers");
+                    assert_shown_clear_by(&name, &frame, &camera, size, &small, 2.0);
+                    let placed = layout(&frame, &camera, size);
+                    let boxes: Vec<(String, Rect)> = small
+                        .iter()
+                        .map(|&i| {
+                            let (l, b, p) = &placed[i];
+                            (
+                                l.text.clone(),
+                                Rect {
+                                    min: p.top_left,
+                                    size: b.size,
+                                },
+                            )
+                        })
+                        .collect();
+                    for (i, (a, ra)) in boxes.iter().enumerate() {
+                        for (b, rb) in &boxes[i + 1..] {
+                            assert!(
+                                !ra.overlaps(rb, 2.0),
+                                "{name} on {size}: {a:?} at {:?} touches {b:?} at {:?}",
+                                ra.min,
+                                rb.min
+                            );
+                        }
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_00_ndc_box_keeps_its_size_beside_a_wide_frustum() {
+    // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js) with the field of
+    // view and z_far at the top of their sliders: the far plane is many times wider than at the
+    // defaults, and the NDC box beside it must still span at least an eighth of the canvas's
+    // width, as it does at the defaults, rather than shrink to a few pixels.
+    use inbetween::figures::raster::Frustum;
+    for (fov, near, far) in [
+        (50.0, 1.0, 8.0),
+        (121.0, 3.95, 15.9),
+        (150.0, 1.0, 20.0),
+        (90.0, 0.1, 20.0),
+    ] {
+        let mut scene = Frustum::new();
+        scene.set_frustum(fov, near, far).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, 0.5).unwrap();
+        for size in CANVASES {
+            let camera = page_camera([4.5, 1.2, -4.0, 17.0, 0.45, 0.45], &frame, size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            // The box's edges are its teal lines (near face to far face).
+            let teal = inbetween::figures::raster::frustum_colors::NDC_BOX.to_array();
+            let xs: Vec<f32> = frame
+                .strokes
+                .iter()
+                .filter(|s| s.color[..3] == teal)
+                .flat_map(|s| [s.a, s.b])
+                .map(|p| project_to_canvas(view_proj, size, Vec3::from(p)).unwrap().x)
+                .collect();
+            assert_eq!(xs.len(), 8, "four teal edges");
+            let width = xs.iter().fold(f32::MIN, |m, &x| m.max(x))
+                - xs.iter().fold(f32::MAX, |m, &x| m.min(x));
+            assert!(
+                width > size.x / 8.0,
+                "fov {fov}, z_near {near}, z_far {far} on {size}: the NDC box {width} px wide"
+            );
+        }
+    }
+}

@@ -179,3 +179,114 @@ fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
         }
     }
 }
+
+#[test]
+fn lesson_01_order_names_keep_off_the_axes_when_the_box_turns_half_round() {
+    // Figure 1 from the page's camera and after the page test's drag, with the box turned
+    // about z by 180° and 90° (its x axis's head then points back at the name above the box),
+    // both orders solid, over the steps: "T·R" and "R·T" cover no dot or line (the axes'
+    // heads included) and neither box.
+    use inbetween::figures::transforms::{Order, SingleShape};
+    let page = [0.5, 0.3, 0.0, 5.0, 0.6, 0.45];
+    let mut failures = Vec::new();
+    for angles in [
+        Vec3::new(0.0, 0.0, 180.0),
+        Vec3::new(0.0, 0.0, 90.0),
+        Vec3::splat(-109.0),
+    ] {
+        for order in [Order::RotateFirst, Order::TranslateFirst] {
+            let mut scene = SingleShape::new();
+            scene
+                .set_transform(Vec3::new(1.0, 0.5, 0.0), angles)
+                .unwrap();
+            scene.set_order(order);
+            for stage in [0.0, 0.5, 1.0, 1.5, 2.0] {
+                for view in [
+                    page,
+                    [0.5, 0.3, 0.0, 5.0, 0.6 - 0.008 * 130.0, 0.45 + 0.008 * 42.0],
+                ] {
+                    for size in CANVASES {
+                        let (frame, camera) = drawn_for_view(
+                            &mut scene,
+                            view,
+                            size,
+                            |fig, out| {
+                                fig.draw(out, stage).unwrap();
+                            },
+                            |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                        );
+                        let name = format!(
+                            "01 orders, angles {angles}, {order:?}, stage {stage}, view {view:?}"
+                        );
+                        let boxes = cube_points(&frame, &camera, size);
+                        let named = |text: &str| text == "T·R" || text == "R·T";
+                        failures.extend(failure_of(|| {
+                            assert_clear_of(&name, &frame, &camera, size, named);
+                            let mut only = frame.clone();
+                            only.labels.retain(|l| named(&l.text));
+                            assert_off(&name, &only, &camera, size, &boxes);
+                        }));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_01_body_names_keep_off_the_body_when_orbited_and_scaled() {
+    // Figure 2 (lessons/01-transforms/lesson.js: target (0, 0.9, 0), distance 3.6, yaw 0.45,
+    // pitch 0.2) from the page's camera and orbited round, through the walk, at rest scale and
+    // with the page test's settings (forearm.L selected, turned (−22°, −109°, −109°), scaled
+    // by 2.42 with children inheriting it): "left wrist", "left thigh" and the selected joint's
+    // name cover none of the body's boxes (their guide lines join them to what they name).
+    use inbetween::figures::transforms::HierarchyFigure;
+    let mut failures = Vec::new();
+    for moved in [false, true] {
+        for yaw in [0.45, 0.45 - 1.04, -1.2, 1.6, 2.8] {
+            for pitch in [0.2, 0.54] {
+                for time in [0.0, 0.3, 0.7] {
+                    for size in CANVASES {
+                        failures.extend(failure_of(|| {
+                            let mut scene = HierarchyFigure::new();
+                            if moved {
+                                let forearm = scene
+                                    .joint_names()
+                                    .iter()
+                                    .position(|n| n == "forearm.L")
+                                    .unwrap();
+                                scene.select(forearm).unwrap();
+                                scene
+                                    .set_joint_angles_deg(forearm, Vec3::new(-22.0, -109.0, -109.0))
+                                    .unwrap();
+                                scene.set_joint_scale(forearm, Vec3::splat(2.42)).unwrap();
+                                scene.set_inherit_scale(true);
+                                scene.set_animate(true);
+                            }
+                            let view = [0.0, 0.9, 0.0, 3.6, yaw, pitch];
+                            let (frame, camera) = drawn_for_view(
+                                &mut scene,
+                                view,
+                                size,
+                                |fig, out| {
+                                    fig.draw(out, time).unwrap();
+                                },
+                                |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                            );
+                            let name = format!(
+                                "01 body, moved {moved}, yaw {yaw}, pitch {pitch}, t {time}"
+                            );
+                            let boxes = cube_points(&frame, &camera, size);
+                            let mut only = frame.clone();
+                            only.labels.retain(|l| l.priority == 1 && l.text.len() > 2);
+                            assert_eq!(only.labels.len(), 3, "{name}: three names");
+                            assert_off(&name, &only, &camera, size, &boxes);
+                        }));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

@@ -13,6 +13,7 @@ use inbetween::draw::{project_labels, Frame, ScreenLabel};
 mod lesson_00;
 mod lesson_01;
 mod lesson_02;
+mod lesson_02b;
 mod lesson_03;
 mod lesson_04;
 mod lesson_05;

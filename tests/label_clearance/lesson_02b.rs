@@ -1,0 +1,91 @@
+//! Lesson 02b: its figures' labels keep clear of what they name (see main.rs).
+
+use super::*;
+
+#[test]
+fn lesson_02b_path_names_keep_off_the_ghosts_and_balls_when_orbited() {
+    // Figure 1 with the straight line beside (lessons/02b-expressive-animation/lesson.js: target
+    // (0, 0.9, 0), distance 7.5, yaw 0, pitch 0.35), orbited round, at the page's 12 ghosts and at
+    // 48, at a few times of the loop: "arc" and "straight line" are shown where the figure put
+    // them, cover no ghost or ball (their discs on the canvas), no dot or wide line, and keep
+    // apart.
+    use inbetween::figures::expressive::Spacing;
+    let mut failures = Vec::new();
+    for ghosts in [12.0, 48.0] {
+        for yaw in [-1.6, -1.04, -0.5, 0.0, 0.5, 1.04, 1.6] {
+            for pitch in [0.1, 0.35, 0.7] {
+                for time in [0.0, 0.4, 0.75, 2.2] {
+                    for size in CANVASES {
+                        failures.extend(failure_of(|| {
+                            let mut scene = Spacing::new();
+                            scene.set_ghosts(ghosts).unwrap();
+                            let view = [0.0, 0.9, 0.0, 7.5, yaw, pitch];
+                            let (frame, camera) = drawn_for_view(
+                                &mut scene,
+                                view,
+                                size,
+                                |fig, out| {
+                                    fig.draw(out, time).unwrap();
+                                },
+                                |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                            );
+                            let name = format!(
+                                "02b spacing, {ghosts} ghosts, yaw {yaw}, pitch {pitch}, t {time}"
+                            );
+                            let view_proj = camera.projection(size.x / size.y) * camera.view();
+                            let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+                            // The ghosts (points) and the balls (meshes, by their translation).
+                            let mut discs: Vec<(Vec2, f32)> = frame
+                                .points
+                                .iter()
+                                .map(|p| {
+                                    let c = Vec3::from(p.center);
+                                    (at(c), at(c).distance(at(c + Vec3::Y * p.radius.abs())))
+                                })
+                                .collect();
+                            for m in &frame.meshes {
+                                let model = m.model;
+                                let c = model.w_axis.truncate();
+                                let r = model
+                                    .x_axis
+                                    .truncate()
+                                    .length()
+                                    .max(model.y_axis.truncate().length());
+                                if r < 0.5 {
+                                    discs.push((at(c), at(c).distance(at(c + Vec3::Y * r))));
+                                }
+                            }
+                            let placed = layout(&frame, &camera, size);
+                            let mut boxes = Vec::new();
+                            for (i, (l, b, p)) in placed.iter().enumerate() {
+                                if l.text != "arc" && l.text != "straight line" {
+                                    continue;
+                                }
+                                let rect = Rect {
+                                    min: p.top_left,
+                                    size: b.size,
+                                };
+                                for &(c, r) in &discs {
+                                    assert!(
+                                        rect.nearest(c).distance(c) > r,
+                                        "{name} on {size}: {:?} at {:?} over a ball at {c}",
+                                        l.text,
+                                        rect.min
+                                    );
+                                }
+                                assert_shown_clear_by(&name, &frame, &camera, size, &[i], 0.0);
+                                boxes.push(rect);
+                            }
+                            assert_eq!(boxes.len(), 2, "{name}: both names");
+                            assert!(
+                                !boxes[0].overlaps(&boxes[1], 2.0),
+                                "{name} on {size}: names touch"
+                            );
+                        }));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
