@@ -738,6 +738,9 @@ pub struct ImpulseFigure {
     stopped: Option<f32>,
     /// Per step: `[t, centre height, lowest point's normal velocity, kinetic energy]`.
     history: Vec<[f32; 4]>,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the names of the
+    /// arrows take the sides of their heads that keep them off the lines and the boxes.
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for ImpulseFigure {
@@ -762,9 +765,18 @@ impl ImpulseFigure {
             after: None,
             stopped: None,
             history: Vec::new(),
+            view: None,
         };
         f.restart();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the names of the arrows are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The tilt about the world z axis (degrees, 0 to 45), the coefficient of restitution (0 to
@@ -1120,25 +1132,48 @@ impl ImpulseFigure {
                 "ω after",
             ),
         ];
-        for (d, color, text_color, name) in arrows {
-            if d.length() > 1e-3 {
-                frame.arrow(o, o + d, color, 0.06);
-                // An arrow that points left (−x; the page's camera looks along −z) gets a name
-                // that reads leftwards from its head, not back over the head.
-                let at = o + d + 0.04 * d.normalize();
-                if d.x < 0.0 {
-                    frame.label_left(at, name, text_color);
-                } else {
-                    frame.label(at, name, text_color);
-                }
-            }
-        }
         // The impulse pushes the box up at the corner: drawn from below the ground up to the
         // contact point (from the corner up it would be hidden inside the box).
         let j_tail = hit.point - Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE).max(0.05);
         frame.arrow(j_tail, hit.point, palette::RED, 0.06);
-        frame.label(j_tail + Vec3::new(0.04, 0.0, 0.0), "j n", palette::RED);
         frame.marker_on_top(hit.point, 12.0, palette::DARK);
+        let mut names = vec![(j_tail.lerp(hit.point, 0.5), Vec3::X, "j n", palette::RED)];
+        for (d, color, text_color, name) in arrows {
+            if d.length() > 1e-3 {
+                frame.arrow(o, o + d, color, 0.06);
+                names.push((o + d, d, name, text_color));
+            }
+        }
+        // Each name beside its arrow's head (the impulse's beside its shaft), on the side the
+        // arrow points to first, then round it, keeping off every line, dot and name and off
+        // both boxes (the box now and the box at the hit), for the last frame's view.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let solid: Vec<Vec3> = [*b, then]
+            .iter()
+            .flat_map(|body| {
+                let model = Mat4::from_translation(body.position)
+                    * Mat4::from_mat3(body.rotation())
+                    * Mat4::from_scale(DROP_HALF);
+                (0..125).map(move |i| {
+                    let at = |k: i32| (k % 5) as f32 * 0.5 - 1.0;
+                    model.transform_point3(Vec3::new(at(i), at(i / 5), at(i / 25)))
+                })
+            })
+            .collect();
+        let off_boxes = super::clear_of(view, &solid);
+        for (at, d, name, color) in names {
+            let toward = view
+                .and_then(|(view_proj, size)| {
+                    let a = project_to_canvas(view_proj, size, at - d)?;
+                    Some(project_to_canvas(view_proj, size, at)? - a)
+                })
+                // Before the first frame: the page's camera looks along −z, y up.
+                .unwrap_or(Vec2::new(d.x, -d.y));
+            let candidates = Label::around_dot(at, TIP_PX, toward, name, color, 0, 6, 10.0);
+            frame.first_clear_label_by(view, 2.0, candidates, &off_boxes);
+        }
         // Rounding leftovers (a spin of 1e-6 rad/s after a level drop) read as the 0 they are.
         let clean = |x: f32| if x.abs() < 1e-4 { 0.0 } else { x };
         let v3 = |v: Vec3| {

@@ -158,3 +158,80 @@ fn lesson_14_stack_names_its_top_box_just_above_it() {
         }
     }
 }
+
+#[test]
+fn lesson_14_impulse_names_its_arrows_beside_them_off_the_boxes() {
+    // Figure 4 at the page's default camera (the figure sets none; the viewer fits it), both
+    // canvases, from the hit to the end, across tilts, restitutions and heights: every name
+    // (j n, v and ω before and after) is shown where the figure put it, 2 px off every line
+    // and dot (the arrows, the outline of the box at the hit), within 60 px of its arrow's
+    // head (j n of its shaft's middle), and off the box now and the box at the hit: a name
+    // over the box or on an arrow reads as part of it. As on the page, the figure places the
+    // names for the view of the frame before (set_view).
+    use inbetween::figures::rigid_body::{ImpulseFigure, DROP_HALF};
+    use inbetween::rigid_body::contact::corners;
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    let mut failures = Vec::new();
+    for (tilt, e, height) in [(20.0, 0.5, 1.0), (36.0, 0.2, 1.6), (0.0, 0.5, 1.0), (45.0, 1.0, 2.0), (10.0, 0.0, 0.2)] {
+        let mut f = ImpulseFigure::new();
+        f.set_drop(tilt, e, height).unwrap();
+        f.advance_to(f.duration_sec()).unwrap();
+        let hit = f.impact_details().copied().expect("a hit");
+        for k in 0..=6 {
+            let t = hit.time_sec + 0.02 + (f.duration_sec() - hit.time_sec - 0.02) * k as f32 / 6.0;
+            for size in CANVASES {
+                let mut f = f.clone();
+                f.advance_to(t).unwrap();
+                let now = *f.body();
+                let (frame, camera) = drawn_for_view(
+                    &mut f,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out);
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("14 impulse, tilt {tilt}°, e {e}, {height} m, t {t:.2} s");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let check = || {
+                    let placed = layout(&frame, &camera, size);
+                    let all: Vec<usize> = (0..placed.len()).collect();
+                    assert!(placed.len() >= 3, "{name}: {} names", placed.len());
+                    assert_shown_clear_by(&name, &frame, &camera, size, &all, 2.0);
+                    // The boxes' faces, sampled: each name's box holds none of the points.
+                    let mut then = now;
+                    then.position = hit.centre;
+                    then.orientation = hit.orientation;
+                    for body in [now, then] {
+                        let c = corners(&body, DROP_HALF);
+                        let points: Vec<Vec2> = (0..8)
+                            .flat_map(|i| (0..8).map(move |j| (i, j)))
+                            .flat_map(|(i, j)| (0..=4).map(move |s| c[i].lerp(c[j], s as f32 / 4.0)))
+                            .filter_map(|p| project_to_canvas(view_proj, size, p))
+                            .collect();
+                        for (l, b, p) in &placed {
+                            let r = Rect { min: p.top_left, size: b.size };
+                            assert!(
+                                !points.iter().any(|q| q.cmpgt(r.min).all() && q.cmplt(r.max()).all()),
+                                "{name} on {size}: {:?} at {} over a box",
+                                l.text,
+                                p.top_left
+                            );
+                        }
+                    }
+                    // Each name near what it names (its anchor: the head, or j n's shaft).
+                    for (l, b, p) in &placed {
+                        let label = frame.labels.iter().find(|f| f.text == l.text).unwrap();
+                        let tip = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                        let r = Rect { min: p.top_left, size: b.size };
+                        let gap = r.nearest(tip).distance(tip);
+                        assert!(gap <= 60.0, "{name} on {size}: {} {gap} px from its arrow", l.text);
+                    }
+                };
+                failures.extend(failure_of(check));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
