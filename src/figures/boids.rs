@@ -1273,7 +1273,7 @@ fn place_labels(
 }
 
 /// The 12 edges of the box `[lo, hi]`.
-fn box_edges(lo: Vec3, hi: Vec3) -> Vec<(Vec3, Vec3)> {
+pub(super) fn box_edges(lo: Vec3, hi: Vec3) -> Vec<(Vec3, Vec3)> {
     let c = |i: u32| {
         Vec3::new(
             if i & 1 == 0 { lo.x } else { hi.x },
