@@ -570,6 +570,9 @@ impl ThrowFigure {
         }
         let l_tip = at + THROW_ARROW_M * l_dir;
         frame.arrow(at, l_tip, palette::PURPLE, 0.08);
+        // L and ω wider than other arrows (up to their heads): they are what the figure shows,
+        // often a few degrees apart on screen.
+        frame.wide_line(at, l_tip - 0.08 * l_dir, palette::PURPLE, THROW_SHAFT_PX);
         // ω at the scale that puts its tip on the plane across L through L's tip.
         let scale = THROW_ARROW_M / along;
         let trail: Vec<Vec3> = self.omegas.iter().map(|w| at + scale * *w).collect();
@@ -577,6 +580,8 @@ impl ThrowFigure {
         frame.wide_polyline(&trail, light, 3.0);
         let w_tip = at + scale * omega;
         frame.arrow(at, w_tip, palette::TEAL, 0.08);
+        let w_head = (0.4 * (w_tip - at).length()).min(0.08);
+        frame.wide_line(at, w_tip - w_head * (w_tip - at).normalize_or_zero(), palette::TEAL, THROW_SHAFT_PX);
         self.label_tips(frame, l_tip, w_tip);
         let row = self.history.last().copied().unwrap_or([0.0; 5]);
         let turned = angle_deg(omega, self.omegas[0]);
@@ -645,6 +650,9 @@ impl ThrowFigure {
         }
     }
 }
+
+/// The width of L's and ω's shafts in Figure 1, CSS pixels.
+const THROW_SHAFT_PX: f32 = 4.5;
 
 /// How wide an arrow's head is taken to be on screen, CSS pixels, for the labels at the tips.
 const TIP_PX: f32 = 10.0;
@@ -1153,13 +1161,11 @@ impl ImpulseFigure {
         let solid: Vec<Vec3> = [*b, then]
             .iter()
             .flat_map(|body| {
-                let model = Mat4::from_translation(body.position)
-                    * Mat4::from_mat3(body.rotation())
-                    * Mat4::from_scale(DROP_HALF);
-                (0..125).map(move |i| {
-                    let at = |k: i32| (k % 5) as f32 * 0.5 - 1.0;
-                    model.transform_point3(Vec3::new(at(i), at(i / 5), at(i / 25)))
-                })
+                box_samples(
+                    Mat4::from_translation(body.position)
+                        * Mat4::from_mat3(body.rotation())
+                        * Mat4::from_scale(DROP_HALF),
+                )
             })
             .collect();
         let off_boxes = super::clear_of(view, &solid);
@@ -1704,12 +1710,11 @@ impl StackFigure {
 }
 
 /// The drift figure's boxes: how each steps its orientation, and its name.
+/// The names are the plot's (the caption names the steps in full, in the boxes' colours): three
+/// long names do not fit round three boxes on screen.
 pub const DRIFT_STEPS: [(OrientationStep, &str); 3] = [
-    (OrientationStep::Additive, "additive, normalised"),
-    (
-        OrientationStep::AdditiveUnnormalised,
-        "additive, unnormalised",
-    ),
+    (OrientationStep::Additive, "normalised"),
+    (OrientationStep::AdditiveUnnormalised, "unnormalised"),
     (OrientationStep::Exponential, "exponential"),
 ];
 /// The drift figure's boxes' half-extents (m), 1 kg; they spin about their shortest axis z (the
@@ -1720,16 +1725,51 @@ pub const DRIFT_HALF: Vec3 = Vec3::new(0.3, 0.15, 0.075);
 pub const DRIFT_TIP_RAD: f32 = 0.6;
 /// The drift figure's timeline (s).
 pub const DRIFT_DURATION_SEC: f32 = 10.0;
-/// A box's label in Figure 2, centred over the box (the outer two would run past the canvas's
-/// sides reading outwards); the middle one a row higher, since each is wider than the boxes'
-/// spacing on screen.
-fn drift_label(frame: &mut Frame, at: Vec3, k: usize, text: String, color: Vec3) {
-    frame.label_off_dot(at, 0.0, glam::Vec2::new(0.0, -1.0), text, color, 0);
+/// A box's name in Figure 2 (`points`: its box sampled, [`box_samples`]): for the last frame's
+/// view, the first clear side round the box (above first), just off its extent on screen,
+/// keeping off every box (`off_boxes`), line and name; before the first frame, centred 0.6 m
+/// over the box (the outer two would run past the canvas's sides reading outwards), the middle
+/// one a row higher, since each is wider than the boxes' spacing on screen.
+fn drift_label(
+    frame: &mut Frame,
+    view: Option<(Mat4, Vec2)>,
+    points: &[Vec3],
+    k: usize,
+    text: String,
+    color: Vec3,
+    off_boxes: &dyn Fn(crate::draw::layout::Rect) -> bool,
+) {
+    let n = points.len().max(1) as f32;
+    let centre = points.iter().copied().sum::<Vec3>() / n;
+    let at = DriftFigure::place(k) + Vec3::new(0.0, 0.6, 0.0);
+    let mut first = Label::off_dot(at, 0.0, Vec2::new(0.0, -1.0), text.clone(), color, 0);
     if k == 1 {
-        if let Some(label) = frame.labels.last_mut() {
-            label.offset_px.y -= DRIFT_ROW_PX;
-        }
+        first.offset_px.y -= DRIFT_ROW_PX;
     }
+    // The box's extent on screen, as the width of the dot the names go round.
+    let extent_px = view
+        .map(|(view_proj, size)| {
+            let c = project_to_canvas(view_proj, size, centre).unwrap_or_default();
+            points
+                .iter()
+                .filter_map(|&p| project_to_canvas(view_proj, size, p))
+                .fold(0.0f32, |r, p| r.max(2.0 * p.distance(c)))
+        })
+        .unwrap_or(0.0);
+    let candidates = match view {
+        Some(_) => Label::around_dot(centre, extent_px, Vec2::new(0.0, -1.0), &text, color, 0, 6, 8.0),
+        None => vec![first],
+    };
+    frame.first_clear_label_by(view, 2.0, candidates, off_boxes);
+}
+
+/// Points through a box of the cube mesh placed by `model` (5 a side, its faces and inside):
+/// a name's box that holds none of them keeps off the box.
+fn box_samples(model: Mat4) -> impl Iterator<Item = Vec3> {
+    (0..125).map(move |i| {
+        let at = |k: i32| (k % 5) as f32 * 0.5 - 1.0;
+        model.transform_point3(Vec3::new(at(i), at(i / 5), at(i / 25)))
+    })
 }
 
 /// How much higher the middle label of Figure 2 sits, CSS pixels: a label's height and a gap.
@@ -1769,6 +1809,9 @@ pub struct DriftFigure {
     overflowed_at: Option<f32>,
     /// `[t, |q| of each box]`, one row per step or per frame's worth of steps.
     history: Vec<[f32; 4]>,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: each box's name
+    /// takes a side of its box that keeps it off the other boxes, the outline and the names.
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for DriftFigure {
@@ -1791,9 +1834,18 @@ impl DriftFigure {
             steps_done: 0,
             overflowed_at: None,
             history: Vec::new(),
+            view: None,
         };
         f.restart();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the boxes' names are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The spin (rad/s, 1 to 30) and the time step (ms, 1 to 50); the run starts again.
@@ -2019,16 +2071,22 @@ impl DriftFigure {
             Self::place(0) - Vec3::new(0.6, DRIFT_HEIGHT_M, 0.3),
             Self::place(2) + Vec3::new(0.6, reach.max(0.7), 0.3),
         );
+        let mut names = Vec::new();
+        let mut solid = Vec::new();
         for (k, (body, (_, name))) in self.bodies.iter().zip(DRIFT_STEPS).enumerate() {
             let at = Self::place(k);
             let norm = body.orientation.length();
             let color = BOX_COLORS[k];
-            let label_at = at + Vec3::new(0.0, 0.6, 0.0);
+            // The box it should be: the matrix of the normalised quaternion.
+            let mut unit = *body;
+            unit.orientation = unit.orientation.normalize();
+            unit.position = at;
+            let unit_model = Mat4::from_translation(at)
+                * Mat4::from_mat3(unit.rotation())
+                * Mat4::from_scale(DRIFT_HALF);
+            let mut box_points: Vec<Vec3> = box_samples(unit_model).collect();
             if k == 1 {
-                // The box it should be: the matrix of the normalised quaternion, outlined.
-                let mut unit = *body;
-                unit.orientation = unit.orientation.normalize();
-                unit.position = at;
+                // Outlined.
                 let c = corners(&unit, DRIFT_HALF);
                 for (i, j) in BOX_EDGES {
                     frame.wide_line(c[i], c[j], palette::GREY, 1.5);
@@ -2039,12 +2097,22 @@ impl DriftFigure {
                     * Mat4::from_mat3(body.rotation())
                     * Mat4::from_scale(DRIFT_HALF);
                 frame.mesh(MeshId::CUBE, model, color);
+                box_points.extend(box_samples(model));
                 let text = format!("{name}: |q| = {}", format_number(norm));
-                drift_label(frame, label_at, k, text, color);
+                names.push((k, text, color, box_points.clone()));
             } else {
-                let text = format!("{name}: |q| = {}, too large to draw", format_number(norm));
-                drift_label(frame, label_at, k, text, palette::RED);
+                // Its matrix would stretch it past the canvas: only the outline is drawn.
+                let text = format!("{name}: |q| = {} (not drawn)", format_number(norm));
+                names.push((k, text, palette::RED, box_points.clone()));
             }
+            solid.extend(box_points);
+        }
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let off_boxes = super::clear_of(view, &solid);
+        for (k, text, color, points) in names {
+            drift_label(frame, view, &points, k, text, color, &off_boxes);
         }
         let n = self.steps_done;
         let s = self.bodies[1].orientation.length();
