@@ -872,3 +872,32 @@ fn sph_squeezed_particles_turn_purple_and_pbf_stays_blue() {
         );
     }
 }
+
+#[test]
+fn the_dragged_particles_lines_and_arrows_lie_over_the_water() {
+    // In the pool the particles surround the dragged one: its lines to its neighbours and its
+    // two arrows are drawn over them (else they are lost among the dots), the lines at least
+    // 1.5 px wide.
+    use glam::Vec3;
+    use inbetween::draw::{palette, ON_TOP};
+    let f = DensityFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame);
+    let of = |color: Vec3| {
+        frame
+            .strokes
+            .iter()
+            .filter(move |s| Vec3::from_slice(&s.color) == color)
+            .collect::<Vec<_>>()
+    };
+    let lines: Vec<_> = of(palette::PURPLE)
+        .into_iter()
+        .filter(|s| s.dash[3] == 0.0)
+        .collect();
+    assert!(lines.len() > 5, "{} lines to neighbours", lines.len());
+    assert!(lines.iter().all(|s| s.depth_bias >= ON_TOP && s.width_px >= 1.5));
+    for color in [palette::TEAL, palette::ORANGE] {
+        let arrow = of(color);
+        assert!(!arrow.is_empty() && arrow.iter().all(|s| s.depth_bias >= ON_TOP), "{color}");
+    }
+}

@@ -568,9 +568,10 @@ impl DensityFigure {
         let p = f.positions[0];
         let k = Kernels::new(h, Dim::Two);
         let w0 = k.poly6(0.0);
+        // The lines, the arrows and the dot over the particles, which would hide them.
         for &(j, r) in &self.neighbours {
             let share = k.poly6(r * r) / w0;
-            frame.wide_line(p, f.positions[j], palette::PURPLE, 1.0 + 3.0 * share);
+            frame.wide_line_on_top(p, f.positions[j], palette::PURPLE, 1.5 + 3.0 * share);
         }
         let circle: Vec<Vec3> = (0..=64)
             .map(|i| {
@@ -584,16 +585,11 @@ impl DensityFigure {
             StrokeStyle::dashed(2.0, 0.02, 0.012),
         );
         frame.marker_on_top(p, 1.6 * DOT_PX, palette::PURPLE);
-        frame.label(
-            p + Vec3::new(0.0, h + 0.03, 0.0),
-            "dragged particle",
-            palette::PURPLE,
-        );
         let s = self.shown;
         let accel = s.force.length() / f.mass;
         if accel > 1e-3 && accel.is_finite() {
             let length = ARROW_MAX_M * (accel / ARROW_ACCEL).tanh();
-            frame.arrow(
+            frame.arrow_on_top(
                 p,
                 p + s.force / s.force.length() * length,
                 palette::TEAL,
@@ -606,7 +602,7 @@ impl DensityFigure {
             let front = p + Vec3::new(0.0, 0.0, 0.03);
             let length = pbf_arrow_length(s.correction.length());
             let drawn = s.correction.normalize() * length;
-            frame.arrow(front, front + drawn, palette::ORANGE, 0.02);
+            frame.arrow_on_top(front, front + drawn, palette::ORANGE, 0.02);
         }
         // The box's walls.
         let corners = [
@@ -618,6 +614,37 @@ impl DensityFigure {
         ];
         frame.wide_polyline(&corners, palette::DARK, 2.0);
         frame.keep_box_in_view(Vec3::ZERO, size);
+        // The name just off the support circle, above it first, then round it and further
+        // out, off the water (for the last frame's view): over the particles it does not read.
+        let view = self.view_proj();
+        let circle_px = view
+            .and_then(|(view_proj, canvas)| {
+                let c = project_to_canvas(view_proj, canvas, p)?;
+                Some(2.0 * project_to_canvas(view_proj, canvas, p + h * Vec3::Y)?.distance(c))
+            })
+            .unwrap_or(0.0);
+        let mut candidates = vec![crate::draw::Label::off_dot(
+            p + Vec3::new(0.0, h + 0.03, 0.0),
+            0.0,
+            Vec2::new(0.0, -1.0),
+            "dragged particle".into(),
+            palette::PURPLE,
+            0,
+        )];
+        if view.is_some() {
+            candidates = crate::draw::Label::around_dot(
+                p,
+                circle_px,
+                Vec2::new(0.0, -1.0),
+                "dragged particle",
+                palette::PURPLE,
+                0,
+                16,
+                12.0,
+            );
+        }
+        let water = &f.positions[1..];
+        frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, water));
         let (rho, n) = self.probe();
         let mut note = format!(
             "ρ = {} kg/m² from {n} neighbours within h = {} m and itself: {} of the rest density {} kg/m². SPH: pressure {} Pa, force {} N ({} m/s² on the particle). PBF: λ = {}, a move of {} mm.",

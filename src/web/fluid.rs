@@ -133,6 +133,9 @@ impl DensityScene {
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         self.camera = Some(viewer.camera);
+        // The view the dragged particle's name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)
