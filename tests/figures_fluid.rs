@@ -901,3 +901,36 @@ fn the_dragged_particles_lines_and_arrows_lie_over_the_water() {
         assert!(!arrow.is_empty() && arrow.iter().all(|s| s.depth_bias >= ON_TOP), "{color}");
     }
 }
+
+#[test]
+fn the_dam_break_seen_from_the_side_adds_a_view_from_the_front() {
+    // The two tanks are slabs facing +z: orbited to the side or over the top they are seen
+    // edge-on, one behind the other. Then (more than 60° from face-on) the frame has an inset
+    // from the front that holds both tanks; at the page's camera it has none.
+    use inbetween::camera::OrbitCamera;
+    use inbetween::draw::inset::{inset_camera, InsetView};
+    use inbetween::fluid::box_size;
+    use inbetween::fluid::kernels::Dim;
+    let mut fig = DamBreakFigure::new();
+    fig.advance_to(0.5).unwrap();
+    let mut drawn = |view: [f32; 6]| {
+        fig.set_view(OrbitCamera::from_view(view));
+        let mut frame = Frame::default();
+        fig.draw(&mut frame);
+        frame
+    };
+    assert!(drawn([0.0, 0.55, 0.0, 4.0, 0.0, 0.0]).inset.is_none());
+    assert!(drawn([0.0, 0.55, 0.0, 4.0, 0.7, 0.3]).inset.is_none());
+    for view in [[0.0, 0.55, 0.0, 4.0, 1.4, 0.2], [0.0, 0.55, 0.0, 4.0, 0.0, 1.3]] {
+        let frame = drawn(view);
+        let inset = frame.inset.clone().expect("an inset from the front");
+        assert_eq!(inset.view, InsetView::Front);
+        let (v, p, _) = inset_camera(&inset).unwrap();
+        let size = box_size(Dim::Two);
+        // Every tank's corner (the points kept in view) and every particle lie inside it.
+        for q in frame.keep_in_view.iter().copied().chain(frame.points.iter().map(|q| glam::Vec3::from(q.center))) {
+            let ndc = (p * v).project_point3(q);
+            assert!(ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0, "{q} at {ndc}, box {size}");
+        }
+    }
+}

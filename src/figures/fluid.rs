@@ -14,6 +14,7 @@ use super::boids::StepTimeSweep;
 use super::gpu::MAX_GPU_FLUID_PARTICLES;
 use super::{failure_note, format_number, palette, Frame, DEFAULT_RUNNER};
 use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
+use crate::draw::inset::InsetView;
 use crate::draw::{StrokeStyle, DOT_PX};
 use crate::exercises::run::{self, compare_note, Runner};
 use crate::fluid::kernels::{Dim, Kernels};
@@ -693,6 +694,9 @@ pub struct DamBreakFigure {
     fluids: [Fluid; 2],
     /// Per frame: `[t, SPH's largest ρ/ρ₀ − 1, PBF's, SPH's kinetic energy, PBF's]`.
     samples: Vec<[f32; 5]>,
+    /// How squarely the last frame's camera faces the tanks: the cosine between its line of
+    /// sight and their normal (z); 1 before the first frame.
+    face_on: f32,
 }
 
 impl Default for DamBreakFigure {
@@ -719,7 +723,14 @@ impl DamBreakFigure {
             fluids: start.clone(),
             start,
             samples: Vec::new(),
+            face_on: 1.0,
         }
+    }
+
+    /// The camera the frame is drawn for (the last frame's): seen from the side or from above,
+    /// the frame adds an inset of the tanks from the front.
+    pub fn set_view(&mut self, camera: OrbitCamera) {
+        self.face_on = (camera.yaw_rad.cos() * camera.pitch_rad.cos()).abs();
     }
 
     pub fn fluids(&self) -> &[Fluid; 2] {
@@ -819,6 +830,17 @@ impl DamBreakFigure {
                 frame.keep_box_in_view(offset, offset + Vec3::new(size.x, size.y, 0.0));
             },
         );
+        // More than 60° from face-on (an orbit to the side or over the top), the slabs are seen
+        // nearly edge-on: the inset shows them from the front.
+        if self.face_on < 0.5 {
+            let half = Vec3::new(size.x + 0.1, 0.0, 0.05);
+            frame.inset(
+                InsetView::Front,
+                "from the front",
+                -half,
+                half + Vec3::new(0.0, size.y, 0.0),
+            );
+        }
         let describe = |f: &Fluid, name: &str| match f.exploded() {
             Some((t, why)) => format!("{name} stopped at t = {} s: {why}.", format_number(t)),
             None => {
