@@ -1757,7 +1757,7 @@ fn drift_label(
         })
         .unwrap_or(0.0);
     let candidates = match view {
-        Some(_) => Label::around_dot(centre, extent_px, Vec2::new(0.0, -1.0), &text, color, 0, 6, 8.0),
+        Some(_) => Label::around_dot(centre, extent_px, Vec2::new(0.0, -1.0), &text, color, 0, 9, 8.0),
         None => vec![first],
     };
     frame.first_clear_label_by(view, 2.0, candidates, off_boxes);
