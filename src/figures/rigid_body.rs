@@ -1746,18 +1746,31 @@ fn drift_label(
     if k == 1 {
         first.offset_px.y -= DRIFT_ROW_PX;
     }
-    // The box's extent on screen, as the width of the dot the names go round.
-    let extent_px = view
-        .map(|(view_proj, size)| {
-            let c = project_to_canvas(view_proj, size, centre).unwrap_or_default();
-            points
-                .iter()
-                .filter_map(|&p| project_to_canvas(view_proj, size, p))
-                .fold(0.0f32, |r, p| r.max(2.0 * p.distance(c)))
-        })
-        .unwrap_or(0.0);
+    // Each side's candidates anchored at the box's outermost point that way on screen, so the
+    // name lies just off the box (a name far from its anchor gets a leader line on the page).
     let candidates = match view {
-        Some(_) => Label::around_dot(centre, extent_px, Vec2::new(0.0, -1.0), &text, color, 0, 9, 8.0),
+        Some((view_proj, size)) => {
+            let on_screen: Vec<(Vec3, Vec2)> = points
+                .iter()
+                .filter_map(|&p| Some((p, project_to_canvas(view_proj, size, p)?)))
+                .collect();
+            // Above first (the page's camera looks across the row), then below, the sides and
+            // the corners.
+            let sides = [(0.0, -1.0), (0.0, 1.0), (1.0, 0.0), (-1.0, 0.0), (1.0, -1.0), (-1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+                .map(|(x, y)| Vec2::new(x, y));
+            (0..9)
+                .flat_map(|k| {
+                    let (on_screen, text) = (&on_screen, &text);
+                    sides.into_iter().map(move |side| {
+                        let far = on_screen
+                            .iter()
+                            .max_by(|a, b| a.1.dot(side).total_cmp(&b.1.dot(side)))
+                            .map_or(centre, |p| p.0);
+                        Label::off_dot(far, 2.0 + 16.0 * k as f32, side, text.clone(), color, 0)
+                    })
+                })
+                .collect()
+        }
         None => vec![first],
     };
     frame.first_clear_label_by(view, 2.0, candidates, off_boxes);

@@ -339,6 +339,18 @@ fn lesson_14_drift_names_sit_by_their_boxes_when_orbited() {
                                 .chain(drawn_k(k).into_iter().flatten())
                                 .map(|q| r.nearest(*q).distance(*q))
                                 .fold(f32::MAX, f32::min);
+                            // The page draws a leader to the anchor from a name that ends
+                            // more than LEADER_PX from it: the names sit at their anchors (at
+                            // the steepest orbit the long "(not drawn)" name steps further out
+                            // and gets its leader).
+                            let label = frame.labels.iter().find(|f| f.text == l.text).unwrap();
+                            let anchor = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                            let off = r.nearest(anchor).distance(anchor);
+                            assert!(
+                                off <= inbetween::draw::layout::LEADER_PX || view[4] < -1.5,
+                                "{name} on {size}: {:?} {off} px from its anchor",
+                                l.text
+                            );
                             assert!(
                                 gap <= 56.0,
                                 "{name} on {size}: {:?} {gap} px from its box",
