@@ -997,24 +997,51 @@ fn gpu_mode_plots_the_flock_read_back_from_the_gpu() {
 
 #[test]
 fn the_flock_has_an_inset_from_above_that_holds_its_box_and_its_boids() {
+    // The walls are a spring: boids overshoot them (the_box_holds_the_flock_loosely). Every boid
+    // and every corner of the box lies inside the inset's view, seen from above, through 20 s
+    // of flight at the page's settings and at the sliders' top speeds with the predator and the
+    // leader, on the CPU, and the GPU mode's inset frames its box the same way.
     use inbetween::draw::inset::{inset_camera, InsetView};
-    let mut f = FlockFigure::new();
-    let mut frame = Frame::default();
-    f.draw(&mut frame);
-    let inset = frame.inset.clone().expect("an inset");
-    assert_eq!(inset.view, InsetView::Top);
-    // Every boid and every corner of the box lies inside the inset's view, seen from above.
-    let (view, proj, _) = inset_camera(&inset).unwrap();
-    let vp = proj * view;
-    let corners = frame.keep_in_view.clone();
-    assert!(!corners.is_empty());
-    for p in corners.iter().chain(&f.flock().positions) {
-        let ndc = vp.project_point3(*p);
-        assert!(
-            ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0 && (0.0..=1.0).contains(&ndc.z),
-            "{p} at {ndc}"
-        );
+    let mut farthest: f32 = 0.0;
+    for fast in [false, true] {
+        let mut f = FlockFigure::new();
+        if fast {
+            f.set_max_speed(5.0).unwrap();
+            f.set_min_speed(5.0).unwrap();
+            f.set_predator(true);
+            f.set_leader(true);
+        }
+        for k in 0..=1200 {
+            f.advance_to(k as f32 / 60.0).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            let inset = frame.inset.clone().expect("an inset");
+            assert_eq!(inset.view, InsetView::Top);
+            let (view, proj, _) = inset_camera(&inset).unwrap();
+            let vp = proj * view;
+            let corners = frame.keep_in_view.clone();
+            assert!(!corners.is_empty());
+            for p in corners.iter().chain(&f.flock().positions) {
+                let ndc = vp.project_point3(*p);
+                farthest = farthest.max(ndc.x.abs()).max(ndc.y.abs());
+                assert!(
+                    ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0 && (0.0..=1.0).contains(&ndc.z),
+                    "fast {fast}, step {k}: {p} at {ndc}"
+                );
+            }
+        }
+        // GPU mode widens its inset with the flock read back from the GPU.
+        f.set_gpu_mode(true).unwrap();
+        let far = Vec3::new(30.0, 0.0, -40.0);
+        f.widen_reach(&[far, Vec3::NAN]);
+        let mut frame = Frame::default();
+        f.draw_gpu(&mut frame);
+        let inset = frame.inset.clone().expect("an inset in GPU mode");
+        assert!(inset.max.cmpge(far.abs()).all() && inset.min.cmple(-far.abs()).all());
+        assert!(inset.max.is_finite(), "{inset:?}");
     }
+    // The inset is not far wider than the flock reaches: some boid comes near its edge.
+    assert!(farthest > 0.75, "the boids reach {farthest} of the inset's half-width");
 }
 
 /// 12.1 right with neighbours, panicking without (a mean over no neighbours, then an `assert!`).

@@ -972,3 +972,32 @@ fn the_springs_swing_inside_their_fixed_declared_view() {
         }
     }
 }
+
+#[test]
+fn the_drapes_box_shows_through_the_cloth_and_its_pins_are_dots() {
+    // The box behind or under the cloth (box x 0.85, z −0.9) is hidden by the cloth's mesh:
+    // its twelve edges are drawn over everything, in the box's purple. A pinned corner is a
+    // dot of the usual size with its outline, over the cloth, not a point a few pixels wide.
+    use inbetween::draw::{palette, DOT_PX, ON_TOP};
+    let mut f = ClothFigure::new(Preset::Drape);
+    f.set_obstacles(-0.9, 0.85, -0.9).unwrap();
+    f.set_pins("two corners").unwrap();
+    let (_, frame) = draw(&mut f, 0.5);
+    let (_, cuboid) = f.obstacles();
+    let edges: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| s.depth_bias >= ON_TOP && Vec3::from_slice(&s.color) == palette::PURPLE)
+        .collect();
+    assert_eq!(edges.len(), 12, "the box's edges over the cloth");
+    for s in &edges {
+        let mid = 0.5 * (Vec3::from(s.a) + Vec3::from(s.b));
+        assert!(mid.distance(cuboid) < 0.6, "an edge at {mid}, the box at {cuboid}");
+    }
+    let pins: Vec<_> = frame
+        .markers
+        .iter()
+        .filter(|m| Vec3::from_slice(&m.color) == palette::DARK && m.size_px.abs() >= DOT_PX)
+        .collect();
+    assert_eq!(pins.len(), 2, "two pinned corners as dots");
+}

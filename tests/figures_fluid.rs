@@ -872,3 +872,65 @@ fn sph_squeezed_particles_turn_purple_and_pbf_stays_blue() {
         );
     }
 }
+
+#[test]
+fn the_dragged_particles_lines_and_arrows_lie_over_the_water() {
+    // In the pool the particles surround the dragged one: its lines to its neighbours and its
+    // two arrows are drawn over them (else they are lost among the dots), the lines at least
+    // 1.5 px wide.
+    use glam::Vec3;
+    use inbetween::draw::{palette, ON_TOP};
+    let f = DensityFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame);
+    let of = |color: Vec3| {
+        frame
+            .strokes
+            .iter()
+            .filter(move |s| Vec3::from_slice(&s.color) == color)
+            .collect::<Vec<_>>()
+    };
+    let lines: Vec<_> = of(palette::PURPLE)
+        .into_iter()
+        .filter(|s| s.dash[3] == 0.0)
+        .collect();
+    assert!(lines.len() > 5, "{} lines to neighbours", lines.len());
+    assert!(lines.iter().all(|s| s.depth_bias >= ON_TOP && s.width_px >= 1.5));
+    for color in [palette::TEAL, palette::ORANGE] {
+        let arrow = of(color);
+        assert!(!arrow.is_empty() && arrow.iter().all(|s| s.depth_bias >= ON_TOP), "{color}");
+    }
+}
+
+#[test]
+fn the_dam_break_seen_from_the_side_adds_a_view_from_the_front() {
+    // The two tanks are slabs facing +z: orbited to the side or over the top they are seen
+    // edge-on, one behind the other. Then (more than 60° from face-on) the frame has an inset
+    // from the front that holds both tanks; at the page's camera it has none.
+    use inbetween::camera::OrbitCamera;
+    use inbetween::draw::inset::{inset_camera, InsetView};
+    use inbetween::fluid::box_size;
+    use inbetween::fluid::kernels::Dim;
+    let mut fig = DamBreakFigure::new();
+    fig.advance_to(0.5).unwrap();
+    let mut drawn = |view: [f32; 6]| {
+        fig.set_view(OrbitCamera::from_view(view));
+        let mut frame = Frame::default();
+        fig.draw(&mut frame);
+        frame
+    };
+    assert!(drawn([0.0, 0.55, 0.0, 4.0, 0.0, 0.0]).inset.is_none());
+    assert!(drawn([0.0, 0.55, 0.0, 4.0, 0.7, 0.3]).inset.is_none());
+    for view in [[0.0, 0.55, 0.0, 4.0, 1.4, 0.2], [0.0, 0.55, 0.0, 4.0, 0.0, 1.3]] {
+        let frame = drawn(view);
+        let inset = frame.inset.clone().expect("an inset from the front");
+        assert_eq!(inset.view, InsetView::Front);
+        let (v, p, _) = inset_camera(&inset).unwrap();
+        let size = box_size(Dim::Two);
+        // Every tank's corner (the points kept in view) and every particle lie inside it.
+        for q in frame.keep_in_view.iter().copied().chain(frame.points.iter().map(|q| glam::Vec3::from(q.center))) {
+            let ndc = (p * v).project_point3(q);
+            assert!(ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0, "{q} at {ndc}, box {size}");
+        }
+    }
+}

@@ -725,7 +725,7 @@ fn the_drift_refuses_bad_settings_and_stops_the_raw_quaternion_before_it_overflo
     assert!(frame
         .labels
         .iter()
-        .any(|l| l.text.contains("too large to draw")));
+        .any(|l| l.text.contains("(not drawn)")));
     assert_eq!(
         frame
             .meshes
@@ -1132,4 +1132,26 @@ fn a_level_drop_reads_no_spin_in_the_note() {
         !note.contains("e-"),
         "no rounding leftovers in scientific notation: {note}"
     );
+}
+
+#[test]
+fn the_throws_l_and_omega_are_wider_than_the_other_arrows() {
+    // L and ω are what Figure 1 shows, often a few degrees apart on screen: each has a shaft
+    // wider than a plain arrow's, from the centre of mass.
+    use inbetween::draw::ARROW_PX;
+    let mut f = ThrowFigure::new();
+    f.advance_to(0.3).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame);
+    let at = f.body().position;
+    for color in [palette::PURPLE, palette::TEAL] {
+        assert!(
+            frame.strokes.iter().any(|s| {
+                Vec3::from_slice(&s.color) == color
+                    && s.width_px >= ARROW_PX + 1.5
+                    && Vec3::from(s.a).distance(at) < 1e-4
+            }),
+            "a wide shaft of colour {color}"
+        );
+    }
 }

@@ -12,7 +12,8 @@ const DARK = cssVar('--dark');
 
 /**
  * The common wiring of a figure: its panel, its timeline, its plots (each `{ id, options, cols }`:
- * `cols` picks the sample columns it shows, the first being time), `apply` run on every change
+ * `cols` picks the sample columns it shows, the first being time; `from0` starts its y axis at 0,
+ * for a quantity that is never negative), `apply` run on every change
  * (through `guarded`, so a rejected value shows in the note and changes nothing), and the frame
  * loop that draws the scene at the timeline's time. A `live` scene (one a button can push) plots
  * what it has run so far, refreshed ten times a second, instead of the whole run.
@@ -26,7 +27,7 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
   const timeline = new Timeline(document.getElementById(`${id}-timeline`), { duration: state.scene.durationSec() });
   const gui = new GUI({ container: document.querySelector(`${selector} .panel`), title });
   const p = controls(gui, state, timeline);
-  const shown = plots.map((plot) => ({ plot: new Plot(document.getElementById(plot.id), plot.options), cols: plot.cols }));
+  const shown = plots.map((plot) => ({ ...plot, plot: new Plot(document.getElementById(plot.id), plot.options) }));
   const replot = () => {
     // A racket that exploded has NaN samples from then on: gaps in its curves.
     const all = columns(state.scene.samples(), width).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
@@ -35,7 +36,15 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
       all[0].push(timeline.duration);
       for (let k = 1; k < width; k++) all[k].push(null);
     }
-    for (const { plot, cols } of shown) plot.setData(cols.map((c) => all[c]));
+    for (const { plot, cols, from0, options } of shown) {
+      const data = cols.map((c) => all[c]);
+      // A quantity that is never negative: its axis starts at 0 instead of centring a flat start.
+      if (from0) {
+        const hi = data.slice(1).flat().reduce((m, v) => (Number.isFinite(v) ? Math.max(m, v) : m), 0);
+        plot.setYRange([0, Math.max(hi, options.minSpan)]);
+      }
+      plot.setData(data);
+    }
   };
   const run = guarded(gui, p, () => { apply(state.scene, p); replot(); }, (m) => { state.rejected = m; });
   gui.onChange(run);
@@ -115,7 +124,7 @@ await wire('#fig-racket', {
   make: () => new RacketScene(),
   controls: (gui) => {
     const p = { spin: 6, wobble: 0.05, useExercise: false };
-    gui.add(p, 'spin', 0.5, 20, 0.5).name('spin about the middle axis (rad/s)');
+    gui.add(p, 'spin', 0.5, 20, 0.5).name('spin (rad/s)');
     gui.add(p, 'wobble', 0, 1, 0.01).name('wobble (rad/s)');
     gui.add(p, 'useExercise').name('use my exercise');
     return p;
@@ -192,14 +201,14 @@ await wire('#fig-stack', {
   live: true,
   plots: [
     {
-      id: 'stack-plot', cols: [0, 1],
+      id: 'stack-plot', cols: [0, 1], from0: true,
       options: {
         title: 'Total kinetic energy', xLabel: 'time (s)', yLabel: 'energy (J)',
         series: ['energy'], colors: [ORANGE], minSpan: 0.1,
       },
     },
     {
-      id: 'stack-drift', cols: [0, 2],
+      id: 'stack-drift', cols: [0, 2], from0: true,
       options: {
         title: 'How far the top box (the last domino) has moved', xLabel: 'time (s)', yLabel: 'distance (m)',
         series: ['distance'], colors: [TEAL], minSpan: 0.05,

@@ -416,6 +416,9 @@ pub struct FlockFigure {
     /// The camera and canvas size (CSS pixels) of the last frame: the leader's and the
     /// predator's names are placed for it ([`FlockFigure::set_view`]).
     view: Option<(OrbitCamera, Vec2)>,
+    /// The farthest any boid has flown from the centre since the flock started, per axis (m):
+    /// the inset shows out to there ([`FlockFigure::inset_half`]).
+    reach: Vec3,
 }
 
 /// GPU mode: the order plot's sampling interval, seconds of flock time (a read-back of the
@@ -435,6 +438,14 @@ pub struct GpuSample {
 /// The most samples the order plot keeps (one per step: the figure's 20 s timeline is
 /// 1,200 steps; [`super::particles::MAX_SIM_TIME`] is 3,600).
 pub const MAX_PLOT_SAMPLES: usize = 3601;
+
+/// `reach` widened, per axis, to the farthest of the finite `positions` from the origin.
+fn farthest(reach: Vec3, positions: &[Vec3]) -> Vec3 {
+    positions
+        .iter()
+        .filter(|p| p.is_finite())
+        .fold(reach, |r, p| r.max(p.abs()))
+}
 
 impl Default for FlockFigure {
     fn default() -> Self {
@@ -466,6 +477,7 @@ impl FlockFigure {
             gpu_mode: false,
             gpu_count: 0,
             view: None,
+            reach: Vec3::ZERO,
         };
         f.set_obstacle(true);
         f.restart_plot();
@@ -557,6 +569,21 @@ impl FlockFigure {
         Ok(true)
     }
 
+    /// Widens the reach the inset shows to hold `positions` (the flock, or in GPU mode the
+    /// flock read back from the GPU); positions that are not finite are skipped.
+    pub fn widen_reach(&mut self, positions: &[Vec3]) {
+        self.reach = farthest(self.reach, positions);
+    }
+
+    /// Half the box the inset shows, centred on the origin: the walls are a spring, not a wall,
+    /// so boids overshoot them, by about 2 m at the page's settings. The box `[−b, b]` and a
+    /// little more, widened to the farthest any boid has flown since the flock started
+    /// ([`FlockFigure::widen_reach`]), rounded up to half metres so the inset grows in a few
+    /// steps rather than every frame.
+    pub fn inset_half(&self, b: Vec3) -> Vec3 {
+        ((1.15 * b).max(self.reach) * 2.0).ceil() * 0.5
+    }
+
     /// The order plot's samples, flat `[t (s), φ, mean speed / max speed]`
     /// ([`FlockFigure::polarisation`], [`FlockFigure::speed_ratio`]) after each step since the
     /// flock last started: a scrub, the timeline's loop or a new count starts it again; a
@@ -567,11 +594,13 @@ impl FlockFigure {
 
     fn restart_plot(&mut self) {
         self.history.clear();
+        self.reach = Vec3::ZERO;
         self.run += 1;
         self.record();
     }
 
     fn record(&mut self) {
+        self.reach = farthest(self.reach, &self.flock.positions);
         if self.history.len() < 3 * MAX_PLOT_SAMPLES {
             let t = self.steps_done as f32 * SIM_DT;
             let sample = [t, self.polarisation(), self.speed_ratio()];
@@ -857,9 +886,10 @@ impl FlockFigure {
         }
         // The box stays in view at both page sizes (boids overshoot its walls a little).
         frame.keep_box_in_view(-b, b);
-        // The flock from above, where its spread along the main view's depth can be read; a
-        // little wider than the box, as boids overshoot its walls.
-        frame.inset(InsetView::Top, "from above", -1.15 * b, 1.15 * b);
+        // The flock from above, where its spread along the main view's depth can be read, out
+        // to where a boid's overshoot past the walls can reach.
+        let reach = self.inset_half(b);
+        frame.inset(InsetView::Top, "from above", -reach, reach);
         if self.obstacle {
             for o in &self.params.obstacles {
                 frame.mesh(
@@ -984,9 +1014,10 @@ impl FlockFigure {
         }
         // The box stays in view at both page sizes (boids overshoot its walls a little).
         frame.keep_box_in_view(-b, b);
-        // The flock from above, where its spread along the main view's depth can be read; a
-        // little wider than the box, as boids overshoot its walls.
-        frame.inset(InsetView::Top, "from above", -1.15 * b, 1.15 * b);
+        // The flock from above, where its spread along the main view's depth can be read, out
+        // to where a boid's overshoot past the walls can reach.
+        let reach = self.inset_half(b);
+        frame.inset(InsetView::Top, "from above", -reach, reach);
         if self.obstacle {
             for o in &self.params.obstacles {
                 frame.mesh(
@@ -1242,7 +1273,7 @@ fn place_labels(
 }
 
 /// The 12 edges of the box `[lo, hi]`.
-fn box_edges(lo: Vec3, hi: Vec3) -> Vec<(Vec3, Vec3)> {
+pub(super) fn box_edges(lo: Vec3, hi: Vec3) -> Vec<(Vec3, Vec3)> {
     let c = |i: u32| {
         Vec3::new(
             if i & 1 == 0 { lo.x } else { hi.x },

@@ -19,6 +19,7 @@ use super::{
 };
 use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
 use crate::cloth::{Cloth, ClothParams, ClothSpec, Colliders, Method, SpringKind};
+use crate::draw::DOT_PX;
 use crate::exercises::run;
 use crate::mesh::MeshData;
 use glam::{Mat4, Quat, Vec2, Vec3, Vec4};
@@ -794,6 +795,10 @@ impl ClothFigure {
                 palette::PURPLE,
             );
             frame.contact_shadow(c - Vec3::Y * h.y, h.x.max(h.z));
+            // Its edges over everything: a box under or behind the cloth still shows where it is.
+            for (a, b) in super::boids::box_edges(c - h, c + h) {
+                frame.wide_line_on_top(a, b, palette::PURPLE, 1.5);
+            }
         }
         if self.preset == Preset::Drape {
             // Under the cloth, from its lowest point: how high it still is as it falls.
@@ -861,7 +866,7 @@ impl ClothFigure {
             }
             for (i, p) in positions.iter().enumerate() {
                 if sim.cloth.is_pinned(i) {
-                    frame.point(*p, 0.025, palette::DARK);
+                    frame.marker_on_top(*p, DOT_PX, palette::DARK);
                 }
             }
             if self.preset == Preset::Flag {

@@ -14,6 +14,7 @@ use super::boids::StepTimeSweep;
 use super::gpu::MAX_GPU_FLUID_PARTICLES;
 use super::{failure_note, format_number, palette, Frame, DEFAULT_RUNNER};
 use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
+use crate::draw::inset::InsetView;
 use crate::draw::{StrokeStyle, DOT_PX};
 use crate::exercises::run::{self, compare_note, Runner};
 use crate::fluid::kernels::{Dim, Kernels};
@@ -568,9 +569,10 @@ impl DensityFigure {
         let p = f.positions[0];
         let k = Kernels::new(h, Dim::Two);
         let w0 = k.poly6(0.0);
+        // The lines, the arrows and the dot over the particles, which would hide them.
         for &(j, r) in &self.neighbours {
             let share = k.poly6(r * r) / w0;
-            frame.wide_line(p, f.positions[j], palette::PURPLE, 1.0 + 3.0 * share);
+            frame.wide_line_on_top(p, f.positions[j], palette::PURPLE, 1.5 + 3.0 * share);
         }
         let circle: Vec<Vec3> = (0..=64)
             .map(|i| {
@@ -584,16 +586,11 @@ impl DensityFigure {
             StrokeStyle::dashed(2.0, 0.02, 0.012),
         );
         frame.marker_on_top(p, 1.6 * DOT_PX, palette::PURPLE);
-        frame.label(
-            p + Vec3::new(0.0, h + 0.03, 0.0),
-            "dragged particle",
-            palette::PURPLE,
-        );
         let s = self.shown;
         let accel = s.force.length() / f.mass;
         if accel > 1e-3 && accel.is_finite() {
             let length = ARROW_MAX_M * (accel / ARROW_ACCEL).tanh();
-            frame.arrow(
+            frame.arrow_on_top(
                 p,
                 p + s.force / s.force.length() * length,
                 palette::TEAL,
@@ -606,7 +603,7 @@ impl DensityFigure {
             let front = p + Vec3::new(0.0, 0.0, 0.03);
             let length = pbf_arrow_length(s.correction.length());
             let drawn = s.correction.normalize() * length;
-            frame.arrow(front, front + drawn, palette::ORANGE, 0.02);
+            frame.arrow_on_top(front, front + drawn, palette::ORANGE, 0.02);
         }
         // The box's walls.
         let corners = [
@@ -618,6 +615,37 @@ impl DensityFigure {
         ];
         frame.wide_polyline(&corners, palette::DARK, 2.0);
         frame.keep_box_in_view(Vec3::ZERO, size);
+        // The name just off the support circle, above it first, then round it and further
+        // out, off the water (for the last frame's view): over the particles it does not read.
+        let view = self.view_proj();
+        let circle_px = view
+            .and_then(|(view_proj, canvas)| {
+                let c = project_to_canvas(view_proj, canvas, p)?;
+                Some(2.0 * project_to_canvas(view_proj, canvas, p + h * Vec3::Y)?.distance(c))
+            })
+            .unwrap_or(0.0);
+        let mut candidates = vec![crate::draw::Label::off_dot(
+            p + Vec3::new(0.0, h + 0.03, 0.0),
+            0.0,
+            Vec2::new(0.0, -1.0),
+            "dragged particle".into(),
+            palette::PURPLE,
+            0,
+        )];
+        if view.is_some() {
+            candidates = crate::draw::Label::around_dot(
+                p,
+                circle_px,
+                Vec2::new(0.0, -1.0),
+                "dragged particle",
+                palette::PURPLE,
+                0,
+                16,
+                12.0,
+            );
+        }
+        let water = &f.positions[1..];
+        frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, water));
         let (rho, n) = self.probe();
         let mut note = format!(
             "ρ = {} kg/m² from {n} neighbours within h = {} m and itself: {} of the rest density {} kg/m². SPH: pressure {} Pa, force {} N ({} m/s² on the particle). PBF: λ = {}, a move of {} mm.",
@@ -666,6 +694,9 @@ pub struct DamBreakFigure {
     fluids: [Fluid; 2],
     /// Per frame: `[t, SPH's largest ρ/ρ₀ − 1, PBF's, SPH's kinetic energy, PBF's]`.
     samples: Vec<[f32; 5]>,
+    /// How squarely the last frame's camera faces the tanks: the cosine between its line of
+    /// sight and their normal (z); 1 before the first frame.
+    face_on: f32,
 }
 
 impl Default for DamBreakFigure {
@@ -692,7 +723,14 @@ impl DamBreakFigure {
             fluids: start.clone(),
             start,
             samples: Vec::new(),
+            face_on: 1.0,
         }
+    }
+
+    /// The camera the frame is drawn for (the last frame's): seen from the side or from above,
+    /// the frame adds an inset of the tanks from the front.
+    pub fn set_view(&mut self, camera: OrbitCamera) {
+        self.face_on = (camera.yaw_rad.cos() * camera.pitch_rad.cos()).abs();
     }
 
     pub fn fluids(&self) -> &[Fluid; 2] {
@@ -792,6 +830,17 @@ impl DamBreakFigure {
                 frame.keep_box_in_view(offset, offset + Vec3::new(size.x, size.y, 0.0));
             },
         );
+        // More than 60° from face-on (an orbit to the side or over the top), the slabs are seen
+        // nearly edge-on: the inset shows them from the front.
+        if self.face_on < 0.5 {
+            let half = Vec3::new(size.x + 0.1, 0.0, 0.05);
+            frame.inset(
+                InsetView::Front,
+                "from the front",
+                -half,
+                half + Vec3::new(0.0, size.y, 0.0),
+            );
+        }
         let describe = |f: &Fluid, name: &str| match f.exploded() {
             Some((t, why)) => format!("{name} stopped at t = {} s: {why}.", format_number(t)),
             None => {

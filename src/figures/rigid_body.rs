@@ -570,6 +570,9 @@ impl ThrowFigure {
         }
         let l_tip = at + THROW_ARROW_M * l_dir;
         frame.arrow(at, l_tip, palette::PURPLE, 0.08);
+        // L and ω wider than other arrows (up to their heads): they are what the figure shows,
+        // often a few degrees apart on screen.
+        frame.wide_line(at, l_tip - 0.08 * l_dir, palette::PURPLE, THROW_SHAFT_PX);
         // ω at the scale that puts its tip on the plane across L through L's tip.
         let scale = THROW_ARROW_M / along;
         let trail: Vec<Vec3> = self.omegas.iter().map(|w| at + scale * *w).collect();
@@ -577,6 +580,8 @@ impl ThrowFigure {
         frame.wide_polyline(&trail, light, 3.0);
         let w_tip = at + scale * omega;
         frame.arrow(at, w_tip, palette::TEAL, 0.08);
+        let w_head = (0.4 * (w_tip - at).length()).min(0.08);
+        frame.wide_line(at, w_tip - w_head * (w_tip - at).normalize_or_zero(), palette::TEAL, THROW_SHAFT_PX);
         self.label_tips(frame, l_tip, w_tip);
         let row = self.history.last().copied().unwrap_or([0.0; 5]);
         let turned = angle_deg(omega, self.omegas[0]);
@@ -645,6 +650,9 @@ impl ThrowFigure {
         }
     }
 }
+
+/// The width of L's and ω's shafts in Figure 1, CSS pixels.
+const THROW_SHAFT_PX: f32 = 4.5;
 
 /// How wide an arrow's head is taken to be on screen, CSS pixels, for the labels at the tips.
 const TIP_PX: f32 = 10.0;
@@ -738,6 +746,9 @@ pub struct ImpulseFigure {
     stopped: Option<f32>,
     /// Per step: `[t, centre height, lowest point's normal velocity, kinetic energy]`.
     history: Vec<[f32; 4]>,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: the names of the
+    /// arrows take the sides of their heads that keep them off the lines and the boxes.
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for ImpulseFigure {
@@ -762,9 +773,18 @@ impl ImpulseFigure {
             after: None,
             stopped: None,
             history: Vec::new(),
+            view: None,
         };
         f.restart();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the names of the arrows are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The tilt about the world z axis (degrees, 0 to 45), the coefficient of restitution (0 to
@@ -1120,25 +1140,46 @@ impl ImpulseFigure {
                 "ω after",
             ),
         ];
-        for (d, color, text_color, name) in arrows {
-            if d.length() > 1e-3 {
-                frame.arrow(o, o + d, color, 0.06);
-                // An arrow that points left (−x; the page's camera looks along −z) gets a name
-                // that reads leftwards from its head, not back over the head.
-                let at = o + d + 0.04 * d.normalize();
-                if d.x < 0.0 {
-                    frame.label_left(at, name, text_color);
-                } else {
-                    frame.label(at, name, text_color);
-                }
-            }
-        }
         // The impulse pushes the box up at the corner: drawn from below the ground up to the
         // contact point (from the corner up it would be hidden inside the box).
         let j_tail = hit.point - Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE).max(0.05);
         frame.arrow(j_tail, hit.point, palette::RED, 0.06);
-        frame.label(j_tail + Vec3::new(0.04, 0.0, 0.0), "j n", palette::RED);
         frame.marker_on_top(hit.point, 12.0, palette::DARK);
+        let mut names = vec![(j_tail.lerp(hit.point, 0.5), Vec3::X, "j n", palette::RED)];
+        for (d, color, text_color, name) in arrows {
+            if d.length() > 1e-3 {
+                frame.arrow(o, o + d, color, 0.06);
+                names.push((o + d, d, name, text_color));
+            }
+        }
+        // Each name beside its arrow's head (the impulse's beside its shaft), on the side the
+        // arrow points to first, then round it, keeping off every line, dot and name and off
+        // both boxes (the box now and the box at the hit), for the last frame's view.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let solid: Vec<Vec3> = [*b, then]
+            .iter()
+            .flat_map(|body| {
+                box_samples(
+                    Mat4::from_translation(body.position)
+                        * Mat4::from_mat3(body.rotation())
+                        * Mat4::from_scale(DROP_HALF),
+                )
+            })
+            .collect();
+        let off_boxes = super::clear_of(view, &solid);
+        for (at, d, name, color) in names {
+            let toward = view
+                .and_then(|(view_proj, size)| {
+                    let a = project_to_canvas(view_proj, size, at - d)?;
+                    Some(project_to_canvas(view_proj, size, at)? - a)
+                })
+                // Before the first frame: the page's camera looks along −z, y up.
+                .unwrap_or(Vec2::new(d.x, -d.y));
+            let candidates = Label::around_dot(at, TIP_PX, toward, name, color, 0, 6, 10.0);
+            frame.first_clear_label_by(view, 2.0, candidates, &off_boxes);
+        }
         // Rounding leftovers (a spin of 1e-6 rad/s after a level drop) read as the 0 they are.
         let clean = |x: f32| if x.abs() < 1e-4 { 0.0 } else { x };
         let v3 = |v: Vec3| {
@@ -1669,12 +1710,11 @@ impl StackFigure {
 }
 
 /// The drift figure's boxes: how each steps its orientation, and its name.
+/// The names are the plot's (the caption names the steps in full, in the boxes' colours): three
+/// long names do not fit round three boxes on screen.
 pub const DRIFT_STEPS: [(OrientationStep, &str); 3] = [
-    (OrientationStep::Additive, "additive, normalised"),
-    (
-        OrientationStep::AdditiveUnnormalised,
-        "additive, unnormalised",
-    ),
+    (OrientationStep::Additive, "normalised"),
+    (OrientationStep::AdditiveUnnormalised, "unnormalised"),
     (OrientationStep::Exponential, "exponential"),
 ];
 /// The drift figure's boxes' half-extents (m), 1 kg; they spin about their shortest axis z (the
@@ -1685,16 +1725,64 @@ pub const DRIFT_HALF: Vec3 = Vec3::new(0.3, 0.15, 0.075);
 pub const DRIFT_TIP_RAD: f32 = 0.6;
 /// The drift figure's timeline (s).
 pub const DRIFT_DURATION_SEC: f32 = 10.0;
-/// A box's label in Figure 2, centred over the box (the outer two would run past the canvas's
-/// sides reading outwards); the middle one a row higher, since each is wider than the boxes'
-/// spacing on screen.
-fn drift_label(frame: &mut Frame, at: Vec3, k: usize, text: String, color: Vec3) {
-    frame.label_off_dot(at, 0.0, glam::Vec2::new(0.0, -1.0), text, color, 0);
+/// A box's name in Figure 2 (`points`: its box sampled, [`box_samples`]): for the last frame's
+/// view, the first clear side round the box (above first), just off its extent on screen,
+/// keeping off every box (`off_boxes`), line and name; before the first frame, centred 0.6 m
+/// over the box (the outer two would run past the canvas's sides reading outwards), the middle
+/// one a row higher, since each is wider than the boxes' spacing on screen.
+fn drift_label(
+    frame: &mut Frame,
+    view: Option<(Mat4, Vec2)>,
+    points: &[Vec3],
+    k: usize,
+    text: String,
+    color: Vec3,
+    off_boxes: &dyn Fn(crate::draw::layout::Rect) -> bool,
+) {
+    let n = points.len().max(1) as f32;
+    let centre = points.iter().copied().sum::<Vec3>() / n;
+    let at = DriftFigure::place(k) + Vec3::new(0.0, 0.6, 0.0);
+    let mut first = Label::off_dot(at, 0.0, Vec2::new(0.0, -1.0), text.clone(), color, 0);
     if k == 1 {
-        if let Some(label) = frame.labels.last_mut() {
-            label.offset_px.y -= DRIFT_ROW_PX;
-        }
+        first.offset_px.y -= DRIFT_ROW_PX;
     }
+    // Each side's candidates anchored at the box's outermost point that way on screen, so the
+    // name lies just off the box (a name far from its anchor gets a leader line on the page).
+    let candidates = match view {
+        Some((view_proj, size)) => {
+            let on_screen: Vec<(Vec3, Vec2)> = points
+                .iter()
+                .filter_map(|&p| Some((p, project_to_canvas(view_proj, size, p)?)))
+                .collect();
+            // Above first (the page's camera looks across the row), then below, the sides and
+            // the corners.
+            let sides = [(0.0, -1.0), (0.0, 1.0), (1.0, 0.0), (-1.0, 0.0), (1.0, -1.0), (-1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+                .map(|(x, y)| Vec2::new(x, y));
+            (0..9)
+                .flat_map(|k| {
+                    let (on_screen, text) = (&on_screen, &text);
+                    sides.into_iter().map(move |side| {
+                        let far = on_screen
+                            .iter()
+                            .max_by(|a, b| a.1.dot(side).total_cmp(&b.1.dot(side)))
+                            .map_or(centre, |p| p.0);
+                        Label::off_dot(far, 2.0 + 16.0 * k as f32, side, text.clone(), color, 0)
+                    })
+                })
+                .collect()
+        }
+        None => vec![first],
+    };
+    frame.first_clear_label_by(view, 2.0, candidates, off_boxes);
+}
+
+/// Points through a box of the cube mesh placed by `model` (5 a side, its faces and inside):
+/// a name's box that holds none of them keeps off the box.
+fn box_samples(model: Mat4) -> impl Iterator<Item = Vec3> {
+    (0..125).map(move |i| {
+        let at = |k: i32| (k % 5) as f32 * 0.5 - 1.0;
+        model.transform_point3(Vec3::new(at(i), at(i / 5), at(i / 25)))
+    })
 }
 
 /// How much higher the middle label of Figure 2 sits, CSS pixels: a label's height and a gap.
@@ -1734,6 +1822,9 @@ pub struct DriftFigure {
     overflowed_at: Option<f32>,
     /// `[t, |q| of each box]`, one row per step or per frame's worth of steps.
     history: Vec<[f32; 4]>,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: each box's name
+    /// takes a side of its box that keeps it off the other boxes, the outline and the names.
+    view: Option<(OrbitCamera, Vec2)>,
 }
 
 impl Default for DriftFigure {
@@ -1756,9 +1847,18 @@ impl DriftFigure {
             steps_done: 0,
             overflowed_at: None,
             history: Vec::new(),
+            view: None,
         };
         f.restart();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the boxes' names are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The spin (rad/s, 1 to 30) and the time step (ms, 1 to 50); the run starts again.
@@ -1984,16 +2084,22 @@ impl DriftFigure {
             Self::place(0) - Vec3::new(0.6, DRIFT_HEIGHT_M, 0.3),
             Self::place(2) + Vec3::new(0.6, reach.max(0.7), 0.3),
         );
+        let mut names = Vec::new();
+        let mut solid = Vec::new();
         for (k, (body, (_, name))) in self.bodies.iter().zip(DRIFT_STEPS).enumerate() {
             let at = Self::place(k);
             let norm = body.orientation.length();
             let color = BOX_COLORS[k];
-            let label_at = at + Vec3::new(0.0, 0.6, 0.0);
+            // The box it should be: the matrix of the normalised quaternion.
+            let mut unit = *body;
+            unit.orientation = unit.orientation.normalize();
+            unit.position = at;
+            let unit_model = Mat4::from_translation(at)
+                * Mat4::from_mat3(unit.rotation())
+                * Mat4::from_scale(DRIFT_HALF);
+            let mut box_points: Vec<Vec3> = box_samples(unit_model).collect();
             if k == 1 {
-                // The box it should be: the matrix of the normalised quaternion, outlined.
-                let mut unit = *body;
-                unit.orientation = unit.orientation.normalize();
-                unit.position = at;
+                // Outlined.
                 let c = corners(&unit, DRIFT_HALF);
                 for (i, j) in BOX_EDGES {
                     frame.wide_line(c[i], c[j], palette::GREY, 1.5);
@@ -2004,12 +2110,22 @@ impl DriftFigure {
                     * Mat4::from_mat3(body.rotation())
                     * Mat4::from_scale(DRIFT_HALF);
                 frame.mesh(MeshId::CUBE, model, color);
+                box_points.extend(box_samples(model));
                 let text = format!("{name}: |q| = {}", format_number(norm));
-                drift_label(frame, label_at, k, text, color);
+                names.push((k, text, color, box_points.clone()));
             } else {
-                let text = format!("{name}: |q| = {}, too large to draw", format_number(norm));
-                drift_label(frame, label_at, k, text, palette::RED);
+                // Its matrix would stretch it past the canvas: only the outline is drawn.
+                let text = format!("{name}: |q| = {} (not drawn)", format_number(norm));
+                names.push((k, text, palette::RED, box_points.clone()));
             }
+            solid.extend(box_points);
+        }
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let off_boxes = super::clear_of(view, &solid);
+        for (k, text, color, points) in names {
+            drift_label(frame, view, &points, k, text, color, &off_boxes);
         }
         let n = self.steps_done;
         let s = self.bodies[1].orientation.length();

@@ -83,7 +83,8 @@ impl FlockScene {
                 let ticket = *ticket;
                 self.sample = None;
                 let bytes = bytes.map_err(|e| JsError::new(&e))?;
-                let (_, velocities) = crate::render::BoidsCompute::unpack(&bytes);
+                let (positions, velocities) = crate::render::BoidsCompute::unpack(&bytes);
+                self.scene.widen_reach(&positions);
                 self.scene
                     .record_gpu_sample(ticket, &velocities)
                     .map_err(js)?;

@@ -133,6 +133,9 @@ impl DensityScene {
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
         self.camera = Some(viewer.camera);
+        // The view the dragged particle's name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)
@@ -179,6 +182,8 @@ impl DamBreakScene {
     /// Steps towards `time_sec` (at most two frames a call) and draws; returns the note.
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         self.scene.advance_toward(time_sec, 2).map_err(js)?;
+        // Seen from the side, the frame adds a view from the front (the last frame's camera).
+        self.scene.set_view(viewer.camera);
         let note = self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()?;
         Ok(note)

@@ -7,7 +7,7 @@ fn lesson_14_drift_labels_stay_inside_the_canvas_and_apart() {
     // Figure 2 at its page camera (lessons/14-rigid-bodies/lesson.js), both canvases, at the
     // start, part-way and at the end of the run, at the page's spin and step and at the
     // sliders' largest (where the unnormalised box grows too large to draw and its label reads
-    // "too large to draw"): every label is shown where the figure put it, inside the canvas
+    // "(not drawn)"): every label is shown where the figure put it, inside the canvas
     // with EDGE_PX to spare (the rightmost read out past the right edge), and over its box.
     use inbetween::draw::layout::EDGE_PX;
     use inbetween::figures::rigid_body::DriftFigure;
@@ -157,4 +157,211 @@ fn lesson_14_stack_names_its_top_box_just_above_it() {
             }
         }
     }
+}
+
+#[test]
+fn lesson_14_impulse_names_its_arrows_beside_them_off_the_boxes() {
+    // Figure 4 at the page's default camera (the figure sets none; the viewer fits it), both
+    // canvases, from the hit to the end, across tilts, restitutions and heights: every name
+    // (j n, v and ω before and after) is shown where the figure put it, 2 px off every line
+    // and dot (the arrows, the outline of the box at the hit), within 60 px of its arrow's
+    // head (j n of its shaft's middle), and off the box now and the box at the hit: a name
+    // over the box or on an arrow reads as part of it. As on the page, the figure places the
+    // names for the view of the frame before (set_view).
+    use inbetween::figures::rigid_body::{ImpulseFigure, DROP_HALF};
+    use inbetween::rigid_body::contact::corners;
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    let mut failures = Vec::new();
+    for (tilt, e, height) in [(20.0, 0.5, 1.0), (36.0, 0.2, 1.6), (0.0, 0.5, 1.0), (45.0, 1.0, 2.0), (10.0, 0.0, 0.2)] {
+        let mut f = ImpulseFigure::new();
+        f.set_drop(tilt, e, height).unwrap();
+        f.advance_to(f.duration_sec()).unwrap();
+        let hit = f.impact_details().copied().expect("a hit");
+        for k in 0..=6 {
+            let t = hit.time_sec + 0.02 + (f.duration_sec() - hit.time_sec - 0.02) * k as f32 / 6.0;
+            for size in CANVASES {
+                let mut f = f.clone();
+                f.advance_to(t).unwrap();
+                let now = *f.body();
+                let (frame, camera) = drawn_for_view(
+                    &mut f,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out);
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("14 impulse, tilt {tilt}°, e {e}, {height} m, t {t:.2} s");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let check = || {
+                    let placed = layout(&frame, &camera, size);
+                    let all: Vec<usize> = (0..placed.len()).collect();
+                    assert!(placed.len() >= 3, "{name}: {} names", placed.len());
+                    assert_shown_clear_by(&name, &frame, &camera, size, &all, 2.0);
+                    // The boxes' faces, sampled: each name's box holds none of the points.
+                    let mut then = now;
+                    then.position = hit.centre;
+                    then.orientation = hit.orientation;
+                    for body in [now, then] {
+                        let c = corners(&body, DROP_HALF);
+                        let points: Vec<Vec2> = (0..8)
+                            .flat_map(|i| (0..8).map(move |j| (i, j)))
+                            .flat_map(|(i, j)| (0..=4).map(move |s| c[i].lerp(c[j], s as f32 / 4.0)))
+                            .filter_map(|p| project_to_canvas(view_proj, size, p))
+                            .collect();
+                        for (l, b, p) in &placed {
+                            let r = Rect { min: p.top_left, size: b.size };
+                            assert!(
+                                !points.iter().any(|q| q.cmpgt(r.min).all() && q.cmplt(r.max()).all()),
+                                "{name} on {size}: {:?} at {} over a box",
+                                l.text,
+                                p.top_left
+                            );
+                        }
+                    }
+                    // Each name near what it names (its anchor: the head, or j n's shaft).
+                    for (l, b, p) in &placed {
+                        let label = frame.labels.iter().find(|f| f.text == l.text).unwrap();
+                        let tip = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                        let r = Rect { min: p.top_left, size: b.size };
+                        let gap = r.nearest(tip).distance(tip);
+                        assert!(gap <= 60.0, "{name} on {size}: {} {gap} px from its arrow", l.text);
+                    }
+                };
+                failures.extend(failure_of(check));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_14_drift_names_sit_by_their_boxes_when_orbited() {
+    // Figure 2 at the page's camera and orbited (yawed and tipped as a drag does), both
+    // canvases, at the start, part-way and at the end, at the page's spin and step and at the
+    // sliders' largest: every name is shown where the figure put it, 2 px off every line (the
+    // outline of the box the unnormalised one should be), over none of the boxes, and within
+    // 56 px of its own box on screen (as drawn, or the box it should be). As on the page, the figure places the names for the view
+    // of the frame before (set_view).
+    use inbetween::figures::rigid_body::{DriftFigure, DRIFT_HALF};
+    use inbetween::rigid_body::contact::corners;
+    let mut failures = Vec::new();
+    for (spin, step_ms) in [(5.0, 10.0), (24.0, 39.7), (30.0, 50.0)] {
+        for view in [
+            [0.0, 1.0, 0.0, 6.0, 0.0, 0.12],
+            [0.0, 1.0, 0.0, 6.0, 0.8, 0.5],
+            [0.0, 1.0, 0.0, 6.0, -0.7, 0.9],
+            [0.0, 1.0, 0.0, 6.0, -1.4, 0.46],
+            [0.0, 1.0, 0.0, 6.0, 1.4, 0.46],
+            [0.0, 1.0, 0.0, 6.0, -1.1, 0.3],
+            [0.0, 1.0, 0.0, 6.0, -1.6, 0.6],
+            [0.0, 1.0, 0.0, 6.0, -1.25, 0.4],
+        ] {
+            let mut scene = DriftFigure::new();
+            scene.set_drift(spin, step_ms).unwrap();
+            let end = scene.duration_sec();
+            for time_sec in [0.0, 0.35, 3.67, 0.43 * end, end] {
+                scene.advance_to(time_sec).unwrap();
+                for size in CANVASES {
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw(out);
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name =
+                        format!("14 drift, spin {spin}, step {step_ms} ms, t {time_sec}, view {view:?}");
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let check = || {
+                        assert_eq!(frame.labels.len(), 3, "{name}");
+                        assert_shown_clear_by(&name, &frame, &camera, size, &[0, 1, 2], 2.0);
+                        // A box's points on screen: its edges and the lines across it.
+                        let on_screen = |c: &[Vec3]| -> Vec<Vec2> {
+                            let mut out = Vec::new();
+                            for i in 0..c.len() {
+                                for j in 0..c.len() {
+                                    for s in 0..=4 {
+                                        let p = c[i].lerp(c[j], s as f32 / 4.0);
+                                        out.extend(project_to_canvas(view_proj, size, p));
+                                    }
+                                }
+                            }
+                            out
+                        };
+                        // Each box at its unit quaternion (the one the unnormalised should be),
+                        // and each cube drawn (the unnormalised one stretched).
+                        let units: Vec<Vec<Vec2>> = (0..3)
+                            .map(|k| {
+                                let mut unit = scene.bodies()[k];
+                                unit.orientation = unit.orientation.normalize();
+                                unit.position = DriftFigure::place(k);
+                                on_screen(&corners(&unit, DRIFT_HALF))
+                            })
+                            .collect();
+                        let drawn = frame.meshes.iter().map(|m| {
+                            let c: Vec<Vec3> = (0..8)
+                                .map(|i| {
+                                    let s = Vec3::new(
+                                        if i & 1 == 0 { -1.0 } else { 1.0 },
+                                        if i & 2 == 0 { -1.0 } else { 1.0 },
+                                        if i & 4 == 0 { -1.0 } else { 1.0 },
+                                    );
+                                    m.model.transform_point3(s)
+                                })
+                                .collect();
+                            on_screen(&c)
+                        });
+                        let drawn: Vec<Vec<Vec2>> = drawn.collect();
+                        // The cube drawn for box k: every box's, or the outer two's.
+                        let drawn_k = |k: usize| match drawn.len() {
+                            3 => Some(&drawn[k]),
+                            _ if k != 1 => Some(&drawn[k / 2]),
+                            _ => None,
+                        };
+                        let boxes: Vec<Vec<Vec2>> = units.iter().chain(&drawn).cloned().collect();
+                        let placed = layout(&frame, &camera, size);
+                        for (k, (l, b, p)) in placed.iter().enumerate() {
+                            let r = Rect { min: p.top_left, size: b.size };
+                            for points in &boxes {
+                                assert!(
+                                    !points.iter().any(|q| q.cmpgt(r.min).all() && q.cmplt(r.max()).all()),
+                                    "{name} on {size}: {:?} at {} over a box",
+                                    l.text,
+                                    p.top_left
+                                );
+                            }
+                            let gap = units[k]
+                                .iter()
+                                .chain(drawn_k(k).into_iter().flatten())
+                                .map(|q| r.nearest(*q).distance(*q))
+                                .fold(f32::MAX, f32::min);
+                            // The page draws a leader to the anchor from a name that ends
+                            // more than LEADER_PX from it: the names sit at their anchors (at
+                            // the steepest orbit the long "(not drawn)" name steps further out
+                            // and gets its leader).
+                            let label = frame.labels.iter().find(|f| f.text == l.text).unwrap();
+                            let anchor = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                            let off = r.nearest(anchor).distance(anchor);
+                            assert!(
+                                off <= inbetween::draw::layout::LEADER_PX || view[4] < -1.5,
+                                "{name} on {size}: {:?} {off} px from its anchor",
+                                l.text
+                            );
+                            assert!(
+                                gap <= 56.0,
+                                "{name} on {size}: {:?} {gap} px from its box",
+                                l.text
+                            );
+                        }
+                    };
+                    failures.extend(failure_of(check));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
 }

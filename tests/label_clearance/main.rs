@@ -24,6 +24,7 @@ mod lesson_11;
 mod lesson_12;
 mod lesson_13;
 mod lesson_14;
+mod lesson_15;
 
 /// The canvases a 3D figure gets at the two page sizes (beside or under its 270 px panel), CSS px.
 const CANVASES: [Vec2; 2] = [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)];
