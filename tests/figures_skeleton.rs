@@ -749,3 +749,84 @@ fn the_selected_joints_name_has_the_joint_to_itself() {
         }
     }
 }
+
+#[test]
+fn path_ticks_are_sized_to_their_spacing_on_the_canvas() {
+    // Figures 1 and 2 at their page cameras (lessons/06-skeletons/lesson.js: fitted to what the
+    // figure keeps in view), on the canvases the page gives them at 800 × 600 and 1600 × 1000:
+    // Figure 1 at its start (the thigh's path, a few tens of pixels long), with the page test's
+    // settings (the run, the shin, body boxes) at its camera and orbited, and Figure 2's two
+    // compared paths. As on the page, the figure sizes its ticks for the view of the frame
+    // before. Each path's ticks are at most 1.5 times as long across it as they are apart on
+    // average (4 px at the least, the smallest marker; 14 px at the most): on a short path, 14 px
+    // ticks a pixel apart merge into a hatched smudge, and Figure 2's close view keeps long ones.
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::draw::MARKER_TICK;
+    let fitted = |view: [f32; 6], frame: &Frame, size: Vec2| {
+        let mut camera = OrbitCamera::from_view(view);
+        camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+        camera
+    };
+    for (clip, joint, boxes, yaw, pitch) in [
+        ("walk", "thigh.L", false, 0.5, 0.2),
+        ("run", "shin.L", true, 0.5, 0.2),
+        ("run", "shin.L", true, 1.0, 0.5),
+        ("arm circles", "upper_arm.L", false, 1.2, 0.15),
+    ] {
+        for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+            let mut f = SkeletonFigure::new();
+            f.set_clip(clip).unwrap();
+            f.set_show_boxes(boxes);
+            if clip == "arm circles" {
+                f.set_keys_per_cycle(4.0).unwrap();
+                f.set_compare("linear (nlerp)").unwrap();
+            }
+            f.select(f.skeleton().find(joint).unwrap()).unwrap();
+            let view = [0.0, 0.85, 0.0, 2.5, yaw, pitch];
+            let mut frame = Frame::default();
+            f.draw(&mut frame, 0.3).unwrap();
+            let camera = fitted(view, &frame, size);
+            f.set_view(camera, size.x, size.y);
+            let mut frame = Frame::default();
+            f.draw(&mut frame, 0.3).unwrap();
+            let camera = fitted(view, &frame, size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let name = format!("{clip}, {joint}, orbit ({yaw}, {pitch}) on {size}");
+            let mut paths = 0;
+            for color in [palette::PURPLE, palette::BLUE] {
+                let ticks: Vec<_> = frame
+                    .markers
+                    .iter()
+                    .filter(|m| m.shape == MARKER_TICK && m.color[..3] == color.to_array())
+                    .collect();
+                if ticks.is_empty() {
+                    continue;
+                }
+                paths += 1;
+                let at: Vec<Vec2> = ticks
+                    .iter()
+                    .map(|m| project_to_canvas(view_proj, size, Vec3::from(m.center)).unwrap())
+                    .collect();
+                let apart = at.windows(2).map(|w| w[0].distance(w[1])).sum::<f32>()
+                    / (at.len() - 1) as f32;
+                let longest = (1.5 * apart).clamp(4.0, 14.0);
+                for m in &ticks {
+                    assert!(
+                        (m.size_px - longest).abs() < 0.01,
+                        "{name}: a {} px tick, {apart} px apart on average",
+                        m.size_px
+                    );
+                }
+                if clip == "walk" {
+                    assert!(longest < 5.0, "{name}: the thigh's path is short: {apart}");
+                }
+                if clip == "arm circles" {
+                    assert!(longest > 12.0, "{name}: the close view has room: {longest}");
+                }
+            }
+            let expected = if clip == "arm circles" { 2 } else { 1 };
+            assert_eq!(paths, expected, "{name}: paths drawn with ticks");
+        }
+    }
+}

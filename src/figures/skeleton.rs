@@ -36,6 +36,8 @@ const JOINT_RADIUS: f32 = 0.022;
 /// Length of the equal-time ticks across a path, CSS pixels, and how far they sit beside it
 /// when two paths are compared, metres.
 const PATH_TICK_PX: f32 = 14.0;
+/// The most a path's tick is long across it, in average spacings between ticks on the canvas.
+const PATH_TICK_SPACINGS: f32 = 1.5;
 const TICK_OFFSET_M: f32 = 0.025;
 /// The width round the selected joint (its ball and the root of its axes) that its name keeps
 /// clear of, CSS pixels.
@@ -1103,6 +1105,9 @@ impl SkeletonFigure {
         } else {
             (0.0, 0.0)
         };
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
         draw_path(
             frame,
             &self.trail,
@@ -1110,6 +1115,7 @@ impl SkeletonFigure {
             main_step,
             pivot,
             outside,
+            view,
         );
         draw_path(
             frame,
@@ -1118,6 +1124,7 @@ impl SkeletonFigure {
             compare_step,
             pivot,
             inside,
+            view,
         );
         // The crossfade's two clips alone, beside the blend.
         let source_names = [
@@ -1166,9 +1173,6 @@ impl SkeletonFigure {
         // first place round the joint clear of them by a few pixels, up and to the right first.
         let p = selected.w_axis.truncate();
         let name = self.skeleton.names()[self.selected].clone();
-        let view = self
-            .view
-            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
         let first = crate::draw::Label {
             anchor: p + Vec3::new(0.05, 0.05, 0.0),
             text: name.clone(),
@@ -1315,8 +1319,18 @@ fn box_corners(shape: &JointShape) -> impl Iterator<Item = Vec3> + '_ {
 /// A path of equal-time samples: a wide line with a tick at each sample, or, for step keys
 /// (where the pose jumps), a dot at each sample, so the dots pile up on the keys.
 /// The ticks (or dots) sit `offset` metres from the path, away from `pivot` (towards it when
-/// negative).
-fn draw_path(frame: &mut Frame, path: &[Vec3], color: Vec3, step: bool, pivot: Vec3, offset: f32) {
+/// negative). On the last frame's `view` (view-projection, canvas size in CSS pixels) the ticks
+/// are [`PATH_TICK_SPACINGS`] times as long across the path as they are apart on average, from
+/// [`crate::draw::MIN_MARKER_PX`] to [`PATH_TICK_PX`].
+fn draw_path(
+    frame: &mut Frame,
+    path: &[Vec3],
+    color: Vec3,
+    step: bool,
+    pivot: Vec3,
+    offset: f32,
+    view: Option<(Mat4, Vec2)>,
+) {
     if path.len() < 2 {
         return;
     }
@@ -1331,8 +1345,22 @@ fn draw_path(frame: &mut Frame, path: &[Vec3], color: Vec3, step: bool, pivot: V
             frame.marker(p, crate::draw::DOT_PX, color);
         }
     } else {
+        // A path a few tens of pixels long on the canvas has its ticks a pixel or two apart:
+        // full-length ticks there merge into a hatched smudge wider than the path is long.
+        let tick_px = view
+            .and_then(|(view_proj, size)| {
+                let on_canvas = samples
+                    .iter()
+                    .map(|&p| project_to_canvas(view_proj, size, p))
+                    .collect::<Option<Vec<Vec2>>>()?;
+                let length: f32 = on_canvas.windows(2).map(|w| w[0].distance(w[1])).sum();
+                Some(PATH_TICK_SPACINGS * length / (on_canvas.len().max(2) - 1) as f32)
+            })
+            .map_or(PATH_TICK_PX, |px| {
+                px.clamp(crate::draw::MIN_MARKER_PX, PATH_TICK_PX)
+            });
         frame.wide_polyline(path, color, crate::draw::CURVE_PX);
-        frame.ticks(&samples, PATH_TICK_PX, color);
+        frame.ticks(&samples, tick_px, color);
     }
 }
 
