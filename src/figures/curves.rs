@@ -1082,9 +1082,11 @@ impl LagrangeScene {
         let mut more: Vec<(f32, f32)> = times.iter().copied().zip(values.iter().copied()).collect();
         // Never on an integer time, and distinct for n ≥ 3.
         let (a, b) = ((n - 1) as f32 * 0.25 + 0.1, (n - 1) as f32 * 0.75 - 0.1);
-        more.push((a, wave(a) + 0.08));
-        more.push((b, wave(b) - 0.08));
-        more.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Each inserted after the keys at or before its time: the times stay sorted.
+        for key in [(a, wave(a) + 0.08), (b, wave(b) - 0.08)] {
+            let at = more.partition_point(|k| k.0 <= key.0);
+            more.insert(at, key);
+        }
         let (more_t, more_v) = more.into_iter().unzip();
         ((times, values), (more_t, more_v))
     }
