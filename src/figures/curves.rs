@@ -15,6 +15,7 @@ use crate::curves::{
     self, ArcLengthTable, Ease, Interpolation, Sample, TimeWarp, Track, MAX_LAGRANGE_KEYS,
 };
 use crate::exercises::run;
+use crate::Valid;
 use glam::{Mat4, Vec2, Vec3};
 
 /// The path, blue in the text.
@@ -224,7 +225,7 @@ impl KeyframesScene {
         let (times, values) = preset("default").expect("a known preset");
         let track = Track::new(times, values)
             .and_then(|t| t.with_interpolation(Interpolation::CATMULL_ROM))
-            .expect("valid default keys");
+            .valid("valid default keys");
         KeyframesScene {
             table: ArcLengthTable::new(&track, ARC_TABLE_SUBDIVISIONS),
             track,
@@ -1390,7 +1391,7 @@ impl CardinalScene {
     pub fn track(&self, rule: ChordRule) -> Track<Vec2> {
         let d = self.tangents(rule);
         Track::new_hermite(self.times.clone(), self.values.clone(), d.clone(), d)
-            .expect("preset keys and finite tangents")
+            .valid("preset keys and finite tangents")
     }
 
     /// The path by `rule`, `samples` points evenly spaced in time.
