@@ -3,6 +3,7 @@
 
 use crate::curves::Track;
 use crate::transform::local_matrix;
+use crate::Valid;
 use glam::{Mat4, Vec3};
 
 /// A small deterministic generator (SplitMix64): the same inputs on every machine and in wasm.
@@ -61,7 +62,7 @@ pub fn sampling_benchmark(
         t += rng.range(0.05, 0.15);
         values.push(rng.vec3(0.0, 10.0));
     }
-    let track = Track::new(times, values).expect("increasing finite keys");
+    let track = Track::new(times, values).valid("increasing finite keys");
     let (start, duration) = (track.start_sec(), track.duration_sec());
     let increasing = (0..samples)
         .map(|k| start + duration * k as f32 / samples as f32)

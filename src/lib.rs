@@ -93,3 +93,29 @@ pub mod transform;
 pub mod render;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
+
+/// `.valid("what was expected")` on a `Result` whose inputs are built into the course (a rig, a
+/// clip, a preset, a validated setting): the value, else a panic naming what was expected and the
+/// error's message. `expect` would print the error with `Debug`; this prints its `Display` (the
+/// message the pages show), so the error types' derived `Debug` stays out of the wasm.
+pub(crate) trait Valid<T> {
+    fn valid(self, what: &str) -> T;
+}
+
+impl<T, E: core::fmt::Display> Valid<T> for Result<T, E> {
+    #[track_caller]
+    fn valid(self, what: &str) -> T {
+        match self {
+            Ok(value) => value,
+            Err(error) => invalid(what, &error),
+        }
+    }
+}
+
+/// [`Valid::valid`]'s panic, out of line: one copy of the formatting for every caller.
+#[cold]
+#[inline(never)]
+#[track_caller]
+fn invalid(what: &str, error: &dyn core::fmt::Display) -> ! {
+    panic!("{what}: {error}")
+}

@@ -1278,3 +1278,97 @@ fn smootherstep_does_not_overshoot_near_one() {
     let e = Ease::Smootherstep.apply(0.998_832_3);
     assert!((0.0..=1.0).contains(&e), "{e}");
 }
+
+/// The tangents a track keeps for each scheme, computed with the generic functions on the value
+/// type itself: a track computes them on `Vec4`s (`Value::to_vec4`), which must give the same
+/// numbers to the bit (a lane mixed into another, or a value type's length used in a scheme
+/// that has none).
+fn expected_tangents<T: Value>(
+    scheme: Interpolation,
+    times: &[f32],
+    values: &[T],
+) -> (Vec<T>, Vec<T>) {
+    let n = times.len();
+    let (mut tin, mut tout) = (vec![T::ZERO; n], vec![T::ZERO; n]);
+    match scheme {
+        Interpolation::Linear => {
+            for i in 0..n {
+                let slope =
+                    |a: usize, b: usize| (values[b] - values[a]) * (1.0 / (times[b] - times[a]));
+                let before = if i > 0 { slope(i - 1, i) } else { T::ZERO };
+                let after = if i + 1 < n { slope(i, i + 1) } else { before };
+                tin[i] = if i > 0 { before } else { after };
+                tout[i] = after;
+            }
+        }
+        Interpolation::Lagrange => {
+            for i in 0..n {
+                let [_, velocity, _] = lagrange(times, values, times[i]);
+                (tin[i], tout[i]) = (velocity, velocity);
+            }
+        }
+        Interpolation::Cardinal { tension } => {
+            cardinal_tangents(times, values, tension, &mut tout);
+            tin.copy_from_slice(&tout);
+        }
+        Interpolation::Natural => {
+            natural_spline_tangents(
+                times,
+                values,
+                &mut tout,
+                &mut vec![0.0; n],
+                &mut vec![T::ZERO; n],
+            );
+            tin.copy_from_slice(&tout);
+        }
+        Interpolation::Centripetal => centripetal_tangents(times, values, &mut tin, &mut tout),
+        _ => {}
+    }
+    (tin, tout)
+}
+
+fn check_track_tangents<T: Value>(times: &[f32], values: Vec<T>) {
+    for scheme in [
+        Interpolation::Step,
+        Interpolation::Linear,
+        Interpolation::Lagrange,
+        Interpolation::CATMULL_ROM,
+        Interpolation::Cardinal { tension: 0.3 },
+        Interpolation::Natural,
+        Interpolation::Centripetal,
+    ] {
+        let track = Track::new(times.to_vec(), values.clone())
+            .unwrap()
+            .with_interpolation(scheme)
+            .unwrap();
+        let (tin, tout) = expected_tangents(scheme, times, &values);
+        let bits = |v: &[T]| v.iter().map(|x| format!("{x:?}")).collect::<Vec<_>>();
+        assert_eq!(
+            bits(track.tangents_in()),
+            bits(&tin),
+            "{scheme:?} in tangents of {values:?}"
+        );
+        assert_eq!(
+            bits(track.tangents_out()),
+            bits(&tout),
+            "{scheme:?} out tangents of {values:?}"
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn track_tangents_are_the_schemes_on_each_value_type(
+        gaps in prop::collection::vec(0.05_f32..2.0, 1..9),
+        raw in prop::collection::vec(prop::array::uniform4(-50.0_f32..50.0), 9),
+    ) {
+        let times: Vec<f32> = std::iter::once(0.0).chain(gaps.iter().scan(0.0, |t, g| { *t += g; Some(*t) })).collect();
+        let keys = &raw[..times.len()];
+        check_track_tangents(&times, keys.iter().map(|c| c[0]).collect::<Vec<f32>>());
+        check_track_tangents(&times, keys.iter().map(|c| Vec2::new(c[0], c[1])).collect());
+        check_track_tangents(&times, keys.iter().map(|c| Vec3::new(c[0], c[1], c[2])).collect());
+        check_track_tangents(&times, keys.iter().map(|&c| Vec4::from(c)).collect());
+    }
+}

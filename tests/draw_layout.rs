@@ -2,7 +2,9 @@
 //! shown label lies inside the canvas, and priorities decide who keeps its place.
 
 use glam::Vec2;
-use inbetween::draw::layout::{place, preferred, LabelBox, Placement, Rect, EDGE_PX, PAD_PX};
+use inbetween::draw::layout::{
+    place, preferred, priority_order, LabelBox, Placement, Rect, EDGE_PX, PAD_PX,
+};
 use proptest::prelude::*;
 
 fn rect(label: &LabelBox, p: &Placement) -> Rect {
@@ -181,6 +183,15 @@ proptest! {
         for (k, &i) in kept.iter().enumerate() {
             prop_assert_eq!(again[k], placed[i], "label {} moved when lower priorities left", i);
         }
+    }
+
+    /// The layout's order is the standard library's stable sort by descending priority: highest
+    /// first, equal priorities in the order given (a tie taken out of order, or ascending).
+    #[test]
+    fn priority_order_is_a_stable_descending_sort(priorities in prop::collection::vec(-3i32..4, 0..60)) {
+        let mut expected: Vec<usize> = (0..priorities.len()).collect();
+        expected.sort_by_key(|&i| std::cmp::Reverse(priorities[i]));
+        prop_assert_eq!(priority_order(&priorities), expected);
     }
 }
 

@@ -17,6 +17,7 @@
 //!
 //! Nothing allocates per frame: outputs go into the caller's slices. Lesson: `lessons/10-blend-shapes`.
 
+use crate::Valid;
 use glam::Vec3;
 use std::fmt;
 
@@ -403,17 +404,17 @@ pub fn face() -> Face {
             .map(|&p| p + face_displacement(k, p))
             .collect();
         let mut n = vec![Vec3::ZERO; p.len()];
-        crate::raster::vertex_normals(&p, &mesh.indices, &mut n).expect("valid indices");
+        crate::raster::vertex_normals(&p, &mesh.indices, &mut n).valid("valid indices");
         pairs.push((p.clone(), n));
         targets.push(p);
     }
     let mut base_normals = vec![Vec3::ZERO; mesh.positions.len()];
     crate::raster::vertex_normals(&mesh.positions, &mesh.indices, &mut base_normals)
-        .expect("valid indices");
+        .valid("valid indices");
     mesh.normals = base_normals.clone();
     let colors = mesh.positions.iter().map(|&p| face_color(p)).collect();
     let shapes = BlendShapes::from_targets(mesh.positions.clone(), base_normals, &pairs)
-        .expect("the face's targets match its base");
+        .valid("the face's targets match its base");
     Face {
         shapes,
         mesh,

@@ -8,6 +8,7 @@ use super::lagrange::lagrange;
 use super::natural::natural_spline_tangents;
 use super::segment::Cursor;
 use super::Value;
+use glam::Vec4;
 
 /// How a [`Track`] fills the time between its keys.
 ///
@@ -668,53 +669,82 @@ impl<T: Value> Track<T> {
         }
     }
 
-    /// Recomputes `tangents_in` / `tangents_out` for the current interpolation.
+    /// Recomputes `tangents_in` / `tangents_out` for the current interpolation. Every scheme but
+    /// the centripetal one (whose knots need the type's own length) works component by
+    /// component, so it runs on the values as `Vec4`s ([`Value::to_vec4`]): one compiled body
+    /// for the four value types.
     fn update_tangents(&mut self) {
-        let n = self.times.len();
-        let (times, values) = (&self.times, &self.values);
         match self.interpolation {
             Interpolation::Hermite => {}
-            Interpolation::Step => {
-                self.tangents_in.fill(T::ZERO);
-                self.tangents_out.fill(T::ZERO);
-            }
-            Interpolation::Linear => {
-                for i in 0..n {
-                    let slope = |a: usize, b: usize| {
-                        (values[b] - values[a]) * (1.0 / (times[b] - times[a]))
-                    };
-                    let before = if i > 0 { slope(i - 1, i) } else { T::ZERO };
-                    let after = if i + 1 < n { slope(i, i + 1) } else { before };
-                    self.tangents_in[i] = if i > 0 { before } else { after };
-                    self.tangents_out[i] = after;
-                }
-            }
-            Interpolation::Lagrange => {
-                for i in 0..n {
-                    let [_, velocity, _] = lagrange(times, values, times[i]);
-                    self.tangents_in[i] = velocity;
-                    self.tangents_out[i] = velocity;
-                }
-            }
-            Interpolation::Cardinal { tension } => {
-                cardinal_tangents(times, values, tension, &mut self.tangents_out);
-                self.tangents_in.copy_from_slice(&self.tangents_out);
-            }
-            Interpolation::Natural => {
-                let mut diagonal = vec![0.0; n];
-                let mut rhs = vec![T::ZERO; n];
-                natural_spline_tangents(
-                    times,
-                    values,
-                    &mut self.tangents_out,
-                    &mut diagonal,
-                    &mut rhs,
+            Interpolation::Centripetal => centripetal_tangents(
+                &self.times,
+                &self.values,
+                &mut self.tangents_in,
+                &mut self.tangents_out,
+            ),
+            scheme => {
+                let values: Vec<Vec4> = self.values.iter().map(|v| v.to_vec4()).collect();
+                let mut tangents_in = vec![Vec4::ZERO; values.len()];
+                let mut tangents_out = vec![Vec4::ZERO; values.len()];
+                component_tangents(
+                    scheme,
+                    &self.times,
+                    &values,
+                    &mut tangents_in,
+                    &mut tangents_out,
                 );
-                self.tangents_in.copy_from_slice(&self.tangents_out);
+                for (t, v) in self.tangents_in.iter_mut().zip(tangents_in) {
+                    *t = T::from_vec4(v);
+                }
+                for (t, v) in self.tangents_out.iter_mut().zip(tangents_out) {
+                    *t = T::from_vec4(v);
+                }
             }
-            Interpolation::Centripetal => {
-                centripetal_tangents(times, values, &mut self.tangents_in, &mut self.tangents_out);
+        }
+    }
+}
+
+/// The in and out tangents of `scheme` (any but [`Interpolation::Hermite`], whose tangents are
+/// given, and [`Interpolation::Centripetal`]) for keys `(times, values)`, written into
+/// `tangents_in` and `tangents_out` (zeros on entry, the length of `times`).
+#[inline(never)]
+fn component_tangents(
+    scheme: Interpolation,
+    times: &[f32],
+    values: &[Vec4],
+    tangents_in: &mut [Vec4],
+    tangents_out: &mut [Vec4],
+) {
+    let n = times.len();
+    match scheme {
+        // A step holds each key: its tangents stay zero.
+        Interpolation::Hermite | Interpolation::Centripetal | Interpolation::Step => {}
+        Interpolation::Linear => {
+            for i in 0..n {
+                let slope =
+                    |a: usize, b: usize| (values[b] - values[a]) * (1.0 / (times[b] - times[a]));
+                let before = if i > 0 { slope(i - 1, i) } else { Vec4::ZERO };
+                let after = if i + 1 < n { slope(i, i + 1) } else { before };
+                tangents_in[i] = if i > 0 { before } else { after };
+                tangents_out[i] = after;
             }
+        }
+        Interpolation::Lagrange => {
+            for i in 0..n {
+                let [_, velocity, _] = lagrange(times, values, times[i]);
+                tangents_in[i] = velocity;
+                tangents_out[i] = velocity;
+            }
+        }
+        Interpolation::Cardinal { tension } => {
+            cardinal_tangents(times, values, tension, tangents_out);
+            tangents_in.copy_from_slice(tangents_out);
+        }
+        Interpolation::Natural => {
+            let mut diagonal = vec![0.0; n];
+            let mut rhs = vec![Vec4::ZERO; n];
+            natural_spline_tangents(times, values, tangents_out, &mut diagonal, &mut rhs);
+            tangents_in.copy_from_slice(tangents_out);
         }
     }
 }

@@ -27,6 +27,14 @@ pub trait Value:
 
     /// Euclidean length: `|x|` for a scalar, `√(x² + y² + …)` for a vector.
     fn length(self) -> f32;
+
+    /// The components in a [`Vec4`], the missing ones zero: a track computes the tangents of
+    /// every value type with one compiled body on `Vec4` (component by component, so the same
+    /// numbers as on the type itself).
+    fn to_vec4(self) -> Vec4;
+
+    /// The value in the first components of `v`: the inverse of [`Value::to_vec4`].
+    fn from_vec4(v: Vec4) -> Self;
 }
 
 impl Value for f32 {
@@ -38,6 +46,14 @@ impl Value for f32 {
 
     fn length(self) -> f32 {
         self.abs()
+    }
+
+    fn to_vec4(self) -> Vec4 {
+        Vec4::new(self, 0.0, 0.0, 0.0)
+    }
+
+    fn from_vec4(v: Vec4) -> Self {
+        v.x
     }
 }
 
@@ -51,6 +67,14 @@ impl Value for Vec2 {
     fn length(self) -> f32 {
         Vec2::length(self)
     }
+
+    fn to_vec4(self) -> Vec4 {
+        self.extend(0.0).extend(0.0)
+    }
+
+    fn from_vec4(v: Vec4) -> Self {
+        v.truncate().truncate()
+    }
 }
 
 impl Value for Vec3 {
@@ -63,6 +87,14 @@ impl Value for Vec3 {
     fn length(self) -> f32 {
         Vec3::length(self)
     }
+
+    fn to_vec4(self) -> Vec4 {
+        self.extend(0.0)
+    }
+
+    fn from_vec4(v: Vec4) -> Self {
+        v.truncate()
+    }
 }
 
 impl Value for Vec4 {
@@ -74,5 +106,13 @@ impl Value for Vec4 {
 
     fn length(self) -> f32 {
         Vec4::length(self)
+    }
+
+    fn to_vec4(self) -> Vec4 {
+        self
+    }
+
+    fn from_vec4(v: Vec4) -> Self {
+        v
     }
 }

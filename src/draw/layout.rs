@@ -137,11 +137,24 @@ pub fn place(labels: &[LabelBox], canvas: Vec2) -> Vec<Placement> {
     place_avoiding(labels, canvas, &[])
 }
 
+/// The indices of `priorities`, highest first, equal priorities in their given order (a
+/// stable sort): the order in which [`place_avoiding`], and a figure that places its own labels,
+/// take them. A binary insertion sort: a figure has tens of labels, and every caller shares this
+/// one small body (each `sort_by_key` closure would compile a whole sort of its own).
+pub fn priority_order(priorities: &[i32]) -> Vec<usize> {
+    let mut order: Vec<usize> = Vec::with_capacity(priorities.len());
+    for (i, &p) in priorities.iter().enumerate() {
+        // After every index of a priority ≥ p: equal priorities keep their order.
+        let at = order.partition_point(|&j| priorities[j] >= p);
+        order.insert(at, i);
+    }
+    order
+}
+
 /// [`place`], keeping every label off the `obstacles` too (a figure's inset).
 pub fn place_avoiding(labels: &[LabelBox], canvas: Vec2, obstacles: &[Rect]) -> Vec<Placement> {
-    let mut order: Vec<usize> = (0..labels.len()).collect();
-    // Stable: equal priorities keep the scene's order.
-    order.sort_by_key(|&i| std::cmp::Reverse(labels[i].priority));
+    let priorities: Vec<i32> = labels.iter().map(|l| l.priority).collect();
+    let order = priority_order(&priorities);
     let hidden = Placement {
         top_left: Vec2::ZERO,
         shown: false,

@@ -9,6 +9,7 @@ use super::{solution, Answer};
 #[allow(unused_imports)]
 use super::NotDone;
 use crate::raster::{self, Material};
+use crate::Valid;
 use glam::{Mat4, Vec3};
 
 /// **Exercise 0.1: the perspective matrix (wgpu's depth range).**
@@ -217,7 +218,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
         |(p, i)| vertex_normals(p, i),
         |(p, i)| {
             let mut out = vec![Vec3::ZERO; p.len()];
-            raster::vertex_normals(p, i, &mut out).expect("the grader's meshes are valid");
+            raster::vertex_normals(p, i, &mut out).valid("the grader's meshes are valid");
             out
         },
         |a, b| vec_close(a, b, 2e-4),

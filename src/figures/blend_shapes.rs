@@ -15,6 +15,7 @@ use super::{
 use crate::blend_shapes::{face, Face};
 use crate::exercises::run;
 use crate::figures::skinning::SkinnedMesh;
+use crate::Valid;
 use glam::{Mat4, Vec3};
 
 const EXERCISE_FILE: &str = "src/exercises/blend_shapes.rs";
@@ -729,7 +730,7 @@ impl TargetsFigure {
             self.face
                 .shapes
                 .apply_differential(&w, &mut head.positions, &mut head.normals)
-                .expect("one weight per target, finite");
+                .valid("one weight per target, finite");
             head.mark_dirty();
         }
         self.blended = Some(self.weight);

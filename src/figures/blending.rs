@@ -21,6 +21,7 @@ use crate::skeleton::{
     Clip, ClipCursor, Pose, RootMotion, Skeleton,
 };
 use crate::transform::JointShape;
+use crate::Valid;
 use glam::{Affine3A, EulerRot, Mat4, Quat, Vec3};
 
 const EXERCISE_FILE: &str = "src/exercises/skeleton.rs";
@@ -84,7 +85,7 @@ impl BlendFigure {
         let clips = (0..human::CLIP_NAMES.len())
             .map(|i| {
                 let raw = human::clip(&skeleton, i).expect("a built-in clip");
-                Clip::from_raw(&raw, &skeleton).expect("the built-in clips build")
+                Clip::from_raw(&raw, &skeleton).valid("the built-in clips build")
             })
             .collect();
         // The lean: spine and chest forward, head turned, as a difference from the rest pose.
@@ -738,7 +739,7 @@ impl LocomotionFigure {
         let (skeleton, shapes) = human::simple_human();
         let clip = |i| {
             let raw = human::travelling_clip(&skeleton, i, 25).expect("the travelling clips");
-            Clip::from_raw(&raw, &skeleton).expect("the travelling clips build")
+            Clip::from_raw(&raw, &skeleton).valid("the travelling clips build")
         };
         let (walk, run) = (clip(1), clip(2));
         let motion = [RootMotion::from_clip(&walk), RootMotion::from_clip(&run)];

@@ -15,6 +15,7 @@ use crate::curves::{
     self, ArcLengthTable, Ease, Interpolation, Sample, TimeWarp, Track, MAX_LAGRANGE_KEYS,
 };
 use crate::exercises::run;
+use crate::Valid;
 use glam::{Mat4, Vec2, Vec3};
 
 /// The path, blue in the text.
@@ -224,7 +225,7 @@ impl KeyframesScene {
         let (times, values) = preset("default").expect("a known preset");
         let track = Track::new(times, values)
             .and_then(|t| t.with_interpolation(Interpolation::CATMULL_ROM))
-            .expect("valid default keys");
+            .valid("valid default keys");
         KeyframesScene {
             table: ArcLengthTable::new(&track, ARC_TABLE_SUBDIVISIONS),
             track,
@@ -1082,9 +1083,11 @@ impl LagrangeScene {
         let mut more: Vec<(f32, f32)> = times.iter().copied().zip(values.iter().copied()).collect();
         // Never on an integer time, and distinct for n ≥ 3.
         let (a, b) = ((n - 1) as f32 * 0.25 + 0.1, (n - 1) as f32 * 0.75 - 0.1);
-        more.push((a, wave(a) + 0.08));
-        more.push((b, wave(b) - 0.08));
-        more.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Each inserted after the keys at or before its time: the times stay sorted.
+        for key in [(a, wave(a) + 0.08), (b, wave(b) - 0.08)] {
+            let at = more.partition_point(|k| k.0 <= key.0);
+            more.insert(at, key);
+        }
         let (more_t, more_v) = more.into_iter().unzip();
         ((times, values), (more_t, more_v))
     }
@@ -1388,7 +1391,7 @@ impl CardinalScene {
     pub fn track(&self, rule: ChordRule) -> Track<Vec2> {
         let d = self.tangents(rule);
         Track::new_hermite(self.times.clone(), self.values.clone(), d.clone(), d)
-            .expect("preset keys and finite tangents")
+            .valid("preset keys and finite tangents")
     }
 
     /// The path by `rule`, `samples` points evenly spaced in time.

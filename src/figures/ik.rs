@@ -822,9 +822,13 @@ impl IkFigure {
         }
         // Last, once every chain is drawn (a chain passes another's root when the target lies
         // far to the side), highest priority first, as the page's layout places them.
-        placed_labels.sort_by_key(|l| std::cmp::Reverse(l.priority));
-        for label in placed_labels {
-            self.place_label(frame, label);
+        let priorities: Vec<i32> = placed_labels.iter().map(|l| l.priority).collect();
+        let mut placed_labels: Vec<Option<PlacedLabel>> =
+            placed_labels.into_iter().map(Some).collect();
+        for i in crate::draw::layout::priority_order(&priorities) {
+            if let Some(label) = placed_labels[i].take() {
+                self.place_label(frame, label);
+            }
         }
         Ok(self.notes.join(" "))
     }

@@ -18,6 +18,7 @@ use crate::terrain::{
     last_resolved_octave, terrain_normal, Terrain, TerrainParams, Variant, MAX_RESOLUTION,
 };
 use crate::texture::{TextureId, UvRect};
+use crate::Valid;
 use glam::{Mat4, Vec2, Vec3};
 
 const FILE: &str = "src/exercises/noise.rs";
@@ -1540,7 +1541,7 @@ impl Normals {
             &self.terrain.indices,
             &mut self.averaged,
         )
-        .expect("the terrain's indices are valid");
+        .valid("the terrain's indices are valid");
         self.dirty = true;
     }
 

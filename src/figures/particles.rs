@@ -24,6 +24,7 @@ use crate::particles::{
     ParticleSystem, Plane, Sphere, SquashBall, Surfaces, VelocityDist,
 };
 use crate::texture::{SpriteInstance, TextureId};
+use crate::Valid;
 use glam::{Mat4, Vec3, Vec4};
 
 const FILE: &str = "src/exercises/particles.rs";
@@ -146,7 +147,7 @@ impl EmitterFigure {
             speed_max: 5.8,
         };
         Self {
-            system: ParticleSystem::new(PAGE_MAX_PARTICLES, 11).expect("under the cap"),
+            system: ParticleSystem::new(PAGE_MAX_PARTICLES, 11).valid("under the cap"),
             emitters: [fountain, Emitter::explosion(Vec3::new(-0.3, 2.2, 0.0))],
             surfaces,
             mode: 0,

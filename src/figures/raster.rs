@@ -11,6 +11,7 @@ use crate::mesh::MeshData;
 use crate::raster::shading::{light_from_image, sphere_image, Term};
 use crate::raster::storage::{tetrahedron, uv_sphere_indexed};
 use crate::raster::{self, Material, MeshSizes, ShadingModel};
+use crate::Valid;
 use glam::{Mat3, Mat4, Vec2, Vec3};
 
 const DEG: f32 = std::f32::consts::PI / 180.0;
@@ -515,7 +516,7 @@ impl Frustum {
         } else {
             raster::perspective_wgpu
         };
-        f(self.fov_y_rad, Self::ASPECT, self.near, self.far).expect("validated by the setters")
+        f(self.fov_y_rad, Self::ASPECT, self.near, self.far).valid("validated by the setters")
     }
 
     /// The wgpu matrix the figure uses: the student's with "use my exercise" when it gives one.
@@ -765,7 +766,7 @@ impl Frustum {
                 format_number(far)
             );
             let reference =
-                raster::perspective_wgpu(fov_deg * DEG, aspect, near, far).expect("valid probe");
+                raster::perspective_wgpu(fov_deg * DEG, aspect, near, far).valid("valid probe");
             let yours = match run::perspective_matrix(self.runner, fov_deg * DEG, aspect, near, far)
             {
                 Ok(m) => m,
@@ -1183,7 +1184,7 @@ impl Normals {
     pub fn new() -> Self {
         let (positions, indices) = uv_sphere_indexed(10, 6);
         let mut smooth = vec![Vec3::ZERO; positions.len()];
-        raster::vertex_normals(&positions, &indices, &mut smooth).expect("a valid sphere");
+        raster::vertex_normals(&positions, &indices, &mut smooth).valid("a valid sphere");
         Normals {
             flat: false,
             scale_x: 3.0,
@@ -1221,7 +1222,7 @@ impl Normals {
         self.use_exercise = on;
         let mut reference = vec![Vec3::ZERO; self.positions.len()];
         raster::vertex_normals(&self.positions, &self.indices, &mut reference)
-            .expect("a valid sphere");
+            .valid("a valid sphere");
         self.smooth = reference.clone();
         self.exercise_note.clear();
         if !on {
@@ -1288,7 +1289,7 @@ impl Normals {
         let mut differing = Vec::new();
         for (what, positions, indices) in vertex_normal_probes() {
             let mut reference = vec![Vec3::ZERO; positions.len()];
-            raster::vertex_normals(&positions, &indices, &mut reference).expect("a valid mesh");
+            raster::vertex_normals(&positions, &indices, &mut reference).valid("a valid mesh");
             let idx: Vec<f32> = indices.iter().map(|&i| i as f32).collect();
             match run::vertex_normals(self.runner, positions, idx) {
                 Err(f) => {
@@ -1342,7 +1343,7 @@ impl Normals {
     /// The flat mesh: every triangle with its own corners and its face normal.
     pub fn flat_mesh(&self) -> MeshData {
         let (positions, normals) =
-            raster::flat_shaded(&self.positions, &self.indices).expect("a valid sphere");
+            raster::flat_shaded(&self.positions, &self.indices).valid("a valid sphere");
         let indices = (0..positions.len() as u32).collect();
         MeshData {
             positions,

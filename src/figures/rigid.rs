@@ -11,6 +11,7 @@ use super::{
 use crate::exercises::run;
 use crate::rigid::{DualQuat, ScrewInterpolator};
 use crate::rotation::{self, check_quat, quat_from_mat3, slerp, AffineKey, AxisAngle};
+use crate::Valid;
 use glam::{Mat3, Mat4, Quat, Vec3};
 
 const DEG: f32 = std::f32::consts::PI / 180.0;
@@ -680,7 +681,7 @@ impl Default for AffineKeys {
 impl AffineKeys {
     pub fn new() -> Self {
         let a = Mat4::from_translation(Vec3::new(-0.6, 0.7, 0.0));
-        let key = AffineKey::from_mat4(a).expect("a translation is a valid key");
+        let key = AffineKey::from_mat4(a).valid("a translation is a valid key");
         let mut scene = AffineKeys {
             a,
             b: a,
@@ -762,7 +763,7 @@ impl AffineKeys {
         self.note.clear();
         for which in 0..2 {
             let m = if which == 0 { self.a } else { self.b };
-            let mut key = AffineKey::from_mat4(m).expect("validated when set");
+            let mut key = AffineKey::from_mat4(m).valid("validated when set");
             if self.use_exercise {
                 if let Ok(Some((r, _))) = student_polar(self.runner, Mat3::from_mat4(m)) {
                     key.rotation = quat_from_mat3(r);

@@ -24,6 +24,7 @@ use crate::skinning::rigs::{cylinder_rig, skinned_human, CylinderRig, SkinnedCha
 use crate::skinning::{
     dual_quat_palette, mesh_volume, ring_area, skin_dqs, skin_lbs, skinning_palette, SkinWeights,
 };
+use crate::Valid;
 use glam::{Affine3A, Mat4, Vec2, Vec3, Vec4};
 
 const EXERCISE_FILE: &str = "src/exercises/skinning.rs";
@@ -218,9 +219,9 @@ impl CylinderFigure {
     /// Bent 90°, not twisted, falloff 0.15 m, no heat map.
     pub fn new() -> Self {
         let rig = cylinder_rig(1.0, 0.25, CYLINDER_RINGS, CYLINDER_AROUND)
-            .expect("the lesson's cylinder is valid");
+            .valid("the lesson's cylinder is valid");
         let falloff = 0.15;
-        let skin = rig.weights(falloff).expect("a valid falloff");
+        let skin = rig.weights(falloff).valid("a valid falloff");
         let n = rig.mesh.positions.len();
         let j = rig.skeleton.len();
         let mut figure = Self {
@@ -949,12 +950,12 @@ impl HumanFigure {
     /// The walk, by DQS, falloff 0.03 m.
     pub fn new() -> Self {
         let falloff = 0.03;
-        let character = skinned_human(falloff).expect("the built-in human skins");
+        let character = skinned_human(falloff).valid("the built-in human skins");
         let skeleton = &character.skeleton;
         let clips = (0..human::CLIP_NAMES.len())
             .map(|i| {
                 let raw = human::clip(skeleton, i).expect("a built-in clip");
-                Clip::from_raw(&raw, skeleton).expect("the built-in clips build")
+                Clip::from_raw(&raw, skeleton).valid("the built-in clips build")
             })
             .collect();
         let n = skeleton.len();
@@ -1621,8 +1622,8 @@ impl SignFigure {
     /// Twisted 300°, fix on.
     pub fn new() -> Self {
         let rig = cylinder_rig(1.0, 0.25, CYLINDER_RINGS, CYLINDER_AROUND)
-            .expect("the lesson's cylinder is valid");
-        let skin = rig.weights(0.15).expect("a valid falloff");
+            .valid("the lesson's cylinder is valid");
+        let skin = rig.weights(0.15).valid("a valid falloff");
         let n = rig.mesh.positions.len();
         let j = rig.skeleton.len();
         let mut mesh = SkinnedMesh::new(n);

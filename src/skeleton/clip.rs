@@ -28,6 +28,7 @@ use core::fmt;
 use super::hierarchy::{Pose, Skeleton, Transform};
 use crate::curves::{cardinal_tangents, Cursor, Interpolation, Track, TrackError};
 use crate::rotation::slerp;
+use crate::Valid;
 use glam::{Quat, Vec3, Vec4};
 
 /// The most key times a runtime clip may have (after merging every channel's times).
@@ -348,10 +349,10 @@ impl RawClip {
                 .into_iter()
                 .flatten()
             {
-                track.set_interpolation(scheme).expect("tension 1 is valid");
+                track.set_interpolation(scheme).valid("tension 1 is valid");
             }
             if let Some(track) = &mut tracks.rotation {
-                track.set_interpolation(scheme).expect("tension 1 is valid");
+                track.set_interpolation(scheme).valid("tension 1 is valid");
             }
         }
     }

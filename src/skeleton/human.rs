@@ -10,6 +10,7 @@ use super::clip::{JointTracks, RawClip};
 use super::hierarchy::{Skeleton, Transform};
 use crate::fixtures::Rng;
 use crate::transform::JointShape;
+use crate::Valid;
 use glam::{EulerRot, Quat, Vec3};
 use std::f32::consts::TAU;
 
@@ -201,7 +202,7 @@ pub fn simple_human() -> (Skeleton, Vec<JointShape>) {
         .map(|j| Transform::from_translation(Vec3::from_array(j.2)))
         .collect();
     let skeleton =
-        Skeleton::new(names, parents, rest).expect("the built-in human is a valid skeleton");
+        Skeleton::new(names, parents, rest).valid("the built-in human is a valid skeleton");
     let shapes = JOINTS
         .iter()
         .map(|j| JointShape {
@@ -419,7 +420,7 @@ pub fn benchmark_humanoid(rng: &mut Rng) -> (Skeleton, RawClip) {
     ] {
         add(name.into(), limb, Vec3::new(0.0, -0.12, 0.0));
     }
-    let skeleton = Skeleton::new(names, parents, rest).expect("a valid benchmark skeleton");
+    let skeleton = Skeleton::new(names, parents, rest).valid("a valid benchmark skeleton");
     const KEYS: usize = 30;
     let times: Vec<f32> = (0..KEYS).map(|k| k as f32 / (KEYS - 1) as f32).collect();
     let tracks = skeleton
@@ -447,7 +448,7 @@ pub fn benchmark_humanoid(rng: &mut Rng) -> (Skeleton, RawClip) {
             }
         })
         .collect();
-    let clip = RawClip::new("benchmark", 1.0, true, tracks).expect("a valid benchmark clip");
+    let clip = RawClip::new("benchmark", 1.0, true, tracks).valid("a valid benchmark clip");
     (skeleton, clip)
 }
 

@@ -10,6 +10,7 @@
 use super::{auto_weights, SkinWeights, SkinningError};
 use crate::mesh::MeshData;
 use crate::skeleton::{human, Skeleton, Transform};
+use crate::Valid;
 use glam::{Affine3A, Vec3, Vec4};
 
 /// A skeleton and a mesh bound to it: what the skinning functions need, from code or a file.
@@ -304,7 +305,7 @@ pub fn benchmark_input(vertices: usize, seed: u64) -> BenchmarkSkin {
     let mut rng = Rng::new(seed);
     let (skeleton, raw) = human::benchmark_humanoid(&mut rng);
     let n = skeleton.len();
-    let clip = crate::skeleton::Clip::from_raw(&raw, &skeleton).expect("the benchmark clip builds");
+    let clip = crate::skeleton::Clip::from_raw(&raw, &skeleton).valid("the benchmark clip builds");
     let mut pose = skeleton.rest_pose();
     clip.sample(0.37, &mut crate::skeleton::ClipCursor::new(), &mut pose);
     // The clip keys scale too; DQS takes rigid joints only, so drop it.
@@ -314,10 +315,9 @@ pub fn benchmark_input(vertices: usize, seed: u64) -> BenchmarkSkin {
     let mut model = vec![Affine3A::IDENTITY; n];
     skeleton
         .model_matrices(&pose, &mut model)
-        .expect("the benchmark pose is valid");
+        .valid("the benchmark pose is valid");
     let mut palette = vec![Affine3A::IDENTITY; n];
-    super::skinning_palette(&model, skeleton.inverse_bind(), &mut palette)
-        .expect("finite matrices");
+    super::skinning_palette(&model, skeleton.inverse_bind(), &mut palette).valid("finite matrices");
     let vertices = vertices.min(super::MAX_SKIN_VERTICES);
     let mut joints = Vec::with_capacity(vertices);
     let mut weights = Vec::with_capacity(vertices);
@@ -331,7 +331,7 @@ pub fn benchmark_input(vertices: usize, seed: u64) -> BenchmarkSkin {
         positions.push(rng.vec3(-1.0, 1.0));
         normals.push(rng.vec3(-1.0, 1.0).normalize_or(Vec3::Y));
     }
-    let skin = SkinWeights::new(joints, weights, n).expect("valid benchmark weights");
+    let skin = SkinWeights::new(joints, weights, n).valid("valid benchmark weights");
     BenchmarkSkin {
         palette,
         skin,
