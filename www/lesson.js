@@ -710,8 +710,8 @@ function contentWidth(element) {
  * `log: 'xy'` makes both axes logarithmic (`'x'` or `'y'` one of them; the data must be positive).
  * `widths: [5, 1.5]` sets each series' line width in CSS pixels (default 2) and `dashes:
  * [null, [6, 4]]` its dash pattern (dash and gap lengths; `null` solid): a wide line under a
- * narrow one keeps two equal curves both visible. The legend's markers keep the usual 2 px
- * border, dashed for a dashed series. The element gets `data-plot` (the title), `data-x-label`
+ * narrow one keeps two equal curves both visible. Each legend swatch is a short stretch of its
+ * curve (colour, width, dashes). The element gets `data-plot` (the title), `data-x-label`
  * and `data-y-label` (the axis labels, which uPlot draws on its canvas, where tests cannot
  * read them), and `data-y-range` (the y axis's range, "lo hi").
  */
@@ -747,7 +747,7 @@ export class Plot {
       height,
       // `log: 'x'`, `'y'` or `'xy'`: those axes are logarithmic (base 10, whole decades shown).
       scales: {
-        x: log.includes('x') ? { time: false, distr: 3, log: 10 } : { time: false },
+        x: log.includes('x') ? { time: false, distr: 3, log: 10 } : { time: false, range: xRange },
         y: log.includes('y') ? {
           distr: 3,
           log: 10,
@@ -770,7 +770,7 @@ export class Plot {
       axes: [
         {
           label: xLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22,
-          ...(log.includes('x') ? { values: logTicks } : {}),
+          ...(log.includes('x') ? { values: logTicks, filter: (u, splits) => splits } : {}),
         },
         // A short plot keeps room for four ticks: uPlot's 30 px between y ticks would leave a plot
         // 80 px tall with a 2 J range one tick (incr 1 J) and no sense of scale.
@@ -781,7 +781,7 @@ export class Plot {
         },
       ],
       // Series names only: a live legend shows "--" for every value until the pointer hovers.
-      legend: { live: false, markers: { width: 2, dash: (u, i) => (u.series[i].dash ? 'dashed' : 'solid') } },
+      legend: { live: false },
       series: [{ label: xLabel }, ...series.map((label, i) => ({
         label,
         stroke: colors[i % colors.length],
@@ -800,6 +800,20 @@ export class Plot {
       },
       hooks: { draw: [cursorLine], setCursor: [(u) => this.showReadout(u)] },
     }, [[0], ...series.map(() => [0])], element);
+    // Each legend swatch is a stretch of its curve, 28 px long: the series' colour, its width (3
+    // to 7 px, so a thin line's colour still reads) and its dash pattern.
+    element.querySelectorAll('.u-legend .u-marker').forEach((marker, i) => {
+      const color = colors[i % colors.length];
+      const dash = dashes[i];
+      Object.assign(marker.style, {
+        width: '28px',
+        height: `${Math.min(7, Math.max(3, widths[i] ?? 2))}px`,
+        border: 'none',
+        background: dash
+          ? `repeating-linear-gradient(90deg, ${color} 0 ${dash[0]}px, transparent ${dash[0]}px ${dash[0] + dash[1]}px)`
+          : color,
+      });
+    });
     // The readout covers the legend while the pointer is on a plot, so it never moves the page.
     this.readout = document.createElement('div');
     this.readout.className = 'plot-readout';
@@ -875,14 +889,37 @@ function textWidth(text, font) {
 /** The palette of www/palette.css, in the order plots use it. */
 export const PLOT_COLORS = ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#e68a00', '#17a2a8', '#e35d9c', '#8c564b'];
 
-/** Tick labels of a log axis: powers of ten only ("0.01", "1", "1000", "1e-6"), others blank. */
-function logTicks(u, splits) {
-  return splits.map((v) => {
-    if (!(v > 0)) return '';
-    const k = Math.round(Math.log10(v));
-    if (Math.abs(Math.log10(v) - k) > 1e-6) return '';
-    return k >= -2 && k <= 4 ? String(Number(v.toPrecision(1))) : `1e${k}`;
+/** Tick labels of a log axis (the x axis's without uPlot's filter, which there keeps only the
+ * powers of ten): the powers of ten ("0.01", "1", "1000", "1e-6"), every few where a decade is shorter
+ * than a label, and, where a decade is long enough that their labels keep clear of the powers
+ * beside them (2 and 5 lie 0.3 of a decade from 1 and 10), their 2 and 5 multiples ("200",
+ * "5e-6"); other ticks blank. */
+function logTicks(u, splits, axisIdx) {
+  const axis = u.axes[axisIdx];
+  const labels = splits.map((v) => {
+    if (!(v > 0)) return null;
+    const k = Math.floor(Math.log10(v) + 1e-9);
+    const m = Math.round(v / 10 ** k);
+    if (Math.abs(v / 10 ** k - m) > 1e-6 * m) return null;
+    return { m, k, text: k >= -2 && k <= 4 ? String(Number(v.toPrecision(1))) : `${m}e${k}` };
   });
+  const decadePx = Math.abs(u.valToPos(10, axis.scale) - u.valToPos(1, axis.scale));
+  // A label needs its width (x) or its height (y) and a gap.
+  const room = axis.side % 2 === 0
+    ? Math.max(0, ...labels.map((l) => (l ? textWidth(l.text, '11px system-ui') : 0))) + 8
+    : 16;
+  const shown = Math.log10(2) * decadePx >= room ? [1, 2, 5] : [1];
+  const every = Math.ceil(room / Math.max(decadePx, 1));
+  return labels.map((l) => (l && shown.includes(l.m) && l.k % every === 0 ? l.text : ''));
+}
+
+/** The x range: the data's, but one point (a series just started, one measurement so far) gets
+ * 10 % of its value either side (0 to 1 at 0) and none 0 to 1, where uPlot shows 0 to 100. */
+function xRange(u, lo, hi) {
+  const xs = u.data?.[0] ?? [];
+  if (xs.length > 1 && xs[0] !== xs[xs.length - 1]) return [lo, hi];
+  const x = Number.isFinite(xs[0]) ? xs[0] : 0;
+  return x === 0 ? [0, 1] : [x - 0.1 * Math.abs(x), x + 0.1 * Math.abs(x)];
 }
 
 /** The y range for data in [lo, hi]: at least `minSpan` tall, padded by 5 %. */

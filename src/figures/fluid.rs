@@ -615,35 +615,30 @@ impl DensityFigure {
         ];
         frame.wide_polyline(&corners, palette::DARK, 2.0);
         frame.keep_box_in_view(Vec3::ZERO, size);
-        // The name just off the support circle, above it first, then round it and further
-        // out, off the water (for the last frame's view): over the particles it does not read.
+        // The name just off the support circle, above it first, then below, beside it and
+        // further out, off the water (for the last frame's view): over the particles it does not
+        // read. Each side's place is anchored at the circle's edge that way, so a name beside the
+        // circle gets no leader line.
         let view = self.view_proj();
-        let circle_px = view
-            .and_then(|(view_proj, canvas)| {
-                let c = project_to_canvas(view_proj, canvas, p)?;
-                Some(2.0 * project_to_canvas(view_proj, canvas, p + h * Vec3::Y)?.distance(c))
-            })
-            .unwrap_or(0.0);
-        let mut candidates = vec![crate::draw::Label::off_dot(
-            p + Vec3::new(0.0, h + 0.03, 0.0),
-            0.0,
-            Vec2::new(0.0, -1.0),
-            "dragged particle".into(),
-            palette::PURPLE,
-            0,
-        )];
-        if view.is_some() {
-            candidates = crate::draw::Label::around_dot(
-                p,
-                circle_px,
+        let candidates = match view {
+            Some((view_proj, canvas)) => {
+                let rim: Vec<Vec3> = (0..16)
+                    .map(|i| {
+                        let a = i as f32 * std::f32::consts::TAU / 16.0;
+                        p + h * Vec3::new(a.cos(), a.sin(), 0.0)
+                    })
+                    .collect();
+                super::rigid_body::labels_round(&rim, view_proj, canvas, "dragged particle", palette::PURPLE, 16, 12.0)
+            }
+            None => vec![crate::draw::Label::off_dot(
+                p + Vec3::new(0.0, h + 0.03, 0.0),
+                0.0,
                 Vec2::new(0.0, -1.0),
-                "dragged particle",
+                "dragged particle".into(),
                 palette::PURPLE,
                 0,
-                16,
-                12.0,
-            );
-        }
+            )],
+        };
         let water = &f.positions[1..];
         frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, water));
         let (rho, n) = self.probe();

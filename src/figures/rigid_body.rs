@@ -1739,41 +1739,53 @@ fn drift_label(
     color: Vec3,
     off_boxes: &dyn Fn(crate::draw::layout::Rect) -> bool,
 ) {
-    let n = points.len().max(1) as f32;
-    let centre = points.iter().copied().sum::<Vec3>() / n;
     let at = DriftFigure::place(k) + Vec3::new(0.0, 0.6, 0.0);
     let mut first = Label::off_dot(at, 0.0, Vec2::new(0.0, -1.0), text.clone(), color, 0);
     if k == 1 {
         first.offset_px.y -= DRIFT_ROW_PX;
     }
-    // Each side's candidates anchored at the box's outermost point that way on screen, so the
-    // name lies just off the box (a name far from its anchor gets a leader line on the page).
     let candidates = match view {
-        Some((view_proj, size)) => {
-            let on_screen: Vec<(Vec3, Vec2)> = points
-                .iter()
-                .filter_map(|&p| Some((p, project_to_canvas(view_proj, size, p)?)))
-                .collect();
-            // Above first (the page's camera looks across the row), then below, the sides and
-            // the corners.
-            let sides = [(0.0, -1.0), (0.0, 1.0), (1.0, 0.0), (-1.0, 0.0), (1.0, -1.0), (-1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
-                .map(|(x, y)| Vec2::new(x, y));
-            (0..9)
-                .flat_map(|k| {
-                    let (on_screen, text) = (&on_screen, &text);
-                    sides.into_iter().map(move |side| {
-                        let far = on_screen
-                            .iter()
-                            .max_by(|a, b| a.1.dot(side).total_cmp(&b.1.dot(side)))
-                            .map_or(centre, |p| p.0);
-                        Label::off_dot(far, 2.0 + 16.0 * k as f32, side, text.clone(), color, 0)
-                    })
-                })
-                .collect()
-        }
+        Some((view_proj, size)) => labels_round(points, view_proj, size, &text, color, 9, 8.0),
         None => vec![first],
     };
     frame.first_clear_label_by(view, 2.0, candidates, off_boxes);
+}
+
+/// Candidates for [`Frame::first_clear_label_by`] naming a shape drawn through `points`, seen
+/// through `view_proj` on a `size` canvas (CSS pixels): on each side (above first, then below,
+/// right, left and the corners), anchored at the shape's outermost point that way on screen,
+/// just off it and then `step_px` further out each time, `rings` places per side. Anchored at
+/// the edge, a name placed just off the shape lies within the page's leader distance of its
+/// anchor (a name far from its anchor gets a leader line on the page).
+pub(crate) fn labels_round(
+    points: &[Vec3],
+    view_proj: Mat4,
+    size: Vec2,
+    text: &str,
+    color: Vec3,
+    rings: usize,
+    step_px: f32,
+) -> Vec<Label> {
+    let n = points.len().max(1) as f32;
+    let centre = points.iter().copied().sum::<Vec3>() / n;
+    let on_screen: Vec<(Vec3, Vec2)> = points
+        .iter()
+        .filter_map(|&p| Some((p, project_to_canvas(view_proj, size, p)?)))
+        .collect();
+    let sides = [(0.0, -1.0), (0.0, 1.0), (1.0, 0.0), (-1.0, 0.0), (1.0, -1.0), (-1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+        .map(|(x, y)| Vec2::new(x, y));
+    (0..rings)
+        .flat_map(|k| {
+            let on_screen = &on_screen;
+            sides.into_iter().map(move |side| {
+                let far = on_screen
+                    .iter()
+                    .max_by(|a, b| a.1.dot(side).total_cmp(&b.1.dot(side)))
+                    .map_or(centre, |p| p.0);
+                Label::off_dot(far, 2.0 + 2.0 * step_px * k as f32, side, text.into(), color, 0)
+            })
+        })
+        .collect()
 }
 
 /// Points through a box of the cube mesh placed by `model` (5 a side, its faces and inside):

@@ -8,9 +8,10 @@ fn lesson_15_dragged_particle_is_named_off_the_water() {
     // particle in the water (the page's start and deeper), at its surface, above it and in a
     // corner: its name is shown where the figure put it, 2 px off every line and dot (the
     // support circle, the lines to the neighbours, the arrows), over none of the particles, and
-    // within 60 px of the support circle or, deep in the water, just above its surface, at most
-    // 160 px to the side (in a corner the wall keeps it off the middle). As on the page, the figure places the name for the
-    // view of the frame before (set_view).
+    // within 60 px of the support circle and within the page's leader distance of its anchor
+    // or, deep in the water, just above its surface, at most 160 px to the side (in a corner the
+    // wall keeps it off the middle). As on the page, the figure places the name for the view of
+    // the frame before (set_view).
     use inbetween::figures::fluid::DensityFigure;
     let view = [0.8, 0.5, 0.0, 2.6, 0.0, 0.0];
     let mut failures = Vec::new();
@@ -64,6 +65,16 @@ fn lesson_15_dragged_particle_is_named_off_the_water() {
                     gap <= 60.0 || over_surface,
                     "{name} on {size}: the name {gap} px off the circle, its bottom at {bottom}, \
                      the water's top at {surface}"
+                );
+                // The page draws a leader to the anchor from a name that ends more than
+                // LEADER_PX from it: a name beside the circle is anchored at its edge and needs
+                // none (one stepped up over the water's surface gets its leader to the circle).
+                let label = &frame.labels[0];
+                let anchor = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                let off = r.nearest(anchor).distance(anchor);
+                assert!(
+                    off <= inbetween::draw::layout::LEADER_PX || over_surface,
+                    "{name} on {size}: the name {off} px from its anchor, {gap} px off the circle"
                 );
             };
             failures.extend(failure_of(check));
