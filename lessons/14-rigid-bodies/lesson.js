@@ -111,8 +111,10 @@ await wire('#fig-drift', {
     options: {
       title: 'Length of each quaternion', xLabel: 'time (s)', yLabel: '|q| (no unit)',
       // Logarithmic: the unnormalised length grows geometrically (a straight line here), from
-      // 1 to the 10⁶ where the figure stops stepping it.
-      series: ['normalised', 'unnormalised', 'exponential'], colors: [ORANGE, TEAL, PURPLE], widths: [4, 2, 1.5], log: 'y',
+      // 1 to the 10⁶ where the figure stops stepping it. The normalised and exponential lengths
+      // both stay at 1: the exponential's line is dashed over the wider orange one, so both show.
+      series: ['normalised', 'unnormalised', 'exponential'], colors: [ORANGE, TEAL, PURPLE], widths: [5, 2, 2],
+      dashes: [null, null, [6, 5]], log: 'y',
     },
   }],
 });
