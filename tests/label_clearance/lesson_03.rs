@@ -375,7 +375,7 @@ fn lesson_03_rodrigues_cos_term_name_sits_at_its_own_tip() {
         for (n, angle, v) in settings {
             for k in 0..=16 {
                 let s = k as f32 / 16.0;
-                let tip = v * (s * angle as f32).to_radians().cos();
+                let tip = v * (s * angle).to_radians().cos();
                 if tip.length() <= 0.25 {
                     continue; // too short to carry a name: the figure leaves it out
                 }
@@ -392,7 +392,8 @@ fn lesson_03_rodrigues_cos_term_name_sits_at_its_own_tip() {
                         },
                         |fig, cam, px| fig.set_view(cam, px.x, px.y),
                     );
-                    let name = format!("03 v cos θ, view {view:?}, n {n}, θ {angle}°, v {v}, s {s}");
+                    let name =
+                        format!("03 v cos θ, view {view:?}, n {n}, θ {angle}°, v {v}, s {s}");
                     let named: Vec<usize> = (0..frame.labels.len())
                         .filter(|&i| frame.labels[i].text == "v cos θ")
                         .collect();
