@@ -150,6 +150,8 @@ pub struct KeyframesScene {
     runner: Runner,
     /// The student's path and ghosts, recomputed only after an edit (they do not depend on time).
     student: Option<StudentCache>,
+    /// The last frame's camera and canvas size (CSS pixels), for placing the time axis's labels.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 /// What the student's exercises drew, and how each exercise fared while drawing it.
@@ -238,6 +240,7 @@ impl KeyframesScene {
             time_depth: true,
             runner: DEFAULT_RUNNER,
             student: None,
+            view: None,
         }
     }
 
@@ -245,6 +248,14 @@ impl KeyframesScene {
     pub fn set_runner(&mut self, runner: Runner) {
         self.runner = runner;
         self.student = None;
+    }
+
+    /// The last frame's camera and canvas size (CSS pixels): the time axis's labels take places
+    /// clear of the path, the curve and the keys on it. A size that is not positive is ignored.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// Replaces the keys (times in seconds, strictly increasing; positions in metres). Hermite
@@ -564,13 +575,38 @@ impl KeyframesScene {
         let right = self.track.values().iter().fold(f32::MIN, |m, p| m.max(p.x)) + 0.8;
         let duration = self.track.duration_sec();
         let axis = |t: f32| Vec3::new(right, 0.0, depth(t));
-        frame.arrow(axis(0.0), axis(duration + 0.4), palette::DARK, 0.12);
-        for second in 0..=duration.floor() as usize {
-            let p = axis(second as f32);
+        let end = axis(duration + 0.4);
+        frame.arrow(axis(0.0), end, palette::DARK, 0.12);
+        let seconds = 0..=duration.floor() as usize;
+        for p in seconds.clone().map(|second| axis(second as f32)) {
             frame.line(p - Vec3::X * 0.08, p + Vec3::X * 0.08, palette::DARK);
-            frame.label(p + Vec3::X * 0.15, format!("{second} s"), palette::DARK);
         }
-        frame.label(axis(duration + 0.9), "time (s)", palette::DARK);
+        // The labels, once the curves are down, each at the first place round its point on the
+        // last frame's view (a tick's right on the canvas first, the name past the arrow's tip,
+        // then further out) that covers no line, dot or key: orbited, the path and the curve
+        // pass over the axis.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let toward = |from: Vec3, to: Vec3| {
+            view.and_then(|(view_proj, size)| {
+                let px = |p| crate::camera::project_to_canvas(view_proj, size, p);
+                Some(px(to)? - px(from)?)
+            })
+            .unwrap_or(Vec2::X)
+        };
+        let keys: Vec<Vec3> = self.track.values().iter().map(|p| p.extend(0.0)).collect();
+        let labels = seconds
+            .map(|second| {
+                let p = axis(second as f32);
+                (p, toward(p, p + Vec3::X), format!("{second} s"))
+            })
+            .chain([(end, toward(axis(0.0), end), "time (s)".into())]);
+        for (at, toward, text) in labels {
+            let candidates =
+                crate::draw::Label::around_dot(at, 12.0, toward, &text, palette::DARK, 0, 8, 6.0);
+            frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &keys));
+        }
         // The camera fits the curve, the path's keys and the axis at every canvas size.
         frame.keep_in_view.extend(points);
         frame

@@ -1075,11 +1075,60 @@ impl Rodrigues {
     /// Adds a term's label beside its arrow from `from` to `to`: the first place beside its
     /// middle, then nearer either end, then further out (12 to 60 px), that covers no line,
     /// dot or label already placed on the last frame's view (the middle itself, above and
-    /// right, without one).
-    fn label_beside_arrow(&self, frame: &mut Frame, from: Vec3, to: Vec3, text: &str, color: Vec3) {
+    /// right, without one). With `away`, the arrow runs along v (v cos θ), so that a place
+    /// beside its middle is beside v too: its first places are then at its tip, across the
+    /// arrow on the canvas, on the side away from `away` (the next term's tip) first, then
+    /// across and back towards its tail, then round the tip, 0 to 40 px out.
+    fn label_beside_arrow(
+        &self,
+        frame: &mut Frame,
+        (from, to): (Vec3, Vec3),
+        text: &str,
+        color: Vec3,
+        away: Option<Vec3>,
+    ) {
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let mut at_tip = Vec::new();
+        if let (Some(away), Some((view_proj, size))) = (away, view) {
+            let px = |p| crate::camera::project_to_canvas(view_proj, size, p);
+            if let (Some(a), Some(b), Some(c)) = (px(from), px(to), px(away)) {
+                let mut across = (b - a).normalize_or_zero().perp();
+                if across.dot(c - b) > 0.0 {
+                    across = -across;
+                }
+                // The nearest of the eight sides of a dot (22.5° either side of each).
+                let side = |d: glam::Vec2| {
+                    let s = |x: f32| if x.abs() > 0.38 { x.signum() } else { 0.0 };
+                    glam::Vec2::new(s(d.x), s(d.y))
+                };
+                let back = (a - b).normalize_or_zero();
+                let sides = [
+                    across,
+                    -across,
+                    across + back,
+                    back - across,
+                    back,
+                    across - back,
+                    -across - back,
+                ];
+                for out_px in [0.0, 8.0, 16.0, 24.0, 32.0, 40.0] {
+                    for d in sides.map(|d| d.normalize_or_zero()) {
+                        if d != glam::Vec2::ZERO {
+                            at_tip.push(crate::draw::Label::off_dot(
+                                to,
+                                12.0 + 2.0 * out_px,
+                                side(d),
+                                text.into(),
+                                color,
+                                0,
+                            ));
+                        }
+                    }
+                }
+            }
+        }
         let sides = [
             (1.0, -1.0),
             (-1.0, 1.0),
@@ -1104,7 +1153,10 @@ impl Rodrigues {
                     })
                 })
             });
-        frame.first_clear_label(view, candidates);
+        // 2 px off the lines: the frame samples a long shaft sparsely, and a corner of the
+        // label between two samples would touch it.
+        let candidates = at_tip.into_iter().chain(candidates);
+        frame.first_clear_label_by(view, 2.0, candidates, |_| true);
     }
 
     /// Draws the rotation swept up to `s · θ`, `s ∈ [0, 1]`. Returns the note about the exercises.
@@ -1139,15 +1191,15 @@ impl Rodrigues {
         const LABELLED: f32 = 0.25;
         let mut terms = Vec::new();
         if cos_part.length() > LABELLED {
-            terms.push((Vec3::ZERO, p1, "v cos θ", COS_PART));
+            terms.push((Vec3::ZERO, p1, "v cos θ", COS_PART, Some(cos_part + sin_part)));
         }
         frame.arrow(p1, p2, SIN_PART, 0.1);
         if sin_part.length() > LABELLED {
-            terms.push((p1, p2, "(n × v) sin θ", SIN_PART));
+            terms.push((p1, p2, "(n × v) sin θ", SIN_PART, None));
         }
         frame.arrow(p2, p2 + axial_part, AXIAL_PART, 0.1);
         if axial_part.length() > LABELLED {
-            terms.push((p2, p2 + axial_part, "n (n·v)(1 − cos θ)", AXIAL_PART));
+            terms.push((p2, p2 + axial_part, "n (n·v)(1 − cos θ)", AXIAL_PART, None));
         }
         // v′ = R(sθ) v, from the matrix (the student's when used).
         let turned = self.matrix_at(phi) * v;
@@ -1235,8 +1287,8 @@ impl Rodrigues {
         }
         // Last, once every arrow and the other labels are down: the terms run tip to tail
         // beside v, v′ and the circle, so a label at a term's middle lies on some arrow.
-        for (from, to, text, color) in terms {
-            self.label_beside_arrow(frame, from, to, text, color);
+        for (from, to, text, color, away) in terms {
+            self.label_beside_arrow(frame, (from, to), text, color, away);
         }
         // The axis, the circle (which holds v and v′) and the box stay in view.
         frame.keep_in_view.extend(self.arc.iter().step_by(8));

@@ -225,6 +225,9 @@ impl KeyframesScene {
 
     /// Draws the 3D view at `tau` seconds after the first key; returns the note for the page.
     pub fn draw(&mut self, viewer: &mut Viewer, tau: f32) -> Result<String, JsError> {
+        // The time axis's labels are placed for the last frame's view.
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let note = self
             .scene
             .draw(&mut viewer.renderer.frame, tau)

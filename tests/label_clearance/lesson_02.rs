@@ -14,3 +14,66 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_curves() {
         }
     }
 }
+
+#[test]
+fn lesson_02_keys_time_axis_labels_keep_off_the_path_when_orbited() {
+    // Figure 1's 3D view at its page camera (lessons/02-keyframes/lesson.js) and orbited as the
+    // page sweep's drag turns it (−1.2 rad, tilted by 0.3 rad), on both canvases, with the
+    // default, uneven and centripetal keys and keys dragged right (the path then runs over the
+    // axis), across the timeline: the axis's labels (one a second and "time (s)") are shown where
+    // the figure put them, keep 2 px off every line and dot (the path, the curve, the axis), and
+    // cover no key. As on the page, the figure places them for the view of the frame before.
+    use inbetween::figures::curves::{preset, KeyframesScene};
+    let is_axis_label = |t: &str| t.ends_with(" s") || t == "time (s)";
+    let mut failures = Vec::new();
+    let mut keys = vec![];
+    for name in ["default", "uneven", "centripetal"] {
+        keys.push(preset(name).unwrap());
+    }
+    let (times, values) = preset("default").unwrap();
+    keys.push((times, values.iter().map(|p| *p + Vec2::new(1.5, 0.4)).collect()));
+    for view in [
+        [0.3, 0.8, -1.3, 6.5, 0.75, 0.4],
+        [0.3, 0.8, -1.3, 6.5, -0.45, 0.7],
+    ] {
+        for (k, (times, values)) in keys.iter().enumerate() {
+            for tau in [0.0, 1.7, 3.1] {
+                for size in [Vec2::new(760.0, 300.0), Vec2::new(650.0, 300.0)] {
+                    let mut scene = KeyframesScene::new();
+                    scene.set_keys(times.clone(), values.clone()).unwrap();
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw(out, tau).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name = format!("02 time axis, view {view:?}, keys {k}, τ {tau}");
+                    let named: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| is_axis_label(&frame.labels[i].text))
+                        .collect();
+                    assert!(named.len() >= 4, "{name}: the axis is labelled");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
+                    }));
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let boxes = label_boxes(&frame, &camera, size);
+                    failures.extend(failure_of(|| {
+                        for p in values {
+                            let c = project_to_canvas(view_proj, size, p.extend(0.0)).unwrap();
+                            for (text, rect) in boxes.iter().filter(|(t, _)| is_axis_label(t)) {
+                                assert!(
+                                    !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                                    "{name} on {size}: {text:?} covers the key at {c}"
+                                );
+                            }
+                        }
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

@@ -351,3 +351,67 @@ fn lesson_03_rodrigues_box_name_stands_outside_the_circle() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_03_rodrigues_cos_term_name_sits_at_its_own_tip() {
+    // Figure 4 at its page camera and orbited as the page sweep's drag turns it (−1.2 rad, tilted
+    // by 0.3 rad), both canvases, through the sweep from s = 0 (where v cos θ is v): the term
+    // v cos θ runs along v, so a name beside its middle is beside v too. Its name is shown where
+    // the figure put it, covers no line or dot, and sits at most 45 px from the term's tip (its
+    // orange head, where v goes on), not along the shaft it shares with v. As on the page, the
+    // figure places it for the view of the frame before.
+    use inbetween::figures::rotations::Rodrigues;
+    let mut failures = Vec::new();
+    let settings = [
+        (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), 60.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.0, 1.0, 0.0), 90.0, Vec3::new(1.0, 1.0, 0.0)),
+        (Vec3::new(1.0, 0.2, -0.3), 150.0, Vec3::new(0.5, 1.5, 0.8)),
+    ];
+    for view in [
+        [0.0, 0.3, 0.0, 4.2, 0.5, 0.35],
+        [0.0, 0.3, 0.0, 4.2, -0.7, 0.65],
+    ] {
+        for (n, angle, v) in settings {
+            for k in 0..=16 {
+                let s = k as f32 / 16.0;
+                let tip = v * (s * angle).to_radians().cos();
+                if tip.length() <= 0.25 {
+                    continue; // too short to carry a name: the figure leaves it out
+                }
+                for size in CANVASES {
+                    let mut f = Rodrigues::new();
+                    f.set_axis_angle(n, angle).unwrap();
+                    f.set_vector(v).unwrap();
+                    let (frame, camera) = drawn_for_view(
+                        &mut f,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw(out, s).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name =
+                        format!("03 v cos θ, view {view:?}, n {n}, θ {angle}°, v {v}, s {s}");
+                    let named: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| frame.labels[i].text == "v cos θ")
+                        .collect();
+                    assert_eq!(named.len(), 1, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                    }));
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let at = project_to_canvas(view_proj, size, tip).unwrap();
+                    let boxes = label_boxes(&frame, &camera, size);
+                    failures.extend(failure_of(|| {
+                        let (_, rect) = boxes.iter().find(|(t, _)| t == "v cos θ").unwrap();
+                        let gap = rect.nearest(at).distance(at);
+                        assert!(gap <= 55.0, "{name} on {size}: {gap} px from the term's tip");
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
