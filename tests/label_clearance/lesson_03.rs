@@ -2,6 +2,30 @@
 
 use super::*;
 
+/// Figure 4 (the Rodrigues figure) with axis `n`, angle `angle` (degrees) and vector `v`, drawn as
+/// the page draws it at the timeline's fraction `s` from the page camera `view`.
+fn rodrigues_drawn(
+    n: Vec3,
+    angle: f32,
+    v: Vec3,
+    s: f32,
+    view: [f32; 6],
+    size: Vec2,
+) -> (Frame, OrbitCamera) {
+    let mut f = inbetween::figures::rotations::Rodrigues::new();
+    f.set_axis_angle(n, angle).unwrap();
+    f.set_vector(v).unwrap();
+    drawn_for_view(
+        &mut f,
+        view,
+        size,
+        |fig, out| {
+            fig.draw(out, s).unwrap();
+        },
+        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+    )
+}
+
 #[test]
 fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
     // Figure 4 at its page camera (lessons/03-rotations/lesson.js), both canvases, through the
@@ -10,7 +34,6 @@ fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
     // 70 px from a point of its arrow, and covers no arrow, circle or dot (the terms run tip to
     // tail beside v and v′). As on the page, the
     // figure places them for the view of the frame before (set_view).
-    use inbetween::figures::rotations::Rodrigues;
     let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
     let term = |text: &str| text.contains("θ") && !text.starts_with("v′");
     let mut failures = Vec::new();
@@ -27,18 +50,7 @@ fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
         for k in 1..=8 {
             let s = k as f32 / 8.0;
             for size in CANVASES {
-                let mut f = Rodrigues::new();
-                f.set_axis_angle(n, angle).unwrap();
-                f.set_vector(v).unwrap();
-                let (frame, camera) = drawn_for_view(
-                    &mut f,
-                    view,
-                    size,
-                    |fig, out| {
-                        fig.draw(out, s).unwrap();
-                    },
-                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                );
+                let (frame, camera) = rodrigues_drawn(n, angle, v, s, view, size);
                 cases += 1;
                 let name = format!("03 Rodrigues, n {n}, θ {angle}°, v {v}, s {s}");
                 let check = || {
@@ -89,7 +101,7 @@ fn lesson_03_rodrigues_names_keep_apart_with_v_along_the_axis() {
     // and cover no corner of the box. As on the page, the figure places them for the view of the
     // frame before.
     use glam::{Mat4, Quat};
-    use inbetween::figures::rotations::{Rodrigues, QUAT_BOX_AT};
+    use inbetween::figures::rotations::QUAT_BOX_AT;
     const NAMES: [&str; 4] = ["n", "v", "v′ = R v", "turned by q"];
     let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
     let mut failures = Vec::new();
@@ -112,18 +124,7 @@ fn lesson_03_rodrigues_names_keep_apart_with_v_along_the_axis() {
         for k in [1, 4, 8] {
             let s = k as f32 / 8.0;
             for size in CANVASES {
-                let mut f = Rodrigues::new();
-                f.set_axis_angle(n, angle).unwrap();
-                f.set_vector(v).unwrap();
-                let (frame, camera) = drawn_for_view(
-                    &mut f,
-                    view,
-                    size,
-                    |fig, out| {
-                        fig.draw(out, s).unwrap();
-                    },
-                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                );
+                let (frame, camera) = rodrigues_drawn(n, angle, v, s, view, size);
                 let name = format!("03 Rodrigues names, n {n}, θ {angle}°, v {v}, s {s}");
                 let named: Vec<usize> = (0..frame.labels.len())
                     .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
@@ -360,7 +361,6 @@ fn lesson_03_rodrigues_cos_term_name_sits_at_its_own_tip() {
     // the figure put it, covers no line or dot, and sits at most 45 px from the term's tip (its
     // orange head, where v goes on), not along the shaft it shares with v. As on the page, the
     // figure places it for the view of the frame before.
-    use inbetween::figures::rotations::Rodrigues;
     let mut failures = Vec::new();
     let settings = [
         (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
@@ -380,18 +380,7 @@ fn lesson_03_rodrigues_cos_term_name_sits_at_its_own_tip() {
                     continue; // too short to carry a name: the figure leaves it out
                 }
                 for size in CANVASES {
-                    let mut f = Rodrigues::new();
-                    f.set_axis_angle(n, angle).unwrap();
-                    f.set_vector(v).unwrap();
-                    let (frame, camera) = drawn_for_view(
-                        &mut f,
-                        view,
-                        size,
-                        |fig, out| {
-                            fig.draw(out, s).unwrap();
-                        },
-                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                    );
+                    let (frame, camera) = rodrigues_drawn(n, angle, v, s, view, size);
                     let name =
                         format!("03 v cos θ, view {view:?}, n {n}, θ {angle}°, v {v}, s {s}");
                     let named: Vec<usize> = (0..frame.labels.len())

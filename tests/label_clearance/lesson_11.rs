@@ -253,15 +253,7 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
                     assert_eq!(solid.len(), 27 + 21, "{name}: three walls and three masses");
                     let boxes = label_boxes(&frame, &camera, size);
                     failures.extend(failure_of(|| {
-                        for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
-                            for c in &solid {
-                                assert!(
-                                    !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
-                                    "{name} on {size}: {text:?} at {:?} covers a wall or mass at {c}",
-                                    rect.min
-                                );
-                            }
-                        }
+                        assert_names_cover_none(&name, size, &boxes, &NAMES, &solid, "a wall or mass")
                     }));
                 }
             }
@@ -330,15 +322,7 @@ fn lesson_11_sprite_names_keep_off_the_puffs_and_the_atlas_when_orbited() {
                     assert!(solid.len() >= 2 * puffs as usize, "{name}: {COLUMN_GAP}");
                     let boxes = label_boxes(&frame, &camera, size);
                     failures.extend(failure_of(|| {
-                        for (text, rect) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
-                            for c in &solid {
-                                assert!(
-                                    !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
-                                    "{name} on {size}: {text:?} at {:?} covers a puff or the atlas at {c}",
-                                    rect.min
-                                );
-                            }
-                        }
+                        assert_names_cover_none(&name, size, &boxes, &NAMES, &solid, "a puff or the atlas")
                     }));
                 }
             }

@@ -160,6 +160,27 @@ fn drawn_for_view<S>(
     (frame, camera)
 }
 
+/// Asserts that no box of `boxes` whose text is one of `names` covers any of `points` (canvas
+/// px): a name would hide `what` the points sample.
+fn assert_names_cover_none(
+    at: &str,
+    size: Vec2,
+    boxes: &[(String, Rect)],
+    names: &[&str],
+    points: &[Vec2],
+    what: &str,
+) {
+    for (text, rect) in boxes.iter().filter(|(t, _)| names.contains(&t.as_str())) {
+        for c in points {
+            assert!(
+                !(c.cmpgt(rect.min).all() && c.cmplt(rect.max()).all()),
+                "{at} on {size}: {text:?} at {:?} covers {what} at {c}",
+                rect.min
+            );
+        }
+    }
+}
+
 /// Runs one case's checks and returns its assertion's message, if it failed: a sweep keeps going
 /// and reports how many cases fail, with a few of them.
 fn failure_of(check: impl FnOnce() + std::panic::UnwindSafe) -> Option<String> {
