@@ -676,13 +676,27 @@ fn each_target_moves_a_few_vertices_by_what_the_page_says() {
     // The Try this reads the jaw's longest offset in the note: 25.2 cm at weight 1.
     let note = f.draw(&mut Frame::default(), &HEADS).unwrap();
     assert!(
-        note.contains("jaw open moves 603 of the 6050 vertices, the farthest by 25.2 cm"),
+        note.contains(
+            "jaw open: its delta moves 603 of the 6050 vertices, the farthest by 25.2 cm"
+        ),
         "{note}"
     );
-    // At half weight every offset halves.
+    // At half weight every offset halves, and the count stays: which vertices a target moves
+    // is a property of its delta, not of the weight (a count of offsets above a threshold at
+    // the weight would drop from 603 to fewer as the weight falls).
+    let counts: Vec<usize> = (0..4).map(|k| f.target_reach(k).0).collect();
     f.set_weight(0.5).unwrap();
-    let (_, half) = f.target_reach(1);
+    let (moved, half) = f.target_reach(1);
     assert!((100.0 * half - 12.6).abs() < 0.1, "{half}");
+    for w in [0.5, 0.01, 1.5] {
+        f.set_weight(w).unwrap();
+        assert_eq!(
+            (0..4).map(|k| f.target_reach(k).0).collect::<Vec<_>>(),
+            counts,
+            "weight {w}"
+        );
+    }
+    f.set_weight(0.5).unwrap();
     let mut frame = Frame::default();
     let note = f.draw(&mut frame, &HEADS).unwrap();
     let jaw = note
@@ -690,7 +704,7 @@ fn each_target_moves_a_few_vertices_by_what_the_page_says() {
         .find(|p| p.starts_with("jaw open"))
         .unwrap();
     assert!(
-        jaw.ends_with("of the 6050 vertices, the farthest by 12.6 cm"),
+        jaw == format!("jaw open: its delta moves {moved} of the 6050 vertices, the farthest by 12.6 cm at this weight"),
         "{note}"
     );
     // The head at half weight lies halfway between the base and the target.

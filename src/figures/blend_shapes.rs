@@ -736,19 +736,20 @@ impl TargetsFigure {
         self.blended = Some(self.weight);
     }
 
-    /// How target `k` (0-based) moves the head at the current weight: the number of vertices it
-    /// moves by at least [`MOVED_MIN`], and the largest distance any vertex moves (metres).
+    /// How target `k` (0-based) moves the head: the number of vertices its delta moves by at
+    /// least [`MOVED_MIN`] (a property of the target, the same at every weight), and the
+    /// largest distance any vertex moves at the current weight (metres).
     pub fn target_reach(&self, k: usize) -> (usize, f32) {
         let base = &self.face.mesh.positions;
         let target = &self.face.targets[k];
         let mut moved = 0;
         let mut largest = 0.0f32;
         for (b, t) in base.iter().zip(target) {
-            let d = self.weight * (*t - *b).length();
+            let d = (*t - *b).length();
             if d >= MOVED_MIN {
                 moved += 1;
             }
-            largest = largest.max(d);
+            largest = largest.max(self.weight.abs() * d);
         }
         (moved, largest)
     }
@@ -805,7 +806,7 @@ impl TargetsFigure {
             .map(|k| {
                 let (moved, largest) = self.target_reach(k);
                 format!(
-                    "{} moves {moved} of the {n} vertices, the farthest by {} cm",
+                    "{}: its delta moves {moved} of the {n} vertices, the farthest by {} cm at this weight",
                     self.face.names[k],
                     format_number_digits(100.0 * largest, 1)
                 )
