@@ -203,6 +203,49 @@ fn the_rules_figure_draws_three_arrows_and_names_the_cell() {
     assert!(scene.set_position(5.0, 0.0).is_err() && scene.set_radius(f32::NAN).is_err());
 }
 
+/// The radius circle tells the field of view from the blind sector: solid where the boid sees
+/// (within half the field of view of its heading), dashed behind, and solid all round at 360°.
+/// One full solid circle with the sector's two edges reads the same at 90° and at 270°.
+#[test]
+fn the_radius_circle_is_solid_over_the_field_of_view_and_dashed_behind() {
+    use inbetween::draw::palette::PURPLE;
+    let mut scene = RulesFigure::new();
+    scene.set_position(0.4, -0.3).unwrap();
+    scene.set_heading_deg(30.0).unwrap();
+    scene.set_radius(1.2).unwrap();
+    let boid = Vec3::new(0.4, 0.0, -0.3);
+    let heading = Vec3::new(30f32.to_radians().cos(), 0.0, -30f32.to_radians().sin());
+    for fov in [90.0f32, 270.0, 360.0] {
+        scene.set_fov_deg(fov).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let (mut solid, mut dashed) = (0, 0);
+        let purple = frame
+            .strokes
+            .iter()
+            .filter(|s| s.color[..3] == PURPLE.to_array());
+        for s in purple {
+            let (a, b) = (Vec3::from(s.a), Vec3::from(s.b));
+            // The sector's edges start at the boid; the circle's pieces lie on the radius.
+            let on_circle = |p: Vec3| ((p - boid).length() - 1.2).abs() < 1e-3;
+            if !on_circle(a) || !on_circle(b) {
+                continue;
+            }
+            let mid = (0.5 * (a + b) - boid).normalize();
+            let angle = mid.angle_between(heading).to_degrees();
+            if s.dash[3] > 0.0 {
+                dashed += 1;
+                assert!(angle > 0.5 * fov - 3.0, "fov {fov}: a dash {angle}° ahead");
+            } else {
+                solid += 1;
+                assert!(angle < 0.5 * fov + 3.0, "fov {fov}: solid {angle}° behind");
+            }
+        }
+        assert!(solid > 10, "fov {fov}: {solid} solid pieces");
+        assert_eq!(dashed > 0, fov < 360.0, "fov {fov}: {dashed} dashes");
+    }
+}
+
 #[test]
 fn the_rules_figure_says_what_the_students_code_does() {
     let mut scene = RulesFigure::new();

@@ -1572,19 +1572,27 @@ impl RulesFigure {
                 frame.wide_polyline(&corners, color, 2.0);
             }
         }
-        // Radius circle and field-of-view edges.
-        let circle: Vec<Vec3> = (0..=64)
-            .map(|k| {
-                let a = k as f32 / 64.0 * std::f32::consts::TAU;
-                self.boid + self.radius * Vec3::new(a.cos(), 0.0, a.sin())
-            })
-            .collect();
-        frame.wide_polyline(&circle, palette::PURPLE, 2.0);
+        // The radius circle, solid over the field of view and dashed over the blind sector
+        // behind, so that a narrow and a wide field of view read apart; then the sector's edges.
+        let heading = self.velocity.normalize();
+        let half = 0.5 * self.fov_deg.to_radians();
+        let arc = |from: f32, to: f32| -> Vec<Vec3> {
+            (0..=64)
+                .map(|k| {
+                    let a = from + (to - from) * k as f32 / 64.0;
+                    self.boid + self.radius * (glam::Quat::from_rotation_y(a) * heading)
+                })
+                .collect()
+        };
+        if half > 0.0 {
+            frame.wide_polyline(&arc(-half, half), palette::PURPLE, 2.0);
+        }
         if self.fov_deg < 360.0 {
-            let heading = self.velocity.normalize();
+            let blind = arc(half, std::f32::consts::TAU - half);
+            let dashed = crate::draw::StrokeStyle::dashed(1.5, 0.08, 0.06);
+            frame.stroke(&blind, palette::PURPLE, dashed);
             for sign in [-1.0f32, 1.0] {
-                let a = sign * 0.5 * self.fov_deg.to_radians();
-                let dir = glam::Quat::from_rotation_y(a) * heading;
+                let dir = glam::Quat::from_rotation_y(sign * half) * heading;
                 frame.wide_line(
                     self.boid,
                     self.boid + dir * self.radius,
