@@ -1399,6 +1399,7 @@ pub mod palette {
         ("pink", PINK),
         ("brown", BROWN),
         ("grey", GREY),
+        ("pale-grey", GRID),
         ("dark", DARK),
         ("key", KEY),
     ];
