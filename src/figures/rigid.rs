@@ -37,6 +37,8 @@ pub const METHODS: [(Method, Vec3); 3] = [
     (Method::DualQuatNlerp, palette::Y_AXIS),
     (Method::Screw, palette::Z_AXIS),
 ];
+/// Each method's name on its moving aeroplane, in the order of [`Method`].
+pub const METHOD_NAMES: [&str; 3] = ["lerp + slerp", "blend", "screw"];
 pub const SCREW_AXIS: Vec3 = palette::PURPLE;
 /// The blend's plane's scale (its x, y, z) where it coincides with the screw's
 /// ([`RigidMotion::coincides_with_screw`]): narrower, so the screw's plane shows around it, and
@@ -267,6 +269,7 @@ impl RigidMotion {
         // would pile up on the keys' axes where the planes start and end together.
         let own_axes = self.solo.is_some();
         let student = self.use_exercise;
+        let mut planes = Vec::new();
         for (method, color) in METHODS {
             if !self.shown(method) {
                 continue;
@@ -314,11 +317,18 @@ impl RigidMotion {
                 frame.axes(m.to_mat4() * Mat4::from_translation(self.pivot), 0.45);
             }
             frame.marker(m.transform_point(self.pivot), crate::draw::DOT_PX, color);
+            // Each moving plane is named: the planes travel close together, and the blend's and
+            // the screw's meet at the keys and half-way.
+            planes.push((p, METHOD_NAMES[method as usize].to_string(), color));
         }
         let mut notes = Vec::new();
+        // The thirds' names are placed first, and the moving planes' keep off them.
+        let mut names = Vec::new();
         if self.thirds {
-            notes.push(self.draw_thirds(frame));
+            notes.push(self.draw_thirds(frame, &mut names));
         }
+        names.extend(planes);
+        self.place_names(frame, names);
         if self.use_exercise {
             notes.push(self.exercise_note(t));
         }
@@ -392,11 +402,10 @@ impl RigidMotion {
         (landed, miss)
     }
 
-    /// Draws the thirds (see [`RigidMotion::set_thirds`]) after the rest of the figure, and
-    /// names them; returns the note.
-    fn draw_thirds(&mut self, frame: &mut Frame) -> String {
+    /// Draws the thirds (see [`RigidMotion::set_thirds`]) after the rest of the figure, adds
+    /// their names to `names` (placed by [`RigidMotion::place_names`]); returns the note.
+    fn draw_thirds(&mut self, frame: &mut Frame, names: &mut Vec<(Vec3, String, Vec3)>) -> String {
         let mut said = Vec::new();
-        let mut names = Vec::new();
         for (method, color, name) in [
             (Method::Screw, palette::Z_AXIS, "screw"),
             (Method::LerpSlerp, palette::ORANGE, "lerp + slerp"),
@@ -431,9 +440,17 @@ impl RigidMotion {
                 "{name}: its first third, applied three times to A, {result}"
             ));
         }
-        // Each name at the first place round its aeroplane's centre, below first, on the last
-        // frame's view, clear by a few pixels of every path, tick, axis and name and of every
-        // aeroplane: of the points of a 5 × 5 × 5 lattice through each of their boxes.
+        if said.is_empty() {
+            return "A third, three times: show the screw or lerp + slerp to see it.".into();
+        }
+        format!("{}.", said.join("; "))
+    }
+
+    /// Adds each of `names` (an aeroplane's centre, the text, its colour) at the first place
+    /// round that centre, below first, on the last frame's view, clear by a few pixels of every
+    /// path, tick, axis and name and of every aeroplane: of the points of a 5 × 5 × 5 lattice
+    /// through each of their boxes.
+    fn place_names(&mut self, frame: &mut Frame, names: Vec<(Vec3, String, Vec3)>) {
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
@@ -451,16 +468,12 @@ impl RigidMotion {
         }
         for (p, text, color) in names {
             let down = glam::Vec2::Y;
-            let around = crate::draw::Label::around_dot(p, 0.0, down, &text, color, 0, 10, 8.0);
+            let around = crate::draw::Label::around_dot(p, 0.0, down, &text, color, 0, 16, 6.0);
             let parts = &self.parts_px;
             frame.first_clear_label_by(view, 3.0, around, |rect| {
                 parts.iter().all(|&q| rect.nearest(q).distance(q) > 3.0)
             });
         }
-        if said.is_empty() {
-            return "A third, three times: show the screw or lerp + slerp to see it.".into();
-        }
-        format!("{}.", said.join("; "))
     }
 
     /// Compares the student's `dual_quat_apply` with the reference on the green frame's motion
