@@ -86,6 +86,18 @@ impl OrbitCamera {
         self.pitch_rad = (self.pitch_rad + d_pitch_rad).clamp(-PITCH_LIMIT_RAD, PITCH_LIMIT_RAD);
     }
 
+    /// A pointer drag of `(dx_px, dy_px)` CSS pixels on a canvas `height_px` tall: turns the
+    /// camera round its target, or, for a `flat` figure ([`crate::draw::Frame::flat`]), pans,
+    /// keeping the figure facing the camera. Returns whether it panned.
+    pub fn drag(&mut self, dx_px: f32, dy_px: f32, height_px: f32, flat: bool) -> bool {
+        if flat {
+            self.pan(dx_px / height_px, dy_px / height_px);
+        } else {
+            self.orbit(-dx_px * 0.008, dy_px * 0.008);
+        }
+        flat
+    }
+
     /// Multiplies the distance by `factor` (< 1 zooms in), keeping it inside [near·1, far/2].
     pub fn zoom(&mut self, factor: f32) {
         if factor.is_finite() && factor > 0.0 {

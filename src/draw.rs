@@ -249,6 +249,9 @@ pub struct Frame {
     pub keep_in_view: Vec<Vec3>,
     /// A second, small view of this frame from above or the side ([`inset::Inset`]).
     pub inset: Option<inset::Inset>,
+    /// A flat figure (a graph facing the camera): a drag slides it instead of orbiting round it,
+    /// which would squeeze it into a line ([`crate::camera::OrbitCamera::drag`]).
+    pub flat: bool,
 }
 
 /// A mesh made with the renderer's GPU-skinning path (`Renderer::skin`), by creation order.
@@ -963,6 +966,7 @@ impl Frame {
         self.markers.clear();
         self.keep_in_view.clear();
         self.inset = None;
+        self.flat = false;
     }
 
     /// Runs `draw` on this frame and moves everything it added by `offset`: meshes, GPU-skinned
@@ -1399,6 +1403,7 @@ pub mod palette {
         ("pink", PINK),
         ("brown", BROWN),
         ("grey", GREY),
+        ("pale-grey", GRID),
         ("dark", DARK),
         ("key", KEY),
     ];

@@ -117,6 +117,19 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
 }
 
 #[test]
+fn the_caption_colours_the_ghosts_as_they_are_drawn() {
+    // Figure 1's caption names the ghosts in a class of www/palette.css; its colour is GHOST.
+    let page = include_str!("../lessons/02b-expressive-animation/index.html");
+    let end = page.find(">ghosts</span>").expect("the caption names the ghosts");
+    let class = &page[page[..end].rfind("class=\"c-").unwrap() + 9..end - 1];
+    let named = inbetween::draw::palette::NAMED
+        .iter()
+        .find(|(name, _)| *name == class)
+        .unwrap_or_else(|| panic!("no palette colour for c-{class}"));
+    assert_eq!(named.1, GHOST, "the word is c-{class}");
+}
+
+#[test]
 fn spacing_reports_the_students_scale() {
     let mut scene = Spacing::new();
     scene.set_use_exercise(true);

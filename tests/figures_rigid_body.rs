@@ -722,10 +722,16 @@ fn the_drift_refuses_bad_settings_and_stops_the_raw_quaternion_before_it_overflo
     let mut frame = Frame::default();
     let note = f.draw(&mut frame);
     assert!(note.contains("stopped there"), "{note}");
-    assert!(frame
+    // The undrawn box's name keeps its box's teal, the colour the caption gives the
+    // unnormalised step.
+    let hidden: Vec<_> = frame
         .labels
         .iter()
-        .any(|l| l.text.contains("(not drawn)")));
+        .filter(|l| l.text.contains("(not drawn)"))
+        .collect();
+    assert_eq!(hidden.len(), 1);
+    assert!(hidden[0].text.starts_with("unnormalised"), "{}", hidden[0].text);
+    assert_eq!(hidden[0].color, palette::TEAL);
     assert_eq!(
         frame
             .meshes

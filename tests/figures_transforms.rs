@@ -613,6 +613,15 @@ fn inherited_scale_stretches_and_shears_the_child() {
     let mut comparison = ScaleComparison::new();
     let mut frame = Frame::default();
     let note = comparison.draw(&mut frame).unwrap();
+    // The upper arm's outline is drawn in a colour that stands out on its shirt: at least 0.8
+    // apart in linear RGB (a teal outline is 0.46 from the shirt's blue).
+    use inbetween::figures::transforms::ARM_OUTLINE;
+    let (hierarchy, _, shapes) = inbetween::transform::simple_human();
+    let shirt = shapes[hierarchy.find("upper_arm.L").unwrap()].color;
+    let rgb = |c: [f32; 4]| Vec3::new(c[0], c[1], c[2]);
+    assert!(frame.strokes.iter().any(|s| rgb(s.color) == ARM_OUTLINE));
+    let apart = ARM_OUTLINE.distance(shirt);
+    assert!(apart >= 0.8, "outline {ARM_OUTLINE} on shirt {shirt}: {apart} apart");
     let (length, angle) = comparison.forearm_shape(0);
     assert!((length - 0.28).abs() < 1e-4 && (angle - 90.0).abs() < 1e-3);
     let (length, angle) = comparison.forearm_shape(1);

@@ -317,6 +317,8 @@ impl Noise1d {
     pub fn draw(&self, frame: &mut Frame) -> String {
         let (lo, hi) = self.view_box();
         frame.keep_box_in_view(lo, hi);
+        // A graph in the plane z = 0: a drag pans it rather than turning it edge-on.
+        frame.flat = true;
         frame.line(
             Self::to_world(0.0, 0.0),
             Self::to_world(8.0, 0.0),
@@ -2318,6 +2320,8 @@ impl Fractals {
     pub fn draw(&mut self, frame: &mut Frame) -> String {
         let (lo, hi) = Self::view_box();
         frame.keep_box_in_view(lo, hi);
+        // Drawings in the plane z = 0: a drag pans them rather than turning them edge-on.
+        frame.flat = true;
         let d = self.depth;
         self.draw_depth(frame, d, palette::BLUE, palette::ORANGE, 0.0);
         if self.show_previous && d > 0 {

@@ -37,6 +37,12 @@ pub const METHODS: [(Method, Vec3); 3] = [
     (Method::DualQuatNlerp, palette::Y_AXIS),
     (Method::Screw, palette::Z_AXIS),
 ];
+/// A name for [`RigidMotion::place_names`]: the point it names (an aeroplane's centre, the
+/// screw axis's end), its text, its colour and the side of the point it prefers, on screen.
+type Name = (Vec3, String, Vec3, glam::Vec2);
+
+/// Each method's name on its moving aeroplane, in the order of [`Method`].
+pub const METHOD_NAMES: [&str; 3] = ["lerp + slerp", "blend", "screw"];
 pub const SCREW_AXIS: Vec3 = palette::PURPLE;
 /// The blend's plane's scale (its x, y, z) where it coincides with the screw's
 /// ([`RigidMotion::coincides_with_screw`]): narrower, so the screw's plane shows around it, and
@@ -122,6 +128,12 @@ impl RigidMotion {
         if width_px > 0.0 && height_px > 0.0 {
             self.view = Some((camera, glam::Vec2::new(width_px, height_px)));
         }
+    }
+
+    /// The last frame's view matrix and canvas size (CSS pixels), once drawn.
+    fn view_proj(&self) -> Option<(Mat4, glam::Vec2)> {
+        let (camera, size) = self.view?;
+        Some((camera.projection(size.x / size.y) * camera.view(), size))
     }
 
     fn set_end_dq(&mut self, end: DualQuat) {
@@ -252,7 +264,12 @@ impl RigidMotion {
         // piece) is clear of the whole axis.
         let pieces: [Vec3; 9] = std::array::from_fn(|k| a.lerp(b, k as f32 / 8.0));
         frame.wide_polyline(&pieces, SCREW_AXIS, 3.0);
-        frame.label(b, "screw axis", SCREW_AXIS);
+        // Its name goes past its end on the last frame's view (placed with the other names).
+        let toward = self.view_proj().map_or(glam::Vec2::X, |(vp, size)| {
+            let at = |p| crate::camera::project_to_canvas(vp, size, p).unwrap_or_default();
+            at(b) - at(a)
+        });
+        let axis_name = (b, "screw axis".to_string(), SCREW_AXIS, toward);
         frame.keep_box_in_view(Vec3::new(-2.6, 0.0, -1.2), Vec3::new(2.6, 2.4, 1.2));
         // Each key's name just above its axes' origin, past the plane there (its parts reach
         // 0.56 m from its centre), a few pixels over that point at any zoom, so the name sits
@@ -266,7 +283,9 @@ impl RigidMotion {
         // Each moving plane's own axes only when it is shown alone: with all three shown they
         // would pile up on the keys' axes where the planes start and end together.
         let own_axes = self.solo.is_some();
+        let below = glam::Vec2::Y;
         let student = self.use_exercise;
+        let mut planes = Vec::new();
         for (method, color) in METHODS {
             if !self.shown(method) {
                 continue;
@@ -314,11 +333,20 @@ impl RigidMotion {
                 frame.axes(m.to_mat4() * Mat4::from_translation(self.pivot), 0.45);
             }
             frame.marker(m.transform_point(self.pivot), crate::draw::DOT_PX, color);
+            // Each moving plane is named: the planes travel close together, and the blend's and
+            // the screw's meet at the keys and half-way.
+            planes.push((p, METHOD_NAMES[method as usize].to_string(), color, below));
         }
         let mut notes = Vec::new();
+        // The thirds' names are placed first, then the axis's, and the moving planes' keep off
+        // them.
+        let mut names = Vec::new();
         if self.thirds {
-            notes.push(self.draw_thirds(frame));
+            notes.push(self.draw_thirds(frame, &mut names));
         }
+        names.push(axis_name);
+        names.extend(planes);
+        self.place_names(frame, names);
         if self.use_exercise {
             notes.push(self.exercise_note(t));
         }
@@ -392,11 +420,10 @@ impl RigidMotion {
         (landed, miss)
     }
 
-    /// Draws the thirds (see [`RigidMotion::set_thirds`]) after the rest of the figure, and
-    /// names them; returns the note.
-    fn draw_thirds(&mut self, frame: &mut Frame) -> String {
+    /// Draws the thirds (see [`RigidMotion::set_thirds`]) after the rest of the figure, adds
+    /// their names to `names` (placed by [`RigidMotion::place_names`]); returns the note.
+    fn draw_thirds(&mut self, frame: &mut Frame, names: &mut Vec<Name>) -> String {
         let mut said = Vec::new();
-        let mut names = Vec::new();
         for (method, color, name) in [
             (Method::Screw, palette::Z_AXIS, "screw"),
             (Method::LerpSlerp, palette::ORANGE, "lerp + slerp"),
@@ -418,7 +445,7 @@ impl RigidMotion {
                 );
                 // The screw's third lands on B, which "B" names.
                 if method == Method::LerpSlerp || k < 3 {
-                    names.push((p, format!("{k}/3"), color));
+                    names.push((p, format!("{k}/3"), color, glam::Vec2::Y));
                 }
             }
             let (_, miss) = self.third_three_times(method);
@@ -431,12 +458,17 @@ impl RigidMotion {
                 "{name}: its first third, applied three times to A, {result}"
             ));
         }
-        // Each name at the first place round its aeroplane's centre, below first, on the last
-        // frame's view, clear by a few pixels of every path, tick, axis and name and of every
-        // aeroplane: of the points of a 5 × 5 × 5 lattice through each of their boxes.
-        let view = self
-            .view
-            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        if said.is_empty() {
+            return "A third, three times: show the screw or lerp + slerp to see it.".into();
+        }
+        format!("{}.", said.join("; "))
+    }
+
+    /// Adds each of `names` at the first place round its point, on the side it prefers first,
+    /// on the last frame's view, clear by a few pixels of every path, tick, axis and name and of
+    /// every aeroplane: of the points of a 5 × 5 × 5 lattice through each of their boxes.
+    fn place_names(&mut self, frame: &mut Frame, names: Vec<Name>) {
+        let view = self.view_proj();
         self.parts_px.clear();
         if let Some((view_proj, size)) = view {
             for m in &frame.meshes {
@@ -449,18 +481,13 @@ impl RigidMotion {
                 }));
             }
         }
-        for (p, text, color) in names {
-            let down = glam::Vec2::Y;
-            let around = crate::draw::Label::around_dot(p, 0.0, down, &text, color, 0, 10, 8.0);
+        for (p, text, color, toward) in names {
+            let around = crate::draw::Label::around_dot(p, 0.0, toward, &text, color, 0, 16, 6.0);
             let parts = &self.parts_px;
             frame.first_clear_label_by(view, 3.0, around, |rect| {
                 parts.iter().all(|&q| rect.nearest(q).distance(q) > 3.0)
             });
         }
-        if said.is_empty() {
-            return "A third, three times: show the screw or lerp + slerp to see it.".into();
-        }
-        format!("{}.", said.join("; "))
     }
 
     /// Compares the student's `dual_quat_apply` with the reference on the green frame's motion

@@ -2123,13 +2123,16 @@ impl DriftFigure {
                     * Mat4::from_scale(DRIFT_HALF);
                 frame.mesh(MeshId::CUBE, model, color);
                 box_points.extend(box_samples(model));
-                let text = format!("{name}: |q| = {}", format_number(norm));
-                names.push((k, text, color, box_points.clone()));
-            } else {
-                // Its matrix would stretch it past the canvas: only the outline is drawn.
-                let text = format!("{name}: |q| = {} (not drawn)", format_number(norm));
-                names.push((k, text, palette::RED, box_points.clone()));
             }
+            // Past DRIFT_DRAWN_MAX_NORM its matrix would stretch it past the canvas: only the
+            // outline is drawn, and its name, in the box's colour as the caption gives it, says so.
+            let hidden = if norm.is_finite() && norm <= DRIFT_DRAWN_MAX_NORM {
+                ""
+            } else {
+                " (not drawn)"
+            };
+            let text = format!("{name}: |q| = {}{hidden}", format_number(norm));
+            names.push((k, text, color, box_points.clone()));
             solid.extend(box_points);
         }
         let view = self

@@ -973,6 +973,10 @@ fn close(a: Mat4, b: Mat4) -> bool {
     a.abs_diff_eq(b, TOLERANCE * scale)
 }
 
+/// Figure 3's outline of the stretched upper arm's side (`c-orange` in the caption): orange
+/// against the arm's blue shirt, where a blue-green would sink into it.
+pub const ARM_OUTLINE: Vec3 = palette::ORANGE;
+
 /// Figure 3: the same pose twice, side by side: scale not inherited (left) and inherited (right).
 #[derive(Clone, Debug)]
 pub struct ScaleComparison {
@@ -1124,7 +1128,7 @@ impl ScaleComparison {
         for k in 0..2 {
             // The stretched upper arm's side, then the forearm's.
             let a = self.outline(k, self.arm);
-            frame.stroke(&[a[0], a[1], a[2], a[3], a[0]], palette::TEAL, outline);
+            frame.stroke(&[a[0], a[1], a[2], a[3], a[0]], ARM_OUTLINE, outline);
             let c = self.forearm_outline(k);
             frame.stroke(&[c[0], c[1], c[2], c[3], c[0]], palette::PINK, outline);
             // The angle at the corner between the edges along the forearm and across it.

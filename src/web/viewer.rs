@@ -33,6 +33,8 @@ pub struct Viewer {
     fitting: bool,
     /// Whether the last presented frame declared points to keep in view.
     declares_view: bool,
+    /// Whether the last presented frame was flat: a drag pans it.
+    flat: bool,
     /// The camera the figure placed with `setCamera` (or the default): "frame all" returns to it
     /// when the figure declares nothing to keep in view.
     home: OrbitCamera,
@@ -66,6 +68,7 @@ impl Viewer {
             inset_title: false,
             fitting: true,
             declares_view: false,
+            flat: false,
             home: OrbitCamera::default(),
             generation: 0,
         })
@@ -121,10 +124,13 @@ impl Viewer {
         Ok(())
     }
 
-    /// Rotates the camera by a pointer drag of `(dx, dy)` CSS pixels.
+    /// Rotates the camera by a pointer drag of `(dx, dy)` CSS pixels; pans it for a flat figure
+    /// ([`crate::draw::Frame::flat`]).
     pub fn orbit(&mut self, dx_px: f32, dy_px: f32) -> Result<(), JsError> {
         let (dx, dy) = (super::finite("dx", dx_px)?, super::finite("dy", dy_px)?);
-        self.camera.orbit(-dx * 0.008, dy * 0.008);
+        if self.camera.drag(dx, dy, self.css_size.1, self.flat) {
+            self.fitting = false;
+        }
         Ok(())
     }
 
@@ -194,6 +200,7 @@ impl Viewer {
         let (w, h) = self.css_size;
         let frame = &self.renderer.frame;
         self.declares_view = !frame.keep_in_view.is_empty();
+        self.flat = frame.flat;
         if self.fitting && self.declares_view {
             let points: Vec<glam::Vec3> = frame.fit_points();
             let size = glam::Vec2::new(w, h);

@@ -186,3 +186,128 @@ fn lesson_04_thirds_names_sit_at_their_aeroplanes_and_off_the_paths() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_04_method_names_sit_on_their_moving_aeroplanes() {
+    // Figure 1 with all three methods shown and with each alone, at its page camera (lessons/04-rigid-motions/
+    // lesson.js) and orbited round it, both canvases, for the page's key B, a turn of 90° and one
+    // of 0° (where the three planes travel together), at the keys, the page's start (t = 0.5),
+    // a third and 0.58 (where the page's screenshots catch it), with and without the thirds:
+    // "lerp + slerp", "blend" and "screw" (and "screw axis") are each shown where the figure put
+    // it, 2 px off every dot, tick and line; the three names cover no aeroplane's part and sit and within four label heights (64 px) of its
+    // own moving aeroplane (the paths through it keep a name from sitting closer), so that a
+    // student tells the overlapping planes apart.
+    use inbetween::figures::rigid::{Method, RigidMotion, METHODS, METHOD_NAMES};
+    let mut failures = Vec::new();
+    let cases = [
+        (150.0, false, 0),
+        (150.0, true, 0),
+        (90.0, false, 0),
+        (0.0, false, 0),
+        (150.0, false, 1),
+        (150.0, true, 3),
+    ];
+    for (angle, thirds, show) in cases {
+        for t in [0.0, 0.33, 0.5, 0.58, 1.0] {
+            for (yaw, pitch) in [(0.35, 0.4), (0.0, 0.2), (1.0, 0.4), (-0.5, 0.6), (2.5, 0.3)] {
+                for size in CANVASES {
+                    let mut scene = RigidMotion::new();
+                    scene
+                        .set_end(Vec3::new(0.2, 1.0, 0.3), angle, Vec3::new(1.5, 1.4, 0.3))
+                        .unwrap();
+                    scene.set_thirds(thirds);
+                    scene.set_show(show).unwrap();
+                    let view = [0.0, 1.0, 0.0, 6.5, yaw, pitch];
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw(out, t).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name = format!(
+                        "04 method names, angle {angle}°, thirds {thirds}, show {show}, t {t}, \
+                         orbit ({yaw}, {pitch})"
+                    );
+                    // All three, or the one shown alone.
+                    let shown: Vec<Method> = (0..3)
+                        .filter(|&k| show == 0 || show == k + 1)
+                        .map(|k| METHODS[k as usize].0)
+                        .collect();
+                    let named: Vec<usize> = shown
+                        .iter()
+                        .map(|&method| {
+                            let text = METHOD_NAMES[method as usize];
+                            let found = frame.labels.iter().position(|l| l.text == text);
+                            found.unwrap_or_else(|| panic!("{name}: no {text:?}"))
+                        })
+                        .collect();
+                    let names = frame.labels.iter();
+                    let all = names.filter(|l| METHOD_NAMES.contains(&l.text.as_str()));
+                    assert_eq!(all.count(), shown.len(), "{name}: a name per shown plane");
+                    // With "screw axis", which keeps off its own axis too.
+                    let axis = frame.labels.iter().position(|l| l.text == "screw axis");
+                    let checked: Vec<usize> = named.iter().copied().chain(axis).collect();
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &checked, 2.0)
+                    }));
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let at = |p: Vec3| project_to_canvas(view_proj, size, p);
+                    let points = |m: &inbetween::draw::MeshDraw| -> Vec<Vec2> {
+                        (0..27)
+                            .filter_map(|i| {
+                                let c = |k: i32| (k % 3 - 1) as f32;
+                                at(m.model
+                                    .transform_point3(Vec3::new(c(i), c(i / 3), c(i / 9))))
+                            })
+                            .collect()
+                    };
+                    let parts: Vec<Vec2> = frame.meshes.iter().flat_map(points).collect();
+                    let placed = layout(&frame, &camera, size);
+                    for (&i, &method) in named.iter().zip(&shown) {
+                        let (_, b, p) = &placed[i];
+                        let rect = Rect {
+                            min: p.top_left,
+                            size: b.size,
+                        };
+                        let text = &frame.labels[i].text;
+                        // Its own aeroplane: the four boxes from the one centred at the
+                        // method's pose, drawn after the keys' and the thirds'.
+                        let centre = scene.motion(method, t).translation();
+                        let own: Vec<Vec2> = frame
+                            .meshes
+                            .iter()
+                            .rposition(|m| m.model.w_axis.truncate().distance(centre) < 1e-4)
+                            .map(|first| {
+                                frame.meshes[first..first + 4]
+                                    .iter()
+                                    .flat_map(points)
+                                    .collect()
+                            })
+                            .unwrap_or_default();
+                        failures.extend(failure_of(|| {
+                            let gap = own
+                                .iter()
+                                .map(|q| rect.nearest(*q).distance(*q))
+                                .fold(f32::MAX, f32::min);
+                            assert!(
+                                gap <= 64.0,
+                                "{name} on {size}: {text:?} {gap} px from its aeroplane"
+                            );
+                            for q in &parts {
+                                assert!(
+                                    !(q.cmpgt(rect.min).all() && q.cmplt(rect.max()).all()),
+                                    "{name} on {size}: {text:?} at {:?} covers an aeroplane's part at {q}",
+                                    rect.min
+                                );
+                            }
+                        }));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
