@@ -953,14 +953,28 @@ struct Offsets {
 
 #[inline(always)]
 fn offsets(points: &[Vec3], p: Vec3, js: &[u32]) -> Offsets {
-    let (mut xs, mut ys, mut zs) = ([p.x; 4], [p.y; 4], [p.z; 4]);
-    for (l, &j) in js.iter().enumerate() {
-        let q = points[j as usize];
-        (xs[l], ys[l], zs[l]) = (q.x, q.y, q.z);
-    }
-    let x = Vec4::splat(p.x) - Vec4::from_array(xs);
-    let y = Vec4::splat(p.y) - Vec4::from_array(ys);
-    let z = Vec4::splat(p.z) - Vec4::from_array(zs);
+    let (xs, ys, zs) = if let Some(a) = consecutive(js) {
+        // Four neighbours in consecutive slots (cell order): 48 bytes in three loads.
+        // SAFETY: Vec3 is three f32s (`repr(C)`), so the slice holds `3 len` of them.
+        let f = unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f32>(), 3 * points.len()) };
+        let m = |k: usize| Vec4::from_slice(&f[3 * a + 4 * k..3 * a + 4 * k + 4]);
+        let (m0, m1, m2) = (m(0), m(1), m(2));
+        (
+            Vec4::new(m0.x, m0.w, m1.z, m2.y),
+            Vec4::new(m0.y, m1.x, m1.w, m2.z),
+            Vec4::new(m0.z, m1.y, m2.x, m2.w),
+        )
+    } else {
+        let (mut xs, mut ys, mut zs) = ([p.x; 4], [p.y; 4], [p.z; 4]);
+        for (l, &j) in js.iter().enumerate() {
+            let q = points[j as usize];
+            (xs[l], ys[l], zs[l]) = (q.x, q.y, q.z);
+        }
+        (Vec4::from_array(xs), Vec4::from_array(ys), Vec4::from_array(zs))
+    };
+    let x = Vec4::splat(p.x) - xs;
+    let y = Vec4::splat(p.y) - ys;
+    let z = Vec4::splat(p.z) - zs;
     Offsets {
         x,
         y,
@@ -972,11 +986,24 @@ fn offsets(points: &[Vec3], p: Vec3, js: &[u32]) -> Offsets {
 /// Four of `values` gathered by index (lanes past `js` are 1, a value no sum reads).
 #[inline(always)]
 fn gather(values: &[f32], js: &[u32]) -> Vec4 {
+    if let Some(a) = consecutive(js) {
+        return Vec4::from_slice(&values[a..a + 4]);
+    }
     let mut v = [1.0; 4];
     for (l, &j) in js.iter().enumerate() {
         v[l] = values[j as usize];
     }
     Vec4::from_array(v)
+}
+
+/// `Some(a)` when `js` is `[a, a + 1, a + 2, a + 3]`: four neighbours in consecutive slots,
+/// as the lists of a step in cell order mostly are.
+#[inline(always)]
+fn consecutive(js: &[u32]) -> Option<usize> {
+    match *js {
+        [a, b, c, d] if b == a + 1 && c == a + 2 && d == a + 3 => Some(a as usize),
+        _ => None,
+    }
 }
 
 /// Calls `f(js, n, offsets)` for the neighbour list `nbr` of the particle at `p`, four
