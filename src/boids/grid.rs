@@ -449,19 +449,7 @@ impl Grid {
     /// fluid's neighbour lists, where a mispredicted branch per group cost more than the
     /// distance tests).
     pub fn append_neighbours(&self, positions: &[Vec3], i: usize, radius: f32, out: &mut Vec<u32>) {
-        self.append_near::<false>(positions[i], i, radius, out);
-    }
-
-    /// As [`Grid::append_neighbours`] for the boid in slot `k` of [`Grid::sorted`], its
-    /// neighbours written as slots (`sorted()[slot]` is the boid): the lists of a fluid that
-    /// stores its particles in cell order (slot order), in the same order.
-    pub fn append_neighbour_slots(&self, k: usize, radius: f32, out: &mut Vec<u32>) {
-        self.append_near::<true>(self.sorted_position(k), self.sorted[k] as usize, radius, out);
-    }
-
-    /// The neighbours of boid `i` at `p`, as boid indices or (`SLOTS`) as slots.
-    #[inline(always)]
-    fn append_near<const SLOTS: bool>(&self, p: Vec3, i: usize, radius: f32, out: &mut Vec<u32>) {
+        let p = positions[i];
         let r2 = radius * radius;
         let cell = self.cell_coords(i);
         let mut runs = [(0u32, 0u32); 9];
@@ -490,7 +478,7 @@ impl Grid {
                 for l in 0..4 {
                     // Slots past the last boid hold no index: u32::MAX there, never kept.
                     let j = self.sorted.get(t + l).copied().unwrap_or(u32::MAX);
-                    spare[kept].write(if SLOTS { (t + l) as u32 } else { j });
+                    spare[kept].write(j);
                     kept += ((hits >> l) & 1) as usize & usize::from(j != me);
                 }
                 t += 4;

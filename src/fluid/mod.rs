@@ -231,7 +231,6 @@ pub struct Fluid {
     exploded: Option<(f32, String)>,
     grid: Grid,
     /// Neighbour lists in one array: particle `i`'s are `nbr[start[i]..start[i + 1]]`.
-    /// During a PBF step, slot `k`'s (cell order, see [`Fluid::step_pbf`]).
     start: Vec<u32>,
     nbr: Vec<u32>,
     predicted: Vec<Vec3>,
@@ -240,11 +239,6 @@ pub struct Fluid {
     /// violated by `C = 1` gets: the artificial pressure `s_corr` is measured in it, so that
     /// `k = 0.1` means "as if compressed by 10 %" whatever the units.
     lambda_unit: f32,
-    /// PBF: step the particles in the grid's cell order (false only in this module's test,
-    /// which compares the two orders).
-    cell_order: bool,
-    /// PBF: a particle's value of one array, in the other order (see [`Fluid::step_pbf`]).
-    reorder: Vec<f32>,
 }
 
 /// The scene's water: axis-aligned blocks (`min, max`) and an optional round drop (centre,
@@ -446,8 +440,6 @@ impl Fluid {
             start: Vec::new(),
             nbr: Vec::new(),
             lambda_unit,
-            cell_order: true,
-            reorder: Vec::new(),
         })
     }
 
@@ -660,11 +652,7 @@ impl Fluid {
             self.collide(&mut x, None);
             self.predicted[i] = x;
         }
-        if self.cell_order {
-            self.sort_into_cells();
-        } else {
-            self.find_neighbours(true);
-        }
+        self.find_neighbours(true);
         let kern = Kernels::new(h, dim);
         let w_dq = kern.poly6((0.2 * h) * (0.2 * h));
         for _ in 0..iterations {
@@ -690,56 +678,6 @@ impl Fluid {
             self.xsph();
         }
         std::mem::swap(&mut self.positions, &mut self.predicted);
-        if self.cell_order {
-            self.unsort_from_cells();
-        }
-    }
-
-    /// Rebuilds the grid on the predicted positions and moves the particles' state into cell
-    /// order (slot `k` holds particle `grid.sorted()[k]`), with neighbour lists of slots. A
-    /// particle's neighbours then lie in a few runs of consecutive slots, so the pair passes
-    /// read memory nearly front to back. Each cell keeps its particles in increasing index and
-    /// every list the order of [`Fluid::find_neighbours`]'s, so every sum adds the same terms in
-    /// the same order: the step is the one in index order, bit for bit (this module's test).
-    fn sort_into_cells(&mut self) {
-        self.grid.rebuild(&self.predicted);
-        let order = self.grid.sorted();
-        for a in [&mut self.predicted, &mut self.positions, &mut self.velocities] {
-            for (k, &i) in order.iter().enumerate() {
-                self.scratch[k] = a[i as usize];
-            }
-            std::mem::swap(a, &mut self.scratch);
-        }
-        self.start.clear();
-        self.nbr.clear();
-        self.start.push(0);
-        for k in 0..order.len() {
-            self.grid
-                .append_neighbour_slots(k, self.params.h, &mut self.nbr);
-            self.start.push(self.nbr.len() as u32);
-        }
-    }
-
-    /// Moves the state back from cell order to index order: the fields keep particle `i` at
-    /// `i` between steps, for the figures and tests that address particles by index.
-    fn unsort_from_cells(&mut self) {
-        let order = self.grid.sorted();
-        for a in [&mut self.positions, &mut self.velocities] {
-            for (k, &i) in order.iter().enumerate() {
-                self.scratch[i as usize] = a[k];
-            }
-            std::mem::swap(a, &mut self.scratch);
-        }
-        self.reorder.resize(order.len(), 0.0);
-        for a in [&mut self.densities, &mut self.pressures] {
-            for (k, &i) in order.iter().enumerate() {
-                self.reorder[i as usize] = a[k];
-            }
-            std::mem::swap(a, &mut self.reorder);
-        }
-        // The lists of slots mean nothing in index order.
-        self.start.clear();
-        self.nbr.clear();
     }
 
     /// PBF's position corrections into `scratch`: `Δx_i = (m/ρ₀) Σ_j (λ_i + λ_j + s_corr)
@@ -953,28 +891,14 @@ struct Offsets {
 
 #[inline(always)]
 fn offsets(points: &[Vec3], p: Vec3, js: &[u32]) -> Offsets {
-    let (xs, ys, zs) = if let Some(a) = consecutive(js) {
-        // Four neighbours in consecutive slots (cell order): 48 bytes in three loads.
-        // SAFETY: Vec3 is three f32s (`repr(C)`), so the slice holds `3 len` of them.
-        let f = unsafe { std::slice::from_raw_parts(points.as_ptr().cast::<f32>(), 3 * points.len()) };
-        let m = |k: usize| Vec4::from_slice(&f[3 * a + 4 * k..3 * a + 4 * k + 4]);
-        let (m0, m1, m2) = (m(0), m(1), m(2));
-        (
-            Vec4::new(m0.x, m0.w, m1.z, m2.y),
-            Vec4::new(m0.y, m1.x, m1.w, m2.z),
-            Vec4::new(m0.z, m1.y, m2.x, m2.w),
-        )
-    } else {
-        let (mut xs, mut ys, mut zs) = ([p.x; 4], [p.y; 4], [p.z; 4]);
-        for (l, &j) in js.iter().enumerate() {
-            let q = points[j as usize];
-            (xs[l], ys[l], zs[l]) = (q.x, q.y, q.z);
-        }
-        (Vec4::from_array(xs), Vec4::from_array(ys), Vec4::from_array(zs))
-    };
-    let x = Vec4::splat(p.x) - xs;
-    let y = Vec4::splat(p.y) - ys;
-    let z = Vec4::splat(p.z) - zs;
+    let (mut xs, mut ys, mut zs) = ([p.x; 4], [p.y; 4], [p.z; 4]);
+    for (l, &j) in js.iter().enumerate() {
+        let q = points[j as usize];
+        (xs[l], ys[l], zs[l]) = (q.x, q.y, q.z);
+    }
+    let x = Vec4::splat(p.x) - Vec4::from_array(xs);
+    let y = Vec4::splat(p.y) - Vec4::from_array(ys);
+    let z = Vec4::splat(p.z) - Vec4::from_array(zs);
     Offsets {
         x,
         y,
@@ -986,24 +910,11 @@ fn offsets(points: &[Vec3], p: Vec3, js: &[u32]) -> Offsets {
 /// Four of `values` gathered by index (lanes past `js` are 1, a value no sum reads).
 #[inline(always)]
 fn gather(values: &[f32], js: &[u32]) -> Vec4 {
-    if let Some(a) = consecutive(js) {
-        return Vec4::from_slice(&values[a..a + 4]);
-    }
     let mut v = [1.0; 4];
     for (l, &j) in js.iter().enumerate() {
         v[l] = values[j as usize];
     }
     Vec4::from_array(v)
-}
-
-/// `Some(a)` when `js` is `[a, a + 1, a + 2, a + 3]`: four neighbours in consecutive slots,
-/// as the lists of a step in cell order mostly are.
-#[inline(always)]
-fn consecutive(js: &[u32]) -> Option<usize> {
-    match *js {
-        [a, b, c, d] if b == a + 1 && c == a + 2 && d == a + 3 => Some(a as usize),
-        _ => None,
-    }
 }
 
 /// Calls `f(js, n, offsets)` for the neighbour list `nbr` of the particle at `p`, four
@@ -1172,53 +1083,6 @@ fn pbf_lambda_with(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A PBF run stepped in cell order against the same run stepped in index order: every
-    /// position, velocity, density and `λ` equal bit for bit, each particle at its own index,
-    /// on a splashing 3D and 2D dam break with vorticity confinement and an obstacle.
-    #[test]
-    fn cell_order_steps_are_index_order_steps_bit_for_bit() {
-        for dim in [Dim::Three, Dim::Two] {
-            let mut params = match dim {
-                Dim::Three => FluidParams::default_3d(Method::Pbf),
-                Dim::Two => FluidParams::default_2d(Method::Pbf),
-            };
-            params.vorticity = 0.5;
-            let mut sorted = Fluid::new(params, Scene::DamBreak, 3000, 3).unwrap();
-            sorted
-                .set_obstacle(Some(Sphere {
-                    center: box_size(dim) * Vec3::new(0.56, 0.2, 0.5),
-                    radius: 0.15,
-                }))
-                .unwrap();
-            let mut plain = sorted.clone();
-            plain.cell_order = false;
-            let mut moved = 0;
-            for step in 0..60 {
-                sorted.step();
-                plain.step();
-                assert!(sorted.exploded().is_none(), "{dim:?} exploded");
-                let bits = |f: &Fluid| {
-                    let v3 = |a: &[Vec3]| {
-                        let bits = a.iter().flat_map(|v| v.to_array()).map(f32::to_bits);
-                        bits.collect::<Vec<_>>()
-                    };
-                    let v1 = |a: &[f32]| a.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
-                    (
-                        v3(&f.positions),
-                        v3(&f.velocities),
-                        v1(&f.densities),
-                        v1(&f.pressures),
-                    )
-                };
-                assert!(bits(&sorted) == bits(&plain), "{dim:?}: step {step} differs");
-                // The grid's order is not the index order: the test compares two orders.
-                let order = sorted.grid.sorted().iter().enumerate();
-                moved = order.filter(|&(k, &i)| k != i as usize).count();
-            }
-            assert!(moved > 100, "{dim:?}: only {moved} particles out of index order");
-        }
-    }
 
     /// The step's sums, which evaluate four neighbours at a time, against a loop over each list
     /// one neighbour at a time with the scalar kernels: equal bit for bit (the lanes add their
