@@ -588,7 +588,7 @@ impl Frame {
     /// Whether `label` (not yet added), in the box the page's layout first tries for it
     /// ([`layout::preferred`] at its anchor's projection plus its offset, moved inside the
     /// canvas) on a `size` canvas (CSS pixels) seen through `view_proj`, stays clear of the
-    /// frame's markers (their whole dot), its strokes (sampled along each segment), the first
+    /// frame's markers (their whole dot), its strokes (every point of each segment), the first
     /// places of the labels the layout places before it (those of at least its priority, by
     /// [`LABELS_APART_PX`]; a lower one moves out of its way) and the frame's inset. The box is
     /// measured as [`Label::size_px`] does. For figures that choose among places for a label
@@ -625,10 +625,7 @@ impl Frame {
                     return true;
                 };
                 let r = 0.5 * s.width_px + margin_px;
-                (0..=16).all(|k| {
-                    let p = a.lerp(b, k as f32 / 16.0);
-                    !(p.cmpgt(rect.min - r).all() && p.cmplt(rect.max() + r).all())
-                })
+                !segment_enters(a, b, rect.min - r, rect.max() + r)
             })
         };
         let labels_clear = || {
@@ -766,6 +763,26 @@ impl Frame {
             .unwrap_or(first);
         self.labels.push(chosen);
     }
+}
+
+/// Whether the segment `a`–`b` passes inside the open box from `lo` to `hi` (a touch along an
+/// edge or at a corner does not count): the segment clipped to each axis's slab in turn
+/// (Liang–Barsky), so a box that lies between any two points of a long line still meets it.
+fn segment_enters(a: glam::Vec2, b: glam::Vec2, lo: glam::Vec2, hi: glam::Vec2) -> bool {
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0f32, 1.0f32);
+    for i in 0..2 {
+        if d[i] == 0.0 {
+            if a[i] <= lo[i] || a[i] >= hi[i] {
+                return false;
+            }
+        } else {
+            let (u, v) = ((lo[i] - a[i]) / d[i], (hi[i] - a[i]) / d[i]);
+            t0 = t0.max(u.min(v));
+            t1 = t1.min(u.max(v));
+        }
+    }
+    t0 < t1
 }
 
 impl Label {

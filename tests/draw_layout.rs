@@ -249,3 +249,45 @@ fn a_label_the_layout_moved_off_its_dot_gets_a_leader_line_unless_it_still_touch
     assert_eq!(leader(off, dot, true), Some(Vec2::new(100.0, 112.0)));
     assert!(leader(off, dot, false).is_none(), "12 px, where the figure put it: no line");
 }
+
+#[test]
+fn a_line_that_only_clips_a_labels_corner_is_not_clear_of_it() {
+    use inbetween::draw::{Frame, StrokeStyle};
+    use glam::{Mat4, Vec3};
+    // World x, y are canvas pixels (y down): the label's first place is its box's top-left at
+    // (105, 92), 5 px right of its anchor and centred on it.
+    let canvas = Vec2::new(800.0, 600.0);
+    let view_proj = Mat4::from_translation(Vec3::new(-1.0, 1.0, 0.0))
+        * Mat4::from_scale(Vec3::new(2.0 / canvas.x, -2.0 / canvas.y, 1.0));
+    let mut frame = Frame::default();
+    frame.label(Vec3::new(100.0, 100.0, 0.0), "name", Vec3::ONE);
+    let label = frame.labels.pop().unwrap();
+    let rect = label.first_place(view_proj, canvas).unwrap();
+    assert!(rect.min.distance(Vec2::new(105.0, 92.0)) < 1e-3, "{:?}", rect.min);
+    // Long lines x + y = c, 4,000 px long: their points 1/16 of the way apart lie hundreds of
+    // pixels from the box, and the box's top-left corner lies on x + y = 197.
+    let line = |c: f32| {
+        let mut frame = Frame::default();
+        frame.stroke(
+            &[Vec3::new(-2000.0, c + 2000.0, 0.0), Vec3::new(2000.0, c - 2000.0, 0.0)],
+            Vec3::ONE,
+            StrokeStyle::solid(2.0),
+        );
+        frame
+    };
+    // Through the corner, 2 px in along each axis.
+    assert!(!line(199.0).label_is_clear(view_proj, canvas, &label));
+    // 7 px out along each axis: clear, but not by 7 px (the box grown by the margin and the
+    // line's half width reaches past it).
+    assert!(line(190.0).label_is_clear(view_proj, canvas, &label));
+    assert!(line(190.0).label_is_clear_by(view_proj, canvas, &label, 2.0));
+    assert!(!line(190.0).label_is_clear_by(view_proj, canvas, &label, 7.0));
+    // A point-long stroke inside the box is not clear either; one on its edge is.
+    let dot = |p: Vec3| {
+        let mut frame = Frame::default();
+        frame.stroke(&[p, p], Vec3::ONE, StrokeStyle::solid(1.0));
+        frame
+    };
+    assert!(!dot(Vec3::new(110.0, 100.0, 0.0)).label_is_clear(view_proj, canvas, &label));
+    assert!(dot(Vec3::new(110.0, 80.0, 0.0)).label_is_clear(view_proj, canvas, &label));
+}

@@ -838,7 +838,8 @@ impl IkFigure {
     /// (`first_m` along `out`, reading away from the point) when that covers none of the frame's
     /// dots, lines and labels on the canvas the figure was last drawn on, else in the first such
     /// place around the point, nearest the preferred direction first (rings in metres, then
-    /// rings on screen), and round points along the segment. The chains, side d, the circle of
+    /// rings on screen), and round points along the segment; a place [`LABEL_GAP_PX`] off every
+    /// dot and line first, else one that only does not cover them. The chains, side d, the circle of
     /// middle joints, the pole's line, the hinges' arcs and the grey square of their plane sweep
     /// round the roots and the targets as the target and the pole move. Where no place is clear it keeps the preferred
     /// one. The anchor stays at the preferred place and the others are screen offsets from it
@@ -893,37 +894,30 @@ impl IkFigure {
             (a.distance(b) > 1.0).then_some((a, b))
         });
         // Just beside the segment it measures: in full up to 10 px from it, then shortened up
-        // to 16 px, then in full at 16 px.
+        // to 16 px, then in full at 16 px, then shortened at 22 px.
+        let mut candidates = Vec::new();
         if let Some((a, b)) = line_px {
             let full = placed.text.clone();
             let tries = [
                 (Some(full.clone()), &[4.0, 10.0][..]),
                 (label.short_text.clone(), &[4.0, 10.0, 16.0][..]),
                 (Some(full), &[16.0][..]),
+                (label.short_text.clone(), &[22.0][..]),
             ];
             let out = label.out.truncate();
-            let beside = tries.into_iter().flat_map(|(text, gaps)| {
-                let offsets = match &text {
-                    Some(text) => beside_line_px(a, b, home, text, out, gaps),
-                    None => Vec::new(),
-                };
-                offsets
-                    .into_iter()
-                    .map(move |offset_px| (offset_px, text.clone().unwrap_or_default()))
-            });
-            for (offset_px, text) in beside {
-                let candidate = crate::draw::Label {
-                    offset_px,
-                    left: false,
-                    text,
-                    ..placed.clone()
-                };
-                if frame.label_is_clear(view_proj, size, &candidate) {
-                    frame.labels.push(candidate);
-                    return;
+            for (text, gaps) in tries {
+                let Some(text) = text else { continue };
+                for offset_px in beside_line_px(a, b, home, &text, out, gaps) {
+                    candidates.push(crate::draw::Label {
+                        offset_px,
+                        left: false,
+                        text: text.clone(),
+                        ..placed.clone()
+                    });
                 }
             }
         }
+        let beside = candidates.len();
         let mut offsets: Vec<(Vec2, bool)> = places
             .iter()
             .filter_map(|&(at, left)| Some((project_to_canvas(view_proj, size, at)? - home, left)))
@@ -935,7 +929,7 @@ impl IkFigure {
         });
         let centres = std::iter::once(label.at).chain(along);
         for centre in centres.filter_map(|c| project_to_canvas(view_proj, size, c)) {
-            for r_px in [12.0, 18.0, 26.0, 36.0, 48.0, 64.0] {
+            for r_px in [12.0, 18.0, 26.0, 36.0, 48.0, 64.0, 80.0, 96.0] {
                 for step in 0..16 {
                     let angle = step as f32 * std::f32::consts::TAU / 16.0;
                     let p = centre + r_px * Vec2::new(angle.cos(), -angle.sin());
@@ -943,18 +937,24 @@ impl IkFigure {
                 }
             }
         }
-        let clear = offsets.iter().find_map(|&(offset_px, left)| {
-            let candidate = crate::draw::Label {
-                offset_px,
-                left,
-                ..placed.clone()
-            };
-            frame
-                .label_is_clear(view_proj, size, &candidate)
-                .then_some(candidate)
-        });
+        candidates.extend(offsets.into_iter().map(|(offset_px, left)| crate::draw::Label {
+            offset_px,
+            left,
+            ..placed.clone()
+        }));
+        // The first place that keeps a visible gap from every dot and line (a name that touches
+        // a hinge's arc reads as part of it), else the first that only does not cover them; side
+        // d's label tries every place beside its line both ways before it turns round the point.
+        let beside = if label.short_text.is_some() { beside } else { 0 };
+        let (near, around) = candidates.split_at(beside);
+        let clear = [(near, LABEL_GAP_PX), (near, 0.0), (around, LABEL_GAP_PX), (around, 0.0)]
+            .into_iter()
+            .find_map(|(list, margin_px)| {
+                list.iter()
+                    .find(|c| frame.label_is_clear_by(view_proj, size, c, margin_px))
+            });
         if let Some(candidate) = clear {
-            placed = candidate;
+            placed = candidate.clone();
         }
         frame.labels.push(placed);
     }
@@ -1184,6 +1184,10 @@ fn beside_line_px(
     }
     offsets
 }
+
+/// The gap a placed label keeps from every dot's and line's edge where it can, CSS pixels: past
+/// a line's antialiased rim (1 px), with a pixel to spare.
+const LABEL_GAP_PX: f32 = 2.0;
 
 /// How far below its root a chain's name sits first, metres.
 const ROOT_LABEL_FIRST_M: f32 = 0.12;

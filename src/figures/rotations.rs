@@ -1153,8 +1153,7 @@ impl Rodrigues {
                     })
                 })
             });
-        // 2 px off the lines: the frame samples a long shaft sparsely, and a corner of the
-        // label between two samples would touch it.
+        // 2 px off the lines: a label that touches an arrow reads as part of it.
         let candidates = at_tip.into_iter().chain(candidates);
         frame.first_clear_label_by(view, 2.0, candidates, |_| true);
     }
@@ -1242,13 +1241,6 @@ impl Rodrigues {
                 .fold(0.0, f32::max)
                 * 2.0
         });
-        let solid: Vec<Vec3> = box_points
-            .iter()
-            .copied()
-            // The axis every 2 cm: the frame's own test samples a line at 17 points, sparse
-            // along the axis (4 m), which passes close to the names.
-            .chain((0..=200).map(|k| n * (k as f32 * 0.02 - 2.0)))
-            .collect();
         for (at, dot_px, toward, text, color) in [
             (n * 1.7, 0.0, glam::Vec2::X, "n", AXIS),
             (v, 12.0, glam::Vec2::X, "v", V),
@@ -1283,7 +1275,7 @@ impl Rodrigues {
                 candidates = outside;
                 candidates.extend(inside);
             }
-            frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &solid));
+            frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &box_points));
         }
         // Last, once every arrow and the other labels are down: the terms run tip to tail
         // beside v, v′ and the circle, so a label at a term's middle lies on some arrow.

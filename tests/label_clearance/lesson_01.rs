@@ -149,24 +149,31 @@ fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
     // both steps of the timeline, T·R solid (the page's start): "T·R" and "R·T" keep off the
     // solid box's axes (which turn with it), the paths, the arm and the dots. They are placed
     // first (the highest priority), so the frame's other labels, left out here, never move
-    // them. With R·T solid, its x axis ends near T·R's name at the end of the timeline.
+    // them. With R·T solid, its x axis ends near T·R's name at the end of the timeline. As on
+    // the page, the figure places them for the view of the frame before.
     use inbetween::figures::transforms::{Order, SingleShape};
     for order in [Order::RotateFirst] {
         let mut scene = SingleShape::new();
         scene.set_order(order);
         for stage in [0.0, 0.36, 1.0, 1.5, 2.0] {
-            let mut frame = Frame::default();
-            scene.draw(&mut frame, stage).unwrap();
-            let names: Vec<_> = frame
-                .labels
-                .iter()
-                .filter(|l| l.priority == 3)
-                .cloned()
-                .collect();
-            assert_eq!(names.len(), 2);
-            assert!(frame.labels.iter().all(|l| l.priority <= 3));
             for size in CANVASES {
-                let camera = page_camera([0.5, 0.3, 0.0, 5.0, 0.6, 0.45], &frame, size);
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    [0.5, 0.3, 0.0, 5.0, 0.6, 0.45],
+                    size,
+                    |fig, out| {
+                        fig.draw(out, stage).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let names: Vec<_> = frame
+                    .labels
+                    .iter()
+                    .filter(|l| l.priority == 3)
+                    .cloned()
+                    .collect();
+                assert_eq!(names.len(), 2);
+                assert!(frame.labels.iter().all(|l| l.priority <= 3));
                 let mut names_only = frame.clone();
                 names_only.labels = names.clone();
                 assert_clear(
