@@ -569,8 +569,8 @@ function reportBudget(backend, seconds) {
  * created per page, which only one process can create), so the files finish together whatever
  * each page costs; otherwise part k takes the pages at positions k, k + parts, ... The pages come
  * in the order WebGL2's lessons, then WebGPU's (about a quarter as long each), so that the last
- * ones to be taken are short. A file opens a backend's browser when it takes its first page on
- * that backend, and closes it when it takes one on the other.
+ * ones to be taken are short. A file opens a context in a backend's browser when it takes its
+ * first page on that backend, and closes it when it takes one on the other.
  */
 export function lessonTests({ part = 0, parts = 1, extras = false }) {
   if (extras) {
