@@ -1,8 +1,7 @@
 // Launching Debian's Chromium with the flag sets from ../shared/TOOLCHAIN.md, one per backend.
 import { chromium } from 'playwright-core';
 import { before, after } from 'node:test';
-import { existsSync, mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { existsSync } from 'node:fs';
 import { join } from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
 
@@ -71,27 +70,25 @@ export const PROFILES = {
   none: [...BASE, '--disable-3d-apis', '--disable-webgl', '--disable-gpu'],
 };
 
+/** The browsers this test file has started, one per profile (see `launch`). */
+const browsers = {};
+after(async () => {
+  for (const browser of Object.values(browsers)) await (await browser).close();
+});
+
 /**
- * A persistent Chromium context with the flags of `profile` (webgl2, webgpu or none). Its profile
- * folder (a temporary one) is removed when the context closes.
+ * A new browser context (its own cookies, storage and pages, as a fresh profile has) in this test
+ * file's Chromium with the flags of `profile` (webgl2, webgpu or none). The file's first call for
+ * a profile starts that Chromium, which serves every later call and closes when the file's tests
+ * are done: a start costs about a second of a core, and most test files open several contexts.
  */
 export async function launch(profile) {
-  const dir = mkdtempSync(join(tmpdir(), `inbetween-${profile}-`));
-  const context = await chromium.launchPersistentContext(dir, {
+  browsers[profile] ??= chromium.launch({
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     headless: true,
     args: PROFILES[profile],
-    viewport: { width: 1100, height: 900 },
   });
-  const close = context.close.bind(context);
-  context.close = async (...args) => {
-    await close(...args);
-    // The browser has exited by then; a file it left behind only leaves the folder in /tmp.
-    try {
-      rmSync(dir, { recursive: true, force: true, maxRetries: 3 });
-    } catch { /* kept */ }
-  };
-  return context;
+  return (await browsers[profile]).newContext({ viewport: { width: 1100, height: 900 } });
 }
 
 /**

@@ -250,9 +250,27 @@ async function moveControls(page, figure, check) {
   const controllers = await figure.locator('.lil-controller').all();
   const buttons = [];
   for (const c of controllers) {
-    if (!(await c.isVisible())) continue;
-    const name = (await c.locator('.lil-name').textContent().catch(() => '')) || '?';
-    const classes = (await c.getAttribute('class')) ?? '';
+    // What the loop needs of a controller, read in one round trip to the page when the loop
+    // reaches it (an earlier control may have shown, hidden or disabled it).
+    const about = await c.evaluate((el) => {
+      const slider = el.querySelector('.lil-slider');
+      const fill = slider?.querySelector('.lil-fill');
+      const select = el.querySelector('select');
+      const box = el.getBoundingClientRect();
+      return {
+        // As Playwright's isVisible: a box of some size, and not `visibility: hidden`.
+        visible: box.width > 0 && box.height > 0 && getComputedStyle(el).visibility !== 'hidden',
+        name: el.querySelector('.lil-name')?.textContent || '?',
+        classes: el.className,
+        options: select ? select.options.length : 0,
+        current: select ? select.selectedIndex : -1,
+        slider: Boolean(slider),
+        fill: slider && fill ? fill.getBoundingClientRect().width / slider.getBoundingClientRect().width : 0,
+        value: Number(el.querySelector('input')?.value),
+      };
+    });
+    if (!about.visible) continue;
+    const { name, classes } = about;
     if (classes.includes('disabled')) continue; // e.g. a GPU switch without WebGPU
     if (classes.includes('function')) { buttons.push([name, c.locator('button')]); continue; }
     if (classes.includes('boolean')) {
@@ -261,20 +279,17 @@ async function moveControls(page, figure, check) {
     }
     if (classes.includes('option')) {
       const select = c.locator('select');
-      const options = await select.locator('option').allTextContents();
-      const current = await select.evaluate((s) => s.selectedIndex);
-      await check(`dropdown "${name}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1, 12);
+      const { options, current } = about;
+      await check(`dropdown "${name}"`, (k) => select.selectOption({ index: (current + 1 + k) % options }), false, options - 1, 12);
       continue;
     }
     if (classes.includes('number')) {
-      const slider = c.locator('.lil-slider');
-      if (await slider.count()) {
-        const fill = await slider.evaluate((s) => s.querySelector('.lil-fill')?.getBoundingClientRect().width / s.getBoundingClientRect().width);
-        const at = fill < 0.5 ? 0.8 : 0.2;
-        await check(`slider "${name}"`, () => clickAt(page, slider, at));
+      if (about.slider) {
+        const at = about.fill < 0.5 ? 0.8 : 0.2;
+        await check(`slider "${name}"`, () => clickAt(page, c.locator('.lil-slider'), at));
       } else {
         const input = c.locator('input');
-        const value = Number(await input.inputValue());
+        const { value } = about;
         await check(`number "${name}"`, async () => {
           await input.fill(String(value === 0 ? 1 : -value));
           await input.press('Enter');
@@ -554,8 +569,8 @@ function reportBudget(backend, seconds) {
  * created per page, which only one process can create), so the files finish together whatever
  * each page costs; otherwise part k takes the pages at positions k, k + parts, ... The pages come
  * in the order WebGL2's lessons, then WebGPU's (about a quarter as long each), so that the last
- * ones to be taken are short. A file opens a backend's browser when it takes its first page on
- * that backend, and closes it when it takes one on the other.
+ * ones to be taken are short. A file opens a context in a backend's browser when it takes its
+ * first page on that backend, and closes it when it takes one on the other.
  */
 export function lessonTests({ part = 0, parts = 1, extras = false }) {
   if (extras) {
@@ -676,9 +691,9 @@ async function lessonPage(context, backend, lesson) {
   // scrolled into view, has drawn again (a figure off screen keeps its last frame).
   if (!light(backend)) {
     for (const [i, figure] of (await page.locator('.figure').all()).entries()) {
-      await figure.scrollIntoViewIfNeeded();
+      await boxInView(figure);
       await frames(page, 3);
-      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-default-${backend}.png` });
+      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-default-${backend}.png`, caret: 'initial' });
     }
     clock('default screenshots');
   }
@@ -704,7 +719,7 @@ async function lessonPage(context, backend, lesson) {
       assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
       const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
       assert.ok(moved > 0, `figure ${i}: no control was found to move`);
-      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png`, caret: 'initial' });
       clock(`figure ${i} (${kind}): every control`);
       continue;
     }
@@ -726,7 +741,7 @@ async function lessonPage(context, backend, lesson) {
     clock(`figure ${i}: orbit`);
     const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
     assert.ok(moved > 0, `figure ${i}: no control was found to move`);
-    await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png` });
+    await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png`, caret: 'initial' });
     clock(`figure ${i}: every control`);
   }
   // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
