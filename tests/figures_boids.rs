@@ -1324,3 +1324,59 @@ fn the_mean_speed_lies_within_the_speed_limits_the_note_states() {
     f.set_count(500.0).unwrap();
     assert!(within(&f), "a new flock: mean {}", mean(&f));
 }
+
+/// At the page's camera (lessons/12-boids/lesson.js: distance 9, yaw 0.5, pitch 0.45, fitted
+/// beside the inset as the viewer does) on the canvases the page gives Figure 2 at 800 × 600 and
+/// 1600 × 1000, every boid of the default flock lies on the canvas, left of the inset's square,
+/// through 20 s of flight: the walls are springs and boids overshoot them, so the view frames
+/// the farthest the flock has flown, not only the box. The box still spans most of the canvas's
+/// height, and the camera moves only a few times (the reach grows in half metres).
+#[test]
+fn the_main_view_keeps_the_overshooting_flock_in_view() {
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::draw::inset::inset_rect;
+    for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+        let left_of = inset_rect(size).min.x;
+        let mut f = FlockFigure::new();
+        let b = f.params().bounds;
+        let mut cameras = Vec::new();
+        for k in 0..=1200 {
+            f.advance_to(k as f32 / 60.0).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            let mut camera = OrbitCamera::from_view([0.0, 0.0, 0.0, 9.0, 0.5, 0.45]);
+            assert!(camera.fit_left_of(&frame.fit_points(), size, left_of, FIT_PAD_PX));
+            if cameras.last() != Some(&camera) {
+                cameras.push(camera);
+            }
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+            for &p in &f.flock().positions {
+                let c = at(p);
+                assert!(
+                    c.cmpge(Vec2::ZERO).all() && c.x <= left_of && c.y <= size.y,
+                    "on {size} at step {k}: the boid at {p} lands at {c}"
+                );
+            }
+            // The box's corners, from its top to its bottom on the canvas.
+            let ys: Vec<f32> = (0..8)
+                .map(|i| {
+                    let s = Vec3::new(
+                        if i & 1 == 0 { -1.0 } else { 1.0 },
+                        if i & 2 == 0 { -1.0 } else { 1.0 },
+                        if i & 4 == 0 { -1.0 } else { 1.0 },
+                    );
+                    at(s * b).y
+                })
+                .collect();
+            let span = ys.iter().copied().fold(f32::MIN, f32::max)
+                - ys.iter().copied().fold(f32::MAX, f32::min);
+            assert!(span > 0.35 * size.y, "on {size} at step {k}: the box spans {span} px");
+        }
+        // Each move frames half a metre more (the inset's reach); the flock stops reaching
+        // farther within seconds.
+        assert!(cameras.len() <= 12, "on {size} the camera moves {} times", cameras.len());
+    }
+}
+

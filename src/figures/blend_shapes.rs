@@ -88,7 +88,7 @@ impl FaceFigure {
             mesh.colors = face.colors.clone();
             mesh
         };
-        let arrow_vertices = arrow_vertices(&face);
+        let arrow_vertices = arrow_vertices(&face, DELTA_STRIDE);
         Self {
             differential: blank(),
             full: blank(),
@@ -547,14 +547,24 @@ const ARROW_HEAD_M: f32 = 0.08;
 /// A target moves a vertex at least this far (metres) for it to carry an arrow.
 const DELTA_MIN: f32 = 0.02;
 
-/// The vertices that carry delta arrows: every [`DELTA_STRIDE`]-th one along and across the
-/// sphere's rings that some target moves at least [`DELTA_MIN`].
-fn arrow_vertices(face: &Face) -> Vec<usize> {
+/// Figure 1 samples one in this many vertices, along each ring and across rings, for its arrows.
+const TARGET_STRIDE: usize = 3;
+/// A target's arrows in Figure 1 sit on the sampled vertices it moves at least this share of its
+/// farthest move: where it acts most, each arrow long enough on the canvas to show its direction
+/// (the vertices it barely moves would give dots).
+pub const TARGET_ARROW_SHARE: f32 = 0.5;
+/// Figure 1 draws each delta arrow this many times as long as the offset `w dₖ` it shows: its
+/// five heads share a canvas, where a 10 cm offset drawn to scale is a dot a few pixels long.
+pub const TARGET_ARROW_SCALE: f32 = 2.0;
+
+/// The vertices that carry delta arrows: every `stride`-th one along and across the sphere's
+/// rings that some target moves at least [`DELTA_MIN`].
+fn arrow_vertices(face: &Face, stride: usize) -> Vec<usize> {
     let segments = crate::blend_shapes::FACE_SEGMENTS as usize;
     (1..face.mesh.positions.len().saturating_sub(1))
         .filter(|&v| {
             let (ring, segment) = ((v - 1) / segments, (v - 1) % segments);
-            ring % DELTA_STRIDE == 0 && segment % DELTA_STRIDE == 0
+            ring % stride == 0 && segment % stride == 0
         })
         .filter(|&v| {
             face.targets
@@ -603,16 +613,16 @@ pub const TARGETS_ROW: f32 = 1.35;
 pub const MOVED_MIN: f32 = 0.001;
 
 /// Figure 1: the base head `b₀` and each target `bₖ = b₀ + dₖ` on its own, five heads in a row,
-/// every target shown at one weight `w` (1: the target as sculpted), with arrows along `w dₖ` on
-/// the vertices it moves.
+/// every target shown at one weight `w` (1: the target as sculpted), with arrows along `w dₖ`
+/// (drawn [`TARGET_ARROW_SCALE`] times as long) on the vertices it moves most.
 pub struct TargetsFigure {
     face: Face,
     weight: f32,
     show_deltas: bool,
     /// The base, then each target at `weight`, with the face's paint.
     pub heads: Vec<SkinnedMesh>,
-    /// Per target: the vertices that carry an arrow (every [`DELTA_STRIDE`]-th that it moves at
-    /// least [`DELTA_MIN`]).
+    /// Per target: the vertices that carry an arrow (every [`TARGET_STRIDE`]-th that it moves at
+    /// least [`TARGET_ARROW_SHARE`] of its farthest).
     arrows: Vec<Vec<usize>>,
     /// The weight the target heads were last blended at.
     blended: Option<f32>,
@@ -641,15 +651,17 @@ impl TargetsFigure {
                 mesh
             })
             .collect();
-        let sampled = arrow_vertices(&face);
+        let sampled = arrow_vertices(&face, TARGET_STRIDE);
         let arrows = face
             .targets
             .iter()
             .map(|t| {
+                let moved = |v: usize| (t[v] - face.mesh.positions[v]).length();
+                let farthest = (0..n).map(moved).fold(0.0, f32::max);
                 sampled
                     .iter()
                     .copied()
-                    .filter(|&v| (t[v] - face.mesh.positions[v]).length() >= DELTA_MIN)
+                    .filter(|&v| moved(v) >= TARGET_ARROW_SHARE * farthest)
                     .collect()
             })
             .collect();
@@ -783,12 +795,16 @@ impl TargetsFigure {
             } else {
                 format!("b{} {}", subscript(i), self.face.names[i - 1])
             };
-            frame.label(at - self.on_view_plane(0.55, 1.25), name, palette::DARK);
+            // The top row's names stand above its heads, clear of the open jaw's arrows; the
+            // bottom row's below.
+            let under = if i < 3 { -1.2 } else { 1.25 };
+            frame.label(at - self.on_view_plane(0.55, under), name, palette::DARK);
             if i > 0 && self.show_deltas {
                 for &v in &self.arrows[i - 1] {
                     let lift = ARROW_LIFT * normals[v];
                     let from = model.transform_point3(base[v] + lift);
-                    let to = model.transform_point3(self.heads[i].positions[v] + lift);
+                    let offset = self.heads[i].positions[v] - base[v];
+                    let to = model.transform_point3(base[v] + lift + TARGET_ARROW_SCALE * offset);
                     frame.arrow_on_top(from, to, palette::BLUE, ARROW_HEAD_M);
                 }
             }
@@ -797,7 +813,7 @@ impl TargetsFigure {
         let (x, bottom, top) = (
             TARGETS_SPACING + HEAD_RADIUS,
             -TARGETS_ROW - 1.45,
-            TARGETS_ROW + 1.1,
+            TARGETS_ROW + 1.4,
         );
         for (x, y) in [(-x, bottom), (x, bottom), (-x, top), (x, top)] {
             frame.keep_in_view.push(self.on_view_plane(x, y));

@@ -884,11 +884,12 @@ impl FlockFigure {
         for (a, c) in box_edges(-b, b) {
             frame.wide_line(a, c, palette::GREY, 1.5);
         }
-        // The box stays in view at both page sizes (boids overshoot its walls a little).
-        frame.keep_box_in_view(-b, b);
         // The flock from above, where its spread along the main view's depth can be read, out
-        // to where a boid's overshoot past the walls can reach.
+        // to where a boid's overshoot past the walls can reach; the main view frames the same
+        // reach (the box and every boid so far, growing in half metres), so no boid that
+        // overshoots a wall leaves the canvas.
         let reach = self.inset_half(b);
+        frame.keep_box_in_view(-reach, reach);
         frame.inset(InsetView::Top, "from above", -reach, reach);
         if self.obstacle {
             for o in &self.params.obstacles {
@@ -1012,11 +1013,12 @@ impl FlockFigure {
             let edge: Vec<Vec3> = (0..=8).map(|k| a.lerp(c, k as f32 / 8.0)).collect();
             frame.wide_polyline(&edge, palette::GREY, 1.5);
         }
-        // The box stays in view at both page sizes (boids overshoot its walls a little).
-        frame.keep_box_in_view(-b, b);
         // The flock from above, where its spread along the main view's depth can be read, out
-        // to where a boid's overshoot past the walls can reach.
+        // to where a boid's overshoot past the walls can reach; the main view frames the same
+        // reach (the box and every boid so far, growing in half metres), so no boid that
+        // overshoots a wall leaves the canvas.
         let reach = self.inset_half(b);
+        frame.keep_box_in_view(-reach, reach);
         frame.inset(InsetView::Top, "from above", -reach, reach);
         if self.obstacle {
             for o in &self.params.obstacles {
