@@ -75,7 +75,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     gui.onChange(apply);
     apply();
 
-    // Dragging the particle with the mouse (the canvas's orbit controls get every other press).
+    // Dragging the particle with the mouse (the canvas's controls pan the flat pool on every other press).
     dragInCanvas(document.querySelector('#fig-density .stage canvas'), {
       grab: (...at) => scene.hitsProbe(...at),
       hover: (...at) => scene.hitsProbe(...at),

@@ -1134,6 +1134,9 @@ impl LagrangeScene {
     }
 
     pub fn draw(&self, frame: &mut Frame) {
+        // A graph in the plane z = 0, seen straight on: a drag pans it rather than turning it
+        // edge-on.
+        frame.flat = true;
         self.draw_axes(frame);
         for piece in &self.base {
             frame.polyline(piece, LAGRANGE_BASE);

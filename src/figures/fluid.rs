@@ -558,6 +558,9 @@ impl DensityFigure {
     /// (thicker for larger weights),
     /// the pressure force on it and PBF's move. Returns the note.
     pub fn draw(&self, frame: &mut Frame) -> String {
+        // A 2D pool in the plane z = 0, seen square-on: a drag pans it rather than turning it
+        // edge-on (the dragged particle has its own drag).
+        frame.flat = true;
         let f = &self.fluid;
         let rho0 = f.params.rest_density;
         let h = self.h();

@@ -842,8 +842,9 @@ impl IkFigure {
     /// dot and line first, else one that only does not cover them. The chains, side d, the circle of
     /// middle joints, the pole's line, the hinges' arcs and the grey square of their plane sweep
     /// round the roots and the targets as the target and the pole move. Where no place is clear it keeps the preferred
-    /// one. The anchor stays at the preferred place and the others are screen offsets from it
-    /// ([`crate::draw::Label::offset_px`]), so the place chosen never moves the camera's fit.
+    /// one. The anchor stays put (at the preferred place, or, once the figure has a view, at
+    /// `at` on the segment a label measures) and every place is a screen offset from it ([`crate::draw::Label::offset_px`]), so
+    /// the place chosen never moves the camera's fit.
     fn place_label(&self, frame: &mut Frame, label: PlacedLabel) {
         let anchor_at = |dir: Vec3, r: f32| {
             let a = label.at + dir * r;
@@ -851,8 +852,9 @@ impl IkFigure {
         };
         // Every label's anchor joins the points the camera fits: a place chosen for the last
         // frame's view must not move the next frame's fit.
+        let first_at = anchor_at(label.out, label.first_m);
         let mut placed = crate::draw::Label {
-            anchor: anchor_at(label.out, label.first_m),
+            anchor: first_at,
             text: label.text,
             color: label.color,
             left: label.out.x < 0.0,
@@ -864,12 +866,20 @@ impl IkFigure {
             frame.labels.push(placed);
             return;
         };
+        // A label that measures a segment is anchored on it, so that the page's leader line to
+        // a label moved off it starts on the segment; its preferred place is an offset.
+        if label.line.is_some() {
+            placed.anchor = label.at;
+        }
         let Some(home) = project_to_canvas(view_proj, size, placed.anchor) else {
             frame.labels.push(placed);
             return;
         };
+        if let Some(first) = project_to_canvas(view_proj, size, first_at) {
+            placed.offset_px = first - home;
+        }
         let base = label.out.y.atan2(label.out.x);
-        let mut places = vec![(placed.anchor, placed.left)];
+        let mut places = vec![(first_at, placed.left)];
         // Nearest the preferred direction first, a ring at a time, each place reading away
         // from the point first; a label that reads best on its own side of the point tries
         // that side (within 45°) at every ring before it turns further.
@@ -1121,8 +1131,9 @@ struct PlacedLabel {
     first_m: f32,
     /// The lowest the anchor may go, world y in metres.
     low_y: f32,
-    /// The segment the label measures, if any (side d, a miss): its first places lie just
-    /// beside it on screen, and its last ones round points along it.
+    /// The segment the label measures, if any (side d, a miss), with `at` on it: the label is
+    /// anchored at `at`, its first places lie just beside the segment on screen, and its last
+    /// ones round points along it.
     line: Option<[Vec3; 2]>,
     /// A shorter text it takes just beside `line` where the full text fits no clear place there
     /// (side d's letter alone: the note gives its length).

@@ -384,3 +384,110 @@ fn lesson_07_hinge_figure_labels_keep_off_the_arcs_at_every_segment_count() {
     assert_none_failed(&failures);
 }
 
+
+#[test]
+fn lesson_07_miss_labels_sit_by_their_line_or_lead_to_it() {
+    // Figures 1 to 3 at their page cameras, both canvases, as on the page (placed for the view of
+    // the frame before, then laid out with the page's leader rule, draw::layout::leader): each
+    // solver's miss ("143.2 mm short") is named by a label whose box comes within
+    // draw::layout::LEADER_PX of its dashed line from the chain's end to the target, or whose
+    // leader line starts on that line. A label anchored off the line would lead to empty space.
+    use inbetween::draw::layout::{leader, LEADER_PX};
+    use inbetween::figures::ik::{IkFigure, ROOTS_X};
+    use inbetween::figures::palette;
+    // Each chain's colour, as the caption names them: two-joint IK, CCD and FABRIK.
+    let colors = [palette::BLUE, palette::ORANGE, palette::TEAL].map(palette::css);
+    let figures = [
+        ([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], 2.0, "none"),
+        ([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], 3.0, "none"),
+        ([0.25, 0.45, 0.0, 4.3, 0.5, 0.3], 2.0, "hinges (bend one way)"),
+        ([0.25, 0.45, 0.0, 4.3, 0.5, 0.3], 2.0, "cones (40°)"),
+    ];
+    let (mut failures, mut misses, mut led) = (Vec::new(), 0, 0);
+    for (view, segments, limits) in figures {
+        for x in [-1.5, -0.8, 0.0, 0.55, 1.5] {
+            for y in [-1.5, -0.5, 0.65, 1.5] {
+                for z in [-0.8, 0.15, 0.8] {
+                    let target = Vec3::new(x, y, z);
+                    let mut scene = IkFigure::new();
+                    scene.set_segments(segments).unwrap();
+                    scene.set_limits(limits).unwrap();
+                    scene.set_target(target).unwrap();
+                    for size in CANVASES {
+                        let (frame, camera) = drawn_for_view(
+                            &mut scene,
+                            view,
+                            size,
+                            |s, f| {
+                                s.draw(f).unwrap();
+                            },
+                            |s, c, size| s.set_view(c, size.x, size.y),
+                        );
+                        let view_proj = camera.projection(size.x / size.y) * camera.view();
+                        let placed = layout(&frame, &camera, size);
+                        let results = scene.results().unwrap();
+                        for k in scene.shown_solvers() {
+                            let Some(r) = results[k].filter(|r| !r.reached) else {
+                                continue;
+                            };
+                            let end = *scene.chain(k).unwrap().last().unwrap();
+                            let goal = target + Vec3::new(ROOTS_X[k], 0.0, 0.0);
+                            let (Some(a), Some(b)) = (
+                                project_to_canvas(view_proj, size, end),
+                                project_to_canvas(view_proj, size, goal),
+                            ) else {
+                                continue;
+                            };
+                            let text = format!("{:.1} mm short", r.error * 1000.0);
+                            let Some((l, bx, p)) = placed
+                                .iter()
+                                .find(|(l, _, p)| {
+                                    l.text == text && l.css_color == colors[k] && p.shown
+                                })
+                            else {
+                                continue;
+                            };
+                            misses += 1;
+                            let rect = Rect {
+                                min: p.top_left,
+                                size: bx.size,
+                            };
+                            let on_line = |q: Vec2| {
+                                let t = ((q - a).dot(b - a) / (b - a).length_squared().max(1e-6))
+                                    .clamp(0.0, 1.0);
+                                a.lerp(b, t).distance(q)
+                            };
+                            let gap = (0..=64)
+                                .map(|i| {
+                                    let q = a.lerp(b, i as f32 / 64.0);
+                                    rect.nearest(q).distance(q)
+                                })
+                                .fold(f32::MAX, f32::min);
+                            let name = format!(
+                                "07 {segments} segments, {limits}, target {target} on {size}: \
+                                 {text:?}"
+                            );
+                            match leader(rect, l.dot_px, p.leader_to.is_some()) {
+                                Some(_) => {
+                                    led += 1;
+                                    if on_line(l.dot_px) > 1.0 {
+                                        failures.push(format!(
+                                            "{name}: its leader starts {} px off its line",
+                                            on_line(l.dot_px)
+                                        ));
+                                    }
+                                }
+                                None if gap > LEADER_PX + 0.5 => failures.push(format!(
+                                    "{name}: {gap} px from its line, with no leader"
+                                )),
+                                None => {}
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(misses > 100 && led > 0, "{misses} misses, {led} with a leader");
+    assert_none_failed(&failures);
+}
