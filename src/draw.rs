@@ -768,7 +768,8 @@ impl Frame {
 /// Whether the segment `a`–`b` passes inside the open box from `lo` to `hi` (a touch along an
 /// edge or at a corner does not count): the segment clipped to each axis's slab in turn
 /// (Liang–Barsky), so a box that lies between any two points of a long line still meets it.
-fn segment_enters(a: glam::Vec2, b: glam::Vec2, lo: glam::Vec2, hi: glam::Vec2) -> bool {
+/// Public for the label tests, which check placed labels against lines the same way.
+pub fn segment_enters(a: glam::Vec2, b: glam::Vec2, lo: glam::Vec2, hi: glam::Vec2) -> bool {
     let d = b - a;
     let (mut t0, mut t1) = (0.0f32, 1.0f32);
     for i in 0..2 {

@@ -7,6 +7,8 @@ use inbetween::curves::{hermite_basis, Interpolation};
 use inbetween::exercises::run::{direct, Failure};
 use inbetween::figures::curves::*;
 use inbetween::figures::Frame;
+#[path = "support/flat.rs"]
+mod flat;
 
 fn scene(scheme: &str) -> KeyframesScene {
     let mut s = KeyframesScene::new();
@@ -467,40 +469,13 @@ fn the_lagrange_graph_stays_on_the_canvas_when_orbited() {
 /// camera and its time axis as wide on the canvas, where an orbit would squeeze it.
 #[test]
 fn the_lagrange_graph_pans_on_a_drag_and_keeps_its_width() {
-    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     let s = LagrangeScene::new();
     let mut frame = Frame::default();
     s.draw(&mut frame);
-    assert!(frame.flat, "the Lagrange graph is flat");
-    // The page's camera (lessons/02-keyframes/lesson.js), fitted on its canvas.
-    let size = Vec2::new(650.0, 420.0);
-    let mut camera = OrbitCamera::from_view([0.15, 1.4, 0.0, 6.5, 0.0, 0.0]);
-    camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
-    // The time axis from the first key to the last (10 keys at the start).
+    // The page's camera (lessons/02-keyframes/lesson.js); the time axis from the first key to
+    // the last (10 keys at the start).
     let axis = [s.place(0.0, 0.0), s.place(9.0, 0.0)];
-    let width = |c: &OrbitCamera| {
-        let vp = c.projection(size.x / size.y) * c.view();
-        let at = |p: Vec3| project_to_canvas(vp, size, p).unwrap();
-        at(axis[1]).distance(at(axis[0]))
-    };
-    let before = width(&camera);
-    // The page test's drag: a fifth of the canvas right and a tenth down.
-    let (dx, dy) = (0.2 * size.x, 0.1 * size.y);
-    let mut panned = camera;
-    assert!(panned.drag(dx, dy, size.y, frame.flat));
-    assert_eq!(
-        (panned.yaw_rad, panned.pitch_rad),
-        (camera.yaw_rad, camera.pitch_rad)
-    );
-    assert_ne!(panned.target, camera.target, "the drag moves the view");
-    assert!((width(&panned) - before).abs() < 0.5, "{before} → {}", width(&panned));
-    let mut orbited = camera;
-    assert!(!orbited.drag(dx, dy, size.y, false));
-    assert!(
-        width(&orbited) < 0.9 * before,
-        "an orbit narrows it: {before} → {}",
-        width(&orbited)
-    );
+    flat::assert_drag_pans(&frame, [0.15, 1.4, 0.0, 6.5, 0.0, 0.0], Vec2::new(650.0, 420.0), axis);
 }
 
 #[test]

@@ -3,6 +3,8 @@
 
 use inbetween::draw::Frame;
 use inbetween::figures::fluid::{DensityFigure, KernelsFigure};
+#[path = "support/flat.rs"]
+mod flat;
 
 #[test]
 fn the_kernel_plots_start_at_one_and_reach_zero_at_h() {
@@ -941,31 +943,14 @@ fn the_pool_is_flat_and_pans_on_a_drag() {
     // particle pans it, keeping the box's floor as wide on the canvas, where an orbit would
     // squeeze the slab. Figure 3's tanks turn (it adds a view from the front when seen edge-on).
     use glam::{Vec2, Vec3};
-    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     use inbetween::fluid::box_size;
     use inbetween::fluid::kernels::Dim;
     let mut frame = Frame::default();
     DensityFigure::new().draw(&mut frame);
-    assert!(frame.flat, "Figure 2 is flat");
     let mut dam = Frame::default();
     DamBreakFigure::new().draw(&mut dam);
     assert!(!dam.flat, "Figure 3 turns");
-    let size = Vec2::new(650.0, 420.0);
-    let mut camera = OrbitCamera::from_view([0.8, 0.5, 0.0, 2.6, 0.0, 0.0]);
-    camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+    // The page's camera (lessons/15-fluids/lesson.js); the box's floor.
     let floor = [Vec3::ZERO, Vec3::new(box_size(Dim::Two).x, 0.0, 0.0)];
-    let width = |c: &OrbitCamera| {
-        let vp = c.projection(size.x / size.y) * c.view();
-        let at = |p: Vec3| project_to_canvas(vp, size, p).unwrap();
-        at(floor[1]).distance(at(floor[0]))
-    };
-    let before = width(&camera);
-    let (dx, dy) = (0.2 * size.x, 0.1 * size.y);
-    let mut panned = camera;
-    assert!(panned.drag(dx, dy, size.y, frame.flat));
-    assert_eq!((panned.yaw_rad, panned.pitch_rad), (camera.yaw_rad, camera.pitch_rad));
-    assert!((width(&panned) - before).abs() < 0.5, "{before} → {}", width(&panned));
-    let mut orbited = camera;
-    orbited.drag(dx, dy, size.y, false);
-    assert!(width(&orbited) < 0.9 * before, "an orbit narrows it: {before} → {}", width(&orbited));
+    flat::assert_drag_pans(&frame, [0.8, 0.5, 0.0, 2.6, 0.0, 0.0], Vec2::new(650.0, 420.0), floor);
 }

@@ -124,20 +124,7 @@ fn assert_clear_of(
 /// Whether the segment `a`–`b` on the canvas passes inside the open box `rect`: every point of
 /// it, not samples, so a box between two samples of a long line is still caught.
 fn enters(a: Vec2, b: Vec2, rect: Rect) -> bool {
-    let (lo, hi, d) = (rect.min, rect.max(), b - a);
-    let (mut t0, mut t1) = (0.0f32, 1.0f32);
-    for i in 0..2 {
-        if d[i] == 0.0 {
-            if a[i] <= lo[i] || a[i] >= hi[i] {
-                return false;
-            }
-        } else {
-            let (u, v) = ((lo[i] - a[i]) / d[i], (hi[i] - a[i]) / d[i]);
-            t0 = t0.max(u.min(v));
-            t1 = t1.min(u.max(v));
-        }
-    }
-    t0 < t1
+    inbetween::draw::segment_enters(a, b, rect.min, rect.max())
 }
 
 /// The camera a page's `setCamera` places, fitted to what the frame declares (as the viewer does:
