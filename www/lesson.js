@@ -798,12 +798,19 @@ export class Plot {
         ...(element.closest('.figure')?.id ? { sync: { key: `plots-${element.closest('.figure').id}`, setSeries: false } } : {}),
         points: { size: 7 },
       },
-      hooks: { draw: [cursorLine], setCursor: [(u) => this.showReadout(u)] },
+      // After each draw, how many numbers the y axis shows (the page test asks for two or more).
+      hooks: {
+        draw: [cursorLine, (u) => { element.dataset.yTicks = u.axes[1]._values?.filter((v) => v !== '' && v != null).length ?? 0; }],
+        setCursor: [(u) => this.showReadout(u)],
+      },
     }, [[0], ...series.map(() => [0])], element);
     // Each legend swatch is a stretch of its curve, 28 px long: the series' colour, its width (3
-    // to 7 px, so a thin line's colour still reads) and its dash pattern.
+    // to 7 px, so a thin line's colour still reads) and its dash pattern. A colour may be a
+    // function (a stroke that changes with the figure's state): the swatch takes its colour now,
+    // and the page repaints it (`marker.style.background`) when the state changes.
     element.querySelectorAll('.u-legend .u-marker').forEach((marker, i) => {
-      const color = colors[i % colors.length];
+      const stroke = colors[i % colors.length];
+      const color = typeof stroke === 'function' ? stroke() : stroke;
       const dash = dashes[i];
       Object.assign(marker.style, {
         width: '28px',
@@ -861,7 +868,7 @@ export class Plot {
     const span = (text, color) => {
       const el = document.createElement('span');
       el.textContent = text;
-      if (color) el.style.color = color;
+      if (color) el.style.color = typeof color === 'function' ? color() : color;
       return el;
     };
     const parts = [span(`${this.xLabel} = ${fmt(x)}`)];
@@ -909,7 +916,10 @@ function logTicks(u, splits, axisIdx) {
     ? Math.max(0, ...labels.map((l) => (l ? textWidth(l.text, '11px system-ui') : 0))) + 8
     : 16;
   const shown = Math.log10(2) * decadePx >= room ? [1, 2, 5] : [1];
-  const every = Math.ceil(room / Math.max(decadePx, 1));
+  // On x (no filter) every few powers where decades are short; on y uPlot's filter has already
+  // kept every few powers, counted from the top, so each power it passes gets its label
+  // (counting again from 1 could keep none of them, leaving the axis without a number).
+  const every = axis.side % 2 === 0 ? Math.ceil(room / Math.max(decadePx, 1)) : 1;
   return labels.map((l) => (l && shown.includes(l.m) && l.k % every === 0 ? l.text : ''));
 }
 

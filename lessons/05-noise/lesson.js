@@ -165,15 +165,15 @@ if (v3) {
     // Octaves above N come back as NaN: null leaves them out of the plot.
     const cols = columns(scene.sampleOctaves(4001), 12).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
     plot.setData([cols[0], cols[11], ...cols.slice(1, 11)]);
-    // Octaves above N are not in the sum: grey them out in the legend too.
-    // The legend's markers keep the colours they were built with: grey them as the lines.
+    // Octaves above N are not in the sum: hidden, which dims their legend rows. An octave
+    // finer than the mesh is grey: its swatch is repainted grey as its line.
     const rows = plot.plot.root.querySelectorAll('.u-legend .u-series');
     const skip = rows.length - (plot.plot.series.length - 1);
     for (let k = 0; k < names.length; k++) {
       const show = k <= p.n;
       if (plot.plot.series[k + 2].show !== show) plot.plot.setSeries(k + 2, { show });
       const marker = rows[k + 1 + skip]?.querySelector('.u-marker');
-      if (marker) marker.style.borderColor = k > lastResolved ? '#c8c8c8' : octaveColors[k];
+      if (marker) marker.style.background = k > lastResolved ? '#c8c8c8' : octaveColors[k];
     }
   };
   gui.onChange(apply);

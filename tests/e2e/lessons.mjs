@@ -78,6 +78,15 @@ const SWEEP_RENDER_SCALE = Number(process.env.E2E_RENDER_SCALE ?? 0.5);
  * parenthesis. uPlot draws the labels on its canvas; the shell's Plot copies them to the plot
  * element's data-x-label and data-y-label, and a .plot element that no Plot filled has neither.
  */
+/** After the sweep moved a figure's controls, each of its drawn plots shows at least two numbers
+ * on its y axis (a log axis over many decades once showed none). */
+async function plotsShowNumbers(figure, i) {
+  const ticks = await figure.evaluate((f) => [...f.querySelectorAll('.plot[data-y-ticks]')]
+    .map((p) => [p.dataset.plot, Number(p.dataset.yTicks)]));
+  const bare = ticks.filter(([, n]) => n < 2);
+  assert.deepEqual(bare, [], `figure ${i}: these plots show fewer than two numbers on their y axis`);
+}
+
 async function plotsNameTheirUnits(page) {
   const plots = await page.evaluate(() => [...document.querySelectorAll('.plot')]
     .map((p) => ({ id: p.id, title: p.dataset.plot, x: p.dataset.xLabel, y: p.dataset.yLabel })));
@@ -86,6 +95,16 @@ async function plotsNameTheirUnits(page) {
     .filter((axis) => !named(p[axis]))
     .map((axis) => `${p.id || p.title || '(a plot)'}: ${axis} label ${JSON.stringify(p[axis] ?? null)}`));
   assert.deepEqual(unnamed, [], 'every plot labels both axes with a quantity and its unit in parentheses');
+  // Every legend row shows its curve's colour in its swatch (a stroke given as a function once
+  // left it blank, so a curve could not be matched to its name).
+  const blank = await page.evaluate(() => [...document.querySelectorAll('.plot .u-legend .u-series')]
+    .filter((row) => row.querySelector('.u-marker'))
+    .filter((row) => {
+      const m = getComputedStyle(row.querySelector('.u-marker'));
+      return m.backgroundImage === 'none' && /^rgba\(\d+, \d+, \d+, 0\)$|^transparent$/.test(m.backgroundColor);
+    })
+    .map((row) => `${row.closest('.plot').id || row.closest('.plot').dataset.plot}: ${row.textContent.trim()}`));
+  assert.deepEqual(blank, [], 'every legend swatch shows its curve\'s colour');
 }
 
 async function pauseTimelines(page) {
@@ -720,6 +739,7 @@ async function lessonPage(context, backend, lesson) {
       const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
       assert.ok(moved > 0, `figure ${i}: no control was found to move`);
       await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png`, caret: 'initial' });
+      await plotsShowNumbers(figure, i);
       clock(`figure ${i} (${kind}): every control`);
       continue;
     }
@@ -742,6 +762,7 @@ async function lessonPage(context, backend, lesson) {
     const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
     assert.ok(moved > 0, `figure ${i}: no control was found to move`);
     await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png`, caret: 'initial' });
+    await plotsShowNumbers(figure, i);
     clock(`figure ${i}: every control`);
   }
   // The exercise switch: on the untouched stubs, the page must say the exercise is not done.
