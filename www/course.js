@@ -373,6 +373,18 @@ function parseAnswer(text) {
   return Number(cleaned);
 }
 
+/** Typesets the formulas in `element` (KaTeX's auto-render, where the page loaded it): \( … \)
+ * inline, $$ … $$ displayed. */
+export function typeset(element) {
+  window.renderMathInElement?.(element, {
+    delimiters: [
+      { left: '$$', right: '$$', display: true },
+      { left: '\\(', right: '\\)', display: false },
+    ],
+    throwOnError: false,
+  });
+}
+
 /**
  * The lesson's quiz (`quiz.json` beside the page), as the last section before the source list:
  * multiple choice (each choice explains itself once picked) and numeric questions whose answer
@@ -411,10 +423,17 @@ export async function quiz(id, quizAnswer, controllers) {
     const feedback = document.createElement('p');
     feedback.className = 'feedback';
     feedback.setAttribute('role', 'status');
+    // The feedback's text as written (its formulas typeset): what a later sentence is added to.
+    let said = '';
+    const say = (text) => {
+      said = text;
+      feedback.textContent = text;
+      typeset(feedback);
+    };
     const verdict = (correct, textOut) => {
       box.dataset.answered = correct ? 'right' : 'wrong';
       feedback.className = `feedback ${correct ? 'right' : 'wrong'}`;
-      feedback.textContent = textOut;
+      say(textOut);
     };
     if (q.type === 'choice') {
       const list = document.createElement('div');
@@ -466,7 +485,7 @@ export async function quiz(id, quizAnswer, controllers) {
         if (!Number.isFinite(given)) {
           box.dataset.answered = 'unreadable';
           feedback.className = 'feedback wrong';
-          feedback.textContent = `“${text}” is not a number I can read; type digits, e.g. 0.25.`;
+          say(`“${text}” is not a number I can read; type digits, e.g. 0.25.`);
           return;
         }
         let value;
@@ -474,7 +493,7 @@ export async function quiz(id, quizAnswer, controllers) {
           value = expected();
         } catch (e) {
           feedback.className = 'feedback wrong';
-          feedback.textContent = `This question's answer could not be computed: ${e.message ?? e}`;
+          say(`This question's answer could not be computed: ${e.message ?? e}`);
           return;
         }
         const correct = Math.abs(given - value) <= q.tolerance;
@@ -489,9 +508,9 @@ export async function quiz(id, quizAnswer, controllers) {
       reveal.addEventListener('click', () => {
         reveal.hidden = true;
         try {
-          feedback.textContent += ` The core computes ${withUnit(expected(), q.unit)}. ${q.why}`;
+          say(`${said} The core computes ${withUnit(expected(), q.unit)}. ${q.why}`);
         } catch (e) {
-          feedback.textContent += ` This question's answer could not be computed: ${e.message ?? e}`;
+          say(`${said} This question's answer could not be computed: ${e.message ?? e}`);
         }
       });
       if (saved[q.id]) {
@@ -521,6 +540,7 @@ export async function quiz(id, quizAnswer, controllers) {
   });
   if (source) source.before(section);
   else main.append(section);
+  typeset(section);
   showProgressNotes(section);
   return section;
 }

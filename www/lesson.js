@@ -8,7 +8,7 @@ import GUI, { NumberController } from '../vendor/lil-gui/lil-gui.esm.min.js';
 // Under `scripts/serve`: reload after a rebuild, show a failed build's errors (idle otherwise).
 import './devloop.js';
 // The course around the page: navigation, outline, "Check my exercises", the quiz.
-import { lessonId, setUpNavigation, addOutline, gradePanel, quiz, scrollToHash, showProgressNotes } from './course.js';
+import { lessonId, setUpNavigation, addOutline, gradePanel, quiz, scrollToHash, showProgressNotes, typeset } from './course.js';
 
 export { GUI };
 
@@ -154,18 +154,6 @@ function requestedRenderScale() {
   return scale >= 0.25 && scale <= 1 ? scale : 1;
 }
 
-function renderMath() {
-  if (window.renderMathInElement) {
-    window.renderMathInElement(document.body, {
-      delimiters: [
-        { left: '$$', right: '$$', display: true },
-        { left: '\\(', right: '\\)', display: false },
-      ],
-      throwOnError: false,
-    });
-  }
-}
-
 async function buildSourceView() {
   const list = document.getElementById('source-list');
   if (!list) return;
@@ -285,7 +273,7 @@ async function loadModules() {
  */
 export async function startLesson() {
   installErrorHandlers();
-  renderMath();
+  typeset(document.body);
   buildSourceView().catch(showError);
   const navigation = fetch('../catalog.json')
     .then((r) => (r.ok ? r.json() : []))
