@@ -79,7 +79,7 @@ const SWEEP_RENDER_SCALE = Number(process.env.E2E_RENDER_SCALE ?? 0.5);
  * element's data-x-label and data-y-label, and a .plot element that no Plot filled has neither.
  */
 /** After the sweep moved a figure's controls, each of its drawn plots shows at least two numbers
- * on its y axis (a log axis over many decades once showed none). */
+ * on its y axis (a log axis over many decades must still label some of its powers). */
 async function plotsShowNumbers(figure, i) {
   const ticks = await figure.evaluate((f) => [...f.querySelectorAll('.plot[data-y-ticks]')]
     .map((p) => [p.dataset.plot, Number(p.dataset.yTicks)]));
@@ -95,8 +95,8 @@ async function plotsNameTheirUnits(page) {
     .filter((axis) => !named(p[axis]))
     .map((axis) => `${p.id || p.title || '(a plot)'}: ${axis} label ${JSON.stringify(p[axis] ?? null)}`));
   assert.deepEqual(unnamed, [], 'every plot labels both axes with a quantity and its unit in parentheses');
-  // Every legend row shows its curve's colour in its swatch (a stroke given as a function once
-  // left it blank, so a curve could not be matched to its name).
+  // Every legend row shows its curve's colour in its swatch (a stroke given as a function too),
+  // so that each curve can be matched to its name.
   const blank = await page.evaluate(() => [...document.querySelectorAll('.plot .u-legend .u-series')]
     .filter((row) => row.querySelector('.u-marker'))
     .filter((row) => {

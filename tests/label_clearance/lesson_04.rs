@@ -119,19 +119,7 @@ fn lesson_04_thirds_names_sit_at_their_aeroplanes_and_off_the_paths() {
                     failures.extend(failure_of(|| {
                         assert_shown_clear_by(&name, &frame, &camera, size, &thirds, 2.0)
                     }));
-                    let view_proj = camera.projection(size.x / size.y) * camera.view();
-                    let at = |p: Vec3| project_to_canvas(view_proj, size, p);
-                    // Each aeroplane part's points: a box's corners, edge and face middles and
-                    // centre.
-                    let points = |m: &inbetween::draw::MeshDraw| -> Vec<Vec2> {
-                        (0..27)
-                            .filter_map(|i| {
-                                let c = |k: i32| (k % 3 - 1) as f32;
-                                at(m.model
-                                    .transform_point3(Vec3::new(c(i), c(i / 3), c(i / 9))))
-                            })
-                            .collect()
-                    };
+                    let points = |m: &inbetween::draw::MeshDraw| part_points(m, &camera, size);
                     let parts: Vec<Vec2> = frame.meshes.iter().flat_map(points).collect();
                     let placed = layout(&frame, &camera, size);
                     let a = scene.motion(Method::LerpSlerp, 0.0);
@@ -256,17 +244,7 @@ fn lesson_04_method_names_sit_on_their_moving_aeroplanes() {
                     failures.extend(failure_of(|| {
                         assert_shown_clear_by(&name, &frame, &camera, size, &checked, 2.0)
                     }));
-                    let view_proj = camera.projection(size.x / size.y) * camera.view();
-                    let at = |p: Vec3| project_to_canvas(view_proj, size, p);
-                    let points = |m: &inbetween::draw::MeshDraw| -> Vec<Vec2> {
-                        (0..27)
-                            .filter_map(|i| {
-                                let c = |k: i32| (k % 3 - 1) as f32;
-                                at(m.model
-                                    .transform_point3(Vec3::new(c(i), c(i / 3), c(i / 9))))
-                            })
-                            .collect()
-                    };
+                    let points = |m: &inbetween::draw::MeshDraw| part_points(m, &camera, size);
                     let parts: Vec<Vec2> = frame.meshes.iter().flat_map(points).collect();
                     let placed = layout(&frame, &camera, size);
                     for (&i, &method) in named.iter().zip(&shown) {
@@ -319,4 +297,16 @@ fn lesson_04_method_names_sit_on_their_moving_aeroplanes() {
         failures.len(),
         failures[..failures.len().min(12)].join("\n")
     );
+}
+
+/// An aeroplane part's points on the canvas: its box's corners, edge and face middles and centre.
+fn part_points(m: &inbetween::draw::MeshDraw, camera: &OrbitCamera, size: Vec2) -> Vec<Vec2> {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    (0..27)
+        .filter_map(|i| {
+            let c = |k: i32| (k % 3 - 1) as f32;
+            let corner = Vec3::new(c(i), c(i / 3), c(i / 9));
+            project_to_canvas(view_proj, size, m.model.transform_point3(corner))
+        })
+        .collect()
 }
