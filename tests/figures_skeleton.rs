@@ -602,15 +602,52 @@ fn everything_drawn_stays_inside_the_declared_view() {
             }
         }
     }
-    // Comparing paths, the view closes in on the paths and the shoulder.
-    let mut f = interpolation_figure();
-    let mut frame = Frame::default();
-    f.draw(&mut frame, 0.0).unwrap();
-    let (lo, hi) = f.view_bounds();
-    assert!(hi.y - lo.y < 1.5, "a close view of the arm: {lo}..{hi}");
-    for p in f.trail().iter().chain(f.compare_trail()) {
-        assert!(p.cmpge(lo).all() && p.cmple(hi).all());
+    // Comparing paths (Figure 2 at its start, and the page test's idle forearm with 21 keys,
+    // whose paths are a few centimetres long), the view keeps the whole body down to the floor
+    // (a close view would cut the legs off), and the inset shows the two paths close up: they
+    // reach across most of its box, along at least one of the two axes it shows.
+    use inbetween::draw::inset::InsetView;
+    for (clip, keys, joint, compare) in [
+        ("arm circles", 4.0, "upper_arm.L", "linear (nlerp)"),
+        ("idle", 21.0, "forearm.L", "linear (slerp)"),
+    ] {
+        let mut f = interpolation_figure();
+        f.set_clip(clip).unwrap();
+        f.set_keys_per_cycle(keys).unwrap();
+        f.set_interpolation("cubic").unwrap();
+        f.set_compare(compare).unwrap();
+        f.select(f.skeleton().find(joint).unwrap()).unwrap();
+        let mut frame = Frame::default();
+        f.draw(&mut frame, 0.0).unwrap();
+        let (lo, hi) = f.view_bounds();
+        assert!(lo.y <= 0.0, "{clip}: the floor in view: {lo}..{hi}");
+        let head = f.joint_position(f.skeleton().find("head").unwrap()).unwrap();
+        assert!(head.cmpge(lo).all() && head.cmple(hi).all(), "{clip}: head {head}");
+        let inset = frame.inset.as_ref().expect("an inset of the paths");
+        let paths: Vec<Vec3> = f.trail().iter().chain(f.compare_trail()).copied().collect();
+        let (mut a, mut b) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+        for &p in &paths {
+            assert!(
+                p.cmpge(inset.min).all() && p.cmple(inset.max).all(),
+                "{clip}: {p} outside the inset's box"
+            );
+            (a, b) = (a.min(p), b.max(p));
+        }
+        let shown = match inset.view {
+            InsetView::Top => [0, 2],
+            InsetView::Side => [1, 2],
+            InsetView::Front => [0, 1],
+        };
+        let fill = shown
+            .map(|i| (b[i] - a[i]) / (inset.max[i] - inset.min[i]))
+            .into_iter()
+            .fold(0.0, f32::max);
+        assert!(fill > 0.5, "{clip}: the paths fill {fill} of the inset");
     }
+    // Without compared paths, no inset.
+    let mut frame = Frame::default();
+    SkeletonFigure::new().draw(&mut frame, 0.0).unwrap();
+    assert!(frame.inset.is_none());
 }
 
 #[test]
@@ -822,11 +859,30 @@ fn path_ticks_are_sized_to_their_spacing_on_the_canvas() {
                     assert!(longest < 5.0, "{name}: the thigh's path is short: {apart}");
                 }
                 if clip == "arm circles" {
-                    assert!(longest > 12.0, "{name}: the close view has room: {longest}");
+                    assert!(longest > 8.0, "{name}: the arm's circle has room: {longest}");
                 }
             }
             let expected = if clip == "arm circles" { 2 } else { 1 };
             assert_eq!(paths, expected, "{name}: paths drawn with ticks");
         }
+    }
+}
+
+#[test]
+fn the_crossfade_draws_the_world_axes_without_their_letters() {
+    // Figure 3's blend stands on the world's origin: the x, y and z of the axes at its feet
+    // would lie on its legs and the selected joint's path. Figure 1 keeps them.
+    let letters = |f: &mut SkeletonFigure| {
+        let mut frame = Frame::default();
+        f.draw(&mut frame, 0.3).unwrap();
+        let axis = |l: &&inbetween::draw::Label| ["x", "y", "z"].contains(&l.text.as_str());
+        frame.labels.iter().filter(axis).count()
+    };
+    let mut f = SkeletonFigure::new();
+    assert_eq!(letters(&mut f), 3);
+    for (clip, joint) in [("wave", "upper_arm.R"), ("arm circles", "shin.L")] {
+        f.set_blend(clip, 0.2).unwrap();
+        f.select(f.skeleton().find(joint).unwrap()).unwrap();
+        assert_eq!(letters(&mut f), 0, "{clip}");
     }
 }

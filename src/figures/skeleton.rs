@@ -16,6 +16,7 @@ use super::{
     DEFAULT_RUNNER,
 };
 use crate::camera::{point_on_view_plane, project_to_canvas};
+use crate::draw::inset::InsetView;
 use crate::exercises::run;
 use crate::rotation::angle_between;
 use crate::skeleton::{
@@ -86,6 +87,8 @@ pub struct SkeletonFigure {
     sources: [Vec<Affine3A>; 2],
     /// The box every joint stays in over one cycle, with the current settings.
     bounds: (Vec3, Vec3),
+    /// The box of the two compared paths, which the inset shows close up.
+    paths_box: (Vec3, Vec3),
     /// The camera and canvas size (CSS pixels) of the last frame, which the selected joint's
     /// name is placed for.
     view: Option<(crate::camera::OrbitCamera, Vec2)>,
@@ -135,6 +138,7 @@ impl SkeletonFigure {
             compare_trail: Vec::with_capacity(TRAIL_DOTS + 1),
             sources: [Vec::new(), Vec::new()],
             bounds: (Vec3::ZERO, Vec3::ZERO),
+            paths_box: (Vec3::ZERO, Vec3::ZERO),
             view: None,
             skeleton,
             shapes,
@@ -872,9 +876,8 @@ impl SkeletonFigure {
     }
 
     /// The selected bone tip's paths over one cycle (with the playing interpolation and, when
-    /// set, the compared one), and the box the camera keeps in view: every joint over the cycle
-    /// (the crossfade's two clips too), or, while comparing paths, the paths and the selected
-    /// joint's pivot, so the paths fill the view.
+    /// set, the compared one), the box the camera keeps in view (every joint over the cycle, the
+    /// crossfade's two clips too, and the floor) and the box of the paths, for the inset.
     fn compute_trail(&mut self) {
         self.trail.clear();
         self.compare_trail.clear();
@@ -891,8 +894,7 @@ impl SkeletonFigure {
         let mut model = std::mem::take(&mut self.scratch_model);
         if self.clip.is_some() {
             let d = self.duration_sec();
-            let focus = self.compare_clip.is_some();
-            let mut focus_box = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+            let mut paths = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
             let main = self.clip.map(|c| &self.clips[c]);
             for (clip, path) in [(main, 0), (self.compare_clip.as_ref(), 1)] {
                 let Some(clip) = clip else { continue };
@@ -912,18 +914,7 @@ impl SkeletonFigure {
                     } else {
                         self.compare_trail.push(tip);
                     }
-                    if focus {
-                        // The selected joint's group (the part that turns) and its paths.
-                        let group = self.selected
-                            ..self.selected + self.skeleton.group_sizes()[self.selected];
-                        focus_box.0 = focus_box.0.min(tip);
-                        focus_box.1 = focus_box.1.max(tip);
-                        for m in &model[group] {
-                            focus_box.0 = focus_box.0.min(m.translation.into());
-                            focus_box.1 = focus_box.1.max(m.translation.into());
-                        }
-                        continue;
-                    }
+                    paths = (paths.0.min(tip), paths.1.max(tip));
                     grow(tip);
                     model.iter().for_each(|m| grow(m.translation.into()));
                     if self.show_boxes {
@@ -935,10 +926,12 @@ impl SkeletonFigure {
                     }
                 }
             }
-            if focus {
-                (lo, hi) = focus_box;
-            }
-            if self.blend_clip.is_some() && !focus {
+            // The paths' box, at least 8 cm across, so that a path a few centimetres long
+            // fills the inset without its ticks (TICK_OFFSET_M beside it) leaving it.
+            let middle = 0.5 * (paths.0 + paths.1);
+            let half = (0.5 * (paths.1 - paths.0)).max(Vec3::splat(0.04));
+            self.paths_box = (middle - half, middle + half);
+            if self.blend_clip.is_some() {
                 for k in 0..2 {
                     for step in 0..=12 {
                         let t = d * step as f32 / 12.0 * 0.99999;
@@ -953,11 +946,8 @@ impl SkeletonFigure {
         }
         self.scratch_pose = pose;
         self.scratch_model = model;
-        // The floor under the feet stays in view (but for the close view of the paths), and
-        // room for the labels.
-        if self.compare_clip.is_none() {
-            lo.y = lo.y.min(0.0);
-        }
+        // The floor under the feet stays in view, and room for the labels.
+        lo.y = lo.y.min(0.0);
         self.bounds = (
             lo - Vec3::splat(VIEW_MARGIN_M),
             hi + Vec3::splat(VIEW_MARGIN_M),
@@ -1032,8 +1022,9 @@ impl SkeletonFigure {
     pub fn draw(&mut self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let note = self.pose(time_sec)?;
         frame.grid(12, 0.25);
-        if self.compare_clip.is_none() {
-            // The world's axes at the feet (left out of the close view of the paths).
+        if self.compare_clip.is_none() && self.blend_clip.is_none() {
+            // The world's axes at the feet, with their letters where one skeleton stands alone
+            // (at the crossfade's feet the letters would lie on its legs and paths).
             frame.labelled_axes(Mat4::IDENTITY, 0.3);
         }
         let parents = self.skeleton.parents();
@@ -1194,6 +1185,20 @@ impl SkeletonFigure {
         );
         frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
         frame.keep_box_in_view(self.bounds.0, self.bounds.1);
+        if self.compare_clip.is_some() {
+            // The two paths close up, seen along the axis they extend least along (across the
+            // plane they mostly lie in), whatever the main view's distance and angle.
+            let (lo, hi) = self.paths_box;
+            let extent = hi - lo;
+            let along = if extent.y <= extent.x.min(extent.z) {
+                InsetView::Top
+            } else if extent.x <= extent.z {
+                InsetView::Side
+            } else {
+                InsetView::Front
+            };
+            frame.inset(along, "paths, close up", lo, hi);
+        }
         Ok(note)
     }
 
