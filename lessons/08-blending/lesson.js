@@ -14,7 +14,7 @@ const ARM_SAMPLES = 61;
 
 // Figures 1 and 2: the simple human, a BlendScene each. `controls` adds the figure's own
 // controls; `series` picks the columns of armSamples() the plot shows.
-async function blendFigure(id, { title, setup, controls, series, names, colors, widths }) {
+async function blendFigure(id, { title, setup, controls, series, names, colors, widths, dashes }) {
   const viewer = await lesson.figure(`#${id}`);
   if (!viewer) return;
   // Orbit only: the camera fits the body (raised hand included) that the figure keeps in view.
@@ -24,7 +24,7 @@ async function blendFigure(id, { title, setup, controls, series, names, colors, 
   const timeline = new Timeline(document.querySelector(`#${id} .timeline`), { duration: scene.durationSec(), playing: true });
   const plot = new Plot(document.querySelector(`#${id} .plot`), {
     title: 'Right upper arm over one cycle', xLabel: 'time (s)', yLabel: 'arm raised (°)',
-    series: names, colors, widths, yRange: [0, 180], height: 200,
+    series: names, colors, widths, dashes, yRange: [0, 180], height: 200,
   });
   const replot = () => {
     const cols = columns(scene.armSamples(ARM_SAMPLES), 6);
@@ -51,11 +51,11 @@ async function blendFigure(id, { title, setup, controls, series, names, colors, 
 await blendFigure('fig-blend', {
   title: 'Blend',
   setup: () => {},
-  // A, B and the mix; the mix narrow on top, so where it equals A or B both stay visible.
+  // A, B and the mix; the mix narrower on top, so where it equals A or B both stay visible.
   series: [1, 2, 3],
   names: ['clip A', 'clip B', 'the mix'],
   colors: [GREY, TEAL, DARK],
-  widths: [6, 6, 2],
+  widths: [6, 6, 3],
   controls: (gui, scene, { replot, retime }) => {
     const p = { a: 'walk', b: 'wave', weight: 0.5, mask: 'whole body', useExercise: false };
     const clips = scene.clipNames();
@@ -81,10 +81,12 @@ await blendFigure('fig-additive', {
   series: [1, 5, 4],
   names: ['base clip', 'layer alone', 'base + layer'],
   // As in the view: the orange stick figure is the base, the grey body the base with the layer.
-  // The layer alone 3 px: a lean lowers the arm onto it, and a grey 2 px line over a 6 px teal
-  // band is lost; over 3 px it still reads.
+  // The wave alone and with the base lie within a few degrees of each other: the layer alone a
+  // 5 px teal band, the base with the layer a dashed grey line over it, so both read where they
+  // meet (a lean lowers the arm onto the 6 px base the same way).
   colors: [ORANGE, TEAL, GREY],
-  widths: [6, 3, 2],
+  widths: [6, 5, 2.5],
+  dashes: [null, null, [6, 4]],
   controls: (gui, scene, { replot, retime }) => {
     const p = { base: 'walk', additive: 'wave (a clip)', additiveWeight: 1 };
     gui.add(p, 'base', scene.clipNames()).name('base clip').onChange(() => { scene.setClips(p.base, 'wave'); retime(); });
