@@ -1241,7 +1241,14 @@ impl LocomotionFigure {
             |_| 0.0,
         );
         if !name.is_empty() {
-            frame.label(Vec3::new(place.x, 2.0, place.z), name, color);
+            // Centred just over the head's box, wherever the lean or the root's drift within
+            // the cycle has taken the head: it names this character.
+            let head = self.skeleton.find("head").unwrap_or(0);
+            let shape = &self.shapes[head];
+            let top = place
+                + self.model[head].transform_point3(shape.center)
+                + (shape.half_extents.y + 0.04) * Vec3::Y;
+            frame.label_off_dot(top, 0.0, glam::Vec2::NEG_Y, name, color, 0);
         }
         slide
     }
