@@ -695,8 +695,9 @@ impl CylinderFigure {
         frame.marker_on_top(o + lbs, 12.0, palette::ORANGE);
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
         // Each name at the first place round its dot, away from the other dot first, clear of
-        // the dots, lines and the other name (on the last frame's view): where the dots meet,
-        // names beside them touch.
+        // the dots, lines and the other name (on the last frame's view), and nearer its own dot
+        // than any other dot (but one drawn on it): where the dots crowd, a name beside the
+        // teal or orange dot would seem to name that one.
         let view = view_of(self.view);
         let at = |p: Vec3| view.and_then(|(m, size)| project_to_canvas(m, size, o + p));
         let named = [(k2, k1, "K₂p"), (k1, k2, "K₁p")];
@@ -708,7 +709,17 @@ impl CylinderFigure {
             for l in &mut candidates {
                 l.large = true;
             }
-            frame.first_clear_label_by(view, 2.0, candidates, off_points(&[], 0.0));
+            let own = at(k).unwrap_or(Vec2::NAN);
+            let others: Vec<Vec2> = [(w2 > 0.0).then_some(other), Some(lbs), Some(dqs)]
+                .into_iter()
+                .flatten()
+                .filter_map(at)
+                .filter(|q| q.distance(own) > 3.0)
+                .collect();
+            frame.first_clear_label_by(view, 2.0, candidates, |rect| {
+                let gap = |d: Vec2| rect.nearest(d).distance(d);
+                others.iter().all(|&q| gap(q) > gap(own))
+            });
         }
         let elbow = Vec3::from(self.model[1].translation);
         let rest = self.rig.mesh.positions[v].distance(self.rig.segments[1].0);

@@ -170,6 +170,28 @@ fn lesson_09_cylinder_names_keep_off_the_tubes_and_each_other() {
                             "{name} on {size}: K₁p and K₂p at {a:?} and {b:?}"
                         );
                     }
+                    // Each K name nearer its own grey dot than any other dot of the followed
+                    // vertex (teal, orange, the other grey; but one drawn on its own), so that
+                    // it names its own.
+                    let dots: Vec<Vec2> = frame
+                        .markers
+                        .iter()
+                        .filter_map(|m| project_to_canvas(view_proj, size, Vec3::from(m.center)))
+                        .collect();
+                    for l in frame.labels.iter().filter(|l| l.text.starts_with('K')) {
+                        let rect = l.first_place(view_proj, size).unwrap();
+                        let own = project_to_canvas(view_proj, size, l.anchor).unwrap();
+                        let gap = |d: Vec2| rect.nearest(d).distance(d);
+                        for &d in dots.iter().filter(|d| d.distance(own) > 3.0) {
+                            assert!(
+                                gap(d) > gap(own),
+                                "{name} on {size}: {} {} px from a dot at {d}, {} px from its own",
+                                l.text,
+                                gap(d),
+                                gap(own)
+                            );
+                        }
+                    }
                 }));
             }
         }
