@@ -244,3 +244,35 @@ fn the_skinned_mesh_stays_in_view_through_the_clip() {
         }
     }
 }
+
+/// The floor lies under the model: a file whose mesh reaches below its origin (RiggedSimple's
+/// tube is centred on it) has the grid at its lowest point, not through its middle. The tiny
+/// file's triangle is given a vertex half a metre below the origin.
+#[test]
+fn the_floor_lies_under_the_lowest_point_of_the_model() {
+    use inbetween::gltf_import::{import, wire};
+    let mut imported = import(tiny_skinned_gltf().as_bytes()).unwrap();
+    let tiny = wire::encode(&imported).unwrap();
+    imported.meshes[0].positions[1] = Vec3::new(0.0, -0.5, 0.0);
+    let low = wire::encode(&imported).unwrap();
+    for (name, bytes) in [("tiny.gltf", tiny), ("low.gltf", low)] {
+        let mut figure = GltfFigure::new();
+        figure.load_imported(name, &bytes).unwrap();
+        let mut f = Frame::default();
+        figure.draw(&mut f, 0.0, &[]).unwrap();
+        let lowest = f.points.iter().map(|p| p.center[1]).fold(f32::MAX, f32::min);
+        let grid: Vec<f32> = f
+            .lines
+            .iter()
+            .filter(|v| [palette::GRID, palette::GRID_AXIS].contains(&Vec3::from_slice(&v.color[..3])))
+            .map(|v| v.position[1])
+            .collect();
+        assert!(!grid.is_empty(), "{name}: a floor");
+        for y in grid {
+            assert!(y <= lowest + 1e-4, "{name}: the floor at {y}, the model down to {lowest}");
+        }
+        if name == "low.gltf" {
+            assert!((lowest + 0.5).abs() < 1e-4, "the moved vertex is drawn: {lowest}");
+        }
+    }
+}

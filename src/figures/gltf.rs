@@ -547,7 +547,13 @@ impl GltfFigure {
                 .root_transform
                 .transform_point3(m.translation.into())
         };
+        // The floor under the rest pose's lowest point (joints and mesh), not through a model
+        // whose origin is at its middle (RiggedSimple's tube).
+        let start = frame.lines.len();
         frame.grid(12, (c.size / 6.0).max(0.05));
+        for v in &mut frame.lines[start..] {
+            v.position[1] = c.centre.y - c.half_extent.y;
+        }
         let radius = JOINT_RADIUS * c.size;
         for (i, &parent) in skeleton.parents().iter().enumerate() {
             let p = world(&self.model[i]);
