@@ -709,16 +709,15 @@ impl CylinderFigure {
             for l in &mut candidates {
                 l.large = true;
             }
-            let own = at(k).unwrap_or(Vec2::NAN);
-            let others: Vec<Vec2> = [(w2 > 0.0).then_some(other), Some(lbs), Some(dqs)]
-                .into_iter()
-                .flatten()
-                .filter_map(at)
-                .filter(|q| q.distance(own) > 3.0)
-                .collect();
+            // Off the canvas (NaN), a dot is left out of the comparison.
+            let px = |p: Vec3| at(p).unwrap_or(Vec2::NAN);
+            let own = px(k);
+            let others = [if w2 > 0.0 { px(other) } else { Vec2::NAN }, px(lbs), px(dqs)];
             frame.first_clear_label_by(view, 2.0, candidates, |rect| {
                 let gap = |d: Vec2| rect.nearest(d).distance(d);
-                others.iter().all(|&q| gap(q) > gap(own))
+                others
+                    .iter()
+                    .all(|&q| !(q.distance(own) > 3.0) || gap(q) > gap(own))
             });
         }
         let elbow = Vec3::from(self.model[1].translation);
