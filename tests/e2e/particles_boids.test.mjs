@@ -13,6 +13,29 @@ import { launch, frames, serveDist, openPage, setControl, bluePixels } from './b
 const site = serveDist();
 const open = (context, path, width, height) => openPage(context, site.origin + path, { width, height });
 
+/**
+ * How many pixels of the flock's order plot are the polarisation line's purple (#944fc9). Runs in
+ * the page (passed as source text), so that a test can wait for the line instead of a fixed time.
+ */
+function purplePixels() {
+  const c = document.querySelector('#flock-order-plot canvas');
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  let n = 0;
+  for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x94) < 40 && Math.abs(d[i + 1] - 0x4f) < 40 && Math.abs(d[i + 2] - 0xc9) < 40) n++;
+  return n;
+}
+
+/**
+ * Waits (every 100 ms, for up to 30 s) until the order plot shows more than 50 purple pixels and
+ * `note` matches the flock's note, then returns the purple count (the caller asserts on it).
+ */
+async function orderLineDrawn(page, note) {
+  await page.waitForFunction(([count, note]) => (0, eval)(`(${count})`)() > 50
+    && new RegExp(note).test(document.getElementById('flock-note').textContent),
+  [purplePixels.toString(), note.source], { polling: 100, timeout: 30_000 }).catch(() => {});
+  return page.evaluate((count) => (0, eval)(`(${count})`)(), purplePixels.toString());
+}
+
 /** The visible label boxes of `figure`, as the reader sees them. */
 function labelBoxes(page, figure) {
   return page.evaluate((figure) => [...document.querySelectorAll(`${figure} .labels span`)]
@@ -281,9 +304,13 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
       const fov = folder(radiiName).locator('.lil-controller', { hasText: 'field of view' });
       assert.ok(!(await fov.isVisible()), `${w}x${h}: the radii folder starts open`);
       await folder(radiiName).locator('.lil-title').click();
-      await page.waitForTimeout(600);
+      // lil-gui opens and closes a folder with a transition: each look waits for its end state
+      // (up to 5 s), then asserts it.
+      const settle = (locator, state) => locator.waitFor({ state, timeout: 5_000 }).catch(() => {});
+      await settle(fov, 'visible');
       assert.ok(await fov.isVisible(), `${w}x${h}: the field of view is not in the radii folder`);
       const alignment = folder('rule weights').locator('.lil-controller', { hasText: 'alignment' });
+      await settle(alignment, 'hidden');
       assert.ok(!(await alignment.isVisible()), `${w}x${h}: the weights stayed open beside the radii`);
       const fitOpen = await page.evaluate((flock) => {
         const canvas = document.querySelector(`${flock} .stage canvas`).getBoundingClientRect();
@@ -292,23 +319,17 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
       }, flock);
       if (fitOpen.beside) assert.ok(fitOpen.panel <= fitOpen.canvas + 1, `${w}x${h}: radii open, panel below the canvas ${JSON.stringify(fitOpen)}`);
       await folder('rule weights').locator('.lil-title').click();
-      await page.waitForTimeout(600);
+      await settle(alignment, 'visible');
+      await settle(fov, 'hidden');
       assert.ok(await alignment.isVisible() && !(await fov.isVisible()), `${w}x${h}: the folders do not take turns`);
-      // The order plot: titled, both series named, and drawn from the flock's samples after a
-      // second of flight (its canvas shows the purple polarisation line).
+      // The order plot: titled, both series named, and drawn from the flock's samples once it
+      // has flown (its canvas shows the purple polarisation line, and the note the value).
       const plot = page.locator('#flock-order-plot');
       assert.equal(await plot.getAttribute('data-plot'), 'Order of the flock');
       const legend = await plot.locator('.u-legend').textContent();
       assert.match(legend, /polarisation φ/);
       assert.match(legend, /mean speed \/ max speed/);
-      await page.waitForTimeout(1500);
-      await frames(page, 8);
-      const purple = await plot.locator('canvas').evaluate((c) => {
-        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-        let n = 0;
-        for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x94) < 40 && Math.abs(d[i + 1] - 0x4f) < 40 && Math.abs(d[i + 2] - 0xc9) < 40) n++;
-        return n;
-      });
+      const purple = await orderLineDrawn(page, /Polarisation φ = \d\.\d\d/);
       assert.ok(purple > 50, `${w}x${h}: the polarisation line is not drawn (${purple} purple pixels)`);
       assert.match(await page.locator('#flock-note').textContent(), /Polarisation φ = \d\.\d\d/);
       assert.deepEqual(problems, []);
@@ -358,17 +379,12 @@ test('lesson 12 on WebGPU: the order plot goes on while the GPU steps the flock'
     await setControl(page, fig, 'step on', 'GPU');
     // A new count starts the flock and its plot again, so every sample after it is the GPU's.
     await setControl(page, fig, 'boids', 310);
-    await page.waitForTimeout(2500);
+    // The plot redraws every six frames: after eight it shows the new (GPU) flock's samples
+    // only, so the line waited for is the GPU flock's.
     await frames(page, 8);
+    const purple = await orderLineDrawn(page, /order plot reads the flock back from the GPU every 0\.1 s/);
     const note = await page.locator('#flock-note').textContent();
     assert.match(note, /order plot reads the flock back from the GPU every 0\.1 s/, note);
-    const plot = page.locator('#flock-order-plot');
-    const purple = await plot.locator('canvas').evaluate((c) => {
-      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x94) < 40 && Math.abs(d[i + 1] - 0x4f) < 40 && Math.abs(d[i + 2] - 0xc9) < 40) n++;
-      return n;
-    });
     await page.locator(fig).screenshot({ path: 'tests/screenshots/12-boids-flock-gpu-webgpu.png' });
     assert.ok(purple > 50, `the polarisation line is not drawn on the GPU (${purple} purple pixels)`);
     // The GPU grid (the default search) with a flock of its own, in a box that keeps the density.
