@@ -43,42 +43,6 @@ function labelBoxes(page, figure) {
     .map((s) => { const r = s.getBoundingClientRect(); return { text: s.textContent, l: r.left, r: r.right, t: r.top, b: r.bottom }; }), figure);
 }
 
-test('lesson 11: squash labels apart, free-fall plot signed and its note says the side', async () => {
-  const context = await launch('webgl2');
-  try {
-    for (const [w, h] of [[800, 600], [1600, 1000]]) {
-      const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', w, h);
-      const squash = '#fig-squash';
-      await page.locator(squash).scrollIntoViewIfNeeded();
-      const scrub = page.locator(`${squash} .scrub`);
-      for (const at of [0, 150, 330, 500, 720, 1000]) {
-        await scrub.fill(String(at));
-        await scrub.dispatchEvent('input');
-        await frames(page, 4);
-        const boxes = await labelBoxes(page, squash);
-        assert.equal(boxes.length, 2, JSON.stringify(boxes));
-        const [a, b] = boxes;
-        const apart = a.r <= b.l || b.r <= a.l || a.b <= b.t || b.b <= a.t;
-        assert.ok(apart, `${w}x${h}, scrub ${at}: the labels overlap ${JSON.stringify(boxes)}`);
-      }
-      // Free fall at the end of the throw: explicit Euler above the parabola, semi-implicit below.
-      const fall = '#fig-freefall';
-      await page.locator(fall).scrollIntoViewIfNeeded();
-      const fallScrub = page.locator(`${fall} .scrub`);
-      await fallScrub.fill('1000');
-      await fallScrub.dispatchEvent('input');
-      await frames(page, 4);
-      const note = await page.locator('#freefall-note').textContent();
-      assert.match(note, /explicit Euler is 0\.638 m above, semi-implicit Euler 0\.638 m below, velocity Verlet on the parabola/, note);
-      assert.match(await page.locator('#freefall-plot').getAttribute('data-plot'), /Height above the exact parabola/);
-      assert.deepEqual(problems, []);
-      await page.close();
-    }
-  } finally {
-    await context.close();
-  }
-});
-
 test('lesson 12: the flock note gives the steering arrow scale', async () => {
   const context = await launch('webgl2');
   try {
@@ -112,46 +76,83 @@ async function scrubTo(page, figure, at) {
   await frames(page, 4);
 }
 
-test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; bouncing balls stay in view at e = 1', async () => {
+/** Lesson 11's squash figure: its two labels stay apart over its timeline; the free-fall note says
+ * which side of the parabola each Euler ends on. */
+async function squashAndFreefall(page, w, h) {
+  const squash = '#fig-squash';
+  await page.locator(squash).scrollIntoViewIfNeeded();
+  const scrub = page.locator(`${squash} .scrub`);
+  for (const at of [0, 150, 330, 500, 720, 1000]) {
+    await scrub.fill(String(at));
+    await scrub.dispatchEvent('input');
+    await frames(page, 4);
+    const boxes = await labelBoxes(page, squash);
+    assert.equal(boxes.length, 2, JSON.stringify(boxes));
+    const [a, b] = boxes;
+    const apart = a.r <= b.l || b.r <= a.l || a.b <= b.t || b.b <= a.t;
+    assert.ok(apart, `${w}x${h}, scrub ${at}: the labels overlap ${JSON.stringify(boxes)}`);
+  }
+  // Free fall at the end of the throw: explicit Euler above the parabola, semi-implicit below.
+  const fall = '#fig-freefall';
+  await page.locator(fall).scrollIntoViewIfNeeded();
+  const fallScrub = page.locator(`${fall} .scrub`);
+  await fallScrub.fill('1000');
+  await fallScrub.dispatchEvent('input');
+  await frames(page, 4);
+  const note = await page.locator('#freefall-note').textContent();
+  assert.match(note, /explicit Euler is 0\.638 m above, semi-implicit Euler 0\.638 m below, velocity Verlet on the parabola/, note);
+  assert.match(await page.locator('#freefall-plot').getAttribute('data-plot'), /Height above the exact parabola/);
+}
+
+/** Lesson 11's emitters at 1000/s beside explosions never fill the system; the bouncing balls stay
+ * in view at e = 1, μ = 0. */
+async function fountainAndBounce(page, w, h) {
+  const fig = '#fig-emitters';
+  await page.locator(fig).scrollIntoViewIfNeeded();
+  // The explosion has its own slider, so at 1000/s in "both" mode with a 6 s lifetime a
+  // burst does not scale with the rate (2 × the rate would take all 2000 slots).
+  await setControl(page, fig, 'emitter', 'both');
+  await setControl(page, fig, 'fountain rate', 1000);
+  await setControl(page, fig, 'lifetime', 6);
+  assert.equal(await page.locator(`${fig} .lil-controller`, { hasText: 'particles per explosion' }).count(), 1);
+  for (const at of [40, 300, 600, 950]) {
+    await scrubTo(page, fig, at);
+    const note = await page.locator('#emitters-note').textContent();
+    const alive = Number(/^(\d+) particles alive/.exec(note)?.[1]);
+    assert.ok(alive > 0 && alive < 2000, `${w}x${h}, scrub ${at}: ${note}`);
+    assert.doesNotMatch(note, /full/, note);
+    assert.match(note, /A stream of 1,000 particles\/s living 6\.00 s would need about 6,000 slots, so its particles live 0\.98 s: .* rate × lifetime \(the plot.s dashed guide\) is \d/, note);
+  }
+  // Bouncing at e = 1, μ = 0: the blue balls that the sphere throws sideways stay in the
+  // picture: a glass box bounces them back (without it they leave within the 6 s timeline).
+  const bounce = '#fig-bounce';
+  await page.locator(bounce).scrollIntoViewIfNeeded();
+  await setControl(page, bounce, 'restitution', 1);
+  await setControl(page, bounce, 'friction', 0);
+  // The plot of the orange ball's height and energy: its y axis spans the drop height
+  // (2.12 m above the floor) and not much more, since the energy never grows.
+  const plot = page.locator('#bounce-plot');
+  assert.equal(await plot.getAttribute('data-plot'), 'The orange ball: height and energy');
+  const [lo, hi] = (await plot.getAttribute('data-y-range')).split(' ').map(Number);
+  assert.ok(lo <= 0 && hi >= 2.1 && hi < 2.8, `bounce plot y range ${lo} ${hi}`);
+  await scrubTo(page, bounce, 0);
+  const start = await bluePixels(page, bounce);
+  for (const at of [500, 750, 999]) {
+    await scrubTo(page, bounce, at);
+    const now = await bluePixels(page, bounce);
+    assert.ok(now > 0.6 * start, `${w}x${h}, scrub ${at}: ${now} blue pixels, ${start} at the start`);
+  }
+}
+
+// Lesson 11 at both page sizes: one page per size serves the squash, free-fall, fountain and
+// bouncing checks (each a subtest, on figures the others do not set): two page loads, not four.
+test('lesson 11 at 800 x 600 and 1600 x 1000', async (t) => {
   const context = await launch('webgl2');
   try {
     for (const [w, h] of [[800, 600], [1600, 1000]]) {
       const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', w, h);
-      const fig = '#fig-emitters';
-      await page.locator(fig).scrollIntoViewIfNeeded();
-      // The explosion has its own slider, so at 1000/s in "both" mode with a 6 s lifetime a
-      // burst does not scale with the rate (2 × the rate would take all 2000 slots).
-      await setControl(page, fig, 'emitter', 'both');
-      await setControl(page, fig, 'fountain rate', 1000);
-      await setControl(page, fig, 'lifetime', 6);
-      assert.equal(await page.locator(`${fig} .lil-controller`, { hasText: 'particles per explosion' }).count(), 1);
-      for (const at of [40, 300, 600, 950]) {
-        await scrubTo(page, fig, at);
-        const note = await page.locator('#emitters-note').textContent();
-        const alive = Number(/^(\d+) particles alive/.exec(note)?.[1]);
-        assert.ok(alive > 0 && alive < 2000, `${w}x${h}, scrub ${at}: ${note}`);
-        assert.doesNotMatch(note, /full/, note);
-        assert.match(note, /A stream of 1,000 particles\/s living 6\.00 s would need about 6,000 slots, so its particles live 0\.98 s: .* rate × lifetime \(the plot.s dashed guide\) is \d/, note);
-      }
-      // Bouncing at e = 1, μ = 0: the blue balls that the sphere throws sideways stay in the
-      // picture: a glass box bounces them back (without it they leave within the 6 s timeline).
-      const bounce = '#fig-bounce';
-      await page.locator(bounce).scrollIntoViewIfNeeded();
-      await setControl(page, bounce, 'restitution', 1);
-      await setControl(page, bounce, 'friction', 0);
-      // The plot of the orange ball's height and energy: its y axis spans the drop height
-      // (2.12 m above the floor) and not much more, since the energy never grows.
-      const plot = page.locator('#bounce-plot');
-      assert.equal(await plot.getAttribute('data-plot'), 'The orange ball: height and energy');
-      const [lo, hi] = (await plot.getAttribute('data-y-range')).split(' ').map(Number);
-      assert.ok(lo <= 0 && hi >= 2.1 && hi < 2.8, `bounce plot y range ${lo} ${hi}`);
-      await scrubTo(page, bounce, 0);
-      const start = await bluePixels(page, bounce);
-      for (const at of [500, 750, 999]) {
-        await scrubTo(page, bounce, at);
-        const now = await bluePixels(page, bounce);
-        assert.ok(now > 0.6 * start, `${w}x${h}, scrub ${at}: ${now} blue pixels, ${start} at the start`);
-      }
+      await t.test(`squash labels apart, free-fall plot signed and its note says the side (${w}x${h})`, () => squashAndFreefall(page, w, h));
+      await t.test(`a fast fountain keeps flowing beside its own-sized explosions; bouncing balls stay in view at e = 1 (${w}x${h})`, () => fountainAndBounce(page, w, h));
       assert.deepEqual(problems, []);
       await page.close();
     }
