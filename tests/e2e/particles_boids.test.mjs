@@ -13,48 +13,35 @@ import { launch, frames, serveDist, openPage, setControl, bluePixels } from './b
 const site = serveDist();
 const open = (context, path, width, height) => openPage(context, site.origin + path, { width, height });
 
+/**
+ * How many pixels of the flock's order plot are the polarisation line's purple (#944fc9). Runs in
+ * the page (passed as source text), so that a test can wait for the line instead of a fixed time.
+ */
+function purplePixels() {
+  const c = document.querySelector('#flock-order-plot canvas');
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  let n = 0;
+  for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x94) < 40 && Math.abs(d[i + 1] - 0x4f) < 40 && Math.abs(d[i + 2] - 0xc9) < 40) n++;
+  return n;
+}
+
+/**
+ * Waits (every 100 ms, for up to 30 s) until the order plot shows more than 50 purple pixels and
+ * `note` matches the flock's note, then returns the purple count (the caller asserts on it).
+ */
+async function orderLineDrawn(page, note) {
+  await page.waitForFunction(([count, note]) => (0, eval)(`(${count})`)() > 50
+    && new RegExp(note).test(document.getElementById('flock-note').textContent),
+  [purplePixels.toString(), note.source], { polling: 100, timeout: 30_000 }).catch(() => {});
+  return page.evaluate((count) => (0, eval)(`(${count})`)(), purplePixels.toString());
+}
+
 /** The visible label boxes of `figure`, as the reader sees them. */
 function labelBoxes(page, figure) {
   return page.evaluate((figure) => [...document.querySelectorAll(`${figure} .labels span`)]
     .filter((s) => !s.hidden)
     .map((s) => { const r = s.getBoundingClientRect(); return { text: s.textContent, l: r.left, r: r.right, t: r.top, b: r.bottom }; }), figure);
 }
-
-test('lesson 11: squash labels apart, free-fall plot signed and its note says the side', async () => {
-  const context = await launch('webgl2');
-  try {
-    for (const [w, h] of [[800, 600], [1600, 1000]]) {
-      const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', w, h);
-      const squash = '#fig-squash';
-      await page.locator(squash).scrollIntoViewIfNeeded();
-      const scrub = page.locator(`${squash} .scrub`);
-      for (const at of [0, 150, 330, 500, 720, 1000]) {
-        await scrub.fill(String(at));
-        await scrub.dispatchEvent('input');
-        await frames(page, 4);
-        const boxes = await labelBoxes(page, squash);
-        assert.equal(boxes.length, 2, JSON.stringify(boxes));
-        const [a, b] = boxes;
-        const apart = a.r <= b.l || b.r <= a.l || a.b <= b.t || b.b <= a.t;
-        assert.ok(apart, `${w}x${h}, scrub ${at}: the labels overlap ${JSON.stringify(boxes)}`);
-      }
-      // Free fall at the end of the throw: explicit Euler above the parabola, semi-implicit below.
-      const fall = '#fig-freefall';
-      await page.locator(fall).scrollIntoViewIfNeeded();
-      const fallScrub = page.locator(`${fall} .scrub`);
-      await fallScrub.fill('1000');
-      await fallScrub.dispatchEvent('input');
-      await frames(page, 4);
-      const note = await page.locator('#freefall-note').textContent();
-      assert.match(note, /explicit Euler is 0\.638 m above, semi-implicit Euler 0\.638 m below, velocity Verlet on the parabola/, note);
-      assert.match(await page.locator('#freefall-plot').getAttribute('data-plot'), /Height above the exact parabola/);
-      assert.deepEqual(problems, []);
-      await page.close();
-    }
-  } finally {
-    await context.close();
-  }
-});
 
 test('lesson 12: the flock note gives the steering arrow scale', async () => {
   const context = await launch('webgl2');
@@ -89,46 +76,83 @@ async function scrubTo(page, figure, at) {
   await frames(page, 4);
 }
 
-test('lesson 11: a fast fountain keeps flowing beside its own-sized explosions; bouncing balls stay in view at e = 1', async () => {
+/** Lesson 11's squash figure: its two labels stay apart over its timeline; the free-fall note says
+ * which side of the parabola each Euler ends on. */
+async function squashAndFreefall(page, w, h) {
+  const squash = '#fig-squash';
+  await page.locator(squash).scrollIntoViewIfNeeded();
+  const scrub = page.locator(`${squash} .scrub`);
+  for (const at of [0, 150, 330, 500, 720, 1000]) {
+    await scrub.fill(String(at));
+    await scrub.dispatchEvent('input');
+    await frames(page, 4);
+    const boxes = await labelBoxes(page, squash);
+    assert.equal(boxes.length, 2, JSON.stringify(boxes));
+    const [a, b] = boxes;
+    const apart = a.r <= b.l || b.r <= a.l || a.b <= b.t || b.b <= a.t;
+    assert.ok(apart, `${w}x${h}, scrub ${at}: the labels overlap ${JSON.stringify(boxes)}`);
+  }
+  // Free fall at the end of the throw: explicit Euler above the parabola, semi-implicit below.
+  const fall = '#fig-freefall';
+  await page.locator(fall).scrollIntoViewIfNeeded();
+  const fallScrub = page.locator(`${fall} .scrub`);
+  await fallScrub.fill('1000');
+  await fallScrub.dispatchEvent('input');
+  await frames(page, 4);
+  const note = await page.locator('#freefall-note').textContent();
+  assert.match(note, /explicit Euler is 0\.638 m above, semi-implicit Euler 0\.638 m below, velocity Verlet on the parabola/, note);
+  assert.match(await page.locator('#freefall-plot').getAttribute('data-plot'), /Height above the exact parabola/);
+}
+
+/** Lesson 11's emitters at 1000/s beside explosions never fill the system; the bouncing balls stay
+ * in view at e = 1, μ = 0. */
+async function fountainAndBounce(page, w, h) {
+  const fig = '#fig-emitters';
+  await page.locator(fig).scrollIntoViewIfNeeded();
+  // The explosion has its own slider, so at 1000/s in "both" mode with a 6 s lifetime a
+  // burst does not scale with the rate (2 × the rate would take all 2000 slots).
+  await setControl(page, fig, 'emitter', 'both');
+  await setControl(page, fig, 'fountain rate', 1000);
+  await setControl(page, fig, 'lifetime', 6);
+  assert.equal(await page.locator(`${fig} .lil-controller`, { hasText: 'particles per explosion' }).count(), 1);
+  for (const at of [40, 300, 600, 950]) {
+    await scrubTo(page, fig, at);
+    const note = await page.locator('#emitters-note').textContent();
+    const alive = Number(/^(\d+) particles alive/.exec(note)?.[1]);
+    assert.ok(alive > 0 && alive < 2000, `${w}x${h}, scrub ${at}: ${note}`);
+    assert.doesNotMatch(note, /full/, note);
+    assert.match(note, /A stream of 1,000 particles\/s living 6\.00 s would need about 6,000 slots, so its particles live 0\.98 s: .* rate × lifetime \(the plot.s dashed guide\) is \d/, note);
+  }
+  // Bouncing at e = 1, μ = 0: the blue balls that the sphere throws sideways stay in the
+  // picture: a glass box bounces them back (without it they leave within the 6 s timeline).
+  const bounce = '#fig-bounce';
+  await page.locator(bounce).scrollIntoViewIfNeeded();
+  await setControl(page, bounce, 'restitution', 1);
+  await setControl(page, bounce, 'friction', 0);
+  // The plot of the orange ball's height and energy: its y axis spans the drop height
+  // (2.12 m above the floor) and not much more, since the energy never grows.
+  const plot = page.locator('#bounce-plot');
+  assert.equal(await plot.getAttribute('data-plot'), 'The orange ball: height and energy');
+  const [lo, hi] = (await plot.getAttribute('data-y-range')).split(' ').map(Number);
+  assert.ok(lo <= 0 && hi >= 2.1 && hi < 2.8, `bounce plot y range ${lo} ${hi}`);
+  await scrubTo(page, bounce, 0);
+  const start = await bluePixels(page, bounce);
+  for (const at of [500, 750, 999]) {
+    await scrubTo(page, bounce, at);
+    const now = await bluePixels(page, bounce);
+    assert.ok(now > 0.6 * start, `${w}x${h}, scrub ${at}: ${now} blue pixels, ${start} at the start`);
+  }
+}
+
+// Lesson 11 at both page sizes: one page per size serves the squash, free-fall, fountain and
+// bouncing checks (each a subtest, on figures the others do not set): two page loads, not four.
+test('lesson 11 at 800 x 600 and 1600 x 1000', async (t) => {
   const context = await launch('webgl2');
   try {
     for (const [w, h] of [[800, 600], [1600, 1000]]) {
       const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', w, h);
-      const fig = '#fig-emitters';
-      await page.locator(fig).scrollIntoViewIfNeeded();
-      // The explosion has its own slider, so at 1000/s in "both" mode with a 6 s lifetime a
-      // burst does not scale with the rate (2 × the rate would take all 2000 slots).
-      await setControl(page, fig, 'emitter', 'both');
-      await setControl(page, fig, 'fountain rate', 1000);
-      await setControl(page, fig, 'lifetime', 6);
-      assert.equal(await page.locator(`${fig} .lil-controller`, { hasText: 'particles per explosion' }).count(), 1);
-      for (const at of [40, 300, 600, 950]) {
-        await scrubTo(page, fig, at);
-        const note = await page.locator('#emitters-note').textContent();
-        const alive = Number(/^(\d+) particles alive/.exec(note)?.[1]);
-        assert.ok(alive > 0 && alive < 2000, `${w}x${h}, scrub ${at}: ${note}`);
-        assert.doesNotMatch(note, /full/, note);
-        assert.match(note, /A stream of 1,000 particles\/s living 6\.00 s would need about 6,000 slots, so its particles live 0\.98 s: .* rate × lifetime \(the plot.s dashed guide\) is \d/, note);
-      }
-      // Bouncing at e = 1, μ = 0: the blue balls that the sphere throws sideways stay in the
-      // picture: a glass box bounces them back (without it they leave within the 6 s timeline).
-      const bounce = '#fig-bounce';
-      await page.locator(bounce).scrollIntoViewIfNeeded();
-      await setControl(page, bounce, 'restitution', 1);
-      await setControl(page, bounce, 'friction', 0);
-      // The plot of the orange ball's height and energy: its y axis spans the drop height
-      // (2.12 m above the floor) and not much more, since the energy never grows.
-      const plot = page.locator('#bounce-plot');
-      assert.equal(await plot.getAttribute('data-plot'), 'The orange ball: height and energy');
-      const [lo, hi] = (await plot.getAttribute('data-y-range')).split(' ').map(Number);
-      assert.ok(lo <= 0 && hi >= 2.1 && hi < 2.8, `bounce plot y range ${lo} ${hi}`);
-      await scrubTo(page, bounce, 0);
-      const start = await bluePixels(page, bounce);
-      for (const at of [500, 750, 999]) {
-        await scrubTo(page, bounce, at);
-        const now = await bluePixels(page, bounce);
-        assert.ok(now > 0.6 * start, `${w}x${h}, scrub ${at}: ${now} blue pixels, ${start} at the start`);
-      }
+      await t.test(`squash labels apart, free-fall plot signed and its note says the side (${w}x${h})`, () => squashAndFreefall(page, w, h));
+      await t.test(`a fast fountain keeps flowing beside its own-sized explosions; bouncing balls stay in view at e = 1 (${w}x${h})`, () => fountainAndBounce(page, w, h));
       assert.deepEqual(problems, []);
       await page.close();
     }
@@ -281,9 +305,13 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
       const fov = folder(radiiName).locator('.lil-controller', { hasText: 'field of view' });
       assert.ok(!(await fov.isVisible()), `${w}x${h}: the radii folder starts open`);
       await folder(radiiName).locator('.lil-title').click();
-      await page.waitForTimeout(600);
+      // lil-gui opens and closes a folder with a transition: each look waits for its end state
+      // (up to 5 s), then asserts it.
+      const settle = (locator, state) => locator.waitFor({ state, timeout: 5_000 }).catch(() => {});
+      await settle(fov, 'visible');
       assert.ok(await fov.isVisible(), `${w}x${h}: the field of view is not in the radii folder`);
       const alignment = folder('rule weights').locator('.lil-controller', { hasText: 'alignment' });
+      await settle(alignment, 'hidden');
       assert.ok(!(await alignment.isVisible()), `${w}x${h}: the weights stayed open beside the radii`);
       const fitOpen = await page.evaluate((flock) => {
         const canvas = document.querySelector(`${flock} .stage canvas`).getBoundingClientRect();
@@ -292,23 +320,17 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
       }, flock);
       if (fitOpen.beside) assert.ok(fitOpen.panel <= fitOpen.canvas + 1, `${w}x${h}: radii open, panel below the canvas ${JSON.stringify(fitOpen)}`);
       await folder('rule weights').locator('.lil-title').click();
-      await page.waitForTimeout(600);
+      await settle(alignment, 'visible');
+      await settle(fov, 'hidden');
       assert.ok(await alignment.isVisible() && !(await fov.isVisible()), `${w}x${h}: the folders do not take turns`);
-      // The order plot: titled, both series named, and drawn from the flock's samples after a
-      // second of flight (its canvas shows the purple polarisation line).
+      // The order plot: titled, both series named, and drawn from the flock's samples once it
+      // has flown (its canvas shows the purple polarisation line, and the note the value).
       const plot = page.locator('#flock-order-plot');
       assert.equal(await plot.getAttribute('data-plot'), 'Order of the flock');
       const legend = await plot.locator('.u-legend').textContent();
       assert.match(legend, /polarisation φ/);
       assert.match(legend, /mean speed \/ max speed/);
-      await page.waitForTimeout(1500);
-      await frames(page, 8);
-      const purple = await plot.locator('canvas').evaluate((c) => {
-        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-        let n = 0;
-        for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x94) < 40 && Math.abs(d[i + 1] - 0x4f) < 40 && Math.abs(d[i + 2] - 0xc9) < 40) n++;
-        return n;
-      });
+      const purple = await orderLineDrawn(page, /Polarisation φ = \d\.\d\d/);
       assert.ok(purple > 50, `${w}x${h}: the polarisation line is not drawn (${purple} purple pixels)`);
       assert.match(await page.locator('#flock-note').textContent(), /Polarisation φ = \d\.\d\d/);
       assert.deepEqual(problems, []);
@@ -358,17 +380,12 @@ test('lesson 12 on WebGPU: the order plot goes on while the GPU steps the flock'
     await setControl(page, fig, 'step on', 'GPU');
     // A new count starts the flock and its plot again, so every sample after it is the GPU's.
     await setControl(page, fig, 'boids', 310);
-    await page.waitForTimeout(2500);
+    // The plot redraws every six frames: after eight it shows the new (GPU) flock's samples
+    // only, so the line waited for is the GPU flock's.
     await frames(page, 8);
+    const purple = await orderLineDrawn(page, /order plot reads the flock back from the GPU every 0\.1 s/);
     const note = await page.locator('#flock-note').textContent();
     assert.match(note, /order plot reads the flock back from the GPU every 0\.1 s/, note);
-    const plot = page.locator('#flock-order-plot');
-    const purple = await plot.locator('canvas').evaluate((c) => {
-      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - 0x94) < 40 && Math.abs(d[i + 1] - 0x4f) < 40 && Math.abs(d[i + 2] - 0xc9) < 40) n++;
-      return n;
-    });
     await page.locator(fig).screenshot({ path: 'tests/screenshots/12-boids-flock-gpu-webgpu.png' });
     assert.ok(purple > 50, `the polarisation line is not drawn on the GPU (${purple} purple pixels)`);
     // The GPU grid (the default search) with a flock of its own, in a box that keeps the density.
