@@ -297,3 +297,43 @@ fn bad_input_is_an_error() {
     };
     assert!(bad.validate().is_err());
 }
+
+/// Lesson 12's numbers for the grid search on the benchmark flock at 100,000 boids (one per m³,
+/// radius 1.5 m): about 14 neighbours per boid, about 47 candidates tested (the cells the
+/// ball's chords cross), where the full 3 × 3 block of rows, X_SPLIT cells either side of the
+/// boid's cell, holds about 65.
+#[test]
+fn the_grid_tests_about_47_candidates_for_14_neighbours() {
+    use inbetween::boids::grid::X_SPLIT;
+    let n = 100_000;
+    let (params, mut flock) = benchmark_flock(n).unwrap();
+    let radius = params.search_radius();
+    let (min, max) = (-params.bounds - radius, params.bounds + radius);
+    let grid = &mut flock.grid;
+    grid.configure(min, max, radius);
+    grid.rebuild(&flock.positions);
+    let d = ((max - min) / Vec3::new(radius / X_SPLIT as f32, radius, radius)).ceil();
+    let [dx, dy, dz] = [d.x as usize, d.y as usize, d.z as usize];
+    assert_eq!(grid.cell_count(), dx * dy * dz);
+    let (mut neighbours, mut candidates, mut block) = (0, 0, 0);
+    for (i, &p) in flock.positions.iter().enumerate() {
+        grid.for_each_neighbour(&flock.positions, i, radius, |_| neighbours += 1);
+        candidates += grid.candidates(&flock.positions, i, radius);
+        let c = grid.cell_of_point(p);
+        let (ci, cj, ck) = (c % dx, c / dx % dy, c / (dx * dy));
+        let starts = grid.cell_starts();
+        for k in ck.saturating_sub(1)..=(ck + 1).min(dz - 1) {
+            for j in cj.saturating_sub(1)..=(cj + 1).min(dy - 1) {
+                let row = dx * (j + dy * k);
+                let (lo, hi) = (ci.saturating_sub(X_SPLIT), (ci + X_SPLIT).min(dx - 1));
+                block += (starts[row + hi + 1] - starts[row + lo]) as usize;
+            }
+        }
+    }
+    let per_boid = |total: usize| (total as f32 / n as f32).round();
+    let seen = [per_boid(neighbours), per_boid(candidates), per_boid(block)];
+    assert!(
+        (seen[0] - 14.0).abs() <= 0.5 && (seen[1] - 47.0).abs() <= 1.0 && (seen[2] - 65.0).abs() <= 2.0,
+        "neighbours, candidates, full block per boid: {seen:?}"
+    );
+}

@@ -701,7 +701,7 @@ function contentWidth(element) {
  * narrow one keeps two equal curves both visible. Each legend swatch is a short stretch of its
  * curve (colour, width, dashes). The element gets `data-plot` (the title), `data-x-label`
  * and `data-y-label` (the axis labels, which uPlot draws on its canvas, where tests cannot
- * read them), and `data-y-range` (the y axis's range, "lo hi").
+ * read them), and `data-y-range` (the y axis's range, "lo hi"; a log x axis's in `data-x-range`).
  */
 export class Plot {
   constructor(element, {
@@ -733,9 +733,20 @@ export class Plot {
       title,
       width: contentWidth(element) || 560,
       height,
-      // `log: 'x'`, `'y'` or `'xy'`: those axes are logarithmic (base 10, whole decades shown).
+      // `log: 'x'`, `'y'` or `'xy'`: those axes are logarithmic (base 10; y shows whole decades,
+      // x the data's span: uPlot's own log range rounds the top up to a multiple of the next power
+      // of ten, so a sweep ending at 3,200 would run to 10,000; one point or none gets its decade).
       scales: {
-        x: log.includes('x') ? { time: false, distr: 3, log: 10 } : { time: false, range: xRange },
+        x: log.includes('x') ? {
+          time: false,
+          distr: 3,
+          log: 10,
+          range: (u, lo, hi) => {
+            const r = lo > 0 && hi > lo ? [lo, hi] : window.uPlot.rangeLog(lo || 1, hi || 10, 10, false);
+            element.dataset.xRange = r.join(' ');
+            return r;
+          },
+        } : { time: false, range: xRange },
         y: log.includes('y') ? {
           distr: 3,
           log: 10,

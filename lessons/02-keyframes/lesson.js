@@ -545,21 +545,27 @@ function compareFigure(id) {
     // A's ball wider than B's, drawn first: where the two schemes agree (at the keys, and
     // everywhere for the same scheme twice) A rings B, as its wide line shows under B's in the plot.
     for (const side of ['a', 'b']) view.ball(...at[side], radius[side], C[side]);
-    // Each name over both balls, 4 px beside its own on the side away from the other ball (A left,
-    // B right where they meet), with a white edge that keeps it readable on the lines.
+    // Each name over both balls, off its own path: 6 px past its ball along the path's normal there
+    // (screen space), on the side away from the other ball (A above where they meet or where the
+    // ball stands still), with a white edge that keeps it readable on the other lines.
     const { ctx: c } = view;
     c.font = 'bold 13px system-ui, sans-serif';
+    c.textAlign = 'center';
     c.textBaseline = 'middle';
     c.lineWidth = 3;
     c.strokeStyle = '#ffffff';
     for (const [side, other] of [['a', 'b'], ['b', 'a']]) {
       const [p, q] = [view.toPx(...at[side]), view.toPx(...at[other])];
-      const dir = Math.sign(p[0] - q[0]) || (side === 'a' ? -1 : 1);
-      c.textAlign = dir < 0 ? 'right' : 'left';
-      const x = p[0] + dir * (radius[side] + 4);
-      c.strokeText(side.toUpperCase(), x, p[1]);
+      const [u, v] = [view.toPx(...schemes[side].position(tau + 0.02)), view.toPx(...schemes[side].position(tau - 0.02))];
+      const len = Math.hypot(u[0] - v[0], u[1] - v[1]);
+      // The normal pointing up the screen (y grows downwards).
+      const n = len > 0.5 ? [(v[1] - u[1]) / len, (u[0] - v[0]) / len].map((x) => (u[0] > v[0] ? -x : x)) : [0, -1];
+      const away = (p[0] - q[0]) * n[0] + (p[1] - q[1]) * n[1];
+      const d = (Math.abs(away) > 1 ? Math.sign(away) : side === 'a' ? 1 : -1) * (radius[side] + 13);
+      const [x, y] = [p[0] + d * n[0], p[1] + d * n[1]];
+      c.strokeText(side.toUpperCase(), x, y);
       c.fillStyle = C[side];
-      c.fillText(side.toUpperCase(), x, p[1]);
+      c.fillText(side.toUpperCase(), x, y);
     }
     c.textAlign = 'start';
     c.textBaseline = 'alphabetic';

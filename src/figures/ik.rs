@@ -1003,8 +1003,8 @@ impl IkFigure {
     /// On the two-joint chain: the triangle of the law of cosines (sides a, b, d, the angle α at
     /// the root), the pole and its dashed line to the middle joint, and the circle of middle
     /// joints the pole chooses from (one per pole angle).
-    /// Returns α's and d's labels, which [`IkFigure::place_label`] places once everything is
-    /// drawn.
+    /// Returns α's, d's, a's and b's labels, which [`IkFigure::place_label`] places once
+    /// everything is drawn.
     fn draw_law_of_cosines(&self, frame: &mut Frame, root: Vec3) -> Vec<PlacedLabel> {
         let pole = self.pole() + root;
         frame.marker(pole, POLE_PX, palette::PURPLE);
@@ -1067,10 +1067,24 @@ impl IkFigure {
         };
         // The pole's label beyond it, away from its dashed line to the middle joint.
         beside(frame, pole, pole - m, "pole".into(), palette::PURPLE);
-        let (mid, out) = away(r, m);
-        beside(frame, mid, out, "a".into(), palette::BLUE);
-        let (mid, out) = away(m, e);
-        beside(frame, mid, out, "b".into(), palette::BLUE);
+        // Sides a and b are measured like d: each anchored on its side, placed just beside it
+        // where that is clear (a moved label's leader then ends on the side it names).
+        let side = |p: Vec3, q: Vec3, text: &str| {
+            let (at, out) = away(p, q);
+            PlacedLabel {
+                at,
+                out,
+                first_m: 0.05 + 0.07 * out.y.abs(),
+                low_y: f32::NEG_INFINITY,
+                line: Some([p, q]),
+                short_text: None,
+                own_side: true,
+                text: text.into(),
+                color: palette::BLUE,
+                priority: 0,
+            }
+        };
+        let sides = [side(r, m, "a"), side(m, e, "b")];
         // Side d's label towards the target's end, clear of the circle of middle joints
         // (whose centre lies on d) and of α's label at the root's end.
         let (_, out) = away(r, g);
@@ -1114,9 +1128,12 @@ impl IkFigure {
                     priority: 0,
                 },
                 d_label,
-            ];
+            ]
+            .into_iter()
+            .chain(sides)
+            .collect();
         }
-        vec![d_label]
+        std::iter::once(d_label).chain(sides).collect()
     }
 }
 

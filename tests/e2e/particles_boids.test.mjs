@@ -255,6 +255,11 @@ test('lesson 12: the step-time sweep ends on log-log axes with a note of the slo
     // Log axes: the y range runs between powers of ten, both positive.
     const [lo, hi] = (await page.locator('#flock-plot').getAttribute('data-y-range')).split(' ').map(Number);
     assert.ok(lo > 0 && hi > lo && Number.isInteger(Math.log10(lo)) && Number.isInteger(Math.log10(hi)), `${lo} ${hi}`);
+    // The x axis spans the sizes timed, from 100 boids to the largest (the one the note names,
+    // or the next, where only the grid was timed), not up to the next power of ten.
+    const largest = Number(/At N = (\d+)/.exec(await sweep.textContent())?.[1]);
+    const [xLo, xHi] = (await page.locator('#flock-plot').getAttribute('data-x-range')).split(' ').map(Number);
+    assert.ok(xLo === 100 && (xHi === largest || xHi === 2 * largest), `${xLo} ${xHi}, largest ${largest}`);
     // The button starts it again.
     await page.locator('#flock-measure').click();
     await frames(page, 2);

@@ -106,6 +106,8 @@ fn lesson_07_hinge_figure_labels_keep_off_the_hinges_and_their_plane() {
             || text.ends_with(" mm short")
             || text.starts_with("d = ")
             || text.starts_with("α")
+            || text == "a"
+            || text == "b"
     };
     let mut failures = Vec::new();
     let mut at_start = Vec::new();
@@ -489,5 +491,56 @@ fn lesson_07_miss_labels_sit_by_their_line_or_lead_to_it() {
         }
     }
     assert!(misses > 100 && led > 0, "{misses} misses, {led} with a leader");
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_07_sides_a_and_b_labels_sit_beside_their_sides() {
+    // Figures 1 and 3 at their page cameras, both canvases, two segments, Figure 3 with each
+    // kind of joint limit, at the page's start: the labels of the two-joint chain's sides a and
+    // b each lie within 12 px of the side they name (the pole's dot and line sit near b).
+    use inbetween::figures::ik::IkFigure;
+    let figures = [
+        ([0.25, 0.45, 0.0, 4.3, 0.1, 0.25], "none"),
+        ([0.25, 0.45, 0.0, 4.3, 0.5, 0.3], "hinges (bend one way)"),
+        ([0.25, 0.45, 0.0, 4.3, 0.5, 0.3], "cones (40°)"),
+    ];
+    let mut failures = Vec::new();
+    for (view, limits) in figures {
+        let mut scene = IkFigure::new();
+        scene.set_limits(limits).unwrap();
+        scene.set_target(Vec3::new(0.55, 0.65, 0.15)).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame).unwrap();
+        for size in CANVASES {
+            let camera = page_camera(view, &frame, size);
+            scene.set_view(camera, size.x, size.y);
+            let mut frame = Frame::default();
+            scene.draw(&mut frame).unwrap();
+            let camera = page_camera(view, &frame, size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+            let chain = scene.chain(0).unwrap();
+            for (text, p, q) in [("a", chain[0], chain[1]), ("b", chain[1], chain[2])] {
+                let (p, q) = (at(p), at(q));
+                let boxes: Vec<Rect> = label_boxes(&frame, &camera, size)
+                    .into_iter()
+                    .filter(|(t, _)| t == text)
+                    .map(|(_, rect)| rect)
+                    .collect();
+                let name = format!("07 {limits}, side {text} on {size}");
+                assert_eq!(boxes.len(), 1, "{name}");
+                let gap = (0..=64)
+                    .map(|k| {
+                        let s = p.lerp(q, k as f32 / 64.0);
+                        boxes[0].nearest(s).distance(s)
+                    })
+                    .fold(f32::MAX, f32::min);
+                if gap > 12.0 {
+                    failures.push(format!("{name}: {gap} px from its side"));
+                }
+            }
+        }
+    }
     assert_none_failed(&failures);
 }
