@@ -380,11 +380,16 @@ impl Spacing {
             (b, b + Vec3::new(0.3, 0.45, 0.0), "straight line", PLAIN),
         ] {
             let up = -glam::Vec2::Y;
-            let mut around = Label::around_dot(anchor, 0.0, up, text, color, 1, 8, 10.0);
-            around.insert(
-                0,
-                Label::off_dot(first, 0.0, glam::Vec2::ZERO, text.into(), color, 1),
-            );
+            // The straight line's name first under the middle of its row of ghosts (as wide as
+            // a dot of 24 px), where the arc, high above, leaves room.
+            let mut around = if color == PLAIN {
+                let mid = a.lerp(b, 0.5);
+                Label::around_dot(mid, 24.0, -up, text, color, 1, 4, 8.0)
+            } else {
+                Vec::new()
+            };
+            around.push(Label::off_dot(first, 0.0, glam::Vec2::ZERO, text.into(), color, 1));
+            around.extend(Label::around_dot(anchor, 0.0, up, text, color, 1, 8, 10.0));
             frame.first_clear_label_by(view, 3.0, around, &clear);
         }
     }
@@ -489,8 +494,13 @@ impl JumpComparison {
         // view.
         frame.contact_shadow(Vec3::new(-1.2, plain.height, 0.0), RADIUS);
         frame.contact_shadow(Vec3::new(1.2, p.height, 0.0), RADIUS * scale.y);
-        frame.label(Vec3::new(-1.2, -0.25, 0.6), "plain", PLAIN);
-        frame.label(Vec3::new(1.2, -0.25, 0.6), "principles", PRINCIPLED);
+        // Each name just under its ball's lowest point, so it follows the ball up from any view.
+        for (bottom, text, color) in [
+            (Vec3::new(-1.2, plain.height, 0.0), "plain", PLAIN),
+            (Vec3::new(1.2, p.height, 0.0), "principles", PRINCIPLED),
+        ] {
+            frame.label_off_dot(bottom, 0.0, glam::Vec2::Y, text, color, 0);
+        }
         // The apex both reach.
         let apex = self.jump.apex + 2.0 * RADIUS;
         frame.line(
@@ -983,8 +993,13 @@ impl StretchComparison {
                 crate::draw::CURVE_PX,
             );
         }
-        let reach = STRETCH_RADIUS * self.stretch.max(1.0) + 0.5;
-        frame.label(KEPT_CENTRE + a * reach, "a", DIRECTION);
+        // The name just past the left arrow's head, along it, placed after the balls' names
+        // (which keep their places under the balls where it points down towards them); the
+        // figure is a picture in the x-y plane, so a drag pans it instead of turning the balls
+        // and circles edge-on.
+        let tip = KEPT_CENTRE + a * (STRETCH_RADIUS * self.stretch.max(1.0) + 0.35);
+        frame.label_off_dot(tip, 0.0, glam::Vec2::new(a.x, -a.y), "a", DIRECTION, 0);
+        frame.flat = true;
         frame.keep_box_in_view(Vec3::new(-3.2, -0.35, -0.3), Vec3::new(3.2, 2.95, 0.3));
         let across_kept = 1.0 / self.stretch.sqrt();
         format!(
