@@ -336,10 +336,10 @@ impl Spacing {
 }
 
 impl Spacing {
-    /// The names of the arc and of its straight twin: above the arc's top and right of the
-    /// twin's end at the page's camera; once orbited, the first place round those that covers no
-    /// ghost, ball (the frame draws them as meshes and points, which the search does not see),
-    /// line or the other name, on the last frame's view.
+    /// The names of the arc and of its straight twin: above the arc's top and under the middle
+    /// of the twin's row at the page's camera; else the first place round the arc's top and the
+    /// twin's end that covers no ghost, ball (the frame draws them as meshes and points, which
+    /// the search does not see), line or the other name, on the last frame's view.
     fn name_paths(&self, frame: &mut Frame, ghost: impl Fn(usize) -> f32, p: Vec3, time: f32) {
         use crate::draw::Label;
         let view = self
@@ -377,19 +377,16 @@ impl Spacing {
         let top = START.lerp(END, 0.5) + Vec3::Y * self.arc_height;
         for (anchor, first, text, color) in [
             (top, top + Vec3::Y * 0.4, "arc", BALL),
-            (b, b + Vec3::new(0.3, 0.45, 0.0), "straight line", PLAIN),
+            // Under the middle of the twin's row of ghosts, where the arc, high above, leaves
+            // room.
+            (b, a.lerp(b, 0.5) - Vec3::Y * 0.4, "straight line", PLAIN),
         ] {
             let up = -glam::Vec2::Y;
-            // The straight line's name first under the middle of its row of ghosts (as wide as
-            // a dot of 24 px), where the arc, high above, leaves room.
-            let mut around = if color == PLAIN {
-                let mid = a.lerp(b, 0.5);
-                Label::around_dot(mid, 24.0, -up, text, color, 1, 4, 8.0)
-            } else {
-                Vec::new()
-            };
-            around.push(Label::off_dot(first, 0.0, glam::Vec2::ZERO, text.into(), color, 1));
-            around.extend(Label::around_dot(anchor, 0.0, up, text, color, 1, 8, 10.0));
+            let mut around = Label::around_dot(anchor, 0.0, up, text, color, 1, 8, 10.0);
+            around.insert(
+                0,
+                Label::off_dot(first, 0.0, glam::Vec2::ZERO, text.into(), color, 1),
+            );
             frame.first_clear_label_by(view, 3.0, around, &clear);
         }
     }
