@@ -665,21 +665,14 @@ impl Frustum {
             palette::GREY,
             crate::draw::StrokeStyle::dashed(1.5, 0.15, 0.1),
         );
-        // Each name at the first place round its dot clear of the dots, the lines and the
-        // names placed before, a few pixels from its dot at any zoom: the point's above it
-        // first, the image's below and right first, off the ray (which rises to the right
-        // towards the point). Where the point crosses the near plane the two dots meet and the
-        // plane's edges pass by them; at a small z_near the image sits by the eye and the near
-        // plane's corner.
+        // The point's label straight above its dot and the image's below and right of its
+        // own, off the ray (which rises to the right towards the point), each a few pixels
+        // from its dot at any zoom: where the point crosses the near plane the two dots meet.
+        // At a small z_near the image sits by the eye and the near plane's corner, so its name
+        // goes to the first place round its dot, below and right first, clear of the names
+        // placed before (the eye's, z_near's, the point's), the dots and the lines.
         frame.marker(at(p), POINT_PX, color);
-        let candidates = Label::around_dot(at(p), POINT_PX, -Vec2::Y, "p", color, 3, 4, 6.0);
-        // Off the eye's and z_near's names too, which rank lower and would make way for it.
-        let named: Vec<_> = view.map_or(Vec::new(), |(view_proj, size)| {
-            frame.labels.iter().filter_map(|l| l.first_place(view_proj, size)).collect()
-        });
-        frame.first_clear_label_by(view, LINE_MARGIN_PX, candidates, |r| {
-            named.iter().all(|o| !o.overlaps(&r, crate::draw::LABELS_APART_PX))
-        });
+        frame.label_off_dot(at(p), POINT_PX, Vec2::new(0.0, -1.0), "p", color, 3);
         let on_near = p * (self.near / -p.z);
         frame.marker_on_top(at(on_near), IMAGE_PX, ON_NEAR);
         let dot_px = POINT_PX.max(IMAGE_PX);
