@@ -2,6 +2,8 @@
 //! reject, and what their notes say about the student's exercises.
 
 use glam::Vec3;
+#[path = "support/flat.rs"]
+mod flat;
 use inbetween::draw::{Frame, MeshId};
 use inbetween::exercises::run::{direct, Failure, Flat};
 use inbetween::expressive;
@@ -682,6 +684,52 @@ fn stretch_names_sit_under_their_balls_and_the_outline_shows_on_both() {
                     "s {s}, {angle}°: the {title:?} ball's grey {c} hides the dark outline"
                 );
             }
+        }
+    }
+}
+
+/// The stretch figure is a picture in the x-y plane: a drag pans it (the balls stay apart and
+/// each name under its own ball), and "a" is anchored at the head of the left ball's arrow at
+/// any direction.
+#[test]
+fn the_stretch_figure_pans_and_names_the_arrow_at_its_head() {
+    use inbetween::figures::expressive::StretchComparison;
+    let mut scene = StretchComparison::new();
+    for angle in [-90.0, -54.0, 0.0, 30.0, 90.0] {
+        scene.set(0.82, angle).unwrap();
+        let mut f = Frame::default();
+        scene.draw(&mut f);
+        let label = f.labels.iter().find(|l| l.text == "a").unwrap();
+        let (tip, a) = (label.anchor, scene.axis());
+        let centre = Vec3::new(-1.5, 1.3, 0.0);
+        let along = (tip - centre).dot(a);
+        assert!(
+            (tip - centre).cross(a).length() < 1e-4 && (0.8..0.9).contains(&along),
+            "{angle}°: \"a\" at {tip}, {along} m along the arrow"
+        );
+        let (l, r) = (Vec3::new(-1.5, 1.3, 0.0), Vec3::new(1.5, 1.3, 0.0));
+        flat::assert_drag_pans(&f, [0.0, 1.3, 0.0, 7.0, 0.0, 0.0], glam::Vec2::new(650.0, 420.0), [l, r]);
+    }
+}
+
+/// Figure 3's names follow their balls up: each stays within 0.3 m under its ball's lowest
+/// point through the jump (on the floor they would sit a ball's flight below it).
+#[test]
+fn jump_names_follow_their_balls() {
+    let scene = JumpComparison::new();
+    for t in [0.0, 0.6, 0.88, 1.0, 1.3, 2.0] {
+        let mut f = Frame::default();
+        scene.draw(&mut f, t).unwrap();
+        let balls: Vec<_> = f.meshes.iter().filter(|m| m.mesh == MeshId::SPHERE).collect();
+        for (ball, name) in balls.iter().zip(["plain", "principles"]) {
+            let m = ball.model;
+            let lowest = m.w_axis.y - Vec3::new(m.x_axis.y, m.y_axis.y, m.z_axis.y).length();
+            let label = f.labels.iter().find(|l| l.text == name).unwrap();
+            let below = lowest - label.anchor.y;
+            assert!(
+                (-1e-3..0.3).contains(&below) && (label.anchor.x - m.w_axis.x).abs() < 1e-3,
+                "t {t}: {name:?} {below} m under its ball"
+            );
         }
     }
 }

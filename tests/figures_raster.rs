@@ -770,6 +770,16 @@ fn a_dense_sphere_marks_a_patch_only() {
         "{} wide indexed edges",
         wide(INDEXED_COLOR)
     );
+    // The pale edges follow every few rings and meridians only (about a tenth of the ~6000
+    // edges): all of them fill the sphere's disc with a pale wash where no line shows. Enough
+    // remain to draw the sphere round the patch.
+    let pale = |c: Vec3| {
+        let c = c.lerp(Vec3::ONE, 0.65);
+        f.lines.iter().filter(|v| Vec3::from_slice(&v.color[..3]).distance(c) < 1e-4).count() / 2
+    };
+    let (soup_pale, indexed_pale) = (pale(SOUP_COLOR), pale(INDEXED_COLOR));
+    assert!((300..1000).contains(&indexed_pale), "{indexed_pale} pale indexed edges");
+    assert!((100..1000).contains(&soup_pale), "{soup_pale} pale soup edges");
 }
 
 /// Figure 1's patch of dots on a dense sphere turns with the camera: from any eye round the

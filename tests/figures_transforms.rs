@@ -2,6 +2,8 @@
 //! student's exercises (through test runners that answer wrongly or panic).
 
 use glam::{Mat4, Vec3};
+#[path = "support/flat.rs"]
+mod flat;
 use inbetween::draw::{palette, Frame, MeshId};
 use inbetween::exercises::run::{self, Failure};
 use inbetween::figures::transforms::{HierarchyFigure, Order, SingleShape, BOX_HALF};
@@ -810,4 +812,17 @@ fn the_corner_label_and_the_note_give_the_same_angle() {
             assert!(note.contains(&in_note), "{in_note:?} in {note}");
         }
     }
+}
+
+/// Figure 3 is seen from the side, where the shear shows: a drag pans it, keeping the two
+/// figures as far apart on the canvas, where an orbit would turn the forearms' outlines edge-on.
+#[test]
+fn the_scale_comparison_pans() {
+    use inbetween::figures::transforms::ScaleComparison;
+    let mut comparison = ScaleComparison::new();
+    let mut frame = Frame::default();
+    comparison.draw(&mut frame).unwrap();
+    let apart = [0, 1].map(|k| ScaleComparison::placement(k).w_axis.truncate() + Vec3::Y);
+    let view = [0.0, 1.0, 0.0, 3.6, std::f32::consts::FRAC_PI_2, 0.12];
+    flat::assert_drag_pans(&frame, view, glam::Vec2::new(650.0, 420.0), apart);
 }

@@ -336,10 +336,10 @@ impl Spacing {
 }
 
 impl Spacing {
-    /// The names of the arc and of its straight twin: above the arc's top and right of the
-    /// twin's end at the page's camera; once orbited, the first place round those that covers no
-    /// ghost, ball (the frame draws them as meshes and points, which the search does not see),
-    /// line or the other name, on the last frame's view.
+    /// The names of the arc and of its straight twin: above the arc's top and under the middle
+    /// of the twin's row at the page's camera; else the first place round the arc's top and the
+    /// twin's end that covers no ghost, ball (the frame draws them as meshes and points, which
+    /// the search does not see), line or the other name, on the last frame's view.
     fn name_paths(&self, frame: &mut Frame, ghost: impl Fn(usize) -> f32, p: Vec3, time: f32) {
         use crate::draw::Label;
         let view = self
@@ -377,7 +377,9 @@ impl Spacing {
         let top = START.lerp(END, 0.5) + Vec3::Y * self.arc_height;
         for (anchor, first, text, color) in [
             (top, top + Vec3::Y * 0.4, "arc", BALL),
-            (b, b + Vec3::new(0.3, 0.45, 0.0), "straight line", PLAIN),
+            // Under the middle of the twin's row of ghosts, where the arc, high above, leaves
+            // room.
+            (b, a.lerp(b, 0.5) - Vec3::Y * 0.4, "straight line", PLAIN),
         ] {
             let up = -glam::Vec2::Y;
             let mut around = Label::around_dot(anchor, 0.0, up, text, color, 1, 8, 10.0);
@@ -489,8 +491,13 @@ impl JumpComparison {
         // view.
         frame.contact_shadow(Vec3::new(-1.2, plain.height, 0.0), RADIUS);
         frame.contact_shadow(Vec3::new(1.2, p.height, 0.0), RADIUS * scale.y);
-        frame.label(Vec3::new(-1.2, -0.25, 0.6), "plain", PLAIN);
-        frame.label(Vec3::new(1.2, -0.25, 0.6), "principles", PRINCIPLED);
+        // Each name just under its ball's lowest point, so it follows the ball up from any view.
+        for (bottom, text, color) in [
+            (Vec3::new(-1.2, plain.height, 0.0), "plain", PLAIN),
+            (Vec3::new(1.2, p.height, 0.0), "principles", PRINCIPLED),
+        ] {
+            frame.label_off_dot(bottom, 0.0, glam::Vec2::Y, text, color, 0);
+        }
         // The apex both reach.
         let apex = self.jump.apex + 2.0 * RADIUS;
         frame.line(
@@ -983,8 +990,13 @@ impl StretchComparison {
                 crate::draw::CURVE_PX,
             );
         }
-        let reach = STRETCH_RADIUS * self.stretch.max(1.0) + 0.5;
-        frame.label(KEPT_CENTRE + a * reach, "a", DIRECTION);
+        // The name just past the left arrow's head, along it, placed after the balls' names
+        // (which keep their places under the balls where it points down towards them); the
+        // figure is a picture in the x-y plane, so a drag pans it instead of turning the balls
+        // and circles edge-on.
+        let tip = KEPT_CENTRE + a * (STRETCH_RADIUS * self.stretch.max(1.0) + 0.35);
+        frame.label_off_dot(tip, 0.0, glam::Vec2::new(a.x, -a.y), "a", DIRECTION, 0);
+        frame.flat = true;
         frame.keep_box_in_view(Vec3::new(-3.2, -0.35, -0.3), Vec3::new(3.2, 2.95, 0.3));
         let across_kept = 1.0 / self.stretch.sqrt();
         format!(

@@ -43,8 +43,8 @@ pub const MAX_SEGMENTS: u32 = 64;
 
 /// Above this many segments, Figure 1 marks the corners and positions only on a patch of the
 /// sphere that faces the page's camera, with smaller dots, the soup's triangles pulled further
-/// apart and pale 1 px edges elsewhere: drawn everywhere, thousands of dots and edges merge into
-/// one blot.
+/// apart, and elsewhere pale 1 px edges along every few rings and meridians (and the soup's
+/// triangles where they cross): drawn everywhere, thousands of dots and edges merge into one blot.
 pub const DENSE_SEGMENTS: u32 = 16;
 /// The centre of that patch before the first frame's camera is known (towards the page's
 /// camera; then [`MeshStorage::set_eye`] turns it to the eye) and the cosine of its angular
@@ -156,6 +156,16 @@ impl MeshStorage {
         !self.is_dense() || p.normalize_or_zero().dot(self.facing) > PATCH_COS
     }
 
+    /// Ring and segment of position `i` of the sphere, each counted in steps of m, and whether
+    /// both fall on a step: outside a dense sphere's patch only every m-th ring and meridian is
+    /// drawn (m keeps about 12 of them round the sphere), where every edge would merge into a
+    /// pale disc. `None` at the poles.
+    fn coarse_cell(&self, i: u32) -> Option<(u32, u32)> {
+        let (n, m) = (self.segments, self.segments.div_ceil(12));
+        (i >= 1 && (i as usize) < self.positions.len() - 1)
+            .then(|| (((i - 1) / n + 1) % m, (i - 1) % n % m))
+    }
+
     /// How many corners of the soup get a dot.
     fn marked_corners(&self) -> usize {
         self.indices
@@ -235,7 +245,7 @@ impl MeshStorage {
                 for p in [pa, pb, pc] {
                     frame.marker(p, dot, SOUP_COLOR);
                 }
-            } else {
+            } else if self.coarse_cell(tri[0]) == Some((0, 0)) {
                 frame.polyline(&[pa, pb, pc, pa], faint(SOUP_COLOR));
             }
         }
@@ -252,10 +262,19 @@ impl MeshStorage {
             for k in 0..3 {
                 let (a, b) = (tri[k], tri[(k + 1) % 3]);
                 if a < b {
+                    // Outside the patch: an edge along a drawn ring (same ring, a step of it)
+                    // or meridian (same segment).
+                    let n = self.segments;
+                    let on_grid = match (self.coarse_cell(a), self.coarse_cell(b)) {
+                        (Some(p), Some(_)) => {
+                            (a - 1) / n == (b - 1) / n && p.0 == 0 || (b - a) % n == 0 && p.1 == 0
+                        }
+                        _ => false,
+                    };
                     let (a, b) = (self.positions[a as usize], self.positions[b as usize]);
                     if self.marked((a + b) * 0.5) {
                         frame.wide_line(right + a, right + b, INDEXED_COLOR, 1.5);
-                    } else {
+                    } else if on_grid {
                         frame.line(right + a, right + b, faint(INDEXED_COLOR));
                     }
                 }
@@ -578,9 +597,14 @@ impl Frustum {
         let s = in_range("s", s, 0.0, 1.0)?;
         frame.grid(24, 1.0);
         let half_h = |d: f32| d * (0.5 * self.fov_y_rad).tan();
+        // k: how much wider the far plane is than at the page's defaults. A wider frustum is
+        // drawn scaled down about the eye by 1/k (its shape kept), and the NDC box beside it at
+        // its own size, so both fit the canvas together at any field of view and z_far.
+        let k = (half_h(self.far) * Self::ASPECT / NDC_FAR_HALF_WIDTH).max(1.0);
+        let at = |v: Vec3| EYE + v / k;
         let corners = |d: f32| {
             let (h, w) = (half_h(d), half_h(d) * Self::ASPECT);
-            [(-w, -h), (w, -h), (w, h), (-w, h)].map(|(x, y)| EYE + Vec3::new(x, y, -d))
+            [(-w, -h), (w, -h), (w, h), (-w, h)].map(|(x, y)| at(Vec3::new(x, y, -d)))
         };
         let (near, far) = (corners(self.near), corners(self.far));
         let w = crate::draw::CURVE_PX;
@@ -637,7 +661,7 @@ impl Frustum {
         let q = raster::project(m, p, 0.0);
         let color = if q.inside { POINT } else { OUTSIDE };
         frame.stroke(
-            &[EYE, EYE + p],
+            &[EYE, at(p)],
             palette::GREY,
             crate::draw::StrokeStyle::dashed(1.5, 0.15, 0.1),
         );
@@ -647,20 +671,17 @@ impl Frustum {
         // At a small z_near the image sits by the eye and the near plane's corner, so its name
         // goes to the first place round its dot, below and right first, clear of the names
         // placed before (the eye's, z_near's, the point's), the dots and the lines.
-        frame.marker(EYE + p, POINT_PX, color);
-        frame.label_off_dot(EYE + p, POINT_PX, Vec2::new(0.0, -1.0), "p", color, 3);
+        frame.marker(at(p), POINT_PX, color);
+        frame.label_off_dot(at(p), POINT_PX, Vec2::new(0.0, -1.0), "p", color, 3);
         let on_near = p * (self.near / -p.z);
-        frame.marker_on_top(EYE + on_near, IMAGE_PX, ON_NEAR);
+        frame.marker_on_top(at(on_near), IMAGE_PX, ON_NEAR);
         let dot_px = POINT_PX.max(IMAGE_PX);
         let candidates =
-            Label::around_dot(EYE + on_near, dot_px, Vec2::ONE, "image", ON_NEAR, 0, 4, 6.0);
+            Label::around_dot(at(on_near), dot_px, Vec2::ONE, "image", ON_NEAR, 0, 4, 6.0);
         frame.first_clear_label(view, candidates);
-        // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z, all
-        // scaled (with its place right of the eye) by k, how much wider the far plane is than
-        // at the page's defaults: beside a wide or deep frustum the box keeps its share of the
-        // picture instead of shrinking to a few pixels.
-        let k = (half_h(self.far) * Self::ASPECT / NDC_FAR_HALF_WIDTH).max(1.0);
-        let ndc_to_world = |v: Vec3| EYE + (NDC_ORIGIN - EYE + Vec3::new(v.x, v.y, -2.0 * v.z)) * k;
+        // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z, right
+        // of the eye.
+        let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
         let box_corners: Vec<Vec3> = [0.0, 1.0]
             .iter()
             .flat_map(|&z| {
@@ -669,10 +690,10 @@ impl Frustum {
             })
             .map(ndc_to_world)
             .collect();
-        for k in 0..4 {
-            frame.wide_line(box_corners[k], box_corners[(k + 1) % 4], NEAR, w);
-            frame.wide_line(box_corners[4 + k], box_corners[4 + (k + 1) % 4], FAR, w);
-            frame.wide_line(box_corners[k], box_corners[4 + k], NDC_BOX, 1.5);
+        for i in 0..4 {
+            frame.wide_line(box_corners[i], box_corners[(i + 1) % 4], NEAR, w);
+            frame.wide_line(box_corners[4 + i], box_corners[4 + (i + 1) % 4], FAR, w);
+            frame.wide_line(box_corners[i], box_corners[4 + i], NDC_BOX, 1.5);
         }
         // The box's labels go where they cover none of its lines (three meet at each corner,
         // and the point's dot moves among them) on the last frame's view, each clear of those
@@ -713,13 +734,13 @@ impl Frustum {
         frame.keep_in_view.push(EYE);
         frame.keep_in_view.extend(far);
         frame.keep_in_view.extend(near);
-        frame.keep_in_view.push(EYE + self.point_at(1.0));
+        frame.keep_in_view.push(at(self.point_at(1.0)));
         frame.keep_in_view.extend(box_corners.iter().copied());
         // Room for the depth labels right of the box's right-hand corners, the box being the
         // rightmost thing in the page's view.
         frame
             .keep_in_view
-            .extend([2, 6].map(|i| box_corners[i] + Vec3::X * 1.4 * k));
+            .extend([2, 6].map(|i| box_corners[i] + Vec3::X * 1.4));
         let d = self.distance_at(s);
         let mut note = format!(
             "Distance d = {} m: depth {} (wgpu), {} (OpenGL); the wgpu depth passes 0.5 at d = {} m. {}",

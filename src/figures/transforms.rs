@@ -208,6 +208,11 @@ impl SingleShape {
         let stage = in_range("stage", stage, 0.0, 2.0)?;
         frame.grid(10, 0.5);
         frame.labelled_axes(Mat4::IDENTITY, 1.0);
+        // The world axes' names rank with the orders' names, which then search round them: at
+        // the start R·T's box sits under the y axis's tip.
+        for l in &mut frame.labels {
+            l.priority = 3;
+        }
         let (shown, ghost) = (self.order, self.order.other());
         let m = self.matrix_at(shown, stage);
         frame.mesh(MeshId::CUBE, m * Mat4::from_scale(BOX_HALF), shown.color());
@@ -1174,6 +1179,9 @@ impl ScaleComparison {
                 Label::around_dot(anchor, dot_px, toward, &text, color, priority, 10, 8.0);
             frame.first_clear_label_by(view, 2.0, candidates, off_points(&boxes, 2.0));
         }
+        // Seen from the side, where the shear shows: a drag pans instead of turning the
+        // outlines edge-on (and each title away from its figure).
+        frame.flat = true;
         frame.keep_box_in_view(
             Vec3::new(-0.45, 0.0, -COMPARISON_OFFSET - 0.5),
             Vec3::new(0.45, 2.05, COMPARISON_OFFSET + 0.5),

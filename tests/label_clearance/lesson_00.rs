@@ -459,6 +459,15 @@ fn lesson_00_ndc_box_keeps_its_size_beside_a_wide_frustum() {
                 .map(|p| project_to_canvas(view_proj, size, Vec3::from(p)).unwrap().x)
                 .collect();
             assert_eq!(xs.len(), 8, "four teal edges");
+            // The whole frustum and the box fit the canvas (the camera's distance is capped,
+            // so a frustum drawn at its full width would run off the edges).
+            for p in &frame.keep_in_view {
+                let c = project_to_canvas(view_proj, size, *p).unwrap();
+                assert!(
+                    c.cmpge(Vec2::ZERO).all() && c.cmple(size).all(),
+                    "fov {fov}, z_near {near}, z_far {far} on {size}: {p} off the canvas at {c}"
+                );
+            }
             let width = xs.iter().fold(f32::MIN, |m, &x| m.max(x))
                 - xs.iter().fold(f32::MAX, |m, &x| m.min(x));
             assert!(

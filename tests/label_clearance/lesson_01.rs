@@ -155,7 +155,7 @@ fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
     for order in [Order::RotateFirst] {
         let mut scene = SingleShape::new();
         scene.set_order(order);
-        for stage in [0.0, 0.36, 1.0, 1.5, 2.0] {
+        for stage in [0.0, 0.1, 0.36, 1.0, 1.5, 2.0] {
             for size in CANVASES {
                 let (frame, camera) = drawn_for_view(
                     &mut scene,
@@ -169,11 +169,22 @@ fn lesson_01_order_names_keep_off_the_boxes_axes_and_paths() {
                 let names: Vec<_> = frame
                     .labels
                     .iter()
-                    .filter(|l| l.priority == 3)
+                    .filter(|l| l.text == "T·R" || l.text == "R·T")
                     .cloned()
                     .collect();
                 assert_eq!(names.len(), 2);
                 assert!(frame.labels.iter().all(|l| l.priority <= 3));
+                // Each name stays apart from the world axes' names ("y R·T" would read as one
+                // string at the y axis's tip).
+                let boxes = label_boxes(&frame, &camera, size);
+                for (text, rect) in boxes.iter().filter(|(t, _)| t == "T·R" || t == "R·T") {
+                    for (axis, other) in boxes.iter().filter(|(t, _)| t.len() == 1) {
+                        assert!(
+                            !rect.overlaps(other, 2.0),
+                            "01 orders, stage {stage} on {size}: {text:?} touches {axis:?}"
+                        );
+                    }
+                }
                 let mut names_only = frame.clone();
                 names_only.labels = names.clone();
                 assert_clear(

@@ -89,3 +89,40 @@ fn lesson_02b_path_names_keep_off_the_ghosts_and_balls_when_orbited() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_02b_straight_line_name_sits_under_its_row_at_the_page_camera() {
+    // Figure 1 at the page's camera and settings (12 ghosts, the straight line beside), both
+    // canvases, times when the twin's ball is near a key: "straight line" is shown where the
+    // figure put it, just under the middle of the twin's row of ghosts (the line from
+    // (-2.5, 0.3, -1.4) to (2.5, 0.3, -1.4)), not by the arc's end where the two paths' ghosts
+    // meet.
+    use inbetween::figures::expressive::Spacing;
+    for time in [0.0, 0.2, 1.4, 2.9] {
+        for size in CANVASES {
+            let mut scene = Spacing::new();
+            let (frame, camera) = drawn_for_view(
+                &mut scene,
+                [0.0, 0.9, 0.0, 7.5, 0.0, 0.35],
+                size,
+                |fig, out| {
+                    fig.draw(out, time).unwrap();
+                },
+                |fig, cam, px| fig.set_view(cam, px.x, px.y),
+            );
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let mid = project_to_canvas(view_proj, size, Vec3::new(0.0, 0.3, -1.4)).unwrap();
+            let i = frame.labels.iter().position(|l| l.text == "straight line").unwrap();
+            let (_, b, p) = &layout(&frame, &camera, size)[i];
+            let at = format!("t {time} on {size}");
+            assert!(p.shown && p.leader_to.is_none(), "{at}: moved");
+            let centre = p.top_left + 0.5 * b.size;
+            assert!((centre.x - mid.x).abs() < 20.0, "{at}: {centre} beside {mid}");
+            assert!(
+                (mid.y..mid.y + 40.0).contains(&p.top_left.y),
+                "{at}: {:?} under {mid}",
+                p.top_left
+            );
+        }
+    }
+}
