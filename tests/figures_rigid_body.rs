@@ -1233,5 +1233,12 @@ fn the_drops_arrows_show_over_the_boxes_and_the_ground() {
             .collect();
         assert!(arrows.len() >= 4, "j n, v before and after, ω after");
         assert!(arrows.iter().all(|s| s.depth_bias == ON_TOP));
+        // v is drawn after ω: where they lie on one line on screen, v shows.
+        let last_teal = arrows.iter().rposition(|s| Vec3::from_slice(&s.color) == palette::TEAL);
+        let first_blue = arrows.iter().position(|s| {
+            let c = Vec3::from_slice(&s.color);
+            c == palette::BLUE || c == palette::BLUE.lerp(Vec3::ONE, 0.55)
+        });
+        assert!(last_teal < first_blue, "{last_teal:?} {first_blue:?}");
     }
 }

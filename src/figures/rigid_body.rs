@@ -1116,20 +1116,10 @@ impl ImpulseFigure {
         let o = hit.centre;
         frame.marker(o, DOT_PX, palette::DARK);
         // Each arrow with its name, the name always in the full colour: "before" says which
-        // one it is, and faded text does not read on the grid.
+        // one it is, and faded text does not read on the grid. ω first, so that v, drawn after
+        // it, shows where the two lie on one line on screen (v is straight down, ω after a
+        // corner hit often points down the screen too, and reaches further).
         let arrows = [
-            (
-                hit.velocity_before * VELOCITY_SCALE,
-                faded(palette::BLUE),
-                palette::BLUE,
-                "v before",
-            ),
-            (
-                hit.velocity_after * VELOCITY_SCALE,
-                palette::BLUE,
-                palette::BLUE,
-                "v after",
-            ),
             (
                 hit.omega_before * OMEGA_SCALE,
                 faded(palette::TEAL),
@@ -1141,6 +1131,18 @@ impl ImpulseFigure {
                 palette::TEAL,
                 palette::TEAL,
                 "ω after",
+            ),
+            (
+                hit.velocity_before * VELOCITY_SCALE,
+                faded(palette::BLUE),
+                palette::BLUE,
+                "v before",
+            ),
+            (
+                hit.velocity_after * VELOCITY_SCALE,
+                palette::BLUE,
+                palette::BLUE,
+                "v after",
             ),
         ];
         // The impulse pushes the box up at the corner: drawn from below the ground up to the
