@@ -953,7 +953,7 @@ impl FreeFallFigure {
         // Verlet, explicit Euler, semi-implicit Euler: the sign of the name's offset down the
         // screen from its dot that it tries first.
         for (k, down) in [(2, 0.0), (0, -1.0), (1, 1.0)] {
-            let candidates = crate::draw::Label::around_dot(
+            let all = crate::draw::Label::around_dot(
                 self.paths[k][k_now],
                 STEP_DOT_PX,
                 glam::Vec2::new(1.0, down),
@@ -963,12 +963,13 @@ impl FreeFallFigure {
                 8,
                 12.0,
             );
-            let (own, rest): (Vec<_>, Vec<_>) =
-                candidates.into_iter().enumerate().partition(|(i, l)| {
-                    let y = l.offset_px.y;
-                    *i < 24 && (y.abs() < 1.0) == (down == 0.0) && y * down >= 0.0
-                });
-            let ordered = own.into_iter().chain(rest).map(|(_, l)| l);
+            let own = |l: &&crate::draw::Label| {
+                let y = l.offset_px.y;
+                (y.abs() < 1.0) == (down == 0.0) && y * down >= 0.0
+            };
+            // The own sides 0, 12 and 24 px out (the first 24 places, 8 sides each), then every
+            // place (an own place tried twice is no clearer the second time).
+            let ordered = all[..24].iter().filter(own).chain(&all).cloned();
             frame.first_clear_label_by(view, 2.0, ordered, |_| true);
         }
     }
