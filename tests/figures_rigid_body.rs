@@ -1161,3 +1161,84 @@ fn the_throws_l_and_omega_are_wider_than_the_other_arrows() {
         );
     }
 }
+
+#[test]
+fn after_the_hit_the_plotted_corner_swings_down_with_the_boxs_turn_and_bounces_again() {
+    // Figure 4's caption, at the page's defaults (tilt 20°, e = 0.5, 1 m): the corner that hit
+    // leaves at −e times its approach; within 0.05 s a neighbouring corner lands and turns the
+    // box the other way, so the corner that hit swings down at about 5 m/s while the centre
+    // falls at under 0.2 m/s (the plot's velocity is mostly the turn's, ω × r); a step or two
+    // later it lands again and bounces up.
+    let mut f = ImpulseFigure::new();
+    f.advance_to(1.0).unwrap();
+    let hit = *f.impact_details().unwrap();
+    assert!((hit.normal_after + 0.5 * hit.normal_before).abs() < 1e-3);
+    let rows: Vec<[f32; 4]> = f.samples().to_vec();
+    let (k, dip) = rows
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r[0] > hit.time_sec && r[0] < hit.time_sec + 0.05)
+        .min_by(|a, b| a.1[2].total_cmp(&b.1[2]))
+        .unwrap();
+    assert!((-5.5..-4.5).contains(&dip[2]), "the corner swings down at {} m/s", dip[2]);
+    let mut at_dip = ImpulseFigure::new();
+    at_dip.advance_to(dip[0]).unwrap();
+    let centre = at_dip.body().velocity.y;
+    assert!(centre.abs() < 0.2, "the centre moves at {centre} m/s");
+    let bounce = rows[k..].iter().find(|r| r[2] > 0.0).unwrap();
+    assert!(bounce[0] - dip[0] < 0.035, "bounces at {} s", bounce[0]);
+}
+
+#[test]
+fn the_throws_l_reaches_past_omegas_tip() {
+    // ω lies a few degrees off L (5° at the page's default 0.3 s): L is drawn longer than ω's
+    // reach along it, so its last part and head stand clear past ω's tip at every step, for
+    // spins and tilts across the sliders. The names sit at the tips.
+    use inbetween::figures::rigid_body::THROW_ARROW_M;
+    for (spin, tilt) in [(10.0, 20.0), (15.0, 5.0), (5.0, 60.0), (15.0, 80.0)] {
+        let mut f = ThrowFigure::new();
+        f.set_throw(spin, tilt).unwrap();
+        for k in 0..=12 {
+            f.advance_to(f.duration_sec() * k as f32 / 12.0).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            let tip = |name: &str| {
+                let l = frame.labels.iter().find(|l| l.text.starts_with(name)).unwrap();
+                l.anchor - f.body().position
+            };
+            let (l, w) = (tip("L "), tip("ω "));
+            let past = l.length() - w.dot(l.normalize());
+            assert!(
+                (past - 0.5 * THROW_ARROW_M).abs() < 1e-3,
+                "spin {spin}, tilt {tilt}, step {k}: L ends {past} m past ω's tip"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_drops_arrows_show_over_the_boxes_and_the_ground() {
+    // The impulse, v and ω of the hit start inside the box at the hit and run through the box
+    // now and below the ground: all of them are drawn over everything.
+    use inbetween::draw::ON_TOP;
+    for (tilt, e, height) in [(20.0, 0.5, 1.0), (36.0, 0.2, 1.6)] {
+        let mut f = dropped(tilt, e, height);
+        f.advance_to(1.0).unwrap();
+        let mut frame = Frame::default();
+        f.draw(&mut frame);
+        let arrows: Vec<_> = frame
+            .strokes
+            .iter()
+            .filter(|s| Vec3::from_slice(&s.color) != palette::GREY)
+            .collect();
+        assert!(arrows.len() >= 4, "j n, v before and after, ω after");
+        assert!(arrows.iter().all(|s| s.depth_bias == ON_TOP));
+        // v is drawn after ω: where they lie on one line on screen, v shows.
+        let last_teal = arrows.iter().rposition(|s| Vec3::from_slice(&s.color) == palette::TEAL);
+        let first_blue = arrows.iter().position(|s| {
+            let c = Vec3::from_slice(&s.color);
+            c == palette::BLUE || c == palette::BLUE.lerp(Vec3::ONE, 0.55)
+        });
+        assert!(last_teal < first_blue, "{last_teal:?} {first_blue:?}");
+    }
+}

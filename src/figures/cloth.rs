@@ -167,7 +167,14 @@ impl ClothFigure {
             pins,
             method,
             wind_speed: if preset == Preset::Flag { 6.0 } else { 0.0 },
-            frame_dt: 1.0 / 60.0,
+            // The frame step the page starts the flags with, 16.7 ms, computed as `set_step_ms`
+            // computes it, so that a test steps them exactly as the page does (the drape's page
+            // sets no step and keeps 1/60 s).
+            frame_dt: if preset == Preset::Drape {
+                1.0 / 60.0
+            } else {
+                16.7 / 1000.0
+            },
             sims: Vec::new(),
             frames_done: 0,
             dirty: false,

@@ -939,37 +939,38 @@ impl FreeFallFigure {
         Ok(note)
     }
 
-    /// Names each integrator beside its latest dot, as the text names it: the first side round
-    /// the dot (then 12, 24, … 84 px further out) that covers no dot, path or name already placed,
-    /// on the last frame's view, starting above and right (the throw rises to the right, so the
-    /// paths run below and left of the dots on the way up). The three dots start together and
-    /// part slowly, so only the names tell them apart where the colours overlap.
+    /// Names each integrator beside its latest dot, as the text names it, on the last frame's
+    /// view: the first place round the dot (then 12, 24, … 84 px further out) that keeps 2 px off
+    /// every dot and path and off the names already placed. Up to 24 px out, each name tries
+    /// the sides it belongs on first: velocity Verlet's dot is on the parabola and its name
+    /// beside it (placed first), explicit Euler's dot is above the parabola and its name above,
+    /// semi-implicit Euler's below and its name below. Where the three dots lie on one spot
+    /// (the first steps) the names then stack in the order of their dots.
     fn name_integrators(&self, frame: &mut Frame, k_now: usize) {
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
-        let sides = [
-            (1.0, -1.0),
-            (1.0, 1.0),
-            (-1.0, -1.0),
-            (-1.0, 1.0),
-            (0.0, -1.0),
-            (0.0, 1.0),
-            (1.0, 0.0),
-            (-1.0, 0.0),
-        ]
-        .map(|(x, y)| glam::Vec2::new(x, y));
-        for (k, integrator) in Integrator::ALL.iter().enumerate() {
-            let dot = self.paths[k][k_now];
-            let color = INTEGRATOR_COLORS[k];
-            let candidates = (0..8).map(|step| 12.0 * step as f32).flat_map(|out_px| {
-                sides.map(|side| {
-                    let clear_px = STEP_DOT_PX + 2.0 * out_px;
-                    let name = integrator.name().to_string();
-                    crate::draw::Label::off_dot(dot, clear_px, side, name, color, 0)
-                })
-            });
-            frame.first_clear_label(view, candidates);
+        // Verlet, explicit Euler, semi-implicit Euler: the sign of the name's offset down the
+        // screen from its dot that it tries first.
+        for (k, down) in [(2, 0.0), (0, -1.0), (1, 1.0)] {
+            let all = crate::draw::Label::around_dot(
+                self.paths[k][k_now],
+                STEP_DOT_PX,
+                glam::Vec2::new(1.0, down),
+                Integrator::ALL[k].name(),
+                INTEGRATOR_COLORS[k],
+                0,
+                8,
+                12.0,
+            );
+            let own = |l: &&crate::draw::Label| {
+                let y = l.offset_px.y;
+                (y.abs() < 1.0) == (down == 0.0) && y * down >= 0.0
+            };
+            // The own sides 0, 12 and 24 px out (the first 24 places, 8 sides each), then every
+            // place (an own place tried twice is no clearer the second time).
+            let ordered = all[..24].iter().filter(own).chain(&all).cloned();
+            frame.first_clear_label_by(view, 2.0, ordered, |_| true);
         }
     }
 
@@ -1047,9 +1048,6 @@ pub const SPRING_DRAW_MAX_M: f32 = 2.4;
 const SPRING_WALL_X: f32 = -2.8;
 /// The rows of the three masses, metres along z (explicit Euler at the back).
 const SPRING_ROWS_Z: [f32; 3] = [-0.9, 0.0, 0.9];
-/// How far behind its row (along −z) an integrator's name sits, metres: about half-way to the
-/// next row, clear of the coils (±0.1 m).
-const SPRING_LABEL_BEHIND_M: f32 = 0.5;
 /// Radius of each spring's mass, metres.
 const SPRING_MASS_M: f32 = 0.15;
 
@@ -1211,11 +1209,11 @@ impl SpringFigure {
             EXACT_COLOR,
             1,
         );
-        // Each name just right of its wall, behind its row (up the screen from the front),
-        // reading along the spring; on the last frame's view, the first place round there (then
-        // further out) that covers no wall (its corners and centre), mass (its centre and six
-        // points of its rim), coil, bar, tick or name placed before it: orbited, the rows line
-        // up and the walls and a mass cut short at the wall come under the names.
+        // Each name beside its mass, above and right of it first (behind its row, up the screen
+        // from the front, clear of its coil on the left); on the last frame's view, the first
+        // place round the mass (then further out) that covers no wall (its corners and centre),
+        // mass (its centre and six points of its rim), coil, bar, tick or name placed before
+        // it: orbited, the rows line up and the walls and other masses come near the names.
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
@@ -1237,12 +1235,14 @@ impl SpringFigure {
             solid.extend([Vec3::X, Vec3::Y, Vec3::Z].map(|d| mass - d * SPRING_MASS_M));
         }
         for (i, z) in SPRING_ROWS_Z.into_iter().enumerate() {
-            let anchor = Vec3::new(SPRING_WALL_X + 0.3, 0.0, z - SPRING_LABEL_BEHIND_M);
+            let x = self.states[i][k]
+                .0
+                .clamp(-SPRING_DRAW_MAX_M, SPRING_DRAW_MAX_M);
             let name = Integrator::ALL[i].name();
             let candidates = crate::draw::Label::around_dot(
-                anchor,
+                Vec3::new(x, y, z),
                 0.0,
-                glam::Vec2::X,
+                glam::Vec2::new(1.0, -1.0),
                 name,
                 INTEGRATOR_COLORS[i],
                 0,

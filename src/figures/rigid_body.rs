@@ -328,9 +328,12 @@ pub const THROW_VELOCITY: Vec3 = Vec3::new(1.0, 6.0, 0.0);
 /// semi-implicit Euler step then lands within a millimetre of the exact parabola, and the
 /// rotation's energy stays within 3 % at the top spin (measured in the tests).
 pub const THROW_SUBSTEPS: usize = 50;
-/// Length of the drawn `L` (m); ω is drawn at the scale that makes its component along `L` as
-/// long, so ω's tip moves on the plane across `L` through `L`'s tip.
+/// ω is drawn at the scale that makes its component along `L` this long (m), so ω's tip moves on
+/// the plane across `L` this far from the centre.
 pub const THROW_ARROW_M: f32 = 1.0;
+/// Length of the drawn `L` (m): half as long again as ω's reach along it, so that L's last third
+/// and its head stand clear past ω's tip, where ω lies a few degrees off L and hides the rest.
+pub const THROW_L_M: f32 = 1.5;
 
 /// The world direction of the thrown box's angular momentum: mostly up, leaning towards the
 /// default camera so the arrow and the cone around it are seen from the side.
@@ -537,7 +540,7 @@ impl ThrowFigure {
         frame.grid(16, 0.25);
         let t_end = self.duration_sec();
         let apex = Self::parabola(0.5 * t_end);
-        let reach = THROW_HALF.length().max(THROW_ARROW_M + 0.2);
+        let reach = THROW_HALF.length().max(THROW_L_M + 0.2);
         frame.keep_box_in_view(
             THROW_START.min(Self::parabola(t_end)) - Vec3::new(reach, THROW_START.y, reach),
             THROW_START.max(Self::parabola(t_end)).max(apex) + Vec3::splat(reach),
@@ -568,12 +571,12 @@ impl ThrowFigure {
                  without turning."
             );
         }
-        let l_tip = at + THROW_ARROW_M * l_dir;
+        let l_tip = at + THROW_L_M * l_dir;
         frame.arrow(at, l_tip, palette::PURPLE, 0.08);
         // L and ω wider than other arrows (up to their heads): they are what the figure shows,
         // often a few degrees apart on screen.
         frame.wide_line(at, l_tip - 0.08 * l_dir, palette::PURPLE, THROW_SHAFT_PX);
-        // ω at the scale that puts its tip on the plane across L through L's tip.
+        // ω at the scale that puts its tip on the plane across L at THROW_ARROW_M.
         let scale = THROW_ARROW_M / along;
         let trail: Vec<Vec3> = self.omegas.iter().map(|w| at + scale * *w).collect();
         let light = palette::TEAL.lerp(Vec3::ONE, 0.45);
@@ -601,7 +604,7 @@ impl ThrowFigure {
 }
 
 impl ThrowFigure {
-    /// Names L and ω at their tips, which lie a few pixels apart: each on the side of its tip
+    /// Names L and ω at their tips, which can lie close on screen: each on the side of its tip
     /// away from the other's (on screen, for the last frame's view), else the first side round
     /// its tip that covers no line, dot or the other's name. The names are spelt out: a lone
     /// letter reads as a speck beside an arrow head.
@@ -1113,20 +1116,10 @@ impl ImpulseFigure {
         let o = hit.centre;
         frame.marker(o, DOT_PX, palette::DARK);
         // Each arrow with its name, the name always in the full colour: "before" says which
-        // one it is, and faded text does not read on the grid.
+        // one it is, and faded text does not read on the grid. ω first, so that v, drawn after
+        // it, shows where the two lie on one line on screen (v is straight down, ω after a
+        // corner hit often points down the screen too, and reaches further).
         let arrows = [
-            (
-                hit.velocity_before * VELOCITY_SCALE,
-                faded(palette::BLUE),
-                palette::BLUE,
-                "v before",
-            ),
-            (
-                hit.velocity_after * VELOCITY_SCALE,
-                palette::BLUE,
-                palette::BLUE,
-                "v after",
-            ),
             (
                 hit.omega_before * OMEGA_SCALE,
                 faded(palette::TEAL),
@@ -1139,16 +1132,30 @@ impl ImpulseFigure {
                 palette::TEAL,
                 "ω after",
             ),
+            (
+                hit.velocity_before * VELOCITY_SCALE,
+                faded(palette::BLUE),
+                palette::BLUE,
+                "v before",
+            ),
+            (
+                hit.velocity_after * VELOCITY_SCALE,
+                palette::BLUE,
+                palette::BLUE,
+                "v after",
+            ),
         ];
         // The impulse pushes the box up at the corner: drawn from below the ground up to the
         // contact point (from the corner up it would be hidden inside the box).
+        // The hit's arrows are drawn over everything: they start inside the box at the hit and
+        // run through the box now and below the ground, which would hide most of them.
         let j_tail = hit.point - Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE).max(0.05);
-        frame.arrow(j_tail, hit.point, palette::RED, 0.06);
+        frame.arrow_on_top(j_tail, hit.point, palette::RED, 0.06);
         frame.marker_on_top(hit.point, 12.0, palette::DARK);
         let mut names = vec![(j_tail.lerp(hit.point, 0.5), Vec3::X, "j n", palette::RED)];
         for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
-                frame.arrow(o, o + d, color, 0.06);
+                frame.arrow_on_top(o, o + d, color, 0.06);
                 names.push((o + d, d, name, text_color));
             }
         }

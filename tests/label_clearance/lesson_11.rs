@@ -8,18 +8,25 @@ fn lesson_11_spring_labels_keep_off_the_walls_springs_and_bars() {
     // step and the caption's 0.1 s: the three names and "exact" keep off the coils, the exact
     // bars, the rest and turning-point ticks, and the walls (the grey boxes the springs hang
     // from, checked at their eight corners and centre). At times when the exact mass is at or
-    // right of the rest position: at 760 × 380 the longest name reaches about x = −0.3 m,
-    // which the exact bar crosses later in each swing.
+    // right of the rest position. As on the page, the figure places the names for the view of
+    // the frame before.
     use inbetween::draw::palette;
     use inbetween::figures::particles::SpringFigure;
     for dt in [0.02, 0.1] {
         let mut scene = SpringFigure::new();
         scene.set_dt(dt).unwrap();
         for time_sec in [0.0, 0.25, 0.5, 2.5] {
-            let mut frame = Frame::default();
-            scene.draw(&mut frame, time_sec).unwrap();
             for size in CANVASES {
-                let camera = page_camera(scene.view(), &frame, size);
+                let view = scene.view();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out, time_sec).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
                 let name = format!("11 spring, dt {dt}, t {time_sec}");
                 assert_clear(&name, &frame, &camera, size);
                 let view_proj = camera.projection(size.x / size.y) * camera.view();
@@ -99,15 +106,19 @@ fn assert_named_beside_dots(
 fn lesson_11_integrators_are_named_beside_their_dots() {
     // Figure 2 at its page camera (lessons/11-particles/lesson.js), both canvases, through the
     // throw, at the page's step and across the slider: each integrator's name (as the text
-    // names it) beside its latest dot, at most 60 px off it, the three 6 px apart and off every
-    // dot and path. As on the page, the figure places them for the view of the frame before.
+    // names it) beside its latest dot, at most 72 px off it, the three 6 px apart and off every
+    // dot and path. At the page's step, over the first steps, where the three dots lie on one
+    // spot, the names stack in the order of the dots: explicit Euler (above the parabola) over
+    // velocity Verlet over semi-implicit Euler. Also on the 920 × 420 canvas of the page at
+    // 1100 px (the page test's figure screenshots). As on the page, the figure places them for
+    // the view of the frame before.
     use inbetween::figures::particles::FreeFallFigure;
     let view = [-0.3, 1.3, 0.0, 5.5, 0.0, 0.1];
     let mut failures = Vec::new();
     for dt in [0.1, 0.03, 0.05, 0.2, 0.3] {
         for k in 0..=10 {
             let t = 1.3 * k as f32 / 10.0;
-            for size in CANVASES {
+            for size in CANVASES.into_iter().chain([Vec2::new(920.0, 420.0)]) {
                 let mut f = FreeFallFigure::new();
                 f.set_dt(dt).unwrap();
                 let (frame, camera) = drawn_for_view(
@@ -122,12 +133,25 @@ fn lesson_11_integrators_are_named_beside_their_dots() {
                 let texts: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
                 assert_eq!(
                     texts,
-                    ["explicit Euler", "semi-implicit Euler", "velocity Verlet"]
+                    ["velocity Verlet", "explicit Euler", "semi-implicit Euler"]
                 );
                 let name = format!("11 free fall, dt {dt} s, t {t} s");
                 failures.extend(failure_of(|| {
-                    assert_named_beside_dots(&name, &frame, &camera, size, 60.0)
+                    assert_named_beside_dots(&name, &frame, &camera, size, 72.0)
                 }));
+                if dt == 0.1 && t < 0.3 {
+                    let middle = |text: &str| {
+                        let (_, r) = label_boxes(&frame, &camera, size)
+                            .into_iter()
+                            .find(|(l, _)| l == text)
+                            .unwrap();
+                        r.min.y + 0.5 * r.size.y
+                    };
+                    let ys = ["explicit Euler", "velocity Verlet", "semi-implicit Euler"].map(middle);
+                    failures.extend(failure_of(|| {
+                        assert!(ys[0] < ys[1] && ys[1] < ys[2], "{name} on {size}: names at {ys:?}")
+                    }));
+                }
             }
         }
     }
@@ -183,8 +207,9 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
     // drag, −1.2 rad and 0.3 rad, looks along the springs: the rows line up on the screen), both
     // canvases, at the default step, the caption's 0.1 s and 0.16 s (explicit Euler's mass cut
     // short at the wall): the three names are shown where the figure put them (so none sits on
-    // another), keep off every dot and line, and cover no wall (its corners and centre) and no
-    // mass (its centre and six points of its rim). As on the page, the figure places them for
+    // another), keep off every dot and line, cover no wall (its corners and centre) and no mass
+    // (its centre and six points of its rim), and each lies beside its own mass (its box 40 px
+    // from it at most, 72 px orbited). As on the page, the figure places them for
     // the view of the frame before.
     use inbetween::draw::palette;
     use inbetween::figures::particles::SpringFigure;
@@ -255,6 +280,18 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
                     failures.extend(failure_of(|| {
                         assert_names_cover_none(&name, size, &boxes, &NAMES, &solid, "a wall or mass")
                     }));
+                    // Each name beside the mass it names: its box within 40 px of the mass's
+                    // centre on screen at the page's view, 72 px orbited, where the rows close
+                    // up round the middle one (the masses are drawn in the names' order).
+                    let reach = if (yaw, pitch) == (0.0, 1.0) { 40.0 } else { 72.0 };
+                    for (n, p) in NAMES.iter().zip(&frame.points) {
+                        let c = project_to_canvas(view_proj, size, Vec3::from(p.center)).unwrap();
+                        let (_, rect) = boxes.iter().find(|(t, _)| t == n).unwrap();
+                        let gap = rect.nearest(c).distance(c);
+                        failures.extend(failure_of(|| {
+                            assert!(gap <= reach, "{name} on {size}: {n} {gap} px from its mass")
+                        }));
+                    }
                 }
             }
         }
