@@ -1107,6 +1107,35 @@ fn a_new_quiz_round_regenerates_its_terrains_once() {
 }
 
 #[test]
+fn each_quiz_letter_is_nearest_its_own_terrain() {
+    // Between the rows a letter reads as the tile beside it in the other row: at the page's
+    // camera and orbited as the page test does, each letter's box is nearer its own terrain's
+    // middle, on the canvas, than any other terrain's.
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let mut q = Quiz::new();
+    q.set_answer(4, 3).unwrap();
+    let mut f = Frame::default();
+    let meshes: Vec<MeshId> = (0..6).map(MeshId).collect();
+    q.draw(&mut f, &meshes);
+    for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+        for (yaw, pitch) in [(0.0, 0.8), (-1.216, 1.104), (1.216, 1.104), (-0.6, 0.5)] {
+            let mut camera = OrbitCamera::from_view([0.0, -0.2, 0.2, 8.2, yaw, pitch]);
+            camera.fit(&f.fit_points(), size, FIT_PAD_PX);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let middle = |i: usize| project_to_canvas(view_proj, size, Quiz::placement(i)).unwrap();
+            for (i, label) in f.labels.iter().enumerate() {
+                let r = label.first_place(view_proj, size).unwrap();
+                let c = r.min + 0.5 * r.size;
+                let nearest = (0..6)
+                    .min_by(|&a, &b| c.distance(middle(a)).total_cmp(&c.distance(middle(b))))
+                    .unwrap();
+                assert_eq!(nearest, i, "{:?} at ({yaw}, {pitch}) on {size}", label.text);
+            }
+        }
+    }
+}
+
+#[test]
 fn the_fractals_figure_declares_a_view_that_holds_both_shapes() {
     // Without a declared view a narrow canvas would cut the snowflake's left and the triangle's right.
     let (lo, hi) = Fractals::view_box();

@@ -2195,7 +2195,10 @@ impl Quiz {
                     color = if right { palette::GREEN } else { palette::RED };
                 }
             }
-            frame.label(at + Vec3::new(0.0, 0.0, 1.15), text, color);
+            // Centred off the row's outer edge (the back row's far edge, the front row's near
+            // one): between the rows a name reads as the other row's tile's.
+            let out = if i < 3 { -1.15 } else { 1.15 };
+            frame.label_off_dot(at + Vec3::Z * out, 0.0, Vec2::ZERO, text, color, 0);
         }
         // All six terrains stay in view from any orbit: their squares, from the lowest ground
         // to the highest peak among them (set 4's h = 0.8 is the tallest).
@@ -2205,8 +2208,8 @@ impl Quiz {
             .flat_map(|t| &t.positions)
             .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
         frame.keep_box_in_view(
-            Self::placement(0) + Vec3::new(-1.0, lo, -1.0),
-            Self::placement(5) + Vec3::new(1.0, hi, 1.0),
+            Self::placement(0) + Vec3::new(-1.0, lo, -1.15),
+            Self::placement(5) + Vec3::new(1.0, hi, 1.15),
         );
         if !self.checked {
             let answered = self.answers.iter().filter(|a| a.is_some()).count();
