@@ -500,6 +500,19 @@ fn fractals_count_segments_and_triangles() {
     assert!(grey_on_right
         .iter()
         .all(|(a, b)| on_orange(*a) && on_orange(*b) && on_orange((*a + *b) / 2.0)));
+    // What the step adds is drawn again over the grey (nearer the camera), so it shows even where
+    // the step is finer than a pixel: the 24 bump sides and the 3 middle triangles' 9 sides, none
+    // of them on a grey segment.
+    let grey: Vec<(Vec3, Vec3)> = f.segments_of(palette::GREY).collect();
+    for (color, count) in [(palette::BLUE, 24), (palette::ORANGE, 9)] {
+        let over: Vec<(Vec3, Vec3)> = f.segments_of(color).filter(|(a, _)| a.z > 0.01).collect();
+        assert_eq!(over.len(), count);
+        assert!(over.iter().all(|(a, b)| !grey.iter().any(|(c, d)| {
+            let (m, c, d) = (((*a + *b) / 2.0).truncate(), c.truncate(), d.truncate());
+            let t = ((m - c).dot(d - c) / (d - c).length_squared()).clamp(0.0, 1.0);
+            (c + t * (d - c) - m).length() < 1e-4
+        })));
+    }
 }
 
 #[test]
@@ -524,9 +537,12 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     // plot still shows octave 6 itself (grey on the page).
     s.set_band_limit(true);
     s.take_dirty();
-    assert!(s
-        .draw(&mut f, MeshId(3))
-        .contains("left out of the surface"));
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(
+        n.contains("left out of the surface: what stays rough there is octave 5, whose cells are \
+             0.031 m, 3.0 vertex spacings, wide."),
+        "{n}"
+    );
     let perm = inbetween::noise::Permutation::perlin();
     let t = &s.terrains()[0];
     let five = inbetween::noise::Fractal {
@@ -540,6 +556,12 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     let rows = s.sample_octaves(3).unwrap();
     let sum5: f32 = rows[1][1..=6].iter().sum();
     assert!((rows[1][11] - sum5).abs() < 1e-6 && rows[1][7].is_finite());
+    // At ω = 3.37 the finest octave kept, 3, is a bed of spikes 2.5 spacings wide: the note
+    // names it, so the spikes left are not taken for the octaves left out.
+    s.set_params(7.0, 0.8, 3.37).unwrap();
+    let n = s.draw(&mut f, MeshId(3));
+    assert!(n.contains("Octaves 4 to 7 are finer") && n.contains("octave 3, whose cells are 0.026 m, 2.5 vertex"), "{n}");
+    s.set_params(7.0, 0.8, 2.0).unwrap();
     s.set_band_limit(false);
     assert!(s.take_dirty(), "the toggle regenerates");
     // With nothing past the limit, the ticked box says so instead of changing nothing silently.
@@ -547,7 +569,7 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     s.set_band_limit(true);
     let n = s.draw(&mut f, MeshId(3));
     assert!(
-        n.contains("shows octaves up to 5, so none of these is left out"),
+        n.contains("shows octaves up to 5, so none of these is left out: raise N"),
         "{n}"
     );
 }
@@ -1082,6 +1104,35 @@ fn a_new_quiz_round_regenerates_its_terrains_once() {
     assert!(!q.take_dirty(), "once");
     let after: Vec<Vec<Vec3>> = q.terrains().iter().map(|t| t.positions.clone()).collect();
     assert_ne!(before, after);
+}
+
+#[test]
+fn each_quiz_letter_is_nearest_its_own_terrain() {
+    // Between the rows a letter reads as the tile beside it in the other row: at the page's
+    // camera and orbited as the page test does, each letter's box is nearer its own terrain's
+    // middle, on the canvas, than any other terrain's.
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let mut q = Quiz::new();
+    q.set_answer(4, 3).unwrap();
+    let mut f = Frame::default();
+    let meshes: Vec<MeshId> = (0..6).map(MeshId).collect();
+    q.draw(&mut f, &meshes);
+    for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+        for (yaw, pitch) in [(0.0, 0.8), (-1.216, 1.104), (1.216, 1.104), (-0.6, 0.5)] {
+            let mut camera = OrbitCamera::from_view([0.0, -0.2, 0.2, 8.2, yaw, pitch]);
+            camera.fit(&f.fit_points(), size, FIT_PAD_PX);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let middle = |i: usize| project_to_canvas(view_proj, size, Quiz::placement(i)).unwrap();
+            for (i, label) in f.labels.iter().enumerate() {
+                let r = label.first_place(view_proj, size).unwrap();
+                let c = r.min + 0.5 * r.size;
+                let nearest = (0..6)
+                    .min_by(|&a, &b| c.distance(middle(a)).total_cmp(&c.distance(middle(b))))
+                    .unwrap();
+                assert_eq!(nearest, i, "{:?} at ({yaw}, {pitch}) on {size}", label.text);
+            }
+        }
+    }
 }
 
 #[test]

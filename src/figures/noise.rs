@@ -1022,7 +1022,8 @@ impl Octaves {
             Some(last) if last >= k => {
                 if self.band_limit {
                     note += &format!(
-                        " The mesh shows octaves up to {}, so none of these is left out:                          raise N past it to see the difference.",
+                        " The mesh shows octaves up to {}, so none of these is left out: \
+                         raise N past it to see the difference.",
                         last.min(OCTAVES_MAX_N)
                     );
                 }
@@ -1042,10 +1043,17 @@ impl Octaves {
                      spikes (aliasing); they are grey in the plot.{}",
                     format_number(spacing),
                     format_number(2.0 * spacing),
-                    if self.band_limit {
-                        " They are left out of the surface."
-                    } else {
-                        " Tick “leave out octaves finer than the mesh” to drop them."
+                    match (self.band_limit, last) {
+                        // The finest octave kept can still be a bed of narrow spikes (ω = 3.37:
+                        // cells of 2.5 spacings), so the note says which octave they are.
+                        (true, Some(l)) => format!(
+                            " They are left out of the surface: what stays rough there is octave \
+                             {l}, whose cells are {} m, {:.1} vertex spacings, wide.",
+                            format_number(1.0 / self.fractal.omega.powi(l as i32)),
+                            1.0 / (self.fractal.omega.powi(l as i32) * spacing)
+                        ),
+                        (true, None) => " They are left out of the surface.".into(),
+                        _ => " Tick “leave out octaves finer than the mesh” to drop them.".into(),
                     }
                 );
             }
@@ -2187,7 +2195,10 @@ impl Quiz {
                     color = if right { palette::GREEN } else { palette::RED };
                 }
             }
-            frame.label(at + Vec3::new(0.0, 0.0, 1.15), text, color);
+            // Centred off the row's outer edge (the back row's far edge, the front row's near
+            // one): between the rows a name reads as the other row's tile's.
+            let out = if i < 3 { -1.15 } else { 1.15 };
+            frame.label_off_dot(at + Vec3::Z * out, 0.0, Vec2::ZERO, text, color, 0);
         }
         // All six terrains stay in view from any orbit: their squares, from the lowest ground
         // to the highest peak among them (set 4's h = 0.8 is the tallest).
@@ -2197,8 +2208,8 @@ impl Quiz {
             .flat_map(|t| &t.positions)
             .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
         frame.keep_box_in_view(
-            Self::placement(0) + Vec3::new(-1.0, lo, -1.0),
-            Self::placement(5) + Vec3::new(1.0, hi, 1.0),
+            Self::placement(0) + Vec3::new(-1.0, lo, -1.15),
+            Self::placement(5) + Vec3::new(1.0, hi, 1.15),
         );
         if !self.checked {
             let answered = self.answers.iter().filter(|a| a.is_some()).count();
@@ -2326,8 +2337,21 @@ impl Fractals {
         self.draw_depth(frame, d, palette::BLUE, palette::ORANGE, 0.0);
         if self.show_previous && d > 0 {
             // The depth before in grey, nearer the camera than the current one: where a segment
-            // survives the step it shows grey, so the coloured lines left are what the step adds.
+            // survives the step it shows grey.
             self.draw_depth(frame, d - 1, palette::GREY, palette::GREY, 0.01);
+            // What the step adds, in colour over the grey: a step finer than a pixel would
+            // otherwise leave the grey over all of it. Each old segment's bump is the middle
+            // two of its four new segments; each old triangle loses the one between its
+            // sides' midpoints.
+            for t in &self.triangles {
+                let m = [0, 1, 2, 0].map(|i| ((t[i] + t[(i + 1) % 3]) / 2.0).extend(0.02));
+                frame.wide_polyline(&m, palette::ORANGE, FRACTAL_PX);
+            }
+            koch_snowflake(d, KOCH_RADIUS, &mut self.points).expect("depth checked");
+            for bump in self.points[1..].chunks(4) {
+                let pts = bump[..3].iter().map(|p| (*p + KOCH_CENTRE).extend(0.02));
+                frame.wide_polyline(&pts.collect::<Vec<_>>(), palette::BLUE, FRACTAL_PX);
+            }
         }
         // Each name centred under its shape (a side of zero centres the box on the anchor).
         for (x, name, color) in [
@@ -2338,14 +2362,14 @@ impl Fractals {
             frame.label_off_dot(at, 0.0, Vec2::ZERO, name, color, 0);
         }
         let segments = 3 * 4usize.pow(d);
-        // What the grey depth before leaves coloured: the two sides of each new bump, and the
-        // outline of the middle triangle cut out of each old triangle.
+        // What the step adds, drawn in colour over the grey: the two sides of each new bump, and
+        // the outline of the middle triangle cut out of each old triangle.
         let step = if self.show_previous && d > 0 {
             let before = 3 * 4usize.pow(d - 1);
             format!(
                 " Over depth {} in grey, the step turns each of the snowflake's {before} segments \
                  into 4 and adds the {} coloured sides of the new bumps; it cuts the middle out of \
-                 each of the Sierpinski triangle's {} triangles, whose outlines are the orange left.",
+                 each of the Sierpinski triangle's {} triangles, whose outlines are drawn in orange.",
                 d - 1,
                 2 * before,
                 3usize.pow(d - 1)

@@ -539,6 +539,13 @@ impl Interpolation {
         let view = self
             .circle_view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        // The arcs' labels' boxes: a name 6 px before one reads as its first word ("a short
+        // arc"), so the names keep ARC_LABEL_GAP_PX off them.
+        let arc_labels: Vec<_> = view.map_or(Vec::new(), |(view_proj, size)| {
+            (frame.labels.iter())
+                .filter_map(|l| l.first_place(view_proj, size))
+                .collect()
+        });
         for (q, name, color) in keys {
             let p = to_world(q);
             let out = p - CIRCLE_CENTRE;
@@ -550,7 +557,10 @@ impl Interpolation {
                 .unwrap_or(glam::Vec2::new(out.x, -out.y));
             let candidates =
                 crate::draw::Label::around_dot(p, KEY_DOT_PX, toward, name, color, 3, 8, 8.0);
-            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &[]));
+            let clear = super::clear_of(view, &[]);
+            frame.first_clear_label_by(view, 0.0, candidates, |r| {
+                clear(r) && arc_labels.iter().all(|a| !a.overlaps(&r, ARC_LABEL_GAP_PX))
+            });
         }
         let dot = format_number(a.dot(b));
         let target = if used.dot(b) >= 0.0 { "b" } else { "−b" };
@@ -636,6 +646,8 @@ impl Interpolation {
 
 /// Figure 2's dots of a, −a, b and −b, CSS pixels across.
 const KEY_DOT_PX: f32 = 12.0;
+/// How far Figure 2's key names keep from its arcs' labels, CSS pixels: a word's gap and more.
+pub const ARC_LABEL_GAP_PX: f32 = 14.0;
 
 /// Figure 2's circle of unit quaternions: its centre and radius (metres).
 pub const CIRCLE_CENTRE: Vec3 = Vec3::new(0.0, 1.3, 0.0);

@@ -207,6 +207,17 @@ fn lesson_03_circle_key_names_keep_off_the_dots_when_orbited() {
                     failures.extend(failure_of(|| {
                         assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
                     }));
+                    // A name a word's gap before an arc's label reads as its first word ("a
+                    // short arc: Ω = 10°"): the names keep ARC_LABEL_GAP_PX off the arcs' labels.
+                    let boxes = label_boxes(&frame, &camera, size);
+                    let gap = inbetween::figures::rotations::ARC_LABEL_GAP_PX - 0.5;
+                    for (text, r) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
+                        for (arc, a) in boxes.iter().filter(|(t, _)| t.contains(" arc: ")) {
+                            if a.overlaps(r, gap) {
+                                failures.push(format!("{name} on {size}: {text} by {arc}"));
+                            }
+                        }
+                    }
                 }
             }
         }
