@@ -741,8 +741,14 @@ export class Plot {
           time: false,
           distr: 3,
           log: 10,
+          // The low end goes down to a whole multiple of its power of ten (250 to 200): uPlot's
+          // log ticks start at the range's low end and step by that power, so 250 would put them
+          // at 250, 350, ..., 1050, 2100, none of them a round number to label.
           range: (u, lo, hi) => {
-            const r = lo > 0 && hi > lo ? [lo, hi] : window.uPlot.rangeLog(lo || 1, hi || 10, 10, false);
+            const p = 10 ** Math.floor(Math.log10(lo) + 1e-9);
+            const r = lo > 0 && hi > lo
+              ? [Math.floor(lo / p + 1e-9) * p, hi]
+              : window.uPlot.rangeLog(lo || 1, hi || 10, 10, false);
             element.dataset.xRange = r.join(' ');
             return r;
           },
@@ -799,7 +805,11 @@ export class Plot {
       },
       // After each draw, how many numbers the y axis shows (the page test asks for two or more).
       hooks: {
-        draw: [cursorLine, (u) => { element.dataset.yTicks = u.axes[1]._values?.filter((v) => v !== '' && v != null).length ?? 0; }],
+        draw: [cursorLine, (u) => {
+          const shown = (i) => u.axes[i]._values?.filter((v) => v !== '' && v != null).length ?? 0;
+          element.dataset.yTicks = shown(1);
+          element.dataset.xTicks = shown(0);
+        }],
         setCursor: [(u) => this.showReadout(u)],
       },
     }, [[0], ...series.map(() => [0])], element);

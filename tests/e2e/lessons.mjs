@@ -79,12 +79,15 @@ const SWEEP_RENDER_SCALE = Number(process.env.E2E_RENDER_SCALE ?? 0.5);
  * element's data-x-label and data-y-label, and a .plot element that no Plot filled has neither.
  */
 /** After the sweep moved a figure's controls, each of its drawn plots shows at least two numbers
- * on its y axis (a log axis over many decades must still label some of its powers). */
+ * on its y axis, and a log x axis (it records data-x-range) on its x axis: a log axis over many
+ * decades, or over part of one, must still label some of its ticks. */
 async function plotsShowNumbers(figure, i) {
   const ticks = await figure.evaluate((f) => [...f.querySelectorAll('.plot[data-y-ticks]')]
-    .map((p) => [p.dataset.plot, Number(p.dataset.yTicks)]));
-  const bare = ticks.filter(([, n]) => n < 2);
+    .map((p) => [p.dataset.plot, Number(p.dataset.yTicks), p.dataset.xRange ? Number(p.dataset.xTicks) : 2]));
+  const bare = ticks.filter(([, y]) => y < 2);
   assert.deepEqual(bare, [], `figure ${i}: these plots show fewer than two numbers on their y axis`);
+  const bareX = ticks.filter(([, , x]) => x < 2);
+  assert.deepEqual(bareX, [], `figure ${i}: these log x axes show fewer than two numbers`);
 }
 
 async function plotsNameTheirUnits(page) {
