@@ -540,7 +540,7 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     let n = s.draw(&mut f, MeshId(3));
     assert!(
         n.contains("left out of the surface: what stays rough there is octave 5, whose cells are \
-             0.031 m, 3.0 vertex spacings, wide."),
+             3.000 vertex spacings wide."),
         "{n}"
     );
     let perm = inbetween::noise::Permutation::perlin();
@@ -560,7 +560,7 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     // names it, so the spikes left are not taken for the octaves left out.
     s.set_params(7.0, 0.8, 3.37).unwrap();
     let n = s.draw(&mut f, MeshId(3));
-    assert!(n.contains("Octaves 4 to 7 are finer") && n.contains("octave 3, whose cells are 0.026 m, 2.5 vertex"), "{n}");
+    assert!(n.contains("Octaves 4 to 7 are finer") && n.contains("octave 3, whose cells are 2.508 vertex"), "{n}");
     s.set_params(7.0, 0.8, 2.0).unwrap();
     s.set_band_limit(false);
     assert!(s.take_dirty(), "the toggle regenerates");

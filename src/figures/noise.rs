@@ -1043,17 +1043,18 @@ impl Octaves {
                      spikes (aliasing); they are grey in the plot.{}",
                     format_number(spacing),
                     format_number(2.0 * spacing),
-                    match (self.band_limit, last) {
-                        // The finest octave kept can still be a bed of narrow spikes (ω = 3.37:
-                        // cells of 2.5 spacings), so the note says which octave they are.
-                        (true, Some(l)) => format!(
+                    if self.band_limit {
+                        // The finest octave kept (octave 0 at least, as the surface keeps it) can
+                        // still be a bed of narrow spikes (ω = 3.37: cells of 2.5 spacings), so
+                        // the note says which octave they are.
+                        let l = last.unwrap_or(0) as i32;
+                        format!(
                             " They are left out of the surface: what stays rough there is octave \
-                             {l}, whose cells are {} m, {:.1} vertex spacings, wide.",
-                            format_number(1.0 / self.fractal.omega.powi(l as i32)),
-                            1.0 / (self.fractal.omega.powi(l as i32) * spacing)
-                        ),
-                        (true, None) => " They are left out of the surface.".into(),
-                        _ => " Tick “leave out octaves finer than the mesh” to drop them.".into(),
+                             {l}, whose cells are {} vertex spacings wide.",
+                            format_number(self.fractal.omega.powi(-l) / spacing)
+                        )
+                    } else {
+                        " Tick “leave out octaves finer than the mesh” to drop them.".into()
                     }
                 );
             }
