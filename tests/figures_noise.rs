@@ -1130,6 +1130,22 @@ fn each_quiz_letter_is_nearest_its_own_terrain() {
                     .min_by(|&a, &b| c.distance(middle(a)).total_cmp(&c.distance(middle(b))))
                     .unwrap();
                 assert_eq!(nearest, i, "{:?} at ({yaw}, {pitch}) on {size}", label.text);
+                // At the page's camera, nor over its own tile (the back row's peaks rise past
+                // their far edge). Orbited, "above" and "below" on the canvas need not lead
+                // off the tile.
+                if yaw != 0.0 {
+                    continue;
+                }
+                let own = q.terrains()[i].positions.iter().step_by(7);
+                for p in own.filter_map(|&p| {
+                    project_to_canvas(view_proj, size, p + Quiz::placement(i))
+                }) {
+                    assert!(
+                        !(p.cmpgt(r.min).all() && p.cmplt(r.max()).all()),
+                        "{:?} covers its tile at {p}, ({yaw}, {pitch}) on {size}",
+                        label.text
+                    );
+                }
             }
         }
     }

@@ -2196,10 +2196,17 @@ impl Quiz {
                     color = if right { palette::GREEN } else { palette::RED };
                 }
             }
-            // Centred off the row's outer edge (the back row's far edge, the front row's near
-            // one): between the rows a name reads as the other row's tile's.
-            let out = if i < 3 { -1.15 } else { 1.15 };
-            frame.label_off_dot(at + Vec3::Z * out, 0.0, Vec2::ZERO, text, color, 0);
+            // Off the row's outer edge, away from the tile on the canvas: above the back row's
+            // far edge at its highest peak, below the front row's near edge. Between the rows a
+            // name reads as the other row's tile's; over its tile's peaks it covers them.
+            let (out, up) = if i < 3 {
+                let top = self.terrains[i].positions.iter().fold(0.0f32, |m, p| m.max(p.y));
+                (-1.15f32, top)
+            } else {
+                (1.15, 0.0)
+            };
+            let side = Vec2::Y * out.signum();
+            frame.label_off_dot(at + Vec3::new(0.0, up, out), 0.0, side, text, color, 0);
         }
         // All six terrains stay in view from any orbit: their squares, from the lowest ground
         // to the highest peak among them (set 4's h = 0.8 is the tallest).
