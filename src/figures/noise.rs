@@ -2182,6 +2182,12 @@ impl Quiz {
     }
 
     pub fn draw(&self, frame: &mut Frame, meshes: &[MeshId]) -> String {
+        // The lowest ground and the highest peak among the six (set 4's h = 0.8 is the tallest).
+        let (lo, hi) = self
+            .terrains
+            .iter()
+            .flat_map(|t| &t.positions)
+            .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
         for (i, &mesh) in meshes.iter().enumerate().take(6) {
             let at = Self::placement(i);
             frame.mesh_vertex_colors(mesh, Mat4::from_translation(at));
@@ -2197,24 +2203,15 @@ impl Quiz {
                 }
             }
             // Off the row's outer edge, away from the tile on the canvas: above the back row's
-            // far edge at its highest peak, below the front row's near edge. Between the rows a
+            // far edge at the highest peak, below the front row's near edge. Between the rows a
             // name reads as the other row's tile's; over its tile's peaks it covers them.
-            let (out, up) = if i < 3 {
-                let top = self.terrains[i].positions.iter().fold(0.0f32, |m, p| m.max(p.y));
-                (-1.15f32, top)
+            let (out, up, side) = if i < 3 {
+                (-1.15, hi, -Vec2::Y)
             } else {
-                (1.15, 0.0)
+                (1.15, 0.0, Vec2::Y)
             };
-            let side = Vec2::Y * out.signum();
             frame.label_off_dot(at + Vec3::new(0.0, up, out), 0.0, side, text, color, 0);
         }
-        // All six terrains stay in view from any orbit: their squares, from the lowest ground
-        // to the highest peak among them (set 4's h = 0.8 is the tallest).
-        let (lo, hi) = self
-            .terrains
-            .iter()
-            .flat_map(|t| &t.positions)
-            .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
         frame.keep_box_in_view(
             Self::placement(0) + Vec3::new(-1.0, lo, -1.15),
             Self::placement(5) + Vec3::new(1.0, hi, 1.15),
