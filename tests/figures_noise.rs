@@ -540,7 +540,7 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     let n = s.draw(&mut f, MeshId(3));
     assert!(
         n.contains("left out of the surface: what stays rough there is octave 5, whose cells are \
-             0.031 m, 3.0 vertex spacings, wide."),
+             3.000 vertex spacings wide."),
         "{n}"
     );
     let perm = inbetween::noise::Permutation::perlin();
@@ -560,7 +560,7 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     // names it, so the spikes left are not taken for the octaves left out.
     s.set_params(7.0, 0.8, 3.37).unwrap();
     let n = s.draw(&mut f, MeshId(3));
-    assert!(n.contains("Octaves 4 to 7 are finer") && n.contains("octave 3, whose cells are 0.026 m, 2.5 vertex"), "{n}");
+    assert!(n.contains("Octaves 4 to 7 are finer") && n.contains("octave 3, whose cells are 2.508 vertex"), "{n}");
     s.set_params(7.0, 0.8, 2.0).unwrap();
     s.set_band_limit(false);
     assert!(s.take_dirty(), "the toggle regenerates");
@@ -1130,6 +1130,22 @@ fn each_quiz_letter_is_nearest_its_own_terrain() {
                     .min_by(|&a, &b| c.distance(middle(a)).total_cmp(&c.distance(middle(b))))
                     .unwrap();
                 assert_eq!(nearest, i, "{:?} at ({yaw}, {pitch}) on {size}", label.text);
+                // At the page's camera, nor over its own tile (the back row's peaks rise past
+                // their far edge). Orbited, "above" and "below" on the canvas need not lead
+                // off the tile.
+                if yaw != 0.0 {
+                    continue;
+                }
+                let own = q.terrains()[i].positions.iter().step_by(7);
+                for p in own.filter_map(|&p| {
+                    project_to_canvas(view_proj, size, p + Quiz::placement(i))
+                }) {
+                    assert!(
+                        !(p.cmpgt(r.min).all() && p.cmplt(r.max()).all()),
+                        "{:?} covers its tile at {p}, ({yaw}, {pitch}) on {size}",
+                        label.text
+                    );
+                }
             }
         }
     }

@@ -133,6 +133,13 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
     f.clear();
     let note = s.draw(&mut f, ids);
     assert!(note.contains("top-left 6 × 6 cells"), "{note}");
+    // Its cells are a few pixels wide on the page: the note says to zoom in to see the lines.
+    assert!(note.contains("zoom in"), "{note}");
+    s.set_params(9.0, 0.0).unwrap();
+    assert!(!s.draw(&mut f, ids).contains("zoom in"));
+    s.set_params(25.5, 0.0).unwrap();
+    f.clear();
+    s.draw(&mut f, ids);
     let corner = -1.0 + 2.0 * LATTICE_CELLS / 25.5;
     let (mut far_x, mut far_z) = (-1.0f32, -1.0f32);
     for (a, b) in f.segments_of(palette::ORANGE).chain(f.segments_of(palette::TEAL)) {

@@ -419,6 +419,17 @@ fn rodrigues_draws_labelled_terms_that_add_up_to_the_rotated_vector() {
     // The page shows R as 3×3.
     let r: Mat3 = scene.matrix();
     assert!(r.abs_diff_eq(rotation::rodrigues_mat3(n, 120f32.to_radians()), 1e-5));
+    // With v along the axis, v, v′ and the terms lie on the axis: its line is drawn before them
+    // and wider, so its purple shows either side of them.
+    scene.set_vector(n * 1.5).unwrap();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 0.5).unwrap();
+    let first = |c: Vec3| frame.strokes.iter().position(|s| s.color[..3] == c.to_array());
+    let axis = &frame.strokes[first(rc::AXIS).unwrap()];
+    for c in [rc::V, rc::ROTATED, rc::COS_PART, rc::AXIAL_PART] {
+        let term = &frame.strokes[first(c).unwrap()];
+        assert!(first(c) > first(rc::AXIS) && term.width_px < axis.width_px - 2.0);
+    }
 }
 
 #[test]
@@ -534,7 +545,7 @@ fn a_slerp_without_the_flip_is_caught_at_the_default_keys() {
 
 #[test]
 fn the_key_circle_holds_both_arcs_and_the_steps_of_nlerp_and_slerp() {
-    use inbetween::figures::rotations::{CIRCLE_CENTRE, CIRCLE_RADIUS};
+    use inbetween::figures::rotations::{CIRCLE_CENTRE, CIRCLE_RADIUS, SLERP_TICKS_OUT};
     let mut scene = Interpolation::new();
     let mut frame = Frame::default();
     let note = scene.draw_circle(&mut frame, 0.3).unwrap();
@@ -578,6 +589,19 @@ fn the_key_circle_holds_both_arcs_and_the_steps_of_nlerp_and_slerp() {
     assert_eq!(nlerp_dots.len(), 9);
     for p in &nlerp_dots {
         assert!(((*p - CIRCLE_CENTRE).length() - CIRCLE_RADIUS).abs() < 1e-4);
+    }
+    // slerp's ticks stand apart from nlerp's dots (by 0.1 radii, about 15 px at the page's
+    // camera), so a dot and a tick on the short arc do not read as one mark.
+    let ticks: Vec<Vec3> = (frame.markers.iter())
+        .filter(|m| m.shape == inbetween::draw::MARKER_TICK)
+        .map(|m| Vec3::from(m.center))
+        .collect();
+    assert_eq!(ticks.len(), 9);
+    for p in &ticks {
+        assert!(((*p - CIRCLE_CENTRE).length() - SLERP_TICKS_OUT * CIRCLE_RADIUS).abs() < 1e-4);
+        for d in &nlerp_dots {
+            assert!(p.distance(*d) > 0.1 * CIRCLE_RADIUS, "tick {p} by dot {d}");
+        }
     }
     let first = nlerp_dots[0].distance(nlerp_dots[1]);
     let middle = nlerp_dots[4].distance(nlerp_dots[5]);

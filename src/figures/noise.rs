@@ -1043,17 +1043,18 @@ impl Octaves {
                      spikes (aliasing); they are grey in the plot.{}",
                     format_number(spacing),
                     format_number(2.0 * spacing),
-                    match (self.band_limit, last) {
-                        // The finest octave kept can still be a bed of narrow spikes (ω = 3.37:
-                        // cells of 2.5 spacings), so the note says which octave they are.
-                        (true, Some(l)) => format!(
+                    if self.band_limit {
+                        // The finest octave kept (octave 0 at least, as the surface keeps it) can
+                        // still be a bed of narrow spikes (ω = 3.37: cells of 2.5 spacings), so
+                        // the note says which octave they are.
+                        let l = last.unwrap_or(0) as i32;
+                        format!(
                             " They are left out of the surface: what stays rough there is octave \
-                             {l}, whose cells are {} m, {:.1} vertex spacings, wide.",
-                            format_number(1.0 / self.fractal.omega.powi(l as i32)),
-                            1.0 / (self.fractal.omega.powi(l as i32) * spacing)
-                        ),
-                        (true, None) => " They are left out of the surface.".into(),
-                        _ => " Tick “leave out octaves finer than the mesh” to drop them.".into(),
+                             {l}, whose cells are {} vertex spacings wide.",
+                            format_number(self.fractal.omega.powi(-l) / spacing)
+                        )
+                    } else {
+                        " Tick “leave out octaves finer than the mesh” to drop them.".into()
                     }
                 );
             }
@@ -2181,6 +2182,12 @@ impl Quiz {
     }
 
     pub fn draw(&self, frame: &mut Frame, meshes: &[MeshId]) -> String {
+        // The lowest ground and the highest peak among the six (set 4's h = 0.8 is the tallest).
+        let (lo, hi) = self
+            .terrains
+            .iter()
+            .flat_map(|t| &t.positions)
+            .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
         for (i, &mesh) in meshes.iter().enumerate().take(6) {
             let at = Self::placement(i);
             frame.mesh_vertex_colors(mesh, Mat4::from_translation(at));
@@ -2195,18 +2202,16 @@ impl Quiz {
                     color = if right { palette::GREEN } else { palette::RED };
                 }
             }
-            // Centred off the row's outer edge (the back row's far edge, the front row's near
-            // one): between the rows a name reads as the other row's tile's.
-            let out = if i < 3 { -1.15 } else { 1.15 };
-            frame.label_off_dot(at + Vec3::Z * out, 0.0, Vec2::ZERO, text, color, 0);
+            // Off the row's outer edge, away from the tile on the canvas: above the back row's
+            // far edge at the highest peak, below the front row's near edge. Between the rows a
+            // name reads as the other row's tile's; over its tile's peaks it covers them.
+            let (out, up, side) = if i < 3 {
+                (-1.15, hi, -Vec2::Y)
+            } else {
+                (1.15, 0.0, Vec2::Y)
+            };
+            frame.label_off_dot(at + Vec3::new(0.0, up, out), 0.0, side, text, color, 0);
         }
-        // All six terrains stay in view from any orbit: their squares, from the lowest ground
-        // to the highest peak among them (set 4's h = 0.8 is the tallest).
-        let (lo, hi) = self
-            .terrains
-            .iter()
-            .flat_map(|t| &t.positions)
-            .fold((0.0f32, 0.0f32), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
         frame.keep_box_in_view(
             Self::placement(0) + Vec3::new(-1.0, lo, -1.15),
             Self::placement(5) + Vec3::new(1.0, hi, 1.15),

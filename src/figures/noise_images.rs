@@ -266,8 +266,15 @@ impl NoiseImages {
             self.draw_lattices(frame);
             if self.cells > LATTICE_CELLS {
                 part = format!(
-                    " The lattices cover the top-left {0} × {0} cells, so the noise shows beside them.",
-                    LATTICE_CELLS
+                    " The lattices cover the top-left {0} × {0} cells, so the noise shows beside them{1}.",
+                    LATTICE_CELLS,
+                    // Past 12 cells across the lines are 1 px and the cells a few pixels wide:
+                    // the lattice reads as a solid patch at the page's zoom.
+                    if self.cells > 12.0 {
+                        "; a cell is a few pixels across, so zoom in (wheel or pinch) to tell the lines apart"
+                    } else {
+                        ""
+                    }
                 );
             }
         }

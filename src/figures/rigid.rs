@@ -273,12 +273,13 @@ impl RigidMotion {
         frame.keep_box_in_view(Vec3::new(-2.6, 0.0, -1.2), Vec3::new(2.6, 2.4, 1.2));
         // Each key's name just above its axes' origin, past the plane there (its parts reach
         // 0.56 m from its centre), a few pixels over that point at any zoom, so the name sits
-        // on the key it names.
+        // on the key it names; placed first with the other names, so that it moves off a third's
+        // aeroplane drawn there.
+        let mut names = Vec::new();
         for (key, name) in [(self.start, "A"), (self.end, "B")] {
             frame.axes(key.to_mat4(), 0.5);
             let anchor = key.translation() + Vec3::Y * KEY_LABEL_M;
-            let above = glam::Vec2::new(0.0, -1.0);
-            frame.label_off_dot(anchor, 0.0, above, name, palette::KEY, 0);
+            names.push((anchor, name.to_string(), palette::KEY, -glam::Vec2::Y));
         }
         // Each moving plane's own axes only when it is shown alone: with all three shown they
         // would pile up on the keys' axes where the planes start and end together.
@@ -336,9 +337,8 @@ impl RigidMotion {
             planes.push((p, METHOD_NAMES[method as usize].to_string(), color, below));
         }
         let mut notes = Vec::new();
-        // The thirds' names are placed first, then the axis's, and the moving planes' keep off
-        // them.
-        let mut names = Vec::new();
+        // The thirds' names are placed after the keys', then the axis's, and the moving planes'
+        // keep off them.
         if self.thirds {
             notes.push(self.draw_thirds(frame, &mut names));
         }

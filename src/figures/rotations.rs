@@ -477,18 +477,22 @@ impl Interpolation {
             }
         };
         let (short_deg, long_deg) = (short_phi.abs() / DEG, long_phi.abs() / DEG);
-        // A short arc's label stands farther out, past the names of its two ends.
-        let out = if short_deg < 40.0 { 1.45 } else { 1.15 };
+        // The label of the arc in use stands past slerp's ticks; a short arc's farther out,
+        // past the names of its two ends.
+        let out = |phi: f32| if phi == phi_used { 1.27 } else { 1.15 };
         outward(
             frame,
-            at_angle(short_phi * 0.5, CIRCLE_RADIUS * out),
+            at_angle(
+                short_phi * 0.5,
+                CIRCLE_RADIUS * if short_deg < 40.0 { 1.45 } else { out(short_phi) },
+            ),
             format!("short arc: Ω = {short_deg:.0}°"),
             slerp_color,
             2,
         );
         outward(
             frame,
-            at_angle(long_phi * 0.5, CIRCLE_RADIUS * 1.15),
+            at_angle(long_phi * 0.5, CIRCLE_RADIUS * out(long_phi)),
             format!("long arc: Ω = {long_deg:.0}°"),
             palette::PURPLE,
             2,
@@ -517,7 +521,7 @@ impl Interpolation {
                 CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS;
             frame.wide_line(on_chord, out, nlerp_color, 1.5);
             frame.marker(out, 7.0, nlerp_color);
-            slerp_ticks.push(at_angle(phi_used * s, CIRCLE_RADIUS * 1.07));
+            slerp_ticks.push(at_angle(phi_used * s, CIRCLE_RADIUS * SLERP_TICKS_OUT));
         }
         frame.ticks(&slerp_ticks, 10.0, slerp_color);
         let on_chord = start.lerp(end, t);
@@ -528,7 +532,7 @@ impl Interpolation {
             nlerp_color,
         );
         frame.marker(
-            at_angle(phi_used * t, CIRCLE_RADIUS * 1.07),
+            at_angle(phi_used * t, CIRCLE_RADIUS * SLERP_TICKS_OUT),
             14.0,
             slerp_color,
         );
@@ -652,6 +656,9 @@ pub const ARC_LABEL_GAP_PX: f32 = 14.0;
 /// Figure 2's circle of unit quaternions: its centre and radius (metres).
 pub const CIRCLE_CENTRE: Vec3 = Vec3::new(0.0, 1.3, 0.0);
 pub const CIRCLE_RADIUS: f32 = 1.2;
+/// Figure 2: slerp's ticks stand this many radii from the centre, apart from nlerp's dots on
+/// the circle (nearer it, a dot and a tick on a short arc read as one mark).
+pub const SLERP_TICKS_OUT: f32 = 1.13;
 
 /// Where a student's slerp is checked besides the figure's input: `(what the note calls it,
 /// (a, b, t))`. Keys with a·b < 0 (a slerp without the short-arc flip goes the long way), both
@@ -1177,8 +1184,10 @@ impl Rodrigues {
         let (n, v) = (self.axis.axis, self.v);
         let phi = s * self.axis.angle_rad;
         frame.grid(8, 0.5);
-        // The axis n, both ways through the origin, and v.
-        frame.wide_line(-n * 2.0, Vec3::ZERO, AXIS, crate::draw::ARROW_PX);
+        // The axis n, both ways through the origin, and v. The axis's line is twice as wide as
+        // the arrows and drawn first: with v along the axis, v, v′ and the terms lie on it, and
+        // its purple still shows either side of them.
+        frame.wide_line(-n * 2.0, n * 2.0, AXIS, 2.0 * crate::draw::ARROW_PX);
         frame.arrow(Vec3::ZERO, n * 2.0, AXIS, 0.15);
         frame.arrow(Vec3::ZERO, v, V, 0.12);
         // The circle the tip sweeps, about its centre n (n·v).

@@ -310,3 +310,65 @@ fn part_points(m: &inbetween::draw::MeshDraw, camera: &OrbitCamera, size: Vec2) 
         })
         .collect()
 }
+
+#[test]
+fn lesson_04_key_names_keep_off_the_thirds() {
+    // Figure 1 with "a third, three times" on, at its page camera and orbited, both canvases,
+    // for the page's key B at angle 180° and 150°, the pivot at either end and in the middle:
+    // "A" and "B" are shown where the figure put them, 2 px off every dot, tick and line, and
+    // cover no aeroplane's part (the thirds' aeroplanes stand near the keys, and a name over
+    // one reads as its name).
+    use inbetween::figures::rigid::RigidMotion;
+    let mut failures = Vec::new();
+    for (angle, pivot) in [(180.0, 1.5), (180.0, -1.5), (150.0, 1.5), (150.0, 0.0)] {
+        for t in [0.0, 0.5, 1.0] {
+            for (yaw, pitch) in [(0.35, 0.4), (1.0, 0.4), (-0.5, 0.6)] {
+                for size in CANVASES {
+                    let mut scene = RigidMotion::new();
+                    scene
+                        .set_end(Vec3::new(0.2, 1.0, 0.3), angle, Vec3::new(1.5, 1.4, 0.3))
+                        .unwrap();
+                    scene.set_pivot(Vec3::X * pivot).unwrap();
+                    scene.set_thirds(true);
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        [0.0, 1.0, 0.0, 6.5, yaw, pitch],
+                        size,
+                        |fig, out| {
+                            fig.draw(out, t).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name = format!(
+                        "04 keys with thirds, angle {angle}°, pivot {pivot}, t {t}, orbit ({yaw}, {pitch})"
+                    );
+                    let keys: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| ["A", "B"].contains(&&*frame.labels[i].text))
+                        .collect();
+                    assert_eq!(keys.len(), 2, "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &keys, 2.0)
+                    }));
+                    let parts: Vec<Vec2> = (frame.meshes.iter())
+                        .flat_map(|m| part_points(m, &camera, size))
+                        .collect();
+                    let placed = layout(&frame, &camera, size);
+                    for &i in &keys {
+                        let (_, b, p) = &placed[i];
+                        let (lo, hi) = (p.top_left, p.top_left + b.size);
+                        failures.extend(failure_of(|| {
+                            for q in &parts {
+                                assert!(
+                                    !(q.cmpgt(lo).all() && q.cmplt(hi).all()),
+                                    "{name} on {size}: {:?} covers an aeroplane's part at {q}",
+                                    frame.labels[i].text
+                                );
+                            }
+                        }));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
