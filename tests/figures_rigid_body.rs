@@ -92,6 +92,34 @@ fn the_run_starts_again_when_time_goes_back_or_the_spin_changes() {
     assert!((f.bodies()[0].orientation * Vec3::Y).dot(Vec3::Y) > 0.999);
 }
 
+/// The notes of the throw, the rackets and the stack name the time as the page's clock shows it
+/// (`time.toFixed(2)`), not the time of the last whole step, up to 1/60 s earlier: at 0.1653 s
+/// the clock reads 0.17 s while the last step is at 0.15 s.
+#[test]
+fn the_notes_name_the_time_the_timeline_shows() {
+    let mut throw = ThrowFigure::new();
+    let mut racket = RacketFigure::new();
+    let mut stack = StackFigure::new(StackPreset::Stack);
+    // Times through the throw, each at least 0.03 ms off the rounding boundaries of two decimals.
+    for k in 0..300 {
+        let t = 0.0037 * k as f64 + 0.00013;
+        let clock = format!("t = {t:.2} s");
+        throw.advance_to(t as f32).unwrap();
+        racket.advance_to(t as f32).unwrap();
+        stack.advance_to(t as f32).unwrap();
+        for note in [
+            throw.draw(&mut Frame::default()),
+            racket.draw(&mut Frame::default()),
+            stack.draw(&mut Frame::default()),
+        ] {
+            assert!(note.contains(&clock), "at {t} s: {note}");
+        }
+    }
+    // A change of setting starts the run again, at t = 0.
+    racket.set_spin(8.0, 0.05).unwrap();
+    assert!(racket.draw(&mut Frame::default()).contains("t = 0.00 s"));
+}
+
 // ---- Figure 1: a box thrown with spin ----
 
 /// The throw at `spin` and `tilt`, flown to the end, checked at every step.

@@ -70,6 +70,9 @@ pub struct RacketFigure {
     /// or a number that is not finite); it is no longer stepped from then on.
     exploded: [Option<f32>; 3],
     steps_done: usize,
+    /// The timeline's time of the last [`Self::advance_to`] (s), which the note names as the
+    /// page's clock shows it; the bodies are at the last whole step at or before it.
+    time_sec: f32,
     /// Per step: time, then energy / start energy and |L| / start |L| for each integrator
     /// (NaN for a racket that has exploded: a gap in the plots).
     history: Vec<[f32; 7]>,
@@ -97,6 +100,7 @@ impl RacketFigure {
             bodies: [start; 3],
             exploded: [None; 3],
             steps_done: 0,
+            time_sec: 0.0,
             history: Vec::new(),
         };
         f.restart();
@@ -182,6 +186,7 @@ impl RacketFigure {
         self.bodies = [self.first(); 3];
         self.exploded = [None; 3];
         self.steps_done = 0;
+        self.time_sec = 0.0;
         self.history.clear();
         self.record();
     }
@@ -219,6 +224,7 @@ impl RacketFigure {
         if target < self.steps_done {
             self.restart();
         }
+        self.time_sec = time_sec;
         let e0 = self.first().kinetic_energy();
         while self.steps_done < target {
             let t = (self.steps_done + 1) as f32 * SIM_DT;
@@ -305,7 +311,7 @@ impl RacketFigure {
         }
         let mut note = format!(
             "At t = {:.2} s, of their values at the start: {}.",
-            self.steps_done as f32 * SIM_DT,
+            self.time_sec,
             parts.join("; ")
         );
         if self.use_exercise {
@@ -372,6 +378,9 @@ pub struct ThrowFigure {
     /// The angular momentum of the throw (world), held through the flight.
     l_world: Vec3,
     steps_done: usize,
+    /// The timeline's time of the last [`Self::advance_to`] (s), which the note names as the
+    /// page's clock shows it; the bodies are at the last whole step at or before it.
+    time_sec: f32,
     /// Per step: `[t, |ω|, |L|, angle between ω and L (deg), rotational energy]`.
     history: Vec<[f32; 5]>,
     /// Per step: ω in the world (rad/s), for the trail of its tip.
@@ -396,6 +405,7 @@ impl ThrowFigure {
             body: RigidBody::new(1.0, box_moments(THROW_HALF)).expect("a box's moments"),
             l_world: Vec3::ZERO,
             steps_done: 0,
+            time_sec: 0.0,
             history: Vec::new(),
             omegas: Vec::new(),
             view: None,
@@ -457,6 +467,7 @@ impl ThrowFigure {
         self.body = self.first();
         self.l_world = self.body.angular_momentum();
         self.steps_done = 0;
+        self.time_sec = 0.0;
         self.history.clear();
         self.omegas.clear();
         self.record();
@@ -497,6 +508,7 @@ impl ThrowFigure {
         if target < self.steps_done {
             self.restart();
         }
+        self.time_sec = time_sec;
         let dt = SIM_DT / THROW_SUBSTEPS as f32;
         let l = self.l_world;
         while self.steps_done < target {
@@ -560,7 +572,7 @@ impl ThrowFigure {
             .fold(at, |low, c| if c.y < low.y { c } else { low });
         frame.contact_shadow(Vec3::new(at.x, lowest.y, at.z), THROW_HALF.x);
         frame.marker(at, DOT_PX, palette::DARK);
-        let t = self.steps_done as f32 * SIM_DT;
+        let t = self.time_sec;
         let l = b.angular_momentum();
         let omega = b.omega_world();
         let l_dir = throw_l_direction();
@@ -1339,6 +1351,9 @@ pub struct StackFigure {
     /// Where each body starts.
     start: Vec<Vec3>,
     steps_done: usize,
+    /// The timeline's time of the last [`Self::advance_to`] (s), which the note names as the
+    /// page's clock shows it; the bodies are at the last whole step at or before it.
+    time_sec: f32,
     /// The frames at which pushes happened, in order.
     pushes: Vec<usize>,
     exploded: Option<f32>,
@@ -1365,6 +1380,7 @@ impl StackFigure {
             world: World::default(),
             start: Vec::new(),
             steps_done: 0,
+            time_sec: 0.0,
             pushes: Vec::new(),
             exploded: None,
             gained_energy: false,
@@ -1463,6 +1479,7 @@ impl StackFigure {
         self.start = world.bodies.iter().map(|(b, _)| b.position).collect();
         self.world = world;
         self.steps_done = 0;
+        self.time_sec = 0.0;
         self.exploded = None;
         self.gained_energy = false;
         self.energy_budget = self.total_energy() + STACK_ENERGY_SLACK_J;
@@ -1555,6 +1572,7 @@ impl StackFigure {
         if target < self.steps_done {
             self.restart();
         }
+        self.time_sec = time_sec;
         let moved = self.steps_done < target;
         while self.steps_done < target {
             if self.exploded.is_none() {
@@ -1665,7 +1683,7 @@ impl StackFigure {
             0,
         );
         let row = self.history.last().copied().unwrap_or([0.0; 3]);
-        let t = self.steps_done as f32 * SIM_DT;
+        let t = self.time_sec;
         let solver = format!(
             "{} solver pass{} per step ({} steps a frame), friction μ = {}, restitution e = {}.",
             self.iterations,
