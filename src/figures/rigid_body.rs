@@ -73,6 +73,9 @@ pub struct RacketFigure {
     /// The timeline's time of the last [`Self::advance_to`] (s), which the note names as the
     /// page's clock shows it; the bodies are at the last whole step at or before it.
     time_sec: f32,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: each name is
+    /// placed just off its racket on screen, over none of the rackets.
+    view: Option<(OrbitCamera, Vec2)>,
     /// Per step: time, then energy / start energy and |L| / start |L| for each integrator
     /// (NaN for a racket that has exploded: a gap in the plots).
     history: Vec<[f32; 7]>,
@@ -101,10 +104,19 @@ impl RacketFigure {
             exploded: [None; 3],
             steps_done: 0,
             time_sec: 0.0,
+            view: None,
             history: Vec::new(),
         };
         f.restart();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the rackets' names are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// When racket `k` exploded (s since the start), if it did.
@@ -275,6 +287,8 @@ impl RacketFigure {
         );
         let l0 = self.first().angular_momentum().length();
         let mut parts = Vec::new();
+        let mut names = Vec::new();
+        let mut solid = Vec::new();
         for (k, (body, (_, name))) in self.bodies.iter().zip(INTEGRATORS).enumerate() {
             let at = Self::place(k);
             let r = Mat4::from_mat3(body.rotation());
@@ -285,6 +299,11 @@ impl RacketFigure {
                 None => RACKET_COLORS[k],
             };
             frame.mesh(MeshId::CUBE, model, color);
+            let points: Vec<Vec3> = box_samples(model).collect();
+            solid.extend_from_slice(&points);
+            let above = at + Vec3::Y * (reach + 0.2);
+            let first = Label::off_dot(above, 0.0, Vec2::NEG_Y, name.into(), palette::DARK, 0);
+            names.push((points, first));
             let middle = body.rotation() * Vec3::Y * (RACKET_HALF.y + 0.12);
             frame.wide_line(at - middle, at + middle, palette::Y_AXIS, ARROW_PX);
             // L at 0.3 m for the start's |L|, at most twice that (an explicit racket's grows
@@ -293,7 +312,6 @@ impl RacketFigure {
                 let l = (body.angular_momentum() / l0 * 0.3).clamp_length_max(0.6);
                 frame.arrow(at, at + l, palette::DARK, 0.05);
             }
-            frame.label(at + Vec3::new(-0.25, reach + 0.3, 0.0), name, palette::DARK);
             let row = self.history.last().copied().unwrap_or([0.0; 7]);
             parts.push(match self.exploded[k] {
                 Some(t) => format!(
@@ -308,6 +326,13 @@ impl RacketFigure {
                     100.0 * row[4 + k]
                 ),
             });
+        }
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let off_boxes = super::clear_of(view, &solid);
+        for (points, first) in names {
+            box_label(frame, view, &points, first, &off_boxes);
         }
         let mut note = format!(
             "At t = {:.2} s, of their values at the start: {}.",
@@ -1750,27 +1775,22 @@ pub const DRIFT_HALF: Vec3 = Vec3::new(0.3, 0.15, 0.075);
 pub const DRIFT_TIP_RAD: f32 = 0.6;
 /// The drift figure's timeline (s).
 pub const DRIFT_DURATION_SEC: f32 = 10.0;
-/// A box's name in Figure 2 (`points`: its box sampled, [`box_samples`]): for the last frame's
-/// view, the first clear side round the box (above first), just off its extent on screen,
-/// keeping off every box (`off_boxes`), line and name; before the first frame, centred 0.6 m
-/// over the box (the outer two would run past the canvas's sides reading outwards), the middle
-/// one a row higher, since each is wider than the boxes' spacing on screen.
-fn drift_label(
+/// A box's name (`points`: its box sampled, [`box_samples`]): for the last frame's view, the
+/// first clear side round the box (above first), just off its extent on screen, keeping off
+/// every box (`off_boxes`), line and name; before the first frame, `first`. In Figure 2 that is
+/// centred 0.6 m over the box (the outer two would run past the canvas's sides reading
+/// outwards), the middle one a row higher, since each is wider than the boxes' spacing on screen.
+fn box_label(
     frame: &mut Frame,
     view: Option<(Mat4, Vec2)>,
     points: &[Vec3],
-    k: usize,
-    text: String,
-    color: Vec3,
+    first: Label,
     off_boxes: &dyn Fn(crate::draw::layout::Rect) -> bool,
 ) {
-    let at = DriftFigure::place(k) + Vec3::new(0.0, 0.6, 0.0);
-    let mut first = Label::off_dot(at, 0.0, Vec2::new(0.0, -1.0), text.clone(), color, 0);
-    if k == 1 {
-        first.offset_px.y -= DRIFT_ROW_PX;
-    }
     let candidates = match view {
-        Some((view_proj, size)) => labels_round(points, view_proj, size, &text, color, 9, 8.0),
+        Some((view_proj, size)) => {
+            labels_round(points, view_proj, size, &first.text, first.color, 9, 8.0)
+        }
         None => vec![first],
     };
     frame.first_clear_label_by(view, 2.0, candidates, off_boxes);
@@ -2165,7 +2185,12 @@ impl DriftFigure {
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
         let off_boxes = super::clear_of(view, &solid);
         for (k, text, color, points) in names {
-            drift_label(frame, view, &points, k, text, color, &off_boxes);
+            let at = Self::place(k) + Vec3::new(0.0, 0.6, 0.0);
+            let mut first = Label::off_dot(at, 0.0, Vec2::new(0.0, -1.0), text, color, 0);
+            if k == 1 {
+                first.offset_px.y -= DRIFT_ROW_PX;
+            }
+            box_label(frame, view, &points, first, &off_boxes);
         }
         let n = self.steps_done;
         let s = self.bodies[1].orientation.length();
