@@ -1111,12 +1111,14 @@ impl ImpulseFigure {
     /// note.
     pub fn draw(&self, frame: &mut Frame) -> String {
         frame.grid(12, 0.25);
-        let top = self.first().position.y + DROP_HALF.length();
-        frame.keep_box_in_view(
-            Vec3::new(-0.8, 0.0, -0.6),
-            Vec3::new(0.8, top.max(1.2), 0.6),
-        );
         let b = &self.body;
+        // Until the first hit the whole fall; from then on the box near the ground and the
+        // hit's arrows (their tips below), drawn larger.
+        let top = match &self.first_impact {
+            None => self.first().position.y.max(1.2 - DROP_HALF.length()),
+            Some(hit) => hit.centre.y.max(b.position.y),
+        } + DROP_HALF.length();
+        frame.keep_box_in_view(Vec3::new(-0.8, 0.0, -0.6), Vec3::new(0.8, top, 0.6));
         let model = Mat4::from_translation(b.position)
             * Mat4::from_mat3(b.rotation())
             * Mat4::from_scale(DROP_HALF);
@@ -1193,6 +1195,7 @@ impl ImpulseFigure {
         for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
                 frame.arrow_on_top(o, o + d, color, 0.06);
+                frame.keep_in_view.push(o + d);
                 names.push((o + d, d, name, text_color));
             }
         }
