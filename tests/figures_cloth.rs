@@ -154,6 +154,21 @@ fn past_the_limit_the_mass_spring_flag_explodes_safely_and_xpbd_does_not() {
     assert!(!note.contains("scales"), "{note}");
 }
 
+/// At 0 s the flag's stretch plot holds one sample per cloth, 0 %: its axis runs from there up
+/// by 1 %, not round it (down to a stretch of -0.5 %). Once the flags stretch by more, the range
+/// is the samples' own.
+#[test]
+fn the_stretch_axis_starts_at_the_first_sample_and_spans_at_least_one_percent() {
+    let mut f = ClothFigure::new(Preset::Flag);
+    draw(&mut f, 0.0);
+    let [_, _, lo, hi] = f.plot_ranges();
+    assert_eq!((lo, hi), (0.0, 1.0));
+    draw(&mut f, 1.0);
+    let [_, _, lo, hi] = f.plot_ranges();
+    let most = f.samples().chunks(5).flat_map(|r| [r[3], r[4]]).fold(f32::MIN, f32::max);
+    assert!(hi - lo > 1.0 && hi == most, "{lo} to {hi}, most {most}");
+}
+
 #[test]
 fn the_drape_falls_on_the_sphere_and_the_obstacles_move() {
     let mut f = ClothFigure::new(Preset::Drape);

@@ -92,6 +92,34 @@ fn the_run_starts_again_when_time_goes_back_or_the_spin_changes() {
     assert!((f.bodies()[0].orientation * Vec3::Y).dot(Vec3::Y) > 0.999);
 }
 
+/// The notes of the throw, the rackets and the stack name the time as the page's clock shows it
+/// (`time.toFixed(2)`), not the time of the last whole step, up to 1/60 s earlier: at 0.1653 s
+/// the clock reads 0.17 s while the last step is at 0.15 s.
+#[test]
+fn the_notes_name_the_time_the_timeline_shows() {
+    let mut throw = ThrowFigure::new();
+    let mut racket = RacketFigure::new();
+    let mut stack = StackFigure::new(StackPreset::Stack);
+    // Times through the throw, each at least 0.03 ms off the rounding boundaries of two decimals.
+    for k in 0..300 {
+        let t = 0.0037 * k as f64 + 0.00013;
+        let clock = format!("t = {t:.2} s");
+        throw.advance_to(t as f32).unwrap();
+        racket.advance_to(t as f32).unwrap();
+        stack.advance_to(t as f32).unwrap();
+        for note in [
+            throw.draw(&mut Frame::default()),
+            racket.draw(&mut Frame::default()),
+            stack.draw(&mut Frame::default()),
+        ] {
+            assert!(note.contains(&clock), "at {t} s: {note}");
+        }
+    }
+    // A change of setting starts the run again, at t = 0.
+    racket.set_spin(8.0, 0.05).unwrap();
+    assert!(racket.draw(&mut Frame::default()).contains("t = 0.00 s"));
+}
+
 // ---- Figure 1: a box thrown with spin ----
 
 /// The throw at `spin` and `tilt`, flown to the end, checked at every step.
@@ -270,6 +298,44 @@ fn dropped(tilt: f32, e: f32, height: f32) -> ImpulseFigure {
     f.set_drop(tilt, e, height).unwrap();
     f.advance_to(f.duration_sec()).unwrap();
     f
+}
+
+/// Figure 4 from the hit on, on the 760 x 420 canvas of an 800 x 600 page, at the page's camera
+/// fitted to what the frame keeps in view: near the ground the box spans at least 120 px on
+/// screen (framed with the whole fall it spans 70 to 105 px, under the empty height it fell
+/// from), and every line, the arrows' included, ends on the canvas.
+#[test]
+fn after_the_hit_the_drop_frames_the_box_and_its_arrows() {
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::figures::rigid_body::DROP_HALF;
+    use inbetween::rigid_body::contact::corners;
+    let size = Vec2::new(760.0, 420.0);
+    for (tilt, e, height) in [(20.0, 0.5, 1.0), (30.0, 0.2, 1.6), (45.0, 1.0, 2.0), (0.0, 0.5, 2.0)] {
+        let mut f = dropped(tilt, e, height);
+        let hit = f.impact_details().copied().expect("a hit");
+        for t in [hit.time_sec + 0.02, hit.time_sec + 0.16, f.duration_sec()] {
+            f.advance_to(t).unwrap();
+            let mut frame = Frame::default();
+            f.draw(&mut frame);
+            let mut camera = OrbitCamera::from_view([0.0, 1.0, 0.0, 4.0, 0.5, 0.3]);
+            camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let on_screen = |p: Vec3| project_to_canvas(view_proj, size, p);
+            let c: Vec<Vec2> = corners(f.body(), DROP_HALF).iter().map(|&c| on_screen(c).unwrap()).collect();
+            let lo = c.iter().fold(Vec2::MAX, |a, &b| a.min(b));
+            let hi = c.iter().fold(Vec2::MIN, |a, &b| a.max(b));
+            let span = (hi - lo).max_element();
+            let at = format!("tilt {tilt}, e {e}, {height} m, t {t:.2} s");
+            if f.body().position.y < 0.6 {
+                assert!(span >= 120.0, "{at}: the box spans {span} px");
+            }
+            for s in frame.strokes.iter() {
+                let head = on_screen(Vec3::from(s.b)).expect("in front of the camera");
+                assert!(head.cmpge(Vec2::ZERO).all() && head.cmple(size).all(), "{at}: a stroke ends at {head}");
+            }
+        }
+    }
 }
 
 #[test]

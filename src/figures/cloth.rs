@@ -654,7 +654,8 @@ impl ClothFigure {
     /// (J, %): over the samples of the cloths that held, so that one cloth's explosion (its
     /// last samples before it shoot up by orders of magnitude) does not flatten the other's
     /// curves onto a line; the exploded cloth's curve then runs off the plot. Over every cloth
-    /// when none has exploded or none held; NaN before the first sample.
+    /// when none has exploded or none held; NaN before the first sample. The stretch range is
+    /// at least 1 % tall, from its low end up.
     pub fn plot_ranges(&self) -> [f32; 4] {
         let held = self.held();
         let shown: Vec<&Sim> = if held.is_empty() {
@@ -673,6 +674,9 @@ impl ClothFigure {
                 range[1] = range[1].max(x);
             }
         }
+        // The stretch axis spans at least 1 % up from its lowest sample: around the first
+        // sample alone (0 %) the plot would centre a span reaching down to −0.5 %.
+        out[3] = out[3].max(out[2] + 1.0);
         out
     }
 

@@ -70,6 +70,12 @@ pub struct RacketFigure {
     /// or a number that is not finite); it is no longer stepped from then on.
     exploded: [Option<f32>; 3],
     steps_done: usize,
+    /// The timeline's time of the last [`Self::advance_to`] (s), which the note names as the
+    /// page's clock shows it; the bodies are at the last whole step at or before it.
+    time_sec: f32,
+    /// The camera and canvas size (CSS pixels) the last frame was drawn with: each name is
+    /// placed just off its racket on screen, over none of the rackets.
+    view: Option<(OrbitCamera, Vec2)>,
     /// Per step: time, then energy / start energy and |L| / start |L| for each integrator
     /// (NaN for a racket that has exploded: a gap in the plots).
     history: Vec<[f32; 7]>,
@@ -97,10 +103,20 @@ impl RacketFigure {
             bodies: [start; 3],
             exploded: [None; 3],
             steps_done: 0,
+            time_sec: 0.0,
+            view: None,
             history: Vec::new(),
         };
         f.restart();
         f
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the rackets' names are placed for.
+    pub fn set_view(&mut self, camera: OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// When racket `k` exploded (s since the start), if it did.
@@ -182,6 +198,7 @@ impl RacketFigure {
         self.bodies = [self.first(); 3];
         self.exploded = [None; 3];
         self.steps_done = 0;
+        self.time_sec = 0.0;
         self.history.clear();
         self.record();
     }
@@ -219,6 +236,7 @@ impl RacketFigure {
         if target < self.steps_done {
             self.restart();
         }
+        self.time_sec = time_sec;
         let e0 = self.first().kinetic_energy();
         while self.steps_done < target {
             let t = (self.steps_done + 1) as f32 * SIM_DT;
@@ -269,6 +287,8 @@ impl RacketFigure {
         );
         let l0 = self.first().angular_momentum().length();
         let mut parts = Vec::new();
+        let mut names = Vec::new();
+        let mut solid = Vec::new();
         for (k, (body, (_, name))) in self.bodies.iter().zip(INTEGRATORS).enumerate() {
             let at = Self::place(k);
             let r = Mat4::from_mat3(body.rotation());
@@ -279,6 +299,11 @@ impl RacketFigure {
                 None => RACKET_COLORS[k],
             };
             frame.mesh(MeshId::CUBE, model, color);
+            let points: Vec<Vec3> = box_samples(model).collect();
+            solid.extend_from_slice(&points);
+            let above = at + Vec3::Y * (reach + 0.2);
+            let first = Label::off_dot(above, 0.0, Vec2::NEG_Y, name.into(), palette::DARK, 0);
+            names.push((points, first));
             let middle = body.rotation() * Vec3::Y * (RACKET_HALF.y + 0.12);
             frame.wide_line(at - middle, at + middle, palette::Y_AXIS, ARROW_PX);
             // L at 0.3 m for the start's |L|, at most twice that (an explicit racket's grows
@@ -287,7 +312,6 @@ impl RacketFigure {
                 let l = (body.angular_momentum() / l0 * 0.3).clamp_length_max(0.6);
                 frame.arrow(at, at + l, palette::DARK, 0.05);
             }
-            frame.label(at + Vec3::new(-0.25, reach + 0.3, 0.0), name, palette::DARK);
             let row = self.history.last().copied().unwrap_or([0.0; 7]);
             parts.push(match self.exploded[k] {
                 Some(t) => format!(
@@ -303,9 +327,16 @@ impl RacketFigure {
                 ),
             });
         }
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let off_boxes = super::clear_of(view, &solid);
+        for (points, first) in names {
+            box_label(frame, view, &points, first, &off_boxes);
+        }
         let mut note = format!(
             "At t = {:.2} s, of their values at the start: {}.",
-            self.steps_done as f32 * SIM_DT,
+            self.time_sec,
             parts.join("; ")
         );
         if self.use_exercise {
@@ -372,6 +403,9 @@ pub struct ThrowFigure {
     /// The angular momentum of the throw (world), held through the flight.
     l_world: Vec3,
     steps_done: usize,
+    /// The timeline's time of the last [`Self::advance_to`] (s), which the note names as the
+    /// page's clock shows it; the bodies are at the last whole step at or before it.
+    time_sec: f32,
     /// Per step: `[t, |ω|, |L|, angle between ω and L (deg), rotational energy]`.
     history: Vec<[f32; 5]>,
     /// Per step: ω in the world (rad/s), for the trail of its tip.
@@ -396,6 +430,7 @@ impl ThrowFigure {
             body: RigidBody::new(1.0, box_moments(THROW_HALF)).expect("a box's moments"),
             l_world: Vec3::ZERO,
             steps_done: 0,
+            time_sec: 0.0,
             history: Vec::new(),
             omegas: Vec::new(),
             view: None,
@@ -457,6 +492,7 @@ impl ThrowFigure {
         self.body = self.first();
         self.l_world = self.body.angular_momentum();
         self.steps_done = 0;
+        self.time_sec = 0.0;
         self.history.clear();
         self.omegas.clear();
         self.record();
@@ -497,6 +533,7 @@ impl ThrowFigure {
         if target < self.steps_done {
             self.restart();
         }
+        self.time_sec = time_sec;
         let dt = SIM_DT / THROW_SUBSTEPS as f32;
         let l = self.l_world;
         while self.steps_done < target {
@@ -560,7 +597,7 @@ impl ThrowFigure {
             .fold(at, |low, c| if c.y < low.y { c } else { low });
         frame.contact_shadow(Vec3::new(at.x, lowest.y, at.z), THROW_HALF.x);
         frame.marker(at, DOT_PX, palette::DARK);
-        let t = self.steps_done as f32 * SIM_DT;
+        let t = self.time_sec;
         let l = b.angular_momentum();
         let omega = b.omega_world();
         let l_dir = throw_l_direction();
@@ -1074,12 +1111,14 @@ impl ImpulseFigure {
     /// note.
     pub fn draw(&self, frame: &mut Frame) -> String {
         frame.grid(12, 0.25);
-        let top = self.first().position.y + DROP_HALF.length();
-        frame.keep_box_in_view(
-            Vec3::new(-0.8, 0.0, -0.6),
-            Vec3::new(0.8, top.max(1.2), 0.6),
-        );
         let b = &self.body;
+        // Until the first hit the whole fall; from then on the box near the ground and the
+        // hit's arrows (their tips below), drawn larger.
+        let top = match &self.first_impact {
+            None => self.first().position.y.max(1.2 - DROP_HALF.length()),
+            Some(hit) => hit.centre.y.max(b.position.y),
+        } + DROP_HALF.length();
+        frame.keep_box_in_view(Vec3::new(-0.8, 0.0, -0.6), Vec3::new(0.8, top, 0.6));
         let model = Mat4::from_translation(b.position)
             * Mat4::from_mat3(b.rotation())
             * Mat4::from_scale(DROP_HALF);
@@ -1156,6 +1195,7 @@ impl ImpulseFigure {
         for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
                 frame.arrow_on_top(o, o + d, color, 0.06);
+                frame.keep_in_view.push(o + d);
                 names.push((o + d, d, name, text_color));
             }
         }
@@ -1339,6 +1379,9 @@ pub struct StackFigure {
     /// Where each body starts.
     start: Vec<Vec3>,
     steps_done: usize,
+    /// The timeline's time of the last [`Self::advance_to`] (s), which the note names as the
+    /// page's clock shows it; the bodies are at the last whole step at or before it.
+    time_sec: f32,
     /// The frames at which pushes happened, in order.
     pushes: Vec<usize>,
     exploded: Option<f32>,
@@ -1365,6 +1408,7 @@ impl StackFigure {
             world: World::default(),
             start: Vec::new(),
             steps_done: 0,
+            time_sec: 0.0,
             pushes: Vec::new(),
             exploded: None,
             gained_energy: false,
@@ -1463,6 +1507,7 @@ impl StackFigure {
         self.start = world.bodies.iter().map(|(b, _)| b.position).collect();
         self.world = world;
         self.steps_done = 0;
+        self.time_sec = 0.0;
         self.exploded = None;
         self.gained_energy = false;
         self.energy_budget = self.total_energy() + STACK_ENERGY_SLACK_J;
@@ -1555,6 +1600,7 @@ impl StackFigure {
         if target < self.steps_done {
             self.restart();
         }
+        self.time_sec = time_sec;
         let moved = self.steps_done < target;
         while self.steps_done < target {
             if self.exploded.is_none() {
@@ -1665,7 +1711,7 @@ impl StackFigure {
             0,
         );
         let row = self.history.last().copied().unwrap_or([0.0; 3]);
-        let t = self.steps_done as f32 * SIM_DT;
+        let t = self.time_sec;
         let solver = format!(
             "{} solver pass{} per step ({} steps a frame), friction μ = {}, restitution e = {}.",
             self.iterations,
@@ -1732,27 +1778,22 @@ pub const DRIFT_HALF: Vec3 = Vec3::new(0.3, 0.15, 0.075);
 pub const DRIFT_TIP_RAD: f32 = 0.6;
 /// The drift figure's timeline (s).
 pub const DRIFT_DURATION_SEC: f32 = 10.0;
-/// A box's name in Figure 2 (`points`: its box sampled, [`box_samples`]): for the last frame's
-/// view, the first clear side round the box (above first), just off its extent on screen,
-/// keeping off every box (`off_boxes`), line and name; before the first frame, centred 0.6 m
-/// over the box (the outer two would run past the canvas's sides reading outwards), the middle
-/// one a row higher, since each is wider than the boxes' spacing on screen.
-fn drift_label(
+/// A box's name (`points`: its box sampled, [`box_samples`]): for the last frame's view, the
+/// first clear side round the box (above first), just off its extent on screen, keeping off
+/// every box (`off_boxes`), line and name; before the first frame, `first`. In Figure 2 that is
+/// centred 0.6 m over the box (the outer two would run past the canvas's sides reading
+/// outwards), the middle one a row higher, since each is wider than the boxes' spacing on screen.
+fn box_label(
     frame: &mut Frame,
     view: Option<(Mat4, Vec2)>,
     points: &[Vec3],
-    k: usize,
-    text: String,
-    color: Vec3,
+    first: Label,
     off_boxes: &dyn Fn(crate::draw::layout::Rect) -> bool,
 ) {
-    let at = DriftFigure::place(k) + Vec3::new(0.0, 0.6, 0.0);
-    let mut first = Label::off_dot(at, 0.0, Vec2::new(0.0, -1.0), text.clone(), color, 0);
-    if k == 1 {
-        first.offset_px.y -= DRIFT_ROW_PX;
-    }
     let candidates = match view {
-        Some((view_proj, size)) => labels_round(points, view_proj, size, &text, color, 9, 8.0),
+        Some((view_proj, size)) => {
+            labels_round(points, view_proj, size, &first.text, first.color, 9, 8.0)
+        }
         None => vec![first],
     };
     frame.first_clear_label_by(view, 2.0, candidates, off_boxes);
@@ -2147,7 +2188,12 @@ impl DriftFigure {
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
         let off_boxes = super::clear_of(view, &solid);
         for (k, text, color, points) in names {
-            drift_label(frame, view, &points, k, text, color, &off_boxes);
+            let at = Self::place(k) + Vec3::new(0.0, 0.6, 0.0);
+            let mut first = Label::off_dot(at, 0.0, Vec2::new(0.0, -1.0), text, color, 0);
+            if k == 1 {
+                first.offset_px.y -= DRIFT_ROW_PX;
+            }
+            box_label(frame, view, &points, first, &off_boxes);
         }
         let n = self.steps_done;
         let s = self.bodies[1].orientation.length();

@@ -818,6 +818,9 @@ function registerExtras() {
           // A sentence for the reader, not wgpu's debug print of its error (that goes to the console).
           assert.doesNotMatch(note, /[{}]|InstanceError|\.\./, note);
         }
+        // The message stands alone: no empty timeline or plot boxes (bordered strips) under it.
+        const strips = await page.locator('.figure :is(.timeline, .plot):empty:visible').count();
+        assert.equal(strips, 0, `${lesson.folder}: empty timeline or plot boxes show`);
         const banner = await page.locator('#error-banner').textContent();
         assert.match(banner, /Neither WebGPU nor WebGL2/);
         assert.doesNotMatch(banner, /[{}]|InstanceError/, banner);

@@ -365,3 +365,84 @@ fn lesson_14_drift_names_sit_by_their_boxes_when_orbited() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_14_racket_names_sit_by_their_rackets_when_orbited() {
+    // Figure 3 at the page's camera and orbited, both canvases, at the page's spin and wobble
+    // and at a spin and wobble where the explicit racket explodes, across the run: every name is
+    // shown where the figure put it, 2 px off every line, over none of the rackets, and within
+    // 24 px of its own racket on screen, placed as the page places it (for the view of the frame
+    // before, set_view).
+    use inbetween::draw::MeshId;
+    use inbetween::figures::rigid_body::{RacketFigure, INTEGRATORS};
+    let mut failures = Vec::new();
+    for (spin, wobble) in [(6.0, 0.05), (16.0, 0.79)] {
+        for view in [
+            [0.0, 0.9, 0.0, 5.0, 0.0, 0.15],
+            [0.0, 0.9, 0.0, 5.0, 0.8, 0.5],
+            [0.0, 0.9, 0.0, 5.0, -0.7, 0.9],
+            [0.0, 0.9, 0.0, 5.0, 1.4, 0.46],
+        ] {
+            let mut scene = RacketFigure::new();
+            scene.set_spin(spin, wobble).unwrap();
+            for time_sec in [0.0, 2.0, 4.4, 12.0] {
+                scene.advance_to(time_sec).unwrap();
+                for size in CANVASES {
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        view,
+                        size,
+                        |fig, out| {
+                            fig.draw(out);
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let name = format!("14 racket, spin {spin}, wobble {wobble}, t {time_sec}, view {view:?}");
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    // Each cube's corners and the lines between them, on screen.
+                    let rackets: Vec<Vec<Vec2>> = frame
+                        .meshes
+                        .iter()
+                        .filter(|m| m.mesh == MeshId::CUBE)
+                        .map(|m| {
+                            let mut out = Vec::new();
+                            for i in 0..8 {
+                                for j in 0..8 {
+                                    let c = |i: usize| {
+                                        let s = |b: usize| if i & b == 0 { -1.0 } else { 1.0 };
+                                        m.model.transform_point3(Vec3::new(s(1), s(2), s(4)))
+                                    };
+                                    for s in 0..=4 {
+                                        let p = c(i).lerp(c(j), s as f32 / 4.0);
+                                        out.extend(project_to_canvas(view_proj, size, p));
+                                    }
+                                }
+                            }
+                            out
+                        })
+                        .collect();
+                    let check = || {
+                        assert_eq!(frame.labels.len(), 3, "{name}");
+                        assert_eq!(rackets.len(), 3, "{name}");
+                        assert_shown_clear_by(&name, &frame, &camera, size, &[0, 1, 2], 2.0);
+                        for (k, (l, b, p)) in layout(&frame, &camera, size).iter().enumerate() {
+                            assert_eq!(l.text, INTEGRATORS[k].1, "{name}");
+                            let r = Rect { min: p.top_left, size: b.size };
+                            let at = format!("{name} on {size}: {:?}", l.text);
+                            for points in &rackets {
+                                assert_names_cover_none(&at, size, &[(l.text.clone(), r)], &[&l.text], points, "a racket");
+                            }
+                            let gap = rackets[k]
+                                .iter()
+                                .map(|c| (c.clamp(r.min, r.max()) - *c).length())
+                                .fold(f32::INFINITY, f32::min);
+                            assert!(gap <= 24.0, "{at} {gap} px from its racket");
+                        }
+                    };
+                    failures.extend(failure_of(std::panic::AssertUnwindSafe(check)));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
