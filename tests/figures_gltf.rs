@@ -96,6 +96,15 @@ fn an_imported_character_is_drawn_as_its_skeleton_and_plays() {
     figure.draw(&mut f, 0.0, &[MeshId(9)]).unwrap();
     let (p, _) = figure.skinned(0).unwrap();
     assert!((p[0] - lbs[0]).length() < 1e-5);
+    // Over the skin the root's name is dark (orange text on RiggedSimple's beige tube does not
+    // read); on the skeleton and dots alone, orange as the root's ball.
+    let root_color = |f: &Frame| f.labels.iter().find(|l| l.text == "root").unwrap().color;
+    assert_eq!(root_color(&f), palette::DARK);
+    figure.set_skinning("dots").unwrap();
+    f.clear();
+    figure.draw(&mut f, 0.0, &[MeshId(9)]).unwrap();
+    assert_eq!(root_color(&f), palette::ORANGE);
+    figure.set_skinning("dqs").unwrap();
     // Lesson 09's bind-pose vertices: the dots over the skinned mesh, which stays.
     figure.set_show_bind_pose(true);
     f.clear();

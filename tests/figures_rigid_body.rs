@@ -921,6 +921,53 @@ fn the_throw_plots_l_flat_at_one_and_omega_moving() {
     }
 }
 
+#[test]
+fn the_throw_is_framed_round_its_flight_so_the_box_reads() {
+    // Figure 1 at the viewer's default camera, fitted to what the figure declares, on the two
+    // canvases the page gives it: the frame holds the flight, not a floor much larger than it
+    // (a box 40 px long with short stubs of L and ω), so the box spans an eighth of the
+    // canvas's height or more; and every line the figure draws (path, L, ω and its trail) and
+    // the box stay inside the canvas, for spins and tilts across the sliders, through the flight.
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use glam::Vec2;
+    for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+        for (spin, tilt) in [(10.0, 20.0), (15.0, 80.0), (5.0, 50.0), (15.0, 40.0), (10.0, 0.0)] {
+            let mut f = ThrowFigure::new();
+            f.set_throw(spin, tilt).unwrap();
+            for k in 0..=12 {
+                f.advance_to(f.duration_sec() * k as f32 / 12.0).unwrap();
+                let mut frame = Frame::default();
+                f.draw(&mut frame);
+                let mut camera = OrbitCamera::default();
+                camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+                let model = frame.meshes[0].model;
+                let corners: Vec<Vec2> = (0..8)
+                    .map(|c| {
+                        let s = |bit: u32| if c & bit == 0 { -1.0 } else { 1.0 };
+                        at(model.transform_point3(Vec3::new(s(1), s(2), s(4))))
+                    })
+                    .collect();
+                let lo = corners.iter().fold(Vec2::MAX, |m, c| m.min(*c));
+                let hi = corners.iter().fold(Vec2::MIN, |m, c| m.max(*c));
+                let what = format!("spin {spin}, tilt {tilt}, step {k}/12 on {size}");
+                // An eighth of the canvas's height: 48 to 77 px across the sweep; 38 to 62 px when
+                // the frame held the floor 1.7 m round the flight.
+                let long = (hi - lo).max_element();
+                assert!(long > 0.125 * size.y, "{what}: box {lo} to {hi}");
+                let ends = frame.strokes.iter().flat_map(|s| [s.a, s.b]);
+                for p in corners.into_iter().chain(ends.map(|p| at(Vec3::from(p)))) {
+                    assert!(
+                        p.cmpge(Vec2::ZERO).all() && p.cmple(size).all(),
+                        "{what}: {p} off the canvas"
+                    );
+                }
+            }
+        }
+    }
+}
+
 // ---- "use my exercise" ----
 
 use inbetween::exercises::run::Failure;

@@ -3,7 +3,7 @@
 //! runner).
 
 use glam::{Mat4, Quat, Vec3};
-use inbetween::draw::{palette, Frame};
+use inbetween::draw::{palette, Frame, MARKER_TICK, ON_TOP};
 use inbetween::exercises::run::{direct, Failure};
 use inbetween::figures::skeleton::SkeletonFigure;
 
@@ -643,6 +643,12 @@ fn everything_drawn_stays_inside_the_declared_view() {
             .into_iter()
             .fold(0.0, f32::max);
         assert!(fill > 0.5, "{clip}: the paths fill {fill} of the inset");
+        // The paths and their ticks are drawn over everything: the tip's ball (4.4 cm across)
+        // otherwise hides much of a path a few centimetres long, in the inset above all.
+        let on_top = frame.strokes.iter().filter(|s| s.depth_bias == ON_TOP).count();
+        assert!(on_top >= paths.len() - 2, "{clip}: {on_top} path segments on top");
+        let ticks = frame.markers.iter().filter(|m| m.shape == MARKER_TICK);
+        assert!(ticks.clone().count() > 20 && ticks.clone().all(|m| m.size_px < 0.0), "{clip}");
     }
     // Without compared paths, no inset.
     let mut frame = Frame::default();
@@ -850,7 +856,7 @@ fn path_ticks_are_sized_to_their_spacing_on_the_canvas() {
                 let longest = (1.5 * apart).clamp(4.0, 14.0);
                 for m in &ticks {
                     assert!(
-                        (m.size_px - longest).abs() < 0.01,
+                        (m.size_px.abs() - longest).abs() < 0.01,
                         "{name}: a {} px tick, {apart} px apart on average",
                         m.size_px
                     );

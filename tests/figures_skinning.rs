@@ -966,3 +966,25 @@ fn screen_axes_are_the_cameras_right_and_up_whatever_its_target() {
         assert_eq!(screen_axes(&moved), (right, up));
     }
 }
+
+#[test]
+fn the_followed_vertex_shows_both_its_lbs_and_dqs_dots_where_they_meet() {
+    // Figure 1 at its defaults (90°, no twist): on the LBS tube the teal dot (where DQS puts the
+    // vertex) and the orange one (where LBS does) lie a few pixels apart on the page. The orange
+    // is drawn over the teal and narrower by at least 4 px, so the teal still rings it.
+    use inbetween::draw::palette;
+    let mut f = CylinderFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS).unwrap();
+    let of = |c: Vec3| {
+        frame
+            .markers
+            .iter()
+            .position(|m| m.color == c.extend(1.0).to_array())
+            .unwrap()
+    };
+    let (teal, orange) = (of(palette::TEAL), of(palette::ORANGE));
+    let size = |i: usize| frame.markers[i].size_px.abs();
+    assert!(orange > teal, "orange drawn first");
+    assert!(size(teal) - size(orange) >= 4.0, "{} and {}", size(teal), size(orange));
+}

@@ -130,7 +130,7 @@ async function skeletonFigure(id, start) {
       title: 'Selected joint: angle from rest', xLabel: 'time (s)', yLabel: 'angle (°)',
       series: angleSeries.map((a) => a[0]), colors: angleSeries.map((a) => a[1]),
       widths: start.blend ? [2.5, 2.5, 2.5] : UNDER_AND_OVER, minSpan: 5, height: 160,
-    }), angleSeries.map((a) => a[2])]);
+    }), angleSeries.map((a) => a[2]), true]);
   }
   const speedBox = figure.querySelector('.plot-speed');
   if (speedBox) {
@@ -141,7 +141,14 @@ async function skeletonFigure(id, start) {
   }
   function update() {
     const cols = columns(scene.sampleSelected(241), 7);
-    for (const [plot, which] of plots) plot.setData([cols[0], ...which.map((k) => cols[k])]);
+    for (const [plot, which, fromZero] of plots) {
+      const ys = which.map((k) => cols[k]);
+      // An angle from rest is never negative: its axis starts at 0 (at rest), which a curve
+      // that lies there a long time reads against. The speeds keep their own range, where
+      // slerp's and nlerp's differ.
+      if (fromZero) plot.setYRange([0, Math.max(...ys.map((c) => Math.max(...c)))]);
+      plot.setData([cols[0], ...ys]);
+    }
     showKeys();
   }
   function selectJoint() {

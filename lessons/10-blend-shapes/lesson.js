@@ -31,13 +31,15 @@ if (viewer) {
   viewer.setCamera(...scene.viewFit(), 0.15, 0.1);
   const timeline = new Timeline(document.getElementById('face-timeline'), { duration: 4, playing: true });
   const names = scene.targetNames();
-  // Equal curves stay visible: each weight is drawn wider than the next, and Σ w wide under
-  // the full form's dashed total (with the base weight 0 by hand the two are the same curve).
+  // Equal curves stay visible: each weight is drawn at least 2.5 px wider than the next (so
+  // three weights on one value show as three bands), Σ w dotted and the full form's total
+  // dashed over them, the curves under both showing through the gaps (with the base weight 0
+  // by hand the two totals are the same curve).
   const plot = new Plot(document.getElementById('face-plot'), {
     title: 'Weights over the loop', xLabel: 'time (s)', yLabel: 'weight (no unit)',
     series: [...names, 'Σ w (targets)', 'full form: base + Σ w'],
     colors: ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#1f2430', '#e68a00'], minSpan: 1, height: 200,
-    widths: [7, 5.5, 4, 2.5, 3.5, 1.5], dashes: [null, null, null, null, null, [6, 4]],
+    widths: [10, 7, 4, 1.5, 3, 1.5], dashes: [null, null, null, null, [2, 3], [6, 4]],
   });
   // The weights read against 0: the y axis always spans 0 (the four at 1.5 with the total at 7
   // would otherwise sit on the axis's floor and read as 0).

@@ -590,10 +590,17 @@ impl GltfFigure {
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        // Orange as its ball, but dark over a skin: RiggedSimple's beige tube lies round the
+        // root, and orange text on it does not read.
+        let name_color = if skinning {
+            palette::DARK
+        } else {
+            palette::ORANGE
+        };
         let first = crate::draw::Label {
             anchor: at + Vec3::Y * 2.0 * radius,
             text: "root".to_string(),
-            color: palette::ORANGE,
+            color: name_color,
             left: false,
             priority: 0,
             offset_px: Vec2::ZERO,
@@ -613,7 +620,7 @@ impl GltfFigure {
             ball_px,
             Vec2::new(1.0, 0.0),
             "root",
-            palette::ORANGE,
+            name_color,
             0,
             12,
             8.0,

@@ -577,10 +577,12 @@ impl ThrowFigure {
         frame.grid(16, 0.25);
         let t_end = self.duration_sec();
         let apex = Self::parabola(0.5 * t_end);
-        let reach = THROW_HALF.length().max(THROW_L_M + 0.2);
+        // The flight only, not the floor: the parabola with the box round it (its half
+        // diagonal below) and ω's tip beside L (up to 1 m off L's axis), L standing above it.
+        let reach = Vec3::new(1.0, THROW_L_M, 1.0);
         frame.keep_box_in_view(
-            THROW_START.min(Self::parabola(t_end)) - Vec3::new(reach, THROW_START.y, reach),
-            THROW_START.max(Self::parabola(t_end)).max(apex) + Vec3::splat(reach),
+            THROW_START.min(Self::parabola(t_end)) - reach.with_y(THROW_HALF.length()),
+            THROW_START.max(Self::parabola(t_end)).max(apex) + reach,
         );
         let path: Vec<Vec3> = (0..=48)
             .map(|k| Self::parabola(t_end * k as f32 / 48.0))

@@ -1364,8 +1364,19 @@ fn draw_path(
             .map_or(PATH_TICK_PX, |px| {
                 px.clamp(crate::draw::MIN_MARKER_PX, PATH_TICK_PX)
             });
-        frame.wide_polyline(path, color, crate::draw::CURVE_PX);
+        // Over everything (a tick's negative size too): the path runs through the tip's own
+        // ball, 4.4 cm across, which would hide much of a path a few centimetres long, in the
+        // inset above all.
+        let style = crate::draw::StrokeStyle {
+            on_top: true,
+            ..crate::draw::StrokeStyle::solid(crate::draw::CURVE_PX)
+        };
+        frame.stroke(path, color, style);
+        let first = frame.markers.len();
         frame.ticks(&samples, tick_px, color);
+        for tick in &mut frame.markers[first..] {
+            tick.size_px = -tick.size_px.abs();
+        }
     }
 }
 

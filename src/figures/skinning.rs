@@ -691,8 +691,10 @@ impl CylinderFigure {
             frame.marker_on_top(o + k2, 10.0, palette::GREY);
         }
         frame.marker_on_top(o + k1, 10.0, palette::GREY);
-        frame.marker_on_top(o + dqs, 12.0, palette::TEAL);
-        frame.marker_on_top(o + lbs, 12.0, palette::ORANGE);
+        // DQS's point wider than LBS's, which goes over it: where the two lie a few pixels
+        // apart (a small bend) the teal still rings the orange.
+        frame.marker_on_top(o + dqs, 14.0, palette::TEAL);
+        frame.marker_on_top(o + lbs, 8.0, palette::ORANGE);
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
         // Each name at the first place round its dot, away from the other dot first, clear of
         // the dots, lines and the other name (on the last frame's view), and nearer its own dot
