@@ -18,6 +18,24 @@ function heatLegend(selector) {
   };
 }
 
+/** Figure 2: the tube's weights along it, with a falloff slider of its own (Figure 1 has one
+ * too) that calls `setFalloff`. It needs no GPU, so it is drawn on a page without one too. */
+function weightsFigure(scene, p, setFalloff) {
+  const plot = new Plot(document.getElementById('weights-plot'), {
+    title: 'Weights along the tube', xLabel: 'distance from the shoulder end (m)', yLabel: 'weight (no unit)',
+    series: ['shoulder', 'elbow'], colors: ['#1f6fd6', '#d62728'], yRange: [-0.02, 1.02], height: 200,
+  });
+  const update = () => {
+    const [x, shoulder, elbow] = columns(scene.weightCurves(), 3);
+    plot.setData([x, shoulder, elbow]);
+  };
+  const gui = new GUI({ container: document.querySelector('#fig-weights .weights-panel'), title: 'Weights' });
+  const falloff = gui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange(setFalloff);
+  update();
+  markDrawn('#fig-weights');
+  return { update, falloff };
+}
+
 // Figure 1: the bend-and-twist cylinder, LBS beside DQS.
 const cylinderViewer = await lesson.figure('#fig-cylinder');
 if (cylinderViewer) {
@@ -34,15 +52,6 @@ if (cylinderViewer) {
     title: 'Tube volume against the bend', xLabel: 'bend angle (°)', yLabel: 'volume (% of rest)',
     series: ['LBS', 'DQS'], colors: ['#e68a00', '#17a2a8'], yRange: [0, 105], height: 180,
   });
-  // Figure 2: the same tube's weights along it, with its own falloff slider (Figure 1's too).
-  const weightsPlot = new Plot(document.getElementById('weights-plot'), {
-    title: 'Weights along the tube', xLabel: 'distance from the shoulder end (m)', yLabel: 'weight (no unit)',
-    series: ['shoulder', 'elbow'], colors: ['#1f6fd6', '#d62728'], yRange: [-0.02, 1.02], height: 200,
-  });
-  function updateWeights() {
-    const [x, shoulder, elbow] = columns(scene.weightCurves(), 3);
-    weightsPlot.setData([x, shoulder, elbow]);
-  }
   function updatePlot() {
     const pct = (a) => Array.from(a, (x) => 100 * x);
     const [angle, lbsBend, dqsBend, lbsTwist, dqsTwist] = columns(scene.areaCurves(91), 5);
@@ -64,7 +73,7 @@ if (cylinderViewer) {
     p.falloff = v;
     for (const c of falloffs) c.updateDisplay();
     updatePlot();
-    updateWeights();
+    weights.update();
   };
   falloffs.push(gui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange(setFalloff));
   const showLegend = heatLegend('#fig-cylinder');
@@ -72,11 +81,10 @@ if (cylinderViewer) {
   showLegend(p.heat);
   gui.add(p, 'ring', 0, 40, 1).name('followed vertex (ring)').onChange((r) => scene.setProbeRing(r));
   gui.add(p, 'useExercise').name('use my exercise').onChange((on) => scene.setUseExercise(on));
-  const weightsGui = new GUI({ container: document.querySelector('#fig-weights .weights-panel'), title: 'Weights' });
-  falloffs.push(weightsGui.add(p, 'falloff', 0.01, 1, 0.01).name('falloff (m)').onChange(setFalloff));
+  // Figure 2: the same tube's weights.
+  const weights = weightsFigure(scene, p, setFalloff);
+  falloffs.push(weights.falloff);
   updatePlot();
-  updateWeights();
-  markDrawn('#fig-weights');
   moveCursors();
 
   const note = document.getElementById('cyl-note');
@@ -86,9 +94,12 @@ if (cylinderViewer) {
   });
 }
 
-// Without a 3D view there is no tube, so no weights to plot: Figure 2 stays empty, and the page
-// must still count it as ready.
-if (!cylinderViewer) markDrawn('#fig-weights');
+// Without a 3D view Figure 2 still plots the tube's weights.
+if (!cylinderViewer) {
+  const scene = new SkinningCylinderScene();
+  const p = { falloff: 0.15 };
+  const weights = weightsFigure(scene, p, (v) => { scene.setFalloff(v); weights.update(); });
+}
 
 // Figure 3: the antipodality fix, the tube twisted 0 to 360° by DQS.
 const signViewer = await lesson.figure('#fig-sign');
