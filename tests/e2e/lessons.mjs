@@ -119,27 +119,37 @@ async function pauseTimelines(page) {
 }
 
 /**
- * A screenshot of the whole page with its figures drawn. Playwright's `fullPage` capture resizes
- * the page behind our back, which clears every canvas after the figures drew, so the viewport is
- * made as tall as the page instead: every figure is then on screen (Viewer::set_visible), draws
- * and places its labels, and an ordinary screenshot takes the lot. `check`, when given, runs in
- * that state, before the screenshot (the figures' sizes depend on the page's width only, so what
- * it sees is what the reader's viewport shows).
+ * Screenshots of the whole page with its figures drawn, from its top. Playwright's `fullPage`
+ * capture resizes the page behind our back, which clears every canvas after the figures drew, so
+ * the viewport is made as tall as the page instead: every figure is then on screen
+ * (Viewer::set_visible), draws and places its labels, and an ordinary screenshot takes the lot.
+ * Chromium's capture wraps round past about 8,000 px (the page's top reappears below), so a longer
+ * page is taken in parts of up to 8,000 px: `path` holds the first, `path` with -part2, -part3 ...
+ * before its extension the rest, each in a viewport as tall as what is left. `check`, when given,
+ * runs with the first part in view and every figure drawn, before the screenshots (the figures'
+ * sizes depend on the page's width only, so what it sees is what the reader's viewport shows).
  */
 async function fullPageShot(page, path, check = async () => {}) {
   const viewport = page.viewportSize();
   const height = await page.evaluate(() => document.documentElement.scrollHeight);
-  // Chromium's capture wraps round past about 8,000 px (the page's top reappears below), so a
-  // longer page is shown down to there.
-  await page.setViewportSize({ width: viewport.width, height: Math.min(height, 8000) });
-  await page.evaluate(() => window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true)));
-  await frames(page, 4);
-  await check();
-  // JPEG (`path` ends in .jpg): a page up to 8,000 px tall costs about half as long to capture as
-  // in PNG. The caret is left as it is (hiding it restyles the whole page).
-  await page.screenshot({ path, type: 'jpeg', quality: 90, caret: 'initial' });
+  const show = (top) => page.evaluate((top) => {
+    window.scrollTo(0, top);
+    window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true));
+  }, top);
+  for (let top = 0, part = 1; top < height; top += SHOT_PART, part += 1) {
+    await page.setViewportSize({ width: viewport.width, height: Math.min(height - top, SHOT_PART) });
+    await show(top);
+    await frames(page, 4);
+    if (part === 1) await check();
+    // JPEG (`path` ends in .jpg): a part of 8,000 px costs about half as long to capture as in
+    // PNG. The caret is left as it is (hiding it restyles the whole page).
+    await page.screenshot({ path: part === 1 ? path : path.replace(/(\.\w+)$/, `-part${part}$1`), type: 'jpeg', quality: 90, caret: 'initial' });
+  }
   await page.setViewportSize(viewport);
 }
+
+/** The tallest part of a page one screenshot takes (see `fullPageShot`). */
+const SHOT_PART = 8000;
 
 /**
  * A paused 3D figure's pixel statistics once it has settled, as a person would see it after
