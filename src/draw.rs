@@ -822,7 +822,7 @@ impl Label {
         steps: usize,
         step_px: f32,
     ) -> Vec<Label> {
-        let mut sides = [
+        let sides = [
             (1.0, 0.0),
             (-1.0, 0.0),
             (0.0, -1.0),
@@ -834,11 +834,9 @@ impl Label {
         ]
         .map(|(x, y)| glam::Vec2::new(x, y));
         let toward = toward.normalize_or_zero();
-        // A stable sort: equal scores keep the order above.
-        sides.sort_by(|a, b| {
-            let score = |s: &glam::Vec2| -s.normalize().dot(toward);
-            score(a).total_cmp(&score(b))
-        });
+        // Most towards `toward` first; a stable sort: equal scores keep the order above.
+        let order = crate::order::order_by(sides.iter().map(|s| s.normalize().dot(toward)), true);
+        let sides: [glam::Vec2; 8] = std::array::from_fn(|k| sides[order[k]]);
         (0..steps.max(1))
             .flat_map(|k| {
                 let out_px = k as f32 * step_px;

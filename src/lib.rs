@@ -26,7 +26,8 @@
 //! | `15-fluids`: fluids | [`fluid`] (kernels, SPH and PBF in 2D and 3D on the boids' grid, the particles' collisions) | [`figures::fluid`] (the kernels, the density of a dragged particle, SPH beside PBF on one dam break, a 3D splash on the CPU or the GPU grid and its step-time sweep) | `web::fluid` | [`exercises::fluid`] (15.x) |
 //!
 //! Shared by every lesson: [`draw`] (the draw list: meshes, lines, points, arrows, labels, the
-//! palette), [`texture`] (textured quads, sprites and atlases in the draw list),
+//! palette), [`texture`] (textured quads, sprites and atlases in the draw list), [`order`]
+//! (orderings by a float key through one sort),
 //! [`exercises::run`] with `web::sandbox` (figures run student code in a separate wasm
 //! instance, so a panic there cannot stop the page), `render/` (wgpu, wasm only).
 //! The crate builds four wasm modules (`scripts/build`): the *figures module* (every binding but
@@ -71,6 +72,7 @@ pub mod gltf_import;
 pub mod ik;
 pub mod mesh;
 pub mod noise;
+pub mod order;
 pub mod particles;
 pub mod raster;
 pub mod rigid;

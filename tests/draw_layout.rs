@@ -291,3 +291,22 @@ fn a_line_that_only_clips_a_labels_corner_is_not_clear_of_it() {
     assert!(!dot(Vec3::new(110.0, 100.0, 0.0)).label_is_clear(view_proj, canvas, &label));
     assert!(dot(Vec3::new(110.0, 80.0, 0.0)).label_is_clear(view_proj, canvas, &label));
 }
+
+/// The orderings by a float key (src/order.rs), which the label sides, the arrows and the
+/// sprites use: largest or smallest first, equal keys in index order, a NaN key as `total_cmp`
+/// places it, and the smallest-first order the exact reverse of the largest-first one where no
+/// keys tie.
+#[test]
+fn orderings_by_a_float_key_are_stable_and_exact() {
+    use inbetween::order::{order_by, sort_desc};
+    let keys = [2.0, -1.0, 3.0, 2.0, 0.0, -0.0, 3.0];
+    assert_eq!(order_by(keys, true), vec![2, 6, 0, 3, 4, 5, 1]);
+    assert_eq!(order_by(keys, false), vec![1, 5, 4, 0, 3, 2, 6]);
+    let distinct = [0.5, -2.0, 7.0, 1e-30, -0.0];
+    let mut up = order_by(distinct, false);
+    up.reverse();
+    assert_eq!(up, order_by(distinct, true));
+    let mut pairs = [(1.0, 0), (f32::NAN, 1), (f32::INFINITY, 2), (1.0, 3)];
+    sort_desc(&mut pairs);
+    assert_eq!(pairs.map(|p| p.1), [1, 2, 0, 3]);
+}

@@ -1219,8 +1219,7 @@ fn place_labels(
 ) -> Vec<(Vec3, bool, &'static str, Vec3)> {
     let extent = (hi - lo).max_element();
     let px = rules_m_per_px(extent);
-    let mut order: Vec<usize> = (0..tips.len()).collect();
-    order.sort_by(|&a, &b| tips[b].1.length().total_cmp(&tips[a].1.length()));
+    let order = crate::order::order_by(tips.iter().map(|t| t.1.length()), true);
     let r = 12.0 * px; // the boid's dot and a margin
     let mut placed: Vec<(f32, f32, f32, f32)> =
         vec![(boid.x - r, boid.z - r, boid.x + r, boid.z + r)];
@@ -1634,8 +1633,7 @@ impl RulesFigure {
         // Shorter arrows over longer ones, each a centimetre higher above the plane (the camera
         // looks down): a short rule that points along a long one still shows.
         let drawn = |i: usize| arrows[i].0.clamp_length_max(ARROW_MAX_M).length();
-        let mut by_length = [0usize, 1, 2];
-        by_length.sort_by(|&a, &b| drawn(b).total_cmp(&drawn(a)));
+        let by_length = crate::order::order_by((0..3).map(drawn), true);
         let mut lift = [0.0f32; 3];
         for (rank, &i) in by_length.iter().enumerate() {
             lift[i] = 0.01 * (rank + 1) as f32;

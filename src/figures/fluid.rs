@@ -345,7 +345,8 @@ impl DensityFigure {
             .iter()
             .map(|&j| (j as usize, (self.fluid.positions[j as usize] - p).length()))
             .collect();
-        self.neighbours.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let nearest_first = crate::order::order_by(self.neighbours.iter().map(|n| n.1), false);
+        self.neighbours = nearest_first.into_iter().map(|i| self.neighbours[i]).collect();
         self.evaluate();
         Ok(())
     }

@@ -120,5 +120,5 @@ pub fn sort_back_to_front(
             .map(|(i, &p)| (key(p), i as u32)),
     );
     // A stable sort on a total order (NaN depths go first, as if infinitely far).
-    order.sort_by(|a, b| b.0.total_cmp(&a.0));
+    crate::order::sort_desc(order);
 }

@@ -103,8 +103,9 @@ impl SkinWeights {
             if w.iter().any(|x| !x.is_finite()) {
                 return Err(SkinningError::NonFiniteWeight { vertex });
             }
-            let mut order = [0usize, 1, 2, 3, 4, 5, 6, 7];
-            order.sort_by(|&a, &b| w[b].total_cmp(&w[a]));
+            let mut order: [(f32, u32); 8] = std::array::from_fn(|i| (w[i], i as u32));
+            crate::order::sort_desc(&mut order);
+            let order = order.map(|(_, i)| i as usize);
             j4.push([j[order[0]], j[order[1]], j[order[2]], j[order[3]]]);
             w4.push([w[order[0]], w[order[1]], w[order[2]], w[order[3]]]);
         }
