@@ -143,11 +143,12 @@ function makeView(canvas, reserveBottom = 0) {
     ctx.beginPath(); ctx.moveTo(...v.toPx(x0, y0)); ctx.lineTo(...v.toPx(x1, y1)); ctx.stroke();
     ctx.setLineDash([]);
   };
-  v.text = (x, y, text, color = C.ink) => {
+  /** Text at a world point, `liftPx` higher on the canvas. */
+  v.text = (x, y, text, color = C.ink, liftPx = 0) => {
     const [px, py] = v.toPx(x, y);
     ctx.fillStyle = color;
     ctx.font = '12px system-ui, sans-serif';
-    ctx.fillText(text, px, py);
+    ctx.fillText(text, px, py - liftPx);
   };
   new ResizeObserver(v.layout).observe(canvas);
   v.layout();
@@ -706,7 +707,8 @@ if (lagrangeViewer) {
       for (let i = 0; i < side.path.length; i += 2) {
         top = Math.max(top, side.path[i + 1]); x0 = Math.min(x0, side.path[i]); x1 = Math.max(x1, side.path[i]);
       }
-      view.text((x0 + x1) / 2 + dx - 0.7, top + dy + 0.35, side.title, side.color);
+      // The title's baseline 30 px above the path's top: a key's number sits up to 22 px above it.
+      view.text((x0 + x1) / 2 + dx - 0.7, top + dy, side.title, side.color, 30);
     });
     markDrawn('#fig-cardinal');
   });

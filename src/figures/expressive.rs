@@ -375,14 +375,15 @@ impl Spacing {
             })
         };
         let top = START.lerp(END, 0.5) + Vec3::Y * self.arc_height;
-        for (anchor, first, text, color) in [
-            (top, top + Vec3::Y * 0.4, "arc", BALL),
+        // The twin's name goes round its start (key 1's end, left first) before its end: the
+        // two rows meet near key 2 when orbited, and a name there would name either.
+        for (anchor, toward, first, text, color) in [
+            (top, -glam::Vec2::Y, top + Vec3::Y * 0.4, "arc", BALL),
             // Under the middle of the twin's row of ghosts, where the arc, high above, leaves
             // room.
-            (b, a.lerp(b, 0.5) - Vec3::Y * 0.4, "straight line", PLAIN),
+            (a, -glam::Vec2::X, a.lerp(b, 0.5) - Vec3::Y * 0.4, "straight line", PLAIN),
         ] {
-            let up = -glam::Vec2::Y;
-            let mut around = Label::around_dot(anchor, 0.0, up, text, color, 1, 8, 10.0);
+            let mut around = Label::around_dot(anchor, 0.0, toward, text, color, 1, 8, 10.0);
             around.insert(
                 0,
                 Label::off_dot(first, 0.0, glam::Vec2::ZERO, text.into(), color, 1),

@@ -616,45 +616,13 @@ impl Frustum {
         }
         frame.marker(EYE, 12.0, palette::DARK);
         // The eye, the near plane, the point and its image crowd at the apex (the point starts at
-        // half of z_near), so each label there reads away from the others: the eye's to the left
-        // of the apex, z_near's to the left of the near plane's top-left corner (the point and
-        // its image stay to the right of the view axis, where x > 0 puts them), the point's above
-        // it and the image's below it, off the ray from the eye. The point's label wins, then the eye's.
-        label_left_with_priority(
-            frame,
-            EYE - Vec3::new(0.1, 0.0, 0.0),
-            "eye",
-            palette::DARK,
-            2,
-        );
-        // At a small z_near the near plane's corner sits a few pixels from the eye, and a name
-        // ending at it would butt against the eye's: then z_near's goes to the first place round
-        // the corner, up and to the left first, clear of the eye's name, the dots and the lines
-        // (on the last frame's view).
-        let view = self
-            .view
-            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
-        let at_corner = crate::draw::Label {
-            anchor: near[3],
-            text: "z_near".to_string(),
-            color: NEAR,
-            left: true,
-            priority: 1,
-            offset_px: Vec2::ZERO,
-            large: false,
-        };
-        let round_corner = Label::around_dot(
-            near[3],
-            0.0,
-            Vec2::new(-1.0, -1.0),
-            "z_near",
-            NEAR,
-            1,
-            6,
-            8.0,
-        );
-        frame.first_clear_label(view, std::iter::once(at_corner).chain(round_corner));
-        frame.label_with_priority(far[2], "z_far", FAR, 1);
+        // half of z_near), so each label there reads away from the others: the eye's left of the
+        // apex (the first place round its dot, left first, that keeps LINE_MARGIN_PX off the
+        // frustum's edges on the last frame's view: orbited, the near plane's lower edge passes
+        // beside the eye), z_near's to the left of the near plane's top-left corner (the point
+        // and its image stay to the right of the view axis, where x > 0 puts them), the point's
+        // above it and the image's below it, off the ray from the eye. The point's label wins,
+        // then the eye's.
         // The point, the ray from the eye, and where the ray crosses the near plane (the image).
         let p = self.point_at(s);
         let m = self.used_matrix();
@@ -675,10 +643,40 @@ impl Frustum {
         frame.label_off_dot(at(p), POINT_PX, Vec2::new(0.0, -1.0), "p", color, 3);
         let on_near = p * (self.near / -p.z);
         frame.marker_on_top(at(on_near), IMAGE_PX, ON_NEAR);
+        // The eye's and z_near's names keep off the point's and the image's dots.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let around_eye = Label::around_dot(EYE, 12.0, -Vec2::X, "eye", palette::DARK, 2, 8, 8.0);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, around_eye, |_| true);
+        // At a small z_near the near plane's corner sits a few pixels from the eye, and a name
+        // ending at it would butt against the eye's: then z_near's goes to the first place round
+        // the corner, up and to the left first, clear of the eye's name, the dots and the lines
+        // (on the last frame's view).
+        let at_corner = crate::draw::Label {
+            anchor: near[3],
+            text: "z_near".to_string(),
+            color: NEAR,
+            left: true,
+            priority: 1,
+            offset_px: Vec2::ZERO,
+            large: false,
+        };
+        let round_corner = Label::around_dot(
+            near[3],
+            0.0,
+            Vec2::new(-1.0, -1.0),
+            "z_near",
+            NEAR,
+            1,
+            6,
+            8.0,
+        );
+        frame.first_clear_label(view, std::iter::once(at_corner).chain(round_corner));
         let dot_px = POINT_PX.max(IMAGE_PX);
         let candidates =
-            Label::around_dot(at(on_near), dot_px, Vec2::ONE, "image", ON_NEAR, 0, 4, 6.0);
-        frame.first_clear_label(view, candidates);
+            Label::around_dot(at(on_near), dot_px, Vec2::ONE, "image", ON_NEAR, 0, 8, 8.0);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, candidates, |_| true);
         // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z, right
         // of the eye.
         let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
@@ -695,6 +693,11 @@ impl Frustum {
             frame.wide_line(box_corners[4 + i], box_corners[4 + (i + 1) % 4], FAR, w);
             frame.wide_line(box_corners[i], box_corners[4 + i], NDC_BOX, 1.5);
         }
+        // The far plane's top-right corner sits beside the box when a wide field of view draws
+        // the frustum short: its name goes round the corner, up and to the right first, clear
+        // of both.
+        let around_far = Label::around_dot(far[2], 0.0, Vec2::new(1.0, -1.0), "z_far", FAR, 1, 4, 6.0);
+        frame.first_clear_label_by(view, LINE_MARGIN_PX, around_far, |_| true);
         // The box's labels go where they cover none of its lines (three meet at each corner,
         // and the point's dot moves among them) on the last frame's view, each clear of those
         // placed before it: the point's name first, preferably above its dot, then the box's
@@ -727,7 +730,7 @@ impl Frustum {
             (box_corners[6], "depth 1", FAR),
         ] {
             let toward = away_from_box(corner);
-            let candidates = Label::around_dot(corner, CORNER_PX, toward, text, color, 1, 4, 6.0);
+            let candidates = Label::around_dot(corner, CORNER_PX, toward, text, color, 1, 6, 6.0);
             frame.first_clear_label_by(view, LINE_MARGIN_PX, candidates, |_| true);
         }
         // The whole frustum, the point's path and the NDC box stay in view at any canvas size.
@@ -1139,25 +1142,6 @@ impl DepthPrecision {
             if from > self.far { ", past z_far: no fighting" } else { ": there the floors fight" },
         )
     }
-}
-
-/// A [`Frame::label_left`] with a priority (as [`Frame::label_with_priority`]).
-fn label_left_with_priority(
-    frame: &mut Frame,
-    anchor: Vec3,
-    text: &str,
-    color: Vec3,
-    priority: i32,
-) {
-    frame.labels.push(crate::draw::Label {
-        anchor,
-        text: text.to_string(),
-        color,
-        left: true,
-        priority,
-        offset_px: glam::Vec2::ZERO,
-        large: false,
-    });
 }
 
 /// A fixed pseudo-random number in [0, 1) per pixel and channel (the same every frame).

@@ -477,3 +477,49 @@ fn lesson_00_ndc_box_keeps_its_size_beside_a_wide_frustum() {
         }
     }
 }
+
+#[test]
+fn lesson_00_frustum_names_keep_off_the_lines_at_a_wide_field_of_view_when_orbited() {
+    // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js) and orbited as a
+    // drag across the canvas does (yaw down by up to 1 rad, pitch up), both canvases, at the
+    // page's settings and at a wide field of view with a far z_far (the frustum drawn short, its
+    // far plane's corner beside the NDC box) and the point below and left: "eye", "image",
+    // "z_far", "depth 0" and "depth 1" stay where the figure put them and keep 2 px off every
+    // line and dot. As on the page, the figure places them for the view of the frame before.
+    use inbetween::figures::raster::Frustum;
+    const NAMES: [&str; 5] = ["eye", "image", "z_far", "depth 0", "depth 1"];
+    let mut failures = Vec::new();
+    for (fov, near, far, x, y) in [
+        (50.0, 1.0, 8.0, 0.6, 0.3),
+        (121.0, 3.95, 15.9, -1.8, -1.8),
+        (100.0, 2.0, 12.0, 0.6, 0.3),
+    ] {
+        for (yaw, pitch) in [(0.45, 0.45), (-0.1, 0.6), (-0.59, 0.79)] {
+            for s in [0.2, 0.37, 0.6] {
+                for size in CANVASES {
+                    let mut scene = Frustum::new();
+                    scene.set_frustum(fov, near, far).unwrap();
+                    scene.set_offset(x, y).unwrap();
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        [4.5, 1.2, -4.0, 17.0, yaw, pitch],
+                        size,
+                        |fig, out| {
+                            fig.draw(out, s).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let named: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                        .collect();
+                    let name = format!("00 frustum {fov}° {near}-{far} m, orbit ({yaw}, {pitch}), s {s}");
+                    assert_eq!(named.len(), NAMES.len(), "{name}");
+                    failures.extend(failure_of(|| {
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
