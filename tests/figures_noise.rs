@@ -342,6 +342,21 @@ fn terrain_normal_is_drawn_over_the_peaks() {
         .collect();
     assert!(!grey.is_empty(), "the normal is drawn");
     assert!(grey.iter().all(|st| st.depth_bias == inbetween::draw::ON_TOP));
+    // A thin grey line on the terrain is hard to find: the shaft is wide, over a wider dark
+    // outline drawn before it, and its name is large.
+    let wide = inbetween::figures::noise::NORMAL_PX;
+    let shaft = f
+        .strokes
+        .iter()
+        .position(|st| st.color[..3] == palette::REFERENCE.to_array() && st.width_px >= wide)
+        .expect("a wide grey shaft");
+    let outline = f
+        .strokes
+        .iter()
+        .position(|st| st.color[..3] == palette::DARK.to_array())
+        .expect("a dark outline");
+    assert!(outline < shaft && f.strokes[outline].width_px >= f.strokes[shaft].width_px + 2.0);
+    assert!(f.labels.iter().any(|l| l.text == "n" && l.large));
 }
 
 #[test]

@@ -649,6 +649,23 @@ fn everything_drawn_stays_inside_the_declared_view() {
         assert!(on_top >= paths.len() - 2, "{clip}: {on_top} path segments on top");
         let ticks = frame.markers.iter().filter(|m| m.shape == MARKER_TICK);
         assert!(ticks.clone().count() > 20 && ticks.clone().all(|m| m.size_px < 0.0), "{clip}");
+        // Seen in the inset, on either page canvas, no tick lies under the inset's title (in
+        // its top-left corner, where the page puts it).
+        use inbetween::draw::inset::{inset_camera, inset_rect, title_top_left};
+        let (view, projection, _) = inset_camera(inset).unwrap();
+        for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+            let r = inset_rect(size);
+            let title_end = title_top_left(size) + inbetween::draw::label_size_px(&inset.title);
+            for m in ticks.clone() {
+                let ndc = (projection * view).project_point3(Vec3::from(m.center));
+                let c = r.min + glam::Vec2::new(ndc.x + 1.0, 1.0 - ndc.y) * 0.5 * r.size;
+                let half = 0.5 * m.size_px.abs();
+                assert!(
+                    c.y - half > title_end.y || c.x - half > title_end.x,
+                    "{clip} on {size}: a tick at {c} under the inset's title (to {title_end})"
+                );
+            }
+        }
     }
     // Without compared paths, no inset.
     let mut frame = Frame::default();

@@ -17,8 +17,9 @@ if (rigidViewer) {
   rigidViewer.setCamera(0, 1.0, 0, 6.5, 0.35, 0.4);
   const scene = new RigidScene();
   const timeline = new Timeline(document.getElementById('rigid-timeline'), { duration: 4 });
-  // It opens half-way from A to B, where the three methods have parted (at the keys they meet).
-  timeline.time = 1;
+  // It opens at t = 0.3, where the three methods have parted: at the keys all three meet, and
+  // half-way the blend's plane lies on the screw's and hides it.
+  timeline.time = 0.6;
   timeline.show();
   const SHOW = { 'all three': 0, 'lerp + slerp': 1, 'dual quaternion blend': 2, screw: 3 };
   const p = {

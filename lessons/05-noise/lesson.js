@@ -62,10 +62,11 @@ if (v1) {
   gui.add(p, 'ramps').name('show the two ramps');
   gui.add(p, 'useExercise').name('use my exercise');
   // The 1985 curve first and wide, so that fade(t), which nearly follows it, stays visible on top.
+  // Tall enough for y ticks every 0.5: fade′ peaks at 1.875, and ticks at 0 and 1 alone hide it.
   const plot = new Plot(document.getElementById('n1-fade'), {
     title: 'The fade curve', xLabel: 't (position in the cell, 0 to 1)', yLabel: 'value (no unit)',
     series: ['3t² − 2t³ (1985)', 'fade(t)', 'fade′(t)'], colors: [cssVar('--grey'), cssVar('--z-axis'), cssVar('--orange')],
-    widths: [5, 2, 2], minSpan: 0.5,
+    widths: [5, 2, 2], minSpan: 0.5, height: 250,
   });
   const curvature = new Plot(document.getElementById('n1-curv'), {
     title: 'Second derivatives: the curvature at the ends of a cell', xLabel: 't (position in the cell, 0 to 1)',
@@ -145,14 +146,15 @@ if (v3) {
   gui.add(p, 'useExercise').name('use my exercise');
   const names = [...Array(10).keys()].map((k) => `octave ${k}`);
   // The sum first and wide, so that octave 0 stays visible on top of it when N = 0. An octave
-  // finer than the mesh (past scene.lastResolvedOctave()) is drawn in light grey: uPlot calls a
-  // stroke function at every redraw.
+  // finer than the mesh (past scene.lastResolvedOctave()) is drawn in translucent grey (uPlot
+  // calls a stroke function at every redraw): such octaves wiggle faster than the plot's pixels
+  // and fill a band, through which the coloured octaves under it still show.
   const octaveColors = ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#17a2a8', '#e35d9c', '#8c564b', '#7f7f7f', '#bcbd22', '#9edae5'];
   let lastResolved = 9;
   const plot = new Plot(document.getElementById('oct-plot'), {
     title: 'The sum along v = 0.25, and each octave (grey: finer than the mesh)', xLabel: 'u (m)', yLabel: 'height (no unit)',
     series: ['sum', ...names],
-    colors: [cssVar('--orange'), ...octaveColors.map((c, k) => () => (k > lastResolved ? '#c8c8c8' : c))],
+    colors: [cssVar('--orange'), ...octaveColors.map((c, k) => () => (k > lastResolved ? 'rgba(128, 128, 128, 0.22)' : c))],
     widths: [5], minSpan: 0.2,
   });
   let rejected = '';

@@ -25,6 +25,9 @@ const FILE: &str = "src/exercises/noise.rs";
 const TOLERANCE: f32 = 1e-4;
 /// Width of a guide line (a gradient, a ramp, the probe's stalk, the cell's outline), CSS pixels.
 pub const GUIDE_PX: f32 = 2.0;
+/// Width of Figure 4's normal's shaft, CSS pixels; its dark outline is 2.5 px wider (6 px, the
+/// widest line the renderer draws).
+pub const NORMAL_PX: f32 = 3.5;
 
 /// Perlin's table for seed 0, a seeded shuffle otherwise.
 pub fn permutation_for_seed(seed: u32) -> Permutation {
@@ -1367,9 +1370,13 @@ impl TerrainScene {
         let at = self.terrain.positions[k];
         let reference = self.terrain.normals[k];
         // The normals' shafts over the surface: on a rough terrain (s and h high) the peaks
-        // round the vertex hide a depth-tested arrow.
-        frame.arrow_on_top(at, at + reference * 0.5, palette::REFERENCE, 0.08);
-        frame.label(at + reference * 0.58, "n", palette::REFERENCE);
+        // round the vertex hide a depth-tested arrow. The reference's shaft is wide and outlined
+        // in dark, so that its grey reads on water, grass, rock and snow alike; its name large.
+        let tip = at + reference * 0.5;
+        frame.wide_line_on_top(at, tip - reference * 0.08, palette::DARK, NORMAL_PX + 2.5);
+        frame.wide_line_on_top(at, tip, palette::REFERENCE, NORMAL_PX);
+        frame.arrow_on_top(at, tip, palette::REFERENCE, 0.08);
+        frame.label_large(at + reference * 0.58, "n", palette::REFERENCE, 0);
         let p = &self.params;
         let r = self.terrain.resolution();
         let mut note = format!(

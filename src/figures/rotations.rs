@@ -537,9 +537,11 @@ impl Interpolation {
             slerp_color,
         );
         // The keys' names, once every dot and line is down: each at the first place round its
-        // dot, outward first (then further out), on the last frame's view, that covers no dot,
-        // line or name placed before it (near t = 0 or 1, slerp's and nlerp's dots sit on a
-        // key's).
+        // dot, outward first (then further out), on the last frame's view, that keeps
+        // KEY_NAME_CLEAR_PX off every dot, line and name placed before it (near t = 0 or 1,
+        // slerp's and nlerp's dots sit on a key's; a name touching nlerp's rays or the chord
+        // reads as theirs) and lies nearer its own key's dot than any other's (a and −b, or b
+        // and −a, can be 10° apart).
         let view = self
             .circle_view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
@@ -550,7 +552,13 @@ impl Interpolation {
                 .filter_map(|l| l.first_place(view_proj, size))
                 .collect()
         });
-        for (q, name, color) in keys {
+        let dots: Vec<Option<glam::Vec2>> = (keys.iter())
+            .map(|(q, _, _)| {
+                let (view_proj, size) = view?;
+                crate::camera::project_to_canvas(view_proj, size, to_world(*q))
+            })
+            .collect();
+        for (i, (q, name, color)) in keys.into_iter().enumerate() {
             let p = to_world(q);
             let out = p - CIRCLE_CENTRE;
             let toward = view
@@ -562,8 +570,14 @@ impl Interpolation {
             let candidates =
                 crate::draw::Label::around_dot(p, KEY_DOT_PX, toward, name, color, 3, 8, 8.0);
             let clear = super::clear_of(view, &[]);
-            frame.first_clear_label_by(view, 0.0, candidates, |r| {
-                clear(r) && arc_labels.iter().all(|a| !a.overlaps(&r, ARC_LABEL_GAP_PX))
+            let from = |c: glam::Vec2, r: &crate::draw::layout::Rect| r.nearest(c).distance(c);
+            frame.first_clear_label_by(view, KEY_NAME_CLEAR_PX, candidates, |r| {
+                clear(r)
+                    && arc_labels.iter().all(|a| !a.overlaps(&r, ARC_LABEL_GAP_PX))
+                    && dots[i].is_none_or(|own| {
+                        let d = from(own, &r);
+                        dots.iter().flatten().all(|&o| o == own || from(o, &r) > d)
+                    })
             });
         }
         let dot = format_number(a.dot(b));
@@ -652,6 +666,8 @@ impl Interpolation {
 const KEY_DOT_PX: f32 = 12.0;
 /// How far Figure 2's key names keep from its arcs' labels, CSS pixels: a word's gap and more.
 pub const ARC_LABEL_GAP_PX: f32 = 14.0;
+/// Figure 2: the names a, −a, b and −b keep this far off every dot and line (CSS pixels).
+pub const KEY_NAME_CLEAR_PX: f32 = 2.0;
 
 /// Figure 2's circle of unit quaternions: its centre and radius (metres).
 pub const CIRCLE_CENTRE: Vec3 = Vec3::new(0.0, 1.3, 0.0);

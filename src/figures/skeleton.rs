@@ -47,6 +47,8 @@ const NAME_CLEAR_PX: f32 = 14.0;
 const PICK_RADIUS_PX: f32 = 10.0;
 /// Where the crossfade's two clips stand beside the blend, metres along x (A left, B right).
 pub const SOURCE_OFFSET_X: f32 = 1.4;
+/// The share of the paths' box's larger side added at the top of the inset, under its title.
+pub const INSET_TITLE_ROOM: f32 = 0.3;
 /// Room kept around the skeleton's box for the joint boxes, the head and the labels, metres.
 const VIEW_MARGIN_M: f32 = 0.18;
 
@@ -1188,14 +1190,22 @@ impl SkeletonFigure {
         if self.compare_clip.is_some() {
             // The two paths close up, seen along the axis they extend least along (across the
             // plane they mostly lie in), whatever the main view's distance and angle.
-            let (lo, hi) = self.paths_box;
+            // The box grows at the inset's top by INSET_TITLE_ROOM of its larger side across,
+            // so that the paths and their ticks lie under the inset's title, not behind it.
+            let (mut lo, mut hi) = self.paths_box;
             let extent = hi - lo;
+            let room = INSET_TITLE_ROOM * extent.max_element();
             let along = if extent.y <= extent.x.min(extent.z) {
+                // Seen from above, −z is up the inset.
+                lo.z -= room;
                 InsetView::Top
-            } else if extent.x <= extent.z {
-                InsetView::Side
             } else {
-                InsetView::Front
+                hi.y += room;
+                if extent.x <= extent.z {
+                    InsetView::Side
+                } else {
+                    InsetView::Front
+                }
             };
             frame.inset(along, "paths, close up", lo, hi);
         }

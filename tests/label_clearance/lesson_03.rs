@@ -168,8 +168,9 @@ fn lesson_03_circle_key_names_keep_off_the_dots_when_orbited() {
     // page sweep's drag turns it by −1.2 rad and tilts it by 0.3 rad), both canvases, at the
     // default keys and at 170° and −170° about x (a and −b 10° apart), on either arc, at t = 0,
     // where slerp's and nlerp's dots sit on a, and across the timeline: the names a, −a, b and
-    // −b are shown where the figure put them (so none sits on another) and keep off every dot
-    // and line. As on the page, the figure places them for the view of the frame before.
+    // −b are shown where the figure put them (so none sits on another) and keep a few pixels
+    // off every dot and line. As on the page, the figure places them for the view of the frame
+    // before.
     use inbetween::figures::rotations::Interpolation;
     const NAMES: [&str; 4] = ["a", "−a", "b", "−b"];
     let mut failures = Vec::new();
@@ -204,12 +205,37 @@ fn lesson_03_circle_key_names_keep_off_the_dots_when_orbited() {
                         .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
                         .collect();
                     assert_eq!(named.len(), 4, "{name}");
+                    // Clear by a few pixels: a name touching nlerp's rays or lerp's chord reads
+                    // as theirs.
+                    let clear = inbetween::figures::rotations::KEY_NAME_CLEAR_PX - 0.5;
                     failures.extend(failure_of(|| {
-                        assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
+                        assert_shown_clear_by(&name, &frame, &camera, size, &named, clear)
                     }));
+                    let boxes = label_boxes(&frame, &camera, size);
+                    // Each name lies nearer its own key's dot than any other key's: a and −b
+                    // are 10° apart, and a name beside the other's dot reads as its. The keys'
+                    // dots are the figure's first four markers, in the order of NAMES.
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let dots: Vec<(String, Vec2)> = NAMES
+                        .iter()
+                        .zip(&frame.markers)
+                        .filter_map(|(n, m)| {
+                            assert_eq!(m.size_px, 12.0, "{name}: {n}'s dot");
+                            let c = project_to_canvas(view_proj, size, Vec3::from(m.center))?;
+                            Some((n.to_string(), c))
+                        })
+                        .collect();
+                    for (text, r) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
+                        let from = |c: Vec2| r.nearest(c).distance(c);
+                        let (_, own) = dots.iter().find(|(n, _)| n == text).unwrap();
+                        for (other, c) in dots.iter().filter(|(n, _)| n != text) {
+                            if from(*c) <= from(*own) {
+                                failures.push(format!("{name} on {size}: {text} nearer {other}"));
+                            }
+                        }
+                    }
                     // A name a word's gap before an arc's label reads as its first word ("a
                     // short arc: Ω = 10°"): the names keep ARC_LABEL_GAP_PX off the arcs' labels.
-                    let boxes = label_boxes(&frame, &camera, size);
                     let gap = inbetween::figures::rotations::ARC_LABEL_GAP_PX - 0.5;
                     for (text, r) in boxes.iter().filter(|(t, _)| NAMES.contains(&&**t)) {
                         for (arc, a) in boxes.iter().filter(|(t, _)| t.contains(" arc: ")) {

@@ -4,11 +4,12 @@ use super::*;
 
 #[test]
 fn lesson_06_selected_joint_name_keeps_off_the_path_ticks_and_bones() {
-    // Figures 1 and 2 at their page cameras (lessons/06-skeletons/lesson.js), both canvases,
-    // with each figure's starting clip, keys, interpolations and joint, across a cycle: the
-    // selected joint's name is shown where the figure put it and keeps 2 px off every dot,
-    // tick and line (the ring of path ticks round the joint's path, the bones). As on the page,
-    // the figure places it for the view of the frame before.
+    // Figures 1 and 2 at their page cameras (lessons/06-skeletons/lesson.js) and Figure 2 as
+    // the page sweep's drag leaves it (turned by −1.2 rad and tilted by 0.3 rad, its ring seen
+    // edge-on), both canvases, with each figure's starting clip, keys, interpolations and joint,
+    // across a cycle: the selected joint's name is shown where the figure put it and keeps 2 px
+    // off every dot, tick and line (the ring of path ticks round the joint's path, the bones).
+    // As on the page, the figure places it for the view of the frame before.
     use inbetween::figures::skeleton::SkeletonFigure;
     let mut failures = Vec::new();
     for (clip, keys, joint, compare, yaw, pitch) in [
@@ -20,6 +21,14 @@ fn lesson_06_selected_joint_name_keeps_off_the_path_ticks_and_bones() {
             "linear (nlerp)",
             1.2,
             0.15,
+        ),
+        (
+            "arm circles",
+            4.0,
+            "upper_arm.L",
+            "linear (nlerp)",
+            0.0,
+            0.45,
         ),
     ] {
         for k in 0..8 {
