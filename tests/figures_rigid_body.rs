@@ -512,6 +512,20 @@ fn the_drop_draws_the_impulse_and_the_velocities_before_and_after() {
             .all(|(a, b)| a.y <= hit.point.y + 1e-4 && b.y <= hit.point.y + 1e-4),
         "the impulse ends at the contact"
     );
+    // v before arrives at the centre of mass at the hit and v after leaves it: both point
+    // straight down, so from one point they would lie one over the other; end to end, before
+    // is above the centre and after below it.
+    let y = hit.centre.y;
+    let faded = palette::BLUE.lerp(Vec3::ONE, 0.55);
+    assert!(frame.segments_of(faded).count() >= 1 && frame.segments_of(palette::BLUE).count() >= 1);
+    assert!(
+        frame.segments_of(faded).all(|(a, b)| a.y >= y - 1e-4 && b.y >= y - 1e-4),
+        "v before ends at the centre"
+    );
+    assert!(
+        frame.segments_of(palette::BLUE).all(|(a, b)| a.y <= y + 1e-4 && b.y <= y + 1e-4),
+        "v after starts at the centre"
+    );
     assert!(
         note.contains("−e times it") && note.contains("j = "),
         "{note}"

@@ -1057,6 +1057,19 @@ export function columns(flat, width) {
   return cols;
 }
 
+/**
+ * Pads a live plot's columns (`cols[0]` the times, sorted) with empty rows so that its x axis
+ * spans the whole timeline, 0 to `duration`: a row at 0 when the samples start later (a run
+ * restarted after a scrub) or there are none, and one at `duration` after the last sample. A
+ * plot with one sample would otherwise span a few tenths of a second about it and read as empty.
+ */
+export function spanTimeline(cols, duration) {
+  const pad = (at, x) => cols.forEach((c, k) => c.splice(at, 0, k === 0 ? x : null));
+  if (!(cols[0][0] <= 0)) pad(0, 0);
+  if (cols[0][cols[0].length - 1] < duration) pad(cols[0].length, duration);
+  return cols;
+}
+
 /** A timeline's time as t in [0, 1] going there and back, so a looping interpolation never jumps. */
 export function pingPong(timeline) {
   return 1 - Math.abs(2 * (timeline.time / timeline.duration) - 1);

@@ -1,6 +1,6 @@
 // Lesson 11: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/particles/, src/figures/particles.rs).
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, spanTimeline, guarded, showNote, cssVar } from '../../www/lesson.js';
 import { EmitterScene, FreeFallScene, OscillatorScene, BounceScene, SquashScene, SmokeScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -68,10 +68,7 @@ if (emitterViewer) {
       hasCompute ? '' : '(Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.)'].filter(Boolean).join(' '));
     // Ten times a second, and at once after a jump; the x axis always spans the whole loop.
     if (frame++ % 6 === 0 || Math.abs(t - plotTime) > 0.2) {
-      const cols = columns(scene.countSamples(), 5);
-      cols[0].push(timeline.duration);
-      for (let k = 1; k < 5; k++) cols[k].push(null);
-      countPlot.setData(cols);
+      countPlot.setData(spanTimeline(columns(scene.countSamples(), 5), timeline.duration));
       plotTime = t;
     }
     countPlot.setCursor(t);

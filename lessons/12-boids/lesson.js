@@ -1,6 +1,6 @@
 // Lesson 12: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/boids/, src/figures/boids.rs). The page only times the calls it makes.
-import { startLesson, markDrawn, Plot, GUI, Timeline, columns, guarded, showNote, cssVar, timeSweepStep } from '../../www/lesson.js';
+import { startLesson, markDrawn, Plot, GUI, Timeline, columns, spanTimeline, guarded, showNote, cssVar, timeSweepStep } from '../../www/lesson.js';
 import { BoidRulesScene, FlockScene, lawPlotSamples } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -177,10 +177,11 @@ if (flockViewer) {
     if (!onGpu && steps > 0 && steps < 10) average = average === 0 ? ms / steps : 0.9 * average + 0.1 * (ms / steps);
     frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
     showNote(note, [rejected, scene.draw(flockViewer)].filter(Boolean).join(' '));
-    // Ten times a second, and at once after a jump (a scrub or the loop starts a new flock).
+    // Ten times a second, and at once after a jump (a scrub or the loop starts a new flock, whose
+    // samples begin at the time it starts); the x axis always spans the whole loop.
     if (frame % 6 === 0 || Math.abs(time - plotTime) > 0.2) {
       // On the GPU the samples come from the flock read back every 0.1 s.
-      orderPlot.setData(columns(scene.plotSamples(), 3));
+      orderPlot.setData(spanTimeline(columns(scene.plotSamples(), 3), timeline.duration));
       plotTime = time;
     }
     orderPlot.setCursor(time);

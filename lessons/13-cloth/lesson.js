@@ -1,7 +1,7 @@
 // Lesson 13: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/cloth/, src/figures/cloth.rs), including picking and dragging a particle. The page only
 // times the calls it makes.
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar, dragInCanvas } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, spanTimeline, guarded, showNote, cssVar, dragInCanvas } from '../../www/lesson.js';
 import { ClothScene, SpringScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -171,7 +171,8 @@ if (flagViewer) {
     const key = `${samples.length} ${scene.explodedAt(0)} ${scene.explodedAt(1)}`;
     if (key !== shown) {
       shown = key;
-      const [time, e0, e1, s0, s1] = gaps(samples, 5);
+      // The x axis spans the whole timeline: after a change, the first sample at 0 s alone.
+      const [time, e0, e1, s0, s1] = spanTimeline(gaps(samples, 5), timeline.duration);
       // Scales that follow the cloths that held (Rust's choice): an explosion's last samples
       // would squash the other flag's curves onto a line.
       const r = scene.plotRanges();

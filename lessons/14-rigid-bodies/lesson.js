@@ -1,7 +1,7 @@
 // Lesson 14: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/rigid_body/, src/figures/rigid_body.rs). Each scene steps to the timeline's time and its
 // plots show the whole run at the figure's settings, with the cursor at the time.
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, spanTimeline, guarded, showNote, cssVar } from '../../www/lesson.js';
 import { ThrowScene, DriftScene, RacketScene, ImpulseScene, StackScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -31,11 +31,8 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
   const replot = () => {
     // A racket that exploded has NaN samples from then on: gaps in its curves.
     const all = columns(state.scene.samples(), width).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
-    // A live plot's x axis spans the whole timeline from the start: a last, empty row at its end.
-    if (live) {
-      all[0].push(timeline.duration);
-      for (let k = 1; k < width; k++) all[k].push(null);
-    }
+    // A live plot's x axis spans the whole timeline from the start.
+    if (live) spanTimeline(all, timeline.duration);
     for (const { plot, cols, from0, options } of shown) {
       const data = cols.map((c) => all[c]);
       // A quantity that is never negative: its axis starts at 0 instead of centring a flat start.

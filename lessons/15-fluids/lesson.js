@@ -1,6 +1,6 @@
 // Lesson 15: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/fluid/, src/figures/fluid.rs), which also says what each figure draws and plots.
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns, guarded, showNote, cssVar, timeSweepStep, dragInCanvas } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, spanTimeline, guarded, showNote, cssVar, timeSweepStep, dragInCanvas } from '../../www/lesson.js';
 import { KernelsScene, DensityScene, DamBreakScene, SplashScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -123,13 +123,8 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     const replot = () => {
       const all = gaps(columns(scene.samples(), 5));
       simulated = all[0].length ? all[0][all[0].length - 1] : 0;
-      // The x axis spans the whole timeline from the start: a last, empty row at its end, and,
-      // before the first sample, an empty row at 0 (one row alone would span 10 % about its end).
-      const ends = all[0].length ? [timeline.duration] : [0, timeline.duration];
-      for (const x of ends) {
-        all[0].push(x);
-        for (let k = 1; k < 5; k++) all[k].push(null);
-      }
+      // The x axis spans the whole timeline from the start.
+      spanTimeline(all, timeline.duration);
       compression.setData([all[0], all[1], all[2]]);
       energy.setData([all[0], all[3], all[4]]);
     };

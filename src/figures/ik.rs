@@ -1427,12 +1427,6 @@ impl AimFigure {
             0.08,
         );
         frame.marker(target, TARGET_PX, palette::RED);
-        frame.label_with_priority(
-            target + Vec3::new(0.05, 0.05, 0.0),
-            "target",
-            palette::RED,
-            2,
-        );
         let to_target = (target - HEAD).normalize_or(Vec3::Z);
         let missed = s.forward.angle_between(to_target);
         let axis = s
@@ -1506,19 +1500,23 @@ impl AimFigure {
                 })
                 .collect()
             });
-        // The arrow's name past its tip, and the miss's size past the middle of its arc; where
-        // the body, the head or a line lies there, the first place round that point clear of
-        // them.
-        let mut labels = vec![(s.forward * 0.85, "forward".to_string(), palette::BLUE, 2)];
+        // The target's name beside its dot, the arrow's past its tip, and the miss's size past
+        // the middle of its arc; where the body, the head or a line (the dashed line to the
+        // target) lies there, the first place round that point clear of them.
+        let mut labels = vec![
+            (target - HEAD, "target".to_string(), palette::RED, 2, TARGET_PX),
+            (s.forward * 0.85, "forward".to_string(), palette::BLUE, 2, 4.0),
+        ];
         if !s.result.reached {
             labels.push((
                 Quat::from_axis_angle(axis, 0.5 * missed) * s.forward * 0.52,
                 format!("misses {:.0}°", missed / DEG),
                 palette::RED,
                 1,
+                4.0,
             ));
         }
-        for (out, text, color, priority) in labels {
+        for (out, text, color, priority, dot_px) in labels {
             let at = HEAD + out;
             let first = crate::draw::Label {
                 anchor: at,
@@ -1529,8 +1527,16 @@ impl AimFigure {
                 offset_px: Vec2::ZERO,
                 large: false,
             };
-            let around =
-                crate::draw::Label::around_dot(at, 4.0, Vec2::ZERO, &text, color, priority, 8, 8.0);
+            let around = crate::draw::Label::around_dot(
+                at,
+                dot_px,
+                Vec2::ZERO,
+                &text,
+                color,
+                priority,
+                8,
+                8.0,
+            );
             frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |r| {
                 solids.iter().all(|b| !b.overlaps(&r, 2.0))
             });

@@ -1203,8 +1203,12 @@ impl SpringFigure {
             );
             frame.point_on_top(Vec3::new(shown, y, z), SPRING_MASS_M, color);
         }
-        frame.label_with_priority(
-            Vec3::new(exact, y, SPRING_ROWS_Z[2] + 0.45),
+        // Straight below the front row's bar, whose near end is the lowest on screen at the
+        // page's camera: the three bars stand in one column, which the name heads from below.
+        frame.label_off_dot(
+            Vec3::new(exact, y, SPRING_ROWS_Z[2] + 0.32),
+            5.0,
+            glam::Vec2::Y,
             "exact",
             EXACT_COLOR,
             1,
@@ -1239,9 +1243,20 @@ impl SpringFigure {
                 .0
                 .clamp(-SPRING_DRAW_MAX_M, SPRING_DRAW_MAX_M);
             let name = Integrator::ALL[i].name();
+            let mass = Vec3::new(x, y, z);
+            // The mass's width on the canvas (its rim's farthest projection from its centre,
+            // twice): each place starts off the ball, not on it.
+            let ball_px = view.map_or(0.0, |(view_proj, size)| {
+                let at = |p: Vec3| crate::camera::project_to_canvas(view_proj, size, p);
+                let Some(c) = at(mass) else { return 0.0 };
+                [Vec3::X, Vec3::Y, Vec3::Z]
+                    .iter()
+                    .filter_map(|&d| at(mass + d * SPRING_MASS_M))
+                    .fold(0.0, |w: f32, p| w.max(2.0 * p.distance(c)))
+            });
             let candidates = crate::draw::Label::around_dot(
-                Vec3::new(x, y, z),
-                0.0,
+                mass,
+                ball_px,
                 glam::Vec2::new(1.0, -1.0),
                 name,
                 INTEGRATOR_COLORS[i],

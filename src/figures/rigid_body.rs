@@ -1109,8 +1109,8 @@ impl ImpulseFigure {
 
     /// Draws the box and, from the first impact on, the box as it was then (outlined), the
     /// contact point, the impulse `j n` (red, drawn as the velocity change `j / m`), and v (blue)
-    /// and ω (teal) before (faded) and after (solid) from the centre of mass then; returns the
-    /// note.
+    /// and ω (teal) before (faded, arriving at the centre of mass then) and after (solid, leaving
+    /// it); returns the note.
     pub fn draw(&self, frame: &mut Frame) -> String {
         frame.grid(12, 0.25);
         let b = &self.body;
@@ -1194,15 +1194,18 @@ impl ImpulseFigure {
         frame.arrow_on_top(j_tail, hit.point, palette::RED, 0.06);
         frame.marker_on_top(hit.point, 12.0, palette::DARK);
         let mut names = vec![(j_tail.lerp(hit.point, 0.5), Vec3::X, "j n", palette::RED)];
+        // Before arrives at the centre of mass and after leaves it: v before and v after point
+        // the same way (straight down), and from one point they would lie on one line.
         for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
-                frame.arrow_on_top(o, o + d, color, 0.06);
-                frame.keep_in_view.push(o + d);
-                names.push((o + d, d, name, text_color));
+                let (from, out) = if color == text_color { (o, d) } else { (o - d, -d) };
+                frame.arrow_on_top(from, from + d, color, 0.06);
+                frame.keep_in_view.push(o + out);
+                names.push((o + out, out, name, text_color));
             }
         }
-        // Each name beside its arrow's head (the impulse's beside its shaft), on the side the
-        // arrow points to first, then round it, keeping off every line, dot and name and off
+        // Each name beside its arrow's outer end (the head after, the tail before; the
+        // impulse's beside its shaft), on the side away from the centre first, then round it, keeping off every line, dot and name and off
         // both boxes (the box now and the box at the hit), for the last frame's view.
         let view = self
             .view

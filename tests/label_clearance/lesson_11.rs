@@ -11,7 +11,7 @@ fn lesson_11_spring_labels_keep_off_the_walls_springs_and_bars() {
     // right of the rest position. As on the page, the figure places the names for the view of
     // the frame before.
     use inbetween::draw::palette;
-    use inbetween::figures::particles::SpringFigure;
+    use inbetween::figures::particles::{SpringFigure, EXACT_COLOR};
     for dt in [0.02, 0.1] {
         let mut scene = SpringFigure::new();
         scene.set_dt(dt).unwrap();
@@ -47,6 +47,27 @@ fn lesson_11_spring_labels_keep_off_the_walls_springs_and_bars() {
                     .filter_map(|p| project_to_canvas(view_proj, size, p))
                     .collect();
                 assert_eq!(walls.len(), 27, "three walls");
+                // "exact" just below the front row's bar (its near end, the lowest on screen):
+                // its box's top 4 to 12 px under the bar's end, which lies within its width.
+                let bars: Vec<Vec2> = frame
+                    .strokes
+                    .iter()
+                    .filter(|s| Vec3::from_slice(&s.color[..3]) == EXACT_COLOR && s.width_px == 5.0)
+                    .flat_map(|s| [s.a, s.b])
+                    .filter_map(|p| project_to_canvas(view_proj, size, Vec3::from(p)))
+                    .collect();
+                assert_eq!(bars.len(), 6, "{name}: three bars");
+                let end = bars.iter().copied().fold(Vec2::MIN, |a, b| if b.y > a.y { b } else { a });
+                let (_, exact) = label_boxes(&frame, &camera, size)
+                    .into_iter()
+                    .find(|(t, _)| t == "exact")
+                    .unwrap();
+                let below = exact.min.y - end.y;
+                assert!(
+                    (4.0..=12.0).contains(&below) && (exact.min.x..=exact.max().x).contains(&end.x),
+                    "{name} on {size}: \"exact\" at {:?}, the front bar's end at {end}",
+                    exact.min
+                );
                 for (text, rect) in label_boxes(&frame, &camera, size) {
                     for w in &walls {
                         assert!(
@@ -290,6 +311,18 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
                         let gap = rect.nearest(c).distance(c);
                         failures.extend(failure_of(|| {
                             assert!(gap <= reach, "{name} on {size}: {n} {gap} px from its mass")
+                        }));
+                        // Off the ball's disc (its rim's farthest projection from its centre):
+                        // a name that starts on its ball reads as covering it.
+                        let rim = [Vec3::X, Vec3::Y, Vec3::Z]
+                            .iter()
+                            .filter_map(|&d| {
+                                let q = Vec3::from(p.center) + d * p.radius.abs();
+                                project_to_canvas(view_proj, size, q)
+                            })
+                            .fold(0.0, |r: f32, q| r.max(q.distance(c)));
+                        failures.extend(failure_of(|| {
+                            assert!(gap >= rim, "{name} on {size}: {n} {gap} px from its mass's centre, inside its {rim} px disc")
                         }));
                     }
                 }
