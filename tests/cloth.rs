@@ -434,14 +434,19 @@ proptest! {
     #[test]
     fn rigid_projection_restores_the_length_and_keeps_the_centre_of_mass(
         a in prop::array::uniform3(-2.0f32..2.0), b in prop::array::uniform3(-2.0f32..2.0),
-        wa in 0.0f32..10.0, wb in 0.1f32..10.0, rest in 0.1f32..2.0,
+        wa in 0.0f32..10.0, wb in 0.1f32..10.0, rest in 0.1f32..2.0, alpha in 0.0f32..1e-3,
     ) {
         let (mut pa, mut pb) = (Vec3::from(a), Vec3::from(b));
         prop_assume!((pb - pa).length() > 1e-2);
         let before = wb * pa + wa * pb; // mass-weighted centre times (wa wb)(1/wa + 1/wb)
+        let (mut sa, mut sb) = (pa, pb);
         project_distance(&mut pa, &mut pb, wa, wb, rest, 0.0, 0.01);
         prop_assert!(((pb - pa).length() - rest).abs() < 1e-4);
         prop_assert!((wb * pa + wa * pb - before).length() < 1e-3);
+        // With compliance the ends move less, but the centre of mass still stays put (exercise
+        // 13.3's hint: wb·Δpa + wa·Δpb = 0).
+        project_distance(&mut sa, &mut sb, wa, wb, rest, alpha, 0.01);
+        prop_assert!((wb * sa + wa * sb - before).length() < 1e-3);
     }
 }
 

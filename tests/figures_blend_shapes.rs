@@ -4,7 +4,8 @@
 use glam::Vec3;
 use inbetween::draw::{Frame, MeshId};
 use inbetween::figures::blend_shapes::{
-    FaceFigure, Show, TargetsFigure, DEFAULT_WEIGHTS, LOOP_SECONDS, PROBES, TARGETS_SPACING,
+    FaceFigure, Show, TargetsFigure, DEFAULT_WEIGHTS, FRAMED_SCALE, LOOP_SECONDS, PROBES,
+    TARGETS_SPACING,
 };
 
 const IDS: [MeshId; 2] = [MeshId(3), MeshId(4)];
@@ -286,11 +287,14 @@ fn side_by_side_neither_head_reaches_into_the_other_and_the_view_frames_both() {
     use inbetween::camera::{project_to_canvas, OrbitCamera};
     let size = glam::Vec2::new(650.0, 420.0);
     let mut f = FaceFigure::new();
-    // With the automatic base weight (total 1) the heads keep the figure's rest framing.
+    // With the automatic base weight (total 1) the view makes room for the full head at
+    // FRAMED_SCALE: 4.8 m (two heads at rest size) times 1.7, aimed at the middle of the
+    // heads' box (from −2r to 2r·1.7).
     f.set_base_auto(true);
     let rest = f.view_fit();
     assert!(
-        rest[0].abs() < 1e-6 && (rest[3] - 4.8).abs() < 1e-6,
+        (rest[0] - 0.7 * HEAD_RADIUS_FOR_TEST).abs() < 1e-5
+            && (rest[3] - 4.8 * FRAMED_SCALE).abs() < 1e-5,
         "{rest:?}"
     );
     f.set_base_auto(false);
@@ -475,6 +479,26 @@ fn the_note_names_a_vanished_and_an_inside_out_base() {
         .min_by(|&a, &b| base[a].z.total_cmp(&base[b].z))
         .unwrap();
     assert!(base[back].z < -0.8 && f.full.positions[back].z > 0.8);
+    // The page's way there (lesson text): both heads, base weight 0 by hand, smile at −0.5
+    // (the slider's least) and the other weights 0.
+    f.set_show("both").unwrap();
+    f.set_weight(0, -0.5).unwrap();
+    for k in 1..4 {
+        f.set_weight(k, 0.0).unwrap();
+    }
+    let note = f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+    assert!(note.contains("= -0.500, negative"), "{note}");
+    assert!(note.contains("inside out"), "{note}");
+    // The weights read with three decimals, like the totals, however small (no "8.335e-4")
+    // and with no "-0.000".
+    f.set_weight(0, 0.0008335).unwrap();
+    f.set_weight(1, -0.0001).unwrap();
+    let note = f.draw(&mut Frame::default(), IDS, 0.0).unwrap();
+    assert!(
+        note.contains("Weights: smile 0.001, jaw open 0.000, brows up 0.000, puff cheeks 0.000."),
+        "{note}"
+    );
+    assert!(note.contains("the weights sum to 0.001"), "{note}");
 }
 
 #[test]
@@ -956,4 +980,120 @@ fn the_target_arrows_read_at_the_page_camera() {
             }
         }
     }
+}
+
+/// The page's Try this, step by step, at the page's canvas sizes (800 × 600 and 1600 × 1000):
+/// the camera the page fits to the declared heads is the same at every step and every time of
+/// the loop, so the left (differential) head keeps its place and size on the canvas while the
+/// right one grows to 1.5 and breathes between 0.65 and 1.35. Past FRAMED_SCALE (all four
+/// weights at 1.5) the view does move back.
+#[test]
+fn the_left_head_keeps_its_size_on_screen_through_the_try_this() {
+    use inbetween::camera::{OrbitCamera, FIT_PAD_PX};
+    let camera_for = |f: &mut FaceFigure, t: f32, size: glam::Vec2| {
+        let mut frame = Frame::default();
+        f.draw(&mut frame, IDS, t).unwrap();
+        let mut camera = OrbitCamera::from_view({
+            let [x, y, z, d] = f.view_fit();
+            [x, y, z, d, 0.15, 0.1]
+        });
+        assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+        (camera, heads(&frame)[0].1)
+    };
+    for size in [glam::Vec2::new(760.0, 420.0), glam::Vec2::new(650.0, 420.0)] {
+        let mut f = FaceFigure::new();
+        let (first, left) = camera_for(&mut f, 0.0, size);
+        let mut check = |f: &mut FaceFigure, step: &str| {
+            for i in 0..8 {
+                let (camera, at) = camera_for(f, LOOP_SECONDS * i as f32 / 8.0, size);
+                assert_eq!(camera, first, "on {size}, {step}: the camera moved");
+                assert_eq!(at, left, "on {size}, {step}: the left head moved");
+            }
+        };
+        check(&mut f, "the defaults");
+        f.set_animate(false);
+        for (k, w) in [0.5, 0.0, 0.0, 0.0].into_iter().enumerate() {
+            f.set_weight(k, w).unwrap();
+        }
+        f.set_base_weight(0.5).unwrap();
+        check(&mut f, "smile 0.5, base 0.5");
+        f.set_weight(2, 0.5).unwrap();
+        assert_eq!(f.largest_full_scale(), 1.5);
+        check(&mut f, "brows 0.5 too: total 1.5");
+        f.set_animate(true);
+        check(&mut f, "animated");
+        f.set_weight(2, 0.0).unwrap();
+        f.set_weight(1, 0.5).unwrap();
+        check(&mut f, "jaw 0.5 instead of brows");
+        f.set_base_auto(true);
+        check(&mut f, "automatic");
+        f.set_base_auto(false);
+        f.set_animate(false);
+        for k in 0..4 {
+            f.set_weight(k, 1.5).unwrap();
+        }
+        let (camera, _) = camera_for(&mut f, 0.0, size);
+        assert!(camera.distance > first.distance, "on {size}: total 7 does not move back");
+    }
+}
+
+/// Figure 2's delta arrows are twice the offset Σ wₖ dₖ (as Figure 1's), so at the Try this's
+/// "brows up 0.5 too" (the brows rise 6 cm) the brows' arrows read at the page's camera: each
+/// at least 6 px long on the 650 × 420 canvas (1600 × 1000 page).
+#[test]
+fn the_face_figures_arrows_are_twice_the_offset_and_read_at_the_try_this() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::figures::blend_shapes::TARGET_ARROW_SCALE;
+    let size = glam::Vec2::new(650.0, 420.0);
+    let mut f = FaceFigure::new();
+    f.set_animate(false);
+    for (k, w) in [0.5, 0.0, 0.5, 0.0].into_iter().enumerate() {
+        f.set_weight(k, w).unwrap();
+    }
+    f.set_base_weight(0.5).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS, 0.0).unwrap();
+    let [x, y, z, d] = f.view_fit();
+    let mut camera = OrbitCamera::from_view([x, y, z, d, 0.15, 0.1]);
+    assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    let blue = inbetween::draw::palette::BLUE;
+    let shafts: Vec<(Vec3, Vec3)> = frame
+        .strokes
+        .iter()
+        .filter(|s| Vec3::from_slice(&s.color[..3]).abs_diff_eq(blue, 1e-3))
+        .collect::<Vec<_>>()
+        .chunks(4)
+        .map(|c| (Vec3::from(c[0].a), Vec3::from(c[1].b)))
+        .collect();
+    let base = inbetween::blend_shapes::face().mesh.positions;
+    let left = heads(&frame)[0].1;
+    let mut brows = 0;
+    for &v in f.arrow_vertices() {
+        let offset = f.differential.positions[v] - base[v];
+        if offset.length() < 1e-6 {
+            continue;
+        }
+        // At t = 0 the heads face the camera (no swing), so the head's frame is a translation.
+        let from = left + base[v] + 0.03 * inbetween::blend_shapes::face().mesh.normals[v];
+        let &(a, b) = shafts
+            .iter()
+            .min_by(|p, q| p.0.distance(from).total_cmp(&q.0.distance(from)))
+            .unwrap();
+        assert!(a.distance(from) < 1e-4, "vertex {v}: no arrow starts at {from}");
+        assert!(
+            (b - a).distance(TARGET_ARROW_SCALE * offset) < 1e-4,
+            "vertex {v}: arrow {} for offset {offset}",
+            b - a
+        );
+        // The brows' vertices: moved up by at least 5 cm.
+        if offset.y > 0.05 {
+            brows += 1;
+            let px = project_to_canvas(view_proj, size, a)
+                .unwrap()
+                .distance(project_to_canvas(view_proj, size, b).unwrap());
+            assert!(px >= 6.0, "vertex {v}: the brow's arrow is {px} px");
+        }
+    }
+    assert!(brows >= 4, "{brows} brow arrows");
 }

@@ -256,6 +256,30 @@ fn the_pbf_arrow_grows_with_the_move_and_levels_off_at_30_cm() {
     assert!(pbf_arrow_length(2e-4) < pbf_arrow_length(4e-4));
 }
 
+/// The support circle shows on the water's dark blue: its dashes are drawn over the particles,
+/// each purple one over a wider white one (purple alone was lost on the blue).
+#[test]
+fn the_support_circle_is_purple_on_white_over_the_particles() {
+    use glam::Vec3;
+    use inbetween::draw::{palette, ON_TOP};
+    let f = DensityFigure::new();
+    let mut frame = Frame::default();
+    f.draw(&mut frame);
+    let dashed = |color: Vec3| {
+        frame
+            .strokes
+            .iter()
+            .filter(move |s| Vec3::from_slice(&s.color) == color && s.dash[3] > 0.0)
+            .collect::<Vec<_>>()
+    };
+    let (purple, white) = (dashed(palette::PURPLE), dashed(Vec3::ONE));
+    assert!(purple.len() >= 64 && purple.len() == white.len(), "{} and {}", purple.len(), white.len());
+    for (p, w) in purple.iter().zip(&white) {
+        assert!(p.depth_bias >= ON_TOP && w.depth_bias >= ON_TOP);
+        assert!(w.width_px >= p.width_px + 2.0 && p.a == w.a, "{} over {}", p.width_px, w.width_px);
+    }
+}
+
 /// Exercises 15.2 to 15.4 in the density figure: the reference passes, a wrong answer is named.
 #[test]
 fn the_density_figure_checks_the_students_exercises() {

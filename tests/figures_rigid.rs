@@ -107,6 +107,36 @@ fn a_third_of_the_screw_three_times_lands_on_b() {
 }
 
 #[test]
+fn the_thirds_are_drawn_half_the_size_of_the_moving_aeroplanes() {
+    // At t = 1/3 the screw's moving aeroplane stands on its first third: at the same size the
+    // two (and the blend's, near them) formed one knot of boxes.
+    let mut scene = RigidMotion::new();
+    scene.set_thirds(true);
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 1.0 / 3.0).unwrap();
+    // Each cube's largest half-extent (its model's longest column): the wing's.
+    let span = |m: &inbetween::draw::MeshDraw| {
+        let a = glam::Mat3::from_mat4(m.model);
+        a.x_axis.length().max(a.y_axis.length()).max(a.z_axis.length())
+    };
+    let cubes: Vec<_> = frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == MeshId::CUBE)
+        .collect();
+    // Three moving aeroplanes, then three thirds for each of two methods, four cubes each.
+    assert_eq!(cubes.len(), 4 * 9);
+    let moving = cubes[..12].iter().map(|m| span(m)).fold(0.0, f32::max);
+    for third in &cubes[12..] {
+        let s = span(third);
+        assert!(
+            s <= 0.55 * moving,
+            "a third's part spans {s} m, the moving wing {moving} m"
+        );
+    }
+}
+
+#[test]
 fn solo_shows_one_method() {
     let mut scene = RigidMotion::new();
     let mut frame = Frame::default();

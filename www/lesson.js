@@ -470,6 +470,7 @@ function labelLayer(canvas, viewer, sizeGeneration) {
       el.textContent = label.text;
       el.style.color = label.color;
       el.classList.toggle('large', Boolean(label.large));
+      el.classList.toggle('inset-title', Boolean(label.title));
       const sizeKey = `${label.large ? 'L' : ''}|${label.text}`;
       let size = sizes.get(sizeKey);
       if (!size) {

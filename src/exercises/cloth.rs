@@ -75,8 +75,9 @@ pub fn cloth_euler_step(p: Vec3, v: Vec3, f: Vec3, w: f32, dt: f32) -> Answer<(V
 /// coincide. With `α = 0` and `wa = wb` each end moves half of `C`; a pinned end (`w = 0`) does not
 /// move at all.
 ///
-/// Hints: the lighter particle (larger `w`) moves more; the sum `wa·Δpa + …` of momentum changes
-/// is zero. Check that `|pb' − pa'| = rest` when `α = 0`.
+/// Hints: the lighter particle (larger `w`) moves more; the centre of mass stays put, so mass times
+/// displacement sums to zero: `Δpa/wa + Δpb/wb = 0`, or `wb·Δpa + wa·Δpb = 0` with a pinned end.
+/// Check that `|pb' − pa'| = rest` when `α = 0`.
 pub fn project_distance(
     pa: Vec3,
     pb: Vec3,

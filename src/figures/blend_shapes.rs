@@ -33,6 +33,11 @@ pub const HEAD_RADIUS: f32 = 1.1;
 const VIEW_DISTANCE: f32 = 4.8;
 /// The camera looks a little above the heads' centres.
 const VIEW_LIFT: f32 = 0.1;
+/// The layout and the framing make room for the full head at least this many times its rest
+/// size: the defaults' largest total (1.67) and every total of the page's Try this (at most
+/// 1.5) stay within it, so neither head moves or changes size on the canvas while the right one
+/// grows up to it; only a larger total moves the camera back.
+pub const FRAMED_SCALE: f32 = 1.7;
 
 /// Which blend the figure shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -254,12 +259,18 @@ impl FaceFigure {
             .fold(0.0, f32::max)
     }
 
+    /// The full head's size the layout and the framing make room for: its largest over the loop
+    /// ([`FaceFigure::largest_full_scale`]), at least [`FRAMED_SCALE`].
+    pub fn framed_scale(&self) -> f32 {
+        self.largest_full_scale().max(FRAMED_SCALE)
+    }
+
     /// Where each shown head stands: `(differential, full)`, `None` when hidden. Side by side,
     /// the full head stands far enough to the right that, at its largest over the loop
-    /// ([`FaceFigure::largest_full_scale`]), it does not reach into the differential head, and
+    /// ([`FaceFigure::framed_scale`]), it does not reach into the differential head, and
     /// the differential head stays where it is, however large the other grows.
     pub fn head_positions(&self) -> (Option<Vec3>, Option<Vec3>) {
-        let s = self.largest_full_scale().max(1.0);
+        let s = self.framed_scale();
         match self.show {
             Show::Both => (
                 Some(HEAD_CENTRE - Vec3::X * HEAD_RADIUS),
@@ -271,10 +282,11 @@ impl FaceFigure {
     }
 
     /// Where to aim the camera so the shown heads fit: `[x, y, z, distance]`, the heads'
-    /// bounding box at their largest over the loop, at the distance that frames it as the
-    /// figure's start frames the heads at rest size. Changes only when a control does.
+    /// bounding box at their largest over the loop (at least [`FRAMED_SCALE`]), at the distance
+    /// that frames two heads at rest size at [`VIEW_DISTANCE`]. Changes only when a control
+    /// takes the full head past [`FRAMED_SCALE`].
     pub fn view_fit(&self) -> [f32; 4] {
-        let s = self.largest_full_scale().max(1.0);
+        let s = self.framed_scale();
         let r = HEAD_RADIUS;
         let (lo, hi, height) = match self.show {
             Show::Both => (-2.0 * r, 2.0 * r * s, 2.0 * r * s),
@@ -336,17 +348,17 @@ impl FaceFigure {
             parts.push(format!(
                 "Differential{}: base + Σ w·delta; the weights sum to {} (any sum is fine).",
                 if both { " (left)" } else { "" },
-                format_number(sum)
+                fixed3(sum)
             ));
         }
         if right.is_some() {
             parts.push(format!(
                 "Full{}: base weight {}{} + targets {} = {}{}.",
                 if both { " (right)" } else { "" },
-                format_number(w0),
+                fixed3(w0),
                 if self.base_auto { " (1 − Σw)" } else { "" },
-                format_number(sum),
-                format_number(total),
+                fixed3(sum),
+                fixed3(total),
                 full_verdict(total)
             ));
         }
@@ -356,7 +368,7 @@ impl FaceFigure {
                 .names
                 .iter()
                 .zip(w)
-                .map(|(n, x)| format!("{n} {}", format_number(x)))
+                .map(|(n, x)| format!("{n} {}", fixed3(x)))
                 .collect::<Vec<_>>()
                 .join(", ")
         ));
@@ -375,7 +387,7 @@ impl FaceFigure {
                 right,
                 meshes[1],
                 total,
-                format!("full (total {})", format_number(total)),
+                format!("full (total {})", fixed3(total)),
                 false,
             ),
         ] {
@@ -390,16 +402,17 @@ impl FaceFigure {
                 frame.mesh(MeshId::SPHERE, eye, palette::DARK);
             }
             if differential && self.show_deltas {
-                // Each arrow runs from the vertex on the base head to where the blend puts it:
-                // its offset Σ wₖ dₖ, in the head's frame, lifted 3 cm off the base surface
-                // along its normal, its shaft drawn over the skin (which hides where it starts
-                // when the blend moves the skin outwards).
+                // Each arrow runs from the vertex on the base head along its offset Σ wₖ dₖ,
+                // drawn TARGET_ARROW_SCALE times as long as in Figure 1, in the head's frame,
+                // lifted 3 cm off the base surface along its normal, its shaft drawn over the
+                // skin (which hides where it starts when the blend moves the skin outwards).
                 let base = &self.face.mesh.positions;
                 let normals = &self.face.mesh.normals;
                 for &v in &self.arrow_vertices {
                     let lift = ARROW_LIFT * normals[v];
                     let from = head.transform_point3(base[v] + lift);
-                    let to = head.transform_point3(self.differential.positions[v] + lift);
+                    let offset = self.differential.positions[v] - base[v];
+                    let to = head.transform_point3(base[v] + lift + TARGET_ARROW_SCALE * offset);
                     frame.arrow_on_top(from, to, palette::BLUE, ARROW_HEAD_M);
                 }
             }
@@ -414,10 +427,10 @@ impl FaceFigure {
                 }
             }
         }
-        // The camera fits each shown head at its largest over the loop, with its title's anchor
-        // (1.3 k above its centre): it holds still while the heads breathe and moves only when
-        // a control changes that size.
-        let largest = self.largest_full_scale().max(1.0);
+        // The camera fits each shown head at its largest over the loop (at least FRAMED_SCALE),
+        // with its title's anchor (1.3 k above its centre): it holds still while the heads
+        // breathe and moves only when a control takes the full head past FRAMED_SCALE.
+        let largest = self.framed_scale();
         for (at, k) in [(left, 1.0), (right, largest)] {
             if let Some(at) = at {
                 let (r, top) = (HEAD_RADIUS * k, 1.3 * k);
@@ -553,8 +566,8 @@ const TARGET_STRIDE: usize = 3;
 /// farthest move: where it acts most, each arrow long enough on the canvas to show its direction
 /// (the vertices it barely moves would give dots).
 pub const TARGET_ARROW_SHARE: f32 = 0.5;
-/// Figure 1 draws each delta arrow this many times as long as the offset `w dₖ` it shows: its
-/// five heads share a canvas, where a 10 cm offset drawn to scale is a dot a few pixels long.
+/// Figures 1 and 2 draw each delta arrow this many times as long as the offset it shows: their
+/// heads share a canvas, where a 10 cm offset drawn to scale is a dot a few pixels long.
 pub const TARGET_ARROW_SCALE: f32 = 2.0;
 
 /// The vertices that carry delta arrows: every `stride`-th one along and across the sphere's
@@ -840,6 +853,12 @@ impl TargetsFigure {
 /// `k` as a subscript digit (k < 10).
 fn subscript(k: usize) -> char {
     char::from_u32(0x2080 + (k % 10) as u32).unwrap_or('?')
+}
+
+/// A weight or a total in the note and the label: three decimals, however small (no "8.335e-4"
+/// among "0.230"s), and no "-0.000".
+fn fixed3(x: f32) -> String {
+    format_number_digits(if x.abs() < 5e-4 { 0.0 } else { x }, 3)
 }
 
 /// `x` with `digits` decimals.

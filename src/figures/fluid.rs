@@ -584,11 +584,15 @@ impl DensityFigure {
                 p + h * Vec3::new(a.cos(), a.sin(), 0.0)
             })
             .collect();
-        frame.stroke(
-            &circle,
-            palette::PURPLE,
-            StrokeStyle::dashed(2.0, 0.02, 0.012),
-        );
+        // Over the particles, each purple dash on a wider white one: purple alone is lost on
+        // the water's dark blue.
+        for (color, width) in [(Vec3::ONE, 5.0), (palette::PURPLE, 2.5)] {
+            let style = StrokeStyle {
+                on_top: true,
+                ..StrokeStyle::dashed(width, 0.02, 0.012)
+            };
+            frame.stroke(&circle, color, style);
+        }
         frame.marker_on_top(p, 1.6 * DOT_PX, palette::PURPLE);
         let s = self.shown;
         let accel = s.force.length() / f.mass;
@@ -621,15 +625,15 @@ impl DensityFigure {
         frame.keep_box_in_view(Vec3::ZERO, size);
         // The name just off the support circle, above it first, then below, beside it and
         // further out, off the water (for the last frame's view): over the particles it does not
-        // read. Each side's place is anchored at the circle's edge that way, so a name beside the
-        // circle gets no leader line.
+        // read. Each side's place is anchored at the circle's edge that way (8 % out, past the
+        // white under its dashes), so a name beside the circle gets no leader line.
         let view = self.view_proj();
         let candidates = match view {
             Some((view_proj, canvas)) => {
                 let rim: Vec<Vec3> = (0..16)
                     .map(|i| {
                         let a = i as f32 * std::f32::consts::TAU / 16.0;
-                        p + h * Vec3::new(a.cos(), a.sin(), 0.0)
+                        p + 1.08 * h * Vec3::new(a.cos(), a.sin(), 0.0)
                     })
                     .collect();
                 super::rigid_body::labels_round(&rim, view_proj, canvas, "dragged particle", palette::PURPLE, 16, 12.0)

@@ -48,6 +48,10 @@ pub const SCREW_AXIS: Vec3 = palette::PURPLE;
 /// coincide all the way, [`RigidMotion::coincides_with_screw`]): narrower, so the screw's plane
 /// shows around it, and thicker, so it shows through the screw's.
 pub const COINCIDENT_BLEND_SCALE: Vec3 = Vec3::new(0.8, 1.5, 0.8);
+/// The thirds' aeroplanes' size, of a moving one's: the screw's thirds stand where its moving
+/// aeroplane passes at t = 1/3 and 2/3, and the lerp + slerp ones close together, so a smaller
+/// ghost shows inside or beside the full-size aeroplane, not as one knot with it.
+pub const THIRD_SIZE: f32 = 0.5;
 
 /// The figures' physical range: key translations within ±`MAX_TRANSLATION_M` metres on each axis,
 /// angles within ±`MAX_ANGLE_DEG`, axis, quaternion and matrix entries, scales and shears within
@@ -439,7 +443,7 @@ impl RigidMotion {
                     p,
                     Mat3::from_quat(r),
                     color * 0.5 + Vec3::splat(0.4),
-                    0.8,
+                    THIRD_SIZE,
                 );
                 // The screw's third lands on B, which "B" names.
                 if method == Method::LerpSlerp || k < 3 {

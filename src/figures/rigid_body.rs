@@ -727,6 +727,8 @@ pub const TIE_M: f32 = 1e-4;
 /// and per rad/s (ω).
 pub const VELOCITY_SCALE: f32 = 0.1;
 pub const OMEGA_SCALE: f32 = 0.05;
+/// The impulse's arrow's shortest length, metres.
+pub const IMPULSE_MIN_M: f32 = 0.3;
 /// Halvings of a step in the search for the moment of contact.
 const BISECTIONS: usize = 16;
 /// Substeps of the contact solver per [`SIM_DT`] after the first impact.
@@ -1108,7 +1110,8 @@ impl ImpulseFigure {
     }
 
     /// Draws the box and, from the first impact on, the box as it was then (outlined), the
-    /// contact point, the impulse `j n` (red, drawn as the velocity change `j / m`), and v (blue)
+    /// contact point, the impulse `j n` (red, drawn as the velocity change `j / m`, at least
+    /// [`IMPULSE_MIN_M`] long), and v (blue)
     /// and ω (teal) before (faded, arriving at the centre of mass then) and after (solid, leaving
     /// it); returns the note.
     pub fn draw(&self, frame: &mut Frame) -> String {
@@ -1190,8 +1193,12 @@ impl ImpulseFigure {
         // contact point (from the corner up it would be hidden inside the box).
         // The hit's arrows are drawn over everything: they start inside the box at the hit and
         // run through the box now and below the ground, which would hide most of them.
-        let j_tail = hit.point - Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE).max(0.05);
+        // At least IMPULSE_MIN_M long: a corner hit needs little impulse (1.41 N s at the
+        // defaults, 14 cm as a velocity change), and a shorter arrow is a stub under the
+        // contact's dot with its name against the box.
+        let j_tail = hit.point - Vec3::Y * (hit.j / b.mass * VELOCITY_SCALE).max(IMPULSE_MIN_M);
         frame.arrow_on_top(j_tail, hit.point, palette::RED, 0.06);
+        frame.keep_in_view.push(j_tail);
         frame.marker_on_top(hit.point, 12.0, palette::DARK);
         let mut names = vec![(j_tail.lerp(hit.point, 0.5), Vec3::X, "j n", palette::RED)];
         // Before arrives at the centre of mass and after leaves it: v before and v after point

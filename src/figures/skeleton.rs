@@ -40,6 +40,10 @@ const PATH_TICK_PX: f32 = 14.0;
 /// The most a path's tick is long across it, in average spacings between ticks on the canvas.
 const PATH_TICK_SPACINGS: f32 = 1.5;
 const TICK_OFFSET_M: f32 = 0.025;
+/// The shortest tick that shows its colour inside its white ring, CSS pixels; a lone path whose
+/// ticks would be shorter is drawn [`LONE_PATH_PX`] wide without them.
+const READABLE_TICK_PX: f32 = 7.0;
+const LONE_PATH_PX: f32 = 4.0;
 /// The width round the selected joint (its ball and the root of its axes) that its name keeps
 /// clear of, CSS pixels.
 const NAME_CLEAR_PX: f32 = 14.0;
@@ -1336,7 +1340,8 @@ fn box_corners(shape: &JointShape) -> impl Iterator<Item = Vec3> + '_ {
 /// The ticks (or dots) sit `offset` metres from the path, away from `pivot` (towards it when
 /// negative). On the last frame's `view` (view-projection, canvas size in CSS pixels) the ticks
 /// are [`PATH_TICK_SPACINGS`] times as long across the path as they are apart on average, from
-/// [`crate::draw::MIN_MARKER_PX`] to [`PATH_TICK_PX`].
+/// [`crate::draw::MIN_MARKER_PX`] to [`PATH_TICK_PX`]; a lone path (`offset` 0) whose ticks
+/// would be shorter than [`READABLE_TICK_PX`] is drawn wider, without them.
 fn draw_path(
     frame: &mut Frame,
     path: &[Vec3],
@@ -1376,12 +1381,18 @@ fn draw_path(
             });
         // Over everything (a tick's negative size too): the path runs through the tip's own
         // ball, 4.4 cm across, which would hide much of a path a few centimetres long, in the
-        // inset above all.
+        // inset above all. A lone path (`offset` 0: no compared path, no inset) too short for
+        // readable ticks goes without them: ticks that small are all white ring and dark rim,
+        // and the path read as grey.
+        let lone = offset == 0.0 && tick_px < READABLE_TICK_PX;
         let style = crate::draw::StrokeStyle {
             on_top: true,
-            ..crate::draw::StrokeStyle::solid(crate::draw::CURVE_PX)
+            ..crate::draw::StrokeStyle::solid(if lone { LONE_PATH_PX } else { crate::draw::CURVE_PX })
         };
         frame.stroke(path, color, style);
+        if lone {
+            return;
+        }
         let first = frame.markers.len();
         frame.ticks(&samples, tick_px, color);
         for tick in &mut frame.markers[first..] {

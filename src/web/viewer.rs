@@ -311,7 +311,7 @@ impl Viewer {
     }
 
     /// The last presented frame's labels as JSON:
-    /// `[{"x":…,"y":…,"visible":…,"left":…,"large":…,"text":…,"color":…}]`,
+    /// `[{"x":…,"y":…,"visible":…,"left":…,"large":…,"title":…,"text":…,"color":…}]`,
     /// x and y in CSS pixels from the canvas's top-left corner. The shell (`www/lesson.js`) places
     /// one HTML element per label over the canvas.
     #[wasm_bindgen(js_name = labelsJson)]
@@ -330,9 +330,18 @@ impl Viewer {
                     c => vec![c],
                 })
                 .collect();
+            // "title": the inset's title, which the page backs with a white plate: what the inset
+            // draws can run under it.
             out += &format!(
-                r#"{{"x":{:.1},"y":{:.1},"visible":{},"left":{},"large":{},"text":"{}","color":"{}"}}"#,
-                l.x_px, l.y_px, l.visible, l.left, l.large, text, l.css_color
+                r#"{{"x":{:.1},"y":{:.1},"visible":{},"left":{},"large":{},"title":{},"text":"{}","color":"{}"}}"#,
+                l.x_px,
+                l.y_px,
+                l.visible,
+                l.left,
+                l.large,
+                l.priority == i32::MAX,
+                text,
+                l.css_color
             );
         }
         out.push(']');

@@ -801,6 +801,12 @@ async function lessonPage(context, backend, lesson) {
     await frames(page);
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
     assert.ok(overflow <= 0, `${w}x${h}: the page scrolls sideways by ${overflow} px`);
+    // A displayed formula wider than its column scrolls inside its own box (style.css), which a
+    // reader may not notice: every one must fit.
+    const cut = await page.evaluate(() => [...document.querySelectorAll('.katex-display')]
+      .filter((d) => d.scrollWidth > d.clientWidth + 1)
+      .map((d) => d.querySelector('annotation')?.textContent.trim().slice(0, 60)));
+    assert.deepEqual(cut, [], `${w}x${h}: these displayed formulas are wider than the text column`);
     await fullPageShot(page, `${SHOTS}/${lesson.folder}-${w}x${h}-${backend}.jpg`,
       () => labelsApart(page, `${lesson.folder} at ${w} x ${h}`));
     clock(`${w}x${h} page`);
