@@ -958,7 +958,8 @@ impl IkFigure {
         let beside = if label.short_text.is_some() { beside } else { 0 };
         let (near, around) = candidates.split_at(beside);
         // A miss's label (a measured line, not its own side) whose leader line would cross a
-        // label placed before it (side d's, on the same line) takes such a place last.
+        // label placed before it (side d's, on the same line) takes such a place last in each
+        // tier.
         let miss = label.line.is_some() && !label.own_side;
         let leader_crosses = |c: &crate::draw::Label| {
             let Some(r) = c.first_place(view_proj, size) else {
@@ -972,15 +973,24 @@ impl IkFigure {
                     })
                 })
         };
-        let clear = [(near, LABEL_GAP_PX), (near, 0.0), (around, LABEL_GAP_PX), (around, 0.0)]
-            .into_iter()
-            .flat_map(|tier| [(tier, true), (tier, false)])
-            .find_map(|((list, margin_px), strict)| {
-                list.iter().find(|c| {
-                    frame.label_is_clear_by(view_proj, size, c, margin_px)
-                        && !(strict && leader_crosses(c))
-                })
-            });
+        let g = LABEL_GAP_PX;
+        let clear = [
+            (near, g, true),
+            (near, g, false),
+            (near, 0.0, true),
+            (near, 0.0, false),
+            (around, g, true),
+            (around, g, false),
+            (around, 0.0, true),
+            (around, 0.0, false),
+        ]
+        .into_iter()
+        .find_map(|(list, margin_px, strict)| {
+            list.iter().find(|c| {
+                frame.label_is_clear_by(view_proj, size, c, margin_px)
+                    && !(strict && leader_crosses(c))
+            })
+        });
         if let Some(candidate) = clear {
             placed = candidate.clone();
         }
@@ -1568,21 +1578,10 @@ impl AimFigure {
                 })
             };
             // The first place clear of the dots, lines and solids whose leader keeps off the
-            // dashed line, else the first clear one, else the first.
-            let candidates: Vec<crate::draw::Label> =
-                std::iter::once(first).chain(around).collect();
-            let chosen = view.and_then(|(view_proj, size)| {
-                [true, false].into_iter().find_map(|strict| {
-                    candidates.iter().find(|l| {
-                        frame.label_is_clear_by(view_proj, size, l, 2.0)
-                            && l.first_place(view_proj, size).is_some_and(|r| {
-                                solids.iter().all(|b| !b.overlaps(&r, 2.0))
-                                    && !(strict && crosses(r))
-                            })
-                    })
-                })
+            // dashed line, else the first.
+            frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |r| {
+                solids.iter().all(|b| !b.overlaps(&r, 2.0)) && !crosses(r)
             });
-            frame.labels.push(chosen.unwrap_or(&candidates[0]).clone());
         }
         // The body, the head's reach and the target's whole loop stay in view.
         frame.keep_box_in_view(Vec3::new(-0.6, 0.7, -0.6), Vec3::new(0.6, 2.3, 0.6));
