@@ -769,6 +769,7 @@ impl Frame {
 /// edge or at a corner does not count): the segment clipped to each axis's slab in turn
 /// (Liang–Barsky), so a box that lies between any two points of a long line still meets it.
 /// Public for the label tests, which check placed labels against lines the same way.
+#[inline(never)]
 pub fn segment_enters(a: glam::Vec2, b: glam::Vec2, lo: glam::Vec2, hi: glam::Vec2) -> bool {
     let d = b - a;
     let (mut t0, mut t1) = (0.0f32, 1.0f32);
@@ -791,6 +792,7 @@ impl Label {
     /// seen through `view_proj`: [`layout::preferred`] at its anchor's projection plus its
     /// offset, moved inside the canvas, measured as [`Label::size_px`] does. `None` when the
     /// anchor is behind the camera.
+    #[inline(never)]
     pub fn first_place(&self, view_proj: Mat4, size: glam::Vec2) -> Option<layout::Rect> {
         let anchor =
             crate::camera::project_to_canvas(view_proj, size, self.anchor)? + self.offset_px;

@@ -957,12 +957,40 @@ impl IkFigure {
         // d's label tries every place beside its line both ways before it turns round the point.
         let beside = if label.short_text.is_some() { beside } else { 0 };
         let (near, around) = candidates.split_at(beside);
-        let clear = [(near, LABEL_GAP_PX), (near, 0.0), (around, LABEL_GAP_PX), (around, 0.0)]
-            .into_iter()
-            .find_map(|(list, margin_px)| {
-                list.iter()
-                    .find(|c| frame.label_is_clear_by(view_proj, size, c, margin_px))
-            });
+        // A miss's label (a measured line, not its own side) whose leader line would cross a
+        // label placed before it (side d's, on the same line) takes such a place last in each
+        // tier.
+        let miss = label.line.is_some() && !label.own_side;
+        let leader_crosses = |c: &crate::draw::Label| {
+            let Some(r) = c.first_place(view_proj, size) else {
+                return false;
+            };
+            let end = r.nearest(home);
+            miss && end.distance(home) > crate::draw::layout::LEADER_PX
+                && frame.labels.iter().any(|o| {
+                    o.first_place(view_proj, size).is_some_and(|o| {
+                        crate::draw::segment_enters(home, end, o.min, o.max())
+                    })
+                })
+        };
+        let g = LABEL_GAP_PX;
+        let clear = [
+            (near, g, true),
+            (near, g, false),
+            (near, 0.0, true),
+            (near, 0.0, false),
+            (around, g, true),
+            (around, g, false),
+            (around, 0.0, true),
+            (around, 0.0, false),
+        ]
+        .into_iter()
+        .find_map(|(list, margin_px, strict)| {
+            list.iter().find(|c| {
+                frame.label_is_clear_by(view_proj, size, c, margin_px)
+                    && !(strict && leader_crosses(c))
+            })
+        });
         if let Some(candidate) = clear {
             placed = candidate.clone();
         }
@@ -1516,8 +1544,13 @@ impl AimFigure {
                 4.0,
             ));
         }
+        // The dashed line on the last frame's view: a leader from a label's point back to its
+        // box must not cross it (it would point at the wrong line).
+        let px = |p: Vec3| view.and_then(|(view_proj, size)| project_to_canvas(view_proj, size, p));
+        let dashed = px(HEAD).zip(px(target)).filter(|_| !s.result.reached);
         for (out, text, color, priority, dot_px) in labels {
             let at = HEAD + out;
+            let from = px(at);
             let first = crate::draw::Label {
                 anchor: at,
                 text: text.clone(),
@@ -1534,11 +1567,20 @@ impl AimFigure {
                 &text,
                 color,
                 priority,
-                8,
+                12,
                 8.0,
             );
+            let crosses = |r: crate::draw::layout::Rect| {
+                from.zip(dashed).is_some_and(|(a, (h, g))| {
+                    let side = |p: Vec2, q: Vec2, x: Vec2| (q - p).perp_dot(x - p);
+                    let b = r.nearest(a);
+                    side(a, b, h) * side(a, b, g) < 0.0 && side(h, g, a) * side(h, g, b) < 0.0
+                })
+            };
+            // The first place clear of the dots, lines and solids whose leader keeps off the
+            // dashed line, else the first.
             frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |r| {
-                solids.iter().all(|b| !b.overlaps(&r, 2.0))
+                solids.iter().all(|b| !b.overlaps(&r, 2.0)) && !crosses(r)
             });
         }
         // The body, the head's reach and the target's whole loop stay in view.
