@@ -330,8 +330,9 @@ impl Viewer {
                     c => vec![c],
                 })
                 .collect();
-            // "title": the inset's title, which the page backs with a white plate: what the inset
-            // draws can run under it.
+            // "title": the inset's title (the last label when there is one, as `place_labels`
+            // takes it), which the page backs with a white plate: what the inset draws can run
+            // under it.
             out += &format!(
                 r#"{{"x":{:.1},"y":{:.1},"visible":{},"left":{},"large":{},"title":{},"text":"{}","color":"{}"}}"#,
                 l.x_px,
@@ -339,7 +340,7 @@ impl Viewer {
                 l.visible,
                 l.left,
                 l.large,
-                l.priority == i32::MAX,
+                self.inset_title && i + 1 == self.labels.len(),
                 text,
                 l.css_color
             );
