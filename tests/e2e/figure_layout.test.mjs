@@ -2,7 +2,7 @@
 // panel keeps its 420 px; a "stacked" figure (lesson 11's short panels) puts its controls under a
 // full-width canvas at 1600 px too, leaving no empty column beside it; a "notes-first" figure
 // (lesson 13's drape) shows its note right under the canvas and timeline at 800 px, before its
-// controls.
+// controls. The page's own helper spanTimeline (www/lesson.js) is checked on the first page.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, serveDist, openPage } from './browser.mjs';
@@ -27,6 +27,23 @@ test('figures keep their canvas height, and short or tall panels sit where the p
       const b = await boxes(page, '#fig-human', ['.stage canvas', '.panel']);
       assert.equal(b['.stage canvas'].height, 420, '800 px: the canvas over its panel keeps 420 px');
       assert.ok(b['.panel'].top >= b['.stage canvas'].bottom - 1, '800 px: the panel is under the canvas');
+      // The shell's spanTimeline, on the page's own copy of www/lesson.js: a live plot's x axis
+      // spans the whole timeline whatever samples it has (rows of nulls at 0 and at the end).
+      const spans = await page.evaluate(async () => {
+        const { spanTimeline } = await import('/www/lesson.js');
+        return [
+          spanTimeline([[0.5, 0.7], [1, 2]], 3),
+          spanTimeline([[], []], 3),
+          spanTimeline([[0, 1.5, 3], [4, 5, 6]], 3),
+          spanTimeline([[1.3], [7]], 2),
+        ];
+      });
+      assert.deepEqual(spans, [
+        [[0, 0.5, 0.7, 3], [null, 1, 2, null]],
+        [[0, 3], [null, null]],
+        [[0, 1.5, 3], [4, 5, 6]],
+        [[0, 1.3, 2], [null, 7, null]],
+      ]);
       await page.close();
     }
     {
