@@ -120,6 +120,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     // The fluids' time (the last sample's): on a slow machine it falls behind the timeline's, and
     // the plots' playhead shows where the drawn fluids are.
     let simulated = 0;
+    const AHEAD = 0.25;
     const replot = () => {
       const all = gaps(columns(scene.samples(), 5));
       simulated = all[0].length ? all[0][all[0].length - 1] : 0;
@@ -139,7 +140,14 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     const note = document.getElementById('dam-note');
     let frame = 0;
     lesson.onFrame((dt) => {
-      const t = timeline.advance(dt);
+      timeline.advance(dt);
+      // The timeline keeps at most AHEAD seconds ahead of the fluids: on a slow machine it waits
+      // for them, so that a run reaches its end before the timeline wraps and starts it over.
+      if (timeline.playing && timeline.time > simulated + AHEAD) {
+        timeline.time = simulated + AHEAD;
+        timeline.show();
+      }
+      const t = timeline.time;
       showNote(note, sentences(rejected, scene.draw(viewer, t)));
       if (frame++ % 6 === 0) replot();
       // Samples are read every 6 frames (0.1 s): within that the fluids keep up.
