@@ -668,6 +668,9 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
     let (view, projection, _) = inset_camera(inset).unwrap();
     for size in [glam::Vec2::new(650.0, 420.0), glam::Vec2::new(760.0, 380.0)] {
         let r = inset_rect(size);
+        // The title fits inside the inset (the page keeps labels on the canvas).
+        let title = inbetween::draw::label_size_px(&inset.title).x;
+        assert!(title + 12.0 < r.size.x, "{size}: title {title} px wide");
         let px = |p: Vec3| {
             let ndc = (projection * view).project_point3(LBS_OFFSET + p);
             r.min + glam::Vec2::new(ndc.x + 1.0, 1.0 - ndc.y) * 0.5 * r.size

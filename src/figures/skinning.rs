@@ -702,7 +702,7 @@ impl CylinderFigure {
         let pad = Vec3::new(0.08, 0.08, 0.3);
         frame.inset(
             crate::draw::inset::InsetView::Front,
-            "followed vertex, close up",
+            "close up",
             o + lo - pad,
             o + hi + pad,
         );
