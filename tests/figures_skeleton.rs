@@ -157,6 +157,36 @@ fn the_drawing_highlights_the_selected_joint_and_its_group() {
         note.contains("parent none (the root)") && note.contains("group of 21"),
         "{note}"
     );
+    // With body boxes (which hide the balls and bones inside them), the run's spine and its
+    // group are dots drawn over everything, orange and teal, and the group's bones lines on top.
+    f.set_clip("run").unwrap();
+    f.set_show_boxes(true);
+    let spine = f.skeleton().find("spine").unwrap();
+    f.select(spine).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, 0.2).unwrap();
+    let at = positions(&f);
+    for (j, &p) in at.iter().enumerate() {
+        let color = if j == spine {
+            palette::ORANGE
+        } else if f.skeleton().in_group(spine, j) {
+            palette::TEAL
+        } else {
+            continue;
+        };
+        let on_top = frame.markers.iter().any(|m| {
+            m.size_px < 0.0
+                && Vec3::from(m.center).distance(p) < 1e-5
+                && glam::Vec4::from(m.color).truncate() == color
+        });
+        assert!(on_top, "joint {j} has no dot over the boxes");
+    }
+    let bones = frame
+        .strokes
+        .iter()
+        .filter(|s| s.depth_bias == ON_TOP && glam::Vec4::from(s.color).truncate() == palette::TEAL)
+        .count();
+    assert!(bones >= 10, "{bones} teal bones over the boxes");
 }
 
 #[test]

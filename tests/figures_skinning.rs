@@ -659,6 +659,29 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
         lbs.distance(bent_elbow)
     );
     assert!(note.contains("0.177 m from the elbow joint"), "{note}");
+    // In the main view LBS's dot lies a few pixels from DQS's, under it; the inset shows the
+    // dots close up, where the orange one (8 px) clears the teal one (14 px) on either page
+    // canvas.
+    use inbetween::draw::inset::{inset_camera, inset_rect};
+    use inbetween::figures::skinning::LBS_OFFSET;
+    let inset = frame.inset.as_ref().expect("an inset of the followed vertex");
+    let (view, projection, _) = inset_camera(inset).unwrap();
+    for size in [glam::Vec2::new(650.0, 420.0), glam::Vec2::new(760.0, 380.0)] {
+        let r = inset_rect(size);
+        // The title fits inside the inset (the page keeps labels on the canvas).
+        let title = inbetween::draw::label_size_px(&inset.title).x;
+        assert!(title + 12.0 < r.size.x, "{size}: title {title} px wide");
+        let px = |p: Vec3| {
+            let ndc = (projection * view).project_point3(LBS_OFFSET + p);
+            r.min + glam::Vec2::new(ndc.x + 1.0, 1.0 - ndc.y) * 0.5 * r.size
+        };
+        for p in [k1, k2, lbs, dqs] {
+            let at = px(p);
+            assert!(r.nearest(at) == at, "{size}: {p} outside the inset");
+        }
+        let gap = px(lbs).distance(px(dqs));
+        assert!(gap > 7.0 + 4.0 + 2.0, "{size}: the dots {gap} px apart in the inset");
+    }
     // A half twist puts LBS's vertex on the axis: the note says 0.000 m, not float noise.
     f.set_bend_deg(0.0).unwrap();
     f.set_twist_deg(180.0).unwrap();

@@ -1113,7 +1113,8 @@ impl Rodrigues {
     /// right, without one). With `away`, the arrow runs along v (v cos θ), so that a place
     /// beside its middle is beside v too: its first places are then at its tip, across the
     /// arrow on the canvas, on the side away from `away` (the next term's tip) first, then
-    /// across and back towards its tail, then round the tip, 0 to 40 px out.
+    /// across and back towards its tail, then round the tip, 0 to 40 px out. No place holds
+    /// one of `box_points` (the box turned by q).
     fn label_beside_arrow(
         &self,
         frame: &mut Frame,
@@ -1121,6 +1122,7 @@ impl Rodrigues {
         text: &str,
         color: Vec3,
         away: Option<Vec3>,
+        box_points: &[Vec3],
     ) {
         let view = self
             .view
@@ -1190,7 +1192,14 @@ impl Rodrigues {
             });
         // 2 px off the lines: a label that touches an arrow reads as part of it.
         let candidates = at_tip.into_iter().chain(candidates);
-        frame.first_clear_label_by(view, 2.0, candidates, |_| true);
+        let box_px: Vec<glam::Vec2> = view.map_or(Vec::new(), |(view_proj, size)| {
+            (box_points.iter())
+                .filter_map(|&p| crate::camera::project_to_canvas(view_proj, size, p))
+                .collect()
+        });
+        frame.first_clear_label_by(view, 2.0, candidates, |r| {
+            box_px.iter().all(|&c| r.nearest(c).distance(c) > 2.0)
+        });
     }
 
     /// Draws the rotation swept up to `s · θ`, `s ∈ [0, 1]`. Returns the note about the exercises.
@@ -1278,12 +1287,17 @@ impl Rodrigues {
                 .fold(0.0, f32::max)
                 * 2.0
         });
+        // Where v′ lies on v (v along the axis, or no turn yet) one name names both.
+        let same = turned.distance(v) < 0.02;
         for (at, dot_px, toward, text, color) in [
             (n * 1.7, 0.0, glam::Vec2::X, "n", AXIS),
-            (v, 12.0, glam::Vec2::X, "v", V),
-            (turned * 1.15, 0.0, glam::Vec2::X, "v′ = R v", ROTATED),
+            (v, 12.0, glam::Vec2::X, if same { "v = v′ = R v" } else { "v" }, V),
+            (turned * 1.15, 0.0, glam::Vec2::X, if same { "" } else { "v′ = R v" }, ROTATED),
             (QUAT_BOX_AT, box_px, -glam::Vec2::X, "turned by q", palette::GREY),
         ] {
+            if text.is_empty() {
+                continue;
+            }
             let mut candidates =
                 crate::draw::Label::around_dot(at, dot_px, toward, text, color, 0, 10, 8.0);
             if let (Some((view_proj, size)), true) = (view, text == "turned by q") {
@@ -1317,7 +1331,7 @@ impl Rodrigues {
         // Last, once every arrow and the other labels are down: the terms run tip to tail
         // beside v, v′ and the circle, so a label at a term's middle lies on some arrow.
         for (from, to, text, color, away) in terms {
-            self.label_beside_arrow(frame, (from, to), text, color, away);
+            self.label_beside_arrow(frame, (from, to), text, color, away, &box_points);
         }
         // The axis, the circle (which holds v and v′) and the box stay in view.
         frame.keep_in_view.extend(self.arc.iter().step_by(8));

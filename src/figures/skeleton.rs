@@ -1071,6 +1071,14 @@ impl SkeletonFigure {
                     palette::GREY
                 };
                 bone(frame, a, p, bone_color);
+                // Inside the body boxes, the group's bones are drawn again over them.
+                if self.show_boxes && bone_color == palette::TEAL {
+                    frame.wide_line_on_top(a, p, bone_color, 3.0);
+                }
+            }
+            // The selected joint and its group over the body boxes, which hide their balls.
+            if self.show_boxes && color(i) != palette::DARK {
+                frame.marker_on_top(p, if i == self.selected { 14.0 } else { 10.0 }, color(i));
             }
             if self.show_axes && i != self.selected {
                 frame.axes(Mat4::from(self.model[i]), 0.1);

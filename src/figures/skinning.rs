@@ -696,6 +696,16 @@ impl CylinderFigure {
         frame.marker_on_top(o + dqs, 14.0, palette::TEAL);
         frame.marker_on_top(o + lbs, 8.0, palette::ORANGE);
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
+        // The four dots close up, seen from the front (across the bend's plane), with the whole
+        // tube's depth: in the main view LBS's dot lies a few pixels from DQS's.
+        let (lo, hi) = [k1, k2, lbs].into_iter().fold((dqs, dqs), |(a, b), p| (a.min(p), b.max(p)));
+        let pad = Vec3::new(0.08, 0.08, 0.3);
+        frame.inset(
+            crate::draw::inset::InsetView::Front,
+            "close up",
+            o + lo - pad,
+            o + hi + pad,
+        );
         // Each name at the first place round its dot, away from the other dot first, clear of
         // the dots, lines and the other name (on the last frame's view), and nearer its own dot
         // than any other dot (but one drawn on it): where the dots crowd, a name beside the
