@@ -1208,9 +1208,9 @@ impl ImpulseFigure {
         // ω is the same at every point of the body: its arrows start OMEGA_SIDE_M to the side of
         // the centre on screen, the side ω after leans to, tied to the centre by a grey line, so
         // that they never lie along v (straight down through the centre) on screen.
-        let right = self
-            .view
-            .map_or(Vec3::X, |(camera, _)| camera.view().row(0).truncate());
+        // The camera's right, level: the eye lies at (sin yaw, ·, cos yaw) from its target.
+        let yaw = self.view.map_or(0.0, |(camera, _)| camera.yaw_rad);
+        let right = Vec3::new(yaw.cos(), 0.0, -yaw.sin());
         let side = right * OMEGA_SIDE_M * hit.omega_after.dot(right).signum();
         if hit.omega_before.max(hit.omega_after).length() * OMEGA_SCALE > 1e-3 {
             frame.wide_line_on_top(o, o + side, palette::GREY, 1.5);
@@ -1219,8 +1219,16 @@ impl ImpulseFigure {
         // way (straight down), and from one point they would lie on one line.
         for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
-                let o = if text_color == palette::TEAL { o + side } else { o };
-                let (from, out) = if color == text_color { (o, d) } else { (o - d, -d) };
+                let o = if text_color == palette::TEAL {
+                    o + side
+                } else {
+                    o
+                };
+                let (from, out) = if color == text_color {
+                    (o, d)
+                } else {
+                    (o - d, -d)
+                };
                 frame.arrow_on_top(from, from + d, color, 0.06);
                 frame.keep_in_view.push(o + out);
                 names.push((o + out, out, name, text_color));
