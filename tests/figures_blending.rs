@@ -1260,3 +1260,39 @@ fn the_compared_characters_walk_abreast() {
         }
     }
 }
+
+/// Figure 3 at the page's default camera (lessons/08-blending/lesson.js: yaw 1 rad, from the
+/// side of the walk and a little in front), fitted on the page's 760 × 420 canvas: the
+/// same-clock-time character's footprint trails run across the screen, not along the line of
+/// sight, so where its feet slide a trail's two ends lie at least 25 px apart on screen (32 px
+/// at 0.97 m/s, 56 px at 0.73 m/s).
+#[test]
+fn the_compared_footprint_trails_read_at_the_default_view() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let size = glam::Vec2::new(760.0, 420.0);
+    let mut l = LocomotionFigure::new();
+    for speed in [0.73, 0.97] {
+        l.set_speed(speed).unwrap();
+        let mut longest = 0.0f32;
+        for t in [1.0, 2.0, 2.94, 4.0] {
+            let mut f = Frame::default();
+            l.draw(&mut f, t).unwrap();
+            let mut camera = OrbitCamera::from_view([0.0, 0.8, 0.0, 5.0, 1.0, 0.45]);
+            assert!(camera.fit(&f.fit_points(), size, FIT_PAD_PX));
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+            // A trail is a chain of short links, one per sample of a stance: its two ends are
+            // the first link's start and the last link's end.
+            let mut start: Option<(Vec3, Vec3)> = None;
+            for (a, b) in f.segments_of(inbetween::draw::palette::RED) {
+                let from = match start {
+                    Some((first, end)) if end == a => first,
+                    _ => a,
+                };
+                start = Some((from, b));
+                longest = longest.max(at(from).distance(at(b)));
+            }
+        }
+        assert!(longest >= 25.0, "speed {speed}: the longest red trail is {longest} px");
+    }
+}

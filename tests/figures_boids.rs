@@ -843,15 +843,25 @@ fn cells_narrower_than_the_radius_miss_neighbours_and_the_figure_says_so() {
     let mut frame = Frame::default();
     let note = scene.draw(&mut frame);
     assert!(
-        note.contains(&format!("misses {missed} of its neighbours (on red)")),
+        note.contains(&format!("misses {missed} of its neighbours (ringed in red)")),
         "{note}"
     );
-    let red = frame
-        .markers
-        .iter()
-        .filter(|m| m.color[..3] == inbetween::draw::palette::RED.to_array())
-        .count();
-    assert_eq!(red, missed);
+    // Each missed neighbour has a red ring round it (its dot shows inside), not a disc.
+    let red = inbetween::draw::palette::RED.to_array();
+    assert!(frame.markers.iter().all(|m| m.color[..3] != red));
+    for q in scene.missed_neighbours() {
+        let ring = frame
+            .strokes
+            .iter()
+            .filter(|s| s.color[..3] == red)
+            .filter(|s| {
+                [s.a, s.b]
+                    .iter()
+                    .all(|&p| (Vec3::from(p).distance(q) - MISSED_RING_M).abs() < 1e-4)
+            })
+            .count();
+        assert_eq!(ring, 24, "a ring round {q}");
+    }
     scene.set_cell_size(1.2).unwrap();
     assert!(!scene.draw(&mut Frame::default()).contains("misses"));
 }
@@ -1219,6 +1229,21 @@ fn the_rules_figure_shows_its_whole_grid_and_the_heading_under_the_arrows() {
         .position(|s| s.color[..3] == palette::GREEN.to_array())
         .unwrap();
     assert!(green > orange[0], "cohesion is drawn over the heading");
+    // The boid is an outlined dot over everything, added after the arrows that start at it,
+    // and its own cell's square (y = 0.002) is drawn over the teal block's edges beside it.
+    let boid = frame
+        .markers
+        .iter()
+        .position(|m| m.color[..3] == palette::ORANGE.to_array())
+        .expect("the boid's dot");
+    assert!(frame.markers[boid].size_px < 0.0, "over everything");
+    assert_eq!(Vec3::from(frame.markers[boid].center), Vec3::ZERO);
+    for s in &frame.strokes {
+        if (s.a[1] - 0.002).abs() < 1e-4 && (s.b[1] - 0.002).abs() < 1e-4 {
+            let own = s.color[..3] == palette::ORANGE.to_array();
+            assert_eq!(s.depth_bias == inbetween::draw::ON_TOP, own, "{s:?}");
+        }
+    }
 }
 
 /// The three steering arrows start at the boid: the shorter of two lies above the longer (the

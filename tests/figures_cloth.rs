@@ -1006,7 +1006,9 @@ fn the_springs_swing_inside_their_fixed_declared_view() {
 #[test]
 fn the_drapes_box_shows_through_the_cloth_and_its_pins_are_dots() {
     // The box behind or under the cloth (box x 0.85, z −0.9) is hidden by the cloth's mesh:
-    // its twelve edges are drawn over everything, in the box's purple. A pinned corner is a
+    // its twelve edges are drawn over everything, dashed, in the box's purple, round the box
+    // where its sliders put it (world x and z: moved at time 0, it is there at once). A pinned
+    // corner is a
     // dot of the usual size with its outline, over the cloth, not a point a few pixels wide.
     use inbetween::draw::{palette, DOT_PX, ON_TOP};
     let mut f = ClothFigure::new(Preset::Drape);
@@ -1020,6 +1022,8 @@ fn the_drapes_box_shows_through_the_cloth_and_its_pins_are_dots() {
         .filter(|s| s.depth_bias >= ON_TOP && Vec3::from_slice(&s.color) == palette::PURPLE)
         .collect();
     assert_eq!(edges.len(), 12, "the box's edges over the cloth");
+    assert_eq!((cuboid.x, cuboid.z), (0.85, -0.9));
+    assert!(edges.iter().all(|s| s.dash[3] > 0.0), "dashed");
     for s in &edges {
         let mid = 0.5 * (Vec3::from(s.a) + Vec3::from(s.b));
         assert!(mid.distance(cuboid) < 0.6, "an edge at {mid}, the box at {cuboid}");

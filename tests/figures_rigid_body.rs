@@ -30,6 +30,19 @@ fn the_figure_draws_three_rackets_with_their_momentum_and_names() {
     }
     assert!(frame.segments_of(palette::Y_AXIS).count() >= 3);
     assert!(!frame.keep_in_view.is_empty());
+    // Each racket's L is a dark arrow drawn over everything: it starts at the racket's centre,
+    // inside the box, and after a racket loses |L| it ends inside the box too.
+    let dark: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| Vec3::from_slice(&s.color[..3]) == palette::DARK)
+        .collect();
+    for k in 0..3 {
+        let at = RacketFigure::place(k);
+        let from_centre = dark.iter().filter(|s| Vec3::from(s.a) == at).count();
+        assert_eq!(from_centre, 1, "racket {k}");
+    }
+    assert!(dark.iter().all(|s| s.depth_bias == inbetween::draw::ON_TOP));
 }
 
 #[test]

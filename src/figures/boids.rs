@@ -60,6 +60,10 @@ fn place_name(frame: &mut Frame, view: Option<(Mat4, Vec2)>, candidates: Vec<Lab
     frame.first_clear_label_by(view, NAME_CLEAR_PX, candidates, anywhere);
 }
 
+/// How wide the flock figure draws the leader's and the predator's dots, CSS pixels: they
+/// stand out from the flock's 0.035 m dots at any distance.
+pub const ROLE_DOT_PX: f32 = 16.0;
+
 /// What a name keeps off the lines and dots around it, CSS pixels: 2 px, and 1 px more as the
 /// clearance test samples each line at 17 points (a line can graze the box between two).
 const NAME_CLEAR_PX: f32 = 3.0;
@@ -1059,24 +1063,6 @@ impl FlockFigure {
         let ph = self.flock.positions[h];
         let shown = (STEER_ARROW_M_PER_MS2 * steer).clamp_length_max(STEER_ARROW_MAX_M);
         frame.arrow(ph, ph + shown, palette::PURPLE, 0.08);
-        // The leader's and the predator's names at the first place round their dots, above
-        // first, clear of the neighbour lines, the steering arrow and the box (on the last
-        // frame's view): the boids are drawn after them, as no place in a flock is clear of
-        // every boid.
-        let view = view_of(self.view);
-        for (role, text, color) in [
-            (leader, "leader", palette::GREEN),
-            (predator, "predator", palette::RED),
-        ] {
-            if let Some(i) = role {
-                let at = self.flock.positions[i];
-                place_name(
-                    frame,
-                    view,
-                    Label::around_dot(at, 12.0, -Vec2::Y, text, color, 0, 10, 10.0),
-                );
-            }
-        }
         let f = &self.flock;
         for i in 0..f.len() {
             let (p, v) = (f.positions[i], f.velocities[i]);
@@ -1092,6 +1078,29 @@ impl FlockFigure {
             frame.point(p, r, color);
             // The tail shows which way a boid flies: wide enough to read at 800 x 600.
             frame.wide_line(p, p - v.normalize_or_zero() * 0.12, color, TAIL_PX);
+        }
+        // The leader and the predator as outlined dots over the flock, then their names at the
+        // first place round their dots, above first, clear of the boids' tails, the neighbour
+        // lines, the steering arrow, the box and the other dot (on the last frame's view).
+        let view = view_of(self.view);
+        let roles = [
+            (leader, "leader", palette::GREEN),
+            (predator, "predator", palette::RED),
+        ];
+        for (role, _, color) in roles {
+            if let Some(i) = role {
+                frame.marker_on_top(f.positions[i], ROLE_DOT_PX, color);
+            }
+        }
+        for (role, text, color) in roles {
+            if let Some(i) = role {
+                let at = f.positions[i];
+                place_name(
+                    frame,
+                    view,
+                    Label::around_dot(at, ROLE_DOT_PX, -Vec2::Y, text, color, 0, 16, 10.0),
+                );
+            }
         }
         format!(
             "{} boids, {} search; the orange boid sees {count} {} within {} m and steers \
@@ -1314,6 +1323,9 @@ pub struct RulesFigure {
     /// for it ([`RulesFigure::set_view`]).
     view: Option<(OrbitCamera, Vec2)>,
 }
+
+/// Radius of the red ring round a neighbour a grid search would miss, metres.
+pub const MISSED_RING_M: f32 = 0.16;
 
 /// The longest arrow the rules figure draws, metres (1 m per unit of a steering vector).
 const ARROW_MAX_M: f32 = 2.0;
@@ -1557,11 +1569,10 @@ impl RulesFigure {
                     0.0,
                     GRID_ORIGIN.z + k as f32 * s,
                 );
-                let color = if di == 0 && dk == 0 {
-                    palette::ORANGE
-                } else {
-                    palette::TEAL
-                };
+                // The boid's own cell wider and over everything, the teal block's edges
+                // beside it included.
+                let own = di == 0 && dk == 0;
+                let color = if own { palette::ORANGE } else { palette::TEAL };
                 let inset = 0.03 * s;
                 let corners = [
                     lo + Vec3::new(inset, 0.002, inset),
@@ -1570,7 +1581,11 @@ impl RulesFigure {
                     lo + Vec3::new(inset, 0.002, s - inset),
                     lo + Vec3::new(inset, 0.002, inset),
                 ];
-                frame.wide_polyline(&corners, color, 2.0);
+                let style = crate::draw::StrokeStyle {
+                    on_top: own,
+                    ..crate::draw::StrokeStyle::solid(if own { 3.0 } else { 2.0 })
+                };
+                frame.stroke(&corners, color, style);
             }
         }
         // The radius circle, solid over the field of view and dashed over the blind sector
@@ -1608,13 +1623,19 @@ impl RulesFigure {
             let seen = ps.iter().any(|p| p == q);
             let color = if seen { palette::BLUE } else { palette::GREY };
             if missed.contains(q) {
-                // A red disc under the neighbour: the 3 × 3 block never reaches its cell.
-                frame.marker(*q - Vec3::Y * 0.01, 26.0, palette::RED);
+                // A red ring round the neighbour, which shows inside it: the 3 × 3 block never
+                // reaches its cell.
+                let ring: Vec<Vec3> = (0..=24)
+                    .map(|k| {
+                        let a = k as f32 / 24.0 * std::f32::consts::TAU;
+                        *q + MISSED_RING_M * Vec3::new(a.cos(), 0.0, a.sin())
+                    })
+                    .collect();
+                frame.wide_polyline(&ring, palette::RED, 2.5);
             }
             frame.point(*q, 0.07, color);
             frame.arrow(*q, *q + 0.35 * *v, color, 0.08);
         }
-        frame.point(self.boid, 0.09, palette::ORANGE);
         // The heading wide under the steering arrows drawn next: where one of them points the
         // same way, both colours still show.
         let heading = self.boid + 0.5 * self.velocity;
@@ -1647,6 +1668,8 @@ impl RulesFigure {
                 tips.push((tip, v, name, color));
             }
         }
+        // The boid over the arrows that start at it and the cells' squares.
+        frame.marker_on_top(self.boid, 14.0, palette::ORANGE);
         // Each name where `place_labels` puts it past its arrow's tip, else (on the last frame's
         // view) at the first place round the tip, along the arrow first, clear of the cells'
         // squares, the circle, the arrows, the dots and the names placed before.
@@ -1684,7 +1707,7 @@ impl RulesFigure {
         if !missed.is_empty() {
             note.push_str(&format!(
                 " The cells ({} m) are narrower than the radius ({} m): the 3 × 3 block around \
-                 the boid's cell misses {} of its neighbours (on red), which a grid search \
+                 the boid's cell misses {} of its neighbours (ringed in red), which a grid search \
                  would never see. Cells at least as wide as the radius never miss one.",
                 format_number(self.cell_size),
                 format_number(self.radius),

@@ -806,9 +806,14 @@ impl ClothFigure {
                 palette::PURPLE,
             );
             frame.contact_shadow(c - Vec3::Y * h.y, h.x.max(h.z));
-            // Its edges over everything: a box under or behind the cloth still shows where it is.
+            // Its edges over everything, dashed as hidden edges are: a box under or behind the
+            // cloth still shows where it is, and does not read as lying on the cloth.
+            let hidden = crate::draw::StrokeStyle {
+                on_top: true,
+                ..crate::draw::StrokeStyle::dashed(1.5, 0.05, 0.04)
+            };
             for (a, b) in super::boids::box_edges(c - h, c + h) {
-                frame.wide_line_on_top(a, b, palette::PURPLE, 1.5);
+                frame.stroke(&[a, b], palette::PURPLE, hidden);
             }
         }
         if self.preset == Preset::Drape {

@@ -307,10 +307,12 @@ impl RacketFigure {
             let middle = body.rotation() * Vec3::Y * (RACKET_HALF.y + 0.12);
             frame.wide_line(at - middle, at + middle, palette::Y_AXIS, ARROW_PX);
             // L at 0.3 m for the start's |L|, at most twice that (an explicit racket's grows
-            // without bound before it is stopped); none for a racket that exploded.
+            // without bound before it is stopped); none for a racket that exploded. Over
+            // everything: it starts inside the box, and one that has lost half its |L| would
+            // end inside it too.
             if self.exploded[k].is_none() {
                 let l = (body.angular_momentum() / l0 * 0.3).clamp_length_max(0.6);
-                frame.arrow(at, at + l, palette::DARK, 0.05);
+                frame.arrow_on_top(at, at + l, palette::DARK, 0.05);
             }
             let row = self.history.last().copied().unwrap_or([0.0; 7]);
             parts.push(match self.exploded[k] {
@@ -727,6 +729,8 @@ pub const TIE_M: f32 = 1e-4;
 /// and per rad/s (ω).
 pub const VELOCITY_SCALE: f32 = 0.1;
 pub const OMEGA_SCALE: f32 = 0.05;
+/// How far to the side of the centre on screen the drop figure's ω arrows start, metres.
+pub const OMEGA_SIDE_M: f32 = 0.4;
 /// The impulse's arrow's shortest length, metres.
 pub const IMPULSE_MIN_M: f32 = 0.3;
 /// Halvings of a step in the search for the moment of contact.
@@ -1201,11 +1205,30 @@ impl ImpulseFigure {
         frame.keep_in_view.push(j_tail);
         frame.marker_on_top(hit.point, 12.0, palette::DARK);
         let mut names = vec![(j_tail.lerp(hit.point, 0.5), Vec3::X, "j n", palette::RED)];
-        // Before arrives at the centre of mass and after leaves it: v before and v after point
-        // the same way (straight down), and from one point they would lie on one line.
+        // ω is the same at every point of the body: its arrows start OMEGA_SIDE_M to the side of
+        // the centre on screen, the side ω after leans to, tied to the centre by a grey line, so
+        // that they never lie along v (straight down through the centre) on screen.
+        // The camera's right, level: the eye lies at (sin yaw, ·, cos yaw) from its target.
+        let yaw = self.view.map_or(0.0, |(camera, _)| camera.yaw_rad);
+        let right = Vec3::new(yaw.cos(), 0.0, -yaw.sin());
+        let side = right * OMEGA_SIDE_M * hit.omega_after.dot(right).signum();
+        if hit.omega_before.max(hit.omega_after).length() * OMEGA_SCALE > 1e-3 {
+            frame.wide_line_on_top(o, o + side, palette::GREY, 1.5);
+        }
+        // Before arrives at its start and after leaves it: v before and v after point the same
+        // way (straight down), and from one point they would lie on one line.
         for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
-                let (from, out) = if color == text_color { (o, d) } else { (o - d, -d) };
+                let o = if text_color == palette::TEAL {
+                    o + side
+                } else {
+                    o
+                };
+                let (from, out) = if color == text_color {
+                    (o, d)
+                } else {
+                    (o - d, -d)
+                };
                 frame.arrow_on_top(from, from + d, color, 0.06);
                 frame.keep_in_view.push(o + out);
                 names.push((o + out, out, name, text_color));

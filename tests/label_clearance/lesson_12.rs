@@ -54,9 +54,8 @@ fn lesson_12_leader_and_predator_names_keep_off_the_neighbour_lines() {
     // Figure 2 at its page camera (lessons/12-boids/lesson.js: target 0, distance 9, yaw 0.5,
     // pitch 0.45, fitted to the box), both canvases, with the leader and the predator on, as the
     // flock flies: "leader" and "predator" are shown where the figure put them and keep 2 px off
-    // the orange boid's neighbour lines, its steering arrow and the box (no place in a flock is
-    // clear of every boid's tail, so those are not checked).
-    use inbetween::figures::boids::{FlockFigure, TAIL_PX};
+    // the boids' tails, the orange boid's neighbour lines, its steering arrow and the box.
+    use inbetween::figures::boids::{FlockFigure, ROLE_DOT_PX};
     let view = [0.0, 0.0, 0.0, 9.0, 0.5, 0.45];
     let mut failures = Vec::new();
     for size in CANVASES {
@@ -68,7 +67,7 @@ fn lesson_12_leader_and_predator_names_keep_off_the_neighbour_lines() {
             if k % 30 != 0 {
                 continue;
             }
-            let (mut frame, camera) = drawn_for_view(
+            let (frame, camera) = drawn_for_view(
                 &mut scene,
                 view,
                 size,
@@ -77,9 +76,10 @@ fn lesson_12_leader_and_predator_names_keep_off_the_neighbour_lines() {
                 },
                 |fig, cam, px| fig.set_view(cam, px.x, px.y),
             );
-            // The boids' own tails (TAIL_PX wide) are left out; the neighbour lines, the arrow
-            // and the box stay.
-            frame.strokes.retain(|s| s.width_px != TAIL_PX);
+            // The leader and the predator are outlined dots over everything, the size the
+            // names are placed round.
+            let roles = frame.markers.iter().filter(|m| m.size_px == -ROLE_DOT_PX);
+            assert_eq!(roles.count(), 2, "t {k}");
             let name = format!("12 flock at t {}", k as f32 / 60.0);
             let named: Vec<usize> = (0..frame.labels.len()).collect();
             assert_eq!(named.len(), 2, "{name}");

@@ -168,6 +168,7 @@ fn lesson_14_impulse_names_its_arrows_beside_them_off_the_boxes() {
     // head (j n of its shaft's middle), and off the box now and the box at the hit: a name
     // over the box or on an arrow reads as part of it. As on the page, the figure places the
     // names for the view of the frame before (set_view).
+    use inbetween::draw::palette;
     use inbetween::figures::rigid_body::{ImpulseFigure, DROP_HALF};
     use inbetween::rigid_body::contact::corners;
     let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
@@ -218,6 +219,26 @@ fn lesson_14_impulse_names_its_arrows_beside_them_off_the_boxes() {
                                 l.text,
                                 p.top_left
                             );
+                        }
+                    }
+                    // The ω arrows keep 20 px off the line v lies on (straight down through
+                    // the centre at the hit) on screen, so the two never cover each other.
+                    let (Some(c), Some(down)) = (
+                        project_to_canvas(view_proj, size, hit.centre),
+                        project_to_canvas(view_proj, size, hit.centre - Vec3::Y),
+                    ) else {
+                        panic!("{name}: the centre is behind the camera")
+                    };
+                    let across = (down - c).normalize().perp();
+                    let teal = [palette::TEAL, palette::TEAL.lerp(Vec3::ONE, 0.55)];
+                    let is_teal = |s: &&inbetween::draw::StrokeSegment| {
+                        teal.contains(&Vec3::from_slice(&s.color[..3]))
+                    };
+                    for s in frame.strokes.iter().filter(is_teal) {
+                        for p in [s.a, s.b] {
+                            let q = project_to_canvas(view_proj, size, Vec3::from(p)).unwrap();
+                            let off = (q - c).dot(across).abs();
+                            assert!(off >= 20.0, "{name} on {size}: ω {off} px from v's line");
                         }
                     }
                     // Each name near what it names (its anchor: the head, or j n's shaft).
