@@ -8,7 +8,8 @@ use inbetween::draw::{Frame, MeshId};
 use inbetween::exercises::run::{direct, Failure, Flat};
 use inbetween::expressive;
 use inbetween::figures::expressive::{
-    damping_regime, FollowThrough, JumpComparison, Spacing, DT, GHOST, MAX_STRETCH, PRINCIPLED,
+    damping_regime, FollowThrough, JumpComparison, Spacing, DT, GHOST, MAX_STRETCH, PRINCIPLED, TWIN,
+    TWIN_GHOST,
 };
 
 fn reference(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
@@ -55,14 +56,16 @@ fn spacing_draws_ghosts_at_equal_time_steps_along_the_path() {
         note.contains("10 ghosts"),
         "the note counts what is drawn: {note}"
     );
-    let all_ghosts: Vec<Vec3> = f
-        .points
-        .iter()
-        .filter(|p| Vec3::from_slice(&p.color[..3]) == GHOST)
-        .map(|p| Vec3::from(p.center))
-        .collect();
-    // The arc's ghosts at z = 0, the straight twin's behind them.
-    let (ghosts, twin): (Vec<Vec3>, Vec<Vec3>) = all_ghosts.iter().partition(|p| p.z > -0.5);
+    let of = |color: Vec3| -> Vec<Vec3> {
+        f.points
+            .iter()
+            .filter(|p| Vec3::from_slice(&p.color[..3]) == color)
+            .map(|p| Vec3::from(p.center))
+            .collect()
+    };
+    // The arc's ghosts at z = 0 in pale grey, the straight twin's behind them in pale purple.
+    let (ghosts, twin) = (of(GHOST), of(TWIN_GHOST));
+    assert!(ghosts.iter().all(|p| p.z > -0.5) && twin.iter().all(|p| p.z < -0.5));
     assert_eq!(ghosts.len(), 10, "as many ghosts as the slider says");
     assert_eq!(twin.len(), 10);
     for (k, b) in twin.iter().enumerate() {
@@ -129,6 +132,16 @@ fn the_caption_colours_the_ghosts_as_they_are_drawn() {
         .find(|(name, _)| *name == class)
         .unwrap_or_else(|| panic!("no palette colour for c-{class}"));
     assert_eq!(named.1, GHOST, "the word is c-{class}");
+    // And the twin in the colour its ball, line and name are drawn in.
+    let end = page.find(" twin</span>").expect("the caption names the twin");
+    let class = &page[page[..end].rfind("class=\"c-").unwrap() + 9..];
+    let class = &class[..class.find('"').unwrap()];
+    let named = inbetween::draw::palette::NAMED.iter().find(|(name, _)| *name == class);
+    assert_eq!(named.map(|n| n.1), Some(TWIN), "the twin is c-{class}");
+    assert!(
+        page[..end].ends_with(&format!(">{class}")),
+        "the word names its colour: c-{class}"
+    );
 }
 
 #[test]
@@ -210,7 +223,8 @@ fn follow_through_lags_and_is_checked_against_the_reference() {
     let (mut a, mut b) = (Frame::default(), Frame::default());
     scene.draw(&mut a, 1.3).unwrap();
     scene.draw(&mut b, 1.3).unwrap();
-    assert_eq!(a.lines, b.lines);
+    assert_eq!(a.strokes, b.strokes);
+    assert_eq!(a.markers, b.markers);
     // Continuing forward from an earlier time gives the same picture as starting again.
     let mut fresh = FollowThrough::new();
     fresh.set(150.0, 60.0, 6.0).unwrap();
@@ -220,7 +234,8 @@ fn follow_through_lags_and_is_checked_against_the_reference() {
     scene.draw(&mut c, 1.3).unwrap();
     let mut d = Frame::default();
     fresh.draw(&mut d, 1.3).unwrap();
-    assert_eq!(c.lines, d.lines);
+    assert_eq!(c.strokes, d.strokes);
+    assert_eq!(c.markers, d.markers);
     scene.set_use_exercise(true);
     scene.set_runner(reference);
     assert!(scene
@@ -625,7 +640,7 @@ fn spacing_ghosts_are_copies_of_the_ball_not_dots() {
     let ghosts: Vec<_> = f
         .points
         .iter()
-        .filter(|p| Vec3::from_slice(&p.color[..3]) == GHOST)
+        .filter(|p| [GHOST, TWIN_GHOST].contains(&Vec3::from_slice(&p.color[..3])))
         .collect();
     assert!(ghosts.len() >= 2 * 12, "the arc's and the twin's");
     let size = glam::Vec2::new(760.0, 420.0);
@@ -734,11 +749,11 @@ fn jump_names_follow_their_balls() {
     }
 }
 
-/// Figure 1's ghosts are paler than the straight twin's grey ball, so the ball stands out
-/// among them as the blue one does on the arc.
+/// Figure 1's twin ghosts are paler than the straight twin's purple ball, so the ball stands
+/// out among them as the blue one does on the arc; and the twin's ghosts are not the arc's grey,
+/// so the two rows stay apart where they cross on the canvas.
 #[test]
 fn ghosts_are_paler_than_the_twin_ball() {
-    use inbetween::figures::expressive::PLAIN;
     let mut scene = Spacing::new();
     scene.set_twin(true);
     let mut f = Frame::default();
@@ -746,11 +761,58 @@ fn ghosts_are_paler_than_the_twin_ball() {
     let twin = f
         .meshes
         .iter()
-        .find(|m| m.color.truncate() == PLAIN)
+        .find(|m| m.color.truncate() == TWIN)
         .expect("the twin's ball");
     assert!(
-        GHOST.x > twin.color.x + 0.2,
-        "ghosts {GHOST} against the twin ball's {}",
+        (TWIN_GHOST - twin.color.truncate()).min_element() > 0.15,
+        "ghosts {TWIN_GHOST} against the twin ball's {}",
         twin.color
     );
+    // Hue apart from the arc's grey ghosts: blue over green by a tenth or more.
+    assert!(TWIN_GHOST.z - TWIN_GHOST.y > 0.1 && (GHOST.z - GHOST.y).abs() < 1e-3);
+    assert_eq!(f.segments_of(TWIN).count(), 1, "the twin's line");
+}
+
+/// Figure 4 at its page camera (lessons/02b-expressive-animation/lesson.js), fitted on both
+/// canvases: the body's slide and the antenna over the loop fill the canvas (their box on the
+/// canvas at least 78 % of its width and, as tall as a 3.6 m slide lets them, 55 % of its
+/// height), not a strip in its upper middle.
+#[test]
+fn the_antenna_figure_fills_its_canvas() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::figures::expressive::FollowThrough;
+    let view: [f32; 6] = include_str!("../lessons/02b-expressive-animation/lesson.js")
+        .split("followViewer.setCamera(")
+        .nth(1)
+        .and_then(|s| s.split(')').next())
+        .expect("the page's camera")
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect::<Vec<f32>>()
+        .try_into()
+        .unwrap();
+    for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+        let mut scene = FollowThrough::new();
+        let (mut lo, mut hi) = (glam::Vec2::splat(f32::MAX), glam::Vec2::splat(f32::MIN));
+        for k in 0..40 {
+            let mut f = Frame::default();
+            scene.draw(&mut f, k as f32 * 0.1).unwrap();
+            let mut camera = OrbitCamera::from_view(view);
+            assert!(camera.fit(&f.fit_points(), size, FIT_PAD_PX));
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let body = f.meshes.iter().find(|m| m.mesh == MeshId::CUBE).unwrap().model;
+            let corners = inbetween::draw::box_corners(-Vec3::ONE, Vec3::ONE)
+                .map(|c| body.transform_point3(c));
+            let joints = f.markers.iter().map(|m| Vec3::from(m.center));
+            for p in corners.into_iter().chain(joints) {
+                let c = project_to_canvas(view_proj, size, p).unwrap();
+                (lo, hi) = (lo.min(c), hi.max(c));
+            }
+        }
+        let fill = (hi - lo) / size;
+        assert!(
+            fill.x >= 0.78 && fill.y >= 0.55,
+            "on {size}: {fill} of the canvas"
+        );
+    }
 }

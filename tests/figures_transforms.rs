@@ -826,3 +826,41 @@ fn the_scale_comparison_pans() {
     let view = [0.0, 1.0, 0.0, 3.6, std::f32::consts::FRAC_PI_2, 0.12];
     flat::assert_drag_pans(&frame, view, glam::Vec2::new(650.0, 420.0), apart);
 }
+
+/// Figure 2 with the page test's pose (forearm.L selected, turned -26°, -109°, -109°, scaled 2.42
+/// with inherited scale off): the forearm's bone runs on top from its pivot to the marked wrist,
+/// and the selected box's twelve edges are drawn on top, so both show where the body hides them.
+#[test]
+fn the_wrist_and_the_selected_box_show_through_the_body() {
+    use inbetween::draw::ON_TOP;
+    let mut figure = HierarchyFigure::new();
+    let forearm = joint(&figure, "forearm.L");
+    figure.select(forearm).unwrap();
+    figure
+        .set_joint_angles_deg(forearm, Vec3::new(-26.0, -109.0, -109.0))
+        .unwrap();
+    figure.set_joint_scale(forearm, Vec3::splat(2.42)).unwrap();
+    let mut frame = Frame::default();
+    figure.draw(&mut frame, 0.44).unwrap();
+    let on_top: Vec<_> = frame.strokes.iter().filter(|s| s.depth_bias == ON_TOP).collect();
+    let pivot = figure.world_matrix(forearm).unwrap().w_axis.truncate();
+    let wrist = figure.wrist();
+    assert!(
+        on_top.iter().any(|s| {
+            let (a, b) = (Vec3::from(s.a), Vec3::from(s.b));
+            near(a, pivot, 1e-4) && near(b, wrist, 1e-4)
+        }),
+        "no bone from the forearm's pivot {pivot} to the wrist {wrist}"
+    );
+    // Besides the skeleton's dark bones: the box's edges, in the colour of one of the boxes.
+    let rgb = |c: [f32; 4]| Vec3::new(c[0], c[1], c[2]);
+    let edges: Vec<Vec3> = on_top
+        .iter()
+        .map(|s| rgb(s.color))
+        .filter(|&c| c != palette::KEY)
+        .collect();
+    let selected = edges.first().copied();
+    assert!(frame.meshes.iter().any(|m| Some(m.color.truncate()) == selected));
+    let edges = edges.iter().filter(|&&c| Some(c) == selected).count();
+    assert_eq!(edges, 12, "the selected box's edges on top ({selected:?})");
+}

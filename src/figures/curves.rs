@@ -1138,26 +1138,27 @@ impl LagrangeScene {
         // edge-on.
         frame.flat = true;
         self.draw_axes(frame);
-        for piece in &self.base {
-            frame.polyline(piece, LAGRANGE_BASE);
-        }
-        for piece in &self.more {
-            frame.polyline(piece, LAGRANGE_MORE);
-        }
-        if self.show_spline {
-            for piece in &self.spline {
-                frame.polyline(piece, LAGRANGE_SPLINE);
+        // Wide curves, each narrower than the one under it: where two run together (blue
+        // under green at 10 keys), the lower one shows as a rim on both sides.
+        let spline: &[Vec<Vec3>] = if self.show_spline { &self.spline } else { &[] };
+        for (pieces, color, width) in [
+            (&self.base[..], LAGRANGE_BASE, 5.0),
+            (&self.more, LAGRANGE_MORE, 3.5),
+            (spline, LAGRANGE_SPLINE, 2.0),
+        ] {
+            for piece in pieces {
+                frame.wide_polyline(piece, color, width);
             }
         }
         let (a, b) = self.key_sets();
         for (t, y) in b.0.iter().zip(&b.1) {
             let extra = !a.0.contains(t);
-            let (radius, color) = if extra {
-                (0.08, LAGRANGE_MORE)
+            let (size, color) = if extra {
+                (12.0, LAGRANGE_MORE)
             } else {
-                (0.06, KEY_COLOR)
+                (crate::draw::DOT_PX, KEY_COLOR)
             };
-            frame.point(self.place(*t, *y), radius, color);
+            frame.marker(self.place(*t, *y), size, color);
         }
     }
 
@@ -1181,10 +1182,12 @@ impl LagrangeScene {
             frame.line(p - Vec3::Y * tick, p + Vec3::Y * tick, axis);
             frame.label(p - Vec3::Y * 0.22, format!("{t}"), axis);
         }
-        for y in [-0.5_f32, 0.0, 1.0, 2.0, 3.0] {
+        // The value ticks' numbers left of the axis, clear of the key dot at t = 0; the time
+        // axis's "0" under the origin names both zeros.
+        for y in [-0.5_f32, 1.0, 2.0, 3.0] {
             let p = self.place(0.0, y);
             frame.line(p - Vec3::X * tick, p + Vec3::X * tick, axis);
-            frame.label(p - Vec3::X * 0.3, format!("{y}"), axis);
+            frame.label_left(p - Vec3::X * 0.15, format!("{y}"), axis);
         }
         frame.label(x1 + Vec3::new(0.35, -0.3, 0.0), "time t (s)", axis);
         frame.label(

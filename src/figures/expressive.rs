@@ -68,8 +68,12 @@ fn scale_note(runner: Runner, s: f32) -> String {
 
 /// Colours of Figure 1.
 pub const BALL: Vec3 = palette::BLUE;
-/// Pale grey: the ghosts read as copies behind the straight twin's ball (grey, as its name).
+/// Pale grey: the arc's ghosts read as copies of the ball, apart from the twin's purple ones.
 pub const GHOST: Vec3 = palette::GRID;
+/// The straight-line twin, its line and name (purple, as the caption names it), and its ghosts
+/// (pale purple): where the two rows of ghosts cross on the canvas, each keeps its own colour.
+pub const TWIN: Vec3 = palette::PURPLE;
+pub const TWIN_GHOST: Vec3 = Vec3::new(0.62, 0.45, 0.8);
 pub const CHART: Vec3 = palette::ORANGE;
 /// Radius of a ghost, metres: smaller than the ball, so the ball stands out where it passes one
 /// and bunched ghosts stay apart, and large enough to read as a copy of it.
@@ -296,12 +300,12 @@ impl Spacing {
         if self.twin {
             // The straight twin: same keys, same spacing, no arc.
             let (a, b) = (START + TWIN_OFFSET, END + TWIN_OFFSET);
-            frame.line(a, b, palette::GREY);
+            frame.line(a, b, TWIN);
             for k in 0..self.ghosts {
-                frame.point(a.lerp(b, ghost(k)), GHOST_RADIUS, GHOST);
+                frame.point(a.lerp(b, ghost(k)), GHOST_RADIUS, TWIN_GHOST);
             }
             let q = a.lerp(b, self.along(time));
-            frame.mesh(MeshId::SPHERE, ball(q, Vec3::X, Vec3::ONE), PLAIN);
+            frame.mesh(MeshId::SPHERE, ball(q, Vec3::X, Vec3::ONE), TWIN);
         }
         let p = self.position_at(time);
         if self.twin {
@@ -381,7 +385,7 @@ impl Spacing {
             (top, -glam::Vec2::Y, top + Vec3::Y * 0.4, "arc", BALL),
             // Under the middle of the twin's row of ghosts, where the arc, high above, leaves
             // room.
-            (a, -glam::Vec2::X, a.lerp(b, 0.5) - Vec3::Y * 0.4, "straight line", PLAIN),
+            (a, -glam::Vec2::X, a.lerp(b, 0.5) - Vec3::Y * 0.4, "straight line", TWIN),
         ] {
             let mut around = Label::around_dot(anchor, 0.0, toward, text, color, 1, 8, 10.0);
             around.insert(
@@ -768,10 +772,11 @@ impl FollowThrough {
         let t = in_range("time", time_sec, 0.0, Self::DURATION)?;
         self.simulate(t);
         frame.grid(12, 0.5);
-        // The body's whole slide and the antenna above it: the camera fits this at every size.
+        // The body's whole slide (its sides at ±1.82 m) and the antenna above it, no wider: the
+        // camera fits this at every size, and the slide fills the canvas's width.
         frame.keep_box_in_view(
-            Vec3::new(-2.0, 0.0, -0.3),
-            Vec3::new(2.0, Self::base(0.0).y + Self::LENGTH + 0.3, 0.3),
+            Vec3::new(-1.85, 0.0, -0.25),
+            Vec3::new(1.85, Self::base(0.0).y + Self::LENGTH, 0.25),
         );
         let antenna = self.shown();
         let base = antenna.positions[0];
@@ -779,16 +784,18 @@ impl FollowThrough {
         let body = Mat4::from_translation(base - Vec3::Y * 0.25)
             * Mat4::from_scale(Vec3::new(0.32, 0.25, 0.25));
         frame.mesh(MeshId::CUBE, body, BODY);
-        frame.polyline(&antenna.positions, ANTENNA);
+        // The antenna as a curve and its joints as outlined dots, the same size at any distance.
+        frame.wide_polyline(&antenna.positions, ANTENNA, crate::draw::CURVE_PX);
         for p in &antenna.positions[1..] {
-            frame.point(*p, 0.05, ANTENNA);
+            frame.marker(*p, crate::draw::DOT_PX, ANTENNA);
         }
-        frame.point(antenna.tip(), 0.09, palette::PINK);
+        frame.marker(antenna.tip(), 16.0, palette::PINK);
         frame.label(antenna.tip() + Vec3::Y * 0.2, "tip", palette::PINK);
         let running_yours = self.use_exercise && self.problem.is_none();
         if running_yours {
             // The reference as a ghost beside the student's antenna.
-            frame.polyline(&self.reference.positions, GHOST_REFERENCE);
+            let reference = &self.reference.positions;
+            frame.wide_polyline(reference, GHOST_REFERENCE, crate::draw::CURVE_PX);
             frame.label(
                 self.reference.tip() + Vec3::new(0.0, 0.2, 0.0),
                 "reference",

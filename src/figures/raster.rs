@@ -60,7 +60,7 @@ fn faint(color: Vec3) -> Vec3 {
     color.lerp(Vec3::ONE, 0.65)
 }
 
-/// Figure 1: the same mesh as a triangle soup (left, every triangle pulled apart a little so that
+/// Figure 1: the same mesh as a triangle soup (left, every triangle pulled apart so that
 /// its own three copies of the corners show) and as indexed geometry (right, each position once).
 pub struct MeshStorage {
     sphere: bool,
@@ -234,11 +234,34 @@ impl MeshStorage {
             (false, true) => 4.0,
         };
         let keep = if dense { 0.6 } else { 0.5 };
+        // Where each soup triangle's centre is drawn, from the soup's centre. The tetrahedron's
+        // four go 0.9 m out across the last frame's view, a quarter turn apart in the order of
+        // their own centres round the soup's: any face (shrunk in place, or pushed out in 3D)
+        // lies across another on the canvas from some side, and these never do.
+        let centres: Vec<Vec3> = self
+            .indices
+            .chunks_exact(3)
+            .map(|tri| tri.iter().map(|&i| self.positions[i as usize]).sum::<Vec3>() / 3.0)
+            .collect();
+        let mut shown = centres.clone();
+        if small {
+            let (across, up) = self.view.map_or((Vec3::X, Vec3::Y), |(camera, _)| {
+                let v = camera.view();
+                (v.row(0).truncate(), v.row(1).truncate())
+            });
+            let mut order: Vec<(f32, usize)> = (centres.iter().enumerate())
+                .map(|(t, c)| (c.dot(up).atan2(c.dot(across)), t))
+                .collect();
+            order.sort_by(|a, b| a.0.total_cmp(&b.0));
+            for (k, &(_, t)) in order.iter().enumerate() {
+                let a = order[0].0 + k as f32 * std::f32::consts::FRAC_PI_2;
+                shown[t] = (across * a.cos() + up * a.sin()) * 0.9;
+            }
+        }
         // Soup: each triangle shrunk towards its centre, its own three corners.
-        for tri in self.indices.chunks_exact(3) {
+        for (tri, (&centre, &at)) in self.indices.chunks_exact(3).zip(centres.iter().zip(&shown)) {
             let [a, b, c] = [tri[0], tri[1], tri[2]].map(|i| self.positions[i as usize]);
-            let centre = (a + b + c) / 3.0;
-            let pull = |p: Vec3| left + centre + (p - centre) * keep;
+            let pull = |p: Vec3| left + at + (p - centre) * keep;
             let (pa, pb, pc) = (pull(a), pull(b), pull(c));
             if self.marked(centre) {
                 frame.wide_polyline(&[pa, pb, pc, pa], SOUP_COLOR, 1.5);
@@ -286,7 +309,7 @@ impl MeshStorage {
             }
         }
         frame.keep_box_in_view(
-            left - Vec3::splat(1.1),
+            left - Vec3::splat(if small { 1.4 } else { 1.1 }),
             right + Vec3::splat(1.1) + Vec3::Y * 0.3,
         );
         // Each sphere's disc on the last frame's view (centre and radius, CSS pixels, the radius
@@ -348,13 +371,8 @@ impl MeshStorage {
             // round it, else round a point out from the face (a face turned away from the eye
             // has its centre among the near faces' lines); the indexed positions likewise round
             // their dots.
-            for (t, tri) in self.indices.chunks_exact(3).enumerate() {
-                let centre = left
-                    + tri
-                        .iter()
-                        .map(|&i| self.positions[i as usize])
-                        .sum::<Vec3>()
-                        / 3.0;
+            for (t, at) in shown.iter().enumerate() {
+                let centre = left + *at;
                 let text = format!("t{t}");
                 let out = left + (centre - left).normalize_or_zero() * 1.6;
                 let mut around =

@@ -738,13 +738,15 @@ impl HierarchyFigure {
     /// The boxes, the face (nose and eyes) and feet, the skeleton, and (with `labels`) the selected joint's
     /// labelled axes, the left thigh and the left wrist, all placed by `placement`.
     pub fn draw_body(&self, frame: &mut Frame, placement: Mat4, labels: bool) {
+        // The selected box's colour, warmed towards tan.
+        let highlight = |c: Vec3| c * 0.6 + Vec3::new(0.4, 0.35, 0.0);
         for (i, (shape, draw)) in self.shapes.iter().zip(&self.draw).enumerate() {
             let model = placement
                 * *draw
                 * Mat4::from_translation(shape.center)
                 * Mat4::from_scale(shape.half_extents);
             let color = if labels && i == self.selected {
-                shape.color * 0.6 + Vec3::new(0.4, 0.35, 0.0)
+                highlight(shape.color)
             } else {
                 shape.color
             };
@@ -788,6 +790,17 @@ impl HierarchyFigure {
             })
             .collect();
         let body = boxes_px(&models, view);
+        // The forearm's bone ends at the wrist, over everything as the skeleton: a wrist behind
+        // the body still shows where its arm runs. The selected box's edges likewise, in its
+        // highlight, seen through the body when it is behind it. Both before the names, which
+        // keep off them.
+        let wrist = placement.transform_point3(self.wrist());
+        frame.wide_line_on_top(pivot(self.forearm), wrist, palette::KEY, 2.0);
+        let m = models[self.selected];
+        let edge = highlight(self.shapes[self.selected].color);
+        for (a, b) in super::boids::box_edges(-Vec3::ONE, Vec3::ONE) {
+            frame.wide_line_on_top(m.transform_point3(a), m.transform_point3(b), edge, 1.5);
+        }
         // The camera's right on the page (world x before the first frame): names go beside
         // the body across the screen, whichever way the camera has turned.
         let right = self
@@ -809,7 +822,6 @@ impl HierarchyFigure {
             .position(|&p| p == self.thigh as i32);
         let thigh_mid = knee.map_or(pivot(self.thigh), |k| (pivot(self.thigh) + pivot(k)) * 0.5);
         name(thigh_mid, "left thigh", palette::PURPLE);
-        let wrist = placement.transform_point3(self.wrist());
         name(wrist, "left wrist", palette::PINK);
         frame.marker_on_top(wrist, 11.0, palette::PINK);
     }

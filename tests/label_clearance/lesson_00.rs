@@ -523,3 +523,72 @@ fn lesson_00_frustum_names_keep_off_the_lines_at_a_wide_field_of_view_when_orbit
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_00_tetrahedron_soup_triangles_stay_apart_on_the_canvas() {
+    // Figure 1 with the tetrahedron at its page camera (lessons/00-triangles-to-pixels/lesson.js:
+    // yaw 0, pitch 0.3) and orbited as the page test's drag turns it (yaw by -1.04 or -1.22 rad,
+    // pitch by 0.3 or 0.34) and the other way, both canvases: the soup's four triangles (orange,
+    // three strokes each) are pulled apart so far that no two cross or touch on the canvas (at
+    // least 3 px between them), and can be counted.
+    use inbetween::figures::raster::{MeshStorage, SOUP_COLOR};
+    let inside = |p: Vec2, t: &[Vec2; 3]| {
+        let side = |a: Vec2, b: Vec2| (b - a).perp_dot(p - a);
+        let s = [side(t[0], t[1]), side(t[1], t[2]), side(t[2], t[0])];
+        s.iter().all(|&x| x >= 0.0) || s.iter().all(|&x| x <= 0.0)
+    };
+    let seg_dist = |p: Vec2, a: Vec2, b: Vec2| {
+        let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+        p.distance(a + (b - a) * t)
+    };
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [(0.0, 0.3), (-1.04, 0.6), (-1.22, 0.64), (1.04, 0.6), (-0.5, 0.1)] {
+        for size in CANVASES {
+            failures.extend(failure_of(|| {
+                let mut scene = MeshStorage::new();
+                scene.set_shape("tetrahedron").unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    [0.0, 1.2, 0.0, 5.6, yaw, pitch],
+                    size,
+                    |fig, out| {
+                        fig.draw(out);
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p)).unwrap();
+                let soup: Vec<[Vec2; 3]> = frame
+                    .strokes
+                    .iter()
+                    .filter(|s| s.color[..3] == SOUP_COLOR.to_array())
+                    .collect::<Vec<_>>()
+                    .chunks_exact(3)
+                    .map(|t| [at(t[0].a), at(t[1].a), at(t[2].a)])
+                    .collect();
+                assert_eq!(soup.len(), 4, "four triangles");
+                for (i, a) in soup.iter().enumerate() {
+                    for (j, b) in soup.iter().enumerate().skip(i + 1) {
+                        let mut gap = f32::MAX;
+                        for (s, t) in [(a, b), (b, a)] {
+                            for p in s {
+                                assert!(
+                                    !inside(*p, t),
+                                    "yaw {yaw}, pitch {pitch} on {size}: t{i} and t{j} overlap"
+                                );
+                                for k in 0..3 {
+                                    gap = gap.min(seg_dist(*p, t[k], t[(k + 1) % 3]));
+                                }
+                            }
+                        }
+                        assert!(
+                            gap >= 3.0,
+                            "yaw {yaw}, pitch {pitch} on {size}: t{i} and t{j} {gap} px apart"
+                        );
+                    }
+                }
+            }));
+        }
+    }
+    assert_none_failed(&failures);
+}

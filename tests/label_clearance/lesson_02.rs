@@ -77,3 +77,29 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_path_when_orbited() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_02_lagrange_tick_numbers_keep_off_the_keys_and_curves() {
+    // Figure 3 at its page camera (lessons/02-keyframes/lesson.js), both canvases, at 3, 10 and
+    // 16 keys: the value axis's numbers keep off every key dot (the key at t = 0 sits on the
+    // tick of 1 m) and every curve, and one "0" names the origin for both axes.
+    use inbetween::figures::curves::LagrangeScene;
+    for keys in [3.0, 10.0, 16.0] {
+        let mut scene = LagrangeScene::new();
+        scene.set_key_count(keys).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let zeros = frame.labels.iter().filter(|l| l.text == "0").count();
+        assert_eq!(zeros, 1, "{keys} keys: one 0 at the origin");
+        assert!(frame.markers.len() >= keys as usize, "the keys as dots");
+        for size in CANVASES {
+            let camera = page_camera([0.15, 1.4, 0.0, 6.5, 0.0, 0.0], &frame, size);
+            let name = format!("02 Lagrange, {keys} keys");
+            // The value axis's numbers (they read leftwards from their tick).
+            let mut ticks = frame.clone();
+            ticks.labels.retain(|l| l.left);
+            assert_eq!(ticks.labels.len(), 4, "{name}: -0.5, 1, 2 and 3");
+            assert_clear(&name, &ticks, &camera, size);
+        }
+    }
+}
