@@ -642,3 +642,19 @@ fn the_affine_keys_wireframes_tell_a_from_b() {
     assert!(b.iter().all(|s| s.dash[3] == 0.0), "B solid");
 }
 
+
+#[test]
+fn with_no_turn_every_method_moves_at_one_speed_to_a_thousandth_of_it() {
+    // Lesson 04's Try this: at 0° the three methods slide along one line at one constant speed,
+    // which the speed plot (autoscaled down to half a metre per unit of t) must show flat.
+    let mut scene = RigidMotion::new();
+    scene
+        .set_end(Vec3::new(0.2, 1.0, 0.3), 0.0, Vec3::new(1.5, 1.4, 0.3))
+        .unwrap();
+    let speed = scene.sample_speed(201).unwrap();
+    for method in 1..=3 {
+        let v: Vec<f32> = speed.iter().map(|r| r[method]).collect();
+        let (lo, hi) = v.iter().fold((f32::MAX, 0.0f32), |(l, h), &x| (l.min(x), h.max(x)));
+        assert!(hi - lo < 1e-3 * hi, "method {method}: {lo}..{hi}");
+    }
+}

@@ -998,6 +998,12 @@ export function dragInCanvas(canvas, { grab, drag, release = () => {}, hover = n
   stage.addEventListener('pointercancel', end, { capture: true });
 }
 
+/** Parts of a note (a rejected setting's message, the figure's own note) as one text, each part
+ * a sentence: a part without a full stop, question or exclamation mark at its end gets a full stop. */
+export function sentences(...parts) {
+  return parts.filter(Boolean).map((s) => (/[.!?]$/.test(s.trim()) ? s : `${s}.`)).join(' ');
+}
+
 export function showNote(element, ...parts) {
   const text = parts.filter(Boolean).join(' ');
   if (element.textContent !== text) element.textContent = text;

@@ -1,6 +1,6 @@
 // Lesson 04: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/figures/rigid.rs).
-import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, sentences } from '../../www/lesson.js';
 import { RigidScene, AffineScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -81,7 +81,7 @@ if (rigidViewer) {
   lesson.onFrame((dt) => {
     timeline.advance(dt);
     const t = pingPong(timeline);
-    const message = [rejected, scene.draw(rigidViewer, t)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(rigidViewer, t));
     if (note.textContent !== message) note.textContent = message;
     plot.setCursor?.(t);
     distance.setCursor?.(t);
@@ -132,7 +132,7 @@ if (affineViewer) {
   lesson.onFrame((dt) => {
     timeline.advance(dt);
     const t = pingPong(timeline);
-    const message = [rejected, scene.draw(affineViewer, t)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(affineViewer, t));
     if (note.textContent !== message) note.textContent = message;
     plot.setCursor?.(t);
     markDrawn('#fig-affine');

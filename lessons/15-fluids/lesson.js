@@ -1,6 +1,6 @@
 // Lesson 15: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/fluid/, src/figures/fluid.rs), which also says what each figure draws and plots.
-import { startLesson, markDrawn, Timeline, Plot, GUI, columns, spanTimeline, guarded, showNote, cssVar, timeSweepStep, dragInCanvas } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, columns, spanTimeline, guarded, showNote, sentences, cssVar, timeSweepStep, dragInCanvas } from '../../www/lesson.js';
 import { KernelsScene, DensityScene, DamBreakScene, SplashScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -11,9 +11,6 @@ const BLUE = cssVar('--z-axis');
 const RED = cssVar('--x-axis');
 const DARK = cssVar('--dark');
 const GREY = cssVar('--grey');
-
-/** A rejected setting's message and the figure's note as one text, each part a sentence. */
-const sentences = (...parts) => parts.filter(Boolean).map((s) => (/[.!?]$/.test(s.trim()) ? s : `${s}.`)).join(' ');
 
 /** NaN (a curve that stops, a sample not taken) as uPlot's gap. */
 const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) ? v : null))));
@@ -28,7 +25,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('kernels-plot'), {
     title: 'Kernels as shares of their peaks', xLabel: 'distance r (m)', yLabel: 'W (share of its peak)',
-    series: ['poly6', 'spiky', 'spiky slope −dW/dr', 'viscosity ∇²W', 'your poly6'],
+    series: ['poly6', 'spiky', 'spiky slope −dW/dr', 'viscosity ∇²W', 'your poly6 (use my exercise)'],
     colors: [PURPLE, BLUE, TEAL, ORANGE, DARK], widths: [3, 2, 2, 2, 2], dashes: [null, null, null, null, [6, 4]],
   });
   const note = document.getElementById('kernels-note');

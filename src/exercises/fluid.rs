@@ -45,7 +45,8 @@ pub fn poly6(r2: f32, h: f32) -> Answer<f32> {
 ///
 /// Hints: your 15.1 (or `W` written out again) with `r2 = (x − x_j).length_squared()`. Forgetting
 /// the particle's own term makes a lone particle weigh nothing, and every density too low by
-/// about 10 %.
+/// `m W(0)`: about 17 % of the rest density when `h` is 2.7 lattice spacings, as in the lesson's
+/// figures and the grader's lattice case.
 pub fn sph_density(x: Vec2, neighbours: &[Vec2], m: f32, h: f32) -> Answer<f32> {
     solution!(fluid::density(
         x.extend(0.0),
@@ -154,7 +155,7 @@ pub(super) fn grade(rng: &mut super::grade::Rng) -> Vec<super::grade::Report> {
     const L: &str = "15-fluids";
 
     let mut kernel = vec![
-        ("r = 0: the peak 4 / (π h⁶) · h⁰", (0.0, 1.0)),
+        ("r = 0: the peak 4 / (π h²)", (0.0, 1.0)),
         ("halfway, h = 0.1 m: the constant has h⁸", (0.0025, 0.1)),
         ("r2 = h² exactly: zero", (0.01, 0.1)),
         ("beyond the support: zero, not negative", (0.04, 0.1)),

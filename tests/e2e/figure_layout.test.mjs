@@ -2,7 +2,8 @@
 // panel keeps its 420 px; a "stacked" figure (lesson 11's short panels) puts its controls under a
 // full-width canvas at 1600 px too, leaving no empty column beside it; a "notes-first" figure
 // (lesson 13's drape) shows its note right under the canvas and timeline at 800 px, before its
-// controls. The page's own helper spanTimeline (www/lesson.js) is checked on the first page.
+// controls. The page's own helpers spanTimeline and sentences (www/lesson.js) are checked on the
+// first page.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, serveDist, openPage } from './browser.mjs';
@@ -30,12 +31,13 @@ test('figures keep their canvas height, and short or tall panels sit where the p
       // The shell's spanTimeline, on the page's own copy of www/lesson.js: a live plot's x axis
       // spans the whole timeline whatever samples it has (rows of nulls at 0 and at the end).
       const spans = await page.evaluate(async () => {
-        const { spanTimeline } = await import('/www/lesson.js');
+        const { spanTimeline, sentences } = await import('/www/lesson.js');
         return [
           spanTimeline([[0.5, 0.7], [1, 2]], 3),
           spanTimeline([[], []], 3),
           spanTimeline([[0, 1.5, 3], [4, 5, 6]], 3),
           spanTimeline([[1.3], [7]], 2),
+          sentences('Key B not changed: the axis has zero length', '', 'Screw: a slide.', 'Why?'),
         ];
       });
       assert.deepEqual(spans, [
@@ -43,6 +45,7 @@ test('figures keep their canvas height, and short or tall panels sit where the p
         [[0, 3], [null, null]],
         [[0, 1.5, 3], [4, 5, 6]],
         [[0, 1.3, 2], [null, 7, null]],
+        'Key B not changed: the axis has zero length. Screw: a slide. Why?',
       ]);
       await page.close();
     }
