@@ -494,7 +494,7 @@ fn fractals_count_segments_and_triangles() {
     // of depth 1 cut.
     assert!(
         note.contains("each of the snowflake's 12 segments into 4 and adds the 24 coloured sides")
-            && note.contains("each of the Sierpinski triangle's 3 triangles"),
+            && note.contains("every triangle of depth 1 in the Sierpinski triangle (3 of them)"),
         "{note}"
     );
     // Every segment of the depth before lies on the Sierpinski triangle of this depth: grey covers
@@ -573,6 +573,12 @@ fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     assert!((rows[1][11] - sum5).abs() < 1e-6 && rows[1][7].is_finite());
     // At ω = 3.37 the finest octave kept, 3, is a bed of spikes 2.5 spacings wide: the note
     // names it, so the spikes left are not taken for the octaves left out.
+    // Both profiles (orange, dark) are drawn over the surface, whose spikes stand in front of
+    // the line v = 0.25 at these settings.
+    let mut g = Frame::default();
+    s.draw(&mut g, MeshId(3));
+    let on_top = g.strokes.iter().filter(|st| st.depth_bias == inbetween::draw::ON_TOP).count();
+    assert!(on_top >= 2 * 400, "{on_top} segments on top, of {}", g.strokes.len());
     s.set_params(7.0, 0.8, 3.37).unwrap();
     let n = s.draw(&mut f, MeshId(3));
     assert!(n.contains("Octaves 4 to 7 are finer") && n.contains("octave 3, whose cells are 2.508 vertex"), "{n}");

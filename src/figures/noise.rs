@@ -1001,9 +1001,15 @@ impl Octaves {
                 })
                 .collect()
         };
-        frame.wide_polyline(&profile(&shown), palette::ORANGE, crate::draw::CURVE_PX);
+        // Both profiles over the surface: at α = 0.8 the fine octaves' spikes stand in front of
+        // the line v = 0.25 from any view, and the profile is what the plot below draws.
+        let on_top = |w| StrokeStyle {
+            on_top: true,
+            ..StrokeStyle::solid(w)
+        };
+        frame.stroke(&profile(&shown), palette::ORANGE, on_top(crate::draw::CURVE_PX));
         if shown.n > 0 {
-            frame.wide_polyline(&profile(&previous), palette::DARK, 1.5);
+            frame.stroke(&profile(&previous), palette::DARK, on_top(1.5));
         }
         frame.label(
             Vec3::new(1.05, 0.0, V_SLICE),
@@ -2381,7 +2387,8 @@ impl Fractals {
             format!(
                 " Over depth {} in grey, the step turns each of the snowflake's {before} segments \
                  into 4 and adds the {} coloured sides of the new bumps; it cuts the middle out of \
-                 each of the Sierpinski triangle's {} triangles, whose outlines are drawn in orange.",
+                 every triangle of depth {0} in the Sierpinski triangle ({} of them), whose \
+                 outlines are drawn in orange.",
                 d - 1,
                 2 * before,
                 3usize.pow(d - 1)
