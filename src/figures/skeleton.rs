@@ -40,7 +40,7 @@ const PATH_TICK_PX: f32 = 14.0;
 /// The most a path's tick is long across it, in average spacings between ticks on the canvas.
 const PATH_TICK_SPACINGS: f32 = 1.5;
 const TICK_OFFSET_M: f32 = 0.025;
-/// The shortest tick that shows its colour inside its white ring, CSS pixels; a lone path whose
+/// The shortest tick that shows its colour inside its dark rim, CSS pixels; a lone path whose
 /// ticks would be shorter is drawn [`LONE_PATH_PX`] wide without them.
 const READABLE_TICK_PX: f32 = 7.0;
 const LONE_PATH_PX: f32 = 4.0;
@@ -1390,7 +1390,7 @@ fn draw_path(
         // Over everything (a tick's negative size too): the path runs through the tip's own
         // ball, 4.4 cm across, which would hide much of a path a few centimetres long, in the
         // inset above all. A lone path (`offset` 0: no compared path, no inset) too short for
-        // readable ticks goes without them: ticks that small are all white ring and dark rim,
+        // readable ticks goes without them: ticks that small are all dark rim,
         // and the path read as grey.
         let lone = offset == 0.0 && tick_px < READABLE_TICK_PX;
         let style = crate::draw::StrokeStyle {

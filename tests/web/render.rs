@@ -219,6 +219,32 @@ async fn a_marker_keeps_its_size_in_pixels_at_any_distance() {
 }
 
 #[wasm_bindgen_test]
+async fn a_tick_is_its_colour_across_its_width() {
+    // Equal-time ticks on a path along x through the middle: the middle one is a bar 6 px wide
+    // along the path, its colour inside a dark rim with no white ring (which left a 1 px line of
+    // colour in a white box). The pixels whose centres lie 0.5 and 1.5 px either side of its
+    // centre line (x = 120 in device pixels) are its colour.
+    let gpu = gpu().await;
+    let mut renderer = Renderer::new(&gpu);
+    renderer.px_per_css = 1.0;
+    let samples = [-0.8, 0.0, 0.8].map(|x| Vec3::new(x, 0.0, 0.0));
+    renderer.frame.ticks(&samples, 16.0, palette::ORANGE);
+    let pixels = renderer.render_to_rgba(&gpu, &camera(), W, H).await.unwrap();
+    for dx in [-2i32, -1, 0, 1] {
+        for dy in [-4i32, 0, 4] {
+            let (x, y) = ((W / 2) as i32 + dx, (H / 2) as i32 + dy);
+            let i = ((y as u32 * W + x as u32) * 4) as usize;
+            let p = &pixels[i..i + 3];
+            assert!(
+                p[0] > 0xb0 && p[2] < 0x60,
+                "{}: the tick at ({dx}, {dy}) px is {p:?}, not orange",
+                gpu.backend_name
+            );
+        }
+    }
+}
+
+#[wasm_bindgen_test]
 async fn a_contact_shadow_darkens_the_ground_under_an_object() {
     let gpu = gpu().await;
     let mut renderer = Renderer::new(&gpu);

@@ -1,6 +1,6 @@
 // Markers of a fixed size on screen: dots (a disc) and ticks (a short bar across a path), each
-// filled with its colour inside a thin white ring and a thinner dark rim, so they show on light
-// backgrounds and dark meshes alike. globals.params: y, z = the target's size in device pixels,
+// filled with its colour inside a thin dark rim (a dot also inside a white ring), so they show on
+// light backgrounds and dark meshes alike. globals.params: y, z = the target's size in device pixels,
 // w = device pixels per CSS pixel.
 struct InstanceIn {
     @location(0) center: vec3<f32>,
@@ -85,7 +85,7 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     // Signed distance to the shape's outline, device pixels (negative inside).
     var d: f32;
     if (in.params.z > 0.5) {
-        // A bar 6 CSS pixels thick along the path (2.5 of colour inside the outline), `size`
+        // A bar 6 CSS pixels thick along the path (4.5 of colour inside the dark rim), `size`
         // long across it.
         let half_extent = vec2<f32>(3.0 * scale, half_size);
         let q = abs(in.local) - half_extent;
@@ -97,9 +97,10 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     if (coverage <= 0.0) {
         discard;
     }
-    // From the outside in: 0.75 CSS pixel of dark rim, 1 of white ring, then the colour.
+    // From the outside in: 0.75 CSS pixel of dark rim, 1 of white ring (dots only: in a tick's
+    // 6 px bar it would leave a 1 px line of colour in a white box), then the colour.
     let rim = 0.75 * scale;
-    let ring = 1.75 * scale;
+    let ring = select(1.75, 0.0, in.params.z > 0.5) * scale;
     let dark = vec3<f32>(0.02, 0.02, 0.025);
     var rgb = mix(in.color.rgb, vec3<f32>(1.0), clamp(d + ring + 0.5, 0.0, 1.0));
     rgb = mix(rgb, dark, clamp(d + rim + 0.5, 0.0, 1.0));
