@@ -24,3 +24,13 @@ pub fn order_by(keys: impl IntoIterator<Item = f32>, descending: bool) -> Vec<us
     sort_desc(&mut pairs);
     pairs.into_iter().map(|(_, i)| i as usize).collect()
 }
+
+/// Sorts `values` smallest first under `f32::total_cmp`: [`sort_desc`] on the negated values
+/// (a `sort_by(f32::total_cmp)` of its own would compile a second sort).
+pub fn sort_ascending(values: &mut [f32]) {
+    let mut pairs: Vec<(f32, u32)> = values.iter().map(|&x| (-x, 0)).collect();
+    sort_desc(&mut pairs);
+    for (v, (k, _)) in values.iter_mut().zip(pairs) {
+        *v = -k;
+    }
+}

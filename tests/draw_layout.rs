@@ -310,3 +310,17 @@ fn orderings_by_a_float_key_are_stable_and_exact() {
     sort_desc(&mut pairs);
     assert_eq!(pairs.map(|p| p.1), [1, 2, 0, 3]);
 }
+
+/// `sort_ascending` orders exactly as `sort_by(f32::total_cmp)`: -0 before +0, a NaN with the
+/// sign bit set first and one without last, every value's bits kept.
+#[test]
+fn sort_ascending_matches_total_cmp() {
+    let values = [2.5, -0.0, f32::NAN, 0.0, -f32::NAN, -7.0, f32::INFINITY, 1e-30, 2.5, -1e-30];
+    let mut expected = values;
+    expected.sort_by(f32::total_cmp);
+    let mut sorted = values;
+    inbetween::order::sort_ascending(&mut sorted);
+    assert_eq!(sorted.map(f32::to_bits), expected.map(f32::to_bits));
+    assert!(sorted[0].is_nan() && sorted[0].is_sign_negative());
+    assert_eq!(sorted[1], -7.0);
+}

@@ -149,7 +149,7 @@ impl Default for StepTimeSweep {
 /// The median of `xs` (not empty).
 fn median(xs: &[f32]) -> f32 {
     let mut v = xs.to_vec();
-    v.sort_by(f32::total_cmp);
+    crate::order::sort_ascending(&mut v);
     let n = v.len();
     if n % 2 == 1 {
         v[n / 2]

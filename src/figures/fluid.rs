@@ -1328,7 +1328,7 @@ impl SplashFigure {
             match t {
                 Some(t) => {
                     let mut v = t.clone();
-                    v.sort_by(f32::total_cmp);
+                    crate::order::sort_ascending(&mut v);
                     out.extend([v[v.len() / 2], v[0], v[v.len() - 1]]);
                 }
                 None => out.extend([f32::NAN; 3]),
@@ -1354,7 +1354,7 @@ impl SplashFigure {
         if v.is_empty() {
             return note;
         }
-        v.sort_by(f32::total_cmp);
+        crate::order::sort_ascending(&mut v);
         note.push_str(&format!(
             " The GPU grid (WebGPU compute, {SPLASH_GPU_TIMING_STEPS} steps queued at once and timed until the GPU has finished them) takes {:.2} ms a step at N = {}.",
             v[v.len() / 2],

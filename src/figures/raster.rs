@@ -249,12 +249,12 @@ impl MeshStorage {
                 let v = camera.view();
                 (v.row(0).truncate(), v.row(1).truncate())
             });
-            let mut order: Vec<(f32, usize)> = (centres.iter().enumerate())
-                .map(|(t, c)| (c.dot(up).atan2(c.dot(across)), t))
+            let angle: Vec<f32> = (centres.iter())
+                .map(|c| c.dot(up).atan2(c.dot(across)))
                 .collect();
-            order.sort_by(|a, b| a.0.total_cmp(&b.0));
-            for (k, &(_, t)) in order.iter().enumerate() {
-                let a = order[0].0 + k as f32 * std::f32::consts::FRAC_PI_2;
+            let order = crate::order::order_by(angle.iter().copied(), false);
+            for (k, &t) in order.iter().enumerate() {
+                let a = angle[order[0]] + k as f32 * std::f32::consts::FRAC_PI_2;
                 shown[t] = (across * a.cos() + up * a.sin()) * 0.9;
             }
         }

@@ -347,20 +347,24 @@ impl World {
                 );
                 self.grid.configure(lo, hi, radius);
                 self.grid.rebuild(&positions);
-                let mut pairs = Vec::new();
+                // In increasing pair order, as the all-pairs loop finds them: the solver's
+                // result does not depend on the broad phase. Each body's later neighbours,
+                // smallest index first, through the crate's one float sort (an index below
+                // [`MAX_BODIES`] is exact as an `f32`).
+                let mut later: Vec<(f32, u32)> = Vec::new();
                 for i in 0..n {
+                    later.clear();
                     self.grid.for_each_neighbour(&positions, i, radius, |j| {
                         if j > i {
-                            pairs.push((i, j));
+                            later.push((-(j as f32), j as u32));
                         }
                     });
-                }
-                // In increasing pair order, as the all-pairs loop finds them: the solver's
-                // result does not depend on the broad phase.
-                pairs.sort_unstable();
-                for (i, j) in pairs {
-                    if near(&self.bodies, i, j) {
-                        pair_contacts(i, j, &self.bodies, &mut out);
+                    crate::order::sort_desc(&mut later);
+                    for &(_, j) in &later {
+                        let j = j as usize;
+                        if near(&self.bodies, i, j) {
+                            pair_contacts(i, j, &self.bodies, &mut out);
+                        }
                     }
                 }
             }

@@ -562,7 +562,7 @@ impl Clip {
                 return Err(ClipError::TooManyKeys { count: times.len() });
             }
         }
-        times.sort_by(f32::total_cmp);
+        crate::order::sort_ascending(&mut times);
         // Keys closer than a microsecond are one key.
         times.dedup_by(|b, a| *b - *a <= 1e-6);
         if let Some(last) = times.last_mut() {
