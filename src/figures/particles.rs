@@ -1203,16 +1203,6 @@ impl SpringFigure {
             );
             frame.point_on_top(Vec3::new(shown, y, z), SPRING_MASS_M, color);
         }
-        // Straight below the front row's bar, whose near end is the lowest on screen at the
-        // page's camera: the three bars stand in one column, which the name heads from below.
-        frame.label_off_dot(
-            Vec3::new(exact, y, SPRING_ROWS_Z[2] + 0.32),
-            5.0,
-            glam::Vec2::Y,
-            "exact",
-            EXACT_COLOR,
-            1,
-        );
         // Each name beside its mass, above and right of it first (behind its row, up the screen
         // from the front, clear of its coil on the left); on the last frame's view, the first
         // place round the mass (then further out) that covers no wall (its corners and centre),
@@ -1238,33 +1228,66 @@ impl SpringFigure {
             solid.extend([Vec3::X, Vec3::Y, Vec3::Z].map(|d| mass + d * SPRING_MASS_M));
             solid.extend([Vec3::X, Vec3::Y, Vec3::Z].map(|d| mass - d * SPRING_MASS_M));
         }
-        for (i, z) in SPRING_ROWS_Z.into_iter().enumerate() {
-            let x = self.states[i][k]
-                .0
-                .clamp(-SPRING_DRAW_MAX_M, SPRING_DRAW_MAX_M);
-            let name = Integrator::ALL[i].name();
-            let mass = Vec3::new(x, y, z);
-            // The mass's width on the canvas (its rim's farthest projection from its centre,
-            // twice): each place starts off the ball, not on it.
-            let ball_px = view.map_or(0.0, |(view_proj, size)| {
+        // Each mass's centre and width on the canvas (its rim's farthest projection from its
+        // centre, twice): each place starts off its ball, and keeps 2 px off every ball's disc.
+        let masses: [_; 3] = std::array::from_fn(|i| {
+            let x = self.states[i][k].0;
+            let mass = Vec3::new(
+                x.clamp(-SPRING_DRAW_MAX_M, SPRING_DRAW_MAX_M),
+                y,
+                SPRING_ROWS_Z[i],
+            );
+            let disc = view.and_then(|(view_proj, size)| {
                 let at = |p: Vec3| crate::camera::project_to_canvas(view_proj, size, p);
-                let Some(c) = at(mass) else { return 0.0 };
-                [Vec3::X, Vec3::Y, Vec3::Z]
+                let c = at(mass)?;
+                let across = [Vec3::X, Vec3::Y, Vec3::Z]
                     .iter()
                     .filter_map(|&d| at(mass + d * SPRING_MASS_M))
-                    .fold(0.0, |w: f32, p| w.max(2.0 * p.distance(c)))
+                    .fold(0.0, |w: f32, p| w.max(2.0 * p.distance(c)));
+                Some((c, across))
             });
+            (mass, x.abs() > SPRING_DRAW_MAX_M, disc)
+        });
+        let off_solid = super::clear_of(view, &solid);
+        let clear = |r: crate::draw::layout::Rect| {
+            off_solid(r)
+                && masses.iter().all(|(_, _, disc)| {
+                    disc.is_none_or(|(c, w)| r.nearest(c).distance(c) > 0.5 * w + 2.0)
+                })
+        };
+        // "exact" straight below the front row's bar, whose near end is the lowest on screen at
+        // the page's camera (the three bars stand in one column, which the name heads from
+        // below), else round it where it covers no coil, ball or wall.
+        let candidates = crate::draw::Label::around_dot(
+            Vec3::new(exact, y, SPRING_ROWS_Z[2] + 0.32),
+            5.0,
+            glam::Vec2::Y,
+            "exact",
+            EXACT_COLOR,
+            1,
+            8,
+            8.0,
+        );
+        frame.first_clear_label_by(view, 0.0, candidates, &clear);
+        for (i, &(mass, cut, disc)) in masses.iter().enumerate() {
+            // A mass drawn cut short says so in its name.
+            let name = Integrator::ALL[i].name();
+            let name = if cut {
+                format!("{name} (drawn cut)")
+            } else {
+                name.to_string()
+            };
             let candidates = crate::draw::Label::around_dot(
                 mass,
-                ball_px,
+                disc.map_or(0.0, |d| d.1),
                 glam::Vec2::new(1.0, -1.0),
-                name,
+                &name,
                 INTEGRATOR_COLORS[i],
                 0,
                 16,
                 8.0,
             );
-            frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &solid));
+            frame.first_clear_label_by(view, 0.0, candidates, &clear);
         }
         frame.keep_box_in_view(
             Vec3::new(SPRING_WALL_X - 0.2, 0.0, SPRING_ROWS_Z[0] - 0.5),

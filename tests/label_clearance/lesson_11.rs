@@ -233,7 +233,7 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
     // from it at most, 72 px orbited). As on the page, the figure places them for
     // the view of the frame before.
     use inbetween::draw::palette;
-    use inbetween::figures::particles::SpringFigure;
+    use inbetween::figures::particles::{SpringFigure, SPRING_DRAW_MAX_M};
     const NAMES: [&str; 3] = ["explicit Euler", "semi-implicit Euler", "velocity Verlet"];
     let mut failures = Vec::new();
     for (yaw, pitch) in [
@@ -259,10 +259,19 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
                         |fig, cam, px| fig.set_view(cam, px.x, px.y),
                     );
                     let name = format!("11 spring, orbit ({yaw}, {pitch}), dt {dt}, t {time_sec}");
+                    // A mass drawn cut short (explicit Euler's, past SPRING_DRAW_MAX_M) says so
+                    // in its name.
+                    let cut = frame.points[0].center[0].abs() >= SPRING_DRAW_MAX_M - 1e-4;
+                    let explicit = if cut { "explicit Euler (drawn cut)" } else { NAMES[0] };
+                    assert!(frame.labels.iter().any(|l| l.text == explicit), "{name}");
+                    // The three names and "exact".
                     let named: Vec<usize> = (0..frame.labels.len())
-                        .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
+                        .filter(|&i| {
+                            let t = &frame.labels[i].text;
+                            t == "exact" || NAMES.iter().any(|n| t.starts_with(n))
+                        })
                         .collect();
-                    assert_eq!(named.len(), 3, "{name}");
+                    assert_eq!(named.len(), 4, "{name}");
                     failures.extend(failure_of(|| {
                         assert_shown_clear_by(&name, &frame, &camera, size, &named, 0.0)
                     }));
@@ -297,10 +306,31 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
                         .filter_map(|p| project_to_canvas(view_proj, size, p))
                         .collect();
                     assert_eq!(solid.len(), 27 + 21, "{name}: three walls and three masses");
-                    let boxes = label_boxes(&frame, &camera, size);
+                    let boxes: Vec<(String, Rect)> = label_boxes(&frame, &camera, size)
+                        .into_iter()
+                        .map(|(t, r)| (t.trim_end_matches(" (drawn cut)").to_string(), r))
+                        .collect();
                     failures.extend(failure_of(|| {
                         assert_names_cover_none(&name, size, &boxes, &NAMES, &solid, "a wall or mass")
                     }));
+                    // No name and not "exact" on any ball's disc (its rim's farthest projection
+                    // from its centre): a name over another row's ball reads as naming it.
+                    for p in &frame.points {
+                        let c = project_to_canvas(view_proj, size, Vec3::from(p.center)).unwrap();
+                        let rim = [Vec3::X, Vec3::Y, Vec3::Z]
+                            .iter()
+                            .filter_map(|&d| {
+                                let q = Vec3::from(p.center) + d * p.radius.abs();
+                                project_to_canvas(view_proj, size, q)
+                            })
+                            .fold(0.0, |r: f32, q| r.max(q.distance(c)));
+                        for (t, rect) in &boxes {
+                            let gap = rect.nearest(c).distance(c);
+                            failures.extend(failure_of(|| {
+                                assert!(gap >= rim, "{name} on {size}: {t} {gap} px from a ball's centre, inside its {rim} px disc")
+                            }));
+                        }
+                    }
                     // Each name beside the mass it names: its box within 40 px of the mass's
                     // centre on screen at the page's view, 72 px orbited, where the rows close
                     // up round the middle one (the masses are drawn in the names' order).
