@@ -1390,3 +1390,31 @@ fn the_drops_arrows_show_over_the_boxes_and_the_ground() {
         assert!(last_teal < first_blue, "{last_teal:?} {first_blue:?}");
     }
 }
+
+#[test]
+fn at_a_small_wobble_the_energy_steps_come_about_4_s_apart_and_the_held_racket_5() {
+    // The page's Try this at a wobble of 0.01 rad/s: all three rackets first turn over near
+    // 2.3 s; the explicit and implicit ones (whose energy steps the plot shows) next about 4 s
+    // later, the L-held one about 5 s later.
+    let mut f = RacketFigure::new();
+    f.set_spin(6.0, 0.01).unwrap();
+    let mut prev = [1.0f32; 3];
+    let mut flips = vec![Vec::new(), Vec::new(), Vec::new()];
+    for k in 1..=720 {
+        f.advance_to(k as f32 / 60.0).unwrap();
+        for (b, flips) in flips.iter_mut().enumerate() {
+            let y = (f.bodies()[b].orientation * Vec3::Y).y;
+            if (y < 0.0) != (prev[b] < 0.0) {
+                flips.push(k as f32 / 60.0);
+            }
+            prev[b] = y;
+        }
+    }
+    for (b, gap) in [(0, 5.0), (1, 4.0), (2, 4.0)] {
+        let t = &flips[b];
+        assert!(
+            (t[0] - 2.3).abs() < 0.15 && (t[1] - t[0] - gap).abs() < 0.35,
+            "racket {b}: {t:?}"
+        );
+    }
+}
