@@ -342,18 +342,7 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
                         failures.extend(failure_of(|| {
                             assert!(gap <= reach, "{name} on {size}: {n} {gap} px from its mass")
                         }));
-                        // Off the ball's disc (its rim's farthest projection from its centre):
-                        // a name that starts on its ball reads as covering it.
-                        let rim = [Vec3::X, Vec3::Y, Vec3::Z]
-                            .iter()
-                            .filter_map(|&d| {
-                                let q = Vec3::from(p.center) + d * p.radius.abs();
-                                project_to_canvas(view_proj, size, q)
-                            })
-                            .fold(0.0, |r: f32, q| r.max(q.distance(c)));
-                        failures.extend(failure_of(|| {
-                            assert!(gap >= rim, "{name} on {size}: {n} {gap} px from its mass's centre, inside its {rim} px disc")
-                        }));
+                        // (Off its own ball's disc too: the loop over every ball above.)
                     }
                 }
             }
