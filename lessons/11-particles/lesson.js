@@ -81,7 +81,9 @@ const fallViewer = await lesson.figure('#fig-freefall');
 if (fallViewer) {
   fallViewer.setCamera(-0.3, 1.3, 0, 5.5, 0.0, 0.1);
   const scene = new FreeFallScene();
-  const timeline = new Timeline(document.getElementById('freefall-timeline'), { duration: scene.durationSec() });
+  // A little longer than the throw: a playing timeline wraps before it reaches its duration, and
+  // the throw's last step (at 1.3 s with Δt = 0.1 s, the plot's last point) must be shown too.
+  const timeline = new Timeline(document.getElementById('freefall-timeline'), { duration: scene.durationSec() + 0.05 });
   const p = { dt: 0.1, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-freefall .panel'), title: 'Integrators' });
   gui.add(p, 'dt', 0.01, 0.3, 0.01).name('step size Δt (s)');

@@ -101,6 +101,13 @@ async function squashAndFreefall(page, w, h) {
   await frames(page, 4);
   const note = await page.locator('#freefall-note').textContent();
   assert.match(note, /explicit Euler is 0\.638 m above, semi-implicit Euler 0\.638 m below, velocity Verlet on the parabola/, note);
+  // Just before the timeline's end, where a playing timeline wraps, the throw's last step (the
+  // plot's last point, 13 steps at Δt = 0.1 s) is shown too.
+  await fallScrub.fill('990');
+  await fallScrub.dispatchEvent('input');
+  await frames(page, 4);
+  const nearEnd = await page.locator('#freefall-note').textContent();
+  assert.match(nearEnd, /^After 13 steps of dt = 0\.1\d* s \(t = 1\.3\d* s\)/, nearEnd);
   assert.match(await page.locator('#freefall-plot').getAttribute('data-plot'), /Height above the exact parabola/);
 }
 
