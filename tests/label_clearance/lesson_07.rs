@@ -239,6 +239,30 @@ fn lesson_07_side_d_label_sits_beside_its_line() {
     );
 }
 
+/// Figure 4 (the aim) with `target` and a cone of `cone` degrees at time `t`, drawn at its page
+/// camera (lessons/07-inverse-kinematics/lesson.js: yaw −0.95, pitch 0.15, fitted) on a canvas of
+/// `size`, as the page draws it: the scene, the frame checked and its camera.
+fn aim_drawn(
+    target: Vec3,
+    cone: f32,
+    t: f32,
+    size: Vec2,
+) -> (inbetween::figures::ik::AimFigure, Frame, OrbitCamera) {
+    let mut scene = inbetween::figures::ik::AimFigure::new();
+    scene.set_target(target).unwrap();
+    scene.set_max_angle_deg(cone).unwrap();
+    let (frame, camera) = drawn_for_view(
+        &mut scene,
+        [0.0, 1.5, 0.0, 5.2, -0.95, 0.15],
+        size,
+        |fig, out| {
+            fig.draw(out, t).unwrap();
+        },
+        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+    );
+    (scene, frame, camera)
+}
+
 #[test]
 fn lesson_07_aim_labels_keep_off_the_body_and_the_lines() {
     // Figure 4 at its page camera (lessons/07-inverse-kinematics/lesson.js: yaw −0.95, pitch
@@ -250,7 +274,6 @@ fn lesson_07_aim_labels_keep_off_the_body_and_the_lines() {
     // head's boxes on the canvas (a label on the body's edge reads as part of it). As on the
     // page, the figure places them for the view of the frame before.
     use inbetween::draw::MeshId;
-    use inbetween::figures::ik::AimFigure;
     use inbetween::figures::palette;
     let mut failures = Vec::new();
     let mut misses = 0;
@@ -263,18 +286,7 @@ fn lesson_07_aim_labels_keep_off_the_body_and_the_lines() {
         for k in 0..8 {
             let t = k as f32;
             for size in CANVASES {
-                let mut scene = AimFigure::new();
-                scene.set_target(target).unwrap();
-                scene.set_max_angle_deg(cone).unwrap();
-                let (frame, camera) = drawn_for_view(
-                    &mut scene,
-                    [0.0, 1.5, 0.0, 5.2, -0.95, 0.15],
-                    size,
-                    |fig, out| {
-                        fig.draw(out, t).unwrap();
-                    },
-                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                );
+                let (_, frame, camera) = aim_drawn(target, cone, t, size);
                 let name = format!("07 aim, target {target}, cone {cone}°, t {t}");
                 let placed: Vec<usize> = (0..frame.labels.len())
                     .filter(|&i| {
@@ -654,7 +666,6 @@ fn lesson_07_aim_miss_leader_keeps_off_the_dashed_line() {
     // target (it would point at the wrong line). As on the page, the figure places it for the
     // view of the frame before.
     use inbetween::draw::layout::leader;
-    use inbetween::figures::ik::AimFigure;
     // The head's centre (src/figures/ik.rs, HEAD), where the dashed line starts.
     let head = Vec3::new(0.0, 1.6, 0.0);
     let mut failures = Vec::new();
@@ -669,18 +680,7 @@ fn lesson_07_aim_miss_leader_keeps_off_the_dashed_line() {
         for k in 0..16 {
             let t = 0.5 * k as f32;
             for size in CANVASES {
-                let mut scene = AimFigure::new();
-                scene.set_target(target).unwrap();
-                scene.set_max_angle_deg(cone).unwrap();
-                let (frame, camera) = drawn_for_view(
-                    &mut scene,
-                    [0.0, 1.5, 0.0, 5.2, -0.95, 0.15],
-                    size,
-                    |fig, out| {
-                        fig.draw(out, t).unwrap();
-                    },
-                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                );
+                let (scene, frame, camera) = aim_drawn(target, cone, t, size);
                 let view_proj = camera.projection(size.x / size.y) * camera.view();
                 let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
                 let (h, g) = (at(head), at(scene.target_at(t)));
