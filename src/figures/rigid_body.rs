@@ -1212,7 +1212,7 @@ impl ImpulseFigure {
         let yaw = self.view.map_or(0.0, |(camera, _)| camera.yaw_rad);
         let right = Vec3::new(yaw.cos(), 0.0, -yaw.sin());
         let side = right * OMEGA_SIDE_M * hit.omega_after.dot(right).signum();
-        if hit.omega_before.max(hit.omega_after).length() * OMEGA_SCALE > 1e-3 {
+        if hit.omega_before.length().max(hit.omega_after.length()) * OMEGA_SCALE > 1e-3 {
             frame.wide_line_on_top(o, o + side, palette::GREY, 1.5);
         }
         // Before arrives at its start and after leaves it: v before and v after point the same
