@@ -615,6 +615,33 @@ fn the_step_time_sweep_times_the_grid_and_all_pairs_in_turn() {
     );
 }
 
+/// How far the splash has got, which the page's timeline keeps at most a quarter of a second
+/// ahead of: the CPU fluid's time while it runs, the GPU's clock in GPU mode, and the timeline's
+/// end once the fluid has stopped (an exploded fluid must not hold the timeline back for ever).
+#[test]
+fn the_splash_says_how_far_it_has_got_and_the_end_once_it_has_stopped() {
+    let mut fig = SplashFigure::new();
+    assert_eq!(fig.ready_sec(), 0.0);
+    fig.set("PBF", 8000.0, "grid", 0.0).unwrap();
+    // One step a call at 8,000 particles: far behind a timeline at 1 s.
+    fig.advance_to(1.0).unwrap();
+    fig.advance_to(1.0).unwrap();
+    let dt = fig.fluid().params.dt;
+    assert!((fig.ready_sec() - 2.0 * dt).abs() < 1e-6, "{}", fig.ready_sec());
+    assert_eq!(fig.ready_sec(), fig.fluid().time);
+    // GPU mode: the GPU's clock, whatever the CPU fluid did.
+    fig.set_gpu(3000.0).unwrap();
+    assert_eq!(fig.ready_sec(), 0.0);
+    fig.plan_gpu_steps(0.5, true).unwrap();
+    assert!(fig.gpu_time() > 0.0);
+    assert_eq!(fig.ready_sec(), fig.gpu_time());
+    // Stopped: the end of the timeline.
+    let t = fig.gpu_time();
+    fig.record_gpu_fastest(t, f32::INFINITY).unwrap();
+    assert!(fig.gpu_exploded().is_some());
+    assert_eq!(fig.ready_sec(), SPLASH_DURATION_SEC);
+}
+
 mod splash_on_the_gpu {
     use inbetween::draw::Frame;
     use inbetween::figures::fluid::{

@@ -237,8 +237,18 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
 
     const note = document.getElementById('splash-note');
     const gpuNote = hasCompute ? '' : 'Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.';
+    // The timeline keeps at most AHEAD seconds ahead of the fluid, as the dam break's does: with
+    // many particles a frame takes one step, and on a slow machine the timeline would wrap and
+    // start the run over before the drop reached the pool. 0.05 s is 12 steps of 1/240 s, so a
+    // paused fluid catches up with its clock within 12 frames.
+    const AHEAD = 0.05;
     lesson.onFrame((dt) => {
-      const t = timeline.advance(dt);
+      timeline.advance(dt);
+      if (timeline.playing && timeline.time > scene.readySec + AHEAD) {
+        timeline.time = scene.readySec + AHEAD;
+        timeline.show();
+      }
+      const t = timeline.time;
       if (hasCompute && p.on !== 'CPU') scene.advanceOnGpu(viewer, t);
       else scene.advanceTo(t);
       showNote(note, sentences(rejected, scene.draw(viewer), gpuNote));

@@ -1197,6 +1197,23 @@ impl SplashFigure {
         self.gpu_time
     }
 
+    /// How far the drawn fluid has got, seconds: its time (the GPU's clock in GPU mode), or the
+    /// end of the timeline once it has stopped (exploded). The page's timeline keeps at most a
+    /// moment ahead of it, so that on a slow machine it waits for the fluid instead of wrapping
+    /// and starting the run over before the splash.
+    pub fn ready_sec(&self) -> f32 {
+        let (time, stopped) = if self.gpu_mode() {
+            (self.gpu_time, self.gpu_exploded.is_some())
+        } else {
+            (self.fluid.time, self.fluid.exploded().is_some())
+        };
+        if stopped {
+            SPLASH_DURATION_SEC
+        } else {
+            time
+        }
+    }
+
     /// The GPU steps towards `time_sec`: `(start over, steps to queue)`. Back in time (more than
     /// half a step) starts over from the start; ahead, at most [`SPLASH_GPU_STEPS_PER_CALL`]
     /// steps (fewer with many particles: [`SPLASH_GPU_STEP_BUDGET`]), and none while `gpu_idle` is false (the GPU still runs the steps queued before).

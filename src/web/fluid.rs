@@ -309,6 +309,11 @@ impl SplashScene {
     pub fn duration_sec(&self) -> f32 {
         crate::figures::fluid::SPLASH_DURATION_SEC
     }
+    /// How far the drawn fluid has got (seconds), or the timeline's end once it has stopped.
+    #[wasm_bindgen(getter, js_name = readySec)]
+    pub fn ready_sec(&self) -> f32 {
+        self.scene.ready_sec()
+    }
     /// Steps towards `time_sec` (at most a few steps a call); returns the steps taken.
     #[wasm_bindgen(js_name = advanceTo)]
     pub fn advance_to(&mut self, time_sec: f32) -> Result<usize, JsError> {

@@ -143,6 +143,19 @@ test('lesson 15 on WebGL2: the GPU switch is off and the note says why; the dam 
     const damNote = await page.locator('#dam-note').textContent();
     const simulated = Number(/Simulated so far: ([\d.]+) s/.exec(damNote)?.[1]);
     assert.ok(clock <= simulated + 0.26, `the timeline at ${clock} s, the fluids at ${simulated} s`);
+    // The splash's timeline waits for its fluid too: 8,000 particles take one step (1/240 s) a
+    // frame, and played at 1x the clock would run ahead of them by most of each frame's time.
+    await page.locator('#fig-splash').scrollIntoViewIfNeeded();
+    await setControl(page, '#fig-splash', 'particles', 8000);
+    const splash = page.locator('#splash-timeline');
+    await splash.locator('.speed').selectOption('1');
+    if (!(await splash.locator('.play').textContent()).includes('pause')) await splash.locator('.play').click();
+    await frames(page, 20);
+    const [splashClock, splashNote] = await page.evaluate(() => [
+      Number.parseFloat(document.querySelector('#splash-timeline .clock').textContent),
+      document.getElementById('splash-note').textContent]);
+    const water = Number(/t = ([\d.]+) s/.exec(splashNote)?.[1]);
+    assert.ok(splashClock > 0 && splashClock <= water + 0.06, `the splash's timeline at ${splashClock} s, its fluid at ${water} s`);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
