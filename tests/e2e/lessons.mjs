@@ -82,6 +82,17 @@ const SWEEP_RENDER_SCALE = Number(process.env.E2E_RENDER_SCALE ?? 0.5);
  * on its y axis, and a log x axis (it records data-x-range) on its x axis: a log axis over many
  * decades, or over part of one, must still label some of its ticks. */
 async function plotsShowNumbers(figure, i) {
+  // A control may have restarted a measurement (lesson 15's "measure again" clears its plot, and
+  // the sweep fills it in over the next frames): up to 10 s for the numbers to come.
+  await figure.evaluate((f) => new Promise((ok) => {
+    const started = performance.now();
+    const look = () => {
+      const shown = [...f.querySelectorAll('.plot[data-y-ticks]')].every((p) => Number(p.dataset.yTicks) >= 2);
+      if (shown || performance.now() - started > 10_000) ok();
+      else requestAnimationFrame(look);
+    };
+    look();
+  }));
   const ticks = await figure.evaluate((f) => [...f.querySelectorAll('.plot[data-y-ticks]')]
     .map((p) => [p.dataset.plot, Number(p.dataset.yTicks), p.dataset.xRange ? Number(p.dataset.xTicks) : 2]));
   const bare = ticks.filter(([, y]) => y < 2);
@@ -329,6 +340,20 @@ async function moveControls(page, figure, check) {
       }
     }
   }
+  // The timeline's scrub first, and back to the start after it, as a person drags it: a
+  // simulation scrubbed ahead while paused catches up a frame's step budget at a time and draws
+  // every frame until it gets there (lesson 15's splash at 8,000 particles: one step a frame,
+  // about 270 frames for 1.1 s), which every later check would wait behind; going back restarts
+  // it at once. The plays below then move it on from the start (so a "reset" after them has
+  // something to undo).
+  for (const scrub of await figure.locator('.timeline .scrub').all()) {
+    // Several places: a ping-pong timeline shows the same moment at t and at duration − t.
+    await check('timeline scrub', (k) => clickAt(page, scrub, [0.37, 0.81, 0.12][k]), false, 3);
+    await scrub.evaluate((s) => {
+      s.value = '0';
+      s.dispatchEvent(new Event('input'));
+    });
+  }
   // Buttons and dropdowns outside the panels (presets, solo, timeline), then the panels' buttons.
   // The speed's check plays the timeline (pressing play, until the figure changes), which is the
   // play button's check as well: a figure with one timeline and a speed is not played twice.
@@ -353,10 +378,6 @@ async function moveControls(page, figure, check) {
     } else {
       await check(`dropdown "${label}"`, (k) => select.selectOption({ index: (current + 1 + k) % options.length }), false, options.length - 1, 12);
     }
-  }
-  for (const scrub of await figure.locator('.timeline .scrub').all()) {
-    // Several places: a ping-pong timeline shows the same moment at t and at duration − t.
-    await check('timeline scrub', (k) => clickAt(page, scrub, [0.37, 0.81, 0.12][k]), false, 3);
   }
   for (const play of playChecked ? [] : await figure.locator('.timeline .play').all()) {
     // Each play lasts until the figure changes, at most 10 frames, then pauses. Up to three plays:
