@@ -13,7 +13,8 @@ import { lessonId, setUpNavigation, addOutline, gradePanel, quiz, scrollToHash, 
 export { GUI };
 
 // A value typed into a number box that lil-gui cannot take is otherwise dropped in silence: text
-// that is not a number keeps the old value, a number outside the slider's range is clamped to it.
+// that is not a number keeps the old value, a number outside the slider's range is clamped to it,
+// one between the slider's steps (2.5 for a count) goes to the nearest step.
 // Every number control of every panel (folders included: they are GUIs too) says so under itself
 // until its next accepted value or a change of any other control.
 const addControl = GUI.prototype.add;
@@ -37,8 +38,8 @@ function clearTypedNotesOnChange(controller) {
 }
 
 /** What became of `typed` (the number box's text when it was left) in `controller`, whose value
- * lil-gui has already set from it: '' when it was a number within the range (taken as typed,
- * snapped to the step at most), else the sentence saying it was kept or clamped. */
+ * lil-gui has already set from it: '' when it was a number within the range, taken as typed,
+ * else the sentence saying it was kept, clamped or moved to the nearest step. */
 function typedValueNote(controller, typed) {
   const text = typed.trim();
   const value = parseFloat(text);
@@ -51,6 +52,17 @@ function typedValueNote(controller, typed) {
   const [lo, hi] = [controller._min, controller._max];
   if ((lo !== undefined && value < lo) || (hi !== undefined && value > hi)) {
     return `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}: ${name} is set to ${controller.getValue()}.`;
+  }
+  // A control with a step (a count's is 1) takes the nearest step to the number typed. (When the
+  // figure rejected that value, its own message says so, and the control went back.)
+  if (controller._stepExplicit) {
+    const snapped = controller._snap(value);
+    if (snapped !== value && controller.getValue() === snapped) {
+      const step = controller._step;
+      return step === 1
+        ? `${text} is not a whole number: ${name} is set to ${snapped}.`
+        : `${text} falls between the control's steps of ${step}: ${name} is set to ${snapped}.`;
+    }
   }
   return '';
 }

@@ -75,3 +75,35 @@ test('figures keep their canvas height, and short or tall panels sit where the p
     await context.close();
   }
 });
+
+test('a number typed between a control\'s steps says which step it took (a count\'s 2.5, lesson 15\'s 1234 particles)', async () => {
+  // lil-gui moves a typed number to the nearest step without a word: a count typed as 2.5
+  // became 3 silently. The shell says so under the control, as it does for text and for numbers
+  // out of range.
+  const context = await launch('webgl2');
+  try {
+    const page = (await openPage(context, `${site.origin}/lessons/02b-expressive-animation/?backend=webgl2`, { width: 1280, height: 900 })).page;
+    const typed = async (control, text) => {
+      const box = control.locator('input');
+      await box.fill(text);
+      await box.press('Enter');
+      await page.evaluate(() => new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(ok))));
+      return [await control.locator('xpath=following-sibling::*[1]').textContent(), await box.inputValue()];
+    };
+    const ghosts = page.locator('.lil-controller', { hasText: 'ghosts' }).first();
+    assert.deepEqual(await typed(ghosts, '2.5'), ['2.5 is not a whole number: ghosts is set to 3.', '3']);
+    const accepted = await typed(ghosts, '7');
+    assert.equal(accepted[1], '7');
+    assert.ok(!(await ghosts.locator('xpath=following-sibling::*[1]').isVisible()), 'a value on a step takes the note away');
+    const other = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgl2`, { width: 1280, height: 900 });
+    const particles = other.page.locator('#fig-splash .lil-controller', { hasText: 'particles' }).first();
+    const box = particles.locator('input');
+    await box.fill('1234');
+    await box.press('Enter');
+    await other.page.evaluate(() => new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(ok))));
+    assert.equal(await particles.locator('xpath=following-sibling::*[1]').textContent(),
+      '1234 falls between the control\'s steps of 500: particles is set to 1000.');
+  } finally {
+    await context.close();
+  }
+});
