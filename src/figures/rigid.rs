@@ -389,6 +389,25 @@ impl RigidMotion {
         }
     }
 
+    /// How far dual quaternion blending is along the screw axis past the screw at the same turn,
+    /// metres, at `t`, positive in the direction of the whole slide. The blend's motion from A,
+    /// `blend(t) A⁻¹`, turns about the screw axis and slides along it (the two share the helix's
+    /// line, not its pitch), so it moves a point of the axis by its slide; the screw at the same
+    /// turn, `s(t)` ([`RigidMotion::screw_time_of_blend`]), slides `s(t)` of the whole way.
+    pub fn blend_lead_m(&self, t: f32) -> f32 {
+        let axis = self.screw_axis();
+        let (a, b) = self.pivot_keys();
+        let moved = (DualQuat::nlerp(a, b, t) * a.conjugate()).transform_point(axis.point);
+        let slide = (moved - axis.point).dot(axis.direction);
+        (slide - self.screw_time_of_blend(t) * axis.displacement) * axis.displacement.signum()
+    }
+
+    /// The largest [`RigidMotion::blend_lead_m`] over `t`, either way (metres), sampled at 64
+    /// steps.
+    pub fn largest_blend_lead_m(&self) -> f32 {
+        (0..=64).fold(0.0, |m, k| m.max(self.blend_lead_m(k as f32 / 64.0).abs()))
+    }
+
     /// Distance travelled by the nose since t = 0 (metres), sampled: `(t, lerp + slerp, blend,
     /// screw)`. The blend and the screw end at the same distance (one helix); lerp + slerp
     /// takes another path.
