@@ -358,7 +358,8 @@ if (v6) {
 // Figure 9: Perlin and simplex noise, on the CPU and on the GPU (WGSL), with the GPU check.
 const vg = await lesson.figure('#fig-gpu');
 if (vg) {
-  vg.setCamera(0, 0, 0.1, 6.2, 0, 1.3);
+  // Face on: the images stand in the plane z = 0 (src/figures/noise_images.rs).
+  vg.setCamera(0, -0.15, 0, 6.2, 0, 0);
   const scene = new NoiseImagesScene();
   const p = { cells: 6, seed: 0, gpu: 'Perlin', lattice: false };
   const state = { accepted: { ...p } };
