@@ -1,6 +1,7 @@
 //! Lesson 05's "Perlin, simplex, and the GPU" figure: images, the GPU comparison, the lattices.
 #![cfg(not(target_arch = "wasm32"))]
 
+use glam::Vec3;
 use inbetween::draw::{palette, Frame, TextureId};
 use inbetween::figures::noise_images::*;
 use inbetween::noise::Permutation;
@@ -122,13 +123,13 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
     for (a, b) in triangles {
         for p in [a, b] {
             assert!(
-                p.x >= -1.0 - 1e-4 && p.x <= 1.0 + 1e-4 && p.z.abs() <= 1.0 + 1e-4,
+                p.x >= -1.0 - 1e-4 && p.x <= 1.0 + 1e-4 && p.y.abs() <= 1.0 + 1e-4,
                 "{p}"
             );
         }
     }
-    // A fine lattice covers only the top-left LATTICE_CELLS cells (x and z from −1 on the
-    // square): at 25.5 cells across, lines over the whole image would hide the noise.
+    // A fine lattice covers only the top-left LATTICE_CELLS cells (x from −1 and y from 1 on
+    // the square): at 25.5 cells across, lines over the whole image would hide the noise.
     s.set_params(25.5, 0.0).unwrap();
     f.clear();
     let note = s.draw(&mut f, ids);
@@ -141,18 +142,50 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
     f.clear();
     s.draw(&mut f, ids);
     let corner = -1.0 + 2.0 * LATTICE_CELLS / 25.5;
-    let (mut far_x, mut far_z) = (-1.0f32, -1.0f32);
+    let (mut far_x, mut far_down) = (-1.0f32, -1.0f32);
     for (a, b) in f.segments_of(palette::ORANGE).chain(f.segments_of(palette::TEAL)) {
         for p in [a, b] {
             let x = if p.x < -1.1 { p.x + 2.2 } else { p.x };
             far_x = far_x.max(x);
-            far_z = far_z.max(p.z);
+            far_down = far_down.max(-p.y);
         }
     }
-    assert!((far_x - corner).abs() < 1e-3 && (far_z - corner).abs() < 1e-3, "{far_x}, {far_z}");
+    assert!(
+        (far_x - corner).abs() < 1e-3 && (far_down - corner).abs() < 1e-3,
+        "{far_x}, {far_down}"
+    );
     // Up to LATTICE_CELLS the lattices cover the whole image, and the note says nothing of it.
     s.set_params(LATTICE_CELLS, 0.0).unwrap();
     f.clear();
     assert!(!s.draw(&mut f, ids).contains("top-left"));
     assert_eq!(f.segments_of(palette::ORANGE).count(), 14);
+}
+
+#[test]
+fn the_images_face_the_camera_upright_with_their_names_under_them() {
+    // The page looks along −z (yaw 0, pitch 0): each image stands in the plane z = 0 facing +z,
+    // its texel row 0 (the quad's z = −1 edge) at the top, so it shows square and unforeshortened;
+    // a drag pans the figure instead of tipping the images away.
+    let s = NoiseImages::new();
+    let mut f = Frame::default();
+    s.draw(&mut f, [TextureId(3), TextureId(4), TextureId(5)]);
+    assert!(f.flat);
+    assert_eq!(f.quads.len(), 3);
+    let mut centres = Vec::new();
+    for q in &f.quads {
+        let at = |x: f32, z: f32| q.model.transform_point3(Vec3::new(x, 0.0, z));
+        let normal = q.model.transform_vector3(Vec3::Y);
+        assert!(normal.distance(Vec3::Z) < 1e-5, "faces {normal}");
+        // Row 0 at the top, column 0 on the left, 2 m on a side.
+        assert!((at(0.0, -1.0).y - 1.0).abs() < 1e-5 && (at(0.0, 1.0).y + 1.0).abs() < 1e-5);
+        assert!((at(1.0, 0.0).x - at(-1.0, 0.0).x - 2.0).abs() < 1e-5);
+        centres.push(at(0.0, 0.0));
+    }
+    assert!(centres.windows(2).all(|w| w[1].x > w[0].x + 2.0 && w[0].y == w[1].y));
+    // Each name just under its image, from its left edge.
+    assert_eq!(f.labels.len(), 3);
+    for (label, c) in f.labels.iter().zip(&centres) {
+        assert!((label.anchor.x - (c.x - 1.0)).abs() < 1e-5, "{:?}", label.anchor);
+        assert!((-1.4..-1.0).contains(&label.anchor.y), "{:?}", label.anchor);
+    }
 }

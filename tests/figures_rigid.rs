@@ -372,8 +372,9 @@ fn the_blend_turns_about_the_screw_axis_and_only_its_timing_differs() {
         assert!(across.length() < 2e-3, "t = {t}: {across} off the axis");
         worst_slide = worst_slide.max(slide.length());
     }
-    // The page: "up to 9 cm" further along the axis, of a slide of 1.40 m.
+    // The page: "at most 9 cm", of a slide of 1.40 m.
     assert!((0.085..0.095).contains(&worst_slide), "{worst_slide}");
+    assert!((scene.largest_blend_lead_m() - worst_slide).abs() < 2e-3);
     assert!(
         (axis.displacement - 1.40).abs() < 0.005,
         "{}",
@@ -644,17 +645,74 @@ fn the_affine_keys_wireframes_tell_a_from_b() {
 
 
 #[test]
-fn with_no_turn_every_method_moves_at_one_speed_to_a_thousandth_of_it() {
+fn a_constant_speed_is_plotted_flat_and_a_varying_one_is_not() {
     // Lesson 04's Try this: at 0° the three methods slide along one line at one constant speed,
-    // which the speed plot (autoscaled down to half a metre per unit of t) must show flat.
+    // and the screw keeps one speed at any angle. The plot autoscales down to half a metre per
+    // unit of t and snaps to whole pixels: speeds that differ by round-off would draw as
+    // one-pixel steps, so a constant speed must come out as one number.
+    let flat = |scene: &RigidMotion, method: usize| {
+        let speed = scene.sample_speed(101).unwrap();
+        speed.iter().all(|r| r[method] == speed[0][method])
+    };
     let mut scene = RigidMotion::new();
     scene
         .set_end(Vec3::new(0.2, 1.0, 0.3), 0.0, Vec3::new(1.5, 1.4, 0.3))
         .unwrap();
-    let speed = scene.sample_speed(201).unwrap();
     for method in 1..=3 {
-        let v: Vec<f32> = speed.iter().map(|r| r[method]).collect();
-        let (lo, hi) = v.iter().fold((f32::MAX, 0.0f32), |(l, h), &x| (l.min(x), h.max(x)));
-        assert!(hi - lo < 1e-3 * hi, "method {method}: {lo}..{hi}");
+        assert!(flat(&scene, method), "0°, method {method}");
     }
+    let slide = scene.sample_speed(2).unwrap()[0][1];
+    assert!((slide - Vec3::new(3.0, 0.8, 0.3).length()).abs() < 1e-3, "{slide}");
+    // The screw at the default key and at a few others.
+    for (angle, axis, to) in [
+        (150.0, Vec3::new(0.2, 1.0, 0.3), Vec3::new(1.5, 1.4, 0.3)),
+        (180.0, Vec3::new(0.2, 1.0, 0.3), Vec3::new(0.0, 0.0, 0.0)),
+        (-120.0, Vec3::new(1.0, 0.0, 0.0), Vec3::new(3.0, 0.0, -3.0)),
+    ] {
+        scene.set_end(axis, angle, to).unwrap();
+        assert!(flat(&scene, 3), "screw at {angle}°");
+    }
+    // A turn of 5° changes the lerp + slerp and blend speeds by about a tenth of a percent: that
+    // is motion, not round-off, and is kept.
+    scene
+        .set_end(Vec3::new(0.2, 1.0, 0.3), 5.0, Vec3::new(1.5, 1.4, 0.3))
+        .unwrap();
+    assert!(!flat(&scene, 1) && !flat(&scene, 2));
+    assert!(flat(&scene, 3));
+}
+
+#[test]
+fn the_blend_trails_the_screw_along_the_axis_then_leads_it_by_as_much() {
+    // The page: at the same turn the blend trails the screw along the axis, by at most 9 cm with
+    // the default key B, then leads it by as much; not at all at the keys and half-way, nor with
+    // no turn.
+    let mut scene = RigidMotion::new();
+    let lead: Vec<f32> = (0..=64).map(|k| scene.blend_lead_m(k as f32 / 64.0)).collect();
+    for (k, &l) in lead.iter().enumerate() {
+        let mirrored = lead[64 - k];
+        assert!((l + mirrored).abs() < 2e-3, "t = {k}/64: {l} vs {mirrored}");
+        match k {
+            0 | 32 | 64 => assert!(l.abs() < 1e-3, "t = {k}/64: {l}"),
+            1..=31 => assert!(l < 0.0, "behind at t = {k}/64: {l}"),
+            _ => assert!(l > 0.0, "ahead at t = {k}/64: {l}"),
+        }
+    }
+    let largest = scene.largest_blend_lead_m();
+    assert!((0.085..0.095).contains(&largest), "{largest}");
+    assert_eq!(format!("{:.0}", largest * 100.0), "9");
+    // Behind, then ahead, for other keys and pivots too.
+    for (angle, to, pivot) in [
+        (180.0, Vec3::new(1.5, 1.4, 0.3), 0.0),
+        (-120.0, Vec3::new(3.0, 0.0, -3.0), 1.5),
+        (60.0, Vec3::new(-2.0, 2.0, 1.0), -1.0),
+    ] {
+        scene.set_end(Vec3::new(0.2, 1.0, 0.3), angle, to).unwrap();
+        scene.set_pivot(Vec3::new(pivot, 0.0, 0.0)).unwrap();
+        assert!(scene.blend_lead_m(0.25) < 0.0 && scene.blend_lead_m(0.75) > 0.0, "{angle}°");
+        assert!(scene.largest_blend_lead_m() > 0.005, "{angle}°");
+    }
+    scene
+        .set_end(Vec3::new(0.2, 1.0, 0.3), 0.0, Vec3::new(1.5, 1.4, 0.3))
+        .unwrap();
+    assert!(scene.largest_blend_lead_m() < 1e-4);
 }

@@ -660,10 +660,9 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
     );
     assert!(note.contains("0.177 m from the elbow joint"), "{note}");
     // In the main view LBS's dot lies a few pixels from DQS's, under it; the inset shows the
-    // dots close up, where the orange one (8 px) clears the teal one (14 px) on either page
-    // canvas.
+    // dots close up, where the orange one's dark ring clears the teal dot on either page canvas.
     use inbetween::draw::inset::{inset_camera, inset_rect};
-    use inbetween::figures::skinning::LBS_OFFSET;
+    use inbetween::figures::skinning::{DQS_BESIDE_LBS_PX, LBS_OFFSET, LBS_RING_PX};
     let inset = frame.inset.as_ref().expect("an inset of the followed vertex");
     let (view, projection, _) = inset_camera(inset).unwrap();
     for size in [glam::Vec2::new(650.0, 420.0), glam::Vec2::new(760.0, 380.0)] {
@@ -680,7 +679,8 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
             assert!(r.nearest(at) == at, "{size}: {p} outside the inset");
         }
         let gap = px(lbs).distance(px(dqs));
-        assert!(gap > 7.0 + 4.0 + 2.0, "{size}: the dots {gap} px apart in the inset");
+        let (ring, teal) = (LBS_RING_PX / 2.0, DQS_BESIDE_LBS_PX / 2.0);
+        assert!(gap > ring + teal + 1.0, "{size}: the dots {gap} px apart in the inset");
     }
     // A half twist puts LBS's vertex on the axis: the note says 0.000 m, not float noise.
     f.set_bend_deg(0.0).unwrap();
@@ -994,8 +994,11 @@ fn screen_axes_are_the_cameras_right_and_up_whatever_its_target() {
 fn the_followed_vertex_shows_both_its_lbs_and_dqs_dots_where_they_meet() {
     // Figure 1 at its defaults (90°, no twist): on the LBS tube the teal dot (where DQS puts the
     // vertex) and the orange one (where LBS does) lie a few pixels apart on the page. The orange
-    // is drawn over the teal and narrower by at least 4 px, so the teal still rings it.
+    // sits on the orange tube, in the close-up too: a dark ring, drawn just before it and wider
+    // by at least 4 px, sets it off. Both go over the teal, which is wider again by at least
+    // 4 px, so the teal still rings them.
     use inbetween::draw::palette;
+    use inbetween::figures::skinning::LBS_OFFSET;
     let mut f = CylinderFigure::new();
     let mut frame = Frame::default();
     f.draw(&mut frame, IDS).unwrap();
@@ -1008,6 +1011,13 @@ fn the_followed_vertex_shows_both_its_lbs_and_dqs_dots_where_they_meet() {
     };
     let (teal, orange) = (of(palette::TEAL), of(palette::ORANGE));
     let size = |i: usize| frame.markers[i].size_px.abs();
-    assert!(orange > teal, "orange drawn first");
-    assert!(size(teal) - size(orange) >= 4.0, "{} and {}", size(teal), size(orange));
+    let ring = orange - 1;
+    let lbs = LBS_OFFSET + f.lbs.positions[f.probe().0];
+    assert_eq!(frame.markers[ring].color, palette::DARK.extend(1.0).to_array());
+    assert_eq!(frame.markers[ring].center, frame.markers[orange].center);
+    assert!(Vec3::from(frame.markers[orange].center).distance(lbs) < 1e-6);
+    assert!(frame.markers[ring].size_px < 0.0, "the ring is drawn on top, as the dot");
+    assert!(size(ring) - size(orange) >= 4.0, "{} and {}", size(ring), size(orange));
+    assert!(ring > teal, "the teal drawn first");
+    assert!(size(teal) - size(ring) >= 4.0, "{} and {}", size(teal), size(ring));
 }

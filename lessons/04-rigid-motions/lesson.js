@@ -41,9 +41,14 @@ if (rigidViewer) {
   move.add(p, 'tz', -3, 3, 0.01);
   gui.add(p, 'pivot', -1.5, 1.5, 0.05).name('pivot x (m, along the body)');
   gui.add(p, 'useExercise').name('use my exercise');
-  // Wide under narrow: at angle 0 the three curves are one, and all three stay visible.
+  // Wide under narrow: at angle 0 the three curves are one, and all three stay visible. uPlot
+  // draws the series in order, so the blend's narrow curve comes last (the core gives it second).
   const curves = {
-    series: ['lerp + slerp', 'dual quaternion blend', 'screw'], colors: ['#e68a00', '#2ca02c', '#1f6fd6'], widths: [7, 1.5, 4],
+    series: ['lerp + slerp', 'screw', 'dual quaternion blend'], colors: ['#e68a00', '#1f6fd6', '#2ca02c'], widths: [7, 4, 1.5],
+  };
+  const blendLast = (rows) => {
+    const [t, lerp, blend, screw] = columns(rows, 4);
+    return [t, lerp, screw, blend];
   };
   const distance = new Plot(document.getElementById('rigid-distance'), {
     title: 'Distance travelled by the nose', xLabel: 't (0 to 1)', yLabel: 'distance (m)', minSpan: 0.5, ...curves,
@@ -67,8 +72,8 @@ if (rigidViewer) {
     scene.setShow(Number(p.show));
     scene.setThirds(p.thirds);
     scene.setUseExercise(p.useExercise);
-    plot.setData(columns(scene.sampleSpeed(101), 4));
-    distance.setData(columns(scene.sampleDistance(101), 4));
+    plot.setData(blendLast(scene.sampleSpeed(101)));
+    distance.setData(blendLast(scene.sampleDistance(101)));
     const s = Array.from(scene.screwAxis());
     const f = (v) => v.map((x) => (Math.abs(x) < 5e-3 ? 0 : x).toFixed(2)).join(', ');
     document.getElementById('rigid-screw').textContent = s[6] < 0.05

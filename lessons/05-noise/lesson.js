@@ -247,10 +247,11 @@ if (vn) {
   const gui = new GUI({ container: document.querySelector('#fig-normals .panel'), title: 'Normals' });
   gui.add(p, 'resolution', { '9 × 9': 9, '17 × 17': 17, '33 × 33': 33, '65 × 65': 65, '129 × 129': 129 }).name('resolution');
   gui.add(p, 'h', 0, 1, 0.01).name('h (height)');
-  // One sample per resolution offered, marked with dots.
+  // One sample per resolution offered, marked with dots. Brown, solid and dashed: the grey and
+  // orange of the arrows name the two normals, and the angle between them is neither.
   const plot = new Plot(document.getElementById('nor-plot'), {
     title: 'Averaged against exact normals, by resolution', xLabel: 'vertices per side (count)',
-    yLabel: 'angle between them (°)', series: ['mean', 'largest'], colors: [cssVar('--orange'), cssVar('--grey')],
+    yLabel: 'angle between them (°)', series: ['mean', 'largest'], colors: [cssVar('--brown'), cssVar('--brown')],
     widths: [3, 2], dashes: [null, [6, 4]], minSpan: 1, points: true,
   });
   let rejected = '';
@@ -357,7 +358,8 @@ if (v6) {
 // Figure 9: Perlin and simplex noise, on the CPU and on the GPU (WGSL), with the GPU check.
 const vg = await lesson.figure('#fig-gpu');
 if (vg) {
-  vg.setCamera(0, 0, 0.1, 6.2, 0, 1.3);
+  // Face on: the images stand in the plane z = 0 (src/figures/noise_images.rs).
+  vg.setCamera(0, -0.15, 0, 6.2, 0, 0);
   const scene = new NoiseImagesScene();
   const p = { cells: 6, seed: 0, gpu: 'Perlin', lattice: false };
   const state = { accepted: { ...p } };

@@ -94,6 +94,15 @@ impl Default for NoiseImages {
 
 /// Where the three squares stand (x of their centres).
 const PLACES: [f32; 3] = [-2.2, 0.0, 2.2];
+
+/// A square's model matrix: the quad's `[−1, 1]²` of the xz plane stood up in the plane z = 0,
+/// facing +z (the page's camera looks along −z), its z = −1 edge (texel row 0) at the top, and
+/// centred at `x`. Seen face on, the images are as large as the canvas's width allows and
+/// square on screen.
+pub fn image_model(x: f32) -> Mat4 {
+    Mat4::from_translation(Vec3::new(x, 0.0, 0.0))
+        * Mat4::from_rotation_x(std::f32::consts::FRAC_PI_2)
+}
 /// Width of the lattice lines in CSS pixels at up to 6 cells across: wide enough to read over the
 /// noise's greys. Finer lattices get thinner lines ([`lattice_px`]).
 pub const LATTICE_PX: f32 = 2.0;
@@ -251,15 +260,14 @@ impl NoiseImages {
             .to_string(),
         ];
         // The three squares and their labels stay whole at any canvas size.
-        frame.keep_box_in_view(Vec3::new(-3.2, 0.0, -1.0), Vec3::new(3.2, 0.0, 1.3));
+        frame.keep_box_in_view(Vec3::new(-3.2, -1.3, 0.0), Vec3::new(3.2, 1.0, 0.0));
+        // Images facing the camera: a drag pans them rather than turning them edge-on.
+        frame.flat = true;
         for ((&x, texture), name) in PLACES.iter().zip(textures).zip(&names) {
-            frame.textured_quad(
-                texture,
-                Mat4::from_translation(Vec3::new(x, 0.0, 0.0)),
-                UvRect::FULL,
-            );
-            // Labels read rightwards from their anchor: start each at its square's left edge.
-            frame.label(Vec3::new(x - 1.0, 0.0, 1.2), name.as_str(), palette::DARK);
+            frame.textured_quad(texture, image_model(x), UvRect::FULL);
+            // Labels read rightwards from their anchor: start each at its square's left edge,
+            // under the square.
+            frame.label(Vec3::new(x - 1.0, -1.2, 0.0), name.as_str(), palette::DARK);
         }
         let mut part = String::new();
         if self.lattice {
@@ -297,12 +305,13 @@ impl NoiseImages {
         let lift = 0.01;
         let width = lattice_px(self.cells);
         let span = self.cells.min(LATTICE_CELLS);
-        // Image point (x, y) in noise units -> world on the square at `cx`.
+        // Image point (x, y) in noise units (y down the image) -> world on the square at `cx`,
+        // just in front of it.
         let world = |cx: f32, x: f32, y: f32| {
             Vec3::new(
                 cx - 1.0 + 2.0 * x / self.cells,
+                1.0 - 2.0 * y / self.cells,
                 lift,
-                -1.0 + 2.0 * y / self.cells,
             )
         };
         let n = span.ceil() as i32;

@@ -183,6 +183,12 @@ pub struct CylinderFigure {
 /// Widths of the elbow ring and of the lines along the tubes, CSS pixels.
 const RING_PX: f32 = 3.0;
 const STRIPE_PX: f32 = 2.0;
+/// Figure 1's LBS point (orange, on the orange tube), the dark ring under it that sets it off
+/// from the tube in the close-up, and DQS's point beside the LBS tube, under both and wider, so
+/// that it rings them where they meet: CSS pixels.
+pub const LBS_DOT_PX: f32 = 11.0;
+pub const LBS_RING_PX: f32 = 16.0;
+pub const DQS_BESIDE_LBS_PX: f32 = 21.0;
 /// The X-rayed skeleton of the skinned character: bone width and joint dot size, CSS pixels (a
 /// bone must read through the body at 800 x 600).
 pub const BONE_PX: f32 = 3.0;
@@ -691,10 +697,12 @@ impl CylinderFigure {
             frame.marker_on_top(o + k2, 10.0, palette::GREY);
         }
         frame.marker_on_top(o + k1, 10.0, palette::GREY);
-        // DQS's point wider than LBS's, which goes over it: where the two lie a few pixels
-        // apart (a small bend) the teal still rings the orange.
-        frame.marker_on_top(o + dqs, 14.0, palette::TEAL);
-        frame.marker_on_top(o + lbs, 8.0, palette::ORANGE);
+        // LBS's orange point lies on the orange tube: a dark ring sets it off. DQS's point is
+        // wider than that ring, which goes over it: where the two lie a few pixels apart (a small
+        // bend) the teal still rings the dark.
+        frame.marker_on_top(o + dqs, DQS_BESIDE_LBS_PX, palette::TEAL);
+        frame.marker_on_top(o + lbs, LBS_RING_PX, palette::DARK);
+        frame.marker_on_top(o + lbs, LBS_DOT_PX, palette::ORANGE);
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
         // The four dots close up, seen from the front (across the bend's plane), with the whole
         // tube's depth: in the main view LBS's dot lies a few pixels from DQS's.

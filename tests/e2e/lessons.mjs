@@ -12,6 +12,7 @@ import { join } from 'node:path';
 import { tmpdir } from 'node:os';
 import { launch, pixelStats, meanDifference, frames, serveDist, openPage, DIST } from './browser.mjs';
 import { gpuNoiseMatchesCpu } from './noise_gpu.mjs';
+import { normalsPlotKeepsTheArrowsColours } from './noise_page.mjs';
 import { quizShowMeSetsFigures } from './quiz.mjs';
 
 const SHOTS = 'tests/screenshots';
@@ -756,7 +757,10 @@ async function lessonPage(context, backend, lesson) {
   const framesFitted = light(backend) ? 0 : await frameAllReturnsToTheFit(page, lesson.folder);
   clock('frame all');
   if (lesson.folder.startsWith('02-')) await editorDrags(page);
-  if (lesson.folder.startsWith('05-')) await gpuNoiseMatchesCpu(page, label);
+  if (lesson.folder.startsWith('05-')) {
+    await gpuNoiseMatchesCpu(page, label);
+    await normalsPlotKeepsTheArrowsColours(page);
+  }
   clock('editor drags, GPU noise check');
   const figures = await page.locator('.figure').all();
   assert.ok(figures.length > 0, 'a lesson has at least one figure');
