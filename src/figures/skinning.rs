@@ -205,6 +205,11 @@ impl Default for CylinderFigure {
 /// and the labels below it.
 pub const CYLINDER_VIEW: [Vec3; 2] = [Vec3::new(-0.15, -0.5, -0.4), Vec3::new(2.15, 1.4, 0.4)];
 
+/// The smallest weight the followed vertex's note shows as more than 0.000: below it a joint
+/// counts as having none (no dot, name or chord; the other joint has it all, to well under a
+/// millimetre).
+pub const PROBE_MIN_WEIGHT: f32 = 0.0005;
+
 /// The cylinder's resolution: rings along it (odd: one at the elbow) and vertices around.
 pub const CYLINDER_RINGS: usize = 41;
 pub const CYLINDER_AROUND: usize = 24;
@@ -691,7 +696,7 @@ impl CylinderFigure {
         let (v, [(k1, w1), (k2, w2)]) = self.probe();
         let (lbs, dqs) = (self.lbs.positions[v], self.dqs.positions[v]);
         let o = LBS_OFFSET;
-        let both = w1 > 0.0 && w2 > 0.0;
+        let both = w1 >= PROBE_MIN_WEIGHT && w2 >= PROBE_MIN_WEIGHT;
         if both {
             frame.stroke(
                 &[o + k1, o + k2],
@@ -699,9 +704,10 @@ impl CylinderFigure {
                 crate::draw::StrokeStyle::dashed(2.0, 0.04, 0.03),
             );
         }
-        // A joint with no weight moves the vertex nowhere: its dot and name are left out.
+        // A joint with no weight (to the note's three decimals) moves the vertex nowhere: its dot
+        // and name are left out.
         let named = [(k2, w2, k1, "K₂p"), (k1, w1, k2, "K₁p")];
-        let named: Vec<_> = named.into_iter().filter(|n| n.1 > 0.0).collect();
+        let named: Vec<_> = named.into_iter().filter(|n| n.1 >= PROBE_MIN_WEIGHT).collect();
         for &(k, ..) in &named {
             frame.marker_on_top(o + k, 10.0, palette::GREY);
         }
@@ -751,7 +757,7 @@ impl CylinderFigure {
         let rest = self.rig.mesh.positions[v].distance(self.rig.segments[1].0);
         // With one joint at weight 1 there is no chord (none is drawn): both methods move the
         // vertex rigidly with that joint, to its K p.
-        let place = match (w1 > 0.0, w2 > 0.0) {
+        let place = match (w1 >= PROBE_MIN_WEIGHT, w2 >= PROBE_MIN_WEIGHT) {
             (true, true) => "on the dashed chord between K₁p and K₂p",
             (true, false) => "at K₁p, as DQS (the shoulder has it all)",
             _ => "at K₂p, as DQS (the elbow has it all)",
