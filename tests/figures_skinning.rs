@@ -712,7 +712,7 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
     }
     f.set_probe_ring(20).unwrap();
     assert!(
-        note.contains("LBS puts it on the dashed chord between K₁p and K₂p"),
+        note.contains("LBS on the dashed chord between K₁p and K₂p"),
         "{note}"
     );
     assert!(
@@ -746,22 +746,79 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
     f.draw(&mut frame, IDS).unwrap();
     let (_, [(_, w1), (_, w2)]) = f.probe();
     assert!(w1 > 0.99 && w2 < 0.01, "{w1} {w2}");
-    // Where the second weight is 0 the note names no chord (none is drawn): the far ends at
-    // the narrowest falloff.
-    f.set_falloff(0.01).unwrap();
-    let mut rigid = 0;
-    for ring in [0, 40] {
-        f.set_probe_ring(ring).unwrap();
-        let note = f.draw(&mut Frame::default(), IDS).unwrap();
-        let (_, [_, (_, w2)]) = f.probe();
-        assert_eq!(note.contains("dashed chord"), w2 > 0.0, "ring {ring}: {note}");
-        if w2 == 0.0 {
-            assert!(note.contains("LBS and DQS both put it at K₁p"), "{note}");
-            rigid += 1;
+    assert!(f.set_probe_ring(41).unwrap_err().contains("vertex ring"));
+}
+
+/// K₁p is where the shoulder alone takes the followed vertex and K₂p where the elbow alone does,
+/// as the caption names them, on every ring (the forearm's too, where the elbow is heavier), and
+/// the dots, names and note follow: a joint with weight 0 has no dot or name, and where one joint
+/// has it all the note names that joint's point.
+#[test]
+fn k1p_is_the_shoulders_and_k2p_the_elbows_on_every_ring() {
+    use glam::Affine3A;
+    use inbetween::figures::skinning::{LBS_OFFSET, PROBE_MIN_WEIGHT};
+    let mut f = CylinderFigure::new();
+    f.set_bend_deg(90.0).unwrap();
+    f.set_twist_deg(40.0).unwrap();
+    let mut rigid = [[0, 0]; 2];
+    for (i, falloff) in [0.01, 0.15].into_iter().enumerate() {
+        f.set_falloff(falloff).unwrap();
+        f.update().unwrap();
+        let rig = f.rig();
+        let (mut model, mut k) = ([Affine3A::IDENTITY; 3], [Affine3A::IDENTITY; 3]);
+        rig.palette(90f32.to_radians(), 40f32.to_radians(), &mut model, &mut k)
+            .unwrap();
+        let skin = rig.weights(falloff).unwrap();
+        for ring in 0..rig.rings {
+            f.set_probe_ring(ring).unwrap();
+            let mut frame = Frame::default();
+            let note = f.draw(&mut frame, IDS).unwrap();
+            let (v, [(k1, w1), (k2, w2)]) = f.probe();
+            let p = f.rig().mesh.positions[v];
+            let weight = |joint: u16| -> f32 {
+                let (j, w) = (skin.joints()[v], skin.weights()[v]);
+                j.iter().zip(w).filter(|(&i, _)| i == joint).map(|(_, w)| w).sum()
+            };
+            let at = format!("falloff {falloff} ring {ring}");
+            assert!(k1.distance(k[0].transform_point3(p)) < 1e-5, "{at}: K₁p");
+            assert!(k2.distance(k[1].transform_point3(p)) < 1e-5, "{at}: K₂p");
+            assert!((w1 - weight(0)).abs() < 1e-6 && (w2 - weight(1)).abs() < 1e-6, "{at}");
+            // The two carry the whole weight: LBS's point is their mix.
+            let lbs = f.lbs.positions[v];
+            assert!((lbs - (w1 * k1 + w2 * k2)).length() < 1e-4, "{at}");
+            // Each name beside its own joint's dot (nearer it than the other joint's dot).
+            for (name, own, w) in [("K₁p", k1, w1), ("K₂p", k2, w2)] {
+                let label = frame.labels.iter().find(|l| l.text == name);
+                assert_eq!(label.is_some(), w >= PROBE_MIN_WEIGHT, "{at}: {name}");
+                if let Some(l) = label {
+                    assert_eq!(l.anchor, LBS_OFFSET + own, "{at}: {name}'s anchor");
+                }
+            }
+            assert!(
+                note.contains(&format!("shoulder {w1:.3}, elbow {w2:.3}")),
+                "{at}: {note}"
+            );
+            let chord = note.contains("dashed chord between K₁p and K₂p");
+            let (has1, has2) = (w1 >= PROBE_MIN_WEIGHT, w2 >= PROBE_MIN_WEIGHT);
+            assert_eq!(chord, has1 && has2, "{at}: {note}");
+            // Below the threshold a weight reads 0.000 in the note.
+            assert_eq!(has1, format!("{w1:.3}") != "0.000", "{at}: {w1}");
+            assert_eq!(has2, format!("{w2:.3}") != "0.000", "{at}: {w2}");
+            if !has2 {
+                assert!(note.contains("LBS at K₁p, as DQS (the shoulder has it all)"), "{at}: {note}");
+                rigid[i][0] += 1;
+            }
+            if !has1 {
+                assert!(note.contains("LBS at K₂p, as DQS (the elbow has it all)"), "{at}: {note}");
+                rigid[i][1] += 1;
+            }
         }
     }
-    assert!(rigid > 0, "no ring with one joint at weight 1");
-    assert!(f.set_probe_ring(41).unwrap_err().contains("vertex ring"));
+    // Both ends have one joint alone at either falloff (at 0.15 m the far weight is under 0.0005).
+    assert!(
+        rigid.iter().flatten().all(|&n| n > 0),
+        "rings with one joint at weight 1: {rigid:?}"
+    );
 }
 
 /// Both 9.x exercises by the reference.

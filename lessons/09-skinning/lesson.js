@@ -157,6 +157,7 @@ if (humanViewer) {
   // performance.now() is coarse (0.1 ms, with jitter) next to one frame's work: the note gives the
   // mean over the last 60 frames, which the coarse steps average out of.
   const times = [];
+  const MIN_FRAMES = 10;
   let frameMs = 0;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
@@ -166,10 +167,13 @@ if (humanViewer) {
     if (times.length > 60) times.shift();
     const mean = times.reduce((a, b) => a + b, 0) / times.length;
     frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
-    const work = p.on === 'GPU'
-      ? `Skinning on the GPU: the CPU spends ${mean.toFixed(2)} ms a frame on the clip and the palettes`
-      : `Skinning on the CPU: ${mean.toFixed(2)} ms a frame for the clip, the palettes and both bodies`;
-    showNote(note, `${scene.draw(humanViewer)} ${work} (mean of the last ${times.length} frames); frame time ${frameMs.toFixed(1)} ms.`);
+    // A mean of a few coarse samples is no measurement: below MIN_FRAMES the note says so.
+    const work = times.length < MIN_FRAMES
+      ? `Skinning on the ${p.on}: no measurement yet (${times.length} of ${MIN_FRAMES} frames skinned since it moved; play the clip)`
+      : p.on === 'GPU'
+        ? `Skinning on the GPU: the CPU spends ${mean.toFixed(2)} ms a frame on the clip and the palettes (mean of the last ${times.length} frames)`
+        : `Skinning on the CPU: ${mean.toFixed(2)} ms a frame for the clip, the palettes and both bodies (mean of the last ${times.length} frames)`;
+    showNote(note, `${scene.draw(humanViewer)} ${work}; frame time ${frameMs.toFixed(1)} ms.`);
     plot.setCursor(t);
     markDrawn('#fig-human');
   });

@@ -205,6 +205,11 @@ impl Default for CylinderFigure {
 /// and the labels below it.
 pub const CYLINDER_VIEW: [Vec3; 2] = [Vec3::new(-0.15, -0.5, -0.4), Vec3::new(2.15, 1.4, 0.4)];
 
+/// The smallest weight the followed vertex's note shows as more than 0.000: below it a joint
+/// counts as having none (no dot, name or chord; the other joint has it all, to well under a
+/// millimetre).
+pub const PROBE_MIN_WEIGHT: f32 = 0.0005;
+
 /// The cylinder's resolution: rings along it (odd: one at the elbow) and vertices around.
 pub const CYLINDER_RINGS: usize = 41;
 pub const CYLINDER_AROUND: usize = 24;
@@ -618,12 +623,12 @@ impl CylinderFigure {
         }
         let (a_lbs, a_dqs) = self.elbow_areas();
         let mut note = format!(
-            "Elbow cross-section (black ring): LBS keeps {:.0}% of its rest area, DQS {:.0}%.",
+            "Elbow ring: LBS keeps {:.0}% of its rest area, DQS {:.0}%.",
             100.0 * a_lbs,
             100.0 * a_dqs
         );
         note.push_str(&format!(
-            " Falloff {} m: {} of {} vertices follow both the shoulder and the elbow.",
+            " Falloff {} m: {} of {} vertices blend shoulder and elbow.",
             format_number(self.falloff),
             blended(&self.skin),
             self.skin.len()
@@ -634,10 +639,10 @@ impl CylinderFigure {
                 "The plots' dashed lines mark this bend (no twist)."
             }
             PlotCursors { area: Some(_), volume: None } => {
-                "The area plot's dashed line marks this twist, on its twist curves (no bend); the volume plot has no twist."
+                "The area plot's dashed line marks this twist (no bend)."
             }
             _ => {
-                "Bent and twisted at once, the tube is on none of the plots' curves (each varies one angle with the other at 0), so they show no dashed line."
+                "Bent and twisted, the tube is on none of the plots' curves."
             }
         });
         if let Some(j) = self.heat_joint {
@@ -668,13 +673,18 @@ impl CylinderFigure {
         Ok(())
     }
 
-    /// The followed vertex's index, and where each of its two heaviest joints alone would take
-    /// it, `[K₁p, K₂p]` with their weights (model space, before the tubes' offsets).
+    /// The followed vertex's index, and where the shoulder alone and the elbow alone would take
+    /// it, `[K₁p, K₂p]` with their weights (model space, before the tubes' offsets): always in
+    /// that order, as the caption names them, whichever joint is heavier. A joint not among the
+    /// vertex's influences has weight 0.
     pub fn probe(&self) -> (usize, [(Vec3, f32); 2]) {
         let v = self.rig.ring_start(self.probe_ring);
         let p = self.rig.mesh.positions[v];
         let (j, w) = (self.skin.joints()[v], self.skin.weights()[v]);
-        let k = |i: usize| (self.palette[j[i] as usize].transform_point3(p), w[i]);
+        let k = |joint: u16| {
+            let weight = j.iter().zip(w).filter(|(&i, _)| i == joint).map(|(_, w)| w).sum();
+            (self.palette[usize::from(joint)].transform_point3(p), weight)
+        };
         (v, [k(0), k(1)])
     }
 
@@ -684,19 +694,23 @@ impl CylinderFigure {
     /// grey text and 0.8 rem subscripts do not read. Returns the note's sentence.
     fn draw_probe(&self, frame: &mut Frame) -> String {
         let (v, [(k1, w1), (k2, w2)]) = self.probe();
-        let names = self.rig.skeleton.names();
-        let j = self.skin.joints()[v];
         let (lbs, dqs) = (self.lbs.positions[v], self.dqs.positions[v]);
         let o = LBS_OFFSET;
-        if w2 > 0.0 {
+        let both = w1 >= PROBE_MIN_WEIGHT && w2 >= PROBE_MIN_WEIGHT;
+        if both {
             frame.stroke(
                 &[o + k1, o + k2],
                 palette::DARK,
                 crate::draw::StrokeStyle::dashed(2.0, 0.04, 0.03),
             );
-            frame.marker_on_top(o + k2, 10.0, palette::GREY);
         }
-        frame.marker_on_top(o + k1, 10.0, palette::GREY);
+        // A joint with no weight (to the note's three decimals) moves the vertex nowhere: its dot
+        // and name are left out.
+        let named = [(k2, w2, k1, "K₂p"), (k1, w1, k2, "K₁p")];
+        let named: Vec<_> = named.into_iter().filter(|n| n.1 >= PROBE_MIN_WEIGHT).collect();
+        for &(k, ..) in &named {
+            frame.marker_on_top(o + k, 10.0, palette::GREY);
+        }
         // LBS's orange point lies on the orange tube: a dark ring sets it off. DQS's point is
         // wider than that ring, which goes over it: where the two lie a few pixels apart (a small
         // bend) the teal still rings the dark.
@@ -706,7 +720,8 @@ impl CylinderFigure {
         frame.marker_on_top(DQS_OFFSET + dqs, 12.0, palette::TEAL);
         // The four dots close up, seen from the front (across the bend's plane), with the whole
         // tube's depth: in the main view LBS's dot lies a few pixels from DQS's.
-        let (lo, hi) = [k1, k2, lbs].into_iter().fold((dqs, dqs), |(a, b), p| (a.min(p), b.max(p)));
+        let dots = named.iter().map(|n| n.0).chain([lbs]);
+        let (lo, hi) = dots.fold((dqs, dqs), |(a, b), p| (a.min(p), b.max(p)));
         let pad = Vec3::new(0.08, 0.08, 0.3);
         frame.inset(
             crate::draw::inset::InsetView::Front,
@@ -720,9 +735,7 @@ impl CylinderFigure {
         // teal or orange dot would seem to name that one.
         let view = view_of(self.view);
         let at = |p: Vec3| view.and_then(|(m, size)| project_to_canvas(m, size, o + p));
-        let named = [(k2, k1, "K₂p"), (k1, k2, "K₁p")];
-        let named = if w2 > 0.0 { &named[..] } else { &named[1..] };
-        for &(k, other, text) in named {
+        for &(k, _, other, text) in &named {
             let toward = at(k).zip(at(other)).map_or(Vec2::X, |(a, b)| a - b);
             let mut candidates =
                 Label::around_dot(o + k, 10.0, toward, text, palette::DARK, 1, 6, 8.0);
@@ -732,7 +745,7 @@ impl CylinderFigure {
             // Off the canvas (NaN), a dot is left out of the comparison.
             let px = |p: Vec3| at(p).unwrap_or(Vec2::NAN);
             let own = px(k);
-            let others = [if w2 > 0.0 { px(other) } else { Vec2::NAN }, px(lbs), px(dqs)];
+            let others = [if both { px(other) } else { Vec2::NAN }, px(lbs), px(dqs)];
             frame.first_clear_label_by(view, 2.0, candidates, |rect| {
                 let gap = |d: Vec2| rect.nearest(d).distance(d);
                 others
@@ -743,24 +756,19 @@ impl CylinderFigure {
         let elbow = Vec3::from(self.model[1].translation);
         let rest = self.rig.mesh.positions[v].distance(self.rig.segments[1].0);
         // With one joint at weight 1 there is no chord (none is drawn): both methods move the
-        // vertex rigidly with that joint, to K₁p.
-        let place = if w2 > 0.0 {
-            "LBS puts it on the dashed chord between K₁p and K₂p"
-        } else {
-            "one joint has it all, so LBS and DQS both put it at K₁p"
+        // vertex rigidly with that joint, to its K p.
+        let place = match (w1 >= PROBE_MIN_WEIGHT, w2 >= PROBE_MIN_WEIGHT) {
+            (true, true) => "on the dashed chord between K₁p and K₂p",
+            (true, false) => "at K₁p, as DQS (the shoulder has it all)",
+            _ => "at K₂p, as DQS (the elbow has it all)",
         };
+        // Fixed decimals: a weight or distance that is zero up to float noise reads 0.000, not
+        // 1.7e-12.
         format!(
-            "The followed vertex (ring {}, weights {} {} and {} {}): {place}, {} m from the elbow joint, DQS {} m (as in the bind pose, {} m).",
+            "Followed vertex (ring {}, shoulder {w1:.3}, elbow {w2:.3}): LBS {place}, {:.3} m from the elbow joint; DQS {:.3} m (bind pose {rest:.3} m).",
             self.probe_ring,
-            names[j[0] as usize],
-            // Fixed decimals: a weight or distance that is zero up to float noise reads 0.000,
-            // not 1.7e-12.
-            format!("{w1:.3}"),
-            names[j[1] as usize],
-            format!("{w2:.3}"),
-            format!("{:.3}", lbs.distance(elbow)),
-            format!("{:.3}", dqs.distance(elbow)),
-            format!("{rest:.3}")
+            lbs.distance(elbow),
+            dqs.distance(elbow),
         )
     }
 
