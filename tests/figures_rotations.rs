@@ -583,10 +583,11 @@ fn the_key_circle_holds_both_arcs_and_the_steps_of_nlerp_and_slerp() {
     let nlerp_dots: Vec<Vec3> = frame
         .markers
         .iter()
-        .filter(|m| m.size_px == 7.0)
+        .filter(|m| m.size_px == 7.0 && m.color[..3] == inbetween::figures::palette::Y_AXIS.to_array())
         .map(|m| Vec3::from(m.center))
         .collect();
-    assert_eq!(nlerp_dots.len(), 9);
+    // Steps 1 to 7 of 8: the first and last are the keys' own dots.
+    assert_eq!(nlerp_dots.len(), 7);
     for p in &nlerp_dots {
         assert!(((*p - CIRCLE_CENTRE).length() - CIRCLE_RADIUS).abs() < 1e-4);
     }
@@ -604,7 +605,7 @@ fn the_key_circle_holds_both_arcs_and_the_steps_of_nlerp_and_slerp() {
         }
     }
     let first = nlerp_dots[0].distance(nlerp_dots[1]);
-    let middle = nlerp_dots[4].distance(nlerp_dots[5]);
+    let middle = nlerp_dots[3].distance(nlerp_dots[4]);
     assert!(
         middle > 1.05 * first,
         "nlerp is faster in the middle: {first} vs {middle}"
@@ -794,7 +795,7 @@ fn circle_labels_stay_beside_their_anchors_and_off_the_dots() {
             let keys: Vec<Vec2> = f
                 .markers
                 .iter()
-                .filter(|m| m.size_px == 12.0)
+                .filter(|m| m.size_px == inbetween::figures::rotations::KEY_DOT_PX)
                 .map(|m| on(Vec3::from(m.center)))
                 .collect();
             assert_eq!(keys.len(), 4);
@@ -861,7 +862,7 @@ fn with_a_panicking_slerp_the_key_circle_names_the_dots_it_draws() {
     let keys: Vec<Vec3> = frame
         .markers
         .iter()
-        .filter(|m| m.size_px == 12.0)
+        .filter(|m| m.size_px == inbetween::figures::rotations::KEY_DOT_PX)
         .map(|m| Vec3::from(m.center))
         .collect();
     assert_eq!(keys.len(), 4);

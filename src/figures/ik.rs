@@ -839,7 +839,8 @@ impl IkFigure {
     /// dots, lines and labels on the canvas the figure was last drawn on, else in the first such
     /// place around the point, nearest the preferred direction first (rings in metres, then
     /// rings on screen), and round points along the segment; a place [`LABEL_GAP_PX`] off every
-    /// dot and line first, else one that only does not cover them. The chains, side d, the circle of
+    /// dot and line first, else one that only does not cover them; a target's name in a place
+    /// nearer its own target than any other first. The chains, side d, the circle of
     /// middle joints, the pole's line, the hinges' arcs and the grey square of their plane sweep
     /// round the roots and the targets as the target and the pole move. Where no place is clear it keeps the preferred
     /// one. The anchor stays put (at the preferred place, or, once the figure has a view, at
@@ -870,6 +871,9 @@ impl IkFigure {
         // a label moved off it starts on the segment; its preferred place is an offset.
         if label.line.is_some() {
             placed.anchor = label.at;
+            // The preferred anchor stays among the points the camera fits, as in the first
+            // frame, drawn without a view: the fit does not move once the figure has one.
+            frame.keep_in_view.push(first_at);
         }
         let Some(home) = project_to_canvas(view_proj, size, placed.anchor) else {
             frame.labels.push(placed);
@@ -973,25 +977,45 @@ impl IkFigure {
                     })
                 })
         };
-        let g = LABEL_GAP_PX;
-        let clear = [
-            (near, g, true),
-            (near, g, false),
-            (near, 0.0, true),
-            (near, 0.0, false),
-            (around, g, true),
-            (around, g, false),
-            (around, 0.0, true),
-            (around, 0.0, false),
-        ]
-        .into_iter()
-        .find_map(|(list, margin_px, strict)| {
-            list.iter().find(|c| {
-                frame.label_is_clear_by(view_proj, size, c, margin_px)
-                    && !(strict && leader_crosses(c))
+        // A target's name (the only label that keeps to its own side of a point it does not
+        // measure) sits nearer its own target's dot than any other's: a name nearer a
+        // neighbour's target reads as naming that one.
+        let target_name = label.own_side && label.line.is_none();
+        let own = project_to_canvas(view_proj, size, label.at);
+        let dots: Vec<Vec2> = self
+            .shown_solvers()
+            .filter(|_| target_name)
+            .filter_map(|k| project_to_canvas(view_proj, size, self.target + ROOTS_X[k] * Vec3::X))
+            .collect();
+        let nearest_own = |c: &crate::draw::Label| {
+            let gap = |r: crate::draw::layout::Rect, p: Vec2| r.nearest(p).distance(p);
+            c.first_place(view_proj, size).is_some_and(|r| {
+                own.is_none_or(|o| dots.iter().all(|&p| p == o || gap(r, p) > gap(r, o)))
             })
-        });
-        if let Some(candidate) = clear {
+        };
+        let g = LABEL_GAP_PX;
+        // A target's name nearer another target only where no place nearer its own is clear.
+        let first_clear = |nearest: bool| {
+            [
+                (near, g, true),
+                (near, g, false),
+                (near, 0.0, true),
+                (near, 0.0, false),
+                (around, g, true),
+                (around, g, false),
+                (around, 0.0, true),
+                (around, 0.0, false),
+            ]
+            .into_iter()
+            .find_map(|(list, margin_px, strict)| {
+                list.iter().find(|c| {
+                    frame.label_is_clear_by(view_proj, size, c, margin_px)
+                        && !(strict && leader_crosses(c))
+                        && (!nearest || nearest_own(c))
+                })
+            })
+        };
+        if let Some(candidate) = first_clear(true).or_else(|| first_clear(false)) {
             placed = candidate.clone();
         }
         frame.labels.push(placed);

@@ -504,38 +504,43 @@ impl Interpolation {
             (b, "b", palette::KEY),
             (-b, "−b", palette::KEY),
         ];
-        for (q, _, color) in keys {
-            frame.marker(to_world(q), KEY_DOT_PX, color);
-        }
         // lerp walks the chord at equal steps of t; nlerp pushes each step out onto the circle
         // (a ray from the centre); slerp walks the arc at equal angles.
         let end = at_angle(phi_used, CIRCLE_RADIUS);
         let start = at_angle(0.0, CIRCLE_RADIUS);
+        let on_chord = start.lerp(end, t);
+        // The dots at t: at t = 0 (and 1) lerp's and nlerp's lie on a key's (all three methods
+        // start at a), so they nest, largest first: nlerp's under the key's under lerp's, each
+        // ring of colour showing round the next.
+        frame.marker(
+            CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS,
+            NLERP_NOW_PX,
+            nlerp_color,
+        );
+        for (q, _, color) in keys {
+            frame.marker(to_world(q), KEY_DOT_PX, color);
+        }
         frame.wide_line(start, end, palette::DARK, 1.5);
         const STEPS: usize = 8;
         let mut slerp_ticks = Vec::with_capacity(STEPS + 1);
         for k in 0..=STEPS {
             let s = k as f32 / STEPS as f32;
-            let on_chord = start.lerp(end, s);
-            let out =
-                CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS;
-            frame.wide_line(on_chord, out, nlerp_color, 1.5);
-            frame.marker(out, 7.0, nlerp_color);
+            let step = start.lerp(end, s);
+            let out = CIRCLE_CENTRE + (step - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS;
+            frame.wide_line(step, out, nlerp_color, 1.5);
+            // The first and last steps are the keys' dots.
+            if k % STEPS != 0 {
+                frame.marker(out, 7.0, nlerp_color);
+            }
             slerp_ticks.push(at_angle(phi_used * s, CIRCLE_RADIUS * SLERP_TICKS_OUT));
         }
         frame.ticks(&slerp_ticks, 10.0, slerp_color);
-        let on_chord = start.lerp(end, t);
-        frame.marker(on_chord, 9.0, palette::DARK);
-        frame.marker(
-            CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS,
-            14.0,
-            nlerp_color,
-        );
         frame.marker(
             at_angle(phi_used * t, CIRCLE_RADIUS * SLERP_TICKS_OUT),
             14.0,
             slerp_color,
         );
+        frame.marker(on_chord, LERP_NOW_PX, palette::DARK);
         // The keys' names, once every dot and line is down: each at the first place round its
         // dot, outward first (then further out), on the last frame's view, that keeps
         // KEY_NAME_CLEAR_PX off every dot, line and name placed before it (near t = 0 or 1,
@@ -662,8 +667,12 @@ impl Interpolation {
     }
 }
 
-/// Figure 2's dots of a, −a, b and −b, CSS pixels across.
-const KEY_DOT_PX: f32 = 12.0;
+/// Figure 2's dots, CSS pixels across: a, −a, b and −b; nlerp's and lerp's at t, which nest
+/// round a key's at t = 0 and 1 with a ring of colour showing round each (a dot's outline takes
+/// 1.75 px of its radius).
+pub const KEY_DOT_PX: f32 = 15.0;
+pub const NLERP_NOW_PX: f32 = 22.0;
+pub const LERP_NOW_PX: f32 = 7.0;
 /// How far Figure 2's key names keep from its arcs' labels, CSS pixels: a word's gap and more.
 pub const ARC_LABEL_GAP_PX: f32 = 14.0;
 /// Figure 2: the names a, −a, b and −b keep this far off every dot and line (CSS pixels).

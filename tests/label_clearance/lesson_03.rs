@@ -173,7 +173,7 @@ fn lesson_03_circle_key_names_keep_off_the_dots_when_orbited() {
     // −b are shown where the figure put them (so none sits on another) and keep a few pixels
     // off every dot and line. As on the page, the figure places them for the view of the frame
     // before.
-    use inbetween::figures::rotations::Interpolation;
+    use inbetween::figures::rotations::{Interpolation, KEY_DOT_PX};
     const NAMES: [&str; 4] = ["a", "−a", "b", "−b"];
     let mut failures = Vec::new();
     for (yaw, pitch) in [(0.0, 0.0), (-1.216, 0.304), (1.216, 0.304), (-0.6, 0.6)] {
@@ -216,13 +216,13 @@ fn lesson_03_circle_key_names_keep_off_the_dots_when_orbited() {
                     let boxes = label_boxes(&frame, &camera, size);
                     // Each name lies nearer its own key's dot than any other key's: a and −b
                     // are 10° apart, and a name beside the other's dot reads as its. The keys'
-                    // dots are the figure's first four markers, in the order of NAMES.
+                    // dots are the figure's markers after nlerp's dot at t, in the order of NAMES.
                     let view_proj = camera.projection(size.x / size.y) * camera.view();
                     let dots: Vec<(String, Vec2)> = NAMES
                         .iter()
-                        .zip(&frame.markers)
+                        .zip(&frame.markers[1..])
                         .filter_map(|(n, m)| {
-                            assert_eq!(m.size_px, 12.0, "{name}: {n}'s dot");
+                            assert_eq!(m.size_px, KEY_DOT_PX, "{name}: {n}'s dot");
                             let c = project_to_canvas(view_proj, size, Vec3::from(m.center))?;
                             Some((n.to_string(), c))
                         })
@@ -251,6 +251,82 @@ fn lesson_03_circle_key_names_keep_off_the_dots_when_orbited() {
         }
     }
     assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_03_circle_dots_at_a_key_nest_so_each_shows() {
+    // Figure 2 at its page camera (lessons/03-rotations/lesson.js), both canvases, at the
+    // default keys on either arc across the timeline, and at 170° and −170° about x (a and −b
+    // 10° apart) at t = 0 and 1: where two dots of different colours overlap on the canvas (the
+    // keys' and the dots of lerp, nlerp and slerp at t; at t = 0 lerp's and nlerp's lie on a's),
+    // either the later one lies inside the earlier with a ring of at least 1.5 px of the
+    // earlier's colour round it (a dot's outline, 0.75 px dark and 1 px white, takes 1.75 px of
+    // its radius), or it leaves the earlier's centre and half its radius uncovered: each dot
+    // shows, none hides another. nlerp's steps (7 px, green) crowd the keys at the ends by
+    // design and are left out.
+    use inbetween::draw::MARKER_DOT;
+    use inbetween::figures::{palette, rotations::Interpolation};
+    let mut failures = Vec::new();
+    let mut nested = 0;
+    let view = [0.0, 1.3, 0.0, 5.0, 0.0, 0.0];
+    for (across, long, times) in [
+        (false, false, &[0.0, 0.25, 0.5, 0.75, 1.0][..]),
+        (false, true, &[0.0, 0.25, 0.5, 0.75, 1.0][..]),
+        (true, false, &[0.0, 1.0][..]),
+    ] {
+        for &t in times {
+            for size in CANVASES {
+                let mut scene = Interpolation::new();
+                if across {
+                    let (start, end) = (Vec3::new(170.0, 0.0, 0.0), Vec3::new(-170.0, 0.0, 0.0));
+                    scene.set_keys_euler_deg(start, end).unwrap();
+                }
+                scene.set_long_arc(long);
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw_circle(out, t).unwrap();
+                    },
+                    |fig, cam, px| fig.set_circle_view(cam, px.x, px.y),
+                );
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let dots: Vec<(Vec2, f32, Vec3)> = (frame.markers.iter())
+                    .filter(|m| m.shape == MARKER_DOT)
+                    .map(|m| (m, Vec3::from_slice(&m.color[..3])))
+                    .filter(|(m, c)| !(m.size_px == 7.0 && *c == palette::Y_AXIS))
+                    .map(|(m, c)| {
+                        let at = project_to_canvas(view_proj, size, Vec3::from(m.center));
+                        (at.unwrap(), 0.5 * m.size_px.abs(), c)
+                    })
+                    .collect();
+                for (i, &(p, r, c)) in dots.iter().enumerate() {
+                    for &(q, s, d) in &dots[i + 1..] {
+                        let apart = p.distance(q);
+                        if c == d || apart >= r + s {
+                            continue;
+                        }
+                        let ring = r - 1.75 - (apart + s);
+                        if ring < 1.5 && apart < s + 0.5 * r {
+                            failures.push(format!(
+                                "03 circle, across {across}, long {long}, t {t} on {size}: a dot \
+                                 {} px across at {q} over one {} px across at {p} leaves {ring} \
+                                 px of it",
+                                2.0 * s,
+                                2.0 * r
+                            ));
+                        } else if ring >= 1.5 {
+                            nested += 1;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+    // At t = 0 and 1 every case nests dots at a key.
+    assert!(nested >= 16, "only {nested} nested dots");
 }
 
 #[test]
