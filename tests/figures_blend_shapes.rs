@@ -1003,7 +1003,7 @@ fn the_left_head_keeps_its_size_on_screen_through_the_try_this() {
     for size in [glam::Vec2::new(760.0, 420.0), glam::Vec2::new(650.0, 420.0)] {
         let mut f = FaceFigure::new();
         let (first, left) = camera_for(&mut f, 0.0, size);
-        let mut check = |f: &mut FaceFigure, step: &str| {
+        let check = |f: &mut FaceFigure, step: &str| {
             for i in 0..8 {
                 let (camera, at) = camera_for(f, LOOP_SECONDS * i as f32 / 8.0, size);
                 assert_eq!(camera, first, "on {size}, {step}: the camera moved");
