@@ -168,7 +168,7 @@ test('lesson 11 at 800 x 600 and 1600 x 1000', async (t) => {
   }
 });
 
-test('lesson 11: explode now on a paused figure shows its sparks at once', async () => {
+test('lesson 11: explode now on a paused figure shows its sparks at once, and counts after a move of one notch', async () => {
   // A paused figure shows the sparks of a press at once, not only once played (a replay that
   // stopped short of the press would hide them until then).
   const context = await launch('webgl2');
@@ -177,11 +177,24 @@ test('lesson 11: explode now on a paused figure shows its sparks at once', async
     const fig = '#fig-emitters';
     await page.locator(fig).scrollIntoViewIfNeeded();
     await scrubTo(page, fig, 300);
-    const alive = async () => Number(/^(\d+) particles alive/.exec(await page.locator('#emitters-note').textContent())?.[1]);
+    const text = () => page.locator('#emitters-note').textContent();
+    const alive = async () => Number(/^(\d+) particles alive/.exec(await text())?.[1]);
     const before = await alive();
-    await page.locator(`${fig} .lil-controller`, { hasText: 'explode now' }).locator('button').click();
+    const explode = page.locator(`${fig} .lil-controller`, { hasText: 'explode now' }).locator('button');
+    await explode.click();
     await frames(page, 4);
-    assert.equal(await alive(), before + 400, await page.locator('#emitters-note').textContent());
+    assert.equal(await alive(), before + 400, await text());
+    assert.match(await text(), /Explosions set off by hand: 1\./);
+    // The timeline moved one notch with the keyboard (6 ms of its 6 s, inside the figure's
+    // step of 1/60 s), then "explode now" at once: a press of its own, not "did nothing".
+    await page.locator(`${fig} .scrub`).focus();
+    await page.keyboard.press('ArrowRight');
+    await explode.click();
+    await frames(page, 4);
+    assert.equal(await page.locator(`${fig} .clock`).textContent(), '1.81 s');
+    assert.match(await text(), /Explosions set off by hand: 2\./);
+    assert.doesNotMatch(await text(), /did nothing/);
+    assert.equal(await alive(), before + 800, await text());
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
