@@ -1130,6 +1130,35 @@ fn the_impact_uses_the_students_impulse_and_says_what_is_not_done() {
     assert!(reference_note.contains("(−e times it, e = 0.500)"), "{reference_note}");
 }
 
+#[test]
+fn the_omega_arrows_are_tied_to_the_centre_whatever_the_signs_of_omega() {
+    use inbetween::figures::rigid_body::{ties_omega_arrows, OMEGA_SIDE_M};
+    // At the default drop: the grey line runs from the centre at the hit to the start of the ω
+    // arrows, OMEGA_SIDE_M to the side.
+    let f = dropped(20.0, 0.5, 1.0);
+    let hit = *f.impact_details().expect("hit");
+    let mut frame = Frame::default();
+    f.draw(&mut frame);
+    let tie = frame
+        .segments_of(palette::GREY)
+        .find(|(a, b)| *a == hit.centre || *b == hit.centre);
+    let (a, b) = tie.expect("a grey line from the centre at the hit");
+    assert!((a.distance(b) - OMEGA_SIDE_M).abs() < 1e-4);
+    // A level drop gets no spin: no ω arrow, nothing to tie.
+    let level = dropped(0.0, 0.5, 1.0);
+    let centre = level.impact_details().expect("hit").centre;
+    let mut frame = Frame::default();
+    level.draw(&mut frame);
+    assert!(!frame.segments_of(palette::GREY).any(|(a, b)| a == centre || b == centre));
+    // The drop's ω after always has a positive z (the tilt is about −z), so the signs are tried
+    // on the rule itself: ω before zero and every component of ω after negative still ties the
+    // arrow (the two ω's component-wise largest values are zero there).
+    assert!(ties_omega_arrows(Vec3::ZERO, Vec3::new(-3.0, -1.0, -2.0)));
+    assert!(ties_omega_arrows(Vec3::new(-3.0, -1.0, -2.0), Vec3::ZERO));
+    assert!(!ties_omega_arrows(Vec3::ZERO, Vec3::ZERO));
+    assert!(!ties_omega_arrows(Vec3::ZERO, Vec3::splat(1e-6)));
+}
+
 /// The times (s) at which the held-L racket's middle axis turns past horizontal, over 12 s.
 fn flip_times(spin: f32, wobble: f32) -> (Vec<f32>, RacketFigure) {
     let mut f = RacketFigure::new();
