@@ -31,7 +31,7 @@ async function fastestDashedSlowestDotted(page, plot, searches) {
   }
 }
 
-test('lesson 15: the density figure\'s particle is dragged with the mouse', async () => {
+test('lesson 15: the density figure\'s particle is dragged with the mouse; its note lists the exercises not done a line each', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgl2`, { width: 1280, height: 900 });
@@ -44,7 +44,16 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse', asyn
     });
     const canvas = page.locator('#fig-density .stage canvas');
     await canvas.scrollIntoViewIfNeeded();
+    // With "use my exercise" on the stubs, the note reads as a list: the particle's numbers,
+    // then a line for each exercise not done (the page keeps the note's line breaks).
+    await setControl(page, '#fig-density', 'use my exercise', true);
     await frames(page, 4);
+    const lines = (await page.locator('#density-note').innerText()).split('\n');
+    assert.equal(lines.length, 4, lines.join(' | '));
+    for (const [k, exercise] of ['15.2 sph_density', '15.3 pressure_force', '15.4 pbf_lambda'].entries()) {
+      assert.ok(lines[k + 1].startsWith(`Not done yet: exercise ${exercise} (`), lines.join(' | '));
+    }
+    await page.locator('#fig-density').screenshot({ path: 'tests/screenshots/15-fluids-density-not-done-webgl2.png' });
     const box = await canvas.boundingBox();
     // Find the particle: hovering it marks the canvas (`over-target`); it starts below the middle.
     let grab = null;
@@ -65,6 +74,8 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse', asyn
     assert.ok(Number(after[0]) > Number(before[0]) && Number(after[1]) > Number(before[1]) + 0.2, `${before} -> ${after}`);
     const note = await page.locator('#density-note').textContent();
     assert.match(note, /from 0 neighbours/, note);
+    // Out of the water, 15.3's sum of pairs has none to add.
+    assert.match(note, /\nExercise 15\.3 pressure_force is not called: the dragged particle has no neighbours\.\n/, note);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
