@@ -326,6 +326,41 @@ fn the_density_figure_checks_the_students_exercises() {
 }
 
 #[test]
+fn the_density_note_gives_each_exercise_a_line_of_its_own() {
+    // The stubs of a plain build: 15.2 to 15.4 not done. The note's first line is the probe's
+    // numbers, then one line an exercise (the page keeps the note's line breaks), not one
+    // paragraph that runs the three together.
+    use inbetween::exercises::run::{direct, Failure};
+    let mut fig = DensityFigure::new();
+    fig.set_runner(|name, args| match name {
+        "sph_density" | "pressure_force" | "pbf_lambda" => Err(Failure::NotDone),
+        _ => direct(name, args),
+    });
+    fig.set_use_exercise(true);
+    let note = fig.draw(&mut Frame::default());
+    let lines: Vec<&str> = note.lines().collect();
+    assert_eq!(lines.len(), 4, "{note}");
+    assert!(lines[0].starts_with("ρ = ") && !lines[0].contains("Not done"), "{note}");
+    for (line, exercise) in lines[1..].iter().zip(["15.2 sph_density", "15.3 pressure_force", "15.4 pbf_lambda"]) {
+        assert!(line.starts_with(&format!("Not done yet: exercise {exercise} (")), "{note}");
+        assert!(line.ends_with("The figure uses the reference."), "{note}");
+    }
+    // Out of the water, 15.3's sum has no pairs: the note says it was not called (a sum of no
+    // pairs is zero whatever the exercise does, and would "match the reference").
+    fig.set_probe(0.8, 0.9).unwrap();
+    assert_eq!(fig.probe().1, 0);
+    let note = fig.draw(&mut Frame::default());
+    assert_eq!(
+        note.lines().nth(2),
+        Some("Exercise 15.3 pressure_force is not called: the dragged particle has no neighbours."),
+        "{note}"
+    );
+    // Off: the probe's line alone.
+    fig.set_use_exercise(false);
+    assert_eq!(fig.draw(&mut Frame::default()).lines().count(), 1);
+}
+
+#[test]
 fn the_kernel_figure_draws_the_students_poly6_and_says_where_it_differs() {
     use inbetween::exercises::run::direct;
     let mut fig = KernelsFigure::new();

@@ -880,6 +880,44 @@ fn emitter_sprites_stay_visible_until_the_second_half_of_their_life() {
 }
 
 #[test]
+fn presses_at_two_moments_of_one_step_both_explode_and_replay() {
+    // The page's timeline moves 6 ms a notch (1,000 notches over 6 s), a step is 1/60 s: a
+    // press after a move of one notch lands in the step of the press before. It is a press
+    // of its own (its own explosion at that step), not "an explosion was set off at this
+    // moment already".
+    let eye = Vec3::new(0.0, 2.0, 6.0);
+    let (t1, t2) = (1.5, 1.506);
+    assert_eq!(steps_to(t1).unwrap(), steps_to(t2).unwrap(), "one step");
+    let mut live = EmitterFigure::new();
+    live.draw(&mut Frame::default(), eye, Vec3::ZERO, t1).unwrap();
+    live.explode();
+    live.draw(&mut Frame::default(), eye, Vec3::ZERO, t2).unwrap();
+    live.explode();
+    let note = live
+        .draw(&mut Frame::default(), eye, Vec3::ZERO, t2)
+        .unwrap();
+    assert!(
+        note.contains("set off by hand: 2.") && !note.contains("did nothing"),
+        "{note}"
+    );
+    assert_eq!(from_emitter(&live, 1).0, 800, "two explosions of 400");
+    // Played on, and replayed from the start: the same particles.
+    let mut f1 = Frame::default();
+    live.draw(&mut f1, eye, Vec3::ZERO, 2.0).unwrap();
+    live.draw(&mut Frame::default(), eye, Vec3::ZERO, 0.5)
+        .unwrap();
+    let mut f2 = Frame::default();
+    live.draw(&mut f2, eye, Vec3::ZERO, 2.0).unwrap();
+    assert_eq!(from_emitter(&live, 1).0, 800);
+    assert_eq!(f1.fingerprint(), f2.fingerprint(), "a replay shows the same");
+    // A replay that stops at their step spawns both.
+    live.draw(&mut Frame::default(), eye, Vec3::ZERO, 0.5)
+        .unwrap();
+    live.draw(&mut Frame::default(), eye, Vec3::ZERO, t1).unwrap();
+    assert_eq!(from_emitter(&live, 1).0, 800);
+}
+
+#[test]
 fn a_second_press_at_the_same_moment_says_why_it_did_nothing() {
     // "Explode now" twice on a paused figure: the note says why the second press did nothing,
     // not only "Explosions set off by hand: 1.".

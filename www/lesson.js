@@ -769,8 +769,10 @@ export class Plot {
         y: log.includes('y') ? {
           distr: 3,
           log: 10,
+          // No data yet (a sweep just started, a run at its still first sample): the decade 1
+          // to 10, as the x axis, not a range of 0 to 0 without a number.
           range: (u, lo, hi) => {
-            const r = window.uPlot.rangeLog(lo, hi, 10, true);
+            const r = window.uPlot.rangeLog(lo || 1, hi || 10, 10, true);
             element.dataset.yRange = r.join(' ');
             return r;
           },

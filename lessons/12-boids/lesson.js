@@ -132,8 +132,10 @@ if (flockViewer) {
       'slope 1: t ∝ N', 'slope 2: t ∝ N²'],
     colors: [cssVar('--z-axis'), cssVar('--z-axis'), cssVar('--z-axis'), cssVar('--x-axis'), cssVar('--x-axis'),
       cssVar('--x-axis'), cssVar('--grey'), cssVar('--dark')],
-    widths: [2.5, 1, 1, 2.5, 1, 1, 1.5, 1.5],
-    dashes: [null, [2, 3], [2, 3], null, [2, 3], [2, 3], [8, 5], [8, 5]],
+    // Each search's fastest timings dashed and its slowest dotted, so that the legend tells
+    // them apart; the slope guides' dashes are longer.
+    widths: [2.5, 1.5, 2, 2.5, 1.5, 2, 1.5, 1.5],
+    dashes: [null, [5, 3], [1.5, 3], null, [5, 3], [1.5, 3], [10, 5], [10, 5]],
     log: 'xy',
   });
   const status = document.getElementById('flock-sweep');

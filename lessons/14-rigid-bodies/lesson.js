@@ -13,7 +13,8 @@ const DARK = cssVar('--dark');
 /**
  * The common wiring of a figure: its panel, its timeline, its plots (each `{ id, options, cols }`:
  * `cols` picks the sample columns it shows, the first being time; `from0` starts its y axis at 0,
- * for a quantity that is never negative), `apply` run on every change
+ * for a quantity that is never negative; on a log y axis, `options.log`, a sample of 0 is a gap),
+ * `apply` run on every change
  * (through `guarded`, so a rejected value shows in the note and changes nothing), and the frame
  * loop that draws the scene at the timeline's time. A `live` scene (one a button can push) plots
  * what it has run so far, refreshed ten times a second, instead of the whole run.
@@ -34,7 +35,9 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
     // A live plot's x axis spans the whole timeline from the start.
     if (live) spanTimeline(all, timeline.duration);
     for (const { plot, cols, from0, options } of shown) {
-      const data = cols.map((c) => all[c]);
+      // A log axis has no place for a zero (a run's still first sample): a gap there.
+      const positive = options.log?.includes('y');
+      const data = cols.map((c, k) => (positive && k > 0 ? all[c].map((v) => (v > 0 ? v : null)) : all[c]));
       // A quantity that is never negative: its axis starts at 0 instead of centring a flat start.
       if (from0) {
         const hi = data.slice(1).flat().reduce((m, v) => (Number.isFinite(v) ? Math.max(m, v) : m), 0);
@@ -200,10 +203,12 @@ await wire('#fig-stack', {
   live: true,
   plots: [
     {
-      id: 'stack-plot', cols: [0, 1], from0: true,
+      // Logarithmic: a stack at rest keeps a few µJ (the passes' leftovers, which fall as the
+      // passes grow), a push gives joules; on a linear axis either one is a flat line.
+      id: 'stack-plot', cols: [0, 1],
       options: {
         title: 'Total kinetic energy', xLabel: 'time (s)', yLabel: 'energy (J)',
-        series: ['energy'], colors: [ORANGE], minSpan: 0.1,
+        series: ['energy'], colors: [ORANGE], log: 'y',
       },
     },
     {

@@ -199,8 +199,9 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       series: ['CPU grid (median)', 'CPU grid fastest', 'CPU grid slowest', 'all pairs (median)', 'all pairs fastest',
         'all pairs slowest', 'slope 1: t ∝ N', 'slope 2: t ∝ N²', 'GPU grid (median)', 'GPU grid fastest', 'GPU grid slowest'].slice(0, shown),
       colors: [BLUE, BLUE, BLUE, RED, RED, RED, GREY, DARK, TEAL, TEAL, TEAL].slice(0, shown),
-      widths: [2.5, 1, 1, 2.5, 1, 1, 1.5, 1.5, 2.5, 1, 1].slice(0, shown),
-      dashes: [null, [2, 3], [2, 3], null, [2, 3], [2, 3], [8, 5], [8, 5], null, [2, 3], [2, 3]].slice(0, shown),
+      // As lesson 12's timing plot: fastest dashed, slowest dotted, the slope guides' dashes longer.
+      widths: [2.5, 1.5, 2, 2.5, 1.5, 2, 1.5, 1.5, 2.5, 1.5, 2].slice(0, shown),
+      dashes: [null, [5, 3], [1.5, 3], null, [5, 3], [1.5, 3], [10, 5], [10, 5], null, [5, 3], [1.5, 3]].slice(0, shown),
       log: 'xy',
     });
     const status = document.getElementById('splash-sweep');

@@ -463,6 +463,12 @@ impl DensityFigure {
         }
         match failed {
             Some(e) => notes.push(failure_note("exercise 15.3 pressure_force", FILE, &e)),
+            // A sum of no pairs is zero whatever the exercise does: nothing to compare.
+            None if nbrs.is_empty() => notes.push(
+                "Exercise 15.3 pressure_force is not called: the dragged particle has no \
+                 neighbours."
+                    .into(),
+            ),
             None => {
                 let reference = r.force.truncate();
                 let tol = 1e-4 * (1.0 + reference.length());
@@ -485,7 +491,8 @@ impl DensityFigure {
                 }
             }
         }
-        self.exercise_note = notes.join(" ");
+        // One line an exercise (the page keeps the note's line breaks).
+        self.exercise_note = notes.join("\n");
     }
 
     /// The probe's density, kg/m² (2D), and its neighbours' count.
@@ -663,7 +670,7 @@ impl DensityFigure {
             format_number(1000.0 * s.correction.length()),
         );
         if self.use_exercise {
-            note.push(' ');
+            note.push('\n');
             note.push_str(&self.exercise_note);
         }
         note

@@ -88,13 +88,17 @@ pub struct EmitterFigure {
     /// The lifetime slider's value, seconds (the emitters get at most
     /// [`EmitterFigure::lifetime_sec`]).
     lifetime_slider_sec: f32,
-    /// Steps at which the reader pressed "explode" (replayed with the rest), and whether that
-    /// press has been spawned in the current run (a press spawns at once; the step it was
-    /// pressed before must not spawn it a second time, while a replay must).
-    bursts: Vec<(usize, bool)>,
-    /// The step of the latest press that set off nothing (one at a step already set one off,
-    /// or one past [`MAX_BURSTS`]): the note says why while the figure stays at that step.
-    ignored_press: Option<usize>,
+    /// The reader's presses of "explode" (replayed with the rest): the step each spawns at, the
+    /// timeline's time it was pressed at (s), and whether it has been spawned in the current run
+    /// (a press spawns at once; the step it was pressed before must not spawn it a second time,
+    /// while a replay must). Two moments of the timeline within one step (its scrub moves
+    /// 6 ms a notch, a step is 1/60 s) are two presses, spawned at the same step.
+    bursts: Vec<(usize, f32, bool)>,
+    /// The timeline's time of the latest press that set off nothing (one at a moment already
+    /// set one off, or one past [`MAX_BURSTS`]): the note says why while the timeline stays there.
+    ignored_press: Option<f32>,
+    /// The timeline's time of the last advance (s): where a press of "explode" belongs.
+    time_sec: f32,
     /// The explosions of this run still holding slots: (step, particles spawned).
     spent: Vec<(usize, usize)>,
     /// The latest explosion: (particles spawned, particles asked for).
@@ -157,6 +161,7 @@ impl EmitterFigure {
             lifetime_slider_sec: 2.5,
             bursts: Vec::with_capacity(MAX_BURSTS),
             ignored_press: None,
+            time_sec: 0.0,
             spent: Vec::with_capacity(MAX_BURSTS + 8),
             last_burst: None,
             steps_done: 0,
@@ -286,20 +291,10 @@ impl EmitterFigure {
         n
     }
 
-    /// The explosions due at the start of step `k` (presses not spawned yet in this run, then
-    /// the automatic one), each with its particle count.
+    /// The explosions due at the start of step `k` (the presses not spawned yet in this run,
+    /// together, then the automatic one), each with its particle count.
     fn bursts_at(&mut self, k: usize) -> [usize; 2] {
-        let mut out = [0; 2];
-        let mut pressed = false;
-        for b in &mut self.bursts {
-            if b.0 == k && !b.1 {
-                b.1 = true;
-                pressed = true;
-            }
-        }
-        if pressed {
-            out[0] = self.next_burst(k);
-        }
+        let mut out = [self.pending_presses(k).unwrap_or(0), 0];
         if self.mode >= 1 && k.is_multiple_of(BURST_EVERY) {
             out[1] = self.next_burst(k);
         }
@@ -363,16 +358,17 @@ impl EmitterFigure {
         }
     }
 
-    /// Records a press of "explode now" at the current step and returns its particle count, or
-    /// `None` (remembered for the note) when this step has one already or the list is full.
+    /// Records a press of "explode now" at the timeline's time (spawning at the current step)
+    /// and returns its particle count, or `None` (remembered for the note) when that moment has
+    /// one already or the list is full.
     fn press(&mut self) -> Option<usize> {
-        let k = self.steps_done;
-        if self.bursts.len() < MAX_BURSTS && !self.bursts.iter().any(|b| b.0 == k) {
-            self.bursts.push((k, true));
+        let (k, t) = (self.steps_done, self.time_sec);
+        if self.bursts.len() < MAX_BURSTS && !self.bursts.iter().any(|b| b.1 == t) {
+            self.bursts.push((k, t, true));
             self.ignored_press = None;
             Some(self.next_burst(k))
         } else {
-            self.ignored_press = Some(k);
+            self.ignored_press = Some(t);
             None
         }
     }
@@ -383,15 +379,15 @@ impl EmitterFigure {
             0 => String::new(),
             b => format!(" Explosions set off by hand: {b}."),
         };
-        if self.ignored_press == Some(self.steps_done) {
+        if self.ignored_press == Some(self.time_sec) {
             note.push_str(&if self.bursts.len() >= MAX_BURSTS {
                 format!(
                     " The last press did nothing: the figure remembers at most {MAX_BURSTS} \
                      presses."
                 )
             } else {
-                " The last press did nothing: an explosion was set off at this moment already \
-                 (one per step); move the timeline a little, then press again."
+                " The last press did nothing: an explosion was set off at this moment already; \
+                 move the timeline a little, then press again."
                     .to_string()
             });
         }
@@ -404,7 +400,7 @@ impl EmitterFigure {
             e.carry = 0.0;
         }
         for b in &mut self.bursts {
-            b.1 = false;
+            b.2 = false;
         }
         self.spent.clear();
         self.last_burst = None;
@@ -480,11 +476,12 @@ impl EmitterFigure {
         if self.dirty || target < self.steps_done {
             self.reset();
         }
+        self.time_sec = time_sec;
         let n = target - self.steps_done;
         for _ in 0..n {
             self.step();
         }
-        if let Some(count) = self.press_at_end(target) {
+        if let Some(count) = self.pending_presses(target) {
             self.system.burst(&self.emitters, 1, count);
             // The press's sparks count at this step.
             if self.history.len() >= 3 {
@@ -495,18 +492,20 @@ impl EmitterFigure {
         Ok(n)
     }
 
-    /// A press at the step a run stops at belongs to it already (explode spawns at once); a
-    /// replay that ends there must spawn it too, or a paused figure would hide it until played.
-    /// Marks it spawned and returns its particle count, if there is such a press not spawned yet.
-    fn press_at_end(&mut self, target: usize) -> Option<usize> {
-        let mut pending = false;
-        for b in &mut self.bursts {
-            if b.0 == target && !b.1 {
-                b.1 = true;
-                pending = true;
+    /// The presses at step `k` not spawned yet in this run: marks them spawned and returns
+    /// their particles (each press an explosion of its own, [`EmitterFigure::next_burst`]), or
+    /// `None` when there are none. A press at the step a run stops at belongs to it already
+    /// (explode spawns at once): a replay that ends there spawns it too, or a paused figure would
+    /// hide it until played.
+    fn pending_presses(&mut self, k: usize) -> Option<usize> {
+        let mut total = None;
+        for i in 0..self.bursts.len() {
+            if self.bursts[i].0 == k && !self.bursts[i].2 {
+                self.bursts[i].2 = true;
+                *total.get_or_insert(0) += self.next_burst(k);
             }
         }
-        pending.then(|| self.next_burst(target))
+        total
     }
 
     /// GPU mode's [`EmitterFigure::explode`]: records the explosion the same way and hands it to
@@ -545,6 +544,7 @@ impl EmitterFigure {
             self.reset();
             return Ok((true, 0));
         }
+        self.time_sec = time_sec;
         self.history.clear(); // the GPU's particles never come back: no samples
         let n = target - self.steps_done;
         for _ in 0..n {
@@ -562,7 +562,7 @@ impl EmitterFigure {
             result?;
             self.steps_done += 1;
         }
-        if let Some(count) = self.press_at_end(target) {
+        if let Some(count) = self.pending_presses(target) {
             let (fade, surfaces) = (self.fade, &self.surfaces);
             gpu_colours(&mut self.emitters, fade, |e| step(e, surfaces, count, 0.0))?;
         }

@@ -731,6 +731,8 @@ pub const VELOCITY_SCALE: f32 = 0.1;
 pub const OMEGA_SCALE: f32 = 0.05;
 /// How far to the side of the centre on screen the drop figure's ω arrows start, metres.
 pub const OMEGA_SIDE_M: f32 = 0.4;
+/// Room the drop figure keeps in view past each arrow's outer end for its name, metres.
+pub const NAME_ROOM_M: f32 = 0.2;
 /// The impulse's arrow's shortest length, metres.
 pub const IMPULSE_MIN_M: f32 = 0.3;
 /// Halvings of a step in the search for the moment of contact.
@@ -1212,7 +1214,7 @@ impl ImpulseFigure {
         let yaw = self.view.map_or(0.0, |(camera, _)| camera.yaw_rad);
         let right = Vec3::new(yaw.cos(), 0.0, -yaw.sin());
         let side = right * OMEGA_SIDE_M * hit.omega_after.dot(right).signum();
-        if hit.omega_before.length().max(hit.omega_after.length()) * OMEGA_SCALE > 1e-3 {
+        if ties_omega_arrows(hit.omega_before, hit.omega_after) {
             frame.wide_line_on_top(o, o + side, palette::GREY, 1.5);
         }
         // Before arrives at its start and after leaves it: v before and v after point the same
@@ -1230,7 +1232,10 @@ impl ImpulseFigure {
                     (o - d, -d)
                 };
                 frame.arrow_on_top(from, from + d, color, 0.06);
-                frame.keep_in_view.push(o + out);
+                // The outer end and NAME_ROOM_M past it: the name beside the end has room on
+                // the canvas on the side away from the arrow (at the end itself the camera keeps
+                // only FIT_PAD_PX, and a name there is pushed back against the canvas's edge).
+                frame.keep_in_view.push(o + out + out.normalize() * NAME_ROOM_M);
                 names.push((o + out, out, name, text_color));
             }
         }
@@ -1314,6 +1319,12 @@ impl ImpulseFigure {
             String::new()
         }
     }
+}
+
+/// Whether Figure 4 ties its ω arrows to the centre of mass with a grey line: when either ω
+/// arrow is drawn (one longer than 1 mm at [`OMEGA_SCALE`]), whatever the signs of ω's components.
+pub fn ties_omega_arrows(omega_before: Vec3, omega_after: Vec3) -> bool {
+    omega_before.length().max(omega_after.length()) * OMEGA_SCALE > 1e-3
 }
 
 /// Free flight under gravity for `dt` seconds, in substeps of at most [`SIM_DT`] /

@@ -6,7 +6,32 @@ import { launch, frames, serveDist, openPage, setControl, pixelStats, meanDiffer
 
 const site = serveDist();
 
-test('lesson 15: the density figure\'s particle is dragged with the mouse', async () => {
+/**
+ * The legend swatches of the plot in `plot` (a selector), by series name: the length of the first
+ * dash of its pattern in CSS px, or null for a solid swatch.
+ */
+function legendDashes(page, plot) {
+  return page.evaluate((plot) => Object.fromEntries([...document.querySelectorAll(`${plot} .u-legend .u-series`)].map((s) => {
+    const image = getComputedStyle(s.querySelector('.u-marker')).backgroundImage;
+    // "repeating-linear-gradient(90deg, C 0px, C 5px, transparent 5px, transparent 8px)": the dash
+    // ends at the second stop.
+    const stops = [...image.matchAll(/([\d.]+)px/g)].map((m) => Number(m[1]));
+    const dash = image === 'none' ? null : stops[1] ?? -1;
+    return [s.querySelector('.u-label').textContent, dash];
+  })), plot);
+}
+
+/** A timing plot's median solid, its fastest dashed and its slowest dotted, in the legend too. */
+async function fastestDashedSlowestDotted(page, plot, searches) {
+  const dashes = await legendDashes(page, plot);
+  for (const search of searches) {
+    const [median, fastest, slowest] = [`${search} (median)`, `${search} fastest`, `${search} slowest`].map((n) => dashes[n]);
+    assert.equal(median, null, `${plot} ${search}: ${JSON.stringify(dashes)}`);
+    assert.ok(fastest >= 4 && slowest > 0 && slowest <= 2, `${plot} ${search}: ${JSON.stringify(dashes)}`);
+  }
+}
+
+test('lesson 15: the density figure\'s particle is dragged with the mouse; its note lists the exercises not done a line each', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgl2`, { width: 1280, height: 900 });
@@ -19,7 +44,16 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse', asyn
     });
     const canvas = page.locator('#fig-density .stage canvas');
     await canvas.scrollIntoViewIfNeeded();
+    // With "use my exercise" on the stubs, the note reads as a list: the particle's numbers,
+    // then a line for each exercise not done (the page keeps the note's line breaks).
+    await setControl(page, '#fig-density', 'use my exercise', true);
     await frames(page, 4);
+    const lines = (await page.locator('#density-note').innerText()).split('\n');
+    assert.equal(lines.length, 4, lines.join(' | '));
+    for (const [k, exercise] of ['15.2 sph_density', '15.3 pressure_force', '15.4 pbf_lambda'].entries()) {
+      assert.ok(lines[k + 1].startsWith(`Not done yet: exercise ${exercise} (`), lines.join(' | '));
+    }
+    await page.locator('#fig-density').screenshot({ path: 'tests/screenshots/15-fluids-density-not-done-webgl2.png' });
     const box = await canvas.boundingBox();
     // Find the particle: hovering it marks the canvas (`over-target`); it starts below the middle.
     let grab = null;
@@ -40,6 +74,8 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse', asyn
     assert.ok(Number(after[0]) > Number(before[0]) && Number(after[1]) > Number(before[1]) + 0.2, `${before} -> ${after}`);
     const note = await page.locator('#density-note').textContent();
     assert.match(note, /from 0 neighbours/, note);
+    // Out of the water, 15.3's sum of pairs has none to add.
+    assert.match(note, /\nExercise 15\.3 pressure_force is not called: the dragged particle has no neighbours\.\n/, note);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
@@ -83,6 +119,7 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
     await page.waitForFunction(() => /The GPU grid \(WebGPU compute/.test(document.getElementById('splash-sweep').textContent), null, { timeout: 300_000 });
     const sweep = await page.locator('#splash-sweep').textContent();
     assert.match(sweep, /takes [\d.]+ ms a step at N = 8000/, sweep);
+    await fastestDashedSlowestDotted(page, '#splash-plot', ['CPU grid', 'all pairs', 'GPU grid']);
     await page.locator('#fig-timing').screenshot({ path: 'tests/screenshots/15-fluids-timing-gpu-webgpu.png' });
     // The splash: at 0.3 s the drop has hit the pool (it falls 0.28 m, 0.24 s), once the GPU's
     // steps have caught up with the timeline (the note's time): the picture is no longer the
@@ -116,10 +153,12 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
   }
 });
 
-test('lesson 15 on WebGL2: the GPU switch is off and the note says why; the dam break\'s timeline waits for its fluids', async () => {
+test('lesson 15 on WebGL2: the GPU switch is off and the note says why; the step-time legend tells the fastest from the slowest; the dam break\'s timeline waits for its fluids', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgl2`, { width: 1280, height: 900 });
+    // The step-time plot: which line is the fastest and which the slowest reads from the legend.
+    await fastestDashedSlowestDotted(page, '#splash-plot', ['CPU grid', 'all pairs']);
     await page.locator('#fig-splash').scrollIntoViewIfNeeded();
     await frames(page, 4);
     const control = page.locator('#fig-splash .lil-controller', { hasText: 'step on' }).first();

@@ -36,6 +36,31 @@ async function orderLineDrawn(page, note) {
   return page.evaluate((count) => (0, eval)(`(${count})`)(), purplePixels.toString());
 }
 
+/**
+ * The legend swatches of the plot in `plot` (a selector), by series name: the length of the first
+ * dash of its pattern in CSS px, or null for a solid swatch.
+ */
+function legendDashes(page, plot) {
+  return page.evaluate((plot) => Object.fromEntries([...document.querySelectorAll(`${plot} .u-legend .u-series`)].map((s) => {
+    const image = getComputedStyle(s.querySelector('.u-marker')).backgroundImage;
+    // "repeating-linear-gradient(90deg, C 0px, C 5px, transparent 5px, transparent 8px)": the dash
+    // ends at the second stop.
+    const stops = [...image.matchAll(/([\d.]+)px/g)].map((m) => Number(m[1]));
+    const dash = image === 'none' ? null : stops[1] ?? -1;
+    return [s.querySelector('.u-label').textContent, dash];
+  })), plot);
+}
+
+/** A timing plot's median solid, its fastest dashed and its slowest dotted, in the legend too. */
+async function fastestDashedSlowestDotted(page, plot, searches) {
+  const dashes = await legendDashes(page, plot);
+  for (const search of searches) {
+    const [median, fastest, slowest] = [`${search} (median)`, `${search} fastest`, `${search} slowest`].map((n) => dashes[n]);
+    assert.equal(median, null, `${plot} ${search}: ${JSON.stringify(dashes)}`);
+    assert.ok(fastest >= 4 && slowest > 0 && slowest <= 2, `${plot} ${search}: ${JSON.stringify(dashes)}`);
+  }
+}
+
 /** The visible label boxes of `figure`, as the reader sees them. */
 function labelBoxes(page, figure) {
   return page.evaluate((figure) => [...document.querySelectorAll(`${figure} .labels span`)]
@@ -168,7 +193,7 @@ test('lesson 11 at 800 x 600 and 1600 x 1000', async (t) => {
   }
 });
 
-test('lesson 11: explode now on a paused figure shows its sparks at once', async () => {
+test('lesson 11: explode now on a paused figure shows its sparks at once, and counts after a move of one notch', async () => {
   // A paused figure shows the sparks of a press at once, not only once played (a replay that
   // stopped short of the press would hide them until then).
   const context = await launch('webgl2');
@@ -177,11 +202,24 @@ test('lesson 11: explode now on a paused figure shows its sparks at once', async
     const fig = '#fig-emitters';
     await page.locator(fig).scrollIntoViewIfNeeded();
     await scrubTo(page, fig, 300);
-    const alive = async () => Number(/^(\d+) particles alive/.exec(await page.locator('#emitters-note').textContent())?.[1]);
+    const text = () => page.locator('#emitters-note').textContent();
+    const alive = async () => Number(/^(\d+) particles alive/.exec(await text())?.[1]);
     const before = await alive();
-    await page.locator(`${fig} .lil-controller`, { hasText: 'explode now' }).locator('button').click();
+    const explode = page.locator(`${fig} .lil-controller`, { hasText: 'explode now' }).locator('button');
+    await explode.click();
     await frames(page, 4);
-    assert.equal(await alive(), before + 400, await page.locator('#emitters-note').textContent());
+    assert.equal(await alive(), before + 400, await text());
+    assert.match(await text(), /Explosions set off by hand: 1\./);
+    // The timeline moved one notch with the keyboard (6 ms of its 6 s, inside the figure's
+    // step of 1/60 s), then "explode now" at once: a press of its own, not "did nothing".
+    await page.locator(`${fig} .scrub`).focus();
+    await page.keyboard.press('ArrowRight');
+    await explode.click();
+    await frames(page, 4);
+    assert.equal(await page.locator(`${fig} .clock`).textContent(), '1.81 s');
+    assert.match(await text(), /Explosions set off by hand: 2\./);
+    assert.doesNotMatch(await text(), /did nothing/);
+    assert.equal(await alive(), before + 800, await text());
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
@@ -252,10 +290,12 @@ test('a typed value a number box cannot take says what became of it (lesson 11)'
   }
 });
 
-test('lesson 12: the step-time sweep ends on log-log axes with a note of the slopes it measured', async () => {
+test('lesson 12: the step-time sweep ends on log-log axes with a note of the slopes it measured; its legend tells the fastest from the slowest', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await open(context, '/lessons/12-boids/?backend=webgl2', 1280, 800);
+    // Which line is the fastest and which the slowest reads from the legend.
+    await fastestDashedSlowestDotted(page, '#flock-plot', ['grid', 'naive']);
     const sweep = page.locator('#flock-sweep');
     await page.waitForFunction(() => document.getElementById('flock-sweep').textContent.startsWith('Measured in this run'), null, { timeout: 60_000 });
     assert.match(await sweep.textContent(), /slope \d\.\d \(×\d+\.\d per doubling of N\)/);

@@ -467,3 +467,72 @@ fn lesson_14_racket_names_sit_by_their_rackets_when_orbited() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_14_impulse_keeps_every_arrow_and_its_name_inside_the_canvas() {
+    // Figure 4 at the page's default camera, fitted by the viewer, on the canvases the page
+    // gives it at 800 x 600 (760 x 420, the panel under it) and 1600 x 1000 (650 x 420, the
+    // panel beside it), from the hit to the end of the timeline, at the defaults and the
+    // sliders' ends: every line (the arrows and their heads included) ends 8 px or more inside
+    // the canvas, and every name is shown where the figure put it, near its arrow, 8 px or more
+    // inside. The mistake: a camera that keeps only the arrows' ends in view puts a long arrow
+    // (ω after, 0.9 m at the defaults' 18 rad/s) against the canvas's edge, and the layout
+    // pushes its name back onto the canvas, EDGE_PX from the edge, off the side the figure chose.
+    use inbetween::figures::rigid_body::ImpulseFigure;
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    let canvases = [Vec2::new(760.0, 420.0), Vec2::new(650.0, 420.0)];
+    let margin = 8.0;
+    let mut failures = Vec::new();
+    for tilt in [0.0, 20.0, 45.0] {
+        for e in [0.0, 0.5, 1.0] {
+            for height in [0.2, 1.0, 2.0] {
+                let mut f = ImpulseFigure::new();
+                f.set_drop(tilt, e, height).unwrap();
+                f.advance_to(f.duration_sec()).unwrap();
+                let hit = f.impact_details().copied().expect("a hit");
+                for k in 0..=6 {
+                    let t = hit.time_sec + 0.02 + (f.duration_sec() - hit.time_sec - 0.02) * k as f32 / 6.0;
+                    for size in canvases {
+                        let mut f = f.clone();
+                        f.advance_to(t).unwrap();
+                        let (frame, camera) = drawn_for_view(
+                            &mut f,
+                            view,
+                            size,
+                            |fig, out| {
+                                fig.draw(out);
+                            },
+                            |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                        );
+                        let name = format!("14 impulse, tilt {tilt}°, e {e}, {height} m, t {t:.2} s on {size}");
+                        let check = || {
+                            let view_proj = camera.projection(size.x / size.y) * camera.view();
+                            let inside = |min: Vec2, max: Vec2| {
+                                min.min_element().min((size - max).min_element())
+                            };
+                            for s in &frame.strokes {
+                                for p in [s.a, s.b] {
+                                    let q = project_to_canvas(view_proj, size, Vec3::from(p))
+                                        .expect("in front of the camera");
+                                    let m = inside(q, q);
+                                    assert!(m >= margin, "{name}: a line ends at {q}, {m} px inside");
+                                }
+                            }
+                            for (l, b, p) in layout(&frame, &camera, size) {
+                                assert!(p.shown && p.leader_to.is_none(), "{name}: {:?} moved", l.text);
+                                let m = inside(p.top_left, p.top_left + b.size);
+                                assert!(m >= margin, "{name}: {:?} at {}, {m} px inside", l.text, p.top_left);
+                                let r = Rect { min: p.top_left, size: b.size };
+                                let anchor = Vec2::new(l.x_px, l.y_px);
+                                let gap = r.nearest(anchor).distance(anchor);
+                                assert!(gap <= 60.0, "{name}: {:?} {gap} px from its arrow", l.text);
+                            }
+                        };
+                        failures.extend(failure_of(check));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
