@@ -1,6 +1,7 @@
 // Launching Debian's Chromium with the flag sets from ../shared/TOOLCHAIN.md, one per backend.
 import { chromium } from 'playwright-core';
 import { before, after } from 'node:test';
+import assert from 'node:assert/strict';
 import { existsSync } from 'node:fs';
 import { join } from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
@@ -168,5 +169,30 @@ export async function setControl(page, figure, name, value) {
     const input = c.locator('input').first();
     await input.fill(String(value));
     await input.press('Enter');
+  }
+}
+
+/**
+ * The legend swatches of the plot in `plot` (a selector), by series name: the length of the first
+ * dash of its pattern in CSS px, or null for a solid swatch.
+ */
+function legendDashes(page, plot) {
+  return page.evaluate((plot) => Object.fromEntries([...document.querySelectorAll(`${plot} .u-legend .u-series`)].map((s) => {
+    const image = getComputedStyle(s.querySelector('.u-marker')).backgroundImage;
+    // "repeating-linear-gradient(90deg, C 0px, C 5px, transparent 5px, transparent 8px)": the dash
+    // ends at the second stop.
+    const stops = [...image.matchAll(/([\d.]+)px/g)].map((m) => Number(m[1]));
+    const dash = image === 'none' ? null : stops[1] ?? -1;
+    return [s.querySelector('.u-label').textContent, dash];
+  })), plot);
+}
+
+/** A timing plot's median solid, its fastest dashed and its slowest dotted, in the legend too. */
+export async function fastestDashedSlowestDotted(page, plot, searches) {
+  const dashes = await legendDashes(page, plot);
+  for (const search of searches) {
+    const [median, fastest, slowest] = [`${search} (median)`, `${search} fastest`, `${search} slowest`].map((n) => dashes[n]);
+    assert.equal(median, null, `${plot} ${search}: ${JSON.stringify(dashes)}`);
+    assert.ok(fastest >= 4 && slowest > 0 && slowest <= 2, `${plot} ${search}: ${JSON.stringify(dashes)}`);
   }
 }

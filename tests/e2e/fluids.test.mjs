@@ -2,34 +2,9 @@
 // sliders; the drag is the canvas's own path), and the note follows it out of the water.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage, setControl, pixelStats, meanDifference, bluePixels } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl, pixelStats, meanDifference, bluePixels, fastestDashedSlowestDotted } from './browser.mjs';
 
 const site = serveDist();
-
-/**
- * The legend swatches of the plot in `plot` (a selector), by series name: the length of the first
- * dash of its pattern in CSS px, or null for a solid swatch.
- */
-function legendDashes(page, plot) {
-  return page.evaluate((plot) => Object.fromEntries([...document.querySelectorAll(`${plot} .u-legend .u-series`)].map((s) => {
-    const image = getComputedStyle(s.querySelector('.u-marker')).backgroundImage;
-    // "repeating-linear-gradient(90deg, C 0px, C 5px, transparent 5px, transparent 8px)": the dash
-    // ends at the second stop.
-    const stops = [...image.matchAll(/([\d.]+)px/g)].map((m) => Number(m[1]));
-    const dash = image === 'none' ? null : stops[1] ?? -1;
-    return [s.querySelector('.u-label').textContent, dash];
-  })), plot);
-}
-
-/** A timing plot's median solid, its fastest dashed and its slowest dotted, in the legend too. */
-async function fastestDashedSlowestDotted(page, plot, searches) {
-  const dashes = await legendDashes(page, plot);
-  for (const search of searches) {
-    const [median, fastest, slowest] = [`${search} (median)`, `${search} fastest`, `${search} slowest`].map((n) => dashes[n]);
-    assert.equal(median, null, `${plot} ${search}: ${JSON.stringify(dashes)}`);
-    assert.ok(fastest >= 4 && slowest > 0 && slowest <= 2, `${plot} ${search}: ${JSON.stringify(dashes)}`);
-  }
-}
 
 test('lesson 15: the density figure\'s particle is dragged with the mouse; its note lists the exercises not done a line each', async () => {
   const context = await launch('webgl2');

@@ -8,7 +8,7 @@
 // with a panel no taller than the canvas; the flock's order plot is drawn from its samples.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage, setControl, bluePixels } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl, bluePixels, fastestDashedSlowestDotted } from './browser.mjs';
 
 const site = serveDist();
 const open = (context, path, width, height) => openPage(context, site.origin + path, { width, height });
@@ -34,31 +34,6 @@ async function orderLineDrawn(page, note) {
     && new RegExp(note).test(document.getElementById('flock-note').textContent),
   [purplePixels.toString(), note.source], { polling: 100, timeout: 30_000 }).catch(() => {});
   return page.evaluate((count) => (0, eval)(`(${count})`)(), purplePixels.toString());
-}
-
-/**
- * The legend swatches of the plot in `plot` (a selector), by series name: the length of the first
- * dash of its pattern in CSS px, or null for a solid swatch.
- */
-function legendDashes(page, plot) {
-  return page.evaluate((plot) => Object.fromEntries([...document.querySelectorAll(`${plot} .u-legend .u-series`)].map((s) => {
-    const image = getComputedStyle(s.querySelector('.u-marker')).backgroundImage;
-    // "repeating-linear-gradient(90deg, C 0px, C 5px, transparent 5px, transparent 8px)": the dash
-    // ends at the second stop.
-    const stops = [...image.matchAll(/([\d.]+)px/g)].map((m) => Number(m[1]));
-    const dash = image === 'none' ? null : stops[1] ?? -1;
-    return [s.querySelector('.u-label').textContent, dash];
-  })), plot);
-}
-
-/** A timing plot's median solid, its fastest dashed and its slowest dotted, in the legend too. */
-async function fastestDashedSlowestDotted(page, plot, searches) {
-  const dashes = await legendDashes(page, plot);
-  for (const search of searches) {
-    const [median, fastest, slowest] = [`${search} (median)`, `${search} fastest`, `${search} slowest`].map((n) => dashes[n]);
-    assert.equal(median, null, `${plot} ${search}: ${JSON.stringify(dashes)}`);
-    assert.ok(fastest >= 4 && slowest > 0 && slowest <= 2, `${plot} ${search}: ${JSON.stringify(dashes)}`);
-  }
 }
 
 /** The visible label boxes of `figure`, as the reader sees them. */
