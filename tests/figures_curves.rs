@@ -879,3 +879,81 @@ fn spacing_charts_of_the_eases() {
     assert!(spacing_ticks("none", 61).is_err());
     assert!(ease_samples("none", 1).is_err());
 }
+
+/// The number written after `words` in `text` (the first run of digits).
+fn number_after(text: &str, words: &str) -> usize {
+    let at = text
+        .find(words)
+        .unwrap_or_else(|| panic!("the text names no '{words} N': {text}"));
+    let rest = &text[at + words.len()..];
+    let digits: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
+    digits
+        .parse()
+        .unwrap_or_else(|_| panic!("no number after '{words}': {rest}"))
+}
+
+#[test]
+fn figure_6s_try_this_names_a_key_that_moves_all_of_b_and_only_part_of_a() {
+    // The caption's claim, read from the page: "drag key K … B change all the way to the last
+    // key, A only up to key M".
+    let page = include_str!("../lessons/02-keyframes/index.html");
+    let figure = &page[page.find("id=\"fig-natural\"").unwrap()..];
+    let caption = &figure[..figure.find("</figcaption>").unwrap()];
+    let caption = caption.split_whitespace().collect::<Vec<_>>().join(" ");
+    let (dragged, reach) = (
+        number_after(&caption, "drag key "),
+        number_after(&caption, "A only up to key "),
+    );
+    let (times, values) = preset("default").unwrap();
+    let last = times.len() - 1;
+    // Figure 6 draws A (Catmull-Rom) and B (natural) on Figure 1's keys, its path and ball at
+    // `position` and its plot from `sample_motion`'s acceleration: what changes there when key
+    // `k` moves 0.5 m up, at 400 times over the motion.
+    let changed = |scheme: &str, k: usize| -> Vec<(f32, bool)> {
+        let mut moved = values.clone();
+        moved[k].y += 0.5;
+        let before = scene(scheme);
+        let mut after = scene(scheme);
+        after.set_keys(times.clone(), moved).unwrap();
+        let (rows_before, rows_after) = (
+            before.sample_motion(400).unwrap(),
+            after.sample_motion(400).unwrap(),
+        );
+        rows_before
+            .iter()
+            .zip(&rows_after)
+            .map(|(a, b)| {
+                let tau = a[0] - times[0];
+                let path = before.position(tau).unwrap() - after.position(tau).unwrap();
+                (a[0], path.length() > 1e-4 || (a[3] - b[3]).abs() > 1e-3)
+            })
+            .collect()
+    };
+    // Which of the keys' segments change anywhere inside them.
+    let segments_changed = |samples: &[(f32, bool)]| -> Vec<bool> {
+        times
+            .windows(2)
+            .map(|w| samples.iter().any(|&(t, c)| c && t > w[0] && t < w[1]))
+            .collect()
+    };
+    let b = changed("natural", dragged);
+    assert_eq!(
+        segments_changed(&b),
+        vec![true; last],
+        "B changes on every segment when key {dragged} moves"
+    );
+    let a = changed("cardinal", dragged);
+    let expected: Vec<bool> = (0..last).map(|i| i < reach).collect();
+    assert_eq!(
+        segments_changed(&a),
+        expected,
+        "A changes up to key {reach} only when key {dragged} moves"
+    );
+    assert!(
+        a.iter().all(|&(t, c)| !c || t <= times[reach]),
+        "A changes past key {reach}"
+    );
+    assert!(reach < last, "the caption promises a part of A that stays");
+    // "key 2 … changes all four of A's segments".
+    assert_eq!(segments_changed(&changed("cardinal", 2)), vec![true; last]);
+}
