@@ -167,15 +167,17 @@ if (shadingViewer) {
     model: 'blinn-phong', fragAzimuth: 30, fragElevation: 10, useExercise: false,
   };
   const gui = new GUI({ container: document.querySelector('#fig-shading .panel'), title: 'Shading' });
-  const light = gui.addFolder('light');
-  light.add(p, 'lightAzimuth', -180, 180, 1).name('azimuth (°)');
-  light.add(p, 'lightElevation', -89, 89, 1).name('elevation (°)');
+  // The material and the model first: on a narrow page the panel sits under the canvas and the
+  // images, and the Try this's shininess slider must be on the same screen as them.
   const terms = gui.addFolder('material');
   terms.add(p, 'ka', 0, 1, 0.01).name('ambient k_a');
   terms.add(p, 'kd', 0, 1, 0.01).name('diffuse k_d');
   terms.add(p, 'ks', 0, 1, 0.01).name('specular k_s');
   terms.add(p, 'shininess', 1, 256, 1).name('shininess s');
   gui.add(p, 'model', { 'Blinn-Phong': 'blinn-phong', Phong: 'phong' }).name('model (vectors, terms)');
+  const light = gui.addFolder('light');
+  light.add(p, 'lightAzimuth', -180, 180, 1).name('azimuth (°)');
+  light.add(p, 'lightElevation', -89, 89, 1).name('elevation (°)');
   const frag = gui.addFolder('marked fragment');
   frag.add(p, 'fragAzimuth', -90, 90, 1).name('azimuth (°)');
   frag.add(p, 'fragElevation', -89, 89, 1).name('elevation (°)');
