@@ -957,3 +957,46 @@ fn figure_6s_try_this_names_a_key_that_moves_all_of_b_and_only_part_of_a() {
     // "key 2 … changes all four of A's segments".
     assert_eq!(segments_changed(&changed("cardinal", 2)), vec![true; last]);
 }
+
+/// The box round the first loop of a polyline: the points between the first two segments that
+/// cross (the page's `loopBox`, lessons/02-keyframes/lesson.js, adds the crossing point).
+fn loop_box(path: &[Vec2]) -> Option<[Vec2; 2]> {
+    let side = |p: Vec2, q: Vec2, r: Vec2| (q - p).perp_dot(r - p);
+    for j in 2..path.len().saturating_sub(1) {
+        for i in 0..j - 1 {
+            let (a, b, c, d) = (path[i], path[i + 1], path[j], path[j + 1]);
+            if side(a, b, c) * side(a, b, d) < 0.0 && side(c, d, a) * side(c, d, b) < 0.0 {
+                let inside = &path[i + 1..=j];
+                return Some(inside.iter().fold([inside[0]; 2], |[lo, hi], &p| [lo.min(p), hi.max(p)]));
+            }
+        }
+    }
+    None
+}
+
+#[test]
+fn figure_7s_loop_is_about_3_cm_across_and_only_catmull_rom_loops() {
+    let path_on = |scheme: &str, name: &str| {
+        let mut s = scene(scheme);
+        let (t, v) = preset(name).unwrap();
+        s.set_keys(t, v).unwrap();
+        path_of(&s)
+    };
+    // Loop-prone: Catmull-Rom loops between keys 1 and 2, "about 3 cm across" (Figure 7's
+    // caption; a few pixels in its view, which the page's inset magnifies).
+    let (_, keys) = preset("loop").unwrap();
+    let [lo, hi] = loop_box(&path_on("cardinal", "loop")).expect("A loops");
+    let size = hi - lo;
+    assert!(
+        (0.025..0.04).contains(&size.max_element()),
+        "the loop is {size} m"
+    );
+    let middle = (lo + hi) / 2.0;
+    assert!((middle - (keys[1] + keys[2]) / 2.0).length() < 0.2, "{lo} {hi}");
+    // Centripetal passes straight; on the default keys no scheme with a path loops, so the
+    // page shows no inset there.
+    assert_eq!(loop_box(&path_on("centripetal", "loop")), None);
+    for scheme in ["linear", "lagrange", "hermite", "cardinal", "natural", "centripetal"] {
+        assert_eq!(loop_box(&path_of(&scene(scheme))), None, "{scheme}");
+    }
+}

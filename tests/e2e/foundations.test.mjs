@@ -1,9 +1,10 @@
 // Lessons 00 and 02 in Chromium, where only the page decides: lesson 00's Figure 5 layout at
 // both page sizes (the two per-pixel totals side by side; at 800 x 600 the sphere, the six images
-// and the shininess slider on one screen; at 1600 x 1000 the images in one row).
+// and the shininess slider on one screen; at 1600 x 1000 the images in one row); lesson 02's
+// Figure 7 inset, magnifying the loop of the loop-prone keys.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage } from './browser.mjs';
+import { launch, frames, setControl, serveDist, openPage } from './browser.mjs';
 
 const site = serveDist();
 
@@ -33,6 +34,25 @@ test('lesson 00: Figure 5 keeps its totals side by side and its Try this on one 
       assert.ok(bottom - sphere.top <= h, `${w}: sphere to ${w === 800 ? 'slider' : 'images'} ${bottom - sphere.top} px, over one screen of ${h}`);
       if (w === 1600) assert.ok(images.every((b) => b.top === images[0].top), `1600: the images in one row ${JSON.stringify(images)}`);
     }
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 02: Figure 7 magnifies the loop-prone loop in an inset, and shows none without a loop', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2`, { width: 1600, height: 1000 });
+    const canvas = page.locator('#fig-centripetal .stage > canvas');
+    await canvas.evaluate((c) => c.scrollIntoView());
+    await frames(page);
+    assert.equal(await canvas.getAttribute('data-loop-px'), null, 'the default keys do not loop');
+    await setControl(page, '#fig-centripetal', 'keys (all figures)', 'loop-prone');
+    await frames(page);
+    // The loop, about 3 cm and a few pixels across in the view, at least 60 px across in the inset.
+    const px = Number(await canvas.getAttribute('data-loop-px'));
+    assert.ok(px >= 60, `the loop is ${px} px across in the inset`);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
