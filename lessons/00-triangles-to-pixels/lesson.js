@@ -1,6 +1,6 @@
 // Lesson 00: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/raster/ and src/figures/raster.rs); the images are computed there and only copied here.
-import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, showMatrix, guarded, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, showMatrix, guarded, cssVar, sentences } from '../../www/lesson.js';
 import { MeshStorageScene, FrustumScene, DepthPrecisionScene, NormalsScene, ShadingScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -20,11 +20,13 @@ if (meshViewer) {
   const scene = new MeshStorageScene();
   const p = { segments: 8, shape: 'sphere' };
   const gui = new GUI({ container: document.querySelector('#fig-mesh .panel'), title: 'Mesh' });
-  gui.add(p, 'segments', 3, 64, 1).name('sphere segments');
+  const segments = gui.add(p, 'segments', 3, 64, 1).name('sphere segments');
   gui.add(p, 'shape', ['sphere', 'tetrahedron']).name('shape');
   const apply = () => {
     scene.setSegments(p.segments);
     scene.setShape(p.shape);
+    // The tetrahedron has no segments: the slider would change nothing.
+    segments.enable(p.shape === 'sphere');
   };
   gui.onChange(apply);
   apply();
@@ -76,7 +78,7 @@ if (frustumViewer) {
   lesson.onFrame((dt) => {
     timeline.advance(dt);
     const s = pingPong(timeline);
-    const message = [rejected, scene.draw(frustumViewer, s)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(frustumViewer, s));
     if (note.textContent !== message) note.textContent = message;
     const r = Array.from(scene.readout(s));
     const html = '<tr><th></th><th>x</th><th>y</th><th>z</th><th>w</th></tr>'
@@ -121,7 +123,7 @@ if (depthViewer) {
   gui.onChange(apply);
   apply();
   lesson.onFrame(() => {
-    const message = [rejected, scene.draw(depthViewer)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(depthViewer));
     if (note.textContent !== message) note.textContent = message;
     markDrawn('#fig-depth');
   });
@@ -151,7 +153,7 @@ if (normalsViewer) {
   apply();
   const note = document.getElementById('normals-note');
   lesson.onFrame(() => {
-    const message = [rejected, scene.draw(normalsViewer)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(normalsViewer));
     if (note.textContent !== message) note.textContent = message;
     markDrawn('#fig-normals');
   });
@@ -227,7 +229,7 @@ if (shadingViewer) {
   }
   const note = document.getElementById('shading-note');
   lesson.onFrame(() => {
-    const message = [rejected, scene.draw(shadingViewer)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(shadingViewer));
     if (note.textContent !== message) note.textContent = message;
     markDrawn('#fig-shading');
   });

@@ -1,6 +1,7 @@
 // Lessons 00 and 02 in Chromium, where only the page decides: lesson 00's Figure 5 layout at
 // both page sizes (the two per-pixel totals side by side; at 800 x 600 the sphere, the six images
-// and the shininess slider on one screen; at 1600 x 1000 the images in one row); lesson 02's
+// and the shininess slider on one screen; at 1600 x 1000 the images in one row), Figure 1's
+// segments slider off for the tetrahedron, Figure 2's note after a rejected value; lesson 02's
 // Figure 7 inset, magnifying the loop of the loop-prone keys.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -14,7 +15,7 @@ const boxes = (page, selector) => page.evaluate((s) => [...document.querySelecto
   return { top: r.top, bottom: r.bottom, left: r.left, right: r.right, label: e.getAttribute('aria-label') ?? e.textContent };
 }), selector);
 
-test('lesson 00: Figure 5 keeps its totals side by side and its Try this on one screen', async () => {
+test('lesson 00: Figure 5 keeps its totals side by side and its Try this on one screen; Figures 1 and 2 controls and notes', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await openPage(context, `${site.origin}/lessons/00-triangles-to-pixels/?backend=webgl2`);
@@ -34,6 +35,18 @@ test('lesson 00: Figure 5 keeps its totals side by side and its Try this on one 
       assert.ok(bottom - sphere.top <= h, `${w}: sphere to ${w === 800 ? 'slider' : 'images'} ${bottom - sphere.top} px, over one screen of ${h}`);
       if (w === 1600) assert.ok(images.every((b) => b.top === images[0].top), `1600: the images in one row ${JSON.stringify(images)}`);
     }
+
+    // Figure 1: the tetrahedron has no segments; the slider says so by being off.
+    const segments = page.locator('#fig-mesh .lil-controller', { hasText: 'sphere segments' });
+    await setControl(page, '#fig-mesh', 'shape', 'tetrahedron');
+    assert.match(await segments.getAttribute('class'), /lil-disabled/);
+    await setControl(page, '#fig-mesh', 'shape', 'sphere');
+    assert.doesNotMatch(await segments.getAttribute('class'), /lil-disabled/);
+
+    // Figure 2: a rejected value's sentence ends before the figure's own note starts.
+    await setControl(page, '#fig-frustum', 'z_far', 0.5);
+    await frames(page);
+    assert.match(await page.locator('#frustum-note').textContent(), /must be greater than z_near \(1\)\. \S/);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
