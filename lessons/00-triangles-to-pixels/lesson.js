@@ -58,7 +58,10 @@ if (frustumViewer) {
   const plot = new Plot(document.getElementById('frustum-depth'), {
     title: 'Depth against distance', xLabel: 'distance d in front of the camera (m)', yLabel: 'depth (no unit)',
     series: ['wgpu, [0, 1]', 'OpenGL, [−1, 1]', 'depth 0.5'], colors: [cssVar('--z-axis'), cssVar('--grey'), cssVar('--orange')],
-    dashes: [null, null, [6, 4]], widths: [2.5, 2.5, 1.5], minSpan: 0.5,
+    dashes: [null, null, [6, 4]], widths: [2.5, 2.5, 1.5],
+    // Both depth ranges, [0, 1] and [−1, 1]: the samples follow the point from half of z_near,
+    // where the depths run far below them (the point is clipped there), to past z_far.
+    yRange: [-1.1, 1.1],
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
