@@ -376,14 +376,26 @@ fn stubs_say_not_done_yet() {
     );
 }
 
+fn not_done(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::NotDone)
+}
+
 #[test]
 fn the_basis_note_compares_exercise_2_1() {
     let n = hermite_basis_note(right, 0.25, true).unwrap();
     assert_eq!(
         n,
         "Your hermite_basis matches the reference at s = 0.250 and at 4 more inputs \
-         (s = 0.000; s = 0.500; s = 0.750; s = 1.000)."
+         (s = 0.000; s = 0.500; s = 0.750; s = 1.000).\n\
+         At s = 0.250: h00 = 0.844, h10 = 0.141, h01 = 0.156, h11 = -0.047."
     );
+    // Not done (or failing), the figure uses the reference: its weights stay in the note, so
+    // the Try this's sum can still be read (0.784 + 0.216 at the default s = 0.3).
+    let n = hermite_basis_note(not_done, 0.3, true).unwrap();
+    let lines: Vec<&str> = n.lines().collect();
+    assert!(lines[0].starts_with("Not done yet: exercise 2.1"), "{n}");
+    assert_eq!(lines[1], hermite_basis_note(not_done, 0.3, false).unwrap());
+    assert!(lines[1].contains("h00 = 0.784") && lines[1].contains("h01 = 0.216"), "{n}");
     let n = hermite_basis_note(wrong, 0.5, true).unwrap();
     assert!(n.starts_with("Your hermite_basis differs at s = 0.500: yours (1.000, 0.000, 0.000, 0.000), reference (0.500, 0.125, 0.500, -0.125)"), "{n}");
     let n = hermite_basis_note(panics, 0.5, true).unwrap();
