@@ -376,14 +376,26 @@ fn stubs_say_not_done_yet() {
     );
 }
 
+fn not_done(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+    Err(Failure::NotDone)
+}
+
 #[test]
 fn the_basis_note_compares_exercise_2_1() {
     let n = hermite_basis_note(right, 0.25, true).unwrap();
     assert_eq!(
         n,
         "Your hermite_basis matches the reference at s = 0.250 and at 4 more inputs \
-         (s = 0.000; s = 0.500; s = 0.750; s = 1.000)."
+         (s = 0.000; s = 0.500; s = 0.750; s = 1.000).\n\
+         At s = 0.250: h00 = 0.844, h10 = 0.141, h01 = 0.156, h11 = -0.047."
     );
+    // Not done (or failing), the figure uses the reference: its weights stay in the note, so
+    // the Try this's sum can still be read (0.784 + 0.216 at the default s = 0.3).
+    let n = hermite_basis_note(not_done, 0.3, true).unwrap();
+    let lines: Vec<&str> = n.lines().collect();
+    assert!(lines[0].starts_with("Not done yet: exercise 2.1"), "{n}");
+    assert_eq!(lines[1], hermite_basis_note(not_done, 0.3, false).unwrap());
+    assert!(lines[1].contains("h00 = 0.784") && lines[1].contains("h01 = 0.216"), "{n}");
     let n = hermite_basis_note(wrong, 0.5, true).unwrap();
     assert!(n.starts_with("Your hermite_basis differs at s = 0.500: yours (1.000, 0.000, 0.000, 0.000), reference (0.500, 0.125, 0.500, -0.125)"), "{n}");
     let n = hermite_basis_note(panics, 0.5, true).unwrap();
@@ -956,4 +968,47 @@ fn figure_6s_try_this_names_a_key_that_moves_all_of_b_and_only_part_of_a() {
     assert!(reach < last, "the caption promises a part of A that stays");
     // "key 2 … changes all four of A's segments".
     assert_eq!(segments_changed(&changed("cardinal", 2)), vec![true; last]);
+}
+
+/// The box round the first loop of a polyline: the points between the first two segments that
+/// cross (the page's `loopBox`, lessons/02-keyframes/lesson.js, adds the crossing point).
+fn loop_box(path: &[Vec2]) -> Option<[Vec2; 2]> {
+    let side = |p: Vec2, q: Vec2, r: Vec2| (q - p).perp_dot(r - p);
+    for j in 2..path.len().saturating_sub(1) {
+        for i in 0..j - 1 {
+            let (a, b, c, d) = (path[i], path[i + 1], path[j], path[j + 1]);
+            if side(a, b, c) * side(a, b, d) < 0.0 && side(c, d, a) * side(c, d, b) < 0.0 {
+                let inside = &path[i + 1..=j];
+                return Some(inside.iter().fold([inside[0]; 2], |[lo, hi], &p| [lo.min(p), hi.max(p)]));
+            }
+        }
+    }
+    None
+}
+
+#[test]
+fn figure_7s_loop_is_about_3_cm_across_and_only_catmull_rom_loops() {
+    let path_on = |scheme: &str, name: &str| {
+        let mut s = scene(scheme);
+        let (t, v) = preset(name).unwrap();
+        s.set_keys(t, v).unwrap();
+        path_of(&s)
+    };
+    // Loop-prone: Catmull-Rom loops between keys 1 and 2, "about 3 cm across" (Figure 7's
+    // caption; a few pixels in its view, which the page's inset magnifies).
+    let (_, keys) = preset("loop").unwrap();
+    let [lo, hi] = loop_box(&path_on("cardinal", "loop")).expect("A loops");
+    let size = hi - lo;
+    assert!(
+        (0.025..0.04).contains(&size.max_element()),
+        "the loop is {size} m"
+    );
+    let middle = (lo + hi) / 2.0;
+    assert!((middle - (keys[1] + keys[2]) / 2.0).length() < 0.2, "{lo} {hi}");
+    // Centripetal passes straight; on the default keys no scheme with a path loops, so the
+    // page shows no inset there.
+    assert_eq!(loop_box(&path_on("centripetal", "loop")), None);
+    for scheme in ["linear", "lagrange", "hermite", "cardinal", "natural", "centripetal"] {
+        assert_eq!(loop_box(&path_of(&scene(scheme))), None, "{scheme}");
+    }
 }

@@ -221,9 +221,50 @@ fn depth_buffer_fights_only_beyond_the_predicted_distance() {
         .contains("z_far"));
     let mut f = Frame::default();
     assert!(
-        scene.draw(&mut f).contains("z_far / z_near = 1000.000"),
+        scene.draw(&mut f).contains("z_far / z_near = 1000. "),
         "the ratio in the note"
     );
+}
+
+/// Figure 3's note: the ratio as a whole number when it is one (to a tenth otherwise), and the
+/// three steps in one notation, so their decades can be compared at a glance.
+#[test]
+fn the_depth_note_writes_the_ratio_and_the_steps_in_one_notation() {
+    for (near, far, bits, ratio) in [(0.1, 1000.0, 16, "10000"), (0.03, 10.001, 24, "333.4")] {
+        let note = scene_at(near, far, bits as f32).draw(&mut Frame::default());
+        let start = format!("z_far / z_near = {ratio}. With {bits} bits, one depth step is worth ");
+        assert!(note.starts_with(&start), "{note}");
+        // "M.MMe±N m at 1 m, M.MMe±N m at 10 m and M.MMe±N m at z_far": each the core's step.
+        let words: Vec<&str> = note[start.len()..].split(' ').collect();
+        for (k, d) in [(0, 1.0), (5, 10.0), (11, far)] {
+            let printed = words[k];
+            let (mantissa, _) = printed.split_once('e').unwrap_or_else(|| panic!("{printed}"));
+            assert_eq!(mantissa.len(), 4, "three digits: {printed}");
+            let value: f32 = printed.parse().unwrap();
+            let step = raster::depth_step(d, near, far, bits);
+            assert!((value / step - 1.0).abs() < 0.005, "{printed} against {step} at {d} m");
+        }
+    }
+}
+
+/// Figure 2's plot: the distances run over the point's whole trip, from half of z_near to 15 %
+/// past z_far, so the playhead (`distance_at`) is on the plot all the way.
+#[test]
+fn the_depth_plot_spans_the_points_whole_trip() {
+    let mut scene = Frustum::new();
+    for (near, far) in [(1.0, 8.0), (0.1, 20.0), (2.0, 3.0)] {
+        scene.set_frustum(50.0, near, far).unwrap();
+        let samples = scene.sample_depth(201).unwrap();
+        let (first, last) = (samples[0][0], samples[200][0]);
+        assert!((first - scene.distance_at(0.0)).abs() < 1e-6, "{first}");
+        assert!((last - scene.distance_at(1.0)).abs() < 1e-4, "{last}");
+        assert!((first - 0.5 * near).abs() < 1e-6 && (last - 1.15 * far).abs() < 1e-4);
+        // Depths in [0, 1] (wgpu) exactly between the planes.
+        for [d, wgpu, _] in samples {
+            let inside = (near..=far).contains(&d);
+            assert_eq!((-1e-6..=1.0 + 1e-6).contains(&wgpu), inside, "{wgpu} at {d} m");
+        }
+    }
 }
 
 #[test]
@@ -522,6 +563,53 @@ fn fighting_distances_match_the_caption() {
     assert!(!rows.is_empty());
     let (lo, hi) = (rows.iter().min().unwrap(), rows.iter().max().unwrap());
     assert!(hi - lo <= 4, "rows {lo}..{hi}");
+}
+
+/// Figure 3's Try this, z_near from 0.1 m to 1 m: "the bars shrink, the near ones tenfold, and
+/// the orange ones turn green" in the side view.
+#[test]
+fn figure_3s_bars_shrink_tenfold_and_turn_green_with_z_near_1_m() {
+    use inbetween::draw::palette;
+    // Each bar: (distance, height, orange?), a wide line up from the floor at x = 1.1 m every 2 m.
+    let bars = |near: f32| {
+        let mut f = Frame::default();
+        scene_at(near, 1000.0, 16.0).draw(&mut f);
+        let mut out: Vec<(f32, f32, bool)> = f
+            .segments()
+            .filter(|(a, b, c)| {
+                a.x == 1.1 && a.y == 0.0 && b.y > 0.0 && -a.z % 2.0 == 0.0
+                    && (*c == palette::ORANGE || *c == palette::GREEN)
+            })
+            .map(|(a, b, c)| (-a.z, b.y, c == palette::ORANGE))
+            .collect();
+        out.sort_by(|p, q| p.0.total_cmp(&q.0));
+        out
+    };
+    let (before, after) = (bars(0.1), bars(1.0));
+    assert_eq!(before.len(), 20, "a bar every 2 m to 40 m");
+    assert_eq!(
+        before.iter().map(|b| b.0).collect::<Vec<_>>(),
+        after.iter().map(|b| b.0).collect::<Vec<_>>()
+    );
+    assert!(before.iter().any(|b| b.2) && !after.iter().any(|b| b.2), "orange turns green");
+    // A bar is drawn at most 6 m tall: one at the cap shrinks by less than its step does.
+    const CAP_M: f32 = 6.0;
+    let mut tenfold = 0;
+    for (b, a) in before.iter().zip(&after) {
+        assert!(a.1 < b.1, "every bar shrinks: {b:?} {a:?}");
+        if b.1 < CAP_M {
+            assert!((b.1 / a.1 - 10.0).abs() < 0.1, "tenfold: {b:?} {a:?}");
+            tenfold += 1;
+        }
+    }
+    assert!(tenfold >= 10, "the near ones: {tenfold}");
+    // The caption says so, of the side view (where it shows) rather than of the plot's lines,
+    // whose axes rescale with z_near.
+    let page = include_str!("../lessons/00-triangles-to-pixels/index.html");
+    let page = page.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(page.contains(
+        "in the side view the bars shrink, the near ones tenfold, and the orange ones turn green"
+    ));
 }
 
 fn scene_at(near: f32, far: f32, bits: f32) -> DepthPrecision {

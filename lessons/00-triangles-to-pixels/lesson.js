@@ -1,6 +1,6 @@
 // Lesson 00: wires the page's controls to the wasm scenes. No math here: it lives in Rust
 // (src/raster/ and src/figures/raster.rs); the images are computed there and only copied here.
-import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, showMatrix, guarded, cssVar } from '../../www/lesson.js';
+import { startLesson, markDrawn, Timeline, Plot, GUI, pingPong, columns, showMatrix, guarded, cssVar, sentences } from '../../www/lesson.js';
 import { MeshStorageScene, FrustumScene, DepthPrecisionScene, NormalsScene, ShadingScene } from '../../pkg/inbetween.js';
 
 const lesson = await startLesson();
@@ -20,11 +20,13 @@ if (meshViewer) {
   const scene = new MeshStorageScene();
   const p = { segments: 8, shape: 'sphere' };
   const gui = new GUI({ container: document.querySelector('#fig-mesh .panel'), title: 'Mesh' });
-  gui.add(p, 'segments', 3, 64, 1).name('sphere segments');
+  const segments = gui.add(p, 'segments', 3, 64, 1).name('sphere segments');
   gui.add(p, 'shape', ['sphere', 'tetrahedron']).name('shape');
   const apply = () => {
     scene.setSegments(p.segments);
     scene.setShape(p.shape);
+    // The tetrahedron has no segments: the slider would change nothing.
+    segments.enable(p.shape === 'sphere');
   };
   gui.onChange(apply);
   apply();
@@ -56,7 +58,10 @@ if (frustumViewer) {
   const plot = new Plot(document.getElementById('frustum-depth'), {
     title: 'Depth against distance', xLabel: 'distance d in front of the camera (m)', yLabel: 'depth (no unit)',
     series: ['wgpu, [0, 1]', 'OpenGL, [−1, 1]', 'depth 0.5'], colors: [cssVar('--z-axis'), cssVar('--grey'), cssVar('--orange')],
-    dashes: [null, null, [6, 4]], widths: [2.5, 2.5, 1.5], minSpan: 0.5,
+    dashes: [null, null, [6, 4]], widths: [2.5, 2.5, 1.5],
+    // Both depth ranges, [0, 1] and [−1, 1]: the samples follow the point from half of z_near,
+    // where the depths run far below them (the point is clipped there), to past z_far.
+    yRange: [-1.1, 1.1],
   });
   let rejected = '';
   const apply = guarded(gui, p, () => {
@@ -76,7 +81,7 @@ if (frustumViewer) {
   lesson.onFrame((dt) => {
     timeline.advance(dt);
     const s = pingPong(timeline);
-    const message = [rejected, scene.draw(frustumViewer, s)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(frustumViewer, s));
     if (note.textContent !== message) note.textContent = message;
     const r = Array.from(scene.readout(s));
     const html = '<tr><th></th><th>x</th><th>y</th><th>z</th><th>w</th></tr>'
@@ -121,7 +126,7 @@ if (depthViewer) {
   gui.onChange(apply);
   apply();
   lesson.onFrame(() => {
-    const message = [rejected, scene.draw(depthViewer)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(depthViewer));
     if (note.textContent !== message) note.textContent = message;
     markDrawn('#fig-depth');
   });
@@ -151,7 +156,7 @@ if (normalsViewer) {
   apply();
   const note = document.getElementById('normals-note');
   lesson.onFrame(() => {
-    const message = [rejected, scene.draw(normalsViewer)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(normalsViewer));
     if (note.textContent !== message) note.textContent = message;
     markDrawn('#fig-normals');
   });
@@ -167,15 +172,17 @@ if (shadingViewer) {
     model: 'blinn-phong', fragAzimuth: 30, fragElevation: 10, useExercise: false,
   };
   const gui = new GUI({ container: document.querySelector('#fig-shading .panel'), title: 'Shading' });
-  const light = gui.addFolder('light');
-  light.add(p, 'lightAzimuth', -180, 180, 1).name('azimuth (°)');
-  light.add(p, 'lightElevation', -89, 89, 1).name('elevation (°)');
+  // The material and the model first: on a narrow page the panel sits under the canvas and the
+  // images, and the Try this's shininess slider must be on the same screen as them.
   const terms = gui.addFolder('material');
   terms.add(p, 'ka', 0, 1, 0.01).name('ambient k_a');
   terms.add(p, 'kd', 0, 1, 0.01).name('diffuse k_d');
   terms.add(p, 'ks', 0, 1, 0.01).name('specular k_s');
   terms.add(p, 'shininess', 1, 256, 1).name('shininess s');
   gui.add(p, 'model', { 'Blinn-Phong': 'blinn-phong', Phong: 'phong' }).name('model (vectors, terms)');
+  const light = gui.addFolder('light');
+  light.add(p, 'lightAzimuth', -180, 180, 1).name('azimuth (°)');
+  light.add(p, 'lightElevation', -89, 89, 1).name('elevation (°)');
   const frag = gui.addFolder('marked fragment');
   frag.add(p, 'fragAzimuth', -90, 90, 1).name('azimuth (°)');
   frag.add(p, 'fragElevation', -89, 89, 1).name('elevation (°)');
@@ -225,7 +232,7 @@ if (shadingViewer) {
   }
   const note = document.getElementById('shading-note');
   lesson.onFrame(() => {
-    const message = [rejected, scene.draw(shadingViewer)].filter(Boolean).join(' ');
+    const message = sentences(rejected, scene.draw(shadingViewer));
     if (note.textContent !== message) note.textContent = message;
     markDrawn('#fig-shading');
   });

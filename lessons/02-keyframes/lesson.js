@@ -150,9 +150,87 @@ function makeView(canvas, reserveBottom = 0) {
     ctx.font = '12px system-ui, sans-serif';
     ctx.fillText(text, px, py - liftPx);
   };
+  /**
+   * A magnified copy of the world box `[x0, y0, x1, y1]` (centred, filling about 60 % of the inset's
+   * width or height) in the corner of the canvas that covers the fewest of `avoid`'s world points
+   * `[x, y, …]`, framed, with its source outlined in the view and joined to it; `drawInside()`
+   * draws into it with the view's own helpers (`toPx` maps into the inset meanwhile). Returns the
+   * inset's pixels per metre.
+   */
+  v.inset = (box, avoid, drawInside) => {
+    const [w, h, m] = [Math.min(190, v.w * 0.3), Math.min(120, (v.h - v.bottom) * 0.5), 6];
+    const [cx, cy] = [(box[0] + box[2]) / 2, (box[1] + box[3]) / 2];
+    const scale = Math.min(w / Math.max(box[2] - box[0], 1e-3), h / Math.max(box[3] - box[1], 1e-3)) / 1.6;
+    const bottom = v.h - v.bottom - h - m;
+    const corners = [[v.w - w - m, bottom], [m, bottom], [v.w - w - m, m], [m, m]];
+    const covered = ([x, y]) => {
+      let n = 0;
+      for (let i = 0; i < avoid.length; i += 2) {
+        const [px, py] = v.toPx(avoid[i], avoid[i + 1]);
+        if (px > x - m && px < x + w + m && py > y - m && py < y + h + m) n += 1;
+      }
+      return n;
+    };
+    const [x, y] = corners.reduce((best, c) => (covered(c) < covered(best) ? c : best));
+    // The source: the part of the view the inset shows (at least 8 px, to be seen), and a line to it.
+    const [sw, sh] = [Math.max(8, (w * v.scale) / scale), Math.max(8, (h * v.scale) / scale)];
+    const [sx, sy] = v.toPx(cx, cy);
+    const clamp = (a, lo, hi) => Math.min(Math.max(a, lo), hi);
+    ctx.strokeStyle = C.ink; ctx.lineWidth = 1;
+    ctx.strokeRect(sx - sw / 2, sy - sh / 2, sw, sh);
+    ctx.beginPath();
+    ctx.moveTo(clamp(x + w / 2, sx - sw / 2, sx + sw / 2), clamp(y + h / 2, sy - sh / 2, sy + sh / 2));
+    ctx.lineTo(clamp(sx, x, x + w), clamp(sy, y, y + h));
+    ctx.stroke();
+    const saved = [v.scale, v.ox, v.oy];
+    ctx.save();
+    ctx.fillStyle = '#ffffff';
+    ctx.fillRect(x, y, w, h);
+    ctx.beginPath(); ctx.rect(x, y, w, h); ctx.clip();
+    [v.scale, v.ox, v.oy] = [scale, x + w / 2 - cx * scale, y + h / 2 + cy * scale];
+    drawInside();
+    [v.scale, v.ox, v.oy] = saved;
+    ctx.restore();
+    ctx.strokeStyle = C.ink; ctx.lineWidth = 1;
+    ctx.strokeRect(x, y, w, h);
+    ctx.fillStyle = C.ink;
+    ctx.font = '12px system-ui, sans-serif';
+    ctx.fillText(`×${Math.round(scale / v.scale)}`, x + 4, y + 14);
+    return scale;
+  };
   new ResizeObserver(v.layout).observe(canvas);
   v.layout();
   return v;
+}
+
+/**
+ * The box `[x0, y0, x1, y1]` round the first loop of the sampled path `xy` (`[x0, y0, x1, y1, …]`,
+ * metres): the crossing and the samples between the first two segments that cross, the pair
+ * that closes a loop soonest along the path; null when no two cross (touching is not crossing).
+ * Where the 2D views magnify, not a property of the curve: the curve is Rust's samples.
+ */
+function loopBox(xy) {
+  const n = xy.length / 2;
+  // Which side of the line through samples i → j sample k lies on (the sign), twice the area.
+  const side = (i, j, k) => (xy[2 * j] - xy[2 * i]) * (xy[2 * k + 1] - xy[2 * i + 1])
+    - (xy[2 * j + 1] - xy[2 * i + 1]) * (xy[2 * k] - xy[2 * i]);
+  for (let j = 2; j < n - 1; j++) {
+    for (let i = 0; i < j - 1; i++) {
+      const [sa, sb] = [side(j, j + 1, i), side(j, j + 1, i + 1)];
+      if (side(i, i + 1, j) * side(i, i + 1, j + 1) < 0 && sa * sb < 0) {
+        const t = sa / (sa - sb);
+        const x = xy[2 * i] + t * (xy[2 * i + 2] - xy[2 * i]);
+        const y = xy[2 * i + 1] + t * (xy[2 * i + 3] - xy[2 * i + 1]);
+        const box = [x, y, x, y];
+        for (let k = i + 1; k <= j; k++) {
+          box[0] = Math.min(box[0], xy[2 * k]); box[1] = Math.min(box[1], xy[2 * k + 1]);
+          box[2] = Math.max(box[2], xy[2 * k]); box[3] = Math.max(box[3], xy[2 * k + 1]);
+        }
+        return box;
+      }
+    }
+  }
+  return null;
 }
 
 /**
@@ -494,7 +572,10 @@ function compareFigure(id) {
   const speed = figure.dataset.quantity === 'speed';
   const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Compare' });
   const layers = { a: { path: [] }, b: { path: [] } };
-  const view = makeView(figure.querySelector('canvas'));
+  const canvas = figure.querySelector('canvas');
+  const view = makeView(canvas);
+  // The box round the first loop of A's or B's path (both, when both loop), or null.
+  let loop = null;
   const plot = new Plot(figure.querySelector('.plot'), {
     title: speed ? 'Speed |p′(t)|' : 'Acceleration |p″(t)|',
     xLabel: 'time (s)', yLabel: speed ? 'speed (m/s)' : 'acceleration (m/s²)',
@@ -524,6 +605,8 @@ function compareFigure(id) {
     }
     plot.setData(cols);
     view.fit(all);
+    const loops = ['a', 'b'].filter((side) => !layers[side].held).map((side) => loopBox(layers[side].path)).filter(Boolean);
+    loop = loops.length ? loops.reduce((u, b) => [Math.min(u[0], b[0]), Math.min(u[1], b[1]), Math.max(u[2], b[2]), Math.max(u[3], b[3])]) : null;
   }
   gui.add(q, 'a', SCHEMES).name('A (blue)').onChange(sync);
   gui.add(q, 'b', SCHEMES).name('B (pink)').onChange(sync);
@@ -536,16 +619,19 @@ function compareFigure(id) {
     const { ctx } = view;
     ctx.clearRect(0, 0, view.w, view.h);
     view.grid();
-    // A step's grey jumps run from key to key, where a linear path runs too: drawn last, on top.
-    const order = ['a', 'b'].sort((p, q) => Number(layers[p].held) - Number(layers[q].held));
-    for (const side of order) view.path(layers[side].path, C[side], layers[side].held);
     const keys = scene.keys();
-    for (let i = 0; i < keys.length; i += 3) view.dot(keys[i + 1], keys[i + 2], 4, C.ink);
     const at = { a: schemes.a.position(tau), b: schemes.b.position(tau) };
     const radius = { a: 11, b: 6 };
-    // A's ball wider than B's, drawn first: where the two schemes agree (at the keys, and
-    // everywhere for the same scheme twice) A rings B, as its wide line shows under B's in the plot.
-    for (const side of ['a', 'b']) view.ball(...at[side], radius[side], C[side]);
+    const drawPaths = (ballScale) => {
+      // A step's grey jumps run from key to key, where a linear path runs too: drawn last, on top.
+      const order = ['a', 'b'].sort((p, q) => Number(layers[p].held) - Number(layers[q].held));
+      for (const side of order) view.path(layers[side].path, C[side], layers[side].held);
+      for (let i = 0; i < keys.length; i += 3) view.dot(keys[i + 1], keys[i + 2], 4, C.ink);
+      // A's ball wider than B's, drawn first: where the two schemes agree (at the keys, and
+      // everywhere for the same scheme twice) A rings B, as its wide line shows under B's in the plot.
+      for (const side of ['a', 'b']) view.ball(...at[side], radius[side] * ballScale, C[side]);
+    };
+    drawPaths(1);
     // Each name over both balls, off its own path: 6 px past its ball along the path's normal there
     // (screen space), on the side away from the other ball (A above where they meet or where the
     // ball stands still), with a white edge that keeps it readable on the other lines.
@@ -570,6 +656,14 @@ function compareFigure(id) {
     }
     c.textAlign = 'start';
     c.textBaseline = 'alphabetic';
+    // A loop a few centimetres across is a few pixels here, under A's ball: the inset magnifies
+    // it, with balls small enough to see the loop round them.
+    if (loop) {
+      const scale = view.inset(loop, [...layers.a.path, ...layers.b.path], () => drawPaths(0.4));
+      canvas.dataset.loopPx = Math.round(scale * Math.max(loop[2] - loop[0], loop[3] - loop[1]));
+    } else {
+      delete canvas.dataset.loopPx;
+    }
     cursor(plot, scene.startSec + tau);
     markDrawn(`#${id}`);
   });

@@ -1028,21 +1028,23 @@ pub fn hermite_basis_samples(samples: usize) -> Result<Vec<[f32; 5]>, String> {
         .collect())
 }
 
-/// The note beside the basis plot: the four weights at `s`, and with `use_exercise` whether
-/// exercise 2.1 matches them.
+/// The note beside the basis plot: the four weights at `s` (the reference's, which the plot
+/// draws), and with `use_exercise`, first, whether exercise 2.1 matches them.
 pub fn hermite_basis_note(runner: Runner, s: f32, use_exercise: bool) -> Result<String, String> {
     let s = in_range("s", s, 0.0, 1.0)?;
+    let [a, b, c, d] = curves::hermite_basis(s).map(format_number);
+    let weights = format!(
+        "At s = {}: h00 = {a}, h10 = {b}, h01 = {c}, h11 = {d}.",
+        format_number(s)
+    );
     if !use_exercise {
-        let [a, b, c, d] = curves::hermite_basis(s).map(format_number);
-        return Ok(format!(
-            "At s = {}: h00 = {a}, h10 = {b}, h01 = {c}, h11 = {d}.",
-            format_number(s)
-        ));
+        return Ok(weights);
     }
-    Ok(match hermite_basis_probes(runner, s) {
+    let verdict = match hermite_basis_probes(runner, s) {
         Ok(probes) => probe_note("hermite_basis", &probes, 1e-4).1,
         Err(f) => failure_note(EXERCISE_NAMES[0], EXERCISES_FILE, &f),
-    })
+    };
+    Ok(format!("{verdict}\n{weights}"))
 }
 
 /// Figure 3: one polynomial through all keys (Lagrange), with `n` keys and with two more, drawn

@@ -594,12 +594,14 @@ impl Frustum {
         Ok(out)
     }
 
-    /// Depth against distance: `(d, depth wgpu, depth OpenGL)` from z_near to z_far.
+    /// Depth against distance: `(d, depth wgpu, depth OpenGL)` over the point's whole trip
+    /// ([`Frustum::distance_at`], half of z_near to 15 % past z_far), so the plot's playhead never
+    /// leaves it; outside z_near..z_far the depths leave their range (the point is clipped there).
     pub fn sample_depth(&self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
         check_samples(samples)?;
         Ok((0..samples)
             .map(|k| {
-                let d = self.near + (self.far - self.near) * k as f32 / (samples - 1) as f32;
+                let d = self.distance_at(k as f32 / (samples - 1) as f32);
                 [
                     d,
                     raster::ndc_depth_wgpu(d, self.near, self.far),
@@ -1148,14 +1150,17 @@ impl DepthPrecision {
         }
         frame.first_clear_label_by(view, LINE_MARGIN_PX, along, &off_floor);
         frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 7.2, 0.5));
+        // The steps in one notation, three digits each (they span many decades: 1.53e-4 m,
+        // 1.53e-2 m, 1.53e2 m), and the ratio to a tenth, as a whole number when it is one.
+        let step = |d: f32| format!("{:.2e}", raster::depth_step(d, self.near, self.far, self.bits));
         format!(
             "z_far / z_near = {}. With {} bits, one depth step is worth {} m at 1 m, {} m at 10 m and {} m at \
              z_far. Along a line of sight the floors are d · gap / h apart; the step exceeds that beyond {} m{}.",
-            format_number(self.far / self.near),
+            (self.far / self.near * 10.0).round() / 10.0,
             self.bits,
-            format_number(raster::depth_step(1.0, self.near, self.far, self.bits)),
-            format_number(raster::depth_step(10.0, self.near, self.far, self.bits)),
-            format_number(raster::depth_step(self.far, self.near, self.far, self.bits)),
+            step(1.0),
+            step(10.0),
+            step(self.far),
             format_number(from),
             if from > self.far { ", past z_far: no fighting" } else { ": there the floors fight" },
         )

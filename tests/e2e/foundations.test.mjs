@@ -1,0 +1,73 @@
+// Lessons 00 and 02 in Chromium, where only the page decides: lesson 00's Figure 5 layout at
+// both page sizes (the two per-pixel totals side by side; at 800 x 600 the sphere, the six images
+// and the shininess slider on one screen; at 1600 x 1000 the images in one row), Figure 1's
+// segments slider off for the tetrahedron, Figure 2's note after a rejected value; lesson 02's
+// Figure 7 inset, magnifying the loop of the loop-prone keys.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { launch, frames, setControl, serveDist, openPage } from './browser.mjs';
+
+const site = serveDist();
+
+/** Viewport boxes of every element matching `selector`. */
+const boxes = (page, selector) => page.evaluate((s) => [...document.querySelectorAll(s)].map((e) => {
+  const r = e.getBoundingClientRect();
+  return { top: r.top, bottom: r.bottom, left: r.left, right: r.right, label: e.getAttribute('aria-label') ?? e.textContent };
+}), selector);
+
+test('lesson 00: Figure 5 keeps its totals side by side and its Try this on one screen; Figures 1 and 2 controls and notes', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/00-triangles-to-pixels/?backend=webgl2`);
+    for (const [w, h] of [[800, 600], [1600, 1000]]) {
+      await page.setViewportSize({ width: w, height: h });
+      await page.locator('#fig-shading').evaluate((f) => f.scrollIntoView());
+      await frames(page, 2);
+      const images = await boxes(page, '#shading-images canvas');
+      const [sphere] = await boxes(page, '#fig-shading .stage > canvas');
+      const [slider] = (await boxes(page, '#fig-shading .lil-controller')).filter((c) => c.label.startsWith('shininess'));
+      const named = (start) => images.find((b) => b.label.startsWith(start));
+      const [phong, blinn] = [named('Phong total'), named('Blinn-Phong total')];
+      assert.ok(Math.abs(phong.top - blinn.top) < 1, `${w}: the totals share a row ${JSON.stringify([phong, blinn])}`);
+      const between = images.filter((b) => b.top === phong.top && b.left > phong.right && b.right < blinn.left);
+      assert.ok(blinn.left > phong.right && between.length === 0, `${w}: the totals side by side ${JSON.stringify(images)}`);
+      const bottom = Math.max(...images.map((b) => b.bottom), w === 800 ? slider.bottom : 0);
+      assert.ok(bottom - sphere.top <= h, `${w}: sphere to ${w === 800 ? 'slider' : 'images'} ${bottom - sphere.top} px, over one screen of ${h}`);
+      if (w === 1600) assert.ok(images.every((b) => b.top === images[0].top), `1600: the images in one row ${JSON.stringify(images)}`);
+    }
+
+    // Figure 1: the tetrahedron has no segments; the slider says so by being off.
+    const segments = page.locator('#fig-mesh .lil-controller', { hasText: 'sphere segments' });
+    await setControl(page, '#fig-mesh', 'shape', 'tetrahedron');
+    assert.match(await segments.getAttribute('class'), /lil-disabled/);
+    await setControl(page, '#fig-mesh', 'shape', 'sphere');
+    assert.doesNotMatch(await segments.getAttribute('class'), /lil-disabled/);
+
+    // Figure 2: a rejected value's sentence ends before the figure's own note starts.
+    await setControl(page, '#fig-frustum', 'z_far', 0.5);
+    await frames(page);
+    assert.match(await page.locator('#frustum-note').textContent(), /must be greater than z_near \(1\)\. \S/);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 02: Figure 7 magnifies the loop-prone loop in an inset, and shows none without a loop', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2`, { width: 1600, height: 1000 });
+    const canvas = page.locator('#fig-centripetal .stage > canvas');
+    await canvas.evaluate((c) => c.scrollIntoView());
+    await frames(page);
+    assert.equal(await canvas.getAttribute('data-loop-px'), null, 'the default keys do not loop');
+    await setControl(page, '#fig-centripetal', 'keys (all figures)', 'loop-prone');
+    await frames(page);
+    // The loop, about 3 cm and a few pixels across in the view, at least 60 px across in the inset.
+    const px = Number(await canvas.getAttribute('data-loop-px'));
+    assert.ok(px >= 60, `the loop is ${px} px across in the inset`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
