@@ -401,12 +401,13 @@ fn follow_view() -> [f32; 6] {
 #[test]
 fn the_antenna_figure_keeps_all_in_view_with_a_still_camera() {
     // Figure 4 at its page camera (fitted to what the figure declares), on the canvases the page
-    // gives it at 1600 × 1000 and 800 × 600, over the loop at the page's sliders and at their
+    // gives it at 1600 × 1000 (650 × 420, beside its panel) and 800 × 600 (760 × 340, above its
+    // panel), over the loop at the page's sliders and at their
     // corners: the declared box, every joint of the antenna, the body's corners and the names
     // lie inside the canvas; at the page's sliders the camera stays put over the loop (the
     // tip's name, anchored at the tip, stays inside the declared box and never pulls the fit);
     // and the declared box (the body's bottom to the antenna's top along the slide) spans at
-    // least 70 % of the canvas's height.
+    // least 65 % of the canvas's height.
     use glam::Vec2;
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     use inbetween::draw::box_corners;
@@ -419,7 +420,7 @@ fn the_antenna_figure_keeps_all_in_view_with_a_still_camera() {
             }
         }
     }
-    for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+    for size in [Vec2::new(650.0, 420.0), Vec2::new(760.0, 340.0)] {
         for &(k, c, n) in &settings {
             let mut scene = FollowThrough::new();
             scene.set(k, c, n).unwrap();
@@ -459,7 +460,7 @@ fn the_antenna_figure_keeps_all_in_view_with_a_still_camera() {
                 let ys = frame.keep_in_view.iter().map(|p| on(*p).y);
                 let (top, bottom) = ys.fold((f32::MAX, f32::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
                 assert!(
-                    bottom - top >= 0.7 * size.y,
+                    bottom - top >= 0.65 * size.y,
                     "{at}: the figure spans {} of {} px of the canvas's height",
                     bottom - top,
                     size.y
@@ -867,7 +868,7 @@ fn the_antenna_figure_fills_its_canvas() {
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     use inbetween::figures::expressive::FollowThrough;
     let view = follow_view();
-    for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+    for size in [glam::Vec2::new(650.0, 420.0), glam::Vec2::new(760.0, 340.0)] {
         let mut scene = FollowThrough::new();
         let (mut lo, mut hi) = (glam::Vec2::splat(f32::MAX), glam::Vec2::splat(f32::MIN));
         for k in 0..40 {
@@ -885,12 +886,12 @@ fn the_antenna_figure_fills_its_canvas() {
                 (lo, hi) = (lo.min(c), hi.max(c));
             }
         }
-        // Seen from the front left and above, the slide and the antenna span at least 70 % of
-        // the canvas both ways at both sizes (from the front, the 3.7 m slide on the 650 × 420
-        // canvas left its lower third empty: 57 % of its height).
+        // Seen from the front left and above, the slide and the antenna span at least 65 % of
+        // the canvas both ways on the canvases of both page sizes (from the front, the 3.7 m
+        // slide on the 650 × 420 canvas left its lower third empty: 57 % of its height).
         let fill = (hi - lo) / size;
         assert!(
-            fill.x >= 0.7 && fill.y >= 0.7,
+            fill.x >= 0.65 && fill.y >= 0.65,
             "on {size}: {fill} of the canvas"
         );
     }
