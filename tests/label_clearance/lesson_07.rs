@@ -722,9 +722,9 @@ fn lesson_07_target_names_sit_nearest_their_own_target() {
     // dot and line, and its box comes nearer its own target's dot than any other target's (a name
     // nearer a neighbour's target reads as naming that one). As on the page, the figure places it
     // for the view of the frame before. At the page's start target (where the page test's reset
-    // puts it back) and the targets the quiz's "show me" buttons set, every case passes; over the sweep at most 1 in 1000 cases may fail, where an
-    // orbited view lines the targets up beside the canvas's edge and no place by the target is
-    // both nearer it and clear.
+    // puts it back) and the targets the quiz's "show me" buttons set, every case passes; over
+    // the sweep at most 1 in 1000 cases may fail, where an orbited view lines the targets up
+    // beside the canvas's edge and no place by the target is both nearer it and clear.
     use inbetween::figures::ik::{IkFigure, ROOTS_X, SOLVERS};
     let figures = [
         // Each figure's view, its numbers of segments, and its joint limits with pole angles.
