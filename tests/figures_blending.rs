@@ -974,12 +974,20 @@ fn a_planted_foot_leaves_a_dot_and_a_sliding_foot_a_trail() {
         (shortest, longest) = (shortest.min(trail), longest.max(trail));
         let links = l.footprint_links().len();
         assert!(links > 0);
-        let on_top = frame
-            .strokes
-            .iter()
+        // One line over the legs per link, in a white outline 1 px wider each side: all the
+        // outlines first, so that no outline covers a join of the trail it outlines. Seen along
+        // the walk, a trail lies over the legs, and the white keeps it a line of its own.
+        let on_top: Vec<_> = (frame.strokes.iter())
             .filter(|s| s.depth_bias == inbetween::draw::ON_TOP)
-            .count();
-        assert_eq!(on_top, links, "one line over the legs per link");
+            .collect();
+        assert_eq!(on_top.len(), 2 * links, "an outline and a line per link");
+        let (outlines, lines) = on_top.split_at(links);
+        for (o, line) in outlines.iter().zip(lines) {
+            assert_eq!((o.a, o.b), (line.a, line.b));
+            assert_eq!(o.color, [1.0; 4], "a white outline");
+            assert_eq!(line.color[..3], inbetween::figures::palette::PURPLE.to_array());
+            assert_eq!(o.width_px, line.width_px + 2.0);
+        }
         let dots = frame
             .markers
             .iter()

@@ -676,9 +676,10 @@ impl Default for LocomotionFigure {
 }
 
 /// How big a footprint is drawn, and how wide the trail between one foot's footprints, CSS
-/// pixels (the same at any distance).
+/// pixels (the same at any distance); the trail's white outline is 1 px wider each side (a
+/// stroke is at most [`crate::draw::MAX_WIDTH_PX`] wide).
 const FOOTPRINT_PX: f32 = 11.0;
-const TRAIL_PX: f32 = 5.0;
+pub const TRAIL_PX: f32 = 4.0;
 /// How far (metres) a drawn footprint may move from one sample to the next beyond the foot's
 /// own move before it counts as the drawing's snap-back at a loop rather than a slide: well
 /// below a synchronised snap (a blended cycle's travel, 57 to 96 cm) and far above rounding.
@@ -1216,10 +1217,15 @@ impl LocomotionFigure {
         let z = (z + 0.5 * TRACK_LENGTH).rem_euclid(TRACK_LENGTH) - 0.5 * TRACK_LENGTH;
         let place = Vec3::new(origin.x + x, 0.0, z);
         // Over everything: a foot slides along the way it walks, under its own leg, which
-        // would hide the trail from most views.
-        for &[a, b] in &self.footprint_links {
-            let (a, b) = (self.footprints[a] + place, self.footprints[b] + place);
-            frame.wide_line_on_top(a, b, color, TRAIL_PX);
+        // would hide the trail from most views. Each trail in a white outline (all the outlines
+        // first, so none covers a join): seen along the walk, a trail lies over the legs, and
+        // the white keeps it a line of its own there. Beside the feet instead, it would no
+        // longer mark where they were.
+        for (width, colour) in [(TRAIL_PX + 2.0, Vec3::ONE), (TRAIL_PX, color)] {
+            for &[a, b] in &self.footprint_links {
+                let (a, b) = (self.footprints[a] + place, self.footprints[b] + place);
+                frame.wide_line_on_top(a, b, colour, width);
+            }
         }
         // A dot where each stance begins and ends: one dot for a foot that held still, the two
         // ends of its trail for one that slid.

@@ -772,10 +772,13 @@ impl FollowThrough {
         let t = in_range("time", time_sec, 0.0, Self::DURATION)?;
         self.simulate(t);
         frame.grid(12, 0.5);
-        // The body's whole slide (its sides at ±1.82 m) and the antenna above it, no wider: the
-        // camera fits this at every size, and the slide fills the canvas's width.
+        // From the body's bottom to the antenna's top along the body's whole slide (its sides at
+        // ±1.82 m), no wider: the camera fits this at every size and, at the page's sliders, does
+        // not move as the antenna swings (its joints swing out to 1.98 m only at the sliders'
+        // corners, where the tip's name pulls the fit). Seen from the front left and above
+        // (lessons/02b-expressive-animation/lesson.js), it fills the canvas both ways.
         frame.keep_box_in_view(
-            Vec3::new(-1.85, 0.0, -0.25),
+            Vec3::new(-1.85, Self::base(0.0).y - 0.5, -0.25),
             Vec3::new(1.85, Self::base(0.0).y + Self::LENGTH, 0.25),
         );
         let antenna = self.shown();
@@ -790,16 +793,20 @@ impl FollowThrough {
             frame.marker(*p, crate::draw::DOT_PX, ANTENNA);
         }
         frame.marker(antenna.tip(), 16.0, palette::PINK);
-        frame.label(antenna.tip() + Vec3::Y * 0.2, "tip", palette::PINK);
+        // Above the tip's dot by a gap on screen: anchored at the tip, inside the box above.
+        frame.label_off_dot(antenna.tip(), 16.0, glam::Vec2::NEG_Y, "tip", palette::PINK, 0);
         let running_yours = self.use_exercise && self.problem.is_none();
         if running_yours {
             // The reference as a ghost beside the student's antenna.
             let reference = &self.reference.positions;
             frame.wide_polyline(reference, GHOST_REFERENCE, crate::draw::CURVE_PX);
-            frame.label(
-                self.reference.tip() + Vec3::new(0.0, 0.2, 0.0),
+            frame.label_off_dot(
+                self.reference.tip(),
+                0.0,
+                glam::Vec2::NEG_Y,
                 "reference",
                 GHOST_REFERENCE,
+                0,
             );
         }
         let critical = 2.0 * self.stiffness.sqrt();

@@ -995,27 +995,26 @@ impl IkFigure {
         };
         let g = LABEL_GAP_PX;
         // A target's name nearer another target only where no place nearer its own is clear.
-        let first_clear = |nearest: bool| {
-            [
-                (near, g, true),
-                (near, g, false),
-                (near, 0.0, true),
-                (near, 0.0, false),
-                (around, g, true),
-                (around, g, false),
-                (around, 0.0, true),
-                (around, 0.0, false),
-            ]
-            .into_iter()
-            .find_map(|(list, margin_px, strict)| {
+        let tiers = [
+            (near, g, true),
+            (near, g, false),
+            (near, 0.0, true),
+            (near, 0.0, false),
+            (around, g, true),
+            (around, g, false),
+            (around, 0.0, true),
+            (around, 0.0, false),
+        ];
+        let clear = [true, false].into_iter().find_map(|nearest| {
+            tiers.iter().find_map(|&(list, margin_px, strict)| {
                 list.iter().find(|c| {
                     frame.label_is_clear_by(view_proj, size, c, margin_px)
                         && !(strict && leader_crosses(c))
                         && (!nearest || nearest_own(c))
                 })
             })
-        };
-        if let Some(candidate) = first_clear(true).or_else(|| first_clear(false)) {
+        });
+        if let Some(candidate) = clear {
             placed = candidate.clone();
         }
         frame.labels.push(placed);

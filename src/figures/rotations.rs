@@ -508,15 +508,6 @@ impl Interpolation {
         // (a ray from the centre); slerp walks the arc at equal angles.
         let end = at_angle(phi_used, CIRCLE_RADIUS);
         let start = at_angle(0.0, CIRCLE_RADIUS);
-        let on_chord = start.lerp(end, t);
-        // The dots at t: at t = 0 (and 1) lerp's and nlerp's lie on a key's (all three methods
-        // start at a), so they nest, largest first: nlerp's under the key's under lerp's, each
-        // ring of colour showing round the next.
-        frame.marker(
-            CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS,
-            NLERP_NOW_PX,
-            nlerp_color,
-        );
         for (q, _, color) in keys {
             frame.marker(to_world(q), KEY_DOT_PX, color);
         }
@@ -535,9 +526,18 @@ impl Interpolation {
             slerp_ticks.push(at_angle(phi_used * s, CIRCLE_RADIUS * SLERP_TICKS_OUT));
         }
         frame.ticks(&slerp_ticks, 10.0, slerp_color);
+        // The dots at t, each smaller than the one it lies on: near t = 0 (and 1) nlerp's and
+        // lerp's lie on a key's (all three methods start at a), and a ring of each shows round
+        // the next.
+        let on_chord = start.lerp(end, t);
+        frame.marker(
+            CIRCLE_CENTRE + (on_chord - CIRCLE_CENTRE).normalize_or_zero() * CIRCLE_RADIUS,
+            NOW_DOT_PX,
+            nlerp_color,
+        );
         frame.marker(
             at_angle(phi_used * t, CIRCLE_RADIUS * SLERP_TICKS_OUT),
-            14.0,
+            NOW_DOT_PX,
             slerp_color,
         );
         frame.marker(on_chord, LERP_NOW_PX, palette::DARK);
@@ -667,11 +667,12 @@ impl Interpolation {
     }
 }
 
-/// Figure 2's dots, CSS pixels across: a, −a, b and −b; nlerp's and lerp's at t, which nest
-/// round a key's at t = 0 and 1 with a ring of colour showing round each (a dot's outline takes
-/// 1.75 px of its radius).
-pub const KEY_DOT_PX: f32 = 15.0;
-pub const NLERP_NOW_PX: f32 = 22.0;
+/// Figure 2's dots, CSS pixels across: a, −a, b and −b; nlerp's and slerp's at t; lerp's at t.
+/// Each is 7 px smaller than the one before, so that where lerp's lies on nlerp's and nlerp's on
+/// a key's (at t = 0 and 1) a ring of each shows round the next (a dot's outline takes 1.75 px
+/// of its radius).
+pub const KEY_DOT_PX: f32 = 21.0;
+pub const NOW_DOT_PX: f32 = 14.0;
 pub const LERP_NOW_PX: f32 = 7.0;
 /// How far Figure 2's key names keep from its arcs' labels, CSS pixels: a word's gap and more.
 pub const ARC_LABEL_GAP_PX: f32 = 14.0;
