@@ -3,7 +3,7 @@
 //! timing, and reference values from scipy (`tests/data/curves_scipy.csv`, written by
 //! `scripts/reference/curves_scipy.py`).
 //!
-//! Run with `cargo test --test curves -- --nocapture` to see the measured errors.
+//! Run with `cargo test --test native curves:: -- --nocapture` to see the measured errors.
 // Native only (proptest); the browser runs tests/transform.rs and tests/web*.rs.
 #![cfg(not(target_arch = "wasm32"))]
 // Loops over key indices read like the formulas (`i − 1`, `i`, `i + 1`).
