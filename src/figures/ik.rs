@@ -1018,10 +1018,21 @@ impl IkFigure {
             (around, 0.0, true),
             (around, 0.0, false),
         ];
+        // With the gap from dots and lines, also [`LABELS_ROOMY_PX`] from every label placed
+        // before: text set wider than measured makes two names 6 px apart touch.
+        let roomy = |c: &crate::draw::Label| {
+            c.first_place(view_proj, size).is_some_and(|r| {
+                frame.labels.iter().all(|o| {
+                    o.first_place(view_proj, size)
+                        .is_none_or(|o| !o.overlaps(&r, LABELS_ROOMY_PX))
+                })
+            })
+        };
         let clear = [true, false].into_iter().find_map(|nearest| {
             tiers.iter().find_map(|&(list, margin_px, strict)| {
                 list.iter().find(|c| {
                     frame.label_is_clear_by(view_proj, size, c, margin_px)
+                        && (margin_px == 0.0 || roomy(c))
                         && !(strict && leader_crosses(c))
                         && (!nearest || nearest_own(c))
                 })
@@ -1280,6 +1291,8 @@ fn beside_line_px(
 /// The gap a placed label keeps from every dot's and line's edge where it can, CSS pixels: past
 /// a line's antialiased rim (1 px), with a pixel to spare.
 const LABEL_GAP_PX: f32 = 2.0;
+/// The room a label keeps from the others where it can, CSS px.
+const LABELS_ROOMY_PX: f32 = 12.0;
 
 /// How far below its root a chain's name sits first, metres.
 const ROOT_LABEL_FIRST_M: f32 = 0.12;

@@ -852,3 +852,40 @@ fn lesson_07_target_names_sit_nearest_their_own_target() {
         failures[..failures.len().min(12)].join("\n")
     );
 }
+
+#[test]
+fn lesson_07_labels_keep_room_between_them_far_and_near() {
+    // Figure 1 at its page camera, both canvases, with the target dragged far up and out of
+    // reach (0.88, 1.5, −0.52) and near the root (the quiz's (0.05, 0.05, 0)): every two shown
+    // labels, as the page lays them out, keep 10 px apart, so that two names never read as one
+    // ("CCD target FABRIK target") where the text is set wider than measured.
+    use inbetween::figures::ik::IkFigure;
+    let mut failures = Vec::new();
+    for target in [Vec3::new(0.88, 1.5, -0.52), Vec3::new(0.05, 0.05, 0.0)] {
+        let mut scene = IkFigure::new();
+        scene.set_target(target).unwrap();
+        for size in CANVASES {
+            let (frame, camera) = drawn_for_view(
+                &mut scene,
+                [0.25, 0.45, 0.0, 4.3, 0.1, 0.25],
+                size,
+                |s, f| {
+                    s.draw(f).unwrap();
+                },
+                |s, c, size| s.set_view(c, size.x, size.y),
+            );
+            let boxes = label_boxes(&frame, &camera, size);
+            for (i, (a, ra)) in boxes.iter().enumerate() {
+                for (b, rb) in &boxes[i + 1..] {
+                    if ra.overlaps(rb, 10.0) {
+                        failures.push(format!(
+                            "07 Fig 1, target {target} on {size}: {a:?} at {:?} and {b:?} at {:?}",
+                            ra.min, rb.min
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
