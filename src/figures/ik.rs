@@ -1007,15 +1007,16 @@ impl IkFigure {
             })
         };
         let g = LABEL_GAP_PX;
-        // A target's name nearer another target only where no place nearer its own is clear.
+        // A target's name nearer another target only where no place nearer its own is clear; a
+        // miss's label touching a line before its leader crosses side d's label.
         let tiers = [
             (near, g, true),
-            (near, g, false),
             (near, 0.0, true),
+            (near, g, false),
             (near, 0.0, false),
             (around, g, true),
-            (around, g, false),
             (around, 0.0, true),
+            (around, g, false),
             (around, 0.0, false),
         ];
         // With the gap from dots and lines, also [`LABELS_ROOMY_PX`] from every label placed
