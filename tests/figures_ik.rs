@@ -792,3 +792,94 @@ fn the_hinges_gap_gets_a_side_view() {
     f.draw(&mut frame).unwrap();
     assert!(frame.inset.is_none());
 }
+
+#[test]
+fn the_students_chains_are_drawn_last_and_over_the_reference() {
+    // With "use my exercise" and a correct answer, the student's chains lie exactly inside the
+    // reference's bars and joints: they must come after every reference chain's lines and be
+    // drawn over everything, thinner than the reference's joints, or a right answer is hidden.
+    use inbetween::draw::ON_TOP;
+    let mut f = IkFigure::new();
+    f.set_runner(correct);
+    f.set_use_exercise(true);
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    let pink = |c: [f32; 4]| glam::Vec4::from(c).truncate() == palette::STUDENT;
+    let student: Vec<usize> = (0..frame.strokes.len())
+        .filter(|&i| pink(frame.strokes[i].color))
+        .collect();
+    // Two chains of two segments: 7.1 on the two-joint chain, 7.2 on CCD's.
+    assert_eq!(student.len(), 4, "the student's segments");
+    let last_chain = (0..frame.strokes.len())
+        .filter(|&i| {
+            let c = glam::Vec4::from(frame.strokes[i].color).truncate();
+            c == palette::BLUE || c == palette::ORANGE
+        })
+        .max()
+        .unwrap();
+    assert!(student[0] > last_chain, "drawn after the reference chains");
+    for &i in &student {
+        assert_eq!(frame.strokes[i].depth_bias, ON_TOP, "stroke {i} on top");
+        assert!(frame.strokes[i].width_px < 4.0, "thinner than the bars");
+    }
+    let dots: Vec<_> = frame.markers.iter().filter(|m| pink(m.color)).collect();
+    assert_eq!(dots.len(), 6, "the student's joints");
+    // A negative size: drawn over everything; smaller than a joint's sphere on the canvas.
+    assert!(dots.iter().all(|m| m.size_px < 0.0 && m.size_px > -9.0));
+}
+
+#[test]
+fn two_segments_stall_on_the_straight_line_to_a_target_above_the_root() {
+    // Figure 2's Try this with segments at 2 (lessons/07-inverse-kinematics/index.html): at
+    // (0, 0.97, 0) the root, the rest pose's middle joint (straight above the root) and the
+    // target start on one line, so CCD and FABRIK lay the chain straight along it and stay
+    // exactly 30 mm short (1 m of chain, 0.97 m to the target) however many iterations run.
+    // At x = 0.01 the start is just off that line: both errors fall, slowly; FABRIK needs
+    // nearly all 50 iterations and CCD is still about 29 mm short after them.
+    let mut f = IkFigure::new();
+    f.set_segments(2.0).unwrap();
+    f.set_target(Vec3::new(0.0, 0.97, 0.0)).unwrap();
+    for iterations in [1.0, 10.0, MAX_ITERATIONS as f32] {
+        f.set_iterations(iterations).unwrap();
+        let results = f.results().unwrap();
+        assert!(results[0].unwrap().reached, "two-joint IK reaches it");
+        for k in 1..3 {
+            let r = results[k].unwrap();
+            assert!(!r.reached, "solver {k}, {iterations} iterations");
+            assert!((r.error - 0.03).abs() < 1e-5, "solver {k}: {}", r.error);
+            // On the line x = z = 0 through the root (the figure's chains sit at their roots).
+            let chain = f.chain(k).unwrap();
+            let root = chain[0];
+            assert!(
+                chain.iter().all(|p| (*p - root).x.abs() < 1e-4 && p.z.abs() < 1e-4),
+                "{chain:?}"
+            );
+        }
+    }
+    f.set_target(Vec3::new(0.01, 0.97, 0.0)).unwrap();
+    f.set_iterations(MAX_ITERATIONS as f32).unwrap();
+    let samples = f.error_samples().unwrap();
+    let (first, last) = (&samples[..3], &samples[samples.len() - 3..]);
+    assert!(last[1] < first[1] && last[2] < first[2], "{first:?} {last:?}");
+    let results = f.results().unwrap();
+    let (ccd, fabrik) = (results[1].unwrap(), results[2].unwrap());
+    assert!(fabrik.reached && fabrik.iterations >= 40, "{fabrik:?}");
+    assert!(!ccd.reached && (ccd.error - 0.029).abs() < 5e-4, "{ccd:?}");
+}
+
+#[test]
+fn behind_the_head_the_turn_stays_at_the_cone_all_round_the_loop() {
+    // Figure 4's Try this: the page's target (x = 1.2, y = 1.9) moved behind the head
+    // (z = −1.2). With the 70° cone the target is outside the cone all round its loop and the
+    // plot's head turn is flat at 70°; with 180° the head follows it all round.
+    let mut a = AimFigure::new();
+    a.set_target(Vec3::new(1.2, 1.9, -1.2)).unwrap();
+    for row in a.plot_samples(80).unwrap().chunks(3) {
+        assert!(row[1] > 70.0 + 1.0, "outside the cone: {row:?}");
+        assert!((row[2] - 70.0).abs() < 0.2, "flat at the rim: {row:?}");
+    }
+    a.set_max_angle_deg(180.0).unwrap();
+    for row in a.plot_samples(80).unwrap().chunks(3) {
+        assert!((row[2] - row[1]).abs() < 0.2, "follows: {row:?}");
+    }
+}

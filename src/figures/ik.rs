@@ -36,6 +36,9 @@ pub const ROOTS_X: [f32; 3] = [-1.1, 0.0, 1.1];
 const GRAB_RADIUS_PX: f32 = 18.0;
 /// How close the student's joints must be to the reference's, metres.
 const STUDENT_TOLERANCE: f32 = 2e-3;
+/// The student's chain's line and joints, CSS px: inside the reference's bars and spheres.
+const STUDENT_PX: f32 = 2.5;
+const STUDENT_DOT_PX: f32 = 7.0;
 /// The bend of the rest pose at each joint, about −z (the chain leans towards +x).
 const REST_BEND_RAD: f32 = 12.0 * DEG;
 
@@ -804,21 +807,31 @@ impl IkFigure {
                     self.draw_hinge_plane(frame, root);
                 }
             }
-            if let Some(student) = &self.student[k.min(1)] {
-                if k < 2 && self.use_exercise {
-                    let shifted: Vec<Vec3> = student.iter().map(|&p| p + root).collect();
-                    frame.wide_polyline(&shifted, palette::STUDENT, crate::draw::CURVE_PX);
-                    for &p in &shifted {
-                        frame.marker(p, crate::draw::DOT_PX, palette::STUDENT);
-                    }
-                }
-            }
             // The chain's reach and its target stay in view.
             frame.keep_box_in_view(
                 root + Vec3::new(-0.6, -0.15, -0.2),
                 root + Vec3::new(0.6, 1.05, 0.2),
             );
             frame.keep_in_view.push(target);
+        }
+        // The student's chains (7.1 on the two-joint chain, 7.2 on CCD's) after every reference
+        // chain and over everything, thinner than the bars and joints they trace: a correct
+        // answer lies inside the reference chain and must still show.
+        if self.use_exercise {
+            for k in self.shown_solvers().filter(|&k| k < 2) {
+                if let Some(student) = &self.student[k] {
+                    let root = Vec3::new(ROOTS_X[k], 0.0, 0.0);
+                    let shifted: Vec<Vec3> = student.iter().map(|&p| p + root).collect();
+                    let on_top = StrokeStyle {
+                        on_top: true,
+                        ..StrokeStyle::solid(STUDENT_PX)
+                    };
+                    frame.stroke(&shifted, palette::STUDENT, on_top);
+                    for &p in &shifted {
+                        frame.marker_on_top(p, STUDENT_DOT_PX, palette::STUDENT);
+                    }
+                }
+            }
         }
         // Last, once every chain is drawn (a chain passes another's root when the target lies
         // far to the side), highest priority first, as the page's layout places them.
@@ -994,21 +1007,33 @@ impl IkFigure {
             })
         };
         let g = LABEL_GAP_PX;
-        // A target's name nearer another target only where no place nearer its own is clear.
+        // A target's name nearer another target only where no place nearer its own is clear; a
+        // miss's label touching a line before its leader crosses side d's label.
         let tiers = [
             (near, g, true),
-            (near, g, false),
             (near, 0.0, true),
+            (near, g, false),
             (near, 0.0, false),
             (around, g, true),
-            (around, g, false),
             (around, 0.0, true),
+            (around, g, false),
             (around, 0.0, false),
         ];
+        // With the gap from dots and lines, also [`LABELS_ROOMY_PX`] from every label placed
+        // before: text set wider than measured makes two names 6 px apart touch.
+        let roomy = |c: &crate::draw::Label| {
+            c.first_place(view_proj, size).is_some_and(|r| {
+                frame.labels.iter().all(|o| {
+                    o.first_place(view_proj, size)
+                        .is_none_or(|o| !o.overlaps(&r, LABELS_ROOMY_PX))
+                })
+            })
+        };
         let clear = [true, false].into_iter().find_map(|nearest| {
             tiers.iter().find_map(|&(list, margin_px, strict)| {
                 list.iter().find(|c| {
                     frame.label_is_clear_by(view_proj, size, c, margin_px)
+                        && (margin_px == 0.0 || roomy(c))
                         && !(strict && leader_crosses(c))
                         && (!nearest || nearest_own(c))
                 })
@@ -1267,6 +1292,8 @@ fn beside_line_px(
 /// The gap a placed label keeps from every dot's and line's edge where it can, CSS pixels: past
 /// a line's antialiased rim (1 px), with a pixel to spare.
 const LABEL_GAP_PX: f32 = 2.0;
+/// The room a label keeps from the others where it can, CSS px.
+const LABELS_ROOMY_PX: f32 = 12.0;
 
 /// How far below its root a chain's name sits first, metres.
 const ROOT_LABEL_FIRST_M: f32 = 0.12;

@@ -15,7 +15,7 @@ fn lesson_02b_path_names_keep_off_the_ghosts_and_balls_when_orbited() {
         for yaw in [-1.6, -1.04, -0.5, 0.0, 0.5, 1.04, 1.6] {
             for pitch in [0.1, 0.35, 0.7] {
                 for time in [0.0, 0.4, 0.75, 2.2] {
-                    for size in CANVASES {
+                    for size in CANVASES_02B {
                         failures.extend(failure_of(|| {
                             let mut scene = Spacing::new();
                             scene.set_ghosts(ghosts).unwrap();
@@ -100,7 +100,7 @@ fn lesson_02b_straight_line_name_sits_under_its_row_at_the_page_camera() {
     // meet.
     use inbetween::figures::expressive::Spacing;
     for time in [0.0, 0.2, 1.4, 2.9] {
-        for size in CANVASES {
+        for size in CANVASES_02B {
             let mut scene = Spacing::new();
             let (frame, camera) = drawn_for_view(
                 &mut scene,
@@ -140,7 +140,7 @@ fn lesson_02b_straight_line_name_keeps_to_its_row_where_the_rows_meet() {
     let mut failures = Vec::new();
     for (yaw, pitch) in [(-0.59, 0.69), (-1.04, 0.69), (-0.59, 0.5)] {
         for time in [0.0, 0.4, 1.1, 2.2] {
-            for size in CANVASES {
+            for size in CANVASES_02B {
                 let mut scene = Spacing::new();
                 scene.set_ghosts(48.0).unwrap();
                 scene.set_arc_height(2.35).unwrap();

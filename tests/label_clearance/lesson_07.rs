@@ -715,9 +715,8 @@ fn lesson_07_aim_miss_leader_keeps_off_the_dashed_line() {
 fn lesson_07_target_names_sit_nearest_their_own_target() {
     // Figures 1 to 3 at their page cameras and orbited as the page test's drag orbits them (yaw
     // down by 0.2 of the canvas's width and pitch up by 0.1 of its height, at 0.008 rad a pixel:
-    // (−1.04, +0.34) on the 650 px canvas, (−1.22, +0.30) on the 760 px one), on both canvases
-    // and on the 760 × 420 one the page gives the figures at 800 × 600 (measured in Chromium), over
-    // each figure's controls (segments, joint limits, 10 and 40 iterations) and targets all round
+    // (−1.04, +0.34) on the 650 px canvas, (−1.22, +0.34) on the 760 px one), on both canvases,
+    // over each figure's controls (segments, joint limits, 10 and 40 iterations) and targets all round
     // the reach: each target's name ("CCD target") is shown where the figure put it, off every
     // dot and line, and its box comes nearer its own target's dot than any other target's (a name
     // nearer a neighbour's target reads as naming that one). As on the page, the figure places it
@@ -772,7 +771,7 @@ fn lesson_07_target_names_sit_nearest_their_own_target() {
                         scene.set_limits(limits).unwrap();
                         scene.set_iterations(iterations).unwrap();
                         scene.set_target(target).unwrap();
-                        for size in CANVASES.into_iter().chain([Vec2::new(760.0, 420.0)]) {
+                        for size in CANVASES {
                             let drag = 0.008 * Vec2::new(-0.2 * size.x, 0.1 * size.y);
                             for orbit in [Vec2::ZERO, drag] {
                                 let view = [0.25, 0.45, 0.0, 4.3, yaw + orbit.x, pitch + orbit.y];
@@ -852,4 +851,41 @@ fn lesson_07_target_names_sit_nearest_their_own_target() {
         failures.len(),
         failures[..failures.len().min(12)].join("\n")
     );
+}
+
+#[test]
+fn lesson_07_labels_keep_room_between_them_far_and_near() {
+    // Figure 1 at its page camera, both canvases, with the target dragged far up and out of
+    // reach (0.88, 1.5, −0.52) and near the root (the quiz's (0.05, 0.05, 0)): every two shown
+    // labels, as the page lays them out, keep 10 px apart, so that two names never read as one
+    // ("CCD target FABRIK target") where the text is set wider than measured.
+    use inbetween::figures::ik::IkFigure;
+    let mut failures = Vec::new();
+    for target in [Vec3::new(0.88, 1.5, -0.52), Vec3::new(0.05, 0.05, 0.0)] {
+        let mut scene = IkFigure::new();
+        scene.set_target(target).unwrap();
+        for size in CANVASES {
+            let (frame, camera) = drawn_for_view(
+                &mut scene,
+                [0.25, 0.45, 0.0, 4.3, 0.1, 0.25],
+                size,
+                |s, f| {
+                    s.draw(f).unwrap();
+                },
+                |s, c, size| s.set_view(c, size.x, size.y),
+            );
+            let boxes = label_boxes(&frame, &camera, size);
+            for (i, (a, ra)) in boxes.iter().enumerate() {
+                for (b, rb) in &boxes[i + 1..] {
+                    if ra.overlaps(rb, 10.0) {
+                        failures.push(format!(
+                            "07 Fig 1, target {target} on {size}: {a:?} at {:?} and {b:?} at {:?}",
+                            ra.min, rb.min
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
 }
