@@ -25,8 +25,10 @@ function revert(gui, p, accepted) {
 // Figure 1: matrix lerp, Euler lerp, nlerp, slerp side by side.
 const interpViewer = await lesson.figure('#fig-interp');
 if (interpViewer) {
-  // Raised and turned: the noses' paths and the turns about the vertical read in depth.
-  interpViewer.setCamera(0, 1.1, 0, 7.5, 0.45, 0.5);
+  // From the front left and above: the row runs away to the right, so its image fills the
+  // canvas both ways, the matrix lerp's plane (whose shrink the text is about) nearest and
+  // largest, and the noses' paths read in depth.
+  interpViewer.setCamera(0, 1.1, 0, 7.5, -0.6, 0.7);
   const scene = new InterpolationScene();
   const timeline = new Timeline(document.getElementById('interp-timeline'), { duration: 4 });
   const p = { ex: 120, ey: 70, ez: -120, sx: 0, sy: 0, sz: 0, longArc: false, useExercise: false };
@@ -47,8 +49,8 @@ if (interpViewer) {
   const speed = new Plot(document.getElementById('interp-speed'), {
     title: 'Angular speed', xLabel: 't (0 to 1)', yLabel: 'angular speed (° per unit of t)',
     series: ['Euler lerp', 'nlerp', 'slerp'], colors: ['#e68a00', '#2ca02c', '#1f6fd6'], minSpan: 10,
-    // Wide under narrow: equal curves (nlerp and slerp at the ends, Euler lerp and slerp about
-    // one axis) stay visible.
+    // Wide under narrow: equal curves (Euler lerp and slerp about one axis) stay visible, and
+    // so do nlerp and slerp where they cross.
     widths: [7, 4, 1.5],
   });
   const apply = () => {
