@@ -500,6 +500,11 @@ fn rodrigues_feedback_compares_and_checks_validity() {
         note.contains("Your rodrigues_matrix differs at θ = 120.000°: yours ("),
         "{note}"
     );
+    // Nine numbers in a row next to a table of rows: the note says they are columns.
+    assert!(
+        note.contains("Both matrices are listed column by column (glam's order); the table under"),
+        "{note}"
+    );
     assert!(
         note.contains("it is not a unit quaternion: its length is 2.000"),
         "{note}"
@@ -976,4 +981,21 @@ fn the_four_planes_fill_their_canvas_matrix_lerp_nearest() {
         assert!(across.iter().all(|&d| d >= 110.0), "{at}");
         assert!(across.iter().skip(1).all(|&d| d < across[0]), "{at}");
     }
+}
+
+#[test]
+fn keys_half_a_turn_apart_say_both_ways_round_are_right() {
+    // End key (180, 0, 0): Euler lerp and slerp turn about x in opposite senses, 180° apart at
+    // t = 0.5, and both reach the end key: the note says so, rather than reading as a failure.
+    let mut scene = Interpolation::new();
+    scene
+        .set_keys_euler_deg(Vec3::ZERO, Vec3::new(180.0, 0.0, 0.0))
+        .unwrap();
+    let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(note.contains("180° from slerp at t = 0.50"), "{note}");
+    assert!(note.contains("half a turn apart"), "{note}");
+    // Not at the default keys.
+    let mut scene = Interpolation::new();
+    let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(!note.contains("half a turn"), "{note}");
 }

@@ -120,10 +120,12 @@ const gimbalViewer = await lesson.figure('#fig-gimbal');
 if (gimbalViewer) {
   gimbalViewer.setCamera(0, 1.4, 0, 5.2, 0.7, 0.35);
   const scene = new GimbalScene();
-  const timeline = new Timeline(document.getElementById('gimbal-timeline'), { duration: 6 });
+  // The timeline drives the steady turn only: it plays while the turn is ticked, and playing
+  // or scrubbing it ticks the turn (otherwise nothing in the view would follow it).
+  const timeline = new Timeline(document.getElementById('gimbal-timeline'), { duration: 6, playing: false });
   const p = {
     yaw: 30, pitch: 0, roll: 20, fly: false, miss: 5,
-    lock: () => { p.fly = false; p.pitch = 90; refresh(); apply(); },
+    lock: () => { p.fly = false; timeline.setPlaying(false); p.pitch = 90; refresh(); apply(); },
   };
   const gui = new GUI({ container: document.querySelector('#fig-gimbal .panel'), title: 'Gimbal (°)' });
   const angles = [
@@ -132,7 +134,7 @@ if (gimbalViewer) {
     gui.add(p, 'roll', -180, 180, 1).name('roll (inner, z″)'),
   ];
   gui.add(p, 'lock').name('go to gimbal lock');
-  gui.add(p, 'fly').name('fly a steady turn past the pole');
+  gui.add(p, 'fly').name('fly a steady turn past the pole').onChange((on) => timeline.setPlaying(on));
   gui.add(p, 'miss', 0, 45, 1).name('distance from the pole (°)');
   const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
   const plot = new Plot(document.getElementById('gimbal-plot'), {
@@ -153,16 +155,23 @@ if (gimbalViewer) {
   }
   gui.onChange(apply);
   apply();
+  let shownTime = timeline.time;
   lesson.onFrame((dt) => {
     timeline.advance(dt);
     const t = pingPong(timeline);
+    if (!p.fly && timeline.time !== shownTime) {
+      p.fly = true;
+      refresh();
+      apply();
+    }
+    shownTime = timeline.time;
     if (p.fly) {
       [p.yaw, p.pitch, p.roll] = Array.from(scene.flyAt(t), (x) => Math.round(x * 10) / 10);
       angles.forEach((c) => c.updateDisplay());
       const said = scene.note();
       if (note.textContent !== said) note.textContent = said;
     }
-    plot.setCursor?.(t);
+    plot.setCursor?.(p.fly ? t : null);
     scene.draw(gimbalViewer);
     markDrawn('#fig-gimbal');
   });

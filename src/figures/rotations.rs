@@ -307,13 +307,19 @@ impl Interpolation {
             // No largest to point at: the two agree everywhere (keys about one axis).
             return "Euler lerp follows slerp here: they are under 0.5° apart at every t.".into();
         }
-        format!(
+        let mut note = format!(
             "Euler lerp is {:.0}° from slerp at t = {:.2}; at most {:.0}° (at t = {:.2}).",
             self.euler_deviation_deg(t),
             t,
             max,
             t_max
-        )
+        );
+        if self.start_quat.dot(self.end_quat).abs() < 1e-3 {
+            // a·b = 0: both arcs are 180°, and neither method is wrong to take its own.
+            note += " The keys are half a turn apart: either way round reaches the end key, so \
+                     two correct in-betweens can be up to 180° apart.";
+        }
+        note
     }
 
     fn arc_note(&self) -> String {
@@ -1416,7 +1422,12 @@ impl Rodrigues {
         let matrix = match matrix {
             Err(f) => failure_note("exercise 3.3 rodrigues_matrix", FILE, &f),
             Ok(probes) => {
-                let (_, mut note) = probe_note("rodrigues_matrix", &probes, TOLERANCE);
+                let (all_match, mut note) = probe_note("rodrigues_matrix", &probes, TOLERANCE);
+                if !all_match {
+                    // The table under the figure shows rows: say which order these are in.
+                    note += " Both matrices are listed column by column (glam's order); the \
+                             table under the figure shows rows.";
+                }
                 let shown = Mat3::from_cols_slice(&probes[0].yours);
                 if let Some(problem) = rotation_problem(shown, 1e-3) {
                     note += &format!(" Your matrix at {at}: {problem}.");
