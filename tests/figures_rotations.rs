@@ -370,6 +370,52 @@ fn gimbal_rings_turn_red_at_lock_and_axles_are_labelled() {
     assert_eq!(red(&frame), before + 80, "outer and middle rings warn");
 }
 
+#[test]
+fn gimbal_rings_show_the_colours_the_page_names() {
+    // The page calls the rings green, orange and blue: each ring's boxes are drawn unlit in
+    // that colour (the light would turn the thin, side-lit boxes a darker shade, orange to
+    // brown).
+    let mut frame = Frame::default();
+    Gimbal::new().draw(&mut frame);
+    for color in inbetween::figures::rotations::GIMBAL_COLORS {
+        let ring: Vec<_> = (frame.meshes.iter())
+            .filter(|m| m.color.truncate() == color)
+            .collect();
+        assert_eq!(ring.len(), 40, "{color}");
+        assert!(ring.iter().all(|m| m.unlit), "{color}: lit");
+    }
+}
+
+#[test]
+fn nlerp_is_slower_than_slerp_at_the_ends_and_crosses_it_near_a_fifth() {
+    // The page: nlerp is slower than slerp at both ends, faster in the middle, and the two
+    // speed curves cross near t = 0.2 and 0.8 (at the default keys, one axis, a half turn and
+    // the 170° / −170° preset, all on the short arc).
+    let keys = [
+        (Vec3::ZERO, Interpolation::END_DEG),
+        (Vec3::ZERO, Vec3::new(0.0, 90.0, 0.0)),
+        (Vec3::ZERO, Vec3::new(180.0, 0.0, 0.0)),
+        (Vec3::new(170.0, 0.0, 0.0), Vec3::new(-170.0, 0.0, 0.0)),
+    ];
+    for (start, end) in keys {
+        let mut scene = Interpolation::new();
+        scene.set_keys_euler_deg(start, end).unwrap();
+        let speeds = scene.sample_angular_speed(401).unwrap();
+        let gap: Vec<(f32, f32)> = speeds.iter().map(|r| (r[0], r[2] - r[3])).collect();
+        let (first, last) = (gap[0].1, gap[gap.len() - 1].1);
+        assert!(first < 0.0 && last < 0.0, "{end}: nlerp not slower at the ends");
+        let crossings: Vec<f32> = (gap.windows(2))
+            .filter(|w| (w[0].1 < 0.0) != (w[1].1 < 0.0))
+            .map(|w| 0.5 * (w[0].0 + w[1].0))
+            .collect();
+        assert_eq!(crossings.len(), 2, "{start} to {end}: {crossings:?}");
+        assert!(
+            (0.19..0.25).contains(&crossings[0]) && (0.75..0.81).contains(&crossings[1]),
+            "{start} to {end}: {crossings:?}"
+        );
+    }
+}
+
 fn cone_tip(frame: &Frame, color: Vec3) -> Vec3 {
     let cone = frame
         .meshes
@@ -452,6 +498,11 @@ fn rodrigues_feedback_compares_and_checks_validity() {
     let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
     assert!(
         note.contains("Your rodrigues_matrix differs at θ = 120.000°: yours ("),
+        "{note}"
+    );
+    // Nine numbers in a row next to a table of rows: the note says they are columns.
+    assert!(
+        note.contains("Both matrices are listed column by column (glam's order); the table under"),
         "{note}"
     );
     assert!(
@@ -879,4 +930,72 @@ fn with_a_panicking_slerp_the_key_circle_names_the_dots_it_draws() {
             label.anchor
         );
     }
+}
+
+/// The camera lessons/03-rotations/lesson.js places for `viewer` (its `setCamera` arguments).
+fn page_view(viewer: &str) -> [f32; 6] {
+    include_str!("../lessons/03-rotations/lesson.js")
+        .split(&format!("{viewer}.setCamera("))
+        .nth(1)
+        .and_then(|s| s.split(')').next())
+        .expect("the page's camera")
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect::<Vec<f32>>()
+        .try_into()
+        .unwrap()
+}
+
+#[test]
+fn the_four_planes_fill_their_canvas_matrix_lerp_nearest() {
+    // Figure 1 at its page camera, fitted as the viewer fits it, on the canvases the page gives
+    // it at 1600 × 1000 (650 × 420) and at 800 × 600 (760 × 420, measured in Chromium): the
+    // spheres that hold each plane and its paths span at least 75 % of the canvas both ways,
+    // and each plane's is at least 110 px across, the matrix lerp's (left, whose shrink the
+    // text is about) the largest.
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::figures::rotations::METHODS;
+    let mut scene = Interpolation::new();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 0.5).unwrap();
+    for size in [Vec2::new(650.0, 420.0), Vec2::new(760.0, 420.0)] {
+        let mut camera = OrbitCamera::from_view(page_view("interpViewer"));
+        assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let (mut lo, mut hi) = (Vec2::splat(f32::MAX), Vec2::splat(f32::MIN));
+        for p in &frame.keep_in_view {
+            let c = project_to_canvas(view_proj, size, *p).unwrap();
+            (lo, hi) = (lo.min(c), hi.max(c));
+        }
+        let fill = (hi - lo) / size;
+        assert!(fill.min_element() >= 0.75, "on {size}: {fill}");
+        // Each lane's sphere (radius 0.95 m) across, in pixels, at its centre's depth.
+        let across: Vec<f32> = (METHODS.iter())
+            .map(|&(_, x, _)| {
+                let depth = -camera.view().transform_point3(Vec3::new(x, 1.2, 0.0)).z;
+                1.9 / depth / (0.5 * camera.fov_y_rad).tan() * 0.5 * size.y
+            })
+            .collect();
+        let at = format!("on {size}: {across:?} px");
+        assert!(across.iter().all(|&d| d >= 110.0), "{at}");
+        assert!(across.iter().skip(1).all(|&d| d < across[0]), "{at}");
+    }
+}
+
+#[test]
+fn keys_half_a_turn_apart_say_both_ways_round_are_right() {
+    // End key (180, 0, 0): Euler lerp and slerp turn about x in opposite senses, 180° apart at
+    // t = 0.5, and both reach the end key: the note says so, rather than reading as a failure.
+    let mut scene = Interpolation::new();
+    scene
+        .set_keys_euler_deg(Vec3::ZERO, Vec3::new(180.0, 0.0, 0.0))
+        .unwrap();
+    let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(note.contains("180° from slerp at t = 0.50"), "{note}");
+    assert!(note.contains("half a turn apart"), "{note}");
+    // Not at the default keys.
+    let mut scene = Interpolation::new();
+    let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+    assert!(!note.contains("half a turn"), "{note}");
 }

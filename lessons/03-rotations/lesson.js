@@ -25,8 +25,10 @@ function revert(gui, p, accepted) {
 // Figure 1: matrix lerp, Euler lerp, nlerp, slerp side by side.
 const interpViewer = await lesson.figure('#fig-interp');
 if (interpViewer) {
-  // Raised and turned: the noses' paths and the turns about the vertical read in depth.
-  interpViewer.setCamera(0, 1.1, 0, 7.5, 0.45, 0.5);
+  // From the front left and above: the row runs away to the right, so its image fills the
+  // canvas both ways, the matrix lerp's plane (whose shrink the text is about) nearest and
+  // largest, and the noses' paths read in depth.
+  interpViewer.setCamera(0, 1.1, 0, 7.5, -0.6, 0.7);
   const scene = new InterpolationScene();
   const timeline = new Timeline(document.getElementById('interp-timeline'), { duration: 4 });
   const p = { ex: 120, ey: 70, ez: -120, sx: 0, sy: 0, sz: 0, longArc: false, useExercise: false };
@@ -47,8 +49,8 @@ if (interpViewer) {
   const speed = new Plot(document.getElementById('interp-speed'), {
     title: 'Angular speed', xLabel: 't (0 to 1)', yLabel: 'angular speed (° per unit of t)',
     series: ['Euler lerp', 'nlerp', 'slerp'], colors: ['#e68a00', '#2ca02c', '#1f6fd6'], minSpan: 10,
-    // Wide under narrow: equal curves (nlerp and slerp at the ends, Euler lerp and slerp about
-    // one axis) stay visible.
+    // Wide under narrow: equal curves (Euler lerp and slerp about one axis) stay visible, and
+    // so do nlerp and slerp where they cross.
     widths: [7, 4, 1.5],
   });
   const apply = () => {
@@ -118,10 +120,12 @@ const gimbalViewer = await lesson.figure('#fig-gimbal');
 if (gimbalViewer) {
   gimbalViewer.setCamera(0, 1.4, 0, 5.2, 0.7, 0.35);
   const scene = new GimbalScene();
-  const timeline = new Timeline(document.getElementById('gimbal-timeline'), { duration: 6 });
+  // The timeline drives the steady turn only: it plays while the turn is ticked, and playing
+  // or scrubbing it ticks the turn (otherwise nothing in the view would follow it).
+  const timeline = new Timeline(document.getElementById('gimbal-timeline'), { duration: 6, playing: false });
   const p = {
     yaw: 30, pitch: 0, roll: 20, fly: false, miss: 5,
-    lock: () => { p.fly = false; p.pitch = 90; refresh(); apply(); },
+    lock: () => { p.fly = false; timeline.setPlaying(false); p.pitch = 90; refresh(); apply(); },
   };
   const gui = new GUI({ container: document.querySelector('#fig-gimbal .panel'), title: 'Gimbal (°)' });
   const angles = [
@@ -130,7 +134,7 @@ if (gimbalViewer) {
     gui.add(p, 'roll', -180, 180, 1).name('roll (inner, z″)'),
   ];
   gui.add(p, 'lock').name('go to gimbal lock');
-  gui.add(p, 'fly').name('fly a steady turn past the pole');
+  gui.add(p, 'fly').name('fly a steady turn past the pole').onChange((on) => timeline.setPlaying(on));
   gui.add(p, 'miss', 0, 45, 1).name('distance from the pole (°)');
   const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
   const plot = new Plot(document.getElementById('gimbal-plot'), {
@@ -151,16 +155,23 @@ if (gimbalViewer) {
   }
   gui.onChange(apply);
   apply();
+  let shownTime = timeline.time;
   lesson.onFrame((dt) => {
     timeline.advance(dt);
     const t = pingPong(timeline);
+    if (!p.fly && timeline.time !== shownTime) {
+      p.fly = true;
+      refresh();
+      apply();
+    }
+    shownTime = timeline.time;
     if (p.fly) {
       [p.yaw, p.pitch, p.roll] = Array.from(scene.flyAt(t), (x) => Math.round(x * 10) / 10);
       angles.forEach((c) => c.updateDisplay());
       const said = scene.note();
       if (note.textContent !== said) note.textContent = said;
     }
-    plot.setCursor?.(t);
+    plot.setCursor?.(p.fly ? t : null);
     scene.draw(gimbalViewer);
     markDrawn('#fig-gimbal');
   });

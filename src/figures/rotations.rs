@@ -307,13 +307,19 @@ impl Interpolation {
             // No largest to point at: the two agree everywhere (keys about one axis).
             return "Euler lerp follows slerp here: they are under 0.5° apart at every t.".into();
         }
-        format!(
+        let mut note = format!(
             "Euler lerp is {:.0}° from slerp at t = {:.2}; at most {:.0}° (at t = {:.2}).",
             self.euler_deviation_deg(t),
             t,
             max,
             t_max
-        )
+        );
+        if self.start_quat.dot(self.end_quat).abs() < 1e-3 {
+            // a·b = 0: both arcs are 180°, and neither method is wrong to take its own.
+            note += " The keys are half a turn apart: either way round reaches the end key, so \
+                     two correct in-betweens can be up to 180° apart.";
+        }
+        note
     }
 
     fn arc_note(&self) -> String {
@@ -710,7 +716,9 @@ pub fn slerp_probes(a: Quat, b: Quat) -> Vec<(String, (Quat, Quat, f32))> {
     ]
 }
 
-/// Points on a circle of `radius` in the plane spanned by `u` and `v`, as thin boxes.
+/// Points on a circle of `radius` in the plane spanned by `u` and `v`, as thin boxes, unlit:
+/// the page names each ring by its colour (the middle one orange), and the light would turn
+/// these thin, mostly side-lit boxes a darker shade (orange to brown).
 fn ring(frame: &mut Frame, m: Mat4, u: Vec3, v: Vec3, radius: f32, color: Vec3) {
     const SEGMENTS: usize = 40;
     let half = std::f32::consts::PI * radius / SEGMENTS as f32 * 1.05;
@@ -725,7 +733,13 @@ fn ring(frame: &mut Frame, m: Mat4, u: Vec3, v: Vec3, radius: f32, color: Vec3) 
             (normal * 0.035).extend(0.0),
             (radial * radius).extend(1.0),
         );
-        frame.mesh(MeshId::CUBE, m * model, color);
+        frame.meshes.push(crate::draw::MeshDraw {
+            mesh: MeshId::CUBE,
+            model: m * model,
+            color: color.extend(1.0),
+            vertex_colors: false,
+            unlit: true,
+        });
     }
 }
 
@@ -1117,28 +1131,30 @@ impl Rodrigues {
             .unwrap_or_else(|| rotation::quat_from_axis_angle(self.axis.axis, angle_rad))
     }
 
-    /// Adds a term's label beside its arrow from `from` to `to`: the first place beside its
-    /// middle, then nearer either end, then further out (12 to 60 px), that covers no line,
-    /// dot or label already placed on the last frame's view (the middle itself, above and
-    /// right, without one). With `away`, the arrow runs along v (v cos θ), so that a place
-    /// beside its middle is beside v too: its first places are then at its tip, across the
-    /// arrow on the canvas, on the side away from `away` (the next term's tip) first, then
-    /// across and back towards its tail, then round the tip, 0 to 40 px out. No place holds
-    /// one of `box_points` (the box turned by q).
+    /// Adds a term's label beside its arrow from `from` to `to`: the first place that covers no
+    /// line, dot or label already placed on the last frame's view (the middle itself, above and
+    /// right, without one). Places beside its tip go across the arrow on the canvas, on the
+    /// side away from `away` (the next term's tip) first, then across and back towards its
+    /// tail, then round the tip, 0 to 40 px out. With `tip_first`, the arrow runs along v
+    /// (v cos θ), so that a place beside its middle is beside v too: the places at its tip come
+    /// first, then those beside its middle, nearer either end, and further out (12 to 60 px).
+    /// Without, the places beside the shaft up to 12 px out come first, then those at the tip
+    /// up to 8 px out, then the shaft's further out, then the tip's: a crowded shaft keeps its
+    /// name at its tip rather than 60 px away. No place holds one of `box_points` (the box turned by q).
     fn label_beside_arrow(
         &self,
         frame: &mut Frame,
         (from, to): (Vec3, Vec3),
         text: &str,
         color: Vec3,
-        away: Option<Vec3>,
+        (away, tip_first): (Vec3, bool),
         box_points: &[Vec3],
     ) {
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
         let mut at_tip = Vec::new();
-        if let (Some(away), Some((view_proj, size))) = (away, view) {
+        if let Some((view_proj, size)) = view {
             let px = |p| crate::camera::project_to_canvas(view_proj, size, p);
             if let (Some(a), Some(b), Some(c)) = (px(from), px(to), px(away)) {
                 let mut across = (b - a).normalize_or_zero().perp();
@@ -1189,19 +1205,29 @@ impl Rodrigues {
         .map(|(x, y)| glam::Vec2::new(x, y));
         // The shaft as a dot this wide: the label keeps LABEL_DOT_GAP_PX off its stroke.
         const SHAFT_PX: f32 = 2.0 * crate::draw::ARROW_PX;
-        let candidates = [0.0, 12.0, 24.0, 36.0, 48.0, 60.0]
-            .into_iter()
-            .flat_map(move |out_px| {
-                [0.5, 0.35, 0.65, 0.2, 0.8].into_iter().flat_map(move |t| {
-                    sides.map(|side| {
-                        let at = from.lerp(to, t);
-                        let clear_px = SHAFT_PX + 2.0 * out_px;
-                        crate::draw::Label::off_dot(at, clear_px, side, text.into(), color, 0)
+        let shaft = |outs: &[f32]| -> Vec<crate::draw::Label> {
+            (outs.iter())
+                .flat_map(|&out_px| {
+                    [0.5, 0.35, 0.65, 0.2, 0.8].into_iter().flat_map(move |t| {
+                        sides.map(|side| {
+                            let at = from.lerp(to, t);
+                            let clear_px = SHAFT_PX + 2.0 * out_px;
+                            crate::draw::Label::off_dot(at, clear_px, side, text.into(), color, 0)
+                        })
                     })
                 })
-            });
+                .collect()
+        };
+        // The tip's places 0 and 8 px out: 7 sides each.
+        let tip_far = at_tip.split_off(at_tip.len().min(14));
+        let (near, far) = (shaft(&[0.0, 12.0]), shaft(&[24.0, 36.0, 48.0, 60.0]));
         // 2 px off the lines: a label that touches an arrow reads as part of it.
-        let candidates = at_tip.into_iter().chain(candidates);
+        let candidates = if tip_first {
+            [at_tip, tip_far, near, far]
+        } else {
+            [near, at_tip, far, tip_far]
+        }
+        .concat();
         let box_px: Vec<glam::Vec2> = view.map_or(Vec::new(), |(view_proj, size)| {
             (box_points.iter())
                 .filter_map(|&p| crate::camera::project_to_canvas(view_proj, size, p))
@@ -1233,7 +1259,9 @@ impl Rodrigues {
                 rotation::rodrigues_rotate(v, n, std::f32::consts::TAU * k as f32 / 128.0)
             }),
         );
+        let circle_from = frame.strokes.len();
         frame.wide_polyline(&self.arc, CIRCLE, crate::draw::CURVE_PX);
+        let circle = circle_from..frame.strokes.len();
         frame.marker(centre, crate::draw::DOT_PX, AXIS);
         // The three terms of the formula, tip to tail: they end at v′.
         let cos_part = v * phi.cos();
@@ -1246,15 +1274,17 @@ impl Rodrigues {
         const LABELLED: f32 = 0.25;
         let mut terms = Vec::new();
         if cos_part.length() > LABELLED {
-            terms.push((Vec3::ZERO, p1, "v cos θ", COS_PART, Some(cos_part + sin_part)));
+            terms.push((Vec3::ZERO, p1, "v cos θ", COS_PART, (p2, true)));
         }
         frame.arrow(p1, p2, SIN_PART, 0.1);
+        let p3 = p2 + axial_part;
         if sin_part.length() > LABELLED {
-            terms.push((p1, p2, "(n × v) sin θ", SIN_PART, None));
+            terms.push((p1, p2, "(n × v) sin θ", SIN_PART, (p3, false)));
         }
-        frame.arrow(p2, p2 + axial_part, AXIAL_PART, 0.1);
+        frame.arrow(p2, p3, AXIAL_PART, 0.1);
         if axial_part.length() > LABELLED {
-            terms.push((p2, p2 + axial_part, "n (n·v)(1 − cos θ)", AXIAL_PART, None));
+            let text = "n (n·v)(1 − cos θ)";
+            terms.push((p2, p3, text, AXIAL_PART, (Vec3::ZERO, false)));
         }
         // v′ = R(sθ) v, from the matrix (the student's when used).
         let turned = self.matrix_at(phi) * v;
@@ -1339,10 +1369,18 @@ impl Rodrigues {
             frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &box_points));
         }
         // Last, once every arrow and the other labels are down: the terms run tip to tail
-        // beside v, v′ and the circle, so a label at a term's middle lies on some arrow.
+        // beside v, v′ and the circle, so a label at a term's middle lies on some arrow. The
+        // names of the sin and axial terms may cross the thin grey circle (set aside while they
+        // are placed): inside it the arrows leave no room beside those terms for a name that
+        // keeps off the circle too. v cos θ's name (the first term) keeps off it.
+        let mut set_aside = Vec::new();
         for (from, to, text, color, away) in terms {
+            if !away.1 && set_aside.is_empty() {
+                set_aside = frame.strokes.drain(circle.clone()).collect();
+            }
             self.label_beside_arrow(frame, (from, to), text, color, away, &box_points);
         }
+        frame.strokes.extend(set_aside);
         // The axis, the circle (which holds v and v′) and the box stay in view.
         frame.keep_in_view.extend(self.arc.iter().step_by(8));
         frame.keep_in_view.extend([
@@ -1384,7 +1422,12 @@ impl Rodrigues {
         let matrix = match matrix {
             Err(f) => failure_note("exercise 3.3 rodrigues_matrix", FILE, &f),
             Ok(probes) => {
-                let (_, mut note) = probe_note("rodrigues_matrix", &probes, TOLERANCE);
+                let (all_match, mut note) = probe_note("rodrigues_matrix", &probes, TOLERANCE);
+                if !all_match {
+                    // The table under the figure shows rows: say which order these are in.
+                    note += " Both matrices are listed column by column (glam's order); the \
+                             table under the figure shows rows.";
+                }
                 let shown = Mat3::from_cols_slice(&probes[0].yours);
                 if let Some(problem) = rotation_problem(shown, 1e-3) {
                     note += &format!(" Your matrix at {at}: {problem}.");

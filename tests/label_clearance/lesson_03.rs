@@ -1,6 +1,7 @@
 //! Lesson 03: its figures' labels keep clear of what they name (see main.rs).
 
 use super::*;
+use inbetween::figures::rotations::rodrigues_colors;
 
 /// Figure 4 (the Rodrigues figure) with axis `n`, angle `angle` (degrees) and vector `v`, drawn as
 /// the page draws it at the timeline's fraction `s` from the page camera `view`.
@@ -30,10 +31,11 @@ fn rodrigues_drawn(
 fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
     // Figure 4 at its page camera (lessons/03-rotations/lesson.js), both canvases, through the
     // sweep, at the page's axis, angle and v and others across the sliders: each term's label
-    // (v cos θ, (n × v) sin θ, n (n·v)(1 − cos θ)) is shown where the figure put it, at most
-    // 70 px from a point of its arrow, and covers no arrow, circle or dot (the terms run tip to
-    // tail beside v and v′). As on the page, the
-    // figure places them for the view of the frame before (set_view).
+    // (v cos θ, (n × v) sin θ, n (n·v)(1 − cos θ)) is shown where the figure put it, within
+    // 56 px of its own arrow's shaft (beside what it names, not across another arrow), and
+    // covers no arrow or dot (the terms run tip to tail beside v and v′). As on the
+    // page, the figure places them for the view of the frame before (set_view).
+    use rodrigues_colors::{AXIAL_PART, COS_PART, SIN_PART};
     let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
     let term = |text: &str| text.contains("θ") && !text.starts_with("v′");
     let mut failures = Vec::new();
@@ -42,6 +44,7 @@ fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
         (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
         (Vec3::new(0.3, 1.0, 0.2), 60.0, Vec3::new(1.2, 0.4, 0.3)),
         (Vec3::new(0.3, 1.0, 0.2), -200.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), 90.0, Vec3::new(1.2, 0.4, 0.3)),
         (Vec3::new(0.0, 1.0, 0.0), 90.0, Vec3::new(1.0, 1.0, 0.0)),
         (Vec3::new(1.0, 0.2, -0.3), 150.0, Vec3::new(0.5, 1.5, 0.8)),
         (Vec3::new(0.3, 1.0, 0.2), 300.0, Vec3::new(-1.5, 0.2, 1.0)),
@@ -49,36 +52,53 @@ fn lesson_03_rodrigues_terms_sit_beside_their_arrows() {
     for (n, angle, v) in settings {
         for k in 1..=8 {
             let s = k as f32 / 8.0;
-            for size in CANVASES {
+            for size in CANVASES.into_iter().chain([Vec2::new(760.0, 420.0)]) {
                 let (frame, camera) = rodrigues_drawn(n, angle, v, s, view, size);
                 cases += 1;
                 let name = format!("03 Rodrigues, n {n}, θ {angle}°, v {v}, s {s}");
                 let check = || {
                     let view_proj = camera.projection(size.x / size.y) * camera.view();
-                    for ((l, b, p), label) in
-                        layout(&frame, &camera, size).into_iter().zip(&frame.labels)
-                    {
+                    let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p));
+                    for (l, b, p) in layout(&frame, &camera, size) {
                         if term(&l.text) {
                             assert!(
                                 p.shown && p.leader_to.is_none(),
                                 "{name} on {size}: {} moved",
                                 l.text
                             );
-                            // Its anchor is the point of the arrow it sits beside.
-                            let at = project_to_canvas(view_proj, size, label.anchor).unwrap();
+                            let color = match l.text.as_str() {
+                                "v cos θ" => COS_PART,
+                                "(n × v) sin θ" => SIN_PART,
+                                _ => AXIAL_PART,
+                            };
                             let rect = Rect {
                                 min: p.top_left,
                                 size: b.size,
                             };
-                            let gap = rect.nearest(at).distance(at);
+                            // The nearest point of its arrow's shaft past the first fifth
+                            // (the terms' tails meet v and v′ near the origin), every 1/32.
+                            let gap = (frame.strokes.iter())
+                                .filter(|s| Vec3::from_slice(&s.color[..3]) == color)
+                                .filter_map(|s| Some((at(s.a)?, at(s.b)?)))
+                                .flat_map(|(a, b)| {
+                                    (7..=32).map(move |k| a.lerp(b, k as f32 / 32.0))
+                                })
+                                .map(|c| rect.nearest(c).distance(c))
+                                .fold(f32::MAX, f32::min);
                             assert!(
-                                gap <= 70.0,
+                                gap <= 56.0,
                                 "{name} on {size}: {} {gap} px off its arrow",
                                 l.text
                             );
                         }
                     }
-                    assert_clear_of(&name, &frame, &camera, size, term);
+                    // Clear of everything but the thin grey circle, which the names of the sin and
+                    // axial terms may cross (v cos θ's keeps off it, as the test of its tip checks).
+                    let mut lines = frame.clone();
+                    lines
+                        .strokes
+                        .retain(|s| Vec3::from_slice(&s.color[..3]) != rodrigues_colors::CIRCLE);
+                    assert_clear_of(&name, &lines, &camera, size, term);
                 };
                 failures.extend(failure_of(check));
             }
@@ -481,6 +501,7 @@ fn lesson_03_rodrigues_cos_term_name_sits_at_its_own_tip() {
     let settings = [
         (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
         (Vec3::new(0.3, 1.0, 0.2), 60.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), 90.0, Vec3::new(1.2, 0.4, 0.3)),
         (Vec3::new(0.0, 1.0, 0.0), 90.0, Vec3::new(1.0, 1.0, 0.0)),
         (Vec3::new(1.0, 0.2, -0.3), 150.0, Vec3::new(0.5, 1.5, 0.8)),
     ];
@@ -527,7 +548,9 @@ fn lesson_03_rodrigues_terms_keep_off_the_lines_when_orbited() {
     // canvases, through the sweep, at the page's axis, angle and v and others across the
     // sliders: each term's label is shown where the figure put it and keeps 1 px off every
     // dot's and line's edge, at every point of each line (a corner between a long shaft's
-    // samples counts). As on the page, the figure places them for the view of the frame before.
+    // samples counts), but for the grey circle, which the names of the sin and axial terms may
+    // cross (v cos θ's keeps off it: lesson_03_rodrigues_cos_term_name_sits_at_its_own_tip). As
+    // on the page, the figure places them for the view of the frame before.
     // At most 1 % of the cases may fail: where no place within 60 px of a long term's arrow is
     // clear of the circle, the other arrows and the names, the label keeps its first place.
     let term = |text: &str| text.contains("θ") && !text.starts_with("v′");
@@ -554,8 +577,13 @@ fn lesson_03_rodrigues_terms_keep_off_the_lines_when_orbited() {
                     let terms: Vec<usize> = (0..frame.labels.len())
                         .filter(|&i| term(&frame.labels[i].text))
                         .collect();
+                    // The sin and axial terms' names may cross the thin grey circle.
+                    let mut lines = frame.clone();
+                    lines
+                        .strokes
+                        .retain(|s| Vec3::from_slice(&s.color[..3]) != rodrigues_colors::CIRCLE);
                     failures.extend(failure_of(|| {
-                        assert_shown_clear_by(&name, &frame, &camera, size, &terms, 1.0)
+                        assert_shown_clear_by(&name, &lines, &camera, size, &terms, 1.0)
                     }));
                 }
             }
@@ -565,7 +593,7 @@ fn lesson_03_rodrigues_terms_keep_off_the_lines_when_orbited() {
         failures.len() * 100 <= cases,
         "{} of {cases} cases fail (at most 1 % may), e.g.\n{}",
         failures.len(),
-        failures[..failures.len().min(12)].join("\n")
+        failures[..failures.len().min(40)].join("\n")
     );
 }
 
