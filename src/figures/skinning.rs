@@ -1466,10 +1466,12 @@ impl HumanFigure {
     }
 
     /// Adds the first of `candidates` that covers none of `body_px` ([`HumanFigure::body_points_px`])
-    /// and no dot, bone or name placed before, on the last frame's view.
+    /// and no dot, bone or name placed before, on the last frame's view. A name keeps 6 px off
+    /// those points: they move rigidly with their parts, and a blend zone's skinned vertices lie
+    /// a few pixels beside them on the 760 x 420 canvas.
     fn label_off_bodies(&self, frame: &mut Frame, body_px: &[Vec2], candidates: Vec<Label>) {
         let view = view_of(self.canvas_view);
-        frame.first_clear_label_by(view, 2.0, candidates, off_points(body_px, 4.0));
+        frame.first_clear_label_by(view, 2.0, candidates, off_points(body_px, 6.0));
     }
 
     /// The labels of the bodies placed at `places` (after they are drawn): each title (the
