@@ -105,9 +105,9 @@ if (affineViewer) {
   let accepted = { ...p };
   const gui = new GUI({ container: document.querySelector('#fig-affine .panel'), title: 'Key B' });
   gui.add(p, 'angle', -180, 180, 1).name('angle about y (°)');
-  gui.add(p, 'sx', -2, 2.5, 0.01).name('scale x');
-  gui.add(p, 'sy', -2, 2.5, 0.01).name('scale y');
-  gui.add(p, 'sz', -2, 2.5, 0.01).name('scale z');
+  gui.add(p, 'sx', -2, 2.5, 0.001).name('scale x');
+  gui.add(p, 'sy', -2, 2.5, 0.001).name('scale y');
+  gui.add(p, 'sz', -2, 2.5, 0.001).name('scale z');
   gui.add(p, 'shear', -1.5, 1.5, 0.01).name('shear x by y');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('affine-plot'), {
