@@ -46,9 +46,11 @@ if (rigidViewer) {
   const curves = {
     series: ['lerp + slerp', 'screw', 'dual quaternion blend'], colors: ['#e68a00', '#1f6fd6', '#2ca02c'], widths: [7, 4, 1.5],
   };
+  // "show" one method: the plots keep only its curve too (the others become gaps).
   const blendLast = (rows) => {
     const [t, lerp, blend, screw] = columns(rows, 4);
-    return [t, lerp, screw, blend];
+    const keep = (c, k) => ([0, k].includes(Number(p.show)) ? c : c.map(() => null));
+    return [t, keep(lerp, 1), keep(screw, 3), keep(blend, 2)];
   };
   const distance = new Plot(document.getElementById('rigid-distance'), {
     title: 'Distance travelled by the nose', xLabel: 't (0 to 1)', yLabel: 'distance (m)', minSpan: 0.5, ...curves,
