@@ -364,6 +364,27 @@ mod figures {
     use inbetween::figures::boids::FlockFigure;
     use inbetween::figures::particles::EmitterFigure;
 
+    /// On the GPU the live-particle plot keeps its time axis and its guides (rate × lifetime,
+    /// the fountain's slots) while the counts, never read back, are NaN after step 0.
+    #[test]
+    fn the_emitter_figure_plots_its_guides_but_no_counts_on_the_gpu() {
+        let mut f = EmitterFigure::new();
+        f.restart();
+        assert!(f.advance_gpu(1.0, false, |_, _, _, _| Ok(())).unwrap().0);
+        f.advance_gpu(1.0, true, |_, _, _, _| Ok(())).unwrap();
+        let samples = f.count_samples();
+        let rows: Vec<&[f32]> = samples.chunks_exact(5).collect();
+        assert_eq!(rows.len(), 61, "step 0 and 60 steps");
+        assert_eq!(rows[0][..3], [0.0, 0.0, 0.0]);
+        let (steady, slots) = (f.steady_count(), f.slots().0 as f32);
+        assert!(steady > 0.0 && slots > 0.0);
+        for (i, r) in rows.iter().enumerate().skip(1) {
+            assert!((r[0] - i as f32 * inbetween::figures::particles::SIM_DT).abs() < 1e-5);
+            assert!(r[1].is_nan() && r[2].is_nan(), "{r:?}");
+            assert_eq!((r[3], r[4]), (steady, slots));
+        }
+    }
+
     #[test]
     fn the_emitter_figure_hands_its_steps_to_the_gpu() {
         let mut f = EmitterFigure::new();

@@ -447,10 +447,11 @@ fn quiz_marks_answers_and_says_why() {
     assert_eq!(f.labels.iter().filter(|l| l.text.ends_with('✓')).count(), 5);
     q.new_round();
     assert_eq!(q.score(), 0, "a new round clears the answers");
-    // The quiz's 97-vertex meshes show octaves up to 4 (up to 3 at s = 3), as the page says;
+    // The quiz's 97-vertex meshes show octaves up to 4 (up to 2 at s = 3, where octave 3's cells
+    // are exactly two spacings wide), as the page says;
     // the sets' own N stays what the table lists.
     let shown: Vec<u32> = sets.iter().map(|s| s.shown_params().fractal.n).collect();
-    assert_eq!(shown, [4, 1, 4, 4, 3, 4]);
+    assert_eq!(shown, [4, 1, 4, 4, 2, 4]);
     let listed: Vec<u32> = sets.iter().map(|s| s.params.fractal.n).collect();
     assert_eq!(listed, [9, 1, 9, 9, 9, 9]);
 }
@@ -658,7 +659,7 @@ fn terrain_scene_names_the_octaves_finer_than_the_mesh() {
     let n = s.draw(&mut f, MeshId(3));
     assert!(
         n.contains(
-            "so octave 7 is finer than the mesh (cells narrower than two spacings, 0.008 m): it \
+            "so octave 7 is finer than the mesh (cells no wider than two spacings, 0.008 m): it \
              falls between vertices and only adds aliasing; “leave out octaves finer than the \
              mesh” drops it."
         ),
@@ -745,16 +746,17 @@ fn variants_stand_side_by_side_from_the_same_noise() {
     let labels: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
     assert_eq!(labels, SIDE_BY_SIDE_VARIANTS.map(|v| v.1));
     assert!(!frame.keep_in_view.is_empty());
-    // The page: 129 × 129 vertices each, so octaves past 5 are left out.
+    // The page: 129 × 129 vertices each, 1/64 m apart, so octave 5's cells (1/32 m, exactly two
+    // spacings: the Nyquist limit) and the finer ones are left out.
     assert_eq!(VARIANTS_RESOLUTION, 129);
     assert!(
-        note.contains("Octaves 6 to 9 are finer than these meshes and left out"),
+        note.contains("Octaves 5 to 9 are finer than these meshes and left out"),
         "{note}"
     );
     for i in 0..4 {
-        assert_eq!(f.shown_params(i).fractal.n, 5);
+        assert_eq!(f.shown_params(i).fractal.n, 4);
     }
-    // The same noise: the sum's terrain is Figure 4's shape at N = 5.
+    // The same noise: the sum's terrain is Figure 4's shape at N = 4.
     let sum = &f.terrains()[0].positions;
     let perm = inbetween::noise::Permutation::perlin();
     let p = f.shown_params(0);
@@ -1362,4 +1364,39 @@ fn flat_figures_pan_on_a_drag_and_keep_their_width() {
     let (lo, hi) = noise.view_box();
     let x_range = [Vec3::new(lo.x, 0.0, 0.0), Vec3::new(hi.x, 0.0, 0.0)];
     flat::assert_drag_pans(&f, [0.0, 0.0, 0.0, 7.5, 0.0, 0.0], Vec2::new(650.0, 420.0), x_range);
+}
+
+/// The mean and the largest height step between neighbouring vertices along u (metres): the
+/// one-vertex needles of the octaves finer than the mesh are steps that flip sign at every vertex.
+fn vertex_steps(t: &inbetween::terrain::Terrain) -> (f32, f32) {
+    let n = t.resolution();
+    let mut sum = 0.0;
+    let mut max = 0.0f32;
+    for j in 0..n {
+        for i in 1..n {
+            let d = (t.positions[j * n + i].y - t.positions[j * n + i - 1].y).abs();
+            sum += d;
+            max = max.max(d);
+        }
+    }
+    (sum / (n * (n - 1)) as f32, max)
+}
+
+/// Figure 3's Try this: at α = 0.8, ω = 2 and N = 7 on 193 × 193 vertices, the tick keeps
+/// octaves 0 to 5 (octave 5's cells are three spacings wide) and the one-vertex needles go: the
+/// height steps from vertex to vertex shrink by more than a third, the mean and the largest.
+#[test]
+fn octaves_leave_out_the_needles_at_alpha_0_8() {
+    let mut s = Octaves::new();
+    s.set_params(7.0, 0.8, 2.0).unwrap();
+    s.take_dirty();
+    let (mean_all, max_all) = vertex_steps(&s.terrains()[0]);
+    s.set_band_limit(true);
+    s.take_dirty();
+    assert_eq!(s.shown_fractal().n, 5);
+    let (mean_cut, max_cut) = vertex_steps(&s.terrains()[0]);
+    assert!(
+        mean_cut < mean_all * 2.0 / 3.0 && max_cut < max_all * 2.0 / 3.0,
+        "mean {mean_all} -> {mean_cut}, largest {max_all} -> {max_cut}"
+    );
 }

@@ -1135,3 +1135,26 @@ fn the_squash_balls_cast_shadows() {
         .count();
     assert_eq!(n, 2);
 }
+
+/// Figure 6's text: the ball keeps its sideways speed, so at the top of each bounce (where its
+/// stretch axis, the velocity, turns from up to down) its stretch stays over 1.
+#[test]
+fn the_squash_ball_stays_stretched_at_the_top_of_a_bounce() {
+    let mut scene = SquashFigure::new();
+    for k in [0.06, 0.3] {
+        scene.set_stretch(k).unwrap();
+        let mut ball = scene.clone();
+        let mut tops = 0;
+        let mut was_rising = false;
+        for i in 0..=(SQUASH_DURATION * 60.0) as usize {
+            ball.advance_to(i as f32 / 60.0).unwrap();
+            let (axis, s) = ball.stretch();
+            if was_rising && axis.y < 0.0 && s >= 1.0 {
+                tops += 1;
+                assert!(s > 1.0 + 0.5 * k, "k = {k}: s = {s} at a top");
+            }
+            was_rising = axis.y > 0.0 && s > 1.0;
+        }
+        assert!(tops >= 2, "k = {k}: {tops} bounce tops");
+    }
+}

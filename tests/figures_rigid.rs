@@ -400,14 +400,15 @@ fn the_blend_turns_about_the_screw_axis_and_only_its_timing_differs() {
 }
 
 #[test]
-fn at_half_a_turn_the_blend_is_2_6_times_as_fast_in_the_middle() {
+fn at_half_a_turn_the_blend_is_2_5_times_as_fast_in_the_middle() {
     let mut scene = RigidMotion::new();
     scene
         .set_end(Vec3::new(0.2, 1.0, 0.3), 180.0, Vec3::new(1.5, 1.4, 0.3))
         .unwrap();
     let speed = scene.sample_speed(101).unwrap();
     let ratio = speed[50][2] / speed[0][2];
-    assert!((2.5..2.7).contains(&ratio), "{ratio}");
+    // The page says "2.5 times": the ratio rounds to it.
+    assert!((2.45..2.55).contains(&ratio), "{ratio}");
     let screw: Vec<f32> = speed.iter().map(|r| r[3]).collect();
     let (lo, hi) = screw
         .iter()

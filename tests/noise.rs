@@ -662,13 +662,13 @@ fn the_3d_hash_and_gradient_extend_the_2d_ones() {
 
 #[test]
 fn last_resolved_octave_is_the_nyquist_limit_of_the_mesh() {
-    // Octave k is kept while s ωᵏ ≤ (resolution − 1)/4: a cell spans at least two spacings.
+    // Octave k is kept while s ωᵏ < (resolution − 1)/4: a cell spans more than two spacings.
     assert_eq!(last_resolved_octave(128, 1.0, 2.0), Some(4)); // 31.75 cells per metre at most
-    assert_eq!(last_resolved_octave(129, 1.0, 2.0), Some(5)); // exactly 32: the boundary counts
+    assert_eq!(last_resolved_octave(129, 1.0, 2.0), Some(4)); // exactly 32: the limit itself is past it
     assert_eq!(last_resolved_octave(193, 1.0, 2.0), Some(5));
     assert_eq!(last_resolved_octave(512, 1.0, 2.0), Some(6));
     assert_eq!(last_resolved_octave(97, 1.0, 2.0), Some(4));
-    assert_eq!(last_resolved_octave(97, 3.0, 2.0), Some(3));
+    assert_eq!(last_resolved_octave(97, 3.0, 2.0), Some(2)); // octave 3: 24 cells per metre, the limit itself
     assert_eq!(last_resolved_octave(64, 16.0, 2.0), None);
     assert_eq!(last_resolved_octave(64, 1.0, 1.0), Some(MAX_N));
     assert_eq!(last_resolved_octave(512, 1.0, 4.0), Some(3));

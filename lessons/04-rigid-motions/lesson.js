@@ -46,9 +46,11 @@ if (rigidViewer) {
   const curves = {
     series: ['lerp + slerp', 'screw', 'dual quaternion blend'], colors: ['#e68a00', '#1f6fd6', '#2ca02c'], widths: [7, 4, 1.5],
   };
+  // "show" one method: the plots keep only its curve too (the others become gaps).
   const blendLast = (rows) => {
     const [t, lerp, blend, screw] = columns(rows, 4);
-    return [t, lerp, screw, blend];
+    const keep = (c, k) => ([0, k].includes(Number(p.show)) ? c : c.map(() => null));
+    return [t, keep(lerp, 1), keep(screw, 3), keep(blend, 2)];
   };
   const distance = new Plot(document.getElementById('rigid-distance'), {
     title: 'Distance travelled by the nose', xLabel: 't (0 to 1)', yLabel: 'distance (m)', minSpan: 0.5, ...curves,
@@ -105,9 +107,9 @@ if (affineViewer) {
   let accepted = { ...p };
   const gui = new GUI({ container: document.querySelector('#fig-affine .panel'), title: 'Key B' });
   gui.add(p, 'angle', -180, 180, 1).name('angle about y (°)');
-  gui.add(p, 'sx', -2, 2.5, 0.01).name('scale x');
-  gui.add(p, 'sy', -2, 2.5, 0.01).name('scale y');
-  gui.add(p, 'sz', -2, 2.5, 0.01).name('scale z');
+  gui.add(p, 'sx', -2, 2.5, 0.001).name('scale x');
+  gui.add(p, 'sy', -2, 2.5, 0.001).name('scale y');
+  gui.add(p, 'sz', -2, 2.5, 0.001).name('scale z');
   gui.add(p, 'shear', -1.5, 1.5, 0.01).name('shear x by y');
   gui.add(p, 'useExercise').name('use my exercise');
   const plot = new Plot(document.getElementById('affine-plot'), {

@@ -65,10 +65,14 @@ if (emitterViewer) {
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     showNote(note, [rejected, scene.draw(emitterViewer, t),
-      hasCompute ? '' : '(Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.)'].filter(Boolean).join(' '));
+      hasCompute ? '' : '(Step on GPU needs WebGPU: this browser draws with WebGL2, which has no compute shaders.)',
+      // Nothing comes back from the GPU: Rust's counts are NaN in this mode, the guides numbers.
+      p.on === 'GPU' ? 'The GPU\'s particles are not read back, so they are not counted: the plot keeps only its guides until step on is CPU again.' : '',
+    ].filter(Boolean).join(' '));
     // Ten times a second, and at once after a jump; the x axis always spans the whole loop.
     if (frame++ % 6 === 0 || Math.abs(t - plotTime) > 0.2) {
-      countPlot.setData(spanTimeline(columns(scene.countSamples(), 5), timeline.duration));
+      const cols = columns(Array.from(scene.countSamples(), (v) => (Number.isNaN(v) ? null : v)), 5);
+      countPlot.setData(spanTimeline(cols, timeline.duration));
       plotTime = t;
     }
     countPlot.setCursor(t);

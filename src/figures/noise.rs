@@ -1048,7 +1048,7 @@ impl Octaves {
                 };
                 note += &format!(
                     " {range} finer than the mesh: its vertices are {} m apart, and a cell \
-                     narrower than two spacings ({} m) falls between vertices and comes back as \
+                     no wider than two spacings ({} m) falls between vertices and comes back as \
                      spikes (aliasing); they are grey in the plot.{}",
                     format_number(spacing),
                     format_number(2.0 * spacing),
@@ -1420,7 +1420,7 @@ impl TerrainScene {
                 ("they", "fall", "add", "are", "them")
             };
             note += &format!(
-                " The vertices are {} m apart, so {range} finer than the mesh (cells narrower \
+                " The vertices are {} m apart, so {range} finer than the mesh (cells no wider \
                  than two spacings, {} m): {they} {fall} between vertices and only {add} \
                  aliasing{}.",
                 format_number(spacing),

@@ -432,7 +432,7 @@ impl EmitterFigure {
     /// explosions', rate × lifetime, the fountain's slots]` after each step since the run
     /// started (a scrub back, a changed setting or the timeline's loop starts it again); the
     /// last two are constant guides ([`EmitterFigure::steady_count`], [`EmitterFigure::slots`]).
-    /// Empty in GPU mode.
+    /// In GPU mode the counts after step 0 are NaN: the particles are not read back.
     pub fn count_samples(&self) -> Vec<f32> {
         let steady = if self.mode == 1 {
             0.0
@@ -545,7 +545,6 @@ impl EmitterFigure {
             return Ok((true, 0));
         }
         self.time_sec = time_sec;
-        self.history.clear(); // the GPU's particles never come back: no samples
         let n = target - self.steps_done;
         for _ in 0..n {
             let k = self.steps_done;
@@ -561,6 +560,12 @@ impl EmitterFigure {
             self.emitters[0].rate_per_sec = rate;
             result?;
             self.steps_done += 1;
+            // The GPU's particles never come back, so their counts are unknown (NaN, a gap in
+            // the plot); the times keep the plot's guides drawn over the run.
+            if self.history.len() < 3 * MAX_COUNT_SAMPLES {
+                self.history
+                    .extend([self.steps_done as f32 * SIM_DT, f32::NAN, f32::NAN]);
+            }
         }
         if let Some(count) = self.pending_presses(target) {
             let (fade, surfaces) = (self.fade, &self.surfaces);

@@ -128,15 +128,16 @@ pub fn terrain_normal(h: f32, s: f32, grad_g: Vec2) -> Vec3 {
 
 /// The last octave a mesh of `resolution` vertices per side over `[−1, 1]` can show, for a
 /// terrain of scale `s` and frequency gain `omega`. Octave k has noise cells `1/(s ωᵏ)` metres
-/// wide and the vertices are `Δ = 2/(resolution − 1)` apart; a cell narrower than `2Δ` gets
-/// fewer than two vertices (past the Nyquist limit of the mesh), so its bumps fall between
-/// vertices and come back as spikes of the wrong size (aliasing). Octave k is kept while
-/// `s ωᵏ ≤ 1/(2Δ) = (resolution − 1)/4`. `None` when even octave 0 is too fine; with `ω = 1`
+/// wide and the vertices are `Δ = 2/(resolution − 1)` apart; a cell of `2Δ` or less gets at most
+/// two vertices (at or past the Nyquist limit of the mesh), so its bumps fall between vertices
+/// and come back as one-vertex spikes of the wrong size (aliasing). Octave k is kept while
+/// `s ωᵏ < 1/(2Δ) = (resolution − 1)/4`. `None` when even octave 0 is too fine; with `ω = 1`
 /// every octave has octave 0's cells, so all of them are kept ([`crate::noise::MAX_N`]).
 pub fn last_resolved_octave(resolution: usize, s: f32, omega: f32) -> Option<u32> {
     let limit = resolution.saturating_sub(1) as f32 / 4.0;
-    // A relative slack so that a cell of exactly 2Δ (s ωᵏ = limit) counts as resolved.
-    let fits = |freq: f32| freq <= limit * (1.0 + 1e-6);
+    // A relative slack so that a cell of exactly 2Δ (s ωᵏ = limit, 129 vertices at ω = 2)
+    // counts as past the limit in spite of round-off.
+    let fits = |freq: f32| freq < limit * (1.0 - 1e-6);
     if !fits(s) {
         return None;
     }

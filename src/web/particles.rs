@@ -118,14 +118,11 @@ impl EmitterScene {
         self.scene.advance_to(time_sec).map_err(js)
     }
     /// `[t, fountain's particles, explosions', rate × lifetime, fountain's slots]` per step
-    /// since the run started, flat (see `EmitterFigure::count_samples`); empty on the GPU.
+    /// since the run started, flat (see `EmitterFigure::count_samples`); on the GPU the counts
+    /// are NaN (not read back) and only the guides are numbers.
     #[wasm_bindgen(js_name = countSamples)]
     pub fn count_samples(&self) -> Vec<f32> {
-        if self.gpu_on {
-            Vec::new()
-        } else {
-            self.scene.count_samples()
-        }
+        self.scene.count_samples()
     }
     /// Simulates to `time_sec` (fixed steps of 1/60 s, replayed from the start when needed) and
     /// draws; returns the note.

@@ -386,6 +386,31 @@ test('lesson 11 on WebGPU: the GPU-stepped particles are drawn as atlas sprites,
     await frames(page, 4);
     const note = await page.locator('#emitters-note').textContent();
     assert.match(note, /Stepped on the GPU .* play the same atlas/, note);
+    // Nothing is read back, so nothing is counted: the note says so, and the plot keeps its
+    // guides from 0 to the playhead (the dashed rate × lifetime line: a dense row of dark grey
+    // pixels, wider than any tick label; the row's longest such stretch, as a share of the plot).
+    assert.match(note, /not read back, so they are not counted: the plot keeps only its guides/, note);
+    await frames(page, 8);
+    const guide = await page.evaluate(() => {
+      const c = document.querySelector('#emitters-plot canvas');
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let best = 0;
+      for (let y = 0; y < c.height; y++) {
+        let [n, first, last] = [0, -1, -1];
+        for (let x = 0; x < c.width; x++) {
+          const i = 4 * (y * c.width + x);
+          if (d[i] < 0x90 && Math.abs(d[i] - d[i + 1]) < 20 && Math.abs(d[i + 1] - d[i + 2]) < 20 && d[i + 3] > 128) {
+            n++;
+            if (first < 0) first = x;
+            last = x;
+          }
+        }
+        if (n > 0.4 * (last - first + 1)) best = Math.max(best, (last - first) / c.width);
+      }
+      return best;
+    });
+    await page.locator('#emitters-plot').screenshot({ path: 'tests/screenshots/11-particles-emitters-plot-gpu-webgpu.png' });
+    assert.ok(guide > 0.1, `no guide line across the live-particle plot on the GPU (${guide})`);
     const gpu = await bluePixels(page, fig);
     await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/11-particles-emitters-gpu-webgpu.png' });
     // Other particles from the same distributions: about as many blue pixels.
