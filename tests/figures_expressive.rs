@@ -342,7 +342,6 @@ fn the_jump_stretch_is_continuous_and_capped_at_1_6() {
 
 #[test]
 fn the_damping_note_names_the_four_regimes() {
-    assert!(damping_regime(0.0, 150.0).starts_with("undamped"));
     assert!(damping_regime(4.0, 150.0).starts_with("under-damped"));
     assert!(damping_regime(20.0, 100.0).starts_with("critically damped"));
     assert!(damping_regime(30.0, 100.0).starts_with("over-damped"));
@@ -924,17 +923,17 @@ fn the_antenna_note_says_what_the_tip_does_apart_from_one_joint() {
     let mut scene = FollowThrough::new();
     scene.set(50.0, 10.0, 6.0).unwrap();
     let note = scene.draw(&mut Frame::default(), 1.5).unwrap();
-    assert!(note.contains("2√k = 14.142): under-damped, so one joint on its own would swing past"), "{note}");
-    assert!(note.contains("its tip stays behind the base"), "{note}");
+    assert!(note.contains("2√k = 14.142): under-damped (one joint alone would swing past)"), "{note}");
+    assert!(note.contains("the tip never gets 1 mm past the base"), "{note}");
     assert!(plotted_swing_past(&scene.sample_tip(401).unwrap()) < 1e-3);
     scene.set(150.0, 30.0, 6.0).unwrap();
     let note = scene.draw(&mut Frame::default(), 1.5).unwrap();
-    assert!(note.contains("over-damped") && note.contains("stays behind"), "{note}");
+    assert!(note.contains("over-damped") && note.contains("never gets 1 mm past"), "{note}");
     for (k, c) in [(150.0, 10.0), (600.0, 8.0)] {
         scene.set(k, c, 6.0).unwrap();
         let note = scene.draw(&mut Frame::default(), 1.5).unwrap();
         assert!(note.contains("under-damped"), "k {k}, c {c}: {note}");
-        let said = number_after(&note, "its tip swings up to ");
+        let said = number_after(&note, "the tip swings up to ");
         let plotted = plotted_swing_past(&scene.sample_tip(401).unwrap());
         assert!(plotted > 0.02, "k {k}, c {c}: the plot shows {plotted} m");
         assert!((said - plotted).abs() < 5e-3, "k {k}, c {c}: {note}; the plot shows {plotted} m");

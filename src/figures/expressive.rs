@@ -562,19 +562,16 @@ impl JumpComparison {
 // Figure 3: follow-through on an antenna.
 
 /// What one joint's damped spring of stiffness `k` and damping `c` does on its own, in words:
-/// undamped at `c = 0`, under-damped below `2√k`, critically damped at it (within 0.1 %),
-/// over-damped above. A chain of such joints need not do the same (Figure 3's note says what its
-/// tip does).
+/// under-damped below `2√k`, critically damped at it (within 0.1 %), over-damped above. A chain
+/// of such joints need not do the same (Figure 3's note says what its tip does).
 pub fn damping_regime(c: f32, k: f32) -> &'static str {
     let critical = 2.0 * k.sqrt();
-    if c == 0.0 {
-        "undamped, so one joint on its own would swing forever"
-    } else if (c - critical).abs() <= 1e-3 * critical {
-        "critically damped, so one joint on its own would return fastest without swinging past"
+    if (c - critical).abs() <= 1e-3 * critical {
+        "critically damped (one joint alone would not swing past)"
     } else if c < critical {
-        "under-damped, so one joint on its own would swing past its target and wobble"
+        "under-damped (one joint alone would swing past)"
     } else {
-        "over-damped, so one joint on its own would creep back without swinging past"
+        "over-damped (one joint alone would creep back)"
     }
 }
 
@@ -852,14 +849,14 @@ impl FollowThrough {
         // What the chain does, from its simulated loop: each joint chases a moving target, so
         // the tip can stay behind while one joint alone would swing past, or the reverse.
         let chain = if self.swing_past >= 1e-3 {
-            format!("swings up to {} m past the base", format_number(self.swing_past))
+            format!("swings up to {} m", format_number(self.swing_past))
         } else {
-            "stays behind the base (never 1 mm past it)".to_string()
+            "never gets 1 mm".into()
         };
         let offset = antenna.tip().x - base.x;
         let mut note = format!(
-            "Damping c = {} (critical: 2√k = {}): {}. The whole antenna: after each stop its tip \
-             {chain}. The tip is {} m {} of the base.",
+            "Damping c = {} (critical: 2√k = {}): {}. After each stop the tip {chain} past the \
+             base. The tip is {} m {} of the base.",
             format_number(self.damping),
             format_number(critical),
             damping_regime(self.damping, self.stiffness),
