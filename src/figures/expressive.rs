@@ -561,18 +561,17 @@ impl JumpComparison {
 // ---------------------------------------------------------------------------------------------
 // Figure 3: follow-through on an antenna.
 
-/// What a damped spring of stiffness `k` and damping `c` does, in words: undamped at `c = 0`,
-/// under-damped below `2√k`, critically damped at it (within 0.1 %), over-damped above.
+/// What one joint's damped spring of stiffness `k` and damping `c` does on its own, in words:
+/// under-damped below `2√k`, critically damped at it (within 0.1 %), over-damped above. A chain
+/// of such joints need not do the same (Figure 3's note says what its tip does).
 pub fn damping_regime(c: f32, k: f32) -> &'static str {
     let critical = 2.0 * k.sqrt();
-    if c == 0.0 {
-        "undamped, the antenna swings forever and nothing takes energy out"
-    } else if (c - critical).abs() <= 1e-3 * critical {
-        "critically damped, the fastest return without swinging past"
+    if (c - critical).abs() <= 1e-3 * critical {
+        "critically damped (one joint alone would not swing past)"
     } else if c < critical {
-        "under-damped, the antenna swings past and wobbles"
+        "under-damped (one joint alone would swing past)"
     } else {
-        "over-damped, it creeps back without swinging"
+        "over-damped (one joint alone would creep back)"
     }
 }
 
@@ -592,8 +591,10 @@ const TIP_TOLERANCE: f32 = 2e-3;
 /// Figure 3: a body slides from side to side and stops at each end; an antenna on top, a chain
 /// of joints each pulled by a damped spring towards its rest place above the joint below, lags
 /// behind, swings past when the body stops, and settles. The motion is simulated from time 0 to
-/// the timeline's time (deterministic: scrubbing gives the same picture); while time moves
-/// forward the simulation continues from where it was instead of starting again.
+/// the timeline's time (deterministic: scrubbing gives the same picture), starting from the
+/// antenna's state at the start of a loop once the body has looped for a while, so the end of
+/// the loop runs on into its start without a jump; while time moves forward the simulation
+/// continues from where it was instead of starting again.
 ///
 /// With "use my exercise" every joint of the shown antenna is stepped by the student's
 /// `spring_step` (exercise 2b.2) and the reference antenna is drawn beside it as a ghost.
@@ -609,6 +610,10 @@ pub struct FollowThrough {
     yours: Antenna,
     /// Steps of [`DT`] both antennas have taken; `None` when they must start again.
     steps_done: Option<usize>,
+    /// Both antennas at time 0: the reference's state at the start of a loop once it repeats.
+    start: Antenna,
+    /// The furthest (m) the tip swings past the base after a stop, over a loop from `start`.
+    swing_past: f32,
     /// Why the student's antenna stopped (a failure note), if it did.
     problem: Option<String>,
 }
@@ -641,16 +646,47 @@ impl FollowThrough {
 
     pub fn new() -> Self {
         let antenna = Antenna::new(Self::base(0.0), 6, Self::segment(6));
-        FollowThrough {
+        let mut scene = FollowThrough {
             stiffness: 150.0,
             damping: 10.0,
             joints: 6,
             use_exercise: false,
             runner: DEFAULT_RUNNER,
             reference: antenna.clone(),
-            yours: antenna,
+            yours: antenna.clone(),
             steps_done: None,
+            start: antenna,
+            swing_past: 0.0,
             problem: None,
+        };
+        scene.settle();
+        scene
+    }
+
+    /// How far (m) the tip is past the base in the direction of the body's last move while the
+    /// body holds still (1 to 2 s at the right end, 3 to 4 s at the left); 0 while it moves.
+    fn past(time_sec: f32, antenna: &Antenna) -> f32 {
+        let side = match time_sec {
+            t if (1.0..=2.0).contains(&t) => 1.0,
+            t if t >= 3.0 => -1.0,
+            _ => 0.0,
+        };
+        side * (antenna.tip().x - antenna.positions[0].x)
+    }
+
+    /// Loops the body under a straight antenna until the antenna's state at the start of a loop
+    /// repeats (three loops settle every slider setting to float rounding; four are run), keeps
+    /// that state as `start` and the furthest the tip swings past the base in the last loop.
+    fn settle(&mut self) {
+        let mut antenna = Antenna::new(Self::base(0.0), self.joints, Self::segment(self.joints));
+        for _ in 0..4 {
+            self.start = antenna.clone();
+            self.swing_past = 0.0;
+            for step in 1..=(Self::DURATION / DT).round() as usize {
+                let t = step as f32 * DT;
+                antenna.step(Self::base(t), self.stiffness, self.damping, DT);
+                self.swing_past = self.swing_past.max(Self::past(t, &antenna));
+            }
         }
     }
 
@@ -667,6 +703,7 @@ impl FollowThrough {
         if (stiffness, damping, joints) != (self.stiffness, self.damping, self.joints) {
             (self.stiffness, self.damping, self.joints) = (stiffness, damping, joints);
             self.steps_done = None;
+            self.settle();
         }
         Ok(())
     }
@@ -705,14 +742,13 @@ impl FollowThrough {
         }
     }
 
-    /// Simulates from the start (body at rest at the left) to `time_sec` in steps of [`DT`],
+    /// Simulates from the start of a loop (`start`) to `time_sec` in steps of [`DT`],
     /// continuing from the last call when time moved forward.
     fn simulate(&mut self, time_sec: f32) {
         let steps = (time_sec / DT).round() as usize;
         if self.steps_done.is_none_or(|done| done > steps) {
-            // Start from the end of a previous loop at rest: a straight antenna over the left end.
-            self.reference = Antenna::new(Self::base(0.0), self.joints, Self::segment(self.joints));
-            self.yours = self.reference.clone();
+            self.reference = self.start.clone();
+            self.yours = self.start.clone();
             self.problem = None;
             self.steps_done = Some(0);
         }
@@ -742,10 +778,10 @@ impl FollowThrough {
         self.steps_done = Some(steps);
     }
 
-    /// `(t, base x, tip x)` over one loop, metres.
+    /// `(t, base x, tip x)` over one loop from `start`, metres.
     pub fn sample_tip(&mut self, samples: usize) -> Result<Vec<[f32; 3]>, String> {
         check_samples(samples)?;
-        let mut antenna = Antenna::new(Self::base(0.0), self.joints, Self::segment(self.joints));
+        let mut antenna = self.start.clone();
         let total = (Self::DURATION / DT).round() as usize;
         let mut out = Vec::with_capacity(samples);
         let mut next = 0;
@@ -810,12 +846,22 @@ impl FollowThrough {
             );
         }
         let critical = 2.0 * self.stiffness.sqrt();
+        // What the chain does, from its simulated loop: each joint chases a moving target, so
+        // the tip can stay behind while one joint alone would swing past, or the reverse.
+        let chain = if self.swing_past >= 1e-3 {
+            format!("swings up to {} m", format_number(self.swing_past))
+        } else {
+            "never gets 1 mm".into()
+        };
+        let offset = antenna.tip().x - base.x;
         let mut note = format!(
-            "Damping c = {} (critical: 2√k = {}): {}. The tip is {} m behind the base.",
+            "Damping c = {} (critical: 2√k = {}): {}. After each stop the tip {chain} past the \
+             base. The tip is {} m {} of the base.",
             format_number(self.damping),
             format_number(critical),
             damping_regime(self.damping, self.stiffness),
-            format_number((base.x - antenna.tip().x).abs()),
+            format_number(offset.abs()),
+            if offset < 0.0 { "left" } else { "right" },
         );
         if self.use_exercise {
             note += " ";

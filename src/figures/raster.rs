@@ -1435,28 +1435,33 @@ impl Normals {
             m,
             Vec3::splat(0.7),
         );
-        let len = 0.35;
+        let len = 0.5;
         for (p, n) in self.normals() {
             let base = m.transform_point3(p);
             frame.arrow(
                 base,
                 base + (nm * n).normalize_or_zero() * len,
                 TRUE_NORMAL,
-                0.07,
+                0.1,
             );
             if self.show_wrong && (self.scale_x - 1.0).abs() > 1e-3 {
                 frame.arrow(
                     base,
                     base + (linear * n).normalize_or_zero() * len,
                     WRONG_NORMAL,
-                    0.07,
+                    0.1,
                 );
             }
         }
-        // The stretched sphere with its arrows stays in view at every scale.
-        let reach = Vec3::new(self.scale_x, 1.0, 1.0) + Vec3::splat(len);
-        let centre = m.transform_point3(Vec3::ZERO);
-        frame.keep_box_in_view(centre - reach, centre + reach);
+        // The stretched sphere with its arrows stays in view at every scale, and no more: its
+        // vertices and the tips of both arrows at each (a unit sphere's vertex is its own
+        // normal), whichever arrows are shown, so the camera stays put as they change.
+        for p in &self.positions {
+            let base = m.transform_point3(*p);
+            frame.keep_in_view.extend(
+                [base, base + (nm * *p).normalize() * len, base + (linear * *p).normalize() * len],
+            );
+        }
         let mut note = format!(
             "{} shading: {}. Stretched {}× along x. Transformed by M itself, a normal leans up to {}° away \
              from the true one (M⁻¹)ᵀ n.",

@@ -921,28 +921,30 @@ impl ImpulseFigure {
             }
             Ok(mine) => {
                 let reference = reference_j(inv);
-                notes.push(
-                    compare_note(
-                        "normal_impulse",
-                        "the impact (with the inverse inertia above)",
-                        &[mine],
-                        &[reference],
-                        1e-3 * (1.0 + reference.abs()),
-                    )
-                    .1,
+                let (_, mut note) = compare_note(
+                    "normal_impulse",
+                    "the impact (with the inverse inertia above)",
+                    &[mine],
+                    &[reference],
+                    1e-3 * (1.0 + reference.abs()),
                 );
-                if mine.is_finite() && mine >= 0.0 {
+                let usable = mine.is_finite() && mine >= 0.0;
+                if !usable {
+                    note += &format!(
+                        " An impulse of {} N s cannot be applied: the figure uses the reference.",
+                        format_number(mine)
+                    );
+                }
+                notes.push(note);
+                if usable {
                     mine
                 } else {
-                    notes.push(format!(
-                        "An impulse of {} N s cannot be applied: the figure uses the reference.",
-                        format_number(mine)
-                    ));
                     reference
                 }
             }
         };
-        (j, notes.join(" "))
+        // One line an exercise (the page keeps the note's line breaks).
+        (j, notes.join("\n"))
     }
 
     /// The box at release: turned by [`DROP_YAW_DEG`] about the vertical, then tilted about z,
@@ -1314,7 +1316,7 @@ impl ImpulseFigure {
             format_number(hit.energy_before),
             format_number(hit.energy_after),
         ) + &if self.use_exercise {
-            format!(" {}", self.exercise_note)
+            format!("\n{}", self.exercise_note)
         } else {
             String::new()
         }

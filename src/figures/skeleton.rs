@@ -952,12 +952,12 @@ impl SkeletonFigure {
         }
         self.scratch_pose = pose;
         self.scratch_model = model;
-        // The floor under the feet stays in view, and room for the labels.
-        lo.y = lo.y.min(0.0);
-        self.bounds = (
-            lo - Vec3::splat(VIEW_MARGIN_M),
-            hi + Vec3::splat(VIEW_MARGIN_M),
-        );
+        // Room for the labels round the body, and the floor under the feet in view; below the
+        // floor nothing is drawn but the lowest joints' balls, so the box stops there.
+        let floor = lo.y.min(0.0) - 1.5 * JOINT_RADIUS;
+        lo -= Vec3::splat(VIEW_MARGIN_M);
+        lo.y = floor;
+        self.bounds = (lo, hi + Vec3::splat(VIEW_MARGIN_M));
     }
 
     /// The box the camera keeps in view ([`Frame::keep_in_view`]), from the last pose.

@@ -251,12 +251,19 @@ impl SingleShape {
         let view = view_of(self.view);
         let ghost_m = self.matrix_at(ghost, stage);
         let boxes = boxes_px(&[m, ghost_m].map(|b| b * Mat4::from_scale(BOX_HALF)), view);
-        // Each order's name straight above its box's centre, past the tip of the box's y axis
-        // (0.6 m, however the box has turned); where an axis, path or dot runs through it there
-        // (the x axis's head when the box has turned half round), the first place round that
-        // point clear of them and of the boxes, upwards first.
+        // Each order's name straight above its box's centre, 0.15 m over the box's highest
+        // corner (Σ hᵢ·|R_yi| above the centre) and, on the solid box, over the highest tip of
+        // its axes (0.6 m long), however the box has turned; where an axis, path or dot runs
+        // through it there, the first place round that point clear of them and of the boxes,
+        // upwards first.
         for order in [shown, ghost] {
-            let top = self.matrix_at(order, stage).w_axis.truncate() + Vec3::Y * 0.75;
+            let placed = self.matrix_at(order, stage);
+            let up = Mat3::from_mat4(placed).row(1);
+            let mut rise = (up.abs() * BOX_HALF).element_sum();
+            if order == shown {
+                rise = rise.max(0.6 * up.max_element());
+            }
+            let top = placed.w_axis.truncate() + Vec3::Y * (rise + 0.15);
             let (name, color) = (order.name(), order.color());
             let mut candidates = Label::around_dot(top, 0.0, -Vec2::Y, name, color, 3, 8, 8.0);
             let above = Label {
