@@ -1451,3 +1451,13 @@ fn the_pages_slowest_frame_at_its_fastest_speed_keeps_the_flock() {
         }
     }
 }
+
+/// The Try this under the flock: the headings begin random, with φ a few hundredths (under
+/// 0.05), below the 1/√N ≈ 0.06 typical of 300 random headings.
+#[test]
+fn the_flock_starts_with_polarisation_a_few_hundredths() {
+    let f = FlockFigure::new();
+    let phi = f.polarisation();
+    assert_eq!(f.flock().positions.len(), 300);
+    assert!((0.005..0.05).contains(&phi), "φ at the start: {phi}");
+}
