@@ -1405,3 +1405,59 @@ fn the_main_view_keeps_the_overshooting_flock_in_view() {
     }
 }
 
+
+/// The page's slowest frame at its fastest speed: the cap on a frame's `dt` in `tick` and the
+/// largest option of the timeline's speed menu, read from `www/lesson.js`.
+fn page_largest_frame_jump_sec() -> f32 {
+    let js = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/www/lesson.js")).unwrap();
+    let cap_at = js.find("Math.min((nowMs - lastMs) / 1000, ").expect("the frame cap in tick") + 34;
+    let cap: f32 = js[cap_at..].split(')').next().unwrap().trim().parse().unwrap();
+    let menu = &js[js.find("class=\"speed\"").expect("the speed menu")..];
+    let menu = &menu[..menu.find("</select>").unwrap()];
+    let fastest = menu
+        .split("<option value=\"")
+        .skip(1)
+        .map(|o| o.split('"').next().unwrap().parse::<f32>().unwrap())
+        .fold(0.0, f32::max);
+    assert!(cap > 0.0 && fastest >= 1.0, "{cap} {fastest}");
+    cap * fastest
+}
+
+#[test]
+fn the_pages_slowest_frame_at_its_fastest_speed_keeps_the_flock() {
+    let jump = page_largest_frame_jump_sec();
+    // Several start times, so that the frame's ends fall at every rounding of the steps.
+    for start_step in [180, 181, 197] {
+        for offset in [0.0, 0.3, 0.7] {
+            let t0 = (start_step as f32 + offset) / 60.0;
+            let mut slow = FlockFigure::new();
+            let mut smooth = FlockFigure::new();
+            for k in 1..=start_step {
+                slow.advance_to(k as f32 / 60.0).unwrap();
+            }
+            slow.advance_to(t0).unwrap();
+            let samples_before = slow.plot_samples().len();
+            let taken = slow.advance_to(t0 + jump).unwrap();
+            assert!(taken >= 12, "{taken} steps for a {jump} s frame from {t0} s");
+            let history = slow.plot_samples();
+            assert_eq!(history[0], 0.0, "the order plot still starts at 0 s (from {t0} s)");
+            assert_eq!(history.len(), samples_before + 3 * taken, "from {t0} s");
+            // The same flock as one stepped a frame at a time: not a fresh start.
+            let end_steps = start_step + taken;
+            for k in 1..=end_steps {
+                smooth.advance_to(k as f32 / 60.0).unwrap();
+            }
+            assert_eq!(slow.flock().positions, smooth.flock().positions, "from {t0} s");
+        }
+    }
+}
+
+/// The Try this under the flock: the headings begin random, with φ a few hundredths (under
+/// 0.05), below the 1/√N ≈ 0.06 typical of 300 random headings.
+#[test]
+fn the_flock_starts_with_polarisation_a_few_hundredths() {
+    let f = FlockFigure::new();
+    let phi = f.polarisation();
+    assert_eq!(f.flock().positions.len(), 300);
+    assert!((0.005..0.05).contains(&phi), "φ at the start: {phi}");
+}

@@ -464,7 +464,7 @@ fn the_dam_break_figure_shows_what_the_lesson_says() {
         .map(|h| h.join().unwrap())
     });
     // Defaults (k = 400, 0.83 ms): once landed, SPH's densest particle 10 to 15 % over ρ₀ with
-    // spikes near 19 %; PBF's within about 1.5 %, 3 % at most.
+    // spikes near 19 %; PBF's within about 2 %, about 5 % at most (at the impact).
     assert!(defaults.exploded.is_none());
     let (lo, hi) = defaults.p10_p90(1);
     assert!(
@@ -474,15 +474,15 @@ fn the_dam_break_figure_shows_what_the_lesson_says() {
     let sph = defaults.peak(1);
     assert!((0.17..0.21).contains(&sph), "{sph}");
     let (_, pbf_hi) = defaults.p10_p90(2);
-    assert!(pbf_hi < 0.017, "PBF {pbf_hi}");
+    assert!(pbf_hi < 0.022, "PBF {pbf_hi}");
     let pbf = defaults.peak(2);
-    assert!((0.025..0.033).contains(&pbf), "{pbf}");
-    // From 2 s on SPH keeps over 100 J per metre of depth; PBF less than a fifth of SPH's.
+    assert!((0.045..0.06).contains(&pbf), "{pbf}");
+    // From 2 s on SPH keeps over 100 J per metre of depth; PBF less than a third of SPH's.
     let late: Vec<_> = defaults.rows.iter().filter(|r| r[0] >= 2.0).collect();
     let sph_least = late.iter().map(|r| r[3]).fold(f32::MAX, f32::min);
     let ratio = late.iter().map(|r| r[4] / r[3]).fold(0.0f32, f32::max);
     assert!(
-        sph_least > 100.0 && ratio < 0.2,
+        sph_least > 100.0 && ratio < 0.33,
         "{sph_least} J, PBF/SPH up to {ratio}"
     );
     // 1.67 ms runs with about the same squeeze; 2.5 ms explodes within about half a second.
@@ -1039,4 +1039,22 @@ fn the_pool_is_flat_and_pans_on_a_drag() {
     // The page's camera (lessons/15-fluids/lesson.js); the box's floor.
     let floor = [Vec3::ZERO, Vec3::new(box_size(Dim::Two).x, 0.0, 0.0)];
     flat::assert_drag_pans(&frame, [0.8, 0.5, 0.0, 2.6, 0.0, 0.0], Vec2::new(650.0, 420.0), floor);
+}
+
+/// At the dam's release PBF's water falls: its artificial pressure `s_corr`, which pushes the
+/// surface layer up at every iteration with nothing pulling it back, stays too weak to lift the
+/// top of the column above where it started (within a quarter of a spacing) over the first
+/// quarter second.
+#[test]
+fn the_dam_breaks_pbf_water_falls_instead_of_rising_at_the_release() {
+    let mut fig = DamBreakFigure::new();
+    let top = |fig: &DamBreakFigure| fig.fluids()[1].positions.iter().map(|p| p.y).fold(f32::MIN, f32::max);
+    let (top0, spacing) = (top(&fig), fig.fluids()[1].spacing);
+    let mut highest = top0;
+    for k in 1..=15 {
+        fig.advance_to(k as f32 * DAM_FRAME_SEC).unwrap();
+        highest = highest.max(top(&fig));
+    }
+    assert!(highest - top0 < 0.25 * spacing, "PBF's top rose {} spacings", (highest - top0) / spacing);
+    assert!(top(&fig) < top0 - spacing, "PBF's top at 0.25 s: {} m, from {top0} m", top(&fig));
 }

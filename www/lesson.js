@@ -51,7 +51,13 @@ function typedValueNote(controller, typed) {
   }
   const [lo, hi] = [controller._min, controller._max];
   if ((lo !== undefined && value < lo) || (hi !== undefined && value > hi)) {
-    return `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}: ${name} is set to ${controller.getValue()}.`;
+    // The control took the nearest end of its range; a figure that rejects that too (its note
+    // says why) puts the control back, and the sentence says so.
+    const end = value < lo ? lo : hi;
+    const now = controller.getValue();
+    return now === end
+      ? `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}: ${name} is set to ${now}.`
+      : `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}, and the figure does not take the nearest end, ${end} (see its note): ${name} stays ${now}.`;
   }
   // A control with a step (a count's is 1) takes the nearest step to the number typed. (When the
   // figure rejected that value, its own message says so, and the control went back.)

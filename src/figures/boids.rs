@@ -28,14 +28,15 @@ pub const PAGE_MAX_BOIDS: usize = 3000;
 pub const PAGE_MAX_TIMED_BOIDS: usize = 20_000;
 
 /// The most steps the flock takes to catch up with the timeline in one call (a slow frame);
-/// a longer jump restarts the flock.
-pub const MAX_CATCH_UP: usize = 10;
+/// a longer jump (a scrub, the loop) restarts the flock. The page caps a frame at 0.1 s and
+/// plays at up to 2×: 0.2 s of timeline, 12 steps of [`SIM_DT`], 13 where the frame's ends
+/// round apart, so the slowest frame catches up instead of restarting.
+pub const MAX_CATCH_UP: usize = 13;
 
-/// GPU mode: the most steps queued in one call for a flock of `n` boids: [`MAX_CATCH_UP`] up to
-/// 10,000 boids, fewer above, one from 100,000 on, so that a frame queues about the same work
-/// at any size.
+/// GPU mode: the most steps queued in one call for a flock of `n` boids: 10 up to 10,000 boids,
+/// fewer above, one from 100,000 on, so that a frame queues about the same work at any size.
 pub fn max_gpu_steps(n: usize) -> usize {
-    (MAX_CATCH_UP * 10_000 / n.max(1)).clamp(1, MAX_CATCH_UP)
+    (100_000 / n.max(1)).clamp(1, 10)
 }
 
 /// Length of the flock figure's purple steering arrow per m/s² of steering acceleration, metres.

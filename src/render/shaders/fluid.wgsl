@@ -150,7 +150,6 @@ fn next(c: ptr<function, Cursor>) -> u32 {
         }
         start_row(c);
     }
-    return NONE;
 }
 
 // ρ_i = m (W(0) + Σ_j W(|x_i − x_j|)) at the positions of `pos` or of `pred`.
