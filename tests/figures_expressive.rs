@@ -385,16 +385,10 @@ fn the_antenna_keeps_its_length_and_stays_finite_over_every_slider_corner() {
 
 /// Figure 4's page camera, as lessons/02b-expressive-animation/lesson.js sets it.
 fn follow_view() -> [f32; 6] {
-    include_str!("../lessons/02b-expressive-animation/lesson.js")
-        .split("followViewer.setCamera(")
-        .nth(1)
-        .and_then(|s| s.split(')').next())
-        .expect("the page's camera")
-        .split(',')
-        .map(|x| x.trim().parse().unwrap())
-        .collect::<Vec<f32>>()
-        .try_into()
-        .unwrap()
+    crate::page_camera(
+        include_str!("../lessons/02b-expressive-animation/lesson.js"),
+        "followViewer",
+    )
 }
 
 #[test]

@@ -1118,16 +1118,10 @@ fn the_highlight_is_narrower_than_the_spacing_of_the_spheres_vertices() {
 fn the_stretched_sphere_fills_the_normals_canvas() {
     use glam::{Mat4, Vec2};
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
-    let view: [f32; 6] = include_str!("../lessons/00-triangles-to-pixels/lesson.js")
-        .split("normalsViewer.setCamera(")
-        .nth(1)
-        .and_then(|s| s.split(')').next())
-        .expect("the page's camera")
-        .split(',')
-        .map(|x| x.trim().parse().unwrap())
-        .collect::<Vec<f32>>()
-        .try_into()
-        .unwrap();
+    let view = crate::page_camera(
+        include_str!("../lessons/00-triangles-to-pixels/lesson.js"),
+        "normalsViewer",
+    );
     for scale in [1.0, 3.0, 4.0] {
         for size in [Vec2::new(650.0, 420.0), Vec2::new(760.0, 340.0)] {
             let mut scene = Normals::new();

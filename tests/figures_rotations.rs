@@ -934,16 +934,7 @@ fn with_a_panicking_slerp_the_key_circle_names_the_dots_it_draws() {
 
 /// The camera lessons/03-rotations/lesson.js places for `viewer` (its `setCamera` arguments).
 fn page_view(viewer: &str) -> [f32; 6] {
-    include_str!("../lessons/03-rotations/lesson.js")
-        .split(&format!("{viewer}.setCamera("))
-        .nth(1)
-        .and_then(|s| s.split(')').next())
-        .expect("the page's camera")
-        .split(',')
-        .map(|x| x.trim().parse().unwrap())
-        .collect::<Vec<f32>>()
-        .try_into()
-        .unwrap()
+    crate::page_camera(include_str!("../lessons/03-rotations/lesson.js"), viewer)
 }
 
 #[test]

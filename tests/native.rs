@@ -106,6 +106,21 @@ mod skeleton;
 #[path = "skinning.rs"]
 mod skinning;
 
+/// The camera a lesson's page sets on a viewer: the six numbers of `VIEWER.setCamera(...)` in the
+/// page's script `js` (`include_str!` of its lesson.js), so that a framing test checks the view
+/// the page really shows.
+pub fn page_camera(js: &str, viewer: &str) -> [f32; 6] {
+    js.split(&format!("{viewer}.setCamera("))
+        .nth(1)
+        .and_then(|s| s.split(')').next())
+        .unwrap_or_else(|| panic!("the page sets no camera on {viewer}"))
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect::<Vec<f32>>()
+        .try_into()
+        .unwrap()
+}
+
 /// Every file under `tests/` that is a test (a `NAME.rs` there, or a folder's `main.rs`) is built:
 /// a module of this binary or a `[[test]]` target of Cargo.toml.
 #[test]
