@@ -812,6 +812,10 @@ export class Plot {
         label,
         stroke: colors[i % colors.length],
         width: widths[i] ?? 2,
+        // Curves at sub-pixel positions (uPlot rounds a series' points to whole pixels by default,
+        // which draws a sloping or almost flat curve as a staircase of 1 px steps); the grid and
+        // ticks stay on whole pixels, crisp.
+        pxAlign: 0,
         // uPlot scales a width by the pixel ratio but draws a dash pattern in canvas pixels.
         ...(dashes[i] ? { dash: dashes[i].map((d) => d * devicePixelRatio) } : {}),
         // `points: false`: no dots on the samples (uPlot draws them while few samples are in

@@ -107,3 +107,55 @@ test('a number typed between a control\'s steps says which step it took (a count
     await context.close();
   }
 });
+
+test('a plot draws a straight line straight, not as a staircase of whole pixels', async () => {
+  // The shell's Plot, on a page's own copy of www/lesson.js, drawing y = 6 - 12 t over 101
+  // samples (lesson 05's 1985 curvature line): down each column of the plot's canvas, the
+  // line's centre (its coverage-weighted row) lies on one straight line to within 0.4 px (about
+  // 0.25 px measured: antialiasing moves a 1.5 px line's centre a little). uPlot rounds a series'
+  // points to whole pixels unless told not to, which drew it as 1 px steps (0.65 px off).
+  const context = await launch('webgl2');
+  try {
+    const { page } = await openPage(context, `${site.origin}/lessons/05-noise/?backend=webgl2`, { width: 1280, height: 900 });
+    const columns = await page.evaluate(async () => {
+      const { Plot } = await import('/www/lesson.js');
+      const host = document.createElement('div');
+      host.style.width = '600px';
+      document.body.prepend(host);
+      const plot = new Plot(host, { title: 'line', xLabel: 't', yLabel: 'y (no unit)', series: ['line'], colors: ['#000'], widths: [1.5] });
+      const t = Array.from({ length: 101 }, (_, i) => i / 100);
+      plot.setData([t, t.map((x) => 6 - 12 * x)]);
+      await new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(ok)));
+      const canvas = host.querySelector('canvas');
+      const u = plot.plot;
+      const { left, top, width, height } = u.bbox;
+      const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+      const out = [];
+      // The inner 80 % of the plot's width, away from the axes' ends.
+      for (let x = Math.round(left + 0.1 * width); x < left + 0.9 * width; x += 1) {
+        let sum = 0;
+        let weight = 0;
+        for (let y = Math.floor(top); y < top + height; y++) {
+          const i = (y * canvas.width + x) * 4;
+          // The black line's coverage (the canvas is transparent under it), ignoring the grid's
+          // faint lines.
+          const alpha = data[i + 3];
+          const d = alpha < 40 ? 0 : alpha * (1 - (data[i] + data[i + 1] + data[i + 2]) / 765);
+          sum += d * y;
+          weight += d;
+        }
+        if (weight > 0) out.push([x, sum / weight]);
+      }
+      return out;
+    });
+    assert.ok(columns.length > 300, `${columns.length} columns with the line`);
+    const n = columns.length;
+    const mx = columns.reduce((s, [x]) => s + x, 0) / n;
+    const my = columns.reduce((s, [, y]) => s + y, 0) / n;
+    const slope = columns.reduce((s, [x, y]) => s + (x - mx) * (y - my), 0) / columns.reduce((s, [x]) => s + (x - mx) ** 2, 0);
+    const worst = Math.max(...columns.map(([x, y]) => Math.abs(y - (my + slope * (x - mx)))));
+    assert.ok(worst < 0.4, `the line's centre leaves the straight line by ${worst.toFixed(2)} px`);
+  } finally {
+    await context.close();
+  }
+});
