@@ -332,7 +332,7 @@ fn the_skinned_pair_keeps_both_bodies_or_both_left_legs_in_view() {
                     "under the feet: {titles:?}"
                 );
             }
-            for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+            for size in crate::label_clearance::CANVASES {
                 for (yaw, pitch) in [(1.45, 0.15), (1.45 - 0.008 * 130.0, 0.15 + 0.008 * 42.0)] {
                     let mut camera = OrbitCamera::from_view([0.0, 0.9, 0.0, 3.2, yaw, pitch]);
                     assert!(camera.fit(&frame.fit_points(), size, FIT_PAD_PX));

@@ -907,8 +907,10 @@ fn the_target_arrows_read_at_the_page_camera() {
     use inbetween::figures::blend_shapes::TARGET_ARROW_SCALE;
     let face = inbetween::blend_shapes::face();
     let blue = inbetween::draw::palette::BLUE;
-    for (size, w) in [(760.0, 1.0), (650.0, 1.0), (760.0, 1.5), (650.0, 1.5)] {
-        let size = glam::Vec2::new(size, if size == 760.0 { 380.0 } else { 420.0 });
+    for (size, w) in crate::label_clearance::CANVASES
+        .into_iter()
+        .flat_map(|size| [(size, 1.0), (size, 1.5)])
+    {
         let mut f = TargetsFigure::new();
         f.set_weight(w).unwrap();
         let page = |frame: &Frame| {

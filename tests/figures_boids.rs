@@ -315,7 +315,7 @@ fn the_flock_note_counts_neighbours_in_the_right_number() {
 fn the_rules_figures_labels_never_overlap() {
     // Labels are HTML over the canvas (www/style.css: 600 0.8rem, about 7.7 px a character and
     // 15 px high from 9 px above the anchor, 4.5 px right of it, or ending 4.5 px left of it for
-    // a left label). At the page's camera and both canvas sizes (760 x 380 at 800 x 600, 650 x
+    // a left label). At the page's camera and both canvas sizes (760 x 420 at 800 x 600, 650 x
     // 420 at 1600 x 1000), over the sliders' range, the three labels stay apart. At the arrows'
     // tips alone the short cohesion and alignment arrows put "alignment" on "cohesion" at the
     // defaults. The cell size sets how much the camera takes in (it fits the grid), so the
@@ -356,7 +356,7 @@ fn the_rules_figures_labels_never_overlap() {
                         let mut frame = Frame::default();
                         scene.draw(&mut frame);
                         let view = scene.view();
-                        for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+                        for (w, h) in crate::label_clearance::CANVASES.map(|s| (s.x, s.y)) {
                             let b = boxes(&frame, view, w, h);
                             for i in 0..b.len() {
                                 for j in 0..i {
@@ -389,7 +389,7 @@ fn the_rules_figures_labels_never_overlap() {
     let mut frame = Frame::default();
     scene.draw(&mut frame);
     assert_eq!(frame.labels.len(), 3);
-    for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+    for (w, h) in crate::label_clearance::CANVASES.map(|s| (s.x, s.y)) {
         for r in boxes(&frame, scene.view(), w, h) {
             assert!(r.0 > 0.0 && r.2 < w && r.1 > 0.0 && r.3 < h, "{r:?}");
         }
@@ -1198,7 +1198,7 @@ fn the_rules_figure_shows_its_whole_grid_and_the_heading_under_the_arrows() {
         for (w, h) in [
             (800.0, 600.0),
             (1600.0, 1000.0),
-            (760.0, 380.0),
+            (760.0, 420.0),
             (650.0, 420.0),
         ] {
             let size = glam::Vec2::new(w, h);
@@ -1361,7 +1361,7 @@ fn the_main_view_keeps_the_overshooting_flock_in_view() {
     use glam::Vec2;
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     use inbetween::draw::inset::inset_rect;
-    for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+    for size in crate::label_clearance::CANVASES {
         let left_of = inset_rect(size).min.x;
         let mut f = FlockFigure::new();
         let b = f.params().bounds;

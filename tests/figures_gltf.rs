@@ -237,7 +237,7 @@ fn the_skinned_mesh_stays_in_view_through_the_clip() {
                     .filter(|m| m.mesh == MeshId::SPHERE)
                     .map(|m| m.model.w_axis.truncate())
                     .collect();
-                for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+                for size in crate::label_clearance::CANVASES {
                     let mut camera = OrbitCamera::from_view([x, y, z, distance, 0.6, 0.15]);
                     camera.fit(&f.fit_points(), size, FIT_PAD_PX);
                     let view_proj = camera.projection(size.x / size.y) * camera.view();

@@ -1140,7 +1140,7 @@ fn each_quiz_letter_is_nearest_its_own_terrain() {
     let mut f = Frame::default();
     let meshes: Vec<MeshId> = (0..6).map(MeshId).collect();
     q.draw(&mut f, &meshes);
-    for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+    for size in crate::label_clearance::CANVASES {
         for (yaw, pitch) in [(0.0, 0.8), (-1.216, 1.104), (1.216, 1.104), (-0.6, 0.5)] {
             let mut camera = OrbitCamera::from_view([0.0, -0.2, 0.2, 8.2, yaw, pitch]);
             camera.fit(&f.fit_points(), size, FIT_PAD_PX);
@@ -1205,7 +1205,7 @@ fn the_fractals_names_are_centred_under_their_shapes() {
     let mut s = Fractals::new();
     let mut f = Frame::default();
     s.draw(&mut f);
-    for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+    for size in crate::label_clearance::CANVASES {
         // The page's camera (lessons/05-noise/lesson.js), fitted to the declared view.
         let mut camera = OrbitCamera::from_view([0.0, -0.1, 0.0, 5.6, 0.0, 0.0]);
         camera.fit(&f.fit_points(), size, FIT_PAD_PX);
@@ -1325,7 +1325,7 @@ fn the_quiz_terrains_stay_in_view_from_every_orbit() {
         .flat_map(|(i, t)| t.positions.iter().map(move |&p| p + Quiz::placement(i)))
         .collect();
     assert_eq!(points.len(), 6 * QUIZ_RESOLUTION * QUIZ_RESOLUTION);
-    for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+    for size in crate::label_clearance::CANVASES {
         for k in 0..12 {
             let yaw = k as f32 * std::f32::consts::TAU / 12.0;
             for pitch in [-1.5, -0.6, 0.0, 0.4, 0.8, 1.2, 1.55] {

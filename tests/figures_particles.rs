@@ -440,13 +440,13 @@ fn the_squash_ball_keeps_its_volume() {
 
 #[test]
 fn the_bounce_camera_starts_with_every_ball_and_the_sphere_in_view() {
-    // The page's bounce canvas at 800 x 600 and 1600 x 1000 (760 x 380 and 650 x 420 CSS px).
+    // The page's bounce canvas at 800 x 600 and 1600 x 1000 (760 x 420 and 650 x 420 CSS px).
     // Every ball is dropped from up to 3.1 m; a camera aimed 0.9 m up from 4.5 m away would cut
     // the highest ones off.
     let mut scene = BounceFigure::new();
     scene.advance_to(0.0).unwrap();
     let view = scene.view();
-    for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+    for (w, h) in crate::label_clearance::CANVASES.map(|s| (s.x, s.y)) {
         let mut points: Vec<Vec3> = Vec::new();
         for p in scene.positions() {
             points.push(*p + Vec3::Y * 0.08);
@@ -473,7 +473,7 @@ fn the_bounce_camera_starts_with_every_ball_and_the_sphere_in_view() {
 fn the_squash_figures_labels_never_overlap() {
     // Labels are HTML over the canvas, running rightwards from 0.35em right of their anchor
     // (www/style.css: 600 0.8rem, so about 7.7 px a character and 15 px high). At the page's
-    // camera, both canvas sizes (760 x 380 at 800 x 600, 650 x 420 at 1600 x 1000), every frame
+    // camera, both canvas sizes (760 x 420 at 800 x 600, 650 x 420 at 1600 x 1000), every frame
     // of the 4 s timeline and the sliders' extremes, the two boxes stay apart and on the canvas
     // (the balls drift +x by 2.4 m over the timeline: with the camera's target at x = −0.6 m
     // the long label would run off the 650 px canvas's right edge); with "squash and stretch"
@@ -508,7 +508,7 @@ fn the_squash_figures_labels_never_overlap() {
             let mut frame = Frame::default();
             scene.draw(&mut frame, step as f32 / 60.0).unwrap();
             assert_eq!(frame.labels.len(), 2);
-            for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+            for (w, h) in crate::label_clearance::CANVASES.map(|s| (s.x, s.y)) {
                 let b = boxes(&frame, view, w, h);
                 let apart =
                     b[0].2 < b[1].0 || b[1].2 < b[0].0 || b[0].3 < b[1].1 || b[1].3 < b[0].1;
@@ -581,7 +581,7 @@ fn at_e_1_and_mu_0_the_balls_stay_in_their_box_and_in_view() {
                 "step {k}, ball {i} at {p}"
             );
             went_sideways |= p.x.abs() > 1.0;
-            for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+            for (w, h) in crate::label_clearance::CANVASES.map(|s| (s.x, s.y)) {
                 let s = on_canvas(view, w, h, *p);
                 assert!(
                     s.x > 5.0 && s.x < w - 5.0 && s.y > 5.0 && s.y < h - 5.0,
@@ -605,7 +605,7 @@ fn at_e_1_and_mu_0_the_balls_stay_in_their_box_and_in_view() {
     for x in [-BOX_HALF_M, BOX_HALF_M] {
         for z in [-BOX_HALF_M, BOX_HALF_M] {
             for y in [0.0, BOX_DRAWN_HEIGHT_M] {
-                for (w, h) in [(760.0f32, 380.0f32), (650.0, 420.0)] {
+                for (w, h) in crate::label_clearance::CANVASES.map(|s| (s.x, s.y)) {
                     let s = on_canvas(view, w, h, Vec3::new(x, y, z));
                     assert!(
                         s.x > 0.0 && s.x < w && s.y > 0.0 && s.y < h,

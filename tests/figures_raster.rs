@@ -990,7 +990,7 @@ fn f32_dot_sizes_at_most(scene: &MeshStorage, px: f32) -> bool {
 
 /// Figure 2's labels at the apex (eye, z_near, p, image) keep their places beside their anchors
 /// and clear of the eye's, the point's and the image's dots, at the page's camera fitted to a
-/// 760 × 380 or 760 × 760 canvas (the 800 × 600 page) and a 650 × 420 one (1600 × 1000), all along the
+/// 760 × 420 or 760 × 760 canvas (the 800 × 600 page) and a 650 × 420 one (1600 × 1000), all along the
 /// point's path.
 #[test]
 fn frustum_labels_at_the_apex_stay_apart_and_off_the_dots() {
@@ -998,7 +998,7 @@ fn frustum_labels_at_the_apex_stay_apart_and_off_the_dots() {
     use inbetween::draw::layout::{place, LabelBox, Rect};
     let scene = Frustum::new();
     for size in [
-        Vec2::new(760.0, 380.0),
+        Vec2::new(760.0, 420.0),
         Vec2::new(760.0, 760.0),
         Vec2::new(650.0, 420.0),
     ] {

@@ -997,7 +997,7 @@ fn the_throw_is_framed_round_its_flight_so_the_box_reads() {
     // the box stay inside the canvas, for spins and tilts across the sliders, through the flight.
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     use glam::Vec2;
-    for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+    for size in crate::label_clearance::CANVASES {
         for (spin, tilt) in [(10.0, 20.0), (15.0, 80.0), (5.0, 50.0), (15.0, 40.0), (10.0, 0.0)] {
             let mut f = ThrowFigure::new();
             f.set_throw(spin, tilt).unwrap();

@@ -801,7 +801,7 @@ fn figure_1_paths_are_over_everything_with_a_tick_per_eighth() {
 }
 
 /// Figure 2's labels keep their places beside their anchors, inside the canvas and off the four
-/// keys' dots, at the page's camera fitted to a 760 × 380 canvas (the 800 × 600 page) and a
+/// keys' dots, at the page's camera fitted to a 760 × 420 canvas (the 800 × 600 page) and a
 /// 650 × 420 one (1600 × 1000): with the default keys, the keys 170° and −170° about x, and the
 /// long arc.
 #[test]
@@ -824,7 +824,7 @@ fn circle_labels_stay_beside_their_anchors_and_off_the_dots() {
     long_default.set_long_arc(true);
     scenes.push(long_default);
     for (n, scene) in scenes.iter_mut().enumerate() {
-        for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+        for size in crate::label_clearance::CANVASES {
             let mut f = Frame::default();
             scene.draw_circle(&mut f, 0.3).unwrap();
             let mut camera = OrbitCamera::from_view([0.0, 1.3, 0.0, 5.0, 0.0, 0.0]);

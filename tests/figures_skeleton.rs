@@ -683,7 +683,7 @@ fn everything_drawn_stays_inside_the_declared_view() {
         // its top-left corner, where the page puts it).
         use inbetween::draw::inset::{inset_camera, inset_rect, title_top_left};
         let (view, projection, _) = inset_camera(inset).unwrap();
-        for size in [glam::Vec2::new(760.0, 380.0), glam::Vec2::new(650.0, 420.0)] {
+        for size in crate::label_clearance::CANVASES {
             let r = inset_rect(size);
             let title_end = title_top_left(size) + inbetween::draw::label_size_px(&inset.title);
             for m in ticks.clone() {
@@ -865,7 +865,7 @@ fn path_ticks_are_sized_to_their_spacing_on_the_canvas() {
         ("run", "shin.L", true, 1.0, 0.5),
         ("arm circles", "upper_arm.L", false, 1.2, 0.15),
     ] {
-        for size in [Vec2::new(760.0, 380.0), Vec2::new(650.0, 420.0)] {
+        for size in crate::label_clearance::CANVASES {
             let mut f = SkeletonFigure::new();
             f.set_clip(clip).unwrap();
             f.set_show_boxes(boxes);
@@ -954,15 +954,14 @@ fn the_crossfade_draws_the_world_axes_without_their_letters() {
 }
 
 /// Figure 1 at its page camera (yaw 0.5, pitch 0.2, fitted to the declared box) on the canvases
-/// the page gives it at 1600 × 1000 (650 × 420) and 800 × 600 (760 × 380): the skeleton's joints
+/// the page gives it at 1600 × 1000 (650 × 420) and 800 × 600 (760 × 420): the skeleton's joints
 /// span at least 55 % of the canvas's height over the walk. The declared box stops at the floor
 /// (nothing is drawn below it but the lowest joints' balls, 3.3 cm across), so no margin under
 /// the feet shrinks the skeleton.
 #[test]
 fn the_skeleton_fills_most_of_figure_1s_height() {
-    use glam::Vec2;
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
-    for size in [Vec2::new(650.0, 420.0), Vec2::new(760.0, 380.0)] {
+    for size in crate::label_clearance::CANVASES {
         let mut f = SkeletonFigure::new();
         f.select(f.skeleton().find("thigh.L").unwrap()).unwrap();
         for t in [0.0, 0.3, 0.6] {

@@ -665,7 +665,7 @@ fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
     use inbetween::figures::skinning::{DQS_BESIDE_LBS_PX, LBS_OFFSET, LBS_RING_PX};
     let inset = frame.inset.as_ref().expect("an inset of the followed vertex");
     let (view, projection, _) = inset_camera(inset).unwrap();
-    for size in [glam::Vec2::new(650.0, 420.0), glam::Vec2::new(760.0, 380.0)] {
+    for size in crate::label_clearance::CANVASES {
         let r = inset_rect(size);
         // The title fits inside the inset (the page keeps labels on the canvas).
         let title = inbetween::draw::label_size_px(&inset.title).x;

@@ -356,7 +356,7 @@ fn the_points_label_stays_off_the_paths_at_every_stage() {
     // Both centres' paths: the slide from the origin to t, and R·T's swing from t to R·t.
     let mut path: Vec<Vec3> = (0..=40).map(|k| t * (k as f32 / 40.0)).collect();
     path.extend(shape.swing_arc(48));
-    for size in [glam::Vec2::new(640.0, 420.0), glam::Vec2::new(760.0, 380.0)] {
+    for size in crate::label_clearance::CANVASES {
         for k in 0..=16 {
             let stage = k as f32 / 8.0;
             let mut frame = Frame::default();
@@ -387,7 +387,7 @@ fn each_orders_name_sits_just_above_its_box() {
         shape
             .set_transform(Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, angle_z))
             .unwrap();
-        for size in [glam::Vec2::new(640.0, 420.0), glam::Vec2::new(760.0, 380.0)] {
+        for size in crate::label_clearance::CANVASES {
             for stage in [0.0, 1.0, 2.0] {
                 // As the page does: the camera fitted to the last frame, then the labels placed.
                 let mut camera = OrbitCamera::from_view([0.5, 0.3, 0.0, 5.0, 0.6, 0.45]);

@@ -28,7 +28,7 @@ mod lesson_15;
 
 /// The canvases a 3D figure gets at the two page sizes, CSS px, as measured in Chromium: at
 /// 800 × 600 under its panel (760 × 420), at 1600 × 1000 beside its 270 px panel (650 × 420).
-const CANVASES: [Vec2; 2] = [Vec2::new(760.0, 420.0), Vec2::new(650.0, 420.0)];
+pub(crate) const CANVASES: [Vec2; 2] = [Vec2::new(760.0, 420.0), Vec2::new(650.0, 420.0)];
 
 /// Lesson 02b's canvases (its figures are lower at 800 × 600), as [`CANVASES`].
 const CANVASES_02B: [Vec2; 2] = [Vec2::new(760.0, 340.0), Vec2::new(650.0, 420.0)];
