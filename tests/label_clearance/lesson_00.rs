@@ -10,15 +10,7 @@ fn lesson_00_depth_side_view_labels_keep_off_the_bars_and_the_line() {
     for size in CANVASES {
         let mut scene = inbetween::figures::raster::DepthPrecision::new();
         scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
-        let (frame, camera) = drawn_for_view(
-            &mut scene,
-            view,
-            size,
-            |fig, out| {
-                fig.draw(out);
-            },
-            |fig, cam, px| fig.set_view(cam, px.x, px.y),
-        );
+        let (frame, camera) = drawn!(&mut scene, view, size);
         assert_clear("00 depth", &frame, &camera, size);
     }
 }
@@ -250,15 +242,7 @@ fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbi
             for size in CANVASES {
                 let mut scene = DepthPrecision::new();
                 scene.set(0.1, 1000.0, gap, 16.0).unwrap();
-                let (frame, camera) = drawn_for_view(
-                    &mut scene,
-                    view,
-                    size,
-                    |fig, out| {
-                        fig.draw(out);
-                    },
-                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                );
+                let (frame, camera) = drawn!(&mut scene, view, size);
                 let name = format!("00 depth, gap {gap}, orbit ({yaw}, {pitch})");
                 let named: Vec<usize> = (0..frame.labels.len())
                     .filter(|&i| NAMES.contains(&&*frame.labels[i].text))
@@ -327,15 +311,7 @@ fn lesson_00_mesh_names_keep_off_both_spheres_when_orbited() {
                         let mut scene = MeshStorage::new();
                         scene.set_segments(segments).unwrap();
                         let view = [0.0, 1.2, 0.0, 5.6, yaw, pitch];
-                        let (frame, camera) = drawn_for_view(
-                            &mut scene,
-                            view,
-                            size,
-                            |fig, out| {
-                                fig.draw(out);
-                            },
-                            |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                        );
+                        let (frame, camera) = drawn!(&mut scene, view, size);
                         let name =
                             format!("00 mesh, {segments} segments, yaw {yaw}, pitch {pitch}");
                         let discs =
@@ -383,15 +359,7 @@ fn lesson_00_tetrahedron_numbers_keep_off_its_lines_and_apart() {
                     let mut scene = MeshStorage::new();
                     scene.set_shape("tetrahedron").unwrap();
                     let view = [0.0, 1.2, 0.0, 5.6, yaw, pitch];
-                    let (frame, camera) = drawn_for_view(
-                        &mut scene,
-                        view,
-                        size,
-                        |fig, out| {
-                            fig.draw(out);
-                        },
-                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                    );
+                    let (frame, camera) = drawn!(&mut scene, view, size);
                     let name = format!("00 tetrahedron, yaw {yaw}, pitch {pitch}");
                     let small: Vec<usize> = (0..frame.labels.len())
                         .filter(|&i| frame.labels[i].text.len() <= 2)

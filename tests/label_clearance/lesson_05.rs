@@ -69,15 +69,7 @@ fn lesson_05_noise_1d_probe_name_keeps_off_the_curve() {
                     scene.set_probe(x).unwrap();
                     scene.set_seed(seed).unwrap();
                     scene.set_show_ramps(ramps);
-                    let (frame, camera) = drawn_for_view(
-                        &mut scene,
-                        view,
-                        size,
-                        |fig, out| {
-                            fig.draw(out);
-                        },
-                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                    );
+                    let (frame, camera) = drawn!(&mut scene, view, size);
                     let name =
                         format!("05 noise 1D, orbit ({yaw}, {pitch}), x {x}, seed {seed}, ramps {ramps}");
                     let probe: Vec<usize> = (0..frame.labels.len())

@@ -29,15 +29,7 @@ fn lesson_12_rule_names_keep_off_the_cells_the_circle_and_the_arrows() {
             scene.set_radius(radius).unwrap();
             scene.set_fov_deg(fov).unwrap();
             let view = scene.view();
-            let (frame, camera) = drawn_for_view(
-                &mut scene,
-                view,
-                size,
-                |fig, out| {
-                    fig.draw(out);
-                },
-                |fig, cam, px| fig.set_view(cam, px.x, px.y),
-            );
+            let (frame, camera) = drawn!(&mut scene, view, size);
             let name = format!("12 rules at ({x}, {z}), heading {heading}, cell {cell}");
             let named: Vec<usize> = (0..frame.labels.len()).collect();
             assert!(!named.is_empty(), "{name}");
@@ -67,15 +59,7 @@ fn lesson_12_leader_and_predator_names_keep_off_the_neighbour_lines() {
             if k % 30 != 0 {
                 continue;
             }
-            let (frame, camera) = drawn_for_view(
-                &mut scene,
-                view,
-                size,
-                |fig, out| {
-                    fig.draw(out);
-                },
-                |fig, cam, px| fig.set_view(cam, px.x, px.y),
-            );
+            let (frame, camera) = drawn!(&mut scene, view, size);
             // The leader and the predator are outlined dots over everything, the size the
             // names are placed round.
             let roles = frame.markers.iter().filter(|m| m.size_px == -ROLE_DOT_PX);

@@ -68,15 +68,7 @@ fn lesson_14_throw_names_l_and_omega_apart_at_their_tips() {
                 let mut f = ThrowFigure::new();
                 f.set_throw(spin, tilt).unwrap();
                 f.advance_to(f.duration_sec() * k as f32 / 8.0).unwrap();
-                let (frame, camera) = drawn_for_view(
-                    &mut f,
-                    view,
-                    size,
-                    |fig, out| {
-                        fig.draw(out);
-                    },
-                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                );
+                let (frame, camera) = drawn!(&mut f, view, size);
                 let name = format!("14 throw, spin {spin}, tilt {tilt}°, step {k}/8");
                 let view_proj = camera.projection(size.x / size.y) * camera.view();
                 let check = || {
@@ -184,15 +176,7 @@ fn lesson_14_impulse_names_its_arrows_beside_them_off_the_boxes() {
                 let mut f = f.clone();
                 f.advance_to(t).unwrap();
                 let now = *f.body();
-                let (frame, camera) = drawn_for_view(
-                    &mut f,
-                    view,
-                    size,
-                    |fig, out| {
-                        fig.draw(out);
-                    },
-                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                );
+                let (frame, camera) = drawn!(&mut f, view, size);
                 let name = format!("14 impulse, tilt {tilt}°, e {e}, {height} m, t {t:.2} s");
                 let view_proj = camera.projection(size.x / size.y) * camera.view();
                 let check = || {
@@ -285,15 +269,7 @@ fn lesson_14_drift_names_sit_by_their_boxes_when_orbited() {
             for time_sec in [0.0, 0.35, 3.67, 0.43 * end, end] {
                 scene.advance_to(time_sec).unwrap();
                 for size in CANVASES {
-                    let (frame, camera) = drawn_for_view(
-                        &mut scene,
-                        view,
-                        size,
-                        |fig, out| {
-                            fig.draw(out);
-                        },
-                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                    );
+                    let (frame, camera) = drawn!(&mut scene, view, size);
                     let name =
                         format!("14 drift, spin {spin}, step {step_ms} ms, t {time_sec}, view {view:?}");
                     let view_proj = camera.projection(size.x / size.y) * camera.view();
@@ -409,15 +385,7 @@ fn lesson_14_racket_names_sit_by_their_rackets_when_orbited() {
             for time_sec in [0.0, 2.0, 4.4, 12.0] {
                 scene.advance_to(time_sec).unwrap();
                 for size in CANVASES {
-                    let (frame, camera) = drawn_for_view(
-                        &mut scene,
-                        view,
-                        size,
-                        |fig, out| {
-                            fig.draw(out);
-                        },
-                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                    );
+                    let (frame, camera) = drawn!(&mut scene, view, size);
                     let name = format!("14 racket, spin {spin}, wobble {wobble}, t {time_sec}, view {view:?}");
                     let view_proj = camera.projection(size.x / size.y) * camera.view();
                     // Each cube's corners and the lines between them, on screen.
@@ -495,15 +463,7 @@ fn lesson_14_impulse_keeps_every_arrow_and_its_name_inside_the_canvas() {
                     for size in canvases {
                         let mut f = f.clone();
                         f.advance_to(t).unwrap();
-                        let (frame, camera) = drawn_for_view(
-                            &mut f,
-                            view,
-                            size,
-                            |fig, out| {
-                                fig.draw(out);
-                            },
-                            |fig, cam, px| fig.set_view(cam, px.x, px.y),
-                        );
+                        let (frame, camera) = drawn!(&mut f, view, size);
                         let name = format!("14 impulse, tilt {tilt}°, e {e}, {height} m, t {t:.2} s on {size}");
                         let check = || {
                             let view_proj = camera.projection(size.x / size.y) * camera.view();

@@ -19,15 +19,7 @@ fn lesson_15_dragged_particle_is_named_off_the_water() {
         for size in CANVASES {
             let mut f = DensityFigure::new();
             f.set_probe(x, y).unwrap();
-            let (frame, camera) = drawn_for_view(
-                &mut f,
-                view,
-                size,
-                |fig, out| {
-                    fig.draw(out);
-                },
-                |fig, cam, px| fig.set_view(cam, px.x, px.y),
-            );
+            let (frame, camera) = drawn!(&mut f, view, size);
             let name = format!("15 density, particle at ({x}, {y})");
             let view_proj = camera.projection(size.x / size.y) * camera.view();
             let check = || {

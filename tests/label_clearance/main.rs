@@ -10,6 +10,22 @@ use inbetween::draw::inset::inset_rect;
 use inbetween::draw::layout::{place_avoiding, LabelBox, Placement, Rect};
 use inbetween::draw::{project_labels, Frame, ScreenLabel};
 
+/// [`drawn_for_view`] for a figure whose `draw(&mut Frame)` draws it and whose
+/// `set_view(camera, width_px, height_px)` tells it the page's view, as most figures do.
+macro_rules! drawn {
+    ($scene:expr, $view:expr, $size:expr) => {
+        crate::label_clearance::drawn_for_view(
+            $scene,
+            $view,
+            $size,
+            |fig, out| {
+                fig.draw(out);
+            },
+            |fig, cam, px| fig.set_view(cam, px.x, px.y),
+        )
+    };
+}
+
 mod lesson_00;
 mod lesson_01;
 mod lesson_02;
@@ -151,7 +167,7 @@ fn page_camera(view: [f32; 6], frame: &Frame, size: Vec2) -> OrbitCamera {
 /// The frame a figure shows at a page camera, drawn as the page draws it: a first frame fixes the
 /// fitted camera, the figure is told that view (it places its labels for the view of the frame
 /// before), and the second frame is the one checked; returns it with its fitted camera.
-fn drawn_for_view<S>(
+pub(crate) fn drawn_for_view<S>(
     scene: &mut S,
     view: [f32; 6],
     size: Vec2,
