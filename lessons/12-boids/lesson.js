@@ -136,7 +136,7 @@ if (flockViewer) {
     // them apart; the slope guides' dashes are longer.
     widths: [2.5, 1.5, 2, 2.5, 1.5, 2, 1.5, 1.5],
     dashes: [null, [5, 3], [1.5, 3], null, [5, 3], [1.5, 3], [10, 5], [10, 5]],
-    log: 'xy',
+    log: 'xy', height: 300,
   });
   const status = document.getElementById('flock-sweep');
   function showSweep() {

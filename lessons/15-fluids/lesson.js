@@ -202,7 +202,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       // As lesson 12's timing plot: fastest dashed, slowest dotted, the slope guides' dashes longer.
       widths: [2.5, 1.5, 2, 2.5, 1.5, 2, 1.5, 1.5, 2.5, 1.5, 2].slice(0, shown),
       dashes: [null, [5, 3], [1.5, 3], null, [5, 3], [1.5, 3], [10, 5], [10, 5], null, [5, 3], [1.5, 3]].slice(0, shown),
-      log: 'xy',
+      log: 'xy', height: 300,
     });
     const status = document.getElementById('splash-sweep');
     const showSweep = () => {

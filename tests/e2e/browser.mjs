@@ -196,3 +196,16 @@ export async function fastestDashedSlowestDotted(page, plot, searches) {
     assert.ok(fastest >= 4 && slowest > 0 && slowest <= 2, `${plot} ${search}: ${JSON.stringify(dashes)}`);
   }
 }
+
+/**
+ * A log-y plot gives each decade of its y range at least `minPx` CSS pixels of height (uPlot's
+ * plotting area, `.u-over`), so that its curves' slopes can be read: four decades squeezed into
+ * 110 px draw every line nearly flat.
+ */
+export async function decadesReadable(page, plot, minPx = 40) {
+  const el = page.locator(plot);
+  const [lo, hi] = (await el.getAttribute('data-y-range')).split(' ').map(Number);
+  const decades = Math.log10(hi / lo);
+  const height = await el.locator('.u-over').evaluate((o) => o.getBoundingClientRect().height);
+  assert.ok(height / decades >= minPx, `${plot}: ${decades} decades in ${height.toFixed(0)} px`);
+}

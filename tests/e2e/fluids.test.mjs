@@ -2,7 +2,7 @@
 // sliders; the drag is the canvas's own path), and the note follows it out of the water.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage, setControl, pixelStats, meanDifference, bluePixels, fastestDashedSlowestDotted } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl, pixelStats, meanDifference, bluePixels, fastestDashedSlowestDotted, decadesReadable } from './browser.mjs';
 
 const site = serveDist();
 
@@ -95,6 +95,7 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
     const sweep = await page.locator('#splash-sweep').textContent();
     assert.match(sweep, /takes [\d.]+ ms a step at N = 8000/, sweep);
     await fastestDashedSlowestDotted(page, '#splash-plot', ['CPU grid', 'all pairs', 'GPU grid']);
+    await decadesReadable(page, '#splash-plot');
     await page.locator('#fig-timing').screenshot({ path: 'tests/screenshots/15-fluids-timing-gpu-webgpu.png' });
     // The splash: at 0.3 s the drop has hit the pool (it falls 0.28 m, 0.24 s), once the GPU's
     // steps have caught up with the timeline (the note's time): the picture is no longer the

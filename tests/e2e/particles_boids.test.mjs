@@ -8,7 +8,7 @@
 // with a panel no taller than the canvas; the flock's order plot is drawn from its samples.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage, setControl, bluePixels, fastestDashedSlowestDotted } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl, bluePixels, fastestDashedSlowestDotted, decadesReadable } from './browser.mjs';
 
 const site = serveDist();
 const open = (context, path, width, height) => openPage(context, site.origin + path, { width, height });
@@ -277,6 +277,7 @@ test('lesson 12: the step-time sweep ends on log-log axes with a note of the slo
     // Log axes: the y range runs between powers of ten, both positive.
     const [lo, hi] = (await page.locator('#flock-plot').getAttribute('data-y-range')).split(' ').map(Number);
     assert.ok(lo > 0 && hi > lo && Number.isInteger(Math.log10(lo)) && Number.isInteger(Math.log10(hi)), `${lo} ${hi}`);
+    await decadesReadable(page, '#flock-plot');
     // The x axis spans the sizes timed, from 100 boids to the largest (the one the note names,
     // or the next, where only the grid was timed), not up to the next power of ten.
     const largest = Number(/At N = (\d+)/.exec(await sweep.textContent())?.[1]);
