@@ -164,7 +164,11 @@ if (flockViewer) {
 
   const note = document.getElementById('flock-note');
   const timing = document.getElementById('flock-timing');
+  // The step time averaged over recent frames, for the search and count it was measured at
+  // (`measured`): a new count or search starts a new average, so that a paused flock does not
+  // show the old count's time under the new count.
   let average = 0;
+  let measured = '';
   let frame = 0;
   let frameMs = 0;
   let plotTime = -1;
@@ -175,6 +179,10 @@ if (flockViewer) {
     const t0 = performance.now();
     const steps = onGpu ? scene.advanceOnGpu(flockViewer, time) : scene.advanceTo(time);
     const ms = performance.now() - t0;
+    if (measured !== `${p.search} ${count}`) {
+      measured = `${p.search} ${count}`;
+      average = 0;
+    }
     // Per step; a replay after a loop or a scrub takes many steps at once and is left out.
     if (!onGpu && steps > 0 && steps < 10) average = average === 0 ? ms / steps : 0.9 * average + 0.1 * (ms / steps);
     frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
@@ -191,7 +199,9 @@ if (flockViewer) {
       const gpuCount = gpuFlocks[p.on] || count;
       showNote(timing, onGpu
         ? `Stepping ${gpuCount.toLocaleString('en')} boids on the GPU (${p.search === 'grid' ? 'GPU grid' : 'every pair'}): the steps are queued and run beside the page (the bench page times them); frame time ${frameMs.toFixed(1)} ms.`
-        : `Measured step time (${p.search} search, ${count} boids): ${average.toFixed(2)} ms per step, averaged over recent frames.${gpuNote}`);
+        : average > 0
+          ? `Measured step time (${p.search} search, ${count} boids): ${average.toFixed(2)} ms per step, averaged over recent frames.${gpuNote}`
+          : `Step time (${p.search} search, ${count} boids): play the flock to measure it.${gpuNote}`);
     }
     sweepStep();
     markDrawn('#fig-flock');

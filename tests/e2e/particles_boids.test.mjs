@@ -265,7 +265,7 @@ test('a typed value a number box cannot take says what became of it (lesson 11)'
   }
 });
 
-test('lesson 12: the step-time sweep ends on log-log axes with a note of the slopes it measured; its legend tells the fastest from the slowest', async () => {
+test('lesson 12: the step-time sweep ends on log-log axes with a note of the slopes it measured; its legend tells the fastest from the slowest; Figure 2 measures the step time of the count it shows', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await open(context, '/lessons/12-boids/?backend=webgl2', 1280, 800);
@@ -287,6 +287,15 @@ test('lesson 12: the step-time sweep ends on log-log axes with a note of the slo
     await page.locator('#flock-measure').click();
     await frames(page, 2);
     assert.match(await sweep.textContent(), /^Measuring one step at N = /);
+    // Figure 2's step time belongs to the count it was measured at: paused, a new count asks to
+    // play instead of showing the old count's time; played, it is measured.
+    const play = page.locator('#flock-timeline .play');
+    if ((await play.textContent()).includes('pause')) await play.click();
+    await setControl(page, '#fig-flock', 'boids', 600);
+    const timing = (re) => page.waitForFunction((re) => new RegExp(re).test(document.getElementById('flock-timing').textContent), re.source, { timeout: 10_000 }).catch(async (e) => { throw new Error(`${e.message}: ${await page.locator('#flock-timing').textContent()}`); });
+    await timing(/\(grid search, 600 boids\): play the flock to measure it/);
+    await play.click();
+    await timing(/^Measured step time \(grid search, 600 boids\): \d+\.\d+ ms per step/);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
