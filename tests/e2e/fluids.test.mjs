@@ -129,12 +129,17 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
   }
 });
 
-test('lesson 15 on WebGL2: the GPU switch is off and the note says why; the step-time legend tells the fastest from the slowest; the dam break\'s timeline waits for its fluids', async () => {
+test('lesson 15 on WebGL2: Figure 1\'s controls beside its plot; the GPU switch is off and the note says why; the step-time legend tells the fastest from the slowest; the dam break\'s timeline waits for its fluids', async () => {
   const context = await launch('webgl2');
   try {
     const { page, problems } = await openPage(context, `${site.origin}/lessons/15-fluids/?backend=webgl2`, { width: 1280, height: 900 });
     // The step-time plot: which line is the fastest and which the slowest reads from the legend.
     await fastestDashedSlowestDotted(page, '#splash-plot', ['CPU grid', 'all pairs']);
+    // Figure 1's controls sit beside its plot, not over it in a strip with the rest of the row empty.
+    const [kernelsPlot, kernelsPanel] = await Promise.all(['#kernels-plot', '#fig-kernels .panel']
+      .map((s) => page.locator(s).evaluate((e) => e.getBoundingClientRect().toJSON())));
+    assert.ok(kernelsPanel.left >= kernelsPlot.right - 1 && kernelsPanel.top < kernelsPlot.bottom,
+      `panel ${JSON.stringify(kernelsPanel)}, plot ${JSON.stringify(kernelsPlot)}`);
     await page.locator('#fig-splash').scrollIntoViewIfNeeded();
     await frames(page, 4);
     const control = page.locator('#fig-splash .lil-controller', { hasText: 'step on' }).first();
