@@ -193,6 +193,23 @@ impl<A: Flat, B: Flat> Flat for (A, B) {
     }
 }
 
+/// Exercise `name`'s answer read from its flattened numbers: one `T` and nothing after it.
+/// Out of line, so that the wrappers share one body per answer type rather than each holding
+/// its own decoding and error message.
+#[inline(never)]
+fn answer<T: Flat>(name: &str, out: &[f32]) -> Result<T, Failure> {
+    let mut rest = out;
+    T::take(&mut rest)
+        .filter(|_| rest.is_empty())
+        .ok_or_else(|| malformed(name))
+}
+
+#[cold]
+#[inline(never)]
+fn malformed(name: &str) -> Failure {
+    Failure::Call(format!("{name}: malformed answer"))
+}
+
 /// Declares each exercise once: its typed wrapper (for scenes) and its arm in [`direct`].
 macro_rules! exercises {
     ($( $(#[$doc:meta])* fn $name:ident($($arg:ident: $ty:ty),*) -> $ret:ty = $call:expr; )*) => {
@@ -202,11 +219,7 @@ macro_rules! exercises {
             pub fn $name(run: Runner, $($arg: $ty),*) -> Result<$ret, Failure> {
                 let mut args = Vec::new();
                 $( Flat::put(&$arg, &mut args); )*
-                let out = run(stringify!($name), &args)?;
-                let mut rest = &out[..];
-                <$ret as Flat>::take(&mut rest)
-                    .filter(|_| rest.is_empty())
-                    .ok_or_else(|| Failure::Call(format!("{}: malformed answer", stringify!($name))))
+                answer(stringify!($name), &run(stringify!($name), &args)?)
             }
         )*
 
@@ -859,6 +872,23 @@ mod tests {
             "a length past the data"
         );
         assert_eq!(usize::take(&mut &[-1.0_f32][..]), None);
+    }
+
+    #[test]
+    fn an_answer_too_short_or_too_long_is_malformed() {
+        fn short(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+            Ok(vec![0.0, 0.0, 0.0])
+        }
+        fn long(_: &str, _: &[f32]) -> Result<Vec<f32>, Failure> {
+            Ok(vec![0.0, 0.0, 0.0, 1.0, 5.0])
+        }
+        let malformed = Err(Failure::Call("slerp: malformed answer".into()));
+        assert_eq!(slerp(short, Quat::IDENTITY, Quat::IDENTITY, 0.5), malformed);
+        assert_eq!(slerp(long, Quat::IDENTITY, Quat::IDENTITY, 0.5), malformed);
+        assert_eq!(
+            slerp(long, Quat::IDENTITY, Quat::IDENTITY, 0.5).unwrap_err().to_string(),
+            "could not be called: slerp: malformed answer"
+        );
     }
 
     #[test]

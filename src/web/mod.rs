@@ -49,6 +49,7 @@ compile_error!("`bench-full` is the figures module with the bench kernels: no ot
 #[cfg(all(feature = "bench-alone", not(feature = "bench-module")))]
 compile_error!("`bench-alone-X` narrows the bench module: enable `bench-module` too");
 
+mod alloc;
 #[cfg(feature = "course-module")]
 mod course;
 #[cfg(feature = "gltf-module")]
