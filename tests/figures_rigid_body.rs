@@ -1483,3 +1483,16 @@ fn at_a_small_wobble_the_energy_steps_come_about_4_s_apart_and_the_held_racket_5
         );
     }
 }
+
+/// At e = 0 the corner's normal velocity after the hit is zero up to rounding (a few 1e-7 m/s):
+/// the note gives it, and every other number, as a plain decimal, never as "-4.768e-7".
+#[test]
+fn the_impact_note_reads_rounding_leftovers_as_zero() {
+    for tilt in [0.0, 10.0, 20.0, 45.0] {
+        for height in [0.5, 1.0, 2.0] {
+            let mut f = dropped(tilt, 0.0, height);
+            let note = f.draw(&mut Frame::default());
+            assert!(!note.contains("e-"), "tilt {tilt}, height {height}: {note}");
+        }
+    }
+}

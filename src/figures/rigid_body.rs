@@ -1269,7 +1269,8 @@ impl ImpulseFigure {
             let candidates = Label::around_dot(at, TIP_PX, toward, name, color, 0, 6, 10.0);
             frame.first_clear_label_by(view, 2.0, candidates, &off_boxes);
         }
-        // Rounding leftovers (a spin of 1e-6 rad/s after a level drop) read as the 0 they are.
+        // Rounding leftovers (a spin of 1e-6 rad/s after a level drop, a normal velocity and an
+        // energy of 1e-15 after a drop at e = 0) read as the 0 they are.
         let clean = |x: f32| if x.abs() < 1e-4 { 0.0 } else { x };
         let v3 = |v: Vec3| {
             format!(
@@ -1306,15 +1307,15 @@ impl ImpulseFigure {
              stack figure takes the box over.{stopped}",
             format_number(hit.time_sec),
             format_number(hit.j),
-            format_number(hit.normal_before),
-            format_number(hit.normal_after),
+            format_number(clean(hit.normal_before)),
+            format_number(clean(hit.normal_after)),
             v3(hit.velocity_before),
             v3(hit.velocity_after),
             v3(hit.omega_before),
             v3(hit.omega_after),
             format_number(clean(hit.omega_after.length())),
-            format_number(hit.energy_before),
-            format_number(hit.energy_after),
+            format_number(clean(hit.energy_before)),
+            format_number(clean(hit.energy_after)),
         ) + &if self.use_exercise {
             format!("\n{}", self.exercise_note)
         } else {
