@@ -79,6 +79,8 @@ mod hostile_figures;
 mod ik;
 #[path = "label_clearance/main.rs"]
 mod label_clearance;
+#[path = "lesson_text.rs"]
+mod lesson_text;
 #[path = "locomotion.rs"]
 mod locomotion;
 #[path = "noise.rs"]
