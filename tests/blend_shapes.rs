@@ -120,3 +120,15 @@ fn each_validation_rule_has_its_own_error() {
     assert!(s.apply_full(&[], &mut p, &mut n).is_err());
     assert!(s.apply_differential(&[0.5], &mut p[..4], &mut n).is_err());
 }
+
+/// Lesson 10's text: the head is a sphere squashed to an egg, 0.8 wide and 0.85 deep for 1 tall.
+#[test]
+fn the_head_is_an_egg_point_eight_wide_and_point_eight_five_deep_for_one_tall() {
+    let face = inbetween::blend_shapes::face();
+    let (lo, hi) = face.mesh.positions.iter().fold(
+        (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    let size = (hi - lo) / (hi.y - lo.y);
+    assert!((size.x - 0.8).abs() < 0.01 && (size.z - 0.85).abs() < 0.01, "{size}");
+}
