@@ -968,3 +968,43 @@ fn the_antenna_runs_on_across_the_loop_wrap() {
         assert!((rows[0][2] - rows[200][2]).abs() < 1e-3, "k {k}, c {c}, {n} joints: {rows:?}");
     }
 }
+
+/// Figure 4's note says how far the tip still is to the side of the base in the last 0.25 s of
+/// each 1 s hold, as the plot shows it, or that it is within 1 cm, at the default and at every
+/// corner of the panel. At k = 600, c = 8 and six joints each joint's wobble is passed up the
+/// chain, and the tip is still swinging by decimetres when the body moves again: the note must
+/// not let the student expect it to settle there.
+#[test]
+fn the_antenna_note_says_whether_the_tip_settles_within_the_hold() {
+    let mut settings = vec![(150.0, 10.0, 6.0)];
+    for k in [FollowThrough::MIN_STIFFNESS, 600.0] {
+        for c in [FollowThrough::MIN_DAMPING, 60.0] {
+            for n in [2.0, FollowThrough::MAX_JOINTS as f32] {
+                settings.push((k, c, n));
+            }
+        }
+    }
+    let mut scene = FollowThrough::new();
+    for (k, c, n) in settings {
+        scene.set(k, c, n).unwrap();
+        let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+        let rows = scene.sample_tip(481).unwrap();
+        let in_last = |t: f32| [2.0f32, 4.0].iter().any(|e| (e - 0.2501..=e + 1e-4).contains(&t));
+        let late = rows
+            .iter()
+            .filter(|r| in_last(r[0]))
+            .map(|r| (r[2] - r[1]).abs())
+            .fold(0.0, f32::max);
+        if (k, c, n) == (600.0, 8.0, 6.0) {
+            assert!(late > 0.2, "the tip is still swinging: {late} m");
+        }
+        let setting = format!("k {k}, c {c}, {n} joints, {late} m on the plot");
+        if late < 0.01 {
+            let settled = "in the last 0.25 s of each hold it is within 1 cm of the base";
+            assert!(note.contains(settled), "{setting}: {note}");
+        } else {
+            let said = number_after(&note, "in the last 0.25 s of each hold it is still up to ");
+            assert!((said - late).abs() < 2e-3, "{setting}: {note}");
+        }
+    }
+}
