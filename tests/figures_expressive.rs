@@ -297,9 +297,18 @@ fn spacing_loops_there_and_back_with_the_same_spacing_and_the_clock_runs_forward
     assert!((rows[60][0] - 2.0 * d).abs() < 1e-5);
     assert!(rows.windows(2).all(|w| w[1][0] > w[0][0]));
     assert!((rows[30][1] - 1.0).abs() < 1e-5 && (rows[30][2] - 1.0).abs() < 1e-5);
-    // On the way back the note names the trip.
-    let note = scene.draw(&mut Frame::default(), 1.5 * d).unwrap();
-    assert!(note.contains("from key 2 to key 1"), "{note}");
+    // On the way back the note names the trip and counts from key 1, as the plot does, in
+    // fixed notation even just after the turn, where the ball is a hair's breadth from key 2.
+    scene.set_ease("slow in and out").unwrap();
+    for time in [1.5 * d, d + 0.006, 2.0 * d - 0.006] {
+        let note = scene.draw(&mut Frame::default(), time).unwrap();
+        let said = number_after(&note, "the ball is ");
+        let plotted = 100.0 * scene.along(time);
+        assert!((said - plotted).abs() < 1e-3, "{plotted} % on the plot: {note}");
+        assert!(note.contains("% of the way along the path from key 1 (on the way back)"), "{note}");
+        let percent = note.split("the ball is ").nth(1).unwrap().split(' ').next().unwrap();
+        assert!(!percent.contains('e'), "{note}");
+    }
     assert!(scene.draw(&mut Frame::default(), 2.0 * d + 0.1).is_err());
 }
 

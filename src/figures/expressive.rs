@@ -255,7 +255,7 @@ impl Spacing {
     /// the note.
     pub fn draw(&self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let time = in_range("time", time_sec, 0.0, self.loop_sec())?;
-        let (back, t) = self.trip(time);
+        let back = self.trip(time).0;
         // Where the k-th of n ghosts of the current trip is, as a fraction of the path.
         let ghost = |k: usize| {
             let f = self.spacing(k as f32 / (self.ghosts - 1) as f32);
@@ -320,13 +320,13 @@ impl Spacing {
         frame.mesh(MeshId::SPHERE, ball(p, velocity, scale), BALL);
         let speed = velocity.length();
         let mut note = format!(
-            "At {} s the ball has covered {} % of the way from key {} to key {}, at {} m/s \
+            "At {} s the ball is {:.3} % of the way along the path from key 1{}, at {} m/s \
              (stretch s = {}). {} ghosts of this trip at equal time steps: bunched where it is \
              slow, spread where it is fast.",
             format_number(time),
-            format_number(100.0 * self.spacing(t)),
-            if back { 2 } else { 1 },
-            if back { 1 } else { 2 },
+            // As the plot counts it, in fixed notation like the other percentages.
+            100.0 * self.along(time),
+            if back { " (on the way back)" } else { "" },
             format_number(speed),
             format_number(s),
             self.ghosts,
