@@ -1017,3 +1017,13 @@ fn the_antenna_note_says_whether_the_tip_settles_within_the_hold() {
         }
     }
 }
+
+/// Figure 3's slider for the stretch per unit speed is named by the symbol of the formula the
+/// text gives, s = min(1 + k_s |v|, 1.6), so the reader can match the two.
+#[test]
+fn the_jump_panel_names_the_stretch_slider_by_the_formulas_symbol() {
+    let text = include_str!("../lessons/02b-expressive-animation/index.html");
+    let page = include_str!("../lessons/02b-expressive-animation/lesson.js");
+    assert!(text.contains(r"with \(k_s\) the stretch per m/s"));
+    assert!(page.contains(".name('stretch k_s (per m/s)')"));
+}
