@@ -869,6 +869,8 @@ if (lagrangeViewer) {
     ].filter(Boolean).join(' ');
     const [k, e] = cols;
     speedPlot.setData([k[0], k[1], k[2]]);
+    // A magnitude: the axis starts at 0, so linear's zero between the keys sits on the floor.
+    accelPlot.setYRange([0, Math.max(0.1, ...k[3].filter(Number.isFinite), ...e[3].filter(Number.isFinite))]);
     accelPlot.setData([k[0], k[3], e[3]]);
   });
   lesson.onFrame(() => {
