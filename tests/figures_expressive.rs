@@ -297,9 +297,18 @@ fn spacing_loops_there_and_back_with_the_same_spacing_and_the_clock_runs_forward
     assert!((rows[60][0] - 2.0 * d).abs() < 1e-5);
     assert!(rows.windows(2).all(|w| w[1][0] > w[0][0]));
     assert!((rows[30][1] - 1.0).abs() < 1e-5 && (rows[30][2] - 1.0).abs() < 1e-5);
-    // On the way back the note names the trip.
-    let note = scene.draw(&mut Frame::default(), 1.5 * d).unwrap();
-    assert!(note.contains("from key 2 to key 1"), "{note}");
+    // On the way back the note names the trip and counts from key 1, as the plot does, in
+    // fixed notation even just after the turn, where the ball is a hair's breadth from key 2.
+    scene.set_ease("slow in and out").unwrap();
+    for time in [1.5 * d, d + 0.006, 2.0 * d - 0.006] {
+        let note = scene.draw(&mut Frame::default(), time).unwrap();
+        let said = number_after(&note, "the ball is ");
+        let plotted = 100.0 * scene.along(time);
+        assert!((said - plotted).abs() < 1e-3, "{plotted} % on the plot: {note}");
+        assert!(note.contains("% of the way along the path from key 1 (on the way back)"), "{note}");
+        let percent = note.split("the ball is ").nth(1).unwrap().split(' ').next().unwrap();
+        assert!(!percent.contains('e'), "{note}");
+    }
     assert!(scene.draw(&mut Frame::default(), 2.0 * d + 0.1).is_err());
 }
 
@@ -967,4 +976,54 @@ fn the_antenna_runs_on_across_the_loop_wrap() {
         let rows = scene.sample_tip(201).unwrap();
         assert!((rows[0][2] - rows[200][2]).abs() < 1e-3, "k {k}, c {c}, {n} joints: {rows:?}");
     }
+}
+
+/// Figure 4's note says how far the tip still is to the side of the base in the last 0.25 s of
+/// each 1 s hold, as the plot shows it, or that it is within 1 cm, at the default and at every
+/// corner of the panel. At k = 600, c = 8 and six joints each joint's wobble is passed up the
+/// chain, and the tip is still swinging by decimetres when the body moves again: the note must
+/// not let the student expect it to settle there.
+#[test]
+fn the_antenna_note_says_whether_the_tip_settles_within_the_hold() {
+    let mut settings = vec![(150.0, 10.0, 6.0)];
+    for k in [FollowThrough::MIN_STIFFNESS, 600.0] {
+        for c in [FollowThrough::MIN_DAMPING, 60.0] {
+            for n in [2.0, FollowThrough::MAX_JOINTS as f32] {
+                settings.push((k, c, n));
+            }
+        }
+    }
+    let mut scene = FollowThrough::new();
+    for (k, c, n) in settings {
+        scene.set(k, c, n).unwrap();
+        let note = scene.draw(&mut Frame::default(), 0.5).unwrap();
+        let rows = scene.sample_tip(481).unwrap();
+        let in_last = |t: f32| [2.0f32, 4.0].iter().any(|e| (e - 0.2501..=e + 1e-4).contains(&t));
+        let late = rows
+            .iter()
+            .filter(|r| in_last(r[0]))
+            .map(|r| (r[2] - r[1]).abs())
+            .fold(0.0, f32::max);
+        if (k, c, n) == (600.0, 8.0, 6.0) {
+            assert!(late > 0.2, "the tip is still swinging: {late} m");
+        }
+        let setting = format!("k {k}, c {c}, {n} joints, {late} m on the plot");
+        if late < 0.01 {
+            let settled = "in the last 0.25 s of each hold it is within 1 cm of the base";
+            assert!(note.contains(settled), "{setting}: {note}");
+        } else {
+            let said = number_after(&note, "in the last 0.25 s of each hold it is still up to ");
+            assert!((said - late).abs() < 2e-3, "{setting}: {note}");
+        }
+    }
+}
+
+/// Figure 3's slider for the stretch per unit speed is named by the symbol of the formula the
+/// text gives, s = min(1 + k_s |v|, 1.6), so the reader can match the two.
+#[test]
+fn the_jump_panel_names_the_stretch_slider_by_the_formulas_symbol() {
+    let text = include_str!("../lessons/02b-expressive-animation/index.html");
+    let page = include_str!("../lessons/02b-expressive-animation/lesson.js");
+    assert!(text.contains(r"with \(k_s\) the stretch per m/s"));
+    assert!(page.contains(".name('stretch k_s (per m/s)')"));
 }

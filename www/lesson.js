@@ -57,10 +57,10 @@ function typedValueNote(controller, typed) {
     const now = controller.getValue();
     return now === end
       ? `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}: ${name} is set to ${now}.`
-      : `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}, and the figure does not take the nearest end, ${end} (see its note): ${name} stays ${now}.`;
+      : `${text} is outside ${lo ?? '−∞'} to ${hi ?? '∞'}, and the figure does not take the nearest end, ${end}: ${name} stays ${now}.`;
   }
   // A control with a step (a count's is 1) takes the nearest step to the number typed. (When the
-  // figure rejected that value, its own message says so, and the control went back.)
+  // figure rejected that value, the control went back and the note goes on to say why.)
   if (controller._stepExplicit) {
     const snapped = controller._snap(value);
     if (snapped !== value && controller.getValue() === snapped) {
@@ -75,6 +75,8 @@ function typedValueNote(controller, typed) {
 
 /** The typed-value notes on screen: a change of any control of the page clears them. */
 const openTypedNotes = new Set();
+/** Each number control's note under it. */
+const typedNotes = new WeakMap();
 
 function hideTypedNote(note) {
   note.hidden = true;
@@ -89,8 +91,16 @@ function reportTypedValues(controller) {
   controller.domElement.after(note);
   // 'change' comes when the box is left or Enter pressed, before lil-gui's blur handler rewrites
   // the box with the value it took: the typed text is still there.
+  typedNotes.set(controller, note);
   controller.$input.addEventListener('change', () => {
-    note.textContent = typedValueNote(controller, controller.$input.value);
+    // A new typed value: the other boxes' notes are about earlier edits.
+    for (const open of [...openTypedNotes]) if (open !== note) hideTypedNote(open);
+    // What the box did with the text, then why the figure refused the value it took (`guarded`).
+    const text = controller.$input.value;
+    const value = parseFloat(text);
+    const tried = controller._clamp(controller._stepExplicit ? controller._snap(value) : value);
+    const refused = controller.refused && tried === controller.refused.value ? controller.refused.reason : '';
+    note.textContent = sentences(typedValueNote(controller, text), refused);
     if (note.textContent) {
       note.hidden = false;
       openTypedNotes.add(note);
@@ -1040,18 +1050,32 @@ export function cssVar(name) {
 
 /**
  * Wraps a figure's `apply` (which passes the panel's values `p` to the scene) for a lil-gui
- * `onChange`: a value the core rejects is put back to the last accepted one, the panel redrawn,
- * and the reason passed to `onReject` (an empty string after a success).
+ * `onChange`: a value the core rejects is put back to the last accepted one and the panel
+ * redrawn. The reason goes under the number box that changed, as a typed value's note does (at
+ * once after a drag, when the box is left after typing), or else to `onReject`; `onReject` gets
+ * an empty string otherwise.
  */
 export function guarded(gui, p, apply, onReject) {
   let accepted = { ...p };
-  return () => {
+  return (change) => {
+    const controller = change?.controller;
+    const note = typedNotes.get(controller);
+    if (note) controller.refused = null;
     try {
       apply();
       accepted = { ...p };
       onReject('');
     } catch (e) {
-      onReject(`Not changed: ${e.message ?? e}`);
+      const reason = `Not changed: ${e.message ?? e}`;
+      if (note) {
+        controller.refused = { value: change.value, reason };
+        if (!controller._inputFocused) {
+          note.textContent = sentences(reason);
+          note.hidden = false;
+          openTypedNotes.add(note);
+        }
+      }
+      onReject(note ? '' : reason);
       Object.assign(p, accepted);
       gui.controllersRecursive().forEach((c) => c.updateDisplay());
       apply();

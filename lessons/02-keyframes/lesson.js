@@ -418,6 +418,7 @@ if (keysViewer) {
   window.__inbetween.editor = {
     keyPx: (k) => view.toPx(editor.keys[3 * k + 1], editor.keys[3 * k + 2]),
     outHandlePx: (k) => view.toPx(...handleEnds(k).out),
+    inHandlePx: (k) => view.toPx(...handleEnds(k).in),
     timePx: (k) => [timeToPx(editor.keys[3 * k]), view.h - STRIP / 2],
     keys: () => Array.from(editor.keys),
     tangents: () => Array.from(editor.tangents),
@@ -495,7 +496,8 @@ if (keysViewer) {
       edit(() => scene.setKeys(...keysWith((times, xy) => { times.splice(target.index, 1); xy.splice(2 * target.index, 2); })));
       return;
     }
-    // A new key goes after the key nearest in space (or before key 0), half-way in time.
+    // A new key goes after the key nearest in space, half-way in time; or before key 0, 0.6 s
+    // earlier but not before the clock's zero: there the keys move later to make room.
     const [x, y] = view.toWorld(px, py);
     let near = 0;
     for (let k = 1; k < keyCount(); k++) {
@@ -508,12 +510,22 @@ if (keysViewer) {
     else if (near === 0 && keyCount() > 1 && Math.hypot(editor.keys[4] - x, editor.keys[5] - y) > Math.hypot(editor.keys[1] - editor.keys[4], editor.keys[2] - editor.keys[5])) time = t(0) - 0.6;
     else time = (t(near) + t(near + 1)) / 2;
     time = Math.round(time * 100) / 100;
+    const later = Math.max(0, -time);
     edit(() => scene.setKeys(...keysWith((times, xy) => {
-      let at = times.findIndex((tt) => tt > time);
+      if (later > 0) for (let k = 0; k < times.length; k++) times[k] = Math.round((times[k] + later) * 100) / 100;
+      let at = times.findIndex((tt) => tt > time + later);
       if (at < 0) at = times.length;
-      times.splice(at, 0, time);
+      times.splice(at, 0, time + later);
       xy.splice(2 * at, 0, x, y);
     })));
+    // The new key's handles in view: the editor refits when one falls outside.
+    const at = editor.keys.findIndex((v, i) => i % 3 === 0 && Math.abs(v - time - later) < 1e-3) / 3;
+    if (at >= 0 && isCubic()) {
+      const { x0, x1, y0, y1 } = view.box;
+      const h = handleEnds(at);
+      const out = [...h.in, ...h.out].some((v, i) => (i % 2 ? v < y0 || v > y1 : v < x0 || v > x1));
+      if (out) fitView();
+    }
   });
 
   const figure = document.getElementById('fig-keys');
@@ -857,6 +869,8 @@ if (lagrangeViewer) {
     ].filter(Boolean).join(' ');
     const [k, e] = cols;
     speedPlot.setData([k[0], k[1], k[2]]);
+    // A magnitude: the axis starts at 0, so linear's zero between the keys sits on the floor.
+    accelPlot.setYRange([0, Math.max(0.1, ...k[3].filter(Number.isFinite), ...e[3].filter(Number.isFinite))]);
     accelPlot.setData([k[0], k[3], e[3]]);
   });
   lesson.onFrame(() => {

@@ -77,7 +77,7 @@ if (jumpViewer) {
   const p = { anticipation: 0.3, stretch: 0.06, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-jump .panel'), title: 'Principles' });
   gui.add(p, 'anticipation', 0, 0.6, 0.01).name('anticipation (crouch)');
-  gui.add(p, 'stretch', 0, 0.2, 0.005).name('stretch per m/s');
+  gui.add(p, 'stretch', 0, 0.2, 0.005).name('stretch k_s (per m/s)');
   gui.add(p, 'useExercise').name('use my exercise');
   // Two plots, one quantity each: height in metres, stretch as a ratio.
   const plot = new Plot(document.getElementById('jump-plot'), {

@@ -596,7 +596,16 @@ impl KeyframesScene {
             .unwrap_or(Vec2::X)
         };
         let keys: Vec<Vec3> = self.track.values().iter().map(|p| p.extend(0.0)).collect();
+        // Every 1, 2, 5 or 10 s, whichever first puts the labelled ticks 30 px apart on the last
+        // frame's canvas: when the camera backs away to fit a tall path, a label a second would
+        // crowd into its neighbours' places and read out of order.
+        let px_per_sec = toward(axis(0.0), axis(duration.max(1.0))).length() / duration.max(1.0);
+        let stride = [1, 2, 5, 10]
+            .into_iter()
+            .find(|&n| n as f32 * px_per_sec >= 30.0)
+            .unwrap_or(10);
         let labels = seconds
+            .step_by(stride)
             .map(|second| {
                 let p = axis(second as f32);
                 (p, toward(p, p + Vec3::X), format!("{second} s"))

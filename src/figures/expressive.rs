@@ -255,7 +255,7 @@ impl Spacing {
     /// the note.
     pub fn draw(&self, frame: &mut Frame, time_sec: f32) -> Result<String, String> {
         let time = in_range("time", time_sec, 0.0, self.loop_sec())?;
-        let (back, t) = self.trip(time);
+        let back = self.trip(time).0;
         // Where the k-th of n ghosts of the current trip is, as a fraction of the path.
         let ghost = |k: usize| {
             let f = self.spacing(k as f32 / (self.ghosts - 1) as f32);
@@ -320,13 +320,13 @@ impl Spacing {
         frame.mesh(MeshId::SPHERE, ball(p, velocity, scale), BALL);
         let speed = velocity.length();
         let mut note = format!(
-            "At {} s the ball has covered {} % of the way from key {} to key {}, at {} m/s \
+            "At {} s the ball is {:.3} % of the way along the path from key 1{}, at {} m/s \
              (stretch s = {}). {} ghosts of this trip at equal time steps: bunched where it is \
              slow, spread where it is fast.",
             format_number(time),
-            format_number(100.0 * self.spacing(t)),
-            if back { 2 } else { 1 },
-            if back { 1 } else { 2 },
+            // As the plot counts it, in fixed notation like the other percentages.
+            100.0 * self.along(time),
+            if back { " (on the way back)" } else { "" },
             format_number(speed),
             format_number(s),
             self.ghosts,
@@ -614,6 +614,10 @@ pub struct FollowThrough {
     start: Antenna,
     /// The furthest (m) the tip swings past the base after a stop, over a loop from `start`.
     swing_past: f32,
+    /// The furthest (m) the tip is to the side of the base in the last [`Self::LATE`] s of each
+    /// hold, over a loop from `start`: what is left of the wobble (or the lag) when the body
+    /// moves again.
+    late: f32,
     /// Why the student's antenna stopped (a failure note), if it did.
     problem: Option<String>,
 }
@@ -639,6 +643,9 @@ impl FollowThrough {
     pub const MIN_DAMPING: f32 = 8.0;
     /// The softest spring the figure takes, 1/s².
     pub const MIN_STIFFNESS: f32 = 50.0;
+    /// The end of each hold (s) over which the note says how far the tip still is from above the
+    /// base. Within 1 cm counts as settled.
+    pub const LATE: f32 = 0.25;
 
     fn segment(joints: usize) -> f32 {
         Self::LENGTH / (joints - 1) as f32
@@ -657,6 +664,7 @@ impl FollowThrough {
             steps_done: None,
             start: antenna,
             swing_past: 0.0,
+            late: 0.0,
             problem: None,
         };
         scene.settle();
@@ -676,16 +684,24 @@ impl FollowThrough {
 
     /// Loops the body under a straight antenna until the antenna's state at the start of a loop
     /// repeats (three loops settle every slider setting to float rounding; four are run), keeps
-    /// that state as `start` and the furthest the tip swings past the base in the last loop.
+    /// that state as `start`, the furthest the tip swings past the base in the last loop and how
+    /// far it is to the side of the base at the end of each hold.
     fn settle(&mut self) {
         let mut antenna = Antenna::new(Self::base(0.0), self.joints, Self::segment(self.joints));
         for _ in 0..4 {
             self.start = antenna.clone();
-            self.swing_past = 0.0;
+            (self.swing_past, self.late) = (0.0, 0.0);
             for step in 1..=(Self::DURATION / DT).round() as usize {
                 let t = step as f32 * DT;
                 antenna.step(Self::base(t), self.stiffness, self.damping, DT);
                 self.swing_past = self.swing_past.max(Self::past(t, &antenna));
+                // The holds end at 2 s and 4 s: counted in steps, as the times are rounded.
+                let half = (2.0 / DT).round() as usize;
+                let late = (Self::LATE / DT).round() as usize;
+                if (step + late) % half <= late {
+                    let side = (antenna.tip().x - antenna.positions[0].x).abs();
+                    self.late = self.late.max(side);
+                }
             }
         }
     }
@@ -853,10 +869,16 @@ impl FollowThrough {
         } else {
             "never gets 1 mm".into()
         };
+        // The joints' wobbles pass up the chain, so the tip's outlasts one joint's.
+        let late = if self.late < 0.01 {
+            "it is within 1 cm of the base".into()
+        } else {
+            format!("it is still up to {} m to the side of the base", format_number(self.late))
+        };
         let offset = antenna.tip().x - base.x;
         let mut note = format!(
             "Damping c = {} (critical: 2√k = {}): {}. After each stop the tip {chain} past the \
-             base. The tip is {} m {} of the base.",
+             base; in the last 0.25 s of each hold {late}. The tip is {} m {} of the base.",
             format_number(self.damping),
             format_number(critical),
             damping_regime(self.damping, self.stiffness),

@@ -11,7 +11,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readdirSync, readFileSync, existsSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { launch, serveDist, openPage, DIST } from './browser.mjs';
+import { launch, serveDist, openPage, DIST, frames } from './browser.mjs';
 
 const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
@@ -189,6 +189,24 @@ test('navigation, the grading panel, the quiz and progress, as a student uses th
     await gallery.page.waitForFunction(() => document.body.dataset.ready);
     assert.match(await gallery.page.locator('.progress-bar .total').textContent(), /lessons done · no exercises checked yet · quiz 0 of \d+ right$/);
     assert.deepEqual(gallery.problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test("lesson 02 Figure 8's acceleration axis starts at 0 and the caption names linear's impulses", async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2#fig-timing`, { width: 1280, height: 900 });
+    await page.waitForFunction(() => document.body.dataset.ready === '1');
+    await page.locator('#fig-keys .lil-controller select').first().selectOption('linear');
+    await frames(page, 4);
+    // Linear: zero between the keys, on the axis's floor (5 % padding below 0), not mid-height.
+    const [lo, hi] = (await page.locator('#keys-accel').getAttribute('data-y-range')).split(' ').map(Number);
+    assert.ok(lo <= 0 && lo >= -0.06 * (hi - lo), `y range ${lo} to ${hi}`);
+    const caption = await page.locator('#fig-timing figcaption').textContent();
+    assert.match(caption.replace(/\s+/g, ' '), /zero along each straight segment and infinite at a key/);
+    assert.deepEqual(problems, []);
   } finally {
     await context.close();
   }

@@ -1,7 +1,7 @@
 // Lessons 00 and 02 in Chromium, where only the page decides: lesson 00's Figure 5 layout at
 // both page sizes (the two per-pixel totals side by side; at 800 x 600 the sphere, the six images
 // and the shininess slider on one screen; at 1600 x 1000 the images in one row), Figure 1's
-// segments slider off for the tetrahedron, Figure 2's note after a rejected value; lesson 02's
+// segments slider off for the tetrahedron, Figure 2's refused z_far explained under its box; lesson 02's
 // Figure 7 inset, magnifying the loop of the loop-prone keys.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -43,10 +43,21 @@ test('lesson 00: Figure 5 keeps its totals side by side and its Try this on one 
     await setControl(page, '#fig-mesh', 'shape', 'sphere');
     assert.doesNotMatch(await segments.getAttribute('class'), /lil-disabled/);
 
-    // Figure 2: a rejected value's sentence ends before the figure's own note starts.
+    // Figure 2: a value the figure refuses is explained under its box, as a value the box cannot
+    // take is, not in the figure's note; the next edit of another box takes the sentence away.
     await setControl(page, '#fig-frustum', 'z_far', 0.5);
     await frames(page);
-    assert.match(await page.locator('#frustum-note').textContent(), /must be greater than z_near \(1\)\. \S/);
+    const farNote = page.locator('#fig-frustum .lil-controller', { hasText: 'z_far' }).locator('xpath=following-sibling::*[1]');
+    assert.equal(await farNote.getAttribute('class'), 'typed-note');
+    assert.ok(await farNote.isVisible());
+    assert.match(await farNote.textContent(), /^Not changed: z_far \(0\.5\) must be greater than z_near \(1\)\.$/);
+    assert.doesNotMatch(await page.locator('#frustum-note').textContent(), /must be greater/);
+    await setControl(page, '#fig-frustum', 'z_near', 'NaN');
+    await frames(page);
+    assert.ok(!(await farNote.isVisible()), 'an edit of z_near takes the z_far sentence away');
+    const nearNote = page.locator('#fig-frustum .lil-controller', { hasText: 'z_near' }).locator('xpath=following-sibling::*[1]');
+    assert.match(await nearNote.textContent(), /“NaN” is not a number: z_near \(m\) stays 1\./);
+    assert.doesNotMatch(await page.locator('#frustum-note').textContent(), /Not changed/);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

@@ -401,13 +401,14 @@ async function moveControls(page, figure, check) {
 }
 
 /**
- * Lesson 02's curve editor, dragged as a person would: a key across the canvas, a tangent handle,
- * and the last key's time tick (which must stay on the strip and keep its neighbours' order).
+ * Lesson 02's curve editor, used as a person would: a double-click before key 0 (after a reset),
+ * then drags of a key across the canvas, a tangent handle, and the last key's time tick (which
+ * must stay on the strip and keep its neighbours' order).
  */
 async function editorDrags(page) {
   const canvas = page.locator('#fig-keys .editor canvas');
   await canvas.scrollIntoViewIfNeeded();
-  const box = await canvas.boundingBox();
+  let box = await canvas.boundingBox();
   const drag = async ([x0, y0], dx, dy) => {
     await page.mouse.move(box.x + x0, box.y + y0);
     await page.mouse.down();
@@ -416,6 +417,32 @@ async function editorDrags(page) {
     await frames(page, 3);
   };
   const ed = (expr) => page.evaluate(`window.__inbetween.editor.${expr}`);
+  // A double-click up and left of key 0 adds a key before it: at the clock's zero, the others
+  // moved later, and with both its handles inside the editor above the strip.
+  await clickAt(page, page.locator('#fig-keys .reset'));
+  await frames(page, 3);
+  const reset = await ed('keys()');
+  const at = await canvas.boundingBox();
+  // 1.2 m left of and 1.2 m above key 0: nearer key 0 than key 1, and further from key 1 than
+  // key 0 is, so the new key goes before key 0.
+  const [k0, k1] = [await ed('keyPx(0)'), await ed('keyPx(1)')];
+  const pxPerM = Math.hypot(k1[0] - k0[0], k1[1] - k0[1]) / Math.hypot(reset[4] - reset[1], reset[5] - reset[2]);
+  const [cx, cy] = [k0[0] - 1.2 * pxPerM, k0[1] - 1.2 * pxPerM];
+  assert.ok(cx > 0 && cy > 0, `the click at ${cx}, ${cy} is on the editor`);
+  await page.mouse.dblclick(at.x + cx, at.y + cy);
+  await frames(page, 3);
+  const added = await ed('keys()');
+  assert.equal(added.length, reset.length + 3, 'the double-click adds a key');
+  assert.equal(added[0], 0, `the new key 0 is at the clock's zero (${added[0]} s)`);
+  for (let k = 1; k < added.length / 3; k++) {
+    assert.ok(Math.abs(added[3 * k] - reset[3 * (k - 1)] - 0.6) < 1e-4, `key ${k} moved 0.6 s later: ${added}`);
+  }
+  for (const handle of ['inHandlePx(0)', 'outHandlePx(0)']) {
+    const [x, y] = await ed(handle);
+    const inside = x >= 0 && x <= at.width && y >= 0 && y <= at.height - 46; // above the time strip
+    assert.ok(inside, `the new key's ${handle} is in the editor: ${[x, y]} on ${at.width} x ${at.height}`);
+  }
+  box = at;
   const keys0 = await ed('keys()');
   await pixelStats(page, canvas, 'ed0');
   await drag(await ed('keyPx(2)'), 30, -25);

@@ -20,9 +20,9 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_path_when_orbited() {
     // Figure 1's 3D view at its page camera (lessons/02-keyframes/lesson.js) and orbited as the
     // page sweep's drag turns it (−1.2 rad, tilted by 0.3 rad), on both canvases, with the
     // default, uneven and centripetal keys and keys dragged right (the path then runs over the
-    // axis), across the timeline: the axis's labels (one a second and "time (s)") are shown where
-    // the figure put them, keep 2 px off every line and dot (the path, the curve, the axis), and
-    // cover no key. As on the page, the figure places them for the view of the frame before.
+    // axis), across the timeline: the axis's labels (at least two ticks and "time (s)") are
+    // shown where the figure put them, keep 2 px off every line and dot (the path, the curve,
+    // the axis), and cover no key. As on the page, the figure places them for the view of the frame before.
     use inbetween::figures::curves::{preset, KeyframesScene};
     let is_axis_label = |t: &str| t.ends_with(" s") || t == "time (s)";
     let mut failures = Vec::new();
@@ -54,7 +54,7 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_path_when_orbited() {
                     let named: Vec<usize> = (0..frame.labels.len())
                         .filter(|&i| is_axis_label(&frame.labels[i].text))
                         .collect();
-                    assert!(named.len() >= 4, "{name}: the axis is labelled");
+                    assert!(named.len() >= 3, "{name}: the axis is labelled");
                     failures.extend(failure_of(|| {
                         assert_shown_clear_by(&name, &frame, &camera, size, &named, 2.0)
                     }));
@@ -102,4 +102,78 @@ fn lesson_02_lagrange_tick_numbers_keep_off_the_keys_and_curves() {
             assert_clear(&name, &ticks, &camera, size);
         }
     }
+}
+
+#[test]
+fn lesson_02_keys_time_axis_labels_read_in_order_when_the_axis_is_short_on_screen() {
+    // Figure 1's 3D view at its page camera after key 1 is dragged far up (to y = 7.92 m): the
+    // camera backs away to fit the tall path, the axis shrinks to a few pixels a second, and its
+    // labels must still read in order along it ("0 s", "1 s", ... then "time (s)"), each shown
+    // label further along the axis than the one before, none overlapping another.
+    use inbetween::figures::curves::{preset, KeyframesScene, TIME_DEPTH_M_PER_SEC};
+    let (times, mut values) = preset("default").unwrap();
+    values[1] = Vec2::new(-1.11, 7.92);
+    let right = values.iter().fold(f32::MIN, |m, p| m.max(p.x)) + 0.8;
+    let axis = |t: f32| Vec3::new(right, 0.0, -TIME_DEPTH_M_PER_SEC * t);
+    let mut failures = Vec::new();
+    for tau in [0.0, 1.7, 2.92] {
+        for size in [Vec2::new(760.0, 300.0), Vec2::new(650.0, 300.0)] {
+            let mut scene = KeyframesScene::new();
+            scene.set_keys(times.clone(), values.clone()).unwrap();
+            let (frame, camera) = drawn_for_view(
+                &mut scene,
+                [0.3, 0.8, -1.3, 6.5, 0.75, 0.4],
+                size,
+                |fig, out| {
+                    fig.draw(out, tau).unwrap();
+                },
+                |fig, cam, px| fig.set_view(cam, px.x, px.y),
+            );
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let px = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+            let along = (px(axis(1.0)) - px(axis(0.0))).normalize();
+            // Each shown axis label's place along the axis, in its order on the axis.
+            let mut placed: Vec<(f32, String, Rect)> = label_boxes(&frame, &camera, size)
+                .into_iter()
+                .filter_map(|(text, rect)| {
+                    let rank = match text.as_str() {
+                        "time (s)" => f32::INFINITY,
+                        t => t.strip_suffix(" s")?.parse().ok()?,
+                    };
+                    Some((rank, text, rect))
+                })
+                .collect();
+            placed.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let name = format!("τ {tau} on {size}");
+            failures.extend(failure_of(|| {
+                assert!(placed.len() >= 3, "{name}: the axis is labelled: {placed:?}");
+                for w in placed.windows(2) {
+                    let centre = |r: &Rect| (r.min + 0.5 * r.size).dot(along);
+                    assert!(
+                        centre(&w[1].2) > centre(&w[0].2),
+                        "{name}: {:?} is not past {:?} along the axis",
+                        w[1].1,
+                        w[0].1
+                    );
+                    let (a, b) = (&w[0].2, &w[1].2);
+                    let apart = a.max().cmple(b.min).any() || b.max().cmple(a.min).any();
+                    assert!(apart, "{name}: {:?} overlaps {:?}", w[0].1, w[1].1);
+                }
+                // Each second's label is nearer its own tick than any other tick.
+                let ticks: Vec<Vec2> = (0..=3).map(|s| px(axis(s as f32))).collect();
+                for (second, text, rect) in placed.iter().filter(|p| p.0.is_finite()) {
+                    let gap = |c: Vec2| c.clamp(rect.min, rect.max()).distance(c);
+                    let own = gap(ticks[*second as usize]);
+                    for (s, c) in ticks.iter().enumerate() {
+                        let other = gap(*c);
+                        assert!(
+                            s == *second as usize || own < other,
+                            "{name}: {text:?} is {other} px from the {s} s tick, {own} from its own"
+                        );
+                    }
+                }
+            }));
+        }
+    }
+    assert_none_failed(&failures);
 }
