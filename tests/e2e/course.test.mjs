@@ -55,6 +55,16 @@ const rects = (page, selector) => page.evaluate((s) => [...document.querySelecto
 }), selector);
 const overlap = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
 
+test('a "Your turn" names the grade command with its own lesson\'s number', () => {
+  // As lessons 03 and 06 do: `./scripts/grade 07` grades that lesson's exercises alone, the
+  // bare command every lesson's.
+  for (const folder of ['03-rotations', '06-skeletons', '07-inverse-kinematics', '09-skinning']) {
+    const page = readFileSync(join('lessons', folder, 'index.html'), 'utf8');
+    const number = folder.split('-')[0];
+    assert.ok(page.includes(`<code>./scripts/grade ${number}</code>`), `${folder}: no ./scripts/grade ${number}`);
+  }
+});
+
 test('navigation, the grading panel, the quiz and progress, as a student uses them', async () => {
   const context = await launch('webgl2');
   try {
