@@ -648,10 +648,13 @@ function attachCameraControls(canvas, viewer) {
 /**
  * A timeline under a figure: play/pause, a scrub bar over [0, duration) seconds, and a speed menu.
  * `timeline.advance(dt)` moves time forward when playing; `timeline.time` is the current time.
+ * `readout(timeline)`, if given, is text the clock shows after the seconds: the parameter the
+ * figure reads from the time (lesson 03's "t = 0.50"), so the seconds are not taken for it.
  */
 export class Timeline {
-  constructor(element, { duration = 1, playing = true } = {}) {
+  constructor(element, { duration = 1, playing = true, readout = null } = {}) {
     this.duration = duration;
+    this.readout = readout;
     this.time = 0;
     this.speed = 1;
     this.playing = playing;
@@ -675,6 +678,7 @@ export class Timeline {
     });
     element.querySelector('.speed').addEventListener('change', (e) => { this.speed = Number(e.target.value); });
     this.setPlaying(playing);
+    this.show();
   }
   setPlaying(playing) {
     this.playing = playing;
@@ -689,7 +693,7 @@ export class Timeline {
   }
   show() {
     this.scrub.value = String(Math.round((this.time / this.duration) * 1000));
-    this.clock.textContent = `${this.time.toFixed(2)} s`;
+    this.clock.textContent = `${this.time.toFixed(2)} s${this.readout ? ` · ${this.readout(this)}` : ''}`;
   }
 }
 
