@@ -146,6 +146,14 @@ pub fn import(bytes: &[u8]) -> Result<Imported, ImportError> {
     if bytes.len() > MAX_FILE_BYTES {
         return Err(ImportError::TooLarge { bytes: bytes.len() });
     }
+    // Neither container: say so, rather than the JSON parser's "expected value at line 1".
+    let first = bytes.iter().find(|b| !b.is_ascii_whitespace());
+    if !bytes.starts_with(b"glTF") && first != Some(&b'{') {
+        return Err(ImportError::Invalid(
+            "it starts with neither the binary header \"glTF\" (.glb) nor a JSON object (.gltf)"
+                .into(),
+        ));
+    }
     // Parsed, checked for what makes the crate's own validation index out of bounds (found by
     // fuzzing: a primitive attribute naming an accessor that does not exist), then validated.
     let raw = gltf::Gltf::from_slice_without_validation(bytes)

@@ -631,6 +631,45 @@ fn without_the_sign_fix_the_tube_twists_the_long_way_round() {
 }
 
 #[test]
+fn without_the_sign_fix_a_full_twist_cancels_and_the_note_says_so() {
+    use inbetween::figures::skinning::SignFigure;
+    let mut f = SignFigure::new();
+    f.set_fix(false);
+    // 350° and 359°: r is on the far hemisphere but not yet −1; the blend takes the long way
+    // round, half of the twist, and its dot and label are drawn.
+    for (deg, turn) in [(350.0, 175.0), (359.0, 179.5)] {
+        f.set_twist_deg(deg).unwrap();
+        let mut frame = Frame::default();
+        let note = f.draw(&mut frame, MeshId(3)).unwrap();
+        assert!(note.contains("the long way round"), "{deg}: {note}");
+        assert!(!note.contains("cancel"), "{deg}: {note}");
+        assert!((f.elbow_ring_turn_deg() - turn).abs() < 0.2, "{deg}: {}", f.elbow_ring_turn_deg());
+        assert!(frame.labels.iter().any(|l| l.text == "blend at ½, ½"), "{deg}");
+        assert!(frame.labels.iter().any(|l| l.text == "−r"), "{deg}");
+    }
+    // 360°: r = −1 and 1 cancel at ½ and ½; the note says so instead of "the long way round",
+    // no blend is drawn, and the tube is untwisted.
+    f.set_twist_deg(360.0).unwrap();
+    let mut frame = Frame::default();
+    let note = f.draw(&mut frame, MeshId(3)).unwrap();
+    assert!(note.contains("cancel") && note.contains("nothing to normalise"), "{note}");
+    assert!(!note.contains("the long way round"), "{note}");
+    assert!(note.contains("has turned 0.0°"), "{note}");
+    assert!(f.elbow_ring_turn_deg().abs() < 0.1, "{}", f.elbow_ring_turn_deg());
+    assert!(!frame.labels.iter().any(|l| l.text.contains("blend")));
+    // −r is 1 there: one dot, one name, not a "−r" hidden under 1's dot.
+    assert!(frame.labels.iter().any(|l| l.text == "1 = −r (shoulder)"));
+    assert!(!frame.labels.iter().any(|l| l.text == "−r"));
+    let rest = &f.rig().mesh.positions;
+    let far = f.mesh.positions.iter().zip(rest).map(|(p, q)| p.distance(*q)).fold(0.0, f32::max);
+    assert!(far < 1e-4, "a vertex is {far} m from its rest place");
+    // With the fix the same twist blends −r = 1 and says so.
+    f.set_fix(true);
+    let note = f.draw(&mut Frame::default(), MeshId(3)).unwrap();
+    assert!(note.contains("the fix blends −r instead") && !note.contains("cancel"), "{note}");
+}
+
+#[test]
 fn the_followed_vertex_shows_lbs_on_the_chord_and_dqs_on_the_surface() {
     let mut f = CylinderFigure::new();
     let mut frame = Frame::default();

@@ -227,6 +227,12 @@ fn tiny_with(from: &str, to: &str) -> Result<inbetween::gltf_import::Imported, I
 fn bad_files_get_clear_errors() {
     let msg = |r: Result<_, ImportError>| r.map(|_| ()).unwrap_err().to_string();
     assert!(msg(import(b"")).contains("not a valid glTF"));
+    // Text that is neither a .glb nor JSON is named as such, not by the JSON parser's position.
+    for junk in [&b"hello world, not a glb"[..], b"", b"  \n", b"GLTF{}"] {
+        let e = msg(import(junk));
+        assert!(e.contains("neither the binary header \"glTF\" (.glb) nor a JSON object"), "{e}");
+        assert!(!e.contains("line 1"), "{e}");
+    }
     assert!(msg(import(b"{\"asset\":{\"version\":\"2.0\"}}")).contains("no skin"));
     assert!(msg(import(&tiny().as_bytes()[..400])).contains("not a valid glTF"));
     // A buffer that says it is longer than its data.

@@ -658,10 +658,13 @@ function attachCameraControls(canvas, viewer) {
 /**
  * A timeline under a figure: play/pause, a scrub bar over [0, duration) seconds, and a speed menu.
  * `timeline.advance(dt)` moves time forward when playing; `timeline.time` is the current time.
+ * `readout(timeline)`, if given, is text the clock shows after the seconds: the parameter the
+ * figure reads from the time (lesson 03's "t = 0.50"), so the seconds are not taken for it.
  */
 export class Timeline {
-  constructor(element, { duration = 1, playing = true } = {}) {
+  constructor(element, { duration = 1, playing = true, readout = null } = {}) {
     this.duration = duration;
+    this.readout = readout;
     this.time = 0;
     this.speed = 1;
     this.playing = playing;
@@ -685,6 +688,7 @@ export class Timeline {
     });
     element.querySelector('.speed').addEventListener('change', (e) => { this.speed = Number(e.target.value); });
     this.setPlaying(playing);
+    this.show();
   }
   setPlaying(playing) {
     this.playing = playing;
@@ -699,7 +703,7 @@ export class Timeline {
   }
   show() {
     this.scrub.value = String(Math.round((this.time / this.duration) * 1000));
-    this.clock.textContent = `${this.time.toFixed(2)} s`;
+    this.clock.textContent = `${this.time.toFixed(2)} s${this.readout ? ` · ${this.readout(this)}` : ''}`;
   }
 }
 
@@ -724,6 +728,8 @@ function contentWidth(element) {
  * `setYRange([lo, hi])` sets the data range to show later (padded as autoscaling pads it; `null`
  * autoscales again), for a figure whose Rust side says which samples the scale should follow.
  * `points: false` never marks the samples with dots (`true` always; uPlot decides by default).
+ * `yStep: 1` puts the y range's ends on labelled ticks, multiples of 1, 2, 10, 20, 100 or 200
+ * times yStep (at most 4 ticks apart), so a flat line near an end still has a tick beyond it.
  * `log: 'xy'` makes both axes logarithmic (`'x'` or `'y'` one of them; the data must be positive).
  * `widths: [5, 1.5]` sets each series' line width in CSS pixels (default 2) and `dashes:
  * [null, [6, 4]]` its dash pattern (dash and gap lengths; `null` solid): a wide line under a
@@ -735,7 +741,7 @@ function contentWidth(element) {
 export class Plot {
   constructor(element, {
     title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null,
-    widths = [], dashes = [], log = '', points,
+    widths = [], dashes = [], log = '', points, yStep = null,
   }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
     // The y label is drawn along the plot area and clipped at the canvas: make the plot tall
@@ -743,6 +749,9 @@ export class Plot {
     height = Math.max(height, Math.ceil(textWidth(yLabel ?? '', '600 12px system-ui')) + 110);
     this.cursor = null;
     this.dataRange = null;
+    // With `yStep`, the y ticks' steps: each divides the next, so a range whose ends are ticks of
+    // one step has them as ticks of any smaller step uPlot picks.
+    const yIncrs = [1, 2, 10, 20, 100, 200].map((k) => k * yStep);
     const cursorLine = (u) => {
       if (this.cursor === null || !Number.isFinite(this.cursor)) return;
       const x = u.valToPos(this.cursor, 'x', true);
@@ -794,9 +803,15 @@ export class Plot {
           },
         } : {
           range: (u, lo, hi) => {
-            const r = yRange ?? (this.dataRange
+            let r = yRange ?? (this.dataRange
               ? paddedRange(this.dataRange[0], this.dataRange[1], minSpan)
               : paddedRange(lo, hi, minSpan));
+            if (yStep) {
+              // Out to whole ticks, at most 4 apart: no line lies past the last labelled one.
+              const ends = (i) => [Math.floor(r[0] / i) * i, Math.ceil(r[1] / i) * i];
+              const step = yIncrs.find((i) => { const [a, b] = ends(i); return b - a <= 4 * i; }) ?? yIncrs.at(-1);
+              r = ends(step);
+            }
             element.dataset.yRange = r.join(' ');
             return r;
           },
@@ -814,6 +829,7 @@ export class Plot {
           label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56,
           space: (u, i, min, max, dim) => Math.min(30, Math.max(16, dim / 4)),
           ...(log.includes('y') ? { values: logTicks } : {}),
+          ...(yStep ? { incrs: yIncrs } : {}),
         },
       ],
       // Series names only: a live legend shows "--" for every value until the pointer hovers.

@@ -30,7 +30,9 @@ if (interpViewer) {
   // largest, and the noses' paths read in depth.
   interpViewer.setCamera(0, 1.1, 0, 7.5, -0.6, 0.7);
   const scene = new InterpolationScene();
-  const timeline = new Timeline(document.getElementById('interp-timeline'), { duration: 4 });
+  const timeline = new Timeline(document.getElementById('interp-timeline'), {
+    duration: 4, readout: (tl) => `t = ${pingPong(tl).toFixed(2)}`,
+  });
   const p = { ex: 120, ey: 70, ez: -120, sx: 0, sy: 0, sz: 0, longArc: false, useExercise: false };
   const gui = new GUI({ container: document.querySelector('#fig-interp .panel'), title: 'Keys (Euler X-Y′-Z″, °)' });
   const end = gui.addFolder('end key');
@@ -182,7 +184,9 @@ const rodViewer = await lesson.figure('#fig-rodrigues');
 if (rodViewer) {
   rodViewer.setCamera(0, 0.3, 0, 4.2, 0.5, 0.35);
   const scene = new RodriguesScene();
-  const timeline = new Timeline(document.getElementById('rodrigues-timeline'), { duration: 3 });
+  const timeline = new Timeline(document.getElementById('rodrigues-timeline'), {
+    duration: 3, readout: (tl) => `${pingPong(tl).toFixed(2)} θ`,
+  });
   const p = { angle: 120, nx: 0.3, ny: 1, nz: 0.2, vx: 1.2, vy: 0.4, vz: 0.3, useExercise: false };
   let accepted = { ...p };
   const gui = new GUI({ container: document.querySelector('#fig-rodrigues .panel'), title: 'Axis and angle' });

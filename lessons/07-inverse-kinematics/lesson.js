@@ -41,7 +41,7 @@ async function ikFigure(id, start) {
   const plotElement = figure.querySelector('.plot');
   const plot = plotElement && new Plot(plotElement, {
     title: 'Error after each iteration', xLabel: 'iteration (count)', yLabel: 'log₁₀ error (m)',
-    series: ['CCD', 'FABRIK'], colors: ['#e68a00', '#17a2a8'], minSpan: 1, height: 170,
+    series: ['CCD', 'FABRIK'], colors: ['#e68a00', '#17a2a8'], minSpan: 1, height: 170, yStep: 1,
     // CCD drawn wide underneath, FABRIK narrow on top: where they agree (a target out of reach)
     // both lines show, the second inside a border of the first.
     widths: UNDER_AND_OVER,
@@ -101,7 +101,7 @@ if (aimViewer) {
   const target = gui.addFolder('target (m)');
   const plot = new Plot(document.getElementById('aim-plot'), {
     title: 'Angle from straight ahead', xLabel: 'time (s)', yLabel: 'angle (°)',
-    series: ['to the target', 'head turn'], colors: ['#d62728', '#1f6fd6'], minSpan: 10, height: 170,
+    series: ['to the target', 'head turn'], colors: ['#d62728', '#1f6fd6'], minSpan: 10, height: 170, yStep: 30,
     // The target's line wide underneath, the head's narrow on top: inside the cone the head's
     // line lies exactly on the target's, and at one width the red would hide under the blue.
     widths: UNDER_AND_OVER,

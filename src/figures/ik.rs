@@ -1020,12 +1020,18 @@ impl IkFigure {
             (around, 0.0, false),
         ];
         // With the gap from dots and lines, also [`LABELS_ROOMY_PX`] from every label placed
-        // before: text set wider than measured makes two names 6 px apart touch.
+        // before, twice that between two words sharing half a line: text set wider than
+        // measured makes two names 6 px apart touch, and two words on one line 12 px apart
+        // read as one ("d = 0.071 m CCD"). A side's one-letter name keeps to its side.
         let roomy = |c: &crate::draw::Label| {
             c.first_place(view_proj, size).is_some_and(|r| {
-                frame.labels.iter().all(|o| {
-                    o.first_place(view_proj, size)
-                        .is_none_or(|o| !o.overlaps(&r, LABELS_ROOMY_PX))
+                frame.labels.iter().all(|l| {
+                    l.first_place(view_proj, size).is_none_or(|o| {
+                        let shared = r.max().y.min(o.max().y) - r.min.y.max(o.min.y);
+                        let words = c.text.len() > 1 && l.text.len() > 1;
+                        let gap = if words && shared >= 8.0 { 2.0 } else { 1.0 };
+                        !o.overlaps(&r, gap * LABELS_ROOMY_PX)
+                    })
                 })
             })
         };

@@ -1647,6 +1647,9 @@ pub struct SignFigure {
     dual_quats: Vec<DualQuat>,
     pub mesh: SkinnedMesh,
     stale: bool,
+    /// Whether some vertex's unflipped blend cancelled (real part under 1e-6) and fell back to
+    /// the identity: at 360° the elbow's `r = −1` and the shoulder's `1` cancel at ½ and ½.
+    cancelled: bool,
     /// The last frame's camera and canvas size (CSS pixels): the circle faces that camera and
     /// its labels are placed for it ([`SignFigure::set_view`]).
     view: Option<(OrbitCamera, Vec2)>,
@@ -1677,6 +1680,7 @@ impl SignFigure {
             dual_quats: vec![DualQuat::IDENTITY; j],
             mesh,
             stale: true,
+            cancelled: false,
             view: None,
             rig,
         }
@@ -1732,6 +1736,7 @@ impl SignFigure {
             }
         }
         let m = &self.rig.mesh;
+        self.cancelled = false;
         for (v, out) in self.mesh.positions.iter_mut().enumerate() {
             let joints = self.skin.joints()[v];
             let weights = self.skin.weights()[v];
@@ -1742,7 +1747,10 @@ impl SignFigure {
             let blend = if self.fix {
                 crate::skinning::blend_dual_quats(&qs, &weights)
             } else {
-                blend_without_fix(&qs, &weights)
+                blend_without_fix(&qs, &weights).unwrap_or_else(|| {
+                    self.cancelled = true;
+                    DualQuat::IDENTITY
+                })
             };
             *out = blend.transform_point(m.positions[v]);
             self.mesh.normals[v] = blend.transform_direction(m.normals[v]);
@@ -1819,18 +1827,23 @@ impl SignFigure {
         } else {
             0.5 * half
         };
-        // The blend's arc from 1, under the points.
-        let arc: Vec<Vec3> = (0..=24)
-            .map(|k| on_circle(blend_angle * k as f32 / 24.0))
-            .collect();
-        frame.wide_polyline(&arc, palette::TEAL, 5.0);
+        // The blend's arc from 1, under the points; a cancelled blend has no point and no arc.
+        let blend_label = if self.cancelled { "" } else { "blend at ½, ½" };
+        if !self.cancelled {
+            let arc: Vec<Vec3> = (0..=24)
+                .map(|k| on_circle(blend_angle * k as f32 / 24.0))
+                .collect();
+            frame.wide_polyline(&arc, palette::TEAL, 5.0);
+        }
+        // At a full turn −r is 1: one dot, named for both.
+        let full = r.w < -0.999_999;
         let points = [
-            (0.0, "1 (shoulder)", palette::DARK, 12.0),
+            (0.0, if full { "1 = −r (shoulder)" } else { "1 (shoulder)" }, palette::DARK, 12.0),
             (half, "r (elbow)", palette::ORANGE, 12.0),
-            (blend_angle, "blend at ½, ½", palette::TEAL, 12.0),
-            (half + std::f32::consts::PI, "−r", palette::GREY, 9.0),
+            (blend_angle, blend_label, palette::TEAL, 12.0),
+            (half + std::f32::consts::PI, if full { "" } else { "−r" }, palette::GREY, 9.0),
         ];
-        for &(angle, _, color, size) in points.iter().rev() {
+        for &(angle, _, color, size) in points.iter().rev().filter(|p| !p.1.is_empty()) {
             frame.marker(on_circle(angle), size, color);
         }
         // Each point's label outside the circle along its radius, at the first place round its
@@ -1838,7 +1851,7 @@ impl SignFigure {
         // where points meet (1, r and the blend near 0°; 1, −r and the blend near 360° with the
         // fix) the later ones step out of the way, most important first.
         let view = view_of(self.view);
-        for &(angle, text, color, size) in &points {
+        for &(angle, text, color, size) in points.iter().filter(|p| !p.1.is_empty()) {
             let toward = Vec2::new(angle.cos(), -angle.sin());
             let candidates =
                 Label::around_dot(on_circle(angle), size, toward, text, color, 0, 8, 8.0);
@@ -1872,6 +1885,11 @@ impl SignFigure {
             (true, true) => {
                 " On the far hemisphere: the fix blends −r instead, the short way.".to_string()
             }
+            (true, false) if self.cancelled => " Opposite 1, and not flipped: at ½ and ½ the two \
+                cancel, the blend is zero and has nothing to normalise, so the code falls back to \
+                no turn (no blend on the circle). Every other ring blends to ±1, no turn either: the \
+                tube is untwisted, where a degree less turns the elbow ring almost half a turn."
+                .to_string(),
             (true, false) => {
                 " On the far hemisphere, and not flipped: the blend goes the long way round."
                     .to_string()
@@ -1882,20 +1900,19 @@ impl SignFigure {
     }
 }
 
-/// The DQS blend without the antipodality fix: `Σ wₖ qₖ`, normalised (identity when the real
-/// part cancels).
-fn blend_without_fix(dual_quats: &[DualQuat], weights: &[f32]) -> DualQuat {
+/// The DQS blend without the antipodality fix: `Σ wₖ qₖ`, normalised; `None` when the real
+/// part cancels (length under 1e-6), which leaves nothing to normalise.
+fn blend_without_fix(dual_quats: &[DualQuat], weights: &[f32]) -> Option<DualQuat> {
     let (mut real, mut dual) = (Vec4::ZERO, Vec4::ZERO);
     for (q, &w) in dual_quats.iter().zip(weights) {
         real += Vec4::from(q.real) * w;
         dual += Vec4::from(q.dual) * w;
     }
-    if real.length() < 1e-6 {
-        return DualQuat::IDENTITY;
-    }
-    DualQuat {
-        real: glam::Quat::from_vec4(real),
-        dual: glam::Quat::from_vec4(dual),
-    }
-    .normalized()
+    (real.length() >= 1e-6).then(|| {
+        DualQuat {
+            real: glam::Quat::from_vec4(real),
+            dual: glam::Quat::from_vec4(dual),
+        }
+        .normalized()
+    })
 }

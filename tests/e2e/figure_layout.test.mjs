@@ -2,8 +2,8 @@
 // panel keeps its 420 px; a "stacked" figure (lesson 11's short panels) puts its controls under a
 // full-width canvas at 1600 px too, leaving no empty column beside it; a "notes-first" figure
 // (lesson 13's drape) shows its note right under the canvas and timeline at 800 px, before its
-// controls. The page's own helpers spanTimeline and sentences (www/lesson.js) are checked on the
-// first page.
+// controls; a "caption-first" figure (lesson 09's Figure 1) shows its caption there. The page's
+// own helpers spanTimeline and sentences (www/lesson.js) are checked on the first page.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, serveDist, openPage } from './browser.mjs';
@@ -47,6 +47,12 @@ test('figures keep their canvas height, and short or tall panels sit where the p
         [[0, 1.3, 2], [null, 7, null]],
         'Key B not changed: the axis has zero length. Screw: a slide. Why?',
       ]);
+      // A "caption-first" figure (lesson 09's Figure 1): the caption that says what the dots are
+      // comes right under the canvas, before the controls, and both fit on the 600 px screen.
+      const c = await boxes(page, '#fig-cylinder', ['.stage canvas', 'figcaption', '.panel']);
+      assert.ok(Math.abs(c['figcaption'].top - c['.stage canvas'].bottom) < 2, `800 px: the caption is under the canvas ${JSON.stringify(c)}`);
+      assert.ok(c['figcaption'].bottom - c['.stage canvas'].top <= 600, `800 px: canvas and caption take ${c['figcaption'].bottom - c['.stage canvas'].top} px`);
+      assert.ok(c['.panel'].top >= c['figcaption'].bottom - 1, '800 px: the controls come after the caption');
       await page.close();
     }
     {

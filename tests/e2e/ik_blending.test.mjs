@@ -4,7 +4,7 @@
 // float noise), and the blend figure keeps a hand waved over the head inside a short, wide
 // canvas (800 x 600: no figure pixel on the canvas's top rows at any time of the wave).
 // Lesson 07's IK figures each stand in the section they illustrate, and the aim plot's red line
-// shows where the blue one lies on it; lesson 08's locomotion figure has its two plots with a
+// shows where the blue one lies on it, and its plots' y axes end on labelled ticks; lesson 08's locomotion figure has its two plots with a
 // playhead that follows the timeline, and its note does not count the snap-back of root motion
 // left in the pose as sliding.
 import { test } from 'node:test';
@@ -236,6 +236,31 @@ test('lesson 07: inside the cone the aim plot shows the red line under the blue 
     assert.ok(blue > 200, `the head's line is drawn (${blue} px)`);
     assert.ok(red > 0.5 * blue, `the target's line shows beside it: ${red} red px, ${blue} blue px`);
     await page.locator('#aim-plot').screenshot({ path: `${SHOTS}/07-inverse-kinematics-aim-plot-180-webgl2.png` });
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 07: the error and angle plots end their y axes on labelled ticks', async () => {
+  // A flat line near the top of a plot (2 segments at x = 0.01: CCD 10^-1.5 m short; FABRIK
+  // with 5 segments; the head's 70° at z = -1.2) must have a labelled tick beyond it: the y
+  // range's ends are whole decades, or multiples of 30°.
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await open(context, '07-inverse-kinematics');
+    const range = async (plot) => (await page.locator(plot).getAttribute('data-y-range')).split(' ').map(Number);
+    const onTicks = (r, step, what) => assert.ok(r.every((v) => Math.abs(v / step - Math.round(v / step)) < 1e-9), `${what}: y range ${r}`);
+    await setControl(page, '#fig-ik-iterative', 'segments', 2);
+    await setControl(page, '#fig-ik-iterative', 'x', 0.01);
+    await frames(page);
+    onTicks(await range('#fig-ik-iterative .plot'), 1, 'Figure 2, 2 segments, x = 0.01');
+    await setControl(page, '#fig-ik-limits', 'segments', 5);
+    await frames(page);
+    onTicks(await range('#fig-ik-limits .plot'), 1, 'Figure 3, 5 segments');
+    await setControl(page, '#fig-aim', 'z', -1.2);
+    await frames(page);
+    onTicks(await range('#aim-plot'), 30, 'Figure 4, z = -1.2');
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

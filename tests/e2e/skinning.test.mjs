@@ -1,6 +1,7 @@
 // Lesson 09 in Chromium: the heat legends (shown while a joint is painted, naming it, in the
 // meshes' colours), the character's falloff slider range, what the area plot's dashed line
-// follows (the note says), and the glTF figure's note after a rejected file.
+// follows (the note says), and the glTF figure's notes: its CPU and frame times, and after a
+// rejected file.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync } from 'node:fs';
@@ -68,6 +69,17 @@ test('lesson 09: heat legends, falloff range, plot cursor note, rejected glTF no
     await page.locator('#fig-gltf').scrollIntoViewIfNeeded();
     if (SAMPLES) {
       await page.waitForFunction(() => document.querySelector('#fig-gltf .note').textContent.startsWith('RiggedFigure.gltf: '));
+    }
+    if (SAMPLES) {
+      // The CPU time and the frame time are means over the same frames, each frame's work
+      // against the time to the next frame, which holds it: never the larger.
+      const timed = /take ([\d.]+) ms on the CPU, of the ([\d.]+) ms from its start to the next frame's \(means of the last (\d+) frames\)/;
+      await page.waitForFunction((re) => new RegExp(re).test(document.querySelector('#fig-gltf .note').textContent), timed.source);
+      for (let i = 0; i < 8; i++) {
+        const [, cpu, frame, n] = (await gltfNote()).match(timed);
+        assert.ok(Number(cpu) <= Number(frame) && Number(n) >= 10, `${cpu} ms of CPU in a ${frame} ms frame (${n} frames)`);
+        await frames(page, 3);
+      }
     }
     await page.evaluate(() => {
       const data = new DataTransfer();
