@@ -6,7 +6,9 @@ use glam::Vec3;
 use inbetween::camera::OrbitCamera;
 use inbetween::draw::{Frame, MeshId};
 use inbetween::exercises::run::{direct, Failure};
-use inbetween::figures::cloth::{ClothFigure, Preset, SpringFigure, SUBSTEP_PLOT_K};
+use inbetween::figures::cloth::{
+    ClothFigure, Preset, SpringFigure, MIN_STRUCTURAL_K, SUBSTEP_PLOT_K,
+};
 
 fn draw(f: &mut ClothFigure, t: f32) -> (String, Frame) {
     let mut frame = Frame::default();
@@ -1068,4 +1070,87 @@ fn a_fine_xpbd_drape_stays_whole_but_stretches_by_a_fifth() {
     assert!(lo > 17.0 && hi < 30.0, "100 × 100: {lo} to {hi} %");
     let (lo, _, hi) = run(20.0);
     assert!(lo > 3.0 && hi < 5.0, "20 × 20: {lo} to {hi} %");
+}
+
+#[test]
+fn the_flag_takes_no_structural_stiffness_below_its_minimum() {
+    // A flag with (almost) no structural springs shreds at any step; the figure refuses it.
+    let mut f = ClothFigure::new(Preset::Flag);
+    assert!(f
+        .set_stiffness("structural", 0.0)
+        .unwrap_err()
+        .contains("structural stiffness"));
+    assert!(f.set_stiffness("structural", MIN_STRUCTURAL_K - 1.0).is_err());
+    assert!(f.set_stiffness("structural", MIN_STRUCTURAL_K).is_ok());
+    assert!(f.set_stiffness("shear", 0.0).is_ok());
+    assert!(f.set_stiffness("bending", 0.0).is_ok());
+}
+
+#[test]
+fn the_flag_note_advises_only_what_the_panel_can_still_do() {
+    // The panel's corners, at the softest and the stiffest structural springs: every piece of
+    // advice names a setting that can still move that way, a held flag stretched past 50 % is
+    // called too soft, and an explosion below the stability estimate is not blamed on the step.
+    let mut cases = Vec::new();
+    for substeps in [1.0, 40.0] {
+        for step in [5.0, 50.0] {
+            for wind in [0.0, 20.0] {
+                for pins in ["two corners", "whole edge"] {
+                    cases.push((MIN_STRUCTURAL_K, substeps, step, wind, pins));
+                }
+            }
+        }
+    }
+    cases.push((5000.0, 40.0, 50.0, 20.0, "whole edge"));
+    cases.push((5000.0, 40.0, 5.0, 0.0, "whole edge"));
+    let (mut soft, mut not_step) = (0, 0);
+    for (k, substeps, step, wind, pins) in cases {
+        let mut f = ClothFigure::new(Preset::Flag);
+        f.set_stiffness("structural", k).unwrap();
+        f.set_substeps(substeps).unwrap();
+        f.set_step_ms(step).unwrap();
+        f.set_wind(wind).unwrap();
+        f.set_pins(pins).unwrap();
+        let (note, _) = draw(&mut f, 6.0);
+        let at = format!("k {k}, {substeps} substeps, {step} ms, wind {wind}, {pins}: {note}");
+        assert!(!note.contains("raise the substeps") || substeps < 40.0, "{at}");
+        assert!(!note.contains("lower the frame step") || step > 5.0, "{at}");
+        assert!(!note.contains("lower the wind") || wind > 0.0, "{at}");
+        assert!(!note.contains("pin the whole edge") || pins != "whole edge", "{at}");
+        assert!(!note.contains("raise the structural stiffness") || k < 5000.0, "{at}");
+        let step_blamed = note.contains("ower the stiffness");
+        let above = note.contains("h is above it") || note.contains("h is far above it");
+        assert!(!step_blamed || above, "{at}");
+        if note.contains("the step is stable") && f.exploded(0).is_some() {
+            assert!(note.contains("the step is not the cause"), "{at}");
+        }
+        if f.exploded(1).is_some() {
+            assert!(note.contains("the step is not the cause"), "{at}");
+        }
+        let rows = rows(&f);
+        let last = rows.last().unwrap();
+        for cloth in 0..2 {
+            if f.exploded(cloth).is_none() && last[3 + cloth] > 50.0 {
+                assert!(note.contains("too soft for this load"), "{at}");
+                soft += 1;
+            }
+        }
+        if note.contains("the step is not the cause") {
+            not_step += 1;
+        }
+    }
+    // The corners reach both verdicts this test checks.
+    assert!(soft > 0 && not_step > 0, "{soft} soft, {not_step} not the step");
+    // The lesson's case: at 50 N/m, wind 20 m/s and two corners, the mass-spring flag shreds
+    // with h below the limit, and the note blames the soft springs, not the step.
+    let mut f = ClothFigure::new(Preset::Flag);
+    f.set_stiffness("structural", MIN_STRUCTURAL_K).unwrap();
+    f.set_wind(20.0).unwrap();
+    f.set_pins("two corners").unwrap();
+    let (note, _) = draw(&mut f, 6.0);
+    assert!(f.exploded(0).is_some(), "{note}");
+    assert!(note.contains("h is below it: the step is stable"), "{note}");
+    assert!(note.contains("too soft for this load"), "{note}");
+    assert!(!note.contains("ower the stiffness"), "{note}");
+    assert!(rows(&f).iter().any(|r| r[3] > 50.0 || r[4] > 50.0), "{note}");
 }

@@ -75,7 +75,9 @@ if (flagViewer) {
   const gui = new GUI({ container: document.querySelector('#fig-flag .panel'), title: 'Flags' });
   const refresh = () => gui.controllersRecursive().forEach((c) => c.updateDisplay());
   const springs = gui.addFolder('stiffness k (N/m)');
-  springs.add(p, 'structural', 0, 3000, 10).name('structural');
+  // From 50 N/m (the figure's minimum: a flag without structural springs is not a cloth) to the
+  // figure's maximum, so that the note's advice never names a setting already at its end.
+  springs.add(p, 'structural', 50, 5000, 10).name('structural');
   springs.add(p, 'shear', 0, 1000, 5).name('shear');
   springs.add(p, 'bending', 0, 500, 5).name('bending');
   gui.add(p, 'damping', 0, 0.3, 0.005).name('damping c (N·s/m)');

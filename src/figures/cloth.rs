@@ -27,6 +27,14 @@ use glam::{Mat4, Quat, Vec2, Vec3, Vec4};
 const FILE: &str = "src/exercises/cloth.rs";
 /// Length of the figures' timelines, seconds (bounds the work of one replay).
 pub const DURATION: f32 = 6.0;
+/// The softest structural springs a figure takes, N/m: a cloth without springs that resist
+/// stretch is no cloth (the flag at 0 N/m shreds at any substep).
+pub const MIN_STRUCTURAL_K: f32 = 50.0;
+/// The stiffest springs a figure takes, N/m.
+const MAX_K: f32 = 5000.0;
+/// A held cloth's largest spring stretch, %, past which the note calls its springs too soft.
+const SOFT_STRETCH_PERCENT: f32 = 50.0;
+
 /// The structural stiffnesses, N/m, at which [`ClothFigure::substeps_plot`] measures the substeps
 /// the mass-spring cloth needs (up to the slider's 5,000).
 pub const SUBSTEP_PLOT_K: [f32; 6] = [250.0, 500.0, 1000.0, 2000.0, 3500.0, 5000.0];
@@ -385,11 +393,12 @@ impl ClothFigure {
         self.preset
     }
 
-    /// Stiffness `k` of one spring kind ("structural", "shear", "bending"), N/m in [0, 5000].
-    /// XPBD uses the compliance `α = 1/k`.
+    /// Stiffness `k` of one spring kind ("structural", "shear", "bending"), N/m in [0, 5000];
+    /// structural in [[`MIN_STRUCTURAL_K`], 5000]. XPBD uses the compliance `α = 1/k`.
     pub fn set_stiffness(&mut self, kind: &str, k: f32) -> Result<(), String> {
         let i = kind_index(kind)?;
-        let k = in_range(&format!("{kind} stiffness"), k, 0.0, 5000.0)?;
+        let lo = if i == 0 { MIN_STRUCTURAL_K } else { 0.0 };
+        let k = in_range(&format!("{kind} stiffness"), k, lo, MAX_K)?;
         if k != self.params.stiffness[i] {
             self.params.stiffness[i] = k;
             self.params.compliance_from_stiffness();
@@ -1036,7 +1045,7 @@ impl ClothFigure {
         let any_spring = self.sims.iter().any(|s| s.method == Method::MassSpring);
         if any_spring {
             let verdict = if h <= limit {
-                "below it: stable"
+                "below it: the step is stable"
             } else if h <= 2.0 * limit {
                 // The estimate is a sufficient condition only: above it a cloth may survive (the
                 // flag at 2,000 N/m with 18 substeps) or explode (the drape at 40 × 40).
@@ -1074,13 +1083,14 @@ impl ClothFigure {
                     // What this figure's controls can do about it; any change starts the run
                     // again (the flag's reset would also bring back every default).
                     match (self.preset, sim.method) {
-                        (Preset::Flag, _) => "Lower the stiffness or the frame step, or raise \
-                                              the substeps: the run starts again by itself.",
+                        (Preset::Flag, m) => self.flag_advice(m, h > limit),
                         (Preset::Drape, Method::MassSpring) => "Choose fewer particles per side \
-                                                                (heavier particles) or XPBD.",
+                                                                (heavier particles) or XPBD."
+                            .into(),
                         (Preset::Drape, Method::Xpbd) => "XPBD's projections cannot overshoot, \
                                                           so the step is not the cause: press \
-                                                          reset.",
+                                                          reset."
+                            .into(),
                     },
                 )),
                 None => {
@@ -1090,6 +1100,13 @@ impl ClothFigure {
                             format_number(last[2]),
                             format_number(last[1]),
                         ));
+                        if last[2] > SOFT_STRETCH_PERCENT && self.preset == Preset::Flag {
+                            parts.push(format!(
+                                "Past {SOFT_STRETCH_PERCENT} %, the {name} flag's springs are \
+                                 too soft for this load, whatever the step. {}",
+                                self.flag_load_advice()
+                            ));
+                        }
                     }
                 }
             }
@@ -1111,6 +1128,76 @@ impl ClothFigure {
         }
         parts.join(" ")
     }
+}
+
+impl ClothFigure {
+    /// What the flag's controls can do about an explosion of the `method` flag, naming only
+    /// settings that can still move that way. A mass-spring substep above the estimate
+    /// (`above_limit`) calls for a smaller substep or softer springs; otherwise the step is not
+    /// the cause and the springs are too soft for the load.
+    fn flag_advice(&self, method: Method, above_limit: bool) -> String {
+        let why = match method {
+            Method::Xpbd => "XPBD's projections cannot overshoot",
+            Method::MassSpring if !above_limit => "The substep h is below the estimate",
+            Method::MassSpring => "",
+        };
+        if !why.is_empty() {
+            return format!(
+                "{why}, so the step is not the cause: the springs are too soft for this load. {}",
+                self.flag_load_advice()
+            );
+        }
+        let mut moves = Vec::new();
+        let k = self.params.stiffness;
+        if k[0] > MIN_STRUCTURAL_K || k[1] > 0.0 || k[2] > 0.0 {
+            moves.push("lower the stiffness");
+        }
+        if self.frame_dt > 0.005 {
+            moves.push("lower the frame step");
+        }
+        if self.params.substeps < MAX_SEARCH_SUBSTEPS {
+            moves.push("raise the substeps");
+        }
+        if moves.is_empty() {
+            return "Press reset.".into();
+        }
+        format!(
+            "{}: the run starts again by itself.",
+            capitalised_or(&moves)
+        )
+    }
+
+    /// How to stiffen the flag against its load, naming only settings not at their ends.
+    fn flag_load_advice(&self) -> String {
+        let mut moves = Vec::new();
+        if self.params.stiffness[0] < MAX_K {
+            moves.push("raise the structural stiffness");
+        }
+        if self.wind_speed > 0.0 {
+            moves.push("lower the wind");
+        }
+        if self.pins != PINS.len() - 1 {
+            moves.push("pin the whole edge");
+        }
+        if moves.is_empty() {
+            return "Press reset.".into();
+        }
+        format!("{}.", capitalised_or(&moves))
+    }
+}
+
+/// "A, b or c", from ["a", "b", "c"].
+fn capitalised_or(moves: &[&str]) -> String {
+    let mut s = match moves.split_last() {
+        Some((last, [])) => last.to_string(),
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+        None => String::new(),
+    };
+    // ASCII only: the moves are English words, and `to_uppercase` would bring Unicode's tables.
+    if let Some(c) = s.get_mut(0..1) {
+        c.make_ascii_uppercase();
+    }
+    s
 }
 
 fn kind_index(kind: &str) -> Result<usize, String> {

@@ -44,3 +44,36 @@ test('lesson 13: the drape stops timing an exploded cloth', async () => {
     await context.close();
   }
 });
+
+test('lesson 13: the flag takes no structural stiffness below 50 N/m, and its Try this comes in four short parts', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/13-cloth/?backend=webgl2`, { width: 1600, height: 1000 });
+    const flag = '#fig-flag';
+    await page.locator(flag).scrollIntoViewIfNeeded();
+    // A typed -1 (or 0) lands on the slider's end, 50 N/m, which the figure accepts.
+    await setControl(page, flag, 'structural', -1);
+    await frames(page, 5);
+    const input = page.locator(`${flag} .lil-controller`, { hasText: 'structural' }).first().locator('input').first();
+    assert.equal(Number(await input.inputValue()), 50);
+    const note = await page.locator('#flag-note').textContent();
+    assert.doesNotMatch(note, /stiffness/i, note);
+    assert.match(note, /the step is stable/, note);
+    // The callouts between Figure 2 and the next section: four, none taller than 13 lines.
+    const heights = await page.evaluate(() => {
+      const out = [];
+      for (let e = document.querySelector('#fig-flag').nextElementSibling; e && e.tagName !== 'H2'; e = e.nextElementSibling) {
+        if (!e.classList.contains('callout')) continue;
+        const p = e.querySelector('p');
+        out.push(e.getBoundingClientRect().height / parseFloat(getComputedStyle(p).lineHeight));
+      }
+      return out;
+    });
+    assert.equal(heights.length, 4, `${heights}`);
+    for (const lines of heights) assert.ok(lines < 13, `a callout ${lines.toFixed(1)} lines tall`);
+    assert.deepEqual(problems, []);
+    await page.close();
+  } finally {
+    await context.close();
+  }
+});
