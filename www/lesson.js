@@ -751,7 +751,7 @@ export class Plot {
     this.dataRange = null;
     // With `yStep`, the y ticks' steps: each divides the next, so a range whose ends are ticks of
     // one step has them as ticks of any smaller step uPlot picks.
-    const yIncrs = [1, 2, 10, 20, 100, 200].map((k) => k * yStep);
+    const yIncrs = yStep ? [1, 2, 10, 20, 100, 200].map((k) => k * yStep) : null;
     const cursorLine = (u) => {
       if (this.cursor === null || !Number.isFinite(this.cursor)) return;
       const x = u.valToPos(this.cursor, 'x', true);

@@ -688,6 +688,9 @@ impl FollowThrough {
     /// far it is to the side of the base at the end of each hold.
     fn settle(&mut self) {
         let mut antenna = Antenna::new(Self::base(0.0), self.joints, Self::segment(self.joints));
+        // The holds end at 2 s and 4 s: counted in steps, as the times are rounded.
+        let half = (2.0 / DT).round() as usize;
+        let late = (Self::LATE / DT).round() as usize;
         for _ in 0..4 {
             self.start = antenna.clone();
             (self.swing_past, self.late) = (0.0, 0.0);
@@ -695,9 +698,6 @@ impl FollowThrough {
                 let t = step as f32 * DT;
                 antenna.step(Self::base(t), self.stiffness, self.damping, DT);
                 self.swing_past = self.swing_past.max(Self::past(t, &antenna));
-                // The holds end at 2 s and 4 s: counted in steps, as the times are rounded.
-                let half = (2.0 / DT).round() as usize;
-                let late = (Self::LATE / DT).round() as usize;
                 if (step + late) % half <= late {
                     let side = (antenna.tip().x - antenna.positions[0].x).abs();
                     self.late = self.late.max(side);
