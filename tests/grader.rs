@@ -1,11 +1,16 @@
 //! Grades the exercises natively and prints the table.
 //!
-//! `./scripts/grade` runs this. What must hold depends on the build:
+//! `./scripts/grade` runs `grade_exercises`, whose expectation depends on the build:
 //! - with `--features solutions`, every exercise passes (the grader accepts a right answer);
 //! - with `INBETWEEN_GRADER_EXPECT=stubs` (CI, on the untouched stubs; read when the test runs, so
 //!   one build serves both runs), every exercise reports "not yet implemented" (the grader tells
 //!   a stub from an answer);
 //! - otherwise (a student's build), no exercise may be wrong or panic.
+//!
+//!
+//! `the_reference_answers_all_pass` checks in every build that the grader accepts a right answer:
+//! it grades with the exercises answering by their reference solutions
+//! (`exercises::with_reference_answers`), as the feature `solutions` makes them do.
 //!
 //! `INBETWEEN_GRADE_LESSON` (read when the test runs; `scripts/grade LESSON` sets it) grades the
 //! lessons it names only (see `select_lessons`); one that names none fails with a line starting
@@ -14,6 +19,48 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use inbetween::exercises::grade::{grade_selected, table};
+use inbetween::exercises::with_reference_answers;
+
+#[test]
+fn the_reference_answers_all_pass() {
+    let reports = with_reference_answers(|| grade_selected(""))
+        .unwrap_or_else(|e| panic!("grading every lesson: {e}"));
+    println!("\nWith the reference answers:\n{}", table(&reports));
+    assert!(!reports.is_empty());
+    let failed: Vec<_> = reports
+        .iter()
+        .filter(|r| !r.passed())
+        .map(|r| r.exercise)
+        .collect();
+    assert_eq!(
+        failed,
+        Vec::<&str>::new(),
+        "reference answers the grader refused"
+    );
+    assert!(
+        !inbetween::exercises::reference_answers_on(),
+        "the switch is off again"
+    );
+}
+
+/// The native grader's table for the isolation test's page (tests/e2e-variant/), whose course
+/// module is built with the features `solutions` and `student-bugs`: here the same answers come
+/// from the switches that stand for those features, in the build the other tests use. The three
+/// planted mistakes that natively come back (slerp panics, the Rodrigues matrix is transposed,
+/// the middle vertex normal reversed) fail; every other exercise passes.
+#[test]
+fn grade_with_student_bugs() {
+    use inbetween::exercises::with_student_bugs;
+    let selector = std::env::var("INBETWEEN_GRADE_LESSON").unwrap_or_default();
+    let reports = with_reference_answers(|| with_student_bugs(|| grade_selected(&selector)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    println!("\n{}", table(&reports));
+    assert!(!reports.is_empty());
+    for r in &reports {
+        let planted = ["slerp", "rodrigues_matrix", "vertex_normals"].contains(&r.exercise);
+        assert_eq!(!r.passed(), planted, "{}: {:?}", r.exercise, r.status);
+    }
+}
 
 #[test]
 fn grade_exercises() {

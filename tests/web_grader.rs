@@ -1,4 +1,5 @@
-//! The grader in headless Chromium, with the same expectations as `tests/grader.rs`.
+//! The grader in headless Chromium, with the same expectations as `tests/grader.rs`: the reference
+//! answers all pass, and `grade_exercises_in_the_browser` holds what the build's answers must.
 //!
 //! `INBETWEEN_GRADE_LESSON` picks the lessons as in `tests/grader.rs`, but it is read when the
 //! test compiles (a page has no environment): cargo rebuilds the test when it changes.
@@ -8,6 +9,32 @@ use inbetween::exercises::grade::{grade_selected, table};
 use wasm_bindgen_test::*;
 
 wasm_bindgen_test_configure!(run_in_browser);
+
+/// The grader accepts a right answer under wasm too: every exercise answering with its reference
+/// solution passes (the switch that stands for the feature `solutions`; see tests/grader.rs).
+#[wasm_bindgen_test]
+fn the_reference_answers_all_pass_in_the_browser() {
+    let reports = inbetween::exercises::with_reference_answers(|| grade_selected(""))
+        .unwrap_or_else(|e| panic!("grading every lesson: {e}"));
+    let failed: Vec<_> = reports
+        .iter()
+        .filter(|r| !r.passed())
+        .map(|r| r.exercise)
+        .collect();
+    if !failed.is_empty() {
+        web_sys::console::log_1(&table(&reports).into());
+    }
+    assert!(!reports.is_empty());
+    assert_eq!(
+        failed,
+        Vec::<&str>::new(),
+        "reference answers the grader refused (see the table above)"
+    );
+    assert!(
+        !inbetween::exercises::reference_answers_on(),
+        "the switch is off again"
+    );
+}
 
 #[wasm_bindgen_test]
 fn grade_exercises_in_the_browser() {

@@ -274,13 +274,17 @@ fn replayed<I: Args<N>, const N: usize>(
     })
 }
 
-/// The `student-bugs` build's mistakes, in the grader as in the figures (see
-/// `run::student_bugs`): slerp panics, the Rodrigues matrix comes out transposed, the middle
+/// The `student-bugs` build's mistakes (or, in a build with debug assertions, those of
+/// [`super::with_student_bugs`]), in the grader as in the figures (see `run::student_bugs`):
+/// slerp panics, the Rodrigues matrix comes out transposed, the middle
 /// vertex normal is reversed, and in the browser `polar_step` never returns (the page's time limit must stop it; natively it is left
 /// alone, since nothing could stop it there).
-#[cfg(feature = "student-bugs")]
+#[cfg(any(feature = "student-bugs", debug_assertions))]
 fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O> {
     use std::any::Any;
+    if !super::student_bugs_on() {
+        return answer;
+    }
     let mut answer = answer;
     match exercise {
         "slerp" => {
@@ -307,7 +311,7 @@ fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O>
     answer
 }
 
-#[cfg(not(feature = "student-bugs"))]
+#[cfg(not(any(feature = "student-bugs", debug_assertions)))]
 fn with_student_bugs<O>(_exercise: &str, answer: Answer<O>) -> Answer<O> {
     answer
 }
@@ -836,9 +840,14 @@ mod tests {
         assert_eq!(seen, expected, "the first exercise stops at its panic");
     }
 
-    #[cfg(all(feature = "student-bugs", feature = "solutions"))]
+    /// The isolation test's build (features `solutions` and `student-bugs`), here by the
+    /// switches that stand for them in a build with debug assertions.
+    #[cfg(debug_assertions)]
     #[test]
     fn the_student_bugs_build_grades_wrong_and_panicking_exercises() {
+        use crate::exercises::{with_reference_answers, with_student_bugs};
+        let grade_selected =
+            |l: &str| with_reference_answers(|| with_student_bugs(|| grade_selected(l)));
         let rows = grade_selected("03").unwrap();
         let status = |name: &str| &rows.iter().find(|r| r.exercise == name).unwrap().status;
         assert!(matches!(

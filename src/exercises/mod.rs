@@ -7,8 +7,8 @@
 //! figure shows the message and falls back to the reference while the rest of the page goes on.
 //!
 //! The first line of each body, `solution!(...)`, calls the reference core function when the crate
-//! is built with the `solutions` feature (used by CI to prove the grader passes a correct answer);
-//! in a normal build it does nothing. Leave it where it is.
+//! is built with the `solutions` feature, or while the grader's own test checks that a correct
+//! answer passes ([`with_reference_answers`]); otherwise it does nothing. Leave it where it is.
 //!
 //! Grade with `./scripts/grade` (natively) or `./scripts/grade --browser` (headless Chromium).
 
@@ -44,12 +44,99 @@ impl std::fmt::Display for NotDone {
     }
 }
 
-/// With the `solutions` feature, returns the reference answer from the enclosing exercise.
+/// With the `solutions` feature, or on a thread inside [`with_reference_answers`], returns the
+/// reference answer from the enclosing exercise.
 macro_rules! solution {
     ($reference:expr) => {
-        if cfg!(feature = "solutions") {
+        if cfg!(feature = "solutions") || $crate::exercises::reference_answers_on() {
             return Ok($reference);
         }
     };
 }
 pub(crate) use solution;
+
+thread_local! {
+    static REFERENCE_ANSWERS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    static STUDENT_BUGS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Sets `switch` for the time of `f` on this thread (back to what it was when `f` returns or
+/// unwinds). Only builds with debug assertions have the switches (see [`with_reference_answers`]).
+fn switched_on<T>(
+    switch: &'static std::thread::LocalKey<std::cell::Cell<bool>>,
+    f: impl FnOnce() -> T,
+) -> T {
+    assert!(
+        cfg!(debug_assertions),
+        "the exercises' test switches need a build with debug assertions"
+    );
+    struct Restore(&'static std::thread::LocalKey<std::cell::Cell<bool>>, bool);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            self.0.set(self.1);
+        }
+    }
+    let _restore = Restore(switch, switch.replace(true));
+    f()
+}
+
+/// Whether the exercises on this thread answer with their reference solutions (see
+/// [`with_reference_answers`]). Always false in a build without debug assertions (a release
+/// build), where the check compiles away.
+#[doc(hidden)]
+#[inline]
+pub fn reference_answers_on() -> bool {
+    cfg!(debug_assertions) && REFERENCE_ANSWERS.get()
+}
+
+/// Runs `f` with every exercise on this thread answering with its reference solution, as a build
+/// with the feature `solutions` does. The grader's tests use it to check that a right answer
+/// passes in the same build that checks the untouched stubs, instead of compiling the crate a
+/// second time with the feature. Only builds with debug assertions (the test profile) have the
+/// switch: elsewhere it panics instead of running `f`.
+#[doc(hidden)]
+pub fn with_reference_answers<T>(f: impl FnOnce() -> T) -> T {
+    switched_on(&REFERENCE_ANSWERS, f)
+}
+
+/// Whether the exercises on this thread make the three planted mistakes of the isolation test
+/// (`run::student_bugs`): in a build with the feature `student-bugs`, or inside
+/// [`with_student_bugs`] in a build with debug assertions.
+#[doc(hidden)]
+#[inline]
+pub fn student_bugs_on() -> bool {
+    cfg!(feature = "student-bugs") || (cfg!(debug_assertions) && STUDENT_BUGS.get())
+}
+
+/// Runs `f` with the exercises making the planted mistakes of the feature `student-bugs` (see
+/// [`student_bugs_on`]): the native grader's table for the isolation test's page, from the build
+/// the native tests use. Panics in a build without debug assertions.
+#[doc(hidden)]
+pub fn with_student_bugs<T>(f: impl FnOnce() -> T) -> T {
+    switched_on(&STUDENT_BUGS, f)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_reference_switch_is_off_again_after_a_return_or_a_panic() {
+        assert!(!reference_answers_on());
+        let inner = with_reference_answers(|| {
+            // Nested: the inner call leaves it on for the rest of the outer one.
+            with_reference_answers(|| ());
+            reference_answers_on()
+        });
+        assert!(inner);
+        assert!(!reference_answers_on());
+        let caught = std::panic::catch_unwind(|| with_reference_answers(|| panic!("in f")));
+        assert!(caught.is_err());
+        assert!(!reference_answers_on());
+        // Inside the switch an exercise answers with its reference, whatever its body holds.
+        assert_eq!(
+            with_reference_answers(|| transforms::local_matrix(glam::Vec3::X, glam::Vec3::ZERO)),
+            Ok(glam::Mat4::from_translation(glam::Vec3::X))
+        );
+    }
+}

@@ -228,9 +228,11 @@ macro_rules! exercises {
 
         /// Runs the exercise `name` in this instance (natively, and inside the page's sandbox).
         pub fn direct(name: &str, args: &[f32]) -> Result<Vec<f32>, Failure> {
-            #[cfg(feature = "student-bugs")]
-            if let Some(result) = student_bugs(name, args) {
-                return result;
+            #[cfg(any(feature = "student-bugs", debug_assertions))]
+            if super::student_bugs_on() {
+                if let Some(result) = student_bugs(name, args) {
+                    return result;
+                }
             }
             match name {
                 $(
@@ -725,10 +727,11 @@ fn two_joint_quiz(name: &str, args: &[f32]) -> Result<(Vec3, crate::ik::TwoJoint
     Ok((u, solution))
 }
 
-/// Three student mistakes, compiled in only for the isolation test (feature `student-bugs`): a
-/// panic in slerp, a transposed Rodrigues matrix and vertex normals with the middle one reversed
-/// (see [`reverse_middle_normal`]).
-#[cfg(feature = "student-bugs")]
+/// Three student mistakes for the isolation test (feature `student-bugs`, or
+/// [`super::with_student_bugs`] in a build with debug assertions; a release build without the
+/// feature has none of this code): a panic in slerp, a transposed Rodrigues matrix and vertex
+/// normals with the middle one reversed (see [`reverse_middle_normal`]).
+#[cfg(any(feature = "student-bugs", debug_assertions))]
 pub(super) fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, Failure>> {
     match name {
         "vertex_normals" => {
@@ -768,7 +771,7 @@ pub(super) fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, 
 /// The `student-bugs` build's vertex normals: the one in the middle of the list (index
 /// `len / 2`) points the wrong way, as if its triangles were wound backwards. A wrong element in
 /// the middle of a long list, for the grader's report of where a list is wrong.
-#[cfg(feature = "student-bugs")]
+#[cfg(any(feature = "student-bugs", debug_assertions))]
 pub(super) fn reverse_middle_normal(normals: &mut [Vec3]) {
     if let Some(n) = normals.get_mut(normals.len() / 2) {
         *n = -*n;

@@ -1,5 +1,5 @@
 // The "Check my exercises" panel (www/course.js) on the student-bugs build: its table is the one the
-// native grader prints for the same build (`scripts/grade`'s test with the same features), a panic
+// native grader prints for the same answers (tests/grader.rs's `grade_with_student_bugs`), a panic
 // and an endless loop are each named in their row while the other exercises are graded, and the
 // page's figures keep running. The build: a built dist/ whose course module is rebuilt with
 // `INBETWEEN_FEATURES=solutions,student-bugs scripts/build --dev --course-only` (slerp panics,
@@ -16,15 +16,18 @@ const SHOTS = 'tests/screenshots';
 mkdirSync(SHOTS, { recursive: true });
 const site = serveDist(VARIANT_DIST);
 
-/** What the native grader prints for `lesson` built with the page's features: the table alone. */
+/**
+ * What the native grader prints for `lesson` with the page's answers: the table alone, from the
+ * test build's switches that stand for the features `solutions` and `student-bugs` (tests/grader.rs,
+ * `grade_with_student_bugs`), so the native build the other tests use serves.
+ */
 function nativeTable(lesson) {
   let out;
   try {
-    out = execFileSync('cargo', ['test', '--quiet', '--features', 'solutions,student-bugs', '--test', 'grader',
-      '--', '--exact', 'grade_exercises', '--nocapture'],
+    out = execFileSync('cargo', ['test', '--quiet', '--test', 'grader', '--', '--exact', 'grade_with_student_bugs', '--nocapture'],
     { env: { ...process.env, INBETWEEN_GRADE_LESSON: lesson }, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
   } catch (e) {
-    out = e.stdout; // the grader's test fails on a wrong exercise; its table is printed first
+    out = e.stdout; // the table is printed before the test's checks
   }
   const start = out.indexOf('lesson  ');
   const end = out.search(/ passed, .* of \d+\n/);
