@@ -744,7 +744,8 @@ impl Renderer {
             return Ok(());
         };
         let view = frame.texture.create_view(&Default::default());
-        // WebGL2's page canvas may be larger than this figure: the figure is its top-left corner.
+        // The target's size: the figure's own (see `Gpu::next_frame`), unless a caller draws a
+        // figure into the top-left corner of a larger target.
         let target_size = (frame.texture.width(), frame.texture.height());
         let size = (gpu.config.width, gpu.config.height);
         let commands = self.encode(gpu, camera, &view, size, target_size);
