@@ -72,14 +72,21 @@ fn the_flags_fly_in_the_wind_and_the_controls_change_them() {
     }
     let start = f.positions(0).to_vec();
     f.set_wind(0.0).unwrap();
-    draw(&mut f, 2.0);
+    draw(&mut f, 6.0);
     assert_ne!(f.positions(0), &start[..]);
-    // Without wind the energy never rises (damping only), on both methods.
+    // Without wind the energy drifts down (damping only), on both methods: lesson 13's text says
+    // the mass-spring energy never rises by more than a thousandth of a joule from one frame to
+    // the next.
     let s = f.samples();
     for method in 0..2 {
         let energies: Vec<f32> = s.chunks(5).map(|r| r[1 + method]).collect();
         for w in energies.windows(2) {
-            assert!(w[1] <= w[0] + 1e-3 * w[0].abs().max(1.0), "{method}: {w:?}");
+            let allowed = if method == 0 {
+                1e-3
+            } else {
+                1e-3 * w[0].abs().max(1.0)
+            };
+            assert!(w[1] <= w[0] + allowed, "{method}: {w:?}");
         }
     }
 }
@@ -308,7 +315,15 @@ fn the_spring_figure_shows_the_limit_and_checks_the_exercises() {
     if cfg!(feature = "solutions") {
         assert!(note.matches("matches the reference").count() == 3, "{note}");
     } else {
-        assert!(note.contains("Not done yet: exercise 13.1"), "{note}");
+        // The three stubs in one sentence, not one each.
+        assert!(
+            note.contains(
+                "Not done yet: exercises 13.1 spring_force, 13.2 cloth_euler_step and \
+                 13.3 project_distance (src/exercises/cloth.rs)."
+            ),
+            "{note}"
+        );
+        assert_eq!(note.matches("Not done yet").count(), 1, "{note}");
     }
     f.set_runner(wrong_runner);
     let note = f.draw(&mut frame, 1.0).unwrap();

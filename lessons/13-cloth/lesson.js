@@ -233,11 +233,29 @@ if (drapeViewer) {
   gui.onChange(apply);
   apply();
   dragParticles('#fig-drape', scene, timeline);
+  // The largest stretch over time, in the colour of the method that ran (the other series stays
+  // empty): the note gives the value at the cursor, the plot its range over the run.
+  const stretch = new Plot(document.getElementById('drape-stretch'), {
+    title: 'Largest stretch of a structural spring', xLabel: 'time (s)', yLabel: 'stretch (%)',
+    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], widths: [2.5, 2.5], minSpan: 1,
+  });
+  let plotted = '';
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     const t0 = performance.now();
     const text = scene.draw(drapeViewer, t);
     const ms = performance.now() - t0;
+    const samples = scene.samples();
+    const key = `${samples.length} ${scene.explodedAt(0)} ${p.method}`;
+    if (key !== plotted) {
+      plotted = key;
+      const [time, , largest] = spanTimeline(gaps(samples, 3), timeline.duration);
+      const none = largest.map(() => null);
+      const r = scene.plotRanges();
+      stretch.setYRange([r[2], r[3]]);
+      stretch.setData(p.method === 'XPBD' ? [time, none, largest] : [time, largest, none]);
+    }
+    stretch.setCursor(t);
     // The frames this draw simulated (Rust counts them; 0 after a replay from the start): a
     // slow page simulates several per drawn frame, and each gets its share of the time.
     const frames = scene.lastStepFrames();

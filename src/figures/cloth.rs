@@ -14,8 +14,8 @@
 //! are recorded with the frame they happened at).
 
 use super::{
-    compare_note, failure_note, finite, format_number, in_range, palette, Frame, MeshId, Runner,
-    DEFAULT_RUNNER,
+    compare_note, failure_note, finite, format_number, in_range, not_done_note, palette, Failure,
+    Frame, MeshId, Runner, DEFAULT_RUNNER,
 };
 use crate::camera::{point_on_view_plane, project_to_canvas, OrbitCamera};
 use crate::cloth::{Cloth, ClothParams, ClothSpec, Colliders, Method, SpringKind};
@@ -1590,6 +1590,8 @@ impl SpringFigure {
         let (anchor, p) = (ANCHORS[0], ANCHORS[0] + START_OFFSET);
         let v = Vec3::new(0.3, -0.2, 0.0);
         let mut notes = Vec::new();
+        // The stubs among the three, said in one sentence (first) instead of one each.
+        let mut not_done = Vec::new();
         let at = "the start (p = anchor + (0.7, −0.9, 0), v = (0.3, −0.2, 0))";
         match run::spring_force(
             self.runner,
@@ -1601,6 +1603,7 @@ impl SpringFigure {
             self.c,
             SPRING_REST,
         ) {
+            Err(Failure::NotDone) => not_done.push("exercise 13.1 spring_force"),
             Err(f) => notes.push(failure_note("exercise 13.1 spring_force", FILE, &f)),
             Ok(f) => {
                 let r = crate::cloth::spring_force(
@@ -1627,6 +1630,7 @@ impl SpringFigure {
         let force = Vec3::new(1.0, -2.0, 0.5);
         let w = 1.0 / SPRING_MASS;
         match run::cloth_euler_step(self.runner, p, v, force, w, self.dt) {
+            Err(Failure::NotDone) => not_done.push("exercise 13.2 cloth_euler_step"),
             Err(f) => notes.push(failure_note("exercise 13.2 cloth_euler_step", FILE, &f)),
             Ok((q, u)) => {
                 let (mut rq, mut ru) = (p, v);
@@ -1654,6 +1658,7 @@ impl SpringFigure {
             alpha,
             self.dt,
         ) {
+            Err(Failure::NotDone) => not_done.push("exercise 13.3 project_distance"),
             Err(f) => notes.push(failure_note("exercise 13.3 project_distance", FILE, &f)),
             Ok((a, b)) => {
                 let (mut ra, mut rb) = (ANCHORS[1], ANCHORS[1] + START_OFFSET);
@@ -1678,6 +1683,7 @@ impl SpringFigure {
                 );
             }
         }
+        notes.insert(0, not_done_note(&not_done, FILE));
         notes.push(self.probe_note());
         notes.retain(|n| !n.is_empty());
         notes.join(" ")

@@ -159,6 +159,26 @@ impl FirstPanic {
     }
 }
 
+/// One sentence for the exercises of a figure that are all still stubs, instead of a
+/// [`failure_note`] each: "Not done yet: exercises 13.1 spring_force, 13.2 cloth_euler_step and
+/// 13.3 project_distance (src/exercises/cloth.rs). The figure uses the reference." Each of
+/// `exercises` reads like "exercise 13.1 spring_force"; one alone reads as its `failure_note`;
+/// none gives an empty string.
+pub fn not_done_note(exercises: &[&str], file: &str) -> String {
+    let names: Vec<&str> = exercises
+        .iter()
+        .map(|e| e.strip_prefix("exercise ").unwrap_or(e))
+        .collect();
+    match names.as_slice() {
+        [] => String::new(),
+        [_] => failure_note(exercises[0], file, &Failure::NotDone),
+        [first @ .., last] => format!(
+            "Not done yet: exercises {} and {last} ({file}). The figure uses the reference.",
+            first.join(", ")
+        ),
+    }
+}
+
 /// What a figure says when the student's exercise gave no answer; the figure then uses the
 /// reference. `exercise` reads like "exercise 3.2 slerp", `file` like "src/exercises/rotations.rs".
 pub fn failure_note(exercise: &str, file: &str, failure: &Failure) -> String {
@@ -274,6 +294,20 @@ mod tests {
             &Failure::NotDone,
         );
         assert!(n.starts_with("Not done yet: exercise 3.2 slerp"));
+        let file = "src/exercises/cloth.rs";
+        assert_eq!(not_done_note(&[], file), "");
+        assert_eq!(
+            not_done_note(&["exercise 13.1 spring_force"], file),
+            failure_note("exercise 13.1 spring_force", file, &Failure::NotDone)
+        );
+        assert_eq!(
+            not_done_note(
+                &["exercise 13.1 a", "exercise 13.2 b", "exercise 13.3 c"],
+                file
+            ),
+            "Not done yet: exercises 13.1 a, 13.2 b and 13.3 c (src/exercises/cloth.rs). \
+             The figure uses the reference."
+        );
         let n = failure_note("exercise 3.2 slerp", "f", &Failure::Panicked("boom".into()));
         assert!(n.contains("panicked: boom") && n.contains("reference"));
         let rust = "panicked at src/exercises/rotations.rs:45:9:\nindex out of bounds";

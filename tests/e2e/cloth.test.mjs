@@ -1,6 +1,6 @@
 // Lesson 13 in Chromium: the drape's timing line stops when its cloth explodes (a frozen cloth
 // is not simulated, so its frames would time the drawing alone and the average would sink
-// towards zero while still naming the cloth).
+// towards zero while still naming the cloth), and its stretch plot follows the run.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, frames, serveDist, openPage, setControl } from './browser.mjs';
@@ -24,6 +24,10 @@ test('lesson 13: the drape stops timing an exploded cloth', async () => {
     await setControl(page, drape, 'method', 'XPBD');
     await page.locator(`${drape} .lil-controller`, { hasText: 'reset' }).locator('button').click();
     await page.waitForFunction(() => /Measured here: [\d.]+ ms per simulated frame \(40 × 40, XPBD/.test(document.querySelector('#drape-timing').textContent), null, { timeout: 60_000 });
+    // The plot under the notes follows the largest stretch of the XPBD run over time.
+    const range = (await page.locator('#drape-stretch').getAttribute('data-y-range')).split(' ').map(Number);
+    assert.ok(range.length === 2 && range.every(Number.isFinite) && range[1] - range[0] >= 1, `drape stretch axis ${range}`);
+    await page.locator(drape).screenshot({ path: 'tests/screenshots/13-cloth-drape-xpbd-40-webgl2.png' });
     // Pause the 40 x 40 drape: on a slow (debug or busy) machine its simulation takes most of
     // each frame, and the flag's screenshot below would wait for a stable element.
     await page.locator(`${drape} .timeline .play`).click();
