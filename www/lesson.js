@@ -397,7 +397,7 @@ function tick(nowMs) {
   }
   try {
     for (const cb of state.frameCallbacks) cb(dt);
-    for (const figure of state.figures) figure.placeLabels?.();
+    for (const figure of state.figures) if (figure.visible) figure.placeLabels?.();
   } catch (e) {
     // A panic in the figures' own instance (a bug, never student code: that runs in the sandbox)
     // leaves it unusable: stop drawing rather than flood the banner, and say what happened.
@@ -589,18 +589,24 @@ async function createFigure(selector) {
   };
   new ResizeObserver(resize).observe(canvas);
   resize();
-  // Off-screen figures keep their frames instead of rendering them (see Viewer::set_visible).
+  // Off-screen figures keep their frames instead of rendering them (see Viewer::set_visible),
+  // and their labels where they were: placing them reads the canvas's layout, which a note
+  // changed by another figure would make the browser compute again, once per figure a frame.
+  const figure = {
+    selector, backend: viewer.backend, viewer, canvas, requested: backend, resize, visible: true,
+    placeLabels: labelLayer(canvas, viewer, () => resized),
+  };
   new IntersectionObserver((entries) => {
     try {
-      for (const entry of entries) viewer.setVisible(entry.isIntersecting);
+      for (const entry of entries) {
+        figure.visible = entry.isIntersecting;
+        viewer.setVisible(entry.isIntersecting);
+      }
     } catch (e) {
       showError(e);
     }
   }, { rootMargin: '100px' }).observe(canvas);
-  state.figures.push({
-    selector, backend: viewer.backend, viewer, canvas, requested: backend, resize,
-    placeLabels: labelLayer(canvas, viewer, () => resized),
-  });
+  state.figures.push(figure);
   return viewer;
 }
 
