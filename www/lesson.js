@@ -397,7 +397,14 @@ function tick(nowMs) {
   }
   try {
     for (const cb of state.frameCallbacks) cb(dt);
-    for (const figure of state.figures) if (figure.visible) figure.placeLabels?.();
+    for (const figure of state.figures) {
+      // Off screen, the labels are placed again only after a resize (they must stay inside the
+      // new canvas when it scrolls back into view).
+      if (figure.visible || figure.labelsSized !== figure.sizeGeneration()) {
+        figure.labelsSized = figure.sizeGeneration();
+        figure.placeLabels?.();
+      }
+    }
   } catch (e) {
     // A panic in the figures' own instance (a bug, never student code: that runs in the sandbox)
     // leaves it unusable: stop drawing rather than flood the banner, and say what happened.
@@ -590,10 +597,12 @@ async function createFigure(selector) {
   new ResizeObserver(resize).observe(canvas);
   resize();
   // Off-screen figures keep their frames instead of rendering them (see Viewer::set_visible),
-  // and their labels where they were: placing them reads the canvas's layout, which a note
-  // changed by another figure would make the browser compute again, once per figure a frame.
+  // and their labels where they were until a resize: placing them reads the canvas's layout,
+  // which a note changed by another figure would make the browser compute again, once per
+  // figure a frame.
   const figure = {
     selector, backend: viewer.backend, viewer, canvas, requested: backend, resize, visible: true,
+    sizeGeneration: () => resized, labelsSized: -1,
     placeLabels: labelLayer(canvas, viewer, () => resized),
   };
   new IntersectionObserver((entries) => {
