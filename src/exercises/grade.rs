@@ -280,7 +280,7 @@ fn replayed<I: Args<N>, const N: usize>(
 /// vertex normal is reversed, and in the browser `polar_step` never returns (the page's time limit must stop it; natively it is left
 /// alone, since nothing could stop it there).
 #[cfg(any(feature = "student-bugs", debug_assertions))]
-fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O> {
+fn planted_mistakes<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O> {
     use std::any::Any;
     if !super::student_bugs_on() {
         return answer;
@@ -312,7 +312,7 @@ fn with_student_bugs<O: 'static>(exercise: &str, answer: Answer<O>) -> Answer<O>
 }
 
 #[cfg(not(any(feature = "student-bugs", debug_assertions)))]
-fn with_student_bugs<O>(_exercise: &str, answer: Answer<O>) -> Answer<O> {
+fn planted_mistakes<O>(_exercise: &str, answer: Answer<O>) -> Answer<O> {
     answer
 }
 
@@ -505,7 +505,7 @@ fn grade_cases<I: Args<N>, O: 'static, const N: usize>(
             if let Some(on_case) = ON_CASE.get() {
                 on_case(exercise, case);
             }
-            let answer = match run_caught(context, || with_student_bugs(exercise, student(input))) {
+            let answer = match run_caught(context, || planted_mistakes(exercise, student(input))) {
                 Ok(answer) => answer,
                 Err(Caught { message, location }) => {
                     return Status::Panicked {

@@ -744,8 +744,8 @@ impl Renderer {
             return Ok(());
         };
         let view = frame.texture.create_view(&Default::default());
-        // The target's size: the figure's own (see `Gpu::next_frame`), unless a caller draws a
-        // figure into the top-left corner of a larger target.
+        // The target has the figure's size on both backends (see `Gpu::next_frame`); `encode`
+        // takes both sizes and sets a viewport only where they differ.
         let target_size = (frame.texture.width(), frame.texture.height());
         let size = (gpu.config.width, gpu.config.height);
         let commands = self.encode(gpu, camera, &view, size, target_size);
