@@ -332,7 +332,20 @@ export async function startLesson() {
     if (state.running) requestAnimationFrame(tick);
   });
   requestAnimationFrame(tick);
-  return { figure: createFigure, onFrame: (cb) => state.frameCallbacks.push(cb) };
+  return { figure: createFigure, onFrame };
+}
+
+/**
+ * Calls `callback(dt)` every frame. Given the figure's viewer, only while that figure is on
+ * screen (or about to be), once it has drawn its first frame: a simulation out of sight would
+ * take the CPU from the figure the student looks at, so its timeline waits where it was.
+ */
+function onFrame(callback, viewer) {
+  const figure = viewer && state.figures.find((f) => f.viewer === viewer);
+  const box = figure?.canvas.closest('.figure');
+  state.frameCallbacks.push(figure ? (dt) => {
+    if (figure.visible || box.dataset.ready !== '1') callback(dt);
+  } : callback);
 }
 
 /**

@@ -77,7 +77,7 @@ if (emitterViewer) {
     }
     countPlot.setCursor(t);
     markDrawn('#fig-emitters');
-  });
+  }, emitterViewer);
 }
 
 // Figure 2: free fall, exact vs integrated.
@@ -111,7 +111,7 @@ if (fallViewer) {
     showNote(note, [rejected, scene.draw(fallViewer, t)].filter(Boolean).join(' '));
     plot.setCursor(t);
     markDrawn('#fig-freefall');
-  });
+  }, fallViewer);
 }
 
 // Figure 3: a spring stepped by the three integrators, and their energy.
@@ -143,7 +143,7 @@ if (springViewer) {
     showNote(note, [rejected, scene.draw(springViewer, t)].filter(Boolean).join(' '));
     plot.setCursor(t);
     markDrawn('#fig-spring');
-  });
+  }, springViewer);
 }
 
 // Figure 4: bouncing balls.
@@ -177,7 +177,7 @@ if (bounceViewer) {
     showNote(note, [rejected, scene.draw(bounceViewer, t)].filter(Boolean).join(' '));
     plot.setCursor(t);
     markDrawn('#fig-bounce');
-  });
+  }, bounceViewer);
 }
 
 // Figure 6: squash and stretch.
@@ -210,7 +210,7 @@ if (squashViewer) {
     showNote(note, [rejected, scene.draw(squashViewer, t)].filter(Boolean).join(' '));
     plot.setCursor(t);
     markDrawn('#fig-squash');
-  });
+  }, squashViewer);
 }
 
 // Figure 5: a column of smoke from the atlas, sorted and unsorted side by side.
@@ -235,5 +235,5 @@ if (spriteViewer) {
     const t = timeline.advance(dt);
     showNote(note, [rejected, scene.draw(spriteViewer, t)].filter(Boolean).join(' '));
     markDrawn('#fig-sprites');
-  });
+  }, spriteViewer);
 }

@@ -44,7 +44,7 @@ if (rulesViewer) {
   lesson.onFrame(() => {
     showNote(note, [rejected, scene.draw(rulesViewer)].filter(Boolean).join(' '));
     markDrawn('#fig-rules');
-  });
+  }, rulesViewer);
 }
 
 // Figure 2: the flock, its live step time, and step time against N.
@@ -203,8 +203,11 @@ if (flockViewer) {
           ? `Measured step time (${p.search} search, ${count} boids): ${average.toFixed(2)} ms per step, averaged over recent frames.${gpuNote}`
           : `Step time (${p.search} search, ${count} boids): play the flock to measure it.${gpuNote}`);
     }
-    sweepStep();
     markDrawn('#fig-flock');
+  }, flockViewer);
+  // The step-time sweep (Figure 3) goes on while the flock is out of sight.
+  lesson.onFrame(() => {
+    sweepStep();
     markDrawn('#fig-timing');
   });
 } else {

@@ -56,7 +56,7 @@ if (springViewer) {
     showNote(note, [rejected, scene.draw(springViewer, t)].filter(Boolean).join(' '));
     plot.setCursor(t);
     markDrawn('#fig-spring');
-  });
+  }, springViewer);
 }
 
 // Figure 2: two flags, mass-spring and XPBD, with energy and stretch plots.
@@ -186,7 +186,7 @@ if (flagViewer) {
     energy.setCursor(t);
     stretch.setCursor(t);
     markDrawn('#fig-flag');
-  });
+  }, flagViewer);
 }
 
 // Figure 3: a cloth falling on a sphere and a box, one method at a time, timed.
@@ -270,5 +270,5 @@ if (drapeViewer) {
       showNote(timing, `Measured here: ${average.toFixed(2)} ms per simulated frame (${p.resolution} × ${p.resolution}, ${p.method}, 10 substeps, simulation and upload, this build of the wasm).`);
     }
     markDrawn('#fig-drape');
-  });
+  }, drapeViewer);
 }

@@ -57,7 +57,7 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
     if (live && frame++ % 6 === 0) replot();
     for (const { plot } of shown) plot.setCursor(t);
     markDrawn(selector);
-  });
+  }, viewer);
   return { viewer, state, timeline, replot, run };
 }
 

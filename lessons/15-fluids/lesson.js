@@ -90,7 +90,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     lesson.onFrame(() => {
       showNote(note, sentences(rejected, scene.draw(viewer)));
       markDrawn('#fig-density');
-    });
+    }, viewer);
   }
 }
 
@@ -152,7 +152,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       compression.setCursor(at);
       energy.setCursor(at);
       markDrawn('#fig-dam');
-    });
+    }, viewer);
   }
 }
 
@@ -253,8 +253,11 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       if (hasCompute && p.on !== 'CPU') scene.advanceOnGpu(viewer, t);
       else scene.advanceTo(t);
       showNote(note, sentences(rejected, scene.draw(viewer), gpuNote));
-      sweepStep();
       markDrawn('#fig-splash');
+    }, viewer);
+    // The step-time sweep (Figure 5) goes on while the splash is out of sight.
+    lesson.onFrame(() => {
+      sweepStep();
       markDrawn('#fig-timing');
     });
   } else {

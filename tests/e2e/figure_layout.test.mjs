@@ -6,7 +6,7 @@
 // own helpers spanTimeline and sentences (www/lesson.js) are checked on the first page.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, serveDist, openPage } from './browser.mjs';
+import { launch, serveDist, openPage, frames } from './browser.mjs';
 
 const site = serveDist();
 
@@ -161,6 +161,30 @@ test('a plot draws a straight line straight, not as a staircase of whole pixels'
     const slope = columns.reduce((s, [x, y]) => s + (x - mx) * (y - my), 0) / columns.reduce((s, [x]) => s + (x - mx) ** 2, 0);
     const worst = Math.max(...columns.map(([x, y]) => Math.abs(y - (my + slope * (x - mx)))));
     assert.ok(worst < 0.4, `the line's centre leaves the straight line by ${worst.toFixed(2)} px`);
+  } finally {
+    await context.close();
+  }
+});
+
+test('a simulation out of sight stands still and plays again in view (lesson 13\'s flag)', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page } = await openPage(context, `${site.origin}/lessons/13-cloth/?backend=webgl2`, { width: 800, height: 600 });
+    const clock = () => page.evaluate(() => document.querySelector('#flag-timeline .clock').textContent);
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await frames(page, 6);
+    const inView = () => page.evaluate(() => {
+      const r = document.querySelector('#fig-flag .stage canvas').getBoundingClientRect();
+      return r.bottom > -100 && r.top < innerHeight + 100;
+    });
+    assert.equal(await inView(), false, 'the flag is out of sight at the top of the page');
+    const before = await clock();
+    await frames(page, 30);
+    assert.equal(await clock(), before, 'the flag\'s timeline stood still out of sight');
+    await page.locator('#fig-flag .stage canvas').scrollIntoViewIfNeeded();
+    await frames(page, 30);
+    assert.notEqual(await clock(), before, 'the flag\'s timeline plays in view');
+    await page.close();
   } finally {
     await context.close();
   }
