@@ -811,7 +811,20 @@ async function lessonPage(context, backend, lesson) {
     if (process.env.THUMBNAILS && i === (lesson.thumbnailFigure ?? 0)) {
       // Without the backend badge: the thumbnail shows the figure, not the test's backend.
       await page.evaluate(() => document.body.classList.add('thumbnail'));
-      writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail ?? 'thumbnail.png'}`, await canvas.screenshot());
+      // A second of play first (a fountain 0.2 s after the page loads is a few specks), then the
+      // gallery card's shape (16 : 10, www/style.css's `.card img`) at most, cut from the
+      // canvas's middle: a wider canvas would leave bands above and below it in the card.
+      const play = figure.locator('.timeline .play').first();
+      if (await play.count()) {
+        await clickAt(page, play);
+        await frames(page, 60);
+        await clickAt(page, play);
+        await frames(page, 3);
+      }
+      const box = await canvas.boundingBox();
+      const width = Math.min(box.width, (box.height * 16) / 10);
+      const clip = { x: box.x + (box.width - width) / 2, y: box.y, width, height: box.height };
+      writeFileSync(`lessons/${lesson.folder}/${lesson.thumbnail ?? 'thumbnail.png'}`, await page.screenshot({ clip }));
       await page.evaluate(() => document.body.classList.remove('thumbnail'));
     }
     assert.equal(await figure.locator('.backend-badge').textContent(), label);
