@@ -255,6 +255,11 @@ mod compute {
             boid_rows(&p, 10, Search::Naive, 0.0, 0.01).unwrap().len(),
             12 + 8
         );
+        // A boid's dot radius (the first of the three looks rows, after nine of parameters): big
+        // enough to see in a figure-sized flock, smaller in a flock of thousands.
+        let dot = |n| f32::from_bits(boid_rows(&p, n, Search::Grid, 0.0, 0.01).unwrap()[9][3]);
+        assert!(dot(300) >= 0.05, "{}", dot(300));
+        assert!(dot(100_000) < 0.04, "{}", dot(100_000));
     }
 
     /// The GPU grid's cells (`GridLayout::cell_of`, the formula of `grid_common.wgsl`) are the

@@ -574,9 +574,13 @@ pub fn boid_rows(
         [n as u32, params.obstacles.len() as u32, 0, 0],
         frow(params.avoid_weight, params.min_speed, 0.0, 0.0),
     ];
-    // Looks as the CPU figure draws them (src/figures/boids.rs).
+    // Colours as the CPU figure draws them (src/figures/boids.rs). A boid is a dot of a size in
+    // metres: 6 cm keeps a figure-sized flock (a few hundred) visible from the page's camera,
+    // where the CPU flock's tailed markers are about 8 px; a flock of thousands keeps 3.5 cm, or
+    // its dots would merge into one blue mass.
+    let boid_r = if n <= 5_000 { 0.06 } else { 0.035 };
     for (c, r) in [
-        (palette::BLUE, 0.035),
+        (palette::BLUE, boid_r),
         (palette::GREEN, 0.09),
         (palette::RED, 0.11),
     ] {
