@@ -1157,8 +1157,8 @@ impl SplashFigure {
         Ok(())
     }
 
-    /// The GPU fluid starts over: its clock at 0, no readback, no verdict.
-    fn restart_gpu_clock(&mut self) {
+    /// The GPU fluid starts over from the same start: its clock at 0, no readback, no verdict.
+    pub fn restart_gpu_clock(&mut self) {
         self.gpu_time = 0.0;
         self.gpu_fastest = None;
         self.gpu_exploded = None;

@@ -260,10 +260,9 @@ impl SplashScene {
             self.gpu = None;
         }
         if self.gpu.is_none() {
-            // A new GPU fluid starts from the start: its clock too.
-            self.scene
-                .set_gpu(self.scene.gpu_start().map_or(0, |f| f.len()) as f32)
-                .ok();
+            // A new GPU fluid starts from the start: its clock too. (Asking `set_gpu` for the
+            // start's length would build a new lattice for that smaller count.)
+            self.scene.restart_gpu_clock();
         }
         // The fastest particle of the steps before, when its readback has come: past the
         // CPU's limit the fluid has exploded and the figure queues no more steps.

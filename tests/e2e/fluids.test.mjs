@@ -78,12 +78,15 @@ test('lesson 15 on WebGPU: step on GPU draws the splash from the GPU, with the s
     await setControl(page, fig, 'particles', 1500);
     await scrubTo(page, 0);
     const cpu = await bluePixels(page, fig);
+    const cpuCount = /(\d+) particles/.exec(await page.locator('#splash-note').textContent())?.[1];
     await setControl(page, fig, 'step on', 'GPU');
     await scrubTo(page, 0);
     await page.waitForTimeout(1000);
     await frames(page, 4);
     const note = await page.locator('#splash-note').textContent();
     assert.match(note, /^PBF on the GPU, \d+ particles, neighbours from the GPU grid/, note);
+    // The slider's count: the same lattice as the CPU's fluid.
+    assert.equal(/(\d+) particles/.exec(note)?.[1], cpuCount, note);
     // The same fluid at rest drawn from the GPU's sprites: about as many blue pixels.
     const gpu = await bluePixels(page, fig);
     await page.locator(`${fig} .stage canvas`).first().screenshot({ path: 'tests/screenshots/15-fluids-splash-gpu-webgpu.png' });
