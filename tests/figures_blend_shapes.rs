@@ -157,7 +157,7 @@ fn both_forms_stand_side_by_side_and_agree_when_the_base_weight_is_one_minus_the
             "{full} vs {d}"
         );
     }
-    // One head alone stands in the middle, without labels.
+    // One head alone stands in the middle, with its name; the full head's gives its total.
     f.set_show("full").unwrap();
     let mut frame = Frame::default();
     f.draw(&mut frame, IDS, 0.0).unwrap();
@@ -165,7 +165,13 @@ fn both_forms_stand_side_by_side_and_agree_when_the_base_weight_is_one_minus_the
     assert_eq!(h.len(), 1);
     assert_eq!(h[0].0, IDS[1]);
     assert!(h[0].1.x.abs() < 1e-6);
-    assert!(frame.labels.is_empty());
+    let names: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    assert_eq!(names, ["full (total 2.600)"]);
+    f.set_show("differential").unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS, 0.0).unwrap();
+    let names: Vec<&str> = frame.labels.iter().map(|l| l.text.as_str()).collect();
+    assert_eq!(names, ["differential"]);
 }
 
 #[test]
@@ -1098,4 +1104,27 @@ fn the_face_figures_arrows_are_twice_the_offset_and_read_at_the_try_this() {
         }
     }
     assert!(brows >= 4, "{brows} brow arrows");
+}
+
+/// Past FRAMED_SCALE the camera backs away to fit the full head, and the differential head
+/// shrinks on screen: the note says why. At the defaults (a total up to 1.67) it stays silent.
+#[test]
+fn the_note_says_when_the_view_zooms_out_for_a_large_total() {
+    let mut f = FaceFigure::new();
+    let note = f.draw(&mut Frame::default(), IDS, 1.3).unwrap();
+    assert!(f.framed_scale() == FRAMED_SCALE && !note.contains("zoomed out"), "{note}");
+    f.set_animate(false);
+    for k in 0..4 {
+        f.set_weight(k, 1.5).unwrap();
+    }
+    f.set_base_weight(1.0).unwrap();
+    let note = f.draw(&mut Frame::default(), IDS, 1.3).unwrap();
+    assert!(
+        note.contains("zoomed out to fit the full head at its largest (7.000 times the base)"),
+        "{note}"
+    );
+    // The full head alone: nothing else shrinks.
+    f.set_show("full").unwrap();
+    let note = f.draw(&mut Frame::default(), IDS, 1.3).unwrap();
+    assert!(!note.contains("zoomed out"), "{note}");
 }

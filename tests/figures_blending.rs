@@ -1304,3 +1304,84 @@ fn the_compared_footprint_trails_read_at_the_default_view() {
         assert!(longest >= 25.0, "speed {speed}: the longest red trail is {longest} px");
     }
 }
+
+/// The weight colours of Figure 1 read apart at 0, 0.5 and 1: in OKLab (Björn Ottosson's
+/// perceptual colour space, where distance follows how different two colours look), 0.5 lies
+/// nearer grey than teal, since a little colour already reads as teal, and each step is at
+/// least a third of the way from grey to teal.
+#[test]
+fn the_weight_colours_at_one_half_and_one_read_apart() {
+    fn oklab(c: Vec3) -> Vec3 {
+        let lms = glam::Mat3::from_cols(
+            Vec3::new(0.4122214708, 0.2119034982, 0.0883024619),
+            Vec3::new(0.5363325363, 0.6806995451, 0.2817188376),
+            Vec3::new(0.0514459929, 0.1073969566, 0.6299787005),
+        ) * c;
+        glam::Mat3::from_cols(
+            Vec3::new(0.2104542553, 1.9779984951, 0.0259040371),
+            Vec3::new(0.7936177850, -2.4285922050, 0.7827717662),
+            Vec3::new(-0.0040720468, 0.4505937099, -0.8086757660),
+        ) * lms.map(f32::cbrt)
+    }
+    let at = |w: f32| oklab(BlendFigure::weight_color(w));
+    let whole = at(0.0).distance(at(1.0));
+    let (from_grey, from_teal) = (at(0.0).distance(at(0.5)), at(0.5).distance(at(1.0)));
+    assert!(
+        from_grey < from_teal && from_grey > whole / 3.0,
+        "0.5 is {from_grey} from grey, {from_teal} from teal (grey to teal {whole})"
+    );
+}
+
+/// Figure 4's Try this: with root motion left in the pose, the body (the mean of its boxes, on
+/// the ground plane) moves forwards through each cycle and jumps back by one cycle's travel,
+/// the note's jump, as the next cycle begins; between the jumps it moves a frame's walk.
+#[test]
+fn without_root_motion_the_body_jumps_back_a_cycles_travel_as_each_cycle_begins() {
+    use inbetween::draw::MeshId;
+    // As the page's Figure 4: one character, synchronised.
+    let mut l = LocomotionFigure::new();
+    l.set_compare(false);
+    l.set_root_motion(false);
+    let body = |l: &mut LocomotionFigure, t: f32| {
+        let mut frame = Frame::default();
+        let note = l.draw(&mut frame, t).unwrap();
+        let boxes: Vec<Vec3> = frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == MeshId::CUBE)
+            .map(|m| m.model.w_axis.truncate())
+            .collect();
+        let mean = boxes.iter().sum::<Vec3>() / boxes.len() as f32;
+        (mean * Vec3::new(1.0, 0.0, 1.0), note)
+    };
+    let (mut before, note) = body(&mut l, 2.0);
+    let snap = l.snap_back_m()[0];
+    assert!(note.contains(&format!("snaps back {:.0} cm", snap * 100.0)), "{note}");
+    let cycle: f32 = note
+        .split("one cycle takes ")
+        .nth(1)
+        .and_then(|s| s.split(' ').next())
+        .and_then(|s| s.parse().ok())
+        .expect("the cycle's length in the note");
+    let (mut jumps, mut walked) = (Vec::new(), 0.0f32);
+    for k in 1..=240 {
+        let (now, _) = body(&mut l, 2.0 + k as f32 / 60.0);
+        let step = now - before;
+        if step.length() > 0.5 * snap {
+            jumps.push(step.length());
+        } else {
+            walked = walked.max(step.length());
+        }
+        before = now;
+    }
+    let loops = (4.0 / cycle).floor() as usize;
+    assert!(
+        (loops..=loops + 1).contains(&jumps.len()),
+        "{} jumps in 4 s of {cycle} s cycles",
+        jumps.len()
+    );
+    for jump in jumps {
+        assert!((jump - snap).abs() < 0.15 * snap, "a jump of {jump} m, the note's {snap} m");
+    }
+    assert!(walked < 0.1 * snap, "{walked} m in one frame");
+}

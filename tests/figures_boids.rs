@@ -1461,3 +1461,38 @@ fn the_flock_starts_with_polarisation_a_few_hundredths() {
     assert_eq!(f.flock().positions.len(), 300);
     assert!((0.005..0.05).contains(&phi), "φ at the start: {phi}");
 }
+
+/// Each steering arrow's shaft leaves the wide heading arrow (the boid's velocity, 0.5 m long):
+/// a rule that points along the heading and ends inside it is hidden by it. At the defaults the
+/// cohesion points ahead, and at the Try this's 90° field of view all three come from ahead.
+#[test]
+fn the_rules_figures_steering_arrows_reach_past_the_heading() {
+    use inbetween::draw::palette;
+    for fov in [270.0, 90.0] {
+        let mut scene = RulesFigure::new();
+        scene.set_fov_deg(fov).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame);
+        let heading = frame
+            .strokes
+            .iter()
+            .find(|s| s.width_px == HEADING_PX && s.color[..3] == palette::ORANGE.to_array())
+            .expect("the heading");
+        let (a, b) = (Vec3::from(heading.a), Vec3::from(heading.b));
+        for (color, name) in [
+            (palette::GREEN, "cohesion"),
+            (palette::PINK, "alignment"),
+            (palette::RED, "separation"),
+        ] {
+            let shaft = frame
+                .strokes
+                .iter()
+                .find(|s| s.color[..3] == color.to_array())
+                .expect(name);
+            let end = Vec3::from(shaft.b) * Vec3::new(1.0, 0.0, 1.0);
+            let t = ((end - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+            let off = (end - a.lerp(b, t)).length();
+            assert!(off > 0.1, "fov {fov}: {name}'s shaft ends {off} m from the heading");
+        }
+    }
+}

@@ -362,6 +362,14 @@ impl FaceFigure {
                 full_verdict(total)
             ));
         }
+        let largest = self.framed_scale();
+        if both && largest > FRAMED_SCALE {
+            parts.push(format!(
+                "The view is zoomed out to fit the full head at its largest ({} times the base), \
+                 so the differential head is drawn smaller.",
+                fixed3(largest)
+            ));
+        }
         parts.push(format!(
             "Weights: {}.",
             self.face
@@ -416,21 +424,19 @@ impl FaceFigure {
                     frame.arrow_on_top(from, to, palette::BLUE, ARROW_HEAD_M);
                 }
             }
-            if both {
-                let above = 1.3 * scale.abs().max(1.0);
-                if differential {
-                    // The differential head, on the left: its label reads leftwards from above
-                    // the head's centre, away from the full head, which may be many times larger.
-                    frame.label_left(at + Vec3::new(0.3, above, 0.0), name, palette::DARK);
-                } else {
-                    frame.label(at + Vec3::new(-0.3, above, 0.0), name, palette::DARK);
-                }
+            // Each shown head is named, alone too (the full head's name gives its total).
+            let above = 1.3 * scale.abs().max(1.0);
+            if differential {
+                // The differential head, on the left: its label reads leftwards from above the
+                // head's centre, away from the full head, which may be many times larger.
+                frame.label_left(at + Vec3::new(0.3, above, 0.0), name, palette::DARK);
+            } else {
+                frame.label(at + Vec3::new(-0.3, above, 0.0), name, palette::DARK);
             }
         }
         // The camera fits each shown head at its largest over the loop (at least FRAMED_SCALE),
         // with its title's anchor (1.3 k above its centre): it holds still while the heads
         // breathe and moves only when a control takes the full head past FRAMED_SCALE.
-        let largest = self.framed_scale();
         for (at, k) in [(left, 1.0), (right, largest)] {
             if let Some(at) = at {
                 let (r, top) = (HEAD_RADIUS * k, 1.3 * k);

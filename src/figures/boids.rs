@@ -1328,7 +1328,11 @@ pub struct RulesFigure {
 /// Radius of the red ring round a neighbour a grid search would miss, metres.
 pub const MISSED_RING_M: f32 = 0.16;
 
-/// The longest arrow the rules figure draws, metres (1 m per unit of a steering vector).
+/// Metres of arrow per unit of a steering vector in the rules figure: at the defaults the
+/// cohesion (0.36) points along the heading, and drawn 1 m per unit it ends inside the heading's
+/// 0.5 m arrow.
+const ARROW_M_PER_UNIT: f32 = 2.0;
+/// The longest arrow the rules figure draws, metres.
 const ARROW_MAX_M: f32 = 2.0;
 /// Width of the rules figure's heading arrow, CSS pixels: wider than a steering arrow
 /// ([`crate::draw::ARROW_PX`]), which is drawn over it.
@@ -1654,7 +1658,8 @@ impl RulesFigure {
         ];
         // Shorter arrows over longer ones, each a centimetre higher above the plane (the camera
         // looks down): a short rule that points along a long one still shows.
-        let drawn = |i: usize| arrows[i].0.clamp_length_max(ARROW_MAX_M).length();
+        let shown = |v: Vec3| (ARROW_M_PER_UNIT * v).clamp_length_max(ARROW_MAX_M);
+        let drawn = |i: usize| shown(arrows[i].0).length();
         let by_length = crate::order::order_by((0..3).map(drawn), true);
         let mut lift = [0.0f32; 3];
         for (rank, &i) in by_length.iter().enumerate() {
@@ -1663,7 +1668,7 @@ impl RulesFigure {
         let mut tips = Vec::with_capacity(3);
         for (&(v, color, name), up) in arrows.iter().zip(lift) {
             let up = Vec3::Y * up;
-            let tip = self.boid + v.clamp_length_max(ARROW_MAX_M) + up;
+            let tip = self.boid + shown(v) + up;
             frame.arrow(self.boid + up, tip, color, 0.12);
             if v.length() > 1e-4 {
                 tips.push((tip, v, name, color));
@@ -1715,16 +1720,16 @@ impl RulesFigure {
                 missed.len()
             ));
         }
-        // The arrows are drawn 1 m per unit up to ARROW_MAX_M: say which ones are longer, so
-        // that a 6 m separation drawn at 2 m does not read as three times the cohesion.
+        // The arrows are cut at ARROW_MAX_M: say which ones are longer, so that a cut arrow is
+        // not read at its drawn length.
         let long: Vec<String> = arrows
             .iter()
-            .filter(|(v, _, _)| v.length() > ARROW_MAX_M)
+            .filter(|(v, _, _)| ARROW_M_PER_UNIT * v.length() > ARROW_MAX_M)
             .map(|(v, _, name)| format!("{name} {}", format_number(v.length())))
             .collect();
         if !long.is_empty() {
             note.push_str(&format!(
-                " Arrows are 1 m per unit, cut at {ARROW_MAX_M} m: {} long.",
+                " Arrows are {ARROW_M_PER_UNIT} m per unit, cut at {ARROW_MAX_M} m: {} long.",
                 long.join(", ")
             ));
         }

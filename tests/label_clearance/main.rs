@@ -36,6 +36,7 @@ mod lesson_05;
 mod lesson_06;
 mod lesson_07;
 mod lesson_09;
+mod lesson_10;
 mod lesson_11;
 mod lesson_12;
 mod lesson_13;
