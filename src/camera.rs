@@ -127,14 +127,22 @@ impl OrbitCamera {
     /// distance becomes the smallest that fits them all. Returns false, changing nothing, when
     /// there are no finite points or the canvas is too small for the padding.
     pub fn fit(&mut self, points: &[Vec3], size_px: Vec2, pad_px: f32) -> bool {
-        self.fit_offset(points, size_px, pad_px, 0.0)
+        self.fit_offset(points, size_px, size_px.y, pad_px, Vec2::ZERO, 2)
     }
 
-    /// [`OrbitCamera::fit`] into a part of the canvas `size_px` wide and as tall as the canvas
-    /// whose centre is `x_off` right of the canvas's (in units of the view's tangent at unit depth,
-    /// `x_off = Δpx / (height / 2) · tan(fov/2)`): a point at `a` along the view's right and
-    /// `depth` in front fits when `|a / depth − x_off| ≤ tan_x`.
-    fn fit_offset(&mut self, points: &[Vec3], size_px: Vec2, pad_px: f32, x_off: f32) -> bool {
+    /// [`OrbitCamera::fit`] into a part of a canvas `canvas_h` pixels tall, `size_px` in size,
+    /// whose centre is `off` right of and above the canvas's (in units of the view's tangent at
+    /// unit depth, `off = Δpx / (canvas_h / 2) · tan(fov/2)`): a point at `a` along the view's right and
+    /// `depth` in front fits when `|a / depth − off.x| ≤ tan_x`, and likewise up the view.
+    fn fit_offset(
+        &mut self,
+        points: &[Vec3],
+        size_px: Vec2,
+        canvas_h: f32,
+        pad_px: f32,
+        off: Vec2,
+        rounds: usize,
+    ) -> bool {
         let points: Vec<Vec3> = points.iter().copied().filter(|p| p.is_finite()).collect();
         if points.is_empty() || !size_px.is_finite() || !pad_px.is_finite() {
             return false;
@@ -149,9 +157,10 @@ impl OrbitCamera {
         let back = Vec3::new(cp * sy, sp, cp * cy);
         let right = Vec3::Y.cross(back).normalize();
         let up = back.cross(right);
-        let tan_y = (0.5 * self.fov_y_rad).tan() * usable.y;
-        let tan_x = (0.5 * self.fov_y_rad).tan() * size_px.x / size_px.y * usable.x;
-        if !(tan_x > x_off.abs()) {
+        let tan_px = (0.5 * self.fov_y_rad).tan() / canvas_h;
+        let tan_y = tan_px * size_px.y * usable.y;
+        let tan_x = tan_px * size_px.x * usable.x;
+        if !(tan_x > off.x.abs() && tan_y > off.y.abs()) {
             return false;
         }
         let (lo, hi) = points.iter().fold(
@@ -161,22 +170,23 @@ impl OrbitCamera {
         let mut target = 0.5 * (lo + hi);
         // The smallest distance from `target` that shows every point: a point at (x, y) in the
         // view plane and `z` towards the eye is seen at depth distance − z, and fits when
-        // |x − x_off · depth| ≤ tan_x · depth and |y| ≤ tan_y · depth, that is depth ≥
-        // x / (tan_x + x_off) and depth ≥ −x / (tan_x − x_off). The depth also stays past the
-        // near plane.
+        // |x − off.x · depth| ≤ tan_x · depth, that is depth ≥ x / (tan_x + off.x) and depth ≥
+        // −x / (tan_x − off.x), and likewise for y. The depth also stays past the near plane.
         let needed = |target: Vec3| {
             points.iter().fold(MIN_DISTANCE.max(self.near), |d, p| {
                 let v = *p - target;
                 let z = v.dot(back);
                 let x = v.dot(right);
-                let fit = (x / (tan_x + x_off))
-                    .max(-x / (tan_x - x_off))
-                    .max(v.dot(up).abs() / tan_y);
+                let y = v.dot(up);
+                let fit = (x / (tan_x + off.x))
+                    .max(-x / (tan_x - off.x))
+                    .max(y / (tan_y + off.y))
+                    .max(-y / (tan_y - off.y));
                 d.max(fit + z).max(2.0 * self.near + z)
             })
         };
-        // Twice: centre the points' image on the canvas (in the view plane), then fit again.
-        for _ in 0..2 {
+        // `rounds` times: centre the points' image on the part (in the view plane), then fit again.
+        for _ in 0..rounds {
             let distance = needed(target);
             let eye = target + back * distance;
             let (mut x_lo, mut x_hi, mut y_lo, mut y_hi) = (f32::MAX, f32::MIN, f32::MAX, f32::MIN);
@@ -188,7 +198,7 @@ impl OrbitCamera {
             }
             // Shift by the middle of the image (less where it should be), scaled back to the
             // target's depth.
-            let shift = right * (0.5 * (x_lo + x_hi) - x_off) + up * 0.5 * (y_lo + y_hi);
+            let shift = right * (0.5 * (x_lo + x_hi) - off.x) + up * (0.5 * (y_lo + y_hi) - off.y);
             target += shift * distance;
         }
         let distance = needed(target);
@@ -218,7 +228,30 @@ impl OrbitCamera {
         // The part's centre is half the strip left of the canvas's.
         let shift_px = -0.5 * (size_px.x - width_px);
         let x_off = shift_px / (0.5 * size_px.y) * (0.5 * self.fov_y_rad).tan();
-        self.fit_offset(points, Vec2::new(width_px, size_px.y), pad_px, x_off)
+        let part = Vec2::new(width_px, size_px.y);
+        self.fit_offset(points, part, size_px.y, pad_px, Vec2::new(x_off, 0.0), 2)
+    }
+
+    /// As [`OrbitCamera::fit`], into the canvas's top part, `height_px` of its `size_px.y` (for
+    /// a wide, low figure whose inset takes the bottom right), as wide as the canvas. False
+    /// (nothing changed) when the fit is impossible.
+    pub fn fit_above(
+        &mut self,
+        points: &[Vec3],
+        size_px: Vec2,
+        height_px: f32,
+        pad_px: f32,
+    ) -> bool {
+        if !(height_px > 0.0 && height_px <= size_px.y) {
+            return false;
+        }
+        // The part's centre is half the strip above the canvas's.
+        let shift_px = 0.5 * (size_px.y - height_px);
+        let y_off = shift_px / (0.5 * size_px.y) * (0.5 * self.fov_y_rad).tan();
+        let part = Vec2::new(size_px.x, height_px);
+        // A strip far off the canvas's centre and short against that offset takes more
+        // rounds of centring to settle than a centred fit's two.
+        self.fit_offset(points, part, size_px.y, pad_px, Vec2::new(0.0, y_off), 32)
     }
 }
 

@@ -1079,7 +1079,16 @@ impl Frame {
             title: title.into(),
             min,
             max,
+            fit_above: false,
         });
+    }
+
+    /// Has the camera fit what the frame declares above its inset, across the canvas's whole
+    /// width, instead of left of it (see [`inset::fit_beside`]). Call it after [`Frame::inset`].
+    pub fn fit_above_inset(&mut self) {
+        if let Some(inset) = &mut self.inset {
+            inset.fit_above = true;
+        }
     }
 
     /// Draws `uv` of `texture` on the square `[−1, 1]²` of the xz plane placed by `model`.

@@ -363,3 +363,108 @@ fn the_skinned_pair_keeps_both_bodies_or_both_left_legs_in_view() {
         }
     }
 }
+
+#[test]
+fn a_figure_fits_above_its_inset() {
+    use inbetween::draw::inset::inset_rect;
+    // A wide, low box, seen from several orbits, on the canvases of the two page sizes: every
+    // point lands above the inset's square (and inside the canvas), and the fit is tight
+    // against one of those edges.
+    let points = corners(Vec3::new(-2.5, 0.0, -0.3), Vec3::new(2.5, 1.5, 0.3));
+    for size in [Vec2::new(760.0, 420.0), Vec2::new(650.0, 420.0)] {
+        let top = inset_rect(size).min.y;
+        for (yaw, pitch) in [(0.0, 0.2), (0.5, 0.4), (-0.7, 0.1)] {
+            let mut camera = OrbitCamera {
+                yaw_rad: yaw,
+                pitch_rad: pitch,
+                ..OrbitCamera::default()
+            };
+            assert!(camera.fit_above(&points, size, top, FIT_PAD_PX));
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let mut slack = f32::MAX;
+            for p in &points {
+                let px = project_to_canvas(view_proj, size, *p).unwrap();
+                let margins = [px.x, px.y, size.x - px.x, top - px.y];
+                let least = margins.iter().copied().fold(f32::MAX, f32::min);
+                assert!(
+                    least >= FIT_PAD_PX - 0.5,
+                    "{p} at {px} on {size}, inset from y = {top}"
+                );
+                slack = slack.min(least - FIT_PAD_PX);
+            }
+            assert!(slack < 1.0, "{slack} px spare on {size}");
+        }
+        let mut camera = OrbitCamera::default();
+        assert!(!camera.fit_above(&points, size, 0.0, FIT_PAD_PX));
+        assert_eq!(camera, OrbitCamera::default());
+    }
+}
+
+/// Lesson 09 Figure 1 from the page's orbit, fitted as the page fits it on both canvases: at
+/// every bend and twist the sliders reach, every vertex of both tubes lands on the canvas clear
+/// of the padding and above the inset (the camera stays put while the sliders move); at the
+/// default bend (90°) each tube is at least 130 px tall.
+#[test]
+fn the_skinned_tubes_fill_the_width_above_the_inset() {
+    use inbetween::draw::inset::{fit_beside, inset_rect};
+    use inbetween::draw::{Frame, MeshId};
+    use inbetween::figures::skinning::{CylinderFigure, DQS_OFFSET, LBS_OFFSET};
+    for size in [Vec2::new(760.0, 420.0), Vec2::new(650.0, 420.0)] {
+        let mut f = CylinderFigure::new();
+        let mut frame = Frame::default();
+        f.draw(&mut frame, [MeshId(1), MeshId(2)]).unwrap();
+        // lessons/09-skinning/lesson.js: cylinderViewer.setCamera.
+        let mut camera = OrbitCamera::from_view([0.3, 0.7, 0.0, 5.0, 0.0, 0.2]);
+        let inset = frame.inset.as_ref().unwrap();
+        assert!(fit_beside(
+            &mut camera,
+            inset,
+            &frame.fit_points(),
+            size,
+            FIT_PAD_PX
+        ));
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let top = inset_rect(size).min.y;
+        let px = |f: &CylinderFigure| -> Vec<Vec<Vec2>> {
+            [(LBS_OFFSET, &f.lbs), (DQS_OFFSET, &f.dqs)]
+                .map(|(o, m)| {
+                    m.positions
+                        .iter()
+                        .map(|p| project_to_canvas(view_proj, size, o + *p).unwrap())
+                        .collect()
+                })
+                .to_vec()
+        };
+        for tube in px(&f) {
+            let (lo, hi) = tube
+                .iter()
+                .fold((Vec2::MAX, Vec2::MIN), |(a, b), p| (a.min(*p), b.max(*p)));
+            eprintln!(
+                "{size}: tube {lo} to {hi}, {} px tall, {} wide",
+                hi.y - lo.y,
+                hi.x - lo.x
+            );
+            assert!(
+                hi.y - lo.y >= 130.0,
+                "{size}: a tube {} px tall",
+                hi.y - lo.y
+            );
+        }
+        for bend in [0.0, 45.0, 90.0, 135.0, 180.0] {
+            for twist in [-180.0, -90.0, 0.0, 90.0, 180.0] {
+                f.set_bend_deg(bend).unwrap();
+                f.set_twist_deg(twist).unwrap();
+                f.draw(&mut Frame::default(), [MeshId(1), MeshId(2)])
+                    .unwrap();
+                for p in px(&f).concat() {
+                    let margins = [p.x, p.y, size.x - p.x, top - p.y];
+                    let least = margins.iter().copied().fold(f32::MAX, f32::min);
+                    assert!(
+                        least >= FIT_PAD_PX - 4.0,
+                        "bend {bend}, twist {twist}: {p} on {size}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -163,6 +163,72 @@ fn past_the_limit_the_mass_spring_flag_explodes_safely_and_xpbd_does_not() {
     assert!(!note.contains("scales"), "{note}");
 }
 
+/// What a page plots: the samples and the flag plots' ranges, as bits (NaN equals NaN).
+fn plotted(f: &ClothFigure) -> Vec<u32> {
+    let ranges = f.plot_ranges();
+    f.samples()
+        .iter()
+        .chain(&ranges)
+        .map(|x| x.to_bits())
+        .collect()
+}
+
+#[test]
+fn the_sample_generation_changes_exactly_when_the_plots_would() {
+    let mut f = ClothFigure::new(Preset::Flag);
+    let mut seen = (f.sample_generation(), plotted(&f));
+    // Each step: what it does, and whether the plots change.
+    let steps: [(&str, fn(&mut ClothFigure), bool); 7] = [
+        ("play on", |f| drop(draw(f, 1.0)), true),
+        ("paused", |f| drop(draw(f, 1.0)), false),
+        // Replayed to the same time: as many samples as before, other values.
+        (
+            "more wind",
+            |f| {
+                f.set_wind(12.0).unwrap();
+                draw(f, 1.0);
+            },
+            true,
+        ),
+        ("scrub back", |f| drop(draw(f, 0.5)), true),
+        (
+            "reset",
+            |f| {
+                f.reset();
+                draw(f, 0.0);
+            },
+            true,
+        ),
+        // The mass-spring flag explodes; the XPBD flag goes on.
+        (
+            "past the limit",
+            |f| {
+                f.set_stiffness("structural", 2000.0).unwrap();
+                f.set_substeps(4.0).unwrap();
+                draw(f, 3.0);
+            },
+            true,
+        ),
+        ("paused after it", |f| drop(draw(f, 3.0)), false),
+    ];
+    for (what, step, changes) in steps {
+        let rows = f.samples().len();
+        step(&mut f);
+        let now = (f.sample_generation(), plotted(&f));
+        assert_eq!(now.1 != seen.1, changes, "{what}: the plotted values");
+        assert_eq!(now.0 != seen.0, changes, "{what}: the generation");
+        if what == "more wind" {
+            assert_eq!(
+                f.samples().len(),
+                rows,
+                "a count alone would miss this change"
+            );
+        }
+        seen = now;
+    }
+    assert!(f.exploded(0).is_some() && f.exploded(1).is_none());
+}
+
 /// At 0 s the flag's stretch plot holds one sample per cloth, 0 %: its axis runs from there up
 /// by 1 %, not round it (down to a stretch of -0.5 %). Once the flags stretch by more, the range
 /// is the samples' own.

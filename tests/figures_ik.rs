@@ -763,6 +763,30 @@ fn the_aim_cone_is_drawn_in_wide_lines() {
     assert!(rays.iter().all(|s| s.width_px == CONE_PX && CONE_PX >= 2.0));
 }
 
+/// At 180° every direction is allowed: no rim shrunk to a short bar behind the head (the rays
+/// from the head to a rim 1° from straight back) but the name alone, saying there is no limit;
+/// at 170° the cone's rim is still drawn, all of it behind the head.
+#[test]
+fn the_aim_cone_at_180_degrees_draws_no_rim() {
+    use inbetween::draw::palette;
+    let purple = palette::PURPLE.extend(1.0).to_array();
+    let mut a = AimFigure::new();
+    a.set_target(Vec3::new(0.0, 1.6, -1.2)).unwrap();
+    let mut purple_strokes = |deg: f32| {
+        a.set_max_angle_deg(deg).unwrap();
+        let mut frame = Frame::default();
+        a.draw(&mut frame, 0.0).unwrap();
+        let name = frame.labels.iter().find(|l| l.color == palette::PURPLE);
+        let name = name.map(|l| l.text.clone()).unwrap_or_default();
+        let n = frame.strokes.iter().filter(|s| s.color == purple).count();
+        (n, name)
+    };
+    let (n, name) = purple_strokes(170.0);
+    assert!(n > 8 && name == "170° cone", "{n} strokes, {name:?}");
+    let (n, name) = purple_strokes(180.0);
+    assert_eq!((n, name.as_str()), (0, "180°: no limit"));
+}
+
 /// With hinges and a target off the chains' plane, a corner view from the side shows the gap
 /// across (the main view sees it nearly end on): the target and the foot of its drop lie in the
 /// inset's box. Without the gap there is no inset.

@@ -163,18 +163,17 @@ if (flagViewer) {
   });
   dragParticles('#fig-flag', scene, timeline);
   const note = document.getElementById('flag-note');
-  let shown = "";
+  let shown = -1;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     showNote(note, [rejected, scene.draw(flagViewer, t)].filter(Boolean).join(' '));
-    const samples = scene.samples();
-    // The ranges depend on which cloths held, so an explosion refreshes the plots too, even on a
-    // frame that adds no sample.
-    const key = `${samples.length} ${scene.explodedAt(0)} ${scene.explodedAt(1)}`;
+    // A new frame, an explosion (the ranges follow the cloths that held) or a replay changes
+    // the generation; only then are the samples copied out of the wasm.
+    const key = scene.sampleGeneration();
     if (key !== shown) {
       shown = key;
       // The x axis spans the whole timeline: after a change, the first sample at 0 s alone.
-      const [time, e0, e1, s0, s1] = spanTimeline(gaps(samples, 5), timeline.duration);
+      const [time, e0, e1, s0, s1] = spanTimeline(gaps(scene.samples(), 5), timeline.duration);
       // Scales that follow the cloths that held (Rust's choice): an explosion's last samples
       // would squash the other flag's curves onto a line.
       const r = scene.plotRanges();
@@ -239,17 +238,17 @@ if (drapeViewer) {
     title: 'Largest stretch of a structural spring', xLabel: 'time (s)', yLabel: 'stretch (%)',
     series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], widths: [2.5, 2.5], minSpan: 1,
   });
-  let plotted = '';
+  let plotted = -1;
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     const t0 = performance.now();
     const text = scene.draw(drapeViewer, t);
     const ms = performance.now() - t0;
-    const samples = scene.samples();
-    const key = `${samples.length} ${scene.explodedAt(0)} ${p.method}`;
+    // The method picks the series' colour; changing it replays the run, a new generation.
+    const key = scene.sampleGeneration();
     if (key !== plotted) {
       plotted = key;
-      const [time, , largest] = spanTimeline(gaps(samples, 3), timeline.duration);
+      const [time, , largest] = spanTimeline(gaps(scene.samples(), 3), timeline.duration);
       const none = largest.map(() => null);
       const r = scene.plotRanges();
       stretch.setYRange([r[2], r[3]]);

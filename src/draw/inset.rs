@@ -10,6 +10,7 @@
 //! it ([`inset_rect`]).
 
 use super::layout::Rect;
+use crate::camera::OrbitCamera;
 use glam::{Mat4, Vec2, Vec3};
 
 /// Which way the inset looks.
@@ -41,6 +42,27 @@ pub struct Inset {
     pub title: String,
     pub min: Vec3,
     pub max: Vec3,
+    /// The main view fits above the inset (the canvas's whole width) instead of left of it
+    /// ([`fit_beside`]): for a wide, low figure ([`super::Frame::fit_above_inset`]).
+    pub fit_above: bool,
+}
+
+/// Fits `camera` to `points` (see [`OrbitCamera::fit`]) beside `inset` on a canvas of `size`
+/// CSS pixels: above the inset's square or left of it, as the inset asks, so the inset hides
+/// nothing the figure declared. False (nothing changed) when that fit is impossible.
+pub fn fit_beside(
+    camera: &mut OrbitCamera,
+    inset: &Inset,
+    points: &[Vec3],
+    size: Vec2,
+    pad_px: f32,
+) -> bool {
+    let square = inset_rect(size);
+    if inset.fit_above {
+        camera.fit_above(points, size, square.min.y, pad_px)
+    } else {
+        camera.fit_left_of(points, size, square.min.x, pad_px)
+    }
 }
 
 /// The inset's side as a fraction of the canvas's shorter side.

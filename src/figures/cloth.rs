@@ -143,6 +143,8 @@ pub struct ClothFigure {
     /// Frames simulated by the last [`ClothFigure::advance_to`] that went on from where the
     /// previous one stopped; 0 when it replayed from the start (a scrub back, a new setting).
     last_step_frames: usize,
+    /// See [`ClothFigure::sample_generation`].
+    sample_generation: u32,
 }
 
 impl ClothFigure {
@@ -197,6 +199,7 @@ impl ClothFigure {
             obstacle_targets: (Vec3::ZERO, Vec3::ZERO),
             obstacles_moving: false,
             last_step_frames: 0,
+            sample_generation: 0,
         };
         f.obstacles_start = f.obstacles();
         f.obstacle_targets = f.obstacles_start;
@@ -305,6 +308,7 @@ impl ClothFigure {
             ]);
         }
         self.frames_done = 0;
+        self.sample_generation = self.sample_generation.wrapping_add(1);
         self.drag_cursor = 0;
         self.obstacle_cursor = 0;
         let (sphere, cuboid) = self.obstacles_start;
@@ -629,6 +633,8 @@ impl ClothFigure {
                 .map_err(|e| e.to_string())?;
             sim.torn = sim.cloth.exploded().is_some() && sim.cloth.grab.is_some();
             sim.pushed = sim.cloth.exploded().is_some() && self.obstacles_moving;
+            // A new sample, or an explosion (which changes the plots' ranges).
+            self.sample_generation = self.sample_generation.wrapping_add(1);
             if sim.cloth.exploded().is_none() {
                 sim.last_good.copy_from_slice(&sim.cloth.positions);
                 sim.samples.push([
@@ -657,6 +663,13 @@ impl ClothFigure {
             }
         }
         out
+    }
+
+    /// A number that changes whenever [`ClothFigure::samples`] or [`ClothFigure::plot_ranges`]
+    /// may have (a frame simulated, a replay from the start) and stays put otherwise: a page
+    /// redraws its plots only when it changes, without copying the samples every frame.
+    pub fn sample_generation(&self) -> u32 {
+        self.sample_generation
     }
 
     /// The y ranges of the flag's two plots, `[energy lo, energy hi, stretch lo, stretch hi]`

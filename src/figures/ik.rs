@@ -1533,17 +1533,22 @@ impl AimFigure {
                 .collect();
             frame.stroke(&arc, palette::RED, StrokeStyle::solid(GAP_PX));
         }
-        // The cone of allowed directions, around the rest forward (+z).
+        // The cone of allowed directions, around the rest forward (+z). At 180° it allows every
+        // direction and has no rim (its rim would shrink to a point behind the head, drawn as a
+        // short bar): only its name, above the head.
         const STEPS: usize = 24;
+        let whole = self.max_angle_rad >= std::f32::consts::PI;
         let rim = Quat::from_rotation_x(self.max_angle_rad.min(179.0 * DEG)) * Vec3::Z * 0.55;
         let circle: Vec<Vec3> = (0..=STEPS)
             .map(|k| {
                 HEAD + Quat::from_rotation_z(std::f32::consts::TAU * k as f32 / STEPS as f32) * rim
             })
             .collect();
-        frame.wide_polyline(&circle, palette::PURPLE, CONE_PX);
-        for k in (0..STEPS).step_by(3) {
-            frame.wide_line(HEAD, circle[k], palette::PURPLE, CONE_PX);
+        if !whole {
+            frame.wide_polyline(&circle, palette::PURPLE, CONE_PX);
+            for k in (0..STEPS).step_by(3) {
+                frame.wide_line(HEAD, circle[k], palette::PURPLE, CONE_PX);
+            }
         }
         // The cone's name above its rim, clear of the forward arrow's label.
         let top = circle
@@ -1551,8 +1556,12 @@ impl AimFigure {
             .copied()
             .fold(circle[0], |a, b| if b.y > a.y { b } else { a });
         frame.label_with_priority(
-            top + Vec3::new(0.0, 0.12, 0.0),
-            format!("{:.0}° cone", self.max_angle_rad / DEG),
+            if whole { HEAD + Vec3::Y * 0.55 } else { top } + Vec3::new(0.0, 0.12, 0.0),
+            if whole {
+                "180°: no limit".to_string()
+            } else {
+                format!("{:.0}° cone", self.max_angle_rad / DEG)
+            },
             palette::PURPLE,
             0,
         );

@@ -202,8 +202,8 @@ impl Default for CylinderFigure {
 
 /// What the cylinder figure keeps in view around each tube (before its offset): the box that
 /// holds the tube bent 0 to 180° (the forearm swings up through +y) and twisted either way,
-/// and the labels below it.
-pub const CYLINDER_VIEW: [Vec3; 2] = [Vec3::new(-0.15, -0.5, -0.4), Vec3::new(2.15, 1.4, 0.4)];
+/// with a few centimetres to spare, and the tube's name below it (at y = −0.45).
+pub const CYLINDER_VIEW: [Vec3; 2] = [Vec3::new(-0.05, -0.46, -0.42), Vec3::new(2.05, 1.06, 0.42)];
 
 /// The smallest weight the followed vertex's note shows as more than 0.000: below it a joint
 /// counts as having none (no dot, name or chord; the other joint has it all, to well under a
@@ -729,6 +729,9 @@ impl CylinderFigure {
             o + lo - pad,
             o + hi + pad,
         );
+        // The tubes lie low and wide (a straight one is 2 m long): above the inset's square
+        // they get the canvas's whole width.
+        frame.fit_above_inset();
         // Each name at the first place round its dot, away from the other dot first, clear of
         // the dots, lines and the other name (on the last frame's view), and nearer its own dot
         // than any other dot (but one drawn on it): where the dots crowd, a name beside the

@@ -101,6 +101,12 @@ impl ClothScene {
     pub fn samples(&self) -> Vec<f32> {
         self.scene.samples()
     }
+    /// Changes whenever `samples` or `plotRanges` may have: the page's cheap check before it
+    /// copies the samples.
+    #[wasm_bindgen(js_name = sampleGeneration)]
+    pub fn sample_generation(&self) -> u32 {
+        self.scene.sample_generation()
+    }
     /// `[energy lo, hi, stretch lo, hi]`: the flag plots' data ranges over the cloths that held
     /// (NaN before the first sample).
     #[wasm_bindgen(js_name = plotRanges)]

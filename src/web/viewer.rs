@@ -205,16 +205,11 @@ impl Viewer {
             let points: Vec<glam::Vec3> = frame.fit_points();
             let size = glam::Vec2::new(w, h);
             let pad = crate::camera::FIT_PAD_PX;
-            // With an inset, the figure fits beside it (left of its square), so the inset hides
-            // nothing the figure declared.
-            let beside = frame
-                .inset
-                .as_ref()
-                .map(|_| crate::draw::inset::inset_rect(size).min.x);
-            let fitted = match beside {
-                Some(left) => self.camera.fit_left_of(&points, size, left, pad),
-                None => false,
-            };
+            // With an inset, the figure fits beside it (left of or above its square), so the
+            // inset hides nothing the figure declared.
+            let fitted = frame.inset.as_ref().is_some_and(|inset| {
+                crate::draw::inset::fit_beside(&mut self.camera, inset, &points, size, pad)
+            });
             if !fitted {
                 self.camera.fit(&points, size, pad);
             }

@@ -81,3 +81,38 @@ test('lesson 13: the flag takes no structural stiffness below 50 N/m, and its Tr
     await context.close();
   }
 });
+
+test('lesson 13: the drape plot redraws on a new sample, on a change replayed to the same time, and after a reset', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/13-cloth/?backend=webgl2`, { width: 1600, height: 1000 });
+    const drape = '#fig-drape';
+    await page.locator(drape).scrollIntoViewIfNeeded();
+    const range = () => page.locator('#drape-stretch').getAttribute('data-y-range');
+    // Played for a while, then paused: the plot stands still.
+    await frames(page, 40);
+    await page.locator(`${drape} .timeline .play`).click();
+    await frames(page, 5);
+    const paused = await range();
+    await frames(page, 10);
+    assert.equal(await range(), paused, 'paused, the plot stays');
+    // A new setting replays the run to the same time: as many samples, other values (a hung
+    // cloth stretches more than a falling one).
+    await setControl(page, drape, 'pins', 'whole edge');
+    await frames(page, 10);
+    const pinned = await range();
+    assert.notEqual(pinned, paused, 'the replayed run is plotted');
+    // Reset: back to the first sample alone.
+    await page.locator(`${drape} .lil-controller`, { hasText: 'reset' }).locator('button').click();
+    await frames(page, 10);
+    const reset = await range();
+    assert.notEqual(reset, pinned, 'the reset run is plotted');
+    // Playing on adds samples, and the plot follows them.
+    await page.locator(`${drape} .timeline .play`).click();
+    await page.waitForFunction((r) => document.querySelector('#drape-stretch').dataset.yRange !== r, reset, { timeout: 30_000 });
+    assert.deepEqual(problems, []);
+    await page.close();
+  } finally {
+    await context.close();
+  }
+});

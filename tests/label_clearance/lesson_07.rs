@@ -282,6 +282,7 @@ fn lesson_07_aim_labels_keep_off_the_body_and_the_lines() {
         (Vec3::new(-0.7, 1.0, -1.2), 70.0),
         (Vec3::new(0.0, 1.9, -1.2), 40.0),
         (Vec3::new(-0.7, 1.0, -0.7), 142.0),
+        (Vec3::new(1.2, 1.9, -1.2), 180.0),
     ] {
         for k in 0..8 {
             let t = k as f32;

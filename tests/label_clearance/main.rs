@@ -6,7 +6,7 @@
 
 use glam::{Vec2, Vec3};
 use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
-use inbetween::draw::inset::inset_rect;
+use inbetween::draw::inset::{fit_beside, inset_rect};
 use inbetween::draw::layout::{place_avoiding, LabelBox, Placement, Rect};
 use inbetween::draw::{project_labels, Frame, ScreenLabel};
 
@@ -149,7 +149,7 @@ fn enters(a: Vec2, b: Vec2, rect: Rect) -> bool {
 }
 
 /// The camera a page's `setCamera` places, fitted to what the frame declares (as the viewer does:
-/// left of the inset when the frame has one).
+/// beside the inset when the frame has one).
 fn page_camera(view: [f32; 6], frame: &Frame, size: Vec2) -> OrbitCamera {
     let mut camera = OrbitCamera::from_view(view);
     if !frame.keep_in_view.is_empty() {
@@ -157,7 +157,7 @@ fn page_camera(view: [f32; 6], frame: &Frame, size: Vec2) -> OrbitCamera {
         let beside = frame
             .inset
             .as_ref()
-            .is_some_and(|_| camera.fit_left_of(&points, size, inset_rect(size).min.x, FIT_PAD_PX));
+            .is_some_and(|inset| fit_beside(&mut camera, inset, &points, size, FIT_PAD_PX));
         if !beside {
             camera.fit(&points, size, FIT_PAD_PX);
         }
