@@ -642,6 +642,21 @@ fn the_captions_preset_claims_hold() {
         .map(|(p, q)| (*p - *q).length())
         .fold(0.0f32, f32::max);
     assert!((gap - 0.075).abs() < 0.005, "largest gap {gap}");
+    // Figure 7's note gives that gap, from the two motions at the same moment.
+    let on = |scheme: &str| {
+        let mut s = scene(scheme);
+        let (t, v) = preset("centripetal").unwrap();
+        s.set_keys(t, v).unwrap();
+        s
+    };
+    let note = on("cardinal").gap_note(&on("centripetal"));
+    let noted: f32 = note
+        .split("at most ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next()?.parse().ok())
+        .unwrap_or_else(|| panic!("{note}"));
+    assert!((noted / 100.0 - gap).abs() < 0.001, "{note} against {gap} m");
+    assert!(on("cardinal").gap_note(&on("cardinal")).contains("at most 0.000 cm"));
     for (scheme, lo, hi) in [("cardinal", 0.0, 0.05), ("centripetal", 0.3, 0.55)] {
         let mut s = scene(scheme);
         let (times, values) = preset("centripetal").unwrap();
@@ -718,6 +733,21 @@ fn the_lagrange_captions_numbers_hold() {
         }
         (bg, all, rmax, worst.1)
     };
+    // The figure's note gives the two numbers the Try this reads, as measured here.
+    let noted = |n: f32| {
+        let mut s = LagrangeScene::new();
+        s.set_key_count(n).unwrap();
+        let note = s.note().to_string();
+        let after = |words: &str| -> f32 {
+            let rest = &note[note.find(words).unwrap_or_else(|| panic!("{note}")) + words.len()..];
+            rest.split(' ').next().unwrap().parse().unwrap_or_else(|_| panic!("{note}"))
+        };
+        (after("at most "), after("|y| = "), note)
+    };
+    for n in [3.0, 10.0, 16.0] {
+        let ((_, all, rmax, _), (gap, red, note)) = (measure(n), noted(n));
+        assert!((gap - all).abs() < 0.01 * all && (red - rmax).abs() < 0.01 * rmax, "{n}: {note}");
+    }
     // 3 keys: all three nearly agree (within 12 cm: red and blue differ by up to 11.9 cm).
     let (_, all, _, _) = measure(3.0);
     assert!((0.10..0.12).contains(&all), "{all}");
@@ -816,6 +846,34 @@ fn the_space_time_view_puts_the_clock_along_the_depth() {
         .iter()
         .zip(frame.segments_of(SPACETIME_COLOR))
         .any(|(x, y)| (x.0 - y.0).length() > 0.05));
+}
+
+#[test]
+fn the_space_time_axis_counts_the_clocks_seconds() {
+    // The clock reads the keys' own seconds, so the time axis does too: each tick's label names
+    // the clock's whole second and sits at its depth after key 0, not counted from key 0.
+    for (times, labels) in [
+        (vec![2.2, 3.2], vec!["3 s"]),
+        (vec![0.5, 1.5, 2.7], vec!["1 s", "2 s"]),
+        (vec![0.0, 1.0, 2.0], vec!["0 s", "1 s", "2 s"]),
+    ] {
+        let mut s = KeyframesScene::new();
+        let values = (0..times.len()).map(|k| Vec2::new(k as f32, 1.0)).collect();
+        s.set_keys(times.clone(), values).unwrap();
+        // The page's camera (lessons/02-keyframes/lesson.js), which sets how many ticks are labelled.
+        let camera = inbetween::camera::OrbitCamera::from_view([0.3, 0.8, -1.3, 6.5, 0.75, 0.4]);
+        s.set_view(camera, 760.0, 300.0);
+        let mut frame = Frame::default();
+        s.draw(&mut frame, 0.0).unwrap();
+        let ticks: Vec<_> = frame.labels.iter().filter(|l| l.text.ends_with(" s")).collect();
+        let texts: Vec<&str> = ticks.iter().map(|l| l.text.as_str()).collect();
+        assert_eq!(texts, labels, "keys at {times:?}");
+        for l in ticks {
+            let second: f32 = l.text.trim_end_matches(" s").parse().unwrap();
+            let depth = -TIME_DEPTH_M_PER_SEC * (second - times[0]);
+            assert!((l.anchor.z - depth).abs() < 1e-4, "{} at z = {}", l.text, l.anchor.z);
+        }
+    }
 }
 
 #[test]

@@ -337,15 +337,36 @@ fn normals_figure_reports_the_students_normals() {
         note.contains("differs on this sphere") && note.contains("at vertex"),
         "{note}"
     );
+    // The vertex the note names is marked in the view, over the mesh (its normal may point
+    // into the sphere), where the stretched sphere puts it.
+    let named: usize = note
+        .split("at vertex ")
+        .nth(1)
+        .and_then(|rest| rest.split(|c: char| !c.is_ascii_digit()).next()?.parse().ok())
+        .unwrap_or_else(|| panic!("{note}"));
+    scene.set_scale_x(2.0).unwrap();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, MeshId(3), MeshId(4));
+    let positions = scene.smooth_mesh().positions;
+    let model = glam::Mat4::from_translation(Vec3::new(0.0, 1.3, 0.0))
+        * glam::Mat4::from_scale(Vec3::new(2.0, 1.0, 1.0));
+    let at = model.transform_point3(positions[named]);
+    assert!(
+        frame.markers.iter().any(|m| m.size_px < 0.0
+            && (Vec3::from_array(m.center) - at).length() < 1e-5
+            && m.color[..3] == inbetween::draw::palette::ORANGE.to_array()),
+        "no marker over vertex {named} at {at}"
+    );
+    assert!(note.contains("(the orange dot)"), "{note}");
     scene.set_runner(stub);
     scene.set_use_exercise(true);
     assert!(scene
         .draw(&mut Frame::default(), MeshId(3), MeshId(4))
         .contains("Not done yet: exercise 0.2"));
     scene.set_use_exercise(false);
-    assert!(!scene
-        .draw(&mut Frame::default(), MeshId(3), MeshId(4))
-        .contains("exercise"));
+    let mut frame = Frame::default();
+    assert!(!scene.draw(&mut frame, MeshId(3), MeshId(4)).contains("exercise"));
+    assert!(frame.markers.is_empty(), "no vertex marked without the exercise");
 }
 
 #[test]

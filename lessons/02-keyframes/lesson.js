@@ -69,15 +69,25 @@ function makeView(canvas, reserveBottom = 0) {
   };
   v.toPx = (x, y) => [v.ox + x * v.scale, v.oy - y * v.scale];
   v.toWorld = (px, py) => [(px - v.ox) / v.scale, (v.oy - py) / v.scale];
-  /** Fits the view to points `[x0, y0, x1, y1, …]` with a margin. */
-  v.fit = (xy) => {
+  /**
+   * Fits the view to points `[x0, y0, x1, y1, …]` with a margin: 12 % of their extent, or
+   * `marginPx` CSS pixels on every side when given (room for what is drawn beside the points,
+   * such as a key's number, whatever the scale).
+   */
+  v.fit = (xy, marginPx = 0) => {
     let [x0, x1, y0, y1] = [Infinity, -Infinity, Infinity, -Infinity];
     for (let i = 0; i < xy.length; i += 2) {
       x0 = Math.min(x0, xy[i]); x1 = Math.max(x1, xy[i]);
       y0 = Math.min(y0, xy[i + 1]); y1 = Math.max(y1, xy[i + 1]);
     }
     if (!Number.isFinite(x0)) return;
-    const m = 0.12 * Math.max(x1 - x0, y1 - y0, 1);
+    let m = 0.12 * Math.max(x1 - x0, y1 - y0, 1);
+    if (marginPx > 0) {
+      const r = canvas.getBoundingClientRect();
+      const [w, h] = [Math.max(x1 - x0, 0.5), Math.max(y1 - y0, 0.5)];
+      const scale = Math.min((r.width - 2 * marginPx) / w, (r.height - v.bottom - 2 * marginPx) / h);
+      m = marginPx / Math.max(scale, 1e-3);
+    }
     v.box = { x0: x0 - m, x1: x1 + m, y0: y0 - m, y1: y1 + m };
     v.layout();
   };
@@ -308,6 +318,8 @@ if (keysViewer) {
 
   const canvas = document.querySelector('#fig-keys .editor canvas');
   const STRIP = 46; // height of the time strip, CSS pixels
+  // A key's number sits 15 px off its dot and is 12 px tall: a fit leaves this much on every side.
+  const LABEL_ROOM_PX = 30;
   const view = makeView(canvas, STRIP);
   const { ctx } = view;
   const editor = { path: [], ghosts: [], keys: [], tangents: [], held: false };
@@ -341,7 +353,7 @@ if (keysViewer) {
   function fitView() {
     const pts = [...editor.path];
     if (isCubic()) for (let k = 0; k < keyCount(); k++) { const h = handleEnds(k); pts.push(...h.in, ...h.out); }
-    view.fit(pts);
+    view.fit(pts, LABEL_ROOM_PX);
   }
 
   function draw(tau) {
@@ -586,6 +598,7 @@ function compareFigure(id) {
   const layers = { a: { path: [] }, b: { path: [] } };
   const canvas = figure.querySelector('canvas');
   const view = makeView(canvas);
+  const gapNote = figure.querySelector('.note'); // Figure 7's: how far apart A and B get
   // The box round the first loop of A's or B's path (both, when both loop), or null.
   let loop = null;
   const plot = new Plot(figure.querySelector('.plot'), {
@@ -616,6 +629,7 @@ function compareFigure(id) {
       cols.push(col);
     }
     plot.setData(cols);
+    if (gapNote) gapNote.textContent = schemes.a.gapNote(schemes.b);
     view.fit(all);
     const loops = ['a', 'b'].filter((side) => !layers[side].held).map((side) => loopBox(layers[side].path)).filter(Boolean);
     loop = loops.length ? loops.reduce((u, b) => [Math.min(u[0], b[0]), Math.min(u[1], b[1]), Math.max(u[2], b[2]), Math.max(u[3], b[3])]) : null;
@@ -692,8 +706,11 @@ if (lagrangeViewer) {
   const gui = new GUI({ container: document.querySelector('#fig-lagrange .panel'), title: 'Lagrange' });
   gui.add(lp, 'keys', 3, 16, 1).name('keys (blue)').onChange((v) => lagrange.setKeyCount(v));
   gui.add(lp, 'spline').name('Catmull-Rom (green)').onChange((v) => lagrange.setShowSpline(v));
+  const note = document.getElementById('lagrange-note');
   lesson.onFrame(() => {
     lagrange.draw(lagrangeViewer);
+    const text = lagrange.note;
+    if (note.textContent !== text) note.textContent = text;
     markDrawn('#fig-lagrange');
   });
 }
@@ -958,7 +975,10 @@ if (lagrangeViewer) {
     const r = canvas.getBoundingClientRect();
     const key = `${ep.ease} ${ep.frames} ${r.width} ${r.height}`;
     if (key !== last) { draw(); last = key; }
-    if (easeNote.textContent !== rejected) easeNote.textContent = rejected;
+    // Each ease's first step, read off its chart (Rust's ticks): the numbers the Try this names.
+    const first = rows.map((row) => `${row.label} ${row.ticks[1].toFixed(3)}`).join(', ');
+    const text = [rejected, `First step of ${ep.frames} frames: ${first}.`].filter(Boolean).join(' ');
+    if (easeNote.textContent !== text) easeNote.textContent = text;
     markDrawn('#fig-ease');
   });
 }

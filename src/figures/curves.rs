@@ -572,13 +572,16 @@ impl KeyframesScene {
         // The time axis, on the ground right of the rightmost key: from the page's camera the
         // depth runs up and to the right, so an axis left of the path would run under the curves
         // and its labels over them.
+        // Its ticks are the clock's whole seconds (the keys' own times), placed at their depth
+        // after key 0: with key 0 at 2.2 s the first tick reads "3 s", as the clock does.
         let right = self.track.values().iter().fold(f32::MIN, |m, p| m.max(p.x)) + 0.8;
-        let duration = self.track.duration_sec();
+        let (start, duration) = (self.track.start_sec(), self.track.duration_sec());
         let axis = |t: f32| Vec3::new(right, 0.0, depth(t));
         let end = axis(duration + 0.4);
         frame.arrow(axis(0.0), end, palette::DARK, 0.12);
-        let seconds = 0..=duration.floor() as usize;
-        for p in seconds.clone().map(|second| axis(second as f32)) {
+        let tick = |second: i32| axis(second as f32 - start);
+        let seconds = start.ceil() as i32..=(start + duration).floor() as i32;
+        for p in seconds.clone().map(tick) {
             frame.line(p - Vec3::X * 0.08, p + Vec3::X * 0.08, palette::DARK);
         }
         // The labels, once the curves are down, each at the first place round its point on the
@@ -605,9 +608,9 @@ impl KeyframesScene {
             .find(|&n| n as f32 * px_per_sec >= 30.0)
             .unwrap_or(10);
         let labels = seconds
-            .step_by(stride)
+            .filter(|second| second.rem_euclid(stride) == 0)
             .map(|second| {
-                let p = axis(second as f32);
+                let p = tick(second);
                 (p, toward(p, p + Vec3::X), format!("{second} s"))
             })
             .chain([(end, toward(axis(0.0), end), "time (s)".into())]);
@@ -706,6 +709,22 @@ impl KeyframesScene {
         } else {
             String::new()
         }
+    }
+
+    /// How far apart this motion and `other` are at the same moment, at most, over this one's
+    /// keys (401 equal steps of the clock): "A and B are at most … cm apart".
+    pub fn gap_note(&self, other: &Self) -> String {
+        let duration = self.track.duration_sec();
+        let gap = (0..=400)
+            .map(|k| {
+                let tau = duration * k as f32 / 400.0;
+                (self.motion(tau).position - other.motion(tau).position).length()
+            })
+            .fold(0.0, f32::max);
+        format!(
+            "At the same moment A and B are at most {} cm apart.",
+            format_number(100.0 * gap)
+        )
     }
 
     fn motion(&self, tau: f32) -> Sample<Vec2> {
@@ -1065,6 +1084,7 @@ pub struct LagrangeScene {
     base: Vec<Vec<Vec3>>,
     more: Vec<Vec<Vec3>>,
     spline: Vec<Vec<Vec3>>,
+    note: String,
 }
 
 /// Colours of the Lagrange figure: blue through `n` keys, red through `n + 2`, green spline.
@@ -1093,6 +1113,7 @@ impl LagrangeScene {
             base: Vec::new(),
             more: Vec::new(),
             spline: Vec::new(),
+            note: String::new(),
         };
         scene.rebuild().expect("valid default keys");
         scene
@@ -1119,6 +1140,12 @@ impl LagrangeScene {
 
     pub fn key_count(&self) -> usize {
         self.keys
+    }
+
+    /// What the caption's Try this reads: the largest gap between any two of the three curves
+    /// and the red polynomial's largest |y|, over the sampled time range, in metres.
+    pub fn note(&self) -> &str {
+        &self.note
     }
 
     /// The keys of the first curve and of the second.
@@ -1228,20 +1255,35 @@ impl LagrangeScene {
         const SAMPLES: usize = 400;
         // The polynomial can shoot far off between keys: cut what we draw at the graph's edge
         // (a clamped curve would run along the edge and read as a value that saturates).
-        let sample = |track: &Track<f32>| -> Vec<Vec<Vec3>> {
+        let graphs = [&a, &b, &spline].map(|track| -> Vec<(f32, f32)> {
             let (t0, t1) = (track.start_sec(), track.end_sec());
-            let graph: Vec<(f32, f32)> = (0..SAMPLES)
+            (0..SAMPLES)
                 .map(|k| {
                     let t = t0 + (t1 - t0) * k as f32 / (SAMPLES - 1) as f32;
                     (t, track.position(t))
                 })
-                .collect();
+                .collect()
+        });
+        let (mut gap, mut red) = (0.0f32, 0.0f32);
+        for k in 0..SAMPLES {
+            let [ya, yb, yg] = graphs.each_ref().map(|g| g[k].1);
+            gap = gap
+                .max((ya - yb).abs())
+                .max((yb - yg).abs())
+                .max((ya - yg).abs());
+            red = red.max(yb.abs());
+        }
+        self.note = format!(
+            "The three curves are at most {} m apart; the red one reaches |y| = {} m.",
+            format_number(gap),
+            format_number(red)
+        );
+        [self.base, self.more, self.spline] = graphs.map(|graph| {
             clip_graph(&graph, Y_RANGE)
                 .into_iter()
                 .map(|piece| piece.iter().map(|&(t, y)| self.place(t, y)).collect())
                 .collect()
-        };
-        (self.base, self.more, self.spline) = (sample(&a), sample(&b), sample(&spline));
+        });
         Ok(())
     }
 }

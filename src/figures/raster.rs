@@ -1200,6 +1200,8 @@ pub struct Normals {
     indices: Vec<u32>,
     smooth: Vec<Vec3>,
     exercise_note: String,
+    /// The vertex the note names where the student's normals differ most, marked in the view.
+    wrong_vertex: Option<usize>,
 }
 
 impl Default for Normals {
@@ -1223,6 +1225,7 @@ impl Normals {
             indices,
             smooth,
             exercise_note: String::new(),
+            wrong_vertex: None,
         }
     }
 
@@ -1253,6 +1256,7 @@ impl Normals {
             .valid("a valid sphere");
         self.smooth = reference.clone();
         self.exercise_note.clear();
+        self.wrong_vertex = None;
         if !on {
             return;
         }
@@ -1283,6 +1287,7 @@ impl Normals {
                             e(a).partial_cmp(&e(b)).unwrap_or(std::cmp::Ordering::Equal)
                         })
                         .unwrap_or(0);
+                    self.wrong_vertex = Some(worst);
                     let show = |v: Option<&Vec3>| {
                         v.map_or("missing".to_string(), |v| {
                             format!(
@@ -1294,8 +1299,8 @@ impl Normals {
                         })
                     };
                     format!(
-                        "Your vertex_normals differs on this sphere ({} normals for {} vertices): at vertex {worst}, \
-                         yours {}, reference {}.",
+                        "Your vertex_normals differs on this sphere ({} normals for {} vertices): at vertex {worst} (the orange \
+                         dot), yours {}, reference {}.",
                         yours.len(),
                         reference.len(),
                         show(yours.get(worst)),
@@ -1473,6 +1478,10 @@ impl Normals {
         if self.use_exercise {
             note += " ";
             note += &self.exercise_note;
+        }
+        // Over the mesh: a reversed normal points into the sphere, and the vertex may face away.
+        if let Some(k) = self.wrong_vertex {
+            frame.marker_on_top(m.transform_point3(self.positions[k]), 14.0, palette::ORANGE);
         }
         note
     }

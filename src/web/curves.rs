@@ -183,6 +183,12 @@ impl KeyframesScene {
         Ok(())
     }
 
+    /// The largest distance between this motion and `other` at the same moment (Figure 7).
+    #[wasm_bindgen(js_name = gapNote)]
+    pub fn gap_note(&self, other: &KeyframesScene) -> String {
+        self.scene.gap_note(&other.scene)
+    }
+
     /// Empty, or why "constant speed" does not apply to the current scheme (step).
     #[wasm_bindgen(getter, js_name = timingNote)]
     pub fn timing_note(&self) -> String {
@@ -296,6 +302,12 @@ impl LagrangeScene {
             out.extend(times.iter().zip(&values).flat_map(|(t, y)| [*t, *y]));
         }
         out
+    }
+
+    /// The largest gap between the curves and the red polynomial's largest |y| (see the core).
+    #[wasm_bindgen(getter)]
+    pub fn note(&self) -> String {
+        self.scene.note().to_string()
     }
 
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<(), JsError> {

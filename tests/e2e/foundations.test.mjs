@@ -82,3 +82,61 @@ test('lesson 02: Figure 7 magnifies the loop-prone loop in an inset, and shows n
     await context.close();
   }
 });
+
+test('lesson 02: notes give the numbers Figures 3, 7 and 9 name; zoom to fit keeps every key number in the editor', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2`, { width: 1600, height: 1000 });
+    // Figure 3: the largest gap at 3 keys (within 12 cm) and the red curve's reach at 16 (beyond 100 m).
+    const lagrangeNote = async (keys) => {
+      await setControl(page, '#fig-lagrange', 'keys (blue)', keys);
+      await frames(page);
+      const text = await page.locator('#lagrange-note').textContent();
+      const [gap, red] = [/at most ([\d.]+) m/, /\|y\| = ([\d.]+) m/].map((re) => Number(text.match(re)?.[1]));
+      return { gap, red, text };
+    };
+    const three = await lagrangeNote(3);
+    assert.ok(three.gap > 0.1 && three.gap < 0.12, three.text);
+    const sixteen = await lagrangeNote(16);
+    assert.ok(sixteen.red > 100, sixteen.text);
+    // Figure 7: on zig-zag the balls are up to 7.5 cm apart.
+    await setControl(page, '#fig-centripetal', 'keys (all figures)', 'zig-zag');
+    await frames(page);
+    const gapText = await page.locator('#centripetal-note').textContent();
+    const gap = Number(gapText.match(/at most ([\d.]+) cm/)?.[1]);
+    assert.ok(Math.abs(gap - 7.5) < 0.5, gapText);
+    // Figure 9: the first steps of 7 frames the caption names.
+    await setControl(page, '#fig-ease', 'frames', 7);
+    await frames(page);
+    const easeText = await page.locator('#ease-note').textContent();
+    for (const part of ['none 0.167', 'smoothstep 0.074', 'ease in (t²) 0.028', 'ease out 0.306']) {
+      assert.ok(easeText.includes(part), `${part} in "${easeText}"`);
+    }
+    // Figure 1: key 1 dragged far up, then "zoom to fit": every key at least 24 px inside the
+    // drawing above the time strip, so the number over it (15 px off, 12 px tall) is not cut.
+    await setControl(page, '#fig-centripetal', 'keys (all figures)', 'default');
+    const canvas = page.locator('#fig-keys .editor canvas');
+    await canvas.evaluate((c) => c.scrollIntoView({ block: 'end' })); // room above for the drag
+    await frames(page);
+    const box = await canvas.boundingBox();
+    const ed = (expr) => page.evaluate(`window.__inbetween.editor.${expr}`);
+    const [x, y] = await ed('keyPx(1)');
+    await page.mouse.move(box.x + x, box.y + y);
+    await page.mouse.down();
+    await page.mouse.move(box.x + x, box.y + y - 360, { steps: 8 });
+    await page.mouse.up();
+    await frames(page);
+    const keys = await ed('keys()');
+    assert.ok(keys[5] > 5, `key 1 is dragged far up: ${keys[5]} m`);
+    await page.locator('#fig-keys .fit').click();
+    await frames(page);
+    for (let k = 0; k < keys.length / 3; k++) {
+      const [px, py] = await ed(`keyPx(${k})`);
+      const inside = px >= 24 && px <= box.width - 24 && py >= 24 && py <= box.height - 46 - 24;
+      assert.ok(inside, `key ${k} at ${[px, py]} on ${box.width} x ${box.height}`);
+    }
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});

@@ -19,8 +19,8 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_curves() {
 fn lesson_02_keys_time_axis_labels_keep_off_the_path_when_orbited() {
     // Figure 1's 3D view at its page camera (lessons/02-keyframes/lesson.js) and orbited as the
     // page sweep's drag turns it (−1.2 rad, tilted by 0.3 rad), on both canvases, with the
-    // default, uneven and centripetal keys and keys dragged right (the path then runs over the
-    // axis), across the timeline: the axis's labels (at least two ticks and "time (s)") are
+    // default, uneven and centripetal keys, the default keys 2.2 s later, and keys dragged right
+    // (the path then runs over the axis), across the timeline: the axis's labels (at least two ticks and "time (s)") are
     // shown where the figure put them, keep 2 px off every line and dot (the path, the curve,
     // the axis), and cover no key. As on the page, the figure places them for the view of the frame before.
     use inbetween::figures::curves::{preset, KeyframesScene};
@@ -31,6 +31,8 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_path_when_orbited() {
         keys.push(preset(name).unwrap());
     }
     let (times, values) = preset("default").unwrap();
+    // Key 0 at 2.2 s: the ticks are the clock's seconds, 3 s on, off the axis's start.
+    keys.push((times.iter().map(|t| t + 2.2).collect(), values.clone()));
     keys.push((times, values.iter().map(|p| *p + Vec2::new(1.5, 0.4)).collect()));
     for view in [
         [0.3, 0.8, -1.3, 6.5, 0.75, 0.4],
