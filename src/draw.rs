@@ -910,8 +910,21 @@ impl Frame {
     /// The x, y and z axes of the frame `m` as wide lines ([`AXIS_PX`]) in the palette's axis
     /// colours, each `length` long, drawn over anything at the same depth (the grid's centre
     /// lines).
-    #[inline(never)]
     pub fn axes(&mut self, m: Mat4, length: f32) {
+        self.axes_with(m, length, false);
+    }
+
+    /// [`Frame::axes`] drawn over everything: the axes of a solid box, which would hide them.
+    pub fn axes_on_top(&mut self, m: Mat4, length: f32) {
+        self.axes_with(m, length, true);
+    }
+
+    #[inline(never)]
+    fn axes_with(&mut self, m: Mat4, length: f32, on_top: bool) {
+        let style = StrokeStyle {
+            on_top,
+            ..StrokeStyle::solid(AXIS_PX)
+        };
         let o = m.transform_point3(Vec3::ZERO);
         for (axis, color) in [
             (Vec3::X, palette::X_AXIS),
@@ -919,13 +932,23 @@ impl Frame {
             (Vec3::Z, palette::Z_AXIS),
         ] {
             let tip = o + m.transform_vector3(axis) * length;
-            self.stroke(&[o, tip], color, StrokeStyle::solid(AXIS_PX));
+            self.stroke(&[o, tip], color, style);
         }
     }
 
     /// The axes of `m` as arrows with heads and x, y, z labels at their tips.
-    #[inline(never)]
     pub fn labelled_axes(&mut self, m: Mat4, length: f32) {
+        self.labelled_axes_with(m, length, false);
+    }
+
+    /// [`Frame::labelled_axes`] whose shafts and heads' strokes are drawn over everything
+    /// ([`Frame::arrow_on_top`]): a joint's axes inside the body.
+    pub fn labelled_axes_on_top(&mut self, m: Mat4, length: f32) {
+        self.labelled_axes_with(m, length, true);
+    }
+
+    #[inline(never)]
+    fn labelled_axes_with(&mut self, m: Mat4, length: f32, on_top: bool) {
         let o = m.transform_point3(Vec3::ZERO);
         for (axis, color, name) in [
             (Vec3::X, palette::X_AXIS, "x"),
@@ -933,7 +956,7 @@ impl Frame {
             (Vec3::Z, palette::Z_AXIS, "z"),
         ] {
             let tip = o + m.transform_vector3(axis) * length;
-            self.arrow(o, tip, color, 0.15 * length);
+            self.arrow_with(o, tip, color, 0.15 * length, on_top);
             self.label(tip, name, color);
         }
     }

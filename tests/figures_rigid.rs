@@ -717,3 +717,21 @@ fn the_blend_trails_the_screw_along_the_axis_then_leads_it_by_as_much() {
         .unwrap();
     assert!(scene.largest_blend_lead_m() < 1e-4);
 }
+
+/// Figure 1: the keys' axes are drawn over the aeroplanes, which start and end on them (else
+/// "A" names axes hidden in the orange aeroplane).
+#[test]
+fn the_keys_axes_show_over_the_aeroplanes() {
+    use inbetween::draw::{palette, ON_TOP};
+    let mut scene = RigidMotion::new();
+    let mut frame = Frame::default();
+    scene.draw(&mut frame, 0.0).unwrap();
+    let keys: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| s.color[..3] == palette::X_AXIS.to_array()[..])
+        .filter(|s| (Vec3::from(s.b).distance(Vec3::from(s.a)) - 0.5).abs() < 1e-4)
+        .collect();
+    assert_eq!(keys.len(), 2, "each key's x axis, 0.5 m long");
+    assert!(keys.iter().all(|s| s.depth_bias == ON_TOP));
+}

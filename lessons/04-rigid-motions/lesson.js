@@ -76,6 +76,11 @@ if (rigidViewer) {
     scene.setUseExercise(p.useExercise);
     plot.setData(blendLast(scene.sampleSpeed(101)));
     distance.setData(blendLast(scene.sampleDistance(101)));
+    // The legends grey out the methods "show" hides (series 1 to 3: lerp + slerp, screw, blend).
+    [1, 3, 2].forEach((k, i) => {
+      const show = [0, k].includes(Number(p.show));
+      for (const q of [plot, distance]) if (q.plot.series[i + 1].show !== show) q.plot.setSeries(i + 1, { show });
+    });
     const s = Array.from(scene.screwAxis());
     const f = (v) => v.map((x) => (Math.abs(x) < 5e-3 ? 0 : x).toFixed(2)).join(', ');
     document.getElementById('rigid-screw').textContent = s[6] < 0.05

@@ -284,7 +284,8 @@ impl RigidMotion {
         // aeroplane drawn there.
         let mut names = Vec::new();
         for (key, name) in [(self.start, "A"), (self.end, "B")] {
-            frame.axes(key.to_mat4(), 0.5);
+            // Over the aeroplanes, which start and end on the keys and would hide them.
+            frame.axes_on_top(key.to_mat4(), 0.5);
             let anchor = key.translation() + Vec3::Y * KEY_LABEL_M;
             names.push((anchor, name.to_string(), palette::KEY, -glam::Vec2::Y));
         }

@@ -99,6 +99,8 @@ pub struct SingleShape {
 
 /// Half-size of Figure 1's box, metres.
 pub const BOX_HALF: Vec3 = Vec3::new(0.4, 0.25, 0.15);
+/// The length of Figure 1's box's own axes, metres: past the box's faces.
+const AXIS_M: f32 = 0.6;
 /// Figure 1's point p (w = 1), in the box's frame: the front corner below the box's +x end. The
 /// paths of the centres leave the box upwards and to the right (towards t = (1, 0.5, 0) and
 /// round the swing), so p's label, which reads rightwards from just outside this corner, stays
@@ -208,15 +210,13 @@ impl SingleShape {
         let stage = in_range("stage", stage, 0.0, 2.0)?;
         frame.grid(10, 0.5);
         frame.labelled_axes(Mat4::IDENTITY, 1.0);
-        // The world axes' names rank with the orders' names, which then search round them: at
-        // the start R·T's box sits under the y axis's tip.
-        for l in &mut frame.labels {
-            l.priority = 3;
-        }
+        // The world axes' letters go back once p's dot is drawn, placed clear of it.
+        let letters = std::mem::take(&mut frame.labels);
         let (shown, ghost) = (self.order, self.order.other());
         let m = self.matrix_at(shown, stage);
         frame.mesh(MeshId::CUBE, m * Mat4::from_scale(BOX_HALF), shown.color());
-        frame.axes(m, 0.6);
+        // Over the box, which would hide them.
+        frame.axes_on_top(m, AXIS_M);
         wire_box(
             frame,
             self.matrix_at(ghost, stage) * Mat4::from_scale(BOX_HALF),
@@ -250,22 +250,39 @@ impl SingleShape {
         frame.arrow(Vec3::ZERO, v, palette::PINK, 0.1);
         let view = view_of(self.view);
         let ghost_m = self.matrix_at(ghost, stage);
-        let boxes = boxes_px(&[m, ghost_m].map(|b| b * Mat4::from_scale(BOX_HALF)), view);
+        // The boxes and a small cube round each tip of the solid box's axes: a name there
+        // would read as the axis's.
+        let mut models = [m, ghost_m]
+            .map(|b| b * Mat4::from_scale(BOX_HALF))
+            .to_vec();
+        for axis in [Vec3::X, Vec3::Y, Vec3::Z] {
+            let tip = m.transform_point3(axis * AXIS_M);
+            models.push(Mat4::from_translation(tip) * Mat4::from_scale(Vec3::splat(0.1)));
+        }
+        let boxes = boxes_px(&models, view);
+        // The world axes' letters beside their tips, off p's dot and the boxes where they can
+        // be. They rank with the orders' names, which then search round them: at the start
+        // R·T's box sits under the y axis's tip.
+        for l in letters {
+            let candidates =
+                Label::around_dot(l.anchor, 0.0, Vec2::ZERO, &l.text, l.color, 3, 3, 6.0);
+            frame.first_clear_label_by(view, 2.0, candidates, off_points(&boxes, 2.0));
+        }
         // Each order's name straight above its box's centre, 0.15 m over the box's highest
         // corner (Σ hᵢ·|R_yi| above the centre) and, on the solid box, over the highest tip of
-        // its axes (0.6 m long), however the box has turned; where an axis, path or dot runs
-        // through it there, the first place round that point clear of them and of the boxes,
-        // upwards first.
+        // its axes, however the box has turned; where an axis, path or dot runs through it
+        // there, or an axis ends just under it, the first place round that point clear of them,
+        // of the boxes and of the axes' tips, upwards first.
         for order in [shown, ghost] {
             let placed = self.matrix_at(order, stage);
             let up = Mat3::from_mat4(placed).row(1);
             let mut rise = (up.abs() * BOX_HALF).element_sum();
             if order == shown {
-                rise = rise.max(0.6 * up.max_element());
+                rise = rise.max(AXIS_M * up.max_element());
             }
             let top = placed.w_axis.truncate() + Vec3::Y * (rise + 0.15);
             let (name, color) = (order.name(), order.color());
-            let mut candidates = Label::around_dot(top, 0.0, -Vec2::Y, name, color, 3, 8, 8.0);
+            let mut candidates = Label::around_dot(top, 0.0, -Vec2::Y, name, color, 3, 12, 8.0);
             let above = Label {
                 anchor: top,
                 text: name.into(),
@@ -786,7 +803,8 @@ impl HierarchyFigure {
             return;
         }
         let selected = placement * self.world[self.selected];
-        frame.labelled_axes(selected, 0.25);
+        // Over the body, which would hide them: a joint's pivot lies inside its boxes.
+        frame.labelled_axes_on_top(selected, 0.25);
         let view = view_of(self.view);
         let models: Vec<Mat4> = (self.shapes.iter().zip(&self.draw))
             .map(|(shape, draw)| {

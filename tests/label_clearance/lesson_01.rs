@@ -308,3 +308,100 @@ fn lesson_01_body_names_keep_off_the_body_when_orbited_and_scaled() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_01_box_axes_show_over_the_box_and_no_name_sits_at_their_tips() {
+    // Figure 1 from the page's camera and after the page test's drag, both canvases, over the
+    // steps, at the page's start and at the page test's settings, each order solid: the solid
+    // box's own axes (0.6 m long) are drawn over everything (the box would hide them), and no
+    // name ("T·R", "R·T", p's, v's) ends within 16 px of one of their tips, where it would read
+    // as that axis's name.
+    use inbetween::draw::{palette, ON_TOP};
+    use inbetween::figures::transforms::{Order, SingleShape};
+    let page = [0.5, 0.3, 0.0, 5.0, 0.6, 0.45];
+    let dragged = [0.5, 0.3, 0.0, 5.0, 0.6 - 0.008 * 130.0, 0.45 + 0.008 * 42.0];
+    let mut failures = Vec::new();
+    for (t, angles) in [
+        (Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, 30.0)),
+        (Vec3::splat(-1.21), Vec3::splat(-109.0)),
+    ] {
+        for order in [Order::RotateFirst, Order::TranslateFirst] {
+            let mut scene = SingleShape::new();
+            scene.set_transform(t, angles).unwrap();
+            scene.set_order(order);
+            for stage in [0.0, 0.5, 1.0, 1.5, 2.0] {
+                for view in [page, dragged] {
+                    for size in CANVASES {
+                        let (frame, camera) = drawn_for_view(
+                            &mut scene,
+                            view,
+                            size,
+                            |fig, out| {
+                                fig.draw(out, stage).unwrap();
+                            },
+                            |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                        );
+                        let name =
+                            format!("01 box axes, t {t}, {order:?}, stage {stage}, view {view:?}");
+                        let m = scene.matrix_at(order, stage);
+                        let centre = m.w_axis.truncate().to_array();
+                        let view_proj = camera.projection(size.x / size.y) * camera.view();
+                        let boxes = label_boxes(&frame, &camera, size);
+                        failures.extend(failure_of(|| {
+                            // The world axes' letters keep off p's dot.
+                            let p = frame
+                                .markers
+                                .iter()
+                                .find(|d| d.color[..3] == palette::PINK.to_array()[..])
+                                .expect("p's dot");
+                            let dot = project_to_canvas(view_proj, size, Vec3::from(p.center));
+                            for (text, rect) in boxes.iter().filter(|(t, _)| t.chars().count() == 1)
+                            {
+                                let Some(dot) = dot else { continue };
+                                let gap = rect.nearest(dot).distance(dot);
+                                assert!(
+                                    gap > 0.5 * p.size_px,
+                                    "{name} on {size}: {text:?} {gap} px from p's dot"
+                                );
+                            }
+                            for (axis, color) in [
+                                (Vec3::X, palette::X_AXIS),
+                                (Vec3::Y, palette::Y_AXIS),
+                                (Vec3::Z, palette::Z_AXIS),
+                            ] {
+                                let own = frame
+                                    .strokes
+                                    .iter()
+                                    .find(|s| {
+                                        let length = Vec3::from(s.b).distance(Vec3::from(s.a));
+                                        s.a == centre
+                                            && (length - 0.6).abs() < 1e-4
+                                            && s.color[..3] == color.to_array()[..]
+                                    })
+                                    .expect("the box's axis");
+                                assert_eq!(
+                                    own.depth_bias, ON_TOP,
+                                    "{name}: axis {axis} under the box"
+                                );
+                                let tip = m.transform_point3(axis * 0.6);
+                                let Some(tip) = project_to_canvas(view_proj, size, tip) else {
+                                    continue;
+                                };
+                                for (text, rect) in
+                                    boxes.iter().filter(|(t, _)| t.chars().count() > 1)
+                                {
+                                    let gap = rect.nearest(tip).distance(tip);
+                                    assert!(
+                                        gap >= 16.0,
+                                        "{name} on {size}: {text:?} {gap} px from axis {axis}'s tip"
+                                    );
+                                }
+                            }
+                        }));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
