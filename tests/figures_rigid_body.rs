@@ -679,6 +679,25 @@ fn a_push_is_replayed_and_reset_forgets_it() {
 }
 
 #[test]
+fn the_note_names_a_push_once_it_shows() {
+    // The note's state and plots are those recorded before a push's step: at a push's own time
+    // (or earlier, replayed) the note says it comes; from the next step on, that it happened.
+    let mut d = StackFigure::new(StackPreset::Dominoes);
+    d.advance_to(0.5).unwrap();
+    d.push().unwrap();
+    let note = |d: &mut StackFigure, t: f32| {
+        d.advance_to(t).unwrap();
+        d.draw(&mut Frame::default())
+    };
+    for t in [0.0, 0.5] {
+        let n = note(&mut d, t);
+        assert!(!n.contains("Pushed") && n.contains("A push comes at t = 0.50 s."), "{n}");
+    }
+    let n = note(&mut d, 0.6);
+    assert!(n.contains("Pushed once.") && !n.contains("A push comes"), "{n}");
+}
+
+#[test]
 fn the_solver_settings_are_checked_before_any_is_changed() {
     let mut f = StackFigure::new(StackPreset::Stack);
     f.advance_to(1.0).unwrap();

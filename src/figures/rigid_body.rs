@@ -1823,11 +1823,16 @@ impl StackFigure {
                 self.contact_points.len(),
             ),
         };
-        let pushes = match self.pushes.len() {
+        // A push shows from the step after it (the plots record each step before its pushes).
+        let done = self.pushes.iter().filter(|&&s| s < self.steps_done).count();
+        let mut pushes = match done {
             0 => String::new(),
             1 => " Pushed once.".to_string(),
             n => format!(" Pushed {n} times."),
         };
+        if let Some(s) = self.pushes.iter().filter(|&&s| s >= self.steps_done).min() {
+            pushes += &format!(" A push comes at t = {:.2} s.", *s as f32 * SIM_DT);
+        }
         let exploded = match self.exploded {
             Some(at) if self.gained_energy => format!(
                 " At t = {} s the bodies held more energy than the run ever had: the solver \
