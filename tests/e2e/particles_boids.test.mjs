@@ -400,6 +400,9 @@ test('lesson 11 on WebGPU: the GPU-stepped particles are drawn as atlas sprites,
     // guides from 0 to the playhead (the dashed rate × lifetime line: a dense row of dark grey
     // pixels, wider than any tick label; the row's longest such stretch, as a share of the plot).
     assert.match(note, /not read back, so they are not counted: the plot keeps only its guides/, note);
+    // The legend still lists the counts: the plot's title says they are not drawn.
+    const title = await page.locator('#emitters-plot .u-title').textContent();
+    assert.equal(title, 'Live particles: not counted on the GPU, guides only');
     await frames(page, 8);
     const guide = await page.evaluate(() => {
       const c = document.querySelector('#emitters-plot canvas');
