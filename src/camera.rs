@@ -116,6 +116,30 @@ impl OrbitCamera {
     }
 }
 
+impl OrbitCamera {
+    /// Keeps a panned flat figure in view: moves the target, in the view plane, just enough that
+    /// the box round `points` (seen from this direction) stays inside a canvas of `size_px`, or,
+    /// zoomed in past it, fills the canvas. Per axis, with `c ± b` the box and `v` the view's half
+    /// extent at the target's depth, the target stays within `c ± |b − v|`.
+    pub fn clamp_pan(&mut self, points: &[Vec3], size_px: Vec2) {
+        let view = self.view();
+        let (right, up) = (view.row(0).truncate(), view.row(1).truncate());
+        let on = |p: Vec3| Vec2::new(p.dot(right), p.dot(up));
+        let (lo, hi) = points
+            .iter()
+            .filter(|p| p.is_finite())
+            .fold((Vec2::MAX, Vec2::MIN), |(lo, hi), p| (lo.min(on(*p)), hi.max(on(*p))));
+        if !(lo.cmple(hi).all() && size_px.y > 0.0) {
+            return;
+        }
+        let v = self.distance * (0.5 * self.fov_y_rad).tan() * Vec2::new(size_px.x / size_px.y, 1.0);
+        let (c, b, t) = (0.5 * (lo + hi), 0.5 * (hi - lo), on(self.target));
+        let slack = (b - v).abs();
+        let d = t.clamp(c - slack, c + slack) - t;
+        self.target += right * d.x + up * d.y;
+    }
+}
+
 /// Space kept between the points a camera fits and the canvas's edges, CSS pixels (room for a
 /// label beside an anchor near the edge).
 pub const FIT_PAD_PX: f32 = 32.0;

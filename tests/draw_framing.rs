@@ -468,3 +468,45 @@ fn the_skinned_tubes_fill_the_width_above_the_inset() {
         }
     }
 }
+
+#[test]
+fn a_panned_flat_figure_keeps_its_box_in_view() {
+    // A flat figure (seen square-on) fitted to its box, then dragged ten canvases away: the box
+    // stays inside the canvas. Zoomed in past the box, a drag stops where the box's edge meets
+    // the canvas's. A drag within that room moves the view as far as it was dragged.
+    let points = corners(Vec3::ZERO, Vec3::new(2.0, 1.0, 0.0));
+    for size in SIZES {
+        let canvas_box = |camera: &OrbitCamera| {
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let px: Vec<Vec2> = points
+                .iter()
+                .map(|p| project_to_canvas(view_proj, size, *p).unwrap())
+                .collect();
+            let lo = px.iter().fold(Vec2::MAX, |m, p| m.min(*p));
+            (lo, px.iter().fold(Vec2::MIN, |m, p| m.max(*p)))
+        };
+        // Along each axis the box lies inside the canvas or, larger, covers it.
+        let in_view = |(lo, hi): (Vec2, Vec2)| {
+            let inside = lo.cmpge(Vec2::splat(-0.5)) & hi.cmple(size + 0.5);
+            let covers = lo.cmple(Vec2::splat(0.5)) & hi.cmpge(size - 0.5);
+            assert!((inside | covers).all(), "{size}: {lo} to {hi}");
+            covers.any()
+        };
+        let mut camera = OrbitCamera::from_view([1.0, 0.5, 0.0, 3.0, 0.0, 0.0]);
+        assert!(camera.fit(&points, size, FIT_PAD_PX));
+        for (dx, dy) in [(10.0, 10.0), (-10.0, 3.0), (0.0, -10.0)] {
+            camera.drag(dx * size.x, dy * size.y, size.y, true);
+            camera.clamp_pan(&points, size);
+            in_view(canvas_box(&camera));
+        }
+        camera.zoom(0.3);
+        camera.drag(10.0 * size.x, -10.0 * size.y, size.y, true);
+        camera.clamp_pan(&points, size);
+        assert!(in_view(canvas_box(&camera)), "{size}: zoomed in, the box covers the canvas");
+        let before = camera.target;
+        camera.drag(-20.0, 0.0, size.y, true);
+        camera.clamp_pan(&points, size);
+        let moved = (camera.target - before).length() / camera.distance * size.y;
+        assert!((moved - 20.0).abs() < 0.1, "{size}: moved {moved} px of 20");
+    }
+}

@@ -1235,3 +1235,20 @@ fn the_flag_note_advises_only_what_the_panel_can_still_do() {
     assert!(!note.contains("ower the stiffness"), "{note}");
     assert!(rows(&f).iter().any(|r| r[3] > 50.0 || r[4] > 50.0), "{note}");
 }
+
+#[test]
+fn the_mass_spring_curve_runs_up_to_its_explosion() {
+    // ω h = 5 explodes the mass-spring particle within a few steps: its plotted distance runs
+    // from the start to where it flew off (past 4 m) and stops there; XPBD's goes on.
+    let mut f = SpringFigure::new();
+    f.set_stiffness(316.0).unwrap();
+    f.set_damping(0.79).unwrap();
+    f.set_step_ms(63.7).unwrap();
+    let at = f.exploded_at_sec().unwrap();
+    let samples = f.length_samples();
+    let rows: Vec<&[f32]> = samples.chunks(3).collect();
+    let k = rows.iter().position(|r| (r[0] - at).abs() < 1e-4).unwrap();
+    assert!(k >= 1 && rows[k][1] > 4.0 && rows[k][1].is_finite(), "{:?}", &rows[..=k]);
+    assert!(rows[..k].iter().all(|r| r[1] < 4.0));
+    assert!(rows[k + 1..].iter().all(|r| r[1].is_nan() && r[2].is_finite()));
+}

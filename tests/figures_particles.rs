@@ -118,6 +118,16 @@ fn a_fast_fountain_keeps_flowing_beside_the_explosions() {
         note.contains(&format!("its particles live {l:.2} s")),
         "{note}"
     );
+    // The note's numbers check out: the span the fountain's slots hold is 1.2 × the lifetime,
+    // within those slots at the rate, and no more than a step and two slots short of them.
+    let hold = format!("{:.2}", 1.2 * l);
+    assert!(
+        note.contains(&format!("The fountain's 1,200 hold {hold} s of it")),
+        "{note}"
+    );
+    let hold: f32 = hold.parse().unwrap();
+    let span = FOUNTAIN_SLOTS as f32 / 1000.0;
+    assert!(hold <= span && hold >= span - SIM_DT - 0.002 - 0.005, "{hold}");
     // The dashed guide the note names is the plot's: rate × the lifetime the particles live.
     let guide = scene.count_samples()[3];
     assert!(

@@ -679,6 +679,25 @@ fn a_push_is_replayed_and_reset_forgets_it() {
 }
 
 #[test]
+fn the_note_names_a_push_once_it_shows() {
+    // The note's state and plots are those recorded before a push's step: at a push's own time
+    // (or earlier, replayed) the note says it comes; from the next step on, that it happened.
+    let mut d = StackFigure::new(StackPreset::Dominoes);
+    d.advance_to(0.5).unwrap();
+    d.push().unwrap();
+    let note = |d: &mut StackFigure, t: f32| {
+        d.advance_to(t).unwrap();
+        d.draw(&mut Frame::default())
+    };
+    for t in [0.0, 0.5] {
+        let n = note(&mut d, t);
+        assert!(!n.contains("Pushed") && n.contains("A push comes at t = 0.50 s."), "{n}");
+    }
+    let n = note(&mut d, 0.6);
+    assert!(n.contains("Pushed once.") && !n.contains("A push comes"), "{n}");
+}
+
+#[test]
 fn the_solver_settings_are_checked_before_any_is_changed() {
     let mut f = StackFigure::new(StackPreset::Stack);
     f.advance_to(1.0).unwrap();
@@ -1005,8 +1024,14 @@ fn the_throw_is_framed_round_its_flight_so_the_box_reads() {
                 f.advance_to(f.duration_sec() * k as f32 / 12.0).unwrap();
                 let mut frame = Frame::default();
                 f.draw(&mut frame);
+                // As the viewer: with an inset, the figure fits left of its square.
                 let mut camera = OrbitCamera::default();
-                camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+                let left = inbetween::draw::inset::inset_rect(size).min.x;
+                let beside = frame.inset.is_some()
+                    && camera.fit_left_of(&frame.fit_points(), size, left, FIT_PAD_PX);
+                if !beside {
+                    camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+                }
                 let view_proj = camera.projection(size.x / size.y) * camera.view();
                 let at = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
                 let model = frame.meshes[0].model;
@@ -1493,6 +1518,40 @@ fn the_impact_note_reads_rounding_leftovers_as_zero() {
             let mut f = dropped(tilt, 0.0, height);
             let note = f.draw(&mut Frame::default());
             assert!(!note.contains("e-"), "tilt {tilt}, height {height}: {note}");
+        }
+    }
+}
+
+#[test]
+fn the_throws_omega_tip_reach_bounds_its_trail_and_is_reached() {
+    // The reach the view and the inset are framed with: ω's drawn tip stays within it through
+    // the flight and comes close to it (a flight is a wobble or more), for spins and tilts
+    // across the sliders.
+    use inbetween::figures::rigid_body::{THROW_ARROW_M, THROW_L_M};
+    for (spin, tilt) in [(10.0, 20.0), (3.0, 63.0), (15.0, 80.0), (5.0, 50.0), (10.0, 0.5)] {
+        let mut f = ThrowFigure::new();
+        f.set_throw(spin, tilt).unwrap();
+        let reach = f.omega_tip_reach();
+        f.advance_to(f.duration_sec()).unwrap();
+        let l = f.body().angular_momentum().normalize();
+        let far = f
+            .omegas()
+            .iter()
+            .map(|w| THROW_ARROW_M * w.reject_from(l).length() / w.dot(l))
+            .fold(0.0, f32::max);
+        let what = format!("spin {spin}, tilt {tilt}: reach {reach} m, trail out to {far} m");
+        assert!(far <= reach * 1.01 + 1e-3, "{what}");
+        assert!(far >= 0.9 * reach, "{what}");
+        // The inset from above holds the whole trail and L's tip, round the box now.
+        let mut frame = Frame::default();
+        f.draw(&mut frame);
+        let at = f.body().position;
+        let scale = THROW_ARROW_M / f.omegas()[0].dot(l);
+        let inset = frame.inset.as_ref().unwrap();
+        let tips = f.omegas().iter().map(|w| at + scale * *w);
+        for p in tips.chain([at, at + THROW_L_M * l]) {
+            let inside = p.cmpge(inset.min - 1e-3).all() && p.cmple(inset.max + 1e-3).all();
+            assert!(inside, "{what}: {p} outside the inset's {inset:?}");
         }
     }
 }

@@ -34,6 +34,9 @@ if (emitterViewer) {
     try {
       scene.setGpu(emitterViewer, v === 'GPU');
       sortControl.enable(v !== 'GPU');
+      // The plot's legend still lists the counts, which the GPU does not give: its title says so.
+      document.querySelector('#emitters-plot .u-title').textContent = v === 'GPU'
+        ? 'Live particles: not counted on the GPU, guides only' : 'Live particles';
     } catch (e) { rejected = e.message; }
   });
   if (!hasCompute) onControl.disable();

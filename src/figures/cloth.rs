@@ -1362,6 +1362,9 @@ pub struct SpringFigure {
     /// The step at which the mass-spring particle flew off (more than 4 m from its anchor, or not
     /// finite).
     exploded_at: Option<usize>,
+    /// Its distance from its anchor at that step (m; NaN if it held or the distance is not
+    /// finite): its plotted curve ends there.
+    flew_m: f32,
 }
 
 impl Default for SpringFigure {
@@ -1380,6 +1383,7 @@ impl SpringFigure {
             runner: DEFAULT_RUNNER,
             paths: Default::default(),
             exploded_at: None,
+            flew_m: f32::NAN,
         };
         f.integrate();
         f
@@ -1434,7 +1438,7 @@ impl SpringFigure {
         let steps = self.steps();
         let w = 1.0 / SPRING_MASS;
         let h = self.dt;
-        self.exploded_at = None;
+        (self.exploded_at, self.flew_m) = (None, f32::NAN);
         let student = self.use_exercise;
         let mut failed = [false; 3];
         // Left: forces and semi-implicit Euler.
@@ -1478,6 +1482,7 @@ impl SpringFigure {
             (p, v) = (q, u);
             if !p.is_finite() || (p - anchor).length() > 4.0 {
                 self.exploded_at = Some(step + 1);
+                self.flew_m = (p - anchor).length();
                 break;
             }
             path.push(p);
@@ -1513,15 +1518,16 @@ impl SpringFigure {
         }
     }
 
-    /// Plot samples, flat: `[t, length mass-spring (m), length XPBD (m)]` per step (NaN after an
-    /// explosion).
+    /// Plot samples, flat: `[t, length mass-spring (m), length XPBD (m)]` per step (the
+    /// mass-spring's curve ends at its explosion, past 4 m; NaN after it).
     pub fn length_samples(&self) -> Vec<f32> {
         let n = self.paths[1].len();
         let mut out = Vec::with_capacity(3 * n);
         for s in 0..n {
             out.push(s as f32 * self.dt);
             for (k, path) in self.paths.iter().enumerate() {
-                out.push(path.get(s).map_or(f32::NAN, |p| (*p - ANCHORS[k]).length()));
+                let flew = if k == 0 && self.exploded_at == Some(s) { self.flew_m } else { f32::NAN };
+                out.push(path.get(s).map_or(flew, |p| (*p - ANCHORS[k]).length()));
             }
         }
         out

@@ -693,11 +693,15 @@ impl EmitterFigure {
         if l < asked {
             let rate = self.emitters[0].rate_per_sec;
             note.push_str(&format!(
-                " A stream of {} particles/s living {asked:.2} s would need about {} slots, \
-                 so its particles live {l:.2} s: the fountain keeps flowing, its arcs end \
-                 sooner, and rate × lifetime (the plot's dashed guide) is {}.",
+                " A stream of {} particles/s living {asked:.2} s would need about {} slots. The \
+                 fountain's {} hold {:.2} s of it (less a step and two spare slots), and a \
+                 particle lives up to 1.2 × the set lifetime, so its particles live {l:.2} s \
+                 (± 20 %): the fountain keeps flowing, its arcs end sooner, and rate × \
+                 lifetime (the plot's dashed guide) is {}.",
                 with_commas(rate.round() as usize),
                 with_commas((rate * asked).round() as usize),
+                with_commas(fountain),
+                1.2 * l,
                 with_commas(self.steady_count().round() as usize),
             ));
         }

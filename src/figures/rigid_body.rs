@@ -21,6 +21,7 @@ use super::{
     DEFAULT_RUNNER,
 };
 use crate::camera::{project_to_canvas, OrbitCamera};
+use crate::draw::inset::InsetView;
 use crate::draw::{Label, MeshId, StrokeStyle, ARROW_PX, DOT_PX};
 use crate::exercises::run;
 use crate::rigid_body::contact::{corners, BroadPhase, Shape, World};
@@ -363,10 +364,10 @@ pub const THROW_VELOCITY: Vec3 = Vec3::new(1.0, 6.0, 0.0);
 pub const THROW_SUBSTEPS: usize = 50;
 /// ω is drawn at the scale that makes its component along `L` this long (m), so ω's tip moves on
 /// the plane across `L` this far from the centre.
-pub const THROW_ARROW_M: f32 = 1.0;
+pub const THROW_ARROW_M: f32 = 0.9;
 /// Length of the drawn `L` (m): half as long again as ω's reach along it, so that L's last third
 /// and its head stand clear past ω's tip, where ω lies a few degrees off L and hides the rest.
-pub const THROW_L_M: f32 = 1.5;
+pub const THROW_L_M: f32 = 1.35;
 
 /// The world direction of the thrown box's angular momentum: mostly up, leaning towards the
 /// default camera so the arrow and the cone around it are seen from the side.
@@ -568,6 +569,30 @@ impl ThrowFigure {
         &self.body
     }
 
+    /// How far ω's drawn tip gets from L's axis over the flight (m, on the plane across L at
+    /// [`THROW_ARROW_M`]). In the body, `L` keeps its length and `2E = Σ Lᵢ²/Iᵢ`; with
+    /// `uᵢ = Lᵢ²` both are linear in u, and so is `|ω|² = Σ uᵢ/Iᵢ²`: its largest value lies at an
+    /// end of that segment of u, where one `uₖ` is 0. ω's part along L is `2E/|L|` throughout.
+    pub fn omega_tip_reach(&self) -> f32 {
+        let b = self.first();
+        let (m, u) = (b.inertia, (b.inertia * b.omega_body).powf(2.0));
+        let (l2, e2) = (u.element_sum(), (u / m).element_sum());
+        let mut w2 = (u / (m * m)).element_sum();
+        for k in 0..3 {
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            let ui = (e2 - l2 / m[j]) / (1.0 / m[i] - 1.0 / m[j]);
+            if (0.0..=l2).contains(&ui) {
+                w2 = w2.max(ui / (m[i] * m[i]) + (l2 - ui) / (m[j] * m[j]));
+            }
+        }
+        let along = e2 / l2.sqrt();
+        if along > 0.0 {
+            THROW_ARROW_M * (w2 - along * along).max(0.0).sqrt() / along
+        } else {
+            0.0
+        }
+    }
+
     /// ω in the world at every step so far (rad/s).
     pub fn omegas(&self) -> &[Vec3] {
         &self.omegas
@@ -579,12 +604,18 @@ impl ThrowFigure {
         frame.grid(16, 0.25);
         let t_end = self.duration_sec();
         let apex = Self::parabola(0.5 * t_end);
-        // The flight only, not the floor: the parabola with the box round it (its half
-        // diagonal below) and ω's tip beside L (up to 1 m off L's axis), L standing above it.
-        let reach = Vec3::new(1.0, THROW_L_M, 1.0);
+        // The flight only, not the floor: the parabola with round each centre the box (its half
+        // diagonal), L's tip, and ω's trail (its reach round L's axis on the plane across L).
+        let l_dir = throw_l_direction();
+        let (d, r) = (THROW_HALF.length(), self.omega_tip_reach());
+        let (c, l_off) = (THROW_ARROW_M * l_dir, THROW_L_M * l_dir);
+        let (off_lo, off_hi) = (
+            (c - r).min(l_off).min(Vec3::splat(-d)),
+            (c + r).max(l_off).max(Vec3::splat(d)),
+        );
         frame.keep_box_in_view(
-            THROW_START.min(Self::parabola(t_end)) - reach.with_y(THROW_HALF.length()),
-            THROW_START.max(Self::parabola(t_end)).max(apex) + reach,
+            THROW_START.min(Self::parabola(t_end)) + off_lo,
+            THROW_START.max(Self::parabola(t_end)).max(apex) + off_hi,
         );
         let path: Vec<Vec3> = (0..=48)
             .map(|k| Self::parabola(t_end * k as f32 / 48.0))
@@ -604,7 +635,6 @@ impl ThrowFigure {
         let t = self.time_sec;
         let l = b.angular_momentum();
         let omega = b.omega_world();
-        let l_dir = throw_l_direction();
         let along = self.omegas[0].dot(l_dir);
         if self.spin == 0.0 || along <= 0.0 {
             return format!(
@@ -627,6 +657,13 @@ impl ThrowFigure {
         let w_head = (0.4 * (w_tip - at).length()).min(0.08);
         frame.wide_line(at, w_tip - w_head * (w_tip - at).normalize_or_zero(), palette::TEAL, THROW_SHAFT_PX);
         self.label_tips(frame, l_tip, w_tip);
+        // From above, nearly along L: L's tip stands still while ω's runs round it.
+        frame.inset(
+            InsetView::Top,
+            "from above",
+            (at + c - r).min(at - 0.3),
+            (at + c + r).max(l_tip),
+        );
         let row = self.history.last().copied().unwrap_or([0.0; 5]);
         let turned = angle_deg(omega, self.omegas[0]);
         let l0 = self.history[0][2];
@@ -1786,11 +1823,16 @@ impl StackFigure {
                 self.contact_points.len(),
             ),
         };
-        let pushes = match self.pushes.len() {
+        // A push shows from the step after it (the plots record each step before its pushes).
+        let done = self.pushes.iter().filter(|&&s| s < self.steps_done).count();
+        let mut pushes = match done {
             0 => String::new(),
             1 => " Pushed once.".to_string(),
             n => format!(" Pushed {n} times."),
         };
+        if let Some(s) = self.pushes.iter().filter(|&&s| s >= self.steps_done).min() {
+            pushes += &format!(" A push comes at t = {:.2} s.", *s as f32 * SIM_DT);
+        }
         let exploded = match self.exploded {
             Some(at) if self.gained_energy => format!(
                 " At t = {} s the bodies held more energy than the run ever had: the solver \

@@ -213,6 +213,9 @@ impl Viewer {
             if !fitted {
                 self.camera.fit(&points, size, pad);
             }
+        } else if self.flat && self.declares_view {
+            // A pan or zoom leaves the declared box in view.
+            self.camera.clamp_pan(&frame.fit_points(), glam::Vec2::new(w, h));
         }
         let view_proj = self.camera.projection(w / h) * self.camera.view();
         self.labels = crate::draw::project_labels(&self.renderer.frame.labels, view_proj, w, h);
