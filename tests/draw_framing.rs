@@ -502,7 +502,10 @@ fn a_panned_flat_figure_keeps_its_box_in_view() {
         camera.zoom(0.3);
         camera.drag(10.0 * size.x, -10.0 * size.y, size.y, true);
         camera.clamp_pan(&points, size);
-        assert!(in_view(canvas_box(&camera)), "{size}: zoomed in, the box covers the canvas");
+        assert!(
+            in_view(canvas_box(&camera)),
+            "{size}: zoomed in, the box covers the canvas"
+        );
         let before = camera.target;
         camera.drag(-20.0, 0.0, size.y, true);
         camera.clamp_pan(&points, size);
