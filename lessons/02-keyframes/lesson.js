@@ -282,6 +282,22 @@ function edit(action) {
   }
   refresh();
 }
+
+// Every keys select (Figure 1's and each panel's "keys (all figures)") shows the preset the shared
+// keys come from, or none once a key is edited by hand: a panel never names keys its figure does not draw.
+const presetShows = [];
+const showPreset = (v) => { for (const show of presetShows) show(v); };
+/** Loads preset `v` ('' loads none) into the shared keys and shows it in every keys select. */
+function loadPreset(v) {
+  if (v) edit(() => scene.loadPreset(v));
+  showPreset(v);
+}
+/** Adds a lil-gui "keys (all figures)" select for `state.preset` to `gui`, kept in step with the others. */
+function addPresetControl(gui, state) {
+  const c = gui.add(state, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
+    .name('keys (all figures)').onChange(loadPreset);
+  presetShows.push((v) => { state.preset = v; c.updateDisplay(); });
+}
 function refresh() {
   timeline.start = scene.startSec;
   timeline.duration = scene.loopSec;
@@ -460,6 +476,7 @@ if (keysViewer) {
   });
   canvas.addEventListener('pointermove', (e) => {
     if (!drag) return;
+    showPreset('');
     const [px, py] = local(e);
     const [x, y] = view.toWorld(px, py);
     const k = drag.index;
@@ -490,6 +507,7 @@ if (keysViewer) {
   canvas.addEventListener('dblclick', (e) => {
     const [px, py] = local(e);
     if (py > view.h - STRIP) return;
+    showPreset('');
     const target = hit(px, py);
     if (target?.kind === 'key') {
       if (keyCount() <= 2) { message.textContent = 'A motion needs at least two keys here.'; return; }
@@ -530,16 +548,17 @@ if (keysViewer) {
 
   const figure = document.getElementById('fig-keys');
   const presetSelect = figure.querySelector('.preset');
+  presetShows.push((v) => { presetSelect.value = v; });
   presetSelect.addEventListener('change', () => {
     if (!presetSelect.value) return;
-    edit(() => scene.loadPreset(presetSelect.value));
+    loadPreset(presetSelect.value);
     fitView();
   });
   figure.querySelector('.fit').addEventListener('click', fitView);
   figure.querySelector('.reset').addEventListener('click', () => {
     p.scheme = 'cardinal'; p.tension = 1;
     gui.controllersRecursive().forEach((c) => c.updateDisplay());
-    presetSelect.value = '';
+    showPreset('');
     edit(() => { scene.setTension(1); scene.setScheme('cardinal'); scene.loadPreset('default'); });
     view.box = { x0: -3.3, x1: 3.3, y0: -0.5, y1: 2.7 };
     view.layout();
@@ -622,8 +641,7 @@ function compareFigure(id) {
   }
   gui.add(q, 'a', SCHEMES).name('A (blue)').onChange(sync);
   gui.add(q, 'b', SCHEMES).name('B (pink)').onChange(sync);
-  gui.add(q, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
-    .name('keys (all figures)').onChange((v) => { if (v) edit(() => scene.loadPreset(v)); });
+  addPresetControl(gui, q);
   listen(sync);
   lesson.onFrame(() => {
     const tau = timeline.time;
@@ -830,8 +848,7 @@ if (lagrangeViewer) {
   gui.add(p, 'ease', EASES).name('ease (slow in / out)').onChange((v) => edit(() => scene.setEase(v)));
   gui.add(p, 'arcLength').name('Figure 1 at constant speed').onChange((v) => edit(() => scene.setArcLength(v)));
   const tp = { preset: '' };
-  gui.add(tp, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
-    .name('keys (all figures)').onChange((v) => { if (v) edit(() => scene.loadPreset(v)); });
+  addPresetControl(gui, tp);
   const speedPlot = new Plot(document.getElementById('keys-speed'), {
     title: 'Speed |p′(t)|', xLabel: 'time (s)', yLabel: 'speed (m/s)',
     series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1,

@@ -2,7 +2,7 @@
 // both page sizes (the two per-pixel totals side by side; at 800 x 600 the sphere, the six images
 // and the shininess slider on one screen; at 1600 x 1000 the images in one row), Figure 1's
 // segments slider off for the tetrahedron, Figure 2's refused z_far explained under its box; lesson 02's
-// Figure 7 inset, magnifying the loop of the loop-prone keys.
+// Figure 7 inset, magnifying the loop of the loop-prone keys; its keys selects kept in step.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, frames, setControl, serveDist, openPage } from './browser.mjs';
@@ -77,6 +77,31 @@ test('lesson 02: Figure 7 magnifies the loop-prone loop in an inset, and shows n
     // The loop, about 3 cm and a few pixels across in the view, at least 60 px across in the inset.
     const px = Number(await canvas.getAttribute('data-loop-px'));
     assert.ok(px >= 60, `the loop is ${px} px across in the inset`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 02: every keys select names the preset the shared keys come from', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2`, { width: 1600, height: 1000 });
+    // Figure 1's select and each panel's "keys (all figures)": the value each one shows.
+    const shown = () => page.evaluate(() => {
+      const selects = [document.querySelector('#fig-keys select.preset'),
+        ...[...document.querySelectorAll('.lil-controller')].filter((c) => c.textContent.includes('keys (all figures)')).map((c) => c.querySelector('select'))];
+      return selects.map((s) => [s.closest('.figure')?.id, s.selectedIndex < 0 ? null : s.options[s.selectedIndex].textContent]);
+    });
+    const panels = (await shown()).length;
+    assert.ok(panels >= 5, `Figure 1's select and four panels' ${JSON.stringify(await shown())}`);
+    for (const [figure, option, name] of [['#fig-step', 'loop-prone', /^loop-prone/], ['#fig-timing', 'default', /^default/], ['#fig-keys', 'uneven', /^uneven times/]]) {
+      if (figure === '#fig-keys') await page.locator('#fig-keys select.preset').selectOption(option);
+      else await setControl(page, figure, 'keys (all figures)', option);
+      await frames(page);
+      const all = await shown();
+      assert.ok(all.every(([, text]) => name.test(text)), `after ${figure} chose ${option}: ${JSON.stringify(all)}`);
+    }
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
