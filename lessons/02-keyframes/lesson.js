@@ -116,6 +116,20 @@ function makeView(canvas, reserveBottom = 0) {
     ctx.fillStyle = color;
     ctx.beginPath(); ctx.arc(px, py, r, 0, 2 * Math.PI); ctx.fill();
   };
+  /**
+   * In-between dots `[x0, y0, …]` moved by `[dx, dy]`, grey, `r` px across at most: smaller where
+   * neighbours crowd (0.4 of the closest spacing, 1.5 px at least), so a dense run stays a row of
+   * dots. Drawn before their curve, which runs through them on top.
+   */
+  v.ghosts = (xy, [dx, dy], r) => {
+    const px = [];
+    for (let i = 0; i < xy.length; i += 2) px.push(v.toPx(xy[i] + dx, xy[i + 1] + dy));
+    let gap = Infinity;
+    for (let i = 1; i < px.length; i++) gap = Math.min(gap, Math.hypot(px[i][0] - px[i - 1][0], px[i][1] - px[i - 1][1]));
+    const radius = Math.max(1.5, Math.min(r, 0.4 * gap));
+    ctx.fillStyle = C.ghost;
+    for (const [x, y] of px) { ctx.beginPath(); ctx.arc(x, y, radius, 0, 2 * Math.PI); ctx.fill(); }
+  };
   /** A ball: a dot with a white rim, which sets it apart from the key and held dots under it. */
   v.ball = (x, y, r, color) => {
     v.dot(x, y, r, color);
@@ -805,8 +819,8 @@ if (lagrangeViewer) {
     const n = keys.length / 3;
     sides.forEach((side, j) => {
       const [dx, dy] = [j * ox, j * oy];
+      view.ghosts(side.ghosts, [dx, dy], 3);
       view.path(shifted(side.path, [dx, dy]), side.color);
-      for (let i = 0; i < side.ghosts.length; i += 2) view.dot(side.ghosts[i] + dx, side.ghosts[i + 1] + dy, 3, C.ghost);
       for (let k = 0; k < n; k++) {
         const [x, y] = [keys[3 * k + 1] + dx, keys[3 * k + 2] + dy];
         const [b, a] = [Math.max(0, k - 1), Math.min(n - 1, k + 1)];
@@ -906,8 +920,8 @@ if (lagrangeViewer) {
     [['keyed', C.path, 'keyed timing'], ['even', C.ball, 'constant speed']].forEach(([name, color, title], j) => {
       const off = [j * layers.off[0], j * layers.off[1]];
       const { path, ghosts } = layers[name];
+      view.ghosts(ghosts, off, 3.5);
       view.path(shifted(path, off), color, layers.held);
-      for (let i = 0; i < ghosts.length; i += 2) view.dot(ghosts[i] + off[0], ghosts[i + 1] + off[1], 3.5, C.ghost);
       const [x, y] = twins[name].position(tau);
       view.dot(x + off[0], y + off[1], 7, color);
       let top = -Infinity; let [x0, x1] = [Infinity, -Infinity];
