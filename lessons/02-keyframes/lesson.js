@@ -118,15 +118,15 @@ function makeView(canvas, reserveBottom = 0) {
   };
   /**
    * In-between dots `[x0, y0, …]` moved by `[dx, dy]`, grey, `r` px across at most: smaller where
-   * neighbours crowd (0.4 of the closest spacing, 1.5 px at least), so a dense run stays a row of
-   * dots. Drawn before their curve, which runs through them on top.
+   * neighbours crowd (half the closest spacing, 2.5 px at least: wider than the curve drawn over
+   * them, so each still shows beside it). Drawn before their curve, which runs through them on top.
    */
   v.ghosts = (xy, [dx, dy], r) => {
     const px = [];
     for (let i = 0; i < xy.length; i += 2) px.push(v.toPx(xy[i] + dx, xy[i + 1] + dy));
     let gap = Infinity;
     for (let i = 1; i < px.length; i++) gap = Math.min(gap, Math.hypot(px[i][0] - px[i - 1][0], px[i][1] - px[i - 1][1]));
-    const radius = Math.max(1.5, Math.min(r, 0.4 * gap));
+    const radius = Math.max(2.5, Math.min(r, 0.5 * gap));
     ctx.fillStyle = C.ghost;
     for (const [x, y] of px) { ctx.beginPath(); ctx.arc(x, y, radius, 0, 2 * Math.PI); ctx.fill(); }
   };
