@@ -442,6 +442,24 @@ fn the_lagrange_graph_has_labelled_axes_and_passes_through_its_keys() {
     let _ = Interpolation::Lagrange;
 }
 
+/// The Lagrange graph strokes its axes after its curves: a later stroke covers an earlier one at
+/// the same depth, so the polynomial that runs up along the value axis (10 keys, between 1 and
+/// 3.4 m) does not hide the axis and its ticks.
+#[test]
+fn the_lagrange_axes_are_stroked_over_the_curves() {
+    let mut frame = Frame::default();
+    LagrangeScene::new().draw(&mut frame);
+    let rgb = |c: [f32; 4]| Vec3::new(c[0], c[1], c[2]);
+    let dark = inbetween::draw::palette::DARK;
+    let curves = [LAGRANGE_BASE, LAGRANGE_MORE, LAGRANGE_SPLINE];
+    let last_curve = frame.strokes.iter().rposition(|s| curves.contains(&rgb(s.color)));
+    let first_axis = frame.strokes.iter().position(|s| rgb(s.color) == dark);
+    assert!(
+        matches!((last_curve, first_axis), (Some(c), Some(a)) if a > c),
+        "last curve stroke {last_curve:?}, first axis stroke {first_axis:?}"
+    );
+}
+
 /// The Lagrange graph declares its axes and their labels for the camera's fit, so that after an
 /// orbit (lessons/02-keyframes/lesson.js: target (0.15, 1.4, 0), distance 6.5, yaw 0, pitch 0)
 /// the value axis's foot stays on the canvas: every label's anchor and both axes' ends lie on

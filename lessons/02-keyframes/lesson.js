@@ -126,6 +126,20 @@ function makeView(canvas, reserveBottom = 0) {
     ctx.fillStyle = color;
     ctx.beginPath(); ctx.arc(px, py, r, 0, 2 * Math.PI); ctx.fill();
   };
+  /**
+   * In-between dots `[x0, y0, …]` moved by `[dx, dy]`, grey, `r` px across at most: smaller where
+   * neighbours crowd (half the closest spacing, 2.5 px at least: wider than the curve drawn over
+   * them, so each still shows beside it). Drawn before their curve, which runs through them on top.
+   */
+  v.ghosts = (xy, [dx, dy], r) => {
+    const px = [];
+    for (let i = 0; i < xy.length; i += 2) px.push(v.toPx(xy[i] + dx, xy[i + 1] + dy));
+    let gap = Infinity;
+    for (let i = 1; i < px.length; i++) gap = Math.min(gap, Math.hypot(px[i][0] - px[i - 1][0], px[i][1] - px[i - 1][1]));
+    const radius = Math.max(2.5, Math.min(r, 0.5 * gap));
+    ctx.fillStyle = C.ghost;
+    for (const [x, y] of px) { ctx.beginPath(); ctx.arc(x, y, radius, 0, 2 * Math.PI); ctx.fill(); }
+  };
   /** A ball: a dot with a white rim, which sets it apart from the key and held dots under it. */
   v.ball = (x, y, r, color) => {
     v.dot(x, y, r, color);
@@ -291,6 +305,22 @@ function edit(action) {
     message.textContent = `Edit rejected: ${e.message ?? e}`;
   }
   refresh();
+}
+
+// Every keys select (Figure 1's and each panel's "keys (all figures)") shows the preset the shared
+// keys come from, or none once a key is edited by hand: a panel never names keys its figure does not draw.
+const presetShows = [];
+const showPreset = (v) => { for (const show of presetShows) show(v); };
+/** Loads preset `v` ('' loads none) into the shared keys and shows it in every keys select. */
+function loadPreset(v) {
+  if (v) edit(() => scene.loadPreset(v));
+  showPreset(v);
+}
+/** Adds a lil-gui "keys (all figures)" select for `state.preset` to `gui`, kept in step with the others. */
+function addPresetControl(gui, state) {
+  const c = gui.add(state, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
+    .name('keys (all figures)').onChange(loadPreset);
+  presetShows.push((v) => { state.preset = v; c.updateDisplay(); });
 }
 function refresh() {
   timeline.start = scene.startSec;
@@ -472,6 +502,7 @@ if (keysViewer) {
   });
   canvas.addEventListener('pointermove', (e) => {
     if (!drag) return;
+    showPreset('');
     const [px, py] = local(e);
     const [x, y] = view.toWorld(px, py);
     const k = drag.index;
@@ -502,6 +533,7 @@ if (keysViewer) {
   canvas.addEventListener('dblclick', (e) => {
     const [px, py] = local(e);
     if (py > view.h - STRIP) return;
+    showPreset('');
     const target = hit(px, py);
     if (target?.kind === 'key') {
       if (keyCount() <= 2) { message.textContent = 'A motion needs at least two keys here.'; return; }
@@ -542,16 +574,17 @@ if (keysViewer) {
 
   const figure = document.getElementById('fig-keys');
   const presetSelect = figure.querySelector('.preset');
+  presetShows.push((v) => { presetSelect.value = v; });
   presetSelect.addEventListener('change', () => {
     if (!presetSelect.value) return;
-    edit(() => scene.loadPreset(presetSelect.value));
+    loadPreset(presetSelect.value);
     fitView();
   });
   figure.querySelector('.fit').addEventListener('click', fitView);
   figure.querySelector('.reset').addEventListener('click', () => {
     p.scheme = 'cardinal'; p.tension = 1;
     gui.controllersRecursive().forEach((c) => c.updateDisplay());
-    presetSelect.value = '';
+    showPreset('');
     edit(() => { scene.setTension(1); scene.setScheme('cardinal'); scene.loadPreset('default'); });
     view.box = { x0: -3.3, x1: 3.3, y0: -0.5, y1: 2.7 };
     view.layout();
@@ -636,8 +669,7 @@ function compareFigure(id) {
   }
   gui.add(q, 'a', SCHEMES).name('A (blue)').onChange(sync);
   gui.add(q, 'b', SCHEMES).name('B (pink)').onChange(sync);
-  gui.add(q, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
-    .name('keys (all figures)').onChange((v) => { if (v) edit(() => scene.loadPreset(v)); });
+  addPresetControl(gui, q);
   listen(sync);
   lesson.onFrame(() => {
     const tau = timeline.time;
@@ -804,8 +836,8 @@ if (lagrangeViewer) {
     const n = keys.length / 3;
     sides.forEach((side, j) => {
       const [dx, dy] = [j * ox, j * oy];
+      view.ghosts(side.ghosts, [dx, dy], 3);
       view.path(shifted(side.path, [dx, dy]), side.color);
-      for (let i = 0; i < side.ghosts.length; i += 2) view.dot(side.ghosts[i] + dx, side.ghosts[i + 1] + dy, 3, C.ghost);
       for (let k = 0; k < n; k++) {
         const [x, y] = [keys[3 * k + 1] + dx, keys[3 * k + 2] + dy];
         const [b, a] = [Math.max(0, k - 1), Math.min(n - 1, k + 1)];
@@ -847,8 +879,7 @@ if (lagrangeViewer) {
   gui.add(p, 'ease', EASES).name('ease (slow in / out)').onChange((v) => edit(() => scene.setEase(v)));
   gui.add(p, 'arcLength').name('Figure 1 at constant speed').onChange((v) => edit(() => scene.setArcLength(v)));
   const tp = { preset: '' };
-  gui.add(tp, 'preset', { "Figure 1's keys": '', default: 'default', 'loop-prone': 'loop', 'uneven times': 'uneven', 'zig-zag': 'centripetal' })
-    .name('keys (all figures)').onChange((v) => { if (v) edit(() => scene.loadPreset(v)); });
+  addPresetControl(gui, tp);
   const speedPlot = new Plot(document.getElementById('keys-speed'), {
     title: 'Speed |p′(t)|', xLabel: 'time (s)', yLabel: 'speed (m/s)',
     series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1,
@@ -906,8 +937,8 @@ if (lagrangeViewer) {
     [['keyed', C.path, 'keyed timing'], ['even', C.ball, 'constant speed']].forEach(([name, color, title], j) => {
       const off = [j * layers.off[0], j * layers.off[1]];
       const { path, ghosts } = layers[name];
+      view.ghosts(ghosts, off, 3.5);
       view.path(shifted(path, off), color, layers.held);
-      for (let i = 0; i < ghosts.length; i += 2) view.dot(ghosts[i] + off[0], ghosts[i + 1] + off[1], 3.5, C.ghost);
       const [x, y] = twins[name].position(tau);
       view.dot(x + off[0], y + off[1], 7, color);
       let top = -Infinity; let [x0, x1] = [Infinity, -Infinity];

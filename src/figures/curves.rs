@@ -1085,6 +1085,9 @@ pub struct LagrangeScene {
     more: Vec<Vec<Vec3>>,
     spline: Vec<Vec<Vec3>>,
     note: String,
+    /// The last frame's view-projection and canvas size (CSS pixels): the time axis's numbers
+    /// are placed off the curves for it.
+    view: Option<(Mat4, Vec2)>,
 }
 
 /// Colours of the Lagrange figure: blue through `n` keys, red through `n + 2`, green spline.
@@ -1114,6 +1117,7 @@ impl LagrangeScene {
             more: Vec::new(),
             spline: Vec::new(),
             note: String::new(),
+            view: None,
         };
         scene.rebuild().expect("valid default keys");
         scene
@@ -1131,6 +1135,14 @@ impl LagrangeScene {
             return Err(e);
         }
         Ok(())
+    }
+
+    /// The camera of the frame the page draws next, on a `width_px × height_px` canvas.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            let view_proj = camera.projection(width_px / height_px) * camera.view();
+            self.view = Some((view_proj, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// Also draw a Catmull-Rom spline through the larger set of keys, for comparison.
@@ -1175,7 +1187,6 @@ impl LagrangeScene {
         // A graph in the plane z = 0, seen straight on: a drag pans it rather than turning it
         // edge-on.
         frame.flat = true;
-        self.draw_axes(frame);
         // Wide curves, each narrower than the one under it: where two run together (blue
         // under green at 10 keys), the lower one shows as a rim on both sides.
         let spline: &[Vec<Vec3>] = if self.show_spline { &self.spline } else { &[] };
@@ -1198,10 +1209,16 @@ impl LagrangeScene {
             };
             frame.marker(self.place(*t, *y), size, color);
         }
+        // The axes after the curves: a stroke drawn later covers one at the same depth, so the
+        // polynomial that runs along the value axis does not hide it.
+        self.draw_axes(frame);
     }
 
     /// A time axis along y = 0 with a tick and a label every second, a value axis at t = 0 with
-    /// a tick every metre, each named with its quantity and unit.
+    /// a tick every metre, each named with its quantity and unit. Each time number goes to the
+    /// first place round its tick (below first, then above, then further out) that the curves
+    /// already in `frame` leave clear on the last view's canvas: the polynomial plunges through
+    /// the axis between keys.
     fn draw_axes(&self, frame: &mut Frame) {
         let axis = palette::DARK;
         let last = (self.keys - 1) as f32;
@@ -1218,7 +1235,10 @@ impl LagrangeScene {
         for t in (0..self.keys).step_by(step) {
             let p = self.place(t as f32, 0.0);
             frame.line(p - Vec3::Y * tick, p + Vec3::Y * tick, axis);
-            frame.label(p - Vec3::Y * 0.22, format!("{t}"), axis);
+            let text = format!("{t}");
+            let around =
+                crate::draw::Label::around_dot(p, 8.0, Vec2::new(0.3, 1.0), &text, axis, 0, 3, 6.0);
+            frame.first_clear_label_by(self.view, 2.0, around, |_| true);
         }
         // The value ticks' numbers left of the axis, clear of the key dot at t = 0; the time
         // axis's "0" under the origin names both zeros.

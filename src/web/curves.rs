@@ -311,6 +311,9 @@ impl LagrangeScene {
     }
 
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<(), JsError> {
+        // The time axis's numbers are placed for the last frame's view.
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         self.scene.draw(&mut viewer.renderer.frame);
         viewer.present()
     }

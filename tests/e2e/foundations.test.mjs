@@ -2,7 +2,8 @@
 // both page sizes (the two per-pixel totals side by side; at 800 x 600 the sphere, the six images
 // and the shininess slider on one screen; at 1600 x 1000 the images in one row), Figure 1's
 // segments slider off for the tetrahedron, Figure 2's refused z_far explained under its box; lesson 02's
-// Figure 7 inset, magnifying the loop of the loop-prone keys.
+// Figure 7 inset, magnifying the loop of the loop-prone keys; its keys selects kept in step; Figures 5
+// and 8's curves over their in-between dots.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, frames, setControl, serveDist, openPage } from './browser.mjs';
@@ -134,6 +135,68 @@ test('lesson 02: notes give the numbers Figures 3, 7 and 9 name; zoom to fit kee
       const [px, py] = await ed(`keyPx(${k})`);
       const inside = px >= 24 && px <= box.width - 24 && py >= 24 && py <= box.height - 46 - 24;
       assert.ok(inside, `key ${k} at ${[px, py]} on ${box.width} x ${box.height}`);
+    }
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 02: every keys select names the preset the shared keys come from', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2`, { width: 1600, height: 1000 });
+    // Figure 1's select and each panel's "keys (all figures)": the value each one shows.
+    const shown = () => page.evaluate(() => {
+      const selects = [document.querySelector('#fig-keys select.preset'),
+        ...[...document.querySelectorAll('.lil-controller')].filter((c) => c.textContent.includes('keys (all figures)')).map((c) => c.querySelector('select'))];
+      return selects.map((s) => [s.closest('.figure')?.id, s.selectedIndex < 0 ? null : s.options[s.selectedIndex].textContent]);
+    });
+    const panels = (await shown()).length;
+    assert.ok(panels >= 5, `Figure 1's select and four panels' ${JSON.stringify(await shown())}`);
+    for (const [figure, option, name] of [['#fig-step', 'loop-prone', /^loop-prone/], ['#fig-timing', 'default', /^default/], ['#fig-keys', 'uneven', /^uneven times/]]) {
+      if (figure === '#fig-keys') await page.locator('#fig-keys select.preset').selectOption(option);
+      else await setControl(page, figure, 'keys (all figures)', option);
+      await frames(page);
+      const all = await shown();
+      assert.ok(all.every(([, text]) => name.test(text)), `after ${figure} chose ${option}: ${JSON.stringify(all)}`);
+    }
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('lesson 02: Figures 5 and 8 draw their curves over the grey in-between dots', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2`, { width: 1600, height: 1000 });
+    // Every column of the 2D view that holds in-between grey has a curve's colour within 4 px (a
+    // dot at a curve's end reaches past it): a run of dots drawn over the curve hides it for its
+    // whole length (Figure 5's 2.5 s segment). Columns within 8 px of an orange key dot are left out (a key covers its curve, and its chords start
+    // there), and a teal tangent arrow, drawn over the curve, counts as covering it.
+    for (const [figure, curves] of [['#fig-cardinal', ['#1f6fd6', '#e35d9c']], ['#fig-timing', ['#1f6fd6', '#d62728']]]) {
+      const canvas = page.locator(`${figure} canvas.view2d`);
+      await canvas.evaluate((c) => c.scrollIntoView());
+      await frames(page, 3);
+      const hidden = await canvas.evaluate((c, curves) => {
+        const { width, height } = c;
+        const data = c.getContext('2d').getImageData(0, 0, width, height).data;
+        const rgb = curves.map((h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16)));
+        const near = (k, [r, g, b], tol) => Math.abs(data[k] - r) <= tol && Math.abs(data[k + 1] - g) <= tol && Math.abs(data[k + 2] - b) <= tol;
+        const [grey, curve, key] = [[], [], []];
+        for (let x = 0; x < width; x++) {
+          for (let y = 0; y < height; y++) {
+            const k = 4 * (y * width + x);
+            grey[x] ||= near(k, [127, 127, 127], 6);
+            curve[x] ||= [...rgb, [23, 162, 168]].some((c) => near(k, c, 40));
+            key[x] ||= near(k, [230, 138, 0], 30);
+          }
+        }
+        const within = (of, x, d) => of.slice(Math.max(0, x - d), x + d + 1).some(Boolean);
+        return grey.map((g, x) => (g && !within(curve, x, 4) && !within(key, x, 8) ? x : -1)).filter((x) => x >= 0);
+      }, curves);
+      assert.deepEqual(hidden, [], `${figure}: columns with dots and no curve`);
     }
     assert.deepEqual(problems, []);
   } finally {

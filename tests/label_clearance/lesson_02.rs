@@ -82,26 +82,33 @@ fn lesson_02_keys_time_axis_labels_keep_off_the_path_when_orbited() {
 
 #[test]
 fn lesson_02_lagrange_tick_numbers_keep_off_the_keys_and_curves() {
-    // Figure 3 at its page camera (lessons/02-keyframes/lesson.js), both canvases, at 3, 10 and
-    // 16 keys: the value axis's numbers keep off every key dot (the key at t = 0 sits on the
-    // tick of 1 m) and every curve, and one "0" names the origin for both axes.
+    // Figure 3 at its page camera (lessons/02-keyframes/lesson.js), both canvases, at 3, 6, 10,
+    // 12 and 16 keys: the value axis's numbers and the time axis's (where the polynomial plunges
+    // through the axis between keys, as at 10 keys near t = 8 and 9) keep off every key dot (the key at
+    // t = 0 sits on the tick of 1 m) and every curve, and one "0" names the origin for both axes.
+    // As on the page, the figure places the time numbers for the view of the frame before.
     use inbetween::figures::curves::LagrangeScene;
-    for keys in [3.0, 10.0, 16.0] {
+    for keys in [3, 6, 10, 12, 16] {
         let mut scene = LagrangeScene::new();
-        scene.set_key_count(keys).unwrap();
-        let mut frame = Frame::default();
-        scene.draw(&mut frame);
-        let zeros = frame.labels.iter().filter(|l| l.text == "0").count();
-        assert_eq!(zeros, 1, "{keys} keys: one 0 at the origin");
-        assert!(frame.markers.len() >= keys as usize, "the keys as dots");
+        scene.set_key_count(keys as f32).unwrap();
         for size in [Vec2::new(760.0, 300.0), Vec2::new(650.0, 300.0)] {
-            let camera = page_camera([0.15, 1.4, 0.0, 6.5, 0.0, 0.0], &frame, size);
+            let (frame, camera) = drawn_for_view(
+                &mut scene,
+                [0.15, 1.4, 0.0, 6.5, 0.0, 0.0],
+                size,
+                |s, f| s.draw(f),
+                |s, c, size| s.set_view(c, size.x, size.y),
+            );
+            let zeros = frame.labels.iter().filter(|l| l.text == "0").count();
+            assert_eq!(zeros, 1, "{keys} keys: one 0 at the origin");
+            assert!(frame.markers.len() >= keys, "the keys as dots");
             let name = format!("02 Lagrange, {keys} keys");
-            // The value axis's numbers (they read leftwards from their tick).
-            let mut ticks = frame.clone();
-            ticks.labels.retain(|l| l.left);
-            assert_eq!(ticks.labels.len(), 4, "{name}: -0.5, 1, 2 and 3");
-            assert_clear(&name, &ticks, &camera, size);
+            let values = frame.labels.iter().filter(|l| l.left && l.anchor.y != 0.0).count();
+            assert_eq!(values, 4, "{name}: -0.5, 1, 2 and 3");
+            let is_number = |t: &str| t.parse::<f32>().is_ok();
+            let numbers = frame.labels.iter().filter(|l| is_number(&l.text)).count();
+            assert_eq!(numbers, 4 + keys.div_ceil(if keys > 10 { 2 } else { 1 }), "{name}");
+            assert_clear_of(&name, &frame, &camera, size, is_number);
         }
     }
 }
