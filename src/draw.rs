@@ -1080,6 +1080,7 @@ impl Frame {
             min,
             max,
             fit_above: false,
+            only: None,
         });
     }
 
