@@ -1103,6 +1103,7 @@ impl Frame {
             min,
             max,
             fit_above: false,
+            only: None,
         });
     }
 

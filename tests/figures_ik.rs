@@ -907,3 +907,26 @@ fn behind_the_head_the_turn_stays_at_the_cone_all_round_the_loop() {
         assert!((row[2] - row[1]).abs() < 0.2, "follows: {row:?}");
     }
 }
+
+#[test]
+fn the_hinges_drop_is_drawn_wide_on_top_with_its_length() {
+    // Figure 3's start: each limited chain's drop from its target to the chains' plane, 15 cm
+    // along z, which the main view sees nearly end on, is grey, at least 5 px wide, over
+    // everything, with "15 cm" on it.
+    let mut f = IkFigure::new();
+    f.set_limits("hinges (bend one way)").unwrap();
+    f.set_target(Vec3::new(0.55, 0.65, 0.15)).unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame).unwrap();
+    let drops: Vec<_> = frame
+        .strokes
+        .iter()
+        .filter(|s| s.color[..3] == palette::GREY.to_array() && s.a[..2] == s.b[..2])
+        .collect();
+    assert_eq!(drops.len(), 2, "{drops:?}");
+    for s in drops {
+        assert!(s.width_px >= 5.0 && s.depth_bias == inbetween::draw::ON_TOP, "{s:?}");
+        assert!(((s.a[2] - s.b[2]).abs() - 0.15).abs() < 1e-4, "{s:?}");
+    }
+    assert_eq!(frame.labels.iter().filter(|l| l.text == "15 cm").count(), 2);
+}

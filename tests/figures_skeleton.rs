@@ -696,6 +696,13 @@ fn everything_drawn_stays_inside_the_declared_view() {
                 );
             }
         }
+        // The inset draws the paths and their ticks alone: at its zoom the tip's ball and bar
+        // would fill it and run through its title.
+        let [strokes, markers] = inset.only.clone().expect("the inset draws the paths alone");
+        assert!(strokes.len() >= paths.len() - 2, "{clip}: {strokes:?}");
+        assert!(frame.strokes[strokes].iter().all(|s| s.depth_bias == ON_TOP));
+        assert_eq!(markers.len(), ticks.count(), "{clip}");
+        assert!(frame.markers[markers].iter().all(|m| m.shape == MARKER_TICK));
     }
     // Without compared paths, no inset.
     let mut frame = Frame::default();
@@ -980,5 +987,39 @@ fn the_skeleton_fills_most_of_figure_1s_height() {
                 bottom - top
             );
         }
+    }
+}
+
+#[test]
+fn the_thighs_two_paths_come_apart_in_the_inset() {
+    // The Try this's walk, thigh.L, slerp (purple) against cubic (blue), at the page's camera
+    // on either canvas: in the main view the two paths lie within 5 px of each other (one band),
+    // in the inset they come more than 8 px apart between the keys.
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+    use inbetween::draw::inset::{inset_camera, inset_rect};
+    for size in crate::label_clearance::CANVASES {
+        let mut f = interpolation_figure();
+        f.set_clip("walk").unwrap();
+        f.select(f.skeleton().find("thigh.L").unwrap()).unwrap();
+        f.set_compare("cubic").unwrap();
+        let mut frame = Frame::default();
+        f.draw(&mut frame, 0.3).unwrap();
+        let mut camera = OrbitCamera::from_view([0.0, 0.85, 0.0, 2.5, 0.5, 0.2]);
+        camera.fit(&frame.fit_points(), size, FIT_PAD_PX);
+        let main = camera.projection(size.x / size.y) * camera.view();
+        let (view, projection, _) = inset_camera(frame.inset.as_ref().unwrap()).unwrap();
+        let side = inset_rect(size).size.x;
+        let inset = |q: Vec3| (projection * view).project_point3(q).truncate() * 0.5 * side;
+        let (mut in_main, mut in_inset) = (0f32, 0f32);
+        for (&a, &b) in f.trail().iter().zip(f.compare_trail()) {
+            let on_canvas = |q| project_to_canvas(main, size, q).unwrap();
+            in_main = in_main.max(on_canvas(a).distance(on_canvas(b)));
+            in_inset = in_inset.max(inset(a).distance(inset(b)));
+        }
+        assert!(
+            in_main < 5.0 && in_inset > 8.0,
+            "{size}: {in_main} px, inset {in_inset} px"
+        );
     }
 }

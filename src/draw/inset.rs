@@ -45,6 +45,9 @@ pub struct Inset {
     /// The main view fits above the inset (the canvas's whole width) instead of left of it
     /// ([`fit_beside`]): for a wide, low figure ([`super::Frame::fit_above_inset`]).
     pub fit_above: bool,
+    /// Only these strokes and markers of the frame, by index, and nothing else: a path close up
+    /// without the body that carries it, which at the inset's zoom would fill it. `None`: all.
+    pub only: Option<[std::ops::Range<usize>; 2]>,
 }
 
 /// Fits `camera` to `points` (see [`OrbitCamera::fit`]) beside `inset` on a canvas of `size`

@@ -804,7 +804,7 @@ impl IkFigure {
                     draw_limits(frame, root, &self.solved[k], l, *d);
                 }
                 if self.limits == Limits::Hinges {
-                    self.draw_hinge_plane(frame, root);
+                    placed_labels.extend(self.draw_hinge_plane(frame, root));
                 }
             }
             // The chain's reach and its target stay in view.
@@ -1054,10 +1054,12 @@ impl IkFigure {
     /// With hinges, where the target is off the z = 0 plane through the root that the hinges (all
     /// about z) keep the chain in: a grey square of that plane around the target's foot, a hollow
     /// dot at the foot and a grey dashed drop from the target to it. The drop is the distance no
-    /// hinged pose can cover; from the front it would hide, so the figure is seen from the side.
-    fn draw_hinge_plane(&self, frame: &mut Frame, root: Vec3) {
+    /// hinged pose can cover; the main view sees it nearly end on, so it is drawn wide, over
+    /// everything, with its length on it, and the inset shows it from the side. Returns the
+    /// length's label, which [`IkFigure::place_label`] places once everything is drawn.
+    fn draw_hinge_plane(&self, frame: &mut Frame, root: Vec3) -> Option<PlacedLabel> {
         if self.target.z.abs() < 0.01 {
-            return;
+            return None;
         }
         let target = self.target + root;
         let foot = Vec3::new(target.x, target.y, root.z);
@@ -1065,11 +1067,11 @@ impl IkFigure {
         let square = [(-h, -h), (h, -h), (h, h), (-h, h), (-h, -h)]
             .map(|(x, y)| foot + Vec3::new(x, y, 0.0));
         frame.stroke(&square, palette::GREY, StrokeStyle::solid(1.5));
-        frame.stroke(
-            &[foot, target],
-            palette::GREY,
-            StrokeStyle::dashed(GAP_PX, 0.03, 0.02),
-        );
+        let on_top = StrokeStyle {
+            on_top: true,
+            ..StrokeStyle::dashed(2.0 * GAP_PX, 0.03, 0.02)
+        };
+        frame.stroke(&[foot, target], palette::GREY, on_top);
         frame.marker(foot, POLE_PX, palette::GREY);
         // From the side (looking along −x) the chains' plane is a vertical line and the drop
         // runs across: the corner view shows the gap that the main view sees nearly end on.
@@ -1080,6 +1082,18 @@ impl IkFigure {
             root + Vec3::new(-0.6, -0.15, -depth),
             root + Vec3::new(0.6, 1.05, depth),
         );
+        Some(PlacedLabel {
+            at: foot.lerp(target, 0.5),
+            out: Vec3::X,
+            first_m: 0.05,
+            low_y: f32::NEG_INFINITY,
+            line: Some([foot, target]),
+            short_text: None,
+            own_side: false,
+            text: format!("{:.0} cm", self.target.z.abs() * 100.0),
+            color: palette::GREY,
+            priority: 0,
+        })
     }
 
     /// On the two-joint chain: the triangle of the law of cosines (sides a, b, d, the angle α at

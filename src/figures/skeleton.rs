@@ -1113,6 +1113,8 @@ impl SkeletonFigure {
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        // The inset draws these strokes and markers alone: the paths and their ticks.
+        let first = [frame.strokes.len(), frame.markers.len()];
         draw_path(
             frame,
             &self.trail,
@@ -1131,6 +1133,7 @@ impl SkeletonFigure {
             inside,
             view,
         );
+        let paths = [first[0]..frame.strokes.len(), first[1]..frame.markers.len()];
         // The crossfade's two clips alone, beside the blend.
         let source_names = [
             self.clip_name(),
@@ -1220,6 +1223,9 @@ impl SkeletonFigure {
                 }
             };
             frame.inset(along, "paths, close up", lo, hi);
+            if let Some(inset) = &mut frame.inset {
+                inset.only = Some(paths);
+            }
         }
         Ok(note)
     }

@@ -1035,7 +1035,7 @@ impl Renderer {
             if size != target_size {
                 pass.set_viewport(0.0, 0.0, size.0 as f32, size.1 as f32, 0.0, 1.0);
             }
-            self.draw_scene(&mut pass, true);
+            self.draw_scene(&mut pass, None);
             if let Some((_, _, _, [x, y, side, border])) = inset {
                 // The border's square, then the fill's inside it, then the frame again with the
                 // inset's camera (group 0), clipped to the fill.
@@ -1051,7 +1051,7 @@ impl Renderer {
                     pass.draw(first..first + 3, 0..1);
                 }
                 pass.set_bind_group(0, &self.inset_globals_group, &[]);
-                self.draw_scene(&mut pass, false);
+                self.draw_scene(&mut pass, self.frame.inset.as_ref());
                 // The whole target again: WebGL2 resolves the multisampled colour with a blit
                 // that the scissor rectangle would clip to the inset.
                 pass.set_scissor_rect(0, 0, target_size.0, target_size.1);
@@ -1065,36 +1065,49 @@ impl Renderer {
 
     /// Records the frame's draws into `pass` (group 0, the camera, is already set): the opaque
     /// geometry (meshes, GPU-skinned meshes, lines, points, textured squares), then the wide
-    /// lines and markers, then, `with_textures`, the sprites. Without textures (the inset, whose
-    /// camera is not the textured pipelines' group 0) the squares and sprites are left out.
-    fn draw_scene<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>, with_textures: bool) {
-        if !self.frame.meshes.is_empty() {
-            pass.set_pipeline(&self.mesh_pipeline);
-            for (i, draw) in self.frame.meshes.iter().enumerate() {
-                let Some(Some(mesh)) = self.meshes.get(draw.mesh.0) else {
-                    continue;
-                };
-                pass.set_bind_group(1, &self.object_group, &[(i as u64 * OBJECT_STRIDE) as u32]);
-                pass.set_vertex_buffer(0, mesh.vertices.slice(..));
-                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-                pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+    /// lines and markers, then, outside an `inset`, the sprites. In the inset (whose camera is
+    /// not the textured pipelines' group 0) the squares and sprites are left out, and all but
+    /// the strokes and markers it names where it names some ([`crate::draw::inset::Inset::only`]).
+    fn draw_scene<'a>(
+        &'a self,
+        pass: &mut wgpu::RenderPass<'a>,
+        inset: Option<&crate::draw::inset::Inset>,
+    ) {
+        let with_textures = inset.is_none();
+        let only = inset.and_then(|i| i.only.clone());
+        if only.is_none() {
+            if !self.frame.meshes.is_empty() {
+                pass.set_pipeline(&self.mesh_pipeline);
+                for (i, draw) in self.frame.meshes.iter().enumerate() {
+                    let Some(Some(mesh)) = self.meshes.get(draw.mesh.0) else {
+                        continue;
+                    };
+                    pass.set_bind_group(
+                        1,
+                        &self.object_group,
+                        &[(i as u64 * OBJECT_STRIDE) as u32],
+                    );
+                    pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+                    pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                    pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+                }
             }
-        }
-        self.skin.draw(pass, &self.frame);
-        if !self.frame.lines.is_empty() {
-            pass.set_pipeline(&self.line_pipeline);
-            pass.set_vertex_buffer(0, self.lines.buffer.slice(..));
-            pass.draw(0..self.frame.lines.len() as u32, 0..1);
-        }
-        if !self.frame.points.is_empty() {
-            pass.set_pipeline(&self.point_pipeline);
-            pass.set_vertex_buffer(0, self.points.buffer.slice(..));
-            pass.draw(0..6, 0..self.frame.points.len() as u32);
-        }
-        for (buffer, count) in &self.gpu_points {
-            pass.set_pipeline(&self.point_pipeline);
-            pass.set_vertex_buffer(0, buffer.slice(..));
-            pass.draw(0..6, 0..*count);
+            self.skin.draw(pass, &self.frame);
+            if !self.frame.lines.is_empty() {
+                pass.set_pipeline(&self.line_pipeline);
+                pass.set_vertex_buffer(0, self.lines.buffer.slice(..));
+                pass.draw(0..self.frame.lines.len() as u32, 0..1);
+            }
+            if !self.frame.points.is_empty() {
+                pass.set_pipeline(&self.point_pipeline);
+                pass.set_vertex_buffer(0, self.points.buffer.slice(..));
+                pass.draw(0..6, 0..self.frame.points.len() as u32);
+            }
+            for (buffer, count) in &self.gpu_points {
+                pass.set_pipeline(&self.point_pipeline);
+                pass.set_vertex_buffer(0, buffer.slice(..));
+                pass.draw(0..6, 0..*count);
+            }
         }
         if with_textures && !self.frame.quads.is_empty() {
             self.textured.draw_quads(pass, &self.frame);
@@ -1104,15 +1117,17 @@ impl Renderer {
         // Wide lines and markers after everything opaque: their antialiased edges blend over
         // what lies behind them, and they test depth without writing it (later ones draw over
         // earlier ones; markers over lines).
-        if !self.frame.strokes.is_empty() {
+        let [strokes, markers] =
+            only.unwrap_or([0..self.frame.strokes.len(), 0..self.frame.markers.len()]);
+        if !strokes.is_empty() {
             pass.set_pipeline(&self.stroke_pipeline);
             pass.set_vertex_buffer(0, self.strokes.buffer.slice(..));
-            pass.draw(0..6, 0..self.frame.strokes.len() as u32);
+            pass.draw(0..6, strokes.start as u32..strokes.end as u32);
         }
-        if !self.frame.markers.is_empty() {
+        if !markers.is_empty() {
             pass.set_pipeline(&self.marker_pipeline);
             pass.set_vertex_buffer(0, self.markers.buffer.slice(..));
-            pass.draw(0..6, 0..self.frame.markers.len() as u32);
+            pass.draw(0..6, markers.start as u32..markers.end as u32);
         }
         if with_textures {
             self.textured
