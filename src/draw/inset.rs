@@ -165,6 +165,8 @@ mod tests {
                 title: String::new(),
                 min,
                 max,
+                fit_above: false,
+                only: None,
             };
             let (v, p, _) = inset_camera(&inset).unwrap();
             let mut extent = Vec2::ZERO;
@@ -189,6 +191,8 @@ mod tests {
             title: String::new(),
             min: Vec3::splat(-1.0),
             max: Vec3::splat(1.0),
+            fit_above: false,
+            only: None,
         };
         let ndc = |view, p: Vec3| {
             let (v, proj, _) = inset_camera(&inset(view)).unwrap();
@@ -245,6 +249,8 @@ mod tests {
             title: String::new(),
             min,
             max,
+            fit_above: false,
+            only: None,
         };
         assert!(inset_camera(&inset(Vec3::ZERO, Vec3::splat(f32::NAN))).is_none());
         assert!(inset_camera(&inset(Vec3::ONE, Vec3::ONE)).is_none());
