@@ -1202,7 +1202,11 @@ fn the_flag_note_advises_only_what_the_panel_can_still_do() {
         let step_blamed = note.contains("ower the stiffness");
         let above = note.contains("h is above it") || note.contains("h is far above it");
         assert!(!step_blamed || above, "{at}");
-        if note.contains("the step is stable") && f.exploded(0).is_some() {
+        if f.exploded(0).is_some() {
+            // A mass-spring cloth that exploded is never called stable in the same note.
+            assert!(!note.contains("the step is stable"), "{at}");
+        }
+        if note.contains("the step is within the limit") {
             assert!(note.contains("the step is not the cause"), "{at}");
         }
         if f.exploded(1).is_some() {
@@ -1230,7 +1234,7 @@ fn the_flag_note_advises_only_what_the_panel_can_still_do() {
     f.set_pins("two corners").unwrap();
     let (note, _) = draw(&mut f, 6.0);
     assert!(f.exploded(0).is_some(), "{note}");
-    assert!(note.contains("h is below it: the step is stable"), "{note}");
+    assert!(note.contains("h is below it: the step is within the limit"), "{note}");
     assert!(note.contains("too soft for this load"), "{note}");
     assert!(!note.contains("ower the stiffness"), "{note}");
     assert!(rows(&f).iter().any(|r| r[3] > 50.0 || r[4] > 50.0), "{note}");
