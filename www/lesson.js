@@ -930,6 +930,10 @@ export class Plot {
   setData(columns) {
     this.plot.setData(columns);
   }
+  /** Replaces the title shown over the plot (its `data-plot` name stays). */
+  setTitle(title) {
+    this.plot.root.querySelector('.u-title').textContent = title;
+  }
   /** Shows the data range `[lo, hi]` (both finite) from the next `setData` on; else autoscales. */
   setYRange(range) {
     this.dataRange = range && range.every(Number.isFinite) ? range : null;

@@ -736,13 +736,14 @@ if (lagrangeViewer) {
   const lagrange = new LagrangeScene();
   const lp = { keys: 10, spline: true };
   const gui = new GUI({ container: document.querySelector('#fig-lagrange .panel'), title: 'Lagrange' });
-  gui.add(lp, 'keys', 3, 16, 1).name('keys (blue)').onChange((v) => lagrange.setKeyCount(v));
-  gui.add(lp, 'spline').name('Catmull-Rom (green)').onChange((v) => lagrange.setShowSpline(v));
+  // The note (Rust's: the curves' largest gap, the red curve's reach) changes with the keys only.
   const note = document.getElementById('lagrange-note');
+  const showLagrangeNote = () => { note.textContent = lagrange.note; };
+  gui.add(lp, 'keys', 3, 16, 1).name('keys (blue)').onChange((v) => { lagrange.setKeyCount(v); showLagrangeNote(); });
+  gui.add(lp, 'spline').name('Catmull-Rom (green)').onChange((v) => { lagrange.setShowSpline(v); showLagrangeNote(); });
+  showLagrangeNote();
   lesson.onFrame(() => {
     lagrange.draw(lagrangeViewer);
-    const text = lagrange.note;
-    if (note.textContent !== text) note.textContent = text;
     markDrawn('#fig-lagrange');
   });
 }

@@ -30,13 +30,13 @@ if (emitterViewer) {
   let rejected = '';
   // CPU or WebGPU compute shaders; WebGL2 has no compute shaders, so there the switch is off.
   const hasCompute = emitterViewer.backend === 'WebGPU';
+  const COUNT_TITLE = 'Live particles';
   const onControl = gui.add(p, 'on', ['CPU', 'GPU']).name('step on').onChange((v) => {
     try {
       scene.setGpu(emitterViewer, v === 'GPU');
       sortControl.enable(v !== 'GPU');
       // The plot's legend still lists the counts, which the GPU does not give: its title says so.
-      document.querySelector('#emitters-plot .u-title').textContent = v === 'GPU'
-        ? 'Live particles: not counted on the GPU, guides only' : 'Live particles';
+      countPlot.setTitle(v === 'GPU' ? `${COUNT_TITLE}: not counted on the GPU, guides only` : COUNT_TITLE);
     } catch (e) { rejected = e.message; }
   });
   if (!hasCompute) onControl.disable();
@@ -58,7 +58,7 @@ if (emitterViewer) {
   // Live particles against time, from Rust: one sample per step since the run started, with
   // rate × lifetime and the fountain's slots as guides.
   const countPlot = new Plot(document.getElementById('emitters-plot'), {
-    title: 'Live particles', xLabel: 'time (s)', yLabel: 'particles (count)',
+    title: COUNT_TITLE, xLabel: 'time (s)', yLabel: 'particles (count)',
     series: ['fountain', 'explosions', 'rate × lifetime', 'fountain\'s slots'],
     colors: [cssVar('--z-axis'), cssVar('--orange'), cssVar('--dark'), cssVar('--grey')],
     dashes: [null, null, [6, 4], [2, 3]], minSpan: 10, points: false,
