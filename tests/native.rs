@@ -77,6 +77,8 @@ mod gltf_wire;
 mod hostile_figures;
 #[path = "ik.rs"]
 mod ik;
+#[path = "internals/main.rs"]
+mod internals;
 #[path = "label_clearance/main.rs"]
 mod label_clearance;
 #[path = "lesson_text.rs"]
@@ -154,4 +156,28 @@ fn every_test_file_is_built() {
         missing.is_empty(),
         "never compiled: {missing:?} (add to tests/native.rs or Cargo.toml)"
     );
+}
+
+/// The crate has no test target of its own (`test = false` in Cargo.toml: it would compile the
+/// whole crate again for a few tests), so a `#[cfg(test)]` module under `src/` would never run:
+/// there is none. A check that must read private state is a `white_box` function built with
+/// debug assertions (as `fluid::white_box`), called from a test here.
+#[test]
+fn no_test_module_hides_in_src() {
+    fn walk(dir: &std::path::Path, found: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, found);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                if text.contains("#[cfg(test)]") || text.contains("#[test]") {
+                    found.push(path.display().to_string());
+                }
+            }
+        }
+    }
+    let mut found = Vec::new();
+    walk(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src"), &mut found);
+    assert!(found.is_empty(), "tests under src/ never run: {found:?} (move them to tests/)");
 }

@@ -1080,15 +1080,18 @@ fn pbf_lambda_with(
     -c / (sum + eps)
 }
 
-#[cfg(test)]
-mod tests {
+/// White-box checks of the step's fast paths against their one-at-a-time definitions: they read
+/// the step's private stages, so they live beside them. The native tests call them
+/// (tests/internals/fluid.rs); only a build with debug assertions (the test profile) has them.
+#[cfg(debug_assertions)]
+#[doc(hidden)]
+pub mod white_box {
     use super::*;
 
     /// The step's sums, which evaluate four neighbours at a time, against a loop over each list
     /// one neighbour at a time with the scalar kernels: equal bit for bit (the lanes add their
     /// terms in list order), on a splashing 3D and 2D dam break.
-    #[test]
-    fn the_four_lane_sums_are_the_scalar_loops_bit_for_bit() {
+    pub fn the_four_lane_sums_are_the_scalar_loops_bit_for_bit() {
         for dim in [Dim::Three, Dim::Two] {
             let params = match dim {
                 Dim::Three => FluidParams::default_3d(Method::Pbf),

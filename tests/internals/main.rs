@@ -1,0 +1,12 @@
+mod boids;
+mod camera;
+mod draw;
+mod draw_inset;
+mod exercises;
+mod exercises_grade;
+mod exercises_run;
+mod figures;
+mod fluid;
+mod mesh;
+mod skinning;
+mod texture;
