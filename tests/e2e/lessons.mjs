@@ -136,7 +136,7 @@ async function pauseTimelines(page) {
  * the viewport is made as tall as the page instead: every figure is then on screen
  * (Viewer::set_visible), draws and places its labels, and an ordinary screenshot takes the lot.
  * Chromium's capture wraps round past about 8,000 px (the page's top reappears below), so a longer
- * page is taken in parts of up to 8,000 px: `path` holds the first, `path` with -part2, -part3 ...
+ * page is taken in parts of equal height, up to 8,000 px each: `path` holds the first, `path` with -part2, -part3 ...
  * before its extension the rest, each in a viewport as tall as what is left. `check`, when given,
  * runs with the first part in view and every figure drawn, before the screenshots (the figures'
  * sizes depend on the page's width only, so what it sees is what the reader's viewport shows).
@@ -148,8 +148,10 @@ async function fullPageShot(page, path, check = async () => {}) {
     window.scrollTo(0, top);
     window.__inbetween.figures.forEach((f) => f.viewer?.setVisible(true));
   }, top);
-  for (let top = 0, part = 1; top < height; top += SHOT_PART, part += 1) {
-    await page.setViewportSize({ width: viewport.width, height: Math.min(height - top, SHOT_PART) });
+  // Parts of equal height, so that the last is not a sliver of a few pixels.
+  const each = Math.ceil(height / Math.ceil(height / SHOT_PART));
+  for (let top = 0, part = 1; top < height; top += each, part += 1) {
+    await page.setViewportSize({ width: viewport.width, height: Math.min(height - top, each) });
     await show(top);
     await frames(page, 4);
     if (part === 1) await check();
