@@ -513,3 +513,54 @@ fn a_panned_flat_figure_keeps_its_box_in_view() {
         assert!((moved - 20.0).abs() < 0.1, "{size}: moved {moved} px of 20");
     }
 }
+
+/// Lesson 07 Figure 3 (hinges, the page's start) from the page's camera, fitted as the page fits
+/// it beside the "from the side" inset on both canvases: the hinges keep every chain in the
+/// z = 0 plane, so the view box round each chain is flat there and the fit (limited by the
+/// canvas's width) draws the three chains and their targets larger: at least 425 px across and
+/// 150 px tall on the 760 x 420 canvas, 335 and 120 on the 650 x 420 one (with the box 0.4 m
+/// deep, as for cones: 409 x 145 and 314 x 114).
+#[test]
+fn the_hinged_chains_fill_the_part_left_of_the_inset() {
+    use inbetween::draw::inset::fit_beside;
+    use inbetween::draw::Frame;
+    use inbetween::figures::ik::IkFigure;
+    for (size, least) in [
+        (Vec2::new(760.0, 420.0), Vec2::new(425.0, 150.0)),
+        (Vec2::new(650.0, 420.0), Vec2::new(335.0, 120.0)),
+    ] {
+        let mut scene = IkFigure::new();
+        scene.set_limits("hinges (bend one way)").unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame).unwrap();
+        // lessons/07-inverse-kinematics/lesson.js: Figure 3's setCamera.
+        let mut camera = OrbitCamera::from_view([0.25, 0.45, 0.0, 4.3, 0.5, 0.3]);
+        let inset = frame.inset.as_ref().unwrap();
+        assert!(fit_beside(
+            &mut camera,
+            inset,
+            &frame.fit_points(),
+            size,
+            FIT_PAD_PX
+        ));
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let target = scene.target();
+        let mut points = Vec::new();
+        for k in scene.shown_solvers() {
+            points.extend(scene.chain(k).unwrap());
+            let root = Vec3::new(inbetween::figures::ik::ROOTS_X[k], 0.0, 0.0);
+            points.push(root + target);
+        }
+        let (lo, hi) = points
+            .iter()
+            .map(|&p| project_to_canvas(view_proj, size, p).unwrap())
+            .fold((Vec2::MAX, Vec2::MIN), |(a, b), p| (a.min(p), b.max(p)));
+        eprintln!("{size}: chains {lo} to {hi}, {} x {} px", hi.x - lo.x, hi.y - lo.y);
+        assert!(
+            (hi - lo).cmpge(least).all(),
+            "{size}: the chains span {} x {} px",
+            hi.x - lo.x,
+            hi.y - lo.y
+        );
+    }
+}

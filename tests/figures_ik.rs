@@ -304,6 +304,7 @@ fn the_note_reports_the_students_exercises() {
 #[test]
 fn the_head_looks_at_the_target_within_its_cone() {
     let mut a = AimFigure::new();
+    a.set_target(Vec3::new(1.2, 1.9, 1.0)).unwrap();
     let note = a.draw(&mut Frame::default(), 0.0).unwrap();
     assert!(note.contains("Looking straight at the target"), "{note}");
     a.set_target(Vec3::new(0.0, 1.6, -1.2)).unwrap();
@@ -929,4 +930,27 @@ fn the_hinges_drop_is_drawn_wide_on_top_with_its_length() {
         assert!(((s.a[2] - s.b[2]).abs() - 0.15).abs() < 1e-4, "{s:?}");
     }
     assert_eq!(frame.labels.iter().filter(|l| l.text == "15 cm").count(), 2);
+}
+
+#[test]
+fn at_the_page_start_the_aim_plot_shows_the_head_follow_and_stop() {
+    // Figure 4 at its start (the page's target and 70° cone): over the loop the target goes
+    // in and out of the cone, so the plot shows what the caption says at first sight: the
+    // head's turn on the target's angle for part of the loop, and flat at the rim while the
+    // target's angle runs at least 10° above it.
+    let a = AimFigure::new();
+    let (mut follows, mut flat, mut widest) = (0, 0, 0.0f32);
+    for row in a.plot_samples(80).unwrap().chunks(3) {
+        let (to_target, head) = (row[1], row[2]);
+        if to_target < 70.0 {
+            assert!((head - to_target).abs() < 0.2, "inside, the head follows: {row:?}");
+            follows += 1;
+        } else {
+            assert!((head - 70.0).abs() < 0.2, "outside, flat at the rim: {row:?}");
+            flat += 1;
+            widest = widest.max(to_target - head);
+        }
+    }
+    assert!(follows >= 16 && flat >= 16, "{follows} rows follow, {flat} flat");
+    assert!(widest >= 10.0, "the lines part by {widest}° at most");
 }

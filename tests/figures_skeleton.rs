@@ -819,12 +819,12 @@ fn use_my_exercise_checks_probe_inputs_beyond_the_shown_one() {
     );
 }
 
-/// The selected joint's name is the only label at the joint: its axes are drawn without their
-/// x, y and z (which crowded the name at the figures' scale), in the default figure and in
-/// the one comparing two interpolations, whichever joint is selected; the world's axes at the
-/// feet keep their letters.
+/// At the selected joint: its name and its axes' x, y and z (placed after the name, clear of
+/// it: tests/label_clearance/lesson_06.rs), in the default figure and in the one comparing two
+/// interpolations, whichever joint is selected; the world's axes at the feet have their letters
+/// too.
 #[test]
-fn the_selected_joints_name_has_the_joint_to_itself() {
+fn the_selected_joints_name_and_axis_letters_are_at_the_joint() {
     let mut figures = vec![SkeletonFigure::new(), interpolation_figure()];
     let thigh = figures[0].skeleton().find("thigh.L").unwrap();
     figures[0].select(thigh).unwrap();
@@ -839,10 +839,10 @@ fn the_selected_joints_name_has_the_joint_to_itself() {
             .filter(|l| (l.anchor - at).length() < 0.3)
             .map(|l| l.text.as_str())
             .collect();
-        assert_eq!(near, vec![name.as_str()], "figure {n}");
+        assert_eq!(near, vec![name.as_str(), "x", "y", "z"], "figure {n}");
         if n == 0 {
             let letters = frame.labels.iter().filter(|l| l.text.len() == 1).count();
-            assert_eq!(letters, 3, "the world's x, y and z");
+            assert_eq!(letters, 6, "the joint's and the world's x, y and z");
         }
     }
 }
@@ -944,7 +944,8 @@ fn path_ticks_are_sized_to_their_spacing_on_the_canvas() {
 #[test]
 fn the_crossfade_draws_the_world_axes_without_their_letters() {
     // Figure 3's blend stands on the world's origin: the x, y and z of the axes at its feet
-    // would lie on its legs and the selected joint's path. Figure 1 keeps them.
+    // would lie on its legs and the selected joint's path. Figure 1 keeps them; both letter
+    // the selected joint's axes.
     let letters = |f: &mut SkeletonFigure| {
         let mut frame = Frame::default();
         f.draw(&mut frame, 0.3).unwrap();
@@ -952,11 +953,11 @@ fn the_crossfade_draws_the_world_axes_without_their_letters() {
         frame.labels.iter().filter(axis).count()
     };
     let mut f = SkeletonFigure::new();
-    assert_eq!(letters(&mut f), 3);
+    assert_eq!(letters(&mut f), 6);
     for (clip, joint) in [("wave", "upper_arm.R"), ("arm circles", "shin.L")] {
         f.set_blend(clip, 0.2).unwrap();
         f.select(f.skeleton().find(joint).unwrap()).unwrap();
-        assert_eq!(letters(&mut f), 0, "{clip}");
+        assert_eq!(letters(&mut f), 3, "{clip}");
     }
 }
 

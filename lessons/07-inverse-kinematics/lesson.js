@@ -96,7 +96,7 @@ if (aimViewer) {
   // view (the body and the target's loop), and the camera fits it.
   aimViewer.setCamera(0, 1.5, 0, 5.2, -0.95, 0.15);
   const scene = new AimScene();
-  const p = { x: 1.2, y: 1.9, z: 1.0, cone: 70 };
+  const p = { x: 1.2, y: 1.9, z: 0.4, cone: 70 };
   const gui = new GUI({ container: document.querySelector('#fig-aim .panel'), title: 'Aim' });
   const target = gui.addFolder('target (m)');
   const plot = new Plot(document.getElementById('aim-plot'), {

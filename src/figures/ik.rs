@@ -807,10 +807,12 @@ impl IkFigure {
                     placed_labels.extend(self.draw_hinge_plane(frame, root));
                 }
             }
-            // The chain's reach and its target stay in view.
+            // The chain's reach and its target stay in view; hinges (all about z) keep the chain
+            // in the z = 0 plane, so the box is flat there and the chains are drawn larger.
+            let depth = if self.limits == Limits::Hinges { 0.0 } else { 0.2 };
             frame.keep_box_in_view(
-                root + Vec3::new(-0.6, -0.15, -0.2),
-                root + Vec3::new(0.6, 1.05, 0.2),
+                root + Vec3::new(-0.6, -0.15, -depth),
+                root + Vec3::new(0.6, 1.05, depth),
             );
             frame.keep_in_view.push(target);
         }
@@ -974,31 +976,50 @@ impl IkFigure {
         // d's label tries every place beside its line both ways before it turns round the point.
         let beside = if label.short_text.is_some() { beside } else { 0 };
         let (near, around) = candidates.split_at(beside);
-        // A miss's label (a measured line, not its own side) whose leader line would cross a
-        // label placed before it (side d's, on the same line) takes such a place last in each
-        // tier.
+        // A miss's label (a measured line, not its own side) takes first a place whose leader
+        // line keeps LEADER_CLEAR_PX off every label placed before it and every dot but one it
+        // starts on (`strict` 2: a leader grazing the pole's dot or a name reads as pointing at
+        // it), then one whose leader crosses no label (`strict` 1: side d's lies on the same
+        // line), then any, in each tier.
         let miss = label.line.is_some() && !label.own_side;
-        let leader_crosses = |c: &crate::draw::Label| {
+        let leader_crosses = |c: &crate::draw::Label, strict: u8| {
             let Some(r) = c.first_place(view_proj, size) else {
                 return false;
             };
             let end = r.nearest(home);
-            miss && end.distance(home) > crate::draw::layout::LEADER_PX
-                && frame.labels.iter().any(|o| {
+            let room = if strict == 2 { LEADER_CLEAR_PX } else { 0.0 };
+            let grazes = |c: Vec2, r: Vec2| {
+                !(home - c).abs().cmplt(r).all()
+                    && crate::draw::segment_enters(home, end, c - r, c + r)
+            };
+            strict > 0 && miss && end.distance(home) > crate::draw::layout::LEADER_PX
+                && (frame.labels.iter().any(|o| {
                     o.first_place(view_proj, size).is_some_and(|o| {
-                        crate::draw::segment_enters(home, end, o.min, o.max())
+                        grazes(o.min + 0.5 * o.size, 0.5 * o.size + room)
                     })
-                })
+                }) || strict == 2 && frame.markers.iter().any(|m| {
+                    project_to_canvas(view_proj, size, m.center.into()).is_some_and(|c| {
+                        grazes(c, Vec2::splat(0.5 * m.size_px + room))
+                    })
+                }))
         };
         // A target's name (the only label that keeps to its own side of a point it does not
         // measure) sits nearer its own target's dot than any other's: a name nearer a
-        // neighbour's target reads as naming that one.
+        // neighbour's target reads as naming that one. Likewise a chain's name (and α) at its
+        // root sits nearer that root than any other chain's joints and target.
         let target_name = label.own_side && label.line.is_none();
+        let root_name = label.low_y.is_finite() && label.line.is_none();
         let own = project_to_canvas(view_proj, size, label.at);
         let dots: Vec<Vec2> = self
             .shown_solvers()
-            .filter(|_| target_name)
-            .filter_map(|k| project_to_canvas(view_proj, size, self.target + ROOTS_X[k] * Vec3::X))
+            .flat_map(|k| {
+                let root = ROOTS_X[k] * Vec3::X;
+                let mine = root == label.at;
+                let chain = self.solved[k].iter().filter(move |_| root_name && !mine);
+                let target = (target_name || (root_name && !mine)).then_some(&self.target);
+                chain.chain(target).map(move |&p| p + root)
+            })
+            .filter_map(|p| project_to_canvas(view_proj, size, p))
             .collect();
         let nearest_own = |c: &crate::draw::Label| {
             let gap = |r: crate::draw::layout::Rect, p: Vec2| r.nearest(p).distance(p);
@@ -1010,14 +1031,18 @@ impl IkFigure {
         // A target's name nearer another target only where no place nearer its own is clear; a
         // miss's label touching a line before its leader crosses side d's label.
         let tiers = [
-            (near, g, true),
-            (near, 0.0, true),
-            (near, g, false),
-            (near, 0.0, false),
-            (around, g, true),
-            (around, 0.0, true),
-            (around, g, false),
-            (around, 0.0, false),
+            (near, g, 2),
+            (near, 0.0, 2),
+            (near, g, 1),
+            (near, 0.0, 1),
+            (near, g, 0),
+            (near, 0.0, 0),
+            (around, g, 2),
+            (around, 0.0, 2),
+            (around, g, 1),
+            (around, 0.0, 1),
+            (around, g, 0),
+            (around, 0.0, 0),
         ];
         // With the gap from dots and lines, also [`LABELS_ROOMY_PX`] from every label placed
         // before, twice that between two words sharing half a line: text set wider than
@@ -1040,7 +1065,7 @@ impl IkFigure {
                 list.iter().find(|c| {
                     frame.label_is_clear_by(view_proj, size, c, margin_px)
                         && (margin_px == 0.0 || roomy(c))
-                        && !(strict && leader_crosses(c))
+                        && !leader_crosses(c, strict)
                         && (!nearest || nearest_own(c))
                 })
             })
@@ -1314,6 +1339,8 @@ fn beside_line_px(
 const LABEL_GAP_PX: f32 = 2.0;
 /// The room a label keeps from the others where it can, CSS px.
 const LABELS_ROOMY_PX: f32 = 12.0;
+/// The room a miss's leader keeps from other labels and from dots where it can, CSS px.
+const LEADER_CLEAR_PX: f32 = 3.0;
 
 /// How far below its root a chain's name sits first, metres.
 const ROOT_LABEL_FIRST_M: f32 = 0.12;
@@ -1433,7 +1460,9 @@ const HEAD: Vec3 = Vec3::new(0.0, 1.6, 0.0);
 impl AimFigure {
     pub fn new() -> Self {
         Self {
-            target: Vec3::new(1.2, 1.9, 1.0),
+            // Its loop runs from about 60° to 83° off straight ahead, across the 70° cone's
+            // rim: the head follows part of the way and stops at the rim for the rest.
+            target: Vec3::new(1.2, 1.9, 0.4),
             max_angle_rad: 70.0 * DEG,
             view: None,
         }
@@ -1610,13 +1639,17 @@ impl AimFigure {
         // The target's name beside its dot, the arrow's past its tip, and the miss's size past
         // the middle of its arc; where the body, the head or a line (the dashed line to the
         // target) lies there, the first place round that point clear of them.
+        // The miss's size tries points along its arc from the middle out: where the arc runs
+        // over the body, a leader from its middle would cross the body to a clear place.
         let mut labels = vec![
-            (target - HEAD, "target".to_string(), palette::RED, 2, TARGET_PX),
-            (s.forward * 0.85, "forward".to_string(), palette::BLUE, 2, 4.0),
+            (vec![target - HEAD], "target".to_string(), palette::RED, 2, TARGET_PX),
+            (vec![s.forward * 0.85], "forward".to_string(), palette::BLUE, 2, 4.0),
         ];
         if !s.result.reached {
             labels.push((
-                Quat::from_axis_angle(axis, 0.5 * missed) * s.forward * 0.52,
+                [0.5, 0.3, 0.7, 0.15, 0.85]
+                    .map(|t| Quat::from_axis_angle(axis, t * missed) * s.forward * 0.52)
+                    .to_vec(),
                 format!("misses {:.0}°", missed / DEG),
                 palette::RED,
                 1,
@@ -1627,40 +1660,61 @@ impl AimFigure {
         // box must not cross it (it would point at the wrong line).
         let px = |p: Vec3| view.and_then(|(view_proj, size)| project_to_canvas(view_proj, size, p));
         let dashed = px(HEAD).zip(px(target)).filter(|_| !s.result.reached);
-        for (out, text, color, priority, dot_px) in labels {
-            let at = HEAD + out;
-            let from = px(at);
-            let first = crate::draw::Label {
-                anchor: at,
-                text: text.clone(),
-                color,
-                left: false,
-                priority,
-                offset_px: Vec2::ZERO,
-                large: false,
-            };
-            let around = crate::draw::Label::around_dot(
-                at,
-                dot_px,
-                Vec2::ZERO,
-                &text,
-                color,
-                priority,
-                12,
-                8.0,
-            );
-            let crosses = |r: crate::draw::layout::Rect| {
-                from.zip(dashed).is_some_and(|(a, (h, g))| {
-                    let side = |p: Vec2, q: Vec2, x: Vec2| (q - p).perp_dot(x - p);
-                    let b = r.nearest(a);
-                    side(a, b, h) * side(a, b, g) < 0.0 && side(h, g, a) * side(h, g, b) < 0.0
+        let side = |p: Vec2, q: Vec2, x: Vec2| (q - p).perp_dot(x - p);
+        for (outs, text, color, priority, dot_px) in labels {
+            let candidates: Vec<(Option<Vec2>, crate::draw::Label)> = outs
+                .iter()
+                .flat_map(|&out| {
+                    let at = HEAD + out;
+                    let first = crate::draw::Label {
+                        anchor: at,
+                        text: text.clone(),
+                        color,
+                        left: false,
+                        priority,
+                        offset_px: Vec2::ZERO,
+                        large: false,
+                    };
+                    let around = crate::draw::Label::around_dot(
+                        at,
+                        dot_px,
+                        Vec2::ZERO,
+                        &text,
+                        color,
+                        priority,
+                        12,
+                        8.0,
+                    );
+                    std::iter::once(first).chain(around).map(move |l| (px(at), l))
                 })
-            };
-            // The first place clear of the dots, lines and solids whose leader keeps off the
-            // dashed line, else the first.
-            frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |r| {
-                solids.iter().all(|b| !b.overlaps(&r, 2.0)) && !crosses(r)
+                .collect();
+            // The first place clear of the dots, lines and solids whose leader (from the
+            // label's point to the nearest point of its box) keeps off the dashed line and the
+            // solids, else one whose leader only keeps off the dashed line, else the first.
+            let clear = view.and_then(|(view_proj, size)| {
+                [true, false].into_iter().find_map(|strict| candidates.iter().find(|(from, c)| {
+                    frame.label_is_clear_by(view_proj, size, c, 2.0)
+                        && c.first_place(view_proj, size).is_some_and(|r| {
+                            let lead = from
+                                .map(|a| (a, r.nearest(a)))
+                                .filter(|(a, b)| a.distance(*b) > crate::draw::layout::GAP_PX);
+                            let crosses = lead.zip(dashed).is_some_and(|((a, b), (h, g))| {
+                                side(a, b, h) * side(a, b, g) < 0.0
+                                    && side(h, g, a) * side(h, g, b) < 0.0
+                            });
+                            !crosses
+                                && solids.iter().all(|b| {
+                                    !b.overlaps(&r, 2.0)
+                                        && (!strict || lead.is_none_or(|(p, q)| {
+                                            !crate::draw::segment_enters(p, q, b.min, b.max())
+                                        }))
+                                })
+                        })
+                }))
             });
+            frame
+                .labels
+                .push(clear.unwrap_or(&candidates[0]).1.clone());
         }
         // The body, the head's reach and the target's whole loop stay in view.
         frame.keep_box_in_view(Vec3::new(-0.6, 0.7, -0.6), Vec3::new(0.6, 2.3, 0.6));

@@ -1029,9 +1029,9 @@ impl SkeletonFigure {
         let note = self.pose(time_sec)?;
         frame.grid(12, 0.25);
         if self.compare_clip.is_none() && self.blend_clip.is_none() {
-            // The world's axes at the feet, with their letters where one skeleton stands alone
-            // (at the crossfade's feet the letters would lie on its legs and paths).
-            frame.labelled_axes(Mat4::IDENTITY, 0.3);
+            // The world's axes at the feet; their letters (where one skeleton stands alone: at
+            // the crossfade's feet they would lie on its legs and paths) once the legs are drawn.
+            frame.axes(Mat4::IDENTITY, 0.3);
         }
         let parents = self.skeleton.parents();
         let color = |i: usize| {
@@ -1097,8 +1097,7 @@ impl SkeletonFigure {
             frame.contact_shadow(Vec3::new(middle.x, lowest.max(0.0), middle.z), 0.25);
         }
         let selected = Mat4::from(self.model[self.selected]);
-        // Its axes without their letters: at this size the x, y and z would crowd the joint's
-        // name (the world's axes at the feet carry the letters, the caption the colours).
+        // Its axes; their letters once its name is placed.
         frame.axes(selected, 0.18);
         let main_step = self.interpolation == KeyInterpolation::Step;
         let compare_step = matches!(self.compare, Some((KeyInterpolation::Step, _)));
@@ -1201,6 +1200,12 @@ impl SkeletonFigure {
             8.0,
         );
         frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
+        // The letters of the joint's axes and of the world's, each beside its tip clear of the
+        // bones, paths and names: the world's y runs up beside the standing leg.
+        letter_axes(frame, selected, 0.18, view);
+        if self.compare_clip.is_none() && self.blend_clip.is_none() {
+            letter_axes(frame, Mat4::IDENTITY, 0.3, view);
+        }
         frame.keep_box_in_view(self.bounds.0, self.bounds.1);
         if self.compare_clip.is_some() {
             // The two paths close up, seen along the axis they extend least along (across the
@@ -1412,6 +1417,26 @@ fn draw_path(
         for tick in &mut frame.markers[first..] {
             tick.size_px = -tick.size_px.abs();
         }
+    }
+}
+
+/// The letters x, y and z of the axes that `m` places, `length` long: each at the first place
+/// round its tip, away from the axes' origin on screen first, that keeps 1 px off the dots and
+/// lines and clear of the labels on the last frame's view (`view`).
+fn letter_axes(frame: &mut Frame, m: Mat4, length: f32, view: Option<(Mat4, Vec2)>) {
+    let o = m.transform_point3(Vec3::ZERO);
+    for (axis, color, name) in [
+        (Vec3::X, palette::X_AXIS, "x"),
+        (Vec3::Y, palette::Y_AXIS, "y"),
+        (Vec3::Z, palette::Z_AXIS, "z"),
+    ] {
+        let tip = o + m.transform_vector3(axis) * length;
+        let on_screen = |p: Vec3| view.and_then(|(vp, size)| project_to_canvas(vp, size, p));
+        let toward = on_screen(tip)
+            .zip(on_screen(o))
+            .map_or(Vec2::ZERO, |(t, o)| t - o);
+        let candidates = crate::draw::Label::around_dot(tip, 6.0, toward, name, color, 0, 4, 6.0);
+        frame.first_clear_label_by(view, 1.0, candidates, |_| true);
     }
 }
 

@@ -230,3 +230,69 @@ fn lesson_06_crossfade_joint_name_keeps_off_the_clips_alone() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_06_axis_letters_sit_by_their_tips_clear_of_the_bones() {
+    // Figure 1 at its page camera (lessons/06-skeletons/lesson.js: yaw 0.5, pitch 0.2, fitted),
+    // both canvases, the walk across a cycle with the page's joint (thigh.L) and two others
+    // selected: the letters x, y and z of the selected joint's axes and of the world's axes at
+    // the feet are all there (the caption names the joint's axes by them), each shown where the
+    // figure put it, within a leader's reach of its axis's tip, and 1 px off every dot and line
+    // (the world's y runs up beside the standing leg: at its tip the letter lay on the leg). As
+    // on the page, the figure places them for the view of the frame before.
+    use inbetween::draw::layout::LEADER_PX;
+    use inbetween::figures::skeleton::SkeletonFigure;
+    let mut failures = Vec::new();
+    for joint in ["thigh.L", "shin.R", "upper_arm.L"] {
+        for k in 0..8 {
+            let t = k as f32 * 0.125;
+            for size in CANVASES {
+                let mut scene = SkeletonFigure::new();
+                scene.set_show_axes(false);
+                let index = scene
+                    .skeleton()
+                    .names()
+                    .iter()
+                    .position(|n| n == joint)
+                    .unwrap();
+                scene.select(index).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    [0.0, 0.85, 0.0, 2.5, 0.5, 0.2],
+                    size,
+                    |fig, out| {
+                        fig.draw(out, t).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("06 Fig 1, {joint}, t {t}");
+                let letters: Vec<usize> = (0..frame.labels.len())
+                    .filter(|&i| ["x", "y", "z"].contains(&frame.labels[i].text.as_str()))
+                    .collect();
+                if letters.len() != 6 {
+                    failures.push(format!("{name} on {size}: {} axis letters", letters.len()));
+                    continue;
+                }
+                failures.extend(failure_of(|| {
+                    assert_shown_clear_by(&name, &frame, &camera, size, &letters, 1.0)
+                }));
+                let placed = layout(&frame, &camera, size);
+                for &i in &letters {
+                    let (l, b, p) = &placed[i];
+                    let rect = Rect {
+                        min: p.top_left,
+                        size: b.size,
+                    };
+                    let gap = rect.nearest(l.dot_px).distance(l.dot_px);
+                    if gap > LEADER_PX {
+                        failures.push(format!(
+                            "{name} on {size}: {:?} {gap} px from its tip",
+                            l.text
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
