@@ -764,7 +764,8 @@ function contentWidth(element) {
  * narrow one keeps two equal curves both visible. Each legend swatch is a short stretch of its
  * curve (colour, width, dashes). The element gets `data-plot` (the title), `data-x-label`
  * and `data-y-label` (the axis labels, which uPlot draws on its canvas, where tests cannot
- * read them), and `data-y-range` (the y axis's range, "lo hi"; a log x axis's in `data-x-range`).
+ * read them), `data-y-range` (the y axis's range, "lo hi"; a log x axis's in `data-x-range`),
+ * and `data-x-last` (the last x where a curve has a value).
  */
 export class Plot {
   constructor(element, {
@@ -916,6 +917,7 @@ export class Plot {
     element.append(this.readout);
     this.xLabel = xLabel ?? 'x';
     this.colors = colors;
+    this.element = element;
     element.dataset.plot = title ?? '';
     element.dataset.xLabel = xLabel ?? '';
     element.dataset.yLabel = yLabel ?? '';
@@ -929,6 +931,11 @@ export class Plot {
   }
   setData(columns) {
     this.plot.setData(columns);
+    // For the page tests: the last x at which a curve has a value (a playing figure's curves
+    // must reach its playhead).
+    let i = columns[0].length - 1;
+    while (i >= 0 && columns.slice(1).every((c) => c[i] === null || c[i] === undefined)) i--;
+    this.element.dataset.xLast = i >= 0 ? String(columns[0][i]) : '';
   }
   /** Replaces the title shown over the plot (its `data-plot` name stays). */
   setTitle(title) {

@@ -72,8 +72,10 @@ if (emitterViewer) {
       // Nothing comes back from the GPU: Rust's counts are NaN in this mode, the guides numbers.
       p.on === 'GPU' ? 'The GPU\'s particles are not read back, so they are not counted: the plot keeps only its guides until step on is CPU again.' : '',
     ].filter(Boolean).join(' '));
-    // Ten times a second, and at once after a jump; the x axis always spans the whole loop.
-    if (frame++ % 6 === 0 || Math.abs(t - plotTime) > 0.2) {
+    // Whenever the time moves, so the curve reaches the playhead (every frame while playing:
+    // the playhead's redraw redraws the plot anyway), and every sixth frame when paused, for a
+    // setting that starts the run again; the x axis always spans the whole loop.
+    if (t !== plotTime || frame++ % 6 === 0) {
       const cols = columns(Array.from(scene.countSamples(), (v) => (Number.isNaN(v) ? null : v)), 5);
       countPlot.setData(spanTimeline(cols, timeline.duration));
       plotTime = t;

@@ -143,21 +143,32 @@ if (flockViewer) {
     // NaN marks a search not timed at that size: a gap in the plot.
     const cols = columns(scene.sweepSamples(), 9).map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) && v > 0 ? v : null))));
     plot.setData(cols);
-    showNote(status, scene.sweepNote());
+    showNote(status, [scene.sweepNote(), remeasuring
+      ? '(The last run\'s curves are cleared: this run\'s points are drawn as each size is measured.)' : ''].filter(Boolean).join(' '));
   }
+  // A run started again by the button, until it ends: the plot starts empty.
+  let remeasuring = false;
+  let runs = 0;
   function startSweep() {
+    remeasuring = runs++ > 0;
     scene.startSweep();
     showSweep();
   }
   function sweepStep() {
     if (timeSweepStep(scene, 256)) showSweep();
+    else if (remeasuring) {
+      remeasuring = false;
+      showSweep();
+    }
   }
   startSweep();
 
   // The flock's order over time, from Rust: polarisation and speed after every step since the
   // flock started, with the playhead.
+  const ORDER_TITLE = 'Order of the flock';
+  let orderOnGpu = false;
   const orderPlot = new Plot(document.getElementById('flock-order-plot'), {
-    title: 'Order of the flock', xLabel: 'time (s)', yLabel: 'fraction (0 to 1)',
+    title: ORDER_TITLE, xLabel: 'time (s)', yLabel: 'fraction (0 to 1)',
     series: ['polarisation φ = |Σ v̂| / N', 'mean speed / max speed'],
     colors: [cssVar('--purple'), cssVar('--orange')], yRange: [0, 1],
   });
@@ -187,12 +198,18 @@ if (flockViewer) {
     if (!onGpu && steps > 0 && steps < 10) average = average === 0 ? ms / steps : 0.9 * average + 0.1 * (ms / steps);
     frameMs = frameMs === 0 ? 1000 * dt : 0.9 * frameMs + 0.1 * 1000 * dt;
     showNote(note, [rejected, scene.draw(flockViewer)].filter(Boolean).join(' '));
-    // Ten times a second, and at once after a jump (a scrub or the loop starts a new flock, whose
-    // samples begin at the time it starts); the x axis always spans the whole loop.
-    if (frame % 6 === 0 || Math.abs(time - plotTime) > 0.2) {
-      // On the GPU the samples come from the flock read back every 0.1 s.
+    // Whenever the time moves (a scrub or the loop starts a new flock, whose samples begin at
+    // the time it starts), so the curves reach the playhead, and every sixth frame when paused;
+    // the x axis always spans the whole loop.
+    if (time !== plotTime || frame % 6 === 0) {
+      // On the GPU the samples come from the flock read back every 0.1 s, which arrives a few
+      // frames late: the curves end short of the playhead, and the title says why.
       orderPlot.setData(spanTimeline(columns(scene.plotSamples(), 3), timeline.duration));
       plotTime = time;
+    }
+    if (onGpu !== orderOnGpu) {
+      orderOnGpu = onGpu;
+      orderPlot.setTitle(onGpu ? `${ORDER_TITLE} (read back from the GPU every 0.1 s, a few frames late)` : ORDER_TITLE);
     }
     orderPlot.setCursor(time);
     if (frame++ % 10 === 0) {

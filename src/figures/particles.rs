@@ -1278,6 +1278,16 @@ impl SpringFigure {
             8.0,
         );
         frame.first_clear_label_by(view, 0.0, candidates, &clear);
+        // The boxes of the names placed so far ("exact" first) and the leader lines the page
+        // draws to those placed further than LEADER_PX from their mass (mass, box's nearest
+        // point): a later name keeps off both.
+        let place_of = |l: Option<&crate::draw::Label>| {
+            view.zip(l)
+                .and_then(|((view_proj, size), l)| l.first_place(view_proj, size))
+        };
+        let mut taken: Vec<crate::draw::layout::Rect> =
+            place_of(frame.labels.last()).into_iter().collect();
+        let mut leaders: Vec<(glam::Vec2, glam::Vec2)> = Vec::new();
         for (i, &(mass, cut, disc)) in masses.iter().enumerate() {
             // A mass drawn cut short says so in its name.
             let name = Integrator::ALL[i].name();
@@ -1296,7 +1306,41 @@ impl SpringFigure {
                 16,
                 8.0,
             );
-            frame.first_clear_label_by(view, 0.0, candidates, &clear);
+            // A name by its mass (no leader line) has its middle nearer its own mass than any
+            // other, so it does not read as naming the next row's; a name further off gets a
+            // leader line, which must pass no other name and no other mass's disc. Orbited
+            // along the springs, the rows stand side by side and close on the screen.
+            let reads_as_own = |r: crate::draw::layout::Rect| {
+                let Some((c, _)) = disc else { return true };
+                let near = r.nearest(c);
+                let others = masses.iter().enumerate().filter(|&(j, _)| j != i);
+                let own = if near.distance(c) <= crate::draw::layout::LEADER_PX {
+                    let middle = r.min + 0.5 * r.size;
+                    let d = middle.distance(c);
+                    others
+                        .filter_map(|(_, m)| m.2)
+                        .all(|(o, _)| middle.distance(o) > d)
+                } else {
+                    taken
+                        .iter()
+                        .all(|t| !crate::draw::segment_enters(c, near, t.min, t.max()))
+                        && others.filter_map(|(_, m)| m.2).all(|(o, w)| {
+                            let h = glam::Vec2::splat(0.36 * w);
+                            !crate::draw::segment_enters(c, near, o - h, o + h)
+                        })
+                };
+                own && leaders
+                    .iter()
+                    .all(|&(a, b)| !crate::draw::segment_enters(a, b, r.min, r.max()))
+            };
+            frame.first_clear_label_by(view, 0.0, candidates, |r| clear(r) && reads_as_own(r));
+            if let (Some(r), Some((c, _))) = (place_of(frame.labels.last()), disc) {
+                taken.push(r);
+                let near = r.nearest(c);
+                if near.distance(c) > crate::draw::layout::LEADER_PX {
+                    leaders.push((c, near));
+                }
+            }
         }
         frame.keep_box_in_view(
             Vec3::new(SPRING_WALL_X - 0.2, 0.0, SPRING_ROWS_Z[0] - 0.5),

@@ -176,6 +176,17 @@ test('lesson 11: explode now on a paused figure shows its sparks at once, and co
     const { page, problems } = await open(context, '/lessons/11-particles/?backend=webgl2', 800, 600);
     const fig = '#fig-emitters';
     await page.locator(fig).scrollIntoViewIfNeeded();
+    // Playing, the live-particle curves reach the playhead: at each look (between frames), at
+    // most a step (1/60 s) and the clock's rounding behind it, whatever the frame rate.
+    await frames(page, 20);
+    let gap = 0;
+    for (let k = 0; k < 24; k++) {
+      const [clock, last] = await page.evaluate(() => [document.querySelector('#fig-emitters .clock').textContent,
+        document.getElementById('emitters-plot').dataset.xLast]);
+      if (parseFloat(clock) > 0.3) gap = Math.max(gap, parseFloat(clock) - Number(last));
+      await page.waitForTimeout(23);
+    }
+    assert.ok(gap < 0.03, `the fountain's curve ends up to ${gap.toFixed(3)} s before the playhead`);
     await scrubTo(page, fig, 300);
     const text = () => page.locator('#emitters-note').textContent();
     const alive = async () => Number(/^(\d+) particles alive/.exec(await text())?.[1]);
@@ -287,6 +298,8 @@ test('lesson 12: the step-time sweep ends on log-log axes with a note of the slo
     await page.locator('#flock-measure').click();
     await frames(page, 2);
     assert.match(await sweep.textContent(), /^Measuring one step at N = /);
+    // The plot starts empty again, and the note says why the last run's curves are gone.
+    assert.match(await sweep.textContent(), /The last run's curves are cleared: this run's points are drawn as each size is measured\./);
     // Figure 2's step time belongs to the count it was measured at: paused, a new count asks to
     // play instead of showing the old count's time; played, it is measured.
     const play = page.locator('#flock-timeline .play');
@@ -323,6 +336,19 @@ test('lesson 12: the order plot, the rules labels apart, the rule weights in vie
       // separation), and the panel is no taller than the canvas.
       const flock = '#fig-flock';
       await page.locator(flock).scrollIntoViewIfNeeded();
+      // Playing, the order curves reach the playhead (a step and the clock's rounding behind
+      // it at most, at each look between frames).
+      if (w === 800) {
+        await frames(page, 20);
+        let gap = 0;
+        for (let k = 0; k < 24; k++) {
+          const [clock, last] = await page.evaluate((flock) => [document.querySelector(`${flock} .clock`).textContent,
+            document.getElementById('flock-order-plot').dataset.xLast], flock);
+          if (parseFloat(clock) > 0.3) gap = Math.max(gap, parseFloat(clock) - Number(last));
+          await page.waitForTimeout(23);
+        }
+        assert.ok(gap < 0.03, `the order curves end up to ${gap.toFixed(3)} s before the playhead`);
+      }
       for (const name of ['cohesion', 'alignment', 'separation']) {
         const weight = page.locator(`${flock} .lil-gui .lil-gui`, { hasText: 'rule weights' }).locator('.lil-controller', { hasText: name });
         assert.ok(await weight.isVisible(), `${w}x${h}: the ${name} weight is hidden`);

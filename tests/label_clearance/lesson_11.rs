@@ -232,6 +232,7 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
     // (its centre and six points of its rim), and each lies beside its own mass (its box 40 px
     // from it at most, 72 px orbited). As on the page, the figure places them for
     // the view of the frame before.
+    use inbetween::draw::layout::LEADER_PX;
     use inbetween::draw::palette;
     use inbetween::figures::particles::{SpringFigure, SPRING_DRAW_MAX_M};
     const NAMES: [&str; 3] = ["explicit Euler", "semi-implicit Euler", "velocity Verlet"];
@@ -333,12 +334,15 @@ fn lesson_11_spring_names_keep_off_the_walls_and_masses_when_orbited() {
                     }
                     // Each name beside the mass it names: its box within 40 px of the mass's
                     // centre on screen at the page's view, 72 px orbited, where the rows close
-                    // up round the middle one (the masses are drawn in the names' order).
+                    // up round the middle one (the masses are drawn in the names' order), and
+                    // 100 px for a name the page joins to its mass by a leader line (see
+                    // lesson_11_spring_names_read_as_their_own_masses_when_orbited).
                     let reach = if (yaw, pitch) == (0.0, 1.0) { 40.0 } else { 72.0 };
                     for (n, p) in NAMES.iter().zip(&frame.points) {
                         let c = project_to_canvas(view_proj, size, Vec3::from(p.center)).unwrap();
                         let (_, rect) = boxes.iter().find(|(t, _)| t == n).unwrap();
                         let gap = rect.nearest(c).distance(c);
+                        let reach = if gap > LEADER_PX && reach > 40.0 { 100.0 } else { reach };
                         failures.extend(failure_of(|| {
                             assert!(gap <= reach, "{name} on {size}: {n} {gap} px from its mass")
                         }));
@@ -413,6 +417,92 @@ fn lesson_11_sprite_names_keep_off_the_puffs_and_the_atlas_when_orbited() {
                     failures.extend(failure_of(|| {
                         assert_names_cover_none(&name, size, &boxes, &NAMES, &solid, "a puff or the atlas")
                     }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_11_spring_names_read_as_their_own_masses_when_orbited() {
+    // Figure 3 orbited as the page sweep's drag leaves it (a fifth of the canvas's width right
+    // and 42 px down at 0.008 rad a pixel: yaw −0.0016 × width, pitch 1.0 + 0.336, which looks
+    // along the springs with the rows side by side), on the 920 × 420 canvas of the sweep's
+    // figure shots and both page canvases, and at the other orbits of the sweep above: a name
+    // that sits by its mass (its box within LEADER_PX of it, so the page draws no leader line)
+    // has its middle nearer its own mass than any other, so that it does not read as naming
+    // the next row's mass; a name further off gets a leader line from its mass to its box's
+    // nearest point, and that line enters no other name's box and no other mass's disc.
+    use inbetween::draw::layout::LEADER_PX;
+    use inbetween::figures::particles::SpringFigure;
+    let mut failures = Vec::new();
+    let mut views = Vec::new();
+    for width in [920.0, 760.0, 650.0] {
+        views.push((Vec2::new(width, 420.0), -0.0016 * width, 1.336));
+        for (yaw, pitch) in [(-1.216, 1.304), (1.216, 1.304), (-0.6, 0.6), (0.6, 0.4)] {
+            views.push((Vec2::new(width, 420.0), yaw, pitch));
+        }
+    }
+    for (size, yaw, pitch) in views {
+        let view = [0.0, 0.0, 0.0, 8.0, yaw, pitch];
+        for dt in [0.02, 0.1, 0.16] {
+            for time_sec in [0.0, 0.4, 0.5, 1.0, 2.5, 3.8] {
+                let mut scene = SpringFigure::new();
+                scene.set_dt(dt).unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    view,
+                    size,
+                    |fig, out| {
+                        fig.draw(out, time_sec).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("11 spring, orbit ({yaw}, {pitch}), dt {dt}, t {time_sec} on {size}");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                // Each mass's centre and disc radius on the canvas, in the names' order.
+                let masses: Vec<(Vec2, f32)> = frame
+                    .points
+                    .iter()
+                    .map(|p| {
+                        let c = project_to_canvas(view_proj, size, Vec3::from(p.center)).unwrap();
+                        let r = [Vec3::X, Vec3::Y, Vec3::Z]
+                            .iter()
+                            .filter_map(|&d| {
+                                project_to_canvas(view_proj, size, Vec3::from(p.center) + d * p.radius.abs())
+                            })
+                            .fold(0.0, |r: f32, q| r.max(q.distance(c)));
+                        (c, r)
+                    })
+                    .collect();
+                let boxes = label_boxes(&frame, &camera, size);
+                for (i, n) in ["explicit Euler", "semi-implicit Euler", "velocity Verlet"].iter().enumerate() {
+                    let (_, rect) = boxes.iter().find(|(t, _)| t.starts_with(n)).unwrap();
+                    let (c, _) = masses[i];
+                    let near = rect.nearest(c);
+                    if near.distance(c) <= LEADER_PX {
+                        let middle = rect.min + 0.5 * rect.size;
+                        let own = middle.distance(c);
+                        for (j, &(o, _)) in masses.iter().enumerate().filter(|&(j, _)| j != i) {
+                            failures.extend(failure_of(|| {
+                                assert!(own < middle.distance(o), "{name}: {n}'s middle {middle} nearer mass {j} at {o} than its own at {c}")
+                            }));
+                        }
+                    } else {
+                        for (t, other) in boxes.iter().filter(|(t, _)| !t.starts_with(n)) {
+                            failures.extend(failure_of(|| {
+                                assert!(!inbetween::draw::segment_enters(c, near, other.min, other.max()), "{name}: {n}'s leader from {c} to {near} crosses {t:?}")
+                            }));
+                        }
+                        for (j, &(o, r)) in masses.iter().enumerate().filter(|&(j, _)| j != i) {
+                            let lo = o - r / 2f32.sqrt();
+                            let hi = o + r / 2f32.sqrt();
+                            failures.extend(failure_of(|| {
+                                assert!(!inbetween::draw::segment_enters(c, near, lo, hi), "{name}: {n}'s leader from {c} to {near} crosses mass {j} at {o}")
+                            }));
+                        }
+                    }
                 }
             }
         }
