@@ -805,6 +805,24 @@ fn arm_rows(f: &mut BlendFigure) -> Vec<[f32; 6]> {
         .collect()
 }
 
+/// Figure 1's caption: the mix's arm can hang lower than both clips' (the turn between arms
+/// raised in different directions swings it nearer hanging): with run and arm circles, upper body from B,
+/// at weight 0.2 and 0.5, part of the cycle has the mix at least 3° below both clips.
+#[test]
+fn the_mix_can_hang_lower_than_both_clips() {
+    let mut f = BlendFigure::new();
+    f.set_clips("run", "arm circles").unwrap();
+    f.set_mask("upper body from B").unwrap();
+    for w in [0.2, 0.5] {
+        f.set_weight(w).unwrap();
+        let below = arm_rows(&mut f)
+            .iter()
+            .filter(|r| r[3] < r[1].min(r[2]) - 3.0)
+            .count();
+        assert!(below >= 5, "weight {w}: the mix is below both clips in {below} of 61 rows");
+    }
+}
+
 #[test]
 fn the_arm_plot_follows_the_weights_the_mask_and_the_additive_layer() {
     let mut f = BlendFigure::new();

@@ -544,6 +544,54 @@ fn the_side_by_side_view_holds_both_bodies_or_both_left_legs_all_clip_long() {
     }
 }
 
+/// The legs view keeps the part of the joint whose weights the heat map shows in view too
+/// (the pelvis, the spine), both bodies' all clip long, so a heat map above the legs does not
+/// run off the canvas; with no heat map the box holds the legs alone (lower).
+#[test]
+fn the_legs_view_holds_the_heat_maps_joint_too() {
+    let mut h = HumanFigure::new();
+    h.set_compare(true);
+    h.set_view("left legs").unwrap();
+    let ids = [MeshId(3), MeshId(4)];
+    let places = [Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.0, 0.0, -0.5)];
+    let box_of = |h: &mut HumanFigure| {
+        let mut frame = Frame::default();
+        h.skin(0.0).unwrap();
+        h.draw_pair(&mut frame, ids);
+        bounds(&frame.keep_in_view)
+    };
+    let legs_alone = box_of(&mut h);
+    for joint in ["pelvis", "spine"] {
+        h.set_heat_joint(joint).unwrap();
+        let (lo, hi) = box_of(&mut h);
+        assert!(hi.y > legs_alone.1.y, "{joint}: the box did not grow upwards");
+        let part: Vec<usize> = {
+            let c = h.character();
+            let per_part = c.mesh.indices.len() / c.skeleton.len();
+            let j = c.skeleton.find(joint).unwrap();
+            c.mesh.indices[j * per_part..(j + 1) * per_part]
+                .iter()
+                .map(|&i| i as usize)
+                .collect()
+        };
+        for k in 0..65 {
+            let t = h.duration_sec() * k as f32 / 64.0;
+            h.skin(t).unwrap();
+            for (mesh, place) in [&h.mesh, &h.mesh_dqs].into_iter().zip(places) {
+                for &v in &part {
+                    let p = mesh.positions[v] + place;
+                    assert!(
+                        p.cmpge(lo).all() && p.cmple(hi).all(),
+                        "{joint}, {t} s: {p} outside {lo}..{hi}"
+                    );
+                }
+            }
+        }
+    }
+    h.set_heat_joint("none").unwrap();
+    assert_eq!(box_of(&mut h), legs_alone);
+}
+
 #[test]
 fn the_cylinder_figure_keeps_both_tubes_in_view_at_every_bend_and_twist() {
     use inbetween::figures::skinning::{DQS_OFFSET, LBS_OFFSET};

@@ -47,6 +47,8 @@ if (cylinderViewer) {
     title: 'Elbow cross-section against the angle', xLabel: 'bend or twist angle (°)', yLabel: 'area (% of rest)',
     series: ['LBS, bend', 'DQS, bend', 'LBS, twist', 'DQS, twist'],
     colors: ['#e68a00', '#17a2a8', '#8c564b', '#944fc9'], minSpan: 5, height: 180,
+    // Both DQS curves lie at 100%: the purple one, drawn last, is dashed so the teal one shows.
+    dashes: [null, null, null, [6, 4]],
   });
   const volumePlot = new Plot(document.getElementById('cyl-plot-volume'), {
     title: 'Tube volume against the bend', xLabel: 'bend angle (°)', yLabel: 'volume (% of rest)',
@@ -145,7 +147,12 @@ if (humanViewer) {
   });
   gui.add(p, 'view', ['whole body', 'left legs']).name('view').onChange((v) => { scene.setView(v); humanViewer.frameAll(); });
   const showLegend = heatLegend('#fig-human');
-  gui.add(p, 'heat', ['none', ...scene.jointNames()]).name('weights of').onChange((j) => { scene.setHeatJoint(j); showLegend(j); });
+  gui.add(p, 'heat', ['none', ...scene.jointNames()]).name('weights of').onChange((j) => {
+    scene.setHeatJoint(j);
+    showLegend(j);
+    // The legs view holds the heat map's joint too: fit it again.
+    if (p.view === 'left legs') humanViewer.frameAll();
+  });
   showLegend(p.heat);
   const [lowest, highest] = scene.falloffRange();
   gui.add(p, 'falloff', lowest, highest, 0.005).name('falloff (m)').onChange((f) => { scene.setFalloff(f); replot(); });

@@ -411,17 +411,21 @@ impl FaceFigure {
             }
             if differential && self.show_deltas {
                 // Each arrow runs from the vertex on the base head along its offset Σ wₖ dₖ,
-                // drawn TARGET_ARROW_SCALE times as long as in Figure 1, in the head's frame,
-                // lifted 3 cm off the base surface along its normal, its shaft drawn over the
-                // skin (which hides where it starts when the blend moves the skin outwards).
+                // drawn FACE_ARROW_SCALE times as long, in the head's frame, lifted 3 cm off the
+                // base surface along its normal, its shaft drawn over the skin (which hides where
+                // it starts when the blend moves the skin outwards). A vertex that moves less
+                // than FACE_ARROW_MIN carries none: its arrow would be a dot on this small head.
                 let base = &self.face.mesh.positions;
                 let normals = &self.face.mesh.normals;
                 for &v in &self.arrow_vertices {
+                    let offset = self.differential.positions[v] - base[v];
+                    if offset.length() < FACE_ARROW_MIN {
+                        continue;
+                    }
                     let lift = ARROW_LIFT * normals[v];
                     let from = head.transform_point3(base[v] + lift);
-                    let offset = self.differential.positions[v] - base[v];
-                    let to = head.transform_point3(base[v] + lift + TARGET_ARROW_SCALE * offset);
-                    frame.arrow_on_top(from, to, palette::BLUE, ARROW_HEAD_M);
+                    let to = head.transform_point3(base[v] + lift + FACE_ARROW_SCALE * offset);
+                    frame.arrow_on_top(from, to, palette::BLUE, FACE_ARROW_HEAD_M);
                 }
             }
             // Each shown head is named, alone too (the full head's name gives its total).
@@ -572,9 +576,18 @@ const TARGET_STRIDE: usize = 3;
 /// farthest move: where it acts most, each arrow long enough on the canvas to show its direction
 /// (the vertices it barely moves would give dots).
 pub const TARGET_ARROW_SHARE: f32 = 0.5;
-/// Figures 1 and 2 draw each delta arrow this many times as long as the offset it shows: their
-/// heads share a canvas, where a 10 cm offset drawn to scale is a dot a few pixels long.
+/// Figure 1 draws each delta arrow this many times as long as the offset it shows: its heads
+/// share a canvas, where a 10 cm offset drawn to scale is a dot a few pixels long.
 pub const TARGET_ARROW_SCALE: f32 = 2.0;
+/// Figure 2 draws each delta arrow this many times as long as the offset it shows: its
+/// differential head is about 120 px tall on the page's canvas (the view makes room for the full
+/// head at [`FRAMED_SCALE`] times its size), and the animated weights are mostly well below 1.
+pub const FACE_ARROW_SCALE: f32 = 5.0;
+/// Figure 2's vertices that move less than this (metres) at the current weights carry no arrow:
+/// drawn [`FACE_ARROW_SCALE`] times as long, a shorter offset gives a blue dot a few pixels long.
+pub const FACE_ARROW_MIN: f32 = 0.025;
+/// The length of Figure 2's arrow heads, metres (at most 0.4 of the arrow).
+const FACE_ARROW_HEAD_M: f32 = 0.12;
 
 /// The vertices that carry delta arrows: every `stride`-th one along and across the sphere's
 /// rings that some target moves at least [`DELTA_MIN`].

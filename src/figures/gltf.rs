@@ -82,6 +82,10 @@ pub struct GltfFigure {
     world: Vec<Affine3A>,
     /// Scratch: the bind-pose dots on the canvas (CSS pixels), on the last frame's view.
     dots_px: Vec<Vec2>,
+    /// Scratch: the skinned mesh's vertices on the canvas (CSS pixels), on the last frame's view,
+    /// and its triangles there, while the CPU skins it.
+    skin_px: Vec<Option<Vec2>>,
+    skin_triangles: Vec<[Vec2; 3]>,
     palette: Vec<Affine3A>,
     dual_quats: Vec<DualQuat>,
     /// Why DQS fell back to LBS this frame, if it did.
@@ -633,6 +637,28 @@ impl GltfFigure {
             self.dots_px.extend(c.dots.iter().filter_map(px));
         }
         let dots_px = &self.dots_px;
+        // Over a skin the CPU skinned, off the body too (the root lies inside it): off every
+        // skinned triangle on screen. The vertex shader's skin is not known here.
+        self.skin_triangles.clear();
+        if let (true, false, None, Some((view_proj, size)), Ok(skinned)) =
+            (skinning, gpu, &problem, view, &c.skinned)
+        {
+            for (m, s) in c.imported.meshes.iter().zip(skinned) {
+                self.skin_px.clear();
+                self.skin_px.extend(
+                    s.positions
+                        .iter()
+                        .map(|&p| crate::camera::project_to_canvas(view_proj, size, p)),
+                );
+                for t in m.indices.chunks_exact(3) {
+                    let corner = |k: usize| self.skin_px.get(t[k] as usize).copied().flatten();
+                    if let (Some(a), Some(b), Some(d)) = (corner(0), corner(1), corner(2)) {
+                        self.skin_triangles.push([a, b, d]);
+                    }
+                }
+            }
+        }
+        let skin = &self.skin_triangles;
         // Nor beside another joint's ball, which it would seem to name.
         let joints_px: Vec<Vec2> = match view {
             Some((view_proj, size)) => self
@@ -649,7 +675,9 @@ impl GltfFigure {
             let clear = |points: &[Vec2], gap: f32| {
                 points.iter().all(|&d| rect.nearest(d).distance(d) > gap)
             };
-            clear(dots_px, dot_clear_px) && clear(&joints_px, joint_clear_px)
+            clear(dots_px, dot_clear_px)
+                && clear(&joints_px, joint_clear_px)
+                && !skin.iter().any(|&t| touches_triangle(rect, t))
         });
         if dots {
             let radius = DOT_RADIUS * c.size;
@@ -732,4 +760,25 @@ impl GltfFigure {
             }
         ))
     }
+}
+
+/// Whether the label box `rect` (grown by 2 px) and the triangle `[a, b, c]` on the canvas
+/// overlap: an edge of the triangle enters the box, or the box lies inside the triangle.
+fn touches_triangle(rect: crate::draw::layout::Rect, [a, b, c]: [Vec2; 3]) -> bool {
+    let (lo, hi) = (
+        rect.min - Vec2::splat(2.0),
+        rect.min + rect.size + Vec2::splat(2.0),
+    );
+    if a.min(b).min(c).cmpgt(hi).any() || a.max(b).max(c).cmplt(lo).any() {
+        return false;
+    }
+    let enters = |p, q| crate::draw::segment_enters(p, q, lo, hi);
+    if enters(a, b) || enters(b, c) || enters(c, a) {
+        return true;
+    }
+    // The box's centre on the same side of all three edges: inside.
+    let m = 0.5 * (lo + hi);
+    let side = |p: Vec2, q: Vec2| (q - p).perp_dot(m - p);
+    let (x, y, z) = (side(a, b), side(b, c), side(c, a));
+    (x >= 0.0 && y >= 0.0 && z >= 0.0) || (x <= 0.0 && y <= 0.0 && z <= 0.0)
 }

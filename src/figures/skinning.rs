@@ -1062,8 +1062,8 @@ impl HumanFigure {
     }
 
     /// The box the side-by-side figure keeps in view (scene space, both bodies placed): every
-    /// vertex of both bodies (whole body), or of both left legs' thigh and shin parts (left
-    /// legs), skinned by LBS and by DQS at [`VIEW_SAMPLES`] times over the clip, widened by
+    /// vertex of both bodies (whole body), or of both left legs' thigh and shin parts and of the
+    /// heat map's joint's part (left legs), skinned by LBS and by DQS at [`VIEW_SAMPLES`] times over the clip, widened by
     /// [`VIEW_MARGIN_M`]. It holds the bodies wherever the clip takes them, so the camera
     /// stays put while the clip plays.
     pub fn view_box(&mut self) -> Result<(Vec3, Vec3), String> {
@@ -1074,10 +1074,13 @@ impl HumanFigure {
         let m = &c.mesh;
         let vertices: Vec<usize> = match self.view {
             HumanView::Body => (0..m.positions.len()).collect(),
+            // The legs, and the part of the joint whose weights the heat map shows (the pelvis
+            // or the spine above them would otherwise run off the canvas's top).
             HumanView::Legs => {
                 let per_part = m.indices.len() / c.skeleton.len();
                 self.leg
                     .iter()
+                    .chain(self.heat_joint.as_ref())
                     .flat_map(|&j| m.indices[j * per_part..(j + 1) * per_part].iter())
                     .map(|&i| i as usize)
                     .collect()
@@ -1283,9 +1286,12 @@ impl HumanFigure {
     }
 
     /// "none" or a joint's name: colour the body by that joint's weights.
+    /// In the legs view the camera keeps that joint's part in view too
+    /// ([`HumanFigure::view_box`]).
     pub fn set_heat_joint(&mut self, name: &str) -> Result<(), String> {
         self.heat_joint = parse_heat(self.character.skeleton.names(), name)?;
         self.repaint();
+        self.view_box = None;
         Ok(())
     }
 
