@@ -532,6 +532,28 @@ fn fractals_count_segments_and_triangles() {
 }
 
 #[test]
+fn where_the_newest_octave_adds_nothing_both_profiles_show() {
+    // At N = 7, α = 0.2 the newest octave is about 1e-5 high: the profile without it lies on
+    // the orange one. The dark one is drawn after it, dashed and narrower, so the orange shows
+    // between the dashes and either side of them.
+    let mut s = Octaves::new();
+    s.set_params(7.0, 0.2, 3.37).unwrap();
+    let mut f = Frame::default();
+    s.draw(&mut f, MeshId(3));
+    let of = |c: Vec3| -> Vec<usize> {
+        (0..f.strokes.len())
+            .filter(|&i| f.strokes[i].color[..3] == c.to_array())
+            .collect()
+    };
+    let (orange, dark) = (of(palette::ORANGE), of(palette::DARK));
+    assert!(!orange.is_empty() && !dark.is_empty());
+    assert!(orange.iter().max() < dark.iter().min(), "the dark profile over the orange");
+    assert!(dark.iter().all(|&i| f.strokes[i].dash[3] > 0.0), "dashed");
+    let width = |i: &[usize]| f.strokes[i[0]].width_px;
+    assert!(width(&orange) >= width(&dark) + 2.0, "{} {}", width(&orange), width(&dark));
+}
+
+#[test]
 fn octaves_name_the_octaves_finer_than_the_mesh_and_can_leave_them_out() {
     let mut s = Octaves::new();
     // 193 vertices, 0.0104 m apart: octave 5 (cells of 1/32 m) fits, octave 6 does not.

@@ -124,10 +124,11 @@ fn the_thirds_are_drawn_half_the_size_of_the_moving_aeroplanes() {
         .iter()
         .filter(|m| m.mesh == MeshId::CUBE)
         .collect();
-    // Three moving aeroplanes, then three thirds for each of two methods, four cubes each.
-    assert_eq!(cubes.len(), 4 * 9);
-    let moving = cubes[..12].iter().map(|m| span(m)).fold(0.0, f32::max);
-    for third in &cubes[12..] {
+    // Two solid moving aeroplanes (the screw's is an outline beside the blend's), then three
+    // thirds for each of two methods, four cubes each.
+    assert_eq!(cubes.len(), 4 * 8);
+    let moving = cubes[..8].iter().map(|m| span(m)).fold(0.0, f32::max);
+    for third in &cubes[8..] {
         let s = span(third);
         assert!(
             s <= 0.55 * moving,
@@ -141,7 +142,8 @@ fn solo_shows_one_method() {
     let mut scene = RigidMotion::new();
     let mut frame = Frame::default();
     scene.draw(&mut frame, 0.3).unwrap();
-    assert_eq!(planes(&frame), 3);
+    // The screw's is an outline beside the blend's.
+    assert_eq!(planes(&frame), 2);
     for which in 1..=3 {
         scene.set_show(which).unwrap();
         let mut frame = Frame::default();
@@ -573,11 +575,14 @@ fn the_keys_stay_readable_where_the_planes_meet_them() {
             .filter(|m| m.mesh == MeshId::CUBE)
             .map(|m| m.model.w_axis.truncate());
         // The paths (the keys' axes are left out: the name sits just past the tip of its
-        // key's y axis, which leads to it).
+        // key's y axis, which leads to it; so is the screw's plane's outline, whose boxes stand
+        // where the blend's solid ones do at the keys).
+        let outline = inbetween::figures::rigid::SCREW_OUTLINE_PX;
         let paths = f
             .strokes
             .iter()
             .filter(|s| s.width_px != AXIS_PX)
+            .filter(|s| !(s.width_px == outline && s.color[..3] == palette::Z_AXIS.to_array()))
             .flat_map(|s| [Vec3::from(s.a), Vec3::from(s.b)]);
         let nearest = centres
             .chain(paths)
@@ -593,38 +598,45 @@ fn the_keys_stay_readable_where_the_planes_meet_them() {
 
 #[test]
 fn where_blend_and_screw_coincide_both_planes_show() {
-    // The blend and the screw put the plane in the same place at the keys and half-way, and a
-    // up to 0.18 m apart between: with both shown, the blend's (green) is drawn narrower and
-    // thicker, so the screw's (blue) shows around it and the green through it.
+    // The blend and the screw put the plane in the same place at the keys and half-way, and
+    // up to 0.18 m apart between: with both shown, the screw's (blue) is an outline, 12 edges a
+    // box, and the blend's (green) a solid inside it, at its own size.
     use inbetween::draw::palette;
-    let wing = |frame: &Frame, color: Vec3| {
-        let m = frame
+    use inbetween::figures::rigid::SCREW_OUTLINE_PX;
+    let solid = |frame: &Frame, color: Vec3| {
+        frame
             .meshes
             .iter()
-            .find(|d| d.color.truncate().distance(color * 0.8) < 1e-5)
-            .expect("a wing of that colour")
-            .model;
-        // The wing's half span (its z) and half thickness (its y), in metres.
-        (m.z_axis.truncate().length(), m.y_axis.truncate().length())
+            .filter(|d| d.color.truncate().distance(color * 0.8) < 1e-5)
+            // Its half span in centimetres, rounded.
+            .map(|d| (d.model.z_axis.truncate().length() * 100.0).round())
+            .collect::<Vec<f32>>()
+    };
+    let outline = |frame: &Frame| {
+        frame
+            .strokes
+            .iter()
+            .filter(|s| s.color[..3] == palette::Z_AXIS.to_array() && s.width_px == SCREW_OUTLINE_PX)
+            .count()
     };
     let mut scene = RigidMotion::new();
     assert!(scene.coincides_with_screw(0.5) && !scene.coincides_with_screw(0.25));
-    // Between the keys and half-way the two planes stay up to 0.18 m apart (and
-    // 4.5° at most at the defaults, t = 0.25), so one would hide the other all the way.
     for t in [0.5, 0.0, 1.0, 0.25, 0.58] {
         let mut frame = Frame::default();
         scene.draw(&mut frame, t).unwrap();
-        let (green_span, green_thick) = wing(&frame, palette::Y_AXIS);
-        let (blue_span, blue_thick) = wing(&frame, palette::Z_AXIS);
-        assert!(blue_span > green_span * 1.1, "t {t}: the screw's wing shows around the blend's");
-        assert!(green_thick > blue_thick * 1.2, "t {t}: the blend's wing shows through");
+        // The wing (the part in 0.8 of the plane's colour), at its own size.
+        assert_eq!(solid(&frame, palette::Y_AXIS), [50.0], "t {t}: the blend's solid wing");
+        assert!(solid(&frame, palette::Z_AXIS).is_empty(), "t {t}: no solid screw plane");
+        assert_eq!(outline(&frame), 4 * 12, "t {t}: the screw's plane's edges");
     }
-    // With the blend shown alone it keeps its shape.
-    scene.set_show(2).unwrap();
-    let mut frame = Frame::default();
-    scene.draw(&mut frame, 0.5).unwrap();
-    let (span, _) = wing(&frame, palette::Y_AXIS);
-    assert!((span - 0.5).abs() < 1e-5, "{span}");
+    // Shown alone, each is solid.
+    for (show, color) in [(2, palette::Y_AXIS), (3, palette::Z_AXIS)] {
+        scene.set_show(show).unwrap();
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, 0.5).unwrap();
+        assert_eq!(solid(&frame, color), [50.0], "show {show}");
+        assert_eq!(outline(&frame), 0, "show {show}");
+    }
 }
 
 #[test]

@@ -371,6 +371,35 @@ fn gimbal_rings_turn_red_at_lock_and_axles_are_labelled() {
 }
 
 #[test]
+fn the_gimbal_axles_show_over_the_rings_at_lock() {
+    // At gimbal lock the pitch axle lies in the plane of the two locked rings and the roll axle
+    // along the yaw axle: depth-tested, each hides inside a ring's edge on screen, and its name
+    // names nothing visible. Each axle and its line on to its name are drawn over everything.
+    let mut g = Gimbal::new();
+    g.set_angles_deg(30.0, 90.0, 20.0).unwrap();
+    let mut frame = Frame::default();
+    g.draw(&mut frame);
+    for color in inbetween::figures::rotations::GIMBAL_COLORS {
+        let axle: Vec<_> = (frame.strokes.iter())
+            .filter(|s| s.color[..3] == color.to_array())
+            .collect();
+        assert_eq!(axle.len(), 2, "{color}: the axle and the line to its name");
+        assert!(axle.iter().all(|s| s.depth_bias == inbetween::draw::ON_TOP), "{color}");
+    }
+}
+
+#[test]
+fn the_key_circle_stays_face_on() {
+    // The circle of unit quaternions is a plane diagram: a drag pans it instead of orbiting (an
+    // orbit turned the circle into a thin ellipse, and a and −b, 10° apart at the 170° preset,
+    // ran together).
+    let mut scene = Interpolation::new();
+    let mut frame = Frame::default();
+    scene.draw_circle(&mut frame, 0.3).unwrap();
+    assert!(frame.flat);
+}
+
+#[test]
 fn gimbal_rings_show_the_colours_the_page_names() {
     // The page calls the rings green, orange and blue: each ring's boxes are drawn unlit in
     // that colour (the light would turn the thin, side-lit boxes a darker shade, orange to

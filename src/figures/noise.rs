@@ -832,6 +832,9 @@ pub struct Octaves {
     stale: bool,
 }
 
+/// Width of Figure 3's orange profile, CSS pixels: 1.5 px either side of the dark dashed
+/// profile drawn over it.
+pub const PROFILE_PX: f32 = 4.5;
 /// The profile's v (world z).
 pub const V_SLICE: f32 = 0.25;
 const FIG3_H: f32 = 0.5;
@@ -1002,14 +1005,18 @@ impl Octaves {
                 .collect()
         };
         // Both profiles over the surface: at α = 0.8 the fine octaves' spikes stand in front of
-        // the line v = 0.25 from any view, and the profile is what the plot below draws.
-        let on_top = |w| StrokeStyle {
+        // the line v = 0.25 from any view, and the profile is what the plot below draws. The
+        // dark one thin and dashed over the wide orange one: where the newest octave adds next
+        // to nothing the two lie on one line, and both still show.
+        let over = |style| StrokeStyle {
             on_top: true,
-            ..StrokeStyle::solid(w)
+            ..style
         };
-        frame.stroke(&profile(&shown), palette::ORANGE, on_top(crate::draw::CURVE_PX));
+        let orange = over(StrokeStyle::solid(PROFILE_PX));
+        frame.stroke(&profile(&shown), palette::ORANGE, orange);
         if shown.n > 0 {
-            frame.stroke(&profile(&previous), palette::DARK, on_top(1.5));
+            let dashed = over(StrokeStyle::dashed(1.5, 0.03, 0.03));
+            frame.stroke(&profile(&previous), palette::DARK, dashed);
         }
         frame.label(
             Vec3::new(1.05, 0.0, V_SLICE),

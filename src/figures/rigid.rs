@@ -3,7 +3,7 @@
 //! naively vs through polar decomposition. Natively testable; `web::rigid` wraps these.
 
 use super::curves::{probe_note, Probe};
-use super::rotations::draw_plane;
+use super::rotations::{draw_plane, plane_parts};
 use super::{
     failure_note, format_number, in_range, palette, rotation_problem, unit_quat_problem, Frame,
     MeshId, Runner, DEFAULT_RUNNER,
@@ -47,10 +47,11 @@ type Name = (Vec3, String, Vec3, glam::Vec2);
 /// Each method's name on its moving aeroplane, in the order of [`Method`].
 pub const METHOD_NAMES: [&str; 3] = ["lerp + slerp", "blend", "screw"];
 pub const SCREW_AXIS: Vec3 = palette::PURPLE;
-/// The blend's plane's scale (its x, y, z) when the screw's is shown too (the two nearly
-/// coincide all the way, [`RigidMotion::coincides_with_screw`]): narrower, so the screw's plane
-/// shows around it, and thicker, so it shows through the screw's.
-pub const COINCIDENT_BLEND_SCALE: Vec3 = Vec3::new(0.8, 1.5, 0.8);
+/// Width of the screw's aeroplane's outline (CSS pixels), drawn instead of its boxes when the
+/// blend's aeroplane is shown too: the two stay within 0.18 m and 4.5° of each other at the
+/// defaults and meet at the keys and half-way ([`RigidMotion::coincides_with_screw`]), so one
+/// solid aeroplane would hide the other; the blend's solid green shows inside the blue edges.
+pub const SCREW_OUTLINE_PX: f32 = 2.5;
 /// The thirds' aeroplanes' size, of a moving one's: the screw's thirds stand where its moving
 /// aeroplane passes at t = 1/3 and 2/3, and the lerp + slerp ones close together, so a smaller
 /// ghost shows inside or beside the full-size aeroplane, not as one knot with it.
@@ -99,6 +100,9 @@ pub struct RigidMotion {
     view: Option<(crate::camera::OrbitCamera, glam::Vec2)>,
     /// Scratch: points of the aeroplanes' parts on the canvas (CSS pixels), on that view.
     parts_px: Vec<glam::Vec2>,
+    /// Scratch: the boxes of the aeroplane drawn as an outline this frame, which names keep off
+    /// as they keep off the solid ones.
+    outlined: Vec<Mat4>,
 }
 
 impl Default for RigidMotion {
@@ -126,6 +130,7 @@ impl RigidMotion {
             path: Vec::with_capacity(65),
             view: None,
             parts_px: Vec::new(),
+            outlined: Vec::new(),
         }
     }
 
@@ -326,16 +331,16 @@ impl RigidMotion {
             }
             let m = self.motion(method, t);
             let (r, p) = m.to_rotation_translation();
-            // With the screw's shown, the blend's plane is drawn narrower and thicker: both
-            // travel one helix, up to 0.18 m and 4.5° apart at the defaults between the keys and
-            // half-way (where they coincide), so the screw's blue shows around it and the
-            // blend's green through it, as with the paths.
-            let linear = if method == Method::DualQuatNlerp && self.shown(Method::Screw) {
-                Mat3::from_quat(r) * Mat3::from_diagonal(COINCIDENT_BLEND_SCALE)
+            // With the blend's shown too, the screw's plane is an outline (SCREW_OUTLINE_PX).
+            if method == Method::Screw && self.shown(Method::DualQuatNlerp) {
+                let edges = crate::draw::StrokeStyle::solid(SCREW_OUTLINE_PX);
+                for (part, _) in plane_parts(p, Mat3::from_quat(r), color, 1.0) {
+                    wire_cube(frame, part, color, edges);
+                    self.outlined.push(part);
+                }
             } else {
-                Mat3::from_quat(r)
-            };
-            draw_plane(frame, p, linear, color, 1.0);
+                draw_plane(frame, p, Mat3::from_quat(r), color, 1.0);
+            }
             if own_axes {
                 frame.axes(m.to_mat4() * Mat4::from_translation(self.pivot), 0.45);
             }
@@ -496,16 +501,16 @@ impl RigidMotion {
         let view = self.view_proj();
         self.parts_px.clear();
         if let Some((view_proj, size)) = view {
-            for m in &frame.meshes {
+            let models = frame.meshes.iter().map(|m| m.model);
+            for model in models.chain(self.outlined.drain(..)) {
                 self.parts_px.extend((0..125).filter_map(|i| {
                     let c = |k: i32| (k % 5) as f32 * 0.5 - 1.0;
-                    let p = m
-                        .model
-                        .transform_point3(Vec3::new(c(i), c(i / 5), c(i / 25)));
+                    let p = model.transform_point3(Vec3::new(c(i), c(i / 5), c(i / 25)));
                     crate::camera::project_to_canvas(view_proj, size, p)
                 }));
             }
         }
+        self.outlined.clear();
         for (p, text, color, toward) in names {
             let around = crate::draw::Label::around_dot(p, 0.0, toward, &text, color, 0, 16, 6.0);
             let parts = &self.parts_px;

@@ -22,9 +22,17 @@ const TOLERANCE: f32 = 1e-4;
 /// orientation (and any shear) is easy to read. Drawn with `linear` (any 3×3, not only rotations)
 /// at `at`; the nose points along local +x.
 pub fn draw_plane(frame: &mut Frame, at: Vec3, linear: Mat3, color: Vec3, size: f32) {
+    for (part, c) in plane_parts(at, linear, color, size) {
+        frame.mesh(MeshId::CUBE, part, c);
+    }
+}
+
+/// The aeroplane's four boxes ([`draw_plane`]): each one's model of the cube `[-1, 1]³` (body,
+/// wings, tail fin, nose) and its colour.
+pub fn plane_parts(at: Vec3, linear: Mat3, color: Vec3, size: f32) -> [(Mat4, Vec3); 4] {
     let place =
         Mat4::from_translation(at) * Mat4::from_mat3(linear) * Mat4::from_scale(Vec3::splat(size));
-    let parts = [
+    [
         (Vec3::ZERO, Vec3::new(0.5, 0.09, 0.11), color),
         (
             Vec3::new(0.05, 0.0, 0.0),
@@ -41,11 +49,8 @@ pub fn draw_plane(frame: &mut Frame, at: Vec3, linear: Mat3, color: Vec3, size: 
             Vec3::splat(0.06),
             Vec3::new(0.95, 0.85, 0.2),
         ),
-    ];
-    for (center, half, c) in parts {
-        let part = Mat4::from_translation(center) * Mat4::from_scale(half);
-        frame.mesh(MeshId::CUBE, place * part, c);
-    }
+    ]
+    .map(|(center, half, c)| (place * Mat4::from_translation(center) * Mat4::from_scale(half), c))
 }
 
 /// The four ways of getting from one orientation to another, side by side.
@@ -428,6 +433,8 @@ impl Interpolation {
     /// both at `t`. Returns the note: which of b and −b the arc in use ends at, and why.
     pub fn draw_circle(&mut self, frame: &mut Frame, t: f32) -> Result<String, String> {
         let t = in_range("t", t, 0.0, 1.0)?;
+        // A plane diagram seen face-on: a drag pans it, and the circle stays a circle.
+        frame.flat = true;
         let (e1, e2) = self.key_plane();
         let to_world =
             |q: Quat| CIRCLE_CENTRE + CIRCLE_RADIUS * Vec3::new(q.dot(e1), q.dot(e2), 0.0);
@@ -943,7 +950,8 @@ impl Gimbal {
         }
         // Each ring's axle, in the colour of the ring it turns, with its bearings on the ring,
         // and a thin line on to its name past the outer ring: the axle's tips lie on the rings,
-        // where a name would cover them.
+        // where a name would cover them. Over the rings and the aeroplane: at gimbal lock an axle
+        // lies in a ring's plane, inside its edge on screen.
         let axles = [
             (base, Vec3::Y, 1.3, c_outer, "yaw axle"),
             (outer, Vec3::X, 1.1, c_middle, "pitch axle"),
@@ -952,8 +960,13 @@ impl Gimbal {
         for (m, axis, len, color, _) in axles {
             let a = m.transform_point3(-axis * len);
             let b = m.transform_point3(axis * len);
-            frame.wide_line(a, b, color, 3.0);
-            frame.wide_line(b, m.transform_point3(axis * Self::AXLE_NAME_R), color, 1.5);
+            let over = |width_px| crate::draw::StrokeStyle {
+                on_top: true,
+                ..crate::draw::StrokeStyle::solid(width_px)
+            };
+            frame.stroke(&[a, b], color, over(3.0));
+            let name_at = m.transform_point3(axis * Self::AXLE_NAME_R);
+            frame.stroke(&[b, name_at], color, over(1.5));
             frame.marker(a, crate::draw::DOT_PX, color);
             frame.marker(b, crate::draw::DOT_PX, color);
         }

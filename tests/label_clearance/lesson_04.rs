@@ -188,6 +188,7 @@ fn lesson_04_method_names_sit_on_their_moving_aeroplanes() {
     // round on the small canvas, with the thirds on, the paths and thirds can leave no clear place
     // within 64 px of the screw's plane (its name then gets a leader line).
     use inbetween::figures::rigid::{Method, RigidMotion, METHODS, METHOD_NAMES};
+    use inbetween::figures::rotations::plane_parts;
     let mut failures = Vec::new();
     let mut names_checked = 0;
     let cases = [
@@ -245,7 +246,23 @@ fn lesson_04_method_names_sit_on_their_moving_aeroplanes() {
                         assert_shown_clear_by(&name, &frame, &camera, size, &checked, 2.0)
                     }));
                     let points = |m: &inbetween::draw::MeshDraw| part_points(m, &camera, size);
-                    let parts: Vec<Vec2> = frame.meshes.iter().flat_map(points).collect();
+                    // Each shown method's moving aeroplane's boxes (the screw's is an outline,
+                    // not meshes, when the blend's is shown too).
+                    let own_boxes = |method: Method| {
+                        let (r, p) = scene.motion(method, t).to_rotation_translation();
+                        plane_parts(p, glam::Mat3::from_quat(r), Vec3::ONE, 1.0).map(|(m, _)| {
+                            inbetween::draw::MeshDraw {
+                                mesh: inbetween::draw::MeshId::CUBE,
+                                model: m,
+                                color: glam::Vec4::ONE,
+                                vertex_colors: false,
+                                unlit: false,
+                            }
+                        })
+                    };
+                    let parts: Vec<Vec2> = (frame.meshes.iter().flat_map(points))
+                        .chain(shown.iter().flat_map(|&m| own_boxes(m)).flat_map(|m| points(&m)))
+                        .collect();
                     let placed = layout(&frame, &camera, size);
                     for (&i, &method) in named.iter().zip(&shown) {
                         let (_, b, p) = &placed[i];
@@ -254,20 +271,8 @@ fn lesson_04_method_names_sit_on_their_moving_aeroplanes() {
                             size: b.size,
                         };
                         let text = &frame.labels[i].text;
-                        // Its own aeroplane: the four boxes from the one centred at the
-                        // method's pose, drawn after the keys' and the thirds'.
-                        let centre = scene.motion(method, t).translation();
-                        let own: Vec<Vec2> = frame
-                            .meshes
-                            .iter()
-                            .rposition(|m| m.model.w_axis.truncate().distance(centre) < 1e-4)
-                            .map(|first| {
-                                frame.meshes[first..first + 4]
-                                    .iter()
-                                    .flat_map(points)
-                                    .collect()
-                            })
-                            .unwrap_or_default();
+                        // Its own aeroplane: the four boxes at the method's pose.
+                        let own: Vec<Vec2> = own_boxes(method).iter().flat_map(points).collect();
                         names_checked += 1;
                         failures.extend(failure_of(|| {
                             let gap = own
