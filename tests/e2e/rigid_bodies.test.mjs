@@ -40,6 +40,17 @@ test('lesson 14: the stack\'s energy plot shows the µJ a stack keeps at rest an
       const [, pushed] = await yRange(page, '#stack-plot');
       assert.ok(pushed >= 1, `${w}x${h}: ${pushed}`);
       await page.locator(fig).screenshot({ path: `tests/screenshots/14-rigid-bodies-stack-pushed-${w}x${h}-webgl2.png` });
+      // At the end the pushed stack has settled: seven decades or more in under 100 px. The
+      // axis labels every few decades, 13 px (a label's height) or more apart, in one notation.
+      await scrubTo(page, fig, 1000);
+      const plot = page.locator('#stack-plot');
+      const [low] = await yRange(page, '#stack-plot');
+      assert.ok(low <= 1e-6, `${w}x${h}: ${low}`);
+      const gap = Number(await plot.getAttribute('data-y-label-gap'));
+      const labels = (await plot.getAttribute('data-y-labels')).split(' ');
+      assert.ok(labels.length >= 2 && gap >= 13, `${w}x${h}: ${labels} ${gap} px apart`);
+      assert.ok(labels.every((l) => /^10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+$/.test(l)), `${w}x${h}: ${labels}`);
+      await page.locator(fig).screenshot({ path: `tests/screenshots/14-rigid-bodies-stack-settled-${w}x${h}-webgl2.png` });
       // Reset: the run's only sample, its still start, has no place on a log axis; the axis
       // still shows numbers (a decade), not an empty 0 to 0.
       await page.locator(`${fig} .lil-controller`, { hasText: 'reset' }).locator('button').click();
