@@ -3,7 +3,7 @@
 // 0 to 0.1 J axis; Figure 4's arrows and names at both page sizes (screenshots to look at).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl } from './browser.mjs';
 
 const site = serveDist();
 
@@ -61,6 +61,10 @@ test('lesson 14: the stack\'s energy plot shows the µJ a stack keeps at rest an
       await page.locator('#fig-impulse').scrollIntoViewIfNeeded();
       await scrubTo(page, '#fig-impulse', 1000);
       await page.locator('#fig-impulse').screenshot({ path: `tests/screenshots/14-rigid-bodies-impulse-${w}x${h}-webgl2.png` });
+      // A level drop bounces straight back up: v before and v after side by side (a look).
+      await setControl(page, '#fig-impulse', 'tilt', 0);
+      await scrubTo(page, '#fig-impulse', 300);
+      await page.locator('#fig-impulse').screenshot({ path: `tests/screenshots/14-rigid-bodies-impulse-tilt0-${w}x${h}-webgl2.png` });
       assert.deepEqual(problems, []);
       await page.close();
     }
