@@ -117,10 +117,13 @@ impl OrbitCamera {
 }
 
 impl OrbitCamera {
-    /// Keeps a panned flat figure in view: moves the target, in the view plane, just enough that
-    /// the box round `points` (seen from this direction) stays inside a canvas of `size_px`, or,
-    /// zoomed in past it, fills the canvas. Per axis, with `c ± b` the box and `v` the view's half
-    /// extent at the target's depth, the target stays within `c ± |b − v|`.
+    /// Keeps a panned flat figure in view: along an axis where the box round `points` (seen from
+    /// this direction) fits inside a canvas of `size_px`, its centre stays within [`PAN_ROOM_PX`]
+    /// of the canvas's (the drag shows, and the box stays in the middle instead of ending against
+    /// one edge with the rest of the canvas empty); zoomed in past it, the target moves just
+    /// enough that the box fills the canvas. Per axis, with `c ± b` the box, `v` the view's half
+    /// extent at the target's depth and `p` the room there, the target stays within
+    /// `c ± min(p, v − b)`, or `c ± (b − v)`.
     pub fn clamp_pan(&mut self, points: &[Vec3], size_px: Vec2) {
         let view = self.view();
         let (right, up) = (view.row(0).truncate(), view.row(1).truncate());
@@ -134,11 +137,15 @@ impl OrbitCamera {
         }
         let v = self.distance * (0.5 * self.fov_y_rad).tan() * Vec2::new(size_px.x / size_px.y, 1.0);
         let (c, b, t) = (0.5 * (lo + hi), 0.5 * (hi - lo), on(self.target));
-        let slack = (b - v).abs();
+        let room = PAN_ROOM_PX * 2.0 * v.y / size_px.y;
+        let slack = Vec2::select(b.cmpgt(v), b - v, (v - b).min(Vec2::splat(room)));
         let d = t.clamp(c - slack, c + slack) - t;
         self.target += right * d.x + up * d.y;
     }
 }
+
+/// How far a drag may move a flat figure that fits its canvas off the middle, CSS pixels.
+pub const PAN_ROOM_PX: f32 = 8.0;
 
 /// Space kept between the points a camera fits and the canvas's edges, CSS pixels (room for a
 /// label beside an anchor near the edge).

@@ -3,7 +3,7 @@
 //! fit keeps the reader's yaw and pitch.
 
 use glam::{Vec2, Vec3};
-use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
+use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX, PAN_ROOM_PX};
 use proptest::prelude::*;
 
 const SIZES: [Vec2; 3] = [
@@ -562,5 +562,29 @@ fn the_hinged_chains_fill_the_part_left_of_the_inset() {
             hi.x - lo.x,
             hi.y - lo.y
         );
+    }
+}
+
+#[test]
+fn a_panned_flat_figure_that_fits_stays_near_the_middle() {
+    // A flat figure fitted to its box, dragged far each way: where the box fits inside the
+    // canvas, its centre stays within PAN_ROOM_PX (8 px) of the canvas's, so a drag never leaves
+    // it against one edge with the rest of the canvas empty. The box is wider (2:1) than every
+    // canvas, so along y it has room to spare that a clamp to the canvas's edge would let it use.
+    let points = corners(Vec3::ZERO, Vec3::new(2.0, 1.0, 0.0));
+    for size in SIZES {
+        let mut camera = OrbitCamera::from_view([1.0, 0.5, 0.0, 3.0, 0.0, 0.0]);
+        assert!(camera.fit(&points, size, FIT_PAD_PX));
+        for (dx, dy) in [(10.0, 10.0), (-10.0, -10.0), (0.3, -0.4)] {
+            camera.drag(dx * size.x, dy * size.y, size.y, true);
+            camera.clamp_pan(&points, size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let centre = project_to_canvas(view_proj, size, Vec3::new(1.0, 0.5, 0.0)).unwrap();
+            let off = (centre - 0.5 * size).abs();
+            assert!(
+                off.cmple(Vec2::splat(PAN_ROOM_PX + 0.5)).all(),
+                "{size}, dragged ({dx}, {dy}) canvases: the box's centre is {off} px off the middle"
+            );
+        }
     }
 }

@@ -6,8 +6,8 @@ use glam::Vec3;
 use inbetween::draw::{palette, Frame, MeshId};
 use inbetween::figures::rigid_body::{
     DriftFigure, ImpulseFigure, RacketFigure, StackFigure, StackPreset, ThrowFigure, DOMINOES,
-    DOMINO_HALF, DRIFT_DRAWN_MAX_NORM, DRIFT_STEPS, FALLEN_DEG, INTEGRATORS, THROW_START,
-    THROW_VELOCITY,
+    DOMINO_HALF, DRIFT_DRAWN_MAX_NORM, DRIFT_STEPS, FALLEN_DEG, INTEGRATORS, RACKET_PLOT_TOP,
+    THROW_START, THROW_VELOCITY,
 };
 
 #[test]
@@ -1553,5 +1553,57 @@ fn the_throws_omega_tip_reach_bounds_its_trail_and_is_reached() {
             let inside = p.cmpge(inset.min - 1e-3).all() && p.cmple(inset.max + 1e-3).all();
             assert!(inside, "{what}: {p} outside the inset's {inset:?}");
         }
+    }
+}
+
+#[test]
+fn the_racket_plots_stop_at_three_times_the_start_and_each_name_has_its_rackets_colour() {
+    // At the defaults no curve reaches 3 times its start: each axis spans the samples. At
+    // 12 rad/s the explicit racket climbs towards 100 times its start energy and explodes; the
+    // axes stop at 3 (the caption's number), and the held and implicit curves, which the text
+    // compares, lie inside them, the implicit racket's fall to about a quarter included.
+    let span = |f: &RacketFigure, first: usize, k: usize| {
+        f.samples()
+            .iter()
+            .map(|r| r[first + k])
+            .filter(|x| x.is_finite())
+            .fold((f32::MAX, f32::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)))
+    };
+    assert_eq!(RACKET_PLOT_TOP, 3.0);
+    let mut f = RacketFigure::new();
+    f.advance_to(f.duration_sec()).unwrap();
+    let r = f.plot_ranges();
+    for (first, range) in [(1, [r[0], r[1]]), (4, [r[2], r[3]])] {
+        let (lo, hi) = (0..3).map(|k| span(&f, first, k)).fold((f32::MAX, f32::MIN), |a, b| {
+            (a.0.min(b.0), a.1.max(b.1))
+        });
+        assert!(hi < RACKET_PLOT_TOP && range == [lo, hi], "{range:?} for {lo}..{hi}");
+    }
+    f.set_spin(12.0, 0.05).unwrap();
+    f.advance_to(f.duration_sec()).unwrap();
+    assert!(f.exploded_at(1).is_some(), "the explicit racket explodes at 12 rad/s");
+    let r = f.plot_ranges();
+    assert_eq!((r[1], r[3]), (RACKET_PLOT_TOP, RACKET_PLOT_TOP), "{r:?}");
+    assert!(span(&f, 1, 1).1 > 10.0, "the explicit energy runs off the top");
+    for (first, lo) in [(1, r[0]), (4, r[2])] {
+        for k in [0, 2] {
+            let (a, b) = span(&f, first, k);
+            assert!(a >= lo && b <= RACKET_PLOT_TOP, "column {}: {a}..{b} in {r:?}", first + k);
+        }
+    }
+    assert!(span(&f, 1, 2).0 < 0.3 && r[0] < 0.3, "the implicit energy's fall: {r:?}");
+    // Each racket's name in its colour (red once it has exploded), as the caption colours it.
+    let mut frame = Frame::default();
+    f.draw(&mut frame);
+    for (k, color) in [palette::PURPLE, palette::RED, palette::TEAL].into_iter().enumerate() {
+        let name = INTEGRATORS[k].1;
+        let label = frame.labels.iter().find(|l| l.text == name).expect(name);
+        assert_eq!(label.color, color, "{name}");
+    }
+    let mut frame = Frame::default();
+    RacketFigure::new().draw(&mut frame);
+    for (k, color) in [palette::PURPLE, palette::ORANGE, palette::TEAL].into_iter().enumerate() {
+        let label = frame.labels.iter().find(|l| l.text == INTEGRATORS[k].1).unwrap();
+        assert_eq!(label.color, color, "{}", INTEGRATORS[k].1);
     }
 }

@@ -765,6 +765,7 @@ function contentWidth(element) {
  * curve (colour, width, dashes). The element gets `data-plot` (the title), `data-x-label`
  * and `data-y-label` (the axis labels, which uPlot draws on its canvas, where tests cannot
  * read them), `data-y-range` (the y axis's range, "lo hi"; a log x axis's in `data-x-range`),
+ * `data-y-labels` (the y axis's numbers), `data-y-label-gap` (the least room between two, px)
  * and `data-x-last` (the last x where a curve has a value).
  */
 export class Plot {
@@ -857,7 +858,7 @@ export class Plot {
         {
           label: yLabel, labelFont: '600 12px system-ui', font: '11px system-ui', labelSize: 22, size: 56,
           space: (u, i, min, max, dim) => Math.min(30, Math.max(16, dim / 4)),
-          ...(log.includes('y') ? { values: logTicks } : {}),
+          ...(log.includes('y') ? { values: logTicks, filter: (u, splits) => splits } : {}),
           ...(yStep ? { incrs: yIncrs } : {}),
         },
       ],
@@ -889,6 +890,11 @@ export class Plot {
           const shown = (i) => u.axes[i]._values?.filter((v) => v !== '' && v != null).length ?? 0;
           element.dataset.yTicks = shown(1);
           element.dataset.xTicks = shown(0);
+          // The y numbers and the least room between two of them (px): for the tests.
+          const y = u.axes[1];
+          const at = (y._splits ?? []).filter((v, i) => y._values?.[i]).map((v) => u.valToPos(v, 'y'));
+          element.dataset.yLabels = (y._values ?? []).filter(Boolean).join(' ');
+          element.dataset.yLabelGap = Math.min(...at.slice(1).map((p, i) => Math.abs(p - at[i])));
         }],
         setCursor: [(u) => this.showReadout(u)],
       },
@@ -995,19 +1001,26 @@ function textWidth(text, font) {
 /** The palette of www/palette.css, in the order plots use it. */
 export const PLOT_COLORS = ['#1f6fd6', '#d62728', '#2ca02c', '#944fc9', '#e68a00', '#17a2a8', '#e35d9c', '#8c564b'];
 
-/** Tick labels of a log axis (the x axis's without uPlot's filter, which there keeps only the
- * powers of ten): the powers of ten ("0.01", "1", "1000", "1e-6"), every few where a decade is shorter
- * than a label, and, where a decade is long enough that their labels keep clear of the powers
- * beside them (2 and 5 lie 0.3 of a decade from 1 and 10), their 2 and 5 multiples ("200",
- * "5e-6"); other ticks blank. */
+/** Tick labels of a log axis (uPlot's own filter, which keeps every few powers of ten counted
+ * from the top, is off): the powers of ten, every few where a decade is shorter than a label
+ * (counted from 10⁰, so 1 is labelled whenever it is in range), and, where a decade is long
+ * enough that their labels keep clear of the powers beside them (2 and 5 lie 0.3 of a decade from
+ * 1 and 10), their 2 and 5 multiples; other ticks blank. One notation an axis: plain numbers
+ * ("0.01", "200") while every power in range lies from 0.01 to 10,000, else powers of ten
+ * ("10⁻⁶", "2×10³"), so an axis never reads "1e5, 1000, 10". */
 function logTicks(u, splits, axisIdx) {
   const axis = u.axes[axisIdx];
-  const labels = splits.map((v) => {
+  const parts = splits.map((v) => {
     if (!(v > 0)) return null;
     const k = Math.floor(Math.log10(v) + 1e-9);
     const m = Math.round(v / 10 ** k);
-    if (Math.abs(v / 10 ** k - m) > 1e-6 * m) return null;
-    return { m, k, text: k >= -2 && k <= 4 ? String(Number(v.toPrecision(1))) : `${m}e${k}` };
+    return Math.abs(v / 10 ** k - m) > 1e-6 * m ? null : { m, k };
+  });
+  const plain = parts.every((p) => !p || (p.k >= -2 && p.k <= 4));
+  const power = (k) => `10${k < 0 ? '⁻' : ''}${[...String(Math.abs(k))].map((d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'[d]).join('')}`;
+  const labels = parts.map((p) => p && {
+    ...p,
+    text: plain ? String(Number((p.m * 10 ** p.k).toPrecision(1))) : `${p.m === 1 ? '' : `${p.m}×`}${power(p.k)}`,
   });
   const decadePx = Math.abs(u.valToPos(10, axis.scale) - u.valToPos(1, axis.scale));
   // A label needs its width (x) or its height (y) and a gap.
@@ -1015,10 +1028,7 @@ function logTicks(u, splits, axisIdx) {
     ? Math.max(0, ...labels.map((l) => (l ? textWidth(l.text, '11px system-ui') : 0))) + 8
     : 16;
   const shown = Math.log10(2) * decadePx >= room ? [1, 2, 5] : [1];
-  // On x (no filter) every few powers where decades are short; on y uPlot's filter has already
-  // kept every few powers, counted from the top, so each power it passes gets its label
-  // (counting again from 1 could keep none of them, leaving the axis without a number).
-  const every = axis.side % 2 === 0 ? Math.ceil(room / Math.max(decadePx, 1)) : 1;
+  const every = Math.ceil(room / Math.max(decadePx, 1));
   return labels.map((l) => (l && shown.includes(l.m) && l.k % every === 0 ? l.text : ''));
 }
 

@@ -13,7 +13,8 @@ const DARK = cssVar('--dark');
 /**
  * The common wiring of a figure: its panel, its timeline, its plots (each `{ id, options, cols }`:
  * `cols` picks the sample columns it shows, the first being time; `from0` starts its y axis at 0,
- * for a quantity that is never negative; on a log y axis, `options.log`, a sample of 0 is a gap),
+ * for a quantity that is never negative; `range: k` takes its y range from the scene's
+ * `plotRanges()`, pair k; on a log y axis, `options.log`, a sample of 0 is a gap),
  * `apply` run on every change
  * (through `guarded`, so a rejected value shows in the note and changes nothing), and the frame
  * loop that draws the scene at the timeline's time. A `live` scene (one a button can push) plots
@@ -34,7 +35,10 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
     const all = columns(state.scene.samples(), width).map((c) => c.map((v) => (Number.isFinite(v) ? v : null)));
     // A live plot's x axis spans the whole timeline from the start.
     if (live) spanTimeline(all, timeline.duration);
-    for (const { plot, cols, from0, options } of shown) {
+    // Scales Rust chooses (an exploding racket's curve runs off the top instead of squashing the others).
+    const ranges = shown.some((s) => s.range !== undefined) ? state.scene.plotRanges() : [];
+    for (const { plot, cols, from0, range, options } of shown) {
+      if (range !== undefined) plot.setYRange([ranges[2 * range], ranges[2 * range + 1]]);
       // A log axis has no place for a zero (a run's still first sample): a gap there.
       const positive = options.log?.includes('y');
       const data = cols.map((c, k) => (positive && k > 0 ? all[c].map((v) => (v > 0 ? v : null)) : all[c]));
@@ -135,14 +139,14 @@ await wire('#fig-racket', {
   width: 7,
   plots: [
     {
-      id: 'racket-energy', cols: [0, 1, 2, 3],
+      id: 'racket-energy', cols: [0, 1, 2, 3], range: 0,
       options: {
         title: 'Kinetic energy', xLabel: 'time (s)', yLabel: 'energy (share of the start)',
         series: ['L held', 'explicit', 'implicit'], colors: [PURPLE, ORANGE, TEAL], widths: [4, 2, 2], minSpan: 0.02,
       },
     },
     {
-      id: 'racket-momentum', cols: [0, 4, 5, 6],
+      id: 'racket-momentum', cols: [0, 4, 5, 6], range: 1,
       options: {
         title: 'Angular momentum |L|', xLabel: 'time (s)', yLabel: '|L| (share of the start)',
         series: ['L held', 'explicit', 'implicit'], colors: [PURPLE, ORANGE, TEAL], widths: [4, 2, 2], minSpan: 0.02,

@@ -64,10 +64,17 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
       series: ['m W(r) of each term'], colors: [PURPLE], points: true, minSpan: 0.1,
     });
     let rejected = '';
+    // The terms from 0 up (none is negative): a lone term (the particle out of the water)
+    // would otherwise sit in a range 0.1 wide round it, with nothing to compare it with.
+    const showTerms = () => {
+      const cols = columns(scene.terms(), 2);
+      terms.setYRange([Math.min(0, ...cols[1]), Math.max(...cols[1])]);
+      terms.setData(cols);
+    };
     const apply = guarded(gui, p, () => {
       scene.setProbe(p.x, p.y);
       scene.setUseExercise(p.useExercise);
-      terms.setData(columns(scene.terms(), 2));
+      showTerms();
     }, (m) => { rejected = m; });
     gui.onChange(apply);
     apply();
@@ -82,7 +89,7 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
         [p.x, p.y] = Array.from(scene.probe(), (v) => Math.round(v * 1000) / 1000);
         xs.updateDisplay();
         ys.updateDisplay();
-        terms.setData(columns(scene.terms(), 2));
+        showTerms();
       },
     });
 

@@ -658,7 +658,7 @@ impl DensityFigure {
         frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, water));
         let (rho, n) = self.probe();
         let mut note = format!(
-            "ρ = {} kg/m² from {n} neighbours within h = {} m and itself: {} of the rest density {} kg/m². SPH: pressure {} Pa, force {} N ({} m/s² on the particle). PBF: λ = {}, a move of {} mm.",
+            "ρ = {} kg/m² from {n} neighbours within h = {} m and itself: {} of the rest density {} kg/m². SPH: pressure {} Pa, force {} N ({} m/s² on the particle){}. PBF: λ = {}, a move of {} mm.",
             format_number(rho),
             format_number(h),
             format_number(rho / rho0),
@@ -666,6 +666,13 @@ impl DensityFigure {
             format_number(s.pressure),
             format_number(s.force.length()),
             format_number(accel),
+            // Each pair pushes with (p_i + p_j)/2: below ρ₀ the particle's own pressure is 0,
+            // and a force there is its squeezed neighbours' alone.
+            if s.pressure == 0.0 && s.force.length() > 0.0 {
+                ", all of it from its neighbours' pressures"
+            } else {
+                ""
+            },
             format_number(s.lambda),
             format_number(1000.0 * s.correction.length()),
         );
@@ -1381,7 +1388,7 @@ impl SplashFigure {
         }
         crate::order::sort_ascending(&mut v);
         note.push_str(&format!(
-            " The GPU grid (WebGPU compute, {SPLASH_GPU_TIMING_STEPS} steps queued at once and timed until the GPU has finished them) takes {:.2} ms a step at N = {}.",
+            " The GPU grid (WebGPU compute, {SPLASH_GPU_TIMING_STEPS} steps queued at once and timed until the GPU has finished them) takes {:.2} ms a step at N = {}. Its times depend on the adapter the browser gives the page: a software one, which runs the shaders on the CPU, can be slower than the CPU grid.",
             v[v.len() / 2],
             SPLASH_SWEEP_SIZES[k]
         ));

@@ -51,6 +51,10 @@ pub const RACKET_DURATION_SEC: f32 = 12.0;
 const RACKET_COLORS: [Vec3; 3] = [palette::PURPLE, palette::ORANGE, palette::TEAL];
 /// A racket whose energy passes this multiple of its start has exploded: it stops there.
 pub const RACKET_EXPLODED_ENERGY: f32 = 100.0;
+/// The racket plots' y axes reach at most this multiple of the start: an explicit racket's
+/// energy climbs towards [`RACKET_EXPLODED_ENERGY`] times its start, and an axis that follows it
+/// flattens the curves the text compares onto its floor.
+pub const RACKET_PLOT_TOP: f32 = 3.0;
 /// Where the page's exercises live, for the notes.
 const FILE: &str = "src/exercises/rigid_body.rs";
 
@@ -267,6 +271,23 @@ impl RacketFigure {
         &self.history
     }
 
+    /// The y ranges of the two plots, `[energy lo, energy hi, |L| lo, |L| hi]` (shares of the
+    /// start): over every racket's samples, the top cut at [`RACKET_PLOT_TOP`], so that a curve
+    /// past it runs off the top of its plot.
+    pub fn plot_ranges(&self) -> [f32; 4] {
+        let mut out = [1.0f32; 4];
+        for (first, range) in [1, 4].into_iter().zip(out.chunks_mut(2)) {
+            for row in &self.history {
+                for x in row[first..first + 3].iter().filter(|x| x.is_finite()) {
+                    range[0] = range[0].min(*x);
+                    range[1] = range[1].max(*x);
+                }
+            }
+            range[1] = range[1].min(RACKET_PLOT_TOP);
+        }
+        out
+    }
+
     /// The three rackets.
     pub fn bodies(&self) -> &[RigidBody; 3] {
         &self.bodies
@@ -303,7 +324,8 @@ impl RacketFigure {
             let points: Vec<Vec3> = box_samples(model).collect();
             solid.extend_from_slice(&points);
             let above = at + Vec3::Y * (reach + 0.2);
-            let first = Label::off_dot(above, 0.0, Vec2::NEG_Y, name.into(), palette::DARK, 0);
+            // The name in its racket's colour, as the caption and the plots' legends colour it.
+            let first = Label::off_dot(above, 0.0, Vec2::NEG_Y, name.into(), color, 0);
             names.push((points, first));
             let middle = body.rotation() * Vec3::Y * (RACKET_HALF.y + 0.12);
             frame.wide_line(at - middle, at + middle, palette::Y_AXIS, ARROW_PX);
@@ -768,6 +790,10 @@ pub const VELOCITY_SCALE: f32 = 0.1;
 pub const OMEGA_SCALE: f32 = 0.05;
 /// How far to the side of the centre on screen the drop figure's ω arrows start, metres.
 pub const OMEGA_SIDE_M: f32 = 0.4;
+/// How far either side of the centre on screen the drop figure's v arrows start when the box
+/// bounces back the way it came (v after against v before), metres: from the centre itself the
+/// two would lie on one line, after over before.
+pub const V_SIDE_M: f32 = 0.08;
 /// Room the drop figure keeps in view past each arrow's outer end for its name, metres.
 pub const NAME_ROOM_M: f32 = 0.2;
 /// The impulse's arrow's shortest length, metres.
@@ -1256,14 +1282,23 @@ impl ImpulseFigure {
         if ties_omega_arrows(hit.omega_before, hit.omega_after) {
             frame.wide_line_on_top(o, o + side, palette::GREY, 1.5);
         }
-        // Before arrives at its start and after leaves it: v before and v after point the same
-        // way (straight down), and from one point they would lie on one line.
+        // Before arrives at its start and after leaves it: while v after points down, as v
+        // before does, the two run one after the other along one line. A box that bounces back
+        // up (a level drop) sends v after back along v before's shaft: then they stand
+        // V_SIDE_M either side of the centre.
+        let v_side = if hit.velocity_before.dot(hit.velocity_after) < 0.0 {
+            right * V_SIDE_M
+        } else {
+            Vec3::ZERO
+        };
         for (d, color, text_color, name) in arrows {
             if d.length() > 1e-3 {
                 let o = if text_color == palette::TEAL {
                     o + side
+                } else if color == text_color {
+                    o + v_side
                 } else {
-                    o
+                    o - v_side
                 };
                 let (from, out) = if color == text_color {
                     (o, d)

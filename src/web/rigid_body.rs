@@ -148,6 +148,12 @@ impl RacketScene {
     pub fn samples(&self) -> Vec<f32> {
         flat(self.whole.samples())
     }
+    /// The plots' y ranges over the whole run, `[energy lo, hi, |L| lo, hi]` (see
+    /// `RacketFigure::plot_ranges`).
+    #[wasm_bindgen(js_name = plotRanges)]
+    pub fn plot_ranges(&self) -> Vec<f32> {
+        self.whole.plot_ranges().to_vec()
+    }
     pub fn draw(&mut self, viewer: &mut Viewer, time_sec: f32) -> Result<String, JsError> {
         self.scene.advance_to(time_sec).map_err(js)?;
         // The view the rackets' names are placed for (the last frame's camera).

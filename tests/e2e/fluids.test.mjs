@@ -49,6 +49,9 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse; its n
     assert.ok(Number(after[0]) > Number(before[0]) && Number(after[1]) > Number(before[1]) + 0.2, `${before} -> ${after}`);
     const note = await page.locator('#density-note').textContent();
     assert.match(note, /from 0 neighbours/, note);
+    // Its density's sum is its own term alone, plotted from 0 up (not in a range 0.1 wide round it).
+    const [lo, hi] = (await page.locator('#density-terms').getAttribute('data-y-range')).split(' ').map(Number);
+    assert.ok(lo <= 0 && lo > -0.1 * hi && hi > 150, `${lo} ${hi}`);
     // Out of the water, 15.3's sum of pairs has none to add.
     assert.match(note, /\nExercise 15\.3 pressure_force is not called: the dragged particle has no neighbours\.\n/, note);
     assert.deepEqual(problems, []);

@@ -3,7 +3,7 @@
 // 0 to 0.1 J axis; Figure 4's arrows and names at both page sizes (screenshots to look at).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, frames, serveDist, openPage } from './browser.mjs';
+import { launch, frames, serveDist, openPage, setControl } from './browser.mjs';
 
 const site = serveDist();
 
@@ -40,6 +40,17 @@ test('lesson 14: the stack\'s energy plot shows the µJ a stack keeps at rest an
       const [, pushed] = await yRange(page, '#stack-plot');
       assert.ok(pushed >= 1, `${w}x${h}: ${pushed}`);
       await page.locator(fig).screenshot({ path: `tests/screenshots/14-rigid-bodies-stack-pushed-${w}x${h}-webgl2.png` });
+      // At the end the pushed stack has settled: seven decades or more in under 100 px. The
+      // axis labels every few decades, 13 px (a label's height) or more apart, in one notation.
+      await scrubTo(page, fig, 1000);
+      const plot = page.locator('#stack-plot');
+      const [low] = await yRange(page, '#stack-plot');
+      assert.ok(low <= 1e-6, `${w}x${h}: ${low}`);
+      const gap = Number(await plot.getAttribute('data-y-label-gap'));
+      const labels = (await plot.getAttribute('data-y-labels')).split(' ');
+      assert.ok(labels.length >= 2 && gap >= 13, `${w}x${h}: ${labels} ${gap} px apart`);
+      assert.ok(labels.every((l) => /^10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+$/.test(l)), `${w}x${h}: ${labels}`);
+      await page.locator(fig).screenshot({ path: `tests/screenshots/14-rigid-bodies-stack-settled-${w}x${h}-webgl2.png` });
       // Reset: the run's only sample, its still start, has no place on a log axis; the axis
       // still shows numbers (a decade), not an empty 0 to 0.
       await page.locator(`${fig} .lil-controller`, { hasText: 'reset' }).locator('button').click();
@@ -50,6 +61,10 @@ test('lesson 14: the stack\'s energy plot shows the µJ a stack keeps at rest an
       await page.locator('#fig-impulse').scrollIntoViewIfNeeded();
       await scrubTo(page, '#fig-impulse', 1000);
       await page.locator('#fig-impulse').screenshot({ path: `tests/screenshots/14-rigid-bodies-impulse-${w}x${h}-webgl2.png` });
+      // A level drop bounces straight back up: v before and v after side by side (a look).
+      await setControl(page, '#fig-impulse', 'tilt', 0);
+      await scrubTo(page, '#fig-impulse', 300);
+      await page.locator('#fig-impulse').screenshot({ path: `tests/screenshots/14-rigid-bodies-impulse-tilt0-${w}x${h}-webgl2.png` });
       assert.deepEqual(problems, []);
       await page.close();
     }

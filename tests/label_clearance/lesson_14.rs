@@ -496,3 +496,50 @@ fn lesson_14_impulse_keeps_every_arrow_and_its_name_inside_the_canvas() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_14_impulse_keeps_v_before_and_after_apart_when_the_box_bounces_straight_up() {
+    // Figure 4 at the page's default camera, both canvases, after a level hit (tilt 0: v after
+    // points back up along v before's line) at restitutions and heights across the sliders:
+    // v before's arrow (faded blue) and v after's (blue) keep 8 px or more apart on screen, so
+    // neither lies on the other. The mistake: both drawn from the centre of mass, after up over
+    // before's shaft. (After a tilted hit v after points down, on from where v before ends.)
+    use inbetween::draw::palette;
+    use inbetween::figures::rigid_body::ImpulseFigure;
+    let view = [0.0, 1.0, 0.0, 4.0, 0.5, 0.3];
+    let mut failures = Vec::new();
+    for (tilt, e, height) in [(0.0, 0.5, 1.0), (0.0, 1.0, 2.0), (0.0, 0.2, 0.5), (0.0, 0.05, 0.2)] {
+        let mut f = ImpulseFigure::new();
+        f.set_drop(tilt, e, height).unwrap();
+        f.advance_to(f.duration_sec()).unwrap();
+        let hit = f.impact_details().copied().expect("a hit");
+        f.advance_to(hit.time_sec + 0.15).unwrap();
+        for size in CANVASES {
+            let mut f = f.clone();
+            let (frame, camera) = drawn!(&mut f, view, size);
+            let name = format!("14 impulse, tilt {tilt}°, e {e}, {height} m on {size}");
+            let check = || {
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let dots = |color: Vec3| -> Vec<Vec2> {
+                    frame
+                        .strokes
+                        .iter()
+                        .filter(|s| Vec3::from_slice(&s.color[..3]) == color)
+                        .flat_map(|s| (0..=16).map(move |k| Vec3::from(s.a).lerp(Vec3::from(s.b), k as f32 / 16.0)))
+                        .filter_map(|p| project_to_canvas(view_proj, size, p))
+                        .collect()
+                };
+                let after = dots(palette::BLUE);
+                let before = dots(palette::BLUE.lerp(Vec3::ONE, 0.55));
+                assert!(!after.is_empty() && !before.is_empty(), "{name}: both v arrows drawn");
+                let gap = before
+                    .iter()
+                    .flat_map(|p| after.iter().map(move |q| p.distance(*q)))
+                    .fold(f32::MAX, f32::min);
+                assert!(gap >= 8.0, "{name}: v before and v after {gap} px apart");
+            };
+            failures.extend(failure_of(check));
+        }
+    }
+    assert_none_failed(&failures);
+}
