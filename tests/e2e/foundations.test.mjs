@@ -234,7 +234,7 @@ test('lesson 02: every panel choice fits beside its chevron, and without a GPU n
     const { page } = await openPage(none, `${site.origin}/lessons/02-keyframes/`, { width: 1600, height: 1000 });
     await page.waitForFunction(() => document.body.dataset.backend === 'none', null, { timeout: 30_000 });
     assert.ok(await page.locator('.no-gpu').count() > 0, 'the figures say why they are not drawn');
-    assert.equal(await page.locator('#fig-keys .editor:visible').count(), 0, 'no blank curve editor under the message');
+    assert.equal(await page.locator('#fig-keys :is(.editor, .timeline):visible').count(), 0, 'no blank curve editor or idle timeline under the message');
     await page.screenshot({ path: 'tests/screenshots/02-keyframes-none-editor.png' });
   } finally {
     await none.close();
