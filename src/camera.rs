@@ -86,6 +86,14 @@ impl OrbitCamera {
         self.pitch_rad = (self.pitch_rad + d_pitch_rad).clamp(-PITCH_LIMIT_RAD, PITCH_LIMIT_RAD);
     }
 
+    /// Lowers the camera to at most `max_pitch_rad` above the horizon, if given (a figure's
+    /// [`crate::draw::Frame::max_pitch_rad`]); the yaw and the distance stay.
+    pub fn limit_pitch(&mut self, max_pitch_rad: Option<f32>) {
+        if let Some(max) = max_pitch_rad {
+            self.pitch_rad = self.pitch_rad.min(max);
+        }
+    }
+
     /// A pointer drag of `(dx_px, dy_px)` CSS pixels on a canvas `height_px` tall: turns the
     /// camera round its target, or, for a `flat` figure ([`crate::draw::Frame::flat`]), pans,
     /// keeping the figure facing the camera. Returns whether it panned.

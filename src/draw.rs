@@ -252,6 +252,10 @@ pub struct Frame {
     /// A flat figure (a graph facing the camera): a drag slides it instead of orbiting round it,
     /// which would squeeze it into a line ([`crate::camera::OrbitCamera::drag`]).
     pub flat: bool,
+    /// The highest the camera may look down from, radians above the horizon: a figure whose
+    /// subject reads only from the side (an antenna's sideways lag) keeps the orbit below it
+    /// ([`crate::camera::OrbitCamera::limit_pitch`]). `None`: up to the pole.
+    pub max_pitch_rad: Option<f32>,
 }
 
 /// A mesh made with the renderer's GPU-skinning path (`Renderer::skin`), by creation order.
@@ -1008,6 +1012,7 @@ impl Frame {
         self.keep_in_view.clear();
         self.inset = None;
         self.flat = false;
+        self.max_pitch_rad = None;
     }
 
     /// Runs `draw` on this frame and moves everything it added by `offset`: meshes, GPU-skinned

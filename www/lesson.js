@@ -943,6 +943,15 @@ export class Plot {
     while (i >= 0 && columns.slice(1).every((c) => c[i] === null || c[i] === undefined)) i--;
     this.element.dataset.xLast = i >= 0 ? String(columns[0][i]) : '';
   }
+  /** Names series `i` (from 0, as in `series`) in the legend; an empty name hides its entry.
+   * (The legend has no row for x: it is not live.) */
+  setSeriesLabel(i, label) {
+    const row = this.plot.root.querySelectorAll('.u-legend .u-series')[i];
+    if (row) {
+      row.querySelector('.u-label').textContent = label;
+      row.style.display = label ? '' : 'none';
+    }
+  }
   /** Replaces the title shown over the plot (its `data-plot` name stays). */
   setTitle(title) {
     this.plot.root.querySelector('.u-title').textContent = title;

@@ -14,7 +14,8 @@ const C = {
 };
 const SCHEMES = {
   step: 'step', linear: 'linear', 'Lagrange (global)': 'lagrange', 'Hermite (your handles)': 'hermite',
-  'cardinal (tension μ)': 'cardinal', 'natural (C2)': 'natural', 'centripetal Catmull-Rom': 'centripetal',
+  // "C-R": the panel's select has room for about 20 characters beside its chevron.
+  'cardinal (tension μ)': 'cardinal', 'natural (C2)': 'natural', 'centripetal C-R': 'centripetal',
 };
 const EASES = {
   none: 'none', smoothstep: 'smoothstep', smootherstep: 'smootherstep', sine: 'sine',

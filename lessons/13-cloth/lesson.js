@@ -233,12 +233,22 @@ if (drapeViewer) {
   apply();
   dragParticles('#fig-drape', scene, timeline);
   // The largest stretch over time, in the colour of the method that ran (the other series stays
-  // empty): the note gives the value at the cursor, the plot its range over the run.
+  // empty): the note gives the value at the cursor, the plot its range over the run. The run of
+  // the cloth shown before (another resolution or method) stays beside it, grey and dashed, so
+  // two cloths compare on one plot.
   const stretch = new Plot(document.getElementById('drape-stretch'), {
     title: 'Largest stretch of a structural spring', xLabel: 'time (s)', yLabel: 'stretch (%)',
-    series: ['mass-spring', 'XPBD'], colors: [ORANGE, TEAL], widths: [2.5, 2.5], minSpan: 1,
+    series: ['mass-spring', 'XPBD', 'previous cloth'], colors: [ORANGE, TEAL, cssVar('--grey')],
+    widths: [2.5, 2.5, 2], dashes: [null, null, [6, 4]], minSpan: 1,
   });
+  stretch.setSeriesLabel(2, '');
   let plotted = -1;
+  // The cloth plotted and its run (`time` and `largest`, one row a frame from 0 s; `held`: it
+  // did not explode), and the previous cloth's run; the drape's frame step is fixed, so the two
+  // runs' rows line up.
+  let shownRun = null;
+  let previous = null;
+  const finite = (values) => values.filter(Number.isFinite);
   lesson.onFrame((dt) => {
     const t = timeline.advance(dt);
     const t0 = performance.now();
@@ -248,11 +258,23 @@ if (drapeViewer) {
     const key = scene.sampleGeneration();
     if (key !== plotted) {
       plotted = key;
-      const [time, , largest] = spanTimeline(gaps(scene.samples(), 3), timeline.duration);
-      const none = largest.map(() => null);
+      const cloth = `${p.resolution} × ${p.resolution} ${p.method}`;
+      // A new cloth: the one before becomes the previous run, once it has run past its start.
+      if (shownRun && shownRun.cloth !== cloth && shownRun.largest.length > 1) previous = shownRun;
+      const [time, , largest] = columns(scene.samples(), 3);
+      shownRun = { cloth, time, largest, held: scene.explodedAt(0) === undefined };
+      const x = [...(previous?.time.length > time.length ? previous.time : time)];
+      const column = (values) => x.map((_, i) => (Number.isFinite(values?.[i]) ? values[i] : null));
+      const none = x.map(() => null);
+      const mine = column(largest);
+      const [x2, s0, s1, s2] = spanTimeline([x, ...(p.method === 'XPBD' ? [none, mine] : [mine, none]), column(previous?.largest)], timeline.duration);
+      // The y range Rust picks for this run, widened to a previous run that held (an exploded
+      // one's last samples before it shoot up and would squash this run onto a line).
       const r = scene.plotRanges();
-      stretch.setYRange([r[2], r[3]]);
-      stretch.setData(p.method === 'XPBD' ? [time, none, largest] : [time, largest, none]);
+      const before = previous?.held ? finite(previous.largest) : [];
+      stretch.setYRange([Math.min(r[2], ...before), Math.max(r[3], ...before)]);
+      stretch.setSeriesLabel(2, previous ? `previous: ${previous.cloth}` : '');
+      stretch.setData([x2, s0, s1, s2]);
     }
     stretch.setCursor(t);
     // The frames this draw simulated (Rust counts them; 0 after a replay from the start): a

@@ -1231,6 +1231,18 @@ impl LagrangeScene {
             0.12,
         );
         let tick = 0.06;
+        // The value ticks' numbers left of the axis, clear of the key dot at t = 0; the time
+        // axis's "0" under the origin names both zeros. They outrank the time numbers: where
+        // two crowd, the page's layout moves the time number (placed clear of the curves
+        // above), never a value number out past the axis into the polynomial.
+        for y in [-0.5_f32, 1.0, 2.0, 3.0] {
+            let p = self.place(0.0, y);
+            frame.line(p - Vec3::X * tick, p + Vec3::X * tick, axis);
+            frame.label_left(p - Vec3::X * 0.15, format!("{y}"), axis);
+            if let Some(value) = frame.labels.last_mut() {
+                value.priority = 1;
+            }
+        }
         let step = if self.keys > 10 { 2 } else { 1 };
         for t in (0..self.keys).step_by(step) {
             let p = self.place(t as f32, 0.0);
@@ -1239,13 +1251,6 @@ impl LagrangeScene {
             let around =
                 crate::draw::Label::around_dot(p, 8.0, Vec2::new(0.3, 1.0), &text, axis, 0, 3, 6.0);
             frame.first_clear_label_by(self.view, 2.0, around, |_| true);
-        }
-        // The value ticks' numbers left of the axis, clear of the key dot at t = 0; the time
-        // axis's "0" under the origin names both zeros.
-        for y in [-0.5_f32, 1.0, 2.0, 3.0] {
-            let p = self.place(0.0, y);
-            frame.line(p - Vec3::X * tick, p + Vec3::X * tick, axis);
-            frame.label_left(p - Vec3::X * 0.15, format!("{y}"), axis);
         }
         frame.label(x1 + Vec3::new(0.35, -0.3, 0.0), "time t (s)", axis);
         frame.label(

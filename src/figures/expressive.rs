@@ -496,12 +496,16 @@ impl JumpComparison {
         // view.
         frame.contact_shadow(Vec3::new(-1.2, plain.height, 0.0), RADIUS);
         frame.contact_shadow(Vec3::new(1.2, p.height, 0.0), RADIUS * scale.y);
-        // Each name just under its ball's lowest point, so it follows the ball up from any view.
+        // Each name under its ball's lowest point, so it follows the ball up from any view, a
+        // gap below it (as if under a dot 16 px across). Seen from above, a squashed ball's
+        // outline reaches below that point by up to about its half-width less its half-height:
+        // the name starts lower by 0.6 of that, so it does not touch the ball it names.
+        let squashed = RADIUS * (scale.y - scale.x).max(0.0) * 0.6;
         for (bottom, text, color) in [
             (Vec3::new(-1.2, plain.height, 0.0), "plain", PLAIN),
-            (Vec3::new(1.2, p.height, 0.0), "principles", PRINCIPLED),
+            (Vec3::new(1.2, p.height - squashed, 0.0), "principles", PRINCIPLED),
         ] {
-            frame.label_off_dot(bottom, 0.0, glam::Vec2::Y, text, color, 0);
+            frame.label_off_dot(bottom, 16.0, glam::Vec2::Y, text, color, 0);
         }
         // The apex both reach.
         let apex = self.jump.apex + 2.0 * RADIUS;
@@ -633,6 +637,9 @@ impl FollowThrough {
     pub const DURATION: f32 = 4.0;
     /// Length of the antenna, metres: more joints cut it into shorter segments.
     pub const LENGTH: f32 = 1.1;
+    /// The highest view of the figure, radians above the horizon (about 34°; the page's camera
+    /// looks from 20°): from up to here the antenna still stands tall on screen.
+    pub const MAX_PITCH_RAD: f32 = 0.6;
     /// The most joints. Each joint is pulled by the one below and never pulls it back, so a
     /// wobble grows from joint to joint: with more joints (or less damping than
     /// [`Self::MIN_DAMPING`], or a softer spring than [`Self::MIN_STIFFNESS`]) the antenna whips
@@ -833,6 +840,9 @@ impl FollowThrough {
             Vec3::new(-1.85, Self::base(0.0).y - 0.5, -0.25),
             Vec3::new(1.85, Self::base(0.0).y + Self::LENGTH, 0.25),
         );
+        // From higher up the joints stack on one another and the sideways lag the figure is
+        // about shrinks to nothing: the orbit stops at [`Self::MAX_PITCH_RAD`].
+        frame.max_pitch_rad = Some(Self::MAX_PITCH_RAD);
         let antenna = self.shown();
         let base = antenna.positions[0];
         // A small body, so the antenna (the subject) is not dwarfed by it.

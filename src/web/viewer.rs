@@ -201,6 +201,7 @@ impl Viewer {
         let frame = &self.renderer.frame;
         self.declares_view = !frame.keep_in_view.is_empty();
         self.flat = frame.flat;
+        self.camera.limit_pitch(frame.max_pitch_rad);
         if self.fitting && self.declares_view {
             let points: Vec<glam::Vec3> = frame.fit_points();
             let size = glam::Vec2::new(w, h);

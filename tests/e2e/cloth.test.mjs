@@ -116,3 +116,42 @@ test('lesson 13: the drape plot redraws on a new sample, on a change replayed to
     await context.close();
   }
 });
+
+test('lesson 13: the drape plot keeps the previous cloth dashed beside the current one, and its Try this comes in four short parts', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/13-cloth/?backend=webgl2`, { width: 1600, height: 1000 });
+    const drape = '#fig-drape';
+    await page.locator(drape).scrollIntoViewIfNeeded();
+    const legend = () => page.evaluate(() => [...document.querySelectorAll('#drape-stretch .u-legend .u-series')]
+      .filter((row) => row.style.display !== 'none').map((row) => row.textContent.trim()));
+    // The first cloth: no previous run to show.
+    await frames(page, 30);
+    assert.ok(!(await legend()).some((name) => /previous/.test(name)), `${await legend()}`);
+    // Another method: the 20 x 20 mass-spring run stays, named, beside the XPBD one.
+    await setControl(page, drape, 'method', 'XPBD');
+    await frames(page, 10);
+    assert.ok((await legend()).includes('previous: 20 × 20 mass-spring'), `${await legend()}`);
+    // Another resolution: the previous is now the XPBD cloth.
+    await setControl(page, drape, 'particles per side', 10);
+    await frames(page, 10);
+    assert.ok((await legend()).includes('previous: 20 × 20 XPBD'), `${await legend()}`);
+    // The callouts between Figure 3 and the next section: four, none taller than 10 lines.
+    const heights = await page.evaluate(() => {
+      const out = [];
+      for (let e = document.querySelector('#fig-drape').nextElementSibling; e && e.tagName !== 'H2'; e = e.nextElementSibling) {
+        if (!e.classList.contains('callout')) continue;
+        const p = e.querySelector('p');
+        out.push(e.getBoundingClientRect().height / parseFloat(getComputedStyle(p).lineHeight));
+      }
+      return out;
+    });
+    assert.equal(heights.length, 4, `${heights}`);
+    for (const lines of heights) assert.ok(lines < 10, `a callout ${lines.toFixed(1)} lines tall`);
+    await page.locator(drape).screenshot({ path: 'tests/screenshots/13-cloth-drape-previous-webgl2.png' });
+    assert.deepEqual(problems, []);
+    await page.close();
+  } finally {
+    await context.close();
+  }
+});

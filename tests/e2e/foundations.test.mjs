@@ -203,3 +203,40 @@ test('lesson 02: Figures 5 and 8 draw their curves over the grey in-between dots
     await context.close();
   }
 });
+
+test('lesson 02: every panel choice fits beside its chevron, and without a GPU no blank editor stays under the message', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2`, { width: 1600, height: 1000 });
+    // Each option's text, in the select's font, against the room its display leaves beside the
+    // chevron (lil-gui pads the display's right for it and hides what runs past).
+    const tooWide = await page.evaluate(() => {
+      const out = [];
+      const ctx = document.createElement('canvas').getContext('2d');
+      for (const display of document.querySelectorAll('.lil-option .lil-display')) {
+        const css = getComputedStyle(display);
+        ctx.font = `${css.fontWeight} ${css.fontSize} ${css.fontFamily}`;
+        const room = display.parentElement.clientWidth - parseFloat(css.paddingLeft) - parseFloat(css.paddingRight);
+        for (const option of display.parentElement.querySelector('select').options) {
+          const width = ctx.measureText(option.textContent).width;
+          if (width > room) out.push(`${option.textContent}: ${width.toFixed(0)} px in ${room.toFixed(0)}`);
+        }
+      }
+      return out;
+    });
+    assert.deepEqual(tooWide, []);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+  const none = await launch('none');
+  try {
+    const { page } = await openPage(none, `${site.origin}/lessons/02-keyframes/`, { width: 1600, height: 1000 });
+    await page.waitForFunction(() => document.body.dataset.backend === 'none', null, { timeout: 30_000 });
+    assert.ok(await page.locator('.no-gpu').count() > 0, 'the figures say why they are not drawn');
+    assert.equal(await page.locator('#fig-keys :is(.editor, .timeline):visible').count(), 0, 'no blank curve editor or idle timeline under the message');
+    await page.screenshot({ path: 'tests/screenshots/02-keyframes-none-editor.png' });
+  } finally {
+    await none.close();
+  }
+});

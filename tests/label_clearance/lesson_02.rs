@@ -88,7 +88,7 @@ fn lesson_02_lagrange_tick_numbers_keep_off_the_keys_and_curves() {
     // t = 0 sits on the tick of 1 m) and every curve, and one "0" names the origin for both axes.
     // As on the page, the figure places the time numbers for the view of the frame before.
     use inbetween::figures::curves::LagrangeScene;
-    for keys in [3, 6, 10, 12, 16] {
+    for keys in 3..=16 {
         let mut scene = LagrangeScene::new();
         scene.set_key_count(keys as f32).unwrap();
         for size in [Vec2::new(760.0, 300.0), Vec2::new(650.0, 300.0)] {

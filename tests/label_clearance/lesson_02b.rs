@@ -180,3 +180,111 @@ fn lesson_02b_straight_line_name_keeps_to_its_row_where_the_rows_meet() {
     }
     assert_none_failed(&failures);
 }
+
+/// Points on the frame's spheres (`MeshId::SPHERE`, the unit sphere under each model) as seen
+/// on the canvas: a 24 × 48 grid of latitudes and longitudes on each.
+fn sphere_points(frame: &Frame, camera: &OrbitCamera, size: Vec2) -> Vec<Vec2> {
+    let view_proj = camera.projection(size.x / size.y) * camera.view();
+    frame
+        .meshes
+        .iter()
+        .filter(|m| m.mesh == inbetween::draw::MeshId::SPHERE)
+        .flat_map(|m| {
+            (0..24 * 48).map(move |i| {
+                let (lat, lon) = ((i / 48) as f32 / 23.0 * std::f32::consts::PI, (i % 48) as f32);
+                let lon = lon / 48.0 * std::f32::consts::TAU;
+                let d = Vec3::new(lat.sin() * lon.cos(), -lat.cos(), lat.sin() * lon.sin());
+                m.model.transform_point3(d)
+            })
+        })
+        .filter_map(|p| project_to_canvas(view_proj, size, p))
+        .collect()
+}
+
+#[test]
+fn lesson_02b_jump_names_sit_clear_under_their_balls() {
+    // Figure 3 at its page camera (lessons/02b-expressive-animation/lesson.js: target (0, 1.1, 0),
+    // distance 6, pitch 0.15) and orbited a little higher, both canvases, at the default and
+    // the caption's heavy crouch, through the crouch, the flight and the landing: "plain" and
+    // "principles" keep at least 3 px from every ball's outline (a name that touches the ball
+    // reads as part of it).
+    use inbetween::figures::expressive::JumpComparison;
+    let mut failures = Vec::new();
+    for anticipation in [0.3, 0.6] {
+        for pitch in [0.15, 0.35] {
+            for time in [0.0, 0.2, 0.5, 1.0, 1.6, 2.0] {
+                for size in CANVASES_02B {
+                    failures.extend(failure_of(|| {
+                        let mut scene = JumpComparison::new();
+                        scene.set_principles(anticipation, 0.06).unwrap();
+                        let (frame, camera) = drawn_for_view(
+                            &mut scene,
+                            [0.0, 1.1, 0.0, 6.0, 0.0, pitch],
+                            size,
+                            |fig, out| {
+                                fig.draw(out, time).unwrap();
+                            },
+                            |_, _, _| {},
+                        );
+                        let balls = sphere_points(&frame, &camera, size);
+                        let boxes = label_boxes(&frame, &camera, size);
+                        for (text, rect) in boxes.iter().filter(|(t, _)| t == "plain" || t == "principles") {
+                            let gap = balls
+                                .iter()
+                                .map(|&c| rect.nearest(c).distance(c))
+                                .fold(f32::INFINITY, f32::min);
+                            assert!(
+                                gap >= 3.0,
+                                "02b jump, crouch {anticipation}, pitch {pitch}, t {time} on {size}: {text:?} at {:?} is {gap} px from a ball",
+                                rect.min
+                            );
+                        }
+                        assert_eq!(boxes.iter().filter(|(t, _)| t == "plain" || t == "principles").count(), 2);
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_02b_antenna_stands_up_on_screen_from_any_orbit() {
+    // Figure 4 at its page camera (lessons/02b-expressive-animation/lesson.js: target
+    // (0, 1.3, 0), distance 4.2, yaw -0.3, pitch 0.35) and orbited higher, up to the pole, as a
+    // drag does, with the viewer's fit: the antenna (its wide line) stays at least 0.7 of its
+    // height on screen at the page camera, so its joints never stack into a dot seen from above
+    // and the sideways lag still reads against the body's slide.
+    use inbetween::figures::expressive::{FollowThrough, ANTENNA};
+    let height = |pitch: f32, size: Vec2| {
+        let mut scene = FollowThrough::default();
+        let (frame, camera) = drawn_for_view(
+            &mut scene,
+            [0.0, 1.3, 0.0, 4.2, -0.3, pitch],
+            size,
+            |fig, out| {
+                fig.draw(out, 0.0).unwrap();
+            },
+            |_, _, _| {},
+        );
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        let ys: Vec<f32> = frame
+            .strokes
+            .iter()
+            .filter(|s| Vec3::new(s.color[0], s.color[1], s.color[2]).distance(ANTENNA) < 1e-3)
+            .flat_map(|s| [s.a, s.b])
+            .filter_map(|p| project_to_canvas(view_proj, size, Vec3::from(p)))
+            .map(|p| p.y)
+            .collect();
+        assert!(!ys.is_empty(), "the antenna is drawn");
+        let (lo, hi) = ys.iter().fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), &y| (a.min(y), b.max(y)));
+        hi - lo
+    };
+    for size in CANVASES_02B {
+        let page = height(0.35, size);
+        for pitch in [0.6, 0.9, 1.2, 1.55] {
+            let seen = height(pitch, size);
+            assert!(seen >= 0.7 * page, "pitch {pitch} on {size}: the antenna is {seen} px tall, {page} px at the page camera");
+        }
+    }
+}
