@@ -1515,7 +1515,7 @@ fn at_a_small_wobble_the_energy_steps_come_about_4_s_apart_and_the_held_racket_5
 fn the_impact_note_reads_rounding_leftovers_as_zero() {
     for tilt in [0.0, 10.0, 20.0, 45.0] {
         for height in [0.5, 1.0, 2.0] {
-            let mut f = dropped(tilt, 0.0, height);
+            let f = dropped(tilt, 0.0, height);
             let note = f.draw(&mut Frame::default());
             assert!(!note.contains("e-"), "tilt {tilt}, height {height}: {note}");
         }

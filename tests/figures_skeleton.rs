@@ -996,7 +996,6 @@ fn the_thighs_two_paths_come_apart_in_the_inset() {
     // The Try this's walk, thigh.L, slerp (purple) against cubic (blue), at the page's camera
     // on either canvas: in the main view the two paths lie within 5 px of each other (one band),
     // in the inset they come more than 8 px apart between the keys.
-    use glam::Vec2;
     use inbetween::camera::{project_to_canvas, OrbitCamera, FIT_PAD_PX};
     use inbetween::draw::inset::{inset_camera, inset_rect};
     for size in crate::label_clearance::CANVASES {
