@@ -633,6 +633,32 @@ fn figure_3s_bars_shrink_tenfold_and_turn_green_with_z_near_1_m() {
     ));
 }
 
+/// Figure 3's side view names its bars in the colour of the bar it sits by: a green name over
+/// orange bars would call them one depth step within the separation. At the page's settings
+/// (orange beyond 21.8 m) the name goes by a green bar; with 24 bits all are green; with a
+/// z_near of 0.01 m, 16 bits and floors 0.1 mm apart every bar is orange and so is the name.
+/// And the view is a diagram: a drag slides it rather than turning it end-on.
+#[test]
+fn figure_3s_bar_name_takes_the_colour_of_its_bar_and_the_view_slides() {
+    use inbetween::draw::palette;
+    for (near, gap, bits, color) in [
+        (0.1, 0.01, 16.0, palette::GREEN),
+        (0.1, 0.01, 24.0, palette::GREEN),
+        (0.01, 1e-4, 16.0, palette::ORANGE),
+    ] {
+        let mut scene = DepthPrecision::new();
+        scene.set(near, 1000.0, gap, bits).unwrap();
+        let mut f = Frame::default();
+        scene.draw(&mut f);
+        assert!(f.flat, "the side view slides");
+        let name = f.labels.iter().find(|l| l.text.starts_with("one depth step")).unwrap();
+        let bar = f.markers.iter().find(|m| Vec3::from(m.center) == name.anchor);
+        let bar = bar.expect("the name sits by a bar's top");
+        assert_eq!(Vec3::from_slice(&bar.color[..3]), name.color, "z_near {near}, {bits} bits");
+        assert_eq!(name.color, color, "z_near {near}, {bits} bits");
+    }
+}
+
 fn scene_at(near: f32, far: f32, bits: f32) -> DepthPrecision {
     let mut s = DepthPrecision::new();
     s.set(near, far, 0.01, bits).unwrap();
@@ -837,12 +863,7 @@ fn a_dense_sphere_marks_a_patch_only() {
     let count = |scene: &MeshStorage| {
         let mut f = Frame::default();
         let note = scene.draw(&mut f);
-        let of = |c: Vec3| {
-            f.markers
-                .iter()
-                .filter(|p| Vec3::from_slice(&p.color[..3]) == c)
-                .count()
-        };
+        let of = |c: Vec3| dot_centres(&f, c).len();
         (of(SOUP_COLOR), of(INDEXED_COLOR), note)
     };
     let mut scene = MeshStorage::new();
@@ -898,7 +919,61 @@ fn a_dense_sphere_marks_a_patch_only() {
     };
     let (soup_pale, indexed_pale) = (pale(SOUP_COLOR), pale(INDEXED_COLOR));
     assert!((300..1000).contains(&indexed_pale), "{indexed_pale} pale indexed edges");
-    assert!((100..1000).contains(&soup_pale), "{soup_pale} pale soup edges");
+    // The soup's: a dash for each of the two triangles on either side of such an edge.
+    assert!(
+        (indexed_pale..3 * indexed_pale).contains(&soup_pale),
+        "{soup_pale} pale soup edges"
+    );
+}
+
+/// The dots of Figure 1's two spheres, markers or shaded discs, in colour `c`.
+fn dot_centres(f: &Frame, c: Vec3) -> Vec<Vec3> {
+    let markers = (f.markers.iter()).filter(|m| Vec3::from_slice(&m.color[..3]) == c).map(|m| m.center);
+    let points = (f.points.iter()).filter(|p| Vec3::from_slice(&p.color[..3]) == c).map(|p| p.center);
+    markers.chain(points).map(Vec3::from).collect()
+}
+
+/// Figure 1's dense soup still reads as a sphere: every pale ring and meridian edge of the indexed
+/// sphere has, on the soup, a pale dash along it (parallel, within a third of an edge of it: the
+/// copy of that edge in a triangle on either side, shrunk towards its centre), so the soup's
+/// rings run round the whole sphere as the indexed one's do; and its dots are shaded discs, not
+/// markers, whose dark-and-white rim fills a dot under 8 px and makes hundreds of them one grey mat.
+#[test]
+fn a_dense_soup_draws_its_rings_as_dashes_and_dots_without_rims() {
+    let (left, right) = (Vec3::new(-1.4, 1.2, 0.0), Vec3::new(1.4, 1.2, 0.0));
+    for segments in [17.0, 24.0, 51.0, 64.0] {
+        let mut scene = MeshStorage::new();
+        scene.set_segments(segments).unwrap();
+        let mut f = Frame::default();
+        scene.draw(&mut f);
+        let pale = |c: Vec3, centre: Vec3| -> Vec<(Vec3, Vec3)> {
+            let c = c.lerp(Vec3::ONE, 0.65);
+            (f.lines.chunks_exact(2))
+                .filter(|v| Vec3::from_slice(&v[0].color[..3]).distance(c) < 1e-4)
+                .map(|v| (Vec3::from(v[0].position) - centre, Vec3::from(v[1].position) - centre))
+                .collect()
+        };
+        let (soup, indexed) = (pale(SOUP_COLOR, left), pale(INDEXED_COLOR, right));
+        let edge = std::f32::consts::TAU / segments;
+        let missing = (indexed.iter())
+            .filter(|(a, b)| {
+                let (mid, along) = ((*a + *b) * 0.5, (*b - *a).normalize());
+                !soup.iter().any(|(c, d)| {
+                    (*d - *c).normalize().dot(along).abs() > 0.99
+                        && ((*c + *d) * 0.5).distance(mid) < edge / 3.0
+                })
+            })
+            .count();
+        assert_eq!(missing, 0, "{segments} segments: {missing} of {} ring and meridian edges have no soup dash", indexed.len());
+        for c in [SOUP_COLOR, INDEXED_COLOR] {
+            assert!(
+                !f.markers.iter().any(|m| Vec3::from_slice(&m.color[..3]) == c),
+                "{segments} segments: rimmed markers on the dense patch"
+            );
+            let n = dot_centres(&f, c).len();
+            assert!(n >= 3, "{segments} segments: {n} dots");
+        }
+    }
 }
 
 /// Figure 1's patch of dots on a dense sphere turns with the camera: from any eye round the
@@ -921,11 +996,7 @@ fn a_dense_sphere_patch_faces_the_eye_after_an_orbit() {
         let mut f = Frame::default();
         let note = scene.draw(&mut f);
         let dots = |c: Vec3, centre: Vec3| -> Vec<Vec3> {
-            f.markers
-                .iter()
-                .filter(|m| Vec3::from_slice(&m.color[..3]) == c)
-                .map(|m| Vec3::from(m.center) - centre)
-                .collect()
+            dot_centres(&f, c).into_iter().map(|p| p - centre).collect()
         };
         let (soup, indexed) = (dots(SOUP_COLOR, left), dots(INDEXED_COLOR, right));
         assert!(indexed.len() > 30, "eye {eye}: {} positions marked", indexed.len());

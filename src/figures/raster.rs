@@ -43,8 +43,9 @@ pub const MAX_SEGMENTS: u32 = 64;
 
 /// Above this many segments, Figure 1 marks the corners and positions only on a patch of the
 /// sphere that faces the page's camera, with smaller dots, the soup's triangles pulled further
-/// apart, and elsewhere pale 1 px edges along every few rings and meridians (and the soup's
-/// triangles where they cross): drawn everywhere, thousands of dots and edges merge into one blot.
+/// apart, and elsewhere pale 1 px edges along every few rings and meridians (the soup's as
+/// dashes, each its own triangle's edge): drawn everywhere, thousands of dots and edges merge
+/// into one blot.
 pub const DENSE_SEGMENTS: u32 = 16;
 /// The centre of that patch before the first frame's camera is known (towards the page's
 /// camera; then [`MeshStorage::set_eye`] turns it to the eye) and the cosine of its angular
@@ -166,6 +167,20 @@ impl MeshStorage {
             .then(|| (((i - 1) / n + 1) % m, (i - 1) % n % m))
     }
 
+    /// Whether the edge from position `a` to `b` runs along a ring or meridian that is drawn
+    /// outside a dense sphere's patch ([`Self::coarse_cell`]): both ends on the same drawn ring
+    /// next to each other, or on the same drawn meridian.
+    fn on_grid(&self, a: u32, b: u32) -> bool {
+        let n = self.segments;
+        let (a, b) = (a.min(b), a.max(b));
+        match (self.coarse_cell(a), self.coarse_cell(b)) {
+            (Some(p), Some(_)) => {
+                (a - 1) / n == (b - 1) / n && p.0 == 0 || (b - a) % n == 0 && p.1 == 0
+            }
+            _ => false,
+        }
+    }
+
     /// How many corners of the soup get a dot.
     fn marked_corners(&self) -> usize {
         self.indices
@@ -225,13 +240,12 @@ impl MeshStorage {
         let dense = self.is_dense();
         // A marker's outline takes 2.5 px of its radius: 8 px shows a disc of colour, which the
         // soup's triangles, pulled to half their size, leave room for round each position up to
-        // 10 segments. Beyond, and on the dense patch, the dots must stay apart more than show
-        // their colour.
-        let dot = match (small, dense) {
+        // 10 segments. Beyond, the dots must stay apart more than show their colour (a dense
+        // sphere's are shaded discs instead, below).
+        let dot = match (small, self.segments <= 10) {
             (true, _) => 12.0,
-            (false, false) if self.segments <= 10 => 8.0,
+            (false, true) => 8.0,
             (false, false) => 6.0,
-            (false, true) => 4.0,
         };
         let keep = if dense { 0.6 } else { 0.5 };
         // Where each soup triangle's centre is drawn, from the soup's centre. The tetrahedron's
@@ -258,18 +272,35 @@ impl MeshStorage {
                 shown[t] = (across * a.cos() + up * a.sin()) * 0.9;
             }
         }
-        // Soup: each triangle shrunk towards its centre, its own three corners.
+        // On a dense sphere the dots are shaded discs a fixed fraction of an edge across (an
+        // edge of the unit sphere is about 2π / segments long), without a marker's rim: a marker
+        // under 8 px is all rim, and hundreds of them merge into one grey mat.
+        let edge = std::f32::consts::TAU / self.segments as f32;
+        // Soup: each triangle shrunk towards its centre, its own three corners. Outside a dense
+        // sphere's patch, each triangle's edges along the drawn rings and meridians, shrunk with
+        // it: the rings read as dashed lines, one dash per triangle, round the whole sphere.
         for (tri, (&centre, &at)) in self.indices.chunks_exact(3).zip(centres.iter().zip(&shown)) {
-            let [a, b, c] = [tri[0], tri[1], tri[2]].map(|i| self.positions[i as usize]);
-            let pull = |p: Vec3| left + at + (p - centre) * keep;
-            let (pa, pb, pc) = (pull(a), pull(b), pull(c));
-            if self.marked(centre) {
+            let corners = [tri[0], tri[1], tri[2]].map(|i| left + at + (self.positions[i as usize] - centre) * keep);
+            if !self.marked(centre) {
+                for k in 0..3 {
+                    if self.on_grid(tri[k], tri[(k + 1) % 3]) {
+                        frame.line(corners[k], corners[(k + 1) % 3], faint(SOUP_COLOR));
+                    }
+                }
+                continue;
+            }
+            let [pa, pb, pc] = corners;
+            if dense {
+                frame.polyline(&[pa, pb, pc, pa], SOUP_COLOR);
+            } else {
                 frame.wide_polyline(&[pa, pb, pc, pa], SOUP_COLOR, 1.5);
-                for p in [pa, pb, pc] {
+            }
+            for p in corners {
+                if dense {
+                    frame.point(p, 0.16 * edge, SOUP_COLOR);
+                } else {
                     frame.marker(p, dot, SOUP_COLOR);
                 }
-            } else if self.coarse_cell(tri[0]) == Some((0, 0)) {
-                frame.polyline(&[pa, pb, pc, pa], faint(SOUP_COLOR));
             }
         }
         let view = self
@@ -285,15 +316,8 @@ impl MeshStorage {
             for k in 0..3 {
                 let (a, b) = (tri[k], tri[(k + 1) % 3]);
                 if a < b {
-                    // Outside the patch: an edge along a drawn ring (same ring, a step of it)
-                    // or meridian (same segment).
-                    let n = self.segments;
-                    let on_grid = match (self.coarse_cell(a), self.coarse_cell(b)) {
-                        (Some(p), Some(_)) => {
-                            (a - 1) / n == (b - 1) / n && p.0 == 0 || (b - a) % n == 0 && p.1 == 0
-                        }
-                        _ => false,
-                    };
+                    // Outside the patch: an edge along a drawn ring or meridian.
+                    let on_grid = self.on_grid(a, b);
                     let (a, b) = (self.positions[a as usize], self.positions[b as usize]);
                     if self.marked((a + b) * 0.5) {
                         frame.wide_line(right + a, right + b, INDEXED_COLOR, 1.5);
@@ -303,8 +327,10 @@ impl MeshStorage {
                 }
             }
         }
-        for p in &self.positions {
-            if self.marked(*p) {
+        for p in self.positions.iter().filter(|p| self.marked(**p)) {
+            if dense {
+                frame.point(right + *p, 0.2 * edge, INDEXED_COLOR);
+            } else {
                 frame.marker(right + *p, dot * 1.2, INDEXED_COLOR);
             }
         }
@@ -350,7 +376,7 @@ impl MeshStorage {
             ),
         ] {
             let width = disc.map_or(0.0, |d| 2.0 * d.1);
-            let mut around = Label::around_dot(centre, width, -Vec2::Y, &text, color, 2, 4, 12.0);
+            let mut around = Label::around_dot(centre, width, -Vec2::Y, &text, color, 2, 6, 12.0);
             around.insert(
                 0,
                 Label {
@@ -363,7 +389,9 @@ impl MeshStorage {
                     large: false,
                 },
             );
-            frame.first_clear_label_by(view, 0.0, around, &off_discs);
+            // The tetrahedron's triangles sit round an empty centre, a name among them reads as
+            // one triangle's: the name keeps the numbers' margin off their lines and dots.
+            frame.first_clear_label_by(view, if small { LINE_MARGIN_PX } else { 0.0 }, around, &off_discs);
         }
         if small {
             // Number the soup's triangles as the listing beside the figure does, each at the
@@ -453,8 +481,11 @@ const POINT_PX: f32 = 14.0;
 /// Figure 5's lamp, CSS pixels across.
 const LAMP_PX: f32 = 16.0;
 const IMAGE_PX: f32 = 10.0;
-/// Where the NDC box of Figure 2 stands (its centre of the near face).
-const NDC_ORIGIN: Vec3 = Vec3::new(9.0, 1.2, -2.0);
+/// Where the NDC box of Figure 2 stands: the x and y of its near face's centre, whose z is a
+/// quarter of the way from the eye to the far plane as drawn (2 m at the page's defaults), so
+/// the box stays beside the frustum's middle when a wide field of view draws the frustum short:
+/// level with its far plane instead, it sits behind that plane's tall edge from the side.
+const NDC_ORIGIN: Vec2 = Vec2::new(9.5, 1.2);
 /// The far plane's half-width at the page's defaults (50°, z_far 8 m, aspect 1.5), beside which
 /// the NDC box is drawn at its own size.
 const NDC_FAR_HALF_WIDTH: f32 = 5.6;
@@ -699,7 +730,8 @@ impl Frustum {
         frame.first_clear_label_by(view, LINE_MARGIN_PX, candidates, |_| true);
         // The NDC box: x, y ∈ [−1, 1] drawn as is, depth ∈ [0, 1] drawn 2 m deep along −z, right
         // of the eye.
-        let ndc_to_world = |v: Vec3| NDC_ORIGIN + Vec3::new(v.x, v.y, -2.0 * v.z);
+        let origin = NDC_ORIGIN.extend(-0.25 * self.far / k);
+        let ndc_to_world = |v: Vec3| origin + Vec3::new(v.x, v.y, -2.0 * v.z);
         let box_corners: Vec<Vec3> = [0.0, 1.0]
             .iter()
             .flat_map(|&z| {
@@ -1074,8 +1106,10 @@ impl DepthPrecision {
             palette::GREY,
             crate::draw::StrokeStyle::dashed(1.5, 0.4, 0.3),
         );
-        // The top of the tallest bar (the farthest of equals), which the bars' name sits beside.
-        let mut tallest = Vec3::new(1.1, 0.0, 0.0);
+        // The top of the tallest green bar (the farthest of equals), which the bars' name sits
+        // beside in green; without a green bar, the tallest orange one's, in orange: a green name
+        // over orange bars reads as theirs.
+        let mut tallest = (Vec3::new(1.1, 0.0, 0.0), palette::ORANGE);
         for k in 1..=(reach / 2.0) as usize {
             let d = 2.0 * k as f32;
             let step = raster::depth_step(d, self.near, self.far, self.bits);
@@ -1087,8 +1121,9 @@ impl DepthPrecision {
             let top = Vec3::new(1.1, (step * Self::BAR_SCALE).min(6.0), -d);
             frame.wide_line(Vec3::new(1.1, 0.0, -d), top, color, 4.0);
             frame.marker(top, 9.0, color);
-            if top.y >= tallest.y {
-                tallest = top;
+            let (green, was_green) = (color == palette::GREEN, tallest.1 == palette::GREEN);
+            if green && !was_green || green == was_green && top.y >= tallest.0.y {
+                tallest = (top, color);
             }
         }
         let sep = |d: f32| Vec3::new(1.1, (self.separation(d) * Self::BAR_SCALE).min(6.0), -d);
@@ -1104,8 +1139,8 @@ impl DepthPrecision {
                 crate::draw::StrokeStyle::dashed(2.5, 0.3, 0.2),
             );
             // Leftwards of the dashed line's top (to its right the orange bars rise to their
-            // dots) at the page's camera; once the camera is orbited, the first place round the
-            // top that covers no dot, line or floor.
+            // dots) at the page's camera; where that is taken (other settings, a slid or zoomed
+            // view), the first place round the top that covers no dot, line or floor.
             let top = Vec3::new(1.1, 6.8, -from);
             let first = crate::draw::Label {
                 anchor: Vec3::new(1.1, 7.1, -from),
@@ -1121,8 +1156,8 @@ impl DepthPrecision {
             around.insert(0, first);
             frame.first_clear_label_by(view, LINE_MARGIN_PX, around, &off_floor);
         }
-        // The eye's name above its dot at the page's camera; once orbited, the first place round
-        // the dot that covers no dot, line, floor or the fighting line's name.
+        // The eye's name above its dot at the page's camera; where that is taken, the first
+        // place round the dot that covers no dot, line, floor or the fighting line's name.
         let first = crate::draw::Label {
             anchor: eye + Vec3::Y * 1.0,
             text: "eye".to_string(),
@@ -1138,9 +1173,9 @@ impl DepthPrecision {
         // The bars' name at the first place round the tallest bar's top, above first, that covers
         // no dot, line, floor or name placed before; the grey line's likewise round its far
         // (highest) end, else round a point further down the line: the end sits among the
-        // tallest bars, and at the canvas's edge when the camera looks along the floor.
+        // tallest bars, and at the canvas's edge when the view is slid or zoomed.
         let text = "one depth step (×40)";
-        let around = Label::around_dot(tallest, 9.0, -Vec2::Y, text, palette::GREEN, 1, 6, 10.0);
+        let around = Label::around_dot(tallest.0, 9.0, -Vec2::Y, text, tallest.1, 1, 6, 10.0);
         frame.first_clear_label_by(view, LINE_MARGIN_PX, around, &off_floor);
         let text = "separation d·gap/h (×40)";
         let mut along = Vec::new();
@@ -1150,6 +1185,9 @@ impl DepthPrecision {
         }
         frame.first_clear_label_by(view, LINE_MARGIN_PX, along, &off_floor);
         frame.keep_box_in_view(Vec3::new(-1.0, -0.1, -reach), Vec3::new(1.6, 7.2, 0.5));
+        // A diagram seen from the side: a drag slides it, where an orbit would turn it end-on
+        // and stack the bars into one column.
+        frame.flat = true;
         // The steps in one notation, three digits each (they span many decades: 1.53e-4 m,
         // 1.53e-2 m, 1.53e2 m), and the ratio to a tenth, as a whole number when it is one.
         let step = |d: f32| format!("{:.2e}", raster::depth_step(d, self.near, self.far, self.bits));

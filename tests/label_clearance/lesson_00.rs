@@ -2,12 +2,16 @@
 
 use super::*;
 
+/// Figure 3's canvases: 300 px tall (lessons/00-triangles-to-pixels/index.html), as wide as
+/// [`CANVASES`].
+const DEPTH_CANVASES: [Vec2; 2] = [Vec2::new(760.0, 300.0), Vec2::new(650.0, 300.0)];
+
 #[test]
 fn lesson_00_depth_side_view_labels_keep_off_the_bars_and_the_line() {
     // The page's defaults (lessons/00-triangles-to-pixels/lesson.js): 16 bits, 0.1 m to 1 km.
     // As on the page, the figure places its labels for the view of the frame before.
     let view = [0.0, 3.0, -20.0, 30.0, 1.2, 0.45];
-    for size in CANVASES {
+    for size in DEPTH_CANVASES {
         let mut scene = inbetween::figures::raster::DepthPrecision::new();
         scene.set(0.1, 1000.0, 0.01, 16.0).unwrap();
         let (frame, camera) = drawn!(&mut scene, view, size);
@@ -239,7 +243,7 @@ fn lesson_00_depth_eye_and_fighting_labels_keep_off_the_floor_and_bars_when_orbi
             (1.2, 0.1),
         ] {
             let view = [0.0, 3.0, -20.0, 30.0, yaw, pitch];
-            for size in CANVASES {
+            for size in DEPTH_CANVASES {
                 let mut scene = DepthPrecision::new();
                 scene.set(0.1, 1000.0, gap, 16.0).unwrap();
                 let (frame, camera) = drawn!(&mut scene, view, size);
@@ -559,4 +563,169 @@ fn lesson_00_tetrahedron_soup_triangles_stay_apart_on_the_canvas() {
         }
     }
     assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_00_frustum_keeps_clear_of_the_ndc_box_at_every_field_of_view() {
+    // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js) and orbited as the
+    // page test's drag turns it (yaw down by about 1 rad, pitch up by 0.34), both canvases, the
+    // field of view over its whole slider (10° to 150°) with a short, the page's and a far
+    // z_far: no line of the frustum (its planes, edges and the ray to the point) comes within
+    // 6 px of the NDC box's outline on the canvas, so the two never read as one drawing.
+    use inbetween::figures::raster::{frustum_colors::NDC_BOX, Frustum};
+    // The convex hull of `points` (counter-clockwise on the canvas, y down: clockwise as seen).
+    let hull = |mut p: Vec<Vec2>| {
+        p.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+        let cross = |o: Vec2, a: Vec2, b: Vec2| (a - o).perp_dot(b - o);
+        let mut h: Vec<Vec2> = Vec::new();
+        for pass in [p.clone(), p.into_iter().rev().collect()] {
+            let start = h.len();
+            for q in pass {
+                while h.len() >= start + 2 && cross(h[h.len() - 2], h[h.len() - 1], q) <= 0.0 {
+                    h.pop();
+                }
+                h.push(q);
+            }
+            h.pop();
+        }
+        h
+    };
+    let seg_dist = |q: Vec2, a: Vec2, b: Vec2| {
+        let t = ((q - a).dot(b - a) / (b - a).length_squared().max(1e-12)).clamp(0.0, 1.0);
+        q.distance(a + (b - a) * t)
+    };
+    let mut failures = Vec::new();
+    let fovs = (10..=150).step_by(10).chain([121, 145]);
+    for fov in fovs {
+        for (near, far) in [(1.0, 8.0), (3.95, 15.9), (0.1, 20.0), (1.0, 2.0)] {
+            for (size, (yaw, pitch)) in CANVASES.into_iter().flat_map(|size| {
+                [(0.45, 0.45), (-0.59, 0.79), (-0.77, 0.79)].map(|orbit| (size, orbit))
+            }) {
+                failures.extend(failure_of(|| {
+                    let mut scene = Frustum::new();
+                    scene.set_frustum(fov as f32, near, far).unwrap();
+                    scene.set_offset(-1.8, -1.8).unwrap();
+                    let mut frame = Frame::default();
+                    scene.draw(&mut frame, 0.5).unwrap();
+                    let camera = page_camera([4.5, 1.2, -4.0, 17.0, yaw, pitch], &frame, size);
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let at = |p: [f32; 3]| project_to_canvas(view_proj, size, Vec3::from(p)).unwrap();
+                    // The box's corners: the ends of its four teal edges.
+                    let corners: Vec<[f32; 3]> = (frame.strokes.iter())
+                        .filter(|s| s.color[..3] == NDC_BOX.to_array())
+                        .flat_map(|s| [s.a, s.b])
+                        .collect();
+                    assert_eq!(corners.len(), 8, "four teal edges");
+                    let outline = hull(corners.iter().map(|&c| at(c)).collect());
+                    let n = outline.len();
+                    let inside = |q: Vec2| {
+                        (0..n).all(|i| (outline[(i + 1) % n] - outline[i]).perp_dot(q - outline[i]) >= 0.0)
+                    };
+                    let gap = |q: Vec2| {
+                        if inside(q) {
+                            return 0.0;
+                        }
+                        (0..n).map(|i| seg_dist(q, outline[i], outline[(i + 1) % n])).fold(f32::MAX, f32::min)
+                    };
+                    for s in &frame.strokes {
+                        if corners.contains(&s.a) && corners.contains(&s.b) {
+                            continue;
+                        }
+                        let (a, b) = (at(s.a), at(s.b));
+                        for k in 0..=64 {
+                            let q = a.lerp(b, k as f32 / 64.0);
+                            let d = gap(q) - 0.5 * s.width_px;
+                            assert!(
+                                d >= 6.0,
+                                "fov {fov}, z_near {near}, z_far {far}, orbit ({yaw}, {pitch}) on \
+                                 {size}: a line from {a} to {b} (colour {:?}) {d} px from the NDC box",
+                                s.color
+                            );
+                        }
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_00_tetrahedron_storage_names_keep_off_its_triangles() {
+    // Figure 1 with the tetrahedron, at its page camera (lessons/00-triangles-to-pixels/lesson.js)
+    // and orbited: "triangle soup: 144 B" and "indexed: 96 B" stay where the figure put them (no
+    // leader line, which from the soup's empty centre would cross a triangle), keep 2 px off every
+    // dot and line, and 2 px from the triangles' names and the positions' numbers.
+    use inbetween::figures::raster::MeshStorage;
+    let mut failures = Vec::new();
+    let orbits = [-1.04, -0.5, 0.0, 0.5, 1.04].into_iter().flat_map(|yaw| [0.1, 0.3, 0.64].map(|pitch| (yaw, pitch)));
+    // And as the page test's drag turns it (yaw by -1.04 or -1.22 rad, pitch by 0.3 or 0.34).
+    for (yaw, pitch) in orbits.chain([(-1.04, 0.6), (-1.22, 0.64)]) {
+        {
+            for size in CANVASES {
+                failures.extend(failure_of(|| {
+                    let mut scene = MeshStorage::new();
+                    scene.set_shape("tetrahedron").unwrap();
+                    let view = [0.0, 1.2, 0.0, 5.6, yaw, pitch];
+                    let (frame, camera) = drawn!(&mut scene, view, size);
+                    let name = format!("00 tetrahedron, yaw {yaw}, pitch {pitch}");
+                    let names: Vec<usize> = (0..frame.labels.len())
+                        .filter(|&i| frame.labels[i].text.contains(" B"))
+                        .collect();
+                    assert_eq!(names.len(), 2, "{name}: both storages named");
+                    assert_shown_clear_by(&name, &frame, &camera, size, &names, 2.0);
+                    let placed = layout(&frame, &camera, size);
+                    let rect = |i: usize| Rect {
+                        min: placed[i].2.top_left,
+                        size: placed[i].1.size,
+                    };
+                    for &i in &names {
+                        for j in (0..placed.len()).filter(|j| !names.contains(j)) {
+                            assert!(
+                                !rect(i).overlaps(&rect(j), 2.0),
+                                "{name} on {size}: {:?} touches {:?}",
+                                placed[i].0.text,
+                                placed[j].0.text
+                            );
+                        }
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_00_depth_side_view_fills_its_canvas() {
+    // Figure 3 at its page camera (lessons/00-triangles-to-pixels/lesson.js) on its canvases, at
+    // the page's settings, with z_near 1 m (short bars) and with 24 bits: what it draws (the
+    // floors' ends, the bars, the lines and the names) spans at least 80 % of the canvas's width
+    // and half its height, rather than a strip with an empty band under it.
+    use inbetween::figures::raster::DepthPrecision;
+    for (near, bits) in [(0.1, 16.0), (1.0, 16.0), (0.1, 24.0)] {
+        for size in DEPTH_CANVASES {
+            let mut scene = DepthPrecision::new();
+            scene.set(near, 1000.0, 0.01, bits).unwrap();
+            let (frame, camera) = drawn!(&mut scene, [0.0, 3.0, -20.0, 30.0, 1.2, 0.45], size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let floor_ends = [-1.0, 1.0].map(|x| [Vec3::new(x, 0.0, 0.0), Vec3::new(x, 0.0, -40.0)]);
+            let mut points: Vec<Vec2> = (frame.strokes.iter())
+                .flat_map(|s| [s.a, s.b])
+                .chain(frame.markers.iter().map(|m| m.center))
+                .map(Vec3::from)
+                .chain(floor_ends.into_iter().flatten())
+                .filter_map(|p| project_to_canvas(view_proj, size, p))
+                .collect();
+            for (_, rect) in label_boxes(&frame, &camera, size) {
+                points.extend([rect.min, rect.max()]);
+            }
+            let (lo, hi) = points.iter().fold((Vec2::MAX, Vec2::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+            let span = (hi - lo) / size;
+            assert!(
+                span.x >= 0.8 && span.y >= 0.5,
+                "z_near {near}, {bits} bits on {size}: the drawing spans {span} of the canvas"
+            );
+        }
+    }
 }
