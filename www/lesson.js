@@ -155,6 +155,9 @@ export function showError(message) {
   const line = document.createElement('div');
   line.textContent = text;
   banner.append(line);
+  // The banner stays at the top of the window (sticky): what is fixed under the header (the
+  // contents beside a wide page, www/style.css) moves down by its height.
+  document.documentElement.style.setProperty('--banner-height', `${banner.offsetHeight}px`);
 }
 
 function installErrorHandlers() {
