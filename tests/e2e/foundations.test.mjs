@@ -236,7 +236,7 @@ test('lesson 02: every panel choice fits beside its chevron, and without a GPU n
     assert.ok(await page.locator('.no-gpu').count() > 0, 'the figures say why they are not drawn');
     assert.equal(await page.locator('#fig-keys :is(.editor, .timeline):visible').count(), 0, 'no blank curve editor or idle timeline under the message');
     // The contents beside the wide page, opened, sit under the header that the red banner pushed down.
-    await page.locator('details.outline summary').click();
+    await page.locator('details.outline').evaluate((d) => { d.open = true; });
     const [header, outline] = await Promise.all(['header.site', 'details.outline']
       .map((s) => page.locator(s).evaluate((e) => e.getBoundingClientRect().toJSON())));
     assert.ok(outline.top >= header.bottom - 1, `contents at ${outline.top} px, the header ends at ${header.bottom} px`);
