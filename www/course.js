@@ -146,9 +146,10 @@ function splitPanic(text) {
 /**
  * Runs one grading in a fresh worker. Resolves to { kind: 'done', rows, table }, { kind:
  * 'panicked', exercise, case, message, location }, { kind: 'stopped', exercise, case } or
- * { kind: 'error', message }; the worker is ended in every case but 'done'.
+ * { kind: 'error', message }; the worker is ended in every case but 'done'. `onCase(exercise,
+ * previous)` hears of each case as it starts; `quiet` keeps the grader's console lines out.
  */
-function gradeInWorker(module, lesson, known) {
+function gradeInWorker(module, lesson, known, onCase = () => {}, quiet = false) {
   return new Promise((resolve) => {
     const worker = new Worker(new URL('./grade-worker.js', import.meta.url), { type: 'module' });
     let current = null; // { exercise, case } the grader last said it started
@@ -172,9 +173,10 @@ function gradeInWorker(module, lesson, known) {
       switch (data.kind) {
         case 'ready':
           watch(CASE_LIMIT_S, stop);
-          worker.postMessage({ lesson, known });
+          worker.postMessage({ lesson, known, quiet });
           break;
         case 'case':
+          onCase(data.exercise, current?.exercise);
           current = { exercise: data.exercise, case: data.case };
           watch(CASE_LIMIT_S, stop);
           break;
@@ -195,6 +197,42 @@ function gradeInWorker(module, lesson, known) {
     };
     worker.postMessage({ module });
   });
+}
+
+/**
+ * Grades lesson `id`'s exercises in workers, as the panel does, for the figures (www/lesson.js):
+ * an exercise runs in the page only once it has returned from every grading case here, since an
+ * endless loop on the page's own thread could never be stopped. Calls `returned(exercise)` as each
+ * exercise gets through its cases (a panic counts: the page's sandbox survives one) and resolves
+ * to a Map from each stopped exercise to a sentence saying where it was stopped, or, when the
+ * grader cannot run, to `{ error }`. Nothing is saved to the student's progress.
+ */
+export async function checkExercises(module, id, returned) {
+  const known = [];
+  const stopped = new Map();
+  for (let round = 0; round < 64; round++) {
+    const result = await gradeInWorker(module, id, known, (exercise, previous) => {
+      if (previous && previous !== exercise) returned(previous);
+    }, true);
+    if (result.kind === 'done') {
+      for (const row of result.rows) {
+        if (row.verdict === 'stopped') {
+          stopped.set(row.exercise, `it gave no answer within ${CASE_LIMIT_S} s at the grader's case ${row.case} (${row.what}), `
+            + 'so the page does not run it (an endless loop would freeze the page); fix it and reload');
+        } else returned(row.exercise);
+      }
+      return stopped;
+    }
+    if (result.kind === 'panicked') {
+      known.push({ exercise: result.exercise, case: result.case, kind: 'panicked', message: result.message, location: result.location });
+      returned(result.exercise);
+    } else if (result.kind === 'stopped') {
+      known.push({ exercise: result.exercise, case: result.case, kind: 'stopped', seconds: CASE_LIMIT_S });
+    } else {
+      return { error: result.message };
+    }
+  }
+  return { error: 'the grader went round too many times' };
 }
 
 const VERDICT_WORDS = {

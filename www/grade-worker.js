@@ -3,7 +3,8 @@
 // page can stop an exercise that never returns by ending this worker (www/course.js).
 //
 // Messages in:  { module }                  the compiled module, once, first
-//               { lesson, known }           grade; `known`: failures earlier workers met
+//               { lesson, known, quiet }    grade; `known`: failures earlier workers met;
+//                                           `quiet`: no console lines (the page's own check)
 // Messages out: { kind: 'ready' }
 //               { kind: 'case', exercise, case }       a case is about to run (the watchdog)
 //               { kind: 'panic', message }             the student's code panicked; a trap follows
@@ -34,6 +35,9 @@ onmessage = async ({ data }) => {
     }
     return;
   }
+  // The check the page runs before its figures call an exercise (www/course.js,
+  // checkExercises) reports in the figures' notes: the grader's console lines would be noise.
+  if (data.quiet) console.error = () => {};
   try {
     await ready;
     const { rows, table } = gradeLesson(data.lesson, data.known ?? [], true);

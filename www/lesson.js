@@ -8,7 +8,7 @@ import GUI, { NumberController } from '../vendor/lil-gui/lil-gui.esm.min.js';
 // Under `scripts/serve`: reload after a rebuild, show a failed build's errors (idle otherwise).
 import './devloop.js';
 // The course around the page: navigation, outline, "Check my exercises", the quiz.
-import { lessonId, setUpNavigation, addOutline, gradePanel, quiz, scrollToHash, showProgressNotes, typeset } from './course.js';
+import { lessonId, setUpNavigation, addOutline, gradePanel, checkExercises, quiz, scrollToHash, showProgressNotes, typeset } from './course.js';
 
 export { GUI };
 
@@ -27,6 +27,24 @@ GUI.prototype.add = function add(...args) {
   else clearTypedNotesOnChange(controller);
   return controller;
 };
+
+// lil-gui counts a control's steps from its minimum in floating point, so a box from −2 in steps
+// of 0.001 took a typed 0.001 as 0.00099999999999989 (and its note said the value fell between
+// steps). The snapped value is rounded to the decimals of the step and of the minimum, where the
+// steps lie, so a value on a step is taken as typed.
+const snapToStep = NumberController.prototype._snap;
+NumberController.prototype._snap = function snap(value) {
+  const snapped = snapToStep.call(this, value);
+  const digits = Math.max(decimals(this._step), decimals(this._min ?? this._max ?? 0));
+  return digits <= 20 && Number.isFinite(snapped) ? Number(snapped.toFixed(digits)) : snapped;
+};
+
+/** How many decimals `x` is written with (0.05: 2, 1e-7: 7, 3: 0). */
+function decimals(x) {
+  if (!Number.isFinite(x)) return 0;
+  const [mantissa, exponent] = String(x).toLowerCase().split('e');
+  return Math.max(0, (mantissa.split('.')[1] ?? '').length - Number(exponent ?? 0));
+}
 
 /** A change of `controller` (a checkbox, a dropdown, a button) clears the page's typed-value notes. */
 function clearTypedNotesOnChange(controller) {
@@ -245,9 +263,41 @@ function replaceSandbox() {
   }).catch(showError);
 }
 
+// A figure's call runs on the page's thread, where nothing can stop an endless loop: the page
+// would freeze for good. So the lesson's exercises are graded first in a worker, with the
+// panel's time limit per case (www/course.js, `checkExercises`; it starts with the page), and an
+// exercise runs in a figure only once it has returned from every case there. One that was stopped
+// is never run in the page: its figure says so and uses the reference. (An exercise that returns
+// on every grading case and loops only on a figure's input is not caught.)
+const exerciseCheck = { done: false, returned: new Set(), stopped: new Map(), refused: false };
+state.exerciseCheck = exerciseCheck;
+
+function startExerciseCheck() {
+  const id = lessonId();
+  if (!gradedLessons().includes(id)) {
+    exerciseCheck.done = true;
+    return;
+  }
+  checkExercises(sandbox.module, id, (exercise) => exerciseCheck.returned.add(exercise)).then((result) => {
+    if (result instanceof Map) exerciseCheck.stopped = result;
+    else console.warn(`inbetween: the exercises could not be checked for endless loops first: ${result.error}`);
+    exerciseCheck.done = true;
+    // A figure that asked while the check ran showed the reference: its switch is applied again.
+    if (exerciseCheck.refused) {
+      for (const c of controllers) if (c._name === 'use my exercise' && c.getValue() === true) c._callOnChange();
+    }
+  }).catch(showError);
+}
+
 function callExercise(name, args) {
   const previous = state.panickedExercises[name];
   if (previous) throw { kind: 'panic', message: previous };
+  const stopped = exerciseCheck.stopped.get(name);
+  if (stopped) throw { kind: 'call', message: stopped };
+  if (!exerciseCheck.done && !exerciseCheck.returned.has(name)) {
+    exerciseCheck.refused = true;
+    throw { kind: 'call', message: 'the page is grading it first (in a worker, where an endless loop can be stopped); the figure runs it once that is done' };
+  }
   if (!sandbox.current) throw { kind: 'call', message: 'the exercise sandbox is starting; try again in a moment' };
   sandbox.calling = name;
   sandbox.lastPanic = null;
@@ -295,6 +345,7 @@ async function loadModules() {
   await Promise.all([init({ module_or_path: figures }), initCourse({ module_or_path: course })]);
   [sandbox.current, sandbox.spare] = await Promise.all([newSandbox(), newSandbox()]);
   globalThis.__inbetweenSandbox = { call: callExercise };
+  startExerciseCheck();
 }
 
 /**

@@ -727,10 +727,12 @@ fn two_joint_quiz(name: &str, args: &[f32]) -> Result<(Vec3, crate::ik::TwoJoint
     Ok((u, solution))
 }
 
-/// Three student mistakes for the isolation test (feature `student-bugs`, or
+/// The student mistakes of the isolation test (feature `student-bugs`, or
 /// [`super::with_student_bugs`] in a build with debug assertions; a release build without the
-/// feature has none of this code): a panic in slerp, a transposed Rodrigues matrix and vertex
-/// normals with the middle one reversed (see [`reverse_middle_normal`]).
+/// feature has none of this code): a panic in slerp, a transposed Rodrigues matrix, vertex
+/// normals with the middle one reversed (see [`reverse_middle_normal`]) and, in the browser, a
+/// `polar_step` that never returns, as in the grader (`grade::planted_mistakes`): the page must
+/// never call it on its own thread.
 #[cfg(any(feature = "student-bugs", debug_assertions))]
 pub(super) fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, Failure>> {
     match name {
@@ -754,6 +756,10 @@ pub(super) fn student_bugs(name: &str, args: &[f32]) -> Option<Result<Vec<f32>, 
             let index = args.len(); // 9 numbers: past the end, as an off-by-one would be
             Some(Ok(vec![keys[index] as f32]))
         }
+        #[cfg(target_arch = "wasm32")]
+        "polar_step" => loop {
+            std::hint::black_box(args);
+        },
         "rodrigues_matrix" => {
             let mut rest = args;
             let axis = Vec3::take(&mut rest)?;

@@ -90,6 +90,17 @@ test('the panel grades like the native grader, survives a panic and stops an end
     assert.ok(Date.now() - started >= 5000, 'the time limit ran out before the verdict');
     assert.equal(await second.page.evaluate(() => window.__inbetween.dead), false);
     await second.page.locator('.grade-panel').screenshot({ path: `${SHOTS}/course-grader-04-endless-loop.png` });
+    // Figure 2 runs polar_step: in this build it never returns in the page either, so the page
+    // must not call it on its own thread. The grading done when the page opened stopped it; the
+    // figure says so, uses the reference, and the page keeps responding (a hang would time out).
+    await second.page.waitForFunction(() => window.__inbetween.exerciseCheck.done, null, { timeout: 60_000 });
+    const affine = second.page.locator('#fig-affine');
+    await affine.locator('.lil-controller', { hasText: 'use my exercise' }).locator('input[type="checkbox"]').check();
+    const stoppedNote = await affine.locator('.exercise-note').textContent({ timeout: 10_000 });
+    assert.match(stoppedNote, /polar_step: it gave no answer within 5 s at the grader's case 1 \(.*\), so the page does not run it/, stoppedNote);
+    assert.match(stoppedNote, /uses the reference/, stoppedNote);
+    assert.equal(await second.page.evaluate(() => 1 + 1), 2, 'the page still answers');
+    await affine.screenshot({ path: `${SHOTS}/course-grader-04-figure-endless-loop.png` });
 
     // Lesson 01: every exercise is the reference's; the same table as natively.
     const third = await openPage(context, `${site.origin}/lessons/01-transforms/?backend=webgl2`);

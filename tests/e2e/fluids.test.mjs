@@ -21,6 +21,7 @@ test('lesson 15: the density figure\'s particle is dragged with the mouse; its n
     await canvas.scrollIntoViewIfNeeded();
     // With "use my exercise" on the stubs, the note reads as a list: the particle's numbers,
     // then a line for each exercise not done (the page keeps the note's line breaks).
+    await page.waitForFunction(() => window.__inbetween.exerciseCheck.done, null, { timeout: 30_000 });
     await setControl(page, '#fig-density', 'use my exercise', true);
     await frames(page, 4);
     const lines = (await page.locator('#density-note').innerText()).split('\n');
