@@ -109,6 +109,18 @@ test('a number typed between a control\'s steps says which step it took (a count
     await other.page.evaluate(() => new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(ok))));
     assert.equal(await particles.locator('xpath=following-sibling::*[1]').textContent(),
       '1234 falls between the control\'s steps of 500: particles is set to 1000.');
+    // A value on a step of a range that starts off the origin (lesson 04's scale y: from -2 in
+    // steps of 0.001) is taken as typed, without a note: lil-gui's count of steps from the
+    // minimum gave 0.00099999999999989 for 0.001.
+    const affine = await openPage(context, `${site.origin}/lessons/04-rigid-motions/?backend=webgl2`, { width: 1280, height: 900 });
+    const scaleY = affine.page.locator('#fig-affine .lil-controller', { hasText: 'scale y' }).first();
+    for (const value of ['0.001', '0.01', '1.234']) {
+      await scaleY.locator('input').fill(value);
+      await scaleY.locator('input').press('Enter');
+      await affine.page.evaluate(() => new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(ok))));
+      assert.equal(await scaleY.locator('input').inputValue(), value);
+      assert.ok(!(await scaleY.locator('xpath=following-sibling::*[1]').isVisible()), `${value}: no note`);
+    }
   } finally {
     await context.close();
   }
