@@ -94,6 +94,17 @@ impl OrbitCamera {
         }
     }
 
+    /// Turns the camera back to at most `max_yaw_rad` either side of the front (yaw 0), if given
+    /// (a figure's [`crate::draw::Frame::max_yaw_rad`]); the pitch and the distance stay.
+    pub fn limit_yaw(&mut self, max_yaw_rad: Option<f32>) {
+        if let Some(max) = max_yaw_rad {
+            let pi = std::f32::consts::PI;
+            // The same direction in (−π, π], then clamped.
+            let yaw = (self.yaw_rad + pi).rem_euclid(std::f32::consts::TAU) - pi;
+            self.yaw_rad = yaw.clamp(-max, max);
+        }
+    }
+
     /// A pointer drag of `(dx_px, dy_px)` CSS pixels on a canvas `height_px` tall: turns the
     /// camera round its target, or, for a `flat` figure ([`crate::draw::Frame::flat`]), pans,
     /// keeping the figure facing the camera. Returns whether it panned.

@@ -256,6 +256,10 @@ pub struct Frame {
     /// subject reads only from the side (an antenna's sideways lag) keeps the orbit below it
     /// ([`crate::camera::OrbitCamera::limit_pitch`]). `None`: up to the pole.
     pub max_pitch_rad: Option<f32>,
+    /// The farthest the camera may turn from the front (yaw 0), radians either way: a figure
+    /// drawn in one plane (a 2D simulation's tanks) turned edge-on shows slivers
+    /// ([`crate::camera::OrbitCamera::limit_yaw`]). `None`: all the way round.
+    pub max_yaw_rad: Option<f32>,
 }
 
 /// A mesh made with the renderer's GPU-skinning path (`Renderer::skin`), by creation order.
@@ -1012,6 +1016,7 @@ impl Frame {
         self.keep_in_view.clear();
         self.inset = None;
         self.flat = false;
+        self.max_yaw_rad = None;
         self.max_pitch_rad = None;
     }
 

@@ -1119,3 +1119,59 @@ fn for_a_tenth_of_a_second_pbfs_column_keeps_its_height_and_sphs_sinks() {
     let free = 9.81 * 6.0 * DAM_FRAME_SEC;
     assert!((-highest.1.y / free - 1.0).abs() < 0.15, "SPH's top falls at {} m/s", highest.1.y);
 }
+
+#[test]
+fn the_dam_break_orbit_stops_short_of_edge_on() {
+    // The tanks are slabs in one plane. From the page's front view (lessons/15-fluids/lesson.js)
+    // dragged sideways as the page sweep drags (a fifth of the canvas's width to the left and a
+    // tenth of its height down, on its 760 and 920 px canvases) or all the way to the side, the figure's
+    // yaw limit keeps each tank at least 0.7 of its front-view width against its height on
+    // screen (in clip space: the canvas's aspect is the same for both and cancels).
+    use glam::Vec3;
+    use inbetween::camera::OrbitCamera;
+    use inbetween::figures::fluid::DAM_MAX_YAW_RAD;
+    let fig = DamBreakFigure::new();
+    let mut frame = Frame::default();
+    fig.draw(&mut frame);
+    assert_eq!(frame.max_yaw_rad, Some(DAM_MAX_YAW_RAD));
+    let size = inbetween::fluid::box_size(inbetween::fluid::Dim::Two);
+    // The SPH tank's corners, as the figure places it: left of the middle by half the gap.
+    let left = -(size.x + 0.2) * 0.5 - 0.5 * size.x;
+    let corners = [
+        Vec3::new(left, 0.0, 0.0),
+        Vec3::new(left + size.x, 0.0, 0.0),
+        Vec3::new(left, size.y, 0.0),
+    ];
+    let aspect = |camera: &OrbitCamera| {
+        let view_proj = camera.projection(760.0 / 420.0) * camera.view();
+        let c = corners.map(|p| view_proj.project_point3(p).truncate());
+        (c[1] - c[0]).length() / (c[2] - c[0]).length()
+    };
+    let front = OrbitCamera::from_view([0.0, 0.55, 0.0, 4.0, 0.0, 0.0]);
+    for (d_yaw, d_pitch) in [
+        (-0.2 * 760.0 * 0.008, 0.1 * 420.0 * 0.008),
+        (-0.2 * 920.0 * 0.008, 0.1 * 420.0 * 0.008),
+        (std::f32::consts::FRAC_PI_2, 0.0),
+        (-std::f32::consts::FRAC_PI_2, 0.0),
+        (std::f32::consts::TAU - 0.3, 0.0),
+    ] {
+        let mut camera = front;
+        camera.orbit(d_yaw, d_pitch);
+        camera.limit_yaw(frame.max_yaw_rad);
+        assert!(
+            camera.yaw_rad.abs() <= DAM_MAX_YAW_RAD + 1e-6,
+            "{d_yaw}: yaw {}",
+            camera.yaw_rad
+        );
+        let ratio = aspect(&camera) / aspect(&front);
+        assert!(
+            ratio >= 0.7,
+            "orbited by {d_yaw}, {d_pitch}: {ratio} of the front width"
+        );
+    }
+    // A turn of nearly a whole circle is a small turn the other way: it stays as it is.
+    let mut camera = front;
+    camera.orbit(std::f32::consts::TAU - 0.3, 0.0);
+    camera.limit_yaw(frame.max_yaw_rad);
+    assert!((camera.yaw_rad + 0.3).abs() < 1e-4, "{}", camera.yaw_rad);
+}

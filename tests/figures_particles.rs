@@ -1168,3 +1168,93 @@ fn the_squash_ball_stays_stretched_at_the_top_of_a_bounce() {
         assert!(tops >= 2, "k = {k}: {tops} bounce tops");
     }
 }
+
+/// The squash figure's balls start 1.75 m above the floor, above `Frame::shadow_reach`, where
+/// they cast no shadow: a line drops from each ball's bottom straight down to the floor, so
+/// their height reads from t = 0 on.
+#[test]
+fn the_squash_balls_have_drop_lines_from_the_start() {
+    use inbetween::draw::Frame;
+    let mut f = inbetween::figures::particles::SquashFigure::new();
+    for t in [0.0, 0.3] {
+        let mut frame = Frame::default();
+        f.draw(&mut frame, t).unwrap();
+        let spheres: Vec<glam::Vec3> = frame
+            .meshes
+            .iter()
+            .filter(|m| m.mesh == inbetween::draw::MeshId::SPHERE)
+            .map(|m| m.model.w_axis.truncate())
+            .collect();
+        assert_eq!(spheres.len(), 2, "t {t}: two balls");
+        for c in spheres {
+            assert!(c.y > 1.0, "t {t}: the ball at {c} is in flight");
+            let drop = frame.strokes.iter().find(|s| {
+                let (a, b) = (glam::Vec3::from(s.a), glam::Vec3::from(s.b));
+                (a.x - c.x).abs() < 1e-4
+                    && (a.z - c.z).abs() < 1e-4
+                    && (a.y - (c.y - 0.25)).abs() < 0.06
+                    && (b - a * glam::Vec3::new(1.0, 0.0, 1.0)).length() < 1e-4
+            });
+            assert!(
+                drop.is_some(),
+                "t {t}: no line from the ball at {c} to the floor"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_emitter_note_says_when_the_fountain_rises_out_of_the_view() {
+    use glam::Vec2;
+    use inbetween::camera::{project_to_canvas, OrbitCamera};
+    // The emitter figure's page camera (lessons/11-particles/lesson.js; it fits nothing), on
+    // both canvases: a particle FOUNTAIN_VIEW_TOP_M above the floor, anywhere a fountain
+    // reaching that high can be (x from -3 to 3 m, z from -2 to 2 m), is off the canvas.
+    let camera = OrbitCamera::from_view([0.2, 1.0, 0.0, 6.5, 0.35, 0.3]);
+    for size in [Vec2::new(760.0, 420.0), Vec2::new(650.0, 420.0)] {
+        let view_proj = camera.projection(size.x / size.y) * camera.view();
+        for i in 0..=24 {
+            for j in 0..=16 {
+                let p = Vec3::new(
+                    -3.0 + 0.25 * i as f32,
+                    FOUNTAIN_VIEW_TOP_M,
+                    -2.0 + 0.25 * j as f32,
+                );
+                let on = project_to_canvas(view_proj, size, p)
+                    .filter(|c| c.cmpge(Vec2::ZERO).all() && c.cmple(size).all());
+                assert!(on.is_none(), "{size}: {p} is on the canvas at {on:?}");
+            }
+        }
+    }
+    // The defaults' fountain stays well below (its top is under 2 m) and the note says nothing
+    // of it; under weaker gravity it rises past, and the note gives its top. The simulated
+    // particles come near that top and never pass it.
+    for (g, leaves) in [(9.81, false), (4.0, true), (0.0, true)] {
+        let mut scene = EmitterFigure::new();
+        scene.set_gravity(g).unwrap();
+        let top = scene.fountain_top_m();
+        let mut highest = 0.0f32;
+        for k in 1..=240 {
+            scene.advance_to(k as f32 * SIM_DT).unwrap();
+            let sys = scene.system();
+            highest = sys.positions[..sys.len()]
+                .iter()
+                .fold(highest, |h, p| h.max(p.y));
+        }
+        assert!(
+            highest <= top + 1e-3 && highest >= 0.8 * top,
+            "g {g}: particles up to {highest} m, top {top} m"
+        );
+        assert_eq!(top > FOUNTAIN_VIEW_TOP_M, leaves, "g {g}: top {top} m");
+        let mut frame = Frame::default();
+        let eye = Vec3::new(0.0, 2.0, 6.0);
+        let note = scene.draw(&mut frame, eye, Vec3::ZERO, 4.0).unwrap();
+        let said = format!(
+            "At g = {} m/s² the fountain's highest particles rise up to {} m before they die, \
+             out of the top of the view.",
+            inbetween::exercises::run::format_number(g),
+            inbetween::exercises::run::format_number(top)
+        );
+        assert_eq!(note.contains(&said), leaves, "g {g}: {note}");
+    }
+}

@@ -129,36 +129,46 @@ if (flockViewer) {
   const plot = new Plot(document.getElementById('flock-plot'), {
     title: 'One step of the flock: grid vs naive search', xLabel: 'boids N (count)', yLabel: 'step time (ms)',
     series: ['grid (median)', 'grid fastest', 'grid slowest', 'naive (median)', 'naive fastest', 'naive slowest',
-      'slope 1: t ∝ N', 'slope 2: t ∝ N²'],
+      'slope 1: t ∝ N', 'slope 2: t ∝ N²', 'previous run: grid', 'previous run: naive'],
     colors: [cssVar('--z-axis'), cssVar('--z-axis'), cssVar('--z-axis'), cssVar('--x-axis'), cssVar('--x-axis'),
-      cssVar('--x-axis'), cssVar('--grey'), cssVar('--dark')],
+      cssVar('--x-axis'), cssVar('--grey'), cssVar('--dark'), cssVar('--pale-grey'), cssVar('--pale-grey')],
     // Each search's fastest timings dashed and its slowest dotted, so that the legend tells
-    // them apart; the slope guides' dashes are longer.
-    widths: [2.5, 1.5, 2, 2.5, 1.5, 2, 1.5, 1.5],
-    dashes: [null, [5, 3], [1.5, 3], null, [5, 3], [1.5, 3], [10, 5], [10, 5]],
+    // them apart; the slope guides' dashes are longer. The previous run's two medians, pale
+    // grey and dashed under one name, stay while the button's run measures.
+    widths: [2.5, 1.5, 2, 2.5, 1.5, 2, 1.5, 1.5, 2.5, 2.5],
+    dashes: [null, [5, 3], [1.5, 3], null, [5, 3], [1.5, 3], [10, 5], [10, 5], [6, 4], [6, 4]],
     log: 'xy', height: 300,
   });
+  plot.setSeriesLabel(9, '');
   const status = document.getElementById('flock-sweep');
+  // The last run that finished, as plotted; `previous`: the one shown beside a run that is
+  // measuring (the sizes are the same each run, so its rows line up with the new run's).
+  let finished = null;
+  let previous = null;
+  let running = false;
   function showSweep() {
     // NaN marks a search not timed at that size: a gap in the plot.
     const cols = columns(scene.sweepSamples(), 9).map((c, k) => (k === 0 ? c : c.map((v) => (Number.isFinite(v) && v > 0 ? v : null))));
-    plot.setData(cols);
-    showNote(status, [scene.sweepNote(), remeasuring
-      ? '(The last run\'s curves are cleared: this run\'s points are drawn as each size is measured.)' : ''].filter(Boolean).join(' '));
+    const x = previous?.[0].length > cols[0].length ? previous[0] : cols[0];
+    const pad = (c) => x.map((_, i) => c?.[i] ?? null);
+    plot.setSeriesLabel(8, previous ? 'previous run (medians)' : '');
+    plot.setData([x, ...cols.slice(1).map(pad), pad(previous?.[1]), pad(previous?.[4])]);
+    showNote(status, [scene.sweepNote(), previous
+      ? '(The last run\'s medians stay, pale grey and dashed, until this run has timed every size.)' : ''].filter(Boolean).join(' '));
+    return cols;
   }
-  // A run started again by the button, until it ends: the plot starts empty.
-  let remeasuring = false;
-  let runs = 0;
   function startSweep() {
-    remeasuring = runs++ > 0;
+    previous = finished;
+    running = true;
     scene.startSweep();
     showSweep();
   }
   function sweepStep() {
     if (timeSweepStep(scene, 256)) showSweep();
-    else if (remeasuring) {
-      remeasuring = false;
-      showSweep();
+    else if (running) {
+      running = false;
+      previous = null;
+      finished = showSweep();
     }
   }
   startSweep();

@@ -259,8 +259,13 @@ if (drapeViewer) {
     if (key !== plotted) {
       plotted = key;
       const cloth = `${p.resolution} × ${p.resolution} ${p.method}`;
-      // A new cloth: the one before becomes the previous run, once it has run past its start.
-      if (shownRun && shownRun.cloth !== cloth && shownRun.largest.length > 1) previous = shownRun;
+      // A new cloth: the one before becomes the previous run if it ran a second or more. A
+      // shorter run (a cloth that exploded at once, or one changed before it landed) would be a
+      // stub along the axis under this run's start, named in the legend but not to be seen.
+      if (shownRun && shownRun.cloth !== cloth) {
+        const ran = shownRun.time.filter((_, i) => Number.isFinite(shownRun.largest[i])).at(-1) ?? 0;
+        previous = ran >= 1 ? shownRun : null;
+      }
       const [time, , largest] = columns(scene.samples(), 3);
       shownRun = { cloth, time, largest, held: scene.explodedAt(0) === undefined };
       const x = [...(previous?.time.length > time.length ? previous.time : time)];

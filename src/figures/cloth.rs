@@ -860,10 +860,12 @@ impl ClothFigure {
             }
         }
         let rows_per_band = |rows: usize| (rows / 5).max(1);
-        // From a cloth's name label down to the label under it, metres.
+        // From a cloth's name label to the label under it, metres. The flag's is centred
+        // under the flag, half way from its pole to the next (2.3 m apart): the text is wider
+        // than the flag, and starting at the flag's middle it would run across the next pole.
         let below = match self.preset {
-            Preset::Flag => 1.6,
-            Preset::Drape => 0.2,
+            Preset::Flag => Vec3::new(0.4, -1.6, 0.0),
+            Preset::Drape => Vec3::new(0.0, -0.2, 0.0),
         };
         let view = self.view_proj();
         for (k, sim) in self.sims.iter_mut().enumerate() {
@@ -922,19 +924,21 @@ impl ClothFigure {
                 // long label above each flag would run into the other flag's.
                 Some(t) => {
                     frame.label(sim.label, name, palette::RED);
-                    frame.label(
-                        sim.label - Vec3::new(0.0, below, 0.0),
-                        format!(
-                            "{} at {} s",
-                            if sim.torn {
-                                "torn by the drag"
-                            } else {
-                                "exploded"
-                            },
-                            format_number(t)
-                        ),
-                        palette::RED,
+                    let said = format!(
+                        "{} at {} s",
+                        if sim.torn {
+                            "torn by the drag"
+                        } else {
+                            "exploded"
+                        },
+                        format_number(t)
                     );
+                    let at = sim.label + below;
+                    if self.preset == Preset::Flag {
+                        frame.label_off_dot(at, 0.0, Vec2::ZERO, said, palette::RED, 0);
+                    } else {
+                        frame.label(at, said, palette::RED);
+                    }
                 }
                 // The drape's name just above the cloth's topmost point on screen (its highest
                 // without a view), wherever the cloth has fallen to.

@@ -848,8 +848,10 @@ impl DamBreakFigure {
                 frame.keep_box_in_view(offset, offset + Vec3::new(size.x, size.y, 0.0));
             },
         );
-        // More than 60° from face-on (an orbit to the side or over the top), the slabs are seen
-        // nearly edge-on: the inset shows them from the front.
+        // The tanks are slabs in one plane: an orbit to the side stops at DAM_MAX_YAW_RAD, short
+        // of edge-on. More than 60° from face-on (from above or below), the inset shows them
+        // from the front.
+        frame.max_yaw_rad = Some(DAM_MAX_YAW_RAD);
         if self.face_on < 0.5 {
             let half = Vec3::new(size.x + 0.1, 0.0, 0.05);
             frame.inset(
@@ -892,6 +894,10 @@ pub const SPLASH_DURATION_SEC: f32 = 3.0;
 /// The most steps one call of [`SplashFigure::advance_to`] takes: a frame that cannot catch up
 /// leaves the rest to the next frames (the fluid falls behind the timeline) instead of holding
 /// the page. With many particles fewer: [`SPLASH_STEP_BUDGET`] particle-steps a call, at least
+/// The farthest the dam break's camera turns from the front, radians (40°): the tanks keep
+/// three quarters of their width on screen.
+pub const DAM_MAX_YAW_RAD: f32 = 0.7;
+
 /// one step; with all pairs, one step.
 pub const SPLASH_STEPS_PER_CALL: usize = 8;
 pub const SPLASH_STEP_BUDGET: usize = 12_000;

@@ -21,7 +21,7 @@ use crate::exercises::run;
 use crate::particles::sprites::{sort_back_to_front, SMOKE_ATLAS};
 use crate::particles::{
     floor_time_of_impact, free_fall, free_fall_errors, Emitter, FreeFallError, Integrator,
-    ParticleSystem, Plane, Sphere, SquashBall, Surfaces, VelocityDist,
+    ParticleSystem, Plane, PositionDist, Sphere, SquashBall, Surfaces, VelocityDist,
 };
 use crate::texture::{SpriteInstance, TextureId};
 use crate::Valid;
@@ -122,6 +122,10 @@ pub const MAX_COUNT_SAMPLES: usize = (MAX_SIM_TIME / SIM_DT) as usize + 1;
 /// 0.35 of that), so a square 2.6 times the disc shows a puff about the disc's size, growing as
 /// it ages (at 1.8 the puffs are specks).
 pub const SPRITE_SCALE: f32 = 2.6;
+
+/// A fountain particle this high (metres) is above the top of the emitter figure's view at
+/// the page's camera on either canvas: the note says when the fountain rises past it.
+pub const FOUNTAIN_VIEW_TOP_M: f32 = 4.0;
 
 /// Steps between two automatic explosions (2.5 s).
 const BURST_EVERY: usize = 150;
@@ -373,12 +377,52 @@ impl EmitterFigure {
         }
     }
 
-    /// The notes' last sentences: how many presses, and why the latest did nothing, if it did.
-    fn presses_note(&self) -> String {
-        let mut note = match self.bursts.len() {
-            0 => String::new(),
-            b => format!(" Explosions set off by hand: {b}."),
+    /// The highest a fountain particle can rise before it dies, metres above the floor: the
+    /// steepest direction of its cone at its top speed, for up to 1.2 × the lifetime `l`.
+    /// ```text
+    /// h = y₀ + v_y t − g t²/2,   t = min(v_y / g, 1.2 l)
+    /// ```
+    pub fn fountain_top_m(&self) -> f32 {
+        let e = &self.emitters[0];
+        let (
+            PositionDist::Ball(o, r),
+            VelocityDist::Cone {
+                axis,
+                half_angle_rad,
+                speed_max,
+                ..
+            },
+        ) = (e.position, e.velocity)
+        else {
+            return 0.0;
         };
+        let vy = speed_max * (axis.y.acos() - half_angle_rad).max(0.0).cos();
+        let g = -self.surfaces.gravity.y;
+        let life = 1.2 * self.lifetime_sec();
+        let t = if g > 0.0 { (vy / g).min(life) } else { life };
+        o.y + r + vy * t - 0.5 * g * t * t
+    }
+
+    /// The notes' last sentences: a fountain that rises out of the view, how many presses, and
+    /// why the latest did nothing, if it did.
+    fn presses_note(&self) -> String {
+        let top = self.fountain_top_m();
+        let mut note = if self.mode != 1 && top > FOUNTAIN_VIEW_TOP_M {
+            format!(
+                " At g = {} m/s² the fountain's highest particles rise up to {} m before they \
+                 die, out of the top of the view.",
+                format_number(-self.surfaces.gravity.y),
+                format_number(top),
+            )
+        } else {
+            String::new()
+        };
+        if !self.bursts.is_empty() {
+            note.push_str(&format!(
+                " Explosions set off by hand: {}.",
+                self.bursts.len()
+            ));
+        }
         if self.ignored_press == Some(self.time_sec) {
             note.push_str(&if self.bursts.len() >= MAX_BURSTS {
                 format!(
@@ -1889,9 +1933,17 @@ impl SquashFigure {
         let m = Mat4::from_translation(c) * Mat4::from_mat3(self.squash.shape_matrix());
         frame.mesh(MeshId::SPHERE, m, palette::ORANGE);
         // Shadows on the floor: each ball's height, and the moment it lands, from one view.
+        // A dashed line drops from each ball to the floor: the shadows fade out above
+        // `Frame::shadow_reach` (1.5 m), and the balls start higher.
         let r = self.plain.radius;
-        frame.contact_shadow(p - Vec3::Y * r, r);
-        frame.contact_shadow(Vec3::new(c.x, (c.y - r).max(0.0), c.z), r);
+        for bottom in [p - Vec3::Y * r, Vec3::new(c.x, (c.y - r).max(0.0), c.z)] {
+            frame.contact_shadow(bottom, r);
+            frame.stroke(
+                &[bottom, bottom * Vec3::new(1.0, 0.0, 1.0)],
+                palette::GREY,
+                crate::draw::StrokeStyle::dashed(1.5, 0.08, 0.06),
+            );
+        }
         frame.label(p + Vec3::new(0.0, 0.45, 0.0), "rigid", palette::DARK);
         frame.label(
             c + Vec3::new(0.0, 0.45, 0.0),

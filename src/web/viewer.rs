@@ -202,6 +202,7 @@ impl Viewer {
         self.declares_view = !frame.keep_in_view.is_empty();
         self.flat = frame.flat;
         self.camera.limit_pitch(frame.max_pitch_rad);
+        self.camera.limit_yaw(frame.max_yaw_rad);
         if self.fitting && self.declares_view {
             let points: Vec<glam::Vec3> = frame.fit_points();
             let size = glam::Vec2::new(w, h);

@@ -298,8 +298,15 @@ test('lesson 12: the step-time sweep ends on log-log axes with a note of the slo
     await page.locator('#flock-measure').click();
     await frames(page, 2);
     assert.match(await sweep.textContent(), /^Measuring one step at N = /);
-    // The plot starts empty again, and the note says why the last run's curves are gone.
-    assert.match(await sweep.textContent(), /The last run's curves are cleared: this run's points are drawn as each size is measured\./);
+    // The last run's medians stay on the plot, named in the legend, up to the largest size it
+    // timed, while the new run measures from the smallest; the note says so.
+    assert.match(await sweep.textContent(), /The last run's medians stay, pale grey and dashed, until this run has timed every size\./);
+    const legend = () => page.evaluate(() => [...document.querySelectorAll('#flock-plot .u-legend .u-series')]
+      .filter((row) => row.style.display !== 'none').map((row) => row.textContent.trim()));
+    assert.ok((await legend()).includes('previous run (medians)'), `${await legend()}`);
+    const xLast = Number(await page.locator('#flock-plot').getAttribute('data-x-last'));
+    assert.ok(xLast >= largest, `the plot's curves end at ${xLast}, the last run reached ${largest}`);
+    await page.locator('#fig-timing').screenshot({ path: 'tests/screenshots/12-boids-timing-remeasuring-webgl2.png' });
     // Figure 2's step time belongs to the count it was measured at: paused, a new count asks to
     // play instead of showing the old count's time; played, it is measured.
     const play = page.locator('#flock-timeline .play');
@@ -309,6 +316,13 @@ test('lesson 12: the step-time sweep ends on log-log axes with a note of the slo
     await timing(/\(grid search, 600 boids\): play the flock to measure it/);
     await play.click();
     await timing(/^Measured step time \(grid search, 600 boids\): \d+\.\d+ ms per step/);
+    // The new run, once done, replaces the last one: its entry leaves the legend (the frame
+    // after the last timing, when the sweep has nothing left to time).
+    await page.waitForFunction(() => {
+      const text = document.getElementById('flock-sweep').textContent;
+      return text.startsWith('Measured in this run') && !text.includes('medians stay');
+    }, null, { timeout: 60_000 });
+    assert.ok(!(await legend()).some((name) => /previous/.test(name)), `${await legend()}`);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

@@ -153,6 +153,7 @@ fn enters(a: Vec2, b: Vec2, rect: Rect) -> bool {
 fn page_camera(view: [f32; 6], frame: &Frame, size: Vec2) -> OrbitCamera {
     let mut camera = OrbitCamera::from_view(view);
     camera.limit_pitch(frame.max_pitch_rad);
+    camera.limit_yaw(frame.max_yaw_rad);
     if !frame.keep_in_view.is_empty() {
         let points = frame.fit_points();
         let beside = frame
