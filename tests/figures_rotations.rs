@@ -507,6 +507,31 @@ fn rodrigues_draws_labelled_terms_that_add_up_to_the_rotated_vector() {
     }
 }
 
+/// v cos θ runs along v from the origin: v's arrow is drawn after it (over it), so that v shows
+/// whole and not only past the term's head.
+#[test]
+fn rodrigues_draws_v_over_its_cos_term() {
+    let mut scene = Rodrigues::new();
+    for s in [0.12, 0.25, 0.5] {
+        let mut frame = Frame::default();
+        scene.draw(&mut frame, s).unwrap();
+        let from_origin = |c: Vec3| -> Vec<usize> {
+            (0..frame.strokes.len())
+                .filter(|&i| {
+                    let st = &frame.strokes[i];
+                    st.color[..3] == c.to_array() && Vec3::from(st.a).length() < 1e-6
+                })
+                .collect()
+        };
+        let (v, cos) = (from_origin(rc::V), from_origin(rc::COS_PART));
+        assert!(!v.is_empty() && !cos.is_empty(), "s {s}");
+        assert!(
+            v.iter().min() > cos.iter().max(),
+            "s {s}: v's shaft {v:?} is drawn before v cos θ's {cos:?}"
+        );
+    }
+}
+
 #[test]
 fn rodrigues_feedback_compares_and_checks_validity() {
     let mut scene = Rodrigues::new();

@@ -347,7 +347,16 @@ impl RigidMotion {
             frame.marker(m.transform_point(self.pivot), crate::draw::DOT_PX, color);
             // Each moving plane is named: the planes travel close together, and the blend's and
             // the screw's meet at the keys and half-way.
-            planes.push((p, METHOD_NAMES[method as usize].to_string(), color, below));
+            // With all three shown, each name leaves the clump its own way (lerp + slerp above,
+            // the blend to the right, the screw to the left), so that the three do not stack
+            // under it; the page's leader runs from each name to its own plane's dot.
+            let toward = match (self.solo, method) {
+                (Some(_), _) => below,
+                (None, Method::LerpSlerp) => -below,
+                (None, Method::DualQuatNlerp) => glam::Vec2::X,
+                (None, Method::Screw) => -glam::Vec2::X,
+            };
+            planes.push((p, METHOD_NAMES[method as usize].to_string(), color, toward));
         }
         let mut notes = Vec::new();
         // The thirds' names are placed after the keys', then the axis's, and the moving planes'

@@ -1148,9 +1148,10 @@ impl Rodrigues {
     /// line, dot or label already placed on the last frame's view (the middle itself, above and
     /// right, without one). Places beside its tip go across the arrow on the canvas, on the
     /// side away from `away` (the next term's tip) first, then across and back towards its
-    /// tail, then round the tip, 0 to 40 px out. With `tip_first`, the arrow runs along v
-    /// (v cos θ), so that a place beside its middle is beside v too: the places at its tip come
-    /// first, then those beside its middle, nearer either end, and further out (12 to 60 px).
+    /// tail, then round the tip, 0 to 40 px out. With `tip_first` (v cos θ, whose shaft runs
+    /// along v, and the sin term, whose short shaft lies between v and v′), a place beside the
+    /// middle would read as another arrow's: the places at its tip come first, then those beside
+    /// its middle, nearer either end, and further out (12 to 60 px).
     /// Without, the places beside the shaft up to 12 px out come first, then those at the tip
     /// up to 8 px out, then the shaft's further out, then the tip's: a crowded shaft keeps its
     /// name at its tip rather than 60 px away. No place holds one of `box_points` (the box turned by q).
@@ -1258,12 +1259,11 @@ impl Rodrigues {
         let (n, v) = (self.axis.axis, self.v);
         let phi = s * self.axis.angle_rad;
         frame.grid(8, 0.5);
-        // The axis n, both ways through the origin, and v. The axis's line is twice as wide as
-        // the arrows and drawn first: with v along the axis, v, v′ and the terms lie on it, and
-        // its purple still shows either side of them.
+        // The axis n, both ways through the origin. Its line is twice as wide as the arrows and
+        // drawn first: with v along the axis, v, v′ and the terms lie on it, and its purple
+        // still shows either side of them.
         frame.wide_line(-n * 2.0, n * 2.0, AXIS, 2.0 * crate::draw::ARROW_PX);
         frame.arrow(Vec3::ZERO, n * 2.0, AXIS, 0.15);
-        frame.arrow(Vec3::ZERO, v, V, 0.12);
         // The circle the tip sweeps, about its centre n (n·v).
         let centre = n * n.dot(v);
         self.arc.clear();
@@ -1281,7 +1281,10 @@ impl Rodrigues {
         let sin_part = n.cross(v) * phi.sin();
         let axial_part = n * n.dot(v) * (1.0 - phi.cos());
         let (p1, p2) = (cos_part, cos_part + sin_part);
+        // v cos θ lies along v: v is drawn over it, so that v shows whole and the term's orange
+        // head marks where the term ends on it.
         frame.arrow(Vec3::ZERO, p1, COS_PART, 0.1);
+        frame.arrow(Vec3::ZERO, v, V, 0.12);
         // A term's label only when the term is long enough to carry it (labels of short terms
         // all land on the same spot near the tip of v′).
         const LABELLED: f32 = 0.25;
@@ -1292,7 +1295,8 @@ impl Rodrigues {
         frame.arrow(p1, p2, SIN_PART, 0.1);
         let p3 = p2 + axial_part;
         if sin_part.length() > LABELLED {
-            terms.push((p1, p2, "(n × v) sin θ", SIN_PART, (p3, false)));
+            // At its tip first: beside its short shaft the name reads as v′'s or v cos θ's.
+            terms.push((p1, p2, "(n × v) sin θ", SIN_PART, (p3, true)));
         }
         frame.arrow(p2, p3, AXIAL_PART, 0.1);
         if axial_part.length() > LABELLED {
@@ -1388,7 +1392,7 @@ impl Rodrigues {
         // keeps off the circle too. v cos θ's name (the first term) keeps off it.
         let mut set_aside = Vec::new();
         for (from, to, text, color, away) in terms {
-            if !away.1 && set_aside.is_empty() {
+            if text != "v cos θ" && set_aside.is_empty() {
                 set_aside = frame.strokes.drain(circle.clone()).collect();
             }
             self.label_beside_arrow(frame, (from, to), text, color, away, &box_points);

@@ -1196,15 +1196,47 @@ impl SkeletonFigure {
             &name,
             palette::ORANGE,
             0,
-            8,
+            12,
             8.0,
         );
-        frame.first_clear_label_by(view, 2.0, std::iter::once(first).chain(around), |_| true);
+        // Points of the body boxes on the canvas (a 7 × 7 × 7 grid through each): the name keeps
+        // off them, where it would read as a box's; the bones and balls add to them for the
+        // world's letters below.
+        let mut body_px = Vec::new();
+        if let (Some((view_proj, size)), true) = (view, self.show_boxes) {
+            for (shape, m) in self.shapes.iter().zip(&self.model) {
+                let model = Mat4::from(*m)
+                    * Mat4::from_translation(shape.center)
+                    * Mat4::from_scale(shape.half_extents);
+                body_px.extend((0..343).filter_map(|i| {
+                    let c = |k: i32| (k % 7) as f32 / 3.0 - 1.0;
+                    let q = model.transform_point3(Vec3::new(c(i), c(i / 7), c(i / 49)));
+                    project_to_canvas(view_proj, size, q)
+                }));
+            }
+        }
+        frame.first_clear_label_by(
+            view,
+            2.0,
+            std::iter::once(first).chain(around),
+            super::skinning::off_points(&body_px, 2.0),
+        );
         // The letters of the joint's axes and of the world's, each beside its tip clear of the
-        // bones, paths and names: the world's y runs up beside the standing leg.
-        letter_axes(frame, selected, 0.18, view);
+        // bones, paths and names. The world's stand a few pixels further off the body too: its
+        // y runs up between the legs, and a letter beside a leg reads as the leg's.
+        letter_axes(frame, selected, 0.18, view, (&[], 4));
         if self.compare_clip.is_none() && self.blend_clip.is_none() {
-            letter_axes(frame, Mat4::IDENTITY, 0.3, view);
+            if let Some((view_proj, size)) = view {
+                for (i, &parent) in parents.iter().enumerate() {
+                    let b: Vec3 = self.model[i].translation.into();
+                    let a: Vec3 = self.model[parent.max(0) as usize].translation.into();
+                    // Every 2 px or so along the bone at the page's zoom.
+                    body_px.extend((0..=32).filter_map(|k| {
+                        project_to_canvas(view_proj, size, a.lerp(b, k as f32 / 32.0))
+                    }));
+                }
+            }
+            letter_axes(frame, Mat4::IDENTITY, 0.3, view, (&body_px, 12));
         }
         frame.keep_box_in_view(self.bounds.0, self.bounds.1);
         if self.compare_clip.is_some() {
@@ -1422,8 +1454,16 @@ fn draw_path(
 
 /// The letters x, y and z of the axes that `m` places, `length` long: each at the first place
 /// round its tip, away from the axes' origin on screen first, that keeps 1 px off the dots and
-/// lines and clear of the labels on the last frame's view (`view`).
-fn letter_axes(frame: &mut Frame, m: Mat4, length: f32, view: Option<(Mat4, Vec2)>) {
+/// lines, clear of the labels and 6 px off the points `body` (canvas pixels) on the last
+/// frame's view (`view`), up to `steps` places of 6 px out (past 20 px, the page draws a leader
+/// from the tip).
+fn letter_axes(
+    frame: &mut Frame,
+    m: Mat4,
+    length: f32,
+    view: Option<(Mat4, Vec2)>,
+    (body, steps): (&[Vec2], usize),
+) {
     let o = m.transform_point3(Vec3::ZERO);
     for (axis, color, name) in [
         (Vec3::X, palette::X_AXIS, "x"),
@@ -1435,8 +1475,9 @@ fn letter_axes(frame: &mut Frame, m: Mat4, length: f32, view: Option<(Mat4, Vec2
         let toward = on_screen(tip)
             .zip(on_screen(o))
             .map_or(Vec2::ZERO, |(t, o)| t - o);
-        let candidates = crate::draw::Label::around_dot(tip, 6.0, toward, name, color, 0, 4, 6.0);
-        frame.first_clear_label_by(view, 1.0, candidates, |_| true);
+        let candidates =
+            crate::draw::Label::around_dot(tip, 6.0, toward, name, color, 0, steps, 6.0);
+        frame.first_clear_label_by(view, 1.0, candidates, super::skinning::off_points(body, 6.0));
     }
 }
 

@@ -245,56 +245,44 @@ impl SingleShape {
         // or name (on the last frame's view).
         let centre = m.w_axis.truncate();
         let p = (m * transform::point(POINT)).truncate();
-        frame.marker(p, 11.0, palette::PINK);
+        // Over the box: the corner is on it, and half the dot would sink into the solid box.
+        frame.marker_on_top(p, 11.0, palette::PINK);
         let v = (m * transform::direction(DIRECTION)).truncate();
         frame.arrow(Vec3::ZERO, v, palette::PINK, 0.1);
         let view = view_of(self.view);
         let ghost_m = self.matrix_at(ghost, stage);
-        // The boxes and a small cube round each tip of the solid box's axes: a name there
-        // would read as the axis's.
+        // The boxes and a small cube round each tip of the solid box's axes and of the world's:
+        // a name there would read as the axis's.
         let mut models = [m, ghost_m]
             .map(|b| b * Mat4::from_scale(BOX_HALF))
             .to_vec();
-        for axis in [Vec3::X, Vec3::Y, Vec3::Z] {
-            let tip = m.transform_point3(axis * AXIS_M);
-            models.push(Mat4::from_translation(tip) * Mat4::from_scale(Vec3::splat(0.1)));
+        for (tip, half) in [Vec3::X, Vec3::Y, Vec3::Z]
+            .map(|axis| (m.transform_point3(axis * AXIS_M), 0.1))
+            .into_iter()
+            .chain([Vec3::X, Vec3::Y, Vec3::Z].map(|axis| (axis, 0.15)))
+        {
+            models.push(Mat4::from_translation(tip) * Mat4::from_scale(Vec3::splat(half)));
         }
         let boxes = boxes_px(&models, view);
-        // The world axes' letters beside their tips, off p's dot and the boxes where they can
-        // be. They rank with the orders' names, which then search round them: at the start
-        // R·T's box sits under the y axis's tip.
+        // Each order's name first, at the end of a thin leader from its box's highest corner,
+        // so that it reads as the box's name and not as the name of an axis that ends near it.
+        for order in [shown, ghost] {
+            let placed = self.matrix_at(order, stage);
+            let corner = [-1.0f32, 1.0]
+                .into_iter()
+                .flat_map(|x| [-1.0f32, 1.0].map(|y| (x, y)))
+                .flat_map(|(x, y)| [-1.0f32, 1.0].map(|z| Vec3::new(x, y, z)))
+                .map(|c| placed.transform_point3(c * BOX_HALF))
+                .fold(Vec3::splat(f32::MIN), |a, b| if b.y > a.y { b } else { a });
+            let from = (corner, placed.w_axis.truncate());
+            name_on_leader(frame, view, from, order.name(), order.color(), &boxes);
+        }
+        // The world axes' letters beside their tips, off p's dot, the boxes and the names'
+        // leaders where they can be.
         for l in letters {
             let candidates =
                 Label::around_dot(l.anchor, 0.0, Vec2::ZERO, &l.text, l.color, 3, 3, 6.0);
-            frame.first_clear_label_by(view, 2.0, candidates, off_points(&boxes, 2.0));
-        }
-        // Each order's name straight above its box's centre, 0.15 m over the box's highest
-        // corner (Σ hᵢ·|R_yi| above the centre) and, on the solid box, over the highest tip of
-        // its axes, however the box has turned; where an axis, path or dot runs through it
-        // there, or an axis ends just under it, the first place round that point clear of them,
-        // of the boxes and of the axes' tips, upwards first.
-        for order in [shown, ghost] {
-            let placed = self.matrix_at(order, stage);
-            let up = Mat3::from_mat4(placed).row(1);
-            let mut rise = (up.abs() * BOX_HALF).element_sum();
-            if order == shown {
-                rise = rise.max(AXIS_M * up.max_element());
-            }
-            let top = placed.w_axis.truncate() + Vec3::Y * (rise + 0.15);
-            let (name, color) = (order.name(), order.color());
-            let mut candidates = Label::around_dot(top, 0.0, -Vec2::Y, name, color, 3, 12, 8.0);
-            let above = Label {
-                anchor: top,
-                text: name.into(),
-                color,
-                left: false,
-                priority: 3,
-                offset_px: Vec2::ZERO,
-                large: false,
-            };
-            candidates.insert(0, above);
-            // 8 px off the boxes' sampled points, a quarter of a box apart on the canvas.
-            frame.first_clear_label_by(view, 2.0, candidates, off_points(&boxes, 8.0));
+            frame.first_clear_label_by(view, 4.0, candidates, off_points(&boxes, 2.0));
         }
         // Without a view: p's name rightwards, v's leftwards from past the tip, off the arrow.
         for (at, from, text, otherwise) in [
@@ -346,6 +334,76 @@ impl SingleShape {
             super::format_number(self.translation.distance(swung))
         )
     }
+}
+
+/// Names a box of Figure 1 at the end of a thin leader (1 px, in the name's colour) from `corner`
+/// (a point on the box) out of the box, upwards and away from its `centre` first, 0.2 to 0.8 m
+/// long: the first place whose name covers no dot, line or name on `view`, keeps 8 px off the
+/// `boxes`' points (canvas pixels), and whose leader crosses no name. The name sits just past
+/// the leader's end, on its side of it on the canvas (above it without a view).
+fn name_on_leader(
+    frame: &mut Frame,
+    view: Option<(Mat4, Vec2)>,
+    (corner, centre): (Vec3, Vec3),
+    text: &str,
+    color: Vec3,
+    boxes: &[Vec2],
+) {
+    let out = ((corner - centre) * Vec3::new(1.0, 0.0, 1.0))
+        .try_normalize()
+        .unwrap_or(Vec3::X);
+    let across = Vec3::Y.cross(out);
+    let px = |p: Vec3| view.and_then(|(m, size)| project_to_canvas(m, size, p));
+    let placed: Vec<_> = view.map_or(Vec::new(), |(m, size)| {
+        frame
+            .labels
+            .iter()
+            .filter_map(|l| l.first_place(m, size))
+            .collect()
+    });
+    // Up and out, straight up, then up and out turning round towards the back, then level,
+    // then down.
+    let mut directions = Vec::new();
+    for rise in [1.0, 0.4, 0.0, -0.6] {
+        for k in [0.0f32, 1.0, -1.0, 2.0, -2.0, 3.0, -3.0, 4.0] {
+            let (sin, cos) = (k * std::f32::consts::FRAC_PI_4).sin_cos();
+            directions.push((out * cos + across * sin + Vec3::Y * rise).normalize());
+        }
+    }
+    directions.insert(1, Vec3::Y);
+    let mut candidates = Vec::new();
+    for length in [0.2, 0.3, 0.45, 0.6, 0.8] {
+        for &d in &directions {
+            let anchor = corner + d * length;
+            let (a, b) = (px(corner), px(anchor));
+            // The nearest of the eight sides of a dot (22.5° either side of each).
+            let dir = a
+                .zip(b)
+                .map_or(-Vec2::Y, |(a, b)| (b - a).normalize_or_zero());
+            let s = |x: f32| if x.abs() > 0.38 { x.signum() } else { 0.0 };
+            let side = Vec2::new(s(dir.x), s(dir.y));
+            let crosses = a.zip(b).is_some_and(|(a, b)| {
+                (placed.iter())
+                    .any(|r| crate::draw::segment_enters(a, b, r.min - 2.0, r.max() + 2.0))
+            });
+            if side != Vec2::ZERO && !crosses {
+                candidates.push(Label::off_dot(anchor, 0.0, side, text.into(), color, 3));
+            }
+        }
+    }
+    if candidates.is_empty() {
+        candidates.push(Label::off_dot(
+            corner + Vec3::Y * 0.2,
+            0.0,
+            -Vec2::Y,
+            text.into(),
+            color,
+            3,
+        ));
+    }
+    frame.first_clear_label_by(view, 2.0, candidates, off_points(boxes, 8.0));
+    let end = frame.labels.last().map_or(corner, |l| l.anchor);
+    frame.wide_line(corner, end, color, 1.0);
 }
 
 /// The 12 edges of the cube `[-1, 1]³` placed by `model`.

@@ -405,3 +405,65 @@ fn lesson_01_box_axes_show_over_the_box_and_no_name_sits_at_their_tips() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_01_order_names_hang_on_leaders_from_their_boxes_away_from_arrowheads() {
+    // Figure 1 at the page's camera, both canvases, over the steps, at the page's start, at
+    // the page test's settings (every slider at −1.21 m or −109°, R·T solid) and with the box
+    // turned half round about z: each order's name ends a thin leader of its own colour that
+    // starts on its own box, and its box as the page lays it out keeps 12 px from every
+    // arrowhead (the world axes' and the solid box's), where it would read as an axis's name.
+    use glam::Mat4;
+    use inbetween::figures::transforms::{Order, SingleShape, BOX_HALF};
+    let mut failures = Vec::new();
+    for (t, angles, order) in [
+        (Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, 30.0), Order::RotateFirst),
+        (Vec3::splat(-1.21), Vec3::splat(-109.0), Order::TranslateFirst),
+        (Vec3::new(1.0, 0.5, 0.0), Vec3::new(0.0, 0.0, 180.0), Order::RotateFirst),
+    ] {
+        let mut scene = SingleShape::new();
+        scene.set_transform(t, angles).unwrap();
+        scene.set_order(order);
+        for stage in [0.0, 0.5, 1.0, 1.5, 2.0] {
+            for size in CANVASES {
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    [0.5, 0.3, 0.0, 5.0, 0.6, 0.45],
+                    size,
+                    |fig, out| {
+                        fig.draw(out, stage).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("01 leaders, t {t}, angles {angles}, stage {stage} on {size}");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let solid = scene.matrix_at(order, stage);
+                let tips: Vec<Vec2> = [Vec3::X, Vec3::Y, Vec3::Z]
+                    .into_iter()
+                    .chain([Vec3::X, Vec3::Y, Vec3::Z].map(|a| solid.transform_point3(a * 0.6)))
+                    .filter_map(|p| project_to_canvas(view_proj, size, p))
+                    .collect();
+                let boxes = label_boxes(&frame, &camera, size);
+                for named in [Order::RotateFirst, Order::TranslateFirst] {
+                    let placed: Mat4 = scene.matrix_at(named, stage);
+                    let label = frame.labels.iter().find(|l| l.text == named.name()).unwrap();
+                    failures.extend(failure_of(|| {
+                        let leader = frame.strokes.iter().find(|s| {
+                            let local = placed.inverse().transform_point3(Vec3::from(s.a));
+                            s.color[..3] == named.color().to_array()
+                                && Vec3::from(s.b).distance(label.anchor) < 1e-4
+                                && local.abs().cmple(BOX_HALF + 1e-3).all()
+                        });
+                        assert!(leader.is_some(), "{name}: {} has no leader from its box", named.name());
+                        let (_, rect) = boxes.iter().find(|(t, _)| t == named.name()).unwrap();
+                        for tip in &tips {
+                            let gap = rect.nearest(*tip).distance(*tip);
+                            assert!(gap >= 12.0, "{name}: {} {gap} px from an arrowhead at {tip}", named.name());
+                        }
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

@@ -597,3 +597,52 @@ fn lesson_03_rodrigues_terms_keep_off_the_lines_when_orbited() {
     );
 }
 
+
+#[test]
+fn lesson_03_rodrigues_sin_term_name_sits_at_its_own_tip() {
+    // Figure 4 at its page camera, both canvases, through the sweep, at the page's settings and
+    // two others: the term (n × v) sin θ is short and lies between v cos θ, v and v′, so a name
+    // beside its shaft, or further off, reads as theirs. Its name is shown where the figure put
+    // it, within 20 px of the term's tip (its teal head). As on the page, the figure places it
+    // for the view of the frame before.
+    let mut failures = Vec::new();
+    let settings = [
+        (Vec3::new(0.3, 1.0, 0.2), 120.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), 60.0, Vec3::new(1.2, 0.4, 0.3)),
+        (Vec3::new(0.3, 1.0, 0.2), 90.0, Vec3::new(1.2, 0.4, 0.3)),
+    ];
+    let view = [0.0, 0.3, 0.0, 4.2, 0.5, 0.35];
+    for (n, angle, v) in settings {
+        let n = n.normalize();
+        for k in 1..=16 {
+            let s = k as f32 / 16.0;
+            let phi = (s * angle).to_radians();
+            let sin_part = n.cross(v) * phi.sin();
+            if sin_part.length() <= 0.25 {
+                continue; // too short to carry a name: the figure leaves it out
+            }
+            let tip = v * phi.cos() + sin_part;
+            for size in CANVASES {
+                let (frame, camera) = rodrigues_drawn(n, angle, v, s, view, size);
+                let name = format!("03 (n × v) sin θ, n {n}, θ {angle}°, v {v}, s {s}");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let at = project_to_canvas(view_proj, size, tip).unwrap();
+                let placed = layout(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    let (_, b, p) = placed
+                        .iter()
+                        .find(|(l, _, _)| l.text == "(n × v) sin θ")
+                        .unwrap();
+                    assert!(p.shown && p.leader_to.is_none(), "{name} on {size}: moved");
+                    let rect = Rect {
+                        min: p.top_left,
+                        size: b.size,
+                    };
+                    let gap = rect.nearest(at).distance(at);
+                    assert!(gap <= 20.0, "{name} on {size}: {gap} px from the term's tip");
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

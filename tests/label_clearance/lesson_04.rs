@@ -377,3 +377,70 @@ fn lesson_04_key_names_keep_off_the_thirds() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_04_method_names_part_at_the_default() {
+    // Figure 1 with all three methods, at its page camera and key B, both canvases, where the page
+    // opens (t = 0.3) and while it plays on (to 0.45): the three aeroplanes travel close together,
+    // so the names must not stack under them as one block. Each name's box, as the page lays it
+    // out, is nearer its own aeroplane's dot than any other aeroplane's (within 2 px, where the
+    // blend's and the screw's dots meet), and the three boxes stand at least 8 px apart (more
+    // than the 6 px of names packed together).
+    use inbetween::figures::rigid::{RigidMotion, METHODS, METHOD_NAMES};
+    let mut failures = Vec::new();
+    for t in [0.3, 0.35, 0.4, 0.45] {
+        for size in CANVASES {
+            let mut scene = RigidMotion::new();
+            let (frame, camera) = drawn_for_view(
+                &mut scene,
+                [0.0, 1.0, 0.0, 6.5, 0.35, 0.4],
+                size,
+                |fig, out| {
+                    fig.draw(out, t).unwrap();
+                },
+                |fig, cam, px| fig.set_view(cam, px.x, px.y),
+            );
+            let name = format!("04 method names at t {t} on {size}");
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            let dots: Vec<Vec2> = METHODS
+                .iter()
+                .map(|&(m, _)| {
+                    let p = scene.motion(m, t).transform_point(Vec3::ZERO);
+                    project_to_canvas(view_proj, size, p).unwrap()
+                })
+                .collect();
+            let boxes = label_boxes(&frame, &camera, size);
+            let rects: Vec<Rect> = METHODS
+                .iter()
+                .map(|&(m, _)| {
+                    let text = METHOD_NAMES[m as usize];
+                    boxes.iter().find(|(t, _)| t == text).unwrap().1
+                })
+                .collect();
+            let texts = METHODS.map(|(m, _)| METHOD_NAMES[m as usize]);
+            for (k, rect) in rects.iter().enumerate() {
+                let gap = |d: Vec2| rect.nearest(d).distance(d);
+                for (j, d) in dots.iter().enumerate() {
+                    if j != k && gap(*d) + 2.0 < gap(dots[k]) {
+                        failures.push(format!(
+                            "{name}: {:?} nearer {:?}'s dot ({} px) than its own ({} px)",
+                            METHOD_NAMES[METHODS[k].0 as usize],
+                            METHOD_NAMES[METHODS[j].0 as usize],
+                            gap(*d),
+                            gap(dots[k])
+                        ));
+                    }
+                }
+                for (j, other) in rects.iter().enumerate().skip(k + 1) {
+                    if rect.overlaps(other, 8.0) {
+                        failures.push(format!(
+                            "{name}: {:?} at {} and {:?} at {} within 8 px",
+                            texts[k], rect.min, texts[j], other.min
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
