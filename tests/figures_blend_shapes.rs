@@ -1193,3 +1193,48 @@ fn the_note_says_when_the_view_zooms_out_for_a_large_total() {
     let note = f.draw(&mut Frame::default(), IDS, 1.3).unwrap();
     assert!(!note.contains("zoomed out"), "{note}");
 }
+
+#[test]
+fn side_by_side_the_arrows_hide_once_the_left_head_is_drawn_under_half_its_size() {
+    // Base weight 1 by hand, every target at w, still: the full total is 1 + 4w. The caption's
+    // 3.4: past it the view frames the heads from over twice the start's distance (the left
+    // head at under half its size), and the left head's arrows, drawn in proportion to the
+    // offsets, would cover it, so none is drawn; at 3.3 they are.
+    use inbetween::figures::blend_shapes::{ARROWS_HIDDEN_ABOVE, FRAMED_SCALE};
+    assert!((ARROWS_HIDDEN_ABOVE - 3.4).abs() < 1e-6);
+    let start = FaceFigure::new().view_fit()[3];
+    let drawn = |total: f32| {
+        let mut f = FaceFigure::new();
+        f.set_animate(false);
+        f.set_base_weight(1.0).unwrap();
+        for k in 0..4 {
+            f.set_weight(k, 0.25 * (total - 1.0)).unwrap();
+        }
+        let mut frame = Frame::default();
+        let note = f.draw(&mut frame, IDS, 0.0).unwrap();
+        let cones = frame.meshes.iter().filter(|m| m.mesh == MeshId::CONE).count();
+        (cones, note, f.view_fit()[3] / start)
+    };
+    let (cones, note, zoom) = drawn(3.3);
+    assert!(cones > 10, "{cones} arrows at 3.3");
+    assert!(zoom > 1.0 && zoom < 2.0, "{zoom}");
+    assert!(!note.contains("arrows"), "{note}");
+    for total in [3.5, 7.0] {
+        let (cones, note, zoom) = drawn(total);
+        assert_eq!(cones, 0, "arrows at {total}");
+        assert!(zoom > 2.0, "{total}: {zoom}");
+        assert!(note.contains("too small for its arrows (hidden: they would cover it)"), "{note}");
+    }
+    assert!(FRAMED_SCALE < 3.3);
+    // Shown alone, the differential head is not zoomed out and keeps its arrows.
+    let mut f = FaceFigure::new();
+    f.set_animate(false);
+    f.set_base_weight(1.0).unwrap();
+    for k in 0..4 {
+        f.set_weight(k, 1.5).unwrap();
+    }
+    f.set_show("differential").unwrap();
+    let mut frame = Frame::default();
+    f.draw(&mut frame, IDS, 0.0).unwrap();
+    assert!(frame.meshes.iter().any(|m| m.mesh == MeshId::CONE));
+}

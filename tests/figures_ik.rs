@@ -954,3 +954,38 @@ fn at_the_page_start_the_aim_plot_shows_the_head_follow_and_stop() {
     assert!(follows >= 16 && flat >= 16, "{follows} rows follow, {flat} flat");
     assert!(widest >= 10.0, "the lines part by {widest}° at most");
 }
+
+#[test]
+fn inside_the_cone_a_dashed_line_carries_the_forward_arrow_to_the_target() {
+    // The page sweep's corner target (1.2, 2.6, 1.2) at 6 s: the head looks straight at the
+    // target, well past the arrow's tip. A dashed blue line runs from the tip on to the target,
+    // along the arrow (from the head at (0, 1.6, 0)), so the figure shows the head looking at it.
+    let head = Vec3::new(0.0, 1.6, 0.0);
+    let mut a = AimFigure::new();
+    a.set_target(Vec3::new(1.2, 2.6, 1.2)).unwrap();
+    for t in [0.0, 2.0, 6.0] {
+        let mut frame = Frame::default();
+        let note = a.draw(&mut frame, t).unwrap();
+        assert!(note.starts_with("Looking straight at the target"), "{note}");
+        let target = a.target_at(t);
+        let on = frame
+            .strokes
+            .iter()
+            .filter(|s| s.color[..3] == palette::BLUE.to_array() && s.dash[3] > 0.0)
+            .map(|s| (Vec3::from_slice(&s.a[..3]), Vec3::from_slice(&s.b[..3])))
+            .collect::<Vec<_>>();
+        let (first, last) = (on.first().expect("a dashed blue line").0, on.last().unwrap().1);
+        assert!(last.distance(target) < 1e-4, "{t} s: it ends at {last}, not {target}");
+        let along = (first - head).normalize().dot((target - head).normalize());
+        assert!(along > 0.9999, "{t} s: it starts off the line to the target ({along})");
+        assert!((first - head).length() > 0.75, "{t} s: it starts before the arrow's tip");
+    }
+    // Outside the cone the red dashed line goes from the head, and no blue one.
+    a.set_target(Vec3::new(0.0, 1.6, -1.2)).unwrap();
+    let mut frame = Frame::default();
+    a.draw(&mut frame, 0.0).unwrap();
+    assert!(!frame
+        .strokes
+        .iter()
+        .any(|s| s.color[..3] == palette::BLUE.to_array() && s.dash[3] > 0.0));
+}

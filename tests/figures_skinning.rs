@@ -1165,3 +1165,58 @@ fn the_followed_vertex_shows_both_its_lbs_and_dqs_dots_where_they_meet() {
     assert!(ring > teal, "the teal drawn first");
     assert!(size(teal) - size(ring) >= 4.0, "{} and {}", size(teal), size(ring));
 }
+
+#[test]
+fn the_two_bodies_stand_apart_across_the_view_from_any_orbit() {
+    // Figure 4 side by side, orbited all round (and looking down as after the page test's
+    // drag): on the 650 x 420 canvas the LBS body's vertices lie left of the DQS body's, the
+    // two overlapping by at most a third of the narrower one's width (a run's stride seen
+    // from the side reaches that far), in the whole-body and the legs view, over the run.
+    // Placed along z, seen along z they stand one in front of the other.
+    use inbetween::camera::{project_to_canvas, OrbitCamera};
+    use glam::Vec2;
+    let size = Vec2::new(650.0, 420.0);
+    let mut failures = Vec::new();
+    let mut h = HumanFigure::new();
+    h.set_compare(true);
+    h.set_clip("run").unwrap();
+    for view in ["whole body", "left legs"] {
+        h.set_view(view).unwrap();
+        for yaw_step in 0..12 {
+            let yaw = yaw_step as f32 * std::f32::consts::TAU / 12.0;
+            for pitch in [0.15, 0.6] {
+                let camera = OrbitCamera::from_view([0.0, 0.9, 0.0, 4.5, yaw, pitch]);
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                h.set_canvas_view(camera, size.x, size.y);
+                for k in 0..4 {
+                    let t = h.duration_sec() * k as f32 / 4.0;
+                    h.skin(t).unwrap();
+                    let mut frame = Frame::default();
+                    h.draw_pair(&mut frame, IDS);
+                    // Each body's place: under its title.
+                    let place = |name: &str| {
+                        let a = frame.labels.iter().find(|l| l.text == name).unwrap().anchor;
+                        Vec3::new(a.x, 0.0, a.z)
+                    };
+                    let (p_lbs, p_dqs) = (place("LBS"), place("DQS"));
+                    let range = |mesh: &[Vec3], at: Vec3| {
+                        mesh.iter()
+                            .filter_map(|&p| project_to_canvas(view_proj, size, p + at))
+                            .fold((f32::MAX, f32::MIN), |(a, b), q| (a.min(q.x), b.max(q.x)))
+                    };
+                    let l = range(&h.mesh.positions, p_lbs);
+                    let d = range(&h.mesh_dqs.positions, p_dqs);
+                    let overlap = l.1 - d.0;
+                    let narrower = (l.1 - l.0).min(d.1 - d.0);
+                    if !(l.0 < d.0 && overlap <= narrower / 3.0) {
+                        failures.push(format!(
+                            "{view}, yaw {yaw:.2}, pitch {pitch}, t {t:.2}: LBS {l:?}, DQS {d:?}"
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    let some = failures[..failures.len().min(10)].join("\n");
+    assert!(failures.is_empty(), "{} cases:\n{some}", failures.len());
+}

@@ -363,11 +363,20 @@ impl FaceFigure {
             ));
         }
         let largest = self.framed_scale();
+        // Side by side the view zooms out in proportion to the framed scale: past
+        // ARROWS_HIDDEN_ABOVE the differential head is drawn at under half its size at the
+        // start, and its arrows (in proportion to the offsets, not the head) would cover it.
+        let small = both && largest > ARROWS_HIDDEN_ABOVE;
         if both && largest > FRAMED_SCALE {
             parts.push(format!(
                 "The view is zoomed out to fit the full head at its largest ({} times the base), \
-                 so the differential head is drawn smaller.",
-                fixed3(largest)
+                 so the differential head is drawn smaller{}.",
+                fixed3(largest),
+                if small && self.show_deltas {
+                    ", too small for its arrows (hidden: they would cover it)"
+                } else {
+                    ""
+                }
             ));
         }
         parts.push(format!(
@@ -409,7 +418,7 @@ impl FaceFigure {
                     * Mat4::from_scale(Vec3::splat(0.09));
                 frame.mesh(MeshId::SPHERE, eye, palette::DARK);
             }
-            if differential && self.show_deltas {
+            if differential && self.show_deltas && !small {
                 // Each arrow runs from the vertex on the base head along its offset Σ wₖ dₖ,
                 // drawn FACE_ARROW_SCALE times as long, in the head's frame, lifted 3 cm off the
                 // base surface along its normal, its shaft drawn over the skin (which hides where
@@ -586,6 +595,10 @@ pub const FACE_ARROW_SCALE: f32 = 5.0;
 /// Figure 2's vertices that move less than this (metres) at the current weights carry no arrow:
 /// drawn [`FACE_ARROW_SCALE`] times as long, a shorter offset gives a blue dot a few pixels long.
 pub const FACE_ARROW_MIN: f32 = 0.025;
+/// Side by side, Figure 2 hides the delta arrows once the full head's framed scale passes this
+/// ([`FaceFigure::framed_scale`]): the view then shows the left head at under half its size
+/// at the start ([`FRAMED_SCALE`]).
+pub const ARROWS_HIDDEN_ABOVE: f32 = 2.0 * FRAMED_SCALE;
 /// The length of Figure 2's arrow heads, metres (at most 0.4 of the arrow).
 const FACE_ARROW_HEAD_M: f32 = 0.12;
 

@@ -637,19 +637,24 @@ impl GltfFigure {
             self.dots_px.extend(c.dots.iter().filter_map(px));
         }
         let dots_px = &self.dots_px;
-        // Over a skin the CPU skinned, off the body too (the root lies inside it): off every
-        // skinned triangle on screen. The vertex shader's skin is not known here.
+        // Over a skin, off the body too (the root lies inside it): off every skinned triangle
+        // on screen. The vertex shader's skin is not known here: skinned on the GPU, the
+        // palette's LBS stands for it (DQS parts from it by millimetres in a blend zone).
         self.skin_triangles.clear();
-        if let (true, false, None, Some((view_proj, size)), Ok(skinned)) =
-            (skinning, gpu, &problem, view, &c.skinned)
+        if let (true, None, Some((view_proj, size)), Ok(skinned)) =
+            (skinning, &problem, view, &c.skinned)
         {
             for (m, s) in c.imported.meshes.iter().zip(skinned) {
+                let px = |p| crate::camera::project_to_canvas(view_proj, size, p);
                 self.skin_px.clear();
-                self.skin_px.extend(
-                    s.positions
-                        .iter()
-                        .map(|&p| crate::camera::project_to_canvas(view_proj, size, p)),
-                );
+                if gpu {
+                    let vertices = m.positions.iter().zip(&m.joints).zip(&m.weights);
+                    self.skin_px.extend(
+                        vertices.map(|((&p, j), w)| px(lbs_point(&self.palette, p, j, w))),
+                    );
+                } else {
+                    self.skin_px.extend(s.positions.iter().map(|&p| px(p)));
+                }
                 for t in m.indices.chunks_exact(3) {
                     let corner = |k: usize| self.skin_px.get(t[k] as usize).copied().flatten();
                     if let (Some(a), Some(b), Some(d)) = (corner(0), corner(1), corner(2)) {
@@ -701,16 +706,9 @@ impl GltfFigure {
         if skinning && problem.is_none() {
             let step = c.dot_step;
             let palette = &self.palette;
-            let skin = |p: Vec3, joints: &[u16; 4], weights: &[f32; 4]| {
-                let terms = joints.iter().zip(weights);
-                terms.fold(Vec3::ZERO, |sum, (&j, &w)| {
-                    let k = palette.get(j as usize);
-                    k.map_or(sum, |k| sum + w * k.transform_point3(p))
-                })
-            };
             let skinned = c.imported.meshes.iter().flat_map(|m| {
                 let vertices = m.positions.iter().zip(&m.joints).zip(&m.weights);
-                vertices.map(|((&p, j), w)| skin(p, j, w))
+                vertices.map(|((&p, j), w)| lbs_point(palette, p, j, w))
             });
             frame
                 .keep_in_view
@@ -764,6 +762,14 @@ impl GltfFigure {
 
 /// Whether the label box `rect` (grown by 2 px) and the triangle `[a, b, c]` on the canvas
 /// overlap: an edge of the triangle enters the box, or the box lies inside the triangle.
+/// A bind-pose point skinned by linear blend skinning with `palette` (a joint outside it adds
+/// nothing).
+fn lbs_point(palette: &[Affine3A], p: Vec3, joints: &[u16; 4], weights: &[f32; 4]) -> Vec3 {
+    joints.iter().zip(weights).fold(Vec3::ZERO, |sum, (&j, &w)| {
+        palette.get(j as usize).map_or(sum, |k| sum + w * k.transform_point3(p))
+    })
+}
+
 fn touches_triangle(rect: crate::draw::layout::Rect, [a, b, c]: [Vec2; 3]) -> bool {
     let (lo, hi) = (
         rect.min - Vec2::splat(2.0),

@@ -1554,6 +1554,12 @@ impl AimFigure {
             0.08,
         );
         frame.marker(target, TARGET_PX, palette::RED);
+        // Looking straight at it, a dashed line on from the arrow's tip to a target farther
+        // off, in the arrow's colour: the forward direction runs through the target.
+        let tip = HEAD + s.forward * 0.8;
+        if s.result.reached && (target - HEAD).dot(s.forward) > 0.8 {
+            frame.stroke(&[tip, target], palette::BLUE, StrokeStyle::dashed(GAP_PX, 0.06, 0.04));
+        }
         let to_target = (target - HEAD).normalize_or(Vec3::Z);
         let missed = s.forward.angle_between(to_target);
         let axis = s

@@ -977,8 +977,10 @@ pub enum HumanView {
 const VIEW_SAMPLES: usize = 33;
 const VIEW_MARGIN_M: f32 = 0.03;
 
-/// Where the two bodies stand side by side, along z (seen from the side, +x, both knees show
-/// in profile): LBS at +z (on the left of a view from +x), DQS at −z.
+/// How far each of the two bodies stands from the middle, metres: along the camera's right
+/// (LBS on the left, DQS on the right), so that they stand apart across the view from any
+/// orbit; without a view along z (seen from the side, +x, both knees show in profile): LBS at
+/// +z, DQS at −z.
 pub const HUMAN_OFFSET_Z: f32 = 0.5;
 
 impl Default for HumanFigure {
@@ -1061,11 +1063,12 @@ impl HumanFigure {
         Ok(())
     }
 
-    /// The box the side-by-side figure keeps in view (scene space, both bodies placed): every
-    /// vertex of both bodies (whole body), or of both left legs' thigh and shin parts and of the
-    /// heat map's joint's part (left legs), skinned by LBS and by DQS at [`VIEW_SAMPLES`] times over the clip, widened by
-    /// [`VIEW_MARGIN_M`]. It holds the bodies wherever the clip takes them, so the camera
-    /// stays put while the clip plays.
+    /// The box the side-by-side figure keeps in view round each body (in the body's own
+    /// coordinates, before its place): every vertex of the body (whole body), or of the left
+    /// leg's thigh and shin parts and of the heat map's joint's part (left legs), skinned by LBS
+    /// and by DQS at [`VIEW_SAMPLES`] times over the clip, widened by [`VIEW_MARGIN_M`]. It
+    /// holds either body wherever the clip takes it, so the camera stays put while the clip
+    /// plays.
     pub fn view_box(&mut self) -> Result<(Vec3, Vec3), String> {
         if let Some(b) = self.view_box {
             return Ok(b);
@@ -1097,7 +1100,6 @@ impl HumanFigure {
         let v = m.positions.len();
         let (mut p, mut nn) = (vec![Vec3::ZERO; v], vec![Vec3::ZERO; v]);
         let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
-        let places = Self::pair_models();
         for i in 0..VIEW_SAMPLES {
             let t = clip.duration_sec() * i as f32 / (VIEW_SAMPLES - 1) as f32;
             clip.sample(t, &mut ClipCursor::new(), &mut pose);
@@ -1107,7 +1109,7 @@ impl HumanFigure {
             skinning_palette(&model, c.skeleton.inverse_bind(), &mut k)
                 .map_err(|e| e.to_string())?;
             dual_quat_palette(&k, &mut dq).map_err(|e| e.to_string())?;
-            for (method, place) in places.iter().enumerate() {
+            for method in 0..2 {
                 if method == 0 {
                     skin_lbs(&k, &c.skin, &m.positions, &m.normals, &mut p, &mut nn)
                 } else {
@@ -1115,9 +1117,8 @@ impl HumanFigure {
                 }
                 .map_err(|e| e.to_string())?;
                 for &i in &vertices {
-                    let q = place.transform_point3(p[i]);
-                    lo = lo.min(q);
-                    hi = hi.max(q);
+                    lo = lo.min(p[i]);
+                    hi = hi.max(p[i]);
                 }
             }
         }
@@ -1185,9 +1186,11 @@ impl HumanFigure {
         Ok(out)
     }
 
-    /// The models that place the LBS and the DQS body side by side.
-    fn pair_models() -> [Mat4; 2] {
-        [HUMAN_OFFSET_Z, -HUMAN_OFFSET_Z].map(|z| Mat4::from_translation(Vec3::new(0.0, 0.0, z)))
+    /// The step from the LBS body to the DQS body: [`HUMAN_OFFSET_Z`] twice along the last
+    /// frame's camera's right (its yaw alone), or along −z without a view.
+    fn pair_step(&self) -> Vec3 {
+        let right = self.canvas_view.map_or(Vec3::NEG_Z, |(c, _)| screen_axes(&c).0);
+        2.0 * HUMAN_OFFSET_Z * right
     }
 
     /// Draws the LBS and the DQS body side by side (`meshes`: their GPU ids) after
@@ -1521,7 +1524,8 @@ impl HumanFigure {
         }
     }
 
-    /// Compare mode: the LBS body (`k = 0`) and the DQS body (`k = 1`) side by side along z, each
+    /// Compare mode: the LBS body (`k = 0`) and the DQS body (`k = 1`) side by side across the view
+    /// ([`HumanFigure::pair_step`]), each
     /// drawn by `body(frame, k)` in its own coordinates with its decorations, title and contact
     /// shadow; the camera keeps `view_box` (see [`HumanFigure::view_box`]) in view.
     fn draw_both(
@@ -1537,7 +1541,7 @@ impl HumanFigure {
             _ => 2.0,
         };
         let titles = [("LBS", palette::ORANGE), ("DQS", palette::TEAL)];
-        let step = Vec3::new(0.0, 0.0, -2.0 * HUMAN_OFFSET_Z);
+        let step = self.pair_step();
         let mut failed = Ok(());
         let titles_from = frame.labels.len();
         frame.side_by_side(step, &titles, title_y, |f, k| {
@@ -1547,15 +1551,13 @@ impl HumanFigure {
             self.decorate(f);
             f.contact_shadow(Vec3::ZERO, 0.3);
         });
-        let places = Self::pair_models().map(|m| m.w_axis.truncate());
+        let places = [-0.5 * step, 0.5 * step];
         self.place_labels(frame, &places, titles_from);
-        match view_box {
-            Some((lo, hi)) => frame.keep_box_in_view(lo, hi),
-            // A box that holds both bodies standing (only if skinning the clip failed).
-            None => {
-                let z = HUMAN_OFFSET_Z;
-                frame.keep_box_in_view(Vec3::new(-0.5, 0.0, -z - 0.5), Vec3::new(0.5, 2.0, z + 0.5))
-            }
+        // The box round each body, or one that holds a body standing (only if skinning the
+        // clip failed).
+        let (lo, hi) = view_box.unwrap_or((Vec3::new(-0.5, 0.0, -0.5), Vec3::new(0.5, 2.0, 0.5)));
+        for place in places {
+            frame.keep_box_in_view(place + lo, place + hi);
         }
         failed
     }

@@ -21,12 +21,12 @@ const HUMAN_ORBITS: [[f32; 6]; 2] = [
 fn lesson_09_human_pair_names_keep_off_the_bodies_and_the_skeletons() {
     // Both bodies side by side with the skeleton X-rayed and a heat map's joint named, in both
     // views, through the run and the walk, from both orbits: the titles and the joint's names
-    // cover no vertex of either body (as skinned, on the CPU), no joint dot or bone, and no
-    // other name. As on the page, the joint's names are placed for the view of the frame
-    // before (set_canvas_view).
+    // cover no vertex of either body (as skinned, on the CPU, and placed across the view), no
+    // joint dot or bone, and no other name. As on the page, the joint's names are placed for
+    // the view of the frame before (set_canvas_view).
     use inbetween::draw::MeshId;
     use inbetween::figures::skinning::HumanFigure;
-    let places = [Vec3::new(0.0, 0.0, 0.5), Vec3::new(0.0, 0.0, -0.5)];
+    use inbetween::figures::skinning::{screen_axes, HUMAN_OFFSET_Z};
     let mut failures = Vec::new();
     for clip in ["walk", "run"] {
         for view in ["whole body", "left legs"] {
@@ -41,6 +41,9 @@ fn lesson_09_human_pair_names_keep_off_the_bodies_and_the_skeletons() {
                     h.skin(t).unwrap();
                     for size in CANVASES {
                         for orbit in HUMAN_ORBITS {
+                            // The page's frames before at this orbit: the bodies stand across
+                            // its view (they follow the camera's yaw), and the fit holds them.
+                            h.set_canvas_view(OrbitCamera::from_view(orbit), size.x, size.y);
                             let (frame, camera) = drawn_for_view(
                                 &mut h,
                                 orbit,
@@ -54,6 +57,9 @@ fn lesson_09_human_pair_names_keep_off_the_bodies_and_the_skeletons() {
                                 "09 pair, {clip} at {t} s, {view}, {joint}, orbit {orbit:?}"
                             );
                             let view_proj = camera.projection(size.x / size.y) * camera.view();
+                            // The bodies stand along the camera's right: LBS left, DQS right.
+                            let right = HUMAN_OFFSET_Z * screen_axes(&camera).0;
+                            let places = [-right, right];
                             let body: Vec<Vec2> = [&h.mesh, &h.mesh_dqs]
                                 .into_iter()
                                 .zip(places)
@@ -283,11 +289,16 @@ fn lesson_09_gltf_root_name_keeps_off_the_skin() {
         eprintln!("glTF sample characters not found: root label check not run");
         return;
     }
+    // Skinned on the GPU (skin on: GPU) too, where the skin the name keeps off is the vertex
+    // shader's: the test takes it from a twin figure skinned on the CPU.
     let mut failures = Vec::new();
-    for (character, mode) in [
-        ("RiggedFigure", "lbs"),
-        ("RiggedFigure", "dqs"),
-        ("CesiumMan", "lbs"),
+    for (character, mode, gpu) in [
+        ("RiggedFigure", "lbs", false),
+        ("RiggedFigure", "dqs", false),
+        ("CesiumMan", "lbs", false),
+        ("RiggedSimple", "dqs", true),
+        ("RiggedFigure", "dqs", true),
+        ("CesiumMan", "lbs", true),
     ] {
         let bytes = std::fs::read(dir.join(format!("{character}.gltf"))).unwrap();
         for (yaw, pitch) in [(0.6, 0.15), (-0.6, 0.15), (1.6, 0.3)] {
@@ -296,19 +307,28 @@ fn lesson_09_gltf_root_name_keeps_off_the_skin() {
                     let mut scene = GltfFigure::new();
                     scene.load(character, &bytes).unwrap();
                     scene.set_skinning(mode).unwrap();
+                    scene.set_gpu(gpu);
                     let t = k as f32 / 4.0 * scene.duration_sec();
+                    let skin_meshes: Vec<inbetween::draw::SkinMeshId> =
+                        (0..scene.bind_meshes().len()).map(inbetween::draw::SkinMeshId).collect();
                     let [x, y, z, distance] = scene.fit();
                     let (frame, camera) = drawn_for_view(
                         &mut scene,
                         [x, y, z, distance, yaw, pitch],
                         size,
                         |fig, out| {
-                            fig.draw(out, t, &[]).unwrap();
+                            fig.draw_with(out, t, &[], &skin_meshes).unwrap();
                         },
                         |fig, cam, px| fig.set_view(cam, px.x, px.y),
                     );
+                    assert_eq!(scene.gpu_on(), gpu);
+                    if gpu {
+                        scene.set_gpu(false);
+                        scene.draw(&mut Frame::default(), t, &[]).unwrap();
+                    }
                     let name = format!(
-                        "09 glTF {character} {mode}, t {t}, orbit ({yaw}, {pitch}) on {size}"
+                        "09 glTF {character} {mode}, gpu {gpu}, t {t}, \
+                         orbit ({yaw}, {pitch}) on {size}"
                     );
                     let view_proj = camera.projection(size.x / size.y) * camera.view();
                     let at = |p: Vec3| project_to_canvas(view_proj, size, p);
