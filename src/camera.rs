@@ -136,30 +136,56 @@ impl OrbitCamera {
 }
 
 impl OrbitCamera {
-    /// Keeps a panned flat figure in view: along an axis where the box round `points` (seen from
-    /// this direction) fits inside a canvas of `size_px`, its centre stays within [`PAN_ROOM_PX`]
-    /// of the canvas's (the drag shows, and the box stays in the middle instead of ending against
-    /// one edge with the rest of the canvas empty); zoomed in past it, the target moves just
-    /// enough that the box fills the canvas. Per axis, with `c ± b` the box, `v` the view's half
-    /// extent at the target's depth and `p` the room there, the target stays within
-    /// `c ± min(p, v − b)`, or `c ± (b − v)`.
+    /// Keeps a panned or zoomed flat figure's `points` in view on a canvas of `size_px`: the
+    /// distance stays at least [`OrbitCamera::fit`]'s (a zoom in stops where the points fill the
+    /// canvas, and a canvas made smaller zooms out to fit them), and the target stays where
+    /// every point is on the canvas, its image within [`PAN_ROOM_PX`] of the middle (the drag
+    /// shows, and the figure does not end against one edge with the rest of the canvas empty).
+    /// The check is in perspective: a pan moves the eye by `s` in the view plane, and a point
+    /// `x` across and `d` deep is on the canvas while `x − v·d ≤ s ≤ x + v·d`, `v` the view's
+    /// half extent at unit depth; a deep figure seen at an angle shows its near end larger.
+    /// Where the points cannot fit (a canvas too small for the padding), the target moves just
+    /// enough that they cover the canvas.
     pub fn clamp_pan(&mut self, points: &[Vec3], size_px: Vec2) {
-        let view = self.view();
-        let (right, up) = (view.row(0).truncate(), view.row(1).truncate());
-        let on = |p: Vec3| Vec2::new(p.dot(right), p.dot(up));
-        let (lo, hi) = points
-            .iter()
-            .filter(|p| p.is_finite())
-            .fold((Vec2::MAX, Vec2::MIN), |(lo, hi), p| (lo.min(on(*p)), hi.max(on(*p))));
-        if !(lo.cmple(hi).all() && size_px.y > 0.0) {
+        if !(size_px.y > 0.0) {
             return;
         }
-        let v = self.distance * (0.5 * self.fov_y_rad).tan() * Vec2::new(size_px.x / size_px.y, 1.0);
-        let (c, b, t) = (0.5 * (lo + hi), 0.5 * (hi - lo), on(self.target));
-        let room = PAN_ROOM_PX * 2.0 * v.y / size_px.y;
-        let slack = Vec2::select(b.cmpgt(v), b - v, (v - b).min(Vec2::splat(room)));
-        let d = t.clamp(c - slack, c + slack) - t;
-        self.target += right * d.x + up * d.y;
+        let mut fitted = *self;
+        if fitted.fit(points, size_px, FIT_PAD_PX) {
+            self.distance = self.distance.max(fitted.distance);
+        }
+        let view = self.view();
+        let (right, up, back) = (
+            view.row(0).truncate(),
+            view.row(1).truncate(),
+            view.row(2).truncate(),
+        );
+        let eye = self.eye();
+        let v = (0.5 * self.fov_y_rad).tan() * Vec2::new(size_px.x / size_px.y, 1.0);
+        // Per axis, the pan's limits and the depths of the points that set them.
+        let (mut lo, mut hi) = (Vec2::MIN, Vec2::MAX);
+        let (mut d_lo, mut d_hi) = (Vec2::ONE, Vec2::ONE);
+        for p in points.iter().filter(|p| p.is_finite()) {
+            let r = *p - eye;
+            let d = -r.dot(back);
+            if d > 0.0 {
+                let x = Vec2::new(r.dot(right), r.dot(up));
+                let (a, b, dd) = (x - v * d, x + v * d, Vec2::splat(d));
+                (d_lo, lo) = (Vec2::select(a.cmpgt(lo), dd, d_lo), lo.max(a));
+                (d_hi, hi) = (Vec2::select(b.cmplt(hi), dd, d_hi), hi.min(b));
+            }
+        }
+        // The pan that leaves equal margins on both sides, and the room round it at the
+        // target's depth.
+        let middle = (hi * d_lo + lo * d_hi) / (d_lo + d_hi);
+        let room = PAN_ROOM_PX * 2.0 * v.y * self.distance / size_px.y;
+        let fits = lo.cmple(hi);
+        let min = Vec2::select(fits, lo.max(middle - room), hi);
+        let max = Vec2::select(fits, hi.min(middle + room), lo);
+        if lo.cmpgt(Vec2::MIN).all() && min.cmple(max).all() {
+            let s = Vec2::ZERO.clamp(min, max);
+            self.target += right * s.x + up * s.y;
+        }
     }
 }
 

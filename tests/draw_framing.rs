@@ -472,45 +472,77 @@ fn the_skinned_tubes_fill_the_width_above_the_inset() {
 #[test]
 fn a_panned_flat_figure_keeps_its_box_in_view() {
     // A flat figure (seen square-on) fitted to its box, then dragged ten canvases away: the box
-    // stays inside the canvas. Zoomed in past the box, a drag stops where the box's edge meets
-    // the canvas's. A drag within that room moves the view as far as it was dragged.
+    // stays inside the canvas. A zoom in stops at the fit (the box still whole), a zoom out is
+    // kept. A drag within the room moves the view as far as it was dragged.
     let points = corners(Vec3::ZERO, Vec3::new(2.0, 1.0, 0.0));
     for size in SIZES {
-        let canvas_box = |camera: &OrbitCamera| {
+        let inside = |camera: &OrbitCamera| {
             let view_proj = camera.projection(size.x / size.y) * camera.view();
-            let px: Vec<Vec2> = points
-                .iter()
-                .map(|p| project_to_canvas(view_proj, size, *p).unwrap())
-                .collect();
-            let lo = px.iter().fold(Vec2::MAX, |m, p| m.min(*p));
-            (lo, px.iter().fold(Vec2::MIN, |m, p| m.max(*p)))
-        };
-        // Along each axis the box lies inside the canvas or, larger, covers it.
-        let in_view = |(lo, hi): (Vec2, Vec2)| {
-            let inside = lo.cmpge(Vec2::splat(-0.5)) & hi.cmple(size + 0.5);
-            let covers = lo.cmple(Vec2::splat(0.5)) & hi.cmpge(size - 0.5);
-            assert!((inside | covers).all(), "{size}: {lo} to {hi}");
-            covers.any()
+            for p in &points {
+                let c = project_to_canvas(view_proj, size, *p).unwrap();
+                let margin = c.min(size - c).min_element();
+                assert!(margin >= FIT_PAD_PX - PAN_ROOM_PX - 0.5, "{size}: {p} at {c}");
+            }
         };
         let mut camera = OrbitCamera::from_view([1.0, 0.5, 0.0, 3.0, 0.0, 0.0]);
         assert!(camera.fit(&points, size, FIT_PAD_PX));
+        let fitted = camera.distance;
         for (dx, dy) in [(10.0, 10.0), (-10.0, 3.0), (0.0, -10.0)] {
             camera.drag(dx * size.x, dy * size.y, size.y, true);
             camera.clamp_pan(&points, size);
-            in_view(canvas_box(&camera));
+            inside(&camera);
         }
         camera.zoom(0.3);
         camera.drag(10.0 * size.x, -10.0 * size.y, size.y, true);
         camera.clamp_pan(&points, size);
-        assert!(
-            in_view(canvas_box(&camera)),
-            "{size}: zoomed in, the box covers the canvas"
-        );
+        assert!((camera.distance - fitted).abs() < 1e-3 * fitted, "{size}: zoomed in to {}", camera.distance);
+        inside(&camera);
+        camera.zoom(2.0);
+        camera.clamp_pan(&points, size);
+        assert!((camera.distance - 2.0 * fitted).abs() < 1e-3 * fitted);
         let before = camera.target;
-        camera.drag(-20.0, 0.0, size.y, true);
+        camera.drag(-5.0, 0.0, size.y, true);
         camera.clamp_pan(&points, size);
         let moved = (camera.target - before).length() / camera.distance * size.y;
-        assert!((moved - 20.0).abs() < 0.1, "{size}: moved {moved} px of 20");
+        assert!((moved - 5.0).abs() < 0.1, "{size}: moved {moved} px of 5");
+    }
+}
+
+#[test]
+fn a_flat_figure_fitted_on_a_wide_canvas_fits_a_narrower_one_after_a_drag() {
+    // Lesson 05 Figure 9 (three images in a row, lessons/05-noise/lesson.js's camera) fitted on
+    // a wide canvas, dragged (which leaves the fit) and zoomed in, then shown on narrower
+    // canvases (the page made smaller) as the viewer does, clamping at each frame: the three
+    // images and their names' anchors stay on the canvas, FIT_PAD_PX − PAN_ROOM_PX from its
+    // edges.
+    use inbetween::draw::{Frame, TextureId};
+    use inbetween::figures::noise_images::{image_model, NoiseImages};
+    let mut frame = Frame::default();
+    NoiseImages::new().draw(&mut frame, [TextureId(1), TextureId(2), TextureId(3)]);
+    let points = frame.fit_points();
+    let mut shown: Vec<Vec3> = frame.labels.iter().map(|l| l.anchor).collect();
+    for q in &frame.quads {
+        shown.extend([(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+            .map(|(x, z)| q.model.transform_point3(Vec3::new(x, 0.0, z))));
+    }
+    assert_eq!(frame.quads[0].model, image_model(-2.2));
+    for zoom in [1.0, 0.5] {
+        let mut camera = OrbitCamera::from_view([0.0, -0.15, 0.0, 6.2, 0.0, 0.0]);
+        assert!(camera.fit(&points, Vec2::new(920.0, 420.0), FIT_PAD_PX));
+        camera.drag(100.0, 30.0, 420.0, true);
+        camera.zoom(zoom);
+        for size in [Vec2::new(760.0, 420.0), Vec2::new(650.0, 420.0), Vec2::new(400.0, 300.0)] {
+            camera.clamp_pan(&points, size);
+            let view_proj = camera.projection(size.x / size.y) * camera.view();
+            for p in &shown {
+                let c = project_to_canvas(view_proj, size, *p).unwrap();
+                let margin = c.min(size - c).min_element();
+                assert!(
+                    margin >= FIT_PAD_PX - PAN_ROOM_PX - 0.5,
+                    "zoom {zoom} on {size}: {p} at {c}"
+                );
+            }
+        }
     }
 }
 

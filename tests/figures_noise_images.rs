@@ -134,10 +134,12 @@ fn draws_three_quads_and_the_lattices_inside_the_images() {
     f.clear();
     let note = s.draw(&mut f, ids);
     assert!(note.contains("top-left 6 × 6 cells"), "{note}");
-    // Its cells are a few pixels wide on the page: the note says to zoom in to see the lines.
-    assert!(note.contains("zoom in"), "{note}");
+    // Its cells are a few pixels wide on the page (a flat figure zooms in no further than its
+    // fit): the note says the lines run together, and how many cells show them apart.
+    assert!(note.contains("run together: at 12 cells or fewer"), "{note}");
+    assert!(!note.contains("zoom"), "{note}");
     s.set_params(9.0, 0.0).unwrap();
-    assert!(!s.draw(&mut f, ids).contains("zoom in"));
+    assert!(!s.draw(&mut f, ids).contains("run together"));
     s.set_params(25.5, 0.0).unwrap();
     f.clear();
     s.draw(&mut f, ids);

@@ -830,6 +830,9 @@ pub struct Octaves {
     student: Option<(Fractal, String, Option<Vec<f32>>)>,
     dirty: bool,
     stale: bool,
+    /// The camera and canvas size (CSS pixels) of the last frame, which the profile's name is
+    /// placed for.
+    view: Option<(crate::camera::OrbitCamera, Vec2)>,
 }
 
 /// Width of Figure 3's orange profile, CSS pixels: 1.5 px either side of the dark dashed
@@ -861,9 +864,18 @@ impl Octaves {
             student: None,
             dirty: true,
             stale: false,
+            view: None,
         };
         s.regenerate();
         s
+    }
+
+    /// The camera and canvas size (CSS pixels) the frame is drawn for (the last frame's), which
+    /// the profile's name is placed for.
+    pub fn set_view(&mut self, camera: crate::camera::OrbitCamera, width_px: f32, height_px: f32) {
+        if width_px > 0.0 && height_px > 0.0 {
+            self.view = Some((camera, Vec2::new(width_px, height_px)));
+        }
     }
 
     /// The last octave the mesh shows faithfully (`None`: not even octave 0).
@@ -1013,16 +1025,40 @@ impl Octaves {
             ..style
         };
         let orange = over(StrokeStyle::solid(PROFILE_PX));
-        frame.stroke(&profile(&shown), palette::ORANGE, orange);
+        let line = profile(&shown);
+        frame.stroke(&line, palette::ORANGE, orange);
         if shown.n > 0 {
             let dashed = over(StrokeStyle::dashed(1.5, 0.03, 0.03));
             frame.stroke(&profile(&previous), palette::DARK, dashed);
         }
-        frame.label(
-            Vec3::new(1.05, 0.0, V_SLICE),
-            format!("v = {V_SLICE}"),
-            palette::ORANGE,
-        );
+        // The profile's name at the first place round its end at u = 1, then round its end at
+        // u = −1 (orbited, one end lies inside the surface's outline), on the last frame's
+        // view, that covers no part of the surface (every 2nd vertex: an aliased spike is one
+        // vertex wide): over the grey spikes the orange name does not read.
+        let view = self
+            .view
+            .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
+        let r = OCTAVES_RESOLUTION;
+        let surface: Vec<Vec3> = (0..r * r)
+            .filter(|k| (k % r) % 2 == 0 && (k / r) % 2 == 0)
+            .map(|k| self.terrain.positions[k])
+            .collect();
+        let text = format!("v = {V_SLICE}");
+        let around = |end: Vec3, toward: Vec2| {
+            crate::draw::Label::around_dot(
+                end,
+                PROFILE_PX,
+                toward,
+                &text,
+                palette::ORANGE,
+                0,
+                12,
+                8.0,
+            )
+        };
+        let mut candidates = around(line[PROFILE_POINTS - 1], Vec2::X);
+        candidates.extend(around(line[0], -Vec2::X));
+        frame.first_clear_label_by(view, 0.0, candidates, super::clear_of(view, &surface));
         let k = self.fractal.n;
         let mut note = format!(
             "{} octave{}: the newest, k = {k}, has amplitude αᵏ = {} and frequency ωᵏ = {} \

@@ -277,9 +277,10 @@ impl NoiseImages {
                     " The lattices cover the top-left {0} × {0} cells, so the noise shows beside them{1}.",
                     LATTICE_CELLS,
                     // Past 12 cells across the lines are 1 px and the cells a few pixels wide:
-                    // the lattice reads as a solid patch at the page's zoom.
+                    // the lattice reads as a solid patch (a flat figure zooms in no further
+                    // than its fit, `OrbitCamera::clamp_pan`).
                     if self.cells > 12.0 {
-                        "; a cell is a few pixels across, so zoom in (wheel or pinch) to tell the lines apart"
+                        "; a cell is a few pixels across and the lines run together: at 12 cells or fewer they stand apart"
                     } else {
                         ""
                     }

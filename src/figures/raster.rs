@@ -796,6 +796,10 @@ impl Frustum {
         frame
             .keep_in_view
             .extend([2, 6].map(|i| box_corners[i] + Vec3::X * 1.4));
+        // And for the eye's and z_near's names left of the apex and the near plane's corner.
+        frame
+            .keep_in_view
+            .extend([EYE, near[3]].map(|p| p - Vec3::X * 1.4));
         let d = self.distance_at(s);
         let mut note = format!(
             "Distance d = {} m: depth {} (wgpu), {} (OpenGL); the wgpu depth passes 0.5 at d = {} m. {}",

@@ -246,6 +246,9 @@ impl OctavesScene {
         Ok(rows.iter().flatten().map(|&v| value(v)).collect())
     }
     pub fn draw(&mut self, viewer: &mut Viewer) -> Result<String, JsError> {
+        // The view the profile's name is placed for (the last frame's camera).
+        let (w, h) = viewer.css_size;
+        self.scene.set_view(viewer.camera, w, h);
         let mesh = self.gpu.sync(viewer, &mut self.scene)?[0];
         let note = self.scene.draw(&mut viewer.renderer.frame, mesh);
         viewer.present()?;

@@ -729,3 +729,93 @@ fn lesson_00_depth_side_view_fills_its_canvas() {
         }
     }
 }
+
+#[test]
+fn lesson_00_depth_side_view_keeps_the_eye_and_its_name_on_the_canvas_after_a_slide_or_zoom() {
+    // Figure 3 at its page camera on its canvases, at the page's settings and the page sweep's
+    // (z_near 1.58 m, z_far 3960 m, gap 0.079 m, 24 bits), then zoomed (in ×0.6 and ×0.1, out ×3)
+    // and slid ten canvases each way, as the viewer does it (the zoom and the drag, then the
+    // clamp on the frame's declared points at each frame; the figure places its names for the
+    // frame before): the eye's dot lies whole on the canvas, and its name is shown inside it.
+    use inbetween::figures::raster::{DepthPrecision, EYE_HEIGHT};
+    let eye = Vec3::new(0.0, EYE_HEIGHT, 0.0);
+    let mut failures = Vec::new();
+    for (near, far, gap, bits) in [(0.1, 1000.0, 0.01, 16.0), (1.58, 3960.0, 0.079, 24.0)] {
+        for size in DEPTH_CANVASES {
+            for zoom in [1.0, 0.6, 0.1, 3.0] {
+                for (dx, dy) in [(10.0, 0.0), (-10.0, 0.0), (0.0, 10.0), (0.0, -10.0), (10.0, -10.0)] {
+                    let mut scene = DepthPrecision::new();
+                    scene.set(near, far, gap, bits).unwrap();
+                    let view = [0.0, 3.0, -20.0, 30.0, 1.2, 0.45];
+                    let (frame, mut camera) = drawn!(&mut scene, view, size);
+                    camera.zoom(zoom);
+                    camera.drag(dx * size.x, dy * size.y, size.y, true);
+                    camera.clamp_pan(&frame.fit_points(), size);
+                    let mut frame = Frame::default();
+                    for _ in 0..2 {
+                        scene.set_view(camera, size.x, size.y);
+                        frame = Frame::default();
+                        scene.draw(&mut frame);
+                        camera.clamp_pan(&frame.fit_points(), size);
+                    }
+                    let name = format!("z_near {near}, {bits} bits, zoom {zoom}, slid ({dx}, {dy})");
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let c = project_to_canvas(view_proj, size, eye).unwrap();
+                    let placed = layout(&frame, &camera, size);
+                    failures.extend(failure_of(|| {
+                        assert!(
+                            c.min(size - c).min_element() >= 7.0,
+                            "{name} on {size}: the eye's dot at {c}"
+                        );
+                        let (_, b, p) = placed.iter().find(|(l, _, _)| l.text == "eye").unwrap();
+                        let (lo, hi) = (p.top_left, p.top_left + b.size);
+                        assert!(
+                            p.shown && lo.min_element() >= 0.0 && hi.cmple(size).all(),
+                            "{name} on {size}: \"eye\" from {lo} to {hi}"
+                        );
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
+
+#[test]
+fn lesson_00_frustum_names_keep_off_the_canvas_edges() {
+    // Figure 2 at its page camera (lessons/00-triangles-to-pixels/lesson.js), both canvases, at
+    // the page's start (s = 0.05: the point near z_near) and further along, at the page's
+    // frustum and at a wide and a narrow one: every name is shown at least 16 px inside the
+    // canvas, so the eye's and z_near's names left of the apex do not end against its edge.
+    use inbetween::figures::raster::Frustum;
+    let mut failures = Vec::new();
+    for (fov, near, far) in [(50.0, 1.0, 8.0), (100.0, 0.5, 12.0), (25.0, 2.0, 6.0)] {
+        for s in [0.05, 0.5] {
+            for size in CANVASES {
+                let mut scene = Frustum::new();
+                scene.set_frustum(fov, near, far).unwrap();
+                let (frame, camera) = crate::label_clearance::drawn_for_view(
+                    &mut scene,
+                    [4.5, 1.2, -4.0, 17.0, 0.45, 0.45],
+                    size,
+                    |fig, out| {
+                        fig.draw(out, s).unwrap();
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let boxes = label_boxes(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert_eq!(boxes.len(), frame.labels.len(), "fov {fov}, s {s} on {size}: a name hidden");
+                    for (text, rect) in &boxes {
+                        let margin = rect.min.min(size - rect.max()).min_element();
+                        assert!(
+                            margin >= 16.0,
+                            "fov {fov}, z_near {near}, s {s} on {size}: {text:?} {margin} px from the edge"
+                        );
+                    }
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}

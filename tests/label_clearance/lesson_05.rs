@@ -142,3 +142,44 @@ fn lesson_05_variant_names_keep_off_the_terrains() {
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_05_profile_name_keeps_off_the_fractal_surface() {
+    // Figure 3 at its page camera (lessons/05-noise/lesson.js) and orbited as the page sweep's
+    // drag turns it, both canvases, at the page's start, the Try this's spiky α = 0.8, N = 7,
+    // and the sliders' ends: "v = 0.25" is shown and covers no vertex of the surface (the figure
+    // samples every 2nd). As on the page, the figure places it for the view of the frame before.
+    use inbetween::draw::MeshId;
+    use inbetween::figures::noise::{Octaves, TerrainFigure, OCTAVES_RESOLUTION};
+    let mut failures = Vec::new();
+    for (yaw, pitch) in [(0.3, 0.6), (0.3 - 1.216, 0.6 + 0.336)] {
+        for (n, alpha, omega) in [(3.0, 0.5, 2.0), (7.0, 0.8, 2.0), (9.0, 1.0, 4.0)] {
+            for size in CANVASES {
+                let mut scene = Octaves::new();
+                scene.set_params(n, alpha, omega).unwrap();
+                scene.rebuild().unwrap();
+                let (frame, camera) = drawn_for_view(
+                    &mut scene,
+                    [0.0, 0.0, 0.0, 3.0, yaw, pitch],
+                    size,
+                    |fig, out| {
+                        fig.draw(out, MeshId(1));
+                    },
+                    |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                );
+                let name = format!("05 octaves, orbit ({yaw}, {pitch}), N {n}, α {alpha}, ω {omega}");
+                let view_proj = camera.projection(size.x / size.y) * camera.view();
+                let r = OCTAVES_RESOLUTION;
+                let points: Vec<Vec2> = (0..r * r)
+                    .filter_map(|k| project_to_canvas(view_proj, size, scene.terrains()[0].positions[k]))
+                    .collect();
+                let boxes = label_boxes(&frame, &camera, size);
+                failures.extend(failure_of(|| {
+                    assert!(boxes.iter().any(|(t, _)| t == "v = 0.25"), "{name} on {size}: no name");
+                    assert_names_cover_none(&name, size, &boxes, &["v = 0.25"], &points, "the surface");
+                }));
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
