@@ -1158,17 +1158,35 @@ impl ClothFigure {
 impl ClothFigure {
     /// What the flag's controls can do about an explosion of the `method` flag, naming only
     /// settings that can still move that way. A mass-spring substep above the estimate
-    /// (`above_limit`) calls for a smaller substep or softer springs; otherwise the step is not
-    /// the cause and the springs are too soft for the load.
+    /// (`above_limit`) calls for a smaller substep or softer springs; below it the step is not
+    /// the cause and the springs are too soft for the load. An XPBD correction never overshoots,
+    /// but one pass over the springs per substep can fall behind the load (at a 50 ms frame step
+    /// with one substep the flag tears apart at any stiffness): more substeps first, then a
+    /// stiffer flag or a lighter load.
     fn flag_advice(&self, method: Method, above_limit: bool) -> String {
-        let why = match method {
-            Method::Xpbd => "XPBD's projections cannot overshoot",
-            Method::MassSpring if !above_limit => "The substep h is below the estimate",
-            Method::MassSpring => "",
-        };
-        if !why.is_empty() {
+        if method == Method::Xpbd {
+            let mut moves = Vec::new();
+            if self.params.substeps < MAX_SEARCH_SUBSTEPS {
+                moves.push("raise the substeps");
+            }
+            if self.frame_dt > 0.005 {
+                moves.push("lower the frame step");
+            }
+            moves.extend(self.flag_load_moves());
             return format!(
-                "{why}, so the step is not the cause: the springs are too soft for this load. {}",
+                "XPBD's corrections never overshoot, but one pass over the springs a substep \
+                 fell behind this load. {}",
+                if moves.is_empty() {
+                    String::from("Press reset.")
+                } else {
+                    format!("{}.", capitalised_or(&moves))
+                }
+            );
+        }
+        if !above_limit {
+            return format!(
+                "The substep h is below the estimate, so the step is not the cause: the springs \
+                 are too soft for this load. {}",
                 self.flag_load_advice()
             );
         }
@@ -1194,6 +1212,15 @@ impl ClothFigure {
 
     /// How to stiffen the flag against its load, naming only settings not at their ends.
     fn flag_load_advice(&self) -> String {
+        let moves = self.flag_load_moves();
+        if moves.is_empty() {
+            return "Press reset.".into();
+        }
+        format!("{}.", capitalised_or(&moves))
+    }
+
+    /// The moves of [`Self::flag_load_advice`].
+    fn flag_load_moves(&self) -> Vec<&'static str> {
         let mut moves = Vec::new();
         if self.params.stiffness[0] < MAX_K {
             moves.push("raise the structural stiffness");
@@ -1204,10 +1231,7 @@ impl ClothFigure {
         if self.pins != PINS.len() - 1 {
             moves.push("pin the whole edge");
         }
-        if moves.is_empty() {
-            return "Press reset.".into();
-        }
-        format!("{}.", capitalised_or(&moves))
+        moves
     }
 }
 
