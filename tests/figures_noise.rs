@@ -790,7 +790,7 @@ fn variants_stand_side_by_side_from_the_same_noise() {
 
 /// What the text and the Try this say: the ridge never goes below 0, the inverted ridge lies
 /// around 0 with water in its lowest parts, marble stays within ±h/2; from α = 0.4 to 0.8 the
-/// ridge nearly doubles, the sum gets taller and rougher, marble still spans ±0.15 m; at h = 0
+/// ridge grows by about 70 %, the sum gets taller and rougher, marble still spans ±0.15 m; at h = 0
 /// all four are flat.
 #[test]
 fn variants_do_what_the_page_says() {
@@ -820,7 +820,7 @@ fn variants_do_what_the_page_says() {
     let (ridge_lo, ridge_08) = f.height_range(1);
     assert!(ridge_lo >= 0.0);
     assert!(
-        ridge_08 / ridge_04 > 1.7 && ridge_08 / ridge_04 < 2.0,
+        ridge_08 / ridge_04 > 1.65 && ridge_08 / ridge_04 < 1.75,
         "{ridge_04} -> {ridge_08}"
     );
     let (lo, hi) = f.height_range(0);

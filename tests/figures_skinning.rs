@@ -701,6 +701,8 @@ fn without_the_sign_fix_a_full_twist_cancels_and_the_note_says_so() {
     let mut frame = Frame::default();
     let note = f.draw(&mut frame, MeshId(3)).unwrap();
     assert!(note.contains("cancel") && note.contains("nothing to normalise"), "{note}");
+    // sin 180° in f32 is -8.7e-8: the note gives the quaternion, not the rounding.
+    assert!(note.contains("r = (-1.000, 0.000, 0, 0)"), "{note}");
     assert!(!note.contains("the long way round"), "{note}");
     assert!(note.contains("has turned 0.0°"), "{note}");
     assert!(f.elbow_ring_turn_deg().abs() < 0.1, "{}", f.elbow_ring_turn_deg());

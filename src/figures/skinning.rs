@@ -1885,11 +1885,14 @@ impl SignFigure {
         ]);
         let deg = self.twist_rad.to_degrees();
         let turn = self.elbow_ring_turn_deg();
+        // A unit quaternion's component under 1e-6 is the rounding of sin or cos in f32 (sin 180°
+        // is -8.7e-8): the note gives it as 0.
+        let component = |v: f32| format_number(if v.abs() < 1e-6 { 0.0 } else { v });
         let mut note = format!(
             "Elbow twisted by {deg:.0}°: its quaternion r = ({}, {}, 0, 0) in (w, x, y, z), r · 1 = {}.",
-            format_number(r.w),
-            format_number(r.x),
-            format_number(r.w)
+            component(r.w),
+            component(r.x),
+            component(r.w)
         );
         note += &match (far, self.fix) {
             (false, _) => " Both on one hemisphere: the fix changes nothing.".to_string(),
