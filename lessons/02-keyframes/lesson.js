@@ -622,6 +622,13 @@ function sharedKeys() {
   return [times, xy];
 }
 
+/** Shows `cols` ([times, magnitudes…]: a speed, an acceleration's size) on `plot` with its axis
+ * from 0, so the slowest stretch reads against a 0 tick and linear's zero sits on the floor. */
+function plotMagnitudes(plot, cols) {
+  plot.setYRange([0, Math.max(0.1, ...cols.slice(1).flat().filter(Number.isFinite))]);
+  plot.setData(cols);
+}
+
 // ---- Figures 2, 6, 7: two schemes on the same keys, at the same time. ----
 function compareFigure(id) {
   const figure = document.getElementById(id);
@@ -662,7 +669,7 @@ function compareFigure(id) {
       }
       cols.push(col);
     }
-    plot.setData(cols);
+    plotMagnitudes(plot, cols);
     if (gapNote) gapNote.textContent = schemes.a.gapNote(schemes.b);
     view.fit(all);
     const loops = ['a', 'b'].filter((side) => !layers[side].held).map((side) => loopBox(layers[side].path)).filter(Boolean);
@@ -804,7 +811,7 @@ if (lagrangeViewer) {
     };
     const [ea, eb] = sides.map(extent);
     layer = { keys, sides, extent: withTitleRoom([...ea, ...eb]), off: null, size: '' };
-    plot.setData(columns(cardinal.sampleSpeeds(301), 3));
+    plotMagnitudes(plot, columns(cardinal.sampleSpeeds(301), 3));
     layer.note = cardinal.note();
   };
   const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Tangents' });
@@ -918,10 +925,8 @@ if (lagrangeViewer) {
       p.arcLength ? "Figure 1's ball follows the constant-speed timing (red)." : "Figure 1's ball follows the keyed timing (blue).",
     ].filter(Boolean).join(' ');
     const [k, e] = cols;
-    speedPlot.setData([k[0], k[1], k[2]]);
-    // A magnitude: the axis starts at 0, so linear's zero between the keys sits on the floor.
-    accelPlot.setYRange([0, Math.max(0.1, ...k[3].filter(Number.isFinite), ...e[3].filter(Number.isFinite))]);
-    accelPlot.setData([k[0], k[3], e[3]]);
+    plotMagnitudes(speedPlot, [k[0], k[1], k[2]]);
+    plotMagnitudes(accelPlot, [k[0], k[3], e[3]]);
   });
   lesson.onFrame(() => {
     const tau = timeline.time;

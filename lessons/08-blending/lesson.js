@@ -107,10 +107,10 @@ function speedSlider(gui, scene, p, after) {
 
 const locoViewer = await lesson.figure('#fig-locomotion');
 if (locoViewer) {
-  // A low three-quarter view along the track: the 3 m track runs across the canvas, so the
-  // characters fill its height even in an 800 px wide window, both lanes stay apart and the
-  // footprints still read on the ground.
-  locoViewer.setCamera(0, 0.8, 0, 5.0, 1.0, 0.45);
+  // A low view from in front of the walk and a little to its right: the synchronised character
+  // stands left and the other right with their footprints between (tests/figures_blending.rs,
+  // LOCOMOTION_VIEW), and the characters fill the canvas's height even in an 800 px window.
+  locoViewer.setCamera(0, 0.8, 0, 5.0, 0.5, 0.35);
   const scene = new LocomotionScene();
   const p = { speed: 0, useExercise: false };
   // The loop's length comes from Rust (the plots' samples cover it); then the walk starts again.

@@ -691,8 +691,9 @@ const SNAP_TOLERANCE_M: f32 = 0.05;
 const FOOTPRINT_HEIGHT: f32 = 0.005;
 /// The character walks along z on a loop this long (metres), so it stays in view.
 const TRACK_LENGTH: f32 = 3.0;
-/// Where the two characters walk when compared: synchronised at −x, same clock time at +x.
-pub const LANE_X: f32 = 0.75;
+/// Where the two characters walk when compared: synchronised at −x, same clock time at +x, far
+/// enough apart that from in front of the walk they stand left and right, footprints included.
+pub const LANE_X: f32 = 0.95;
 /// A speed within this of an end of the range (half the slider's 0.01 m/s step) is that end:
 /// the slider's rounded ends stand for the walk's and the run's own speeds.
 pub const SPEED_SNAP: f32 = 0.005;
@@ -1273,7 +1274,7 @@ impl LocomotionFigure {
         if self.compare {
             // Both abreast, at the synchronised character's place on the loop: blended at the
             // same clock time, the root drifts ahead or behind (most of a metre), and from the
-            // page's three-quarter view one character then stands behind the other.
+            // page's view one character then walks ahead of the other.
             self.synchronised = true;
             let along = Some(self.pose_at(t).0.z);
             // The figure's own setting last, so footprints(), slide_m() and origin() are its.

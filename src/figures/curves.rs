@@ -585,39 +585,49 @@ impl KeyframesScene {
             frame.line(p - Vec3::X * 0.08, p + Vec3::X * 0.08, palette::DARK);
         }
         // The labels, once the curves are down, each at the first place round its point on the
-        // last frame's view (a tick's right on the canvas first, the name past the arrow's tip,
-        // then further out) that covers no line, dot or key: orbited, the path and the curve
-        // pass over the axis.
+        // last frame's view that covers no line, dot or key (orbited, the path and the curve
+        // pass over the axis): the numbers all on the side of the axis away from the curve and
+        // the keys, so that they read in order along it whatever the orbit, and the name past the
+        // last tick.
         let view = self
             .view
             .map(|(camera, size)| (camera.projection(size.x / size.y) * camera.view(), size));
-        let toward = |from: Vec3, to: Vec3| {
+        let px = |p: Vec3| {
             view.and_then(|(view_proj, size)| {
-                let px = |p| crate::camera::project_to_canvas(view_proj, size, p);
-                Some(px(to)? - px(from)?)
+                crate::camera::project_to_canvas(view_proj, size, p)
             })
-            .unwrap_or(Vec2::X)
         };
+        let start_px = px(axis(0.0)).unwrap_or_default();
+        let along = (px(end).unwrap_or_default() - start_px).try_normalize().unwrap_or(Vec2::X);
+        let last_px = px(tick(*seconds.end())).unwrap_or_default();
         let keys: Vec<Vec3> = self.track.values().iter().map(|p| p.extend(0.0)).collect();
+        let lean: f32 = points
+            .iter()
+            .chain(&keys)
+            .filter_map(|&p| px(p))
+            .map(|c| (c - start_px).dot(along.perp()).signum())
+            .sum();
+        let away = along.perp() * -lean.signum();
         // Every 1, 2, 5 or 10 s, whichever first puts the labelled ticks 30 px apart on the last
         // frame's canvas: when the camera backs away to fit a tall path, a label a second would
         // crowd into its neighbours' places and read out of order.
-        let px_per_sec = toward(axis(0.0), axis(duration.max(1.0))).length() / duration.max(1.0);
+        let px_per_sec = px(axis(duration.max(1.0)))
+            .map_or(0.0, |p| p.distance(start_px) / duration.max(1.0));
         let stride = [1, 2, 5, 10]
             .into_iter()
             .find(|&n| n as f32 * px_per_sec >= 30.0)
             .unwrap_or(10);
         let labels = seconds
             .filter(|second| second.rem_euclid(stride) == 0)
-            .map(|second| {
-                let p = tick(second);
-                (p, toward(p, p + Vec3::X), format!("{second} s"))
-            })
-            .chain([(end, toward(axis(0.0), end), "time (s)".into())]);
-        for (at, toward, text) in labels {
+            .map(|second| (tick(second), away, start_px, format!("{second} s")))
+            .chain([(end, along, last_px, "time (s)".into())]);
+        for (at, toward, from, text) in labels {
             let candidates =
-                crate::draw::Label::around_dot(at, 12.0, toward, &text, palette::DARK, 0, 8, 6.0);
-            frame.first_clear_label_by(view, 2.0, candidates, super::clear_of(view, &keys));
+                crate::draw::Label::around_dot(at, 12.0, toward, &text, palette::DARK, 0, 16, 6.0);
+            let clear = super::clear_of(view, &keys);
+            frame.first_clear_label_by(view, 2.0, candidates, |rect| {
+                clear(rect) && lies_beyond(rect, from, toward, 2.0)
+            });
         }
         // The camera fits the curve, the path's keys and the axis at every canvas size.
         frame.keep_in_view.extend(points);
@@ -1630,4 +1640,11 @@ pub fn spacing_ticks(name: &str, count: usize) -> Result<Vec<f32>, String> {
     Ok((0..count)
         .map(|k| ease.apply(k as f32 / (count - 1) as f32))
         .collect())
+}
+
+/// Whether all of `rect` lies at least `by` px past the line through `from` across `dir` (a unit
+/// screen direction): a label on its own side of an axis, or past its tip.
+fn lies_beyond(rect: crate::draw::layout::Rect, from: Vec2, dir: Vec2, by: f32) -> bool {
+    let nearest = Vec2::select(dir.cmpgt(Vec2::ZERO), rect.min, rect.max());
+    (nearest - from).dot(dir) >= by
 }

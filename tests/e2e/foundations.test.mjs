@@ -3,7 +3,7 @@
 // and the shininess slider on one screen; at 1600 x 1000 the images in one row), Figure 1's
 // segments slider off for the tetrahedron, Figure 2's refused z_far explained under its box; lesson 02's
 // Figure 7 inset, magnifying the loop of the loop-prone keys; its keys selects kept in step; Figures 5
-// and 8's curves over their in-between dots.
+// and 8's curves over their in-between dots; its speed and acceleration plots' axes from 0.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { launch, frames, setControl, serveDist, openPage } from './browser.mjs';
@@ -243,5 +243,27 @@ test('lesson 02: every panel choice fits beside its chevron, and without a GPU n
     await page.screenshot({ path: 'tests/screenshots/02-keyframes-none-editor.png' });
   } finally {
     await none.close();
+  }
+});
+
+test('lesson 02: the speed and acceleration plots start their axes at 0 and label it', async () => {
+  const context = await launch('webgl2');
+  try {
+    const { page, problems } = await openPage(context, `${site.origin}/lessons/02-keyframes/?backend=webgl2`, { width: 1600, height: 1000 });
+    for (const preset of ['zig-zag', 'default']) {
+      await setControl(page, '#fig-centripetal', 'keys (all figures)', preset);
+      for (const selector of ['#fig-step .plot', '#fig-natural .plot', '#fig-centripetal .plot', '#cardinal-plot', '#keys-speed', '#keys-accel']) {
+        const plot = page.locator(selector);
+        await plot.scrollIntoViewIfNeeded();
+        await frames(page);
+        const [range, labels] = await plot.evaluate((e) => [e.dataset.yRange, e.dataset.yLabels]);
+        const [lo, hi] = range.split(' ').map(Number);
+        assert.ok(lo <= 0 && lo > -0.1 * hi, `${selector} on ${preset}: y from ${lo} to ${hi}`);
+        assert.ok(labels.split(' ').includes('0'), `${selector} on ${preset}: y labels ${labels}`);
+      }
+    }
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
   }
 });

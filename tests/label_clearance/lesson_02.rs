@@ -186,3 +186,66 @@ fn lesson_02_keys_time_axis_labels_read_in_order_when_the_axis_is_short_on_scree
     }
     assert_none_failed(&failures);
 }
+
+#[test]
+fn lesson_02_keys_time_axis_numbers_keep_to_one_side_for_any_orbit() {
+    // Figure 1's 3D view orbited all round its page camera (yaw −1.5 to 1.5 rad, pitch 0.1 to
+    // 1.0 rad), on both canvases, with the default, uneven and centripetal keys: every shown
+    // number of the time axis lies wholly on one side of the axis's line on the canvas, the
+    // side where fewer points of the curve and the path's keys lie, so that they read in order
+    // along it; "time (s)" lies wholly past the last tick along the axis.
+    use inbetween::figures::curves::{preset, KeyframesScene, TIME_DEPTH_M_PER_SEC};
+    let mut failures = Vec::new();
+    for name in ["default", "uneven", "centripetal"] {
+        let (times, values) = preset(name).unwrap();
+        let right = values.iter().fold(f32::MIN, |m, p| m.max(p.x)) + 0.8;
+        let duration = times[times.len() - 1] - times[0];
+        let axis = |t: f32| Vec3::new(right, 0.0, -TIME_DEPTH_M_PER_SEC * t);
+        for yaw in (-5..=5).map(|k| 0.3 * k as f32) {
+            for pitch in [0.1, 0.4, 0.7, 1.0] {
+                for size in [Vec2::new(760.0, 300.0), Vec2::new(650.0, 300.0)] {
+                    let mut scene = KeyframesScene::new();
+                    scene.set_keys(times.clone(), values.clone()).unwrap();
+                    let (frame, camera) = drawn_for_view(
+                        &mut scene,
+                        [0.3, 0.8, -1.3, 6.5, yaw, pitch],
+                        size,
+                        |fig, out| {
+                            fig.draw(out, 1.7).unwrap();
+                        },
+                        |fig, cam, px| fig.set_view(cam, px.x, px.y),
+                    );
+                    let view_proj = camera.projection(size.x / size.y) * camera.view();
+                    let px = |p: Vec3| project_to_canvas(view_proj, size, p).unwrap();
+                    let (start, tip) = (px(axis(0.0)), px(axis(duration + 0.4)));
+                    let along = (tip - start).normalize();
+                    let last = px(axis((times[0] + duration).floor() - times[0]));
+                    let side = |c: Vec2| (c - start).dot(along.perp());
+                    // The curve is the figure's widest stroke; the keys, the path's dots.
+                    let curve = frame.strokes.iter().map(|s| Vec3::from(s.a));
+                    let keys = values.iter().map(|p| p.extend(0.0));
+                    let lean: f32 = curve.chain(keys).map(|p| side(px(p)).signum()).sum();
+                    let at = format!("{name} keys, yaw {yaw}, pitch {pitch}, {size}");
+                    failures.extend(failure_of(|| {
+                        for (text, rect) in label_boxes(&frame, &camera, size) {
+                            let corners = [
+                                rect.min,
+                                rect.max(),
+                                Vec2::new(rect.min.x, rect.max().y),
+                                Vec2::new(rect.max().x, rect.min.y),
+                            ];
+                            if text == "time (s)" {
+                                let past = corners.iter().all(|&c| (c - last).dot(along) > 0.0);
+                                assert!(past, "{at}: \"time (s)\" at {rect:?}, the last tick at {last}");
+                            } else if text.ends_with(" s") {
+                                let away = corners.iter().all(|&c| side(c) * lean < 0.0);
+                                assert!(away, "{at}: {text:?} at {rect:?} is not on the side away from the curves");
+                            }
+                        }
+                    }));
+                }
+            }
+        }
+    }
+    assert_none_failed(&failures);
+}
