@@ -699,7 +699,9 @@ fn the_force_law_plot_shows_what_the_lesson_says_of_the_two_laws() {
     // At contact the Gaussian law pushes with a finite a1 e^(−k) − a2; the other without bound.
     assert!((FLOCK_LAWS[2].f(0.0) - ((-2.0f32).exp() - 1.0)).abs() < 1e-6);
     assert!((FLOCK_LAWS[2].f(0.0) + 0.86).abs() < 0.01);
-    assert!(rows[0][1] < -1000.0);
+    assert!(rows[0][1] < -1000.0 && rows[0][1].is_finite());
+    // The plot reaches contact: its first Gaussian sample is the text's -0.86 m/s².
+    assert!(rows[0][0] < 0.01 && (rows[0][2] + 0.86).abs() < 0.01, "{:?}", rows[0]);
     // Bad counts are errors, not panics or huge allocations.
     for bad in [f32::NAN, 1.0, 1e9, -3.0] {
         assert!(law_plot_samples(bad).is_err(), "{bad}");

@@ -86,9 +86,10 @@ pub const FLOCK_LAWS: [ForceLaw; 3] = [
 ];
 
 /// Where the force-law plot starts and ends, metres: the inverse-power law falls to −∞ at
-/// contact, so the plot starts a little away from it; it ends at the law's reach in the flock
+/// contact, so the plot starts 5 mm from it, where the Gaussian law's finite push at contact
+/// (the text's −0.86 m/s²) already shows; it ends at the law's reach in the flock
 /// (`BoidParams::law_radius`' default).
-pub const LAW_PLOT_X: (f32, f32) = (0.05, 1.5);
+pub const LAW_PLOT_X: (f32, f32) = (0.005, 1.5);
 
 /// The force-law plot beside the formulas: `count ∈ [2, 1000]` distances from
 /// [`LAW_PLOT_X`]'s start to its end, each as `[x, f(x) of a1/x² − a2/x⁴, f(x) of the

@@ -12,7 +12,7 @@ import { join } from 'node:path';
 import { tmpdir } from 'node:os';
 import { launch, pixelStats, meanDifference, frames, serveDist, openPage, DIST } from './browser.mjs';
 import { gpuNoiseMatchesCpu } from './noise_gpu.mjs';
-import { normalsPlotKeepsTheArrowsColours } from './noise_page.mjs';
+import { normalsPlotKeepsTheArrowsColours, normalsPlotStartsAtZero } from './noise_page.mjs';
 import { quizShowMeSetsFigures } from './quiz.mjs';
 
 const SHOTS = 'tests/screenshots';
@@ -789,6 +789,7 @@ async function lessonPage(context, backend, lesson) {
   if (lesson.folder.startsWith('05-')) {
     await gpuNoiseMatchesCpu(page, label);
     await normalsPlotKeepsTheArrowsColours(page);
+    await normalsPlotStartsAtZero(page);
   }
   clock('editor drags, GPU noise check');
   const figures = await page.locator('.figure').all();

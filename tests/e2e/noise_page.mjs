@@ -24,3 +24,16 @@ export async function normalsPlotKeepsTheArrowsColours(page) {
     for (const arrow of arrows) assert.ok(!swatch.includes(arrow), `a plot curve is drawn in an arrow's colour ${arrow}: ${swatch}`);
   }
 }
+
+/** At h = 0 every angle is 0: the plot's y axis starts at 0 (an angle is never negative). */
+export async function normalsPlotStartsAtZero(page) {
+  const box = page.locator('#fig-normals .lil-controller', { hasText: 'h (height)' }).locator('input').first();
+  await box.fill('0');
+  await box.press('Enter');
+  await page.waitForFunction(() => document.getElementById('nor-plot').dataset.yRange?.startsWith('0 '), null, { timeout: 10_000 })
+    .catch(() => {});
+  const range = (await page.locator('#nor-plot').getAttribute('data-y-range')).split(' ').map(Number);
+  assert.equal(range[0], 0, `the angle axis runs from ${range[0]}`);
+  await box.fill('0.3');
+  await box.press('Enter');
+}
