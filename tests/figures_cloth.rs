@@ -1285,3 +1285,30 @@ fn at_a_long_step_with_one_substep_the_xpbd_flag_tears_whatever_its_stiffness() 
         assert!(f.exploded(1).is_none(), "k {k}, 10 substeps: {note}");
     }
 }
+
+#[test]
+fn at_ten_by_ten_the_sphere_shows_through_between_the_particles() {
+    // The caption: each particle collides with the sphere on its own, so at 10 × 10 the flat
+    // cells between particles cut into it (it shows through the draped cloth) while no particle
+    // is inside it.
+    let mut f = ClothFigure::new(Preset::Drape);
+    f.set_method("XPBD").unwrap();
+    f.set_resolution(10.0).unwrap();
+    draw(&mut f, 5.6);
+    assert!(f.exploded(0).is_none());
+    let (centre, _) = f.obstacles();
+    let radius = 0.55;
+    let p = f.positions(0);
+    let n = 10;
+    assert_eq!(p.len(), n * n);
+    let inside = |q: Vec3| q.distance(centre) < radius - 0.01;
+    assert!(p.iter().all(|&q| !inside(q)), "a particle is inside the sphere");
+    let cut = (0..n - 1)
+        .flat_map(|i| (0..n - 1).map(move |j| (i, j)))
+        .filter(|&(i, j)| {
+            let c = (p[i * n + j] + p[i * n + j + 1] + p[(i + 1) * n + j] + p[(i + 1) * n + j + 1]) / 4.0;
+            inside(c)
+        })
+        .count();
+    assert!(cut >= 3, "{cut} cells cut into the sphere");
+}

@@ -162,6 +162,26 @@ async function fullPageShot(page, path, check = async () => {}) {
   await page.setViewportSize(viewport);
 }
 
+/**
+ * A screenshot of one figure. A figure taller than the window would be captured by Playwright
+ * beyond the viewport, which lays the page out again at another size and clears the canvases it
+ * resizes before their figures can draw again (lesson 02's Figure 1, 909 px tall in a 900 px
+ * window, came out blank): the window is made tall enough first, and the figure draws in it.
+ */
+async function figureShot(page, figure, path) {
+  const viewport = page.viewportSize();
+  const box = await figure.boundingBox();
+  const tall = box && box.height > viewport.height - 16;
+  if (tall) await page.setViewportSize({ width: viewport.width, height: Math.ceil(box.height) + 32 });
+  await boxInView(figure);
+  await frames(page, tall ? 4 : 0);
+  await figure.screenshot({ path, caret: 'initial' });
+  if (tall) {
+    await page.setViewportSize(viewport);
+    await frames(page, 2);
+  }
+}
+
 /** The tallest part of a page one screenshot takes (see `fullPageShot`). */
 const SHOT_PART = 8000;
 
@@ -776,7 +796,7 @@ async function lessonPage(context, backend, lesson) {
     for (const [i, figure] of (await page.locator('.figure').all()).entries()) {
       await boxInView(figure);
       await frames(page, 3);
-      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-default-${backend}.png`, caret: 'initial' });
+      await figureShot(page, figure, `${SHOTS}/${lesson.folder}-fig${i}-default-${backend}.png`);
     }
     clock('default screenshots');
   }
@@ -806,7 +826,7 @@ async function lessonPage(context, backend, lesson) {
       assert.ok(stats.coverage > 0.02, `figure ${i} (${kind}): looks blank (coverage ${stats.coverage})`);
       const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
       assert.ok(moved > 0, `figure ${i}: no control was found to move`);
-      await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png`, caret: 'initial' });
+      await figureShot(page, figure, `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png`);
       await plotsShowNumbers(figure, i);
       clock(`figure ${i} (${kind}): every control`);
       continue;
@@ -842,7 +862,7 @@ async function lessonPage(context, backend, lesson) {
     clock(`figure ${i}: orbit`);
     const moved = await moveEveryControl(page, figure, `${lesson.folder} figure ${i}`, sweepLimit(backend));
     assert.ok(moved > 0, `figure ${i}: no control was found to move`);
-    await figure.screenshot({ path: `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png`, caret: 'initial' });
+    await figureShot(page, figure, `${SHOTS}/${lesson.folder}-fig${i}-${backend}.png`);
     await plotsShowNumbers(figure, i);
     clock(`figure ${i}: every control`);
   }
