@@ -200,39 +200,61 @@ function gradeInWorker(module, lesson, known, onCase = () => {}, quiet = false) 
 }
 
 /**
- * Grades lesson `id`'s exercises in workers, as the panel does, for the figures (www/lesson.js):
- * an exercise runs in the page only once it has returned from every grading case here, since an
- * endless loop on the page's own thread could never be stopped. Calls `returned(exercise)` as each
- * exercise gets through its cases (a panic counts: the page's sandbox survives one) and resolves
- * to a Map from each stopped exercise to a sentence saying where it was stopped, or, when the
- * grader cannot run, to `{ error }`. Nothing is saved to the student's progress.
+ * Grades lesson `id` round after round, each round in a fresh worker that replays the failures
+ * the rounds before met (a panic ends its module, a stopped case its worker), until a round
+ * finishes; each round either finishes or learns one more failure, so there is at most one round
+ * per exercise. Resolves to `{ result, known }`: `result` the last round's ({ kind: 'done', rows,
+ * table } or { kind: 'error', message }), `known` the failures met, in order. `onRound(known)` runs
+ * before every round after the first; `onCase` and `quiet` are `gradeInWorker`'s.
  */
-export async function checkExercises(module, id, returned) {
+async function gradeRounds(module, id, { onCase, quiet = false, onRound = () => {} } = {}) {
   const known = [];
-  const stopped = new Map();
   for (let round = 0; round < 64; round++) {
-    const result = await gradeInWorker(module, id, known, (exercise, previous) => {
-      if (previous && previous !== exercise) returned(previous);
-    }, true);
-    if (result.kind === 'done') {
-      for (const row of result.rows) {
-        if (row.verdict === 'stopped') {
-          stopped.set(row.exercise, `it gave no answer within ${CASE_LIMIT_S} s at the grader's case ${row.case} (${row.what}), `
-            + 'so the page does not run it (an endless loop would freeze the page); fix it and reload');
-        } else returned(row.exercise);
-      }
-      return stopped;
-    }
+    if (round > 0) onRound(known);
+    const result = await gradeInWorker(module, id, known, onCase, quiet);
     if (result.kind === 'panicked') {
       known.push({ exercise: result.exercise, case: result.case, kind: 'panicked', message: result.message, location: result.location });
-      returned(result.exercise);
     } else if (result.kind === 'stopped') {
       known.push({ exercise: result.exercise, case: result.case, kind: 'stopped', seconds: CASE_LIMIT_S });
     } else {
-      return { error: result.message };
+      return { result, known };
     }
   }
-  return { error: 'the grader went round too many times' };
+  return { result: { kind: 'error', message: 'the grader went round too many times' }, known };
+}
+
+/** What the panel's status line says of a failure a round met. */
+function failureEvent(k) {
+  return k.kind === 'panicked'
+    ? `${k.exercise} panicked at case ${k.case}`
+    : `${k.exercise} gave no answer within ${CASE_LIMIT_S} s at case ${k.case} and was stopped`;
+}
+
+/**
+ * Grades lesson `id`'s exercises as the panel does (`gradeRounds`, quietly), for the figures
+ * (www/lesson.js): an exercise runs in the page only once it has returned from every grading
+ * case here, since an endless loop on the page's own thread could never be stopped. Calls
+ * `returned(exercise)` as each exercise gets through its cases (a panic counts: the page's sandbox
+ * survives one) and resolves to a Map from each stopped exercise to a sentence saying where it
+ * was stopped, or, when the grader cannot run, to `{ error }`. Nothing is saved to the student's
+ * progress.
+ */
+export async function checkExercises(module, id, returned) {
+  const { result } = await gradeRounds(module, id, {
+    quiet: true,
+    // The grader moved on to the next exercise: the one before returned.
+    onCase: (exercise, previous) => { if (previous && previous !== exercise) returned(previous); },
+    onRound: (known) => { if (known.at(-1).kind === 'panicked') returned(known.at(-1).exercise); },
+  });
+  if (result.kind !== 'done') return { error: result.message };
+  const stopped = new Map();
+  for (const row of result.rows) {
+    if (row.verdict === 'stopped') {
+      stopped.set(row.exercise, `it gave no answer within ${CASE_LIMIT_S} s at the grader's case ${row.case} (${row.what}), `
+        + 'so the page does not run it (an endless loop would freeze the page); fix it and reload');
+    } else returned(row.exercise);
+  }
+  return stopped;
 }
 
 const VERDICT_WORDS = {
@@ -338,37 +360,26 @@ export function gradePanel(module, id) {
   async function run() {
     button.disabled = true;
     section.dataset.state = 'running';
-    const known = [];
-    const events = [];
     try {
       sessionStorage.setItem(seenKey, '1');
     } catch { /* no session storage: no automatic re-run, nothing else lost */ }
-    // Each round either finishes or learns one more failure: at most one round per exercise.
-    for (let round = 0; round < 64; round++) {
-      status.textContent = round === 0 ? 'Grading…' : `Grading again in a fresh module (${events.at(-1)})…`;
-      const result = await gradeInWorker(module, id, known);
-      if (result.kind === 'done') {
-        tbody.replaceChildren(...result.rows.map(resultRow));
-        table.hidden = false;
-        text.hidden = false;
-        text.querySelector('pre').textContent = result.table;
-        status.textContent = `${countLine(result.rows)}.${events.length ? ` ${events.join('; ')}.` : ''}`;
-        section.dataset.state = 'done';
-        const exercises = Object.fromEntries(result.rows.map((r) => [r.exercise, r.verdict]));
-        saveLesson(id, { exercises, exerciseCount: result.rows.length, checked: Date.now() });
-        break;
-      }
-      if (result.kind === 'panicked') {
-        known.push({ exercise: result.exercise, case: result.case, kind: 'panicked', message: result.message, location: result.location });
-        events.push(`${result.exercise} panicked at case ${result.case}`);
-      } else if (result.kind === 'stopped') {
-        known.push({ exercise: result.exercise, case: result.case, kind: 'stopped', seconds: CASE_LIMIT_S });
-        events.push(`${result.exercise} gave no answer within ${CASE_LIMIT_S} s at case ${result.case} and was stopped`);
-      } else {
-        status.textContent = `The grader could not run: ${result.message}`;
-        section.dataset.state = 'error';
-        break;
-      }
+    status.textContent = 'Grading…';
+    const { result, known } = await gradeRounds(module, id, {
+      onRound: (k) => { status.textContent = `Grading again in a fresh module (${failureEvent(k.at(-1))})…`; },
+    });
+    if (result.kind === 'done') {
+      tbody.replaceChildren(...result.rows.map(resultRow));
+      table.hidden = false;
+      text.hidden = false;
+      text.querySelector('pre').textContent = result.table;
+      const events = known.map(failureEvent);
+      status.textContent = `${countLine(result.rows)}.${events.length ? ` ${events.join('; ')}.` : ''}`;
+      section.dataset.state = 'done';
+      const exercises = Object.fromEntries(result.rows.map((r) => [r.exercise, r.verdict]));
+      saveLesson(id, { exercises, exerciseCount: result.rows.length, checked: Date.now() });
+    } else {
+      status.textContent = `The grader could not run: ${result.message}`;
+      section.dataset.state = 'error';
     }
     button.disabled = false;
   }
