@@ -891,13 +891,12 @@ pub const SPLASH_MAX: usize = 10_000;
 pub const SPLASH_H_SPACINGS: f32 = 2.0;
 /// The timeline's length, simulated seconds.
 pub const SPLASH_DURATION_SEC: f32 = 3.0;
-/// The most steps one call of [`SplashFigure::advance_to`] takes: a frame that cannot catch up
-/// leaves the rest to the next frames (the fluid falls behind the timeline) instead of holding
-/// the page. With many particles fewer: [`SPLASH_STEP_BUDGET`] particle-steps a call, at least
 /// The farthest the dam break's camera turns from the front, radians (40°): the tanks keep
 /// three quarters of their width on screen.
 pub const DAM_MAX_YAW_RAD: f32 = 0.7;
-
+/// The most steps one call of [`SplashFigure::advance_to`] takes: a frame that cannot catch up
+/// leaves the rest to the next frames (the fluid falls behind the timeline) instead of holding
+/// the page. With many particles fewer: [`SPLASH_STEP_BUDGET`] particle-steps a call, at least
 /// one step; with all pairs, one step.
 pub const SPLASH_STEPS_PER_CALL: usize = 8;
 pub const SPLASH_STEP_BUDGET: usize = 12_000;

@@ -760,8 +760,6 @@ impl GltfFigure {
     }
 }
 
-/// Whether the label box `rect` (grown by 2 px) and the triangle `[a, b, c]` on the canvas
-/// overlap: an edge of the triangle enters the box, or the box lies inside the triangle.
 /// A bind-pose point skinned by linear blend skinning with `palette` (a joint outside it adds
 /// nothing).
 fn lbs_point(palette: &[Affine3A], p: Vec3, joints: &[u16; 4], weights: &[f32; 4]) -> Vec3 {
@@ -770,6 +768,8 @@ fn lbs_point(palette: &[Affine3A], p: Vec3, joints: &[u16; 4], weights: &[f32; 4
     })
 }
 
+/// Whether the label box `rect` (grown by 2 px) and the triangle `[a, b, c]` on the canvas
+/// overlap: an edge of the triangle enters the box, or the box lies inside the triangle.
 fn touches_triangle(rect: crate::draw::layout::Rect, [a, b, c]: [Vec2; 3]) -> bool {
     let (lo, hi) = (
         rect.min - Vec2::splat(2.0),
