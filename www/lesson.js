@@ -809,8 +809,9 @@ function contentWidth(element) {
  * autoscaled onto float noise. `yRange: [lo, hi]` fixes it instead (a percentage read against 0);
  * `setYRange([lo, hi])` sets the data range to show later (padded as autoscaling pads it; `null`
  * autoscales again), for a figure whose Rust side says which samples the scale should follow.
- * `yFloor: 0` keeps an autoscaled range from going below 0, for a quantity that cannot (an angle
- * between two directions): a flat 0 then sits on the axis's bottom, not in its middle.
+ * `from0: true` starts an autoscaled y axis at 0, for a magnitude (a speed, an angle between two
+ * directions, a distance): its smallest values read against a 0 tick, and a flat 0 sits on the
+ * axis's bottom instead of in its middle.
  * `points: false` never marks the samples with dots (`true` always; uPlot decides by default).
  * `yStep: 1` puts the y range's ends on labelled ticks, multiples of 1, 2, 10, 20, 100 or 200
  * times yStep (at most 4 ticks apart), so a flat line near an end still has a tick beyond it.
@@ -827,7 +828,7 @@ function contentWidth(element) {
 export class Plot {
   constructor(element, {
     title, xLabel, yLabel, series, colors = PLOT_COLORS, height = 180, minSpan = 1e-3, yRange = null,
-    widths = [], dashes = [], log = '', points, yStep = null, yFloor = null,
+    widths = [], dashes = [], log = '', points, yStep = null, from0 = false,
   }) {
     if (!yLabel) console.warn(`Plot "${title}": give the y axis a label with its quantity and unit`);
     // The y label is drawn along the plot area and clipped at the canvas: make the plot tall
@@ -892,7 +893,7 @@ export class Plot {
             let r = yRange ?? (this.dataRange
               ? paddedRange(this.dataRange[0], this.dataRange[1], minSpan)
               : paddedRange(lo, hi, minSpan));
-            if (yFloor !== null && !yRange && r[0] < yFloor) r = [yFloor, yFloor + (r[1] - r[0])];
+            if (from0 && !yRange) r = [0, Math.max(r[1], minSpan)];
             if (yStep) {
               // Out to whole ticks, at most 4 apart: no line lies past the last labelled one.
               const ends = (i) => [Math.floor(r[0] / i) * i, Math.ceil(r[1] / i) * i];

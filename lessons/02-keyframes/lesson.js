@@ -622,13 +622,6 @@ function sharedKeys() {
   return [times, xy];
 }
 
-/** Shows `cols` ([times, magnitudes…]: a speed, an acceleration's size) on `plot` with its axis
- * from 0, so the slowest stretch reads against a 0 tick and linear's zero sits on the floor. */
-function plotMagnitudes(plot, cols) {
-  plot.setYRange([0, Math.max(0.1, ...cols.slice(1).flat().filter(Number.isFinite))]);
-  plot.setData(cols);
-}
-
 // ---- Figures 2, 6, 7: two schemes on the same keys, at the same time. ----
 function compareFigure(id) {
   const figure = document.getElementById(id);
@@ -645,7 +638,8 @@ function compareFigure(id) {
   const plot = new Plot(figure.querySelector('.plot'), {
     title: speed ? 'Speed |p′(t)|' : 'Acceleration |p″(t)|',
     xLabel: 'time (s)', yLabel: speed ? 'speed (m/s)' : 'acceleration (m/s²)',
-    series: ['A', 'B'], colors: [C.a, C.b], minSpan: 0.1,
+    // Magnitudes, from 0: the slowest stretch reads against a 0 tick, linear's zero on the floor.
+    series: ['A', 'B'], colors: [C.a, C.b], minSpan: 0.1, from0: true,
     widths: [5, 2], // A wide under B: the same scheme twice shows both lines
   });
   function sync() {
@@ -669,7 +663,7 @@ function compareFigure(id) {
       }
       cols.push(col);
     }
-    plotMagnitudes(plot, cols);
+    plot.setData(cols);
     if (gapNote) gapNote.textContent = schemes.a.gapNote(schemes.b);
     view.fit(all);
     const loops = ['a', 'b'].filter((side) => !layers[side].held).map((side) => loopBox(layers[side].path)).filter(Boolean);
@@ -788,7 +782,7 @@ if (lagrangeViewer) {
   const view = makeView(figure.querySelector('canvas'));
   const plot = new Plot(document.getElementById('cardinal-plot'), {
     title: 'Speed |p′(t)| by each rule', xLabel: 'time (s)', yLabel: 'speed (m/s)',
-    series: ['divided by the time', 'halved'], colors: [C.a, C.b], minSpan: 0.1,
+    series: ['divided by the time', 'halved'], colors: [C.a, C.b], minSpan: 0.1, from0: true,
     widths: [5, 2], // where the rules agree (keys 1 s apart) the wide blue line shows under the pink
   });
   const note = document.getElementById('cardinal-note');
@@ -811,7 +805,7 @@ if (lagrangeViewer) {
     };
     const [ea, eb] = sides.map(extent);
     layer = { keys, sides, extent: withTitleRoom([...ea, ...eb]), off: null, size: '' };
-    plotMagnitudes(plot, columns(cardinal.sampleSpeeds(301), 3));
+    plot.setData(columns(cardinal.sampleSpeeds(301), 3));
     layer.note = cardinal.note();
   };
   const gui = new GUI({ container: figure.querySelector('.panel'), title: 'Tangents' });
@@ -891,12 +885,12 @@ if (lagrangeViewer) {
   addPresetControl(gui, tp);
   const speedPlot = new Plot(document.getElementById('keys-speed'), {
     title: 'Speed |p′(t)|', xLabel: 'time (s)', yLabel: 'speed (m/s)',
-    series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1,
+    series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1, from0: true,
     widths: [5, 2], // keyed wide under arc length: where the two speeds agree both stay visible
   });
   const accelPlot = new Plot(document.getElementById('keys-accel'), {
     title: 'Acceleration |p″(t)|', xLabel: 'time (s)', yLabel: 'acceleration (m/s²)',
-    series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1,
+    series: ['keyed', 'constant speed'], colors: [C.path, C.ball], minSpan: 0.1, from0: true,
     widths: [5, 2],
   });
   const timingNote = document.getElementById('timing-note');
@@ -925,8 +919,8 @@ if (lagrangeViewer) {
       p.arcLength ? "Figure 1's ball follows the constant-speed timing (red)." : "Figure 1's ball follows the keyed timing (blue).",
     ].filter(Boolean).join(' ');
     const [k, e] = cols;
-    plotMagnitudes(speedPlot, [k[0], k[1], k[2]]);
-    plotMagnitudes(accelPlot, [k[0], k[3], e[3]]);
+    speedPlot.setData([k[0], k[1], k[2]]);
+    accelPlot.setData([k[0], k[3], e[3]]);
   });
   lesson.onFrame(() => {
     const tau = timeline.time;

@@ -252,7 +252,7 @@ if (vn) {
   const plot = new Plot(document.getElementById('nor-plot'), {
     title: 'Averaged against exact normals, by resolution', xLabel: 'vertices per side (count)',
     yLabel: 'angle between them (°)', series: ['mean', 'largest'], colors: [cssVar('--brown'), cssVar('--brown')],
-    widths: [3, 2], dashes: [null, [6, 4]], minSpan: 1, points: true, yFloor: 0,
+    widths: [3, 2], dashes: [null, [6, 4]], minSpan: 1, points: true, from0: true,
   });
   let rejected = '';
   const apply = () => {

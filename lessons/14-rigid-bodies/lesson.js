@@ -12,8 +12,7 @@ const DARK = cssVar('--dark');
 
 /**
  * The common wiring of a figure: its panel, its timeline, its plots (each `{ id, options, cols }`:
- * `cols` picks the sample columns it shows, the first being time; `from0` starts its y axis at 0,
- * for a quantity that is never negative; `range: k` takes its y range from the scene's
+ * `cols` picks the sample columns it shows, the first being time; `range: k` takes its y range from the scene's
  * `plotRanges()`, pair k; on a log y axis, `options.log`, a sample of 0 is a gap),
  * `apply` run on every change
  * (through `guarded`, so a rejected value shows in the note and changes nothing), and the frame
@@ -37,16 +36,11 @@ async function wire(selector, { title, make, controls, apply, plots, width, came
     if (live) spanTimeline(all, timeline.duration);
     // Scales Rust chooses (an exploding racket's curve runs off the top instead of squashing the others).
     const ranges = shown.some((s) => s.range !== undefined) ? state.scene.plotRanges() : [];
-    for (const { plot, cols, from0, range, options } of shown) {
+    for (const { plot, cols, range, options } of shown) {
       if (range !== undefined) plot.setYRange([ranges[2 * range], ranges[2 * range + 1]]);
       // A log axis has no place for a zero (a run's still first sample): a gap there.
       const positive = options.log?.includes('y');
       const data = cols.map((c, k) => (positive && k > 0 ? all[c].map((v) => (v > 0 ? v : null)) : all[c]));
-      // A quantity that is never negative: its axis starts at 0 instead of centring a flat start.
-      if (from0) {
-        const hi = data.slice(1).flat().reduce((m, v) => (Number.isFinite(v) ? Math.max(m, v) : m), 0);
-        plot.setYRange([0, Math.max(hi, options.minSpan)]);
-      }
       plot.setData(data);
     }
   };
@@ -216,10 +210,11 @@ await wire('#fig-stack', {
       },
     },
     {
-      id: 'stack-drift', cols: [0, 2], from0: true,
+      id: 'stack-drift', cols: [0, 2],
       options: {
         title: 'How far the top box (the last domino) has moved', xLabel: 'time (s)', yLabel: 'distance (m)',
-        series: ['distance'], colors: [TEAL], minSpan: 0.05,
+        // Never negative: the axis starts at 0 instead of centring a flat start.
+        series: ['distance'], colors: [TEAL], minSpan: 0.05, from0: true,
       },
     },
   ],

@@ -61,16 +61,12 @@ const gaps = (cols) => cols.map((c, k) => (k === 0 ? c : c.map((v) => (Number.is
     gui.add(p, 'useExercise').name('use my exercise');
     const terms = new Plot(document.getElementById('density-terms'), {
       title: 'Terms of the density sum, nearest first', xLabel: 'distance r / h (no unit)', yLabel: 'm W(r) (kg/m²)',
-      series: ['m W(r) of each term'], colors: [PURPLE], points: true, minSpan: 0.1,
+      // From 0 up (no term is negative): a lone term (the particle out of the water) would
+      // otherwise sit in a range 0.1 wide round it, with nothing to compare it with.
+      series: ['m W(r) of each term'], colors: [PURPLE], points: true, minSpan: 0.1, from0: true,
     });
     let rejected = '';
-    // The terms from 0 up (none is negative): a lone term (the particle out of the water)
-    // would otherwise sit in a range 0.1 wide round it, with nothing to compare it with.
-    const showTerms = () => {
-      const cols = columns(scene.terms(), 2);
-      terms.setYRange([Math.min(0, ...cols[1]), Math.max(...cols[1])]);
-      terms.setData(cols);
-    };
+    const showTerms = () => terms.setData(columns(scene.terms(), 2));
     const apply = guarded(gui, p, () => {
       scene.setProbe(p.x, p.y);
       scene.setUseExercise(p.useExercise);
